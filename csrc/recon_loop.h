@@ -1,0 +1,62 @@
+/*
+ * recon_loop.h -- the frame loop of the reconstruction for one input element
+ * type IN_T and one precision REAL. Included by recon.c with
+ *   IN_T, IS (suffix u8|u16|f32|f64), IN_IS_INT, REAL, RS.
+ * One pass over the frame; rows are split across OpenMP threads; each thread
+ * uses a few hundred bytes of stack and the shared column map.
+ */
+#define LCAT3(a, b, c) a##_##b##_##c
+#define LCAT(a, b, c) LCAT3(a, b, c)
+#define SITE2(a, b) a##_##b
+#define SITE(a, b) SITE2(a, b)
+
+static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
+                                         ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                                         const int32_t *phase_map, const rgbz_plan *plans,
+                                         int ry, int rx, const ptrdiff_t *colmap,
+                                         const rgbz_params *prm, uint64_t *opcounts)
+{
+    const REAL floor_ = (REAL)prm->sigma_floor;
+    const REAL edge_ratio = (REAL)prm->edge_ratio;
+    const REAL maxval = (REAL)prm->maxval;
+    const int exp_mode = prm->exp_mode;
+    (void)opcounts;
+#ifdef _OPENMP
+    int nth = prm->workers > 0 ? prm->workers : omp_get_max_threads();
+#pragma omp parallel for schedule(static) num_threads(nth)
+#endif
+    for (ptrdiff_t y = 0; y < rows; y++) {
+        const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 1];
+        for (int dy = -ry; dy <= ry; dy++)
+            rowp[dy + ry] = src + rgbz_extend(y + dy, rows, py) * cols;
+        memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
+        const int32_t *pm = phase_map + (y % py) * px;
+        int ph = 0;
+        for (ptrdiff_t x = 0; x < cols; x++, ph = (ph + 1 == px) ? 0 : ph + 1) {
+            int pl = pm[ph];
+            if (pl < 0) continue;
+            const rgbz_plan *p = &plans[pl];
+#ifdef RGBZ_COUNT_OPS
+            rgbz_opc_cur_count = opcounts + (size_t)pl * RGBZ_NOPS;
+#endif
+            REAL v[RGBZ_MAX_TAPS];
+            const ptrdiff_t *cm = colmap + x + rx;
+            for (int t = 0; t < p->n_taps; t++)
+                v[t] = (REAL)rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
+            REAL r = SITE(rgbz_site, RS)(v, p, floor_, edge_ratio, exp_mode);
+            if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
+            if (r > maxval) r = maxval;
+#if IN_IS_INT
+            dst[y * cols + x] = (IN_T)(r + (REAL)0.5);
+#else
+            dst[y * cols + x] = (IN_T)r;
+#endif
+        }
+    }
+    return RGBZ_OK;
+}
+
+#undef LCAT
+#undef LCAT3
+#undef SITE
+#undef SITE2

@@ -1,0 +1,148 @@
+/*
+ * recon_site.h -- the per-pixel reconstruction of one missing colour value,
+ * for every method, in precision REAL. Included by recon.c once per REAL with
+ *   REAL (float|double), RS (suffix f32|f64), RABSDIFF, REXP_LIBM, REXP_FAST.
+ *
+ * v[] holds the taps of the plan (kernel pixels gathered by the loop). The
+ * methods follow docs/interpretation.md:
+ *   bilinear                 mean of the candidates
+ *   bi (eqs. 2-5)            w = alpha * beta
+ *   edi_central (eqs. 6-7)   w = alpha * beta * gamma(ori), central pairs
+ *   edi_line (eqs. 8-13)     w = alpha * beta * gamma(ori), axis mirror pairs
+ *   sg (eqs. 14-19)          w = sum of the gammas of the covering
+ *                            semi-gradients (Mask1); times alpha*beta*gamma
+ *                            of the axis gradients otherwise (Mask2)
+ *   edi_rows (eqs. 1a-1e)    Shi et al.: median along the dominant edge
+ */
+#define RCAT2(a, b) a##_##b
+#define RCAT(a, b) RCAT2(a, b)
+#define RFN(name) RCAT(name, RS)
+
+/* gamma factors (eq. 7) of the groups [g0, g1): sigma = max(min G, floor) */
+static inline void RFN(rgbz_gammas)(const REAL *G, const rgbz_plan *p, int g0, int g1,
+                                    REAL floor_, int exp_mode, REAL *gamma)
+{
+    REAL gmin = (REAL)0;
+    int any = 0;
+    for (int g = g0; g < g1; g++) {
+        if (p->group_scale[g] <= 0.0) continue;
+        if (!any || OCMP(G[g] < gmin)) gmin = G[g];
+        any = 1;
+    }
+    if (!any) {
+        for (int g = g0; g < g1; g++) gamma[g] = (REAL)1;
+        return;
+    }
+    REAL sigma = OCMP(gmin > floor_) ? gmin : floor_;
+    REAL two_s2 = OMUL((REAL)2, OMUL(sigma, sigma));
+    REAL inv = ODIV((REAL)1, two_s2);
+    for (int g = g0; g < g1; g++) {
+        if (p->group_scale[g] <= 0.0) { gamma[g] = (REAL)0; continue; }
+        REAL arg = -OMUL(OMUL(G[g], G[g]), inv);
+        OPC_(RGBZ_OP_EXP);
+        gamma[g] = exp_mode == RGBZ_EXP_FAST ? REXP_FAST(arg) : REXP_LIBM(arg);
+    }
+}
+
+static inline REAL RFN(rgbz_median3)(REAL a, REAL b, REAL c)
+{
+    /* median of three with three comparisons */
+    if (OCMP(a > b)) { REAL t = a; a = b; b = t; }
+    if (OCMP(b > c)) b = c;
+    return OCMP(a > b) ? a : b;
+}
+
+static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_,
+                                  REAL edge_ratio, int exp_mode)
+{
+    const int nc = p->n_cand;
+    REAL c[RGBZ_MAX_CAND];
+
+    if (p->method == RGBZ_M_EDI_ROWS) {
+        /* taps: (a1,a2),(b1,b2),(c1,c2),(d1,d2),(e1,e2); c is the vertical */
+        REAL D[5];
+        for (int i = 0; i < 5; i++) D[i] = RABSDIFF(v[2 * i], v[2 * i + 1]);
+        REAL vert = OMUL(OADD(v[4], v[5]), (REAL)0.5);
+        static const int order[5] = {2, 1, 3, 0, 4};   /* tie order c, b, d, a, e */
+        int m = 2;
+        for (int i = 1; i < 5; i++)
+            if (OCMP(D[order[i]] < D[m])) m = order[i];
+        if (m != 2 && OCMP(D[m] < OMUL((REAL)edge_ratio, D[2])))
+            return RFN(rgbz_median3)(v[2 * m], v[2 * m + 1], vert);
+        return vert;
+    }
+
+    for (int k = 0; k < nc; k++) c[k] = v[p->cand_tap[k]];
+
+    if (p->method == RGBZ_M_BILINEAR) {
+        REAL s = c[0];
+        for (int k = 1; k < nc; k++) s = OADD(s, c[k]);
+        return ODIV(s, (REAL)nc);
+    }
+
+    /* gradient groups: mean absolute difference of their pairs */
+    REAL G[RGBZ_NGROUPS], gamma[RGBZ_NGROUPS];
+    if (p->n_pairs > 0) {
+        for (int g = 0; g < RGBZ_NGROUPS; g++) G[g] = (REAL)0;
+        for (int i = 0; i < p->n_pairs; i++) {
+            REAL d = RABSDIFF(v[p->pair_a[i]], v[p->pair_b[i]]);
+            int32_t m = p->pair_gmask[i];
+            while (m) {
+                int g = __builtin_ctz((unsigned)m);
+                G[g] = OADD(G[g], d);
+                m &= m - 1;
+            }
+        }
+        for (int g = 0; g < RGBZ_NGROUPS; g++)
+            if (p->group_scale[g] > 0.0) G[g] = OMUL(G[g], (REAL)p->group_scale[g]);
+        if (p->use_sg) RFN(rgbz_gammas)(G, p, 0, 8, floor_, exp_mode, gamma);
+        if (p->use_grad) RFN(rgbz_gammas)(G, p, 8, 12, floor_, exp_mode, gamma);
+    }
+
+    /* intensity factor beta (eq. 4): 1 / (1 + sum_m |c_k - c_m|) */
+    REAL S[RGBZ_MAX_CAND];
+    if (p->use_ab) {
+        for (int k = 0; k < nc; k++) S[k] = (REAL)1;
+        for (int k = 0; k < nc; k++)
+            for (int m = k + 1; m < nc; m++) {
+                REAL d = RABSDIFF(c[k], c[m]);
+                S[k] = OADD(S[k], d);
+                S[m] = OADD(S[m], d);
+            }
+    }
+
+    /* weights (eqs. 2, 6, 19) and the weighted mean (eqs. 12-13) */
+    REAL num = (REAL)0, den = (REAL)0;
+    for (int k = 0; k < nc; k++) {
+        REAL w;
+        if (p->use_ab) w = ODIV((REAL)p->cand_alpha[k], S[k]);
+        else w = (REAL)1;
+        if (p->use_grad) w = OMUL(w, gamma[8 + p->cand_ori[k]]);
+        if (p->use_sg) {
+            int32_t m = p->cand_sgmask[k];
+            REAL s = (REAL)0;
+            int first = 1;
+            while (m) {
+                int g = __builtin_ctz((unsigned)m);
+                s = first ? gamma[g] : OADD(s, gamma[g]);
+                first = 0;
+                m &= m - 1;
+            }
+            if (p->sg_scaled) s = OMUL(s, (REAL)p->cand_sgscale[k]);
+            w = (p->use_ab || p->use_grad) ? OMUL(w, s) : s;
+        }
+        den = k ? OADD(den, w) : w;
+        if (k) num = OADD(num, OMUL(w, OSUB(c[k], c[0])));
+    }
+    if (!(den > (REAL)0)) {
+        /* every weight underflowed: plain mean of the candidates */
+        REAL s = c[0];
+        for (int k = 1; k < nc; k++) s = OADD(s, c[k]);
+        return ODIV(s, (REAL)nc);
+    }
+    return OADD(c[0], ODIV(num, den));
+}
+
+#undef RFN
+#undef RCAT
+#undef RCAT2

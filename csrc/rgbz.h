@@ -1,0 +1,118 @@
+/*
+ * rgbz.h -- public C API of the rgbz-fast core (plain C99, no Python.h).
+ *
+ * Memory layout contract: every image is a C-contiguous, row-major array of
+ * `rows * cols` elements; strides are `cols` elements. The caller (the Python
+ * layer) validates shapes and allocates every output; the kernels never
+ * allocate an output and return an int status (RGBZ_OK on success).
+ *
+ * The same sources build twice: the normal library, and a counting library
+ * compiled with -DRGBZ_COUNT_OPS whose exported symbols carry a `_count`
+ * suffix and whose arithmetic macros (rgbz_ops.h) also count operations.
+ */
+#ifndef RGBZ_H
+#define RGBZ_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef RGBZ_COUNT_OPS
+#define RGBZ_SYM(name) name##_count
+#else
+#define RGBZ_SYM(name) name
+#endif
+
+/* status codes */
+#define RGBZ_OK 0
+#define RGBZ_EINVAL 1   /* an argument the Python layer should have rejected */
+#define RGBZ_ENOMEM 2   /* scratch allocation failed */
+
+/* element types of frames */
+#define RGBZ_T_U8 0
+#define RGBZ_T_U16 1
+#define RGBZ_T_F32 2
+#define RGBZ_T_F64 3
+
+/* computation precision */
+#define RGBZ_P_F32 0
+#define RGBZ_P_F64 1
+
+/* reconstruction methods */
+#define RGBZ_M_BILINEAR 0
+#define RGBZ_M_BI 1
+#define RGBZ_M_EDI_CENTRAL 2
+#define RGBZ_M_EDI_LINE 3
+#define RGBZ_M_SG 4
+#define RGBZ_M_EDI_ROWS 5
+
+/* exponential used by the gamma factors (eq. 7) */
+#define RGBZ_EXP_LIBM 0      /* C library exp/expf: correctly rounded to ~1 ulp */
+#define RGBZ_EXP_FAST 1      /* range reduction + degree-5 polynomial, ~2e-7 relative */
+
+/* operation counters (Table 1 categories plus the rest) */
+#define RGBZ_OP_ADD 0     /* additions and subtractions */
+#define RGBZ_OP_MUL 1
+#define RGBZ_OP_DIV 2
+#define RGBZ_OP_EXP 3
+#define RGBZ_OP_ABS 4
+#define RGBZ_OP_CMP 5     /* comparisons, min, max */
+#define RGBZ_OP_SQRT 6
+#define RGBZ_OP_ATAN2 7
+#define RGBZ_NOPS 8
+
+/* size limits of one plan */
+#define RGBZ_MAX_TAPS 40
+#define RGBZ_MAX_CAND 24
+#define RGBZ_MAX_PAIRS 96
+#define RGBZ_NGROUPS 12      /* 0..7 semi-gradients N S W E NW NE SW SE; 8..11 gradients V H D1 D2 */
+
+/*
+ * A plan says how to reconstruct the missing pixels of one phase of the
+ * pattern (one Z position in the tile). It is built and validated in Python
+ * (rgbz_fast/_plans.py) and read here as plain data: taps are kernel
+ * offsets, candidates and pairs index the taps.
+ */
+typedef struct {
+    int32_t method, n_taps, n_cand, n_pairs;
+    int32_t use_ab, use_grad, use_sg, sg_scaled;
+    int32_t tap_dy[RGBZ_MAX_TAPS], tap_dx[RGBZ_MAX_TAPS];
+    int32_t cand_tap[RGBZ_MAX_CAND], cand_ori[RGBZ_MAX_CAND], cand_sgmask[RGBZ_MAX_CAND];
+    int32_t pair_a[RGBZ_MAX_PAIRS], pair_b[RGBZ_MAX_PAIRS], pair_gmask[RGBZ_MAX_PAIRS];
+    int32_t target, reserved;
+    double cand_alpha[RGBZ_MAX_CAND], cand_sgscale[RGBZ_MAX_CAND];
+    double group_scale[RGBZ_NGROUPS];
+} rgbz_plan;
+
+typedef struct {
+    double sigma_floor;   /* floor of sigma in eq. 7, in DN */
+    double edge_ratio;    /* edi_rows: dominant-edge threshold */
+    double maxval;        /* white level 2^b - 1: outputs are clipped to [0, maxval] */
+    int32_t exp_mode;     /* RGBZ_EXP_LIBM or RGBZ_EXP_FAST */
+    int32_t workers;      /* threads; <= 0 means the OpenMP default */
+} rgbz_params;
+
+/* sizeof(rgbz_plan) and the offsets of its fields, in declaration order,
+   so that Python can check its structured dtype against this header. */
+int RGBZ_SYM(rgbz_plan_layout)(int64_t *out, int n);
+
+/*
+ * Reconstruct the missing colour of every Z site.
+ *   src, dst: rows x cols frames of element type `in_type` (dst fully written:
+ *             colour sites copied, Z sites reconstructed, clipped, rounded
+ *             half up for integer types). src and dst must not overlap.
+ *   py, px:   pattern period; phase_map[(y % py) * px + (x % px)] is the plan
+ *             index of that site, or -1 for a colour site.
+ *   opcounts: counting build only: n_plans x RGBZ_NOPS counters (may be NULL
+ *             in the normal build, where it is ignored).
+ */
+int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void *dst,
+                               ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                               const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
+                               const rgbz_params *params, uint64_t *opcounts);
+
+/* build information */
+int RGBZ_SYM(rgbz_have_openmp)(void);
+int RGBZ_SYM(rgbz_max_threads)(void);
+int RGBZ_SYM(rgbz_counting_build)(void);
+
+#endif /* RGBZ_H */

@@ -1,0 +1,77 @@
+/*
+ * rgbz_ops.h -- arithmetic macros of the kernels.
+ *
+ * In the normal build every macro is the plain operation. Built with
+ * -DRGBZ_COUNT_OPS (the counting library behind `rgbz-fast opcount`), each
+ * macro also increments a counter of its category in `rgbz_opc_cur`, which the
+ * loop points at the counters of the plan being run. The counting build is
+ * single-threaded. Only the per-pixel arithmetic of the algorithms goes
+ * through these macros; loads, index arithmetic, the final clipping and the
+ * conversion to the output type are not counted (Table 1 does not count them).
+ */
+#ifndef RGBZ_OPS_H
+#define RGBZ_OPS_H
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+#include "rgbz.h"
+
+#ifdef RGBZ_COUNT_OPS
+extern uint64_t *rgbz_opc_cur_count;
+#define OPC_(k) (rgbz_opc_cur_count[k]++)
+#else
+#define OPC_(k) ((void)0)
+#endif
+
+#define OADD(a, b) (OPC_(RGBZ_OP_ADD), (a) + (b))
+#define OSUB(a, b) (OPC_(RGBZ_OP_ADD), (a) - (b))
+#define OMUL(a, b) (OPC_(RGBZ_OP_MUL), (a) * (b))
+#define ODIV(a, b) (OPC_(RGBZ_OP_DIV), (a) / (b))
+#define OCMP(expr) (OPC_(RGBZ_OP_CMP), (expr))
+
+/* |a - b|: one subtraction and one absolute value */
+#define OABSDIFF_F(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabsf((a) - (b)))
+#define OABSDIFF_D(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabs((a) - (b)))
+
+/*
+ * exp(x) for x <= 0 by range reduction: x*log2(e) = n + f, f in [-0.5, 0.5],
+ * 2^f from a degree-6 minimax-style Taylor polynomial, 2^n by building the
+ * exponent bits. Relative error below 3e-7 over [-87, 0] (measured in
+ * tests/test_kernels.py); returns exactly 0 below -87 (float) / -708 (double)
+ * and exactly 1 at 0.
+ */
+static inline double rgbz_fast_exp_d(double x)
+{
+    if (x < -708.0) return 0.0;
+    double t = x * 1.4426950408889634;     /* log2(e) */
+    double n = floor(t + 0.5);
+    double f = t - n;                      /* [-0.5, 0.5] */
+    /* 2^f = e^(f ln2): Taylor to degree 6 in f*ln2 (|f ln2| <= 0.347) */
+    double y = f * 0.6931471805599453;
+    double p = 1.0 + y * (1.0 + y * (0.5 + y * (1.0 / 6 + y * (1.0 / 24 + y * (1.0 / 120 + y * (1.0 / 720))))));
+    int64_t e = (int64_t)n + 1023;
+    if (e <= 0) return 0.0;                /* would be subnormal: flush to 0 */
+    uint64_t bits = (uint64_t)e << 52;
+    double scale;
+    memcpy(&scale, &bits, sizeof scale);
+    return p * scale;
+}
+
+static inline float rgbz_fast_exp_f(float x)
+{
+    if (x < -87.0f) return 0.0f;
+    float t = x * 1.44269504f;
+    float n = floorf(t + 0.5f);
+    float f = t - n;
+    float y = f * 0.69314718f;
+    float p = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6 + y * (1.0f / 24 + y * (1.0f / 120)))));
+    int32_t e = (int32_t)n + 127;
+    if (e <= 0) return 0.0f;
+    uint32_t bits = (uint32_t)e << 23;
+    float scale;
+    memcpy(&scale, &bits, sizeof scale);
+    return p * scale;
+}
+
+#endif /* RGBZ_OPS_H */

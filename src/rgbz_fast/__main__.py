@@ -1,0 +1,3 @@
+from rgbz_fast.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,52 @@
+"""Build and runtime configuration report."""
+
+from __future__ import annotations
+
+import os
+import platform
+import sys
+
+__all__ = ["show_config", "config"]
+
+
+def config():
+    """dict: version, compiler, flags, OpenMP and thread count of the compiled kernels."""
+    from . import _build_config as bc
+    from . import _kernels
+    return {
+        "version": bc.VERSION,
+        "python": sys.version.split()[0],
+        "platform": platform.platform(),
+        "compiler": f"{bc.CC_ID} {bc.CC_VERSION}",
+        "buildtype": bc.BUILDTYPE,
+        "optimization": f"-O{bc.OPTIMIZATION}",
+        "kernel_c_args": bc.KERNEL_C_ARGS,
+        "openmp": bool(_kernels.have_openmp()),
+        "openmp_version": bc.OPENMP_VERSION or None,
+        "max_threads": int(_kernels.max_threads()),
+        "cpu_count": os.cpu_count(),
+    }
+
+
+def show_config(file=None):
+    """Print how the C kernels were built: version, compiler flags, OpenMP on/off, threads.
+
+    Examples
+    --------
+    >>> import rgbz_fast
+    >>> rgbz_fast.show_config()  # doctest: +SKIP
+    rgbz-fast 0.1.0
+    ...
+    """
+    c = config()
+    lines = [
+        f"rgbz-fast {c['version']}",
+        f"  python        : {c['python']} ({c['platform']})",
+        f"  compiler      : {c['compiler']}",
+        f"  build         : {c['buildtype']} ({c['optimization']})",
+        f"  kernel flags  : {c['kernel_c_args'] or '(none)'}",
+        f"  OpenMP        : {'on' if c['openmp'] else 'off'}"
+        + (f" (version {c['openmp_version']})" if c['openmp'] and c['openmp_version'] else ""),
+        f"  threads       : {c['max_threads']} (cores: {c['cpu_count']})",
+    ]
+    print("\n".join(lines), file=file or sys.stdout)

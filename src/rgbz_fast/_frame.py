@@ -1,0 +1,173 @@
+"""Raw frames: a mosaic of digital numbers plus the pattern that produced it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ._patterns import Pattern, Z, get_pattern
+from ._validate import FRAME_DTYPES, check_bit_depth, check_image
+
+__all__ = ["RawFrame", "mosaic"]
+
+
+@dataclass(frozen=True, eq=False)
+class RawFrame:
+    """A raw sensor frame: digital numbers on a colour-depth filter array.
+
+    Parameters
+    ----------
+    data : ndarray, shape (rows, cols)
+        Digital numbers in [0, 2**bit_depth - 1]; uint8, uint16, float32 or
+        float64. Z sites hold no colour (their value is ignored).
+    pattern : Pattern or str
+        The pattern of the frame.
+    bit_depth : int
+        Bits of the ADC (default 11, as in the paper).
+    reference : ndarray, optional
+        The plain Bayer CFA of the same exposure (the paper's green path),
+        when the frame comes from a simulation.
+    tof : object, optional
+        Time-of-flight taps at the Z sites (see :mod:`rgbz_fast.sensor`), or None
+        when no depth was simulated.
+    meta : dict
+        Free-form metadata (source file, sensor parameters, ...).
+
+    Attributes
+    ----------
+    z_mask : ndarray of bool, shape (rows, cols)
+        True at the Z sites.
+    white_level : int
+        ``2**bit_depth - 1``.
+    """
+
+    data: np.ndarray
+    pattern: Pattern
+    bit_depth: int = 11
+    reference: np.ndarray | None = None
+    tof: Any = None
+    meta: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        pattern = get_pattern(self.pattern)
+        object.__setattr__(self, "pattern", pattern)
+        bd = check_bit_depth(self.bit_depth)
+        object.__setattr__(self, "bit_depth", bd)
+        data = check_image(self.data, "data", ndim=2, dtypes=FRAME_DTYPES)
+        pattern.check_shape(data.shape, "data")
+        _check_range(data, bd, "data", ignore=pattern.z_mask(data.shape))
+        object.__setattr__(self, "data", data)
+        if self.reference is not None:
+            ref = check_image(self.reference, "reference", ndim=2, dtypes=FRAME_DTYPES)
+            if ref.shape != data.shape:
+                raise ValueError(f"reference: shape {ref.shape} differs from data {data.shape}")
+            _check_range(ref, bd, "reference")
+            object.__setattr__(self, "reference", ref)
+
+    @property
+    def shape(self):
+        return self.data.shape
+
+    @property
+    def white_level(self):
+        return (1 << self.bit_depth) - 1
+
+    @property
+    def z_mask(self):
+        return self.pattern.z_mask(self.data.shape)
+
+    @property
+    def missing_colour(self):
+        return self.pattern.missing_colour(self.data.shape)
+
+    def __repr__(self):
+        extra = ", with reference" if self.reference is not None else ""
+        extra += ", with ToF taps" if self.tof is not None else ""
+        return (f"RawFrame({self.data.shape[0]}x{self.data.shape[1]} {self.data.dtype}, "
+                f"pattern={self.pattern.name!r}, bit_depth={self.bit_depth}{extra})")
+
+
+def _check_range(data, bit_depth, name, ignore=None):
+    top = (1 << bit_depth) - 1
+    vals = data if ignore is None else data[~ignore]
+    if vals.size == 0:
+        return
+    lo, hi = vals.min(), vals.max()
+    if lo < 0 or hi > top:
+        raise ValueError(f"{name}: values span [{lo}, {hi}], beyond the {bit_depth}-bit "
+                         f"range [0, {top}]")
+
+
+def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=None):
+    """Sample an RGB image on a pattern: the raw frame a noise-free sensor would give.
+
+    Parameters
+    ----------
+    rgb : ndarray, shape (rows, cols, 3)
+        The image. Integer input of k bits is scaled to the full range of the
+        bit depth, ``round(v / (2**k - 1) * (2**bit_depth - 1))``; float input
+        is taken as [0, 1].
+    pattern : Pattern or str
+        The pattern; ``bayer(...)`` gives the reference CFA of the same image.
+    bit_depth : int
+        Bits of the output (default 11).
+    dtype : {uint16, uint8, float32, float64}
+        Output dtype. Integer outputs are rounded; float outputs keep the
+        exact scaled values.
+    input_bits : int, optional
+        Bits of integer input (default: the dtype's width, 8 for uint8 and 16
+        for uint16).
+
+    Returns
+    -------
+    RawFrame
+        ``data`` holds the colour of the underlying Bayer at every colour site
+        and 0 at the Z sites.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rgbz_fast import mosaic, mask1
+    >>> img = np.full((4, 4, 3), 255, np.uint8)
+    >>> mosaic(img, mask1()).data
+    array([[   0, 2047,    0, 2047],
+           [2047, 2047, 2047, 2047],
+           [   0, 2047,    0, 2047],
+           [2047, 2047, 2047, 2047]], dtype=uint16)
+    """
+    pattern = get_pattern(pattern)
+    bd = check_bit_depth(bit_depth)
+    img = check_image(rgb, "rgb", ndim=3)
+    if img.shape[2] != 3:
+        raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {img.shape}")
+    out_dtype = np.dtype(dtype)
+    if out_dtype not in FRAME_DTYPES:
+        raise TypeError(f"dtype: expected one of uint8, uint16, float32, float64, got {out_dtype}")
+    if out_dtype == np.uint8 and bd > 8:
+        raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
+    top = (1 << bd) - 1
+    shape = pattern.check_shape(img.shape[:2], "rgb")
+    colour = pattern.bayer_map(shape)
+    rr, cc = np.indices(shape, sparse=True)
+    sampled = img[rr, cc, colour]
+    if np.issubdtype(img.dtype, np.integer) or img.dtype == np.bool_:
+        k = input_bits if input_bits is not None else 8 * img.dtype.itemsize
+        k = check_bit_depth(k, "input_bits") if k <= 16 else int(k)
+        vmax = (1 << k) - 1
+        if sampled.min() < 0 or sampled.max() > vmax:
+            raise ValueError(f"rgb: integer values span [{sampled.min()}, {sampled.max()}], "
+                             f"beyond the {k}-bit input range")
+        scaled = sampled.astype(np.float64) * (top / vmax)
+    else:
+        if sampled.min() < 0 or sampled.max() > 1:
+            raise ValueError(f"rgb: float values span [{sampled.min()}, {sampled.max()}]; "
+                             "float input is taken as [0, 1]")
+        scaled = sampled.astype(np.float64) * top
+    if np.issubdtype(out_dtype, np.integer):
+        data = np.floor(scaled + 0.5).astype(out_dtype)
+    else:
+        data = scaled.astype(out_dtype)
+    data[pattern.channel_map(shape) == Z] = 0
+    return RawFrame(data, pattern, bd)

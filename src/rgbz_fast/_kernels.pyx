@@ -1,0 +1,105 @@
+# cython: language_level=3, embedsignature=True
+"""Thin bridge to the C core (csrc/): typed memoryviews, GIL released, status -> exception.
+
+No logic of its own: the Python layer validates arguments and allocates every
+output; this module only adapts buffers and maps status codes.
+"""
+
+from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint64_t
+
+cdef extern from "rgbz.h" nogil:
+    int RGBZ_OK
+    int RGBZ_EINVAL
+    int RGBZ_ENOMEM
+    int RGBZ_T_U8, RGBZ_T_U16, RGBZ_T_F32, RGBZ_T_F64
+    int RGBZ_NOPS
+    ctypedef struct rgbz_plan:
+        pass
+    ctypedef struct rgbz_params:
+        double sigma_floor
+        double edge_ratio
+        double maxval
+        int32_t exp_mode
+        int32_t workers
+    int rgbz_plan_layout(int64_t *out, int n)
+    int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
+                         Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                         const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
+                         const rgbz_params *params, uint64_t *opcounts)
+    int rgbz_reconstruct_count(int in_type, int precision, const void *src, void *dst,
+                               Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                               const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
+                               const rgbz_params *params, uint64_t *opcounts)
+    int rgbz_have_openmp()
+    int rgbz_max_threads()
+    int rgbz_counting_build_count()
+
+ctypedef fused frame_t:
+    uint8_t
+    uint16_t
+    float
+    double
+
+NOPS = RGBZ_NOPS
+
+
+cdef int _raise_for(int status) except -1:
+    if status == RGBZ_OK:
+        return 0
+    if status == RGBZ_ENOMEM:
+        raise MemoryError("scratch allocation failed in a C kernel")
+    if status == RGBZ_EINVAL:
+        raise RuntimeError("a C kernel rejected its arguments (status 1): "
+                           "a bug in the Python validation layer")
+    raise RuntimeError(f"C kernel failed with status {status}")
+
+
+def plan_layout():
+    """(sizeof(rgbz_plan), field offsets...) as compiled, to check the Python dtype."""
+    cdef int64_t out[32]
+    _raise_for(rgbz_plan_layout(out, 32))
+    return tuple(out[i] for i in range(15))
+
+
+def have_openmp():
+    return bool(rgbz_have_openmp())
+
+
+def max_threads():
+    return int(rgbz_max_threads())
+
+
+def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
+                int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
+                int n_plans, double sigma_floor, double edge_ratio, double maxval,
+                int exp_mode, int workers, uint64_t[::1] opcounts=None):
+    """Run the reconstruction kernel (or its counting twin when ``opcounts`` is given)."""
+    cdef int in_type
+    cdef int status
+    cdef rgbz_params prm
+    cdef uint64_t *counts = NULL
+    if frame_t is uint8_t:
+        in_type = RGBZ_T_U8
+    elif frame_t is uint16_t:
+        in_type = RGBZ_T_U16
+    elif frame_t is float:
+        in_type = RGBZ_T_F32
+    else:
+        in_type = RGBZ_T_F64
+    prm.sigma_floor = sigma_floor
+    prm.edge_ratio = edge_ratio
+    prm.maxval = maxval
+    prm.exp_mode = exp_mode
+    prm.workers = workers
+    if opcounts is not None:
+        counts = &opcounts[0]
+    with nogil:
+        if counts != NULL:
+            status = rgbz_reconstruct_count(
+                in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
+                py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
+        else:
+            status = rgbz_reconstruct(
+                in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
+                py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, NULL)
+    _raise_for(status)
