@@ -141,6 +141,8 @@ int RGBZ_SYM(rgbz_plan_layout)(int64_t *out, int n)
         (int64_t)offsetof(rgbz_plan, pair_b), (int64_t)offsetof(rgbz_plan, pair_gmask),
         (int64_t)offsetof(rgbz_plan, target), (int64_t)offsetof(rgbz_plan, cand_alpha),
         (int64_t)offsetof(rgbz_plan, cand_sgscale), (int64_t)offsetof(rgbz_plan, group_scale),
+        (int64_t)offsetof(rgbz_plan, use_cd), (int64_t)offsetof(rgbz_plan, cd_n),
+        (int64_t)offsetof(rgbz_plan, cd_tap), (int64_t)offsetof(rgbz_plan, cd_w),
     };
     int m = (int)(sizeof v / sizeof v[0]);
     if (n < m) return RGBZ_EINVAL;
@@ -169,6 +171,12 @@ static int rgbz_check_plans(const rgbz_plan *plans, int n_plans, int *ry, int *r
             if (p->cand_tap[k] < 0 || p->cand_tap[k] >= p->n_taps) return RGBZ_EINVAL;
             if (p->cand_ori[k] < 0 || p->cand_ori[k] > 3) return RGBZ_EINVAL;
         }
+        if (p->use_cd)
+            for (int k = 0; k <= p->n_cand; k++) {
+                if (p->cd_n[k] < 1 || p->cd_n[k] > RGBZ_MAX_CD) return RGBZ_EINVAL;
+                for (int m = 0; m < p->cd_n[k]; m++)
+                    if (p->cd_tap[k][m] < 0 || p->cd_tap[k][m] >= p->n_taps) return RGBZ_EINVAL;
+            }
         for (int k = 0; k < p->n_pairs; k++)
             if (p->pair_a[k] < 0 || p->pair_a[k] >= p->n_taps || p->pair_b[k] < 0 ||
                 p->pair_b[k] >= p->n_taps || p->pair_gmask[k] < 0 ||

@@ -17,6 +17,7 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
                                          const rgbz_params *prm, uint64_t *opcounts)
 {
     const REAL floor_ = (REAL)prm->sigma_floor;
+    const REAL rel = (REAL)prm->sigma_rel;
     const REAL edge_ratio = (REAL)prm->edge_ratio;
     const REAL maxval = (REAL)prm->maxval;
     const int exp_mode = prm->exp_mode;
@@ -43,7 +44,7 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
             const ptrdiff_t *cm = colmap + x + rx;
             for (int t = 0; t < p->n_taps; t++)
                 v[t] = (REAL)rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
-            REAL r = SITE(rgbz_site, RS)(v, p, floor_, edge_ratio, exp_mode);
+            REAL r = SITE(rgbz_site, RS)(v, p, floor_, rel, edge_ratio, exp_mode);
             if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
             if (r > maxval) r = maxval;
 #if IN_IS_INT

@@ -20,20 +20,25 @@
 
 /* gamma factors (eq. 7) of the groups [g0, g1): sigma = max(min G, floor) */
 static inline void RFN(rgbz_gammas)(const REAL *G, const rgbz_plan *p, int g0, int g1,
-                                    REAL floor_, int exp_mode, REAL *gamma)
+                                    REAL floor_, REAL rel, int exp_mode, REAL *gamma)
 {
-    REAL gmin = (REAL)0;
+    REAL gmin = (REAL)0, gsum = (REAL)0;
     int any = 0;
     for (int g = g0; g < g1; g++) {
         if (p->group_scale[g] <= 0.0) continue;
         if (!any || OCMP(G[g] < gmin)) gmin = G[g];
-        any = 1;
+        if (rel > (REAL)0) gsum = any ? OADD(gsum, G[g]) : G[g];
+        any++;
     }
     if (!any) {
         for (int g = g0; g < g1; g++) gamma[g] = (REAL)1;
         return;
     }
     REAL sigma = OCMP(gmin > floor_) ? gmin : floor_;
+    if (rel > (REAL)0) {
+        REAL rfloor = ODIV(OMUL(rel, gsum), (REAL)any);
+        if (OCMP(rfloor > sigma)) sigma = rfloor;
+    }
     REAL two_s2 = OMUL((REAL)2, OMUL(sigma, sigma));
     REAL inv = ODIV((REAL)1, two_s2);
     for (int g = g0; g < g1; g++) {
@@ -52,7 +57,7 @@ static inline REAL RFN(rgbz_median3)(REAL a, REAL b, REAL c)
     return OCMP(a > b) ? a : b;
 }
 
-static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_,
+static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_, REAL rel,
                                   REAL edge_ratio, int exp_mode)
 {
     const int nc = p->n_cand;
@@ -95,8 +100,8 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
         }
         for (int g = 0; g < RGBZ_NGROUPS; g++)
             if (p->group_scale[g] > 0.0) G[g] = OMUL(G[g], (REAL)p->group_scale[g]);
-        if (p->use_sg) RFN(rgbz_gammas)(G, p, 0, 8, floor_, exp_mode, gamma);
-        if (p->use_grad) RFN(rgbz_gammas)(G, p, 8, 12, floor_, exp_mode, gamma);
+        if (p->use_sg) RFN(rgbz_gammas)(G, p, 0, 8, floor_, rel, exp_mode, gamma);
+        if (p->use_grad) RFN(rgbz_gammas)(G, p, 8, 12, floor_, rel, exp_mode, gamma);
     }
 
     /* intensity factor beta (eq. 4): 1 / (1 + sum_m |c_k - c_m|) */
@@ -109,6 +114,20 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
                 S[k] = OADD(S[k], d);
                 S[m] = OADD(S[m], d);
             }
+    }
+
+    /* values interpolated: the candidates (eq. 13), or in the colour-difference domain
+       (eq. 5) their differences to the estimate X_k of the other channel(s), added back to
+       the estimate X_0 at the missing pixel */
+    REAL base = (REAL)0;
+    if (p->use_cd) {
+        for (int k = 0; k <= nc; k++) {
+            REAL x = OMUL((REAL)p->cd_w[k][0], v[p->cd_tap[k][0]]);
+            for (int m = 1; m < p->cd_n[k]; m++)
+                x = OADD(x, OMUL((REAL)p->cd_w[k][m], v[p->cd_tap[k][m]]));
+            if (k < nc) c[k] = OSUB(c[k], x);
+            else base = x;
+        }
     }
 
     /* weights (eqs. 2, 6, 19) and the weighted mean (eqs. 12-13) */
@@ -134,13 +153,16 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
         den = k ? OADD(den, w) : w;
         if (k) num = OADD(num, OMUL(w, OSUB(c[k], c[0])));
     }
+    REAL r;
     if (!(den > (REAL)0)) {
         /* every weight underflowed: plain mean of the candidates */
         REAL s = c[0];
         for (int k = 1; k < nc; k++) s = OADD(s, c[k]);
-        return ODIV(s, (REAL)nc);
+        r = ODIV(s, (REAL)nc);
+    } else {
+        r = OADD(c[0], ODIV(num, den));
     }
-    return OADD(c[0], ODIV(num, den));
+    return p->use_cd ? OADD(base, r) : r;
 }
 
 #undef RFN

@@ -65,6 +65,7 @@
 #define RGBZ_MAX_CAND 24
 #define RGBZ_MAX_PAIRS 96
 #define RGBZ_NGROUPS 12      /* 0..7 semi-gradients N S W E NW NE SW SE; 8..11 gradients V H D1 D2 */
+#define RGBZ_MAX_CD 8        /* taps of one colour-difference estimate */
 
 /*
  * A plan says how to reconstruct the missing pixels of one phase of the
@@ -78,13 +79,18 @@ typedef struct {
     int32_t tap_dy[RGBZ_MAX_TAPS], tap_dx[RGBZ_MAX_TAPS];
     int32_t cand_tap[RGBZ_MAX_CAND], cand_ori[RGBZ_MAX_CAND], cand_sgmask[RGBZ_MAX_CAND];
     int32_t pair_a[RGBZ_MAX_PAIRS], pair_b[RGBZ_MAX_PAIRS], pair_gmask[RGBZ_MAX_PAIRS];
-    int32_t target, reserved;
+    int32_t target, use_cd;
+    /* colour-difference domain (eq. 5): X_k = sum_m cd_w[k][m] * v[cd_tap[k][m]] estimates the
+       other channel(s) at candidate k (k < n_cand) and at the missing pixel (k = n_cand) */
+    int32_t cd_n[RGBZ_MAX_CAND + 1], cd_tap[RGBZ_MAX_CAND + 1][RGBZ_MAX_CD];
     double cand_alpha[RGBZ_MAX_CAND], cand_sgscale[RGBZ_MAX_CAND];
     double group_scale[RGBZ_NGROUPS];
+    double cd_w[RGBZ_MAX_CAND + 1][RGBZ_MAX_CD];
 } rgbz_plan;
 
 typedef struct {
-    double sigma_floor;   /* floor of sigma in eq. 7, in DN */
+    double sigma_floor;   /* absolute floor of sigma in eq. 7, in DN */
+    double sigma_rel;     /* relative floor: sigma >= sigma_rel * mean gradient of the family */
     double edge_ratio;    /* edi_rows: dominant-edge threshold */
     double maxval;        /* white level 2^b - 1: outputs are clipped to [0, maxval] */
     int32_t exp_mode;     /* RGBZ_EXP_LIBM or RGBZ_EXP_FAST */
@@ -109,6 +115,28 @@ int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void
                                ptrdiff_t rows, ptrdiff_t cols, int py, int px,
                                const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
                                const rgbz_params *params, uint64_t *opcounts);
+
+/*
+ * Malvar-He-Cutler 2004 demosaic of a Bayer CFA (demosaic.c).
+ *   src rows x cols (in_type), dst rows x cols x 3 (out_type RGBZ_T_F32 or RGBZ_T_F64),
+ *   phase: the 2x2 quad colours in raster order (R=0, G=1, B=2),
+ *   mode: 0 reflect (scipy.ndimage 'reflect'), 1 period (shift by 2, keeps colours).
+ */
+int RGBZ_SYM(rgbz_demosaic_malvar)(int in_type, int out_type, const void *src, void *dst,
+                                   ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
+                                   int mode, int workers);
+
+/* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
+   phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */
+int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                                  double *phase, double *amp, double *offset, int workers);
+
+/* Multi-frequency unwrapping (tof.c): phase (F, N), frequencies (Hz), weights (F),
+   max_range (m) -> depth (N, m), weighted RMS residual (N, m), wrap count of the
+   base frequency (N, may be NULL). */
+int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
+                              const double *weights, double max_range, double *depth,
+                              double *residual, int32_t *wraps, int workers);
 
 /* build information */
 int RGBZ_SYM(rgbz_have_openmp)(void);

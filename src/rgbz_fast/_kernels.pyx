@@ -17,6 +17,7 @@ cdef extern from "rgbz.h" nogil:
         pass
     ctypedef struct rgbz_params:
         double sigma_floor
+        double sigma_rel
         double edge_ratio
         double maxval
         int32_t exp_mode
@@ -30,6 +31,16 @@ cdef extern from "rgbz.h" nogil:
                                Py_ssize_t rows, Py_ssize_t cols, int py, int px,
                                const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
                                const rgbz_params *params, uint64_t *opcounts)
+    int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
+                             Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
+                             int mode, int workers)
+    int rgbz_tof_demodulate(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                            double *phase, double *amp, double *offset, int workers)
+    int rgbz_tof_unwrap(const double *phase, Py_ssize_t F, Py_ssize_t N, const double *freqs,
+                        const double *weights, double max_range, double *depth,
+                        double *residual, int32_t *wraps, int workers)
+    int rgbz_tof_demodulate_count(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                                  double *phase, double *amp, double *offset, int workers)
     int rgbz_have_openmp()
     int rgbz_max_threads()
     int rgbz_counting_build_count()
@@ -39,6 +50,26 @@ ctypedef fused frame_t:
     uint16_t
     float
     double
+
+ctypedef fused rgb_t:
+    float
+    double
+
+ctypedef fused tap_t:
+    uint16_t
+    float
+    double
+
+
+cdef int _type_code(frame_t *p) noexcept nogil:
+    if frame_t is uint8_t:
+        return RGBZ_T_U8
+    elif frame_t is uint16_t:
+        return RGBZ_T_U16
+    elif frame_t is float:
+        return RGBZ_T_F32
+    else:
+        return RGBZ_T_F64
 
 NOPS = RGBZ_NOPS
 
@@ -58,7 +89,7 @@ def plan_layout():
     """(sizeof(rgbz_plan), field offsets...) as compiled, to check the Python dtype."""
     cdef int64_t out[32]
     _raise_for(rgbz_plan_layout(out, 32))
-    return tuple(out[i] for i in range(15))
+    return tuple(out[i] for i in range(19))
 
 
 def have_openmp():
@@ -71,7 +102,7 @@ def max_threads():
 
 def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
                 int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
-                int n_plans, double sigma_floor, double edge_ratio, double maxval,
+                int n_plans, double sigma_floor, double sigma_rel, double edge_ratio, double maxval,
                 int exp_mode, int workers, uint64_t[::1] opcounts=None):
     """Run the reconstruction kernel (or its counting twin when ``opcounts`` is given)."""
     cdef int in_type
@@ -87,6 +118,7 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     else:
         in_type = RGBZ_T_F64
     prm.sigma_floor = sigma_floor
+    prm.sigma_rel = sigma_rel
     prm.edge_ratio = edge_ratio
     prm.maxval = maxval
     prm.exp_mode = exp_mode
@@ -102,4 +134,49 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
             status = rgbz_reconstruct(
                 in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
                 py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, NULL)
+    _raise_for(status)
+
+
+def demosaic_malvar(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst, const int32_t[::1] phase,
+                    int mode, int workers):
+    """Malvar-He-Cutler 2004 demosaic: Bayer CFA (rows, cols) -> RGB (rows, cols, 3)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int out_type = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    with nogil:
+        status = rgbz_demosaic_malvar(in_type, out_type, &src[0, 0], &dst[0, 0, 0],
+                                      src.shape[0], src.shape[1], &phase[0], mode, workers)
+    _raise_for(status)
+
+
+def tof_demodulate(const tap_t[:, :, ::1] taps, double[:, ::1] phase, double[:, ::1] amp,
+                   double[:, ::1] offset, int workers, uint64_t[::1] opcounts=None):
+    """Four-tap demodulation: taps (F, 4, N) -> phase, amplitude, offset (F, N)."""
+    cdef int status
+    cdef int in_type
+    if tap_t is uint16_t:
+        in_type = RGBZ_T_U16
+    elif tap_t is float:
+        in_type = RGBZ_T_F32
+    else:
+        in_type = RGBZ_T_F64
+    if taps.shape[2] == 0:
+        return
+    with nogil:
+        status = rgbz_tof_demodulate(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                     &phase[0, 0], &amp[0, 0], &offset[0, 0], workers)
+    _raise_for(status)
+
+
+def tof_unwrap(const double[:, ::1] phase, const double[::1] freqs, const double[::1] weights,
+               double max_range, double[::1] depth, double[::1] residual, int32_t[::1] wraps,
+               int workers):
+    """Multi-frequency phase unwrapping (brute force over the base frequency's wraps)."""
+    cdef int status
+    if phase.shape[1] == 0:
+        return
+    with nogil:
+        status = rgbz_tof_unwrap(&phase[0, 0], phase.shape[0], phase.shape[1], &freqs[0],
+                                 &weights[0], max_range, &depth[0], &residual[0], &wraps[0],
+                                 workers)
     _raise_for(status)

@@ -23,7 +23,7 @@ METHODS = {"bilinear": 0, "bi": 1, "edi_central": 2, "edi_line": 3, "sg": 4, "ed
 ORIENTATIONS = ("vertical", "horizontal", "diag_nw_se", "diag_ne_sw")
 SEMI_GRADIENTS = ("N", "S", "W", "E", "NW", "NE", "SW", "SE")
 
-MAX_TAPS, MAX_CAND, MAX_PAIRS, NGROUPS = 40, 24, 96, 12
+MAX_TAPS, MAX_CAND, MAX_PAIRS, NGROUPS, MAX_CD = 40, 24, 96, 12, 8
 _SG, _GRAD = 0, 8   # first group index of each family
 
 PLAN_DTYPE = np.dtype([
@@ -34,14 +34,16 @@ PLAN_DTYPE = np.dtype([
     ("cand_sgmask", "<i4", MAX_CAND),
     ("pair_a", "<i4", MAX_PAIRS), ("pair_b", "<i4", MAX_PAIRS),
     ("pair_gmask", "<i4", MAX_PAIRS),
-    ("target", "<i4"), ("reserved", "<i4"),
+    ("target", "<i4"), ("use_cd", "<i4"),
+    ("cd_n", "<i4", MAX_CAND + 1), ("cd_tap", "<i4", (MAX_CAND + 1, MAX_CD)),
     ("cand_alpha", "<f8", MAX_CAND), ("cand_sgscale", "<f8", MAX_CAND),
     ("group_scale", "<f8", NGROUPS),
+    ("cd_w", "<f8", (MAX_CAND + 1, MAX_CD)),
 ], align=True)
 
 _LAYOUT_FIELDS = ("method", "use_ab", "tap_dy", "tap_dx", "cand_tap", "cand_ori", "cand_sgmask",
                   "pair_a", "pair_b", "pair_gmask", "target", "cand_alpha", "cand_sgscale",
-                  "group_scale")
+                  "group_scale", "use_cd", "cd_n", "cd_tap", "cd_w")
 
 
 def check_layout(c_layout):
@@ -145,7 +147,42 @@ def _sg_mode_pure(cands):
     return all(dy != 0 and dx != 0 for dy, dx in cands)
 
 
-def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto"):
+def colour_difference_estimates(ch, positions, target):
+    """Linear estimates of the other channel(s) at each position (eq. 5's I_G, generalised).
+
+    For a green target the other channels are red and blue, for red or blue
+    it is green (eq. 5). At a position p, a channel's estimate is the mean of
+    its pixels among the 4-neighbours of p; the estimate X_p is the mean of
+    the channel estimates. Only channels present around *every* position are
+    used, so that X is the same function at the candidates and at the missing
+    pixel. Returns a list of {offset: weight} dicts, or None when no channel
+    is available everywhere.
+    """
+    others = (0, 2) if target == 1 else (1,)
+    nb4 = ((-1, 0), (1, 0), (0, -1), (0, 1))
+    per_pos = []
+    for dy, dx in positions:
+        d = {}
+        for o in others:
+            offs = [(dy + a, dx + b) for a, b in nb4 if ch(dy + a, dx + b) == o]
+            if offs:
+                d[o] = offs
+        per_pos.append(d)
+    usable = [o for o in others if all(o in d for d in per_pos)]
+    if not usable:
+        return None
+    out = []
+    for d in per_pos:
+        w: dict[tuple[int, int], float] = {}
+        for o in usable:
+            for off in d[o]:
+                w[off] = w.get(off, 0.0) + 1.0 / (len(d[o]) * len(usable))
+        out.append(w)
+    return out
+
+
+def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
+                domain: str = "intensity"):
     """Return ``(phase_map, plans)`` for ``pattern`` and ``method``.
 
     phase_map : int32 array of size P*Q, the plan index of each tile site or -1.
@@ -254,6 +291,17 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto"):
                         nsg.append(len(cover))
                     # a common 1/n cancels in the normalised weights (eq. 12)
                     plan["sg_scaled"] = int(len(set(nsg)) > 1)
+
+                if domain == "colour_difference" and method != "bilinear":
+                    est = colour_difference_estimates(lambda dy, dx: ch(r, c, dy, dx),
+                                                      cands + [(0, 0)], target)
+                    if est is not None:
+                        plan["use_cd"] = 1
+                        for k, wts in enumerate(est):
+                            plan["cd_n"][k] = len(wts)
+                            for m, (off, wt) in enumerate(wts.items()):
+                                plan["cd_tap"][k, m] = tap(off)
+                                plan["cd_w"][k, m] = wt
 
             plan["n_taps"] = len(taps)
             for off, t in taps.items():

@@ -28,11 +28,12 @@ check_layout(_kernels.plan_layout())
 PRECISIONS = {"float32": 0, "float64": 1}
 EXP_MODES = {"libm": 0, "fast": 1}
 SG_MODES = ("auto", "pure", "combined")
+DOMAINS = ("colour_difference", "intensity")
 
 
 @lru_cache(maxsize=128)
-def _plans_for(pattern, method, sg_mode):
-    phase_map, plans = build_plans(pattern, method, sg_mode)
+def _plans_for(pattern, method, sg_mode, domain):
+    phase_map, plans = build_plans(pattern, method, sg_mode, domain)
     phase_map.setflags(write=False)
     raw = plans.view(np.uint8).reshape(-1)
     raw.setflags(write=False)
@@ -60,7 +61,8 @@ def _prepare(frame, pattern, bit_depth):
 
 
 def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="float32",
-                workers=None, sigma_floor=1e-3, edge_ratio=0.5, sg_mode="auto", exp="libm"):
+                workers=None, sigma_floor=1e-3, sigma_rel=0.0, edge_ratio=0.5, sg_mode="auto", exp="libm",
+                domain="intensity"):
     """Fill in the colour missing at every Z site: RGB-Z raw frame -> full Bayer CFA.
 
     Parameters
@@ -159,9 +161,13 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
     precision = check_choice(precision, tuple(PRECISIONS), "precision")
     sg_mode = check_choice(sg_mode, SG_MODES, "sg_mode")
     exp = check_choice(exp, tuple(EXP_MODES), "exp")
+    domain = check_choice(domain, DOMAINS, "domain")
     nthreads = check_workers(workers)
     sigma_floor = _positive(sigma_floor, "sigma_floor")
     edge_ratio = _positive(edge_ratio, "edge_ratio")
+    sigma_rel = float(sigma_rel)
+    if not 0 <= sigma_rel <= 10:
+        raise ValueError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}")
     out = np.empty(data.shape, data.dtype)
     if not pattern.has_z:
         out[...] = data
@@ -169,10 +175,10 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
     if pattern.bayer_phase is None:
         raise ValueError(f"pattern: tile {pattern.tile_string!r} fits no Bayer phase, so its Z "
                          "sites stand in for no defined colour")
-    phase_map, plans, n_plans = _plans_for(pattern, method, sg_mode)
+    phase_map, plans, n_plans = _plans_for(pattern, method, sg_mode, domain)
     src = np.ascontiguousarray(data)
     _kernels.reconstruct(src, out, PRECISIONS[precision], pattern.period[0], pattern.period[1],
-                         phase_map, plans, n_plans, sigma_floor, edge_ratio,
+                         phase_map, plans, n_plans, sigma_floor, sigma_rel, edge_ratio,
                          float((1 << bd) - 1), EXP_MODES[exp], nthreads)
     return out
 
