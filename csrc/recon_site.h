@@ -57,6 +57,15 @@ static inline REAL RFN(rgbz_median3)(REAL a, REAL b, REAL c)
     return OCMP(a > b) ? a : b;
 }
 
+/* mean of n values as c0 + sum(c_k - c0) / n: exactly c0 when all are equal */
+static inline REAL RFN(rgbz_mean)(const REAL *c, int n)
+{
+    if (n == 1) return c[0];
+    REAL s = OSUB(c[1], c[0]);
+    for (int k = 2; k < n; k++) s = OADD(s, OSUB(c[k], c[0]));
+    return OADD(c[0], ODIV(s, (REAL)n));
+}
+
 static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_, REAL rel,
                                   REAL edge_ratio, int exp_mode)
 {
@@ -79,11 +88,7 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
 
     for (int k = 0; k < nc; k++) c[k] = v[p->cand_tap[k]];
 
-    if (p->method == RGBZ_M_BILINEAR) {
-        REAL s = c[0];
-        for (int k = 1; k < nc; k++) s = OADD(s, c[k]);
-        return ODIV(s, (REAL)nc);
-    }
+    if (p->method == RGBZ_M_BILINEAR) return RFN(rgbz_mean)(c, nc);
 
     /* gradient groups: mean absolute difference of their pairs */
     REAL G[RGBZ_NGROUPS], gamma[RGBZ_NGROUPS];
@@ -156,9 +161,7 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
     REAL r;
     if (!(den > (REAL)0)) {
         /* every weight underflowed: plain mean of the candidates */
-        REAL s = c[0];
-        for (int k = 1; k < nc; k++) s = OADD(s, c[k]);
-        r = ODIV(s, (REAL)nc);
+        r = RFN(rgbz_mean)(c, nc);
     } else {
         r = OADD(c[0], ODIV(num, den));
     }

@@ -10,7 +10,7 @@ import numpy as np
 from ._patterns import Pattern, Z, get_pattern
 from ._validate import FRAME_DTYPES, check_bit_depth, check_image
 
-__all__ = ["RawFrame", "mosaic"]
+__all__ = ["RawFrame", "mosaic", "validate_frame"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -55,10 +55,7 @@ class RawFrame:
         object.__setattr__(self, "pattern", pattern)
         bd = check_bit_depth(self.bit_depth)
         object.__setattr__(self, "bit_depth", bd)
-        data = check_image(self.data, "data", ndim=2, dtypes=FRAME_DTYPES)
-        pattern.check_shape(data.shape, "data")
-        _check_range(data, bd, "data", ignore=pattern.z_mask(data.shape))
-        object.__setattr__(self, "data", data)
+        object.__setattr__(self, "data", validate_frame(self.data, pattern, bd, "data"))
         if self.reference is not None:
             ref = check_image(self.reference, "reference", ndim=2, dtypes=FRAME_DTYPES)
             if ref.shape != data.shape:
@@ -87,6 +84,22 @@ class RawFrame:
         extra += ", with ToF taps" if self.tof is not None else ""
         return (f"RawFrame({self.data.shape[0]}x{self.data.shape[1]} {self.data.dtype}, "
                 f"pattern={self.pattern.name!r}, bit_depth={self.bit_depth}{extra})")
+
+
+def validate_frame(data, pattern, bit_depth, name):
+    """Check a raw frame array against its pattern and bit depth; returns ``np.asarray(data)``.
+
+    Errors name ``name``: 2-D, a supported dtype, finite, at least one
+    period, values (colour sites only) within [0, 2**bit_depth - 1], and a
+    dtype wide enough for the bit depth.
+    """
+    data = check_image(data, name, ndim=2, dtypes=FRAME_DTYPES)
+    if data.dtype == np.uint8 and bit_depth > 8:
+        raise ValueError(f"{name}: a uint8 frame cannot hold {bit_depth}-bit data; "
+                         "pass uint16 or a float dtype, or bit_depth <= 8")
+    pattern.check_shape(data.shape, name)
+    _check_range(data, bit_depth, name, ignore=pattern.z_mask(data.shape))
+    return data
 
 
 def _check_range(data, bit_depth, name, ignore=None):

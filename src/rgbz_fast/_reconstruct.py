@@ -16,10 +16,10 @@ from functools import lru_cache
 import numpy as np
 
 from . import _kernels
-from ._frame import RawFrame
+from ._frame import RawFrame, validate_frame
 from ._patterns import get_pattern
 from ._plans import METHODS, build_plans, check_layout
-from ._validate import FRAME_DTYPES, check_bit_depth, check_choice, check_image, check_workers
+from ._validate import check_bit_depth, check_choice, check_workers
 
 __all__ = ["reconstruct", "METHODS", "PRECISIONS"]
 
@@ -52,12 +52,9 @@ def _prepare(frame, pattern, bit_depth):
     if pattern is None:
         raise TypeError("pattern: required when frame is a plain array "
                         "(pass a RawFrame, or pattern='mask1', ...)")
-    data = check_image(frame, "frame", ndim=2, dtypes=FRAME_DTYPES)
     pattern = get_pattern(pattern)
     bd = check_bit_depth(11 if bit_depth is None else bit_depth)
-    # RawFrame validates shape, range and finiteness without copying
-    RawFrame(data, pattern, bd)
-    return data, pattern, bd
+    return validate_frame(frame, pattern, bd, "frame"), pattern, bd
 
 
 def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="float32",
@@ -105,8 +102,9 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
         ``"auto"`` uses pure where every candidate lies on a diagonal (Mask1)
         and combined elsewhere (Mask2).
     exp : {"libm", "fast"}
-        Exponential of eq. 7: the C library's, or a polynomial approximation
-        (relative error < 3e-7) that is faster.
+        Exponential of eq. 7: the C library's, or a range-reduced polynomial
+        (relative error below 3e-7 in float32, 1e-8 in float64; results below
+        the normal range flush to 0) that is faster.
 
     Returns
     -------
@@ -165,7 +163,10 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
     nthreads = check_workers(workers)
     sigma_floor = _positive(sigma_floor, "sigma_floor")
     edge_ratio = _positive(edge_ratio, "edge_ratio")
-    sigma_rel = float(sigma_rel)
+    try:
+        sigma_rel = float(sigma_rel)
+    except (TypeError, ValueError):
+        raise TypeError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}") from None
     if not 0 <= sigma_rel <= 10:
         raise ValueError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}")
     out = np.empty(data.shape, data.dtype)
