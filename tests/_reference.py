@@ -117,8 +117,9 @@ def group_means(diffs, valid, groups):
     return G_, ok
 
 
-def discriminate(G_, ok, sigma_floor):
-    """Eq. 7: gamma = exp(-G^2 / (2 sigma^2)), sigma = max(min valid G, sigma_floor).
+def discriminate(G_, ok, sigma_floor, sigma_rel=0.0):
+    """Eq. 7: gamma = exp(-G^2 / (2 sigma^2)), sigma = max(min valid G, sigma_floor,
+    sigma_rel * mean valid G) (the relative floor of docs/interpretation.md).
 
     Groups without a valid difference are left out of the minimum and get 0;
     if no group of a site is valid, every gamma of the site is 1.
@@ -126,6 +127,10 @@ def discriminate(G_, ok, sigma_floor):
     any_ok = ok.any(axis=1)
     gmin = np.where(ok, G_, np.inf).min(axis=1)
     sigma = np.maximum(np.where(any_ok, gmin, 0.0), sigma_floor)
+    if sigma_rel > 0:
+        nvalid = np.maximum(ok.sum(axis=1), 1)
+        gmean = np.where(ok, G_, 0.0).sum(axis=1) / nvalid
+        sigma = np.maximum(sigma, sigma_rel * gmean)
     with np.errstate(under="ignore", over="ignore"):
         gam = np.exp(-(G_ ** 2) / (2.0 * sigma[:, None] ** 2))
     gam = np.where(ok, gam, 0.0)
@@ -272,10 +277,10 @@ for _k in range(25):
 
 # -- the methods on gathered windows --------------------------------------------------
 
-def _edi_gamma(vals, codes, pairs, groups, sigma_floor):
+def _edi_gamma(vals, codes, pairs, groups, sigma_floor, sigma_rel):
     d, v = pair_differences(vals, codes, pairs)
     G_, ok = group_means(d, v, groups)
-    return discriminate(G_, ok, sigma_floor)      # (n, 4), indexed by orientation
+    return discriminate(G_, ok, sigma_floor, sigma_rel)      # (n, 4), indexed by orientation
 
 
 def _gamma_at_candidates(gam):
@@ -286,7 +291,8 @@ def _gamma_at_candidates(gam):
     return g
 
 
-def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all_valid"):
+def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all_valid",
+               sigma_rel=0.0):
     """Per-position semi-gradient factor: mean of the discriminated SGs covering it (eq. 19).
 
     sg_invalid="exclude" (default): the mean runs over the *valid* covering SGs;
@@ -300,7 +306,7 @@ def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all
     """
     d, v = pair_differences(vals, codes, SG_PAIRS)
     SG, ok = group_means(d, v, SG_GROUPS)       # eq. 18, each SG the mean of its differences
-    g = discriminate(SG, ok, sigma_floor)       # eq. 7
+    g = discriminate(SG, ok, sigma_floor, sigma_rel)       # eq. 7
     n = vals.shape[0]
     cover = np.broadcast_to(SG_COVER[None, :, :], (n,) + SG_COVER.shape)   # (n, 25, 8)
     valid_cover = cover & ok[:, None, :]
@@ -321,26 +327,44 @@ def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all
     return np.where(cnt > 0, s / np.maximum(cnt, 1), 0.0)   # (n, 25)
 
 
-def _reconstruct_5x5(vals, codes, target, method, sigma_floor, sg_mode, sg_invalid,
-                     sg_uncovered="all_valid", diag=None):
+def _reconstruct_5x5(vals, codes, target, method, sigma_floor, sigma_rel, sg_mode, sg_invalid,
+                     sg_uncovered="all_valid", diag=None, cd=None):
     cand = (codes == target[:, None]) & (codes != Z)
     cand[:, K(0, 0)] = False
     if method == "bilinear":
         return plain_mean(vals, cand)
+    if cd is not None:
+        # eq. 5 generalised: weights from the intensities, interpolation of c - X
+        xhat, x0, use = cd
+        inner = _reconstruct_5x5_weights(vals, codes, target, method, sigma_floor, sigma_rel,
+                                         sg_mode, sg_invalid, sg_uncovered)
+        plain = weighted_mean(vals, cand, inner, diag)
+        cdv = weighted_mean(vals - np.nan_to_num(xhat), cand, inner) + np.nan_to_num(x0)
+        return np.where(use, cdv, plain)
+    return weighted_mean(vals, cand, _reconstruct_5x5_weights(
+        vals, codes, target, method, sigma_floor, sigma_rel, sg_mode, sg_invalid,
+        sg_uncovered), diag)
+
+
+def _reconstruct_5x5_weights(vals, codes, target, method, sigma_floor, sigma_rel, sg_mode,
+                             sg_invalid, sg_uncovered):
+    """The unnormalised weights of eqs. 2, 6 and 19 at every kernel position."""
+    cand = (codes == target[:, None]) & (codes != Z)
+    cand[:, K(0, 0)] = False
     alpha = np.broadcast_to(ALPHA, vals.shape)
     beta = intensity_factor(vals, cand)
     if method == "bi":
-        return weighted_mean(vals, cand, alpha * beta, diag)                # eq. 2
+        return alpha * beta                                                 # eq. 2
     if method == "edi_central":
-        gam = _edi_gamma(vals, codes, EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS, sigma_floor)
-        w = alpha * beta * _gamma_at_candidates(gam)                        # eq. 6
-        return weighted_mean(vals, cand, w, diag)
-    gam_line = _edi_gamma(vals, codes, EDI_LINE_PAIRS, EDI_LINE_GROUPS, sigma_floor)
+        gam = _edi_gamma(vals, codes, EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS, sigma_floor,
+                         sigma_rel)
+        return alpha * beta * _gamma_at_candidates(gam)                     # eq. 6
+    gam_line = _edi_gamma(vals, codes, EDI_LINE_PAIRS, EDI_LINE_GROUPS, sigma_floor, sigma_rel)
     w_line = alpha * beta * _gamma_at_candidates(gam_line)
     if method == "edi_line":
-        return weighted_mean(vals, cand, w_line, diag)
+        return w_line
     if method == "sg":
-        sgk = sg_weights(vals, codes, sigma_floor, sg_invalid, sg_uncovered)
+        sgk = sg_weights(vals, codes, sigma_floor, sg_invalid, sg_uncovered, sigma_rel)
         diagonal = (DY != 0) & (DX != 0)
         if sg_mode == "pure":
             pure = np.ones(len(vals), dtype=bool)
@@ -350,9 +374,49 @@ def _reconstruct_5x5(vals, codes, target, method, sigma_floor, sg_mode, sg_inval
             pure = ~np.any(cand & ~diagonal[None, :], axis=1)
         else:
             raise ValueError(f"sg_mode: {sg_mode!r}")
-        w = np.where(pure[:, None], sgk, w_line * sgk)                      # eq. 19
-        return weighted_mean(vals, cand, w, diag)
+        return np.where(pure[:, None], sgk, w_line * sgk)                   # eq. 19
     raise ValueError(f"method: unknown {method!r}")
+
+
+def colour_difference_estimates(data, chan, ys, xs, period, target):
+    """X at every 5x5 position and at the missing pixel (docs/interpretation.md, eq. 5).
+
+    X(p) = mean over the usable other channels (R and B for a green target, G
+    for red/blue) of the mean of that channel's 4-neighbours of p; a channel is
+    usable at a site if every candidate and the missing pixel have at least one
+    4-neighbour of it. Returns (xhat (n, 25), x0 (n,), use (n,) bool).
+    """
+    off7 = window_offsets(3, 3)
+    v7, c7 = gather(data, chan, ys, xs, off7, period)
+    idx7 = {(int(dy), int(dx)): i for i, (dy, dx) in enumerate(off7)}
+    n = len(ys)
+    cand = np.zeros((n, 25), bool)
+    _, c5 = gather(data, chan, ys, xs, OFF, period)
+    cand = (c5 == target[:, None]) & (c5 != Z)
+    cand[:, K(0, 0)] = False
+    nb4 = ((-1, 0), (1, 0), (0, -1), (0, 1))
+    # per position, per channel: sum and count of 4-neighbours
+    sums = np.zeros((n, 25, 3))
+    cnts = np.zeros((n, 25, 3))
+    for k, (dy, dx) in enumerate(OFF):
+        for a, b in nb4:
+            j = idx7[(int(dy) + a, int(dx) + b)]
+            for o in range(3):
+                hit = c7[:, j] == o
+                sums[:, k, o] += np.where(hit, v7[:, j], 0.0)
+                cnts[:, k, o] += hit
+    others = np.where(target[:, None] == 1, np.array([[1, 0, 1]]), np.array([[0, 1, 0]]))
+    relevant = cand.copy()
+    relevant[:, K(0, 0)] = True
+    # usable channel: present at every relevant position
+    present = cnts > 0
+    usable = others.astype(bool) & np.all(present | ~relevant[:, :, None], axis=1)
+    nuse = usable.sum(axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        means = sums / cnts
+    means = np.where(usable[:, None, :] & present, means, 0.0)
+    xhat = means.sum(axis=2) / np.maximum(nuse, 1)[:, None]
+    return xhat, xhat[:, K(0, 0)], nuse > 0
 
 
 # edi_rows: offsets of the 5x9 window, index = (dy + 2) * 9 + (dx + 4)
@@ -395,8 +459,9 @@ def _reconstruct_rows(vals, codes, target, edge_ratio):
 # -- public entry point ---------------------------------------------------------------
 
 def reference_reconstruct(data, pattern, method, bit_depth=11, sigma_floor=1e-3,
-                          edge_ratio=0.5, sg_mode="auto", sg_invalid="exclude",
-                          sg_uncovered="all_valid", return_weight_sum=False):
+                          sigma_rel=0.5, edge_ratio=0.5, sg_mode="auto", sg_invalid="exclude",
+                          sg_uncovered="all_valid", return_weight_sum=False,
+                          domain="intensity"):
     """Reference reconstruction: float64 frame, colour sites copied, Z sites clipped.
 
     The values at Z sites are not rounded; use :func:`round_half_up` to compare
@@ -425,8 +490,13 @@ def reference_reconstruct(data, pattern, method, bit_depth=11, sigma_floor=1e-3,
         if not cand.any(axis=1).all():
             raise ValueError(f"pattern {pattern.name!r}: a Z site has no candidate")
         diag = {}
-        v = _reconstruct_5x5(vals, codes, target, method, sigma_floor, sg_mode, sg_invalid,
-                             sg_uncovered, diag)
+        cd = None
+        if domain == "colour_difference" and method != "bilinear":
+            cd = colour_difference_estimates(data, chan, ys, xs, pattern.period, target)
+        elif domain != "intensity":
+            raise ValueError(f"domain: {domain!r}")
+        v = _reconstruct_5x5(vals, codes, target, method, sigma_floor, sigma_rel, sg_mode,
+                             sg_invalid, sg_uncovered, diag, cd)
     else:
         raise ValueError(f"method: unknown {method!r}")
     top = float((1 << bit_depth) - 1)

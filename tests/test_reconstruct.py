@@ -59,17 +59,13 @@ MARGIN_F32 = 1e-5
 MAX_FRAGILE_MISMATCH = 0.10
 
 
-#: docs/interpretation.md specifies the same-channel weighted mean (eq. 13) for
-#: every target colour ("bi" section). A `domain` option (default
-#: "colour_difference", eq. 5) appeared in reconstruct() while these tests were
-#: written; it is not in the spec, so the reference comparisons run the spec's
-#: "intensity" domain when the option exists; the contract and extreme-value
-#: tests run every domain.
+#: The reference implements the intensity domain (eq. 13, the default); the
+#: colour-difference domain (eq. 5) is compared with its own reference in
+#: test_colour_difference_domain_matches_reference; the contract and
+#: extreme-value tests run every domain.
 _PARAMS = inspect.signature(rz.reconstruct).parameters
 HAS_DOMAIN = "domain" in _PARAMS
 SPEC_KW = {"domain": "intensity"} if HAS_DOMAIN else {}
-if "sigma_rel" in _PARAMS:              # an extra floor sigma >= rel * mean G; 0 is the spec's
-    SPEC_KW["sigma_rel"] = 0.0
 DOMAINS = ["intensity", "colour_difference"] if HAS_DOMAIN else [None]
 
 
@@ -213,7 +209,7 @@ def test_reference_sg_mask1_matches_paper_sums():
     """
     p = rz.mask1()                        # ZR/BG: Z at (even, even), greens at (odd, odd)
     d = random_frame(p, (12, 12), seeded("sg-hand"))
-    ref = reference_reconstruct(d, p, "sg")
+    ref = reference_reconstruct(d, p, "sg", sigma_rel=0.0)     # sigma = smallest SG, as printed
     y, x = 6, 4
 
     def I(dy, dx):                        # noqa: E743
@@ -873,3 +869,23 @@ def test_fast_exp_matches_libm(n, pname, precision):
         keep = ~subnormal
         np.testing.assert_allclose(b[keep], a[keep], rtol=1e-5, atol=TOL[precision]["atol"])
         assert (a != b)[subnormal].sum() <= 0.02 * nz, ((a != b)[subnormal].sum(), nz)
+
+
+@pytest.mark.parametrize("sigma_rel", [0.0, 0.25, 1.0])
+@pytest.mark.parametrize("method", ["edi_central", "edi_line", "sg"])
+@pytest.mark.parametrize("pname", ["mask1", "mask2"])
+def test_relative_sigma_floor_matches_reference(pname, method, sigma_rel):
+    p = rz.get_pattern(pname)
+    d = random_frame(p, (29, 34), seeded("rel", pname, method, sigma_rel))
+    out = run(d, p, method, precision="float64", sigma_rel=sigma_rel)
+    compare(out, d, p, method, "float64", sigma_rel=sigma_rel)
+
+
+@pytest.mark.parametrize("method", ["bi", "edi_central", "edi_line", "sg"])
+@pytest.mark.parametrize("pname", ["mask1", "mask2", "mask2_rggb", "ZR/BG"])
+def test_colour_difference_domain_matches_reference(pname, method):
+    """Eq. 5 generalised: weights from the intensities, interpolation of colour differences."""
+    p = rz.get_pattern(pname)
+    d = random_frame(p, (27, 30), seeded("cd", pname, method))
+    out = run(d, p, method, precision="float64", domain="colour_difference")
+    compare(out, d, p, method, "float64", domain="colour_difference")

@@ -58,8 +58,9 @@ class RawFrame:
         object.__setattr__(self, "data", validate_frame(self.data, pattern, bd, "data"))
         if self.reference is not None:
             ref = check_image(self.reference, "reference", ndim=2, dtypes=FRAME_DTYPES)
-            if ref.shape != data.shape:
-                raise ValueError(f"reference: shape {ref.shape} differs from data {data.shape}")
+            if ref.shape != self.data.shape:
+                raise ValueError(f"reference: shape {ref.shape} differs from data "
+                                 f"{self.data.shape}")
             _check_range(ref, bd, "reference")
             object.__setattr__(self, "reference", ref)
 

@@ -58,7 +58,7 @@ def _prepare(frame, pattern, bit_depth):
 
 
 def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="float32",
-                workers=None, sigma_floor=1e-3, sigma_rel=0.0, edge_ratio=0.5, sg_mode="auto", exp="libm",
+                workers=None, sigma_floor=1e-3, sigma_rel=0.5, edge_ratio=0.5, sg_mode="auto", exp="libm",
                 domain="intensity"):
     """Fill in the colour missing at every Z site: RGB-Z raw frame -> full Bayer CFA.
 
