@@ -67,14 +67,28 @@ static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define IN_IS_INT 1
 #define REAL float
 #define RS f32
+#define RABSDIFF OABSDIFF_F
+#define REXP_LIBM expf
+#define REXP_FAST rgbz_fast_exp_f
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #define REAL double
 #define RS f64
+#define RABSDIFF OABSDIFF_D
+#define REXP_LIBM exp
+#define REXP_FAST rgbz_fast_exp_d
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -84,14 +98,28 @@ static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define IN_IS_INT 1
 #define REAL float
 #define RS f32
+#define RABSDIFF OABSDIFF_F
+#define REXP_LIBM expf
+#define REXP_FAST rgbz_fast_exp_f
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #define REAL double
 #define RS f64
+#define RABSDIFF OABSDIFF_D
+#define REXP_LIBM exp
+#define REXP_FAST rgbz_fast_exp_d
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -101,14 +129,28 @@ static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define IN_IS_INT 0
 #define REAL float
 #define RS f32
+#define RABSDIFF OABSDIFF_F
+#define REXP_LIBM expf
+#define REXP_FAST rgbz_fast_exp_f
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #define REAL double
 #define RS f64
+#define RABSDIFF OABSDIFF_D
+#define REXP_LIBM exp
+#define REXP_FAST rgbz_fast_exp_d
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -118,14 +160,28 @@ static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define IN_IS_INT 0
 #define REAL float
 #define RS f32
+#define RABSDIFF OABSDIFF_F
+#define REXP_LIBM expf
+#define REXP_FAST rgbz_fast_exp_f
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #define REAL double
 #define RS f64
+#define RABSDIFF OABSDIFF_D
+#define REXP_LIBM exp
+#define REXP_FAST rgbz_fast_exp_d
+#include "recon_mask1.h"
 #include "recon_loop.h"
 #undef REAL
 #undef RS
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -201,6 +257,15 @@ int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void
     int ry, rx;
     int st = rgbz_check_plans(plans, n_plans, &ry, &rx);
     if (st != RGBZ_OK) return st;
+    if (prm->mask1_fast) {
+        /* the caller vouches for the Mask1 geometry; check what the fast path relies on */
+        const rgbz_plan *p = &plans[0];
+        int nz = 0;
+        for (int i = 0; i < py * px; i++) nz += phase_map[i] >= 0;
+        if (py != 2 || px != 2 || n_plans != 1 || nz != 1 || p->use_cd || p->n_cand != 4 ||
+            p->method > RGBZ_M_SG)
+            return RGBZ_EINVAL;
+    }
 
     /* column map for x in [-rx, cols + rx): shared, read-only, O(cols) */
     ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 2 * rx) * sizeof(ptrdiff_t));

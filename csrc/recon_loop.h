@@ -22,11 +22,18 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
     const REAL maxval = (REAL)prm->maxval;
     const int exp_mode = prm->exp_mode;
     (void)opcounts;
+    /* the Mask1 fast path: interior rows and columns, constant offsets */
+    int zr = -1, zc = -1;
+    if (prm->mask1_fast)
+        for (int i = 0; i < 4; i++)
+            if (phase_map[i] >= 0) { zr = i / 2; zc = i % 2; }
+    const int fast = zr >= 0;
 #ifdef _OPENMP
     int nth = prm->workers > 0 ? prm->workers : omp_get_max_threads();
 #pragma omp parallel for schedule(static) num_threads(nth)
 #endif
     for (ptrdiff_t y = 0; y < rows; y++) {
+        const int fast_row = fast && y >= 2 && y < rows - 2 && (y & 1) == zr;
         const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 1];
         for (int dy = -ry; dy <= ry; dy++)
             rowp[dy + ry] = src + rgbz_extend(y + dy, rows, py) * cols;
@@ -36,6 +43,7 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
         for (ptrdiff_t x = 0; x < cols; x++, ph = (ph + 1 == px) ? 0 : ph + 1) {
             int pl = pm[ph];
             if (pl < 0) continue;
+            if (fast_row && x >= 2 && x < cols - 2) continue;
             const rgbz_plan *p = &plans[pl];
 #ifdef RGBZ_COUNT_OPS
             rgbz_opc_cur_count = opcounts + (size_t)pl * RGBZ_NOPS;
@@ -52,6 +60,12 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
 #else
             dst[y * cols + x] = (IN_T)r;
 #endif
+        }
+        if (fast_row) {
+#ifdef RGBZ_COUNT_OPS
+            rgbz_opc_cur_count = opcounts;
+#endif
+            LCAT(rgbz_mask1_rows, IS, RS)(src, dst, y, cols, zr, zc, &plans[0], prm, 2, cols - 2);
         }
     }
     return RGBZ_OK;

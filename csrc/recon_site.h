@@ -49,6 +49,30 @@ static inline void RFN(rgbz_gammas)(const REAL *G, const rgbz_plan *p, int g0, i
     }
 }
 
+/* gamma factors of n groups that all hold differences (the Mask1 fast path):
+   the same arithmetic as rgbz_gammas */
+static inline void RFN(rgbz_gammas4)(const REAL *G, int n, REAL floor_, REAL rel, int exp_mode,
+                                     REAL *gamma)
+{
+    REAL gmin = G[0], gsum = G[0];
+    for (int g = 1; g < n; g++) {
+        if (OCMP(G[g] < gmin)) gmin = G[g];
+        if (rel > (REAL)0) gsum = OADD(gsum, G[g]);
+    }
+    REAL sigma = OCMP(gmin > floor_) ? gmin : floor_;
+    if (rel > (REAL)0) {
+        REAL rfloor = ODIV(OMUL(rel, gsum), (REAL)n);
+        if (OCMP(rfloor > sigma)) sigma = rfloor;
+    }
+    REAL two_s2 = OMUL((REAL)2, OMUL(sigma, sigma));
+    REAL inv = ODIV((REAL)1, two_s2);
+    for (int g = 0; g < n; g++) {
+        REAL arg = -OMUL(OMUL(G[g], G[g]), inv);
+        OPC_(RGBZ_OP_EXP);
+        gamma[g] = exp_mode == RGBZ_EXP_FAST ? REXP_FAST(arg) : REXP_LIBM(arg);
+    }
+}
+
 static inline REAL RFN(rgbz_median3)(REAL a, REAL b, REAL c)
 {
     /* median of three with three comparisons */

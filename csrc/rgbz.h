@@ -95,6 +95,8 @@ typedef struct {
     double maxval;        /* white level 2^b - 1: outputs are clipped to [0, maxval] */
     int32_t exp_mode;     /* RGBZ_EXP_LIBM or RGBZ_EXP_FAST */
     int32_t workers;      /* threads; <= 0 means the OpenMP default */
+    int32_t mask1_fast;   /* 1: the pattern has the Mask1 geometry (recon_mask1.h) */
+    int32_t reserved;
 } rgbz_params;
 
 /* sizeof(rgbz_plan) and the offsets of its fields, in declaration order,

@@ -889,3 +889,37 @@ def test_colour_difference_domain_matches_reference(pname, method):
     d = random_frame(p, (27, 30), seeded("cd", pname, method))
     out = run(d, p, method, precision="float64", domain="colour_difference")
     compare(out, d, p, method, "float64", domain="colour_difference")
+
+
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+@pytest.mark.parametrize("sg_mode", ["auto", "combined"])
+@pytest.mark.parametrize("method", ["bilinear", "bi", "edi_central", "edi_line", "sg"])
+@pytest.mark.parametrize("pname", ["mask1", "mask1_rggb", "mask1_bggr", "mask1_gbrg"])
+def test_mask1_fast_path_equals_generic_interpreter(pname, method, sg_mode, precision,
+                                                    monkeypatch):
+    """csrc/recon_mask1.h (constant offsets) against the plan interpreter, same options."""
+    from rgbz_fast import _reconstruct as R
+
+    p = rz.get_pattern(pname)
+    assert R.has_mask1_geometry(p)
+    for dtype in (np.uint16, np.float64):
+        d = random_frame(p, (23, 30), seeded("fast", pname, method, sg_mode))
+        d = np.floor(d).astype(dtype) if dtype == np.uint16 else d
+        fast = rz.reconstruct(d, method, pattern=p, precision=precision, sg_mode=sg_mode)
+        monkeypatch.setattr(R, "_MASK1_FAST", False)
+        slow = rz.reconstruct(d, method, pattern=p, precision=precision, sg_mode=sg_mode)
+        monkeypatch.setattr(R, "_MASK1_FAST", True)
+        if dtype == np.uint16:
+            assert np.max(np.abs(fast.astype(int) - slow.astype(int))) <= 1
+        else:
+            np.testing.assert_allclose(fast, slow, rtol=1e-12 if precision == "float64" else 1e-5,
+                                       atol=1e-9 if precision == "float64" else 1e-3)
+
+
+def test_mask1_geometry_detection():
+    from rgbz_fast._reconstruct import has_mask1_geometry
+
+    assert all(has_mask1_geometry(rz.mask1(ph)) for ph in rz.BAYER_PHASES)
+    assert not has_mask1_geometry(rz.mask2())
+    assert not has_mask1_geometry(rz.Pattern("GZ/BG"))     # Z stands in for red
+    assert not has_mask1_geometry(rz.bayer())

@@ -22,6 +22,7 @@ cdef extern from "rgbz.h" nogil:
         double maxval
         int32_t exp_mode
         int32_t workers
+        int32_t mask1_fast
     int rgbz_plan_layout(int64_t *out, int n)
     int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
                          Py_ssize_t rows, Py_ssize_t cols, int py, int px,
@@ -103,7 +104,7 @@ def max_threads():
 def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
                 int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
                 int n_plans, double sigma_floor, double sigma_rel, double edge_ratio, double maxval,
-                int exp_mode, int workers, uint64_t[::1] opcounts=None):
+                int exp_mode, int workers, uint64_t[::1] opcounts=None, int mask1_fast=0):
     """Run the reconstruction kernel (or its counting twin when ``opcounts`` is given)."""
     cdef int in_type
     cdef int status
@@ -123,6 +124,7 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     prm.maxval = maxval
     prm.exp_mode = exp_mode
     prm.workers = workers
+    prm.mask1_fast = mask1_fast
     if opcounts is not None:
         counts = &opcounts[0]
     with nogil:

@@ -28,6 +28,17 @@ check_layout(_kernels.plan_layout())
 PRECISIONS = {"float32": 0, "float64": 1}
 EXP_MODES = {"libm": 0, "fast": 1}
 SG_MODES = ("auto", "pure", "combined")
+#: use the Mask1 fast path (csrc/recon_mask1.h) where it applies; tests switch it off to
+#: compare it with the generic plan interpreter
+_MASK1_FAST = True
+
+
+def has_mask1_geometry(pattern):
+    """True for a 2x2 tile whose single Z site stands in for a green (Mask1, any phase)."""
+    if pattern.period != (2, 2) or int((pattern.tile == 3).sum()) != 1:
+        return False
+    return pattern.bayer_phase is not None and int(
+        pattern.bayer_tile()[pattern.tile == 3][0]) == 1
 DOMAINS = ("colour_difference", "intensity")
 
 
@@ -178,9 +189,11 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
                          "sites stand in for no defined colour")
     phase_map, plans, n_plans = _plans_for(pattern, method, sg_mode, domain)
     src = np.ascontiguousarray(data)
+    fast = int(_MASK1_FAST and domain == "intensity" and method != "edi_rows"
+               and has_mask1_geometry(pattern))
     _kernels.reconstruct(src, out, PRECISIONS[precision], pattern.period[0], pattern.period[1],
                          phase_map, plans, n_plans, sigma_floor, sigma_rel, edge_ratio,
-                         float((1 << bd) - 1), EXP_MODES[exp], nthreads)
+                         float((1 << bd) - 1), EXP_MODES[exp], nthreads, mask1_fast=fast)
     return out
 
 

@@ -1,0 +1,140 @@
+/*
+ * recon_mask1.h -- the Mask1 fast path: every method of recon_site.h for the
+ * one geometry of Mask1 (a 2x2 Bayer tile whose green on one colour row is a Z
+ * pixel, any phase), with the kernel offsets as compile-time constants.
+ *
+ * Around every Mask1 Z site: Z at (even, even) offsets, one colour X at
+ * (even, odd), the other Y at (odd, even), green at (odd, odd); the four
+ * candidates are the greens (-1,-1), (-1,1), (1,-1), (1,1) (Fig. 11: pixels
+ * 6, 8, 16, 18). The gradient pairs below are exactly those _plans.py builds
+ * for this geometry (same-channel, non-Z pairs; docs/interpretation.md), so
+ * the values equal the generic path's up to the order of the additions; the
+ * NumPy reference checks both. Interior pixels only: the loop hands the two
+ * border rows/columns to the generic path.
+ *
+ * Included by recon.c with IN_T, IS, IN_IS_INT, REAL, RS, RABSDIFF, REXP_*.
+ */
+#define M1CAT3(a, b, c) a##_##b##_##c
+#define M1CAT(a, b, c) M1CAT3(a, b, c)
+#define M1G2(a, b) a##_##b
+#define M1G(a, b) M1G2(a, b)
+
+static int M1CAT(rgbz_mask1_rows, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
+                                          ptrdiff_t y, ptrdiff_t cols, int zrow_phase,
+                                          int zcol_phase, const rgbz_plan *p,
+                                          const rgbz_params *prm, ptrdiff_t x0, ptrdiff_t x1)
+{
+    const REAL floor_ = (REAL)prm->sigma_floor;
+    const REAL rel = (REAL)prm->sigma_rel;
+    const REAL maxval = (REAL)prm->maxval;
+    const int exp_mode = prm->exp_mode;
+    const int method = p->method;
+    const int combined = p->use_grad && p->use_sg;
+    const REAL alpha = (REAL)p->cand_alpha[0];        /* all four candidates: exp(-1) */
+    const ptrdiff_t S = cols;
+    (void)zrow_phase;
+    ptrdiff_t xs = x0 + ((x0 & 1) != zcol_phase);
+    for (ptrdiff_t x = xs; x < x1; x += 2) {
+        const IN_T *q = src + y * S + x;
+#define P(dy, dx) ((REAL)q[(dy) * S + (dx)])
+        REAL c[4] = {P(-1, -1), P(-1, 1), P(1, -1), P(1, 1)};
+        REAL r;
+        if (method == RGBZ_M_BILINEAR) {
+            r = M1G(rgbz_mean, RS)(c, 4);
+        } else {
+            REAL w[4];
+            REAL gam_line[4] = {1, 1, 1, 1};    /* per candidate */
+            if (method == RGBZ_M_EDI_CENTRAL || method == RGBZ_M_EDI_LINE || combined) {
+                REAL G[4];
+                if (method == RGBZ_M_EDI_CENTRAL) {
+                    G[0] = OMUL(RABSDIFF(P(1, 0), P(-1, 0)), (REAL)1);
+                    G[1] = OMUL(RABSDIFF(P(0, 1), P(0, -1)), (REAL)1);
+                    G[2] = OMUL(OADD(OADD(RABSDIFF(P(1, 1), P(-1, -1)), RABSDIFF(P(2, 1), P(-2, -1))),
+                                     RABSDIFF(P(1, 2), P(-1, -2))), (REAL)(1.0 / 3.0));
+                    G[3] = OMUL(OADD(OADD(RABSDIFF(P(1, -1), P(-1, 1)), RABSDIFF(P(2, -1), P(-2, 1))),
+                                     RABSDIFF(P(1, -2), P(-1, 2))), (REAL)(1.0 / 3.0));
+                } else {
+                    /* eq. 8: rows -2/2 at odd columns, rows -1/1 at every column */
+                    REAL v = OADD(RABSDIFF(P(-2, -1), P(2, -1)), RABSDIFF(P(-2, 1), P(2, 1)));
+                    v = OADD(v, RABSDIFF(P(-1, -2), P(1, -2)));
+                    v = OADD(v, RABSDIFF(P(-1, -1), P(1, -1)));
+                    v = OADD(v, RABSDIFF(P(-1, 0), P(1, 0)));
+                    v = OADD(v, RABSDIFF(P(-1, 1), P(1, 1)));
+                    v = OADD(v, RABSDIFF(P(-1, 2), P(1, 2)));
+                    /* eq. 9: the transpose */
+                    REAL h = OADD(RABSDIFF(P(-1, -2), P(-1, 2)), RABSDIFF(P(1, -2), P(1, 2)));
+                    h = OADD(h, RABSDIFF(P(-2, -1), P(-2, 1)));
+                    h = OADD(h, RABSDIFF(P(-1, -1), P(-1, 1)));
+                    h = OADD(h, RABSDIFF(P(0, -1), P(0, 1)));
+                    h = OADD(h, RABSDIFF(P(1, -1), P(1, 1)));
+                    h = OADD(h, RABSDIFF(P(2, -1), P(2, 1)));
+                    G[0] = OMUL(v, (REAL)(1.0 / 7.0));
+                    G[1] = OMUL(h, (REAL)(1.0 / 7.0));
+                    G[2] = OMUL(RABSDIFF(P(1, 1), P(-1, -1)), (REAL)1);   /* eqs. 10-11: the */
+                    G[3] = OMUL(RABSDIFF(P(1, -1), P(-1, 1)), (REAL)1);   /* green pairs only */
+                }
+                REAL gam[4];
+                M1G(rgbz_gammas4, RS)(G, 4, floor_, rel, exp_mode, gam);
+                gam_line[0] = gam[2];     /* (-1,-1): NW-SE */
+                gam_line[1] = gam[3];     /* (-1, 1): NE-SW */
+                gam_line[2] = gam[3];
+                gam_line[3] = gam[2];
+            }
+            if (method == RGBZ_M_SG) {
+                REAL dv2 = RABSDIFF(P(0, -1), P(-2, -1)), dv3 = RABSDIFF(P(0, -1), P(2, -1));
+                REAL dv6 = RABSDIFF(P(0, 1), P(-2, 1)), dv7 = RABSDIFF(P(0, 1), P(2, 1));
+                REAL dh2 = RABSDIFF(P(-1, 0), P(-1, -2)), dh3 = RABSDIFF(P(-1, 0), P(-1, 2));
+                REAL dh6 = RABSDIFF(P(1, 0), P(1, -2)), dh7 = RABSDIFF(P(1, 0), P(1, 2));
+                const REAL half = (REAL)0.5;
+                REAL SG[8] = {OMUL(OADD(dv2, dv6), half), OMUL(OADD(dv3, dv7), half),   /* N S */
+                              OMUL(OADD(dh2, dh6), half), OMUL(OADD(dh3, dh7), half),   /* W E */
+                              OMUL(OADD(dv2, dh2), half), OMUL(OADD(dv6, dh3), half),   /* NW NE */
+                              OMUL(OADD(dv3, dh6), half), OMUL(OADD(dv7, dh7), half)};  /* SW SE */
+                REAL g[8];
+                M1G(rgbz_gammas4, RS)(SG, 8, floor_, rel, exp_mode, g);
+                w[0] = OADD(OADD(g[0], g[2]), g[4]);   /* eq. 19a: N + W + NW */
+                w[1] = OADD(OADD(g[0], g[3]), g[5]);   /* 19b: N + E + NE */
+                w[2] = OADD(OADD(g[1], g[2]), g[6]);   /* 19c: S + W + SW */
+                w[3] = OADD(OADD(g[1], g[3]), g[7]);   /* 19d: S + E + SE */
+            }
+            if (method != RGBZ_M_SG || combined) {
+                /* alpha * beta (eqs. 2-4), times gamma (eq. 6) */
+                REAL d01 = RABSDIFF(c[0], c[1]), d02 = RABSDIFF(c[0], c[2]);
+                REAL d03 = RABSDIFF(c[0], c[3]), d12 = RABSDIFF(c[1], c[2]);
+                REAL d13 = RABSDIFF(c[1], c[3]), d23 = RABSDIFF(c[2], c[3]);
+                REAL Sk[4] = {OADD(OADD(OADD((REAL)1, d01), d02), d03),
+                              OADD(OADD(OADD((REAL)1, d01), d12), d13),
+                              OADD(OADD(OADD((REAL)1, d02), d12), d23),
+                              OADD(OADD(OADD((REAL)1, d03), d13), d23)};
+                for (int k = 0; k < 4; k++) {
+                    REAL a = ODIV(alpha, Sk[k]);
+                    if (method != RGBZ_M_BI) a = OMUL(a, gam_line[k]);
+                    w[k] = combined ? OMUL(a, w[k]) : a;
+                }
+            }
+            REAL den = OADD(OADD(OADD(w[0], w[1]), w[2]), w[3]);
+            if (!(den > (REAL)0)) {
+                r = M1G(rgbz_mean, RS)(c, 4);
+            } else {
+                REAL num = OMUL(w[1], OSUB(c[1], c[0]));
+                num = OADD(num, OMUL(w[2], OSUB(c[2], c[0])));
+                num = OADD(num, OMUL(w[3], OSUB(c[3], c[0])));
+                r = OADD(c[0], ODIV(num, den));
+            }
+        }
+#undef P
+        if (!(r > (REAL)0)) r = (REAL)0;
+        if (r > maxval) r = maxval;
+#if IN_IS_INT
+        dst[y * S + x] = (IN_T)(r + (REAL)0.5);
+#else
+        dst[y * S + x] = (IN_T)r;
+#endif
+    }
+    return RGBZ_OK;
+}
+
+#undef M1CAT
+#undef M1CAT3
+#undef M1G
+#undef M1G2
