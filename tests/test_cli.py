@@ -134,9 +134,13 @@ def test_readme_test_command_is_ci():
     assert test_cmd[0].strip() in ci.splitlines()
 
 
-def test_readme_python_example_runs(capsys):
+def test_readme_python_examples_run(capsys):
     readme = (REPO / "README.md").read_text()
-    code = re.findall(r"```python\n(.*?)\n```", readme, re.S)[0]
-    exec(compile(code, "README.md", "exec"), {})
+    first, second = re.findall(r"```python\n(.*?)\n```", readme, re.S)[:2]
+    ns = {}
+    exec(compile(first, "README.md", "exec"), ns)
     out = capsys.readouterr().out
     assert "sg" in out and "dB" in out
+    aloe = shared_path("rgbd", "aloe")
+    exec(compile(second.replace("../shared/data/rgbd/aloe", str(aloe)), "README.md", "exec"), ns)
+    assert "valid depth" in capsys.readouterr().out

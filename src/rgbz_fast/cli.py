@@ -98,6 +98,10 @@ def _parser():
     e.add_argument("--precision", choices=("float32", "float64"), default="float64")
     e.add_argument("--domain", choices=("intensity", "colour_difference"), default="intensity",
                    help="interpolate intensities (the paper, eq. 13) or colour differences (eq. 5)")
+    e.add_argument("--raw-options", type=Path, default=None,
+                   help="JSON file mapping raw file names (or \"*\") to rgbz_fast.rawio.read_raw "
+                        "arguments: phase, black_level, white_level, shape, bit_depth_in, "
+                        "downsample ... (for bare Bayer files that carry none)")
     e.add_argument("--limit", type=int, default=None, help="first N images only")
     e.add_argument("--table-image", default=None,
                    help="image of the per-image table (default kodim09 when present)")
@@ -201,11 +205,10 @@ def _reconstruct(args):
                  "method": args.method}))
             atomic_write(dest, buf.getvalue())
         else:
-            from .evaluate import _grey_world_gains, colour_chain
+            from .evaluate import colour_chain, reference_gains
             phase = frame.pattern.bayer_phase
-            cmap = frame.pattern.bayer_map(cfa.shape)
-            gains = _grey_world_gains(cfa.astype(np.float64), cmap)
-            srgb = colour_chain(cfa, phase, frame.bit_depth, gains)
+            srgb = colour_chain(cfa, phase, frame.bit_depth,
+                                reference_gains(cfa, phase, frame.bit_depth))
             dest = args.out / f"{f.stem}_{args.method}.png"
             atomic_write(dest, iio.imwrite("<bytes>", srgb, extension=".png"))
         if not args.quiet:
@@ -223,7 +226,13 @@ def _evaluate(args):
     if args.metrics:
         kw["metrics"] = args.metrics
     config = EvalConfig(**kw)
-    dataset = folder_dataset(args.dataset, args.limit) if args.dataset else \
+    raw_options = None
+    if args.raw_options is not None:
+        try:
+            raw_options = json.loads(Path(args.raw_options).read_text())
+        except (OSError, ValueError) as exc:
+            raise CliError(f"--raw-options: cannot read {args.raw_options}: {exc}") from None
+    dataset = folder_dataset(args.dataset, args.limit, raw_options) if args.dataset else \
         sample_dataset()[:args.limit]
     if args.workers is not None and args.workers < 1:
         raise CliError(f"--workers must be a positive integer, got {args.workers}")

@@ -156,12 +156,27 @@ def _cache_version():
 # --------------------------------------------------------------------------- datasets
 @dataclass(frozen=True)
 class ImageSource:
-    """One image of a dataset: a name and where to read it (a path or ``skimage:NAME``)."""
+    """One image of a dataset: a name and where to read it (a path or ``skimage:NAME``).
+
+    Camera raw and bare Bayer files (``raw_options`` holds the keyword
+    arguments of :func:`rgbz_fast.rawio.read_raw` they need) load as a Bayer
+    :class:`~rgbz_fast.RawFrame`: the real CFA is then the reference and the
+    RGB-Z pattern removes its Z sites (the paper's HDR+ protocol).
+    """
 
     name: str
     location: str
+    raw_options: tuple = ()
+    raw: bool = False
+
+    @property
+    def is_raw(self):
+        return self.raw or Path(self.location).suffix.lower() in _RAW_SUFFIXES
 
     def load(self):
+        if self.is_raw:
+            from .rawio import read_raw
+            return read_raw(self.location, **dict(self.raw_options))
         if self.location.startswith("skimage:"):
             import skimage.data
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
@@ -181,8 +196,15 @@ def sample_dataset():
     return [ImageSource(n, f"skimage:{n}") for n in _SKIMAGE_SAMPLES]
 
 
-def folder_dataset(path, limit=None):
-    """Every RGB image file in a folder (sorted by name)."""
+def folder_dataset(path, limit=None, raw_options=None):
+    """Every image file in a folder (sorted by name): RGB images, or camera raw / Bayer files.
+
+    ``raw_options`` maps a file name (or ``"*"``, for every raw file) to the
+    keyword arguments :func:`rgbz_fast.rawio.read_raw` needs for it (phase,
+    black and white levels, shape of headerless files, ``downsample=2`` as
+    the paper does for HDR+). A file named in ``raw_options`` is read as raw
+    even if it is a PNG or TIFF (a 16-bit Bayer mosaic).
+    """
     p = Path(path)
     if not p.exists():
         raise ValueError(f"dataset: {p} does not exist")
@@ -195,42 +217,41 @@ def folder_dataset(path, limit=None):
     if not files:
         raise ValueError(f"dataset: no image files in {p} (looked for "
                          f"{', '.join(sorted(_IMAGE_SUFFIXES))})")
-    raw = [f for f in files if f.suffix.lower() in _RAW_SUFFIXES]
-    if raw:
-        raise ValueError(f"dataset: {p} holds raw files ({raw[0].name}, ...); raw datasets go "
-                         "through rgbz_fast.rawio (see docs/raw.md)")
+    raw_options = dict(raw_options or {})
     files = files[:limit] if limit else files
-    return [ImageSource(f.stem, str(f)) for f in files]
+    out = []
+    for f in files:
+        if f.suffix.lower() in _RAW_SUFFIXES or f.name in raw_options:
+            opts = {**raw_options.get("*", {}), **raw_options.get(f.name, {})}
+            out.append(ImageSource(f.stem, str(f), tuple(sorted(
+                (k, tuple(v) if isinstance(v, list) else v) for k, v in opts.items())), raw=True))
+        else:
+            out.append(ImageSource(f.stem, str(f)))
+    return out
 
 
 # --------------------------------------------------------------------------- the chain
-def _srgb_encode(lin):
-    """sRGB OETF on [0, 1] linear values -> [0, 1]."""
-    lin = np.clip(lin, 0.0, 1.0)
-    return np.where(lin <= 0.0031308, 12.92 * lin, 1.055 * np.power(lin, 1 / 2.4) - 0.055)
-
-
-def _grey_world_gains(cfa, colour_map):
-    means = np.array([cfa[colour_map == c].mean() for c in range(3)], dtype=np.float64)
-    means = np.maximum(means, 1e-12)
-    return means[1] / means
-
-
 def colour_chain(cfa, phase, bit_depth, gains, demosaic="malvar2004"):
-    """White balance -> demosaic -> sRGB gamma -> 8-bit, as the reference and RGB-Z paths share.
+    """White balance -> demosaic -> sRGB gamma -> 8-bit: the chain both paths share.
 
-    The CFA values are linear (the mosaic of a linearised or linear scene);
-    ``gains`` are per-colour white-balance gains estimated once, on the
-    reference, and applied to both paths.
+    The ISP stages of :mod:`rgbz_fast.isp` on a complete Bayer CFA (linear
+    values, black level 0); ``gains`` are the white-balance gains estimated
+    once, on the reference, and applied to both paths (Fig. 19).
     """
     from .demosaic import demosaic as _demosaic
+    from .isp import srgb_encode, white_balance
 
-    pattern = bayer(phase)
-    cmap = pattern.channel_map(cfa.shape)
-    top = float((1 << bit_depth) - 1)
-    balanced = cfa.astype(np.float64) * np.asarray(gains)[cmap] / top
+    balanced, _ = white_balance(cfa, phase, white_level=float((1 << bit_depth) - 1),
+                                gains=gains, dtype=np.float64)
     rgb = _demosaic(balanced, phase, method=demosaic, dtype=np.float64)
-    return np.floor(_srgb_encode(rgb) * 255 + 0.5).astype(np.uint8)
+    return srgb_encode(np.clip(rgb, 0.0, 1.0), bits=8)
+
+
+def reference_gains(ref_cfa, phase, bit_depth):
+    """Grey-world gains of the reference CFA (reused on the RGB-Z path)."""
+    from .isp import grey_world_gains
+
+    return grey_world_gains(ref_cfa, phase, white_level=float((1 << bit_depth) - 1))
 
 
 def _linearise(img):
@@ -239,8 +260,26 @@ def _linearise(img):
     return np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
 
 
+def _pattern_for(pname, phase):
+    """The pattern named ``pname`` on the Bayer phase of a raw file (presets follow the phase)."""
+    base = str(pname).lower().split("_")[0]
+    if base in ("mask1", "mask2", "rows", "bayer"):
+        from . import _patterns
+        return getattr(_patterns, base)(phase)
+    pattern = get_pattern(pname)
+    if pattern.bayer_phase != phase:
+        raise ValueError(f"patterns: {pname!r} is built on {pattern.bayer_phase}, the raw file "
+                         f"on {phase}")
+    return pattern
+
+
 def _frames(img, pattern, config):
-    """(rgbz_frame_data, reference_cfa, z_mask) for one image and pattern."""
+    """(rgbz_frame, reference_cfa) for one image (RGB array or raw Bayer frame) and pattern."""
+    from ._frame import RawFrame
+
+    if isinstance(img, RawFrame):
+        from .rawio import to_rgbz
+        return to_rgbz(img, _pattern_for(pattern.name, img.pattern.bayer_phase))
     if config.noise:
         from .scene import Scene
         from .sensor import ColourSensor, simulate
@@ -273,14 +312,14 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     if not todo:
         return rows
     img = source.load()
-    ref_srgb = None
     for pname in dict.fromkeys(p for p, _ in todo):
         pattern = get_pattern(pname)
         frame, ref_cfa = _frames(img, pattern, config)
+        pattern = frame.pattern
         z = frame.z_mask
-        if config.image_metrics and ref_srgb is None:
-            cmap = pattern.bayer_map(ref_cfa.shape)
-            gains = _grey_world_gains(ref_cfa.astype(np.float64), cmap)
+        if config.image_metrics:
+            # per pattern: a raw frame is cropped to a whole number of periods
+            gains = reference_gains(ref_cfa, pattern.bayer_phase, frame.bit_depth)
             ref_srgb = colour_chain(ref_cfa, pattern.bayer_phase, frame.bit_depth, gains,
                                     config.demosaic)
         for p, m in todo:
@@ -636,10 +675,9 @@ def crop_figure(source, config, box=None, size=96):
     img = source.load()
     tiles = []
     for pname in config.patterns:
-        pattern = get_pattern(pname)
-        frame, ref_cfa = _frames(img, pattern, config)
-        cmap = pattern.bayer_map(ref_cfa.shape)
-        gains = _grey_world_gains(ref_cfa.astype(np.float64), cmap)
+        frame, ref_cfa = _frames(img, get_pattern(pname), config)
+        pattern = frame.pattern
+        gains = reference_gains(ref_cfa, pattern.bayer_phase, frame.bit_depth)
         ref = colour_chain(ref_cfa, pattern.bayer_phase, frame.bit_depth, gains, config.demosaic)
         row = [("reference", ref)]
         for m in config.methods:
@@ -656,8 +694,8 @@ def crop_figure(source, config, box=None, size=96):
         from scipy.ndimage import uniform_filter
         e = uniform_filter(err, size)
         y, x = np.unravel_index(np.argmax(e), e.shape)
-        y0 = int(np.clip(y - size // 2, 0, img.shape[0] - size))
-        x0 = int(np.clip(x - size // 2, 0, img.shape[1] - size))
+        y0 = int(np.clip(y - size // 2, 0, ref.shape[0] - size))
+        x0 = int(np.clip(x - size // 2, 0, ref.shape[1] - size))
         box = (y0, x0, size, size)
     y0, x0, h, w = box
     ncol = len(tiles[0][1])
