@@ -306,6 +306,17 @@ int RGBZ_SYM(rgbz_max_threads)(void)
 #endif
 }
 
+int RGBZ_SYM(rgbz_opcount_target)(uint64_t *counts)
+{
+#ifdef RGBZ_COUNT_OPS
+    if (!counts) return RGBZ_EINVAL;
+    rgbz_opc_cur_count = counts;
+#else
+    (void)counts;
+#endif
+    return RGBZ_OK;
+}
+
 int RGBZ_SYM(rgbz_counting_build)(void)
 {
 #ifdef RGBZ_COUNT_OPS

@@ -144,5 +144,7 @@ int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, con
 int RGBZ_SYM(rgbz_have_openmp)(void);
 int RGBZ_SYM(rgbz_max_threads)(void);
 int RGBZ_SYM(rgbz_counting_build)(void);
+/* counting build: the RGBZ_NOPS counters that the ToF kernels add to (single thread) */
+int RGBZ_SYM(rgbz_opcount_target)(uint64_t *counts);
 
 #endif /* RGBZ_H */

@@ -45,6 +45,7 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_have_openmp()
     int rgbz_max_threads()
     int rgbz_counting_build_count()
+    int rgbz_opcount_target_count(uint64_t *counts)
 
 ctypedef fused frame_t:
     uint8_t
@@ -164,9 +165,18 @@ def tof_demodulate(const tap_t[:, :, ::1] taps, double[:, ::1] phase, double[:, 
         in_type = RGBZ_T_F64
     if taps.shape[2] == 0:
         return
-    with nogil:
-        status = rgbz_tof_demodulate(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
-                                     &phase[0, 0], &amp[0, 0], &offset[0, 0], workers)
+    if opcounts is not None:
+        if opcounts.shape[0] < RGBZ_NOPS:
+            raise ValueError(f"opcounts: expected {RGBZ_NOPS} counters")
+        _raise_for(rgbz_opcount_target_count(&opcounts[0]))
+        with nogil:
+            status = rgbz_tof_demodulate_count(in_type, &taps[0, 0, 0], taps.shape[0],
+                                               taps.shape[2], &phase[0, 0], &amp[0, 0],
+                                               &offset[0, 0], 1)
+    else:
+        with nogil:
+            status = rgbz_tof_demodulate(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                         &phase[0, 0], &amp[0, 0], &offset[0, 0], workers)
     _raise_for(status)
 
 

@@ -173,7 +173,7 @@ class Pattern:
         """Raise ValueError unless ``shape`` is a 2-D frame shape holding at least one period."""
         try:
             shape = tuple(int(s) for s in shape)
-        except TypeError:
+        except (TypeError, ValueError):
             raise TypeError(f"{name}: expected a (rows, cols) tuple, got {shape!r}") from None
         if len(shape) != 2:
             raise ValueError(f"{name}: expected a 2-D (rows, cols) frame shape, got {shape}")

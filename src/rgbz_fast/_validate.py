@@ -9,6 +9,9 @@ import numpy as np
 __all__ = ["supported_float_type", "check_image", "check_bit_depth", "check_workers",
            "check_choice", "check_finite", "FRAME_DTYPES"]
 
+#: largest ``workers`` (threads of one kernel call); the result never depends on it
+MAX_WORKERS = 1024
+
 #: dtypes a raw frame may hold; kernels read and write them directly.
 FRAME_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
                 np.dtype(np.float64))
@@ -69,6 +72,8 @@ def check_workers(workers, name="workers"):
         return os.cpu_count() or 1
     if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
         raise ValueError(f"{name}: expected None, -1 or a positive integer, got {workers!r}")
+    if workers > MAX_WORKERS:      # OpenMP aborts or crashes when it cannot start the threads
+        raise ValueError(f"{name}: expected at most {MAX_WORKERS} threads, got {workers!r}")
     return int(workers)
 
 

@@ -135,7 +135,7 @@ def main(argv=None):
     try:
         return {"simulate": _simulate, "reconstruct": _reconstruct, "evaluate": _evaluate,
                 "config": _config}[args.command](args)
-    except (CliError, ValueError, TypeError, FileNotFoundError, ImportError) as exc:
+    except (CliError, ValueError, TypeError, OSError, ImportError) as exc:
         print(f"rgbz-fast {args.command}: error: {exc}".splitlines()[0], file=sys.stderr)
         return 2
     except KeyboardInterrupt:

@@ -383,6 +383,9 @@ def atomic_write(path, data):
     mode = "wb" if isinstance(data, (bytes, bytearray)) else "w"
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)      # mkstemp's 0600 would make reports private
         with os.fdopen(fd, mode) as fh:
             fh.write(data)
             fh.flush()
