@@ -66,11 +66,14 @@ static inline void RFN(rgbz_gammas4)(const REAL *G, int n, REAL floor_, REAL rel
     }
     REAL two_s2 = OMUL((REAL)2, OMUL(sigma, sigma));
     REAL inv = ODIV((REAL)1, two_s2);
-    for (int g = 0; g < n; g++) {
-        REAL arg = -OMUL(OMUL(G[g], G[g]), inv);
-        OPC_(RGBZ_OP_EXP);
-        gamma[g] = exp_mode == RGBZ_EXP_FAST ? REXP_FAST(arg) : REXP_LIBM(arg);
+    REAL arg[8];
+    for (int g = 0; g < n; g++) arg[g] = -OMUL(OMUL(G[g], G[g]), inv);
+    if (exp_mode == RGBZ_EXP_FAST) {
+        for (int g = 0; g < n; g++) gamma[g] = REXP_FAST(arg[g]);     /* vectorises */
+    } else {
+        for (int g = 0; g < n; g++) gamma[g] = REXP_LIBM(arg[g]);
     }
+    for (int g = 0; g < n; g++) OPC_(RGBZ_OP_EXP);
 }
 
 static inline REAL RFN(rgbz_median3)(REAL a, REAL b, REAL c)

@@ -57,17 +57,18 @@ static inline double rgbz_fast_exp_d(double x)
 
 static inline float rgbz_fast_exp_f(float x)
 {
-    if (x < -87.0f) return 0.0f;
-    float n = floorf(x * 1.44269504f + 0.5f);
+    /* branch-free, so that loops over several gammas vectorise: clamp, evaluate,
+       then zero the result below the normal range */
+    const float xc = x < -87.0f ? -87.0f : x;
+    const float n = (xc * 1.44269504f + 12582912.0f) - 12582912.0f;   /* round to nearest */
     /* Cody-Waite: r = x - n*ln2 with ln2 split in two, exact in float */
-    float y = (x - n * 0.693359375f) - n * -2.12194440e-4f;
-    float p = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6 + y * (1.0f / 24 + y * (1.0f / 120 + y * (1.0f / 720))))));
-    int32_t e = (int32_t)n + 127;
-    if (e <= 0) return 0.0f;
-    uint32_t bits = (uint32_t)e << 23;
+    const float y = (xc - n * 0.693359375f) - n * -2.12194440e-4f;
+    const float p = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6 + y * (1.0f / 24 + y * (1.0f / 120 + y * (1.0f / 720))))));
+    const int32_t e = (int32_t)n + 127;
+    const uint32_t bits = (uint32_t)e << 23;
     float scale;
     memcpy(&scale, &bits, sizeof scale);
-    return p * scale;
+    return x < -87.0f ? 0.0f : p * scale;
 }
 
 #endif /* RGBZ_OPS_H */

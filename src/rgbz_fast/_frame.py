@@ -99,16 +99,28 @@ def validate_frame(data, pattern, bit_depth, name):
         raise ValueError(f"{name}: a uint8 frame cannot hold {bit_depth}-bit data; "
                          "pass uint16 or a float dtype, or bit_depth <= 8")
     pattern.check_shape(data.shape, name)
-    _check_range(data, bit_depth, name, ignore=pattern.z_mask(data.shape))
+    _check_range(data, bit_depth, name, pattern)
     return data
 
 
-def _check_range(data, bit_depth, name, ignore=None):
+def _check_range(data, bit_depth, name, pattern=None):
+    """Values of the colour sites within [0, 2**bit_depth - 1], without frame-sized temporaries.
+
+    With a pattern, each non-Z phase of the tile is reduced on a strided view,
+    so a 50-megapixel frame costs no extra memory.
+    """
     top = (1 << bit_depth) - 1
-    vals = data if ignore is None else data[~ignore]
-    if vals.size == 0:
+    if pattern is None:
+        views = [data]
+    else:
+        P, Q = pattern.period
+        views = [data[r::P, c::Q] for r in range(P) for c in range(Q)
+                 if pattern.tile[r, c] != 3 and r < data.shape[0] and c < data.shape[1]]
+    views = [v for v in views if v.size]
+    if not views:
         return
-    lo, hi = vals.min(), vals.max()
+    lo = min(v.min() for v in views)
+    hi = max(v.max() for v in views)
     if lo < 0 or hi > top:
         raise ValueError(f"{name}: values span [{lo}, {hi}], beyond the {bit_depth}-bit "
                          f"range [0, {top}]")

@@ -1,0 +1,54 @@
+"""Indirect time-of-flight: four-tap demodulation and three-frequency unwrapping."""
+
+import numpy as np
+
+from .common import SKIP_SLOW
+
+FREQS = np.array([80e6, 100e6, 120e6])
+C = 299_792_458.0
+
+
+def _taps(n, seed=0):
+    rng = np.random.default_rng(seed)
+    depth = rng.uniform(0.3, 7.0, n)
+    taps = np.empty((FREQS.size, 4, n), np.uint16)
+    for i, f in enumerate(FREQS):
+        phi = 4 * np.pi * f * depth / C
+        for k in range(4):
+            taps[i, k] = np.round(964 + 700 * np.cos(phi + k * np.pi / 2))
+    return taps
+
+
+class ToFSuite:
+    # Z measurements: Mask2 of a Kodak frame, Mask1 of a Kodak frame, Mask1 of 4000x3000
+    params = ([24_576, 98_304, 3_000_000],)
+    param_names = ["n_sites"]
+    timeout = 300
+
+    def setup(self, n):
+        try:
+            from rgbz_fast import _kernels
+            _kernels.tof_demodulate, _kernels.tof_unwrap
+        except (ImportError, AttributeError):
+            raise NotImplementedError("no ToF kernels in this commit") from None
+        if SKIP_SLOW and n > 1_000_000:
+            raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")
+        self.k = _kernels
+        self.taps = _taps(n)
+        self.phase, self.amp, self.off = (np.empty((FREQS.size, n)) for _ in range(3))
+        self.k.tof_demodulate(self.taps, self.phase, self.amp, self.off, 0)
+        self.w = FREQS ** 2 / (FREQS ** 2).sum()
+        self.depth, self.resid = np.empty(n), np.empty(n)
+        self.wraps = np.empty(n, np.int32)
+
+    def time_demodulate(self, n):
+        self.k.tof_demodulate(self.taps, self.phase, self.amp, self.off, 0)
+
+    def time_unwrap(self, n):
+        self.k.tof_unwrap(self.phase, FREQS, self.w, C / (2 * 20e6), self.depth, self.resid,
+                          self.wraps, 0)
+
+    def time_demodulate_unwrap(self, n):
+        self.k.tof_demodulate(self.taps, self.phase, self.amp, self.off, 0)
+        self.k.tof_unwrap(self.phase, FREQS, self.w, C / (2 * 20e6), self.depth, self.resid,
+                          self.wraps, 0)

@@ -1,0 +1,560 @@
+"""``rgbz-fast bench``: speed of every C kernel, beside OpenCV and the NumPy references.
+
+Self-contained: the frame is scikit-image's astronaut (bundled with
+scikit-image) mirrored and tiled up to 4000x3000, mosaicked to 11-bit uint16 on
+each pattern. For every kernel (each reconstruction method x pattern x
+precision, the Malvar 2004 demosaic, ToF demodulation and unwrapping) it
+reports the speed in **frame** megapixels per second (all pixels of the frame
+over the wall time of one call), the median and the interquartile range of N
+calls (after one warm-up call), with 1 thread and with all threads. Beside it:
+
+* OpenCV's Bayer demosaic of the same-size Bayer frame in the same run,
+  bilinear (``COLOR_BayerGR2RGB``) and edge-aware (``COLOR_BayerGR2RGB_EA``),
+  with 1 thread and all threads (``cv2.setNumThreads``); "n/a" without cv2.
+  Ratios are speed ratios, ours / theirs (> 1: we are faster), same thread
+  setting.
+* The plain NumPy reference of each method (``tests/_reference.py`` of a
+  source checkout; "n/a" in an installed package), timed on a crop of the
+  same frame and scaled to Mpix/s; the ratio is our 1-thread speed over it.
+  The Malvar demosaic is compared with colour-demosaicing's NumPy/SciPy
+  implementation and the demodulation with a NumPy one-liner.
+* Peak memory of one ``reconstruct`` call on the full frame, measured in a
+  fresh subprocess: the growth of the peak resident set size
+  (``ru_maxrss``) across the call, and tracemalloc's peak of the Python-side
+  (NumPy) allocations, against the input and output sizes. The issue's
+  budget is input + output + 10 %, i.e. a growth of at most
+  output + 0.1 (input + output).
+
+Numbers from a shared machine are noisy: the load average before and after
+the run is printed with them.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import subprocess
+import sys
+import tempfile
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from ._benchutil import (CliError, check_out_dir, check_workers_arg, common_parser,
+                         machine_info, progress, run_main, tile_to, write_json)
+
+__all__ = ["run_benchmarks", "format_table", "load_numpy_reference", "measure_memory", "main"]
+
+FULL_SHAPE = (3000, 4000)     # rows, cols: a 4000x3000 (12 Mpix) frame
+QUICK_SHAPE = (192, 256)
+RECON_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+PATTERNS = ("mask1", "mask2")
+PRECISIONS = ("float32", "float64")
+TARGET_SG_MPIX = 150.0
+TOF_FREQS = (80e6, 100e6, 120e6)
+
+
+# ---------------------------------------------------------------------------------------------
+# frames and references
+
+def make_rgb(shape):
+    """The benchmark scene: skimage.data.astronaut mirrored and tiled to ``shape``."""
+    import skimage.data
+
+    return tile_to(skimage.data.astronaut(), shape)
+
+
+def load_numpy_reference():
+    """The module tests/_reference.py of a source checkout, or None (installed package).
+
+    Looked for beside the package's source tree (editable installs), then in
+    the current directory; set RGBZ_NUMPY_REFERENCE to a file path to use
+    another copy.
+    """
+    env = os.environ.get("RGBZ_NUMPY_REFERENCE")
+    candidates = [Path(env)] if env else []
+    candidates.append(Path(__file__).resolve().parents[2] / "tests" / "_reference.py")
+    candidates.append(Path.cwd() / "tests" / "_reference.py")
+    for path in candidates:
+        if path.is_file():
+            spec = importlib.util.spec_from_file_location("_rgbz_numpy_reference", path)
+            mod = importlib.util.module_from_spec(spec)
+            try:
+                spec.loader.exec_module(mod)
+            except Exception:  # pragma: no cover - a broken checkout: report n/a
+                return None
+            if hasattr(mod, "reference_reconstruct"):
+                return mod
+    return None
+
+
+def _tof_taps(n, seed=0):
+    """Synthetic 11-bit taps (F, 4, n) of depths uniform in [0.3, 7] m (tap convention of
+    docs/sensor.md: A_k = black + K (O + a cos(phi + k pi / 2)))."""
+    rng = np.random.default_rng(seed)
+    depth = rng.uniform(0.3, 7.0, n)
+    c = 299_792_458.0
+    taps = np.empty((len(TOF_FREQS), 4, n), np.uint16)
+    for i, f in enumerate(TOF_FREQS):
+        phi = 4 * np.pi * f * depth / c
+        for k in range(4):
+            taps[i, k] = np.round(64 + 900 + 700 * np.cos(phi + k * np.pi / 2))
+    return taps
+
+
+# ---------------------------------------------------------------------------------------------
+# timing
+
+def _time(fn, repeat):
+    fn()                                     # warm-up: thread pool, caches, lazy plans
+    out = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        out.append(time.perf_counter() - t0)
+    return np.asarray(out)
+
+
+def _stats(times, npix):
+    q1, med, q3 = np.percentile(times, [25, 50, 75])
+    mp = npix / 1e6
+    return {"median_s": float(med), "q1_s": float(q1), "q3_s": float(q3),
+            "min_s": float(times.min()), "max_s": float(times.max()), "n": int(times.size),
+            "mpix_s": mp / med, "mpix_s_lo": mp / q3, "mpix_s_hi": mp / q1}
+
+
+def _ratio(a, b):
+    if a is None or b is None or not b:
+        return None
+    return a / b
+
+
+class _OpenCVThreads:
+    def __init__(self, cv2, n):
+        self.cv2, self.n = cv2, n
+
+    def __enter__(self):
+        if self.cv2 is not None:
+            self.old = self.cv2.getNumThreads()
+            self.cv2.setNumThreads(self.n)
+
+    def __exit__(self, *exc):
+        if self.cv2 is not None:
+            self.cv2.setNumThreads(self.old)
+
+
+# ---------------------------------------------------------------------------------------------
+# the cases
+
+def _cases(shape, ref_crop):
+    """[(name, meta, build)] where build() -> (fn(workers), reference fn or None, ref pixels)."""
+    import rgbz_fast as rz
+
+    rgb = make_rgb(shape)
+    frames = {}
+
+    def frame(pat):
+        if pat not in frames:
+            frames[pat] = rz.mosaic(rgb, pat)
+        return frames[pat]
+
+    cr = (ref_crop[0] // 12 * 12, ref_crop[1] // 4 * 4)   # fits every pattern period
+    ref = load_numpy_reference()
+    cases = []
+
+    def recon_case(method, pat, prec, exp="libm"):
+        def build():
+            fr = frame(pat)
+            ref_fn = None
+            if ref is not None and exp == "libm":
+                crop = np.ascontiguousarray(fr.data[:cr[0], :cr[1]])
+                pattern = fr.pattern
+
+                def ref_fn():
+                    ref.reference_reconstruct(crop, pattern, method, bit_depth=fr.bit_depth)
+            return (lambda w: rz.reconstruct(fr, method, precision=prec, workers=w, exp=exp),
+                    ref_fn, cr[0] * cr[1])
+        name = f"reconstruct {method}" + ("" if exp == "libm" else " exp=fast")
+        cases.append((name, dict(kernel="reconstruct", method=method, pattern=pat,
+                                 precision=prec, exp=exp), build))
+
+    for pat in PATTERNS:
+        for method in RECON_METHODS:
+            for prec in PRECISIONS:
+                recon_case(method, pat, prec)
+        recon_case("sg", pat, "float32", "fast")
+    for prec in PRECISIONS:
+        recon_case("edi_rows", "rows", prec)
+
+    def malvar_build(out_dtype):
+        def build():
+            cfa = frame("bayer").data
+            try:
+                from .demosaic import demosaic as _dm
+
+                def fn(w):
+                    _dm(cfa, "GRBG", "malvar2004", dtype=out_dtype, workers=w)
+            except ImportError:  # pragma: no cover - older checkouts
+                from . import _kernels
+
+                def fn(w):
+                    out = np.empty(cfa.shape + (3,), out_dtype)
+                    _kernels.demosaic_malvar(cfa, out, np.array([1, 0, 2, 1], np.int32), 0, w)
+            ref_fn = None
+            try:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore", DeprecationWarning)
+                    from colour_demosaicing import demosaicing_CFA_Bayer_Malvar2004 as _cm
+                crop = cfa[:cr[0], :cr[1]].astype(np.float64)
+
+                def ref_fn():
+                    with warnings.catch_warnings():      # scipy.ndimage.filters in colour
+                        warnings.simplefilter("ignore", DeprecationWarning)
+                        _cm(crop, "GRBG")
+            except ImportError:
+                pass
+            return fn, ref_fn, cr[0] * cr[1]
+        return build
+
+    for dt in (np.float32, np.float64):
+        cases.append(("demosaic malvar2004", dict(kernel="demosaic", method="malvar2004",
+                                                  pattern="bayer", precision=np.dtype(dt).name,
+                                                  exp=None), malvar_build(dt)))
+
+    from . import _kernels
+
+    def tof_build(pat, stage):
+        def build():
+            fr = frame(pat)
+            block = 2 if pat == "mask2" else 1
+            n = int(fr.z_mask.sum()) // (block * block)
+            taps = _tof_taps(n)
+            F = taps.shape[0]
+            phase, amp, off = (np.empty((F, n)) for _ in range(3))
+            _kernels.tof_demodulate(taps, phase, amp, off, 1)
+            freqs = np.asarray(TOF_FREQS)
+            weights = freqs ** 2 / (freqs ** 2).sum()
+            max_range = 299_792_458.0 / (2 * 20e6)
+            depth, resid = np.empty(n), np.empty(n)
+            wraps = np.empty(n, np.int32)
+            if stage == "demodulate":
+                def fn(w):
+                    _kernels.tof_demodulate(taps, phase, amp, off, w)
+                tc = taps[:, :, : max(1, n * cr[0] * cr[1] // fr.data.size)].astype(np.float64)
+
+                def ref_fn():
+                    i = tc[:, 0] - tc[:, 2]
+                    q = tc[:, 3] - tc[:, 1]
+                    np.mod(np.arctan2(q, i), 2 * np.pi)
+                    0.5 * np.hypot(i, q)
+                    tc.mean(axis=1)
+                return fn, ref_fn, cr[0] * cr[1]
+
+            def fn(w):
+                _kernels.tof_unwrap(phase, freqs, weights, max_range, depth, resid, wraps, w)
+            return fn, None, 0
+        return build
+
+    for pat in PATTERNS:
+        for stage in ("demodulate", "unwrap"):
+            cases.append((f"tof {stage}", dict(kernel=f"tof_{stage}", method=stage, pattern=pat,
+                                               precision="float64", exp=None),
+                          tof_build(pat, stage)))
+    return cases, rgb, frame, ref is not None
+
+
+def _opencv(frame_fn, repeat, workers, npix):
+    try:
+        import cv2
+    except ImportError:
+        return None
+    cfa = frame_fn("bayer").data
+    out = {"version": cv2.__version__}
+    for key, code in (("bilinear", cv2.COLOR_BayerGR2RGB), ("ea", cv2.COLOR_BayerGR2RGB_EA)):
+        out[key] = {}
+        for label, n in (("1", 1), ("all", workers)):
+            with _OpenCVThreads(cv2, n):
+                out[key][label] = _stats(_time(lambda: cv2.cvtColor(cfa, code), repeat), npix)
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# memory
+
+_MEM_SCRIPT = r"""
+import gc, json, sys, tracemalloc
+import numpy as np
+import rgbz_fast as rz
+path, pattern, method, precision, workers, mode = sys.argv[1:7]
+data = np.load(path)
+rz.reconstruct(data[:96, :96].copy(), method, pattern=pattern, precision=precision,
+               workers=int(workers))                      # warm-up: threads, plans
+def status(key):
+    with open("/proc/self/status") as fh:
+        for line in fh:
+            if line.startswith(key + ":"):
+                return int(line.split()[1]) * 1024
+def reset_hwm():
+    try:
+        with open("/proc/self/clear_refs", "w") as fh:   # "5": reset the peak RSS (Linux >= 4.0)
+            fh.write("5")
+        return True
+    except OSError:
+        return False
+# one mode per process: freed pages may stay resident (malloc keeps them) and hide the next
+frame = rz.RawFrame(data, pattern, 11) if mode == "rawframe" else data
+kw = {} if mode == "rawframe" else {"pattern": pattern}
+gc.collect()
+exact = reset_hwm()
+before = status("VmRSS") if exact else status("VmHWM")
+tracemalloc.start()
+out = rz.reconstruct(frame, method, precision=precision, workers=int(workers), **kw)
+_, traced = tracemalloc.get_traced_memory()
+tracemalloc.stop()
+after = status("VmHWM")
+print(json.dumps(dict(rss_before=before, hwm_after=after, traced_peak=traced, hwm_reset=exact,
+                      in_bytes=data.nbytes, out_bytes=out.nbytes)))
+"""
+
+
+def measure_memory(data, pattern="mask1", method="sg", precision="float32", workers=None):
+    """Peak-memory growth of one ``reconstruct`` call, in a fresh Python process.
+
+    The frame is handed over as a .npy file (``np.load`` allocates nothing but
+    the array). Before the call the peak RSS is reset (``/proc/self/clear_refs``,
+    Linux >= 4.0), so the growth of the high-water mark (VmHWM, i.e.
+    ``ru_maxrss``) over the resident size before the call is everything the call
+    touched: the output pages, NumPy temporaries (argument validation), the C
+    kernel's scratch and the thread stacks. tracemalloc gives the peak of the
+    NumPy (Python allocator) part alone. Two inputs are measured: a plain
+    array (``reconstruct`` checks its value range) and a :class:`RawFrame`
+    (already validated at construction). Returns ``{"array": {...},
+    "rawframe": {...}, ...}``, or None when /proc is not there.
+    """
+    import json
+
+    if not Path("/proc/self/status").exists():
+        return None
+    workers = workers or (os.cpu_count() or 1)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "frame.npy"
+        np.save(path, np.ascontiguousarray(data))
+        out = {}
+        for mode in ("array", "rawframe"):
+            res = subprocess.run([sys.executable, "-c", _MEM_SCRIPT, str(path), str(pattern),
+                                  method, precision, str(workers), mode], capture_output=True,
+                                 text=True, timeout=600)
+            if res.returncode != 0:
+                err = res.stderr.strip().splitlines()
+                return {"error": err[-1] if err else "failed"}
+            m = json.loads(res.stdout.strip().splitlines()[-1])
+            grow = m["hwm_after"] - m["rss_before"]
+            budget = m["out_bytes"] + 0.1 * (m["in_bytes"] + m["out_bytes"])
+            m.update(rss_growth=grow, rss_growth_over_output=grow / m["out_bytes"],
+                     peak_over_in_plus_out=(m["in_bytes"] + grow) / (m["in_bytes"]
+                                                                     + m["out_bytes"]),
+                     budget_bytes=budget, within_budget=bool(grow <= budget))
+            out[mode] = m
+    return dict(pattern=str(pattern), method=method, precision=precision, workers=workers,
+                shape=list(np.shape(data)), **out)
+
+
+# ---------------------------------------------------------------------------------------------
+# driver
+
+def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320), kernels=None,
+                   reference=True, memory=True, quiet=True):
+    """Run every benchmark; returns the JSON-able result dict (see ``--json``)."""
+    workers = workers or (os.cpu_count() or 1)
+    npix = shape[0] * shape[1]
+    load0 = os.getloadavg() if hasattr(os, "getloadavg") else None
+    cases, _, frame_fn, have_ref = _cases(shape, ref_crop)
+    if kernels:
+        cases = [c for c in cases if any(k in _label(c[0], c[1]) for k in kernels)]
+    results = []
+    for name, meta, build in progress(cases, desc="bench", quiet=quiet):
+        fn, ref_fn, ref_pix = build()
+        threads = {"1": _stats(_time(lambda: fn(1), repeat), npix),
+                   "all": _stats(_time(lambda: fn(workers), repeat), npix)}
+        ref_mpix = None
+        if reference and ref_fn is not None:
+            ref_mpix = _stats(_time(ref_fn, max(1, min(repeat, 3))), ref_pix)["mpix_s"]
+        results.append(dict(name=name, **meta, threads=threads, numpy_ref_mpix_s=ref_mpix,
+                            vs_numpy=_ratio(threads["1"]["mpix_s"], ref_mpix)))
+    ocv = _opencv(frame_fn, repeat, workers, npix)
+    for r in results:
+        for key in ("bilinear", "ea"):
+            for label in ("1", "all"):
+                r[f"vs_opencv_{key}_{label}"] = (
+                    None if ocv is None else
+                    _ratio(r["threads"][label]["mpix_s"], ocv[key][label]["mpix_s"]))
+    mem = None
+    if memory:
+        mem = measure_memory(frame_fn("mask1").data, "mask1", "sg", "float32", workers)
+    sg = next((r for r in results if r["kernel"] == "reconstruct" and r["method"] == "sg"
+               and r["pattern"] == "mask1" and r["precision"] == "float32"
+               and r["exp"] == "libm"), None)
+    targets = {}
+    if sg is not None:
+        v = sg["threads"]["all"]["mpix_s"]
+        targets["sg_mask1_float32_all_threads_mpix_s"] = v
+        targets["target_mpix_s"] = TARGET_SG_MPIX
+        targets["target_met"] = bool(v >= TARGET_SG_MPIX)
+        if ocv is not None:
+            targets["opencv_ea_all_threads_mpix_s"] = ocv["ea"]["all"]["mpix_s"]
+            targets["fraction_of_opencv_ea"] = v / ocv["ea"]["all"]["mpix_s"]
+    if mem and "array" in mem:
+        targets["peak_memory_within_budget"] = {k: mem[k]["within_budget"]
+                                                for k in ("array", "rawframe")}
+    return {
+        "machine": dict(machine_info(), loadavg_before=load0,
+                        loadavg_after=os.getloadavg() if hasattr(os, "getloadavg") else None),
+        "frame": {"shape": list(shape), "pixels": npix, "dtype": "uint16", "bit_depth": 11,
+                  "source": "skimage.data.astronaut, mirrored and tiled"},
+        "repeat": repeat, "workers_all": workers,
+        "numpy_reference": {"available": have_ref and reference,
+                            "crop": [ref_crop[0] // 12 * 12, ref_crop[1] // 4 * 4]},
+        "results": results, "opencv": ocv, "memory": mem, "targets": targets,
+    }
+
+
+def _label(name, meta):
+    """The label --kernels matches: 'reconstruct sg mask1 float32 exp=libm', 'tof unwrap mask2
+    float64', 'demosaic malvar2004 bayer float32'."""
+    base = name.replace(" exp=fast", "")
+    return f"{base} {meta['pattern']} {meta['precision']}" + (
+        f" exp={meta['exp']}" if meta.get("exp") else "")
+
+
+def _f(v, nd=1):
+    if v is None:
+        return "n/a"
+    if v >= 100:
+        return f"{v:.0f}"
+    return f"{v:.{nd}f}"
+
+
+def format_table(res):
+    """The human-readable report of :func:`run_benchmarks`'s result."""
+    m = res["machine"]
+    lines = [f"rgbz-fast {m.get('rgbz_fast', '?')} bench: frame {res['frame']['shape'][1]}x"
+             f"{res['frame']['shape'][0]} ({res['frame']['pixels'] / 1e6:.1f} Mpix, uint16 11-bit),"
+             f" median [IQR] of {res['repeat']} runs, Mpix/s = frame pixels / s",
+             f"machine: {m['cpu_model']}, {m['logical_cores']} logical cores "
+             f"({m.get('usable_cores')} usable), OpenMP {m.get('openmp')}, "
+             f"{m.get('compiler', '')}; all threads = {res['workers_all']}; load average "
+             f"{_load(m['loadavg_before'])} -> {_load(m['loadavg_after'])}"]
+    head = ["kernel", "pattern", "precision", "1 thread", "all threads", "xNumPy", "xCV bil",
+            "xCV EA"]
+    rows = []
+    for r in res["results"]:
+        t1, ta = r["threads"]["1"], r["threads"]["all"]
+        rows.append([r["name"], r["pattern"], r["precision"],
+                     f"{_f(t1['mpix_s'])} [{_f(t1['mpix_s_lo'])}-{_f(t1['mpix_s_hi'])}]",
+                     f"{_f(ta['mpix_s'])} [{_f(ta['mpix_s_lo'])}-{_f(ta['mpix_s_hi'])}]",
+                     _f(r["vs_numpy"]), _f(r["vs_opencv_bilinear_all"], 2),
+                     _f(r["vs_opencv_ea_all"], 2)])
+    ocv = res["opencv"]
+    if ocv is not None:
+        for key, label in (("bilinear", "OpenCV Bayer bilinear"), ("ea", "OpenCV Bayer EA")):
+            t1, ta = ocv[key]["1"], ocv[key]["all"]
+            rows.append([label, "bayer", "uint16",
+                         f"{_f(t1['mpix_s'])} [{_f(t1['mpix_s_lo'])}-{_f(t1['mpix_s_hi'])}]",
+                         f"{_f(ta['mpix_s'])} [{_f(ta['mpix_s_lo'])}-{_f(ta['mpix_s_hi'])}]",
+                         "", "", ""])
+    w = [max(len(h), *(len(x[i]) for x in rows)) if rows else len(h) for i, h in enumerate(head)]
+    lines.append("")
+    lines.append("  ".join(h.ljust(n) for h, n in zip(head, w)))
+    lines.append("  ".join("-" * n for n in w))
+    lines += ["  ".join(c.ljust(n) for c, n in zip(x, w)) for x in rows]
+    lines.append("")
+    lines.append("xNumPy: our 1-thread speed / the NumPy reference's (timed on a "
+                 f"{res['numpy_reference']['crop'][1]}x{res['numpy_reference']['crop'][0]} crop"
+                 + ("" if res["numpy_reference"]["available"] else "; tests/_reference.py "
+                    "not found: n/a") + "). xCV: our all-threads speed / OpenCV's on the same-size"
+                 " Bayer frame" + ("" if ocv else " (cv2 not installed: n/a)") + ".")
+    t = res["targets"]
+    if "sg_mask1_float32_all_threads_mpix_s" in t:
+        s = (f"target: SG Mask1 float32 all threads {t['sg_mask1_float32_all_threads_mpix_s']:.1f}"
+             f" Mpix/s vs >= {t['target_mpix_s']:.0f}: "
+             f"{'met' if t['target_met'] else 'NOT met'}")
+        if "opencv_ea_all_threads_mpix_s" in t:
+            s += (f"; OpenCV EA {t['opencv_ea_all_threads_mpix_s']:.0f} Mpix/s "
+                  f"(we run at {t['fraction_of_opencv_ea']:.3f} of its speed)")
+        lines.append(s)
+    mem = res["memory"]
+    if mem:
+        if "error" in mem:
+            lines.append(f"memory: n/a ({mem['error']})")
+        else:
+            for mode, label in (("array", "plain array (range check)"),
+                                ("rawframe", "RawFrame (validated)")):
+                m = mem[mode]
+                lines.append(
+                    f"memory: reconstruct {mem['method']} {mem['pattern']} {mem['precision']}, "
+                    f"{label}: peak RSS +{m['rss_growth'] / 2**20:.1f} MiB = "
+                    f"{m['rss_growth_over_output']:.2f} x output ({m['out_bytes'] / 2**20:.1f} "
+                    f"MiB), tracemalloc peak {m['traced_peak'] / 2**20:.1f} MiB; input + growth ="
+                    f" {m['peak_over_in_plus_out']:.3f} x (input + output) [budget 1.10: "
+                    f"{'ok' if m['within_budget'] else 'OVER'}]")
+    return "\n".join(lines)
+
+
+def _load(v):
+    return "n/a" if v is None else "/".join(f"{x:.2f}" for x in v)
+
+
+def _parse_shape(s):
+    try:
+        w, h = (int(x) for x in s.lower().split("x"))
+    except ValueError:
+        raise CliError(f"--shape: expected WIDTHxHEIGHT such as 4000x3000, got {s!r}") from None
+    if w < 24 or h < 24 or w % 4 or h % 12:
+        raise CliError(f"--shape: width must be a multiple of 4 and height of 12 (the pattern "
+                       f"periods), both >= 24; got {s!r}")
+    return (h, w)
+
+
+def main(argv=None):
+    """``rgbz-fast bench``."""
+    p = common_parser("rgbz-fast bench", __doc__)
+    p.add_argument("--repeat", type=int, default=None, help="timed runs per case (default 5, "
+                   "--quick 3)")
+    p.add_argument("--shape", default=None, help="frame WIDTHxHEIGHT (default 4000x3000, "
+                   "--quick 256x192)")
+    p.add_argument("--kernels", default=None,
+                   help="comma-separated substrings; run only the cases whose label "
+                        "('reconstruct sg mask1 float32', 'demosaic', 'tof') contains one")
+    p.add_argument("--no-reference", action="store_true", help="skip the NumPy references")
+    p.add_argument("--no-memory", action="store_true", help="skip the peak-memory subprocess")
+
+    def body(args):
+        shape = _parse_shape(args.shape) if args.shape else (QUICK_SHAPE if args.quick
+                                                             else FULL_SHAPE)
+        repeat = args.repeat if args.repeat is not None else (3 if args.quick else 5)
+        if repeat < 1:
+            raise CliError(f"--repeat: expected a positive integer, got {repeat}")
+        workers = check_workers_arg(args.workers)
+        out = check_out_dir(args.out)
+        kernels = [k.strip() for k in args.kernels.split(",")] if args.kernels else None
+        crop = (48, 64) if args.quick else (240, 320)
+        crop = (min(crop[0], shape[0]), min(crop[1], shape[1]))
+        res = run_benchmarks(shape, repeat, workers, crop, kernels, not args.no_reference,
+                             not args.no_memory, args.quiet)
+        if not res["results"]:
+            raise CliError(f"--kernels: no case matches {args.kernels!r}")
+        res["command"] = "rgbz-fast bench " + " ".join(sys.argv[1:] if argv is None else argv)
+        table = format_table(res)
+        if out is not None:
+            write_json(res, out / "bench.json")
+            (out / "bench.txt").write_text(table + "\n", encoding="utf-8")
+        print(write_json(res) if args.json else table)
+        return 0
+
+    return run_main(p, body, argv)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
