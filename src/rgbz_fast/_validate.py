@@ -7,7 +7,7 @@ import os
 import numpy as np
 
 __all__ = ["supported_float_type", "check_image", "check_bit_depth", "check_workers",
-           "check_choice", "check_finite", "FRAME_DTYPES"]
+           "check_choice", "check_finite", "check_number", "FRAME_DTYPES"]
 
 #: largest ``workers`` (threads of one kernel call); the result never depends on it
 MAX_WORKERS = 1024
@@ -81,3 +81,25 @@ def check_choice(value, choices, name):
     if not isinstance(value, str) or value.lower() not in choices:
         raise ValueError(f"{name}: expected one of {', '.join(map(repr, choices))}, got {value!r}")
     return value.lower()
+
+
+def check_number(value, name, *, lo=None, lo_open=False, hi=None, allow_none=False):
+    """A finite real number within the bounds, as float (None passes when ``allow_none``)."""
+    if value is None and allow_none:
+        return None
+    if isinstance(value, bool):
+        raise TypeError(f"{name}: expected a number, got {value!r}")
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name}: expected a number, got {value!r}") from None
+    if not np.isfinite(v) or (lo is not None and (v <= lo if lo_open else v < lo)) or (
+            hi is not None and v > hi):
+        rng = []
+        if lo is not None:
+            rng.append(f"{'>' if lo_open else '>='} {lo:g}")
+        if hi is not None:
+            rng.append(f"<= {hi:g}")
+        bound = (" " + " and ".join(rng)) if rng else ""
+        raise ValueError(f"{name}: expected a finite number{bound}, got {value!r}")
+    return v

@@ -32,7 +32,7 @@ import numpy as np
 
 from . import metrics as _metrics
 from ._frame import mosaic
-from ._patterns import bayer, get_pattern
+from ._patterns import get_pattern
 from ._plans import METHODS
 from ._reconstruct import reconstruct
 

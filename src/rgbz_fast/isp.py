@@ -32,7 +32,8 @@ import numpy as np
 from ._frame import RawFrame
 from ._patterns import Z, get_pattern
 from ._reconstruct import reconstruct
-from ._validate import FRAME_DTYPES, check_bit_depth, check_choice, check_image
+from ._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
+                        check_number)
 from .demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES, demosaic
 from .tof_isp import ToFDepth, ToFISP, tof_depth
 
@@ -51,22 +52,7 @@ STAGES = ("defect_correction", "reconstruction", "white_balance", "demosaic",
 _PRECISIONS = {"float32": np.float32, "float64": np.float64}
 
 
-def _real(value, name, *, lo=None, lo_open=False, hi=None):
-    if isinstance(value, bool):
-        raise TypeError(f"{name}: expected a number, got {value!r}")
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name}: expected a number, got {value!r}") from None
-    if not np.isfinite(v) or (lo is not None and (v <= lo if lo_open else v < lo)) or (
-            hi is not None and v > hi):
-        rng = []
-        if lo is not None:
-            rng.append(f"{'>' if lo_open else '>='} {lo:g}")
-        if hi is not None:
-            rng.append(f"<= {hi:g}")
-        raise ValueError(f"{name}: expected a finite number {' and '.join(rng)}, got {value!r}")
-    return v
+_real = check_number   # one validator for every numeric parameter (_validate.py)
 
 
 def _flag(value, name):

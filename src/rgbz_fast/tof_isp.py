@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _kernels
-from ._validate import check_workers
+from ._validate import check_number, check_workers
 
 __all__ = ["ToFISP", "ToFDepth", "tof_depth", "demodulate", "phasors", "denoise_phasors",
            "unwrap", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT"]
@@ -56,19 +56,7 @@ def _check_taps(taps, name="taps"):
     return t
 
 
-def _number(value, name, *, lo=None, lo_open=False, allow_none=False):
-    if value is None and allow_none:
-        return None
-    if isinstance(value, bool):
-        raise TypeError(f"{name}: expected a number, got {value!r}")
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name}: expected a number, got {value!r}") from None
-    if not math.isfinite(v) or (lo is not None and (v <= lo if lo_open else v < lo)):
-        bound = "" if lo is None else f" {'>' if lo_open else '>='} {lo:g}"
-        raise ValueError(f"{name}: expected a finite number{bound}, got {value!r}")
-    return v
+_number = check_number   # one validator for every numeric parameter (_validate.py)
 
 
 def _check_window(window):
