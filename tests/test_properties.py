@@ -20,6 +20,7 @@ cores; CI loads the derandomized "deterministic" profile of conftest.py.
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from pathlib import Path
@@ -43,6 +44,9 @@ PHASES = rz.BAYER_PHASES
 PRESETS = [f"{base}_{ph.lower()}" for base in ("mask1", "mask2", "rows", "bayer")
            for ph in PHASES]
 METHODS = tuple(rz.METHODS)
+#: tools/sanitize.sh can skip the inputs of bug B10 (docs/robustness.md): undefined behaviour
+#: that UBSan stops on, harmless on x86 today
+KNOWN_UB_SKIPPED = bool(os.environ.get("RGBZ_SKIP_KNOWN_UB"))
 #: a message that names the parameter it is about: "frame: ...", "ToFSensor.bit_depth: ..."
 NAMED = re.compile(r"^[A-Za-z_][\w.\[\], ]*: ")
 
@@ -115,7 +119,7 @@ def _named_error(exc):
 
 
 # --------------------------------------------------------------------------- reconstruct
-@quick(300)
+@quick(1000)
 @given(data=st.data(), pattern_name=patterns, method=st.sampled_from(METHODS),
        dtype=st.sampled_from(DTYPES), precision=st.sampled_from(["float32", "float64"]),
        domain=st.sampled_from(["intensity", "colour_difference"]),
@@ -129,6 +133,9 @@ def test_reconstruct_never_crashes_or_returns_garbage(data, pattern_name, method
                             label="sigma_floor")
     sigma_rel = data.draw(st.sampled_from([0.0, 0.5, 10.0]), label="sigma_rel")
     edge_ratio = data.draw(st.sampled_from([1e-9, 0.5, 4.0]), label="edge_ratio")
+    if KNOWN_UB_SKIPPED and exp == "fast" and sigma_floor < 1e-150:
+        event("skipped: bug B10 (RGBZ_SKIP_KNOWN_UB)")
+        return
     try:
         pattern = rz.get_pattern(pattern_name)
     except (ValueError, TypeError) as exc:
@@ -187,7 +194,7 @@ def test_reconstruct_never_crashes_or_returns_garbage(data, pattern_name, method
         np.testing.assert_allclose(out.astype(np.float64), ref, rtol=1e-9, atol=tol)
 
 
-@quick(40)
+@quick(150)
 @given(pattern_name=st.sampled_from(PRESETS), method=st.sampled_from(METHODS),
        dtype=st.sampled_from(DTYPES), value=st.integers(0, 255),
        shape=st.tuples(st.integers(1, 13), st.integers(1, 13)))
@@ -210,7 +217,7 @@ def test_flat_frame_stays_flat(pattern_name, method, dtype, value, shape):
 
 
 # --------------------------------------------------------------------------- bad arrays
-@quick(60)
+@quick(200)
 @given(shape=st.lists(st.integers(0, 5), min_size=0, max_size=4),
        dtype=st.sampled_from([np.uint8, np.uint16, np.int8, np.int32, np.int64, np.float16,
                               np.float32, np.float64, np.complex64, np.bool_, object,
@@ -234,7 +241,7 @@ def test_arbitrary_arrays_are_rejected_cleanly(shape, dtype, poison, pattern_nam
 
 
 # --------------------------------------------------------------------------- demosaic
-@quick(80)
+@quick(300)
 @given(shape=st.tuples(st.integers(1, 17), st.integers(1, 17)),
        dtype=st.sampled_from(DTYPES + (np.int16, np.bool_)),
        phase=st.sampled_from(PHASES), mode=st.sampled_from(["reflect", "period"]),
@@ -277,7 +284,7 @@ def test_malvar_demosaic_is_finite_and_exact_on_flat(shape, dtype, phase, mode, 
 
 
 # --------------------------------------------------------------------------- ToF
-@quick(80)
+@quick(300)
 @given(F=st.integers(1, 4), n=st.integers(0, 40), dtype=st.sampled_from(
     [np.uint16, np.float32, np.float64, np.uint8, np.int32]),
     kind=st.sampled_from(["random", "equal", "zero", "max", "one_hot"]),
@@ -308,7 +315,7 @@ def test_demodulate_outputs_are_finite_and_in_range(F, n, dtype, kind, seed, wor
         assert np.all(amp == 0)
 
 
-@quick(60)
+@quick(200)
 @given(d=st.lists(st.floats(0, 7.4948), min_size=1, max_size=30),
        noise=st.sampled_from([0.0, 1e-3, 0.05]), seed=st.integers(0, 2**32 - 1))
 def test_unwrap_recovers_depth_inside_the_unambiguous_range(d, noise, seed):

@@ -9,6 +9,7 @@
 #   tools/sanitize.sh                  # build (if needed) and run the default selection
 #   tools/sanitize.sh -k mask2         # extra pytest arguments are passed through
 #   ASAN_REBUILD=1 tools/sanitize.sh   # force a rebuild of the package
+#   RGBZ_SKIP_KNOWN_UB=1 tools/sanitize.sh   # leave out the inputs of known bug B10
 #
 # Any ASan/UBSan report aborts the run (halt_on_error) and is a real bug.
 set -euo pipefail
