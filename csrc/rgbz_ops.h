@@ -43,7 +43,7 @@ extern uint64_t *rgbz_opc_cur_count;
  */
 static inline double rgbz_fast_exp_d(double x)
 {
-    if (x < -708.0) return 0.0;
+    if (!(x > -708.0)) return 0.0;         /* also NaN: no NaN-to-integer conversion */
     double n = floor(x * 1.4426950408889634 + 0.5);
     double y = (x - n * 0.693147180369123816490) - n * 1.90821492927058770002e-10;
     double p = 1.0 + y * (1.0 + y * (0.5 + y * (1.0 / 6 + y * (1.0 / 24 + y * (1.0 / 120 + y * (1.0 / 720 + y * (1.0 / 5040)))))));
@@ -59,7 +59,9 @@ static inline float rgbz_fast_exp_f(float x)
 {
     /* branch-free, so that loops over several gammas vectorise: clamp, evaluate,
        then zero the result below the normal range */
-    const float xc = x < -87.0f ? -87.0f : x;
+    /* written so that NaN takes the clamp (and the final 0): converting a NaN to an
+       integer below would be undefined behaviour (UBSan, docs/robustness.md B10) */
+    const float xc = x > -87.0f ? x : -87.0f;
     const float n = (xc * 1.44269504f + 12582912.0f) - 12582912.0f;   /* round to nearest */
     /* Cody-Waite: r = x - n*ln2 with ln2 split in two, exact in float */
     const float y = (xc - n * 0.693359375f) - n * -2.12194440e-4f;
@@ -68,7 +70,7 @@ static inline float rgbz_fast_exp_f(float x)
     const uint32_t bits = (uint32_t)e << 23;
     float scale;
     memcpy(&scale, &bits, sizeof scale);
-    return x < -87.0f ? 0.0f : p * scale;
+    return x > -87.0f ? p * scale : 0.0f;
 }
 
 #endif /* RGBZ_OPS_H */

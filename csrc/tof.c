@@ -44,6 +44,7 @@ static void rgbz_tof_demod_##S(const T *taps, ptrdiff_t F, ptrdiff_t N, double *
             OPC_(RGBZ_OP_ATAN2);                                                                  \
             double p = atan2(Q, I);                                                               \
             if (OCMP(p < 0)) p = OADD(p, TOF_TWO_PI);                                             \
+            if (p >= TOF_TWO_PI) p = 0.0;  /* -tiny + 2 pi rounds to 2 pi: keep [0, 2 pi) */     \
             ph[n] = p;                                                                            \
             OPC_(RGBZ_OP_SQRT);                                                                   \
             am[n] = OMUL(0.5, sqrt(OADD(OMUL(I, I), OMUL(Q, Q))));                                \

@@ -245,8 +245,6 @@ def test_demodulate_saturated_taps_and_extreme_phases():
     np.testing.assert_allclose(off, 1000.0)
 
 
-@pytest.mark.xfail(strict=True, reason="bug B8 (reported): atan2 of a tiny negative Q plus "
-                   "2 pi rounds to 2 pi; tof.c returns phase == 2 pi, outside [0, 2 pi)")
 def test_demodulate_phase_is_below_two_pi():
     """Q = A3 - A1 = -1e-17, I = 1: atan2 is -1e-17, and -1e-17 + 2 pi == 2 pi in float64."""
     phase, _, _ = tof_isp.demodulate(np.array([[[1.0], [1e-17], [0.0], [0.0]]]))
