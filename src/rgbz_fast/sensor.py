@@ -128,6 +128,27 @@ class UnambiguousRangeWarning(RuntimeWarning):
 # --------------------------------------------------------------------------
 # parameter checks
 # --------------------------------------------------------------------------
+
+def _check_readout(obj):
+    """Well, conversion gain, swing, ADC bits and black level: shared by both sensors."""
+    _num(obj, "full_well", lo=0, lo_open=True, allow_inf=True)
+    _num(obj, "conversion_gain_uv_per_e", lo=0, hi=1e4, lo_open=True)
+    _num(obj, "voltage_swing", lo=0, hi=100, lo_open=True)
+    object.__setattr__(obj, "bit_depth",
+                       check_bit_depth(obj.bit_depth, f"{type(obj).__name__}.bit_depth"))
+    _num(obj, "black_level", lo=0, hi=(1 << obj.bit_depth) - 1, hi_open=True)
+
+
+def _check_pixel_noise(obj):
+    """The noise terms and the fixed-pattern seed: shared by both sensors."""
+    _flag(obj, "shot_noise")
+    _num(obj, "dark_current", lo=0, hi=1e7)
+    _num(obj, "read_noise", lo=0, hi=1e5)
+    _num(obj, "dsnu", lo=0, hi=1e5)
+    _num(obj, "prnu", lo=0, hi=1, hi_open=True)
+    _flag(obj, "quantise")
+    object.__setattr__(obj, "fpn_seed", _seed(obj.fpn_seed, f"{type(obj).__name__}.fpn_seed"))
+
 def _num(obj, name, *, lo=None, hi=None, lo_open=False, hi_open=False, allow_inf=False):
     value = getattr(obj, name)
     label = f"{type(obj).__name__}.{name}"
@@ -298,12 +319,7 @@ class ColourSensor:
 
     def __post_init__(self):
         _num(self, "pixel_pitch_um", lo=0.1, hi=100)
-        _num(self, "full_well", lo=0, lo_open=True, allow_inf=True)
-        _num(self, "conversion_gain_uv_per_e", lo=0, hi=1e4, lo_open=True)
-        _num(self, "voltage_swing", lo=0, hi=100, lo_open=True)
-        object.__setattr__(self, "bit_depth",
-                           check_bit_depth(self.bit_depth, "ColourSensor.bit_depth"))
-        _num(self, "black_level", lo=0, hi=(1 << self.bit_depth) - 1, hi_open=True)
+        _check_readout(self)
         try:
             qe = tuple(float(q) for q in self.qe)
         except (TypeError, ValueError):
@@ -324,13 +340,7 @@ class ColourSensor:
             _num(self, "exposure", lo=0, hi=3600, lo_open=True)
         _num(self, "ae_target", lo=0, hi=1, lo_open=True)
         _num(self, "ae_percentile", lo=0, hi=100, lo_open=True)
-        _flag(self, "shot_noise")
-        _num(self, "dark_current", lo=0, hi=1e7)
-        _num(self, "read_noise", lo=0, hi=1e5)
-        _num(self, "dsnu", lo=0, hi=1e5)
-        _num(self, "prnu", lo=0, hi=1, hi_open=True)
-        _flag(self, "quantise")
-        object.__setattr__(self, "fpn_seed", _seed(self.fpn_seed, "ColourSensor.fpn_seed"))
+        _check_pixel_noise(self)
 
     @property
     def system_gain(self):
@@ -686,19 +696,8 @@ class ToFSensor:
         if self.z_block is not None and (isinstance(self.z_block, bool)
                                          or self.z_block not in (1, 2)):
             raise ValueError(f"ToFSensor.z_block: expected None, 1 or 2, got {self.z_block!r}")
-        _num(self, "full_well", lo=0, lo_open=True, allow_inf=True)
-        _num(self, "conversion_gain_uv_per_e", lo=0, hi=1e4, lo_open=True)
-        _num(self, "voltage_swing", lo=0, hi=100, lo_open=True)
-        object.__setattr__(self, "bit_depth",
-                           check_bit_depth(self.bit_depth, "ToFSensor.bit_depth"))
-        _num(self, "black_level", lo=0, hi=(1 << self.bit_depth) - 1, hi_open=True)
-        _flag(self, "shot_noise")
-        _num(self, "dark_current", lo=0, hi=1e7)
-        _num(self, "read_noise", lo=0, hi=1e5)
-        _num(self, "dsnu", lo=0, hi=1e5)
-        _num(self, "prnu", lo=0, hi=1, hi_open=True)
-        _flag(self, "quantise")
-        object.__setattr__(self, "fpn_seed", _seed(self.fpn_seed, "ToFSensor.fpn_seed"))
+        _check_readout(self)
+        _check_pixel_noise(self)
 
     @property
     def system_gain(self):
