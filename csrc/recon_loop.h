@@ -28,6 +28,7 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
         for (int i = 0; i < 4; i++)
             if (phase_map[i] >= 0) { zr = i / 2; zc = i % 2; }
     const int fast = zr >= 0;
+    const int sg_pure = fast && plans[0].method == RGBZ_M_SG && !(plans[0].use_grad && plans[0].use_sg);
 #ifdef _OPENMP
     int nth = prm->workers > 0 ? prm->workers : omp_get_max_threads();
 #pragma omp parallel for schedule(static) num_threads(nth)
@@ -39,33 +40,43 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
             rowp[dy + ry] = src + rgbz_extend(y + dy, rows, py) * cols;
         memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
         const int32_t *pm = phase_map + (y % py) * px;
-        int ph = 0;
-        for (ptrdiff_t x = 0; x < cols; x++, ph = (ph + 1 == px) ? 0 : ph + 1) {
-            int pl = pm[ph];
-            if (pl < 0) continue;
-            if (fast_row && x >= 2 && x < cols - 2) continue;
-            const rgbz_plan *p = &plans[pl];
+        int row_has_z = 0;
+        for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
+        if (!row_has_z) continue;           /* a colour-only row: the copy is the output */
+        /* a fast row leaves only its two border columns at each end to the interpreter */
+        for (int seg = 0; seg < (fast_row ? 2 : 1); seg++) {
+            const ptrdiff_t xa = fast_row ? (seg ? (cols - 2 > 2 ? cols - 2 : 2) : 0) : 0;
+            const ptrdiff_t xe = fast_row ? (seg ? cols : (cols < 2 ? cols : 2)) : cols;
+            int ph = (int)(xa % px);
+            for (ptrdiff_t x = xa; x < xe; x++, ph = (ph + 1 == px) ? 0 : ph + 1) {
+                int pl = pm[ph];
+                if (pl < 0) continue;
+                const rgbz_plan *p = &plans[pl];
 #ifdef RGBZ_COUNT_OPS
-            rgbz_opc_cur_count = opcounts + (size_t)pl * RGBZ_NOPS;
+                rgbz_opc_cur_count = opcounts + (size_t)pl * RGBZ_NOPS;
 #endif
-            REAL v[RGBZ_MAX_TAPS];
-            const ptrdiff_t *cm = colmap + x + rx;
-            for (int t = 0; t < p->n_taps; t++)
-                v[t] = (REAL)rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
-            REAL r = SITE(rgbz_site, RS)(v, p, floor_, rel, edge_ratio, exp_mode);
-            if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
-            if (r > maxval) r = maxval;
+                REAL v[RGBZ_MAX_TAPS];
+                const ptrdiff_t *cm = colmap + x + rx;
+                for (int t = 0; t < p->n_taps; t++)
+                    v[t] = (REAL)rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
+                REAL r = SITE(rgbz_site, RS)(v, p, floor_, rel, edge_ratio, exp_mode);
+                if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
+                if (r > maxval) r = maxval;
 #if IN_IS_INT
-            dst[y * cols + x] = (IN_T)(r + (REAL)0.5);
+                dst[y * cols + x] = (IN_T)(r + (REAL)0.5);
 #else
-            dst[y * cols + x] = (IN_T)r;
+                dst[y * cols + x] = (IN_T)r;
 #endif
+            }
         }
         if (fast_row) {
 #ifdef RGBZ_COUNT_OPS
             rgbz_opc_cur_count = opcounts;
 #endif
-            LCAT(rgbz_mask1_rows, IS, RS)(src, dst, y, cols, zr, zc, &plans[0], prm, 2, cols - 2);
+            if (sg_pure)
+                LCAT(rgbz_mask1_sg_rows, IS, RS)(src, dst, y, cols, zc, prm, 2, cols - 2);
+            else
+                LCAT(rgbz_mask1_rows, IS, RS)(src, dst, y, cols, zr, zc, &plans[0], prm, 2, cols - 2);
         }
     }
     return RGBZ_OK;

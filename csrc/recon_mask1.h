@@ -134,6 +134,123 @@ static int M1CAT(rgbz_mask1_rows, IS, RS)(const IN_T *restrict src, IN_T *restri
     return RGBZ_OK;
 }
 
+/*
+ * SG on Mask1 (the paper's method, eqs. 14-19, sg_mode "pure"), written for the
+ * vector units: the sites of a row are processed in blocks of M1_BLOCK, one
+ * branch-free loop per step (gather + semi-gradients + eq. 7's arguments; the
+ * exponentials; weights + eq. 5), so that the compiler vectorises each loop
+ * (the stride-2 loads become shuffles). The operations and their order per site
+ * are those of rgbz_mask1_rows above (the opcount build counts the same), so
+ * the results are the same to the last bit up to the compiler's vector/scalar
+ * code generation (no FMA contraction in ISO C mode).
+ */
+#ifndef M1_BLOCK
+#define M1_BLOCK 128
+#endif
+RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
+                                               ptrdiff_t y, ptrdiff_t cols, int zcol_phase,
+                                               const rgbz_params *prm, ptrdiff_t x0, ptrdiff_t x1)
+{
+    const REAL floor_ = (REAL)prm->sigma_floor;
+    const REAL rel = (REAL)prm->sigma_rel;
+    const REAL maxval = (REAL)prm->maxval;
+    const int fast_exp = prm->exp_mode == RGBZ_EXP_FAST;
+    const ptrdiff_t S = cols;
+    const ptrdiff_t xs = x0 + ((x0 & 1) != zcol_phase);
+    const ptrdiff_t n_all = xs < x1 ? (x1 - xs + 1) / 2 : 0;
+    const IN_T *restrict rm2 = src + (y - 2) * S, *restrict rm1 = src + (y - 1) * S;
+    const IN_T *restrict r00 = src + y * S;
+    const IN_T *restrict rp1 = src + (y + 1) * S, *restrict rp2 = src + (y + 2) * S;
+    REAL arg[8][M1_BLOCK];
+    REAL cand[4][M1_BLOCK];
+    IN_T res[M1_BLOCK];
+    const REAL half = (REAL)0.5;
+
+    for (ptrdiff_t b0 = 0; b0 < n_all; b0 += M1_BLOCK) {
+        const int n = (int)(n_all - b0 < M1_BLOCK ? n_all - b0 : M1_BLOCK);
+        const ptrdiff_t xb = xs + 2 * b0;
+        /* 1: gather, semi-gradients (eqs. 14-18), sigma and the arguments of eq. 7 */
+        for (int k = 0; k < n; k++) {
+            const ptrdiff_t x = xb + 2 * k;
+            const REAL a_m2m1 = (REAL)rm2[x - 1], a_m2p1 = (REAL)rm2[x + 1];
+            const REAL a_m1m2 = (REAL)rm1[x - 2], a_m1m1 = (REAL)rm1[x - 1], a_m10 = (REAL)rm1[x];
+            const REAL a_m1p1 = (REAL)rm1[x + 1], a_m1p2 = (REAL)rm1[x + 2];
+            const REAL a_0m1 = (REAL)r00[x - 1], a_0p1 = (REAL)r00[x + 1];
+            const REAL a_p1m2 = (REAL)rp1[x - 2], a_p1m1 = (REAL)rp1[x - 1], a_p10 = (REAL)rp1[x];
+            const REAL a_p1p1 = (REAL)rp1[x + 1], a_p1p2 = (REAL)rp1[x + 2];
+            const REAL a_p2m1 = (REAL)rp2[x - 1], a_p2p1 = (REAL)rp2[x + 1];
+            const REAL dv2 = RABSDIFF(a_0m1, a_m2m1), dv3 = RABSDIFF(a_0m1, a_p2m1);
+            const REAL dv6 = RABSDIFF(a_0p1, a_m2p1), dv7 = RABSDIFF(a_0p1, a_p2p1);
+            const REAL dh2 = RABSDIFF(a_m10, a_m1m2), dh3 = RABSDIFF(a_m10, a_m1p2);
+            const REAL dh6 = RABSDIFF(a_p10, a_p1m2), dh7 = RABSDIFF(a_p10, a_p1p2);
+            REAL g[8];
+            g[0] = OMUL(OADD(dv2, dv6), half);   /* N */
+            g[1] = OMUL(OADD(dv3, dv7), half);   /* S */
+            g[2] = OMUL(OADD(dh2, dh6), half);   /* W */
+            g[3] = OMUL(OADD(dh3, dh7), half);   /* E */
+            g[4] = OMUL(OADD(dv2, dh2), half);   /* NW */
+            g[5] = OMUL(OADD(dv6, dh3), half);   /* NE */
+            g[6] = OMUL(OADD(dv3, dh6), half);   /* SW */
+            g[7] = OMUL(OADD(dv7, dh7), half);   /* SE */
+            /* eq. 7: sigma = max(min SG, floor, rel * mean SG) -- as rgbz_gammas4 */
+            REAL gmin = g[0], gsum = g[0];
+            for (int j = 1; j < 8; j++) {
+                gmin = OCMP(g[j] < gmin) ? g[j] : gmin;
+                gsum = rel > (REAL)0 ? OADD(gsum, g[j]) : gsum;   /* counted only if used */
+            }
+            REAL sigma = OCMP(gmin > floor_) ? gmin : floor_;
+            if (rel > (REAL)0) {
+                const REAL rfloor = ODIV(OMUL(rel, gsum), (REAL)8);
+                sigma = OCMP(rfloor > sigma) ? rfloor : sigma;
+            }
+            const REAL inv = ODIV((REAL)1, OMUL((REAL)2, OMUL(sigma, sigma)));
+            for (int j = 0; j < 8; j++) arg[j][k] = -OMUL(OMUL(g[j], g[j]), inv);
+            cand[0][k] = a_m1m1;
+            cand[1][k] = a_m1p1;
+            cand[2][k] = a_p1m1;
+            cand[3][k] = a_p1p1;
+        }
+        /* 2: the eight exponentials of eq. 7 per site */
+        for (int j = 0; j < 8; j++) {
+            REAL *restrict a = arg[j];
+            if (fast_exp) {
+                for (int k = 0; k < n; k++) a[k] = REXP_FAST(a[k]);
+            } else {
+                for (int k = 0; k < n; k++) a[k] = REXP_LIBM(a[k]);
+            }
+        }
+#ifdef RGBZ_COUNT_OPS
+        for (int k = 0; k < 8 * n; k++) OPC_(RGBZ_OP_EXP);
+#endif
+        /* 3: weights (eq. 19) and the weighted mean (eq. 5) */
+        for (int k = 0; k < n; k++) {
+            const REAL c0 = cand[0][k], c1 = cand[1][k], c2 = cand[2][k], c3 = cand[3][k];
+            const REAL w0 = OADD(OADD(arg[0][k], arg[2][k]), arg[4][k]);   /* 19a: N + W + NW */
+            const REAL w1 = OADD(OADD(arg[0][k], arg[3][k]), arg[5][k]);   /* 19b: N + E + NE */
+            const REAL w2 = OADD(OADD(arg[1][k], arg[2][k]), arg[6][k]);   /* 19c: S + W + SW */
+            const REAL w3 = OADD(OADD(arg[1][k], arg[3][k]), arg[7][k]);   /* 19d: S + E + SE */
+            const REAL den = OADD(OADD(OADD(w0, w1), w2), w3);
+            REAL num = OMUL(w1, OSUB(c1, c0));
+            num = OADD(num, OMUL(w2, OSUB(c2, c0)));
+            num = OADD(num, OMUL(w3, OSUB(c3, c0)));
+            /* den >= exp(-1/2) for finite input (sigma >= the smallest SG); the mean
+               (rgbz_mean's formula, not counted: never taken) covers non-finite input */
+            const REAL mean = c0 + (((c1 - c0) + (c2 - c0)) + (c3 - c0)) / (REAL)4;
+            const REAL q = den > (REAL)0 ? den : (REAL)1;
+            REAL r = den > (REAL)0 ? OADD(c0, ODIV(num, q)) : mean;
+            r = r > (REAL)0 ? r : (REAL)0;    /* also maps a NaN to 0 */
+            r = r > maxval ? maxval : r;
+#if IN_IS_INT
+            res[k] = (IN_T)(r + (REAL)0.5);
+#else
+            res[k] = (IN_T)r;
+#endif
+        }
+        IN_T *restrict d = dst + y * S + xb;
+        for (int k = 0; k < n; k++) d[2 * k] = res[k];
+    }
+}
+
 #undef M1CAT
 #undef M1CAT3
 #undef M1G

@@ -73,4 +73,18 @@ static inline float rgbz_fast_exp_f(float x)
     return x > -87.0f ? p * scale : 0.0f;
 }
 
+/*
+ * Vector-width dispatch of the hottest loops: on x86-64 Linux with GCC, a
+ * function marked RGBZ_CLONES is compiled twice, for the baseline (SSE2) and
+ * for AVX2, and the loader picks the one the CPU runs (an ifunc). The AVX2
+ * clone has no FMA and the C99 build contracts nothing, so both clones give
+ * bit-identical results. The counting build and other compilers get one copy.
+ */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#define RGBZ_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define RGBZ_CLONES
+#endif
+
 #endif /* RGBZ_OPS_H */

@@ -36,9 +36,9 @@ def test_bench_quick_json(capsys, tmp_path, monkeypatch):
     assert res["machine"]["logical_cores"] >= 1 and res["machine"]["cpu_model"]
     labels = {(r["kernel"], r["method"], r["pattern"], r["precision"], r["exp"])
               for r in res["results"]}
+    assert ("reconstruct", "sg", "mask1", "float32", "auto") in labels     # the default
     assert ("reconstruct", "sg", "mask1", "float32", "libm") in labels
-    assert ("reconstruct", "sg", "mask1", "float32", "fast") in labels
-    assert ("reconstruct", "bilinear", "mask2", "float32", "libm") in labels
+    assert ("reconstruct", "bilinear", "mask2", "float32", "auto") in labels
     assert any(k[0] == "demosaic" for k in labels)
     assert {k[0] for k in labels} >= {"tof_demodulate", "tof_unwrap"}
     for r in res["results"]:
@@ -49,7 +49,7 @@ def test_bench_quick_json(capsys, tmp_path, monkeypatch):
         assert r["vs_numpy"] is None or _finite_positive(r["vs_numpy"])
     # the NumPy reference of the source checkout is found (this test runs from one)
     assert res["numpy_reference"]["available"]
-    sg = next(r for r in res["results"] if r["method"] == "sg" and r["exp"] == "libm")
+    sg = next(r for r in res["results"] if r["method"] == "sg" and r["exp"] == "auto")
     assert _finite_positive(sg["vs_numpy"])
     assert res["targets"]["target_mpix_s"] == 150.0
     assert res["memory"] is None

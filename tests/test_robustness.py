@@ -372,7 +372,7 @@ ROWS = [
       "sg_mode: expected one of 'auto', 'pure', 'combined'"),
     R("reconstruct.exp", "reconstruct(exp='approx')",
       lambda f: rz.reconstruct(_u16(), pattern="mask1", exp="approx"), ValueError,
-      "exp: expected one of 'libm', 'fast'"),
+      "exp: expected one of 'auto', 'libm', 'fast'"),
     R("reconstruct.domain", "reconstruct(domain='lab')",
       lambda f: rz.reconstruct(_u16(), pattern="mask1", domain="lab"), ValueError,
       "domain: expected one of 'colour_difference', 'intensity'"),

@@ -110,6 +110,12 @@ def _check_range(data, bit_depth, name, pattern=None):
     so a 50-megapixel frame costs no extra memory.
     """
     top = (1 << bit_depth) - 1
+    if data.size and data.flags.c_contiguous:
+        # one contiguous pass first (SIMD, no buffering); only a frame whose
+        # extremes are out of range -- perhaps only at Z sites -- needs the
+        # per-phase views below
+        if data.min() >= 0 and data.max() <= top:
+            return
     if pattern is None:
         views = [data]
     else:

@@ -164,11 +164,11 @@ def _cases(shape, ref_crop):
     ref = load_numpy_reference()
     cases = []
 
-    def recon_case(method, pat, prec, exp="libm"):
+    def recon_case(method, pat, prec, exp="auto"):
         def build():
             fr = frame(pat)
             ref_fn = None
-            if ref is not None and exp == "libm":
+            if ref is not None and exp == "auto":
                 crop = np.ascontiguousarray(fr.data[:cr[0], :cr[1]])
                 pattern = fr.pattern
 
@@ -176,7 +176,7 @@ def _cases(shape, ref_crop):
                     ref.reference_reconstruct(crop, pattern, method, bit_depth=fr.bit_depth)
             return (lambda w: rz.reconstruct(fr, method, precision=prec, workers=w, exp=exp),
                     ref_fn, cr[0] * cr[1])
-        name = f"reconstruct {method}" + ("" if exp == "libm" else " exp=fast")
+        name = f"reconstruct {method}" + ("" if exp == "auto" else f" exp={exp}")
         cases.append((name, dict(kernel="reconstruct", method=method, pattern=pat,
                                  precision=prec, exp=exp), build))
 
@@ -184,7 +184,7 @@ def _cases(shape, ref_crop):
         for method in RECON_METHODS:
             for prec in PRECISIONS:
                 recon_case(method, pat, prec)
-        recon_case("sg", pat, "float32", "fast")
+        recon_case("sg", pat, "float32", "libm")   # the default is exp="auto": fast in float32
     for prec in PRECISIONS:
         recon_case("edi_rows", "rows", prec)
 
@@ -395,7 +395,7 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         mem = measure_memory(frame_fn("mask1").data, "mask1", "sg", "float32", workers)
     sg = next((r for r in results if r["kernel"] == "reconstruct" and r["method"] == "sg"
                and r["pattern"] == "mask1" and r["precision"] == "float32"
-               and r["exp"] == "libm"), None)
+               and r["exp"] == "auto"), None)
     targets = {}
     if sg is not None:
         v = sg["threads"]["all"]["mpix_s"]
@@ -421,9 +421,9 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
 
 
 def _label(name, meta):
-    """The label --kernels matches: 'reconstruct sg mask1 float32 exp=libm', 'tof unwrap mask2
+    """The label --kernels matches: 'reconstruct sg mask1 float32 exp=auto', 'tof unwrap mask2
     float64', 'demosaic malvar2004 bayer float32'."""
-    base = name.replace(" exp=fast", "")
+    base = name.split(" exp=")[0]
     return f"{base} {meta['pattern']} {meta['precision']}" + (
         f" exp={meta['exp']}" if meta.get("exp") else "")
 

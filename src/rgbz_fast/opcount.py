@@ -39,7 +39,7 @@ from . import _kernels
 from ._benchutil import CliError, check_out_dir, common_parser, run_main, write_json
 from ._patterns import Z, get_pattern
 from ._plans import build_plans
-from ._reconstruct import EXP_MODES, PRECISIONS, reconstruct
+from ._reconstruct import EXP_MODES, PRECISIONS, _exp_mode, reconstruct
 
 __all__ = ["CATEGORIES", "TABLE1", "TABLE1_CATEGORIES", "count_operations", "opcount_table",
            "opcount_report", "count_tof_operations", "main"]
@@ -142,7 +142,7 @@ def _site_counts(data, pattern, method, precision, kw, ablate_beta=False, fast_p
     _kernels.reconstruct(data, dst, PRECISIONS[precision], rows, cols, full_map,
                          site_plans.view(np.uint8).reshape(-1), int(yy.size),
                          float(kw["sigma_floor"]), float(kw["sigma_rel"]), float(kw["edge_ratio"]),
-                         float((1 << kw["bit_depth"]) - 1), EXP_MODES[kw["exp"]], 1,
+                         float((1 << kw["bit_depth"]) - 1), EXP_MODES[_exp_mode(kw["exp"], precision)], 1,
                          opcounts=counts)
     counts = counts.reshape(yy.size, _kernels.NOPS)
     if fast_path and not ablate_beta and _uses_mask1_fast(pattern, method, kw):
@@ -194,7 +194,7 @@ def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
             _kernels.reconstruct(win, np.empty_like(win), PRECISIONS[precision], P, Q,
                                  phase_map, plans, n, float(kw["sigma_floor"]),
                                  float(kw["sigma_rel"]), float(kw["edge_ratio"]),
-                                 float((1 << kw["bit_depth"]) - 1), EXP_MODES[kw["exp"]], 1,
+                                 float((1 << kw["bit_depth"]) - 1), EXP_MODES[_exp_mode(kw["exp"], precision)], 1,
                                  opcounts=c, mask1_fast=fast)
             tot.append(c.reshape(n, -1).sum(axis=0).astype(np.int64))
         out[i] = tot[1] - tot[0]
