@@ -923,3 +923,44 @@ def test_mask1_geometry_detection():
     assert not has_mask1_geometry(rz.mask2())
     assert not has_mask1_geometry(rz.Pattern("GZ/BG"))     # Z stands in for red
     assert not has_mask1_geometry(rz.bayer())
+
+
+# -- out= ------------------------------------------------------------------------------------
+@pytest.mark.parametrize("pname", ["mask1", "mask2"])
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32])
+def test_out_buffer_is_reused_and_equals_a_new_result(pname, dtype):
+    p = rz.get_pattern(pname)
+    d = random_frame(p, (24, 32), seeded("out", pname, str(dtype)))
+    d = np.floor(d).astype(dtype)
+    expect = rz.reconstruct(d, "sg", pattern=p)
+    buf = np.full(d.shape, 7, dtype)
+    got = rz.reconstruct(d, "sg", pattern=p, out=buf)
+    assert got is buf
+    np.testing.assert_array_equal(buf, expect)
+    # a second frame into the same buffer: no trace of the first
+    d2 = d[::-1].copy()
+    np.testing.assert_array_equal(rz.reconstruct(d2, "sg", pattern=p, out=buf),
+                                  rz.reconstruct(d2, "sg", pattern=p))
+
+
+def test_out_rejected_and_left_untouched():
+    p = rz.get_pattern("mask1")
+    d = np.floor(random_frame(p, (8, 8), seeded("out-bad"))).astype(np.uint16)
+    cases = [(np.zeros((8, 9), np.uint16), ValueError, "out: expected shape"),
+             (np.zeros((8, 8), np.float32), ValueError, "out: expected shape"),
+             (np.zeros((8, 16), np.uint16)[:, ::2], ValueError, "out: expected a C-contiguous"),
+             ([[0] * 8] * 8, TypeError, "out: expected a numpy array"),
+             (d, ValueError, "out: overlaps")]
+    ro = np.zeros((8, 8), np.uint16)
+    ro.flags.writeable = False
+    cases.append((ro, ValueError, "out: expected a C-contiguous, writeable"))
+    for buf, exc, msg in cases:
+        before = np.array(buf, copy=True)
+        with pytest.raises(exc, match=msg):
+            rz.reconstruct(d, "sg", pattern=p, out=buf)
+        np.testing.assert_array_equal(np.asarray(buf), before)
+    # an error after the checks of out (a method that does not apply): out untouched
+    buf = np.full((8, 8), 3, np.uint16)
+    with pytest.raises(ValueError):
+        rz.reconstruct(d, "edi_rows", pattern=p, out=buf)
+    assert (buf == 3).all()
