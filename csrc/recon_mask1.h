@@ -68,10 +68,25 @@ static int M1CAT(rgbz_mask1_rows, IS, RS)(const IN_T *restrict src, IN_T *restri
                     h = OADD(h, RABSDIFF(P(0, -1), P(0, 1)));
                     h = OADD(h, RABSDIFF(P(1, -1), P(1, 1)));
                     h = OADD(h, RABSDIFF(P(2, -1), P(2, 1)));
+                    /* eq. 11 (NW-SE): mirror pairs across the anti-diagonal, (dy,dx)/(-dx,-dy);
+                       one green pair and six red/blue ("inter-channel") pairs */
+                    REAL d2 = OADD(RABSDIFF(P(-1, 2), P(-2, 1)), RABSDIFF(P(0, 1), P(-1, 0)));
+                    d2 = OADD(d2, RABSDIFF(P(1, 0), P(0, -1)));
+                    d2 = OADD(d2, RABSDIFF(P(1, 1), P(-1, -1)));
+                    d2 = OADD(d2, RABSDIFF(P(1, 2), P(-2, -1)));
+                    d2 = OADD(d2, RABSDIFF(P(2, -1), P(1, -2)));
+                    d2 = OADD(d2, RABSDIFF(P(2, 1), P(-1, -2)));
+                    /* eq. 10 (NE-SW): mirror pairs across the main diagonal, (dy,dx)/(dx,dy) */
+                    REAL d3 = OADD(RABSDIFF(P(-1, -2), P(-2, -1)), RABSDIFF(P(0, -1), P(-1, 0)));
+                    d3 = OADD(d3, RABSDIFF(P(1, -2), P(-2, 1)));
+                    d3 = OADD(d3, RABSDIFF(P(1, -1), P(-1, 1)));
+                    d3 = OADD(d3, RABSDIFF(P(1, 0), P(0, 1)));
+                    d3 = OADD(d3, RABSDIFF(P(2, -1), P(-1, 2)));
+                    d3 = OADD(d3, RABSDIFF(P(2, 1), P(1, 2)));
                     G[0] = OMUL(v, (REAL)(1.0 / 7.0));
                     G[1] = OMUL(h, (REAL)(1.0 / 7.0));
-                    G[2] = OMUL(RABSDIFF(P(1, 1), P(-1, -1)), (REAL)1);   /* eqs. 10-11: the */
-                    G[3] = OMUL(RABSDIFF(P(1, -1), P(-1, 1)), (REAL)1);   /* green pairs only */
+                    G[2] = OMUL(d2, (REAL)(1.0 / 7.0));
+                    G[3] = OMUL(d3, (REAL)(1.0 / 7.0));
                 }
                 REAL gam[4];
                 M1G(rgbz_gammas4, RS)(G, 4, floor_, rel, exp_mode, gam);

@@ -89,16 +89,22 @@ ORI = orientation(DY, DX)                       # orientation of each kernel pos
 ALPHA = np.exp(-(DY ** 2 + DX ** 2) / 2.0)      # eq. 3, sigma = 1
 
 
-def pair_differences(vals, codes, pairs):
+def pair_differences(vals, codes, pairs, cross=None):
     """|I(a) - I(b)| for each (a, b) in pairs and whether it is valid.
 
     A difference is valid only if neither pixel is Z and both have the same
-    channel (a difference touching a Z pixel or linking two colours is skipped).
+    channel (a difference touching a Z pixel or linking two colours is skipped),
+    except for the pairs flagged in ``cross`` (bool per pair), where two
+    different colours are allowed (EDILine's diagonal gradients, eqs. 10-11:
+    "inter-channel differences").
     """
     a = np.array([p[0] for p in pairs])
     b = np.array([p[1] for p in pairs])
     ca, cb = codes[:, a], codes[:, b]
-    valid = (ca != Z) & (cb != Z) & (ca == cb)
+    same = ca == cb
+    if cross is not None:
+        same = same | np.asarray(cross, bool)[None, :]
+    valid = (ca != Z) & (cb != Z) & same
     d = np.abs(vals[:, a] - vals[:, b])
     return np.where(valid, d, 0.0), valid
 
@@ -220,6 +226,9 @@ EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS = _edi_central_groups()
 EDI_LINE_PAIRS, EDI_LINE_GROUPS = _edi_line_groups()
 assert [len(g) for g in EDI_CENTRAL_GROUPS] == [2, 2, 4, 4]
 assert [len(g) for g in EDI_LINE_GROUPS] == [10, 10, 10, 10]
+# eqs. 10-11 use every colour pixel: the diagonal groups' pairs may link two colours
+EDI_LINE_CROSS = np.zeros(len(EDI_LINE_PAIRS), bool)
+EDI_LINE_CROSS[EDI_LINE_GROUPS[2] + EDI_LINE_GROUPS[3]] = True
 
 
 def _sg_definitions():
@@ -277,8 +286,8 @@ for _k in range(25):
 
 # -- the methods on gathered windows --------------------------------------------------
 
-def _edi_gamma(vals, codes, pairs, groups, sigma_floor, sigma_rel):
-    d, v = pair_differences(vals, codes, pairs)
+def _edi_gamma(vals, codes, pairs, groups, sigma_floor, sigma_rel, cross=None):
+    d, v = pair_differences(vals, codes, pairs, cross)
     G_, ok = group_means(d, v, groups)
     return discriminate(G_, ok, sigma_floor, sigma_rel)      # (n, 4), indexed by orientation
 
@@ -359,7 +368,8 @@ def _reconstruct_5x5_weights(vals, codes, target, method, sigma_floor, sigma_rel
         gam = _edi_gamma(vals, codes, EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS, sigma_floor,
                          sigma_rel)
         return alpha * beta * _gamma_at_candidates(gam)                     # eq. 6
-    gam_line = _edi_gamma(vals, codes, EDI_LINE_PAIRS, EDI_LINE_GROUPS, sigma_floor, sigma_rel)
+    gam_line = _edi_gamma(vals, codes, EDI_LINE_PAIRS, EDI_LINE_GROUPS, sigma_floor, sigma_rel,
+                          EDI_LINE_CROSS)
     w_line = alpha * beta * _gamma_at_candidates(gam_line)
     if method == "edi_line":
         return w_line

@@ -465,15 +465,21 @@ def compare_int(out, data, pattern, method, precision, bit_depth, rare=True, **k
         ys, xs = np.nonzero(bad)
         raise AssertionError(f"{bad.sum()} sites off by one away from a .5 tie, e.g. "
                              f"({ys[0]}, {xs[0]}): C {out[ys[0], xs[0]]} ref {ref[ys[0], xs[0]]!r}")
-    nz = pattern.z_mask(data.shape).sum()
     n_mis = int(((diff != 0) & nonfragile).sum())
     if rare:
         # float64: only exact ties flip. float32: eq. 7's argument G^2 / 2 sigma^2 (up to
         # ~100 before exp underflows) carries a relative error of ~1e-7 * itself, so the
         # weights are good to ~1e-5 and results to ~0.01-0.02 DN: ~1 % of the rounded
-        # values of random data flip (measured 0-1.1 % per method, Mask1 edi_line worst)
+        # values of random data flip (measured 0-1.1 % per method, Mask1 edi_line worst).
+        # Counted on the interior: within two pixels of the border the period-shifted
+        # extension repeats pixels inside one window, which makes weights pairwise equal
+        # and exact .5 ties common (measured: 4 border ties of 288 sites, EDILine ZR/BG).
+        inner = np.zeros(data.shape, bool)
+        inner[2:-2, 2:-2] = True
+        nz = (pattern.z_mask(data.shape) & inner).sum()
+        n_in = int(((diff != 0) & nonfragile & inner).sum())
         limit = 0.01 if precision == "float64" else 0.05
-        assert n_mis <= limit * nz + 1, (n_mis, nz)
+        assert n_in <= limit * nz + 1, (n_in, nz)
     return n_mis
 
 

@@ -263,12 +263,18 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
                         groups.update({_GRAD + o: p for o, p in line_pairs().items()})
                         plan["use_ab"], plan["use_grad"] = 1, 1
 
-                # keep only same-channel, non-Z differences; merge repeated pairs
+                # keep only non-Z differences, of the same channel except in EDILine's
+                # diagonal gradients: eqs. 10-11 take every colour pixel, and their mirror
+                # pairs across a diagonal of a Bayer mosaic link red with blue ("inter-channel
+                # differences", section 4.2.2); merge repeated pairs
+                cross_ok = ({_GRAD + 2, _GRAD + 3} if method == "edi_line" or
+                            (method == "sg" and plan["use_grad"]) else set())
                 pair_mask: dict[tuple, int] = {}
                 counts = np.zeros(NGROUPS, int)
                 for g, pairs in groups.items():
                     for a, b in pairs:
-                        if same(a, b):
+                        if same(a, b) or (g in cross_ok and ch(r, c, *a) != Z
+                                          and ch(r, c, *b) != Z):
                             key = (a, b)
                             pair_mask[key] = pair_mask.get(key, 0) | (1 << g)
                             counts[g] += 1
