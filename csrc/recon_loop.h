@@ -28,6 +28,9 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
         for (int i = 0; i < 4; i++)
             if (phase_map[i] >= 0) { zr = i / 2; zc = i % 2; }
     const int fast = zr >= 0;
+    const int ab_method = fast && (plans[0].method == RGBZ_M_BI ||
+                                   plans[0].method == RGBZ_M_EDI_CENTRAL ||
+                                   plans[0].method == RGBZ_M_EDI_LINE);
     const int sg_pure = fast && plans[0].method == RGBZ_M_SG && !(plans[0].use_grad && plans[0].use_sg);
 #ifdef _OPENMP
     int nth = prm->workers > 0 ? prm->workers : omp_get_max_threads();
@@ -75,6 +78,8 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
 #endif
             if (sg_pure)
                 LCAT(rgbz_mask1_sg_rows, IS, RS)(src, dst, y, cols, zc, prm, 2, cols - 2);
+            else if (ab_method)
+                LCAT(rgbz_mask1_ab_rows, IS, RS)(src, dst, y, cols, zc, &plans[0], prm, 2, cols - 2);
             else
                 LCAT(rgbz_mask1_rows, IS, RS)(src, dst, y, cols, zr, zc, &plans[0], prm, 2, cols - 2);
         }

@@ -266,6 +266,151 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
     }
 }
 
+/*
+ * BI, EDICentral and EDILine on Mask1 (eqs. 2-13), in the same block form as
+ * rgbz_mask1_sg_rows: (1) the four gradients, sigma and eq. 7's arguments,
+ * (2) the exponentials, (3) alpha * beta * gamma and the weighted mean. The
+ * operations per site are those of rgbz_mask1_rows (same counts, same order).
+ */
+RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict src,
+                                                           IN_T *restrict dst, ptrdiff_t y,
+                                                           ptrdiff_t cols, int zcol_phase,
+                                                           const rgbz_plan *p,
+                                                           const rgbz_params *prm, ptrdiff_t x0,
+                                                           ptrdiff_t x1)
+{
+    const REAL floor_ = (REAL)prm->sigma_floor;
+    const REAL rel = (REAL)prm->sigma_rel;
+    const REAL maxval = (REAL)prm->maxval;
+    const int fast_exp = prm->exp_mode == RGBZ_EXP_FAST;
+    const int method = p->method;
+    const REAL alpha = (REAL)p->cand_alpha[0];        /* all four candidates: exp(-1) */
+    const ptrdiff_t S = cols;
+    const ptrdiff_t xs = x0 + ((x0 & 1) != zcol_phase);
+    const ptrdiff_t n_all = xs < x1 ? (x1 - xs + 1) / 2 : 0;
+    const IN_T *restrict rm2 = src + (y - 2) * S, *restrict rm1 = src + (y - 1) * S;
+    const IN_T *restrict r00 = src + y * S;
+    const IN_T *restrict rp1 = src + (y + 1) * S, *restrict rp2 = src + (y + 2) * S;
+    REAL arg[4][M1_BLOCK];
+    IN_T res[M1_BLOCK];
+
+    for (ptrdiff_t b0 = 0; b0 < n_all; b0 += M1_BLOCK) {
+        const int n = (int)(n_all - b0 < M1_BLOCK ? n_all - b0 : M1_BLOCK);
+        const ptrdiff_t xb = xs + 2 * b0;
+        if (method != RGBZ_M_BI) {
+            /* 1: the gradients of eqs. 6 (central) or 8-11 (axes), sigma, eq. 7's arguments */
+            for (int k = 0; k < n; k++) {
+                const ptrdiff_t x = xb + 2 * k;
+#define Q(dy, dx) ((REAL)((dy) == -2 ? rm2 : (dy) == -1 ? rm1 : (dy) == 0 ? r00 : (dy) == 1 ? rp1 : rp2)[x + (dx)])
+                REAL G[4];
+                if (method == RGBZ_M_EDI_CENTRAL) {
+                    G[0] = OMUL(RABSDIFF(Q(1, 0), Q(-1, 0)), (REAL)1);
+                    G[1] = OMUL(RABSDIFF(Q(0, 1), Q(0, -1)), (REAL)1);
+                    G[2] = OMUL(OADD(OADD(RABSDIFF(Q(1, 1), Q(-1, -1)), RABSDIFF(Q(2, 1), Q(-2, -1))),
+                                     RABSDIFF(Q(1, 2), Q(-1, -2))), (REAL)(1.0 / 3.0));
+                    G[3] = OMUL(OADD(OADD(RABSDIFF(Q(1, -1), Q(-1, 1)), RABSDIFF(Q(2, -1), Q(-2, 1))),
+                                     RABSDIFF(Q(1, -2), Q(-1, 2))), (REAL)(1.0 / 3.0));
+                } else {
+                    REAL v = OADD(RABSDIFF(Q(-2, -1), Q(2, -1)), RABSDIFF(Q(-2, 1), Q(2, 1)));
+                    v = OADD(v, RABSDIFF(Q(-1, -2), Q(1, -2)));
+                    v = OADD(v, RABSDIFF(Q(-1, -1), Q(1, -1)));
+                    v = OADD(v, RABSDIFF(Q(-1, 0), Q(1, 0)));
+                    v = OADD(v, RABSDIFF(Q(-1, 1), Q(1, 1)));
+                    v = OADD(v, RABSDIFF(Q(-1, 2), Q(1, 2)));
+                    REAL h = OADD(RABSDIFF(Q(-1, -2), Q(-1, 2)), RABSDIFF(Q(1, -2), Q(1, 2)));
+                    h = OADD(h, RABSDIFF(Q(-2, -1), Q(-2, 1)));
+                    h = OADD(h, RABSDIFF(Q(-1, -1), Q(-1, 1)));
+                    h = OADD(h, RABSDIFF(Q(0, -1), Q(0, 1)));
+                    h = OADD(h, RABSDIFF(Q(1, -1), Q(1, 1)));
+                    h = OADD(h, RABSDIFF(Q(2, -1), Q(2, 1)));
+                    REAL d2 = OADD(RABSDIFF(Q(-1, 2), Q(-2, 1)), RABSDIFF(Q(0, 1), Q(-1, 0)));
+                    d2 = OADD(d2, RABSDIFF(Q(1, 0), Q(0, -1)));
+                    d2 = OADD(d2, RABSDIFF(Q(1, 1), Q(-1, -1)));
+                    d2 = OADD(d2, RABSDIFF(Q(1, 2), Q(-2, -1)));
+                    d2 = OADD(d2, RABSDIFF(Q(2, -1), Q(1, -2)));
+                    d2 = OADD(d2, RABSDIFF(Q(2, 1), Q(-1, -2)));
+                    REAL d3 = OADD(RABSDIFF(Q(-1, -2), Q(-2, -1)), RABSDIFF(Q(0, -1), Q(-1, 0)));
+                    d3 = OADD(d3, RABSDIFF(Q(1, -2), Q(-2, 1)));
+                    d3 = OADD(d3, RABSDIFF(Q(1, -1), Q(-1, 1)));
+                    d3 = OADD(d3, RABSDIFF(Q(1, 0), Q(0, 1)));
+                    d3 = OADD(d3, RABSDIFF(Q(2, -1), Q(-1, 2)));
+                    d3 = OADD(d3, RABSDIFF(Q(2, 1), Q(1, 2)));
+                    G[0] = OMUL(v, (REAL)(1.0 / 7.0));
+                    G[1] = OMUL(h, (REAL)(1.0 / 7.0));
+                    G[2] = OMUL(d2, (REAL)(1.0 / 7.0));
+                    G[3] = OMUL(d3, (REAL)(1.0 / 7.0));
+                }
+#undef Q
+                REAL gmin = G[0], gsum = G[0];
+                for (int j = 1; j < 4; j++) {
+                    gmin = OCMP(G[j] < gmin) ? G[j] : gmin;
+                    gsum = rel > (REAL)0 ? OADD(gsum, G[j]) : gsum;
+                }
+                REAL sigma = OCMP(gmin > floor_) ? gmin : floor_;
+                if (rel > (REAL)0) {
+                    const REAL rfloor = ODIV(OMUL(rel, gsum), (REAL)4);
+                    sigma = OCMP(rfloor > sigma) ? rfloor : sigma;
+                }
+                const REAL inv = ODIV((REAL)1, OMUL((REAL)2, OMUL(sigma, sigma)));
+                /* only the diagonal gammas weigh a Mask1 candidate; the axis ones set sigma */
+                arg[0][k] = (REAL)0;
+                arg[1][k] = (REAL)0;
+                arg[2][k] = -OMUL(OMUL(G[2], G[2]), inv);
+                arg[3][k] = -OMUL(OMUL(G[3], G[3]), inv);
+            }
+            /* 2: the exponentials (only the two diagonal ones are used) */
+            for (int j = 2; j < 4; j++) {
+                REAL *restrict a = arg[j];
+                if (fast_exp) {
+                    for (int k = 0; k < n; k++) a[k] = REXP_FAST(a[k]);
+                } else {
+                    for (int k = 0; k < n; k++) a[k] = REXP_LIBM(a[k]);
+                }
+            }
+#ifdef RGBZ_COUNT_OPS
+            for (int k = 0; k < 2 * n; k++) OPC_(RGBZ_OP_EXP);
+#endif
+        }
+        /* 3: alpha * beta (eqs. 2-4) times gamma (eq. 6), weighted mean (eqs. 12-13) */
+        for (int k = 0; k < n; k++) {
+            const ptrdiff_t x = xb + 2 * k;
+            const REAL c0 = (REAL)rm1[x - 1], c1 = (REAL)rm1[x + 1];
+            const REAL c2 = (REAL)rp1[x - 1], c3 = (REAL)rp1[x + 1];
+            const REAL d01 = RABSDIFF(c0, c1), d02 = RABSDIFF(c0, c2);
+            const REAL d03 = RABSDIFF(c0, c3), d12 = RABSDIFF(c1, c2);
+            const REAL d13 = RABSDIFF(c1, c3), d23 = RABSDIFF(c2, c3);
+            REAL w0 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d01), d02), d03));
+            REAL w1 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d01), d12), d13));
+            REAL w2 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d02), d12), d23));
+            REAL w3 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d03), d13), d23));
+            if (method != RGBZ_M_BI) {
+                const REAL g2 = arg[2][k], g3 = arg[3][k];
+                w0 = OMUL(w0, g2);     /* (-1,-1): NW-SE */
+                w1 = OMUL(w1, g3);     /* (-1, 1): NE-SW */
+                w2 = OMUL(w2, g3);
+                w3 = OMUL(w3, g2);
+            }
+            const REAL den = OADD(OADD(OADD(w0, w1), w2), w3);
+            REAL num = OMUL(w1, OSUB(c1, c0));
+            num = OADD(num, OMUL(w2, OSUB(c2, c0)));
+            num = OADD(num, OMUL(w3, OSUB(c3, c0)));
+            /* the plain mean (rgbz_mean's formula, not counted) when every weight underflows */
+            const REAL mean = c0 + (((c1 - c0) + (c2 - c0)) + (c3 - c0)) / (REAL)4;
+            const REAL q = den > (REAL)0 ? den : (REAL)1;
+            REAL r = den > (REAL)0 ? OADD(c0, ODIV(num, q)) : mean;
+            r = r > (REAL)0 ? r : (REAL)0;
+            r = r > maxval ? maxval : r;
+#if IN_IS_INT
+            res[k] = (IN_T)(r + (REAL)0.5);
+#else
+            res[k] = (IN_T)r;
+#endif
+        }
+        IN_T *restrict d = dst + y * S + xb;
+        for (int k = 0; k < n; k++) d[2 * k] = res[k];
+    }
+}
+
 #undef M1CAT
 #undef M1CAT3
 #undef M1G
