@@ -6,7 +6,8 @@ Here: C against the reference on random frames with random clipped regions
 (every pattern and method where it applies, float and integer frames, both
 domains); ``clip_level=None`` and a level above the data are bit-identical to
 the call without it; saturated areas stay saturated; the openISP frame of
-../shared/data/raw (skipped when absent); "auto" and frame_clip_level.
+../shared/data/raw (skipped when absent); "auto", frame_clip_level, evaluate
+and the CLI.
 """
 
 from __future__ import annotations
@@ -334,3 +335,84 @@ def test_kernel_rejects_clip_with_the_mask1_fast_path():
     with pytest.raises(RuntimeError, match="status 1"):
         _kernels.reconstruct(d, np.empty_like(d), 1, 2, 2, phase_map, plans, n, 1e-3, 0.5, 0.5,
                              2047.0, 0, 1, mask1_fast=1, clip_level=100.0)
+
+
+# -- evaluate and the CLI -----------------------------------------------------------------------
+
+def test_eval_config_clip_level():
+    from rgbz_fast.evaluate import EvalConfig
+
+    c = EvalConfig()
+    assert c.clip_level == "auto"
+    assert EvalConfig(clip_level=None).clip_level is None
+    assert EvalConfig(clip_level=2000).clip_level == 2000.0
+    for bad, exc in (("high", ValueError), (np.nan, ValueError), (-3, ValueError),
+                     (True, TypeError)):
+        with pytest.raises(exc, match="clip_level"):
+            EvalConfig(clip_level=bad)
+    # "auto" leaves the cache keys of RGB sources as they were; raw sources key on it
+    assert c.key("mask1", "sg") == EvalConfig(reconstruct_options=()).key("mask1", "sg")
+    assert c.key("mask1", "sg", raw=True) != c.key("mask1", "sg")
+    assert EvalConfig(clip_level=None).key("mask1", "sg") != c.key("mask1", "sg")
+    assert c.reconstruct_kwargs() == {"clip_level": "auto"}
+    assert EvalConfig(reconstruct_options=(("clip_level", 5),)).reconstruct_kwargs() == \
+        {"clip_level": 5}
+
+
+def _raw_file(tmp_path):
+    rng = np.random.default_rng(7)
+    raw = rng.integers(100, 900, (64, 64)).astype("<u2")
+    raw[10:30, 20:44] = 1020
+    raw[40:50, 5:9] = 1020
+    folder = tmp_path / "raw"
+    folder.mkdir()
+    raw.tofile(folder / "chart.raw")
+    return folder
+
+
+def test_evaluate_raw_source_passes_the_level(tmp_path, monkeypatch):
+    import rgbz_fast.evaluate as ev
+
+    folder = _raw_file(tmp_path)
+    opts = {"*": dict(shape=[64, 64], phase="RGGB", black_level=0, bit_depth_in=10,
+                      clip_level=1020)}
+    ds = ev.folder_dataset(folder, raw_options=opts)
+    seen = []
+    real = ev.reconstruct
+    monkeypatch.setattr(ev, "reconstruct",
+                        lambda f, m, **k: seen.append(R._clip_level(k.get("clip_level"), f))
+                        or real(f, m, **k))
+    kw = dict(workers=1, progress=False, metrics=("cfa_psnr",), methods=("edi_line",),
+              patterns=("mask1",))
+    on = ev.evaluate(ds, **kw).values("mask1", "edi_line", "cfa_psnr")
+    off = ev.evaluate(ds, clip_level=None, **kw).values("mask1", "edi_line", "cfa_psnr")
+    assert seen == [2041.0, None]
+    assert on[0] != off[0]
+
+
+def test_cli_clip_level(tmp_path, capsys):
+    import tifffile
+
+    from rgbz_fast import frameio
+    from rgbz_fast.cli import main
+
+    folder = _raw_file(tmp_path)
+    f = read_raw(folder / "chart.raw", shape=(64, 64), phase="RGGB", black_level=0,
+                 bit_depth_in=10, clip_level=1020)
+    rgbz, _ = to_rgbz(f, "mask1")
+    src = frameio.save_frame(tmp_path / "chart.npz", rgbz)
+    outs = {}
+    for flag in ("auto", "off", "2041"):
+        out = tmp_path / flag
+        assert main(["reconstruct", str(src), "--method", "edi_line", "--out", str(out),
+                     "--clip-level", flag, "--quiet"]) == 0
+        outs[flag] = tifffile.imread(out / "chart_edi_line_cfa.tif")
+    np.testing.assert_array_equal(outs["auto"], rz.reconstruct(rgbz, "edi_line",
+                                                               clip_level=2041.0))
+    np.testing.assert_array_equal(outs["auto"], outs["2041"])
+    np.testing.assert_array_equal(outs["off"], rz.reconstruct(rgbz, "edi_line"))
+    assert not np.array_equal(outs["auto"], outs["off"])
+    with pytest.raises(SystemExit) as e:
+        main(["reconstruct", str(src), "--clip-level", "nan"])
+    assert e.value.code == 2
+    assert "clip-level" in capsys.readouterr().err
