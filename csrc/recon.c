@@ -266,6 +266,9 @@ int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void
             p->method > RGBZ_M_SG)
             return RGBZ_EINVAL;
     }
+    /* clipping is handled by the plan interpreter only (recon_site.h) */
+    if (prm->clip_on && (prm->mask1_fast || !(prm->clip_level == prm->clip_level)))
+        return RGBZ_EINVAL;
 
     /* column map for x in [-rx, cols + rx): shared, read-only, O(cols) */
     ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 2 * rx) * sizeof(ptrdiff_t));

@@ -21,6 +21,8 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
     const REAL edge_ratio = (REAL)prm->edge_ratio;
     const REAL maxval = (REAL)prm->maxval;
     const int exp_mode = prm->exp_mode;
+    const int clip_on = prm->clip_on;
+    const double clip_level = prm->clip_level;
     (void)opcounts;
     /* the Mask1 fast path: interior rows and columns, constant offsets */
     int zr = -1, zc = -1;
@@ -60,16 +62,44 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
 #endif
                 REAL v[RGBZ_MAX_TAPS];
                 const ptrdiff_t *cm = colmap + x + rx;
-                for (int t = 0; t < p->n_taps; t++)
-                    v[t] = (REAL)rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
-                REAL r = SITE(rgbz_site, RS)(v, p, floor_, rel, edge_ratio, exp_mode);
+                IN_T raw[RGBZ_MAX_TAPS];
+                uint64_t clipped = 0;               /* bit t: tap t is clipped */
+                if (clip_on) {
+                    /* compared in double, exact for every input type and precision */
+                    for (int t = 0; t < p->n_taps; t++) {
+                        raw[t] = rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
+                        v[t] = (REAL)raw[t];
+                        if ((double)raw[t] >= clip_level) clipped |= (uint64_t)1 << t;
+                    }
+                } else {
+                    for (int t = 0; t < p->n_taps; t++)
+                        v[t] = (REAL)rowp[p->tap_dy[t] + ry][cm[p->tap_dx[t]]];
+                }
+                REAL r = clipped ? SITE(rgbz_site_clip, RS)(v, clipped, p, floor_, rel, edge_ratio,
+                                                            exp_mode)
+                                 : SITE(rgbz_site, RS)(v, p, floor_, rel, edge_ratio, exp_mode);
                 if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
                 if (r > maxval) r = maxval;
 #if IN_IS_INT
-                dst[y * cols + x] = (IN_T)(r + (REAL)0.5);
+                IN_T out = (IN_T)(r + (REAL)0.5);
 #else
-                dst[y * cols + x] = (IN_T)r;
+                IN_T out = (IN_T)r;
 #endif
+                if (clipped) {
+                    /* every candidate clipped (edi_rows: its ten taps): the output stays at or
+                       above the smallest of them, so saturation is kept exactly in IN_T */
+                    const int rows_m = p->method == RGBZ_M_EDI_ROWS;
+                    const int n = rows_m ? p->n_taps : p->n_cand;
+                    int all = 1;
+                    IN_T lo = 0;
+                    for (int k = 0; k < n && all; k++) {
+                        int t = rows_m ? k : p->cand_tap[k];
+                        all = (int)((clipped >> t) & 1u);
+                        if (!k || raw[t] < lo) lo = raw[t];
+                    }
+                    if (all && out < lo) out = lo;
+                }
+                dst[y * cols + x] = out;
             }
         }
         if (fast_row) {

@@ -18,14 +18,16 @@
 #define RCAT(a, b) RCAT2(a, b)
 #define RFN(name) RCAT(name, RS)
 
-/* gamma factors (eq. 7) of the groups [g0, g1): sigma = max(min G, floor) */
-static inline void RFN(rgbz_gammas)(const REAL *G, const rgbz_plan *p, int g0, int g1,
-                                    REAL floor_, REAL rel, int exp_mode, REAL *gamma)
+/* gamma factors (eq. 7) of the groups [g0, g1) whose bit is set in `known`:
+   sigma = max(min G, floor, rel * mean G) over the known groups; an unknown group
+   gets 0; if no group of [g0, g1) is known, every gamma is 1 */
+static inline void RFN(rgbz_gammas_known)(const REAL *G, uint32_t known, int g0, int g1,
+                                          REAL floor_, REAL rel, int exp_mode, REAL *gamma)
 {
     REAL gmin = (REAL)0, gsum = (REAL)0;
     int any = 0;
     for (int g = g0; g < g1; g++) {
-        if (p->group_scale[g] <= 0.0) continue;
+        if (!((known >> g) & 1u)) continue;
         if (!any || OCMP(G[g] < gmin)) gmin = G[g];
         if (rel > (REAL)0) gsum = any ? OADD(gsum, G[g]) : G[g];
         any++;
@@ -42,11 +44,22 @@ static inline void RFN(rgbz_gammas)(const REAL *G, const rgbz_plan *p, int g0, i
     REAL two_s2 = OMUL((REAL)2, OMUL(sigma, sigma));
     REAL inv = ODIV((REAL)1, two_s2);
     for (int g = g0; g < g1; g++) {
-        if (p->group_scale[g] <= 0.0) { gamma[g] = (REAL)0; continue; }
+        if (!((known >> g) & 1u)) { gamma[g] = (REAL)0; continue; }
         REAL arg = -OMUL(OMUL(G[g], G[g]), inv);
         OPC_(RGBZ_OP_EXP);
         gamma[g] = exp_mode == RGBZ_EXP_FAST ? REXP_FAST(arg) : REXP_LIBM(arg);
     }
+}
+
+/* gamma factors of the groups [g0, g1) of a plan: a group is known when the plan gives
+   it differences (group_scale > 0) */
+static inline void RFN(rgbz_gammas)(const REAL *G, const rgbz_plan *p, int g0, int g1,
+                                    REAL floor_, REAL rel, int exp_mode, REAL *gamma)
+{
+    uint32_t known = 0;
+    for (int g = g0; g < g1; g++)
+        if (p->group_scale[g] > 0.0) known |= 1u << g;
+    RFN(rgbz_gammas_known)(G, known, g0, g1, floor_, rel, exp_mode, gamma);
 }
 
 /* gamma factors of n groups that all hold differences (the Mask1 fast path):
@@ -193,6 +206,161 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
         r = OADD(c[0], ODIV(num, den));
     }
     return p->use_cd ? OADD(base, r) : r;
+}
+
+
+/*
+ * The same site near clipping (docs/raw.md, "Near clipping"; docs/interpretation.md).
+ * `clipped` has bit t set when tap t holds a clipped (saturated) value: a lower bound of
+ * the truth, so it is used as a value but never as a measurement in a weight:
+ *   - a difference (gradient pair, semi-gradient pair, edi_rows direction, beta term)
+ *     touching a clipped pixel is skipped, like a difference touching a Z pixel, and a
+ *     group is the mean of the differences it has left; a group with none left is
+ *     unknown: left out of sigma and gamma = 0 (the rule for groups without valid
+ *     differences), every gamma 1 if no group of the family is known; the factors
+ *     built from the gammas (eq. 6 per orientation, eq. 19 per candidate) are unchanged,
+ *     so a candidate covered only by unknown semi-gradients gets 0;
+ *   - beta (eq. 4): a measured candidate (not clipped, with at least one non-clipped
+ *     partner) sums its differences to the non-clipped candidates, rescaled to the n - 1
+ *     terms of eq. 4; every other candidate takes the largest sum of the measured ones
+ *     (the smallest beta); if no candidate is measured every beta is 1;
+ *   - edi_rows: a direction touching a clipped pixel cannot be chosen; if the vertical
+ *     one (c) is clipped there is no edge test and the value is the vertical mean.
+ * Where no tap is clipped the loop calls rgbz_site, so clip_on changes nothing there.
+ * The loop keeps the output at or above the smallest candidate when every candidate is
+ * clipped (saturation preserved).
+ */
+static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rgbz_plan *p,
+                                       REAL floor_, REAL rel, REAL edge_ratio, int exp_mode)
+{
+#define RCLIPPED(t) ((clipped >> (t)) & 1u)
+    const int nc = p->n_cand;
+    REAL c[RGBZ_MAX_CAND];
+
+    if (p->method == RGBZ_M_EDI_ROWS) {
+        REAL D[5];
+        int known[5];
+        for (int i = 0; i < 5; i++) {
+            known[i] = !RCLIPPED(2 * i) && !RCLIPPED(2 * i + 1);
+            D[i] = known[i] ? RABSDIFF(v[2 * i], v[2 * i + 1]) : (REAL)0;
+        }
+        REAL vert = OMUL(OADD(v[4], v[5]), (REAL)0.5);
+        if (!known[2]) return vert;            /* the edge test is relative to c */
+        static const int order[5] = {2, 1, 3, 0, 4};
+        int m = 2;
+        for (int i = 1; i < 5; i++)
+            if (known[order[i]] && OCMP(D[order[i]] < D[m])) m = order[i];
+        if (m != 2 && OCMP(D[m] < OMUL((REAL)edge_ratio, D[2])))
+            return RFN(rgbz_median3)(v[2 * m], v[2 * m + 1], vert);
+        return vert;
+    }
+
+    for (int k = 0; k < nc; k++) c[k] = v[p->cand_tap[k]];
+
+    if (p->method == RGBZ_M_BILINEAR) return RFN(rgbz_mean)(c, nc);
+
+    /* gradient groups: mean absolute difference of their usable pairs */
+    REAL G[RGBZ_NGROUPS], gamma[RGBZ_NGROUPS];
+    uint32_t known = 0;
+    if (p->n_pairs > 0) {
+        int cnt[RGBZ_NGROUPS];
+        for (int g = 0; g < RGBZ_NGROUPS; g++) {
+            G[g] = (REAL)0;
+            cnt[g] = 0;
+        }
+        for (int i = 0; i < p->n_pairs; i++) {
+            if (RCLIPPED(p->pair_a[i]) || RCLIPPED(p->pair_b[i])) continue;
+            REAL d = RABSDIFF(v[p->pair_a[i]], v[p->pair_b[i]]);
+            int32_t m = p->pair_gmask[i];
+            while (m) {
+                int g = __builtin_ctz((unsigned)m);
+                G[g] = OADD(G[g], d);
+                cnt[g]++;
+                m &= m - 1;
+            }
+        }
+        for (int g = 0; g < RGBZ_NGROUPS; g++)
+            if (p->group_scale[g] > 0.0 && cnt[g] > 0) {
+                known |= 1u << g;
+                /* 1 / cnt as the plans store it: the unclipped value when cnt is complete */
+                G[g] = OMUL(G[g], (REAL)(1.0 / (double)cnt[g]));
+            }
+        if (p->use_sg) RFN(rgbz_gammas_known)(G, known, 0, 8, floor_, rel, exp_mode, gamma);
+        if (p->use_grad) RFN(rgbz_gammas_known)(G, known, 8, 12, floor_, rel, exp_mode, gamma);
+    }
+
+    /* intensity factor beta (eq. 4) from the non-clipped candidates only */
+    REAL S[RGBZ_MAX_CAND];
+    if (p->use_ab) {
+        int u[RGBZ_MAX_CAND];
+        for (int k = 0; k < nc; k++) {
+            S[k] = (REAL)1;
+            u[k] = 0;
+        }
+        for (int k = 0; k < nc; k++) {
+            if (RCLIPPED(p->cand_tap[k])) continue;
+            for (int m = k + 1; m < nc; m++) {
+                if (RCLIPPED(p->cand_tap[m])) continue;
+                REAL d = RABSDIFF(c[k], c[m]);
+                S[k] = OADD(S[k], d);
+                S[m] = OADD(S[m], d);
+                u[k]++;
+                u[m]++;
+            }
+        }
+        REAL smax = (REAL)1;
+        int measured = 0;
+        for (int k = 0; k < nc; k++) {
+            if (u[k] == 0) continue;           /* clipped, or no non-clipped partner */
+            if (u[k] < nc - 1)
+                S[k] = OADD((REAL)1, ODIV(OMUL(OSUB(S[k], (REAL)1), (REAL)(nc - 1)), (REAL)u[k]));
+            if (!measured || OCMP(S[k] > smax)) smax = S[k];
+            measured = 1;
+        }
+        for (int k = 0; k < nc; k++)
+            if (u[k] == 0) S[k] = smax;        /* 1 when no candidate is measured */
+    }
+
+    /* values interpolated: as rgbz_site (clipped values are used as values) */
+    REAL base = (REAL)0;
+    if (p->use_cd) {
+        for (int k = 0; k <= nc; k++) {
+            REAL x = OMUL((REAL)p->cd_w[k][0], v[p->cd_tap[k][0]]);
+            for (int m = 1; m < p->cd_n[k]; m++)
+                x = OADD(x, OMUL((REAL)p->cd_w[k][m], v[p->cd_tap[k][m]]));
+            if (k < nc) c[k] = OSUB(c[k], x);
+            else base = x;
+        }
+    }
+
+    REAL num = (REAL)0, den = (REAL)0;
+    for (int k = 0; k < nc; k++) {
+        REAL w;
+        if (p->use_ab) w = ODIV((REAL)p->cand_alpha[k], S[k]);
+        else w = (REAL)1;
+        if (p->use_grad) w = OMUL(w, gamma[8 + p->cand_ori[k]]);
+        if (p->use_sg) {
+            /* eq. 19 as in rgbz_site: an unknown semi-gradient enters with its gamma of 0 */
+            int32_t m = p->cand_sgmask[k];
+            REAL s = (REAL)0;
+            int first = 1;
+            while (m) {
+                int g = __builtin_ctz((unsigned)m);
+                s = first ? gamma[g] : OADD(s, gamma[g]);
+                first = 0;
+                m &= m - 1;
+            }
+            if (p->sg_scaled) s = OMUL(s, (REAL)p->cand_sgscale[k]);
+            w = (p->use_ab || p->use_grad) ? OMUL(w, s) : s;
+        }
+        den = k ? OADD(den, w) : w;
+        if (k) num = OADD(num, OMUL(w, OSUB(c[k], c[0])));
+    }
+    REAL r;
+    if (!(den > (REAL)0)) r = RFN(rgbz_mean)(c, nc);
+    else r = OADD(c[0], ODIV(num, den));
+    return p->use_cd ? OADD(base, r) : r;
+#undef RCLIPPED
 }
 
 #undef RFN

@@ -10,6 +10,12 @@ the 5x5 window (5x9 for ``edi_rows``) of values *and* channel codes, then
 evaluate the equations with boolean masks on ``(n_sites, 25)`` arrays.
 Arithmetic is float64. :func:`reference_reconstruct` returns the clipped but
 unrounded value of every pixel of the frame (colour sites copied).
+
+With ``clip_level`` the rules of docs/raw.md ("Near clipping") apply: a known
+pixel at or above the level is *clipped*; every difference touching one is
+skipped, the beta of a candidate that is not measured is the smallest measured
+one, and a site whose candidates are all clipped keeps at least the smallest of
+them. They are written here from that page, not from the C code.
 """
 
 from __future__ import annotations
@@ -67,6 +73,15 @@ def gather(data, chan, ys, xs, offsets, period):
     return data[yy, xx].astype(np.float64), chan[yy, xx]
 
 
+def gather_mask(mask, ys, xs, offsets, period):
+    """A bool frame gathered like :func:`gather`: (n_sites, len(offsets))."""
+    n_rows, n_cols = mask.shape
+    P, Q = period
+    yy = shift_index(ys[:, None] + offsets[None, :, 0], n_rows, P)
+    xx = shift_index(xs[:, None] + offsets[None, :, 1], n_cols, Q)
+    return mask[yy, xx]
+
+
 # -- common pieces --------------------------------------------------------------
 
 def orientation(dy, dx):
@@ -89,14 +104,15 @@ ORI = orientation(DY, DX)                       # orientation of each kernel pos
 ALPHA = np.exp(-(DY ** 2 + DX ** 2) / 2.0)      # eq. 3, sigma = 1
 
 
-def pair_differences(vals, codes, pairs, cross=None):
+def pair_differences(vals, codes, pairs, clip=None, cross=None):
     """|I(a) - I(b)| for each (a, b) in pairs and whether it is valid.
 
     A difference is valid only if neither pixel is Z and both have the same
     channel (a difference touching a Z pixel or linking two colours is skipped),
     except for the pairs flagged in ``cross`` (bool per pair), where two
     different colours are allowed (EDILine's diagonal gradients, eqs. 10-11:
-    "inter-channel differences").
+    "inter-channel differences"); and, given the (n, 25) bool array ``clip``,
+    neither pixel is clipped.
     """
     a = np.array([p[0] for p in pairs])
     b = np.array([p[1] for p in pairs])
@@ -105,6 +121,8 @@ def pair_differences(vals, codes, pairs, cross=None):
     if cross is not None:
         same = same | np.asarray(cross, bool)[None, :]
     valid = (ca != Z) & (cb != Z) & same
+    if clip is not None:
+        valid &= ~clip[:, a] & ~clip[:, b]
     d = np.abs(vals[:, a] - vals[:, b])
     return np.where(valid, d, 0.0), valid
 
@@ -144,12 +162,32 @@ def discriminate(G_, ok, sigma_floor, sigma_rel=0.0):
     return gam
 
 
-def intensity_factor(vals, cand):
-    """Eq. 4: beta_k = 1 / (1 + sum over all candidates m of |c_k - c_m|)."""
+def intensity_factor(vals, cand, clip=None):
+    """Eq. 4: beta_k = 1 / (1 + sum over all candidates m of |c_k - c_m|).
+
+    With ``clip`` (docs/raw.md, "Near clipping"): only the differences between two
+    non-clipped candidates are used. A candidate with u >= 1 of them (measured)
+    has S = 1 + (n - 1) / u * (their sum), n the number of candidates; every
+    other candidate (clipped, or the only non-clipped one) gets the largest S of
+    the measured candidates, or S = 1 if none is measured; beta = 1 / S.
+    """
     v = np.where(cand, vals, 0.0)
     d = np.abs(v[:, :, None] - v[:, None, :])
-    d = d * (cand[:, :, None] & cand[:, None, :])
-    return 1.0 / (1.0 + d.sum(axis=2))
+    if clip is None:
+        d = d * (cand[:, :, None] & cand[:, None, :])
+        return 1.0 / (1.0 + d.sum(axis=2))
+    good = cand & ~clip
+    use = good[:, :, None] & good[:, None, :]
+    u = use.sum(axis=2)                                # the diagonal term is 0 anyway
+    u = u - good                                       # minus the k = m pair
+    n = cand.sum(axis=1)[:, None]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        S = 1.0 + (d * use).sum(axis=2) * (n - 1) / u
+    measured = good & (u > 0)
+    smax = np.where(measured, S, -np.inf).max(axis=1)
+    fill = np.where(np.isfinite(smax), smax, 1.0)
+    S = np.where(measured, S, fill[:, None])
+    return 1.0 / S
 
 
 def plain_mean(vals, cand):
@@ -286,8 +324,8 @@ for _k in range(25):
 
 # -- the methods on gathered windows --------------------------------------------------
 
-def _edi_gamma(vals, codes, pairs, groups, sigma_floor, sigma_rel, cross=None):
-    d, v = pair_differences(vals, codes, pairs, cross)
+def _edi_gamma(vals, codes, pairs, groups, sigma_floor, sigma_rel, clip=None, cross=None):
+    d, v = pair_differences(vals, codes, pairs, clip, cross)
     G_, ok = group_means(d, v, groups)
     return discriminate(G_, ok, sigma_floor, sigma_rel)      # (n, 4), indexed by orientation
 
@@ -301,7 +339,7 @@ def _gamma_at_candidates(gam):
 
 
 def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all_valid",
-               sigma_rel=0.0):
+               sigma_rel=0.0, clip=None):
     """Per-position semi-gradient factor: mean of the discriminated SGs covering it (eq. 19).
 
     sg_invalid="exclude" (default): the mean runs over the *valid* covering SGs;
@@ -312,10 +350,18 @@ def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all
     the spec) or, with sg_uncovered="all_valid", the mean of every valid SG
     of the site (NOT in docs/interpretation.md; what rgbz_fast's plans do, kept
     only to pin down that disagreement in the tests).
+    With ``clip`` (docs/raw.md, "Near clipping"), an SG whose differences all touch
+    a clipped pixel is *unknown* at that site: like an SG without differences it is
+    left out of sigma and its g is 0 (all g are 1 if no SG is known), but it still
+    covers its positions (which SGs cover a position depends on the pattern only).
     """
-    d, v = pair_differences(vals, codes, SG_PAIRS)
-    SG, ok = group_means(d, v, SG_GROUPS)       # eq. 18, each SG the mean of its differences
-    g = discriminate(SG, ok, sigma_floor, sigma_rel)       # eq. 7
+    d, v = pair_differences(vals, codes, SG_PAIRS, clip)
+    SG, known = group_means(d, v, SG_GROUPS)    # eq. 18, each SG the mean of its differences
+    g = discriminate(SG, known, sigma_floor, sigma_rel)    # eq. 7
+    if clip is None:
+        ok = known
+    else:                                       # the pattern's SGs, clipping aside
+        _, ok = group_means(*pair_differences(vals, codes, SG_PAIRS), SG_GROUPS)
     n = vals.shape[0]
     cover = np.broadcast_to(SG_COVER[None, :, :], (n,) + SG_COVER.shape)   # (n, 25, 8)
     valid_cover = cover & ok[:, None, :]
@@ -337,7 +383,7 @@ def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all
 
 
 def _reconstruct_5x5(vals, codes, target, method, sigma_floor, sigma_rel, sg_mode, sg_invalid,
-                     sg_uncovered="all_valid", diag=None, cd=None):
+                     sg_uncovered="all_valid", diag=None, cd=None, clip=None):
     cand = (codes == target[:, None]) & (codes != Z)
     cand[:, K(0, 0)] = False
     if method == "bilinear":
@@ -346,35 +392,35 @@ def _reconstruct_5x5(vals, codes, target, method, sigma_floor, sigma_rel, sg_mod
         # eq. 5 generalised: weights from the intensities, interpolation of c - X
         xhat, x0, use = cd
         inner = _reconstruct_5x5_weights(vals, codes, target, method, sigma_floor, sigma_rel,
-                                         sg_mode, sg_invalid, sg_uncovered)
+                                         sg_mode, sg_invalid, sg_uncovered, clip)
         plain = weighted_mean(vals, cand, inner, diag)
         cdv = weighted_mean(vals - np.nan_to_num(xhat), cand, inner) + np.nan_to_num(x0)
         return np.where(use, cdv, plain)
     return weighted_mean(vals, cand, _reconstruct_5x5_weights(
         vals, codes, target, method, sigma_floor, sigma_rel, sg_mode, sg_invalid,
-        sg_uncovered), diag)
+        sg_uncovered, clip), diag)
 
 
 def _reconstruct_5x5_weights(vals, codes, target, method, sigma_floor, sigma_rel, sg_mode,
-                             sg_invalid, sg_uncovered):
+                             sg_invalid, sg_uncovered, clip=None):
     """The unnormalised weights of eqs. 2, 6 and 19 at every kernel position."""
     cand = (codes == target[:, None]) & (codes != Z)
     cand[:, K(0, 0)] = False
     alpha = np.broadcast_to(ALPHA, vals.shape)
-    beta = intensity_factor(vals, cand)
+    beta = intensity_factor(vals, cand, clip)
     if method == "bi":
         return alpha * beta                                                 # eq. 2
     if method == "edi_central":
         gam = _edi_gamma(vals, codes, EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS, sigma_floor,
-                         sigma_rel)
+                         sigma_rel, clip)
         return alpha * beta * _gamma_at_candidates(gam)                     # eq. 6
     gam_line = _edi_gamma(vals, codes, EDI_LINE_PAIRS, EDI_LINE_GROUPS, sigma_floor, sigma_rel,
-                          EDI_LINE_CROSS)
+                          clip, EDI_LINE_CROSS)
     w_line = alpha * beta * _gamma_at_candidates(gam_line)
     if method == "edi_line":
         return w_line
     if method == "sg":
-        sgk = sg_weights(vals, codes, sigma_floor, sg_invalid, sg_uncovered, sigma_rel)
+        sgk = sg_weights(vals, codes, sigma_floor, sg_invalid, sg_uncovered, sigma_rel, clip)
         diagonal = (DY != 0) & (DX != 0)
         if sg_mode == "pure":
             pure = np.ones(len(vals), dtype=bool)
@@ -448,18 +494,27 @@ ROWS_DIRS = {
 ROWS_TIE_ORDER = ("c", "b", "d", "a", "e")
 
 
-def _reconstruct_rows(vals, codes, target, edge_ratio):
+def _rows_known(clip):
+    """(n, 5) bool: direction (in tie order) whose two pixels are both unclipped."""
+    return np.stack([~clip[:, _R(*ROWS_DIRS[d][0])] & ~clip[:, _R(*ROWS_DIRS[d][1])]
+                     for d in ROWS_TIE_ORDER], axis=1)
+
+
+def _reconstruct_rows(vals, codes, target, edge_ratio, clip=None):
+    """Eqs. 1a-1e. With ``clip``: a direction touching a clipped pixel cannot be
+    chosen; if c (the vertical) is one of them, there is no edge test: vertical mean."""
     taps = [_R(*p) for d in ROWS_TIE_ORDER for p in ROWS_DIRS[d]]
     ok = (codes[:, taps] == target[:, None]) & (codes[:, taps] != Z)
     if not ok.all():
         raise ValueError("edi_rows: the ten taps are not all of the target colour")
     D = np.stack([np.abs(vals[:, _R(*ROWS_DIRS[d][0])] - vals[:, _R(*ROWS_DIRS[d][1])])
                   for d in ROWS_TIE_ORDER], axis=1)
-    m = np.argmin(D, axis=1)                  # argmin takes the first minimum: tie order
+    known = np.ones(D.shape, bool) if clip is None else _rows_known(clip)
+    m = np.argmin(np.where(known, D, np.inf), axis=1)   # first minimum: tie order
     c = D[:, 0]
     vert = (vals[:, _R(-2, 0)] + vals[:, _R(2, 0)]) / 2.0
     out = vert.copy()
-    dominant = (m != 0) & (D[np.arange(len(m)), m] < edge_ratio * c)
+    dominant = known[:, 0] & (m != 0) & (D[np.arange(len(m)), m] < edge_ratio * c)
     for i in np.nonzero(dominant)[0]:
         up, down = ROWS_DIRS[ROWS_TIE_ORDER[m[i]]]
         out[i] = np.median([vals[i, _R(*up)], vals[i, _R(*down)], vert[i]])
@@ -471,7 +526,7 @@ def _reconstruct_rows(vals, codes, target, edge_ratio):
 def reference_reconstruct(data, pattern, method, bit_depth=11, sigma_floor=1e-3,
                           sigma_rel=0.5, edge_ratio=0.5, sg_mode="auto", sg_invalid="exclude",
                           sg_uncovered="all_valid", return_weight_sum=False,
-                          domain="intensity"):
+                          domain="intensity", clip_level=None, sites=None):
     """Reference reconstruction: float64 frame, colour sites copied, Z sites clipped.
 
     The values at Z sites are not rounded; use :func:`round_half_up` to compare
@@ -480,22 +535,35 @@ def reference_reconstruct(data, pattern, method, bit_depth=11, sigma_floor=1e-3,
     (NaN at colour sites and for methods without weights): where it is tiny
     (float32 underflow range) a float32 kernel may legitimately fall back to
     the plain mean while float64 does not.
+
+    ``clip_level``: known pixels at or above it are clipped (docs/raw.md, "Near
+    clipping"). ``sites``: a bool frame; only the Z sites where it is True are
+    reconstructed (the other Z sites are NaN), to keep large frames affordable.
     """
     data = np.asarray(data)
     shape = data.shape
     chan = pattern.channel_map(shape)
     missing = pattern.missing_colour(shape)
     out = data.astype(np.float64).copy()
-    ys, xs = np.nonzero(chan == Z)
+    zmask = chan == Z
+    if sites is not None:
+        out[zmask & ~np.asarray(sites, bool)] = np.nan
+        zmask = zmask & np.asarray(sites, bool)
+    ys, xs = np.nonzero(zmask)
+    clipped = None if clip_level is None else (data >= clip_level) & (chan != Z)
     if ys.size == 0:
         return (out, np.full(shape, np.nan)) if return_weight_sum else out
     target = missing[ys, xs].astype(np.int64)
     if method == "edi_rows":
         vals, codes = gather(data, chan, ys, xs, ROWS_OFF, pattern.period)
-        v = _reconstruct_rows(vals, codes, target, edge_ratio)
+        clip = None if clipped is None else gather_mask(clipped, ys, xs, ROWS_OFF, pattern.period)
+        v = _reconstruct_rows(vals, codes, target, edge_ratio, clip)
+        cand = np.zeros(vals.shape, bool)
+        cand[:, [_R(*p) for d in ROWS_TIE_ORDER for p in ROWS_DIRS[d]]] = True
         diag = {}
     elif method in METHODS:
         vals, codes = gather(data, chan, ys, xs, OFF, pattern.period)
+        clip = None if clipped is None else gather_mask(clipped, ys, xs, OFF, pattern.period)
         cand = (codes == target[:, None]) & (codes != Z)
         if not cand.any(axis=1).all():
             raise ValueError(f"pattern {pattern.name!r}: a Z site has no candidate")
@@ -506,11 +574,17 @@ def reference_reconstruct(data, pattern, method, bit_depth=11, sigma_floor=1e-3,
         elif domain != "intensity":
             raise ValueError(f"domain: {domain!r}")
         v = _reconstruct_5x5(vals, codes, target, method, sigma_floor, sigma_rel, sg_mode,
-                             sg_invalid, sg_uncovered, diag, cd)
+                             sg_invalid, sg_uncovered, diag, cd, clip)
     else:
         raise ValueError(f"method: unknown {method!r}")
     top = float((1 << bit_depth) - 1)
-    out[ys, xs] = np.clip(v, 0.0, top)
+    v = np.clip(v, 0.0, top)
+    if clip is not None:
+        # saturation kept: every candidate clipped -> at least the smallest of them
+        allc = np.all(clip | ~cand, axis=1)
+        lo = np.where(cand, vals, np.inf).min(axis=1)
+        v = np.where(allc, np.maximum(v, lo), v)
+    out[ys, xs] = v
     if return_weight_sum:
         wsum = np.full(shape, np.nan)
         if "weight_sum" in diag:
@@ -523,13 +597,14 @@ def round_half_up(v):
     return np.floor(np.asarray(v, dtype=np.float64) + 0.5)
 
 
-def edi_rows_decision_margin(data, pattern, edge_ratio=0.5):
+def edi_rows_decision_margin(data, pattern, edge_ratio=0.5, clip_level=None):
     """How fragile the edi_rows decision of each Z site is (NaN at colour sites).
 
     The smallest gap, relative to max(D) (at least 1 DN), between two of the
     five differences a..e (pairs that are both exactly 0 are robust and
     skipped), or between D_m and edge_ratio * c. A site with a margin below
     ~1e-5 may take another branch when the kernel computes in float32.
+    With ``clip_level``, directions touching a clipped pixel take no part.
     """
     data = np.asarray(data)
     shape = data.shape
@@ -541,11 +616,17 @@ def edi_rows_decision_margin(data, pattern, edge_ratio=0.5):
     vals, _ = gather(data, chan, ys, xs, ROWS_OFF, pattern.period)
     D = np.stack([np.abs(vals[:, _R(*ROWS_DIRS[d][0])] - vals[:, _R(*ROWS_DIRS[d][1])])
                   for d in ROWS_TIE_ORDER], axis=1)
-    scale = np.maximum(D.max(axis=1), 1.0)
+    known = np.ones(D.shape, bool)
+    if clip_level is not None:
+        clip = gather_mask((data >= clip_level) & (chan != Z), ys, xs, ROWS_OFF, pattern.period)
+        known = _rows_known(clip)
+    scale = np.maximum(np.where(known, D, 0).max(axis=1), 1.0)
     gaps = [np.abs(D[:, i] - D[:, j]) + np.where((D[:, i] == 0) & (D[:, j] == 0), np.inf, 0)
+            + np.where(known[:, i] & known[:, j], 0, np.inf)
             for i in range(5) for j in range(i + 1, 5)]
-    m = np.argmin(D, axis=1)
+    m = np.argmin(np.where(known, D, np.inf), axis=1)
     Dm, c = D[np.arange(len(m)), m], D[:, 0]
-    gaps.append(np.abs(Dm - edge_ratio * c) + np.where((Dm == 0) & (c == 0), np.inf, 0))
+    gaps.append(np.abs(Dm - edge_ratio * c) + np.where((Dm == 0) & (c == 0), np.inf, 0)
+                + np.where(known[:, 0], 0, np.inf))
     out[ys, xs] = np.min(np.stack(gaps, axis=1), axis=1) / scale
     return out

@@ -430,6 +430,15 @@ ROWS = [
     R("reconstruct.edge_ratio-inf", "reconstruct(edge_ratio=inf)",
       lambda f: rz.reconstruct(_u16((12, 8)), "edi_rows", pattern="rows", edge_ratio=np.inf),
       ValueError, "edge_ratio: expected a positive finite number"),
+    R("reconstruct.clip_level-nan", "reconstruct(clip_level=nan)",
+      lambda f: rz.reconstruct(_u16(), pattern="mask1", clip_level=np.nan), ValueError,
+      "clip_level: expected a positive finite number"),
+    R("reconstruct.clip_level-negative", "reconstruct(clip_level=-1)",
+      lambda f: rz.reconstruct(_u16(), pattern="mask1", clip_level=-1), ValueError,
+      "clip_level: expected a positive finite number"),
+    R("reconstruct.clip_level-text", "reconstruct(clip_level='high')",
+      lambda f: rz.reconstruct(_u16(), pattern="mask1", clip_level="high"), TypeError,
+      "clip_level: expected a positive number, None or 'auto'"),
 
     # -- demosaic --------------------------------------------------------------------
     R("demosaic.ndim", "demosaic(3-D)", lambda f: demosaic(np.zeros((4, 4, 3))), ValueError,

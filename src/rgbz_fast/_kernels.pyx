@@ -23,6 +23,8 @@ cdef extern from "rgbz.h" nogil:
         int32_t exp_mode
         int32_t workers
         int32_t mask1_fast
+        int32_t clip_on
+        double clip_level
     int rgbz_plan_layout(int64_t *out, int n)
     int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
                          Py_ssize_t rows, Py_ssize_t cols, int py, int px,
@@ -105,8 +107,13 @@ def max_threads():
 def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
                 int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
                 int n_plans, double sigma_floor, double sigma_rel, double edge_ratio, double maxval,
-                int exp_mode, int workers, uint64_t[::1] opcounts=None, int mask1_fast=0):
-    """Run the reconstruction kernel (or its counting twin when ``opcounts`` is given)."""
+                int exp_mode, int workers, uint64_t[::1] opcounts=None, int mask1_fast=0,
+                clip_level=None):
+    """Run the reconstruction kernel (or its counting twin when ``opcounts`` is given).
+
+    ``clip_level`` (DN, or None): known pixels at or above it are clipped; needs
+    ``mask1_fast=0`` (the C core rejects the combination otherwise).
+    """
     cdef int in_type
     cdef int status
     cdef rgbz_params prm
@@ -126,6 +133,8 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     prm.exp_mode = exp_mode
     prm.workers = workers
     prm.mask1_fast = mask1_fast
+    prm.clip_on = 0 if clip_level is None else 1
+    prm.clip_level = 0.0 if clip_level is None else float(clip_level)
     if opcounts is not None:
         counts = &opcounts[0]
     with nogil:

@@ -93,7 +93,7 @@ def _exp_mode(exp, precision):
 
 def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="float32",
                 workers=None, sigma_floor=1e-3, sigma_rel=0.5, edge_ratio=0.5, sg_mode="auto", exp="auto",
-                domain="intensity", out=None):
+                domain="intensity", clip_level=None, out=None):
     """Fill in the colour missing at every Z site: RGB-Z raw frame -> full Bayer CFA.
 
     Parameters
@@ -143,7 +143,24 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
         order of float32's own rounding, and it changes the mean CFA PSNR on
         Kodak by less than 1e-5 dB (docs/tradeoff.md) -- and ``"libm"`` in
         float64, so that float64 stays the accurate reference.
-
+    domain : {"intensity", "colour_difference"}
+        Interpolate the candidates themselves (eq. 13, the default) or their
+        differences to an estimate of the other channel(s) (eq. 5).
+    clip_level : float, "auto" or None
+        The level at which the sensor saturates, in the frame's digital
+        numbers. Known pixels at or above it are *clipped*: their value is a
+        lower bound of the light, so it is still interpolated as a value but
+        never trusted as a measurement in a weight. Every difference that
+        touches a clipped pixel (gradients, semi-gradients, the terms of
+        beta, the directions of ``edi_rows``) is skipped, and a site whose
+        candidates are all clipped stays at or above the smallest of them.
+        The rule per method is in docs/raw.md ("Near clipping").
+        None (default): nothing is clipped. ``"auto"``: the level that
+        :func:`rgbz_fast.rawio.read_raw` recorded for a frame read from a raw
+        file (:func:`rgbz_fast.rawio.frame_clip_level`); None for any other
+        frame. If no colour pixel reaches the level, the result is exactly
+        that of ``clip_level=None``; otherwise Mask1 runs on the generic plan
+        interpreter instead of its fast path.
     out : ndarray, optional
         Where to write the result: C-contiguous, writeable, the frame's shape
         and dtype, not overlapping the frame. Reusing one buffer across calls
@@ -162,7 +179,9 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
     ValueError
         Unknown method or option, a method that does not apply to the
         pattern, a frame smaller than one period, values beyond the bit depth,
-        NaN or inf.
+        NaN or inf, a ``clip_level`` that is not a positive finite number.
+    TypeError
+        A ``clip_level`` that is not a number, None or ``"auto"``.
 
     Notes
     -----
@@ -213,6 +232,7 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
         raise TypeError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}") from None
     if not 0 <= sigma_rel <= 10:
         raise ValueError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}")
+    clip = _clip_level(clip_level, frame)
     out = _check_out(out, data)
     if not pattern.has_z:
         out[...] = data
@@ -222,13 +242,51 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
                          "sites stand in for no defined colour")
     phase_map, plans, n_plans = _plans_for(pattern, method, sg_mode, domain)
     src = np.ascontiguousarray(data)
-    fast = int(_MASK1_FAST and domain == "intensity" and method != "edi_rows"
+    if clip is not None and not _reaches(src, pattern, clip):
+        clip = None          # nothing clipped: exactly the clip_level=None call
+    # the Mask1 fast path knows nothing of clipping: clipped frames take the interpreter
+    fast = int(_MASK1_FAST and clip is None and domain == "intensity" and method != "edi_rows"
                and has_mask1_geometry(pattern))
     _kernels.reconstruct(src, out, PRECISIONS[precision], pattern.period[0], pattern.period[1],
                          phase_map, plans, n_plans, sigma_floor, sigma_rel, edge_ratio,
                          float((1 << bd) - 1), EXP_MODES[_exp_mode(exp, precision)], nthreads,
-                         mask1_fast=fast)
+                         mask1_fast=fast, clip_level=clip)
     return out
+
+
+def _clip_level(value, frame):
+    """Validate ``clip_level``; resolve ``"auto"``. Returns a positive float or None."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        if value == "auto":
+            if not isinstance(frame, RawFrame):
+                return None
+            from .rawio import frame_clip_level
+            return frame_clip_level(frame)
+        raise TypeError(f"clip_level: expected a positive number, None or 'auto', got {value!r}")
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"clip_level: expected a positive number, None or 'auto', got {value!r}")
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"clip_level: expected a positive number, None or 'auto', "
+                        f"got {value!r}") from None
+    if not np.isfinite(v) or v <= 0:
+        raise ValueError(f"clip_level: expected a positive finite number (DN), got {value!r}")
+    return v
+
+
+def _reaches(data, pattern, level):
+    """True if a colour site of ``data`` is at or above ``level`` (strided views, no copy)."""
+    P, Q = pattern.period
+    for r in range(P):
+        for c in range(Q):
+            if pattern.tile[r, c] != 3 and r < data.shape[0] and c < data.shape[1]:
+                v = data[r::P, c::Q]
+                if v.size and v.max() >= level:
+                    return True
+    return False
 
 
 def _positive(value, name):

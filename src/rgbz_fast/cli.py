@@ -33,6 +33,27 @@ def _csv(text):
     return tuple(s.strip() for s in text.split(",") if s.strip())
 
 
+def _clip_arg(text):
+    """--clip-level: 'auto', 'off' or a positive number of DN."""
+    t = text.strip().lower()
+    if t == "auto":
+        return "auto"
+    if t in ("off", "none"):
+        return None
+    try:
+        v = float(t)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected auto, off or a positive number, got {text!r}")
+    if not (v > 0 and v != float("inf")):
+        raise argparse.ArgumentTypeError(f"expected auto, off or a positive number, got {text!r}")
+    return v
+
+
+CLIP_HELP = ("clipped (saturated) pixels: auto (default) uses the clip level recorded for "
+             "frames read from raw files (rgbz_fast.rawio) and none for other frames; off "
+             "ignores clipping; a number is the level in DN. See docs/raw.md, 'Near clipping'")
+
+
 def _add_common(p, out_default=None):
     p.add_argument("--workers", type=int, default=None,
                    help="threads (kernels) or processes (evaluate); default: all cores")
@@ -77,6 +98,8 @@ def _parser():
     r.add_argument("--precision", choices=("float32", "float64"), default="float32")
     r.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
+    r.add_argument("--clip-level", type=_clip_arg, default="auto", metavar="auto|off|DN",
+                   help=CLIP_HELP)
     _add_common(r, Path("rgbz_out"))
 
     e = sub.add_parser("evaluate", help="dataset -> metrics, tables and plots",
@@ -102,6 +125,8 @@ def _parser():
                    help="JSON file mapping raw file names (or \"*\") to rgbz_fast.rawio.read_raw "
                         "arguments: phase, black_level, white_level, shape, bit_depth_in, "
                         "downsample ... (for bare Bayer files that carry none)")
+    e.add_argument("--clip-level", type=_clip_arg, default="auto", metavar="auto|off|DN",
+                   help=CLIP_HELP)
     e.add_argument("--limit", type=int, default=None, help="first N images only")
     e.add_argument("--table-image", default=None,
                    help="image of the per-image table (default kodim09 when present)")
@@ -192,7 +217,8 @@ def _reconstruct(args):
     args.out.mkdir(parents=True, exist_ok=True)
     for f in args.frames:
         frame = frameio.load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth)
-        cfa = reconstruct(frame, args.method, precision=args.precision, workers=args.workers)
+        cfa = reconstruct(frame, args.method, precision=args.precision, workers=args.workers,
+                          clip_level=args.clip_level)
         if args.output == "cfa":
             dest = args.out / f"{f.stem}_{args.method}_cfa.tif"
             import io
@@ -222,7 +248,8 @@ def _evaluate(args):
 
     kw = dict(patterns=args.patterns, methods=args.methods, noise=args.noise,
               demosaic=args.demosaic, crop=args.crop, precision=args.precision,
-              reconstruct_options=(("domain", args.domain),) if args.domain != "intensity" else ())
+              reconstruct_options=(("domain", args.domain),) if args.domain != "intensity" else (),
+              clip_level=args.clip_level)
     if args.metrics:
         kw["metrics"] = args.metrics
     config = EvalConfig(**kw)

@@ -94,6 +94,12 @@ class EvalConfig:
         Extra keyword arguments of :func:`rgbz_fast.reconstruct`.
     seed : int
         Noise seed (noisy runs).
+    clip_level : "auto", None or float
+        The ``clip_level`` of :func:`rgbz_fast.reconstruct`. ``"auto"``
+        (default): raw sources use the level their file records
+        (:func:`rgbz_fast.rawio.frame_clip_level`), RGB sources none. None:
+        no clip handling. A number (DN of the frames' bit depth): that level
+        for every source. A ``clip_level`` in ``reconstruct_options`` wins.
     """
 
     patterns: tuple = ("mask1", "mask2")
@@ -106,6 +112,7 @@ class EvalConfig:
     precision: str = "float64"
     reconstruct_options: tuple = ()
     seed: int = 0
+    clip_level: object = "auto"
 
     def __post_init__(self):
         for name in ("patterns", "methods", "metrics", "reconstruct_options"):
@@ -128,24 +135,47 @@ class EvalConfig:
             raise ValueError(f"crop: expected a non-negative integer, got {self.crop!r}")
         if not self.patterns or not self.methods or not self.metrics:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
+        if self.clip_level is not None and not isinstance(self.clip_level, str):
+            from ._reconstruct import _clip_level
+            object.__setattr__(self, "clip_level", _clip_level(self.clip_level, None))
+        elif isinstance(self.clip_level, str) and self.clip_level != "auto":
+            raise ValueError(f"clip_level: expected 'auto', None or a positive number, "
+                             f"got {self.clip_level!r}")
 
     @property
     def image_metrics(self):
         return tuple(m for m in self.metrics if m in IMAGE_METRICS)
 
-    def key(self, pattern, method):
-        """Cache key of one (pattern, method) under this configuration."""
+    def key(self, pattern, method, raw=False):
+        """Cache key of one (pattern, method) under this configuration.
+
+        ``raw``: the key of a raw source. ``clip_level="auto"`` gives RGB sources no
+        level, so it leaves their key (and cache) as it was before the option existed;
+        raw sources are clipped by it, so their key includes it.
+        """
         d = asdict(self)
         d.pop("patterns")
         d.pop("methods")
         d.pop("metrics")
+        if d["clip_level"] == "auto" and not raw:
+            d.pop("clip_level")
         d.update(pattern=str(get_pattern(pattern)), method=method, version=_cache_version())
         blob = json.dumps(d, sort_keys=True, default=str).encode()
         return hashlib.sha1(blob).hexdigest()[:16]
 
     def label(self):
+        if self.clip_level == "auto":
+            clip = ""
+        elif self.clip_level is None:
+            clip = ", no clip handling"
+        else:
+            clip = f", clip level {self.clip_level:g} DN"
         return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit, "
-                f"demosaic {self.demosaic}, border crop {self.crop} px, {self.precision}")
+                f"demosaic {self.demosaic}, border crop {self.crop} px, {self.precision}{clip}")
+
+    def reconstruct_kwargs(self):
+        """Keyword arguments of :func:`rgbz_fast.reconstruct`: clip_level and the options."""
+        return {"clip_level": self.clip_level, **dict(self.reconstruct_options)}
 
 
 def _cache_version():
@@ -304,7 +334,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     cdir = Path(cache_dir) / _safe(source.name) if cache_dir else None
     for p in config.patterns:
         for m in config.methods:
-            cached = _cache_read(cdir, config.key(p, m)) if cdir else None
+            cached = _cache_read(cdir, config.key(p, m, source.is_raw)) if cdir else None
             if cached is not None and set(config.metrics) <= set(cached):
                 rows += [_row(source.name, p, m, k, cached[k]) for k in config.metrics]
             else:
@@ -326,7 +356,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
             if p != pname:
                 continue
             out = reconstruct(frame, m, precision=config.precision, workers=workers,
-                              **dict(config.reconstruct_options))
+                              **config.reconstruct_kwargs())
             values = {}
             if "cfa_psnr" in config.metrics:
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=frame.bit_depth)
@@ -335,7 +365,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                                          config.demosaic)
                 values.update(_image_metrics(ref_srgb, test_srgb, config))
             if cdir:
-                _cache_write(cdir, config.key(p, m), values)
+                _cache_write(cdir, config.key(p, m, source.is_raw), values)
             rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
     return rows
 
@@ -685,7 +715,7 @@ def crop_figure(source, config, box=None, size=96):
         row = [("reference", ref)]
         for m in config.methods:
             out = reconstruct(frame, m, precision=config.precision,
-                              **dict(config.reconstruct_options))
+                              **config.reconstruct_kwargs())
             row.append((METHOD_LABELS.get(m, m),
                         colour_chain(out, pattern.bayer_phase, frame.bit_depth, gains,
                                      config.demosaic)))

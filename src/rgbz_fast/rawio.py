@@ -31,7 +31,7 @@ from ._frame import RawFrame
 from ._patterns import BAYER_PHASES, Z, bayer, mask1, mask2, rows
 from ._validate import check_bit_depth
 
-__all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask",
+__all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask", "frame_clip_level",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS"]
 
 #: camera raw formats read through rawpy (LibRaw)
@@ -435,6 +435,67 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
 
         mask = maximum_filter(mask, size=2 * int(radius) + 1, mode="constant", cval=False)
     return mask
+
+
+def frame_clip_level(frame):
+    """The clip level of a frame read from a raw file, in the frame's digital numbers.
+
+    This is what ``reconstruct(frame, ..., clip_level="auto")`` uses. The level
+    comes from the ``clip_level``, ``black_level`` and ``white_level`` that
+    :func:`read_raw` records in ``meta`` (in the file's units, per quad site),
+    scaled like the data: ``(clip - black) / (white - black) * (2**bit_depth - 1)``,
+    rounded half up for integer frames, as the data are, so that a raw value at the
+    clip level lands exactly on it. With four different levels the smallest
+    is taken, so that no clipped pixel escapes (a few pixels just below the clip of
+    the other quad sites are then flagged too).
+
+    Parameters
+    ----------
+    frame : RawFrame
+        A frame from :func:`read_raw` or :func:`to_rgbz` (or saved from one with
+        :func:`rgbz_fast.frameio.save_frame`, which keeps the levels).
+
+    Returns
+    -------
+    float or None
+        None when ``meta`` records no levels (a simulated or RGB-derived frame).
+
+    Notes
+    -----
+    A binned pixel (``downsample=k``) is clipped by this level only if all its
+    k x k pixels were; one that averages clipped and unclipped pixels is below the
+    level although ``meta["clipped"]`` flags it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rgbz_fast import RawFrame, bayer
+    >>> from rgbz_fast.rawio import frame_clip_level
+    >>> meta = {"black_level": (0,) * 4, "white_level": (1023,) * 4, "clip_level": (1020,) * 4}
+    >>> frame_clip_level(RawFrame(np.zeros((2, 2), np.uint16), bayer("RGGB"), meta=meta))
+    2041.0
+    """
+    if not isinstance(frame, RawFrame):
+        raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
+    meta = frame.meta or {}
+    try:
+        clip, black, white = (np.asarray(meta[k], dtype=np.float64).reshape(-1)
+                              for k in ("clip_level", "black_level", "white_level"))
+    except (KeyError, TypeError, ValueError):
+        return None
+    if not (clip.size == black.size == white.size == 4) or np.any(white <= black):
+        return None
+    top = float(frame.white_level)
+    # the expression read_raw applies to a pixel at the clip level
+    level = float(np.min(np.clip((clip - black) / (white - black) * top, 0.0, top)))
+    if np.issubdtype(frame.data.dtype, np.integer):
+        level = float(np.floor(level + 0.5))
+    else:
+        level = float(np.asarray(level, dtype=frame.data.dtype))
+    if not level > 0:
+        raise ValueError(f"clip_level: {tuple(clip)} is at or below the black level "
+                         f"{tuple(black)}: every pixel would be clipped")
+    return level
 
 
 # --------------------------------------------------------------------------
