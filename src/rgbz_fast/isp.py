@@ -32,8 +32,8 @@ import numpy as np
 from ._frame import RawFrame
 from ._patterns import Z, get_pattern
 from ._reconstruct import reconstruct
-from ._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
-                        check_number)
+from ._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag,
+                        check_image, check_number)
 from .demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES, demosaic
 from .tof_isp import ToFDepth, ToFISP, tof_depth
 
@@ -53,12 +53,7 @@ _PRECISIONS = {"float32": np.float32, "float64": np.float64}
 
 
 _real = check_number   # one validator for every numeric parameter (_validate.py)
-
-
-def _flag(value, name):
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name}: expected True or False, got {value!r}")
-    return bool(value)
+_flag = check_flag     # and one for every True/False parameter
 
 
 # =========================================================================== parameters
