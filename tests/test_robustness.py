@@ -52,10 +52,6 @@ BUGS = {
           "NaN), evaluate(dataset=5)",
     "B6": "EvalConfig accepts bit_depth, precision, reconstruct_options, seed and noise "
           "it cannot run; the run fails later, inside a worker",
-    "B7": "rawio.read_raw, frameio.load_frame(pattern=...) and evaluate's ImageSource.load: "
-          "an undecodable PNG/TIFF raises imageio's OSError (not ValueError naming the path) "
-          "and leaks the file handle (ResourceWarning); scene.load_image reads the bytes "
-          "first and is right",
     "B8": "tof_isp.demodulate: the phase can be exactly 2 pi (atan2 of a tiny negative Q "
           "plus 2 pi rounds up)",
     "B9": "write_reports on an empty Results raises IndexError; white_balance(dtype=int32) "
@@ -841,7 +837,10 @@ ROWS = [
       lambda f: rawio.read_raw(f / "corrupt.dng"), ValueError, "path: LibRaw cannot read"),
     R("rawio.read_raw-corrupt-png", "read_raw(corrupt .png)",
       lambda f: rawio.read_raw(f / "corrupt.png", phase="GRBG", black_level=0, bit_depth_in=8),
-      ValueError, "path: cannot read", bug="B7"),
+      ValueError, "path: cannot read"),
+    R("rawio.read_raw-corrupt-tiff", "read_raw(truncated .tif)",
+      lambda f: rawio.read_raw(f / "truncated.tif", phase="GRBG", black_level=0,
+                               bit_depth_in=8), ValueError, "path: cannot read"),
     R("rawio.list_raw_files-not-folder", "list_raw_files(a file)",
       lambda f: rawio.list_raw_files(f / "file.txt"), NotADirectoryError,
       "folder: not a directory"),
@@ -904,6 +903,11 @@ ROWS = [
     R("frameio.load-plain-tiff-bits", "load_frame(plain TIFF, pattern, no bit_depth)",
       lambda f: frameio.load_frame(f / "plain.tif", pattern="mask1"), ValueError,
       "bit_depth: required for a plain TIFF/PNG mosaic with a pattern"),
+    R("frameio.load-corrupt-tiff", "load_frame(truncated TIFF)",
+      lambda f: frameio.load_frame(f / "truncated.tif"), ValueError, "path: cannot read"),
+    R("frameio.load-corrupt-png", "load_frame(corrupt PNG, pattern, bit_depth)",
+      lambda f: frameio.load_frame(f / "corrupt.png", pattern="mask1", bit_depth=11),
+      ValueError, "path: cannot read"),
     R("frameio.load-folder", "load_frame(a folder)",
       lambda f: frameio.load_frame(f / "empty"), ValueError, "path: unknown raw extension"),
 
@@ -1120,6 +1124,9 @@ ROWS = [
       lambda f: ev.evaluate(f / "missing", progress=False), ValueError, "dataset: "),
     R("evaluate.dataset-type", "evaluate(dataset=5)",
       lambda f: ev.evaluate(5, progress=False), TypeError, "dataset: ", bug="B5"),
+    R("evaluate.image-corrupt", "ImageSource(corrupt .png).load()",
+      lambda f: ev.ImageSource("c", str(f / "corrupt.png")).load(), ValueError,
+      "dataset: cannot read"),
     R("evaluate.image-too-small", "evaluate(1x1 image)",
       lambda f: ev.evaluate([ev.ImageSource("t", str(f / "tiny.png"))], metrics=("cfa_psnr",),
                             workers=1, progress=False), ValueError,
@@ -1170,7 +1177,7 @@ CLI_ROWS = [
     C("cli.reconstruct-truncated", ("reconstruct", "{d}/truncated.npz"), "path: ", bug="B1"),
     C("cli.reconstruct-header", ("reconstruct", "{d}/nokeys.npz"), "path: ", bug="B1"),
     C("cli.reconstruct-corrupt-png", ("reconstruct", "{d}/corrupt.png", "--pattern", "mask1",
-                                      "--bit-depth", "11"), "path: ", bug="B7"),
+                                      "--bit-depth", "11"), "path: cannot read {d}/corrupt.png"),
     C("cli.evaluate-empty", ("evaluate", "--dataset", "{d}/empty"),
       "dataset: no image files in"),
     C("cli.evaluate-missing", ("evaluate", "--dataset", "{d}/missing"), "dataset: "),
@@ -1187,7 +1194,8 @@ CLI_ROWS = [
     C("cli.evaluate-image-small", ("evaluate", "--dataset", "{d}/small.png", "--workers", "1",
                                    "--no-cache", "--no-plots"), "crop: crop=8 leaves"),
     C("cli.evaluate-corrupt", ("evaluate", "--dataset", "{d}/ds_corrupt", "--workers", "1",
-                               "--no-cache", "--metrics", "cfa_psnr"), "", bug="B7"),
+                               "--no-cache", "--metrics", "cfa_psnr"),
+      "dataset: cannot read {d}/ds_corrupt/a.png"),
     C("cli.evaluate-out-is-file", ("evaluate", "--dataset", "{d}/ds", "--workers", "1",
                                    "--metrics", "cfa_psnr", "--out", "{d}/file.txt"), ""),
     C("cli.bench-workers", ("bench", "--workers", "0"), "--workers: expected a positive integer"),

@@ -35,6 +35,7 @@ from ._frame import mosaic
 from ._patterns import get_pattern
 from ._plans import METHODS
 from ._reconstruct import reconstruct
+from ._validate import read_image_file
 
 __all__ = ["EvalConfig", "Results", "ImageSource", "sample_dataset", "folder_dataset",
            "evaluate", "evaluate_image", "write_reports", "atomic_write", "PAPER_TABLE3",
@@ -181,8 +182,7 @@ class ImageSource:
             import skimage.data
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
         else:
-            import imageio.v3 as iio
-            img = iio.imread(self.location)
+            img = read_image_file(self.location, "dataset")
         img = np.asarray(img)
         if img.ndim == 2:
             img = np.repeat(img[..., None], 3, axis=2)

@@ -17,6 +17,7 @@ import numpy as np
 
 from ._frame import RawFrame
 from ._patterns import get_pattern
+from ._validate import read_image_file
 
 __all__ = ["save_frame", "load_frame", "FRAME_SUFFIXES"]
 
@@ -106,11 +107,16 @@ def load_frame(path, *, pattern=None, bit_depth=None, **raw_kwargs):
     if suffix in (".tif", ".tiff"):
         import tifffile
 
-        with tifffile.TiffFile(path) as tf:
-            data = tf.asarray()
-            desc = tf.pages[0].description or ""
+        desc = []
+
+        def decode(blob):
+            with tifffile.TiffFile(io.BytesIO(blob)) as tf:
+                desc.append(tf.pages[0].description or "")     # IndexError: no page
+                return tf.asarray()
+
+        data = read_image_file(path, "path", decode)
         try:
-            header = json.loads(desc)
+            header = json.loads(desc[0])
         except ValueError:
             header = None
         if isinstance(header, dict) and header.get("format") == _FORMAT_TAG:
@@ -121,8 +127,7 @@ def load_frame(path, *, pattern=None, bit_depth=None, **raw_kwargs):
     if pattern is not None and suffix in (".tif", ".tiff", ".png"):
         if bit_depth is None:
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
-        import imageio.v3 as iio
-        data = np.asarray(iio.imread(path))
+        data = read_image_file(path, "path")
         return RawFrame(data, get_pattern(pattern), bit_depth, meta={"source": str(path)})
     return rawio.read_raw(path, **raw_kwargs)
 

@@ -21,6 +21,7 @@ References
 
 from __future__ import annotations
 
+import io
 import os
 import warnings
 from pathlib import Path
@@ -29,7 +30,7 @@ import numpy as np
 
 from ._frame import RawFrame
 from ._patterns import BAYER_PHASES, Z, bayer, mask1, mask2, rows
-from ._validate import check_bit_depth
+from ._validate import check_bit_depth, read_image_file
 
 __all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS"]
@@ -128,9 +129,12 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     ------
     ImportError
         A camera raw file without rawpy installed.
+    FileNotFoundError
+        The file does not exist.
     ValueError
         A missing phase or level (naming the parameter), a headerless file
-        whose size does not match ``shape``, an unknown extension, a
+        whose size does not match ``shape``, an unknown extension, a file
+        LibRaw, the PNG or the TIFF decoder cannot read (``"path: ..."``), a
         non-Bayer sensor (X-Trans, CMYG), white level not above black.
 
     Notes
@@ -511,15 +515,13 @@ def _tiff_make_model(path):
 
 
 def _read_image(path):
+    decode = None
     if path.suffix.lower() in (".tif", ".tiff"):
         import tifffile
 
-        data = tifffile.imread(path, key=0)
-    else:
-        import imageio.v3 as iio
-
-        data = iio.imread(path)
-    data = np.asarray(data)
+        def decode(blob):
+            return tifffile.imread(io.BytesIO(blob), key=0)   # the first page only
+    data = read_image_file(path, "path", decode)
     if data.ndim != 2:
         raise ValueError(f"{path.name}: expected a single-channel Bayer mosaic, got an image "
                          f"of shape {data.shape} (a demosaicked RGB image is not raw data)")
