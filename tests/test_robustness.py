@@ -45,9 +45,6 @@ BUGS = {
     "B3": "tof_isp.unwrap: phases outside [0, 2 pi) are accepted (1e300 gives depth inf)",
     "B4": "metrics.ssim / ms_ssim: a huge data_range raises OverflowError, a tiny one "
           "returns NaN",
-    "B5": "some messages do not name the parameter or use another exception type: "
-          "mosaic(dtype='junk'), mosaic(input_bits='8'), clipped_mask(clip_level='a' or "
-          "NaN), evaluate(dataset=5)",
     "B6": "EvalConfig accepts bit_depth, precision, reconstruct_options, seed and noise "
           "it cannot run; the run fails later, inside a worker",
     "B8": "tof_isp.demodulate: the phase can be exactly 2 pi (atan2 of a tiny negative Q "
@@ -250,8 +247,8 @@ ROWS = [
     R("mosaic.dtype", "mosaic(dtype=int32)", lambda f: rz.mosaic(_rgb(), "mask1", dtype=np.int32),
       TypeError, "dtype: expected one of uint8, uint16, float32, float64"),
     R("mosaic.dtype-unknown", "mosaic(dtype='junk')",
-      lambda f: rz.mosaic(_rgb(), "mask1", dtype="junk"), TypeError, "dtype: expected one of",
-      bug="B5"),
+      lambda f: rz.mosaic(_rgb(), "mask1", dtype="junk"), TypeError,
+      "dtype: expected one of uint8, uint16, float32, float64, got 'junk'"),
     R("mosaic.uint8-bits", "mosaic(dtype=uint8, bit_depth=11)",
       lambda f: rz.mosaic(_rgb(), "mask1", dtype=np.uint8), ValueError,
       "dtype: uint8 cannot hold 11-bit data"),
@@ -262,7 +259,7 @@ ROWS = [
       "input_bits: expected 1..16 bits"),
     R("mosaic.input_bits-type", "mosaic(input_bits='8')",
       lambda f: rz.mosaic(_u8img(), "mask1", input_bits="8"), TypeError,
-      "input_bits: expected an integer number of bits", bug="B5"),
+      "input_bits: expected an integer number of bits"),
 
     # -- reconstruct -----------------------------------------------------------------
     R("reconstruct.ndim-3", "reconstruct(3-D)",
@@ -808,6 +805,10 @@ ROWS = [
       lambda f: rawio.read_raw(f / "bayer.raw", shape=(4, 4), phase="GRBG", black_level=0,
                                bit_depth_in=10, dtype=np.int32), TypeError,
       "dtype: expected one of uint8, uint16, float32, float64"),
+    R("rawio.read_raw-dtype-unknown", "read_raw(dtype='junk')",
+      lambda f: rawio.read_raw(f / "bayer.raw", shape=(4, 4), phase="GRBG", black_level=0,
+                               bit_depth_in=10, dtype="junk"), TypeError,
+      "dtype: expected one of uint8, uint16, float32, float64, got 'junk'"),
     R("rawio.read_raw-uint8-bits", "read_raw(dtype=uint8, bit_depth=11)",
       lambda f: rawio.read_raw(f / "bayer.raw", shape=(4, 4), phase="GRBG", black_level=0,
                                bit_depth_in=10, dtype=np.uint8), ValueError,
@@ -872,9 +873,11 @@ ROWS = [
       lambda f: rawio.clipped_mask(_f64(), 5, radius=1.5), ValueError,
       "radius: expected a non-negative integer"),
     R("rawio.clipped_mask-level-nan", "clipped_mask(clip_level=nan)",
-      lambda f: rawio.clipped_mask(_f64(), np.nan), ValueError, "clip_level: ", bug="B5"),
+      lambda f: rawio.clipped_mask(_f64(), np.nan), ValueError,
+      "clip_level: expected a finite number, got nan"),
     R("rawio.clipped_mask-level-text", "clipped_mask(clip_level='a')",
-      lambda f: rawio.clipped_mask(_f64(), "a"), TypeError, "clip_level: ", bug="B5"),
+      lambda f: rawio.clipped_mask(_f64(), "a"), TypeError,
+      "clip_level: expected a number, got 'a'"),
 
     # -- frameio ---------------------------------------------------------------------
     R("frameio.save-type", "save_frame(path, ndarray)",
@@ -1121,7 +1124,11 @@ ROWS = [
     R("evaluate.missing-folder", "evaluate('missing')",
       lambda f: ev.evaluate(f / "missing", progress=False), ValueError, "dataset: "),
     R("evaluate.dataset-type", "evaluate(dataset=5)",
-      lambda f: ev.evaluate(5, progress=False), TypeError, "dataset: ", bug="B5"),
+      lambda f: ev.evaluate(5, progress=False), TypeError,
+      "dataset: expected a list of ImageSource, a folder or None, got int"),
+    R("evaluate.dataset-entries", "evaluate(['a.png'])",
+      lambda f: ev.evaluate([str(f / "rgb.png")], progress=False), TypeError,
+      "dataset: expected ImageSource entries"),
     R("evaluate.image-corrupt", "ImageSource(corrupt .png).load()",
       lambda f: ev.ImageSource("c", str(f / "corrupt.png")).load(), ValueError,
       "dataset: cannot read"),
@@ -1431,6 +1438,24 @@ def test_cli_reconstruct_of_a_broken_frame_writes_nothing(files, tmp_path, capsy
         assert err[0].startswith(f"rgbz-fast reconstruct: error: path: {files / name} is not "
                                  "a readable rgbz-fast frame"), err
     assert not out.exists() or not [p for p in out.rglob("*") if p.is_file()]
+
+
+def test_fixed_checks_keep_the_valid_calls():
+    """B5, B9: the new checks reject only what was wrong before."""
+    img = _u8img(value=200)
+    want = rz.mosaic(img, "mask1").data
+    np.testing.assert_array_equal(rz.mosaic(img, "mask1", dtype="uint16").data, want)
+    np.testing.assert_array_equal(rz.mosaic(img, "mask1", input_bits=np.int64(8)).data, want)
+    a = np.array([[0, 1020], [5, 1023]])
+    for level in (1020, np.float32(1020), 1020.0):
+        np.testing.assert_array_equal(rawio.clipped_mask(a, level), a >= 1020)
+    for dt in (np.float32, "float64"):
+        wb, _ = isp.white_balance(_u16(value=1000), "bayer", dtype=dt)
+        assert wb.dtype == np.dtype(dt) and 0 < wb.min() <= wb.max() <= 1
+    sources = (ev.ImageSource(n, f"skimage:{n}") for n in ["coffee"])   # any iterable
+    res = ev.evaluate(sources, metrics=("cfa_psnr",), methods=("bilinear",),
+                      patterns=("mask1",), workers=1, progress=False)
+    assert len(res) == 1 and np.isfinite(res.rows[0]["value"])
 
 
 # --------------------------------------------------------------------------- read-only, large

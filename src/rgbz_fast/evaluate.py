@@ -412,8 +412,9 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, workers=None, schedul
     Parameters
     ----------
     dataset : list of ImageSource, str or Path, optional
-        A list from :func:`sample_dataset` / :func:`folder_dataset`, or a
-        folder. Default: :func:`sample_dataset` (runs offline).
+        A list (any iterable) from :func:`sample_dataset` /
+        :func:`folder_dataset`, or a folder. Default: :func:`sample_dataset`
+        (runs offline).
     config : EvalConfig, optional
         What to run; keyword arguments build one when it is None.
     cache_dir : str or Path, optional
@@ -434,9 +435,17 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, workers=None, schedul
         dataset = sample_dataset()
     elif isinstance(dataset, (str, os.PathLike)):
         dataset = folder_dataset(dataset)
-    dataset = list(dataset)
+    try:
+        dataset = list(dataset)
+    except TypeError:
+        raise TypeError(f"dataset: expected a list of ImageSource, a folder or None, got "
+                        f"{type(dataset).__name__}") from None
     if not dataset:
         raise ValueError("dataset: no images")
+    bad = [s for s in dataset if not isinstance(s, ImageSource)]
+    if bad:
+        raise TypeError(f"dataset: expected ImageSource entries (see folder_dataset), got "
+                        f"{type(bad[0]).__name__} {bad[0]!r}")
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")

@@ -30,7 +30,7 @@ import numpy as np
 
 from ._frame import RawFrame
 from ._patterns import BAYER_PHASES, Z, bayer, mask1, mask2, rows
-from ._validate import check_bit_depth, read_image_file
+from ._validate import check_bit_depth, check_dtype, check_number, read_image_file
 
 __all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS"]
@@ -175,9 +175,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     path = Path(os.fspath(path))
     kind = _reader_for(path, reader)
     bd = check_bit_depth(bit_depth)
-    out_dtype = np.dtype(dtype)
-    if out_dtype not in _OUT_DTYPES:
-        raise TypeError(f"dtype: expected one of uint8, uint16, float32, float64, got {out_dtype}")
+    out_dtype = check_dtype(dtype, _OUT_DTYPES)
     if out_dtype == np.uint8 and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     k = _check_downsample(downsample)
@@ -408,6 +406,14 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
     -------
     ndarray of bool, shape (rows, cols)
 
+    Raises
+    ------
+    TypeError
+        ``clip_level`` is not a number.
+    ValueError
+        ``clip_level`` is NaN or infinite (a NaN level would flag nothing),
+        or missing for a plain array; ``radius`` is not an integer >= 0.
+
     Examples
     --------
     >>> import numpy as np
@@ -416,6 +422,10 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
     array([[0, 1],
            [0, 1]])
     """
+    if clip_level is not None:
+        clip_level = check_number(clip_level, "clip_level")
+    if isinstance(radius, bool) or not isinstance(radius, (int, np.integer)) or radius < 0:
+        raise ValueError(f"radius: expected a non-negative integer, got {radius!r}")
     if isinstance(frame, RawFrame):
         stored = frame.meta.get("clipped")
         if clip_level is None and isinstance(stored, np.ndarray) and stored.shape == frame.shape:
@@ -432,8 +442,6 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
         if data.ndim != 2:
             raise ValueError(f"frame: expected a 2-D array, got shape {data.shape}")
         mask = data >= clip_level
-    if isinstance(radius, bool) or not isinstance(radius, (int, np.integer)) or radius < 0:
-        raise ValueError(f"radius: expected a non-negative integer, got {radius!r}")
     if radius > 0:
         from scipy.ndimage import maximum_filter
 
