@@ -45,8 +45,6 @@ BUGS = {
     "B3": "tof_isp.unwrap: phases outside [0, 2 pi) are accepted (1e300 gives depth inf)",
     "B4": "metrics.ssim / ms_ssim: a huge data_range raises OverflowError, a tiny one "
           "returns NaN",
-    "B6": "EvalConfig accepts bit_depth, precision, reconstruct_options, seed and noise "
-          "it cannot run; the run fails later, inside a worker",
     "B8": "tof_isp.demodulate: the phase can be exactly 2 pi (atan2 of a tiny negative Q "
           "plus 2 pi rounds up)",
     "B9": "write_reports on an empty Results raises IndexError; white_balance(dtype=int32) "
@@ -1104,12 +1102,32 @@ ROWS = [
     R("evaluate.config-crop", "EvalConfig(crop=-1)", lambda f: ev.EvalConfig(crop=-1),
       ValueError, "crop: expected a non-negative integer"),
     R("evaluate.config-bit_depth", "EvalConfig(bit_depth=40)",
-      lambda f: ev.EvalConfig(bit_depth=40), ValueError, "bit_depth: ", bug="B6"),
+      lambda f: ev.EvalConfig(bit_depth=40), ValueError, "bit_depth: expected 1..16 bits"),
+    R("evaluate.config-bit_depth-type", "EvalConfig(bit_depth='11')",
+      lambda f: ev.EvalConfig(bit_depth="11"), TypeError,
+      "bit_depth: expected an integer number of bits"),
     R("evaluate.config-precision", "EvalConfig(precision='float16')",
-      lambda f: ev.EvalConfig(precision="float16"), ValueError, "precision: ", bug="B6"),
+      lambda f: ev.EvalConfig(precision="float16"), ValueError,
+      "precision: expected one of 'float32', 'float64'"),
     R("evaluate.config-options", "EvalConfig(reconstruct_options=(('foo', 1),))",
       lambda f: ev.EvalConfig(reconstruct_options=(("foo", 1),)), ValueError,
-      "reconstruct_options: ", bug="B6"),
+      "reconstruct_options: unknown option(s) ['foo']"),
+    R("evaluate.config-options-value", "EvalConfig(reconstruct_options={'sigma_floor': -1})",
+      lambda f: ev.EvalConfig(reconstruct_options={"sigma_floor": -1}), ValueError,
+      "reconstruct_options: sigma_floor: expected a positive finite number"),
+    R("evaluate.config-options-choice", "EvalConfig(reconstruct_options={'exp': 'approx'})",
+      lambda f: ev.EvalConfig(reconstruct_options={"exp": "approx"}), ValueError,
+      "reconstruct_options: exp: expected one of 'libm', 'fast'"),
+    R("evaluate.config-options-reserved", "EvalConfig(reconstruct_options={'workers': 2})",
+      lambda f: ev.EvalConfig(reconstruct_options={"workers": 2}), ValueError,
+      "reconstruct_options: 'workers' is set by the evaluation"),
+    R("evaluate.config-options-type", "EvalConfig(reconstruct_options='sg_mode=pure')",
+      lambda f: ev.EvalConfig(reconstruct_options="sg_mode=pure"), TypeError,
+      "reconstruct_options: expected a mapping or (name, value) pairs"),
+    R("evaluate.config-seed", "EvalConfig(seed=-1)", lambda f: ev.EvalConfig(seed=-1),
+      ValueError, "seed: expected an integer >= 0"),
+    R("evaluate.config-noise", "EvalConfig(noise='yes')", lambda f: ev.EvalConfig(noise="yes"),
+      TypeError, "noise: expected True or False"),
     R("evaluate.empty", "evaluate([])", lambda f: ev.evaluate([], ev.EvalConfig()), ValueError,
       "dataset: no images"),
     R("evaluate.config-and-kwargs", "evaluate(ds, config, crop=1)",
@@ -1438,6 +1456,36 @@ def test_cli_reconstruct_of_a_broken_frame_writes_nothing(files, tmp_path, capsy
         assert err[0].startswith(f"rgbz-fast reconstruct: error: path: {files / name} is not "
                                  "a readable rgbz-fast frame"), err
     assert not out.exists() or not [p for p in out.rglob("*") if p.is_file()]
+
+
+def test_eval_config_is_checked_and_normalised_at_construction():
+    """B6: a bad field fails at EvalConfig(...), naming it; good values are normalised so
+    that equal configurations share their cache key."""
+    import inspect
+
+    from rgbz_fast import _reconstruct
+
+    cfg = ev.EvalConfig(reconstruct_options={"sg_mode": "pure", "exp": "fast"})
+    assert cfg.reconstruct_options == (("exp", "fast"), ("sg_mode", "pure"))
+    as_pairs = ev.EvalConfig(reconstruct_options=[["sg_mode", "pure"], ["exp", "fast"]])
+    assert as_pairs.key("mask1", "sg") == cfg.key("mask1", "sg")
+    hash(as_pairs)                                             # still hashable
+    np_typed = ev.EvalConfig(bit_depth=np.int64(11), noise=np.False_, seed=np.uint8(0))
+    assert np_typed.key("mask1", "sg") == ev.EvalConfig().key("mask1", "sg")
+    assert type(np_typed.bit_depth) is int and np_typed.noise is False
+    # every option reconstruct tunes is accepted, and what is accepted runs
+    tunable = _reconstruct.tuning_options()
+    assert set(tunable) == set(inspect.signature(_reconstruct._check_tuning).parameters)
+    params = inspect.signature(rz.reconstruct).parameters
+    frame = rz.mosaic(_rgb((8, 8)), "mask1")
+    for k in tunable:
+        opts = ev.EvalConfig(reconstruct_options={k: params[k].default}).reconstruct_options
+        rz.reconstruct(frame, "sg", **dict(opts))
+    for bad, exc in (({"method": "sg"}, ValueError), ({"pattern": "mask1"}, ValueError),
+                     ({"sigma_rel": None}, TypeError), ({1: 2}, TypeError),
+                     ({"domain": "lab"}, ValueError)):
+        with pytest.raises(exc, match="^reconstruct_options: "):
+            ev.EvalConfig(reconstruct_options=bad)
 
 
 def test_fixed_checks_keep_the_valid_calls():

@@ -34,8 +34,8 @@ from . import metrics as _metrics
 from ._frame import mosaic
 from ._patterns import get_pattern
 from ._plans import METHODS
-from ._reconstruct import reconstruct
-from ._validate import read_image_file
+from ._reconstruct import PRECISIONS, check_reconstruct_options, reconstruct
+from ._validate import check_bit_depth, check_choice, check_flag, check_seed, read_image_file
 
 __all__ = ["EvalConfig", "Results", "ImageSource", "sample_dataset", "folder_dataset",
            "evaluate", "evaluate_image", "write_reports", "atomic_write", "PAPER_TABLE3",
@@ -81,7 +81,7 @@ class EvalConfig:
         methods and metrics (``cfa_psnr``, ``cpsnr``, ``ssim``, ``ms_ssim``,
         ``zipper``).
     bit_depth : int
-        ADC bits of the simulated raw frames (11, as in the paper).
+        ADC bits of the simulated raw frames (11, as in the paper), 1..16.
     noise : bool
         False: the noise-free mosaic of the image. True: the sensor model of
         :mod:`rgbz_fast.sensor` (same exposure and noise draw on both paths).
@@ -89,12 +89,22 @@ class EvalConfig:
         Bayer demosaic of both paths (``malvar2004`` or ``menon2007``).
     crop : int
         Border (pixels) left out of the image metrics.
-    precision : str
+    precision : {"float32", "float64"}
         Arithmetic of the reconstruction kernels.
-    reconstruct_options : tuple of (name, value)
-        Extra keyword arguments of :func:`rgbz_fast.reconstruct`.
+    reconstruct_options : mapping or tuple of (name, value)
+        Extra keyword arguments of :func:`rgbz_fast.reconstruct`
+        (``sigma_floor``, ``sg_mode``, ``exp``, ``domain``, ...); stored as a
+        tuple of pairs sorted by name. ``method``, ``pattern``,
+        ``bit_depth``, ``precision`` and ``workers`` are set by the
+        evaluation, not here.
     seed : int
-        Noise seed (noisy runs).
+        Noise seed (noisy runs), an integer >= 0.
+
+    Raises
+    ------
+    ValueError, TypeError
+        At construction, naming the field, for any value the run could not
+        use (so that a bad configuration never reaches a worker process).
     """
 
     patterns: tuple = ("mask1", "mask2")
@@ -109,7 +119,7 @@ class EvalConfig:
     seed: int = 0
 
     def __post_init__(self):
-        for name in ("patterns", "methods", "metrics", "reconstruct_options"):
+        for name in ("patterns", "methods", "metrics"):
             v = getattr(self, name)
             if isinstance(v, str):
                 v = tuple(s for s in v.split(",") if s)
@@ -129,6 +139,15 @@ class EvalConfig:
             raise ValueError(f"crop: expected a non-negative integer, got {self.crop!r}")
         if not self.patterns or not self.methods or not self.metrics:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
+        # checked here, not in a worker: a bad value fails before any image is read
+        object.__setattr__(self, "bit_depth", check_bit_depth(self.bit_depth))
+        object.__setattr__(self, "noise", check_flag(self.noise, "noise"))
+        object.__setattr__(self, "precision", check_choice(
+            self.precision, tuple(PRECISIONS), "precision"))
+        object.__setattr__(self, "reconstruct_options", check_reconstruct_options(
+            self.reconstruct_options, "reconstruct_options",
+            by="the evaluation (EvalConfig.methods, bit_depth, precision; evaluate's workers)"))
+        object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
 
     @property
     def image_metrics(self):
