@@ -43,8 +43,6 @@ BUGS = {
           "linearly with max_range (1e7 m: 0.2 s per measurement); the default max_range of "
           "nearly coprime frequencies (80e6 + 1 and 100e6 Hz: 1.5e8 m) hangs tof_depth",
     "B3": "tof_isp.unwrap: phases outside [0, 2 pi) are accepted (1e300 gives depth inf)",
-    "B4": "metrics.ssim / ms_ssim: a huge data_range raises OverflowError, a tiny one "
-          "returns NaN",
     "B8": "tof_isp.demodulate: the phase can be exactly 2 pi (atan2 of a tiny negative Q "
           "plus 2 pi rounds up)",
     "B9": "write_reports on an empty Results raises IndexError; white_balance(dtype=int32) "
@@ -514,12 +512,19 @@ ROWS = [
     R("metrics.ssim-channel_axis-type", "ssim(channel_axis='x')",
       lambda f: metrics.ssim(_u8img(), _u8img(), channel_axis="x"), TypeError,
       "channel_axis: expected an integer or None"),
+    # SSIM's constants (0.01 L)**2 leave the doubles beyond these bounds (B4, fixed)
     R("metrics.ssim-data_range-huge", "ssim(data_range=1e300)",
       lambda f: metrics.ssim(_f64((16, 16), 1.0), _f64((16, 16)), data_range=1e300),
-      ValueError, "data_range:", bug="B4"),
+      ValueError, "data_range: expected a number in [1e-100, 1e+100] for SSIM"),
+    R("metrics.ssim-data_range-tiny", "ssim(data_range=1e-300)",
+      lambda f: metrics.ssim(_f64((16, 16)), _f64((16, 16)), data_range=1e-300),
+      ValueError, "data_range: expected a number in [1e-100, 1e+100] for SSIM"),
     R("metrics.ms_ssim-small", "ms_ssim(16x16)",
       lambda f: metrics.ms_ssim(_u8img(), _u8img()), ValueError,
       "reference: MS-SSIM with 5 scales needs at least 161 x 161 pixels"),
+    R("metrics.ms_ssim-data_range-huge", "ms_ssim(data_range=1e300)",
+      lambda f: metrics.ms_ssim(_f64((161, 161), 1.0), _f64((161, 161)), data_range=1e300),
+      ValueError, "data_range: expected a number in [1e-100, 1e+100] for SSIM"),
     R("metrics.ms_ssim-weights-empty", "ms_ssim(weights=[])",
       lambda f: metrics.ms_ssim(_u8img(), _u8img(), weights=[]), ValueError,
       "weights: expected a non-empty 1-D sequence"),
@@ -1486,6 +1491,21 @@ def test_eval_config_is_checked_and_normalised_at_construction():
                      ({"domain": "lab"}, ValueError)):
         with pytest.raises(exc, match="^reconstruct_options: "):
             ev.EvalConfig(reconstruct_options=bad)
+
+
+def test_ssim_data_range_at_its_bounds_is_scale_invariant():
+    """B4: within [1e-100, 1e100] SSIM and MS-SSIM are finite and do not depend on the
+    scale of the data (the constants scale with data_range), without any warning."""
+    rng = np.random.default_rng(0)
+    a = rng.random((161, 161))
+    b = np.clip(a + rng.normal(0, 0.05, a.shape), 0, 1)
+    want_ssim = metrics.ssim(a, b, data_range=1.0)
+    want_ms = metrics.ms_ssim(a, b, data_range=1.0)
+    assert 0 < want_ms < 1 and 0 < want_ssim < 1
+    for L in metrics.SSIM_DATA_RANGE:
+        assert metrics.ssim(a * L, b * L, data_range=L) == pytest.approx(want_ssim, rel=1e-9)
+        assert metrics.ms_ssim(a * L, b * L, data_range=L) == pytest.approx(want_ms, rel=1e-9)
+    assert metrics.ssim(np.zeros((16, 16)), np.zeros((16, 16)), data_range=1e-100) == 1.0
 
 
 def test_fixed_checks_keep_the_valid_calls():
