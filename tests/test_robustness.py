@@ -45,8 +45,6 @@ BUGS = {
     "B3": "tof_isp.unwrap: phases outside [0, 2 pi) are accepted (1e300 gives depth inf)",
     "B8": "tof_isp.demodulate: the phase can be exactly 2 pi (atan2 of a tiny negative Q "
           "plus 2 pi rounds up)",
-    "B9": "write_reports on an empty Results raises IndexError; white_balance(dtype=int32) "
-          "silently returns an integer image of 0s and 1s",
     "B10": "the fast exponential of rgbz_ops.h converts NaN to int (UB, found by UBSan) when "
            "sigma**2 underflows (tests/test_extremes.py::test_reconstruct_denormal_range_floats)",
 }
@@ -978,8 +976,8 @@ ROWS = [
       lambda f: isp.white_balance(_u16(), "mask1"), ValueError,
       "phase: the white balance needs a complete Bayer CFA"),
     R("isp.white_balance-dtype", "white_balance(dtype=int32)",
-      lambda f: isp.white_balance(_u16(), "bayer", dtype=np.int32), TypeError, "dtype: ",
-      bug="B9"),
+      lambda f: isp.white_balance(_u16(), "bayer", dtype=np.int32), TypeError,
+      "dtype: expected float32 or float64, got int32"),
     R("isp.grey_world_gains-z", "grey_world_gains(cfa, 'mask1')",
       lambda f: isp.grey_world_gains(_u16(), "mask1"), ValueError,
       "phase: the white balance needs a complete Bayer CFA"),
@@ -1166,7 +1164,10 @@ ROWS = [
       lambda f: ev.folder_dataset(f / "empty"), ValueError, "dataset: no image files in"),
     R("evaluate.write_reports-empty", "write_reports(Results([]))",
       lambda f: ev.write_reports(ev.Results([], ev.EvalConfig()), f / "reports_empty"),
-      ValueError, "results: ", bug="B9"),
+      ValueError, "results: no rows to report"),
+    R("evaluate.write_reports-type", "write_reports(list of rows)",
+      lambda f: ev.write_reports([], f / "reports_list"), TypeError,
+      "results: expected Results"),
 ]
 
 C = CliRow
@@ -1461,6 +1462,25 @@ def test_cli_reconstruct_of_a_broken_frame_writes_nothing(files, tmp_path, capsy
         assert err[0].startswith(f"rgbz-fast reconstruct: error: path: {files / name} is not "
                                  "a readable rgbz-fast frame"), err
     assert not out.exists() or not [p for p in out.rglob("*") if p.is_file()]
+
+
+def test_write_reports_of_no_rows_writes_nothing(tmp_path):
+    """B9: an empty Results is an error before anything is written; old reports stay."""
+    empty = ev.Results([], ev.EvalConfig())
+    with pytest.raises(ValueError, match="^results: no rows to report"):
+        ev.write_reports(empty, tmp_path / "new")
+    assert not (tmp_path / "new").exists()
+    rows = [{"image": "a", "pattern": "mask1", "method": "sg", "metric": "cfa_psnr",
+             "value": 30.0}]
+    full = ev.Results(rows, ev.EvalConfig(patterns=("mask1",), methods=("sg",),
+                                          metrics=("cfa_psnr",)))
+    written = ev.write_reports(full, tmp_path / "old", plots=False)
+    before = {p: p.read_bytes() for p in written}
+    with pytest.raises(ValueError, match="^results: no rows to report"):
+        ev.write_reports(empty, tmp_path / "old", plots=False)
+    with pytest.raises(ValueError, match="^table_image: 'b' is not in the results"):
+        ev.write_reports(full, tmp_path / "old", plots=False, table_image="b")
+    assert {p: p.read_bytes() for p in (tmp_path / "old").iterdir()} == before
 
 
 def test_eval_config_is_checked_and_normalised_at_construction():

@@ -632,7 +632,25 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     Returns the list of files written. ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
+
+    Raises
+    ------
+    TypeError
+        ``results`` is not a :class:`Results`.
+    ValueError
+        ``results`` holds no row (an empty table has nothing to summarise;
+        nothing is written, not even the folder), or ``table_image`` is not
+        one of its images.
     """
+    if not isinstance(results, Results):
+        raise TypeError(f"results: expected Results, got {type(results).__name__}")
+    if not results.rows:
+        raise ValueError("results: no rows to report (an evaluation of no image); nothing "
+                         "was written")
+    images = results.images()
+    if table_image is not None and table_image not in images:
+        raise ValueError(f"table_image: {table_image!r} is not in the results "
+                         f"({', '.join(images)})")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -644,7 +662,6 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     put("results.csv", results.to_csv())
     put("results.json", results.to_json())
     put("summary.md", "# Evaluation summary\n\n" + results.summary_markdown() + "\n")
-    images = results.images()
     if table_image is None:
         table_image = next((i for i in images if i.lower() == "kodim09"), images[0])
     put(f"table_{_safe(table_image)}.md", results.image_markdown(table_image) + "\n")
