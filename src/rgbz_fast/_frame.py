@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from ._patterns import Pattern, Z, get_pattern
-from ._validate import FRAME_DTYPES, check_bit_depth, check_image
+from ._validate import FRAME_DTYPES, check_bit_depth, check_dtype, check_image
 
 __all__ = ["RawFrame", "mosaic", "validate_frame"]
 
@@ -171,12 +171,13 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     """
     pattern = get_pattern(pattern)
     bd = check_bit_depth(bit_depth)
+    if input_bits is not None and (isinstance(input_bits, bool)
+                                   or not isinstance(input_bits, (int, np.integer))):
+        raise TypeError(f"input_bits: expected an integer number of bits, got {input_bits!r}")
     img = check_image(rgb, "rgb", ndim=3)
     if img.shape[2] != 3:
         raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {img.shape}")
-    out_dtype = np.dtype(dtype)
-    if out_dtype not in FRAME_DTYPES:
-        raise TypeError(f"dtype: expected one of uint8, uint16, float32, float64, got {out_dtype}")
+    out_dtype = check_dtype(dtype, FRAME_DTYPES)
     if out_dtype == np.uint8 and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     top = (1 << bd) - 1

@@ -11,6 +11,7 @@ References
 
 from __future__ import annotations
 
+import inspect
 from functools import lru_cache
 
 import numpy as np
@@ -220,18 +221,10 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
     data, pattern, bd = _prepare(frame, pattern, bit_depth)
     method = check_choice(method, tuple(METHODS), "method")
     precision = check_choice(precision, tuple(PRECISIONS), "precision")
-    sg_mode = check_choice(sg_mode, SG_MODES, "sg_mode")
-    exp = check_choice(exp, ("auto",) + tuple(EXP_MODES), "exp")
-    domain = check_choice(domain, DOMAINS, "domain")
     nthreads = check_workers(workers)
-    sigma_floor = _positive(sigma_floor, "sigma_floor")
-    edge_ratio = _positive(edge_ratio, "edge_ratio")
-    try:
-        sigma_rel = float(sigma_rel)
-    except (TypeError, ValueError):
-        raise TypeError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}") from None
-    if not 0 <= sigma_rel <= 10:
-        raise ValueError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}")
+    sg_mode, exp, domain, sigma_floor, sigma_rel, edge_ratio = _check_tuning(
+        sg_mode=sg_mode, exp=exp, domain=domain, sigma_floor=sigma_floor, sigma_rel=sigma_rel,
+        edge_ratio=edge_ratio)
     clip = _clip_level(clip_level, frame)
     out = _check_out(out, data)
     if not pattern.has_z:
@@ -287,6 +280,91 @@ def _reaches(data, pattern, level):
                 if v.size and v.max() >= level:
                     return True
     return False
+
+
+def _check_tuning(*, sg_mode, exp, domain, sigma_floor, sigma_rel, edge_ratio):
+    """The options of :func:`reconstruct` that tune its kernels, checked (and normalised).
+
+    Shared by :func:`reconstruct` and :func:`check_reconstruct_options`, so a
+    configuration is checked by the same code before any frame exists.
+    """
+    sg_mode = check_choice(sg_mode, SG_MODES, "sg_mode")
+    exp = check_choice(exp, ("auto",) + tuple(EXP_MODES), "exp")
+    domain = check_choice(domain, DOMAINS, "domain")
+    sigma_floor = _positive(sigma_floor, "sigma_floor")
+    edge_ratio = _positive(edge_ratio, "edge_ratio")
+    try:
+        sigma_rel = float(sigma_rel)
+    except (TypeError, ValueError):
+        raise TypeError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}") from None
+    if not 0 <= sigma_rel <= 10:
+        raise ValueError(f"sigma_rel: expected a number in [0, 10], got {sigma_rel!r}")
+    return sg_mode, exp, domain, sigma_floor, sigma_rel, edge_ratio
+
+
+#: arguments of :func:`reconstruct` that a batch caller (evaluate) sets itself
+CALLER_ARGS = ("frame", "method", "pattern", "bit_depth", "precision", "workers", "out")
+
+
+def tuning_options():
+    """Names of the keyword arguments of :func:`reconstruct` other than :data:`CALLER_ARGS`."""
+    return tuple(k for k in inspect.signature(reconstruct).parameters if k not in CALLER_ARGS)
+
+
+def check_reconstruct_options(options, name="reconstruct_options", *, by="the caller"):
+    """Extra keyword arguments of :func:`reconstruct`, checked before any frame exists.
+
+    Parameters
+    ----------
+    options : mapping or iterable of (name, value) pairs
+        Options such as ``sigma_floor``, ``sg_mode``, ``exp``, ``domain``.
+    name : str
+        The parameter named in the error messages.
+    by : str
+        Who sets the arguments of :data:`CALLER_ARGS` (for the message).
+
+    Returns
+    -------
+    tuple of (str, object)
+        The pairs sorted by name (hashable and picklable), values as given.
+
+    Raises
+    ------
+    TypeError
+        Not a mapping or pairs, a name that is not a string, a value of the
+        wrong type (``"{name}: sigma_floor: ..."``).
+    ValueError
+        An argument of :data:`CALLER_ARGS`, an unknown option, a bad value.
+    """
+    if isinstance(options, (str, bytes)):
+        opts = None
+    else:
+        try:
+            opts = dict(options)
+        except (TypeError, ValueError):
+            opts = None
+    if opts is None:
+        raise TypeError(f"{name}: expected a mapping or (name, value) pairs of keyword "
+                        f"arguments of reconstruct, got {options!r}")
+    if not all(isinstance(k, str) for k in opts):
+        raise TypeError(f"{name}: keys must be argument names, got {list(opts)!r}")
+    for k in CALLER_ARGS:
+        if k in opts:
+            raise ValueError(f"{name}: {k!r} is set by {by}, not through {name}")
+    tunable = tuning_options()
+    unknown = sorted(k for k in opts if k not in tunable)
+    if unknown:
+        raise ValueError(f"{name}: unknown option(s) {unknown}; expected some of {list(tunable)}")
+    params = inspect.signature(reconstruct).parameters
+    values = {k: params[k].default for k in tunable}
+    values.update(opts)
+    try:
+        _check_tuning(**{k: v for k, v in values.items() if k != "clip_level"})
+        if values.get("clip_level") != "auto":
+            _clip_level(values.get("clip_level"), None)
+    except (TypeError, ValueError) as exc:
+        raise type(exc)(f"{name}: {exc}") from None
+    return tuple(sorted(opts.items()))
 
 
 def _positive(value, name):

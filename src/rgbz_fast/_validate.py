@@ -1,13 +1,19 @@
-"""Argument checks shared by the public functions (Python validates, C computes)."""
+"""Argument checks shared by the public functions (Python validates, C computes).
+
+Also the one reader of image files (:func:`read_image_file`), which turns a
+file that does not decode into such an error, naming the parameter and the path.
+"""
 
 from __future__ import annotations
 
 import os
+from pathlib import Path
 
 import numpy as np
 
 __all__ = ["supported_float_type", "check_image", "check_bit_depth", "check_workers",
-           "check_choice", "check_finite", "check_number", "FRAME_DTYPES"]
+           "check_choice", "check_finite", "check_number", "check_dtype", "check_seed",
+           "check_flag", "read_image_file", "FRAME_DTYPES"]
 
 #: largest ``workers`` (threads of one kernel call); the result never depends on it
 MAX_WORKERS = 1024
@@ -103,3 +109,82 @@ def check_number(value, name, *, lo=None, lo_open=False, hi=None, allow_none=Fal
         bound = (" " + " and ".join(rng)) if rng else ""
         raise ValueError(f"{name}: expected a finite number{bound}, got {value!r}")
     return v
+
+
+def check_dtype(dtype, allowed, name="dtype"):
+    """``np.dtype(dtype)`` when it is one of ``allowed``, else TypeError naming ``name``.
+
+    A string NumPy does not know (``"junk"``) gets the same message as a known
+    dtype that is not allowed, instead of NumPy's "data type not understood".
+    """
+    allowed = tuple(np.dtype(d) for d in allowed)
+    names = [str(d) for d in allowed]
+    want = " or ".join(names) if len(names) == 2 else "one of " + ", ".join(names)
+    try:
+        dt = np.dtype(dtype)
+    except TypeError:
+        raise TypeError(f"{name}: expected {want}, got {dtype!r}") from None
+    if dt not in allowed:
+        raise TypeError(f"{name}: expected {want}, got {dt}")
+    return dt
+
+
+def check_seed(value, name="seed"):
+    """A random seed: an integer >= 0 (bool rejected), as int."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+        raise ValueError(f"{name}: expected an integer >= 0, got {value!r}")
+    return int(value)
+
+
+def check_flag(value, name):
+    """True or False (NumPy's bool too), as bool; 0/1 and strings are rejected."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name}: expected True or False, got {value!r}")
+    return bool(value)
+
+
+def read_image_file(path, name="path", decode=None):
+    """Decode an image file (PNG, TIFF, ...) read into memory first, as an ndarray.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file; a missing file raises ``FileNotFoundError`` (callers check
+        existence first when they promise another error).
+    name : str
+        The parameter named in the error message.
+    decode : callable, optional
+        ``decode(data: bytes) -> array_like``; default imageio's ``imread``
+        with the file's extension as the format hint.
+
+    Raises
+    ------
+    ValueError
+        ``"{name}: cannot read {path} as an image (...)"`` when the bytes do
+        not decode, or decode to no pixel.
+
+    Notes
+    -----
+    imageio leaks the file handles it opens when a file fails to decode
+    (``ResourceWarning``) and raises ``OSError``, ``ValueError`` and other
+    types depending on the plugin; decoding bytes leaves nothing to leak and
+    gives one exception type. The reason is kept on one line (the command
+    line prints one line per error).
+    """
+    p = Path(path)
+    data = p.read_bytes()
+    try:
+        if decode is None:
+            import imageio.v3 as iio
+
+            img = iio.imread(data, extension=p.suffix.lower() or None)
+        else:
+            img = decode(data)
+        img = np.asarray(img)
+    except Exception as exc:  # noqa: BLE001 - the decoders raise many types for bad data
+        reason = " ".join(str(exc).split()) or type(exc).__name__
+        raise ValueError(f"{name}: cannot read {p} as an image ({reason})") from None
+    if img.size == 0:
+        raise ValueError(f"{name}: cannot read {p} as an image (it decodes to no pixel, "
+                         f"shape {img.shape})")
+    return img

@@ -36,7 +36,7 @@ import numpy as np
 
 from . import _kernels
 from ._patterns import BAYER_PHASES, CHANNELS, Pattern
-from ._validate import FRAME_DTYPES, check_choice, check_image, check_workers
+from ._validate import FRAME_DTYPES, check_choice, check_dtype, check_image, check_workers
 
 __all__ = ["demosaic", "DEMOSAIC_METHODS", "DEMOSAIC_MODES"]
 
@@ -155,12 +155,7 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     if dtype is None:
         out_dtype = np.dtype(np.float64) if a.dtype == np.float64 else np.dtype(np.float32)
     else:
-        try:
-            out_dtype = np.dtype(dtype)
-        except TypeError:
-            raise TypeError(f"dtype: expected float32 or float64, got {dtype!r}") from None
-        if out_dtype not in (np.float32, np.float64):
-            raise TypeError(f"dtype: expected float32 or float64, got {out_dtype}")
+        out_dtype = check_dtype(dtype, (np.float32, np.float64))
     nthreads = check_workers(workers)
 
     if method == "malvar2004":

@@ -34,7 +34,8 @@ from . import metrics as _metrics
 from ._frame import mosaic
 from ._patterns import get_pattern
 from ._plans import METHODS
-from ._reconstruct import reconstruct
+from ._reconstruct import PRECISIONS, check_reconstruct_options, reconstruct
+from ._validate import check_bit_depth, check_choice, check_flag, check_seed, read_image_file
 
 __all__ = ["EvalConfig", "Results", "ImageSource", "sample_dataset", "folder_dataset",
            "evaluate", "evaluate_image", "write_reports", "atomic_write", "PAPER_TABLE3",
@@ -80,7 +81,7 @@ class EvalConfig:
         methods and metrics (``cfa_psnr``, ``cpsnr``, ``ssim``, ``ms_ssim``,
         ``zipper``).
     bit_depth : int
-        ADC bits of the simulated raw frames (11, as in the paper).
+        ADC bits of the simulated raw frames (11, as in the paper), 1..16.
     noise : bool
         False: the noise-free mosaic of the image. True: the sensor model of
         :mod:`rgbz_fast.sensor` (same exposure and noise draw on both paths).
@@ -88,18 +89,28 @@ class EvalConfig:
         Bayer demosaic of both paths (``malvar2004`` or ``menon2007``).
     crop : int
         Border (pixels) left out of the image metrics.
-    precision : str
+    precision : {"float32", "float64"}
         Arithmetic of the reconstruction kernels.
-    reconstruct_options : tuple of (name, value)
-        Extra keyword arguments of :func:`rgbz_fast.reconstruct`.
+    reconstruct_options : mapping or tuple of (name, value)
+        Extra keyword arguments of :func:`rgbz_fast.reconstruct`
+        (``sigma_floor``, ``sg_mode``, ``exp``, ``domain``, ...); stored as a
+        tuple of pairs sorted by name. ``method``, ``pattern``,
+        ``bit_depth``, ``precision`` and ``workers`` are set by the
+        evaluation, not here.
     seed : int
-        Noise seed (noisy runs).
+        Noise seed (noisy runs), an integer >= 0.
     clip_level : "auto", None or float
         The ``clip_level`` of :func:`rgbz_fast.reconstruct`. ``"auto"``
         (default): raw sources use the level their file records
         (:func:`rgbz_fast.rawio.frame_clip_level`), RGB sources none. None:
         no clip handling. A number (DN of the frames' bit depth): that level
         for every source. A ``clip_level`` in ``reconstruct_options`` wins.
+
+    Raises
+    ------
+    ValueError, TypeError
+        At construction, naming the field, for any value the run could not
+        use (so that a bad configuration never reaches a worker process).
     """
 
     patterns: tuple = ("mask1", "mask2")
@@ -115,7 +126,7 @@ class EvalConfig:
     clip_level: object = "auto"
 
     def __post_init__(self):
-        for name in ("patterns", "methods", "metrics", "reconstruct_options"):
+        for name in ("patterns", "methods", "metrics"):
             v = getattr(self, name)
             if isinstance(v, str):
                 v = tuple(s for s in v.split(",") if s)
@@ -135,6 +146,15 @@ class EvalConfig:
             raise ValueError(f"crop: expected a non-negative integer, got {self.crop!r}")
         if not self.patterns or not self.methods or not self.metrics:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
+        # checked here, not in a worker: a bad value fails before any image is read
+        object.__setattr__(self, "bit_depth", check_bit_depth(self.bit_depth))
+        object.__setattr__(self, "noise", check_flag(self.noise, "noise"))
+        object.__setattr__(self, "precision", check_choice(
+            self.precision, tuple(PRECISIONS), "precision"))
+        object.__setattr__(self, "reconstruct_options", check_reconstruct_options(
+            self.reconstruct_options, "reconstruct_options",
+            by="the evaluation (EvalConfig.methods, bit_depth, precision; evaluate's workers)"))
+        object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
         if self.clip_level is not None and not isinstance(self.clip_level, str):
             from ._reconstruct import _clip_level
             object.__setattr__(self, "clip_level", _clip_level(self.clip_level, None))
@@ -211,8 +231,7 @@ class ImageSource:
             import skimage.data
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
         else:
-            import imageio.v3 as iio
-            img = iio.imread(self.location)
+            img = read_image_file(self.location, "dataset")
         img = np.asarray(img)
         if img.ndim == 2:
             img = np.repeat(img[..., None], 3, axis=2)
@@ -442,8 +461,9 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, workers=None, schedul
     Parameters
     ----------
     dataset : list of ImageSource, str or Path, optional
-        A list from :func:`sample_dataset` / :func:`folder_dataset`, or a
-        folder. Default: :func:`sample_dataset` (runs offline).
+        A list (any iterable) from :func:`sample_dataset` /
+        :func:`folder_dataset`, or a folder. Default: :func:`sample_dataset`
+        (runs offline).
     config : EvalConfig, optional
         What to run; keyword arguments build one when it is None.
     cache_dir : str or Path, optional
@@ -464,9 +484,17 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, workers=None, schedul
         dataset = sample_dataset()
     elif isinstance(dataset, (str, os.PathLike)):
         dataset = folder_dataset(dataset)
-    dataset = list(dataset)
+    try:
+        dataset = list(dataset)
+    except TypeError:
+        raise TypeError(f"dataset: expected a list of ImageSource, a folder or None, got "
+                        f"{type(dataset).__name__}") from None
     if not dataset:
         raise ValueError("dataset: no images")
+    bad = [s for s in dataset if not isinstance(s, ImageSource)]
+    if bad:
+        raise TypeError(f"dataset: expected ImageSource entries (see folder_dataset), got "
+                        f"{type(bad[0]).__name__} {bad[0]!r}")
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")
@@ -634,7 +662,25 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     Returns the list of files written. ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
+
+    Raises
+    ------
+    TypeError
+        ``results`` is not a :class:`Results`.
+    ValueError
+        ``results`` holds no row (an empty table has nothing to summarise;
+        nothing is written, not even the folder), or ``table_image`` is not
+        one of its images.
     """
+    if not isinstance(results, Results):
+        raise TypeError(f"results: expected Results, got {type(results).__name__}")
+    if not results.rows:
+        raise ValueError("results: no rows to report (an evaluation of no image); nothing "
+                         "was written")
+    images = results.images()
+    if table_image is not None and table_image not in images:
+        raise ValueError(f"table_image: {table_image!r} is not in the results "
+                         f"({', '.join(images)})")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -646,7 +692,6 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     put("results.csv", results.to_csv())
     put("results.json", results.to_json())
     put("summary.md", "# Evaluation summary\n\n" + results.summary_markdown() + "\n")
-    images = results.images()
     if table_image is None:
         table_image = next((i for i in images if i.lower() == "kodim09"), images[0])
     put(f"table_{_safe(table_image)}.md", results.image_markdown(table_image) + "\n")

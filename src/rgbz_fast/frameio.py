@@ -17,6 +17,7 @@ import numpy as np
 
 from ._frame import RawFrame
 from ._patterns import get_pattern
+from ._validate import read_image_file
 
 __all__ = ["save_frame", "load_frame", "FRAME_SUFFIXES"]
 
@@ -88,43 +89,105 @@ def load_frame(path, *, pattern=None, bit_depth=None, **raw_kwargs):
 
     ``pattern`` and ``bit_depth`` are needed for a TIFF or PNG that carries
     no rgbz-fast header; they override nothing in files that do.
+
+    Raises
+    ------
+    ValueError
+        ``"path: ..."`` naming the file when it does not exist or cannot be
+        read: an NPZ that is truncated, not a zip archive, or lacks the
+        frame's arrays or header keys (``pattern``, ``bit_depth``); a TIFF or
+        PNG that does not decode; a header that is not JSON or describes no
+        valid frame. The errors of :func:`rgbz_fast.rawio.read_raw` for
+        other files.
     """
     path = Path(path)
     if not path.exists():
         raise ValueError(f"path: {path} does not exist")
     suffix = path.suffix.lower()
     if suffix == ".npz":
-        with np.load(path, allow_pickle=False) as z:
-            if "header" not in z or "data" not in z:
-                raise ValueError(f"path: {path} is not an rgbz-fast frame (no header/data)")
-            header = json.loads(str(z["header"]))
-            ref = z["reference"] if "reference" in z else None
-            tof = _load_tof(z, header["tof"]) if "tof_taps" in z else None
-            data = z["data"]
-        return RawFrame(data, _pattern(header), header["bit_depth"], reference=ref, tof=tof,
-                        meta=header.get("meta", {}))
+        return _load_npz(path)
     if suffix in (".tif", ".tiff"):
         import tifffile
 
-        with tifffile.TiffFile(path) as tf:
-            data = tf.asarray()
-            desc = tf.pages[0].description or ""
+        desc = []
+
+        def decode(blob):
+            with tifffile.TiffFile(io.BytesIO(blob)) as tf:
+                desc.append(tf.pages[0].description or "")     # IndexError: no page
+                return tf.asarray()
+
+        data = read_image_file(path, "path", decode)
         try:
-            header = json.loads(desc)
+            header = json.loads(desc[0])
         except ValueError:
             header = None
         if isinstance(header, dict) and header.get("format") == _FORMAT_TAG:
-            return RawFrame(data, _pattern(header), header["bit_depth"],
-                            meta=header.get("meta", {}))
+            return _checked(path, lambda: RawFrame(data, _pattern(header), header["bit_depth"],
+                                                   meta=header.get("meta", {})))
     from . import rawio
 
     if pattern is not None and suffix in (".tif", ".tiff", ".png"):
         if bit_depth is None:
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
-        import imageio.v3 as iio
-        data = np.asarray(iio.imread(path))
+        data = read_image_file(path, "path")
         return RawFrame(data, get_pattern(pattern), bit_depth, meta={"source": str(path)})
     return rawio.read_raw(path, **raw_kwargs)
+
+
+def _checked(path, build):
+    """``build()``, reporting what is wrong with the file's content as a ValueError naming it.
+
+    The content of a frame file is the value of ``path``: a missing header
+    key or archive member, a header that is not JSON, an array or a pattern
+    RawFrame rejects all mean the file is not a readable frame.
+    """
+    try:
+        return build()
+    except KeyError as exc:
+        raise ValueError(f"path: {path} is not a readable rgbz-fast frame (missing key "
+                         f"{exc})") from None
+    except (ValueError, TypeError) as exc:
+        raise ValueError(f"path: {path} is not a readable rgbz-fast frame ({exc})") from None
+
+
+def _load_npz(path):
+    """An NPZ frame; every way the file can be broken is a ValueError naming it."""
+    import zipfile
+    import zlib
+
+    broken = (zipfile.BadZipFile, zlib.error, EOFError, OSError)
+
+    def build():
+        # np.load(path) leaks the file it opened when the archive is broken: open it here
+        with open(path, "rb") as fh:
+            if fh.read(2) != b"PK":          # else np.load tries an .npy array, then a pickle
+                raise ValueError("not an NPZ archive: no zip signature")
+            fh.seek(0)
+            try:
+                z = np.load(fh, allow_pickle=False)
+            except broken + (ValueError,) as exc:
+                raise ValueError(f"not an NPZ archive: {type(exc).__name__}: {exc}") from None
+            with z:
+                if "header" not in z or "data" not in z:
+                    raise ValueError("no header/data")
+                try:
+                    try:
+                        header = json.loads(str(z["header"]))
+                    except ValueError as exc:
+                        raise ValueError(f"the header is not JSON: {exc}") from None
+                    if not isinstance(header, dict):
+                        raise ValueError(f"the header is a JSON {type(header).__name__}, "
+                                         "not an object")
+                    ref = z["reference"] if "reference" in z else None
+                    tof = _load_tof(z, header["tof"]) if "tof_taps" in z else None
+                    data = z["data"]
+                except broken as exc:
+                    raise ValueError(f"a damaged archive member: {type(exc).__name__}: "
+                                     f"{exc}") from None
+        return RawFrame(data, _pattern(header), header["bit_depth"], reference=ref, tof=tof,
+                        meta=header.get("meta", {}))
+
+    return _checked(path, build)
 
 
 def _pattern(header):

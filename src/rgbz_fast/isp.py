@@ -32,8 +32,8 @@ import numpy as np
 from ._frame import RawFrame
 from ._patterns import Z, get_pattern
 from ._reconstruct import reconstruct
-from ._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
-                        check_number)
+from ._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_dtype,
+                        check_flag, check_image, check_number)
 from .demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES, demosaic
 from .tof_isp import ToFDepth, ToFISP, tof_depth
 
@@ -53,12 +53,7 @@ _PRECISIONS = {"float32": np.float32, "float64": np.float64}
 
 
 _real = check_number   # one validator for every numeric parameter (_validate.py)
-
-
-def _flag(value, name):
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name}: expected True or False, got {value!r}")
-    return bool(value)
+_flag = check_flag     # and one for every True/False parameter
 
 
 # =========================================================================== parameters
@@ -534,6 +529,8 @@ def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
     gains : array_like (3,), optional
         R, G, B gains; override ``params`` (e.g. the reference path's).
     dtype : float32 or float64
+        The output is normalised to [0, 1] (white = 1), so only floats hold
+        it; an integer dtype raises TypeError, as in :func:`demosaic`.
 
     Returns
     -------
@@ -541,6 +538,7 @@ def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
     gains : ndarray of float64, shape (3,)
         The gains used.
     """
+    dt = check_dtype(dtype, (np.float32, np.float64))
     data = check_image(cfa, "cfa", ndim=2)
     if not isinstance(params, WhiteBalance):
         raise TypeError(f"params: expected WhiteBalance, got {type(params).__name__}")
@@ -557,7 +555,6 @@ def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
         g = grey_world_gains(data, pattern, black_level=black, white_level=white)
     else:
         g = np.ones(3)
-    dt = np.dtype(dtype)
     scale = (g / (white - black)).astype(dt)
     out = data.astype(dt)
     out -= dt.type(black)

@@ -83,6 +83,23 @@ def _check_positive_real(value, name, *, allow_zero=False):
     return value
 
 
+#: the data_range SSIM and MS-SSIM accept: c1 = (0.01 L)**2 and the local moments of data
+#: in [0, L] (squares of about L**2) stay normal, finite doubles with a wide margin (1e-100
+#: to 1e100 leaves 1e54 for data beyond L); outside, c1 overflows (OverflowError) or
+#: underflows to 0 (0/0 = NaN in flat windows)
+SSIM_DATA_RANGE = (1e-100, 1e100)
+
+
+def _check_ssim_data_range(value):
+    peak = _check_positive_real(value, "data_range")
+    lo, hi = SSIM_DATA_RANGE
+    if not lo <= peak <= hi:
+        raise ValueError(f"data_range: expected a number in [{lo:g}, {hi:g}] for SSIM, got "
+                         f"{value!r}; rescale the images (the constants (0.01 * data_range)**2 "
+                         "and the squared data must stay normal, finite doubles)")
+    return peak
+
+
 def _check_int(value, name, minimum):
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise TypeError(f"{name}: expected an integer, got {value!r}")
@@ -433,8 +450,10 @@ def ssim(reference, test, *, data_range=255, crop=0, channel_axis=-1, gaussian_w
     test : ndarray, same shape as `reference`
         Image under test.
     data_range : float, default 255
-        The dynamic range :math:`L` of the images (``2**bit_depth - 1``).
-        Integer images must lie in [0, data_range].
+        The dynamic range :math:`L` of the images (``2**bit_depth - 1``),
+        in [1e-100, 1e100] (:data:`SSIM_DATA_RANGE`; beyond, the constants
+        :math:`c_1, c_2` leave the range of doubles). Integer images must lie
+        in [0, data_range].
     crop : int, default 0
         Pixels removed from each border of the rows and columns first.
     channel_axis : int or None, default -1
@@ -500,7 +519,7 @@ def ssim(reference, test, *, data_range=255, crop=0, channel_axis=-1, gaussian_w
     True
     """
     ref, tst = _check_pair(reference, test, (2, 3))
-    peak = _check_positive_real(data_range, "data_range")
+    peak = _check_ssim_data_range(data_range)
     win_size, sigma = _check_ssim_window(win_size, sigma)
     gaussian_weights = bool(gaussian_weights)
     _check_integer_range((ref, tst), ("reference", "test"), peak)
@@ -536,8 +555,8 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     test : ndarray, same shape as `reference`
         Image under test.
     data_range : float, default 255
-        The dynamic range :math:`L` of the images. Integer images must lie in
-        [0, data_range].
+        The dynamic range :math:`L` of the images, in [1e-100, 1e100] as in
+        :func:`ssim`. Integer images must lie in [0, data_range].
     crop : int, default 0
         Pixels removed from each border of the rows and columns first.
     weights : sequence of float, default :data:`MS_SSIM_WEIGHTS`
@@ -558,7 +577,8 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     ValueError
         If the (cropped) image is smaller than
         ``10 * 2**(M - 1) + 1`` pixels on a side (161 for five scales), so
-        that the coarsest scale still holds one 11 x 11 window.
+        that the coarsest scale still holds one 11 x 11 window; if
+        `data_range` lies outside [1e-100, 1e100].
 
     Notes
     -----
@@ -598,7 +618,7 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     ValueError: reference: MS-SSIM with 5 scales needs at least 161 x 161 pixels ...
     """
     ref, tst = _check_pair(reference, test, (2, 3))
-    peak = _check_positive_real(data_range, "data_range")
+    peak = _check_ssim_data_range(data_range)
     if isinstance(weights, (str, bytes)) or not hasattr(weights, "__len__"):
         raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}")
     try:

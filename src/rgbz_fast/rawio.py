@@ -21,6 +21,7 @@ References
 
 from __future__ import annotations
 
+import io
 import os
 import warnings
 from pathlib import Path
@@ -29,7 +30,7 @@ import numpy as np
 
 from ._frame import RawFrame
 from ._patterns import BAYER_PHASES, Z, bayer, mask1, mask2, rows
-from ._validate import check_bit_depth
+from ._validate import check_bit_depth, check_dtype, check_number, read_image_file
 
 __all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask", "frame_clip_level",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS"]
@@ -128,9 +129,12 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     ------
     ImportError
         A camera raw file without rawpy installed.
+    FileNotFoundError
+        The file does not exist.
     ValueError
         A missing phase or level (naming the parameter), a headerless file
-        whose size does not match ``shape``, an unknown extension, a
+        whose size does not match ``shape``, an unknown extension, a file
+        LibRaw, the PNG or the TIFF decoder cannot read (``"path: ..."``), a
         non-Bayer sensor (X-Trans, CMYG), white level not above black.
 
     Notes
@@ -171,9 +175,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     path = Path(os.fspath(path))
     kind = _reader_for(path, reader)
     bd = check_bit_depth(bit_depth)
-    out_dtype = np.dtype(dtype)
-    if out_dtype not in _OUT_DTYPES:
-        raise TypeError(f"dtype: expected one of uint8, uint16, float32, float64, got {out_dtype}")
+    out_dtype = check_dtype(dtype, _OUT_DTYPES)
     if out_dtype == np.uint8 and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     k = _check_downsample(downsample)
@@ -404,6 +406,14 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
     -------
     ndarray of bool, shape (rows, cols)
 
+    Raises
+    ------
+    TypeError
+        ``clip_level`` is not a number.
+    ValueError
+        ``clip_level`` is NaN or infinite (a NaN level would flag nothing),
+        or missing for a plain array; ``radius`` is not an integer >= 0.
+
     Examples
     --------
     >>> import numpy as np
@@ -412,6 +422,10 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
     array([[0, 1],
            [0, 1]])
     """
+    if clip_level is not None:
+        clip_level = check_number(clip_level, "clip_level")
+    if isinstance(radius, bool) or not isinstance(radius, (int, np.integer)) or radius < 0:
+        raise ValueError(f"radius: expected a non-negative integer, got {radius!r}")
     if isinstance(frame, RawFrame):
         stored = frame.meta.get("clipped")
         if clip_level is None and isinstance(stored, np.ndarray) and stored.shape == frame.shape:
@@ -428,8 +442,6 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
         if data.ndim != 2:
             raise ValueError(f"frame: expected a 2-D array, got shape {data.shape}")
         mask = data >= clip_level
-    if isinstance(radius, bool) or not isinstance(radius, (int, np.integer)) or radius < 0:
-        raise ValueError(f"radius: expected a non-negative integer, got {radius!r}")
     if radius > 0:
         from scipy.ndimage import maximum_filter
 
@@ -572,15 +584,13 @@ def _tiff_make_model(path):
 
 
 def _read_image(path):
+    decode = None
     if path.suffix.lower() in (".tif", ".tiff"):
         import tifffile
 
-        data = tifffile.imread(path, key=0)
-    else:
-        import imageio.v3 as iio
-
-        data = iio.imread(path)
-    data = np.asarray(data)
+        def decode(blob):
+            return tifffile.imread(io.BytesIO(blob), key=0)   # the first page only
+    data = read_image_file(path, "path", decode)
     if data.ndim != 2:
         raise ValueError(f"{path.name}: expected a single-channel Bayer mosaic, got an image "
                          f"of shape {data.shape} (a demosaicked RGB image is not raw data)")

@@ -52,7 +52,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._validate import check_image
+from ._validate import check_image, read_image_file
 
 __all__ = [
     "Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
@@ -447,17 +447,6 @@ def _int_to_unit(img, name):
 # --------------------------------------------------------------------------
 # loaders
 # --------------------------------------------------------------------------
-def _read_image(path, name):
-    import imageio.v3 as iio
-
-    p = Path(path)
-    data = p.read_bytes()   # imageio leaks file handles when a file fails to decode
-    try:
-        return np.asarray(iio.imread(data, extension=p.suffix.lower() or None))
-    except Exception as exc:  # imageio raises several types for undecodable data
-        raise ValueError(f"{name}: cannot read {p} as an image ({exc})") from None
-
-
 def _require_file(path, what):
     p = Path(path)
     if not p.is_file():
@@ -481,7 +470,7 @@ def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflec
         If it is not an RGB(A) image.
     """
     p = _require_file(path, "path")
-    img = _read_image(p, "path")
+    img = read_image_file(p, "path")
     if img.ndim == 3 and img.shape[2] == 4:
         img = img[..., :3]
     if img.ndim != 3 or img.shape[2] != 3:
@@ -531,7 +520,7 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
             raise FileNotFoundError(f"path: no PNG band files in folder {p}")
         bands = []
         for f in files:
-            b = _read_image(f, "path")
+            b = read_image_file(f, "path")
             if b.ndim != 2:
                 raise ValueError(f"path: band file {f.name} has shape {b.shape}; expected a "
                                  "single-band (grey) image")
@@ -625,12 +614,12 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
                          f"offset), got {text[:40]!r}") from None
     if not math.isfinite(dmin) or dmin < 0:
         raise ValueError(f"folder: dmin.txt gives {dmin}; expected a disparity offset >= 0")
-    rgb = _read_image(d / "rgb.png", "folder")
+    rgb = read_image_file(d / "rgb.png", "folder")
     if rgb.ndim == 3 and rgb.shape[2] == 4:
         rgb = rgb[..., :3]
     if rgb.ndim != 3 or rgb.shape[2] != 3:
         raise ValueError(f"folder: rgb.png has shape {rgb.shape}; expected an RGB image")
-    disp = _read_image(d / "disp1.png", "folder")
+    disp = read_image_file(d / "disp1.png", "folder")
     if disp.ndim == 3 and disp.shape[2] in (3, 4) and np.all(disp[..., 0:1] == disp[..., :3]):
         disp = disp[..., 0]
     if disp.ndim != 2:

@@ -100,7 +100,7 @@ import numpy as np
 
 from ._frame import RawFrame
 from ._patterns import Z, get_pattern
-from ._validate import check_bit_depth
+from ._validate import check_bit_depth, check_flag, check_seed
 from .scene import Scene, estimate_ir_reflectance, load_scene
 
 __all__ = [
@@ -168,16 +168,11 @@ def _num(obj, name, *, lo=None, hi=None, lo_open=False, hi_open=False, allow_inf
 
 
 def _flag(obj, name):
-    value = getattr(obj, name)
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{type(obj).__name__}.{name}: expected True or False, got {value!r}")
-    object.__setattr__(obj, name, bool(value))
+    value = check_flag(getattr(obj, name), f"{type(obj).__name__}.{name}")
+    object.__setattr__(obj, name, value)
 
 
-def _seed(value, name):
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-        raise ValueError(f"{name}: expected an integer >= 0, got {value!r}")
-    return int(value)
+_seed = check_seed   # one seed check for the sensors, simulate and EvalConfig (_validate.py)
 
 
 def _spectrum_param(obj, name, ncols):
