@@ -249,10 +249,16 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
             num = OADD(num, OMUL(w2, OSUB(c2, c0)));
             num = OADD(num, OMUL(w3, OSUB(c3, c0)));
             /* den >= exp(-1/2) for finite input (sigma >= the smallest SG); the mean
-               (rgbz_mean's formula, not counted: never taken) covers non-finite input */
+               (rgbz_mean's formula) covers non-finite input */
             const REAL mean = c0 + (((c1 - c0) + (c2 - c0)) + (c3 - c0)) / (REAL)4;
             const REAL q = den > (REAL)0 ? den : (REAL)1;
             REAL r = den > (REAL)0 ? OADD(c0, ODIV(num, q)) : mean;
+#ifdef RGBZ_COUNT_OPS
+            if (!(den > (REAL)0)) {     /* the fallback mean: 6 additions, 1 division */
+                for (int i = 0; i < 6; i++) OPC_(RGBZ_OP_ADD);
+                OPC_(RGBZ_OP_DIV);
+            }
+#endif
             r = r > (REAL)0 ? r : (REAL)0;    /* also maps a NaN to 0 */
             r = r > maxval ? maxval : r;
 #if IN_IS_INT
@@ -394,10 +400,16 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict s
             REAL num = OMUL(w1, OSUB(c1, c0));
             num = OADD(num, OMUL(w2, OSUB(c2, c0)));
             num = OADD(num, OMUL(w3, OSUB(c3, c0)));
-            /* the plain mean (rgbz_mean's formula, not counted) when every weight underflows */
+            /* the plain mean (rgbz_mean's formula) when every weight underflows */
             const REAL mean = c0 + (((c1 - c0) + (c2 - c0)) + (c3 - c0)) / (REAL)4;
             const REAL q = den > (REAL)0 ? den : (REAL)1;
             REAL r = den > (REAL)0 ? OADD(c0, ODIV(num, q)) : mean;
+#ifdef RGBZ_COUNT_OPS
+            if (!(den > (REAL)0)) {     /* the fallback mean: 6 additions, 1 division */
+                for (int i = 0; i < 6; i++) OPC_(RGBZ_OP_ADD);
+                OPC_(RGBZ_OP_DIV);
+            }
+#endif
             r = r > (REAL)0 ? r : (REAL)0;
             r = r > maxval ? maxval : r;
 #if IN_IS_INT
