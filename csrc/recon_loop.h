@@ -48,6 +48,47 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
         int row_has_z = 0;
         for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
         if (!row_has_z) continue;           /* a colour-only row: the copy is the output */
+        if (!clip_on && !fast_row) {
+            /* the sites of one tile column share a plan: run them in blocks (rgbz_site_block),
+               except edi_rows, whose sites go one by one */
+            int blockable = 1;
+            for (int i = 0; i < px; i++)
+                if (pm[i] >= 0 && plans[pm[i]].method == RGBZ_M_EDI_ROWS) blockable = 0;
+            if (blockable) {
+                for (int ph0 = 0; ph0 < px && ph0 < cols; ph0++) {
+                    const int pl = pm[ph0];
+                    if (pl < 0) continue;
+                    const rgbz_plan *p = &plans[pl];
+#ifdef RGBZ_COUNT_OPS
+                    rgbz_opc_cur_count = opcounts + (size_t)pl * RGBZ_NOPS;
+#endif
+                    REAL vb[RGBZ_MAX_TAPS][RGBZ_BLK];
+                    REAL rb[RGBZ_BLK];
+                    for (ptrdiff_t x0b = ph0; x0b < cols; x0b += (ptrdiff_t)px * RGBZ_BLK) {
+                        ptrdiff_t left = (cols - 1 - x0b) / px + 1;
+                        const int n = (int)(left < RGBZ_BLK ? left : RGBZ_BLK);
+                        for (int t = 0; t < p->n_taps; t++) {
+                            const IN_T *restrict row = rowp[p->tap_dy[t] + ry];
+                            const ptrdiff_t *cm = colmap + x0b + rx + p->tap_dx[t];
+                            for (int j = 0; j < n; j++) vb[t][j] = (REAL)row[cm[(ptrdiff_t)j * px]];
+                        }
+                        SITE(rgbz_site_block, RS)(vb, n, p, floor_, rel, exp_mode, rb);
+                        IN_T *restrict d = dst + y * cols + x0b;
+                        for (int j = 0; j < n; j++) {
+                            REAL r = rb[j];
+                            if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
+                            if (r > maxval) r = maxval;
+#if IN_IS_INT
+                            d[(ptrdiff_t)j * px] = (IN_T)(r + (REAL)0.5);
+#else
+                            d[(ptrdiff_t)j * px] = (IN_T)r;
+#endif
+                        }
+                    }
+                }
+                continue;
+            }
+        }
         /* a fast row leaves only its two border columns at each end to the interpreter */
         for (int seg = 0; seg < (fast_row ? 2 : 1); seg++) {
             const ptrdiff_t xa = fast_row ? (seg ? (cols - 2 > 2 ? cols - 2 : 2) : 0) : 0;
