@@ -453,18 +453,22 @@ def test_kernel_rejects_clip_with_the_mask1_fast_path():
 def test_eval_config_clip_level():
     from rgbz_fast.evaluate import EvalConfig
 
-    c = EvalConfig()
+    c = EvalConfig(clip_level="auto")
+    assert EvalConfig().clip_level is None                  # off by default (docs/raw.md)
     assert c.clip_level == "auto"
-    assert EvalConfig(clip_level=None).clip_level is None
     assert EvalConfig(clip_level=2000).clip_level == 2000.0
     for bad, exc in (("high", ValueError), (np.nan, ValueError), (-3, ValueError),
                      (True, TypeError)):
         with pytest.raises(exc, match="clip_level"):
             EvalConfig(clip_level=bad)
-    # "auto" leaves the cache keys of RGB sources as they were; raw sources key on it
-    assert c.key("mask1", "sg") == EvalConfig(reconstruct_options=()).key("mask1", "sg")
+    # None (the default) and, for RGB sources, "auto" leave the cache keys as they were;
+    # raw sources key on "auto" and on a level
+    off = EvalConfig()
+    assert c.key("mask1", "sg") == off.key("mask1", "sg")
+    assert off.key("mask1", "sg", raw=True) == off.key("mask1", "sg")
     assert c.key("mask1", "sg", raw=True) != c.key("mask1", "sg")
-    assert EvalConfig(clip_level=None).key("mask1", "sg") != c.key("mask1", "sg")
+    assert EvalConfig(clip_level=2000).key("mask1", "sg") != off.key("mask1", "sg")
+    assert off.reconstruct_kwargs() == {"clip_level": None}
     assert c.reconstruct_kwargs() == {"clip_level": "auto"}
     assert EvalConfig(reconstruct_options=(("clip_level", 5),)).reconstruct_kwargs() == \
         {"clip_level": 5}
@@ -495,8 +499,8 @@ def test_evaluate_raw_source_passes_the_level(tmp_path, monkeypatch):
                         or real(f, m, **k))
     kw = dict(workers=1, progress=False, metrics=("cfa_psnr",), methods=("edi_line",),
               patterns=("mask1",))
-    on = ev.evaluate(ds, **kw).values("mask1", "edi_line", "cfa_psnr")
-    off = ev.evaluate(ds, clip_level=None, **kw).values("mask1", "edi_line", "cfa_psnr")
+    on = ev.evaluate(ds, clip_level="auto", **kw).values("mask1", "edi_line", "cfa_psnr")
+    off = ev.evaluate(ds, **kw).values("mask1", "edi_line", "cfa_psnr")   # the default
     assert seen == [2041.0, None]
     assert on[0] != off[0]
 
@@ -513,11 +517,12 @@ def test_cli_clip_level(tmp_path, capsys):
     rgbz, _ = to_rgbz(f, "mask1")
     src = frameio.save_frame(tmp_path / "chart.npz", rgbz)
     outs = {}
-    for flag in ("auto", "off", "2041"):
-        out = tmp_path / flag
+    for flag in ("auto", "off", "2041", None):
+        out = tmp_path / str(flag)
         assert main(["reconstruct", str(src), "--method", "edi_line", "--out", str(out),
-                     "--clip-level", flag, "--quiet"]) == 0
+                     "--quiet"] + (["--clip-level", flag] if flag else [])) == 0
         outs[flag] = tifffile.imread(out / "chart_edi_line_cfa.tif")
+    np.testing.assert_array_equal(outs[None], outs["off"])             # off by default
     np.testing.assert_array_equal(outs["auto"], rz.reconstruct(rgbz, "edi_line",
                                                                clip_level=2041.0))
     np.testing.assert_array_equal(outs["auto"], outs["2041"])
