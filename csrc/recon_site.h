@@ -432,21 +432,25 @@ RGBZ_CLONES static void RFN(rgbz_site_block)(REAL (*v)[RGBZ_BLK], int n, const r
 /*
  * The same site near clipping (docs/raw.md, "Near clipping"; docs/interpretation.md).
  * `clipped` has bit t set when tap t holds a clipped (saturated) value: a lower bound of
- * the truth, so it is used as a value but never as a measurement in a weight:
- *   - a difference (gradient pair, semi-gradient pair, edi_rows direction, beta term)
- *     touching a clipped pixel is skipped, like a difference touching a Z pixel, and a
+ * the truth. It is used as a value; in a weight, what is unknown is only a difference
+ * between two clipped pixels (both true values are somewhere >= the level, their clipped
+ * difference 0 is fake flatness). A difference between a clipped pixel a and an unclipped
+ * pixel b is a true lower bound of |a_true - b| ("at least this much edge") and is kept:
+ *   - a difference (gradient pair, semi-gradient pair, edi_rows direction) whose two
+ *     pixels are both clipped is skipped, like a difference touching a Z pixel, and a
  *     group is the mean of the differences it has left; a group with none left is
  *     unknown: left out of sigma and gamma = 0 (the rule for groups without valid
  *     differences), every gamma 1 if no group of the family is known; the factors
  *     built from the gammas (eq. 6 per orientation, eq. 19 per candidate) are unchanged,
  *     so a candidate covered only by unknown semi-gradients gets 0;
- *   - beta (eq. 4): a measured candidate (not clipped, with at least one non-clipped
- *     partner) sums its differences to the non-clipped candidates, rescaled to the n - 1
- *     terms of eq. 4; every other candidate takes the largest sum of the measured ones
- *     (the smallest beta); if no candidate is measured every beta is 1;
- *   - edi_rows: a direction touching a clipped pixel cannot be chosen; if the vertical
- *     one (c) is clipped there is no edge test and the value is the vertical mean.
- * Where no tap is clipped the loop calls rgbz_site, so clip_on changes nothing there.
+ *   - beta (eq. 4): a term between two clipped candidates is skipped; a clipped candidate
+ *     sums its u terms to the unclipped candidates, rescaled to the n - 1 terms of eq. 4;
+ *     an unclipped candidate keeps all its terms; if every candidate is clipped no term
+ *     is left and every beta is 1;
+ *   - edi_rows: a direction whose two pixels are clipped cannot be chosen; if the vertical
+ *     one (c) is such a direction there is no edge test and the value is the vertical mean.
+ * Where no tap is clipped the loop calls rgbz_site, so clip_on changes nothing there; where
+ * no two clipped taps form a difference this function computes what rgbz_site does.
  * The loop keeps the output at or above the smallest candidate when every candidate is
  * clipped (saturation preserved).
  */
@@ -461,7 +465,7 @@ static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rg
         REAL D[5];
         int known[5];
         for (int i = 0; i < 5; i++) {
-            known[i] = !RCLIPPED(2 * i) && !RCLIPPED(2 * i + 1);
+            known[i] = !(RCLIPPED(2 * i) && RCLIPPED(2 * i + 1));
             D[i] = known[i] ? RABSDIFF(v[2 * i], v[2 * i + 1]) : (REAL)0;
         }
         REAL vert = OMUL(OADD(v[4], v[5]), (REAL)0.5);
@@ -479,7 +483,7 @@ static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rg
 
     if (p->method == RGBZ_M_BILINEAR) return RFN(rgbz_mean)(c, nc);
 
-    /* gradient groups: mean absolute difference of their usable pairs */
+    /* gradient groups: mean absolute difference of their pairs, less the clipped-clipped ones */
     REAL G[RGBZ_NGROUPS], gamma[RGBZ_NGROUPS];
     uint32_t known = 0;
     if (p->n_pairs > 0) {
@@ -489,7 +493,7 @@ static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rg
             cnt[g] = 0;
         }
         for (int i = 0; i < p->n_pairs; i++) {
-            if (RCLIPPED(p->pair_a[i]) || RCLIPPED(p->pair_b[i])) continue;
+            if (RCLIPPED(p->pair_a[i]) && RCLIPPED(p->pair_b[i])) continue;
             REAL d = RABSDIFF(v[p->pair_a[i]], v[p->pair_b[i]]);
             int32_t m = p->pair_gmask[i];
             while (m) {
@@ -509,36 +513,29 @@ static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rg
         if (p->use_grad) RFN(rgbz_gammas_known)(G, known, 8, 12, floor_, rel, exp_mode, gamma);
     }
 
-    /* intensity factor beta (eq. 4) from the non-clipped candidates only */
+    /* intensity factor beta (eq. 4) without the terms between two clipped candidates */
     REAL S[RGBZ_MAX_CAND];
     if (p->use_ab) {
-        int u[RGBZ_MAX_CAND];
+        int u[RGBZ_MAX_CAND], cl[RGBZ_MAX_CAND];
         for (int k = 0; k < nc; k++) {
             S[k] = (REAL)1;
             u[k] = 0;
+            cl[k] = (int)RCLIPPED(p->cand_tap[k]);
         }
-        for (int k = 0; k < nc; k++) {
-            if (RCLIPPED(p->cand_tap[k])) continue;
+        for (int k = 0; k < nc; k++)
             for (int m = k + 1; m < nc; m++) {
-                if (RCLIPPED(p->cand_tap[m])) continue;
+                if (cl[k] && cl[m]) continue;
                 REAL d = RABSDIFF(c[k], c[m]);
                 S[k] = OADD(S[k], d);
                 S[m] = OADD(S[m], d);
                 u[k]++;
                 u[m]++;
             }
-        }
-        REAL smax = (REAL)1;
-        int measured = 0;
-        for (int k = 0; k < nc; k++) {
-            if (u[k] == 0) continue;           /* clipped, or no non-clipped partner */
-            if (u[k] < nc - 1)
-                S[k] = OADD((REAL)1, ODIV(OMUL(OSUB(S[k], (REAL)1), (REAL)(nc - 1)), (REAL)u[k]));
-            if (!measured || OCMP(S[k] > smax)) smax = S[k];
-            measured = 1;
-        }
+        /* only a clipped candidate loses terms: rescaled to the n - 1 of eq. 4. One with none
+           left (every candidate clipped) keeps S = 1, and so does every other candidate */
         for (int k = 0; k < nc; k++)
-            if (u[k] == 0) S[k] = smax;        /* 1 when no candidate is measured */
+            if (u[k] > 0 && u[k] < nc - 1)
+                S[k] = OADD((REAL)1, ODIV(OMUL(OSUB(S[k], (REAL)1), (REAL)(nc - 1)), (REAL)u[k]));
     }
 
     /* values interpolated: as rgbz_site (clipped values are used as values) */

@@ -96,9 +96,9 @@ typedef struct {
     int32_t exp_mode;     /* RGBZ_EXP_LIBM or RGBZ_EXP_FAST */
     int32_t workers;      /* threads; <= 0 means the OpenMP default */
     int32_t mask1_fast;   /* 1: the pattern has the Mask1 geometry (recon_mask1.h) */
-    int32_t clip_on;      /* 1: known pixels >= clip_level are clipped (saturated); they are
-                             left out of every difference of the weights (docs/raw.md,
-                             "Near clipping"). Needs mask1_fast = 0. */
+    int32_t clip_on;      /* 1: known pixels >= clip_level are clipped (saturated); a
+                             difference of the weights between two of them is skipped
+                             (docs/raw.md, "Near clipping"). Needs mask1_fast = 0. */
     double clip_level;    /* in the frame's DN; read only when clip_on */
 } rgbz_params;
 

@@ -12,10 +12,12 @@ Arithmetic is float64. :func:`reference_reconstruct` returns the clipped but
 unrounded value of every pixel of the frame (colour sites copied).
 
 With ``clip_level`` the rules of docs/raw.md ("Near clipping") apply: a known
-pixel at or above the level is *clipped*; every difference touching one is
-skipped, the beta of a candidate that is not measured is the smallest measured
-one, and a site whose candidates are all clipped keeps at least the smallest of
-them. They are written here from that page, not from the C code.
+pixel at or above the level is *clipped*; a difference between two clipped
+pixels is skipped (a clipped-unclipped one is a true lower bound and is kept),
+in the gradients, the semi-gradients, the edi_rows directions and the terms of
+beta (a clipped candidate's sum rescaled to the n - 1 terms of eq. 4), and a
+site whose candidates are all clipped keeps at least the smallest of them. They
+are written here from that page, not from the C code.
 """
 
 from __future__ import annotations
@@ -112,7 +114,8 @@ def pair_differences(vals, codes, pairs, clip=None, cross=None):
     except for the pairs flagged in ``cross`` (bool per pair), where two
     different colours are allowed (EDILine's diagonal gradients, eqs. 10-11:
     "inter-channel differences"); and, given the (n, 25) bool array ``clip``,
-    neither pixel is clipped.
+    not both pixels are clipped (a clipped-unclipped difference is a lower bound of
+    the true one and stays valid).
     """
     a = np.array([p[0] for p in pairs])
     b = np.array([p[1] for p in pairs])
@@ -122,7 +125,7 @@ def pair_differences(vals, codes, pairs, clip=None, cross=None):
         same = same | np.asarray(cross, bool)[None, :]
     valid = (ca != Z) & (cb != Z) & same
     if clip is not None:
-        valid &= ~clip[:, a] & ~clip[:, b]
+        valid &= ~(clip[:, a] & clip[:, b])
     d = np.abs(vals[:, a] - vals[:, b])
     return np.where(valid, d, 0.0), valid
 
@@ -165,28 +168,23 @@ def discriminate(G_, ok, sigma_floor, sigma_rel=0.0):
 def intensity_factor(vals, cand, clip=None):
     """Eq. 4: beta_k = 1 / (1 + sum over all candidates m of |c_k - c_m|).
 
-    With ``clip`` (docs/raw.md, "Near clipping"): only the differences between two
-    non-clipped candidates are used. A candidate with u >= 1 of them (measured)
-    has S = 1 + (n - 1) / u * (their sum), n the number of candidates; every
-    other candidate (clipped, or the only non-clipped one) gets the largest S of
-    the measured candidates, or S = 1 if none is measured; beta = 1 / S.
+    With ``clip`` (docs/raw.md, "Near clipping"): the differences between two
+    clipped candidates are not used. A candidate with u >= 1 differences left has
+    S = 1 + (n - 1) / u * (their sum), n the number of candidates; one with none
+    left (every candidate clipped) has S = 1; beta = 1 / S.
     """
     v = np.where(cand, vals, 0.0)
     d = np.abs(v[:, :, None] - v[:, None, :])
     if clip is None:
         d = d * (cand[:, :, None] & cand[:, None, :])
         return 1.0 / (1.0 + d.sum(axis=2))
-    good = cand & ~clip
-    use = good[:, :, None] & good[:, None, :]
-    u = use.sum(axis=2)                                # the diagonal term is 0 anyway
-    u = u - good                                       # minus the k = m pair
+    use = cand[:, :, None] & cand[:, None, :] & ~(clip[:, :, None] & clip[:, None, :])
+    use &= ~np.eye(cand.shape[1], dtype=bool)[None]    # no k = m term
+    u = use.sum(axis=2)
     n = cand.sum(axis=1)[:, None]
     with np.errstate(invalid="ignore", divide="ignore"):
         S = 1.0 + (d * use).sum(axis=2) * (n - 1) / u
-    measured = good & (u > 0)
-    smax = np.where(measured, S, -np.inf).max(axis=1)
-    fill = np.where(np.isfinite(smax), smax, 1.0)
-    S = np.where(measured, S, fill[:, None])
+    S = np.where(u > 0, S, 1.0)
     return 1.0 / S
 
 
@@ -350,8 +348,8 @@ def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all
     the spec) or, with sg_uncovered="all_valid", the mean of every valid SG
     of the site (NOT in docs/interpretation.md; what rgbz_fast's plans do, kept
     only to pin down that disagreement in the tests).
-    With ``clip`` (docs/raw.md, "Near clipping"), an SG whose differences all touch
-    a clipped pixel is *unknown* at that site: like an SG without differences it is
+    With ``clip`` (docs/raw.md, "Near clipping"), an SG whose differences all join
+    two clipped pixels is *unknown* at that site: like an SG without differences it is
     left out of sigma and its g is 0 (all g are 1 if no SG is known), but it still
     covers its positions (which SGs cover a position depends on the pattern only).
     """
@@ -495,13 +493,13 @@ ROWS_TIE_ORDER = ("c", "b", "d", "a", "e")
 
 
 def _rows_known(clip):
-    """(n, 5) bool: direction (in tie order) whose two pixels are both unclipped."""
-    return np.stack([~clip[:, _R(*ROWS_DIRS[d][0])] & ~clip[:, _R(*ROWS_DIRS[d][1])]
+    """(n, 5) bool: direction (in tie order) whose two pixels are not both clipped."""
+    return np.stack([~(clip[:, _R(*ROWS_DIRS[d][0])] & clip[:, _R(*ROWS_DIRS[d][1])])
                      for d in ROWS_TIE_ORDER], axis=1)
 
 
 def _reconstruct_rows(vals, codes, target, edge_ratio, clip=None):
-    """Eqs. 1a-1e. With ``clip``: a direction touching a clipped pixel cannot be
+    """Eqs. 1a-1e. With ``clip``: a direction whose two pixels are clipped cannot be
     chosen; if c (the vertical) is one of them, there is no edge test: vertical mean."""
     taps = [_R(*p) for d in ROWS_TIE_ORDER for p in ROWS_DIRS[d]]
     ok = (codes[:, taps] == target[:, None]) & (codes[:, taps] != Z)
@@ -604,7 +602,7 @@ def edi_rows_decision_margin(data, pattern, edge_ratio=0.5, clip_level=None):
     five differences a..e (pairs that are both exactly 0 are robust and
     skipped), or between D_m and edge_ratio * c. A site with a margin below
     ~1e-5 may take another branch when the kernel computes in float32.
-    With ``clip_level``, directions touching a clipped pixel take no part.
+    With ``clip_level``, directions whose two pixels are clipped take no part.
     """
     data = np.asarray(data)
     shape = data.shape

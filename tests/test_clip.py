@@ -4,8 +4,11 @@ The rules are in docs/raw.md ("Near clipping") and docs/interpretation.md; the
 NumPy reference (tests/_reference.py, ``clip_level=``) is written from them.
 Here: C against the reference on random frames with random clipped regions
 (every pattern and method where it applies, float and integer frames, both
-domains); ``clip_level=None`` and a level above the data are bit-identical to
-the call without it; saturated areas stay saturated; the openISP frame of
+domains); the rule itself, that a difference between a clipped and an
+unclipped pixel is used and one between two clipped pixels is not (beta and
+the semi-gradients, by hand; isolated clipped pixels change nothing);
+``clip_level=None`` and a level above the data are bit-identical to the call
+without it; saturated areas stay saturated; the openISP frame of
 ../shared/data/raw (skipped when absent); "auto", frame_clip_level, evaluate
 and the CLI.
 """
@@ -128,6 +131,114 @@ def test_integer_frames_round_half_up(pname, method):
             fragile |= edi_rows_decision_margin(d, p, clip_level=1800) < 1e-5
         assert np.abs(diff[~fragile]).max() <= 1           # +-1 only at .5 ties
         assert (diff[~fragile] != 0).mean() < (0.01 if precision == "float64" else 0.05)
+
+
+# -- the rule: which differences count --------------------------------------------------------
+
+@pytest.mark.parametrize("pname, method", CASES, ids=IDS)
+def test_isolated_clipped_pixels_change_nothing(pname, method, monkeypatch):
+    """No difference joins two clipped pixels: every clipped-unclipped difference is used
+    as it is (a lower bound of the true one), so the result is the unclipped one, exactly."""
+    p = rz.get_pattern(pname)
+    monkeypatch.setattr(R, "_MASK1_FAST", False)
+    rng = seeded("isolated", pname, method)
+    shape, level = (62, 66), 1500
+    z = p.z_mask(shape)
+    for dtype in (np.uint16, np.float64):
+        d = rng.uniform(0, level - 1, shape)
+        # one clipped colour pixel per 12 x 12 cell (at least 10 px apart), 12 px from the
+        # border: no 5x5 or 5x9 window (nor a tap moved back across the border) holds two
+        n = 0
+        for y in range(12, shape[0] - 12, 12):
+            for x in range(12, shape[1] - 12, 12):
+                for k in rng.permutation(9):                    # a colour pixel near it
+                    yy, xx = y + k // 3, x + k % 3
+                    if not z[yy, xx]:
+                        d[yy, xx] = rng.uniform(level, TOP)
+                        n += 1
+                        break
+        assert n == 16
+        d = (np.floor(d) if dtype == np.uint16 else d).astype(dtype)
+        d[z] = 0
+        for precision in ("float32", "float64"):
+            np.testing.assert_array_equal(recon(d, p, method, precision=precision,
+                                                clip_level=level),
+                                          recon(d, p, method, precision=precision))
+        if dtype == np.float64:
+            compare(recon(d, p, method, precision="float64", clip_level=level), d, p, method,
+                    "float64", level)
+
+
+def _mask1_site(level, rng):
+    """A Mask1 frame below the level and its centre Z site (y, x); (0, +-1) red, (+-1, 0)
+    blue, (+-1, +-1) the four green candidates."""
+    p = rz.mask1()
+    d = rng.uniform(200, level - 300, (20, 20))
+    d[p.z_mask(d.shape)] = 0
+    return p, d, 10, 10
+
+
+def test_beta_skips_only_the_terms_between_two_clipped_candidates():
+    """BI on Mask1 (four diagonal candidates, equal alpha): beta by hand from eq. 4 with
+    the clipped-clipped term left out and the clipped candidates' sums rescaled to 3 terms."""
+    level = 1500.0
+    p, d, y, x = _mask1_site(level, seeded("beta"))
+    pos = [(-1, -1), (-1, 1), (1, -1), (1, 1)]
+    c = np.array([1510.0, 1900.0, 1300.0, 1420.0])        # two clipped, two not
+    for (dy, dx), v in zip(pos, c):
+        d[y + dy, x + dx] = v
+    clipped = c >= level
+    S = np.ones(4)
+    for k in range(4):
+        terms = [abs(c[k] - c[m]) for m in range(4) if m != k and not (clipped[k] and clipped[m])]
+        S[k] = 1 + 3 / len(terms) * sum(terms)
+    assert S[0] == 1 + 1.5 * (210 + 90)                   # |1510 - 1900| not in it
+    expect = np.sum(c / S) / np.sum(1 / S)
+    out = recon(d, p, "bi", precision="float64", clip_level=level)
+    np.testing.assert_allclose(out[y, x], expect, rtol=1e-12)
+    # without clip handling |1510 - 1900| counts; with the old rule (no clipped term at all)
+    # the two clipped candidates took the beta of the least trusted unclipped one
+    full = 1 + np.abs(c[:, None] - c[None, :]).sum(axis=1)
+    assert abs(recon(d, p, "bi", precision="float64")[y, x] - np.sum(c / full) / np.sum(1 / full)) < 1e-9
+    old = np.array([1 + 3 * 120.0] * 4)
+    assert abs(expect - np.sum(c / old) / np.sum(1 / old)) > 10
+
+
+def test_semi_gradients_use_clipped_unclipped_but_not_clipped_clipped_differences():
+    """SG on Mask1 (pure: every semi-gradient difference is red-red or blue-blue, the
+    candidates are green). All red and blue pixels of the window clipped: no semi-gradient
+    is known, the output is the candidates' mean whatever the clipped values are. One red
+    pixel unclipped: its differences to the clipped reds are lower bounds that count, so
+    the output moves with a clipped red value."""
+    level = 1500.0
+    rng = seeded("sg-rule")
+    p, d, y, x = _mask1_site(level, rng)
+    chan = p.channel_map(d.shape)
+    win = np.zeros(d.shape, bool)
+    win[y - 2:y + 3, x - 2:x + 3] = True
+    rb = win & ((chan == 0) | (chan == 2))
+    cand = [d[y + dy, x + dx] for dy in (-1, 1) for dx in (-1, 1)]
+
+    def site(frame):
+        return recon(frame, p, "sg", precision="float64", clip_level=level)[y, x]
+
+    outs = []
+    for _ in range(3):
+        d[rb] = rng.uniform(level, TOP, rb.sum())           # all clipped, values vary
+        outs.append(site(d))
+    np.testing.assert_allclose(outs, np.mean(cand), rtol=1e-12)
+    d[y, x - 1] = level - 400                               # red (0, -1) unclipped
+    a = site(d)
+    d[y - 2, x - 1] = level + 500                           # its clipped partner (-2, -1)
+    b = site(d)
+    d[y - 2, x - 1] = TOP
+    c = site(d)
+    assert len({a, b, c}) == 3, (a, b, c)
+    assert all(o != pytest.approx(np.mean(cand), abs=1e-6) for o in (a, b, c))
+    for v in (level + 500, TOP):
+        d[y - 2, x - 1] = v
+        ref = reference_reconstruct(d, p, "sg", clip_level=level)
+        assert site(d) == pytest.approx(ref[y, x], rel=1e-9)
 
 
 # -- no clipping: exactly today's result --------------------------------------------------------
@@ -342,18 +453,22 @@ def test_kernel_rejects_clip_with_the_mask1_fast_path():
 def test_eval_config_clip_level():
     from rgbz_fast.evaluate import EvalConfig
 
-    c = EvalConfig()
+    c = EvalConfig(clip_level="auto")
+    assert EvalConfig().clip_level is None                  # off by default (docs/raw.md)
     assert c.clip_level == "auto"
-    assert EvalConfig(clip_level=None).clip_level is None
     assert EvalConfig(clip_level=2000).clip_level == 2000.0
     for bad, exc in (("high", ValueError), (np.nan, ValueError), (-3, ValueError),
                      (True, TypeError)):
         with pytest.raises(exc, match="clip_level"):
             EvalConfig(clip_level=bad)
-    # "auto" leaves the cache keys of RGB sources as they were; raw sources key on it
-    assert c.key("mask1", "sg") == EvalConfig(reconstruct_options=()).key("mask1", "sg")
+    # None (the default) and, for RGB sources, "auto" leave the cache keys as they were;
+    # raw sources key on "auto" and on a level
+    off = EvalConfig()
+    assert c.key("mask1", "sg") == off.key("mask1", "sg")
+    assert off.key("mask1", "sg", raw=True) == off.key("mask1", "sg")
     assert c.key("mask1", "sg", raw=True) != c.key("mask1", "sg")
-    assert EvalConfig(clip_level=None).key("mask1", "sg") != c.key("mask1", "sg")
+    assert EvalConfig(clip_level=2000).key("mask1", "sg") != off.key("mask1", "sg")
+    assert off.reconstruct_kwargs() == {"clip_level": None}
     assert c.reconstruct_kwargs() == {"clip_level": "auto"}
     assert EvalConfig(reconstruct_options=(("clip_level", 5),)).reconstruct_kwargs() == \
         {"clip_level": 5}
@@ -384,8 +499,8 @@ def test_evaluate_raw_source_passes_the_level(tmp_path, monkeypatch):
                         or real(f, m, **k))
     kw = dict(workers=1, progress=False, metrics=("cfa_psnr",), methods=("edi_line",),
               patterns=("mask1",))
-    on = ev.evaluate(ds, **kw).values("mask1", "edi_line", "cfa_psnr")
-    off = ev.evaluate(ds, clip_level=None, **kw).values("mask1", "edi_line", "cfa_psnr")
+    on = ev.evaluate(ds, clip_level="auto", **kw).values("mask1", "edi_line", "cfa_psnr")
+    off = ev.evaluate(ds, **kw).values("mask1", "edi_line", "cfa_psnr")   # the default
     assert seen == [2041.0, None]
     assert on[0] != off[0]
 
@@ -402,11 +517,12 @@ def test_cli_clip_level(tmp_path, capsys):
     rgbz, _ = to_rgbz(f, "mask1")
     src = frameio.save_frame(tmp_path / "chart.npz", rgbz)
     outs = {}
-    for flag in ("auto", "off", "2041"):
-        out = tmp_path / flag
+    for flag in ("auto", "off", "2041", None):
+        out = tmp_path / str(flag)
         assert main(["reconstruct", str(src), "--method", "edi_line", "--out", str(out),
-                     "--clip-level", flag, "--quiet"]) == 0
+                     "--quiet"] + (["--clip-level", flag] if flag else [])) == 0
         outs[flag] = tifffile.imread(out / "chart_edi_line_cfa.tif")
+    np.testing.assert_array_equal(outs[None], outs["off"])             # off by default
     np.testing.assert_array_equal(outs["auto"], rz.reconstruct(rgbz, "edi_line",
                                                                clip_level=2041.0))
     np.testing.assert_array_equal(outs["auto"], outs["2041"])

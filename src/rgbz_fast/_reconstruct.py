@@ -150,11 +150,12 @@ def reconstruct(frame, method="sg", *, pattern=None, bit_depth=None, precision="
     clip_level : float, "auto" or None
         The level at which the sensor saturates, in the frame's digital
         numbers. Known pixels at or above it are *clipped*: their value is a
-        lower bound of the light, so it is still interpolated as a value but
-        never trusted as a measurement in a weight. Every difference that
-        touches a clipped pixel (gradients, semi-gradients, the terms of
-        beta, the directions of ``edi_rows``) is skipped, and a site whose
-        candidates are all clipped stays at or above the smallest of them.
+        lower bound of the light. It is still interpolated as a value; in the
+        weights (gradients, semi-gradients, the terms of beta, the directions
+        of ``edi_rows``) a difference between two clipped pixels is unknown and
+        skipped, while one between a clipped and an unclipped pixel is a true
+        lower bound of the difference and is kept. A site whose candidates are
+        all clipped stays at or above the smallest of them.
         The rule per method is in docs/raw.md ("Near clipping").
         None (default): nothing is clipped. ``"auto"``: the level that
         :func:`rgbz_fast.rawio.read_raw` recorded for a frame read from a raw

@@ -49,9 +49,10 @@ def _clip_arg(text):
     return v
 
 
-CLIP_HELP = ("clipped (saturated) pixels: auto (default) uses the clip level recorded for "
-             "frames read from raw files (rgbz_fast.rawio) and none for other frames; off "
-             "ignores clipping; a number is the level in DN. See docs/raw.md, 'Near clipping'")
+CLIP_HELP = ("clipped (saturated) pixels: off (default) takes every pixel as a real value; "
+             "auto uses the clip level recorded for frames read from raw files "
+             "(rgbz_fast.rawio) and none for other frames; a number is the level in DN. See "
+             "docs/raw.md, 'Near clipping' (why off is the default)")
 
 
 def _add_common(p, out_default=None):
@@ -98,7 +99,7 @@ def _parser():
     r.add_argument("--precision", choices=("float32", "float64"), default="float32")
     r.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
-    r.add_argument("--clip-level", type=_clip_arg, default="auto", metavar="auto|off|DN",
+    r.add_argument("--clip-level", type=_clip_arg, default=None, metavar="off|auto|DN",
                    help=CLIP_HELP)
     _add_common(r, Path("rgbz_out"))
 
@@ -125,7 +126,7 @@ def _parser():
                    help="JSON file mapping raw file names (or \"*\") to rgbz_fast.rawio.read_raw "
                         "arguments: phase, black_level, white_level, shape, bit_depth_in, "
                         "downsample ... (for bare Bayer files that carry none)")
-    e.add_argument("--clip-level", type=_clip_arg, default="auto", metavar="auto|off|DN",
+    e.add_argument("--clip-level", type=_clip_arg, default=None, metavar="off|auto|DN",
                    help=CLIP_HELP)
     e.add_argument("--limit", type=int, default=None, help="first N images only")
     e.add_argument("--table-image", default=None,

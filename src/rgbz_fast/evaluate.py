@@ -99,12 +99,15 @@ class EvalConfig:
         evaluation, not here.
     seed : int
         Noise seed (noisy runs), an integer >= 0.
-    clip_level : "auto", None or float
-        The ``clip_level`` of :func:`rgbz_fast.reconstruct`. ``"auto"``
-        (default): raw sources use the level their file records
-        (:func:`rgbz_fast.rawio.frame_clip_level`), RGB sources none. None:
-        no clip handling. A number (DN of the frames' bit depth): that level
-        for every source. A ``clip_level`` in ``reconstruct_options`` wins.
+    clip_level : None, "auto" or float
+        The ``clip_level`` of :func:`rgbz_fast.reconstruct`. None (default):
+        no clip handling, every known pixel taken as a real value (on the
+        openISP frame the clip handling costs CFA PSNR near the clip, so it
+        is not the default; docs/raw.md, "Near clipping"). ``"auto"``: raw
+        sources use the level their file records
+        (:func:`rgbz_fast.rawio.frame_clip_level`), RGB sources none. A
+        number (DN of the frames' bit depth): that level for every source.
+        A ``clip_level`` in ``reconstruct_options`` wins.
 
     Raises
     ------
@@ -123,7 +126,7 @@ class EvalConfig:
     precision: str = "float64"
     reconstruct_options: tuple = ()
     seed: int = 0
-    clip_level: object = "auto"
+    clip_level: object = None
 
     def __post_init__(self):
         for name in ("patterns", "methods", "metrics"):
@@ -169,25 +172,26 @@ class EvalConfig:
     def key(self, pattern, method, raw=False):
         """Cache key of one (pattern, method) under this configuration.
 
-        ``raw``: the key of a raw source. ``clip_level="auto"`` gives RGB sources no
-        level, so it leaves their key (and cache) as it was before the option existed;
-        raw sources are clipped by it, so their key includes it.
+        ``raw``: the key of a raw source. ``clip_level=None`` (no clip handling) leaves
+        every key (and cache) as it was before the option existed, and so does ``"auto"``
+        for RGB sources, which it gives no level; raw sources are clipped by ``"auto"``,
+        so their key includes it.
         """
         d = asdict(self)
         d.pop("patterns")
         d.pop("methods")
         d.pop("metrics")
-        if d["clip_level"] == "auto" and not raw:
+        if d["clip_level"] is None or (d["clip_level"] == "auto" and not raw):
             d.pop("clip_level")
         d.update(pattern=str(get_pattern(pattern)), method=method, version=_cache_version())
         blob = json.dumps(d, sort_keys=True, default=str).encode()
         return hashlib.sha1(blob).hexdigest()[:16]
 
     def label(self):
-        if self.clip_level == "auto":
+        if self.clip_level is None:
             clip = ""
-        elif self.clip_level is None:
-            clip = ", no clip handling"
+        elif self.clip_level == "auto":
+            clip = ", clip level of the raw files"
         else:
             clip = f", clip level {self.clip_level:g} DN"
         return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit, "
