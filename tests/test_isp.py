@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
+from _defects_reference import reference_correct_defects  # noqa: E402
 from conftest import load_kodak  # noqa: E402
 
 import rgbz_fast as rz  # noqa: E402
@@ -230,6 +231,50 @@ def test_known_defects_and_disabled_stage():
                                return_mask=True)
     assert not m2.any() and same is not data
     np.testing.assert_array_equal(same, data)
+
+
+@pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2", "rows", "ZR/BG", "ZRGG/BGBZ",
+                                     "RGZ/GBG/ZRB"])
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
+def test_defect_correction_equals_the_full_frame_reference(pattern, dtype):
+    """The phase-plane implementation (contiguous sub-images, no full-frame
+    temporaries) against the first, full-frame one (tests/_defects_reference.py):
+    the same defect map and the same corrected values, bit for bit, on noisy frames
+    with planted hot, cold and clustered defects, known defects, other thresholds,
+    and frames smaller than or barely larger than a period."""
+    rng = np.random.default_rng(11)
+    pat = rz.get_pattern(pattern)
+    for shape in ((37, 53), (12, 12), (5, 7), (2, 3), (1, 4)):
+        try:
+            pat.check_shape(shape, "cfa")
+        except ValueError:
+            continue
+        data = np.clip(rng.normal(900, 40, shape), 0, 2047)
+        n = max(1, data.size // 40)
+        r, c = rng.integers(0, shape[0], n), rng.integers(0, shape[1], n)
+        data[r, c] = rng.choice([0.0, 2047.0, 1500.0], n)
+        data[r[:2], np.minimum(c[:2] + 1, shape[1] - 1)] = 2047.0      # a cluster
+        data = data.astype(dtype) if dtype != np.uint16 else np.round(data).astype(dtype)
+        known = rng.random(shape) < 0.01
+        for params, kn in ((DefectCorrection(), None), (DefectCorrection(), known),
+                           (DefectCorrection(threshold=0.02, spread_factor=0.5,
+                                             cross_factor=0.25), None)):
+            got = correct_defects(data, pat, params, known=kn, return_mask=True)
+            want = reference_correct_defects(data, pat, params, known=kn, return_mask=True)
+            np.testing.assert_array_equal(got[1], want[1], err_msg=f"{shape} {params}")
+            np.testing.assert_array_equal(got[0], want[0], err_msg=f"{shape} {params}")
+            assert got[0].dtype == data.dtype
+
+
+def test_defect_correction_equals_the_reference_on_a_simulated_frame():
+    frame = simulate(Scene.from_rgb(load_kodak(19, crop=(120, 160))), "mask2", seed=5)
+    data = frame.data.copy()
+    data[::17, ::13] = 2047
+    got = correct_defects(data, "mask2", white_level=2047, return_mask=True)
+    want = reference_correct_defects(data, "mask2", white_level=2047, return_mask=True)
+    assert got[1].sum() > 20
+    np.testing.assert_array_equal(got[1], want[1])
+    np.testing.assert_array_equal(got[0], want[0])
 
 
 # ----------------------------------------------------------------------- pieces
