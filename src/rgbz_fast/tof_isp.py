@@ -433,8 +433,12 @@ def _tap_variance(offset, sensor):
     electrons), and quantisation: ``K (offset - black) + K^2 (read^2 + dsnu^2) + 1/12``.
     """
     k = sensor.system_gain
-    signal = np.maximum(np.asarray(offset) - sensor.black_level, 0.0)
-    return k * signal + k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + 1.0 / 12.0
+    v = np.subtract(offset, sensor.black_level, dtype=np.float64)   # a new array: in place below
+    np.maximum(v, 0.0, out=v)
+    v *= k
+    v += k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2)
+    v += 1.0 / 12.0
+    return v
 
 
 # --------------------------------------------------------------------------- result
@@ -668,7 +672,8 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
     taps = tof.taps
     n = tof.n_sites
     f, w, max_range = _check_unwrap_args(taps.shape[0], tof.frequencies, None, max_range)
-    saturated = np.asarray(tof.saturated, bool) | np.any(taps >= tof.white_level, axis=(0, 1))
+    # max over the 4F taps (uint16 reductions), then one comparison: = any(tap >= white)
+    saturated = np.asarray(tof.saturated, bool) | (taps.max(axis=(0, 1)) >= tof.white_level)
     if denoise:
         _, _, offset = demodulate(taps, workers=nthreads)
         i, q = phasors(taps)
@@ -691,8 +696,13 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
         count = np.ones(n)
         noise_offset = offset
         navg = count
-    sigma_i = np.sqrt(2.0 * _tap_variance(noise_offset, tof.sensor) / navg)
-    snr = (2.0 * amp / sigma_i).min(axis=0)
+    sigma_i = _tap_variance(noise_offset, tof.sensor)       # in place: sqrt(2 var / navg)
+    sigma_i *= 2.0
+    sigma_i /= navg
+    np.sqrt(sigma_i, out=sigma_i)
+    snr = amp * 2.0
+    snr /= sigma_i
+    snr = snr.min(axis=0)
 
     flags = np.zeros(n, np.uint8)
     flags[saturated] |= FLAG_SATURATED
