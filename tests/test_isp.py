@@ -290,6 +290,25 @@ def test_srgb_oetf_is_the_standard_curve():
     assert srgb_encode(np.array([1.0]), 16)[0] == 65535
 
 
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_srgb_oetf_equals_the_plain_formula_bit_for_bit(dtype):
+    """srgb_oetf keeps the linear segment's inputs (zeros above all) out of np.power;
+    the result is the plain two-branch formula to the last bit."""
+    rng = np.random.default_rng(5)
+    v = rng.random(200_003).astype(dtype) * dtype(1.2) - dtype(0.1)
+    v[rng.random(v.size) < 0.2] = 0
+    v[rng.random(v.size) < 0.05] = dtype(0.0031308)
+    c = np.clip(v, 0, 1)
+    t = np.dtype(dtype).type
+    want = np.power(c, t(1 / 2.4))
+    want *= t(1.055)
+    want -= t(0.055)
+    want = np.where(c <= t(0.0031308), c * t(12.92), want)
+    got = srgb_oetf(v)
+    assert got.dtype == dtype
+    np.testing.assert_array_equal(got, want)
+
+
 def test_colour_correction_matrix():
     rgb = np.random.default_rng(0).random((4, 5, 3)).astype(np.float32) * 0.5
     np.testing.assert_array_equal(correct_colour(rgb), rgb)

@@ -689,10 +689,14 @@ def srgb_oetf(linear):
     dt = a.dtype if a.dtype in (np.float32, np.float64) else np.dtype(np.float64)
     t = dt.type
     v = np.clip(a.astype(dt, copy=False), 0, 1)
-    out = np.power(v, t(1 / 2.4))
+    low = v <= t(0.0031308)
+    # The linear segment overwrites these values below, so the power never sees them:
+    # NumPy's SIMD power leaves its fast path for a vector holding a 0 (the clipped
+    # blacks; 4.5x slower with 20 % zeros), and every other element is unchanged.
+    out = np.power(np.where(low, t(1), v), t(1 / 2.4))
     out *= t(1.055)
     out -= t(0.055)
-    np.multiply(v, t(12.92), out=out, where=v <= t(0.0031308))
+    np.multiply(v, t(12.92), out=out, where=low)
     return out
 
 
