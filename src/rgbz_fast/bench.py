@@ -510,7 +510,7 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
     tof = None
     if tof_sites and (not kernels or any(k in "tof sites" for k in kernels)):
         tof = tof_sites_benchmark(shape, repeat, workers)
-    colour = colour_chain_benchmark(shape, max(1, min(repeat, 3)), workers) if chain else None
+    colour = colour_chain_benchmark(shape, repeat, workers) if chain else None
     mem = None
     if memory:
         mem = measure_memory(frame_fn("mask1").data, "mask1", "sg", "float32", workers)
