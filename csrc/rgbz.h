@@ -26,6 +26,8 @@
 #define RGBZ_OK 0
 #define RGBZ_EINVAL 1   /* an argument the Python layer should have rejected */
 #define RGBZ_ENOMEM 2   /* scratch allocation failed */
+#define RGBZ_EDOMAIN 3  /* an input value outside the kernel's domain (a ToF phase outside
+                           [0, 2 pi), a non-finite phasor): the Python layer names it */
 
 /* element types of frames */
 #define RGBZ_T_U8 0
@@ -136,12 +138,33 @@ int RGBZ_SYM(rgbz_demosaic_malvar)(int in_type, int out_type, const void *src, v
 int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                                   double *phase, double *amp, double *offset, int workers);
 
-/* Multi-frequency unwrapping (tof.c): phase (F, N), frequencies (Hz), weights (F),
+/* Multi-frequency unwrapping (tof.c): phase (F, N) in [0, 2 pi), frequencies (Hz), weights (F),
    max_range (m) -> depth (N, m), weighted RMS residual (N, m), wrap count of the
-   base frequency (N, may be NULL). */
+   base frequency (N). The search covers nwrap = max(1, ceil(max_range / A)) wraps of the
+   base frequency (A = its c / (2 f)); nwrap > RGBZ_TOF_MAX_WRAPS or F > RGBZ_TOF_MAX_FREQS
+   is RGBZ_EINVAL. A phase outside [0, 2 pi) (or NaN) gives RGBZ_EDOMAIN (that site's
+   outputs are NaN / -1; the others are computed). */
+#define RGBZ_TOF_MAX_FREQS 16
+#define RGBZ_TOF_MAX_WRAPS 1024
 int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
                               const double *weights, double max_range, double *depth,
                               double *residual, int32_t *wraps, int workers);
+
+/* Fused demodulation + unwrapping (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
+   depth, residual, wraps as rgbz_tof_unwrap, and phase, amplitude, offset (F, N) as
+   rgbz_tof_demodulate (each may be NULL: not stored). One pass per site, no intermediate
+   arrays. */
+int RGBZ_SYM(rgbz_tof_depth)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                             const double *freqs, const double *weights, double max_range,
+                             double *depth, double *residual, int32_t *wraps, double *phase,
+                             double *amp, double *offset, int workers);
+
+/* The same from phasors I, Q (F, N) (e.g. after the denoise): phase and amplitude (may be
+   NULL), depth, residual, wraps. A non-finite I or Q gives RGBZ_EDOMAIN. */
+int RGBZ_SYM(rgbz_tof_depth_iq)(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                                ptrdiff_t N, const double *freqs, const double *weights,
+                                double max_range, double *depth, double *residual,
+                                int32_t *wraps, double *phase, double *amp, int workers);
 
 /* build information */
 int RGBZ_SYM(rgbz_have_openmp)(void);

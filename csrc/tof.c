@@ -10,12 +10,35 @@
  *     distance = c * phi / (4 * pi * f)  (modulo c / (2 f)).
  *
  * Layout: taps (F, 4, N) row-major, element type u16, f32 or f64; outputs
- * (F, N) float64. Unwrapping: brute force over the wrap counts of the
- * frequency with the longest ambiguity interval; every other frequency takes
- * its nearest wrap count; the candidate with the smallest weighted squared
- * residual wins and the depth is the weighted mean of the per-frequency
- * distances (weights w_i, typically f_i^2, i.e. inverse depth variance).
+ * (F, N) float64.
+ *
+ * Unwrapping: brute force over the wrap counts w = 0 .. nwrap-1 of the
+ * frequency with the longest ambiguity interval A = c / (2 f_base) (nwrap =
+ * ceil(max_range / A), at most RGBZ_TOF_MAX_WRAPS: the Python layer bounds
+ * max_range by the unambiguous range of the frequency set and by that count);
+ * every other frequency i takes the wrap count k_i nearest to the candidate
+ * d_base + w A; the candidate with the smallest weighted squared residual
+ * sum_i w_i (d_i + k_i a_i - cand)^2 wins (the first one on a tie) and the
+ * depth is the weighted mean of the per-frequency distances (weights w_i,
+ * typically f_i^2, i.e. inverse depth variance).
+ *
+ * Per site, with y_i = (d_base - d_i) / a_i and r_i = A / a_i computed once:
+ *     x = y_i + w r_i,  k_i = floor(x + 0.5),  residual_i = a_i (k_i - x),
+ * so one candidate costs a multiply-add, a floor and a multiply-add per
+ * frequency. rgbz_fast._tof_numpy holds the same arithmetic in NumPy (the tests
+ * compare them bit for bit from the same phases).
+ *
+ * rgbz_tof_depth fuses the two stages (taps -> phase, amplitude, offset,
+ * depth, residual, wrap count in one pass per site, no intermediate arrays);
+ * rgbz_tof_depth_iq does the same from averaged phasors (I, Q).
  */
+/* No FP trap is ever enabled here, so GCC may compute both arms of a `?:` and
+   vectorise the site loops (its default -ftrapping-math forbids that; clang's
+   default already allows it). Results are unchanged: no value-changing flag. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <stdint.h>
@@ -25,103 +48,466 @@
 #include "rgbz.h"
 #include "rgbz_ops.h"
 
-#define TOF_TWO_PI 6.283185307179586
-#define TOF_C 299792458.0
+#if defined(__GNUC__)
+#define TOF_INLINE static inline __attribute__((always_inline))
+#else
+#define TOF_INLINE static inline
+#endif
 
-#define TOF_DEMOD(T, S)                                                                           \
-static void rgbz_tof_demod_##S(const T *taps, ptrdiff_t F, ptrdiff_t N, double *phase,           \
-                               double *amp, double *offset, int workers)                         \
-{                                                                                                 \
-    (void)workers;                                                                                \
-    for (ptrdiff_t f = 0; f < F; f++) {                                                           \
-        const T *a0 = taps + (4 * f + 0) * N, *a1 = taps + (4 * f + 1) * N;                       \
-        const T *a2 = taps + (4 * f + 2) * N, *a3 = taps + (4 * f + 3) * N;                       \
-        double *ph = phase + f * N, *am = amp + f * N, *of = offset + f * N;                      \
-        TOF_PARALLEL                                                                              \
-        for (ptrdiff_t n = 0; n < N; n++) {                                                       \
-            double A0 = (double)a0[n], A1 = (double)a1[n], A2 = (double)a2[n], A3 = (double)a3[n];\
-            double I = OSUB(A0, A2), Q = OSUB(A3, A1);                                            \
-            OPC_(RGBZ_OP_ATAN2);                                                                  \
-            double p = atan2(Q, I);                                                               \
-            if (OCMP(p < 0)) p = OADD(p, TOF_TWO_PI);                                             \
-            if (p >= TOF_TWO_PI) p = 0.0;  /* -tiny + 2 pi rounds to 2 pi: keep [0, 2 pi) */     \
-            ph[n] = p;                                                                            \
-            OPC_(RGBZ_OP_SQRT);                                                                   \
-            am[n] = OMUL(0.5, sqrt(OADD(OMUL(I, I), OMUL(Q, Q))));                                \
-            of[n] = OMUL(0.25, OADD(OADD(A0, A1), OADD(A2, A3)));                                 \
-        }                                                                                         \
-    }                                                                                             \
+/*
+ * The block functions below are compiled three times (AVX-512F, AVX2, baseline x86-64)
+ * and the loader picks the widest the CPU has (GCC function multiversioning, an ifunc:
+ * glibc and GCC only, not in the single-threaded counting build). Only the vector width
+ * changes: ISO C mode keeps -ffp-contract=off (no FMA contraction), so every clone
+ * computes the same IEEE operations and the results are identical bit for bit.
+ */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) \
+    && !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#define TOF_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define TOF_CLONES
+#endif
+
+/* element n of a tap array of type `t` (a compile-time constant where it is used) */
+TOF_INLINE double tof_load(const void *a, ptrdiff_t n, int t)
+{
+    return t == RGBZ_T_U16 ? (double)((const uint16_t *)a)[n]
+         : t == RGBZ_T_F32 ? (double)((const float *)a)[n] : ((const double *)a)[n];
 }
+
+#define TOF_TWO_PI 6.283185307179586
+#define TOF_PI 3.141592653589793
+#define TOF_PI_2 1.5707963267948966
+#define TOF_PI_4 0.7853981633974483
+#define TOF_C 299792458.0
 
 #ifdef _OPENMP
 #define TOF_PARALLEL _Pragma("omp parallel for schedule(static) num_threads(workers > 0 ? workers : omp_get_max_threads())")
+#define TOF_PARALLEL_BAD _Pragma("omp parallel for schedule(static) reduction(|:bad) num_threads(workers > 0 ? workers : omp_get_max_threads())")
 #else
 #define TOF_PARALLEL
+#define TOF_PARALLEL_BAD
 #endif
 
-TOF_DEMOD(uint16_t, u16)
-TOF_DEMOD(float, f32)
-TOF_DEMOD(double, f64)
+/*
+ * atan2(y, x) in [-pi, pi] without libm and without branches (every `?:` is a
+ * select, so that loops over sites vectorise): octant reduction to
+ * t = min/max in [0, 1], Cephes' reduction of t > 0.66 to (t - 1) / (t + 1)
+ * (computed as (min - max) / (min + max), an exact numerator by Sterbenz) and
+ * Cephes' degree 4/5 rational approximation of atan on [-0.21, 0.66] (peak
+ * relative error 2.6e-18 in exact arithmetic); the low bits of pi/4, pi/2 and
+ * pi enter before the final rounding. Measured against numpy.arctan2 on
+ * random, tiny (1e-310) and huge (1e300) arguments: at most one ulp of the
+ * result (tests/test_tof_isp.py::test_fast_atan2_matches_numpy_to_one_ulp).
+ * atan2(0, 0) = 0 (also for -0); infinite arguments give libm's values
+ * (pi/4 for two infinities, 0 or pi/2 for one).
+ */
+static inline double tof_atan2(double y, double x)
+{
+    const double ax = fabs(x), ay = fabs(y);
+    const double mx0 = ax > ay ? ax : ay, mn0 = ax > ay ? ay : ax;
+    const int inf = mx0 > DBL_MAX;
+    const double mx = inf ? 1.0 : mx0, mn = inf ? (mn0 > DBL_MAX ? 1.0 : 0.0) : mn0;
+    const int big = mn > 0.66 * mx;
+    const double num = big ? mn - mx : mn;
+    const double den = big ? mn + mx : (mx > 0 ? mx : 1.0);
+    const double u = num / den, z = u * u;
+    const double p = ((((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z
+                        - 7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z
+                      - 6.485021904942025371773e1) * z;
+    const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z
+                       + 4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z
+                     + 1.945506571482613964425e2;
+    const double a0 = u + u * (p / q);
+    const double a1 = big ? TOF_PI_4 + (a0 + 3.061616997868382943065e-17) : a0;
+    const double a2 = ay > ax ? TOF_PI_2 + (6.123233995736765886130e-17 - a1) : a1;
+    const double a3 = x < 0 ? TOF_PI + (1.2246467991473532e-16 - a2) : a2;
+    return y < 0 ? -a3 : a3;
+}
+
+/* the phase of (I, Q) in [0, 2 pi) */
+static inline double tof_phase(double I, double Q)
+{
+    OPC_(RGBZ_OP_ATAN2);
+    double p = tof_atan2(Q, I);
+    p = OCMP(p < 0) ? OADD(p, TOF_TWO_PI) : p;
+    return p >= TOF_TWO_PI ? 0.0 : p;  /* -tiny + 2 pi rounds to 2 pi: keep [0, 2 pi) */
+}
+
+/* ------------------------------------------------------------------ demodulation */
+/* Sites [n0, n0 + nb) of every frequency. The element type `t` is a compile-time
+   constant in the three instances below, which the OpenMP loops call per block (a
+   parallel loop body is outlined before constants propagate into it). */
+TOF_INLINE void tof_demod_impl(const void *restrict taps, ptrdiff_t F, ptrdiff_t N,
+                               ptrdiff_t n0, ptrdiff_t nb, double *phase, double *amp,
+                               double *offset, int t)
+{
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const ptrdiff_t o0 = 4 * f * N + n0, o1 = o0 + N, o2 = o0 + 2 * N, o3 = o0 + 3 * N;
+        /* restrict: the outputs never overlap the taps nor each other (the Python layer
+           allocates them), which spares the vectoriser its runtime alias checks */
+        double *restrict ph = phase + f * N + n0, *restrict am = amp + f * N + n0;
+        double *restrict of = offset + f * N + n0;
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            const double A0 = tof_load(taps, o0 + k, t), A1 = tof_load(taps, o1 + k, t);
+            const double A2 = tof_load(taps, o2 + k, t), A3 = tof_load(taps, o3 + k, t);
+            const double I = OSUB(A0, A2), Q = OSUB(A3, A1);
+            ph[k] = tof_phase(I, Q);
+            OPC_(RGBZ_OP_SQRT);
+            am[k] = OMUL(0.5, sqrt(OADD(OMUL(I, I), OMUL(Q, Q))));
+            of[k] = OMUL(0.25, OADD(OADD(A0, A1), OADD(A2, A3)));
+        }
+    }
+}
+
+#define TOF_DEMOD(S, T)                                                                         \
+TOF_CLONES static void tof_demod_##S(const void *taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t n0, \
+                                     ptrdiff_t nb, double *phase, double *amp, double *offset) \
+{                                                                                               \
+    tof_demod_impl(taps, F, N, n0, nb, phase, amp, offset, T);                                  \
+}
+TOF_DEMOD(u16, RGBZ_T_U16)
+TOF_DEMOD(f32, RGBZ_T_F32)
+TOF_DEMOD(f64, RGBZ_T_F64)
+
+/* sites per block of the OpenMP loops: the per-block scratch stays in L1 */
+#define TOF_BLOCK 128
+#define TOF_NBLOCKS(N) (((N) + TOF_BLOCK - 1) / TOF_BLOCK)
 
 int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                                   double *phase, double *amp, double *offset, int workers)
 {
+    (void)workers;                                     /* unused without OpenMP */
     if (!taps || !phase || !amp || !offset || F < 1 || N < 0) return RGBZ_EINVAL;
     if (N == 0) return RGBZ_OK;
-    switch (in_type) {
-    case RGBZ_T_U16: rgbz_tof_demod_u16(taps, F, N, phase, amp, offset, workers); break;
-    case RGBZ_T_F32: rgbz_tof_demod_f32(taps, F, N, phase, amp, offset, workers); break;
-    case RGBZ_T_F64: rgbz_tof_demod_f64(taps, F, N, phase, amp, offset, workers); break;
-    default: return RGBZ_EINVAL;
+    if (in_type != RGBZ_T_U16 && in_type != RGBZ_T_F32 && in_type != RGBZ_T_F64)
+        return RGBZ_EINVAL;
+    TOF_PARALLEL
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        if (in_type == RGBZ_T_U16) tof_demod_u16(taps, F, N, n0, nb, phase, amp, offset);
+        else if (in_type == RGBZ_T_F32) tof_demod_f32(taps, F, N, n0, nb, phase, amp, offset);
+        else tof_demod_f64(taps, F, N, n0, nb, phase, amp, offset);
     }
     return RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ unwrapping */
+typedef struct {
+    int F, base, nwrap, n_other, int_floor;
+    int other[RGBZ_TOF_MAX_FREQS];          /* the frequencies other than the base one */
+    double amb[RGBZ_TOF_MAX_FREQS];         /* c / (2 f_i), m */
+    double scale[RGBZ_TOF_MAX_FREQS];       /* amb_i / (2 pi): phase -> distance */
+    double inv_amb[RGBZ_TOF_MAX_FREQS];     /* 1 / amb_i */
+    double ratio[RGBZ_TOF_MAX_FREQS];       /* amb_base / amb_i */
+    double wcost[RGBZ_TOF_MAX_FREQS];       /* w_i amb_i^2 */
+    double w[RGBZ_TOF_MAX_FREQS];
+    double wsum;
+} tof_plan;
+
+static int tof_plan_init(tof_plan *p, ptrdiff_t F, const double *freqs, const double *weights,
+                         double max_range)
+{
+    if (!freqs || !weights || F < 1 || F > RGBZ_TOF_MAX_FREQS || !(max_range > 0))
+        return RGBZ_EINVAL;
+    p->F = (int)F;
+    p->base = 0;
+    p->wsum = 0;
+    for (int i = 0; i < p->F; i++) {
+        if (!(freqs[i] > 0 && freqs[i] <= DBL_MAX) || !(weights[i] >= 0 && weights[i] <= DBL_MAX))
+            return RGBZ_EINVAL;
+        p->amb[i] = TOF_C / (2.0 * freqs[i]);
+        if (p->amb[i] > p->amb[p->base]) p->base = i;
+        p->wsum += weights[i];
+    }
+    if (!(p->wsum > 0 && p->wsum <= DBL_MAX)) return RGBZ_EINVAL;
+    /* the count is checked as a double, before any conversion to int (B2: it overflowed) */
+    const double nw = ceil(max_range / p->amb[p->base] - 1e-12);
+    if (!(nw <= RGBZ_TOF_MAX_WRAPS)) return RGBZ_EINVAL;
+    p->nwrap = nw < 1 ? 1 : (int)nw;
+    double rmax = 1;
+    p->n_other = 0;
+    for (int i = 0; i < p->F; i++) {
+        p->scale[i] = p->amb[i] / TOF_TWO_PI;
+        p->inv_amb[i] = 1.0 / p->amb[i];
+        p->ratio[i] = p->amb[p->base] / p->amb[i];
+        p->wcost[i] = weights[i] * p->amb[i] * p->amb[i];
+        p->w[i] = weights[i];
+        if (p->ratio[i] > rmax) rmax = p->ratio[i];
+        if (i != p->base) p->other[p->n_other++] = i;
+    }
+    /* |x| <= |y_i| + (nwrap - 1) r_i <= nwrap r_i + 1: below 2^30 the floor goes through
+       int32 (exact there, and vectorisable); beyond it, libm's floor */
+    p->int_floor = p->nwrap * rmax + 2 < 1073741824.0;
+    return RGBZ_OK;
+}
+
+/* floor(t) for |t| < 2^31: truncate through int32, step down below negative non-integers */
+static inline double tof_floor_i32(double t)
+{
+    const double k = (double)(int32_t)t;
+    return t < k ? k - 1.0 : k;
+}
+
+/*
+ * Unwrap one block of nb <= TOF_BLOCK sites. d: F rows of TOF_BLOCK distances in
+ * [0, amb_i) (finite). Every loop runs over the sites of the block, innermost, so that
+ * it vectorises; the wrap count is carried as a double for the same reason. `i32`
+ * is a compile-time constant in the two instances below.
+ */
+TOF_INLINE double tof_floor_sel(double t, int i32)
+{
+    return i32 ? tof_floor_i32(t) : floor(t);
+}
+
+TOF_INLINE void tof_unwrap_block_impl(const tof_plan *p, const double *d, ptrdiff_t nb,
+                                      double *depth, double *residual, int32_t *wraps, int i32)
+{
+    double y[(RGBZ_TOF_MAX_FREQS - 1) * TOF_BLOCK];
+    double cost[TOF_BLOCK], best[TOF_BLOCK], bw[TOF_BLOCK], num[TOF_BLOCK];
+    const int b = p->base, no = p->n_other;
+    const double *db = d + b * TOF_BLOCK;
+    for (int j = 0; j < no; j++) {
+        const int i = p->other[j];
+        const double *di = d + i * TOF_BLOCK, ia = p->inv_amb[i];
+        double *yj = y + j * TOF_BLOCK;
+        for (ptrdiff_t k = 0; k < nb; k++) yj[k] = (db[k] - di[k]) * ia;
+    }
+    for (ptrdiff_t k = 0; k < nb; k++) {
+        best[k] = INFINITY;
+        bw[k] = 0;
+    }
+    for (int w = 0; w < p->nwrap; w++) {
+        const double wd = (double)w;
+        for (ptrdiff_t k = 0; k < nb; k++) cost[k] = 0;
+        for (int j = 0; j < no; j++) {
+            const int i = p->other[j];
+            const double r = w * p->ratio[i], wc = p->wcost[i];
+            const double *yj = y + j * TOF_BLOCK;
+            for (ptrdiff_t k = 0; k < nb; k++) {
+                const double x = yj[k] + r;
+                const double e = tof_floor_sel(x + 0.5, i32) - x;
+                cost[k] += wc * (e * e);
+            }
+        }
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            /* loads, selects, stores: GCC if-converts (and vectorises) this form only */
+            const double c = cost[k], bc = best[k], bk = bw[k];
+            const int better = c < bc;                 /* the first minimum wins a tie */
+            const double nc = better ? c : bc, nk = better ? wd : bk;
+            best[k] = nc;
+            bw[k] = nk;
+        }
+    }
+    const double wb = p->w[b], ab = p->amb[b];
+    for (ptrdiff_t k = 0; k < nb; k++) num[k] = wb * (db[k] + bw[k] * ab);
+    for (int j = 0; j < no; j++) {
+        const int i = p->other[j];
+        const double *di = d + i * TOF_BLOCK, *yj = y + j * TOF_BLOCK;
+        const double r = p->ratio[i], wi = p->w[i], ai = p->amb[i];
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            const double kk = tof_floor_sel(yj[k] + bw[k] * r + 0.5, i32);
+            num[k] += wi * (di[k] + kk * ai);
+        }
+    }
+    const double ws = p->wsum;
+    for (ptrdiff_t k = 0; k < nb; k++) {
+        depth[k] = num[k] / ws;
+        residual[k] = sqrt(best[k] / ws);
+        wraps[k] = (int32_t)bw[k];
+    }
+}
+
+TOF_CLONES static void tof_unwrap_block_i32(const tof_plan *p, const double *d, ptrdiff_t nb,
+                                            double *depth, double *residual, int32_t *wraps)
+{
+    tof_unwrap_block_impl(p, d, nb, depth, residual, wraps, 1);
+}
+
+static void tof_unwrap_block_libm(const tof_plan *p, const double *d, ptrdiff_t nb,
+                                  double *depth, double *residual, int32_t *wraps)
+{
+    tof_unwrap_block_impl(p, d, nb, depth, residual, wraps, 0);
+}
+
+static inline void tof_unwrap_block(const tof_plan *p, const double *d, ptrdiff_t nb,
+                                    double *depth, double *residual, int32_t *wraps)
+{
+    if (p->int_floor) tof_unwrap_block_i32(p, d, nb, depth, residual, wraps);
+    else tof_unwrap_block_libm(p, d, nb, depth, residual, wraps);
+}
+
+/* a site whose input was outside the domain: reported, never computed */
+static void tof_mark_bad(const int *ok, ptrdiff_t nb, double *depth, double *residual,
+                         int32_t *wraps)
+{
+    for (ptrdiff_t k = 0; k < nb; k++) {
+        if (!ok[k]) {
+            depth[k] = residual[k] = NAN;
+            wraps[k] = -1;
+        }
+    }
 }
 
 int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
                               const double *weights, double max_range, double *depth,
                               double *residual, int32_t *wraps, int workers)
 {
-    if (!phase || !freqs || !weights || !depth || !residual || F < 1 || F > 16 || N < 0 ||
-        !(max_range > 0))
-        return RGBZ_EINVAL;
+    tof_plan plan;
     (void)workers;
-    double amb[16], wsum = 0;
-    int base = 0;
-    for (ptrdiff_t i = 0; i < F; i++) {
-        if (!(freqs[i] > 0) || !(weights[i] >= 0)) return RGBZ_EINVAL;
-        amb[i] = TOF_C / (2.0 * freqs[i]);
-        if (amb[i] > amb[base]) base = (int)i;
-        wsum += weights[i];
-    }
-    if (!(wsum > 0)) return RGBZ_EINVAL;
-    const int nwrap = (int)ceil(max_range / amb[base] - 1e-12);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(workers > 0 ? workers : omp_get_max_threads())
-#endif
-    for (ptrdiff_t n = 0; n < N; n++) {
-        double best = INFINITY, best_d = 0;
-        int best_w = 0;
-        double d0 = phase[base * N + n] / TOF_TWO_PI * amb[base];
-        for (int w = 0; w < nwrap; w++) {
-            double cand = d0 + w * amb[base];
-            double cost = 0, num = 0;
-            for (ptrdiff_t i = 0; i < F; i++) {
-                double di = phase[i * N + n] / TOF_TWO_PI * amb[i];
-                double k = floor((cand - di) / amb[i] + 0.5);
-                di += k * amb[i];
-                double e = di - cand;
-                cost += weights[i] * e * e;
-                num += weights[i] * di;
-            }
-            if (cost < best) {
-                best = cost;
-                best_d = num / wsum;
-                best_w = w;
+    if (!phase || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
+    int st = tof_plan_init(&plan, F, freqs, weights, max_range);
+    if (st != RGBZ_OK) return st;
+    const tof_plan *p = &plan;
+    int bad = 0;
+    TOF_PARALLEL_BAD
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
+        int ok[TOF_BLOCK];
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        int all_ok = 1;
+        for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
+        for (int i = 0; i < p->F; i++) {
+            const double *ph = phase + i * N + n0, sc = p->scale[i];
+            double *di = d + i * TOF_BLOCK;
+            for (ptrdiff_t k = 0; k < nb; k++) {
+                const int in = ph[k] >= 0 && ph[k] < TOF_TWO_PI;   /* false for NaN too */
+                ok[k] &= in;
+                di[k] = in ? ph[k] * sc : 0.0;                 /* B3: no NaN reaches a floor */
             }
         }
-        depth[n] = best_d;
-        residual[n] = sqrt(best / wsum);
-        if (wraps) wraps[n] = best_w;
+        for (ptrdiff_t k = 0; k < nb; k++) all_ok &= ok[k];
+        tof_unwrap_block(p, d, nb, depth + n0, residual + n0, wraps + n0);
+        if (!all_ok) {
+            bad = 1;
+            tof_mark_bad(ok, nb, depth + n0, residual + n0, wraps + n0);
+        }
+    }
+    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ fused */
+/* One block of sites [n0, n0 + nb): demodulate every frequency into the block's
+   distances (and the optional outputs), then unwrap the block. */
+TOF_INLINE void tof_depth_impl(const void *taps, ptrdiff_t N, ptrdiff_t n0, ptrdiff_t nb,
+                               const tof_plan *p, double *depth, double *residual,
+                               int32_t *wraps, double *phase, double *amp, double *offset, int t)
+{
+    double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
+    for (int f = 0; f < p->F; f++) {
+        const ptrdiff_t o0 = 4 * f * N + n0, o1 = o0 + N, o2 = o0 + 2 * N, o3 = o0 + 3 * N;
+        const double sc = p->scale[f];
+        double *df = d + f * TOF_BLOCK;
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            const double I = tof_load(taps, o0 + k, t) - tof_load(taps, o2 + k, t);
+            const double Q = tof_load(taps, o3 + k, t) - tof_load(taps, o1 + k, t);
+            df[k] = tof_phase(I, Q);
+        }
+        if (phase) {
+            double *ph = phase + f * N + n0;
+            for (ptrdiff_t k = 0; k < nb; k++) ph[k] = df[k];
+        }
+        for (ptrdiff_t k = 0; k < nb; k++) df[k] *= sc;
+        if (amp) {
+            double *am = amp + f * N + n0;
+            for (ptrdiff_t k = 0; k < nb; k++) {
+                const double I = tof_load(taps, o0 + k, t) - tof_load(taps, o2 + k, t);
+                const double Q = tof_load(taps, o3 + k, t) - tof_load(taps, o1 + k, t);
+                am[k] = 0.5 * sqrt(I * I + Q * Q);
+            }
+        }
+        if (offset) {
+            double *of = offset + f * N + n0;
+            for (ptrdiff_t k = 0; k < nb; k++)
+                of[k] = 0.25 * ((tof_load(taps, o0 + k, t) + tof_load(taps, o1 + k, t))
+                                + (tof_load(taps, o2 + k, t) + tof_load(taps, o3 + k, t)));
+        }
+    }
+    tof_unwrap_block(p, d, nb, depth + n0, residual + n0, wraps + n0);
+}
+
+#define TOF_DEPTH(S, T)                                                                         \
+TOF_CLONES static void tof_depth_##S(const void *taps, ptrdiff_t N, ptrdiff_t n0, ptrdiff_t nb, \
+                                     const tof_plan *p, double *depth, double *residual,       \
+                                     int32_t *wraps, double *phase, double *amp,               \
+                                     double *offset)                                           \
+{                                                                                               \
+    tof_depth_impl(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset, T);          \
+}
+TOF_DEPTH(u16, RGBZ_T_U16)
+TOF_DEPTH(f32, RGBZ_T_F32)
+TOF_DEPTH(f64, RGBZ_T_F64)
+
+int RGBZ_SYM(rgbz_tof_depth)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                             const double *freqs, const double *weights, double max_range,
+                             double *depth, double *residual, int32_t *wraps, double *phase,
+                             double *amp, double *offset, int workers)
+{
+    tof_plan plan;
+    (void)workers;
+    if (!taps || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
+    int st = tof_plan_init(&plan, F, freqs, weights, max_range);
+    if (st != RGBZ_OK) return st;
+    if (N == 0) return RGBZ_OK;
+    if (in_type != RGBZ_T_U16 && in_type != RGBZ_T_F32 && in_type != RGBZ_T_F64)
+        return RGBZ_EINVAL;
+    const tof_plan *p = &plan;
+    TOF_PARALLEL
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        if (in_type == RGBZ_T_U16)
+            tof_depth_u16(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset);
+        else if (in_type == RGBZ_T_F32)
+            tof_depth_f32(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset);
+        else
+            tof_depth_f64(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset);
     }
     return RGBZ_OK;
+}
+
+int RGBZ_SYM(rgbz_tof_depth_iq)(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                                ptrdiff_t N, const double *freqs, const double *weights,
+                                double max_range, double *depth, double *residual,
+                                int32_t *wraps, double *phase, double *amp, int workers)
+{
+    tof_plan plan;
+    (void)workers;
+    if (!i_comp || !q_comp || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
+    int st = tof_plan_init(&plan, F, freqs, weights, max_range);
+    if (st != RGBZ_OK) return st;
+    const tof_plan *p = &plan;
+    int bad = 0;
+    TOF_PARALLEL_BAD
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
+        int ok[TOF_BLOCK];
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        int all_ok = 1;
+        for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
+        for (int f = 0; f < p->F; f++) {
+            const double *ic = i_comp + f * N + n0, *qc = q_comp + f * N + n0;
+            const double sc = p->scale[f];
+            double *df = d + f * TOF_BLOCK;
+            double *ph = phase ? phase + f * N + n0 : NULL;
+            double *am = amp ? amp + f * N + n0 : NULL;
+            for (ptrdiff_t k = 0; k < nb; k++) {
+                const int in = fabs(ic[k]) <= DBL_MAX && fabs(qc[k]) <= DBL_MAX;  /* not NaN */
+                ok[k] &= in;
+                df[k] = in ? tof_phase(ic[k], qc[k]) : 0.0;
+            }
+            if (ph)
+                for (ptrdiff_t k = 0; k < nb; k++) ph[k] = df[k];
+            for (ptrdiff_t k = 0; k < nb; k++) df[k] *= sc;
+            if (am)
+                for (ptrdiff_t k = 0; k < nb; k++)
+                    am[k] = 0.5 * sqrt(ic[k] * ic[k] + qc[k] * qc[k]);
+        }
+        for (ptrdiff_t k = 0; k < nb; k++) all_ok &= ok[k];
+        tof_unwrap_block(p, d, nb, depth + n0, residual + n0, wraps + n0);
+        if (!all_ok) {
+            bad = 1;
+            tof_mark_bad(ok, nb, depth + n0, residual + n0, wraps + n0);
+        }
+    }
+    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }

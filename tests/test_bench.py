@@ -53,8 +53,32 @@ def test_bench_quick_json(capsys, tmp_path, monkeypatch):
     assert _finite_positive(sg["vs_numpy"])
     assert res["targets"]["target_mpix_s"] == 150.0
     assert res["memory"] is None
+    # the ToF section: C (fused) beside NumPy on the frame's Mask1 Z measurements
+    tof = res["tof_sites"]
+    assert tof["n_sites"] == 48 * 64 // 4 and tof["pattern"] == "mask1"
+    for key in ("c_1", "c_all", "c_stages_all", "numpy"):
+        assert _finite_positive(tof[key]["msites_s"]) and tof[key]["n"] == 1
+    assert _finite_positive(tof["x_numpy_all"]) and tof["target_x_numpy"] == 5.0
+    assert tof["agreement"]["wraps_equal"] and tof["agreement"]["max_abs_depth_diff_m"] < 1e-9
+    assert res["targets"]["tof_target_met"] == tof["target_met"]
+    assert res["colour_chain"] is None                                 # --chain not given
     assert json.loads((tmp_path / "bench.json").read_text())["frame"]["pixels"] == 48 * 64
     assert "Mpix/s" in (tmp_path / "bench.txt").read_text()
+    assert "M measurements/s" in (tmp_path / "bench.txt").read_text()
+
+
+def test_bench_colour_chain_section(capsys):
+    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "64x48",
+                       "--kernels", "demosaic malvar2004 bayer float32", "--no-memory",
+                       "--no-reference", "--chain", "--json"]) == 0
+    res = json.loads(capsys.readouterr().out)
+    assert res["tof_sites"] is None                                    # --kernels left it out
+    ch = res["colour_chain"]
+    assert list(ch["stages_s"]) == list(__import__("rgbz_fast.isp").isp.STAGES)
+    assert ch["reconstruction"] == "sg" and ch["demosaic"] == "malvar2004"
+    assert 0 < sum(ch["stages_s"].values()) <= ch["total_s"] * 1.5 + 1e-3
+    text = bench.format_chain(ch)
+    assert "defect_correction" in text and "gamma" in text
 
 
 def test_measure_memory_tiny_frame():

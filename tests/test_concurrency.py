@@ -105,6 +105,7 @@ def test_stages_from_many_threads_equal_serial():
         "malvar_period": lambda: demosaic(cfa, "RGGB", mode="period", dtype=np.float64),
         "demodulate": lambda: tof_isp.demodulate(taps, workers=2),
         "unwrap": lambda: tof_isp.unwrap(phase, f, workers=2),
+        "demodulate_unwrap": lambda: tof_isp.demodulate_unwrap(taps, f, workers=2),
         "tof_depth": lambda: tof_isp.tof_depth(frame).depth,
         "colour_isp": lambda: ColourISP().run(frame, workers=2),
     }
@@ -147,8 +148,10 @@ def test_kernels_release_the_gil(kernel):
         taps = rng.integers(0, 2048, (3, 4, 1_000_000), dtype=np.uint16)
         fn = lambda: tof_isp.demodulate(taps, workers=1)  # noqa: E731
     else:
-        ph = rng.uniform(0, 2 * np.pi, (3, 200_000))
-        fn = lambda: tof_isp.unwrap(ph, [80e6, 100e6, 120e6], workers=1)  # noqa: E731
+        # 1024 wrap candidates (the most unwrap searches) keep the vectorised kernel busy
+        # for ~0.1 s on 200 000 measurements; 80/100/120 MHz would take ~3 ms, too short
+        ph = rng.uniform(0, 2 * np.pi, (2, 200_000))
+        fn = lambda: tof_isp.unwrap(ph, [80e6, 100.078125e6], workers=1)  # noqa: E731
     fn()                                                  # warm up (plans, page faults)
     t0 = time.perf_counter()
     fn()
@@ -185,7 +188,8 @@ def test_other_kernels_identical_for_every_workers_value():
     for fn in (lambda w: demosaic(cfa, "BGGR", workers=w),
                lambda w: demosaic(cfa.astype(np.uint16), mode="period", workers=w),
                lambda w: tof_isp.demodulate(taps, workers=w),
-               lambda w: tof_isp.unwrap(phase, f, workers=w)):
+               lambda w: tof_isp.unwrap(phase, f, workers=w),
+               lambda w: tof_isp.demodulate_unwrap(taps, f, workers=w)):
         outs = [fn(w) for w in WORKERS]
         for o in outs[1:]:
             for a, b in zip(np.atleast_1d(o) if not isinstance(o, tuple) else o,

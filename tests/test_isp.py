@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
+from _defects_reference import reference_correct_defects  # noqa: E402
 from conftest import load_kodak  # noqa: E402
 
 import rgbz_fast as rz  # noqa: E402
@@ -232,6 +233,50 @@ def test_known_defects_and_disabled_stage():
     np.testing.assert_array_equal(same, data)
 
 
+@pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2", "rows", "ZR/BG", "ZRGG/BGBZ",
+                                     "RGZ/GBG/ZRB"])
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
+def test_defect_correction_equals_the_full_frame_reference(pattern, dtype):
+    """The phase-plane implementation (contiguous sub-images, no full-frame
+    temporaries) against the first, full-frame one (tests/_defects_reference.py):
+    the same defect map and the same corrected values, bit for bit, on noisy frames
+    with planted hot, cold and clustered defects, known defects, other thresholds,
+    and frames smaller than or barely larger than a period."""
+    rng = np.random.default_rng(11)
+    pat = rz.get_pattern(pattern)
+    for shape in ((37, 53), (12, 12), (5, 7), (2, 3), (1, 4)):
+        try:
+            pat.check_shape(shape, "cfa")
+        except ValueError:
+            continue
+        data = np.clip(rng.normal(900, 40, shape), 0, 2047)
+        n = max(1, data.size // 40)
+        r, c = rng.integers(0, shape[0], n), rng.integers(0, shape[1], n)
+        data[r, c] = rng.choice([0.0, 2047.0, 1500.0], n)
+        data[r[:2], np.minimum(c[:2] + 1, shape[1] - 1)] = 2047.0      # a cluster
+        data = data.astype(dtype) if dtype != np.uint16 else np.round(data).astype(dtype)
+        known = rng.random(shape) < 0.01
+        for params, kn in ((DefectCorrection(), None), (DefectCorrection(), known),
+                           (DefectCorrection(threshold=0.02, spread_factor=0.5,
+                                             cross_factor=0.25), None)):
+            got = correct_defects(data, pat, params, known=kn, return_mask=True)
+            want = reference_correct_defects(data, pat, params, known=kn, return_mask=True)
+            np.testing.assert_array_equal(got[1], want[1], err_msg=f"{shape} {params}")
+            np.testing.assert_array_equal(got[0], want[0], err_msg=f"{shape} {params}")
+            assert got[0].dtype == data.dtype
+
+
+def test_defect_correction_equals_the_reference_on_a_simulated_frame():
+    frame = simulate(Scene.from_rgb(load_kodak(19, crop=(120, 160))), "mask2", seed=5)
+    data = frame.data.copy()
+    data[::17, ::13] = 2047
+    got = correct_defects(data, "mask2", white_level=2047, return_mask=True)
+    want = reference_correct_defects(data, "mask2", white_level=2047, return_mask=True)
+    assert got[1].sum() > 20
+    np.testing.assert_array_equal(got[1], want[1])
+    np.testing.assert_array_equal(got[0], want[0])
+
+
 # ----------------------------------------------------------------------- pieces
 def test_srgb_oetf_is_the_standard_curve():
     v = np.array([0.0, 0.0031308, 0.01, 0.18, 0.5, 1.0, 1.5, -0.2])
@@ -243,6 +288,25 @@ def test_srgb_oetf_is_the_standard_curve():
     np.testing.assert_array_equal(srgb_encode(np.array([0.0, 1.0, 0.2158605, 0.2140])),
                                   [0, 255, 128, 127])
     assert srgb_encode(np.array([1.0]), 16)[0] == 65535
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_srgb_oetf_equals_the_plain_formula_bit_for_bit(dtype):
+    """srgb_oetf keeps the linear segment's inputs (zeros above all) out of np.power;
+    the result is the plain two-branch formula to the last bit."""
+    rng = np.random.default_rng(5)
+    v = rng.random(200_003).astype(dtype) * dtype(1.2) - dtype(0.1)
+    v[rng.random(v.size) < 0.2] = 0
+    v[rng.random(v.size) < 0.05] = dtype(0.0031308)
+    c = np.clip(v, 0, 1)
+    t = np.dtype(dtype).type
+    want = np.power(c, t(1 / 2.4))
+    want *= t(1.055)
+    want -= t(0.055)
+    want = np.where(c <= t(0.0031308), c * t(12.92), want)
+    got = srgb_oetf(v)
+    assert got.dtype == dtype
+    np.testing.assert_array_equal(got, want)
 
 
 def test_colour_correction_matrix():

@@ -37,17 +37,9 @@ from rgbz_fast.demosaic import demosaic  # noqa: E402
 REPO = Path(__file__).resolve().parents[1]
 DOC = REPO / "docs" / "robustness.md"
 
-BUGS = {
-    "B2": "tof_isp.unwrap / tof_depth: max_range is not bounded: beyond ~4e9 m the wrap "
-          "count overflows int in tof.c (UB; depth 0, residual inf), and the run time grows "
-          "linearly with max_range (1e7 m: 0.2 s per measurement); the default max_range of "
-          "nearly coprime frequencies (80e6 + 1 and 100e6 Hz: 1.5e8 m) hangs tof_depth",
-    "B3": "tof_isp.unwrap: phases outside [0, 2 pi) are accepted (1e300 gives depth inf)",
-    "B8": "tof_isp.demodulate: the phase can be exactly 2 pi (atan2 of a tiny negative Q "
-          "plus 2 pi rounds up)",
-    "B10": "the fast exponential of rgbz_ops.h converts NaN to int (UB, found by UBSan) when "
-           "sigma**2 underflows (tests/test_extremes.py::test_reconstruct_denormal_range_floats)",
-}
+# open bugs: id -> what is wrong (docs/robustness.md describes each, fixed ones too);
+# a row with ``bug=`` is a strict xfail until the bug is fixed. None is open.
+BUGS: dict[str, str] = {}
 
 
 # --------------------------------------------------------------------------- fixtures
@@ -80,6 +72,11 @@ def _frame(pattern="mask1", shape=(8, 8)):
 def _sim(pattern="mask1", shape=(16, 16)):
     return sensor.simulate(scene.Scene(_rgb(shape), depth=np.full(shape, 1.5)), pattern,
                            noise=False)
+
+
+def _sim_tof(shape=(16, 16), **tof_sensor):
+    return sensor.simulate_tof(scene.Scene(_rgb(shape), depth=np.full(shape, 1.5)), "mask1",
+                               sensor.ToFSensor(**tof_sensor), noise=False)
 
 
 class Files:
@@ -1030,8 +1027,8 @@ ROWS = [
       lambda f: tof_isp.tof_depth(_sim(), max_range=np.nan), ValueError,
       "max_range: expected a finite number > 0"),
     R("tof.depth-max_range-huge", "tof_depth(max_range=1e12)",
-      lambda f: tof_isp.tof_depth(_sim(), max_range=1e12), ValueError, "max_range: ",
-      bug="B2"),
+      lambda f: tof_isp.tof_depth(_sim(), max_range=1e12), ValueError,
+      "max_range: 1e+12 m is beyond the 7.49481 m unambiguous range"),
     R("tof.depth-denoise", "tof_depth(denoise=1)",
       lambda f: tof_isp.tof_depth(_sim(), denoise=1), TypeError,
       "denoise: expected True or False"),
@@ -1081,16 +1078,28 @@ ROWS = [
       "max_range: expected a finite number > 0"),
     R("tof.unwrap-max_range-overflow", "unwrap(max_range=1e12)",
       lambda f: tof_isp.unwrap(np.zeros((1, 3)), [80e6], max_range=1e12), ValueError,
-      "max_range: ", bug="B2"),
+      "max_range: 1e+12 m is beyond the 1.8737 m unambiguous range"),
     R("tof.unwrap-max_range-slow", "unwrap(n=1, max_range=1e8): 5e7 wrap candidates",
       lambda f: tof_isp.unwrap(np.zeros((3, 1)), [80e6, 100e6, 120e6], max_range=1e8),
-      ValueError, "max_range: ", bug="B2"),
+      ValueError, "max_range: 1e+08 m is beyond the 7.49481 m unambiguous range"),
+    R("tof.unwrap-max_range-wraps", "unwrap(frequencies (80e6 + 10, 100e6) Hz, max_range=1e4)",
+      lambda f: tof_isp.unwrap(np.zeros((2, 1)), [80e6 + 10, 100e6], max_range=1e4),
+      ValueError, "max_range: 10000 m holds 5338 wraps of the 1.8737 m interval"),
     R("tof.unwrap-near-coprime", "unwrap(n=1, frequencies (80e6 + 10, 100e6) Hz): range 1.5e7 m",
       lambda f: tof_isp.unwrap(np.zeros((2, 1)), [80e6 + 10, 100e6]), ValueError,
-      "frequencies: ", bug="B2"),
+      "frequencies: the unambiguous range of 80.00001, 100 MHz is 1.49896e+07 m"),
+    R("tof.depth-near-coprime", "tof_depth(taps of 80e6 + 1, 100e6, 120e6 Hz): range 1.5e8 m",
+      lambda f: tof_isp.tof_depth(_sim_tof(frequencies=(80e6 + 1, 100e6, 120e6))),
+      ValueError, "frequencies: the unambiguous range of 80.000001, 100, 120 MHz"),
     R("tof.unwrap-phase-range", "unwrap(phase 1e300)",
-      lambda f: tof_isp.unwrap(np.full((1, 3), 1e300), [80e6]), ValueError, "phase: ",
-      bug="B3"),
+      lambda f: tof_isp.unwrap(np.full((1, 3), 1e300), [80e6]), ValueError,
+      "phase: values span [1e+300, 1e+300]; expected wrapped phases in [0, 2 pi)"),
+    R("tof.unwrap-phase-negative", "unwrap(phase -0.1)",
+      lambda f: tof_isp.unwrap(np.full((1, 3), -0.1), [80e6]), ValueError,
+      "phase: values span [-0.1, -0.1]; expected wrapped phases in [0, 2 pi)"),
+    R("tof.unwrap-phase-two-pi", "unwrap(phase 2 pi)",
+      lambda f: tof_isp.unwrap(np.full((1, 3), 2 * np.pi), [80e6]), ValueError,
+      "phase: values span [6.283185307179586, 6.283185307179586]; expected wrapped"),
     R("tof.denoise-shapes", "denoise_phasors(i (1, 3), q (1, 4))",
       lambda f: tof_isp.denoise_phasors(np.zeros((1, 3)), np.zeros((1, 4)),
                                         (np.arange(3), np.arange(3))), ValueError,

@@ -17,9 +17,10 @@ import rgbz_fast as rz  # noqa: E402
 from rgbz_fast.scene import Scene, load_rgbd  # noqa: E402
 from rgbz_fast.sensor import (SPEED_OF_LIGHT, ToFSensor, ToFTaps, simulate,  # noqa: E402
                               simulate_tof)
+from rgbz_fast._tof_numpy import numpy_tof_depth, numpy_unwrap  # noqa: E402
 from rgbz_fast.tof_isp import (FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_SATURATED,  # noqa: E402
-                               ToFDepth, ToFISP, demodulate, denoise_phasors, phasors,
-                               tof_depth, unwrap)
+                               MAX_WRAPS, ToFDepth, ToFISP, demodulate, demodulate_unwrap,
+                               denoise_phasors, phasors, tof_depth, unambiguous_range, unwrap)
 
 C = SPEED_OF_LIGHT
 U = ToFSensor().unambiguous_range                       # 7.495 m
@@ -121,6 +122,173 @@ def test_unwrap_is_exact_on_ideal_phases_over_the_whole_range():
     # custom weights and a shorter search range
     d2, _, _ = unwrap(phase[:, :100], f, weights=[1, 1, 1], max_range=3.0)
     np.testing.assert_allclose(d2, d[:100], atol=1e-9)
+
+
+def _random_taps(shape, dtype, seed=0):
+    rng = np.random.default_rng(seed)
+    if np.issubdtype(dtype, np.integer):
+        return rng.integers(0, 2048, shape).astype(dtype)
+    return rng.uniform(0, 2047, shape).astype(dtype)
+
+
+def test_fast_atan2_matches_numpy_to_one_ulp():
+    """tof.c's atan2 (no libm; Cephes' rational core) against numpy.arctan2 wrapped to
+    [0, 2 pi): at most one ulp of 2 pi (8.9e-16 rad) on random phasors at every scale,
+    the axes, the diagonals, zero and infinite components."""
+    rng = np.random.default_rng(7)
+    parts = [rng.normal(size=(2, 200_000)) * s for s in (1.0, 1e-300, 1e-310, 1e300, 2047.0)]
+    axes = np.array([[1, 0], [0, 1], [-1, 0], [0, -1], [1, 1], [-1, 1], [-1, -1], [1, -1],
+                     [0, 0], [3, 4], [1e-17, 1], [-1e-17, 1], [-1e-17, -1], [1, 0.66],
+                     [0.66, 1], [1e308, 1], [1, 1e308], [1e308, 1e308], [-1e308, 2],
+                     [-1e308, -1e308]], float).T[::-1]        # rows: Q, I
+    q, i = np.concatenate(parts + [axes], axis=1)
+    taps = np.zeros((1, 4, q.size))
+    taps[0, 0], taps[0, 3] = i, q                             # I = A0, Q = A3
+    big = np.abs(taps) == 1e308                               # I = A0 - A2 = 2e308 = inf
+    taps[0, 2], taps[0, 1] = -taps[0, 0] * big[0, 0], -taps[0, 3] * big[0, 3]
+    with np.errstate(over="ignore"):
+        i, q = taps[0, 0] - taps[0, 2], taps[0, 3] - taps[0, 1]
+    assert np.isinf(i).sum() >= 3 and np.isinf(q).sum() >= 3
+    phase, _, _ = demodulate(taps)
+    want = np.arctan2(q, i)
+    want[want < 0] += 2 * np.pi
+    want[want >= 2 * np.pi] = 0.0
+    err = np.abs(phase[0] - want)
+    err = np.minimum(err, 2 * np.pi - err)                    # 0 and 2 pi are one phase
+    assert err.max() <= np.spacing(2 * np.pi), err.max()
+    assert np.all((phase >= 0) & (phase < 2 * np.pi))
+
+
+@pytest.mark.parametrize("f,weights,max_range", [
+    ([80e6, 100e6, 120e6], None, None),
+    ([80e6, 100e6, 120e6], [1, 1, 1], 3.0),
+    ([100e6, 80e6], None, None),                      # the base frequency second
+    ([20e6, 100e6, 120e6, 150e6], None, 12.0),
+    ([100e6], None, None),
+    ([1e6, 2.5e15], None, None),                      # x beyond 2^30: libm's floor path
+])
+def test_unwrap_kernel_equals_its_numpy_twin_bit_for_bit(f, weights, max_range):
+    """C unwrap vs rgbz_fast._tof_numpy.numpy_unwrap (the same arithmetic, whole-array
+    NumPy): identical depth, residual and wrap counts from the same phases."""
+    rng = np.random.default_rng(3)
+    phase = rng.uniform(0, 2 * np.pi, (len(f), 5003))
+    phase[:, :3] = 0.0
+    phase[:, 3] = np.nextafter(2 * np.pi, 0)
+    got = unwrap(phase, f, weights=weights, max_range=max_range, workers=2)
+    want = numpy_unwrap(phase, f, weights, max_range)
+    for a, b in zip(got, want):
+        np.testing.assert_array_equal(a, b)
+
+
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64, np.int32])
+def test_fused_demodulate_unwrap_matches_numpy(dtype):
+    """demodulate_unwrap (one C pass) against the NumPy implementation (np.arctan2 +
+    the same unwrapping): same wrap counts, depth to 1e-9 m, phase to 1e-15 rad,
+    amplitude to 1e-12 relative, offset exact; and against demodulate + unwrap
+    (the C stages) bit for bit."""
+    f = [80e6, 100e6, 120e6]
+    taps = _random_taps((3, 4, 20_011), dtype)
+    got = demodulate_unwrap(taps, f, workers=2)
+    depth, residual, wraps, phase, amp, off = numpy_tof_depth(taps, f)
+    np.testing.assert_array_equal(got[2], wraps)
+    np.testing.assert_allclose(got[0], depth, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(got[1], residual, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(got[3], phase, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(got[4], amp, rtol=1e-12)
+    np.testing.assert_array_equal(got[5], off)
+    ph, am, of = demodulate(taps)
+    for a, b in zip(got, unwrap(ph, f) + (ph, am, of)):
+        np.testing.assert_array_equal(a, b)
+    # the workers never change a bit; nor does an empty input fail
+    for w in (1, 3):
+        for a, b in zip(got, demodulate_unwrap(taps, f, workers=w)):
+            np.testing.assert_array_equal(a, b)
+    empty = demodulate_unwrap(taps[:, :, :0], f)
+    assert [a.shape for a in empty] == [(0,), (0,), (0,), (3, 0), (3, 0), (3, 0)]
+
+
+def test_tof_depth_uses_the_fused_kernel_without_denoise():
+    tof = _wall(np.tile(np.linspace(0.5, 6, 48), (24, 1)), "mask1", (24, 48), seed=2)
+    res = tof_depth(tof, denoise=False)
+    ph, am, of = demodulate(tof.taps)
+    depth, residual, wraps = unwrap(ph, tof.frequencies)
+    for a, b in ((res.depth, depth), (res.residual, residual), (res.wraps, wraps),
+                 (res.phase, ph), (res.amplitude, am), (res.offset, of)):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_denoised_phasors_unwrap_like_numpy():
+    """The denoise path's C pass (atan2 + amplitude + unwrapping of the averaged phasors)
+    against np.arctan2 / np.hypot and the NumPy unwrapping."""
+    tof = _wall(np.tile(np.linspace(0.5, 6, 48), (24, 1)), "mask2", (24, 48), seed=4)
+    res = tof_depth(tof)
+    i, q = phasors(tof.taps)
+    sat = np.asarray(tof.saturated) | np.any(tof.taps >= tof.white_level, axis=(0, 1))
+    i, q, _, _ = denoise_phasors(i, q, tof.sites, block=tof.block, use=~sat)
+    phase = np.arctan2(q, i)
+    phase[phase < 0] += 2 * np.pi
+    phase[phase >= 2 * np.pi] = 0.0
+    np.testing.assert_allclose(res.phase, phase, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(res.amplitude, 0.5 * np.hypot(i, q), rtol=1e-12)
+    depth, residual, wraps = numpy_unwrap(phase, tof.frequencies)
+    np.testing.assert_array_equal(res.wraps, wraps)
+    np.testing.assert_allclose(res.depth, depth, rtol=0, atol=1e-9)
+
+
+# --------------------------------------------------------------------------- B2, B3
+def test_max_range_is_bounded_by_the_unambiguous_range_and_the_wrap_count():
+    """B2: max_range beyond the unambiguous range (the search would repeat) or beyond
+    MAX_WRAPS wraps of the lowest frequency is refused, before any kernel runs."""
+    f = [80e6, 100e6, 120e6]
+    assert unambiguous_range(f) == pytest.approx(C / (2 * 20e6))
+    phase = np.zeros((3, 4))
+    for bad in (U * 1.001, 1e8, 1e12, 1e300):
+        with pytest.raises(ValueError, match="max_range: .* is beyond the 7.49481 m "
+                                             "unambiguous range"):
+            unwrap(phase, f, max_range=bad)
+    unwrap(phase, f, max_range=U)                     # the range itself is fine
+    # nearly coprime: 1.5e7 m of range, a search capped at MAX_WRAPS wraps of 1.874 m
+    near = [80e6 + 10, 100e6]
+    cap = MAX_WRAPS * C / (2 * near[0])
+    with pytest.raises(ValueError, match="frequencies: the unambiguous range"):
+        unwrap(np.zeros((2, 4)), near)
+    with pytest.raises(ValueError, match="max_range: .* wraps"):
+        unwrap(np.zeros((2, 4)), near, max_range=cap * 1.01)
+    d = np.array([0.5, 3.0, 100.0, 1500.0])
+    ph = np.mod(4 * np.pi * np.array(near)[:, None] * d[None] / C, 2 * np.pi)
+    depth, residual, _ = unwrap(ph, near, max_range=cap)
+    np.testing.assert_allclose(depth, d, atol=1e-6)
+    # a tiny range still searches the first wrap (no residual of inf)
+    depth, residual, wraps = unwrap(np.full((3, 2), 0.1), f, max_range=1e-9)
+    assert np.all(np.isfinite(residual)) and np.all(wraps == 0)
+
+
+def test_nearly_coprime_sensor_needs_an_explicit_max_range():
+    """B2: the default of tof_depth raised (instead of hanging for days) and names the
+    frequencies; an explicit max_range within the cap unwraps."""
+    sensor = ToFSensor(frequencies=(80e6 + 1, 100e6, 120e6), quantise=False,
+                       optical_power_w=0.05)
+    tof = _wall(1.5, "mask1", (12, 12), sensor=sensor, noise=False)
+    assert tof.unambiguous_range > 1e8
+    with pytest.raises(ValueError, match="frequencies: .* pass max_range="):
+        tof_depth(tof)
+    with pytest.raises(ValueError, match="frequencies"):
+        ToFISP().run(tof)
+    res = tof_depth(tof, max_range=500.0)
+    np.testing.assert_allclose(res.depth, 1.5, atol=1e-6)
+
+
+def test_phases_outside_zero_two_pi_are_refused():
+    """B3: checked inside the kernel (no extra pass); the message names the phase."""
+    f = [80e6, 100e6, 120e6]
+    good = np.random.default_rng(0).uniform(0, 2 * np.pi, (3, 1000))
+    for value in (-1e-300, -0.1, 2 * np.pi, 7.0, 1e300, np.nan, np.inf, -np.inf):
+        bad = good.copy()
+        bad[1, 637] = value
+        msg = "phase: holds NaN" if not np.isfinite(value) else "phase: values span"
+        with pytest.raises(ValueError, match=msg):
+            unwrap(bad, f, workers=2)
+    unwrap(np.full((3, 1), np.nextafter(2 * np.pi, 0)), f)   # just below 2 pi is fine
 
 
 # --------------------------------------------------------------------------- noise-free

@@ -1,4 +1,10 @@
-"""Indirect time-of-flight: four-tap demodulation and three-frequency unwrapping."""
+"""Indirect time-of-flight: four-tap demodulation and three-frequency unwrapping.
+
+``ToFSuite`` times the C kernels (two passes, and the fused one-pass kernel of
+``tof_isp.demodulate_unwrap`` where the commit has it); ``ToFNumPySuite`` the
+vectorised NumPy implementation of the same algorithm (``rgbz_fast._tof_numpy``),
+so that ``asv compare`` shows the ratio of issue 5 (target: C >= 5x NumPy).
+"""
 
 import numpy as np
 
@@ -52,3 +58,38 @@ class ToFSuite:
         self.k.tof_demodulate(self.taps, self.phase, self.amp, self.off, 0)
         self.k.tof_unwrap(self.phase, FREQS, self.w, C / (2 * 20e6), self.depth, self.resid,
                           self.wraps, 0)
+
+    def time_fused(self, n):
+        """One pass: taps -> phase, amplitude, offset, depth, residual, wraps (public API)."""
+        try:
+            from rgbz_fast.tof_isp import demodulate_unwrap
+        except ImportError:
+            raise NotImplementedError("no fused ToF kernel in this commit") from None
+        demodulate_unwrap(self.taps, FREQS)
+
+    def time_fused_1thread(self, n):
+        try:
+            from rgbz_fast.tof_isp import demodulate_unwrap
+        except ImportError:
+            raise NotImplementedError("no fused ToF kernel in this commit") from None
+        demodulate_unwrap(self.taps, FREQS, workers=1)
+
+
+class ToFNumPySuite:
+    """The NumPy twin of the fused kernel, same data: the denominator of the x NumPy ratio."""
+    params = ([98_304, 3_000_000],)
+    param_names = ["n_sites"]
+    timeout = 300
+
+    def setup(self, n):
+        try:
+            from rgbz_fast._tof_numpy import numpy_tof_depth
+        except ImportError:
+            raise NotImplementedError("no NumPy ToF twin in this commit") from None
+        if SKIP_SLOW and n > 1_000_000:
+            raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")
+        self.fn = numpy_tof_depth
+        self.taps = _taps(n)
+
+    def time_numpy(self, n):
+        self.fn(self.taps, FREQS)

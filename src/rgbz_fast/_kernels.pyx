@@ -11,8 +11,11 @@ cdef extern from "rgbz.h" nogil:
     int RGBZ_OK
     int RGBZ_EINVAL
     int RGBZ_ENOMEM
+    int RGBZ_EDOMAIN
     int RGBZ_T_U8, RGBZ_T_U16, RGBZ_T_F32, RGBZ_T_F64
     int RGBZ_NOPS
+    int RGBZ_TOF_MAX_WRAPS
+    int RGBZ_TOF_MAX_FREQS
     ctypedef struct rgbz_plan:
         pass
     ctypedef struct rgbz_params:
@@ -42,6 +45,14 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_tof_unwrap(const double *phase, Py_ssize_t F, Py_ssize_t N, const double *freqs,
                         const double *weights, double max_range, double *depth,
                         double *residual, int32_t *wraps, int workers)
+    int rgbz_tof_depth(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                       const double *freqs, const double *weights, double max_range,
+                       double *depth, double *residual, int32_t *wraps, double *phase,
+                       double *amp, double *offset, int workers)
+    int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, Py_ssize_t F,
+                          Py_ssize_t N, const double *freqs, const double *weights,
+                          double max_range, double *depth, double *residual, int32_t *wraps,
+                          double *phase, double *amp, int workers)
     int rgbz_tof_demodulate_count(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                                   double *phase, double *amp, double *offset, int workers)
     int rgbz_have_openmp()
@@ -76,6 +87,8 @@ cdef int _type_code(frame_t *p) noexcept nogil:
         return RGBZ_T_F64
 
 NOPS = RGBZ_NOPS
+TOF_MAX_WRAPS = RGBZ_TOF_MAX_WRAPS
+TOF_MAX_FREQS = RGBZ_TOF_MAX_FREQS
 
 
 cdef int _raise_for(int status) except -1:
@@ -192,12 +205,72 @@ def tof_demodulate(const tap_t[:, :, ::1] taps, double[:, ::1] phase, double[:, 
 def tof_unwrap(const double[:, ::1] phase, const double[::1] freqs, const double[::1] weights,
                double max_range, double[::1] depth, double[::1] residual, int32_t[::1] wraps,
                int workers):
-    """Multi-frequency phase unwrapping (brute force over the base frequency's wraps)."""
+    """Multi-frequency phase unwrapping (brute force over the base frequency's wraps).
+
+    Returns False when a phase lies outside [0, 2 pi) or is NaN (the kernel's
+    RGBZ_EDOMAIN; the caller names the parameter), True otherwise.
+    """
     cdef int status
     if phase.shape[1] == 0:
-        return
+        return True
     with nogil:
         status = rgbz_tof_unwrap(&phase[0, 0], phase.shape[0], phase.shape[1], &freqs[0],
                                  &weights[0], max_range, &depth[0], &residual[0], &wraps[0],
                                  workers)
+    if status == RGBZ_EDOMAIN:
+        return False
     _raise_for(status)
+    return True
+
+
+cdef double *_opt2(double[:, ::1] a) noexcept:
+    return NULL if a is None else &a[0, 0]
+
+
+def tof_depth(const tap_t[:, :, ::1] taps, const double[::1] freqs, const double[::1] weights,
+              double max_range, double[::1] depth, double[::1] residual, int32_t[::1] wraps,
+              double[:, ::1] phase=None, double[:, ::1] amp=None, double[:, ::1] offset=None,
+              int workers=0):
+    """Fused demodulation + unwrapping: taps (F, 4, N) -> depth, residual, wraps (N,) and,
+    when given, phase, amplitude, offset (F, N)."""
+    cdef int status
+    cdef int in_type
+    cdef double *ph = _opt2(phase)
+    cdef double *am = _opt2(amp)
+    cdef double *of = _opt2(offset)
+    if tap_t is uint16_t:
+        in_type = RGBZ_T_U16
+    elif tap_t is float:
+        in_type = RGBZ_T_F32
+    else:
+        in_type = RGBZ_T_F64
+    if taps.shape[2] == 0:
+        return
+    with nogil:
+        status = rgbz_tof_depth(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                &freqs[0], &weights[0], max_range, &depth[0], &residual[0],
+                                &wraps[0], ph, am, of, workers)
+    _raise_for(status)
+
+
+def tof_depth_iq(const double[:, ::1] i, const double[:, ::1] q, const double[::1] freqs,
+                 const double[::1] weights, double max_range, double[::1] depth,
+                 double[::1] residual, int32_t[::1] wraps, double[:, ::1] phase=None,
+                 double[:, ::1] amp=None, int workers=0):
+    """Phasors I, Q (F, N) -> phase, amplitude (when given), depth, residual, wraps.
+
+    Returns False when an I or Q is not finite (RGBZ_EDOMAIN), True otherwise.
+    """
+    cdef int status
+    cdef double *ph = _opt2(phase)
+    cdef double *am = _opt2(amp)
+    if i.shape[1] == 0:
+        return True
+    with nogil:
+        status = rgbz_tof_depth_iq(&i[0, 0], &q[0, 0], i.shape[0], i.shape[1], &freqs[0],
+                                   &weights[0], max_range, &depth[0], &residual[0], &wraps[0],
+                                   ph, am, workers)
+    if status == RGBZ_EDOMAIN:
+        return False
+    _raise_for(status)
+    return True

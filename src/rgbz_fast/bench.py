@@ -18,6 +18,17 @@ calls (after one warm-up call), with 1 thread and with all threads. Beside it:
   same frame and scaled to Mpix/s; the ratio is our 1-thread speed over it.
   The Malvar demosaic is compared with colour-demosaicing's NumPy/SciPy
   implementation and the demodulation with a NumPy one-liner.
+* ToF section: demodulation + unwrapping of the Z measurements of a Mask1
+  frame of that size (3 million at 4000x3000; 3 frequencies x 4 taps,
+  synthetic 11-bit taps of depths in [0.3, 7] m) in million measurements
+  per second: the fused C kernel (``tof_isp.demodulate_unwrap``) with 1
+  thread and all threads beside the vectorised NumPy implementation of the
+  same algorithm (``rgbz_fast._tof_numpy``: ``np.arctan2``, brute force over
+  the same wrap candidates), timed in turn in the same loop, with the check
+  that both agree. The issue's target is >= 5x NumPy with all threads.
+* ``--chain``: the colour ISP (``isp.ColourISP``: defects -> SG float32
+  reconstruction -> white balance -> C Malvar demosaic -> colour correction ->
+  sRGB gamma -> 8-bit output) on the Mask1 frame, seconds per stage (medians).
 * Peak memory of one ``reconstruct`` call on the full frame, measured in a
   fresh subprocess: the growth of the peak resident set size
   (``ru_maxrss``) across the call, and tracemalloc's peak of the Python-side
@@ -45,7 +56,8 @@ import numpy as np
 from ._benchutil import (CliError, check_out_dir, check_workers_arg, common_parser,
                          machine_info, progress, run_main, tile_to, write_json)
 
-__all__ = ["run_benchmarks", "format_table", "load_numpy_reference", "measure_memory", "main"]
+__all__ = ["run_benchmarks", "format_table", "load_numpy_reference", "measure_memory",
+           "tof_sites_benchmark", "colour_chain_benchmark", "format_tof", "format_chain", "main"]
 
 FULL_SHAPE = (3000, 4000)     # rows, cols: a 4000x3000 (12 Mpix) frame
 QUICK_SHAPE = (192, 256)
@@ -281,6 +293,106 @@ def _opencv(frame_fn, repeat, workers, npix):
 
 
 # ---------------------------------------------------------------------------------------------
+# ToF measurements per second, C beside NumPy; the colour chain stage by stage
+
+TOF_TARGET_X_NUMPY = 5.0
+
+
+def _interleaved(fns, repeat):
+    """Times of each function of ``fns`` (name -> fn), one call each per round after one
+    warm-up call each: the rounds alternate the functions, so that a change of the
+    machine's load during the run hits all of them alike."""
+    for fn in fns.values():
+        fn()
+    times = {k: [] for k in fns}
+    for _ in range(repeat):
+        for k, fn in fns.items():
+            t0 = time.perf_counter()
+            fn()
+            times[k].append(time.perf_counter() - t0)
+    return {k: np.asarray(v) for k, v in times.items()}
+
+
+def _site_stats(times, n):
+    q1, med, q3 = np.percentile(times, [25, 50, 75])
+    return {"median_s": float(med), "q1_s": float(q1), "q3_s": float(q3),
+            "min_s": float(times.min()), "n": int(times.size), "msites_s": n / 1e6 / med,
+            "msites_s_lo": n / 1e6 / q3, "msites_s_hi": n / 1e6 / q1}
+
+
+def tof_sites_benchmark(shape=FULL_SHAPE, repeat=5, workers=None, pattern="mask1"):
+    """Demodulation + unwrapping of the Z measurements of a ``shape`` frame: C vs NumPy.
+
+    Returns a dict with the measurement count, ``c_1`` / ``c_all`` (fused C kernel, 1 and
+    ``workers`` threads), ``c_stages_all`` (``demodulate`` then ``unwrap``, two C passes),
+    ``numpy`` (:mod:`rgbz_fast._tof_numpy`), each with ``msites_s`` (median, million
+    measurements per second), the speed ratios over NumPy and their agreement.
+    """
+    import rgbz_fast as rz
+
+    from . import tof_isp
+    from ._tof_numpy import numpy_tof_depth
+
+    workers = workers or (os.cpu_count() or 1)
+    pat = rz.get_pattern(pattern)
+    z = pat.z_mask(shape)
+    n = int(z.sum())
+    if pattern == "mask2":
+        n //= 4
+    taps = _tof_taps(n)
+    f = np.asarray(TOF_FREQS)
+
+    def stages():
+        ph, _, _ = tof_isp.demodulate(taps, workers=workers)
+        tof_isp.unwrap(ph, f, workers=workers)
+
+    times = _interleaved({
+        "c_1": lambda: tof_isp.demodulate_unwrap(taps, f, workers=1),
+        "c_all": lambda: tof_isp.demodulate_unwrap(taps, f, workers=workers),
+        "c_stages_all": stages,
+        "numpy": lambda: numpy_tof_depth(taps, f),
+    }, repeat)
+    out = {k: _site_stats(v, n) for k, v in times.items()}
+    c = tof_isp.demodulate_unwrap(taps, f, workers=workers)
+    ref = numpy_tof_depth(taps, f)
+    agree = {"wraps_equal": bool(np.array_equal(c[2], ref[2])),
+             "max_abs_depth_diff_m": float(np.max(np.abs(c[0] - ref[0]))) if n else 0.0,
+             "max_abs_phase_diff_rad": float(np.max(np.abs(c[3] - ref[3]))) if n else 0.0}
+    npy = out["numpy"]["median_s"]
+    x_all = npy / out["c_all"]["median_s"]
+    return dict(pattern=pattern, frame_shape=list(shape), n_sites=n, frequencies=list(TOF_FREQS),
+                workers=workers, repeat=repeat, **out,
+                x_numpy_1=npy / out["c_1"]["median_s"], x_numpy_all=x_all,
+                target_x_numpy=TOF_TARGET_X_NUMPY, target_met=bool(x_all >= TOF_TARGET_X_NUMPY),
+                agreement=agree)
+
+
+def colour_chain_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, pattern="mask1"):
+    """Seconds of every stage of ``isp.ColourISP().run`` (SG float32, C Malvar) on the
+    benchmark frame mosaicked on ``pattern``: medians over ``repeat`` runs after a warm-up."""
+    import rgbz_fast as rz
+
+    from .isp import STAGES, ColourISP
+
+    workers = workers or (os.cpu_count() or 1)
+    frame = rz.mosaic(make_rgb(shape), pattern)
+    chain = ColourISP()
+    chain.run(frame, workers=workers)
+    totals, stages = [], {k: [] for k in STAGES}
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        _, st = chain.run(frame, workers=workers, return_stages=True)
+        totals.append(time.perf_counter() - t0)
+        for k in STAGES:
+            stages[k].append(st["seconds"][k])
+    return dict(pattern=pattern, frame_shape=list(shape), workers=workers, repeat=repeat,
+                reconstruction=chain.reconstruction.method, precision=chain.precision,
+                demosaic=chain.demosaicing.method,
+                total_s=float(np.median(totals)), total_min_s=float(np.min(totals)),
+                stages_s={k: float(np.median(v)) for k, v in stages.items()})
+
+
+# ---------------------------------------------------------------------------------------------
 # memory
 
 _MEM_SCRIPT = r"""
@@ -365,8 +477,13 @@ def measure_memory(data, pattern="mask1", method="sg", precision="float32", work
 # driver
 
 def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320), kernels=None,
-                   reference=True, memory=True, quiet=True):
-    """Run every benchmark; returns the JSON-able result dict (see ``--json``)."""
+                   reference=True, memory=True, quiet=True, tof_sites=True, chain=False):
+    """Run every benchmark; returns the JSON-able result dict (see ``--json``).
+
+    ``tof_sites``: the ToF section (C vs NumPy, M measurements/s); it runs unless
+    ``kernels`` is given and none of its entries occurs in ``"tof sites"``. ``chain``:
+    the colour ISP stage by stage.
+    """
     workers = workers or (os.cpu_count() or 1)
     npix = shape[0] * shape[1]
     load0 = os.getloadavg() if hasattr(os, "getloadavg") else None
@@ -390,6 +507,10 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
                 r[f"vs_opencv_{key}_{label}"] = (
                     None if ocv is None else
                     _ratio(r["threads"][label]["mpix_s"], ocv[key][label]["mpix_s"]))
+    tof = None
+    if tof_sites and (not kernels or any(k in "tof sites" for k in kernels)):
+        tof = tof_sites_benchmark(shape, repeat, workers)
+    colour = colour_chain_benchmark(shape, repeat, workers) if chain else None
     mem = None
     if memory:
         mem = measure_memory(frame_fn("mask1").data, "mask1", "sg", "float32", workers)
@@ -405,6 +526,10 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         if ocv is not None:
             targets["opencv_ea_all_threads_mpix_s"] = ocv["ea"]["all"]["mpix_s"]
             targets["fraction_of_opencv_ea"] = v / ocv["ea"]["all"]["mpix_s"]
+    if tof is not None:
+        targets["tof_x_numpy_all_threads"] = tof["x_numpy_all"]
+        targets["tof_target_x_numpy"] = TOF_TARGET_X_NUMPY
+        targets["tof_target_met"] = tof["target_met"]
     if mem and "array" in mem:
         targets["peak_memory_within_budget"] = {k: mem[k]["within_budget"]
                                                 for k in ("array", "rawframe")}
@@ -416,7 +541,8 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         "repeat": repeat, "workers_all": workers,
         "numpy_reference": {"available": have_ref and reference,
                             "crop": [ref_crop[0] // 12 * 12, ref_crop[1] // 4 * 4]},
-        "results": results, "opencv": ocv, "memory": mem, "targets": targets,
+        "results": results, "opencv": ocv, "tof_sites": tof, "colour_chain": colour,
+        "memory": mem, "targets": targets,
     }
 
 
@@ -484,6 +610,11 @@ def format_table(res):
             s += (f"; OpenCV EA {t['opencv_ea_all_threads_mpix_s']:.0f} Mpix/s "
                   f"(we run at {t['fraction_of_opencv_ea']:.3f} of its speed)")
         lines.append(s)
+    tof = res.get("tof_sites")
+    if tof:
+        lines += ["", format_tof(tof)]
+    if res.get("colour_chain"):
+        lines += ["", format_chain(res["colour_chain"])]
     mem = res["memory"]
     if mem:
         if "error" in mem:
@@ -499,6 +630,41 @@ def format_table(res):
                     f"MiB), tracemalloc peak {m['traced_peak'] / 2**20:.1f} MiB; input + growth ="
                     f" {m['peak_over_in_plus_out']:.3f} x (input + output) [budget 1.10: "
                     f"{'ok' if m['within_budget'] else 'OVER'}]")
+    return "\n".join(lines)
+
+
+def format_tof(tof):
+    """The ToF section of the report (C vs NumPy, million measurements per second)."""
+    lines = [f"ToF: demodulation + unwrapping of the {tof['n_sites']:,} Z measurements of a "
+             f"{tof['frame_shape'][1]}x{tof['frame_shape'][0]} {tof['pattern']} frame "
+             f"({len(tof['frequencies'])} frequencies x 4 taps, uint16), median [IQR] of "
+             f"{tof['repeat']} runs, M measurements/s (timed in turn in one loop)"]
+    rows = [("C fused, 1 thread", tof["c_1"]), (f"C fused, {tof['workers']} threads",
+                                                 tof["c_all"]),
+            (f"C demodulate + unwrap, {tof['workers']} threads", tof["c_stages_all"]),
+            ("NumPy (np.arctan2 + vectorised brute force)", tof["numpy"])]
+    w = max(len(r[0]) for r in rows)
+    for label, t in rows:
+        lines.append(f"  {label.ljust(w)}  {_f(t['msites_s'])} [{_f(t['msites_s_lo'])}-"
+                     f"{_f(t['msites_s_hi'])}]  ({t['median_s']:.3f} s)")
+    a = tof["agreement"]
+    lines.append(f"  x NumPy: {tof['x_numpy_1']:.1f} (1 thread), {tof['x_numpy_all']:.1f} "
+                 f"({tof['workers']} threads) vs >= {tof['target_x_numpy']:g}: "
+                 f"{'met' if tof['target_met'] else 'NOT met'}; C and NumPy agree: wrap counts "
+                 f"{'identical' if a['wraps_equal'] else 'DIFFER'}, max |depth diff| "
+                 f"{a['max_abs_depth_diff_m']:.1e} m, max |phase diff| "
+                 f"{a['max_abs_phase_diff_rad']:.1e} rad")
+    return "\n".join(lines)
+
+
+def format_chain(ch):
+    """The colour-chain section: seconds per stage."""
+    lines = [f"colour chain: ColourISP on a {ch['frame_shape'][1]}x{ch['frame_shape'][0]} "
+             f"{ch['pattern']} frame ({ch['reconstruction']} {ch['precision']}, "
+             f"{ch['demosaic']}, {ch['workers']} threads), median of {ch['repeat']} runs: "
+             f"{ch['total_s']:.3f} s in all"]
+    for k, v in ch["stages_s"].items():
+        lines.append(f"  {k:<18} {v:.3f} s  {100 * v / ch['total_s']:5.1f} %")
     return "\n".join(lines)
 
 
@@ -526,9 +692,15 @@ def main(argv=None):
                    "--quick 256x192)")
     p.add_argument("--kernels", default=None,
                    help="comma-separated substrings; run only the cases whose label "
-                        "('reconstruct sg mask1 float32', 'demosaic', 'tof') contains one")
+                        "('reconstruct sg mask1 float32', 'demosaic', 'tof') contains one; "
+                        "the ToF section runs when one is a substring of 'tof sites' "
+                        "('tof sites' alone: that section only)")
     p.add_argument("--no-reference", action="store_true", help="skip the NumPy references")
     p.add_argument("--no-memory", action="store_true", help="skip the peak-memory subprocess")
+    p.add_argument("--no-tof-sites", action="store_true",
+                   help="skip the ToF section (C vs NumPy in M measurements/s)")
+    p.add_argument("--chain", action="store_true",
+                   help="also time the colour ISP chain stage by stage")
 
     def body(args):
         shape = _parse_shape(args.shape) if args.shape else (QUICK_SHAPE if args.quick
@@ -542,8 +714,8 @@ def main(argv=None):
         crop = (48, 64) if args.quick else (240, 320)
         crop = (min(crop[0], shape[0]), min(crop[1], shape[1]))
         res = run_benchmarks(shape, repeat, workers, crop, kernels, not args.no_reference,
-                             not args.no_memory, args.quiet)
-        if not res["results"]:
+                             not args.no_memory, args.quiet, not args.no_tof_sites, args.chain)
+        if not res["results"] and res["tof_sites"] is None:
             raise CliError(f"--kernels: no case matches {args.kernels!r}")
         res["command"] = "rgbz-fast bench " + " ".join(sys.argv[1:] if argv is None else argv)
         table = format_table(res)

@@ -13,6 +13,10 @@ Chain (:func:`tof_depth`; every stage is also a function of its own)::
                    ─► unwrap (C, weights f_i^2): depth, residual, wrap count
                    ─► validity: saturation, signal-to-noise ratio, residual
 
+Without the denoise, demodulation and unwrapping run as one fused C pass
+(:func:`demodulate_unwrap`); with it, the atan2 of the averaged phasors and the
+unwrapping do.
+
 Conventions (docs/sensor.md): ``I = A0 - A2``, ``Q = A3 - A1``,
 ``phase = atan2(Q, I)`` wrapped to [0, 2 pi), ``amplitude = |I + iQ| / 2`` and
 ``offset = mean(A_k)`` in DN; ``distance = c phase / (4 pi f) + m c / (2 f)``.
@@ -30,9 +34,17 @@ from . import _kernels
 from ._validate import check_number, check_workers
 
 __all__ = ["ToFISP", "ToFDepth", "tof_depth", "demodulate", "phasors", "denoise_phasors",
-           "unwrap", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT"]
+           "unwrap", "demodulate_unwrap", "unambiguous_range", "MAX_WRAPS",
+           "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT"]
 
 SPEED_OF_LIGHT = 299_792_458.0
+
+#: most wrap counts of the base frequency (the one with the longest ambiguity interval
+#: ``c / (2 f)``) that :func:`unwrap` searches per measurement: ``max_range`` may not exceed
+#: ``MAX_WRAPS * c / (2 min f)`` (csrc/rgbz.h, RGBZ_TOF_MAX_WRAPS). The cost of the search
+#: is linear in the count (at 1024 with two frequencies: 0.4 us per measurement and
+#: thread), while any practical frequency set needs a handful (80/100/120 MHz: 4).
+MAX_WRAPS = int(_kernels.TOF_MAX_WRAPS)
 
 #: bits of :attr:`ToFDepth.flags`: a tap of the measurement reached full scale (or the
 #: sensor flagged it saturated) at some frequency
@@ -239,6 +251,82 @@ def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
     return i_mean, q_mean, count, rest
 
 
+def unambiguous_range(frequencies):
+    """``c / (2 gcd(f_i))`` in metres, the frequencies rounded to whole Hz (inf if they all
+    round to 0 Hz).
+
+    Depths that differ by this much give the same phases at every frequency: no
+    unwrapping can tell them apart (:attr:`rgbz_fast.sensor.ToFSensor.unambiguous_range`).
+    """
+    g = 0
+    for v in np.asarray(frequencies, np.float64).reshape(-1):
+        g = math.gcd(g, int(round(float(v))))
+    return SPEED_OF_LIGHT / (2 * g) if g else math.inf
+
+
+def _search_range(f, max_range):
+    """The validated unwrapping range (m) of frequencies ``f`` (B2).
+
+    None: the unambiguous range, unless it holds more than :data:`MAX_WRAPS` wraps of the
+    base frequency (nearly coprime frequencies): then the caller must choose. An explicit
+    range may not exceed the unambiguous range (the search would only repeat itself:
+    depths one range apart cost the same) nor :data:`MAX_WRAPS` base wraps.
+    """
+    amb = SPEED_OF_LIGHT / (2 * float(f.min()))
+    cap = MAX_WRAPS * amb
+    rng = unambiguous_range(f)
+    mhz = ", ".join(f"{v / 1e6:.9g}" for v in f)
+
+    def wraps(r):
+        return max(1, math.ceil(r / amb - 1e-12))
+
+    if max_range is None:
+        if rng > cap:
+            raise ValueError(
+                f"frequencies: the unambiguous range of {mhz} MHz is {rng:.6g} m, "
+                f"{rng / amb:.3g} wraps of the {amb:.6g} m interval of the lowest frequency; "
+                f"the search stops at {MAX_WRAPS} (nearly coprime frequencies): pass "
+                f"max_range= (at most {cap:.6g} m) for the distances you expect")
+        return rng
+    max_range = _number(max_range, "max_range", lo=0, lo_open=True)
+    if max_range > rng * (1 + 1e-9):
+        raise ValueError(
+            f"max_range: {max_range:g} m is beyond the {rng:.6g} m unambiguous range of "
+            f"{mhz} MHz; farther depths alias onto nearer ones (the search would only "
+            f"repeat), so it must be at most that")
+    if wraps(max_range) > MAX_WRAPS:
+        raise ValueError(
+            f"max_range: {max_range:g} m holds {wraps(max_range)} wraps of the {amb:.6g} m "
+            f"interval of the lowest frequency; the search stops at {MAX_WRAPS} "
+            f"(max_range <= {cap:.6g} m)")
+    return max_range
+
+
+def _check_unwrap_args(phase_rows, frequencies, weights, max_range):
+    """(frequencies, weights, max_range) as the kernels take them, or a ValueError."""
+    f = np.asarray(frequencies, np.float64).reshape(-1)
+    if f.shape != (phase_rows,) or not np.all(np.isfinite(f)) or np.any(f <= 0):
+        raise ValueError(f"frequencies: expected {phase_rows} positive values in Hz, got "
+                         f"{frequencies!r}")
+    if phase_rows > _kernels.TOF_MAX_FREQS:
+        raise ValueError(f"phase: at most {_kernels.TOF_MAX_FREQS} frequencies, got "
+                         f"{phase_rows}")
+    w = f ** 2 if weights is None else np.asarray(weights, np.float64).reshape(-1)
+    if (w.shape != f.shape or not np.all(np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0
+            or not np.isfinite(w.sum())):
+        raise ValueError(f"weights: expected {f.size} non-negative values, not all 0, got "
+                         f"{weights!r}")
+    return np.ascontiguousarray(f), np.ascontiguousarray(w), _search_range(f, max_range)
+
+
+def _phase_error(ph):
+    """The ValueError for phases the unwrap kernel refused (B3); only on the error path."""
+    if not np.all(np.isfinite(ph)):
+        return ValueError("phase: holds NaN or infinite values; expected finite data")
+    return ValueError(f"phase: values span [{float(ph.min())!r}, {float(ph.max())!r}]; expected "
+                      f"wrapped phases in [0, 2 pi) (as demodulate returns them)")
+
+
 def unwrap(phase, frequencies, *, weights=None, max_range=None, workers=None):
     """Multi-frequency phase unwrapping to a distance (C kernel).
 
@@ -251,15 +339,22 @@ def unwrap(phase, frequencies, *, weights=None, max_range=None, workers=None):
     Parameters
     ----------
     phase : ndarray, shape (F, n)
-        Wrapped phases in [0, 2 pi).
+        Wrapped phases in [0, 2 pi) (:func:`demodulate`'s). Anything else,
+        NaN included, raises ValueError (checked inside the kernel: no extra
+        pass over the data).
     frequencies : array_like, shape (F,)
-        Modulation frequencies in Hz.
+        Modulation frequencies in Hz (at most 16).
     weights : array_like, shape (F,), optional
         Default ``f_i^2``: the inverse variance of each frequency's distance
         for equal phase noise.
     max_range : float, optional
-        Largest distance searched (m). Default: the unambiguous range
-        ``c / (2 gcd(f_i))`` (frequencies rounded to whole Hz).
+        Largest distance searched (m): at most the unambiguous range
+        ``c / (2 gcd(f_i))`` (frequencies rounded to whole Hz; beyond it the
+        search only repeats itself) and at most :data:`MAX_WRAPS` (1024)
+        wraps of the lowest frequency. Default: the unambiguous range; when
+        that is more than :data:`MAX_WRAPS` wraps (nearly coprime
+        frequencies such as 80 MHz + 1 Hz and 100 MHz: 1.5e8 m) a ValueError
+        naming ``frequencies`` asks for an explicit ``max_range``.
     workers : int, optional
         Threads (None or -1: all cores).
 
@@ -272,36 +367,63 @@ def unwrap(phase, frequencies, *, weights=None, max_range=None, workers=None):
         small when the frequencies agree.
     wraps : ndarray of int32, shape (n,)
         Wrap count of the base frequency.
+
+    Raises
+    ------
+    ValueError
+        Malformed phases (shape, NaN, outside [0, 2 pi)), frequencies, weights
+        or ``max_range`` (see above); the message names the parameter.
     """
     ph = np.asarray(phase, np.float64)
     if ph.ndim != 2:
         raise ValueError(f"phase: expected shape (F, n), got {ph.shape}")
-    if not np.all(np.isfinite(ph)):
-        raise ValueError("phase: holds NaN or infinite values; expected finite data")
-    f = np.asarray(frequencies, np.float64).reshape(-1)
-    if f.shape != (ph.shape[0],) or not np.all(np.isfinite(f)) or np.any(f <= 0):
-        raise ValueError(f"frequencies: expected {ph.shape[0]} positive values in Hz, got "
-                         f"{frequencies!r}")
-    if ph.shape[0] > 16:
-        raise ValueError(f"phase: at most 16 frequencies, got {ph.shape[0]}")
-    w = f ** 2 if weights is None else np.asarray(weights, np.float64).reshape(-1)
-    if w.shape != f.shape or not np.all(np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0:
-        raise ValueError(f"weights: expected {f.size} non-negative values, not all 0, got "
-                         f"{weights!r}")
-    if max_range is None:
-        g = 0
-        for v in f:
-            g = math.gcd(g, int(round(v)))
-        max_range = SPEED_OF_LIGHT / (2 * g)
-    max_range = _number(max_range, "max_range", lo=0, lo_open=True)
+    f, w, max_range = _check_unwrap_args(ph.shape[0], frequencies, weights, max_range)
+    ph = np.ascontiguousarray(ph)
     n = ph.shape[1]
     depth = np.empty(n)
     residual = np.empty(n)
     wraps = np.empty(n, np.int32)
-    _kernels.tof_unwrap(np.ascontiguousarray(ph), np.ascontiguousarray(f),
-                        np.ascontiguousarray(w), max_range, depth, residual, wraps,
-                        check_workers(workers))
+    if not _kernels.tof_unwrap(ph, f, w, max_range, depth, residual, wraps,
+                               check_workers(workers)):
+        raise _phase_error(ph)
     return depth, residual, wraps
+
+
+def demodulate_unwrap(taps, frequencies, *, weights=None, max_range=None, workers=None):
+    """Demodulation and unwrapping fused in one C pass per measurement.
+
+    The same results as ``demodulate(taps)`` followed by ``unwrap(phase,
+    frequencies, ...)`` (phase, amplitude and offset bit for bit; depth and
+    residual to rounding), without the intermediate arrays: the kernel
+    demodulates a block of 128 measurements at every frequency into a scratch
+    buffer that stays in cache and unwraps it there.
+
+    Parameters
+    ----------
+    taps : ndarray, shape (F, 4, n)
+        As :func:`demodulate`.
+    frequencies, weights, max_range, workers
+        As :func:`unwrap`.
+
+    Returns
+    -------
+    depth, residual : ndarray of float64, shape (n,)
+    wraps : ndarray of int32, shape (n,)
+    phase, amplitude, offset : ndarray of float64, shape (F, n)
+    """
+    t = _check_taps(taps)
+    f, w, max_range = _check_unwrap_args(t.shape[0], frequencies, weights, max_range)
+    if t.dtype not in (np.uint16, np.float32, np.float64):
+        t = t.astype(np.float64)
+    t = np.ascontiguousarray(t)
+    F, _, n = t.shape
+    depth = np.empty(n)
+    residual = np.empty(n)
+    wraps = np.empty(n, np.int32)
+    phase, amp, off = (np.empty((F, n)) for _ in range(3))
+    _kernels.tof_depth(t, f, w, max_range, depth, residual, wraps, phase, amp, off,
+                       workers=check_workers(workers))
+    return depth, residual, wraps, phase, amp, off
 
 
 def _tap_variance(offset, sensor):
@@ -311,8 +433,12 @@ def _tap_variance(offset, sensor):
     electrons), and quantisation: ``K (offset - black) + K^2 (read^2 + dsnu^2) + 1/12``.
     """
     k = sensor.system_gain
-    signal = np.maximum(np.asarray(offset) - sensor.black_level, 0.0)
-    return k * signal + k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + 1.0 / 12.0
+    v = np.subtract(offset, sensor.black_level, dtype=np.float64)   # a new array: in place below
+    np.maximum(v, 0.0, out=v)
+    v *= k
+    v += k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2)
+    v += 1.0 / 12.0
+    return v
 
 
 # --------------------------------------------------------------------------- result
@@ -435,7 +561,8 @@ class ToFISP:
         wrap combination of 80/100/120 MHz leaves about 0.17 m or more).
         Retune it for other frequency sets.
     max_range : float or None
-        Unwrapping range (m); None: the unambiguous range of the frequencies.
+        Unwrapping range (m); None: the unambiguous range of the frequencies
+        (bounds and the nearly-coprime case: :func:`unwrap`).
     """
 
     denoise: bool = True
@@ -480,7 +607,11 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
     min_snr, min_amplitude, max_residual : float
         Validity thresholds (see :class:`ToFISP`).
     max_range : float, optional
-        Unwrapping range in metres (default ``tof.unambiguous_range``).
+        Unwrapping range in metres (see :func:`unwrap`): default
+        ``tof.unambiguous_range``, unless that spans more than
+        :data:`MAX_WRAPS` wraps of the lowest frequency (nearly coprime
+        frequencies), in which case a ValueError naming ``frequencies`` asks
+        for an explicit one; at most the unambiguous range.
     workers : int, optional
         Threads of the C kernels (None or -1: all cores). The result does
         not depend on it.
@@ -492,7 +623,8 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
     Raises
     ------
     ValueError, TypeError
-        A frame without taps, malformed taps, or thresholds out of range.
+        A frame without taps, malformed taps, thresholds out of range, or a
+        ``max_range`` the unwrapping cannot search (see above).
 
     Notes
     -----
@@ -535,33 +667,42 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
     min_snr = _number(min_snr, "min_snr", lo=0)
     min_amplitude = _number(min_amplitude, "min_amplitude", lo=0)
     max_residual = _number(max_residual, "max_residual", lo=0, lo_open=True)
-    max_range = _number(tof.unambiguous_range if max_range is None else max_range,
-                        "max_range", lo=0, lo_open=True)
     nthreads = check_workers(workers)
 
     taps = tof.taps
     n = tof.n_sites
-    saturated = np.asarray(tof.saturated, bool) | np.any(taps >= tof.white_level, axis=(0, 1))
-    phase, amp, offset = demodulate(taps, workers=nthreads)
+    f, w, max_range = _check_unwrap_args(taps.shape[0], tof.frequencies, None, max_range)
+    # max over the 4F taps (uint16 reductions), then one comparison: = any(tap >= white)
+    saturated = np.asarray(tof.saturated, bool) | (taps.max(axis=(0, 1)) >= tof.white_level)
     if denoise:
+        _, _, offset = demodulate(taps, workers=nthreads)
         i, q = phasors(taps)
         i, q, count, (off_mean,) = denoise_phasors(i, q, tof.sites, block=tof.block,
                                                    window=window, use=~saturated,
                                                    extra=(offset,))
-        phase = np.arctan2(q, i)
-        phase[phase < 0] += 2 * np.pi
-        phase[phase >= 2 * np.pi] = 0.0
-        amp = 0.5 * np.hypot(i, q)
+        # atan2, amplitude and unwrapping of the averaged phasors in one C pass
+        depth, residual = np.empty(n), np.empty(n)
+        wraps = np.empty(n, np.int32)
+        phase, amp = np.empty_like(i), np.empty_like(i)
+        if not _kernels.tof_depth_iq(np.ascontiguousarray(i), np.ascontiguousarray(q), f, w,
+                                     max_range, depth, residual, wraps, phase, amp,
+                                     workers=nthreads):
+            raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
         noise_offset = np.where(count > 0, off_mean, offset)
         navg = np.maximum(count, 1.0)
     else:
+        depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
+            taps, f, max_range=max_range, workers=nthreads)
         count = np.ones(n)
         noise_offset = offset
         navg = count
-    depth, residual, wraps = unwrap(phase, tof.frequencies, max_range=max_range,
-                                    workers=nthreads)
-    sigma_i = np.sqrt(2.0 * _tap_variance(noise_offset, tof.sensor) / navg)
-    snr = (2.0 * amp / sigma_i).min(axis=0)
+    sigma_i = _tap_variance(noise_offset, tof.sensor)       # in place: sqrt(2 var / navg)
+    sigma_i *= 2.0
+    sigma_i /= navg
+    np.sqrt(sigma_i, out=sigma_i)
+    snr = amp * 2.0
+    snr /= sigma_i
+    snr = snr.min(axis=0)
 
     flags = np.zeros(n, np.uint8)
     flags[saturated] |= FLAG_SATURATED
