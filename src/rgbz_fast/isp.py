@@ -684,18 +684,30 @@ def srgb_oetf(linear):
     """
     a = check_image(linear, "linear")
     dt = a.dtype if a.dtype in (np.float32, np.float64) else np.dtype(np.float64)
-    t = dt.type
-    v = np.clip(a.astype(dt, copy=False), 0, 1)
+    out = np.empty(a.shape, dt)
+    flat_in, flat_out = a.reshape(-1), out.reshape(-1)
+    # element-wise, so blocks of 256 K values give the same result with every
+    # temporary in cache: on a 12-megapixel RGB image the frame-size temporaries
+    # cost more in page faults than the arithmetic
+    step = 1 << 18
+    for i in range(0, flat_in.size, step):
+        _oetf_block(flat_in[i:i + step], flat_out[i:i + step])
+    return out
+
+
+def _oetf_block(a, out):
+    t = out.dtype.type
+    v = np.clip(a.astype(out.dtype, copy=False), 0, 1)
     low = v <= t(0.0031308)
     # The linear segment overwrites these values below, so the power never sees them:
     # NumPy's SIMD power leaves its fast path for a vector holding a 0 (the clipped
     # blacks; 4.5x slower with 20 % zeros), and every other element is unchanged.
-    out = np.where(low, t(1), v)
-    np.power(out, t(1 / 2.4), out=out)             # in place: one frame-size array less
+    np.copyto(out, v)
+    out[low] = t(1)
+    np.power(out, t(1 / 2.4), out=out)
     out *= t(1.055)
     out -= t(0.055)
     np.multiply(v, t(12.92), out=out, where=low)
-    return out
 
 
 def srgb_encode(linear, bits=8):
