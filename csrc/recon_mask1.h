@@ -299,6 +299,12 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict s
     const IN_T *restrict rp1 = src + (y + 1) * S, *restrict rp2 = src + (y + 2) * S;
     REAL arg[4][M1_BLOCK];
     IN_T res[M1_BLOCK];
+    if (method == RGBZ_M_BI)
+        /* BI has no gamma; step 3 may still read these (the compiler turns its
+           "times gamma unless BI" into a blend), so give them a harmless 1 rather
+           than indeterminate stack bytes (denormal garbage cost BI 2x its time) */
+        for (int j = 2; j < 4; j++)
+            for (int k = 0; k < M1_BLOCK; k++) arg[j][k] = (REAL)1;
 
     for (ptrdiff_t b0 = 0; b0 < n_all; b0 += M1_BLOCK) {
         const int n = (int)(n_all - b0 < M1_BLOCK ? n_all - b0 : M1_BLOCK);

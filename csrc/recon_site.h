@@ -132,6 +132,9 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
 
     /* gradient groups: mean absolute difference of their pairs */
     REAL G[RGBZ_NGROUPS], gamma[RGBZ_NGROUPS];
+    if (p->n_pairs == 0)
+        /* no difference at all: every gamma 1, as rgbz_gammas gives a family without one */
+        for (int g = 0; g < RGBZ_NGROUPS; g++) gamma[g] = (REAL)1;
     if (p->n_pairs > 0) {
         for (int g = 0; g < RGBZ_NGROUPS; g++) G[g] = (REAL)0;
         for (int i = 0; i < p->n_pairs; i++) {
@@ -296,6 +299,9 @@ RGBZ_CLONES static void RFN(rgbz_site_block)(REAL (*v)[RGBZ_BLK], int n, const r
     }
 
     REAL G[RGBZ_NGROUPS][RGBZ_BLK], gamma[RGBZ_NGROUPS][RGBZ_BLK];
+    if (p->n_pairs == 0 && (p->use_sg || p->use_grad))
+        /* no difference at all: every gamma 1, as rgbz_gammas gives a family without one */
+        for (int g = 0; g < RGBZ_NGROUPS; g++) BLOOP gamma[g][j] = (REAL)1;
     if (p->n_pairs > 0) {
         for (int g = 0; g < RGBZ_NGROUPS; g++) BLOOP G[g][j] = (REAL)0;
         for (int i = 0; i < p->n_pairs; i++) {
@@ -486,6 +492,8 @@ static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rg
     /* gradient groups: mean absolute difference of their pairs, less the clipped-clipped ones */
     REAL G[RGBZ_NGROUPS], gamma[RGBZ_NGROUPS];
     uint32_t known = 0;
+    if (p->n_pairs == 0)
+        for (int g = 0; g < RGBZ_NGROUPS; g++) gamma[g] = (REAL)1;     /* as in rgbz_site */
     if (p->n_pairs > 0) {
         int cnt[RGBZ_NGROUPS];
         for (int g = 0; g < RGBZ_NGROUPS; g++) {

@@ -970,3 +970,20 @@ def test_out_rejected_and_left_untouched():
     with pytest.raises(ValueError):
         rz.reconstruct(d, "edi_rows", pattern=p, out=buf)
     assert (buf == 3).all()
+
+
+@pytest.mark.parametrize("tile", ["GRZZ/BGZZ/ZZZZ/ZZZZ", "GRGRZZ/BGBGZZ/GRGRZZ/BGBGZZ/ZZZZZZ/ZZZZZZ"])
+@pytest.mark.parametrize("method", ["sg", "edi_line"])
+def test_plan_without_any_pair_agrees_with_reference(tile, method):
+    """Sparse patterns where a site's plan has gradient families but no valid pair at all:
+    every gamma is 1 (the kernel used to read them uninitialised for SG)."""
+    from rgbz_fast._plans import build_plans
+
+    p = rz.Pattern(tile)
+    _, plans = build_plans(p, "sg", "auto", "intensity")
+    assert any(pl["n_pairs"] == 0 and pl["use_sg"] for pl in plans)
+    d = random_frame(p, (24, 24), seeded("nopairs", tile, method))
+    for precision in ("float64", "float32"):
+        out = run(d, p, method, precision=precision)
+        compare(out, d, p, method, precision)
+        np.testing.assert_array_equal(out, run(d, p, method, precision=precision))
