@@ -653,7 +653,12 @@ def _check_downsample(k):
 
 def _quad_levels(value, name):
     """A scalar or 4 values (quad raster order) -> float64 array of shape (2, 2)."""
-    arr = np.asarray(value, dtype=np.float64)
+    if isinstance(value, (str, bytes, bool, np.bool_)):
+        raise TypeError(f"{name}: expected a number or four numbers, got {value!r}")
+    try:
+        arr = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name}: expected a number or four numbers, got {value!r}") from None
     if arr.ndim == 0:
         arr = np.full((2, 2), float(arr))
     elif arr.size == 4:
