@@ -128,19 +128,10 @@ class Reconstruction:
     options: tuple = ()
 
     def __post_init__(self):
-        try:
-            opts = dict(self.options)
-        except (TypeError, ValueError):
-            raise TypeError(f"Reconstruction.options: expected a mapping of keyword "
-                            f"arguments, got {self.options!r}") from None
-        if not all(isinstance(k, str) for k in opts):
-            raise TypeError(f"Reconstruction.options: keys must be argument names, got "
-                            f"{list(opts)!r}")
-        for k in ("method", "pattern", "bit_depth", "precision", "workers"):
-            if k in opts:
-                raise ValueError(f"Reconstruction.options: {k!r} is set by the chain, not "
-                                 "through options")
-        object.__setattr__(self, "options", tuple(sorted(opts.items())))
+        # names and values checked now, by the code reconstruct runs, not at the first frame
+        from ._reconstruct import check_reconstruct_options
+        object.__setattr__(self, "options", check_reconstruct_options(
+            self.options, "Reconstruction.options", by="the chain"))
         if not isinstance(self.method, str):
             raise ValueError(f"Reconstruction.method: expected a method name, got "
                              f"{self.method!r}")
