@@ -67,6 +67,15 @@ def test_simulate_then_reconstruct(tmp_path, capsys):
     assert png.shape == (64, 96, 3) and png.dtype == np.uint8
 
 
+def test_reconstruct_of_a_bad_file_leaves_no_output_folder(tmp_path, capsys):
+    bad = tmp_path / "bad.npz"
+    bad.write_bytes(b"not a frame")
+    out = tmp_path / "out"
+    assert main(["reconstruct", str(bad), "--out", str(out), "--quiet"]) == 2
+    assert "bad.npz" in capsys.readouterr().err
+    assert not out.exists()
+
+
 def test_simulate_rgbd_scene_with_tof(tmp_path):
     art = shared_path("rgbd", "aloe")
     assert main(["simulate", str(art), "--pattern", "mask1", "--format", "npz", "--out",

@@ -215,11 +215,12 @@ def _reconstruct(args):
     from ._reconstruct import reconstruct
     from .evaluate import atomic_write
 
-    args.out.mkdir(parents=True, exist_ok=True)
     for f in args.frames:
         frame = frameio.load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth)
         cfa = reconstruct(frame, args.method, precision=args.precision, workers=args.workers,
                           clip_level=args.clip_level)
+        # created only once there is something to write: a failed run leaves no empty folder
+        args.out.mkdir(parents=True, exist_ok=True)
         if args.output == "cfa":
             dest = args.out / f"{f.stem}_{args.method}_cfa.tif"
             import io
