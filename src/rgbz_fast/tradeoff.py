@@ -10,8 +10,10 @@ polynomial ``exp="fast"`` for the methods that use one), it measures
   other processes on a shared machine; the median and IQR are reported too);
 * the accuracy on a set of images (Kodak with ``--dataset
   ../shared/data/kodak``; by default a few scikit-image sample images, so
-  that it runs offline): noise-free mosaics at 11 bits, mean CFA PSNR on the
-  reconstructed (Z) sites, and mean CPSNR (8-bit, 4-pixel border crop) after
+  that it runs offline): as docs/results.md, 8-bit sRGB linearised with the
+  sRGB EOTF, noise-free mosaics at 11 bits, mean CFA PSNR on every
+  reconstructed (Z) site (eqs. 20-21), and mean CPSNR (8-bit, 8-pixel border
+  left out) after
   the Malvar 2004 demosaic of both the reconstructed CFA and the reference
   Bayer CFA (the reference image is the reference CFA demosaiced the same
   way, as in the paper);
@@ -40,6 +42,8 @@ from ._benchutil import (CliError, check_out_dir, check_workers_arg, common_pars
 __all__ = ["run_tradeoff", "pareto_front", "plot_tradeoff", "format_markdown", "main"]
 
 METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+#: border (pixels) left out of CPSNR, as evaluate's default crop
+CROP = 8
 USES_EXP = ("edi_central", "edi_line", "sg")
 PATTERNS = ("mask1", "mask2")
 SPEED_SHAPE = (1536, 2048)
@@ -107,6 +111,7 @@ def run_tradeoff(images, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPEE
     """
     import rgbz_fast as rz
     from .bench import make_rgb
+    from .evaluate import _linearise
     from .metrics import cfa_psnr, cpsnr
 
     workers = workers or (os.cpu_count() or 1)
@@ -123,8 +128,9 @@ def run_tradeoff(images, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPEE
         pat = rz.get_pattern(p)
         prepared[p] = []
         for name, im in imgs:
-            ref = rz.mosaic(im, rz.bayer(pat.bayer_phase), bd).data
-            frame = rz.mosaic(im, pat, bd)
+            lin = _linearise(im)             # as docs/results.md (evaluate)
+            ref = rz.mosaic(lin, rz.bayer(pat.bayer_phase), bd).data
+            frame = rz.mosaic(lin, pat, bd)
             prepared[p].append((name, ref, frame, _to8(_demosaic(ref), top)))
     # speed: the runs of all variants are interleaved (round robin), so that a burst of load
     # from other processes slows every variant alike; the speed is the best of the runs
@@ -151,7 +157,7 @@ def run_tradeoff(images, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPEE
             out = rz.reconstruct(frame, m, precision=prec, exp=exp, workers=workers)
             z = frame.z_mask
             psnrs.append(cfa_psnr(ref, out, z, bit_depth=bd))
-            cps.append(cpsnr(ref8, _to8(_demosaic(out), top), crop=4))
+            cps.append(cpsnr(ref8, _to8(_demosaic(out), top), crop=CROP))
             key = (p, m, i)
             if prec == "float64" and exp == "libm":
                 exact[key] = out
@@ -266,9 +272,11 @@ def format_markdown(res, png_name=None, command=None):
              f"Mpix/s of `reconstruct` on a {res['speed_frame'][1]}x{res['speed_frame'][0]} "
              f"uint16 frame, best of {res['repeat']} runs interleaved across the variants "
              "(median [IQR] beside it). Accuracy: noise-free "
-             f"{res['bit_depth']}-bit mosaics of {len(res['images'])} images ({res['dataset']}),"
-             " mean CFA PSNR on the Z sites and mean CPSNR (8-bit, Malvar 2004 demosaic of "
-             "both CFAs, 4-pixel crop). Δ: against float64 + libm exp of the same method "
+             f"{res['bit_depth']}-bit mosaics of {len(res['images'])} linearised images "
+             f"({res['dataset']}), mean CFA PSNR on every Z site (as docs/results.md) and mean "
+             f"CPSNR (8-bit, Malvar 2004 demosaic of both CFAs without white balance or "
+             f"gamma, {CROP}-pixel border left out). Δ: "
+             "against float64 + libm exp of the same method, over every Z site "
              "(largest |difference| in DN, share of Z pixels that differ). Bold: on the "
              "Pareto front of its mask (nothing both faster and more accurate).", ""]
     if png_name:
