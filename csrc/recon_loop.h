@@ -74,16 +74,8 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
                         }
                         SITE(rgbz_site_block, RS)(vb, n, p, floor_, rel, exp_mode, rb);
                         IN_T *restrict d = dst + y * cols + x0b;
-                        for (int j = 0; j < n; j++) {
-                            REAL r = rb[j];
-                            if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
-                            if (r > maxval) r = maxval;
-#if IN_IS_INT
-                            d[(ptrdiff_t)j * px] = (IN_T)(r + (REAL)0.5);
-#else
-                            d[(ptrdiff_t)j * px] = (IN_T)r;
-#endif
-                        }
+                        for (int j = 0; j < n; j++)
+                            d[(ptrdiff_t)j * px] = LCAT(rgbz_to_out, IS, RS)(rb[j], maxval);
                     }
                 }
                 continue;
@@ -119,13 +111,7 @@ static int LCAT(rgbz_recon_loop, IS, RS)(const IN_T *restrict src, IN_T *restric
                 REAL r = clipped ? SITE(rgbz_site_clip, RS)(v, clipped, p, floor_, rel, edge_ratio,
                                                             exp_mode)
                                  : SITE(rgbz_site, RS)(v, p, floor_, rel, edge_ratio, exp_mode);
-                if (!(r > (REAL)0)) r = (REAL)0;      /* also maps a NaN to 0 */
-                if (r > maxval) r = maxval;
-#if IN_IS_INT
-                IN_T out = (IN_T)(r + (REAL)0.5);
-#else
-                IN_T out = (IN_T)r;
-#endif
+                IN_T out = LCAT(rgbz_to_out, IS, RS)(r, maxval);
                 if (clipped) {
                     /* every candidate clipped (edi_rows: its ten taps): the output stays at or
                        above the smallest of them, so saturation is kept exactly in IN_T */

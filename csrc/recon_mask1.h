@@ -7,7 +7,7 @@
  * (even, odd), the other Y at (odd, even), green at (odd, odd); the four
  * candidates are the greens (-1,-1), (-1,1), (1,-1), (1,1) (Fig. 11: pixels
  * 6, 8, 16, 18). The gradient pairs below are exactly those _plans.py builds
- * for this geometry (same-channel, non-Z pairs; docs/interpretation.md), so
+ * for this geometry (non-Z pairs; docs/interpretation.md), so
  * the values equal the generic path's up to the order of the additions; the
  * NumPy reference checks both. Interior pixels only: the loop hands the two
  * border rows/columns to the generic path.
@@ -19,6 +19,133 @@
 #define M1G2(a, b) a##_##b
 #define M1G(a, b) M1G2(a, b)
 
+/* ---- pieces shared by the three row kernels below (and the frame loop) ---- */
+
+/* a result as an output element: clamped to [0, maxval] (a NaN to 0), integers rounded
+   half up; not counted (Table 1 does not count the conversion) */
+static inline IN_T M1CAT(rgbz_to_out, IS, RS)(REAL r, REAL maxval)
+{
+    r = r > (REAL)0 ? r : (REAL)0;
+    r = r > maxval ? maxval : r;
+#if IN_IS_INT
+    return (IN_T)(r + (REAL)0.5);
+#else
+    return (IN_T)r;
+#endif
+}
+
+/* The four gradients at the Mask1 site x of row R[2] (R[0..4]: rows y-2..y+2):
+   EDICentral's central pairs (eq. 6, Fig. 7) or EDILine's axis mirror pairs (eqs. 8-11,
+   the diagonals with their inter-channel pairs) -- the pairs _plans.py builds for
+   this geometry, each gradient the mean of its differences. */
+static inline void M1CAT(rgbz_m1_gradients, IS, RS)(const IN_T *const *R, ptrdiff_t x,
+                                                     int central, REAL *G)
+{
+#define Q(dy, dx) ((REAL)R[(dy) + 2][x + (dx)])
+    if (central) {
+        G[0] = OMUL(RABSDIFF(Q(1, 0), Q(-1, 0)), (REAL)1);
+        G[1] = OMUL(RABSDIFF(Q(0, 1), Q(0, -1)), (REAL)1);
+        G[2] = OMUL(OADD(OADD(RABSDIFF(Q(1, 1), Q(-1, -1)), RABSDIFF(Q(2, 1), Q(-2, -1))),
+                         RABSDIFF(Q(1, 2), Q(-1, -2))), (REAL)(1.0 / 3.0));
+        G[3] = OMUL(OADD(OADD(RABSDIFF(Q(1, -1), Q(-1, 1)), RABSDIFF(Q(2, -1), Q(-2, 1))),
+                         RABSDIFF(Q(1, -2), Q(-1, 2))), (REAL)(1.0 / 3.0));
+        return;
+    }
+    /* eq. 8: rows -2/2 at odd columns, rows -1/1 at every column */
+    REAL v = OADD(RABSDIFF(Q(-2, -1), Q(2, -1)), RABSDIFF(Q(-2, 1), Q(2, 1)));
+    v = OADD(v, RABSDIFF(Q(-1, -2), Q(1, -2)));
+    v = OADD(v, RABSDIFF(Q(-1, -1), Q(1, -1)));
+    v = OADD(v, RABSDIFF(Q(-1, 0), Q(1, 0)));
+    v = OADD(v, RABSDIFF(Q(-1, 1), Q(1, 1)));
+    v = OADD(v, RABSDIFF(Q(-1, 2), Q(1, 2)));
+    /* eq. 9: the transpose */
+    REAL h = OADD(RABSDIFF(Q(-1, -2), Q(-1, 2)), RABSDIFF(Q(1, -2), Q(1, 2)));
+    h = OADD(h, RABSDIFF(Q(-2, -1), Q(-2, 1)));
+    h = OADD(h, RABSDIFF(Q(-1, -1), Q(-1, 1)));
+    h = OADD(h, RABSDIFF(Q(0, -1), Q(0, 1)));
+    h = OADD(h, RABSDIFF(Q(1, -1), Q(1, 1)));
+    h = OADD(h, RABSDIFF(Q(2, -1), Q(2, 1)));
+    /* eq. 11 (NW-SE): mirror pairs across the anti-diagonal, (dy,dx)/(-dx,-dy);
+       one green pair and six red/blue ("inter-channel") pairs */
+    REAL d2 = OADD(RABSDIFF(Q(-1, 2), Q(-2, 1)), RABSDIFF(Q(0, 1), Q(-1, 0)));
+    d2 = OADD(d2, RABSDIFF(Q(1, 0), Q(0, -1)));
+    d2 = OADD(d2, RABSDIFF(Q(1, 1), Q(-1, -1)));
+    d2 = OADD(d2, RABSDIFF(Q(1, 2), Q(-2, -1)));
+    d2 = OADD(d2, RABSDIFF(Q(2, -1), Q(1, -2)));
+    d2 = OADD(d2, RABSDIFF(Q(2, 1), Q(-1, -2)));
+    /* eq. 10 (NE-SW): mirror pairs across the main diagonal, (dy,dx)/(dx,dy) */
+    REAL d3 = OADD(RABSDIFF(Q(-1, -2), Q(-2, -1)), RABSDIFF(Q(0, -1), Q(-1, 0)));
+    d3 = OADD(d3, RABSDIFF(Q(1, -2), Q(-2, 1)));
+    d3 = OADD(d3, RABSDIFF(Q(1, -1), Q(-1, 1)));
+    d3 = OADD(d3, RABSDIFF(Q(1, 0), Q(0, 1)));
+    d3 = OADD(d3, RABSDIFF(Q(2, -1), Q(-1, 2)));
+    d3 = OADD(d3, RABSDIFF(Q(2, 1), Q(1, 2)));
+    G[0] = OMUL(v, (REAL)(1.0 / 7.0));
+    G[1] = OMUL(h, (REAL)(1.0 / 7.0));
+    G[2] = OMUL(d2, (REAL)(1.0 / 7.0));
+    G[3] = OMUL(d3, (REAL)(1.0 / 7.0));
+#undef Q
+}
+
+/* The eight semi-gradients (eqs. 14-18) N S W E NW NE SW SE at the Mask1 site x: each the
+   mean of its two differences that touch no Z pixel. */
+static inline void M1CAT(rgbz_m1_semigradients, IS, RS)(const IN_T *const *R, ptrdiff_t x,
+                                                        REAL *g)
+{
+#define Q(dy, dx) ((REAL)R[(dy) + 2][x + (dx)])
+    const REAL dv2 = RABSDIFF(Q(0, -1), Q(-2, -1)), dv3 = RABSDIFF(Q(0, -1), Q(2, -1));
+    const REAL dv6 = RABSDIFF(Q(0, 1), Q(-2, 1)), dv7 = RABSDIFF(Q(0, 1), Q(2, 1));
+    const REAL dh2 = RABSDIFF(Q(-1, 0), Q(-1, -2)), dh3 = RABSDIFF(Q(-1, 0), Q(-1, 2));
+    const REAL dh6 = RABSDIFF(Q(1, 0), Q(1, -2)), dh7 = RABSDIFF(Q(1, 0), Q(1, 2));
+#undef Q
+    const REAL half = (REAL)0.5;
+    g[0] = OMUL(OADD(dv2, dv6), half);   /* N */
+    g[1] = OMUL(OADD(dv3, dv7), half);   /* S */
+    g[2] = OMUL(OADD(dh2, dh6), half);   /* W */
+    g[3] = OMUL(OADD(dh3, dh7), half);   /* E */
+    g[4] = OMUL(OADD(dv2, dh2), half);   /* NW */
+    g[5] = OMUL(OADD(dv6, dh3), half);   /* NE */
+    g[6] = OMUL(OADD(dv3, dh6), half);   /* SW */
+    g[7] = OMUL(OADD(dv7, dh7), half);   /* SE */
+}
+
+/* alpha * beta (eqs. 2-4) of the four candidates: alpha / (1 + sum_m |c_k - c_m|) */
+static inline void M1CAT(rgbz_m1_alpha_beta, IS, RS)(const REAL *c, REAL alpha, REAL *w)
+{
+    const REAL d01 = RABSDIFF(c[0], c[1]), d02 = RABSDIFF(c[0], c[2]);
+    const REAL d03 = RABSDIFF(c[0], c[3]), d12 = RABSDIFF(c[1], c[2]);
+    const REAL d13 = RABSDIFF(c[1], c[3]), d23 = RABSDIFF(c[2], c[3]);
+    w[0] = ODIV(alpha, OADD(OADD(OADD((REAL)1, d01), d02), d03));
+    w[1] = ODIV(alpha, OADD(OADD(OADD((REAL)1, d01), d12), d13));
+    w[2] = ODIV(alpha, OADD(OADD(OADD((REAL)1, d02), d12), d23));
+    w[3] = ODIV(alpha, OADD(OADD(OADD((REAL)1, d03), d13), d23));
+}
+
+/* eqs. 12-13 for the four candidates, c0 + sum w_k (c_k - c0) / sum w (exactly flat on
+   flat input), branch-free; the plain mean (rgbz_mean's formula) where every weight
+   underflowed. Counted as rgbz_site counts it. */
+static inline REAL M1CAT(rgbz_m1_weighted_mean, IS, RS)(const REAL *c, const REAL *w)
+{
+    const REAL den = OADD(OADD(OADD(w[0], w[1]), w[2]), w[3]);
+    REAL num = OMUL(w[1], OSUB(c[1], c[0]));
+    num = OADD(num, OMUL(w[2], OSUB(c[2], c[0])));
+    num = OADD(num, OMUL(w[3], OSUB(c[3], c[0])));
+    const REAL mean = c[0] + (((c[1] - c[0]) + (c[2] - c[0])) + (c[3] - c[0])) / (REAL)4;
+    const REAL q = den > (REAL)0 ? den : (REAL)1;
+    const REAL r = den > (REAL)0 ? OADD(c[0], ODIV(num, q)) : mean;
+#ifdef RGBZ_COUNT_OPS
+    if (!(den > (REAL)0)) {     /* the fallback mean: 6 additions, 1 division */
+        for (int i = 0; i < 6; i++) OPC_(RGBZ_OP_ADD);
+        OPC_(RGBZ_OP_DIV);
+    }
+#endif
+    return r;
+}
+
+/* ---- the row kernels ---- */
+
+/* bilinear, and SG with sg_mode="combined" (EDILine's weights times the semi-gradient
+   weights); BI, EDI and the paper's SG have the block kernels below */
 static int M1CAT(rgbz_mask1_rows, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
                                           ptrdiff_t y, ptrdiff_t cols, int zrow_phase,
                                           int zcol_phase, const rgbz_plan *p,
@@ -28,123 +155,33 @@ static int M1CAT(rgbz_mask1_rows, IS, RS)(const IN_T *restrict src, IN_T *restri
     const REAL rel = (REAL)prm->sigma_rel;
     const REAL maxval = (REAL)prm->maxval;
     const int exp_mode = prm->exp_mode;
-    const int method = p->method;
-    const int combined = p->use_grad && p->use_sg;
     const REAL alpha = (REAL)p->cand_alpha[0];        /* all four candidates: exp(-1) */
     const ptrdiff_t S = cols;
+    const IN_T *R[5] = {src + (y - 2) * S, src + (y - 1) * S, src + y * S, src + (y + 1) * S,
+                        src + (y + 2) * S};
     (void)zrow_phase;
     ptrdiff_t xs = x0 + ((x0 & 1) != zcol_phase);
     for (ptrdiff_t x = xs; x < x1; x += 2) {
-        const IN_T *q = src + y * S + x;
-#define P(dy, dx) ((REAL)q[(dy) * S + (dx)])
-        REAL c[4] = {P(-1, -1), P(-1, 1), P(1, -1), P(1, 1)};
+        REAL c[4] = {(REAL)R[1][x - 1], (REAL)R[1][x + 1], (REAL)R[3][x - 1], (REAL)R[3][x + 1]};
         REAL r;
-        if (method == RGBZ_M_BILINEAR) {
+        if (p->method == RGBZ_M_BILINEAR) {
             r = M1G(rgbz_mean, RS)(c, 4);
         } else {
-            REAL w[4];
-            REAL gam_line[4] = {1, 1, 1, 1};    /* per candidate */
-            if (method == RGBZ_M_EDI_CENTRAL || method == RGBZ_M_EDI_LINE || combined) {
-                REAL G[4];
-                if (method == RGBZ_M_EDI_CENTRAL) {
-                    G[0] = OMUL(RABSDIFF(P(1, 0), P(-1, 0)), (REAL)1);
-                    G[1] = OMUL(RABSDIFF(P(0, 1), P(0, -1)), (REAL)1);
-                    G[2] = OMUL(OADD(OADD(RABSDIFF(P(1, 1), P(-1, -1)), RABSDIFF(P(2, 1), P(-2, -1))),
-                                     RABSDIFF(P(1, 2), P(-1, -2))), (REAL)(1.0 / 3.0));
-                    G[3] = OMUL(OADD(OADD(RABSDIFF(P(1, -1), P(-1, 1)), RABSDIFF(P(2, -1), P(-2, 1))),
-                                     RABSDIFF(P(1, -2), P(-1, 2))), (REAL)(1.0 / 3.0));
-                } else {
-                    /* eq. 8: rows -2/2 at odd columns, rows -1/1 at every column */
-                    REAL v = OADD(RABSDIFF(P(-2, -1), P(2, -1)), RABSDIFF(P(-2, 1), P(2, 1)));
-                    v = OADD(v, RABSDIFF(P(-1, -2), P(1, -2)));
-                    v = OADD(v, RABSDIFF(P(-1, -1), P(1, -1)));
-                    v = OADD(v, RABSDIFF(P(-1, 0), P(1, 0)));
-                    v = OADD(v, RABSDIFF(P(-1, 1), P(1, 1)));
-                    v = OADD(v, RABSDIFF(P(-1, 2), P(1, 2)));
-                    /* eq. 9: the transpose */
-                    REAL h = OADD(RABSDIFF(P(-1, -2), P(-1, 2)), RABSDIFF(P(1, -2), P(1, 2)));
-                    h = OADD(h, RABSDIFF(P(-2, -1), P(-2, 1)));
-                    h = OADD(h, RABSDIFF(P(-1, -1), P(-1, 1)));
-                    h = OADD(h, RABSDIFF(P(0, -1), P(0, 1)));
-                    h = OADD(h, RABSDIFF(P(1, -1), P(1, 1)));
-                    h = OADD(h, RABSDIFF(P(2, -1), P(2, 1)));
-                    /* eq. 11 (NW-SE): mirror pairs across the anti-diagonal, (dy,dx)/(-dx,-dy);
-                       one green pair and six red/blue ("inter-channel") pairs */
-                    REAL d2 = OADD(RABSDIFF(P(-1, 2), P(-2, 1)), RABSDIFF(P(0, 1), P(-1, 0)));
-                    d2 = OADD(d2, RABSDIFF(P(1, 0), P(0, -1)));
-                    d2 = OADD(d2, RABSDIFF(P(1, 1), P(-1, -1)));
-                    d2 = OADD(d2, RABSDIFF(P(1, 2), P(-2, -1)));
-                    d2 = OADD(d2, RABSDIFF(P(2, -1), P(1, -2)));
-                    d2 = OADD(d2, RABSDIFF(P(2, 1), P(-1, -2)));
-                    /* eq. 10 (NE-SW): mirror pairs across the main diagonal, (dy,dx)/(dx,dy) */
-                    REAL d3 = OADD(RABSDIFF(P(-1, -2), P(-2, -1)), RABSDIFF(P(0, -1), P(-1, 0)));
-                    d3 = OADD(d3, RABSDIFF(P(1, -2), P(-2, 1)));
-                    d3 = OADD(d3, RABSDIFF(P(1, -1), P(-1, 1)));
-                    d3 = OADD(d3, RABSDIFF(P(1, 0), P(0, 1)));
-                    d3 = OADD(d3, RABSDIFF(P(2, -1), P(-1, 2)));
-                    d3 = OADD(d3, RABSDIFF(P(2, 1), P(1, 2)));
-                    G[0] = OMUL(v, (REAL)(1.0 / 7.0));
-                    G[1] = OMUL(h, (REAL)(1.0 / 7.0));
-                    G[2] = OMUL(d2, (REAL)(1.0 / 7.0));
-                    G[3] = OMUL(d3, (REAL)(1.0 / 7.0));
-                }
-                REAL gam[4];
-                M1G(rgbz_gammas4, RS)(G, 4, floor_, rel, exp_mode, gam);
-                gam_line[0] = gam[2];     /* (-1,-1): NW-SE */
-                gam_line[1] = gam[3];     /* (-1, 1): NE-SW */
-                gam_line[2] = gam[3];
-                gam_line[3] = gam[2];
-            }
-            if (method == RGBZ_M_SG) {
-                REAL dv2 = RABSDIFF(P(0, -1), P(-2, -1)), dv3 = RABSDIFF(P(0, -1), P(2, -1));
-                REAL dv6 = RABSDIFF(P(0, 1), P(-2, 1)), dv7 = RABSDIFF(P(0, 1), P(2, 1));
-                REAL dh2 = RABSDIFF(P(-1, 0), P(-1, -2)), dh3 = RABSDIFF(P(-1, 0), P(-1, 2));
-                REAL dh6 = RABSDIFF(P(1, 0), P(1, -2)), dh7 = RABSDIFF(P(1, 0), P(1, 2));
-                const REAL half = (REAL)0.5;
-                REAL SG[8] = {OMUL(OADD(dv2, dv6), half), OMUL(OADD(dv3, dv7), half),   /* N S */
-                              OMUL(OADD(dh2, dh6), half), OMUL(OADD(dh3, dh7), half),   /* W E */
-                              OMUL(OADD(dv2, dh2), half), OMUL(OADD(dv6, dh3), half),   /* NW NE */
-                              OMUL(OADD(dv3, dh6), half), OMUL(OADD(dv7, dh7), half)};  /* SW SE */
-                REAL g[8];
-                M1G(rgbz_gammas4, RS)(SG, 8, floor_, rel, exp_mode, g);
-                w[0] = OADD(OADD(g[0], g[2]), g[4]);   /* eq. 19a: N + W + NW */
-                w[1] = OADD(OADD(g[0], g[3]), g[5]);   /* 19b: N + E + NE */
-                w[2] = OADD(OADD(g[1], g[2]), g[6]);   /* 19c: S + W + SW */
-                w[3] = OADD(OADD(g[1], g[3]), g[7]);   /* 19d: S + E + SE */
-            }
-            if (method != RGBZ_M_SG || combined) {
-                /* alpha * beta (eqs. 2-4), times gamma (eq. 6) */
-                REAL d01 = RABSDIFF(c[0], c[1]), d02 = RABSDIFF(c[0], c[2]);
-                REAL d03 = RABSDIFF(c[0], c[3]), d12 = RABSDIFF(c[1], c[2]);
-                REAL d13 = RABSDIFF(c[1], c[3]), d23 = RABSDIFF(c[2], c[3]);
-                REAL Sk[4] = {OADD(OADD(OADD((REAL)1, d01), d02), d03),
-                              OADD(OADD(OADD((REAL)1, d01), d12), d13),
-                              OADD(OADD(OADD((REAL)1, d02), d12), d23),
-                              OADD(OADD(OADD((REAL)1, d03), d13), d23)};
-                for (int k = 0; k < 4; k++) {
-                    REAL a = ODIV(alpha, Sk[k]);
-                    if (method != RGBZ_M_BI) a = OMUL(a, gam_line[k]);
-                    w[k] = combined ? OMUL(a, w[k]) : a;
-                }
-            }
-            REAL den = OADD(OADD(OADD(w[0], w[1]), w[2]), w[3]);
-            if (!(den > (REAL)0)) {
-                r = M1G(rgbz_mean, RS)(c, 4);
-            } else {
-                REAL num = OMUL(w[1], OSUB(c[1], c[0]));
-                num = OADD(num, OMUL(w[2], OSUB(c[2], c[0])));
-                num = OADD(num, OMUL(w[3], OSUB(c[3], c[0])));
-                r = OADD(c[0], ODIV(num, den));
-            }
+            REAL G[4], gam[4], SG[8], g[8], w[4];
+            M1CAT(rgbz_m1_gradients, IS, RS)(R, x, 0, G);
+            M1G(rgbz_gammas4, RS)(G, 4, floor_, rel, exp_mode, gam);
+            M1CAT(rgbz_m1_semigradients, IS, RS)(R, x, SG);
+            M1G(rgbz_gammas4, RS)(SG, 8, floor_, rel, exp_mode, g);
+            const REAL gam_line[4] = {gam[2], gam[3], gam[3], gam[2]};   /* NW-SE, NE-SW */
+            const REAL wsg[4] = {OADD(OADD(g[0], g[2]), g[4]),   /* eq. 19a: N + W + NW */
+                                 OADD(OADD(g[0], g[3]), g[5]),   /* 19b: N + E + NE */
+                                 OADD(OADD(g[1], g[2]), g[6]),   /* 19c: S + W + SW */
+                                 OADD(OADD(g[1], g[3]), g[7])};  /* 19d: S + E + SE */
+            M1CAT(rgbz_m1_alpha_beta, IS, RS)(c, alpha, w);
+            for (int k = 0; k < 4; k++) w[k] = OMUL(OMUL(w[k], gam_line[k]), wsg[k]);
+            r = M1CAT(rgbz_m1_weighted_mean, IS, RS)(c, w);
         }
-#undef P
-        if (!(r > (REAL)0)) r = (REAL)0;
-        if (r > maxval) r = maxval;
-#if IN_IS_INT
-        dst[y * S + x] = (IN_T)(r + (REAL)0.5);
-#else
-        dst[y * S + x] = (IN_T)r;
-#endif
+        dst[y * S + x] = M1CAT(rgbz_to_out, IS, RS)(r, maxval);
     }
     return RGBZ_OK;
 }
@@ -153,11 +190,10 @@ static int M1CAT(rgbz_mask1_rows, IS, RS)(const IN_T *restrict src, IN_T *restri
  * SG on Mask1 (the paper's method, eqs. 14-19, sg_mode "pure"), written for the
  * vector units: the sites of a row are processed in blocks of M1_BLOCK, one
  * branch-free loop per step (gather + semi-gradients + eq. 7's arguments; the
- * exponentials; weights + eq. 5), so that the compiler vectorises each loop
+ * exponentials; weights + eqs. 12-13), so that the compiler vectorises each loop
  * (the stride-2 loads become shuffles). The operations and their order per site
- * are those of rgbz_mask1_rows above (the opcount build counts the same), so
- * the results are the same to the last bit up to the compiler's vector/scalar
- * code generation (no FMA contraction in ISO C mode).
+ * are those of the plan interpreter up to where a sum starts (the opcount build
+ * counts them), so results agree with it to rounding (no FMA contraction in ISO C).
  */
 #ifndef M1_BLOCK
 #define M1_BLOCK 128
@@ -173,13 +209,11 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
     const ptrdiff_t S = cols;
     const ptrdiff_t xs = x0 + ((x0 & 1) != zcol_phase);
     const ptrdiff_t n_all = xs < x1 ? (x1 - xs + 1) / 2 : 0;
-    const IN_T *restrict rm2 = src + (y - 2) * S, *restrict rm1 = src + (y - 1) * S;
-    const IN_T *restrict r00 = src + y * S;
-    const IN_T *restrict rp1 = src + (y + 1) * S, *restrict rp2 = src + (y + 2) * S;
+    const IN_T *R[5] = {src + (y - 2) * S, src + (y - 1) * S, src + y * S, src + (y + 1) * S,
+                        src + (y + 2) * S};
     REAL arg[8][M1_BLOCK];
     REAL cand[4][M1_BLOCK];
     IN_T res[M1_BLOCK];
-    const REAL half = (REAL)0.5;
 
     for (ptrdiff_t b0 = 0; b0 < n_all; b0 += M1_BLOCK) {
         const int n = (int)(n_all - b0 < M1_BLOCK ? n_all - b0 : M1_BLOCK);
@@ -187,26 +221,8 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
         /* 1: gather, semi-gradients (eqs. 14-18), sigma and the arguments of eq. 7 */
         for (int k = 0; k < n; k++) {
             const ptrdiff_t x = xb + 2 * k;
-            const REAL a_m2m1 = (REAL)rm2[x - 1], a_m2p1 = (REAL)rm2[x + 1];
-            const REAL a_m1m2 = (REAL)rm1[x - 2], a_m1m1 = (REAL)rm1[x - 1], a_m10 = (REAL)rm1[x];
-            const REAL a_m1p1 = (REAL)rm1[x + 1], a_m1p2 = (REAL)rm1[x + 2];
-            const REAL a_0m1 = (REAL)r00[x - 1], a_0p1 = (REAL)r00[x + 1];
-            const REAL a_p1m2 = (REAL)rp1[x - 2], a_p1m1 = (REAL)rp1[x - 1], a_p10 = (REAL)rp1[x];
-            const REAL a_p1p1 = (REAL)rp1[x + 1], a_p1p2 = (REAL)rp1[x + 2];
-            const REAL a_p2m1 = (REAL)rp2[x - 1], a_p2p1 = (REAL)rp2[x + 1];
-            const REAL dv2 = RABSDIFF(a_0m1, a_m2m1), dv3 = RABSDIFF(a_0m1, a_p2m1);
-            const REAL dv6 = RABSDIFF(a_0p1, a_m2p1), dv7 = RABSDIFF(a_0p1, a_p2p1);
-            const REAL dh2 = RABSDIFF(a_m10, a_m1m2), dh3 = RABSDIFF(a_m10, a_m1p2);
-            const REAL dh6 = RABSDIFF(a_p10, a_p1m2), dh7 = RABSDIFF(a_p10, a_p1p2);
             REAL g[8];
-            g[0] = OMUL(OADD(dv2, dv6), half);   /* N */
-            g[1] = OMUL(OADD(dv3, dv7), half);   /* S */
-            g[2] = OMUL(OADD(dh2, dh6), half);   /* W */
-            g[3] = OMUL(OADD(dh3, dh7), half);   /* E */
-            g[4] = OMUL(OADD(dv2, dh2), half);   /* NW */
-            g[5] = OMUL(OADD(dv6, dh3), half);   /* NE */
-            g[6] = OMUL(OADD(dv3, dh6), half);   /* SW */
-            g[7] = OMUL(OADD(dv7, dh7), half);   /* SE */
+            M1CAT(rgbz_m1_semigradients, IS, RS)(R, x, g);
             /* eq. 7: sigma = max(min SG, floor, rel * mean SG) -- as rgbz_gammas4 */
             REAL gmin = g[0], gsum = g[0];
             for (int j = 1; j < 8; j++) {
@@ -220,10 +236,10 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
             }
             const REAL inv = ODIV((REAL)1, OMUL((REAL)2, OMUL(sigma, sigma)));
             for (int j = 0; j < 8; j++) arg[j][k] = -OMUL(OMUL(g[j], g[j]), inv);
-            cand[0][k] = a_m1m1;
-            cand[1][k] = a_m1p1;
-            cand[2][k] = a_p1m1;
-            cand[3][k] = a_p1p1;
+            cand[0][k] = (REAL)R[1][x - 1];
+            cand[1][k] = (REAL)R[1][x + 1];
+            cand[2][k] = (REAL)R[3][x - 1];
+            cand[3][k] = (REAL)R[3][x + 1];
         }
         /* 2: the eight exponentials of eq. 7 per site */
         for (int j = 0; j < 8; j++) {
@@ -237,35 +253,16 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
 #ifdef RGBZ_COUNT_OPS
         for (int k = 0; k < 8 * n; k++) OPC_(RGBZ_OP_EXP);
 #endif
-        /* 3: weights (eq. 19) and the weighted mean (eq. 5) */
+        /* 3: weights (eq. 19) and the weighted mean; den >= exp(-1/2) for finite input
+           (sigma >= the smallest SG), the plain mean covers non-finite input */
         for (int k = 0; k < n; k++) {
-            const REAL c0 = cand[0][k], c1 = cand[1][k], c2 = cand[2][k], c3 = cand[3][k];
-            const REAL w0 = OADD(OADD(arg[0][k], arg[2][k]), arg[4][k]);   /* 19a: N + W + NW */
-            const REAL w1 = OADD(OADD(arg[0][k], arg[3][k]), arg[5][k]);   /* 19b: N + E + NE */
-            const REAL w2 = OADD(OADD(arg[1][k], arg[2][k]), arg[6][k]);   /* 19c: S + W + SW */
-            const REAL w3 = OADD(OADD(arg[1][k], arg[3][k]), arg[7][k]);   /* 19d: S + E + SE */
-            const REAL den = OADD(OADD(OADD(w0, w1), w2), w3);
-            REAL num = OMUL(w1, OSUB(c1, c0));
-            num = OADD(num, OMUL(w2, OSUB(c2, c0)));
-            num = OADD(num, OMUL(w3, OSUB(c3, c0)));
-            /* den >= exp(-1/2) for finite input (sigma >= the smallest SG); the mean
-               (rgbz_mean's formula) covers non-finite input */
-            const REAL mean = c0 + (((c1 - c0) + (c2 - c0)) + (c3 - c0)) / (REAL)4;
-            const REAL q = den > (REAL)0 ? den : (REAL)1;
-            REAL r = den > (REAL)0 ? OADD(c0, ODIV(num, q)) : mean;
-#ifdef RGBZ_COUNT_OPS
-            if (!(den > (REAL)0)) {     /* the fallback mean: 6 additions, 1 division */
-                for (int i = 0; i < 6; i++) OPC_(RGBZ_OP_ADD);
-                OPC_(RGBZ_OP_DIV);
-            }
-#endif
-            r = r > (REAL)0 ? r : (REAL)0;    /* also maps a NaN to 0 */
-            r = r > maxval ? maxval : r;
-#if IN_IS_INT
-            res[k] = (IN_T)(r + (REAL)0.5);
-#else
-            res[k] = (IN_T)r;
-#endif
+            const REAL c[4] = {cand[0][k], cand[1][k], cand[2][k], cand[3][k]};
+            const REAL w[4] = {OADD(OADD(arg[0][k], arg[2][k]), arg[4][k]),   /* 19a: N + W + NW */
+                               OADD(OADD(arg[0][k], arg[3][k]), arg[5][k]),   /* 19b: N + E + NE */
+                               OADD(OADD(arg[1][k], arg[2][k]), arg[6][k]),   /* 19c: S + W + SW */
+                               OADD(OADD(arg[1][k], arg[3][k]), arg[7][k])};  /* 19d: S + E + SE */
+            res[k] = M1CAT(rgbz_to_out, IS, RS)(M1CAT(rgbz_m1_weighted_mean, IS, RS)(c, w),
+                                                maxval);
         }
         IN_T *restrict d = dst + y * S + xb;
         for (int k = 0; k < n; k++) d[2 * k] = res[k];
@@ -275,8 +272,9 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_sg_rows, IS, RS)(const IN_T *restrict s
 /*
  * BI, EDICentral and EDILine on Mask1 (eqs. 2-13), in the same block form as
  * rgbz_mask1_sg_rows: (1) the four gradients, sigma and eq. 7's arguments,
- * (2) the exponentials, (3) alpha * beta * gamma and the weighted mean. The
- * operations per site are those of rgbz_mask1_rows (same counts, same order).
+ * (2) the exponentials, (3) alpha * beta * gamma and the weighted mean. Only the
+ * two diagonal gammas are evaluated: every Mask1 candidate is diagonal, the
+ * vertical and horizontal gradients only set sigma.
  */
 RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict src,
                                                            IN_T *restrict dst, ptrdiff_t y,
@@ -290,20 +288,20 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict s
     const REAL maxval = (REAL)prm->maxval;
     const int fast_exp = prm->exp_mode == RGBZ_EXP_FAST;
     const int method = p->method;
+    const int central = method == RGBZ_M_EDI_CENTRAL;
     const REAL alpha = (REAL)p->cand_alpha[0];        /* all four candidates: exp(-1) */
     const ptrdiff_t S = cols;
     const ptrdiff_t xs = x0 + ((x0 & 1) != zcol_phase);
     const ptrdiff_t n_all = xs < x1 ? (x1 - xs + 1) / 2 : 0;
-    const IN_T *restrict rm2 = src + (y - 2) * S, *restrict rm1 = src + (y - 1) * S;
-    const IN_T *restrict r00 = src + y * S;
-    const IN_T *restrict rp1 = src + (y + 1) * S, *restrict rp2 = src + (y + 2) * S;
-    REAL arg[4][M1_BLOCK];
+    const IN_T *R[5] = {src + (y - 2) * S, src + (y - 1) * S, src + y * S, src + (y + 1) * S,
+                        src + (y + 2) * S};
+    REAL arg[2][M1_BLOCK];          /* the NW-SE and NE-SW gammas */
     IN_T res[M1_BLOCK];
     if (method == RGBZ_M_BI)
         /* BI has no gamma; step 3 may still read these (the compiler turns its
            "times gamma unless BI" into a blend), so give them a harmless 1 rather
-           than indeterminate stack bytes (denormal garbage cost BI 2x its time) */
-        for (int j = 2; j < 4; j++)
+           than indeterminate stack bytes (denormal garbage cost BI 5x its time) */
+        for (int j = 0; j < 2; j++)
             for (int k = 0; k < M1_BLOCK; k++) arg[j][k] = (REAL)1;
 
     for (ptrdiff_t b0 = 0; b0 < n_all; b0 += M1_BLOCK) {
@@ -312,47 +310,8 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict s
         if (method != RGBZ_M_BI) {
             /* 1: the gradients of eqs. 6 (central) or 8-11 (axes), sigma, eq. 7's arguments */
             for (int k = 0; k < n; k++) {
-                const ptrdiff_t x = xb + 2 * k;
-#define Q(dy, dx) ((REAL)((dy) == -2 ? rm2 : (dy) == -1 ? rm1 : (dy) == 0 ? r00 : (dy) == 1 ? rp1 : rp2)[x + (dx)])
                 REAL G[4];
-                if (method == RGBZ_M_EDI_CENTRAL) {
-                    G[0] = OMUL(RABSDIFF(Q(1, 0), Q(-1, 0)), (REAL)1);
-                    G[1] = OMUL(RABSDIFF(Q(0, 1), Q(0, -1)), (REAL)1);
-                    G[2] = OMUL(OADD(OADD(RABSDIFF(Q(1, 1), Q(-1, -1)), RABSDIFF(Q(2, 1), Q(-2, -1))),
-                                     RABSDIFF(Q(1, 2), Q(-1, -2))), (REAL)(1.0 / 3.0));
-                    G[3] = OMUL(OADD(OADD(RABSDIFF(Q(1, -1), Q(-1, 1)), RABSDIFF(Q(2, -1), Q(-2, 1))),
-                                     RABSDIFF(Q(1, -2), Q(-1, 2))), (REAL)(1.0 / 3.0));
-                } else {
-                    REAL v = OADD(RABSDIFF(Q(-2, -1), Q(2, -1)), RABSDIFF(Q(-2, 1), Q(2, 1)));
-                    v = OADD(v, RABSDIFF(Q(-1, -2), Q(1, -2)));
-                    v = OADD(v, RABSDIFF(Q(-1, -1), Q(1, -1)));
-                    v = OADD(v, RABSDIFF(Q(-1, 0), Q(1, 0)));
-                    v = OADD(v, RABSDIFF(Q(-1, 1), Q(1, 1)));
-                    v = OADD(v, RABSDIFF(Q(-1, 2), Q(1, 2)));
-                    REAL h = OADD(RABSDIFF(Q(-1, -2), Q(-1, 2)), RABSDIFF(Q(1, -2), Q(1, 2)));
-                    h = OADD(h, RABSDIFF(Q(-2, -1), Q(-2, 1)));
-                    h = OADD(h, RABSDIFF(Q(-1, -1), Q(-1, 1)));
-                    h = OADD(h, RABSDIFF(Q(0, -1), Q(0, 1)));
-                    h = OADD(h, RABSDIFF(Q(1, -1), Q(1, 1)));
-                    h = OADD(h, RABSDIFF(Q(2, -1), Q(2, 1)));
-                    REAL d2 = OADD(RABSDIFF(Q(-1, 2), Q(-2, 1)), RABSDIFF(Q(0, 1), Q(-1, 0)));
-                    d2 = OADD(d2, RABSDIFF(Q(1, 0), Q(0, -1)));
-                    d2 = OADD(d2, RABSDIFF(Q(1, 1), Q(-1, -1)));
-                    d2 = OADD(d2, RABSDIFF(Q(1, 2), Q(-2, -1)));
-                    d2 = OADD(d2, RABSDIFF(Q(2, -1), Q(1, -2)));
-                    d2 = OADD(d2, RABSDIFF(Q(2, 1), Q(-1, -2)));
-                    REAL d3 = OADD(RABSDIFF(Q(-1, -2), Q(-2, -1)), RABSDIFF(Q(0, -1), Q(-1, 0)));
-                    d3 = OADD(d3, RABSDIFF(Q(1, -2), Q(-2, 1)));
-                    d3 = OADD(d3, RABSDIFF(Q(1, -1), Q(-1, 1)));
-                    d3 = OADD(d3, RABSDIFF(Q(1, 0), Q(0, 1)));
-                    d3 = OADD(d3, RABSDIFF(Q(2, -1), Q(-1, 2)));
-                    d3 = OADD(d3, RABSDIFF(Q(2, 1), Q(1, 2)));
-                    G[0] = OMUL(v, (REAL)(1.0 / 7.0));
-                    G[1] = OMUL(h, (REAL)(1.0 / 7.0));
-                    G[2] = OMUL(d2, (REAL)(1.0 / 7.0));
-                    G[3] = OMUL(d3, (REAL)(1.0 / 7.0));
-                }
-#undef Q
+                M1CAT(rgbz_m1_gradients, IS, RS)(R, xb + 2 * k, central, G);
                 REAL gmin = G[0], gsum = G[0];
                 for (int j = 1; j < 4; j++) {
                     gmin = OCMP(G[j] < gmin) ? G[j] : gmin;
@@ -364,14 +323,11 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict s
                     sigma = OCMP(rfloor > sigma) ? rfloor : sigma;
                 }
                 const REAL inv = ODIV((REAL)1, OMUL((REAL)2, OMUL(sigma, sigma)));
-                /* only the diagonal gammas weigh a Mask1 candidate; the axis ones set sigma */
-                arg[0][k] = (REAL)0;
-                arg[1][k] = (REAL)0;
-                arg[2][k] = -OMUL(OMUL(G[2], G[2]), inv);
-                arg[3][k] = -OMUL(OMUL(G[3], G[3]), inv);
+                arg[0][k] = -OMUL(OMUL(G[2], G[2]), inv);
+                arg[1][k] = -OMUL(OMUL(G[3], G[3]), inv);
             }
-            /* 2: the exponentials (only the two diagonal ones are used) */
-            for (int j = 2; j < 4; j++) {
+            /* 2: the two exponentials */
+            for (int j = 0; j < 2; j++) {
                 REAL *restrict a = arg[j];
                 if (fast_exp) {
                     for (int k = 0; k < n; k++) a[k] = REXP_FAST(a[k]);
@@ -386,43 +342,19 @@ RGBZ_CLONES static void M1CAT(rgbz_mask1_ab_rows, IS, RS)(const IN_T *restrict s
         /* 3: alpha * beta (eqs. 2-4) times gamma (eq. 6), weighted mean (eqs. 12-13) */
         for (int k = 0; k < n; k++) {
             const ptrdiff_t x = xb + 2 * k;
-            const REAL c0 = (REAL)rm1[x - 1], c1 = (REAL)rm1[x + 1];
-            const REAL c2 = (REAL)rp1[x - 1], c3 = (REAL)rp1[x + 1];
-            const REAL d01 = RABSDIFF(c0, c1), d02 = RABSDIFF(c0, c2);
-            const REAL d03 = RABSDIFF(c0, c3), d12 = RABSDIFF(c1, c2);
-            const REAL d13 = RABSDIFF(c1, c3), d23 = RABSDIFF(c2, c3);
-            REAL w0 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d01), d02), d03));
-            REAL w1 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d01), d12), d13));
-            REAL w2 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d02), d12), d23));
-            REAL w3 = ODIV(alpha, OADD(OADD(OADD((REAL)1, d03), d13), d23));
+            const REAL c[4] = {(REAL)R[1][x - 1], (REAL)R[1][x + 1], (REAL)R[3][x - 1],
+                               (REAL)R[3][x + 1]};
+            REAL w[4];
+            M1CAT(rgbz_m1_alpha_beta, IS, RS)(c, alpha, w);
             if (method != RGBZ_M_BI) {
-                const REAL g2 = arg[2][k], g3 = arg[3][k];
-                w0 = OMUL(w0, g2);     /* (-1,-1): NW-SE */
-                w1 = OMUL(w1, g3);     /* (-1, 1): NE-SW */
-                w2 = OMUL(w2, g3);
-                w3 = OMUL(w3, g2);
+                const REAL g2 = arg[0][k], g3 = arg[1][k];
+                w[0] = OMUL(w[0], g2);     /* (-1,-1): NW-SE */
+                w[1] = OMUL(w[1], g3);     /* (-1, 1): NE-SW */
+                w[2] = OMUL(w[2], g3);
+                w[3] = OMUL(w[3], g2);
             }
-            const REAL den = OADD(OADD(OADD(w0, w1), w2), w3);
-            REAL num = OMUL(w1, OSUB(c1, c0));
-            num = OADD(num, OMUL(w2, OSUB(c2, c0)));
-            num = OADD(num, OMUL(w3, OSUB(c3, c0)));
-            /* the plain mean (rgbz_mean's formula) when every weight underflows */
-            const REAL mean = c0 + (((c1 - c0) + (c2 - c0)) + (c3 - c0)) / (REAL)4;
-            const REAL q = den > (REAL)0 ? den : (REAL)1;
-            REAL r = den > (REAL)0 ? OADD(c0, ODIV(num, q)) : mean;
-#ifdef RGBZ_COUNT_OPS
-            if (!(den > (REAL)0)) {     /* the fallback mean: 6 additions, 1 division */
-                for (int i = 0; i < 6; i++) OPC_(RGBZ_OP_ADD);
-                OPC_(RGBZ_OP_DIV);
-            }
-#endif
-            r = r > (REAL)0 ? r : (REAL)0;
-            r = r > maxval ? maxval : r;
-#if IN_IS_INT
-            res[k] = (IN_T)(r + (REAL)0.5);
-#else
-            res[k] = (IN_T)r;
-#endif
+            res[k] = M1CAT(rgbz_to_out, IS, RS)(M1CAT(rgbz_m1_weighted_mean, IS, RS)(c, w),
+                                                maxval);
         }
         IN_T *restrict d = dst + y * S + xb;
         for (int k = 0; k < n; k++) d[2 * k] = res[k];

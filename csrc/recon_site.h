@@ -106,6 +106,59 @@ static inline REAL RFN(rgbz_mean)(const REAL *c, int n)
     return OADD(c[0], ODIV(s, (REAL)n));
 }
 
+/* The end of every weighted method, shared by rgbz_site and rgbz_site_clip: the values
+   interpolated -- the candidates c (eq. 13), or in the colour-difference domain (eq. 5)
+   their differences to the estimate X_k of the other channel(s), added back to the
+   estimate X_0 at the missing pixel -- weighted by alpha * beta (S: beta's sums),
+   gamma (eq. 6) and the semi-gradients (eq. 19), normalised (eqs. 12-13). */
+static inline REAL RFN(rgbz_site_value)(const REAL *v, const rgbz_plan *p, REAL *c,
+                                        const REAL *S, const REAL *gamma)
+{
+    const int nc = p->n_cand;
+    REAL base = (REAL)0;
+    if (p->use_cd) {
+        for (int k = 0; k <= nc; k++) {
+            REAL x = OMUL((REAL)p->cd_w[k][0], v[p->cd_tap[k][0]]);
+            for (int m = 1; m < p->cd_n[k]; m++)
+                x = OADD(x, OMUL((REAL)p->cd_w[k][m], v[p->cd_tap[k][m]]));
+            if (k < nc) c[k] = OSUB(c[k], x);
+            else base = x;
+        }
+    }
+
+    /* weights (eqs. 2, 6, 19) and the weighted mean (eqs. 12-13) */
+    REAL num = (REAL)0, den = (REAL)0;
+    for (int k = 0; k < nc; k++) {
+        REAL w;
+        if (p->use_ab) w = ODIV((REAL)p->cand_alpha[k], S[k]);
+        else w = (REAL)1;
+        if (p->use_grad) w = OMUL(w, gamma[8 + p->cand_ori[k]]);
+        if (p->use_sg) {
+            int32_t m = p->cand_sgmask[k];
+            REAL s = (REAL)0;
+            int first = 1;
+            while (m) {
+                int g = __builtin_ctz((unsigned)m);
+                s = first ? gamma[g] : OADD(s, gamma[g]);
+                first = 0;
+                m &= m - 1;
+            }
+            if (p->sg_scaled) s = OMUL(s, (REAL)p->cand_sgscale[k]);
+            w = (p->use_ab || p->use_grad) ? OMUL(w, s) : s;
+        }
+        den = k ? OADD(den, w) : w;
+        if (k) num = OADD(num, OMUL(w, OSUB(c[k], c[0])));
+    }
+    REAL r;
+    if (!(den > (REAL)0)) {
+        /* every weight underflowed: plain mean of the candidates */
+        r = RFN(rgbz_mean)(c, nc);
+    } else {
+        r = OADD(c[0], ODIV(num, den));
+    }
+    return p->use_cd ? OADD(base, r) : r;
+}
+
 static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_, REAL rel,
                                   REAL edge_ratio, int exp_mode)
 {
@@ -164,51 +217,7 @@ static inline REAL RFN(rgbz_site)(const REAL *v, const rgbz_plan *p, REAL floor_
             }
     }
 
-    /* values interpolated: the candidates (eq. 13), or in the colour-difference domain
-       (eq. 5) their differences to the estimate X_k of the other channel(s), added back to
-       the estimate X_0 at the missing pixel */
-    REAL base = (REAL)0;
-    if (p->use_cd) {
-        for (int k = 0; k <= nc; k++) {
-            REAL x = OMUL((REAL)p->cd_w[k][0], v[p->cd_tap[k][0]]);
-            for (int m = 1; m < p->cd_n[k]; m++)
-                x = OADD(x, OMUL((REAL)p->cd_w[k][m], v[p->cd_tap[k][m]]));
-            if (k < nc) c[k] = OSUB(c[k], x);
-            else base = x;
-        }
-    }
-
-    /* weights (eqs. 2, 6, 19) and the weighted mean (eqs. 12-13) */
-    REAL num = (REAL)0, den = (REAL)0;
-    for (int k = 0; k < nc; k++) {
-        REAL w;
-        if (p->use_ab) w = ODIV((REAL)p->cand_alpha[k], S[k]);
-        else w = (REAL)1;
-        if (p->use_grad) w = OMUL(w, gamma[8 + p->cand_ori[k]]);
-        if (p->use_sg) {
-            int32_t m = p->cand_sgmask[k];
-            REAL s = (REAL)0;
-            int first = 1;
-            while (m) {
-                int g = __builtin_ctz((unsigned)m);
-                s = first ? gamma[g] : OADD(s, gamma[g]);
-                first = 0;
-                m &= m - 1;
-            }
-            if (p->sg_scaled) s = OMUL(s, (REAL)p->cand_sgscale[k]);
-            w = (p->use_ab || p->use_grad) ? OMUL(w, s) : s;
-        }
-        den = k ? OADD(den, w) : w;
-        if (k) num = OADD(num, OMUL(w, OSUB(c[k], c[0])));
-    }
-    REAL r;
-    if (!(den > (REAL)0)) {
-        /* every weight underflowed: plain mean of the candidates */
-        r = RFN(rgbz_mean)(c, nc);
-    } else {
-        r = OADD(c[0], ODIV(num, den));
-    }
-    return p->use_cd ? OADD(base, r) : r;
+    return RFN(rgbz_site_value)(v, p, c, S, gamma);
 }
 
 
@@ -546,45 +555,9 @@ static inline REAL RFN(rgbz_site_clip)(const REAL *v, uint64_t clipped, const rg
                 S[k] = OADD((REAL)1, ODIV(OMUL(OSUB(S[k], (REAL)1), (REAL)(nc - 1)), (REAL)u[k]));
     }
 
-    /* values interpolated: as rgbz_site (clipped values are used as values) */
-    REAL base = (REAL)0;
-    if (p->use_cd) {
-        for (int k = 0; k <= nc; k++) {
-            REAL x = OMUL((REAL)p->cd_w[k][0], v[p->cd_tap[k][0]]);
-            for (int m = 1; m < p->cd_n[k]; m++)
-                x = OADD(x, OMUL((REAL)p->cd_w[k][m], v[p->cd_tap[k][m]]));
-            if (k < nc) c[k] = OSUB(c[k], x);
-            else base = x;
-        }
-    }
-
-    REAL num = (REAL)0, den = (REAL)0;
-    for (int k = 0; k < nc; k++) {
-        REAL w;
-        if (p->use_ab) w = ODIV((REAL)p->cand_alpha[k], S[k]);
-        else w = (REAL)1;
-        if (p->use_grad) w = OMUL(w, gamma[8 + p->cand_ori[k]]);
-        if (p->use_sg) {
-            /* eq. 19 as in rgbz_site: an unknown semi-gradient enters with its gamma of 0 */
-            int32_t m = p->cand_sgmask[k];
-            REAL s = (REAL)0;
-            int first = 1;
-            while (m) {
-                int g = __builtin_ctz((unsigned)m);
-                s = first ? gamma[g] : OADD(s, gamma[g]);
-                first = 0;
-                m &= m - 1;
-            }
-            if (p->sg_scaled) s = OMUL(s, (REAL)p->cand_sgscale[k]);
-            w = (p->use_ab || p->use_grad) ? OMUL(w, s) : s;
-        }
-        den = k ? OADD(den, w) : w;
-        if (k) num = OADD(num, OMUL(w, OSUB(c[k], c[0])));
-    }
-    REAL r;
-    if (!(den > (REAL)0)) r = RFN(rgbz_mean)(c, nc);
-    else r = OADD(c[0], ODIV(num, den));
-    return p->use_cd ? OADD(base, r) : r;
+    /* the weighted mean as rgbz_site (clipped values are used as values; an unknown
+       semi-gradient enters eq. 19 with its gamma of 0) */
+    return RFN(rgbz_site_value)(v, p, c, S, gamma);
 #undef RCLIPPED
 }
 

@@ -127,18 +127,10 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     ``clip_level`` (DN, or None): known pixels at or above it are clipped; needs
     ``mask1_fast=0`` (the C core rejects the combination otherwise).
     """
-    cdef int in_type
+    cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status
     cdef rgbz_params prm
     cdef uint64_t *counts = NULL
-    if frame_t is uint8_t:
-        in_type = RGBZ_T_U8
-    elif frame_t is uint16_t:
-        in_type = RGBZ_T_U16
-    elif frame_t is float:
-        in_type = RGBZ_T_F32
-    else:
-        in_type = RGBZ_T_F64
     prm.sigma_floor = sigma_floor
     prm.sigma_rel = sigma_rel
     prm.edge_ratio = edge_ratio
@@ -178,13 +170,7 @@ def tof_demodulate(const tap_t[:, :, ::1] taps, double[:, ::1] phase, double[:, 
                    double[:, ::1] offset, int workers, uint64_t[::1] opcounts=None):
     """Four-tap demodulation: taps (F, 4, N) -> phase, amplitude, offset (F, N)."""
     cdef int status
-    cdef int in_type
-    if tap_t is uint16_t:
-        in_type = RGBZ_T_U16
-    elif tap_t is float:
-        in_type = RGBZ_T_F32
-    else:
-        in_type = RGBZ_T_F64
+    cdef int in_type = _type_code(<tap_t *> NULL)
     if taps.shape[2] == 0:
         return
     if opcounts is not None:
@@ -234,16 +220,10 @@ def tof_depth(const tap_t[:, :, ::1] taps, const double[::1] freqs, const double
     """Fused demodulation + unwrapping: taps (F, 4, N) -> depth, residual, wraps (N,) and,
     when given, phase, amplitude, offset (F, N)."""
     cdef int status
-    cdef int in_type
+    cdef int in_type = _type_code(<tap_t *> NULL)
     cdef double *ph = _opt2(phase)
     cdef double *am = _opt2(amp)
     cdef double *of = _opt2(offset)
-    if tap_t is uint16_t:
-        in_type = RGBZ_T_U16
-    elif tap_t is float:
-        in_type = RGBZ_T_F32
-    else:
-        in_type = RGBZ_T_F64
     if taps.shape[2] == 0:
         return
     with nogil:
