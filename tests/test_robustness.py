@@ -252,7 +252,7 @@ ROWS = [
       ValueError, "bit_depth: expected 1..16 bits"),
     R("mosaic.input_bits", "mosaic(input_bits=0)",
       lambda f: rz.mosaic(_u8img(), "mask1", input_bits=0), ValueError,
-      "input_bits: expected 1..16 bits"),
+      "input_bits: expected 1..8 bits for uint8 input, got 0"),
     R("mosaic.input_bits-type", "mosaic(input_bits='8')",
       lambda f: rz.mosaic(_u8img(), "mask1", input_bits="8"), TypeError,
       "input_bits: expected an integer number of bits"),
