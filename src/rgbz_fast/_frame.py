@@ -92,6 +92,9 @@ class RawFrame:
                                  f"{self.data.shape}")
             _check_range(ref, bd, "reference")
             object.__setattr__(self, "reference", _read_only(ref))
+        if isinstance(self.tof, ToFTaps) and self.tof.shape != self.data.shape:
+            raise ValueError(f"tof: taps of a {self.tof.shape[0]}x{self.tof.shape[1]} frame, "
+                             f"the data is {self.data.shape[0]}x{self.data.shape[1]}")
 
     @property
     def shape(self):
@@ -320,6 +323,14 @@ class ToFTaps:
                 raise ValueError(f"{name}: expected shape ({n},), got {np.shape(a)}")
         if self.block not in (1, 2):
             raise ValueError(f"block: expected 1 or 2, got {self.block!r}")
+        shape = tuple(int(v) for v in self.shape)
+        if len(shape) != 2 or min(shape) < self.block:
+            raise ValueError(f"shape: expected a (rows, cols) frame shape, got {self.shape!r}")
+        # every site's block inside the frame (a file could say anything)
+        for name, a, size in (("rows", rows, shape[0]), ("cols", cols, shape[1])):
+            if n and (a.min() < 0 or a.max() > size - self.block):
+                raise ValueError(f"sites: {name} span [{a.min()}, {a.max()}], outside the "
+                                 f"{shape[0]}x{shape[1]} frame")
         for a in (taps, freqs, rows, cols, *per_site.values()):
             a.setflags(write=False)
         object.__setattr__(self, "taps", taps)
@@ -327,7 +338,7 @@ class ToFTaps:
         object.__setattr__(self, "sites", (rows, cols))
         for k, a in per_site.items():
             object.__setattr__(self, k, a)
-        object.__setattr__(self, "shape", tuple(int(s) for s in self.shape))
+        object.__setattr__(self, "shape", shape)
 
     @property
     def n_sites(self):

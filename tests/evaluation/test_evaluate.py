@@ -97,7 +97,7 @@ def test_interrupted_run_resumes(tiny_dataset, tmp_path, monkeypatch):
                     methods=("sg",))
     monkeypatch.setattr(mod, "evaluate_image", real)
     done = {p.parent.name for p in cache.rglob("*.json")}
-    assert done == set(seen)
+    assert done == {mod.cache_folder(n) for n in seen}
     full = ev.evaluate(ds, cache_dir=cache, processes=1, progress=False, metrics=("cfa_psnr",),
                        methods=("sg",))
     fresh = ev.evaluate(ds, processes=1, progress=False, metrics=("cfa_psnr",), methods=("sg",))

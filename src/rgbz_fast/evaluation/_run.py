@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -64,14 +65,21 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     """Every (pattern, method) of ``config`` on one image: a list of tidy rows.
 
     Each row: ``{"image", "pattern", "method", "metric", "value"}``. Cached
-    results are reused; new ones are written to ``cache_dir`` atomically.
-    ``workers`` are the threads of each kernel call.
+    results are reused; new ones are written to ``cache_dir`` atomically. A
+    cache entry is keyed by the configuration and by the image's content
+    (:meth:`~rgbz_fast.io.ImageSource.fingerprint`), in a folder of its own
+    per image name. ``workers`` are the threads of each kernel call.
     """
     rows, todo = [], []
-    cdir = Path(cache_dir) / _safe(source.name) if cache_dir else None
+    cdir = Path(cache_dir) / cache_folder(source.name) if cache_dir else None
+    content = source.fingerprint() if cdir else ""
+
+    def key(p, m):
+        return hashlib.sha1(f"{config.key(p, m, source.is_raw)} {content}".encode()).hexdigest()[:20]
+
     for p in config.patterns:
         for m in config.methods:
-            cached = _cache_read(cdir, config.key(p, m, source.is_raw)) if cdir else None
+            cached = _cache_read(cdir, key(p, m)) if cdir else None
             if cached is not None and set(config.metrics) <= set(cached):
                 rows += [_row(source.name, p, m, k, cached[k]) for k in config.metrics]
             else:
@@ -102,7 +110,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
                 values.update(_image_metrics(ref_srgb, test_srgb, config))
             if cdir:
-                _cache_write(cdir, config.key(p, m, source.is_raw), values)
+                _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
     return rows
 
@@ -128,6 +136,15 @@ def _row(image, pattern, method, metric, value):
 
 def _safe(name):
     return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name)
+
+
+def cache_folder(name):
+    """The cache folder of an image name: readable, and distinct for distinct names.
+
+    The name's characters outside ``[A-Za-z0-9._-]`` become ``_``, and a hash
+    of the exact name is appended, so ``"a b"`` and ``"a_b"`` get two folders.
+    """
+    return f"{_safe(name)[:60]}-{hashlib.sha1(name.encode()).hexdigest()[:10]}"
 
 
 def _cache_read(cdir, key):
