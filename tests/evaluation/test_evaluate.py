@@ -183,3 +183,27 @@ def test_bad_dataset(tmp_path):
         rio.folder_dataset(tmp_path / "missing")
     with pytest.raises(ValueError, match="^dataset: no image files"):
         rio.folder_dataset(tmp_path)
+
+
+def test_cache_follows_the_image_content_and_exact_name(tmp_path):
+    """A changed image is recomputed (the key holds its SHA-256), and names that sanitise
+    alike ("a b", "a_b") get separate cache folders."""
+    import imageio.v3 as iio
+
+    folder = tmp_path / "imgs"
+    folder.mkdir()
+    rng = np.random.default_rng(0)
+    for name in ("a b.png", "a_b.png"):
+        iio.imwrite(folder / name, rng.integers(0, 256, (32, 32, 3), dtype=np.uint8))
+    kw = dict(cache_dir=tmp_path / "cache", processes=1, progress=False,
+              metrics=("cfa_psnr",), methods=("sg",), patterns=("mask1",))
+    first = ev.evaluate(rio.folder_dataset(folder), **kw)
+    a, b = (first.values("mask1", "sg", "cfa_psnr"))
+    assert a != b                                    # two images, two results
+    assert len({p.parent for p in (tmp_path / "cache").rglob("*.json")}) == 2
+    iio.imwrite(folder / "a b.png", np.full((32, 32, 3), 128, np.uint8))   # flat: exact
+    second = ev.evaluate(rio.folder_dataset(folder), **kw)
+    fresh = ev.evaluate(rio.folder_dataset(folder), processes=1, progress=False,
+                        metrics=("cfa_psnr",), methods=("sg",), patterns=("mask1",))
+    assert second.rows == fresh.rows and second.rows != first.rows
+    assert second.values("mask1", "sg", "cfa_psnr")[0] == np.inf

@@ -149,12 +149,13 @@ def read_file(path, name="path", *, max_bytes=None):
         raise ValueError(f"{name}: {p} is a folder, not a regular file") from None
     except OSError as exc:
         raise ValueError(f"{name}: cannot open {p} ({exc.strerror or exc})") from None
+    st = os.fstat(fd)                  # the file opened, not what the name points to now
+    if not stat.S_ISREG(st.st_mode):
+        os.close(fd)
+        kind = _file_kind(st.st_mode)
+        raise ValueError(f"{name}: {p} is {kind}" +
+                         ("" if kind.startswith("not") else ", not a regular file"))
     with os.fdopen(fd, "rb") as fh:
-        st = os.fstat(fd)              # the file opened, not what the name points to now
-        if not stat.S_ISREG(st.st_mode):
-            kind = _file_kind(st.st_mode)
-            raise ValueError(f"{name}: {p} is {kind}" +
-                             ("" if kind.startswith("not") else ", not a regular file"))
         if st.st_size > limit:
             raise ValueError(f"{name}: {p} is {st.st_size} bytes, more than the limit of "
                              f"{limit} bytes; raise it with {_HOW_TO_RAISE['max_bytes']}")

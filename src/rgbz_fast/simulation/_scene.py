@@ -437,9 +437,9 @@ def _int_to_unit(img, name):
 # --------------------------------------------------------------------------
 def _require_file(path, what):
     p = Path(path)
-    if not p.is_file():
+    if not p.exists():
         raise FileNotFoundError(f"{what}: {p} not found")
-    return p
+    return p                      # a folder, FIFO or device: the reader says what it is
 
 
 def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflectance=None,
@@ -517,7 +517,7 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         cube = np.stack(bands, axis=-1)
         meta["band_files"] = [f.name for f in files]
         file_wl = None
-    elif p.is_file():
+    elif p.exists():                       # a FIFO or a device: read_file says what it is
         from scipy import io as sio
 
         blob = read_file(p, "path")
