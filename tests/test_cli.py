@@ -119,7 +119,7 @@ def test_evaluate_prints_table_and_writes_reports(tmp_path, capsys):
 @pytest.mark.parametrize("argv, match", [
     (["evaluate", "--methods", "nope"], "methods"),
     (["evaluate", "--dataset", "/nonexistent/folder"], "does not exist"),
-    (["evaluate", "--workers", "0"], "workers"),
+    (["evaluate", "--patterns", "mask7"], "pattern: 'mask7'"),
     (["reconstruct", "/nonexistent.npz"], "does not exist"),
     (["reconstruct", __file__, "--method", "sg"], ""),
     (["simulate", "/nonexistent.png"], "does not exist"),

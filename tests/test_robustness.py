@@ -1229,7 +1229,7 @@ CLI_ROWS = [
     C("cli.simulate-no-bayer", ("simulate", "{d}/rgb.png", "--pattern", "ZR/RG"),
       "pattern: 'ZR/RG' fits no Bayer phase"),
     C("cli.simulate-seed", ("simulate", "{d}/rgb.png", "--seed", "-1"),
-      "seed: expected an integer >= 0"),
+      "argument --seed: expected an integer >= 0, got '-1'", usage=True),
     C("cli.simulate-tiny", ("simulate", "{d}/tiny.png"),
       "scene: frame 1x1 is smaller than one period"),
     C("cli.simulate-corrupt", ("simulate", "{d}/corrupt.png"), "path: cannot read"),
@@ -1248,7 +1248,7 @@ CLI_ROWS = [
     C("cli.reconstruct-method-unknown", ("reconstruct", "{d}/ok.npz", "--method", "nope"),
       "method: expected one of"),
     C("cli.reconstruct-workers", ("reconstruct", "{d}/ok.npz", "--workers", "0"),
-      "workers: expected None, -1 or a positive number of threads"),
+      "argument --workers: expected a positive integer, got '0'", usage=True),
     C("cli.reconstruct-precision", ("reconstruct", "{d}/ok.npz", "--precision", "float16"),
       "argument --precision: invalid choice", usage=True),
     C("cli.reconstruct-truncated", ("reconstruct", "{d}/truncated.npz"),
@@ -1261,7 +1261,7 @@ CLI_ROWS = [
       "dataset: no image files in"),
     C("cli.evaluate-missing", ("evaluate", "--dataset", "{d}/missing"), "dataset: "),
     C("cli.evaluate-crop", ("evaluate", "--dataset", "{d}/ds", "--crop", "-1"),
-      "crop: expected an integer >= 0"),
+      "argument --crop: expected an integer >= 0, got '-1'", usage=True),
     C("cli.evaluate-methods", ("evaluate", "--dataset", "{d}/ds", "--methods", "nope"),
       "methods: unknown method(s)"),
     C("cli.evaluate-metrics", ("evaluate", "--dataset", "{d}/ds", "--metrics", "nope"),
@@ -1269,9 +1269,9 @@ CLI_ROWS = [
     C("cli.evaluate-patterns", ("evaluate", "--dataset", "{d}/ds", "--patterns", "foo"),
       "pattern: 'foo' is neither"),
     C("cli.evaluate-processes", ("evaluate", "--dataset", "{d}/ds", "--processes", "0"),
-      "processes: expected None or a positive number of processes"),
+      "argument --processes: expected a positive integer, got '0'", usage=True),
     C("cli.evaluate-workers", ("evaluate", "--dataset", "{d}/ds", "--workers", "0"),
-      "workers: expected None, -1 or a positive number of threads"),
+      "argument --workers: expected a positive integer, got '0'", usage=True),
     C("cli.evaluate-image-small", ("evaluate", "--dataset", "{d}/small.png", "--processes", "1",
                                    "--no-cache", "--no-plots"), "crop: crop=8 leaves"),
     C("cli.evaluate-corrupt", ("evaluate", "--dataset", "{d}/ds_corrupt", "--processes", "1",
@@ -1751,6 +1751,100 @@ def test_killed_evaluate_resumes_from_its_cache(tmp_path):
     reports = sorted(q.name for q in out.iterdir() if q.is_file())
     assert {"results.csv", "results.json", "summary.md"} <= set(reports)
     assert not [q for q in out.iterdir() if q.name.endswith(".tmp")]
+
+
+WRITE_LOOP = textwrap.dedent("""
+    import signal, sys
+    from pathlib import Path
+    from rgbz_fast import _cli, io as rio
+    signal.signal(signal.SIGTERM, _cli._terminate)      # what `rgbz-fast CMD` installs
+    blob = bytes(range(256)) * (1 << 17)                # 32 MiB per write
+    print("ready", flush=True)
+    i = 0
+    try:
+        while True:
+            rio.atomic_write(Path(sys.argv[1]) / f"f{i % 3}.bin", blob)
+            i += 1
+    except _cli.Terminated as exc:
+        sys.exit(exc.code)
+""")
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTERM"), reason="POSIX signals")
+def test_sigterm_during_writes_leaves_no_temporary_file(tmp_path):
+    """SIGTERM used to kill the process inside atomic_write and leave its hidden .tmp file;
+    the command line's handler turns it into an exception, and the write cleans up."""
+    out = tmp_path / "w"
+    out.mkdir()
+    for delay in (0.02, 0.13, 0.31, 0.57):
+        proc = subprocess.Popen([sys.executable, "-c", WRITE_LOOP, str(out)],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        assert proc.stdout.readline().strip() == "ready", proc.stderr.read()
+        time.sleep(delay)
+        proc.send_signal(signal.SIGTERM)
+        _, err = proc.communicate(timeout=60)
+        assert proc.returncode == 128 + signal.SIGTERM, err[-2000:]
+        left = sorted(p.name for p in out.iterdir())
+        assert not [n for n in left if n.endswith(".tmp")], left
+        for p in out.iterdir():
+            assert p.stat().st_size == 256 << 17          # whole files only
+
+
+def _children(pid):
+    """Live (non-zombie) processes whose parent is ``pid``, from /proc."""
+    out = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            fields = stat.rsplit(")", 1)[1].split()
+            if int(fields[1]) == pid and fields[0] != "Z":
+                out.append(int(entry.name))
+    return out
+
+
+def _alive(pid):
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+def test_sigterm_stops_the_evaluation_pool(tmp_path):
+    """SIGTERM to `rgbz-fast evaluate --processes 2` left its two workers running; now the
+    pool is stopped before the process exits (143), and no temporary cache file is left."""
+    import imageio.v3 as iio
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    rng = np.random.default_rng(1)
+    for i in range(6):
+        iio.imwrite(ds / f"img{i}.png", rng.integers(0, 256, (256, 320, 3), dtype=np.uint8))
+    cache = tmp_path / "cache"
+    argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--dataset", str(ds), "--out",
+            str(tmp_path / "out"), "--cache", str(cache), "--processes", "2", "--quiet",
+            "--no-plots"]
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 300
+    workers = []
+    while time.monotonic() < deadline and proc.poll() is None:
+        workers = [c for c in _children(proc.pid)
+                   if "multiprocessing" in Path(f"/proc/{c}/cmdline").read_text()]
+        if len(workers) >= 2 and list(cache.rglob("*.json")):
+            break
+        time.sleep(0.02)
+    assert proc.poll() is None and len(workers) >= 2, "the pool never ran"
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 128 + signal.SIGTERM, err[-2000:]
+    assert err.strip().splitlines()[-1] == "rgbz-fast evaluate: terminated"
+    time.sleep(0.5)
+    assert not [w for w in workers if _alive(w)], "orphaned worker processes"
+    assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]
 
 
 REPORT_LOOP = textwrap.dedent("""

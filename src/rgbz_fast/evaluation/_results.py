@@ -18,10 +18,15 @@ __all__ = ["Results"]
 
 @dataclass
 class Results:
-    """A tidy table: one row per image, pattern, method and metric."""
+    """A tidy table: one row per image, pattern, method and metric.
+
+    ``skipped`` lists the ``(image, reason)`` of the images an evaluation with
+    ``skip_bad=True`` left out.
+    """
 
     rows: list
     config: EvalConfig = field(default_factory=EvalConfig)
+    skipped: list = field(default_factory=list)
 
     def __len__(self):
         return len(self.rows)
@@ -55,7 +60,8 @@ class Results:
         return buf.getvalue()
 
     def to_json(self):
-        return json.dumps({"config": asdict(self.config), "rows": self.rows}, indent=1,
+        return json.dumps({"config": asdict(self.config), "rows": self.rows,
+                           "skipped": [list(t) for t in self.skipped]}, indent=1,
                           default=str)
 
     def summary_markdown(self, digits=None):
@@ -63,6 +69,9 @@ class Results:
         s = self.summary()
         fmt = digits or {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
         lines = [f"Mean ± std over {len(self.images())} image(s); {self.config.label()}.", ""]
+        if self.skipped:
+            lines[-1:] = [f"Skipped {len(self.skipped)} image(s) that could not be evaluated: "
+                          + "; ".join(f"{n} ({why})" for n, why in self.skipped) + ".", ""]
         for p in self.config.patterns:
             lines.append(f"**{p}**")
             lines.append("")

@@ -14,7 +14,7 @@ from .. import _patterns
 from .. import metrics as _metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import check_processes, check_workers
+from .._validate import check_flag, check_processes, check_workers
 from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
 from ..reconstruction import reconstruct
 from ..simulation import ColourSensor, Scene, simulate, srgb_to_linear
@@ -161,12 +161,48 @@ def _cache_write(cdir, key, values):
 
 
 def _pool_task(args):
-    source, config, cache_dir, workers = args
-    return evaluate_image(source, config, cache_dir, workers=workers)
+    source, config, cache_dir, workers, skip_bad = args
+    if not skip_bad:
+        return evaluate_image(source, config, cache_dir, workers=workers)
+    try:
+        return evaluate_image(source, config, cache_dir, workers=workers)
+    except (ValueError, TypeError, OSError) as exc:       # a bad image, not a bug: skipped
+        return _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
+
+
+class _Skipped(str):
+    """The reason an image was skipped (``skip_bad=True``), in place of its rows."""
+
+
+def _worker_init():
+    """Pool workers turn SIGTERM into SystemExit, so that a terminated run's cache writes
+    remove their temporary files (atomic_write cleans up on any exception)."""
+    import signal
+
+    def terminated(signum, frame):
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        raise SystemExit(128 + signum)
+
+    signal.signal(signal.SIGTERM, terminated)
+
+
+def _stop_pool(ex):
+    """Stop a process pool now: cancel what has not started, terminate the workers (they
+    clean up their temporary files, see :func:`_worker_init`), reap them."""
+    procs = list(getattr(ex, "_processes", {}).values())
+    for p in procs:
+        if p.is_alive():
+            p.terminate()
+    for p in procs:
+        p.join(timeout=10)
+        if p.is_alive():                                 # pragma: no cover - stuck in C
+            p.kill()
+            p.join(timeout=10)
+    ex.shutdown(wait=True, cancel_futures=True)
 
 
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
-             scheduler=None, progress=True, **config_kwargs):
+             scheduler=None, progress=True, skip_bad=False, **config_kwargs):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
 
     For every image the *reference path* (plain Bayer CFA, no reconstruction)
@@ -201,6 +237,22 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         same numbers.
     progress : bool
         Show a progress bar (tqdm) on stderr.
+    skip_bad : bool
+        Skip the images that cannot be evaluated (a file that does not
+        decode, a grey image, an image smaller than a pattern period or the
+        crop...): they are listed in :attr:`Results.skipped` with the reason,
+        and the others are evaluated. Default: the first one stops the run
+        with its error.
+
+    Returns
+    -------
+    Results
+
+    Notes
+    -----
+    An interrupt (Ctrl-C, or SIGTERM under the command line) stops the
+    local pool's worker processes before it propagates: no worker outlives
+    the run, and no temporary cache file is left behind.
     """
     if config is None:
         config = EvalConfig(**config_kwargs)
@@ -230,7 +282,8 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     pooled = scheduler is not None or (nproc > 1 and len(dataset) > 1)
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
     cache_dir = str(cache_dir) if cache_dir is not None else None
-    tasks = [(s, config, cache_dir, threads) for s in dataset]
+    skip_bad = check_flag(skip_bad, "skip_bad")
+    tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]
     from tqdm.auto import tqdm
     bar = tqdm(total=len(tasks), desc="evaluate", unit="img", disable=not progress)
     results = {}
@@ -244,15 +297,22 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         else:
             import multiprocessing as mp
             ctx = mp.get_context("spawn")
-            with ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx) as ex:
+            ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
+                                     initializer=_worker_init)
+            try:
                 futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
                 for f in as_completed(futs):
                     results[futs[f]] = f.result()
                     bar.update()
+            except BaseException:
+                _stop_pool(ex)              # an error or an interrupt: no orphaned worker
+                raise
+            ex.shutdown(wait=True)
     finally:
         bar.close()
-    rows = [r for n in names for r in results[n]]
-    return Results(rows, config)
+    skipped = [(n, str(results[n])) for n in names if isinstance(results[n], _Skipped)]
+    rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
+    return Results(rows, config, skipped=skipped)
 
 
 def _run_dask(tasks, scheduler, bar):

@@ -89,7 +89,9 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
     """Read a frame written by :func:`save_frame`, or a camera raw file through :func:`rgbz_fast.io.read_raw`.
 
     ``pattern`` and ``bit_depth`` are needed for a TIFF or PNG that carries
-    no rgbz-fast header; they override nothing in files that do.
+    no rgbz-fast header; they override nothing in files that do. For a raw
+    file (read by :func:`~rgbz_fast.io.read_raw` with ``raw_kwargs``),
+    ``bit_depth`` is the working bit depth it is scaled to.
     ``max_pixels`` and ``max_bytes`` bound what is read (see
     :func:`rgbz_fast.io.read_limits`): the file's size, and every array the
     file declares, checked from the headers before anything is allocated.
@@ -135,6 +137,8 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
         data = read_image(path, "path", max_pixels=limits[0], max_bytes=limits[1])
         return RawFrame(data, get_pattern(pattern), bit_depth, meta={"source": str(path)})
+    if bit_depth is not None:
+        raw_kwargs["bit_depth"] = bit_depth           # the working bit depth of a raw file
     return read_raw(path, max_pixels=limits[0], max_bytes=limits[1], **raw_kwargs)
 
 
