@@ -63,8 +63,8 @@ class _Formatter(argparse.RawDescriptionHelpFormatter):
 
     def _get_help_string(self, action):
         text = action.help or ""
-        if "default" in text or not action.option_strings or action.default in (
-                None, False, argparse.SUPPRESS):
+        if "default" in text or not action.option_strings or any(
+                action.default is v for v in (None, False, argparse.SUPPRESS)):
             return text
         return text + " (default: %(default)s)"
 
@@ -222,10 +222,11 @@ def _parser():
                    help=f"reconstruction method: {', '.join(METHODS)}")
     r.add_argument("--rgbz-pattern", default=None, choices=("mask1", "mask2", "rows"),
                    help="place this Z pattern on the CFA of a plain Bayer raw, on its own Bayer "
-                        "phase (required for a raw without Z sites)")
+                        "phase (default: none; a raw without Z sites needs one)")
     r.add_argument("--pattern", default=None,
                    help="the RGB-Z pattern of a plain 16-bit TIFF/PNG mosaic that holds Z sites "
-                        "but no rgbz-fast header (needs --bit-depth); not for camera raw")
+                        "but no rgbz-fast header, with --bit-depth (default: none; frames from "
+                        "simulate carry theirs)")
     r.add_argument("--bit-depth", type=_positive_int, default=None,
                    help="bits of a plain TIFF/PNG mosaic given with --pattern; for a raw file, "
                         "the working bit depth it is scaled to (default: 11)")
@@ -702,8 +703,7 @@ def depth_preview(res, name, summary, scale=None, truth_known=None):
     rows, cols = depth.shape
     width = 6.4
     fig, ax = plt.subplots(figsize=(width, width * rows / cols * 0.92 + 0.9))
-    cmap = matplotlib.colormaps["viridis"].copy()
-    cmap.set_bad("0.6")
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
     im = ax.imshow(np.ma.masked_where(~valid, depth), cmap=cmap, vmin=scale[0], vmax=scale[1],
                    interpolation="nearest")
     handles = [Patch(color="0.6", label="no valid depth (flagged)")]
