@@ -3,13 +3,12 @@ headers before anything is decoded, 16-bit colour PNGs at full precision, atomic
 
 from __future__ import annotations
 
-import io
 import json
 import os
-import zipfile
 
 import numpy as np
 import pytest
+from _support import frame_header, npy_bytes, write_npz
 
 import rgbz_fast as rz
 from rgbz_fast import io as rio
@@ -107,27 +106,10 @@ def test_deflate_tiff_declaring_400_megapixels_is_refused(huge_tiff, tmp_path):
         rio.read_image(huge_tiff, decode=_never, max_pixels=400_000_000)
 
 
-def _npy(shape, dtype, payload=b""):
-    b = io.BytesIO()
-    np.lib.format.write_array_header_1_0(b, {"descr": np.dtype(dtype).str,
-                                            "fortran_order": False, "shape": shape})
-    return b.getvalue() + payload
-
-
-def _header(**fields):
-    h = {"format": "rgbz-fast raw frame", "pattern": "ZR/BG", "bit_depth": 11, "meta": {}}
-    h.update(fields)
-    b = io.BytesIO()
-    np.save(b, np.array(json.dumps(h)))
-    return b.getvalue()
-
-
 def test_npz_zip_bomb_is_refused_from_the_zip_directory(tmp_path):
     """An NPZ whose members inflate beyond max_bytes fails before any inflating."""
-    path = tmp_path / "bomb.npz"
-    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
-        zf.writestr("header.npy", _header())
-        zf.writestr("data.npy", _npy((2048, 2048), np.uint16, bytes(2048 * 2048 * 2)))
+    path = write_npz(tmp_path / "bomb.npz", header=frame_header(),
+                     data=npy_bytes((2048, 2048), np.uint16, bytes(2048 * 2048 * 2)))
     assert path.stat().st_size < 20_000                   # 8 MB of zeros
     with pytest.raises(ValueError, match=r"^path: .*bomb\.npz is not a readable rgbz-fast frame "
                                          r"\(its arrays declare \d+ bytes uncompressed, more "
@@ -139,10 +121,8 @@ def test_npz_zip_bomb_is_refused_from_the_zip_directory(tmp_path):
 
 def test_npz_member_lying_about_its_shape_is_refused(tmp_path):
     """A .npy header declaring 40000 x 40000 values in a 100-byte member allocates nothing."""
-    path = tmp_path / "liar.npz"
-    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
-        zf.writestr("header.npy", _header())
-        zf.writestr("data.npy", _npy((40000, 40000), np.uint16, bytes(100)))
+    path = write_npz(tmp_path / "liar.npz", header=frame_header(),
+                     data=npy_bytes((40000, 40000), np.uint16, bytes(100)))
     with pytest.raises(ValueError, match=r"\(member data\.npy declares 3200000000 bytes of data "
                                          r"in \d+ bytes\)"):
         rio.load_frame(path)
