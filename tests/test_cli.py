@@ -360,6 +360,22 @@ def test_every_option_has_help_with_its_default_in_user_words(capsys):
             assert "default" in shown._get_help_string(action), name
         assert not banned.search(action.help), (name, action.help)
     assert "reconstruct --rgbz-pattern" in names and "depth --range" in names
+    # the developer commands parse their own options
+    import importlib
+
+    for tool in ("bench", "opcount", "tradeoff"):
+        mod = importlib.import_module(f"rgbz_fast._devtools.{tool}")
+        seen = []
+        real = mod.run_main
+        mod.run_main = lambda parser, body, argv: seen.append(parser)
+        try:
+            mod.main([])
+        finally:
+            mod.run_main = real
+        for name, action in _options(seen[0]):
+            flag = isinstance(action, (argparse._StoreTrueAction, argparse._StoreConstAction))
+            assert action.help and (flag or "default" in action.help), (tool, name)
+            assert not banned.search(action.help), (tool, name, action.help)
 
 
 def test_help_names_the_default_output_folders(capsys):

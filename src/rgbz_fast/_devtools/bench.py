@@ -692,12 +692,13 @@ def main(argv=None):
                    help="comma-separated substrings; run only the cases whose label "
                         "('reconstruct sg mask1 float32', 'demosaic', 'tof') contains one; "
                         "the ToF section runs when one is a substring of 'tof sites' "
-                        "('tof sites' alone: that section only)")
+                        "('tof sites' alone: that section only) (default: every case)")
     p.add_argument("--no-reference", action="store_true",
                    help="skip the NumPy and colour-demosaicing baselines")
     p.add_argument("--numpy-reference", default=None, metavar="FILE",
-                   help="also time the slow NumPy reference of the reconstruction from this "
-                        "file (tests/_reference/reconstruction.py of a source checkout)")
+                   help="also time the slow NumPy reference of the reconstruction: a Python "
+                        "file defining reference_reconstruct, such as the test suite's "
+                        "(default: none)")
     p.add_argument("--no-memory", action="store_true", help="skip the peak-memory subprocess")
     p.add_argument("--no-tof-sites", action="store_true",
                    help="skip the ToF section (C vs NumPy in M measurements/s)")

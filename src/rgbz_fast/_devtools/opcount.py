@@ -443,10 +443,12 @@ def main(argv=None):
                    help="comma-separated methods (default: %(default)s)")
     p.add_argument("--patterns", default="mask1,mask2",
                    help="comma-separated patterns (default: %(default)s)")
-    p.add_argument("--precision", default="float64", choices=tuple(PRECISIONS))
+    p.add_argument("--precision", default="float64", choices=tuple(PRECISIONS),
+                   help="arithmetic of the counted kernels (default: %(default)s)")
     p.add_argument("--shape", default="64x64", help="random frame size ROWSxCOLS (default "
                    "%(default)s)")
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--seed", type=int, default=0,
+                   help="seed of the random frame (default: %(default)s)")
     p.add_argument("--image", default="astronaut",
                    help="also count on a 128x128 crop of this image: a scikit-image sample "
                         "name, an image file, or 'none' (default: %(default)s)")
