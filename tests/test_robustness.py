@@ -85,6 +85,13 @@ def _sim_tof(shape=(16, 16), **tof_sensor):
                                sensor.ToFSensor(**tof_sensor), noise=False)
 
 
+def _bad_frame(id_, name, what, reason, **kw):
+    """A contract row: load_frame of the hostile NPZ ``name`` is 'not a readable frame'."""
+    return Row(f"frameio.load-{id_}", f"load_frame({what})",
+               lambda f: frameio.load_frame(f / f"{name}.npz", **kw), ValueError,
+               f"path: {{d}}/{name}.npz is not a readable rgbz-fast frame ({reason}")
+
+
 def _taps_with_sites(row):
     return rz.simulation.ToFTaps(np.zeros((1, 4, 1)), [20e6], ([row], [0]), 1, 12, [1.0],
                                  [True], [False], sensor.ToFSensor(), (4, 4))
@@ -1021,38 +1028,24 @@ ROWS = [
     R("frameio.load-fifo", "load_frame(FIFO named fifo.npz): hung",
       lambda f: frameio.load_frame(f / "fifo.npz"), ValueError,
       "path: {d}/fifo.npz is a FIFO (named pipe), not a regular file"),
-    R("frameio.load-zip-bomb", "load_frame(2 MB of zeros deflated to 2 kB, max_bytes=1e6)",
-      lambda f: frameio.load_frame(f / "bomb.npz", max_bytes=1_000_000), ValueError,
-      "path: {d}/bomb.npz is not a readable rgbz-fast frame (its arrays declare 2097"),
-    R("frameio.load-npy-liar", "load_frame(.npy header declaring 40000x40000 in 228 bytes)",
-      lambda f: frameio.load_frame(f / "liar.npz"), ValueError,
-      "path: {d}/liar.npz is not a readable rgbz-fast frame (member data.npy declares "
-      "3200000000 bytes of data in"),
-    R("frameio.load-deep-json", "load_frame(header nested 100000 deep): RecursionError",
-      lambda f: frameio.load_frame(f / "deep.npz"), ValueError,
-      "path: {d}/deep.npz is not a readable rgbz-fast frame (the header is nested too deeply)"),
-    R("frameio.load-meta-list", "load_frame(header meta=[1, 2]): AttributeError",
-      lambda f: frameio.load_frame(f / "metalist.npz"), ValueError,
-      "path: {d}/metalist.npz is not a readable rgbz-fast frame (the header field 'meta' is "
-      "[1, 2], expected an object)"),
-    R("frameio.load-tof-list", "load_frame(header tof=[1])",
-      lambda f: frameio.load_frame(f / "toflist.npz"), ValueError,
-      "path: {d}/toflist.npz is not a readable rgbz-fast frame (the header's 'tof' is a JSON "
-      "list, not an object)"),
-    R("frameio.load-header-int", "load_frame(header stored as an integer array)",
-      lambda f: frameio.load_frame(f / "hdrint.npz"), ValueError,
-      "path: {d}/hdrint.npz is not a readable rgbz-fast frame (the header is a int64 array"),
-    R("frameio.load-objects", "load_frame(data member of Python objects)",
-      lambda f: frameio.load_frame(f / "objects.npz"), ValueError,
-      "path: {d}/objects.npz is not a readable rgbz-fast frame (member data.npy holds Python "
-      "objects)"),
-    R("frameio.load-big-tile", "load_frame(4 kB NPZ, 512x512 tile): 15 s, 660 MB",
-      lambda f: frameio.load_frame(f / "bigtile.npz"), ValueError,
-      "path: {d}/bigtile.npz is not a readable rgbz-fast frame (tile: 512x512 sites, more than "
-      "the largest tile (32x32))"),
-    R("frameio.load-tof-sites", "load_frame(ToF sites outside the frame)",
-      lambda f: frameio.load_frame(f / "tofsites.npz"), ValueError,
-      "path: {d}/tofsites.npz is not a readable rgbz-fast frame (sites: rows span [1000, "),
+    _bad_frame("zip-bomb", "bomb", "2 MB of zeros deflated to 2 kB, max_bytes=1e6",
+               "its arrays declare 2097", max_bytes=1_000_000),
+    _bad_frame("npy-liar", "liar", ".npy header declaring 40000x40000 in 228 bytes",
+               "member data.npy declares 3200000000 bytes of data in"),
+    _bad_frame("deep-json", "deep", "header nested 100000 deep: was a RecursionError",
+               "the header is nested too deeply"),
+    _bad_frame("meta-list", "metalist", "header meta=[1, 2]: was an AttributeError",
+               "the header field 'meta' is [1, 2], expected an object"),
+    _bad_frame("tof-list", "toflist", "header tof=[1]",
+               "the header's 'tof' is a JSON list, not an object"),
+    _bad_frame("header-int", "hdrint", "header stored as an integer array",
+               "the header is a int64 array"),
+    _bad_frame("objects", "objects", "data member of Python objects",
+               "member data.npy holds Python objects"),
+    _bad_frame("big-tile", "bigtile", "4 kB NPZ, 512x512 tile",
+               "tile: 512x512 sites, more than the largest tile (32x32))"),
+    _bad_frame("tof-sites", "tofsites", "ToF sites outside the frame",
+               "sites: rows span [1000, "),
     R("frameio.load-max_pixels", "load_frame(16x16 frame, max_pixels=10)",
       lambda f: frameio.load_frame(f / "ok.npz", max_pixels=10), ValueError,
       "path: {d}/ok.npz declares a 16x16 image (0.0 megapixels), more than the limit of 10 "
