@@ -234,14 +234,15 @@ def crop_figure(source, config, box=None, size=64):
         box = (y0, x0, size, size)
     y0, x0, h, w = box
     ncol = len(tiles[0][1])
-    aspect = full.shape[1] / full.shape[0]
-    fig = plt.figure(figsize=(2.0 * ncol + 2.4 * aspect, 2.15 * len(tiles) + 0.4))
-    grid = fig.add_gridspec(len(tiles), ncol + 1, width_ratios=[1.25 * aspect] + [1] * ncol,
+    # the overview column: the image's aspect, but never so narrow that it shows nothing
+    wide = max(1.25 * full.shape[1] / full.shape[0], 1.4)
+    fig = plt.figure(figsize=(2.0 * (ncol + wide), 2.15 * len(tiles) + 0.4))
+    grid = fig.add_gridspec(len(tiles), ncol + 1, width_ratios=[wide] + [1] * ncol,
                             wspace=0.08, hspace=0.25)
     ax = fig.add_subplot(grid[:, 0])
     ax.imshow(full, interpolation="antialiased")
     ax.add_patch(Rectangle((x0 - 0.5, y0 - 0.5), w, h, fill=False, ec="red", lw=1.6))
-    ax.set_title(f"{source.name} (reference), crop in red", fontsize=8)
+    ax.set_title(f"{source.name} (reference)\nthe crop in red", fontsize=8)
     ax.set_xticks([])
     ax.set_yticks([])
     for i, (pname, row) in enumerate(tiles):
