@@ -118,9 +118,13 @@ static inline REAL RFN(rgbz_site_value)(const REAL *v, const rgbz_plan *p, REAL 
     REAL base = (REAL)0;
     if (p->use_cd) {
         for (int k = 0; k <= nc; k++) {
-            REAL x = OMUL((REAL)p->cd_w[k][0], v[p->cd_tap[k][0]]);
+            /* X_k = t0 + sum_m w_m (t_m - t0), the weights summing to 1: exactly t0 on a
+               flat area, so that X_0 + (c - X_k) gives back c (sum_m w_m t_m rounds X_k
+               and X_0 differently and lands an ulp off) */
+            const REAL t0 = v[p->cd_tap[k][0]];
+            REAL x = t0;
             for (int m = 1; m < p->cd_n[k]; m++)
-                x = OADD(x, OMUL((REAL)p->cd_w[k][m], v[p->cd_tap[k][m]]));
+                x = OADD(x, OMUL((REAL)p->cd_w[k][m], OSUB(v[p->cd_tap[k][m]], t0)));
             if (k < nc) c[k] = OSUB(c[k], x);
             else base = x;
         }
@@ -356,14 +360,13 @@ RGBZ_CLONES static void RFN(rgbz_site_block)(REAL (*v)[RGBZ_BLK], int n, const r
     for (int k = 0; k < nc; k++) cv[k] = c[k];
     if (p->use_cd) {
         for (int k = 0; k <= nc; k++) {
-            REAL x[RGBZ_BLK];
-            const REAL w0 = (REAL)p->cd_w[k][0];
+            REAL x[RGBZ_BLK];        /* relative to the first tap, as in rgbz_site_value */
             const REAL *restrict t0 = v[p->cd_tap[k][0]];
-            BLOOP x[j] = OMUL(w0, t0[j]);
+            BLOOP x[j] = t0[j];
             for (int m = 1; m < p->cd_n[k]; m++) {
                 const REAL wm = (REAL)p->cd_w[k][m];
                 const REAL *restrict tm = v[p->cd_tap[k][m]];
-                BLOOP x[j] = OADD(x[j], OMUL(wm, tm[j]));
+                BLOOP x[j] = OADD(x[j], OMUL(wm, OSUB(tm[j], t0[j])));
             }
             if (k < nc) {
                 BLOOP cdv[k][j] = OSUB(c[k][j], x[j]);

@@ -36,3 +36,38 @@ def load_kodak(n, crop=None):
         c0 -= c0 % 4
         img = img[r0:r0 + crop[0], c0:c0 + crop[1]]
     return np.ascontiguousarray(img)
+
+
+def npy_bytes(shape, dtype, payload=b""):
+    """An ``.npy`` member that *declares* ``shape`` and ``dtype``, followed by ``payload``
+    (which need not match: the hostile files of the robustness tests lie)."""
+    import io
+
+    b = io.BytesIO()
+    np.lib.format.write_array_header_1_0(b, {"descr": np.dtype(dtype).str,
+                                            "fortran_order": False, "shape": shape})
+    return b.getvalue() + payload
+
+
+def write_npz(path, **members):
+    """A deflated NPZ from arrays, or raw ``.npy`` bytes (see :func:`npy_bytes`)."""
+    import io
+    import zipfile
+
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
+        for name, v in members.items():
+            if not isinstance(v, bytes):
+                b = io.BytesIO()
+                np.save(b, np.asarray(v), allow_pickle=False)
+                v = b.getvalue()
+            zf.writestr(name + ".npy", v)
+    return path
+
+
+def frame_header(**fields):
+    """The JSON header of an rgbz-fast NPZ frame (Mask1, 11 bits), with ``fields`` over it."""
+    import json
+
+    h = {"format": "rgbz-fast raw frame", "pattern": "ZR/BG", "bit_depth": 11, "meta": {}}
+    h.update(fields)
+    return np.array(json.dumps(h))

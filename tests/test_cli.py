@@ -119,7 +119,7 @@ def test_evaluate_prints_table_and_writes_reports(tmp_path, capsys):
 @pytest.mark.parametrize("argv, match", [
     (["evaluate", "--methods", "nope"], "methods"),
     (["evaluate", "--dataset", "/nonexistent/folder"], "does not exist"),
-    (["evaluate", "--workers", "0"], "workers"),
+    (["evaluate", "--patterns", "mask7"], "pattern: 'mask7'"),
     (["reconstruct", "/nonexistent.npz"], "does not exist"),
     (["reconstruct", __file__, "--method", "sg"], ""),
     (["simulate", "/nonexistent.png"], "does not exist"),
@@ -151,4 +151,238 @@ def test_readme_python_examples_run(capsys):
     assert "sg" in out and "dB" in out
     aloe = shared_path("rgbd", "aloe")
     exec(compile(second.replace("../shared/data/rgbd/aloe", str(aloe)), "README.md", "exec"), ns)
-    assert "valid depth" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    # the numbers the README's text quotes
+    assert "100.0% of 22240 depth measurements valid; ground truth unknown at 3.8% of them; " \
+           "median error 4.8 mm" in out, out
+
+
+# --------------------------------------------------------------------------- issue-17 cases
+RAW_FILES = {
+    "colorchart.dng": [],
+    "halide_bayer_small.png": ["--phase", "GRBG", "--black-level", "25", "--white-level",
+                               "1023"],
+    "openisp_test.RAW": ["--shape", "1080x1920", "--phase", "RGGB", "--black-level", "0",
+                         "--bit-depth-in", "10", "--saturation-level", "1020"],
+}
+
+
+@pytest.mark.parametrize("name", sorted(RAW_FILES))
+def test_reconstruct_places_a_z_pattern_on_real_raw(name, tmp_path, capsys):
+    """The three real raw files reconstruct from the command line with --rgbz-pattern: the
+    output equals the library's to_rgbz + reconstruct, the reference is the real CFA, and
+    the Z sites are really reconstructed (not a copy of the input)."""
+    import tifffile
+
+    path = shared_path("raw", name)
+    if name.endswith(".dng"):
+        pytest.importorskip("rawpy")
+    out = tmp_path / "out"
+    assert main(["reconstruct", str(path), "--rgbz-pattern", "mask1", "--out", str(out)]
+                + RAW_FILES[name]) == 0
+    printed = capsys.readouterr().out
+    assert "CFA PSNR at the Z sites" in printed and " dB" in printed
+    stem = path.stem
+    cfa = tifffile.imread(out / f"{stem}_mask1_sg_cfa.tif")
+    ref = tifffile.imread(out / f"{stem}_mask1_reference_cfa.tif")
+    opts = {"--phase": "phase", "--black-level": "black_level", "--white-level": "white_level",
+            "--shape": "shape", "--bit-depth-in": "bit_depth_in",
+            "--saturation-level": "clip_level"}
+    args = RAW_FILES[name]
+    kw = {opts[k]: v for k, v in zip(args[::2], args[1::2])}
+    if "shape" in kw:
+        kw["shape"] = tuple(int(v) for v in kw["shape"].split("x"))
+    for k in ("black_level", "white_level", "bit_depth_in", "clip_level"):
+        if k in kw:
+            kw[k] = float(kw[k]) if k != "bit_depth_in" else int(kw[k])
+    rgbz, want_ref = frameio.to_rgbz(frameio.read_raw(path, **kw), "mask1")
+    np.testing.assert_array_equal(ref, want_ref)
+    np.testing.assert_array_equal(cfa, rz.reconstruct(rgbz, "sg"))
+    z = rgbz.z_mask
+    assert np.array_equal(cfa[~z], ref[~z]) and not np.array_equal(cfa[z], rgbz.data[z])
+
+
+def test_raw_options_file_and_cli_words(tmp_path, capsys):
+    """--raw-options gives what a file lacks; a missing option is asked for as a flag."""
+    path = shared_path("raw", "openisp_test.RAW")
+    assert main(["reconstruct", str(path), "--rgbz-pattern", "mask2", "--out", str(tmp_path),
+                 "--quiet", "--raw-options", str(REPO / "data" / "shared_raw_options.json")]) == 0
+    assert (tmp_path / "openisp_test_mask2_sg_cfa.tif").exists()
+    assert main(["reconstruct", str(path), "--rgbz-pattern", "mask2", "--out", str(tmp_path),
+                 "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.strip() == ("rgbz-fast reconstruct: error: shape: the headerless file "
+                           "openisp_test.RAW needs --shape ROWSxCOLS")
+
+
+def test_plain_bayer_frame_is_not_copied_silently(tmp_path, capsys):
+    """`reconstruct colorchart.dng` wrote a TIFF identical to its Bayer input; now it says why
+    there is nothing to reconstruct, and writes nothing."""
+    import tifffile
+
+    bayer = tmp_path / "bayer.tif"
+    tifffile.imwrite(bayer, np.full((8, 8), 100, np.uint16))
+    out = tmp_path / "out"
+    assert main(["reconstruct", str(bayer), "--phase", "RGGB", "--black-level", "0",
+                 "--white-level", "1023", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("rgbz-fast reconstruct: error: --rgbz-pattern: ") and \
+        "is a plain Bayer frame (bayer_rggb, no Z sites)" in err
+    assert not out.exists()
+    frame = tmp_path / "f.npz"
+    frameio.save_frame(frame, rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
+    assert main(["reconstruct", str(frame), "--rgbz-pattern", "mask1", "--out", str(out)]) == 2
+    assert "already has Z sites" in capsys.readouterr().err
+    assert main(["reconstruct", str(frame), "--phase", "RGGB", "--out", str(out)]) == 2
+    assert "--phase: " in capsys.readouterr().err and not out.exists()
+
+
+def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
+    """`reconstruct x/f.npz y/f.npz` into one --out overwrote the first result silently."""
+    for sub in ("x", "y"):
+        (tmp_path / sub).mkdir()
+        frameio.save_frame(tmp_path / sub / "f.npz", rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
+    out = tmp_path / "out"
+    assert main(["reconstruct", str(tmp_path / "x" / "f.npz"), str(tmp_path / "y" / "f.npz"),
+                 "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("rgbz-fast reconstruct: error: --out: ") and "would both write" in err
+    assert not out.exists()
+
+
+def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
+    """--pattern ZR/BG created OUT/scene_ZR/BG.npz (a nested folder); a failed simulate left
+    an empty --out."""
+    import imageio.v3 as iio
+
+    img = tmp_path / "s.png"
+    iio.imwrite(img, np.random.default_rng(0).integers(0, 256, (16, 16, 3), dtype=np.uint8))
+    out = tmp_path / "out"
+    assert main(["simulate", str(img), "--pattern", "ZR/BG", "--out", str(out), "--quiet"]) == 0
+    assert sorted(p.name for p in out.iterdir()) == ["s_ZR-BG.npz"]
+    assert frameio.load_frame(out / "s_ZR-BG.npz").pattern == rz.Pattern("ZR/BG")
+    grey = tmp_path / "g.png"
+    iio.imwrite(grey, np.arange(256, dtype=np.uint8).reshape(16, 16))
+    out2 = tmp_path / "out2" / "deeper"
+    assert main(["simulate", str(grey), "--out", str(out2), "--quiet"]) == 2
+    assert "is a grey image" in capsys.readouterr().err
+    assert not (tmp_path / "out2").exists()
+    assert main(["simulate", str(grey), "--grey", "--out", str(out2), "--quiet"]) == 0
+    assert (out2 / "g_mask1.npz").exists()
+
+
+def test_depth_subcommand_writes_depth_flags_and_preview(tmp_path, capsys):
+    import imageio.v3 as iio
+    import tifffile
+
+    aloe = shared_path("rgbd", "aloe")
+    frames = tmp_path / "frames"
+    assert main(["simulate", str(aloe), "--pattern", "mask2", "--seed", "1", "--out",
+                 str(frames), "--quiet"]) == 0
+    out = tmp_path / "depth"
+    assert main(["depth", str(frames / "aloe_mask2.npz"), "--out", str(out)]) == 0
+    line = capsys.readouterr().out
+    assert "% valid; ground truth unknown at 3.8 % of them" in line
+    frame = frameio.load_frame(frames / "aloe_mask2.npz")
+    res = rz.tof_depth(frame.tof)
+    depth = tifffile.imread(out / "aloe_mask2_depth.tif")
+    assert depth.dtype == np.float32 and depth.shape == frame.shape
+    np.testing.assert_array_equal(depth, res.depth_map().astype(np.float32))   # NaN: no depth
+    assert np.isnan(depth[~frame.z_mask]).all()
+    with tifffile.TiffFile(out / "aloe_mask2_depth.tif") as tf:
+        meta = json.loads(tf.pages[0].description)
+    assert meta["unit"] == "m" and 0.03 < meta["truth_unknown_fraction"] < 0.04
+    flags = iio.imread(out / "aloe_mask2_depth_flags.png")
+    assert flags.dtype == np.uint8 and set(np.unique(flags)) <= {0, 1, 2, 3, 4, 5, 6, 7, 255}
+    z = frame.z_mask
+    assert np.all(flags[~z] == 255) and np.mean(flags[z] == 0) > 0.99   # 255: no measurement
+    preview = iio.imread(out / "aloe_mask2_depth.png")
+    assert preview.dtype == np.uint8 and preview.ndim == 3 and preview.shape[0] > 300
+    no_taps = tmp_path / "plain.npz"
+    frameio.save_frame(no_taps, rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
+    assert main(["depth", str(no_taps), "--out", str(out)]) == 2
+    assert "holds no ToF taps" in capsys.readouterr().err
+
+
+def test_evaluate_skip_bad_and_limit(tmp_path, capsys):
+    import imageio.v3 as iio
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "a.png", np.random.default_rng(0).integers(0, 256, (32, 32, 3),
+                                                                 dtype=np.uint8))
+    (ds / "b.png").write_bytes(b"not a png")
+    iio.imwrite(ds / "c.png", np.zeros((32, 32), np.uint8))            # grey
+    base = ["evaluate", "--dataset", str(ds), "--metrics", "cfa_psnr", "--methods", "sg",
+            "--patterns", "mask1", "--processes", "1", "--no-cache", "--out",
+            str(tmp_path / "o"), "--quiet"]
+    assert main(base) == 2
+    assert "dataset: cannot read" in capsys.readouterr().err
+    assert main(base + ["--skip-bad"]) == 0
+    cap = capsys.readouterr()
+    skipped = [line for line in cap.err.splitlines() if "skipped" in line]
+    assert len(skipped) == 2 and "skipped b: dataset: cannot read" in skipped[0]
+    assert "skipped c: dataset: " in skipped[1] and "--grey" in skipped[1]
+    assert "Skipped 2 image(s)" in (tmp_path / "o" / "summary.md").read_text()
+    for bad in ("0", "-1"):
+        with pytest.raises(SystemExit):
+            main(base + ["--limit", bad])
+        assert "argument --limit: expected a positive integer" in capsys.readouterr().err
+
+
+def _options(parser):
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield from ((f"{name} {o}", a) for o, a in _options(sub))
+        elif action.option_strings and action.dest not in ("help", "version"):
+            yield action.option_strings[-1], action
+
+
+def test_every_option_has_help_with_its_default_in_user_words(capsys):
+    """Help text and its default for every option; no source-tree, Python or tracker words."""
+    import argparse
+
+    from rgbz_fast._cli import _Formatter, _parser
+
+    ap = _parser()
+    banned = re.compile(r"rgbz_fast\.|\.py\b|docs/|csrc|tests/|\bissue\b|\bB\d+\b|=\)",
+                        re.IGNORECASE)
+    shown = _Formatter("rgbz-fast")
+    names = []
+    for name, action in _options(ap):
+        names.append(name)
+        assert action.help and len(action.help) > 10, name
+        flag = isinstance(action, (argparse._StoreTrueAction, argparse._StoreConstAction))
+        if not flag:
+            assert "default" in shown._get_help_string(action), name
+        assert not banned.search(action.help), (name, action.help)
+    assert "reconstruct --rgbz-pattern" in names and "depth --range" in names
+    # the developer commands parse their own options
+    import importlib
+
+    for tool in ("bench", "opcount", "tradeoff"):
+        mod = importlib.import_module(f"rgbz_fast._devtools.{tool}")
+        seen = []
+        real = mod.run_main
+        mod.run_main = lambda parser, body, argv: seen.append(parser)
+        try:
+            mod.main([])
+        finally:
+            mod.run_main = real
+        for name, action in _options(seen[0]):
+            flag = isinstance(action, (argparse._StoreTrueAction, argparse._StoreConstAction))
+            assert action.help and (flag or "default" in action.help), (tool, name)
+            assert not banned.search(action.help), (tool, name, action.help)
+
+
+def test_help_names_the_default_output_folders(capsys):
+    readme = (REPO / "README.md").read_text()
+    for cmd, folder in (("simulate", "rgbz_frames"), ("reconstruct", "rgbz_out"),
+                        ("depth", "rgbz_depth"), ("evaluate", "rgbz_results")):
+        with pytest.raises(SystemExit):
+            main([cmd, "--help"])
+        assert f"(default: {folder})" in capsys.readouterr().out
+        assert folder in readme, folder

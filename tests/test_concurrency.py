@@ -15,6 +15,7 @@ import subprocess
 import sys
 import threading
 import time
+import textwrap
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -249,3 +250,38 @@ def test_kernel_thread_count_is_reported():
     """workers=None runs on every core; the build says whether OpenMP is on."""
     assert isinstance(_kernels.have_openmp(), bool)
     assert _kernels.max_threads() >= 1
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v and /proc: Linux")
+def test_too_many_threads_for_the_address_space_is_a_clear_error():
+    """Under ``ulimit -v 4000000`` libgomp aborted the process at workers=512 ("Thread creation
+    failed"); now check_workers refuses beyond the bound the limit leaves, and a count within
+    it runs."""
+    import resource
+
+    code = textwrap.dedent("""
+        import sys, numpy as np, rgbz_fast as rz
+        a = np.zeros((600, 600), np.uint16)
+        try:
+            rz.reconstruct(a, "sg", pattern="mask1", workers=int(sys.argv[1]))
+            print("ran")
+        except ValueError as exc:
+            print(exc)
+    """)
+
+    def limited():
+        resource.setrlimit(resource.RLIMIT_AS, (4_000_000 * 1024, 4_000_000 * 1024))
+        resource.setrlimit(resource.RLIMIT_STACK, (8 * 2**20, 8 * 2**20))
+
+    def run(workers):
+        r = subprocess.run([sys.executable, "-c", code, str(workers)], capture_output=True,
+                           text=True, timeout=300, preexec_fn=limited)
+        assert r.returncode == 0, r.stderr[-500:]          # no abort
+        return r.stdout.strip()
+
+    out = run(512)
+    assert out.startswith("workers: 512 threads cannot be started here (the address-space "
+                          "limit, ulimit -v 4000000 kB, leaves room for "), out
+    n = int(out.rsplit(" ", 1)[1])
+    assert 100 < n < 512
+    assert run(n) == "ran"

@@ -173,3 +173,50 @@ def test_read_only_input_accepted_and_not_modified():
     before = data.copy()
     out = rz.reconstruct(data, "sg", pattern="mask2")
     assert np.array_equal(data, before) and out.flags.writeable
+
+
+def test_rawframe_owns_its_data():
+    """Writes to the caller's arrays after construction cannot reach the frame (NaN, 1e9)."""
+    a = np.zeros((8, 8))
+    ref = np.zeros((8, 8))
+    f = rz.RawFrame(a, "mask1", reference=ref)
+    a[1, 1], a[0, 1], ref[0, 0] = np.nan, 1e9, 1e9
+    assert not np.shares_memory(f.data, a) and not np.shares_memory(f.reference, ref)
+    assert not f.data.flags.writeable and not f.reference.flags.writeable
+    assert f.data.flags.c_contiguous
+    np.testing.assert_array_equal(rz.reconstruct(f, "sg"), np.zeros((8, 8)))
+    assert f.reference.max() == 0
+    with pytest.raises(ValueError, match="read-only"):
+        f.data[0, 0] = 5
+    # a Fortran-ordered or strided input is stored C-contiguous, with the same values
+    g = rz.RawFrame(np.asfortranarray(np.arange(64, dtype=np.uint16).reshape(8, 8)), "mask1")
+    assert g.data.flags.c_contiguous and g.data[0, 3] == 3
+
+
+def test_tof_taps_own_their_arrays():
+    """ToFTaps copies what it is given: the caller's arrays keep their flags and values."""
+    from rgbz_fast._frame import ToFTaps
+    from rgbz_fast.simulation import ToFSensor
+
+    taps = np.ones((1, 4, 2), np.uint16)
+    depth, valid, sat = np.ones(2), np.ones(2, bool), np.zeros(2, bool)
+    t = ToFTaps(taps, [20e6], (np.array([0, 2]), np.array([0, 0])), 1, 12, depth, valid, sat,
+                ToFSensor(), (4, 4))
+    taps[...] = 9
+    depth[...] = -1
+    assert taps.flags.writeable and depth.flags.writeable    # not frozen behind the caller
+    assert t.taps.max() == 1 and t.depth_true.min() == 1
+    assert not (t.taps.flags.writeable or t.valid.flags.writeable)
+
+
+@pytest.mark.parametrize("dtype, width", [(np.uint8, 8), (np.uint16, 16), (np.int32, 31),
+                                          (np.bool_, 1)])
+def test_mosaic_input_bits_within_the_dtype(dtype, width):
+    """input_bits beyond the dtype's width scaled every value to ~0 (100: an all-zero frame)."""
+    img = np.ones((4, 4, 3), dtype)
+    assert rz.mosaic(img, "bayer", input_bits=width).data.max() == round(2047 / (2**width - 1))
+    for bad in (0, width + 1, 100, 2000):
+        with pytest.raises(ValueError, match=f"^input_bits: expected 1..{width} bits for "):
+            rz.mosaic(img, "bayer", input_bits=bad)
+    with pytest.raises(ValueError, match="^input_bits: applies to integer input only"):
+        rz.mosaic(np.zeros((4, 4, 3)), "bayer", input_bits=8)

@@ -16,13 +16,22 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
-    "R", "G", "B", "Z", "CHANNELS", "BAYER_PHASES",
+    "R", "G", "B", "Z", "CHANNELS", "BAYER_PHASES", "MAX_PERIOD",
     "Pattern", "bayer", "mask1", "mask2", "rows", "get_pattern",
 ]
 
 R, G, B, Z = 0, 1, 2, 3
 CHANNELS = "RGBZ"
 BAYER_PHASES = ("GRBG", "RGGB", "BGGR", "GBRG")
+#: the largest tile, in rows and in columns. The paper's patterns repeat every 6 rows or
+#: fewer; each Z site of a tile costs a reconstruction plan (a 256x256 tile: 7 s, 200 MB).
+MAX_PERIOD = 32
+
+
+def _check_period(rows_, cols):
+    if rows_ > MAX_PERIOD or cols > MAX_PERIOD:
+        raise ValueError(f"tile: {rows_}x{cols} sites, more than the largest tile "
+                         f"({MAX_PERIOD}x{MAX_PERIOD})")
 
 
 def _bayer_tile(phase):
@@ -43,6 +52,7 @@ def _parse_tile(tile):
         if not text or any(len(r) == 0 for r in rows_):
             raise ValueError(f"tile: empty row in {tile!r}; expected rows such as 'ZR/BG'")
         widths = {len(r) for r in rows_}
+        _check_period(len(rows_), max(widths))
         if len(widths) != 1:
             raise ValueError(f"tile: ragged rows {rows_} (lengths {sorted(widths)}); "
                              "every row must have the same length")
@@ -58,6 +68,7 @@ def _parse_tile(tile):
                              f"got shape {arr.shape}")
         if not np.issubdtype(arr.dtype, np.integer):
             raise TypeError(f"tile: expected integer channel codes, got dtype {arr.dtype}")
+        _check_period(*arr.shape)
         if arr.min() < 0 or arr.max() > 3:
             raise ValueError("tile: channel codes must be 0 (R), 1 (G), 2 (B) or 3 (Z)")
         arr = arr.astype(np.int8)

@@ -25,7 +25,7 @@ REFERENCE = Path(__file__).resolve().parents[1] / "_reference" / "reconstruction
 
 def test_bench_quick_json(capsys, tmp_path):
     # the slow NumPy reference belongs to the tests: the bench times it only when given
-    rc = bench.main(["--quick", "--json", "--quiet", "--repeat", "1", "--shape", "64x48",
+    rc = bench.main(["--quick", "--json", "--quiet", "--repeat", "1", "--shape", "48x64",
                      "--kernels", "sg mask1,bilinear mask2 float32,demosaic,tof",
                      "--no-memory", "--out", str(tmp_path), "--numpy-reference",
                      str(REFERENCE)])
@@ -68,7 +68,7 @@ def test_bench_quick_json(capsys, tmp_path):
 
 
 def test_bench_colour_chain_section(capsys):
-    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "64x48",
+    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "48x64",
                        "--kernels", "demosaic malvar2004 bayer float32", "--no-memory",
                        "--no-reference", "--chain", "--json"]) == 0
     res = json.loads(capsys.readouterr().out)
@@ -99,7 +99,7 @@ def test_measure_memory_tiny_frame():
 def test_bench_table_and_opencv_optional(capsys, monkeypatch, tmp_path):
     monkeypatch.setitem(__import__("sys").modules, "cv2", None)     # import cv2 -> ImportError
     monkeypatch.chdir(tmp_path)      # no reference is looked for in the current directory
-    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "64x48",
+    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "48x64",
                        "--kernels", "bilinear mask1 float64", "--no-memory"]) == 0
     out = capsys.readouterr().out
     assert "reconstruct bilinear" in out and "n/a" in out
@@ -117,7 +117,7 @@ def test_bench_numpy_reference_must_be_a_reference(capsys, tmp_path):
 
 
 @pytest.mark.parametrize("args,msg", [
-    (["--shape", "63x48"], "--shape"),
+    (["--shape", "48x63"], "--shape"), (["--shape", "64x48"], "--shape"),
     (["--repeat", "0"], "--repeat"),
     (["--kernels", "nothing-matches"], "--kernels"),
     (["--workers", "0"], "--workers"),

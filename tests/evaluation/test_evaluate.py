@@ -97,7 +97,7 @@ def test_interrupted_run_resumes(tiny_dataset, tmp_path, monkeypatch):
                     methods=("sg",))
     monkeypatch.setattr(mod, "evaluate_image", real)
     done = {p.parent.name for p in cache.rglob("*.json")}
-    assert done == set(seen)
+    assert done == {mod.cache_folder(n) for n in seen}
     full = ev.evaluate(ds, cache_dir=cache, processes=1, progress=False, metrics=("cfa_psnr",),
                        methods=("sg",))
     fresh = ev.evaluate(ds, processes=1, progress=False, metrics=("cfa_psnr",), methods=("sg",))
@@ -138,7 +138,9 @@ def test_reports_written(tiny_dataset, tmp_path):
     files = ev.write_reports(res, tmp_path / "rep", crop_source=ds[0])
     names = {f.name for f in files}
     assert {"results.csv", "results.json", "summary.md", "table_astro.md",
-            "bars_cfa_psnr.png", "bars_zipper.png", "crops_astro.png"} <= names
+            "bars_cfa_psnr.png", "bars_zipper.png", "paired_cfa_psnr.png", "paired_zipper.png",
+            "crops_astro.png"} <= names
+    assert "Paired differences to bilinear" in (tmp_path / "rep" / "summary.md").read_text()
     for f in files:
         if f.suffix == ".png":
             assert f.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and f.stat().st_size > 5000
@@ -183,3 +185,68 @@ def test_bad_dataset(tmp_path):
         rio.folder_dataset(tmp_path / "missing")
     with pytest.raises(ValueError, match="^dataset: no image files"):
         rio.folder_dataset(tmp_path)
+
+
+def test_cache_follows_the_image_content_and_exact_name(tmp_path):
+    """A changed image is recomputed (the key holds its SHA-256), and names that sanitise
+    alike ("a b", "a_b") get separate cache folders."""
+    import imageio.v3 as iio
+
+    folder = tmp_path / "imgs"
+    folder.mkdir()
+    rng = np.random.default_rng(0)
+    for name in ("a b.png", "a_b.png"):
+        iio.imwrite(folder / name, rng.integers(0, 256, (32, 32, 3), dtype=np.uint8))
+    kw = dict(cache_dir=tmp_path / "cache", processes=1, progress=False,
+              metrics=("cfa_psnr",), methods=("sg",), patterns=("mask1",))
+    first = ev.evaluate(rio.folder_dataset(folder), **kw)
+    a, b = (first.values("mask1", "sg", "cfa_psnr"))
+    assert a != b                                    # two images, two results
+    assert len({p.parent for p in (tmp_path / "cache").rglob("*.json")}) == 2
+    iio.imwrite(folder / "a b.png", np.full((32, 32, 3), 128, np.uint8))   # flat: exact
+    second = ev.evaluate(rio.folder_dataset(folder), **kw)
+    fresh = ev.evaluate(rio.folder_dataset(folder), processes=1, progress=False,
+                        metrics=("cfa_psnr",), methods=("sg",), patterns=("mask1",))
+    assert second.rows == fresh.rows and second.rows != first.rows
+    assert second.values("mask1", "sg", "cfa_psnr")[0] == np.inf
+
+
+def test_figures_show_every_error_bar_and_hide_nothing(tiny_dataset):
+    """The y axis spans every whisker (the old bars were cut off at the top), the legend sits
+    outside the plot, and the paired chart shows each image's difference and zero."""
+    from rgbz_fast.evaluation import _reports
+
+    res = ev.evaluate(rio.folder_dataset(tiny_dataset), processes=1, progress=False, **FAST)
+    s = res.summary()
+    for k in FAST["metrics"]:
+        fig = _reports._bar_figure(res, k)
+        ax = fig.axes[0]
+        lo, hi = ax.get_ylim()
+        for (p, m, kk), (mean, std, _) in s.items():
+            if kk == k:
+                assert lo < mean - std and mean + std < hi, (p, m, k)
+        fig.canvas.draw()
+        legend = ax.get_legend().get_window_extent()
+        assert legend.x0 >= ax.get_window_extent().x1            # beside, not over, the data
+        fig = _reports._paired_figure(res, k)
+        lo, hi = fig.axes[0].get_ylim()
+        for p in FAST["patterns"]:
+            diffs, mean, ci_lo, ci_hi = res.paired(p, "sg", k)
+            assert diffs.size == 3 and lo < min(diffs.min(), ci_lo, 0) and \
+                max(diffs.max(), ci_hi, 0) < hi
+        import matplotlib.pyplot as plt
+        plt.close("all")
+
+
+def test_paired_differences_are_per_image():
+    rows = [{"image": i, "pattern": "mask1", "method": m, "metric": "cpsnr", "value": v}
+            for i, (a, b) in enumerate([(30.0, 31.0), (20.0, 21.2), (40.0, 40.8)])
+            for m, v in (("bilinear", a), ("sg", b))]
+    res = ev.Results(rows, ev.EvalConfig(methods=("bilinear", "sg"), metrics=("cpsnr",),
+                                         patterns=("mask1",)))
+    diffs, mean, lo, hi = res.paired("mask1", "sg", "cpsnr")
+    np.testing.assert_allclose(diffs, [1.0, 1.2, 0.8])
+    from scipy import stats
+    half = stats.t.ppf(0.975, 2) * np.std([1.0, 1.2, 0.8], ddof=1) / np.sqrt(3)
+    assert mean == pytest.approx(1.0) and (lo, hi) == pytest.approx((1 - half, 1 + half))
+    assert lo > 0                     # sure, although the images spread over 20 dB

@@ -184,7 +184,7 @@ def test_load_image_errors(tmp_path):
     with pytest.raises(FileNotFoundError, match="nope.png"):
         load_image(tmp_path / "nope.png")
     iio.imwrite(tmp_path / "grey.png", np.zeros((4, 4), np.uint8))
-    with pytest.raises(ValueError, match="RGB"):
+    with pytest.raises(ValueError, match="is a grey image"):
         load_image(tmp_path / "grey.png")
     (tmp_path / "junk.png").write_bytes(b"not an image")
     with pytest.raises(ValueError, match="junk.png"):

@@ -80,7 +80,8 @@ def common_parser(prog, description):
     p.add_argument("--workers", type=int, default=None,
                    help="threads of the 'all threads' runs (default: all cores)")
     p.add_argument("--out", metavar="DIR", default=None,
-                   help="also write the report (and JSON, plots) into DIR")
+                   help="also write the report (and JSON, plots) into DIR (default: print "
+                        "only)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     return p
 

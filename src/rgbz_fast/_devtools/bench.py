@@ -1,7 +1,7 @@
 """``rgbz-fast bench``: speed of every C kernel, beside OpenCV and the NumPy references.
 
 Self-contained: the frame is scikit-image's astronaut (bundled with
-scikit-image) mirrored and tiled up to 4000x3000, mosaicked to 11-bit uint16 on
+scikit-image) mirrored and tiled up to 3000x4000 (rows x cols), mosaicked to 11-bit uint16 on
 each pattern. For every kernel (each reconstruction method x pattern x
 precision, the Malvar 2004 demosaic, ToF demodulation and unwrapping) it
 reports the speed in **frame** megapixels per second (all pixels of the frame
@@ -20,7 +20,7 @@ calls (after one warm-up call), with 1 thread and with all threads. Beside it:
   The Malvar demosaic is compared with colour-demosaicing's NumPy/SciPy
   implementation and the demodulation with a NumPy one-liner.
 * ToF section: demodulation + unwrapping of the Z measurements of a Mask1
-  frame of that size (3 million at 4000x3000; 3 frequencies x 4 taps,
+  frame of that size (3 million at 3000x4000; 3 frequencies x 4 taps,
   synthetic 11-bit taps of depths in [0.3, 7] m) in million measurements
   per second: the fused C kernel (``tof_isp.demodulate_unwrap``) with 1
   thread and all threads beside the vectorised NumPy implementation of the
@@ -54,6 +54,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import parse_shape
 from ._common import (CliError, check_out_dir, check_workers_arg, common_parser,
                          machine_info, progress, run_main, tile_to, write_json)
 
@@ -564,8 +565,9 @@ def _f(v, nd=1):
 def format_table(res):
     """The human-readable report of :func:`run_benchmarks`'s result."""
     m = res["machine"]
-    lines = [f"rgbz-fast {m.get('rgbz_fast', '?')} bench: frame {res['frame']['shape'][1]}x"
-             f"{res['frame']['shape'][0]} ({res['frame']['pixels'] / 1e6:.1f} Mpix, uint16 11-bit),"
+    lines = [f"rgbz-fast {m.get('rgbz_fast', '?')} bench: frame {res['frame']['shape'][0]}x"
+             f"{res['frame']['shape'][1]} (rows x cols, {res['frame']['pixels'] / 1e6:.1f} Mpix, "
+             "uint16 11-bit),"
              f" median [IQR] of {res['repeat']} runs, Mpix/s = frame pixels / s",
              f"machine: {m['cpu_model']}, {m['logical_cores']} logical cores "
              f"({m.get('usable_cores')} usable), OpenMP {m.get('openmp')}, "
@@ -635,7 +637,7 @@ def format_table(res):
 def format_tof(tof):
     """The ToF section of the report (C vs NumPy, million measurements per second)."""
     lines = [f"ToF: demodulation + unwrapping of the {tof['n_sites']:,} Z measurements of a "
-             f"{tof['frame_shape'][1]}x{tof['frame_shape'][0]} {tof['pattern']} frame "
+             f"{tof['frame_shape'][0]}x{tof['frame_shape'][1]} {tof['pattern']} frame "
              f"({len(tof['frequencies'])} frequencies x 4 taps, uint16), median [IQR] of "
              f"{tof['repeat']} runs, M measurements/s (timed in turn in one loop)"]
     rows = [("C fused, 1 thread", tof["c_1"]), (f"C fused, {tof['workers']} threads",
@@ -658,7 +660,7 @@ def format_tof(tof):
 
 def format_chain(ch):
     """The colour-chain section: seconds per stage."""
-    lines = [f"colour chain: ColourISP on a {ch['frame_shape'][1]}x{ch['frame_shape'][0]} "
+    lines = [f"colour chain: ColourISP on a {ch['frame_shape'][0]}x{ch['frame_shape'][1]} "
              f"{ch['pattern']} frame ({ch['reconstruction']} {ch['precision']}, "
              f"{ch['demosaic']}, {ch['workers']} threads), median of {ch['repeat']} runs: "
              f"{ch['total_s']:.3f} s in all"]
@@ -672,12 +674,9 @@ def _load(v):
 
 
 def _parse_shape(s):
-    try:
-        w, h = (int(x) for x in s.lower().split("x"))
-    except ValueError:
-        raise CliError(f"--shape: expected WIDTHxHEIGHT such as 4000x3000, got {s!r}") from None
+    h, w = parse_shape(s)
     if w < 24 or h < 24 or w % 4 or h % 12:
-        raise CliError(f"--shape: width must be a multiple of 4 and height of 12 (the pattern "
+        raise CliError(f"--shape: rows must be a multiple of 12 and columns of 4 (the pattern "
                        f"periods), both >= 24; got {s!r}")
     return (h, w)
 
@@ -687,18 +686,19 @@ def main(argv=None):
     p = common_parser("rgbz-fast bench", __doc__)
     p.add_argument("--repeat", type=int, default=None, help="timed runs per case (default 5, "
                    "--quick 3)")
-    p.add_argument("--shape", default=None, help="frame WIDTHxHEIGHT (default 4000x3000, "
-                   "--quick 256x192)")
+    p.add_argument("--shape", default=None, help="frame size ROWSxCOLS (default 3000x4000, "
+                   "with --quick 192x256)")
     p.add_argument("--kernels", default=None,
                    help="comma-separated substrings; run only the cases whose label "
                         "('reconstruct sg mask1 float32', 'demosaic', 'tof') contains one; "
                         "the ToF section runs when one is a substring of 'tof sites' "
-                        "('tof sites' alone: that section only)")
+                        "('tof sites' alone: that section only) (default: every case)")
     p.add_argument("--no-reference", action="store_true",
                    help="skip the NumPy and colour-demosaicing baselines")
     p.add_argument("--numpy-reference", default=None, metavar="FILE",
-                   help="also time the slow NumPy reference of the reconstruction from this "
-                        "file (tests/_reference/reconstruction.py of a source checkout)")
+                   help="also time the slow NumPy reference of the reconstruction: a Python "
+                        "file defining reference_reconstruct, such as the test suite's "
+                        "(default: none)")
     p.add_argument("--no-memory", action="store_true", help="skip the peak-memory subprocess")
     p.add_argument("--no-tof-sites", action="store_true",
                    help="skip the ToF section (C vs NumPy in M measurements/s)")

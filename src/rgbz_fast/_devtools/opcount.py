@@ -37,6 +37,7 @@ import numpy as np
 from .. import _kernels
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
+from .._validate import parse_shape
 from ..reconstruction import PRECISIONS, ReconstructParams, reconstruct
 from ..reconstruction import _reconstruct as _recon
 from ..reconstruction._plans import build_plans
@@ -442,21 +443,19 @@ def main(argv=None):
                    help="comma-separated methods (default: %(default)s)")
     p.add_argument("--patterns", default="mask1,mask2",
                    help="comma-separated patterns (default: %(default)s)")
-    p.add_argument("--precision", default="float64", choices=tuple(PRECISIONS))
-    p.add_argument("--shape", default="64x64", help="random frame ROWSxCOLS (default %(default)s)")
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--precision", default="float64", choices=tuple(PRECISIONS),
+                   help="arithmetic of the counted kernels (default: %(default)s)")
+    p.add_argument("--shape", default="64x64", help="random frame size ROWSxCOLS (default "
+                   "%(default)s)")
+    p.add_argument("--seed", type=int, default=0,
+                   help="seed of the random frame (default: %(default)s)")
     p.add_argument("--image", default="astronaut",
                    help="also count on a 128x128 crop of this image: a scikit-image sample "
                         "name, an image file, or 'none' (default: %(default)s)")
     p.add_argument("--text", action="store_true", help="plain-text table instead of Markdown")
 
     def body(args):
-        try:
-            shape = tuple(int(s) for s in args.shape.lower().split("x"))
-            if len(shape) != 2:
-                raise ValueError
-        except ValueError:
-            raise CliError(f"--shape: expected ROWSxCOLS, got {args.shape!r}") from None
+        shape = parse_shape(args.shape)
         if args.quick:
             shape = (32, 32)
         out = check_out_dir(args.out)

@@ -318,10 +318,13 @@ def main(argv=None):
     p.add_argument("--dataset", default=None, metavar="DIR",
                    help="folder of images (e.g. ../shared/data/kodak); default: scikit-image "
                         "sample images")
-    p.add_argument("--limit", type=int, default=None, help="use the first N images only")
+    p.add_argument("--limit", type=int, default=None,
+                   help="use the first N images only (default: all)")
     p.add_argument("--repeat", type=int, default=None, help="timed runs (default 5, quick 2)")
-    p.add_argument("--methods", default=",".join(METHODS))
-    p.add_argument("--patterns", default=",".join(PATTERNS))
+    p.add_argument("--methods", default=",".join(METHODS),
+                   help="comma-separated methods (default: %(default)s)")
+    p.add_argument("--patterns", default=",".join(PATTERNS),
+                   help="comma-separated patterns (default: %(default)s)")
 
     def body(args):
         workers = check_workers_arg(args.workers)

@@ -9,10 +9,10 @@ Markdown tables and figures.
 
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, IMAGE_METRICS, METHOD_LABELS,
                       METRIC_LABELS, PAPER_TABLE3, EvalConfig)
-from ._reports import bar_chart, crop_figure, write_reports
+from ._reports import bar_chart, crop_figure, paired_chart, write_reports
 from ._results import Results
 from ._run import evaluate, evaluate_image, image_frames
 
 __all__ = ["EvalConfig", "evaluate", "evaluate_image", "image_frames", "Results",
-           "write_reports", "bar_chart", "crop_figure", "PAPER_TABLE3", "IMAGE_METRICS",
-           "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER"]
+           "write_reports", "bar_chart", "paired_chart", "crop_figure", "PAPER_TABLE3",
+           "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER"]

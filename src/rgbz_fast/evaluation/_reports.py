@@ -14,14 +14,17 @@ from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS
 from ._results import Results
 from ._run import _safe, image_frames
 
-__all__ = ["write_reports", "bar_chart", "crop_figure"]
+__all__ = ["write_reports", "bar_chart", "paired_chart", "crop_figure"]
 
 
 def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_box=None,
                   plots=True):
     """Write results.csv, results.json, summary.md, a per-image table and the figures.
 
-    Returns the list of files written. ``table_image`` defaults to kodim09
+    The figures, per metric: ``bars_<metric>.png`` (mean ± std per method and
+    pattern) and, with several methods and images, ``paired_<metric>.png``
+    (each method minus the baseline, image by image; see
+    :func:`paired_chart`). Returns the list of files written. ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
 
@@ -58,8 +61,11 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         table_image = next((i for i in images if i.lower() == "kodim09"), images[0])
     put(f"table_{_safe(table_image)}.md", results.image_markdown(table_image) + "\n")
     if plots:
+        several = len(results.config.methods) > 1 and len(images) > 1
         for k in results.config.metrics:
             put(f"bars_{k}.png", bar_chart(results, k))
+            if several:
+                put(f"paired_{k}.png", paired_chart(results, k))
         if crop_source is not None:
             put(f"crops_{_safe(crop_source.name)}.png",
                 crop_figure(crop_source, results.config, box=crop_box))
@@ -74,43 +80,133 @@ def _figure_png(fig):
     return buf.getvalue()
 
 
-def bar_chart(results, metric):
-    """Fig. 20-like bars: mean per method and pattern with ±1 std error bars (PNG bytes)."""
+def _pyplot():
     import matplotlib
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
+    return plt
 
+
+def _colours(methods):
+    import matplotlib
+    cycle = matplotlib.colormaps["tab10"]
+    return {m: cycle(i % 10) for i, m in enumerate(methods)}
+
+
+def _direction(metric):
+    return "higher is better" if HIGHER_IS_BETTER[metric] else "lower is better"
+
+
+def _limits(lo, hi):
+    """Axis limits around [lo, hi] (the whiskers included), with a margin."""
+    lo, hi = float(np.nanmin(lo)), float(np.nanmax(hi))
+    pad = max(hi - lo, 1e-9) * 0.08
+    return lo - pad, hi + pad
+
+
+def bar_chart(results, metric):
+    """Fig. 20-like chart: mean per method and pattern, ±1 std over the images (PNG bytes).
+
+    Points with whiskers rather than bars, since a bar's length from an
+    arbitrary axis floor means nothing for a PSNR; the axis spans the
+    whiskers, so none is cut, and the legend sits beside the plot. The
+    spread is that of the images (it shows how hard they are, not how sure
+    the ranking is): :func:`paired_chart` shows the latter.
+    """
+    return _figure_png(_bar_figure(results, metric))
+
+
+def _bar_figure(results, metric):
+    plt = _pyplot()
     s = results.summary()
     cfg = results.config
-    fig, ax = plt.subplots(figsize=(1.2 + 1.1 * len(cfg.methods) * len(cfg.patterns) / 2, 3.4))
-    width = 0.8 / len(cfg.methods)
-    x = np.arange(len(cfg.patterns))
-    for i, m in enumerate(cfg.methods):
-        means = [s[(p, m, metric)][0] for p in cfg.patterns]
-        stds = [s[(p, m, metric)][1] for p in cfg.patterns]
-        ax.bar(x + (i - (len(cfg.methods) - 1) / 2) * width, means, width, yerr=stds,
-               capsize=2, label=METHOD_LABELS.get(m, m))
-    ax.set_xticks(x, cfg.patterns)
+    colours = _colours(cfg.methods)
+    nm = len(cfg.methods)
+    fig, ax = plt.subplots(figsize=(2.2 + 0.55 * nm * len(cfg.patterns), 3.6))
+    lows, highs = [], []
+    for j, m in enumerate(cfg.methods):
+        x = np.arange(len(cfg.patterns)) + (j - (nm - 1) / 2) * 0.8 / nm
+        mean = np.array([s[(p, m, metric)][0] for p in cfg.patterns])
+        std = np.array([s[(p, m, metric)][1] for p in cfg.patterns])
+        ax.errorbar(x, mean, yerr=std, fmt="o", ms=6, capsize=4, lw=1.4, color=colours[m],
+                    label=METHOD_LABELS.get(m, m))
+        lows.append(mean - std)
+        highs.append(mean + std)
+    if np.isfinite(np.concatenate(lows)).any():
+        ax.set_ylim(*_limits(np.concatenate(lows), np.concatenate(highs)))
+    ax.set_xticks(np.arange(len(cfg.patterns)), cfg.patterns)
+    ax.set_xlim(-0.6, len(cfg.patterns) - 0.4)
     ax.set_ylabel(METRIC_LABELS[metric])
-    allm = [s[(p, m, metric)][0] for p in cfg.patterns for m in cfg.methods]
-    finite = [v for v in allm if np.isfinite(v)]
-    if finite and metric not in ("zipper",):
-        lo, hi = min(finite), max(finite)
-        pad = max(hi - lo, 1e-3)
-        ax.set_ylim(lo - 1.5 * pad, hi + 0.8 * pad)
-    ax.set_title(f"{METRIC_LABELS[metric]} — {len(results.images())} images "
-                 f"({'higher' if HIGHER_IS_BETTER[metric] else 'lower'} is better)", fontsize=9)
-    ax.legend(fontsize=7, ncol=min(len(cfg.methods), 5), loc="upper center",
-              bbox_to_anchor=(0.5, -0.12))
+    ax.set_title(f"{METRIC_LABELS[metric]}: mean ± 1 std over {len(results.images())} "
+                 f"image(s) ({_direction(metric)})", fontsize=9)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     ax.grid(axis="y", alpha=0.3)
-    return _figure_png(fig)
+    return fig
 
 
-def crop_figure(source, config, box=None, size=96):
-    """Fig. 21-like comparison: reference and each method side by side, per pattern (PNG bytes)."""
-    import matplotlib
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
+def paired_chart(results, metric, baseline=None):
+    """Each method minus the baseline, image by image, with the 95 % interval of the mean (PNG).
+
+    One panel per pattern; a grey dot per image, the mean difference with
+    its confidence interval in the method's colour, and the zero line (no
+    difference). Paired differences remove what the images contribute, so a
+    method that is better on every image shows it even when the images'
+    spread dwarfs the gain.
+    """
+    return _figure_png(_paired_figure(results, metric, baseline))
+
+
+def _paired_figure(results, metric, baseline=None):
+    plt = _pyplot()
+    cfg = results.config
+    base = baseline or results.baseline()
+    others = [m for m in cfg.methods if m != base]
+    if not others:
+        raise ValueError(f"baseline: {base!r} is the only method; nothing to compare")
+    colours = _colours(cfg.methods)
+    fig, axes = plt.subplots(1, len(cfg.patterns), sharey=True, squeeze=False,
+                             figsize=(1.2 + 0.75 * len(others) * len(cfg.patterns) + 0.8, 3.8))
+    lo_all, hi_all = [0.0], [0.0]
+    rng = np.random.default_rng(0)                    # the jitter of the dots, reproducible
+    for ax, p in zip(axes[0], cfg.patterns):
+        for i, m in enumerate(others):
+            diffs, mean, lo, hi = results.paired(p, m, metric, base)
+            if diffs.size:
+                ax.plot(i + rng.uniform(-0.18, 0.18, diffs.size), diffs, ".", ms=4,
+                        color="0.55", alpha=0.7, zorder=1)
+                ax.errorbar([i], [mean], yerr=[[mean - lo], [hi - mean]], fmt="D", ms=6,
+                            capsize=5, lw=1.8, color=colours[m], zorder=3)
+                lo_all += [diffs.min(), lo]
+                hi_all += [diffs.max(), hi]
+        ax.axhline(0, color="k", lw=0.8)
+        ax.set_xticks(range(len(others)), [METHOD_LABELS.get(m, m) for m in others],
+                      rotation=30, ha="right", fontsize=8)
+        ax.set_xlim(-0.6, len(others) - 0.4)
+        ax.set_title(p, fontsize=9)
+        ax.grid(axis="y", alpha=0.3)
+    axes[0][0].set_ylim(*_limits(lo_all, hi_all))
+    unit = METRIC_LABELS[metric].split("(")[-1].rstrip(")") if "(" in METRIC_LABELS[metric] \
+        else ""
+    name = METRIC_LABELS[metric].split(" (")[0]
+    axes[0][0].set_ylabel(f"Δ {name} vs {METHOD_LABELS.get(base, base)}"
+                          + (f" ({unit})" if unit else ""))
+    fig.suptitle(f"{name}, each method minus {METHOD_LABELS.get(base, base)} on the same image "
+                 f"({_direction(metric)}): dots = images ({len(results.images())}), "
+                 "diamond = mean with 95 % CI", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def crop_figure(source, config, box=None, size=64):
+    """Fig. 21-like comparison: where the crop is, then the reference and each method (PNG).
+
+    The left column shows the whole reference image with the crop outlined;
+    each row then shows the crop, enlarged with no smoothing, for one
+    pattern: the reference and every method. By default the crop is where
+    the methods differ most from the reference on the first pattern.
+    """
+    plt = _pyplot()
+    from matplotlib.patches import Rectangle
 
     img = source.load()
     chain = config.colour_isp()
@@ -125,9 +221,10 @@ def crop_figure(source, config, box=None, size=96):
             row.append((METHOD_LABELS.get(m, m),
                         chain.render(out, phase, bit_depth=bd, gains=st["gains"])))
         tiles.append((pname, row))
+    full = tiles[0][1][0][1]
+    size = int(min(size, *full.shape[:2]))
     if box is None:
-        # the crop where the methods differ most from the reference (SG's worst area shown)
-        ref = tiles[0][1][0][1].astype(float)
+        ref = full.astype(float)
         err = sum(np.abs(t.astype(float) - ref).sum(2) for _, t in tiles[0][1][1:])
         from scipy.ndimage import uniform_filter
         e = uniform_filter(err, size)
@@ -137,14 +234,26 @@ def crop_figure(source, config, box=None, size=96):
         box = (y0, x0, size, size)
     y0, x0, h, w = box
     ncol = len(tiles[0][1])
-    fig, axes = plt.subplots(len(tiles), ncol, figsize=(1.9 * ncol, 2.05 * len(tiles)),
-                             squeeze=False)
+    # the overview column: the image's aspect, but never so narrow that it shows nothing
+    wide = max(1.25 * full.shape[1] / full.shape[0], 1.4)
+    fig = plt.figure(figsize=(2.0 * (ncol + wide), 2.15 * len(tiles) + 0.4))
+    grid = fig.add_gridspec(len(tiles), ncol + 1, width_ratios=[wide] + [1] * ncol,
+                            wspace=0.08, hspace=0.25)
+    ax = fig.add_subplot(grid[:, 0])
+    ax.imshow(full, interpolation="antialiased")
+    ax.add_patch(Rectangle((x0 - 0.5, y0 - 0.5), w, h, fill=False, ec="red", lw=1.6))
+    ax.set_title(f"{source.name} (reference)\nthe crop in red", fontsize=8)
+    ax.set_xticks([])
+    ax.set_yticks([])
     for i, (pname, row) in enumerate(tiles):
         for j, (label, im) in enumerate(row):
-            ax = axes[i, j]
+            ax = fig.add_subplot(grid[i, j + 1])
             ax.imshow(im[y0:y0 + h, x0:x0 + w], interpolation="nearest")
             ax.set_xticks([])
             ax.set_yticks([])
-            ax.set_title(f"{pname}: {label}" if j else label, fontsize=8)
-    fig.suptitle(f"{source.name}, crop rows {y0}:{y0 + h}, cols {x0}:{x0 + w}", fontsize=9)
+            for sp in ax.spines.values():
+                sp.set_edgecolor("red" if j == 0 else "0.6")
+            ax.set_title(f"{pname}: {label}" if j else "reference", fontsize=8)
+    fig.suptitle(f"{source.name}: crop rows {y0}:{y0 + h}, cols {x0}:{x0 + w}, enlarged "
+                 "without smoothing", fontsize=9)
     return _figure_png(fig)

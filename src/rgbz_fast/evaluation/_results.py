@@ -18,10 +18,15 @@ __all__ = ["Results"]
 
 @dataclass
 class Results:
-    """A tidy table: one row per image, pattern, method and metric."""
+    """A tidy table: one row per image, pattern, method and metric.
+
+    ``skipped`` lists the ``(image, reason)`` of the images an evaluation with
+    ``skip_bad=True`` left out.
+    """
 
     rows: list
     config: EvalConfig = field(default_factory=EvalConfig)
+    skipped: list = field(default_factory=list)
 
     def __len__(self):
         return len(self.rows)
@@ -45,6 +50,57 @@ class Results:
     def images(self):
         return list(dict.fromkeys(r["image"] for r in self.rows))
 
+    def paired(self, pattern, method, metric, baseline="bilinear"):
+        """Per-image differences ``method - baseline`` and their mean with a 95 % interval.
+
+        Both methods see the same images, so the difference of each image
+        removes what the images themselves contribute (a detailed image is
+        hard for every method): the interval of the mean difference is much
+        narrower than the spread of either method's values. Images with a
+        non-finite value in either method are left out.
+
+        Returns
+        -------
+        diffs : ndarray, shape (n,)
+            One difference per image, in the order of :meth:`images`.
+        mean, lo, hi : float
+            The mean difference and its 95 % confidence interval (Student's
+            t with n - 1 degrees of freedom; the mean itself when n = 1).
+
+        Examples
+        --------
+        >>> from rgbz_fast.evaluation import EvalConfig, Results
+        >>> rows = [{"image": i, "pattern": "mask1", "method": m, "metric": "cfa_psnr",
+        ...          "value": v} for i, m, v in (("a", "bilinear", 30.0), ("a", "sg", 31.0),
+        ...                                      ("b", "bilinear", 20.0), ("b", "sg", 21.5))]
+        >>> res = Results(rows, EvalConfig(methods=("bilinear", "sg"), metrics=("cfa_psnr",)))
+        >>> diffs, mean, lo, hi = res.paired("mask1", "sg", "cfa_psnr")
+        >>> diffs.tolist(), mean, round(lo, 3), round(hi, 3)
+        ([1.0, 1.5], 1.25, -1.927, 4.427)
+        """
+        def per_image(m):
+            return {r["image"]: r["value"] for r in self.rows if r["pattern"] == pattern
+                    and r["method"] == m and r["metric"] == metric}
+
+        a, b = per_image(method), per_image(baseline)
+        diffs = np.array([a[i] - b[i] for i in self.images() if i in a and i in b
+                          and np.isfinite(a[i]) and np.isfinite(b[i])], dtype=float)
+        if diffs.size == 0:
+            return diffs, math.nan, math.nan, math.nan
+        mean = float(diffs.mean())
+        if diffs.size == 1:
+            return diffs, mean, mean, mean
+        from scipy import stats
+
+        half = float(stats.t.ppf(0.975, diffs.size - 1) * diffs.std(ddof=1)
+                     / math.sqrt(diffs.size))
+        return diffs, mean, mean - half, mean + half
+
+    def baseline(self):
+        """The method the paired differences are taken against: bilinear when it ran, else
+        the first method."""
+        return "bilinear" if "bilinear" in self.config.methods else self.config.methods[0]
+
     def to_csv(self):
         buf = io.StringIO()
         w = csv.DictWriter(buf, fieldnames=["image", "pattern", "method", "metric", "value"],
@@ -55,7 +111,8 @@ class Results:
         return buf.getvalue()
 
     def to_json(self):
-        return json.dumps({"config": asdict(self.config), "rows": self.rows}, indent=1,
+        return json.dumps({"config": asdict(self.config), "rows": self.rows,
+                           "skipped": [list(t) for t in self.skipped]}, indent=1,
                           default=str)
 
     def summary_markdown(self, digits=None):
@@ -63,6 +120,9 @@ class Results:
         s = self.summary()
         fmt = digits or {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
         lines = [f"Mean ± std over {len(self.images())} image(s); {self.config.label()}.", ""]
+        if self.skipped:
+            lines[-1:] = [f"Skipped {len(self.skipped)} image(s) that could not be evaluated: "
+                          + "; ".join(f"{n} ({why})" for n, why in self.skipped) + ".", ""]
         for p in self.config.patterns:
             lines.append(f"**{p}**")
             lines.append("")
@@ -82,6 +142,25 @@ class Results:
                     cells.append(f"**{cell}**" if best.get(k) == mean else cell)
                 lines.append(f"| {METHOD_LABELS.get(m, m)} | " + " | ".join(cells) + " |")
             lines.append("")
+        base = self.baseline()
+        others = [m for m in self.config.methods if m != base]
+        if others and len(self.images()) > 1:
+            lines += [f"Paired differences to {METHOD_LABELS.get(base, base)}, image by image: "
+                      "mean [95 % confidence interval] (the interval of the difference, not the "
+                      "spread of the images).", ""]
+            for p in self.config.patterns:
+                lines += [f"**{p}**", "",
+                          "| method | " + " | ".join(f"Δ {METRIC_LABELS[k]}"
+                                                     for k in self.config.metrics) + " |",
+                          "|---" * (len(self.config.metrics) + 1) + "|"]
+                for m in others:
+                    cells = []
+                    for k in self.config.metrics:
+                        _, mean, lo, hi = self.paired(p, m, k, base)
+                        f = fmt[k]
+                        cells.append(f"{mean:+.{f}f} [{lo:+.{f}f}, {hi:+.{f}f}]")
+                    lines.append(f"| {METHOD_LABELS.get(m, m)} | " + " | ".join(cells) + " |")
+                lines.append("")
         return "\n".join(lines)
 
     def image_markdown(self, image):

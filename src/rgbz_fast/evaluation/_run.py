@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -13,7 +14,7 @@ from .. import _patterns
 from .. import metrics as _metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import check_processes, check_workers
+from .._validate import check_flag, check_processes, check_workers
 from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
 from ..reconstruction import reconstruct
 from ..simulation import ColourSensor, Scene, simulate, srgb_to_linear
@@ -64,14 +65,21 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     """Every (pattern, method) of ``config`` on one image: a list of tidy rows.
 
     Each row: ``{"image", "pattern", "method", "metric", "value"}``. Cached
-    results are reused; new ones are written to ``cache_dir`` atomically.
-    ``workers`` are the threads of each kernel call.
+    results are reused; new ones are written to ``cache_dir`` atomically. A
+    cache entry is keyed by the configuration and by the image's content
+    (:meth:`~rgbz_fast.io.ImageSource.fingerprint`), in a folder of its own
+    per image name. ``workers`` are the threads of each kernel call.
     """
     rows, todo = [], []
-    cdir = Path(cache_dir) / _safe(source.name) if cache_dir else None
+    cdir = Path(cache_dir) / cache_folder(source.name) if cache_dir else None
+    content = source.fingerprint() if cdir else ""
+
+    def key(p, m):
+        return hashlib.sha1(f"{config.key(p, m, source.is_raw)} {content}".encode()).hexdigest()[:20]
+
     for p in config.patterns:
         for m in config.methods:
-            cached = _cache_read(cdir, config.key(p, m, source.is_raw)) if cdir else None
+            cached = _cache_read(cdir, key(p, m)) if cdir else None
             if cached is not None and set(config.metrics) <= set(cached):
                 rows += [_row(source.name, p, m, k, cached[k]) for k in config.metrics]
             else:
@@ -102,7 +110,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
                 values.update(_image_metrics(ref_srgb, test_srgb, config))
             if cdir:
-                _cache_write(cdir, config.key(p, m, source.is_raw), values)
+                _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
     return rows
 
@@ -130,6 +138,15 @@ def _safe(name):
     return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name)
 
 
+def cache_folder(name):
+    """The cache folder of an image name: readable, and distinct for distinct names.
+
+    The name's characters outside ``[A-Za-z0-9._-]`` become ``_``, and a hash
+    of the exact name is appended, so ``"a b"`` and ``"a_b"`` get two folders.
+    """
+    return f"{_safe(name)[:60]}-{hashlib.sha1(name.encode()).hexdigest()[:10]}"
+
+
 def _cache_read(cdir, key):
     f = cdir / f"{key}.json"
     try:
@@ -144,12 +161,48 @@ def _cache_write(cdir, key, values):
 
 
 def _pool_task(args):
-    source, config, cache_dir, workers = args
-    return evaluate_image(source, config, cache_dir, workers=workers)
+    source, config, cache_dir, workers, skip_bad = args
+    if not skip_bad:
+        return evaluate_image(source, config, cache_dir, workers=workers)
+    try:
+        return evaluate_image(source, config, cache_dir, workers=workers)
+    except (ValueError, TypeError, OSError) as exc:       # a bad image, not a bug: skipped
+        return _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
+
+
+class _Skipped(str):
+    """The reason an image was skipped (``skip_bad=True``), in place of its rows."""
+
+
+def _worker_init():
+    """Pool workers turn SIGTERM into SystemExit, so that a terminated run's cache writes
+    remove their temporary files (atomic_write cleans up on any exception)."""
+    import signal
+
+    def terminated(signum, frame):
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        raise SystemExit(128 + signum)
+
+    signal.signal(signal.SIGTERM, terminated)
+
+
+def _stop_pool(ex):
+    """Stop a process pool now: cancel what has not started, terminate the workers (they
+    clean up their temporary files, see :func:`_worker_init`), reap them."""
+    procs = list(getattr(ex, "_processes", {}).values())
+    for p in procs:
+        if p.is_alive():
+            p.terminate()
+    for p in procs:
+        p.join(timeout=10)
+        if p.is_alive():                                 # pragma: no cover - stuck in C
+            p.kill()
+            p.join(timeout=10)
+    ex.shutdown(wait=True, cancel_futures=True)
 
 
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
-             scheduler=None, progress=True, **config_kwargs):
+             scheduler=None, progress=True, skip_bad=False, **config_kwargs):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
 
     For every image the *reference path* (plain Bayer CFA, no reconstruction)
@@ -184,6 +237,22 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         same numbers.
     progress : bool
         Show a progress bar (tqdm) on stderr.
+    skip_bad : bool
+        Skip the images that cannot be evaluated (a file that does not
+        decode, a grey image, an image smaller than a pattern period or the
+        crop...): they are listed in :attr:`Results.skipped` with the reason,
+        and the others are evaluated. Default: the first one stops the run
+        with its error.
+
+    Returns
+    -------
+    Results
+
+    Notes
+    -----
+    An interrupt (Ctrl-C, or SIGTERM under the command line) stops the
+    local pool's worker processes before it propagates: no worker outlives
+    the run, and no temporary cache file is left behind.
     """
     if config is None:
         config = EvalConfig(**config_kwargs)
@@ -213,7 +282,8 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     pooled = scheduler is not None or (nproc > 1 and len(dataset) > 1)
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
     cache_dir = str(cache_dir) if cache_dir is not None else None
-    tasks = [(s, config, cache_dir, threads) for s in dataset]
+    skip_bad = check_flag(skip_bad, "skip_bad")
+    tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]
     from tqdm.auto import tqdm
     bar = tqdm(total=len(tasks), desc="evaluate", unit="img", disable=not progress)
     results = {}
@@ -227,15 +297,22 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         else:
             import multiprocessing as mp
             ctx = mp.get_context("spawn")
-            with ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx) as ex:
+            ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
+                                     initializer=_worker_init)
+            try:
                 futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
                 for f in as_completed(futs):
                     results[futs[f]] = f.result()
                     bar.update()
+            except BaseException:
+                _stop_pool(ex)              # an error or an interrupt: no orphaned worker
+                raise
+            ex.shutdown(wait=True)
     finally:
         bar.close()
-    rows = [r for n in names for r in results[n]]
-    return Results(rows, config)
+    skipped = [(n, str(results[n])) for n in names if isinstance(results[n], _Skipped)]
+    rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
+    return Results(rows, config, skipped=skipped)
 
 
 def _run_dask(tasks, scheduler, bar):

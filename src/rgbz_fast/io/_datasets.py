@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._files import read_image
+from ._files import read_file, read_image, rgb_image
 from ._raw import read_raw
 
 __all__ = ["ImageSource", "folder_dataset", "sample_dataset", "IMAGE_SUFFIXES",
@@ -32,13 +32,15 @@ class ImageSource:
     Camera raw and bare Bayer files (``raw_options`` holds the keyword
     arguments of :func:`rgbz_fast.io.read_raw` they need) load as a Bayer
     :class:`~rgbz_fast.RawFrame`: the real CFA is then the reference and the
-    RGB-Z pattern removes its Z sites (the paper's HDR+ protocol).
+    RGB-Z pattern removes its Z sites (the paper's HDR+ protocol). A grey
+    image is refused unless ``grey`` (see :func:`rgbz_fast.io.rgb_image`).
     """
 
     name: str
     location: str
     raw_options: tuple = ()
     raw: bool = False
+    grey: bool = False
 
     @property
     def is_raw(self):
@@ -52,12 +54,23 @@ class ImageSource:
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
         else:
             img = read_image(self.location, "dataset")
-        img = np.asarray(img)
-        if img.ndim == 2:
-            img = np.repeat(img[..., None], 3, axis=2)
-        if img.ndim != 3 or img.shape[2] not in (3, 4):
-            raise ValueError(f"dataset: {self.location} is not an RGB image (shape {img.shape})")
-        return np.ascontiguousarray(img[..., :3])
+        return rgb_image(img, self.location, "dataset", grey=self.grey)
+
+    def fingerprint(self):
+        """SHA-256 of what the image is: the file's bytes (with the raw options and the
+        grey flag), or the name of a scikit-image sample. Part of the evaluation's cache
+        key, so a changed file is never served stale results."""
+        import hashlib
+
+        h = hashlib.sha256()
+        if self.location.startswith("skimage:"):
+            import skimage
+
+            h.update(f"{self.location} {skimage.__version__}".encode())
+        else:
+            h.update(read_file(self.location, "dataset"))
+        h.update(repr((sorted(self.raw_options), self.is_raw, self.grey)).encode())
+        return h.hexdigest()
 
 
 def sample_dataset():
@@ -65,15 +78,27 @@ def sample_dataset():
     return [ImageSource(n, f"skimage:{n}") for n in _SKIMAGE_SAMPLES]
 
 
-def folder_dataset(path, limit=None, raw_options=None):
+def folder_dataset(path, limit=None, raw_options=None, *, grey=False):
     """Every image file in a folder (sorted by name): RGB images, or camera raw / Bayer files.
 
     ``raw_options`` maps a file name (or ``"*"``, for every raw file) to the
     keyword arguments :func:`rgbz_fast.io.read_raw` needs for it (phase,
     black and white levels, shape of headerless files, ``downsample=2`` as
     the paper does for HDR+). A file named in ``raw_options`` is read as raw
-    even if it is a PNG or TIFF (a 16-bit Bayer mosaic).
+    even if it is a PNG or TIFF (a 16-bit Bayer mosaic). ``limit``: the first
+    ``limit`` files only (a positive integer). ``grey``: accept grey images,
+    repeated into R, G and B (:func:`rgbz_fast.io.rgb_image`).
+
+    Raises
+    ------
+    ValueError
+        The folder does not exist or holds no image file, ``limit`` is not
+        a positive integer, or two files have the same name stem
+        (``a.png`` and ``a.tif``: their results would be one image's).
     """
+    if limit is not None and (isinstance(limit, bool) or not isinstance(limit, (int, np.integer))
+                              or limit < 1):
+        raise ValueError(f"limit: expected a positive number of images, got {limit!r}")
     p = Path(path)
     if not p.exists():
         raise ValueError(f"dataset: {p} does not exist")
@@ -93,7 +118,14 @@ def folder_dataset(path, limit=None, raw_options=None):
         if f.suffix.lower() in RAW_SUFFIXES or f.name in raw_options:
             opts = {**raw_options.get("*", {}), **raw_options.get(f.name, {})}
             out.append(ImageSource(f.stem, str(f), tuple(sorted(
-                (k, tuple(v) if isinstance(v, list) else v) for k, v in opts.items())), raw=True))
+                (k, tuple(v) if isinstance(v, list) else v) for k, v in opts.items())), raw=True,
+                grey=grey))
         else:
-            out.append(ImageSource(f.stem, str(f)))
+            out.append(ImageSource(f.stem, str(f), grey=grey))
+    stems = [s.name for s in out]
+    dup = sorted({n for n in stems if stems.count(n) > 1})
+    if dup:
+        raise ValueError(f"dataset: several files are named {dup[0]!r} (e.g. "
+                         f"{', '.join(Path(s.location).name for s in out if s.name == dup[0])}); "
+                         "images are reported by name, so rename one")
     return out

@@ -1,52 +1,315 @@
-"""Files: atomic writes, and the one reader that decodes image files.
+"""Files: atomic writes, bounded reads with size limits, and the one reader that decodes images.
 
 Every file the library writes goes through :func:`atomic_write` (a temporary
-file in the same folder, then a rename), so a crash or an error never leaves
-a half-written file under the final name. Every image file it reads goes
-through :func:`read_image`, which turns a file that does not decode into a
-ValueError naming the parameter and the path.
+file in the same folder, then a rename), so a crash, an error or a SIGTERM
+never leaves a half-written file under the final name, nor a temporary file.
+Every file it reads goes through :func:`read_file` (a regular file -- not a
+FIFO, a device or a folder -- of at most ``max_bytes``), and every image file
+through :func:`read_image`, which checks the size the file declares against
+the limits (:func:`read_limits`) before decoding it and turns a file that does
+not decode into a ValueError naming the parameter and the path.
 """
 
 from __future__ import annotations
 
+import io
 import os
-import tempfile
+import secrets
+import stat
+import struct
 from pathlib import Path
 
 import numpy as np
 
-__all__ = ["atomic_write", "read_image"]
+__all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "read_limits", "check_size",
+           "DEFAULT_MAX_PIXELS", "DEFAULT_MAX_BYTES", "MAX_PIXELS_ENV", "MAX_BYTES_ENV"]
+
+#: default largest image (rows x cols) a reader decodes: 200 megapixels
+DEFAULT_MAX_PIXELS = 200_000_000
+#: default largest file a reader reads, and largest array it decodes: 2 GiB
+DEFAULT_MAX_BYTES = 2 * 2**30
+#: environment variables that override the defaults (the command line sets them)
+MAX_PIXELS_ENV = "RGBZ_FAST_MAX_PIXELS"
+MAX_BYTES_ENV = "RGBZ_FAST_MAX_BYTES"
+
+_HOW_TO_RAISE = {"max_pixels": f"max_pixels=, --max-pixels or {MAX_PIXELS_ENV}",
+                 "max_bytes": f"max_bytes=, --max-bytes or {MAX_BYTES_ENV}"}
+
+
+def _limit(value, name, env, default):
+    if value is None:
+        text = os.environ.get(env, "").strip()
+        if not text:
+            return default
+        try:
+            value = int(text.replace("_", ""))
+        except ValueError:
+            raise ValueError(f"{env}: expected a positive integer, got {text!r}") from None
+        if value < 1:
+            raise ValueError(f"{env}: expected a positive integer, got {text!r}")
+        return value
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name}: expected a positive integer, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name}: expected a positive integer, got {value!r}")
+    return int(value)
+
+
+def read_limits(max_pixels=None, max_bytes=None):
+    """The size limits of a read: ``(max_pixels, max_bytes)``.
+
+    Each is the argument when given, else the environment variable
+    (``RGBZ_FAST_MAX_PIXELS``, ``RGBZ_FAST_MAX_BYTES``), else the default
+    (:data:`DEFAULT_MAX_PIXELS`, 200 megapixels; :data:`DEFAULT_MAX_BYTES`,
+    2 GiB). The command line's ``--max-pixels`` and ``--max-bytes`` set the
+    environment variables, so worker processes inherit them.
+
+    Examples
+    --------
+    >>> from rgbz_fast.io import read_limits
+    >>> read_limits(max_pixels=4096)[0]
+    4096
+    >>> read_limits(max_pixels=0)
+    Traceback (most recent call last):
+    ...
+    ValueError: max_pixels: expected a positive integer, got 0
+    """
+    return (_limit(max_pixels, "max_pixels", MAX_PIXELS_ENV, DEFAULT_MAX_PIXELS),
+            _limit(max_bytes, "max_bytes", MAX_BYTES_ENV, DEFAULT_MAX_BYTES))
+
+
+def check_size(shape, itemsize, path, name="path", *, limits=None):
+    """ValueError naming ``name`` when an array of ``shape`` breaks the limits.
+
+    ``shape`` is what a file declares (rows, cols, ...): its first two
+    dimensions are the pixels, and the product times ``itemsize`` the bytes
+    it decodes to. Called before the array is allocated.
+    """
+    max_pixels, max_bytes = limits if limits is not None else read_limits()
+    shape = tuple(int(s) for s in shape)
+    pixels = int(np.prod(shape[:2], dtype=object)) if shape else 1
+    nbytes = int(np.prod(shape, dtype=object)) * int(itemsize)
+    dims = "x".join(str(s) for s in shape)
+    if pixels > max_pixels:
+        raise ValueError(f"{name}: {path} declares a {dims} image ({pixels / 1e6:.1f} "
+                         f"megapixels), more than the limit of {max_pixels} pixels; raise it "
+                         f"with {_HOW_TO_RAISE['max_pixels']}")
+    if nbytes > max_bytes:
+        raise ValueError(f"{name}: {path} declares {dims} values of {itemsize} bytes "
+                         f"({nbytes} bytes), more than the limit of {max_bytes} bytes; raise "
+                         f"it with {_HOW_TO_RAISE['max_bytes']}")
+
+
+def _file_kind(mode):
+    for test, kind in ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+                       (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return kind
+    return "not a regular file"
+
+
+def read_file(path, name="path", *, max_bytes=None):
+    """The bytes of a regular file, read at most ``max_bytes`` (never blocks, never unbounded).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file (symbolic links are followed).
+    name : str
+        The parameter named in the errors.
+    max_bytes : int, optional
+        The largest file accepted (see :func:`read_limits`).
+
+    Raises
+    ------
+    FileNotFoundError
+        The file does not exist.
+    ValueError
+        ``"{name}: ..."``: the path is a folder, a FIFO, a device or a
+        socket (``/dev/zero`` or a named pipe would read forever or block),
+        the file is larger than ``max_bytes``, or it cannot be read.
+
+    Examples
+    --------
+    >>> from rgbz_fast.io import read_file
+    >>> read_file("/dev/zero")
+    Traceback (most recent call last):
+    ...
+    ValueError: path: /dev/zero is a character device, not a regular file
+    """
+    limit = read_limits(max_bytes=max_bytes)[1]
+    p = Path(os.fspath(path))
+    try:
+        # O_NONBLOCK: opening a FIFO for reading would wait for a writer
+        fd = os.open(p, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
+    except FileNotFoundError:
+        raise FileNotFoundError(f"{name}: no such file: {p}") from None
+    except IsADirectoryError:
+        raise ValueError(f"{name}: {p} is a folder, not a regular file") from None
+    except OSError as exc:
+        raise ValueError(f"{name}: cannot open {p} ({exc.strerror or exc})") from None
+    st = os.fstat(fd)                  # the file opened, not what the name points to now
+    if not stat.S_ISREG(st.st_mode):
+        os.close(fd)
+        kind = _file_kind(st.st_mode)
+        raise ValueError(f"{name}: {p} is {kind}" +
+                         ("" if kind.startswith("not") else ", not a regular file"))
+    with os.fdopen(fd, "rb") as fh:
+        if st.st_size > limit:
+            raise ValueError(f"{name}: {p} is {st.st_size} bytes, more than the limit of "
+                             f"{limit} bytes; raise it with {_HOW_TO_RAISE['max_bytes']}")
+        try:
+            data = fh.read(limit + 1)      # bounded even if the file grows meanwhile
+        except OSError as exc:
+            raise ValueError(f"{name}: cannot read {p} ({exc.strerror or exc})") from None
+    if len(data) > limit:
+        raise ValueError(f"{name}: {p} grew beyond the limit of {limit} bytes while being "
+                         "read")
+    return data
+
+
+def _unlink(path):
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
 
 
 def atomic_write(path, data):
     """Write text or bytes to ``path`` through a temporary file and a rename: never half-written.
 
-    The temporary file is hidden (``.NAME.XXXX.tmp``) in the destination folder
-    and removed if the write fails; the file gets the permissions the umask
-    gives a new file.
+    The temporary file is hidden (``.NAME.XXXXXXXXXXXXXXXX.tmp``, a random
+    name created exclusively) in the destination folder and removed if the
+    write fails or is interrupted (an exception, Ctrl-C, or a SIGTERM, which
+    the command line turns into an exception); the file gets the permissions
+    the umask gives a new file. Text is written as UTF-8.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from rgbz_fast.io import atomic_write
+    >>> d = tempfile.TemporaryDirectory()
+    >>> atomic_write(os.path.join(d.name, "a.txt"), "±1 dB")
+    >>> os.listdir(d.name)
+    ['a.txt']
+    >>> d.cleanup()
     """
+    if not isinstance(data, (str, bytes, bytearray, memoryview)):
+        raise TypeError(f"data: expected str or bytes, got {type(data).__name__}")
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    mode = "wb" if isinstance(data, (bytes, bytearray, memoryview)) else "w"
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    while True:
+        tmp = path.parent / f".{path.name}.{secrets.token_hex(8)}.tmp"
+        try:
+            fd = os.open(tmp, flags, 0o666)        # the umask applies, as to any new file
+            break
+        except FileExistsError:
+            continue                               # not ours: never touched
+        except BaseException:
+            # the name is random and created exclusively, so if it exists now this call
+            # made it, and an interrupt may land between the creation and the assignment
+            _unlink(tmp)
+            raise
     try:
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)      # mkstemp's 0600 would make reports private
-        with os.fdopen(fd, mode) as fh:
+        with os.fdopen(fd, "w" if isinstance(data, str) else "wb",
+                       **({"encoding": "utf-8"} if isinstance(data, str) else {})) as fh:
             fh.write(data)
             fh.flush()
             os.fsync(fh.fileno())
         os.replace(tmp, path)
     except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
+        _unlink(tmp)
         raise
 
 
-def read_image(path, name="path", decode=None):
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+_TIFF_MAGIC = (b"II*\x00", b"MM\x00*", b"II+\x00", b"MM\x00+")
+#: samples per pixel of the PNG colour types (grey, RGB, palette, grey + alpha, RGBA)
+_PNG_CHANNELS = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}
+
+
+def _png_header(data):
+    """(rows, cols, channels, bit depth) from a PNG's IHDR chunk, or None."""
+    if len(data) < 33 or data[:8] != _PNG_SIGNATURE or data[12:16] != b"IHDR":
+        return None
+    cols, rows, bits, colour = struct.unpack(">IIBB", data[16:26])
+    return rows, cols, _PNG_CHANNELS.get(colour, 4), bits
+
+
+def _declared_shape(data):
+    """(shape, itemsize) an image file declares in its header, before any decoding; or None.
+
+    PNG: the IHDR chunk. TIFF: the tags of the first page. Other formats:
+    Pillow's lazy ``Image.open``, which reads the header only. None when the
+    header cannot be read (the decoder then reports the file as unreadable).
+    """
+    png = _png_header(data)
+    if png is not None:
+        rows, cols, channels, bits = png
+        return (rows, cols, channels), 2 if bits == 16 else 1
+    try:
+        if data[:4] in _TIFF_MAGIC:
+            import tifffile
+
+            with tifffile.TiffFile(io.BytesIO(data)) as tf:
+                page = tf.pages[0]
+                return tuple(page.shape), np.dtype(page.dtype).itemsize
+        from PIL import Image
+
+        with Image.open(io.BytesIO(data)) as im:
+            cols, rows = im.size
+            return (rows, cols, len(im.getbands())), 2 if im.mode.startswith("I;16") else 4 \
+                if im.mode in ("I", "F") else 1
+    except Exception:  # noqa: BLE001 - a header no parser reads: the decoder says why
+        return None
+
+
+def _decode_png16_colour(data):
+    """A 16-bit RGB or RGBA PNG at full precision (Pillow keeps only the high bytes).
+
+    Pillow unfilters and inflates the image data correctly (bytes per pixel 6
+    or 8) and then unpacks one byte of each big-endian sample: ``RGB;16B``
+    gives the high bytes, ``RGB;16L`` -- little-endian unpacking of the same
+    bytes -- the low ones. Decoding twice and combining them gives the 16-bit
+    values with Pillow's own (tested) decoder, interlaced files included.
+    """
+    from PIL import Image
+
+    def plane(rawmode):
+        with Image.open(io.BytesIO(data)) as im:
+            im.tile = [t._replace(args=rawmode) if isinstance(t.args, str)
+                       else t._replace(args=(rawmode,) + tuple(t.args[1:])) for t in im.tile]
+            im.load()
+            return np.asarray(im, dtype=np.uint16)
+
+    with Image.open(io.BytesIO(data)) as im:
+        high = im.tile[0].args
+        high = high if isinstance(high, str) else high[0]
+    if high not in ("RGB;16B", "RGBA;16B"):
+        raise ValueError(f"unexpected 16-bit PNG layout {high!r} in this Pillow version")
+    return (plane(high) << 8) | plane(high[:-1] + "L")
+
+
+def _decode_default(data, suffix):
+    png = _png_header(data)
+    if png is not None and png[3] == 16:
+        if png[2] in (3, 4):
+            return _decode_png16_colour(data)
+        if png[2] == 2:
+            raise ValueError("a 16-bit grey + alpha PNG cannot be read at full precision; "
+                             "save it without alpha")
+    if data[:4] in _TIFF_MAGIC:
+        import tifffile
+
+        return tifffile.imread(io.BytesIO(data), key=0)     # the first page only
+    import imageio.v3 as iio
+
+    return iio.imread(data, extension=suffix or None)
+
+
+def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=None):
     """Decode an image file (PNG, TIFF, ...) read into memory first, as an ndarray.
 
     Parameters
@@ -57,14 +320,26 @@ def read_image(path, name="path", decode=None):
     name : str
         The parameter named in the error message.
     decode : callable, optional
-        ``decode(data: bytes) -> array_like``; default imageio's ``imread``
-        with the file's extension as the format hint.
+        ``decode(data: bytes) -> array_like``; default: 16-bit RGB(A) PNGs at
+        full precision, the first page of a TIFF (tifffile), anything else
+        through imageio with the file's extension as the format hint.
+    max_pixels, max_bytes : int, optional
+        Size limits (see :func:`read_limits`): the file's size, the image
+        size its header declares (checked before decoding) and the decoded
+        array.
+
+    Returns
+    -------
+    ndarray
+        As stored: uint8 or uint16 (16-bit PNGs, grey or colour, keep their
+        16 bits), shape (rows, cols) or (rows, cols, channels).
 
     Raises
     ------
     ValueError
         ``"{name}: cannot read {path} as an image (...)"`` when the bytes do
-        not decode, or decode to no pixel.
+        not decode, or decode to no pixel; ``"{name}: ..."`` when the path is
+        not a regular file or the image is larger than the limits.
 
     Notes
     -----
@@ -72,17 +347,33 @@ def read_image(path, name="path", decode=None):
     (``ResourceWarning``) and raises ``OSError``, ``ValueError`` and other
     types depending on the plugin; decoding bytes leaves nothing to leak and
     gives one exception type. The reason is kept on one line (the command
-    line prints one line per error).
+    line prints one line per error). Pillow reads 16-bit colour PNGs as 8-bit
+    (it drops the low byte); they are decoded here at full precision.
+
+    Examples
+    --------
+    >>> import numpy as np, os, tempfile
+    >>> from rgbz_fast.io import read_image
+    >>> d = tempfile.TemporaryDirectory()
+    >>> path = os.path.join(d.name, "grey16.png")
+    >>> import imageio.v3 as iio
+    >>> iio.imwrite(path, np.array([[0, 65535]], np.uint16))
+    >>> read_image(path)
+    array([[    0, 65535]], dtype=uint16)
+    >>> read_image(path, max_pixels=1)
+    Traceback (most recent call last):
+    ...
+    ValueError: path: ... declares a 1x2x1 image (0.0 megapixels), more than the limit of 1 pixels; ...
+    >>> d.cleanup()
     """
     p = Path(path)
-    data = p.read_bytes()
+    limits = read_limits(max_pixels, max_bytes)
+    data = read_file(p, name, max_bytes=limits[1])
+    declared = _declared_shape(data)
+    if declared is not None:
+        check_size(*declared, p, name, limits=limits)
     try:
-        if decode is None:
-            import imageio.v3 as iio
-
-            img = iio.imread(data, extension=p.suffix.lower() or None)
-        else:
-            img = decode(data)
+        img = decode(data) if decode is not None else _decode_default(data, p.suffix.lower())
         img = np.asarray(img)
     except Exception as exc:  # noqa: BLE001 - the decoders raise many types for bad data
         reason = " ".join(str(exc).split()) or type(exc).__name__
@@ -90,4 +381,42 @@ def read_image(path, name="path", decode=None):
     if img.size == 0:
         raise ValueError(f"{name}: cannot read {p} as an image (it decodes to no pixel, "
                          f"shape {img.shape})")
+    check_size(img.shape, img.dtype.itemsize, p, name, limits=limits)
     return img
+
+
+def rgb_image(img, path, name="path", *, grey=False):
+    """An image as read (RGB, RGBA, grey, grey + alpha) as RGB, or a ValueError naming ``name``.
+
+    The one grey-image policy of the library (scenes, datasets, the command
+    line): a grey image is refused -- a colour sensor needs colour, and a
+    grey image in a colour dataset is more often a mistake than a wish --
+    unless ``grey=True``, which repeats its one channel into R, G and B (a
+    neutral scene). Alpha is dropped.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rgbz_fast.io import rgb_image
+    >>> rgb_image(np.zeros((2, 3), np.uint8), "g.png", grey=True).shape
+    (2, 3, 3)
+    >>> rgb_image(np.zeros((2, 3), np.uint8), "g.png")
+    Traceback (most recent call last):
+    ...
+    ValueError: path: g.png is a grey image (2x3); a colour sensor needs colour: ...
+    """
+    img = np.asarray(img)
+    if img.ndim == 3 and img.shape[2] in (2, 4):
+        img = img[..., :-1]                           # alpha
+    if img.ndim == 3 and img.shape[2] == 1:
+        img = img[..., 0]
+    if img.ndim == 2:
+        if not grey:
+            raise ValueError(f"{name}: {path} is a grey image ({img.shape[0]}x{img.shape[1]}); "
+                             "a colour sensor needs colour: pass grey=True (command line: "
+                             "--grey) to repeat it into R, G and B")
+        img = np.repeat(img[..., None], 3, axis=2)
+    if img.ndim != 3 or img.shape[2] != 3:
+        raise ValueError(f"{name}: {path} holds an image of shape {img.shape}; expected RGB "
+                         "(rows, cols, 3), RGBA or grey")
+    return np.ascontiguousarray(img)

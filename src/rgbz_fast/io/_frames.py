@@ -18,7 +18,7 @@ import numpy as np
 from .._frame import RawFrame, ToFTaps
 from .._patterns import Pattern, get_pattern
 from .._sensors import ToFSensor
-from ._files import atomic_write, read_image
+from ._files import MAX_BYTES_ENV, atomic_write, check_size, read_file, read_image, read_limits
 from ._raw import read_raw
 
 __all__ = ["save_frame", "load_frame", "FRAME_SUFFIXES"]
@@ -84,28 +84,36 @@ def save_frame(path, frame):
     return path
 
 
-def load_frame(path, *, pattern=None, bit_depth=None, **raw_kwargs):
+def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes=None,
+               **raw_kwargs):
     """Read a frame written by :func:`save_frame`, or a camera raw file through :func:`rgbz_fast.io.read_raw`.
 
     ``pattern`` and ``bit_depth`` are needed for a TIFF or PNG that carries
-    no rgbz-fast header; they override nothing in files that do.
+    no rgbz-fast header; they override nothing in files that do. For a raw
+    file (read by :func:`~rgbz_fast.io.read_raw` with ``raw_kwargs``),
+    ``bit_depth`` is the working bit depth it is scaled to.
+    ``max_pixels`` and ``max_bytes`` bound what is read (see
+    :func:`rgbz_fast.io.read_limits`): the file's size, and every array the
+    file declares, checked from the headers before anything is allocated.
 
     Raises
     ------
     ValueError
-        ``"path: ..."`` naming the file when it does not exist or cannot be
-        read: an NPZ that is truncated, not a zip archive, or lacks the
-        frame's arrays or header keys (``pattern``, ``bit_depth``); a TIFF or
-        PNG that does not decode; a header that is not JSON or describes no
-        valid frame. The errors of :func:`rgbz_fast.io.read_raw` for
-        other files.
+        ``"path: ..."`` naming the file when it does not exist, is not a
+        regular file (a folder, a FIFO, a device), is larger than the limits,
+        or cannot be read: an NPZ that is truncated, not a zip archive, or
+        lacks the frame's arrays or header keys (``pattern``, ``bit_depth``);
+        a TIFF or PNG that does not decode; a header that is not JSON or
+        describes no valid frame. The errors of :func:`rgbz_fast.io.read_raw`
+        for other files.
     """
     path = Path(path)
+    limits = read_limits(max_pixels, max_bytes)
     if not path.exists():
         raise ValueError(f"path: {path} does not exist")
     suffix = path.suffix.lower()
     if suffix == ".npz":
-        return _load_npz(path)
+        return _load_npz(path, limits)
     if suffix in (".tif", ".tiff"):
         import tifffile
 
@@ -113,23 +121,77 @@ def load_frame(path, *, pattern=None, bit_depth=None, **raw_kwargs):
 
         def decode(blob):
             with tifffile.TiffFile(io.BytesIO(blob)) as tf:
-                desc.append(tf.pages[0].description or "")     # IndexError: no page
-                return tf.asarray()
+                page = tf.pages[0]                          # IndexError: no page
+                desc.append(page.description or "")
+                return page.asarray()
 
-        data = read_image(path, "path", decode)
+        data = read_image(path, "path", decode, max_pixels=limits[0], max_bytes=limits[1])
         try:
-            header = json.loads(desc[0])
+            header = _parse_json(desc[0])
         except ValueError:
-            header = None
+            header = None                                   # not ours: a plain mosaic
         if isinstance(header, dict) and header.get("format") == _FORMAT_TAG:
-            return _checked(path, lambda: RawFrame(data, _pattern(header), header["bit_depth"],
-                                                   meta=header.get("meta", {})))
+            return _checked(path, lambda: _frame_from(_check_header(header), data))
     if pattern is not None and suffix in (".tif", ".tiff", ".png"):
         if bit_depth is None:
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
-        data = read_image(path, "path")
+        data = read_image(path, "path", max_pixels=limits[0], max_bytes=limits[1])
         return RawFrame(data, get_pattern(pattern), bit_depth, meta={"source": str(path)})
-    return read_raw(path, **raw_kwargs)
+    if bit_depth is not None:
+        raw_kwargs["bit_depth"] = bit_depth           # the working bit depth of a raw file
+    return read_raw(path, max_pixels=limits[0], max_bytes=limits[1], **raw_kwargs)
+
+
+#: the arrays of an NPZ frame (anything else in the archive is not read)
+_NPZ_KEYS = ("header", "data", "reference", "tof_taps", "tof_frequencies", "tof_sites_rows",
+             "tof_sites_cols", "tof_depth_true", "tof_valid", "tof_saturated")
+#: the JSON types of the header's fields: (key, types, required, what)
+_HEADER_FIELDS = (("pattern", (str,), True, "a tile string"),
+                  ("pattern_name", (str, type(None)), False, "a string"),
+                  ("bayer", (str, type(None)), False, "a Bayer phase"),
+                  ("bit_depth", (int,), True, "an integer"),
+                  ("meta", (dict,), False, "an object"))
+_TOF_FIELDS = (("block", (int,), True, "an integer"), ("bit_depth", (int,), True, "an integer"),
+               ("shape", (list,), True, "a list [rows, cols]"),
+               ("sensor", (dict,), True, "an object"), ("meta", (dict,), False, "an object"))
+
+
+def _parse_json(text):
+    try:
+        return json.loads(text)
+    except RecursionError:
+        raise ValueError("the header is nested too deeply") from None
+    except ValueError as exc:
+        raise ValueError(f"the header is not JSON: {exc}") from None
+
+
+def _check_header(header):
+    """The header of a frame file, its fields type-checked (a ValueError says which is wrong)."""
+    _check_fields(header, _HEADER_FIELDS, "header")
+    if "tof" in header:
+        _check_fields(header["tof"], _TOF_FIELDS, "header's 'tof'")
+        shape = header["tof"]["shape"]
+        if len(shape) != 2 or not all(type(v) is int for v in shape):
+            raise ValueError(f"the header's 'tof' shape is {shape!r}, expected [rows, cols]")
+    return header
+
+
+def _check_fields(obj, fields, where):
+    if not isinstance(obj, dict):
+        raise ValueError(f"the {where} is a JSON {type(obj).__name__}, not an object")
+    for key, types, required, what in fields:
+        if key not in obj:
+            if required:
+                raise KeyError(key)
+            continue
+        v = obj[key]
+        if not isinstance(v, types) or isinstance(v, bool):
+            raise ValueError(f"the {where} field {key!r} is {v!r:.40}, expected {what}")
+
+
+def _frame_from(header, data, reference=None, tof=None):
+    return RawFrame(data, _pattern(header), header["bit_depth"], reference=reference, tof=tof,
+                    meta=header.get("meta", {}))
 
 
 def _checked(path, build):
@@ -144,48 +206,88 @@ def _checked(path, build):
     except KeyError as exc:
         raise ValueError(f"path: {path} is not a readable rgbz-fast frame (missing key "
                          f"{exc})") from None
-    except (ValueError, TypeError) as exc:
+    except (ValueError, TypeError, OverflowError, RecursionError) as exc:
+        if str(exc).startswith("path: "):                  # a size limit: already named
+            raise ValueError(str(exc)) from None
         raise ValueError(f"path: {path} is not a readable rgbz-fast frame ({exc})") from None
 
 
-def _load_npz(path):
-    """An NPZ frame; every way the file can be broken is a ValueError naming it."""
+def _load_npz(path, limits):
+    """An NPZ frame; every way the file can be broken is a ValueError naming it.
+
+    The archive is read into memory (at most ``max_bytes``) and each member's
+    ``.npy`` header is read before its array: a member that declares more
+    than the limits, or more than its own uncompressed size in the zip
+    directory (a zip bomb), is refused before anything is allocated.
+    """
     import zipfile
     import zlib
 
-    broken = (zipfile.BadZipFile, zlib.error, EOFError, OSError)
+    broken = (zipfile.BadZipFile, zlib.error, EOFError, OSError, NotImplementedError)
+    blob = read_file(path, "path", max_bytes=limits[1])
 
     def build():
-        # np.load(path) leaks the file it opened when the archive is broken: open it here
-        with open(path, "rb") as fh:
-            if fh.read(2) != b"PK":          # else np.load tries an .npy array, then a pickle
-                raise ValueError("not an NPZ archive: no zip signature")
-            fh.seek(0)
+        if blob[:2] != b"PK":          # else np.load tries an .npy array, then a pickle
+            raise ValueError("not an NPZ archive: no zip signature")
+        try:
+            zf = zipfile.ZipFile(io.BytesIO(blob))
+        except broken + (ValueError,) as exc:
+            raise ValueError(f"not an NPZ archive: {type(exc).__name__}: {exc}") from None
+        with zf:
+            members = {n[:-4]: zf.getinfo(n) for n in zf.namelist() if n.endswith(".npy")}
+            if "header" not in members or "data" not in members:
+                raise ValueError("no header/data")
+            keys = [k for k in _NPZ_KEYS if k in members]
+            declared = sum(members[k].file_size for k in keys)
+            if declared > limits[1]:
+                raise ValueError(f"its arrays declare {declared} bytes uncompressed, more than "
+                                 f"the limit of {limits[1]} bytes; raise it with max_bytes=, "
+                                 f"--max-bytes or {MAX_BYTES_ENV}")
             try:
-                z = np.load(fh, allow_pickle=False)
-            except broken + (ValueError,) as exc:
-                raise ValueError(f"not an NPZ archive: {type(exc).__name__}: {exc}") from None
-            with z:
-                if "header" not in z or "data" not in z:
-                    raise ValueError("no header/data")
-                try:
-                    try:
-                        header = json.loads(str(z["header"]))
-                    except ValueError as exc:
-                        raise ValueError(f"the header is not JSON: {exc}") from None
-                    if not isinstance(header, dict):
-                        raise ValueError(f"the header is a JSON {type(header).__name__}, "
-                                         "not an object")
-                    ref = z["reference"] if "reference" in z else None
-                    tof = _load_tof(z, header["tof"]) if "tof_taps" in z else None
-                    data = z["data"]
-                except broken as exc:
-                    raise ValueError(f"a damaged archive member: {type(exc).__name__}: "
-                                     f"{exc}") from None
-        return RawFrame(data, _pattern(header), header["bit_depth"], reference=ref, tof=tof,
-                        meta=header.get("meta", {}))
+                z = {k: _npz_array(zf, members[k], path, limits) for k in keys}
+            except broken as exc:
+                raise ValueError(f"a damaged archive member: {type(exc).__name__}: "
+                                 f"{exc}") from None
+        h = z["header"]
+        if h.dtype.kind not in "US" or h.ndim != 0:
+            raise ValueError(f"the header is a {h.dtype} array of shape {h.shape}, not a "
+                             "JSON string")
+        header = _check_header(_parse_json(str(h)))
+        tof = None
+        if "tof_taps" in z:
+            if "tof" not in header:
+                raise KeyError("tof")
+            tof = _load_tof(z, header["tof"])
+        return _frame_from(header, z["data"], z.get("reference"), tof)
 
     return _checked(path, build)
+
+
+def _npz_array(zf, info, path, limits):
+    """One ``.npy`` member of an archive, its declared size checked before it is read."""
+    with zf.open(info) as fh:
+        try:
+            version = np.lib.format.read_magic(fh)
+            if version == (1, 0):
+                shape, fortran, dtype = np.lib.format.read_array_header_1_0(fh)
+            elif version == (2, 0):
+                shape, fortran, dtype = np.lib.format.read_array_header_2_0(fh)
+            else:
+                raise ValueError(f"unsupported .npy version {version}")
+        except (ValueError, SyntaxError, TypeError) as exc:
+            raise ValueError(f"member {info.filename}: {exc}") from None
+        if dtype.hasobject:
+            raise ValueError(f"member {info.filename} holds Python objects")
+        nbytes = int(np.prod(shape, dtype=object)) * dtype.itemsize
+        if nbytes > info.file_size:
+            raise ValueError(f"member {info.filename} declares {nbytes} bytes of data in "
+                             f"{info.file_size} bytes")
+        check_size(shape, dtype.itemsize, path, "path", limits=limits)
+        raw = fh.read(nbytes)
+    if len(raw) != nbytes:
+        raise ValueError(f"member {info.filename} is truncated")
+    arr = np.frombuffer(raw, dtype=dtype)
+    return arr.reshape(shape[::-1]).T if fortran else arr.reshape(shape)
 
 
 def _pattern(header):

@@ -29,7 +29,7 @@ import numpy as np
 from .._frame import RawFrame, raw_clip_level
 from .._patterns import BAYER_PHASES, Pattern, Z, bayer, mask1, mask2, rows
 from .._validate import check_bit_depth, check_dtype, check_number
-from ._files import read_image
+from ._files import check_size, read_file, read_image, read_limits
 
 __all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask", "frame_clip_level",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS"]
@@ -58,7 +58,7 @@ _OUT_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
 # --------------------------------------------------------------------------
 def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level=None,
              shape=None, bit_depth_in=None, byteorder="<", bit_depth=11, downsample=1,
-             crop_even=False, dtype=np.uint16, reader=None):
+             crop_even=False, dtype=np.uint16, reader=None, max_pixels=None, max_bytes=None):
     """Read a raw Bayer file and normalise it to a :class:`~rgbz_fast.RawFrame`.
 
     Parameters
@@ -106,6 +106,9 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     reader : {"libraw", "image", "headerless"}, optional
         Force a reader instead of dispatching on the extension (e.g. a
         Panasonic ``.raw`` camera file needs ``reader="libraw"``).
+    max_pixels, max_bytes : int, optional
+        Size limits of the read (see :func:`read_limits`): the file's size
+        and the frame it declares, checked before decoding.
 
     Returns
     -------
@@ -132,7 +135,9 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         The file does not exist.
     ValueError
         A missing phase or level (naming the parameter), a headerless file
-        whose size does not match ``shape``, an unknown extension, a file
+        whose size does not match ``shape``, an unknown extension, a path
+        that is not a regular file (a FIFO, a device, a folder), a file
+        larger than the limits, a file
         LibRaw, the PNG or the TIFF decoder cannot read (``"path: ..."``), a
         non-Bayer sensor (X-Trans, CMYG), white level not above black.
 
@@ -186,15 +191,14 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     if kind != "headerless" and shape is not None:
         raise ValueError(f"shape: only headerless files take a shape; {path.name} is read "
                          f"with the {kind!r} reader")
-    if not path.is_file():
-        raise FileNotFoundError(f"path: no such file: {path}")
+    limits = read_limits(max_pixels, max_bytes)
 
     if kind == "libraw":
-        data, info = _read_libraw(path)
+        data, info = _read_libraw(path, limits)
     elif kind == "image":
-        data, info = _read_image(path)
+        data, info = _read_image(path, limits)
     else:
-        data, info = _read_headerless(path, shape, byteorder), {}
+        data, info = _read_headerless(path, shape, byteorder, limits), {}
 
     # arguments override the file
     if phase is None:
@@ -474,14 +478,15 @@ def _reader_for(path, reader):
                      f"{'/'.join(HEADERLESS_EXTENSIONS)}, or pass reader=")
 
 
-def _read_libraw(path):
+def _read_libraw(path, limits):
     try:
         import rawpy
     except ImportError:
         raise ImportError(f"reading camera raw files such as {path.name} needs rawpy (LibRaw): "
                           "pip install rawpy  (or pip install rgbz-fast[raw])") from None
+    blob = read_file(path, "path", max_bytes=limits[1])
     try:
-        raw_ctx = rawpy.imread(str(path))
+        raw_ctx = rawpy.imread(io.BytesIO(blob))
     except rawpy.LibRawError as exc:
         raise ValueError(f"path: LibRaw cannot read {path.name}: "
                          f"{type(exc).__name__}: {exc}") from None
@@ -502,21 +507,22 @@ def _read_libraw(path):
         bl = raw.black_level_per_channel      # indexed by colour index
         black = [float(bl[int(i)]) for i in pattern.ravel()]
         wl = raw.white_level
+        check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
         data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
-    make, model = _tiff_make_model(path)
+    make, model = _tiff_make_model(blob)
     info = {"phase": letters, "black_level": black, "white_level": float(wl),
             "make": make, "model": model}
     return data, info
 
 
-def _tiff_make_model(path):
+def _tiff_make_model(blob):
     """Make and Model from the TIFF IFD0 most raw formats are built on, or (None, None)."""
     try:
         import tifffile
 
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            with tifffile.TiffFile(path) as tif:
+            with tifffile.TiffFile(io.BytesIO(blob)) as tif:
                 tags = tif.pages[0].tags
                 make, model = tags.get("Make"), tags.get("Model")
                 return (str(make.value).strip() if make is not None else None,
@@ -525,14 +531,8 @@ def _tiff_make_model(path):
         return None, None
 
 
-def _read_image(path):
-    decode = None
-    if path.suffix.lower() in (".tif", ".tiff"):
-        import tifffile
-
-        def decode(blob):
-            return tifffile.imread(io.BytesIO(blob), key=0)   # the first page only
-    data = read_image(path, "path", decode)
+def _read_image(path, limits):
+    data = read_image(path, "path", max_pixels=limits[0], max_bytes=limits[1])
     if data.ndim != 2:
         raise ValueError(f"{path.name}: expected a single-channel Bayer mosaic, got an image "
                          f"of shape {data.shape} (a demosaicked RGB image is not raw data)")
@@ -541,7 +541,7 @@ def _read_image(path):
     return np.ascontiguousarray(data, dtype=np.uint16), {}
 
 
-def _read_headerless(path, shape, byteorder):
+def _read_headerless(path, shape, byteorder, limits):
     if shape is None:
         raise ValueError(f"shape: the headerless file {path.name} needs shape=(rows, cols)")
     try:
@@ -550,14 +550,16 @@ def _read_headerless(path, shape, byteorder):
         raise ValueError(f"shape: expected (rows, cols), got {shape!r}") from None
     if rows_ < 1 or cols < 1:
         raise ValueError(f"shape: expected positive (rows, cols), got {shape!r}")
-    size = path.stat().st_size
+    check_size((rows_, cols), 2, path, "path", limits=limits)
+    blob = read_file(path, "path", max_bytes=limits[1])
+    size = len(blob)
     expected = rows_ * cols * 2
     if size != expected:
         raise ValueError(f"shape: {path.name} holds {size} bytes, but {rows_}x{cols} uint16 "
                          f"pixels need {expected} (rows * cols * 2); check shape and that "
                          "the file has no header")
-    data = np.fromfile(path, dtype=np.dtype(byteorder + "u2")).reshape(rows_, cols)
-    return data.astype(np.uint16)        # native byte order
+    data = np.frombuffer(blob, dtype=np.dtype(byteorder + "u2")).reshape(rows_, cols)
+    return data.astype(np.uint16)        # native byte order, a copy
 
 
 # --------------------------------------------------------------------------

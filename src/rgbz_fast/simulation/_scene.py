@@ -44,13 +44,14 @@ from __future__ import annotations
 
 import math
 import re
+from io import BytesIO
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from .._validate import check_choice, check_image, check_number
-from ..io._files import read_image
+from ..io._files import check_size, read_file, read_image, read_limits, rgb_image
 
 __all__ = [
     "Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
@@ -433,33 +434,30 @@ def _int_to_unit(img, name):
 # --------------------------------------------------------------------------
 def _require_file(path, what):
     p = Path(path)
-    if not p.is_file():
+    if not p.exists():
         raise FileNotFoundError(f"{what}: {p} not found")
-    return p
+    return p                      # a folder, FIFO or device: the reader says what it is
 
 
 def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflectance=None,
-               name=None):
+               name=None, grey=False):
     """Load a plain image file (PNG, TIFF, JPEG, ...) as an RGB :class:`Scene`.
 
-    8- and 16-bit files are sRGB-encoded and linearised; float TIFFs are
-    linear. An alpha channel is dropped. A grey image is rejected (a colour
-    sensor needs colour).
+    8- and 16-bit files are sRGB-encoded and linearised (16-bit PNGs at their
+    full precision); float TIFFs are linear. An alpha channel is dropped. A
+    grey image is refused unless ``grey=True`` (see :func:`rgbz_fast.io.rgb_image`).
 
     Raises
     ------
     FileNotFoundError
         If the file does not exist.
     ValueError
-        If it is not an RGB(A) image.
+        If it is not an RGB(A) image (or a grey one with ``grey=True``), is
+        not a regular file, or is larger than the read limits
+        (:func:`rgbz_fast.io.read_limits`).
     """
     p = _require_file(path, "path")
-    img = read_image(p, "path")
-    if img.ndim == 3 and img.shape[2] == 4:
-        img = img[..., :3]
-    if img.ndim != 3 or img.shape[2] != 3:
-        raise ValueError(f"path: {p.name} holds an image of shape {img.shape}; expected RGB "
-                         "(H, W, 3) or RGBA")
+    img = rgb_image(read_image(p, "path"), p, grey=grey)
     return Scene.from_rgb(img, encoding=encoding, depth=depth, depth_valid=depth_valid,
                           ir_reflectance=ir_reflectance, name=name or p.stem,
                           meta={"source": str(p)})
@@ -516,14 +514,22 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         cube = np.stack(bands, axis=-1)
         meta["band_files"] = [f.name for f in files]
         file_wl = None
-    elif p.is_file():
+    elif p.exists():                       # a FIFO or a device: read_file says what it is
         from scipy import io as sio
 
+        blob = read_file(p, "path")
         try:
-            mat = sio.loadmat(p)
+            limits = read_limits()
+            for var, shape, kind in sio.whosmat(BytesIO(blob)):   # headers only
+                check_size(shape, 8, p, "path", limits=limits)
+            mat = sio.loadmat(BytesIO(blob))
         except NotImplementedError:
             raise ValueError(f"path: {p.name} is a MATLAB v7.3 (HDF5) file; save it with "
                              "-v7 or read it with h5py and use Scene.from_spectral") from None
+        except ValueError as exc:
+            if str(exc).startswith("path: "):             # a size limit
+                raise
+            raise ValueError(f"path: cannot read {p} as a MATLAB .mat file ({exc})") from None
         except Exception as exc:
             raise ValueError(f"path: cannot read {p} as a MATLAB .mat file ({exc})") from None
         arrays = {k: v for k, v in mat.items() if not k.startswith("__")}
@@ -560,7 +566,7 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
 
 
 def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BASELINE_M,
-              ir_reflectance=None, name=None):
+              ir_reflectance=None, name=None, grey=False):
     """Load a Middlebury-style RGB-D folder: ``rgb.png``, ``disp1.png``, ``dmin.txt``.
 
     The depth is ``Z = focal_px * baseline_m / (v + dmin)`` with ``v`` the
@@ -590,7 +596,7 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
     if missing:
         raise FileNotFoundError(f"folder: {d} lacks {', '.join(missing)} (an RGB-D scene "
                                 f"folder holds {', '.join(needed)})")
-    text = (d / "dmin.txt").read_text().strip()
+    text = read_file(d / "dmin.txt", "folder", max_bytes=4096).decode("utf-8", "replace").strip()
     try:
         dmin = float(text.split()[0])
     except (ValueError, IndexError):
@@ -598,11 +604,7 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
                          f"offset), got {text[:40]!r}") from None
     if not math.isfinite(dmin) or dmin < 0:
         raise ValueError(f"folder: dmin.txt gives {dmin}; expected a disparity offset >= 0")
-    rgb = read_image(d / "rgb.png", "folder")
-    if rgb.ndim == 3 and rgb.shape[2] == 4:
-        rgb = rgb[..., :3]
-    if rgb.ndim != 3 or rgb.shape[2] != 3:
-        raise ValueError(f"folder: rgb.png has shape {rgb.shape}; expected an RGB image")
+    rgb = rgb_image(read_image(d / "rgb.png", "folder"), d / "rgb.png", "folder", grey=grey)
     disp = read_image(d / "disp1.png", "folder")
     if disp.ndim == 3 and disp.shape[2] in (3, 4) and np.all(disp[..., 0:1] == disp[..., :3]):
         disp = disp[..., 0]
@@ -627,18 +629,20 @@ def load_scene(path, **kwargs):
     * a ``.mat`` file or a folder of PNG files -> :func:`load_spectral`;
     * an image file -> :func:`load_image`.
 
-    Keyword arguments go to the chosen loader.
+    Keyword arguments go to the chosen loader; ``grey`` (see
+    :func:`rgbz_fast.io.rgb_image`) to the RGB ones only.
     """
     p = Path(path)
+    grey = kwargs.pop("grey", False)
     if p.is_dir():
         if (p / "disp1.png").exists() or (p / "rgb.png").exists():
-            return load_rgbd(p, **kwargs)
+            return load_rgbd(p, grey=grey, **kwargs)
         return load_spectral(p, **kwargs)
     if not p.exists():
         raise FileNotFoundError(f"path: {p} not found")
     if p.suffix.lower() == ".mat":
         return load_spectral(p, **kwargs)
     if p.suffix.lower() in _IMAGE_SUFFIXES:
-        return load_image(p, **kwargs)
+        return load_image(p, grey=grey, **kwargs)
     raise ValueError(f"path: cannot tell what kind of scene {p.name} holds; expected an image "
                      "file, a .mat cube or a scene folder")

@@ -1,0 +1,201 @@
+"""The file primitives: bounded reads of regular files only, size limits checked from the
+headers before anything is decoded, 16-bit colour PNGs at full precision, atomic writes."""
+
+from __future__ import annotations
+
+import json
+import os
+
+import numpy as np
+import pytest
+from _support import frame_header, npy_bytes, write_npz
+
+import rgbz_fast as rz
+from rgbz_fast import io as rio
+
+cv2 = pytest.importorskip("cv2")
+
+
+def _never(blob):
+    raise AssertionError("the decoder ran although the header breaks the limits")
+
+
+# --------------------------------------------------------------------------- regular files only
+def test_fifo_device_and_folder_are_refused_before_reading(tmp_path):
+    """A FIFO named f.tif used to hang, /dev/zero read until MemoryError."""
+    fifo = tmp_path / "f.tif"
+    os.mkfifo(fifo)
+    for reader in (rio.read_file, rio.read_image, rio.load_frame, rio.read_raw):
+        with pytest.raises(ValueError, match=r"^path: .*f\.tif is a FIFO \(named pipe\), not a "
+                                             "regular file"):
+            reader(fifo)
+    with pytest.raises(ValueError, match="^path: /dev/zero is a character device"):
+        rio.read_raw("/dev/zero", reader="headerless", shape=(4, 4), phase="RGGB",
+                     black_level=0, white_level=1023)
+    with pytest.raises(ValueError, match="is a folder, not a regular file"):
+        rio.read_file(tmp_path)
+    with pytest.raises(FileNotFoundError, match="^path: no such file"):
+        rio.read_file(tmp_path / "missing.png")
+
+
+def test_scene_loaders_refuse_a_fifo(tmp_path):
+    from rgbz_fast.simulation import load_scene
+
+    for name in ("f.png", "f.mat"):
+        os.mkfifo(tmp_path / name)
+        with pytest.raises(ValueError, match="is a FIFO"):
+            load_scene(tmp_path / name)
+
+
+def test_read_file_is_bounded(tmp_path, monkeypatch):
+    f = tmp_path / "a.bin"
+    f.write_bytes(bytes(1000))
+    assert len(rio.read_file(f, max_bytes=1000)) == 1000
+    with pytest.raises(ValueError, match=r"^path: .*a\.bin is 1000 bytes, more than the limit of "
+                                         "999 bytes; raise it with max_bytes=, --max-bytes or "
+                                         "RGBZ_FAST_MAX_BYTES"):
+        rio.read_file(f, max_bytes=999)
+    monkeypatch.setenv("RGBZ_FAST_MAX_BYTES", "999")
+    with pytest.raises(ValueError, match="more than the limit of 999 bytes"):
+        rio.read_file(f)
+    monkeypatch.setenv("RGBZ_FAST_MAX_BYTES", "lots")
+    with pytest.raises(ValueError, match="^RGBZ_FAST_MAX_BYTES: expected a positive integer, "
+                                         "got 'lots'"):
+        rio.read_file(f)
+
+
+# --------------------------------------------------------------------------- size limits
+@pytest.mark.parametrize("suffix", [".png", ".tif", ".jpg", ".bmp"])
+def test_declared_size_is_checked_before_decoding(tmp_path, suffix):
+    """The limits apply to the size in the header: the decoder never runs on a file beyond them."""
+    import imageio.v3 as iio
+
+    path = tmp_path / f"img{suffix}"
+    iio.imwrite(path, np.zeros((40, 50, 3), np.uint8))
+    with pytest.raises(ValueError, match=r"declares a 40x50(x3)? image \(0\.0 megapixels\), more "
+                                         "than the limit of 1999 pixels; raise it with "
+                                         "max_pixels=, --max-pixels or RGBZ_FAST_MAX_PIXELS"):
+        rio.read_image(path, decode=_never, max_pixels=1999)
+    with pytest.raises(ValueError, match="more than the limit of 5999 bytes"):
+        rio.read_image(path, decode=_never, max_bytes=5999)
+    assert rio.read_image(path, max_pixels=2000).shape == (40, 50, 3)
+
+
+@pytest.fixture(scope="module")
+def huge_tiff(tmp_path_factory):
+    """A 400 kB deflate TIFF declaring 20000 x 20000 pixels (written tile by tile)."""
+    import tifffile
+
+    path = tmp_path_factory.mktemp("huge") / "big.tif"
+    tile = np.zeros((1024, 1024), np.uint8)
+    n = (-(-20000 // 1024)) ** 2
+    tifffile.imwrite(path, (tile for _ in range(n)), shape=(20000, 20000), dtype=np.uint8,
+                     tile=(1024, 1024), compression="zlib")
+    assert path.stat().st_size < 2_000_000
+    return path
+
+
+def test_deflate_tiff_declaring_400_megapixels_is_refused(huge_tiff, tmp_path):
+    want = "declares a 20000x20000 image (400.0 megapixels), more than the limit of 200000000"
+    for read in (rio.read_image, rio.load_frame,
+                 lambda p: rio.read_raw(p, phase="RGGB", black_level=0, white_level=255)):
+        with pytest.raises(ValueError, match=f"^path: .*{want.replace('(', '.').replace(')', '.')}"):
+            read(huge_tiff)
+    # raised, the limit lets it through to the decoder
+    with pytest.raises(ValueError, match="the decoder ran"):
+        rio.read_image(huge_tiff, decode=_never, max_pixels=400_000_000)
+
+
+def test_npz_zip_bomb_is_refused_from_the_zip_directory(tmp_path):
+    """An NPZ whose members inflate beyond max_bytes fails before any inflating."""
+    path = write_npz(tmp_path / "bomb.npz", header=frame_header(),
+                     data=npy_bytes((2048, 2048), np.uint16, bytes(2048 * 2048 * 2)))
+    assert path.stat().st_size < 20_000                   # 8 MB of zeros
+    with pytest.raises(ValueError, match=r"^path: .*bomb\.npz is not a readable rgbz-fast frame "
+                                         r"\(its arrays declare \d+ bytes uncompressed, more "
+                                         "than the limit of 1000000 bytes; raise it with "
+                                         "max_bytes="):
+        rio.load_frame(path, max_bytes=1_000_000)
+    assert rio.load_frame(path).shape == (2048, 2048)
+
+
+def test_npz_member_lying_about_its_shape_is_refused(tmp_path):
+    """A .npy header declaring 40000 x 40000 values in a 100-byte member allocates nothing."""
+    path = write_npz(tmp_path / "liar.npz", header=frame_header(),
+                     data=npy_bytes((40000, 40000), np.uint16, bytes(100)))
+    with pytest.raises(ValueError, match=r"\(member data\.npy declares 3200000000 bytes of data "
+                                         r"in \d+ bytes\)"):
+        rio.load_frame(path)
+
+
+def test_npz_512_tile_is_refused_at_once(tmp_path):
+    """A small NPZ whose pattern is a 512 x 512 tile cost 15 s and 660 MB; now a clear error."""
+    t = np.tile(np.array([[1, 0], [2, 1]]), (256, 256))
+    t[::3, ::5] = 3
+    tile = "/".join("".join("RGBZ"[c] for c in row) for row in t)
+    path = tmp_path / "tile.npz"
+    np.savez_compressed(path, header=np.array(json.dumps({"pattern": tile, "bit_depth": 11})),
+                        data=np.zeros((512, 512), np.uint16))
+    with pytest.raises(ValueError, match=r"\(tile: 512x512 sites, more than the largest tile "
+                                         r"\(32x32\)\)$"):
+        rio.load_frame(path)
+
+
+# --------------------------------------------------------------------------- 16-bit PNG
+@pytest.mark.parametrize("channels", [3, 4])
+def test_16_bit_colour_png_is_read_at_full_precision(tmp_path, channels):
+    """Pillow (imageio's PNG plugin) keeps the high byte of 16-bit colour PNGs only."""
+    rng = np.random.default_rng(channels)
+    img = rng.integers(0, 65536, (37, 53, channels), dtype=np.uint16)
+    path = tmp_path / "c16.png"
+    cv2.imwrite(str(path), img[..., [2, 1, 0, 3][:channels]])       # OpenCV writes BGR(A)
+    got = rio.read_image(path)
+    assert got.dtype == np.uint16
+    np.testing.assert_array_equal(got, img)
+    src = rio.ImageSource("c16", str(path))
+    np.testing.assert_array_equal(src.load(), img[..., :3])
+    from rgbz_fast.simulation import load_image
+
+    scene = load_image(path)
+    lin = rz.simulation.srgb_to_linear(img[..., :3] / 65535.0)
+    np.testing.assert_allclose(scene.image, lin, rtol=1e-12, atol=1e-15)
+
+
+def test_grey_images_are_refused_unless_asked_for(tmp_path):
+    """One policy for scenes and datasets: grey is refused, grey=True repeats it into RGB."""
+    import imageio.v3 as iio
+    from rgbz_fast.simulation import load_image
+
+    path = tmp_path / "g.png"
+    iio.imwrite(path, np.arange(64, dtype=np.uint8).reshape(8, 8))
+    for load in (lambda **k: load_image(path, **k).image,
+                 lambda **k: rio.ImageSource("g", str(path), **k).load()):
+        with pytest.raises(ValueError, match="is a grey image .8x8.; a colour sensor needs "
+                                             "colour: pass grey=True"):
+            load()
+        rgb = load(grey=True)
+        assert rgb.shape == (8, 8, 3) and np.all(rgb[..., 0] == rgb[..., 2])
+    assert all(s.grey for s in rio.folder_dataset(tmp_path, grey=True))
+
+
+# --------------------------------------------------------------------------- atomic writes
+def test_atomic_write_leaves_no_temporary_when_interrupted(tmp_path, monkeypatch):
+    """An interrupt (KeyboardInterrupt, or SystemExit from a SIGTERM handler) anywhere in the
+    write removes the temporary file and keeps the old one."""
+    target = tmp_path / "r.txt"
+    rio.atomic_write(target, "old")
+    real_fsync = os.fsync
+
+    def interrupted(fd):
+        raise SystemExit(143)
+
+    monkeypatch.setattr(os, "fsync", interrupted)
+    with pytest.raises(SystemExit):
+        rio.atomic_write(target, "new")
+    monkeypatch.setattr(os, "fsync", real_fsync)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.txt"]
+    assert target.read_text() == "old"
+    with pytest.raises(TypeError, match="^data: expected str or bytes, got int"):
+        rio.atomic_write(target, 5)
+    rio.atomic_write(target, "±")
+    assert target.read_bytes() == "±".encode()
