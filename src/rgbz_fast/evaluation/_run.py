@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import _patterns
 from .. import metrics as _metrics
+from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
 from .._validate import check_processes, check_workers
@@ -100,25 +101,16 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
                 test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
-                values.update(_image_metrics(ref_srgb, test_srgb, config))
+                values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
             if cdir:
                 _cache_write(cdir, config.key(p, m, source.is_raw), values)
             rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
     return rows
 
 
-def _image_metrics(ref, test, config):
-    out = {}
-    c = config.crop
-    if "cpsnr" in config.metrics:
-        out["cpsnr"] = _metrics.cpsnr(ref, test, data_range=255, crop=c)
-    if "ssim" in config.metrics:
-        out["ssim"] = _metrics.ssim(ref, test, data_range=255, crop=c)
-    if "ms_ssim" in config.metrics:
-        out["ms_ssim"] = _metrics.ms_ssim(ref, test, data_range=255, crop=c)
-    if "zipper" in config.metrics:
-        out["zipper"] = _metrics.zipper(ref, test, crop=c)
-    return out
+def _image_metrics(ref, test, config, workers):
+    """The colour metrics of ``config`` on one pair of 8-bit sRGB images (shared work)."""
+    return _colour_metrics(ref, test, config.image_metrics, 255, config.crop, workers)
 
 
 def _row(image, pattern, method, metric, value):
