@@ -52,9 +52,11 @@
 #define MT_SIMD_COUNT(a) MT_PRAGMA(omp simd reduction(+:a))
 
 /* Threads for `units` independent units of `work` operations each: the caller's `workers`
-   (<= 0: the OpenMP default), but no more than one thread per MT_MIN_WORK operations, so a
-   small image does not pay the start-up of a thread team that has nothing to do. */
-#define MT_MIN_WORK 200000.0
+   (<= 0: the OpenMP default), but no more than one thread per MT_MIN_WORK operations (about
+   a millisecond on one core), so that a small image does not pay the wake-up and the barrier
+   of threads that have next to nothing to do (the same rule as the Python layer's
+   MIN_PIXELS_PER_THREAD for the pixel kernels). */
+#define MT_MIN_WORK 2e6
 
 static int mt_threads(int workers, ptrdiff_t units, double work)
 {
@@ -341,6 +343,17 @@ int MT_ENTRY(rgbz_zipper_count)(int in_type, const void *ref, const void *test, 
         return RGBZ_EINVAL;
     int st;
     MT_DISPATCH(st, in_type, mt_zipper_count, ref, test, rows, cols, scale, delta, count,
+                workers)
+    return st;
+}
+
+int MT_ENTRY(rgbz_sq_diff_sum)(int in_type, const void *a, const void *b, ptrdiff_t rows,
+                               ptrdiff_t cols, ptrdiff_t channels, const uint8_t *mask,
+                               double *sum, int64_t *count, int workers)
+{
+    if (!a || !b || !sum || !count || rows < 1 || cols < 1 || channels < 1) return RGBZ_EINVAL;
+    int st;
+    MT_DISPATCH(st, in_type, mt_sq_diff_sum, a, b, rows, cols, channels, mask, sum, count,
                 workers)
     return st;
 }

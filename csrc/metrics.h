@@ -73,6 +73,18 @@ int rgbz_zipper_count(int in_type, const void *ref, const void *test, ptrdiff_t 
                       ptrdiff_t cols, double scale, double delta, int64_t *count, int workers);
 
 /*
+ * Sum of squared differences (the MSE of the PSNRs): a, b of in_type hold rows x cols pixels of
+ * `channels` elements each, C-contiguous. A pixel counts when mask is NULL or mask[r * cols + c]
+ * is nonzero (all its channels then count).
+ *   sum:   the sum of (a - b)^2 over the counted elements, exact for the integer types (summed
+ *          in 64-bit integers), in a fixed order for the float types;
+ *   count: the number of counted elements.
+ */
+int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, ptrdiff_t rows, ptrdiff_t cols,
+                     ptrdiff_t channels, const uint8_t *mask, double *sum, int64_t *count,
+                     int workers);
+
+/*
  * Instruction sets (metrics_dispatch.c). The kernels are compiled for each set the compiler
  * offers on x86-64 (AVX-512: F, VL, DQ, BW with 512-bit vectors; AVX2), and for the baseline;
  * every call runs the best one the CPU supports. All give the same results bit for bit (no

@@ -302,4 +302,68 @@ static int MT(mt_zipper_count)(const void *refv, const void *testv, ptrdiff_t ro
     return RGBZ_OK;
 }
 
+/* ------------------------------------------------------------------ squared differences */
+
+/* one row: the sum of squares of the counted elements (exact in int64 for integer types) and
+   their number */
+#if IN_IS_INT
+typedef int64_t MT(mt_acc);
+#else
+typedef double MT(mt_acc);
+#endif
+
+static MT(mt_acc) MT(mt_sq_row)(const IN_T *a, const IN_T *b, ptrdiff_t cols, ptrdiff_t ch,
+                                const uint8_t *mask, int64_t *n)
+{
+    MT(mt_acc) s = 0;
+    int64_t k = 0;
+    for (ptrdiff_t c = 0; c < cols; c++) {
+        if (mask && !mask[c]) continue;
+        k += ch;
+        for (ptrdiff_t q = c * ch; q < (c + 1) * ch; q++) {
+#if IN_IS_INT
+            const int64_t d = (int64_t)a[q] - (int64_t)b[q];
+#else
+            const double d = (double)a[q] - (double)b[q];
+#endif
+            s += d * d;
+        }
+    }
+    *n = k;
+    return s;
+}
+
+static int MT(mt_sq_diff_sum)(const void *av, const void *bv, ptrdiff_t rows, ptrdiff_t cols,
+                              ptrdiff_t ch, const uint8_t *mask, double *sum, int64_t *count,
+                              int workers)
+{
+    const IN_T *a = (const IN_T *)av, *b = (const IN_T *)bv;
+    MT(mt_acc) *rs = (MT(mt_acc) *)malloc((size_t)rows * sizeof(MT(mt_acc)));
+    int64_t *rn = (int64_t *)malloc((size_t)rows * sizeof(int64_t));
+    if (!rs || !rn) {
+        free(rs);
+        free(rn);
+        return RGBZ_ENOMEM;
+    }
+    int nt = mt_threads(workers, rows, 3.0 * (double)(cols * ch));
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt)
+#endif
+    for (ptrdiff_t r = 0; r < rows; r++)
+        rs[r] = MT(mt_sq_row)(a + r * cols * ch, b + r * cols * ch, cols, ch,
+                              mask ? mask + r * cols : NULL, &rn[r]);
+    MT(mt_acc) s = 0;
+    int64_t k = 0;
+    for (ptrdiff_t r = 0; r < rows; r++) {     /* the rows in order: no thread dependence */
+        s += rs[r];
+        k += rn[r];
+    }
+    *sum = (double)s;
+    *count = k;
+    free(rs);
+    free(rn);
+    return RGBZ_OK;
+}
+
 #undef MT

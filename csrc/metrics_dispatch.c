@@ -114,3 +114,11 @@ int rgbz_zipper_count(int in_type, const void *ref, const void *test, ptrdiff_t 
     MT_DISPATCH(rgbz_zipper_count, in_type, ref, test, rows, cols, scale, delta, count,
                 workers)
 }
+
+int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, ptrdiff_t rows, ptrdiff_t cols,
+                     ptrdiff_t channels, const uint8_t *mask, double *sum, int64_t *count,
+                     int workers)
+{
+    MT_DISPATCH(rgbz_sq_diff_sum, in_type, a, b, rows, cols, channels, mask, sum, count,
+                workers)
+}

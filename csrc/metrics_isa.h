@@ -24,7 +24,10 @@
         int in_type, const void *rgb, ptrdiff_t n, double scale, double *lab, int workers);   \
     int RGBZ_METRICS_ENTRY(rgbz_zipper_count, isa)(                                          \
         int in_type, const void *ref, const void *test, ptrdiff_t rows, ptrdiff_t cols,       \
-        double scale, double delta, int64_t *count, int workers);
+        double scale, double delta, int64_t *count, int workers);                              \
+    int RGBZ_METRICS_ENTRY(rgbz_sq_diff_sum, isa)(                                           \
+        int in_type, const void *a, const void *b, ptrdiff_t rows, ptrdiff_t cols,             \
+        ptrdiff_t channels, const uint8_t *mask, double *sum, int64_t *count, int workers);
 
 RGBZ_METRICS_DECLARE(generic)
 RGBZ_METRICS_DECLARE(avx2)

@@ -269,6 +269,9 @@ cdef extern from "metrics.h" nogil:
     int rgbz_zipper_count(int in_type, const void *ref, const void *test, Py_ssize_t rows,
                           Py_ssize_t cols, double scale, double delta, int64_t *count,
                           int workers)
+    int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, Py_ssize_t rows,
+                         Py_ssize_t cols, Py_ssize_t channels, const uint8_t *mask,
+                         double *sum, int64_t *count, int workers)
     int RGBZ_ISA_BEST, RGBZ_ISA_GENERIC, RGBZ_ISA_AVX2, RGBZ_ISA_AVX512
     int rgbz_metrics_isa()
     int rgbz_metrics_use_isa(int isa)
@@ -343,3 +346,19 @@ def zipper_count(const frame_t[:, :, ::1] ref, const frame_t[:, :, ::1] test, do
                                    ref.shape[1], scale, delta, &count, workers)
     _raise_for(status)
     return int(count)
+
+
+def sq_diff_sum(const frame_t[:, :, ::1] a, const frame_t[:, :, ::1] b,
+                const uint8_t[:, ::1] mask, int workers):
+    """(sum of (a - b)^2, number of elements) over the pixels of (rows, cols, channels) images
+    where ``mask`` (rows, cols) is nonzero, or over every pixel when ``mask`` is None."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef double total = 0.0
+    cdef int64_t count = 0
+    cdef const uint8_t *m = NULL if mask is None else &mask[0, 0]
+    with nogil:
+        status = rgbz_sq_diff_sum(in_type, &a[0, 0, 0], &b[0, 0, 0], a.shape[0], a.shape[1],
+                                  a.shape[2], m, &total, &count, workers)
+    _raise_for(status)
+    return total, int(count)

@@ -14,10 +14,23 @@ import numpy as np
 from scipy import ndimage as ndi
 
 __all__ = ["ssim_maps", "downsample2", "ssim", "ms_ssim", "to_lab", "zipper_lab",
-           "zipper_map", "zipper", "delta_e"]
+           "zipper_map", "zipper", "delta_e", "mse"]
 
 MS_SSIM_WEIGHTS = (0.0448, 0.2856, 0.3001, 0.2363, 0.1333)
 NEIGHBOURS = ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1))
+
+
+def mse(reference, test, mask=None):
+    """Mean of the squared differences over the elements where the (broadcast) mask is True."""
+    diff2 = (np.asarray(reference).astype(np.float64)
+             - np.asarray(test).astype(np.float64)) ** 2
+    if mask is None:
+        return float(diff2.mean())
+    m = np.asarray(mask)
+    if m.shape == diff2.shape[:2] and diff2.ndim == 3:
+        m = m[:, :, np.newaxis]
+    m = np.broadcast_to(m, diff2.shape)
+    return float(diff2[m].sum() / np.count_nonzero(m))
 
 
 def _channels_first(ref, tst, channel_axis=-1):

@@ -10,6 +10,8 @@ Tolerances, and why:
   (the same values bit for bit); only the final mean is summed in another order,
   which moves the score by ~1e-16 relative (measured below 2e-15).
 * the 2 x 2 decimation: equal bit for bit (the same four additions, same order).
+* the MSE of the PSNRs: integer images are summed exactly (equal to the exact
+  sum); float images to rtol 1e-13 (a fixed order instead of NumPy's pairwise).
 * CIELAB: 1e-12 absolute in L*, a*, b* (0..100 scale). colour's pow is NumPy's
   (SIMD on some CPUs), ours a cube root within 1 ulp, and colour's matrix product
   goes through BLAS (fused multiply-adds): the two differ by a few ulp (measured
@@ -32,7 +34,8 @@ from skimage.metrics import structural_similarity as sk_ssim
 
 import rgbz_fast as rz
 from rgbz_fast import _kernels
-from rgbz_fast.metrics import all_metrics, delta_e_map, ms_ssim, ssim, zipper
+from rgbz_fast.metrics import (all_metrics, cfa_psnr, cpsnr, cpsnr_pooled, delta_e_map,
+                               ms_ssim, ssim, zipper)
 from rgbz_fast.metrics._ssim import _downsample2
 
 SSIM_TOL = dict(rtol=1e-12, atol=0)
@@ -118,6 +121,38 @@ def test_ssim_on_chain_images_matches_reference_and_skimage():
     assert_allclose(ssim(ref, test, crop=8), sk, rtol=1e-9)
     assert_allclose(ms_ssim(ref, test, crop=8), ref_metrics.ms_ssim(ref, test, crop=8),
                     **SSIM_TOL)
+
+
+# ---------------------------------------------------------------- MSE (CFA PSNR, CPSNR)
+
+@pytest.mark.parametrize("shape, mask_shape", [((40, 52), (40, 52)), ((30, 20, 3), (30, 20)),
+                                               ((30, 20, 3), (30, 20, 3)), ((9, 7, 2), None)])
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+def test_cfa_psnr_mse_matches_reference(rng, shape, mask_shape, dtype):
+    from rgbz_fast.metrics._psnr import _sq_diff_sum
+
+    top = 2047 if dtype is np.uint16 else 255
+    a = (rng.random(shape) * top).astype(dtype)
+    b = (rng.random(shape) * top).astype(dtype)
+    mask = None if mask_shape is None else rng.random(mask_shape) < 0.3
+    want = ref_metrics.mse(a, b, mask)
+    assert_allclose(cfa_psnr(a, b, mask, data_range=top), 10 * np.log10(top ** 2 / want),
+                    rtol=1e-13)
+    if np.issubdtype(dtype, np.integer):            # exact: the sum of the int64 squares
+        flat = mask is not None and mask.ndim == 3   # one flag per element
+        args = [x.reshape(x.shape[0], -1) for x in (a, b, mask)] if flat else [a, b, mask]
+        total, count = _sq_diff_sum(*args, 2)
+        full = np.ones(a.shape, bool) if mask is None else np.broadcast_to(
+            mask if mask.shape == a.shape else mask[..., np.newaxis], a.shape)
+        d = a.astype(np.int64)[full] - b.astype(np.int64)[full]
+        assert total == int(np.sum(d * d)) and count == np.count_nonzero(full)
+
+
+def test_cpsnr_matches_reference_on_chain_images():
+    ref, test = _chain_pair(5)
+    want = 10 * np.log10(255 ** 2 / ref_metrics.mse(ref[8:-8, 8:-8], test[8:-8, 8:-8]))
+    assert_allclose(cpsnr(ref, test, crop=8), want, rtol=1e-13)
+    assert_allclose(cpsnr_pooled([ref, test], [test, ref], crop=8), want, rtol=1e-13)
 
 
 # ---------------------------------------------------------------- CIELAB

@@ -83,7 +83,7 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
         _check_ms_ssim_size(ref.shape[:2], len(MS_SSIM_WEIGHTS), crop)
     out = {}
     if "cpsnr" in metrics:
-        out["cpsnr"] = _psnr_from_mse(_rgb_mse(ref, tst, 0), peak)
+        out["cpsnr"] = _psnr_from_mse(_rgb_mse(ref, tst, 0, threads), peak)
     if want_ssim:
         x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
         ssim_value, ms_value = _ssim_and_ms_ssim(
