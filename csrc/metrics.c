@@ -302,9 +302,9 @@ static int64_t mt_zipper_row(mt_labrow ru, mt_labrow rm, mt_labrow rd, mt_labrow
     }
 
 /* ------------------------------------------------------------------ public entry points */
-int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y, ptrdiff_t planes, ptrdiff_t rows,
-                   ptrdiff_t cols, const double *weights, int ntaps, double c1, double c2,
-                   double *ssim_sum, double *cs_sum, int workers)
+int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y, ptrdiff_t planes,
+                             ptrdiff_t rows, ptrdiff_t cols, const double *weights, int ntaps,
+                             double c1, double c2, double *ssim_sum, double *cs_sum, int workers)
 {
     if (!x || !y || !weights || !ssim_sum || !cs_sum || planes < 1 || ntaps < 1
         || ntaps % 2 == 0 || ntaps > RGBZ_SSIM_MAX_TAPS || rows < ntaps || cols < ntaps)
@@ -317,8 +317,8 @@ int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y, ptrdiff_
     return st;
 }
 
-int MT_ENTRY(rgbz_downsample2)(int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows,
-                     ptrdiff_t cols, double *dst, int workers)
+int MT_ENTRY(rgbz_downsample2)(int in_type, const void *src, ptrdiff_t planes,
+                               ptrdiff_t rows, ptrdiff_t cols, double *dst, int workers)
 {
     if (!src || !dst || planes < 1 || rows < 1 || cols < 1) return RGBZ_EINVAL;
     int st;
@@ -326,8 +326,8 @@ int MT_ENTRY(rgbz_downsample2)(int in_type, const void *src, ptrdiff_t planes, p
     return st;
 }
 
-int MT_ENTRY(rgbz_srgb_to_lab)(int in_type, const void *rgb, ptrdiff_t n, double scale, double *lab,
-                     int workers)
+int MT_ENTRY(rgbz_srgb_to_lab)(int in_type, const void *rgb, ptrdiff_t n, double scale,
+                               double *lab, int workers)
 {
     if (!rgb || !lab || n < 0 || !(scale > 0.0)) return RGBZ_EINVAL;
     int st;
@@ -335,8 +335,9 @@ int MT_ENTRY(rgbz_srgb_to_lab)(int in_type, const void *rgb, ptrdiff_t n, double
     return st;
 }
 
-int MT_ENTRY(rgbz_zipper_count)(int in_type, const void *ref, const void *test, ptrdiff_t rows,
-                      ptrdiff_t cols, double scale, double delta, int64_t *count, int workers)
+int MT_ENTRY(rgbz_zipper_count)(int in_type, const void *ref, const void *test,
+                                ptrdiff_t rows, ptrdiff_t cols, double scale, double delta,
+                                int64_t *count, int workers)
 {
     if (!ref || !test || !count || rows < 3 || cols < 3 || !(scale >= 0.0)
         || !(delta >= 0.0))

@@ -277,7 +277,8 @@ static int MT(mt_zipper_count)(const void *refv, const void *testv, ptrdiff_t ro
             double *lin = buf + 18 * cols;
             mt_labrow rr[3], tr[3];
             for (int s = 0; s < 3; s++) {
-                double *rb = buf + (ptrdiff_t)(3 * s) * cols, *tb = buf + (ptrdiff_t)(9 + 3 * s) * cols;
+                double *rb = buf + (ptrdiff_t)(3 * s) * cols;
+                double *tb = buf + (ptrdiff_t)(9 + 3 * s) * cols;
                 rr[s] = (mt_labrow){rb, rb + cols, rb + 2 * cols};
                 tr[s] = (mt_labrow){tb, tb + cols, tb + 2 * cols};
             }

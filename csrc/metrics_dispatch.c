@@ -70,7 +70,8 @@ int rgbz_metrics_use_isa(int isa)
 }
 
 #if defined(RGBZ_METRICS_HAVE_AVX2)
-#define MT_CASE_AVX2(name, ...) case RGBZ_ISA_AVX2: return RGBZ_METRICS_ENTRY(name, avx2)(__VA_ARGS__);
+#define MT_CASE_AVX2(name, ...) \
+    case RGBZ_ISA_AVX2: return RGBZ_METRICS_ENTRY(name, avx2)(__VA_ARGS__);
 #else
 #define MT_CASE_AVX2(name, ...)
 #endif

@@ -362,3 +362,33 @@ def sq_diff_sum(const frame_t[:, :, ::1] a, const frame_t[:, :, ::1] b,
                                   a.shape[2], m, &total, &count, workers)
     _raise_for(status)
     return total, int(count)
+
+
+# ---------------------------------------------------------------------- sRGB encoding (srgb.c)
+cdef extern from "srgb.h" nogil:
+    int rgbz_oetf_prepare(int type, const void *x, void *p, Py_ssize_t n, int workers)
+    int rgbz_oetf_finish(int type, const void *x, const void *p, Py_ssize_t n, int bits,
+                         void *code, int workers)
+
+ctypedef fused code_t:
+    uint8_t
+    uint16_t
+
+
+def oetf_prepare(const rgb_t[::1] x, rgb_t[::1] p, int workers):
+    """p = 1 where the clipped x is on the OETF's linear segment, else the clipped x."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    with nogil:
+        status = rgbz_oetf_prepare(t, &x[0], &p[0], x.shape[0], workers)
+    _raise_for(status)
+
+
+def oetf_finish(const rgb_t[::1] x, const rgb_t[::1] p, code_t[::1] code, int workers):
+    """8- or 16-bit sRGB codes of x, p holding the power 1 / 2.4 of oetf_prepare's output."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef int bits = 8 if code_t is uint8_t else 16
+    with nogil:
+        status = rgbz_oetf_finish(t, &x[0], &p[0], x.shape[0], bits, &code[0], workers)
+    _raise_for(status)

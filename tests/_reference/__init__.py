@@ -8,5 +8,8 @@
   C kernels (csrc/metrics.c).
 
 The ToF kernels are checked against the vectorised NumPy twin
-``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit.
+``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit; the
+sRGB encoding kernels (csrc/srgb.c) against the colour chain's own NumPy
+stages (``srgb_oetf`` and ``_quantise``, which it runs when it keeps its
+stages), bit for bit (tests/isp/test_encode.py).
 """

@@ -17,9 +17,11 @@ Tolerances, and why:
   goes through BLAS (fused multiply-adds): the two differ by a few ulp (measured
   max 1.2e-13 on Kodak images).
 * the zipper percentage: equal. Its decisions (the closest neighbour, |psi| >
-  delta) only change when two values tie within a few ulp: ties of identical
-  colours are computed identically, and the tests below and the Kodak check of
-  docs/benchmarks.md found no other.
+  delta) only change when two values tie within a few ulp. Ties of identical
+  colours are computed identically; over the 240 pairs of the Kodak evaluation
+  one pixel differs, an exact tie of two different colours that colour-science's
+  rounding breaks against the raster-order rule (see
+  test_zipper_exact_tie_takes_the_first_neighbour_in_raster_order).
 """
 
 from __future__ import annotations
@@ -238,6 +240,23 @@ def test_zipper_lab_input_and_ties_match_reference(rng):
     for delta in (0.0, 1.0, 2.3, 5.0):
         assert zipper(lab, test, input="lab", delta=delta) == \
             ref_metrics.zipper_lab(lab, test, delta)
+
+
+def test_zipper_exact_tie_takes_the_first_neighbour_in_raster_order():
+    """Kodak kodim11, Mask2 SG, pixel (139, 312): centre (28, 13, 8), left neighbour
+    (28, 13, 9), bottom one (28, 13, 7). All three sit on the linear segments of the sRGB
+    EOTF and of CIELAB's f, so the two dE are equal exactly (0.40368506525549440596 to 25
+    digits in 50-digit arithmetic); eq. 30 with the raster-order rule takes the left one, as
+    the kernel does. colour-science's rounding makes the left one 4e-15 larger and takes the
+    bottom one: this is the one pixel of the 240 Kodak evaluation pairs where the two
+    zipper maps differ (docs/benchmarks.md)."""
+    far = (200, 200, 200)
+    ref = np.array([[far, far, far], [(28, 13, 9), (28, 13, 8), far],
+                    [far, (28, 13, 7), far]], dtype=np.uint8)
+    test = ref.copy()
+    test[2, 1] = (90, 13, 7)          # only the bottom neighbour changes
+    assert zipper(ref, test) == 0.0   # the left one is chosen: psi = 0
+    assert ref_metrics.zipper(ref, test) == 100.0     # colour's Lab: the bottom one
 
 
 @pytest.mark.parametrize("n, pattern, method", [(9, "mask1", "bi"), (19, "mask2", "sg"),
