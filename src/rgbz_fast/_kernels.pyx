@@ -254,3 +254,141 @@ def tof_depth_iq(const double[:, ::1] i, const double[:, ::1] q, const double[::
         return False
     _raise_for(status)
     return True
+
+
+# ---------------------------------------------------------------------- metrics (metrics.c)
+cdef extern from "metrics.h" nogil:
+    int RGBZ_SSIM_MAX_TAPS
+    int rgbz_ssim_sums(int in_type, const void *x, const void *y, Py_ssize_t planes,
+                       Py_ssize_t rows, Py_ssize_t cols, const double *weights, int ntaps,
+                       double c1, double c2, double *ssim_sum, double *cs_sum, int workers)
+    int rgbz_downsample2(int in_type, const void *src, Py_ssize_t planes, Py_ssize_t rows,
+                         Py_ssize_t cols, double *dst, int workers)
+    int rgbz_srgb_to_lab(int in_type, const void *rgb, Py_ssize_t n, double scale,
+                         double *lab, int workers)
+    int rgbz_zipper_count(int in_type, const void *ref, const void *test, Py_ssize_t rows,
+                          Py_ssize_t cols, double scale, double delta, int64_t *count,
+                          int workers)
+    int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, Py_ssize_t rows,
+                         Py_ssize_t cols, Py_ssize_t channels, const uint8_t *mask,
+                         double *sum, int64_t *count, int workers)
+    int RGBZ_ISA_BEST, RGBZ_ISA_GENERIC, RGBZ_ISA_AVX2, RGBZ_ISA_AVX512
+    int rgbz_metrics_isa()
+    int rgbz_metrics_use_isa(int isa)
+    int rgbz_metrics_isa_available(int isa)
+
+SSIM_MAX_TAPS = RGBZ_SSIM_MAX_TAPS
+#: the instruction sets the metric kernels are built for (csrc/metrics_dispatch.c)
+METRICS_ISAS = {"generic": RGBZ_ISA_GENERIC, "avx2": RGBZ_ISA_AVX2, "avx512": RGBZ_ISA_AVX512}
+
+
+def metrics_isa():
+    """Name of the instruction set the metric kernels run."""
+    cdef int isa = rgbz_metrics_isa()
+    return next(name for name, code in METRICS_ISAS.items() if code == isa)
+
+
+def metrics_isas_available():
+    """The instruction sets built and supported by this CPU, narrowest first."""
+    return [name for name, code in METRICS_ISAS.items() if rgbz_metrics_isa_available(code)]
+
+
+def metrics_use_isa(name=None):
+    """Run the metric kernels on instruction set ``name`` (None: the best). Not thread-safe:
+    for tests and benchmarks."""
+    _raise_for(rgbz_metrics_use_isa(RGBZ_ISA_BEST if name is None else METRICS_ISAS[name]))
+
+
+def ssim_sums(const frame_t[:, :, ::1] x, const frame_t[:, :, ::1] y,
+              const double[::1] weights, double c1, double c2, double[::1] ssim_sum,
+              double[::1] cs_sum, int workers):
+    """Per-plane sums of the SSIM and contrast-structure maps of planar (planes, rows, cols)
+    images over the windows wholly inside them (separable symmetric window ``weights``)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    with nogil:
+        status = rgbz_ssim_sums(in_type, &x[0, 0, 0], &y[0, 0, 0], x.shape[0], x.shape[1],
+                                x.shape[2], &weights[0], <int> weights.shape[0], c1, c2,
+                                &ssim_sum[0], &cs_sum[0], workers)
+    _raise_for(status)
+
+
+def downsample2(const frame_t[:, :, ::1] src, double[:, :, ::1] dst, int workers):
+    """2 x 2 mean decimation of planar (planes, rows, cols) -> (planes, ceil(rows / 2),
+    ceil(cols / 2)), an odd last row or column repeated."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    with nogil:
+        status = rgbz_downsample2(in_type, &src[0, 0, 0], src.shape[0], src.shape[1],
+                                  src.shape[2], &dst[0, 0, 0], workers)
+    _raise_for(status)
+
+
+def srgb_to_lab(const frame_t[:, ::1] rgb, double scale, double[:, ::1] lab, int workers):
+    """sRGB code values (n, 3) over ``scale`` -> CIELAB (n, 3), D65."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    with nogil:
+        status = rgbz_srgb_to_lab(in_type, &rgb[0, 0], rgb.shape[0], scale, &lab[0, 0],
+                                  workers)
+    _raise_for(status)
+
+
+def zipper_count(const frame_t[:, :, ::1] ref, const frame_t[:, :, ::1] test, double scale,
+                 double delta, int workers):
+    """Interior pixels of two (rows, cols, 3) images with |psi| > delta (sRGB over ``scale``,
+    or CIELAB when ``scale`` is 0)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int64_t count = 0
+    with nogil:
+        status = rgbz_zipper_count(in_type, &ref[0, 0, 0], &test[0, 0, 0], ref.shape[0],
+                                   ref.shape[1], scale, delta, &count, workers)
+    _raise_for(status)
+    return int(count)
+
+
+def sq_diff_sum(const frame_t[:, :, ::1] a, const frame_t[:, :, ::1] b,
+                const uint8_t[:, ::1] mask, int workers):
+    """(sum of (a - b)^2, number of elements) over the pixels of (rows, cols, channels) images
+    where ``mask`` (rows, cols) is nonzero, or over every pixel when ``mask`` is None."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef double total = 0.0
+    cdef int64_t count = 0
+    cdef const uint8_t *m = NULL if mask is None else &mask[0, 0]
+    with nogil:
+        status = rgbz_sq_diff_sum(in_type, &a[0, 0, 0], &b[0, 0, 0], a.shape[0], a.shape[1],
+                                  a.shape[2], m, &total, &count, workers)
+    _raise_for(status)
+    return total, int(count)
+
+
+# ---------------------------------------------------------------------- sRGB encoding (srgb.c)
+cdef extern from "srgb.h" nogil:
+    int rgbz_oetf_prepare(int type, const void *x, void *p, Py_ssize_t n, int workers)
+    int rgbz_oetf_finish(int type, const void *x, const void *p, Py_ssize_t n, int bits,
+                         void *code, int workers)
+
+ctypedef fused code_t:
+    uint8_t
+    uint16_t
+
+
+def oetf_prepare(const rgb_t[::1] x, rgb_t[::1] p, int workers):
+    """p = 1 where the clipped x is on the OETF's linear segment, else the clipped x."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    with nogil:
+        status = rgbz_oetf_prepare(t, &x[0], &p[0], x.shape[0], workers)
+    _raise_for(status)
+
+
+def oetf_finish(const rgb_t[::1] x, const rgb_t[::1] p, code_t[::1] code, int workers):
+    """8- or 16-bit sRGB codes of x, p holding the power 1 / 2.4 of oetf_prepare's output."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef int bits = 8 if code_t is uint8_t else 16
+    with nogil:
+        status = rgbz_oetf_finish(t, &x[0], &p[0], x.shape[0], bits, &code[0], workers)
+    _raise_for(status)

@@ -67,6 +67,25 @@ def check_finite(a, name):
         raise ValueError(f"{name}: holds {bad} NaN or infinite value(s); expected finite data")
 
 
+#: pixels (or other work units) per thread below which a kernel call takes fewer threads:
+#: a call on fewer pixels lasts well under a millisecond on one core, while each extra thread
+#: costs a wake-up and a barrier (tens of microseconds on an idle machine, up to a scheduler
+#: time slice, ~20 ms measured, when other processes hold the cores: docs/reports/benchmarks.md)
+MIN_PIXELS_PER_THREAD = 1 << 18
+
+
+def kernel_threads(threads, pixels, min_pixels=MIN_PIXELS_PER_THREAD):
+    """Threads for one kernel call on ``pixels``: at most ``threads`` (a checked count),
+    one per ``min_pixels``, at least 1. Results never depend on the thread count.
+
+    Examples
+    --------
+    >>> kernel_threads(8, 256 * 192), kernel_threads(8, 1008 * 756), kernel_threads(2, 4000 * 3000)
+    (1, 2, 2)
+    """
+    return max(1, min(int(threads), int(pixels) // int(min_pixels)))
+
+
 def _real(value):
     """``value`` as a Python number if it is a real number (bool excluded), else None."""
     if isinstance(value, (bool, np.bool_)):

@@ -2,8 +2,14 @@
 
 * :mod:`_reference.reconstruction` -- every reconstruction method, site by site
   (docs/guide/interpretation.md is its specification);
-* :mod:`_reference.defects` -- the first, full-frame defect correction.
+* :mod:`_reference.defects` -- the first, full-frame defect correction;
+* :mod:`_reference.metrics` -- SSIM, MS-SSIM, CIELAB and the zipper metric as
+  rgbz_fast.metrics computed them in NumPy, SciPy and colour-science before its
+  C kernels (csrc/metrics.c).
 
 The ToF kernels are checked against the vectorised NumPy twin
-``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit.
+``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit; the
+sRGB encoding kernels (csrc/srgb.c) against the colour chain's own NumPy
+stages (``srgb_oetf`` and ``_quantise``, which it runs when it keeps its
+stages), bit for bit (tests/isp/test_encode.py).
 """

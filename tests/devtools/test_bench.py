@@ -23,16 +23,19 @@ def _finite_positive(x):
 REFERENCE = Path(__file__).resolve().parents[1] / "_reference" / "reconstruction.py"
 
 
-def test_bench_quick_json(capsys, tmp_path):
-    # the slow NumPy reference belongs to the tests: the bench times it only when given
-    rc = bench.main(["--quick", "--json", "--quiet", "--repeat", "1", "--shape", "48x64",
+def _bench_json(capsys, tmp_path, *extra):
+    rc = bench.main(["--json", "--quiet", "--repeat", "1", "--shape", "48x64",
                      "--kernels", "sg mask1,bilinear mask2 float32,demosaic,tof",
                      "--no-memory", "--out", str(tmp_path), "--numpy-reference",
-                     str(REFERENCE)])
+                     str(REFERENCE), *extra])
     assert rc == 0
-    res = json.loads(capsys.readouterr().out)
-    assert set(res) >= {"machine", "frame", "results", "opencv", "memory", "targets", "repeat"}
-    assert res["frame"]["shape"] == [48, 64]
+    return json.loads(capsys.readouterr().out)
+
+
+def _check_speeds(res, tmp_path):
+    assert set(res) >= {"machine", "frame", "results", "opencv", "memory", "targets", "repeat",
+                        "warmup_calls", "quick", "verdict"}
+    assert res["frame"]["shape"] == [48, 64] and res["warmup_calls"] == 1
     assert res["machine"]["logical_cores"] >= 1 and res["machine"]["cpu_model"]
     labels = {(r["kernel"], r["method"], r["pattern"], r["precision"], r["exp"])
               for r in res["results"]}
@@ -46,25 +49,55 @@ def test_bench_quick_json(capsys, tmp_path):
             t = r["threads"][label]
             assert t["n"] == 1 and _finite_positive(t["mpix_s"])
             assert t["mpix_s_lo"] <= t["mpix_s"] <= t["mpix_s_hi"]
-        assert r["vs_numpy"] is None or _finite_positive(r["vs_numpy"])
-    # the NumPy reference given on the command line is timed
-    assert res["numpy_reference"]["available"]
-    sg = next(r for r in res["results"] if r["method"] == "sg" and r["exp"] == "auto")
-    assert _finite_positive(sg["vs_numpy"])
-    assert res["targets"]["target_mpix_s"] == 150.0
-    assert res["memory"] is None
-    # the ToF section: C (fused) beside NumPy on the frame's Mask1 Z measurements
+        assert r["threads"]["1"]["threads"] == 1
+        # a 48x64 frame is far below 2**18 pixels a thread: one thread for the pixel kernels
+        if r["kernel"] in ("reconstruct", "demosaic"):
+            assert r["threads"]["all"]["threads"] == 1
     tof = res["tof_sites"]
     assert tof["n_sites"] == 48 * 64 // 4 and tof["pattern"] == "mask1"
     for key in ("c_1", "c_all", "c_stages_all", "numpy"):
         assert _finite_positive(tof[key]["msites_s"]) and tof[key]["n"] == 1
-    assert _finite_positive(tof["x_numpy_all"]) and tof["target_x_numpy"] == 5.0
     assert tof["agreement"]["wraps_equal"] and tof["agreement"]["max_abs_depth_diff_m"] < 1e-9
-    assert res["targets"]["tof_target_met"] == tof["target_met"]
-    assert res["colour_chain"] is None                                 # --chain not given
+    assert res["memory"] is None and res["colour_chain"] is None
     assert json.loads((tmp_path / "bench.json").read_text())["frame"]["pixels"] == 48 * 64
-    assert "Mpix/s" in (tmp_path / "bench.txt").read_text()
-    assert "M measurements/s" in (tmp_path / "bench.txt").read_text()
+    return tof
+
+
+def test_bench_quick_is_a_smoke_test(capsys, tmp_path):
+    """--quick: speeds only; no ratio and no verdict, and the report says why."""
+    res = _bench_json(capsys, tmp_path, "--quick")
+    tof = _check_speeds(res, tmp_path)
+    assert res["quick"] and not res["verdict"]
+    assert res["numpy_reference"]["available"]
+    for r in res["results"]:
+        assert r["vs_numpy"] is None
+        assert all(r[f"vs_opencv_{k}_{t}"] is None for k in ("bilinear", "ea")
+                   for t in ("1", "all"))
+    assert res["targets"] == {}
+    assert tof["x_numpy_1"] is None and tof["x_numpy_all"] is None and tof["target_met"] is None
+    text = (tmp_path / "bench.txt").read_text()
+    assert text.startswith("Quick run: numbers not comparable, no verdict")
+    assert "1 warm-up call" in text and "Mpix/s" in text and "M measurements/s" in text
+    for word in ("xNumPy ", "xCV", "met", "NOT met", "target:", "x NumPy:"):
+        assert word not in text.replace("no xNumPy, xCV or target columns", "")
+
+
+def test_bench_small_frame_gives_ratios_but_no_verdict(capsys, tmp_path):
+    """A full run on a frame other than the target's 4000x3000: ratios, no verdict."""
+    res = _bench_json(capsys, tmp_path)
+    tof = _check_speeds(res, tmp_path)
+    assert not res["quick"] and not res["verdict"]
+    sg = next(r for r in res["results"] if r["method"] == "sg" and r["exp"] == "auto")
+    assert _finite_positive(sg["vs_numpy"])        # the NumPy reference given on the line
+    t = res["targets"]
+    assert t["target_mpix_s"] == 150.0 and t["target_met"] is None
+    assert _finite_positive(t["sg_mask1_float32_all_threads_mpix_s"])
+    assert _finite_positive(tof["x_numpy_all"]) and tof["target_x_numpy"] == 5.0
+    assert t["tof_target_met"] is None
+    text = (tmp_path / "bench.txt").read_text()
+    assert "no verdict: the target is defined on the 4000x3000 frame" in text
+    assert "xNumPy" in text and "Quick run" not in text
+    assert " met" not in text.replace("NOT met", "")
 
 
 def test_bench_colour_chain_section(capsys):
@@ -99,7 +132,7 @@ def test_measure_memory_tiny_frame():
 def test_bench_table_and_opencv_optional(capsys, monkeypatch, tmp_path):
     monkeypatch.setitem(__import__("sys").modules, "cv2", None)     # import cv2 -> ImportError
     monkeypatch.chdir(tmp_path)      # no reference is looked for in the current directory
-    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "48x64",
+    assert bench.main(["--quiet", "--repeat", "1", "--shape", "48x64",
                        "--kernels", "bilinear mask1 float64", "--no-memory"]) == 0
     out = capsys.readouterr().out
     assert "reconstruct bilinear" in out and "n/a" in out

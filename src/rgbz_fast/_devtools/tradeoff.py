@@ -24,6 +24,11 @@ polynomial ``exp="fast"`` for the methods that use one), it measures
 It draws the Pareto plot (PNG, matplotlib's Agg backend) and writes the table
 (Markdown) with a paragraph, computed from the numbers, on what each
 approximation costs.
+
+``--quick`` is a smoke test (two 128x128 crops, a 256x192 speed frame, two
+runs): its speeds are printed, labelled "quick run: numbers not comparable, no
+verdict", but no speed ratio between variants is summarised and no Pareto
+front is drawn from them.
 """
 
 from __future__ import annotations
@@ -35,6 +40,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import kernel_threads
 from ._common import (CliError, check_out_dir, check_workers_arg, common_parser, machine_info,
                       progress, run_main, write_json)
 
@@ -80,8 +86,12 @@ def pareto_front(points, tol=1e-3):
     return idx
 
 
+QUICK_NOTE = "quick run: numbers not comparable, no verdict"
+
+
 def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPEED_SHAPE,
-                 repeat=5, workers=None, quiet=True, dataset_name="skimage samples"):
+                 repeat=5, workers=None, quiet=True, dataset_name="skimage samples",
+                 quick=False):
     """Measure every variant; returns the JSON-able result dict.
 
     ``dataset``: a list of :class:`rgbz_fast.io.ImageSource`. Returns ``{"rows": [...], ...}``
@@ -90,7 +100,7 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     ``mpix_s_lo``/``hi`` (IQR), ``cfa_psnr`` and
     ``cpsnr`` (means over the images), ``max_abs_diff_dn`` and
     ``frac_diff`` (against float64 + libm) and ``pareto`` (on the front of
-    its pattern).
+    its pattern; None in a ``quick`` run, whose speeds rank nothing).
     """
     import rgbz_fast as rz
     from ..evaluation import EvalConfig, image_frames
@@ -165,10 +175,12 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
         sub = [r for r in rows if r["pattern"] == p]
         front = set(pareto_front([(r["mpix_s"], r["cfa_psnr"]) for r in sub]))
         for i, r in enumerate(sub):
-            r["pareto"] = i in front
-    return {"machine": machine_info(), "dataset": dataset_name,
+            r["pareto"] = None if quick else i in front
+    return {"machine": machine_info(), "dataset": dataset_name, "quick": bool(quick),
             "images": [src.name for src in sources], "speed_frame": list(speed_shape),
-            "repeat": repeat, "workers": workers, "bit_depth": bd, "rows": rows}
+            "repeat": repeat, "warmup_calls": 1, "workers": workers,
+            "threads_used": kernel_threads(workers, speed_shape[0] * speed_shape[1]),
+            "bit_depth": bd, "rows": rows}
 
 
 class _Crop:
@@ -216,10 +228,10 @@ def plot_tradeoff(res, path):
         for (prec, exp), mk in markers.items():
             ax.scatter([], [], marker=mk, color="grey", label=f"{prec}, exp={exp}")
         ax.set_xscale("log")
-        ax.set_xlabel(f"speed, Mpix/s, best of {res['repeat']} ({res['workers']} threads, "
+        ax.set_xlabel(f"speed, Mpix/s, best of {res['repeat']} ({_threads(res)}, "
                       f"{res['speed_frame'][1]}x{res['speed_frame'][0]} frame)")
         ax.set_ylabel(f"mean CFA PSNR, dB ({res['dataset']}, {len(res['images'])} images)")
-        ax.set_title(p)
+        ax.set_title(p + (f" ({QUICK_NOTE})" if res.get("quick") else ""))
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
@@ -249,12 +261,20 @@ def _findings(res):
             sp.append(r["mpix_s"] / base["mpix_s"])
         worst = max(sub, key=lambda r: r["max_abs_diff_dn"])
         frac = max(r["frac_diff"] for r in sub)
+        speed = (f" ({QUICK_NOTE} on speed)" if res.get("quick") else
+                 f"; speed x{min(sp):.2f} to x{max(sp):.2f}")
         out.append(
             f"* **{what}**: mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB "
             f"against float64 + libm; at most {frac * 100:.3g} % of the Z pixels of one variant "
             f"differ, by at most {worst['max_abs_diff_dn']:.0f} DN ({worst['method']} "
-            f"{worst['pattern']}); speed x{min(sp):.2f} to x{max(sp):.2f}.")
+            f"{worst['pattern']}){speed}.")
     return out
+
+
+def _threads(res):
+    used = res.get("threads_used", res["workers"])
+    return f"{used} thread{'s' if used > 1 else ''}" + (
+        "" if used == res["workers"] else f" (of {res['workers']}: one per 2**18 pixels)")
 
 
 def _db(v):
@@ -263,12 +283,15 @@ def _db(v):
 
 def format_markdown(res, png_name=None, command=None):
     m = res["machine"]
-    lines = ["# Speed/accuracy trade-off", "",
+    quick = [f"**{QUICK_NOTE.capitalize()}** (`--quick`: a smoke test; its speeds rank "
+             "nothing and no Pareto front is marked).", ""] if res.get("quick") else []
+    lines = ["# Speed/accuracy trade-off", ""] + quick + [
              "Generated by `rgbz-fast tradeoff` "
              + (f"(`{command}`)" if command else "") + f". Machine: {m['cpu_model']}, "
-             f"{m['logical_cores']} logical cores; {res['workers']} threads. Speed: frame "
+             f"{m['logical_cores']} logical cores; {_threads(res)}. Speed: frame "
              f"Mpix/s of `reconstruct` on a {res['speed_frame'][1]}x{res['speed_frame'][0]} "
              f"uint16 frame, best of {res['repeat']} runs interleaved across the variants "
+             f"after {res.get('warmup_calls', 1)} warm-up call each "
              "(median [IQR] beside it). Accuracy: noise-free "
              f"{res['bit_depth']}-bit mosaics of {len(res['images'])} linearised images "
              f"({res['dataset']}), mean CFA PSNR on every Z site and mean CPSNR of the 8-bit "
@@ -280,9 +303,9 @@ def format_markdown(res, png_name=None, command=None):
              "Pareto front of its mask (nothing both faster and more accurate).", ""]
     if png_name:
         lines += [f"![Pareto plot]({png_name})", ""]
-    lines += ["## What the approximations cost", ""] + _findings(res) + [
+    lines += ["## What the approximations cost", ""] + _findings(res) + ([""] if quick else [
         "", "Speed ratios between variants are within run-to-run noise on a shared machine "
-        "when they are close to 1; see the IQR column.", ""]
+        "when they are close to 1; see the IQR column.", ""])
     for p in sorted({r["pattern"] for r in res["rows"]}):
         lines += [f"## {p}", "", "| method | precision | exp | Mpix/s best | median [IQR] | "
                   "CFA PSNR (dB) | CPSNR (dB) | max Δ (DN) | pixels differing |",
@@ -302,7 +325,10 @@ def format_markdown(res, png_name=None, command=None):
 def format_text(res):
     head = f"{'pattern':7}  {'method':11}  {'prec':7}  {'exp':4}  {'Mpix/s':>7}  " \
            f"{'CFA PSNR':>8}  {'CPSNR':>7}  {'maxΔ':>5}  {'differ':>8}  pareto"
-    lines = [head, "-" * len(head)]
+    lines = ([QUICK_NOTE.capitalize() + " (a smoke test)"] if res.get("quick") else []) + [
+        f"speed: best of {res['repeat']} timed runs after {res.get('warmup_calls', 1)} warm-up "
+        f"call, {_threads(res)}, {res['speed_frame'][1]}x{res['speed_frame'][0]} frame",
+        head, "-" * len(head)]
     for r in res["rows"]:
         d = "-" if r["max_abs_diff_dn"] is None else f"{r['max_abs_diff_dn']:.0f}"
         f = "-" if r["frac_diff"] is None else f"{r['frac_diff'] * 100:.3g}%"
@@ -351,7 +377,8 @@ def main(argv=None):
             raise CliError(f"--repeat: expected a positive integer, got {repeat}")
         res = run_tradeoff(images, methods=methods, patterns=patterns,
                            speed_shape=QUICK_SPEED_SHAPE if args.quick else SPEED_SHAPE,
-                           repeat=repeat, workers=workers, quiet=args.quiet, dataset_name=name)
+                           repeat=repeat, workers=workers, quiet=args.quiet, dataset_name=name,
+                           quick=args.quick)
         command = "rgbz-fast tradeoff " + " ".join(sys.argv[1:] if argv is None else argv)
         res["command"] = command
         if out is not None:

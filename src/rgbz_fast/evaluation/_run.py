@@ -12,6 +12,7 @@ import numpy as np
 
 from .. import _patterns
 from .. import metrics as _metrics
+from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
 from .._validate import check_flag, check_processes, check_workers
@@ -44,7 +45,12 @@ def image_frames(img, pattern, config):
     integer images) and mosaicked noise-free at ``config.bit_depth``, or run
     through the sensor model (black level 0) when ``config.noise``.
     """
-    pattern = get_pattern(pattern)
+    return _frames(img, get_pattern(pattern), config, {})
+
+
+def _frames(img, pattern, config, memo):
+    """:func:`image_frames`, reusing from ``memo`` (one dict per image) the linear image and
+    the reference CFAs that the patterns of one image share."""
     if isinstance(img, RawFrame):
         return to_rgbz(img, _pattern_for(pattern.name, img.pattern.bayer_phase))
     if config.noise:
@@ -52,13 +58,19 @@ def image_frames(img, pattern, config):
         frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
                          noise=True)
         return frame, frame.reference
-    if np.issubdtype(img.dtype, np.integer):
-        lin = srgb_to_linear(img.astype(np.float64) / float(np.iinfo(img.dtype).max))
-    else:
-        lin = np.clip(img, 0, 1)
+    if "linear" not in memo:
+        if np.issubdtype(img.dtype, np.integer):
+            memo["linear"] = srgb_to_linear(img.astype(np.float64)
+                                            / float(np.iinfo(img.dtype).max))
+        else:
+            memo["linear"] = np.clip(img, 0, 1)
+    lin = memo["linear"]
     frame = mosaic(lin, pattern, config.bit_depth)
-    ref = mosaic(lin, pattern.bayer_pattern(), config.bit_depth).data
-    return frame, ref
+    references = memo.setdefault("reference", {})          # Bayer pattern -> CFA
+    bayer = pattern.bayer_pattern()
+    if bayer not in references:
+        references[bayer] = mosaic(lin, bayer, config.bit_depth).data
+    return frame, references[bayer]
 
 
 def evaluate_image(source, config, cache_dir=None, workers=1):
@@ -88,17 +100,17 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
         return rows
     img = source.load()
     chain = config.colour_isp()
+    memo, renders = {}, []
     for pname in dict.fromkeys(p for p, _ in todo):
-        frame, ref_cfa = image_frames(img, pname, config)
+        frame, ref_cfa = _frames(img, get_pattern(pname), config, memo)
         pattern = frame.pattern
         phase, bd = pattern.bayer_phase, frame.bit_depth
         z = frame.z_mask
         if config.image_metrics:
             # per pattern: a raw frame is cropped to a whole number of periods; the
-            # grey-world gains of the reference are reused on the RGB-Z path (Fig. 19)
-            ref_srgb, ref_stages = chain.render(ref_cfa, phase, bit_depth=bd, workers=workers,
-                                                return_stages=True)
-            gains = ref_stages["gains"]
+            # grey-world gains of the reference are reused on the RGB-Z path (Fig. 19).
+            # Patterns on one Bayer phase share their reference CFA, rendered once.
+            ref_srgb, gains = _reference_render(chain, ref_cfa, phase, bd, workers, renders)
         for p, m in todo:
             if p != pname:
                 continue
@@ -108,25 +120,28 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
                 test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
-                values.update(_image_metrics(ref_srgb, test_srgb, config))
+                values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
             if cdir:
                 _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
     return rows
 
 
-def _image_metrics(ref, test, config):
-    out = {}
-    c = config.crop
-    if "cpsnr" in config.metrics:
-        out["cpsnr"] = _metrics.cpsnr(ref, test, data_range=255, crop=c)
-    if "ssim" in config.metrics:
-        out["ssim"] = _metrics.ssim(ref, test, data_range=255, crop=c)
-    if "ms_ssim" in config.metrics:
-        out["ms_ssim"] = _metrics.ms_ssim(ref, test, data_range=255, crop=c)
-    if "zipper" in config.metrics:
-        out["zipper"] = _metrics.zipper(ref, test, crop=c)
-    return out
+def _reference_render(chain, cfa, phase, bit_depth, workers, renders):
+    """(sRGB image, white-balance gains) of a reference CFA, from ``renders`` (a list of
+    earlier (cfa, phase, bit_depth, image, gains)) when the same CFA was rendered before."""
+    for done in renders:
+        if done[1:3] == (phase, bit_depth) and np.array_equal(done[0], cfa):
+            return done[3], done[4]
+    image, stages = chain.render(cfa, phase, bit_depth=bit_depth, workers=workers,
+                                 return_stages=True)
+    renders.append((cfa, phase, bit_depth, image, stages["gains"]))
+    return image, stages["gains"]
+
+
+def _image_metrics(ref, test, config, workers):
+    """The colour metrics of ``config`` on one pair of 8-bit sRGB images (shared work)."""
+    return _colour_metrics(ref, test, config.image_metrics, 255, config.crop, workers)
 
 
 def _row(image, pattern, method, metric, value):

@@ -39,7 +39,8 @@ from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_imag
 from ._defects import DefectCorrection, correct_defects
 from ._demosaic import demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, _black_white,
-                      _quantise, correct_colour, fill_missing, srgb_oetf, white_balance)
+                      _encode, _quantise, correct_colour, fill_missing, srgb_oetf,
+                      white_balance)
 
 __all__ = ["ColourISP", "STAGES"]
 
@@ -206,7 +207,8 @@ class ColourISP:
         full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd,
                             workers=workers) if pat.has_z else fixed
         seconds["reconstruction"] = time.perf_counter() - t1
-        out, stages = self._render(full, pat.bayer_pattern(), black, white, gains, workers)
+        out, stages = self._render(full, pat.bayer_pattern(), black, white, gains, workers,
+                                   return_stages)
         if not return_stages:
             return out
         stages["seconds"] = {**seconds, **stages["seconds"]}
@@ -262,11 +264,15 @@ class ColourISP:
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
         black, white = _black_white(black_level, (1 << bd) - 1)
-        out, stages = self._render(data, pattern, black, white, gains, workers)
+        out, stages = self._render(data, pattern, black, white, gains, workers, return_stages)
         return (out, stages) if return_stages else out
 
-    def _render(self, full, bayer, black, white, gains, workers):
-        """White balance .. output of a validated complete CFA; (image, stages)."""
+    def _render(self, full, bayer, black, white, gains, workers, keep_stages=True):
+        """White balance .. output of a validated complete CFA; (image, stages).
+
+        Without ``keep_stages`` the stages are None, and the colour correction's clip,
+        the sRGB gamma and the quantisation run fused (:func:`._stages._encode`, the
+        same codes bit for bit) instead of keeping their float images."""
         dt = _PRECISIONS[self.precision]
         seconds = {}
         t0 = time.perf_counter()
@@ -283,6 +289,11 @@ class ColourISP:
         rgb = demosaic(balanced, bayer.bayer_phase, self.demosaicing.method,
                        mode=self.demosaicing.mode, dtype=dt, workers=workers)
         tick("demosaic")
+        if not keep_stages:
+            # the identity matrix: correct_colour would only clip, which _encode does
+            linear = rgb if self.colour_correction.matrix is None else \
+                correct_colour(rgb, self.colour_correction)
+            return _encode(linear, self.output_bits), None
         corrected = correct_colour(rgb, self.colour_correction)
         tick("colour_correction")
         encoded = srgb_oetf(corrected)

@@ -33,7 +33,8 @@ import numpy as np
 from .. import _kernels
 from .._deps import import_colour_demosaicing
 from .._patterns import BAYER_PHASES, CHANNELS, Pattern
-from .._validate import FRAME_DTYPES, check_choice, check_dtype, check_image, check_workers
+from .._validate import (FRAME_DTYPES, check_choice, check_dtype, check_image, check_workers,
+                         kernel_threads)
 
 __all__ = ["demosaic", "DEMOSAIC_METHODS", "DEMOSAIC_MODES"]
 
@@ -102,8 +103,9 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     dtype : {None, float32, float64}
         Output dtype. None: float64 for float64 input, float32 otherwise.
     workers : int, optional
-        Threads of the C kernel (None or -1: all cores). The result does not
-        depend on it. Ignored by the colour-demosaicing methods.
+        Threads of the C kernel at most (None or -1: all cores; one per 2**18
+        pixels at most). The result does not depend on it. Ignored by the
+        colour-demosaicing methods.
 
     Returns
     -------
@@ -145,7 +147,8 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         src = np.ascontiguousarray(src)
         out = np.empty(a.shape + (3,), out_dtype)
         codes = np.array([CHANNELS.index(c) for c in ph], np.int32)
-        _kernels.demosaic_malvar(src, out, codes, DEMOSAIC_MODES[mode], nthreads)
+        _kernels.demosaic_malvar(src, out, codes, DEMOSAIC_MODES[mode],
+                                 kernel_threads(nthreads, src.size))
         return out
 
     cd = _colour_demosaicing()

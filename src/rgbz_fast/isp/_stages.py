@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _kernels
 from .._patterns import get_pattern
 from .._validate import check_choice, check_dtype, check_flag, check_image, check_number
 from ..reconstruction import ReconstructParams, reconstruct
@@ -336,10 +337,45 @@ def _oetf_block(a, out):
 
 
 def srgb_encode(linear, bits=8):
-    """Linear RGB in [0, 1] -> 8- or 16-bit sRGB: ``floor(oetf(v) * (2**bits - 1) + 0.5)``."""
+    """Linear RGB in [0, 1] -> 8- or 16-bit sRGB: ``floor(oetf(v) * (2**bits - 1) + 0.5)``.
+
+    The values are clipped to [0, 1] first. The same codes as
+    ``_quantise(srgb_oetf(linear), bits)`` bit for bit, without their
+    frame-size temporaries (:func:`_encode`).
+    """
     if bits not in (8, 16) or isinstance(bits, bool):
         raise ValueError(f"bits: expected 8 or 16, got {bits!r}")
-    return _quantise(srgb_oetf(linear), bits)
+    a = check_image(linear, "linear")
+    return _encode(a.astype(a.dtype if a.dtype in (np.float32, np.float64) else np.float64,
+                            copy=False), bits)
+
+
+#: values per pass of :func:`_encode` (its scratch stays in cache)
+_ENCODE_BLOCK = 1 << 18
+
+
+def _encode(linear, bits):
+    """8- or 16-bit sRGB codes of float32/float64 linear values: the clip of
+    :func:`correct_colour`, :func:`srgb_oetf` and :func:`_quantise` bit for bit.
+
+    Two C passes (csrc/srgb.c) around NumPy's power, which stays the power of
+    :func:`srgb_oetf` (the same function on the same values): the first clips and
+    puts 1 where the linear segment applies, the second finishes the OETF and
+    quantises, with the same operations in the same order as the NumPy stages.
+    Blocks of 256 K values, so the one scratch block stays in cache.
+    """
+    x = np.ascontiguousarray(linear).reshape(-1)
+    t = x.dtype.type
+    code = np.empty(x.size, np.uint8 if bits == 8 else np.uint16)
+    scratch = np.empty(min(x.size, _ENCODE_BLOCK), x.dtype)
+    exponent = t(1 / 2.4)
+    for i in range(0, x.size, _ENCODE_BLOCK):
+        xs = x[i:i + _ENCODE_BLOCK]
+        ps = scratch[:xs.size]
+        _kernels.oetf_prepare(xs, ps, 1)
+        np.power(ps, exponent, out=ps)
+        _kernels.oetf_finish(xs, ps, code[i:i + _ENCODE_BLOCK], 1)
+    return code.reshape(np.shape(linear))
 
 
 def _quantise(encoded, bits):

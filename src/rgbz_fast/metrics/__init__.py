@@ -13,7 +13,10 @@ Two levels of assessment are used in the paper [1]_:
 Every function takes the reference first and the image under test second
 and works in float64 whatever the input dtype, so uint8 and float inputs
 holding the same values give the same results; every score is returned as a
-Python ``float``.
+Python ``float``. The arithmetic runs in C kernels (``csrc/metrics.c``:
+threads over rows, ``workers=``, with the same result for every thread count),
+checked against the former NumPy, SciPy and colour-science implementations
+(``tests/_reference/metrics.py``), scikit-image and colour-science.
 
 ``crop`` removes that many pixels from each border of the rows and columns
 before anything else is computed (the usual way to keep demosaicing border

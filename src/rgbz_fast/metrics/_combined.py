@@ -2,16 +2,22 @@
 
 from __future__ import annotations
 
-from .._validate import check_number
-from ._common import _check_crop, _check_integer_range, _check_rgb_pair, _crop_hw
-from ._psnr import cpsnr
-from ._ssim import ms_ssim, ssim
-from ._zipper import _to_lab, _zipper_lab
+import numpy as np
+
+from .._validate import check_number, check_workers
+from ._common import (_check_crop, _check_integer_range, _check_rgb_pair,
+                      _check_ssim_data_range, _crop_hw, _kernel_pair, _psnr_from_mse)
+from ._psnr import _rgb_mse
+from ._ssim import MS_SSIM_WEIGHTS, _check_ms_ssim_size, _ssim_and_ms_ssim
+from ._zipper import _zipper_percent
 
 __all__ = ["all_metrics"]
 
+#: the colour metrics, in the order of :func:`all_metrics`' dict
+COLOUR_METRICS = ("cpsnr", "ssim", "ms_ssim", "zipper")
 
-def all_metrics(reference_rgb, test_rgb, *, data_range=255, crop=0):
+
+def all_metrics(reference_rgb, test_rgb, *, data_range=255, crop=0, workers=None):
     """The four colour-image metrics of the paper's second assessment level.
 
     Parameters
@@ -25,6 +31,9 @@ def all_metrics(reference_rgb, test_rgb, *, data_range=255, crop=0):
         [0, 1]); the peak of the C-PSNR and :math:`L` of the SSIMs.
     crop : int, default 0
         Pixels removed from each border of the rows and columns first.
+    workers : int, optional
+        Threads of the C kernels (None or -1: every core); the results do not
+        depend on it.
 
     Returns
     -------
@@ -37,7 +46,8 @@ def all_metrics(reference_rgb, test_rgb, *, data_range=255, crop=0):
     Notes
     -----
     MS-SSIM needs a (cropped) image of at least 161 x 161 pixels; smaller
-    images raise ValueError rather than returning a partial dict.
+    images raise ValueError rather than returning a partial dict. The SSIM
+    is MS-SSIM's first scale, computed once for both.
 
     Examples
     --------
@@ -47,16 +57,38 @@ def all_metrics(reference_rgb, test_rgb, *, data_range=255, crop=0):
     >>> all_metrics(ref, ref)
     {'cpsnr': inf, 'ssim': 1.0, 'ms_ssim': 1.0, 'zipper': 0.0}
     """
-    ref, tst = _check_rgb_pair(reference_rgb, test_rgb, "reference_rgb", "test_rgb")
-    peak = check_number(data_range, "data_range", lo=0, lo_open=True)
-    _check_integer_range((ref, tst), ("reference_rgb", "test_rgb"), peak)
-    crop = _check_crop(crop, ref.shape[:2], minimum=3,
-                       what="a centre pixel with all eight neighbours")
+    return _colour_metrics(reference_rgb, test_rgb, COLOUR_METRICS, data_range, crop, workers,
+                           names=("reference_rgb", "test_rgb"))
+
+
+def _colour_metrics(reference, test, metrics, data_range, crop, workers,
+                    names=("reference", "test")):
+    """The colour metrics ``metrics`` (a subset of :data:`COLOUR_METRICS`) of one image pair,
+    with the defaults of the public functions: what :func:`all_metrics` and the dataset
+    evaluation compute. The pair is checked, cropped and converted once; SSIM and MS-SSIM
+    share their first scale."""
+    ref, tst = _check_rgb_pair(reference, test, *names)
+    want_ssim = "ssim" in metrics or "ms_ssim" in metrics
+    if want_ssim:
+        peak = _check_ssim_data_range(data_range)
+    else:
+        peak = check_number(data_range, "data_range", lo=0, lo_open=True)
+    _check_integer_range((ref, tst), names, peak)
+    threads = check_workers(workers)
+    crop = _check_crop(crop, ref.shape[:2], minimum=11 if want_ssim else 3,
+                       what="a centre pixel with all eight neighbours" if not want_ssim
+                       else "an image at least win_size=11 pixels wide")
     ref, tst = _crop_hw(ref, crop), _crop_hw(tst, crop)
-    return {
-        "cpsnr": cpsnr(ref, tst, data_range=peak),
-        "ssim": ssim(ref, tst, data_range=peak),
-        "ms_ssim": ms_ssim(ref, tst, data_range=peak),
-        "zipper": _zipper_lab(_to_lab(ref / peak, "srgb01"), _to_lab(tst / peak, "srgb01"),
-                              2.3),
-    }
+    if "ms_ssim" in metrics:
+        _check_ms_ssim_size(ref.shape[:2], len(MS_SSIM_WEIGHTS), crop)
+    out = {}
+    if "cpsnr" in metrics:
+        out["cpsnr"] = _psnr_from_mse(_rgb_mse(ref, tst, 0, threads), peak)
+    if want_ssim:
+        x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
+        ssim_value, ms_value = _ssim_and_ms_ssim(
+            x, y, peak, MS_SSIM_WEIGHTS if "ms_ssim" in metrics else None, threads)
+        out.update(ssim=ssim_value, ms_ssim=ms_value)
+    if "zipper" in metrics:
+        out["zipper"] = _zipper_percent(ref, tst, peak, 2.3, threads)
+    return {m: out[m] for m in metrics}

@@ -82,6 +82,32 @@ def _check_crop(crop, shape, minimum=1, what="a non-empty image"):
     return crop
 
 
+#: element types the metric kernels read as they are (csrc/metrics.h)
+_KERNEL_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
+                  np.dtype(np.float64))
+
+
+def _kernel_dtype(*dtypes):
+    """The dtype in which the metric kernels read arrays of `dtypes` together.
+
+    Their common dtype when it is uint8, uint16, float32 or float64 (bool
+    becomes uint8, float16 float32); any other integer or float type becomes
+    float64, the type of the computations, as in ``astype(np.float64)``.
+    """
+    dt = np.result_type(*dtypes)
+    if dt == np.bool_:
+        return np.dtype(np.uint8)
+    if dt == np.float16:
+        return np.dtype(np.float32)
+    return dt if dt in _KERNEL_DTYPES else np.dtype(np.float64)
+
+
+def _kernel_pair(a, b):
+    """`a` and `b` as C-contiguous arrays of one dtype the metric kernels read."""
+    dt = _kernel_dtype(a.dtype, b.dtype)
+    return np.ascontiguousarray(a, dtype=dt), np.ascontiguousarray(b, dtype=dt)
+
+
 def _psnr_from_mse(mse, peak):
     if mse == 0:
         return math.inf

@@ -4,15 +4,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import check_int, check_number
+from .. import _kernels
+from .._validate import check_int, check_number, check_workers
 from ._common import (_check_crop, _check_integer_range, _check_pair, _check_rgb_pair, _crop_hw,
-                      _psnr_from_mse)
+                      _kernel_pair, _psnr_from_mse)
 
 __all__ = ["cfa_psnr", "cpsnr", "cpsnr_pooled"]
 
 
 
-def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None):
+def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, workers=None):
     r"""PSNR of a reconstructed CFA image on the masked (reconstructed) sites.
 
     Parameters
@@ -31,6 +32,8 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None):
     bit_depth : int, optional
         Alternative to `data_range`: :math:`s = 2^b - 1`. Exactly one of
         `data_range` and `bit_depth` must be given.
+    workers : int, optional
+        Threads of the C kernel (None or -1: every core).
 
     Returns
     -------
@@ -50,7 +53,8 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None):
     The peak :math:`s` is never guessed, for integer or float input: the
     paper's raw frames are 11-bit values held in uint16 (or as floats), so a
     dtype-based default (65535 or 1.0) would be wrong. Integer images must lie
-    in [0, s].
+    in [0, s]. The squared differences are summed by a C kernel, exactly for
+    integer images (in 64-bit integers).
 
     References
     ----------
@@ -84,31 +88,44 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None):
     else:
         peak = check_number(data_range, "data_range", lo=0, lo_open=True)
         _check_integer_range((ref, tst), ("reference", "test"), peak)
-    diff2 = (ref.astype(np.float64) - tst.astype(np.float64)) ** 2
+    threads = check_workers(workers)
     if mask is None:
-        return _psnr_from_mse(float(diff2.mean()), peak)
+        total, count = _sq_diff_sum(ref, tst, None, threads)
+        return _psnr_from_mse(total / count, peak)
     m = np.asarray(mask)
     if m.dtype != np.bool_:
         raise TypeError(f"mask: expected a boolean array, got dtype {m.dtype}")
-    if m.shape == ref.shape[:2] and ref.ndim == 3:
-        m = m[:, :, np.newaxis]
-    elif m.shape != ref.shape:
+    if m.shape != ref.shape and not (m.shape == ref.shape[:2] and ref.ndim == 3):
         raise ValueError(f"mask: shape {m.shape} matches neither the image shape {ref.shape} "
                          f"nor its (rows, cols) {ref.shape[:2]}")
-    m = np.broadcast_to(m, ref.shape)
-    count = int(np.count_nonzero(m))
-    if count == 0:
+    if not m.any():
         raise ValueError("mask: selects no pixel; the PSNR of an empty set is undefined")
-    return _psnr_from_mse(float(diff2[m].sum() / count), peak)
+    if m.ndim == 3:                    # one flag per element: each element is a 'pixel'
+        ref, tst = ref.reshape(ref.shape[0], -1), tst.reshape(tst.shape[0], -1)
+        m = m.reshape(m.shape[0], -1)
+    total, count = _sq_diff_sum(ref, tst, m, threads)
+    return _psnr_from_mse(total / count, peak)
 
 
-def _rgb_mse(ref, tst, crop):
+def _sq_diff_sum(ref, tst, mask, threads):
+    """(sum of squared differences, number of elements) of a (rows, cols[, channels]) pair over
+    the pixels where the (rows, cols) boolean `mask` is True, or over all (mask None); C kernel,
+    exact for integer images."""
+    a, b = _kernel_pair(ref, tst)
+    if a.ndim == 2:
+        a, b = a[:, :, np.newaxis], b[:, :, np.newaxis]
+    if mask is not None:
+        mask = np.ascontiguousarray(mask).view(np.uint8)
+    return _kernels.sq_diff_sum(a, b, mask, threads)
+
+
+def _rgb_mse(ref, tst, crop, threads):
     crop = _check_crop(crop, ref.shape[:2])
-    diff = _crop_hw(ref, crop).astype(np.float64) - _crop_hw(tst, crop).astype(np.float64)
-    return float(np.mean(diff * diff))
+    total, count = _sq_diff_sum(_crop_hw(ref, crop), _crop_hw(tst, crop), None, threads)
+    return total / count
 
 
-def cpsnr(reference, test, *, data_range=255, crop=0):
+def cpsnr(reference, test, *, data_range=255, crop=0, workers=None):
     r"""Colour PSNR of a full-colour image (eqs. 22-23).
 
     Parameters
@@ -121,6 +138,8 @@ def cpsnr(reference, test, *, data_range=255, crop=0):
         The peak value :math:`s`. Integer images must lie in [0, data_range].
     crop : int, default 0
         Pixels removed from each border of the rows and columns first.
+    workers : int, optional
+        Threads of the C kernel (None or -1: every core).
 
     Returns
     -------
@@ -138,7 +157,8 @@ def cpsnr(reference, test, *, data_range=255, crop=0):
         \mathrm{C\text{-}PSNR} = 10 \log_{10} \frac{s^2}{\mathrm{MSE}_C}
 
     The three channels share one MSE, so this is not the mean of three
-    per-channel PSNRs. For a data set, see :func:`cpsnr_pooled`.
+    per-channel PSNRs. For a data set, see :func:`cpsnr_pooled`. The
+    squared differences are summed by a C kernel, exactly for integer images.
 
     References
     ----------
@@ -155,10 +175,10 @@ def cpsnr(reference, test, *, data_range=255, crop=0):
     ref, tst = _check_rgb_pair(reference, test)
     peak = check_number(data_range, "data_range", lo=0, lo_open=True)
     _check_integer_range((ref, tst), ("reference", "test"), peak)
-    return _psnr_from_mse(_rgb_mse(ref, tst, crop), peak)
+    return _psnr_from_mse(_rgb_mse(ref, tst, crop, check_workers(workers)), peak)
 
 
-def cpsnr_pooled(references, tests, *, data_range=255, crop=0):
+def cpsnr_pooled(references, tests, *, data_range=255, crop=0, workers=None):
     r"""C-PSNR of a set of images, from the mean of their colour MSEs.
 
     Parameters
@@ -171,6 +191,8 @@ def cpsnr_pooled(references, tests, *, data_range=255, crop=0):
         The peak value :math:`s`.
     crop : int, default 0
         Pixels removed from each border of every image first.
+    workers : int, optional
+        Threads of the C kernel (None or -1: every core).
 
     Returns
     -------
@@ -208,9 +230,10 @@ def cpsnr_pooled(references, tests, *, data_range=255, crop=0):
     if len(references) == 0:
         raise ValueError("references: the sequence is empty")
     peak = check_number(data_range, "data_range", lo=0, lo_open=True)
+    threads = check_workers(workers)
     mses = []
     for i, (r, t) in enumerate(zip(references, tests)):
         ref, tst = _check_rgb_pair(r, t, f"references[{i}]", f"tests[{i}]")
         _check_integer_range((ref, tst), (f"references[{i}]", f"tests[{i}]"), peak)
-        mses.append(_rgb_mse(ref, tst, crop))
+        mses.append(_rgb_mse(ref, tst, crop, threads))
     return _psnr_from_mse(float(np.mean(mses)), peak)

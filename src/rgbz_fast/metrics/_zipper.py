@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._deps import import_colour
-from .._validate import check_choice, check_number
-from ._common import _check_crop, _check_integer_range, _check_rgb_pair, _crop_hw
+from .. import _kernels
+from .._validate import check_choice, check_number, check_workers
+from ._common import (_check_crop, _check_integer_range, _check_rgb_pair, _crop_hw,
+                      _kernel_dtype, _kernel_pair)
 
 __all__ = ["zipper", "delta_e_map", "ZIPPER_INPUTS"]
 
@@ -14,26 +15,17 @@ __all__ = ["zipper", "delta_e_map", "ZIPPER_INPUTS"]
 #: value of sRGB white (None: the input is already CIELAB).
 ZIPPER_INPUTS = {"srgb8": 255.0, "srgb16": 65535.0, "srgb01": 1.0, "lab": None}
 
-# The eight neighbours of eq. 30 in raster order; on a tie of the reference
-# Delta E the first one in this order is taken.
-_NEIGHBOURS = ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1))
 
 
-
-def _to_lab(rgb, input):
-    """CIELAB (D65, CIE 1931 2 deg) of an (rows, cols, 3) image in encoding `input`."""
+def _to_lab(rgb, input, threads):
+    """CIELAB (D65, CIE 1931 2 deg), float64 (rows, cols, 3), of an image in encoding `input`."""
     full_scale = ZIPPER_INPUTS[input]
     if full_scale is None:
         return rgb.astype(np.float64)
-    colour = import_colour()   # lazy: colour-science takes about a second to import
-
-    rgb01 = rgb.astype(np.float64) / full_scale
-    # Pin colour's domain-range scale to 'reference' (Lab L* in 0..100), but
-    # only when the user changed it: the setting is process-global state.
-    if colour.utilities.get_domain_range_scale() != "reference":
-        with colour.utilities.domain_range_scale("reference"):
-            return np.asarray(colour.XYZ_to_Lab(colour.sRGB_to_XYZ(rgb01)), dtype=np.float64)
-    return np.asarray(colour.XYZ_to_Lab(colour.sRGB_to_XYZ(rgb01)), dtype=np.float64)
+    a = np.ascontiguousarray(rgb, dtype=_kernel_dtype(rgb.dtype))
+    lab = np.empty(a.shape, dtype=np.float64)
+    _kernels.srgb_to_lab(a.reshape(-1, 3), full_scale, lab.reshape(-1, 3), threads)
+    return lab
 
 
 def _check_colour_input(ref, tst, input):
@@ -49,24 +41,18 @@ def _delta_e(lab1, lab2):
     return np.sqrt(np.sum(d * d, axis=-1))
 
 
-def _zipper_lab(lab_ref, lab_test, delta):
-    """Percentage of interior pixels with |psi| > delta (eqs. 30-31)."""
-    rows, cols = lab_ref.shape[:2]
-    centre_ref = lab_ref[1:-1, 1:-1]
-    centre_test = lab_test[1:-1, 1:-1]
-    best_ref = np.full(centre_ref.shape[:2], np.inf)
-    best_test = np.zeros(centre_ref.shape[:2])
-    for dr, dc in _NEIGHBOURS:                       # 8 shifted whole-image views
-        window = (slice(1 + dr, rows - 1 + dr), slice(1 + dc, cols - 1 + dc))
-        de_ref = _delta_e(centre_ref, lab_ref[window])
-        closer = de_ref < best_ref                   # strict: ties keep the earlier one
-        best_ref = np.where(closer, de_ref, best_ref)
-        best_test = np.where(closer, _delta_e(centre_test, lab_test[window]), best_test)
-    psi = best_test - best_ref
-    return float(100.0 * np.count_nonzero(np.abs(psi) > delta) / psi.size)
+def _zipper_percent(ref, tst, full_scale, delta, threads):
+    """Percentage of interior pixels with |psi| > delta (eqs. 30-31), one fused C pass.
+
+    ``full_scale``: the sRGB code value of white, or None for CIELAB images.
+    """
+    a, b = _kernel_pair(ref, tst)
+    count = _kernels.zipper_count(a, b, 0.0 if full_scale is None else float(full_scale),
+                                  float(delta), threads)
+    return float(100.0 * count / ((a.shape[0] - 2) * (a.shape[1] - 2)))
 
 
-def delta_e_map(reference, test, *, input="srgb8"):
+def delta_e_map(reference, test, *, input="srgb8", workers=None):
     r"""Per-pixel CIE 1976 colour difference :math:`\Delta E^*_{ab}` of two images.
 
     Parameters
@@ -75,7 +61,9 @@ def delta_e_map(reference, test, *, input="srgb8"):
         Colour images in the encoding `input`.
     input : {'srgb8', 'srgb16', 'srgb01', 'lab'}, default 'srgb8'
         sRGB code values scaled to 255, 65535 or 1 (converted to CIELAB under
-        D65 with colour-science), or images already in CIELAB.
+        D65 with colour-science's constants), or images already in CIELAB.
+    workers : int, optional
+        Threads of the conversion kernel (None or -1: every core).
 
     Returns
     -------
@@ -93,10 +81,11 @@ def delta_e_map(reference, test, *, input="srgb8"):
     """
     ref, tst = _check_rgb_pair(reference, test)
     input = _check_colour_input(ref, tst, input)
-    return _delta_e(_to_lab(ref, input), _to_lab(tst, input))
+    threads = check_workers(workers)
+    return _delta_e(_to_lab(ref, input, threads), _to_lab(tst, input, threads))
 
 
-def zipper(reference, test, *, delta=2.3, crop=0, input="srgb8"):
+def zipper(reference, test, *, delta=2.3, crop=0, input="srgb8", workers=None):
     r"""Zipper-effect metric: percentage of pixels whose closest-neighbour contrast changed.
 
     Parameters
@@ -117,6 +106,9 @@ def zipper(reference, test, *, delta=2.3, crop=0, input="srgb8"):
         observer); or 'lab', images already in CIELAB. Integer images must lie
         in [0, full scale]; float values are converted as they are (no
         clipping).
+    workers : int, optional
+        Threads of the C kernel (None or -1: every core); the result does not
+        depend on it.
 
     Returns
     -------
@@ -166,5 +158,6 @@ def zipper(reference, test, *, delta=2.3, crop=0, input="srgb8"):
     input = _check_colour_input(ref, tst, input)
     crop = _check_crop(crop, ref.shape[:2], minimum=3,
                        what="a centre pixel with all eight neighbours")
+    threads = check_workers(workers)
     ref, tst = _crop_hw(ref, crop), _crop_hw(tst, crop)
-    return _zipper_lab(_to_lab(ref, input), _to_lab(tst, input), delta)
+    return _zipper_percent(ref, tst, ZIPPER_INPUTS[input], delta, threads)

@@ -15,7 +15,7 @@ import numpy as np
 from .. import _kernels
 from .._frame import RawFrame, raw_clip_level, validate_frame
 from .._patterns import get_pattern
-from .._validate import check_bit_depth, check_choice, check_workers
+from .._validate import check_bit_depth, check_choice, check_workers, kernel_threads
 from ._params import ReconstructParams
 from ._plans import METHODS, build_plans, check_layout
 
@@ -113,8 +113,10 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         Bits of a plain-array frame (default 11). Outputs are clipped to
         [0, 2**bit_depth - 1].
     workers : int, optional
-        Threads (rows are split across them). None or -1: all cores. The
-        result is identical for every value.
+        Threads at most (rows are split across them). None or -1: all cores.
+        A frame gets one thread per 2**18 pixels at most (a smaller frame takes
+        longer to start a thread than to compute). The result is identical for
+        every value.
     out : ndarray, optional
         Where to write the result: C-contiguous, writeable, the frame's shape
         and dtype, not overlapping the frame. On an error nothing is written
@@ -192,7 +194,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     if clip is not None and not _reaches(src, pattern, clip):
         clip = None          # nothing clipped: exactly the clip_level=None call
     _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bd, clip,
-                nthreads)
+                kernel_threads(nthreads, src.size))
     return out
 
 

@@ -1,0 +1,370 @@
+/*
+ * metrics.template.h -- the metric kernels of metrics.c for one input element type.
+ *
+ * Included by metrics.c once per element type (PyWavelets' template scheme) with:
+ *   IN_T       the element type of the input images (uint8_t, uint16_t, float, double)
+ *   IS         its suffix (u8, u16, f32, f64), appended to every function name
+ *   IN_IS_INT  1 for the integer types (their sRGB EOTF is a table of every code value)
+ * Everything is computed in double; see metrics.c for the algorithms and metrics.h for the
+ * layout contract.
+ */
+#ifndef IN_T
+#error "metrics.template.h: #define IN_T (the element type of the images) before including it"
+#endif
+#ifndef IS
+#error "metrics.template.h: #define IS (the suffix of IN_T: u8, u16, f32 or f64)"
+#endif
+#ifndef IN_IS_INT
+#error "metrics.template.h: #define IN_IS_INT (1 for integer IN_T, else 0)"
+#endif
+
+#define MT(name) MT_CAT(name, IS)
+
+/* ------------------------------------------------------------------ SSIM */
+
+/* The five moments x, y, x^2, y^2, xy of one output row filtered along the columns: x, y
+   point at the centre row of the window (rows above and below at -k * cols, +k * cols);
+   m receives five rows of `cols` values. correlate1d's order for symmetric weights: the
+   centre times its weight, then the pairs from the farthest to the nearest. */
+static void MT(mt_ssim_vpass)(const IN_T *x, const IN_T *y, ptrdiff_t cols, const double *w,
+                              int rad, double *restrict m)
+{
+    double *restrict mx = m, *restrict my = m + cols, *restrict mxx = m + 2 * cols;
+    double *restrict myy = m + 3 * cols, *restrict mxy = m + 4 * cols;
+    const double wc = w[rad];
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < cols; j++) {
+        const double xc = (double)x[j], yc = (double)y[j];
+        mx[j] = xc * wc;
+        my[j] = yc * wc;
+        mxx[j] = (xc * xc) * wc;
+        myy[j] = (yc * yc) * wc;
+        mxy[j] = (xc * yc) * wc;
+    }
+    for (int k = rad; k >= 1; k--) {
+        const IN_T *xu = x - k * cols, *xd = x + k * cols, *yu = y - k * cols, *yd = y + k * cols;
+        const double wk = w[rad - k];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < cols; j++) {
+            const double a = (double)xu[j], b = (double)xd[j];
+            const double c = (double)yu[j], d = (double)yd[j];
+            mx[j] += (a + b) * wk;
+            my[j] += (c + d) * wk;
+            mxx[j] += (a * a + b * b) * wk;
+            myy[j] += (c * c + d * d) * wk;
+            mxy[j] += (a * c + b * d) * wk;
+        }
+    }
+}
+
+static int MT(mt_ssim_sums)(const void *xv, const void *yv, ptrdiff_t planes, ptrdiff_t rows,
+                            ptrdiff_t cols, const double *w, int ntaps, double c1, double c2,
+                            double *ssim_sum, double *cs_sum, int workers)
+{
+    const IN_T *x = (const IN_T *)xv, *y = (const IN_T *)yv;
+    const int rad = ntaps / 2;
+    const ptrdiff_t orows = rows - 2 * rad, units = planes * orows;
+    double *rowsum = (double *)malloc((size_t)(2 * units) * sizeof(double));
+    if (!rowsum) return RGBZ_ENOMEM;
+    int failed = 0;
+    int nt = mt_threads(workers, units, (double)cols * (16.0 * ntaps + 40.0));
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt)
+#endif
+    {
+        double *m = (double *)malloc((size_t)(10 * cols) * sizeof(double));
+        if (!m) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            failed = 1;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t u = 0; u < units; u++) {
+            if (!m) continue;
+            const ptrdiff_t p = u / orows, i = u % orows;
+            const ptrdiff_t centre = (p * rows + i + rad) * cols;
+            MT(mt_ssim_vpass)(x + centre, y + centre, cols, w, rad, m);
+            mt_ssim_hpass(m, cols, w, rad, c1, c2, m + 5 * cols, rowsum + 2 * u,
+                          rowsum + 2 * u + 1);
+        }
+        free(m);
+    }
+    if (!failed) {
+        for (ptrdiff_t p = 0; p < planes; p++) {
+            double s = 0.0, c = 0.0;
+            for (ptrdiff_t i = 0; i < orows; i++) {
+                s += rowsum[2 * (p * orows + i)];
+                c += rowsum[2 * (p * orows + i) + 1];
+            }
+            ssim_sum[p] = s;
+            cs_sum[p] = c;
+        }
+    }
+    free(rowsum);
+    return failed ? RGBZ_ENOMEM : RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ MS-SSIM decimation */
+static int MT(mt_downsample2)(const void *srcv, ptrdiff_t planes, ptrdiff_t rows,
+                              ptrdiff_t cols, double *dst, int workers)
+{
+    const IN_T *src = (const IN_T *)srcv;
+    const ptrdiff_t orows = (rows + 1) / 2, ocols = (cols + 1) / 2, half = cols / 2;
+    const ptrdiff_t units = planes * orows;
+    int nt = mt_threads(workers, units, 6.0 * (double)cols);
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt)
+#endif
+    for (ptrdiff_t u = 0; u < units; u++) {
+        const ptrdiff_t p = u / orows, i = u % orows;
+        const IN_T *r0 = src + (p * rows + 2 * i) * cols;
+        const IN_T *r1 = 2 * i + 1 < rows ? r0 + cols : r0;     /* odd: the last row twice */
+        double *restrict o = dst + u * ocols;
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < half; j++)
+            o[j] = (((double)r0[2 * j] + (double)r0[2 * j + 1])
+                    + ((double)r1[2 * j] + (double)r1[2 * j + 1])) / 4.0;
+        if (cols % 2) {
+            const double a = (double)r0[cols - 1], b = (double)r1[cols - 1];
+            o[half] = ((a + a) + (b + b)) / 4.0;
+        }
+    }
+    return RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ sRGB -> CIELAB */
+
+/* Lab of n interleaved pixels: L[j * os], A[j * os], B[j * os]. scale > 0: sRGB code values
+   over scale (lut: their EOTF, integer types only, or NULL); scale == 0: Lab already.
+   lin: scratch of 3 n doubles (the linear values, planar, so that the Lab loop vectorises). */
+static void MT(mt_lab_run)(const IN_T *src, ptrdiff_t n, double scale, const double *lut,
+                           double *restrict lin, double *L, double *A, double *B, ptrdiff_t os)
+{
+    if (scale == 0.0) {
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++) {
+            L[j * os] = (double)src[3 * j];
+            A[j * os] = (double)src[3 * j + 1];
+            B[j * os] = (double)src[3 * j + 2];
+        }
+        return;
+    }
+    double *restrict lr = lin, *restrict lg = lin + n, *restrict lb = lin + 2 * n;
+#if IN_IS_INT
+    if (lut) {
+        for (ptrdiff_t j = 0; j < n; j++) {
+            lr[j] = lut[src[3 * j]];
+            lg[j] = lut[src[3 * j + 1]];
+            lb[j] = lut[src[3 * j + 2]];
+        }
+    } else
+#endif
+    {
+        (void)lut;
+        for (ptrdiff_t j = 0; j < n; j++) {
+            lr[j] = mt_eotf((double)src[3 * j] / scale);
+            lg[j] = mt_eotf((double)src[3 * j + 1] / scale);
+            lb[j] = mt_eotf((double)src[3 * j + 2] / scale);
+        }
+    }
+    double tmax = 0.0;
+    MT_SIMD_MAX(tmax)
+    for (ptrdiff_t j = 0; j < n; j++) {
+        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax);
+    }
+    if (!(tmax < 8.0)) {
+        /* rare: a ratio X/Xn, Y/Yn or Z/Zn >= 8 (a float input far above white) */
+        for (ptrdiff_t j = 0; j < n; j++) {
+            double tx, ty, tz;
+            MT_XYZ(lr[j], lg[j], lb[j], tx, ty, tz);
+            if (tx >= 8.0 || ty >= 8.0 || tz >= 8.0)
+                mt_lab_any(lr[j], lg[j], lb[j], &L[j * os], &A[j * os], &B[j * os]);
+        }
+    }
+}
+
+/* the EOTF table of an integer type, when the image holds more values than the table */
+static int MT(mt_lut)(ptrdiff_t npix, double scale, int workers, double **lut)
+{
+    *lut = NULL;
+#if IN_IS_INT
+    const ptrdiff_t size = (ptrdiff_t)1 << (8 * sizeof(IN_T));
+    if (scale > 0.0 && 3 * npix > size) {
+        *lut = mt_eotf_table(size, scale, workers);
+        if (!*lut) return RGBZ_ENOMEM;
+    }
+#else
+    (void)npix; (void)scale; (void)workers;
+#endif
+    return RGBZ_OK;
+}
+
+static int MT(mt_srgb_to_lab)(const void *rgbv, ptrdiff_t n, double scale, double *lab,
+                              int workers)
+{
+    const IN_T *rgb = (const IN_T *)rgbv;
+    double *lut;
+    if (MT(mt_lut)(n, scale, workers, &lut) != RGBZ_OK) return RGBZ_ENOMEM;
+    const ptrdiff_t block = 2048, nblocks = (n + block - 1) / block;
+    int failed = 0;
+    int nt = mt_threads(workers, nblocks, 60.0 * (double)block);
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt)
+#endif
+    {
+        double *lin = (double *)malloc((size_t)(3 * block) * sizeof(double));
+        if (!lin) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            failed = 1;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t k = 0; k < nblocks; k++) {
+            if (!lin) continue;
+            const ptrdiff_t j0 = k * block, m = n - j0 < block ? n - j0 : block;
+            double *o = lab + 3 * j0;
+            MT(mt_lab_run)(rgb + 3 * j0, m, scale, lut, lin, o, o + 1, o + 2, 3);
+        }
+        free(lin);
+    }
+    free(lut);
+    return failed ? RGBZ_ENOMEM : RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ zipper */
+static int MT(mt_zipper_count)(const void *refv, const void *testv, ptrdiff_t rows,
+                               ptrdiff_t cols, double scale, double delta, int64_t *count,
+                               int workers)
+{
+    const IN_T *ref = (const IN_T *)refv, *test = (const IN_T *)testv;
+    double *lut;
+    if (MT(mt_lut)(rows * cols, scale, workers, &lut) != RGBZ_OK) return RGBZ_ENOMEM;
+    const ptrdiff_t centres = rows - 2;
+    int64_t total = 0;
+    int failed = 0;
+    int nt = mt_threads(workers, centres, 250.0 * (double)cols);
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt) reduction(+:total)
+#endif
+    {
+        int t = 0, T = 1;
+#ifdef _OPENMP
+        t = omp_get_thread_num();
+        T = omp_get_num_threads();
+#endif
+        /* a band of centre rows per thread; Lab of its rows and the two around it */
+        const ptrdiff_t b0 = 1 + centres * t / T, b1 = 1 + centres * (t + 1) / T;
+        /* ring of three Lab rows per image, buf[(image * 3 + slot) * 3 + channel][cols],
+           then the linear-RGB scratch of mt_lab_run (3 cols) */
+        double *buf = b0 < b1 ? (double *)malloc((size_t)(21 * cols) * sizeof(double)) : NULL;
+        if (b0 < b1 && !buf) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            failed = 1;
+        }
+        if (buf) {
+            double *lin = buf + 18 * cols;
+            mt_labrow rr[3], tr[3];
+            for (int s = 0; s < 3; s++) {
+                double *rb = buf + (ptrdiff_t)(3 * s) * cols;
+                double *tb = buf + (ptrdiff_t)(9 + 3 * s) * cols;
+                rr[s] = (mt_labrow){rb, rb + cols, rb + 2 * cols};
+                tr[s] = (mt_labrow){tb, tb + cols, tb + 2 * cols};
+            }
+            for (ptrdiff_t q = b0 - 1; q <= b1; q++) {
+                const int s = (int)(q % 3);
+                MT(mt_lab_run)(ref + 3 * q * cols, cols, scale, lut, lin, rr[s].L, rr[s].A,
+                               rr[s].B, 1);
+                MT(mt_lab_run)(test + 3 * q * cols, cols, scale, lut, lin, tr[s].L, tr[s].A,
+                               tr[s].B, 1);
+                if (q >= b0 + 1) {
+                    const int u = (int)((q - 2) % 3), c = (int)((q - 1) % 3);
+                    total += mt_zipper_row(rr[u], rr[c], rr[s], tr[u], tr[c], tr[s], cols,
+                                           delta);
+                }
+            }
+        }
+        free(buf);
+    }
+    free(lut);
+    if (failed) return RGBZ_ENOMEM;
+    *count = total;
+    return RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ squared differences */
+
+/* one row: the sum of squares of the counted elements (exact in int64 for integer types) and
+   their number */
+#if IN_IS_INT
+typedef int64_t MT(mt_acc);
+#else
+typedef double MT(mt_acc);
+#endif
+
+static MT(mt_acc) MT(mt_sq_row)(const IN_T *a, const IN_T *b, ptrdiff_t cols, ptrdiff_t ch,
+                                const uint8_t *mask, int64_t *n)
+{
+    MT(mt_acc) s = 0;
+    int64_t k = 0;
+    for (ptrdiff_t c = 0; c < cols; c++) {
+        if (mask && !mask[c]) continue;
+        k += ch;
+        for (ptrdiff_t q = c * ch; q < (c + 1) * ch; q++) {
+#if IN_IS_INT
+            const int64_t d = (int64_t)a[q] - (int64_t)b[q];
+#else
+            const double d = (double)a[q] - (double)b[q];
+#endif
+            s += d * d;
+        }
+    }
+    *n = k;
+    return s;
+}
+
+static int MT(mt_sq_diff_sum)(const void *av, const void *bv, ptrdiff_t rows, ptrdiff_t cols,
+                              ptrdiff_t ch, const uint8_t *mask, double *sum, int64_t *count,
+                              int workers)
+{
+    const IN_T *a = (const IN_T *)av, *b = (const IN_T *)bv;
+    MT(mt_acc) *rs = (MT(mt_acc) *)malloc((size_t)rows * sizeof(MT(mt_acc)));
+    int64_t *rn = (int64_t *)malloc((size_t)rows * sizeof(int64_t));
+    if (!rs || !rn) {
+        free(rs);
+        free(rn);
+        return RGBZ_ENOMEM;
+    }
+    int nt = mt_threads(workers, rows, 3.0 * (double)(cols * ch));
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt)
+#endif
+    for (ptrdiff_t r = 0; r < rows; r++)
+        rs[r] = MT(mt_sq_row)(a + r * cols * ch, b + r * cols * ch, cols, ch,
+                              mask ? mask + r * cols : NULL, &rn[r]);
+    MT(mt_acc) s = 0;
+    int64_t k = 0;
+    for (ptrdiff_t r = 0; r < rows; r++) {     /* the rows in order: no thread dependence */
+        s += rs[r];
+        k += rn[r];
+    }
+    *sum = (double)s;
+    *count = k;
+    free(rs);
+    free(rn);
+    return RGBZ_OK;
+}
+
+#undef MT

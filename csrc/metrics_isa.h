@@ -1,0 +1,36 @@
+/*
+ * metrics_isa.h -- internal: the entry points of metrics.c for each instruction set it is
+ * compiled for (csrc/meson.build builds it once per set, with -DRGBZ_METRICS_ISA=<suffix>),
+ * which metrics_dispatch.c chooses from at run time. Not part of the C API (metrics.h).
+ */
+#ifndef RGBZ_METRICS_ISA_H
+#define RGBZ_METRICS_ISA_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define RGBZ_METRICS_CAT_(a, b) a##_##b
+#define RGBZ_METRICS_ENTRY(name, isa) RGBZ_METRICS_CAT_(name, isa)
+
+#define RGBZ_METRICS_DECLARE(isa)                                                            \
+    int RGBZ_METRICS_ENTRY(rgbz_ssim_sums, isa)(                                             \
+        int in_type, const void *x, const void *y, ptrdiff_t planes, ptrdiff_t rows,          \
+        ptrdiff_t cols, const double *weights, int ntaps, double c1, double c2,               \
+        double *ssim_sum, double *cs_sum, int workers);                                       \
+    int RGBZ_METRICS_ENTRY(rgbz_downsample2, isa)(                                           \
+        int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,       \
+        double *dst, int workers);                                                            \
+    int RGBZ_METRICS_ENTRY(rgbz_srgb_to_lab, isa)(                                           \
+        int in_type, const void *rgb, ptrdiff_t n, double scale, double *lab, int workers);   \
+    int RGBZ_METRICS_ENTRY(rgbz_zipper_count, isa)(                                          \
+        int in_type, const void *ref, const void *test, ptrdiff_t rows, ptrdiff_t cols,       \
+        double scale, double delta, int64_t *count, int workers);                              \
+    int RGBZ_METRICS_ENTRY(rgbz_sq_diff_sum, isa)(                                           \
+        int in_type, const void *a, const void *b, ptrdiff_t rows, ptrdiff_t cols,             \
+        ptrdiff_t channels, const uint8_t *mask, double *sum, int64_t *count, int workers);
+
+RGBZ_METRICS_DECLARE(generic)
+RGBZ_METRICS_DECLARE(avx2)
+RGBZ_METRICS_DECLARE(avx512)
+
+#endif /* RGBZ_METRICS_ISA_H */

@@ -1,0 +1,121 @@
+/*
+ * srgb.c -- the sRGB encoding of the colour chain around NumPy's power (see srgb.h).
+ *
+ * IEC 61966-2-1 OETF: 12.92 v for v <= 0.0031308, else 1.055 v^(1/2.4) - 0.055, on values
+ * clipped to [0, 1], then floor(e (2^bits - 1) + 0.5). The operations and their order are
+ * those of rgbz_fast.isp's correct_colour (clip), srgb_oetf and _quantise, so that with the
+ * same power the codes are the same bit for bit; -ffp-contract=off (csrc/meson.build) keeps
+ * every multiply and add rounded on its own, as NumPy's are.
+ *
+ * Layout: n contiguous values; p has n values of the same type; code n uint8 or uint16.
+ * The floor is a conversion to int32: the value floored is e (2^bits - 1) + 0.5 >= 0.5 (v is
+ * clipped to [0, 1], so e >= 0), where truncation and floor agree, and it vectorises.
+ */
+#include <stdint.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "srgb.h"
+
+#define SR_PRAGMA(x) _Pragma(#x)
+
+/* one thread per 2**18 values at most (MIN_PIXELS_PER_THREAD of the Python layer) */
+static int sr_threads(int workers, ptrdiff_t n)
+{
+#ifdef _OPENMP
+    int t = workers > 0 ? workers : omp_get_max_threads();
+    ptrdiff_t cap = n >> 18;
+    if (cap < t) t = cap < 1 ? 1 : (int)cap;
+    return t;
+#else
+    (void)workers; (void)n;
+    return 1;
+#endif
+}
+
+#ifdef _OPENMP
+#define SR_FOR(nt) SR_PRAGMA(omp parallel for simd schedule(static) num_threads(nt))
+#else
+#define SR_FOR(nt) SR_PRAGMA(omp simd)
+#endif
+
+#define SR_CLIP(T, x) ((x) < (T)0 ? (T)0 : ((x) > (T)1 ? (T)1 : (x)))
+
+#define SR_TEMPLATE(T, S)                                                             \
+static void sr_prepare_##S(const T *x, T *p, ptrdiff_t n, int workers)                       \
+{                                                                                            \
+    const T knee = (T)0.0031308;                                                             \
+    int nt = sr_threads(workers, n);                                                         \
+    (void)nt;                                                                                \
+    SR_FOR(nt)                                                                               \
+    for (ptrdiff_t i = 0; i < n; i++) {                                                      \
+        const T v = SR_CLIP(T, x[i]);                                                        \
+        p[i] = v <= knee ? (T)1 : v;                                                         \
+    }                                                                                        \
+}                                                                                            \
+                                                                                             \
+static void sr_finish_##S##_u8(const T *x, const T *p, ptrdiff_t n, uint8_t *code,           \
+                               int workers)                                                  \
+{                                                                                            \
+    const T knee = (T)0.0031308, a = (T)1.055, b = (T)0.055, s = (T)12.92;                   \
+    const T top = (T)255, half = (T)0.5;                                                     \
+    int nt = sr_threads(workers, n);                                                         \
+    (void)nt;                                                                                \
+    SR_FOR(nt)                                                                               \
+    for (ptrdiff_t i = 0; i < n; i++) {                                                      \
+        const T v = SR_CLIP(T, x[i]);                                                        \
+        T e = p[i] * a;                                                                      \
+        e = e - b;                                                                           \
+        e = v <= knee ? v * s : e;                                                           \
+        T q = e * top;                                                                       \
+        q = q + half;                                                                        \
+        code[i] = (uint8_t)(int32_t)q;        /* q >= 0.5: truncation = floor */       \
+    }                                                                                        \
+}                                                                                            \
+                                                                                             \
+static void sr_finish_##S##_u16(const T *x, const T *p, ptrdiff_t n, uint16_t *code,         \
+                                int workers)                                                 \
+{                                                                                            \
+    const T knee = (T)0.0031308, a = (T)1.055, b = (T)0.055, s = (T)12.92;                   \
+    const T top = (T)65535, half = (T)0.5;                                                   \
+    int nt = sr_threads(workers, n);                                                         \
+    (void)nt;                                                                                \
+    SR_FOR(nt)                                                                               \
+    for (ptrdiff_t i = 0; i < n; i++) {                                                      \
+        const T v = SR_CLIP(T, x[i]);                                                        \
+        T e = p[i] * a;                                                                      \
+        e = e - b;                                                                           \
+        e = v <= knee ? v * s : e;                                                           \
+        T q = e * top;                                                                       \
+        q = q + half;                                                                        \
+        code[i] = (uint16_t)(int32_t)q;                                                 \
+    }                                                                                        \
+}
+
+SR_TEMPLATE(float, f32)
+SR_TEMPLATE(double, f64)
+
+int rgbz_oetf_prepare(int type, const void *x, void *p, ptrdiff_t n, int workers)
+{
+    if (!x || !p || n < 0) return RGBZ_EINVAL;
+    if (type == RGBZ_T_F32) sr_prepare_f32(x, p, n, workers);
+    else if (type == RGBZ_T_F64) sr_prepare_f64(x, p, n, workers);
+    else return RGBZ_EINVAL;
+    return RGBZ_OK;
+}
+
+int rgbz_oetf_finish(int type, const void *x, const void *p, ptrdiff_t n, int bits, void *code,
+                     int workers)
+{
+    if (!x || !p || !code || n < 0 || (bits != 8 && bits != 16)) return RGBZ_EINVAL;
+    if (type == RGBZ_T_F32) {
+        if (bits == 8) sr_finish_f32_u8(x, p, n, code, workers);
+        else sr_finish_f32_u16(x, p, n, code, workers);
+    } else if (type == RGBZ_T_F64) {
+        if (bits == 8) sr_finish_f64_u8(x, p, n, code, workers);
+        else sr_finish_f64_u16(x, p, n, code, workers);
+    } else {
+        return RGBZ_EINVAL;
+    }
+    return RGBZ_OK;
+}
