@@ -3,6 +3,7 @@
     rgbz-fast simulate   scene file(s) -> raw RGB-Z frame files (NPZ or 16-bit TIFF)
     rgbz-fast reconstruct raw frame(s) -> Bayer CFA or sRGB image
     rgbz-fast evaluate   dataset -> metrics tables, CSV/JSON, bar charts, crops
+    rgbz-fast train      dataset -> filters of the "learned" reconstruction (.npz)
     rgbz-fast bench      kernel speed (Mpix/s) beside OpenCV and NumPy
     rgbz-fast opcount    operations per missing pixel beside the paper's Table 1
     rgbz-fast tradeoff   speed against accuracy, Pareto plot
@@ -25,7 +26,7 @@ import numpy as np
 from ._build_config import VERSION
 from ._config import show_config
 from ._patterns import get_pattern
-from .evaluation import EvalConfig, evaluate, write_reports
+from .evaluation import EvalConfig, evaluate, train_filters, write_reports
 from .io import atomic_write, folder_dataset, load_frame, sample_dataset, save_frame
 from .isp import ColourISP
 from .reconstruction import ReconstructParams, reconstruct
@@ -60,6 +61,10 @@ def _clip_arg(text):
         raise argparse.ArgumentTypeError(f"expected auto, off or a positive number, got {text!r}")
     return v
 
+
+FILTERS_HELP = ("method learned: filters files from `rgbz-fast train` (the one fitted for the "
+                "frame's pattern and bit depth is used); default: the ones shipped for Mask1 "
+                "and Mask2")
 
 CLIP_HELP = ("clipped (saturated) pixels: off (default) takes every pixel as a real value; "
              "auto uses the clip level recorded for frames read from raw files "
@@ -105,7 +110,7 @@ def _parser():
     r.add_argument("frames", nargs="+", type=Path, help=".npz/.tif frames from `simulate`, or "
                                                          "camera raw / Bayer files")
     r.add_argument("--method", default="sg",
-                   help="bilinear, bi, edi_central, edi_line, sg, edi_rows (default sg)")
+                   help="bilinear, bi, edi_central, edi_line, sg, edi_rows, learned (default sg)")
     r.add_argument("--pattern", default=None, help="pattern of files that carry none")
     r.add_argument("--bit-depth", type=int, default=None)
     r.add_argument("--precision", choices=("float32", "float64"), default="float32")
@@ -113,6 +118,8 @@ def _parser():
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
     r.add_argument("--clip-level", type=_clip_arg, default=None, metavar="off|auto|DN",
                    help=CLIP_HELP)
+    r.add_argument("--filters", type=_csv, default=None, metavar="FILE[,FILE]",
+                   help=FILTERS_HELP)
     _add_common(r, Path("rgbz_out"))
 
     e = sub.add_parser("evaluate", help="dataset -> metrics, tables and plots",
@@ -129,6 +136,12 @@ def _parser():
     e.add_argument("--metrics", type=_csv, default=None,
                    help="comma list from cfa_psnr,cpsnr,ssim,ms_ssim,zipper (default all)")
     e.add_argument("--noise", action="store_true", help="use the sensor noise model")
+    e.add_argument("--bit-depth", type=int, default=11, help="bits of the simulated frames")
+    e.add_argument("--linearise", action=argparse.BooleanOptionalAction, default=True,
+                   help="linearise 8-bit sRGB images with the sRGB EOTF (default); "
+                        "--no-linearise mosaics the sRGB values (the 8-bit sRGB protocol)")
+    e.add_argument("--filters", type=_csv, default=None, metavar="FILE[,FILE]",
+                   help=FILTERS_HELP)
     e.add_argument("--demosaic", default="malvar2004", choices=("malvar2004", "menon2007"))
     e.add_argument("--crop", type=int, default=8, help="border crop of the image metrics")
     e.add_argument("--precision", choices=("float32", "float64"), default="float64")
@@ -153,6 +166,31 @@ def _parser():
     e.add_argument("--json", action="store_true", help="print the summary as JSON")
     _add_common(e, Path("rgbz_results"))
 
+    t = sub.add_parser("train", help="dataset -> filters of the learned reconstruction",
+                       description="Fit the filters of method 'learned' (hashed 7x7 linear "
+                                   "filters, docs/guide/learned.md) to a folder of images, with "
+                                   "the evaluation's protocol (sRGB EOTF, mosaic at --bit-depth), "
+                                   "and write them to --out. Fit on images you do not evaluate "
+                                   "on.")
+    t.add_argument("--dataset", type=Path, required=True, help="folder of RGB images")
+    t.add_argument("--pattern", default="mask1", help="mask1, mask2 or a tile such as ZR/BG")
+    t.add_argument("--out", type=Path, required=True, help="the .npz file to write")
+    t.add_argument("--bit-depth", type=int, default=11)
+    t.add_argument("--noise", action="store_true", help="fit on frames of the sensor model")
+    t.add_argument("--linearise", action=argparse.BooleanOptionalAction, default=True,
+                   help="--no-linearise: fit on the sRGB values (the 8-bit sRGB protocol)")
+    t.add_argument("--name", default=None, help="training set name kept in the file "
+                                                "(default: the folder's name)")
+    t.add_argument("--limit", type=int, default=None, help="first N images only")
+    t.add_argument("--radius", type=int, default=3, help="window radius of the taps (3: 7x7)")
+    t.add_argument("--hash-radius", type=int, default=3)
+    t.add_argument("--strength", type=int, default=3, help="strength levels of the hash")
+    t.add_argument("--coherence", type=int, default=3, help="coherence levels of the hash")
+    t.add_argument("--ridge", type=float, default=1e-3)
+    t.add_argument("--prior", type=float, default=50.0,
+                   help="weight (in sites) of the common filter in each bucket's fit")
+    t.add_argument("--quiet", action="store_true")
+
     for name, mod, text in (("bench", "bench", "kernel speed beside OpenCV and NumPy"),
                             ("opcount", "opcount", "operations per missing pixel vs Table 1"),
                             ("tradeoff", "tradeoff", "speed vs accuracy, Pareto plot")):
@@ -174,7 +212,7 @@ def main(argv=None):
         return 0
     try:
         return {"simulate": _simulate, "reconstruct": _reconstruct, "evaluate": _evaluate,
-                "config": _config}[args.command](args)
+                "train": _train, "config": _config}[args.command](args)
     except (CliError, ValueError, TypeError, OSError, ImportError) as exc:
         print(f"rgbz-fast {args.command}: error: {exc}".splitlines()[0], file=sys.stderr)
         return 2
@@ -219,7 +257,8 @@ def _simulate(args):
 def _reconstruct(args):
 
 
-    params = ReconstructParams(precision=args.precision, clip_level=args.clip_level)
+    params = ReconstructParams(precision=args.precision, clip_level=args.clip_level,
+                               filters=args.filters)
     for f in args.frames:
         frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth)
         cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
@@ -251,9 +290,10 @@ def _reconstruct(args):
 def _evaluate(args):
 
     params = ReconstructParams(precision=args.precision, domain=args.domain,
-                               clip_level=args.clip_level)
+                               clip_level=args.clip_level, filters=args.filters)
     kw = dict(patterns=args.patterns, methods=args.methods, noise=args.noise,
-              demosaic=args.demosaic, crop=args.crop, params=params)
+              bit_depth=args.bit_depth, linearise=args.linearise, demosaic=args.demosaic,
+              crop=args.crop, params=params)
     if args.metrics:
         kw["metrics"] = args.metrics
     config = EvalConfig(**kw)
@@ -281,6 +321,24 @@ def _evaluate(args):
         print(res.plain_table())
         if not args.quiet:
             print(f"reports: {', '.join(str(f) for f in files)}")
+    return 0
+
+
+def _train(args):
+    if not args.dataset.is_dir():
+        raise CliError(f"--dataset: {args.dataset} is not a folder")
+    command = " ".join(["rgbz-fast train", *sys.argv[2:]]) if sys.argv[1:2] == ["train"] else ""
+    filters = train_filters(
+        args.dataset, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
+        linearise=args.linearise, limit=args.limit, name=args.name, progress=not args.quiet,
+        radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,
+        n_coherence=args.coherence, ridge=args.ridge, prior=args.prior,
+        meta={"command": command} if command else {})
+    filters.save(args.out)
+    if not args.quiet:
+        m = filters.meta
+        print(f"{filters} -> {args.out} ({m['n_images']} images, {m['n_sites']} sites, "
+              f"{m['empty_buckets']} empty buckets)")
     return 0
 
 

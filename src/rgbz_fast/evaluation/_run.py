@@ -40,8 +40,9 @@ def image_frames(img, pattern, config):
 
     A raw Bayer frame keeps its real CFA as the reference and loses its Z sites
     (:func:`rgbz_fast.io.to_rgbz`). An RGB image is linearised (sRGB EOTF for
-    integer images) and mosaicked noise-free at ``config.bit_depth``, or run
-    through the sensor model (black level 0) when ``config.noise``.
+    integer images; ``config.linearise=False`` keeps the encoded values) and
+    mosaicked noise-free at ``config.bit_depth``, or run through the sensor model
+    (black level 0) when ``config.noise``.
     """
     pattern = get_pattern(pattern)
     if isinstance(img, RawFrame):
@@ -51,7 +52,9 @@ def image_frames(img, pattern, config):
         frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
                          noise=True)
         return frame, frame.reference
-    if np.issubdtype(img.dtype, np.integer):
+    if not config.linearise:
+        lin = img
+    elif np.issubdtype(img.dtype, np.integer):
         lin = srgb_to_linear(img.astype(np.float64) / float(np.iinfo(img.dtype).max))
     else:
         lin = np.clip(img, 0, 1)
