@@ -33,6 +33,13 @@
 #define LRN_NOJAM
 #endif
 
+/* GCC >= 9 and Clang: vector extensions for the dense dot product of the fast path */
+#if (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 9)) && !defined(RGBZ_COUNT_OPS)
+#define LRN_VECTOR_EXT 1
+#else
+#define LRN_VECTOR_EXT 0
+#endif
+
 /* the border rule of every kernel: an index outside [0, n) moves back inside by whole
    periods P (n >= P), so that the pixel keeps its colour */
 static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
@@ -46,17 +53,21 @@ static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define REAL float
 #define RS f32
 #define RW w_f32
+#define RWD wd_f32
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #define REAL double
 #define RS f64
 #define RW w_f64
+#define RWD wd_f64
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -67,17 +78,21 @@ static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define REAL float
 #define RS f32
 #define RW w_f32
+#define RWD wd_f32
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #define REAL double
 #define RS f64
 #define RW w_f64
+#define RWD wd_f64
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -88,17 +103,21 @@ static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define REAL float
 #define RS f32
 #define RW w_f32
+#define RWD wd_f32
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #define REAL double
 #define RS f64
 #define RW w_f64
+#define RWD wd_f64
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
@@ -109,20 +128,58 @@ static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define REAL float
 #define RS f32
 #define RW w_f32
+#define RWD wd_f32
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #define REAL double
 #define RS f64
 #define RW w_f64
+#define RWD wd_f64
 #include "learned.template.h"
 #undef REAL
 #undef RS
 #undef RW
+#undef RWD
 #undef IN_T
 #undef IS
 #undef IN_IS_INT
+
+/* 1 when the fast path computes what the pairs say: the window fits the dense rows of 8,
+   both weight tables are there, and for every phase and direction the pairs are exactly the
+   known pairs of the rectangle of starts (learned.h), counted from the phase map */
+static int lrn_fast_ok(const rgbz_learned_filters *f, int py, int px, const int32_t *phase_map)
+{
+#ifdef RGBZ_COUNT_OPS
+    /* the counting build counts the per-site formulation (each site's pairs and taps) */
+    (void)f; (void)py; (void)px; (void)phase_map;
+    return 0;
+#else
+    static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
+    const int hr = f->hash_radius;
+    if (!f->wd_f32 || !f->wd_f64 || f->radius > 3 || hr < 1 || hr > f->radius) return 0;
+    for (int i = 0; i < py * px; i++) {
+        const int k = phase_map[i];
+        if (k < 0) continue;
+        const int r = i / px, c = i % px;
+        for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+            const int sy = SY[d], sx = SX[d];
+            int count = 0;
+            for (int dy = -hr; dy <= hr - sy; dy++)
+                for (int dx = (sx < 0 ? -hr - sx : -hr); dx <= (sx > 0 ? hr - sx : hr); dx++) {
+                    const int y1 = ((r + dy) % py + py) % py, x1 = ((c + dx) % px + px) % px;
+                    const int y2 = ((r + dy + sy) % py + py) % py;
+                    const int x2 = ((c + dx + sx) % px + px) % px;
+                    count += phase_map[y1 * px + x1] < 0 && phase_map[y2 * px + x2] < 0;
+                }
+            if (count != f->n_pairs[k * RGBZ_LEARNED_DIRS + d]) return 0;
+        }
+    }
+    return 1;
+#endif
+}
 
 static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t cols, int py,
                      int px, const int32_t *phase_map)
@@ -130,7 +187,7 @@ static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t co
     if (!f || f->n_phases <= 0 || f->n_buckets <= 0 || f->n_str < 1 || f->n_coh < 1 ||
         f->n_buckets != 8 * f->n_str * f->n_coh || f->radius < 0 ||
         f->radius > RGBZ_LEARNED_MAX_RADIUS || f->n_taps_max <= 0 ||
-        f->n_taps_max > RGBZ_LEARNED_MAX_TAPS || py <= 0 || px <= 0 || rows < py || cols < px)
+        f->n_taps_max > RGBZ_LEARNED_MAX_TAPS || f->hash_radius > f->radius || py <= 0 || px <= 0 || rows < py || cols < px)
         return RGBZ_EINVAL;
     for (int i = 0; i < py * px; i++)
         if (phase_map[i] >= f->n_phases) return RGBZ_EINVAL;
@@ -157,7 +214,7 @@ static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t co
 
 #define LRN_CALL(is, rs, T)                                                                  \
     LRN_CAT_(lrn_loop, is, rs)((const T *)src, (T *)dst, rows, cols, py, px, phase_map, f,   \
-                               colmap, maxval, workers, opcounts)
+                               colmap, fast_ok, maxval, workers, opcounts)
 #define LRN_CAT_(a, b, c) a##_##b##_##c
 
 int RGBZ_SYM(rgbz_learned)(int in_type, int precision, const void *src, void *dst,
@@ -177,6 +234,7 @@ int RGBZ_SYM(rgbz_learned)(int in_type, int precision, const void *src, void *ds
     if (!colmap) return RGBZ_ENOMEM;
     for (ptrdiff_t x = -R; x < cols + R; x++) colmap[x + R] = lrn_extend(x, cols, px);
     const int f64 = precision == RGBZ_P_F64;
+    const int fast_ok = lrn_fast_ok(f, py, px, phase_map);
     switch (in_type) {
     case RGBZ_T_U8:
         status = f64 ? LRN_CALL(u8, f64, uint8_t) : LRN_CALL(u8, f32, uint8_t);

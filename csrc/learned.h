@@ -32,6 +32,7 @@ typedef struct {
     int32_t n_pairs_max;  /* row length of pair_a / pair_b */
     int32_t n_str, n_coh; /* strength and coherence levels */
     int32_t radius;       /* largest |dy|, |dx| of a tap */
+    int32_t hash_radius;  /* largest |dy|, |dx| of a pixel of a hash pair */
     const int32_t *n_taps;            /* [n_phases] */
     const int32_t *tap_dy, *tap_dx;   /* [n_phases][n_taps_max] */
     const int32_t *n_pairs;           /* [n_phases][4] */
@@ -40,6 +41,10 @@ typedef struct {
     const double *coh_thr2;           /* [n_phases][n_coh - 1]: squared coherence thresholds */
     const float *w_f32;               /* [n_phases][n_taps_max][n_buckets] (tap-major) */
     const double *w_f64;              /* the same weights in double */
+    /* optional (NULL: not used), for radius <= 3: the weights on the dense window, zeros at
+       the Z sites and in column 7, [n_phases][n_buckets][2 radius + 1][8] */
+    const float *wd_f32;
+    const double *wd_f64;
 } rgbz_learned_filters;
 
 /*

@@ -63,6 +63,7 @@ cdef extern from "rgbz.h" nogil:
 cdef extern from "learned.h" nogil:
     ctypedef struct rgbz_learned_filters:
         int32_t n_phases, n_buckets, n_taps_max, n_pairs_max, n_str, n_coh, radius
+        int32_t hash_radius
         const int32_t *n_taps
         const int32_t *tap_dy
         const int32_t *tap_dx
@@ -73,6 +74,8 @@ cdef extern from "learned.h" nogil:
         const double *coh_thr2
         const float *w_f32
         const double *w_f64
+        const float *wd_f32
+        const double *wd_f64
     int rgbz_learned(int in_type, int precision, const void *src, void *dst, Py_ssize_t rows,
                      Py_ssize_t cols, int py, int px, const int32_t *phase_map,
                      const rgbz_learned_filters *f, double maxval, int workers,
@@ -284,12 +287,14 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
             const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
             const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
             const double[:, ::1] coh_thr2, const float[:, :, ::1] w_f32,
-            const double[:, :, ::1] w_f64, int radius, double maxval, int workers,
-            uint64_t[::1] opcounts=None):
+            const double[:, :, ::1] w_f64, int radius, int hash_radius, double maxval,
+            int workers, const float[:, :, :, ::1] wd_f32=None,
+            const double[:, :, :, ::1] wd_f64=None, uint64_t[::1] opcounts=None):
     """Run the learned reconstruction (or its counting twin when ``opcounts`` is given).
 
     Weights are tap-major, (n_phases, n_taps_max, n_buckets); thresholds
-    (n_phases, levels - 1), the coherence ones squared (the layout of learned.h).
+    (n_phases, levels - 1), the coherence ones squared; the optional dense weights
+    (n_phases, n_buckets, 2 radius + 1, 8) enable the fast path (the layout of learned.h).
     """
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status
@@ -302,6 +307,7 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     f.n_str = str_thr.shape[1] + 1
     f.n_coh = coh_thr2.shape[1] + 1
     f.radius = radius
+    f.hash_radius = hash_radius
     f.n_taps = &n_taps[0]
     f.tap_dy = &tap_dy[0, 0]
     f.tap_dx = &tap_dx[0, 0]
@@ -313,6 +319,16 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     f.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
     f.w_f32 = &w_f32[0, 0, 0]
     f.w_f64 = &w_f64[0, 0, 0]
+    f.wd_f32 = NULL
+    f.wd_f64 = NULL
+    if wd_f32 is not None and wd_f64 is not None:
+        if (wd_f32.shape[0] != f.n_phases or wd_f32.shape[1] != f.n_buckets
+                or wd_f32.shape[2] != 2 * radius + 1 or wd_f32.shape[3] != 8
+                or wd_f64.shape[0] != f.n_phases or wd_f64.shape[1] != f.n_buckets
+                or wd_f64.shape[2] != 2 * radius + 1 or wd_f64.shape[3] != 8):
+            raise ValueError("learned: inconsistent dense weights")
+        f.wd_f32 = &wd_f32[0, 0, 0, 0]
+        f.wd_f64 = &wd_f64[0, 0, 0, 0]
     if (tap_dy.shape[0] != f.n_phases or n_taps.shape[0] != f.n_phases
             or w_f64.shape[0] != f.n_phases or w_f64.shape[1] != f.n_taps_max
             or w_f64.shape[2] != f.n_buckets or tap_dy.shape[1] != f.n_taps_max

@@ -318,7 +318,17 @@ class LearnedFilters:
                 n_taps=n_taps, tap_dy=tap_dy, tap_dx=tap_dx, n_pairs=n_pairs, pair_a=pair_a,
                 pair_b=pair_b, str_thr=np.ascontiguousarray(self.strength_thresholds),
                 coh_thr2=np.ascontiguousarray(self.coherence_thresholds ** 2),
-                w_f32=w64.astype(np.float32), w_f64=w64, radius=self.radius)
+                w_f32=w64.astype(np.float32), w_f64=w64, radius=self.radius,
+                hash_radius=self.hash_radius)
+            if self.radius <= 3:
+                # the kernel's fast path: each window row as 8 weights, 0 off the taps
+                R = self.radius
+                dense = np.zeros((n_ph, self.n_buckets, 2 * R + 1, 8))
+                for k, ph in enumerate(g):
+                    # (advanced indices around a slice put the tap axis first)
+                    dense[k, :, ph["taps"][:, 0] + R, ph["taps"][:, 1] + R] = \
+                        self.weights[k, :, :len(ph["taps"])].T
+                self._kernel.update(wd_f32=dense.astype(np.float32), wd_f64=dense)
         return self._kernel
 
     # -- files ------------------------------------------------------------------
