@@ -23,7 +23,8 @@ def test_help_lists_the_whole_chain(capsys):
         main(["--help"])
     assert e.value.code == 0
     out = capsys.readouterr().out
-    for cmd in ("simulate", "reconstruct", "evaluate", "bench", "opcount", "tradeoff", "config"):
+    for cmd in ("simulate", "reconstruct", "evaluate", "train", "bench", "opcount", "tradeoff",
+                "config"):
         assert cmd in out
 
 
@@ -152,3 +153,34 @@ def test_readme_python_examples_run(capsys):
     aloe = shared_path("rgbd", "aloe")
     exec(compile(second.replace("../shared/data/rgbd/aloe", str(aloe)), "README.md", "exec"), ns)
     assert "valid depth" in capsys.readouterr().out
+
+
+def test_train_then_evaluate_and_reconstruct_with_the_filters(tmp_path, capsys):
+    """rgbz-fast train writes filters that evaluate and reconstruct take with --filters."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    data = tmp_path / "images"
+    data.mkdir()
+    iio.imwrite(data / "a.png", skimage.data.astronaut()[:64, :96])
+    iio.imwrite(data / "b.png", skimage.data.coffee()[:64, :96])
+    out = tmp_path / "f.npz"
+    assert main(["train", "--dataset", str(data), "--pattern", "mask2", "--out", str(out),
+                 "--strength", "1", "--coherence", "1", "--quiet"]) == 0
+    f = rz.reconstruction.LearnedFilters.load(out)
+    assert f.pattern == rz.mask2() and f.meta["training_set"] == "images"
+    assert f.meta["n_images"] == 2 and f.n_buckets == 8
+    assert main(["evaluate", "--dataset", str(data), "--patterns", "mask2", "--methods",
+                 "bilinear,learned", "--metrics", "cfa_psnr", "--filters", str(out),
+                 "--out", str(tmp_path / "res"), "--no-plots", "--quiet",
+                 "--processes", "1"]) == 0
+    assert "learned" in capsys.readouterr().out
+    # filters of another pattern: one line, status 2
+    assert main(["evaluate", "--dataset", str(data), "--patterns", "mask1", "--methods",
+                 "learned", "--metrics", "cfa_psnr", "--filters", str(out), "--out",
+                 str(tmp_path / "res2"), "--no-plots", "--quiet", "--processes", "1"]) == 2
+    err = capsys.readouterr().err
+    assert re.match(r"^rgbz-fast evaluate: error: filters: fitted for pattern 'mask2'", err)
+    assert main(["train", "--dataset", str(tmp_path / "nope"), "--pattern", "mask1",
+                 "--out", str(tmp_path / "g.npz")]) == 2
+    assert not (tmp_path / "g.npz").exists()

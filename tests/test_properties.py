@@ -202,7 +202,8 @@ def test_reconstruct_never_crashes_or_returns_garbage(data, pattern_name, method
 def test_learned_never_crashes_or_returns_garbage(data, pattern_name, bit_depth, dtype,
                                                   precision, workers):
     """The shipped filters on any frame: a valid result (its linear filters may overshoot
-    the range of the known pixels, never [0, 2**b - 1]), the reference in float64."""
+    the range of the known pixels, never [0, 2**b - 1]), the reference in float64 (but at
+    the fragile sites of tests/_reference/learned.py)."""
     if dtype == np.uint8 and bit_depth > 8:
         dtype = np.uint16
     pattern = rz.get_pattern(pattern_name)
@@ -224,9 +225,15 @@ def test_learned_never_crashes_or_returns_garbage(data, pattern_name, bit_depth,
     z = pattern.z_mask(frame.shape)
     np.testing.assert_array_equal(out[~z], frame[~z])
     if precision == "float64":
-        ref = reference_learned(frame, rz.reconstruction.default_filters(pattern, bit_depth))
+        # fragile sites (an isotropic window: its orientation is rounding noise) excepted
+        ref, fragile = reference_learned(
+            frame, rz.reconstruction.default_filters(pattern, bit_depth), return_fragile=True)
         tol = {np.float64: 1e-9 * top, np.float32: 1e-6 * top}.get(dtype, 0.5 + 1e-6 * top)
-        np.testing.assert_allclose(out.astype(np.float64)[z], ref[z], rtol=1e-9, atol=tol)
+        keep = z & ~fragile
+        if (z & fragile).any():
+            event("fragile sites left out")
+        np.testing.assert_allclose(out.astype(np.float64)[keep], ref[keep], rtol=1e-9,
+                                   atol=tol)
 
 
 @quick(150)

@@ -11,6 +11,7 @@ from .._patterns import get_pattern
 from .._validate import check_bit_depth, check_choice, check_flag, check_int, check_seed
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, ReconstructParams
+from ..reconstruction._learned import resolve_filters
 
 __all__ = ["EvalConfig", "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "HIGHER_IS_BETTER",
            "METHOD_LABELS", "PAPER_TABLE3"]
@@ -131,6 +132,10 @@ class EvalConfig:
                              "linearise=False is a noise-free protocol")
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
+        if "learned" in self.methods:
+            # filters for every pattern at this bit depth (shipped or given), before any image
+            for p in self.patterns:
+                resolve_filters(self.params.filters, get_pattern(p), self.bit_depth)
 
     @property
     def image_metrics(self):
