@@ -47,105 +47,23 @@ static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
     return i < 0 ? i + P * ((P - 1 - i) / P) : (i >= n ? i - P * ((i - n + P) / P) : i);
 }
 
+/* the 8 instantiations: each element type (learned.instances.h adds both precisions) */
 #define IN_T uint8_t
 #define IS u8
 #define IN_IS_INT 1
-#define REAL float
-#define RS f32
-#define RW w_f32
-#define RWD wd_f32
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#define REAL double
-#define RS f64
-#define RW w_f64
-#define RWD wd_f64
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
+#include "learned.instances.h"
 #define IN_T uint16_t
 #define IS u16
 #define IN_IS_INT 1
-#define REAL float
-#define RS f32
-#define RW w_f32
-#define RWD wd_f32
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#define REAL double
-#define RS f64
-#define RW w_f64
-#define RWD wd_f64
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
+#include "learned.instances.h"
 #define IN_T float
 #define IS f32
 #define IN_IS_INT 0
-#define REAL float
-#define RS f32
-#define RW w_f32
-#define RWD wd_f32
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#define REAL double
-#define RS f64
-#define RW w_f64
-#define RWD wd_f64
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
+#include "learned.instances.h"
 #define IN_T double
 #define IS f64
 #define IN_IS_INT 0
-#define REAL float
-#define RS f32
-#define RW w_f32
-#define RWD wd_f32
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#define REAL double
-#define RS f64
-#define RW w_f64
-#define RWD wd_f64
-#include "learned.template.h"
-#undef REAL
-#undef RS
-#undef RW
-#undef RWD
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
+#include "learned.instances.h"
 
 /* 1 when the fast path computes what the pairs say: the window fits the dense rows of 8,
    both weight tables are there, and for every phase and direction the pairs are exactly the

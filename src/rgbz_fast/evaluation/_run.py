@@ -151,6 +151,27 @@ def _pool_task(args):
     return evaluate_image(source, config, cache_dir, workers=workers)
 
 
+def dataset_sources(dataset, limit=None):
+    """``dataset`` (a folder, an iterable of ImageSource, or None: the sample images) as a
+    non-empty list of ImageSource, the first ``limit`` only when given."""
+    if dataset is None:
+        dataset = sample_dataset()
+    elif isinstance(dataset, (str, os.PathLike)):
+        dataset = folder_dataset(dataset)
+    try:
+        dataset = list(dataset)[:limit] if limit else list(dataset)
+    except TypeError:
+        raise TypeError(f"dataset: expected a list of ImageSource, a folder or None, got "
+                        f"{type(dataset).__name__}") from None
+    if not dataset:
+        raise ValueError("dataset: no images")
+    bad = [s for s in dataset if not isinstance(s, ImageSource)]
+    if bad:
+        raise TypeError(f"dataset: expected ImageSource entries (see folder_dataset), got "
+                        f"{type(bad[0]).__name__} {bad[0]!r}")
+    return dataset
+
+
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
              scheduler=None, progress=True, **config_kwargs):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
@@ -195,21 +216,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     elif not isinstance(config, EvalConfig):
         raise TypeError(f"config: expected an EvalConfig, got {type(config).__name__}")
     nproc = check_processes(processes)
-    if dataset is None:
-        dataset = sample_dataset()
-    elif isinstance(dataset, (str, os.PathLike)):
-        dataset = folder_dataset(dataset)
-    try:
-        dataset = list(dataset)
-    except TypeError:
-        raise TypeError(f"dataset: expected a list of ImageSource, a folder or None, got "
-                        f"{type(dataset).__name__}") from None
-    if not dataset:
-        raise ValueError("dataset: no images")
-    bad = [s for s in dataset if not isinstance(s, ImageSource)]
-    if bad:
-        raise TypeError(f"dataset: expected ImageSource entries (see folder_dataset), got "
-                        f"{type(bad[0]).__name__} {bad[0]!r}")
+    dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")

@@ -7,10 +7,9 @@ from dataclasses import replace
 from pathlib import Path
 
 from .._patterns import get_pattern
-from ..io import ImageSource, folder_dataset
 from ..reconstruction import train
 from ._config import EvalConfig
-from ._run import image_frames
+from ._run import dataset_sources, image_frames
 
 __all__ = ["train_filters"]
 
@@ -27,9 +26,10 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
 
     Parameters
     ----------
-    dataset : str, Path or list of ImageSource
-        A folder of images (:func:`~rgbz_fast.io.folder_dataset`) or a list of
-        sources. Fit on images you will not evaluate on.
+    dataset : str, Path, list of ImageSource or None
+        A folder of images (:func:`~rgbz_fast.io.folder_dataset`), a list of
+        sources, or None (the sample images). Fit on images you will not
+        evaluate on.
     pattern : Pattern or str
         The pattern to fit the filters for.
     bit_depth : int
@@ -72,16 +72,8 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
                         linearise=linearise, seed=seed, metrics=("cfa_psnr",))
     if isinstance(dataset, (str, os.PathLike)):
         name = name or Path(dataset).resolve().name
-        dataset = folder_dataset(dataset, limit)
-    else:
-        dataset = list(dataset)[:limit] if limit else list(dataset)
-        bad = [s for s in dataset if not isinstance(s, ImageSource)]
-        if bad:
-            raise TypeError(f"dataset: expected a folder or ImageSource entries, got "
-                            f"{type(bad[0]).__name__}")
-        name = name or ("+".join(s.name for s in dataset) if len(dataset) <= 3 else "custom")
-    if not dataset:
-        raise ValueError("dataset: no images")
+    dataset = dataset_sources(dataset, limit)
+    name = name or ("+".join(s.name for s in dataset) if len(dataset) <= 3 else "custom")
     from tqdm.auto import tqdm
 
     def frames():
