@@ -61,7 +61,7 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int 
     const double *st = f->str_thr + (ptrdiff_t)k * (ns - 1);
     const double *ct = f->coh_thr2 + (ptrdiff_t)k * (nc - 1);
     const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
-    REAL tt[LRN_BLK], m2[LRN_BLK];
+    REAL tt[LRN_BLK] = {0}, m2[LRN_BLK] = {0};
     LRN_IVDEP for (int j = 0; j < n; j++) {
         const REAL a = OSUB(e[0][j], e[1][j]);
         const REAL b = OMUL(OSUB(e[2][j], e[3][j]), (REAL)0.5);
@@ -204,12 +204,23 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *const *rowp, ptrdiff_t y, 
 
 /* res[j]: the dot product of the dense window of the site at x0 + j px with its bucket's
    dense weights (rows of 8: the 7 pixels of the window row and one weight of 0). With GCC or
-   Clang each row is one 8-lane vector operation (vector extensions: the auto-vectoriser
-   leaves this loop scalar); the fast path never runs in the counting build, which counts the
-   per-site formulation. */
+   Clang each row is one or two 32-byte vector operations (vector extensions: the
+   auto-vectoriser leaves this loop scalar); the fast path never runs in the counting build,
+   which counts the per-site formulation. */
 #if LRN_VECTOR_EXT
-typedef IN_T LRN_CAT(lrn_in8, IS, RS) __attribute__((vector_size(8 * sizeof(IN_T))));
-typedef REAL LRN_CAT(lrn_r8, IS, RS) __attribute__((vector_size(8 * sizeof(REAL))));
+/* 32-byte vectors (AVX2's width: 8 floats or 4 doubles; wider ones are expanded element by
+   element) and the element vectors they are converted from */
+#define LRN_LANES ((int)(32 / sizeof(REAL)))
+typedef IN_T LRN_CAT(lrn_inv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * sizeof(IN_T))));
+typedef REAL LRN_CAT(lrn_rv, IS, RS) __attribute__((vector_size(32)));
+#if IN_IS_INT
+/* small integers reach REAL through int32 (one widening and one conversion instruction) */
+typedef int32_t LRN_CAT(lrn_iv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * 4)));
+#define LRN_TO_REAL(raw, rv) \
+    __builtin_convertvector(__builtin_convertvector(raw, LRN_CAT(lrn_iv, IS, RS)), rv)
+#else
+#define LRN_TO_REAL(raw, rv) __builtin_convertvector(raw, rv)
+#endif
 #endif
 RGBZ_CLONES
 static void LRN_CAT(lrn_dense_dot, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
@@ -222,15 +233,19 @@ static void LRN_CAT(lrn_dense_dot, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0
         const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
         const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
 #if LRN_VECTOR_EXT
-        typedef LRN_CAT(lrn_r8, IS, RS) r8;
-        r8 acc = {0, 0, 0, 0, 0, 0, 0, 0};
-        for (int dy = 0; dy < rows; dy++) {
-            LRN_CAT(lrn_in8, IS, RS) raw;
-            r8 wv;
-            memcpy(&raw, rowp[dy] + x, sizeof raw);
-            memcpy(&wv, w + dy * 8, sizeof wv);
-            acc += wv * __builtin_convertvector(raw, r8);
-        }
+        typedef LRN_CAT(lrn_rv, IS, RS) rv;
+        rv acc = {0};
+        for (int dy = 0; dy < rows; dy++)
+            for (int h = 0; h < 8; h += LRN_LANES) {
+                LRN_CAT(lrn_inv, IS, RS) raw;
+                rv wv;
+                memcpy(&raw, rowp[dy] + x + h, sizeof raw);
+                memcpy(&wv, w + dy * 8 + h, sizeof wv);
+                acc += wv * LRN_TO_REAL(raw, rv);
+            }
+        REAL sum = acc[0];
+        for (int l = 1; l < LRN_LANES; l++) sum += acc[l];
+        res[j] = sum;
 #else
         REAL acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (int dy = 0; dy < rows; dy++) {
@@ -238,11 +253,15 @@ static void LRN_CAT(lrn_dense_dot, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0
             const REAL *restrict wr = w + dy * 8;
             for (int c = 0; c < 8; c++) acc[c] = OADD(acc[c], OMUL(wr[c], (REAL)r[c]));
         }
-#endif
         res[j] = OADD(OADD(OADD(acc[0], acc[4]), OADD(acc[2], acc[6])),
                       OADD(OADD(acc[1], acc[5]), OADD(acc[3], acc[7])));
+#endif
     }
 }
+#ifdef LRN_LANES
+#undef LRN_LANES
+#undef LRN_TO_REAL
+#endif
 
 /* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the
    box sums bx of the row, their buckets, their dense dot products */
