@@ -155,8 +155,8 @@ def test_readme_python_examples_run(capsys):
     assert "valid depth" in capsys.readouterr().out
 
 
-def test_train_then_evaluate_and_reconstruct_with_the_filters(tmp_path, capsys):
-    """rgbz-fast train writes filters that evaluate and reconstruct take with --filters."""
+def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
+    """rgbz-fast train writes filters that evaluate takes with --filters."""
     import imageio.v3 as iio
     import skimage.data
 
