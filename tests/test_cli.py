@@ -23,7 +23,8 @@ def test_help_lists_the_whole_chain(capsys):
         main(["--help"])
     assert e.value.code == 0
     out = capsys.readouterr().out
-    for cmd in ("simulate", "reconstruct", "evaluate", "bench", "opcount", "tradeoff", "config"):
+    for cmd in ("simulate", "reconstruct", "evaluate", "train", "bench", "opcount", "tradeoff",
+                "config"):
         assert cmd in out
 
 
@@ -356,7 +357,9 @@ def test_every_option_has_help_with_its_default_in_user_words(capsys):
         names.append(name)
         assert action.help and len(action.help) > 10, name
         flag = isinstance(action, (argparse._StoreTrueAction, argparse._StoreConstAction))
-        if not flag:
+        if action.required:
+            assert "required" in action.help, name
+        elif not flag:
             assert "default" in shown._get_help_string(action), name
         assert not banned.search(action.help), (name, action.help)
     assert "reconstruct --rgbz-pattern" in names and "depth --range" in names
@@ -386,3 +389,34 @@ def test_help_names_the_default_output_folders(capsys):
             main([cmd, "--help"])
         assert f"(default: {folder})" in capsys.readouterr().out
         assert folder in readme, folder
+
+
+def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
+    """rgbz-fast train writes filters that evaluate takes with --filters."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    data = tmp_path / "images"
+    data.mkdir()
+    iio.imwrite(data / "a.png", skimage.data.astronaut()[:64, :96])
+    iio.imwrite(data / "b.png", skimage.data.coffee()[:64, :96])
+    out = tmp_path / "f.npz"
+    assert main(["train", "--dataset", str(data), "--pattern", "mask2", "--out", str(out),
+                 "--strength", "1", "--coherence", "1", "--quiet"]) == 0
+    f = rz.reconstruction.LearnedFilters.load(out)
+    assert f.pattern == rz.mask2() and f.meta["training_set"] == "images"
+    assert f.meta["n_images"] == 2 and f.n_buckets == 8
+    assert main(["evaluate", "--dataset", str(data), "--patterns", "mask2", "--methods",
+                 "bilinear,learned", "--metrics", "cfa_psnr", "--filters", str(out),
+                 "--out", str(tmp_path / "res"), "--no-plots", "--quiet",
+                 "--processes", "1"]) == 0
+    assert "learned" in capsys.readouterr().out
+    # filters of another pattern: one line, status 2
+    assert main(["evaluate", "--dataset", str(data), "--patterns", "mask1", "--methods",
+                 "learned", "--metrics", "cfa_psnr", "--filters", str(out), "--out",
+                 str(tmp_path / "res2"), "--no-plots", "--quiet", "--processes", "1"]) == 2
+    err = capsys.readouterr().err
+    assert re.match(r"^rgbz-fast evaluate: error: filters: fitted for pattern 'mask2'", err)
+    assert main(["train", "--dataset", str(tmp_path / "nope"), "--pattern", "mask1",
+                 "--out", str(tmp_path / "g.npz")]) == 2
+    assert not (tmp_path / "g.npz").exists()

@@ -34,6 +34,7 @@ from hypothesis import HealthCheck, event, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 import rgbz_fast as rz  # noqa: E402
+from _reference.learned import reference_learned  # noqa: E402
 from _reference.reconstruction import reference_reconstruct  # noqa: E402
 from rgbz_fast.isp import demosaic  # noqa: E402
 from rgbz_fast.tof import demodulate, unwrap  # noqa: E402
@@ -42,7 +43,8 @@ DTYPES = (np.uint8, np.uint16, np.float32, np.float64)
 PHASES = rz.BAYER_PHASES
 PRESETS = [f"{base}_{ph.lower()}" for base in ("mask1", "mask2", "rows", "bayer")
            for ph in PHASES]
-METHODS = tuple(rz.METHODS)
+#: the plan methods; "learned" (filters fitted per pattern and bit depth) has its own test below
+METHODS = tuple(m for m in rz.METHODS if m != "learned")
 #: tools/sanitize.sh can skip the inputs of bug B10 (docs/reports/robustness.md): undefined behaviour
 #: that UBSan stops on, harmless on x86 today
 KNOWN_UB_SKIPPED = bool(os.environ.get("RGBZ_SKIP_KNOWN_UB"))
@@ -191,6 +193,47 @@ def test_reconstruct_never_crashes_or_returns_garbage(data, pattern_name, method
         tol = {np.float64: 1e-9 * max(top, 1), np.float32: 1e-6 * max(top, 1)}.get(
             dtype, 0.5 + 1e-6 * top)
         np.testing.assert_allclose(out.astype(np.float64), ref, rtol=1e-9, atol=tol)
+
+
+@quick(300)
+@given(data=st.data(), pattern_name=st.sampled_from(["mask1", "mask2"]),
+       bit_depth=st.sampled_from([8, 11]), dtype=st.sampled_from(DTYPES),
+       precision=st.sampled_from(["float32", "float64"]), workers=st.sampled_from([1, 2]))
+def test_learned_never_crashes_or_returns_garbage(data, pattern_name, bit_depth, dtype,
+                                                  precision, workers):
+    """The shipped filters on any frame: a valid result (its linear filters may overshoot
+    the range of the known pixels, never [0, 2**b - 1]), the reference in float64 (but at
+    the fragile sites of tests/_reference/learned.py)."""
+    if dtype == np.uint8 and bit_depth > 8:
+        dtype = np.uint16
+    pattern = rz.get_pattern(pattern_name)
+    frame = data.draw(frames(pattern, dtype, bit_depth), label="frame")
+    before = frame.copy()
+    try:
+        out = rz.reconstruct(frame, "learned", pattern=pattern, bit_depth=bit_depth,
+                             precision=precision, workers=workers)
+    except (ValueError, TypeError) as exc:
+        _named_error(exc)
+        P, Q = pattern.period
+        assert frame.shape[0] < P or frame.shape[1] < Q, exc
+        return
+    finally:
+        np.testing.assert_array_equal(frame, before)
+    top = (1 << bit_depth) - 1
+    assert out.shape == frame.shape and out.dtype == frame.dtype
+    assert np.all(np.isfinite(out)) and out.min() >= 0 and out.max() <= top
+    z = pattern.z_mask(frame.shape)
+    np.testing.assert_array_equal(out[~z], frame[~z])
+    if precision == "float64":
+        # fragile sites (an isotropic window: its orientation is rounding noise) excepted
+        ref, fragile = reference_learned(
+            frame, rz.reconstruction.default_filters(pattern, bit_depth), return_fragile=True)
+        tol = {np.float64: 1e-9 * top, np.float32: 1e-6 * top}.get(dtype, 0.5 + 1e-6 * top)
+        keep = z & ~fragile
+        if (z & fragile).any():
+            event("fragile sites left out")
+        np.testing.assert_allclose(out.astype(np.float64)[keep], ref[keep], rtol=1e-9,
+                                   atol=tol)
 
 
 @quick(150)

@@ -1,6 +1,6 @@
 """Accuracy tracked per commit: an accuracy regression shows like a speed one."""
 
-from .common import astronaut, kodak_dir, need, rz
+from .common import astronaut, kodak_dir, need, need_method, rz
 
 
 def _cfa_psnr(img, pattern, method):
@@ -17,11 +17,12 @@ class QualitySuite:
     """Noise-free CFA PSNR (dB) on the Z sites of skimage's astronaut (always available)."""
 
     unit = "dB"
-    params = (["mask1", "mask2"], ["sg", "bilinear"])
+    params = (["mask1", "mask2"], ["sg", "bilinear", "learned"])
     param_names = ["pattern", "method"]
 
     def setup(self, pattern, method):
         need("reconstruct", "mosaic", "metrics.cfa_psnr")
+        need_method(method)
         self.img = astronaut()
 
     def track_cfa_psnr_astronaut(self, pattern, method):
@@ -32,11 +33,12 @@ class KodakQualitySuite:
     """The same on a fixed Kodak image (kodim19, the fence); skipped without ../shared/data."""
 
     unit = "dB"
-    params = (["mask1", "mask2"], ["sg", "bilinear"])
+    params = (["mask1", "mask2"], ["sg", "bilinear", "learned"])
     param_names = ["pattern", "method"]
 
     def setup(self, pattern, method):
         need("reconstruct", "mosaic", "metrics.cfa_psnr")
+        need_method(method)
         d = kodak_dir()
         if d is None:
             raise NotImplementedError("../shared/data/kodak not found")

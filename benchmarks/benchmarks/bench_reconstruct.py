@@ -2,17 +2,19 @@
 
 import numpy as np
 
-from .common import BIG_SHAPE, KODAK_SHAPE, astronaut, need, rz, skip_if_slow
+from .common import BIG_SHAPE, KODAK_SHAPE, astronaut, need, need_method, rz, skip_if_slow
 
 
 class ReconstructSuite:
     params = ([KODAK_SHAPE, BIG_SHAPE], ["mask1", "mask2"],
-              ["bilinear", "bi", "edi_central", "edi_line", "sg"], ["float32", "float64"])
+              ["bilinear", "bi", "edi_central", "edi_line", "sg", "learned"],
+              ["float32", "float64"])
     param_names = ["shape", "pattern", "method", "precision"]
     timeout = 300
 
     def setup(self, shape, pattern, method, precision):
         need("reconstruct", "mosaic")
+        need_method(method)
         skip_if_slow(shape)
         self.frame = rz.mosaic(astronaut(shape), pattern)
         rz.reconstruct(self.frame.data[:64, :64], method, pattern=pattern, precision=precision)

@@ -38,6 +38,12 @@ def need(*names):
                     raise NotImplementedError(f"rgbz_fast.{name} is not available") from None
 
 
+def need_method(method):
+    """Raise NotImplementedError (asv: skipped) for a method this commit's reconstruct lacks."""
+    if method not in getattr(rz, "METHODS", ()):
+        raise NotImplementedError(f"method {method!r} is not available")
+
+
 def skip_if_slow(shape):
     if SKIP_SLOW and shape[0] * shape[1] > 4_000_000:
         raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")

@@ -5,6 +5,7 @@
                           -> Bayer CFA or sRGB image (and the reference it is compared with)
     rgbz-fast depth       frames with ToF taps -> depth map (float TIFF), flags, preview
     rgbz-fast evaluate    dataset -> metrics tables, CSV/JSON, figures
+    rgbz-fast train       dataset -> filters of the "learned" reconstruction (.npz)
     rgbz-fast bench       kernel speed (Mpix/s) beside OpenCV and NumPy
     rgbz-fast opcount     operations per missing pixel beside the paper's Table 1
     rgbz-fast tradeoff    speed against accuracy, Pareto plot
@@ -34,7 +35,7 @@ from ._build_config import VERSION
 from ._config import show_config
 from ._patterns import get_pattern
 from ._validate import parse_shape
-from .evaluation import EvalConfig, evaluate, write_reports
+from .evaluation import EvalConfig, evaluate, train_filters, write_reports
 from .io import (MAX_BYTES_ENV, MAX_PIXELS_ENV, atomic_write, folder_dataset, load_frame,
                  read_file, sample_dataset, save_frame, to_rgbz)
 from .isp import ColourISP
@@ -141,6 +142,10 @@ CLIP_HELP = ("clipped (saturated) pixels: off takes every pixel as a real value;
              "out of the weights (default: off; a pixel at the level is not always a clipped "
              "one)")
 
+FILTERS_HELP = ("method learned: filters files from `rgbz-fast train` (the one fitted for the "
+                "frame's pattern and bit depth is used); default: the ones shipped for Mask1 "
+                "and Mask2")
+
 
 def _add_limits(p):
     p.add_argument("--max-pixels", type=_positive_int, default=None, metavar="N",
@@ -227,6 +232,8 @@ def _parser():
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
     r.add_argument("--clip-level", type=_clip_arg, default=None, metavar="off|auto|DN",
                    help=CLIP_HELP)
+    r.add_argument("--filters", type=_csv, default=None, metavar="FILE[,FILE]",
+                   help=FILTERS_HELP)
     raw = r.add_argument_group("raw files", "How to read a camera raw, a 16-bit Bayer PNG/TIFF "
                                             "or a headerless file (camera raw files record "
                                             "phase and levels; the options override them)")
@@ -302,6 +309,13 @@ def _parser():
                    help="border (pixels) left out of the image metrics")
     e.add_argument("--precision", choices=("float32", "float64"), default="float64",
                    help="arithmetic of the reconstruction")
+    e.add_argument("--bit-depth", type=_positive_int, default=11,
+                   help="bits of the simulated frames")
+    e.add_argument("--linearise", action=argparse.BooleanOptionalAction, default=True,
+                   help="linearise 8-bit sRGB images with the sRGB EOTF (default); "
+                        "--no-linearise mosaics the sRGB values (the 8-bit sRGB protocol)")
+    e.add_argument("--filters", type=_csv, default=None, metavar="FILE[,FILE]",
+                   help=FILTERS_HELP)
     e.add_argument("--domain", choices=("intensity", "colour_difference"), default="intensity",
                    help="interpolate intensities (the paper, eq. 13) or colour differences "
                         "(eq. 5)")
@@ -332,6 +346,47 @@ def _parser():
     e.add_argument("--no-plots", action="store_true", help="tables only, no figures")
     e.add_argument("--json", action="store_true", help="print the summary as JSON")
     _add_common(e, "evaluate")
+
+    t = sub.add_parser("train", help="dataset -> filters of the learned reconstruction",
+                       description="Fit the filters of method 'learned' (hashed 7x7 linear "
+                                   "filters, docs/guide/learned.md) to a folder of images, with "
+                                   "the evaluation's protocol (sRGB EOTF, mosaic at --bit-depth), "
+                                   "and write them to --out. Fit on images you do not evaluate "
+                                   "on.")
+    t.add_argument("--dataset", type=Path, required=True, metavar="DIR",
+                   help="folder of RGB images to fit on (required; keep the images you "
+                        "evaluate on out of it)")
+    t.add_argument("--pattern", default="mask1",
+                   help="RGB-Z pattern: mask1, mask2 or a tile such as ZR/BG (default: mask1)")
+    t.add_argument("--out", type=Path, required=True, metavar="FILE",
+                   help="the .npz file to write (required)")
+    t.add_argument("--bit-depth", type=_positive_int, default=11,
+                   help="bits of the frames the filters are for")
+    t.add_argument("--noise", action="store_true",
+                   help="fit on frames of the sensor noise model (default: noise-free mosaics)")
+    t.add_argument("--linearise", action=argparse.BooleanOptionalAction, default=True,
+                   help="linearise 8-bit sRGB images with the sRGB EOTF (default); "
+                        "--no-linearise fits on the sRGB values (the 8-bit sRGB protocol)")
+    t.add_argument("--name", default=None,
+                   help="training set name kept in the file (default: the folder's name)")
+    t.add_argument("--limit", type=_positive_int, default=None, metavar="N",
+                   help="the first N images only (default: every image)")
+    t.add_argument("--radius", type=_positive_int, default=3,
+                   help="window radius of the filter taps (3: a 7x7 window)")
+    t.add_argument("--hash-radius", type=_positive_int, default=3,
+                   help="window radius of the gradients the hash is computed from")
+    t.add_argument("--strength", type=_positive_int, default=3,
+                   help="strength levels of the hash")
+    t.add_argument("--coherence", type=_positive_int, default=3,
+                   help="coherence levels of the hash")
+    t.add_argument("--ridge", type=_positive_float, default=1e-3,
+                   help="ridge regularisation, relative to the mean diagonal of the normal "
+                        "matrix")
+    t.add_argument("--prior", type=_number(float, lambda v: 0 <= v < float("inf"),
+                                           "a number >= 0"), default=50.0,
+                   help="weight, in training sites, of the common filter in each bucket's fit")
+    t.add_argument("--quiet", action="store_true", help="no progress bar or summary line")
+    _add_limits(t)
 
     for name, mod, text in (("bench", "bench", "kernel speed beside OpenCV and NumPy"),
                             ("opcount", "opcount", "operations per missing pixel vs Table 1"),
@@ -385,7 +440,7 @@ def main(argv=None):
             if value is not None:
                 os.environ[key] = str(value)
         return {"simulate": _simulate, "reconstruct": _reconstruct, "depth": _depth,
-                "evaluate": _evaluate, "config": _config}[args.command](args)
+                "evaluate": _evaluate, "train": _train, "config": _config}[args.command](args)
     except (CliError, ValueError, TypeError, OSError, ImportError) as exc:
         text = _for_the_command_line(str(exc)).splitlines()[0] if str(exc) else \
             type(exc).__name__
@@ -525,7 +580,7 @@ def _reconstruct(args):
                        "options (--phase, --black-level, ...) apply to Bayer raw files, with "
                        "--rgbz-pattern")
     params = ReconstructParams(precision=args.precision, domain=args.domain,
-                               clip_level=args.clip_level)
+                               clip_level=args.clip_level, filters=args.filters)
     from_file = _raw_options_file(args.raw_options)
     for f in args.frames:
         if not f.exists():
@@ -719,9 +774,10 @@ def depth_preview(res, name, summary, scale=None, truth_known=None):
 # --------------------------------------------------------------------------- evaluate
 def _evaluate(args):
     params = ReconstructParams(precision=args.precision, domain=args.domain,
-                               clip_level=args.clip_level)
+                               clip_level=args.clip_level, filters=args.filters)
     config = EvalConfig(patterns=args.patterns, methods=args.methods, metrics=args.metrics,
-                        noise=args.noise, demosaic=args.demosaic, crop=args.crop, params=params)
+                        noise=args.noise, bit_depth=args.bit_depth, linearise=args.linearise,
+                        demosaic=args.demosaic, crop=args.crop, params=params)
     raw_options = None
     if args.raw_options is not None:
         raw_options = _raw_options_file(args.raw_options)
@@ -751,6 +807,24 @@ def _evaluate(args):
         print(res.plain_table())
         if not args.quiet:
             print(f"reports: {', '.join(str(f) for f in files)}")
+    return 0
+
+
+def _train(args):
+    if not args.dataset.is_dir():
+        raise CliError(f"--dataset: {args.dataset} is not a folder")
+    command = " ".join(["rgbz-fast train", *sys.argv[2:]]) if sys.argv[1:2] == ["train"] else ""
+    filters = train_filters(
+        args.dataset, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
+        linearise=args.linearise, limit=args.limit, name=args.name, progress=not args.quiet,
+        radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,
+        n_coherence=args.coherence, ridge=args.ridge, prior=args.prior,
+        meta={"command": command} if command else {})
+    filters.save(args.out)
+    if not args.quiet:
+        m = filters.meta
+        print(f"{filters} -> {args.out} ({m['n_images']} images, {m['n_sites']} sites, "
+              f"{m['empty_buckets']} empty buckets)")
     return 0
 
 

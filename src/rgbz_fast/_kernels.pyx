@@ -60,6 +60,31 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_counting_build_count()
     int rgbz_opcount_target_count(uint64_t *counts)
 
+cdef extern from "learned.h" nogil:
+    ctypedef struct rgbz_learned_filters:
+        int32_t n_phases, n_buckets, n_taps_max, n_pairs_max, n_str, n_coh, radius
+        int32_t hash_radius
+        const int32_t *n_taps
+        const int32_t *tap_dy
+        const int32_t *tap_dx
+        const int32_t *n_pairs
+        const int32_t *pair_a
+        const int32_t *pair_b
+        const double *str_thr
+        const double *coh_thr2
+        const float *w_f32
+        const double *w_f64
+        const float *wd_f32
+        const double *wd_f64
+    int rgbz_learned(int in_type, int precision, const void *src, void *dst, Py_ssize_t rows,
+                     Py_ssize_t cols, int py, int px, const int32_t *phase_map,
+                     const rgbz_learned_filters *f, double maxval, int workers,
+                     uint64_t *opcounts)
+    int rgbz_learned_count(int in_type, int precision, const void *src, void *dst,
+                           Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                           const int32_t *phase_map, const rgbz_learned_filters *f,
+                           double maxval, int workers, uint64_t *opcounts)
+
 ctypedef fused frame_t:
     uint8_t
     uint16_t
@@ -391,4 +416,75 @@ def oetf_finish(const rgb_t[::1] x, const rgb_t[::1] p, code_t[::1] code, int wo
     cdef int bits = 8 if code_t is uint8_t else 16
     with nogil:
         status = rgbz_oetf_finish(t, &x[0], &p[0], x.shape[0], bits, &code[0], workers)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- learned (learned.c)
+def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int py, int px,
+            const int32_t[::1] phase_map, const int32_t[::1] n_taps,
+            const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
+            const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
+            const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
+            const double[:, ::1] coh_thr2, const float[:, :, ::1] w_f32,
+            const double[:, :, ::1] w_f64, int radius, int hash_radius, double maxval,
+            int workers, const float[:, :, :, ::1] wd_f32=None,
+            const double[:, :, :, ::1] wd_f64=None, uint64_t[::1] opcounts=None):
+    """Run the learned reconstruction (or its counting twin when ``opcounts`` is given).
+
+    Weights are tap-major, (n_phases, n_taps_max, n_buckets); thresholds
+    (n_phases, levels - 1), the coherence ones squared; the optional dense weights
+    (n_phases, n_buckets, 2 radius + 1, 8) enable the fast path (the layout of learned.h).
+    """
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int status
+    cdef rgbz_learned_filters f
+    cdef double zero = 0.0
+    f.n_phases = w_f32.shape[0]
+    f.n_taps_max = w_f32.shape[1]
+    f.n_buckets = w_f32.shape[2]
+    f.n_pairs_max = pair_a.shape[2]
+    f.n_str = str_thr.shape[1] + 1
+    f.n_coh = coh_thr2.shape[1] + 1
+    f.radius = radius
+    f.hash_radius = hash_radius
+    f.n_taps = &n_taps[0]
+    f.tap_dy = &tap_dy[0, 0]
+    f.tap_dx = &tap_dx[0, 0]
+    f.n_pairs = &n_pairs[0, 0]
+    f.pair_a = &pair_a[0, 0, 0]
+    f.pair_b = &pair_b[0, 0, 0]
+    # a level count of 1 has no threshold: the kernel reads none
+    f.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
+    f.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    f.w_f32 = &w_f32[0, 0, 0]
+    f.w_f64 = &w_f64[0, 0, 0]
+    f.wd_f32 = NULL
+    f.wd_f64 = NULL
+    if wd_f32 is not None and wd_f64 is not None:
+        if (wd_f32.shape[0] != f.n_phases or wd_f32.shape[1] != f.n_buckets
+                or wd_f32.shape[2] != 2 * radius + 1 or wd_f32.shape[3] != 8
+                or wd_f64.shape[0] != f.n_phases or wd_f64.shape[1] != f.n_buckets
+                or wd_f64.shape[2] != 2 * radius + 1 or wd_f64.shape[3] != 8):
+            raise ValueError("learned: inconsistent dense weights")
+        f.wd_f32 = &wd_f32[0, 0, 0, 0]
+        f.wd_f64 = &wd_f64[0, 0, 0, 0]
+    if (tap_dy.shape[0] != f.n_phases or n_taps.shape[0] != f.n_phases
+            or w_f64.shape[0] != f.n_phases or w_f64.shape[1] != f.n_taps_max
+            or w_f64.shape[2] != f.n_buckets or tap_dy.shape[1] != f.n_taps_max
+            or tap_dx.shape[1] != f.n_taps_max or pair_b.shape[2] != f.n_pairs_max):
+        raise ValueError("learned: inconsistent filter arrays")
+    cdef uint64_t *counts = NULL
+    if opcounts is not None:
+        if opcounts.shape[0] < f.n_phases * RGBZ_NOPS:
+            raise ValueError(f"opcounts: expected {f.n_phases * RGBZ_NOPS} counters")
+        counts = &opcounts[0]
+    with nogil:
+        if counts != NULL:
+            status = rgbz_learned_count(in_type, precision, &src[0, 0], &dst[0, 0],
+                                        src.shape[0], src.shape[1], py, px, &phase_map[0], &f,
+                                        maxval, 1, counts)
+        else:
+            status = rgbz_learned(in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0],
+                                  src.shape[1], py, px, &phase_map[0], &f, maxval, workers,
+                                  NULL)
     _raise_for(status)

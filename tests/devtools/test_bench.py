@@ -173,14 +173,18 @@ class _Image:
 
 def test_tradeoff_one_tiny_image(capsys, tmp_path):
     img = np.random.default_rng(0).integers(0, 256, (48, 64, 3), dtype=np.uint8)
-    res = tradeoff.run_tradeoff([_Image("noise", img)], methods=("bilinear", "sg"),
+    res = tradeoff.run_tradeoff([_Image("noise", img)], methods=("bilinear", "sg", "learned"),
                                 speed_shape=(48, 64), repeat=1)
     rows = res["rows"]
-    # bilinear: libm only (no exponential); sg: 2 precisions x 2 exps; x 2 masks
-    assert len(rows) == 2 * (2 + 4)
+    # bilinear: libm only (no exponential); sg: 2 precisions x 2 exps, and the
+    # colour-difference domain in float64/libm and float32/fast; learned: 2 precisions, no
+    # exponential; x 2 masks
+    assert len(rows) == 2 * (2 + 4 + 2 + 2)
+    assert sum(r["domain"] == "colour_difference" for r in rows) == 2 * 2
+    assert {r["exp"] for r in rows if r["method"] == "learned"} == {"-"}
     for r in rows:
         assert _finite_positive(r["mpix_s"]) and math.isfinite(r["cfa_psnr"])
-        base = r["precision"] == "float64" and r["exp"] == "libm"
+        base = r["precision"] == "float64" and r["exp"] in ("libm", "-")
         assert (r["max_abs_diff_dn"] is None) == base
         assert r["frac_diff"] is None or 0 <= r["frac_diff"] <= 1
     for p in ("mask1", "mask2"):
@@ -196,7 +200,9 @@ def test_tradeoff_cli(capsys, tmp_path):
                           "--patterns", "mask1", "--repeat", "1", "--out", str(tmp_path),
                           "--json"]) == 0
     res = json.loads(capsys.readouterr().out)
-    assert [r["method"] for r in res["rows"]] == ["bi", "bi"]
+    assert [(r["method"], r["domain"]) for r in res["rows"]] == [
+        ("bi", "intensity"), ("bi", "intensity"), ("bi", "colour_difference"),
+        ("bi", "colour_difference")]
     assert {p.name for p in tmp_path.iterdir()} == {"tradeoff.md", "tradeoff.png",
                                                     "tradeoff.json"}
     assert tradeoff.main(["--quick", "--quiet", "--methods", "nope"]) == 2

@@ -70,7 +70,7 @@ TABLE1 = {
     ("sg", "mask2", "green"): dict(add=142, mul=61, div=39, exp=12),
 }
 
-_DEFAULT_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+_DEFAULT_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
 #: the options of count_operations: the bit depth and the fields of ReconstructParams that
 #: change the arithmetic
 _KW = dict(bit_depth=11, **{k: v for k, v in ReconstructParams().as_dict().items()
@@ -159,6 +159,33 @@ def _site_counts(data, pattern, method, precision, kw, ablate_beta=False, fast_p
     return site_plans["target"].copy(), counts
 
 
+def _learned_site_counts(data, pattern, precision, bit_depth):
+    """Counts of the learned kernel (csrc/learned.c) per Z site: (targets, counts).
+
+    The counting build runs one site per block and keeps one row of counters per
+    phase; the hash and the dot product are branch-free, so every site of a
+    phase costs the same and the phase's total over its site count is exact.
+    """
+    from ..reconstruction._learned import resolve_filters
+
+    filters = resolve_filters(None, pattern, bit_depth)
+    n_ph = len(filters.geometry)
+    counts = np.zeros(n_ph * _kernels.NOPS, np.uint64)
+    _recon.run_learned(data, np.empty_like(data), pattern, filters, precision, bit_depth, 1,
+                       opcounts=counts)
+    counts = counts.reshape(n_ph, _kernels.NOPS)
+    P, Q = pattern.period
+    targets, rows = [], []
+    for k, ph in enumerate(filters.geometry):
+        r, c = ph["rc"]
+        n = len(range(r, data.shape[0], P)) * len(range(c, data.shape[1], Q))
+        targets += [ph["target"]] * n
+        rows.append(np.repeat(counts[k:k + 1] // max(n, 1), n, axis=0))
+        if counts[k].any() and (counts[k] % n).any():
+            raise RuntimeError("learned: site counts differ within a phase")
+    return np.array(targets), np.concatenate(rows)
+
+
 def _uses_mask1_fast(pattern, method, kw):
     """True where reconstruct() runs the Mask1 fast path (csrc/recon_mask1.h)."""
     return bool(_recon._MASK1_FAST and kw["domain"] == "intensity" and method != "edi_rows"
@@ -229,7 +256,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
     ----------
     method : str
         A method of :func:`rgbz_fast.reconstruct` ("bilinear", "bi",
-        "edi_central", "edi_line", "sg", "edi_rows").
+        "edi_central", "edi_line", "sg", "edi_rows", "learned": the shipped
+        filters of the pattern; every site, borders included, costs the same).
     pattern : Pattern or str
         The pattern (default Mask1).
     precision : {"float64", "float32"}
@@ -279,6 +307,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
                 precision=precision, **{k: v for k, v in kw.items() if k != "bit_depth"})
     if path not in ("auto", "generic"):
         raise ValueError(f"path: expected 'auto' or 'generic', got {path!r}")
+    if method == "learned":
+        return _summarise(*_learned_site_counts(data, pattern, precision.lower(), bd))
     targets, counts = _site_counts(data, pattern, method, precision.lower(), kw,
                                    fast_path=path == "auto")
     return _summarise(targets, counts)
@@ -337,13 +367,18 @@ def opcount_table(methods=_DEFAULT_METHODS, patterns=("mask1", "mask2"), *,
                                    **reconstruct_kwargs)
             data, _, bd = _frame_data(pattern, shape, seed, None, kw["bit_depth"])
             kwb = dict(kw, bit_depth=bd)
-            # the cost of beta, measured on the plan interpreter (plans with beta off)
-            t_nb, c_nb = _site_counts(data, pattern, method, precision, kwb, ablate_beta=True)
-            _, c_gen = _site_counts(data, pattern, method, precision, kwb, fast_path=False)
-            nb = _summarise(t_nb, c_nb)
-            gen = _summarise(t_nb, c_gen)
-            path = ("mask1 fast path" if _uses_mask1_fast(pattern, method, kwb)
-                    else "plan interpreter")
+            if method == "learned":          # no beta, one code path
+                nb = gen = res
+                path = "learned kernel"
+            else:
+                # the cost of beta, measured on the plan interpreter (plans with beta off)
+                t_nb, c_nb = _site_counts(data, pattern, method, precision, kwb,
+                                          ablate_beta=True)
+                _, c_gen = _site_counts(data, pattern, method, precision, kwb, fast_path=False)
+                nb = _summarise(t_nb, c_nb)
+                gen = _summarise(t_nb, c_gen)
+                path = ("mask1 fast path" if _uses_mask1_fast(pattern, method, kwb)
+                        else "plan interpreter")
             img = None
             if image is not None:
                 img = count_operations(method, pattern, precision=precision,
@@ -403,7 +438,8 @@ def opcount_report(rows=None, fmt="markdown", **kwargs):
     body = []
     for r in rows:
         line = [r["method"], r["pattern"], r["target"],
-                "fast" if r.get("path") == "mask1 fast path" else "plans"]
+                {"mask1 fast path": "fast", "learned kernel": "learned"}.get(r.get("path"),
+                                                                           "plans")]
         line += [_cell(r, k) for k in TABLE1_CATEGORIES]
         line += [_fmt(r["mean"]["abs"]), _fmt(r["mean"]["cmp"])]
         nb = r["add_no_beta"]
@@ -432,7 +468,9 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "×ratio. Mask2 'red/blue' is Table 1's first number, 'green' its second. abs and "
            "cmp are counted separately (Table 1 has no such rows); 'add w/o β' leaves out the "
            "intensity factor of eq. 4. path: the code reconstruct() runs, the Mask1 fast path "
-           "(csrc/recon_mask1.h) or the plan interpreter (csrc/recon_site.h).")
+           "(csrc/recon_mask1.h), the plan interpreter (csrc/recon_site.h) or the learned "
+           "kernel (csrc/learned.c: the hash, then one dot product over the taps; counted "
+           "by the counting build, the same at every site).")
 
 
 def main(argv=None):

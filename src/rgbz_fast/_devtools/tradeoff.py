@@ -1,8 +1,10 @@
-"""``rgbz-fast tradeoff``: speed against accuracy of every method, precision and exp.
+"""``rgbz-fast tradeoff``: speed against accuracy of every method, precision, exp and domain.
 
 For every reconstruction method x pattern (Mask1, Mask2) x precision
 (float32, float64) x exponential (the C library's ``exp``, and the fast
-polynomial ``exp="fast"`` for the methods that use one), it measures
+polynomial ``exp="fast"`` for the methods that use one) -- plus the
+colour-difference domain of the weighted methods (float64 with libm, float32
+with the fast exp) and the learned filters (no exponential) -- it measures
 
 * the speed: frame Mpix/s of ``reconstruct`` on one frame (the benchmark
   scene of ``rgbz-fast bench``, 2048x1536 by default), all threads, the best
@@ -46,20 +48,45 @@ from ._common import (CliError, check_out_dir, check_workers_arg, common_parser,
 
 __all__ = ["run_tradeoff", "pareto_front", "plot_tradeoff", "format_markdown", "main"]
 
-METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
 #: border (pixels) left out of CPSNR, as evaluate's default crop
 CROP = 8
 USES_EXP = ("edi_central", "edi_line", "sg")
+#: the methods that also run in the colour-difference domain (eq. 5)
+CD_METHODS = ("bi", "edi_central", "edi_line", "sg")
+#: the exp column of a method that has no exponential (learned)
+NO_EXP = "-"
 PATTERNS = ("mask1", "mask2")
 SPEED_SHAPE = (1536, 2048)
 QUICK_SPEED_SHAPE = (192, 256)
 
 
 def _variants(methods):
+    """(method, precision, exp, domain) of every row."""
     for m in methods:
         for prec in ("float64", "float32"):
+            if m == "learned":
+                yield m, prec, NO_EXP, "intensity"
+                continue
             for exp in (("libm", "fast") if m in USES_EXP else ("libm",)):
-                yield m, prec, exp
+                yield m, prec, exp, "intensity"
+    for m in methods:
+        if m in CD_METHODS:        # the library's defaults: libm in float64, fast in float32
+            yield m, "float64", "libm", "colour_difference"
+            yield m, "float32", "fast" if m in USES_EXP else "libm", "colour_difference"
+
+
+def _options(prec, exp, domain):
+    """The reconstruct() options of a row."""
+    kw = dict(precision=prec, domain=domain)
+    if exp != NO_EXP:
+        kw["exp"] = exp
+    return kw
+
+
+def _is_base(r):
+    """The float64 + libm row of a method and domain, the one the others are compared with."""
+    return r["precision"] == "float64" and r["exp"] in ("libm", NO_EXP)
 
 
 def pareto_front(points, tol=1e-3):
@@ -95,12 +122,13 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     """Measure every variant; returns the JSON-able result dict.
 
     ``dataset``: a list of :class:`rgbz_fast.io.ImageSource`. Returns ``{"rows": [...], ...}``
-    with, per row, ``pattern``, ``method``, ``precision``, ``exp``,
+    with, per row, ``pattern``, ``method``, ``precision``, ``exp``, ``domain``,
     ``mpix_s`` (best of ``repeat`` interleaved runs), ``mpix_s_median``,
     ``mpix_s_lo``/``hi`` (IQR), ``cfa_psnr`` and
     ``cpsnr`` (means over the images), ``max_abs_diff_dn`` and
-    ``frac_diff`` (against float64 + libm) and ``pareto`` (on the front of
-    its pattern; None in a ``quick`` run, whose speeds rank nothing).
+    ``frac_diff`` (against float64 + libm of the same method and domain) and
+    ``pareto`` (on the front of its pattern; None in a ``quick`` run, whose speeds rank
+    nothing).
     """
     import rgbz_fast as rz
     from ..evaluation import EvalConfig, image_frames
@@ -117,7 +145,7 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     bd = config.bit_depth
     chain = config.colour_isp()
     speed_rgb = make_rgb(speed_shape)
-    variants = [(p, m, pr, e) for p in patterns for (m, pr, e) in _variants(methods)]
+    variants = [(p, m, pr, e, d) for p in patterns for (m, pr, e, d) in _variants(methods)]
     # per pattern, per image: reference CFA, RGB-Z frame, reference sRGB and its gains
     prepared = {p: [] for p in patterns}
     for src in sources:
@@ -133,39 +161,41 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     # (the least disturbed), the median is kept beside it
     speed_frames = {p: rz.mosaic(speed_rgb, rz.get_pattern(p), bd) for p in patterns}
     times = {v: [] for v in variants}
-    for p, m, prec, exp in variants:                       # warm-up
-        rz.reconstruct(speed_frames[p], m, precision=prec, exp=exp, workers=workers)
+    for p, m, prec, exp, dom in variants:                       # warm-up
+        rz.reconstruct(speed_frames[p], m, workers=workers, **_options(prec, exp, dom))
     for _ in progress(range(repeat), desc="speed", quiet=quiet):
         for v in variants:
-            p, m, prec, exp = v
+            p, m, prec, exp, dom = v
+            kw = _options(prec, exp, dom)
             t0 = time.perf_counter()
-            rz.reconstruct(speed_frames[p], m, precision=prec, exp=exp, workers=workers)
+            rz.reconstruct(speed_frames[p], m, workers=workers, **kw)
             times[v].append(time.perf_counter() - t0)
     rows = []
     exact = {}
     for v in progress(variants, desc="accuracy", quiet=quiet):
-        p, m, prec, exp = v
+        p, m, prec, exp, dom = v
         q1, med, q3 = np.percentile(times[v], [25, 50, 75])
         best = min(times[v])
         npix = speed_shape[0] * speed_shape[1] / 1e6
         psnrs, cps, maxdiff, ndiff, nz = [], [], 0.0, 0, 0
         for i, (name, ref, frame, ref8, gains) in enumerate(prepared[p]):
-            out = rz.reconstruct(frame, m, precision=prec, exp=exp, workers=workers)
+            out = rz.reconstruct(frame, m, workers=workers, **_options(prec, exp, dom))
             z = frame.z_mask
             psnrs.append(cfa_psnr(ref, out, z, bit_depth=bd))
             test8 = chain.render(out, frame.pattern.bayer_phase, bit_depth=bd, gains=gains,
                                  workers=workers)
             cps.append(cpsnr(ref8, test8, crop=CROP))
-            key = (p, m, i)
-            if prec == "float64" and exp == "libm":
+            key = (p, m, dom, i)
+            if prec == "float64" and exp in ("libm", NO_EXP):
                 exact[key] = out
             else:
                 d = np.abs(out.astype(np.int32) - exact[key].astype(np.int32))[z]
                 maxdiff = max(maxdiff, float(d.max()))
                 ndiff += int(np.count_nonzero(d))
             nz += int(z.sum())
-        base = prec == "float64" and exp == "libm"
-        rows.append(dict(pattern=p, method=m, precision=prec, exp=exp, mpix_s=npix / best,
+        base = prec == "float64" and exp in ("libm", NO_EXP)
+        rows.append(dict(pattern=p, method=m, precision=prec, exp=exp, domain=dom,
+                         mpix_s=npix / best,
                          mpix_s_median=npix / med, mpix_s_lo=npix / q3, mpix_s_hi=npix / q1,
                          cfa_psnr=float(np.mean(psnrs)), cpsnr=float(np.mean(cps)),
                          cfa_psnr_per_image=[float(v) for v in psnrs],
@@ -193,9 +223,9 @@ class _Crop:
         return np.ascontiguousarray(self.source.load()[:self.size, :self.size])
 
 
-def _label(r):
-    s = f"{r['method']} {r['precision'][-2:]}"
-    return s + (" fast-exp" if r["exp"] == "fast" else "")
+def _series(r):
+    """The plot series of a row: the method, with " cd" in the colour-difference domain."""
+    return r["method"] + (" cd" if r.get("domain") == "colour_difference" else "")
 
 
 def plot_tradeoff(res, path):
@@ -209,24 +239,27 @@ def plot_tradeoff(res, path):
                   if p in PATTERNS else 99)
     fig, axes = plt.subplots(1, len(pats), figsize=(6.5 * len(pats), 5), squeeze=False)
     markers = {("float64", "libm"): "o", ("float32", "libm"): "s", ("float64", "fast"): "^",
-               ("float32", "fast"): "D"}
-    colours = dict(zip(METHODS, plt.rcParams["axes.prop_cycle"].by_key()["color"]))
+               ("float32", "fast"): "D", ("float64", NO_EXP): "o", ("float32", NO_EXP): "s"}
+    series = list(dict.fromkeys(_series(r) for r in res["rows"]))
+    cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colours = {m: cycle[i % len(cycle)] for i, m in enumerate(series)}
     for ax, p in zip(axes[0], pats):
         sub = [r for r in res["rows"] if r["pattern"] == p]
         for r in sub:
             ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=markers[(r["precision"], r["exp"])],
-                       color=colours.get(r["method"], "k"), s=50,
+                       color=colours[_series(r)], s=50,
                        edgecolor="k" if r["pareto"] else "none", zorder=3)
             ax.plot([r["mpix_s_lo"], r["mpix_s_hi"]], [r["cfa_psnr"]] * 2, lw=1, alpha=0.4,
-                    color=colours.get(r["method"], "k"), zorder=2)     # IQR of the runs
+                    color=colours[_series(r)], zorder=2)     # IQR of the runs
         front = sorted((r for r in sub if r["pareto"]), key=lambda r: r["mpix_s"])
         ax.plot([r["mpix_s"] for r in front], [r["cfa_psnr"] for r in front], "k--", lw=1,
                 zorder=1, label="Pareto front")
-        for m in METHODS:
-            if any(r["method"] == m for r in sub):
+        for m in series:
+            if any(_series(r) == m for r in sub):
                 ax.scatter([], [], color=colours[m], label=m)
         for (prec, exp), mk in markers.items():
-            ax.scatter([], [], marker=mk, color="grey", label=f"{prec}, exp={exp}")
+            if exp != NO_EXP:
+                ax.scatter([], [], marker=mk, color="grey", label=f"{prec}, exp={exp}")
         ax.set_xscale("log")
         ax.set_xlabel(f"speed, Mpix/s, best of {res['repeat']} ({_threads(res)}, "
                       f"{res['speed_frame'][1]}x{res['speed_frame'][0]} frame)")
@@ -255,8 +288,8 @@ def _findings(res):
         dps, sp = [], []
         for r in sub:
             base = next(b for b in rows if b["pattern"] == r["pattern"]
-                        and b["method"] == r["method"] and b["precision"] == "float64"
-                        and b["exp"] == "libm")
+                        and b["method"] == r["method"] and b["domain"] == r["domain"]
+                        and _is_base(b))
             dps.append(r["cfa_psnr"] - base["cfa_psnr"])
             sp.append(r["mpix_s"] / base["mpix_s"])
         worst = max(sub, key=lambda r: r["max_abs_diff_dn"])
@@ -297,8 +330,10 @@ def format_markdown(res, png_name=None, command=None):
              f"({res['dataset']}), mean CFA PSNR on every Z site and mean CPSNR of the 8-bit "
              f"sRGB images of the library's colour chain (grey-world white balance of the "
              f"reference, Malvar 2004, sRGB gamma; {CROP}-pixel border left out): the protocol "
-             "of `rgbz-fast evaluate` (docs/reports/results.md). Δ: "
-             "against float64 + libm exp of the same method, over every Z site "
+             "of `rgbz-fast evaluate` (docs/reports/results.md). Domain: intensity (the "
+             "paper) or colour_difference (eq. 5); learned: the shipped filters (no "
+             "exponential). Δ: against float64 + libm exp of the same method and domain, "
+             "over every Z site "
              "(largest |difference| in DN, share of Z pixels that differ). Bold: on the "
              "Pareto front of its mask (nothing both faster and more accurate).", ""]
     if png_name:
@@ -307,14 +342,15 @@ def format_markdown(res, png_name=None, command=None):
         "", "Speed ratios between variants are within run-to-run noise on a shared machine "
         "when they are close to 1; see the IQR column.", ""])
     for p in sorted({r["pattern"] for r in res["rows"]}):
-        lines += [f"## {p}", "", "| method | precision | exp | Mpix/s best | median [IQR] | "
-                  "CFA PSNR (dB) | CPSNR (dB) | max Δ (DN) | pixels differing |",
-                  "|---|---|---|---|---|---|---|---|---|"]
+        lines += [f"## {p}", "", "| method | domain | precision | exp | Mpix/s best | "
+                  "median [IQR] | CFA PSNR (dB) | CPSNR (dB) | max Δ (DN) | pixels differing |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
         for r in (r for r in res["rows"] if r["pattern"] == p):
             b = "**" if r["pareto"] else ""
             d = "-" if r["max_abs_diff_dn"] is None else f"{r['max_abs_diff_dn']:.0f}"
             f = "-" if r["frac_diff"] is None else f"{r['frac_diff'] * 100:.3g} %"
-            lines.append(f"| {b}{r['method']}{b} | {r['precision']} | {r['exp']} | "
+            lines.append(f"| {b}{r['method']}{b} | {r['domain']} | {r['precision']} | "
+                         f"{r['exp']} | "
                          f"{r['mpix_s']:.1f} | {r['mpix_s_median']:.1f} "
                          f"[{r['mpix_s_lo']:.1f}-{r['mpix_s_hi']:.1f}] | "
                          f"{r['cfa_psnr']:.3f} | {r['cpsnr']:.3f} | {d} | {f} |")
@@ -323,7 +359,7 @@ def format_markdown(res, png_name=None, command=None):
 
 
 def format_text(res):
-    head = f"{'pattern':7}  {'method':11}  {'prec':7}  {'exp':4}  {'Mpix/s':>7}  " \
+    head = f"{'pattern':7}  {'method':14}  {'prec':7}  {'exp':4}  {'Mpix/s':>7}  " \
            f"{'CFA PSNR':>8}  {'CPSNR':>7}  {'maxΔ':>5}  {'differ':>8}  pareto"
     lines = ([QUICK_NOTE.capitalize() + " (a smoke test)"] if res.get("quick") else []) + [
         f"speed: best of {res['repeat']} timed runs after {res.get('warmup_calls', 1)} warm-up "
@@ -332,7 +368,7 @@ def format_text(res):
     for r in res["rows"]:
         d = "-" if r["max_abs_diff_dn"] is None else f"{r['max_abs_diff_dn']:.0f}"
         f = "-" if r["frac_diff"] is None else f"{r['frac_diff'] * 100:.3g}%"
-        lines.append(f"{r['pattern']:7}  {r['method']:11}  {r['precision']:7}  {r['exp']:4}  "
+        lines.append(f"{r['pattern']:7}  {_series(r):14}  {r['precision']:7}  {r['exp']:4}  "
                      f"{r['mpix_s']:7.1f}  {r['cfa_psnr']:8.3f}  {r['cpsnr']:7.3f}  {d:>5}  "
                      f"{f:>8}  {'*' if r['pareto'] else ''}")
     return "\n".join(lines + [""] + _findings(res))

@@ -4,7 +4,8 @@
 (:func:`rgbz_fast.io.folder_dataset`, :func:`rgbz_fast.io.sample_dataset`) in a
 process pool or on Dask distributed, with a per-image cache; it returns
 :class:`Results`, a tidy table that :func:`write_reports` turns into CSV, JSON,
-Markdown tables and figures.
+Markdown tables and figures. :func:`train_filters` fits the ``"learned"``
+method's filters to a dataset with the same protocol.
 """
 
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, IMAGE_METRICS, METHOD_LABELS,
@@ -12,7 +13,9 @@ from ._config import (ALL_METRICS, HIGHER_IS_BETTER, IMAGE_METRICS, METHOD_LABEL
 from ._reports import bar_chart, crop_figure, paired_chart, write_reports
 from ._results import Results
 from ._run import evaluate, evaluate_image, image_frames
+from ._train import train_filters
 
 __all__ = ["EvalConfig", "evaluate", "evaluate_image", "image_frames", "Results",
            "write_reports", "bar_chart", "paired_chart", "crop_figure", "PAPER_TABLE3",
-           "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER"]
+           "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER",
+           "train_filters"]

@@ -11,6 +11,7 @@ from .._patterns import get_pattern
 from .._validate import check_bit_depth, check_choice, check_flag, check_int, check_seed
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, ReconstructParams
+from ..reconstruction._learned import resolve_filters
 
 __all__ = ["EvalConfig", "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "HIGHER_IS_BETTER",
            "METHOD_LABELS", "PAPER_TABLE3"]
@@ -23,7 +24,8 @@ METRIC_LABELS = {"cfa_psnr": "CFA PSNR (dB)", "cpsnr": "CPSNR (dB)", "ssim": "SS
 HIGHER_IS_BETTER = {"cfa_psnr": True, "cpsnr": True, "ssim": True, "ms_ssim": True,
                     "zipper": False}
 METHOD_LABELS = {"bilinear": "bilinear", "bi": "BI", "edi_central": "EDICentral",
-                 "edi_line": "EDILine", "sg": "SG", "edi_rows": "EDI rows (Shi)"}
+                 "edi_line": "EDILine", "sg": "SG", "edi_rows": "EDI rows (Shi)",
+                 "learned": "learned"}
 
 #: the paper's Table 3 (kodim09), for the comparison in the reports
 PAPER_TABLE3 = {
@@ -59,6 +61,10 @@ class EvalConfig:
     noise : bool
         False: the noise-free mosaic of the image. True: the sensor model of
         :mod:`rgbz_fast.simulation` (same exposure and noise draw on both paths).
+    linearise : bool
+        True (default): 8-bit (integer) sRGB images are linearised with the
+        sRGB EOTF before they are mosaicked. False: the 8-bit sRGB protocol,
+        the encoded values mosaicked as they are (noise-free only).
     demosaic : str
         Bayer demosaic of both paths (``malvar2004``, ``menon2007`` or
         ``bilinear``).
@@ -91,6 +97,7 @@ class EvalConfig:
     metrics: tuple = ALL_METRICS
     bit_depth: int = 11
     noise: bool = False
+    linearise: bool = True
     demosaic: str = "malvar2004"
     crop: int = 8
     params: ReconstructParams = field(default_factory=_default_params)
@@ -119,8 +126,16 @@ class EvalConfig:
         object.__setattr__(self, "crop", check_int(self.crop, "crop", lo=0))
         object.__setattr__(self, "bit_depth", check_bit_depth(self.bit_depth))
         object.__setattr__(self, "noise", check_flag(self.noise, "noise"))
+        object.__setattr__(self, "linearise", check_flag(self.linearise, "linearise"))
+        if self.noise and not self.linearise:
+            raise ValueError("linearise: the sensor model (noise=True) takes linear light; "
+                             "linearise=False is a noise-free protocol")
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
+        if "learned" in self.methods:
+            # filters for every pattern at this bit depth (shipped or given), before any image
+            for p in self.patterns:
+                resolve_filters(self.params.filters, get_pattern(p), self.bit_depth)
 
     @property
     def image_metrics(self):
@@ -146,9 +161,15 @@ class EvalConfig:
         d = asdict(self)
         for k in ("patterns", "methods", "metrics"):
             d.pop(k)
+        if d["linearise"]:
+            d.pop("linearise")       # the keys of the linear protocol as before the option
         params = d.pop("params")
         if params["clip_level"] is None or (params["clip_level"] == "auto" and not raw):
             params.pop("clip_level")
+        if params["filters"] is None or method != "learned":
+            params.pop("filters")
+        else:
+            params["filters"] = [f.digest for f in params["filters"]]
         d.update(params, pattern=str(get_pattern(pattern)), method=method,
                  version=_cache_version())
         blob = json.dumps(d, sort_keys=True, default=str).encode()
@@ -169,7 +190,12 @@ class EvalConfig:
             v = getattr(self.params, name)
             if v != getattr(defaults, name):
                 extra.append(f"{name}={v}")
-        return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit, "
+        if self.params.filters is not None:
+            extra.append("filters " + ", ".join(
+                f"{f.pattern.name} {f.meta.get('training_set', '?')} {f.digest[:8]}"
+                for f in self.params.filters))
+        protocol = "" if self.linearise else " sRGB values (not linearised)"
+        return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))
 

@@ -42,8 +42,9 @@ def image_frames(img, pattern, config):
 
     A raw Bayer frame keeps its real CFA as the reference and loses its Z sites
     (:func:`rgbz_fast.io.to_rgbz`). An RGB image is linearised (sRGB EOTF for
-    integer images) and mosaicked noise-free at ``config.bit_depth``, or run
-    through the sensor model (black level 0) when ``config.noise``.
+    integer images; ``config.linearise=False`` keeps the encoded values) and
+    mosaicked noise-free at ``config.bit_depth``, or run through the sensor model
+    (black level 0) when ``config.noise``.
     """
     return _frames(img, get_pattern(pattern), config, {})
 
@@ -59,7 +60,9 @@ def _frames(img, pattern, config, memo):
                          noise=True)
         return frame, frame.reference
     if "linear" not in memo:
-        if np.issubdtype(img.dtype, np.integer):
+        if not config.linearise:
+            memo["linear"] = img
+        elif np.issubdtype(img.dtype, np.integer):
             memo["linear"] = srgb_to_linear(img.astype(np.float64)
                                             / float(np.iinfo(img.dtype).max))
         else:
@@ -216,6 +219,27 @@ def _stop_pool(ex):
     ex.shutdown(wait=True, cancel_futures=True)
 
 
+def dataset_sources(dataset, limit=None):
+    """``dataset`` (a folder, an iterable of ImageSource, or None: the sample images) as a
+    non-empty list of ImageSource, the first ``limit`` only when given."""
+    if dataset is None:
+        dataset = sample_dataset()
+    elif isinstance(dataset, (str, os.PathLike)):
+        dataset = folder_dataset(dataset)
+    try:
+        dataset = list(dataset)[:limit] if limit else list(dataset)
+    except TypeError:
+        raise TypeError(f"dataset: expected a list of ImageSource, a folder or None, got "
+                        f"{type(dataset).__name__}") from None
+    if not dataset:
+        raise ValueError("dataset: no images")
+    bad = [s for s in dataset if not isinstance(s, ImageSource)]
+    if bad:
+        raise TypeError(f"dataset: expected ImageSource entries (see folder_dataset), got "
+                        f"{type(bad[0]).__name__} {bad[0]!r}")
+    return dataset
+
+
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
              scheduler=None, progress=True, skip_bad=False, **config_kwargs):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
@@ -276,21 +300,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     elif not isinstance(config, EvalConfig):
         raise TypeError(f"config: expected an EvalConfig, got {type(config).__name__}")
     nproc = check_processes(processes)
-    if dataset is None:
-        dataset = sample_dataset()
-    elif isinstance(dataset, (str, os.PathLike)):
-        dataset = folder_dataset(dataset)
-    try:
-        dataset = list(dataset)
-    except TypeError:
-        raise TypeError(f"dataset: expected a list of ImageSource, a folder or None, got "
-                        f"{type(dataset).__name__}") from None
-    if not dataset:
-        raise ValueError("dataset: no images")
-    bad = [s for s in dataset if not isinstance(s, ImageSource)]
-    if bad:
-        raise TypeError(f"dataset: expected ImageSource entries (see folder_dataset), got "
-                        f"{type(bad[0]).__name__} {bad[0]!r}")
+    dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")

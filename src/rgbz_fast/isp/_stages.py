@@ -16,7 +16,7 @@ from .. import _kernels
 from .._patterns import get_pattern
 from .._validate import check_choice, check_dtype, check_flag, check_image, check_number
 from ..reconstruction import ReconstructParams, reconstruct
-from ..reconstruction._plans import METHODS
+from ..reconstruction import METHODS
 from ._demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES
 
 __all__ = ["Reconstruction", "WhiteBalance", "Demosaic", "ColourCorrection", "fill_missing",

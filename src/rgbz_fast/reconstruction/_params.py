@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, fields, replace
 
 from .._validate import check_choice, check_number
+from ._learned import check_filters
 
 __all__ = ["ReconstructParams", "PRECISIONS", "EXP_CHOICES", "SG_MODES", "DOMAINS"]
 
@@ -37,10 +38,11 @@ class ReconstructParams:
         is 0 (a flat area): > 0.
     sigma_rel : float
         Relative floor of sigma in eq. 7, in [0, 10]: ``sigma >= sigma_rel *``
-        the mean gradient of the family. The paper takes sigma = the smallest
-        gradient (``sigma_rel=0``, the paper-literal setting); 0.5 is the
-        library's default because the bare minimum makes every weight but one
-        vanish as soon as one gradient is near 0 (docs/guide/interpretation.md).
+        the mean gradient of the family. ``sigma_rel=0`` is eq. 7 as printed
+        (sigma = the smallest gradient, with only ``sigma_floor`` against 0):
+        :meth:`paper` gives it. 0.5 is the library's choice, not the paper's:
+        the bare minimum makes every weight but one vanish as soon as one
+        gradient is near 0 (docs/guide/interpretation.md, docs/reports/results.md).
     edge_ratio : float
         ``edi_rows`` only: an edge is dominant when its difference is below
         ``edge_ratio`` times the vertical one (> 0).
@@ -67,6 +69,14 @@ class ReconstructParams:
         "Near clipping"). None (default): nothing is clipped. ``"auto"``: the
         level :func:`rgbz_fast.io.read_raw` recorded for a frame read from a raw
         file (:func:`rgbz_fast.io.frame_clip_level`), none for other frames.
+        Not used by ``method="learned"`` (which refuses a frame that reaches it).
+    filters : LearnedFilters, str, Path, sequence of them, or None
+        ``method="learned"`` only: its filters (:class:`~rgbz_fast.reconstruction.LearnedFilters`
+        or a file written by :meth:`~rgbz_fast.reconstruction.LearnedFilters.save`;
+        files are read when the parameters are made). With several, the one
+        fitted for the frame's pattern and bit depth is used. None (default):
+        the filters shipped for the frame's pattern and bit depth
+        (:func:`~rgbz_fast.reconstruction.default_filters`).
 
     Examples
     --------
@@ -74,6 +84,8 @@ class ReconstructParams:
     >>> p = ReconstructParams(precision="float64", sigma_rel=0)
     >>> p.exp_mode, p.replace(precision="float32").exp_mode
     ('libm', 'fast')
+    >>> ReconstructParams.paper().sigma_rel
+    0.0
     >>> ReconstructParams(sg_mode="purest")
     Traceback (most recent call last):
     ...
@@ -88,6 +100,7 @@ class ReconstructParams:
     exp: str = "auto"
     domain: str = "intensity"
     clip_level: object = None
+    filters: object = None
 
     def __post_init__(self):
         put = object.__setattr__
@@ -101,6 +114,20 @@ class ReconstructParams:
         put(self, "exp", check_choice(self.exp, EXP_CHOICES, "exp"))
         put(self, "domain", check_choice(self.domain, DOMAINS, "domain"))
         put(self, "clip_level", check_clip_level(self.clip_level))
+        put(self, "filters", check_filters(self.filters))
+
+    @classmethod
+    def paper(cls, **changes):
+        """The paper-literal parameters: eq. 7 as printed, sigma = the smallest gradient.
+
+        ``sigma_rel=0``: no relative floor, only ``sigma_floor`` (1e-3 DN)
+        against a zero gradient, which the paper leaves open (a flat area
+        would divide by 0). Everything else at the defaults, which follow the
+        paper (intensity domain, pure SG on Mask1); ``changes`` override
+        fields. The library's default ``sigma_rel=0.5`` is its own choice
+        (docs/reports/results.md measures both).
+        """
+        return cls(**{"sigma_rel": 0.0, **changes})
 
     @property
     def exp_mode(self):

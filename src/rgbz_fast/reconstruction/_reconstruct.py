@@ -16,10 +16,15 @@ from .. import _kernels
 from .._frame import RawFrame, raw_clip_level, validate_frame
 from .._patterns import get_pattern
 from .._validate import check_bit_depth, check_choice, check_workers, kernel_threads
+from ._learned import resolve_filters
 from ._params import ReconstructParams
-from ._plans import METHODS, build_plans, check_layout
+from ._plans import METHODS as PLAN_METHODS
+from ._plans import build_plans, check_layout
 
 __all__ = ["reconstruct", "METHODS"]
+
+#: every method of :func:`reconstruct`: the plan interpreter's, then the learned filters
+METHODS = (*PLAN_METHODS, "learned")
 
 check_layout(_kernels.plan_layout())
 
@@ -90,7 +95,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     frame : RawFrame or ndarray, shape (rows, cols)
         The raw frame. A plain array needs ``pattern`` (and ``bit_depth`` if
         not 11). uint8, uint16, float32 and float64 are read directly.
-    method : {"sg", "edi_line", "edi_central", "bi", "bilinear", "edi_rows"}
+    method : {"sg", "edi_line", "edi_central", "bi", "bilinear", "edi_rows", "learned"}
         * ``"bilinear"``: mean of the same-colour known pixels of the 5x5
           window (the baseline).
         * ``"bi"``: bilateral interpolation, eqs. 2-5 (sigma = 1).
@@ -103,9 +108,14 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
           other patterns they multiply the EDILine weights (see Notes).
         * ``"edi_rows"``: Shi et al.'s five-direction method for row
           patterns, eqs. 1a-1e.
+        * ``"learned"``: not the paper's: one linear filter of the 7x7
+          window's known pixels per (Z site of the tile, bucket of a cheap
+          gradient hash), fitted by least squares on a training set
+          (``filters``; by default the ones shipped for Mask1 and Mask2,
+          fitted on CBSD68). docs/guide/learned.md.
     params : ReconstructParams, optional
         How to compute: precision, the sigma floors of eq. 7, the SG mode, the
-        exponential, the domain, the clip level (see
+        exponential, the domain, the clip level, the learned filters (see
         :class:`~rgbz_fast.ReconstructParams`). Default ``ReconstructParams()``.
     pattern : Pattern or str, optional
         The pattern of a plain-array frame.
@@ -125,7 +135,8 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         frames: docs/reports/benchmarks.md.)
     **options
         Fields of :class:`~rgbz_fast.ReconstructParams` (``precision="float64"``,
-        ``sigma_rel=0``, ...), applied over ``params``.
+        ``sigma_rel=0``, ``filters="my_filters.npz"``, ...), applied over
+        ``params``.
 
     Returns
     -------
@@ -139,7 +150,9 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     ValueError
         Unknown method or option, a method that does not apply to the
         pattern, a frame smaller than one period, values beyond the bit depth,
-        NaN or inf, a ``clip_level`` that is not a positive finite number.
+        NaN or inf, a ``clip_level`` that is not a positive finite number,
+        ``"learned"`` filters fitted for another pattern or bit depth (or none
+        shipped for this one).
     TypeError
         A ``clip_level`` that is not a number, None or ``"auto"``.
 
@@ -179,7 +192,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     """
     params = ReconstructParams.build(params, options)
     data, pattern, bd = _prepare(frame, pattern, bit_depth)
-    method = check_choice(method, tuple(METHODS), "method")
+    method = check_choice(method, METHODS, "method")
     nthreads = check_workers(workers)
     clip = _resolve_clip(params.clip_level, frame)
     out = _check_out(out, data)
@@ -189,8 +202,16 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     if pattern.bayer_phase is None:
         raise ValueError(f"pattern: tile {pattern.tile_string!r} fits no Bayer phase, so its Z "
                          "sites stand in for no defined colour")
-    phase_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     src = np.ascontiguousarray(data)
+    if method == "learned":
+        filters = resolve_filters(params.filters, pattern, bd)
+        if clip is not None and _reaches(src, pattern, clip):
+            raise ValueError("clip_level: method 'learned' has no clipped-pixel rule; the frame "
+                             f"reaches the clip level {clip:g}, use another method or "
+                             "clip_level=None")
+        run_learned(src, out, pattern, filters, params.precision, bd, nthreads)
+        return out
+    phase_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     if clip is not None and not _reaches(src, pattern, clip):
         clip = None          # nothing clipped: exactly the clip_level=None call
     _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bd, clip,
@@ -211,6 +232,21 @@ def _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bi
                   params.sigma_rel, params.edge_ratio, float((1 << bit_depth) - 1),
                   _EXP_CODES[params.exp_mode], nthreads, mask1_fast=fast, clip_level=clip,
                   **extra)
+
+
+def run_learned(src, out, pattern, filters, precision, bit_depth, nthreads, opcounts=None,
+                kernels=None):
+    """One call of the learned kernel (csrc/learned.c); ``kernels``: the counting extension."""
+    P, Q = pattern.period
+    phase_map = np.full(P * Q, -1, np.int32)
+    for k, ph in enumerate(filters.geometry):
+        r, c = ph["rc"]
+        phase_map[r * Q + c] = k
+    k = _kernels if kernels is None else kernels
+    extra = {} if opcounts is None else {"opcounts": opcounts}
+    k.learned(src, out, _PRECISION_CODES[precision], P, Q, phase_map,
+              maxval=float((1 << bit_depth) - 1), workers=nthreads, **filters.kernel_arrays(),
+              **extra)
 
 
 def _resolve_clip(value, frame):

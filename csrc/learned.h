@@ -1,0 +1,66 @@
+/*
+ * learned.h -- the learned directional reconstruction (method "learned"):
+ * hashed linear filters fitted by regularised least squares
+ * (rgbz_fast/reconstruction/_learned.py fits them; docs/guide/learned.md
+ * specifies the hash and the filters).
+ *
+ * Every Z site is one dot product: the known pixels of its window (the taps
+ * of its phase) times the filter of its bucket. The bucket hashes the local
+ * structure from the known pixels only: for each of four directions the
+ * mean squared difference E_d of the same-colour pairs of the phase, then
+ *   a = E_h - E_v, b = (E_d1 - E_d2) / 2, t = (E_h + E_v) / 2 + (E_d1 + E_d2) / 4,
+ * the orientation = the octant of (a, b) rotated by 22.5 degrees (sign tests
+ * and one comparison), the strength = how many thresholds t exceeds, the
+ * coherence = how many squared thresholds c2 satisfy a^2 + b^2 > c2 * (t * t);
+ *   bucket = (octant * n_str + strength) * n_coh + coherence.
+ */
+#ifndef RGBZ_LEARNED_H
+#define RGBZ_LEARNED_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "rgbz.h"
+
+#define RGBZ_LEARNED_MAX_TAPS 121     /* an 11x11 window (radius 5) */
+#define RGBZ_LEARNED_MAX_RADIUS 5
+#define RGBZ_LEARNED_DIRS 4           /* horizontal, vertical, main and anti-diagonal */
+
+typedef struct {
+    int32_t n_phases;     /* Z positions of the tile */
+    int32_t n_buckets;    /* 8 * n_str * n_coh */
+    int32_t n_taps_max;   /* row length of tap_dy / tap_dx and of the weights' tap axis */
+    int32_t n_pairs_max;  /* row length of pair_a / pair_b */
+    int32_t n_str, n_coh; /* strength and coherence levels */
+    int32_t radius;       /* largest |dy|, |dx| of a tap */
+    int32_t hash_radius;  /* largest |dy|, |dx| of a pixel of a hash pair */
+    const int32_t *n_taps;            /* [n_phases] */
+    const int32_t *tap_dy, *tap_dx;   /* [n_phases][n_taps_max] */
+    const int32_t *n_pairs;           /* [n_phases][4] */
+    const int32_t *pair_a, *pair_b;   /* [n_phases][4][n_pairs_max]: tap indices */
+    const double *str_thr;            /* [n_phases][n_str - 1], increasing */
+    const double *coh_thr2;           /* [n_phases][n_coh - 1]: squared coherence thresholds */
+    const float *w_f32;               /* [n_phases][n_taps_max][n_buckets] (tap-major) */
+    const double *w_f64;              /* the same weights in double */
+    /* optional (NULL: not used), for radius <= 3: the weights on the dense window, zeros at
+       the Z sites and in column 7, [n_phases][n_buckets][2 radius + 1][8] */
+    const float *wd_f32;
+    const double *wd_f64;
+} rgbz_learned_filters;
+
+/*
+ * Reconstruct every Z site of a frame with learned filters.
+ *   src, dst:  rows x cols frames of element type in_type (dst fully written: colour
+ *              sites copied, Z sites clipped to [0, maxval] and, for integer types,
+ *              rounded half up). src and dst must not overlap.
+ *   precision: RGBZ_P_F32 or RGBZ_P_F64 (arithmetic and weights).
+ *   py, px, phase_map: the pattern period and the phase (index into the filters) of
+ *              each tile site, -1 for a colour site.
+ *   opcounts:  counting build only: n_phases x RGBZ_NOPS counters.
+ * Borders: a tap outside the frame moves back inside by whole periods.
+ */
+int RGBZ_SYM(rgbz_learned)(int in_type, int precision, const void *src, void *dst,
+                           ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                           const int32_t *phase_map, const rgbz_learned_filters *f,
+                           double maxval, int workers, uint64_t *opcounts);
+
+#endif /* RGBZ_LEARNED_H */

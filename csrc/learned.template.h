@@ -1,0 +1,427 @@
+/*
+ * learned.template.h -- the frame loop of the learned reconstruction for one input
+ * element type and one precision. Included by learned.c once per combination, with
+ *   IN_T       the element type (uint8_t, uint16_t, float, double)
+ *   IS         its suffix (u8, u16, f32, f64)
+ *   IN_IS_INT  1 for the integer types (outputs rounded half up)
+ *   REAL       the arithmetic (float or double)
+ *   RS         its suffix (f32, f64)
+ *   RW         the member of rgbz_learned_filters holding the weights in REAL
+ *   RWD        the member holding the dense weights in REAL
+ *
+ * The sites of one phase in one row are processed in blocks of LRN_BLK: the taps are
+ * loaded tap-major (v[t][j], tap t of site j), the hash runs on whole rows of v
+ * (branch-free selects), and the dot product gathers each site's weight of tap t
+ * from the tap-major weight table (w[t][bucket]), so every loop runs over j.
+ */
+#ifndef IN_T
+#error "learned.template.h: define IN_T (the element type)"
+#endif
+#ifndef IS
+#error "learned.template.h: define IS (the element type's suffix)"
+#endif
+#ifndef IN_IS_INT
+#error "learned.template.h: define IN_IS_INT (1 for integer element types)"
+#endif
+#ifndef REAL
+#error "learned.template.h: define REAL (float or double)"
+#endif
+#ifndef RS
+#error "learned.template.h: define RS (the precision's suffix)"
+#endif
+#ifndef RW
+#error "learned.template.h: define RW (w_f32 or w_f64)"
+#endif
+#ifndef RWD
+#error "learned.template.h: define RWD (wd_f32 or wd_f64)"
+#endif
+
+#define LRN_CAT3(a, b, c) a##_##b##_##c
+#define LRN_CAT(a, b, c) LRN_CAT3(a, b, c)
+
+/* a result as an output element: clamped to [0, maxval] (NaN to 0), integers rounded
+   half up; not counted (Table 1 counts no conversion) */
+static inline IN_T LRN_CAT(lrn_out, IS, RS)(REAL r, REAL maxval)
+{
+    r = r > (REAL)0 ? r : (REAL)0;
+    r = r > maxval ? maxval : r;
+#if IN_IS_INT
+    return (IN_T)(r + (REAL)0.5);
+#else
+    return (IN_T)r;
+#endif
+}
+
+/* the buckets of n sites from their direction energies e[d][j] (learned.h) */
+static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int n,
+                                               const rgbz_learned_filters *f, int k,
+                                               int32_t *restrict bucket)
+{
+    const int ns = f->n_str, nc = f->n_coh;
+    const double *st = f->str_thr + (ptrdiff_t)k * (ns - 1);
+    const double *ct = f->coh_thr2 + (ptrdiff_t)k * (nc - 1);
+    const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
+    REAL tt[LRN_BLK] = {0}, m2[LRN_BLK] = {0};
+    LRN_IVDEP for (int j = 0; j < n; j++) {
+        const REAL a = OSUB(e[0][j], e[1][j]);
+        const REAL b = OMUL(OSUB(e[2][j], e[3][j]), (REAL)0.5);
+        const REAL t = OADD(OMUL(OADD(e[0][j], e[1][j]), (REAL)0.5),
+                            OMUL(OADD(e[2][j], e[3][j]), (REAL)0.25));
+        /* the doubled-angle vector rotated by 22.5 degrees, then its octant */
+        const REAL ar = OSUB(OMUL(C, a), OMUL(S, b));
+        const REAL br = OADD(OMUL(S, a), OMUL(C, b));
+        const int neg = OCMP(br < 0);
+        const REAL ar1 = neg ? -ar : ar, br1 = neg ? -br : br;
+        const int left = OCMP(ar1 < 0);
+        const REAL ar2 = left ? br1 : ar1, br2 = left ? -ar1 : br1;
+        bucket[j] = (4 * neg + 2 * left + OCMP(br2 > ar2)) * (ns * nc);
+        tt[j] = t;
+        m2[j] = OADD(OMUL(a, a), OMUL(b, b));
+    }
+    for (int i = 0; i < ns - 1; i++) {
+        const REAL thr = (REAL)st[i];
+        LRN_IVDEP for (int j = 0; j < n; j++) bucket[j] += OCMP(tt[j] > thr) ? nc : 0;
+    }
+    if (nc > 1) {
+        LRN_IVDEP for (int j = 0; j < n; j++) tt[j] = OMUL(tt[j], tt[j]);
+        for (int i = 0; i < nc - 1; i++) {
+            const REAL thr = (REAL)ct[i];
+            LRN_IVDEP for (int j = 0; j < n; j++) bucket[j] += OCMP(m2[j] > OMUL(thr, tt[j]));
+        }
+    }
+}
+
+/* the buckets of the n sites whose taps are v[t][j] (phase k); every loop runs over the
+   sites (to the run-time n, so that the compiler vectorises it rather than unrolling it) */
+RGBZ_CLONES
+static void LRN_CAT(lrn_hash, IS, RS)(REAL (*restrict v)[LRN_BLK], int n,
+                                       const rgbz_learned_filters *f, int k,
+                                       int32_t *restrict bucket)
+{
+    REAL e[RGBZ_LEARNED_DIRS][LRN_BLK];
+    for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+        const int np = f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
+        const int32_t *pa = f->pair_a + ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * f->n_pairs_max;
+        const int32_t *pb = f->pair_b + ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * f->n_pairs_max;
+        REAL *restrict ed = e[d];
+        {
+            const REAL *restrict va = v[pa[0]], *restrict vb = v[pb[0]];
+            LRN_IVDEP for (int j = 0; j < n; j++) {
+                const REAL df = OSUB(va[j], vb[j]);
+                ed[j] = OMUL(df, df);
+            }
+        }
+        LRN_NOJAM for (int p = 1; p < np; p++) {
+            const REAL *restrict va = v[pa[p]], *restrict vb = v[pb[p]];
+            LRN_IVDEP for (int j = 0; j < n; j++) {
+                const REAL df = OSUB(va[j], vb[j]);
+                ed[j] = OADD(ed[j], OMUL(df, df));
+            }
+        }
+        const REAL inv = (REAL)1 / (REAL)np;
+        LRN_IVDEP for (int j = 0; j < n; j++) ed[j] = OMUL(ed[j], inv);
+    }
+    LRN_CAT(lrn_bucket, IS, RS)(e, n, f, k, bucket);
+}
+
+/* res[j] = sum_t w[t][bucket[j]] * v[t][j] */
+RGBZ_CLONES
+static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const REAL *restrict w,
+                                      int n_taps, int n_buckets, const int32_t *restrict bucket,
+                                      REAL *restrict res)
+{
+    LRN_IVDEP for (int j = 0; j < n; j++) res[j] = OMUL(w[bucket[j]], v[0][j]);
+    LRN_NOJAM for (int t = 1; t < n_taps; t++) {
+        const REAL *restrict wt = w + (ptrdiff_t)t * n_buckets;
+        const REAL *restrict vt = v[t];
+        LRN_IVDEP for (int j = 0; j < n; j++) res[j] = OADD(res[j], OMUL(wt[bucket[j]], vt[j]));
+    }
+}
+
+/*
+ * The fast path of a row (radius <= 3, learned.h's dense weights). The hash energies are
+ * box sums: for direction d, E_d of the site at x is the sum over the rectangle of pair
+ * starts (learned.h) of D_d = V_d (I(p + s_d) - I(p))^2, V_d = 1 where both pixels are
+ * known, times 1 / n_d. The sums run first down the rows, for every column of the row at
+ * once (cs), then along the row (bx): contiguous loops over x. The dot product then reads
+ * each window row as 8 contiguous pixels against the bucket's dense weights.
+ */
+/* c[x] = sum over nr rows i of v_i[x] (a_i[x + sx] - b_i[x])^2, one pass over x (nr is a
+   constant where it is inlined, so that the rows unroll and x vectorises) */
+static inline void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const IN_T *const *r1,
+                                               const IN_T *const *r2, const REAL *const *v,
+                                               const int nr, ptrdiff_t xa, ptrdiff_t xb)
+{
+    LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
+        REAL s = 0;
+        for (int i = 0; i < nr; i++) {
+            const REAL df = OSUB((REAL)r2[i][x], (REAL)r1[i][x]);
+            s = OADD(s, OMUL(v[i][x], OMUL(df, df)));
+        }
+        c[x] = s;
+    }
+}
+
+RGBZ_CLONES
+static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *const *rowp, ptrdiff_t y, int py,
+                                           const REAL *restrict valid, ptrdiff_t cols,
+                                           int R, int hr, ptrdiff_t xa, ptrdiff_t xb,
+                                           REAL *restrict cs, REAL *restrict bx)
+{
+    static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
+    for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+        const int sy = SY[d], sx = SX[d];
+        /* the rectangle of pair starts: rows dlo..dhi, columns clo..chi */
+        const int dlo = -hr, dhi = hr - sy, nr = dhi - dlo + 1;
+        const int clo = sx < 0 ? -hr - sx : -hr, chi = sx > 0 ? hr - sx : hr;
+        const IN_T *r1[2 * RGBZ_LEARNED_MAX_RADIUS + 1], *r2[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+        const REAL *v[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+        for (int i = 0; i < nr; i++) {
+            const int dy = dlo + i;
+            ptrdiff_t tr = (y + dy) % py;
+            tr = tr < 0 ? tr + py : tr;
+            r1[i] = rowp[dy + R];
+            r2[i] = rowp[dy + sy + R] + sx;
+            v[i] = valid + (tr * RGBZ_LEARNED_DIRS + d) * cols;
+        }
+        REAL *restrict c = cs + (ptrdiff_t)d * cols;
+        const ptrdiff_t ca = xa + clo, cb = xb + chi;
+        switch (nr) {     /* the row counts of hash radii 1..3, unrolled */
+        case 1: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 1, ca, cb); break;
+        case 3: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 3, ca, cb); break;
+        case 5: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 5, ca, cb); break;
+        case 7: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 7, ca, cb); break;
+        default: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, nr, ca, cb);
+        }
+        REAL *restrict b = bx + (ptrdiff_t)d * cols;
+        LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) b[x] = c[x + clo];
+        LRN_NOJAM for (int dx = clo + 1; dx <= chi; dx++) {
+            const REAL *restrict cd = c + dx;
+            LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) b[x] = OADD(b[x], cd[x]);
+        }
+    }
+}
+
+/* res[j]: the dot product of the dense window of the site at x0 + j px with its bucket's
+   dense weights (rows of 8: the 7 pixels of the window row and one weight of 0). With GCC or
+   Clang each row is one or two 32-byte vector operations (vector extensions: the
+   auto-vectoriser leaves this loop scalar); the fast path never runs in the counting build,
+   which counts the per-site formulation. */
+#if LRN_VECTOR_EXT
+/* 32-byte vectors (AVX2's width: 8 floats or 4 doubles; wider ones are expanded element by
+   element) and the element vectors they are converted from */
+#define LRN_LANES ((int)(32 / sizeof(REAL)))
+typedef IN_T LRN_CAT(lrn_inv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * sizeof(IN_T))));
+typedef REAL LRN_CAT(lrn_rv, IS, RS) __attribute__((vector_size(32)));
+#if IN_IS_INT
+/* small integers reach REAL through int32 (one widening and one conversion instruction) */
+typedef int32_t LRN_CAT(lrn_iv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * 4)));
+#define LRN_TO_REAL(raw, rv) \
+    __builtin_convertvector(__builtin_convertvector(raw, LRN_CAT(lrn_iv, IS, RS)), rv)
+#else
+#define LRN_TO_REAL(raw, rv) __builtin_convertvector(raw, rv)
+#endif
+#endif
+RGBZ_CLONES
+static void LRN_CAT(lrn_dense_dot, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+                                            int n, const REAL *restrict wd, int R,
+                                            const int32_t *restrict bucket,
+                                            REAL *restrict res)
+{
+    const int rows = 2 * R + 1;
+    for (int j = 0; j < n; j++) {
+        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
+        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
+#if LRN_VECTOR_EXT
+        typedef LRN_CAT(lrn_rv, IS, RS) rv;
+        rv acc = {0};
+        for (int dy = 0; dy < rows; dy++)
+            for (int h = 0; h < 8; h += LRN_LANES) {
+                LRN_CAT(lrn_inv, IS, RS) raw;
+                rv wv;
+                memcpy(&raw, rowp[dy] + x + h, sizeof raw);
+                memcpy(&wv, w + dy * 8 + h, sizeof wv);
+                acc += wv * LRN_TO_REAL(raw, rv);
+            }
+        REAL sum = acc[0];
+        for (int l = 1; l < LRN_LANES; l++) sum += acc[l];
+        res[j] = sum;
+#else
+        REAL acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (int dy = 0; dy < rows; dy++) {
+            const IN_T *restrict r = rowp[dy] + x;
+            const REAL *restrict wr = w + dy * 8;
+            for (int c = 0; c < 8; c++) acc[c] = OADD(acc[c], OMUL(wr[c], (REAL)r[c]));
+        }
+        res[j] = OADD(OADD(OADD(acc[0], acc[4]), OADD(acc[2], acc[6])),
+                      OADD(OADD(acc[1], acc[5]), OADD(acc[3], acc[7])));
+#endif
+    }
+}
+#ifdef LRN_LANES
+#undef LRN_LANES
+#undef LRN_TO_REAL
+#endif
+
+/* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the
+   box sums bx of the row, their buckets, their dense dot products */
+RGBZ_CLONES
+static void LRN_CAT(lrn_fast_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+                                             int n, const rgbz_learned_filters *f, int k,
+                                             const REAL *bx, ptrdiff_t cols, const REAL *dense,
+                                             REAL *res)
+{
+    const int R = f->radius;
+    REAL e[RGBZ_LEARNED_DIRS][LRN_BLK];
+    int32_t bucket[LRN_BLK];
+    for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+        const REAL inv = (REAL)1 / (REAL)f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
+        const REAL *restrict b = bx + (ptrdiff_t)d * cols + x0;
+        LRN_IVDEP for (int j = 0; j < n; j++) e[d][j] = OMUL(b[(ptrdiff_t)j * px], inv);
+    }
+    LRN_CAT(lrn_bucket, IS, RS)(e, n, f, k, bucket);
+    LRN_CAT(lrn_dense_dot, IS, RS)(rowp, x0, px, n,
+                                   dense + (ptrdiff_t)k * f->n_buckets * (2 * R + 1) * 8, R,
+                                   bucket, res);
+}
+
+/* the sites x0, x0 + px, ... (n of them, n <= LRN_BLK) of phase k through the generic path:
+   taps gathered tap-major (through the column map at the borders), hash pairs, dot */
+static void LRN_CAT(lrn_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+                                                int n, ptrdiff_t cols,
+                                                const ptrdiff_t *colmap,
+                                                const rgbz_learned_filters *f, int k,
+                                                const REAL *w, REAL (*v)[LRN_BLK],
+                                                int32_t *bucket, REAL *res)
+{
+    const int R = f->radius, nt = f->n_taps[k];
+    const int32_t *tdy = f->tap_dy + (ptrdiff_t)k * f->n_taps_max;
+    const int32_t *tdx = f->tap_dx + (ptrdiff_t)k * f->n_taps_max;
+    const ptrdiff_t xl = x0 + (ptrdiff_t)(n - 1) * px;
+    if (x0 - R >= 0 && xl + R < cols) {
+        for (int t = 0; t < nt; t++) {
+            const IN_T *restrict row = rowp[tdy[t] + R] + x0 + tdx[t];
+            LRN_IVDEP for (int j = 0; j < n; j++) v[t][j] = (REAL)row[(ptrdiff_t)j * px];
+        }
+    } else {
+        for (int t = 0; t < nt; t++) {
+            const IN_T *restrict row = rowp[tdy[t] + R];
+            const ptrdiff_t *cm = colmap + x0 + R + tdx[t];
+            LRN_IVDEP for (int j = 0; j < n; j++) v[t][j] = (REAL)row[cm[(ptrdiff_t)j * px]];
+        }
+    }
+    LRN_CAT(lrn_hash, IS, RS)(v, n, f, k, bucket);
+    LRN_CAT(lrn_dot, IS, RS)(v, n, w, nt, f->n_buckets, bucket, res);
+}
+
+static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
+                                     ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                                     const int32_t *phase_map, const rgbz_learned_filters *f,
+                                     const ptrdiff_t *colmap, int fast_ok,
+                                     double maxval_d, int workers, uint64_t *opcounts)
+{
+    const int R = f->radius, hr = f->hash_radius;
+    const REAL maxval = (REAL)maxval_d;
+    const REAL *weights = f->RW;
+    /* the fast path's sites: the dense window (columns x - R .. x - R + 7) and the hash pairs
+       (columns x - hr .. x + hr) inside the row */
+    const ptrdiff_t fast_lo = R > hr ? R : hr;
+    const ptrdiff_t fast_hi = cols - 8 + R < cols - 1 - hr ? cols - 8 + R : cols - 1 - hr;
+    const REAL *dense = fast_ok ? f->RWD : NULL;
+    REAL *valid = NULL;
+    if (dense) {
+        /* valid[tile row][d][x]: 1 where the pixel and its partner along d are both known */
+        static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2};
+        static const int SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
+        valid = malloc((size_t)py * RGBZ_LEARNED_DIRS * (size_t)cols * sizeof(REAL));
+        if (!valid) return RGBZ_ENOMEM;
+        for (int r = 0; r < py; r++)
+            for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+                const int r2 = (r + SY[d]) % py;
+                REAL *vr = valid + ((ptrdiff_t)r * RGBZ_LEARNED_DIRS + d) * cols;
+                for (ptrdiff_t x = 0; x < cols; x++) {
+                    const ptrdiff_t x2 = ((x + SX[d]) % px + px) % px;
+                    vr[x] = (REAL)(phase_map[r * px + x % px] < 0 && phase_map[r2 * px + x2] < 0);
+                }
+            }
+    }
+    int status = RGBZ_OK;
+    (void)opcounts;
+#ifdef _OPENMP
+    int nth = workers > 0 ? workers : omp_get_max_threads();
+#pragma omp parallel num_threads(nth)
+#else
+    (void)workers;
+#endif
+    {
+        REAL *scratch = dense ? malloc((size_t)cols * 2 * RGBZ_LEARNED_DIRS * sizeof(REAL)) : NULL;
+        if (dense && !scratch) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ENOMEM;
+        }
+        REAL v[RGBZ_LEARNED_MAX_TAPS][LRN_BLK];
+        int32_t bucket[LRN_BLK];
+        REAL res[LRN_BLK];
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t y = 0; y < rows; y++) {
+            const IN_T *rowp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+            for (int dy = -R; dy <= R; dy++)
+                rowp[dy + R] = src + lrn_extend(y + dy, rows, py) * cols;
+            memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
+            const int32_t *pm = phase_map + (y % py) * px;
+            int row_has_z = 0;
+            for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
+            if (!row_has_z || (dense && !scratch)) continue;
+            IN_T *restrict drow = dst + y * cols;
+            const int fast = scratch && fast_lo <= fast_hi;
+            if (fast)
+                LRN_CAT(lrn_energies, IS, RS)(rowp, y, py, valid, cols, R, hr, fast_lo,
+                                              fast_hi + 1, scratch,
+                                              scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
+            for (int ph0 = 0; ph0 < px && ph0 < cols; ph0++) {
+                const int k = pm[ph0];
+                if (k < 0) continue;
+#ifdef RGBZ_COUNT_OPS
+                rgbz_opc_cur_count = opcounts + (size_t)k * RGBZ_NOPS;
+#endif
+                const REAL *w = weights + (ptrdiff_t)k * f->n_taps_max * f->n_buckets;
+                /* the fast sites of this phase: xf .. xl (none when xf > xl) */
+                ptrdiff_t xf = cols, xl = -1;
+                if (fast) {
+                    xf = fast_lo + ((ph0 - fast_lo) % px + px) % px;
+                    xl = fast_hi - ((fast_hi - ph0) % px + px) % px;
+                }
+                for (ptrdiff_t x0 = ph0; x0 < cols;) {
+                    int n;
+                    if (x0 >= xf && x0 <= xl) {
+                        const ptrdiff_t left = (xl - x0) / px + 1;
+                        n = (int)(left < LRN_BLK ? left : LRN_BLK);
+                        LRN_CAT(lrn_fast_block, IS, RS)(rowp, x0, px, n, f, k,
+                                                        scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
+                                                        cols, dense, res);
+                    } else {
+                        /* border sites: up to the first fast site, or to the end */
+                        const ptrdiff_t stop = x0 < xf ? xf : cols;
+                        const ptrdiff_t left = (stop - 1 - x0) / px + 1;
+                        n = (int)(left < LRN_BLK ? left : LRN_BLK);
+                        LRN_CAT(lrn_generic_block, IS, RS)(rowp, x0, px, n, cols, colmap, f, k,
+                                                           w, v, bucket, res);
+                    }
+                    for (int j = 0; j < n; j++)
+                        drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
+                    x0 += (ptrdiff_t)n * px;
+                }
+            }
+        }
+        free(scratch);
+    }
+    free(valid);
+    return status;
+}
+
+#undef LRN_CAT
+#undef LRN_CAT3
