@@ -29,7 +29,7 @@ from .evaluation import EvalConfig, evaluate, write_reports
 from .io import atomic_write, folder_dataset, load_frame, sample_dataset, save_frame
 from .isp import ColourISP
 from .reconstruction import ReconstructParams, reconstruct
-from .simulation import load_scene, simulate
+from .simulation import Optics, load_scene, simulate
 
 __all__ = ["main"]
 
@@ -140,6 +140,17 @@ def _parser():
                         "downsample ... (for bare Bayer files that carry none)")
     e.add_argument("--clip-level", type=_clip_arg, default=None, metavar="off|auto|DN",
                    help=CLIP_HELP)
+    e.add_argument("--optics", action="store_true",
+                   help="blur the images through the lens model before sampling them "
+                        "(rgbz_fast.simulation.Optics; default off: the pixels are the "
+                        "image's)")
+    e.add_argument("--f-number", type=float, default=2.8,
+                   help="f-number of the lens with --optics (default 2.8)")
+    e.add_argument("--olpf", type=float, default=0.0,
+                   help="OLPF spot separation in pixel pitches with --optics (default 0: none; "
+                        "1: zeros at Nyquist)")
+    e.add_argument("--defocus-um", type=float, default=0.0,
+                   help="blur-disk diameter in um with --optics (default 0: in focus)")
     e.add_argument("--limit", type=int, default=None, help="first N images only")
     e.add_argument("--table-image", default=None,
                    help="image of the per-image table (default kodim09 when present)")
@@ -254,6 +265,11 @@ def _evaluate(args):
                                clip_level=args.clip_level)
     kw = dict(patterns=args.patterns, methods=args.methods, noise=args.noise,
               demosaic=args.demosaic, crop=args.crop, params=params)
+    if args.optics:
+        kw["optics"] = Optics(f_number=args.f_number, olpf=args.olpf,
+                              defocus_um=args.defocus_um)
+    elif (args.f_number, args.olpf, args.defocus_um) != (2.8, 0.0, 0.0):
+        raise CliError("--f-number, --olpf and --defocus-um need --optics")
     if args.metrics:
         kw["metrics"] = args.metrics
     config = EvalConfig(**kw)

@@ -11,6 +11,7 @@ from .._patterns import get_pattern
 from .._validate import check_bit_depth, check_choice, check_flag, check_int, check_seed
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, ReconstructParams
+from ..simulation import Optics
 
 __all__ = ["EvalConfig", "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "HIGHER_IS_BETTER",
            "METHOD_LABELS", "PAPER_TABLE3"]
@@ -71,6 +72,11 @@ class EvalConfig:
         at all.
     seed : int
         Noise seed (noisy runs), an integer >= 0.
+    optics : Optics, optional
+        The lens in front of the sensor (:class:`~rgbz_fast.simulation.Optics`):
+        the linear image is blurred through it (each channel over its band,
+        and the pixel aperture) before the mosaic is sampled, on both paths.
+        None (the default): no blur, the image's pixels are the scene's.
 
     Raises
     ------
@@ -95,6 +101,7 @@ class EvalConfig:
     crop: int = 8
     params: ReconstructParams = field(default_factory=_default_params)
     seed: int = 0
+    optics: Optics | None = None
 
     def __post_init__(self):
         for name in ("patterns", "methods", "metrics"):
@@ -121,6 +128,9 @@ class EvalConfig:
         object.__setattr__(self, "noise", check_flag(self.noise, "noise"))
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
+        if self.optics is not None and not isinstance(self.optics, Optics):
+            raise TypeError(f"optics: expected an Optics or None, got "
+                            f"{type(self.optics).__name__}")
 
     @property
     def image_metrics(self):
@@ -147,6 +157,8 @@ class EvalConfig:
         for k in ("patterns", "methods", "metrics"):
             d.pop(k)
         params = d.pop("params")
+        if d["optics"] is None:
+            d.pop("optics")           # the keys of runs without optics stay what they were
         if params["clip_level"] is None or (params["clip_level"] == "auto" and not raw):
             params.pop("clip_level")
         d.update(params, pattern=str(get_pattern(pattern)), method=method,
@@ -169,6 +181,11 @@ class EvalConfig:
             v = getattr(self.params, name)
             if v != getattr(defaults, name):
                 extra.append(f"{name}={v}")
+        if self.optics is not None:
+            o = self.optics
+            extra.append(f"optics f/{o.f_number:g}" + (f" OLPF {o.olpf:g}" if o.olpf else "")
+                         + (f" defocus {o.defocus_um:g} um" if o.defocus_um else "")
+                         + (f" fill {o.fill_factor:g}" if o.fill_factor != 1 else ""))
         return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))

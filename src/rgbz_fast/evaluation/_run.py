@@ -16,7 +16,7 @@ from .._patterns import get_pattern
 from .._validate import check_processes, check_workers
 from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
 from ..reconstruction import reconstruct
-from ..simulation import ColourSensor, Scene, simulate, srgb_to_linear
+from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ._config import EvalConfig
 from ._results import Results
 
@@ -41,7 +41,10 @@ def image_frames(img, pattern, config):
     A raw Bayer frame keeps its real CFA as the reference and loses its Z sites
     (:func:`rgbz_fast.io.to_rgbz`). An RGB image is linearised (sRGB EOTF for
     integer images) and mosaicked noise-free at ``config.bit_depth``, or run
-    through the sensor model (black level 0) when ``config.noise``.
+    through the sensor model (black level 0) when ``config.noise``. With
+    ``config.optics`` the linear image is blurred through the lens before the
+    mosaic is sampled (the sensor model does it itself for noisy runs); a raw
+    frame has been through a real lens already and is left alone.
     """
     pattern = get_pattern(pattern)
     if isinstance(img, RawFrame):
@@ -49,12 +52,15 @@ def image_frames(img, pattern, config):
     if config.noise:
         scene = Scene.from_rgb(img)
         frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
-                         noise=True)
+                         noise=True, optics=config.optics)
         return frame, frame.reference
     if np.issubdtype(img.dtype, np.integer):
         lin = srgb_to_linear(img.astype(np.float64) / float(np.iinfo(img.dtype).max))
     else:
         lin = np.clip(img, 0, 1)
+    if config.optics is not None:
+        lin = np.clip(apply_optics(lin, config.optics,
+                                   pixel_pitch_um=ColourSensor().pixel_pitch_um), 0.0, 1.0)
     frame = mosaic(lin, pattern, config.bit_depth)
     ref = mosaic(lin, pattern.bayer_pattern(), config.bit_depth).data
     return frame, ref
