@@ -35,3 +35,8 @@ def tof_depth_iq(i: np.ndarray, q: np.ndarray, freqs: np.ndarray, weights: np.nd
                  max_range: float, depth: np.ndarray, residual: np.ndarray, wraps: np.ndarray,
                  phase: np.ndarray | None = ..., amp: np.ndarray | None = ...,
                  workers: int = ...) -> bool: ...
+def tof_bilateral(z_re: np.ndarray, z_im: np.ndarray, var: np.ndarray, g_re: np.ndarray,
+                  g_im: np.ndarray, g_var: np.ndarray, use: np.ndarray, row_px: np.ndarray,
+                  col_px: np.ndarray, reach_rows: int, reach_cols: int, radius_px: int, inv_h2: float,
+                  out_re: np.ndarray, out_im: np.ndarray, out_var: np.ndarray,
+                  out_neff: np.ndarray, workers: int) -> None: ...

@@ -2,7 +2,8 @@
 
 * :mod:`_reference.reconstruction` -- every reconstruction method, site by site
   (docs/guide/interpretation.md is its specification);
-* :mod:`_reference.defects` -- the first, full-frame defect correction.
+* :mod:`_reference.defects` -- the first, full-frame defect correction;
+* :mod:`_reference.tof` -- the ToF ISP's bilateral phasor mean (csrc/tof_filter.c).
 
 The ToF kernels are checked against the vectorised NumPy twin
 ``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit.

@@ -125,9 +125,9 @@ class Optics:
     >>> import numpy as np
     >>> k = Optics(f_number=2.8).psf(540.0, pixel_pitch_um=2.8)
     >>> k.shape, round(float(k.sum()), 12), bool(k[k.shape[0] // 2, k.shape[1] // 2] == k.max())
-    ((7, 7), 1.0, True)
-    >>> round(float(Optics(f_number=2.8).mtf(0.5, 540.0, pixel_pitch_um=2.8)), 3)
-    0.418
+    ((21, 21), 1.0, True)
+    >>> round(float(Optics(f_number=2.8).mtf(0.5, 540.0, pixel_pitch_um=2.8)), 4)
+    0.4205
     """
 
     f_number: float = 2.8
