@@ -61,7 +61,7 @@ FLAG_INCONSISTENT = 4
 #: immediate Z neighbour exceeds ``flying_step`` (and 2 sigma), so the measurement may mix
 #: two surfaces (a flying pixel)
 FLAG_FLYING = 8
-#: the depth is < 0 or within 3 sigma of ``max_range`` or beyond, or implies a reflectance below
+#: the depth is < 0 or within 5 sigma of ``max_range`` or beyond, or implies a reflectance below
 #: ``min_reflectance``: most likely a surface beyond the unambiguous range, aliased
 FLAG_OUT_OF_RANGE = 16
 
@@ -728,7 +728,7 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
       within one Z measurement of it (second differences along rows, columns
       and diagonals, usable measurements only; slopes do not count): the
       measurement may mix the two surfaces of a depth edge;
-    * out of range when the depth is < 0 or beyond ``max_range - 3 sigma``
+    * out of range when the depth is < 0 or beyond ``max_range - 5 sigma``
       (a guard: a surface just beyond the range reads either ~0 m or, through
       the noise, just below the end), or the implied reflectance is below
       ``min_reflectance``. A surface at ``D``
@@ -832,9 +832,9 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
         usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
         flags[flying_pixels(depth, sigma, tof.sites, block=tof.block, step=flying_step,
                             usable=usable)] |= FLAG_FLYING
-    # a guard of 3 sigma below the end of the range: a surface just beyond it reads either
+    # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
     # ~0 m (the reflectance test) or, through the noise, just below the end
-    out = (depth < 0) | (depth > max_range - 3.0 * sigma) | (reflectance < min_reflectance)
+    out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
     flags[out] |= FLAG_OUT_OF_RANGE
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
                     offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
