@@ -6,6 +6,8 @@
     rgbz-fast bench      kernel speed (Mpix/s) beside OpenCV and NumPy
     rgbz-fast opcount    operations per missing pixel beside the paper's Table 1
     rgbz-fast tradeoff   speed against accuracy, Pareto plot
+    rgbz-fast calibrate  flat-wall sweep -> ToF phase calibration file (cyclic error, offsets)
+    rgbz-fast evaluate-depth  the ToF chain measured: RGB-D scenes, range, noise, sunlight
     rgbz-fast config     how the C kernels were built (OpenMP, flags, threads)
 
 Every subcommand has ``--help``. Bad input exits with status 2 and a one-line
@@ -169,6 +171,57 @@ def _parser():
                             ("tradeoff", "tradeoff", "speed vs accuracy, Pareto plot")):
         b = sub.add_parser(name, help=text, add_help=False)
         b.set_defaults(delegate=mod)
+    c = sub.add_parser(
+        "calibrate", help="flat-wall sweep -> ToF phase calibration file",
+        description="Fit the cyclic error of every modulation frequency and the phase offset "
+                    "of every Z measurement (rgbz_fast.tof.calibrate) from frames of a flat "
+                    "wall at known distances, and write them to an NPZ file that "
+                    "tof_depth(calibration=ToFCalibration.load(...)) applies. Either give "
+                    "frame files (from `simulate` or a real sensor, with ToF taps) and their "
+                    "distances, or --simulate a sweep of a sensor model.")
+    c.add_argument("frames", nargs="*", type=Path,
+                   help=".npz frame files holding ToF taps, one per wall position")
+    c.add_argument("--distances", default=None,
+                   help="the wall distance (m) of every frame, comma-separated, in order")
+    c.add_argument("--dark", nargs="*", type=Path, default=(),
+                   help=".npz frames taken with the lens capped (tap dark offsets)")
+    c.add_argument("--simulate", action="store_true",
+                   help="simulate the sweep instead: --pattern, --shape, --near, --far, "
+                        "--positions, --frames-per-position, --sensor")
+    c.add_argument("--pattern", default="mask2", help="pattern of a simulated sweep (mask2)")
+    c.add_argument("--shape", default="64x96", help="rows x cols of a simulated sweep (64x96)")
+    c.add_argument("--near", type=float, default=0.6, help="nearest wall, m (0.6)")
+    c.add_argument("--far", type=float, default=2.6,
+                   help="farthest wall, m (2.6: more than the 1.874 m wrap range of 80 MHz)")
+    c.add_argument("--positions", type=int, default=48, help="wall positions (48)")
+    c.add_argument("--frames-per-position", type=int, default=3,
+                   help="frames at each position (3)")
+    c.add_argument("--reflectance", type=float, default=0.8, help="NIR reflectance (0.8)")
+    c.add_argument("--sensor", default=None,
+                   help="ToFSensor arguments as JSON, e.g. '{\"harmonics\": [[3, 0.04, 0.3]], "
+                        "\"delay_fpn_ps\": 20}' (default: ToFSensor())")
+    c.add_argument("--orders", type=int, default=8, help="harmonics of the cyclic error (8)")
+    c.add_argument("--seed", type=int, default=0)
+    c.add_argument("--out", type=Path, default=Path("tof_calibration.npz"),
+                   help="the calibration file (default tof_calibration.npz)")
+    c.add_argument("--quiet", action="store_true")
+
+    d = sub.add_parser(
+        "evaluate-depth", help="the ToF chain measured: scenes, range, noise, sunlight",
+        description="Simulate and measure the ToF chain at the library's defaults "
+                    "(rgbz_fast.evaluation.evaluate_depth): the six Middlebury RGB-D scenes "
+                    "(wrong, wrong-and-valid, caught), depths beyond the unambiguous range "
+                    "(flagged), depth noise against the predicted sigma, sunlight, and the "
+                    "calibration's residual cyclic error. Prints Markdown tables "
+                    "(docs/isp.md, 'Measured').")
+    d.add_argument("--data", type=Path, default=None,
+                   help="folder of the Middlebury scenes (default ../shared/data/rgbd when it "
+                        "exists; without it the scene sections are skipped)")
+    d.add_argument("--sections", type=_csv, default=None,
+                   help="comma list from scenes,range,noise,sunlight,calibration (default all)")
+    d.add_argument("--seed", type=int, default=1)
+    d.add_argument("--json", action="store_true", help="print the rows as JSON")
+
     sub.add_parser("config", help="how the C kernels were built")
     return ap
 
@@ -185,6 +238,7 @@ def main(argv=None):
         return 0
     try:
         return {"simulate": _simulate, "reconstruct": _reconstruct, "evaluate": _evaluate,
+                "calibrate": _calibrate, "evaluate-depth": _evaluate_depth,
                 "config": _config}[args.command](args)
     except (CliError, ValueError, TypeError, OSError, ImportError) as exc:
         print(f"rgbz-fast {args.command}: error: {exc}".splitlines()[0], file=sys.stderr)
@@ -201,6 +255,93 @@ def _delegate(name, argv):
         print(f"rgbz-fast {name}: error: not available in this build ({exc})", file=sys.stderr)
         return 2
     return mod.main(argv)
+
+
+def _shape_arg(text):
+    try:
+        rows, cols = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise CliError(f"--shape: expected ROWSxCOLS, got {text!r}") from None
+    return rows, cols
+
+
+def _calibrate(args):
+    import warnings
+
+    from .simulation import Scene, ToFSensor, simulate_tof
+    from .tof import calibrate
+
+    if args.simulate:
+        if args.frames:
+            raise CliError("give frame files or --simulate, not both")
+        try:
+            kw = json.loads(args.sensor) if args.sensor else {}
+        except ValueError as exc:
+            raise CliError(f"--sensor: not JSON ({exc})") from None
+        if not isinstance(kw, dict):
+            raise CliError("--sensor: expected a JSON object of ToFSensor arguments")
+        try:
+            sensor = ToFSensor(**kw)
+        except TypeError as exc:
+            raise CliError(f"--sensor: {exc}".replace("ToFSensor.__init__() ", "")) from None
+        shape = _shape_arg(args.shape)
+        if not (0 < args.near < args.far):
+            raise CliError(f"--near, --far: expected 0 < near < far, got {args.near}, "
+                           f"{args.far}")
+        if args.positions < 2 or args.frames_per_position < 1:
+            raise CliError("--positions: at least 2; --frames-per-position: at least 1")
+        distances = np.repeat(np.linspace(args.near, args.far, args.positions),
+                              args.frames_per_position)
+
+        def wall(d, s, seed):
+            scene = Scene(np.full(shape + (3,), 0.5), depth=np.full(shape, d),
+                          ir_reflectance=np.full(shape, args.reflectance))
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                return simulate_tof(scene, args.pattern, s, seed=seed)
+
+        sweep = [wall(d, sensor, args.seed * 100_000 + k) for k, d in enumerate(distances)]
+        from dataclasses import replace
+        capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
+        dark = [wall(1.0, capped, args.seed * 100_000 + 90_000 + k) for k in range(8)]
+    else:
+        if not args.frames:
+            raise CliError("no frames: give .npz frame files with their --distances, or "
+                           "--simulate")
+        if args.distances is None:
+            raise CliError("--distances: one distance per frame is needed")
+        try:
+            distances = [float(v) for v in args.distances.split(",") if v.strip()]
+        except ValueError:
+            raise CliError(f"--distances: expected comma-separated metres, got "
+                           f"{args.distances!r}") from None
+        sweep = [load_frame(f) for f in args.frames]
+        dark = [load_frame(f) for f in args.dark] or None
+    cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
+    cal.save(args.out)
+    if not args.quiet:
+        rms = ", ".join(f"{1e3 * v:.2f}" for v in cal.meta["fit_rms_m"])
+        print(f"{len(sweep)} frames -> {args.out}: {cal!r}; fit residual per frequency "
+              f"{rms} mm RMS")
+    return 0
+
+
+def _evaluate_depth(args):
+    from .evaluation import depth_report, evaluate_depth
+
+    data = args.data
+    if data is None:
+        guess = Path("..") / "shared" / "data" / "rgbd"
+        data = guess if guess.is_dir() else None
+    sections = args.sections or ("scenes", "range", "noise", "sunlight", "calibration")
+    result = evaluate_depth(data, sections=sections, seed=args.seed)
+    if args.json:
+        print(json.dumps(result, indent=1, default=float))
+    else:
+        if data is None:
+            print("(no RGB-D scenes: pass --data; the scene sections are skipped)")
+        print(depth_report(result))
+    return 0
 
 
 def _config(args):

@@ -4,15 +4,19 @@
 (:func:`rgbz_fast.io.folder_dataset`, :func:`rgbz_fast.io.sample_dataset`) in a
 process pool or on Dask distributed, with a per-image cache; it returns
 :class:`Results`, a tidy table that :func:`write_reports` turns into CSV, JSON,
-Markdown tables and figures.
+Markdown tables and figures. :func:`evaluate_depth` measures the ToF chain
+(the RGB-D scenes, ranges, noise, sunlight, calibration) and
+:func:`depth_report` prints its tables.
 """
 
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, IMAGE_METRICS, METHOD_LABELS,
                       METRIC_LABELS, PAPER_TABLE3, EvalConfig)
+from ._depth import DEPTH_SECTIONS, depth_report, evaluate_depth
 from ._reports import bar_chart, crop_figure, write_reports
 from ._results import Results
 from ._run import evaluate, evaluate_image, image_frames
 
 __all__ = ["EvalConfig", "evaluate", "evaluate_image", "image_frames", "Results",
            "write_reports", "bar_chart", "crop_figure", "PAPER_TABLE3", "IMAGE_METRICS",
-           "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER"]
+           "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER",
+           "evaluate_depth", "depth_report", "DEPTH_SECTIONS"]
