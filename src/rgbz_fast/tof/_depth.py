@@ -35,7 +35,8 @@ from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import check_choice, check_number, check_workers
 from ._calibration import ToFCalibration
-from ._filters import _axis_offsets, _check_odd, denoise_phasors_bilateral, flying_pixels
+from ._filters import (SiteGrid, _axis_offsets, _check_odd, denoise_phasors_bilateral,
+                       flying_pixels)
 from ._noise import tap_variance
 
 __all__ = ["ToFISP", "ToFDepth", "tof_depth", "demodulate", "phasors", "denoise_phasors",
@@ -620,16 +621,20 @@ class ToFISP:
 def _depth_sigma(amp, var, frequencies):
     """Depth noise (m) of the f^2-weighted mean of the per-frequency distances.
 
-    The phase noise ``sigma_I / |I + iQ|`` is capped at ``pi / sqrt(3)``, the spread of a
-    phase that is all noise (uniform on the circle).
+    ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
+    variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
+    (uniform on the circle). In place on one (F, n) temporary: it runs on every frame.
     """
-    f = np.asarray(frequencies, np.float64).reshape(-1, 1)
-    cap = np.pi / math.sqrt(3.0)
-    sphi = np.full(amp.shape, cap)
-    np.divide(np.sqrt(var), 2.0 * amp, out=sphi, where=2.0 * amp * cap > np.sqrt(var))
-    sd = SPEED_OF_LIGHT / (4 * np.pi * f) * sphi
+    f = np.asarray(frequencies, np.float64)
     w = f * f
-    return np.sqrt(((w * sd) ** 2).sum(axis=0)) / w.sum()
+    scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
+    t = np.multiply(amp, amp)
+    t *= 4.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.divide(var, t, out=t)                          # phase variance; inf / nan at 0
+    np.fmin(t, np.pi * np.pi / 3.0, out=t)               # fmin: a NaN takes the cap
+    t *= scale[:, None]
+    return np.sqrt(t.sum(axis=0))
 
 
 def _implied_reflectance(depth, amp, sensor, block):
@@ -781,6 +786,7 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
         taps = np.asarray(taps, np.float64) - calibration.dark[None]
     depth, residual = np.empty(n), np.empty(n)
     wraps = np.empty(n, np.int32)
+    grid = None                     # the grid of the Z measurements, built once when needed
     if denoise == "none" and calibration is None:
         depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
             taps, f, max_range=max_range, workers=nthreads)
@@ -802,8 +808,9 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
             var = 2.0 * tap_variance(noise_offset, sensor) / np.maximum(count, 1.0)
         elif denoise == "bilateral":
             var = 2.0 * tap_variance(offset, sensor)
+            grid = SiteGrid(tof.sites, tof.block)
             i, q, var, count = denoise_phasors_bilateral(
-                i, q, var, tof.sites, block=tof.block, window=window, use=~saturated,
+                i, q, var, grid, block=tof.block, window=window, use=~saturated,
                 range_scale=range_scale, workers=nthreads)
         else:
             count = np.ones(n)
@@ -830,7 +837,9 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
     flags[residual > max_residual] |= FLAG_INCONSISTENT
     if flying_step is not None:
         usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
-        flags[flying_pixels(depth, sigma, tof.sites, block=tof.block, step=flying_step,
+        if grid is None:
+            grid = SiteGrid(tof.sites, tof.block)
+        flags[flying_pixels(depth, sigma, grid, block=tof.block, step=flying_step,
                             usable=usable)] |= FLAG_FLYING
     # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
     # ~0 m (the reflectance test) or, through the noise, just below the end
