@@ -23,8 +23,8 @@ def test_help_lists_the_whole_chain(capsys):
         main(["--help"])
     assert e.value.code == 0
     out = capsys.readouterr().out
-    for cmd in ("simulate", "reconstruct", "evaluate", "train", "bench", "opcount", "tradeoff",
-                "config"):
+    for cmd in ("simulate", "reconstruct", "depth", "evaluate", "train", "calibrate",
+                "evaluate-depth", "bench", "opcount", "tradeoff", "config"):
         assert cmd in out
 
 
@@ -117,6 +117,90 @@ def test_evaluate_prints_table_and_writes_reports(tmp_path, capsys):
     assert "mask2/sg/cfa_psnr" in js
 
 
+def test_evaluate_with_optics(tmp_path, capsys):
+    import imageio.v3 as iio
+    import skimage.data
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "a.png", skimage.data.coffee()[:96, :96])
+    args = ["evaluate", "--dataset", str(ds), "--methods", "bi", "--metrics", "cfa_psnr",
+            "--quiet", "--processes", "1", "--json", "--no-plots"]
+    assert main(args + ["--out", str(tmp_path / "plain")]) == 0
+    plain = json.loads(capsys.readouterr().out)
+    assert main(args + ["--out", str(tmp_path / "optics"), "--optics", "--olpf", "1"]) == 0
+    blurred = json.loads(capsys.readouterr().out)
+    # the blur takes the fine detail the reconstruction has to guess: a higher PSNR
+    assert blurred["mask1/bi/cfa_psnr"]["mean"] > plain["mask1/bi/cfa_psnr"]["mean"] + 1
+    assert "optics f/2.8 OLPF 1" in (tmp_path / "optics" / "summary.md").read_text()
+
+
+def test_calibrate_simulated_and_from_frames(tmp_path, capsys):
+    out = tmp_path / "cal.npz"
+    assert main(["calibrate", "--simulate", "--positions", "20", "--frames-per-position", "1",
+                 "--shape", "16x24", "--orders", "4", "--sensor", '{"delay_ps": 100}',
+                 "--out", str(out)]) == 0
+    assert "fit residual" in capsys.readouterr().out
+    cal = rz.tof.ToFCalibration.load(out)
+    f = np.array([80e6, 100e6, 120e6])
+    np.testing.assert_allclose(cal.mean_offset, 2 * np.pi * f * 100e-12, atol=0.02)
+    # frame files of a real (here: simulated) sweep with their distances
+    from rgbz_fast.simulation import Scene
+    ds = np.linspace(0.6, 2.6, 12)
+    names = []
+    for k, d in enumerate(ds):
+        scene = Scene(np.full((16, 24, 3), 0.5), depth=np.full((16, 24), d))
+        frame = rz.simulate(scene, "mask2", seed=k)
+        names.append(str(frameio.save_frame(tmp_path / f"wall{k}.npz", frame)))
+    out2 = tmp_path / "cal2.npz"
+    assert main(["calibrate", *names, "--distances", ",".join(f"{d:.4f}" for d in ds),
+                 "--orders", "3", "--out", str(out2), "--quiet"]) == 0
+    assert rz.tof.ToFCalibration.load(out2).offsets.shape == (3, 24)
+
+
+def test_evaluate_depth_prints_the_tables(capsys):
+    assert main(["evaluate-depth", "--sections", "sunlight"]) == 0
+    out = capsys.readouterr().out
+    assert "Sunlight" in out and "burst 0.1 + suppression 0.9" in out
+    assert main(["evaluate-depth", "--sections", "sunlight", "--json"]) == 0
+    assert "sunlight" in json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("argv, match", [
+    (["calibrate"], "no frames"),
+    (["calibrate", __file__], "--distances"),
+    (["calibrate", "--simulate", "--sensor", "{bad json"], "--sensor: not JSON"),
+    (["calibrate", "--simulate", "--sensor", '{"nope": 1}'], "--sensor: got an unexpected"),
+    (["calibrate", "--simulate", "--near", "3", "--far", "1"], "--near, --far"),
+    (["evaluate-depth", "--sections", "speed"], "sections: unknown"),
+    (["evaluate", "--olpf", "1"], "need --optics"),
+])
+def test_bad_depth_and_optics_arguments(argv, match, capsys, tmp_path):
+    if argv[0] == "calibrate":
+        argv = argv + ["--out", str(tmp_path / "c.npz")]
+    elif argv[0] == "evaluate":
+        argv = argv + ["--out", str(tmp_path)]
+    code = main(argv)
+    err = capsys.readouterr().err.strip()
+    assert code == 2
+    assert len(err.splitlines()) == 1 and err.startswith(f"rgbz-fast {argv[0]}: error:")
+    assert re.search(match, err), err
+
+
+@pytest.mark.parametrize("argv, match", [
+    (["calibrate", "--simulate", "--shape", "16by24"], "argument --shape: expected ROWSxCOLS"),
+    (["calibrate", "--simulate", "--positions", "1"], "argument --positions: expected an integer >= 2"),
+    (["evaluate", "--optics", "--f-number", "0"], "argument --f-number: expected a positive"),
+    (["depth", "x.npz", "--denoise", "gauss"], "argument --denoise: invalid choice"),
+])
+def test_bad_option_values_are_usage_errors(argv, match, capsys):
+    """Option values of the wrong form stop at parsing, with the usage and the option named."""
+    with pytest.raises(SystemExit) as e:
+        main(argv)
+    assert e.value.code == 2
+    assert match in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("argv, match", [
     (["evaluate", "--methods", "nope"], "methods"),
     (["evaluate", "--dataset", "/nonexistent/folder"], "does not exist"),
@@ -154,8 +238,8 @@ def test_readme_python_examples_run(capsys):
     exec(compile(second.replace("../shared/data/rgbd/aloe", str(aloe)), "README.md", "exec"), ns)
     out = capsys.readouterr().out
     # the numbers the README's text quotes
-    assert "100.0% of 22240 depth measurements valid; ground truth unknown at 3.8% of them; " \
-           "median error 4.8 mm" in out, out
+    assert "81.6% of 22240 depth measurements valid; ground truth unknown at 3.8% of them; " \
+           "median error 3.3 mm" in out, out
 
 
 # --------------------------------------------------------------------------- issue-17 cases
@@ -294,9 +378,9 @@ def test_depth_subcommand_writes_depth_flags_and_preview(tmp_path, capsys):
         meta = json.loads(tf.pages[0].description)
     assert meta["unit"] == "m" and 0.03 < meta["truth_unknown_fraction"] < 0.04
     flags = iio.imread(out / "aloe_mask2_depth_flags.png")
-    assert flags.dtype == np.uint8 and set(np.unique(flags)) <= {0, 1, 2, 3, 4, 5, 6, 7, 255}
+    assert flags.dtype == np.uint8 and set(np.unique(flags)) <= set(range(32)) | {255}
     z = frame.z_mask
-    assert np.all(flags[~z] == 255) and np.mean(flags[z] == 0) > 0.99   # 255: no measurement
+    assert np.all(flags[~z] == 255) and np.mean(flags[z] == 0) > 0.75   # 255: no measurement
     preview = iio.imread(out / "aloe_mask2_depth.png")
     assert preview.dtype == np.uint8 and preview.ndim == 3 and preview.shape[0] > 300
     no_taps = tmp_path / "plain.npz"

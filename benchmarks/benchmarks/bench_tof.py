@@ -93,3 +93,38 @@ class ToFNumPySuite:
 
     def time_numpy(self, n):
         self.fn(self.taps, FREQS)
+
+
+class ToFISPSuite:
+    """The whole ToF ISP (``tof_depth``) on a Mask1 wall with a depth step, by denoise:
+    the edge-aware default (two passes of the C bilateral kernel, window 9), the paper's
+    box mean (NumPy, window 5) and none (the fused kernel). Frames: 512x768 (Kodak) and
+    4000x3000 (12 MP, 3 million Z measurements)."""
+    params = ([(512, 768), (3000, 4000)], ["bilateral", "box", "none"])
+    param_names = ["shape", "denoise"]
+    timeout = 600
+
+    def setup(self, shape, denoise):
+        try:
+            from rgbz_fast.simulation import ToFSensor, ToFTaps
+            from rgbz_fast.tof import denoise_phasors_bilateral, tof_depth  # noqa: F401
+        except ImportError:
+            raise NotImplementedError("no edge-aware ToF ISP in this commit") from None
+        if SKIP_SLOW and shape[0] * shape[1] > 1_000_000:
+            raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")
+        rows, cols = (a * 2 for a in np.nonzero(np.ones((shape[0] // 2, shape[1] // 2), bool)))
+        n = rows.size
+        rng = np.random.default_rng(0)
+        depth = np.where(cols < shape[1] // 2, 1.2, 1.9)
+        taps = np.empty((FREQS.size, 4, n), np.uint16)
+        for i, f in enumerate(FREQS):
+            phi = 4 * np.pi * f * depth / C
+            for k in range(4):
+                taps[i, k] = np.round(400 + 120 * np.cos(phi + k * np.pi / 2)
+                                      + rng.normal(0, 9, n))
+        self.fn = tof_depth
+        self.tof = ToFTaps(taps, FREQS, (rows, cols), 1, 11, depth, np.ones(n, bool),
+                           np.zeros(n, bool), ToFSensor(pixel_pitch_um=2.8), shape)
+
+    def time_tof_depth(self, shape, denoise):
+        self.fn(self.tof, denoise=denoise)

@@ -9,6 +9,8 @@
     rgbz-fast bench       kernel speed (Mpix/s) beside OpenCV and NumPy
     rgbz-fast opcount     operations per missing pixel beside the paper's Table 1
     rgbz-fast tradeoff    speed against accuracy, Pareto plot
+    rgbz-fast calibrate   flat-wall sweep -> ToF phase calibration file (cyclic error, offsets)
+    rgbz-fast evaluate-depth  the ToF chain measured: RGB-D scenes, range, noise, sunlight
     rgbz-fast config      how the C kernels were built (OpenMP, flags, threads)
 
 Every subcommand has ``--help``, and every option's help gives its default.
@@ -41,7 +43,7 @@ from .io import (MAX_BYTES_ENV, MAX_PIXELS_ENV, atomic_write, folder_dataset, lo
 from .isp import ColourISP
 from .metrics import cfa_psnr
 from .reconstruction import METHODS, ReconstructParams, reconstruct
-from .simulation import load_scene, simulate
+from .simulation import Optics, load_scene, simulate
 
 __all__ = ["main"]
 
@@ -276,8 +278,11 @@ def _parser():
                                    "how much of it is unknown.", **kw)
     d.add_argument("frames", nargs="+", type=Path,
                    help=".npz frames from `rgbz-fast simulate` of scenes with depth")
-    d.add_argument("--denoise", action=argparse.BooleanOptionalAction, default=True,
-                   help="average the phasors over the Z pixels of a 5x5 window")
+    d.add_argument("--denoise", choices=("bilateral", "box", "none"), default="bilateral",
+                   help="phasor denoise: edge-aware over the 5x5 nearest Z pixels, the paper's "
+                        "plain 5x5 average (Fig. 17), or none")
+    d.add_argument("--calibration", type=Path, default=None, metavar="FILE",
+                   help="phase calibration from `rgbz-fast calibrate` (default: none)")
     d.add_argument("--min-snr", type=_positive_float, default=4.0,
                    help="flag measurements whose signal-to-noise ratio is below this")
     d.add_argument("--max-range", type=_positive_float, default=None, metavar="METRES",
@@ -333,6 +338,18 @@ def _parser():
     e.add_argument("--skip-bad", action="store_true",
                    help="skip the images that cannot be evaluated, and list them (default: the "
                         "first one stops the run)")
+    e.add_argument("--optics", action="store_true",
+                   help="blur the images through the lens model before sampling them "
+                        "(default: off, the pixels are the image's)")
+    e.add_argument("--f-number", type=_positive_float, default=2.8,
+                   help="f-number of the lens, with --optics")
+    e.add_argument("--olpf", type=_number(float, lambda v: 0 <= v < float("inf"),
+                                          "a number >= 0"), default=0.0,
+                   help="optical low-pass filter spot separation in pixel pitches, with --optics "
+                        "(0: none; 1: zeros at Nyquist)")
+    e.add_argument("--defocus-um", type=_number(float, lambda v: 0 <= v < float("inf"),
+                                                "a number >= 0"), default=0.0,
+                   help="blur-disk diameter in micrometres, with --optics (0: in focus)")
     e.add_argument("--table-image", default=None,
                    help="image of the per-image table (default: kodim09 when present, else the "
                         "first)")
@@ -393,6 +410,69 @@ def _parser():
                             ("tradeoff", "tradeoff", "speed vs accuracy, Pareto plot")):
         b = sub.add_parser(name, help=text, add_help=False)
         b.set_defaults(delegate=mod)
+    c = sub.add_parser(
+        "calibrate", help="flat-wall sweep -> ToF phase calibration file",
+        description="Fit the cyclic error of every modulation frequency and the phase offset "
+                    "of every Z measurement (rgbz_fast.tof.calibrate) from frames of a flat "
+                    "wall at known distances, and write them to an NPZ file that "
+                    "tof_depth(calibration=ToFCalibration.load(...)) applies. Either give "
+                    "frame files (from `simulate` or a real sensor, with ToF taps) and their "
+                    "distances, or --simulate a sweep of a sensor model.")
+    c.add_argument("frames", nargs="*", type=Path,
+                   help=".npz frame files holding ToF taps, one per wall position (default: "
+                        "none; --simulate makes them)")
+    c.add_argument("--distances", default=None, metavar="M[,M...]",
+                   help="the wall distance (m) of every frame, comma-separated, in order "
+                        "(default: none; required with frame files)")
+    c.add_argument("--dark", nargs="*", type=Path, default=(),
+                   help=".npz frames taken with the lens capped, for the tap dark offsets "
+                        "(default: none)")
+    c.add_argument("--simulate", action="store_true",
+                   help="simulate the sweep instead: --pattern, --shape, --near, --far, "
+                        "--positions, --frames-per-position, --sensor")
+    c.add_argument("--pattern", default="mask2", help="pattern of a simulated sweep")
+    c.add_argument("--shape", type=_shape, default=(64, 96), metavar="ROWSxCOLS",
+                   help="size of a simulated sweep's frames (default: 64x96)")
+    c.add_argument("--near", type=_positive_float, default=0.6, metavar="M",
+                   help="nearest wall of a simulated sweep, in metres")
+    c.add_argument("--far", type=_positive_float, default=2.6, metavar="M",
+                   help="farthest wall of a simulated sweep, in metres (more than the 1.874 m "
+                        "wrap range of 80 MHz)")
+    c.add_argument("--positions", type=_number(int, lambda v: v >= 2, "an integer >= 2"),
+                   default=48, help="wall positions of a simulated sweep")
+    c.add_argument("--frames-per-position", type=_positive_int, default=3,
+                   help="frames at each position of a simulated sweep")
+    c.add_argument("--reflectance", type=_number(float, lambda v: 0 < v <= 1,
+                                                 "a number in (0, 1]"), default=0.8,
+                   help="NIR reflectance of the simulated wall")
+    c.add_argument("--sensor", default=None, metavar="JSON",
+                   help="ToF sensor model arguments as JSON, e.g. '{\"harmonics\": [[3, 0.04, "
+                        "0.3]], \"delay_fpn_ps\": 20}' (default: the library's sensor)")
+    c.add_argument("--orders", type=_positive_int, default=8,
+                   help="harmonics of the fitted cyclic error")
+    c.add_argument("--seed", type=_non_negative_int, default=0,
+                   help="seed of a simulated sweep's noise")
+    c.add_argument("--out", type=Path, default=Path("tof_calibration.npz"), metavar="FILE",
+                   help="the calibration file to write")
+    c.add_argument("--quiet", action="store_true", help="no summary line")
+    _add_limits(c)
+
+    d = sub.add_parser(
+        "evaluate-depth", help="the ToF chain measured: scenes, range, noise, sunlight",
+        description="Simulate and measure the ToF chain at the library's defaults: the six "
+                    "Middlebury RGB-D scenes (wrong, wrong-and-valid, caught), depths beyond "
+                    "the unambiguous range (flagged), depth noise against the predicted sigma, "
+                    "sunlight, and the calibration's residual cyclic error. Prints Markdown "
+                    "tables.")
+    d.add_argument("--data", type=Path, default=None, metavar="DIR",
+                   help="folder of the Middlebury scenes (default: ../shared/data/rgbd when it "
+                        "exists; without it the scene sections are skipped)")
+    d.add_argument("--sections", type=_csv, default=None,
+                   help="comma list from scenes,range,noise,sunlight,calibration (default: all)")
+    d.add_argument("--seed", type=_non_negative_int, default=1, help="seed of the sensor noise")
+    d.add_argument("--json", action="store_true", help="print the rows as JSON")
+    _add_limits(d)
+
     sub.add_parser("config", help="how the C kernels were built")
     return ap
 
@@ -440,7 +520,8 @@ def main(argv=None):
             if value is not None:
                 os.environ[key] = str(value)
         return {"simulate": _simulate, "reconstruct": _reconstruct, "depth": _depth,
-                "evaluate": _evaluate, "train": _train, "config": _config}[args.command](args)
+                "evaluate": _evaluate, "train": _train, "calibrate": _calibrate,
+                "evaluate-depth": _evaluate_depth, "config": _config}[args.command](args)
     except (CliError, ValueError, TypeError, OSError, ImportError) as exc:
         text = _for_the_command_line(str(exc)).splitlines()[0] if str(exc) else \
             type(exc).__name__
@@ -474,6 +555,85 @@ def _delegate(name, argv):
         print(f"rgbz-fast {name}: error: not available in this build ({exc})", file=sys.stderr)
         return 2
     return mod.main(argv)
+
+
+def _calibrate(args):
+    import warnings
+
+    from .simulation import Scene, ToFSensor, simulate_tof
+    from .tof import calibrate
+
+    if args.simulate:
+        if args.frames:
+            raise CliError("give frame files or --simulate, not both")
+        try:
+            kw = json.loads(args.sensor) if args.sensor else {}
+        except ValueError as exc:
+            raise CliError(f"--sensor: not JSON ({exc})") from None
+        if not isinstance(kw, dict):
+            raise CliError("--sensor: expected a JSON object of ToFSensor arguments")
+        try:
+            sensor = ToFSensor(**kw)
+        except TypeError as exc:
+            raise CliError(f"--sensor: {exc}".replace("ToFSensor.__init__() ", "")) from None
+        shape = tuple(args.shape)
+        if not (0 < args.near < args.far):
+            raise CliError(f"--near, --far: expected 0 < near < far, got {args.near}, "
+                           f"{args.far}")
+        if args.positions < 2 or args.frames_per_position < 1:
+            raise CliError("--positions: at least 2; --frames-per-position: at least 1")
+        distances = np.repeat(np.linspace(args.near, args.far, args.positions),
+                              args.frames_per_position)
+
+        def wall(d, s, seed):
+            scene = Scene(np.full(shape + (3,), 0.5), depth=np.full(shape, d),
+                          ir_reflectance=np.full(shape, args.reflectance))
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                return simulate_tof(scene, args.pattern, s, seed=seed)
+
+        sweep = [wall(d, sensor, args.seed * 100_000 + k) for k, d in enumerate(distances)]
+        from dataclasses import replace
+        capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
+        dark = [wall(1.0, capped, args.seed * 100_000 + 90_000 + k) for k in range(8)]
+    else:
+        if not args.frames:
+            raise CliError("no frames: give .npz frame files with their --distances, or "
+                           "--simulate")
+        if args.distances is None:
+            raise CliError("--distances: one distance per frame is needed")
+        try:
+            distances = [float(v) for v in args.distances.split(",") if v.strip()]
+        except ValueError:
+            raise CliError(f"--distances: expected comma-separated metres, got "
+                           f"{args.distances!r}") from None
+        sweep = [load_frame(f) for f in args.frames]
+        dark = [load_frame(f) for f in args.dark] or None
+    cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
+    cal.save(args.out)
+    if not args.quiet:
+        rms = ", ".join(f"{1e3 * v:.2f}" for v in cal.meta["fit_rms_m"])
+        print(f"{len(sweep)} frames -> {args.out}: {cal!r}; fit residual per frequency "
+              f"{rms} mm RMS")
+    return 0
+
+
+def _evaluate_depth(args):
+    from .evaluation import depth_report, evaluate_depth
+
+    data = args.data
+    if data is None:
+        guess = Path("..") / "shared" / "data" / "rgbd"
+        data = guess if guess.is_dir() else None
+    sections = args.sections or ("scenes", "range", "noise", "sunlight", "calibration")
+    result = evaluate_depth(data, sections=sections, seed=args.seed)
+    if args.json:
+        print(json.dumps(result, indent=1, default=float))
+    else:
+        if data is None:
+            print("(no RGB-D scenes: pass --data; the scene sections are skipped)")
+        print(depth_report(result))
+    return 0
 
 
 def _config(args):
@@ -651,11 +811,17 @@ _NO_MEASUREMENT = 255
 
 
 def _depth(args):
-    from .tof import tof_depth
+    from .tof import ToFCalibration, tof_depth
 
     for f in args.frames:
         if not f.exists():
             raise CliError(f"path: {f} does not exist")
+    calibration = None
+    if args.calibration is not None:
+        try:
+            calibration = ToFCalibration.load(args.calibration)
+        except (OSError, ValueError, TypeError, KeyError) as exc:
+            raise CliError(f"--calibration: {args.calibration}: {exc}") from None
     outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"])
             for f in args.frames]
     _unique_outputs(outs, args.out)
@@ -664,7 +830,8 @@ def _depth(args):
         if frame.tof is None:
             raise CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such as "
                            "an RGB-D folder, and save it as .npz)")
-        res = tof_depth(frame.tof, denoise=args.denoise, min_snr=args.min_snr,
+        res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
+                        min_snr=args.min_snr,
                         max_range=args.max_range, workers=args.workers)
         depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
         flags = res.to_frame(res.flags.astype(np.uint16), fill=_NO_MEASUREMENT).astype(np.uint8)
@@ -775,9 +942,14 @@ def depth_preview(res, name, summary, scale=None, truth_known=None):
 def _evaluate(args):
     params = ReconstructParams(precision=args.precision, domain=args.domain,
                                clip_level=args.clip_level, filters=args.filters)
+    optics = None
+    if args.optics:
+        optics = Optics(f_number=args.f_number, olpf=args.olpf, defocus_um=args.defocus_um)
+    elif (args.f_number, args.olpf, args.defocus_um) != (2.8, 0.0, 0.0):
+        raise CliError("--f-number, --olpf and --defocus-um need --optics")
     config = EvalConfig(patterns=args.patterns, methods=args.methods, metrics=args.metrics,
                         noise=args.noise, bit_depth=args.bit_depth, linearise=args.linearise,
-                        demosaic=args.demosaic, crop=args.crop, params=params)
+                        demosaic=args.demosaic, crop=args.crop, params=params, optics=optics)
     raw_options = None
     if args.raw_options is not None:
         raw_options = _raw_options_file(args.raw_options)

@@ -62,3 +62,10 @@ def sq_diff_sum(a: np.ndarray, b: np.ndarray, mask: np.ndarray | None,
 # sRGB encoding (csrc/srgb.c)
 def oetf_prepare(x: np.ndarray, p: np.ndarray, workers: int) -> None: ...
 def oetf_finish(x: np.ndarray, p: np.ndarray, code: np.ndarray, workers: int) -> None: ...
+
+# ToF bilateral phasor mean (csrc/tof_filter.c)
+def tof_bilateral(z_re: np.ndarray, z_im: np.ndarray, var: np.ndarray, g_re: np.ndarray,
+                  g_im: np.ndarray, g_var: np.ndarray, use: np.ndarray, row_px: np.ndarray,
+                  col_px: np.ndarray, reach_rows: int, reach_cols: int, radius_px: int, inv_h2: float,
+                  out_re: np.ndarray, out_im: np.ndarray, out_var: np.ndarray,
+                  out_neff: np.ndarray, workers: int) -> None: ...

@@ -84,6 +84,14 @@ cdef extern from "learned.h" nogil:
                            Py_ssize_t rows, Py_ssize_t cols, int py, int px,
                            const int32_t *phase_map, const rgbz_learned_filters *f,
                            double maxval, int workers, uint64_t *opcounts)
+cdef extern from "tof_filter.h" nogil:
+    int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
+                           const double *g_re, const double *g_im, const double *g_var,
+                           const uint8_t *use, const int64_t *row_px, const int64_t *col_px,
+                           Py_ssize_t nfreq, Py_ssize_t rows, Py_ssize_t cols,
+                           Py_ssize_t reach_rows, Py_ssize_t reach_cols, int64_t radius_px,
+                           double inv_h2, double *out_re, double *out_im, double *out_var, double *out_neff,
+                           int workers)
 
 ctypedef fused frame_t:
     uint8_t
@@ -487,4 +495,29 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
             status = rgbz_learned(in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0],
                                   src.shape[1], py, px, &phase_map[0], &f, maxval, workers,
                                   NULL)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- ToF bilateral (tof_filter.c)
+def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
+                  const double[:, :, ::1] var, const double[:, :, ::1] g_re,
+                  const double[:, :, ::1] g_im, const double[:, :, ::1] g_var,
+                  const uint8_t[:, ::1] use, const int64_t[::1] row_px,
+                  const int64_t[::1] col_px, Py_ssize_t reach_rows, Py_ssize_t reach_cols, int64_t radius_px,
+                  double inv_h2, double[:, :, ::1] out_re, double[:, :, ::1] out_im,
+                  double[:, :, ::1] out_var, double[:, ::1] out_neff, int workers):
+    """One bilateral pass on the grid of Z measurements (csrc/tof_filter.c): planes
+    (F, rows, cols) of the phasors, their variances, the guide and its variances, use
+    (rows, cols) -> out_re, out_im, out_var (F, rows, cols), out_neff (rows, cols)."""
+    cdef int status
+    if z_re.shape[1] == 0 or z_re.shape[2] == 0:
+        return
+    with nogil:
+        status = rgbz_tof_bilateral(&z_re[0, 0, 0], &z_im[0, 0, 0], &var[0, 0, 0],
+                                    &g_re[0, 0, 0], &g_im[0, 0, 0], &g_var[0, 0, 0],
+                                    &use[0, 0], &row_px[0], &col_px[0], z_re.shape[0],
+                                    z_re.shape[1], z_re.shape[2], reach_rows, reach_cols,
+                                    radius_px, inv_h2,
+                                    &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
+                                    &out_neff[0, 0], workers)
     _raise_for(status)

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import check_bit_depth, check_flag, check_number, check_seed
+from ._validate import check_bit_depth, check_flag, check_int, check_number, check_seed
 
 __all__ = ["ColourSensor", "ToFSensor", "SPEED_OF_LIGHT"]
 
@@ -101,6 +101,64 @@ class _Readout:
     def white_level(self):
         """int: the largest digital number, ``2**bit_depth - 1``."""
         return (1 << self.bit_depth) - 1
+
+
+def _contrast(obj, nfreq):
+    """``modulation_contrast``: one number, or one per frequency (stored as a tuple)."""
+    value = obj.modulation_contrast
+    if isinstance(value, (tuple, list, np.ndarray)):
+        values = tuple(check_number(v, "ToFSensor.modulation_contrast", lo=0, hi=1, lo_open=True)
+                       for v in value)
+        if len(values) != nfreq:
+            raise ValueError(f"ToFSensor.modulation_contrast: expected one number or one per "
+                             f"frequency ({nfreq}), got {len(values)}")
+        object.__setattr__(obj, "modulation_contrast", values)
+    else:
+        _num(obj, "modulation_contrast", lo=0, hi=1, lo_open=True)
+
+
+def _check_tof_nonideal(obj):
+    """Harmonics, tap contrasts, delays, multipath, ambient suppression, duty cycle."""
+    label = "ToFSensor.harmonics"
+    try:
+        entries = [tuple(e) for e in obj.harmonics]
+    except TypeError:
+        raise TypeError(f"{label}: expected a sequence of (order, amplitude, phase) triples, "
+                        f"got {obj.harmonics!r}") from None
+    harmonics = []
+    for e in entries:
+        if len(e) != 3:
+            raise ValueError(f"{label}: expected (order, amplitude, phase) triples, got {e!r}")
+        order = check_int(e[0], f"{label} order", lo=2, hi=64)
+        amp = check_number(e[1], f"{label} amplitude", lo=0, hi=1)
+        phase = check_number(e[2], f"{label} phase", lo=-100, hi=100)
+        harmonics.append((order, amp, phase))
+    if len({h[0] for h in harmonics}) != len(harmonics):
+        raise ValueError(f"{label}: an order is repeated in {obj.harmonics!r}")
+    object.__setattr__(obj, "harmonics", tuple(harmonics))
+    try:
+        taps = tuple(obj.tap_contrast)
+    except TypeError:
+        raise TypeError(f"ToFSensor.tap_contrast: expected 4 numbers, got "
+                        f"{obj.tap_contrast!r}") from None
+    if len(taps) != 4:
+        raise ValueError(f"ToFSensor.tap_contrast: expected 4 numbers (one per tap), got "
+                         f"{len(taps)}")
+    object.__setattr__(obj, "tap_contrast", tuple(
+        check_number(t, "ToFSensor.tap_contrast", lo=0, hi=2, lo_open=True) for t in taps))
+    _num(obj, "delay_ps", lo=-1e6, hi=1e6)
+    _num(obj, "delay_fpn_ps", lo=0, hi=1e6)
+    if obj.multipath is not None:
+        try:
+            ratio, extra = obj.multipath
+        except (TypeError, ValueError):
+            raise TypeError(f"ToFSensor.multipath: expected None or (relative_amplitude, "
+                            f"extra_path_m), got {obj.multipath!r}") from None
+        object.__setattr__(obj, "multipath", (
+            check_number(ratio, "ToFSensor.multipath amplitude", lo=0, hi=1),
+            check_number(extra, "ToFSensor.multipath extra path", lo=0, hi=1e4, lo_open=True)))
+    _num(obj, "ambient_suppression", lo=0, hi=1, hi_open=True)
+    _num(obj, "duty_cycle", lo=0, hi=1, lo_open=True)
 
 
 # --------------------------------------------------------------------------
@@ -282,9 +340,10 @@ class ToFSensor(_Readout):
         weakened by water absorption).
     optical_power_w : float
         Mean emitted optical power in W (0.5).
-    modulation_contrast : float
+    modulation_contrast : float or tuple of float
         Demodulation contrast in (0, 1] (0.8): tap amplitude over the
-        active-light part of the offset.
+        active-light part of the offset; one value per frequency when the
+        contrast changes with the frequency (it falls at high frequencies).
     fov_deg : (float, float)
         Horizontal and vertical field of view lit by the source, degrees
         (60, 45).
@@ -312,6 +371,45 @@ class ToFSensor(_Readout):
         Noise terms per tap, as for :class:`ColourSensor` (dark current
         10 e-/s, read noise 10 e-, DSNU 5 e-, PRNU 1 %); DSNU and PRNU are
         drawn per tap and Z site (tap mismatch included).
+
+    Non-idealities (every one off or ideal by default; docs/guide/sensor.md,
+    "Non-idealities of the i-ToF pixel")
+
+    harmonics : tuple of (order, amplitude, phase)
+        Harmonics of the correlation of the emitted light with the
+        demodulation gate, relative to the fundamental: tap k reads
+        ``O + a sum_h b_h cos(h (phi + k pi/2) + theta_h)`` (``b_1 = 1``,
+        ``theta_1 = 0``). Order >= 2, amplitude in [0, 1], phase in radians.
+        Four taps alias the odd orders onto the fundamental: order 3 (and 5)
+        gives a cyclic depth error of period a quarter of the wrap range and
+        peak ``~b c / (4 pi f)``. Default () -- a pure sinusoid.
+    tap_contrast : 4 floats
+        Demodulation contrast of each tap relative to ``modulation_contrast``
+        (a systematic mismatch between the four gates), each in (0, 2].
+        Unequal contrasts give a cyclic error at twice the phase. Default
+        (1, 1, 1, 1).
+    delay_ps : float
+        Delay of the returned light against the demodulation, common to every
+        pixel (driver and laser latency), in ps: a phase offset ``2 pi f tau``
+        at every frequency, i.e. a distance offset ``c tau / 2``. Default 0.
+    delay_fpn_ps : float
+        Per-pixel delay, a fixed pattern (``fpn_seed``) of this rms in ps:
+        the per-pixel phase offset of the clock tree. Default 0.
+    multipath : (float, float) or None
+        A second return of every surface: ``(relative_amplitude,
+        extra_path_m)``, amplitude in [0, 1] relative to the direct return and
+        the extra one-way distance in metres (> 0). Default None.
+    ambient_suppression : float
+        Share of each tap's common-mode (DC) charge that an in-pixel circuit
+        drains during the integration (background-light suppression), in
+        [0, 1): the taps keep the shot noise of all the light collected but
+        their wells fill ``1 / (1 - s)`` times more slowly. Default 0.
+    duty_cycle : float
+        Burst illumination: the source emits ``optical_power_w / duty_cycle``
+        during this share of the integration time and the pixel integrates
+        only then, in (0, 1]. The laser energy is unchanged; ambient light and
+        dark current are collected ``duty_cycle`` times as long. Default 1
+        (continuous wave).
     """
 
     frequencies: tuple = (80e6, 100e6, 120e6)
@@ -338,6 +436,13 @@ class ToFSensor(_Readout):
     prnu: float = 0.01
     quantise: bool = True
     fpn_seed: int = 0
+    harmonics: tuple = ()
+    tap_contrast: tuple = (1.0, 1.0, 1.0, 1.0)
+    delay_ps: float = 0.0
+    delay_fpn_ps: float = 0.0
+    multipath: tuple | None = None
+    ambient_suppression: float = 0.0
+    duty_cycle: float = 1.0
 
     def __post_init__(self):
         try:
@@ -354,7 +459,7 @@ class ToFSensor(_Readout):
         _num(self, "integration_time", lo=0, hi=10, lo_open=True)
         _num(self, "wavelength_nm", lo=700, hi=1700)
         _num(self, "optical_power_w", lo=0, hi=1e3, lo_open=True)
-        _num(self, "modulation_contrast", lo=0, hi=1, lo_open=True)
+        _contrast(self, len(freqs))
         try:
             fov = tuple(float(v) for v in self.fov_deg)
         except (TypeError, ValueError):
@@ -375,6 +480,7 @@ class ToFSensor(_Readout):
             raise ValueError(f"ToFSensor.z_block: expected None, 1 or 2, got {self.z_block!r}")
         _check_readout(self)
         _check_pixel_noise(self)
+        _check_tof_nonideal(self)
 
     @property
     def wrap_ranges(self):
@@ -389,8 +495,21 @@ class ToFSensor(_Readout):
             g = math.gcd(g, int(round(f)))
         return SPEED_OF_LIGHT / (2 * g)
 
+    @property
+    def contrasts(self):
+        """ndarray (F,): the modulation contrast at every frequency."""
+        c = self.modulation_contrast
+        return np.broadcast_to(np.asarray(c, np.float64), (len(self.frequencies),)).copy()
+
+    @property
+    def is_ideal(self):
+        """bool: no non-ideality of the modulation (harmonics, tap contrasts, delays, multipath)."""
+        return (not self.harmonics and self.tap_contrast == (1.0, 1.0, 1.0, 1.0)
+                and not isinstance(self.modulation_contrast, tuple) and self.delay_ps == 0
+                and self.delay_fpn_ps == 0 and self.multipath is None)
+
     def tap_electrons(self, distance, ir_reflectance, *, pixel_pitch_um=2.8):
-        """Mean electrons per tap of one-cell Z pixels (noise-free, no FPN).
+        """Mean electrons per tap of one-cell Z pixels (noise-free, no FPN, no per-pixel delay).
 
         Parameters
         ----------
@@ -402,18 +521,38 @@ class ToFSensor(_Readout):
         Returns
         -------
         ndarray, shape (F, 4, ...)
-            ``O + a cos(phi + k pi/2)`` of the module docstring, dark
-            current included.
+            ``O + a cos(phi + k pi/2)`` of the module docstring (with the
+            harmonics, tap contrasts, global delay and multipath when set),
+            dark current included, less the suppressed common mode.
         """
         d = np.asarray(distance, np.float64)
         rho = np.broadcast_to(np.asarray(ir_reflectance, np.float64), d.shape)
         s, b = self._cell_electrons(d, rho, float(pixel_pitch_um))
-        phasor = s[None] * np.exp(1j * self._phase(d))
-        return self._taps_from(phasor, s + b) + self.dark_current * self.integration_time
+        phasors, active = self._returns(d, s)
+        if self.delay_ps:
+            phasors = self._delayed(phasors, np.full(d.shape, self.delay_ps))
+        total = active + b
+        mean = self._taps_from(phasors, total) + self._dark_electrons
+        if self.ambient_suppression:
+            mean = mean - self._suppressed(total)[None, None]
+        return mean
 
     # -- internals ------------------------------------------------------------
+    @property
+    def _dark_electrons(self):
+        """Dark electrons per tap over one integration (only while the pixel integrates)."""
+        return self.dark_current * self.integration_time * self.duty_cycle
+
+    def _suppressed(self, total):
+        """Charge drained from each tap by the ambient suppression: a share of its DC part."""
+        return self.ambient_suppression * (0.25 * total + self._dark_electrons)
+
     def _cell_electrons(self, d, rho, pitch_um):
-        """Active (S) and ambient (B) electrons collected by one cell over one integration."""
+        """Active (S) and ambient (B) electrons collected by one cell over one integration.
+
+        The burst illumination (``duty_cycle``) keeps the laser energy and
+        collects ambient light only while the pixel integrates.
+        """
         area = (pitch_um * 1e-6) ** 2
         photon_energy = _PLANCK * SPEED_OF_LIGHT / (self.wavelength_nm * 1e-9)
         th = math.tan(math.radians(self.fov_deg[0]) / 2)
@@ -421,19 +560,66 @@ class ToFSensor(_Readout):
         k = (self.optics_transmission * area / (4 * self.f_number ** 2) / photon_energy
              * self.qe * self.integration_time)
         irradiance = self.optical_power_w / (4 * d * d * th * tv)
-        return rho * irradiance * k, rho * self.ambient_irradiance * k
+        ambient = rho * self.ambient_irradiance * k
+        if self.duty_cycle != 1.0:
+            ambient = ambient * self.duty_cycle
+        return rho * irradiance * k, ambient
 
     def _phase(self, d):
         f = np.asarray(self.frequencies).reshape((-1,) + (1,) * d.ndim)
         return np.mod(4 * np.pi * f * d[None] / SPEED_OF_LIGHT, 2 * np.pi)
 
-    def _taps_from(self, phasor, total):
-        """Tap photo-electrons (F, 4, ...) from the summed active phasor (F, ...) and S+B (...).
+    def _orders(self):
+        """(order, complex weight) of the correlation's terms, the fundamental first."""
+        return [(1, 1.0)] + [(h, a * np.exp(1j * th)) for h, a, th in self.harmonics]
+
+    def _returns(self, d, s):
+        """Active phasors ``{order h: S e^{i h phi}}`` (F, ...) of each cell, and the active light.
+
+        With ``multipath`` every cell adds a return of ``r S`` from ``d + extra``.
+        """
+        phase = self._phase(d)
+        out = {}
+        for h, _ in self._orders():
+            out[h] = s[None] * np.exp(1j * phase) if h == 1 else \
+                s[None] * np.exp(1j * (h * phase))
+        active = s
+        if self.multipath is not None:
+            r, extra = self.multipath
+            phase2 = self._phase(d + extra)
+            for h in out:
+                out[h] = out[h] + (r * s)[None] * np.exp(1j * (h * phase2))
+            active = s * (1.0 + r)
+        return out, active
+
+    def _delayed(self, phasors, delay_ps):
+        """The phasors of every order turned by the delays (ps, shape (...)) of each pixel."""
+        f = np.asarray(self.frequencies).reshape((-1,) + (1,) * np.ndim(delay_ps))
+        turn = 2 * np.pi * f * (np.asarray(delay_ps, np.float64)[None] * 1e-12)
+        return {h: p * np.exp(1j * (h * turn)) for h, p in phasors.items()}
+
+    def _taps_from(self, phasors, total):
+        """Tap photo-electrons (F, 4, ...) from the summed active phasors and S+B (...).
 
         ``(S + B)/4 + C/4 * Re(P * e^{i k pi/2})`` with ``P = sum_cells S e^{i phi}``
         -- for one cell ``S/4 (1 + C cos(phi + k pi/2)) + B/4``. No dark signal.
+        With harmonics, tap contrasts or per-frequency contrasts:
+        ``(S + B)/4 + C_f c_k / 4 * Re(sum_h w_h P_h e^{i h k pi/2})``, clipped at 0
+        (a tap never holds negative charge).
         """
+        if not isinstance(phasors, dict):
+            phasors = {1: phasors}
+        p1 = phasors[1]
+        shape = (1, 4) + (1,) * (p1.ndim - 1)
         shifts = np.exp(1j * np.pi / 2 * np.arange(4))            # e^{i k pi/2}
-        ac = (phasor[:, None] * shifts.reshape((1, 4) + (1,) * (phasor.ndim - 1))).real
-        return 0.25 * total[None, None] + 0.25 * self.modulation_contrast * ac
-
+        if (len(phasors) == 1 and self.tap_contrast == (1.0, 1.0, 1.0, 1.0)
+                and not isinstance(self.modulation_contrast, tuple)):
+            ac = (p1[:, None] * shifts.reshape(shape)).real
+            return 0.25 * total[None, None] + 0.25 * self.modulation_contrast * ac
+        ac = np.zeros((p1.shape[0], 4) + p1.shape[1:])
+        for h, w in self._orders():
+            sh = shifts if h == 1 else np.exp(1j * np.pi / 2 * np.mod(h * np.arange(4), 4))
+            ac += (w * phasors[h][:, None] * sh.reshape(shape)).real
+        gain = (self.contrasts.reshape((-1, 1) + (1,) * (p1.ndim - 1))
+                * np.asarray(self.tap_contrast).reshape(shape))
+        return np.maximum(0.25 * total[None, None] + 0.25 * gain * ac, 0.0)

@@ -6,6 +6,7 @@
 * :mod:`_reference.metrics` -- SSIM, MS-SSIM, CIELAB and the zipper metric as
   rgbz_fast.metrics computed them in NumPy, SciPy and colour-science before its
   C kernels (csrc/metrics.c).
+* :mod:`_reference.tof` -- the ToF ISP's bilateral phasor mean (csrc/tof_filter.c).
 
 The ToF kernels are checked against the vectorised NumPy twin
 ``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit; the

@@ -11,11 +11,12 @@ Entries
 -------
 * ``recon/...``: SHA-256 of the output bytes of ``reconstruct`` (C kernels only:
   exact on any machine of the same libm);
-* ``tof/...``, ``isp/...``, ``eval/...``: the arrays themselves. These pass
-  through NumPy's and SciPy's transcendental functions, whose SIMD code paths
-  may differ by an ulp between CPUs and releases: the test compares them
-  exactly when the platform fingerprint matches the one recorded here, and to
-  ``rtol=1e-9`` (images: 1 code value) otherwise.
+* ``tof/...``, ``isp/...``, ``eval/...``, ``sim/...``: the arrays themselves.
+  These pass through NumPy's and SciPy's transcendental functions (and FFTs),
+  whose SIMD code paths may differ by an ulp between CPUs and releases: the
+  test compares them exactly when the platform fingerprint matches the one
+  recorded here, and to ``rtol=1e-9`` (images and the digital numbers of
+  ``sim/``: 1 code value) otherwise.
 """
 
 from __future__ import annotations
@@ -38,13 +39,15 @@ GOLDEN = HERE / "golden.npz"
 def api():
     import rgbz_fast as rz
     from rgbz_fast import evaluation, isp, metrics
-    from rgbz_fast.simulation import Scene
+    from rgbz_fast.simulation import Optics, Scene, ToFSensor
 
     return {
         "mosaic": rz.mosaic,
         "reconstruct": rz.reconstruct,
         "simulate": rz.simulate,
         "Scene": Scene,
+        "Optics": Optics,
+        "ToFSensor": ToFSensor,
         "tof_depth": rz.tof_depth,
         "ColourISP": rz.ColourISP,
         "Reconstruction": isp.Reconstruction,
@@ -152,13 +155,38 @@ def _tof_cases(a):
                     fr = a["simulate"](sc, p, seed=3, noise=noise)
                 out = {"taps": np.asarray(fr.tof.taps, np.float64),
                        "cfa": np.asarray(fr.data, np.float64)}
-                for dn in (False, True):
+                # 0: no denoise, 1: the default (bilateral), 2: the paper's box
+                for key, dn in ((0, False), (1, True), (2, "box")):
                     d = a["tof_depth"](fr.tof, denoise=dn)
-                    for k in ("depth", "residual", "amplitude", "snr"):
-                        out[f"{k}_{int(dn)}"] = np.asarray(getattr(d, k), np.float64)
-                    out[f"flags_{int(dn)}"] = d.flags.astype(np.float64)
+                    for k in ("depth", "residual", "amplitude", "snr", "sigma", "reflectance"):
+                        out[f"{k}_{key}"] = np.asarray(getattr(d, k), np.float64)
+                    out[f"flags_{key}"] = d.flags.astype(np.float64)
                 return out
             cases.append((f"tof/{p}/noise{int(noise)}", run))
+
+    def optics_case():
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            fr = a["simulate"](sc, "mask2", seed=3, noise=True,
+                               optics=a["Optics"](f_number=4.0, olpf=1.0, defocus_um=5.0))
+        return {"cfa": np.asarray(fr.data, np.float64),
+                "taps": np.asarray(fr.tof.taps, np.float64)}
+    cases.append(("sim/optics/mask2", optics_case))
+
+    def nonideal_case():
+        sensor = a["ToFSensor"](harmonics=((3, 0.04, 0.3), (5, 0.01, 0.0)),
+                                tap_contrast=(1.0, 0.97, 1.02, 0.99),
+                                modulation_contrast=(0.85, 0.8, 0.7), delay_ps=200.0,
+                                delay_fpn_ps=20.0, multipath=(0.1, 0.4),
+                                ambient_irradiance=15.0, ambient_suppression=0.9,
+                                duty_cycle=0.1)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            fr = a["simulate"](sc, "mask2", tof_sensor=sensor, seed=3, noise=True)
+        d = a["tof_depth"](fr.tof)
+        return {"taps": np.asarray(fr.tof.taps, np.float64), "depth": d.depth,
+                "sigma": d.sigma, "flags": d.flags.astype(np.float64)}
+    cases.append(("tof/nonideal/mask2", nonideal_case))
     return cases
 
 

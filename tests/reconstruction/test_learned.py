@@ -196,7 +196,7 @@ def test_no_shipped_filters_for_a_pattern_is_a_clear_error():
 def test_bad_filters_values(tmp_path):
     with pytest.raises(TypeError, match=r"^filters: expected a LearnedFilters"):
         rz.ReconstructParams(filters=3)
-    with pytest.raises(ValueError, match=r"^filters: cannot read"):
+    with pytest.raises(FileNotFoundError, match=r"^filters: no such file"):
         rz.ReconstructParams(filters=tmp_path / "missing.npz")
     bad = tmp_path / "bad.npz"
     np.savez(bad, x=np.zeros(3))

@@ -6,10 +6,14 @@ process pool or on Dask distributed, with a per-image cache; it returns
 :class:`Results`, a tidy table that :func:`write_reports` turns into CSV, JSON,
 Markdown tables and figures. :func:`train_filters` fits the ``"learned"``
 method's filters to a dataset with the same protocol.
+:func:`evaluate_depth` measures the ToF chain
+(the RGB-D scenes, ranges, noise, sunlight, calibration) and
+:func:`depth_report` prints its tables.
 """
 
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, IMAGE_METRICS, METHOD_LABELS,
                       METRIC_LABELS, PAPER_TABLE3, EvalConfig)
+from ._depth import DEPTH_SECTIONS, depth_report, evaluate_depth
 from ._reports import bar_chart, crop_figure, paired_chart, write_reports
 from ._results import Results
 from ._run import evaluate, evaluate_image, image_frames
@@ -18,4 +22,5 @@ from ._train import train_filters
 __all__ = ["EvalConfig", "evaluate", "evaluate_image", "image_frames", "Results",
            "write_reports", "bar_chart", "paired_chart", "crop_figure", "PAPER_TABLE3",
            "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER",
-           "train_filters"]
+           "train_filters",
+           "evaluate_depth", "depth_report", "DEPTH_SECTIONS"]

@@ -12,6 +12,7 @@ from .._validate import check_bit_depth, check_choice, check_flag, check_int, ch
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, ReconstructParams
 from ..reconstruction._learned import resolve_filters
+from ..simulation import Optics
 
 __all__ = ["EvalConfig", "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "HIGHER_IS_BETTER",
            "METHOD_LABELS", "PAPER_TABLE3"]
@@ -77,6 +78,11 @@ class EvalConfig:
         at all.
     seed : int
         Noise seed (noisy runs), an integer >= 0.
+    optics : Optics, optional
+        The lens in front of the sensor (:class:`~rgbz_fast.simulation.Optics`):
+        the linear image is blurred through it (each channel over its band,
+        and the pixel aperture) before the mosaic is sampled, on both paths.
+        None (the default): no blur, the image's pixels are the scene's.
 
     Raises
     ------
@@ -102,6 +108,7 @@ class EvalConfig:
     crop: int = 8
     params: ReconstructParams = field(default_factory=_default_params)
     seed: int = 0
+    optics: Optics | None = None
 
     def __post_init__(self):
         for name in ("patterns", "methods", "metrics"):
@@ -136,6 +143,12 @@ class EvalConfig:
             # filters for every pattern at this bit depth (shipped or given), before any image
             for p in self.patterns:
                 resolve_filters(self.params.filters, get_pattern(p), self.bit_depth)
+        if self.optics is not None and not isinstance(self.optics, Optics):
+            raise TypeError(f"optics: expected an Optics or None, got "
+                            f"{type(self.optics).__name__}")
+        if self.optics is not None and not self.linearise:
+            raise ValueError("optics: a lens blurs linear light; it needs linearise=True (the "
+                             "8-bit sRGB protocol mosaics the encoded values)")
 
     @property
     def image_metrics(self):
@@ -164,6 +177,8 @@ class EvalConfig:
         if d["linearise"]:
             d.pop("linearise")       # the keys of the linear protocol as before the option
         params = d.pop("params")
+        if d["optics"] is None:
+            d.pop("optics")           # the keys of runs without optics stay what they were
         if params["clip_level"] is None or (params["clip_level"] == "auto" and not raw):
             params.pop("clip_level")
         if params["filters"] is None or method != "learned":
@@ -190,6 +205,11 @@ class EvalConfig:
             v = getattr(self.params, name)
             if v != getattr(defaults, name):
                 extra.append(f"{name}={v}")
+        if self.optics is not None:
+            o = self.optics
+            extra.append(f"optics f/{o.f_number:g}" + (f" OLPF {o.olpf:g}" if o.olpf else "")
+                         + (f" defocus {o.defocus_um:g} um" if o.defocus_um else "")
+                         + (f" fill {o.fill_factor:g}" if o.fill_factor != 1 else ""))
         if self.params.filters is not None:
             extra.append("filters " + ", ".join(
                 f"{f.pattern.name} {f.meta.get('training_set', '?')} {f.digest[:8]}"

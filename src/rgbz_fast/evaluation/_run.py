@@ -18,7 +18,7 @@ from .._patterns import get_pattern
 from .._validate import check_flag, check_processes, check_workers
 from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
 from ..reconstruction import reconstruct
-from ..simulation import ColourSensor, Scene, simulate, srgb_to_linear
+from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ._config import EvalConfig
 from ._results import Results
 
@@ -44,7 +44,10 @@ def image_frames(img, pattern, config):
     (:func:`rgbz_fast.io.to_rgbz`). An RGB image is linearised (sRGB EOTF for
     integer images; ``config.linearise=False`` keeps the encoded values) and
     mosaicked noise-free at ``config.bit_depth``, or run through the sensor model
-    (black level 0) when ``config.noise``.
+    (black level 0) when ``config.noise``. With ``config.optics`` the linear
+    image is blurred through the lens before the mosaic is sampled (the sensor
+    model does it itself for noisy runs); a raw frame has been through a real
+    lens already and is left alone.
     """
     return _frames(img, get_pattern(pattern), config, {})
 
@@ -57,7 +60,7 @@ def _frames(img, pattern, config, memo):
     if config.noise:
         scene = Scene.from_rgb(img)
         frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
-                         noise=True)
+                         noise=True, optics=config.optics)
         return frame, frame.reference
     if "linear" not in memo:
         if not config.linearise:
@@ -68,6 +71,12 @@ def _frames(img, pattern, config, memo):
         else:
             memo["linear"] = np.clip(img, 0, 1)
     lin = memo["linear"]
+    if config.optics is not None:
+        if "optics" not in memo:
+            memo["optics"] = np.clip(apply_optics(lin, config.optics,
+                                                  pixel_pitch_um=ColourSensor().pixel_pitch_um),
+                                      0.0, 1.0)
+        lin = memo["optics"]
     frame = mosaic(lin, pattern, config.bit_depth)
     references = memo.setdefault("reference", {})          # Bayer pattern -> CFA
     bayer = pattern.bayer_pattern()

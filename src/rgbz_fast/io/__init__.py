@@ -16,11 +16,11 @@
 from ._datasets import IMAGE_SUFFIXES, RAW_SUFFIXES, ImageSource, folder_dataset, sample_dataset
 from ._files import (DEFAULT_MAX_BYTES, DEFAULT_MAX_PIXELS, MAX_BYTES_ENV, MAX_PIXELS_ENV,
                      atomic_write, check_size, read_file, read_image, read_limits, rgb_image)
-from ._frames import FRAME_SUFFIXES, load_frame, save_frame
+from ._frames import FRAME_SUFFIXES, load_frame, read_npz, save_frame
 from ._raw import (HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS,
                    clipped_mask, frame_clip_level, list_raw_files, read_raw, to_rgbz)
 
-__all__ = ["save_frame", "load_frame", "FRAME_SUFFIXES",
+__all__ = ["save_frame", "load_frame", "read_npz", "FRAME_SUFFIXES",
            "read_raw", "list_raw_files", "to_rgbz", "clipped_mask", "frame_clip_level",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS",
            "ImageSource", "folder_dataset", "sample_dataset", "IMAGE_SUFFIXES", "RAW_SUFFIXES",

@@ -212,42 +212,94 @@ def _checked(path, build):
         raise ValueError(f"path: {path} is not a readable rgbz-fast frame ({exc})") from None
 
 
-def _load_npz(path, limits):
-    """An NPZ frame; every way the file can be broken is a ValueError naming it.
+def read_npz(path, name="path", *, keys=None, required=(), max_pixels=None, max_bytes=None):
+    """The arrays of an NPZ archive, read without trusting it.
 
-    The archive is read into memory (at most ``max_bytes``) and each member's
-    ``.npy`` header is read before its array: a member that declares more
-    than the limits, or more than its own uncompressed size in the zip
-    directory (a zip bomb), is refused before anything is allocated.
+    The archive is read into memory (at most ``max_bytes``, from a regular
+    file only) and each member's ``.npy`` header is read before its array: a
+    member that declares more than the limits (:func:`rgbz_fast.io.read_limits`),
+    or more than its own uncompressed size in the zip directory (a zip bomb),
+    or Python objects, is refused before anything is allocated.
+
+    Parameters
+    ----------
+    path : str or Path
+    name : str
+        The parameter named in errors.
+    keys : iterable of str, optional
+        The members to read (others are ignored); default: every member.
+    required : iterable of str
+        Members that must be present.
+
+    Returns
+    -------
+    dict of str to ndarray
+
+    Raises
+    ------
+    ValueError
+        ``"<name>: ..."`` when the file is missing, not a regular file, too
+        large, not an NPZ archive, damaged, or lacks a required member.
+
+    Examples
+    --------
+    >>> import io, tempfile, pathlib, numpy as np
+    >>> from rgbz_fast.io import read_npz
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = pathlib.Path(d) / "a.npz"
+    ...     np.savez(p, x=np.arange(3))
+    ...     read_npz(p)["x"]
+    array([0, 1, 2])
     """
+    path = Path(path)
+    try:
+        return _npz_members(path, name, keys, required, read_limits(max_pixels, max_bytes))
+    except ValueError as exc:
+        msg = str(exc)
+        raise ValueError(msg if msg.startswith(f"{name}: ") else
+                         f"{name}: {path} is not a readable NPZ archive ({msg})") from None
+
+
+def _npz_members(path, name, keys, required, limits):
+    """:func:`read_npz`: errors of the file itself (missing, too large) name ``name``; the
+    others (what is wrong with the content) are bare, for the caller to name."""
     import zipfile
     import zlib
 
     broken = (zipfile.BadZipFile, zlib.error, EOFError, OSError, NotImplementedError)
-    blob = read_file(path, "path", max_bytes=limits[1])
+    blob = read_file(path, name, max_bytes=limits[1])
+    if blob[:2] != b"PK":          # else np.load tries an .npy array, then a pickle
+        raise ValueError("not an NPZ archive: no zip signature")
+    try:
+        zf = zipfile.ZipFile(io.BytesIO(blob))
+    except broken + (ValueError,) as exc:
+        raise ValueError(f"not an NPZ archive: {type(exc).__name__}: {exc}") from None
+    with zf:
+        members = {n[:-4]: zf.getinfo(n) for n in zf.namelist() if n.endswith(".npy")}
+        missing = [k for k in required if k not in members]
+        if missing:
+            raise ValueError(f"no member(s) {', '.join(missing)}")
+        wanted = [k for k in (members if keys is None else keys) if k in members]
+        declared = sum(members[k].file_size for k in wanted)
+        if declared > limits[1]:
+            raise ValueError(f"its arrays declare {declared} bytes uncompressed, more than "
+                             f"the limit of {limits[1]} bytes; raise it with max_bytes=, "
+                             f"--max-bytes or {MAX_BYTES_ENV}")
+        try:
+            return {k: _npz_array(zf, members[k], path, limits, name) for k in wanted}
+        except broken as exc:
+            raise ValueError(f"a damaged archive member: {type(exc).__name__}: "
+                             f"{exc}") from None
+
+
+def _load_npz(path, limits):
+    """An NPZ frame; every way the file can be broken is a ValueError naming it
+    (:func:`read_npz` reads the archive without trusting it)."""
 
     def build():
-        if blob[:2] != b"PK":          # else np.load tries an .npy array, then a pickle
-            raise ValueError("not an NPZ archive: no zip signature")
-        try:
-            zf = zipfile.ZipFile(io.BytesIO(blob))
-        except broken + (ValueError,) as exc:
-            raise ValueError(f"not an NPZ archive: {type(exc).__name__}: {exc}") from None
-        with zf:
-            members = {n[:-4]: zf.getinfo(n) for n in zf.namelist() if n.endswith(".npy")}
-            if "header" not in members or "data" not in members:
-                raise ValueError("no header/data")
-            keys = [k for k in _NPZ_KEYS if k in members]
-            declared = sum(members[k].file_size for k in keys)
-            if declared > limits[1]:
-                raise ValueError(f"its arrays declare {declared} bytes uncompressed, more than "
-                                 f"the limit of {limits[1]} bytes; raise it with max_bytes=, "
-                                 f"--max-bytes or {MAX_BYTES_ENV}")
-            try:
-                z = {k: _npz_array(zf, members[k], path, limits) for k in keys}
-            except broken as exc:
-                raise ValueError(f"a damaged archive member: {type(exc).__name__}: "
-                                 f"{exc}") from None
+        z = _npz_members(path, "path", _NPZ_KEYS, (), limits)
+        if "header" not in z or "data" not in z:
+            raise ValueError("no header/data")
         h = z["header"]
         if h.dtype.kind not in "US" or h.ndim != 0:
             raise ValueError(f"the header is a {h.dtype} array of shape {h.shape}, not a "
@@ -263,7 +315,7 @@ def _load_npz(path, limits):
     return _checked(path, build)
 
 
-def _npz_array(zf, info, path, limits):
+def _npz_array(zf, info, path, limits, name="path"):
     """One ``.npy`` member of an archive, its declared size checked before it is read."""
     with zf.open(info) as fh:
         try:
@@ -282,7 +334,7 @@ def _npz_array(zf, info, path, limits):
         if nbytes > info.file_size:
             raise ValueError(f"member {info.filename} declares {nbytes} bytes of data in "
                              f"{info.file_size} bytes")
-        check_size(shape, dtype.itemsize, path, "path", limits=limits)
+        check_size(shape, dtype.itemsize, path, name, limits=limits)
         raw = fh.read(nbytes)
     if len(raw) != nbytes:
         raise ValueError(f"member {info.filename} is truncated")

@@ -29,7 +29,7 @@ import numpy as np
 from .._frame import RawFrame
 from .._patterns import Pattern, Z, get_pattern
 from .._validate import check_bit_depth, check_int, check_number
-from ..io import atomic_write
+from ..io import atomic_write, read_npz
 
 __all__ = ["LearnedFilters", "train", "default_filters", "learned_geometry",
            "hash_buckets", "N_ANGLES", "FORMAT_VERSION"]
@@ -355,19 +355,30 @@ class LearnedFilters:
     def load(cls, path, name="filters"):
         """Read a file written by :meth:`save`; ValueError naming ``name`` if it is not one."""
         p = Path(path)
-        try:
-            z = np.load(p, allow_pickle=False)
-            files = set(z.files)
-        except (OSError, ValueError, EOFError) as e:
-            raise ValueError(f"{name}: cannot read {p} as a filters file ({e})") from None
-        if "format" not in files or str(z["format"]) != _MAGIC:
+        z = read_npz(p, name)                    # bounded, no pickles, zip bombs refused
+        if "format" not in z or z["format"].dtype.kind not in "US" or str(z["format"]) != _MAGIC:
             raise ValueError(f"{name}: {p} is not a rgbz-fast filters file")
+        try:
+            return cls._from_arrays(z, p, name)
+        except KeyError as e:
+            raise ValueError(f"{name}: {p} lacks {e} (a damaged filters file)") from None
+        except (TypeError, ValueError, SyntaxError, RecursionError, MemoryError) as e:
+            msg = str(e)
+            if msg.startswith(f"{name}: "):
+                raise ValueError(msg) from None
+            raise ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
+                             f"{msg[:200]})") from None
+
+    @classmethod
+    def _from_arrays(cls, z, p, name):
         if int(z["version"]) != FORMAT_VERSION:
             raise ValueError(f"{name}: {p} has format version {int(z['version'])}, this "
                              f"library reads version {FORMAT_VERSION}")
         import ast
-        meta = {k: ast.literal_eval(v) for k, v in zip(z["meta_keys"].tolist(),
-                                                       z["meta_values"].tolist())}
+        keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
+        if not isinstance(keys, list) or not isinstance(values, list):
+            raise TypeError("meta_keys and meta_values must be 1-d arrays")
+        meta = {str(k): ast.literal_eval(str(v)[:100_000]) for k, v in zip(keys, values)}
         if int(z["n_angles"]) != N_ANGLES:
             raise ValueError(f"{name}: {p} has {int(z['n_angles'])} angle bins, expected "
                              f"{N_ANGLES}")

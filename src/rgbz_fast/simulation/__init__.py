@@ -6,6 +6,9 @@
   for CAVE-style cubes);
 * the sensors: :class:`ColourSensor` (§5.1.1) and :class:`ToFSensor` (§5.1.2),
   frozen parameter sets with ISETCam-like defaults;
+* the optics: :class:`Optics` (a diffraction-limited lens with optional
+  defocus and OLPF, and the pixel aperture) and :func:`apply_optics`, used by
+  the models when ``optics=`` is given;
 * the models: :func:`simulate_colour` (the plain Bayer CFA of a scene),
   :func:`simulate_tof` (four taps per Z pixel and frequency) and :func:`simulate`
   (the RGB-Z build, §5.1.3: a :class:`~rgbz_fast.RawFrame` with the reference
@@ -17,6 +20,7 @@ The conventions (tap phases, noise chain, radiometry) are in the docstring of
 
 from .._frame import ToFTaps
 from .._sensors import SPEED_OF_LIGHT, ColourSensor, ToFSensor
+from ._optics import Optics, apply_optics
 from ._scene import (CAVE_WAVELENGTHS, MIDDLEBURY_BASELINE_M, MIDDLEBURY_FOCAL_PX, Scene,
                      disparity_to_depth, estimate_ir_reflectance, load_image, load_rgbd,
                      load_scene, load_spectral, srgb_to_linear)
@@ -27,5 +31,5 @@ __all__ = [
     "disparity_to_depth", "estimate_ir_reflectance", "CAVE_WAVELENGTHS",
     "MIDDLEBURY_FOCAL_PX", "MIDDLEBURY_BASELINE_M",
     "ColourSensor", "ToFSensor", "ToFTaps", "SPEED_OF_LIGHT", "UnambiguousRangeWarning",
-    "simulate", "simulate_colour", "simulate_tof",
+    "simulate", "simulate_colour", "simulate_tof", "Optics", "apply_optics",
 ]

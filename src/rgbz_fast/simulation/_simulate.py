@@ -97,6 +97,7 @@ from .._frame import RawFrame, ToFTaps
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
 from .._validate import check_seed
+from ._optics import Optics, _convolve, apply_optics
 from ._scene import Scene, estimate_ir_reflectance, load_scene
 
 __all__ = ["UnambiguousRangeWarning", "simulate", "simulate_colour", "simulate_tof"]
@@ -108,6 +109,7 @@ _STREAM_COLOUR_TEMPORAL = 0
 _STREAM_COLOUR_FPN = 1
 _STREAM_TOF_TEMPORAL = 2
 _STREAM_TOF_FPN = 3
+_STREAM_TOF_DELAY = 4
 
 
 class UnambiguousRangeWarning(RuntimeWarning):
@@ -184,14 +186,23 @@ def _spectral_integrate(cube, weights, colour_map):
     return out
 
 
-def _colour_signal_rate(scene, sensor, colour_map):
-    """Mean signal electrons per second at every CFA site (noise-free, no PRNU)."""
+def _colour_signal_rate(scene, sensor, colour_map, optics=None):
+    """Mean signal electrons per second at every CFA site (noise-free, no PRNU).
+
+    With ``optics`` the scene is first blurred through the lens and the pixel
+    aperture (every band of a spectral cube at its own wavelength, every RGB
+    channel over its band).
+    """
     per_unit = sensor.electrons_per_unit(1.0)
+    image = scene.image
+    if optics is not None:
+        image = apply_optics(image, optics, pixel_pitch_um=sensor.pixel_pitch_um,
+                             wavelengths=scene.wavelengths)
     if scene.is_spectral:
         weights = _spectral_weights(sensor, scene.wavelengths)
-        value = _spectral_integrate(scene.image, weights, colour_map)
+        value = _spectral_integrate(image, weights, colour_map)
     else:
-        value = np.take_along_axis(scene.image, colour_map[..., None].astype(np.intp),
+        value = np.take_along_axis(image, colour_map[..., None].astype(np.intp),
                                    axis=2)[..., 0].astype(np.float64)
     return value * per_unit[colour_map]
 
@@ -221,13 +232,15 @@ def _fpn_maps(seed, stream, shape, dsnu, prnu):
 
 
 def _expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
-            fpn_shape=None):
+            fpn_shape=None, suppress=None):
     """Mean electrons -> DN through the noise chain of the module docstring.
 
     ``mean_e`` is the mean signal (before PRNU), ``dark_e`` the mean dark
     signal. The fixed-pattern maps have shape ``fpn_shape`` (default
     ``mean_e.shape``) and broadcast against ``mean_e`` from the right: the
     ToF draws one map per physical tap, (4, n), shared by every frequency.
+    ``suppress`` (electrons, broadcast against ``mean_e``) is drained after
+    the shot noise and before the well (the ToF ambient suppression).
     Returns the DN array and a bool array of the samples at full well or
     full scale.
     """
@@ -243,6 +256,8 @@ def _expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
         rng = np.random.default_rng([seed, temporal_stream])
     if rng is not None and sensor.shot_noise:
         e = rng.poisson(e).astype(np.float64)
+    if suppress is not None:
+        e = e - suppress
     if offset is not None:
         e = e + offset
     well_full = e >= sensor.full_well
@@ -258,6 +273,12 @@ def _expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
     return (dn.astype(np.uint16) if sensor.quantise else dn), saturated
 
 
+def _check_optics(optics):
+    if optics is not None and not isinstance(optics, Optics):
+        raise TypeError(f"optics: expected an Optics or None, got {type(optics).__name__}")
+    return optics
+
+
 def _as_scene(scene):
     if isinstance(scene, Scene):
         return scene
@@ -269,7 +290,7 @@ def _as_scene(scene):
                     f"{type(scene).__name__}")
 
 
-def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True):
+def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, optics=None):
     """Simulate the colour pixels: the plain Bayer CFA of a scene (paper §5.1.1).
 
     Parameters
@@ -287,6 +308,10 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True):
     noise : bool
         False: no random and no fixed-pattern term (and no random number is
         drawn): the exact noise-free CFA.
+    optics : Optics, optional
+        Blur the scene through the lens and the pixel aperture before the
+        pixels sample it (:mod:`rgbz_fast.simulation._optics`); None (the
+        default): the scene's values reach the pixels as they are.
 
     Returns
     -------
@@ -304,7 +329,8 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True):
     seed = check_seed(seed, "seed")
     shape = pattern.check_shape(scene.shape, "scene")
     colour_map = pattern.bayer_map(shape)
-    rate = _colour_signal_rate(scene, sensor, colour_map)
+    optics = _check_optics(optics)
+    rate = _colour_signal_rate(scene, sensor, colour_map, optics)
     exposure = _auto_exposure(rate, sensor) if sensor.exposure == "auto" else sensor.exposure
     dn, saturated = _expose(rate * exposure, sensor.dark_current * exposure, sensor,
                             noise=bool(noise), seed=seed,
@@ -313,6 +339,8 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True):
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
             "saturated": float(saturated.mean()), "spectral": scene.is_spectral,
             "noise": bool(noise), "seed": seed, "scene": scene.name}
+    if optics is not None:
+        meta["optics"] = optics
     return RawFrame(dn, pattern.bayer_pattern(), sensor.bit_depth, meta=meta)
 
 
@@ -342,8 +370,58 @@ def _z_sites(pattern, shape, block):
     return r * 2, c * 2
 
 
+def _tof_light_at_cells(scene, sensor, pitch, cr, cc):
+    """Active phasors {order: (F, n)} and S + B (n,) of every Z measurement, summed over
+    its cells (no optics: each cell sees the surface at its own pixel)."""
+    d = scene.depth[cr, cc]
+    if scene.ir_reflectance is not None:
+        rho = scene.ir_reflectance[cr, cc]
+    else:
+        rho = estimate_ir_reflectance(scene.image[cr, cc], scene.wavelengths)
+    # a depth of 0 is only allowed where unknown: no surface, no laser return there
+    surface = d > 0
+    d_safe = np.where(surface, d, 1.0)
+    s, b = sensor._cell_electrons(d_safe, rho, pitch)
+    s = np.where(surface, s, 0.0)
+    cells, active = sensor._returns(d_safe, s)
+    return {h: p.sum(axis=-1) for h, p in cells.items()}, (active + b).sum(axis=-1)
+
+
+def _tof_light_through(scene, sensor, pitch, cr, cc, optics):
+    """As :func:`_tof_light_at_cells`, the light of the whole frame first blurred through
+    ``optics`` at the laser wavelength and the ToF lens's f-number: a pixel near a depth
+    edge receives both surfaces' returns (lens-induced mixing)."""
+    d = scene.depth
+    rho = scene.ir_map()
+    surface = d > 0
+    d_safe = np.where(surface, d, 1.0)
+    s, b = sensor._cell_electrons(d_safe, rho, pitch)
+    s = np.where(surface, s, 0.0)
+    fields, active = sensor._returns(d_safe, s)
+    kernel = optics.psf(sensor.wavelength_nm, pixel_pitch_um=pitch, f_number=sensor.f_number)
+
+    def blur_at_cells(plane, signed=False):
+        return _convolve(plane, kernel, signed=signed)[cr, cc].sum(axis=-1)
+
+    phasors = {}
+    for h, field in fields.items():
+        phasors[h] = np.stack([blur_at_cells(f.real, True) + 1j * blur_at_cells(f.imag, True)
+                               for f in field])
+    return phasors, blur_at_cells(active + b)
+
+
+def _pixel_delays(sensor, n):
+    """Delay (ps) of every Z measurement: the global one plus the fixed per-pixel pattern
+    (drawn from ``fpn_seed`` on a stream of its own, so the PRNU/DSNU maps do not change)."""
+    delay = np.full(n, sensor.delay_ps)
+    if sensor.delay_fpn_ps:
+        rng = np.random.default_rng([sensor.fpn_seed, _STREAM_TOF_DELAY])
+        delay += sensor.delay_fpn_ps * rng.standard_normal(n)
+    return delay
+
+
 def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch_um=None,
-                 _stacklevel=2):
+                 optics=None, _stacklevel=2):
     """Simulate the i-ToF taps at the Z sites of a pattern (paper §5.1.2).
 
     Parameters
@@ -359,9 +437,17 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     seed : int
         Seed of the temporal noise.
     noise : bool
-        False: noise-free taps, no random number drawn.
+        False: noise-free taps (no shot, read, dark or fixed-pattern noise).
+        The systematic non-idealities of ``sensor`` (harmonics, tap
+        contrasts, delays, multipath) stay: they are the sensor's response,
+        the same in every frame (the per-pixel delays come from ``fpn_seed``).
     pixel_pitch_um : float, optional
         Cell pitch when ``sensor.pixel_pitch_um`` is None (default 2.8).
+    optics : Optics, optional
+        Blur the returned light (and the ambient light) through the lens
+        before the pixels collect it: :class:`Optics` with the laser's
+        ``sensor.wavelength_nm`` and the ToF lens's ``sensor.f_number``
+        (its OLPF, defocus and fill factor as given). None: no blur.
 
     Returns
     -------
@@ -379,6 +465,7 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     if not isinstance(sensor, ToFSensor):
         raise TypeError(f"tof_sensor: expected a ToFSensor, got {type(sensor).__name__}")
     seed = check_seed(seed, "seed")
+    optics = _check_optics(optics)
     if not scene.has_depth:
         raise ValueError("scene: has no depth map, so there is nothing for the ToF pixels "
                          "to measure")
@@ -400,17 +487,13 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     cc = np.stack([cols + dc for _, dc in offs], axis=1)
     d = scene.depth[cr, cc]
     cell_valid = scene.depth_valid[cr, cc]
-    if scene.ir_reflectance is not None:
-        rho = scene.ir_reflectance[cr, cc]
+    if optics is None:
+        phasors, total = _tof_light_at_cells(scene, sensor, pitch, cr, cc)
     else:
-        rho = estimate_ir_reflectance(scene.image[cr, cc], scene.wavelengths)
-    # a depth of 0 is only allowed where unknown: no surface, no laser return there
-    surface = d > 0
-    d_safe = np.where(surface, d, 1.0)
-    s, b = sensor._cell_electrons(d_safe, rho, pitch)
-    s = np.where(surface, s, 0.0)
-    phasor = (s[None] * np.exp(1j * sensor._phase(d_safe))).sum(axis=-1)   # (F, n)
-    mean = sensor._taps_from(phasor, (s + b).sum(axis=-1))                  # (F, 4, n)
+        phasors, total = _tof_light_through(scene, sensor, pitch, cr, cc, optics)
+    if sensor.delay_ps or sensor.delay_fpn_ps:
+        phasors = sensor._delayed(phasors, _pixel_delays(sensor, rows.size))
+    mean = sensor._taps_from(phasors, total)                                # (F, 4, n)
 
     depth_true = d.mean(axis=1)
     valid = cell_valid.all(axis=1)
@@ -424,9 +507,11 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
             "invalid (ToFTaps.valid)", UnambiguousRangeWarning, stacklevel=_stacklevel)
         valid = valid & ~beyond
 
-    taps, sat = _expose(mean, sensor.dark_current * sensor.integration_time, sensor,
+    suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
+    taps, sat = _expose(mean, sensor._dark_electrons, sensor,
                         noise=bool(noise), seed=seed, temporal_stream=_STREAM_TOF_TEMPORAL,
-                        fpn_stream=_STREAM_TOF_FPN, fpn_shape=mean.shape[1:])
+                        fpn_stream=_STREAM_TOF_FPN, fpn_shape=mean.shape[1:],
+                        suppress=suppress)
     meta = {"noise": bool(noise), "seed": seed, "pattern": pattern.name,
             "integration_time": sensor.integration_time,
             "system_gain": sensor.system_gain,
@@ -439,7 +524,8 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
 # --------------------------------------------------------------------------
 # RGB-Z build
 # --------------------------------------------------------------------------
-def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noise=True):
+def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noise=True,
+             optics=None):
     """Simulate a raw RGB-Z frame and its reference Bayer frame (paper §5.1.3, Fig. 16).
 
     The colour model runs once over every site of the pattern's underlying
@@ -466,6 +552,12 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         Seed of the temporal noise of both models (independent streams).
     noise : bool
         False: the exact noise-free frame; no random number is drawn.
+    optics : Optics, optional
+        The lens in front of the matrix: it blurs the scene for the colour
+        pixels (each channel over its band, :func:`simulate_colour`) and the
+        returned light for the Z pixels (at the laser wavelength and
+        ``tof_sensor.f_number``, :func:`simulate_tof`). None (the default):
+        no blur, as before optics existed.
 
     Returns
     -------
@@ -500,7 +592,8 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         raise ValueError(f"pattern: {pattern.name!r} fits no Bayer phase, so there is no "
                          "reference Bayer CFA to simulate")
 
-    ref = simulate_colour(scene, pattern, colour_sensor, seed=seed, noise=noise)
+    optics = _check_optics(optics)
+    ref = simulate_colour(scene, pattern, colour_sensor, seed=seed, noise=noise, optics=optics)
     zmask = pattern.z_mask(scene.shape)
     data = ref.data.copy()
     data[zmask] = 0
@@ -517,7 +610,8 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
             raise ValueError(f"tof_sensor.pixel_pitch_um: {used.pixel_pitch_um} um differs from "
                              f"colour_sensor.pixel_pitch_um {colour_sensor.pixel_pitch_um} um; "
                              "Z and colour pixels share one matrix (leave it None)")
-        tof = simulate_tof(scene, pattern, used, seed=seed, noise=noise, _stacklevel=3)
+        tof = simulate_tof(scene, pattern, used, seed=seed, noise=noise, optics=optics,
+                           _stacklevel=3)
         status = (f"simulated: {len(used.frequencies)} frequencies, {tof.n_sites} Z "
                   f"measurements of {tof.block}x{tof.block} pixels")
     meta = dict(ref.meta)

@@ -33,11 +33,16 @@ import numpy as np
 from .. import _kernels
 from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import check_flag, check_int, check_number, check_workers
+from .._validate import check_choice, check_number, check_workers
+from ._calibration import ToFCalibration
+from ._filters import (SiteGrid, _axis_offsets, _check_odd, denoise_phasors_bilateral,
+                       flying_pixels)
+from ._noise import tap_variance
 
 __all__ = ["ToFISP", "ToFDepth", "tof_depth", "demodulate", "phasors", "denoise_phasors",
            "unwrap", "demodulate_unwrap", "unambiguous_range", "MAX_WRAPS",
-           "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT"]
+           "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
+           "FLAG_OUT_OF_RANGE"]
 
 #: most wrap counts of the base frequency (the one with the longest ambiguity interval
 #: ``c / (2 f)``) that :func:`unwrap` searches per measurement: ``max_range`` may not exceed
@@ -53,6 +58,13 @@ FLAG_SATURATED = 1
 FLAG_LOW_SIGNAL = 2
 #: the frequencies disagree: the unwrapping residual exceeds ``max_residual``
 FLAG_INCONSISTENT = 4
+#: at a depth discontinuity: a second difference of the depths through the measurement or an
+#: immediate Z neighbour exceeds ``flying_step`` (and 2 sigma), so the measurement may mix
+#: two surfaces (a flying pixel)
+FLAG_FLYING = 8
+#: the depth is < 0 or within 5 sigma of ``max_range`` or beyond, or implies a reflectance below
+#: ``min_reflectance``: most likely a surface beyond the unambiguous range, aliased
+FLAG_OUT_OF_RANGE = 16
 
 
 # --------------------------------------------------------------------------- checks
@@ -69,14 +81,7 @@ def _check_taps(taps, name="taps"):
 
 
 def _check_window(window):
-    try:
-        w = check_int(window, "window", lo=1)
-    except TypeError:
-        w = None
-    if w is None or w % 2 == 0:
-        raise ValueError(f"window: expected an odd positive integer (5 = the paper's 5x5 "
-                         f"kernel), got {window!r}")
-    return w
+    return _check_odd(window, "window")
 
 
 # --------------------------------------------------------------------------- stages
@@ -138,23 +143,6 @@ def _phasors_offset(t):
     offset += np.add(t[:, 2], t[:, 3], dtype=np.float64)
     offset *= 0.25
     return i, q, offset
-
-
-def _axis_offsets(coords, radius):
-    """Grid offsets along one axis of sorted unique pixel coordinates.
-
-    Returns ``(a, lo, hi, ok)`` for every offset ``a`` that links some grid line
-    ``u`` in ``[lo, hi)`` to ``u + a`` within ``radius`` pixels; ``ok`` tells which.
-    Unique coordinates differ by at least one pixel, so ``|a| <= radius``.
-    """
-    n = coords.size
-    out = []
-    for a in range(-min(radius, n - 1), min(radius, n - 1) + 1):
-        lo, hi = max(0, -a), min(n, n - a)
-        ok = np.abs(coords[lo + a:hi + a] - coords[lo:hi]) <= radius
-        if ok.any():
-            out.append((a, lo, hi, ok))
-    return out
 
 
 def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
@@ -439,21 +427,6 @@ def demodulate_unwrap(taps, frequencies, *, weights=None, max_range=None, worker
     return depth, residual, wraps, phase, amp, off
 
 
-def _tap_variance(offset, sensor):
-    """Expected variance (DN^2) of one tap from its offset and the sensor's readout.
-
-    Shot noise of the collected charge, read noise and DSNU (both in
-    electrons), and quantisation: ``K (offset - black) + K^2 (read^2 + dsnu^2) + 1/12``.
-    """
-    k = sensor.system_gain
-    v = np.subtract(offset, sensor.black_level, dtype=np.float64)   # a new array: in place below
-    np.maximum(v, 0.0, out=v)
-    v *= k
-    v += k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2)
-    v += 1.0 / 12.0
-    return v
-
-
 # --------------------------------------------------------------------------- result
 @dataclass(frozen=True, eq=False)
 class ToFDepth:
@@ -469,18 +442,30 @@ class ToFDepth:
         Wrap count of the base (lowest) frequency.
     phase, amplitude, offset : ndarray of float64, shape (F, n)
         Phase in [0, 2 pi) and amplitude ``|I + iQ| / 2`` (DN) after the
-        denoise; offset ``mean(A_k)`` (DN, raw).
+        denoise (and the calibration); offset ``mean(A_k)`` (DN, raw).
     snr : ndarray of float64, shape (n,)
         Smallest over the frequencies of ``|I + iQ| / sigma_I``, with
         ``sigma_I`` the noise of the (averaged) I component from the sensor's
         noise model. The phase noise is about ``1 / snr`` radians.
+    sigma : ndarray of float64, shape (n,)
+        Predicted noise (standard deviation, m) of ``depth``: the phase
+        noise of every frequency through the unwrapping's weighted mean.
+    reflectance : ndarray of float64, shape (n,)
+        The NIR reflectance that the amplitude implies at the measured
+        distance (the sensor's radiometry, mean over the frequencies; 0 where
+        the depth is <= 0). A depth beyond the unambiguous range aliases to a
+        shorter one and implies a reflectance ``(d_alias / d_true)^2`` times
+        too small.
     count : ndarray of float64, shape (n,)
-        Measurements averaged into each one (1 without denoise).
+        Measurements averaged into each one: the window's count (box), the
+        effective number ``(sum w)^2 / sum w^2`` (bilateral), 1 without
+        denoise.
     valid : ndarray of bool, shape (n,)
         ``flags == 0``.
     flags : ndarray of uint8, shape (n,)
         :data:`FLAG_SATURATED`, :data:`FLAG_LOW_SIGNAL`,
-        :data:`FLAG_INCONSISTENT` (bitwise or).
+        :data:`FLAG_INCONSISTENT`, :data:`FLAG_FLYING`,
+        :data:`FLAG_OUT_OF_RANGE` (bitwise or).
     frequencies : ndarray, shape (F,)
     sites : (rows, cols)
     block : int
@@ -495,6 +480,8 @@ class ToFDepth:
     amplitude: np.ndarray
     offset: np.ndarray
     snr: np.ndarray
+    sigma: np.ndarray
+    reflectance: np.ndarray
     count: np.ndarray
     valid: np.ndarray
     flags: np.ndarray
@@ -502,6 +489,9 @@ class ToFDepth:
     sites: tuple
     block: int
     shape: tuple
+
+    _FIELDS = ("depth", "residual", "snr", "sigma", "reflectance", "valid", "flags", "wraps",
+               "count", "phase", "amplitude", "offset")
 
     @property
     def n_sites(self):
@@ -513,9 +503,10 @@ class ToFDepth:
         Parameters
         ----------
         values : str or ndarray
-            A field name (``"depth"``, ``"residual"``, ``"snr"``, ``"valid"``,
-            ``"flags"``, ``"wraps"``, ``"count"``, ``"phase"``,
-            ``"amplitude"``, ``"offset"``) or an array of shape (n,) or (F, n).
+            A field name (``"depth"``, ``"residual"``, ``"snr"``, ``"sigma"``,
+            ``"reflectance"``, ``"valid"``, ``"flags"``, ``"wraps"``,
+            ``"count"``, ``"phase"``, ``"amplitude"``, ``"offset"``) or an
+            array of shape (n,) or (F, n).
         fill : scalar
             Value of the pixels that hold no Z measurement (NaN by default;
             use 0 or False for integer and boolean fields).
@@ -525,8 +516,7 @@ class ToFDepth:
         ndarray, shape (rows, cols) or (F, rows, cols)
         """
         if isinstance(values, str):
-            if values not in ("depth", "residual", "snr", "valid", "flags", "wraps", "count",
-                              "phase", "amplitude", "offset"):
+            if values not in self._FIELDS:
                 raise ValueError(f"values: unknown field {values!r}")
             v = getattr(self, values)
         else:
@@ -552,16 +542,38 @@ class ToFDepth:
 
 
 # --------------------------------------------------------------------------- the chain
+_DENOISE = ("bilateral", "box", "none")
+
+
+def _check_denoise(denoise):
+    """'bilateral', 'box' or 'none'; True is the default ('bilateral'), False is 'none'."""
+    if isinstance(denoise, (bool, np.bool_)):
+        return "bilateral" if denoise else "none"
+    return check_choice(denoise, _DENOISE, "denoise")
+
+
+def _check_calibration(calibration):
+    if calibration is not None and not isinstance(calibration, ToFCalibration):
+        raise TypeError(f"calibration: expected a ToFCalibration or None, got "
+                        f"{type(calibration).__name__}")
+    return calibration
+
+
 @dataclass(frozen=True)
 class ToFISP:
-    """Parameters of the ToF ISP (see :func:`tof_depth`).
+    """Parameters of the ToF ISP (see :func:`tof_depth` for each one).
 
     Attributes
     ----------
-    denoise : bool
-        Average I + iQ over the Z measurements of the window (Fig. 17).
-    window : int
-        Odd window size in Z-pixel cells (5: the paper's 5x5 kernel).
+    denoise : {"bilateral", "box", "none"}
+        The edge-aware phasor mean (default), the paper's plain average
+        (Fig. 17) or none.
+    window : int or None
+        Odd window size in Z-pixel cells; None: 9 (the 5x5 nearest Z
+        measurements) for the bilateral denoise, 5 (the paper's 3x3) for
+        the box.
+    range_scale : float
+        Range scale ``h`` of the bilateral weights (2).
     min_snr : float
         Smallest per-frequency ``|I + iQ| / sigma_I`` of a valid measurement
         (4: on noisy walls the unwrapping errs on 0.04 % of the measurements
@@ -573,57 +585,132 @@ class ToFISP:
         Largest unwrapping residual (m) of a valid measurement (0.15: a wrong
         wrap combination of 80/100/120 MHz leaves about 0.17 m or more).
         Retune it for other frequency sets.
+    max_sigma, flying_step, min_reflectance : float or None
+        The validity tests of depth noise, flying pixels and aliasing
+        (:func:`tof_depth`).
     max_range : float or None
-        Unwrapping range (m); None: the unambiguous range of the frequencies
-        (bounds and the nearly-coprime case: :func:`unwrap`).
+        Unwrapping range (m); None: the unambiguous range of the frequencies.
+    calibration : ToFCalibration or None
+        Phase calibration applied to the taps (:func:`~rgbz_fast.tof.calibrate`).
     """
 
-    denoise: bool = True
-    window: int = 5
+    denoise: str = "bilateral"
+    window: int | None = None
+    range_scale: float = 2.0
     min_snr: float = 4.0
     min_amplitude: float = 0.0
     max_residual: float = 0.15
+    max_sigma: float | None = 0.015
+    flying_step: float | None = 0.05
+    min_reflectance: float = 0.05
     max_range: float | None = None
+    calibration: ToFCalibration | None = None
 
     def __post_init__(self):
-        check_flag(self.denoise, "denoise")
-        _check_window(self.window)
+        object.__setattr__(self, "denoise", _check_denoise(self.denoise))
+        if self.window is not None:
+            _check_window(self.window)
+        check_number(self.range_scale, "range_scale", lo=0, lo_open=True)
         check_number(self.min_snr, "min_snr", lo=0)
         check_number(self.min_amplitude, "min_amplitude", lo=0)
         check_number(self.max_residual, "max_residual", lo=0, lo_open=True)
+        check_number(self.max_sigma, "max_sigma", lo=0, lo_open=True, allow_none=True)
+        check_number(self.flying_step, "flying_step", lo=0, lo_open=True, allow_none=True)
+        check_number(self.min_reflectance, "min_reflectance", lo=0, hi=1)
         check_number(self.max_range, "max_range", lo=0, lo_open=True, allow_none=True)
+        _check_calibration(self.calibration)
 
     def run(self, tof, *, workers=None):
         """Depth, amplitude and validity of every Z measurement of ``tof``."""
         return tof_depth(tof, denoise=self.denoise, window=self.window,
-                         min_snr=self.min_snr, min_amplitude=self.min_amplitude,
-                         max_residual=self.max_residual, max_range=self.max_range,
-                         workers=workers)
+                         range_scale=self.range_scale, min_snr=self.min_snr,
+                         min_amplitude=self.min_amplitude, max_residual=self.max_residual,
+                         max_sigma=self.max_sigma, flying_step=self.flying_step,
+                         min_reflectance=self.min_reflectance, max_range=self.max_range,
+                         calibration=self.calibration, workers=workers)
 
 
-def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
-              max_residual=0.15, max_range=None, workers=None):
+def _depth_sigma(amp, var, frequencies):
+    """Depth noise (m) of the f^2-weighted mean of the per-frequency distances.
+
+    ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
+    variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
+    (uniform on the circle). In place on one (F, n) temporary: it runs on every frame.
+    """
+    f = np.asarray(frequencies, np.float64)
+    w = f * f
+    scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
+    t = np.multiply(amp, amp)
+    t *= 4.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.divide(var, t, out=t)                          # phase variance; inf / nan at 0
+    np.fmin(t, np.pi * np.pi / 3.0, out=t)               # fmin: a NaN takes the cap
+    t *= scale[:, None]
+    return np.sqrt(t.sum(axis=0))
+
+
+def _implied_reflectance(depth, amp, sensor, block):
+    """NIR reflectance that the amplitude implies at ``depth`` (the sensor's radiometry)."""
+    ok = depth > 0
+    d = np.where(ok, depth, 1.0)
+    s1, _ = sensor._cell_electrons(d, 1.0, sensor.pixel_pitch_um or 2.8)
+    contrast = sensor.contrasts.reshape(-1, 1) * float(np.mean(sensor.tap_contrast))
+    model = sensor.system_gain * 0.25 * contrast * (s1 * block * block)[None]
+    rho = (amp / model).mean(axis=0)
+    return np.where(ok, rho, 0.0)
+
+
+def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr=4.0,
+              min_amplitude=0.0, max_residual=0.15, max_sigma=0.015, flying_step=0.05,
+              min_reflectance=0.05, max_range=None, calibration=None, workers=None):
     """The ToF ISP: taps of every Z measurement -> depth, amplitude, validity.
 
     Parameters
     ----------
     tof : ToFTaps or RawFrame
-        The taps (``frame.tof`` of :func:`rgbz_fast.simulate`). The
-        noise model of the SNR uses ``tof.sensor`` (system gain, read noise,
-        DSNU, black level): the ISP is calibrated for its sensor.
-    denoise : bool
-        Average the phasors over the Z measurements of the window
-        (:func:`denoise_phasors`, Fig. 17).
-    window : int
-        Odd window size in Z-pixel cells (5).
+        The taps (``frame.tof`` of :func:`rgbz_fast.simulate`). The noise
+        model and the radiometry use ``tof.sensor`` (system gain, read noise,
+        DSNU, PRNU, black level, ambient suppression; source power, lens,
+        pixel): the ISP is calibrated for its sensor.
+    denoise : {"bilateral", "box", "none"}
+        ``"bilateral"`` (default): the edge-aware mean of the phasors over the
+        Z measurements of the window, two passes
+        (:func:`~rgbz_fast.tof.denoise_phasors_bilateral`); ``"box"``: the
+        paper's plain mean (Fig. 17, :func:`denoise_phasors`); ``"none"``.
+        True and False mean ``"bilateral"`` and ``"none"``.
+    window : int, optional
+        Odd window size in Z-pixel cells; default 9 for the bilateral denoise
+        (the 5x5 nearest Z measurements) and 5 for the box (the paper's
+        5x5-pixel kernel: 3x3 Z measurements).
+    range_scale : float
+        Range scale of the bilateral weights (2; larger smooths across
+        weaker edges).
     min_snr, min_amplitude, max_residual : float
-        Validity thresholds (see :class:`ToFISP`).
+        Validity thresholds: per-frequency SNR (4) and amplitude (0 DN), and
+        the unwrapping residual (0.15 m).
+    max_sigma : float or None
+        Largest predicted depth noise (m) of a valid measurement (0.015: a
+        5 cm error is then a 3.3-sigma event, 0.1 % of the valid
+        measurements); None: no limit.
+    flying_step : float or None
+        Depth jump (m) that marks a discontinuity (0.05; see
+        :func:`~rgbz_fast.tof.flying_pixels`); None: no flying-pixel test.
+    min_reflectance : float
+        Smallest NIR reflectance a valid measurement may imply (0.05; 0: no
+        test). Depths beyond the unambiguous range alias to shorter ones and
+        imply much darker surfaces: see Notes.
     max_range : float, optional
         Unwrapping range in metres (see :func:`unwrap`): default
         ``tof.unambiguous_range``, unless that spans more than
         :data:`MAX_WRAPS` wraps of the lowest frequency (nearly coprime
         frequencies), in which case a ValueError naming ``frequencies`` asks
-        for an explicit one; at most the unambiguous range.
+        for an explicit one; at most the unambiguous range. Depths found
+        beyond it are flagged out of range.
+    calibration : ToFCalibration, optional
+        Per-measurement phase offsets and per-frequency cyclic error
+        (:func:`~rgbz_fast.tof.calibrate`), and the taps' dark offsets when
+        it holds them. It must have been made for these frequencies and Z
+        measurements.
     workers : int, optional
         Threads of the C kernels (None or -1: all cores). The result does
         not depend on it.
@@ -635,8 +722,9 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
     Raises
     ------
     ValueError, TypeError
-        A frame without taps, malformed taps, thresholds out of range, or a
-        ``max_range`` the unwrapping cannot search (see above).
+        A frame without taps, malformed taps, thresholds out of range, a
+        calibration of another sensor layout, or a ``max_range`` the
+        unwrapping cannot search (see above).
 
     Notes
     -----
@@ -644,14 +732,29 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
 
     * saturated when a tap reached the white level at some frequency, or
       the sensor flagged it (``tof.saturated``): its phase is biased;
-    * low-signal when ``snr < min_snr`` or the amplitude is below
-      ``min_amplitude`` at some frequency. ``snr = |I + iQ| / sigma_I`` with
-      ``sigma_I^2 = 2 var(A) / count``, ``var(A) = K (offset - black) +
-      K^2 (read^2 + dsnu^2) + 1/12`` (shot noise, read noise, DSNU and
-      quantisation of a tap, in DN^2; ``count`` measurements averaged);
+    * low-signal when ``snr < min_snr``, the amplitude is below
+      ``min_amplitude`` at some frequency, or ``sigma > max_sigma``.
+      ``snr = |I + iQ| / sigma_I`` with ``sigma_I^2`` the variance of the
+      (averaged) component: ``2 var(A)`` per measurement, ``var(A) = K c +
+      K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` (shot noise of the
+      collected charge ``c``, read noise, DSNU, quantisation and PRNU of a
+      tap holding ``e`` electrons, in DN^2), through the denoise's weights;
     * inconsistent when the unwrapping residual exceeds ``max_residual``:
-      the frequencies disagree (a wrong unwrap, a depth edge inside the
-      window, multipath).
+      the frequencies disagree (a wrong unwrap, a mixed return);
+    * flying when the depth jumps by more than ``max(flying_step, 2 sigma)``
+      within one Z measurement of it (second differences along rows, columns
+      and diagonals, usable measurements only; slopes do not count): the
+      measurement may mix the two surfaces of a depth edge;
+    * out of range when the depth is < 0 or beyond ``max_range - 5 sigma``
+      (a guard: a surface just beyond the range reads either ~0 m or, through
+      the noise, just below the end), or the implied reflectance is below
+      ``min_reflectance``. A surface at ``D``
+      beyond the unambiguous range ``U`` gives the phases of ``D - kU`` at
+      every frequency -- no test on the phases can see it -- but its
+      amplitude is that of a surface ``((D - kU) / D)^2`` times darker: with
+      ``rho <= 1`` every ``D < U / (1 - sqrt(min_reflectance))`` (9.66 m for
+      80/100/120 MHz and 0.05) is flagged; farther ones only when their signal
+      is too low to be valid (docs/reports/isp.md measures both).
 
     Examples
     --------
@@ -670,56 +773,93 @@ def tof_depth(tof, *, denoise=True, window=5, min_snr=4.0, min_amplitude=0.0,
     if not isinstance(tof, ToFTaps):
         raise TypeError(f"tof: expected ToFTaps or a RawFrame with taps, got "
                         f"{type(tof).__name__}")
-    denoise = check_flag(denoise, "denoise")
-    window = _check_window(window)
+    denoise = _check_denoise(denoise)
+    window = (9 if denoise == "bilateral" else 5) if window is None else _check_window(window)
+    range_scale = check_number(range_scale, "range_scale", lo=0, lo_open=True)
     min_snr = check_number(min_snr, "min_snr", lo=0)
     min_amplitude = check_number(min_amplitude, "min_amplitude", lo=0)
     max_residual = check_number(max_residual, "max_residual", lo=0, lo_open=True)
+    max_sigma = check_number(max_sigma, "max_sigma", lo=0, lo_open=True, allow_none=True)
+    flying_step = check_number(flying_step, "flying_step", lo=0, lo_open=True,
+                               allow_none=True)
+    min_reflectance = check_number(min_reflectance, "min_reflectance", lo=0, hi=1)
+    calibration = _check_calibration(calibration)
     nthreads = check_workers(workers)
 
     taps = tof.taps
     n = tof.n_sites
+    sensor = tof.sensor
     f, w, max_range = _check_unwrap_args(taps.shape[0], tof.frequencies, None, max_range)
+    if calibration is not None:
+        calibration.check(tof)
     # max over the 4F taps (uint16 reductions), then one comparison: = any(tap >= white)
     saturated = np.asarray(tof.saturated, bool) | (taps.max(axis=(0, 1)) >= tof.white_level)
-    if denoise:
+    if calibration is not None and calibration.dark is not None:
+        taps = np.asarray(taps, np.float64) - calibration.dark[None]
+    depth, residual = np.empty(n), np.empty(n)
+    wraps = np.empty(n, np.int32)
+    grid = None                     # the grid of the Z measurements, built once when needed
+    if denoise == "none" and calibration is None:
+        depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
+            taps, f, max_range=max_range, workers=nthreads)
+        count = np.ones(n)
+        var = 2.0 * tap_variance(offset, sensor)
+    else:
         # one pass over the taps in NumPy (I, Q and the offset exactly as the C kernel
-        # computes them), the mean over the window, then one C pass from the phasors
+        # computes them), the calibration's offsets, the mean over the window, then one C
+        # pass from the phasors
         i, q, offset = _phasors_offset(taps)
-        i, q, count, (off_mean,) = denoise_phasors(i, q, tof.sites, block=tof.block,
-                                                   window=window, use=~saturated,
-                                                   extra=(offset,))
-        # atan2, amplitude and unwrapping of the averaged phasors in one C pass
-        depth, residual = np.empty(n), np.empty(n)
-        wraps = np.empty(n, np.int32)
+        if calibration is not None:
+            z = (i + 1j * q) * np.exp(-1j * calibration.deviations)
+            i, q = np.ascontiguousarray(z.real), np.ascontiguousarray(z.imag)
+        if denoise == "box":
+            i, q, count, (off_mean,) = denoise_phasors(i, q, tof.sites, block=tof.block,
+                                                       window=window, use=~saturated,
+                                                       extra=(offset,))
+            noise_offset = np.where(count > 0, off_mean, offset)
+            var = 2.0 * tap_variance(noise_offset, sensor) / np.maximum(count, 1.0)
+        elif denoise == "bilateral":
+            var = 2.0 * tap_variance(offset, sensor)
+            grid = SiteGrid(tof.sites, tof.block)
+            i, q, var, count = denoise_phasors_bilateral(
+                i, q, var, grid, block=tof.block, window=window, use=~saturated,
+                range_scale=range_scale, workers=nthreads)
+        else:
+            count = np.ones(n)
+            var = 2.0 * tap_variance(offset, sensor)
+        # atan2, amplitude and unwrapping of the phasors in one C pass
         phase, amp = np.empty_like(i), np.empty_like(i)
         if not _kernels.tof_depth_iq(np.ascontiguousarray(i), np.ascontiguousarray(q), f, w,
                                      max_range, depth, residual, wraps, phase, amp,
                                      workers=nthreads):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
-        noise_offset = np.where(count > 0, off_mean, offset)
-        navg = np.maximum(count, 1.0)
-    else:
-        depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
-            taps, f, max_range=max_range, workers=nthreads)
-        count = np.ones(n)
-        noise_offset = offset
-        navg = count
-    sigma_i = _tap_variance(noise_offset, tof.sensor)       # in place: sqrt(2 var / navg)
-    sigma_i *= 2.0
-    sigma_i /= navg
-    np.sqrt(sigma_i, out=sigma_i)
-    snr = amp * 2.0
-    snr /= sigma_i
-    snr = snr.min(axis=0)
+        if calibration is not None:
+            phase = calibration.correct_phase(phase)
+            depth, residual, wraps = unwrap(phase, f, max_range=max_range, workers=nthreads)
+    snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
+    sigma = _depth_sigma(amp, var, f)
+    reflectance = _implied_reflectance(depth, amp, sensor, tof.block)
 
     flags = np.zeros(n, np.uint8)
     flags[saturated] |= FLAG_SATURATED
     low = (snr < min_snr) | np.any(amp < min_amplitude, axis=0)
+    if max_sigma is not None:
+        low |= ~(sigma <= max_sigma)
     flags[low] |= FLAG_LOW_SIGNAL
     flags[residual > max_residual] |= FLAG_INCONSISTENT
+    if flying_step is not None:
+        usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
+        if grid is None:
+            grid = SiteGrid(tof.sites, tof.block)
+        flags[flying_pixels(depth, sigma, grid, block=tof.block, step=flying_step,
+                            usable=usable)] |= FLAG_FLYING
+    # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
+    # ~0 m (the reflectance test) or, through the noise, just below the end
+    out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
+    flags[out] |= FLAG_OUT_OF_RANGE
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
-                    offset=offset, snr=snr, count=count, valid=flags == 0, flags=flags,
+                    offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
+                    valid=flags == 0, flags=flags,
                     frequencies=np.asarray(tof.frequencies, np.float64).copy(),
                     sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
                     shape=tuple(tof.shape))

@@ -1,0 +1,162 @@
+/*
+ * tof_filter.c -- the edge-aware (bilateral) mean of the ToF phasors over the Z
+ * measurements of a window: one pass of rgbz_fast.tof.denoise_phasors_bilateral.
+ *
+ * Algorithm (Tomasi & Manduchi 1998, with a range kernel measured against the
+ * sensor's noise): for the measurement at grid cell (r, c) and every neighbour
+ * (r + a, c + b), |a| <= reach_rows, |b| <= reach_cols, that lies within radius_px pixels in rows
+ * and in columns and is usable,
+ *     chi = sum_f |g_f(nb) - g_f(centre)|^2 / (gv_f(nb) + gv_f(centre)),
+ *     x   = 0.5 * inv_h2 * (chi - 2F),
+ *     w   = 1 if x <= 0, exp(-x) if x < 36, else 0 (below 2.3e-16: no exp() call),
+ *     out_f = sum w z_f(nb) / sum w,  out_var_f = sum w^2 var_f(nb) / (sum w)^2,
+ *     neff  = (sum w)^2 / sum w^2,
+ * with g the guide phasors (the raw ones, or a first pass's output) and gv the
+ * variance of each of their components. Every sum runs over the offsets in the
+ * order a = -reach_rows..reach_rows, then b = -reach_cols..reach_cols, and chi over f = 0..F-1: the
+ * order of the NumPy reference (tests/_reference/tof.py), which it matches to
+ * rounding (libm's exp against NumPy's). A cell that no usable neighbour reaches
+ * gets out = 0, out_var = +inf, neff = 0.
+ *
+ * Layout: the grid of the Z measurements (one cell per distinct row and column of
+ * their sites), planar and row-major: z_re, z_im, var, g_re, g_im, g_var, out_re,
+ * out_im, out_var are (nfreq, rows, cols); use (rows, cols), 1 = usable; row_px
+ * (rows) and col_px (cols) the pixel coordinates of the grid lines; out_neff
+ * (rows, cols).
+ *
+ * Speed: one grid row at a time, each offset a loop over the row's cells (chi and
+ * the accumulations vectorise; exp() is called only where chi > 2F, in a loop of
+ * its own). Threads: OpenMP over grid rows, each with its own scratch; every cell
+ * is computed alone, so the result does not depend on the thread count.
+ */
+/* As in tof.c: no FP trap is ever enabled, so GCC may vectorise the selects. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "rgbz.h"
+#include "tof_filter.h"
+
+/* weights below exp(-36) = 2.3e-16 are 0: they cannot change a mean of doubles, and
+   skipping exp() there (the far side of every edge) halves the time of a pass */
+#define RGBZ_TOF_FILTER_CUT 36.0
+
+typedef struct {
+    const double *z_re, *z_im, *var, *g_re, *g_im, *g_var;
+    const uint8_t *use;
+    const int64_t *row_px, *col_px;
+    ptrdiff_t nfreq, rows, cols, reach_rows, reach_cols;
+    int64_t radius_px;
+    double inv_h2;
+    double *out_re, *out_im, *out_var, *out_neff;
+} filter_args;
+
+/* scratch of one row: num_re, num_im, w2v (nfreq * cols each), den, w2, chi, w (cols) */
+static void filter_row(const filter_args *p, ptrdiff_t r, double *scratch)
+{
+    const ptrdiff_t F = p->nfreq, C = p->cols, plane = p->rows * p->cols;
+    const double bias = 2.0 * (double)F;
+    double *num_re = scratch, *num_im = num_re + F * C, *w2v = num_im + F * C;
+    double *den = w2v + F * C, *w2 = den + C, *chi = w2 + C, *w = chi + C;
+    for (ptrdiff_t k = 0; k < 3 * F * C + 2 * C; k++) scratch[k] = 0.0;
+    for (ptrdiff_t a = -p->reach_rows; a <= p->reach_rows; a++) {
+        const ptrdiff_t rr = r + a;
+        if (rr < 0 || rr >= p->rows) continue;
+        const int64_t dr = p->row_px[rr] - p->row_px[r];
+        if (dr < -p->radius_px || dr > p->radius_px) continue;
+        const ptrdiff_t row_c = r * C, row_n = rr * C;
+        for (ptrdiff_t b = -p->reach_cols; b <= p->reach_cols; b++) {
+            const ptrdiff_t c0 = b < 0 ? -b : 0, c1 = b > 0 ? C - b : C;
+            if (c1 <= c0) continue;
+            /* chi over the frequencies, in order */
+            for (ptrdiff_t c = c0; c < c1; c++) chi[c] = 0.0;
+            for (ptrdiff_t f = 0; f < F; f++) {
+                const double *gr = p->g_re + f * plane, *gi = p->g_im + f * plane;
+                const double *gv = p->g_var + f * plane;
+                for (ptrdiff_t c = c0; c < c1; c++) {
+                    const double dre = gr[row_n + c + b] - gr[row_c + c];
+                    const double dim = gi[row_n + c + b] - gi[row_c + c];
+                    chi[c] += (dre * dre + dim * dim) / (gv[row_n + c + b] + gv[row_c + c]);
+                }
+            }
+            /* the weights: usable neighbours within the radius; exp only above 2F */
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                const int64_t dc = p->col_px[c + b] - p->col_px[c];
+                const int near = dc >= -p->radius_px && dc <= p->radius_px;
+                const double x = 0.5 * p->inv_h2 * (chi[c] - bias);
+                double wc = x > 0.0 ? (x < RGBZ_TOF_FILTER_CUT ? exp(-x) : 0.0) : 1.0;
+                w[c] = (near && p->use[row_n + c + b]) ? wc : 0.0;
+            }
+            for (ptrdiff_t f = 0; f < F; f++) {
+                const double *zr = p->z_re + f * plane + row_n + b;
+                const double *zi = p->z_im + f * plane + row_n + b;
+                const double *v = p->var + f * plane + row_n + b;
+                double *nr = num_re + f * C, *ni = num_im + f * C, *nv = w2v + f * C;
+                for (ptrdiff_t c = c0; c < c1; c++) {
+                    nr[c] += w[c] * zr[c];
+                    ni[c] += w[c] * zi[c];
+                    nv[c] += (w[c] * w[c]) * v[c];
+                }
+            }
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                den[c] += w[c];
+                w2[c] += w[c] * w[c];
+            }
+        }
+    }
+    for (ptrdiff_t c = 0; c < C; c++) {
+        const ptrdiff_t cell = r * C + c;
+        const int ok = den[c] > 0.0;
+        const double inv = ok ? 1.0 / den[c] : 0.0;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            p->out_re[f * plane + cell] = num_re[f * C + c] * inv;
+            p->out_im[f * plane + cell] = num_im[f * C + c] * inv;
+            p->out_var[f * plane + cell] = ok ? w2v[f * C + c] * (inv * inv) : HUGE_VAL;
+        }
+        p->out_neff[cell] = w2[c] > 0.0 ? den[c] * den[c] / w2[c] : 0.0;
+    }
+}
+
+int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
+                       const double *g_re, const double *g_im, const double *g_var,
+                       const uint8_t *use, const int64_t *row_px, const int64_t *col_px,
+                       ptrdiff_t nfreq, ptrdiff_t rows, ptrdiff_t cols,
+                       ptrdiff_t reach_rows, ptrdiff_t reach_cols, int64_t radius_px, double inv_h2,
+                       double *out_re, double *out_im, double *out_var, double *out_neff,
+                       int workers)
+{
+    if (!z_re || !z_im || !var || !g_re || !g_im || !g_var || !use || !row_px || !col_px
+        || !out_re || !out_im || !out_var || !out_neff || rows < 0 || cols < 0 || nfreq < 1
+        || nfreq > RGBZ_TOF_MAX_FREQS || reach_rows < 0 || reach_cols < 0 || radius_px < 0 || !(inv_h2 >= 0.0))
+        return RGBZ_EINVAL;
+    const filter_args p = {z_re, z_im, var, g_re, g_im, g_var, use, row_px, col_px, nfreq,
+                           rows, cols, reach_rows, reach_cols, radius_px, inv_h2, out_re, out_im, out_var,
+                           out_neff};
+    const size_t per_row = (size_t)(3 * nfreq + 4) * (size_t)(cols > 0 ? cols : 1);
+    int status = RGBZ_OK;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(workers > 0 ? workers : omp_get_max_threads())
+#endif
+    {
+        double *scratch = malloc(per_row * sizeof(double));
+        if (!scratch) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ENOMEM;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t r = 0; r < rows; r++)
+            if (scratch) filter_row(&p, r, scratch);
+        free(scratch);
+    }
+    (void)workers;
+    return status;
+}

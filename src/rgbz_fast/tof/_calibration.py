@@ -1,0 +1,438 @@
+"""Phase calibration of an i-ToF sensor from a flat-wall sweep: cyclic error and per-pixel offsets.
+
+A real four-tap pixel does not measure ``phi = 4 pi f d / c``: the light and
+the demodulation gates are not sinusoids (their harmonics alias onto the
+fundamental and bend the phase: the *cyclic* or *wiggling* error, periodic in
+the phase), the four gates do not have the same contrast (an error at twice
+the phase), and every pixel's clock arrives with its own delay (a per-pixel
+phase offset). :func:`calibrate` fits, from frames of a flat wall at known
+distances that sweep the phase of every frequency,
+
+.. math::
+
+    \\phi_{meas} - \\phi_{true} = o_{f,n} + g_f(\\phi_{meas} - \\delta_{f,n}),
+    \\qquad g_f(\\phi) = \\sum_{k=1}^{K} a_{f,k} \\cos k\\phi + b_{f,k} \\sin k\\phi
+
+per frequency ``f`` and measurement ``n``: a phase offset per measurement and
+frequency, ``delta = o - mean_n(o)`` its deviation from the frequency's mean
+offset, and a Fourier series of the cyclic error per frequency (no constant
+term: that is in the offsets). The distortion acts on the phase the pixel
+sees, its delay included, so ``g`` takes the measured phase (less only the
+small per-pixel deviation, which the ISP must remove before it averages
+neighbours). The ISP applies it in that order (:func:`~rgbz_fast.tof.tof_depth`
+with ``calibration=``): the phasors of every measurement are turned by
+``-delta`` before the denoise, and the phase of the denoised phasor ``phi'``
+becomes ``phi' - g(phi') - mean(o)`` before the unwrapping. ``g`` is applied
+to the denoised phase, not to each noisy one: averaging ``g(phi + noise)``
+would shrink its k-th harmonic by ``exp(-k^2 sigma^2 / 2)``.
+Optionally a dark sweep (the laser off) gives each tap's dark offset above the
+black level (DSNU plus dark current), which is subtracted from the taps first.
+
+The fit alternates: the offsets are the weighted circular means over the
+frames of ``e - g``; ``g`` is the weighted least-squares fit of ``e - o`` on
+the Fourier basis of ``phi_meas - o``; weights are the inverse phase
+variances ``|I + iQ|^2 / var(I)`` of the sensor's noise model, saturated
+measurements and those below an SNR of 3 left out. Four alternations
+converge (the slope of ``g`` is small).
+
+References
+----------
+.. [1] Lindner and Kolb, "Lateral and depth calibration of PMD-distance sensors": per-pixel offsets and a smooth distance-dependent correction from planar targets (docs/references.bib: lindner2006pmd)
+.. [2] Kahlmann et al., "Calibration for increased accuracy of the range imaging camera SwissRanger": the cyclic distance error and its calibration (docs/references.bib: kahlmann2006swissranger)
+.. [3] Lange and Seitz, "Solid-state time-of-flight range camera": harmonics of the four-phase sampling (docs/references.bib: lange2001tof)
+"""
+
+from __future__ import annotations
+
+import io
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .._frame import RawFrame, ToFTaps
+from .._sensors import SPEED_OF_LIGHT
+from .._validate import check_int
+from ..io import atomic_write, read_npz
+from ._noise import tap_variance
+
+__all__ = ["ToFCalibration", "calibrate"]
+
+_FORMAT_TAG = "rgbz-fast ToF calibration"
+_MIN_SNR = 3.0
+
+
+@dataclass(frozen=True, eq=False)
+class ToFCalibration:
+    """What :func:`calibrate` measured; the ToF ISP applies it (``tof_depth(calibration=)``).
+
+    Attributes
+    ----------
+    frequencies : ndarray, shape (F,)
+        Modulation frequencies (Hz) it was measured at.
+    offsets : ndarray of float64, shape (F, n)
+        Phase offset (rad) of every measurement at every frequency
+        (:attr:`mean_offset` and :attr:`deviations` split it).
+    coefficients : ndarray of float64, shape (F, K, 2)
+        ``(a_k, b_k)`` of the cyclic error ``g_f`` for ``k = 1..K``.
+    sites : (rows, cols)
+        The Z measurements (top-left pixels) the offsets belong to.
+    block : int
+    shape : (rows, cols)
+        The frame shape.
+    dark : ndarray of float64, shape (4, n), or None
+        Dark offset of each tap above the black level (DN), or None.
+    meta : dict
+        ``frames``, ``orders``, ``fit_rms_rad`` (the weighted RMS of the fit's
+        residual phase, per frequency) and ``fit_rms_m`` (the same in metres).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> cal = ToFCalibration(np.array([1e8]), np.zeros((1, 2)), np.zeros((1, 3, 2)),
+    ...                      (np.array([0, 0]), np.array([0, 2])), 1, (2, 4))
+    >>> cal.cyclic_error(np.array([[0.5, 1.0]])).shape
+    (1, 2)
+    """
+
+    frequencies: np.ndarray
+    offsets: np.ndarray
+    coefficients: np.ndarray
+    sites: tuple
+    block: int
+    shape: tuple
+    dark: np.ndarray | None = None
+    meta: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        f = np.asarray(self.frequencies, np.float64).reshape(-1)
+        off = np.asarray(self.offsets, np.float64)
+        coef = np.asarray(self.coefficients, np.float64)
+        rows, cols = (np.asarray(a, np.int64) for a in self.sites)
+        n = rows.size
+        if off.shape != (f.size, n) or cols.shape != (n,):
+            raise ValueError(f"offsets: expected shape ({f.size}, {n}) (frequencies x sites), "
+                             f"got {off.shape}")
+        if coef.ndim != 3 or coef.shape[0] != f.size or coef.shape[2] != 2:
+            raise ValueError(f"coefficients: expected shape ({f.size}, K, 2), got {coef.shape}")
+        for name, a in (("offsets", off), ("coefficients", coef)):
+            if not np.all(np.isfinite(a)):
+                raise ValueError(f"{name}: holds NaN or infinite values")
+        dark = None
+        if self.dark is not None:
+            dark = np.asarray(self.dark, np.float64)
+            if dark.shape != (4, n) or not np.all(np.isfinite(dark)):
+                raise ValueError(f"dark: expected finite values of shape (4, {n}), got "
+                                 f"{dark.shape}")
+        if self.block not in (1, 2):
+            raise ValueError(f"block: expected 1 or 2, got {self.block!r}")
+        for name, a in (("frequencies", f), ("offsets", off), ("coefficients", coef),
+                        ("rows", rows), ("cols", cols)) + ((("dark", dark),) if dark is not None
+                                                            else ()):
+            a.setflags(write=False)
+        object.__setattr__(self, "frequencies", f)
+        object.__setattr__(self, "offsets", off)
+        object.__setattr__(self, "coefficients", coef)
+        object.__setattr__(self, "sites", (rows, cols))
+        object.__setattr__(self, "dark", dark)
+        object.__setattr__(self, "shape", tuple(int(v) for v in self.shape))
+        object.__setattr__(self, "meta", dict(self.meta))
+
+    @property
+    def orders(self):
+        """int: K, the highest harmonic of the cyclic-error series."""
+        return int(self.coefficients.shape[1])
+
+    def check(self, tof, name="calibration"):
+        """ValueError naming ``name`` unless ``tof`` has this calibration's frequencies and sites."""
+        freqs = np.asarray(tof.frequencies, np.float64).reshape(-1)
+        if freqs.shape != self.frequencies.shape or not np.allclose(freqs, self.frequencies,
+                                                                    rtol=1e-9, atol=0):
+            raise ValueError(f"{name}: measured at {self.frequencies / 1e6} MHz, the taps are at "
+                             f"{np.asarray(tof.frequencies) / 1e6} MHz")
+        r, c = tof.sites
+        if (tuple(tof.shape) != self.shape or int(tof.block) != self.block
+                or r.shape != self.sites[0].shape or not np.array_equal(r, self.sites[0])
+                or not np.array_equal(c, self.sites[1])):
+            raise ValueError(f"{name}: made for {self.sites[0].size} Z measurements of a "
+                             f"{self.shape[0]}x{self.shape[1]} frame (block {self.block}), the "
+                             f"taps hold {r.size} of a {tof.shape[0]}x{tof.shape[1]} frame "
+                             f"(block {tof.block})")
+
+    @property
+    def mean_offset(self):
+        """ndarray (F,): the circular mean of the offsets over the measurements (rad)."""
+        return np.angle(np.exp(1j * self.offsets).sum(axis=1))
+
+    @property
+    def deviations(self):
+        """ndarray (F, n): each measurement's offset less the mean, wrapped to (-pi, pi]."""
+        return np.angle(np.exp(1j * (self.offsets - self.mean_offset[:, None])))
+
+    def cyclic_error(self, phase):
+        """``g_f(phase)`` (rad) for phases of shape (F, ...)."""
+        ph = np.asarray(phase, np.float64)
+        k = np.arange(1, self.orders + 1).reshape((1, -1) + (1,) * (ph.ndim - 1))
+        a = self.coefficients[:, :, 0].reshape(self.coefficients.shape[:2] + (1,) * (ph.ndim - 1))
+        b = self.coefficients[:, :, 1].reshape(a.shape)
+        kp = k * ph[:, None]
+        return (a * np.cos(kp) + b * np.sin(kp)).sum(axis=1)
+
+    def correct_phase(self, phase):
+        """``phase - g(phase) - mean_offset``, wrapped to [0, 2 pi).
+
+        ``phase`` (F, ...) is measured phase less each measurement's
+        :attr:`deviations` (the ISP turns the phasors by them before the
+        denoise).
+        """
+        ph = np.asarray(phase, np.float64)
+        mean = self.mean_offset.reshape((-1,) + (1,) * (ph.ndim - 1))
+        out = np.mod(ph - self.cyclic_error(ph) - mean, 2 * np.pi)
+        out[out >= 2 * np.pi] = 0.0
+        return out
+
+    def save(self, path):
+        """Write an NPZ file (atomically); returns the path.
+
+        Examples
+        --------
+        >>> import numpy as np, tempfile, pathlib
+        >>> cal = ToFCalibration(np.array([1e8]), np.ones((1, 2)), np.zeros((1, 3, 2)),
+        ...                      (np.array([0, 0]), np.array([0, 2])), 1, (2, 4))
+        >>> with tempfile.TemporaryDirectory() as d:
+        ...     back = ToFCalibration.load(cal.save(pathlib.Path(d) / "cal.npz"))
+        >>> back.offsets.tolist(), back.shape
+        ([[1.0, 1.0]], (2, 4))
+        """
+        path = Path(path)
+        header = {"format": _FORMAT_TAG, "block": self.block, "shape": list(self.shape),
+                  "meta": _jsonable(self.meta)}
+        arrays = {"frequencies": self.frequencies, "offsets": self.offsets,
+                  "coefficients": self.coefficients, "rows": self.sites[0],
+                  "cols": self.sites[1], "header": np.array(json.dumps(header))}
+        if self.dark is not None:
+            arrays["dark"] = self.dark
+        buf = io.BytesIO()
+        np.savez_compressed(buf, **arrays)
+        atomic_write(path, buf.getvalue())
+        return path
+
+    @classmethod
+    def load(cls, path):
+        """Read a file written by :meth:`save` (ValueError naming ``path`` if it is not one)."""
+        path = Path(path)
+        arrays = read_npz(path, "path", required=("header",))   # bounded, no pickles
+        try:
+            header = json.loads(str(arrays.pop("header")))
+        except (ValueError, RecursionError) as exc:
+            raise ValueError(f"path: {path} is not a ToF calibration file ({exc})") from None
+        if not isinstance(header, dict) or header.get("format") != _FORMAT_TAG:
+            raise ValueError(f"path: {path} is not a ToF calibration file")
+        try:
+            meta = header.get("meta", {})
+            return cls(arrays["frequencies"], arrays["offsets"], arrays["coefficients"],
+                       (arrays["rows"], arrays["cols"]), int(header["block"]),
+                       tuple(header["shape"]), arrays.get("dark"),
+                       meta if isinstance(meta, dict) else {})
+        except KeyError as exc:
+            raise ValueError(f"path: {path} lacks {exc} (not a ToF calibration file)") from None
+        except (TypeError, ValueError) as exc:
+            raise ValueError(f"path: {path} is a damaged ToF calibration file "
+                             f"({type(exc).__name__}: {str(exc)[:200]})") from None
+
+    def __repr__(self):
+        mhz = ", ".join(f"{f / 1e6:g}" for f in self.frequencies)
+        rms = self.meta.get("fit_rms_m")
+        extra = f", fit RMS {1e3 * max(rms):.2f} mm" if rms else ""
+        return (f"ToFCalibration({self.sites[0].size} measurements, {mhz} MHz, "
+                f"{self.orders} harmonics{', dark' if self.dark is not None else ''}{extra})")
+
+
+def _jsonable(meta):
+    out = {}
+    for k, v in meta.items():
+        if isinstance(v, (str, int, float, bool)) or v is None:
+            out[k] = v
+        elif isinstance(v, (list, tuple, np.ndarray)):
+            out[k] = np.asarray(v).tolist()
+    return out
+
+
+def _as_taps(item, name):
+    if isinstance(item, RawFrame):
+        if item.tof is None:
+            raise ValueError(f"{name}: a frame holds no ToF taps")
+        item = item.tof
+    if not isinstance(item, ToFTaps):
+        raise TypeError(f"{name}: expected ToFTaps or RawFrames with taps, got "
+                        f"{type(item).__name__}")
+    return item
+
+
+def _dark_offsets(dark, first):
+    frames = [dark] if isinstance(dark, (ToFTaps, RawFrame)) else list(dark)
+    if not frames:
+        raise ValueError("dark: no frames")
+    acc = np.zeros((4, first.n_sites))
+    for t in frames:
+        t = _as_taps(t, "dark")
+        if t.taps.shape[1:] != first.taps.shape[1:] or t.block != first.block:
+            raise ValueError(f"dark: taps of shape {t.taps.shape} do not match the sweep's "
+                             f"{first.taps.shape}")
+        acc += np.asarray(t.taps, np.float64).mean(axis=0) - t.sensor.black_level
+    return acc / len(frames)
+
+
+def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
+    """Fit the cyclic error and the per-measurement phase offsets from a flat-wall sweep.
+
+    Parameters
+    ----------
+    sweep : sequence of ToFTaps or RawFrame
+        Frames of a flat wall (taps of one sensor: the same frequencies and Z
+        measurements), e.g. ``simulate_tof`` of walls at ``distances``. The
+        distances should sweep at least one wrap range of the lowest
+        frequency (``c / (2 f_min)``, 1.874 m at 80 MHz) in steps small
+        enough to sample ``2 * orders + 1`` phases per period.
+    distances : sequence
+        The true distance of every frame: one number (m) for a wall seen
+        square-on, or an array of shape (n,) per frame (e.g. the line-of-sight
+        distance of every measurement).
+    orders : int
+        K, the harmonics of the cyclic-error series (8, 1..32).
+    dark : ToFTaps or sequence of them, optional
+        Frames with the laser off (same sensor): the mean of every tap minus
+        the black level is stored and subtracted first.
+    iterations : int
+        Alternations of the fit (4, 1..50).
+
+    Returns
+    -------
+    ToFCalibration
+
+    Raises
+    ------
+    ValueError, TypeError
+        An empty or mismatched sweep, distances of the wrong count or shape
+        or not > 0, or frames with too few usable measurements.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rgbz_fast.simulation import Scene, ToFSensor, simulate_tof
+    >>> sensor = ToFSensor(delay_ps=50.0, harmonics=((3, 0.05, 0.0),))
+    >>> ds = np.linspace(0.6, 2.6, 24)
+    >>> sweep = [simulate_tof(Scene(np.full((8, 8, 3), 0.5), depth=np.full((8, 8), d)), "mask2",
+    ...                       sensor, noise=False) for d in ds]
+    >>> cal = calibrate(sweep, ds)
+    >>> cal.offsets.shape, bool(np.allclose(cal.offsets[1], 2 * np.pi * 100e6 * 50e-12, atol=1e-2))
+    ((3, 4), True)
+    """
+    try:
+        frames = list(sweep)
+    except TypeError:
+        raise TypeError(f"sweep: expected a sequence of ToFTaps, got {type(sweep).__name__}") \
+            from None
+    if len(frames) < 2:
+        raise ValueError(f"sweep: expected at least 2 frames, got {len(frames)}")
+    frames = [_as_taps(t, "sweep") for t in frames]
+    first = frames[0]
+    for t in frames[1:]:
+        if (t.taps.shape != first.taps.shape or t.block != first.block
+                or not np.array_equal(t.frequencies, first.frequencies)
+                or not all(np.array_equal(a, b) for a, b in zip(t.sites, first.sites))):
+            raise ValueError("sweep: every frame must hold the same frequencies and Z "
+                             "measurements")
+    try:
+        dists = list(distances)
+    except TypeError:
+        raise TypeError(f"distances: expected one distance per frame, got {distances!r}") \
+            from None
+    if len(dists) != len(frames):
+        raise ValueError(f"distances: expected {len(frames)} values (one per frame), got "
+                         f"{len(dists)}")
+    n = first.n_sites
+    truth = np.empty((len(frames), n))
+    for k, d in enumerate(dists):
+        try:
+            v = np.broadcast_to(np.asarray(d, np.float64), (n,))
+        except ValueError:
+            raise ValueError(f"distances: entry {k} has shape {np.shape(d)}; expected a number "
+                             f"or shape ({n},)") from None
+        if not (np.all(np.isfinite(v)) and np.all(v > 0)):
+            raise ValueError(f"distances: entry {k} holds values that are not > 0")
+        truth[k] = v
+    orders = check_int(orders, "orders", lo=1, hi=32)
+    iterations = check_int(iterations, "iterations", lo=1, hi=50)
+    positions = np.unique(np.round(truth, 9), axis=0).shape[0]
+    if positions < 2 * orders + 1:
+        raise ValueError(f"distances: {positions} distinct wall positions cannot fit {orders} "
+                         f"harmonics (2 * orders + 1 = {2 * orders + 1} phases are needed); "
+                         "add positions or lower orders")
+    dark_off = _dark_offsets(dark, first) if dark is not None else None
+
+    f = first.frequencies.reshape(-1, 1)
+    F = f.shape[0]
+    meas = np.empty((len(frames), F, n))
+    weight = np.empty_like(meas)
+    for k, t in enumerate(frames):
+        taps = np.asarray(t.taps, np.float64)
+        sat = np.asarray(t.saturated, bool) | (taps.max(axis=(0, 1)) >= t.white_level)
+        if dark_off is not None:
+            taps = taps - dark_off[None]
+        i = taps[:, 0] - taps[:, 2]
+        q = taps[:, 3] - taps[:, 1]
+        var = 2.0 * tap_variance(taps.mean(axis=1), t.sensor)
+        power = (i * i + q * q) / var
+        meas[k] = np.mod(np.arctan2(q, i), 2 * np.pi)
+        w = np.where(power >= _MIN_SNR ** 2, power, 0.0)
+        w[:, sat] = 0.0
+        weight[k] = w
+    if not np.all(weight.sum(axis=0) > 0):
+        bad = int(np.sum(np.any(weight.sum(axis=0) == 0, axis=0)))
+        raise ValueError(f"sweep: {bad} of {n} Z measurements have no usable frame (saturated "
+                         f"or SNR < {_MIN_SNR:g} in every frame); move the wall or raise the "
+                         "signal")
+    true_phase = np.mod(4 * np.pi * f[None] * truth[:, None] / SPEED_OF_LIGHT, 2 * np.pi)
+    err = np.angle(np.exp(1j * (meas - true_phase)))                       # (frames, F, n)
+    offsets = np.zeros((F, n))
+    coef = np.zeros((F, orders, 2))
+    kk = np.arange(1, orders + 1)
+    def deviation(o):
+        mean = np.angle(np.exp(1j * o).sum(axis=1, keepdims=True))
+        return np.angle(np.exp(1j * (o - mean)))
+
+    for _ in range(iterations):
+        # offsets: weighted circular mean over the frames of e - g(phi - delta)
+        g = _series(coef, meas - deviation(offsets)[None], kk)
+        offsets = np.angle((weight * np.exp(1j * (err - g))).sum(axis=0))
+        # the cyclic error: weighted least squares of e - o on the Fourier basis of
+        # phi - delta, per frequency
+        ph = meas - deviation(offsets)[None]
+        resid = np.angle(np.exp(1j * (err - offsets[None])))
+        for fi in range(F):
+            x = ph[:, fi].reshape(-1)
+            y = resid[:, fi].reshape(-1)
+            w = weight[:, fi].reshape(-1)
+            basis = np.concatenate([np.cos(np.outer(x, kk)), np.sin(np.outer(x, kk))], axis=1)
+            lhs = basis.T @ (basis * w[:, None])
+            rhs = basis.T @ (w * y)
+            sol = np.linalg.lstsq(lhs, rhs, rcond=None)[0]
+            coef[fi, :, 0] = sol[:orders]
+            coef[fi, :, 1] = sol[orders:]
+    g = _series(coef, meas - deviation(offsets)[None], kk)
+    resid = np.angle(np.exp(1j * (err - offsets[None] - g)))
+    rms = np.sqrt((weight * resid ** 2).sum(axis=(0, 2)) / weight.sum(axis=(0, 2)))
+    meta = {"frames": len(frames), "orders": orders, "fit_rms_rad": rms.tolist(),
+            "fit_rms_m": (rms * SPEED_OF_LIGHT / (4 * np.pi * f[:, 0])).tolist()}
+    return ToFCalibration(first.frequencies.copy(), offsets, coef, first.sites, first.block,
+                          first.shape, dark_off, meta)
+
+
+def _series(coef, phase, kk):
+    """``sum_k a_k cos(k phi) + b_k sin(k phi)`` for phases (frames, F, n) and coef (F, K, 2)."""
+    kp = kk[None, None, :, None] * phase[:, :, None, :]
+    a = coef[None, :, :, 0, None]
+    b = coef[None, :, :, 1, None]
+    return (a * np.cos(kp) + b * np.sin(kp)).sum(axis=2)
