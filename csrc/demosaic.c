@@ -106,7 +106,7 @@ DM_TEMPLATE(float, f32, double, f64)
 DM_TEMPLATE(double, f64, float, f32)
 DM_TEMPLATE(double, f64, double, f64)
 
-int RGBZ_SYM(rgbz_demosaic_malvar)(int in_type, int out_type, const void *src, void *dst,
+int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                                    ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
                                    int mode, int workers)
 {

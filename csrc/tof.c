@@ -174,7 +174,7 @@ TOF_DEMOD(f64, RGBZ_T_F64)
 #define TOF_BLOCK 128
 #define TOF_NBLOCKS(N) (((N) + TOF_BLOCK - 1) / TOF_BLOCK)
 
-int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+int rgbz_tof_demodulate(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                                   double *phase, double *amp, double *offset, int workers)
 {
     (void)workers;                                     /* unused without OpenMP */
@@ -349,7 +349,7 @@ static void tof_mark_bad(const int *ok, ptrdiff_t nb, double *depth, double *res
     }
 }
 
-int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
+int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
                               const double *weights, double max_range, double *depth,
                               double *residual, int32_t *wraps, int workers)
 {
@@ -438,7 +438,7 @@ TOF_DEPTH(u16, RGBZ_T_U16)
 TOF_DEPTH(f32, RGBZ_T_F32)
 TOF_DEPTH(f64, RGBZ_T_F64)
 
-int RGBZ_SYM(rgbz_tof_depth)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+int rgbz_tof_depth(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                              const double *freqs, const double *weights, double max_range,
                              double *depth, double *residual, int32_t *wraps, double *phase,
                              double *amp, double *offset, int workers)
@@ -465,7 +465,7 @@ int RGBZ_SYM(rgbz_tof_depth)(int in_type, const void *taps, ptrdiff_t F, ptrdiff
     return RGBZ_OK;
 }
 
-int RGBZ_SYM(rgbz_tof_depth_iq)(const double *i_comp, const double *q_comp, ptrdiff_t F,
+int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
                                 ptrdiff_t N, const double *freqs, const double *weights,
                                 double max_range, double *depth, double *residual,
                                 int32_t *wraps, double *phase, double *amp, int workers)

@@ -34,7 +34,7 @@ import sys
 
 import numpy as np
 
-from .. import _kernels
+from .. import _kernels_count
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
 from ..reconstruction import PRECISIONS, ReconstructParams, reconstruct
@@ -45,8 +45,8 @@ from ._common import CliError, check_out_dir, common_parser, run_main, write_jso
 __all__ = ["CATEGORIES", "TABLE1", "TABLE1_CATEGORIES", "count_operations", "opcount_table",
            "opcount_report", "count_tof_operations", "main"]
 
-#: counter categories, in the order of csrc/rgbz.h (RGBZ_OP_*)
-CATEGORIES = ("add", "mul", "div", "exp", "abs", "cmp", "sqrt", "atan2")
+#: counter categories, in the order of the C enum rgbz_op (csrc/rgbz.h, RGBZ_OP_*)
+CATEGORIES = tuple(sorted(_kernels_count.OP_CATEGORIES, key=_kernels_count.OP_CATEGORIES.get))
 #: the categories Table 1 reports
 TABLE1_CATEGORIES = ("add", "mul", "div", "exp")
 #: target colour groups (Table 1 splits Mask2 into green and red/blue)
@@ -144,14 +144,15 @@ def _site_counts(data, pattern, method, precision, kw, ablate_beta=False, fast_p
     site_plans = np.ascontiguousarray(plans[site_plan])
     full_map = np.full(rows * cols, -1, np.int32)
     full_map[yy * cols + xx] = np.arange(yy.size, dtype=np.int32)
-    counts = np.zeros(yy.size * _kernels.NOPS, np.uint64)
+    counts = np.zeros(yy.size * _kernels_count.NOPS, np.uint64)
     dst = np.empty_like(data)
     prec_code, exp_code = _kernel_codes(precision, kw)
-    _kernels.reconstruct(data, dst, prec_code, rows, cols, full_map,
-                         site_plans.view(np.uint8).reshape(-1), int(yy.size),
-                         float(kw["sigma_floor"]), float(kw["sigma_rel"]), float(kw["edge_ratio"]),
-                         float((1 << kw["bit_depth"]) - 1), exp_code, 1, opcounts=counts)
-    counts = counts.reshape(yy.size, _kernels.NOPS)
+    _kernels_count.reconstruct(data, dst, prec_code, rows, cols, full_map,
+                               site_plans.view(np.uint8).reshape(-1), int(yy.size),
+                               float(kw["sigma_floor"]), float(kw["sigma_rel"]),
+                               float(kw["edge_ratio"]), float((1 << kw["bit_depth"]) - 1),
+                               exp_code, 1, opcounts=counts)
+    counts = counts.reshape(yy.size, _kernels_count.NOPS)
     if fast_path and not ablate_beta and _uses_mask1_fast(pattern, method, kw):
         counts = (counts.astype(np.int64)
                   + _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw))
@@ -176,7 +177,7 @@ def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
     phase_map, plans, n = _recon._plans_for(pattern, method, kw["sg_mode"], kw["domain"])
     P, Q = pattern.period
     rows, cols = data.shape
-    out = np.zeros((yy.size, _kernels.NOPS), np.int64)
+    out = np.zeros((yy.size, _kernels_count.NOPS), np.int64)
     for i, (y, x) in enumerate(zip(yy, xx)):
         # a 6x6 window starting on a tile boundary (so that the tile phase, and the kernel's
         # phase map, stay those of the frame) with the site 2 or 3 rows/cols in: its only
@@ -192,13 +193,13 @@ def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
         win = np.ascontiguousarray(data[np.ix_(ri, ci)])
         tot = []
         for fast in (0, 1):
-            c = np.zeros(n * _kernels.NOPS, np.uint64)
+            c = np.zeros(n * _kernels_count.NOPS, np.uint64)
             prec_code, exp_code = _kernel_codes(precision, kw)
-            _kernels.reconstruct(win, np.empty_like(win), prec_code, P, Q,
-                                 phase_map, plans, n, float(kw["sigma_floor"]),
-                                 float(kw["sigma_rel"]), float(kw["edge_ratio"]),
-                                 float((1 << kw["bit_depth"]) - 1), exp_code, 1,
-                                 opcounts=c, mask1_fast=fast)
+            _kernels_count.reconstruct(win, np.empty_like(win), prec_code, P, Q,
+                                       phase_map, plans, n, float(kw["sigma_floor"]),
+                                       float(kw["sigma_rel"]), float(kw["edge_ratio"]),
+                                       float((1 << kw["bit_depth"]) - 1), exp_code, 1,
+                                       opcounts=c, mask1_fast=fast)
             tot.append(c.reshape(n, -1).sum(axis=0).astype(np.int64))
         out[i] = tot[1] - tot[0]
     return out
@@ -286,15 +287,15 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
 def count_tof_operations(n_sites=64, n_freqs=3, seed=0):
     """Operations of the four-tap ToF demodulation per measurement and frequency.
 
-    Runs the counting twin of ``_kernels.tof_demodulate`` on random taps.
+    Runs ``_kernels_count.tof_demodulate`` on random taps.
     Returns ``{category: count}``, or None when this build does not count the
     demodulation (an older ``_kernels`` ignores its ``opcounts`` argument).
     """
     taps = np.random.default_rng(seed).integers(0, 2048, (n_freqs, 4, n_sites)).astype(np.uint16)
     phase, amp, off = (np.empty((n_freqs, n_sites)) for _ in range(3))
-    counts = np.zeros(_kernels.NOPS, np.uint64)
+    counts = np.zeros(_kernels_count.NOPS, np.uint64)
     try:
-        _kernels.tof_demodulate(taps, phase, amp, off, 1, opcounts=counts)
+        _kernels_count.tof_demodulate(taps, phase, amp, off, 1, opcounts=counts)
     except (TypeError, ValueError, RuntimeError):
         return None
     if not counts.any():
