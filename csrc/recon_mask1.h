@@ -85,10 +85,17 @@ enum { RGBZ_M1_TAPS(RGBZ_M1_TAP_ENUM) RGBZ_M1_NTAPS };
     X(z0p1, p2p1, M1_S | M1_SE) X(m1z0, m1m2, M1_W | M1_NW) X(p1z0, p1m2, M1_W | M1_SW)  \
     X(m1z0, m1p2, M1_E | M1_NE) X(p1z0, p1p2, M1_E | M1_SE)
 
+/* SG with sg_mode "combined": the semi-gradients' pairs, then EDILine's */
+#define RGBZ_M1_COMBINED_PAIRS(X) RGBZ_M1_SG_PAIRS(X) RGBZ_M1_LINE_PAIRS(X)
+
 #define RGBZ_M1_PAIR_A(a, b, g) M1_##a,
 #define RGBZ_M1_PAIR_B(a, b, g) M1_##b,
 #define RGBZ_M1_PAIR_G(a, b, g) g,
 #define RGBZ_M1_PAIR_N(a, b, g) +1
+/* the pair fields of a plan from a pair list */
+#define RGBZ_M1_PAIRS(LIST)                                                              \
+    .n_pairs = 0 LIST(RGBZ_M1_PAIR_N), .pair_a = {LIST(RGBZ_M1_PAIR_A)},                  \
+    .pair_b = {LIST(RGBZ_M1_PAIR_B)}, .pair_gmask = {LIST(RGBZ_M1_PAIR_G)}
 
 /* alpha (eq. 3) of a diagonal neighbour: exp(-(1 + 1) / 2) = exp(-1), the double
    _plans.py computes with math.exp */
@@ -115,20 +122,14 @@ static const rgbz_plan rgbz_mask1_bi = {
 static const rgbz_plan rgbz_mask1_edi_central = {
     RGBZ_M1_COMMON, .method = RGBZ_M_EDI_CENTRAL, .n_taps = RGBZ_M1_NTAPS,
     .use_ab = 1, .use_grad = 1, .gamma_mask = M1_D1 | M1_D2,
-    .n_pairs = 0 RGBZ_M1_CENTRAL_PAIRS(RGBZ_M1_PAIR_N),
-    .pair_a = {RGBZ_M1_CENTRAL_PAIRS(RGBZ_M1_PAIR_A)},
-    .pair_b = {RGBZ_M1_CENTRAL_PAIRS(RGBZ_M1_PAIR_B)},
-    .pair_gmask = {RGBZ_M1_CENTRAL_PAIRS(RGBZ_M1_PAIR_G)},
+    RGBZ_M1_PAIRS(RGBZ_M1_CENTRAL_PAIRS),
     .group_scale = {[8] = 1.0, [9] = 1.0, [10] = 1.0 / 3.0, [11] = 1.0 / 3.0},
 };
 
 static const rgbz_plan rgbz_mask1_edi_line = {
     RGBZ_M1_COMMON, .method = RGBZ_M_EDI_LINE, .n_taps = RGBZ_M1_NTAPS,
     .use_ab = 1, .use_grad = 1, .gamma_mask = M1_D1 | M1_D2,
-    .n_pairs = 0 RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_N),
-    .pair_a = {RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_A)},
-    .pair_b = {RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_B)},
-    .pair_gmask = {RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_G)},
+    RGBZ_M1_PAIRS(RGBZ_M1_LINE_PAIRS),
     .group_scale = {[8] = 1.0 / 7.0, [9] = 1.0 / 7.0, [10] = 1.0 / 7.0, [11] = 1.0 / 7.0},
 };
 
@@ -136,10 +137,7 @@ static const rgbz_plan rgbz_mask1_edi_line = {
 static const rgbz_plan rgbz_mask1_sg = {
     RGBZ_M1_COMMON, .method = RGBZ_M_SG, .n_taps = RGBZ_M1_NTAPS, .use_sg = 1,
     .gamma_mask = 0xff, RGBZ_M1_SG_COVER,
-    .n_pairs = 0 RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_N),
-    .pair_a = {RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_A)},
-    .pair_b = {RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_B)},
-    .pair_gmask = {RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_G)},
+    RGBZ_M1_PAIRS(RGBZ_M1_SG_PAIRS),
     .group_scale = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5},
 };
 
@@ -147,10 +145,7 @@ static const rgbz_plan rgbz_mask1_sg = {
 static const rgbz_plan rgbz_mask1_sg_combined = {
     RGBZ_M1_COMMON, .method = RGBZ_M_SG, .n_taps = RGBZ_M1_NTAPS,
     .use_ab = 1, .use_grad = 1, .use_sg = 1, .gamma_mask = 0xfff, RGBZ_M1_SG_COVER,
-    .n_pairs = 0 RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_N) RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_N),
-    .pair_a = {RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_A) RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_A)},
-    .pair_b = {RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_B) RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_B)},
-    .pair_gmask = {RGBZ_M1_SG_PAIRS(RGBZ_M1_PAIR_G) RGBZ_M1_LINE_PAIRS(RGBZ_M1_PAIR_G)},
+    RGBZ_M1_PAIRS(RGBZ_M1_COMBINED_PAIRS),
     .group_scale = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5,
                     1.0 / 7.0, 1.0 / 7.0, 1.0 / 7.0, 1.0 / 7.0},
 };

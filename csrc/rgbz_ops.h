@@ -54,32 +54,25 @@ extern uint64_t *rgbz_opc_cur;
 #define RGBZ_INLINE static inline
 #endif
 
-/* index of the lowest set bit of m (m != 0) */
+/* rgbz_ctz: the index of the lowest set bit of m (m != 0); rgbz_popcount: the number of
+   set bits of m */
+#if defined(__GNUC__) || defined(__clang__)
+static inline int rgbz_ctz(uint32_t m) { return __builtin_ctz(m); }
+static inline int rgbz_popcount(uint32_t m) { return __builtin_popcount(m); }
+#else
 static inline int rgbz_ctz(uint32_t m)
 {
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_ctz(m);
-#else
     int i = 0;
-    while (!(m & 1u)) {
-        m >>= 1;
-        i++;
-    }
+    for (; !(m & 1u); m >>= 1) i++;
     return i;
-#endif
 }
-
-/* the number of set bits of m */
 static inline int rgbz_popcount(uint32_t m)
 {
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_popcount(m);
-#else
     int c = 0;
     for (; m; m &= m - 1) c++;
     return c;
-#endif
 }
+#endif
 
 /*
  * Vector-width dispatch of the hottest functions: on x86-64 with GCC and glibc, a
@@ -101,16 +94,21 @@ static inline int rgbz_popcount(uint32_t m)
 #endif
 
 /* The OpenMP loop over rows or blocks: RGBZ_PARALLEL_FOR before a `for`, on `nth` threads,
-   a local the caller sets to rgbz_threads(workers) (workers <= 0: the OpenMP default). */
+   a local the caller sets to rgbz_threads(workers) (workers <= 0: the OpenMP default).
+   (A _Pragma string is not macro-expanded, so the names nth and bad are fixed.) */
 #ifdef _OPENMP
 #include <omp.h>
 #define RGBZ_PARALLEL_FOR _Pragma("omp parallel for schedule(static) num_threads(nth)")
+/* the same, or-reducing a local int `bad` over the threads */
+#define RGBZ_PARALLEL_FOR_OR(bad) \
+    _Pragma("omp parallel for schedule(static) reduction(|:bad) num_threads(nth)")
 static inline int rgbz_threads(int workers)
 {
     return workers > 0 ? workers : omp_get_max_threads();
 }
 #else
 #define RGBZ_PARALLEL_FOR
+#define RGBZ_PARALLEL_FOR_OR(bad)
 static inline int rgbz_threads(int workers)
 {
     (void)workers;
