@@ -1,26 +1,27 @@
 /*
  * recon_loop.template.h -- the frame loop of the missing-colour reconstruction
- * (paper section 4; recon_core.template.h holds the arithmetic) for one input
- * element type and one precision.
+ * (paper section 4, eqs. 2-19 and Shi et al.'s 1a-1e: recon_core.template.h
+ * holds the arithmetic) for one input element type and one precision.
  *
  * One pass over the frame; rows are split across OpenMP threads. In a row, the
  * sites of one tile column share a plan: they are gathered in blocks of
- * RGBZ_BLK sites into tap-major arrays (v[t][j], recon_core.template.h), run
+ * RGBZ_BLK sites (v[t][j] = tap t of site j, recon_core.template.h), run
  * through the core, converted and stored.
  *
  * Memory layout: src and dst are rows x cols, C-contiguous, row stride cols
- * elements. A block whose kernel lies inside the frame is gathered with
- * direct strided loads (stride px, a compile-time 2 for 2x2 tiles); a block
- * near the left or right border through the column map (colmap[x + rx] = the
- * column x moved back into the frame by whole periods, so that a tap keeps its
- * colour); rows likewise through rgbz_extend.
+ * elements. Inside the frame a block is gathered as strided streams (stride
+ * px, a compile-time 2 for 2x2 tiles; rgbz_sites says how taps share them);
+ * a block near the left or right border tap by tap through the column map
+ * (colmap[x + rx] = the column x moved back into the frame by whole periods,
+ * so that a tap keeps its colour); rows likewise through rgbz_extend.
  *
  * Mask1 (params->mask1_fast): the interior sites of the Z rows (two rows and
  * columns from the border) run the compile-time plan of recon_mask1.h, the
  * other sites the plan of _plans.py, as they always have (recon_mask1.h says
  * why the two must stay apart).
  *
- * Template parameters, #defined by the includer (recon.c) and #undefined after:
+ * Template parameters, #defined by the includer (the end of recon_core.template.h, once
+ * per element type) and #undefined after:
  *   IN_T       the element type of the frames: uint8_t, uint16_t, float, double
  *   IS         its suffix: u8, u16, f32, f64
  *   IN_IS_INT  1 for the integer types (results rounded half up), else 0

@@ -1,7 +1,9 @@
 /*
- * rgbz_ops.h -- what every kernel file shares: the counted arithmetic macros,
- * the fast exponential of eq. 7, and the compiler-specific helpers, each behind
- * a test of the compiler with a portable fallback.
+ * rgbz_ops.h -- what every kernel file shares: the counted arithmetic macros
+ * (the operation counts of the paper's Table 1), the fast exponential of the
+ * gamma factors (eq. 7), the template name pasting, and the compiler-specific
+ * helpers, each behind a test of the compiler with a portable fallback. No
+ * arrays here: the memory layouts are in the kernel files.
  *
  * Counting: in the normal build every macro is the plain operation. Built with
  * -DRGBZ_COUNT_OPS (the library of rgbz_fast._kernels_count, behind
@@ -126,9 +128,11 @@ static inline int rgbz_threads(int workers)
  * [-87, 0] (float) and [-708, 0] (double) in tests/test_kernels.py
  * (test_fast_exp_against_libm): below 3e-7 in float, 1e-8 in double (the
  * figures _reconstruct.reconstruct documents; docs/tradeoff.md measures what it
- * changes in the images). Results that would be subnormal are flushed to 0
- * (libm returns them); exactly 1 at 0. NaN gives 0 (no NaN reaches the integer
- * conversion, which would be undefined behaviour: docs/robustness.md, B10).
+ * changes in the images). x <= -708 (double) or <= -87 (float) gives 0: the
+ * subnormal results and the last sliver of normal ones (exp(-708) = 3.3e-308,
+ * expf(-87) = 1.6e-38) are flushed (libm returns them). Exactly 1 at 0. NaN
+ * gives 0 (no NaN reaches the integer conversion, which would be undefined
+ * behaviour: docs/robustness.md, B10).
  */
 static inline double rgbz_fast_exp_d(double x)
 {

@@ -1,6 +1,9 @@
 /*
  * tof.c -- indirect time-of-flight: four-tap demodulation and multi-frequency
- * phase unwrapping at the Z sites.
+ * phase unwrapping at the Z sites (the paper's i-ToF sensor and ISP models,
+ * section 5.1.2 and 5.2: four shutters 90 degrees apart, a set of three
+ * modulation frequencies against phase wrapping; the paper numbers no equation
+ * for them, the formulas are these).
  *
  * Tap convention (rgbz_fast.simulation, docs/guide/sensor.md): for frequency f and tap
  * k = 0..3, A_k = offset + a*cos(phi + k*pi/2) (plus the black level, which
@@ -9,8 +12,9 @@
  *     amplitude = sqrt(I^2 + Q^2) / 2,  offset = (A0 + A1 + A2 + A3) / 4,
  *     distance = c * phi / (4 * pi * f)  (modulo c / (2 f)).
  *
- * Layout: taps (F, 4, N) row-major, element type u16, f32 or f64; outputs
- * (F, N) float64.
+ * Layout: taps (F, 4, N) row-major, element type u16, f32 or f64 (tof.template.h,
+ * once per type); outputs (F, N) or (N,) float64. Work is done in blocks of
+ * TOF_BLOCK sites, each block's scratch in L1, blocks split across threads.
  *
  * Unwrapping: brute force over the wrap counts w = 0 .. nwrap-1 of the
  * frequency with the longest ambiguity interval A = c / (2 f_base) (nwrap =
@@ -29,8 +33,9 @@
  * compare them bit for bit from the same phases).
  *
  * rgbz_tof_depth fuses the two stages (taps -> phase, amplitude, offset,
- * depth, residual, wrap count in one pass per site, no intermediate arrays);
- * rgbz_tof_depth_iq does the same from averaged phasors (I, Q).
+ * depth, residual, wrap count in one pass over the blocks, no frame-size
+ * intermediate array); rgbz_tof_depth_iq does the same from averaged phasors
+ * (I, Q).
  */
 /* No FP trap is ever enabled here, so GCC may compute both arms of a `?:` and
    vectorise the site loops (its default -ftrapping-math forbids that; clang's

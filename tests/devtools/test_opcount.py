@@ -1,5 +1,5 @@
 """Operation counts of the counting build against numbers derived by hand from
-csrc/recon_site.h, and the reading of the paper's Table 1."""
+csrc/recon_core.template.h, and the reading of the paper's Table 1."""
 
 from __future__ import annotations
 
@@ -62,7 +62,7 @@ def test_bilinear_counts_by_hand(pattern, precision):
 
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_bi_counts_by_hand(pattern):
-    # plan interpreter (recon_site.h): beta (eq. 4): n(n-1)/2 |c_k - c_m| (one sub + one abs
+    # the plans of _plans.py: beta (eq. 4): n(n-1)/2 |c_k - c_m| (one sub + one abs
     # each), each added to both S_k and S_m (n(n-1) adds); weights alpha_k / S_k (n
     # divisions); den: n-1 adds; num: n-1 subs, n-1 muls, n-1 adds; result c0 + num/den:
     # 1 add, 1 div. BI never falls back (alpha/S > 0): the counts do not depend on the data.

@@ -245,8 +245,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
         Count on this frame instead (e.g. a mosaicked natural image).
     path : {"auto", "generic"}
         ``"auto"``: the code :func:`rgbz_fast.reconstruct` runs (the Mask1
-        fast path of csrc/recon_mask1.h where it applies); ``"generic"``: the
-        plan interpreter of csrc/recon_site.h everywhere.
+        fast path, the constant plans of csrc/recon_mask1.h, where it applies);
+        ``"generic"``: the plans of ``_plans.py`` everywhere.
     **reconstruct_kwargs
         ``bit_depth``, ``sigma_floor``, ``sigma_rel``, ``edge_ratio``,
         ``sg_mode``, ``exp``, ``domain`` as for :func:`rgbz_fast.reconstruct`.
@@ -288,8 +288,8 @@ def count_tof_operations(n_sites=64, n_freqs=3, seed=0):
     """Operations of the four-tap ToF demodulation per measurement and frequency.
 
     Runs ``_kernels_count.tof_demodulate`` on random taps.
-    Returns ``{category: count}``, or None when this build does not count the
-    demodulation (an older ``_kernels`` ignores its ``opcounts`` argument).
+    Returns ``{category: count}``, or None when the counting module does not
+    count the demodulation.
     """
     taps = np.random.default_rng(seed).integers(0, 2048, (n_freqs, 4, n_sites)).astype(np.uint16)
     phase, amp, off = (np.empty((n_freqs, n_sites)) for _ in range(3))
@@ -432,7 +432,8 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "×ratio. Mask2 'red/blue' is Table 1's first number, 'green' its second. abs and "
            "cmp are counted separately (Table 1 has no such rows); 'add w/o β' leaves out the "
            "intensity factor of eq. 4. path: the code reconstruct() runs, the Mask1 fast path "
-           "(csrc/recon_mask1.h) or the plan interpreter (csrc/recon_site.h).")
+           "(csrc/recon_mask1.h) or the plan interpreter (_plans.py), one C core "
+           "(csrc/recon_core.template.h).")
 
 
 def main(argv=None):
