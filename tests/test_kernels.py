@@ -152,3 +152,21 @@ def test_fast_exp_against_libm():
         out = np.empty_like(x)
         _kernels.fast_exp(x, out)
         assert out.tolist() == [1.0, 0.0, 0.0, 0.0, 0.0]
+
+
+# -- the type stub ------------------------------------------------------------------------------
+
+def test_stub_lists_exactly_the_public_names_of_the_module():
+    # src/rgbz_fast/_kernels.pyi is written by hand: every public function, constant and enum
+    # of the compiled module once, and nothing it does not have
+    import ast
+    from pathlib import Path
+
+    tree = ast.parse((Path(rz.__file__).parent / "_kernels.pyi").read_text())
+    stub = [n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))]
+    stub += [n.target.id for n in tree.body if isinstance(n, ast.AnnAssign)]
+    assert len(stub) == len(set(stub)), sorted(n for n in stub if stub.count(n) > 1)
+    public = {n for n in dir(_kernels) if not n.startswith("_")
+              and getattr(getattr(_kernels, n), "__module__", "rgbz_fast._kernels")
+              in ("rgbz_fast._kernels", None)}
+    assert set(stub) == public
