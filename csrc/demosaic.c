@@ -6,7 +6,7 @@
  * demosaicing of Bayer-patterned color images", Proc. ICASSP 2004. The filter
  * coefficients (the paper's Fig. 2, as sums of the 5x5 neighbourhood) and the
  * per-site choice of filter are those of colour-demosaicing's
- * demosaicing_CFA_Bayer_Malvar2004, which tests/test_demosaic.py uses as the
+ * demosaicing_CFA_Bayer_Malvar2004, which tests/isp/test_demosaic.py uses as the
  * reference (to 1e-6).
  *
  * Layout: input rows x cols row-major; output rows x cols x 3 (R, G, B)

@@ -6,7 +6,7 @@
  *
  * Paper: V. Rebiere et al., "Color pixel reconstruction for a monolithic RGB-Z
  * CMOS imager", section 4; the choices made where it is vague are in
- * docs/interpretation.md, the rule near clipping in docs/raw.md:
+ * docs/guide/interpretation.md, the rule near clipping in docs/guide/raw.md:
  *   bilinear                 mean of the candidates
  *   bi (eqs. 2-5)            w = alpha * beta
  *   edi_central (eqs. 6-7)   w = alpha * beta * gamma(ori), central pairs (Fig. 7)
@@ -356,7 +356,7 @@ RGBZ_INLINE void RFN(rgbz_weigh)(const RFN(rgbz_weights) *f, int j, int ab, int 
 /*
  * Reconstruct the n sites of a block: v tap-major (see the top), r[j] the value of site j
  * before the conversion to the output type. clipped: NULL, or the clipped taps of each
- * site (the rule of docs/raw.md, "Near clipping": a difference between two clipped pixels
+ * site (the rule of docs/guide/raw.md, "Near clipping": a difference between two clipped pixels
  * is unknown and skipped -- gradient and semi-gradient pairs, the terms of beta, the
  * directions of edi_rows --; one between a clipped and an unclipped pixel is kept; a
  * clipped pixel is still used as a value). A site with no clipped tap gives exactly what

@@ -20,7 +20,7 @@
  *  - sum_from_zero = 0 and, for BI and the EDI methods, gamma_mask = the two
  *    diagonal gammas (every Mask1 candidate is diagonal; the vertical and
  *    horizontal gradients only set sigma): the operation counts of those kernels
- *    (docs/opcount.md, "fast" rows).
+ *    (docs/reports/opcount.md, "fast" rows).
  *
  * The Z rows and the two border rows and columns of a frame are not interior:
  * they run the plans of _plans.py through the column map (recon_loop.template.h).

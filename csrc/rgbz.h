@@ -65,7 +65,7 @@ typedef enum rgbz_method {
 typedef enum rgbz_exp_mode {
     RGBZ_EXP_LIBM = 0,   /* C library exp/expf: correctly rounded to ~1 ulp */
     RGBZ_EXP_FAST = 1,   /* range reduction + Taylor polynomial (rgbz_ops.h): relative error
-                            below 3e-7 in float32, 1e-8 in float64 (docs/tradeoff.md) */
+                            below 3e-7 in float32, 1e-8 in float64 (docs/reports/tradeoff.md) */
 } rgbz_exp_mode;
 
 /* border modes of the demosaic */
@@ -120,7 +120,7 @@ typedef struct {
     int32_t cd_n[RGBZ_MAX_CAND + 1], cd_tap[RGBZ_MAX_CAND + 1][RGBZ_MAX_CD];
     /* How the sums start, and which gammas are evaluated. Neither changes a result; both
        are how the two historical code paths did their arithmetic, kept so that the
-       operation counts (docs/opcount.md) are those of each path:
+       operation counts (docs/reports/opcount.md) are those of each path:
        sum_from_zero = 1 (Python plans): the group sums and the numerator of eq. 13 start
          at 0 and add every term; 0 (recon_mask1.h): they start with their first term;
        gamma_mask: the groups whose gamma (eq. 7) is evaluated. Python plans: every group

@@ -127,12 +127,12 @@ static inline int rgbz_threads(int workers)
  * exponent bits. Maximum relative error against libm, measured by a sweep over
  * [-87, 0] (float) and [-708, 0] (double) in tests/test_kernels.py
  * (test_fast_exp_against_libm): below 3e-7 in float, 1e-8 in double (the
- * figures _reconstruct.reconstruct documents; docs/tradeoff.md measures what it
+ * figures ReconstructParams documents; docs/reports/tradeoff.md measures what it
  * changes in the images). x <= -708 (double) or <= -87 (float) gives 0: the
  * subnormal results and the last sliver of normal ones (exp(-708) = 3.3e-308,
  * expf(-87) = 1.6e-38) are flushed (libm returns them). Exactly 1 at 0. NaN
  * gives 0 (no NaN reaches the integer conversion, which would be undefined
- * behaviour: docs/robustness.md, B10).
+ * behaviour: docs/reports/robustness.md, B10).
  */
 static inline double rgbz_fast_exp_d(double x)
 {

@@ -29,7 +29,7 @@
  * Per site, with y_i = (d_base - d_i) / a_i and r_i = A / a_i computed once:
  *     x = y_i + w r_i,  k_i = floor(x + 0.5),  residual_i = a_i (k_i - x),
  * so one candidate costs a multiply-add, a floor and a multiply-add per
- * frequency. rgbz_fast._tof_numpy holds the same arithmetic in NumPy (the tests
+ * frequency. rgbz_fast._devtools._numpy_tof holds the same arithmetic in NumPy (the tests
  * compare them bit for bit from the same phases).
  *
  * rgbz_tof_depth fuses the two stages (taps -> phase, amplitude, offset,
@@ -65,7 +65,7 @@
  * relative error 2.6e-18 in exact arithmetic); the low bits of pi/4, pi/2 and
  * pi enter before the final rounding. Measured against numpy.arctan2 on
  * random, tiny (1e-310) and huge (1e300) arguments: at most one ulp of the
- * result (tests/test_tof_isp.py::test_fast_atan2_matches_numpy_to_one_ulp).
+ * result (tests/tof/test_tof.py::test_fast_atan2_matches_numpy_to_one_ulp).
  * atan2(0, 0) = 0 (also for -0); infinite arguments give libm's values
  * (pi/4 for two infinities, 0 or pi/2 for one).
  */

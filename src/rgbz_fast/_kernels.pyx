@@ -7,7 +7,7 @@ output; this module only adapts buffers and maps status codes.
 The same source builds two extension modules (src/rgbz_fast/meson.build):
 ``rgbz_fast._kernels``, which every user loads, and ``rgbz_fast._kernels_count``,
 linked against the counting build of the C core (-DRGBZ_COUNT_OPS), which only
-:mod:`rgbz_fast.opcount` loads. Their Python interface is the same; the counting
+:mod:`rgbz_fast._devtools.opcount` loads. Their Python interface is the same; the counting
 module wants ``opcounts`` where the normal one refuses it.
 
 The enums of csrc/rgbz.h are ``cpdef enum`` classes here, and the name -> code

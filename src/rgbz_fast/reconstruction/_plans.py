@@ -215,7 +215,7 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
             plan["method"] = METHODS[method]
             plan["target"] = target
             # sums from 0, every gamma of a group with differences evaluated: the arithmetic
-            # whose operation counts docs/opcount.md reports (csrc/rgbz.h)
+            # whose operation counts docs/reports/opcount.md reports (csrc/rgbz.h)
             plan["sum_from_zero"] = 1
             taps: dict[tuple[int, int], int] = {}
 
