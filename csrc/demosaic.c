@@ -4,24 +4,25 @@
  *
  * H. S. Malvar, L. He, R. Cutler, "High-quality linear interpolation for
  * demosaicing of Bayer-patterned color images", Proc. ICASSP 2004. The filter
- * coefficients and the per-site choice of filter are those of
- * colour-demosaicing's demosaicing_CFA_Bayer_Malvar2004, which the tests use
- * as the reference (to 1e-6).
+ * coefficients (the paper's Fig. 2, as sums of the 5x5 neighbourhood) and the
+ * per-site choice of filter are those of colour-demosaicing's
+ * demosaicing_CFA_Bayer_Malvar2004, which tests/isp/test_demosaic.py uses as the
+ * reference (to 1e-6).
  *
  * Layout: input rows x cols row-major; output rows x cols x 3 (R, G, B)
  * row-major, interleaved. `phase` gives the colour of the 2x2 Bayer quad in
  * raster order (codes R=0, G=1, B=2), e.g. GRBG = {1, 0, 2, 1}.
- * Borders: mode 0 = "reflect" (scipy.ndimage's half-sample mirror, as the
- * reference), mode 1 = "period" (shift by whole periods, keeps the colour).
- * No clipping (the reference does not clip); the caller clips if it wants.
+ * Borders (rgbz_demosaic_mode): RGBZ_DM_REFLECT, scipy.ndimage's half-sample
+ * mirror (as the reference); RGBZ_DM_PERIOD, a shift by whole periods (keeps
+ * the colour). No clipping (the reference does not clip); the caller clips if
+ * it wants. Arithmetic in double; demosaic.template.h is the row loop, once per
+ * input and output type.
  */
 #include <stdlib.h>
 #include <string.h>
 #include <stdint.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 #include "rgbz.h"
+#include "rgbz_ops.h"
 
 static inline ptrdiff_t dm_reflect(ptrdiff_t i, ptrdiff_t n)
 {
@@ -40,79 +41,93 @@ static inline ptrdiff_t dm_period(ptrdiff_t i, ptrdiff_t n)
     return i;
 }
 
-#define DM_TEMPLATE(IN_T, IS, OUT_T, OS)                                                        \
-static void rgbz_malvar_##IS##_##OS(const IN_T *src, OUT_T *dst, ptrdiff_t rows, ptrdiff_t cols, \
-                                    const int32_t *phase, const ptrdiff_t *colmap, int mode,    \
-                                    int workers)                                                \
-{                                                                                               \
-    (void)workers;                                                                              \
-    DM_PARALLEL                                                                                 \
-    for (ptrdiff_t y = 0; y < rows; y++) {                                                      \
-        const IN_T *rp[5];                                                                      \
-        for (int d = -2; d <= 2; d++) {                                                         \
-            ptrdiff_t yy = mode ? dm_period(y + d, rows) : dm_reflect(y + d, rows);             \
-            rp[d + 2] = src + yy * cols;                                                        \
-        }                                                                                       \
-        const int32_t *ph = phase + 2 * (y & 1);                                                \
-        for (ptrdiff_t x = 0; x < cols; x++) {                                                  \
-            const ptrdiff_t *cm = colmap + x + 2;                                               \
-            /* P(dy, dx): pixel at offset (dy, dx) */                                           \
-            double c0 = (double)rp[2][cm[0]];                                                   \
-            double n4 = (double)rp[1][cm[0]] + (double)rp[3][cm[0]] + (double)rp[2][cm[-1]] +   \
-                        (double)rp[2][cm[1]];                                                   \
-            double far4 = (double)rp[0][cm[0]] + (double)rp[4][cm[0]] + (double)rp[2][cm[-2]] + \
-                          (double)rp[2][cm[2]];                                                 \
-            double diag = (double)rp[1][cm[-1]] + (double)rp[1][cm[1]] + (double)rp[3][cm[-1]] +\
-                          (double)rp[3][cm[1]];                                                 \
-            double hz2 = (double)rp[2][cm[-2]] + (double)rp[2][cm[2]];                          \
-            double vt2 = (double)rp[0][cm[0]] + (double)rp[4][cm[0]];                           \
-            double hz1 = (double)rp[2][cm[-1]] + (double)rp[2][cm[1]];                          \
-            double vt1 = (double)rp[1][cm[0]] + (double)rp[3][cm[0]];                           \
-            int ch = ph[x & 1];                                                                 \
-            double r, g, b;                                                                     \
-            if (ch == 1) {                                                                      \
-                /* green site: horizontal and vertical colour-difference filters */             \
-                double hv = (5 * c0 + 4 * hz1 - hz2 - diag + 0.5 * vt2) / 8;                    \
-                double vv = (5 * c0 + 4 * vt1 - vt2 - diag + 0.5 * hz2) / 8;                    \
-                g = c0;                                                                         \
-                int row_colour = ph[(x & 1) ^ 1]; /* R or B, the colour of this row */          \
-                if (row_colour == 0) { r = hv; b = vv; } else { b = hv; r = vv; }               \
-            } else {                                                                            \
-                double gg = (4 * c0 + 2 * n4 - far4) / 8;                                       \
-                double oo = (6 * c0 + 2 * diag - 1.5 * far4) / 8;                               \
-                g = gg;                                                                         \
-                if (ch == 0) { r = c0; b = oo; } else { b = c0; r = oo; }                       \
-            }                                                                                   \
-            OUT_T *o = dst + 3 * (y * cols + x);                                                \
-            o[0] = (OUT_T)r;                                                                    \
-            o[1] = (OUT_T)g;                                                                    \
-            o[2] = (OUT_T)b;                                                                    \
-        }                                                                                       \
-    }                                                                                           \
+static inline ptrdiff_t dm_extend(ptrdiff_t i, ptrdiff_t n, int mode)
+{
+    return mode == RGBZ_DM_PERIOD ? dm_period(i, n) : dm_reflect(i, n);
 }
 
-#ifdef _OPENMP
-#define DM_PARALLEL _Pragma("omp parallel for schedule(static) num_threads(workers > 0 ? workers : omp_get_max_threads())")
-#else
-#define DM_PARALLEL
-#endif
-
-DM_TEMPLATE(uint8_t, u8, float, f32)
-DM_TEMPLATE(uint8_t, u8, double, f64)
-DM_TEMPLATE(uint16_t, u16, float, f32)
-DM_TEMPLATE(uint16_t, u16, double, f64)
-DM_TEMPLATE(float, f32, float, f32)
-DM_TEMPLATE(float, f32, double, f64)
-DM_TEMPLATE(double, f64, float, f32)
-DM_TEMPLATE(double, f64, double, f64)
-
-int RGBZ_SYM(rgbz_demosaic_malvar)(int in_type, int out_type, const void *src, void *dst,
-                                   ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                                   int mode, int workers)
+/*
+ * The filters of one pixel from the sums of its neighbourhood: c0 the pixel, n4 its four
+ * neighbours, far4 the four at distance 2 on the axes, diag the four diagonal ones, hz/vt
+ * the horizontal/vertical pairs at distance 1 and 2. rgb[] gets R, G, B.
+ */
+static inline void dm_pixel(const int32_t *ph, int xp, double c0, double n4, double far4,
+                            double diag, double hz2, double vt2, double hz1, double vt1,
+                            double *rgb)
 {
-    if (!src || !dst || !phase || rows < 2 || cols < 2 || (mode != 0 && mode != 1))
+    const int ch = ph[xp];
+    if (ch == 1) {
+        /* green site: horizontal and vertical colour-difference filters */
+        const double hv = (5 * c0 + 4 * hz1 - hz2 - diag + 0.5 * vt2) / 8;
+        const double vv = (5 * c0 + 4 * vt1 - vt2 - diag + 0.5 * hz2) / 8;
+        const int row_colour = ph[xp ^ 1];   /* R or B, the colour of this row */
+        rgb[1] = c0;
+        rgb[0] = row_colour == 0 ? hv : vv;
+        rgb[2] = row_colour == 0 ? vv : hv;
+    } else {
+        /* red or blue site: green, and the other colour from the diagonals */
+        const double gg = (4 * c0 + 2 * n4 - far4) / 8;
+        const double oo = (6 * c0 + 2 * diag - 1.5 * far4) / 8;
+        rgb[1] = gg;
+        rgb[0] = ch == 0 ? c0 : oo;
+        rgb[2] = ch == 0 ? oo : c0;
+    }
+}
+
+/* element i..i+2 of an RGB output of float or double */
+static inline void dm_store(void *dst, int out_f64, ptrdiff_t i, const double *rgb)
+{
+    if (out_f64) {
+        double *o = (double *)dst + i;
+        o[0] = rgb[0];
+        o[1] = rgb[1];
+        o[2] = rgb[2];
+    } else {
+        float *o = (float *)dst + i;
+        o[0] = (float)rgb[0];
+        o[1] = (float)rgb[1];
+        o[2] = (float)rgb[2];
+    }
+}
+
+/* ---- the row loop per input type (PyWavelets' template scheme) ---- */
+#if defined(IN_T) || defined(IS)
+#error "demosaic.c: the template parameters must not be defined here"
+#endif
+#define IN_T uint8_t
+#define IS u8
+#include "demosaic.template.h"
+#undef IN_T
+#undef IS
+#define IN_T uint16_t
+#define IS u16
+#include "demosaic.template.h"
+#undef IN_T
+#undef IS
+#define IN_T float
+#define IS f32
+#include "demosaic.template.h"
+#undef IN_T
+#undef IS
+#define IN_T double
+#define IS f64
+#include "demosaic.template.h"
+#undef IN_T
+#undef IS
+
+int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
+                         ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
+                         int mode, int workers)
+{
+    typedef void (*malvar_fn)(const void *, void *, int, ptrdiff_t, ptrdiff_t, const int32_t *,
+                              const ptrdiff_t *, int, int);
+    static const malvar_fn by_type[4] = {rgbz_malvar_u8, rgbz_malvar_u16, rgbz_malvar_f32,
+                                         rgbz_malvar_f64};   /* indexed by rgbz_type */
+    if (!src || !dst || !phase || rows < 2 || cols < 2 ||
+        (mode != RGBZ_DM_REFLECT && mode != RGBZ_DM_PERIOD))
         return RGBZ_EINVAL;
     if (out_type != RGBZ_T_F32 && out_type != RGBZ_T_F64) return RGBZ_EINVAL;
+    if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
     int greens = 0;
     for (int i = 0; i < 4; i++) {
         if (phase[i] < 0 || phase[i] > 2) return RGBZ_EINVAL;
@@ -124,30 +139,8 @@ int RGBZ_SYM(rgbz_demosaic_malvar)(int in_type, int out_type, const void *src, v
     if (greens != 2 || !(main_diag || anti_diag)) return RGBZ_EINVAL;
     ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 4) * sizeof(ptrdiff_t));
     if (!colmap) return RGBZ_ENOMEM;
-    for (ptrdiff_t i = 0; i < cols + 4; i++)
-        colmap[i] = mode ? dm_period(i - 2, cols) : dm_reflect(i - 2, cols);
-    int f64 = out_type == RGBZ_T_F64;
-    int st = RGBZ_OK;
-    switch (in_type) {
-    case RGBZ_T_U8:
-        if (f64) rgbz_malvar_u8_f64(src, dst, rows, cols, phase, colmap, mode, workers);
-        else rgbz_malvar_u8_f32(src, dst, rows, cols, phase, colmap, mode, workers);
-        break;
-    case RGBZ_T_U16:
-        if (f64) rgbz_malvar_u16_f64(src, dst, rows, cols, phase, colmap, mode, workers);
-        else rgbz_malvar_u16_f32(src, dst, rows, cols, phase, colmap, mode, workers);
-        break;
-    case RGBZ_T_F32:
-        if (f64) rgbz_malvar_f32_f64(src, dst, rows, cols, phase, colmap, mode, workers);
-        else rgbz_malvar_f32_f32(src, dst, rows, cols, phase, colmap, mode, workers);
-        break;
-    case RGBZ_T_F64:
-        if (f64) rgbz_malvar_f64_f64(src, dst, rows, cols, phase, colmap, mode, workers);
-        else rgbz_malvar_f64_f32(src, dst, rows, cols, phase, colmap, mode, workers);
-        break;
-    default:
-        st = RGBZ_EINVAL;
-    }
+    for (ptrdiff_t i = 0; i < cols + 4; i++) colmap[i] = dm_extend(i - 2, cols, mode);
+    by_type[in_type](src, dst, out_type == RGBZ_T_F64, rows, cols, phase, colmap, mode, workers);
     free(colmap);
-    return st;
+    return RGBZ_OK;
 }

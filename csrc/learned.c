@@ -135,14 +135,14 @@ static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t co
                                colmap, fast_ok, maxval, workers, opcounts)
 #define LRN_CAT_(a, b, c) a##_##b##_##c
 
-int RGBZ_SYM(rgbz_learned)(int in_type, int precision, const void *src, void *dst,
+int rgbz_learned(int in_type, int precision, const void *src, void *dst,
                            ptrdiff_t rows, ptrdiff_t cols, int py, int px,
                            const int32_t *phase_map, const rgbz_learned_filters *f,
                            double maxval, int workers, uint64_t *opcounts)
 {
     int status = lrn_check(f, rows, cols, py, px, phase_map);
     if (status != RGBZ_OK) return status;
-    if (precision != RGBZ_P_F32 && precision != RGBZ_P_F64) return RGBZ_EINVAL;
+    if (precision != RGBZ_P_FLOAT32 && precision != RGBZ_P_FLOAT64) return RGBZ_EINVAL;
 #ifdef RGBZ_COUNT_OPS
     if (!opcounts) return RGBZ_EINVAL;
     workers = 1;
@@ -151,7 +151,7 @@ int RGBZ_SYM(rgbz_learned)(int in_type, int precision, const void *src, void *ds
     ptrdiff_t *colmap = malloc((size_t)(cols + 2 * R) * sizeof *colmap);
     if (!colmap) return RGBZ_ENOMEM;
     for (ptrdiff_t x = -R; x < cols + R; x++) colmap[x + R] = lrn_extend(x, cols, px);
-    const int f64 = precision == RGBZ_P_F64;
+    const int f64 = precision == RGBZ_P_FLOAT64;
     const int fast_ok = lrn_fast_ok(f, py, px, phase_map);
     switch (in_type) {
     case RGBZ_T_U8:

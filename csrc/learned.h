@@ -52,13 +52,13 @@ typedef struct {
  *   src, dst:  rows x cols frames of element type in_type (dst fully written: colour
  *              sites copied, Z sites clipped to [0, maxval] and, for integer types,
  *              rounded half up). src and dst must not overlap.
- *   precision: RGBZ_P_F32 or RGBZ_P_F64 (arithmetic and weights).
+ *   precision: RGBZ_P_FLOAT32 or RGBZ_P_FLOAT64 (arithmetic and weights).
  *   py, px, phase_map: the pattern period and the phase (index into the filters) of
  *              each tile site, -1 for a colour site.
  *   opcounts:  counting build only: n_phases x RGBZ_NOPS counters.
  * Borders: a tap outside the frame moves back inside by whole periods.
  */
-int RGBZ_SYM(rgbz_learned)(int in_type, int precision, const void *src, void *dst,
+int rgbz_learned(int in_type, int precision, const void *src, void *dst,
                            ptrdiff_t rows, ptrdiff_t cols, int py, int px,
                            const int32_t *phase_map, const rgbz_learned_filters *f,
                            double maxval, int workers, uint64_t *opcounts);

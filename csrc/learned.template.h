@@ -386,7 +386,7 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                 const int k = pm[ph0];
                 if (k < 0) continue;
 #ifdef RGBZ_COUNT_OPS
-                rgbz_opc_cur_count = opcounts + (size_t)k * RGBZ_NOPS;
+                rgbz_opc_cur = opcounts + (size_t)k * RGBZ_NOPS;
 #endif
                 const REAL *w = weights + (ptrdiff_t)k * f->n_taps_max * f->n_buckets;
                 /* the fast sites of this phase: xf .. xl (none when xf > xl) */

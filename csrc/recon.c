@@ -1,5 +1,6 @@
 /*
- * recon.c -- missing-colour reconstruction at the Z sites of an RGB-Z frame.
+ * recon.c -- missing-colour reconstruction at the Z sites of an RGB-Z frame:
+ * the entry point, the checks of the plans, and the instances of the templates.
  *
  * Paper: Rebiere et al., section 4 (eqs. 2-19, Table 1); Shi et al.'s row
  * method (eqs. 1a-1e) (docs/references.bib: rebiere_rgbz, shi_rgbz). The
@@ -9,23 +10,28 @@
  * Layout: C-contiguous row-major frames, strides in elements (= cols).
  * Borders: a tap outside the frame is moved back by whole pattern periods
  * (rgbz_extend), so it keeps its colour.
- * Types: input/output element u8, u16, f32 or f64; arithmetic in float or
- * double (8 instantiations of recon_loop.h, 2 of recon_site.h).
+ * Code: recon_core.template.h is the per-site arithmetic (one core for every
+ * method, pattern and option), compiled once per precision (float, double);
+ * recon_loop.template.h the frame loop, once per precision and element type
+ * (u8, u16, f32, f64); recon_mask1.h the Mask1 plans as constants.
  */
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
 #include <stdint.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 #include "rgbz.h"
 #include "rgbz_ops.h"
+#include "recon_mask1.h"
 
 #define RGBZ_MAX_RADIUS 8
 
+/* sites per block of the core: its scratch stays in L1. The counting build runs one site
+   per block, so that a branch the core takes per block is counted per site. */
 #ifdef RGBZ_COUNT_OPS
-uint64_t *rgbz_opc_cur_count = NULL;
+#define RGBZ_BLK 1
+uint64_t *rgbz_opc_cur = NULL;
+#else
+#define RGBZ_BLK 128
 #endif
 
 /* index i moved into [0, n) by whole periods P (n >= P) */
@@ -36,13 +42,17 @@ static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
     return i;
 }
 
-/* ---- per-pixel methods, float and double ---- */
+/* ---- the core and the frame loops, per precision (PyWavelets' template scheme) ---- */
+#if defined(REAL) || defined(RS) || defined(IN_T)
+#error "recon.c: the template parameters must not be defined here"
+#endif
+
 #define REAL float
 #define RS f32
 #define RABSDIFF OABSDIFF_F
 #define REXP_LIBM expf
 #define REXP_FAST rgbz_fast_exp_f
-#include "recon_site.h"
+#include "recon_core.template.h"
 #undef REAL
 #undef RS
 #undef RABSDIFF
@@ -54,155 +64,38 @@ static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 #define RABSDIFF OABSDIFF_D
 #define REXP_LIBM exp
 #define REXP_FAST rgbz_fast_exp_d
-#include "recon_site.h"
+#include "recon_core.template.h"
 #undef REAL
 #undef RS
 #undef RABSDIFF
 #undef REXP_LIBM
 #undef REXP_FAST
 
-/* ---- frame loops: 4 element types x 2 precisions ---- */
-#define IN_T uint8_t
-#define IS u8
-#define IN_IS_INT 1
-#define REAL float
-#define RS f32
-#define RABSDIFF OABSDIFF_F
-#define REXP_LIBM expf
-#define REXP_FAST rgbz_fast_exp_f
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#define REAL double
-#define RS f64
-#define RABSDIFF OABSDIFF_D
-#define REXP_LIBM exp
-#define REXP_FAST rgbz_fast_exp_d
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define IN_T uint16_t
-#define IS u16
-#define IN_IS_INT 1
-#define REAL float
-#define RS f32
-#define RABSDIFF OABSDIFF_F
-#define REXP_LIBM expf
-#define REXP_FAST rgbz_fast_exp_f
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#define REAL double
-#define RS f64
-#define RABSDIFF OABSDIFF_D
-#define REXP_LIBM exp
-#define REXP_FAST rgbz_fast_exp_d
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define IN_T float
-#define IS f32
-#define IN_IS_INT 0
-#define REAL float
-#define RS f32
-#define RABSDIFF OABSDIFF_F
-#define REXP_LIBM expf
-#define REXP_FAST rgbz_fast_exp_f
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#define REAL double
-#define RS f64
-#define RABSDIFF OABSDIFF_D
-#define REXP_LIBM exp
-#define REXP_FAST rgbz_fast_exp_d
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define IN_T double
-#define IS f64
-#define IN_IS_INT 0
-#define REAL float
-#define RS f32
-#define RABSDIFF OABSDIFF_F
-#define REXP_LIBM expf
-#define REXP_FAST rgbz_fast_exp_f
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#define REAL double
-#define RS f64
-#define RABSDIFF OABSDIFF_D
-#define REXP_LIBM exp
-#define REXP_FAST rgbz_fast_exp_d
-#include "recon_mask1.h"
-#include "recon_loop.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-int RGBZ_SYM(rgbz_plan_layout)(int64_t *out, int n)
+int rgbz_plan_layout(int64_t *out, int n)
 {
-    int64_t v[] = {
+    int64_t v[RGBZ_PLAN_FIELDS + 1] = {
         (int64_t)sizeof(rgbz_plan),
         (int64_t)offsetof(rgbz_plan, method), (int64_t)offsetof(rgbz_plan, use_ab),
         (int64_t)offsetof(rgbz_plan, tap_dy), (int64_t)offsetof(rgbz_plan, tap_dx),
         (int64_t)offsetof(rgbz_plan, cand_tap), (int64_t)offsetof(rgbz_plan, cand_ori),
         (int64_t)offsetof(rgbz_plan, cand_sgmask), (int64_t)offsetof(rgbz_plan, pair_a),
         (int64_t)offsetof(rgbz_plan, pair_b), (int64_t)offsetof(rgbz_plan, pair_gmask),
-        (int64_t)offsetof(rgbz_plan, target), (int64_t)offsetof(rgbz_plan, cand_alpha),
-        (int64_t)offsetof(rgbz_plan, cand_sgscale), (int64_t)offsetof(rgbz_plan, group_scale),
-        (int64_t)offsetof(rgbz_plan, use_cd), (int64_t)offsetof(rgbz_plan, cd_n),
-        (int64_t)offsetof(rgbz_plan, cd_tap), (int64_t)offsetof(rgbz_plan, cd_w),
+        (int64_t)offsetof(rgbz_plan, target), (int64_t)offsetof(rgbz_plan, use_cd),
+        (int64_t)offsetof(rgbz_plan, cd_n), (int64_t)offsetof(rgbz_plan, cd_tap),
+        (int64_t)offsetof(rgbz_plan, sum_from_zero), (int64_t)offsetof(rgbz_plan, gamma_mask),
+        (int64_t)offsetof(rgbz_plan, cand_alpha), (int64_t)offsetof(rgbz_plan, cand_sgscale),
+        (int64_t)offsetof(rgbz_plan, group_scale), (int64_t)offsetof(rgbz_plan, cd_w),
     };
-    int m = (int)(sizeof v / sizeof v[0]);
-    if (n < m) return RGBZ_EINVAL;
-    for (int i = 0; i < m; i++) out[i] = v[i];
+    if (!out || n < RGBZ_PLAN_FIELDS + 1) return RGBZ_EINVAL;
+    for (int i = 0; i <= RGBZ_PLAN_FIELDS; i++) out[i] = v[i];
+    return RGBZ_OK;
+}
+
+int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
+{
+    const int i = rgbz_mask1_index(method, sg_combined);
+    if (!out || i < 0) return RGBZ_EINVAL;
+    *out = *rgbz_mask1_plans[i];
     return RGBZ_OK;
 }
 
@@ -217,6 +110,7 @@ static int rgbz_check_plans(const rgbz_plan *plans, int n_plans, int *ry, int *r
         if (p->n_cand < 0 || p->n_cand > RGBZ_MAX_CAND) return RGBZ_EINVAL;
         if (p->n_pairs < 0 || p->n_pairs > RGBZ_MAX_PAIRS) return RGBZ_EINVAL;
         if (p->method == RGBZ_M_EDI_ROWS ? p->n_taps != 10 : p->n_cand < 1) return RGBZ_EINVAL;
+        if (p->gamma_mask < 0 || p->gamma_mask >= (1 << RGBZ_NGROUPS)) return RGBZ_EINVAL;
         for (int t = 0; t < p->n_taps; t++) {
             int ady = abs(p->tap_dy[t]), adx = abs(p->tap_dx[t]);
             if (ady > RGBZ_MAX_RADIUS || adx > RGBZ_MAX_RADIUS) return RGBZ_EINVAL;
@@ -226,6 +120,7 @@ static int rgbz_check_plans(const rgbz_plan *plans, int n_plans, int *ry, int *r
         for (int k = 0; k < p->n_cand; k++) {
             if (p->cand_tap[k] < 0 || p->cand_tap[k] >= p->n_taps) return RGBZ_EINVAL;
             if (p->cand_ori[k] < 0 || p->cand_ori[k] > 3) return RGBZ_EINVAL;
+            if (p->cand_sgmask[k] < 0 || p->cand_sgmask[k] >= (1 << 8)) return RGBZ_EINVAL;
         }
         if (p->use_cd)
             for (int k = 0; k <= p->n_cand; k++) {
@@ -235,20 +130,22 @@ static int rgbz_check_plans(const rgbz_plan *plans, int n_plans, int *ry, int *r
             }
         for (int k = 0; k < p->n_pairs; k++)
             if (p->pair_a[k] < 0 || p->pair_a[k] >= p->n_taps || p->pair_b[k] < 0 ||
-                p->pair_b[k] >= p->n_taps || p->pair_gmask[k] < 0 ||
-                p->pair_gmask[k] >= (1 << RGBZ_NGROUPS))
+                p->pair_b[k] >= p->n_taps || p->pair_gmask[k] <= 0 ||
+                p->pair_gmask[k] >= (1 << RGBZ_NGROUPS) ||
+                rgbz_popcount((uint32_t)p->pair_gmask[k]) > RGBZ_MAX_PAIR_GROUPS)
                 return RGBZ_EINVAL;
     }
     return RGBZ_OK;
 }
 
-int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void *dst,
-                               ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                               const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
-                               const rgbz_params *prm, uint64_t *opcounts)
+int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
+                     ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                     const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
+                     const rgbz_params *prm, uint64_t *opcounts)
 {
     if (!src || !dst || !phase_map || !plans || !prm || n_plans < 1) return RGBZ_EINVAL;
     if (py < 1 || px < 1 || rows < py || cols < px) return RGBZ_EINVAL;
+    if (precision != RGBZ_P_FLOAT32 && precision != RGBZ_P_FLOAT64) return RGBZ_EINVAL;
     for (int i = 0; i < py * px; i++)
         if (phase_map[i] < -1 || phase_map[i] >= n_plans) return RGBZ_EINVAL;
 #ifdef RGBZ_COUNT_OPS
@@ -258,15 +155,16 @@ int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void
     int st = rgbz_check_plans(plans, n_plans, &ry, &rx);
     if (st != RGBZ_OK) return st;
     if (prm->mask1_fast) {
-        /* the caller vouches for the Mask1 geometry; check what the fast path relies on */
+        /* the caller vouches for the Mask1 geometry; check what the constant plans rely
+           on: the interior sites run the one of the plan's method */
         const rgbz_plan *p = &plans[0];
         int nz = 0;
         for (int i = 0; i < py * px; i++) nz += phase_map[i] >= 0;
         if (py != 2 || px != 2 || n_plans != 1 || nz != 1 || p->use_cd || p->n_cand != 4 ||
-            p->method > RGBZ_M_SG)
+            rgbz_mask1_index(p->method, p->use_grad && p->use_sg) < 0)
             return RGBZ_EINVAL;
     }
-    /* clipping is handled by the plan interpreter only (recon_site.h) */
+    /* the Mask1 constant plans know nothing of clipping */
     if (prm->clip_on && (prm->mask1_fast || !(prm->clip_level == prm->clip_level)))
         return RGBZ_EINVAL;
 
@@ -275,23 +173,38 @@ int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void
     if (!colmap) return RGBZ_ENOMEM;
     for (ptrdiff_t i = 0; i < cols + 2 * rx; i++) colmap[i] = rgbz_extend(i - rx, cols, px);
 
-#define RGBZ_CALL(S) \
-    (precision == RGBZ_P_F32 \
-         ? rgbz_recon_loop_##S##_f32(src, dst, rows, cols, py, px, phase_map, plans, ry, rx, colmap, prm, opcounts) \
-         : rgbz_recon_loop_##S##_f64(src, dst, rows, cols, py, px, phase_map, plans, ry, rx, colmap, prm, opcounts))
-    switch (in_type) {
-    case RGBZ_T_U8: st = RGBZ_CALL(u8); break;
-    case RGBZ_T_U16: st = RGBZ_CALL(u16); break;
-    case RGBZ_T_F32: st = RGBZ_CALL(f32); break;
-    case RGBZ_T_F64: st = RGBZ_CALL(f64); break;
-    default: st = RGBZ_EINVAL;
-    }
-#undef RGBZ_CALL
+    typedef int (*loop_fn)(const void *, void *, ptrdiff_t, ptrdiff_t, int, int, const int32_t *,
+                           const rgbz_plan *, int, int, const ptrdiff_t *, const rgbz_params *,
+                           uint64_t *);
+    /* [element type][precision] */
+    static const loop_fn loops[4][2] = {
+        {(loop_fn)rgbz_recon_loop_u8_f32, (loop_fn)rgbz_recon_loop_u8_f64},
+        {(loop_fn)rgbz_recon_loop_u16_f32, (loop_fn)rgbz_recon_loop_u16_f64},
+        {(loop_fn)rgbz_recon_loop_f32_f32, (loop_fn)rgbz_recon_loop_f32_f64},
+        {(loop_fn)rgbz_recon_loop_f64_f32, (loop_fn)rgbz_recon_loop_f64_f64},
+    };
+    if (in_type >= RGBZ_T_U8 && in_type <= RGBZ_T_F64)
+        st = loops[in_type][precision](src, dst, rows, cols, py, px, phase_map, plans, ry, rx,
+                                       colmap, prm, opcounts);
+    else
+        st = RGBZ_EINVAL;
     free(colmap);
     return st;
 }
 
-int RGBZ_SYM(rgbz_have_openmp)(void)
+int rgbz_fast_exp(int type, const void *x, void *out, ptrdiff_t n)
+{
+    if (!x || !out || n < 0) return RGBZ_EINVAL;
+    if (type == RGBZ_T_F32)
+        for (ptrdiff_t i = 0; i < n; i++) ((float *)out)[i] = rgbz_fast_exp_f(((const float *)x)[i]);
+    else if (type == RGBZ_T_F64)
+        for (ptrdiff_t i = 0; i < n; i++) ((double *)out)[i] = rgbz_fast_exp_d(((const double *)x)[i]);
+    else
+        return RGBZ_EINVAL;
+    return RGBZ_OK;
+}
+
+int rgbz_have_openmp(void)
 {
 #ifdef _OPENMP
     return 1;
@@ -300,7 +213,7 @@ int RGBZ_SYM(rgbz_have_openmp)(void)
 #endif
 }
 
-int RGBZ_SYM(rgbz_max_threads)(void)
+int rgbz_max_threads(void)
 {
 #ifdef _OPENMP
     return omp_get_max_threads();
@@ -309,18 +222,18 @@ int RGBZ_SYM(rgbz_max_threads)(void)
 #endif
 }
 
-int RGBZ_SYM(rgbz_opcount_target)(uint64_t *counts)
+int rgbz_opcount_target(uint64_t *counts)
 {
 #ifdef RGBZ_COUNT_OPS
     if (!counts) return RGBZ_EINVAL;
-    rgbz_opc_cur_count = counts;
+    rgbz_opc_cur = counts;
 #else
     (void)counts;
 #endif
     return RGBZ_OK;
 }
 
-int RGBZ_SYM(rgbz_counting_build)(void)
+int rgbz_counting_build(void)
 {
 #ifdef RGBZ_COUNT_OPS
     return 1;

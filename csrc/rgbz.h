@@ -1,14 +1,26 @@
 /*
  * rgbz.h -- public C API of the rgbz-fast core (plain C99, no Python.h).
  *
+ * Algorithms: missing-colour reconstruction at the Z (depth) sites of an RGB-Z
+ * frame (recon.c: V. Rebiere et al., "Color pixel reconstruction for a
+ * monolithic RGB-Z CMOS imager", section 4, eqs. 2-19 and Table 1; Shi et al.'s
+ * row method, eqs. 1a-1e), Malvar-He-Cutler 2004 demosaicing (demosaic.c) and
+ * four-tap time-of-flight demodulation with multi-frequency unwrapping (tof.c).
+ *
  * Memory layout contract: every image is a C-contiguous, row-major array of
  * `rows * cols` elements; strides are `cols` elements. The caller (the Python
  * layer) validates shapes and allocates every output; the kernels never
- * allocate an output and return an int status (RGBZ_OK on success).
+ * allocate an output and return an rgbz_status (RGBZ_OK on success).
  *
- * The same sources build twice: the normal library, and a counting library
- * compiled with -DRGBZ_COUNT_OPS whose exported symbols carry a `_count`
- * suffix and whose arithmetic macros (rgbz_ops.h) also count operations.
+ * The same sources build twice (csrc/meson.build): the library of the
+ * extension rgbz_fast._kernels, and a counting library (-DRGBZ_COUNT_OPS) of
+ * the extension rgbz_fast._kernels_count, whose arithmetic macros (rgbz_ops.h)
+ * also count operations (`rgbz-fast opcount`). Both export the same names;
+ * each extension links one library and exports nothing but its PyInit_*.
+ *
+ * The enums below are also the Python constants: _kernels.pyx declares them
+ * as `cpdef enum`s, and the Python layer builds its name -> code tables
+ * (METHODS, PRECISIONS, EXP_MODES, DEMOSAIC_MODES) from them.
  */
 #ifndef RGBZ_H
 #define RGBZ_H
@@ -16,64 +28,85 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#ifdef RGBZ_COUNT_OPS
-#define RGBZ_SYM(name) name##_count
-#else
-#define RGBZ_SYM(name) name
-#endif
-
 /* status codes */
-#define RGBZ_OK 0
-#define RGBZ_EINVAL 1   /* an argument the Python layer should have rejected */
-#define RGBZ_ENOMEM 2   /* scratch allocation failed */
-#define RGBZ_EDOMAIN 3  /* an input value outside the kernel's domain (a ToF phase outside
-                           [0, 2 pi), a non-finite phasor): the Python layer names it */
+typedef enum rgbz_status {
+    RGBZ_OK = 0,
+    RGBZ_EINVAL = 1,   /* an argument the Python layer should have rejected */
+    RGBZ_ENOMEM = 2,   /* scratch allocation failed */
+    RGBZ_EDOMAIN = 3,  /* an input value outside the kernel's domain (a ToF phase outside
+                          [0, 2 pi), a non-finite phasor): the Python layer names it */
+} rgbz_status;
 
 /* element types of frames */
-#define RGBZ_T_U8 0
-#define RGBZ_T_U16 1
-#define RGBZ_T_F32 2
-#define RGBZ_T_F64 3
+typedef enum rgbz_type {
+    RGBZ_T_U8 = 0,
+    RGBZ_T_U16 = 1,
+    RGBZ_T_F32 = 2,
+    RGBZ_T_F64 = 3,
+} rgbz_type;
 
-/* computation precision */
-#define RGBZ_P_F32 0
-#define RGBZ_P_F64 1
+/* computation precision of the reconstruction */
+typedef enum rgbz_precision {
+    RGBZ_P_FLOAT32 = 0,
+    RGBZ_P_FLOAT64 = 1,
+} rgbz_precision;
 
-/* reconstruction methods */
-#define RGBZ_M_BILINEAR 0
-#define RGBZ_M_BI 1
-#define RGBZ_M_EDI_CENTRAL 2
-#define RGBZ_M_EDI_LINE 3
-#define RGBZ_M_SG 4
-#define RGBZ_M_EDI_ROWS 5
+/* reconstruction methods (the Python names are the lower-case suffixes) */
+typedef enum rgbz_method {
+    RGBZ_M_BILINEAR = 0,
+    RGBZ_M_BI = 1,
+    RGBZ_M_EDI_CENTRAL = 2,
+    RGBZ_M_EDI_LINE = 3,
+    RGBZ_M_SG = 4,
+    RGBZ_M_EDI_ROWS = 5,
+} rgbz_method;
 
 /* exponential used by the gamma factors (eq. 7) */
-#define RGBZ_EXP_LIBM 0      /* C library exp/expf: correctly rounded to ~1 ulp */
-#define RGBZ_EXP_FAST 1      /* range reduction + degree-5 polynomial, ~2e-7 relative */
+typedef enum rgbz_exp_mode {
+    RGBZ_EXP_LIBM = 0,   /* C library exp/expf: correctly rounded to ~1 ulp */
+    RGBZ_EXP_FAST = 1,   /* range reduction + Taylor polynomial (rgbz_ops.h): relative error
+                            below 3e-7 in float32, 1e-8 in float64 (docs/reports/tradeoff.md) */
+} rgbz_exp_mode;
 
-/* operation counters (Table 1 categories plus the rest) */
-#define RGBZ_OP_ADD 0     /* additions and subtractions */
-#define RGBZ_OP_MUL 1
-#define RGBZ_OP_DIV 2
-#define RGBZ_OP_EXP 3
-#define RGBZ_OP_ABS 4
-#define RGBZ_OP_CMP 5     /* comparisons, min, max */
-#define RGBZ_OP_SQRT 6
-#define RGBZ_OP_ATAN2 7
-#define RGBZ_NOPS 8
+/* border modes of the demosaic */
+typedef enum rgbz_demosaic_mode {
+    RGBZ_DM_REFLECT = 0,  /* scipy.ndimage 'reflect' (half-sample mirror) */
+    RGBZ_DM_PERIOD = 1,   /* shift by whole 2x2 periods: a padded pixel keeps its colour */
+} rgbz_demosaic_mode;
 
-/* size limits of one plan */
-#define RGBZ_MAX_TAPS 40
-#define RGBZ_MAX_CAND 24
-#define RGBZ_MAX_PAIRS 96
-#define RGBZ_NGROUPS 12      /* 0..7 semi-gradients N S W E NW NE SW SE; 8..11 gradients V H D1 D2 */
-#define RGBZ_MAX_CD 8        /* taps of one colour-difference estimate */
+/* operation counters (Table 1 categories plus the rest); RGBZ_NOPS counts them */
+typedef enum rgbz_op {
+    RGBZ_OP_ADD = 0,   /* additions and subtractions */
+    RGBZ_OP_MUL = 1,
+    RGBZ_OP_DIV = 2,
+    RGBZ_OP_EXP = 3,
+    RGBZ_OP_ABS = 4,
+    RGBZ_OP_CMP = 5,   /* comparisons, min, max */
+    RGBZ_OP_SQRT = 6,
+    RGBZ_OP_ATAN2 = 7,
+} rgbz_op;
+
+/* sizes: the counters, the arrays of one plan, the ToF limits */
+enum {
+    RGBZ_NOPS = 8,
+    RGBZ_MAX_TAPS = 40,
+    RGBZ_MAX_CAND = 24,
+    RGBZ_MAX_PAIRS = 96,
+    RGBZ_NGROUPS = 12,    /* 0..7 semi-gradients N S W E NW NE SW SE; 8..11 gradients V H D1 D2 */
+    RGBZ_MAX_CD = 8,      /* taps of one colour-difference estimate */
+    RGBZ_MAX_PAIR_GROUPS = 4,  /* groups one pair serves (the semi-gradients share theirs: 2) */
+    RGBZ_TOF_MAX_FREQS = 16,
+    RGBZ_TOF_MAX_WRAPS = 1024,
+};
 
 /*
  * A plan says how to reconstruct the missing pixels of one phase of the
  * pattern (one Z position in the tile). It is built and validated in Python
- * (rgbz_fast/_plans.py) and read here as plain data: taps are kernel
- * offsets, candidates and pairs index the taps.
+ * (rgbz_fast/_plans.py, whose PLAN_DTYPE mirrors this struct and is checked
+ * against rgbz_plan_layout) and read here as plain data: taps are kernel
+ * offsets, candidates and pairs index the taps. recon_core.template.h is the
+ * one interpreter of plans; recon_mask1.h holds the Mask1 plans as compile-time
+ * constants.
  */
 typedef struct {
     int32_t method, n_taps, n_cand, n_pairs;
@@ -82,9 +115,18 @@ typedef struct {
     int32_t cand_tap[RGBZ_MAX_CAND], cand_ori[RGBZ_MAX_CAND], cand_sgmask[RGBZ_MAX_CAND];
     int32_t pair_a[RGBZ_MAX_PAIRS], pair_b[RGBZ_MAX_PAIRS], pair_gmask[RGBZ_MAX_PAIRS];
     int32_t target, use_cd;
-    /* colour-difference domain (eq. 5): X_k = sum_m cd_w[k][m] * v[cd_tap[k][m]] estimates the
-       other channel(s) at candidate k (k < n_cand) and at the missing pixel (k = n_cand) */
+    /* colour-difference domain (eq. 5): X_k = sum_m cd_w[k][m] * v[cd_tap[k][m]] (computed as
+       t0 + sum_{m >= 1} cd_w[k][m] (t_m - t0), the weights summing to 1) estimates the other
+       channel(s) at candidate k (k < n_cand) and at the missing pixel (k = n_cand) */
     int32_t cd_n[RGBZ_MAX_CAND + 1], cd_tap[RGBZ_MAX_CAND + 1][RGBZ_MAX_CD];
+    /* How the sums start, and which gammas are evaluated. Neither changes a result; both
+       are how the two historical code paths did their arithmetic, kept so that the
+       operation counts (docs/reports/opcount.md) are those of each path:
+       sum_from_zero = 1 (Python plans): the group sums and the numerator of eq. 13 start
+         at 0 and add every term; 0 (recon_mask1.h): they start with their first term;
+       gamma_mask: the groups whose gamma (eq. 7) is evaluated. Python plans: every group
+         with differences; recon_mask1.h: only those a candidate reads. */
+    int32_t sum_from_zero, gamma_mask;
     double cand_alpha[RGBZ_MAX_CAND], cand_sgscale[RGBZ_MAX_CAND];
     double group_scale[RGBZ_NGROUPS];
     double cd_w[RGBZ_MAX_CAND + 1][RGBZ_MAX_CD];
@@ -95,18 +137,25 @@ typedef struct {
     double sigma_rel;     /* relative floor: sigma >= sigma_rel * mean gradient of the family */
     double edge_ratio;    /* edi_rows: dominant-edge threshold */
     double maxval;        /* white level 2^b - 1: outputs are clipped to [0, maxval] */
-    int32_t exp_mode;     /* RGBZ_EXP_LIBM or RGBZ_EXP_FAST */
+    int32_t exp_mode;     /* an rgbz_exp_mode */
     int32_t workers;      /* threads; <= 0 means the OpenMP default */
-    int32_t mask1_fast;   /* 1: the pattern has the Mask1 geometry (recon_mask1.h) */
+    int32_t mask1_fast;   /* 1: the pattern has the Mask1 geometry: its interior sites run the
+                             constant plans of recon_mask1.h */
     int32_t clip_on;      /* 1: known pixels >= clip_level are clipped (saturated); a
                              difference of the weights between two of them is skipped
                              (docs/guide/raw.md, "Near clipping"). Needs mask1_fast = 0. */
     double clip_level;    /* in the frame's DN; read only when clip_on */
 } rgbz_params;
 
-/* sizeof(rgbz_plan) and the offsets of its fields, in declaration order,
-   so that Python can check its structured dtype against this header. */
-int RGBZ_SYM(rgbz_plan_layout)(int64_t *out, int n);
+/* sizeof(rgbz_plan) and the offsets of its fields, in declaration order (RGBZ_PLAN_FIELDS
+   numbers), so that Python can check its structured dtype against this header. */
+#define RGBZ_PLAN_FIELDS 20
+int rgbz_plan_layout(int64_t *out, int n);
+
+/* The compile-time Mask1 plan that the interior sites of a Mask1 frame run for `method`
+   (sg_combined: SG with the EDILine weights, sg_mode "combined"), copied to *out, so that
+   the tests can compare it with the plan _plans.py builds. RGBZ_EINVAL if there is none. */
+int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out);
 
 /*
  * Reconstruct the missing colour of every Z site.
@@ -115,28 +164,28 @@ int RGBZ_SYM(rgbz_plan_layout)(int64_t *out, int n);
  *             half up for integer types). src and dst must not overlap.
  *   py, px:   pattern period; phase_map[(y % py) * px + (x % px)] is the plan
  *             index of that site, or -1 for a colour site.
- *   opcounts: counting build only: n_plans x RGBZ_NOPS counters (may be NULL
- *             in the normal build, where it is ignored).
+ *   opcounts: counting build only: n_plans x RGBZ_NOPS counters (required there;
+ *             ignored, and may be NULL, in the normal build).
  */
-int RGBZ_SYM(rgbz_reconstruct)(int in_type, int precision, const void *src, void *dst,
-                               ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                               const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
-                               const rgbz_params *params, uint64_t *opcounts);
+int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
+                     ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                     const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
+                     const rgbz_params *params, uint64_t *opcounts);
 
 /*
  * Malvar-He-Cutler 2004 demosaic of a Bayer CFA (demosaic.c).
  *   src rows x cols (in_type), dst rows x cols x 3 (out_type RGBZ_T_F32 or RGBZ_T_F64),
  *   phase: the 2x2 quad colours in raster order (R=0, G=1, B=2),
- *   mode: 0 reflect (scipy.ndimage 'reflect'), 1 period (shift by 2, keeps colours).
+ *   mode: an rgbz_demosaic_mode.
  */
-int RGBZ_SYM(rgbz_demosaic_malvar)(int in_type, int out_type, const void *src, void *dst,
-                                   ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                                   int mode, int workers);
+int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
+                         ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
+                         int mode, int workers);
 
 /* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
    phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */
-int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
-                                  double *phase, double *amp, double *offset, int workers);
+int rgbz_tof_demodulate(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                        double *phase, double *amp, double *offset, int workers);
 
 /* Multi-frequency unwrapping (tof.c): phase (F, N) in [0, 2 pi), frequencies (Hz), weights (F),
    max_range (m) -> depth (N, m), weighted RMS residual (N, m), wrap count of the
@@ -144,33 +193,36 @@ int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, pt
    base frequency (A = its c / (2 f)); nwrap > RGBZ_TOF_MAX_WRAPS or F > RGBZ_TOF_MAX_FREQS
    is RGBZ_EINVAL. A phase outside [0, 2 pi) (or NaN) gives RGBZ_EDOMAIN (that site's
    outputs are NaN / -1; the others are computed). */
-#define RGBZ_TOF_MAX_FREQS 16
-#define RGBZ_TOF_MAX_WRAPS 1024
-int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
-                              const double *weights, double max_range, double *depth,
-                              double *residual, int32_t *wraps, int workers);
+int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
+                    const double *weights, double max_range, double *depth,
+                    double *residual, int32_t *wraps, int workers);
 
 /* Fused demodulation + unwrapping (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
    depth, residual, wraps as rgbz_tof_unwrap, and phase, amplitude, offset (F, N) as
    rgbz_tof_demodulate (each may be NULL: not stored). One pass per site, no intermediate
    arrays. */
-int RGBZ_SYM(rgbz_tof_depth)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
-                             const double *freqs, const double *weights, double max_range,
-                             double *depth, double *residual, int32_t *wraps, double *phase,
-                             double *amp, double *offset, int workers);
+int rgbz_tof_depth(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                   const double *freqs, const double *weights, double max_range,
+                   double *depth, double *residual, int32_t *wraps, double *phase,
+                   double *amp, double *offset, int workers);
 
 /* The same from phasors I, Q (F, N) (e.g. after the denoise): phase and amplitude (may be
    NULL), depth, residual, wraps. A non-finite I or Q gives RGBZ_EDOMAIN. */
-int RGBZ_SYM(rgbz_tof_depth_iq)(const double *i_comp, const double *q_comp, ptrdiff_t F,
-                                ptrdiff_t N, const double *freqs, const double *weights,
-                                double max_range, double *depth, double *residual,
-                                int32_t *wraps, double *phase, double *amp, int workers);
+int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                      ptrdiff_t N, const double *freqs, const double *weights,
+                      double max_range, double *depth, double *residual,
+                      int32_t *wraps, double *phase, double *amp, int workers);
+
+/* The fast exponential of rgbz_ops.h (exp_mode RGBZ_EXP_FAST) of n values of type
+   RGBZ_T_F32 or RGBZ_T_F64, so that the tests can measure it against libm. */
+int rgbz_fast_exp(int type, const void *x, void *out, ptrdiff_t n);
 
 /* build information */
-int RGBZ_SYM(rgbz_have_openmp)(void);
-int RGBZ_SYM(rgbz_max_threads)(void);
-int RGBZ_SYM(rgbz_counting_build)(void);
-/* counting build: the RGBZ_NOPS counters that the ToF kernels add to (single thread) */
-int RGBZ_SYM(rgbz_opcount_target)(uint64_t *counts);
+int rgbz_have_openmp(void);
+int rgbz_max_threads(void);
+int rgbz_counting_build(void);
+/* counting build: the RGBZ_NOPS counters that the ToF kernels add to (single thread);
+   a no-op in the normal build */
+int rgbz_opcount_target(uint64_t *counts);
 
 #endif /* RGBZ_H */

@@ -1,13 +1,18 @@
 /*
- * rgbz_ops.h -- arithmetic macros of the kernels.
+ * rgbz_ops.h -- what every kernel file shares: the counted arithmetic macros
+ * (the operation counts of the paper's Table 1), the fast exponential of the
+ * gamma factors (eq. 7), the template name pasting, and the compiler-specific
+ * helpers, each behind a test of the compiler with a portable fallback. No
+ * arrays here: the memory layouts are in the kernel files.
  *
- * In the normal build every macro is the plain operation. Built with
- * -DRGBZ_COUNT_OPS (the counting library behind `rgbz-fast opcount`), each
- * macro also increments a counter of its category in `rgbz_opc_cur`, which the
- * loop points at the counters of the plan being run. The counting build is
- * single-threaded. Only the per-pixel arithmetic of the algorithms goes
- * through these macros; loads, index arithmetic, the final clipping and the
- * conversion to the output type are not counted (Table 1 does not count them).
+ * Counting: in the normal build every macro is the plain operation. Built with
+ * -DRGBZ_COUNT_OPS (the library of rgbz_fast._kernels_count, behind
+ * `rgbz-fast opcount`), each macro also increments a counter of its category
+ * in `rgbz_opc_cur`, which the kernels point at the counters of the plan being
+ * run. The counting build is single-threaded. Only the per-pixel arithmetic of
+ * the algorithms goes through these macros; loads, index arithmetic, the final
+ * clipping and the conversion to the output type are not counted (Table 1 of
+ * the paper does not count them).
  */
 #ifndef RGBZ_OPS_H
 #define RGBZ_OPS_H
@@ -18,8 +23,8 @@
 #include "rgbz.h"
 
 #ifdef RGBZ_COUNT_OPS
-extern uint64_t *rgbz_opc_cur_count;
-#define OPC_(k) (rgbz_opc_cur_count[k]++)
+extern uint64_t *rgbz_opc_cur;
+#define OPC_(k) (rgbz_opc_cur[k]++)
 #else
 #define OPC_(k) ((void)0)
 #endif
@@ -34,12 +39,100 @@ extern uint64_t *rgbz_opc_cur_count;
 #define OABSDIFF_F(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabsf((a) - (b)))
 #define OABSDIFF_D(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabs((a) - (b)))
 
+/* name pasting for the *.template.h files (as PyWavelets' templating.h): the arguments are
+   expanded first, so RGBZ_CAT(rgbz_core, RS) with RS defined as f32 is rgbz_core_f32 */
+#define RGBZ_CAT_(a, b) a##_##b
+#define RGBZ_CAT(a, b) RGBZ_CAT_(a, b)
+#define RGBZ_CAT3_(a, b, c) a##_##b##_##c
+#define RGBZ_CAT3(a, b, c) RGBZ_CAT3_(a, b, c)
+
+/* ---- compiler-specific helpers, each with a portable fallback ---- */
+
+/* a function to inline into every caller, so that constants propagate into it (the Mask1
+   plans of recon_mask1.h, the element type of a ToF tap array) */
+#if defined(__GNUC__) || defined(__clang__)
+#define RGBZ_INLINE static inline __attribute__((always_inline))
+#else
+#define RGBZ_INLINE static inline
+#endif
+
+/* rgbz_ctz: the index of the lowest set bit of m (m != 0); rgbz_popcount: the number of
+   set bits of m */
+#if defined(__GNUC__) || defined(__clang__)
+static inline int rgbz_ctz(uint32_t m) { return __builtin_ctz(m); }
+static inline int rgbz_popcount(uint32_t m) { return __builtin_popcount(m); }
+#else
+static inline int rgbz_ctz(uint32_t m)
+{
+    int i = 0;
+    for (; !(m & 1u); m >>= 1) i++;
+    return i;
+}
+static inline int rgbz_popcount(uint32_t m)
+{
+    int c = 0;
+    for (; m; m &= m - 1) c++;
+    return c;
+}
+#endif
+
+/*
+ * Vector-width dispatch of the hottest functions: on x86-64 with GCC and glibc, a
+ * function marked RGBZ_CLONES is compiled once per listed target and the loader
+ * picks the widest the CPU runs (an ifunc). Only the vector width changes: the
+ * C99 build (-std=c99, so -ffp-contract=off) contracts nothing into FMAs, so
+ * every clone computes the same IEEE operations and the results are identical
+ * bit for bit. The counting build and other compilers get one copy.
+ *   RGBZ_CLONES      AVX2 and the x86-64 baseline (the reconstruction)
+ *   RGBZ_CLONES_512  AVX-512F, AVX2 and the baseline (the ToF blocks, double throughout)
+ */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
+    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#define RGBZ_CLONES __attribute__((target_clones("avx2", "default")))
+#define RGBZ_CLONES_512 __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define RGBZ_CLONES
+#define RGBZ_CLONES_512
+#endif
+
+/* The OpenMP loop over rows or blocks: RGBZ_PARALLEL_FOR before a `for`, on `nth` threads,
+   a local the caller sets to rgbz_threads(workers) (workers <= 0: the OpenMP default).
+   (A _Pragma string is not macro-expanded, so the names nth and bad are fixed.) */
+#ifdef _OPENMP
+#include <omp.h>
+#define RGBZ_PARALLEL_FOR _Pragma("omp parallel for schedule(static) num_threads(nth)")
+/* the same, or-reducing a local int `bad` over the threads */
+#define RGBZ_PARALLEL_FOR_OR(bad) \
+    _Pragma("omp parallel for schedule(static) reduction(|:bad) num_threads(nth)")
+static inline int rgbz_threads(int workers)
+{
+    return workers > 0 ? workers : omp_get_max_threads();
+}
+#else
+#define RGBZ_PARALLEL_FOR
+#define RGBZ_PARALLEL_FOR_OR(bad)
+static inline int rgbz_threads(int workers)
+{
+    (void)workers;
+    return 1;
+}
+#endif
+
+/* ---- the fast exponential of eq. 7 (exp_mode RGBZ_EXP_FAST) ---- */
+
 /*
  * exp(x) for x <= 0 by range reduction: x*log2(e) = n + f, f in [-0.5, 0.5],
- * 2^f from a degree-6 Taylor polynomial in f*ln2, 2^n by building the
- * exponent bits. Maximum relative error over [-87, 0], measured by a sweep
- * against libm (tests/reconstruction/test_reconstruct.py): see docs/reports/tradeoff.md. Results that would be subnormal are flushed to
- * 0 (libm returns them); exactly 1 at 0.
+ * 2^f = e^y with y = f*ln2 (ln2 split in two, Cody-Waite) from its Taylor
+ * polynomial -- degree 7 in double, degree 6 in float --, 2^n by building the
+ * exponent bits. Maximum relative error against libm, measured by a sweep over
+ * [-87, 0] (float) and [-708, 0] (double) in tests/test_kernels.py
+ * (test_fast_exp_against_libm): below 3e-7 in float, 1e-8 in double (the
+ * figures ReconstructParams documents; docs/reports/tradeoff.md measures what it
+ * changes in the images). x <= -708 (double) or <= -87 (float) gives 0: the
+ * subnormal results and the last sliver of normal ones (exp(-708) = 3.3e-308,
+ * expf(-87) = 1.6e-38) are flushed (libm returns them). Exactly 1 at 0. NaN
+ * gives 0 (no NaN reaches the integer conversion, which would be undefined
+ * behaviour: docs/reports/robustness.md, B10).
  */
 static inline double rgbz_fast_exp_d(double x)
 {
@@ -58,9 +151,8 @@ static inline double rgbz_fast_exp_d(double x)
 static inline float rgbz_fast_exp_f(float x)
 {
     /* branch-free, so that loops over several gammas vectorise: clamp, evaluate,
-       then zero the result below the normal range */
-    /* written so that NaN takes the clamp (and the final 0): converting a NaN to an
-       integer below would be undefined behaviour (UBSan, docs/reports/robustness.md B10) */
+       then zero the result below the normal range. NaN fails `x > -87` and takes the
+       clamp (and the final 0). */
     const float xc = x > -87.0f ? x : -87.0f;
     const float n = (xc * 1.44269504f + 12582912.0f) - 12582912.0f;   /* round to nearest */
     /* Cody-Waite: r = x - n*ln2 with ln2 split in two, exact in float */
@@ -72,19 +164,5 @@ static inline float rgbz_fast_exp_f(float x)
     memcpy(&scale, &bits, sizeof scale);
     return x > -87.0f ? p * scale : 0.0f;
 }
-
-/*
- * Vector-width dispatch of the hottest loops: on x86-64 Linux with GCC, a
- * function marked RGBZ_CLONES is compiled twice, for the baseline (SSE2) and
- * for AVX2, and the loader picks the one the CPU runs (an ifunc). The AVX2
- * clone has no FMA and the C99 build contracts nothing, so both clones give
- * bit-identical results. The counting build and other compilers get one copy.
- */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
-#define RGBZ_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define RGBZ_CLONES
-#endif
 
 #endif /* RGBZ_OPS_H */

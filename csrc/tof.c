@@ -1,6 +1,9 @@
 /*
  * tof.c -- indirect time-of-flight: four-tap demodulation and multi-frequency
- * phase unwrapping at the Z sites.
+ * phase unwrapping at the Z sites (the paper's i-ToF sensor and ISP models,
+ * section 5.1.2 and 5.2: four shutters 90 degrees apart, a set of three
+ * modulation frequencies against phase wrapping; the paper numbers no equation
+ * for them, the formulas are these).
  *
  * Tap convention (rgbz_fast.simulation, docs/guide/sensor.md): for frequency f and tap
  * k = 0..3, A_k = offset + a*cos(phi + k*pi/2) (plus the black level, which
@@ -9,8 +12,9 @@
  *     amplitude = sqrt(I^2 + Q^2) / 2,  offset = (A0 + A1 + A2 + A3) / 4,
  *     distance = c * phi / (4 * pi * f)  (modulo c / (2 f)).
  *
- * Layout: taps (F, 4, N) row-major, element type u16, f32 or f64; outputs
- * (F, N) float64.
+ * Layout: taps (F, 4, N) row-major, element type u16, f32 or f64 (tof.template.h,
+ * once per type); outputs (F, N) or (N,) float64. Work is done in blocks of
+ * TOF_BLOCK sites, each block's scratch in L1, blocks split across threads.
  *
  * Unwrapping: brute force over the wrap counts w = 0 .. nwrap-1 of the
  * frequency with the longest ambiguity interval A = c / (2 f_base) (nwrap =
@@ -25,12 +29,13 @@
  * Per site, with y_i = (d_base - d_i) / a_i and r_i = A / a_i computed once:
  *     x = y_i + w r_i,  k_i = floor(x + 0.5),  residual_i = a_i (k_i - x),
  * so one candidate costs a multiply-add, a floor and a multiply-add per
- * frequency. rgbz_fast._tof_numpy holds the same arithmetic in NumPy (the tests
+ * frequency. rgbz_fast._devtools._numpy_tof holds the same arithmetic in NumPy (the tests
  * compare them bit for bit from the same phases).
  *
  * rgbz_tof_depth fuses the two stages (taps -> phase, amplitude, offset,
- * depth, residual, wrap count in one pass per site, no intermediate arrays);
- * rgbz_tof_depth_iq does the same from averaged phasors (I, Q).
+ * depth, residual, wrap count in one pass over the blocks, no frame-size
+ * intermediate array); rgbz_tof_depth_iq does the same from averaged phasors
+ * (I, Q).
  */
 /* No FP trap is ever enabled here, so GCC may compute both arms of a `?:` and
    vectorise the site loops (its default -ftrapping-math forbids that; clang's
@@ -42,52 +47,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <stdint.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 #include "rgbz.h"
 #include "rgbz_ops.h"
-
-#if defined(__GNUC__)
-#define TOF_INLINE static inline __attribute__((always_inline))
-#else
-#define TOF_INLINE static inline
-#endif
-
-/*
- * The block functions below are compiled three times (AVX-512F, AVX2, baseline x86-64)
- * and the loader picks the widest the CPU has (GCC function multiversioning, an ifunc:
- * glibc and GCC only, not in the single-threaded counting build). Only the vector width
- * changes: ISO C mode keeps -ffp-contract=off (no FMA contraction), so every clone
- * computes the same IEEE operations and the results are identical bit for bit.
- */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) \
-    && !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
-#define TOF_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define TOF_CLONES
-#endif
-
-/* element n of a tap array of type `t` (a compile-time constant where it is used) */
-TOF_INLINE double tof_load(const void *a, ptrdiff_t n, int t)
-{
-    return t == RGBZ_T_U16 ? (double)((const uint16_t *)a)[n]
-         : t == RGBZ_T_F32 ? (double)((const float *)a)[n] : ((const double *)a)[n];
-}
 
 #define TOF_TWO_PI 6.283185307179586
 #define TOF_PI 3.141592653589793
 #define TOF_PI_2 1.5707963267948966
 #define TOF_PI_4 0.7853981633974483
 #define TOF_C 299792458.0
-
-#ifdef _OPENMP
-#define TOF_PARALLEL _Pragma("omp parallel for schedule(static) num_threads(workers > 0 ? workers : omp_get_max_threads())")
-#define TOF_PARALLEL_BAD _Pragma("omp parallel for schedule(static) reduction(|:bad) num_threads(workers > 0 ? workers : omp_get_max_threads())")
-#else
-#define TOF_PARALLEL
-#define TOF_PARALLEL_BAD
-#endif
 
 /*
  * atan2(y, x) in [-pi, pi] without libm and without branches (every `?:` is a
@@ -98,7 +65,7 @@ TOF_INLINE double tof_load(const void *a, ptrdiff_t n, int t)
  * relative error 2.6e-18 in exact arithmetic); the low bits of pi/4, pi/2 and
  * pi enter before the final rounding. Measured against numpy.arctan2 on
  * random, tiny (1e-310) and huge (1e300) arguments: at most one ulp of the
- * result (tests/test_tof_isp.py::test_fast_atan2_matches_numpy_to_one_ulp).
+ * result (tests/tof/test_tof.py::test_fast_atan2_matches_numpy_to_one_ulp).
  * atan2(0, 0) = 0 (also for -0); infinite arguments give libm's values
  * (pi/4 for two infinities, 0 or pi/2 for one).
  */
@@ -135,61 +102,39 @@ static inline double tof_phase(double I, double Q)
 }
 
 /* ------------------------------------------------------------------ demodulation */
-/* Sites [n0, n0 + nb) of every frequency. The element type `t` is a compile-time
-   constant in the three instances below, which the OpenMP loops call per block (a
-   parallel loop body is outlined before constants propagate into it). */
-TOF_INLINE void tof_demod_impl(const void *restrict taps, ptrdiff_t F, ptrdiff_t N,
-                               ptrdiff_t n0, ptrdiff_t nb, double *phase, double *amp,
-                               double *offset, int t)
-{
-    for (ptrdiff_t f = 0; f < F; f++) {
-        const ptrdiff_t o0 = 4 * f * N + n0, o1 = o0 + N, o2 = o0 + 2 * N, o3 = o0 + 3 * N;
-        /* restrict: the outputs never overlap the taps nor each other (the Python layer
-           allocates them), which spares the vectoriser its runtime alias checks */
-        double *restrict ph = phase + f * N + n0, *restrict am = amp + f * N + n0;
-        double *restrict of = offset + f * N + n0;
-        for (ptrdiff_t k = 0; k < nb; k++) {
-            const double A0 = tof_load(taps, o0 + k, t), A1 = tof_load(taps, o1 + k, t);
-            const double A2 = tof_load(taps, o2 + k, t), A3 = tof_load(taps, o3 + k, t);
-            const double I = OSUB(A0, A2), Q = OSUB(A3, A1);
-            ph[k] = tof_phase(I, Q);
-            OPC_(RGBZ_OP_SQRT);
-            am[k] = OMUL(0.5, sqrt(OADD(OMUL(I, I), OMUL(Q, Q))));
-            of[k] = OMUL(0.25, OADD(OADD(A0, A1), OADD(A2, A3)));
-        }
-    }
-}
-
-#define TOF_DEMOD(S, T)                                                                         \
-TOF_CLONES static void tof_demod_##S(const void *taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t n0, \
-                                     ptrdiff_t nb, double *phase, double *amp, double *offset) \
-{                                                                                               \
-    tof_demod_impl(taps, F, N, n0, nb, phase, amp, offset, T);                                  \
-}
-TOF_DEMOD(u16, RGBZ_T_U16)
-TOF_DEMOD(f32, RGBZ_T_F32)
-TOF_DEMOD(f64, RGBZ_T_F64)
-
 /* sites per block of the OpenMP loops: the per-block scratch stays in L1 */
 #define TOF_BLOCK 128
 #define TOF_NBLOCKS(N) (((N) + TOF_BLOCK - 1) / TOF_BLOCK)
 
-int RGBZ_SYM(rgbz_tof_demodulate)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
-                                  double *phase, double *amp, double *offset, int workers)
+/* amplitude = sqrt(I^2 + Q^2) / 2 */
+static inline double tof_amplitude(double I, double Q)
 {
-    (void)workers;                                     /* unused without OpenMP */
-    if (!taps || !phase || !amp || !offset || F < 1 || N < 0) return RGBZ_EINVAL;
-    if (N == 0) return RGBZ_OK;
-    if (in_type != RGBZ_T_U16 && in_type != RGBZ_T_F32 && in_type != RGBZ_T_F64)
-        return RGBZ_EINVAL;
-    TOF_PARALLEL
-    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
-        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
-        if (in_type == RGBZ_T_U16) tof_demod_u16(taps, F, N, n0, nb, phase, amp, offset);
-        else if (in_type == RGBZ_T_F32) tof_demod_f32(taps, F, N, n0, nb, phase, amp, offset);
-        else tof_demod_f64(taps, F, N, n0, nb, phase, amp, offset);
+    OPC_(RGBZ_OP_SQRT);
+    return OMUL(0.5, sqrt(OADD(OMUL(I, I), OMUL(Q, Q))));
+}
+
+/*
+ * One frequency of a block of nb sites from its phasors I, Q: the phase in [0, 2 pi)
+ * (stored to ph if not NULL), the distance phase * sc (to dist if not NULL) and the
+ * amplitude (to am if not NULL). ok (not NULL): a non-finite I or Q clears ok[k] and
+ * gives the phase 0 (no NaN reaches the unwrapping's floors: B3).
+ */
+RGBZ_INLINE void tof_from_iq(const double *I, const double *Q, ptrdiff_t nb, int *ok,
+                             double sc, double *restrict ph, double *restrict dist,
+                             double *restrict am)
+{
+    double phi[TOF_BLOCK];
+    for (ptrdiff_t k = 0; k < nb; k++) {
+        const int in = !ok || (fabs(I[k]) <= DBL_MAX && fabs(Q[k]) <= DBL_MAX);   /* not NaN */
+        if (ok) ok[k] &= in;
+        phi[k] = in ? tof_phase(I[k], Q[k]) : 0.0;
     }
-    return RGBZ_OK;
+    if (ph)
+        for (ptrdiff_t k = 0; k < nb; k++) ph[k] = phi[k];
+    if (dist)
+        for (ptrdiff_t k = 0; k < nb; k++) dist[k] = phi[k] * sc;
+    if (am)
+        for (ptrdiff_t k = 0; k < nb; k++) am[k] = tof_amplitude(I[k], Q[k]);
 }
 
 /* ------------------------------------------------------------------ unwrapping */
@@ -255,12 +200,12 @@ static inline double tof_floor_i32(double t)
  * it vectorises; the wrap count is carried as a double for the same reason. `i32`
  * is a compile-time constant in the two instances below.
  */
-TOF_INLINE double tof_floor_sel(double t, int i32)
+RGBZ_INLINE double tof_floor_sel(double t, int i32)
 {
     return i32 ? tof_floor_i32(t) : floor(t);
 }
 
-TOF_INLINE void tof_unwrap_block_impl(const tof_plan *p, const double *d, ptrdiff_t nb,
+RGBZ_INLINE void tof_unwrap_block_impl(const tof_plan *p, const double *d, ptrdiff_t nb,
                                       double *depth, double *residual, int32_t *wraps, int i32)
 {
     double y[(RGBZ_TOF_MAX_FREQS - 1) * TOF_BLOCK];
@@ -318,7 +263,7 @@ TOF_INLINE void tof_unwrap_block_impl(const tof_plan *p, const double *d, ptrdif
     }
 }
 
-TOF_CLONES static void tof_unwrap_block_i32(const tof_plan *p, const double *d, ptrdiff_t nb,
+RGBZ_CLONES_512 static void tof_unwrap_block_i32(const tof_plan *p, const double *d, ptrdiff_t nb,
                                             double *depth, double *residual, int32_t *wraps)
 {
     tof_unwrap_block_impl(p, d, nb, depth, residual, wraps, 1);
@@ -337,177 +282,162 @@ static inline void tof_unwrap_block(const tof_plan *p, const double *d, ptrdiff_
     else tof_unwrap_block_libm(p, d, nb, depth, residual, wraps);
 }
 
-/* a site whose input was outside the domain: reported, never computed */
-static void tof_mark_bad(const int *ok, ptrdiff_t nb, double *depth, double *residual,
-                         int32_t *wraps)
+/* Unwrap a block whose sites with ok[k] = 0 had an input outside the domain: those are
+   reported (depth and residual NaN, wraps -1), never computed. Returns 1 if there was one. */
+static int tof_unwrap_checked(const tof_plan *p, const double *d, const int *ok, ptrdiff_t nb,
+                              double *depth, double *residual, int32_t *wraps)
 {
+    int all_ok = 1;
+    for (ptrdiff_t k = 0; k < nb; k++) all_ok &= ok[k];
+    tof_unwrap_block(p, d, nb, depth, residual, wraps);
+    if (all_ok) return 0;
     for (ptrdiff_t k = 0; k < nb; k++) {
         if (!ok[k]) {
             depth[k] = residual[k] = NAN;
             wraps[k] = -1;
         }
     }
+    return 1;
 }
 
-int RGBZ_SYM(rgbz_tof_unwrap)(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
-                              const double *weights, double max_range, double *depth,
-                              double *residual, int32_t *wraps, int workers)
+/*
+ * Unwrapping from phases (q = NULL: x holds the phases (F, N), checked to lie in [0, 2 pi))
+ * or from phasors (x = I, q = Q, each (F, N), checked to be finite; phase and amp, if not
+ * NULL, get the phase and amplitude). A site outside the domain is reported, not computed:
+ * RGBZ_EDOMAIN.
+ */
+static int tof_unwrap_sites(const double *x, const double *q, ptrdiff_t F, ptrdiff_t N,
+                            const double *freqs, const double *weights, double max_range,
+                            double *depth, double *residual, int32_t *wraps, double *phase,
+                            double *amp, int workers)
 {
     tof_plan plan;
-    (void)workers;
-    if (!phase || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
+    if (!x || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
     int st = tof_plan_init(&plan, F, freqs, weights, max_range);
     if (st != RGBZ_OK) return st;
     const tof_plan *p = &plan;
     int bad = 0;
-    TOF_PARALLEL_BAD
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR_OR(bad)
     for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
         double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
         int ok[TOF_BLOCK];
         const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
-        int all_ok = 1;
         for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
-        for (int i = 0; i < p->F; i++) {
-            const double *ph = phase + i * N + n0, sc = p->scale[i];
-            double *di = d + i * TOF_BLOCK;
+        for (int f = 0; f < p->F; f++) {
+            const ptrdiff_t o = f * N + n0;
+            const double sc = p->scale[f];
+            double *df = d + f * TOF_BLOCK;
+            if (q) {
+                tof_from_iq(x + o, q + o, nb, ok, sc, phase ? phase + o : NULL, df,
+                            amp ? amp + o : NULL);
+                continue;
+            }
+            const double *ph = x + o;
             for (ptrdiff_t k = 0; k < nb; k++) {
                 const int in = ph[k] >= 0 && ph[k] < TOF_TWO_PI;   /* false for NaN too */
                 ok[k] &= in;
-                di[k] = in ? ph[k] * sc : 0.0;                 /* B3: no NaN reaches a floor */
+                df[k] = in ? ph[k] * sc : 0.0;                 /* B3: no NaN reaches a floor */
             }
         }
-        for (ptrdiff_t k = 0; k < nb; k++) all_ok &= ok[k];
-        tof_unwrap_block(p, d, nb, depth + n0, residual + n0, wraps + n0);
-        if (!all_ok) {
-            bad = 1;
-            tof_mark_bad(ok, nb, depth + n0, residual + n0, wraps + n0);
-        }
+        bad |= tof_unwrap_checked(p, d, ok, nb, depth + n0, residual + n0, wraps + n0);
     }
     return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }
 
-/* ------------------------------------------------------------------ fused */
-/* One block of sites [n0, n0 + nb): demodulate every frequency into the block's
-   distances (and the optional outputs), then unwrap the block. */
-TOF_INLINE void tof_depth_impl(const void *taps, ptrdiff_t N, ptrdiff_t n0, ptrdiff_t nb,
-                               const tof_plan *p, double *depth, double *residual,
-                               int32_t *wraps, double *phase, double *amp, double *offset, int t)
+int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double *freqs,
+                    const double *weights, double max_range, double *depth,
+                    double *residual, int32_t *wraps, int workers)
 {
-    double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
-    for (int f = 0; f < p->F; f++) {
-        const ptrdiff_t o0 = 4 * f * N + n0, o1 = o0 + N, o2 = o0 + 2 * N, o3 = o0 + 3 * N;
-        const double sc = p->scale[f];
-        double *df = d + f * TOF_BLOCK;
-        for (ptrdiff_t k = 0; k < nb; k++) {
-            const double I = tof_load(taps, o0 + k, t) - tof_load(taps, o2 + k, t);
-            const double Q = tof_load(taps, o3 + k, t) - tof_load(taps, o1 + k, t);
-            df[k] = tof_phase(I, Q);
-        }
-        if (phase) {
-            double *ph = phase + f * N + n0;
-            for (ptrdiff_t k = 0; k < nb; k++) ph[k] = df[k];
-        }
-        for (ptrdiff_t k = 0; k < nb; k++) df[k] *= sc;
-        if (amp) {
-            double *am = amp + f * N + n0;
-            for (ptrdiff_t k = 0; k < nb; k++) {
-                const double I = tof_load(taps, o0 + k, t) - tof_load(taps, o2 + k, t);
-                const double Q = tof_load(taps, o3 + k, t) - tof_load(taps, o1 + k, t);
-                am[k] = 0.5 * sqrt(I * I + Q * Q);
-            }
-        }
-        if (offset) {
-            double *of = offset + f * N + n0;
-            for (ptrdiff_t k = 0; k < nb; k++)
-                of[k] = 0.25 * ((tof_load(taps, o0 + k, t) + tof_load(taps, o1 + k, t))
-                                + (tof_load(taps, o2 + k, t) + tof_load(taps, o3 + k, t)));
-        }
-    }
-    tof_unwrap_block(p, d, nb, depth + n0, residual + n0, wraps + n0);
+    return tof_unwrap_sites(phase, NULL, F, N, freqs, weights, max_range, depth, residual,
+                            wraps, NULL, NULL, workers);
 }
 
-#define TOF_DEPTH(S, T)                                                                         \
-TOF_CLONES static void tof_depth_##S(const void *taps, ptrdiff_t N, ptrdiff_t n0, ptrdiff_t nb, \
-                                     const tof_plan *p, double *depth, double *residual,       \
-                                     int32_t *wraps, double *phase, double *amp,               \
-                                     double *offset)                                           \
-{                                                                                               \
-    tof_depth_impl(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset, T);          \
-}
-TOF_DEPTH(u16, RGBZ_T_U16)
-TOF_DEPTH(f32, RGBZ_T_F32)
-TOF_DEPTH(f64, RGBZ_T_F64)
+/* ------------------------------------------------------------------ the tap types */
+/* the arrays of a call that reads taps: taps (F, 4, N); the plan, depth, residual and
+   wraps of rgbz_tof_depth (NULL for rgbz_tof_demodulate); phase, amp, offset (F, N) or
+   NULL where not stored */
+typedef struct {
+    const void *taps;
+    ptrdiff_t F, N;
+    const tof_plan *p;
+    double *depth, *residual;
+    int32_t *wraps;
+    double *phase, *amp, *offset;
+} tof_args;
 
-int RGBZ_SYM(rgbz_tof_depth)(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
-                             const double *freqs, const double *weights, double max_range,
-                             double *depth, double *residual, int32_t *wraps, double *phase,
-                             double *amp, double *offset, int workers)
+/* the per-block kernels that read the taps, per tap type (PyWavelets' template scheme) */
+#if defined(TAP_T) || defined(TS)
+#error "tof.c: the template parameters must not be defined here"
+#endif
+#define TAP_T uint16_t
+#define TS u16
+#include "tof.template.h"
+#undef TAP_T
+#undef TS
+#define TAP_T float
+#define TS f32
+#include "tof.template.h"
+#undef TAP_T
+#undef TS
+#define TAP_T double
+#define TS f64
+#include "tof.template.h"
+#undef TAP_T
+#undef TS
+
+/* the per-block kernels by tap type (indexed by in_type - RGBZ_T_U16) and the loop over
+   the blocks of the two entry points that read taps */
+typedef void (*tof_block_fn)(const tof_args *a, ptrdiff_t n0, ptrdiff_t nb);
+static const tof_block_fn tof_demod_by_type[3] = {tof_demod_u16, tof_demod_f32, tof_demod_f64};
+static const tof_block_fn tof_depth_by_type[3] = {tof_depth_u16, tof_depth_f32, tof_depth_f64};
+
+static int tof_tap_blocks(int in_type, const tof_args *a, const tof_block_fn *by_type,
+                          int workers)
 {
-    tof_plan plan;
-    (void)workers;
-    if (!taps || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
-    int st = tof_plan_init(&plan, F, freqs, weights, max_range);
-    if (st != RGBZ_OK) return st;
-    if (N == 0) return RGBZ_OK;
+    if (a->N == 0) return RGBZ_OK;
     if (in_type != RGBZ_T_U16 && in_type != RGBZ_T_F32 && in_type != RGBZ_T_F64)
         return RGBZ_EINVAL;
-    const tof_plan *p = &plan;
-    TOF_PARALLEL
+    const tof_block_fn fn = by_type[in_type - RGBZ_T_U16];
+    const ptrdiff_t N = a->N;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
     for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
-        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
-        if (in_type == RGBZ_T_U16)
-            tof_depth_u16(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset);
-        else if (in_type == RGBZ_T_F32)
-            tof_depth_f32(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset);
-        else
-            tof_depth_f64(taps, N, n0, nb, p, depth, residual, wraps, phase, amp, offset);
+        const ptrdiff_t n0 = blk * TOF_BLOCK;
+        fn(a, n0, N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK);
     }
     return RGBZ_OK;
 }
 
-int RGBZ_SYM(rgbz_tof_depth_iq)(const double *i_comp, const double *q_comp, ptrdiff_t F,
-                                ptrdiff_t N, const double *freqs, const double *weights,
-                                double max_range, double *depth, double *residual,
-                                int32_t *wraps, double *phase, double *amp, int workers)
+int rgbz_tof_demodulate(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                        double *phase, double *amp, double *offset, int workers)
+{
+    if (!taps || !phase || !amp || !offset || F < 1 || N < 0) return RGBZ_EINVAL;
+    const tof_args a = {taps, F, N, NULL, NULL, NULL, NULL, phase, amp, offset};
+    return tof_tap_blocks(in_type, &a, tof_demod_by_type, workers);
+}
+
+int rgbz_tof_depth(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                   const double *freqs, const double *weights, double max_range,
+                   double *depth, double *residual, int32_t *wraps, double *phase,
+                   double *amp, double *offset, int workers)
 {
     tof_plan plan;
-    (void)workers;
-    if (!i_comp || !q_comp || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
+    if (!taps || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
     int st = tof_plan_init(&plan, F, freqs, weights, max_range);
     if (st != RGBZ_OK) return st;
-    const tof_plan *p = &plan;
-    int bad = 0;
-    TOF_PARALLEL_BAD
-    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
-        double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
-        int ok[TOF_BLOCK];
-        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
-        int all_ok = 1;
-        for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
-        for (int f = 0; f < p->F; f++) {
-            const double *ic = i_comp + f * N + n0, *qc = q_comp + f * N + n0;
-            const double sc = p->scale[f];
-            double *df = d + f * TOF_BLOCK;
-            double *ph = phase ? phase + f * N + n0 : NULL;
-            double *am = amp ? amp + f * N + n0 : NULL;
-            for (ptrdiff_t k = 0; k < nb; k++) {
-                const int in = fabs(ic[k]) <= DBL_MAX && fabs(qc[k]) <= DBL_MAX;  /* not NaN */
-                ok[k] &= in;
-                df[k] = in ? tof_phase(ic[k], qc[k]) : 0.0;
-            }
-            if (ph)
-                for (ptrdiff_t k = 0; k < nb; k++) ph[k] = df[k];
-            for (ptrdiff_t k = 0; k < nb; k++) df[k] *= sc;
-            if (am)
-                for (ptrdiff_t k = 0; k < nb; k++)
-                    am[k] = 0.5 * sqrt(ic[k] * ic[k] + qc[k] * qc[k]);
-        }
-        for (ptrdiff_t k = 0; k < nb; k++) all_ok &= ok[k];
-        tof_unwrap_block(p, d, nb, depth + n0, residual + n0, wraps + n0);
-        if (!all_ok) {
-            bad = 1;
-            tof_mark_bad(ok, nb, depth + n0, residual + n0, wraps + n0);
-        }
-    }
-    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
+    const tof_args a = {taps, F, N, &plan, depth, residual, wraps, phase, amp, offset};
+    return tof_tap_blocks(in_type, &a, tof_depth_by_type, workers);
+}
+
+int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                      ptrdiff_t N, const double *freqs, const double *weights,
+                      double max_range, double *depth, double *residual,
+                      int32_t *wraps, double *phase, double *amp, int workers)
+{
+    if (!q_comp) return RGBZ_EINVAL;
+    return tof_unwrap_sites(i_comp, q_comp, F, N, freqs, weights, max_range, depth, residual,
+                            wraps, phase, amp, workers);
 }

@@ -3,19 +3,67 @@
 
 No logic of its own: the Python layer validates arguments and allocates every
 output; this module only adapts buffers and maps status codes.
+
+The same source builds two extension modules (src/rgbz_fast/meson.build):
+``rgbz_fast._kernels``, which every user loads, and ``rgbz_fast._kernels_count``,
+linked against the counting build of the C core (-DRGBZ_COUNT_OPS), which only
+:mod:`rgbz_fast._devtools.opcount` loads. Their Python interface is the same; the counting
+module wants ``opcounts`` where the normal one refuses it.
+
+The enums of csrc/rgbz.h are ``cpdef enum`` classes here, and the name -> code
+tables of the Python layer (:data:`METHODS`, :data:`PRECISIONS`,
+:data:`EXP_MODES`, :data:`DEMOSAIC_MODES`, :data:`OP_CATEGORIES`) are built from
+them, so no code is typed twice.
 """
 
 from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint64_t
 
 cdef extern from "rgbz.h" nogil:
-    int RGBZ_OK
-    int RGBZ_EINVAL
-    int RGBZ_ENOMEM
-    int RGBZ_EDOMAIN
-    int RGBZ_T_U8, RGBZ_T_U16, RGBZ_T_F32, RGBZ_T_F64
-    int RGBZ_NOPS
-    int RGBZ_TOF_MAX_WRAPS
-    int RGBZ_TOF_MAX_FREQS
+    cpdef enum rgbz_status:
+        RGBZ_OK
+        RGBZ_EINVAL
+        RGBZ_ENOMEM
+        RGBZ_EDOMAIN
+    cpdef enum rgbz_type:
+        RGBZ_T_U8
+        RGBZ_T_U16
+        RGBZ_T_F32
+        RGBZ_T_F64
+    cpdef enum rgbz_precision:
+        RGBZ_P_FLOAT32
+        RGBZ_P_FLOAT64
+    cpdef enum rgbz_method:
+        RGBZ_M_BILINEAR
+        RGBZ_M_BI
+        RGBZ_M_EDI_CENTRAL
+        RGBZ_M_EDI_LINE
+        RGBZ_M_SG
+        RGBZ_M_EDI_ROWS
+    cpdef enum rgbz_exp_mode:
+        RGBZ_EXP_LIBM
+        RGBZ_EXP_FAST
+    cpdef enum rgbz_demosaic_mode:
+        RGBZ_DM_REFLECT
+        RGBZ_DM_PERIOD
+    cpdef enum rgbz_op:
+        RGBZ_OP_ADD
+        RGBZ_OP_MUL
+        RGBZ_OP_DIV
+        RGBZ_OP_EXP
+        RGBZ_OP_ABS
+        RGBZ_OP_CMP
+        RGBZ_OP_SQRT
+        RGBZ_OP_ATAN2
+    enum:
+        RGBZ_NOPS
+        RGBZ_MAX_TAPS
+        RGBZ_MAX_CAND
+        RGBZ_MAX_PAIRS
+        RGBZ_NGROUPS
+        RGBZ_MAX_CD
+        RGBZ_TOF_MAX_FREQS
+        RGBZ_TOF_MAX_WRAPS
+        RGBZ_PLAN_FIELDS
     ctypedef struct rgbz_plan:
         pass
     ctypedef struct rgbz_params:
@@ -29,14 +77,12 @@ cdef extern from "rgbz.h" nogil:
         int32_t clip_on
         double clip_level
     int rgbz_plan_layout(int64_t *out, int n)
+    int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
     int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
                          Py_ssize_t rows, Py_ssize_t cols, int py, int px,
                          const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
                          const rgbz_params *params, uint64_t *opcounts)
-    int rgbz_reconstruct_count(int in_type, int precision, const void *src, void *dst,
-                               Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                               const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
-                               const rgbz_params *params, uint64_t *opcounts)
+    int rgbz_fast_exp(int type, const void *x, void *out, Py_ssize_t n)
     int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                              Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
                              int mode, int workers)
@@ -53,12 +99,10 @@ cdef extern from "rgbz.h" nogil:
                           Py_ssize_t N, const double *freqs, const double *weights,
                           double max_range, double *depth, double *residual, int32_t *wraps,
                           double *phase, double *amp, int workers)
-    int rgbz_tof_demodulate_count(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
-                                  double *phase, double *amp, double *offset, int workers)
     int rgbz_have_openmp()
     int rgbz_max_threads()
-    int rgbz_counting_build_count()
-    int rgbz_opcount_target_count(uint64_t *counts)
+    int rgbz_counting_build()
+    int rgbz_opcount_target(uint64_t *counts)
 
 cdef extern from "learned.h" nogil:
     ctypedef struct rgbz_learned_filters:
@@ -80,10 +124,6 @@ cdef extern from "learned.h" nogil:
                      Py_ssize_t cols, int py, int px, const int32_t *phase_map,
                      const rgbz_learned_filters *f, double maxval, int workers,
                      uint64_t *opcounts)
-    int rgbz_learned_count(int in_type, int precision, const void *src, void *dst,
-                           Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                           const int32_t *phase_map, const rgbz_learned_filters *f,
-                           double maxval, int workers, uint64_t *opcounts)
 cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
                            const double *g_re, const double *g_im, const double *g_var,
@@ -119,9 +159,25 @@ cdef int _type_code(frame_t *p) noexcept nogil:
     else:
         return RGBZ_T_F64
 
+
+def _codes(enum_class, prefix):
+    """{name: code} of a C enum, the name its member's lower-case suffix after ``prefix``."""
+    return {m.name[len(prefix):].lower(): int(m) for m in enum_class}
+
+
 NOPS = RGBZ_NOPS
 TOF_MAX_WRAPS = RGBZ_TOF_MAX_WRAPS
 TOF_MAX_FREQS = RGBZ_TOF_MAX_FREQS
+#: the sizes of the arrays of one plan (rgbz_plan, csrc/rgbz.h)
+PLAN_LIMITS = {"max_taps": RGBZ_MAX_TAPS, "max_cand": RGBZ_MAX_CAND,
+               "max_pairs": RGBZ_MAX_PAIRS, "ngroups": RGBZ_NGROUPS, "max_cd": RGBZ_MAX_CD}
+#: reconstruction methods, precisions, exponentials, demosaic border modes and operation
+#: counters: {name: code}, from the enums of csrc/rgbz.h
+METHODS = _codes(rgbz_method, "RGBZ_M_")
+PRECISIONS = _codes(rgbz_precision, "RGBZ_P_")
+EXP_MODES = _codes(rgbz_exp_mode, "RGBZ_EXP_")
+DEMOSAIC_MODES = _codes(rgbz_demosaic_mode, "RGBZ_DM_")
+OP_CATEGORIES = _codes(rgbz_op, "RGBZ_OP_")
 
 
 cdef int _raise_for(int status) except -1:
@@ -135,11 +191,41 @@ cdef int _raise_for(int status) except -1:
     raise RuntimeError(f"C kernel failed with status {status}")
 
 
+cdef uint64_t *_counters(uint64_t[::1] opcounts, Py_ssize_t need) except? NULL:
+    """The counters of a counting call: required by _kernels_count, refused by _kernels."""
+    if not rgbz_counting_build():
+        if opcounts is not None:
+            raise ValueError("opcounts: this module does not count operations; "
+                             "use rgbz_fast._kernels_count")
+        return NULL
+    if opcounts is None or opcounts.shape[0] < need:
+        raise ValueError(f"opcounts: the counting module needs {need} counters")
+    return &opcounts[0]
+
+
 def plan_layout():
     """(sizeof(rgbz_plan), field offsets...) as compiled, to check the Python dtype."""
-    cdef int64_t out[32]
-    _raise_for(rgbz_plan_layout(out, 32))
-    return tuple(out[i] for i in range(19))
+    cdef int64_t out[RGBZ_PLAN_FIELDS + 1]
+    _raise_for(rgbz_plan_layout(out, RGBZ_PLAN_FIELDS + 1))
+    return tuple(out[i] for i in range(RGBZ_PLAN_FIELDS + 1))
+
+
+def mask1_plan(int method, int sg_combined=0):
+    """The bytes of the constant Mask1 plan of csrc/recon_mask1.h for ``method``."""
+    cdef rgbz_plan plan
+    _raise_for(rgbz_mask1_plan(method, sg_combined, &plan))
+    return (<char *> &plan)[:sizeof(rgbz_plan)]
+
+
+def fast_exp(const rgb_t[::1] x, rgb_t[::1] out):
+    """The fast exponential of the reconstruction (exp="fast") of every element of ``x``."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    if x.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_fast_exp(t, &x[0], &out[0], x.shape[0])
+    _raise_for(status)
 
 
 def have_openmp():
@@ -150,40 +236,40 @@ def max_threads():
     return int(rgbz_max_threads())
 
 
+def counting_build():
+    """True in rgbz_fast._kernels_count, the module built with -DRGBZ_COUNT_OPS."""
+    return bool(rgbz_counting_build())
+
+
 def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
                 int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
                 int n_plans, double sigma_floor, double sigma_rel, double edge_ratio, double maxval,
                 int exp_mode, int workers, uint64_t[::1] opcounts=None, int mask1_fast=0,
                 clip_level=None):
-    """Run the reconstruction kernel (or its counting twin when ``opcounts`` is given).
+    """Run the reconstruction kernel.
 
+    ``opcounts`` (n_plans x NOPS counters): required by the counting module
+    (``_kernels_count``, single thread), refused by ``_kernels``.
     ``clip_level`` (DN, or None): known pixels at or above it are clipped; needs
     ``mask1_fast=0`` (the C core rejects the combination otherwise).
     """
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status
     cdef rgbz_params prm
-    cdef uint64_t *counts = NULL
+    cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> n_plans * RGBZ_NOPS)
     prm.sigma_floor = sigma_floor
     prm.sigma_rel = sigma_rel
     prm.edge_ratio = edge_ratio
     prm.maxval = maxval
     prm.exp_mode = exp_mode
-    prm.workers = workers
+    prm.workers = 1 if counts != NULL else workers
     prm.mask1_fast = mask1_fast
     prm.clip_on = 0 if clip_level is None else 1
     prm.clip_level = 0.0 if clip_level is None else float(clip_level)
-    if opcounts is not None:
-        counts = &opcounts[0]
     with nogil:
-        if counts != NULL:
-            status = rgbz_reconstruct_count(
-                in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
-                py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
-        else:
-            status = rgbz_reconstruct(
-                in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
-                py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, NULL)
+        status = rgbz_reconstruct(
+            in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
+            py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
     _raise_for(status)
 
 
@@ -201,23 +287,21 @@ def demosaic_malvar(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst, const int32
 
 def tof_demodulate(const tap_t[:, :, ::1] taps, double[:, ::1] phase, double[:, ::1] amp,
                    double[:, ::1] offset, int workers, uint64_t[::1] opcounts=None):
-    """Four-tap demodulation: taps (F, 4, N) -> phase, amplitude, offset (F, N)."""
+    """Four-tap demodulation: taps (F, 4, N) -> phase, amplitude, offset (F, N).
+
+    ``opcounts`` (NOPS counters): as for :func:`reconstruct`.
+    """
     cdef int status
     cdef int in_type = _type_code(<tap_t *> NULL)
+    cdef uint64_t *counts = _counters(opcounts, RGBZ_NOPS)
     if taps.shape[2] == 0:
         return
-    if opcounts is not None:
-        if opcounts.shape[0] < RGBZ_NOPS:
-            raise ValueError(f"opcounts: expected {RGBZ_NOPS} counters")
-        _raise_for(rgbz_opcount_target_count(&opcounts[0]))
-        with nogil:
-            status = rgbz_tof_demodulate_count(in_type, &taps[0, 0, 0], taps.shape[0],
-                                               taps.shape[2], &phase[0, 0], &amp[0, 0],
-                                               &offset[0, 0], 1)
-    else:
-        with nogil:
-            status = rgbz_tof_demodulate(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
-                                         &phase[0, 0], &amp[0, 0], &offset[0, 0], workers)
+    if counts != NULL:
+        _raise_for(rgbz_opcount_target(counts))
+        workers = 1
+    with nogil:
+        status = rgbz_tof_demodulate(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                     &phase[0, 0], &amp[0, 0], &offset[0, 0], workers)
     _raise_for(status)
 
 
@@ -437,7 +521,8 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
             const double[:, :, ::1] w_f64, int radius, int hash_radius, double maxval,
             int workers, const float[:, :, :, ::1] wd_f32=None,
             const double[:, :, :, ::1] wd_f64=None, uint64_t[::1] opcounts=None):
-    """Run the learned reconstruction (or its counting twin when ``opcounts`` is given).
+    """Run the learned reconstruction. ``opcounts`` (n_phases x NOPS counters): required by
+    the counting module (``_kernels_count``, single thread), refused by ``_kernels``.
 
     Weights are tap-major, (n_phases, n_taps_max, n_buckets); thresholds
     (n_phases, levels - 1), the coherence ones squared; the optional dense weights
@@ -481,20 +566,10 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
             or w_f64.shape[2] != f.n_buckets or tap_dy.shape[1] != f.n_taps_max
             or tap_dx.shape[1] != f.n_taps_max or pair_b.shape[2] != f.n_pairs_max):
         raise ValueError("learned: inconsistent filter arrays")
-    cdef uint64_t *counts = NULL
-    if opcounts is not None:
-        if opcounts.shape[0] < f.n_phases * RGBZ_NOPS:
-            raise ValueError(f"opcounts: expected {f.n_phases * RGBZ_NOPS} counters")
-        counts = &opcounts[0]
+    cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> f.n_phases * RGBZ_NOPS)
     with nogil:
-        if counts != NULL:
-            status = rgbz_learned_count(in_type, precision, &src[0, 0], &dst[0, 0],
-                                        src.shape[0], src.shape[1], py, px, &phase_map[0], &f,
-                                        maxval, 1, counts)
-        else:
-            status = rgbz_learned(in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0],
-                                  src.shape[1], py, px, &phase_map[0], &f, maxval, workers,
-                                  NULL)
+        status = rgbz_learned(in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0],
+                              src.shape[1], py, px, &phase_map[0], &f, maxval, workers, counts)
     _raise_for(status)
 
 

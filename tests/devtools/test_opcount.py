@@ -1,5 +1,5 @@
 """Operation counts of the counting build against numbers derived by hand from
-csrc/recon_site.h, and the reading of the paper's Table 1."""
+csrc/recon_core.template.h, and the reading of the paper's Table 1."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import rgbz_fast as rz
-from rgbz_fast import _kernels
+from rgbz_fast import _kernels_count
 from rgbz_fast.reconstruction._plans import build_plans
 from rgbz_fast.reconstruction._reconstruct import _plans_for
 from rgbz_fast._devtools.opcount import (CATEGORIES, TABLE1, count_operations, main, opcount_report,
@@ -62,7 +62,7 @@ def test_bilinear_counts_by_hand(pattern, precision):
 
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_bi_counts_by_hand(pattern):
-    # plan interpreter (recon_site.h): beta (eq. 4): n(n-1)/2 |c_k - c_m| (one sub + one abs
+    # the plans of _plans.py: beta (eq. 4): n(n-1)/2 |c_k - c_m| (one sub + one abs
     # each), each added to both S_k and S_m (n(n-1) adds); weights alpha_k / S_k (n
     # divisions); den: n-1 adds; num: n-1 subs, n-1 muls, n-1 adds; result c0 + num/den:
     # 1 add, 1 div. BI never falls back (alpha/S > 0): the counts do not depend on the data.
@@ -121,9 +121,9 @@ def test_per_site_counts_agree_with_per_plan_counts():
     data = rng.integers(0, 2048, (32, 32)).astype(np.uint16)
     data[pattern.z_mask(data.shape)] = 0
     phase_map, plans, n = _plans_for(pattern, "bi", "auto", "intensity")
-    counts = np.zeros(n * _kernels.NOPS, np.uint64)
-    _kernels.reconstruct(data, np.empty_like(data), 1, 4, 4, phase_map, plans, n, 1e-3, 0.0,
-                         0.5, 2047.0, 0, 1, opcounts=counts)
+    counts = np.zeros(n * _kernels_count.NOPS, np.uint64)
+    _kernels_count.reconstruct(data, np.empty_like(data), 1, 4, 4, phase_map, plans, n, 1e-3, 0.0,
+                               0.5, 2047.0, 0, 1, opcounts=counts)
     per_plan = counts.reshape(n, -1).astype(float) / (data.size // 16)
     res = count_operations("bi", pattern, frame=rz.RawFrame(data, pattern, 11))
     _, pl = build_plans(pattern, "bi")

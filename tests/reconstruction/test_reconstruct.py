@@ -901,7 +901,7 @@ def test_colour_difference_domain_matches_reference(pname, method):
 @pytest.mark.parametrize("pname", ["mask1", "mask1_rggb", "mask1_bggr", "mask1_gbrg"])
 def test_mask1_fast_path_equals_generic_interpreter(pname, method, sg_mode, precision,
                                                     monkeypatch):
-    """csrc/recon_mask1.h (constant offsets) against the plan interpreter, same options."""
+    """csrc/recon_mask1.h (the constant plans) against the plans of _plans.py, same options."""
     from rgbz_fast.reconstruction import _reconstruct as R
 
     p = rz.get_pattern(pname)

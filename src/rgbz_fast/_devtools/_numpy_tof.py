@@ -13,9 +13,9 @@ with, and the "NumPy" column of ``rgbz-fast bench``'s ToF section.
   weighted mean of ``d_i + k_i a_i``. The precomputed constants are the C
   plan's (``1 / a_i``, ``A / a_i``, ``w_i a_i^2``), so that from the same
   phases the C kernel and this code give the same wrap counts and depths
-  equal to the last bit (tests/test_tof_isp.py).
+  equal to the last bit (tests/tof/test_tof.py).
 
-Nothing here validates its input: call it with what ``tof_isp`` accepts.
+Nothing here validates its input: call it with what :mod:`rgbz_fast.tof` accepts.
 """
 
 from __future__ import annotations
@@ -105,7 +105,7 @@ def numpy_unwrap(phase, frequencies, weights=None, max_range=None, plan=None):
 
 def numpy_tof_depth(taps, frequencies, weights=None, max_range=None):
     """Demodulation + unwrapping in NumPy: (depth, residual, wraps, phase, amplitude, offset),
-    the outputs of ``tof_isp.demodulate_unwrap``."""
+    the outputs of ``rgbz_fast.tof.demodulate_unwrap``."""
     phase, amp, offset = numpy_demodulate(taps)
     depth, residual, wraps = numpy_unwrap(phase, frequencies, weights, max_range)
     return depth, residual, wraps, phase, amp, offset

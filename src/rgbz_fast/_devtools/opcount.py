@@ -34,7 +34,7 @@ import sys
 
 import numpy as np
 
-from .. import _kernels
+from .. import _kernels_count
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
 from .._validate import parse_shape
@@ -46,8 +46,8 @@ from ._common import CliError, check_out_dir, common_parser, run_main, write_jso
 __all__ = ["CATEGORIES", "TABLE1", "TABLE1_CATEGORIES", "count_operations", "opcount_table",
            "opcount_report", "count_tof_operations", "main"]
 
-#: counter categories, in the order of csrc/rgbz.h (RGBZ_OP_*)
-CATEGORIES = ("add", "mul", "div", "exp", "abs", "cmp", "sqrt", "atan2")
+#: counter categories, in the order of the C enum rgbz_op (csrc/rgbz.h, RGBZ_OP_*)
+CATEGORIES = tuple(sorted(_kernels_count.OP_CATEGORIES, key=_kernels_count.OP_CATEGORIES.get))
 #: the categories Table 1 reports
 TABLE1_CATEGORIES = ("add", "mul", "div", "exp")
 #: target colour groups (Table 1 splits Mask2 into green and red/blue)
@@ -145,14 +145,15 @@ def _site_counts(data, pattern, method, precision, kw, ablate_beta=False, fast_p
     site_plans = np.ascontiguousarray(plans[site_plan])
     full_map = np.full(rows * cols, -1, np.int32)
     full_map[yy * cols + xx] = np.arange(yy.size, dtype=np.int32)
-    counts = np.zeros(yy.size * _kernels.NOPS, np.uint64)
+    counts = np.zeros(yy.size * _kernels_count.NOPS, np.uint64)
     dst = np.empty_like(data)
     prec_code, exp_code = _kernel_codes(precision, kw)
-    _kernels.reconstruct(data, dst, prec_code, rows, cols, full_map,
-                         site_plans.view(np.uint8).reshape(-1), int(yy.size),
-                         float(kw["sigma_floor"]), float(kw["sigma_rel"]), float(kw["edge_ratio"]),
-                         float((1 << kw["bit_depth"]) - 1), exp_code, 1, opcounts=counts)
-    counts = counts.reshape(yy.size, _kernels.NOPS)
+    _kernels_count.reconstruct(data, dst, prec_code, rows, cols, full_map,
+                               site_plans.view(np.uint8).reshape(-1), int(yy.size),
+                               float(kw["sigma_floor"]), float(kw["sigma_rel"]),
+                               float(kw["edge_ratio"]), float((1 << kw["bit_depth"]) - 1),
+                               exp_code, 1, opcounts=counts)
+    counts = counts.reshape(yy.size, _kernels_count.NOPS)
     if fast_path and not ablate_beta and _uses_mask1_fast(pattern, method, kw):
         counts = (counts.astype(np.int64)
                   + _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw))
@@ -170,10 +171,10 @@ def _learned_site_counts(data, pattern, precision, bit_depth):
 
     filters = resolve_filters(None, pattern, bit_depth)
     n_ph = len(filters.geometry)
-    counts = np.zeros(n_ph * _kernels.NOPS, np.uint64)
+    counts = np.zeros(n_ph * _kernels_count.NOPS, np.uint64)
     _recon.run_learned(data, np.empty_like(data), pattern, filters, precision, bit_depth, 1,
-                       opcounts=counts)
-    counts = counts.reshape(n_ph, _kernels.NOPS)
+                       opcounts=counts, kernels=_kernels_count)
+    counts = counts.reshape(n_ph, _kernels_count.NOPS)
     P, Q = pattern.period
     targets, rows = [], []
     for k, ph in enumerate(filters.geometry):
@@ -204,7 +205,7 @@ def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
     phase_map, plans, n = _recon._plans_for(pattern, method, kw["sg_mode"], kw["domain"])
     P, Q = pattern.period
     rows, cols = data.shape
-    out = np.zeros((yy.size, _kernels.NOPS), np.int64)
+    out = np.zeros((yy.size, _kernels_count.NOPS), np.int64)
     for i, (y, x) in enumerate(zip(yy, xx)):
         # a 6x6 window starting on a tile boundary (so that the tile phase, and the kernel's
         # phase map, stay those of the frame) with the site 2 or 3 rows/cols in: its only
@@ -220,13 +221,13 @@ def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
         win = np.ascontiguousarray(data[np.ix_(ri, ci)])
         tot = []
         for fast in (0, 1):
-            c = np.zeros(n * _kernels.NOPS, np.uint64)
+            c = np.zeros(n * _kernels_count.NOPS, np.uint64)
             prec_code, exp_code = _kernel_codes(precision, kw)
-            _kernels.reconstruct(win, np.empty_like(win), prec_code, P, Q,
-                                 phase_map, plans, n, float(kw["sigma_floor"]),
-                                 float(kw["sigma_rel"]), float(kw["edge_ratio"]),
-                                 float((1 << kw["bit_depth"]) - 1), exp_code, 1,
-                                 opcounts=c, mask1_fast=fast)
+            _kernels_count.reconstruct(win, np.empty_like(win), prec_code, P, Q,
+                                       phase_map, plans, n, float(kw["sigma_floor"]),
+                                       float(kw["sigma_rel"]), float(kw["edge_ratio"]),
+                                       float((1 << kw["bit_depth"]) - 1), exp_code, 1,
+                                       opcounts=c, mask1_fast=fast)
             tot.append(c.reshape(n, -1).sum(axis=0).astype(np.int64))
         out[i] = tot[1] - tot[0]
     return out
@@ -273,8 +274,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
         Count on this frame instead (e.g. a mosaicked natural image).
     path : {"auto", "generic"}
         ``"auto"``: the code :func:`rgbz_fast.reconstruct` runs (the Mask1
-        fast path of csrc/recon_mask1.h where it applies); ``"generic"``: the
-        plan interpreter of csrc/recon_site.h everywhere.
+        fast path, the constant plans of csrc/recon_mask1.h, where it applies);
+        ``"generic"``: the plans of ``_plans.py`` everywhere.
     **reconstruct_kwargs
         ``bit_depth``, ``sigma_floor``, ``sigma_rel``, ``edge_ratio``,
         ``sg_mode``, ``exp``, ``domain`` as for :func:`rgbz_fast.reconstruct`.
@@ -317,15 +318,15 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
 def count_tof_operations(n_sites=64, n_freqs=3, seed=0):
     """Operations of the four-tap ToF demodulation per measurement and frequency.
 
-    Runs the counting twin of ``_kernels.tof_demodulate`` on random taps.
-    Returns ``{category: count}``, or None when this build does not count the
-    demodulation (an older ``_kernels`` ignores its ``opcounts`` argument).
+    Runs ``_kernels_count.tof_demodulate`` on random taps.
+    Returns ``{category: count}``, or None when the counting module does not
+    count the demodulation.
     """
     taps = np.random.default_rng(seed).integers(0, 2048, (n_freqs, 4, n_sites)).astype(np.uint16)
     phase, amp, off = (np.empty((n_freqs, n_sites)) for _ in range(3))
-    counts = np.zeros(_kernels.NOPS, np.uint64)
+    counts = np.zeros(_kernels_count.NOPS, np.uint64)
     try:
-        _kernels.tof_demodulate(taps, phase, amp, off, 1, opcounts=counts)
+        _kernels_count.tof_demodulate(taps, phase, amp, off, 1, opcounts=counts)
     except (TypeError, ValueError, RuntimeError):
         return None
     if not counts.any():
@@ -468,9 +469,9 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "×ratio. Mask2 'red/blue' is Table 1's first number, 'green' its second. abs and "
            "cmp are counted separately (Table 1 has no such rows); 'add w/o β' leaves out the "
            "intensity factor of eq. 4. path: the code reconstruct() runs, the Mask1 fast path "
-           "(csrc/recon_mask1.h), the plan interpreter (csrc/recon_site.h) or the learned "
-           "kernel (csrc/learned.c: the hash, then one dot product over the taps; counted "
-           "by the counting build, the same at every site).")
+           "(csrc/recon_mask1.h) or the plan interpreter (_plans.py), one C core "
+           "(csrc/recon_core.template.h); or the learned kernel (csrc/learned.c: the hash, "
+           "then one dot product over the taps; the same at every site).")
 
 
 def main(argv=None):

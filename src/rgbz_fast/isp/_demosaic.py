@@ -40,8 +40,9 @@ __all__ = ["demosaic", "DEMOSAIC_METHODS", "DEMOSAIC_MODES"]
 
 #: the demosaic methods, in order of the docs
 DEMOSAIC_METHODS = ("malvar2004", "menon2007", "bilinear")
-#: border modes: scipy "reflect" (as colour-demosaicing) or shift by whole periods
-DEMOSAIC_MODES = {"reflect": 0, "period": 1}
+#: border modes: scipy "reflect" (as colour-demosaicing) or shift by whole periods;
+#: {name: code} from the C enum rgbz_demosaic_mode (csrc/rgbz.h)
+DEMOSAIC_MODES = dict(_kernels.DEMOSAIC_MODES)
 
 # margin added around the CFA for the colour-demosaicing methods in "period" mode: more
 # than the support of Menon 2007 (5-tap directional filters, 3x3 decision window,

@@ -15,15 +15,18 @@ import math
 
 import numpy as np
 
+from .. import _kernels
 from .._patterns import Pattern, Z
 
 __all__ = ["METHODS", "build_plans", "PLAN_DTYPE", "ORIENTATIONS", "SEMI_GRADIENTS"]
 
-METHODS = {"bilinear": 0, "bi": 1, "edi_central": 2, "edi_line": 3, "sg": 4, "edi_rows": 5}
+#: {method name: code}, from the C enum rgbz_method (csrc/rgbz.h)
+METHODS = dict(_kernels.METHODS)
 ORIENTATIONS = ("vertical", "horizontal", "diag_nw_se", "diag_ne_sw")
 SEMI_GRADIENTS = ("N", "S", "W", "E", "NW", "NE", "SW", "SE")
 
-MAX_TAPS, MAX_CAND, MAX_PAIRS, NGROUPS, MAX_CD = 40, 24, 96, 12, 8
+MAX_TAPS, MAX_CAND, MAX_PAIRS, NGROUPS, MAX_CD = (
+    _kernels.PLAN_LIMITS[k] for k in ("max_taps", "max_cand", "max_pairs", "ngroups", "max_cd"))
 _SG, _GRAD = 0, 8   # first group index of each family
 
 PLAN_DTYPE = np.dtype([
@@ -36,14 +39,16 @@ PLAN_DTYPE = np.dtype([
     ("pair_gmask", "<i4", MAX_PAIRS),
     ("target", "<i4"), ("use_cd", "<i4"),
     ("cd_n", "<i4", MAX_CAND + 1), ("cd_tap", "<i4", (MAX_CAND + 1, MAX_CD)),
+    ("sum_from_zero", "<i4"), ("gamma_mask", "<i4"),
     ("cand_alpha", "<f8", MAX_CAND), ("cand_sgscale", "<f8", MAX_CAND),
     ("group_scale", "<f8", NGROUPS),
     ("cd_w", "<f8", (MAX_CAND + 1, MAX_CD)),
 ], align=True)
 
 _LAYOUT_FIELDS = ("method", "use_ab", "tap_dy", "tap_dx", "cand_tap", "cand_ori", "cand_sgmask",
-                  "pair_a", "pair_b", "pair_gmask", "target", "cand_alpha", "cand_sgscale",
-                  "group_scale", "use_cd", "cd_n", "cd_tap", "cd_w")
+                  "pair_a", "pair_b", "pair_gmask", "target", "use_cd", "cd_n", "cd_tap",
+                  "sum_from_zero", "gamma_mask", "cand_alpha", "cand_sgscale", "group_scale",
+                  "cd_w")
 
 
 def check_layout(c_layout):
@@ -209,6 +214,9 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
             plan = np.zeros((), PLAN_DTYPE)
             plan["method"] = METHODS[method]
             plan["target"] = target
+            # sums from 0, every gamma of a group with differences evaluated: the arithmetic
+            # whose operation counts docs/reports/opcount.md reports (csrc/rgbz.h)
+            plan["sum_from_zero"] = 1
             taps: dict[tuple[int, int], int] = {}
 
             def tap(off):
@@ -286,6 +294,9 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
                     plan["pair_gmask"][i] = m
                 plan["n_pairs"] = len(pair_mask)
                 plan["group_scale"] = np.where(counts > 0, 1.0 / np.maximum(counts, 1), 0.0)
+                evaluated = ([*range(_SG, _GRAD)] if plan["use_sg"] else []) + (
+                    [*range(_GRAD, NGROUPS)] if plan["use_grad"] else [])
+                plan["gamma_mask"] = sum(1 << g for g in evaluated if counts[g] > 0)
 
                 if plan["use_sg"]:
                     valid = {s for s in range(8) if counts[_SG + s] > 0}

@@ -28,11 +28,12 @@ METHODS = (*PLAN_METHODS, "learned")
 
 check_layout(_kernels.plan_layout())
 
-#: the kernels' codes of the precisions and exponentials (rgbz.h)
-_PRECISION_CODES = {"float32": 0, "float64": 1}
-_EXP_CODES = {"libm": 0, "fast": 1}
-#: use the Mask1 fast path (csrc/recon_mask1.h) where it applies; tests switch it off to
-#: compare it with the generic plan interpreter
+#: the kernels' codes of the precisions and exponentials: {name: code}, from the C enums
+#: rgbz_precision and rgbz_exp_mode (csrc/rgbz.h)
+_PRECISION_CODES = dict(_kernels.PRECISIONS)
+_EXP_CODES = dict(_kernels.EXP_MODES)
+#: run the interior sites of Mask1 on the constant plans of csrc/recon_mask1.h (the Mask1
+#: fast path) where it applies; tests switch it off to compare it with the plans of _plans.py
 _MASK1_FAST = True
 
 

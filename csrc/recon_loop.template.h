@@ -1,0 +1,237 @@
+/*
+ * recon_loop.template.h -- the frame loop of the missing-colour reconstruction
+ * (paper section 4, eqs. 2-19 and Shi et al.'s 1a-1e: recon_core.template.h
+ * holds the arithmetic) for one input element type and one precision.
+ *
+ * One pass over the frame; rows are split across OpenMP threads. In a row, the
+ * sites of one tile column share a plan: they are gathered in blocks of
+ * RGBZ_BLK sites (v[t][j] = tap t of site j, recon_core.template.h), run
+ * through the core, converted and stored.
+ *
+ * Memory layout: src and dst are rows x cols, C-contiguous, row stride cols
+ * elements. Inside the frame a block is gathered as strided streams (stride
+ * px, a compile-time 2 for 2x2 tiles; rgbz_sites says how taps share them);
+ * a block near the left or right border tap by tap through the column map
+ * (colmap[x + rx] = the column x moved back into the frame by whole periods,
+ * so that a tap keeps its colour); rows likewise through rgbz_extend.
+ *
+ * Mask1 (params->mask1_fast): the interior sites of the Z rows (two rows and
+ * columns from the border) run the compile-time plan of recon_mask1.h, the
+ * other sites the plan of _plans.py, as they always have (recon_mask1.h says
+ * why the two must stay apart).
+ *
+ * Template parameters, #defined by the includer (the end of recon_core.template.h, once
+ * per element type) and #undefined after:
+ *   IN_T       the element type of the frames: uint8_t, uint16_t, float, double
+ *   IS         its suffix: u8, u16, f32, f64
+ *   IN_IS_INT  1 for the integer types (results rounded half up), else 0
+ *   REAL, RS   the precision of the arithmetic and its suffix (as recon_core.template.h,
+ *              which must have been included with the same REAL before)
+ */
+#ifndef IN_T
+#error "recon_loop.template.h: #define IN_T (the element type of the frames)"
+#endif
+#ifndef IS
+#error "recon_loop.template.h: #define IS (the suffix of IN_T: u8, u16, f32 or f64)"
+#endif
+#ifndef IN_IS_INT
+#error "recon_loop.template.h: #define IN_IS_INT (1 for an integer IN_T, else 0)"
+#endif
+#if !defined(REAL) || !defined(RS)
+#error "recon_loop.template.h: #define REAL and RS (the precision) before including it"
+#endif
+
+#define LFN(name) RGBZ_CAT3(name, IS, RS)
+
+/* a result as an output element: clamped to [0, maxval] (a NaN to 0), integers rounded
+   half up; not counted (Table 1 does not count the conversion) */
+static inline IN_T LFN(rgbz_to_out)(REAL r, REAL maxval)
+{
+    r = r > (REAL)0 ? r : (REAL)0;
+    r = r > maxval ? maxval : r;
+#if IN_IS_INT
+    return (IN_T)(r + (REAL)0.5);
+#else
+    return (IN_T)r;
+#endif
+}
+
+/* where the taps of the sites x0, x0 + px, ... of one row are */
+typedef struct {
+    const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 1];   /* row of offset dy: rowp[dy + ry] */
+    const ptrdiff_t *colmap;                     /* column of x + dx: colmap[x + dx + rx] */
+    int ry, rx, px;
+} LFN(rgbz_row);
+
+/* tap t of the site x (one element, as stored) */
+static inline IN_T LFN(rgbz_tap)(const LFN(rgbz_row) *w, const rgbz_plan *p, int t, ptrdiff_t x,
+                                 int direct)
+{
+    const IN_T *row = w->rowp[p->tap_dy[t] + w->ry];
+    const ptrdiff_t c = x + p->tap_dx[t];
+    return row[direct ? c : w->colmap[c + w->rx]];
+}
+
+/* the value stream[j] = (REAL)row[x0 + j * stride], j < n */
+RGBZ_INLINE void LFN(rgbz_stream)(const IN_T *restrict row, ptrdiff_t x0, ptrdiff_t stride,
+                                  int n, REAL *restrict stream)
+{
+    const IN_T *restrict s = row + x0;
+    for (int j = 0; j < n; j++) stream[j] = (REAL)s[j * stride];
+}
+
+/*
+ * The sites x0, x0 + px, ... < x1 of the row, one plan: gathered, reconstructed, stored to
+ * drow. m1 >= 0: the interior sites of a Mask1 Z row, run with the constant plan m1 of
+ * recon_mask1.h (p is then that plan). Near clipping (clip_on) each site also gets the
+ * bit mask of its clipped taps, and a site whose candidates (edi_rows: its ten taps) are
+ * all clipped stays at or above the smallest of them: saturation is kept exactly in IN_T.
+ *
+ * Gathering: inside the frame, the taps of one kernel row whose columns are equal modulo
+ * px are one strided stream of that row shifted by whole sites (tap (dy, dx) of site j is
+ * element j + q of the stream (dy, r), dx = q px + r): each stream is converted once per
+ * block and the core reads the taps as pointers into it (Mask1: 7 streams for 16 taps).
+ * Near the borders each tap is gathered through the column map.
+ */
+RGBZ_CLONES static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p, int m1,
+                                        ptrdiff_t cols, ptrdiff_t x0, ptrdiff_t x1,
+                                        const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
+                                        int clip_on, double clip_level, IN_T *drow)
+{
+    enum { SPAN = RGBZ_BLK + 2 * RGBZ_MAX_RADIUS + 1 };
+    REAL buf[RGBZ_MAX_TAPS][SPAN];
+    const REAL *v[RGBZ_MAX_TAPS];
+    REAL r[RGBZ_BLK];
+    uint64_t clipped[RGBZ_BLK];
+    const int px = w->px, nt = p->n_taps;
+    /* the streams of the plan: kernel row s_dy, column phase s_r, shifts [s_q0, s_q1] */
+    int ns = 0, s_dy[RGBZ_MAX_TAPS], s_r[RGBZ_MAX_TAPS], s_q0[RGBZ_MAX_TAPS], s_q1[RGBZ_MAX_TAPS];
+    int tap_s[RGBZ_MAX_TAPS], tap_q[RGBZ_MAX_TAPS];
+    for (int t = 0; t < nt; t++) {
+        const int dx = p->tap_dx[t];
+        const int q = dx >= 0 ? dx / px : -((-dx + px - 1) / px), rr = dx - q * px;
+        int s = 0;
+        while (s < ns && !(s_dy[s] == p->tap_dy[t] && s_r[s] == rr)) s++;
+        if (s == ns) {
+            s_dy[ns] = p->tap_dy[t];
+            s_r[ns] = rr;
+            s_q0[ns] = s_q1[ns] = q;
+            ns++;
+        }
+        if (q < s_q0[s]) s_q0[s] = q;
+        if (q > s_q1[s]) s_q1[s] = q;
+        tap_s[t] = s;
+        tap_q[t] = q;
+    }
+    for (ptrdiff_t xb = x0; xb < x1; xb += (ptrdiff_t)px * RGBZ_BLK) {
+        const ptrdiff_t left = (x1 - 1 - xb) / px + 1;
+        const int n = (int)(left < RGBZ_BLK ? left : RGBZ_BLK);
+        const int direct = xb - w->rx >= 0 && xb + (ptrdiff_t)(n - 1) * px + w->rx < cols;
+        if (direct) {
+            for (int s = 0; s < ns; s++) {
+                const IN_T *row = w->rowp[s_dy[s] + w->ry];
+                const ptrdiff_t xs = xb + s_r[s] + (ptrdiff_t)s_q0[s] * px;
+                const int len = n + s_q1[s] - s_q0[s];
+                if (px == 2)
+                    LFN(rgbz_stream)(row, xs, 2, len, buf[s]);
+                else
+                    LFN(rgbz_stream)(row, xs, px, len, buf[s]);
+            }
+            for (int t = 0; t < nt; t++) v[t] = buf[tap_s[t]] + (tap_q[t] - s_q0[tap_s[t]]);
+        } else {
+            for (int t = 0; t < nt; t++) {
+                const IN_T *restrict row = w->rowp[p->tap_dy[t] + w->ry];
+                const ptrdiff_t *restrict cm = w->colmap + xb + w->rx + p->tap_dx[t];
+                for (int j = 0; j < n; j++) buf[t][j] = (REAL)row[cm[(ptrdiff_t)j * px]];
+                v[t] = buf[t];
+            }
+        }
+        if (m1 >= 0) {
+            RGBZ_CAT(rgbz_mask1_core, RS)[m1](v, n, kn, r);
+        } else if (clip_on) {
+            /* compared in double, exact for every input type and precision */
+            for (int j = 0; j < n; j++) clipped[j] = 0;
+            for (int t = 0; t < nt; t++)
+                for (int j = 0; j < n; j++)
+                    if ((double)LFN(rgbz_tap)(w, p, t, xb + (ptrdiff_t)j * px, direct) >= clip_level)
+                        clipped[j] |= (uint64_t)1 << t;
+            RGBZ_CAT(rgbz_core_clip, RS)(p, v, n, clipped, kn, r);
+        } else {
+            RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
+        }
+        IN_T *restrict d = drow + xb;
+        for (int j = 0; j < n; j++) d[(ptrdiff_t)j * px] = LFN(rgbz_to_out)(r[j], maxval);
+        if (!clip_on) continue;
+        const int rows_m = p->method == RGBZ_M_EDI_ROWS;
+        const int nk = rows_m ? nt : p->n_cand;
+        for (int j = 0; j < n; j++) {
+            int all = 1;
+            IN_T lo = 0;
+            for (int k = 0; k < nk && all; k++) {
+                const int t = rows_m ? k : p->cand_tap[k];
+                all = (int)((clipped[j] >> t) & 1u);
+                const IN_T raw = LFN(rgbz_tap)(w, p, t, xb + (ptrdiff_t)j * px, direct);
+                if (!k || raw < lo) lo = raw;
+            }
+            if (all && d[(ptrdiff_t)j * px] < lo) d[(ptrdiff_t)j * px] = lo;
+        }
+    }
+}
+
+static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, ptrdiff_t rows,
+                                 ptrdiff_t cols, int py, int px, const int32_t *phase_map,
+                                 const rgbz_plan *plans, int ry, int rx, const ptrdiff_t *colmap,
+                                 const rgbz_params *prm, uint64_t *opcounts)
+{
+    const RGBZ_CAT(rgbz_knobs, RS) kn = {(REAL)prm->sigma_floor, (REAL)prm->sigma_rel,
+                                (REAL)prm->edge_ratio, prm->exp_mode};
+    const REAL maxval = (REAL)prm->maxval;
+    const int clip_on = prm->clip_on;
+    const double clip_level = prm->clip_level;
+    (void)opcounts;
+    /* Mask1: the Z row phase zr and the constant plan of its interior sites */
+    int zr = -1, m1 = -1;
+    if (prm->mask1_fast) {
+        for (int i = 0; i < 4; i++)
+            if (phase_map[i] >= 0) zr = i / 2;
+        m1 = rgbz_mask1_index(plans[0].method, plans[0].use_grad && plans[0].use_sg);
+    }
+    const int nth = rgbz_threads(prm->workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t y = 0; y < rows; y++) {
+        LFN(rgbz_row) w;
+        w.colmap = colmap;
+        w.ry = ry;
+        w.rx = rx;
+        w.px = px;
+        for (int dy = -ry; dy <= ry; dy++)
+            w.rowp[dy + ry] = src + rgbz_extend(y + dy, rows, py) * cols;
+        memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
+        const int32_t *pm = phase_map + (y % py) * px;
+        int row_has_z = 0;
+        for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
+        if (!row_has_z) continue;           /* a colour-only row: the copy is the output */
+        /* segments [xa[s], xa[s + 1]) of the row, and their constant plan (-1: none): a
+           Mask1 Z row runs its interior [2, cols - 2) on the constant plan */
+        const int fast_row = m1 >= 0 && y >= 2 && y < rows - 2 && (y & 1) == zr && cols > 4;
+        const ptrdiff_t xa[4] = {0, fast_row ? 2 : cols, fast_row ? cols - 2 : cols, cols};
+        const int seg_m1[3] = {-1, m1, -1};
+        for (int s = 0; s < 3; s++) {
+            for (int ph = 0; ph < px; ph++) {
+                const int pl = pm[ph];
+                if (pl < 0 || xa[s] >= xa[s + 1]) continue;
+                const ptrdiff_t x0 = xa[s] + ((ph - xa[s] % px) + px) % px;
+#ifdef RGBZ_COUNT_OPS
+                rgbz_opc_cur = opcounts + (size_t)pl * RGBZ_NOPS;
+#endif
+                const int m = seg_m1[s];
+                LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], m, cols, x0,
+                                xa[s + 1], &kn, maxval, clip_on, clip_level, dst + y * cols);
+            }
+        }
+    }
+    return RGBZ_OK;
+}
+
+#undef LFN
