@@ -41,59 +41,18 @@ static int sr_threads(int workers, ptrdiff_t n)
 
 #define SR_CLIP(T, x) ((x) < (T)0 ? (T)0 : ((x) > (T)1 ? (T)1 : (x)))
 
-#define SR_TEMPLATE(T, S)                                                             \
-static void sr_prepare_##S(const T *x, T *p, ptrdiff_t n, int workers)                       \
-{                                                                                            \
-    const T knee = (T)0.0031308;                                                             \
-    int nt = sr_threads(workers, n);                                                         \
-    (void)nt;                                                                                \
-    SR_FOR(nt)                                                                               \
-    for (ptrdiff_t i = 0; i < n; i++) {                                                      \
-        const T v = SR_CLIP(T, x[i]);                                                        \
-        p[i] = v <= knee ? (T)1 : v;                                                         \
-    }                                                                                        \
-}                                                                                            \
-                                                                                             \
-static void sr_finish_##S##_u8(const T *x, const T *p, ptrdiff_t n, uint8_t *code,           \
-                               int workers)                                                  \
-{                                                                                            \
-    const T knee = (T)0.0031308, a = (T)1.055, b = (T)0.055, s = (T)12.92;                   \
-    const T top = (T)255, half = (T)0.5;                                                     \
-    int nt = sr_threads(workers, n);                                                         \
-    (void)nt;                                                                                \
-    SR_FOR(nt)                                                                               \
-    for (ptrdiff_t i = 0; i < n; i++) {                                                      \
-        const T v = SR_CLIP(T, x[i]);                                                        \
-        T e = p[i] * a;                                                                      \
-        e = e - b;                                                                           \
-        e = v <= knee ? v * s : e;                                                           \
-        T q = e * top;                                                                       \
-        q = q + half;                                                                        \
-        code[i] = (uint8_t)(int32_t)q;        /* q >= 0.5: truncation = floor */       \
-    }                                                                                        \
-}                                                                                            \
-                                                                                             \
-static void sr_finish_##S##_u16(const T *x, const T *p, ptrdiff_t n, uint16_t *code,         \
-                                int workers)                                                 \
-{                                                                                            \
-    const T knee = (T)0.0031308, a = (T)1.055, b = (T)0.055, s = (T)12.92;                   \
-    const T top = (T)65535, half = (T)0.5;                                                   \
-    int nt = sr_threads(workers, n);                                                         \
-    (void)nt;                                                                                \
-    SR_FOR(nt)                                                                               \
-    for (ptrdiff_t i = 0; i < n; i++) {                                                      \
-        const T v = SR_CLIP(T, x[i]);                                                        \
-        T e = p[i] * a;                                                                      \
-        e = e - b;                                                                           \
-        e = v <= knee ? v * s : e;                                                           \
-        T q = e * top;                                                                       \
-        q = q + half;                                                                        \
-        code[i] = (uint16_t)(int32_t)q;                                                 \
-    }                                                                                        \
-}
-
-SR_TEMPLATE(float, f32)
-SR_TEMPLATE(double, f64)
+/* srgb.template.h once per float type (REAL, RS), and within it the finish once per code
+   type (CODE_T, CS, CODE_TOP) */
+#define REAL float
+#define RS f32
+#include "srgb.template.h"
+#undef REAL
+#undef RS
+#define REAL double
+#define RS f64
+#include "srgb.template.h"
+#undef REAL
+#undef RS
 
 int rgbz_oetf_prepare(int type, const void *x, void *p, ptrdiff_t n, int workers)
 {
