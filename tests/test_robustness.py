@@ -1621,7 +1621,7 @@ CLI_ROWS = [
     C("cli.calibrate-no-distances", ("calibrate", "{d}/ok.npz"),
       "--distances: one distance per frame is needed"),
     C("cli.calibrate-no-taps", ("calibrate", "{d}/ok.npz", "{d}/ok.npz", "--distances", "1,2",
-                                "--out", "{d}/cal.npz"), "sweep: a frame holds no ToF taps"),
+                                "--out", "{d}/cal.npz"), "sweep: the frame holds no ToF taps"),
     C("cli.calibrate-both", ("calibrate", "{d}/ok.npz", "--simulate"),
       "give frame files or --simulate, not both"),
     C("cli.calibrate-sensor", ("calibrate", "--simulate", "--sensor", "[1]"),

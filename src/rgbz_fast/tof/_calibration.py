@@ -259,13 +259,15 @@ def _jsonable(meta):
     return out
 
 
-def _as_taps(item, name):
+def as_taps(item, name):
+    """``item`` (ToFTaps, or a RawFrame with taps) as ToFTaps; errors name ``name``."""
     if isinstance(item, RawFrame):
         if item.tof is None:
-            raise ValueError(f"{name}: a frame holds no ToF taps")
+            raise ValueError(f"{name}: the frame holds no ToF taps "
+                             f"({item.meta.get('tof', 'none')})")
         item = item.tof
     if not isinstance(item, ToFTaps):
-        raise TypeError(f"{name}: expected ToFTaps or RawFrames with taps, got "
+        raise TypeError(f"{name}: expected ToFTaps or a RawFrame with taps, got "
                         f"{type(item).__name__}")
     return item
 
@@ -276,7 +278,7 @@ def _dark_offsets(dark, first):
         raise ValueError("dark: no frames")
     acc = np.zeros((4, first.n_sites))
     for t in frames:
-        t = _as_taps(t, "dark")
+        t = as_taps(t, "dark")
         if t.taps.shape[1:] != first.taps.shape[1:] or t.block != first.block:
             raise ValueError(f"dark: taps of shape {t.taps.shape} do not match the sweep's "
                              f"{first.taps.shape}")
@@ -336,7 +338,7 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
             from None
     if len(frames) < 2:
         raise ValueError(f"sweep: expected at least 2 frames, got {len(frames)}")
-    frames = [_as_taps(t, "sweep") for t in frames]
+    frames = [as_taps(t, "sweep") for t in frames]
     first = frames[0]
     for t in frames[1:]:
         if (t.taps.shape != first.taps.shape or t.block != first.block

@@ -31,10 +31,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _kernels
-from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import check_choice, check_number, check_workers
-from ._calibration import ToFCalibration
+from ._calibration import ToFCalibration, as_taps
 from ._filters import (SiteGrid, _axis_offsets, _check_odd, denoise_phasors_bilateral,
                        flying_pixels)
 from ._noise import tap_variance
@@ -766,13 +765,7 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
     >>> bool(np.allclose(result.depth, 1.5, atol=2e-3)), bool(result.valid.all())
     (True, True)
     """
-    if isinstance(tof, RawFrame):
-        if tof.tof is None:
-            raise ValueError(f"tof: the frame holds no ToF taps ({tof.meta.get('tof', 'none')})")
-        tof = tof.tof
-    if not isinstance(tof, ToFTaps):
-        raise TypeError(f"tof: expected ToFTaps or a RawFrame with taps, got "
-                        f"{type(tof).__name__}")
+    tof = as_taps(tof, "tof")
     denoise = _check_denoise(denoise)
     window = (9 if denoise == "bilateral" else 5) if window is None else _check_window(window)
     range_scale = check_number(range_scale, "range_scale", lo=0, lo_open=True)
