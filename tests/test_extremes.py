@@ -4,7 +4,7 @@ Flat, zero and saturated frames, the full 16-bit range, denormal-range floats,
 a huge dynamic range and one-pixel features, for the reconstruction (every
 method, pattern, dtype and precision), the Malvar demosaic, the ToF
 demodulation and unwrapping, and the sensor and ISP stages around them. The
-promise is the numerical contract of DESIGN.md: finite input never gives NaN
+promise is the numerical contract (docs/guide/interpretation.md): finite input never gives NaN
 or inf, outputs stay in [0, 2**b - 1], a flat input stays exactly flat, and a
 feature only influences the 5x5 window around it.
 """

@@ -1,6 +1,6 @@
 """The benchmark and trade-off commands run and produce well-formed output.
 
-No timing is asserted (DESIGN.md, "Speed": speed is measured in benchmarks,
+No timing is asserted (speed is measured in benchmarks,
 never in timed tests); only the structure and the invariants of the reports.
 """
 

@@ -2,8 +2,9 @@
 
 The C kernels do their per-pixel arithmetic through the macros of
 ``csrc/rgbz_ops.h``. The same sources are compiled a second time with
-``-DRGBZ_COUNT_OPS`` (DESIGN.md, "Operation counts"), where every macro also
-increments a counter of its category: additions/subtractions,
+``-DRGBZ_COUNT_OPS`` into the extension ``_kernels_count`` (docs/guide/performance.md,
+"Operation counts beside Table 1"), where every macro also increments a
+counter of its category: additions/subtractions,
 multiplications, divisions, exponentials, absolute values, comparisons
 (min, max, branch tests), square roots and atan2. Loads, index arithmetic,
 the final clipping and the conversion to the output type are not counted, as

@@ -98,7 +98,7 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         colour-demosaicing (a mirrored pixel may change colour, as in the
         reference implementation). ``"period"``: a tap outside the frame is
         moved back by whole Bayer periods, so it keeps its colour (the
-        project's convention, DESIGN.md). Both agree two pixels (Malvar) or
+        library's convention, docs/guide/interpretation.md). Both agree two pixels (Malvar) or
         more from the border. colour-demosaicing methods get the period
         border by padding the CFA by 8 pixels this way and cropping.
     dtype : {None, float32, float64}
