@@ -405,11 +405,6 @@ def _parser():
     t.add_argument("--quiet", action="store_true", help="no progress bar or summary line")
     _add_limits(t)
 
-    for name, mod, text in (("bench", "bench", "kernel speed beside OpenCV and NumPy"),
-                            ("opcount", "opcount", "operations per missing pixel vs Table 1"),
-                            ("tradeoff", "tradeoff", "speed vs accuracy, Pareto plot")):
-        b = sub.add_parser(name, help=text, add_help=False)
-        b.set_defaults(delegate=mod)
     c = sub.add_parser(
         "calibrate", help="flat-wall sweep -> ToF phase calibration file",
         description="Fit the cyclic error of every modulation frequency and the phase offset "
@@ -473,6 +468,11 @@ def _parser():
     d.add_argument("--json", action="store_true", help="print the rows as JSON")
     _add_limits(d)
 
+    for name, mod, text in (("bench", "bench", "kernel speed beside OpenCV and NumPy"),
+                            ("opcount", "opcount", "operations per missing pixel vs Table 1"),
+                            ("tradeoff", "tradeoff", "speed vs accuracy, Pareto plot")):
+        b = sub.add_parser(name, help=text, add_help=False)
+        b.set_defaults(delegate=mod)
     sub.add_parser("config", help="how the C kernels were built")
     return ap
 
