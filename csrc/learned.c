@@ -33,6 +33,14 @@
 #define LRN_NOJAM
 #endif
 
+/* a helper inlined into its caller whatever its size, so that it is compiled for the caller's
+   instruction set (RGBZ_CLONES) and with the caller's constant arguments */
+#if defined(__GNUC__) || defined(__clang__)
+#define LRN_INLINE static inline __attribute__((always_inline))
+#else
+#define LRN_INLINE static inline
+#endif
+
 /* GCC >= 9 and Clang: vector extensions for the dense dot product of the fast path */
 #if (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 9)) && !defined(RGBZ_COUNT_OPS)
 #define LRN_VECTOR_EXT 1

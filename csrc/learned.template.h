@@ -142,30 +142,73 @@ static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const R
  * The fast path of a row (radius <= 3, learned.h's dense weights). The hash energies are
  * box sums: for direction d, E_d of the site at x is the sum over the rectangle of pair
  * starts (learned.h) of D_d = V_d (I(p + s_d) - I(p))^2, V_d = 1 where both pixels are
- * known, times 1 / n_d. The sums run first down the rows, for every column of the row at
- * once (cs), then along the row (bx): contiguous loops over x. The dot product then reads
- * each window row as 8 contiguous pixels against the bucket's dense weights.
+ * known, times 1 / n_d. Each thread keeps two rings of LRN_RING rows, indexed by the
+ * logical row (outside the frame: moved back by whole periods, so a function of the row
+ * alone): the frame rows as REAL (converted once, read by the differences and the dot
+ * products) and, per direction, the rows of D_d (computed once, read by the three or four
+ * Z rows whose rectangles hold them). The sums then run down the ring rows, for every
+ * column of the row at once (cs), and along the row (bx), in the order of the per-site
+ * formulation's box sums: contiguous loops over x. The dot product reads each window row
+ * as 8 contiguous REAL pixels against the bucket's dense weights.
  */
-/* c[x] = sum over nr rows i of v_i[x] (a_i[x + sx] - b_i[x])^2, one pass over x (nr is a
-   constant where it is inlined, so that the rows unroll and x vectorises) */
-static inline void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const IN_T *const *r1,
-                                               const IN_T *const *r2, const REAL *const *v,
+#define LRN_RING 8   /* rows of a ring: the fast path's windows span at most 2 * 3 + 1 */
+
+/* the ring row of logical row Y (slot Y mod LRN_RING), or -1 before it is computed */
+static inline int LRN_CAT(lrn_slot, IS, RS)(ptrdiff_t Y)
+{
+    return (int)(((Y % LRN_RING) + LRN_RING) % LRN_RING);
+}
+
+/* logical row Y as REAL: the frame row itself when it is already REAL, else its slot of the
+   ring (converted once; tag[slot] says which logical row a slot holds) */
+static const REAL *LRN_CAT(lrn_real_row, IS, RS)(const IN_T *src, ptrdiff_t rows,
+                                                  ptrdiff_t cols, int py, ptrdiff_t Y,
+                                                  REAL *ring, ptrdiff_t *tag)
+{
+    const IN_T *restrict s = src + lrn_extend(Y, rows, py) * cols;
+#if !IN_IS_INT
+    if (sizeof(IN_T) == sizeof(REAL)) return (const REAL *)(const void *)s;
+#endif
+    const int slot = LRN_CAT(lrn_slot, IS, RS)(Y);
+    REAL *restrict r = ring + (ptrdiff_t)slot * cols;
+    if (tag[slot] != Y) {
+        LRN_IVDEP for (ptrdiff_t x = 0; x < cols; x++) r[x] = (REAL)s[x];
+        tag[slot] = Y;
+    }
+    return r;
+}
+
+/* D[x] = v[x] (b[x] - a[x])^2 for x in [xa, xb) (b already shifted by the step's columns) */
+RGBZ_CLONES
+static void LRN_CAT(lrn_dsq, IS, RS)(REAL *restrict D, const REAL *restrict a,
+                                      const REAL *restrict b, const REAL *restrict v,
+                                      ptrdiff_t xa, ptrdiff_t xb)
+{
+    LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
+        const REAL df = OSUB(b[x], a[x]);
+        D[x] = OMUL(v[x], OMUL(df, df));
+    }
+}
+
+/* c[x] = sum over nr rows i of D_i[x], in the order of i (nr is a constant where it is
+   inlined, so that the rows unroll and x vectorises; one pass, one store per x) */
+LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const *D,
                                                const int nr, ptrdiff_t xa, ptrdiff_t xb)
 {
     LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
         REAL s = 0;
-        for (int i = 0; i < nr; i++) {
-            const REAL df = OSUB((REAL)r2[i][x], (REAL)r1[i][x]);
-            s = OADD(s, OMUL(v[i][x], OMUL(df, df)));
-        }
+        for (int i = 0; i < nr; i++) s = OADD(s, D[i][x]);
         c[x] = s;
     }
 }
 
+/* the box sums bx[d][x], x in [xa, xb), of Z row y: the D rows from the rings (computed
+   where a slot does not hold them yet), summed down the rows, then along the row */
 RGBZ_CLONES
-static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *const *rowp, ptrdiff_t y, int py,
-                                           const REAL *restrict valid, ptrdiff_t cols,
-                                           int R, int hr, ptrdiff_t xa, ptrdiff_t xb,
+static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t y, int py,
+                                           const REAL *restrict valid, ptrdiff_t cols, int hr,
+                                           ptrdiff_t xa, ptrdiff_t xb, REAL *conv,
+                                           ptrdiff_t *ctag, REAL *dsq, ptrdiff_t *dtag,
                                            REAL *restrict cs, REAL *restrict bx)
 {
     static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
@@ -174,99 +217,123 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *const *rowp, ptrdiff_t y, 
         /* the rectangle of pair starts: rows dlo..dhi, columns clo..chi */
         const int dlo = -hr, dhi = hr - sy, nr = dhi - dlo + 1;
         const int clo = sx < 0 ? -hr - sx : -hr, chi = sx > 0 ? hr - sx : hr;
-        const IN_T *r1[2 * RGBZ_LEARNED_MAX_RADIUS + 1], *r2[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
-        const REAL *v[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+        const ptrdiff_t ca = xa + clo, cb = xb + chi;
+        const REAL *D[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
         for (int i = 0; i < nr; i++) {
-            const int dy = dlo + i;
-            ptrdiff_t tr = (y + dy) % py;
-            tr = tr < 0 ? tr + py : tr;
-            r1[i] = rowp[dy + R];
-            r2[i] = rowp[dy + sy + R] + sx;
-            v[i] = valid + (tr * RGBZ_LEARNED_DIRS + d) * cols;
+            const ptrdiff_t Y = y + dlo + i;
+            const int slot = LRN_CAT(lrn_slot, IS, RS)(Y);
+            REAL *Dr = dsq + ((ptrdiff_t)d * LRN_RING + slot) * cols;
+            if (dtag[d * LRN_RING + slot] != Y) {
+                const REAL *a = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y, conv, ctag);
+                const REAL *b = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y + sy, conv,
+                                                              ctag);
+                const ptrdiff_t tr = ((Y % py) + py) % py;
+                LRN_CAT(lrn_dsq, IS, RS)(Dr, a, b + sx,
+                                         valid + (tr * RGBZ_LEARNED_DIRS + d) * cols, ca, cb);
+                dtag[d * LRN_RING + slot] = Y;
+            }
+            D[i] = Dr;
         }
         REAL *restrict c = cs + (ptrdiff_t)d * cols;
-        const ptrdiff_t ca = xa + clo, cb = xb + chi;
         switch (nr) {     /* the row counts of hash radii 1..3, unrolled */
-        case 1: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 1, ca, cb); break;
-        case 3: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 3, ca, cb); break;
-        case 5: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 5, ca, cb); break;
-        case 7: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 7, ca, cb); break;
-        default: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, nr, ca, cb);
+        case 1: LRN_CAT(lrn_colsum, IS, RS)(c, D, 1, ca, cb); break;
+        case 3: LRN_CAT(lrn_colsum, IS, RS)(c, D, 3, ca, cb); break;
+        case 5: LRN_CAT(lrn_colsum, IS, RS)(c, D, 5, ca, cb); break;
+        case 7: LRN_CAT(lrn_colsum, IS, RS)(c, D, 7, ca, cb); break;
+        default: LRN_CAT(lrn_colsum, IS, RS)(c, D, nr, ca, cb);
         }
+        /* along the row: the same sums, over the columns clo..chi of c (in that order) */
+        const REAL *C[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+        const int nc = chi - clo + 1;
+        for (int i = 0; i < nc; i++) C[i] = c + clo + i;
         REAL *restrict b = bx + (ptrdiff_t)d * cols;
-        LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) b[x] = c[x + clo];
-        LRN_NOJAM for (int dx = clo + 1; dx <= chi; dx++) {
-            const REAL *restrict cd = c + dx;
-            LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) b[x] = OADD(b[x], cd[x]);
+        switch (nc) {     /* the column counts of hash radii 1..3 */
+        case 3: LRN_CAT(lrn_colsum, IS, RS)(b, C, 3, xa, xb); break;
+        case 5: LRN_CAT(lrn_colsum, IS, RS)(b, C, 5, xa, xb); break;
+        case 7: LRN_CAT(lrn_colsum, IS, RS)(b, C, 7, xa, xb); break;
+        default: LRN_CAT(lrn_colsum, IS, RS)(b, C, nc, xa, xb);
         }
     }
 }
 
-/* res[j]: the dot product of the dense window of the site at x0 + j px with its bucket's
-   dense weights (rows of 8: the 7 pixels of the window row and one weight of 0). With GCC or
-   Clang each row is one or two 32-byte vector operations (vector extensions: the
-   auto-vectoriser leaves this loop scalar); the fast path never runs in the counting build,
-   which counts the per-site formulation. */
+/* res[j]: the dot product of the dense window of the site at x0 + j px (rows: the REAL rows
+   y - R .. y + R) with its bucket's dense weights (rows of 8: the 7 pixels of the window row
+   and one weight of 0). With GCC or Clang each row is one or two 32-byte vector operations
+   (vector extensions: the auto-vectoriser leaves this loop scalar), and the lanes of each
+   site's accumulator are added in lane order for all the sites of the block at once (a
+   transpose the vectoriser makes of the loop over j); the fast path never runs in the
+   counting build, which counts the per-site formulation. */
 #if LRN_VECTOR_EXT
 /* 32-byte vectors (AVX2's width: 8 floats or 4 doubles; wider ones are expanded element by
-   element) and the element vectors they are converted from */
+   element) */
 #define LRN_LANES ((int)(32 / sizeof(REAL)))
-typedef IN_T LRN_CAT(lrn_inv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * sizeof(IN_T))));
 typedef REAL LRN_CAT(lrn_rv, IS, RS) __attribute__((vector_size(32)));
-#if IN_IS_INT
-/* small integers reach REAL through int32 (one widening and one conversion instruction) */
-typedef int32_t LRN_CAT(lrn_iv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * 4)));
-#define LRN_TO_REAL(raw, rv) \
-    __builtin_convertvector(__builtin_convertvector(raw, LRN_CAT(lrn_iv, IS, RS)), rv)
+#endif
+LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t x0,
+                                                       int px, int n,
+                                                       const REAL *restrict wd, const int R,
+                                                       const int32_t *restrict bucket,
+                                                       REAL *restrict res)
+{
+    const int rows = 2 * R + 1;
+#if LRN_VECTOR_EXT
+    typedef LRN_CAT(lrn_rv, IS, RS) rv;
+    REAL lanes[LRN_BLK][LRN_LANES];
+    for (int j = 0; j < n; j++) {
+        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
+        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
+        rv acc = {0};
+        for (int dy = 0; dy < rows; dy++)
+            for (int h = 0; h < 8; h += LRN_LANES) {
+                rv xv, wv;
+                memcpy(&xv, rowp[dy] + x + h, sizeof xv);
+                memcpy(&wv, w + dy * 8 + h, sizeof wv);
+                acc += wv * xv;
+            }
+        memcpy(lanes[j], &acc, sizeof acc);
+    }
+    LRN_IVDEP for (int j = 0; j < n; j++) {
+        REAL sum = lanes[j][0];
+        for (int l = 1; l < LRN_LANES; l++) sum += lanes[j][l];
+        res[j] = sum;
+    }
 #else
-#define LRN_TO_REAL(raw, rv) __builtin_convertvector(raw, rv)
+    for (int j = 0; j < n; j++) {
+        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
+        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
+        REAL acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (int dy = 0; dy < rows; dy++) {
+            const REAL *restrict r = rowp[dy] + x;
+            const REAL *restrict wr = w + dy * 8;
+            for (int c = 0; c < 8; c++) acc[c] = OADD(acc[c], OMUL(wr[c], r[c]));
+        }
+        res[j] = OADD(OADD(OADD(acc[0], acc[4]), OADD(acc[2], acc[6])),
+                      OADD(OADD(acc[1], acc[5]), OADD(acc[3], acc[7])));
+    }
 #endif
+}
+#ifdef LRN_LANES
+#undef LRN_LANES
 #endif
+
 RGBZ_CLONES
-static void LRN_CAT(lrn_dense_dot, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
                                             int n, const REAL *restrict wd, int R,
                                             const int32_t *restrict bucket,
                                             REAL *restrict res)
 {
-    const int rows = 2 * R + 1;
-    for (int j = 0; j < n; j++) {
-        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
-        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
-#if LRN_VECTOR_EXT
-        typedef LRN_CAT(lrn_rv, IS, RS) rv;
-        rv acc = {0};
-        for (int dy = 0; dy < rows; dy++)
-            for (int h = 0; h < 8; h += LRN_LANES) {
-                LRN_CAT(lrn_inv, IS, RS) raw;
-                rv wv;
-                memcpy(&raw, rowp[dy] + x + h, sizeof raw);
-                memcpy(&wv, w + dy * 8 + h, sizeof wv);
-                acc += wv * LRN_TO_REAL(raw, rv);
-            }
-        REAL sum = acc[0];
-        for (int l = 1; l < LRN_LANES; l++) sum += acc[l];
-        res[j] = sum;
-#else
-        REAL acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-        for (int dy = 0; dy < rows; dy++) {
-            const IN_T *restrict r = rowp[dy] + x;
-            const REAL *restrict wr = w + dy * 8;
-            for (int c = 0; c < 8; c++) acc[c] = OADD(acc[c], OMUL(wr[c], (REAL)r[c]));
-        }
-        res[j] = OADD(OADD(OADD(acc[0], acc[4]), OADD(acc[2], acc[6])),
-                      OADD(OADD(acc[1], acc[5]), OADD(acc[3], acc[7])));
-#endif
+    switch (R) {      /* the window radii of the fast path, unrolled */
+    case 1: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, 1, bucket, res); break;
+    case 2: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, 2, bucket, res); break;
+    case 3: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, 3, bucket, res); break;
+    default: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, R, bucket, res);
     }
 }
-#ifdef LRN_LANES
-#undef LRN_LANES
-#undef LRN_TO_REAL
-#endif
 
 /* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the
-   box sums bx of the row, their buckets, their dense dot products */
+   box sums bx of the row, their buckets, their dense dot products (rowp: the REAL rows) */
 RGBZ_CLONES
-static void LRN_CAT(lrn_fast_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+static void LRN_CAT(lrn_fast_block, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
                                              int n, const rgbz_learned_filters *f, int k,
                                              const REAL *bx, ptrdiff_t cols, const REAL *dense,
                                              REAL *res)
@@ -284,7 +351,6 @@ static void LRN_CAT(lrn_fast_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x
                                    dense + (ptrdiff_t)k * f->n_buckets * (2 * R + 1) * 8, R,
                                    bucket, res);
 }
-
 /* the sites x0, x0 + px, ... (n of them, n <= LRN_BLK) of phase k through the generic path:
    taps gathered tap-major (through the column map at the borders), hash pairs, dot */
 static void LRN_CAT(lrn_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
@@ -354,7 +420,16 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
     (void)workers;
 #endif
     {
-        REAL *scratch = dense ? malloc((size_t)cols * 2 * RGBZ_LEARNED_DIRS * sizeof(REAL)) : NULL;
+        /* the fast path's rows: cs and bx (4 rows each), the REAL ring, the D rings */
+        REAL *scratch = dense ? malloc((size_t)cols * (2 * RGBZ_LEARNED_DIRS + LRN_RING +
+                                                       RGBZ_LEARNED_DIRS * LRN_RING) *
+                                       sizeof(REAL))
+                              : NULL;
+        REAL *conv = scratch ? scratch + (ptrdiff_t)2 * RGBZ_LEARNED_DIRS * cols : NULL;
+        REAL *dsq = scratch ? conv + (ptrdiff_t)LRN_RING * cols : NULL;
+        ptrdiff_t ctag[LRN_RING], dtag[RGBZ_LEARNED_DIRS * LRN_RING];
+        for (int i = 0; i < LRN_RING; i++) ctag[i] = PTRDIFF_MIN;
+        for (int i = 0; i < RGBZ_LEARNED_DIRS * LRN_RING; i++) dtag[i] = PTRDIFF_MIN;
         if (dense && !scratch) {
 #ifdef _OPENMP
 #pragma omp atomic write
@@ -378,10 +453,15 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
             if (!row_has_z || (dense && !scratch)) continue;
             IN_T *restrict drow = dst + y * cols;
             const int fast = scratch && fast_lo <= fast_hi;
-            if (fast)
-                LRN_CAT(lrn_energies, IS, RS)(rowp, y, py, valid, cols, R, hr, fast_lo,
-                                              fast_hi + 1, scratch,
+            const REAL *realp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+            if (fast) {
+                LRN_CAT(lrn_energies, IS, RS)(src, rows, y, py, valid, cols, hr, fast_lo,
+                                              fast_hi + 1, conv, ctag, dsq, dtag, scratch,
                                               scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
+                for (int dy = -R; dy <= R; dy++)
+                    realp[dy + R] = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, y + dy,
+                                                                  conv, ctag);
+            }
             for (int ph0 = 0; ph0 < px && ph0 < cols; ph0++) {
                 const int k = pm[ph0];
                 if (k < 0) continue;
@@ -400,7 +480,7 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                     if (x0 >= xf && x0 <= xl) {
                         const ptrdiff_t left = (xl - x0) / px + 1;
                         n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_fast_block, IS, RS)(rowp, x0, px, n, f, k,
+                        LRN_CAT(lrn_fast_block, IS, RS)(realp, x0, px, n, f, k,
                                                         scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
                                                         cols, dense, res);
                     } else {
@@ -423,5 +503,6 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
     return status;
 }
 
+#undef LRN_RING
 #undef LRN_CAT
 #undef LRN_CAT3
