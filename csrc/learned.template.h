@@ -93,7 +93,7 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int 
 
 /* the buckets of the n sites whose taps are v[t][j] (phase k); every loop runs over the
    sites (to the run-time n, so that the compiler vectorises it rather than unrolling it) */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_hash, IS, RS)(REAL (*restrict v)[LRN_BLK], int n,
                                        const rgbz_learned_filters *f, int k,
                                        int32_t *restrict bucket)
@@ -125,7 +125,7 @@ static void LRN_CAT(lrn_hash, IS, RS)(REAL (*restrict v)[LRN_BLK], int n,
 }
 
 /* res[j] = sum_t w[t][bucket[j]] * v[t][j] */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const REAL *restrict w,
                                       int n_taps, int n_buckets, const int32_t *restrict bucket,
                                       REAL *restrict res)
@@ -179,7 +179,7 @@ static const REAL *LRN_CAT(lrn_real_row, IS, RS)(const IN_T *src, ptrdiff_t rows
 }
 
 /* D[x] = v[x] (b[x] - a[x])^2 for x in [xa, xb) (b already shifted by the step's columns) */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_dsq, IS, RS)(REAL *restrict D, const REAL *restrict a,
                                       const REAL *restrict b, const REAL *restrict v,
                                       ptrdiff_t xa, ptrdiff_t xb)
@@ -204,7 +204,7 @@ LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const 
 
 /* the box sums bx[d][x], x in [xa, xb), of Z row y: the D rows from the rings (computed
    where a slot does not hold them yet), summed down the rows, then along the row */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t y, int py,
                                            const REAL *restrict valid, ptrdiff_t cols, int hr,
                                            ptrdiff_t xa, ptrdiff_t xb, REAL *conv,
@@ -316,7 +316,7 @@ LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptr
 #undef LRN_LANES
 #endif
 
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
                                             int n, const REAL *restrict wd, int R,
                                             const int32_t *restrict bucket,
@@ -332,7 +332,7 @@ static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0
 
 /* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the
    box sums bx of the row, their buckets, their dense dot products (rowp: the REAL rows) */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_fast_block, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
                                              int n, const rgbz_learned_filters *f, int k,
                                              const REAL *bx, ptrdiff_t cols, const REAL *dense,
