@@ -152,6 +152,8 @@ static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const R
  * as 8 contiguous REAL pixels against the bucket's dense weights.
  */
 #define LRN_RING 8   /* rows of a ring: the fast path's windows span at most 2 * 3 + 1 */
+#define LRN_STRIP 1024 /* columns of a strip of the fast path */
+#define LRN_HALO 8    /* columns the fast path reads beyond its sites: 3 + 2 (hash), 3 + 4 (dot) */
 
 /* the ring row of logical row Y (slot Y mod LRN_RING), or -1 before it is computed */
 static inline int LRN_CAT(lrn_slot, IS, RS)(ptrdiff_t Y)
@@ -160,10 +162,11 @@ static inline int LRN_CAT(lrn_slot, IS, RS)(ptrdiff_t Y)
 }
 
 /* logical row Y as REAL: the frame row itself when it is already REAL, else its slot of the
-   ring (converted once; tag[slot] says which logical row a slot holds) */
+   ring (columns ra .. rb - 1 converted once; tag[slot] says which logical row a slot holds) */
 static const REAL *LRN_CAT(lrn_real_row, IS, RS)(const IN_T *src, ptrdiff_t rows,
                                                   ptrdiff_t cols, int py, ptrdiff_t Y,
-                                                  REAL *ring, ptrdiff_t *tag)
+                                                  ptrdiff_t ra, ptrdiff_t rb, REAL *ring,
+                                                  ptrdiff_t *tag)
 {
     const IN_T *restrict s = src + lrn_extend(Y, rows, py) * cols;
 #if !IN_IS_INT
@@ -172,7 +175,7 @@ static const REAL *LRN_CAT(lrn_real_row, IS, RS)(const IN_T *src, ptrdiff_t rows
     const int slot = LRN_CAT(lrn_slot, IS, RS)(Y);
     REAL *restrict r = ring + (ptrdiff_t)slot * cols;
     if (tag[slot] != Y) {
-        LRN_IVDEP for (ptrdiff_t x = 0; x < cols; x++) r[x] = (REAL)s[x];
+        LRN_IVDEP for (ptrdiff_t x = ra; x < rb; x++) r[x] = (REAL)s[x];
         tag[slot] = Y;
     }
     return r;
@@ -207,7 +210,8 @@ LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const 
 LRN_CLONES
 static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t y, int py,
                                            const REAL *restrict valid, ptrdiff_t cols, int hr,
-                                           ptrdiff_t xa, ptrdiff_t xb, REAL *conv,
+                                           ptrdiff_t xa, ptrdiff_t xb, ptrdiff_t ra,
+                                           ptrdiff_t rb, REAL *conv,
                                            ptrdiff_t *ctag, REAL *dsq, ptrdiff_t *dtag,
                                            REAL *restrict cs, REAL *restrict bx)
 {
@@ -224,9 +228,10 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdi
             const int slot = LRN_CAT(lrn_slot, IS, RS)(Y);
             REAL *Dr = dsq + ((ptrdiff_t)d * LRN_RING + slot) * cols;
             if (dtag[d * LRN_RING + slot] != Y) {
-                const REAL *a = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y, conv, ctag);
-                const REAL *b = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y + sy, conv,
-                                                              ctag);
+                const REAL *a = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y, ra, rb,
+                                                              conv, ctag);
+                const REAL *b = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y + sy, ra,
+                                                              rb, conv, ctag);
                 const ptrdiff_t tr = ((Y % py) + py) % py;
                 LRN_CAT(lrn_dsq, IS, RS)(Dr, a, b + sx,
                                          valid + (tr * RGBZ_LEARNED_DIRS + d) * cols, ca, cb);
@@ -428,40 +433,40 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
         REAL *conv = scratch ? scratch + (ptrdiff_t)2 * RGBZ_LEARNED_DIRS * cols : NULL;
         REAL *dsq = scratch ? conv + (ptrdiff_t)LRN_RING * cols : NULL;
         ptrdiff_t ctag[LRN_RING], dtag[RGBZ_LEARNED_DIRS * LRN_RING];
-        for (int i = 0; i < LRN_RING; i++) ctag[i] = PTRDIFF_MIN;
-        for (int i = 0; i < RGBZ_LEARNED_DIRS * LRN_RING; i++) dtag[i] = PTRDIFF_MIN;
-        if (dense && !scratch) {
+        const int nomem = dense && !scratch;
+        if (nomem) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             status = RGBZ_ENOMEM;
         }
+        const int fast = scratch && fast_lo <= fast_hi;
         REAL v[RGBZ_LEARNED_MAX_TAPS][LRN_BLK];
         int32_t bucket[LRN_BLK];
         REAL res[LRN_BLK];
+        /* every row: the colour sites and the border (generic) sites; the fast sites below,
+           in strips. Both loops give each thread the same rows (static schedule), which the
+           rings need: a thread's rows are consecutive within each strip. */
 #ifdef _OPENMP
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
 #endif
         for (ptrdiff_t y = 0; y < rows; y++) {
             const IN_T *rowp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
             for (int dy = -R; dy <= R; dy++)
                 rowp[dy + R] = src + lrn_extend(y + dy, rows, py) * cols;
-            memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
             const int32_t *pm = phase_map + (y % py) * px;
             int row_has_z = 0;
             for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
-            if (!row_has_z || (dense && !scratch)) continue;
             IN_T *restrict drow = dst + y * cols;
-            const int fast = scratch && fast_lo <= fast_hi;
-            const REAL *realp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
-            if (fast) {
-                LRN_CAT(lrn_energies, IS, RS)(src, rows, y, py, valid, cols, hr, fast_lo,
-                                              fast_hi + 1, conv, ctag, dsq, dtag, scratch,
-                                              scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
-                for (int dy = -R; dy <= R; dy++)
-                    realp[dy + R] = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, y + dy,
-                                                                  conv, ctag);
+            const IN_T *srow = src + y * cols;
+            if (!row_has_z || !fast) {
+                memcpy(drow, srow, (size_t)cols * sizeof(IN_T));
+            } else {   /* the strips copy fast_lo .. fast_hi */
+                memcpy(drow, srow, (size_t)fast_lo * sizeof(IN_T));
+                memcpy(drow + fast_hi + 1, srow + fast_hi + 1,
+                       (size_t)(cols - 1 - fast_hi) * sizeof(IN_T));
             }
+            if (!row_has_z || nomem) continue;
             for (int ph0 = 0; ph0 < px && ph0 < cols; ph0++) {
                 const int k = pm[ph0];
                 if (k < 0) continue;
@@ -476,24 +481,61 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                     xl = fast_hi - ((fast_hi - ph0) % px + px) % px;
                 }
                 for (ptrdiff_t x0 = ph0; x0 < cols;) {
-                    int n;
-                    if (x0 >= xf && x0 <= xl) {
-                        const ptrdiff_t left = (xl - x0) / px + 1;
-                        n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_fast_block, IS, RS)(realp, x0, px, n, f, k,
-                                                        scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
-                                                        cols, dense, res);
-                    } else {
-                        /* border sites: up to the first fast site, or to the end */
-                        const ptrdiff_t stop = x0 < xf ? xf : cols;
-                        const ptrdiff_t left = (stop - 1 - x0) / px + 1;
-                        n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_generic_block, IS, RS)(rowp, x0, px, n, cols, colmap, f, k,
-                                                           w, v, bucket, res);
+                    if (x0 >= xf && x0 <= xl) {   /* skip the fast sites */
+                        x0 = xl + px;
+                        continue;
                     }
+                    /* border sites: up to the first fast site, or to the end */
+                    const ptrdiff_t stop = x0 < xf ? xf : cols;
+                    const ptrdiff_t left = (stop - 1 - x0) / px + 1;
+                    const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
+                    LRN_CAT(lrn_generic_block, IS, RS)(rowp, x0, px, n, cols, colmap, f, k, w, v,
+                                                       bucket, res);
                     for (int j = 0; j < n; j++)
                         drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
                     x0 += (ptrdiff_t)n * px;
+                }
+            }
+        }
+        /* the fast sites, in strips of LRN_STRIP columns so that the rings' part of a strip
+           stays in the cache from one Z row to the next */
+        for (ptrdiff_t sa = fast_lo; fast && sa <= fast_hi; sa += LRN_STRIP) {
+            const ptrdiff_t sb = sa + LRN_STRIP < fast_hi + 1 ? sa + LRN_STRIP : fast_hi + 1;
+            const ptrdiff_t ra = sa - LRN_HALO > 0 ? sa - LRN_HALO : 0;
+            const ptrdiff_t rb = sb + LRN_HALO < cols ? sb + LRN_HALO : cols;
+            for (int i = 0; i < LRN_RING; i++) ctag[i] = PTRDIFF_MIN;
+            for (int i = 0; i < RGBZ_LEARNED_DIRS * LRN_RING; i++) dtag[i] = PTRDIFF_MIN;
+#ifdef _OPENMP
+#pragma omp for schedule(static) nowait
+#endif
+            for (ptrdiff_t y = 0; y < rows; y++) {
+                const int32_t *pm = phase_map + (y % py) * px;
+                int row_has_z = 0;
+                for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
+                if (!row_has_z) continue;
+                IN_T *restrict drow = dst + y * cols;
+                memcpy(drow + sa, src + y * cols + sa, (size_t)(sb - sa) * sizeof(IN_T));
+                const REAL *realp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+                LRN_CAT(lrn_energies, IS, RS)(src, rows, y, py, valid, cols, hr, sa, sb, ra, rb,
+                                              conv, ctag, dsq, dtag, scratch,
+                                              scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
+                for (int dy = -R; dy <= R; dy++)
+                    realp[dy + R] = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, y + dy,
+                                                                  ra, rb, conv, ctag);
+                for (int ph0 = 0; ph0 < px; ph0++) {
+                    const int k = pm[ph0];
+                    if (k < 0) continue;
+                    /* the sites of this phase in the strip (all of them fast sites) */
+                    for (ptrdiff_t x0 = sa + ((ph0 - sa) % px + px) % px; x0 < sb;) {
+                        const ptrdiff_t left = (sb - 1 - x0) / px + 1;
+                        const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
+                        LRN_CAT(lrn_fast_block, IS, RS)(realp, x0, px, n, f, k,
+                                                        scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
+                                                        cols, dense, res);
+                        for (int j = 0; j < n; j++)
+                            drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
+                        x0 += (ptrdiff_t)n * px;
+                    }
                 }
             }
         }
@@ -504,5 +546,7 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
 }
 
 #undef LRN_RING
+#undef LRN_STRIP
+#undef LRN_HALO
 #undef LRN_CAT
 #undef LRN_CAT3
