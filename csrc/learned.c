@@ -33,6 +33,25 @@
 #define LRN_NOJAM
 #endif
 
+/* the instruction sets of the hot loops: rgbz_ops.h's RGBZ_CLONES (AVX2, the baseline) and
+   AVX-512. Every vectorised loop of this file is element by element (no reduction across the
+   vector; the dense dot products use 32-byte vectors whatever the set) and nothing is
+   contracted (C99), so that every clone gives bit-identical results. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#define LRN_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define LRN_CLONES RGBZ_CLONES
+#endif
+
+/* a helper inlined into its caller whatever its size, so that it is compiled for the caller's
+   instruction set (RGBZ_CLONES) and with the caller's constant arguments */
+#if defined(__GNUC__) || defined(__clang__)
+#define LRN_INLINE static inline __attribute__((always_inline))
+#else
+#define LRN_INLINE static inline
+#endif
+
 /* GCC >= 9 and Clang: vector extensions for the dense dot product of the fast path */
 #if (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 9)) && !defined(RGBZ_COUNT_OPS)
 #define LRN_VECTOR_EXT 1

@@ -93,7 +93,7 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int 
 
 /* the buckets of the n sites whose taps are v[t][j] (phase k); every loop runs over the
    sites (to the run-time n, so that the compiler vectorises it rather than unrolling it) */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_hash, IS, RS)(REAL (*restrict v)[LRN_BLK], int n,
                                        const rgbz_learned_filters *f, int k,
                                        int32_t *restrict bucket)
@@ -125,7 +125,7 @@ static void LRN_CAT(lrn_hash, IS, RS)(REAL (*restrict v)[LRN_BLK], int n,
 }
 
 /* res[j] = sum_t w[t][bucket[j]] * v[t][j] */
-RGBZ_CLONES
+LRN_CLONES
 static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const REAL *restrict w,
                                       int n_taps, int n_buckets, const int32_t *restrict bucket,
                                       REAL *restrict res)
@@ -142,30 +142,77 @@ static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const R
  * The fast path of a row (radius <= 3, learned.h's dense weights). The hash energies are
  * box sums: for direction d, E_d of the site at x is the sum over the rectangle of pair
  * starts (learned.h) of D_d = V_d (I(p + s_d) - I(p))^2, V_d = 1 where both pixels are
- * known, times 1 / n_d. The sums run first down the rows, for every column of the row at
- * once (cs), then along the row (bx): contiguous loops over x. The dot product then reads
- * each window row as 8 contiguous pixels against the bucket's dense weights.
+ * known, times 1 / n_d. Each thread keeps two rings of LRN_RING rows, indexed by the
+ * logical row (outside the frame: moved back by whole periods, so a function of the row
+ * alone): the frame rows as REAL (converted once, read by the differences and the dot
+ * products) and, per direction, the rows of D_d (computed once, read by the three or four
+ * Z rows whose rectangles hold them). The sums then run down the ring rows, for every
+ * column of the row at once (cs), and along the row (bx), in the order of the per-site
+ * formulation's box sums: contiguous loops over x. The dot product reads each window row
+ * as 8 contiguous REAL pixels against the bucket's dense weights.
  */
-/* c[x] = sum over nr rows i of v_i[x] (a_i[x + sx] - b_i[x])^2, one pass over x (nr is a
-   constant where it is inlined, so that the rows unroll and x vectorises) */
-static inline void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const IN_T *const *r1,
-                                               const IN_T *const *r2, const REAL *const *v,
+#define LRN_RING 8   /* rows of a ring: the fast path's windows span at most 2 * 3 + 1 */
+#define LRN_STRIP 1024 /* columns of a strip of the fast path */
+#define LRN_HALO 8    /* columns the fast path reads beyond its sites: 3 + 2 (hash), 3 + 4 (dot) */
+
+/* the ring row of logical row Y (slot Y mod LRN_RING), or -1 before it is computed */
+static inline int LRN_CAT(lrn_slot, IS, RS)(ptrdiff_t Y)
+{
+    return (int)(((Y % LRN_RING) + LRN_RING) % LRN_RING);
+}
+
+/* logical row Y as REAL: the frame row itself when it is already REAL, else its slot of the
+   ring (columns ra .. rb - 1 converted once; tag[slot] says which logical row a slot holds) */
+static const REAL *LRN_CAT(lrn_real_row, IS, RS)(const IN_T *src, ptrdiff_t rows,
+                                                  ptrdiff_t cols, int py, ptrdiff_t Y,
+                                                  ptrdiff_t ra, ptrdiff_t rb, REAL *ring,
+                                                  ptrdiff_t *tag)
+{
+    const IN_T *restrict s = src + lrn_extend(Y, rows, py) * cols;
+#if !IN_IS_INT
+    if (sizeof(IN_T) == sizeof(REAL)) return (const REAL *)(const void *)s;
+#endif
+    const int slot = LRN_CAT(lrn_slot, IS, RS)(Y);
+    REAL *restrict r = ring + (ptrdiff_t)slot * cols;
+    if (tag[slot] != Y) {
+        LRN_IVDEP for (ptrdiff_t x = ra; x < rb; x++) r[x] = (REAL)s[x];
+        tag[slot] = Y;
+    }
+    return r;
+}
+
+/* D[x] = v[x] (b[x] - a[x])^2 for x in [xa, xb) (b already shifted by the step's columns) */
+LRN_CLONES
+static void LRN_CAT(lrn_dsq, IS, RS)(REAL *restrict D, const REAL *restrict a,
+                                      const REAL *restrict b, const REAL *restrict v,
+                                      ptrdiff_t xa, ptrdiff_t xb)
+{
+    LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
+        const REAL df = OSUB(b[x], a[x]);
+        D[x] = OMUL(v[x], OMUL(df, df));
+    }
+}
+
+/* c[x] = sum over nr rows i of D_i[x], in the order of i (nr is a constant where it is
+   inlined, so that the rows unroll and x vectorises; one pass, one store per x) */
+LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const *D,
                                                const int nr, ptrdiff_t xa, ptrdiff_t xb)
 {
     LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
         REAL s = 0;
-        for (int i = 0; i < nr; i++) {
-            const REAL df = OSUB((REAL)r2[i][x], (REAL)r1[i][x]);
-            s = OADD(s, OMUL(v[i][x], OMUL(df, df)));
-        }
+        for (int i = 0; i < nr; i++) s = OADD(s, D[i][x]);
         c[x] = s;
     }
 }
 
-RGBZ_CLONES
-static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *const *rowp, ptrdiff_t y, int py,
-                                           const REAL *restrict valid, ptrdiff_t cols,
-                                           int R, int hr, ptrdiff_t xa, ptrdiff_t xb,
+/* the box sums bx[d][x], x in [xa, xb), of Z row y: the D rows from the rings (computed
+   where a slot does not hold them yet), summed down the rows, then along the row */
+LRN_CLONES
+static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t y, int py,
+                                           const REAL *restrict valid, ptrdiff_t cols, int hr,
+                                           ptrdiff_t xa, ptrdiff_t xb, ptrdiff_t ra,
+                                           ptrdiff_t rb, REAL *conv,
+                                           ptrdiff_t *ctag, REAL *dsq, ptrdiff_t *dtag,
                                            REAL *restrict cs, REAL *restrict bx)
 {
     static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
@@ -174,99 +221,124 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *const *rowp, ptrdiff_t y, 
         /* the rectangle of pair starts: rows dlo..dhi, columns clo..chi */
         const int dlo = -hr, dhi = hr - sy, nr = dhi - dlo + 1;
         const int clo = sx < 0 ? -hr - sx : -hr, chi = sx > 0 ? hr - sx : hr;
-        const IN_T *r1[2 * RGBZ_LEARNED_MAX_RADIUS + 1], *r2[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
-        const REAL *v[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+        const ptrdiff_t ca = xa + clo, cb = xb + chi;
+        const REAL *D[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
         for (int i = 0; i < nr; i++) {
-            const int dy = dlo + i;
-            ptrdiff_t tr = (y + dy) % py;
-            tr = tr < 0 ? tr + py : tr;
-            r1[i] = rowp[dy + R];
-            r2[i] = rowp[dy + sy + R] + sx;
-            v[i] = valid + (tr * RGBZ_LEARNED_DIRS + d) * cols;
+            const ptrdiff_t Y = y + dlo + i;
+            const int slot = LRN_CAT(lrn_slot, IS, RS)(Y);
+            REAL *Dr = dsq + ((ptrdiff_t)d * LRN_RING + slot) * cols;
+            if (dtag[d * LRN_RING + slot] != Y) {
+                const REAL *a = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y, ra, rb,
+                                                              conv, ctag);
+                const REAL *b = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, Y + sy, ra,
+                                                              rb, conv, ctag);
+                const ptrdiff_t tr = ((Y % py) + py) % py;
+                LRN_CAT(lrn_dsq, IS, RS)(Dr, a, b + sx,
+                                         valid + (tr * RGBZ_LEARNED_DIRS + d) * cols, ca, cb);
+                dtag[d * LRN_RING + slot] = Y;
+            }
+            D[i] = Dr;
         }
         REAL *restrict c = cs + (ptrdiff_t)d * cols;
-        const ptrdiff_t ca = xa + clo, cb = xb + chi;
         switch (nr) {     /* the row counts of hash radii 1..3, unrolled */
-        case 1: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 1, ca, cb); break;
-        case 3: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 3, ca, cb); break;
-        case 5: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 5, ca, cb); break;
-        case 7: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, 7, ca, cb); break;
-        default: LRN_CAT(lrn_colsum, IS, RS)(c, r1, r2, v, nr, ca, cb);
+        case 1: LRN_CAT(lrn_colsum, IS, RS)(c, D, 1, ca, cb); break;
+        case 3: LRN_CAT(lrn_colsum, IS, RS)(c, D, 3, ca, cb); break;
+        case 5: LRN_CAT(lrn_colsum, IS, RS)(c, D, 5, ca, cb); break;
+        case 7: LRN_CAT(lrn_colsum, IS, RS)(c, D, 7, ca, cb); break;
+        default: LRN_CAT(lrn_colsum, IS, RS)(c, D, nr, ca, cb);
         }
+        /* along the row: the same sums, over the columns clo..chi of c (in that order) */
+        const REAL *C[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+        const int nc = chi - clo + 1;
+        for (int i = 0; i < nc; i++) C[i] = c + clo + i;
         REAL *restrict b = bx + (ptrdiff_t)d * cols;
-        LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) b[x] = c[x + clo];
-        LRN_NOJAM for (int dx = clo + 1; dx <= chi; dx++) {
-            const REAL *restrict cd = c + dx;
-            LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) b[x] = OADD(b[x], cd[x]);
+        switch (nc) {     /* the column counts of hash radii 1..3 */
+        case 3: LRN_CAT(lrn_colsum, IS, RS)(b, C, 3, xa, xb); break;
+        case 5: LRN_CAT(lrn_colsum, IS, RS)(b, C, 5, xa, xb); break;
+        case 7: LRN_CAT(lrn_colsum, IS, RS)(b, C, 7, xa, xb); break;
+        default: LRN_CAT(lrn_colsum, IS, RS)(b, C, nc, xa, xb);
         }
     }
 }
 
-/* res[j]: the dot product of the dense window of the site at x0 + j px with its bucket's
-   dense weights (rows of 8: the 7 pixels of the window row and one weight of 0). With GCC or
-   Clang each row is one or two 32-byte vector operations (vector extensions: the
-   auto-vectoriser leaves this loop scalar); the fast path never runs in the counting build,
-   which counts the per-site formulation. */
+/* res[j]: the dot product of the dense window of the site at x0 + j px (rows: the REAL rows
+   y - R .. y + R) with its bucket's dense weights (rows of 8: the 7 pixels of the window row
+   and one weight of 0). With GCC or Clang each row is one or two 32-byte vector operations
+   (vector extensions: the auto-vectoriser leaves this loop scalar), and the lanes of each
+   site's accumulator are added in lane order for all the sites of the block at once (a
+   transpose the vectoriser makes of the loop over j); the fast path never runs in the
+   counting build, which counts the per-site formulation. */
 #if LRN_VECTOR_EXT
 /* 32-byte vectors (AVX2's width: 8 floats or 4 doubles; wider ones are expanded element by
-   element) and the element vectors they are converted from */
+   element) */
 #define LRN_LANES ((int)(32 / sizeof(REAL)))
-typedef IN_T LRN_CAT(lrn_inv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * sizeof(IN_T))));
 typedef REAL LRN_CAT(lrn_rv, IS, RS) __attribute__((vector_size(32)));
-#if IN_IS_INT
-/* small integers reach REAL through int32 (one widening and one conversion instruction) */
-typedef int32_t LRN_CAT(lrn_iv, IS, RS) __attribute__((vector_size(32 / sizeof(REAL) * 4)));
-#define LRN_TO_REAL(raw, rv) \
-    __builtin_convertvector(__builtin_convertvector(raw, LRN_CAT(lrn_iv, IS, RS)), rv)
+#endif
+LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t x0,
+                                                       int px, int n,
+                                                       const REAL *restrict wd, const int R,
+                                                       const int32_t *restrict bucket,
+                                                       REAL *restrict res)
+{
+    const int rows = 2 * R + 1;
+#if LRN_VECTOR_EXT
+    typedef LRN_CAT(lrn_rv, IS, RS) rv;
+    REAL lanes[LRN_BLK][LRN_LANES];
+    for (int j = 0; j < n; j++) {
+        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
+        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
+        rv acc = {0};
+        for (int dy = 0; dy < rows; dy++)
+            for (int h = 0; h < 8; h += LRN_LANES) {
+                rv xv, wv;
+                memcpy(&xv, rowp[dy] + x + h, sizeof xv);
+                memcpy(&wv, w + dy * 8 + h, sizeof wv);
+                acc += wv * xv;
+            }
+        memcpy(lanes[j], &acc, sizeof acc);
+    }
+    LRN_IVDEP for (int j = 0; j < n; j++) {
+        REAL sum = lanes[j][0];
+        for (int l = 1; l < LRN_LANES; l++) sum += lanes[j][l];
+        res[j] = sum;
+    }
 #else
-#define LRN_TO_REAL(raw, rv) __builtin_convertvector(raw, rv)
+    for (int j = 0; j < n; j++) {
+        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
+        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
+        REAL acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (int dy = 0; dy < rows; dy++) {
+            const REAL *restrict r = rowp[dy] + x;
+            const REAL *restrict wr = w + dy * 8;
+            for (int c = 0; c < 8; c++) acc[c] = OADD(acc[c], OMUL(wr[c], r[c]));
+        }
+        res[j] = OADD(OADD(OADD(acc[0], acc[4]), OADD(acc[2], acc[6])),
+                      OADD(OADD(acc[1], acc[5]), OADD(acc[3], acc[7])));
+    }
 #endif
+}
+#ifdef LRN_LANES
+#undef LRN_LANES
 #endif
-RGBZ_CLONES
-static void LRN_CAT(lrn_dense_dot, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+
+LRN_CLONES
+static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
                                             int n, const REAL *restrict wd, int R,
                                             const int32_t *restrict bucket,
                                             REAL *restrict res)
 {
-    const int rows = 2 * R + 1;
-    for (int j = 0; j < n; j++) {
-        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
-        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
-#if LRN_VECTOR_EXT
-        typedef LRN_CAT(lrn_rv, IS, RS) rv;
-        rv acc = {0};
-        for (int dy = 0; dy < rows; dy++)
-            for (int h = 0; h < 8; h += LRN_LANES) {
-                LRN_CAT(lrn_inv, IS, RS) raw;
-                rv wv;
-                memcpy(&raw, rowp[dy] + x + h, sizeof raw);
-                memcpy(&wv, w + dy * 8 + h, sizeof wv);
-                acc += wv * LRN_TO_REAL(raw, rv);
-            }
-        REAL sum = acc[0];
-        for (int l = 1; l < LRN_LANES; l++) sum += acc[l];
-        res[j] = sum;
-#else
-        REAL acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-        for (int dy = 0; dy < rows; dy++) {
-            const IN_T *restrict r = rowp[dy] + x;
-            const REAL *restrict wr = w + dy * 8;
-            for (int c = 0; c < 8; c++) acc[c] = OADD(acc[c], OMUL(wr[c], (REAL)r[c]));
-        }
-        res[j] = OADD(OADD(OADD(acc[0], acc[4]), OADD(acc[2], acc[6])),
-                      OADD(OADD(acc[1], acc[5]), OADD(acc[3], acc[7])));
-#endif
+    switch (R) {      /* the window radii of the fast path, unrolled */
+    case 1: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, 1, bucket, res); break;
+    case 2: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, 2, bucket, res); break;
+    case 3: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, 3, bucket, res); break;
+    default: LRN_CAT(lrn_dense_dot_rows, IS, RS)(rowp, x0, px, n, wd, R, bucket, res);
     }
 }
-#ifdef LRN_LANES
-#undef LRN_LANES
-#undef LRN_TO_REAL
-#endif
 
 /* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the
-   box sums bx of the row, their buckets, their dense dot products */
-RGBZ_CLONES
-static void LRN_CAT(lrn_fast_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
+   box sums bx of the row, their buckets, their dense dot products (rowp: the REAL rows) */
+LRN_CLONES
+static void LRN_CAT(lrn_fast_block, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
                                              int n, const rgbz_learned_filters *f, int k,
                                              const REAL *bx, ptrdiff_t cols, const REAL *dense,
                                              REAL *res)
@@ -284,7 +356,6 @@ static void LRN_CAT(lrn_fast_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x
                                    dense + (ptrdiff_t)k * f->n_buckets * (2 * R + 1) * 8, R,
                                    bucket, res);
 }
-
 /* the sites x0, x0 + px, ... (n of them, n <= LRN_BLK) of phase k through the generic path:
    taps gathered tap-major (through the column map at the borders), hash pairs, dot */
 static void LRN_CAT(lrn_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
@@ -354,34 +425,48 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
     (void)workers;
 #endif
     {
-        REAL *scratch = dense ? malloc((size_t)cols * 2 * RGBZ_LEARNED_DIRS * sizeof(REAL)) : NULL;
-        if (dense && !scratch) {
+        /* the fast path's rows: cs and bx (4 rows each), the REAL ring, the D rings */
+        REAL *scratch = dense ? malloc((size_t)cols * (2 * RGBZ_LEARNED_DIRS + LRN_RING +
+                                                       RGBZ_LEARNED_DIRS * LRN_RING) *
+                                       sizeof(REAL))
+                              : NULL;
+        REAL *conv = scratch ? scratch + (ptrdiff_t)2 * RGBZ_LEARNED_DIRS * cols : NULL;
+        REAL *dsq = scratch ? conv + (ptrdiff_t)LRN_RING * cols : NULL;
+        ptrdiff_t ctag[LRN_RING], dtag[RGBZ_LEARNED_DIRS * LRN_RING];
+        const int nomem = dense && !scratch;
+        if (nomem) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             status = RGBZ_ENOMEM;
         }
+        const int fast = scratch && fast_lo <= fast_hi;
         REAL v[RGBZ_LEARNED_MAX_TAPS][LRN_BLK];
         int32_t bucket[LRN_BLK];
         REAL res[LRN_BLK];
+        /* every row: the colour sites and the border (generic) sites; the fast sites below,
+           in strips. Both loops give each thread the same rows (static schedule), which the
+           rings need: a thread's rows are consecutive within each strip. */
 #ifdef _OPENMP
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
 #endif
         for (ptrdiff_t y = 0; y < rows; y++) {
             const IN_T *rowp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
             for (int dy = -R; dy <= R; dy++)
                 rowp[dy + R] = src + lrn_extend(y + dy, rows, py) * cols;
-            memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
             const int32_t *pm = phase_map + (y % py) * px;
             int row_has_z = 0;
             for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
-            if (!row_has_z || (dense && !scratch)) continue;
             IN_T *restrict drow = dst + y * cols;
-            const int fast = scratch && fast_lo <= fast_hi;
-            if (fast)
-                LRN_CAT(lrn_energies, IS, RS)(rowp, y, py, valid, cols, R, hr, fast_lo,
-                                              fast_hi + 1, scratch,
-                                              scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
+            const IN_T *srow = src + y * cols;
+            if (!row_has_z || !fast) {
+                memcpy(drow, srow, (size_t)cols * sizeof(IN_T));
+            } else {   /* the strips copy fast_lo .. fast_hi */
+                memcpy(drow, srow, (size_t)fast_lo * sizeof(IN_T));
+                memcpy(drow + fast_hi + 1, srow + fast_hi + 1,
+                       (size_t)(cols - 1 - fast_hi) * sizeof(IN_T));
+            }
+            if (!row_has_z || nomem) continue;
             for (int ph0 = 0; ph0 < px && ph0 < cols; ph0++) {
                 const int k = pm[ph0];
                 if (k < 0) continue;
@@ -396,24 +481,61 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                     xl = fast_hi - ((fast_hi - ph0) % px + px) % px;
                 }
                 for (ptrdiff_t x0 = ph0; x0 < cols;) {
-                    int n;
-                    if (x0 >= xf && x0 <= xl) {
-                        const ptrdiff_t left = (xl - x0) / px + 1;
-                        n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_fast_block, IS, RS)(rowp, x0, px, n, f, k,
-                                                        scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
-                                                        cols, dense, res);
-                    } else {
-                        /* border sites: up to the first fast site, or to the end */
-                        const ptrdiff_t stop = x0 < xf ? xf : cols;
-                        const ptrdiff_t left = (stop - 1 - x0) / px + 1;
-                        n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_generic_block, IS, RS)(rowp, x0, px, n, cols, colmap, f, k,
-                                                           w, v, bucket, res);
+                    if (x0 >= xf && x0 <= xl) {   /* skip the fast sites */
+                        x0 = xl + px;
+                        continue;
                     }
+                    /* border sites: up to the first fast site, or to the end */
+                    const ptrdiff_t stop = x0 < xf ? xf : cols;
+                    const ptrdiff_t left = (stop - 1 - x0) / px + 1;
+                    const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
+                    LRN_CAT(lrn_generic_block, IS, RS)(rowp, x0, px, n, cols, colmap, f, k, w, v,
+                                                       bucket, res);
                     for (int j = 0; j < n; j++)
                         drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
                     x0 += (ptrdiff_t)n * px;
+                }
+            }
+        }
+        /* the fast sites, in strips of LRN_STRIP columns so that the rings' part of a strip
+           stays in the cache from one Z row to the next */
+        for (ptrdiff_t sa = fast_lo; fast && sa <= fast_hi; sa += LRN_STRIP) {
+            const ptrdiff_t sb = sa + LRN_STRIP < fast_hi + 1 ? sa + LRN_STRIP : fast_hi + 1;
+            const ptrdiff_t ra = sa - LRN_HALO > 0 ? sa - LRN_HALO : 0;
+            const ptrdiff_t rb = sb + LRN_HALO < cols ? sb + LRN_HALO : cols;
+            for (int i = 0; i < LRN_RING; i++) ctag[i] = PTRDIFF_MIN;
+            for (int i = 0; i < RGBZ_LEARNED_DIRS * LRN_RING; i++) dtag[i] = PTRDIFF_MIN;
+#ifdef _OPENMP
+#pragma omp for schedule(static) nowait
+#endif
+            for (ptrdiff_t y = 0; y < rows; y++) {
+                const int32_t *pm = phase_map + (y % py) * px;
+                int row_has_z = 0;
+                for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
+                if (!row_has_z) continue;
+                IN_T *restrict drow = dst + y * cols;
+                memcpy(drow + sa, src + y * cols + sa, (size_t)(sb - sa) * sizeof(IN_T));
+                const REAL *realp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
+                LRN_CAT(lrn_energies, IS, RS)(src, rows, y, py, valid, cols, hr, sa, sb, ra, rb,
+                                              conv, ctag, dsq, dtag, scratch,
+                                              scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
+                for (int dy = -R; dy <= R; dy++)
+                    realp[dy + R] = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, y + dy,
+                                                                  ra, rb, conv, ctag);
+                for (int ph0 = 0; ph0 < px; ph0++) {
+                    const int k = pm[ph0];
+                    if (k < 0) continue;
+                    /* the sites of this phase in the strip (all of them fast sites) */
+                    for (ptrdiff_t x0 = sa + ((ph0 - sa) % px + px) % px; x0 < sb;) {
+                        const ptrdiff_t left = (sb - 1 - x0) / px + 1;
+                        const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
+                        LRN_CAT(lrn_fast_block, IS, RS)(realp, x0, px, n, f, k,
+                                                        scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
+                                                        cols, dense, res);
+                        for (int j = 0; j < n; j++)
+                            drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
+                        x0 += (ptrdiff_t)n * px;
+                    }
                 }
             }
         }
@@ -423,5 +545,8 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
     return status;
 }
 
+#undef LRN_RING
+#undef LRN_STRIP
+#undef LRN_HALO
 #undef LRN_CAT
 #undef LRN_CAT3

@@ -95,6 +95,22 @@ def test_float32_within_tolerance(fitted, name, dtype):
     assert got.dtype == dtype
 
 
+@pytest.mark.parametrize("name", ["mask1", "mask2"])
+def test_frames_wider_than_a_strip_match_reference(fitted, name):
+    # the kernel's fast path runs in strips of 1024 columns (csrc/learned.template.h,
+    # LRN_STRIP), each with its own rings of rows: 2600 columns make three strips; float32
+    # data in float64 arithmetic goes through the ring of converted rows, exactly (the output
+    # is float32: the float64 result rounded, to half a unit in the last place)
+    f = fitted[name]
+    frame = _frame(f.pattern, (20, 2600), seed=13, dtype=np.float32)
+    want = reference_learned(frame.data, f)
+    z = frame.z_mask
+    for workers in (1, 2):
+        got = rz.reconstruct(frame, "learned", filters=f, precision="float64", workers=workers)
+        np.testing.assert_allclose(got[z], want[z], rtol=2.0**-24, atol=1e-9)
+        assert np.array_equal(got[~z], frame.data[~z])
+
+
 def test_threads_give_identical_results(fitted):
     f = fitted["mask2"]
     frame = _frame(f.pattern, (120, 200), seed=5, dtype=np.float32)
