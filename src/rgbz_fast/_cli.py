@@ -265,14 +265,15 @@ def _parser():
     _add_common(r, "reconstruct")
 
     d = sub.add_parser("depth", help="frame(s) with ToF taps -> depth map, flags, preview",
-                       description="Run the ToF ISP (four-tap demodulation, pattern-aware "
-                                   "denoise, three-frequency unwrapping) on the taps of frames "
-                                   "simulated from scenes with depth. Writes, per frame, "
-                                   "OUT/<name>_depth.tif (float32 metres on the frame grid, NaN "
-                                   "where there is no valid measurement: the colour sites and "
-                                   "the flagged Z pixels), OUT/<name>_depth_flags.png (0 valid, "
-                                   "bits 1 saturated, 2 low signal, 4 inconsistent frequencies, "
-                                   "255 colour site) and OUT/<name>_depth.png (a colour-mapped "
+                       description="Run the ToF ISP (four-tap demodulation, edge-aware "
+                                   "denoise, three-frequency unwrapping, validity) on the taps "
+                                   "of frames simulated from scenes with depth. Writes, per "
+                                   "frame, OUT/<name>_depth.tif (float32 metres on the frame "
+                                   "grid, NaN where there is no valid measurement: the colour "
+                                   "sites and the flagged Z pixels), OUT/<name>_depth_flags.png "
+                                   "(0 valid, bits 1 saturated, 2 low signal, 4 inconsistent "
+                                   "frequencies, 8 flying pixel, 16 out of range; 255 colour "
+                                   "site) and OUT/<name>_depth.png (a colour-mapped "
                                    "preview with its scale). Prints how much is valid and, for "
                                    "simulated frames, the error against the ground truth and "
                                    "how much of it is unknown.", **kw)
