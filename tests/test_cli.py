@@ -504,3 +504,25 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
     assert main(["train", "--dataset", str(tmp_path / "nope"), "--pattern", "mask1",
                  "--out", str(tmp_path / "g.npz")]) == 2
     assert not (tmp_path / "g.npz").exists()
+
+
+def test_depth_validity_options_reach_the_isp(tmp_path, capsys):
+    """--flying-step off / --max-sigma off keep measurements the defaults flag; the depth TIFF
+    equals tof_depth with the same settings."""
+    import tifffile
+
+    scene = rz.simulation.Scene(np.full((32, 48, 3), 0.5),
+                                depth=np.where(np.arange(48) < 24, 1.0, 2.0)[None, :].repeat(32, 0))
+    frame = rz.simulate(scene, "mask1", seed=2)
+    path = tmp_path / "step.npz"
+    frameio.save_frame(path, frame)
+    for extra, kw in (([], {}), (["--flying-step", "off", "--max-sigma", "off"],
+                                 {"flying_step": None, "max_sigma": None})):
+        out = tmp_path / ("a" if not extra else "b")
+        assert main(["depth", str(path), "--out", str(out), "--quiet", *extra]) == 0
+        depth = tifffile.imread(out / "step_depth.tif")
+        want = rz.tof_depth(frame.tof, **kw).depth_map().astype(np.float32)
+        np.testing.assert_array_equal(depth, want)
+    a = tifffile.imread(tmp_path / "a" / "step_depth.tif")
+    b = tifffile.imread(tmp_path / "b" / "step_depth.tif")
+    assert np.isfinite(b).sum() > np.isfinite(a).sum()      # the step's flying pixels kept

@@ -95,6 +95,13 @@ _non_negative_int = _number(int, lambda v: v >= 0, "an integer >= 0")
 _positive_float = _number(float, lambda v: 0 < v < float("inf"), "a positive number")
 
 
+def _off_or(parse):
+    """An argparse type: ``off`` (None: the test is not made), else ``parse(text)``."""
+    def parse_or_off(text):
+        return None if text.strip().lower() == "off" else parse(text)
+    return parse_or_off
+
+
 def _levels(text):
     """One level, or four (one per site of the 2x2 quad, row by row): '64' or '64,64,65,64'."""
     try:
@@ -265,14 +272,15 @@ def _parser():
     _add_common(r, "reconstruct")
 
     d = sub.add_parser("depth", help="frame(s) with ToF taps -> depth map, flags, preview",
-                       description="Run the ToF ISP (four-tap demodulation, pattern-aware "
-                                   "denoise, three-frequency unwrapping) on the taps of frames "
-                                   "simulated from scenes with depth. Writes, per frame, "
-                                   "OUT/<name>_depth.tif (float32 metres on the frame grid, NaN "
-                                   "where there is no valid measurement: the colour sites and "
-                                   "the flagged Z pixels), OUT/<name>_depth_flags.png (0 valid, "
-                                   "bits 1 saturated, 2 low signal, 4 inconsistent frequencies, "
-                                   "255 colour site) and OUT/<name>_depth.png (a colour-mapped "
+                       description="Run the ToF ISP (four-tap demodulation, edge-aware "
+                                   "denoise, three-frequency unwrapping, validity) on the taps "
+                                   "of frames simulated from scenes with depth. Writes, per "
+                                   "frame, OUT/<name>_depth.tif (float32 metres on the frame "
+                                   "grid, NaN where there is no valid measurement: the colour "
+                                   "sites and the flagged Z pixels), OUT/<name>_depth_flags.png "
+                                   "(0 valid, bits 1 saturated, 2 low signal, 4 inconsistent "
+                                   "frequencies, 8 flying pixel, 16 out of range; 255 colour "
+                                   "site) and OUT/<name>_depth.png (a colour-mapped "
                                    "preview with its scale). Prints how much is valid and, for "
                                    "simulated frames, the error against the ground truth and "
                                    "how much of it is unknown.", **kw)
@@ -287,6 +295,17 @@ def _parser():
                    help="flag measurements whose signal-to-noise ratio is below this")
     d.add_argument("--max-range", type=_positive_float, default=None, metavar="METRES",
                    help="unwrapping range (default: the unambiguous range of the frequencies)")
+    d.add_argument("--max-sigma", type=_off_or(_positive_float), default=0.015,
+                   metavar="METRES|off",
+                   help="flag measurements whose predicted depth noise is above this")
+    d.add_argument("--flying-step", type=_off_or(_positive_float), default=0.05,
+                   metavar="METRES|off",
+                   help="flag flying pixels: a depth step to a neighbour above this (and 2 "
+                        "sigma); off keeps them")
+    d.add_argument("--min-reflectance", type=_number(float, lambda v: 0 <= v <= 1,
+                                                     "a number in [0, 1]"), default=0.05,
+                   help="flag measurements whose implied reflectance is below this (a surface "
+                        "beyond the unambiguous range, aliased nearer)")
     d.add_argument("--range", type=_range, default=None, metavar="MIN:MAX",
                    help="colour scale of the preview in metres (default: the 1st to 99th "
                         "percentile of the valid depth)")
@@ -366,10 +385,10 @@ def _parser():
 
     t = sub.add_parser("train", help="dataset -> filters of the learned reconstruction",
                        description="Fit the filters of method 'learned' (hashed 7x7 linear "
-                                   "filters, docs/guide/learned.md) to a folder of images, with "
+                                   "filters, see the user guide) to a folder of images, with "
                                    "the evaluation's protocol (sRGB EOTF, mosaic at --bit-depth), "
                                    "and write them to --out. Fit on images you do not evaluate "
-                                   "on.")
+                                   "on.", **kw)
     t.add_argument("--dataset", type=Path, required=True, metavar="DIR",
                    help="folder of RGB images to fit on (required; keep the images you "
                         "evaluate on out of it)")
@@ -408,11 +427,11 @@ def _parser():
     c = sub.add_parser(
         "calibrate", help="flat-wall sweep -> ToF phase calibration file",
         description="Fit the cyclic error of every modulation frequency and the phase offset "
-                    "of every Z measurement (rgbz_fast.tof.calibrate) from frames of a flat "
+                    "of every Z measurement from frames of a flat "
                     "wall at known distances, and write them to an NPZ file that "
                     "tof_depth(calibration=ToFCalibration.load(...)) applies. Either give "
                     "frame files (from `simulate` or a real sensor, with ToF taps) and their "
-                    "distances, or --simulate a sweep of a sensor model.")
+                    "distances, or --simulate a sweep of a sensor model.", **kw)
     c.add_argument("frames", nargs="*", type=Path,
                    help=".npz frame files holding ToF taps, one per wall position (default: "
                         "none; --simulate makes them)")
@@ -458,7 +477,7 @@ def _parser():
                     "Middlebury RGB-D scenes (wrong, wrong-and-valid, caught), depths beyond "
                     "the unambiguous range (flagged), depth noise against the predicted sigma, "
                     "sunlight, and the calibration's residual cyclic error. Prints Markdown "
-                    "tables.")
+                    "tables.", **kw)
     d.add_argument("--data", type=Path, default=None, metavar="DIR",
                    help="folder of the Middlebury scenes (default: ../shared/data/rgbd when it "
                         "exists; without it the scene sections are skipped)")
@@ -831,7 +850,8 @@ def _depth(args):
             raise CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such as "
                            "an RGB-D folder, and save it as .npz)")
         res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
-                        min_snr=args.min_snr,
+                        min_snr=args.min_snr, max_sigma=args.max_sigma,
+                        flying_step=args.flying_step, min_reflectance=args.min_reflectance,
                         max_range=args.max_range, workers=args.workers)
         depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
         flags = res.to_frame(res.flags.astype(np.uint16), fill=_NO_MEASUREMENT).astype(np.uint8)

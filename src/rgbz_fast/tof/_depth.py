@@ -1,26 +1,29 @@
-"""The i-ToF ISP: four-tap demodulation, pattern-aware denoise, phase unwrapping, depth.
+"""The i-ToF ISP: four-tap demodulation, edge-aware denoise, phase unwrapping, depth.
 
 Paper §5.1.4 and Fig. 17: the depth is computed at the Z measurements only
-(no depth is interpolated at the colour sites), and the ISP's 3x3 averaging
-filter becomes a 5x5 kernel in which only the Z sites count.
+(no depth is interpolated at the colour sites); the paper's ISP turns its 3x3
+averaging filter into a 5x5 kernel in which only the Z sites count
+(``denoise="box"``). The default denoise is edge-aware instead.
 
 Chain (:func:`tof_depth`; every stage is also a function of its own)::
 
-    taps (F, 4, n) ─► demodulate (C): phase, amplitude, offset per frequency
-                   ─► denoise_phasors: mean of I + iQ over the Z measurements of the
-                      5x5 window (saturated measurements left out)
-                   ─► phase = atan2(Q, I) in [0, 2 pi)
+    taps (F, 4, n) ─► [calibration: dark offsets, per-measurement phase offsets]
+                   ─► I, Q per frequency (demodulate, phasors)
+                   ─► denoise_phasors_bilateral (C; default) or denoise_phasors (the
+                      paper's box), saturated measurements left out of every mean
+                   ─► phase = atan2(Q, I) in [0, 2 pi) ─► [cyclic-error correction]
                    ─► unwrap (C, weights f_i^2): depth, residual, wrap count
-                   ─► validity: saturation, signal-to-noise ratio, residual
+                   ─► sigma (predicted depth noise), implied reflectance
+                   ─► validity: saturated, low signal, inconsistent, flying, out of range
 
-Without the denoise, demodulation and unwrapping run as one fused C pass
-(:func:`demodulate_unwrap`); with it, the atan2 of the averaged phasors and the
-unwrapping do.
+Without the denoise and the calibration, demodulation and unwrapping run as one
+fused C pass (:func:`demodulate_unwrap`); otherwise the atan2 of the averaged
+phasors and the unwrapping do.
 
 Conventions (docs/guide/sensor.md): ``I = A0 - A2``, ``Q = A3 - A1``,
 ``phase = atan2(Q, I)`` wrapped to [0, 2 pi), ``amplitude = |I + iQ| / 2`` and
 ``offset = mean(A_k)`` in DN; ``distance = c phase / (4 pi f) + m c / (2 f)``.
-The choices and the measured numbers are in docs/guide/isp.md.
+The choices are explained in docs/guide/isp.md and measured in docs/reports/isp.md.
 """
 
 from __future__ import annotations
@@ -575,8 +578,8 @@ class ToFISP:
         Range scale ``h`` of the bilateral weights (2).
     min_snr : float
         Smallest per-frequency ``|I + iQ| / sigma_I`` of a valid measurement
-        (4: on noisy walls the unwrapping errs on 0.04 % of the measurements
-        at SNR 4-5 and on none of 94 000 above 5, see docs/guide/isp.md).
+        (4: on noisy walls the unwrapping errs on 0.07 % of the measurements
+        at SNR 4-5 and on 1 of 154 000 above 5, see docs/reports/isp.md).
     min_amplitude : float
         Smallest per-frequency amplitude (DN) of a valid measurement (0: only
         the SNR test).

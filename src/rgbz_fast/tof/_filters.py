@@ -11,7 +11,8 @@ Bilateral denoise
 -----------------
 The paper's 5x5 kernel (Fig. 17) averages every Z measurement of the window,
 so at a depth edge it mixes the two surfaces: on the six Middlebury scenes
-3.7 % of the Mask2 measurements end up more than 5 cm off (docs/reports/isp.md). The
+3.8 % of the Mask2 measurements end up more than 5 cm off (docs/reports/isp.md,
+"Measured: RGB-D scenes"). The
 bilateral version [1]_ weighs each neighbour by how much its phasors agree
 with the centre's, measured against their noise:
 
