@@ -41,7 +41,7 @@ fi
 ASAN_LIB=$(gcc -print-file-name=libasan.so)
 LOGDIR=$(mktemp -d /tmp/rgbz-sanitize-logs.XXXXXX)
 cd "$REPO"
-# The kernel tests on small frames (the Kodak crops are left out: they only add run
+# The tests of every C kernel on small frames (the Kodak crops are left out: they only add run
 # time), and the robustness tests that drive the kernels with extreme values.
 # --capture=sys: a sanitizer report is written to fd 2 by the runtime and would be lost
 # in pytest's fd capture when the process aborts; it is also kept in $LOGDIR.
@@ -53,6 +53,9 @@ env LD_PRELOAD="$ASAN_LIB" \
     CI=1 \
     "$VENV/bin/python" -m pytest -p no:cacheprovider -q -x --capture=sys \
         tests/reconstruction/test_reconstruct.py -k "not kodak" \
+        tests/reconstruction/test_learned.py tests/reconstruction/test_clip.py \
+        tests/metrics/test_metric_kernels.py tests/isp/test_encode.py \
+        tests/isp/test_demosaic.py tests/tof/test_filters.py tests/test_kernels.py \
         tests/test_extremes.py tests/test_properties.py tests/test_concurrency.py \
         "$@" || status=$?
 if compgen -G "$LOGDIR/*" > /dev/null; then
