@@ -1,4 +1,4 @@
-"""ToF ISP: demodulation, the edge-aware denoise (Fig. 17), unwrapping over the whole
+"""ToF ISP: demodulation, the denoise (edge-aware, and the paper's Fig. 17 box), unwrapping over the whole
 unambiguous range, validity flags, noisy walls and planes, and the RGB-D scenes."""
 
 from __future__ import annotations
