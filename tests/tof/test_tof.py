@@ -1,5 +1,5 @@
-"""ToF ISP: demodulation, the denoise (edge-aware, and the paper's Fig. 17 box), unwrapping over the whole
-unambiguous range, validity flags, noisy walls and planes, and the RGB-D scenes."""
+"""ToF ISP: demodulation, the denoise (edge-aware, and the paper's Fig. 17 box), unwrapping
+over the whole unambiguous range, validity flags, noisy walls and planes, the RGB-D scenes."""
 
 from __future__ import annotations
 
