@@ -529,13 +529,13 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, int n,
 /* ---- the instances: a plan built in Python, with and without clipped pixels, and the
    Mask1 plans of recon_mask1.h as compile-time constants (one function each, so that
    GCC folds the plan into the inlined core) ---- */
-RGBZ_CLONES static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *const *v, int n,
+RGBZ_CLONES_512 static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *const *v, int n,
                                             const RFN(rgbz_knobs) *kn, REAL *restrict r)
 {
     RFN(rgbz_core)(p, v, n, NULL, kn, r);
 }
 
-RGBZ_CLONES static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
+RGBZ_CLONES_512 static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
                                             const uint64_t *clipped,
                                             const RFN(rgbz_knobs) *kn, REAL *restrict r)
 {
@@ -543,8 +543,9 @@ RGBZ_CLONES static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *cons
 }
 
 #define RGBZ_M1_CORE(name)                                                               \
-    RGBZ_CLONES static void RFN(rgbz_core_m1_##name)(const REAL *const *v, int n,         \
-                                                     const RFN(rgbz_knobs) *kn, REAL *r) \
+    RGBZ_CLONES_512 static void RFN(rgbz_core_m1_##name)(const REAL *const *v, int n,     \
+                                                         const RFN(rgbz_knobs) *kn,      \
+                                                         REAL *r)                        \
     {                                                                                    \
         RFN(rgbz_core)(&rgbz_mask1_##name, v, n, NULL, kn, r);                           \
     }

@@ -93,7 +93,7 @@ RGBZ_INLINE void LFN(rgbz_stream)(const IN_T *restrict row, ptrdiff_t x0, ptrdif
  * block and the core reads the taps as pointers into it (Mask1: 7 streams for 16 taps).
  * Near the borders each tap is gathered through the column map.
  */
-RGBZ_CLONES static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p, int m1,
+RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p, int m1,
                                         ptrdiff_t cols, ptrdiff_t x0, ptrdiff_t x1,
                                         const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
                                         int clip_on, double clip_level, IN_T *drow)
@@ -132,8 +132,10 @@ RGBZ_CLONES static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan 
                 const IN_T *row = w->rowp[s_dy[s] + w->ry];
                 const ptrdiff_t xs = xb + s_r[s] + (ptrdiff_t)s_q0[s] * px;
                 const int len = n + s_q1[s] - s_q0[s];
-                if (px == 2)
+                if (px == 2)        /* Mask1, Bayer-period tiles: a compile-time stride */
                     LFN(rgbz_stream)(row, xs, 2, len, buf[s]);
+                else if (px == 4)   /* Mask2 */
+                    LFN(rgbz_stream)(row, xs, 4, len, buf[s]);
                 else
                     LFN(rgbz_stream)(row, xs, px, len, buf[s]);
             }
