@@ -529,31 +529,33 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, int n,
 /* ---- the instances: a plan built in Python, with and without clipped pixels, and the
    Mask1 plans of recon_mask1.h as compile-time constants (one function each, so that
    GCC folds the plan into the inlined core) ---- */
-RGBZ_CLONES static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *const *v, int n,
+RGBZ_CLONES_512 static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *const *v, int n,
                                             const RFN(rgbz_knobs) *kn, REAL *restrict r)
 {
     RFN(rgbz_core)(p, v, n, NULL, kn, r);
 }
 
-RGBZ_CLONES static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
+RGBZ_CLONES_512 static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
                                             const uint64_t *clipped,
                                             const RFN(rgbz_knobs) *kn, REAL *restrict r)
 {
     RFN(rgbz_core)(p, v, n, clipped, kn, r);
 }
 
-#define RGBZ_M1_CORE(name)                                                               \
-    RGBZ_CLONES static void RFN(rgbz_core_m1_##name)(const REAL *const *v, int n,         \
-                                                     const RFN(rgbz_knobs) *kn, REAL *r) \
+/* clones: bilinear and BI on Mask1 run slower on 1 thread with the AVX-512F clone (BI
+   float32: 800 against 1030 Mpix/s; docs/reports/benchmarks.md), the others faster */
+#define RGBZ_M1_CORE(name, clones)                                                       \
+    clones static void RFN(rgbz_core_m1_##name)(const REAL *const *v, int n,              \
+                                                const RFN(rgbz_knobs) *kn, REAL *r)      \
     {                                                                                    \
         RFN(rgbz_core)(&rgbz_mask1_##name, v, n, NULL, kn, r);                           \
     }
-RGBZ_M1_CORE(bilinear)
-RGBZ_M1_CORE(bi)
-RGBZ_M1_CORE(edi_central)
-RGBZ_M1_CORE(edi_line)
-RGBZ_M1_CORE(sg)
-RGBZ_M1_CORE(sg_combined)
+RGBZ_M1_CORE(bilinear, RGBZ_CLONES)
+RGBZ_M1_CORE(bi, RGBZ_CLONES)
+RGBZ_M1_CORE(edi_central, RGBZ_CLONES_512)
+RGBZ_M1_CORE(edi_line, RGBZ_CLONES_512)
+RGBZ_M1_CORE(sg, RGBZ_CLONES_512)
+RGBZ_M1_CORE(sg_combined, RGBZ_CLONES_512)
 #undef RGBZ_M1_CORE
 
 /* indexed as rgbz_mask1_plans */

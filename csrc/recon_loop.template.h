@@ -60,8 +60,29 @@ static inline IN_T LFN(rgbz_to_out)(REAL r, REAL maxval)
 typedef struct {
     const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 1];   /* row of offset dy: rowp[dy + ry] */
     const ptrdiff_t *colmap;                     /* column of x + dx: colmap[x + dx + rx] */
+    /* NULL, or the rows deinterleaved by column phase (px == 4): the column x of the row
+       of offset dy is planes[((dy + ry) * 4 + x % 4) * plen + x / 4] */
+    const REAL *planes;
+    ptrdiff_t plen;
     int ry, rx, px;
 } LFN(rgbz_row);
+
+/* out[c * plen + i] = (REAL)row[4 i + c]: a row split into its four column phases, so
+   that the taps of the sites x, x + 4, ... are contiguous */
+RGBZ_INLINE void LFN(rgbz_deinterleave4)(const IN_T *restrict row, ptrdiff_t cols,
+                                         ptrdiff_t plen, REAL *restrict out)
+{
+    const ptrdiff_t full = cols / 4;
+    REAL *restrict p0 = out, *restrict p1 = out + plen, *restrict p2 = out + 2 * plen,
+         *restrict p3 = out + 3 * plen;
+    for (ptrdiff_t i = 0; i < full; i++) {
+        p0[i] = (REAL)row[4 * i];
+        p1[i] = (REAL)row[4 * i + 1];
+        p2[i] = (REAL)row[4 * i + 2];
+        p3[i] = (REAL)row[4 * i + 3];
+    }
+    for (ptrdiff_t x = full * 4; x < cols; x++) out[(x % 4) * plen + x / 4] = (REAL)row[x];
+}
 
 /* tap t of the site x (one element, as stored) */
 static inline IN_T LFN(rgbz_tap)(const LFN(rgbz_row) *w, const rgbz_plan *p, int t, ptrdiff_t x,
@@ -93,7 +114,7 @@ RGBZ_INLINE void LFN(rgbz_stream)(const IN_T *restrict row, ptrdiff_t x0, ptrdif
  * block and the core reads the taps as pointers into it (Mask1: 7 streams for 16 taps).
  * Near the borders each tap is gathered through the column map.
  */
-RGBZ_CLONES static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p, int m1,
+RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p, int m1,
                                         ptrdiff_t cols, ptrdiff_t x0, ptrdiff_t x1,
                                         const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
                                         int clip_on, double clip_level, IN_T *drow)
@@ -127,13 +148,21 @@ RGBZ_CLONES static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan 
         const ptrdiff_t left = (x1 - 1 - xb) / px + 1;
         const int n = (int)(left < RGBZ_BLK ? left : RGBZ_BLK);
         const int direct = xb - w->rx >= 0 && xb + (ptrdiff_t)(n - 1) * px + w->rx < cols;
-        if (direct) {
+        if (direct && w->planes) {
+            /* rows deinterleaved: each tap of the block is a contiguous run of a plane */
+            for (int t = 0; t < nt; t++) {
+                const ptrdiff_t c = xb + p->tap_dx[t];
+                v[t] = w->planes + ((ptrdiff_t)(p->tap_dy[t] + w->ry) * 4 + c % 4) * w->plen + c / 4;
+            }
+        } else if (direct) {
             for (int s = 0; s < ns; s++) {
                 const IN_T *row = w->rowp[s_dy[s] + w->ry];
                 const ptrdiff_t xs = xb + s_r[s] + (ptrdiff_t)s_q0[s] * px;
                 const int len = n + s_q1[s] - s_q0[s];
-                if (px == 2)
+                if (px == 2)        /* Mask1, Bayer-period tiles: a compile-time stride */
                     LFN(rgbz_stream)(row, xs, 2, len, buf[s]);
+                else if (px == 4)   /* Mask2 */
+                    LFN(rgbz_stream)(row, xs, 4, len, buf[s]);
                 else
                     LFN(rgbz_stream)(row, xs, px, len, buf[s]);
             }
@@ -212,6 +241,19 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
         int row_has_z = 0;
         for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
         if (!row_has_z) continue;           /* a colour-only row: the copy is the output */
+        /* Mask2 and other 4-column tiles: the window's rows deinterleaved once for the
+           row's phases (without the memory, the strided gather) */
+        w.planes = NULL;
+        w.plen = (cols + 3) / 4;
+        REAL *planes = NULL;
+        if (px == 4) {
+            planes = (REAL *)malloc((size_t)(2 * ry + 1) * 4 * (size_t)w.plen * sizeof(REAL));
+            if (planes)
+                for (int dy = -ry; dy <= ry; dy++)
+                    LFN(rgbz_deinterleave4)(w.rowp[dy + ry], cols, w.plen,
+                                            planes + (ptrdiff_t)(dy + ry) * 4 * w.plen);
+            w.planes = planes;
+        }
         /* segments [xa[s], xa[s + 1]) of the row, and their constant plan (-1: none): a
            Mask1 Z row runs its interior [2, cols - 2) on the constant plan */
         const int fast_row = m1 >= 0 && y >= 2 && y < rows - 2 && (y & 1) == zr && cols > 4;
@@ -230,6 +272,7 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
                                 xa[s + 1], &kn, maxval, clip_on, clip_level, dst + y * cols);
             }
         }
+        free(planes);
     }
     return RGBZ_OK;
 }

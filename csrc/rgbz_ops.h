@@ -83,8 +83,12 @@ static inline int rgbz_popcount(uint32_t m)
  * C99 build (-std=c99, so -ffp-contract=off) contracts nothing into FMAs, so
  * every clone computes the same IEEE operations and the results are identical
  * bit for bit. The counting build and other compilers get one copy.
- *   RGBZ_CLONES      AVX2 and the x86-64 baseline (the reconstruction)
- *   RGBZ_CLONES_512  AVX-512F, AVX2 and the baseline (the ToF blocks, double throughout)
+ *   RGBZ_CLONES      AVX2 and the x86-64 baseline (the learned kernel; bilinear and
+ *                    BI on Mask1, slower on 1 thread with AVX-512F)
+ *   RGBZ_CLONES_512  AVX-512F, AVX2 and the baseline (the reconstruction's gather and
+ *                    core, the ToF blocks): the AVX-512F clone runs 16 float lanes;
+ *                    SG float32 ran 1.1-1.9x as fast with it as with AVX2 on 1 thread
+ *                    (docs/reports/benchmarks.md, issue 16)
  */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
     !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
