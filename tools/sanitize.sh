@@ -39,6 +39,10 @@ if [ -n "${ASAN_REBUILD:-}" ] || ! "$VENV/bin/python" -c "import rgbz_fast" 2>/d
 fi
 
 ASAN_LIB=$(gcc -print-file-name=libasan.so)
+# libstdc++ preloaded too: colour-science imports matplotlib, whose C++ extension throws
+# exceptions; ASan's __cxa_throw interceptor needs the real one loaded before it is called
+# (without it: "CHECK failed: asan_interceptors.cpp ... real___cxa_throw").
+STDCXX_LIB=$(gcc -print-file-name=libstdc++.so.6)
 LOGDIR=$(mktemp -d /tmp/rgbz-sanitize-logs.XXXXXX)
 cd "$REPO"
 # The tests of every C kernel on small frames (the Kodak crops are left out: they only add run
@@ -47,7 +51,7 @@ cd "$REPO"
 # in pytest's fd capture when the process aborts; it is also kept in $LOGDIR.
 # `-p no:cacheprovider` keeps .pytest_cache out of the checkout.
 status=0
-env LD_PRELOAD="$ASAN_LIB" \
+env LD_PRELOAD="$ASAN_LIB $STDCXX_LIB" \
     ASAN_OPTIONS="detect_leaks=0:halt_on_error=1:exitcode=99:log_path=$LOGDIR/asan" \
     UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:exitcode=98:log_path=$LOGDIR/ubsan" \
     CI=1 \
