@@ -253,6 +253,9 @@ def test_kernel_thread_count_is_reported():
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v and /proc: Linux")
+@pytest.mark.skipif("ASAN_OPTIONS" in __import__("os").environ,
+                    reason="under AddressSanitizer (tools/sanitize.sh): its shadow memory is "
+                           "terabytes of address space, which ulimit -v forbids")
 def test_too_many_threads_for_the_address_space_is_a_clear_error():
     """Under ``ulimit -v 4000000`` libgomp aborted the process at workers=512 ("Thread creation
     failed"); now check_workers refuses beyond the bound the limit leaves, and a count within
