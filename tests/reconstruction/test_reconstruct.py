@@ -18,16 +18,13 @@ kernels and of rgbz_fast._plans; the two must agree:
 from __future__ import annotations
 
 import inspect
-import sys
 import zlib
 from functools import lru_cache
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-
-import rgbz_fast as rz  # noqa: E402
+import rgbz_fast as rz
 from _reference.reconstruction import (METHODS, edi_rows_decision_margin, reference_reconstruct,  # noqa: E402
                         round_half_up, shift_index)
 from _support import TOL, load_kodak  # noqa: E402
@@ -482,6 +479,18 @@ def compare_int(out, data, pattern, method, precision, bit_depth, rare=True, **k
     return n_mis
 
 
+def _check_both_precisions(d, p, method, dtype):
+    """The contract in float64 and float32, and the reference: exact for float64 frames,
+    within compare_int's tolerance for integer ones."""
+    for precision in ("float64", "float32"):
+        out = run(d, p, method, precision=precision)
+        check_contract(out, d, p, 11)
+        if dtype == np.float64:
+            compare(out, d, p, method, precision)
+        else:
+            compare_int(out, d, p, method, precision, 11, rare=False)
+
+
 @pytest.mark.parametrize("pname, method", CASES, ids=CASE_IDS)
 @pytest.mark.parametrize("kind", INT_KINDS, ids=INT_IDS)
 @pytest.mark.parametrize("precision", ["float64", "float32"])
@@ -626,13 +635,7 @@ def test_single_hot_pixel(pname, method, dtype):
     for y, x in colour[rng.choice(len(colour), 6, replace=False)]:
         d = np.zeros(shape, dtype)
         d[y, x] = 2047
-        for precision in ("float64", "float32"):
-            out = run(d, p, method, precision=precision)
-            check_contract(out, d, p, 11)
-            if dtype == np.float64:
-                compare(out, d, p, method, precision)
-            else:
-                compare_int(out, d, p, method, precision, 11, rare=False)
+        _check_both_precisions(d, p, method, dtype)
 
 
 def _line_image(shape, col):
@@ -699,13 +702,7 @@ def test_checkerboards(pname, method, board):
     for dtype in (np.float64, np.uint16):
         d = (b * 2047).astype(dtype)
         d[p.z_mask(shape)] = 0
-        for precision in ("float64", "float32"):
-            out = run(d, p, method, precision=precision)
-            check_contract(out, d, p, 11)
-            if dtype == np.float64:
-                compare(out, d, p, method, precision)
-            else:
-                compare_int(out, d, p, method, precision, 11, rare=False)
+        _check_both_precisions(d, p, method, dtype)
 
 
 @pytest.mark.parametrize("pname, method", CASES, ids=CASE_IDS)
