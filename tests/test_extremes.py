@@ -12,9 +12,7 @@ feature only influences the 5x5 window around it.
 from __future__ import annotations
 
 import os
-import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest

@@ -22,8 +22,6 @@ from __future__ import annotations
 
 import os
 import re
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest

@@ -1,8 +1,6 @@
 """Dataset evaluation: tidy results, caching and resume, atomic files, reports, Dask."""
 
 import json
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest

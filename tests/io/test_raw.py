@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-from pathlib import Path
 
 
 import numpy as np  # noqa: E402
@@ -11,7 +10,7 @@ import pytest  # noqa: E402
 from _support import shared_path  # noqa: E402
 
 from rgbz_fast import RawFrame, bayer, mask1, mask2, reconstruct, rows  # noqa: E402
-from rgbz_fast._patterns import BAYER_PHASES, Z  # noqa: E402
+from rgbz_fast._patterns import BAYER_PHASES
 from rgbz_fast.io import clipped_mask, list_raw_files, read_raw, to_rgbz  # noqa: E402
 
 PHASES = ["RGGB", "BGGR", "GRBG", "GBRG"]

@@ -3,10 +3,8 @@ the colour-demosaicing methods, and bad input."""
 
 from __future__ import annotations
 
-import sys
 import warnings
 from concurrent.futures import ThreadPoolExecutor
-from pathlib import Path
 
 import numpy as np
 import pytest

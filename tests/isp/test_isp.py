@@ -4,8 +4,6 @@ correction (planted defects; Z sites never read), sRGB output, bad input."""
 from __future__ import annotations
 
 import pickle
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest

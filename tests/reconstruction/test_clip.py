@@ -15,9 +15,7 @@ and the CLI.
 
 from __future__ import annotations
 
-import sys
 import zlib
-from pathlib import Path
 
 import numpy as np
 import pytest

@@ -123,12 +123,12 @@ def test_flat_colour_is_reproduced_exactly():
     """Every fitted filter sums to 1 over the target colour and to 0 over the others, so a
     flat colour field comes back unchanged (up to float rounding)."""
     for pname in ("mask1", "mask2"):
-        f = default_filters(pname, 11)
         img = np.empty((32, 32, 3))
         img[...] = (0.2, 0.5, 0.9)
         frame = rz.mosaic(img, pname, dtype=np.float64)
         ref = rz.mosaic(img, rz.get_pattern(pname).bayer_pattern(), dtype=np.float64).data
-        got = rz.reconstruct(frame, "learned", precision="float64")
+        got = rz.reconstruct(frame, "learned", precision="float64",
+                             filters=default_filters(pname, 11))
         np.testing.assert_allclose(got, ref, atol=1e-6)
 
 

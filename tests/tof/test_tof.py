@@ -3,9 +3,7 @@ over the whole unambiguous range, validity flags, noisy walls and planes, the RG
 
 from __future__ import annotations
 
-import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -17,7 +15,7 @@ from rgbz_fast.simulation import Scene, load_rgbd  # noqa: E402
 from rgbz_fast.simulation import (SPEED_OF_LIGHT, ToFSensor, ToFTaps, simulate,  # noqa: E402
                               simulate_tof)
 from rgbz_fast._devtools._numpy_tof import numpy_tof_depth, numpy_unwrap  # noqa: E402
-from rgbz_fast.tof import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL,  # noqa: E402
+from rgbz_fast.tof import (FLAG_INCONSISTENT, FLAG_LOW_SIGNAL,  # noqa: E402
                            FLAG_OUT_OF_RANGE, FLAG_SATURATED, MAX_WRAPS, ToFDepth, ToFISP,
                            demodulate, demodulate_unwrap, denoise_phasors, phasors, tof_depth,
                            unambiguous_range, unwrap)
