@@ -22,7 +22,7 @@ calls (after one warm-up call), with 1 thread and with all threads. Beside it:
 * ToF section: demodulation + unwrapping of the Z measurements of a Mask1
   frame of that size (3 million at 3000x4000; 3 frequencies x 4 taps,
   synthetic 11-bit taps of depths in [0.3, 7] m) in million measurements
-  per second: the fused C kernel (``tof_isp.demodulate_unwrap``) with 1
+  per second: the fused C kernel (``rgbz_fast.tof.demodulate_unwrap``) with 1
   thread and all threads beside the vectorised NumPy implementation of the
   same algorithm (``rgbz_fast._devtools._numpy_tof``: ``np.arctan2``, brute force over
   the same wrap candidates), timed in turn in the same loop, with the check
@@ -354,7 +354,7 @@ def tof_sites_benchmark(shape=FULL_SHAPE, repeat=5, workers=None, pattern="mask1
     """
     import rgbz_fast as rz
 
-    from .. import tof as tof_isp
+    from .. import tof
     from ._numpy_tof import numpy_tof_depth
 
     workers = workers or (os.cpu_count() or 1)
@@ -367,17 +367,17 @@ def tof_sites_benchmark(shape=FULL_SHAPE, repeat=5, workers=None, pattern="mask1
     f = np.asarray(TOF_FREQS)
 
     def stages():
-        ph, _, _ = tof_isp.demodulate(taps, workers=workers)
-        tof_isp.unwrap(ph, f, workers=workers)
+        ph, _, _ = tof.demodulate(taps, workers=workers)
+        tof.unwrap(ph, f, workers=workers)
 
     times = _interleaved({
-        "c_1": lambda: tof_isp.demodulate_unwrap(taps, f, workers=1),
-        "c_all": lambda: tof_isp.demodulate_unwrap(taps, f, workers=workers),
+        "c_1": lambda: tof.demodulate_unwrap(taps, f, workers=1),
+        "c_all": lambda: tof.demodulate_unwrap(taps, f, workers=workers),
         "c_stages_all": stages,
         "numpy": lambda: numpy_tof_depth(taps, f),
     }, repeat)
     out = {k: _site_stats(v, n) for k, v in times.items()}
-    c = tof_isp.demodulate_unwrap(taps, f, workers=workers)
+    c = tof.demodulate_unwrap(taps, f, workers=workers)
     ref = numpy_tof_depth(taps, f)
     agree = {"wraps_equal": bool(np.array_equal(c[2], ref[2])),
              "max_abs_depth_diff_m": float(np.max(np.abs(c[0] - ref[0]))) if n else 0.0,
