@@ -78,23 +78,7 @@ def _gather_neighbours(work, tile, rr, cc):
 
 
 def reference_detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047):
-    """Boolean map of the defective colour pixels (see :class:`DefectCorrection`).
-
-    Parameters
-    ----------
-    cfa : ndarray, shape (rows, cols)
-        Raw frame in DN (the values at Z sites are never read).
-    pattern : Pattern or str
-        The frame's pattern.
-    params : DefectCorrection
-    white_level : float
-        Full scale in DN (``2**bit_depth - 1``).
-
-    Returns
-    -------
-    ndarray of bool, shape (rows, cols)
-        False at every Z site.
-    """
+    """``rgbz_fast.isp.detect_defects`` (same parameters and results), full-frame NumPy."""
     data, pattern = np.asarray(cfa), get_pattern(pattern)
     white_level = float(white_level)
     found = np.zeros(data.shape, bool)
@@ -151,31 +135,8 @@ def reference_detect_defects(cfa, pattern, params=DefectCorrection(), *, white_l
 
 
 def reference_correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047,
-                              known=None,
-                    return_mask=False):
-    """Replace defective colour pixels by the median of their same-colour neighbours.
-
-    Parameters
-    ----------
-    cfa : ndarray, shape (rows, cols)
-        Raw frame in DN. The values at Z sites are neither read nor changed.
-    pattern : Pattern or str
-    params : DefectCorrection
-    white_level : float
-        Full scale in DN.
-    known : ndarray of bool, shape (rows, cols), optional
-        Known defects (a factory defect map), corrected in addition to the
-        detected ones (Z sites in it are ignored).
-    return_mask : bool
-        Also return the map of corrected pixels.
-
-    Returns
-    -------
-    out : ndarray, same shape and dtype as ``cfa``
-        A copy (the input is never modified).
-    mask : ndarray of bool
-        Only with ``return_mask``.
-    """
+                              known=None, return_mask=False):
+    """``rgbz_fast.isp.correct_defects`` (same parameters and results), full-frame NumPy."""
     data, pattern = np.asarray(cfa), get_pattern(pattern)
     mask = reference_detect_defects(data, pattern, params, white_level=white_level)
     zmask = pattern.z_mask(data.shape)
