@@ -190,9 +190,10 @@ def _paired_figure(results, metric, baseline=None):
     name = METRIC_LABELS[metric].split(" (")[0]
     axes[0][0].set_ylabel(f"Δ {name} vs {METHOD_LABELS.get(base, base)}"
                           + (f" ({unit})" if unit else ""))
+    # two lines: one line of this length ran off a two-mask figure
     fig.suptitle(f"{name}, each method minus {METHOD_LABELS.get(base, base)} on the same image "
-                 f"({_direction(metric)}): dots = images ({len(results.images())}), "
-                 "diamond = mean with 95 % CI", fontsize=9)
+                 f"({_direction(metric)})\ndots = images ({len(results.images())}), "
+                 "diamond = mean with 95 % confidence interval", fontsize=9)
     fig.tight_layout()
     return fig
 
