@@ -121,10 +121,23 @@ class RawFrame:
                 f"pattern={self.pattern.name!r}, bit_depth={self.bit_depth}{extra})")
 
 
+class _Adopt:
+    """An array the library has just made and hands to a RawFrame, which keeps it as its own
+    without copying it (the public constructor copies what a caller may still hold)."""
+
+    __slots__ = ("array",)
+
+    def __init__(self, array):
+        self.array = array
+
+
 def _owned(a):
-    """A C-ordered copy of an array-like (None stays None): the frame's own memory."""
+    """A C-ordered copy of an array-like (None stays None): the frame's own memory. An
+    :class:`_Adopt` array is kept as it is when it is already C-ordered."""
     if a is None:
         return None
+    if isinstance(a, _Adopt):
+        return np.ascontiguousarray(a.array)
     if isinstance(a, np.ma.MaskedArray):
         a = a.data
     return np.array(a, copy=True, order="C")
@@ -261,7 +274,7 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     else:
         data = scaled.astype(out_dtype)
     data[pattern.channel_map(shape) == Z] = 0
-    return RawFrame(data, pattern, bd)
+    return RawFrame(_Adopt(data), pattern, bd)
 
 
 @dataclass(frozen=True, eq=False)

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._frame import RawFrame, ToFTaps
+from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Pattern, get_pattern
 from .._sensors import ToFSensor
 from ._files import MAX_BYTES_ENV, atomic_write, check_size, read_file, read_image, read_limits
@@ -136,7 +136,7 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         if bit_depth is None:
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
         data = read_image(path, "path", max_pixels=limits[0], max_bytes=limits[1])
-        return RawFrame(data, get_pattern(pattern), bit_depth, meta={"source": str(path)})
+        return RawFrame(_Adopt(data), get_pattern(pattern), bit_depth, meta={"source": str(path)})
     if bit_depth is not None:
         raw_kwargs["bit_depth"] = bit_depth           # the working bit depth of a raw file
     return read_raw(path, max_pixels=limits[0], max_bytes=limits[1], **raw_kwargs)
@@ -190,7 +190,8 @@ def _check_fields(obj, fields, where):
 
 
 def _frame_from(header, data, reference=None, tof=None):
-    return RawFrame(data, _pattern(header), header["bit_depth"], reference=reference, tof=tof,
+    return RawFrame(_Adopt(data), _pattern(header), header["bit_depth"],
+                    reference=None if reference is None else _Adopt(reference), tof=tof,
                     meta=header.get("meta", {}))
 
 

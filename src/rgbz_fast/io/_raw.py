@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._frame import RawFrame, raw_clip_level
+from .._frame import RawFrame, _Adopt, raw_clip_level
 from .._patterns import BAYER_PHASES, Pattern, Z, bayer, mask1, mask2, rows
 from .._validate import check_bit_depth, check_dtype, check_number
 from ._files import check_size, read_file, read_image, read_limits
@@ -287,7 +287,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     }
     if kind == "headerless":
         meta["byteorder"] = byteorder
-    return RawFrame(out, bayer(phase), bd, meta=meta)
+    return RawFrame(_Adopt(out), bayer(phase), bd, meta=meta)
 
 
 def list_raw_files(folder, *, recursive=False, extensions=None):
@@ -383,7 +383,7 @@ def to_rgbz(frame, pattern):
         meta["clipped"] = cm
     meta["rgbz_pattern"] = target.name
     meta["crop_rgbz"] = (int(r), int(c))
-    rgbz = RawFrame(data, target, frame.bit_depth, reference=reference, meta=meta)
+    rgbz = RawFrame(_Adopt(data), target, frame.bit_depth, reference=reference, meta=meta)
     return rgbz, reference
 
 

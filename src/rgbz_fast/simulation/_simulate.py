@@ -93,7 +93,7 @@ from pathlib import Path
 import numpy as np
 
 from .._deps import import_colour
-from .._frame import RawFrame, ToFTaps
+from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
 from .._validate import check_seed
@@ -341,7 +341,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
             "noise": bool(noise), "seed": seed, "scene": scene.name}
     if optics is not None:
         meta["optics"] = optics
-    return RawFrame(dn, pattern.bayer_pattern(), sensor.bit_depth, meta=meta)
+    return RawFrame(_Adopt(dn), pattern.bayer_pattern(), sensor.bit_depth, meta=meta)
 
 
 def _z_block(pattern):
@@ -617,5 +617,5 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
     meta = dict(ref.meta)
     meta.update(colour_sensor=colour_sensor, tof_sensor=used, tof=status,
                 pattern=pattern.name)
-    return RawFrame(data, pattern, colour_sensor.bit_depth, reference=ref.data, tof=tof,
-                    meta=meta)
+    return RawFrame(_Adopt(data), pattern, colour_sensor.bit_depth, reference=_Adopt(ref.data),
+                    tof=tof, meta=meta)
