@@ -54,7 +54,6 @@ def test_demodulate_matches_numpy():
 
 
 def _brute_denoise(i, q, rows, cols, radius, use):
-    n = rows.size
     near = ((np.abs(rows[:, None] - rows[None]) <= radius)
             & (np.abs(cols[:, None] - cols[None]) <= radius) & use[None])
     cnt = near.sum(axis=1)
