@@ -250,6 +250,43 @@ static inline REAL RFN(rgbz_exp_arg)(REAL G, REAL inv, int known)
 }
 
 /*
+ * rgbz_gammas_block without clipped pixels, for a family of NG groups from g0 (compile-time
+ * NG, REL = rel > 0, FAST = the fast exponential where it is called) whose groups all have
+ * differences and all get a gamma: the same operations in the same order per site, with
+ * the family's means, minimum and sum in registers rather than one pass over the block
+ * per group and quantity.
+ */
+RGBZ_INLINE void RFN(rgbz_gammas_full)(const rgbz_plan *p, REAL (*G)[RGBZ_BLK], int g0, int NG,
+                                       int REL, int FAST, const RFN(rgbz_knobs) *kn, int n,
+                                       REAL (*gamma)[RGBZ_BLK])
+{
+    const REAL floor_ = kn->floor_, rel = kn->rel;
+    REAL sc[RGBZ_NGROUPS];
+    RGBZ_UNROLL
+    for (int q = 0; q < NG; q++) sc[q] = (REAL)p->group_scale[g0 + q];
+    RGBZ_IVDEP
+    BLOOP {
+        REAL gm[RGBZ_NGROUPS], gmin = (REAL)0, gsum = (REAL)0;
+        RGBZ_UNROLL
+        for (int q = 0; q < NG; q++) {
+            gm[q] = OMUL(G[g0 + q][j], sc[q]);
+            gmin = (!q || OCMP(gm[q] < gmin)) ? gm[q] : gmin;
+            if (REL) gsum = !q ? gm[q] : OADD(gsum, gm[q]);
+        }
+        REAL sg = OCMP(gmin > floor_) ? gmin : floor_;
+        if (REL) {
+            const REAL rf = ODIV(OMUL(rel, gsum), (REAL)NG);
+            sg = OCMP(rf > sg) ? rf : sg;
+        }
+        const REAL inv = ODIV((REAL)1, OMUL((REAL)2, OMUL(sg, sg)));
+        RGBZ_UNROLL
+        for (int q = 0; q < NG; q++)
+            gamma[g0 + q][j] = FAST ? REXP_FAST(RFN(rgbz_exp_arg)(gm[q], inv, 1))
+                                    : REXP_LIBM(RFN(rgbz_exp_arg)(gm[q], inv, 1));
+    }
+}
+
+/*
  * The gamma factors (eq. 7) of the family of groups [g0, g1) (the semi-gradients 0..7
  * or the gradients 8..11), from the group sums G of rgbz_groups_block: each group's mean
  * G * group_scale (near clipping G / cnt), then sigma = max(min G, floor, rel * mean G)
@@ -264,8 +301,28 @@ RGBZ_INLINE void RFN(rgbz_gammas_block)(const rgbz_plan *p, REAL (*G)[RGBZ_BLK],
                                         REAL (*gamma)[RGBZ_BLK])
 {
     const REAL floor_ = kn->floor_, rel = kn->rel;
-    int n_known = 0;
-    for (int g = g0; g < g1; g++) n_known += p->group_scale[g] > 0.0;
+    int n_known = 0, n_gamma = 0;
+    for (int g = g0; g < g1; g++) {
+        n_known += p->group_scale[g] > 0.0;
+        n_gamma += (p->gamma_mask >> g) & 1;
+    }
+    if (!clip && n_known == g1 - g0 && n_gamma == g1 - g0 && (g1 - g0 == 8 || g1 - g0 == 4)) {
+        /* every group known and evaluated (the semi-gradients and gradients of the SG
+           plans): the family in registers */
+        const int fast = kn->exp_mode == RGBZ_EXP_FAST, r = rel > (REAL)0;
+        if (g1 - g0 == 8) {
+            if (fast && r) RFN(rgbz_gammas_full)(p, G, g0, 8, 1, 1, kn, n, gamma);
+            else if (fast) RFN(rgbz_gammas_full)(p, G, g0, 8, 0, 1, kn, n, gamma);
+            else if (r) RFN(rgbz_gammas_full)(p, G, g0, 8, 1, 0, kn, n, gamma);
+            else RFN(rgbz_gammas_full)(p, G, g0, 8, 0, 0, kn, n, gamma);
+        } else {
+            if (fast && r) RFN(rgbz_gammas_full)(p, G, g0, 4, 1, 1, kn, n, gamma);
+            else if (fast) RFN(rgbz_gammas_full)(p, G, g0, 4, 0, 1, kn, n, gamma);
+            else if (r) RFN(rgbz_gammas_full)(p, G, g0, 4, 1, 0, kn, n, gamma);
+            else RFN(rgbz_gammas_full)(p, G, g0, 4, 0, 0, kn, n, gamma);
+        }
+        return;
+    }
     if (!n_known) {
         for (int g = g0; g < g1; g++) BLOOP gamma[g][j] = (REAL)1;
         return;
@@ -325,6 +382,37 @@ RGBZ_INLINE void RFN(rgbz_rows_sum)(const REAL *const *rows, int nr, int n, REAL
         REAL s = rows[0][j];
         for (int i = 1; i < nr; i++) s = OADD(s, rows[i][j]);
         out[j] = s;
+    }
+}
+
+/*
+ * beta's sums without clipped pixels, S[k][j] = 1 + sum_{m != k} |c_k - c_m| with the
+ * differences added in the order of the pair loop of rgbz_core (pairs (k, m), k < m, k
+ * outer), for `nc` candidates, a compile-time constant where it is called: the loops over
+ * the pairs unroll, the loop over the sites vectorises, and the nc running sums stay in
+ * registers rather than being loaded and stored once per pair.
+ */
+RGBZ_INLINE void RFN(rgbz_beta_sums)(const REAL *const *c, int nc, int n, REAL (*S)[RGBZ_BLK])
+{
+    RGBZ_IVDEP
+    BLOOP {
+        REAL cc[RGBZ_MAX_CAND], s[RGBZ_MAX_CAND];
+        RGBZ_UNROLL
+        for (int k = 0; k < nc; k++) {
+            cc[k] = c[k][j];
+            s[k] = (REAL)1;
+        }
+        RGBZ_UNROLL
+        for (int k = 0; k < nc; k++) {
+            RGBZ_UNROLL
+            for (int m = k + 1; m < nc; m++) {
+                const REAL d = RABSDIFF(cc[k], cc[m]);
+                s[k] = OADD(s[k], d);
+                s[m] = OADD(s[m], d);
+            }
+        }
+        RGBZ_UNROLL
+        for (int k = 0; k < nc; k++) S[k][j] = s[k];
     }
 }
 
@@ -402,7 +490,14 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, int n,
        lost terms (u_k < nc - 1 left) has its sum rescaled to the nc - 1 terms of eq. 4,
        one with none left keeps S = 1. */
     REAL S[RGBZ_MAX_CAND][RGBZ_BLK];
-    if (use_ab) {
+    if (use_ab && !clipped && (nc == 4 || nc == 8 || nc == 11)) {
+        /* the candidate counts of Mask1 (4) and Mask2 (8, 11): sums in registers */
+        switch (nc) {
+        case 4: RFN(rgbz_beta_sums)(c, 4, n, S); break;
+        case 8: RFN(rgbz_beta_sums)(c, 8, n, S); break;
+        default: RFN(rgbz_beta_sums)(c, 11, n, S); break;
+        }
+    } else if (use_ab) {
         uint8_t u[RGBZ_MAX_CAND][RGBZ_BLK];
         for (int k = 0; k < nc; k++) BLOOP {
             S[k][j] = (REAL)1;

@@ -9,11 +9,15 @@
  * through the core, converted and stored.
  *
  * Memory layout: src and dst are rows x cols, C-contiguous, row stride cols
- * elements. Inside the frame a block is gathered as strided streams (stride
- * px, a compile-time 2 for 2x2 tiles; rgbz_sites says how taps share them);
- * a block near the left or right border tap by tap through the column map
- * (colmap[x + rx] = the column x moved back into the frame by whole periods,
- * so that a tap keeps its colour); rows likewise through rgbz_extend.
+ * elements. For 2- and 4-column tiles (Mask1, Mask2) each thread converts the
+ * rows its windows need once, deinterleaved by column phase into a ring
+ * (rgbz_deinterleave), and the core reads the taps of a block in place there;
+ * for other tiles (or without the ring's memory) a block is gathered as
+ * strided streams (rgbz_sites says how taps share them). The sites within rx
+ * columns of the left or right border are gathered tap by tap through the
+ * column map (colmap[x + rx] = the column x moved back into the frame by
+ * whole periods, so that a tap keeps its colour), in blocks of their own;
+ * rows likewise through rgbz_extend.
  *
  * Mask1 (params->mask1_fast): the interior sites of the Z rows (two rows and
  * columns from the border) run the compile-time plan of recon_mask1.h, the
@@ -60,28 +64,33 @@ static inline IN_T LFN(rgbz_to_out)(REAL r, REAL maxval)
 typedef struct {
     const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 1];   /* row of offset dy: rowp[dy + ry] */
     const ptrdiff_t *colmap;                     /* column of x + dx: colmap[x + dx + rx] */
-    /* NULL, or the rows deinterleaved by column phase (px == 4): the column x of the row
-       of offset dy is planes[((dy + ry) * 4 + x % 4) * plen + x / 4] */
-    const REAL *planes;
+    /* NULL, or the rows converted to REAL and deinterleaved by column phase (px 2 or 4):
+       the column x of the row of offset dy is prow[dy + ry][(x % px) * plen + x / px] */
+    const REAL *prow[2 * RGBZ_MAX_RADIUS + 1];
     ptrdiff_t plen;
     int ry, rx, px;
 } LFN(rgbz_row);
 
-/* out[c * plen + i] = (REAL)row[4 i + c]: a row split into its four column phases, so
-   that the taps of the sites x, x + 4, ... are contiguous */
-RGBZ_INLINE void LFN(rgbz_deinterleave4)(const IN_T *restrict row, ptrdiff_t cols,
-                                         ptrdiff_t plen, REAL *restrict out)
+/* out[c * plen + i] = (REAL)row[P i + c], P = px (a compile-time 2 or 4 where it is
+   called): a row converted and split into its column phases, so that the taps of the sites
+   x, x + P, ... are contiguous */
+RGBZ_INLINE void LFN(rgbz_deinterleave_p)(const IN_T *restrict row, ptrdiff_t cols, int P,
+                                          ptrdiff_t plen, REAL *restrict out)
 {
-    const ptrdiff_t full = cols / 4;
-    REAL *restrict p0 = out, *restrict p1 = out + plen, *restrict p2 = out + 2 * plen,
-         *restrict p3 = out + 3 * plen;
-    for (ptrdiff_t i = 0; i < full; i++) {
-        p0[i] = (REAL)row[4 * i];
-        p1[i] = (REAL)row[4 * i + 1];
-        p2[i] = (REAL)row[4 * i + 2];
-        p3[i] = (REAL)row[4 * i + 3];
-    }
-    for (ptrdiff_t x = full * 4; x < cols; x++) out[(x % 4) * plen + x / 4] = (REAL)row[x];
+    const ptrdiff_t full = cols / P;
+    for (ptrdiff_t i = 0; i < full; i++)
+        for (int c = 0; c < P; c++) out[c * plen + i] = (REAL)row[(ptrdiff_t)P * i + c];
+    for (ptrdiff_t x = full * P; x < cols; x++) out[(x % P) * plen + x / P] = (REAL)row[x];
+}
+
+/* the same for px = 2 or 4, vectorised for the machine (the frame loop is not cloned) */
+RGBZ_CLONES_512 static void LFN(rgbz_deinterleave)(const IN_T *restrict row, ptrdiff_t cols,
+                                                   int px, ptrdiff_t plen, REAL *restrict out)
+{
+    if (px == 2)
+        LFN(rgbz_deinterleave_p)(row, cols, 2, plen, out);
+    else
+        LFN(rgbz_deinterleave_p)(row, cols, 4, plen, out);
 }
 
 /* tap t of the site x (one element, as stored) */
@@ -144,15 +153,26 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
         tap_s[t] = s;
         tap_q[t] = q;
     }
-    for (ptrdiff_t xb = x0; xb < x1; xb += (ptrdiff_t)px * RGBZ_BLK) {
-        const ptrdiff_t left = (x1 - 1 - xb) / px + 1;
-        const int n = (int)(left < RGBZ_BLK ? left : RGBZ_BLK);
-        const int direct = xb - w->rx >= 0 && xb + (ptrdiff_t)(n - 1) * px + w->rx < cols;
-        if (direct && w->planes) {
+    /* the sites j in [jd0, jd1) are at least rx columns from either border: their taps are
+       read in place (direct); the few others, through the column map. Blocks do not cross
+       these bounds, so that a block near a border is only its border sites. */
+    const ptrdiff_t ns_all = x1 > x0 ? (x1 - 1 - x0) / px + 1 : 0;
+    ptrdiff_t jd0 = x0 >= w->rx ? 0 : (w->rx - x0 + px - 1) / px;
+    ptrdiff_t jd1 = cols - w->rx - x0 > 0 ? (cols - w->rx - x0 + px - 1) / px : 0;
+    if (jd0 > ns_all) jd0 = ns_all;
+    if (jd1 > ns_all) jd1 = ns_all;
+    if (jd1 < jd0) jd1 = jd0;
+    for (ptrdiff_t jb = 0; jb < ns_all;) {
+        const ptrdiff_t seg_end = jb < jd0 ? jd0 : jb < jd1 ? jd1 : ns_all;
+        const int direct = jb >= jd0 && jb < jd1;
+        const int n = (int)(seg_end - jb < RGBZ_BLK ? seg_end - jb : RGBZ_BLK);
+        const ptrdiff_t xb = x0 + jb * px;
+        jb += n;
+        if (direct && w->prow[0]) {
             /* rows deinterleaved: each tap of the block is a contiguous run of a plane */
             for (int t = 0; t < nt; t++) {
                 const ptrdiff_t c = xb + p->tap_dx[t];
-                v[t] = w->planes + ((ptrdiff_t)(p->tap_dy[t] + w->ry) * 4 + c % 4) * w->plen + c / 4;
+                v[t] = w->prow[p->tap_dy[t] + w->ry] + (c % px) * w->plen + c / px;
             }
         } else if (direct) {
             for (int s = 0; s < ns; s++) {
@@ -227,52 +247,84 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
     }
     const int nth = rgbz_threads(prm->workers);
     (void)nth;
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t y = 0; y < rows; y++) {
-        LFN(rgbz_row) w;
-        w.colmap = colmap;
-        w.ry = ry;
-        w.rx = rx;
-        w.px = px;
-        for (int dy = -ry; dy <= ry; dy++)
-            w.rowp[dy + ry] = src + rgbz_extend(y + dy, rows, py) * cols;
-        memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
-        const int32_t *pm = phase_map + (y % py) * px;
-        int row_has_z = 0;
-        for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
-        if (!row_has_z) continue;           /* a colour-only row: the copy is the output */
-        /* Mask2 and other 4-column tiles: the window's rows deinterleaved once for the
-           row's phases (without the memory, the strided gather) */
-        w.planes = NULL;
-        w.plen = (cols + 3) / 4;
-        REAL *planes = NULL;
-        if (px == 4) {
-            planes = (REAL *)malloc((size_t)(2 * ry + 1) * 4 * (size_t)w.plen * sizeof(REAL));
-            if (planes)
-                for (int dy = -ry; dy <= ry; dy++)
-                    LFN(rgbz_deinterleave4)(w.rowp[dy + ry], cols, w.plen,
-                                            planes + (ptrdiff_t)(dy + ry) * 4 * w.plen);
-            w.planes = planes;
-        }
-        /* segments [xa[s], xa[s + 1]) of the row, and their constant plan (-1: none): a
-           Mask1 Z row runs its interior [2, cols - 2) on the constant plan */
-        const int fast_row = m1 >= 0 && y >= 2 && y < rows - 2 && (y & 1) == zr && cols > 4;
-        const ptrdiff_t xa[4] = {0, fast_row ? 2 : cols, fast_row ? cols - 2 : cols, cols};
-        const int seg_m1[3] = {-1, m1, -1};
-        for (int s = 0; s < 3; s++) {
-            for (int ph = 0; ph < px; ph++) {
-                const int pl = pm[ph];
-                if (pl < 0 || xa[s] >= xa[s + 1]) continue;
-                const ptrdiff_t x0 = xa[s] + ((ph - xa[s] % px) + px) % px;
-#ifdef RGBZ_COUNT_OPS
-                rgbz_opc_cur = opcounts + (size_t)pl * RGBZ_NOPS;
+    /* 2- and 4-column tiles (Mask1, Mask2): each thread keeps the rows its window needs
+       converted and deinterleaved (rgbz_deinterleave) in a ring of 2 ry + 1 slots, tagged
+       with the frame row they hold, so that a row is converted once per thread rather than
+       once per window it falls in (a thread's rows are consecutive: static schedule).
+       Without the memory, the strided gather of rgbz_sites. */
+    const int nslot = 2 * ry + 1;
+    const ptrdiff_t plen = (px == 2 || px == 4) ? (cols + px - 1) / px : 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth)
 #endif
-                const int m = seg_m1[s];
-                LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], m, cols, x0,
-                                xa[s + 1], &kn, maxval, clip_on, clip_level, dst + y * cols);
+    {
+        REAL *ring = plen ? (REAL *)malloc((size_t)nslot * (size_t)px * (size_t)plen * sizeof(REAL))
+                          : NULL;
+        ptrdiff_t tag[2 * RGBZ_MAX_RADIUS + 1];
+        for (int k = 0; k < nslot; k++) tag[k] = -1;
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t y = 0; y < rows; y++) {
+            LFN(rgbz_row) w;
+            w.colmap = colmap;
+            w.ry = ry;
+            w.rx = rx;
+            w.px = px;
+            w.plen = plen;
+            ptrdiff_t need[2 * RGBZ_MAX_RADIUS + 1];
+            for (int dy = -ry; dy <= ry; dy++) {
+                need[dy + ry] = rgbz_extend(y + dy, rows, py);
+                w.rowp[dy + ry] = src + need[dy + ry] * cols;
+                w.prow[dy + ry] = NULL;
+            }
+            memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
+            const int32_t *pm = phase_map + (y % py) * px;
+            int row_has_z = 0;
+            for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
+            if (!row_has_z) continue;           /* a colour-only row: the copy is the output */
+            if (ring) {
+                /* the window's rows from the ring; a missing one into a slot no row of the
+                   window holds */
+                int held[2 * RGBZ_MAX_RADIUS + 1] = {0};
+                for (int d = 0; d < nslot; d++)
+                    for (int k = 0; k < nslot; k++)
+                        if (tag[k] == need[d]) {
+                            w.prow[d] = ring + (ptrdiff_t)k * px * plen;
+                            held[k] = 1;
+                        }
+                for (int d = 0; d < nslot; d++) {
+                    if (w.prow[d]) continue;
+                    int k = 0;
+                    while (held[k]) k++;        /* at most nslot rows are held: one is free */
+                    REAL *slot = ring + (ptrdiff_t)k * px * plen;
+                    LFN(rgbz_deinterleave)(w.rowp[d], cols, px, plen, slot);
+                    tag[k] = need[d];
+                    held[k] = 1;
+                    for (int e = d; e < nslot; e++)       /* the window may hold a row twice */
+                        if (need[e] == need[d]) w.prow[e] = slot;
+                }
+            }
+            /* segments [xa[s], xa[s + 1]) of the row, and their constant plan (-1: none): a
+               Mask1 Z row runs its interior [2, cols - 2) on the constant plan */
+            const int fast_row = m1 >= 0 && y >= 2 && y < rows - 2 && (y & 1) == zr && cols > 4;
+            const ptrdiff_t xa[4] = {0, fast_row ? 2 : cols, fast_row ? cols - 2 : cols, cols};
+            const int seg_m1[3] = {-1, m1, -1};
+            for (int s = 0; s < 3; s++) {
+                for (int ph = 0; ph < px; ph++) {
+                    const int pl = pm[ph];
+                    if (pl < 0 || xa[s] >= xa[s + 1]) continue;
+                    const ptrdiff_t x0 = xa[s] + ((ph - xa[s] % px) + px) % px;
+#ifdef RGBZ_COUNT_OPS
+                    rgbz_opc_cur = opcounts + (size_t)pl * RGBZ_NOPS;
+#endif
+                    const int m = seg_m1[s];
+                    LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], m, cols, x0,
+                                    xa[s + 1], &kn, maxval, clip_on, clip_level, dst + y * cols);
+                }
             }
         }
-        free(planes);
+        free(ring);
     }
     return RGBZ_OK;
 }

@@ -56,6 +56,23 @@ extern uint64_t *rgbz_opc_cur;
 #define RGBZ_INLINE static inline
 #endif
 
+/* before a loop of a compile-time trip count (at most 24) whose full unrolling lets the loop
+   around it vectorise */
+#if defined(__GNUC__) && !defined(__clang__)
+#define RGBZ_UNROLL _Pragma("GCC unroll 24")
+#else
+#define RGBZ_UNROLL
+#endif
+/* before a loop over the sites of a block whose reads (the taps, the core's scratch rows)
+   and writes (other scratch rows) never overlap, which GCC cannot always prove through the
+   arrays of row pointers: it vectorises the loop without run-time overlap checks (a loop
+   with more rows than --param vect-max-version-for-alias-checks is otherwise left scalar) */
+#if defined(__GNUC__) && !defined(__clang__)
+#define RGBZ_IVDEP _Pragma("GCC ivdep")
+#else
+#define RGBZ_IVDEP
+#endif
+
 /* rgbz_ctz: the index of the lowest set bit of m (m != 0); rgbz_popcount: the number of
    set bits of m */
 #if defined(__GNUC__) || defined(__clang__)
