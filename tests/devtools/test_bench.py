@@ -94,6 +94,15 @@ def test_bench_small_frame_gives_ratios_but_no_verdict(capsys, tmp_path):
     assert _finite_positive(t["sg_mask1_float32_all_threads_mpix_s"])
     assert _finite_positive(tof["x_numpy_all"]) and tof["target_x_numpy"] == 5.0
     assert t["tof_target_met"] is None
+    if res["opencv"] is not None:
+        # the OpenCV ratios are paired (calls alternated round by round), and the target
+        # line quotes the SG case's
+        for r in res["results"]:
+            assert all(_finite_positive(r[f"vs_opencv_{k}_{lab}"]) for k in ("bilinear", "ea")
+                       for lab in ("1", "all"))
+        m1 = next(r for r in res["results"] if r["method"] == "sg" and r["exp"] == "auto"
+                  and r["pattern"] == "mask1" and r["precision"] == "float32")
+        assert t["fraction_of_opencv_ea"] == m1["vs_opencv_ea_all"]
     text = (tmp_path / "bench.txt").read_text()
     assert "no verdict: the target is defined on the 4000x3000 frame" in text
     assert "xNumPy" in text and "Quick run" not in text

@@ -12,7 +12,9 @@ calls (after one warm-up call), with 1 thread and with all threads. Beside it:
   bilinear (``COLOR_BayerGR2RGB``) and edge-aware (``COLOR_BayerGR2RGB_EA``),
   with 1 thread and all threads (``cv2.setNumThreads``); "n/a" without cv2.
   Ratios are speed ratios, ours / theirs (> 1: we are faster), same thread
-  setting.
+  setting, paired: each timed call of a case alternates with one call of each
+  OpenCV demosaic, and the ratio is the median of the rounds' ratios, so that
+  a change of the machine's load during the run hits both sides alike.
 * With ``--numpy-reference FILE`` (``tests/_reference/reconstruction.py`` of a
   source checkout), the plain NumPy reference of each method, timed on a crop
   of the same frame and scaled to Mpix/s; the ratio is our 1-thread speed
@@ -297,6 +299,18 @@ def _cases(shape, ref_crop, ref=None):
     return cases, rgb, frame, ref is not None
 
 
+def _opencv_calls(frame_fn):
+    """(cv2, {"bilinear": fn, "ea": fn}): OpenCV's Bayer demosaics of the benchmark's Bayer
+    frame, to time beside each case; None without cv2."""
+    try:
+        import cv2
+    except ImportError:
+        return None
+    cfa = frame_fn("bayer").data
+    return cv2, {"bilinear": lambda: cv2.cvtColor(cfa, cv2.COLOR_BayerGR2RGB),
+                 "ea": lambda: cv2.cvtColor(cfa, cv2.COLOR_BayerGR2RGB_EA)}
+
+
 def _opencv(frame_fn, repeat, workers, npix):
     try:
         import cv2
@@ -525,10 +539,21 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         cases = [c for c in cases if any(k in _label(c[0], c[1]) for k in kernels)]
     results = []
     ratio = (lambda a, b: None) if quick else _ratio
+    cv = _opencv_calls(frame_fn) if not quick else None
     for name, meta, build in progress(cases, desc="bench", quiet=quiet):
         fn, ref_fn, ref_pix = build()
-        threads = {"1": _stats(_time(lambda: fn(1), repeat), npix),
-                   "all": _stats(_time(lambda: fn(workers), repeat), npix)}
+        threads, paired = {}, {}
+        for label, n in (("1", 1), ("all", workers)):
+            if cv is None:
+                threads[label] = _stats(_time(lambda: fn(n), repeat), npix)
+                continue
+            # our call and OpenCV's alternated round by round: a change of the machine's
+            # load hits both, and the ratio is the median of the rounds' ratios
+            with _OpenCVThreads(cv[0], n):
+                t = _interleaved({"ours": lambda: fn(n), **cv[1]}, repeat)
+            threads[label] = _stats(t["ours"], npix)
+            for key in cv[1]:
+                paired[f"vs_opencv_{key}_{label}"] = float(np.median(t[key] / t["ours"]))
         # the threads the call really runs: pixel kernels take one per 2**18 pixels at most
         threads["all"]["threads"] = (kernel_threads(workers, npix) if meta["kernel"] in
                                      ("reconstruct", "demosaic") else workers)
@@ -537,14 +562,12 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         if reference and ref_fn is not None:
             ref_mpix = _stats(_time(ref_fn, max(1, min(repeat, 3))), ref_pix)["mpix_s"]
         results.append(dict(name=name, **meta, threads=threads, numpy_ref_mpix_s=ref_mpix,
-                            vs_numpy=ratio(threads["1"]["mpix_s"], ref_mpix)))
+                            vs_numpy=ratio(threads["1"]["mpix_s"], ref_mpix), **paired))
     ocv = _opencv(frame_fn, repeat, workers, npix)
     for r in results:
         for key in ("bilinear", "ea"):
             for label in ("1", "all"):
-                r[f"vs_opencv_{key}_{label}"] = (
-                    None if ocv is None else
-                    ratio(r["threads"][label]["mpix_s"], ocv[key][label]["mpix_s"]))
+                r.setdefault(f"vs_opencv_{key}_{label}", None)
     tof = None
     if tof_sites and (not kernels or any(k in "tof sites" for k in kernels)):
         tof = tof_sites_benchmark(shape, repeat, workers, verdict=not quick)
@@ -564,9 +587,9 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         targets["sg_mask1_float32_all_threads_mpix_s"] = v
         targets["target_mpix_s"] = TARGET_SG_MPIX
         targets["target_met"] = bool(v >= TARGET_SG_MPIX) if verdict else None
-        if ocv is not None:
+        if ocv is not None and sg.get("vs_opencv_ea_all") is not None:
             targets["opencv_ea_all_threads_mpix_s"] = ocv["ea"]["all"]["mpix_s"]
-            targets["fraction_of_opencv_ea"] = v / ocv["ea"]["all"]["mpix_s"]
+            targets["fraction_of_opencv_ea"] = sg["vs_opencv_ea_all"]
     if tof is not None and not quick:
         targets["tof_x_numpy_all_threads"] = tof["x_numpy_all"]
         targets["tof_target_x_numpy"] = TOF_TARGET_X_NUMPY
@@ -660,7 +683,10 @@ def format_table(res):
             f"{res['numpy_reference']['crop'][1]}x{res['numpy_reference']['crop'][0]} crop"
             + ("" if res["numpy_reference"]["available"] else "; reconstruction: n/a "
                "without --numpy-reference FILE") + "). xCV: our all-threads speed / OpenCV's "
-            "on the same-size Bayer frame" + ("" if ocv else " (cv2 not installed: n/a)") + ".")
+            "on the same-size Bayer frame, the median of the per-round ratios of calls "
+            "alternated with ours (so that a change of load hits both; the OpenCV rows "
+            "above are timed on their own)" + ("" if ocv else " (cv2 not installed: n/a)")
+            + ".")
     t = res["targets"]
     if "sg_mask1_float32_all_threads_mpix_s" in t:
         if t["target_met"] is None:
@@ -671,8 +697,9 @@ def format_table(res):
         s = (f"target: SG Mask1 float32 all threads {t['sg_mask1_float32_all_threads_mpix_s']:.1f}"
              f" Mpix/s vs >= {t['target_mpix_s']:.0f}: {verdict}")
         if "opencv_ea_all_threads_mpix_s" in t:
-            s += (f"; OpenCV EA {t['opencv_ea_all_threads_mpix_s']:.0f} Mpix/s "
-                  f"(we run at {t['fraction_of_opencv_ea']:.3f} of its speed)")
+            s += (f"; OpenCV EA {t['opencv_ea_all_threads_mpix_s']:.0f} Mpix/s on its own; "
+                  f"alternated with it we run at {t['fraction_of_opencv_ea']:.3f} of its "
+                  "speed (median of the rounds)")
         lines.append(s)
     tof = res.get("tof_sites")
     if tof:
