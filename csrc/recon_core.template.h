@@ -128,7 +128,7 @@ RGBZ_INLINE void RFN(rgbz_rows_block)(const REAL *const *v, int n, const uint64_
 }
 
 /*
- * `np` (a compile-time 1..4 where it is called) consecutive pairs of one group, added in
+ * `np` (a compile-time 1..8 where it is called) consecutive pairs of one group, added in
  * their order to G, or starting it (started = 0: the first difference is the sum), in one
  * pass over the sites: the running sum stays in a register. Near clipping a pair whose two
  * pixels are clipped adds nothing and is not counted in cnt.
@@ -137,8 +137,8 @@ RGBZ_INLINE void RFN(rgbz_pairs_into)(const rgbz_plan *p, int i0, int np, const 
                                       int n, const uint64_t *clipped, int started,
                                       REAL *restrict G, uint8_t *restrict cnt)
 {
-    const REAL *a[4], *b[4];
-    int ta[4], tb[4];
+    const REAL *a[8], *b[8];
+    int ta[8], tb[8];
     for (int i = 0; i < np; i++) {
         ta[i] = p->pair_a[i0 + i];
         tb[i] = p->pair_b[i0 + i];
@@ -196,7 +196,7 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
  * pixel pairs. A pair belongs to the groups of its bit mask. The sums are taken in the
  * plan's pair order -- which is part of the result, float addition not being associative
  * (recon_mask1.h) --; a run of consecutive pairs of one group is summed in passes of up
- * to four pairs, a pair of several groups (the semi-gradients) has its difference
+ * to eight pairs, a pair of several groups (the semi-gradients) has its difference
  * computed once. Near clipping a pair whose two pixels are clipped is skipped and
  * cnt[g][j] counts the pairs group g has left at site j; without clipping cnt is not
  * written. The sums become means in rgbz_gammas_block, their only reader.
@@ -215,16 +215,21 @@ RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v
     for (int i = 0; i < p->n_pairs;) {
         const uint32_t m = (uint32_t)p->pair_gmask[i];
         if (m && !(m & (m - 1))) {
-            /* one group: the run of its consecutive pairs, four per pass */
+            /* one group: the run of its consecutive pairs, eight per pass (the gradients of
+               Mask2 have 7 to 9) */
             const int g = rgbz_ctz(m);
             int np = 1;
-            while (np < 4 && i + np < p->n_pairs && (uint32_t)p->pair_gmask[i + np] == m) np++;
+            while (np < 8 && i + np < p->n_pairs && (uint32_t)p->pair_gmask[i + np] == m) np++;
             const int st = (int)((started >> g) & 1u);
             switch (np) {
             case 1: RFN(rgbz_pairs_into)(p, i, 1, v, n, clipped, st, G[g], cnt[g]); break;
             case 2: RFN(rgbz_pairs_into)(p, i, 2, v, n, clipped, st, G[g], cnt[g]); break;
             case 3: RFN(rgbz_pairs_into)(p, i, 3, v, n, clipped, st, G[g], cnt[g]); break;
-            default: RFN(rgbz_pairs_into)(p, i, 4, v, n, clipped, st, G[g], cnt[g]); break;
+            case 4: RFN(rgbz_pairs_into)(p, i, 4, v, n, clipped, st, G[g], cnt[g]); break;
+            case 5: RFN(rgbz_pairs_into)(p, i, 5, v, n, clipped, st, G[g], cnt[g]); break;
+            case 6: RFN(rgbz_pairs_into)(p, i, 6, v, n, clipped, st, G[g], cnt[g]); break;
+            case 7: RFN(rgbz_pairs_into)(p, i, 7, v, n, clipped, st, G[g], cnt[g]); break;
+            default: RFN(rgbz_pairs_into)(p, i, 8, v, n, clipped, st, G[g], cnt[g]); break;
             }
             started |= m;
             i += np;
