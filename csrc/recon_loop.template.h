@@ -250,7 +250,10 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
     /* 2- and 4-column tiles (Mask1, Mask2): each thread keeps the rows its window needs
        converted and deinterleaved (rgbz_deinterleave) in a ring of 2 ry + 1 slots, tagged
        with the frame row they hold, so that a row is converted once per thread rather than
-       once per window it falls in (a thread's rows are consecutive: static schedule).
+       once per window it falls in (a thread's rows come in chunks of 32 consecutive rows;
+       the chunks are handed out as threads free up, so that a thread slowed by another
+       process on its core does not hold up the call: on the shared 2-core machine,
+       1.04x on Mask2 and 1.19x on Mask1 over a static split, medians of paired rounds).
        Without the memory, the strided gather of rgbz_sites. */
     const int nslot = 2 * ry + 1;
     const ptrdiff_t plen = (px == 2 || px == 4) ? (cols + px - 1) / px : 0;
@@ -263,7 +266,7 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
         ptrdiff_t tag[2 * RGBZ_MAX_RADIUS + 1];
         for (int k = 0; k < nslot; k++) tag[k] = -1;
 #ifdef _OPENMP
-#pragma omp for schedule(static)
+#pragma omp for schedule(dynamic, 32)
 #endif
         for (ptrdiff_t y = 0; y < rows; y++) {
             LFN(rgbz_row) w;
