@@ -39,19 +39,6 @@
 #define LRN_CAT3(a, b, c) a##_##b##_##c
 #define LRN_CAT(a, b, c) LRN_CAT3(a, b, c)
 
-/* a result as an output element: clamped to [0, maxval] (NaN to 0), integers rounded
-   half up; not counted (Table 1 counts no conversion) */
-static inline IN_T LRN_CAT(lrn_out, IS, RS)(REAL r, REAL maxval)
-{
-    r = r > (REAL)0 ? r : (REAL)0;
-    r = r > maxval ? maxval : r;
-#if IN_IS_INT
-    return (IN_T)(r + (REAL)0.5);
-#else
-    return (IN_T)r;
-#endif
-}
-
 /* the buckets of n sites from their direction energies e[d][j] (learned.h) */
 static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int n,
                                                const rgbz_learned_filters *f, int k,
@@ -492,7 +479,8 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                     LRN_CAT(lrn_generic_block, IS, RS)(rowp, x0, px, n, cols, colmap, f, k, w, v,
                                                        bucket, res);
                     for (int j = 0; j < n; j++)
-                        drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
+                        drow[x0 + (ptrdiff_t)j * px] =
+                            (IN_T)RGBZ_CAT(rgbz_out, RS)(res[j], maxval, IN_IS_INT);
                     x0 += (ptrdiff_t)n * px;
                 }
             }
@@ -533,7 +521,8 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                                                         scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
                                                         cols, dense, res);
                         for (int j = 0; j < n; j++)
-                            drow[x0 + (ptrdiff_t)j * px] = LRN_CAT(lrn_out, IS, RS)(res[j], maxval);
+                            drow[x0 + (ptrdiff_t)j * px] =
+                            (IN_T)RGBZ_CAT(rgbz_out, RS)(res[j], maxval, IN_IS_INT);
                         x0 += (ptrdiff_t)n * px;
                     }
                 }

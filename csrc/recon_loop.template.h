@@ -47,19 +47,6 @@
 
 #define LFN(name) RGBZ_CAT3(name, IS, RS)
 
-/* a result as an output element: clamped to [0, maxval] (a NaN to 0), integers rounded
-   half up; not counted (Table 1 does not count the conversion) */
-static inline IN_T LFN(rgbz_to_out)(REAL r, REAL maxval)
-{
-    r = r > (REAL)0 ? r : (REAL)0;
-    r = r > maxval ? maxval : r;
-#if IN_IS_INT
-    return (IN_T)(r + (REAL)0.5);
-#else
-    return (IN_T)r;
-#endif
-}
-
 /* where the taps of the sites x0, x0 + px, ... of one row are */
 typedef struct {
     const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 1];   /* row of offset dy: rowp[dy + ry] */
@@ -209,7 +196,8 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
             RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
         }
         IN_T *restrict d = drow + xb;
-        for (int j = 0; j < n; j++) d[(ptrdiff_t)j * px] = LFN(rgbz_to_out)(r[j], maxval);
+        for (int j = 0; j < n; j++)
+            d[(ptrdiff_t)j * px] = (IN_T)RGBZ_CAT(rgbz_out, RS)(r[j], maxval, IN_IS_INT);
         if (!clip_on) continue;
         const int rows_m = p->method == RGBZ_M_EDI_ROWS;
         const int nk = rows_m ? nt : p->n_cand;

@@ -46,6 +46,24 @@ extern uint64_t *rgbz_opc_cur;
 #define RGBZ_CAT3_(a, b, c) a##_##b##_##c
 #define RGBZ_CAT3(a, b, c) RGBZ_CAT3_(a, b, c)
 
+/* a result of the reconstruction kernels as an output element, before the cast to the
+   element type: clamped to [0, maxval] (a NaN to 0), plus 0.5 for an integer type, which
+   the cast then rounds half up; not counted (Table 1 does not count the conversion).
+   Called as (IN_T)RGBZ_CAT(rgbz_out, RS)(r, maxval, IN_IS_INT). */
+static inline float rgbz_out_f32(float r, float maxval, int is_int)
+{
+    r = r > 0.0f ? r : 0.0f;
+    r = r > maxval ? maxval : r;
+    return is_int ? r + 0.5f : r;
+}
+
+static inline double rgbz_out_f64(double r, double maxval, int is_int)
+{
+    r = r > 0.0 ? r : 0.0;
+    r = r > maxval ? maxval : r;
+    return is_int ? r + 0.5 : r;
+}
+
 /* ---- compiler-specific helpers, each with a portable fallback ---- */
 
 /* a function to inline into every caller, so that constants propagate into it (the Mask1
