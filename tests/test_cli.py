@@ -427,15 +427,17 @@ def _options(parser):
 
 
 def test_every_option_has_help_with_its_default_in_user_words(capsys):
-    """Help text and its default for every option; no source-tree, Python or tracker words."""
+    """Help text and its default for every option of every command; no source-tree, Python or
+    tracker words."""
     import argparse
 
-    from rgbz_fast._cli import _Formatter, _parser
+    from rgbz_fast._cli import build_parser
+    from rgbz_fast._cli._common import Formatter
 
-    ap = _parser()
+    ap = build_parser()
     banned = re.compile(r"rgbz_fast\.|\.py\b|docs/|csrc|tests/|\bissue\b|\bB\d+\b|=\)",
                         re.IGNORECASE)
-    shown = _Formatter("rgbz-fast")
+    shown = Formatter("rgbz-fast")
     names = []
     for name, action in _options(ap):
         names.append(name)
@@ -447,22 +449,25 @@ def test_every_option_has_help_with_its_default_in_user_words(capsys):
             assert "default" in shown._get_help_string(action), name
         assert not banned.search(action.help), (name, action.help)
     assert "reconstruct --rgbz-pattern" in names and "depth --range" in names
-    # the developer commands parse their own options
-    import importlib
+    assert {"bench --kernels", "opcount --image", "tradeoff --dataset"} <= set(names)
 
-    for tool in ("bench", "opcount", "tradeoff"):
-        mod = importlib.import_module(f"rgbz_fast._devtools.{tool}")
-        seen = []
-        real = mod.run_main
-        mod.run_main = lambda parser, body, argv: seen.append(parser)
-        try:
-            mod.main([])
-        finally:
-            mod.run_main = real
-        for name, action in _options(seen[0]):
-            flag = isinstance(action, (argparse._StoreTrueAction, argparse._StoreConstAction))
-            assert action.help and (flag or "default" in action.help), (tool, name)
-            assert not banned.search(action.help), (tool, name, action.help)
+
+def test_shared_options_read_the_same_in_every_command():
+    """An option that several commands take has one text (written once, in _cli/_common.py)."""
+    ap = build_parser_options()
+    for flag in ("--workers", "--max-pixels", "--max-bytes", "--limit", "--patterns",
+                 "--clip-level", "--filters", "--domain", "--grey"):
+        texts = {a.help for name, a in ap if name.split()[1] == flag}
+        assert len(texts) <= 2, (flag, texts)       # --workers: kernels, or the bench's runs
+    workers = {name.split()[0]: a for name, a in ap if name.endswith(" --workers")}
+    assert set(workers) == {"reconstruct", "depth", "evaluate", "bench", "tradeoff"}
+    assert len({a.type for a in workers.values()}) == 1      # one rule: a positive integer
+
+
+def build_parser_options():
+    from rgbz_fast._cli import build_parser
+
+    return list(_options(build_parser()))
 
 
 def test_help_names_the_default_output_folders(capsys):

@@ -1604,16 +1604,21 @@ CLI_ROWS = [
       "dataset: {d}/ds_grey/g.png is a grey image (16x16); a colour sensor needs colour: pass "
       "--grey"),
     C("cli.bench-shape", ("bench", "--shape", "1920*1080"),
-      "--shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'"),
+      "argument --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'",
+      usage=True),
     C("cli.opcount-shape", ("opcount", "--shape", "64"),
-      "--shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '64'"),
-    C("cli.bench-workers", ("bench", "--workers", "0"), "--workers: expected a positive integer"),
-    C("cli.bench-argument", ("bench", "--nope"), "unrecognized arguments: --nope"),
+      "argument --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '64'",
+      usage=True),
+    C("cli.bench-workers", ("bench", "--workers", "0"),
+      "argument --workers: expected a positive integer", usage=True),
+    C("cli.bench-argument", ("bench", "--nope"), "unrecognized arguments: --nope", usage=True),
     C("cli.opcount-pattern", ("opcount", "--patterns", "nope"), "pattern: 'nope' is neither"),
-    C("cli.opcount-argument", ("opcount", "--nope"), "unrecognized arguments: --nope"),
+    C("cli.opcount-argument", ("opcount", "--nope"), "unrecognized arguments: --nope",
+      usage=True),
     C("cli.tradeoff-workers", ("tradeoff", "--workers", "0"),
-      "--workers: expected a positive integer"),
-    C("cli.tradeoff-argument", ("tradeoff", "--nope"), "unrecognized arguments: --nope"),
+      "argument --workers: expected a positive integer", usage=True),
+    C("cli.tradeoff-argument", ("tradeoff", "--nope"), "unrecognized arguments: --nope",
+      usage=True),
     C("cli.evaluate-optics-options", ("evaluate", "--dataset", "{d}/ds", "--olpf", "1"),
       "--f-number, --olpf and --defocus-um need --optics"),
     C("cli.calibrate-no-frames", ("calibrate",),
@@ -1673,10 +1678,10 @@ def _argv(row, d):
 
 
 def _cli_prefix(command):
-    """Subcommands report as `rgbz-fast CMD: error:`; the top-level parser (unknown
-    command, `config`'s unknown arguments) as `rgbz-fast: error:`."""
+    """Subcommands report as `rgbz-fast CMD: error:` (their unknown arguments too); the
+    top-level parser (an unknown command) as `rgbz-fast: error:`."""
     if command in ("simulate", "reconstruct", "depth", "evaluate", "calibrate", "evaluate-depth",
-                   "bench", "opcount", "tradeoff"):
+                   "bench", "opcount", "tradeoff", "config"):
         return f"rgbz-fast {command}: error: "
     return "rgbz-fast: error: "
 
@@ -1701,12 +1706,12 @@ def test_cli_contract(row, files, capsys):
 
 
 def test_cli_interrupt_exits_130(monkeypatch, capsys):
-    import rgbz_fast._cli as cli
+    import rgbz_fast._cli.config as config_command
 
     def interrupted(args):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "_config", interrupted)
+    monkeypatch.setattr(config_command, "run", interrupted)
     assert main(["config"]) == 130
     assert capsys.readouterr().err.strip() == "rgbz-fast config: interrupted"
 
