@@ -5,7 +5,7 @@ Every row of the contract table is one entry of ``ROWS`` (Python API) or
 docs/reports/robustness.md; the tests are ``test_api_contract[<id>]`` and
 ``test_cli_contract[<id>]``. ``test_docs_table_matches_the_rows`` keeps the
 document and this file in step: regenerate the tables with
-``python tests/test_robustness.py``.
+``python tools/robustness_tables.py``.
 
 Rows marked with a bug id are the contract as it should be; they are strict
 xfails until the bug is fixed (docs/reports/robustness.md, "Known bugs").
@@ -2278,7 +2278,7 @@ def _between(text, start, end):
 
 
 def test_docs_table_matches_the_rows():
-    """docs/reports/robustness.md lists exactly these rows (regenerate: python tests/test_robustness.py)."""
+    """docs/reports/robustness.md lists exactly these rows (regenerate: python tools/robustness_tables.py)."""
     text = DOC.read_text()
     api, cli = markdown_tables()
     assert _between(text, "<!-- api-table:start -->", "<!-- api-table:end -->") == api
@@ -2286,14 +2286,3 @@ def test_docs_table_matches_the_rows():
     for bug, what in BUGS.items():
         assert f"**{bug} — " in text, f"{bug} is not described in docs/reports/robustness.md"
 
-
-if __name__ == "__main__":      # regenerate the tables of docs/reports/robustness.md
-    import re
-
-    api, cli = markdown_tables()
-    text = DOC.read_text()
-    for name, table in (("api", api), ("cli", cli)):
-        text = re.sub(rf"(<!-- {name}-table:start -->\n).*?(<!-- {name}-table:end -->)",
-                      lambda m, t=table: m.group(1) + t + "\n" + m.group(2), text, flags=re.S)
-    DOC.write_text(text)
-    print(f"wrote {len(ROWS)} API rows and {len(CLI_ROWS)} CLI rows to {DOC}")
