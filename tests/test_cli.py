@@ -531,3 +531,35 @@ def test_depth_validity_options_reach_the_isp(tmp_path, capsys):
     a = tifffile.imread(tmp_path / "a" / "step_depth.tif")
     b = tifffile.imread(tmp_path / "b" / "step_depth.tif")
     assert np.isfinite(b).sum() > np.isfinite(a).sum()      # the step's flying pixels kept
+
+
+def test_read_limits_reach_every_reader_as_arguments(tmp_path, capsys, monkeypatch):
+    """--max-pixels is passed to the readers (into evaluate's worker processes too), not
+    through the environment, and the advice of their errors is given as flags."""
+    import os
+
+    import imageio.v3 as iio
+
+    monkeypatch.delenv("RGBZ_FAST_MAX_PIXELS", raising=False)
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    for name in ("a", "b"):
+        iio.imwrite(ds / f"{name}.png", np.random.default_rng(0).integers(
+            0, 256, (32, 32, 3), dtype=np.uint8))
+    advice = "raise it with --max-pixels or RGBZ_FAST_MAX_PIXELS"
+    assert main(["simulate", str(ds / "a.png"), "--max-pixels", "100", "--out",
+                 str(tmp_path / "f"), "--quiet"]) == 2
+    assert capsys.readouterr().err.strip().endswith(advice)
+    assert main(["evaluate", "--dataset", str(ds), "--max-pixels", "100", "--processes", "2",
+                 "--skip-bad", "--no-cache", "--metrics", "cfa_psnr", "--methods", "bi",
+                 "--patterns", "mask1", "--out", str(tmp_path / "e"), "--quiet"]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert [line.split(": ", 2)[1] for line in err[:2]] == ["skipped a", "skipped b"]
+    assert all(line.endswith(advice) for line in err[:2])
+    assert err[-1].startswith("rgbz-fast evaluate: error: dataset: none of the 2 image(s)")
+    assert main(["train", "--dataset", str(ds), "--max-pixels", "100", "--out",
+                 str(tmp_path / "t.npz"), "--quiet"]) == 2
+    assert capsys.readouterr().err.strip().endswith(advice)
+    assert "RGBZ_FAST_MAX_PIXELS" not in os.environ
+    assert main(["simulate", str(ds / "a.png"), "--max-pixels", "1024", "--out",
+                 str(tmp_path / "f"), "--quiet"]) == 0

@@ -1108,7 +1108,7 @@ ROWS = [
     R("frameio.load-max_pixels", "load_frame(16x16 frame, max_pixels=10)",
       lambda f: frameio.load_frame(f / "ok.npz", max_pixels=10), ValueError,
       "path: {d}/ok.npz declares a 16x16 image (0.0 megapixels), more than the limit of 10 "
-      "pixels; raise it with max_pixels=, --max-pixels or RGBZ_FAST_MAX_PIXELS"),
+      "pixels; raise it with max_pixels= or RGBZ_FAST_MAX_PIXELS"),
 
     # -- files and limits ------------------------------------------------------------
     R("io.read_file-fifo", "read_file(FIFO named fifo.tif)",
@@ -1849,7 +1849,7 @@ def test_unreadable_files_name_the_path_and_leak_no_handle(files, tmp_path):
         err = _call_without_leaks(lambda: call(path))
         assert err is not None, f"{path.name}: no error"
         kind, msg = err
-        assert kind is ValueError, (path.name, kind, msg)
+        assert issubclass(kind, ValueError), (path.name, kind, msg)
         assert str(path) in msg and reason in msg, (path.name, msg)
         assert msg.split(":")[0] in ("path", "dataset") and "\n" not in msg, msg
 

@@ -252,24 +252,46 @@ def add_raw_options_file(p, note=""):
 
 
 # --------------------------------------------------------------------------- errors
-#: the Python spelling of options in library messages, and the command line's
-_CLI_WORDS = [("max_pixels=, --max-pixels", "--max-pixels"),
-              ("max_bytes=, --max-bytes", "--max-bytes"),
-              ("shape=(rows, cols)", "--shape ROWSxCOLS"), ("phase=", "--phase"),
-              ("black_level=", "--black-level"), ("white_level=", "--white-level"),
-              ("bit_depth_in=", "--bit-depth-in"), ("grey=True", "--grey"),
-              ("pass reader=", "give the file a camera raw extension")]
+#: how the command line gives the settings that library errors ask for, where it is not
+#: the parameter's own flag (--black-level for black_level)
+FLAG_WORDS = {"shape": "--shape ROWSxCOLS", "grey": "--grey",
+              "reader": "give the file a camera raw extension"}
+
+
+def flag(setting):
+    """The command line's words for a :class:`rgbz_fast.io.Setting`."""
+    return FLAG_WORDS.get(setting.name, "--" + setting.name.replace("_", "-"))
 
 
 def explain(exc):
-    """The message of a library error in command-line words (pass --phase, not phase=)."""
-    message = str(exc)
-    for py, cli in _CLI_WORDS:
-        message = message.replace(py, cli)
-    return re.sub(r"\s*\(command line: [^)]*\)", "", message)
+    """The message of an error in command-line words: the settings a library error asks for
+    are given as flags (pass --phase, not phase=). ``exc`` may also be an evaluation's skip
+    reason, which carries the error it came from."""
+    from ..io import ParameterError
+
+    error = getattr(exc, "error", None) or exc
+    if isinstance(error, ParameterError):
+        return " ".join(error.render(flag).split())
+    return str(exc)
 
 
 # --------------------------------------------------------------------------- running
+def limits(args):
+    """The read limits of the command (``--max-pixels``, ``--max-bytes``), as the keyword
+    arguments of the library's readers."""
+    return dict(max_pixels=args.max_pixels, max_bytes=args.max_bytes)
+
+
+def learned_filters(args):
+    """The ``--filters`` files, read with the command's limits (None: the shipped ones)."""
+    from ..reconstruction import LearnedFilters
+
+    if args.filters is None:
+        return None
+    return tuple(LearnedFilters.load(f, "filters", max_bytes=args.max_bytes)
+                 for f in args.filters)
+
+
 def command_line(args):
     """The command as typed: ``rgbz-fast CMD ARGS...`` (recorded in the reports it writes)."""
     return " ".join(["rgbz-fast", *args.argv])

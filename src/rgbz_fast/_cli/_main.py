@@ -58,15 +58,7 @@ def main(argv=None):
     previous = None
     if hasattr(signal, "SIGTERM") and threading.current_thread() is threading.main_thread():
         previous = signal.signal(signal.SIGTERM, _terminate)
-    import os
-
-    from ..io import MAX_BYTES_ENV, MAX_PIXELS_ENV
-    saved_env = {k: os.environ.get(k) for k in (MAX_PIXELS_ENV, MAX_BYTES_ENV)}
     try:
-        for key, value in ((MAX_PIXELS_ENV, getattr(args, "max_pixels", None)),
-                           (MAX_BYTES_ENV, getattr(args, "max_bytes", None))):
-            if value is not None:
-                os.environ[key] = str(value)
         return int(args.run(args) or 0)
     except (_common.CliError, ValueError, TypeError, OSError, ImportError) as exc:
         text = _common.explain(exc)
@@ -82,8 +74,3 @@ def main(argv=None):
     finally:
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
-        for key, value in saved_env.items():
-            if value is None:
-                os.environ.pop(key, None)
-            else:
-                os.environ[key] = value

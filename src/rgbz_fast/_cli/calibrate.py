@@ -78,8 +78,8 @@ def run(args):
         except ValueError:
             raise c.CliError(f"--distances: expected comma-separated metres, got "
                              f"{args.distances!r}") from None
-        sweep = [load_frame(f) for f in args.frames]
-        dark = [load_frame(f) for f in args.dark] or None
+        sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
+        dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
     cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
     cal.save(args.out)
     if not args.quiet:

@@ -72,14 +72,14 @@ def run(args):
     calibration = None
     if args.calibration is not None:
         try:
-            calibration = ToFCalibration.load(args.calibration)
+            calibration = ToFCalibration.load(args.calibration, max_bytes=args.max_bytes)
         except (OSError, ValueError, TypeError, KeyError) as exc:
             raise c.CliError(f"--calibration: {args.calibration}: {c.explain(exc)}") from None
     outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"])
             for f in args.frames]
     c.unique_outputs(outs, out)
     for f, (tif_name, flags_name, png_name) in outs:
-        frame = load_frame(f)
+        frame = load_frame(f, **c.limits(args))
         if frame.tof is None:
             raise c.CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such "
                              "as an RGB-D folder, and save it as .npz)")

@@ -77,7 +77,7 @@ def run(args):
     from ..simulation import Optics
 
     params = ReconstructParams(precision=args.precision, domain=args.domain,
-                               clip_level=args.clip_level, filters=args.filters)
+                               clip_level=args.clip_level, filters=c.learned_filters(args))
     optics = None
     if args.optics:
         optics = Optics(f_number=args.f_number, olpf=args.olpf, defocus_um=args.defocus_um)
@@ -91,7 +91,8 @@ def run(args):
     if args.raw_options is not None:
         raw_options = raw_options_file(args.raw_options)
     if args.dataset:
-        dataset = folder_dataset(args.dataset, args.limit, raw_options, grey=args.grey)
+        dataset = folder_dataset(args.dataset, args.limit, raw_options, grey=args.grey,
+                                 **c.limits(args))
     else:
         dataset = sample_dataset()[:args.limit]
     cache = None if args.no_cache else (args.cache or out / "cache")

@@ -36,7 +36,8 @@ def run(args):
     if data is None:
         guess = Path("..") / "shared" / "data" / "rgbd"
         data = guess if guess.is_dir() else None
-    result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed)
+    result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed,
+                            **c.limits(args))
     if args.json:
         print(json.dumps(result, indent=1, default=float))
     else:

@@ -63,7 +63,7 @@ def run(args):
                          "options (--phase, --black-level, ...) apply to Bayer raw files, with "
                          "--rgbz-pattern")
     params = ReconstructParams(precision=args.precision, domain=args.domain,
-                               clip_level=args.clip_level, filters=args.filters)
+                               clip_level=args.clip_level, filters=c.learned_filters(args))
     from_file = raw_options_file(args.raw_options)
     c.must_exist(args.frames)
     out = c.output_folder(args.out)
@@ -74,7 +74,8 @@ def run(args):
                      out)
     for f, stem in names:
         kw, explicit = raw_kwargs(args, f, from_file)
-        frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth, **kw)
+        frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth, **c.limits(args),
+                           **kw)
         if explicit and (frame.meta.get("reader") is None
                          or frame.meta.get("source") != str(f)):
             flag = "--" + next(iter(explicit)).replace("_", "-").replace("clip-level",

@@ -50,7 +50,7 @@ def run(args):
              for s in args.scenes]
     c.unique_outputs([(s, [n]) for s, n in dests], out)
     for s, name in tqdm(dests, desc="simulate", unit="scene", disable=args.quiet):
-        scene = load_scene(s, grey=args.grey)
+        scene = load_scene(s, grey=args.grey, **c.limits(args))
         frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)
         save_frame(out / name, frame)            # the folder appears with its first file
         if not args.quiet:

@@ -45,12 +45,14 @@ def add_parser(sub):
 
 def run(args):
     from ..evaluation import train_filters
+    from ..io import folder_dataset
 
     if not args.dataset.is_dir():
         raise c.CliError(f"--dataset: {args.dataset} is not a folder")
     filters = train_filters(
-        args.dataset, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
-        linearise=args.linearise, limit=args.limit, name=args.name, progress=not args.quiet,
+        folder_dataset(args.dataset, args.limit, **c.limits(args)), args.pattern,
+        bit_depth=args.bit_depth, noise=args.noise, linearise=args.linearise,
+        name=args.name or args.dataset.resolve().name, progress=not args.quiet,
         radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,
         n_coherence=args.coherence, ridge=args.ridge, prior=args.prior,
         meta={"command": c.command_line(args)})
