@@ -242,7 +242,7 @@ def test_readme_python_examples_run(capsys):
            "median error 3.3 mm" in out, out
 
 
-# --------------------------------------------------------------------------- issue-17 cases
+# --------------------------------------------------------------------------- real raw files
 RAW_FILES = {
     "colorchart.dng": [],
     "halide_bayer_small.png": ["--phase", "GRBG", "--black-level", "25", "--white-level",
@@ -301,8 +301,8 @@ def test_raw_options_file_and_cli_words(tmp_path, capsys):
 
 
 def test_plain_bayer_frame_is_not_copied_silently(tmp_path, capsys):
-    """`reconstruct colorchart.dng` wrote a TIFF identical to its Bayer input; now it says why
-    there is nothing to reconstruct, and writes nothing."""
+    """A plain Bayer file holds no Z site: reconstruct says why there is nothing to
+    reconstruct (and how to place Z sites), and writes nothing rather than a copy of it."""
     import tifffile
 
     bayer = tmp_path / "bayer.tif"
@@ -323,7 +323,8 @@ def test_plain_bayer_frame_is_not_copied_silently(tmp_path, capsys):
 
 
 def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
-    """`reconstruct x/f.npz y/f.npz` into one --out overwrote the first result silently."""
+    """Two inputs whose outputs would have one name in one --out are refused before any is
+    written."""
     for sub in ("x", "y"):
         (tmp_path / sub).mkdir()
         frameio.save_frame(tmp_path / sub / "f.npz", rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
@@ -336,8 +337,8 @@ def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
 
 
 def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
-    """--pattern ZR/BG created OUT/scene_ZR/BG.npz (a nested folder); a failed simulate left
-    an empty --out."""
+    """A tile pattern names its file with no folder separator (s_ZR-BG.npz), and a simulate
+    that fails creates no --out folder."""
     import imageio.v3 as iio
 
     img = tmp_path / "s.png"

@@ -22,7 +22,8 @@ def _never(blob):
 
 # --------------------------------------------------------------------------- regular files only
 def test_fifo_device_and_folder_are_refused_before_reading(tmp_path):
-    """A FIFO named f.tif used to hang, /dev/zero read until MemoryError."""
+    """A FIFO (which would block a read) and a device such as /dev/zero (which would read
+    without end) are refused from their file type, before anything is read."""
     fifo = tmp_path / "f.tif"
     os.mkfifo(fifo)
     for reader in (rio.read_file, rio.read_image, rio.load_frame, rio.read_raw):
@@ -129,7 +130,8 @@ def test_npz_member_lying_about_its_shape_is_refused(tmp_path):
 
 
 def test_npz_512_tile_is_refused_at_once(tmp_path):
-    """A small NPZ whose pattern is a 512 x 512 tile cost 15 s and 660 MB; now a clear error."""
+    """A small NPZ whose pattern is a 512 x 512 tile is refused at once, before the work (and
+    the memory) such a tile would cost."""
     t = np.tile(np.array([[1, 0], [2, 1]]), (256, 256))
     t[::3, ::5] = 3
     tile = "/".join("".join("RGBZ"[c] for c in row) for row in t)
