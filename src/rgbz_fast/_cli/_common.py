@@ -140,6 +140,29 @@ def add_limits(p):
                         f"{MAX_BYTES_ENV} when set, else 2147483648)")
 
 
+def add_run_options(p, default_out, workers=True):
+    """The options of the commands that run the chain on files: ``--workers`` (unless
+    ``workers`` is False), ``--out DIR`` (``default_out``), ``--quiet`` and the read limits."""
+    if workers:
+        add_workers(p)
+    add_output_folder(p, default_out)
+    add_quiet(p)
+    add_limits(p)
+
+
+def add_report_options(p, workers=True):
+    """The options of the measuring commands, which print a report: ``--quick``,
+    ``--workers`` of the 'all threads' runs (unless ``workers`` is False), ``--json``,
+    ``--out DIR`` to also write it, ``--quiet``."""
+    add_quick(p)
+    if workers:
+        add_workers(p, "threads of the 'all threads' runs", "all cores")
+    add_json(p, "print JSON instead of a table")
+    add_output_folder(p, None, "also write the report (and JSON, plots) into DIR (default: "
+                               "print only)")
+    add_quiet(p, "no progress bar")
+
+
 def add_output_folder(p, default, what="output folder, created when the first file is written"):
     """``--out DIR``; ``default`` None: the command prints only, unless given a folder."""
     p.add_argument("--out", type=Path, default=None if default is None else Path(default),
@@ -332,13 +355,6 @@ def png_bytes(image):
     import imageio.v3 as iio
 
     return iio.imwrite("<bytes>", image, extension=".png")
-
-
-def add_report_folder(p):
-    """``--out DIR`` of the measuring commands, which print their report and write it on
-    request."""
-    add_output_folder(p, None, "also write the report (and JSON, plots) into DIR (default: "
-                               "print only)")
 
 
 def write_report(out, files):

@@ -76,11 +76,7 @@ def add_parser(sub):
                    help="skip the ToF section (C vs NumPy in M measurements/s)")
     p.add_argument("--chain", action="store_true",
                    help="also time the colour ISP chain stage by stage")
-    c.add_quick(p)
-    c.add_workers(p, "threads of the 'all threads' runs", "all cores")
-    c.add_json(p, "print JSON instead of a table")
-    c.add_report_folder(p)
-    c.add_quiet(p, "no progress bar")
+    c.add_report_options(p)
     return p
 
 

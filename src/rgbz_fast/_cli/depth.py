@@ -53,10 +53,7 @@ def add_parser(sub):
     p.add_argument("--range", type=c.metre_range, default=None, metavar="MIN:MAX",
                    help="colour scale of the preview in metres (default: the 1st to 99th "
                         "percentile of the valid depth)")
-    c.add_workers(p)
-    c.add_output_folder(p, DEFAULT_OUT)
-    c.add_quiet(p)
-    c.add_limits(p)
+    c.add_run_options(p, DEFAULT_OUT)
     return p
 
 

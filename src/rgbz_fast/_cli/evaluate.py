@@ -63,10 +63,7 @@ def add_parser(sub):
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the cache")
     p.add_argument("--no-plots", action="store_true", help="tables only, no figures")
     c.add_json(p, "print the summary as JSON")
-    c.add_workers(p)
-    c.add_output_folder(p, DEFAULT_OUT)
-    c.add_quiet(p)
-    c.add_limits(p)
+    c.add_run_options(p, DEFAULT_OUT)
     return p
 
 

@@ -25,10 +25,7 @@ def add_parser(sub):
                    help="also count on a 128x128 crop of this image: a scikit-image sample "
                         "name, an image file, or 'none'")
     p.add_argument("--text", action="store_true", help="plain-text table instead of Markdown")
-    c.add_quick(p)
-    c.add_json(p, "print JSON instead of a table")
-    c.add_report_folder(p)
-    c.add_quiet(p, "no progress bar")
+    c.add_report_options(p, workers=False)
     return p
 
 

@@ -43,10 +43,7 @@ def add_parser(sub):
     p.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
     add_raw_group(p)
-    c.add_workers(p)
-    c.add_output_folder(p, DEFAULT_OUT)
-    c.add_quiet(p)
-    c.add_limits(p)
+    c.add_run_options(p, DEFAULT_OUT)
     return p
 
 

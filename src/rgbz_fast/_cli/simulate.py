@@ -29,9 +29,7 @@ def add_parser(sub):
                    help="npz keeps everything (mosaic, reference CFA, ToF taps); tiff keeps the "
                         "16-bit mosaic and its metadata")
     c.add_grey(p)
-    c.add_output_folder(p, DEFAULT_OUT)
-    c.add_quiet(p)
-    c.add_limits(p)
+    c.add_run_options(p, DEFAULT_OUT, workers=False)
     return p
 
 

@@ -48,11 +48,7 @@ def add_parser(sub):
     c.add_repeat(p, "timed runs (default 5, --quick 2)")
     c.add_methods(p, METHODS)
     c.add_patterns(p)
-    c.add_quick(p)
-    c.add_workers(p, "threads of the 'all threads' runs", "all cores")
-    c.add_json(p, "print JSON instead of a table")
-    c.add_report_folder(p)
-    c.add_quiet(p, "no progress bar")
+    c.add_report_options(p)
     return p
 
 
