@@ -355,7 +355,7 @@ def check_processes(processes, name="processes"):
     return _check_count(processes, name, "processes", minus_one=False)
 
 
-def parse_shape(text, name="--shape"):
+def parse_shape(text, name="shape"):
     """A frame shape written ``ROWSxCOLS`` (``"1080x1920"``: 1080 rows of 1920 pixels).
 
     The one shape convention of the command line, as of every array in the
@@ -368,7 +368,7 @@ def parse_shape(text, name="--shape"):
     >>> parse_shape("1920*1080")
     Traceback (most recent call last):
     ...
-    ValueError: --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'
+    ValueError: shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'
     """
     parts = str(text).lower().replace(" ", "").split("x")
     if len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts):

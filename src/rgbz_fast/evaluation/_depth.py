@@ -54,10 +54,10 @@ def _wall(depth, pattern, shape, sensor=None, *, seed=0, ir=0.5, noise=True):
         return simulate_tof(scene, pattern, sensor, seed=seed, noise=noise)
 
 
-def _scene_rows(data, patterns, isp, seed, tolerance):
+def _scene_rows(data, patterns, isp, seed, tolerance, limits):
     rows = []
     for name in RGBD_SCENES:
-        scene = load_rgbd(Path(data) / name)
+        scene = load_rgbd(Path(data) / name, **limits)
         for pattern in patterns:
             tof = simulate_tof(scene, pattern, seed=seed)
             res = isp.run(tof)
@@ -87,7 +87,7 @@ def _scene_rows(data, patterns, isp, seed, tolerance):
     return rows
 
 
-def _range_rows(data, isp, seed):
+def _range_rows(data, isp, seed, limits):
     rows = []
     u = ToFSensor().unambiguous_range
     for power in (0.5, 5.0):
@@ -118,7 +118,7 @@ def _range_rows(data, isp, seed):
     # the Middlebury scenes 4x farther (4.6-9.4 m): part of every scene is beyond the range
     if data is not None:
         for name in RGBD_SCENES:
-            scene = load_rgbd(Path(data) / name)
+            scene = load_rgbd(Path(data) / name, **limits)
             far = Scene(scene.image, depth=scene.depth * 4.0, depth_valid=scene.depth_valid,
                         name=name)
             for pattern in ("mask1", "mask2"):
@@ -241,7 +241,7 @@ def _calibration_rows(isp, seed):
 
 
 def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "mask2"), isp=None,
-                   seed=1, tolerance=0.05):
+                   seed=1, tolerance=0.05, max_pixels=None, max_bytes=None):
     """Run the depth measurements of docs/reports/isp.md; returns ``{section: [row dict, ...]}``.
 
     Parameters
@@ -260,6 +260,8 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
         Noise seed of the simulations.
     tolerance : float
         An error above it (m) is "wrong" (0.05).
+    max_pixels, max_bytes : int, optional
+        The read limits of the scenes' images (:func:`rgbz_fast.io.read_limits`).
 
     Returns
     -------
@@ -277,12 +279,13 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     if data is not None and not Path(data).is_dir():
         raise FileNotFoundError(f"data: {data} is not a folder")
     out = {}
+    limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)
     for s in sections:
         if s == "scenes":
             if data is not None:
-                out[s] = _scene_rows(data, patterns, isp, seed, tolerance)
+                out[s] = _scene_rows(data, patterns, isp, seed, tolerance, limits)
         elif s == "range":
-            out[s] = _range_rows(data, isp, seed)
+            out[s] = _range_rows(data, isp, seed, limits)
         elif s == "noise":
             out[s] = _noise_rows(isp, seed)
         elif s == "sunlight":

@@ -16,7 +16,8 @@ from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
 from .._validate import check_flag, check_processes, check_workers
-from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
+from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, sample_dataset,
+                  to_rgbz)
 from ..reconstruction import reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ._config import EvalConfig
@@ -194,11 +195,17 @@ def _pool_task(args):
     try:
         return evaluate_image(source, config, cache_dir, workers=workers)
     except (ValueError, TypeError, OSError) as exc:       # a bad image, not a bug: skipped
-        return _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
+        skipped = _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
+        skipped.error = exc if isinstance(exc, ParameterError) else None    # it pickles
+        return skipped
 
 
 class _Skipped(str):
-    """The reason an image was skipped (``skip_bad=True``), in place of its rows."""
+    """The reason an image was skipped (``skip_bad=True``), in place of its rows; ``error``:
+    the :class:`~rgbz_fast.io.ParameterError` it came from, if it did, whose settings a caller
+    may name in its own words."""
+
+    error = None
 
 
 def _worker_init():
@@ -344,7 +351,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
             ex.shutdown(wait=True)
     finally:
         bar.close()
-    skipped = [(n, str(results[n])) for n in names if isinstance(results[n], _Skipped)]
+    skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped)
 

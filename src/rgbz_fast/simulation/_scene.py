@@ -52,6 +52,7 @@ import numpy as np
 
 from .._validate import check_choice, check_image, check_number
 from ..io._files import check_size, read_file, read_image, read_limits, rgb_image
+from ..io._suffixes import IMAGE_SUFFIXES as _IMAGE_SUFFIXES
 
 __all__ = [
     "Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
@@ -70,8 +71,6 @@ MIDDLEBURY_BASELINE_M = 0.160
 _IR_OFFSET = 0.2
 _IR_SLOPE = 0.6
 _IR_BAND_NM = 650.0
-
-_IMAGE_SUFFIXES = {".png", ".tif", ".tiff", ".jpg", ".jpeg", ".bmp", ".ppm", ".pgm", ".webp"}
 
 
 # --------------------------------------------------------------------------
@@ -440,12 +439,13 @@ def _require_file(path, what):
 
 
 def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflectance=None,
-               name=None, grey=False):
+               name=None, grey=False, max_pixels=None, max_bytes=None):
     """Load a plain image file (PNG, TIFF, JPEG, ...) as an RGB :class:`Scene`.
 
     8- and 16-bit files are sRGB-encoded and linearised (16-bit PNGs at their
     full precision); float TIFFs are linear. An alpha channel is dropped. A
     grey image is refused unless ``grey=True`` (see :func:`rgbz_fast.io.rgb_image`).
+    ``max_pixels``, ``max_bytes``: the read limits (:func:`rgbz_fast.io.read_limits`).
 
     Raises
     ------
@@ -457,7 +457,8 @@ def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflec
         (:func:`rgbz_fast.io.read_limits`).
     """
     p = _require_file(path, "path")
-    img = rgb_image(read_image(p, "path"), p, grey=grey)
+    img = rgb_image(read_image(p, "path", max_pixels=max_pixels, max_bytes=max_bytes), p,
+                    grey=grey)
     return Scene.from_rgb(img, encoding=encoding, depth=depth, depth_valid=depth_valid,
                           ir_reflectance=ir_reflectance, name=name or p.stem,
                           meta={"source": str(p)})
@@ -468,7 +469,7 @@ def _natural_key(p):
 
 
 def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_valid=None,
-                  ir_reflectance=None, name=None):
+                  ir_reflectance=None, name=None, max_pixels=None, max_bytes=None):
     """Load a spectral cube: a MATLAB ``.mat`` file or a folder with one band per PNG file.
 
     Parameters
@@ -484,6 +485,8 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
     variable : str, optional
         The variable of a ``.mat`` file; default ``Omsi`` (CAVE), else the
         only 3-D numeric array in the file.
+    max_pixels, max_bytes : int, optional
+        The read limits (:func:`rgbz_fast.io.read_limits`).
 
     Raises
     ------
@@ -502,7 +505,7 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
             raise FileNotFoundError(f"path: no PNG band files in folder {p}")
         bands = []
         for f in files:
-            b = read_image(f, "path")
+            b = read_image(f, "path", max_pixels=max_pixels, max_bytes=max_bytes)
             if b.ndim != 2:
                 raise ValueError(f"path: band file {f.name} has shape {b.shape}; expected a "
                                  "single-band (grey) image")
@@ -517,9 +520,9 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
     elif p.exists():                       # a FIFO or a device: read_file says what it is
         from scipy import io as sio
 
-        blob = read_file(p, "path")
+        blob = read_file(p, "path", max_bytes=max_bytes)
         try:
-            limits = read_limits()
+            limits = read_limits(max_pixels, max_bytes)
             for var, shape, kind in sio.whosmat(BytesIO(blob)):   # headers only
                 check_size(shape, 8, p, "path", limits=limits)
             mat = sio.loadmat(BytesIO(blob))
@@ -566,7 +569,7 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
 
 
 def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BASELINE_M,
-              ir_reflectance=None, name=None, grey=False):
+              ir_reflectance=None, name=None, grey=False, max_pixels=None, max_bytes=None):
     """Load a Middlebury-style RGB-D folder: ``rgb.png``, ``disp1.png``, ``dmin.txt``.
 
     The depth is ``Z = focal_px * baseline_m / (v + dmin)`` with ``v`` the
@@ -577,7 +580,8 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
 
     Note that Middlebury's Z is measured along the optical axis; the scene
     uses it as the distance the ToF pixels see (the line-of-sight distance is
-    at most about 3 % longer at the corners of these images).
+    at most about 3 % longer at the corners of these images). ``max_pixels``,
+    ``max_bytes``: the read limits of the images (:func:`rgbz_fast.io.read_limits`).
 
     Raises
     ------
@@ -604,8 +608,10 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
                          f"offset), got {text[:40]!r}") from None
     if not math.isfinite(dmin) or dmin < 0:
         raise ValueError(f"folder: dmin.txt gives {dmin}; expected a disparity offset >= 0")
-    rgb = rgb_image(read_image(d / "rgb.png", "folder"), d / "rgb.png", "folder", grey=grey)
-    disp = read_image(d / "disp1.png", "folder")
+    limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)
+    rgb = rgb_image(read_image(d / "rgb.png", "folder", **limits), d / "rgb.png", "folder",
+                    grey=grey)
+    disp = read_image(d / "disp1.png", "folder", **limits)
     if disp.ndim == 3 and disp.shape[2] in (3, 4) and np.all(disp[..., 0:1] == disp[..., :3]):
         disp = disp[..., 0]
     if disp.ndim != 2:
