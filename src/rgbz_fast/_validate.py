@@ -138,8 +138,9 @@ def merge_params(cls, params=None, overrides=None, *, name="params", caller=None
     elif isinstance(params, Mapping):
         base = known(dict(params), name)
     else:
-        raise TypeError(f"{name}: expected a {cls.__name__}, a dict of its fields or None, "
-                        f"got {type(params).__name__}")
+        article = "an" if cls.__name__[:1] in "AEIOU" else "a"
+        raise TypeError(f"{name}: expected {article} {cls.__name__}, a dict of its fields or "
+                        f"None, got {type(params).__name__}")
     return cls(**{**base, **overrides})
 
 

@@ -15,7 +15,7 @@ from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import check_flag, check_processes, check_workers
+from .._validate import check_flag, check_processes, check_workers, merge_params
 from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
 from ..reconstruction import reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
@@ -250,7 +250,7 @@ def dataset_sources(dataset, limit=None):
 
 
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
-             scheduler=None, progress=True, skip_bad=False, **config_kwargs):
+             scheduler=None, progress=True, skip_bad=False, **overrides):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
 
     For every image the *reference path* (plain Bayer CFA, no reconstruction)
@@ -267,8 +267,14 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         A list (any iterable) from :func:`~rgbz_fast.io.sample_dataset` /
         :func:`~rgbz_fast.io.folder_dataset`, or a folder. Default: the sample
         dataset (runs offline).
-    config : EvalConfig, optional
-        What to run; keyword arguments build one when it is None.
+    config : EvalConfig or dict, optional
+        What to run (default ``EvalConfig()``). It plays the part ``params``
+        plays elsewhere (``params`` is a field of it: the reconstruction's
+        parameters).
+    **overrides
+        Fields of :class:`EvalConfig` (``metrics=("cfa_psnr",)``,
+        ``noise=True``, ``params=ReconstructParams(...)``), applied over
+        ``config`` and checked by it.
     cache_dir : str or Path, optional
         Where per-image results are cached (one small JSON file per image x
         pattern x method, written atomically), so an interrupted run resumes
@@ -302,12 +308,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     local pool's worker processes before it propagates: no worker outlives
     the run, and no temporary cache file is left behind.
     """
-    if config is None:
-        config = EvalConfig(**config_kwargs)
-    elif config_kwargs:
-        raise TypeError("pass either config or keyword arguments, not both")
-    elif not isinstance(config, EvalConfig):
-        raise TypeError(f"config: expected an EvalConfig, got {type(config).__name__}")
+    config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]

@@ -14,7 +14,7 @@ import numpy as np
 
 from .._patterns import Z
 from .._validate import check_flag, check_number
-from ._stages import _prepare_cfa
+from ._stages import _prepare_cfa, stage_params
 
 __all__ = ["DefectCorrection", "detect_defects", "correct_defects"]
 
@@ -172,7 +172,7 @@ def _gather_neighbours(data, tile, rr, cc, dtype, hidden=None):
     return out
 
 
-def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047):
+def detect_defects(cfa, pattern, params=None, *, white_level=2047, **overrides):
     """Boolean map of the defective colour pixels (see :class:`DefectCorrection`).
 
     Parameters
@@ -181,7 +181,9 @@ def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047)
         Raw frame in DN (the values at Z sites are never read).
     pattern : Pattern or str
         The frame's pattern.
-    params : DefectCorrection
+    params : DefectCorrection, optional
+        Default ``DefectCorrection()``; keyword ``overrides`` replace its
+        fields (``threshold=0.05``).
     white_level : float
         Full scale in DN (``2**bit_depth - 1``).
 
@@ -191,8 +193,7 @@ def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047)
         False at every Z site.
     """
     data, pattern = _prepare_cfa(cfa, pattern)
-    if not isinstance(params, DefectCorrection):
-        raise TypeError(f"params: expected DefectCorrection, got {type(params).__name__}")
+    params = stage_params(DefectCorrection, params, overrides, caller="detect_defects()")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
     found = np.zeros(data.shape, bool)
     if params.enabled:
@@ -283,8 +284,8 @@ def _detect_sites(data, tile, params, white_level):
     return rr[ok], cc[ok]
 
 
-def correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047, known=None,
-                    return_mask=False):
+def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
+                    return_mask=False, **overrides):
     """Replace defective colour pixels by the median of their same-colour neighbours.
 
     Parameters
@@ -292,7 +293,9 @@ def correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047
     cfa : ndarray, shape (rows, cols)
         Raw frame in DN. The values at Z sites are neither read nor changed.
     pattern : Pattern or str
-    params : DefectCorrection
+    params : DefectCorrection, optional
+        Default ``DefectCorrection()``; keyword ``overrides`` replace its
+        fields.
     white_level : float
         Full scale in DN.
     known : ndarray of bool, shape (rows, cols), optional
@@ -309,8 +312,7 @@ def correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047
         Only with ``return_mask``.
     """
     data, pattern = _prepare_cfa(cfa, pattern)
-    if not isinstance(params, DefectCorrection):
-        raise TypeError(f"params: expected DefectCorrection, got {type(params).__name__}")
+    params = stage_params(DefectCorrection, params, overrides, caller="correct_defects()")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
     if known is not None:
         kn = np.asarray(known)
