@@ -917,6 +917,27 @@ def test_mask1_fast_path_equals_generic_interpreter(pname, method, sg_mode, prec
                                        atol=1e-9 if precision == "float64" else 1e-3)
 
 
+@pytest.mark.parametrize("call", [lambda f, **k: rz.reconstruct(f, "sg", **k),
+                                  lambda f, **k: rz.ColourISP().run(f, **k)],
+                         ids=["reconstruct", "ColourISP.run"])
+def test_frame_arguments_are_read_alike_by_every_caller(call):
+    """One reading of ``frame, pattern=, bit_depth=`` (rgbz_fast._frame.frame_inputs)."""
+    frame = rz.RawFrame(np.full((8, 8), 100, np.uint16), "mask1")
+    cases = [(lambda: call(frame.data), TypeError,
+              "pattern: required when frame is a plain array"),
+             (lambda: call(frame, pattern="mask2"), ValueError,
+              "pattern: 'mask2' differs from the frame's pattern 'mask1'"),
+             (lambda: call(frame, bit_depth=12), ValueError,
+              "bit_depth: 12 differs from the frame's 11"),
+             (lambda: call(np.full((8, 8), 4000, np.uint16), pattern="mask1"), ValueError,
+              "frame: values span [4000, 4000], beyond the 11-bit range")]
+    for make, exc, msg in cases:
+        with pytest.raises(exc) as info:
+            make()
+        assert str(info.value).startswith(msg), info.value
+    call(frame, pattern="mask1", bit_depth=11)             # agreeing values are accepted
+
+
 def test_mask1_geometry_detection():
     from rgbz_fast.reconstruction._reconstruct import has_mask1_geometry
 

@@ -36,7 +36,7 @@ import sys
 import numpy as np
 
 from .. import _kernels_count
-from .._frame import RawFrame, mosaic
+from .._frame import frame_inputs, mosaic
 from .._patterns import get_pattern
 from .._validate import parse_shape
 from ..reconstruction import PRECISIONS, ReconstructParams, reconstruct
@@ -92,14 +92,8 @@ def _group_of(target):
 def _frame_data(pattern, shape, seed, frame, bit_depth):
     """(uint16/float data with Z sites zeroed, pattern, bit depth) of the counting run."""
     if frame is not None:
-        if isinstance(frame, RawFrame):
-            if pattern is not None and get_pattern(pattern) != frame.pattern:
-                raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                                 f"frame's pattern {frame.pattern.name!r}")
-            return np.ascontiguousarray(frame.data), frame.pattern, frame.bit_depth
-        pattern = get_pattern(pattern)
-        bd = 11 if bit_depth is None else int(bit_depth)
-        return np.ascontiguousarray(RawFrame(np.asarray(frame), pattern, bd).data), pattern, bd
+        data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
+        return np.ascontiguousarray(data), pattern, bd
     pattern = get_pattern(pattern)
     try:
         rows, cols = (int(s) for s in shape)
@@ -302,7 +296,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
                         f"{', '.join(sorted(bad))}; expected some of {', '.join(sorted(_KW))}")
     kw = dict(_KW)
     kw.update(reconstruct_kwargs)
-    data, pattern, bd = _frame_data(pattern, shape, seed, frame, kw["bit_depth"])
+    data, pattern, bd = _frame_data(pattern, shape, seed, frame,
+                                    reconstruct_kwargs.get("bit_depth"))
     kw["bit_depth"] = bd
     # the public function validates every argument (and runs the normal kernel once)
     reconstruct(data, method, pattern=pattern, bit_depth=kw["bit_depth"], workers=1,

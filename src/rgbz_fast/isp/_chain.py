@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._frame import RawFrame
+from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
                          check_number, merge_params)
@@ -148,34 +148,17 @@ class ColourISP:
 
     # ------------------------------------------------------------------ helpers
     def _inputs(self, frame, pattern, bit_depth, black_level, reference):
+        if reference and not isinstance(frame, RawFrame):
+            raise ValueError("reference: needs a RawFrame with a reference CFA")
+        data, pat, bd = frame_inputs(frame, pattern, bit_depth)
+        meta_black = None
         if isinstance(frame, RawFrame):
-            if pattern is not None and get_pattern(pattern) != frame.pattern:
-                raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                                 f"frame's pattern {frame.pattern.name!r}")
-            if bit_depth is not None and check_bit_depth(bit_depth) != frame.bit_depth:
-                raise ValueError(f"bit_depth: {bit_depth} differs from the frame's "
-                                 f"{frame.bit_depth}")
-            bd = frame.bit_depth
             if reference:
                 if frame.reference is None:
                     raise ValueError("reference: the frame holds no reference Bayer CFA "
                                      "(frame.reference is None)")
                 data, pat = frame.reference, frame.pattern.bayer_pattern()
-            else:
-                data, pat = frame.data, frame.pattern
-            sensor = frame.meta.get("colour_sensor")
-            meta_black = getattr(sensor, "black_level", None)
-        else:
-            if reference:
-                raise ValueError("reference: needs a RawFrame with a reference CFA")
-            if pattern is None:
-                raise TypeError("pattern: required when frame is a plain array "
-                                "(pass a RawFrame, or pattern='bayer', 'mask1', ...)")
-            data = check_image(frame, "frame", ndim=2, dtypes=FRAME_DTYPES)
-            pat = get_pattern(pattern)
-            bd = check_bit_depth(11 if bit_depth is None else bit_depth)
-            RawFrame(data, pat, bd)                       # shape, range, finiteness
-            meta_black = None
+            meta_black = getattr(frame.meta.get("colour_sensor"), "black_level", None)
         if pat.bayer_phase is None:
             raise ValueError(f"pattern: {pat.name!r} fits no Bayer phase; the chain needs "
                              "a Bayer-derived pattern")

@@ -13,9 +13,8 @@ from functools import lru_cache
 import numpy as np
 
 from .. import _kernels
-from .._frame import RawFrame, raw_clip_level, validate_frame
-from .._patterns import get_pattern
-from .._validate import check_bit_depth, check_choice, check_workers, kernel_threads
+from .._frame import RawFrame, frame_inputs, raw_clip_level
+from .._validate import check_choice, check_workers, kernel_threads
 from ._learned import resolve_filters
 from ._params import ReconstructParams
 from ._plans import METHODS as PLAN_METHODS
@@ -52,23 +51,6 @@ def _plans_for(pattern, method, sg_mode, domain):
     raw = plans.view(np.uint8).reshape(-1)
     raw.setflags(write=False)
     return phase_map, raw, len(plans)
-
-
-def _prepare(frame, pattern, bit_depth):
-    """Return (data, pattern, bit_depth) from a RawFrame or an array plus pattern."""
-    if isinstance(frame, RawFrame):
-        if pattern is not None and get_pattern(pattern) != frame.pattern:
-            raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                             f"frame's pattern {frame.pattern.name!r}")
-        if bit_depth is not None and check_bit_depth(bit_depth) != frame.bit_depth:
-            raise ValueError(f"bit_depth: {bit_depth} differs from the frame's {frame.bit_depth}")
-        return frame.data, frame.pattern, frame.bit_depth
-    if pattern is None:
-        raise TypeError("pattern: required when frame is a plain array "
-                        "(pass a RawFrame, or pattern='mask1', ...)")
-    pattern = get_pattern(pattern)
-    bd = check_bit_depth(11 if bit_depth is None else bit_depth)
-    return validate_frame(frame, pattern, bd, "frame"), pattern, bd
 
 
 def _check_out(out, data):
@@ -192,7 +174,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     (dtype('uint16'), 1028, True)
     """
     params = ReconstructParams.build(params, options)
-    data, pattern, bd = _prepare(frame, pattern, bit_depth)
+    data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
     method = check_choice(method, METHODS, "method")
     nthreads = check_workers(workers)
     clip = _resolve_clip(params.clip_level, frame)
