@@ -896,8 +896,7 @@ def test_colour_difference_domain_matches_reference(pname, method):
 @pytest.mark.parametrize("sg_mode", ["auto", "combined"])
 @pytest.mark.parametrize("method", ["bilinear", "bi", "edi_central", "edi_line", "sg"])
 @pytest.mark.parametrize("pname", ["mask1", "mask1_rggb", "mask1_bggr", "mask1_gbrg"])
-def test_mask1_fast_path_equals_generic_interpreter(pname, method, sg_mode, precision,
-                                                    monkeypatch):
+def test_mask1_fast_path_equals_generic_interpreter(pname, method, sg_mode, precision):
     """csrc/recon_mask1.h (the constant plans) against the plans of _plans.py, same options."""
     from rgbz_fast.reconstruction import _reconstruct as R
 
@@ -907,9 +906,8 @@ def test_mask1_fast_path_equals_generic_interpreter(pname, method, sg_mode, prec
         d = random_frame(p, (23, 30), seeded("fast", pname, method, sg_mode))
         d = np.floor(d).astype(dtype) if dtype == np.uint16 else d
         fast = rz.reconstruct(d, method, pattern=p, precision=precision, sg_mode=sg_mode)
-        monkeypatch.setattr(R, "_MASK1_FAST", False)
-        slow = rz.reconstruct(d, method, pattern=p, precision=precision, sg_mode=sg_mode)
-        monkeypatch.setattr(R, "_MASK1_FAST", True)
+        with R.plans_only():
+            slow = rz.reconstruct(d, method, pattern=p, precision=precision, sg_mode=sg_mode)
         if dtype == np.uint16:
             assert np.max(np.abs(fast.astype(int) - slow.astype(int))) <= 1
         else:
@@ -936,6 +934,29 @@ def test_frame_arguments_are_read_alike_by_every_caller(call):
             make()
         assert str(info.value).startswith(msg), info.value
     call(frame, pattern="mask1", bit_depth=11)             # agreeing values are accepted
+
+
+def test_plans_only_is_scoped_to_its_block_and_thread():
+    """plans_only() switches the fast path off inside the block, in its thread only."""
+    import threading
+
+    from rgbz_fast.reconstruction import _reconstruct as R
+
+    p = rz.mask1()
+    assert R.runs_mask1_fast_path(p, "sg", "intensity")
+    assert not R.runs_mask1_fast_path(p, "sg", "intensity", clip_level=1000.0)
+    assert not R.runs_mask1_fast_path(p, "sg", "colour_difference")
+    seen = []
+    with R.plans_only():
+        assert not R.runs_mask1_fast_path(p, "sg", "intensity")
+        t = threading.Thread(target=lambda: seen.append(R.runs_mask1_fast_path(
+            p, "sg", "intensity")))
+        t.start()
+        t.join()
+    assert seen == [True] and R.runs_mask1_fast_path(p, "sg", "intensity")
+    with pytest.raises(ZeroDivisionError), R.plans_only():
+        1 / 0
+    assert R.runs_mask1_fast_path(p, "sg", "intensity")
 
 
 def test_mask1_geometry_detection():

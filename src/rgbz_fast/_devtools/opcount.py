@@ -184,8 +184,7 @@ def _learned_site_counts(data, pattern, precision, bit_depth):
 
 def _uses_mask1_fast(pattern, method, kw):
     """True where reconstruct() runs the Mask1 fast path (csrc/recon_mask1.h)."""
-    return bool(_recon._MASK1_FAST and kw["domain"] == "intensity" and method != "edi_rows"
-                and _recon.has_mask1_geometry(pattern))
+    return _recon.runs_mask1_fast_path(pattern, method, kw["domain"], kw.get("clip_level"))
 
 
 def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):

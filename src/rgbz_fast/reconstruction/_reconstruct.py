@@ -8,6 +8,8 @@ References
 
 from __future__ import annotations
 
+import contextvars
+from contextlib import contextmanager
 from functools import lru_cache
 
 import numpy as np
@@ -31,9 +33,26 @@ check_layout(_kernels.plan_layout())
 #: rgbz_precision and rgbz_exp_mode (csrc/rgbz.h)
 _PRECISION_CODES = dict(_kernels.PRECISIONS)
 _EXP_CODES = dict(_kernels.EXP_MODES)
-#: run the interior sites of Mask1 on the constant plans of csrc/recon_mask1.h (the Mask1
-#: fast path) where it applies; tests switch it off to compare it with the plans of _plans.py
-_MASK1_FAST = True
+#: whether reconstruct() may run the interior sites of Mask1 on the constant plans of
+#: csrc/recon_mask1.h (the Mask1 fast path) where it applies: False inside
+#: :func:`plans_only`, in that thread (or task) only
+_FAST_PATH = contextvars.ContextVar("rgbz_fast_mask1_fast_path", default=True)
+
+
+@contextmanager
+def plans_only():
+    """Within the block, :func:`reconstruct` runs every Z site on the plans of ``_plans.py``.
+
+    The Mask1 fast path (csrc/recon_mask1.h) is a faster formulation of the
+    same plans, equal to them within rounding; this lets a test run the
+    interpreter it stands in for. Only the calling thread is affected, and the
+    fast path is back when the block exits, also on an exception.
+    """
+    token = _FAST_PATH.set(False)
+    try:
+        yield
+    finally:
+        _FAST_PATH.reset(token)
 
 
 def has_mask1_geometry(pattern):
@@ -42,6 +61,14 @@ def has_mask1_geometry(pattern):
         return False
     return pattern.bayer_phase is not None and int(
         pattern.bayer_tile()[pattern.tile == 3][0]) == 1
+
+
+def runs_mask1_fast_path(pattern, method, domain, clip_level=None):
+    """True where :func:`reconstruct` runs the Mask1 fast path (csrc/recon_mask1.h): a Mask1
+    geometry, a plan method other than ``edi_rows``, the intensity domain, no clip level
+    (the fast path has no clipped-pixel rule), outside :func:`plans_only`."""
+    return bool(_FAST_PATH.get() and clip_level is None and domain == "intensity"
+                and method != "edi_rows" and has_mask1_geometry(pattern))
 
 
 @lru_cache(maxsize=128)
@@ -205,9 +232,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
 def _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bit_depth, clip,
                 nthreads, opcounts=None, kernels=None):
     """One call of the C reconstruction (``kernels``: the counting extension for opcount)."""
-    # the Mask1 fast path knows nothing of clipping: clipped frames take the interpreter
-    fast = int(_MASK1_FAST and clip is None and params.domain == "intensity"
-               and method != "edi_rows" and has_mask1_geometry(pattern))
+    fast = int(runs_mask1_fast_path(pattern, method, params.domain, clip))
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
     k.reconstruct(src, out, _PRECISION_CODES[params.precision], pattern.period[0],
