@@ -445,10 +445,10 @@ def test_kernel_rejects_clip_with_the_mask1_fast_path():
     from rgbz_fast import _kernels
 
     p = rz.mask1()
-    phase_map, plans, n = R._plans_for(p, "sg", "auto", "intensity")
+    plan_map, plans, n = R._plans_for(p, "sg", "auto", "intensity")
     d = np.zeros((8, 8))
     with pytest.raises(RuntimeError, match="status 1"):
-        _kernels.reconstruct(d, np.empty_like(d), 1, 2, 2, phase_map, plans, n, 1e-3, 0.5, 0.5,
+        _kernels.reconstruct(d, np.empty_like(d), 1, 2, 2, plan_map, plans, n, 1e-3, 0.5, 0.5,
                              2047.0, 0, 1, mask1_fast=1, clip_level=100.0)
 
 

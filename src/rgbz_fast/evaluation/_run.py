@@ -25,15 +25,16 @@ from ._results import Results
 __all__ = ["evaluate", "evaluate_image", "image_frames"]
 
 
-def _pattern_for(pname, phase):
-    """The pattern named ``pname`` on the Bayer phase of a raw file (presets follow the phase)."""
+def _pattern_for(pname, bayer):
+    """The pattern named ``pname`` on the Bayer arrangement ``bayer`` of a raw file (presets
+    follow the file's arrangement)."""
     base = str(pname).lower().split("_")[0]
     if base in ("mask1", "mask2", "rows", "bayer"):
-        return getattr(_patterns, base)(phase)
+        return getattr(_patterns, base)(bayer)
     pattern = get_pattern(pname)
-    if pattern.bayer_phase != phase:
+    if pattern.bayer_phase != bayer:
         raise ValueError(f"patterns: {pname!r} is built on {pattern.bayer_phase}, the raw file "
-                         f"on {phase}")
+                         f"on {bayer}")
     return pattern
 
 
@@ -116,13 +117,13 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     for pname in dict.fromkeys(p for p, _ in todo):
         frame, ref_cfa = _frames(img, get_pattern(pname), config, memo)
         pattern = frame.pattern
-        phase, bd = pattern.bayer_phase, frame.bit_depth
+        bayer, bd = pattern.bayer_phase, frame.bit_depth
         z = frame.z_mask
         if config.image_metrics:
             # per pattern: a raw frame is cropped to a whole number of periods; the
             # grey-world gains of the reference are reused on the RGB-Z path (Fig. 19).
-            # Patterns on one Bayer phase share their reference CFA, rendered once.
-            ref_srgb, gains = _reference_render(chain, ref_cfa, phase, bd, workers, renders)
+            # Patterns on one Bayer arrangement share their reference CFA, rendered once.
+            ref_srgb, gains = _reference_render(chain, ref_cfa, bayer, bd, workers, renders)
         for p, m in todo:
             if p != pname:
                 continue
@@ -131,7 +132,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
             if "cfa_psnr" in config.metrics:
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
-                test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
+                test_srgb = chain.render(out, bayer, bit_depth=bd, gains=gains, workers=workers)
                 values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
             if cdir:
                 _cache_write(cdir, key(p, m), values)
@@ -139,15 +140,15 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     return rows
 
 
-def _reference_render(chain, cfa, phase, bit_depth, workers, renders):
+def _reference_render(chain, cfa, bayer, bit_depth, workers, renders):
     """(sRGB image, white-balance gains) of a reference CFA, from ``renders`` (a list of
-    earlier (cfa, phase, bit_depth, image, gains)) when the same CFA was rendered before."""
+    earlier (cfa, bayer, bit_depth, image, gains)) when the same CFA was rendered before."""
     for done in renders:
-        if done[1:3] == (phase, bit_depth) and np.array_equal(done[0], cfa):
+        if done[1:3] == (bayer, bit_depth) and np.array_equal(done[0], cfa):
             return done[3], done[4]
-    image, stages = chain.render(cfa, phase, bit_depth=bit_depth, workers=workers,
+    image, stages = chain.render(cfa, bayer, bit_depth=bit_depth, workers=workers,
                                  return_stages=True)
-    renders.append((cfa, phase, bit_depth, image, stages["gains"]))
+    renders.append((cfa, bayer, bit_depth, image, stages["gains"]))
     return image, stages["gains"]
 
 

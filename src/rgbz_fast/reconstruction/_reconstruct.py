@@ -73,11 +73,11 @@ def runs_mask1_fast_path(pattern, method, domain, clip_level=None):
 
 @lru_cache(maxsize=128)
 def _plans_for(pattern, method, sg_mode, domain):
-    phase_map, plans = build_plans(pattern, method, sg_mode, domain)
-    phase_map.setflags(write=False)
+    plan_map, plans = build_plans(pattern, method, sg_mode, domain)
+    plan_map.setflags(write=False)
     raw = plans.view(np.uint8).reshape(-1)
     raw.setflags(write=False)
-    return phase_map, raw, len(plans)
+    return plan_map, raw, len(plans)
 
 
 def _check_out(out, data):
@@ -221,22 +221,22 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
                              "clip_level=None")
         run_learned(src, out, pattern, filters, params.precision, bd, nthreads)
         return out
-    phase_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
+    plan_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     if clip is not None and not _reaches(src, pattern, clip):
         clip = None          # nothing clipped: exactly the clip_level=None call
-    _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bd, clip,
+    _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bd, clip,
                 kernel_threads(nthreads, src.size))
     return out
 
 
-def _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bit_depth, clip,
+def _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bit_depth, clip,
                 nthreads, opcounts=None, kernels=None):
     """One call of the C reconstruction (``kernels``: the counting extension for opcount)."""
     fast = int(runs_mask1_fast_path(pattern, method, params.domain, clip))
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
     k.reconstruct(src, out, _PRECISION_CODES[params.precision], pattern.period[0],
-                  pattern.period[1], phase_map, plans, n_plans, params.sigma_floor,
+                  pattern.period[1], plan_map, plans, n_plans, params.sigma_floor,
                   params.sigma_rel, params.edge_ratio, float((1 << bit_depth) - 1),
                   _EXP_CODES[params.exp_mode], nthreads, mask1_fast=fast, clip_level=clip,
                   **extra)
@@ -246,13 +246,13 @@ def run_learned(src, out, pattern, filters, precision, bit_depth, nthreads, opco
                 kernels=None):
     """One call of the learned kernel (csrc/learned.c); ``kernels``: the counting extension."""
     P, Q = pattern.period
-    phase_map = np.full(P * Q, -1, np.int32)
+    plan_map = np.full(P * Q, -1, np.int32)
     for k, ph in enumerate(filters.geometry):
         r, c = ph["rc"]
-        phase_map[r * Q + c] = k
+        plan_map[r * Q + c] = k
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
-    k.learned(src, out, _PRECISION_CODES[precision], P, Q, phase_map,
+    k.learned(src, out, _PRECISION_CODES[precision], P, Q, plan_map,
               maxval=float((1 << bit_depth) - 1), workers=nthreads, **filters.kernel_arrays(),
               **extra)
 
