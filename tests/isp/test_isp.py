@@ -233,9 +233,9 @@ def test_known_defects_and_disabled_stage():
 @pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2", "rows", "ZR/BG", "ZRGG/BGBZ",
                                      "RGZ/GBG/ZRB"])
 @pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
-def test_defect_correction_equals_the_full_frame_reference(pattern, dtype):
-    """The phase-plane implementation (contiguous sub-images, no full-frame
-    temporaries) against the first, full-frame one (tests/_reference/defects.py):
+def test_defect_correction_equals_the_pixel_by_pixel_reference(pattern, dtype):
+    """The per-position implementation (contiguous sub-images, no full-frame
+    temporaries) against the pixel-by-pixel reference of tests/_reference/defects.py:
     the same defect map and the same corrected values, bit for bit, on noisy frames
     with planted hot, cold and clustered defects, known defects, other thresholds,
     and frames smaller than or barely larger than a period."""
