@@ -225,7 +225,7 @@ def test_cache_follows_the_image_content_and_exact_name(tmp_path):
 
 
 def test_figures_show_every_error_bar_and_hide_nothing(tiny_dataset):
-    """The y axis spans every whisker (the old bars were cut off at the top), the legend sits
+    """The y axis spans every whisker (no bar is cut off at the top), the legend sits
     outside the plot, and the paired chart shows each image's difference and zero."""
     from rgbz_fast.evaluation import _reports
 

@@ -201,8 +201,9 @@ def test_beta_skips_only_the_terms_between_two_clipped_candidates():
     expect = np.sum(c / S) / np.sum(1 / S)
     out = recon(d, p, "bi", precision="float64", clip_level=level)
     np.testing.assert_allclose(out[y, x], expect, rtol=1e-12)
-    # without clip handling |1510 - 1900| counts; with the old rule (no clipped term at all)
-    # the two clipped candidates took the beta of the least trusted unclipped one
+    # without clip handling |1510 - 1900| counts; leaving out every term with a clipped
+    # pixel (not only clipped-clipped ones) would give the two clipped candidates the beta
+    # of the least trusted unclipped one, which is far from the expected value
     full = 1 + np.abs(c[:, None] - c[None, :]).sum(axis=1)
     assert abs(recon(d, p, "bi", precision="float64")[y, x] - np.sum(c / full) / np.sum(1 / full)) < 1e-9
     old = np.array([1 + 3 * 120.0] * 4)
@@ -468,8 +469,9 @@ def test_eval_config_clip_level():
                      (True, TypeError)):
         with pytest.raises(exc, match="clip_level"):
             cfg(bad)
-    # None (the default) and, for RGB sources, "auto" leave the cache keys as they were;
-    # raw sources key on "auto" and on a level
+    # None (the default) and, for RGB sources, "auto" stay out of the cache key (the key of
+    # a run that clips nothing does not depend on the clip option); raw sources key on
+    # "auto" and on a level
     off = EvalConfig()
     assert c.key("mask1", "sg") == off.key("mask1", "sg")
     assert off.key("mask1", "sg", raw=True) == off.key("mask1", "sg")

@@ -595,9 +595,8 @@ def test_constant_float_frame_non_dyadic_value_is_flat(pname, method, domain):
     colour-difference domain the other-channel estimates t0 + sum w (t - t0),
     the result is exact in any precision: float64 gives the constant, float32
     arithmetic gives it rounded to float32 (the frame's value cast to float32).
-    Before the estimates were written relative to their first tap, a float64
-    frame of 77.7 came out an ulp high at the Mask2 Z sites, and float32 frames
-    an ulp low.
+    A plain weighted mean sum w c / sum w is not: a float64 frame of 77.7 would
+    come out an ulp high at the Mask2 Z sites, and float32 frames an ulp low.
     """
     p = ALL_PATTERNS[pname]()
     for value in (2047 / 3, 77.7, 0.1):
@@ -1013,7 +1012,7 @@ def test_out_rejected_and_left_untouched():
 @pytest.mark.parametrize("method", ["sg", "edi_line"])
 def test_plan_without_any_pair_agrees_with_reference(tile, method):
     """Sparse patterns where a site's plan has gradient families but no valid pair at all:
-    every gamma is 1 (the kernel used to read them uninitialised for SG)."""
+    every gamma is 1, and no gamma is read before it is written (SG included)."""
     from rgbz_fast.reconstruction._plans import build_plans
 
     p = rz.Pattern(tile)

@@ -494,7 +494,7 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         pixels (each channel over its band, :func:`simulate_colour`) and the
         returned light for the Z pixels (at the laser wavelength and
         ``tof_sensor.f_number``, :func:`simulate_tof`). None (the default):
-        no blur, as before optics existed.
+        no blur: the scene's values reach the pixels as they are.
 
     Returns
     -------
