@@ -162,6 +162,33 @@ def test_mosaic_accepts_dtype_names_and_numpy_integers():
     np.testing.assert_array_equal(rz.mosaic(img, "mask1", input_bits=np.int64(8)).data, want)
 
 
+def test_merge_params_is_the_one_parameter_rule():
+    """rgbz_fast._validate.merge_params: an object or a dict of its fields or None, with
+    keyword overrides; the class checks the result; unknown names and other types are a
+    TypeError naming what took them."""
+    import pytest
+
+    from rgbz_fast._validate import merge_params
+
+    P = rz.ReconstructParams
+    base = P(precision="float64")
+    assert merge_params(P, base) is base                      # nothing to override: as it is
+    assert merge_params(P, base, {"sigma_rel": 0}) == P(precision="float64", sigma_rel=0.0)
+    assert merge_params(P, {"precision": "float64"}, {"sigma_rel": 0}) == \
+        merge_params(P, None, {"precision": "float64", "sigma_rel": 0})
+    assert merge_params(P) == P()
+    with pytest.raises(TypeError, match=r"^run\(\) got an unexpected keyword argument 'sigma' "
+                                        r"\(fields of ReconstructParams: precision, "):
+        merge_params(P, base, {"sigma": 1}, caller="run()")
+    with pytest.raises(TypeError, match="^opts got an unexpected keyword argument 'sigma'"):
+        merge_params(P, {"sigma": 1}, name="opts")
+    with pytest.raises(TypeError, match="^opts: expected a ReconstructParams, a dict of its "
+                                        "fields or None, got str"):
+        merge_params(P, "float64", name="opts")
+    with pytest.raises(ValueError, match="^sigma_rel: "):
+        merge_params(P, base, {"sigma_rel": -1})
+
+
 # --------------------------------------------------------------------------- every contract file
 def test_contract_rows_are_unique_and_documented_bugs_exist():
     api, cli = all_rows()
