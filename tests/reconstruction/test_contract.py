@@ -208,6 +208,111 @@ ROWS = [
 test_api_contract = api_tests(ROWS)
 
 
+# --------------------------------------------------------------------------- more bad input
+def _run(data, pattern, method, bit_depth=11, **kw):
+    return rz.reconstruct(data, method, pattern=pattern, bit_depth=bit_depth, **kw)
+
+
+def _f(shape=(8, 8), dtype=np.float64):
+    return np.zeros(shape, dtype)
+
+
+def _with(value, at=(1, 1), dtype=np.float64):
+    d = _f(dtype=dtype)
+    d[at] = value
+    return d
+
+
+BAD_INPUTS = {
+    "unknown method": (lambda: _run(_f(), rz.mask1(), "bicubic"), ValueError, "method"),
+    "method not a string": (lambda: _run(_f(), rz.mask1(), 3), ValueError, "method"),
+    "edi_rows on mask1": (lambda: _run(_f(), rz.mask1(), "edi_rows"), ValueError, "edi_rows"),
+    "edi_rows on ZZGR/ZZBG": (lambda: _run(_f(), rz.Pattern("ZZGR/ZZBG"), "edi_rows"),
+                              ValueError, "edi_rows"),
+    "edi_rows on GRGR/BGZG": (lambda: _run(_f(), rz.Pattern("GRGR/BGZG"), "edi_rows"),
+                              ValueError, "edi_rows"),
+    "no candidates ZZ/ZG": (lambda: _run(_f(), rz.Pattern("ZZ/ZG"), "sg"), ValueError, "pattern"),
+    "no candidates GZ/BG": (lambda: _run(_f(), rz.Pattern("GZ/BG"), "bi"), ValueError, "pattern"),
+    "NaN": (lambda: _run(_with(np.nan), rz.mask1(), "sg"), ValueError, "frame"),
+    "NaN at a Z site": (lambda: _run(_with(np.nan, (0, 0)), rz.mask1(), "sg"), ValueError,
+                        "frame"),
+    "inf": (lambda: _run(_with(np.inf), rz.mask1(), "sg"), ValueError, "frame"),
+    "above 2^b-1 (float)": (lambda: _run(_with(2048.0), rz.mask1(), "sg"), ValueError,
+                            "frame|data"),
+    "above 2^b-1 (uint16)": (lambda: _run(_with(4096, dtype=np.uint16), rz.mask1(), "sg",
+                                          bit_depth=12), ValueError, "frame|data"),
+    "negative": (lambda: _run(_with(-1.0), rz.mask1(), "sg"), ValueError, "frame|data"),
+    "1-D array": (lambda: _run(np.zeros(16), rz.mask1(), "sg"), ValueError, "frame"),
+    "3-D array": (lambda: _run(np.zeros((4, 4, 3)), rz.mask1(), "sg"), ValueError, "frame"),
+    "smaller than period": (lambda: _run(_f((3, 3)), rz.mask2(), "sg"), ValueError,
+                            "frame.*period"),
+    "smaller than rows period": (lambda: _run(_f((5, 8)), rz.rows(), "edi_rows"), ValueError,
+                                 "period"),
+    "negative sigma_floor": (lambda: _run(_f(), rz.mask1(), "sg", sigma_floor=-1e-3),
+                             ValueError, "sigma_floor"),
+    "zero sigma_floor": (lambda: _run(_f(), rz.mask1(), "sg", sigma_floor=0), ValueError,
+                         "sigma_floor"),
+    "NaN sigma_floor": (lambda: _run(_f(), rz.mask1(), "sg", sigma_floor=np.nan), ValueError,
+                        "sigma_floor"),
+    "string sigma_floor": (lambda: _run(_f(), rz.mask1(), "sg", sigma_floor="small"),
+                           TypeError, "sigma_floor"),
+    "negative edge_ratio": (lambda: _run(_f((12, 8)), rz.rows(), "edi_rows", edge_ratio=-0.5),
+                            ValueError, "edge_ratio"),
+    "bad precision": (lambda: _run(_f(), rz.mask1(), "sg", precision="float16"), ValueError,
+                      "precision"),
+    "bad sg_mode": (lambda: _run(_f(), rz.mask1(), "sg", sg_mode="mixed"), ValueError, "sg_mode"),
+    "bad exp": (lambda: _run(_f(), rz.mask1(), "sg", exp="approx"), ValueError, "exp"),
+    "workers=0": (lambda: _run(_f(), rz.mask1(), "sg", workers=0), ValueError, "workers"),
+    "int32 frame": (lambda: _run(_f(dtype=np.int32), rz.mask1(), "sg"), TypeError, "frame"),
+    "complex frame": (lambda: _run(_f(dtype=np.complex128), rz.mask1(), "sg"), TypeError,
+                      "frame"),
+    "no pattern": (lambda: rz.reconstruct(_f(), "sg"), TypeError, "pattern"),
+    "bit_depth 17": (lambda: _run(_f(dtype=np.uint16), rz.mask1(), "sg", bit_depth=17),
+                     ValueError, "bit_depth"),
+    "bit_depth 0": (lambda: _run(_f(dtype=np.uint16), rz.mask1(), "sg", bit_depth=0),
+                    ValueError, "bit_depth"),
+    "pattern differs from frame's": (
+        lambda: rz.reconstruct(rz.RawFrame(_f(), rz.mask1()), "sg", pattern="mask2"),
+        ValueError, "pattern"),
+    "bit_depth differs from frame's": (
+        lambda: rz.reconstruct(rz.RawFrame(_f(), rz.mask1()), "sg", bit_depth=12),
+        ValueError, "bit_depth"),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD_INPUTS))
+def test_bad_input_raises(case):
+    fn, exc, pattern = BAD_INPUTS[case]
+    with pytest.raises(exc, match=pattern):
+        fn()
+
+
+def test_range_error_names_the_frame_parameter():
+    with pytest.raises(ValueError, match="^frame"):
+        _run(_with(5000.0), rz.mask1(), "sg")
+
+
+@pytest.mark.parametrize("call", [lambda f, **k: rz.reconstruct(f, "sg", **k),
+                                  lambda f, **k: rz.ColourISP().run(f, **k)],
+                         ids=["reconstruct", "ColourISP.run"])
+def test_frame_arguments_are_read_alike_by_every_caller(call):
+    """One reading of ``frame, pattern=, bit_depth=`` (rgbz_fast._frame.frame_inputs)."""
+    frame = rz.RawFrame(np.full((8, 8), 100, np.uint16), "mask1")
+    cases = [(lambda: call(frame.data), TypeError,
+              "pattern: required when frame is a plain array"),
+             (lambda: call(frame, pattern="mask2"), ValueError,
+              "pattern: 'mask2' differs from the frame's pattern 'mask1'"),
+             (lambda: call(frame, bit_depth=12), ValueError,
+              "bit_depth: 12 differs from the frame's 11"),
+             (lambda: call(np.full((8, 8), 4000, np.uint16), pattern="mask1"), ValueError,
+              "frame: values span [4000, 4000], beyond the 11-bit range")]
+    for make, exc, msg in cases:
+        with pytest.raises(exc) as info:
+            make()
+        assert str(info.value).startswith(msg), info.value
+    call(frame, pattern="mask1", bit_depth=11)             # agreeing values are accepted
+
+
 # --------------------------------------------------------------------------- accepted on purpose
 def test_accepted_on_purpose():
     """The inputs docs/reports/robustness.md lists as accepted, not errors: values beyond the
