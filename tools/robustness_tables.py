@@ -3,9 +3,9 @@
     python tools/robustness_tables.py            # rewrite the tables in the page
     python tools/robustness_tables.py --check    # exit 1 when the page and the rows differ
 
-The rows (``ROWS``: the Python API, ``CLI_ROWS``: the command line) and their
-Markdown (``markdown_tables()``) live with the tests that check them
-(:data:`CONTRACT`); this script puts that Markdown between the
+The rows (``ROWS``: the Python API, ``CLI_ROWS``: the command line) live in the
+contract file of each subpackage (``tests/**/test_contract.py``); their runner
+(:data:`CONTRACT`) collects them and renders the Markdown (``markdown_tables()``); this script puts that Markdown between the
 ``<!-- api-table:start -->``/``end`` and ``<!-- cli-table:start -->``/``end``
 markers of the page and leaves the rest of the page as it is.
 """
@@ -21,7 +21,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 PAGE = REPO / "docs" / "reports" / "robustness.md"
 #: the test module that holds the rows and renders them
-CONTRACT = REPO / "tests" / "test_robustness.py"
+CONTRACT = REPO / "tests" / "_contract.py"
 
 
 def tables():

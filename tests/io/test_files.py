@@ -213,12 +213,12 @@ def test_errors_carry_the_parameter_and_the_settings_that_fix_it(tmp_path):
 
 def test_readers_agree_on_the_suffixes_of_images_and_raw_files(tmp_path):
     """One list per kind of file: a scene, a dataset and read_raw recognise the same names."""
-    from rgbz_fast.simulation import _scene
+    from rgbz_fast.simulation import _loaders
 
     assert rio.IMAGE_SUFFIXES >= set(rio.IMAGE_EXTENSIONS)
     assert rio.RAW_SUFFIXES == set(rio.LIBRAW_EXTENSIONS + rio.HEADERLESS_EXTENSIONS)
     assert set(rio.RAW_EXTENSIONS) == rio.RAW_SUFFIXES | set(rio.IMAGE_EXTENSIONS)
-    assert _scene._IMAGE_SUFFIXES is rio.IMAGE_SUFFIXES
+    assert _loaders._IMAGE_SUFFIXES is rio.IMAGE_SUFFIXES
     for name in ("a.pgm", "b.webp", "c.nrw", "d.txt"):
         (tmp_path / name).write_bytes(b"")
     sources = rio.folder_dataset(tmp_path)

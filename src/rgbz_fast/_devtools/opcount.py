@@ -34,7 +34,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels_count
-from .._frame import RawFrame, mosaic
+from .._frame import frame_inputs, mosaic
 from .._patterns import get_pattern
 from ..reconstruction import ReconstructParams, reconstruct
 from ..reconstruction import _reconstruct as _recon
@@ -88,14 +88,8 @@ def _group_of(target):
 def _frame_data(pattern, shape, seed, frame, bit_depth):
     """(uint16/float data with Z sites zeroed, pattern, bit depth) of the counting run."""
     if frame is not None:
-        if isinstance(frame, RawFrame):
-            if pattern is not None and get_pattern(pattern) != frame.pattern:
-                raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                                 f"frame's pattern {frame.pattern.name!r}")
-            return np.ascontiguousarray(frame.data), frame.pattern, frame.bit_depth
-        pattern = get_pattern(pattern)
-        bd = 11 if bit_depth is None else int(bit_depth)
-        return np.ascontiguousarray(RawFrame(np.asarray(frame), pattern, bd).data), pattern, bd
+        data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
+        return np.ascontiguousarray(data), pattern, bd
     pattern = get_pattern(pattern)
     try:
         rows, cols = (int(s) for s in shape)
@@ -186,8 +180,7 @@ def _learned_site_counts(data, pattern, precision, bit_depth):
 
 def _uses_mask1_fast(pattern, method, kw):
     """True where reconstruct() runs the Mask1 fast path (csrc/recon_mask1.h)."""
-    return bool(_recon._MASK1_FAST and kw["domain"] == "intensity" and method != "edi_rows"
-                and _recon.has_mask1_geometry(pattern))
+    return _recon.runs_mask1_fast_path(pattern, method, kw["domain"], kw.get("clip_level"))
 
 
 def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
@@ -298,7 +291,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
                         f"{', '.join(sorted(bad))}; expected some of {', '.join(sorted(_KW))}")
     kw = dict(_KW)
     kw.update(reconstruct_kwargs)
-    data, pattern, bd = _frame_data(pattern, shape, seed, frame, kw["bit_depth"])
+    data, pattern, bd = _frame_data(pattern, shape, seed, frame,
+                                    reconstruct_kwargs.get("bit_depth"))
     kw["bit_depth"] = bd
     # the public function validates every argument (and runs the normal kernel once)
     reconstruct(data, method, pattern=pattern, bit_depth=kw["bit_depth"], workers=1,
