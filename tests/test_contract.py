@@ -134,6 +134,16 @@ ROWS = [
     R("frame.mosaic-input_bits-100", "mosaic(uint8 image, input_bits=100)",
       lambda f: rz.mosaic(u8img(), "mask1", input_bits=100), ValueError,
       "input_bits: expected 1..8 bits for uint8 input, got 100"),
+    R("frame.mosaic-int64-list", "mosaic(a list of ints)",
+      lambda f: rz.mosaic([[[200, 200, 200]] * 4] * 4, "mask1"), TypeError,
+      "rgb: an int64 image (a list of Python ints becomes int64) says nothing about the range "
+      "of its values; pass input_bits="),
+    R("frame.mosaic-uint32", "mosaic(uint32 image)",
+      lambda f: rz.mosaic(np.full((4, 4, 3), 200, np.uint32), "mask1"), TypeError,
+      "rgb: a uint32 image says nothing about the range of its values"),
+    R("frame.mosaic-input_bits-values", "mosaic(int64 300, input_bits=8)",
+      lambda f: rz.mosaic(np.full((4, 4, 3), 300), "mask1", input_bits=8), ValueError,
+      "rgb: integer values span [300, 300], beyond the 8-bit input range [0, 255]"),
     R("frame.mosaic-input_bits-float", "mosaic(float image, input_bits=8)",
       lambda f: rz.mosaic(rgb(), "mask1", input_bits=8), ValueError,
       "input_bits: applies to integer input only"),
@@ -211,3 +221,38 @@ def test_docs_tables_match_the_rows():
     assert table_between(text, "<!-- cli-table:start -->", "<!-- cli-table:end -->") == cli
     for bug, what in BUGS.items():
         assert f"**{bug} — " in text, f"{bug} is not described in docs/reports/robustness.md"
+
+
+def test_integer_images_wider_than_16_bits_need_their_bits():
+    """The one dtype rule (``rgbz_fast._validate.integer_bits``): an int32/int64/uint32/uint64
+    image -- any list of Python ints -- is never scaled by the width of its type (200 became
+    0 in a mosaic and an auto-exposed scene saturated). Every entry that takes the range of
+    an image from the image refuses it; stating the bits gives the result of a uint8 image of
+    the same values, and an entry given its range (metrics, data_range) reads it as it is."""
+    import pytest
+
+    from rgbz_fast import evaluation as ev
+    from rgbz_fast import isp, metrics
+
+    u8 = np.random.default_rng(0).integers(0, 256, (16, 16, 3)).astype(np.uint8)
+    for dtype in (np.int32, np.int64, np.uint32, np.uint64):
+        wide = u8.astype(dtype)
+        for call in (lambda a: rz.mosaic(a, "mask1"), lambda a: sim.Scene(a),
+                     lambda a: sim.Scene.from_rgb(a, encoding="srgb"),
+                     lambda a: sim.simulate(a, "mask1", noise=False),
+                     lambda a: ev.image_frames(a, "mask1", ev.EvalConfig()),
+                     lambda a: rz.reconstruct(a[..., 0], "bi", pattern="mask1"),
+                     lambda a: isp.srgb_encode(a), lambda a: isp.correct_colour(a)):
+            with pytest.raises(TypeError, match=f"{np.dtype(dtype)}"):
+                call(wide)
+        np.testing.assert_array_equal(rz.mosaic(wide, "mask1", input_bits=8).data,
+                                      rz.mosaic(u8, "mask1").data)
+        np.testing.assert_array_equal(sim.Scene(wide, input_bits=8).image, sim.Scene(u8).image)
+        np.testing.assert_array_equal(
+            sim.Scene.from_rgb(wide, encoding="linear", input_bits=8).image,
+            sim.Scene.from_rgb(u8, encoding="linear").image)
+        assert metrics.cpsnr(wide, wide[::-1]) == metrics.cpsnr(u8, u8[::-1])
+    # a list of ints is int64; the stated bits apply, values beyond them are refused
+    assert rz.mosaic(u8.tolist(), "mask1", input_bits=8).data.max() > 0
+    scene = sim.Scene(np.full((4, 4, 3), 4095), input_bits=12)
+    assert scene.image.max() == 1.0 and scene.input_bits is None

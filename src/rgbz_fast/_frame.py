@@ -16,7 +16,7 @@ import numpy as np
 
 from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
-from ._validate import FRAME_DTYPES, check_bit_depth, check_dtype, check_image
+from ._validate import FRAME_DTYPES, check_bit_depth, check_dtype, check_image, integer_bits
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
 
@@ -234,7 +234,9 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     rgb : ndarray, shape (rows, cols, 3)
         The image. Integer input of k bits is scaled to the full range of the
         bit depth, ``round(v / (2**k - 1) * (2**bit_depth - 1))``; float input
-        is taken as [0, 1].
+        is taken as [0, 1]. An integer type wider than 16 bits (int32, int64:
+        a list of Python ints) needs ``input_bits`` (see
+        :func:`rgbz_fast._validate.integer_bits`).
     pattern : Pattern or str
         The pattern; ``bayer(...)`` gives the reference CFA of the same image.
     bit_depth : int
@@ -243,8 +245,9 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
         Output dtype. Integer outputs are rounded; float outputs keep the
         exact scaled values.
     input_bits : int, optional
-        Bits of integer input, 1 up to the dtype's width (default: the width,
-        8 for uint8 and 16 for uint16; 31 for int32). Not for float input.
+        Bits of integer input, 1 up to the dtype's width (default: the width
+        for types of at most 16 bits, 8 for uint8 and 16 for uint16; required
+        for wider ones, int32 or int64). Not for float input.
 
     Returns
     -------
@@ -265,12 +268,10 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     """
     pattern = get_pattern(pattern)
     bd = check_bit_depth(bit_depth)
-    if input_bits is not None and (isinstance(input_bits, bool)
-                                   or not isinstance(input_bits, (int, np.integer))):
-        raise TypeError(f"input_bits: expected an integer number of bits, got {input_bits!r}")
     img = check_image(rgb, "rgb", ndim=3)
     if img.shape[2] != 3:
         raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {img.shape}")
+    k = integer_bits(img, "rgb", input_bits)
     out_dtype = check_dtype(dtype, FRAME_DTYPES)
     if out_dtype == np.uint8 and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
@@ -279,24 +280,8 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     colour = pattern.bayer_map(shape)
     rr, cc = np.indices(shape, sparse=True)
     sampled = img[rr, cc, colour]
-    integer = np.issubdtype(img.dtype, np.integer) or img.dtype == np.bool_
-    if integer:
-        # the widest value the dtype holds: more bits would scale every value to ~0
-        width = 1 if img.dtype == np.bool_ else \
-            8 * img.dtype.itemsize - int(np.issubdtype(img.dtype, np.signedinteger))
-        k = width if input_bits is None else int(input_bits)
-        if not 1 <= k <= width:
-            raise ValueError(f"input_bits: expected 1..{width} bits for {img.dtype} input, "
-                             f"got {input_bits}")
-    elif input_bits is not None:
-        raise ValueError(f"input_bits: applies to integer input only; {img.dtype} input is "
-                         f"taken as [0, 1], got input_bits={input_bits}")
-    if integer:
-        vmax = (1 << k) - 1
-        if sampled.min() < 0 or sampled.max() > vmax:
-            raise ValueError(f"rgb: integer values span [{sampled.min()}, {sampled.max()}], "
-                             f"beyond the {k}-bit input range")
-        scaled = sampled.astype(np.float64) * (top / vmax)
+    if k is not None:
+        scaled = sampled.astype(np.float64) * (top / ((1 << k) - 1))
     else:
         if sampled.min() < 0 or sampled.max() > 1:
             raise ValueError(f"rgb: float values span [{sampled.min()}, {sampled.max()}]; "

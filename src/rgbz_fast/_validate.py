@@ -6,7 +6,8 @@ what it got and what it expects. There is one check per kind of value:
 :func:`check_number` for every real parameter (bounds open or closed, None or
 infinity allowed on request), :func:`check_int` for every integer one,
 :func:`check_flag`, :func:`check_choice`, :func:`check_dtype`,
-:func:`check_bit_depth`, :func:`check_seed`, :func:`check_workers` (threads of
+:func:`check_bit_depth`, :func:`integer_bits` (the one rule for the range of integer
+images), :func:`check_seed`, :func:`check_workers` (threads of
 a C kernel) and :func:`check_processes` (worker processes), and
 :func:`check_image` for arrays. :func:`merge_params` is the one rule of every stage
 that takes parameters: a frozen dataclass (``params=``) plus keyword overrides of its
@@ -24,8 +25,8 @@ import numpy as np
 
 __all__ = ["check_image", "check_finite", "check_number", "check_int", "check_flag",
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
-           "check_processes", "thread_limit", "parse_shape", "merge_params", "FRAME_DTYPES",
-           "MAX_WORKERS"]
+           "check_processes", "thread_limit", "parse_shape", "merge_params", "integer_bits",
+           "FRAME_DTYPES", "FLOAT_DTYPES", "MAX_WORKERS", "TYPE_RANGE_BITS"]
 
 #: largest ``workers`` (threads of one kernel call); the result never depends on it.
 #: OpenMP aborts the process (libgomp: "Thread creation failed") when it cannot start the
@@ -40,6 +41,9 @@ _THREAD_HEADROOM = 512 * 2**20
 #: dtypes a raw frame may hold; kernels read and write them directly.
 FRAME_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
                 np.dtype(np.float64))
+#: dtypes of the stages that take linear or encoded light as floats in [0, 1]: an integer
+#: image there has no [0, 1] scale (200 would be clipped to 1), so it is refused
+FLOAT_DTYPES = (np.dtype(np.float16), np.dtype(np.float32), np.dtype(np.float64))
 
 
 def check_image(arr, name, ndim=None, dtypes=None):
@@ -63,6 +67,81 @@ def check_image(arr, name, ndim=None, dtypes=None):
                         f"{', '.join(str(d) for d in dtypes)}")
     check_finite(a, name)
     return a
+
+
+#: the widest integer type whose width says the range of an image's values: uint8 holds 8-bit
+#: values, uint16 16-bit ones (int8 7, int16 15, bool 1). NumPy makes int64 of any list of
+#: Python ints and int32/uint32 are what wide readers give, whatever the data's range, so a
+#: wider type says nothing about it (200 in an int64 is not 200 / (2**63 - 1) of full scale).
+TYPE_RANGE_BITS = 16
+
+
+def integer_bits(a, name, input_bits=None, *, what=None,
+                 instead="; or pass a uint8 or uint16 array"):
+    """The bits of the values of an integer image (None for a float one): the one rule.
+
+    Every entry that reads an integer image against a range it takes from the
+    image (``mosaic``, ``Scene``, the scene loaders, the evaluation) asks this
+    function. The range is ``input_bits`` when the caller states it (1 up to
+    the type's width), else the type's width when it is at most
+    :data:`TYPE_RANGE_BITS` (bool 1, uint8 8, int8 7, uint16 16, int16 15);
+    a wider type without ``input_bits`` is a TypeError, never the width of
+    the type. The values must lie in ``[0, 2**bits - 1]``.
+
+    Parameters
+    ----------
+    a : ndarray
+        The image (already checked by :func:`check_image`).
+    name : str
+        The parameter named in the errors about the values.
+    input_bits : int, optional
+        The bits the caller states; not for float images.
+    what : str, optional
+        How the error names the image (default ``"an int64 image (a list of
+        Python ints becomes int64)"``, with its dtype).
+    instead : str
+        The other way out the error gives, after ``input_bits``.
+
+    Examples
+    --------
+    >>> integer_bits(np.zeros(3, np.uint8), "rgb"), integer_bits(np.zeros(3), "rgb")
+    (8, None)
+    >>> integer_bits(np.array([200]), "rgb", input_bits=8)
+    8
+    >>> integer_bits(np.array([200]), "rgb")
+    Traceback (most recent call last):
+    ...
+    TypeError: rgb: an int64 image (a list of Python ints becomes int64) says nothing about the range of its values; pass input_bits= (the bits of the values, e.g. 8 or 12); or pass a uint8 or uint16 array
+    """
+    if input_bits is not None and (isinstance(input_bits, (bool, np.bool_))
+                                   or not isinstance(input_bits, numbers.Integral)):
+        raise TypeError(f"input_bits: expected an integer number of bits, got {input_bits!r}")
+    if a.dtype.kind not in "biu":
+        if input_bits is not None:
+            raise ValueError(f"input_bits: applies to integer input only; {a.dtype} input is "
+                             f"read as it is, got input_bits={input_bits}")
+        return None
+    width = 1 if a.dtype.kind == "b" else 8 * a.dtype.itemsize - (a.dtype.kind == "i")
+    lo, hi = (a.min(), a.max()) if a.dtype.kind != "b" and a.size else (0, 0)
+    if lo < 0:
+        raise ValueError(f"{name}: integer values span [{lo}, {hi}]; expected values >= 0")
+    if input_bits is None:
+        if width > TYPE_RANGE_BITS:
+            what = what or (f"{'an' if a.dtype.kind == 'i' else 'a'} {a.dtype} image"
+                            + (" (a list of Python ints becomes int64)"
+                               if a.dtype == np.int64 else ""))
+            raise TypeError(f"{name}: {what} says nothing about the range of its values; pass "
+                            f"input_bits= (the bits of the values, e.g. 8 or 12){instead}")
+        bits = width
+    else:
+        bits = int(input_bits)
+        if not 1 <= bits <= width:
+            raise ValueError(f"input_bits: expected 1..{width} bits for {a.dtype} input, "
+                             f"got {input_bits}")
+    if int(hi) > (1 << bits) - 1:
+        raise ValueError(f"{name}: integer values span [{lo}, {hi}], beyond the {bits}-bit "
+                         f"input range [0, {(1 << bits) - 1}]")
+    return bits
 
 
 def merge_params(cls, params=None, overrides=None, *, name="params", caller=None, what=None):

@@ -35,6 +35,9 @@ CLI_ROWS = [
     C("cli.simulate-tiny", ("simulate", "{d}/tiny.png"),
       "scene: frame 1x1 is smaller than one period"),
     C("cli.simulate-corrupt", ("simulate", "{d}/corrupt.png"), "path: cannot read"),
+    C("cli.simulate-int32", ("simulate", "{d}/int32.tif"),
+      "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
+      "their values; pass --input-bits"),
     C("cli.simulate-out-is-file", ("simulate", "{d}/rgb.png", "--out", "{d}/file.txt"), ""),
     C("cli.reconstruct-missing", ("reconstruct", "{d}/missing.npz"), "path: "),
     C("cli.reconstruct-rgb", ("reconstruct", "{d}/rgb.png"),

@@ -120,6 +120,13 @@ ROWS = [
     R("evaluation.write_reports-type", "write_reports(list of rows)",
       lambda f: ev.write_reports([], f / "reports_list"), TypeError,
       "results: expected Results"),
+    R("evaluation.image_frames-int64", "image_frames(int64 image)",
+      lambda f: ev.image_frames(np.full((8, 8, 3), 200), "mask1", ev.EvalConfig()), TypeError,
+      "img: an int64 image (a list of Python ints becomes int64) says nothing about the range"),
+    R("evaluation.evaluate-int32-tif", "evaluate(folder of an int32 TIFF)",
+      lambda f: ev.evaluate([rio.ImageSource("i", str(f / "int32.tif"))], progress=False,
+                            metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",)),
+      ValueError, "dataset: {d}/int32.tif holds int32 samples"),
 ]
 
 test_api_contract = api_tests(ROWS)

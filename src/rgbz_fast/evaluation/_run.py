@@ -15,7 +15,8 @@ from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import check_flag, check_processes, check_workers, merge_params
+from .._validate import (check_flag, check_image, check_processes, check_workers, integer_bits,
+                         merge_params)
 from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, sample_dataset,
                   to_rgbz)
 from ..reconstruction import reconstruct
@@ -51,6 +52,11 @@ def image_frames(img, pattern, config):
     model does it itself for noisy runs); a raw frame has been through a real
     lens already and is left alone.
     """
+    if not isinstance(img, RawFrame):
+        img = check_image(img, "img", ndim=3)
+        if img.shape[2] != 3:
+            raise ValueError(f"img: expected an RGB image (rows, cols, 3), got shape {img.shape}")
+    config = merge_params(EvalConfig, config, name="config")
     return _frames(img, get_pattern(pattern), config, {})
 
 
@@ -67,9 +73,8 @@ def _frames(img, pattern, config, memo):
     if "linear" not in memo:
         if not config.linearise:
             memo["linear"] = img
-        elif np.issubdtype(img.dtype, np.integer):
-            memo["linear"] = srgb_to_linear(img.astype(np.float64)
-                                            / float(np.iinfo(img.dtype).max))
+        elif (bits := integer_bits(img, "img")) is not None:
+            memo["linear"] = srgb_to_linear(img.astype(np.float64) / float((1 << bits) - 1))
         else:
             memo["linear"] = np.clip(img, 0, 1)
     lin = memo["linear"]

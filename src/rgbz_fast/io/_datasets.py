@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ._errors import ParameterError
-from ._files import read_file, read_image, rgb_image
+from ._files import read_file, read_image, rgb_image, sample_bits
 from ._raw import read_raw
 from ._suffixes import IMAGE_SUFFIXES, RAW_SUFFIXES
 
@@ -59,7 +59,9 @@ class ImageSource:
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
         else:
             img = read_image(self.location, "dataset", **limits)
-        return rgb_image(img, self.location, "dataset", grey=self.grey)
+        img = rgb_image(img, self.location, "dataset", grey=self.grey)
+        sample_bits(img, self.location, name="dataset")     # 8 or 16 bits (or floats)
+        return img
 
     def fingerprint(self):
         """SHA-256 of what the image is: the file's bytes (with the raw options and the

@@ -21,9 +21,11 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import integer_bits
 from ._errors import ParameterError, Setting
 
-__all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "read_limits", "check_size",
+__all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "sample_bits", "read_limits",
+           "check_size",
            "DEFAULT_MAX_PIXELS", "DEFAULT_MAX_BYTES", "MAX_PIXELS_ENV", "MAX_BYTES_ENV"]
 
 #: default largest image (rows x cols) a reader decodes: 200 megapixels
@@ -427,3 +429,21 @@ def rgb_image(img, path, name="path", *, grey=False):
         raise ParameterError(name, f"{path} holds an image of shape {img.shape}; expected "
                                    "RGB (rows, cols, 3), RGBA or grey")
     return np.ascontiguousarray(img)
+
+
+def sample_bits(img, path, input_bits=None, name="path"):
+    """The bits of the samples of an image read from ``path`` (None for floats): the library's
+    one rule for integer images (:func:`rgbz_fast._validate.integer_bits`), in the words of a
+    file. 8- and 16-bit files say their range; wider integer samples (a 32-bit TIFF) need
+    ``input_bits``, else a :class:`ParameterError` naming ``name`` and the file."""
+    try:
+        return integer_bits(img, name, input_bits)
+    except TypeError:
+        raise ParameterError(name, f"{path} holds {img.dtype} samples, a type that says nothing "
+                                   "about the range of their values; pass ",
+                             Setting("input_bits"), " (the bits the values use, e.g. 12) or "
+                             "convert the file to 8 or 16 bits") from None
+    except ValueError as exc:
+        if str(exc).startswith("input_bits:"):
+            raise
+        raise ParameterError(name, f"{path}: {str(exc).removeprefix(name + ': ')}") from None

@@ -15,8 +15,8 @@ import numpy as np
 
 from .. import _kernels
 from .._patterns import get_pattern
-from .._validate import (check_choice, check_dtype, check_flag, check_image, check_number,
-                         merge_params)
+from .._validate import (FLOAT_DTYPES, check_choice, check_dtype, check_flag, check_image,
+                         check_number, merge_params)
 from ..reconstruction import ReconstructParams, reconstruct
 from ..reconstruction import METHODS
 from ._demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES
@@ -305,7 +305,7 @@ def correct_colour(rgb, params=None, **overrides):
     -------
     ndarray, same shape and float dtype (a new array)
     """
-    a = check_image(rgb, "rgb", ndim=3)
+    a = check_image(rgb, "rgb", ndim=3, dtypes=FLOAT_DTYPES)
     if a.shape[2] != 3:
         raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {a.shape}")
     params = stage_params(ColourCorrection, params, overrides, caller="correct_colour()")
@@ -323,7 +323,7 @@ def srgb_oetf(linear):
 
     ``12.92 v`` for ``v <= 0.0031308``, else ``1.055 v^(1/2.4) - 0.055``.
     """
-    a = check_image(linear, "linear")
+    a = check_image(linear, "linear", dtypes=FLOAT_DTYPES)
     dt = a.dtype if a.dtype in (np.float32, np.float64) else np.dtype(np.float64)
     out = np.empty(a.shape, dt)
     flat_in, flat_out = a.reshape(-1), out.reshape(-1)
@@ -360,7 +360,7 @@ def srgb_encode(linear, bits=8):
     """
     if bits not in (8, 16) or isinstance(bits, bool):
         raise ValueError(f"bits: expected 8 or 16, got {bits!r}")
-    a = check_image(linear, "linear")
+    a = check_image(linear, "linear", dtypes=FLOAT_DTYPES)
     return _encode(a.astype(a.dtype if a.dtype in (np.float32, np.float64) else np.float64,
                             copy=False), bits)
 

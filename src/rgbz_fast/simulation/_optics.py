@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import check_number
+from .._validate import check_image, check_number
 
 __all__ = ["Optics", "apply_optics"]
 
@@ -301,7 +301,10 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
     """
     if not isinstance(optics, Optics):
         raise TypeError(f"optics: expected an Optics, got {type(optics).__name__}")
-    img = np.asarray(image)
+    img = check_image(image, "image", ndim=(2, 3))
+    if img.min() < 0:
+        raise ValueError(f"image: holds negative values (min {img.min()}); expected linear "
+                         "values >= 0")
     if img.ndim == 2:
         if wavelengths is None:
             raise ValueError("wavelengths: a single plane needs its wavelength in nm")
