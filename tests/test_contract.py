@@ -256,3 +256,120 @@ def test_integer_images_wider_than_16_bits_need_their_bits():
     assert rz.mosaic(u8.tolist(), "mask1", input_bits=8).data.max() > 0
     scene = sim.Scene(np.full((4, 4, 3), 4095), input_bits=12)
     assert scene.image.max() == 1.0 and scene.input_bits is None
+
+
+def _public_flags():
+    """(qualified name, parameter) of every parameter of the public API whose default is a
+    bool: functions, classes and their public methods, found from the signatures."""
+    import inspect
+
+    mods = [rz, rz.simulation, rz.reconstruction, rz.isp, rz.tof, rz.metrics, rz.evaluation,
+            rz.io]
+    found, seen = set(), set()
+    for m in mods:
+        for n in m.__all__:
+            obj = getattr(m, n)
+            if id(obj) in seen or not callable(obj):
+                continue
+            seen.add(id(obj))
+            targets = [(n, obj)]
+            if inspect.isclass(obj):
+                targets += [(f"{n}.{a}", getattr(obj, a)) for a, f in vars(obj).items()
+                            if not a.startswith("_") and inspect.isfunction(f)]
+            for qual, fn in targets:
+                try:
+                    params = inspect.signature(fn).parameters.values()
+                except (TypeError, ValueError):
+                    continue
+                found |= {(qual, p.name) for p in params if isinstance(p.default, bool)}
+    return found
+
+
+def test_every_flag_of_the_public_api_refuses_what_is_not_a_bool(files):
+    """One flag check (``_validate.check_flag``) for every boolean parameter: "no", 0 and
+    None are a TypeError naming the parameter (``simulate(noise="no")`` ran the noise model,
+    ``ssim(gaussian_weights="no")`` used the Gaussian window). The list of flags comes from
+    the public signatures, so a new flag without its check fails here."""
+    import pytest
+
+    from rgbz_fast import evaluation as ev
+    from rgbz_fast import io as rio
+    from rgbz_fast import isp, metrics
+
+    scene = sim.Scene(rgb(), depth=np.full((16, 16), 1.5))
+    frame = sim_frame()
+    res = ev.Results([{"image": "a", "pattern": "mask1", "method": "bi", "metric": "cfa_psnr",
+                       "value": 1.0}], ev.EvalConfig(methods=("bi",), metrics=("cfa_psnr",)))
+    ds = dict(metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",), processes=1)
+    raw = dict(shape=(4, 4), phase="RGGB", black_level=0, bit_depth_in=12)
+    calls = {
+        ("ColourSensor", "shot_noise"): lambda v: sim.ColourSensor(shot_noise=v),
+        ("ColourSensor", "quantise"): lambda v: sim.ColourSensor(quantise=v),
+        ("ToFSensor", "shot_noise"): lambda v: sim.ToFSensor(shot_noise=v),
+        ("ToFSensor", "quantise"): lambda v: sim.ToFSensor(quantise=v),
+        ("simulate", "noise"): lambda v: sim.simulate(scene, "mask1", noise=v),
+        ("simulate_colour", "noise"): lambda v: sim.simulate_colour(scene, noise=v),
+        ("simulate_tof", "noise"): lambda v: sim.simulate_tof(scene, "mask1", noise=v),
+        ("ColourISP.run", "reference"): lambda v: isp.ColourISP().run(frame, reference=v),
+        ("ColourISP.run", "return_stages"):
+            lambda v: isp.ColourISP().run(frame, return_stages=v),
+        ("ColourISP.render", "return_stages"):
+            lambda v: isp.ColourISP().render(frame.reference, return_stages=v),
+        ("ColourISP.run_pair", "return_stages"):
+            lambda v: isp.ColourISP().run_pair(frame, return_stages=v),
+        ("load_image", "grey"): lambda v: sim.load_image(files / "rgb.png", grey=v),
+        ("load_rgbd", "grey"): lambda v: sim.load_rgbd(files / "empty", grey=v),
+        ("DefectCorrection", "enabled"): lambda v: isp.DefectCorrection(enabled=v),
+        ("WhiteBalance", "clip"): lambda v: isp.WhiteBalance(clip=v),
+        ("correct_defects", "return_mask"):
+            lambda v: isp.correct_defects(frame.data, "mask1", return_mask=v),
+        ("ssim", "gaussian_weights"):
+            lambda v: metrics.ssim(f64((16, 16)), f64((16, 16)), gaussian_weights=v),
+        ("EvalConfig", "noise"): lambda v: ev.EvalConfig(noise=v),
+        ("EvalConfig", "linearise"): lambda v: ev.EvalConfig(linearise=v),
+        ("EvalConfig.key", "raw"): lambda v: ev.EvalConfig().key("mask1", "sg", raw=v),
+        ("evaluate", "progress"): lambda v: ev.evaluate(files / "ds", progress=v, **ds),
+        ("evaluate", "skip_bad"):
+            lambda v: ev.evaluate(files / "ds", progress=False, skip_bad=v, **ds),
+        ("write_reports", "plots"): lambda v: ev.write_reports(res, files / "rep", plots=v),
+        ("train_filters", "noise"): lambda v: ev.train_filters(files / "ds", "mask1", noise=v),
+        ("train_filters", "linearise"):
+            lambda v: ev.train_filters(files / "ds", "mask1", linearise=v),
+        ("train_filters", "progress"):
+            lambda v: ev.train_filters(files / "ds", "mask1", progress=v),
+        ("read_raw", "crop_even"):
+            lambda v: rio.read_raw(files / "bayer.raw", crop_even=v, **raw),
+        ("list_raw_files", "recursive"): lambda v: rio.list_raw_files(files.d, recursive=v),
+        ("ImageSource", "raw"): lambda v: rio.ImageSource("a", "a.png", raw=v),
+        ("ImageSource", "grey"): lambda v: rio.ImageSource("a", "a.png", grey=v),
+        ("folder_dataset", "grey"): lambda v: rio.folder_dataset(files / "ds", grey=v),
+        ("rgb_image", "grey"): lambda v: rio.rgb_image(u8img(), "x.png", grey=v),
+    }
+    assert set(calls) == _public_flags()
+    for (qual, param), call in calls.items():
+        for bad in ("no", 0, None, np.array([True])):
+            with pytest.raises(TypeError, match=rf"^(\w+\.)?{param}: expected True or False"):
+                call(bad)
+
+
+def test_sequences_of_names_refuse_repeated_entries():
+    """A configuration naming an entry twice (two spellings of one pattern included) would
+    run it twice and count it twice in every mean: refused, naming the field."""
+    import re
+
+    import pytest
+
+    from rgbz_fast import evaluation as ev
+
+    for kw, twice in ((dict(patterns=("mask1", "mask1")), "'mask1' is given twice"),
+                      (dict(patterns="mask1,mask1_grbg"), "'mask1_grbg' is given twice "
+                                                          "(as 'mask1')"),
+                      (dict(methods=("sg", "bi", "sg")), "'sg' is given twice"),
+                      (dict(metrics="cpsnr,cpsnr"), "'cpsnr' is given twice")):
+        field = next(iter(kw))
+        with pytest.raises(ValueError, match="^" + re.escape(f"{field}: {twice}; name each")):
+            ev.EvalConfig(**kw)
+    with pytest.raises(ValueError, match=r"^sections: 'noise' is given twice"):
+        ev.evaluate_depth(sections=("noise", "noise"))
+    with pytest.raises(TypeError, match=r"^methods: expected names \(strings\), got 5"):
+        ev.EvalConfig(methods=("sg", 5))

@@ -6,7 +6,8 @@ what it got and what it expects. There is one check per kind of value:
 :func:`check_number` for every real parameter (bounds open or closed, None or
 infinity allowed on request), :func:`check_int` for every integer one,
 :func:`check_flag`, :func:`check_choice`, :func:`check_dtype`,
-:func:`check_bit_depth`, :func:`integer_bits` (the one rule for the range of integer
+:func:`check_bit_depth`, :func:`check_entries` (a sequence of names, each once),
+:func:`integer_bits` (the one rule for the range of integer
 images), :func:`check_seed`, :func:`check_workers` (threads of
 a C kernel) and :func:`check_processes` (worker processes), and
 :func:`check_image` for arrays. :func:`merge_params` is the one rule of every stage
@@ -26,7 +27,7 @@ import numpy as np
 __all__ = ["check_image", "check_finite", "check_number", "check_int", "check_flag",
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
            "check_processes", "thread_limit", "parse_shape", "merge_params", "integer_bits",
-           "FRAME_DTYPES", "FLOAT_DTYPES", "MAX_WORKERS", "TYPE_RANGE_BITS"]
+           "check_entries", "FRAME_DTYPES", "FLOAT_DTYPES", "MAX_WORKERS", "TYPE_RANGE_BITS"]
 
 #: largest ``workers`` (threads of one kernel call); the result never depends on it.
 #: OpenMP aborts the process (libgomp: "Thread creation failed") when it cannot start the
@@ -340,6 +341,41 @@ def check_flag(value, name):
     if not isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name}: expected True or False, got {value!r}")
     return bool(value)
+
+
+def check_entries(value, name, key=None, strings=True):
+    """A sequence of names (a tuple of strings, or one comma-separated string) as a tuple: at
+    least one, each a string (unless ``strings`` is False: ``key`` checks them), none twice.
+    ``key(entry)`` says when two spellings name the same thing (``"mask1"`` and
+    ``"mask1_grbg"``): a repeated entry would be run and reported twice.
+
+    Examples
+    --------
+    >>> check_entries("sg, bi", "methods")
+    ('sg', 'bi')
+    >>> check_entries(("sg", "sg"), "methods")
+    Traceback (most recent call last):
+    ...
+    ValueError: methods: 'sg' is given twice; name each entry once
+    """
+    if isinstance(value, str):
+        value = tuple(s.strip() for s in value.split(",") if s.strip())
+    elif isinstance(value, (bytes, Mapping)) or not hasattr(value, "__iter__"):
+        raise TypeError(f"{name}: expected a sequence of names or a comma-separated string, "
+                        f"got {type(value).__name__}")
+    value = tuple(value)
+    if not value:
+        raise ValueError(f"{name}: expected at least one entry, got none")
+    seen = {}
+    for v in value:
+        if strings and not isinstance(v, str):
+            raise TypeError(f"{name}: expected names (strings), got {v!r}")
+        k = v if key is None else key(v)
+        if k in seen:
+            same = "" if seen[k] == v else f" (as {seen[k]!r})"
+            raise ValueError(f"{name}: {v!r} is given twice{same}; name each entry once")
+        seen[k] = v
+    return value
 
 
 def check_choice(value, choices, name):

@@ -32,6 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .._patterns import get_pattern
+from .._validate import check_entries
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate_tof
 from ..tof import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
                    FLAG_SATURATED, ToFISP, calibrate)
@@ -271,8 +273,8 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     isp = ToFISP() if isp is None else isp
     if not isinstance(isp, ToFISP):
         raise TypeError(f"isp: expected a ToFISP, got {type(isp).__name__}")
-    if isinstance(sections, str):
-        sections = tuple(s.strip() for s in sections.split(",") if s.strip())
+    sections = check_entries(sections, "sections")
+    patterns = check_entries(patterns, "patterns", key=get_pattern, strings=False)
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")

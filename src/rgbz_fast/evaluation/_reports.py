@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
+from .._validate import check_flag
 from ..io import atomic_write
 from ..reconstruction import reconstruct
 from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS
@@ -37,6 +38,7 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         nothing is written, not even the folder), or ``table_image`` is not
         one of its images.
     """
+    plots = check_flag(plots, "plots")
     if not isinstance(results, Results):
         raise TypeError(f"results: expected Results, got {type(results).__name__}")
     if not results.rows:

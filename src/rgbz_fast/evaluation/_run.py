@@ -331,6 +331,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
     cache_dir = str(cache_dir) if cache_dir is not None else None
     skip_bad = check_flag(skip_bad, "skip_bad")
+    progress = check_flag(progress, "progress")
     tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]
     from tqdm.auto import tqdm
     bar = tqdm(total=len(tasks), desc="evaluate", unit="img", disable=not progress)

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import check_flag
 from ._errors import ParameterError
 from ._files import read_file, read_image, rgb_image, sample_bits
 from ._raw import read_raw
@@ -45,6 +46,14 @@ class ImageSource:
     grey: bool = False
     max_pixels: int | None = None
     max_bytes: int | None = None
+
+    def __post_init__(self):
+        for name in ("name", "location"):
+            if not isinstance(getattr(self, name), str):
+                raise TypeError(f"ImageSource.{name}: expected a string, got "
+                                f"{type(getattr(self, name)).__name__}")
+        for name in ("raw", "grey"):
+            check_flag(getattr(self, name), f"ImageSource.{name}")
 
     @property
     def is_raw(self):
@@ -105,6 +114,7 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
         a positive integer, or two files have the same name stem
         (``a.png`` and ``a.tif``: their results would be one image's).
     """
+    grey = check_flag(grey, "grey")
     if limit is not None and (isinstance(limit, bool) or not isinstance(limit, (int, np.integer))
                               or limit < 1):
         raise ParameterError("limit", f"expected a positive number of images, got {limit!r}")

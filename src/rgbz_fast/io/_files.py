@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._validate import integer_bits
+from .._validate import check_flag, integer_bits
 from ._errors import ParameterError, Setting
 
 __all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "sample_bits", "read_limits",
@@ -414,6 +414,7 @@ def rgb_image(img, path, name="path", *, grey=False):
     ...
     rgbz_fast.io.ParameterError: path: g.png is a grey image (2x3); a colour sensor needs colour: ...
     """
+    grey = check_flag(grey, "grey")
     img = np.asarray(img)
     if img.ndim == 3 and img.shape[2] in (2, 4):
         img = img[..., :-1]                           # alpha

@@ -28,7 +28,7 @@ import numpy as np
 
 from .._frame import RawFrame, _Adopt
 from .._patterns import BAYER_PHASES, bayer
-from .._validate import check_bit_depth, check_dtype
+from .._validate import check_bit_depth, check_dtype, check_flag
 from ._errors import ParameterError, Setting
 from ._files import check_size, read_file, read_image, read_limits
 from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
@@ -167,6 +167,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     if out_dtype == np.uint8 and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     k = _check_downsample(downsample)
+    crop_even = check_flag(crop_even, "crop_even")
     if bit_depth_in is not None:
         bit_depth_in = check_bit_depth(bit_depth_in, "bit_depth_in")
     if byteorder not in ("<", ">"):
@@ -294,6 +295,7 @@ def list_raw_files(folder, *, recursive=False, extensions=None):
     list of pathlib.Path
         Hidden files (name starting with ".") are skipped.
     """
+    recursive = check_flag(recursive, "recursive")
     folder = Path(os.fspath(folder))
     if not folder.is_dir():
         raise NotADirectoryError(f"folder: not a directory: {folder}")

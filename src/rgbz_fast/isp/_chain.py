@@ -35,7 +35,7 @@ import numpy as np
 
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
-from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
+from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
                          check_number, merge_params)
 from ._defects import DefectCorrection, correct_defects
 from ._demosaic import demosaic
@@ -216,8 +216,9 @@ class ColourISP:
             ``"output"`` (the returned image), ``"seconds"`` (time per
             stage), ``"pattern"``, ``"black_level"``, ``"white_level"``.
         """
+        return_stages = check_flag(return_stages, "return_stages")
         data, pat, bd, black, white = self._inputs(frame, pattern, bit_depth, black_level,
-                                                   reference)
+                                                   check_flag(reference, "reference"))
         seconds = {}
         t0 = time.perf_counter()
         fixed, mask = correct_defects(data, pat, self.defects, white_level=white,
@@ -276,6 +277,7 @@ class ColourISP:
         ((8, 8, 3), dtype('uint8'), 187, [1.0, 1.0, 1.0])
         """
         data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        return_stages = check_flag(return_stages, "return_stages")
         pattern = get_pattern(phase)
         if pattern.has_z or pattern.bayer_phase is None:
             raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
@@ -341,6 +343,7 @@ class ColourISP:
         if not isinstance(frame, RawFrame):
             raise TypeError(f"frame: expected a RawFrame with a reference CFA, got "
                             f"{type(frame).__name__}")
+        return_stages = check_flag(return_stages, "return_stages")
         ref, ref_st = self.run(frame, reference=True, workers=workers, return_stages=True)
         test, test_st = self.run(frame, gains=ref_st["gains"], workers=workers,
                                  return_stages=True)

@@ -313,6 +313,7 @@ def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
     """
     data, pattern = _prepare_cfa(cfa, pattern)
     params = stage_params(DefectCorrection, params, overrides, caller="correct_defects()")
+    return_mask = check_flag(return_mask, "return_mask")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
     if known is not None:
         kn = np.asarray(known)

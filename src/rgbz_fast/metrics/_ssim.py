@@ -7,7 +7,7 @@ import numbers
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_int, check_number, check_workers
+from .._validate import check_flag, check_int, check_number, check_workers
 from ._common import (_check_crop, _check_integer_range, _check_pair, _check_ssim_data_range,
                       _crop_hw, _kernel_pair)
 
@@ -194,7 +194,7 @@ def ssim(reference, test, *, data_range=255, crop=0, channel_axis=-1, gaussian_w
     ref, tst = _check_pair(reference, test, (2, 3))
     peak = _check_ssim_data_range(data_range)
     win_size, sigma = _check_ssim_window(win_size, sigma)
-    gaussian_weights = bool(gaussian_weights)
+    gaussian_weights = check_flag(gaussian_weights, "gaussian_weights")
     _check_integer_range((ref, tst), ("reference", "test"), peak)
     threads = check_workers(workers)
     x, y = _channels_first(ref, tst, channel_axis)

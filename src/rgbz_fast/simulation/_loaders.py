@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import check_flag
 from ..io._files import (check_size, read_file, read_image, read_limits, rgb_image,
                          sample_bits)
 from ..io._suffixes import IMAGE_SUFFIXES as _IMAGE_SUFFIXES
@@ -66,6 +67,7 @@ def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflec
         (:func:`rgbz_fast.io.read_limits`).
     """
     p = _require_file(path, "path")
+    check_flag(grey, "grey")
     img = rgb_image(read_image(p, "path", max_pixels=max_pixels, max_bytes=max_bytes), p,
                     grey=grey)
     sample_bits(img, p, input_bits)
@@ -208,6 +210,7 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
         If ``dmin.txt`` is not a number, ``disp1.png`` is not a single-band
         image of the size of ``rgb.png``, or no pixel has a disparity.
     """
+    check_flag(grey, "grey")
     d = Path(folder)
     if not d.is_dir():
         raise FileNotFoundError(f"folder: {d} is not a folder")
@@ -257,7 +260,7 @@ def load_scene(path, **kwargs):
     range, so it is refused there).
     """
     p = Path(path)
-    grey = kwargs.pop("grey", False)
+    grey = check_flag(kwargs.pop("grey", False), "grey")
     if p.is_dir():
         if (p / "disp1.png").exists() or (p / "rgb.png").exists():
             if kwargs.get("input_bits") is not None:

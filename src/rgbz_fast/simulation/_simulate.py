@@ -97,7 +97,7 @@ from .._deps import import_colour
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_seed
+from .._validate import check_flag, check_seed
 from ._loaders import load_scene
 from ._noise import (STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
                      STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, expose)
@@ -270,7 +270,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
     rate = _colour_signal_rate(scene, sensor, colour_map, optics)
     exposure = _auto_exposure(rate, sensor) if sensor.exposure == "auto" else sensor.exposure
     dn, saturated = expose(rate * exposure, sensor.dark_current * exposure, sensor,
-                           noise=bool(noise), seed=seed,
+                           noise=check_flag(noise, "noise"), seed=seed,
                            temporal_stream=STREAM_COLOUR_TEMPORAL,
                            fpn_stream=STREAM_COLOUR_FPN)
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
@@ -445,8 +445,9 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         valid = valid & ~beyond
 
     suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
+    noise = check_flag(noise, "noise")
     taps, sat = expose(mean, sensor._dark_electrons, sensor,
-                       noise=bool(noise), seed=seed, temporal_stream=STREAM_TOF_TEMPORAL,
+                       noise=noise, seed=seed, temporal_stream=STREAM_TOF_TEMPORAL,
                        fpn_stream=STREAM_TOF_FPN, fpn_shape=mean.shape[1:],
                        suppress=suppress)
     meta = {"noise": bool(noise), "seed": seed, "pattern": pattern.name,
@@ -530,6 +531,7 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
                          "reference Bayer CFA to simulate")
 
     optics = _check_optics(optics)
+    noise = check_flag(noise, "noise")
     ref = simulate_colour(scene, pattern, colour_sensor, seed=seed, noise=noise, optics=optics)
     zmask = pattern.z_mask(scene.shape)
     data = ref.data.copy()
