@@ -19,6 +19,13 @@ ROWS = [
     # -- demosaic --------------------------------------------------------------------------
     R("isp.demosaic-ndim", "demosaic(3-D)", lambda f: demosaic(np.zeros((4, 4, 3))), ValueError,
       "cfa: expected a 2-D array"),
+    R("isp.demosaic-near-max", "demosaic(float64 maximum)",
+      lambda f: demosaic(np.full((4, 4), np.finfo(np.float64).max)), ValueError,
+      "cfa: values up to 1.79769e+308 in magnitude; the demosaic's filters overflow float64"),
+    R("isp.demosaic-float32-out", "demosaic(1e300, dtype=float32)",
+      lambda f: demosaic(np.full((4, 4), 1e300), dtype=np.float32), ValueError,
+      "cfa: values up to 1e+300 in magnitude; the demosaic's filters overflow float32 beyond "
+      "1.06338e+37, pass dtype=float64"),
     R("isp.demosaic-small", "demosaic(1x5)", lambda f: demosaic(np.zeros((1, 5))), ValueError,
       "cfa: expected at least one 2x2 Bayer period"),
     R("isp.demosaic-nan", "demosaic(NaN)", lambda f: demosaic(with_value(np.nan)), ValueError,
@@ -105,6 +112,10 @@ ROWS = [
     R("isp.detect_defects-white", "detect_defects(white_level=0)",
       lambda f: isp.detect_defects(u16(), "mask1", white_level=0), ValueError,
       "white_level: expected a finite number > 0"),
+    R("isp.white_balance-overflow", "white_balance(gains=(1e300, 1, 1), clip=False)",
+      lambda f: isp.white_balance(f64(value=1e10), "RGGB", gains=(1e300, 1, 1), clip=False),
+      ValueError, "cfa: the balanced values (v - black_level) / (white_level - black_level) * "
+                  "gains overflow float32"),
     R("isp.white_balance-z", "white_balance(cfa, 'mask1')",
       lambda f: isp.white_balance(u16(), "mask1"), ValueError,
       "phase: the white balance needs a complete Bayer CFA"),

@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -219,18 +220,39 @@ def grey_world_gains(cfa, phase="GRBG", *, black_level=0.0, white_level=2047):
     black, white = _black_white(black_level, white_level)
     tile = pattern.bayer_tile()                      # 2x2
     sums, counts = np.zeros(3), np.zeros(3)
-    for py in range(2):
-        for px in range(2):
-            sub = data[py::2, px::2]
-            ok = sub < white                             # clipped pixels carry no colour
-            sums[tile[py, px]] += np.sum(sub[ok], dtype=np.float64) - black * ok.sum()
-            counts[tile[py, px]] += ok.sum()
+    with np.errstate(over="ignore", invalid="ignore"):
+        for py in range(2):
+            for px in range(2):
+                sub = data[py::2, px::2]
+                ok = sub < white                             # clipped pixels carry no colour
+                sums[tile[py, px]] += np.sum(sub[ok], dtype=np.float64) - black * ok.sum()
+                counts[tile[py, px]] += ok.sum()
     means = np.divide(sums, counts, out=np.zeros(3), where=counts > 0)
+    if not np.all(np.isfinite(sums)):
+        means = _scaled_means(data, tile, white, black)
     gains = np.ones(3)
     if means[1] > 0:
         good = means > 0
-        gains[good] = means[1] / means[good]
+        with np.errstate(over="ignore"):
+            ratio = means[1] / means[good]
+        # a colour so far below green that the ratio overflows has no signal: gain 1
+        gains[good] = np.where(np.isfinite(ratio), ratio, 1.0)
     return gains
+
+
+def _scaled_means(data, tile, white, black):
+    """The black-subtracted mean of each colour below ``white``, for values whose sums
+    overflow (near the largest float): summed after a scaling by a power of two (exact)."""
+    means = np.zeros(3)
+    for c in range(3):
+        vals = [data[py::2, px::2] for py in range(2) for px in range(2) if tile[py, px] == c]
+        vals = np.concatenate([v[v < white].astype(np.float64).ravel() for v in vals])
+        if vals.size:
+            exp = math.frexp(max(float(np.max(np.abs(vals))), black))[1]
+            with np.errstate(over="ignore"):
+                means[c] = np.ldexp(float(np.mean(np.ldexp(vals, -exp)))
+                                    - math.ldexp(black, -exp), exp)
+    return means
 
 
 def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_level=2047,
@@ -278,16 +300,46 @@ def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_leve
         g = grey_world_gains(data, pattern, black_level=black, white_level=white)
     else:
         g = np.ones(3)
-    scale = (g / (white - black)).astype(dt)
-    out = data.astype(dt)
-    out -= dt.type(black)
     tile = pattern.bayer_tile()                      # 2x2
-    for py in range(2):
-        for px in range(2):
-            out[py::2, px::2] *= scale[tile[py, px]]
+    with np.errstate(over="ignore", under="ignore"):
+        scale = (g / (white - black)).astype(dt)
+    if _fits(data, dt, black, white, scale):
+        out = data.astype(dt)
+        out -= dt.type(black)
+        for py in range(2):
+            for px in range(2):
+                out[py::2, px::2] *= scale[tile[py, px]]
+    else:
+        # levels or values beyond the output type (near its largest float): in float64, in an
+        # order that never makes NaN -- (v - black) / (white - black) is finite or +-inf
+        out = data.astype(np.float64) - black
+        with np.errstate(over="ignore"):
+            out /= white - black
+            for py in range(2):
+                for px in range(2):
+                    out[py::2, px::2] *= g[tile[py, px]]
     if params.clip:
         np.clip(out, 0, 1, out=out)
-    return out, g
+    elif out.dtype != dt or out.dtype.kind == "f" and not np.all(np.isfinite(out)):
+        with np.errstate(over="ignore"):
+            out = out.astype(dt)
+        if not np.all(np.isfinite(out)):
+            raise ValueError(f"cfa: the balanced values (v - black_level) / (white_level - "
+                             f"black_level) * gains overflow {dt} (levels {black:g}, {white:g}, "
+                             f"gains {tuple(float(v) for v in g)}); clip them (clip=True) or "
+                             "pass the levels of the data")
+    return out.astype(dt, copy=False), g
+
+
+def _fits(data, dt, black, white, scale):
+    """Whether :func:`white_balance` may compute in ``dt`` without an inf or a NaN: the
+    levels and the three scales are normal numbers of ``dt``, and the data fits it."""
+    info = np.finfo(dt)
+    if not (white <= info.max and np.all(scale >= info.tiny) and np.all(scale <= info.max)):
+        return False
+    if data.dtype.kind == "f" and data.dtype.itemsize > dt.itemsize:
+        return bool(max(-data.min(), data.max()) <= info.max / 2)
+    return True
 
 
 def correct_colour(rgb, params=None, **overrides):

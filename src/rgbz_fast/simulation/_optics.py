@@ -305,6 +305,9 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
     if img.min() < 0:
         raise ValueError(f"image: holds negative values (min {img.min()}); expected linear "
                          "values >= 0")
+    if img.max() > 1e300:
+        raise ValueError(f"image: values up to {img.max():g}; the convolution overflows "
+                         "beyond 1e300 (linear values, 1 = white)")
     if img.ndim == 2:
         if wavelengths is None:
             raise ValueError("wavelengths: a single plane needs its wavelength in nm")

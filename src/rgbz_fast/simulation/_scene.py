@@ -48,6 +48,10 @@ from .._validate import FLOAT_DTYPES, check_choice, check_image, check_number, i
 __all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
            "CAVE_WAVELENGTHS"]
 
+#: the brightest scene value (relative radiance, 1 = white): the sensor models multiply it
+#: by a photon flux, an area and an exposure, which must stay finite doubles
+SCENE_MAX = 1e300
+
 #: Wavelengths (nm) of a 31-band CAVE cube: 400, 410, ..., 700.
 CAVE_WAVELENGTHS = tuple(float(400 + 10 * k) for k in range(31))
 
@@ -144,7 +148,13 @@ def disparity_to_depth(disparity, focal_px, baseline_m, *, offset=0.0, invalid=0
         raise ValueError(f"disparity: {bad} known pixel(s) have disparity + offset <= 0 "
                          f"(offset {off}); depth would be infinite or negative")
     depth = np.zeros_like(total)
-    depth[valid] = f * b / total[valid]
+    with np.errstate(over="ignore"):
+        depth[valid] = f * b / total[valid]
+    if not np.all(np.isfinite(depth[valid])):
+        raise ValueError(f"disparity: a known disparity + offset as small as "
+                         f"{total[valid].min():g} puts a point at {f:g} * {b:g} / "
+                         f"{total[valid].min():g}, beyond the largest double; expected "
+                         "disparities in pixels")
     return _fill_nearest(depth, valid), valid
 
 
@@ -293,6 +303,9 @@ class Scene:
         if img.min() < 0:
             raise ValueError(f"image: holds negative values (min {img.min()}); scene radiance "
                              "and reflectance are >= 0")
+        if img.max() > SCENE_MAX:
+            raise ValueError(f"image: values up to {img.max():g}; a relative radiance beyond "
+                             f"{SCENE_MAX:g} (white = 1) overflows the sensor models")
         object.__setattr__(self, "image", _readonly(img))
         object.__setattr__(self, "input_bits", None)          # the image is float now
         object.__setattr__(self, "wavelengths", wl)

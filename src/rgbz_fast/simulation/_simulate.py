@@ -207,7 +207,17 @@ def _auto_exposure(rate, sensor):
         raise ValueError(f"scene: the {sensor.ae_percentile:g}th percentile of the signal is 0 "
                          "(a black scene); auto-exposure needs light -- set "
                          "ColourSensor(exposure=...) instead")
-    return sensor.ae_target * sensor.usable_electrons() / level
+    exposure = sensor.ae_target * sensor.usable_electrons() / level
+    if not exposure <= _MAX_EXPOSURE:
+        raise ValueError(f"scene: too dark for auto-exposure, which would need {exposure:g} s "
+                         f"(more than {_MAX_EXPOSURE:g} s); brighten the scene or set "
+                         "ColourSensor(exposure=...)")
+    return exposure
+
+
+#: the longest exposure, in seconds: what ColourSensor(exposure=...) accepts, and what
+#: auto-exposure may choose (a longer one turns the dark current alone into ~1e50 electrons)
+_MAX_EXPOSURE = 3600.0
 
 
 def _check_optics(optics):
