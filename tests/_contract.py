@@ -192,6 +192,13 @@ class Files:
         (d / "raw_options.json").write_text('{"bayer16.png": {"phase": "GBRG"}, "*": 5}')
         # integer samples wider than 16 bits: their type says nothing about their range
         iio.imwrite(d / "int32.tif", np.full((16, 16, 3), 200, np.int32))
+        # samples that are no RGB or grey, and a damaged 16-bit PGM
+        from PIL import Image
+
+        Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("CMYK").save(d / "cmyk.jpg")
+        Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("CMYK").save(d / "cmyk.tif")
+        Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("LAB").save(d / "lab.tif")
+        (d / "short.pgm").write_bytes(b"P5\n16 16\n65535\n" + bytes(100))
 
     def __truediv__(self, name):
         return self.d / name

@@ -38,6 +38,10 @@ CLI_ROWS = [
     C("cli.simulate-int32", ("simulate", "{d}/int32.tif"),
       "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
       "their values; pass --input-bits"),
+    C("cli.simulate-cmyk", ("simulate", "{d}/cmyk.jpg"),
+      "path: cannot read {d}/cmyk.jpg as an image (it holds CMYK samples"),
+    C("cli.evaluate-cmyk", ("evaluate", "--dataset", "{d}/cmyk.tif"),
+      "dataset: cannot read {d}/cmyk.tif as an image (it holds CMYK (separated) samples"),
     C("cli.simulate-out-is-file", ("simulate", "{d}/rgb.png", "--out", "{d}/file.txt"), ""),
     C("cli.reconstruct-missing", ("reconstruct", "{d}/missing.npz"), "path: "),
     C("cli.reconstruct-rgb", ("reconstruct", "{d}/rgb.png"),

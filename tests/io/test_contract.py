@@ -230,6 +230,20 @@ ROWS = [
     R("io.read_file-max_bytes", "read_file(ok.npz, max_bytes=10)",
       lambda f: rio.read_file(f / "ok.npz", max_bytes=10), ValueError,
       "path: {d}/ok.npz is "),
+    R("io.read_image-cmyk-jpeg", "read_image(CMYK JPEG)",
+      lambda f: rio.read_image(f / "cmyk.jpg"), ValueError,
+      "path: cannot read {d}/cmyk.jpg as an image (it holds CMYK samples, not RGB or grey; "
+      "convert it to RGB first"),
+    R("io.read_image-cmyk-tiff", "read_image(CMYK TIFF)",
+      lambda f: rio.read_image(f / "cmyk.tif"), ValueError,
+      "path: cannot read {d}/cmyk.tif as an image (it holds CMYK (separated) samples"),
+    R("io.read_image-lab-tiff", "read_image(CIELAB TIFF)",
+      lambda f: rio.read_image(f / "lab.tif"), ValueError,
+      "path: cannot read {d}/lab.tif as an image (it holds CIELAB samples"),
+    R("io.read_image-pgm-truncated", "read_image(truncated 16-bit PGM)",
+      lambda f: rio.read_image(f / "short.pgm"), ValueError,
+      "path: cannot read {d}/short.pgm as an image (truncated: 100 bytes of samples, 512 "
+      "needed)"),
     R("io.read_image-max_pixels", "read_image(16x16 PNG, max_pixels=10)",
       lambda f: rio.read_image(f / "rgb.png", max_pixels=10), ValueError,
       "path: {d}/rgb.png declares a 16x16x3 image (0.0 megapixels), more than the limit of 10 "

@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from .._validate import check_flag, integer_bits
+from ._decode import PNM_MAGIC, decode_pillow, decode_pnm, decode_tiff
 from ._errors import ParameterError, Setting
 
 __all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "sample_bits", "read_limits",
@@ -310,12 +311,14 @@ def _decode_default(data, suffix):
             raise ValueError("a 16-bit grey + alpha PNG cannot be read at full precision; "
                              "save it without alpha")
     if data[:4] in _TIFF_MAGIC:
-        import tifffile
+        return decode_tiff(data)
+    if data[:2] in PNM_MAGIC:
+        return decode_pnm(data)
+    if png is not None:
+        import imageio.v3 as iio
 
-        return tifffile.imread(io.BytesIO(data), key=0)     # the first page only
-    import imageio.v3 as iio
-
-    return iio.imread(data, extension=suffix or None)
+        return iio.imread(data, extension=".png")
+    return decode_pillow(data)
 
 
 def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=None):
@@ -329,9 +332,12 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
     name : str
         The parameter named in the error message.
     decode : callable, optional
-        ``decode(data: bytes) -> array_like``; default: 16-bit RGB(A) PNGs at
-        full precision, the first page of a TIFF (tifffile), anything else
-        through imageio with the file's extension as the format hint.
+        ``decode(data: bytes) -> array_like``; default: by the format the
+        bytes start with, whatever the extension: 16-bit RGB(A) PNGs at full
+        precision, the first page of a TIFF (palette colours, MINISWHITE
+        inverted, planar RGB interleaved), PGM/PPM at 8 or 16 bits, other
+        formats through Pillow (first frame, palette colours); CMYK, CIELAB
+        and YCbCr samples are refused (:mod:`rgbz_fast.io._decode`).
     max_pixels, max_bytes : int, optional
         Size limits (see :func:`read_limits`): the file's size, the image
         size its header declares (checked before decoding) and the decoded
