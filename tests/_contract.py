@@ -199,6 +199,11 @@ class Files:
         Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("CMYK").save(d / "cmyk.tif")
         Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("LAB").save(d / "lab.tif")
         (d / "short.pgm").write_bytes(b"P5\n16 16\n65535\n" + bytes(100))
+        # inputs named like the outputs of other inputs
+        (d / "collide").mkdir()
+        iio.imwrite(d / "collide" / "a.png", np.zeros((16, 16, 3), np.uint8))
+        (d / "collide" / "a_mask1.npz").write_bytes((d / "ok.npz").read_bytes())
+        (d / "collide" / "a_mask1_sg_cfa.tif").write_bytes((d / "plain.tif").read_bytes())
 
     def __truediv__(self, name):
         return self.d / name
@@ -271,8 +276,8 @@ def _argv(row, d):
 def cli_prefix(command):
     """Subcommands report as `rgbz-fast CMD: error:` (their unknown arguments too); the
     top-level parser (an unknown command) as `rgbz-fast: error:`."""
-    if command in ("simulate", "reconstruct", "depth", "evaluate", "calibrate", "evaluate-depth",
-                   "bench", "opcount", "tradeoff", "config"):
+    if command in ("simulate", "reconstruct", "depth", "evaluate", "train", "calibrate",
+                   "evaluate-depth", "bench", "opcount", "tradeoff", "config"):
         return f"rgbz-fast {command}: error: "
     return "rgbz-fast: error: "
 

@@ -42,6 +42,23 @@ CLI_ROWS = [
       "path: cannot read {d}/cmyk.jpg as an image (it holds CMYK samples"),
     C("cli.evaluate-cmyk", ("evaluate", "--dataset", "{d}/cmyk.tif"),
       "dataset: cannot read {d}/cmyk.tif as an image (it holds CMYK (separated) samples"),
+    C("cli.simulate-over-input", ("simulate", "{d}/collide/a.png", "{d}/collide/a_mask1.npz",
+                                  "--out", "{d}/collide"),
+      "--out: writing {d}/collide/a_mask1.npz (from {d}/collide/a.png) would overwrite the "
+      "input {d}/collide/a_mask1.npz"),
+    C("cli.reconstruct-over-input", ("reconstruct", "{d}/collide/a_mask1.npz",
+                                     "{d}/collide/a_mask1_sg_cfa.tif", "--out", "{d}/collide"),
+      "--out: writing {d}/collide/a_mask1_sg_cfa.tif (from {d}/collide/a_mask1.npz) would "
+      "overwrite the input {d}/collide/a_mask1_sg_cfa.tif"),
+    C("cli.evaluate-out-in-dataset", ("evaluate", "--dataset", "{d}/ds", "--out", "{d}/ds"),
+      "--out: bars_cfa_psnr.png (from the reports) would be written into {d}/ds, a folder read "
+      "as input"),
+    C("cli.calibrate-over-frame", ("calibrate", "{d}/tof.npz", "--distances", "1.5", "--out",
+                                   "{d}/tof.npz"),
+      "--out: writing {d}/tof.npz (from the calibration) would overwrite the input "
+      "{d}/tof.npz"),
+    C("cli.train-into-dataset", ("train", "--dataset", "{d}/ds", "--out", "{d}/ds/f.png"),
+      "--out: f.png (from the filters) would be written into {d}/ds, a folder read as input"),
     C("cli.simulate-out-is-file", ("simulate", "{d}/rgb.png", "--out", "{d}/file.txt"), ""),
     C("cli.reconstruct-missing", ("reconstruct", "{d}/missing.npz"), "path: "),
     C("cli.reconstruct-rgb", ("reconstruct", "{d}/rgb.png"),
@@ -69,9 +86,13 @@ CLI_ROWS = [
     C("cli.evaluate-empty", ("evaluate", "--dataset", "{d}/empty"),
       "dataset: no image files in"),
     C("cli.evaluate-patterns-twice", ("evaluate", "--dataset", "{d}/ds", "--patterns",
-                                      "mask1,mask1"), "patterns: 'mask1' is given twice"),
+                                      "mask1,mask1_grbg"),
+      "patterns: 'mask1_grbg' is given twice (as 'mask1')"),
     C("cli.evaluate-methods-twice", ("evaluate", "--dataset", "{d}/ds", "--methods", "sg,sg"),
-      "methods: 'sg' is given twice"),
+      "argument --methods: 'sg' is given twice in 'sg,sg'; name each entry once", usage=True),
+    C("cli.tradeoff-out-in-dataset", ("tradeoff", "--dataset", "{d}/ds", "--out", "{d}/ds"),
+      "--out: tradeoff.png (from the report) would be written into {d}/ds, a folder read as "
+      "input"),
     C("cli.evaluate-missing", ("evaluate", "--dataset", "{d}/missing"), "dataset: "),
     C("cli.evaluate-crop", ("evaluate", "--dataset", "{d}/ds", "--crop", "-1"),
       "argument --crop: expected an integer >= 0, got '-1'", usage=True),
@@ -246,3 +267,39 @@ def test_sigterm_during_writes_leaves_no_temporary_file(tmp_path):
         assert not [n for n in left if n.endswith(".tmp")], left
         for p in out.iterdir():
             assert p.stat().st_size == 256 << 17          # whole files only
+
+
+def test_outputs_are_checked_against_inputs_before_anything_is_written(files, tmp_path,
+                                                                      capsys):
+    """One input/output collision check (``_cli._common.check_outputs``): an output that is
+    an input -- by name, through a symbolic or a hard link -- or that would land in a dataset
+    folder as an image is refused before anything is written, and every input keeps its
+    bytes. An output folder beside the inputs, or a subfolder of the dataset, is fine."""
+    import os
+    import shutil
+
+    d = tmp_path / "w"
+    shutil.copytree(files / "collide", d)
+    shutil.copy(files / "small.png", d / "a.png")
+    (d / "link.tif").symlink_to(d / "a_mask1_sg_cfa.tif")
+    os.link(d / "a_mask1.npz", d / "hard.npz")
+    before = {p.name: p.read_bytes() for p in d.iterdir() if p.is_file()}
+    cases = [
+        ("reconstruct", str(d / "a_mask1.npz"), str(d / "link.tif"), "--out", str(d)),
+        ("simulate", str(d / "a.png"), str(d / "hard.npz"), "--out", str(d)),
+        ("simulate", str(d / "a.png"), "--out", str(d), "--format", "npz",
+         "--pattern", "mask1"),                                   # over a_mask1.npz: no input
+        ("evaluate", "--dataset", str(d), "--out", str(d), "--metrics", "cfa_psnr"),
+    ]
+    for argv in cases[:2] + cases[3:]:
+        assert main([*argv, "--quiet"]) == 2
+        assert "would" in capsys.readouterr().err
+    assert {p.name: p.read_bytes() for p in d.iterdir() if p.is_file()} == before
+    # not an input: a_mask1.npz is rewritten from a.png, as asked
+    assert main([*cases[2], "--quiet"]) == 0
+    # a subfolder of the dataset is not read (the listing is not recursive)
+    ds = tmp_path / "ds"
+    shutil.copytree(files / "ds", ds)
+    assert main(["evaluate", "--dataset", str(ds), "--out", str(ds / "results"), "--metrics",
+                 "cfa_psnr", "--methods", "bi", "--patterns", "mask1", "--quiet"]) == 0
+    assert sorted(p.name for p in ds.iterdir()) == ["a.png", "results"]

@@ -11,6 +11,7 @@ work in ``run(args)``.
 from __future__ import annotations
 
 import argparse
+import os
 import re
 from pathlib import Path
 
@@ -18,7 +19,7 @@ from .._validate import parse_shape
 from ..io import MAX_BYTES_ENV, MAX_PIXELS_ENV
 
 __all__ = ["CliError", "Formatter", "EPILOG", "command_parser", "explain", "command_line",
-           "output_folder", "unique_outputs", "file_label"]
+           "output_folder", "check_outputs", "unique_outputs", "file_label"]
 
 EPILOG = ("Every option's default is shown in brackets. The user guide, the measured "
           "results and the API reference are in the project's documentation.")
@@ -47,8 +48,14 @@ def command_parser(sub, name, help, description):
 
 # --------------------------------------------------------------------------- argument types
 def csv(text):
-    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c')."""
-    return tuple(s.strip() for s in text.split(",") if s.strip())
+    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c'); an entry given twice is a usage
+    error (it would be run, and reported, twice)."""
+    items = tuple(s.strip() for s in text.split(",") if s.strip())
+    twice = next((s for i, s in enumerate(items) if s in items[:i]), None)
+    if twice is not None:
+        raise argparse.ArgumentTypeError(f"{twice!r} is given twice in {text!r}; name each "
+                                          "entry once")
+    return items
 
 
 def number(convert, accept, what):
@@ -327,15 +334,56 @@ def output_folder(out):
     return out
 
 
-def unique_outputs(pairs, out):
-    """``pairs``: (input, output names); a CliError when two inputs would write one file."""
+def _same_file_key(path):
+    """What identifies the file at ``path``: its device and inode when it exists (a symbolic
+    or hard link to an input is that input), else its absolute path with links resolved."""
+    try:
+        st = os.stat(path)
+        return ("inode", st.st_dev, st.st_ino)
+    except OSError:
+        return ("path", os.path.realpath(path))
+
+
+def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
+    """The one input/output collision check of the command line, before anything is written.
+
+    ``writes``: (source, path) of every file the command will write, ``source`` being what
+    it comes from; ``reads``: every file it reads (frames, scenes, --filters, --raw-options,
+    --calibration, the images of a dataset); ``read_dirs``: (folder, suffixes) of the
+    folders whose files of those suffixes it reads (a dataset). A CliError naming ``flag``
+    when two sources would write one file, when a file written is a file read (a link to it
+    too: it would be overwritten, before it is read if it comes later), or when a file of
+    a suffix read is written into a folder that is read (an evaluation would read its
+    figures back as images on the next run).
+    """
     seen = {}
-    for src, names in pairs:
-        for name in names:
-            if name in seen and seen[name] != src:
-                raise CliError(f"--out: {seen[name]} and {src} would both write "
-                               f"{out / name}; give them different --out folders or rename one")
-            seen[name] = src
+    for src, path in writes:
+        key = _same_file_key(path)
+        if key in seen and seen[key][0] != src:
+            raise CliError(f"{flag}: {seen[key][0]} and {src} would both write {path}; give "
+                           f"them different --out folders or rename one")
+        seen[key] = (src, path)
+    inputs = {_same_file_key(f): f for f in reads if f is not None}
+    for src, path in writes:
+        hit = inputs.get(_same_file_key(path))
+        if hit is not None:
+            raise CliError(f"{flag}: writing {path} (from {src}) would overwrite the input "
+                           f"{hit}; choose another {flag}")
+    for folder, suffixes in read_dirs:
+        where = os.path.realpath(folder)
+        for src, path in writes:
+            if (os.path.realpath(Path(path).parent) == where
+                    and Path(path).suffix.lower() in suffixes):
+                raise CliError(f"{flag}: {Path(path).name} (from {src}) would be written "
+                               f"into {folder}, a folder read as input, and read back from it; "
+                               f"choose an {flag} outside it")
+
+
+def unique_outputs(pairs, out, reads=()):
+    """``pairs``: (input, output names) in the folder ``out``; :func:`check_outputs` of them
+    against each other and against the files ``reads`` (the inputs themselves included)."""
+    check_outputs([(src, out / name) for src, names in pairs for name in names],
+                  [*(src for src, _ in pairs), *reads])
 
 
 def file_label(pattern):

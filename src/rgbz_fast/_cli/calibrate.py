@@ -80,6 +80,7 @@ def run(args):
                              f"{args.distances!r}") from None
         sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
         dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
+    c.check_outputs([("the calibration", args.out)], [*args.frames, *args.dark])
     cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
     cal.save(args.out)
     if not args.quiet:

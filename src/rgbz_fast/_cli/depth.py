@@ -74,7 +74,7 @@ def run(args):
             raise c.CliError(f"--calibration: {args.calibration}: {c.explain(exc)}") from None
     outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"])
             for f in args.frames]
-    c.unique_outputs(outs, out)
+    c.unique_outputs(outs, out, reads=[args.calibration])
     for f, (tif_name, flags_name, png_name) in outs:
         frame = load_frame(f, **c.limits(args))
         if frame.tof is None:

@@ -68,7 +68,7 @@ def run(args):
     ext = "_cfa.tif" if args.output == "cfa" else ".png"
     names = [(f, f"{f.stem}{label or ''}") for f in args.frames]
     c.unique_outputs([(f, [f"{n}_{args.method}{ext}", f"{n}_reference{ext}"]) for f, n in names],
-                     out)
+                     out, reads=[*(args.filters or ()), args.raw_options])
     for f, stem in names:
         kw, explicit = raw_kwargs(args, f, from_file)
         frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth, **c.limits(args),
