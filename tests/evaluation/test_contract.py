@@ -194,6 +194,41 @@ def test_eval_config_is_checked_and_normalised_at_construction():
 
 
 # --------------------------------------------------------------------------- interrupted runs
+def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
+    """The evaluation's cache is read through the guarded reader and checked: a FIFO under an
+    entry's name does not block, and a damaged or tampered entry (NaN, 1e999, text, a value
+    out of its metric's range, not an object) is recomputed and written again, never served
+    as a result."""
+    import os
+    import threading
+
+    kw = dict(metrics=("cfa_psnr", "ssim"), methods=("bi",), patterns=("mask1",),
+              progress=False, processes=1)
+    src = [rio.ImageSource("s", str(files / "small.png"))]
+    want = ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows
+    (entry,) = tmp_path.rglob("*.json")
+    good = entry.read_text()
+    for bad in ('{"cfa_psnr": NaN, "ssim": 0.5}', '{"cfa_psnr": 1e999, "ssim": 0.5}',
+                '{"cfa_psnr": 20.0, "ssim": 7.0}', '{"cfa_psnr": "20", "ssim": 0.5}',
+                '{"cfa_psnr": 20.0, "ssim": -Infinity}', "[20.0, 0.5]", "\xff\xfe",
+                '{"cfa_psnr": 20.0, "ssim": 0.5, "zz": 1.0}'):
+        entry.write_text(bad)
+        assert ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows == want, bad
+        assert entry.read_text() == good, bad
+    entry.unlink()
+    os.mkfifo(entry)
+    done = []
+    t = threading.Thread(target=lambda: done.append(
+        ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows), daemon=True)
+    t.start()
+    t.join(60)
+    if t.is_alive():                                      # unblock the reader, then fail
+        with open(os.open(entry, os.O_WRONLY | os.O_NONBLOCK), "w"):
+            pass
+        pytest.fail("a FIFO in the cache blocked the evaluation")
+    assert done == [want] and entry.is_file() and entry.read_text() == good
+
+
 def _cache_files(cache):
     return sorted(p for p in Path(cache).rglob("*") if p.is_file())
 

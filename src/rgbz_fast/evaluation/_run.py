@@ -17,8 +17,8 @@ from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
 from .._validate import (check_flag, check_image, check_processes, check_workers, integer_bits,
                          merge_params)
-from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, sample_dataset,
-                  to_rgbz)
+from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
+                  sample_dataset, to_rgbz)
 from ..reconstruction import reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ._config import EvalConfig
@@ -181,12 +181,51 @@ def cache_folder(name):
     return f"{_safe(name)[:60]}-{hashlib.sha1(name.encode()).hexdigest()[:10]}"
 
 
+#: the largest cache entry read (one small JSON object of at most five numbers)
+_CACHE_MAX_BYTES = 1 << 16
+#: the values each metric can take: PSNRs are finite or +inf (equal images), the others
+#: lie in their ranges; anything else in a cache entry was not written by the evaluation
+_METRIC_RANGES = {"cfa_psnr": (-np.inf, np.inf), "cpsnr": (-np.inf, np.inf),
+                  "ssim": (-1.0, 1.0), "ms_ssim": (0.0, 1.0), "zipper": (0.0, 100.0)}
+
+
+def _json_number(text):
+    """A JSON number of a cache entry: a literal too large for a double (1e999) is no value
+    the evaluation wrote (it writes inf as Infinity)."""
+    v = float(text)
+    if not np.isfinite(v):
+        raise ValueError(f"the number {text} is beyond the doubles")
+    return v
+
+
+def _json_constant(name):
+    if name != "Infinity":                    # NaN and -Infinity are no metric's value
+        raise ValueError(f"{name} is no metric value")
+    return float("inf")
+
+
 def _cache_read(cdir, key):
-    f = cdir / f"{key}.json"
+    """The cached values of one (pattern, method), or None to compute them again.
+
+    Read through the guarded reader (a regular file of at most 64 kB, so that a FIFO or a
+    device in the cache never blocks) and validated: a JSON object of known metrics whose
+    values are numbers in their range (a PSNR may be +inf). A damaged or tampered entry
+    (NaN, 1e999, text, a value out of range) is a miss, recomputed and written again.
+    """
     try:
-        return json.loads(f.read_text())
-    except (OSError, ValueError):
+        data = read_file(cdir / f"{key}.json", "cache", max_bytes=_CACHE_MAX_BYTES)
+        values = json.loads(data.decode("utf-8"), parse_float=_json_number,
+                            parse_int=_json_number, parse_constant=_json_constant)
+    except (OSError, ValueError, RecursionError):        # UnicodeDecodeError is a ValueError
         return None
+    if not isinstance(values, dict):
+        return None
+    for k, v in values.items():
+        lo, hi = _METRIC_RANGES.get(k, (None, None))
+        if lo is None or not isinstance(v, float) or not lo <= v <= hi \
+                or (v == np.inf and k not in ("cfa_psnr", "cpsnr")):
+            return None
+    return values
 
 
 def _cache_write(cdir, key, values):
