@@ -235,11 +235,15 @@ def _cache_write(cdir, key, values):
 
 def _pool_task(args):
     source, config, cache_dir, workers, skip_bad = args
-    if not skip_bad:
-        return evaluate_image(source, config, cache_dir, workers=workers)
     try:
         return evaluate_image(source, config, cache_dir, workers=workers)
+    except _WorkerStopped as stop:
+        # the writes in progress have removed their temporary files on the way here; the
+        # pool's loop would catch the exception and take the next image, so end the process
+        os._exit(stop.code)
     except (ValueError, TypeError, OSError) as exc:       # a bad image, not a bug: skipped
+        if not skip_bad:
+            raise
         skipped = _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
         skipped.error = exc if isinstance(exc, ParameterError) else None    # it pickles
         return skipped
@@ -253,15 +257,31 @@ class _Skipped(str):
     error = None
 
 
+class _WorkerStopped(SystemExit):
+    """SIGTERM in a pool worker: unwinds the image in progress (its cache write removes its
+    temporary file), then the worker ends (:func:`_pool_task`); raised while the worker waits
+    for work, it ends the process as a SystemExit."""
+
+
 def _worker_init():
-    """Pool workers turn SIGTERM into SystemExit, so that a terminated run's cache writes
-    remove their temporary files (atomic_write cleans up on any exception)."""
+    """Pool workers end promptly on SIGTERM, cleaning up on the way, and leave SIGINT to the
+    parent.
+
+    A Ctrl-C reaches the whole process group: each worker would get its KeyboardInterrupt in
+    the middle of an image, the pool would hand it back as that image's result and the
+    worker would start the next one. Workers ignore it instead; the parent's interrupt stops
+    the pool (:func:`_stop_pool`), which sends SIGTERM. SIGTERM raises
+    :class:`_WorkerStopped`, which :func:`_pool_task` turns into the end of the process once
+    the writes in progress have cleaned up -- the pool would otherwise catch it too, and
+    keep the worker running until it is killed (10 s later, its temporary files left).
+    """
     import signal
 
     def terminated(signum, frame):
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
-        raise SystemExit(128 + signum)
+        raise _WorkerStopped(128 + signum)
 
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, terminated)
 
 
@@ -272,12 +292,20 @@ def _stop_pool(ex):
     for p in procs:
         if p.is_alive():
             p.terminate()
+    killed = 0
     for p in procs:
         p.join(timeout=10)
         if p.is_alive():                                 # pragma: no cover - stuck in C
             p.kill()
             p.join(timeout=10)
+            killed += 1
     ex.shutdown(wait=True, cancel_futures=True)
+    if killed:                                           # pragma: no cover - stuck in C
+        import warnings
+
+        warnings.warn(f"{killed} worker process(es) did not stop within 10 s of SIGTERM and "
+                      "were killed; their temporary files may remain", RuntimeWarning,
+                      stacklevel=3)
 
 
 def dataset_sources(dataset, limit=None):
