@@ -204,6 +204,10 @@ class Files:
         iio.imwrite(d / "collide" / "a.png", np.zeros((16, 16, 3), np.uint8))
         (d / "collide" / "a_mask1.npz").write_bytes((d / "ok.npz").read_bytes())
         (d / "collide" / "a_mask1_sg_cfa.tif").write_bytes((d / "plain.tif").read_bytes())
+        # option files nested too deeply, naming no option, or not text
+        (d / "deep.json").write_text("[" * 100000 + "]" * 100000)
+        (d / "unknown.json").write_text('{"*": {"phse": "RGGB"}}')
+        (d / "binary.json").write_bytes(b"\xff\xfe\x00{")
 
     def __truediv__(self, name):
         return self.d / name

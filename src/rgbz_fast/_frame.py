@@ -9,6 +9,7 @@ readers and consumed by the ISPs, so they live below all of them.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -94,9 +95,14 @@ class RawFrame:
                                  f"{self.data.shape}")
             _check_range(ref, bd, "reference")
             object.__setattr__(self, "reference", _read_only(ref))
+        # checked here, not where they are used: a list as meta or a number as tof failed
+        # later with an AttributeError deep inside the ISP or a writer
+        if self.tof is not None and not isinstance(self.tof, ToFTaps):
+            raise TypeError(f"tof: expected ToFTaps or None, got {type(self.tof).__name__}")
         if isinstance(self.tof, ToFTaps) and self.tof.shape != self.data.shape:
             raise ValueError(f"tof: taps of a {self.tof.shape[0]}x{self.tof.shape[1]} frame, "
                              f"the data is {self.data.shape[0]}x{self.data.shape[1]}")
+        object.__setattr__(self, "meta", _meta(self.meta, "meta"))
 
     @property
     def shape(self):
@@ -141,6 +147,16 @@ def _owned(a):
     if isinstance(a, np.ma.MaskedArray):
         a = a.data
     return np.array(a, copy=True, order="C")
+
+
+def _meta(meta, name):
+    """Free-form metadata as a dict of its own (keys strings), or a TypeError naming it."""
+    if not isinstance(meta, Mapping):
+        raise TypeError(f"{name}: expected a dict, got {type(meta).__name__}")
+    bad = next((k for k in meta if not isinstance(k, str)), None)
+    if bad is not None:
+        raise TypeError(f"{name}: expected string keys, got {bad!r}")
+    return dict(meta)
 
 
 def _read_only(a):

@@ -325,3 +325,29 @@ def test_image_formats_are_read_as_what_they_mean(tmp_path):
             sim.load_image(tmp_path / "wide.tif")
         assert np.array_equal(sim.load_image(tmp_path / "wide.tif", input_bits=12).image,
                               sim.Scene(c12, input_bits=12).image)
+
+
+def test_output_names_up_to_the_longest_file_name_are_written(tmp_path):
+    """A name of 234 to 255 bytes is a valid file name, but its temporary name (22 bytes
+    more) was not: atomic_write failed with 'File name too long'. The temporary name keeps
+    as much of the name as fits; a name beyond 255 bytes is the command line's clear error."""
+    from rgbz_fast._cli import main
+
+    for size in (233, 234, 240, 255):
+        path = tmp_path / ("n" * (size - 4) + ".txt")
+        rio.atomic_write(path, "x")
+        assert path.read_text() == "x"
+    wide = tmp_path / ("é" * 125 + ".txt")                   # 254 bytes in UTF-8
+    rio.atomic_write(wide, "x")
+    assert wide.read_text() == "x"
+    assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".")) == []
+    import imageio.v3 as iio
+
+    img = np.random.default_rng(0).integers(0, 256, (16, 16, 3), dtype=np.uint8)
+    iio.imwrite(tmp_path / ("s" * 236 + ".png"), img)      # simulate writes 246 bytes
+    assert main(["simulate", str(tmp_path / ("s" * 236 + ".png")), "--out",
+                 str(tmp_path / "o"), "--quiet"]) == 0
+    iio.imwrite(tmp_path / ("t" * 248 + ".png"), img)      # 258 bytes: no such file
+    assert main(["simulate", str(tmp_path / ("t" * 248 + ".png")), "--out",
+                 str(tmp_path / "o2"), "--quiet"]) == 2
+    assert not (tmp_path / "o2").exists()

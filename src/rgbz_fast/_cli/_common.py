@@ -358,6 +358,11 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
     """
     seen = {}
     for src, path in writes:
+        size = len(os.fsencode(Path(path).name))
+        if size > 255:
+            raise CliError(f"{flag}: the output name {Path(path).name[:40]}... (from {src}) is "
+                           f"{size} bytes, more than the 255 a file name may have; rename "
+                           "the input")
         key = _same_file_key(path)
         if key in seen and seen[key][0] != src:
             raise CliError(f"{flag}: {seen[key][0]} and {src} would both write {path}; give "

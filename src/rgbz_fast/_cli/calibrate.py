@@ -99,8 +99,8 @@ def _simulated_sweep(args):
 
     try:
         kw = json.loads(args.sensor) if args.sensor else {}
-    except ValueError as exc:
-        raise c.CliError(f"--sensor: not JSON ({exc})") from None
+    except (ValueError, RecursionError) as exc:
+        raise c.CliError(f"--sensor: not JSON ({str(exc) or 'nested too deeply'})") from None
     if not isinstance(kw, dict):
         raise c.CliError("--sensor: expected a JSON object of ToFSensor arguments")
     try:

@@ -16,7 +16,7 @@ import numpy as np
 from .._validate import check_flag
 from ._errors import ParameterError
 from ._files import read_file, read_image, rgb_image, sample_bits
-from ._raw import read_raw
+from ._raw import check_raw_options, read_raw
 from ._suffixes import IMAGE_SUFFIXES, RAW_SUFFIXES
 
 __all__ = ["ImageSource", "folder_dataset", "sample_dataset", "IMAGE_SUFFIXES",
@@ -130,7 +130,7 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     if not files:
         raise ParameterError("dataset", f"no image files in {p} (looked for "
                                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")
-    raw_options = dict(raw_options or {})
+    raw_options = check_raw_options(raw_options)
     files = files[:limit] if limit else files
     out = []
     common = dict(grey=grey, max_pixels=max_pixels, max_bytes=max_bytes)

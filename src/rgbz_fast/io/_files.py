@@ -186,6 +186,19 @@ def _unlink(path):
         pass
 
 
+def _temporary_stem(path):
+    """The part of ``path``'s name its temporary file keeps: all of it, or as much as fits
+    the folder's longest name with the 22 bytes the temporary name adds (a 240-byte output
+    name is valid; its temporary name of 262 bytes was not)."""
+    try:
+        longest = os.pathconf(path.parent, "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):
+        longest = 255
+    room = max(longest - 22, 8)
+    raw = os.fsencode(path.name)
+    return path.name if len(raw) <= room else os.fsdecode(raw[:room])
+
+
 def atomic_write(path, data):
     """Write text or bytes to ``path`` through a temporary file and a rename: never half-written.
 
@@ -210,8 +223,9 @@ def atomic_write(path, data):
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    stem = _temporary_stem(path)
     while True:
-        tmp = path.parent / f".{path.name}.{secrets.token_hex(8)}.tmp"
+        tmp = path.parent / f".{stem}.{secrets.token_hex(8)}.tmp"
         try:
             fd = os.open(tmp, flags, 0o666)        # the umask applies, as to any new file
             break

@@ -19,8 +19,11 @@ References
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
+import sys
+import tempfile
 import warnings
 from pathlib import Path
 
@@ -277,6 +280,29 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     return RawFrame(_Adopt(out), bayer(phase), bd, meta=meta)
 
 
+#: the keyword arguments of :func:`read_raw` that say how to read one file (what a dataset's
+#: or the command line's raw options may set); the others belong to the caller
+RAW_OPTIONS = ("phase", "black_level", "white_level", "clip_level", "shape", "bit_depth_in",
+               "byteorder", "downsample", "crop_even", "reader")
+
+
+def check_raw_options(options, name="raw_options"):
+    """``options``, a mapping of file names (or ``"*"``) to mappings of :data:`RAW_OPTIONS`,
+    as a dict of dicts; a TypeError or ValueError naming ``name`` otherwise (an unknown
+    option was a TypeError of read_raw when the file was read)."""
+    if options is None:
+        return {}
+    if not isinstance(options, dict) or not all(isinstance(v, dict) for v in options.values()):
+        raise TypeError(f"{name}: expected a mapping of file names (or \"*\") to mappings "
+                        f"of options, got {type(options).__name__}")
+    for file, opts in options.items():
+        unknown = [k for k in opts if k not in RAW_OPTIONS]
+        if unknown:
+            raise ValueError(f"{name}: {unknown[0]!r} (for {file!r}) is not a raw option; "
+                             f"expected some of {', '.join(RAW_OPTIONS)}")
+    return {k: dict(v) for k, v in options.items()}
+
+
 def list_raw_files(folder, *, recursive=False, extensions=None):
     """The raw files of a folder that :func:`read_raw` can read, sorted by path.
 
@@ -336,11 +362,57 @@ def _read_libraw(path, limits):
                           "pip install rawpy  (or pip install rgbz-fast[raw])") from None
     blob = read_file(path, "path", max_bytes=limits[1])
     try:
-        raw_ctx = rawpy.imread(io.BytesIO(blob))
+        with _c_stderr() as said:
+            data, info = _libraw_mosaic(rawpy, blob, path, limits)
     except rawpy.LibRawError as exc:
-        raise ValueError(f"path: LibRaw cannot read {path.name}: "
-                         f"{type(exc).__name__}: {exc}") from None
-    with raw_ctx as raw:
+        # LibRaw decodes lazily: a truncated or damaged file fails when the pixels are
+        # unpacked, after the header was read, with its own exception types
+        reason = exc.args[0] if exc.args else exc
+        if isinstance(reason, bytes):
+            reason = reason.decode("utf-8", "replace")
+        told = " ".join(dict.fromkeys(line.strip() for line in said if line.strip()))
+        raise ValueError(f"path: LibRaw cannot read {path.name}: {type(exc).__name__}: "
+                         f"{reason}" + (f" ({told})" if told else "")) from None
+    make, model = _tiff_make_model(blob)
+    info.update(make=make, model=model)
+    return data, info
+
+
+@contextlib.contextmanager
+def _c_stderr():
+    """What C code writes to file descriptor 2 meanwhile, as a list of lines.
+
+    LibRaw prints its own complaints there ("unknown file: Unexpected end of file", once per
+    read attempt), which would come before the one error line of the command line. They are
+    caught here: part of the error when the read fails, written out as they were when it
+    succeeds.
+    """
+    said = []
+    try:
+        sys.stderr.flush()
+        saved = os.dup(2)
+    except (OSError, ValueError, AttributeError):       # no file descriptor 2 to catch
+        yield said
+        return
+    failed = True
+    with tempfile.TemporaryFile() as tmp:
+        os.dup2(tmp.fileno(), 2)
+        try:
+            yield said
+            failed = False
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+            tmp.seek(0)
+            text = tmp.read()
+            said += text.decode("utf-8", "replace").splitlines()
+            if text and not failed:
+                os.write(2, text)
+
+
+def _libraw_mosaic(rawpy, blob, path, limits):
+    """The visible CFA and what LibRaw says of it, from the bytes of a camera raw file."""
+    with rawpy.imread(io.BytesIO(blob)) as raw:
         if raw.raw_type != rawpy.RawType.Flat:
             raise ValueError(f"{path.name}: not a CFA mosaic (LibRaw raw_type "
                              f"{raw.raw_type.name}, e.g. a linear DNG)")
@@ -359,10 +431,7 @@ def _read_libraw(path, limits):
         wl = raw.white_level
         check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
         data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
-    make, model = _tiff_make_model(blob)
-    info = {"phase": letters, "black_level": black, "white_level": float(wl),
-            "make": make, "model": model}
-    return data, info
+    return data, {"phase": letters, "black_level": black, "white_level": float(wl)}
 
 
 def _tiff_make_model(blob):
