@@ -379,3 +379,121 @@ def test_sequences_of_names_refuse_repeated_entries():
         ev.evaluate_depth(sections=("noise", "noise"))
     with pytest.raises(TypeError, match=r"^methods: expected names \(strings\), got 5"):
         ev.EvalConfig(methods=("sg", 5))
+
+
+def _sweep_calls(d):
+    """(name, function, args, kwargs) of valid calls of the public API on small inputs,
+    each of whose arguments the sweep below replaces by hostile values in turn."""
+    from rgbz_fast import evaluation as ev
+    from rgbz_fast import io as rio
+    from rgbz_fast import isp, metrics
+    from rgbz_fast import reconstruction as rec
+
+    rng = np.random.default_rng(0)
+    img = rng.random((32, 32, 3))
+    u8 = (img * 255).astype(np.uint8)
+    big = np.zeros((176, 176, 3), np.uint8)
+    scene = sim.Scene(img, depth=np.full((32, 32), 1.5))
+    frame = sim.simulate(scene, "mask1", noise=False)
+    cfa = frame.reference
+    bayer_frame = rz.RawFrame(cfa, rz.bayer())
+    cfg = ev.EvalConfig(methods=("bilinear", "sg"), metrics=("cfa_psnr",), patterns=("mask1",))
+    res = ev.Results([{"image": "a", "pattern": "mask1", "method": m, "metric": "cfa_psnr",
+                       "value": 1.0 + i} for i, m in enumerate(cfg.methods)], cfg)
+    src = rio.ImageSource("a", str(d / "ds" / "a.png"))
+    one = dict(metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",))
+    raw = dict(shape=(4, 4), phase="RGGB", black_level=0, bit_depth_in=12)
+    return [
+        ("mosaic", rz.mosaic, (img, "mask1"), {}),
+        ("RawFrame", rz.RawFrame, (frame.data, "mask1"), {}),
+        ("Pattern", rz.Pattern, ("ZR/BG",), {}),
+        ("reconstruct", rz.reconstruct, (frame.data, "sg"), {"pattern": "mask1"}),
+        ("build_plans", rec.build_plans, (rz.mask1(), "sg"), {}),
+        ("Scene", sim.Scene, (img,), {}),
+        ("Scene.from_rgb", sim.Scene.from_rgb, (u8,), {}),
+        ("load_image", sim.load_image, (d / "rgb.png",), {}),
+        ("simulate", sim.simulate, (scene, "mask1"), {"noise": False}),
+        ("simulate_tof", sim.simulate_tof, (scene, "mask1"), {"noise": False}),
+        ("apply_optics", sim.apply_optics, (img, sim.Optics()), {"pixel_pitch_um": 2.8}),
+        ("Optics.mtf", sim.Optics().mtf, (np.linspace(0, 1, 5), 550),
+         {"pixel_pitch_um": 2.8}),
+        ("disparity_to_depth", sim.disparity_to_depth, (f64((4, 4), 10.0), 3740, 0.16), {}),
+        ("ColourISP.run", isp.ColourISP().run, (frame,), {}),
+        ("ColourISP.render", isp.ColourISP().render, (cfa,), {}),
+        ("demosaic", isp.demosaic, (cfa,), {}),
+        ("white_balance", isp.white_balance, (cfa,), {}),
+        ("correct_colour", isp.correct_colour, (img,), {}),
+        ("srgb_encode", isp.srgb_encode, (img,), {}),
+        ("correct_defects", isp.correct_defects, (frame.data, "mask1"), {}),
+        ("cfa_psnr", metrics.cfa_psnr, (cfa, cfa[::-1], frame.z_mask), {"bit_depth": 11}),
+        ("cpsnr_pooled", metrics.cpsnr_pooled, ([u8], [u8[::-1]]), {}),
+        ("ssim", metrics.ssim, (u8, u8[::-1]), {}),
+        ("zipper", metrics.zipper, (u8, u8[::-1]), {}),
+        ("all_metrics", metrics.all_metrics, (big, big), {}),
+        ("EvalConfig", ev.EvalConfig, (), {}),
+        ("evaluate", ev.evaluate, (d / "ds",), {**one, "progress": False, "processes": 1}),
+        ("evaluate_image", ev.evaluate_image, (src, ev.EvalConfig(**one)), {}),
+        ("image_frames", ev.image_frames, (u8, "mask1", cfg), {}),
+        ("Results", ev.Results, (res.rows, res.config), {}),
+        ("Results.paired", res.paired, ("mask1", "sg", "cfa_psnr"), {}),
+        ("Results.summary_markdown", res.summary_markdown, (), {}),
+        ("bar_chart", ev.bar_chart, (res, "cfa_psnr"), {}),
+        ("write_reports", ev.write_reports, (res, d / "sweep_reports"), {"plots": False}),
+        ("depth_report", ev.depth_report, ({"noise": []},), {}),
+        ("load_frame", rio.load_frame, (d / "ok.npz",), {}),
+        ("read_npz", rio.read_npz, (d / "ok.npz",), {}),
+        ("read_raw", rio.read_raw, (d / "bayer.raw",), raw),
+        ("list_raw_files", rio.list_raw_files, (d,), {}),
+        ("to_rgbz", rio.to_rgbz, (bayer_frame, "mask1"), {}),
+        ("clipped_mask", rio.clipped_mask, (bayer_frame,), {"clip_level": 2000}),
+        ("folder_dataset", rio.folder_dataset, (d / "ds",), {}),
+        ("read_image", rio.read_image, (d / "rgb.png",), {}),
+        ("rgb_image", rio.rgb_image, (u8, "x"), {}),
+        ("check_size", rio.check_size, ((4, 4), 2, "x"), {}),
+        ("save_frame", rio.save_frame, (d / "sweep.npz", frame), {}),
+    ]
+
+
+def test_every_argument_of_the_public_api_refuses_hostile_values_by_name(files, tmp_path,
+                                                                         monkeypatch):
+    """Each argument of a sweep of the public API (the calls of :func:`_sweep_calls`)
+    replaced in turn by None, text, a negative, a huge or NaN number, a ragged list, an
+    object, a 0-d array or bytes: the call either works (finite output from finite input)
+    or raises ValueError/TypeError (FileNotFoundError for a missing file) whose message
+    starts with the name of what is wrong -- never a NumPy, os or matplotlib message, a
+    KeyError, an IndexError, an OverflowError or a MemoryError (each of those was found
+    here and fixed where the argument comes in)."""
+    import inspect
+    import math
+    import re
+    import warnings
+
+    bad_values = [None, "x", -1, 2**70, 1e308, math.nan, [[1, 2], [3]], object(),
+                  np.array(5), b"x", {"a": 1}]
+    named = re.compile(r"^[\w.'\[\]()]+(: | got an unexpected keyword argument )"
+                       r"|^patterns, methods and metrics must")
+    monkeypatch.chdir(tmp_path)                    # a path "x" that works is written here
+    for name, fn, args, kwargs in _sweep_calls(files.d):
+        sig = inspect.signature(fn)
+        bound = sig.bind_partial(*args, **kwargs).arguments
+        for p in sig.parameters.values():
+            if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+                continue
+            for bad in bad_values:
+                call = {**bound, p.name: bad}
+                for q in sig.parameters.values():
+                    if q.kind == q.VAR_KEYWORD and q.name in call:
+                        call.update(call.pop(q.name))
+                where = f"{name}({p.name}={bad!r:.30})"
+                try:
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        out = fn(**call)
+                except (ValueError, TypeError, FileNotFoundError) as exc:
+                    assert named.match(str(exc)), f"{where}: {type(exc).__name__}: {exc}"
+                    continue
+                except Exception as exc:                  # noqa: BLE001 - what the test finds
+                    raise AssertionError(f"{where} leaked {type(exc).__name__}: {exc}")
+                for o in out if isinstance(out, tuple) else (out,):
+                    if isinstance(o, np.ndarray) and o.dtype.kind == "f" and bad is not math.nan:
+                        assert np.all(np.isfinite(o)), f"{where}: a non-finite result"

@@ -9,7 +9,6 @@ readers and consumed by the ISPs, so they live below all of them.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -17,7 +16,8 @@ import numpy as np
 
 from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
-from ._validate import FRAME_DTYPES, check_bit_depth, check_dtype, check_image, integer_bits
+from ._validate import (FRAME_DTYPES, as_array, check_bit_depth, check_dtype, check_image,
+                        check_meta, integer_bits)
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
 
@@ -86,10 +86,11 @@ class RawFrame:
         bd = check_bit_depth(self.bit_depth)
         object.__setattr__(self, "bit_depth", bd)
         # copied before the checks: what is checked is what the frame keeps
-        data = validate_frame(_owned(self.data), pattern, bd, "data")
+        data = validate_frame(_owned(self.data, "data"), pattern, bd, "data")
         object.__setattr__(self, "data", _read_only(data))
         if self.reference is not None:
-            ref = check_image(_owned(self.reference), "reference", ndim=2, dtypes=FRAME_DTYPES)
+            ref = check_image(_owned(self.reference, "reference"), "reference", ndim=2,
+                              dtypes=FRAME_DTYPES)
             if ref.shape != self.data.shape:
                 raise ValueError(f"reference: shape {ref.shape} differs from data "
                                  f"{self.data.shape}")
@@ -102,7 +103,7 @@ class RawFrame:
         if isinstance(self.tof, ToFTaps) and self.tof.shape != self.data.shape:
             raise ValueError(f"tof: taps of a {self.tof.shape[0]}x{self.tof.shape[1]} frame, "
                              f"the data is {self.data.shape[0]}x{self.data.shape[1]}")
-        object.__setattr__(self, "meta", _meta(self.meta, "meta"))
+        object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
 
     @property
     def shape(self):
@@ -137,7 +138,7 @@ class _Adopt:
         self.array = array
 
 
-def _owned(a):
+def _owned(a, name="data"):
     """A C-ordered copy of an array-like (None stays None): the frame's own memory. An
     :class:`_Adopt` array is kept as it is when it is already C-ordered."""
     if a is None:
@@ -146,17 +147,7 @@ def _owned(a):
         return np.ascontiguousarray(a.array)
     if isinstance(a, np.ma.MaskedArray):
         a = a.data
-    return np.array(a, copy=True, order="C")
-
-
-def _meta(meta, name):
-    """Free-form metadata as a dict of its own (keys strings), or a TypeError naming it."""
-    if not isinstance(meta, Mapping):
-        raise TypeError(f"{name}: expected a dict, got {type(meta).__name__}")
-    bad = next((k for k in meta if not isinstance(k, str)), None)
-    if bad is not None:
-        raise TypeError(f"{name}: expected string keys, got {bad!r}")
-    return dict(meta)
+    return np.array(as_array(a, name), copy=True, order="C")
 
 
 def _read_only(a):

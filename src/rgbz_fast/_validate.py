@@ -29,7 +29,8 @@ from ._threads import (MAX_WORKERS, MIN_PIXELS_PER_THREAD, check_processes,
 __all__ = ["check_image", "check_finite", "check_number", "check_int", "check_flag",
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
            "check_processes", "check_thread_stacks", "thread_limit", "parse_shape",
-           "merge_params", "integer_bits", "check_entries", "FRAME_DTYPES", "FLOAT_DTYPES",
+           "merge_params", "integer_bits", "check_entries", "check_path", "check_meta",
+           "as_array", "as_list", "FRAME_DTYPES", "FLOAT_DTYPES",
            "MAX_WORKERS", "TYPE_RANGE_BITS"]
 
 #: dtypes a raw frame may hold; kernels read and write them directly.
@@ -44,7 +45,7 @@ def check_image(arr, name, ndim=None, dtypes=None):
     """Return ``np.asarray(arr)`` after checking ndim, dtype kind, size and finiteness."""
     if arr is None:
         raise TypeError(f"{name}: expected an array, got None")
-    a = np.asarray(arr)
+    a = as_array(arr, name)
     if a.dtype == object or np.issubdtype(a.dtype, np.complexfloating):
         raise TypeError(f"{name}: expected a real numeric array, got dtype {a.dtype}")
     if not (np.issubdtype(a.dtype, np.number) or a.dtype == np.bool_):
@@ -136,6 +137,61 @@ def integer_bits(a, name, input_bits=None, *, what=None,
         raise ValueError(f"{name}: integer values span [{lo}, {hi}], beyond the {bits}-bit "
                          f"input range [0, {(1 << bits) - 1}]")
     return bits
+
+
+def check_path(value, name="path"):
+    """A file or folder path (a non-empty str or os.PathLike) as a :class:`pathlib.Path`;
+    a TypeError or ValueError naming ``name`` otherwise (NumPy scalars, bytes and None had
+    os.fspath's message, which names no parameter)."""
+    import os
+    from pathlib import Path
+
+    if not isinstance(value, (str, os.PathLike)):
+        raise TypeError(f"{name}: expected a path (str or pathlib.Path), got "
+                        f"{type(value).__name__} {value!r:.40}")
+    text = os.fspath(value)
+    if not isinstance(text, str):
+        raise TypeError(f"{name}: expected a path (str or pathlib.Path), got a bytes path")
+    if not text or "\0" in text:
+        raise ValueError(f"{name}: expected a file name, got {text!r}")
+    return Path(text)
+
+
+def check_meta(meta, name="meta", allow_none=False):
+    """Free-form metadata: a mapping with string keys, as a dict of its own (None: an empty
+    one, when ``allow_none``); a TypeError naming ``name`` otherwise."""
+    if meta is None and allow_none:
+        return {}
+    if not isinstance(meta, Mapping):
+        raise TypeError(f"{name}: expected a dict, got {type(meta).__name__}")
+    bad = next((k for k in meta if not isinstance(k, str)), None)
+    if bad is not None:
+        raise TypeError(f"{name}: expected string keys, got {bad!r}")
+    return dict(meta)
+
+
+def as_array(value, name, **kwargs):
+    """``np.asarray(value, **kwargs)``, or a TypeError naming ``name`` when NumPy cannot make
+    an array of it (a ragged list, an object it refuses): NumPy's message names no parameter."""
+    try:
+        return np.asarray(value, **kwargs)
+    except (ValueError, TypeError) as exc:
+        raise TypeError(f"{name}: expected an array of numbers, got a {type(value).__name__} "
+                        f"NumPy cannot make one of ({' '.join(str(exc).split())[:80]})") \
+            from None
+
+
+def as_list(value, name, what="a sequence"):
+    """``list(value)`` of a sequence (not a string, bytes, a mapping or a 0-d array), or a
+    TypeError naming ``name``."""
+    if isinstance(value, (str, bytes, Mapping)) or (isinstance(value, np.ndarray)
+                                                    and value.ndim == 0):
+        raise TypeError(f"{name}: expected {what}, got {type(value).__name__} {value!r:.40}")
+    try:
+        return list(value)
+    except TypeError:
+        raise TypeError(f"{name}: expected {what}, got {type(value).__name__} "
+                        f"{value!r:.40}") from None
 
 
 def merge_params(cls, params=None, overrides=None, *, name="params", caller=None, what=None):

@@ -8,8 +8,8 @@ from dataclasses import asdict, dataclass, field
 
 from .._build_config import VERSION
 from .._patterns import get_pattern
-from .._validate import (check_bit_depth, check_choice, check_entries, check_flag, check_int,
-                         check_seed)
+from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
+                         check_int, check_seed)
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, ReconstructParams
 from ..reconstruction._learned import resolve_filters
@@ -116,6 +116,8 @@ class EvalConfig:
             v = getattr(self, name)
             if isinstance(v, str):
                 v = tuple(s.strip() for s in v.split(",") if s.strip())
+            else:
+                v = as_list(v, name, "a sequence of names or a comma-separated string")
             object.__setattr__(self, name, tuple(v))
         if not self.patterns or not self.methods or not self.metrics:
             raise ValueError("patterns, methods and metrics must each name at least one entry")

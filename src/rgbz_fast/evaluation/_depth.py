@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
-from .._validate import check_entries
+from .._validate import check_entries, check_number, check_seed
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate_tof
 from ..tof import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
                    FLAG_SATURATED, ToFISP, calibrate)
@@ -273,6 +273,8 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     isp = ToFISP() if isp is None else isp
     if not isinstance(isp, ToFISP):
         raise TypeError(f"isp: expected a ToFISP, got {type(isp).__name__}")
+    seed = check_seed(seed, "seed")
+    tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
     sections = check_entries(sections, "sections")
     patterns = check_entries(patterns, "patterns", key=get_pattern, strings=False)
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
@@ -303,6 +305,10 @@ def _pct(a, b):
 
 def depth_report(result, tolerance=0.05):
     """Markdown tables of an :func:`evaluate_depth` result."""
+    if not isinstance(result, dict) or not set(result) <= set(DEPTH_SECTIONS):
+        raise TypeError(f"result: expected the dict of sections evaluate_depth returns, got "
+                        f"{result!r:.60}")
+    tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
     lines = []
     cm = f"{100 * tolerance:g} cm"
     if "scenes" in result:

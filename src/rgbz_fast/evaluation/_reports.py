@@ -8,10 +8,10 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
-from .._validate import check_flag
+from .._validate import check_flag, check_path
 from ..io import atomic_write
 from ..reconstruction import reconstruct
-from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS
+from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, EvalConfig
 from ._results import Results
 from ._run import _safe, image_frames
 
@@ -45,10 +45,11 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         raise ValueError("results: no rows to report (an evaluation of no image); nothing "
                          "was written")
     images = results.images()
-    if table_image is not None and table_image not in images:
+    if table_image is not None and (not isinstance(table_image, str)
+                                    or table_image not in images):
         raise ValueError(f"table_image: {table_image!r} is not in the results "
                          f"({', '.join(images)})")
-    out = Path(out_dir)
+    out = check_path(out_dir, "out_dir")
     out.mkdir(parents=True, exist_ok=True)
     written = []
 
@@ -72,6 +73,18 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
             put(f"crops_{_safe(crop_source.name)}.png",
                 crop_figure(crop_source, results.config, box=crop_box))
     return written
+
+
+def _check_box(box):
+    """A crop box: four integers (row, col, rows, cols), the sizes >= 1."""
+    from .._validate import check_int
+
+    from .._validate import as_list
+
+    box = as_list(box, "box", "(row, col, rows, cols)")
+    if len(box) != 4:
+        raise TypeError(f"box: expected (row, col, rows, cols), got {box!r:.40}")
+    return tuple(check_int(v, f"box[{i}]", lo=0 if i < 2 else 1) for i, v in enumerate(box))
 
 
 def _figure_png(fig):
@@ -115,7 +128,16 @@ def bar_chart(results, metric):
     spread is that of the images (it shows how hard they are, not how sure
     the ranking is): :func:`paired_chart` shows the latter.
     """
-    return _figure_png(_bar_figure(results, metric))
+    return _figure_png(_bar_figure(*_chart_inputs(results, metric)))
+
+
+def _chart_inputs(results, metric):
+    """(results, metric) of a chart, checked: a metric the results do not hold drew an
+    empty chart or failed inside matplotlib."""
+    if not isinstance(results, Results):
+        raise TypeError(f"results: expected Results, got {type(results).__name__}")
+    results._known(metric, "metric", results.config.metrics)
+    return results, metric
 
 
 def _bar_figure(results, metric):
@@ -155,6 +177,9 @@ def paired_chart(results, metric, baseline=None):
     method that is better on every image shows it even when the images'
     spread dwarfs the gain.
     """
+    results, metric = _chart_inputs(results, metric)
+    if baseline is not None:
+        results._known(baseline, "baseline", results.config.methods)
     return _figure_png(_paired_figure(results, metric, baseline))
 
 
@@ -208,6 +233,15 @@ def crop_figure(source, config, box=None, size=64):
     pattern: the reference and every method. By default the crop is where
     the methods differ most from the reference on the first pattern.
     """
+    from .._validate import check_int, merge_params
+    from ..io import ImageSource
+
+    if not isinstance(source, ImageSource):
+        raise TypeError(f"source: expected an ImageSource, got {type(source).__name__}")
+    config = merge_params(EvalConfig, config, name="config")
+    size = check_int(size, "size", lo=1)
+    if box is not None:
+        box = _check_box(box)
     plt = _pyplot()
     from matplotlib.patches import Rectangle
 
@@ -236,6 +270,9 @@ def crop_figure(source, config, box=None, size=64):
         x0 = int(np.clip(x - size // 2, 0, ref.shape[1] - size))
         box = (y0, x0, size, size)
     y0, x0, h, w = box
+    if y0 + h > full.shape[0] or x0 + w > full.shape[1]:
+        raise ValueError(f"box: rows {y0}:{y0 + h}, cols {x0}:{x0 + w} leave the "
+                         f"{full.shape[0]}x{full.shape[1]} image")
     ncol = len(tiles[0][1])
     # the overview column: the image's aspect, but never so narrow that it shows nothing
     wide = max(1.25 * full.shape[1] / full.shape[0], 1.4)

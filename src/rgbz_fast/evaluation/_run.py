@@ -5,6 +5,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
@@ -15,8 +16,8 @@ from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import (check_flag, check_image, check_processes, check_workers, integer_bits,
-                         merge_params)
+from .._validate import (check_flag, check_image, check_path, check_processes, check_workers,
+                         integer_bits, merge_params)
 from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
                   sample_dataset, to_rgbz)
 from ..reconstruction import reconstruct
@@ -101,8 +102,13 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     (:meth:`~rgbz_fast.io.ImageSource.fingerprint`), in a folder of its own
     per image name. ``workers`` are the threads of each kernel call.
     """
+    if not isinstance(source, ImageSource):
+        raise TypeError(f"source: expected an ImageSource, got {type(source).__name__}")
+    config = merge_params(EvalConfig, config, name="config")
+    workers = check_workers(workers)
     rows, todo = [], []
-    cdir = Path(cache_dir) / cache_folder(source.name) if cache_dir else None
+    cdir = check_path(cache_dir, "cache_dir") / cache_folder(source.name) \
+        if cache_dir is not None else None
     content = source.fingerprint() if cdir else ""
 
     def key(p, m):
@@ -390,13 +396,17 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     """
     config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
+    if scheduler is not None and not hasattr(scheduler, "submit") and not (
+            isinstance(scheduler, str) and re.fullmatch(r"\w+://[^/\s]+:\d+", scheduler)):
+        raise ValueError(f"scheduler: expected a Dask scheduler address such as "
+                         f"tcp://host:8786, or a distributed.Client, got {scheduler!r:.60}")
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")
     pooled = scheduler is not None or (nproc > 1 and len(dataset) > 1)
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
-    cache_dir = str(cache_dir) if cache_dir is not None else None
+    cache_dir = str(check_path(cache_dir, "cache_dir")) if cache_dir is not None else None
     skip_bad = check_flag(skip_bad, "skip_bad")
     progress = check_flag(progress, "progress")
     tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]

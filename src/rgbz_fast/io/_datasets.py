@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._validate import check_flag
+from .._validate import check_flag, check_path
 from ._errors import ParameterError
 from ._files import read_file, read_image, rgb_image, sample_bits
 from ._raw import check_raw_options, read_raw
@@ -118,7 +118,7 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     if limit is not None and (isinstance(limit, bool) or not isinstance(limit, (int, np.integer))
                               or limit < 1):
         raise ParameterError("limit", f"expected a positive number of images, got {limit!r}")
-    p = Path(path)
+    p = check_path(path, "dataset")
     if not p.exists():
         raise ParameterError("dataset", f"{p} does not exist")
     if p.is_file():

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._validate import check_flag, integer_bits
+from .._validate import as_array, as_list, check_flag, check_path, integer_bits
 from ._decode import PNM_MAGIC, decode_pillow, decode_pnm, decode_tiff
 from ._errors import ParameterError, Setting
 
@@ -61,7 +61,11 @@ def _limit(value, name, env, default):
         raise TypeError(f"{name}: expected a positive integer, got {value!r}")
     if value < 1:
         raise ParameterError(name, f"expected a positive integer, got {value!r}")
-    return int(value)
+    return min(int(value), _NO_LIMIT)       # a limit beyond any file is no limit
+
+
+#: a limit larger than any file or image (and than what a read may ask for)
+_NO_LIMIT = 1 << 62
 
 
 def read_limits(max_pixels=None, max_bytes=None):
@@ -95,7 +99,16 @@ def check_size(shape, itemsize, path, name="path", *, limits=None):
     dimensions are the pixels, and the product times ``itemsize`` the bytes
     it decodes to. Called before the array is allocated.
     """
-    max_pixels, max_bytes = limits if limits is not None else read_limits()
+    if limits is not None and (not isinstance(limits, (tuple, list)) or len(limits) != 2):
+        raise TypeError(f"limits: expected (max_pixels, max_bytes), got {limits!r:.40}")
+    max_pixels, max_bytes = read_limits(*(limits or ()))
+    if not all(isinstance(s, (int, np.integer)) and not isinstance(s, bool) and s >= 0
+               for s in as_list(shape, "shape", "a sequence of sizes")):
+        raise TypeError(f"shape: expected a sequence of sizes (integers >= 0), got "
+                        f"{shape!r:.40}")
+    if isinstance(itemsize, bool) or not isinstance(itemsize, (int, np.integer)) \
+            or itemsize < 1:
+        raise TypeError(f"itemsize: expected a positive number of bytes, got {itemsize!r}")
     shape = tuple(int(s) for s in shape)
     pixels = int(np.prod(shape[:2], dtype=object)) if shape else 1
     nbytes = int(np.prod(shape, dtype=object)) * int(itemsize)
@@ -148,8 +161,8 @@ def read_file(path, name="path", *, max_bytes=None):
     ...
     rgbz_fast.io.ParameterError: path: /dev/zero is a character device, not a regular file
     """
+    p = check_path(path, name)
     limit = read_limits(max_bytes=max_bytes)[1]
-    p = Path(os.fspath(path))
     try:
         # O_NONBLOCK: opening a FIFO for reading would wait for a writer
         fd = os.open(p, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
@@ -170,13 +183,29 @@ def read_file(path, name="path", *, max_bytes=None):
             raise ParameterError(name, f"{p} is {st.st_size} bytes, more than the limit of "
                                        f"{limit} bytes", *raise_it("max_bytes"))
         try:
-            data = fh.read(limit + 1)      # bounded even if the file grows meanwhile
+            data = _read_bounded(fh, st.st_size, limit)
         except OSError as exc:
             raise ParameterError(name, f"cannot read {p} ({exc.strerror or exc})") from None
     if len(data) > limit:
         raise ParameterError(name, f"{p} grew beyond the limit of {limit} bytes while being "
                                    "read")
     return data
+
+
+def _read_bounded(fh, size, limit):
+    """At most ``limit + 1`` bytes of ``fh``: the ``size`` its fstat gave first, then 1 MiB
+    at a time if it grew meanwhile (a read of ``limit + 1`` bytes at once allocates that
+    much, whatever the file holds)."""
+    parts, total = [], 0
+    want = min(limit, size) + 1
+    while total <= limit:
+        part = fh.read(want)
+        if not part:
+            break
+        parts.append(part)
+        total += len(part)
+        want = min(1 << 20, limit + 1 - total)
+    return b"".join(parts)
 
 
 def _unlink(path):
@@ -220,7 +249,7 @@ def atomic_write(path, data):
     """
     if not isinstance(data, (str, bytes, bytearray, memoryview)):
         raise TypeError(f"data: expected str or bytes, got {type(data).__name__}")
-    path = Path(path)
+    path = check_path(path, "path")
     path.parent.mkdir(parents=True, exist_ok=True)
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
     stem = _temporary_stem(path)
@@ -395,7 +424,7 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
     rgbz_fast.io.ParameterError: path: ... declares a 1x2x1 image (0.0 megapixels), more than the limit of 1 pixels; ...
     >>> d.cleanup()
     """
-    p = Path(path)
+    p = check_path(path, name)
     limits = read_limits(max_pixels, max_bytes)
     data = read_file(p, name, max_bytes=limits[1])
     declared = _declared_shape(data)
@@ -435,7 +464,7 @@ def rgb_image(img, path, name="path", *, grey=False):
     rgbz_fast.io.ParameterError: path: g.png is a grey image (2x3); a colour sensor needs colour: ...
     """
     grey = check_flag(grey, "grey")
-    img = np.asarray(img)
+    img = as_array(img, "img")
     if img.ndim == 3 and img.shape[2] in (2, 4):
         img = img[..., :-1]                           # alpha
     if img.ndim == 3 and img.shape[2] == 1:

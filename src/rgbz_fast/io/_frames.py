@@ -18,6 +18,7 @@ import numpy as np
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Pattern, get_pattern
 from .._sensors import ToFSensor
+from .._validate import as_list, check_path
 from ._errors import ParameterError, named
 from ._files import atomic_write, check_size, raise_it, read_file, read_image, read_limits
 from ._raw import read_raw
@@ -44,7 +45,7 @@ def save_frame(path, frame):
     """Write ``frame`` to ``path`` (.npz or .tif/.tiff), atomically; returns the path."""
     if not isinstance(frame, RawFrame):
         raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
-    path = Path(path)
+    path = check_path(path, "path")
     suffix = path.suffix.lower()
     header = {"format": _FORMAT_TAG, "pattern": frame.pattern.tile_string,
               "pattern_name": frame.pattern.name, "bayer": frame.pattern.bayer_phase,
@@ -108,7 +109,7 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         describes no valid frame. The errors of :func:`rgbz_fast.io.read_raw`
         for other files.
     """
-    path = Path(path)
+    path = check_path(path, "path")
     limits = read_limits(max_pixels, max_bytes)
     if not path.exists():
         raise ValueError(f"path: {path} does not exist")
@@ -255,7 +256,12 @@ def read_npz(path, name="path", *, keys=None, required=(), max_pixels=None, max_
     ...     read_npz(p)["x"]
     array([0, 1, 2])
     """
-    path = Path(path)
+    path = check_path(path, name)
+    required = () if required is None else required
+    for label, names in (("keys", keys), ("required", required)):
+        if names is not None and not all(
+                isinstance(k, str) for k in as_list(names, label, "member names")):
+            raise TypeError(f"{label}: expected member names (strings), got {names!r:.40}")
     try:
         return _npz_members(path, name, keys, required, read_limits(max_pixels, max_bytes))
     except ValueError as exc:

@@ -31,7 +31,7 @@ import numpy as np
 
 from .._frame import RawFrame, _Adopt
 from .._patterns import BAYER_PHASES, bayer
-from .._validate import check_bit_depth, check_dtype, check_flag
+from .._validate import as_list, check_bit_depth, check_dtype, check_flag, check_path
 from ._errors import ParameterError, Setting
 from ._files import check_size, read_file, read_image, read_limits
 from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
@@ -163,7 +163,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     (1, (1023.0, 1023.0, 1023.0, 1023.0))
     >>> tmp.cleanup()
     """
-    path = Path(os.fspath(path))
+    path = check_path(path, "path")
     kind = _reader_for(path, reader)
     bd = check_bit_depth(bit_depth)
     out_dtype = check_dtype(dtype, _OUT_DTYPES)
@@ -173,7 +173,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     crop_even = check_flag(crop_even, "crop_even")
     if bit_depth_in is not None:
         bit_depth_in = check_bit_depth(bit_depth_in, "bit_depth_in")
-    if byteorder not in ("<", ">"):
+    if not isinstance(byteorder, str) or byteorder not in ("<", ">"):
         raise ValueError(f"byteorder: expected '<' (little-endian) or '>' (big-endian), "
                          f"got {byteorder!r}")
     if kind != "headerless" and shape is not None:
@@ -322,9 +322,13 @@ def list_raw_files(folder, *, recursive=False, extensions=None):
         Hidden files (name starting with ".") are skipped.
     """
     recursive = check_flag(recursive, "recursive")
-    folder = Path(os.fspath(folder))
+    folder = check_path(folder, "folder")
     if not folder.is_dir():
         raise NotADirectoryError(f"folder: not a directory: {folder}")
+    if extensions is not None and not all(
+            isinstance(e, str) for e in as_list(extensions, "extensions")):
+        raise TypeError(f"extensions: expected a sequence of extensions ('.png', ...), got "
+                        f"{extensions!r:.40}")
     exts = RAW_EXTENSIONS if extensions is None else extensions
     exts = {str(e).lower() if str(e).startswith(".") else "." + str(e).lower() for e in exts}
     files = folder.rglob("*") if recursive else folder.iterdir()

@@ -116,7 +116,8 @@ class ColourISP:
             object.__setattr__(self, name, stage_params(cls, getattr(self, name),
                                                         name=f"ColourISP.{name}",
                                                         allow_none=False))
-        if isinstance(self.output_bits, bool) or self.output_bits not in (8, 16):
+        if isinstance(self.output_bits, bool) or not isinstance(
+                self.output_bits, (int, np.integer)) or self.output_bits not in (8, 16):
             raise ValueError(f"ColourISP.output_bits: expected 8 or 16, got "
                              f"{self.output_bits!r}")
         if self.black_level is not None:

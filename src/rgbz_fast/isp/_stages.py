@@ -410,7 +410,7 @@ def srgb_encode(linear, bits=8):
     ``_quantise(srgb_oetf(linear), bits)`` bit for bit, without their
     frame-size temporaries (:func:`_encode`).
     """
-    if bits not in (8, 16) or isinstance(bits, bool):
+    if isinstance(bits, bool) or not isinstance(bits, (int, np.integer)) or bits not in (8, 16):
         raise ValueError(f"bits: expected 8 or 16, got {bits!r}")
     a = check_image(linear, "linear", dtypes=FLOAT_DTYPES)
     return _encode(a.astype(a.dtype if a.dtype in (np.float32, np.float64) else np.float64,

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_int, check_number, check_workers
+from .._validate import as_array, check_int, check_number, check_workers
 from ._common import (_check_crop, _check_integer_range, _check_pair, _check_rgb_pair, _crop_hw,
                       _kernel_pair, _psnr_from_mse)
 
@@ -93,7 +93,7 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, wor
     threads = check_workers(workers)
     if mask is None:
         return _psnr_from_mse(*_mse(ref, tst, None, threads), peak)
-    m = np.asarray(mask)
+    m = as_array(mask, "mask")
     if m.dtype != np.bool_:
         raise TypeError(f"mask: expected a boolean array, got dtype {m.dtype}")
     if m.shape != ref.shape and not (m.shape == ref.shape[:2] and ref.ndim == 3):

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._validate import check_flag
+from .._validate import check_flag, check_path
 from ..io._files import (check_size, read_file, read_image, read_limits, rgb_image,
                          sample_bits)
 from ..io._suffixes import IMAGE_SUFFIXES as _IMAGE_SUFFIXES
@@ -40,7 +40,7 @@ MIDDLEBURY_BASELINE_M = 0.160
 
 
 def _require_file(path, what):
-    p = Path(path)
+    p = check_path(path, what)
     if not p.exists():
         raise FileNotFoundError(f"{what}: {p} not found")
     return p                      # a folder, FIFO or device: the reader says what it is
@@ -68,12 +68,18 @@ def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflec
     """
     p = _require_file(path, "path")
     check_flag(grey, "grey")
+    _check_name(name)
     img = rgb_image(read_image(p, "path", max_pixels=max_pixels, max_bytes=max_bytes), p,
                     grey=grey)
     sample_bits(img, p, input_bits)
     return Scene.from_rgb(img, encoding=encoding, depth=depth, depth_valid=depth_valid,
                           ir_reflectance=ir_reflectance, name=name or p.stem,
                           meta={"source": str(p)}, input_bits=input_bits)
+
+
+def _check_name(name):
+    if name is not None and not isinstance(name, str):
+        raise TypeError(f"name: expected a string or None, got {type(name).__name__}")
 
 
 def _natural_key(p):
@@ -112,7 +118,8 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         If the bands differ in shape or dtype, the variable is ambiguous or
         missing, or the wavelengths do not match the band count.
     """
-    p = Path(path)
+    p = check_path(path, "path")
+    _check_name(name)
     meta = {"source": str(p)}
     if p.is_dir():
         files = sorted((f for f in p.iterdir() if f.suffix.lower() == ".png" and f.is_file()),
@@ -211,7 +218,8 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
         image of the size of ``rgb.png``, or no pixel has a disparity.
     """
     check_flag(grey, "grey")
-    d = Path(folder)
+    _check_name(name)
+    d = check_path(folder, "folder")
     if not d.is_dir():
         raise FileNotFoundError(f"folder: {d} is not a folder")
     needed = ("rgb.png", "disp1.png", "dmin.txt")
@@ -259,7 +267,7 @@ def load_scene(path, **kwargs):
     the image and spectral loaders (an RGB-D folder's PNG files say their
     range, so it is refused there).
     """
-    p = Path(path)
+    p = check_path(path, "path")
     grey = check_flag(kwargs.pop("grey", False), "grey")
     if p.is_dir():
         if (p / "disp1.png").exists() or (p / "rgb.png").exists():

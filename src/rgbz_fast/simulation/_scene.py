@@ -43,7 +43,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validate import FLOAT_DTYPES, check_choice, check_image, check_number, integer_bits
+from .._validate import (FLOAT_DTYPES, check_choice, check_image, check_meta, check_number,
+                         integer_bits)
 
 __all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
            "CAVE_WAVELENGTHS"]
@@ -138,7 +139,8 @@ def disparity_to_depth(disparity, focal_px, baseline_m, *, offset=0.0, invalid=0
     f = check_number(focal_px, "focal_px", lo=0, lo_open=True)
     b = check_number(baseline_m, "baseline_m", lo=0, lo_open=True)
     off = check_number(offset, "offset")
-    valid = np.ones(disp.shape, bool) if invalid is None else disp != float(invalid)
+    valid = np.ones(disp.shape, bool) if invalid is None else \
+        disp != check_number(invalid, "invalid", allow_inf=True)
     if not valid.any():
         raise ValueError("disparity: every pixel is marked invalid "
                          f"(value {invalid}); there is no depth to use")
@@ -286,7 +288,7 @@ class Scene:
                 img = srgb_to_linear(_int_to_unit(img, "image", bits))
             wl = None
         else:
-            wl = np.asarray(self.wavelengths, dtype=np.float64)
+            wl = check_image(self.wavelengths, "wavelengths").astype(np.float64)
             if wl.ndim != 1 or wl.size != img.shape[2]:
                 raise ValueError(f"wavelengths: expected {img.shape[2]} band centres (one per "
                                  f"band of image {img.shape}), got shape {wl.shape}")
@@ -345,8 +347,9 @@ class Scene:
                 raise ValueError(f"ir_reflectance: values span [{ir.min()}, {ir.max()}]; "
                                  "a reflectance lies in [0, 1]")
             object.__setattr__(self, "ir_reflectance", _readonly(ir))
-        object.__setattr__(self, "name", str(self.name))
-        object.__setattr__(self, "meta", dict(self.meta))
+        if not isinstance(self.name, str):
+            raise TypeError(f"name: expected a string, got {type(self.name).__name__}")
+        object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
 
     # -- constructors -------------------------------------------------------
     @classmethod
@@ -387,7 +390,7 @@ class Scene:
             img = _int_to_unit(img, "image", input_bits)
         if enc != "auto":
             input_bits = None                      # converted to float above
-        meta = dict(meta or {})
+        meta = check_meta(meta, "meta", allow_none=True)
         if disparity is not None:
             if depth is not None:
                 raise ValueError("disparity: give either depth or disparity, not both")
@@ -409,8 +412,8 @@ class Scene:
         if wavelengths is None:
             raise ValueError("wavelengths: a spectral scene needs its band centres in nm")
         return cls(cube, wavelengths=wavelengths, depth=depth, depth_valid=depth_valid,
-                   ir_reflectance=ir_reflectance, name=name, meta=dict(meta or {}),
-                   input_bits=input_bits)
+                   ir_reflectance=ir_reflectance, name=name,
+                   meta=check_meta(meta, "meta", allow_none=True), input_bits=input_bits)
 
     # -- properties -----------------------------------------------------------
     @property

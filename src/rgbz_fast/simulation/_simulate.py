@@ -97,7 +97,7 @@ from .._deps import import_colour
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_flag, check_seed
+from .._validate import check_flag, check_number, check_seed
 from ._loaders import load_scene
 from ._noise import (STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
                      STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, expose)
@@ -420,8 +420,14 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         raise ValueError(f"pattern: {pattern.name!r} has no Z site")
     shape = pattern.check_shape(scene.shape, "scene")
     pitch = sensor.pixel_pitch_um
-    if pitch is None:
-        pitch = 2.8 if pixel_pitch_um is None else float(pixel_pitch_um)
+    if pixel_pitch_um is not None:
+        given = check_number(pixel_pitch_um, "pixel_pitch_um", lo=0, lo_open=True)
+        if pitch is not None and given != pitch:
+            raise ValueError(f"pixel_pitch_um: {given:g} um differs from the sensor's "
+                             f"pixel_pitch_um {pitch:g} um; give one of them")
+        pitch = given
+    if sensor.pixel_pitch_um is None:
+        pitch = 2.8 if pitch is None else pitch
         sensor = replace(sensor, pixel_pitch_um=pitch)
     block = sensor.z_block if sensor.z_block is not None else _z_block(pattern)
     rows, cols = _z_sites(pattern, shape, block)
