@@ -17,6 +17,18 @@ from rgbz_fast import simulation as sim
 
 R = Row
 
+
+def _tof():
+    """The ToF taps of a simulated 16x16 Mask1 frame."""
+    return sim_frame().tof
+
+
+def _retaps(**changes):
+    """Those taps with some fields replaced (and checked again)."""
+    import dataclasses
+
+    return dataclasses.replace(_tof(), **changes)
+
 ROWS = [
     # -- patterns (rgbz_fast._patterns) ----------------------------------------------------
     R("patterns.none", "get_pattern(None)", lambda f: rz.get_pattern(None), TypeError,
@@ -159,6 +171,35 @@ ROWS = [
     R("frame.ToFTaps-sites", "ToFTaps(sites outside the frame)",
       lambda f: taps_with_sites(1000), ValueError,
       "sites: rows span [1000, 1000], outside the 4x4 frame"),
+    R("frame.ToFTaps-taps-complex", "ToFTaps(complex taps)",
+      lambda f: _retaps(taps=_tof().taps * 1j), TypeError,
+      "taps: expected real numbers, got dtype complex128"),
+    R("frame.ToFTaps-taps-text", "ToFTaps(taps of text)",
+      lambda f: _retaps(taps=_tof().taps.astype(str)), TypeError,
+      "taps: expected real numbers, got dtype <U"),
+    R("frame.ToFTaps-sites-float", "ToFTaps(sites of floats)",
+      lambda f: _retaps(sites=(_tof().sites[0] + 0.5, _tof().sites[1])), TypeError,
+      "sites: expected integer pixel indices, got rows of dtype float64"),
+    R("frame.ToFTaps-sites-twice", "ToFTaps(a site twice)",
+      lambda f: _retaps(sites=(np.r_[_tof().sites[0][:-1], 0], np.r_[_tof().sites[1][:-1], 0])),
+      ValueError, "sites: the site (0, 0) is given twice"),
+    R("frame.ToFTaps-bit_depth-0", "ToFTaps(bit_depth=0)", lambda f: _retaps(bit_depth=0),
+      ValueError, "bit_depth: expected 1..16 bits, got 0"),
+    R("frame.ToFTaps-bit_depth-99", "ToFTaps(bit_depth=99)", lambda f: _retaps(bit_depth=99),
+      ValueError, "bit_depth: expected 1..16 bits, got 99"),
+    R("frame.ToFTaps-frequencies-twice", "ToFTaps(frequencies 80, 80, 120 MHz)",
+      lambda f: _retaps(frequencies=[80e6, 80e6, 120e6]), ValueError,
+      "frequencies: a frequency is given twice"),
+    R("frame.ToFTaps-valid-int", "ToFTaps(valid of ints)",
+      lambda f: _retaps(valid=_tof().valid.astype(int)), TypeError,
+      "valid: expected a bool array, got dtype int64"),
+    R("frame.ToFTaps-sensor", "ToFTaps(sensor=None)", lambda f: _retaps(sensor=None),
+      TypeError, "sensor: expected a ToFSensor, got NoneType"),
+    R("frame.RawFrame-tof-colour-site", "RawFrame(tof measured at a colour pixel)",
+      lambda f: rz.RawFrame(sim_frame().data, "mask1",
+                            tof=_retaps(sites=(_tof().sites[0], _tof().sites[1] + 1))),
+      ValueError, "tof: the measurement at (0, 1) (a 1x1 block) covers a colour pixel of "
+                  "pattern 'mask1'"),
     R("frame.ToFTaps-shape", "ToFTaps(taps of shape (3, 4))",
       lambda f: sim.ToFTaps(np.zeros((3, 4)), [1], (np.zeros(0), np.zeros(0)), 1, 11,
                             np.zeros(0), np.zeros(0, bool), np.zeros(0, bool),

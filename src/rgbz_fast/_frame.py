@@ -16,8 +16,9 @@ import numpy as np
 
 from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
-from ._validate import (FRAME_DTYPES, as_array, check_bit_depth, check_dtype, check_image,
-                        check_meta, integer_bits)
+from ._validate import (FRAME_DTYPES, as_array, as_list, check_bit_depth, check_dtype,
+                        check_block, check_fill, check_finite, check_frequencies, check_image, check_int,
+                        check_meta, check_sites, integer_bits)
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
 
@@ -103,6 +104,8 @@ class RawFrame:
         if isinstance(self.tof, ToFTaps) and self.tof.shape != self.data.shape:
             raise ValueError(f"tof: taps of a {self.tof.shape[0]}x{self.tof.shape[1]} frame, "
                              f"the data is {self.data.shape[0]}x{self.data.shape[1]}")
+        if isinstance(self.tof, ToFTaps):
+            _check_z_sites(self.tof, pattern)
         object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
 
     @property
@@ -126,6 +129,22 @@ class RawFrame:
         extra += ", with ToF taps" if self.tof is not None else ""
         return (f"RawFrame({self.data.shape[0]}x{self.data.shape[1]} {self.data.dtype}, "
                 f"pattern={self.pattern.name!r}, bit_depth={self.bit_depth}{extra})")
+
+
+def _check_z_sites(tof, pattern):
+    """Every cell of every measurement's block is a Z site of ``pattern``: a measurement at
+    a colour pixel would be reported as depth there."""
+    z = pattern.z_mask(tof.shape)
+    rows, cols = tof.sites
+    ok = np.ones(rows.size, bool)
+    for dr in range(tof.block):
+        for dc in range(tof.block):
+            ok &= z[rows + dr, cols + dc]
+    if not ok.all():
+        i = int(np.flatnonzero(~ok)[0])
+        raise ValueError(f"tof: the measurement at ({rows[i]}, {cols[i]}) (a {tof.block}x"
+                         f"{tof.block} block) covers a colour pixel of pattern "
+                         f"{pattern.name!r}; ToF measurements sit on its Z sites")
 
 
 class _Adopt:
@@ -348,27 +367,48 @@ class ToFTaps:
     meta: dict = field(default_factory=dict)
 
     def __post_init__(self):
-        # own copies, read-only (as RawFrame): the caller's arrays stay the caller's
-        taps = _owned(self.taps)
+        # own copies, read-only (as RawFrame): the caller's arrays stay the caller's; every
+        # field checked here, where a file or a caller gives it (complex or text taps, float
+        # or repeated sites, 0 or 99 bits failed later or gave silent results)
+        if self.taps is None:
+            raise TypeError("taps: expected an array of shape (F, 4, n_sites), got None")
+        taps = _owned(self.taps, "taps")
         if taps.ndim != 3 or taps.shape[1] != 4:
             raise ValueError(f"taps: expected shape (F, 4, n_sites), got {taps.shape}")
+        if taps.dtype.kind not in "iuf":
+            raise TypeError(f"taps: expected real numbers, got dtype {taps.dtype}")
+        check_finite(taps, "taps")
         F, _, n = taps.shape
-        freqs = np.array(self.frequencies, np.float64)
+        freqs = check_frequencies(self.frequencies, "frequencies", unique=True)
         if freqs.shape != (F,):
             raise ValueError(f"frequencies: expected {F} values, got shape {freqs.shape}")
-        rows, cols = (np.array(a, np.int64) for a in self.sites)
-        per_site = {k: _owned(getattr(self, k)) for k in ("depth_true", "valid", "saturated")}
+        rows, cols = check_sites(self.sites, "sites")
+        per_site = {k: _owned(getattr(self, k), k) for k in ("depth_true", "valid",
+                                                             "saturated")}
         for name, a in (("sites", rows), ("sites", cols), *per_site.items()):
             if np.shape(a) != (n,):
                 raise ValueError(f"{name}: expected shape ({n},), got {np.shape(a)}")
-        if self.block not in (1, 2):
-            raise ValueError(f"block: expected 1 or 2, got {self.block!r}")
-        shape = tuple(int(v) for v in self.shape)
-        if len(shape) != 2 or min(shape) < self.block:
+        if n and per_site["depth_true"].dtype.kind not in "iuf":
+            raise TypeError(f"depth_true: expected metres, got dtype "
+                            f"{per_site['depth_true'].dtype}")
+        for k in ("valid", "saturated"):
+            if n and per_site[k].dtype != np.bool_:
+                raise TypeError(f"{k}: expected a bool array, got dtype {per_site[k].dtype}")
+        block = check_block(self.block, "block")
+        object.__setattr__(self, "block", block)
+        object.__setattr__(self, "bit_depth", check_bit_depth(self.bit_depth, "bit_depth"))
+        if not isinstance(self.sensor, ToFSensor):
+            raise TypeError(f"sensor: expected a ToFSensor, got {type(self.sensor).__name__}")
+        shape = as_list(self.shape, "shape", "a (rows, cols) frame shape")
+        if len(shape) != 2 or not all(isinstance(v, (int, np.integer)) and
+                                      not isinstance(v, bool) for v in shape) \
+                or min(shape) < block:
             raise ValueError(f"shape: expected a (rows, cols) frame shape, got {self.shape!r}")
+        shape = tuple(int(v) for v in shape)
+        object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
         # every site's block inside the frame (a file could say anything)
         for name, a, size in (("rows", rows, shape[0]), ("cols", cols, shape[1])):
-            if n and (a.min() < 0 or a.max() > size - self.block):
+            if n and (a.min() < 0 or a.max() > size - block):
                 raise ValueError(f"sites: {name} span [{a.min()}, {a.max()}], outside the "
                                  f"{shape[0]}x{shape[1]} frame")
         for a in (taps, freqs, rows, cols, *per_site.values()):
@@ -409,7 +449,8 @@ class ToFTaps:
         -------
         ndarray, shape ``self.shape``
         """
-        v = np.asarray(values)
+        v = as_array(values, "values")
+        fill = check_fill(fill)
         if v.shape != (self.n_sites,):
             raise ValueError(f"values: expected shape ({self.n_sites},), got {v.shape}")
         out = np.full(self.shape, fill, dtype=np.result_type(v.dtype, np.min_scalar_type(fill)))

@@ -85,7 +85,7 @@ def check_spectrum(obj, name, ncols):
 def check_tof_contrast(obj, nfreq):
     """``modulation_contrast``: one number, or one per frequency (stored as a tuple)."""
     value = obj.modulation_contrast
-    if isinstance(value, (tuple, list, np.ndarray)):
+    if isinstance(value, (tuple, list)) or (isinstance(value, np.ndarray) and value.ndim):
         values = tuple(check_number(v, "ToFSensor.modulation_contrast", lo=0, hi=1, lo_open=True)
                        for v in value)
         if len(values) != nfreq:

@@ -353,8 +353,8 @@ class ToFSensor(_Readout):
         store_number(self, "ambient_irradiance", lo=0, hi=1e4)
         if self.pixel_pitch_um is not None:
             store_number(self, "pixel_pitch_um", lo=0.1, hi=100)
-        if self.z_block is not None and (isinstance(self.z_block, bool)
-                                         or self.z_block not in (1, 2)):
+        if self.z_block is not None and (isinstance(self.z_block, bool) or not isinstance(
+                self.z_block, (int, np.integer)) or self.z_block not in (1, 2)):
             raise ValueError(f"ToFSensor.z_block: expected None, 1 or 2, got {self.z_block!r}")
         check_readout(self)
         check_pixel_noise(self)

@@ -30,7 +30,8 @@ __all__ = ["check_image", "check_finite", "check_number", "check_int", "check_fl
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
            "check_processes", "check_thread_stacks", "thread_limit", "parse_shape",
            "merge_params", "integer_bits", "check_entries", "check_path", "check_meta",
-           "as_array", "as_list", "FRAME_DTYPES", "FLOAT_DTYPES",
+           "as_array", "as_list", "check_frequencies", "check_sites", "check_block",
+           "check_fill", "FRAME_DTYPES", "FLOAT_DTYPES",
            "MAX_WORKERS", "TYPE_RANGE_BITS"]
 
 #: dtypes a raw frame may hold; kernels read and write them directly.
@@ -194,6 +195,70 @@ def as_list(value, name, what="a sequence"):
                         f"{value!r:.40}") from None
 
 
+def check_frequencies(values, name="frequencies", *, unique=False):
+    """Modulation frequencies: a non-empty 1-D sequence of real numbers >= 1 Hz, as float64
+    (finite; ``unique``: none twice). A complex or text value was converted or dropped,
+    an empty list or 0 Hz gave an infinite unambiguous range, a negative one a number."""
+    f = as_array(values, name)
+    if f.dtype.kind not in "iuf" or f.dtype == np.bool_:
+        raise TypeError(f"{name}: expected real numbers in Hz, got dtype {f.dtype}")
+    f = f.astype(np.float64).reshape(-1) if f.ndim <= 1 else f
+    if f.ndim != 1 or f.size == 0:
+        raise ValueError(f"{name}: expected one or more frequencies in Hz, got shape "
+                         f"{np.shape(values)}")
+    if not np.all(np.isfinite(f)) or f.min() < 1 or f.max() > 1e18:
+        raise ValueError(f"{name}: expected frequencies in [1 Hz, 1e18 Hz], got "
+                         f"{f.tolist()!r:.80}")
+    if unique and np.unique(f).size != f.size:
+        raise ValueError(f"{name}: a frequency is given twice in {f.tolist()}; each "
+                         "frequency is one measurement")
+    return f
+
+
+def check_block(block, name="block"):
+    """The size of a Z pixel in colour pixels: 1 (Mask1) or 2 (Mask2), as ``int``."""
+    if isinstance(block, (bool, np.bool_)) or not isinstance(block, numbers.Integral) \
+            or block not in (1, 2):
+        raise ValueError(f"{name}: expected 1 or 2, got {block!r:.40}")
+    return int(block)
+
+
+def check_sites(sites, name="sites"):
+    """Measurement sites: a pair (rows, cols) of 1-D integer arrays of one length, >= 0,
+    no site twice; as two int64 arrays. Float indices were truncated, a repeated site made
+    two measurements of one pixel."""
+    pair = as_list(sites, name, "(rows, cols) arrays of pixel indices")
+    if len(pair) != 2:
+        raise TypeError(f"{name}: expected (rows, cols), got {len(pair)} arrays")
+    out = []
+    for label, a in zip(("rows", "cols"), pair):
+        arr = as_array(a, name)
+        if arr.ndim != 1:
+            raise ValueError(f"{name}: expected two arrays of the same shape (n,), got "
+                             f"{label} of shape {arr.shape}")
+        if arr.size and (arr.dtype.kind not in "iu"):
+            raise TypeError(f"{name}: expected integer pixel indices, got {label} of dtype "
+                            f"{arr.dtype}")
+        if arr.size and (arr.min() < 0 or arr.max() >= 1 << 31):
+            raise ValueError(f"{name}: {label} span [{arr.min()}, {arr.max()}]; expected "
+                             "pixel indices >= 0")
+        out.append(arr.astype(np.int64))
+    rows, cols = out
+    if rows.shape != cols.shape:
+        raise ValueError(f"{name}: expected two arrays of the same shape (n,), got "
+                         f"{rows.shape} and {cols.shape}")
+    if rows.size > 1:
+        key = rows * (int(cols.max()) + 1) + cols
+        if not np.all(key[1:] > key[:-1]):                # row-major: no repeat, O(n)
+            order = np.argsort(key, kind="stable")
+            same = np.flatnonzero(key[order][1:] == key[order][:-1])
+            if same.size:
+                i = order[same[0]]
+                raise ValueError(f"{name}: the site ({rows[i]}, {cols[i]}) is given twice; "
+                                 "each measurement has a site of its own")
+    return rows, cols
+
+
 def merge_params(cls, params=None, overrides=None, *, name="params", caller=None, what=None):
     """The parameters of one call: ``params`` with keyword ``overrides`` of its fields.
 
@@ -345,6 +410,16 @@ def check_number(value, name, *, lo=None, hi=None, lo_open=False, hi_open=False,
     return v
 
 
+def check_fill(value, name="fill"):
+    """The value of the pixels that have none: a real number, NaN and inf included (they
+    mark those pixels), or a bool (a map of flags); returned as it is. An array or text is
+    a TypeError naming ``name``."""
+    if not isinstance(value, (bool, np.bool_)) and _real(value) is None:
+        raise TypeError(f"{name}: expected a number (NaN marks pixels without a value), got "
+                        f"{value!r:.40}")
+    return value
+
+
 def check_int(value, name, *, lo=None, hi=None):
     """An integer (Python or NumPy; bool and floats rejected) within [lo, hi], as ``int``.
 
@@ -390,10 +465,7 @@ def check_entries(value, name, key=None, strings=True):
     """
     if isinstance(value, str):
         value = tuple(s.strip() for s in value.split(",") if s.strip())
-    elif isinstance(value, (bytes, Mapping)) or not hasattr(value, "__iter__"):
-        raise TypeError(f"{name}: expected a sequence of names or a comma-separated string, "
-                        f"got {type(value).__name__}")
-    value = tuple(value)
+    value = tuple(as_list(value, name, "a sequence of names or a comma-separated string"))
     if not value:
         raise ValueError(f"{name}: expected at least one entry, got none")
     seen = {}

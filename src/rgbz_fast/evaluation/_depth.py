@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
-from .._validate import check_entries, check_number, check_seed
+from .._validate import check_entries, check_number, check_path, check_seed
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate_tof
 from ..tof import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
                    FLAG_SATURATED, ToFISP, calibrate)
@@ -280,7 +280,7 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
-    if data is not None and not Path(data).is_dir():
+    if data is not None and not check_path(data, "data").is_dir():
         raise FileNotFoundError(f"data: {data} is not a folder")
     out = {}
     limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)

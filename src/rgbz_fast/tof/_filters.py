@@ -58,7 +58,8 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_int, check_number, check_workers
+from .._validate import (as_array, check_block, check_int, check_number, check_sites,
+                         check_workers)
 
 __all__ = ["SiteGrid", "denoise_phasors_bilateral", "flying_pixels"]
 
@@ -83,12 +84,8 @@ class SiteGrid:
     """
 
     def __init__(self, sites, block=1):
-        rows, cols = (np.asarray(a, np.int64) for a in sites)
-        if rows.ndim != 1 or rows.shape != cols.shape:
-            raise ValueError(f"sites: expected two arrays of the same shape (n,), got "
-                             f"{rows.shape} and {cols.shape}")
-        if block not in (1, 2):
-            raise ValueError(f"block: expected 1 or 2, got {block!r}")
+        rows, cols = check_sites(sites, "sites")           # integers, none twice
+        block = check_block(block, "block")
         self.n = rows.size
         self.block = block
         if not self._row_major(rows, cols):
@@ -347,14 +344,15 @@ def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0
     >>> bool(flying_pixels(slope, np.full(24, 0.002), (rows, cols)).any())
     False
     """
-    d = np.asarray(depth, np.float64)
-    s = np.asarray(sigma, np.float64)
+    d = as_array(depth, "depth", dtype=np.float64)
+    s = as_array(sigma, "sigma", dtype=np.float64)
+    k = check_number(k, "k", lo=0)
     grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
     if d.shape != (grid.n,) or s.shape != (grid.n,):
         raise ValueError(f"depth, sigma: expected shape ({grid.n},), got {d.shape} and "
                          f"{s.shape}")
     step = check_number(step, "step", lo=0)
-    ok = np.ones(grid.n, bool) if usable is None else np.asarray(usable, bool)
+    ok = np.ones(grid.n, bool) if usable is None else as_array(usable, "usable", dtype=bool)
     if ok.shape != (grid.n,):
         raise ValueError(f"usable: expected shape ({grid.n},), got {ok.shape}")
     R, C = grid.shape
