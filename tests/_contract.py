@@ -208,6 +208,8 @@ class Files:
         (d / "deep.json").write_text("[" * 100000 + "]" * 100000)
         (d / "unknown.json").write_text('{"*": {"phse": "RGGB"}}')
         (d / "binary.json").write_bytes(b"\xff\xfe\x00{")
+        # a file no decoder knows under a known suffix
+        (d / "junk.bmp").write_bytes(b"junk" * 8)
 
     def __truediv__(self, name):
         return self.d / name

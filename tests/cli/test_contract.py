@@ -214,6 +214,15 @@ CLI_ROWS = [
       "sections: unknown ['speed']"),
     C("cli.config-argument", ("config", "--nope"), "unrecognized arguments: --nope",
       usage=True),
+    C("cli.reconstruct-workers-huge", ("reconstruct", "{d}/ok.npz", "--workers", "5000"),
+      "argument --workers: expected at most 1024 threads, got '5000'", usage=True),
+    C("cli.simulate-long-name", ("simulate", "{d}/" + "a" * 296 + ".png"), "scene: "),
+    C("cli.evaluate-long-out", ("evaluate", "--dataset", "{d}/ds", "--out",
+                                "{d}/" + "o" * 300), "--out: "),
+    C("cli.train-long-dataset", ("train", "--dataset", "{d}/" + "a" * 300, "--out",
+                                 "{d}/f.npz"), "--dataset: "),
+    C("cli.evaluate-fifo", ("evaluate", "--dataset", "{d}/fifo.tif"),
+      "dataset: {d}/fifo.tif is a FIFO (named pipe), not a regular file"),
 ]
 
 test_cli_contract = cli_tests(CLI_ROWS)

@@ -133,6 +133,13 @@ ROWS = [
       lambda f: ev.evaluate([rio.ImageSource("i", str(f / "int32.tif"))], progress=False,
                             metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",)),
       ValueError, "dataset: {d}/int32.tif holds int32 samples"),
+    R("evaluation.evaluate-cache-file", "evaluate(cache_dir=a file)",
+      lambda f: ev.evaluate(f / "ds", cache_dir=f / "file.txt", progress=False), ValueError,
+      "cache_dir: {d}/file.txt exists and is not a folder"),
+    R("evaluation.evaluate-fifo", "evaluate(folder_dataset(a FIFO))",
+      lambda f: ev.evaluate(rio.folder_dataset(f / "fifo.tif"), progress=False, processes=1,
+                            metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",)),
+      ValueError, "dataset: {d}/fifo.tif is a FIFO (named pipe), not a regular file"),
 ]
 
 test_api_contract = api_tests(ROWS)

@@ -288,6 +288,15 @@ ROWS = [
     R("io.ImageSource-grey", "ImageSource(grey .png).load()",
       lambda f: rio.ImageSource("g", str(f / "grey.png")).load(), ValueError,
       "dataset: {d}/grey.png is a grey image (16x16)"),
+    R("io.read_image-unidentified", "read_image(junk under .bmp)",
+      lambda f: rio.read_image(f / "junk.bmp"), ValueError,
+      "path: cannot read {d}/junk.bmp as an image (not an image format this library reads"),
+    R("io.read_image-long-name", "read_image(a 300-byte name)",
+      lambda f: rio.read_image(f / ("a" * 296 + ".png")), ValueError,
+      "path: a name in "),
+    R("io.atomic_write-folder", "atomic_write(a folder, 'x')",
+      lambda f: rio.atomic_write(f / "empty", "x"), ValueError,
+      "path: {d}/empty is a folder; expected a file to write"),
 ]
 
 test_api_contract = api_tests(ROWS)
@@ -324,7 +333,7 @@ def test_atomic_write_failure_keeps_the_old_file(tmp_path, monkeypatch):
     rio.atomic_write(target, '{"old": true}')
     with pytest.raises(TypeError):
         rio.atomic_write(target, 12345)                # not str or bytes
-    with pytest.raises(IsADirectoryError):
+    with pytest.raises(ValueError, match="path: .* is a folder"):
         rio.atomic_write(tmp_path, "x")                # the target is a folder
 
     def replace_fails(src, dst):

@@ -77,6 +77,17 @@ positive_float = number(float, lambda v: 0 < v < float("inf"), "a positive numbe
 non_negative_float = number(float, lambda v: 0 <= v < float("inf"), "a number >= 0")
 
 
+def thread_count(text):
+    """Threads: a positive integer up to what check_workers accepts (MAX_WORKERS), so that
+    no count reaches C as an integer too large for it."""
+    from .._validate import MAX_WORKERS
+
+    v = positive_int(text)
+    if v > MAX_WORKERS:
+        raise argparse.ArgumentTypeError(f"expected at most {MAX_WORKERS} threads, got {text!r}")
+    return v
+
+
 def off_or(parse):
     """An argparse type: ``off`` (None: the test is not made), else ``parse(text)``."""
     def parse_or_off(text):
@@ -133,7 +144,7 @@ def clip_level(text):
 def add_workers(p, what="threads of each kernel call",
                 default="all cores; evaluate: 1 per process when it runs several"):
     """``--workers N``: the one thread-count option; a count below 1 is a usage error."""
-    p.add_argument("--workers", type=positive_int, default=None, metavar="N",
+    p.add_argument("--workers", type=thread_count, default=None, metavar="N",
                    help=f"{what} (default: {default})")
 
 
@@ -329,9 +340,18 @@ def command_line(args):
 
 def output_folder(out):
     """``out`` when it can be an output folder (it may not exist yet), else a CliError."""
-    if out is not None and out.exists() and not out.is_dir():
+    if out is not None and _exists(out, "--out") and not out.is_dir():
         raise CliError(f"--out: {str(out)!r} exists and is not a folder")
     return out
+
+
+def _exists(path, flag):
+    """``path.exists()``, or a CliError naming ``flag`` when the path cannot even be looked
+    up (a name longer than the file system allows, a loop of links)."""
+    try:
+        return path.exists()
+    except OSError as exc:
+        raise CliError(f"{flag}: {str(path)[:80]!r}: {exc.strerror or exc}") from None
 
 
 def _same_file_key(path):
@@ -399,7 +419,7 @@ def file_label(pattern):
 def must_exist(paths, prefix="path: "):
     """A CliError naming the first path of ``paths`` that does not exist."""
     for f in paths:
-        if not f.exists():
+        if not _exists(f, prefix.rstrip(": ").rstrip() or "path"):
             raise CliError(f"{prefix}{f} does not exist")
 
 

@@ -6,6 +6,7 @@ import hashlib
 import json
 import os
 import re
+import signal
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
@@ -281,8 +282,6 @@ def _worker_init():
     the writes in progress have cleaned up -- the pool would otherwise catch it too, and
     keep the worker running until it is killed (10 s later, its temporary files left).
     """
-    import signal
-
     def terminated(signum, frame):
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
         raise _WorkerStopped(128 + signum)
@@ -304,7 +303,9 @@ def _stop_pool(ex):
         if p.is_alive():                                 # pragma: no cover - stuck in C
             p.kill()
             p.join(timeout=10)
-            killed += 1
+            # join can return as the worker's pipes close, a moment before the kernel lets
+            # it be reaped: only an exit by SIGKILL is a worker that did not stop itself
+            killed += p.exitcode == -signal.SIGKILL
     ex.shutdown(wait=True, cancel_futures=True)
     if killed:                                           # pragma: no cover - stuck in C
         import warnings
@@ -406,7 +407,11 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         raise ValueError("dataset: image names must be unique")
     pooled = scheduler is not None or (nproc > 1 and len(dataset) > 1)
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
-    cache_dir = str(check_path(cache_dir, "cache_dir")) if cache_dir is not None else None
+    if cache_dir is not None:
+        cache_dir = check_path(cache_dir, "cache_dir")
+        if cache_dir.exists() and not cache_dir.is_dir():
+            raise ValueError(f"cache_dir: {cache_dir} exists and is not a folder")
+        cache_dir = str(cache_dir)
     skip_bad = check_flag(skip_bad, "skip_bad")
     progress = check_flag(progress, "progress")
     tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]

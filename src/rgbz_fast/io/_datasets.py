@@ -121,7 +121,7 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     p = check_path(path, "dataset")
     if not p.exists():
         raise ParameterError("dataset", f"{p} does not exist")
-    if p.is_file():
+    if not p.is_dir():                             # a file, or a FIFO the reader will refuse
         files = [p]
     else:
         files = sorted(f for f in p.iterdir()

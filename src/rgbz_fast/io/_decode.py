@@ -125,9 +125,14 @@ def decode_pnm(data):
 
 def decode_pillow(data):
     """Any other format Pillow reads (JPEG, BMP, WebP, GIF...), first frame, as samples."""
-    from PIL import Image
+    from PIL import Image, UnidentifiedImageError
 
-    with Image.open(io.BytesIO(data)) as im:
+    try:
+        im = Image.open(io.BytesIO(data))
+    except UnidentifiedImageError:                   # its message shows a memory address
+        raise ValueError("not an image format this library reads (PNG, TIFF, JPEG, BMP, "
+                         "WebP, GIF, PGM/PPM)") from None
+    with im:
         mode = im.mode
         if mode in _PIL_REFUSED:
             _refuse(_PIL_REFUSED[mode])

@@ -250,6 +250,8 @@ def atomic_write(path, data):
     if not isinstance(data, (str, bytes, bytearray, memoryview)):
         raise TypeError(f"data: expected str or bytes, got {type(data).__name__}")
     path = check_path(path, "path")
+    if path.is_dir():                              # os.replace would name the temporary file
+        raise ParameterError("path", f"{path} is a folder; expected a file to write")
     path.parent.mkdir(parents=True, exist_ok=True)
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
     stem = _temporary_stem(path)
