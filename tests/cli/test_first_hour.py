@@ -55,3 +55,91 @@ def test_depth_of_a_staggered_tile_runs_with_every_denoise(tmp_path, capsys, den
     assert depth.shape == frame.shape and valid.size > 0
     # the two planes of the scene: 3740 px * 0.16 m / (60 or 110 + 270)
     assert np.all((valid > 1.45) & (valid < 1.95))
+
+
+# --------------------------------------------------------------------------- raw datasets
+def _advice_keys(line):
+    """The --raw-options keys an error line asks for (the quoted words before the file)."""
+    import re
+
+    head = line.split("in --raw-options FILE")[0]
+    return re.findall(r'"(\w+)"', head.split("pass ", 1)[1].replace('"ROWSxCOLS"', ""))
+
+
+def test_evaluate_asks_for_raw_settings_in_words_it_accepts(tmp_path, capsys):
+    """A one-channel 16-bit Bayer mosaic is not 'a grey image' (and --grey does not score it
+    as one); a headerless file's settings are asked for, all at once, as --raw-options keys;
+    giving exactly those keys, shapes written ROWSxCOLS, evaluates both."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    # a camera's raw: linear light through unbalanced colour filters, 10 bits over black 16
+    lin = skimage.data.astronaut()[:96, :96].astype(float) / 255 * [0.45, 1.0, 0.6]
+    bayer = rz.mosaic(lin, rz.bayer("GRBG"), bit_depth=10).data + 16
+    iio.imwrite(ds / "bayer16.png", bayer.astype(np.uint16))
+    (ds / "frame.raw").write_bytes(bayer.astype("<u2").tobytes())
+    argv = ["evaluate", "--dataset", str(ds), "--methods", "sg", "--patterns", "mask1",
+            "--metrics", "cfa_psnr", "--no-plots", "--no-cache", "--quiet", "--out",
+            str(tmp_path / "out")]
+    for extra in ([], ["--grey"]):
+        assert main(argv + extra + ["--skip-bad"]) == 2             # nothing left to evaluate
+        lines = capsys.readouterr().err.splitlines()
+        png = next(x for x in lines if "skipped bayer16" in x)
+        raw = next(x for x in lines if "skipped frame" in x)
+        assert "grey image" not in png and "--grey" not in png
+        assert "a raw Bayer mosaic, not a grey photograph" in png
+        assert "--shape" not in raw and "--phase" not in raw
+        assert _advice_keys(png) == ["phase", "black_level", "white_level", "bit_depth_in"]
+        assert _advice_keys(raw) == ["shape", "phase", "black_level", "white_level",
+                                     "bit_depth_in"]
+    truth = {"shape": "96x96", "phase": "GRBG", "black_level": 16, "white_level": 1023 + 16}
+    options = {"bayer16.png": {k: truth[k] for k in _advice_keys(png)[:3]},
+               "frame.raw": {k: truth[k] for k in _advice_keys(raw)[:4]}}
+    (tmp_path / "raw.json").write_text(json.dumps(options))
+    assert main(argv + ["--raw-options", str(tmp_path / "raw.json")]) == 0
+    out = json.loads((tmp_path / "out" / "results.json").read_text())
+    psnr = {r["image"]: r["value"] for r in out["rows"]}
+    assert set(psnr) == {"bayer16", "frame"} and psnr["bayer16"] == psnr["frame"] < 60
+
+
+def test_grey_photographs_still_take_the_grey_advice(tmp_path, capsys):
+    """A real one-channel photograph (its 2x2 sites alike) keeps the --grey advice, which
+    works."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "camera.png", skimage.data.camera()[:96, :96])
+    argv = ["evaluate", "--dataset", str(ds), "--methods", "sg", "--patterns", "mask1",
+            "--metrics", "cfa_psnr", "--no-plots", "--no-cache", "--quiet", "--out",
+            str(tmp_path / "out")]
+    assert main(argv) == 2
+    assert "is a grey image (96x96); a colour sensor needs colour: pass --grey" in \
+        capsys.readouterr().err
+    assert main(argv + ["--grey"]) == 0
+
+
+def test_evaluate_on_the_shared_raw_folder(tmp_path, capsys):
+    """The README's raw folder: the advice for each file, followed, evaluates all three."""
+    raw = shared_path("raw")
+    pytest.importorskip("rawpy")
+    argv = ["evaluate", "--dataset", str(raw), "--methods", "sg", "--patterns", "mask1",
+            "--metrics", "cfa_psnr", "--no-plots", "--no-cache", "--quiet", "--out",
+            str(tmp_path / "out")]
+    assert main(argv + ["--grey", "--skip-bad"]) == 0
+    err = capsys.readouterr().err
+    assert "skipped halide_bayer_small" in err and "skipped openisp_test" in err
+    assert "--grey" not in err and "--shape" not in err
+    options = {"halide_bayer_small.png": {"phase": "GRBG", "black_level": 25,
+                                          "white_level": 1023},
+               "openisp_test.RAW": {"shape": "1080x1920", "phase": "RGGB", "black_level": 0,
+                                    "bit_depth_in": 10}}
+    (tmp_path / "raw.json").write_text(json.dumps(options))
+    assert main(argv + ["--raw-options", str(tmp_path / "raw.json")]) == 0
+    rows = json.loads((tmp_path / "out" / "results.json").read_text())["rows"]
+    psnr = {r["image"]: r["value"] for r in rows}
+    assert set(psnr) == {"colorchart", "halide_bayer_small", "openisp_test"}
+    assert all(25 < v < 60 for v in psnr.values())

@@ -286,15 +286,28 @@ def flag(setting):
     return FLAG_WORDS.get(setting.name, "--" + setting.name.replace("_", "-"))
 
 
+def raw_option_words(setting):
+    """The command line's words for a setting asked for in the ``--raw-options`` file: its
+    JSON key ("phase"), and the file itself with an example entry."""
+    if setting.name == "raw_options":
+        name = setting.python.removeprefix("raw_options[").removesuffix("]")
+        return f'--raw-options FILE, a JSON file {{{name}: {{"phase": ..., ...}}}}'
+    if setting.name == "shape":
+        return '"shape": "ROWSxCOLS"'
+    return f'"{setting.name}"'
+
+
 def explain(exc):
     """The message of an error in command-line words: the settings a library error asks for
-    are given as flags (pass --phase, not phase=). ``exc`` may also be an evaluation's skip
-    reason, which carries the error it came from."""
+    are given as flags (pass --phase, not phase=), or as keys of the --raw-options file when
+    the error asks for them there. ``exc`` may also be an evaluation's skip reason, which
+    carries the error it came from."""
     from ..io import ParameterError
 
     error = getattr(exc, "error", None) or exc
     if isinstance(error, ParameterError):
-        return " ".join(error.render(flag).split())
+        spell = raw_option_words if "raw_options" in error.settings else flag
+        return " ".join(error.render(spell).split())
     return str(exc)
 
 
