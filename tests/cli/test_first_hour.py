@@ -143,3 +143,47 @@ def test_evaluate_on_the_shared_raw_folder(tmp_path, capsys):
     psnr = {r["image"]: r["value"] for r in rows}
     assert set(psnr) == {"colorchart", "halide_bayer_small", "openisp_test"}
     assert all(25 < v < 60 for v in psnr.values())
+
+
+# --------------------------------------------------------------------------- progress
+def _stderr_lines(err):
+    """The lines a terminal would end up showing (tqdm rewrites a line with carriage
+    returns)."""
+    return [part for line in err.splitlines() for part in line.split("\r") if part.strip()]
+
+
+def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys):
+    """A simulated sweep counts its frames, the fit says it is running and for how long;
+    --quiet shows neither, and stdout holds only the summary line."""
+    argv = ["calibrate", "--simulate", "--shape", "24x32", "--positions", "20",
+            "--frames-per-position", "1", "--out", str(tmp_path / "cal.npz")]
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    lines = _stderr_lines(err)
+    assert any(x.startswith("calibrate: simulating the sweep: 100%") and "28/28" in x
+               for x in lines)                                    # 20 walls + 8 dark frames
+    assert any(x.startswith("calibrate: fitting 20 frames ... 00:") for x in lines)
+    assert out.startswith("20 frames -> ") and out.count("\n") == 1
+    assert main(argv + ["--quiet"]) == 0
+    assert capsys.readouterr() == ("", "")
+
+
+def test_train_says_it_is_fitting_after_reading_the_images(tmp_path, capsys):
+    """The bar counts the images; the fit that follows shows its running time, after the
+    bar (not a bar stuck at 100 %); --quiet shows nothing."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    data = tmp_path / "images"
+    data.mkdir()
+    iio.imwrite(data / "a.png", skimage.data.astronaut()[:64, :96])
+    iio.imwrite(data / "b.png", skimage.data.coffee()[:64, :96])
+    argv = ["train", "--dataset", str(data), "--pattern", "mask1", "--out",
+            str(tmp_path / "f.npz"), "--strength", "1", "--coherence", "1"]
+    assert main(argv) == 0
+    lines = _stderr_lines(capsys.readouterr().err)
+    read = max(i for i, x in enumerate(lines) if x.startswith("train: 100%"))
+    fit = min(i for i, x in enumerate(lines) if x.startswith("train: fitting the filters ..."))
+    assert read < fit
+    assert main(argv + ["--quiet"]) == 0
+    assert capsys.readouterr().err == ""
