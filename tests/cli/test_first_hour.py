@@ -187,3 +187,43 @@ def test_train_says_it_is_fitting_after_reading_the_images(tmp_path, capsys):
     assert read < fit
     assert main(argv + ["--quiet"]) == 0
     assert capsys.readouterr().err == ""
+
+
+# --------------------------------------------------------------------------- crop figure
+def _crop_box(png):
+    """The region a crop figure enlarges, as it records it: (row, col, rows, cols)."""
+    from PIL import Image
+
+    from rgbz_fast.evaluation._reports import CROP_KEY
+
+    with Image.open(png) as im:
+        return tuple(int(v) for v in im.info[CROP_KEY].split(","))
+
+
+def test_evaluate_crop_figure_shows_structure_on_the_dng(tmp_path, capsys):
+    """The automatic crop of the DNG is where an edge is, not the dark noisy strip at the top
+    (rows 0:64 before); --zoom chooses another, and one outside the image is refused."""
+    dng = shared_path("raw", "colorchart.dng")
+    pytest.importorskip("rawpy")
+    from rgbz_fast.evaluation import EvalConfig, image_frames
+    from rgbz_fast.io import folder_dataset
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    (ds / dng.name).symlink_to(dng)
+    argv = ["evaluate", "--dataset", str(ds), "--patterns", "mask1", "--methods", "bilinear,sg",
+            "--metrics", "cpsnr", "--no-cache", "--quiet", "--out", str(tmp_path / "out")]
+    assert main(argv) == 0
+    y0, x0, h, w = _crop_box(tmp_path / "out" / "crops_colorchart.png")
+    config = EvalConfig(patterns="mask1", methods=("sg",))
+    frame, ref = image_frames(folder_dataset(ds)[0].load(), rz.mask1("RGGB"), config)
+    luma = config.colour_isp().render(ref, "RGGB", bit_depth=frame.bit_depth).mean(axis=2)
+    window = luma[y0:y0 + h, x0:x0 + w]
+    assert (h, w) == (64, 64)
+    assert window.std() > 0.5 * luma.std()                              # structure, not flat
+    assert window.mean() > np.percentile(luma, 25)                      # not a dark strip
+    assert main(argv + ["--zoom", "600,800,48"]) == 0
+    assert _crop_box(tmp_path / "out" / "crops_colorchart.png") == (600, 800, 48, 48)
+    assert main(argv + ["--zoom", "1150,0"]) == 2
+    assert capsys.readouterr().err.strip().startswith(
+        "rgbz-fast evaluate: error: --zoom: (1150, 0, 64, 64) is not inside the 1156x1734")
