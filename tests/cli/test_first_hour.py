@@ -227,3 +227,52 @@ def test_evaluate_crop_figure_shows_structure_on_the_dng(tmp_path, capsys):
     assert main(argv + ["--zoom", "1150,0"]) == 2
     assert capsys.readouterr().err.strip().startswith(
         "rgbz-fast evaluate: error: --zoom: (1150, 0, 64, 64) is not inside the 1156x1734")
+
+
+# --------------------------------------------------------------------------- tradeoff plot
+def _is_grey(rgba):
+    r, g, b = rgba[:3]
+    return abs(r - g) < 1e-6 and abs(g - b) < 1e-6 and 0.05 < r < 0.95
+
+
+def test_tradeoff_plot_legend_hides_no_point_labels_do_not_collide_grey_means_nothing(
+        tmp_path, capsys):
+    """tradeoff.png, as `rgbz-fast tradeoff` writes it: the legend sits outside every panel,
+    the speed axis's labels do not overlap, and no point or legend marker is grey (grey was
+    both a method and 'any method' in the shape legend)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.colors import to_rgba
+
+    from rgbz_fast._devtools.plots import tradeoff_figure
+
+    out = tmp_path / "t"
+    assert main(["tradeoff", "--quick", "--limit", "1", "--methods", "bilinear,bi,sg,learned",
+                 "--out", str(out), "--quiet"]) == 0
+    assert (out / "tradeoff.png").read_bytes()[:4] == b"\x89PNG"
+    res = json.loads((out / "tradeoff.json").read_text())
+    # the points of a full run: some on the Pareto front, speeds over two decades
+    for i, r in enumerate(res["rows"]):
+        r["pareto"] = i % 3 == 0
+        r["mpix_s"] = r["mpix_s_lo"] = r["mpix_s_hi"] = 150.0 * 1.25 ** i
+    fig = tradeoff_figure(res)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    (legend,) = fig.legends
+    box = legend.get_window_extent(renderer)
+    for ax in fig.axes:
+        assert not box.overlaps(ax.get_window_extent(renderer))
+        labels = [t.get_window_extent(renderer) for t in ax.get_xticklabels()
+                  if t.get_visible() and t.get_text()]
+        labels.sort(key=lambda b: b.x0)
+        assert len(labels) >= 2
+        assert all(a.x1 < b.x0 for a, b in zip(labels, labels[1:]))
+        for coll in ax.collections:
+            for c in list(coll.get_facecolors()) + list(coll.get_edgecolors()):
+                assert not _is_grey(c)
+    for h in legend.legend_handles:
+        for c in (h.get_markerfacecolor(), h.get_markeredgecolor()):
+            assert c in ("none", "None") or not _is_grey(to_rgba(c))
+    texts = [t.get_text() for t in legend.get_texts()]
+    assert {"colour: method", "fill: domain", "shape: precision, exp"} <= set(texts)

@@ -13,7 +13,7 @@ import io
 
 import numpy as np
 
-__all__ = ["depth_preview", "tradeoff_plot"]
+__all__ = ["depth_preview", "tradeoff_plot", "tradeoff_figure"]
 
 
 def _pyplot():
@@ -90,48 +90,99 @@ def depth_preview(res, title, scale=None, truth_known=None):
 #: marker of each (precision, exponential) of the trade-off rows
 _MARKERS = {("float64", "libm"): "o", ("float32", "libm"): "s", ("float64", "fast"): "^",
             ("float32", "fast"): "D", ("float64", "-"): "o", ("float32", "-"): "s"}
+#: one colour per method (tab10 without its grey, which would read as 'no colour')
+_METHOD_COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+                   "#e377c2", "#bcbd22", "#17becf")
+
+
+def _log_axis_numbers(ax):
+    """A log x axis labelled with plain numbers at 1, 2 and 5 per decade (and no minor
+    labels), so that neighbouring labels never run together."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.xaxis.set_minor_formatter(NullFormatter())
 
 
 def tradeoff_plot(res):
-    """Pareto plot of :func:`rgbz_fast._devtools.tradeoff.run_tradeoff`'s result (PNG bytes).
+    """Pareto plot of :func:`rgbz_fast._devtools.tradeoff.run_tradeoff`'s result (PNG bytes):
+    :func:`tradeoff_figure` drawn."""
+    _, plt = _pyplot()
+    return _png(tradeoff_figure(res), plt, bbox_inches="tight")
+
+
+def tradeoff_figure(res):
+    """The matplotlib figure of :func:`tradeoff_plot`.
 
     One panel per pattern: Mpix/s (log) against mean CFA PSNR. Each row is a
-    point with its IQR bar, coloured by method (and domain), shaped by its
-    precision and exponential, outlined when on the front; the front is a
-    dashed line.
+    point with its IQR bar: its colour is the method, its fill the domain
+    (filled: intensity, open: colour difference), its shape the precision and
+    exponential; the points of the Pareto front are ringed in black and joined
+    by a dashed line. One legend, beside the panels, says all four.
     """
-    from .tradeoff import NO_EXP, PATTERNS, QUICK_NOTE, series, threads_text
+    from matplotlib.lines import Line2D
+
+    from .tradeoff import NO_EXP, PATTERNS, QUICK_NOTE, threads_text
 
     _, plt = _pyplot()
-    pats = sorted({r["pattern"] for r in res["rows"]},
+    rows = res["rows"]
+    pats = sorted({r["pattern"] for r in rows},
                   key=lambda p: PATTERNS.index(p) if p in PATTERNS else 99)
-    fig, axes = plt.subplots(1, len(pats), figsize=(6.5 * len(pats), 5), squeeze=False)
-    names = list(dict.fromkeys(series(r) for r in res["rows"]))
-    cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    colours = {m: cycle[i % len(cycle)] for i, m in enumerate(names)}
+    methods = list(dict.fromkeys(r["method"] for r in rows))
+    colours = {m: _METHOD_COLOURS[i % len(_METHOD_COLOURS)] for i, m in enumerate(methods)}
+    fig, axes = plt.subplots(1, len(pats), figsize=(5.6 * len(pats) + 2.4, 5), squeeze=False)
     for ax, p in zip(axes[0], pats):
-        sub = [r for r in res["rows"] if r["pattern"] == p]
+        sub = [r for r in rows if r["pattern"] == p]
         for r in sub:
-            ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=_MARKERS[(r["precision"], r["exp"])],
-                       color=colours[series(r)], s=50,
-                       edgecolor="k" if r["pareto"] else "none", zorder=3)
-            ax.plot([r["mpix_s_lo"], r["mpix_s_hi"]], [r["cfa_psnr"]] * 2, lw=1, alpha=0.4,
-                    color=colours[series(r)], zorder=2)     # IQR of the runs
+            col = colours[r["method"]]
+            cd = r.get("domain") == "colour_difference"
+            mk = _MARKERS[(r["precision"], r["exp"])]
+            if r["pareto"]:
+                ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=mk, s=150, facecolor="none",
+                           edgecolor="k", linewidth=1.4, zorder=2)
+            ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=mk, s=50,
+                       facecolor="white" if cd else col, edgecolor=col,
+                       linewidth=1.6 if cd else 0.5, zorder=3)
+            ax.plot([r["mpix_s_lo"], r["mpix_s_hi"]], [r["cfa_psnr"]] * 2, lw=1, alpha=0.5,
+                    color=col, zorder=1)                              # IQR of the runs
         front = sorted((r for r in sub if r["pareto"]), key=lambda r: r["mpix_s"])
         ax.plot([r["mpix_s"] for r in front], [r["cfa_psnr"] for r in front], "k--", lw=1,
-                zorder=1, label="Pareto front")
-        for m in names:
-            if any(series(r) == m for r in sub):
-                ax.scatter([], [], color=colours[m], label=m)
-        for (prec, exp), mk in _MARKERS.items():
-            if exp != NO_EXP:
-                ax.scatter([], [], marker=mk, color="grey", label=f"{prec}, exp={exp}")
+                zorder=1)
         ax.set_xscale("log")
+        _log_axis_numbers(ax)
         ax.set_xlabel(f"speed, Mpix/s, best of {res['repeat']} ({threads_text(res)}, "
                       f"{res['speed_frame'][1]}x{res['speed_frame'][0]} frame)")
         ax.set_ylabel(f"mean CFA PSNR, dB ({res['dataset']}, {len(res['images'])} images)")
         ax.set_title(p + (f" ({QUICK_NOTE})" if res.get("quick") else ""))
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, loc="lower left")
+        ax.grid(True, which="major", alpha=0.3)
+        ax.grid(True, which="minor", alpha=0.1)
+
+    def point(label, marker="o", face="k", edge="k", width=0.5, size=7):
+        return Line2D([], [], ls="none", marker=marker, markersize=size, markerfacecolor=face,
+                      markeredgecolor=edge, markeredgewidth=width, label=label)
+
+    def header(text):
+        return Line2D([], [], ls="none", label=text)
+
+    handles = [header("colour: method")]
+    handles += [point(m, face=colours[m], edge=colours[m]) for m in methods]
+    handles += [header("fill: domain"), point("intensity"),
+                point("colour difference", face="white", width=1.6)]
+    handles += [header("shape: precision, exp")]
+    shapes = sorted({(r["precision"], r["exp"]) for r in rows},
+                    key=lambda k: list(_MARKERS).index(k))
+    handles += [point(f"{prec}" + (f", exp={exp}" if exp != NO_EXP else ""),
+                      marker=_MARKERS[(prec, exp)], face="white", width=1.2)
+                for prec, exp in shapes if exp != NO_EXP or not any(
+                    (prec, e) in shapes for e in ("libm", "fast"))]
+    handles += [header("Pareto front"),
+                Line2D([], [], ls="--", color="k", lw=1, marker="o", markersize=10,
+                       markerfacecolor="none", markeredgecolor="k", label="ringed, dashed")]
+    legend = fig.legend(handles=handles, loc="center left", bbox_to_anchor=(1.0, 0.5),
+                        fontsize=8, frameon=False, handletextpad=0.6)
+    for text, h in zip(legend.get_texts(), handles):
+        if h.get_marker() in (None, "None", "none", "") and h.get_linestyle() in ("None", "none"):
+            text.set_fontweight("bold")                               # a header
     fig.tight_layout()
-    return _png(fig, plt)
+    return fig
