@@ -9,7 +9,7 @@ import json
 import numpy as np
 import pytest
 
-from _support import shared_path  # noqa: E402
+from _support import delta_e2000, reference_srgb, shared_path  # noqa: E402
 
 import rgbz_fast as rz  # noqa: E402
 from rgbz_fast import io as frameio  # noqa: E402
@@ -276,3 +276,59 @@ def test_tradeoff_plot_legend_hides_no_point_labels_do_not_collide_grey_means_no
             assert c in ("none", "None") or not _is_grey(to_rgba(c))
     texts = [t.get_text() for t in legend.get_texts()]
     assert {"colour: method", "fill: domain", "shape: precision, exp"} <= set(texts)
+
+
+# --------------------------------------------------------------------------- colour
+def test_a_spectral_scene_comes_out_in_its_colours(tmp_path, capsys):
+    """simulate a CAVE cube, reconstruct --output srgb: the sensor's white balance and colour
+    matrix travel in the frame file and the PNG is within 3 CIEDE2000 of colour-science's
+    rendering; --colour-matrix none --white-balance grey-world shows what it was (washed
+    out, tinted)."""
+    import imageio.v3 as iio
+
+    cube = shared_path("multispectral", "balloons_ms", "balloons_ms.mat")
+    assert main(["simulate", str(cube), "--out", str(tmp_path / "f"), "--quiet"]) == 0
+    frame_file = tmp_path / "f" / "balloons_ms_mask1.npz"
+    frame = frameio.load_frame(frame_file)
+    assert len(frame.meta["colour_matrix"]) == 9 and len(frame.meta["white_gains"]) == 3
+    s = rz.ColourSensor()
+    scale = (s.photon_flux * s.pixel_area_um2 * s.qe[1] * frame.meta["exposure"]
+             * s.system_gain / (s.white_level - s.black_level))
+    ref = reference_srgb(rz.simulation.load_spectral(cube), scale)
+    argv = ["reconstruct", str(frame_file), "--output", "srgb", "--quiet"]
+    assert main(argv + ["--out", str(tmp_path / "auto")]) == 0
+    assert main(argv + ["--out", str(tmp_path / "plain"), "--colour-matrix", "none",
+                        "--white-balance", "grey-world"]) == 0
+    good = iio.imread(tmp_path / "auto" / "balloons_ms_mask1_sg.png")
+    plain = iio.imread(tmp_path / "plain" / "balloons_ms_mask1_sg.png")
+    assert delta_e2000(ref, good).mean() < 3.0
+    assert delta_e2000(ref, plain).mean() > 6.0
+    with pytest.raises(SystemExit) as e:
+        main(argv + ["--colour-matrix", "1,0,0,0,1,0"])
+    assert e.value.code == 2
+    assert "argument --colour-matrix: expected auto, none or nine" in capsys.readouterr().err
+
+
+def test_a_dng_renders_with_its_as_shot_white_balance_and_colour_matrix(tmp_path):
+    """The DNG's AsShotNeutral (1, 2.477, 1.462) and colour matrix reach the sRGB output by
+    default: the same image as when they are typed on the command line."""
+    import imageio.v3 as iio
+
+    dng = shared_path("raw", "colorchart.dng")
+    pytest.importorskip("rawpy")
+    meta = frameio.read_raw(dng).meta
+    np.testing.assert_allclose(meta["white_gains"], (2.477, 1.0, 2.477 / 1.462),
+                               rtol=2e-3)
+    m = np.reshape(meta["colour_matrix"], (3, 3))
+    np.testing.assert_allclose(m.sum(axis=1), 1.0, atol=1e-5)
+    argv = ["reconstruct", str(dng), "--rgbz-pattern", "mask1", "--downsample", "2",
+            "--output", "srgb", "--quiet"]
+    assert main(argv + ["--out", str(tmp_path / "a")]) == 0
+    typed = ["--white-balance", ",".join(map(repr, meta["white_gains"])),
+             "--colour-matrix", ",".join(map(repr, meta["colour_matrix"]))]
+    assert main(argv + typed + ["--out", str(tmp_path / "b")]) == 0
+    assert main(argv + ["--white-balance", "grey-world", "--colour-matrix", "none",
+                        "--out", str(tmp_path / "c")]) == 0
+    a, b, c = (iio.imread(tmp_path / d / "colorchart_mask1_sg.png") for d in "abc")
+    np.testing.assert_array_equal(a, b)
+    assert np.abs(a.astype(int) - c).mean() > 3

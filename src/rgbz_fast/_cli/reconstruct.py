@@ -42,9 +42,55 @@ def add_parser(sub):
     c.add_reconstruction_options(p, "float32", "arithmetic of the kernel")
     p.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
+    colour = p.add_argument_group("colour of --output srgb")
+    colour.add_argument("--white-balance", type=white_balance, default="auto",
+                        metavar="auto|grey-world|R,G,B",
+                        help="auto: the gains the file records (a camera raw's as-shot white "
+                             "balance, a simulated spectral sensor's white), else grey world "
+                             "on the reference; or three gains (default: auto)")
+    colour.add_argument("--colour-matrix", type=colour_matrix, default="auto",
+                        metavar="auto|none|M11,...,M33",
+                        help="white-balanced camera RGB -> linear sRGB: auto: the matrix the "
+                             "file records (a camera raw's, a simulated spectral sensor's), "
+                             "else none; none: the identity; or nine numbers, row by row "
+                             "(default: auto)")
     add_raw_group(p)
     c.add_run_options(p, DEFAULT_OUT)
     return p
+
+
+def _numbers(text, n, what):
+    import argparse
+
+    try:
+        vals = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        vals = ()
+    if len(vals) != n or not all(abs(v) < float("inf") for v in vals):
+        raise argparse.ArgumentTypeError(f"expected {what}, got {text!r}")
+    return vals
+
+
+def white_balance(text):
+    """auto, grey-world or three positive gains R,G,B."""
+    t = text.strip().lower()
+    if t in ("auto", "grey-world"):
+        return t
+    gains = _numbers(t, 3, "auto, grey-world or three gains R,G,B")
+    if min(gains) <= 0:
+        import argparse
+
+        raise argparse.ArgumentTypeError(f"expected positive gains, got {text!r}")
+    return gains
+
+
+def colour_matrix(text):
+    """auto, none or nine numbers, row by row."""
+    t = text.strip().lower()
+    if t in ("auto", "none"):
+        return t
+    m = _numbers(t, 9, "auto, none or nine comma-separated numbers (the 3x3 matrix row by row)")
+    return (m[0:3], m[3:6], m[6:9])
 
 
 def run(args):
@@ -89,7 +135,7 @@ def run(args):
             if ref is not None:
                 _write_cfa(ref_dest, ref, frame, "reference")
         else:
-            _write_srgb(dest, ref_dest, cfa, frame, args.workers)
+            _write_srgb(dest, ref_dest, cfa, frame, args)
         if not args.quiet:
             extra = ""
             if ref is not None:
@@ -131,19 +177,24 @@ def _write_cfa(dest, cfa, frame, method):
     atomic_write(dest, buf.getvalue())
 
 
-def _write_srgb(dest, ref_dest, cfa, frame, workers):
-    """8-bit sRGB PNGs through the evaluation's colour chain: grey world on the reference when
-    there is one, and the same gains on the reconstruction (Fig. 19)."""
+def _write_srgb(dest, ref_dest, cfa, frame, args):
+    """8-bit sRGB PNGs through the evaluation's colour chain, with the black level, white
+    balance and colour matrix the frame records unless the options say otherwise: the gains
+    found on the reference when there is one are used on the reconstruction (Fig. 19)."""
     from ..io import atomic_write
-    from ..isp import ColourISP
+    from ..isp import ColourISP, recorded_rendering
 
-    chain = ColourISP(precision="float64", black_level=0.0)
+    recorded = recorded_rendering(frame)
+    chain = ColourISP(precision="float64", black_level=recorded["black_level"] or 0.0)
+    gains = recorded["white_gains"] if args.white_balance == "auto" else \
+        None if args.white_balance == "grey-world" else args.white_balance
+    matrix = recorded["colour_matrix"] if args.colour_matrix == "auto" else \
+        None if args.colour_matrix == "none" else args.colour_matrix
+    kw = dict(bit_depth=frame.bit_depth, colour_matrix=matrix, workers=args.workers)
     phase = frame.pattern.bayer_phase
-    gains = None
     if frame.reference is not None:
-        ref_srgb, stages = chain.render(frame.reference, phase, bit_depth=frame.bit_depth,
-                                        workers=workers, return_stages=True)
+        ref_srgb, stages = chain.render(frame.reference, phase, gains=gains, return_stages=True,
+                                        **kw)
         gains = stages["gains"]
         atomic_write(ref_dest, c.png_bytes(ref_srgb))
-    atomic_write(dest, c.png_bytes(chain.render(cfa, phase, bit_depth=frame.bit_depth,
-                                                gains=gains, workers=workers)))
+    atomic_write(dest, c.png_bytes(chain.render(cfa, phase, gains=gains, **kw)))

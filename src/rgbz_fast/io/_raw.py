@@ -110,7 +110,12 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         * ``"clipped"``: ndarray of bool on the output grid, True where the
           pixel is (or, downsampled, any of its binned pixels is) clipped;
         * ``"clipped_count"`` and ``"clipped_fraction"``: pixels at or above
-          ``clip_level`` in the original data as read.
+          ``clip_level`` in the original data as read;
+        * camera raw files, when LibRaw has them: ``"white_gains"`` (the
+          as-shot white balance, R, G, B with G = 1) and ``"colour_matrix"``
+          (nine numbers, row by row: white-balanced camera RGB to linear
+          sRGB), which the colour ISP applies
+          (:func:`rgbz_fast.isp.recorded_rendering`).
 
     Raises
     ------
@@ -267,6 +272,9 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         "clipped_count": n_clipped,
         "clipped_fraction": n_clipped / float(shape_in[0] * shape_in[1]),
     }
+    for key in ("white_gains", "colour_matrix"):       # camera raw files, when LibRaw has them
+        if key in info:
+            meta[key] = info[key]
     if kind == "headerless":
         meta["byteorder"] = byteorder
     return RawFrame(_Adopt(out), bayer(phase), bd, meta=meta)
@@ -353,10 +361,29 @@ def _read_libraw(path, limits):
         wl = raw.white_level
         check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
         data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
+        colour = _camera_colour(raw, desc)
     make, model = _tiff_make_model(blob)
     info = {"phase": letters, "black_level": black, "white_level": float(wl),
-            "make": make, "model": model}
+            "make": make, "model": model, **colour}
     return data, info
+
+
+def _camera_colour(raw, desc):
+    """The as-shot white balance (R, G, B gains, G = 1) and the matrix from white-balanced
+    camera RGB to linear sRGB that LibRaw gives for the file; each left out when LibRaw has
+    none (zeros) for it."""
+    out = {}
+    idx = [desc.index(c) for c in "RGB"]
+    try:
+        wb = np.asarray(raw.camera_whitebalance, np.float64)[idx]
+        if np.all(np.isfinite(wb)) and np.all(wb > 0):
+            out["white_gains"] = tuple(float(v) for v in wb / wb[1])
+        m = np.asarray(raw.color_matrix, np.float64)[:, idx]
+        if m.shape == (3, 3) and np.all(np.isfinite(m)) and np.any(m != 0):
+            out["colour_matrix"] = tuple(float(v) for v in m.ravel())
+    except (AttributeError, IndexError, ValueError):     # an older rawpy, a partial file
+        pass
+    return out
 
 
 def _tiff_make_model(blob):
