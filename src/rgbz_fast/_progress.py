@@ -2,7 +2,8 @@
 ticks every second, so that a long fit never looks like a hang.
 
 tqdm draws it (on stderr, as every progress bar of the package); it is imported only when a
-step is shown.
+step is shown. A step that ends within :data:`DELAY` seconds shows nothing, so a quick step
+or an early error leaves stderr as it was.
 """
 
 from __future__ import annotations
@@ -11,24 +12,35 @@ import sys
 import threading
 from contextlib import contextmanager
 
-__all__ = ["ticking"]
+__all__ = ["ticking", "DELAY"]
+
+#: seconds a step runs before its line appears
+DELAY = 1.0
 
 
 @contextmanager
 def ticking(what, enabled=True):
     """``with ticking("train: fitting the filters"):`` shows ``what`` and the time spent in
-    the block, refreshed every second by a daemon thread; nothing when not ``enabled``."""
+    the block once it has run :data:`DELAY` seconds, refreshed every second by a daemon
+    thread; nothing when not ``enabled``."""
     if not enabled:
         yield
         return
-    from tqdm.auto import tqdm
-
-    bar = tqdm(total=None, desc=what, bar_format="{desc} ... {elapsed}", file=sys.stderr)
     stop = threading.Event()
+    delay = DELAY
 
     def tick():
+        if stop.wait(delay):
+            return
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=None, desc=what, bar_format="{desc} ... {elapsed}", file=sys.stderr,
+                   initial=0)
+        bar.start_t -= delay                 # the time the step has run, not the bar
         while not stop.wait(1.0):
             bar.refresh()
+        bar.refresh()
+        bar.close()
 
     ticker = threading.Thread(target=tick, name="rgbz-fast progress", daemon=True)
     ticker.start()
@@ -37,4 +49,3 @@ def ticking(what, enabled=True):
     finally:
         stop.set()
         ticker.join()
-        bar.close()
