@@ -280,7 +280,8 @@ def test_reconstruct_places_a_z_pattern_on_real_raw(name, tmp_path, capsys):
     for k in ("black_level", "white_level", "bit_depth_in", "clip_level"):
         if k in kw:
             kw[k] = float(kw[k]) if k != "bit_depth_in" else int(kw[k])
-    rgbz, want_ref = frameio.to_rgbz(frameio.read_raw(path, **kw), "mask1")
+    # the command keeps the file's bit depth
+    rgbz, want_ref = frameio.to_rgbz(frameio.read_raw(path, bit_depth="input", **kw), "mask1")
     np.testing.assert_array_equal(ref, want_ref)
     np.testing.assert_array_equal(cfa, rz.reconstruct(rgbz, "sg"))
     z = rgbz.z_mask
@@ -338,7 +339,7 @@ def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
 
 
 def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
-    """A tile pattern names its file with no folder separator (s_ZR-BG.npz), and a simulate
+    """A tile pattern names its file with no folder separator (s_zr-bg.npz), and a simulate
     that fails creates no --out folder."""
     import imageio.v3 as iio
 
@@ -346,8 +347,8 @@ def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
     iio.imwrite(img, np.random.default_rng(0).integers(0, 256, (16, 16, 3), dtype=np.uint8))
     out = tmp_path / "out"
     assert main(["simulate", str(img), "--pattern", "ZR/BG", "--out", str(out), "--quiet"]) == 0
-    assert sorted(p.name for p in out.iterdir()) == ["s_ZR-BG.npz"]
-    assert frameio.load_frame(out / "s_ZR-BG.npz").pattern == rz.Pattern("ZR/BG")
+    assert sorted(p.name for p in out.iterdir()) == ["s_zr-bg.npz"]
+    assert frameio.load_frame(out / "s_zr-bg.npz").pattern == rz.Pattern("ZR/BG")
     grey = tmp_path / "g.png"
     iio.imwrite(grey, np.arange(256, dtype=np.uint8).reshape(16, 16))
     out2 = tmp_path / "out2" / "deeper"

@@ -152,9 +152,13 @@ def _stderr_lines(err):
     return [part for line in err.splitlines() for part in line.split("\r") if part.strip()]
 
 
-def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys):
-    """A simulated sweep counts its frames, the fit says it is running and for how long;
-    --quiet shows neither, and stdout holds only the summary line."""
+def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys, monkeypatch):
+    """A simulated sweep counts its frames, the fit says it is running and for how long
+    (here from the start: a step shows after a second); --quiet shows neither, and stdout
+    holds only the summary line."""
+    import rgbz_fast._progress
+
+    monkeypatch.setattr(rgbz_fast._progress, "DELAY", 0.0)
     argv = ["calibrate", "--simulate", "--shape", "24x32", "--positions", "20",
             "--frames-per-position", "1", "--out", str(tmp_path / "cal.npz")]
     assert main(argv) == 0
@@ -168,9 +172,12 @@ def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys):
     assert capsys.readouterr() == ("", "")
 
 
-def test_train_says_it_is_fitting_after_reading_the_images(tmp_path, capsys):
+def test_train_says_it_is_fitting_after_reading_the_images(tmp_path, capsys, monkeypatch):
     """The bar counts the images; the fit that follows shows its running time, after the
     bar (not a bar stuck at 100 %); --quiet shows nothing."""
+    import rgbz_fast._progress
+
+    monkeypatch.setattr(rgbz_fast._progress, "DELAY", 0.0)
     import imageio.v3 as iio
     import skimage.data
 
@@ -332,3 +339,92 @@ def test_a_dng_renders_with_its_as_shot_white_balance_and_colour_matrix(tmp_path
     a, b, c = (iio.imread(tmp_path / d / "colorchart_mask1_sg.png") for d in "abc")
     np.testing.assert_array_equal(a, b)
     assert np.abs(a.astype(int) - c).mean() > 3
+
+
+# --------------------------------------------------------------------------- outputs
+def test_a_14_bit_dng_is_written_back_with_14_bits(tmp_path):
+    """reconstruct keeps a raw file's bit depth unless --bit-depth says otherwise."""
+    import tifffile
+
+    dng = shared_path("raw", "colorchart.dng")
+    pytest.importorskip("rawpy")
+    argv = ["reconstruct", str(dng), "--rgbz-pattern", "mask1", "--quiet", "--out"]
+    assert main(argv + [str(tmp_path / "a")]) == 0
+    assert main(argv + [str(tmp_path / "b"), "--bit-depth", "11"]) == 0
+    for folder, bits in (("a", 14), ("b", 11)):
+        with tifffile.TiffFile(tmp_path / folder / "colorchart_mask1_sg_cfa.tif") as tf:
+            assert json.loads(tf.pages[0].description)["bit_depth"] == bits
+            data = tf.asarray()
+        assert (1 << (bits - 1)) <= data.max() < (1 << bits)
+
+
+def test_a_second_evaluation_leaves_no_file_of_the_first(tmp_path, capsys):
+    """Reports of a previous run into the same folder that this run does not write are
+    removed; files the evaluation never wrote (and its cache) stay."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "a.png", skimage.data.astronaut()[:64, :64])
+    iio.imwrite(ds / "b.png", skimage.data.coffee()[:64, :64])
+    out = tmp_path / "out"
+    argv = ["evaluate", "--dataset", str(ds), "--patterns", "mask1", "--quiet", "--out",
+            str(out)]
+    assert main(argv + ["--methods", "bilinear,sg", "--metrics", "cfa_psnr,ssim"]) == 0
+    first = {p.name for p in out.iterdir()}
+    assert {"bars_ssim.png", "paired_ssim.png", "crops_a.png", "reports.txt"} <= first
+    (out / "notes.md").write_text("mine")
+    assert main(argv + ["--methods", "sg", "--metrics", "cfa_psnr", "--table-image", "b"]) == 0
+    second = {p.name for p in out.iterdir()}
+    assert second == {"results.csv", "results.json", "summary.md", "table_b.md",
+                      "bars_cfa_psnr.png", "reports.txt", "notes.md", "cache"}
+    capsys.readouterr()
+
+
+def test_output_names_follow_one_scheme(tmp_path, capsys):
+    """<input>_<pattern>_<method>[_<product>]: lower-case fields, '-' inside a field."""
+    scene = rgbd_folder(tmp_path / "sc")
+    frames = tmp_path / "f"
+    for pattern in ("bayer", "ZR/BG", "mask2"):
+        assert main(["simulate", str(scene), "--pattern", pattern, "--out", str(frames),
+                     "--quiet"]) == 0
+    assert sorted(p.name for p in frames.iterdir()) == ["sc_bayer-grbg.npz", "sc_mask2.npz",
+                                                        "sc_zr-bg.npz"]
+    out = tmp_path / "o"
+    assert main(["reconstruct", str(frames / "sc_zr-bg.npz"), "--method", "SG", "--out",
+                 str(out), "--quiet"]) == 0
+    assert main(["reconstruct", str(frames / "sc_mask2.npz"), "--method", "edi_line",
+                 "--output", "srgb", "--out", str(out), "--quiet"]) == 0
+    assert main(["reconstruct", str(frames / "sc_bayer-grbg.npz"), "--rgbz-pattern", "mask1",
+                 "--out", str(out), "--quiet"]) == 0
+    assert sorted(p.name for p in out.iterdir()) == [
+        "sc_bayer-grbg_mask1_reference_cfa.tif", "sc_bayer-grbg_mask1_sg_cfa.tif",
+        "sc_mask2_edi-line.png", "sc_mask2_reference.png",
+        "sc_zr-bg_reference_cfa.tif", "sc_zr-bg_sg_cfa.tif"]
+
+
+def test_gitignore_lists_the_default_output_folders():
+    from rgbz_fast._cli import depth, evaluate, reconstruct, simulate
+
+    from _support import REPO
+
+    ignored = (REPO / ".gitignore").read_text().split()
+    for command in (simulate, reconstruct, depth, evaluate):
+        assert f"/{command.DEFAULT_OUT}/" in ignored
+    assert "/tof_calibration.npz" in ignored
+
+
+def test_a_quick_step_or_an_early_error_shows_no_progress_line(tmp_path, capsys):
+    """A step shorter than a second prints nothing: an error stays the only line."""
+    from rgbz_fast._progress import ticking
+
+    with ticking("quick: fitting"):
+        pass
+    assert capsys.readouterr().err == ""
+    frame = tmp_path / "plain.npz"
+    frameio.save_frame(frame, rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
+    assert main(["calibrate", str(frame), str(frame), "--distances", "1,2", "--out",
+                 str(tmp_path / "cal.npz")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("rgbz-fast calibrate: error: sweep:")

@@ -351,9 +351,16 @@ def unique_outputs(pairs, out):
             seen[name] = src
 
 
-def file_label(pattern):
-    """A pattern's name as a file-name part: ZR/BG -> ZR-BG (no folder separator)."""
-    return re.sub(r"[^A-Za-z0-9_.-]", "-", pattern.name)
+def file_label(name):
+    """A pattern's or a method's name as one field of an output file name.
+
+    Every command names its outputs ``<input>_<pattern>_<method>[_<product>].<ext>``:
+    fields joined by ``_``, each lower-case with ``-`` inside it, so a field never splits
+    (``bayer_grbg`` -> ``bayer-grbg``, the tile ``ZR/BG`` -> ``zr-bg``, ``SG`` -> ``sg``).
+    ``name``: a string or anything with a ``name`` (a Pattern).
+    """
+    text = getattr(name, "name", name)
+    return re.sub(r"[^a-z0-9.-]", "-", str(text).strip().lower())
 
 
 def must_exist(paths, prefix="path: "):

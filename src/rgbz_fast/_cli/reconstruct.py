@@ -38,7 +38,8 @@ def add_parser(sub):
                            "sites but no rgbz-fast header, with --bit-depth (default: none; "
                            "frames from simulate carry theirs)")
     c.add_bit_depth(p, None, "bits of a plain TIFF/PNG mosaic given with --pattern; for a raw "
-                             "file, the working bit depth it is scaled to (default: 11)")
+                             "file, the working bit depth it is scaled to (default: the file's "
+                             "own: 14 for a 14-bit DNG)")
     c.add_reconstruction_options(p, "float32", "arithmetic of the kernel")
     p.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
@@ -110,15 +111,17 @@ def run(args):
     from_file = raw_options_file(args.raw_options)
     c.must_exist(args.frames)
     out = c.output_folder(args.out)
-    label = args.rgbz_pattern and f"_{args.rgbz_pattern}"
+    label = args.rgbz_pattern and f"_{c.file_label(args.rgbz_pattern)}"
+    method = c.file_label(args.method)
     ext = "_cfa.tif" if args.output == "cfa" else ".png"
     names = [(f, f"{f.stem}{label or ''}") for f in args.frames]
-    c.unique_outputs([(f, [f"{n}_{args.method}{ext}", f"{n}_reference{ext}"]) for f, n in names],
-                     out)
+    c.unique_outputs([(f, [f"{n}_{method}{ext}", f"{n}_reference{ext}"]) for f, n in names], out)
     for f, stem in names:
         kw, explicit = raw_kwargs(args, f, from_file)
-        frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth, **c.limits(args),
-                           **kw)
+        # a raw file keeps its own bit depth unless --bit-depth says otherwise
+        bit_depth = args.bit_depth if args.bit_depth is not None or args.pattern is not None \
+            else "input"
+        frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args), **kw)
         if explicit and (frame.meta.get("reader") is None
                          or frame.meta.get("source") != str(f)):
             flag = "--" + next(iter(explicit)).replace("_", "-").replace("clip-level",
@@ -128,10 +131,10 @@ def run(args):
         frame = _with_z_sites(frame, f, args.rgbz_pattern)
         cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
         ref = frame.reference
-        dest = out / f"{stem}_{args.method}{ext}"
+        dest = out / f"{stem}_{method}{ext}"
         ref_dest = out / f"{stem}_reference{ext}" if ref is not None else None
         if args.output == "cfa":
-            _write_cfa(dest, cfa, frame, args.method)
+            _write_cfa(dest, cfa, frame, args.method.strip().lower())
             if ref is not None:
                 _write_cfa(ref_dest, ref, frame, "reference")
         else:

@@ -24,7 +24,10 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     The figures, per metric: ``bars_<metric>.png`` (mean ± std per method and
     pattern) and, with several methods and images, ``paired_<metric>.png``
     (each method minus the baseline, image by image; see
-    :func:`paired_chart`). Returns the list of files written. ``table_image`` defaults to kodim09
+    :func:`paired_chart`). Returns the list of files written. The folder's
+    ``reports.txt`` lists them; the files a previous run listed there and
+    this one does not write are removed, so that a folder never mixes two
+    runs (nothing else in it is touched). ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
 
@@ -48,6 +51,7 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
                          f"({', '.join(images)})")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
+    previous = _previous_reports(out)
     written = []
 
     def put(name, data):
@@ -69,7 +73,31 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         if crop_source is not None:
             put(f"crops_{_safe(crop_source.name)}.png",
                 crop_figure(crop_source, results.config, box=crop_box))
+    names = [p.name for p in written]
+    for name in sorted(previous - set(names)):          # a previous run's, not rewritten
+        stale = out / name
+        if stale.is_file() and not stale.is_symlink():
+            stale.unlink()
+    atomic_write(out / MANIFEST, MANIFEST_HEAD + "".join(n + "\n" for n in names))
     return written
+
+
+#: the list of the files an evaluation wrote into its folder, so that the next run into
+#: that folder removes those it does not write again (and nothing else)
+MANIFEST = "reports.txt"
+MANIFEST_HEAD = ("# The reports rgbz-fast evaluate wrote here. The next evaluation into this "
+                 "folder\n# replaces them and removes those it does not write again.\n")
+
+
+def _previous_reports(out):
+    """The file names the manifest of a previous run lists (plain names in ``out`` only)."""
+    try:
+        text = (out / MANIFEST).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return set()
+    names = {line.strip() for line in text.splitlines()}
+    return {n for n in names if n and not n.startswith("#") and Path(n).name == n
+            and n not in (".", "..", MANIFEST)}
 
 
 def _figure_png(fig, metadata=None):

@@ -73,8 +73,11 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         stored, LSB-aligned.
     byteorder : {"<", ">"}
         Headerless files only: little- (default) or big-endian uint16.
-    bit_depth : int
-        Working bit depth of the frame (default 11, as in the paper).
+    bit_depth : int or "input"
+        Working bit depth of the frame (default 11, as in the paper), or
+        ``"input"``: the file's own, ``bit_depth_in`` when given, else the
+        bits of its white level (14 for a white level of 15000), so that a
+        frame written back keeps the precision of the file.
     downsample : int
         1 (default) or a binning factor k >= 2: each colour plane is binned
         k x k by averaging, i.e. each output Bayer quad is the mean of a k x k
@@ -169,9 +172,10 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     """
     path = Path(os.fspath(path))
     kind = _reader_for(path, reader)
-    bd = check_bit_depth(bit_depth)
+    own_depth = isinstance(bit_depth, str) and bit_depth == "input"
+    bd = None if own_depth else check_bit_depth(bit_depth)
     out_dtype = check_dtype(dtype, _OUT_DTYPES)
-    if out_dtype == np.uint8 and bd > 8:
+    if out_dtype == np.uint8 and bd is not None and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     k = _check_downsample(downsample)
     if bit_depth_in is not None:
@@ -213,6 +217,10 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     if np.any(white <= black):
         raise ValueError(f"white_level: {tuple(white.ravel())} must exceed black_level "
                          f"{tuple(black.ravel())} at every quad site")
+    if own_depth:
+        bd = _input_bits(bit_depth_in or info.get("bit_depth_in"), white)
+        if out_dtype == np.uint8 and bd > 8:
+            raise ValueError(f"dtype: uint8 cannot hold the {bd}-bit data of {path.name}")
     if clip_level is None:
         clip = white
     else:
@@ -421,6 +429,14 @@ _SETTINGS = {
     "white_level": ("its white level", (Setting("white_level"), " (or ", Setting("bit_depth_in"),
                                         "; the white level is then 2^bits - 1)")),
 }
+
+
+def _input_bits(bit_depth_in, white):
+    """The bits of the data as stored: ``bit_depth_in``, else those of the largest white
+    level (15000 -> 14), within 1..16."""
+    if bit_depth_in is not None:
+        return int(bit_depth_in)
+    return int(min(16, max(1, np.ceil(np.log2(float(np.max(white)) + 1)))))
 
 
 def _check_settings(path, kind, info, given):
