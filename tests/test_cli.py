@@ -370,7 +370,7 @@ def test_depth_subcommand_writes_depth_flags_and_preview(tmp_path, capsys):
     out = tmp_path / "depth"
     assert main(["depth", str(frames / "aloe_mask2.npz"), "--out", str(out)]) == 0
     line = capsys.readouterr().out
-    assert "% valid; ground truth unknown at 3.8 % of them" in line
+    assert "% valid; flagged: " in line and "ground truth unknown at 3.8 % of them" in line
     frame = frameio.load_frame(frames / "aloe_mask2.npz")
     res = rz.tof_depth(frame.tof)
     depth = tifffile.imread(out / "aloe_mask2_depth.tif")
@@ -380,7 +380,7 @@ def test_depth_subcommand_writes_depth_flags_and_preview(tmp_path, capsys):
     with tifffile.TiffFile(out / "aloe_mask2_depth.tif") as tf:
         meta = json.loads(tf.pages[0].description)
     assert meta["unit"] == "m" and 0.03 < meta["truth_unknown_fraction"] < 0.04
-    flags = iio.imread(out / "aloe_mask2_depth_flags.png")
+    flags = tifffile.imread(out / "aloe_mask2_depth-flags.tif")
     assert flags.dtype == np.uint8 and set(np.unique(flags)) <= set(range(32)) | {255}
     z = frame.z_mask
     assert np.all(flags[~z] == 255) and np.mean(flags[z] == 0) > 0.75   # 255: no measurement

@@ -75,7 +75,7 @@ CLI_ROWS = [
     C("cli.evaluate-workers", ("evaluate", "--dataset", "{d}/ds", "--workers", "0"),
       "argument --workers: expected a positive integer, got '0'", usage=True),
     C("cli.evaluate-image-small", ("evaluate", "--dataset", "{d}/small.png", "--processes", "1",
-                                   "--no-cache", "--no-plots"), "crop: crop=8 leaves"),
+                                   "--no-cache", "--no-plots"), "crop: --crop 8 leaves"),
     C("cli.evaluate-corrupt", ("evaluate", "--dataset", "{d}/ds_corrupt", "--processes", "1",
                                "--no-cache", "--metrics", "cfa_psnr"),
       "dataset: cannot read {d}/ds_corrupt/a.png"),

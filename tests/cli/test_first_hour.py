@@ -428,3 +428,80 @@ def test_a_quick_step_or_an_early_error_shows_no_progress_line(tmp_path, capsys)
                  str(tmp_path / "cal.npz")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("rgbz-fast calibrate: error: sweep:")
+
+
+# --------------------------------------------------------------------------- words
+def test_depth_says_why_measurements_are_flagged_in_a_legible_map(tmp_path, capsys):
+    """The summary gives each flag's share; the flags PNG is a map of reasons with a legend
+    (measurements over their footprint, not a dot grid); the bits stay in a TIFF."""
+    import imageio.v3 as iio
+    import tifffile
+
+    scene = rgbd_folder(tmp_path / "sc")
+    assert main(["simulate", str(scene), "--pattern", "mask1", "--out", str(tmp_path / "f"),
+                 "--quiet"]) == 0
+    out = tmp_path / "d"
+    assert main(["depth", str(tmp_path / "f" / "sc_mask1.npz"), "--out", str(out)]) == 0
+    line = capsys.readouterr().out
+    frame = frameio.load_frame(tmp_path / "f" / "sc_mask1.npz")
+    res = rz.tof_depth(frame.tof)
+    share = np.mean((res.flags & rz.tof.FLAG_LOW_SIGNAL) != 0)
+    assert share > 0 and f"flagged: {100 * share:.1f} % low signal" in line
+    bits = tifffile.imread(out / "sc_mask1_depth-flags.tif")
+    np.testing.assert_array_equal(bits[frame.z_mask], res.flags)
+    assert np.all(bits[~frame.z_mask] == 255)
+    with tifffile.TiffFile(out / "sc_mask1_depth-flags.tif") as tf:
+        assert json.loads(tf.pages[0].description)["flags"]["2"] == "low signal"
+    figure = iio.imread(out / "sc_mask1_depth-flags.png")
+    assert figure.ndim == 3 and figure.shape[2] in (3, 4)
+    # over the map, neighbouring pixels mostly agree: no grid of isolated dots
+    from rgbz_fast._devtools.plots import FLAG_CATEGORIES
+
+    h, w = figure.shape[:2]
+    crop = figure[h // 4: h // 2, w // 4: 3 * w // 4, :3].astype(int)
+    colours = {tuple(int(c[i:i + 2], 16) for i in (1, 3, 5)) for _, c in FLAG_CATEGORIES}
+    on_map = np.array([[tuple(p) in colours for p in row] for row in crop])
+    assert on_map.mean() > 0.9
+    same = np.all(crop[:, 1:] == crop[:, :-1], axis=2).mean()
+    assert same > 0.8
+
+
+def test_errors_speak_in_flags_not_python(tmp_path, capsys):
+    """A library message's name=value advice reads as the command's flags."""
+    for argv, want, unwanted in (
+            (["evaluate", "--noise", "--no-linearise", "--limit", "1"],
+             "the sensor model (--noise) takes linear light; --no-linearise is a noise-free "
+             "protocol", "linearise=False"),
+            (["evaluate", "--optics", "--no-linearise", "--limit", "1"], "it needs --linearise",
+             "linearise=True"),
+            (["evaluate", "--crop", "300", "--limit", "1", "--metrics", "ssim"],
+             "crop: --crop 300 leaves", "crop=300")):
+        assert main(argv + ["--out", str(tmp_path / "o"), "--quiet", "--no-cache"]) == 2
+        err = capsys.readouterr().err
+        assert want in err and unwanted not in err
+    scene = rgbd_folder(tmp_path / "sc")
+    assert main(["simulate", str(scene), "--pattern", "ZRGR/BGBG/GRZR/BGBG", "--out",
+                 str(tmp_path / "f"), "--quiet"]) == 0                 # no filters ship for it
+    assert main(["reconstruct", str(tmp_path / "f" / "sc_zrgr-bgbg-grzr-bgbg.npz"), "--method",
+                 "learned",
+                 "--out", str(tmp_path / "o"), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.strip().endswith("fit some with rgbz-fast train and pass --filters FILE")
+    assert main(["calibrate", "--simulate", "--out", str(tmp_path)]) == 2
+    assert "--out: " in capsys.readouterr().err
+
+
+def test_bench_speaks_to_its_reader(capsys):
+    """bench --help and a quick run carry no markup, module path or Python syntax."""
+    import re
+
+    with pytest.raises(SystemExit):
+        main(["bench", "--help"])
+    text = capsys.readouterr().out
+    assert main(["bench", "--quick", "--quiet", "--repeat", "1", "--kernels", "bilinear",
+                 "--no-reference"]) == 0
+    text += capsys.readouterr().out
+    jargon = [r"``", r":(func|mod|class):", r"rgbz_fast\.", r"_devtools", r"\*\*", r"\bTrue\b",
+              r"\bFalse\b", r"tracemalloc", r"\bnp\.", r"RawFrame", r"in brackets"]
+    found = [j for j in jargon if re.search(j, text)]
+    assert not found, found

@@ -20,7 +20,7 @@ from ..io import MAX_BYTES_ENV, MAX_PIXELS_ENV
 __all__ = ["CliError", "Formatter", "EPILOG", "command_parser", "explain", "command_line",
            "output_folder", "unique_outputs", "file_label"]
 
-EPILOG = ("Every option's default is shown in brackets. The user guide, the measured "
+EPILOG = ("Every option's default is shown in parentheses. The user guide, the measured "
           "results and the API reference are in the project's documentation.")
 
 
@@ -278,7 +278,8 @@ def add_raw_options_file(p, note=""):
 #: how the command line gives the settings that library errors ask for, where it is not
 #: the parameter's own flag (--black-level for black_level)
 FLAG_WORDS = {"shape": "--shape ROWSxCOLS", "grey": "--grey",
-              "reader": "give the file a camera raw extension"}
+              "reader": "give the file a camera raw extension",
+              "filters": "--filters FILE", "train": "rgbz-fast train"}
 
 
 def flag(setting):
@@ -297,18 +298,45 @@ def raw_option_words(setting):
     return f'"{setting.name}"'
 
 
-def explain(exc):
+def explain(exc, parser=None):
     """The message of an error in command-line words: the settings a library error asks for
     are given as flags (pass --phase, not phase=), or as keys of the --raw-options file when
-    the error asks for them there. ``exc`` may also be an evaluation's skip reason, which
-    carries the error it came from."""
+    the error asks for them there; with the command's ``parser``, the ``name=value`` words
+    of other library messages become the command's flags (:func:`flag_words`). ``exc`` may
+    also be an evaluation's skip reason, which carries the error it came from."""
     from ..io import ParameterError
 
     error = getattr(exc, "error", None) or exc
     if isinstance(error, ParameterError):
         spell = raw_option_words if "raw_options" in error.settings else flag
         return " ".join(error.render(spell).split())
-    return str(exc)
+    return str(exc) if parser is None else flag_words(str(exc), parser)
+
+
+def flag_words(text, parser):
+    """``text`` with each ``name=value`` whose name is an option of ``parser`` written as
+    that option: ``noise=True`` -> ``--noise``, ``linearise=False`` -> ``--no-linearise``,
+    ``crop=300`` -> ``--crop 300``, ``filters=`` -> ``--filters``. Other words are left as
+    they are (a library message that names a parameter the command does not have)."""
+    options = {}
+    for action in parser._actions:
+        longs = [o for o in action.option_strings if o.startswith("--")]
+        if longs:
+            options[action.dest] = (longs, action)
+
+    def spell(m):
+        name, value = m.group(1), m.group(2)
+        longs, action = options[name]
+        if isinstance(action, argparse.BooleanOptionalAction) and value in ("True", "False"):
+            return longs[0] if value == "True" else longs[-1]
+        if isinstance(action, argparse._StoreTrueAction) and value in ("True", "False"):
+            return longs[0] if value == "True" else f"no {longs[0]}"
+        return f"{longs[0]} {value}" if value else longs[0]
+
+    if not options:
+        return text
+    names = "|".join(sorted(map(re.escape, options), key=len, reverse=True))
+    return re.sub(rf"(?<![\w.-])({names})=([^\s,;)]*)", spell, text)
 
 
 # --------------------------------------------------------------------------- running
@@ -337,6 +365,13 @@ def output_folder(out):
     """``out`` when it can be an output folder (it may not exist yet), else a CliError."""
     if out is not None and out.exists() and not out.is_dir():
         raise CliError(f"--out: {str(out)!r} exists and is not a folder")
+    return out
+
+
+def output_file(out):
+    """``out`` when it can be the one file a command writes, else a CliError."""
+    if out.is_dir():
+        raise CliError(f"--out: {str(out)!r} is a folder; give the name of the file to write")
     return out
 
 

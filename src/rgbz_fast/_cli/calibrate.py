@@ -64,6 +64,7 @@ def run(args):
     from ..io import load_frame
     from ..tof import calibrate
 
+    c.output_file(args.out)
     if args.simulate:
         if args.frames:
             raise c.CliError("give frame files or --simulate, not both")

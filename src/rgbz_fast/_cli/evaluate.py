@@ -115,7 +115,8 @@ def run(args):
                    workers=args.workers, scheduler=args.scheduler, progress=not args.quiet,
                    skip_bad=args.skip_bad)
     for name, why in res.skipped:
-        print(f"rgbz-fast evaluate: skipped {name}: {c.explain(why)}", file=sys.stderr)
+        print(f"rgbz-fast evaluate: skipped {name}: {c.explain(why, args.parser)}",
+              file=sys.stderr)
     if not res.rows:
         raise c.CliError(f"dataset: none of the {len(dataset)} image(s) could be evaluated")
     crop_src = None

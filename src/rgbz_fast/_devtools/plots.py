@@ -1,5 +1,5 @@
-"""The figures of the commands: the depth preview of ``rgbz-fast depth`` and the Pareto plot
-of ``rgbz-fast tradeoff``.
+"""The figures of the commands: the depth preview and the flags map of ``rgbz-fast depth`` and
+the Pareto plot of ``rgbz-fast tradeoff``.
 
 Each function returns PNG bytes, which the command writes with
 :func:`rgbz_fast.io.atomic_write`. matplotlib is imported here only, and only
@@ -13,7 +13,7 @@ import io
 
 import numpy as np
 
-__all__ = ["depth_preview", "tradeoff_plot", "tradeoff_figure"]
+__all__ = ["depth_preview", "depth_flags_figure", "tradeoff_plot", "tradeoff_figure"]
 
 
 def _pyplot():
@@ -84,6 +84,67 @@ def depth_preview(res, title, scale=None, truth_known=None):
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8,
               frameon=False, ncol=2)
     ax.set_title(title, fontsize=9)
+    return _png(fig, plt, bbox_inches="tight")
+
+
+#: the reasons a measurement is flagged: (label, flag bit of rgbz_fast.tof, colour)
+FLAG_REASONS = (("saturated", "FLAG_SATURATED", "#e7298a"),
+                ("low signal", "FLAG_LOW_SIGNAL", "#7570b3"),
+                ("inconsistent frequencies", "FLAG_INCONSISTENT", "#d95f02"),
+                ("flying pixel", "FLAG_FLYING", "#e6ab02"),
+                ("out of range", "FLAG_OUT_OF_RANGE", "#a6761d"))
+#: the categories of the flags figure: valid, each reason alone, several at once
+FLAG_CATEGORIES = ((("valid", "#1b9e77"),) + tuple((label, c) for label, _, c in FLAG_REASONS)
+                   + (("several reasons", "#000000"),))
+
+
+def flag_bits():
+    """{label: bit} of :data:`FLAG_REASONS`, from :mod:`rgbz_fast.tof`."""
+    from .. import tof
+
+    return {label: int(getattr(tof, name)) for label, name, _ in FLAG_REASONS}
+
+
+def depth_flags_figure(res, title):
+    """Why each Z measurement is flagged, as a map with a legend (PNG bytes).
+
+    Each measurement is painted over its footprint (every pixel shows the
+    nearest measurement, as the preview does), in one colour per reason:
+    valid, each flag bit alone, or several at once. The legend gives each
+    category's share of the measurements. The flag bits themselves are in the
+    command's flags TIFF.
+    """
+    matplotlib, plt = _pyplot()
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+    from scipy import ndimage
+
+    flags = np.asarray(res.flags).astype(np.int64)
+    bits = list(flag_bits().values())
+    reasons = sum(((flags & b) != 0).astype(int) for b in bits)
+    category = np.zeros(flags.shape, np.int64)                    # 0 valid
+    for k, b in enumerate(bits):
+        category[(flags & b) != 0] = k + 1
+    category[reasons > 1] = len(FLAG_CATEGORIES) - 1
+    measured = res.to_frame(np.ones(res.n_sites, bool), fill=False).astype(bool)
+    grid = res.to_frame(category.astype(float), fill=0.0)
+    idx = ndimage.distance_transform_edt(~measured, return_distances=False, return_indices=True)
+    grid = grid[idx[0], idx[1]]
+    rows, cols = grid.shape
+    width = 6.4
+    fig, ax = plt.subplots(figsize=(width, width * rows / cols * 0.92 + 1.1))
+    cmap = ListedColormap([c for _, c in FLAG_CATEGORIES])
+    ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(FLAG_CATEGORIES) - 0.5,
+              interpolation="nearest")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    n = max(res.n_sites, 1)
+    handles = [Patch(color=colour, label=f"{label} ({100 * np.mean(category == k):.1f} %)")
+               for k, (label, colour) in enumerate(FLAG_CATEGORIES)
+               if k == 0 or np.any(category == k)]
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8,
+              frameon=False, ncol=3)
+    ax.set_title(f"{title} ({n} measurements)", fontsize=9)
     return _png(fig, plt, bbox_inches="tight")
 
 
