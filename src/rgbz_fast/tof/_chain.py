@@ -108,28 +108,36 @@ class ToFISP:
     calibration: ToFCalibration | None = None
 
     def __post_init__(self):
-        object.__setattr__(self, "denoise", _check_denoise(self.denoise))
+        put = object.__setattr__
+        put(self, "denoise", _check_denoise(self.denoise))
         if self.window is not None:
-            _check_window(self.window)
-        check_number(self.range_scale, "range_scale", lo=0, lo_open=True)
-        check_number(self.min_snr, "min_snr", lo=0)
-        check_number(self.min_amplitude, "min_amplitude", lo=0)
-        check_number(self.max_residual, "max_residual", lo=0, lo_open=True)
-        check_number(self.max_sigma, "max_sigma", lo=0, lo_open=True, allow_none=True)
-        check_number(self.flying_step, "flying_step", lo=0, lo_open=True, allow_none=True)
-        check_number(self.min_reflectance, "min_reflectance", lo=0, hi=1)
-        check_number(self.max_range, "max_range", lo=0, lo_open=True, allow_none=True)
-        _check_calibration(self.calibration)
+            put(self, "window", _check_window(self.window))
+        put(self, "range_scale", check_number(self.range_scale, "range_scale", lo=0,
+                                              lo_open=True))
+        put(self, "min_snr", check_number(self.min_snr, "min_snr", lo=0))
+        put(self, "min_amplitude", check_number(self.min_amplitude, "min_amplitude", lo=0))
+        put(self, "max_residual", check_number(self.max_residual, "max_residual", lo=0,
+                                               lo_open=True))
+        put(self, "max_sigma", check_number(self.max_sigma, "max_sigma", lo=0, lo_open=True,
+                                            allow_none=True))
+        put(self, "flying_step", check_number(self.flying_step, "flying_step", lo=0,
+                                              lo_open=True, allow_none=True))
+        put(self, "min_reflectance", check_number(self.min_reflectance, "min_reflectance",
+                                                  lo=0, hi=1))
+        put(self, "max_range", check_number(self.max_range, "max_range", lo=0, lo_open=True,
+                                            allow_none=True))
+        put(self, "calibration", _check_calibration(self.calibration))
+
+    @property
+    def _window_cells(self):
+        """The window the denoise runs with: ``window``, or 9 (bilateral) / 5 (box) if None."""
+        if self.window is not None:
+            return self.window
+        return 9 if self.denoise == "bilateral" else 5
 
     def run(self, tof, *, workers=None):
         """Depth, amplitude and validity of every Z measurement of ``tof``."""
-        return tof_depth(tof, denoise=self.denoise, window=self.window,
-                         range_scale=self.range_scale, min_snr=self.min_snr,
-                         min_amplitude=self.min_amplitude, max_residual=self.max_residual,
-                         max_sigma=self.max_sigma, flying_step=self.flying_step,
-                         min_reflectance=self.min_reflectance, max_range=self.max_range,
-                         calibration=self.calibration, workers=workers)
-
+        return _run(as_taps(tof, "tof"), self, check_workers(workers))
 
 
 def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr=4.0,
@@ -239,23 +247,21 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
     (True, True)
     """
     tof = as_taps(tof, "tof")
-    denoise = _check_denoise(denoise)
-    window = (9 if denoise == "bilateral" else 5) if window is None else _check_window(window)
-    range_scale = check_number(range_scale, "range_scale", lo=0, lo_open=True)
-    min_snr = check_number(min_snr, "min_snr", lo=0)
-    min_amplitude = check_number(min_amplitude, "min_amplitude", lo=0)
-    max_residual = check_number(max_residual, "max_residual", lo=0, lo_open=True)
-    max_sigma = check_number(max_sigma, "max_sigma", lo=0, lo_open=True, allow_none=True)
-    flying_step = check_number(flying_step, "flying_step", lo=0, lo_open=True,
-                               allow_none=True)
-    min_reflectance = check_number(min_reflectance, "min_reflectance", lo=0, hi=1)
-    calibration = _check_calibration(calibration)
-    nthreads = check_workers(workers)
+    params = ToFISP(denoise=denoise, window=window, range_scale=range_scale, min_snr=min_snr,
+                    min_amplitude=min_amplitude, max_residual=max_residual,
+                    max_sigma=max_sigma, flying_step=flying_step,
+                    min_reflectance=min_reflectance, max_range=max_range,
+                    calibration=calibration)
+    return _run(tof, params, check_workers(workers))
 
+
+def _run(tof, p, nthreads):
+    """The chain on checked taps with checked parameters ``p`` (a ToFISP)."""
+    denoise, window, calibration = p.denoise, p._window_cells, p.calibration
     taps = tof.taps
     n = tof.n_sites
     sensor = tof.sensor
-    f, w, max_range = _check_unwrap_args(taps.shape[0], tof.frequencies, None, max_range)
+    f, w, max_range = _check_unwrap_args(taps.shape[0], tof.frequencies, None, p.max_range)
     if calibration is not None:
         calibration.check(tof)
     # max over the 4F taps (uint16 reductions), then one comparison: = any(tap >= white)
@@ -289,7 +295,7 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
             grid = SiteGrid(tof.sites, tof.block)
             i, q, var, count = denoise_phasors_bilateral(
                 i, q, var, grid, block=tof.block, window=window, use=~saturated,
-                range_scale=range_scale, workers=nthreads)
+                range_scale=p.range_scale, workers=nthreads)
         else:
             count = np.ones(n)
             var = 2.0 * tap_variance(offset, sensor)
@@ -308,9 +314,10 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
 
     flags = assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated,
                          grid if grid is not None else (lambda: SiteGrid(tof.sites, tof.block)),
-                         min_snr=min_snr, min_amplitude=min_amplitude, max_sigma=max_sigma,
-                         max_residual=max_residual, flying_step=flying_step,
-                         min_reflectance=min_reflectance, max_range=max_range)
+                         min_snr=p.min_snr, min_amplitude=p.min_amplitude,
+                         max_sigma=p.max_sigma, max_residual=p.max_residual,
+                         flying_step=p.flying_step, min_reflectance=p.min_reflectance,
+                         max_range=max_range)
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
                     offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
                     valid=flags == 0, flags=flags,
