@@ -49,6 +49,7 @@
 #include <stdint.h>
 #include "rgbz.h"
 #include "rgbz_ops.h"
+#include "tof.h"
 
 #define TOF_TWO_PI 6.283185307179586
 #define TOF_PI 3.141592653589793
@@ -440,4 +441,28 @@ int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
     if (!q_comp) return RGBZ_EINVAL;
     return tof_unwrap_sites(i_comp, q_comp, F, N, freqs, weights, max_range, depth, residual,
                             wraps, phase, amp, workers);
+}
+
+/* Phase and amplitude of phasors (I, Q), each (F, N), without unwrapping: the first half of
+   rgbz_tof_depth_iq, bit for bit (the same tof_from_iq). A non-finite I or Q gives the phase
+   0 and RGBZ_EDOMAIN. */
+int rgbz_tof_phase_iq(const double *i_comp, const double *q_comp, ptrdiff_t F, ptrdiff_t N,
+                      double *phase, double *amp, int workers)
+{
+    if (!i_comp || !q_comp || !phase || !amp || F < 1 || N < 0) return RGBZ_EINVAL;
+    int bad = 0;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR_OR(bad)
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        int ok[TOF_BLOCK];
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const ptrdiff_t o = f * N + n0;
+            tof_from_iq(i_comp + o, q_comp + o, nb, ok, 0.0, phase + o, NULL, amp + o);
+        }
+        for (ptrdiff_t k = 0; k < nb; k++) bad |= !ok[k];
+    }
+    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }

@@ -240,6 +240,25 @@ def test_denoised_phasors_unwrap_like_numpy():
     np.testing.assert_allclose(res.depth, depth, rtol=0, atol=1e-9)
 
 
+def test_phase_of_phasors_is_the_fused_passs_phase_bit_for_bit():
+    """The calibrated chain takes atan2 and amplitude alone (it unwraps after the cyclic-error
+    correction): the same bits as the fused phasor pass, and non-finite phasors refused."""
+    from rgbz_fast import _kernels
+
+    rng = np.random.default_rng(0)
+    i, q = rng.normal(size=(2, 3, 1000)) * 100
+    i[:, :5], q[:, :3], i[0, 7] = 0.0, 0.0, 1e-310
+    f = np.array([80e6, 100e6, 120e6])
+    d, r, k = np.empty(1000), np.empty(1000), np.empty(1000, np.int32)
+    ph1, am1, ph2, am2 = (np.empty_like(i) for _ in range(4))
+    assert _kernels.tof_depth_iq(i, q, f, f ** 2, 7.4, d, r, k, ph1, am1, workers=2)
+    assert _kernels.tof_phase_iq(i, q, ph2, am2, 2)
+    np.testing.assert_array_equal(ph1, ph2)
+    np.testing.assert_array_equal(am1, am2)
+    i[1, 5] = np.nan
+    assert not _kernels.tof_phase_iq(i, q, ph2, am2, 1)
+
+
 # --------------------------------------------------------------------------- B2, B3
 def test_max_range_is_bounded_by_the_unambiguous_range_and_the_wrap_count():
     """B2: max_range beyond the unambiguous range (the search would repeat) or beyond

@@ -268,8 +268,6 @@ def _run(tof, p, nthreads):
     saturated = np.asarray(tof.saturated, bool) | (taps.max(axis=(0, 1)) >= tof.white_level)
     if calibration is not None and calibration.dark is not None:
         taps = np.asarray(taps, np.float64) - calibration.dark[None]
-    depth, residual = np.empty(n), np.empty(n)
-    wraps = np.empty(n, np.int32)
     grid = None                     # the grid of the Z measurements, built once when needed
     if denoise == "none" and calibration is None:
         depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
@@ -299,11 +297,18 @@ def _run(tof, p, nthreads):
         else:
             count = np.ones(n)
             var = 2.0 * tap_variance(offset, sensor)
-        # atan2, amplitude and unwrapping of the phasors in one C pass
         phase, amp = np.empty_like(i), np.empty_like(i)
-        if not _kernels.tof_depth_iq(np.ascontiguousarray(i), np.ascontiguousarray(q), f, w,
-                                     max_range, depth, residual, wraps, phase, amp,
-                                     workers=nthreads):
+        i, q = np.ascontiguousarray(i), np.ascontiguousarray(q)
+        if calibration is None:
+            # atan2, amplitude and unwrapping of the phasors in one C pass
+            depth, residual, wraps = np.empty(n), np.empty(n), np.empty(n, np.int32)
+            ok = _kernels.tof_depth_iq(i, q, f, w, max_range, depth, residual, wraps, phase,
+                                       amp, workers=nthreads)
+        else:
+            # atan2 and amplitude; the cyclic error is corrected on the phase, which is then
+            # unwrapped
+            ok = _kernels.tof_phase_iq(i, q, phase, amp, nthreads)
+        if not ok:
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
         if calibration is not None:
             phase = calibration.correct_phase(phase)
