@@ -69,7 +69,7 @@ def _implied_reflectance(depth, amp, sensor, block):
     """NIR reflectance that the amplitude implies at ``depth`` (the sensor's radiometry)."""
     ok = depth > 0
     d = np.where(ok, depth, 1.0)
-    s1, _ = sensor._cell_electrons(d, 1.0, sensor.pixel_pitch_um or 2.8)
+    s1 = sensor.active_electrons(d)
     contrast = sensor.contrasts.reshape(-1, 1) * float(np.mean(sensor.tap_contrast))
     model = sensor.system_gain * 0.25 * contrast * (s1 * block * block)[None]
     rho = (amp / model).mean(axis=0)
