@@ -44,9 +44,8 @@ class ToFDepth:
     valid : ndarray of bool, shape (n,)
         ``flags == 0``.
     flags : ndarray of uint8, shape (n,)
-        :data:`FLAG_SATURATED`, :data:`FLAG_LOW_SIGNAL`,
-        :data:`FLAG_INCONSISTENT`, :data:`FLAG_FLYING`,
-        :data:`FLAG_OUT_OF_RANGE` (bitwise or).
+        The bits of :class:`~rgbz_fast.tof.ToFFlag` of the tests the
+        measurement failed (bitwise or; 0 = valid).
     frequencies : ndarray, shape (F,)
     sites : (rows, cols)
     block : int

@@ -20,30 +20,65 @@ References
 
 from __future__ import annotations
 
+import enum
+
 import numpy as np
 
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import check_number
 from ._filters import SiteGrid
 
-__all__ = ["FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
+__all__ = ["ToFFlag", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
            "FLAG_OUT_OF_RANGE", "flying_pixels"]
 
-#: bits of :attr:`ToFDepth.flags`: a tap of the measurement reached full scale (or the
-#: sensor flagged it saturated) at some frequency
-FLAG_SATURATED = 1
-#: the signal-to-noise ratio or the amplitude is below the threshold at some frequency
-FLAG_LOW_SIGNAL = 2
-#: the frequencies disagree: the unwrapping residual exceeds ``max_residual``
-FLAG_INCONSISTENT = 4
-#: at a depth discontinuity: a second difference of the depths through the measurement or an
-#: immediate Z neighbour exceeds ``flying_step`` (and 2 sigma), so the measurement may mix
-#: two surfaces (a flying pixel)
-FLAG_FLYING = 8
-#: the depth is < 0 or within 5 sigma of ``max_range`` or beyond, or implies a reflectance below
-#: ``min_reflectance``: most likely a surface beyond the unambiguous range, aliased
-FLAG_OUT_OF_RANGE = 16
+class ToFFlag(enum.IntFlag):
+    """The bits of :attr:`~rgbz_fast.tof.ToFDepth.flags`: why a measurement is not valid.
 
+    ``ToFFlag(int(result.flags[k]))`` names the tests measurement ``k`` failed.
+    The module constants ``FLAG_SATURATED`` ... ``FLAG_OUT_OF_RANGE`` are their
+    values as plain ints, so that ``flags |= FLAG_FLYING`` keeps a uint8 array
+    uint8 (NumPy takes an IntFlag member for an int64).
+
+    Attributes
+    ----------
+    SATURATED
+        A tap reached full scale (or the sensor flagged it saturated) at some
+        frequency.
+    LOW_SIGNAL
+        The SNR or the amplitude is below its threshold at some frequency, or
+        the predicted depth noise above ``max_sigma``.
+    INCONSISTENT
+        The frequencies disagree: the unwrapping residual exceeds
+        ``max_residual``.
+    FLYING
+        At a depth discontinuity: a second difference of the depths through
+        the measurement or an immediate Z neighbour exceeds ``flying_step``
+        (and 2 sigma), so the measurement may mix two surfaces.
+    OUT_OF_RANGE
+        The depth is < 0, within 5 sigma of ``max_range`` or beyond, or
+        implies a reflectance below ``min_reflectance``: most likely a surface
+        beyond the unambiguous range, aliased.
+
+    Examples
+    --------
+    >>> ToFFlag(10)
+    <ToFFlag.LOW_SIGNAL|FLYING: 10>
+    >>> FLAG_FLYING == ToFFlag.FLYING, type(FLAG_FLYING).__name__
+    (True, 'int')
+    """
+
+    SATURATED = 1
+    LOW_SIGNAL = 2
+    INCONSISTENT = 4
+    FLYING = 8
+    OUT_OF_RANGE = 16
+
+
+FLAG_SATURATED = int(ToFFlag.SATURATED)
+FLAG_LOW_SIGNAL = int(ToFFlag.LOW_SIGNAL)
+FLAG_INCONSISTENT = int(ToFFlag.INCONSISTENT)
+FLAG_FLYING = int(ToFFlag.FLYING)
+FLAG_OUT_OF_RANGE = int(ToFFlag.OUT_OF_RANGE)
 
 
 def _depth_sigma(amp, var, frequencies):
