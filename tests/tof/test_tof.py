@@ -259,9 +259,9 @@ def test_phase_of_phasors_is_the_fused_passs_phase_bit_for_bit():
     assert not _kernels.tof_phase_iq(i, q, ph2, am2, 1)
 
 
-# --------------------------------------------------------------------------- B2, B3
+# --------------------------------------------------------------------------- domain of the unwrapping
 def test_max_range_is_bounded_by_the_unambiguous_range_and_the_wrap_count():
-    """B2: max_range beyond the unambiguous range (the search would repeat) or beyond
+    """max_range beyond the unambiguous range (the search would repeat) or beyond
     MAX_WRAPS wraps of the lowest frequency is refused, before any kernel runs."""
     f = [80e6, 100e6, 120e6]
     assert unambiguous_range(f) == pytest.approx(C / (2 * 20e6))
@@ -288,8 +288,8 @@ def test_max_range_is_bounded_by_the_unambiguous_range_and_the_wrap_count():
 
 
 def test_nearly_coprime_sensor_needs_an_explicit_max_range():
-    """B2: the default of tof_depth raised (instead of hanging for days) and names the
-    frequencies; an explicit max_range within the cap unwraps."""
+    """The default range of a nearly coprime set (1.5e8 m) is refused before the search
+    starts (it would take days), naming the frequencies; an explicit max_range within the cap unwraps."""
     sensor = ToFSensor(frequencies=(80e6 + 1, 100e6, 120e6), quantise=False,
                        optical_power_w=0.05)
     tof = _wall(1.5, "mask1", (12, 12), sensor=sensor, noise=False)
@@ -303,7 +303,7 @@ def test_nearly_coprime_sensor_needs_an_explicit_max_range():
 
 
 def test_phases_outside_zero_two_pi_are_refused():
-    """B3: checked inside the kernel (no extra pass); the message names the phase."""
+    """Checked inside the kernel (no extra pass); the message names the phase."""
     f = [80e6, 100e6, 120e6]
     good = np.random.default_rng(0).uniform(0, 2 * np.pi, (3, 1000))
     for value in (-1e-300, -0.1, 2 * np.pi, 7.0, 1e300, np.nan, np.inf, -np.inf):
@@ -520,7 +520,7 @@ RGBD = ("art", "aloe", "baby1", "bowling1", "flowerpots", "rocks1")
 
 
 def test_rgbd_scenes_meet_the_depth_targets():
-    """The six Middlebury scenes at default settings (issue 15): over all six, at most 0.1 % of
+    """The six Middlebury scenes at default settings: over all six, at most 0.1 % of
     the known measurements are valid and more than 5 cm off, and at least 95 % of those more
     than 5 cm off are flagged; no valid measurement unwraps wrongly. The full table is
     ``rgbz-fast evaluate-depth --sections scenes`` (docs/reports/isp.md)."""

@@ -188,8 +188,8 @@ def _check_phasor_planes(i, q, var, n_name="i, q"):
 
 def _bilateral_pass(z_re, z_im, v, g_re, g_im, gv, use, grid, radius_px, reach, inv_h2,
                     workers):
-    # reach: (rows, cols) grid steps that can lie within radius_px
-    """One pass of the C kernel on the grid (planes (F, R, C), ``use`` (R, C) uint8).
+    """One pass of the C kernel on the grid (planes (F, R, C), ``use`` (R, C) uint8); ``reach``:
+    the (rows, cols) grid steps that can lie within ``radius_px``.
 
     Returns the mean (re, im), its variance (F, R, C) and ``n_eff`` (R, C).
     """

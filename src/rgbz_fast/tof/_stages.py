@@ -228,7 +228,7 @@ def unambiguous_range(frequencies):
 
 
 def _search_range(f, max_range):
-    """The validated unwrapping range (m) of frequencies ``f`` (B2).
+    """The validated unwrapping range (m) of frequencies ``f``: a search the kernel can finish.
 
     None: the unambiguous range, unless it holds more than :data:`MAX_WRAPS` wraps of the
     base frequency (nearly coprime frequencies): then the caller must choose. An explicit
@@ -283,7 +283,8 @@ def _check_unwrap_args(phase_rows, frequencies, weights, max_range):
 
 
 def _phase_error(ph):
-    """The ValueError for phases the unwrap kernel refused (B3); only on the error path."""
+    """The ValueError for phases the unwrap kernel refused (it checks them as it reads them, so
+    this extra pass runs on the error path only)."""
     if not np.all(np.isfinite(ph)):
         return ValueError("phase: holds NaN or infinite values; expected finite data")
     return ValueError(f"phase: values span [{float(ph.min())!r}, {float(ph.max())!r}]; expected "
