@@ -465,6 +465,28 @@ def test_result_maps_and_the_parameter_object():
     assert "valid" in repr(res)
 
 
+def test_one_parameter_rule_params_plus_overrides():
+    """tof_depth takes a ToFISP (or a dict of its fields) and keyword overrides of its fields,
+    checked once by ToFISP; unknown names and bad params are TypeErrors naming them."""
+    tof = _wall(np.tile(np.linspace(0.8, 2.5, 32), (32, 1)), "mask2", (32, 32), seed=5)
+    want = ToFISP(denoise="box", min_snr=3.0, flying_step=None).run(tof)
+    for got in (tof_depth(tof, params=ToFISP(denoise="box"), min_snr=3, flying_step=None),
+                tof_depth(tof, params={"denoise": "box", "min_snr": 3}, flying_step=None),
+                tof_depth(tof, params=ToFISP(denoise="box", min_snr=9, flying_step=None),
+                          min_snr=3.0)):
+        np.testing.assert_array_equal(got.depth, want.depth)
+        np.testing.assert_array_equal(got.flags, want.flags)
+    assert ToFISP().replace(min_snr=3).min_snr == 3.0
+    with pytest.raises(TypeError, match=r"tof_depth\(\) got an unexpected keyword argument "
+                                        r"'snr' \(fields of ToFISP: denoise, window"):
+        tof_depth(tof, snr=3)
+    with pytest.raises(TypeError, match="params: expected a ToFISP, a dict of its fields or "
+                                        "None, got str"):
+        tof_depth(tof, params="box")
+    with pytest.raises(ValueError, match="min_snr: expected a finite number >= 0, got -1"):
+        tof_depth(tof, params=ToFISP(), min_snr=-1)
+
+
 def test_thread_count_does_not_change_the_result():
     tof = _wall(np.tile(np.linspace(0.5, 4, 64), (64, 1)), "mask1", (64, 64), seed=3)
     a, b = tof_depth(tof, workers=1), tof_depth(tof, workers=2)

@@ -33,6 +33,7 @@ import numpy as np
 from .. import _kernels
 from .._validate import check_choice, check_number, check_workers
 from ._calibration import ToFCalibration, as_taps
+from ._merge import merge_params
 from ._filters import SiteGrid, denoise_phasors_bilateral
 from ._noise import tap_variance
 from ._result import ToFDepth
@@ -62,19 +63,26 @@ def _check_calibration(calibration):
 
 @dataclass(frozen=True)
 class ToFISP:
-    """Parameters of the ToF ISP (see :func:`tof_depth` for each one).
+    """The parameters of the ToF ISP, checked once; :meth:`run` runs the chain with them.
 
-    Attributes
+    :func:`tof_depth` takes one (``params=``) and keyword overrides of its
+    fields; ``ToFISP(**fields).run(tof)`` is the same call.
+
+    Parameters
     ----------
     denoise : {"bilateral", "box", "none"}
-        The edge-aware phasor mean (default), the paper's plain average
-        (Fig. 17) or none.
+        ``"bilateral"`` (default): the edge-aware mean of the phasors over the
+        Z measurements of the window, two passes
+        (:func:`~rgbz_fast.tof.denoise_phasors_bilateral`); ``"box"``: the
+        paper's plain mean (Fig. 17, :func:`~rgbz_fast.tof.denoise_phasors`);
+        ``"none"``. True and False mean ``"bilateral"`` and ``"none"``.
     window : int or None
-        Odd window size in Z-pixel cells; None: 9 (the 5x5 nearest Z
-        measurements) for the bilateral denoise, 5 (the paper's 3x3) for
-        the box.
+        Odd window size in Z-pixel cells; None: 9 for the bilateral denoise
+        (the 5x5 nearest Z measurements) and 5 for the box (the paper's
+        5x5-pixel kernel: 3x3 Z measurements).
     range_scale : float
-        Range scale ``h`` of the bilateral weights (2).
+        Range scale ``h`` of the bilateral weights (2; larger smooths across
+        weaker edges).
     min_snr : float
         Smallest per-frequency ``|I + iQ| / sigma_I`` of a valid measurement
         (4: on noisy walls the unwrapping errs on 0.07 % of the measurements
@@ -86,13 +94,39 @@ class ToFISP:
         Largest unwrapping residual (m) of a valid measurement (0.15: a wrong
         wrap combination of 80/100/120 MHz leaves about 0.17 m or more).
         Retune it for other frequency sets.
-    max_sigma, flying_step, min_reflectance : float or None
-        The validity tests of depth noise, flying pixels and aliasing
-        (:func:`tof_depth`).
+    max_sigma : float or None
+        Largest predicted depth noise (m) of a valid measurement (0.015: a
+        5 cm error is then a 3.3-sigma event, 0.1 % of the valid
+        measurements); None: no limit.
+    flying_step : float or None
+        Depth jump (m) that marks a discontinuity (0.05; see
+        :func:`~rgbz_fast.tof.flying_pixels`); None: no flying-pixel test.
+    min_reflectance : float
+        Smallest NIR reflectance a valid measurement may imply (0.05; 0: no
+        test). Depths beyond the unambiguous range alias to shorter ones and
+        imply much darker surfaces (:func:`tof_depth`, Notes).
     max_range : float or None
-        Unwrapping range (m); None: the unambiguous range of the frequencies.
+        Unwrapping range in metres (see :func:`~rgbz_fast.tof.unwrap`); None:
+        the taps' unambiguous range, unless that spans more than
+        :data:`~rgbz_fast.tof.MAX_WRAPS` wraps of the lowest frequency (nearly
+        coprime frequencies), in which case a ValueError naming
+        ``frequencies`` asks for an explicit one; at most the unambiguous
+        range. Depths found beyond it are flagged out of range.
     calibration : ToFCalibration or None
-        Phase calibration applied to the taps (:func:`~rgbz_fast.tof.calibrate`).
+        Per-measurement phase offsets and per-frequency cyclic error
+        (:func:`~rgbz_fast.tof.calibrate`), and the taps' dark offsets when
+        it holds them. It must have been made for these frequencies and Z
+        measurements.
+
+    Examples
+    --------
+    >>> isp = ToFISP(denoise="box")
+    >>> isp.window, isp.replace(min_snr=3).min_snr
+    (None, 3.0)
+    >>> ToFISP(window=4)
+    Traceback (most recent call last):
+    ...
+    ValueError: window: expected an odd positive integer (5 = the paper's 5x5 kernel), got 4
     """
 
     denoise: str = "bilateral"
@@ -135,14 +169,17 @@ class ToFISP:
             return self.window
         return 9 if self.denoise == "bilateral" else 5
 
+    def replace(self, **changes):
+        """A copy with some fields changed (and checked)."""
+        return merge_params(ToFISP, self, changes, caller="replace()")
+
     def run(self, tof, *, workers=None):
-        """Depth, amplitude and validity of every Z measurement of ``tof``."""
+        """Depth, amplitude and validity of every Z measurement of ``tof`` (a ToFTaps or a
+        RawFrame with taps); ``workers``: threads of the C kernels."""
         return _run(as_taps(tof, "tof"), self, check_workers(workers))
 
 
-def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr=4.0,
-              min_amplitude=0.0, max_residual=0.15, max_sigma=0.015, flying_step=0.05,
-              min_reflectance=0.05, max_range=None, calibration=None, workers=None):
+def tof_depth(tof, *, params=None, workers=None, **options):
     """The ToF ISP: taps of every Z measurement -> depth, amplitude, validity.
 
     Parameters
@@ -152,48 +189,18 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
         model and the radiometry use ``tof.sensor`` (system gain, read noise,
         DSNU, PRNU, black level, ambient suppression; source power, lens,
         pixel): the ISP is calibrated for its sensor.
-    denoise : {"bilateral", "box", "none"}
-        ``"bilateral"`` (default): the edge-aware mean of the phasors over the
-        Z measurements of the window, two passes
-        (:func:`~rgbz_fast.tof.denoise_phasors_bilateral`); ``"box"``: the
-        paper's plain mean (Fig. 17, :func:`denoise_phasors`); ``"none"``.
-        True and False mean ``"bilateral"`` and ``"none"``.
-    window : int, optional
-        Odd window size in Z-pixel cells; default 9 for the bilateral denoise
-        (the 5x5 nearest Z measurements) and 5 for the box (the paper's
-        5x5-pixel kernel: 3x3 Z measurements).
-    range_scale : float
-        Range scale of the bilateral weights (2; larger smooths across
-        weaker edges).
-    min_snr, min_amplitude, max_residual : float
-        Validity thresholds: per-frequency SNR (4) and amplitude (0 DN), and
-        the unwrapping residual (0.15 m).
-    max_sigma : float or None
-        Largest predicted depth noise (m) of a valid measurement (0.015: a
-        5 cm error is then a 3.3-sigma event, 0.1 % of the valid
-        measurements); None: no limit.
-    flying_step : float or None
-        Depth jump (m) that marks a discontinuity (0.05; see
-        :func:`~rgbz_fast.tof.flying_pixels`); None: no flying-pixel test.
-    min_reflectance : float
-        Smallest NIR reflectance a valid measurement may imply (0.05; 0: no
-        test). Depths beyond the unambiguous range alias to shorter ones and
-        imply much darker surfaces: see Notes.
-    max_range : float, optional
-        Unwrapping range in metres (see :func:`unwrap`): default
-        ``tof.unambiguous_range``, unless that spans more than
-        :data:`MAX_WRAPS` wraps of the lowest frequency (nearly coprime
-        frequencies), in which case a ValueError naming ``frequencies`` asks
-        for an explicit one; at most the unambiguous range. Depths found
-        beyond it are flagged out of range.
-    calibration : ToFCalibration, optional
-        Per-measurement phase offsets and per-frequency cyclic error
-        (:func:`~rgbz_fast.tof.calibrate`), and the taps' dark offsets when
-        it holds them. It must have been made for these frequencies and Z
-        measurements.
+    params : ToFISP or dict, optional
+        The parameters (default ``ToFISP()``; a dict holds some of its
+        fields).
     workers : int, optional
         Threads of the C kernels (None or -1: all cores). The result does
         not depend on it.
+    **options
+        Fields of :class:`ToFISP` (``denoise="box"``, ``min_snr=3``,
+        ``calibration=cal``, ...), applied over ``params``: ``denoise``,
+        ``window``, ``range_scale``, ``min_snr``, ``min_amplitude``,
+        ``max_residual``, ``max_sigma``, ``flying_step``, ``min_reflectance``,
+        ``max_range``, ``calibration``.
 
     Returns
     -------
@@ -202,9 +209,9 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
     Raises
     ------
     ValueError, TypeError
-        A frame without taps, malformed taps, thresholds out of range, a
-        calibration of another sensor layout, or a ``max_range`` the
-        unwrapping cannot search (see above).
+        A frame without taps, malformed taps, an unknown option, thresholds
+        out of range, a calibration of another sensor layout, or a
+        ``max_range`` the unwrapping cannot search (:class:`ToFISP`).
 
     Notes
     -----
@@ -245,13 +252,11 @@ def tof_depth(tof, *, denoise="bilateral", window=None, range_scale=2.0, min_snr
     >>> result = tof_depth(simulate(scene, "mask1", noise=False).tof)
     >>> bool(np.allclose(result.depth, 1.5, atol=2e-3)), bool(result.valid.all())
     (True, True)
+    >>> tof_depth(simulate(scene, "mask1").tof, params=ToFISP(denoise="box"), min_snr=3)
+    ToFDepth(64 measurements, block 1, 61 valid)
     """
     tof = as_taps(tof, "tof")
-    params = ToFISP(denoise=denoise, window=window, range_scale=range_scale, min_snr=min_snr,
-                    min_amplitude=min_amplitude, max_residual=max_residual,
-                    max_sigma=max_sigma, flying_step=flying_step,
-                    min_reflectance=min_reflectance, max_range=max_range,
-                    calibration=calibration)
+    params = merge_params(ToFISP, params, options, caller="tof_depth()")
     return _run(tof, params, check_workers(workers))
 
 
