@@ -114,3 +114,7 @@ def tof_bilateral(z_re: np.ndarray, z_im: np.ndarray, var: np.ndarray, g_re: np.
                   col_px: np.ndarray, reach_rows: int, reach_cols: int, radius_px: int, inv_h2: float,
                   out_re: np.ndarray, out_im: np.ndarray, out_var: np.ndarray,
                   out_neff: np.ndarray, workers: int) -> None: ...
+
+# ToF phase of phasors (csrc/tof.h)
+def tof_phase_iq(i: np.ndarray, q: np.ndarray, phase: np.ndarray, amp: np.ndarray,
+                 workers: int) -> bool: ...

@@ -596,3 +596,27 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
     _raise_for(status)
+
+
+# ---------------------------------------------------------------------- ToF phase of phasors (tof.h)
+cdef extern from "tof.h" nogil:
+    int rgbz_tof_phase_iq(const double *i_comp, const double *q_comp, Py_ssize_t F,
+                          Py_ssize_t N, double *phase, double *amp, int workers)
+
+
+def tof_phase_iq(const double[:, ::1] i, const double[:, ::1] q, double[:, ::1] phase,
+                 double[:, ::1] amp, int workers):
+    """Phasors I, Q (F, N) -> phase in [0, 2 pi) and amplitude (F, N), no unwrapping.
+
+    Returns False when an I or Q is not finite (RGBZ_EDOMAIN), True otherwise.
+    """
+    cdef int status
+    if i.shape[1] == 0:
+        return True
+    with nogil:
+        status = rgbz_tof_phase_iq(&i[0, 0], &q[0, 0], i.shape[0], i.shape[1], &phase[0, 0],
+                                   &amp[0, 0], workers)
+    if status == RGBZ_EDOMAIN:
+        return False
+    _raise_for(status)
+    return True
