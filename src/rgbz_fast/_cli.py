@@ -309,6 +309,10 @@ def _parser():
     d.add_argument("--range", type=_range, default=None, metavar="MIN:MAX",
                    help="colour scale of the preview in metres (default: the 1st to 99th "
                         "percentile of the valid depth)")
+    d.add_argument("--full-resolution", action="store_true",
+                   help="also run the colour ISP, guide the ToF ISP with its image and write "
+                        "a depth at every pixel: OUT/<name>_depth_full.tif (float32 metres, "
+                        "NaN where none can be given) and OUT/<name>_depth_full.png (preview)")
     _add_common(d, "depth")
 
     e = sub.add_parser("evaluate", help="dataset -> metrics, tables and plots",
@@ -482,7 +486,8 @@ def _parser():
                    help="folder of the Middlebury scenes (default: ../shared/data/rgbd when it "
                         "exists; without it the scene sections are skipped)")
     d.add_argument("--sections", type=_csv, default=None,
-                   help="comma list from scenes,range,noise,sunlight,calibration (default: all)")
+                   help="comma list from scenes,upsample,rgbnir,range,noise,sunlight,"
+                        "calibration (default: all)")
     d.add_argument("--seed", type=_non_negative_int, default=1, help="seed of the sensor noise")
     d.add_argument("--json", action="store_true", help="print the rows as JSON")
     _add_limits(d)
@@ -638,13 +643,13 @@ def _calibrate(args):
 
 
 def _evaluate_depth(args):
-    from .evaluation import depth_report, evaluate_depth
+    from .evaluation import DEPTH_SECTIONS, depth_report, evaluate_depth
 
     data = args.data
     if data is None:
         guess = Path("..") / "shared" / "data" / "rgbd"
         data = guess if guess.is_dir() else None
-    sections = args.sections or ("scenes", "range", "noise", "sunlight", "calibration")
+    sections = args.sections or DEPTH_SECTIONS
     result = evaluate_depth(data, sections=sections, seed=args.seed)
     if args.json:
         print(json.dumps(result, indent=1, default=float))
@@ -841,18 +846,23 @@ def _depth(args):
             calibration = ToFCalibration.load(args.calibration)
         except (OSError, ValueError, TypeError, KeyError) as exc:
             raise CliError(f"--calibration: {args.calibration}: {exc}") from None
-    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"])
-            for f in args.frames]
+    full = ["_depth_full.tif", "_depth_full.png"] if args.full_resolution else []
+    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"]
+             + [f.stem + x for x in full]) for f in args.frames]
     _unique_outputs(outs, args.out)
-    for f, (tif_name, flags_name, png_name) in outs:
+    for f, (tif_name, flags_name, png_name, *full_names) in outs:
         frame = load_frame(f)
         if frame.tof is None:
             raise CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such as "
                            "an RGB-D folder, and save it as .npz)")
+        guide = None
+        if full_names:
+            from .isp import ColourISP
+            guide = ColourISP().run(frame, workers=args.workers)
         res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
                         min_snr=args.min_snr, max_sigma=args.max_sigma,
                         flying_step=args.flying_step, min_reflectance=args.min_reflectance,
-                        max_range=args.max_range, workers=args.workers)
+                        max_range=args.max_range, guide=guide, workers=args.workers)
         depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
         flags = res.to_frame(res.flags.astype(np.uint16), fill=_NO_MEASUREMENT).astype(np.uint8)
         summary = _depth_summary(frame.tof, res)
@@ -868,8 +878,18 @@ def _depth(args):
         atomic_write(args.out / png_name, depth_preview(
             res, f.stem, summary, args.range,
             frame.tof.valid if "truth_unknown_fraction" in summary else None))
+        if full_names:
+            from .tof import upsample_depth
+            up, conf = upsample_depth(res, guide, workers=args.workers)
+            buf = io.BytesIO()
+            tifffile.imwrite(buf, up, description=json.dumps(
+                {"unit": "m", "invalid": "NaN", "source": str(f),
+                 "covered_fraction": float(np.isfinite(up).mean())}))
+            atomic_write(args.out / full_names[0], buf.getvalue())
+            atomic_write(args.out / full_names[1], full_depth_preview(up, f.stem, args.range))
         if not args.quiet:
-            print(f"{f} -> {args.out / tif_name}, {flags_name}, {png_name}: "
+            extra = f", {', '.join(full_names)}" if full_names else ""
+            print(f"{f} -> {args.out / tif_name}, {flags_name}, {png_name}{extra}: "
                   f"{summary['text']}")
     return 0
 
@@ -952,6 +972,34 @@ def depth_preview(res, name, summary, scale=None, truth_known=None):
               frameon=False, ncol=2)
     ax.set_title(f"{name}: depth, {100 * summary['valid_fraction']:.1f} % of "
                  f"{summary['measurements']} measurements valid", fontsize=9)
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return buf.getvalue()
+
+
+def full_depth_preview(depth, name, scale=None):
+    """An 8-bit colour-mapped PNG of a full-resolution depth map (NaN grey), with its scale."""
+    import matplotlib
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    good = depth[np.isfinite(depth)]
+    if scale is None:
+        scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
+            else (0.0, 1.0)
+        if scale[1] <= scale[0]:
+            scale = (scale[0], scale[0] + 1e-3)
+    rows, cols = depth.shape
+    fig, ax = plt.subplots(figsize=(6.4, 6.4 * rows / cols * 0.92 + 0.6))
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
+    im = ax.imshow(np.ma.masked_invalid(depth), cmap=cmap, vmin=scale[0], vmax=scale[1],
+                   interpolation="nearest")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, extend="both").set_label("distance (m)")
+    ax.set_title(f"{name}: depth at every pixel ({100 * good.size / depth.size:.1f} % covered)",
+                 fontsize=9)
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
     plt.close(fig)
