@@ -241,7 +241,9 @@ TOFG_CLONES static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, floa
     const float bias = 2.0f * (float)F;
     float *num_re = scratch, *num_im = num_re + F * C, *den = num_im + F * C;
     float *w2v = den + C, *w2n = w2v + C, *chi = w2n + C, *w = chi + C;
-    for (ptrdiff_t k = 0; k < 2 * F * C + 3 * C; k++) scratch[k] = 0.0f;
+    for (ptrdiff_t f = 0; f < F; f++)
+        for (ptrdiff_t c = clo; c < chi_; c++) num_re[f * C + c] = num_im[f * C + c] = 0.0f;
+    for (ptrdiff_t c = clo; c < chi_; c++) den[c] = w2v[c] = w2n[c] = 0.0f;
     const ptrdiff_t row0 = r * C;
     for (ptrdiff_t a = -p->reach; a <= p->reach; a++) {
         ptrdiff_t c0, c1, shift;
@@ -430,12 +432,13 @@ static inline __attribute__((always_inline)) void tofg_block(
 /* Row r: the 16-column blocks whose every tap is on the grid by the fast blocks, the rest by
    the generic row. uniform: the grid lines along the axis are `step` pixels apart. */
 TOFG_CLONES static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
-                                       int uniform, int64_t step)
+                                       int uniform, int64_t step, ptrdiff_t clo,
+                                       ptrdiff_t chi_)
 {
     const ptrdiff_t C = p->C;
     ptrdiff_t shift[2 * 64 + 1];
     int ntaps = 0;
-    ptrdiff_t lo = 0, hi = C;                     /* the columns every tap may serve */
+    ptrdiff_t lo = clo, hi = chi_;                /* the columns every tap may serve */
     if (uniform && p->F <= 4 && p->reach <= 64) {
         for (ptrdiff_t a = -p->reach; a <= p->reach; a++) {
             const int64_t d = (p->axis == 0 ? p->px[r + a < 0 || r + a >= p->R ? r : r + a]
@@ -463,12 +466,16 @@ TOFG_CLONES static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r, flo
         }
     }
     if (nblk == 0) {
-        tofg_pass_row(p, r, scratch, 0, C);
+        tofg_pass_row(p, r, scratch, clo, chi_);
     } else {
-        if (lo > 0) tofg_pass_row(p, r, scratch, 0, lo);
-        if (fe < C) tofg_pass_row(p, r, scratch, fe, C);
+        if (lo > clo) tofg_pass_row(p, r, scratch, clo, lo);
+        if (fe < chi_) tofg_pass_row(p, r, scratch, fe, chi_);
     }
 }
+
+/* columns per tile of a column pass: the taps' rows of a tile stay in the cache from one
+   output row to the next (11 rows x 17 planes x 256 floats = 190 kB) */
+#define TOFG_TILE 256
 
 int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
                    const float *gr, const float *gi, const float *gv, const float *col,
@@ -505,11 +512,24 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
 #endif
             status = RGBZ_ENOMEM;
         }
+        if (axis == 0 && C > TOFG_TILE) {
+            /* a column pass tile by tile, every tile's rows in order */
+            const ptrdiff_t ntile = (C + TOFG_TILE - 1) / TOFG_TILE;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+            for (ptrdiff_t t = 0; t < ntile; t++) {
+                const ptrdiff_t c0 = t * TOFG_TILE, c1 = c0 + TOFG_TILE < C ? c0 + TOFG_TILE : C;
+                for (ptrdiff_t r = 0; r < R; r++)
+                    if (scratch) tofg_pass_line(&p, r, scratch, uniform, step, c0, c1);
+            }
+        } else {
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
-        for (ptrdiff_t r = 0; r < R; r++)
-            if (scratch) tofg_pass_line(&p, r, scratch, uniform, step);
+            for (ptrdiff_t r = 0; r < R; r++)
+                if (scratch) tofg_pass_line(&p, r, scratch, uniform, step, 0, C);
+        }
         free(scratch);
     }
     return status;
@@ -580,39 +600,59 @@ static inline int tofg_ok(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
     return r >= 0 && r < p->R && c >= 0 && c < p->C && p->usable[r * p->C + c];
 }
 
-/* the second-difference test centred at (r, c) along direction e: -1 no hit, else 1 when
-   the neighbour across the discontinuity is the one at +e, 0 the one at -e (the pair that
-   rgbz_fast.tof.flying_pixels flags, with its arithmetic) */
-static int tofg_hit(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c, int e)
+/* Whether the second-difference test flags (r, c): a hit centred there, or at a neighbour
+   whose pair across the discontinuity includes it. code: the hits of every cell (bit 2e: a
+   hit along direction e, bit 2e + 1: its pair is the neighbour at +e). */
+static int tofg_candidate(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t r, ptrdiff_t c)
 {
-    const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
-    if (!tofg_ok(p, r, c) || !tofg_ok(p, r - dr, c - dc) || !tofg_ok(p, r + dr, c + dc))
-        return -1;
-    const ptrdiff_t m = r * p->C + c, lo = m - dr * p->C - dc, hi = m + dr * p->C + dc;
-    const double down = p->depth[m] - p->depth[lo], up = p->depth[hi] - p->depth[m];
-    double jump = up - down;
-    jump *= jump;
-    const double s_hi = p->sigma[hi], s_lo = p->sigma[lo], s_m = p->sigma[m];
-    double noise = s_hi * s_hi + s_lo * s_lo;
-    noise += 4.0 * (s_m * s_m);
-    noise *= p->k2;
-    noise = noise > p->step2 ? noise : p->step2;
-    if (!(jump > noise)) return -1;
-    return fabs(up) >= fabs(down);
+    const ptrdiff_t C = p->C, m = r * C + c;
+    if (code[m] & 0x55) return 1;
+    for (int e = 0; e < 4; e++) {
+        const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
+        const int hit = 1 << (2 * e), hi = 2 << (2 * e);
+        if (r - dr >= 0 && c - dc >= 0 && c - dc < C
+            && (code[m - dr * C - dc] & (hit | hi)) == (hit | hi))
+            return 1;
+        if (r + dr < p->R && c + dc >= 0 && c + dc < C
+            && (code[m + dr * C + dc] & (hit | hi)) == hit)
+            return 1;
+    }
+    return 0;
 }
 
-static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
+/* the hits centred at the cells of row r along every direction (tofg_candidate's code) */
+TOFG_CLONES static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, uint8_t *code)
+{
+    const ptrdiff_t C = p->C;
+    const double *d = p->depth, *s = p->sigma;
+    const uint8_t *u = p->usable;
+    for (ptrdiff_t c = 0; c < C; c++) code[r * C + c] = 0;
+    for (int e = 0; e < 4; e++) {
+        const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
+        if (r - dr < 0 || r + dr >= p->R) continue;
+        const ptrdiff_t c0 = dc ? 1 : 0, c1 = dc ? C - 1 : C, off = dr * C + dc;
+        for (ptrdiff_t c = c0; c < c1; c++) {
+            const ptrdiff_t m = r * C + c, lo = m - off, hi = m + off;
+            /* every operand loaded (an unusable one may be NaN: it never counts) */
+            const int ok = u[m] & u[lo] & u[hi];
+            const double down = d[m] - d[lo], up = d[hi] - d[m];
+            double jump = up - down;
+            jump *= jump;
+            const double shi = s[hi], slo = s[lo], sm = s[m];
+            double noise = shi * shi + slo * slo;
+            noise += 4.0 * (sm * sm);
+            noise *= p->k2;
+            noise = noise > p->step2 ? noise : p->step2;
+            const int hit = ok & (jump > noise), toward = fabs(up) >= fabs(down);
+            code[m] |= (uint8_t)((hit << (2 * e)) | ((hit & toward) << (2 * e + 1)));
+        }
+    }
+}
+
+static void tofg_fly_cell(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t r, ptrdiff_t c)
 {
     const ptrdiff_t C = p->C, N = p->R * p->C, m = r * C + c;
-    p->depth_out[m] = p->depth[m];
-    if (!p->usable[m]) return;
-    int cand = 0;
-    for (int e = 0; e < 4 && !cand; e++) {
-        const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
-        cand = tofg_hit(p, r, c, e) >= 0 || tofg_hit(p, r - dr, c - dc, e) == 1
-               || tofg_hit(p, r + dr, c + dc, e) == 0;
-    }
-    if (!cand) return;
+    if (!p->usable[m] || !tofg_candidate(p, code, r, c)) return;
     /* the two sides among the usable 8-neighbours: split at the middle of the depths */
     const double dm = p->depth[m];
     double lo = dm, hi = dm;
@@ -682,11 +722,17 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
     const tofg_fly_args p = {depth, sigma, usable, col, ncells > 1 ? cells : NULL, ncells, R,
                              C, step * step, k * k, 2.5, contrast, side, unflag, flags,
                              depth_out};
+    uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
+    if (!code) return RGBZ_ENOMEM;
+    memcpy(depth_out, depth, (size_t)(R * C) * sizeof *depth_out);
     const int nth = tofg_nth(workers);
     (void)nth;
     TOFG_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
+    TOFG_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++)
-        for (ptrdiff_t c = 0; c < C; c++) tofg_fly_cell(&p, r, c);
+        for (ptrdiff_t c = 0; c < C; c++) tofg_fly_cell(&p, code, r, c);
+    free(code);
     return RGBZ_OK;
 }
 

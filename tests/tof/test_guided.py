@@ -90,7 +90,7 @@ def _planes(R, C, F=3, seed=0):
 
 @pytest.mark.parametrize("axis", [0, 1])
 @pytest.mark.parametrize("second", [False, True])
-@pytest.mark.parametrize("R,C,F", [(23, 37, 3), (20, 70, 1), (9, 40, 5)])
+@pytest.mark.parametrize("R,C,F", [(23, 37, 3), (20, 70, 1), (9, 40, 5), (12, 300, 3)])
 def test_guided_pass_matches_numpy(axis, second, R, C, F):
     """Both axes, a first pass and a pass over a first pass's output (n_eff in), regular lines
     (the blocked fast path and the edges) and frequencies beyond the fast path's 4."""
