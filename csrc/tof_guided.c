@@ -758,34 +758,35 @@ static void tofg_bracket(const double *ctr, ptrdiff_t n, double v, ptrdiff_t *i,
 
 typedef struct {
     const double *depth, *sigma;
-    const float *col;
+    const float *col, *prior;
     ptrdiff_t R, C;
     const double *rc, *cc;
     double spacing;
     float inv2s2, inv2hc2, tol_k, tol_min;
 } tofg_up_args;
 
-/* The depth at a pixel of colour pc (scaled) from the candidate measurements m[0..n) with
-   spatial weights ws: the depth of the heaviest (spatial times colour weight) and the
-   weighted mean of those within max(tol_k sigma, tol_min) of it. Returns the summed weight
-   of the mean (0: no usable candidate). */
+/* The depth at a point of colour pc (scaled) from the candidate measurements m[0..n) with
+   spatial weights ws, each times its prior (1 measured, the fill's confidence for a filled
+   node, 0 none): the depth of the heaviest (spatial times colour weight) and the weighted
+   mean of those within max(tol_k sigma, tol_min) of it. Returns the summed weight of the
+   mean (0: no usable candidate). */
 static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_t *m,
                           const float *ws, int n, float *out)
 {
     const ptrdiff_t N = p->R * p->C;
-    float w[64], best = 0.0f;
+    float w[81], best = 0.0f;
     int kb = -1;
     for (int k = 0; k < n; k++) {
-        const double d = p->depth[m[k]];
+        const float pr = p->prior[m[k]] * ws[k];
         w[k] = 0.0f;
-        if (!(d == d) || !(ws[k] > 0.0f)) continue;               /* NaN: not usable */
+        if (!(pr > 0.0f)) continue;
         const float t0 = pc[0] - p->col[m[k]], t1 = pc[1] - p->col[N + m[k]];
         const float t2 = pc[2] - p->col[2 * N + m[k]];
         const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
-        /* a colour weight never vanishes: where no candidate has the pixel's colour (a
+        /* a colour weight never vanishes: where no candidate has the colour (a
            demosaicking artefact at an edge) the spatial weights decide */
         const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
-        w[k] = ws[k] * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
+        w[k] = pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
         if (w[k] > best) { best = w[k]; kb = k; }
     }
     if (kb < 0) return 0.0f;
@@ -804,45 +805,101 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
     return (float)den;
 }
 
-/* the 4 measurements around the pixel (bilinear weights); in a hole, the measurements
-   within `reach` grid lines (Gaussian weights, at most 8 x 8), with a confidence a quarter
-   of theirs */
-static void tofg_up_pixel(const tofg_up_args *p, ptrdiff_t r, float fy, ptrdiff_t c, float fx,
-                          double y, double x, const float *pc, ptrdiff_t reach, float *out,
-                          float *conf)
+/* A node without a usable measurement takes the mode over the usable ones within 1, else 2,
+   else 4 (at most `reach`) grid lines (Gaussian spatial weights, its own colour); its prior
+   becomes a quarter of their normalised weight (0: none there). */
+static void tofg_fill_node(const tofg_up_args *p, const float *prior0, ptrdiff_t r,
+                           ptrdiff_t c, ptrdiff_t reach, double *depth, double *sigma,
+                           float *prior)
 {
-    const ptrdiff_t r1 = r + 1 < p->R ? r + 1 : r, c1 = c + 1 < p->C ? c + 1 : c;
-    const ptrdiff_t m[4] = {r * p->C + c, r * p->C + c1, r1 * p->C + c, r1 * p->C + c1};
-    const float ws[4] = {(1.0f - fy) * (1.0f - fx), (1.0f - fy) * fx, fy * (1.0f - fx),
-                         fy * fx};
-    float got = tofg_up_mode(p, pc, m, ws, 4, out);
-    if (got > 0.0f) {
-        *conf = got;                                  /* the bilinear weights sum to 1 */
-        return;
-    }
-    ptrdiff_t mm[64];
-    float ww[64], all = 0.0f;
-    int n = 0;
-    const ptrdiff_t a0 = r - reach + 1 > 0 ? r - reach + 1 : 0;
-    const ptrdiff_t a1 = r + reach < p->R - 1 ? r + reach : p->R - 1;
-    const ptrdiff_t b0 = c - reach + 1 > 0 ? c - reach + 1 : 0;
-    const ptrdiff_t b1 = c + reach < p->C - 1 ? c + reach : p->C - 1;
-    for (ptrdiff_t i = a0; i <= a1 && n < 64; i++) {
-        const float dy = (float)((p->rc[i] - y) / p->spacing);
-        for (ptrdiff_t j = b0; j <= b1 && n < 64; j++) {
-            const float dx = (float)((p->cc[j] - x) / p->spacing);
-            mm[n] = i * p->C + j;
-            ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
-            all += ww[n++];
+    const ptrdiff_t N = p->R * p->C, m = r * p->C + c;
+    depth[m] = p->depth[m];
+    sigma[m] = p->sigma[m];
+    prior[m] = prior0[m];
+    if (prior0[m] > 0.0f) return;
+    const float pc[3] = {p->col[m], p->col[N + m], p->col[2 * N + m]};
+    const tofg_up_args q = {p->depth, p->sigma, p->col, prior0, p->R, p->C, p->rc, p->cc,
+                            p->spacing, p->inv2s2, p->inv2hc2, p->tol_k, p->tol_min};
+    for (ptrdiff_t lv = 1; lv <= reach; lv *= 2) {
+        ptrdiff_t mm[81];
+        float ww[81], all = 0.0f, out;
+        int n = 0;
+        const ptrdiff_t i0 = r - lv > 0 ? r - lv : 0, i1 = r + lv < p->R - 1 ? r + lv : p->R - 1;
+        const ptrdiff_t j0 = c - lv > 0 ? c - lv : 0, j1 = c + lv < p->C - 1 ? c + lv : p->C - 1;
+        int any = 0;                             /* nothing usable this far: look farther */
+        for (ptrdiff_t i = i0; i <= i1 && !any; i++)
+            for (ptrdiff_t j = j0; j <= j1; j++) any |= prior0[i * p->C + j] > 0.0f;
+        if (!any) continue;
+        for (ptrdiff_t i = i0; i <= i1; i++) {
+            const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
+            for (ptrdiff_t j = j0; j <= j1; j++) {
+                const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
+                mm[n] = i * p->C + j;
+                ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                all += ww[n++];
+            }
+        }
+        const float got = tofg_up_mode(&q, pc, mm, ww, n, &out);
+        if (got > 0.0f) {
+            int kb = -1;                       /* the usable candidate nearest the depth */
+            for (int k = 0; k < n; k++)
+                if (prior0[mm[k]] > 0.0f
+                    && (kb < 0 || fabs(p->depth[mm[k]] - out) < fabs(p->depth[mm[kb]] - out)))
+                    kb = k;
+            depth[m] = out;
+            sigma[m] = p->sigma[mm[kb]];
+            prior[m] = 0.25f * got / all;
+            return;
         }
     }
-    got = tofg_up_mode(p, pc, mm, ww, n, out);
-    if (got > 0.0f) {
-        *conf = 0.25f * got / all;
+}
+
+/* a node as the pixel loop reads it: colour (scaled), prior, depth, sigma in one 32-byte
+   record, so the four nodes of a pixel are two cache lines */
+typedef struct {
+    float c0, c1, c2, prior;
+    double depth, sigma;
+} tofg_node;
+
+/* the 4 nodes around the pixel, bilinear weights (the filled nodes at their prior): the rule
+   of tofg_up_mode, written out for four candidates */
+static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, ptrdiff_t r,
+                                 float fy, ptrdiff_t c, float fx, const float *pc, float *out,
+                                 float *conf)
+{
+    const ptrdiff_t r1 = r + 1 < p->R ? r + 1 : r, c1 = c + 1 < p->C ? c + 1 : c;
+    const tofg_node *nd[4] = {nodes + r * p->C + c, nodes + r * p->C + c1,
+                              nodes + r1 * p->C + c, nodes + r1 * p->C + c1};
+    const float ws[4] = {(1.0f - fy) * (1.0f - fx), (1.0f - fy) * fx, fy * (1.0f - fx),
+                         fy * fx};
+    float w[4], best = 0.0f;
+    int kb = -1;
+    for (int k = 0; k < 4; k++) {
+        const float pr = nd[k]->prior * ws[k];
+        const float t0 = pc[0] - nd[k]->c0, t1 = pc[1] - nd[k]->c1, t2 = pc[2] - nd[k]->c2;
+        const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
+        const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
+        w[k] = pr > 0.0f ? pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN) : 0.0f;
+        if (w[k] > best) { best = w[k]; kb = k; }
+    }
+    if (kb < 0) {
+        *out = NAN;
+        *conf = 0.0f;
         return;
     }
-    *out = NAN;
-    *conf = 0.0f;
+    const double db = nd[kb]->depth;
+    double tol = p->tol_k * nd[kb]->sigma;
+    tol = tol > p->tol_min ? tol : p->tol_min;
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < 4; k++) {
+        const double d = nd[k]->depth;
+        if (w[k] > 0.0f && fabs(d - db) <= tol) {
+            num += w[k] * d;
+            den += w[k];
+        }
+    }
+    *out = (float)(num / den);
+    *conf = (float)den;                               /* the bilinear weights sum to 1 */
 }
 
 #define TOFG_UPSAMPLE(TS, T)                                                                  \
@@ -856,16 +913,38 @@ int rgbz_tofg_upsample_##TS(const T *guide, ptrdiff_t H, ptrdiff_t W, double sca
     if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf         \
         || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4)   \
         return RGBZ_EINVAL;                                                                  \
-    const tofg_up_args p = {depth, sigma, col, R, C, rc, cc, spacing, (float)inv2s2,        \
-                            (float)inv2hc2, (float)tol_k, (float)tol_min};                   \
+    const ptrdiff_t N = R * C;                                                               \
     ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);                            \
     float *fx = malloc((size_t)(W > 0 ? W : 1) * sizeof *fx);                                \
-    if (!cx || !fx) { free(cx); free(fx); return RGBZ_ENOMEM; }                              \
+    float *prior0 = malloc((size_t)N * sizeof *prior0), *prior = malloc((size_t)N * sizeof *prior); \
+    double *fd = malloc((size_t)N * sizeof *fd), *fs = malloc((size_t)N * sizeof *fs);       \
+    if (!cx || !fx || !prior0 || !prior || !fd || !fs) {                                     \
+        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);                   \
+        return RGBZ_ENOMEM;                                                                  \
+    }                                                                                        \
     for (ptrdiff_t x = 0; x < W; x++) tofg_bracket(cc, C, (double)x, cx + x, fx + x);        \
-    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),            \
-                s2 = (float)(scale * cscale[2]);                                             \
+    for (ptrdiff_t m = 0; m < N; m++) prior0[m] = depth[m] == depth[m] ? 1.0f : 0.0f;        \
+    const tofg_up_args p0 = {depth, sigma, col, prior0, R, C, rc, cc, spacing,               \
+                             (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};   \
     const int nth = tofg_nth(workers);                                                       \
     (void)nth;                                                                               \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t r = 0; r < R; r++)                                                        \
+        for (ptrdiff_t c = 0; c < C; c++) tofg_fill_node(&p0, prior0, r, c, reach, fd, fs, prior); \
+    const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,        \
+                            (float)inv2hc2, (float)tol_k, (float)tol_min};                   \
+    tofg_node *nodes = malloc((size_t)N * sizeof *nodes);                                    \
+    if (!nodes) {                                                                            \
+        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);                   \
+        return RGBZ_ENOMEM;                                                                  \
+    }                                                                                        \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t m = 0; m < N; m++) {                                                      \
+        const tofg_node nm = {col[m], col[N + m], col[2 * N + m], prior[m], fd[m], fs[m]};   \
+        nodes[m] = nm;                                                                       \
+    }                                                                                        \
+    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),            \
+                s2 = (float)(scale * cscale[2]);                                             \
     TOFG_PARALLEL_FOR                                                                        \
     for (ptrdiff_t y = 0; y < H; y++) {                                                      \
         ptrdiff_t r;                                                                         \
@@ -874,12 +953,11 @@ int rgbz_tofg_upsample_##TS(const T *guide, ptrdiff_t H, ptrdiff_t W, double sca
         for (ptrdiff_t x = 0; x < W; x++) {                                                  \
             const T *g = guide + (y * W + x) * 3;                                            \
             const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};      \
-            tofg_up_pixel(&p, r, fy, cx[x], fx[x], (double)y, (double)x, pc, reach,          \
-                          out + y * W + x, conf + y * W + x);                                \
+            tofg_up_pixel(nodes, &p, r, fy, cx[x], fx[x], pc, out + y * W + x,               \
+                          conf + y * W + x);                                                 \
         }                                                                                    \
     }                                                                                        \
-    free(cx);                                                                                \
-    free(fx);                                                                                \
+    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);          \
     return RGBZ_OK;                                                                          \
 }
 

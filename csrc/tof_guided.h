@@ -87,14 +87,16 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
                      int unflag, uint8_t *flags, double *depth_out, int workers);
 
 /* Joint bilateral upsampling of the usable measurements (depth finite) to every pixel of the
-   guide (H, W, 3). A pixel takes the 4 measurements around it (grid-line centres rc (R,),
-   cc (C,) in pixels), weighted bilinearly times the colour kernel exp(-max(chi - 3, 0)
-   inv2hc2) of its colour against theirs (col (3, N) divided by sqrt(2) sigma_c; the pixel's
-   is guide * scale * cscale (3,)); the depth of the heaviest and the weighted mean of those
-   within max(tol_k sigma, tol_min) of it; confidence: the summed weight of that mean. With
-   no usable measurement among the 4, those within reach (<= 4) grid lines, Gaussian weights
-   exp(-d^2 inv2s2) (d in spacings), a quarter of their normalised weight as confidence.
-   Otherwise NaN and 0. */
+   guide (H, W, 3). First every node without a usable measurement takes the same rule over
+   the usable ones within 1, else 2, else 4 (at most reach <= 4) grid lines (Gaussian
+   weights exp(-d^2 inv2s2), d in spacings, its own colour), at a quarter of their
+   normalised weight. Then a pixel takes
+   the 4 nodes around it (grid-line centres rc (R,), cc (C,) in pixels), weighted
+   bilinearly times the colour kernel exp(-max(chi - 3, 0) inv2hc2) of its colour against
+   theirs (col (3, N) divided by sqrt(2) sigma_c; the pixel's is guide * scale * cscale
+   (3,)): the depth of the heaviest and the weighted mean of those within max(tol_k sigma,
+   tol_min) of it; confidence: the summed weight of that mean. NaN and 0 where no node
+   around the pixel has a depth. */
 int rgbz_tofg_upsample_u8(const uint8_t *guide, ptrdiff_t H, ptrdiff_t W, double scale,
                           const double *cscale, const double *depth, const double *sigma,
                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,

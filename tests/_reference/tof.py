@@ -238,11 +238,10 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
     """A depth and a confidence at every pixel (plain loops; csrc/tof_guided.c's rule)."""
     g = np.asarray(guide, np.float64)
     H, W = g.shape[:2]
-    d = np.asarray(depth, np.float64)
-    s = np.asarray(sigma, np.float64)
+    d0 = np.asarray(depth, np.float64)
+    s0 = np.asarray(sigma, np.float64)
     cm = np.asarray(col, np.float64)
-    out = np.full((H, W), np.nan)
-    conf = np.zeros((H, W))
+    prior0 = np.isfinite(d0).astype(np.float64)
 
     def bracket(ctr, v):
         i = int(np.searchsorted(ctr, v, side="right"))
@@ -252,16 +251,17 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
             return ctr.size - 1, 0.0
         return i - 1, (v - ctr[i - 1]) / (ctr[i] - ctr[i - 1])
 
-    def mode(pc, ms, ws):
+    def mode(pc, ms, ws, d, s, prior):
         w = []
         for m, wsp in zip(ms, ws):
-            if not np.isfinite(d[m]) or not wsp > 0:
+            pr = prior[m] * wsp
+            if not pr > 0:
                 w.append(0.0)
                 continue
             chi = ((pc - cm[:, m]) ** 2).sum() - 3.0
             x = max(chi, 0.0) * inv2hc2
             wc = np.exp(-x) if x < 36.0 else 0.0
-            w.append(wsp * max(wc, 1e-20))
+            w.append(pr * max(wc, 1e-20))
         if not any(v > 0 for v in w):
             return None
         kb = int(np.argmax(w))
@@ -270,6 +270,31 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
         den = sum(wv for wv, _ in used)
         return sum(wv * dv for wv, dv in used) / den, den
 
+    # the nodes without a usable measurement, filled from those within reach
+    d, s, prior = d0.copy(), s0.copy(), prior0.copy()
+    for r in range(R):
+        for c in range(C):
+            m = r * C + c
+            if prior0[m] > 0:
+                continue
+            lv = 1
+            while lv <= reach:
+                ms, ws = [], []
+                for i in range(max(r - lv, 0), min(r + lv, R - 1) + 1):
+                    for j in range(max(c - lv, 0), min(c + lv, C - 1) + 1):
+                        ms.append(i * C + j)
+                        dist = ((rc[i] - rc[r]) ** 2 + (cc[j] - cc[c]) ** 2) / spacing ** 2
+                        ws.append(np.exp(-dist * inv2s2))
+                got = mode(cm[:, m], ms, ws, d0, s0, prior0)
+                if got is not None:
+                    d[m] = got[0]
+                    usable = [k for k in ms if prior0[k] > 0]
+                    s[m] = s0[min(usable, key=lambda k: abs(d0[k] - got[0]))]
+                    prior[m] = 0.25 * got[1] / sum(ws)
+                    break
+                lv *= 2
+    out = np.full((H, W), np.nan)
+    conf = np.zeros((H, W))
     for y in range(H):
         r, fy = bracket(rc, y)
         for x in range(W):
@@ -278,17 +303,7 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
             r1, c1 = min(r + 1, R - 1), min(c + 1, C - 1)
             ms = [r * C + c, r * C + c1, r1 * C + c, r1 * C + c1]
             ws = [(1 - fy) * (1 - fx), (1 - fy) * fx, fy * (1 - fx), fy * fx]
-            got = mode(pc, ms, ws)
+            got = mode(pc, ms, ws, d, s, prior)
             if got is not None:
                 out[y, x], conf[y, x] = got
-                continue
-            ms, ws = [], []
-            for i in range(max(r - reach + 1, 0), min(r + reach, R - 1) + 1):
-                for j in range(max(c - reach + 1, 0), min(c + reach, C - 1) + 1):
-                    ms.append(i * C + j)
-                    dist = ((rc[i] - y) ** 2 + (cc[j] - x) ** 2) / spacing ** 2
-                    ws.append(np.exp(-dist * inv2s2))
-            got = mode(pc, ms, ws)
-            if got is not None:
-                out[y, x], conf[y, x] = got[0], 0.25 * got[1] / sum(ws)
     return out, conf

@@ -168,7 +168,7 @@ def test_guided_flying_matches_numpy(pattern):
 
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_upsample_matches_numpy(pattern):
-    frame, guide, _ = _frame(pattern, shape=(32, 40))
+    frame, guide, _ = _frame(pattern, shape=(24, 32))
     res = tof_depth(frame.tof, guide=guide)
     from rgbz_fast.tof._guided import _Layout, guide_colours
     lay = _Layout(res.sites, res.block, res.shape)
