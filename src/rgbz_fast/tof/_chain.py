@@ -27,6 +27,7 @@ measured in docs/reports/isp.md.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from dataclasses import replace as dc_replace
 
 import numpy as np
 
@@ -34,6 +35,7 @@ from .. import _kernels
 from .._validate import check_choice, check_number, check_workers, merge_params
 from ._calibration import ToFCalibration, as_taps
 from ._filters import SiteGrid, denoise_phasors_bilateral
+from ._guided import check_guide, guided_flying_of, guided_run
 from ._noise import tap_variance
 from ._result import ToFDepth
 from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
@@ -77,11 +79,18 @@ class ToFISP:
         ``"none"``. True and False mean ``"bilateral"`` and ``"none"``.
     window : int or None
         Odd window size in Z-pixel cells; None: 9 for the bilateral denoise
-        (the 5x5 nearest Z measurements) and 5 for the box (the paper's
-        5x5-pixel kernel: 3x3 Z measurements).
+        (the 5x5 nearest Z measurements), 21 for the bilateral denoise with a
+        guide (the 11x11 nearest, whose colour keeps the mean on one surface)
+        and 5 for the box (the paper's 5x5-pixel kernel: 3x3 Z measurements).
     range_scale : float
         Range scale ``h`` of the bilateral weights (2; larger smooths across
         weaker edges).
+    colour_scale : float
+        With a guide: range scale ``h_c`` of the colour weights
+        ``exp(-max(chi_c - 3, 0) / (2 h_c^2))``, ``chi_c`` the colour
+        difference of two measurements in units of the guide's noise (5: a
+        colour step of a few noise levels, texture, still averages; a colour
+        edge does not). Without a guide it is not used.
     min_snr : float
         Smallest per-frequency ``|I + iQ| / sigma_I`` of a valid measurement
         (4: on noisy walls the unwrapping errs on 0.07 % of the measurements
@@ -131,6 +140,7 @@ class ToFISP:
     denoise: str = "bilateral"
     window: int | None = None
     range_scale: float = 2.0
+    colour_scale: float = 5.0
     min_snr: float = 4.0
     min_amplitude: float = 0.0
     max_residual: float = 0.15
@@ -147,6 +157,8 @@ class ToFISP:
             put(self, "window", _check_window(self.window))
         put(self, "range_scale", check_number(self.range_scale, "range_scale", lo=0,
                                               lo_open=True))
+        put(self, "colour_scale", check_number(self.colour_scale, "colour_scale", lo=0,
+                                               lo_open=True))
         put(self, "min_snr", check_number(self.min_snr, "min_snr", lo=0))
         put(self, "min_amplitude", check_number(self.min_amplitude, "min_amplitude", lo=0))
         put(self, "max_residual", check_number(self.max_residual, "max_residual", lo=0,
@@ -172,13 +184,14 @@ class ToFISP:
         """A copy with some fields changed (and checked)."""
         return merge_params(ToFISP, self, changes, caller="replace()")
 
-    def run(self, tof, *, workers=None):
+    def run(self, tof, *, guide=None, workers=None):
         """Depth, amplitude and validity of every Z measurement of ``tof`` (a ToFTaps or a
-        RawFrame with taps); ``workers``: threads of the C kernels."""
-        return _run(as_taps(tof, "tof"), self, check_workers(workers))
+        RawFrame with taps); ``guide``: the frame's colour image (:func:`tof_depth`);
+        ``workers``: threads of the C kernels."""
+        return _run(as_taps(tof, "tof"), self, check_workers(workers), guide)
 
 
-def tof_depth(tof, *, params=None, workers=None, **options):
+def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
     """The ToF ISP: taps of every Z measurement -> depth, amplitude, validity.
 
     Parameters
@@ -191,13 +204,20 @@ def tof_depth(tof, *, params=None, workers=None, **options):
     params : ToFISP or dict, optional
         The parameters (default ``ToFISP()``; a dict holds some of its
         fields).
+    guide : ndarray, shape (rows, cols, 3), optional
+        The frame's own colour image (``ColourISP().run(frame)``: uint8 or
+        uint16 sRGB, or float in [0, 1]). The bilateral denoise then also
+        weighs neighbours by colour similarity (window 21 by default) and the
+        flying-pixel test uses colour edges, resolving mixed measurements to
+        their side (:mod:`rgbz_fast.tof` guide, docs/guide/isp.md). None: the
+        unguided ISP.
     workers : int, optional
         Threads of the C kernels (None or -1: all cores). The result does
         not depend on it.
     **options
         Fields of :class:`ToFISP` (``denoise="box"``, ``min_snr=3``,
         ``calibration=cal``, ...), applied over ``params``: ``denoise``,
-        ``window``, ``range_scale``, ``min_snr``, ``min_amplitude``,
+        ``window``, ``range_scale``, ``colour_scale``, ``min_snr``, ``min_amplitude``,
         ``max_residual``, ``max_sigma``, ``flying_step``, ``min_reflectance``,
         ``max_range``, ``calibration``.
 
@@ -209,8 +229,10 @@ def tof_depth(tof, *, params=None, workers=None, **options):
     ------
     ValueError, TypeError
         A frame without taps, malformed taps, an unknown option, thresholds
-        out of range, a calibration of another sensor layout, or a
-        ``max_range`` the unwrapping cannot search (:class:`ToFISP`).
+        out of range, a calibration of another sensor layout, a ``max_range``
+        the unwrapping cannot search (:class:`ToFISP`), or a ``guide`` that
+        is not the frame's colour image (wrong shape, 2-D, NaN, floats beyond
+        [0, 1]).
 
     Notes
     -----
@@ -256,11 +278,34 @@ def tof_depth(tof, *, params=None, workers=None, **options):
     """
     tof = as_taps(tof, "tof")
     params = merge_params(ToFISP, params, options, caller="tof_depth()")
-    return _run(tof, params, check_workers(workers))
+    return _run(tof, params, check_workers(workers), guide)
 
 
-def _run(tof, p, nthreads):
+def _unwrap_phasors(i, q, f, w, max_range, calibration, nthreads):
+    """Depth, residual, wraps, phase and amplitude of (denoised) phasors (F, n): atan2,
+    amplitude and unwrapping in one C pass, or with a calibration atan2 and amplitude, the
+    cyclic-error correction of the phase, then the unwrapping."""
+    n = i.shape[1]
+    phase, amp = np.empty_like(i), np.empty_like(i)
+    i, q = np.ascontiguousarray(i), np.ascontiguousarray(q)
+    if calibration is None:
+        depth, residual, wraps = np.empty(n), np.empty(n), np.empty(n, np.int32)
+        ok = _kernels.tof_depth_iq(i, q, f, w, max_range, depth, residual, wraps, phase, amp,
+                                   workers=nthreads)
+    else:
+        ok = _kernels.tof_phase_iq(i, q, phase, amp, nthreads)
+    if not ok:
+        raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
+    if calibration is not None:
+        phase = calibration.correct_phase(phase)
+        depth, residual, wraps = unwrap(phase, f, max_range=max_range, workers=nthreads)
+    return depth, residual, wraps, phase, amp
+
+
+def _run(tof, p, nthreads, guide=None):
     """The chain on checked taps with checked parameters ``p`` (a ToFISP)."""
+    if guide is not None:
+        return _run_guided(tof, p, nthreads, guide)
     denoise, window, calibration = p.denoise, p._window_cells, p.calibration
     taps = tof.taps
     n = tof.n_sites
@@ -301,22 +346,8 @@ def _run(tof, p, nthreads):
         else:
             count = np.ones(n)
             var = 2.0 * tap_variance(offset, sensor)
-        phase, amp = np.empty_like(i), np.empty_like(i)
-        i, q = np.ascontiguousarray(i), np.ascontiguousarray(q)
-        if calibration is None:
-            # atan2, amplitude and unwrapping of the phasors in one C pass
-            depth, residual, wraps = np.empty(n), np.empty(n), np.empty(n, np.int32)
-            ok = _kernels.tof_depth_iq(i, q, f, w, max_range, depth, residual, wraps, phase,
-                                       amp, workers=nthreads)
-        else:
-            # atan2 and amplitude; the cyclic error is corrected on the phase, which is then
-            # unwrapped
-            ok = _kernels.tof_phase_iq(i, q, phase, amp, nthreads)
-        if not ok:
-            raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
-        if calibration is not None:
-            phase = calibration.correct_phase(phase)
-            depth, residual, wraps = unwrap(phase, f, max_range=max_range, workers=nthreads)
+        depth, residual, wraps, phase, amp = _unwrap_phasors(i, q, f, w, max_range,
+                                                             calibration, nthreads)
     snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
     sigma = _depth_sigma(amp, var, f)
     reflectance = _implied_reflectance(depth, amp, sensor, tof.block)
@@ -333,3 +364,20 @@ def _run(tof, p, nthreads):
                     frequencies=np.asarray(tof.frequencies, np.float64).copy(),
                     sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
                     shape=tuple(tof.shape))
+
+
+def _run_guided(tof, p, nthreads, guide):
+    """The chain with the frame's colour image: the guided denoise (``"bilateral"``) or the
+    unguided one, then the flying-pixel test with colour edges."""
+    g, scale = check_guide(guide, tof.shape)
+    f, w, max_range = _check_unwrap_args(tof.taps.shape[0], tof.frequencies, None, p.max_range)
+    if p.calibration is not None:
+        p.calibration.check(tof)
+    if p.denoise == "bilateral":
+        return guided_run(tof, p, g, scale, nthreads, f, w, max_range,
+                          lambda i, q: _unwrap_phasors(i, q, f, w, max_range, p.calibration,
+                                                       nthreads))
+    res = _run(tof, dc_replace(p, flying_step=None), nthreads)
+    if p.flying_step is None:
+        return res
+    return guided_flying_of(res, g, scale, p.flying_step, nthreads)

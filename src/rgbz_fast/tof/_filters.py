@@ -79,12 +79,12 @@ class SiteGrid:
         self.n = rows.size
         self.block = block
         if not self._row_major(rows, cols):
-            self.rows_u, self.ri = np.unique(rows, return_inverse=True)
-            self.cols_u, self.ci = np.unique(cols, return_inverse=True)
+            self.rows_u, self._ri = np.unique(rows, return_inverse=True)
+            self.cols_u, self._ci = np.unique(cols, return_inverse=True)
             self.shape = (self.rows_u.size, self.cols_u.size)
             self.full = (self.n == self.shape[0] * self.shape[1]
-                         and np.array_equal(self.ri, np.arange(self.n) // self.shape[1])
-                         and np.array_equal(self.ci, np.arange(self.n) % self.shape[1]))
+                         and np.array_equal(self._ri, np.arange(self.n) // self.shape[1])
+                         and np.array_equal(self._ci, np.arange(self.n) % self.shape[1]))
         self.present = self.to_grid(np.ones(self.n, bool), False)
 
     def _row_major(self, rows, cols):
@@ -105,11 +105,24 @@ class SiteGrid:
                 and np.all(grid_r == line_r[:, None]) and np.all(grid_c == line_c[None])):
             return False
         self.rows_u, self.cols_u = line_r.copy(), line_c.copy()
-        self.ri = np.repeat(np.arange(nrows), ncols)
-        self.ci = np.tile(np.arange(ncols), nrows)
+        self._ri = self._ci = None             # made when asked for (a full grid reshapes)
         self.shape = (nrows, ncols)
         self.full = True
         return True
+
+    @property
+    def ri(self):
+        """Grid row of every measurement, shape (n,)."""
+        if self._ri is None:
+            self._ri = np.repeat(np.arange(self.shape[0]), self.shape[1])
+        return self._ri
+
+    @property
+    def ci(self):
+        """Grid column of every measurement, shape (n,)."""
+        if self._ci is None:
+            self._ci = np.tile(np.arange(self.shape[1]), self.shape[0])
+        return self._ci
 
     def to_grid(self, values, fill=0.0):
         """(..., n) -> (..., R, C); cells without a measurement hold ``fill``."""

@@ -51,6 +51,10 @@ class ToFDepth:
     block : int
     shape : (rows, cols)
         Frame shape, for :meth:`to_frame`.
+    measured : ndarray of float64, shape (n,)
+        The depth as measured: ``depth`` itself, except where a guided ISP
+        resolved a mixed measurement to the depth of its side
+        (:attr:`ToFFlag.RESOLVED`).
     """
 
     depth: np.ndarray
@@ -69,9 +73,14 @@ class ToFDepth:
     sites: tuple
     block: int
     shape: tuple
+    measured: np.ndarray | None = None
 
     _FIELDS = ("depth", "residual", "snr", "sigma", "reflectance", "valid", "flags", "wraps",
-               "count", "phase", "amplitude", "offset")
+               "count", "phase", "amplitude", "offset", "measured")
+
+    def __post_init__(self):
+        if self.measured is None:
+            object.__setattr__(self, "measured", self.depth)
 
     @property
     def n_sites(self):
@@ -85,7 +94,8 @@ class ToFDepth:
         values : str or ndarray
             A field name (``"depth"``, ``"residual"``, ``"snr"``, ``"sigma"``,
             ``"reflectance"``, ``"valid"``, ``"flags"``, ``"wraps"``,
-            ``"count"``, ``"phase"``, ``"amplitude"``, ``"offset"``) or an
+            ``"count"``, ``"phase"``, ``"amplitude"``, ``"offset"``,
+            ``"measured"``) or an
             array of shape (n,) or (F, n).
         fill : scalar
             Value of the pixels that hold no Z measurement (NaN by default;

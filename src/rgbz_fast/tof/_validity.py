@@ -29,7 +29,7 @@ from .._validate import check_number
 from ._filters import SiteGrid
 
 __all__ = ["ToFFlag", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
-           "FLAG_OUT_OF_RANGE", "flying_pixels"]
+           "FLAG_OUT_OF_RANGE", "FLAG_RESOLVED", "flying_pixels"]
 
 class ToFFlag(enum.IntFlag):
     """The bits of :attr:`~rgbz_fast.tof.ToFDepth.flags`: why a measurement is not valid.
@@ -58,6 +58,13 @@ class ToFFlag(enum.IntFlag):
         The depth is < 0, within 5 sigma of ``max_range`` or beyond, or
         implies a reflectance below ``min_reflectance``: most likely a surface
         beyond the unambiguous range, aliased.
+    RESOLVED
+        With a guide only: a measurement at a depth edge whose depth lies
+        between the two sides and whose cells all have one side's colour
+        (a mixture of the two surfaces) holds that side's depth in
+        ``ToFDepth.depth``; ``ToFDepth.measured`` keeps the measured one. Not
+        valid (its measurement is of no single surface), but
+        :func:`~rgbz_fast.tof.upsample_depth` uses it.
 
     Examples
     --------
@@ -72,6 +79,7 @@ class ToFFlag(enum.IntFlag):
     INCONSISTENT = 4
     FLYING = 8
     OUT_OF_RANGE = 16
+    RESOLVED = 32
 
 
 FLAG_SATURATED = int(ToFFlag.SATURATED)
@@ -79,6 +87,7 @@ FLAG_LOW_SIGNAL = int(ToFFlag.LOW_SIGNAL)
 FLAG_INCONSISTENT = int(ToFFlag.INCONSISTENT)
 FLAG_FLYING = int(ToFFlag.FLYING)
 FLAG_OUT_OF_RANGE = int(ToFFlag.OUT_OF_RANGE)
+FLAG_RESOLVED = int(ToFFlag.RESOLVED)
 
 
 def _depth_sigma(amp, var, frequencies):
