@@ -13,7 +13,8 @@ import io
 
 import numpy as np
 
-__all__ = ["depth_preview", "depth_flags_figure", "tradeoff_plot", "tradeoff_figure"]
+__all__ = ["depth_preview", "depth_flags_figure", "full_depth_preview", "tradeoff_plot",
+           "tradeoff_figure"]
 
 
 def _pyplot():
@@ -92,7 +93,8 @@ FLAG_REASONS = (("saturated", "FLAG_SATURATED", "#e7298a"),
                 ("low signal", "FLAG_LOW_SIGNAL", "#7570b3"),
                 ("inconsistent frequencies", "FLAG_INCONSISTENT", "#d95f02"),
                 ("flying pixel", "FLAG_FLYING", "#e6ab02"),
-                ("out of range", "FLAG_OUT_OF_RANGE", "#a6761d"))
+                ("out of range", "FLAG_OUT_OF_RANGE", "#a6761d"),
+                ("resolved by the colour guide", "FLAG_RESOLVED", "#66a61e"))
 #: the categories of the flags figure: valid, each reason alone, several at once
 FLAG_CATEGORIES = ((("valid", "#1b9e77"),) + tuple((label, c) for label, _, c in FLAG_REASONS)
                    + (("several reasons", "#000000"),))
@@ -164,6 +166,29 @@ def _log_axis_numbers(ax):
     ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
     ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     ax.xaxis.set_minor_formatter(NullFormatter())
+
+
+def full_depth_preview(depth, title, scale=None):
+    """An 8-bit colour-mapped PNG of a full-resolution depth map (NaN grey), with its scale.
+
+    ``scale``: (min, max) metres; default the 1st to 99th percentile of the finite depths."""
+    matplotlib, plt = _pyplot()
+    good = depth[np.isfinite(depth)]
+    if scale is None:
+        scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
+            else (0.0, 1.0)
+        if scale[1] <= scale[0]:
+            scale = (scale[0], scale[0] + 1e-3)
+    rows, cols = depth.shape
+    fig, ax = plt.subplots(figsize=(6.4, 6.4 * rows / cols * 0.92 + 0.6))
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
+    im = ax.imshow(np.ma.masked_invalid(depth), cmap=cmap, vmin=scale[0], vmax=scale[1],
+                   interpolation="nearest")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, extend="both").set_label("distance (m)")
+    ax.set_title(f"{title} ({100 * good.size / depth.size:.1f} % covered)", fontsize=9)
+    return _png(fig, plt, bbox_inches="tight")
 
 
 def tradeoff_plot(res):
