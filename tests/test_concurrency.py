@@ -337,5 +337,8 @@ def test_a_thread_stack_the_system_refuses_is_a_clear_error():
                                           "mask1"))
         code_cli, _, line = run(["-m", "rgbz_fast", "reconstruct", str(frame), "--out",
                                  str(Path(d) / "out"), "--quiet", "--workers", "2"], "32G")
-        assert code_cli == 2 and line.startswith("rgbz-fast reconstruct: error: " + want)
+        # the command line says it in its own words: the option, not the keyword
+        assert code_cli == 2 and line.startswith(
+            "rgbz-fast reconstruct: error: " + want.replace("workers=2", "--workers 2"))
+        assert line.endswith("or pass --workers 1")
         assert not (Path(d) / "out").exists()

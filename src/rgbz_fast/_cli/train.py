@@ -49,6 +49,7 @@ def run(args):
     from ..evaluation import train_filters
     from ..io import folder_dataset
 
+    c.output_file(args.out)
     if not (c._exists(args.dataset, "--dataset") and args.dataset.is_dir()):
         raise c.CliError(f"--dataset: {args.dataset} is not a folder")
     from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
