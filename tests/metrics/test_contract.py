@@ -159,8 +159,8 @@ test_api_contract = api_tests(ROWS)
 
 def test_psnr_of_finite_images_is_finite_at_every_scale():
     """The PSNR of two different finite images is a finite number of dB, without a warning,
-    whatever the scale: squared differences that overflow (1e300) or underflow (1e-200)
-    and a data_range whose square overflows (1e200) or underflows (1e-200) used to give
+    whatever the scale: squared differences that overflow (1e300) or underflow (1e-200,
+    subnormal differences down to the smallest double) and a data_range whose square overflows (1e200) or underflows (1e-200) used to give
     -inf, inf or NaN. Equal images give inf."""
     import warnings
 
@@ -170,7 +170,7 @@ def test_psnr_of_finite_images_is_finite_at_every_scale():
         assert metrics.cfa_psnr(f64(), f64(value=1e300), data_range=1.0) == \
             pytest.approx(-6000.0)
         one = with_value(1.0, shape=(8, 8, 3), at=(0, 0, 0))
-        for scale in (1e-200, 1e-100, 1.0, 1e100, 1e200, 1e300):
+        for scale in (5e-324, 1e-310, 1e-200, 1e-100, 1.0, 1e100, 1e200, 1e300):
             want = 10 * np.log10(192.0)                  # one pixel of 192 off by data_range
             for psnr in (metrics.cpsnr(a, one * scale, data_range=scale),
                          metrics.cfa_psnr(a, one * scale, data_range=scale),

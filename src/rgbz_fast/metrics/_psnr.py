@@ -125,13 +125,17 @@ def _mse(ref, tst, mask, threads):
     a, b = ref.astype(np.float64), tst.astype(np.float64)
     if mask is not None:
         a, b = a[mask], b[mask]
-    half = a * 0.5 - b * 0.5                    # halves: no overflow, exact above subnormals
-    top = float(np.max(np.abs(half)))
+    with np.errstate(over="ignore"):
+        diff = a - b                            # exact for subnormals (no halving rounds them)
+    extra = 0
+    if not np.all(np.isfinite(diff)):           # beyond the largest double: halves, exact there
+        diff, extra = a * 0.5 - b * 0.5, 1
+    top = float(np.max(np.abs(diff)))
     if top == 0:
         return 0.0, 0
     exp = math.frexp(top)[1]
-    r = np.ldexp(half, -exp)                    # |r| < 1
-    return float(np.mean(r * r)), exp + 1       # (2 half)**2 = r**2 * 4**(exp + 1)
+    r = np.ldexp(diff, -exp)                    # |r| < 1
+    return float(np.mean(r * r)), exp + extra   # (2**extra diff)**2 = r**2 * 4**(exp + extra)
 
 
 #: the smallest normal double: a sum of squares below it has lost digits (or underflowed)
