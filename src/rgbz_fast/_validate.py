@@ -177,10 +177,20 @@ def check_meta(meta, name="meta", allow_none=False):
 
 def as_array(value, name, **kwargs):
     """``np.asarray(value, **kwargs)``, or a TypeError naming ``name`` when NumPy cannot make
-    an array of it (a ragged list, an object it refuses): NumPy's message names no parameter."""
+    an array of it (a ragged list, an object it refuses): NumPy's message names no parameter.
+    With a real ``dtype``, complex numbers, text and dates are refused too: the conversion
+    would drop the imaginary part or read numbers out of text."""
+    if value is None:                              # np.asarray(None, float) is NaN
+        raise TypeError(f"{name}: expected an array of numbers, got None")
     try:
-        return np.asarray(value, **kwargs)
+        a = np.asarray(value)
+        if kwargs.get("dtype") is not None and np.dtype(kwargs["dtype"]).kind in "biuf" \
+                and a.dtype.kind in "cUSMm":
+            raise TypeError(f"{name}: expected real numbers, got dtype {a.dtype}")
+        return np.asarray(a, **kwargs)
     except (ValueError, TypeError) as exc:
+        if str(exc).startswith(f"{name}: "):
+            raise
         raise TypeError(f"{name}: expected an array of numbers, got a {type(value).__name__} "
                         f"NumPy cannot make one of ({' '.join(str(exc).split())[:80]})") \
             from None

@@ -199,6 +199,22 @@ ROWS = [
     R("tof.depth_map-fill", "ToFDepth.depth_map(fill=[1])",
       lambda f: tof.tof_depth(sim_frame()).depth_map(fill=[1]), TypeError,
       "fill: expected a number"),
+    R("tof.denoise-i-complex", "denoise_phasors(complex i)",
+      lambda f: tof.denoise_phasors(np.zeros((1, 3), complex), np.zeros((1, 3)),
+                                    (np.arange(3), np.zeros(3, int))), TypeError,
+      "i: expected real numbers, got dtype complex128"),
+    R("tof.unwrap-phase-text", "unwrap(phase of text)",
+      lambda f: tof.unwrap([["0.1", "0.2"]], [20e6]), TypeError,
+      "phase: expected real numbers, got dtype <U3"),
+    R("tof.demodulate-huge", "demodulate(taps of 1e200)",
+      lambda f: tof.demodulate(np.full((1, 4, 3), 1e200)), ValueError,
+      "taps: values up to 1e+200 in magnitude, beyond 1e+150"),
+    R("tof.depth-guide-int64", "tof_depth(frame, guide=int64 image)",
+      lambda f: tof.tof_depth(sim_frame(), guide=np.ones((16, 16, 3), np.int64)), TypeError,
+      "guide: an image of int64; expected uint8 or uint16 sRGB, or floats in [0, 1]"),
+    R("tof.upsample-guide-int32", "upsample_depth(result, int32 image)",
+      lambda f: tof.upsample_depth(tof.tof_depth(sim_frame()), np.ones((16, 16, 3), np.int32)),
+      TypeError, "guide: an image of int32"),
 ]
 
 test_api_contract = api_tests(ROWS)

@@ -32,6 +32,11 @@ __all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unw
 MAX_WRAPS = int(_kernels.TOF_MAX_WRAPS)
 
 
+#: the largest tap magnitude: the phasor, its noise and its SNR square sums of taps, which
+#: stay finite doubles below it (taps are counts or electrons, far below)
+TAP_MAX = 1e150
+
+
 def _check_taps(taps, name="taps"):
     t = as_array(taps, name)
     if t.ndim != 3 or t.shape[1] != 4 or t.shape[0] < 1:
@@ -41,6 +46,10 @@ def _check_taps(taps, name="taps"):
         raise TypeError(f"{name}: expected real numbers, got dtype {t.dtype}")
     if np.issubdtype(t.dtype, np.floating) and not np.all(np.isfinite(t)):
         raise ValueError(f"{name}: holds NaN or infinite values; expected finite data")
+    if t.size and t.dtype.kind == "f" and float(np.max(np.abs(t))) > TAP_MAX:
+        raise ValueError(f"{name}: values up to {float(np.max(np.abs(t))):g} in magnitude, "
+                         f"beyond {TAP_MAX:g}: their sums and squares (offset, amplitude, "
+                         "noise) would overflow; expected counts or electrons")
     return t
 
 
