@@ -155,7 +155,7 @@ def check_path(value, name="path"):
         raise TypeError(f"{name}: expected a path (str or pathlib.Path), got a bytes path")
     if not text or "\0" in text:
         raise ValueError(f"{name}: expected a file name, got {text!r}")
-    longest = max(len(os.fsencode(part)) for part in Path(text).parts)
+    longest = max((len(os.fsencode(part)) for part in Path(text).parts), default=0)
     if longest > 255:
         raise ValueError(f"{name}: a name in {text[:60]!r}{'...' * (len(text) > 60)} is "
                          f"{longest} bytes, more than the 255 a file name may have")

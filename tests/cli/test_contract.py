@@ -225,6 +225,18 @@ CLI_ROWS = [
                                  "{d}/f.npz"), "--dataset: "),
     C("cli.evaluate-fifo", ("evaluate", "--dataset", "{d}/fifo.tif"),
       "dataset: {d}/fifo.tif is a FIFO (named pipe), not a regular file"),
+    C("cli.simulate-out-uncreatable", ("simulate", "{d}/small.png", "--out", "/proc/rgbz-out"),
+      "--out: /proc/rgbz-out: No such file or directory"),
+    C("cli.calibrate-shape-huge", ("calibrate", "--simulate", "--shape", "100000x100000",
+                                   "--out", "{d}/cal_huge.npz"),
+      "--shape: 100000x100000 is 1e+04 megapixels, more than the limit of 200 megapixels"),
+    C("cli.opcount-shape-huge", ("opcount", "--shape", "100000x100000"),
+      "--shape: 100000x100000 is 1e+04 megapixels"),
+    C("cli.reconstruct-frame-pattern", ("reconstruct", "{d}/ok.npz", "--pattern", "bayer"),
+      "pattern: {d}/ok.npz records its own pattern 'mask1'; --pattern 'bayer' applies to a "
+      "plain TIFF/PNG mosaic"),
+    C("cli.reconstruct-frame-bit-depth", ("reconstruct", "{d}/ok.npz", "--bit-depth", "12"),
+      "bit_depth: {d}/ok.npz records its own bit depth 11; --bit-depth 12 applies"),
 ]
 
 test_cli_contract = cli_tests(CLI_ROWS)
@@ -326,3 +338,18 @@ def test_outputs_are_checked_against_inputs_before_anything_is_written(files, tm
     assert main(["evaluate", "--dataset", str(ds), "--out", str(ds / "results"), "--metrics",
                  "cfa_psnr", "--methods", "bi", "--patterns", "mask1", "--quiet"]) == 0
     assert sorted(p.name for p in ds.iterdir()) == ["a.png", "results"]
+
+
+def test_an_allocation_that_fails_is_one_error_line(files, capsys, monkeypatch):
+    """A MemoryError that no size check foresaw ends the command with exit 2 and one error
+    line, not a traceback."""
+    from rgbz_fast._cli import reconstruct as command
+
+    def no_memory(args):
+        raise MemoryError("Unable to allocate 224. GiB")
+
+    monkeypatch.setattr(command, "run", no_memory)
+    assert main(["reconstruct", str(files / "ok.npz"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["rgbz-fast reconstruct: error: out of memory (Unable to allocate 224. GiB); "
+                   "try a smaller input or --max-pixels"]

@@ -294,6 +294,12 @@ ROWS = [
     R("io.read_image-long-name", "read_image(a 300-byte name)",
       lambda f: rio.read_image(f / ("a" * 296 + ".png")), ValueError,
       "path: a name in "),
+    R("io.load_frame-npz-pattern", "load_frame(NPZ frame, pattern='bayer')",
+      lambda f: rio.load_frame(f / "ok.npz", pattern="bayer"), ValueError,
+      "pattern: {d}/ok.npz records its own pattern 'mask1'; pattern='bayer' applies to a plain"),
+    R("io.load_frame-npz-bit_depth", "load_frame(NPZ frame, bit_depth=12)",
+      lambda f: rio.load_frame(f / "ok.npz", bit_depth=12), ValueError,
+      "bit_depth: {d}/ok.npz records its own bit depth 11"),
     R("io.atomic_write-folder", "atomic_write(a folder, 'x')",
       lambda f: rio.atomic_write(f / "empty", "x"), ValueError,
       "path: {d}/empty is a folder; expected a file to write"),
@@ -422,3 +428,18 @@ def test_unreadable_files_name_the_path_and_leak_no_handle(files, tmp_path):
         assert issubclass(kind, ValueError), (path.name, kind, msg)
         assert str(path) in msg and reason in msg, (path.name, msg)
         assert msg.split(":")[0] in ("path", "dataset") and "\n" not in msg, msg
+
+
+def test_a_frame_file_takes_the_pattern_and_bit_depth_it_records(files):
+    """A frame file records its pattern and bit depth: the same ones (or bit_depth="input")
+    are accepted, a different one is refused rather than ignored; "." and other paths without
+    a name part are valid paths."""
+    frame = rio.load_frame(files / "ok.npz")
+    for kw in ({"pattern": "mask1"}, {"pattern": rz.mask1()}, {"bit_depth": 11},
+               {"bit_depth": "input"}, {"pattern": "mask1", "bit_depth": 11}):
+        got = rio.load_frame(files / "ok.npz", **kw)
+        assert got.pattern == frame.pattern and got.bit_depth == frame.bit_depth
+        np.testing.assert_array_equal(got.data, frame.data)
+    from rgbz_fast._validate import check_path
+
+    assert str(check_path(".")) == "." and str(check_path("/")) == "/"

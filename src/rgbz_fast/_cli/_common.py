@@ -222,6 +222,21 @@ def add_shape(p, default, what):
                    metavar="ROWSxCOLS", help=what)
 
 
+def made_shape(args, shape):
+    """``shape``, the size of frames a command makes (not reads), within the pixel limit of
+    reads (--max-pixels where the command has it, else RGBZ_FAST_MAX_PIXELS or 200
+    megapixels): beyond it the arrays would not fit in memory. A CliError naming --shape."""
+    from ..io import read_limits
+
+    limit = read_limits(getattr(args, "max_pixels", None))[0]
+    rows, cols = shape
+    if rows * cols > limit:
+        raise CliError(f"--shape: {rows}x{cols} is {rows * cols / 1e6:.4g} megapixels, more "
+                       f"than the limit of {limit / 1e6:.4g} megapixels (--max-pixels or "
+                       f"{MAX_PIXELS_ENV})")
+    return tuple(shape)
+
+
 def add_pattern(p, default, what):
     p.add_argument("--pattern", default=default, help=what)
 
@@ -329,6 +344,20 @@ def explain(exc, parser=None):
         spell = raw_option_words if "raw_options" in error.settings else flag
         return " ".join(error.render(spell).split())
     return str(exc) if parser is None else flag_words(str(exc), parser)
+
+
+def os_error_words(exc, args):
+    """A system error about a file ("[Errno 2] No such file or directory: '/proc/x'") as
+    ``FLAG: path: reason``: ``--out`` when the file is the output folder or in it, else
+    ``path``."""
+    path = os.fsdecode(exc.filename)
+    flag = "path"
+    out = getattr(args, "out", None)
+    if out is not None:
+        where, target = os.path.abspath(out), os.path.abspath(path)
+        if target == where or target.startswith(where.rstrip(os.sep) + os.sep):
+            flag = "--out"
+    return f"{flag}: {path}: {exc.strerror or exc}"
 
 
 def flag_words(text, parser):

@@ -110,7 +110,7 @@ def _simulated_sweep(args):
         sensor = ToFSensor(**kw)
     except TypeError as exc:
         raise c.CliError(f"--sensor: {exc}".replace("ToFSensor.__init__() ", "")) from None
-    shape = tuple(args.shape)
+    shape = c.made_shape(args, args.shape)
     if not (0 < args.near < args.far):
         raise c.CliError(f"--near, --far: expected 0 < near < far, got {args.near}, "
                          f"{args.far}")
