@@ -204,8 +204,9 @@ def test_eval_config_is_checked_and_normalised_at_construction():
 def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
     """The evaluation's cache is read through the guarded reader and checked: a FIFO under an
     entry's name does not block, and a damaged or tampered entry (NaN, 1e999, text, a value
-    out of its metric's range, not an object) is recomputed and written again, never served
-    as a result."""
+    out of its metric's range, not an object, a value edited without its checksum) is
+    recomputed and written again, never served as a result; a cache that cannot take an
+    entry costs a warning, not the result."""
     import os
     import threading
 
@@ -218,10 +219,20 @@ def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
     for bad in ('{"cfa_psnr": NaN, "ssim": 0.5}', '{"cfa_psnr": 1e999, "ssim": 0.5}',
                 '{"cfa_psnr": 20.0, "ssim": 7.0}', '{"cfa_psnr": "20", "ssim": 0.5}',
                 '{"cfa_psnr": 20.0, "ssim": -Infinity}', "[20.0, 0.5]", "\xff\xfe",
-                '{"cfa_psnr": 20.0, "ssim": 0.5, "zz": 1.0}'):
+                '{"cfa_psnr": 20.0, "ssim": 0.5, "zz": 1.0}',
+                # a plausible value edited by hand: the checksum no longer matches
+                good.replace(str(json.loads(good)["values"]["cfa_psnr"]), "99.5"),
+                json.dumps({**json.loads(good), "values": {"cfa_psnr": 99.5, "ssim": 0.5}})):
         entry.write_text(bad)
         assert ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows == want, bad
         assert entry.read_text() == good, bad
+    # an entry the cache cannot take (a folder under its name): the result, and a warning
+    entry.unlink()
+    entry.mkdir()
+    with pytest.warns(RuntimeWarning, match="^cache_dir: could not write"):
+        assert ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows == want
+    entry.rmdir()
+    ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw)
     entry.unlink()
     os.mkfifo(entry)
     done = []

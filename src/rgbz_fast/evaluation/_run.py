@@ -211,20 +211,32 @@ def _json_constant(name):
     return float("inf")
 
 
+def _cache_check(key, body):
+    """The checksum that binds an entry's values to its key: an entry edited by hand, or
+    moved under another key, fails it and is computed again."""
+    return hashlib.sha256(f"{key}\n{body}".encode()).hexdigest()
+
+
 def _cache_read(cdir, key):
     """The cached values of one (pattern, method), or None to compute them again.
 
     Read through the guarded reader (a regular file of at most 64 kB, so that a FIFO or a
-    device in the cache never blocks) and validated: a JSON object of known metrics whose
-    values are numbers in their range (a PSNR may be +inf). A damaged or tampered entry
-    (NaN, 1e999, text, a value out of range) is a miss, recomputed and written again.
+    device in the cache never blocks) and validated: ``{"values": ..., "check": ...}`` whose
+    checksum matches (:func:`_cache_check`), the values a JSON object of known metrics, each
+    a number in its range (a PSNR may be +inf). A damaged or tampered entry (NaN, 1e999,
+    text, a value out of range, values edited without their checksum) is a miss, recomputed
+    and written again.
     """
     try:
         data = read_file(cdir / f"{key}.json", "cache", max_bytes=_CACHE_MAX_BYTES)
-        values = json.loads(data.decode("utf-8"), parse_float=_json_number,
-                            parse_int=_json_number, parse_constant=_json_constant)
-    except (OSError, ValueError, RecursionError):        # UnicodeDecodeError is a ValueError
-        return None
+        entry = json.loads(data.decode("utf-8"), parse_float=_json_number,
+                           parse_int=_json_number, parse_constant=_json_constant)
+        values = entry["values"]
+        body = json.dumps(values, sort_keys=True)
+        if entry.get("check") != _cache_check(key, body) or len(entry) != 2:
+            return None
+    except (OSError, ValueError, RecursionError, TypeError, KeyError, AttributeError):
+        return None                                      # UnicodeDecodeError: a ValueError
     if not isinstance(values, dict):
         return None
     for k, v in values.items():
@@ -236,8 +248,18 @@ def _cache_read(cdir, key):
 
 
 def _cache_write(cdir, key, values):
-    cdir.mkdir(parents=True, exist_ok=True)
-    atomic_write(cdir / f"{key}.json", json.dumps(values, sort_keys=True))
+    """Write an entry; a cache that cannot take it (a folder or a file of no write
+    permission under its name) costs a warning, never the result."""
+    body = json.dumps(values, sort_keys=True)
+    try:
+        cdir.mkdir(parents=True, exist_ok=True)
+        atomic_write(cdir / f"{key}.json", json.dumps(
+            {"check": _cache_check(key, body), "values": values}, sort_keys=True))
+    except (OSError, ValueError) as exc:
+        import warnings
+
+        warnings.warn(f"cache_dir: could not write {cdir / key}.json ({exc}); the result is "
+                      "kept, not cached", RuntimeWarning, stacklevel=2)
 
 
 def _pool_task(args):
