@@ -450,3 +450,20 @@ def test_a_truncated_or_damaged_camera_raw_is_one_clear_error(tmp_path, capfd):
         read_raw(tmp_path / "flip.dng")                   # LibRaw may still read it
     except ValueError as exc:
         assert str(exc).startswith("path: ")
+
+
+def test_dng_with_a_damaged_tag_reads_without_log_lines(dng_path, tmp_path, caplog):
+    """A DNG whose TIFF tags are damaged where LibRaw does not look is read; the metadata
+    reader skips the tags it cannot read without logging each one to stderr (on the command
+    line those lines came before its own)."""
+    blob = bytearray(dng_path.read_bytes())
+    rng = np.random.default_rng(0)
+    for _ in range(3):                                 # the third draw damages tag 296 only
+        damaged = bytearray(blob)
+        for i in rng.integers(8, 4096, 20):
+            damaged[i] = rng.integers(0, 256)
+    (tmp_path / "d.dng").write_bytes(bytes(damaged))
+    caplog.set_level("DEBUG")
+    frame = read_raw(tmp_path / "d.dng")
+    assert frame.shape == (1156, 1734)
+    assert [r.getMessage() for r in caplog.records if r.name.startswith("tifffile")] == []

@@ -472,6 +472,11 @@ def _camera_colour(raw, desc):
 
 def _tiff_make_model(blob):
     """Make and Model from the TIFF IFD0 most raw formats are built on, or (None, None)."""
+    import logging
+
+    log = logging.getLogger("tifffile")        # it logs each damaged tag it skips
+    quiet = log.disabled
+    log.disabled = True
     try:
         import tifffile
 
@@ -484,6 +489,8 @@ def _tiff_make_model(blob):
                         str(model.value).strip() if model is not None else None)
     except Exception:  # noqa: BLE001 - metadata only: a non-TIFF raw has none to give
         return None, None
+    finally:
+        log.disabled = quiet
 
 
 def _read_image(path, limits):
