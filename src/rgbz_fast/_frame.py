@@ -397,6 +397,10 @@ class ToFTaps:
         block = check_block(self.block, "block")
         object.__setattr__(self, "block", block)
         object.__setattr__(self, "bit_depth", check_bit_depth(self.bit_depth, "bit_depth"))
+        top = (1 << self.bit_depth) - 1             # the ADC's codes: none can lie beyond
+        if taps.size and (taps.min() < 0 or taps.max() > top):
+            raise ValueError(f"taps: values span [{taps.min():g}, {taps.max():g}], beyond the "
+                             f"{self.bit_depth}-bit range [0, {top}]")
         if not isinstance(self.sensor, ToFSensor):
             raise TypeError(f"sensor: expected a ToFSensor, got {type(self.sensor).__name__}")
         shape = as_list(self.shape, "shape", "a (rows, cols) frame shape")
