@@ -38,6 +38,9 @@ CLI_ROWS = [
     C("cli.simulate-int32", ("simulate", "{d}/int32.tif"),
       "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
       "their values; pass --input-bits"),
+    C("cli.evaluate-int32", ("evaluate", "--dataset", "{d}/int32.tif"),
+      "dataset: {d}/int32.tif holds int32 samples, a type that says nothing about the range "
+      "of their values; convert the file to 8 or 16 bits"),
     C("cli.simulate-cmyk", ("simulate", "{d}/cmyk.jpg"),
       "path: cannot read {d}/cmyk.jpg as an image (it holds CMYK samples"),
     C("cli.evaluate-cmyk", ("evaluate", "--dataset", "{d}/cmyk.tif"),

@@ -81,7 +81,7 @@ class ImageSource:
             img = read_image(self.location, "dataset", **limits)
             _refuse_mosaic(img, self.location)
         img = rgb_image(img, self.location, "dataset", grey=self.grey)
-        sample_bits(img, self.location, name="dataset")     # 8 or 16 bits (or floats)
+        sample_bits(img, self.location, name="dataset", settable=False)  # 8/16 bits, floats
         return img
 
     def fingerprint(self):

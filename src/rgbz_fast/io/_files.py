@@ -483,18 +483,21 @@ def rgb_image(img, path, name="path", *, grey=False):
     return np.ascontiguousarray(img)
 
 
-def sample_bits(img, path, input_bits=None, name="path"):
+def sample_bits(img, path, input_bits=None, name="path", *, settable=True):
     """The bits of the samples of an image read from ``path`` (None for floats): the library's
     one rule for integer images (:func:`rgbz_fast._validate.integer_bits`), in the words of a
     file. 8- and 16-bit files say their range; wider integer samples (a 32-bit TIFF) need
-    ``input_bits``, else a :class:`ParameterError` naming ``name`` and the file."""
+    ``input_bits``, else a :class:`ParameterError` naming ``name`` and the file (which asks
+    for ``input_bits`` only when the caller can pass it: ``settable``)."""
     try:
         return integer_bits(img, name, input_bits)
     except TypeError:
+        fix = ("pass ", Setting("input_bits"), " (the bits the values use, e.g. 12) or "
+               "convert the file to 8 or 16 bits") if settable else \
+            ("convert the file to 8 or 16 bits (a dataset's images say their range by their "
+             "type)",)
         raise ParameterError(name, f"{path} holds {img.dtype} samples, a type that says nothing "
-                                   "about the range of their values; pass ",
-                             Setting("input_bits"), " (the bits the values use, e.g. 12) or "
-                             "convert the file to 8 or 16 bits") from None
+                                   "about the range of their values; ", *fix) from None
     except ValueError as exc:
         if str(exc).startswith("input_bits:"):
             raise
