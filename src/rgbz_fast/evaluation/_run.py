@@ -146,7 +146,11 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
                 test_srgb = chain.render(out, bayer, bit_depth=bd, gains=gains, workers=workers)
-                values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
+                try:
+                    values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
+                except ValueError as exc:            # an image too small for a metric
+                    raise ValueError(f"metrics: image {source.name!r}: "
+                                     f"{str(exc).removeprefix('reference: ')}") from None
             if cdir:
                 _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
