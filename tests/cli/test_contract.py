@@ -39,7 +39,7 @@ CLI_ROWS = [
       "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
       "their values; pass --input-bits"),
     C("cli.evaluate-too-small", ("evaluate", "--dataset", "{d}/ds", "--methods", "bi",
-                                 "--patterns", "mask1", "--metrics", "ms_ssim"),
+                                 "--patterns", "mask1", "--metrics", "ms_ssim", "--crop", "0"),
       "metrics: image 'a': MS-SSIM with 5 scales needs at least 161 x 161 pixels"),
     C("cli.evaluate-int32", ("evaluate", "--dataset", "{d}/int32.tif"),
       "dataset: {d}/int32.tif holds int32 samples, a type that says nothing about the range "

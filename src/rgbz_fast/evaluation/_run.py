@@ -149,6 +149,8 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 try:
                     values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
                 except ValueError as exc:            # an image too small for a metric
+                    if not str(exc).startswith("reference: "):
+                        raise                        # a message of the caller's parameter
                     raise ValueError(f"metrics: image {source.name!r}: "
                                      f"{str(exc).removeprefix('reference: ')}") from None
             if cdir:
