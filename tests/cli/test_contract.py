@@ -38,6 +38,9 @@ CLI_ROWS = [
     C("cli.simulate-int32", ("simulate", "{d}/int32.tif"),
       "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
       "their values; pass --input-bits"),
+    C("cli.reconstruct-colour-matrix-huge", ("reconstruct", "{d}/ok.npz", "--output", "srgb",
+                                             "--colour-matrix", "1e300,0,0,0,1,0,0,0,1"),
+      "argument --colour-matrix: expected entries within +-1e+30", usage=True),
     C("cli.evaluate-too-small", ("evaluate", "--dataset", "{d}/ds", "--methods", "bi",
                                  "--patterns", "mask1", "--metrics", "ms_ssim", "--crop", "0"),
       "metrics: image 'a': MS-SSIM with 5 scales needs at least 161 x 161 pixels"),

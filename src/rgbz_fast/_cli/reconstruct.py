@@ -91,6 +91,13 @@ def colour_matrix(text):
     if t in ("auto", "none"):
         return t
     m = _numbers(t, 9, "auto, none or nine comma-separated numbers (the 3x3 matrix row by row)")
+    from ..isp._stages import MATRIX_MAX
+
+    if max(abs(v) for v in m) > MATRIX_MAX:
+        import argparse
+
+        raise argparse.ArgumentTypeError(f"expected entries within +-{MATRIX_MAX:g} (a "
+                                         f"camera's lie within about 10), got {text!r}")
     return (m[0:3], m[3:6], m[6:9])
 
 

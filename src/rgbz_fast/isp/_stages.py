@@ -160,7 +160,16 @@ def _check_matrix(matrix, name):
         raise TypeError(f"{name}: expected a 3x3 matrix of numbers, got {matrix!r}") from None
     if m.shape != (3, 3) or not np.all(np.isfinite(m)):
         raise ValueError(f"{name}: expected a finite 3x3 matrix, got shape {m.shape}")
+    if np.max(np.abs(m)) > MATRIX_MAX:
+        raise ValueError(f"{name}: entries up to {np.max(np.abs(m)):g} in magnitude, beyond "
+                         f"{MATRIX_MAX:g} (a camera's lie within about 10); float32 images "
+                         "would overflow to inf and NaN")
     return m
+
+
+#: the largest colour-matrix entry: three products with values in [0, 1] stay far inside
+#: float32 (3.4e38), whose cast of a larger entry is inf (and inf * 0 NaN)
+MATRIX_MAX = 1e30
 
 
 def _prepare_cfa(cfa, pattern, name="cfa"):
