@@ -24,13 +24,12 @@
  * other sites the plan of _plans.py, as they always have (recon_mask1.h says
  * why the two must stay apart).
  *
- * Template parameters, #defined by the includer (the end of recon_core.template.h, once
- * per element type) and #undefined after:
+ * Template parameters (rgbz_templating.h), #defined by rgbz_each_type.h, which the end of
+ * recon_core.template.h includes once per precision:
  *   IN_T       the element type of the frames: uint8_t, uint16_t, float, double
  *   IS         its suffix: u8, u16, f32, f64
  *   IN_IS_INT  1 for the integer types (results rounded half up), else 0
- *   REAL, RS   the precision of the arithmetic and its suffix (as recon_core.template.h,
- *              which must have been included with the same REAL before)
+ *   REAL, RS   the precision of the arithmetic and its suffix (recon_core.template.h's)
  */
 #ifndef IN_T
 #error "recon_loop.template.h: #define IN_T (the element type of the frames)"

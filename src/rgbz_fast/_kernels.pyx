@@ -78,11 +78,15 @@ cdef extern from "rgbz.h" nogil:
         double clip_level
     int rgbz_plan_layout(int64_t *out, int n)
     int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
-    int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
-                         Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                         const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
-                         const rgbz_params *params, uint64_t *opcounts)
-    int rgbz_fast_exp(int type, const void *x, void *out, Py_ssize_t n)
+    # one entry point per precision, all of this type (csrc/rgbz_templating.h)
+    ctypedef int rgbz_reconstruct_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
+                                     Py_ssize_t cols, int py, int px, const int32_t *phase_map,
+                                     const rgbz_plan *plans, int n_plans,
+                                     const rgbz_params *params, uint64_t *opcounts) noexcept
+    rgbz_reconstruct_fn rgbz_reconstruct_f32
+    rgbz_reconstruct_fn rgbz_reconstruct_f64
+    int rgbz_fast_exp_f32(const float *x, float *out, Py_ssize_t n)
+    int rgbz_fast_exp_f64(const double *x, double *out, Py_ssize_t n)
     int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                              Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
                              int mode, int workers)
@@ -191,6 +195,24 @@ cdef int _raise_for(int status) except -1:
     raise RuntimeError(f"C kernel failed with status {status}")
 
 
+ctypedef struct _precision_kernels:
+    rgbz_reconstruct_fn *reconstruct
+
+
+cdef _precision_kernels _kernels_of(int precision) except *:
+    """The entry points of a precision (RGBZ_PRECISIONS, csrc/rgbz.h), NULL where it has no
+    such kernel: the one switch over the precisions."""
+    cdef _precision_kernels k
+    if precision == RGBZ_P_FLOAT32:
+        k.reconstruct = rgbz_reconstruct_f32
+    elif precision == RGBZ_P_FLOAT64:
+        k.reconstruct = rgbz_reconstruct_f64
+    else:
+        raise ValueError(f"precision: expected a code of PRECISIONS {PRECISIONS}, "
+                         f"got {precision}")
+    return k
+
+
 cdef uint64_t *_counters(uint64_t[::1] opcounts, Py_ssize_t need) except? NULL:
     """The counters of a counting call: required by _kernels_count, refused by _kernels."""
     if not rgbz_counting_build():
@@ -220,11 +242,13 @@ def mask1_plan(int method, int sg_combined=0):
 def fast_exp(const rgb_t[::1] x, rgb_t[::1] out):
     """The fast exponential of the reconstruction (exp="fast") of every element of ``x``."""
     cdef int status
-    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
     if x.shape[0] == 0:
         return
     with nogil:
-        status = rgbz_fast_exp(t, &x[0], &out[0], x.shape[0])
+        if rgb_t is float:
+            status = rgbz_fast_exp_f32(&x[0], &out[0], x.shape[0])
+        else:
+            status = rgbz_fast_exp_f64(&x[0], &out[0], x.shape[0])
     _raise_for(status)
 
 
@@ -256,6 +280,7 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status
     cdef rgbz_params prm
+    cdef rgbz_reconstruct_fn *kernel = _kernels_of(precision).reconstruct
     cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> n_plans * RGBZ_NOPS)
     prm.sigma_floor = sigma_floor
     prm.sigma_rel = sigma_rel
@@ -267,9 +292,8 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     prm.clip_on = 0 if clip_level is None else 1
     prm.clip_level = 0.0 if clip_level is None else float(clip_level)
     with nogil:
-        status = rgbz_reconstruct(
-            in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1],
-            py, px, &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
     _raise_for(status)
 
 
