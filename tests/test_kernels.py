@@ -52,6 +52,26 @@ def test_counting_code_only_in_the_counting_module():
         assert "rgbz_opc_cur" not in out.stdout          # (an empty table if stripped)
 
 
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_a_precision_code_without_a_kernel_is_refused(name):
+    # _kernels_of, the bridge's one switch over the precisions, names the parameter
+    k = MODULES[name]
+    bad = max(k.PRECISIONS.values()) + 1
+    d = np.zeros((8, 8), np.uint16)
+    phase_map, plans = build_plans(rz.mask1(), "bi")
+    counts = {"opcounts": np.zeros(k.NOPS, np.uint64)} if k.counting_build() else {}
+    with pytest.raises(ValueError, match="precision"):
+        k.reconstruct(d, np.empty_like(d), bad, 2, 2, phase_map,
+                      plans.view(np.uint8).reshape(-1), 1, 1e-3, 0.0, 0.5, 2047.0, 0, 1,
+                      **counts)
+    i32, f64 = np.zeros((1, 1), np.int32), np.zeros((1, 1), np.float64)
+    with pytest.raises(ValueError, match="precision"):
+        k.learned(d, np.empty_like(d), bad, 2, 2, phase_map, np.ones(1, np.int32), i32, i32,
+                  np.ones((1, 4), np.int32), np.zeros((1, 4, 1), np.int32),
+                  np.zeros((1, 4, 1), np.int32), f64, f64, np.zeros((1, 1, 8), np.float32),
+                  np.zeros((1, 1, 8)), 0, 0, 2047.0, 1, **counts)
+
+
 # -- constants from the C enums -----------------------------------------------------------------
 
 def test_tables_come_from_the_c_enums():

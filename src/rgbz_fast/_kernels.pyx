@@ -124,10 +124,12 @@ cdef extern from "learned.h" nogil:
         const double *w_f64
         const float *wd_f32
         const double *wd_f64
-    int rgbz_learned(int in_type, int precision, const void *src, void *dst, Py_ssize_t rows,
-                     Py_ssize_t cols, int py, int px, const int32_t *phase_map,
-                     const rgbz_learned_filters *f, double maxval, int workers,
-                     uint64_t *opcounts)
+    ctypedef int rgbz_learned_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
+                                 Py_ssize_t cols, int py, int px, const int32_t *phase_map,
+                                 const rgbz_learned_filters *f, double maxval, int workers,
+                                 uint64_t *opcounts) noexcept
+    rgbz_learned_fn rgbz_learned_f32
+    rgbz_learned_fn rgbz_learned_f64
 cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
                            const double *g_re, const double *g_im, const double *g_var,
@@ -197,6 +199,7 @@ cdef int _raise_for(int status) except -1:
 
 ctypedef struct _precision_kernels:
     rgbz_reconstruct_fn *reconstruct
+    rgbz_learned_fn *learned
 
 
 cdef _precision_kernels _kernels_of(int precision) except *:
@@ -204,9 +207,9 @@ cdef _precision_kernels _kernels_of(int precision) except *:
     such kernel: the one switch over the precisions."""
     cdef _precision_kernels k
     if precision == RGBZ_P_FLOAT32:
-        k.reconstruct = rgbz_reconstruct_f32
+        k.reconstruct, k.learned = rgbz_reconstruct_f32, rgbz_learned_f32
     elif precision == RGBZ_P_FLOAT64:
-        k.reconstruct = rgbz_reconstruct_f64
+        k.reconstruct, k.learned = rgbz_reconstruct_f64, rgbz_learned_f64
     else:
         raise ValueError(f"precision: expected a code of PRECISIONS {PRECISIONS}, "
                          f"got {precision}")
@@ -555,6 +558,7 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status
     cdef rgbz_learned_filters f
+    cdef rgbz_learned_fn *kernel = _kernels_of(precision).learned
     cdef double zero = 0.0
     f.n_phases = w_f32.shape[0]
     f.n_taps_max = w_f32.shape[1]
@@ -592,8 +596,8 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
         raise ValueError("learned: inconsistent filter arrays")
     cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> f.n_phases * RGBZ_NOPS)
     with nogil:
-        status = rgbz_learned(in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0],
-                              src.shape[1], py, px, &phase_map[0], &f, maxval, workers, counts)
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &phase_map[0], &f, maxval, workers, counts)
     _raise_for(status)
 
 
