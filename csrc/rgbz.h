@@ -201,7 +201,7 @@ int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                          ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
                          int mode, int workers);
 
-/* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
+/* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */
 int rgbz_tof_demodulate(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                         double *phase, double *amp, double *offset, int workers);
@@ -216,7 +216,7 @@ int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double 
                     const double *weights, double max_range, double *depth,
                     double *residual, int32_t *wraps, int workers);
 
-/* Fused demodulation + unwrapping (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
+/* Fused demodulation + unwrapping (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    depth, residual, wraps as rgbz_tof_unwrap, and phase, amplitude, offset (F, N) as
    rgbz_tof_demodulate (each may be NULL: not stored). One pass per site, no intermediate
    arrays. */

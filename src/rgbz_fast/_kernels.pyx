@@ -510,9 +510,12 @@ def sq_diff_sum(const frame_t[:, :, ::1] a, const frame_t[:, :, ::1] b,
 
 # ---------------------------------------------------------------------- sRGB encoding (srgb.c)
 cdef extern from "srgb.h" nogil:
-    int rgbz_oetf_prepare(int type, const void *x, void *p, Py_ssize_t n, int workers)
-    int rgbz_oetf_finish(int type, const void *x, const void *p, Py_ssize_t n, int bits,
-                         void *code, int workers)
+    int rgbz_oetf_prepare_f32(const float *x, float *p, Py_ssize_t n, int workers)
+    int rgbz_oetf_prepare_f64(const double *x, double *p, Py_ssize_t n, int workers)
+    int rgbz_oetf_finish_f32(const float *x, const float *p, Py_ssize_t n, int code_type,
+                             void *code, int workers)
+    int rgbz_oetf_finish_f64(const double *x, const double *p, Py_ssize_t n, int code_type,
+                             void *code, int workers)
 
 ctypedef fused code_t:
     uint8_t
@@ -522,19 +525,25 @@ ctypedef fused code_t:
 def oetf_prepare(const rgb_t[::1] x, rgb_t[::1] p, int workers):
     """p = 1 where the clipped x is on the OETF's linear segment, else the clipped x."""
     cdef int status
-    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
     with nogil:
-        status = rgbz_oetf_prepare(t, &x[0], &p[0], x.shape[0], workers)
+        if rgb_t is float:
+            status = rgbz_oetf_prepare_f32(&x[0], &p[0], x.shape[0], workers)
+        else:
+            status = rgbz_oetf_prepare_f64(&x[0], &p[0], x.shape[0], workers)
     _raise_for(status)
 
 
 def oetf_finish(const rgb_t[::1] x, const rgb_t[::1] p, code_t[::1] code, int workers):
     """8- or 16-bit sRGB codes of x, p holding the power 1 / 2.4 of oetf_prepare's output."""
     cdef int status
-    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
-    cdef int bits = 8 if code_t is uint8_t else 16
+    cdef int code_type = RGBZ_T_U8 if code_t is uint8_t else RGBZ_T_U16
     with nogil:
-        status = rgbz_oetf_finish(t, &x[0], &p[0], x.shape[0], bits, &code[0], workers)
+        if rgb_t is float:
+            status = rgbz_oetf_finish_f32(&x[0], &p[0], x.shape[0], code_type, &code[0],
+                                          workers)
+        else:
+            status = rgbz_oetf_finish_f64(&x[0], &p[0], x.shape[0], code_type, &code[0],
+                                          workers)
     _raise_for(status)
 
 
