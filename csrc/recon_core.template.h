@@ -632,9 +632,11 @@ RGBZ_CLONES_512 static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *
     RFN(rgbz_core)(p, v, n, NULL, kn, r);
 }
 
-RGBZ_CLONES_512 static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
-                                            const uint64_t *clipped,
-                                            const RFN(rgbz_knobs) *kn, REAL *restrict r)
+/* one build, for the baseline instruction set: only the blocks that hold a clipped tap run
+   it (recon_loop.template.h); its clones would be a sixth of the compile time */
+static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
+                                const uint64_t *clipped, const RFN(rgbz_knobs) *kn,
+                                REAL *restrict r)
 {
     RFN(rgbz_core)(p, v, n, clipped, kn, r);
 }
