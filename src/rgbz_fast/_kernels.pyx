@@ -325,34 +325,14 @@ def tof_phase_iq(const double[:, ::1] i, const double[:, ::1] q, double[:, ::1] 
 
 # ---------------------------------------------------------------------- colour-guided ToF ISP (tof_guided.h)
 cdef extern from "tof_guided.h" nogil:
-    int rgbz_tofg_prepare_u16(const uint16_t *taps, Py_ssize_t F, Py_ssize_t N, double gain,
-                              double black, double supp, double const_var, double prnu,
-                              double white, float *zr, float *zi, float *v, uint8_t *sat,
-                              double *offset, int workers)
-    int rgbz_tofg_prepare_f32(const float *taps, Py_ssize_t F, Py_ssize_t N, double gain,
-                              double black, double supp, double const_var, double prnu,
-                              double white, float *zr, float *zi, float *v, uint8_t *sat,
-                              double *offset, int workers)
-    int rgbz_tofg_prepare_f64(const double *taps, Py_ssize_t F, Py_ssize_t N, double gain,
-                              double black, double supp, double const_var, double prnu,
-                              double white, float *zr, float *zi, float *v, uint8_t *sat,
-                              double *offset, int workers)
-    int rgbz_tofg_colour_u8(const uint8_t *guide, Py_ssize_t H, Py_ssize_t W,
-                            const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
-                            Py_ssize_t C, int block, double scale, float *col, float *cells,
-                            double *lap, int workers)
-    int rgbz_tofg_colour_u16(const uint16_t *guide, Py_ssize_t H, Py_ssize_t W,
-                             const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
-                             Py_ssize_t C, int block, double scale, float *col, float *cells,
-                             double *lap, int workers)
-    int rgbz_tofg_colour_f32(const float *guide, Py_ssize_t H, Py_ssize_t W,
-                             const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
-                             Py_ssize_t C, int block, double scale, float *col, float *cells,
-                             double *lap, int workers)
-    int rgbz_tofg_colour_f64(const double *guide, Py_ssize_t H, Py_ssize_t W,
-                             const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
-                             Py_ssize_t C, int block, double scale, float *col, float *cells,
-                             double *lap, int workers)
+    int rgbz_tofg_prepare(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                          double gain, double black, double supp, double const_var, double prnu,
+                          double white, float *zr, float *zi, float *v, uint8_t *sat,
+                          double *offset, int workers)
+    int rgbz_tofg_colour(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
+                         const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
+                         Py_ssize_t C, int block, double scale, float *col, float *cells,
+                         double *lap, int workers)
     int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
                        const float *gr, const float *gi, const float *gv, const float *col,
                        const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C, int axis,
@@ -370,37 +350,12 @@ cdef extern from "tof_guided.h" nogil:
                          const float *col, const float *cells, int ncells, Py_ssize_t R,
                          Py_ssize_t C, double step, double k, double contrast, double side,
                          int unflag, uint8_t *flags, double *depth_out, int workers)
-    int rgbz_tofg_upsample_u8(const uint8_t *guide, Py_ssize_t H, Py_ssize_t W, double scale,
-                              const double *cscale, const double *depth, const double *sigma,
-                              const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
-                              const double *cc, double spacing, Py_ssize_t reach,
-                              double inv2s2, double inv2hc2, double tol_k, double tol_min,
-                              float *out, float *conf, int workers)
-    int rgbz_tofg_upsample_u16(const uint16_t *guide, Py_ssize_t H, Py_ssize_t W, double scale,
-                               const double *cscale, const double *depth, const double *sigma,
-                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
-                               const double *cc, double spacing, Py_ssize_t reach,
-                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
-                               float *out, float *conf, int workers)
-    int rgbz_tofg_upsample_f32(const float *guide, Py_ssize_t H, Py_ssize_t W, double scale,
-                               const double *cscale, const double *depth, const double *sigma,
-                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
-                               const double *cc, double spacing, Py_ssize_t reach,
-                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
-                               float *out, float *conf, int workers)
-    int rgbz_tofg_upsample_f64(const double *guide, Py_ssize_t H, Py_ssize_t W, double scale,
-                               const double *cscale, const double *depth, const double *sigma,
-                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
-                               const double *cc, double spacing, Py_ssize_t reach,
-                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
-                               float *out, float *conf, int workers)
-
-ctypedef fused guide_t:
-    uint8_t
-    uint16_t
-    float
-    double
-
+    int rgbz_tofg_upsample(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
+                           double scale, const double *cscale, const double *depth,
+                           const double *sigma, const float *col, Py_ssize_t R, Py_ssize_t C,
+                           const double *rc, const double *cc, double spacing,
+                           Py_ssize_t reach, double inv2s2, double inv2hc2, double tol_k,
+                           double tol_min, float *out, float *conf, int workers)
 
 def tofg_prepare(const tap_t[:, :, ::1] taps, double gain, double black, double supp,
                  double const_var, double prnu, double white, float[:, ::1] zr,
@@ -409,23 +364,15 @@ def tofg_prepare(const tap_t[:, :, ::1] taps, double gain, double black, double 
     """Taps (F, 4, N) -> phasors zr, zi (F, N), component variance v (N,), sat |= full scale,
     offset (F, N) when given."""
     cdef int status
+    cdef int in_type = _type_code(<tap_t *> NULL)
     cdef double *of = _opt2(offset)
     cdef Py_ssize_t F = taps.shape[0], N = taps.shape[2]
     if N == 0:
         return
     with nogil:
-        if tap_t is uint16_t:
-            status = rgbz_tofg_prepare_u16(&taps[0, 0, 0], F, N, gain, black, supp, const_var,
-                                           prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0],
-                                           of, workers)
-        elif tap_t is float:
-            status = rgbz_tofg_prepare_f32(&taps[0, 0, 0], F, N, gain, black, supp, const_var,
-                                           prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0],
-                                           of, workers)
-        else:
-            status = rgbz_tofg_prepare_f64(&taps[0, 0, 0], F, N, gain, black, supp, const_var,
-                                           prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0],
-                                           of, workers)
+        status = rgbz_tofg_prepare(in_type, &taps[0, 0, 0], F, N, gain, black, supp, const_var,
+                                   prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0], of,
+                                   workers)
     _raise_for(status)
 
 
@@ -433,30 +380,21 @@ cdef float *_optf(float[:, :, ::1] a) noexcept:
     return NULL if a is None else &a[0, 0, 0]
 
 
-def tofg_colour(const guide_t[:, :, ::1] guide, const int64_t[::1] row_px,
+def tofg_colour(const frame_t[:, :, ::1] guide, const int64_t[::1] row_px,
                 const int64_t[::1] col_px, int block, double scale, float[:, ::1] col,
                 float[:, :, ::1] cells, double[::1] lap, int workers):
     """The guide (H, W, 3) at the measurements: col (3, N), cells (block^2, 3, N) or None,
     lap (3,) the sums of |Immerkaer's Laplacian| of col."""
     cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
     cdef float *cp = _optf(cells)
     cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
     if R == 0 or C == 0:
         return
     with nogil:
-        if guide_t is uint8_t:
-            status = rgbz_tofg_colour_u8(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
-                                         block, scale, &col[0, 0], cp, &lap[0], workers)
-        elif guide_t is uint16_t:
-            status = rgbz_tofg_colour_u16(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
-                                          block, scale, &col[0, 0], cp, &lap[0], workers)
-        elif guide_t is float:
-            status = rgbz_tofg_colour_f32(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
-                                          block, scale, &col[0, 0], cp, &lap[0], workers)
-        else:
-            status = rgbz_tofg_colour_f64(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
-                                          block, scale, &col[0, 0], cp, &lap[0], workers)
+        status = rgbz_tofg_colour(in_type, &guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
+                                  block, scale, &col[0, 0], cp, &lap[0], workers)
     _raise_for(status)
 
 
@@ -535,7 +473,7 @@ def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[
     _raise_for(status)
 
 
-def tofg_upsample(const guide_t[:, :, ::1] guide, double scale, const double[::1] cscale,
+def tofg_upsample(const frame_t[:, :, ::1] guide, double scale, const double[::1] cscale,
                   const double[::1] depth, const double[::1] sigma, const float[:, ::1] col,
                   Py_ssize_t R, Py_ssize_t C, const double[::1] rc, const double[::1] cc,
                   double spacing, Py_ssize_t reach, double inv2s2, double inv2hc2,
@@ -543,28 +481,13 @@ def tofg_upsample(const guide_t[:, :, ::1] guide, double scale, const double[::1
                   int workers):
     """Joint bilateral upsampling of the measurements' depth to every pixel of the guide."""
     cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
     cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
     if H == 0 or W == 0:
         return
     with nogil:
-        if guide_t is uint8_t:
-            status = rgbz_tofg_upsample_u8(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
-                                           &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                           spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                           &out[0, 0], &conf[0, 0], workers)
-        elif guide_t is uint16_t:
-            status = rgbz_tofg_upsample_u16(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
-                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                            &out[0, 0], &conf[0, 0], workers)
-        elif guide_t is float:
-            status = rgbz_tofg_upsample_f32(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
-                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                            &out[0, 0], &conf[0, 0], workers)
-        else:
-            status = rgbz_tofg_upsample_f64(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
-                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                            &out[0, 0], &conf[0, 0], workers)
+        status = rgbz_tofg_upsample(in_type, &guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
+                                    &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0], spacing, reach,
+                                    inv2s2, inv2hc2, tol_k, tol_min, &out[0, 0], &conf[0, 0],
+                                    workers)
     _raise_for(status)
