@@ -674,24 +674,28 @@ cdef extern from "tof_guided.h" nogil:
                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
                               const double *cc, double spacing, Py_ssize_t reach,
                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                              const double *own, double own_k, double ambiguity, double gap,
                               float *out, float *conf, int workers)
     int rgbz_tofg_upsample_u16(const uint16_t *guide, Py_ssize_t H, Py_ssize_t W, double scale,
                                const double *cscale, const double *depth, const double *sigma,
                                const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
                                const double *cc, double spacing, Py_ssize_t reach,
                                double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                               const double *own, double own_k, double ambiguity, double gap,
                                float *out, float *conf, int workers)
     int rgbz_tofg_upsample_f32(const float *guide, Py_ssize_t H, Py_ssize_t W, double scale,
                                const double *cscale, const double *depth, const double *sigma,
                                const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
                                const double *cc, double spacing, Py_ssize_t reach,
                                double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                               const double *own, double own_k, double ambiguity, double gap,
                                float *out, float *conf, int workers)
     int rgbz_tofg_upsample_f64(const double *guide, Py_ssize_t H, Py_ssize_t W, double scale,
                                const double *cscale, const double *depth, const double *sigma,
                                const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
                                const double *cc, double spacing, Py_ssize_t reach,
                                double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                               const double *own, double own_k, double ambiguity, double gap,
                                float *out, float *conf, int workers)
 
 ctypedef fused guide_t:
@@ -838,10 +842,15 @@ def tofg_upsample(const guide_t[:, :, ::1] guide, double scale, const double[::1
                   const double[::1] depth, const double[::1] sigma, const float[:, ::1] col,
                   Py_ssize_t R, Py_ssize_t C, const double[::1] rc, const double[::1] cc,
                   double spacing, Py_ssize_t reach, double inv2s2, double inv2hc2,
-                  double tol_k, double tol_min, float[:, ::1] out, float[:, ::1] conf,
+                  double tol_k, double tol_min, const double[::1] own, double own_k,
+                  double ambiguity, double gap, float[:, ::1] out, float[:, ::1] conf,
                   int workers):
-    """Joint bilateral upsampling of the measurements' depth to every pixel of the guide."""
+    """Joint bilateral upsampling of the measurements' depth to every pixel of the guide
+    (own: the nodes' own too-noisy measurements or None)."""
     cdef int status
+    cdef const double *po = NULL
+    if own is not None:
+        po = &own[0]
     cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
     if H == 0 or W == 0:
         return
@@ -849,21 +858,21 @@ def tofg_upsample(const guide_t[:, :, ::1] guide, double scale, const double[::1
         if guide_t is uint8_t:
             status = rgbz_tofg_upsample_u8(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                           spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                           &out[0, 0], &conf[0, 0], workers)
+                                           spacing, reach, inv2s2, inv2hc2, tol_k, tol_min, po,
+                                           own_k, ambiguity, gap, &out[0, 0], &conf[0, 0], workers)
         elif guide_t is uint16_t:
             status = rgbz_tofg_upsample_u16(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
                                             &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                            &out[0, 0], &conf[0, 0], workers)
+                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min, po,
+                                            own_k, ambiguity, gap, &out[0, 0], &conf[0, 0], workers)
         elif guide_t is float:
             status = rgbz_tofg_upsample_f32(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
                                             &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                            &out[0, 0], &conf[0, 0], workers)
+                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min, po,
+                                            own_k, ambiguity, gap, &out[0, 0], &conf[0, 0], workers)
         else:
             status = rgbz_tofg_upsample_f64(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
                                             &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
-                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
-                                            &out[0, 0], &conf[0, 0], workers)
+                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min, po,
+                                            own_k, ambiguity, gap, &out[0, 0], &conf[0, 0], workers)
     _raise_for(status)
