@@ -895,10 +895,12 @@ static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, 
     int kb = -1;
     for (int k = 0; k < 4; k++) {
         const float pr = nd[k]->prior * ws[k];
+        w[k] = 0.0f;
+        if (!(pr > 0.0f)) continue;       /* on a grid line (Mask1: 3 pixels in 4) or a hole */
         const float t0 = pc[0] - nd[k]->c0, t1 = pc[1] - nd[k]->c1, t2 = pc[2] - nd[k]->c2;
         const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
         const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
-        w[k] = pr > 0.0f ? pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN) : 0.0f;
+        w[k] = pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
         if (w[k] > best) { best = w[k]; kb = k; }
     }
     if (kb < 0 || nd[kb]->depth != nd[kb]->depth) {
