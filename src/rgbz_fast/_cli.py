@@ -389,9 +389,9 @@ def _parser():
                                    "the evaluation's protocol (sRGB EOTF, mosaic at --bit-depth), "
                                    "and write them to --out. Fit on images you do not evaluate "
                                    "on.", **kw)
-    t.add_argument("--dataset", type=Path, required=True, metavar="DIR",
-                   help="folder of RGB images to fit on (required; keep the images you "
-                        "evaluate on out of it)")
+    t.add_argument("--dataset", type=Path, required=True, metavar="DIR", action="append",
+                   help="folder of RGB images to fit on (required; repeat it to fit on several "
+                        "folders; keep the images you evaluate on out of them)")
     t.add_argument("--pattern", default="mask1",
                    help="RGB-Z pattern: mask1, mask2 or a tile such as ZR/BG (default: mask1)")
     t.add_argument("--out", type=Path, required=True, metavar="FILE",
@@ -403,6 +403,10 @@ def _parser():
     t.add_argument("--linearise", action=argparse.BooleanOptionalAction, default=True,
                    help="linearise 8-bit sRGB images with the sRGB EOTF (default); "
                         "--no-linearise fits on the sRGB values (the 8-bit sRGB protocol)")
+    t.add_argument("--encoding", choices=("linear", "srgb", "both"), default=None,
+                   help="the frames' encoding: linear (--linearise), srgb (--no-linearise) or "
+                        "both, every image twice (the shipped filters) (default: from "
+                        "--linearise)")
     t.add_argument("--name", default=None,
                    help="training set name kept in the file (default: the folder's name)")
     t.add_argument("--limit", type=_positive_int, default=None, metavar="N",
@@ -415,6 +419,8 @@ def _parser():
                    help="strength levels of the hash")
     t.add_argument("--coherence", type=_positive_int, default=3,
                    help="coherence levels of the hash")
+    t.add_argument("--spread", type=_positive_int, default=3,
+                   help="channel-spread levels of the hash (1: none)")
     t.add_argument("--ridge", type=_positive_float, default=1e-3,
                    help="ridge regularisation, relative to the mean diagonal of the normal "
                         "matrix")
@@ -1003,15 +1009,16 @@ def _evaluate(args):
 
 
 def _train(args):
-    if not args.dataset.is_dir():
-        raise CliError(f"--dataset: {args.dataset} is not a folder")
+    for d in args.dataset:
+        if not d.is_dir():
+            raise CliError(f"--dataset: {d} is not a folder")
     command = " ".join(["rgbz-fast train", *sys.argv[2:]]) if sys.argv[1:2] == ["train"] else ""
     filters = train_filters(
         args.dataset, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
-        linearise=args.linearise, limit=args.limit, name=args.name, progress=not args.quiet,
-        radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,
-        n_coherence=args.coherence, ridge=args.ridge, prior=args.prior,
-        meta={"command": command} if command else {})
+        linearise=args.linearise, encoding=args.encoding, limit=args.limit, name=args.name,
+        progress=not args.quiet, radius=args.radius, hash_radius=args.hash_radius,
+        n_strength=args.strength, n_coherence=args.coherence, n_spread=args.spread,
+        ridge=args.ridge, prior=args.prior, meta={"command": command} if command else {})
     filters.save(args.out)
     if not args.quiet:
         m = filters.meta
