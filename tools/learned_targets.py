@@ -19,9 +19,9 @@ Encodings:
   ``rz.mosaic(img8, pattern)`` then ``rz.reconstruct(frame, method)`` (float32);
 * ``srgb8``: ``rgbz-fast evaluate --bit-depth 8 --no-linearise`` (8-bit frames, float64).
 Filters: the shipped ones on Kodak (no Kodak image is in any fit); on the held-out parts, the
-filters fitted exactly as the shipped ones (tools/learned_fit.py) but without the held-out
-quarter of any folder, read from (or, when missing, fitted into) ``--heldout`` (about 10
-minutes per mask on 2 busy cores).
+filters of ``python tools/learned_fit.py MASK OUT --heldout`` (without the held-out quarter of
+any folder: the shipped ones are that fit), read from (or, when missing, fitted into)
+``--heldout`` (about 15 minutes per mask on 2 busy cores).
 """
 
 from __future__ import annotations
@@ -79,10 +79,10 @@ def frames(img, mask, encoding):
     return fr, ref, "float64"
 
 
-def run_set(name, imgs, filters):
+def run_set(name, imgs, filters, masks=MASKS):
     """{(mask, encoding): {(method, domain): mean CFA PSNR}}."""
     out = {}
-    for mask in MASKS:
+    for mask in masks:
         for enc in ENCODINGS:
             scores = {k: [] for k in [*NON_Z, ("learned", "")]}
             for img in imgs:
@@ -130,6 +130,7 @@ def main(argv=None):
                     help="folder of the held-out fits (fitted there when missing)")
     ap.add_argument("--data", type=Path, default=DATA, help="the shared data folder")
     ap.add_argument("--sets", default=",".join(SETS))
+    ap.add_argument("--masks", default=",".join(MASKS))
     ap.add_argument("--out", type=Path, default=None, help="also write the table here")
     args = ap.parse_args(argv)
     results, counts = {}, {}
@@ -138,7 +139,7 @@ def main(argv=None):
         filters = None
         if name not in ("kodak", "kodak_sat"):
             filters = []
-            for mask in MASKS:
+            for mask in args.masks.split(","):
                 path = args.heldout / f"learned_{mask}_heldout.npz"
                 if not path.exists():
                     args.heldout.mkdir(parents=True, exist_ok=True)
@@ -146,7 +147,7 @@ def main(argv=None):
                 filters.append(LearnedFilters.load(path))
         imgs = images(name, args.data)
         counts[name] = len(imgs)
-        results[name] = run_set(name, imgs, filters)
+        results[name] = run_set(name, imgs, filters, args.masks.split(","))
         print(f"{name}: {len(imgs)} images, {time.time() - t:.0f} s", file=sys.stderr)
     text = table(results, counts)
     print(text)

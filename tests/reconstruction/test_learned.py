@@ -149,11 +149,13 @@ def test_shipped_filters_record_their_training():
     for pname in ("mask1", "mask2"):
         f = default_filters(pname)
         assert f.pattern == rz.get_pattern(pname) and f.bit_depth == 11
-        assert f.meta["training_set"] == "cbsd68+manga109+sun_hays80"
+        # three quarters of each folder (tools/learned_fit.py --heldout), in both encodings
+        assert f.meta["training_set"] == ("cbsd68+manga109+sun_hays80 without the held-out "
+                                          "quarter")
         assert f.meta["encoding"] == "linear+srgb" and f.meta["noise"] is False
-        assert f.meta["n_images"] == 2 * (68 + 24 + 80)
+        assert f.meta["n_images"] == 2 * (51 + 18 + 60)
         assert f.n_buckets == 216 and f.n_spread == 3 and f.radius == 3
-        assert "rgbz-fast train" in f.meta["command"]
+        assert f.meta["command"] == f"python tools/learned_fit.py {pname} OUT.npz --heldout"
 
 
 def test_default_filters_are_used_when_none_given():

@@ -389,8 +389,8 @@ def resolve_filters(filters, pattern, name="filters"):
             return d
     given = (f" (given: {', '.join(f.pattern.name for f in cands)})" if cands else "")
     raise ValueError(f"{name}: none fits pattern {pattern.name!r}{given}; filters ship for "
-                     f"{', '.join(f.pattern.name for f in _shipped())} and their other Bayer "
-                     "phases; fit some with rgbz_fast.reconstruction.train (or `rgbz-fast "
+                     f"{', '.join(dict.fromkeys(f.pattern.name for f in _shipped()))} and their "
+                     "other Bayer phases; fit some with rgbz_fast.reconstruction.train (or `rgbz-fast "
                      "train`) and pass filters=FILE")
 
 
