@@ -5,8 +5,8 @@
 For every set x mask x encoding: the mean CFA PSNR at the Z sites of ``learned`` and of every
 method of the library that does not read the Z pixels (bilinear, BI, EDICentral, EDILine, SG,
 each in the intensity and the colour-difference domain), the best of those and the margins
-``learned - best`` and ``learned - SG``, against the targets of docs/reports/learned.md
-(+0.3 dB and +1.5 dB).
+``learned - best`` and ``learned - SG``, against the targets of docs/guide/learned.md
+(learned >= the best of them + 0.3 dB and >= SG + 1.5 dB).
 
 Sets: Kodak (24), Kodak with the saturation doubled (the first 12 in name order: skimage
 rgb2hsv on the 8-bit values, S x 2 clipped at 1, hsv2rgb, rounded to 8 bits), and the
