@@ -57,6 +57,7 @@ def run(args):
     from ..evaluation import train_filters
     from ..io import folder_dataset
 
+    c.output_file(args.out)
     for d in args.dataset:
         if not d.is_dir():
             raise c.CliError(f"--dataset: {d} is not a folder")

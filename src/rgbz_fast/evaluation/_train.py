@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import os
+from contextlib import ExitStack
 from dataclasses import replace
 from pathlib import Path
 
 from .._patterns import get_pattern
+from .._progress import ticking
 from .._validate import check_choice
 from ..reconstruction import train
 from ._config import EvalConfig
@@ -102,7 +104,9 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     meta = {"training_set": name, "noise": bool(noise),
             "encoding": "linear+srgb" if encoding == "both" else encoding,
             **options.pop("meta", {})}
-    return train(_Frames(sources, pattern, configs, progress), meta=meta, **options)
+    frames = _Frames(sources, pattern, configs, progress)
+    with frames.fitting:
+        return train(frames, meta=meta, **options)
 
 
 class _Frames:
@@ -112,14 +116,18 @@ class _Frames:
     def __init__(self, sources, pattern, configs, progress):
         self.sources, self.pattern, self.configs = sources, pattern, configs
         self.progress, self.passes = progress, 0
+        self.fitting = ExitStack()      # the solve's progress line, from the last image read
 
     def __iter__(self):
         from tqdm.auto import tqdm
         self.passes += 1
-        for i, source in enumerate(tqdm(self.sources, desc=f"train (pass {self.passes})",
+        for i, source in enumerate(tqdm(self.sources,
+                                        desc="train" if self.passes == 1 else "train (pass 2)",
                                         unit="img", disable=not self.progress)):
             img = source.load()
             for config in self.configs:
                 cfg = replace(config, seed=config.seed + i) if config.noise else config
                 frame, ref = image_frames(img, self.pattern, cfg)
                 yield replace(frame, reference=ref)
+        if self.passes == 2:            # the second pass read every image: the solve follows
+            self.fitting.enter_context(ticking("train: fitting the filters", self.progress))

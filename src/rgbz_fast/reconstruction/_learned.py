@@ -387,11 +387,14 @@ def resolve_filters(filters, pattern, name="filters"):
         d = f.for_pattern(pattern)
         if d is not None:
             return d
+    from ..io import ParameterError, Setting      # the settings, in the caller's words
+
     given = (f" (given: {', '.join(f.pattern.name for f in cands)})" if cands else "")
-    raise ValueError(f"{name}: none fits pattern {pattern.name!r}{given}; filters ship for "
-                     f"{', '.join(dict.fromkeys(f.pattern.name for f in _shipped()))} and their "
-                     "other Bayer phases; fit some with rgbz_fast.reconstruction.train (or `rgbz-fast "
-                     "train`) and pass filters=FILE")
+    shipped = ", ".join(dict.fromkeys(f.pattern.name for f in _shipped()))
+    raise ParameterError(name, f"none fits pattern {pattern.name!r}{given}; filters ship for "
+                         f"{shipped} and their other Bayer phases; fit some with ",
+                         Setting("train", "rgbz_fast.reconstruction.train"), " and pass ",
+                         Setting("filters", "filters=FILE"))
 
 
 def check_filters(value, name="filters"):
