@@ -262,7 +262,8 @@ def add_reconstruction_options(p, precision, precision_help):
     p.add_argument("--filters", type=csv, default=None, metavar="FILE[,FILE]",
                    help="method learned: filters files from `rgbz-fast train`, tried before "
                         "the shipped ones (Mask1 and Mask2, every Bayer phase); the first that "
-                        "fits the frame's pattern, or a mirror or shift of it, is used")
+                        "fits the frame's pattern, or a mirror or shift of it, is used (default: "
+                        "the shipped ones only)")
 
 
 def add_raw_options_file(p, note=""):
