@@ -293,9 +293,10 @@ def add_reconstruction_options(p, precision, precision_help):
                         "two clipped pixels are then left out of the weights (default: off; a "
                         "pixel at the level is not always a clipped one)")
     p.add_argument("--filters", type=csv, default=None, metavar="FILE[,FILE]",
-                   help="method learned: filters files from `rgbz-fast train` (the one fitted "
-                        "for the frame's pattern and bit depth is used); default: the ones "
-                        "shipped for Mask1 and Mask2")
+                   help="method learned: filters files from `rgbz-fast train`, tried before "
+                        "the shipped ones (Mask1 and Mask2, every Bayer phase); the first that "
+                        "fits the frame's pattern, or a mirror or shift of it, is used (default: "
+                        "the shipped ones only)")
 
 
 def add_raw_options_file(p, note=""):

@@ -146,9 +146,9 @@ class EvalConfig:
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
         if "learned" in self.methods:
-            # filters for every pattern at this bit depth (shipped or given), before any image
+            # filters for every pattern (shipped or given), before any image
             for p in self.patterns:
-                resolve_filters(self.params.filters, get_pattern(p), self.bit_depth)
+                resolve_filters(self.params.filters, get_pattern(p))
         if self.optics is not None and not isinstance(self.optics, Optics):
             raise TypeError(f"optics: expected an Optics or None, got "
                             f"{type(self.optics).__name__}")
