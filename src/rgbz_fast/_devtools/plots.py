@@ -1,5 +1,5 @@
 """The figures of the commands: the depth preview of ``rgbz-fast depth`` and the Pareto plot
-of ``rgbz-fast tradeoff``.
+of ``rgbz-fast tradeoff``, the layouts of ``pattern-study``.
 
 Each function returns PNG bytes, which the command writes with
 :func:`rgbz_fast.io.atomic_write`. matplotlib is imported here only, and only
@@ -13,7 +13,7 @@ import io
 
 import numpy as np
 
-__all__ = ["depth_preview", "tradeoff_plot"]
+__all__ = ["depth_preview", "tradeoff_plot", "pattern_study_plot", "tile_thumbnail"]
 
 
 def _pyplot():
@@ -156,5 +156,74 @@ def tradeoff_plot(res):
         ax.set_title(p + (f" ({QUICK_NOTE})" if res.get("quick") else ""))
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7, loc="lower left")
+    fig.tight_layout()
+    return _png(fig, plt)
+
+
+#: colours of the channels in a tile thumbnail (R, G, B, Z)
+_TILE_RGB = np.array([[0.85, 0.15, 0.15], [0.2, 0.7, 0.25], [0.2, 0.35, 0.9],
+                      [0.12, 0.12, 0.12]])
+
+
+def tile_thumbnail(tile):
+    """An RGB image (float, rows x cols x 3) of a tile string: R, G, B as colours, Z dark."""
+    from .._patterns import CHANNELS
+
+    rows = tile.split("/")
+    return _TILE_RGB[np.array([[CHANNELS.index(ch) for ch in r] for r in rows])]
+
+
+def pattern_study_plot(res):
+    """Pareto plot of :func:`rgbz_fast._devtools.pattern_study.pattern_study` (PNG bytes).
+
+    Each layout at its best method (highest CPSNR): the wall's predicted depth noise (x)
+    against that CPSNR (y), marker area proportional to the method's operations per frame
+    pixel, each point labelled with a thumbnail of its tile (R, G, B in colour, Z dark);
+    the Pareto front is a dashed line. Layouts without a depth measurement are left out
+    (named under the axes).
+    """
+    from matplotlib.offsetbox import AnnotationBbox, OffsetImage
+
+    from .pattern_report import best_rows, pareto_layouts
+
+    _, plt = _pyplot()
+    best = best_rows(res["rows"])
+    pts = [r for r in best if r.get("cpsnr") is not None and r.get("wall_sigma_mm") is not None]
+    left = [r["layout"] for r in best if r not in pts]
+    front = set(pareto_layouts(res["rows"]))
+    fig, ax = plt.subplots(figsize=(8, 6))
+    ops = np.array([r.get("ops_per_pixel") or 0.0 for r in pts])
+    size = 40 + 400 * ops / ops.max() if ops.size and ops.max() > 0 else np.full(len(pts), 60)
+    for r, s in zip(pts, size):
+        ax.scatter(r["wall_sigma_mm"], r["cpsnr"], s=s, alpha=0.5,
+                   color="C3" if r["layout"] in front else "C0",
+                   edgecolor="k" if r["layout"] in front else "none", zorder=3)
+        img = tile_thumbnail(r["tile"])
+        zoom = 18.0 / max(img.shape[:2])
+        box = AnnotationBbox(OffsetImage(img, zoom=zoom, interpolation="nearest"),
+                             (r["wall_sigma_mm"], r["cpsnr"]), xybox=(22, 14),
+                             xycoords="data", boxcoords="offset points", pad=0.1,
+                             frameon=True)
+        ax.add_artist(box)
+        ax.annotate(f"{r['layout']} ({r['method']})", (r["wall_sigma_mm"], r["cpsnr"]),
+                    xytext=(36, 8), textcoords="offset points", fontsize=7)
+    fr = sorted((r for r in pts if r["layout"] in front), key=lambda r: r["wall_sigma_mm"])
+    ax.plot([r["wall_sigma_mm"] for r in fr], [r["cpsnr"] for r in fr], "k--", lw=1,
+            zorder=1, label="Pareto front")
+    for v in (np.percentile(ops, 10), ops.max()) if ops.size and ops.max() > 0 else ():
+        ax.scatter([], [], s=40 + 400 * v / ops.max(), color="C0", alpha=0.5,
+                   label=f"{v:.1f} ops per pixel")
+    s = res["settings"]
+    ax.set_xlabel(f"predicted depth noise on a wall at {s['wall_distance']:g} m "
+                  "(guided ToF ISP), mm")
+    ax.set_ylabel(f"CPSNR of the best method, dB ({res['dataset']['name']}, "
+                  f"{len(res['dataset']['images'])} images)")
+    ax.set_title("RGB-Z layouts: colour loss against depth noise (marker area: cost)",
+                 fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7, loc="lower right")
+    if left:
+        fig.text(0.01, 0.01, "no depth measured: " + ", ".join(left), fontsize=7)
+    ax.margins(0.15)
     fig.tight_layout()
     return _png(fig, plt)
