@@ -145,8 +145,12 @@ def test_bad_inputs_name_their_parameter(tiny):
         ps.pattern_study(tiny / "ds", presets=("mask7",), progress=False)
     with pytest.raises(ValueError, match="^train: 1 image"):
         ps.pattern_study(tiny / "ds", train=tiny / "ds", train_limit=1, progress=False)
-    with pytest.raises(ValueError, match="^rgbz: |^rgbd: .* holds no RGB-D scene"):
+    with pytest.raises(ValueError, match="^rgbd: .* holds no RGB-D scene"):
         ps.pattern_study(tiny / "ds", rgbd=tiny / "ds", progress=False)
+    with pytest.raises(ValueError, match="^train: .*missing"):
+        ps.pattern_study(tiny / "ds", train=tiny / "missing", progress=False)
+    with pytest.raises(ValueError, match="^dataset: .*missing"):
+        ps.pattern_study(tiny / "missing", progress=False)
     with pytest.raises(ValueError, match="^tiles: no layout"):
         ps.pattern_study(tiny / "ds", presets=(), progress=False)
 

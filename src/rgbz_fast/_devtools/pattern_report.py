@@ -46,7 +46,7 @@ COLUMNS = (
     ("tof_ops_per_pixel", "ToF ops/px", _num(".2f"), "four-tap demodulation per frame pixel "
                                                      "(every frequency)"),
     ("wall_sigma_mm", "σ wall (mm)", _num(".1f"), "depth noise the guided ToF ISP predicts "
-                                                  "on the flat wall (RMS)"),
+                                                  "on the flat wall (RMS, valid or not)"),
     ("wall_std_mm", "spread (mm)", _num(".1f"), "measured std of the valid wall depths"),
     ("wall_valid", "wall valid", lambda v: "-" if v is None else f"{100 * v:.1f} %",
      "valid share on the wall"),

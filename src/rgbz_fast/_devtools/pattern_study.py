@@ -13,8 +13,8 @@ the same) and measures, per layout, with what the library has:
   and training set); a method that does not apply is a note in its row;
 * **depth** -- the Z fill factor, the measurements per megapixel, and the
   colour-guided ToF ISP (``ToFISP().run(tof, guide=ColourISP().run(frame))``)
-  on a flat wall (``WALL``): the ISP's predicted depth noise and the measured
-  spread of the valid depths; with RGB-D scenes, the valid share, the share of
+  on a flat wall (``WALL``): the ISP's predicted depth noise (every measurement
+  of the interior), the valid share and the measured spread of the valid depths; with RGB-D scenes, the valid share, the share of
   valid measurements off by more than 5 cm, and the RMSE of the valid ones;
 * **cost** -- operations per reconstructed pixel of each method, from the
   counting build of the kernels (every category of ``opcount`` summed), and
@@ -224,8 +224,8 @@ def _depth_of(scene, pattern, seed, margin_blocks=6):
 
 
 def _wall_task(cand, settings):
-    """The wall's depth noise: the ISP's predicted sigma (RMS) and the measured spread of
-    the valid depths in the frame's interior, and the valid share."""
+    """The wall's depth noise: the ISP's predicted sigma (RMS over the measurements of the
+    frame's interior), the measured spread of the valid ones, and the valid share."""
     from ..simulation import Scene
 
     P, Q = cand.pattern.period
@@ -236,8 +236,11 @@ def _wall_task(cand, settings):
     res, tof, inner = _depth_of(scene, cand.pattern, settings.seed)
     ok = inner & res.valid
     err = res.depth[ok] - d
-    return {"wall_sigma_mm": float(np.sqrt(np.mean(res.sigma[ok] ** 2)) * 1e3)
-            if ok.any() else None,
+    # the prediction of every interior measurement, valid or not: a layout whose
+    # measurements the ISP flags (too little signal after the denoise) still gets its noise
+    sig = res.sigma[inner]
+    sig = sig[np.isfinite(sig)]
+    return {"wall_sigma_mm": float(np.sqrt(np.mean(sig ** 2)) * 1e3) if sig.size else None,
             "wall_std_mm": float(err.std() * 1e3) if err.size > 1 else None,
             "wall_valid": float(res.valid[inner].mean()) if inner.any() else None,
             "wall_n": int(ok.sum())}
@@ -328,7 +331,9 @@ def _sources(data, limit, name):
     try:
         return dataset_sources(data, limit)
     except (ValueError, TypeError, OSError) as exc:
-        raise type(exc)(f"{name}: {exc}") from None
+        msg = " ".join(str(exc).split()).removeprefix("dataset: ")
+        raise (TypeError if isinstance(exc, TypeError) else ValueError)(
+            f"{name}: {msg}") from None
 
 
 def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generate=None,

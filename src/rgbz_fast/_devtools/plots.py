@@ -165,12 +165,14 @@ _TILE_RGB = np.array([[0.85, 0.15, 0.15], [0.2, 0.7, 0.25], [0.2, 0.35, 0.9],
                       [0.12, 0.12, 0.12]])
 
 
-def tile_thumbnail(tile):
-    """An RGB image (float, rows x cols x 3) of a tile string: R, G, B as colours, Z dark."""
+def tile_thumbnail(tile, least=8):
+    """An RGB image (float, rows x cols x 3) of a tile string repeated to at least ``least``
+    sites a side: R, G, B as colours, Z dark."""
     from .._patterns import CHANNELS
 
-    rows = tile.split("/")
-    return _TILE_RGB[np.array([[CHANNELS.index(ch) for ch in r] for r in rows])]
+    codes = np.array([[CHANNELS.index(ch) for ch in r] for r in tile.split("/")])
+    reps = [-(-least // n) for n in codes.shape]
+    return _TILE_RGB[np.tile(codes, reps)]
 
 
 def pattern_study_plot(res):
@@ -178,7 +180,8 @@ def pattern_study_plot(res):
 
     Each layout at its best method (highest CPSNR): the wall's predicted depth noise (x)
     against that CPSNR (y), marker area proportional to the method's operations per frame
-    pixel, each point labelled with a thumbnail of its tile (R, G, B in colour, Z dark);
+    pixel, each point labelled with a thumbnail of its tile (repeated to 8 sites a side; R,
+    G, B in colour, Z dark);
     the Pareto front is a dashed line. Layouts without a depth measurement are left out
     (named under the axes).
     """
@@ -194,19 +197,23 @@ def pattern_study_plot(res):
     fig, ax = plt.subplots(figsize=(8, 6))
     ops = np.array([r.get("ops_per_pixel") or 0.0 for r in pts])
     size = 40 + 400 * ops / ops.max() if ops.size and ops.max() > 0 else np.full(len(pts), 60)
-    for r, s in zip(pts, size):
-        ax.scatter(r["wall_sigma_mm"], r["cpsnr"], s=s, alpha=0.5,
-                   color="C3" if r["layout"] in front else "C0",
+    order = sorted(range(len(pts)), key=lambda i: pts[i]["cpsnr"])
+    for rank, i in enumerate(order):
+        r, s = pts[i], size[i]
+        xy = (r["wall_sigma_mm"], r["cpsnr"])
+        ax.scatter(*xy, s=s, alpha=0.5, color="C3" if r["layout"] in front else "C0",
                    edgecolor="k" if r["layout"] in front else "none", zorder=3)
+        # neighbours in CPSNR alternate above and below their point, so that labels of
+        # close layouts do not cover each other
+        dy = 16 if rank % 2 == 0 else -16
         img = tile_thumbnail(r["tile"])
-        zoom = 18.0 / max(img.shape[:2])
-        box = AnnotationBbox(OffsetImage(img, zoom=zoom, interpolation="nearest"),
-                             (r["wall_sigma_mm"], r["cpsnr"]), xybox=(22, 14),
-                             xycoords="data", boxcoords="offset points", pad=0.1,
-                             frameon=True)
+        box = AnnotationBbox(OffsetImage(img, zoom=20.0 / max(img.shape[:2]),
+                                         interpolation="nearest"),
+                             xy, xybox=(20, dy), xycoords="data", boxcoords="offset points",
+                             pad=0.1, frameon=True)
         ax.add_artist(box)
-        ax.annotate(f"{r['layout']} ({r['method']})", (r["wall_sigma_mm"], r["cpsnr"]),
-                    xytext=(36, 8), textcoords="offset points", fontsize=7)
+        ax.annotate(f"{r['layout']} ({r['method']})", xy, xytext=(34, dy - 3),
+                    textcoords="offset points", fontsize=7)
     fr = sorted((r for r in pts if r["layout"] in front), key=lambda r: r["wall_sigma_mm"])
     ax.plot([r["wall_sigma_mm"] for r in fr], [r["cpsnr"] for r in fr], "k--", lw=1,
             zorder=1, label="Pareto front")
