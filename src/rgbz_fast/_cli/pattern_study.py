@@ -26,7 +26,7 @@ and with --rgbd the valid share and error on the RGB-D scenes.
 Writes pattern_study.csv/.md/.json and the Pareto plot pattern_study.png into --out;
 progress on stderr; every finished task is cached (--cache), so a re-run or an
 interrupted run resumes. The default run (two presets, the scikit-image samples,
-no training set, no RGB-D scenes) takes minutes."""
+no training set, no RGB-D scenes) takes seconds."""
 
 
 def _size_or_full(text):
