@@ -311,31 +311,18 @@ def pattern_study_plot(res):
     fig, ax = plt.subplots(figsize=(8, 6))
     ops = np.array([r.get("ops_per_pixel") or 0.0 for r in pts])
     size = 40 + 400 * ops / ops.max() if ops.size and ops.max() > 0 else np.full(len(pts), 60)
-    order = sorted(range(len(pts)), key=lambda i: pts[i]["cpsnr"])
-    for rank, i in enumerate(order):
-        r, s = pts[i], size[i]
-        xy = (r["wall_sigma_mm"], r["cpsnr"])
-        ax.scatter(*xy, s=s, alpha=0.5, color="C3" if r["layout"] in front else "C0",
+    for r, s in zip(pts, size):
+        ax.scatter(r["wall_sigma_mm"], r["cpsnr"], s=s, alpha=0.5,
+                   color="C3" if r["layout"] in front else "C0",
                    edgecolor="k" if r["layout"] in front else "none", zorder=3)
-        # neighbours in CPSNR alternate above and below their point, so that labels of
-        # close layouts do not cover each other
-        dy = 16 if rank % 2 == 0 else -16
-        img = tile_thumbnail(r["tile"])
-        box = AnnotationBbox(OffsetImage(img, zoom=20.0 / max(img.shape[:2]),
-                                         interpolation="nearest"),
-                             xy, xybox=(20, dy), xycoords="data", boxcoords="offset points",
-                             pad=0.1, frameon=True)
-        ax.add_artist(box)
-        ax.annotate(f"{r['layout']} ({r['method']})", xy, xytext=(34, dy - 3),
-                    textcoords="offset points", fontsize=7)
     fr = sorted((r for r in pts if r["layout"] in front), key=lambda r: r["wall_sigma_mm"])
     ax.plot([r["wall_sigma_mm"] for r in fr], [r["cpsnr"] for r in fr], "k--", lw=1,
             zorder=1, label="Pareto front")
     for v in (np.percentile(ops, 10), ops.max()) if ops.size and ops.max() > 0 else ():
         ax.scatter([], [], s=40 + 400 * v / ops.max(), color="C0", alpha=0.5,
                    label=f"{v:.1f} ops per pixel")
-    s = res["settings"]
-    ax.set_xlabel(f"predicted depth noise on a wall at {s['wall_distance']:g} m "
+    st = res["settings"]
+    ax.set_xlabel(f"predicted depth noise on a wall at {st['wall_distance']:g} m "
                   "(guided ToF ISP), mm")
     ax.set_ylabel(f"CPSNR of the best method, dB ({res['dataset']['name']}, "
                   f"{len(res['dataset']['images'])} images)")
@@ -345,6 +332,29 @@ def pattern_study_plot(res):
     ax.legend(fontsize=7, loc="lower right")
     if left:
         fig.text(0.01, 0.01, "no depth measured: " + ", ".join(left), fontsize=7)
-    ax.margins(0.15)
+    ax.margins(x=0.08, y=0.12)
+    lo, hi = ax.get_xlim()
+    ax.set_xlim(lo, hi + 0.3 * (hi - lo))          # room for the labels right of the points
     fig.tight_layout()
+    # labels last, where the axes are final: each takes the first offset above or below its
+    # point whose box (thumbnail and text, in points) covers no label placed before it
+    to_pt = ax.transData + fig.dpi_scale_trans.inverted()
+    placed = []
+    for r in sorted(pts, key=lambda r: r["cpsnr"]):
+        xy = (r["wall_sigma_mm"], r["cpsnr"])
+        x0, y0 = to_pt.transform(xy) * 72
+        text = f"{r['layout']} ({r['method']})"
+        width = 34 + 4.2 * len(text)
+        dy = next((d for d in (16, -16, 34, -34, 52, -52, 70, -70)
+                   if not any(abs(y0 + d - py) < 18 and x0 < px + pw and px < x0 + width
+                              for px, py, pw in placed)), 16)
+        placed.append((x0, y0 + dy, width))
+        img = tile_thumbnail(r["tile"])
+        ax.add_artist(AnnotationBbox(OffsetImage(img, zoom=20.0 / max(img.shape[:2]),
+                                                 interpolation="nearest"),
+                                     xy, xybox=(20, dy), xycoords="data",
+                                     boxcoords="offset points", pad=0.1, frameon=True))
+        ax.annotate(text, xy, xytext=(34, dy - 3), textcoords="offset points", fontsize=7,
+                    arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5") if abs(dy) > 16
+                    else None)
     return _png(fig, plt)
