@@ -236,7 +236,16 @@ def test_dask_local_cluster_gives_the_same_numbers(tiny, tmp_path):
     assert remote["scheduler"] == cluster.scheduler_address
 
 
-def test_method_that_does_not_apply_is_a_note():
-    p = Pattern("ZZ/ZZ/ZZ/ZZ/ZZ/ZZ/GR/BG")        # six rows of Z: none of its colour near
-    assert "does not apply" in ps.method_note(p, "bilinear")
+def test_method_that_does_not_apply_is_a_note(tiny):
+    tile = "ZZ/ZZ/ZZ/ZZ/ZZ/ZZ/GR/BG"               # six rows of Z: none of its colour near
+    assert "does not apply" in ps.method_note(Pattern(tile), "bilinear")
     assert ps.method_note(get_pattern("mask1"), "sg") == ""
+    settings = ps.StudySettings(methods=("bilinear", "sg"), wall_shape=(96, 96))
+    res = ps.pattern_study(tiny / "ds", presets=("mask1",), tiles=(tile,), settings=settings,
+                           progress=False, workers=1)
+    rows = [r for r in res["rows"] if r["layout"] == "tile1"]
+    assert [r["cpsnr"] for r in rows] == [None, None]
+    for r in rows:                                 # no colour, so no guide: depth unguided
+        assert r["note"].startswith("does not apply: pattern: the Z site")
+        assert "depth without the colour guide" in r["note"] and r["wall_sigma_mm"] > 0
+    assert all(r["cpsnr"] > 20 for r in res["rows"] if r["layout"] == "mask1")

@@ -207,20 +207,27 @@ def _colour_task(cand, dataset, train, settings, cache_dir, workers):
 
 # --------------------------------------------------------------------------- depth
 def _depth_of(scene, pattern, seed, margin_blocks=6):
-    """(result, tof) of the colour-guided ToF ISP on one simulated frame, and the mask of
-    the measurements ``margin_blocks`` Z pixels (x2) away from the frame's edges."""
+    """(result, tof, inner, note) of the colour-guided ToF ISP on one simulated frame:
+    ``inner`` masks the measurements ``margin_blocks`` Z pixels (x2) away from the frame's
+    edges; ``note`` says why the ISP ran without the guide, when the colour ISP cannot
+    reconstruct the layout ("" otherwise)."""
     from ..isp import ColourISP
     from ..simulation import simulate
     from ..tof import ToFISP
 
     frame = simulate(scene, pattern, seed=seed)
     tof = frame.tof
-    res = ToFISP().run(tof, guide=ColourISP().run(frame))
+    try:
+        guide, note = ColourISP().run(frame), ""
+    except ValueError as exc:          # the colour ISP's reconstruction does not apply
+        guide = None
+        note = f"depth without the colour guide ({' '.join(str(exc).split())})"
+    res = ToFISP().run(tof, guide=guide)
     r, c = tof.sites
     m = margin_blocks * tof.block * 2
     H, W = scene.depth.shape
     inner = (r >= m) & (r < H - m) & (c >= m) & (c < W - m)
-    return res, tof, inner
+    return res, tof, inner, note
 
 
 def _wall_task(cand, settings):
@@ -233,7 +240,7 @@ def _wall_task(cand, settings):
     d = settings.wall_distance
     scene = Scene(np.full((rows, cols, 3), 0.5), depth=np.full((rows, cols), d),
                   ir_reflectance=np.full((rows, cols), settings.wall_reflectance))
-    res, tof, inner = _depth_of(scene, cand.pattern, settings.seed)
+    res, tof, inner, note = _depth_of(scene, cand.pattern, settings.seed)
     ok = inner & res.valid
     err = res.depth[ok] - d
     # the prediction of every interior measurement, valid or not: a layout whose
@@ -243,7 +250,7 @@ def _wall_task(cand, settings):
     return {"wall_sigma_mm": float(np.sqrt(np.mean(sig ** 2)) * 1e3) if sig.size else None,
             "wall_std_mm": float(err.std() * 1e3) if err.size > 1 else None,
             "wall_valid": float(res.valid[inner].mean()) if inner.any() else None,
-            "wall_n": int(ok.sum())}
+            "wall_n": int(ok.sum()), "note": note}
 
 
 def _rgbd_task(cand, folder, settings):
@@ -258,13 +265,13 @@ def _rgbd_task(cand, folder, settings):
         sl = (slice(r0, r0 + h), slice(c0, c0 + w))
         scene = Scene(scene.image[sl], depth=scene.depth[sl],
                       depth_valid=scene.depth_valid[sl], name=scene.name)
-    res, tof, _ = _depth_of(scene, cand.pattern, settings.seed)
+    res, tof, _, note = _depth_of(scene, cand.pattern, settings.seed)
     known = tof.valid
     ok = res.valid & known
     err = res.depth - tof.depth_true
     return {"known": int(known.sum()), "valid": int(ok.sum()),
             "wrong_valid": int((ok & (np.abs(err) > TOLERANCE)).sum()),
-            "sq_err_valid": float(np.sum(err[ok] ** 2))}
+            "sq_err_valid": float(np.sum(err[ok] ** 2)), "note": note}
 
 
 def _task(job):
@@ -453,7 +460,9 @@ def _rows(cands, jobs, results, settings, tof_ops):
             r.update({k: v.get(k) for k in COLOUR_METRICS})
             ops = v.get("ops_per_z")
             r.update(ops_per_z=ops, ops_per_pixel=None if ops is None else ops * z_fill)
-            r["note"] = "; ".join(n for n in (v.get("note"), c.note,
+            depth_note = (wall or {}).get("note") or next(
+                (x["note"] for x in scenes if x.get("note")), "")
+            r["note"] = "; ".join(n for n in (v.get("note"), c.note, depth_note,
                                               v.get("filters") and f"filters {v['filters']}")
                                   if n)
             rows.append(r)
