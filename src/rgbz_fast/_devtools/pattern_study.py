@@ -14,8 +14,9 @@ the same) and measures, per layout, with what the library has:
 * **depth** -- the Z fill factor, the measurements per megapixel, and the
   colour-guided ToF ISP (``ToFISP().run(tof, guide=ColourISP().run(frame))``)
   on a flat wall (``WALL``): the ISP's predicted depth noise (every measurement
-  of the interior), the valid share and the measured spread of the valid depths; with RGB-D scenes, the valid share, the share of
-  valid measurements off by more than 5 cm, and the RMSE of the valid ones;
+  of the interior), the valid share and the measured spread of the valid depths;
+  with RGB-D scenes, the valid share, the share of valid measurements off by more
+  than 5 cm, and the RMSE of the valid ones;
 * **cost** -- operations per reconstructed pixel of each method, from the
   counting build of the kernels (every category of ``opcount`` summed), and
   per frame pixel (times the share of Z sites); the ToF demodulation per
@@ -109,7 +110,7 @@ def _cached(cache_dir, kind, key, compute):
 
 
 # --------------------------------------------------------------------------- colour + cost
-def _filters(cand, train, settings, cache_dir, workers):
+def _filters(cand, train, settings, cache_dir):
     """The learned filters of a layout fitted on the training set ``train`` ((name,
     sources)), cached in ``cache_dir/filters`` by layout, training set and bit depth."""
     from ..evaluation import train_filters
@@ -178,7 +179,7 @@ def _colour_task(cand, dataset, train, settings, cache_dir, workers):
         if not note:
             run.append(m)
     if "learned" in run:
-        filters = _filters(cand, train, settings, cache_dir, workers)
+        filters = _filters(cand, train, settings, cache_dir)
     if run:
         params = ReconstructParams(precision="float64",
                                    filters=(filters,) if filters is not None else None)
