@@ -463,7 +463,8 @@ def test_shared_options_read_the_same_in_every_command():
         texts = {a.help for name, a in ap if name.split()[1] == flag}
         assert len(texts) <= 2, (flag, texts)       # --workers: kernels, or the bench's runs
     workers = {name.split()[0]: a for name, a in ap if name.endswith(" --workers")}
-    assert set(workers) == {"reconstruct", "depth", "evaluate", "bench", "tradeoff"}
+    assert set(workers) == {"reconstruct", "depth", "evaluate", "bench", "tradeoff",
+                            "pattern-study"}
     assert len({a.type for a in workers.values()}) == 1      # one rule: a positive integer
 
 

@@ -11,6 +11,7 @@
     rgbz-fast bench       kernel speed (Mpix/s) beside OpenCV and NumPy
     rgbz-fast opcount     operations per missing pixel beside the paper's Table 1
     rgbz-fast tradeoff    speed against accuracy, Pareto plot
+    rgbz-fast pattern-study  RGB-Z layouts ranked by colour loss, depth noise and cost
     rgbz-fast config      how the C kernels were built (OpenMP, flags, threads)
 
 One module per command declares its options (``add_parser(sub)``, with the
@@ -18,7 +19,7 @@ shared option helpers of :mod:`._common`) and does its work (``run(args)``);
 :func:`main` parses, runs and reports. Every option's help gives its default.
 Bad input exits with status 2 and a one-line reason on stderr. Ctrl-C exits
 130 and SIGTERM 143; either way no temporary file and no worker process is
-left behind. The measuring commands (bench, opcount, tradeoff) run the
+left behind. The measuring commands (bench, opcount, tradeoff, pattern-study) run the
 engines of :mod:`rgbz_fast._devtools`, which hold no command-line code.
 """
 

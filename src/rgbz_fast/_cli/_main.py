@@ -9,13 +9,13 @@ import threading
 
 from .._build_config import VERSION
 from . import (_common, bench, calibrate, config, depth, evaluate, evaluate_depth, opcount,
-               reconstruct, simulate, tradeoff, train)
+               pattern_study, reconstruct, simulate, tradeoff, train)
 
 __all__ = ["main", "build_parser", "COMMANDS", "Terminated"]
 
 #: the commands, in the order of ``rgbz-fast --help``
 COMMANDS = (simulate, reconstruct, depth, evaluate, train, calibrate, evaluate_depth, bench,
-            opcount, tradeoff, config)
+            opcount, tradeoff, pattern_study, config)
 
 
 class Terminated(SystemExit):

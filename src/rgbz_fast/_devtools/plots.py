@@ -1,5 +1,5 @@
-"""The figures of the commands: the depth preview and the flags map of ``rgbz-fast depth`` and
-the Pareto plot of ``rgbz-fast tradeoff``.
+"""The figures of the commands: the depth preview and the flags map of ``rgbz-fast depth``,
+the Pareto plot of ``rgbz-fast tradeoff`` and the layouts of ``rgbz-fast pattern-study``.
 
 Each function returns PNG bytes, which the command writes with
 :func:`rgbz_fast.io.atomic_write`. matplotlib is imported here only, and only
@@ -14,7 +14,7 @@ import io
 import numpy as np
 
 __all__ = ["depth_preview", "depth_flags_figure", "full_depth_preview", "tradeoff_plot",
-           "tradeoff_figure"]
+           "tradeoff_figure", "pattern_study_plot", "tile_thumbnail"]
 
 
 def _pyplot():
@@ -272,3 +272,89 @@ def tradeoff_figure(res):
             text.set_fontweight("bold")                               # a header
     fig.tight_layout()
     return fig
+
+
+#: colours of the channels in a tile thumbnail (R, G, B, Z)
+_TILE_RGB = np.array([[0.85, 0.15, 0.15], [0.2, 0.7, 0.25], [0.2, 0.35, 0.9],
+                      [0.12, 0.12, 0.12]])
+
+
+def tile_thumbnail(tile, least=8):
+    """An RGB image (float, rows x cols x 3) of a tile string repeated to at least ``least``
+    sites a side: R, G, B as colours, Z dark."""
+    from .._patterns import CHANNELS
+
+    codes = np.array([[CHANNELS.index(ch) for ch in r] for r in tile.split("/")])
+    reps = [-(-least // n) for n in codes.shape]
+    return _TILE_RGB[np.tile(codes, reps)]
+
+
+def pattern_study_plot(res):
+    """Pareto plot of :func:`rgbz_fast._devtools.pattern_study.pattern_study` (PNG bytes).
+
+    Each layout at its best method (highest CPSNR): the wall's predicted depth noise (x)
+    against that CPSNR (y), marker area proportional to the method's operations per frame
+    pixel, each point labelled with a thumbnail of its tile (repeated to 8 sites a side; R,
+    G, B in colour, Z dark);
+    the Pareto front is a dashed line. Layouts without a depth measurement are left out
+    (named under the axes).
+    """
+    from matplotlib.offsetbox import AnnotationBbox, OffsetImage
+
+    from .pattern_report import best_rows, pareto_layouts
+
+    _, plt = _pyplot()
+    best = best_rows(res["rows"])
+    pts = [r for r in best if r.get("cpsnr") is not None and r.get("wall_sigma_mm") is not None]
+    left = [r["layout"] for r in best if r not in pts]
+    front = set(pareto_layouts(res["rows"]))
+    fig, ax = plt.subplots(figsize=(8, 6))
+    ops = np.array([r.get("ops_per_pixel") or 0.0 for r in pts])
+    size = 40 + 400 * ops / ops.max() if ops.size and ops.max() > 0 else np.full(len(pts), 60)
+    for r, s in zip(pts, size):
+        ax.scatter(r["wall_sigma_mm"], r["cpsnr"], s=s, alpha=0.5,
+                   color="C3" if r["layout"] in front else "C0",
+                   edgecolor="k" if r["layout"] in front else "none", zorder=3)
+    fr = sorted((r for r in pts if r["layout"] in front), key=lambda r: r["wall_sigma_mm"])
+    ax.plot([r["wall_sigma_mm"] for r in fr], [r["cpsnr"] for r in fr], "k--", lw=1,
+            zorder=1, label="Pareto front")
+    for v in (np.percentile(ops, 10), ops.max()) if ops.size and ops.max() > 0 else ():
+        ax.scatter([], [], s=40 + 400 * v / ops.max(), color="C0", alpha=0.5,
+                   label=f"{v:.1f} ops per pixel")
+    st = res["settings"]
+    ax.set_xlabel(f"predicted depth noise on a wall at {st['wall_distance']:g} m "
+                  "(guided ToF ISP), mm")
+    ax.set_ylabel(f"CPSNR of the best method, dB ({res['dataset']['name']}, "
+                  f"{len(res['dataset']['images'])} images)")
+    ax.set_title("RGB-Z layouts: colour loss against depth noise (marker area: cost)",
+                 fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7, loc="lower right")
+    if left:
+        fig.text(0.01, 0.01, "no depth measured: " + ", ".join(left), fontsize=7)
+    ax.margins(x=0.08, y=0.12)
+    lo, hi = ax.get_xlim()
+    ax.set_xlim(lo, hi + 0.3 * (hi - lo))          # room for the labels right of the points
+    fig.tight_layout()
+    # labels last, where the axes are final: each takes the first offset above or below its
+    # point whose box (thumbnail and text, in points) covers no label placed before it
+    to_pt = ax.transData + fig.dpi_scale_trans.inverted()
+    placed = []
+    for r in sorted(pts, key=lambda r: r["cpsnr"]):
+        xy = (r["wall_sigma_mm"], r["cpsnr"])
+        x0, y0 = to_pt.transform(xy) * 72
+        text = f"{r['layout']} ({r['method']})"
+        width = 34 + 4.2 * len(text)
+        dy = next((d for d in (16, -16, 34, -34, 52, -52, 70, -70)
+                   if not any(abs(y0 + d - py) < 18 and x0 < px + pw and px < x0 + width
+                              for px, py, pw in placed)), 16)
+        placed.append((x0, y0 + dy, width))
+        img = tile_thumbnail(r["tile"])
+        ax.add_artist(AnnotationBbox(OffsetImage(img, zoom=20.0 / max(img.shape[:2]),
+                                                 interpolation="nearest"),
+                                     xy, xybox=(20, dy), xycoords="data",
+                                     boxcoords="offset points", pad=0.1, frameon=True))
+        ax.annotate(text, xy, xytext=(34, dy - 3), textcoords="offset points", fontsize=7,
+                    arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5") if abs(dy) > 16
+                    else None)
+    return _png(fig, plt)
