@@ -45,10 +45,12 @@ typedef enum rgbz_type {
     RGBZ_T_F64 = 3,
 } rgbz_type;
 
-/* computation precision of the reconstruction */
+/* computation precision of the reconstruction (RGBZ_P_FIXED: the integer streaming model of
+   hw_recon.h, its own entry point rgbz_hw_reconstruct) */
 typedef enum rgbz_precision {
     RGBZ_P_FLOAT32 = 0,
     RGBZ_P_FLOAT64 = 1,
+    RGBZ_P_FIXED = 2,
 } rgbz_precision;
 
 /* reconstruction methods (the Python names are the lower-case suffixes) */

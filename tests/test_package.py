@@ -56,6 +56,9 @@ _LAYERS = [
     {"io"},
     {"simulation", "reconstruction", "tof", "metrics"},
     {"isp"},
+    # fixed-point models of the reconstruction and what they cost: above the models they
+    # imitate, below the evaluation that may compare them
+    {"hardware"},
     {"evaluation"},
     # the counting build of the kernels sits with the tools: no library module may load it
     {"_devtools", "_kernels_count", "_cli", "__init__", "__main__"},

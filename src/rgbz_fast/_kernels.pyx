@@ -32,6 +32,7 @@ cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_precision:
         RGBZ_P_FLOAT32
         RGBZ_P_FLOAT64
+        RGBZ_P_FIXED
     cpdef enum rgbz_method:
         RGBZ_M_BILINEAR
         RGBZ_M_BI
@@ -595,4 +596,50 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     radius_px, inv_h2,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- fixed-point model (hw_recon.c)
+cdef extern from "hw_recon.h" nogil:
+    ctypedef struct rgbz_hw_plan:
+        pass
+    ctypedef struct rgbz_hw_config:
+        pass
+    ctypedef struct rgbz_hw_state:
+        pass
+    int rgbz_hw_layout(int64_t *out, int n)
+    int rgbz_hw_reconstruct(int in_type, const void *src, void *dst, Py_ssize_t rows,
+                            Py_ssize_t cols, int py, int px, const int32_t *plan_map,
+                            const rgbz_plan *plans, const rgbz_hw_plan *hw, int n_plans,
+                            const rgbz_hw_config *cfg, const int32_t *exp_table,
+                            const int32_t *recip_table, rgbz_hw_state *state)
+
+ctypedef fused int_frame_t:
+    uint8_t
+    uint16_t
+
+
+def hw_layout():
+    """(sizeof rgbz_hw_plan, sizeof rgbz_hw_config, sizeof rgbz_hw_state, max width, max
+    period, kernel radius, max table entries) as compiled."""
+    cdef int64_t out[7]
+    _raise_for(rgbz_hw_layout(out, 7))
+    return tuple(out[i] for i in range(7))
+
+
+def hw_reconstruct(const int_frame_t[:, ::1] src, int_frame_t[:, ::1] dst, int py, int px,
+                   const int32_t[::1] plan_map, const uint8_t[::1] plans, const uint8_t[::1] hw,
+                   int n_plans, const uint8_t[::1] cfg, const int32_t[::1] exp_table,
+                   const int32_t[::1] recip_table, uint8_t[::1] state):
+    """Run the fixed-point streaming model: plans as for :func:`reconstruct`, hw the
+    rgbz_hw_plan bytes of each, cfg the rgbz_hw_config bytes, the two tables, and ``state``
+    (sizeof rgbz_hw_state bytes, the line buffers and the window)."""
+    cdef int status
+    cdef int in_type = RGBZ_T_U8 if int_frame_t is uint8_t else RGBZ_T_U16
+    with nogil:
+        status = rgbz_hw_reconstruct(
+            in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+            &plan_map[0], <const rgbz_plan *> &plans[0], <const rgbz_hw_plan *> &hw[0],
+            n_plans, <const rgbz_hw_config *> &cfg[0], &exp_table[0], &recip_table[0],
+            <rgbz_hw_state *> &state[0])
     _raise_for(status)
