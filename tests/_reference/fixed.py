@@ -253,38 +253,39 @@ def _site_values(vals, codes, target, method, cfg, bit_depth, sigma_floor, sigma
         pure = {"pure": np.ones(n, bool), "combined": np.zeros(n, bool),
                 "auto": ~np.any(cand & ~diagonal[None, :], axis=1)}[sg_mode]
     Ww, Wg, Wr, Wa = cfg.weight_bits, cfg.exp_bits, cfg.recip_bits, cfg.alpha_bits
-    # alpha * beta (eqs. 2-4)
-    S = 1 + (np.abs(v[:, :, None] - v[:, None, :]) * (cand[:, :, None] & cand[:, None, :])
-             ).sum(axis=2)
-    _rec(probe, "beta_sum", np.where(cand, S, 0))
-    mb, pb = recip(np.where(cand, S, 1), cfg, RT)
-    ma, ea = alpha_constants(cfg)
-    w_ab = _shift(ma[None, :] * mb, -(Wa + Wr - Ww))
-    E_ab = ea[None, :] + pb
-    # the gradient factor gamma(ori) (eqs. 6-11)
-    if method == "edi_central":
-        gm, ge, _ = family_gammas(vals, codes, EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS, cfg,
-                                  sigma_floor, sigma_rel, RT, ET, probe=probe)
-    else:
-        gm, ge, _ = family_gammas(vals, codes, EDI_LINE_PAIRS, EDI_LINE_GROUPS, cfg,
-                                  sigma_floor, sigma_rel, RT, ET, cross=EDI_LINE_CROSS,
-                                  probe=probe)
-    o = np.where(ORI >= 0, ORI, 0)
-    w_edi = (w_ab * gm[:, o]) >> Wg
-    E_edi = E_ab + ge[:, o]
-    if method == "bi":
-        w, E = w_ab, E_ab
-    elif method in ("edi_central", "edi_line"):
-        w, E = w_edi, E_edi
-    else:
+    mixed = ~pure                      # the sites whose weights hold alpha * beta
+    w = E = None
+    if mixed.any():
+        sub = probe if mixed.all() else None     # a probe records the sites that use it
+        # alpha * beta (eqs. 2-4)
+        S = 1 + (np.abs(v[:, :, None] - v[:, None, :]) * (cand[:, :, None] & cand[:, None, :])
+                 ).sum(axis=2)
+        _rec(sub, "beta_sum", np.where(cand, S, 0))
+        mb, pb = recip(np.where(cand, S, 1), cfg, RT)
+        ma, ea = alpha_constants(cfg)
+        w = _shift(ma[None, :] * mb, -(Wa + Wr - Ww))
+        E = ea[None, :] + pb
+        if method != "bi":
+            # the gradient factor gamma(ori) (eqs. 6-11)
+            pairs, groups, cross = ((EDI_CENTRAL_PAIRS, EDI_CENTRAL_GROUPS, None)
+                                    if method == "edi_central" else
+                                    (EDI_LINE_PAIRS, EDI_LINE_GROUPS, EDI_LINE_CROSS))
+            gm, ge, _ = family_gammas(vals, codes, pairs, groups, cfg, sigma_floor, sigma_rel,
+                                      RT, ET, cross=cross, probe=sub)
+            o = np.where(ORI >= 0, ORI, 0)
+            w = (w * gm[:, o]) >> Wg
+            E = E + ge[:, o]
+    if use_sg:
         sm, se, sk = family_gammas(vals, codes, SG_PAIRS, SG_GROUPS, cfg, sigma_floor,
                                    sigma_rel, RT, ET, probe=probe)
         msv, esv, K = _sg_factor(sm, se, sk, cfg, cand, probe)
-        Mg = (1 << Wg) - (cfg.exp == "table")
-        Wsv = _bitlen(K * Mg)[:, None]
-        w_comb = _shift(w_edi * msv, -Wsv)
-        w = np.where(pure[:, None], msv, w_comb)
-        E = np.where(pure[:, None], esv, E_edi + esv)
+        if w is None:
+            w, E = msv, esv
+        else:
+            Mg = (1 << Wg) - (cfg.exp == "table")
+            Wsv = _bitlen(K * Mg)[:, None]
+            w = np.where(pure[:, None], msv, _shift(w * msv, -Wsv))
+            E = np.where(pure[:, None], esv, E + esv)
     w = np.where(cand, w, 0)
     _rec(probe, "weight", w)
     live = cand & (w > 0)
