@@ -28,8 +28,9 @@ OUT = REPO / "docs" / "reference" / "api.md"
 
 #: the public modules, in the order of the reference (the package's own layering, top down
 #: from what a user imports first)
-MODULES = ("rgbz_fast", "rgbz_fast.simulation", "rgbz_fast.reconstruction", "rgbz_fast.isp",
-           "rgbz_fast.tof", "rgbz_fast.metrics", "rgbz_fast.evaluation", "rgbz_fast.io")
+MODULES = ("rgbz_fast", "rgbz_fast.simulation", "rgbz_fast.reconstruction",
+           "rgbz_fast.hardware", "rgbz_fast.isp", "rgbz_fast.tof", "rgbz_fast.metrics",
+           "rgbz_fast.evaluation", "rgbz_fast.io")
 
 HEADER = """\
 # API reference

@@ -9,6 +9,7 @@
     rgbz-fast bench       kernel speed (Mpix/s) beside OpenCV and NumPy
     rgbz-fast opcount     operations per missing pixel beside the paper's Table 1
     rgbz-fast tradeoff    speed against accuracy, Pareto plot
+    rgbz-fast hardware    the fixed-point model: silicon cost, error against float64, sweep
     rgbz-fast calibrate   flat-wall sweep -> ToF phase calibration file (cyclic error, offsets)
     rgbz-fast evaluate-depth  the ToF chain measured: RGB-D scenes, range, noise, sunlight
     rgbz-fast config      how the C kernels were built (OpenMP, flags, threads)
@@ -119,6 +120,18 @@ def _shape(text):
         return parse_shape(text, "shape")
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc).removeprefix("shape: ")) from None
+
+
+def _fixed_fields(text):
+    """--fixed-point: 'field=value,...' -> {field: int or str} (FixedPointConfig checks them)."""
+    out = {}
+    for item in _csv(text):
+        key, sep, value = item.partition("=")
+        if not sep or not key.strip() or not value.strip():
+            raise argparse.ArgumentTypeError(f"expected FIELD=VALUE pairs, got {item!r}")
+        value = value.strip()
+        out[key.strip()] = int(value) if value.lstrip("-").isdigit() else value
+    return out
 
 
 def _range(text):
@@ -487,6 +500,39 @@ def _parser():
     d.add_argument("--json", action="store_true", help="print the rows as JSON")
     _add_limits(d)
 
+    h = sub.add_parser(
+        "hardware", help="the fixed-point model: silicon cost and error against float64",
+        description="The fixed-point streaming model of one method on one pattern "
+                    "(precision='fixed'): line buffers and BRAM_18K, window, latency, "
+                    "multipliers by width, adders, comparators, tables, register widths; its "
+                    "error against float64 (CFA PSNR change, histogram of the LSB differences "
+                    "at the Z sites) under evaluate's protocol and on 8-bit sRGB values at 11 "
+                    "bits; its operations per pixel beside Table 1 and the float core's. "
+                    "--sweep varies the widths and table sizes: quality against cost.", **kw)
+    h.add_argument("--method", default="sg", choices=("bilinear", "bi", "edi_central",
+                                                      "edi_line", "sg"),
+                   help="reconstruction method")
+    h.add_argument("--pattern", default="mask1",
+                   help="RGB-Z pattern: mask1, mask2, rows, or a tile such as ZR/BG")
+    h.add_argument("--width", type=_positive_int, default=4000, metavar="PIXELS",
+                   help="pixels per row: the depth of a line buffer")
+    h.add_argument("--dataset", type=Path, default=None, metavar="DIR",
+                   help="folder of RGB images for the error (default: the five scikit-image "
+                        "samples evaluate uses with no --dataset)")
+    h.add_argument("--limit", type=_positive_int, default=None, metavar="N",
+                   help="the first N images of the dataset only (default: every image)")
+    h.add_argument("--sweep", action="store_true",
+                   help="also vary every width and table size around the configuration: a "
+                        "table and a plot of quality against cost (written to --out)")
+    h.add_argument("--fixed-point", type=_fixed_fields, default=None, metavar="FIELD=VALUE,...",
+                   help="the configuration to report, as fields of FixedPointConfig (default: "
+                        "its defaults), e.g. exp_bits=12,recip=table")
+    h.add_argument("--json", action="store_true", help="print JSON instead of Markdown")
+    h.add_argument("--out", type=Path, default=Path("rgbz_hardware"), metavar="DIR",
+                   help="folder of hardware.md, hardware.json and, with --sweep, "
+                        "hardware_sweep.png")
+    h.add_argument("--quiet", action="store_true", help="no progress bar")
+
     for name, mod, text in (("bench", "bench", "kernel speed beside OpenCV and NumPy"),
                             ("opcount", "opcount", "operations per missing pixel vs Table 1"),
                             ("tradeoff", "tradeoff", "speed vs accuracy, Pareto plot")):
@@ -540,7 +586,8 @@ def main(argv=None):
                 os.environ[key] = str(value)
         return {"simulate": _simulate, "reconstruct": _reconstruct, "depth": _depth,
                 "evaluate": _evaluate, "train": _train, "calibrate": _calibrate,
-                "evaluate-depth": _evaluate_depth, "config": _config}[args.command](args)
+                "evaluate-depth": _evaluate_depth, "hardware": _hardware,
+                "config": _config}[args.command](args)
     except (CliError, ValueError, TypeError, OSError, ImportError) as exc:
         text = _for_the_command_line(str(exc)).splitlines()[0] if str(exc) else \
             type(exc).__name__
@@ -574,6 +621,40 @@ def _delegate(name, argv):
         print(f"rgbz-fast {name}: error: not available in this build ({exc})", file=sys.stderr)
         return 2
     return mod.main(argv)
+
+
+def _hardware(args):
+    from ._devtools import hardware as hw
+    from ._devtools._common import progress, write_json
+    from .hardware import FixedPointConfig
+
+    try:
+        config = FixedPointConfig.build(args.fixed_point)
+    except (TypeError, ValueError) as exc:
+        raise CliError(f"--fixed-point: {exc}") from None
+    pattern = get_pattern(args.pattern)
+    images = hw.load_images(args.dataset, args.limit)
+    report = hw.hardware_report(args.method, pattern, width=args.width, images=images,
+                                config=config)
+    files = {"hardware.md": hw.format_report(report) + "\n"}
+    if args.sweep:
+        configs = hw.sweep_configs(config)
+        bar = progress(range(len(configs)), total=len(configs), desc="sweep", quiet=args.quiet)
+        it = iter(bar)
+        rows = hw.run_sweep(args.method, pattern, width=args.width, images=images, base=config,
+                            configs=configs, tick=lambda: next(it, None))
+        report["sweep"] = rows
+        files["hardware.md"] += "\n## Sweep\n\n" + hw.format_sweep(rows) + "\n"
+        args.out.mkdir(parents=True, exist_ok=True)
+        tmp = args.out / "hardware_sweep.tmp.png"
+        hw.plot_sweep(rows, tmp, f"{args.method} on {pattern.name}")
+        tmp.replace(args.out / "hardware_sweep.png")
+    files["hardware.json"] = write_json(report) + "\n"
+    args.out.mkdir(parents=True, exist_ok=True)
+    for name, text in files.items():
+        atomic_write(args.out / name, text.encode())
+    print(files["hardware.json"] if args.json else files["hardware.md"], end="")
+    return 0
 
 
 def _calibrate(args):

@@ -22,6 +22,7 @@ import time
 import numpy as np
 
 from .. import metrics
+from .._patterns import get_pattern
 from ..evaluation import EvalConfig
 from ..evaluation._run import image_frames
 from ..hardware import FixedPointConfig, hardware_cost
@@ -108,7 +109,7 @@ def _float_opcounts(pattern, method):
     """The float core's mean operations per site ({group: {category: mean}}) and Table 1's."""
     from . import opcount
     counts = opcount.count_operations(method, pattern, precision="float64", shape=(32, 32))
-    table1 = {g: opcount.TABLE1.get((method, str(pattern), g)) for g in counts}
+    table1 = {g: opcount.TABLE1.get((method, get_pattern(pattern).name, g)) for g in counts}
     return ({g: {k: round(v["mean"][k], 2) for k in ("add", "mul", "div", "exp", "abs", "cmp")}
              for g, v in counts.items()}, table1)
 
@@ -117,6 +118,7 @@ def hardware_report(method="sg", pattern="mask1", *, width=4000, images=None, pa
                     config=None, protocols=tuple(PROTOCOLS), bit_depth=11):
     """Cost, error and operation counts of one configuration: a dict (see the module doc)."""
     params = ReconstructParams.build(params)
+    pattern = get_pattern(pattern)
     config = FixedPointConfig.build(config if config is not None else params.fixed_point)
     cost = hardware_cost(pattern, method, width=width, bit_depth=bit_depth, params=params,
                          fixed_point=config)
@@ -125,7 +127,7 @@ def hardware_report(method="sg", pattern="mask1", *, width=4000, images=None, pa
     cases = prepare_cases(images, pattern, method, protocols, params)
     error = measure_error(cases, method, config, params)
     fl, t1 = _float_opcounts(pattern, method)
-    return {"method": method, "pattern": str(pattern), "cost": cost.as_dict(),
+    return {"method": method, "pattern": pattern.name, "cost": cost.as_dict(),
             "error": error, "target": TARGET, "meets_target": meets_target(error),
             "images": [n for n, _ in images],
             "opcounts": {"fixed": cost.ops, "float64": fl, "table1": t1},
