@@ -6,9 +6,10 @@
  * layer declared and checked for the plan and bit depth), fixed-size arrays, loops whose
  * trip counts are bounded by the RGBZ_MAX_* constants of rgbz.h. Per site of one plan:
  *   1. the differences |a - b| of the plan's pairs, summed per group (eqs. 8-11, 14-18);
- *   2. per family of groups, each sum scaled to L times the group's mean (exact), sigma =
- *      max(min, floor, rel * mean) (eq. 7 with the library's relative floor), and per group
- *      y = (G / sigma)^2 log2(e) / 2 through the reciprocal table, saturated;
+ *   2. per family of groups, each sum scaled to L times the group's mean (exact), n sigma =
+ *      max(n min, n floor, rel * sum) (eq. 7 with the library's relative floor; n the
+ *      family's groups, so that the mean needs no division), and per group
+ *      y = (n G / n sigma)^2 log2(e) / 2 through the reciprocal table, saturated;
  *   3. gamma = 2^-y = exp(-G^2 / (2 sigma^2)) as a mantissa (the table of 2^-frac(y)) and an
  *      exponent (floor(y));
  *   4. per candidate the weight of eqs. 2, 6, 19 as a mantissa and an exponent: alpha (a
@@ -94,7 +95,9 @@ static void hw_family(const rgbz_hw_plan *h, const rgbz_hw_config *c, const int3
         gsum += G[g];
         first = 0;
     }
-    int64_t sigma = gmin << c->sigma_bits;
+    /* n sigma (n = fam_known), so that rel * mean = rel * gsum / n needs no division */
+    const int64_t nk = h->fam_known[f];
+    int64_t sigma = (gmin * nk) << c->sigma_bits;
     if (h->fam_floor[f] > sigma) sigma = h->fam_floor[f];
     if (h->fam_rel[f] * gsum > sigma) sigma = h->fam_rel[f] * gsum;
     int64_t ms, ps;
@@ -107,8 +110,8 @@ static void hw_family(const rgbz_hw_plan *h, const rgbz_hw_config *c, const int3
             ge[g] = 0;
             continue;
         }
-        /* t = (G / sigma) sqrt(log2(e) / 2) with ratio_bits fractional bits, saturated */
-        const int64_t X = G[g] * mc;
+        /* t = (n G / n sigma) sqrt(log2(e) / 2) with ratio_bits fractional bits, saturated */
+        const int64_t X = G[g] * nk * mc;
         int64_t t;
         if (sh >= 0) {
             t = X >> (sh < 62 ? sh : 62);
@@ -321,7 +324,8 @@ int rgbz_hw_reconstruct(int in_type, const void *src, void *dst, ptrdiff_t rows,
             if (x_in < cols) {
                 int32_t pix = 0;
                 if (in_row < rows)
-                    pix = in_type == RGBZ_T_U8 ? s8[in_row * cols + x_in] : s16[in_row * cols + x_in];
+                    pix = in_type == RGBZ_T_U8 ? s8[in_row * cols + x_in]
+                                               : s16[in_row * cols + x_in];
                 if (y >= 0)
                     for (int d = 0; d < RGBZ_HW_WR; d++)
                         st->win[d][x_in % WC] = rsel[d] == in_row

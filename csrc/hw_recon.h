@@ -55,14 +55,17 @@ typedef struct {
     int64_t group_mult[RGBZ_NGROUPS];  /* L_f / n_g: the group sum times it is L_f times the
                                           group's mean (L_f the lcm of the counts n_g of the
                                           family's groups); 0: the group has no difference */
-    int64_t fam_known[2];              /* groups with differences: semi-gradients 0..7, gradients 8..11 */
-    int64_t fam_rel[2];                /* round(sigma_rel 2^sigma_bits / fam_known): the relative floor */
-    int64_t fam_floor[2];              /* max(1, round(sigma_floor L_f 2^sigma_bits)) */
+    int64_t fam_known[2];              /* groups with differences, per family: the
+                                          semi-gradients 0..7, the gradients 8..11 */
+    int64_t fam_rel[2];                /* round(sigma_rel 2^sigma_bits): the relative floor
+                                          (it multiplies the family's sum: n sigma) */
+    int64_t fam_floor[2];              /* max(1, round(sigma_floor n L_f 2^sigma_bits)) */
     int64_t cand_ma[RGBZ_MAX_CAND];    /* alpha_k = cand_ma 2^-(alpha_bits + cand_ea) (eq. 3) */
     int64_t cand_ea[RGBZ_MAX_CAND];
     int64_t cand_svmult[RGBZ_MAX_CAND];  /* eq. 19's sum times it: lcm / its count, or 1 */
     int64_t sv_bits;                   /* bits of eq. 19's factor (its declared width) */
-    int64_t mean_mult, mean_shift;     /* floor(S / n + 1/2) = ((2 S + n) mean_mult) >> mean_shift */
+    int64_t mean_mult, mean_shift;     /* floor(S / n + 1/2) =
+                                          ((2 S + n) mean_mult) >> mean_shift */
     int64_t pad_;                      /* keeps the size a multiple of 16 bytes */
 } rgbz_hw_plan;
 

@@ -40,8 +40,9 @@ from rgbz_fast.hardware import FixedPointConfig, hardware_cost
 METHODS = ("sg", "edi_line", "edi_central", "bi")
 MASKS = ("mask2", "mask1")
 MARGIN = {"within_1lsb_pct": 99.99, "dpsnr_db": 0.02, "image_dpsnr_db": 0.05}
-#: the fields, the order of the descent, and their lowest values
-FIELDS = {"exp_table_size": 2, "recip_table_size": 2, "exp_range_bits": 1, "sigma_bits": 0,
+#: the fields, the order of the descent, and their lowest values (sigma_bits: 1 holds the
+#: default sigma_rel 0.5 exactly)
+FIELDS = {"exp_table_size": 2, "recip_table_size": 2, "exp_range_bits": 1, "sigma_bits": 1,
           "ratio_bits": 0, "alpha_bits": 2, "exp_bits": 2, "recip_bits": 2, "weight_bits": 2}
 WIDE = dict(exp_bits=20, exp_table_size=1024, exp_range_bits=8, recip_bits=22,
             recip_table_size=1024, ratio_bits=18, sigma_bits=8, alpha_bits=16, weight_bits=22)

@@ -139,8 +139,9 @@ def family_gammas(vals, codes, pairs, groups, cfg, sigma_floor, sigma_rel, RT, E
     """(m, e, known) of the gamma of every group of a family, (n, G) each.
 
     Group sums of absolute differences (valid pairs only), scaled to L times their mean
-    (L the lcm of the known groups' counts), sigma = max(min, floor, rel * mean) in
-    sigma_bits fractional bits, r c = G / sigma sqrt(log2(e)/2) through the reciprocal
+    (L the lcm of the known groups' counts); with n the number of known groups,
+    n sigma = max(n min, n floor, rel * sum) in sigma_bits fractional bits (rel * mean
+    without a division), r c = n G / (n sigma) sqrt(log2(e)/2) through the reciprocal
     table, y = (r c)^2 saturated, gamma = 2^-y through the exponential table.
     """
     d, valid = pair_differences(vals, codes, pairs, cross=cross)
@@ -161,11 +162,12 @@ def family_gammas(vals, codes, pairs, groups, cfg, sigma_floor, sigma_rel, RT, E
     gmin = np.where(known, Gs, big).min(axis=1)
     gsum = Gs.sum(axis=1)
     _rec(probe, "group_total", gsum)
-    fq = np.maximum(1, np.floor(sigma_floor * L.astype(np.float64) * 2.0 ** sR + 0.5)
+    # n sigma = max(n min, n floor, rel * sum), n the known groups: the mean without a division
+    fq = np.maximum(1, np.floor(sigma_floor * nk * L.astype(np.float64) * 2.0 ** sR + 0.5)
                     ).astype(np.int64)
-    sigma = np.maximum(np.where(nk > 0, gmin, 0) << sR, fq)
+    sigma = np.maximum((np.where(nk > 0, gmin, 0) * nk) << sR, fq)
     if sigma_rel > 0:
-        R = np.floor(sigma_rel * 2.0 ** sR / np.maximum(nk, 1) + 0.5).astype(np.int64)
+        R = int(np.floor(sigma_rel * 2.0 ** sR + 0.5))
         sigma = np.maximum(sigma, R * gsum)
     _rec(probe, "sigma", sigma)
     ms, ps = recip(sigma, cfg, RT, probe, "sigma")
@@ -174,7 +176,7 @@ def family_gammas(vals, codes, pairs, groups, cfg, sigma_floor, sigma_rel, RT, E
     ymax = (np.int64(1) << (cfg.exp_range_bits + Ft)) - 1
     tcap = math.isqrt(int(ymax) << Ft) + 1
     sh = (ps + Wr - sR - Ft)[:, None]
-    X = Gs * mc[:, None]
+    X = Gs * (nk * mc)[:, None]
     _rec(probe, "ratio_product", X)
     k = np.clip(-sh, 0, 62)
     t_left = np.where(X > (tcap >> k), tcap, X << k)

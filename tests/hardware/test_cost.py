@@ -1,4 +1,4 @@
-"""rgbz_fast.hardware.hardware_cost: the silicon of the fixed-point model, counted from the plans."""
+"""rgbz_fast.hardware.hardware_cost: the fixed-point model's silicon, counted from the plans."""
 
 from __future__ import annotations
 

@@ -89,7 +89,7 @@ def test_configurations_and_options_agree(cname, method, rng):
     config = CONFIGS[cname]
     for pattern in (rz.mask1(), rz.mask2()):
         data = _frame("random", (18, 22), 11, rng)
-        for kw in ({}, {"sigma_rel": 0.0}, {"sigma_rel": 1.7, "sigma_floor": 0.2}):
+        for kw in ({}, {"sigma_rel": 0.0}, {"sigma_rel": 1.75, "sigma_floor": 0.2}):
             _check(data, pattern, method, 11, config, **kw)
         if method == "sg":
             for mode in ("pure", "combined"):
@@ -207,6 +207,10 @@ def test_a_register_that_cannot_hold_its_sum_is_refused_not_wrapped():
                                          "weight_bits or recip_bits"):
         rz.reconstruct(data, "sg", pattern="mask2", bit_depth=16, precision="fixed",
                        fixed_point=wide)
+    with pytest.raises(ValueError, match=r"sigma_bits: 4 fractional bits hold sigma_rel=0.3 as "
+                                         r"5/2\^4; raise sigma_bits to 8 or more"):
+        rz.reconstruct(data, "sg", pattern="mask1", precision="fixed", sigma_rel=0.3,
+                       fixed_point=FixedPointConfig(sigma_bits=4))
     with pytest.raises(TypeError, match="fixed_point: unknown field 'exp_size'"):
         rz.ReconstructParams(precision="fixed", fixed_point={"exp_size": 8})
 

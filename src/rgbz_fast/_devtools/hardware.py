@@ -136,36 +136,45 @@ def hardware_report(method="sg", pattern="mask1", *, width=4000, images=None, pa
 
 # -- the sweep ---------------------------------------------------------------------------------
 
-#: the values each field takes in the sweep (one field varied at a time around the base)
+#: how each field moves in the sweep, one at a time around the base: bits added to a width,
+#: factors of a table size
 SWEEP = {
-    "exp_bits": (6, 8, 10, 12, 14, 16),
-    "exp_table_size": (8, 16, 32, 64, 128, 256),
-    "exp_range_bits": (3, 4, 5, 6, 8),
-    "recip_bits": (6, 8, 10, 12, 14, 16),
-    "recip_table_size": (4, 8, 16, 32, 64, 128),
-    "ratio_bits": (4, 6, 8, 10, 12),
-    "alpha_bits": (3, 4, 6, 8, 10),
-    "weight_bits": (4, 6, 8, 10, 12, 14),
-    "sigma_bits": (4, 8),
+    "weight_bits": (-3, -1, 1, 3),
+    "recip_bits": (-3, -1, 1, 3),
+    "exp_bits": (-3, -1, 1, 3),
+    "ratio_bits": (-3, -1, 1, 3),
+    "alpha_bits": (-3, -1, 1, 3),
+    "exp_range_bits": (-2, -1, 1),
+    "sigma_bits": (-2, 4),
+    "recip_table_size": (0.25, 0.5, 2, 4),
+    "exp_table_size": (0.25, 0.5, 2, 4),
 }
 
 
 def sweep_configs(base):
-    """The base configuration, each field of SWEEP varied alone, the other table modes and a
-    uniform narrowing and widening of every width by 2 bits: [(label, config)]."""
+    """The base configuration, each field of SWEEP moved alone (values a field cannot take are
+    left out), the other table modes, and every width narrowed and widened by 2 bits together:
+    [(label, config)]."""
     out = [("default", base)]
-    for field, values in SWEEP.items():
-        for v in values:
-            if v != getattr(base, field):
+    for field, steps in SWEEP.items():
+        for step in steps:
+            cur = getattr(base, field)
+            v = int(cur * step) if field.endswith("_table_size") else cur + step
+            try:
                 out.append((f"{field}={v}", base.replace(**{field: v})))
+            except ValueError:
+                continue
     for e in ("table", "pwl"):
         for r in ("table", "pwl"):
             if (e, r) != (base.exp, base.recip):
                 out.append((f"exp={e}, recip={r}", base.replace(exp=e, recip=r)))
     widths = ("exp_bits", "recip_bits", "ratio_bits", "alpha_bits", "weight_bits")
     for step in (-2, 2):
-        ch = {f: getattr(base, f) + step for f in widths}
-        out.append((f"every width {step:+d}", base.replace(**ch)))
+        try:
+            out.append((f"every width {step:+d}", base.replace(
+                **{f: getattr(base, f) + step for f in widths})))
+        except ValueError:
+            continue
     return out
 
 

@@ -57,7 +57,7 @@ class Unit:
 
 @dataclass
 class HardwareCost:
-    """The cost of one (pattern, method, configuration, width, bit depth): see :func:`hardware_cost`."""
+    """The cost of one pattern, method, configuration, width and bit depth (:func:`hardware_cost`)."""
     pattern: str
     method: str
     width: int
@@ -170,7 +170,8 @@ def _plan_units(plan, hw, regs, config, b):
 
     # the plain mean (bilinear, and the fallback)
     add("mean", "add", nc - 1, R["cand_sum"])
-    add("mean", "cmul", 1, R["mean_product"], (R["cand_sum"] + 1, R["mean_product"] - R["cand_sum"]))
+    add("mean", "cmul", 1, R["mean_product"],
+        (R["cand_sum"] + 1, R["mean_product"] - R["cand_sum"]))
     depth = lg(nc) + 1
     if int(plan["method"]) == 0:
         return U, depth
@@ -192,12 +193,16 @@ def _plan_units(plan, hw, regs, config, b):
                 R["group_scaled"], (R["group_sum"], R["group_scaled"] - R["group_sum"]))
             add("sigma", "cmp", nk - 1, R["group_scaled"])
             add("sigma", "add", nk - 1, R["group_total"])
+            nb = nk.bit_length()
+            # n x min (n sigma = max(n min, n floor, rel x sum): the mean without a division)
+            add("sigma", "cmul", int(nk > 1), R["sigma"], (R["group_scaled"], nb))
             if int(hw["fam_rel"][f]):
                 add("sigma", "cmul", 1, R["sigma"], (R["group_total"], config.sigma_bits))
             add("sigma", "cmp", 2, R["sigma"])
             d_rec = recip("sigma", 1, R["sigma"])
-            add("ratio", "cmul", 1, Wr, (Wr + rp, Wr))
-            add("ratio", "mul", nk, R["ratio_product"], (R["group_scaled"], Wr))
+            add("ratio", "cmul", 1, Wr, (Wr + rp, Wr))          # x sqrt(log2(e) / 2)
+            add("ratio", "cmul", int(nk > 1), Wr + nb, (Wr, nb))  # x n
+            add("ratio", "mul", nk, R["ratio_product"], (R["group_scaled"], Wr + nb))
             add("ratio", "shift", nk, R["ratio"], (R["ratio_product"],))
             add("ratio", "cmp", nk, R["ratio"])
             add("exponent", "mul", nk, R["ratio_square"], (R["ratio"], R["ratio"]))

@@ -108,8 +108,24 @@ def _group_counts(plan):
     return counts
 
 
+def check_sigma_bits(config, sigma_rel):
+    """ValueError naming ``sigma_bits`` when it cannot hold ``sigma_rel`` to 1/256 of its value
+    (the relative floor of eq. 7 is the constant round(sigma_rel 2^sigma_bits))."""
+    def held(bits):
+        return abs(np.floor(sigma_rel * 2.0 ** bits + 0.5) / 2.0 ** bits - sigma_rel) \
+            <= sigma_rel / 256
+
+    if sigma_rel > 0 and not held(config.sigma_bits):
+        need = next((b for b in range(config.sigma_bits, 25) if held(b)), 24)
+        raise ValueError(f"sigma_bits: {config.sigma_bits} fractional bits hold sigma_rel="
+                         f"{sigma_rel:g} as "
+                         f"{int(np.floor(sigma_rel * 2.0 ** config.sigma_bits + 0.5))}"
+                         f"/2^{config.sigma_bits}; raise sigma_bits to {need} or more")
+
+
 def hw_constants(plans, config, bit_depth, sigma_floor, sigma_rel):
     """The rgbz_hw_plan of every plan (HW_PLAN_DTYPE), from the plan and the configuration."""
+    check_sigma_bits(config, sigma_rel)
     out = np.zeros(len(plans), HW_PLAN_DTYPE)
     Mg = (1 << config.exp_bits) - (config.exp == "table")
     sR = config.sigma_bits
@@ -124,9 +140,10 @@ def hw_constants(plans, config, bit_depth, sigma_floor, sigma_rel):
             for g in known:
                 h["group_mult"][g] = L // int(counts[g])
             h["fam_known"][f] = len(known)
-            h["fam_rel"][f] = (int(np.floor(sigma_rel * 2.0 ** sR / len(known) + 0.5))
-                               if sigma_rel > 0 else 0)
-            h["fam_floor"][f] = max(1, int(np.floor(sigma_floor * L * 2.0 ** sR + 0.5)))
+            # n sigma = max(n min, n floor, rel * sum): the mean without a division
+            h["fam_rel"][f] = int(np.floor(sigma_rel * 2.0 ** sR + 0.5)) if sigma_rel > 0 else 0
+            h["fam_floor"][f] = max(1, int(np.floor(sigma_floor * len(known) * L * 2.0 ** sR
+                                                    + 0.5)))
         nc = int(p["n_cand"])
         ncov = []
         for k in range(nc):
@@ -220,9 +237,9 @@ def register_widths(plan, hw, config, bit_depth):
         regs += [
             Register("group_scaled", Lmax * top, False, "group sum x L_f / n_g (L_f x its mean)"),
             Register("group_total", nk * Lmax * top, False, "sum of a family's scaled groups"),
-            Register("sigma", max(Lmax * top << sR, flo, rel * nk * Lmax * top), False,
-                     "sigma x L_f x 2^sigma_bits", ("sigma_bits",)),
-            Register("ratio_product", Lmax * top * int(cfg["cq"]), False,
+            Register("sigma", max(nk * Lmax * top << sR, flo, rel * nk * Lmax * top), False,
+                     "n x sigma x L_f x 2^sigma_bits (n: the family's groups)", ("sigma_bits",)),
+            Register("ratio_product", nk * Lmax * top * int(cfg["cq"]), False,
                      "scaled group x (1/sigma) x sqrt(log2(e)/2)", ("recip_bits",)),
             Register("ratio", int(cfg["tcap"]), False, "G / sigma x sqrt(log2(e)/2), saturated",
                      ("ratio_bits", "exp_range_bits")),
