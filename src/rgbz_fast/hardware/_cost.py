@@ -163,15 +163,18 @@ def _plan_units(plan, hw, regs, config, b):
         add(stage, "shift", n, config.recip_index_bits + (Wr if rp else 0), (in_bits,))
         add(stage, "recip_lookup", n, Wr + rp)
         if rp:
-            add(stage, "sub", n, Wr + 1)
-            add(stage, "mul", n, 2 * Wr + 1, (Wr + 1, Wr))
+            # the step between two entries is below 2^recip_bits / size: that many bits
+            step = Wr - config.recip_index_bits + 1
+            add(stage, "sub", n, step)
+            add(stage, "mul", n, step + Wr, (step, Wr))
             add(stage, "sub", n, Wr + 1)
         return 3 + 3 * rp
 
     # the plain mean (bilinear, and the fallback)
     add("mean", "add", nc - 1, R["cand_sum"])
-    add("mean", "cmul", 1, R["mean_product"],
-        (R["cand_sum"] + 1, R["mean_product"] - R["cand_sum"]))
+    if (2 * nc) & (2 * nc - 1):          # 1 / n by a constant multiplier; a shift for n = 2^k
+        add("mean", "cmul", 1, R["mean_product"],
+            (R["cand_sum"] + 1, R["mean_product"] - R["cand_sum"]))
     depth = lg(nc) + 1
     if int(plan["method"]) == 0:
         return U, depth
@@ -208,10 +211,11 @@ def _plan_units(plan, hw, regs, config, b):
             add("exponent", "mul", nk, R["ratio_square"], (R["ratio"], R["ratio"]))
             add("exponent", "cmp", nk, R["exponent"])
             add("exponent", "exp_lookup", nk, Wg + ep)
-            if ep:
-                fi = max(config.ratio_bits - config.exp_index_bits, 0)
-                add("exponent", "sub", nk, Wg + 1)
-                add("exponent", "mul", nk, Wg + 1 + fi, (Wg + 1, fi))
+            fi = max(config.ratio_bits - config.exp_index_bits, 0)
+            if ep and fi:               # no fraction bits left: the entry itself
+                step = max(Wg - config.exp_index_bits + 1, 1)    # 2^-u falls < 2^Wg / size
+                add("exponent", "sub", nk, step)
+                add("exponent", "mul", nk, step + fi, (step, fi))
                 add("exponent", "sub", nk, Wg + 1)
             d = (max(lg(int(counts[g])) for g in known) + 1 + lg(nk) + 2 + d_rec + 1 + 1
                  + 2 + 2 + 1 + 3 * ep)
