@@ -36,7 +36,8 @@ NARROW = FixedPointConfig(exp="pwl", exp_table_size=8, exp_bits=6, exp_range_bit
 CONFIGS = {"default": FixedPointConfig(), "narrow": NARROW,
            "wide": FixedPointConfig(exp="pwl", recip="table", exp_bits=24, recip_bits=20,
                                     ratio_bits=20, weight_bits=22, alpha_bits=20,
-                                    exp_table_size=4096, recip_table_size=4096)}
+                                    exp_table_size=4096, recip_table_size=4096,
+                                    sigma_bits=12)}
 
 
 def _frame(kind, shape, bit_depth, rng):
@@ -89,7 +90,7 @@ def test_configurations_and_options_agree(cname, method, rng):
     config = CONFIGS[cname]
     for pattern in (rz.mask1(), rz.mask2()):
         data = _frame("random", (18, 22), 11, rng)
-        for kw in ({}, {"sigma_rel": 0.0}, {"sigma_rel": 1.75, "sigma_floor": 0.2}):
+        for kw in ({}, {"sigma_rel": 0.0}, {"sigma_rel": 1.5, "sigma_floor": 0.2}):
             _check(data, pattern, method, 11, config, **kw)
         if method == "sg":
             for mode in ("pure", "combined"):
@@ -217,8 +218,8 @@ def test_a_register_that_cannot_hold_its_sum_is_refused_not_wrapped():
 
 def test_the_params_carry_the_configuration():
     p = rz.ReconstructParams(precision="fixed")
-    assert p.fixed_point == FixedPointConfig() and p.exp_mode == "table"
-    q = rz.ReconstructParams(precision="fixed", fixed_point={"exp": "pwl"})
-    assert q.fixed_point.exp == "pwl" and q.exp_mode == "pwl"
+    assert p.fixed_point == FixedPointConfig() and p.exp_mode == "pwl"
+    q = rz.ReconstructParams(precision="fixed", fixed_point={"exp": "table"})
+    assert q.fixed_point.exp == "table" and q.exp_mode == "table"
     assert rz.ReconstructParams().fixed_point is None
     assert "fixed" in rz.PRECISIONS

@@ -125,7 +125,8 @@ def check_sigma_bits(config, sigma_rel):
 
 def hw_constants(plans, config, bit_depth, sigma_floor, sigma_rel):
     """The rgbz_hw_plan of every plan (HW_PLAN_DTYPE), from the plan and the configuration."""
-    check_sigma_bits(config, sigma_rel)
+    if any(p["use_grad"] or p["use_sg"] for p in plans):      # eq. 7 is computed
+        check_sigma_bits(config, sigma_rel)
     out = np.zeros(len(plans), HW_PLAN_DTYPE)
     Mg = (1 << config.exp_bits) - (config.exp == "table")
     sR = config.sigma_bits
