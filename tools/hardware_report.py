@@ -69,18 +69,18 @@ def target_table(images, label):
 
 def bit_depth_table(images):
     """SG on both masks under the linear protocol at other bit depths: the default configuration,
-    and the same with recip_bits and weight_bits widened by the bits beyond 11."""
+    and FixedPointConfig.for_bit_depth (every width one bit more per bit beyond 11, the tables
+    twice the entries per three bits)."""
     from rgbz_fast import reconstruct
     from rgbz_fast.evaluation import EvalConfig
     from rgbz_fast.evaluation._run import image_frames
 
-    out = ["| bits | mask | default: within 1 LSB | max abs diff | widened (recip_bits, "
-           "weight_bits) | within 1 LSB | max abs diff |", "|---|---|---|---|---|---|---|"]
+    out = ["| bits | mask | default: within 1 LSB | max abs diff | for_bit_depth: within 1 LSB "
+           "| max abs diff | its table + datapath bits (default's) |",
+           "|---|---|---|---|---|---|---|"]
     base = FixedPointConfig()
     for b in (8, 10, 12, 14, 16):
-        extra = max(b - 11, 0)
-        wide = base.replace(recip_bits=base.recip_bits + extra,
-                            weight_bits=base.weight_bits + extra)
+        wide = FixedPointConfig.for_bit_depth(b)
         for p in MASKS:
             ec = EvalConfig(bit_depth=b)
             res = []
@@ -95,9 +95,11 @@ def bit_depth_table(images):
                     within += int(np.count_nonzero(d <= 1))
                     worst = max(worst, int(d.max()))
                 res.append((100.0 * within / n, worst))
-            out.append(f"| {b} | {p} | {res[0][0]:.3f} % | {res[0][1]} | "
-                       f"({wide.recip_bits}, {wide.weight_bits}) | {res[1][0]:.3f} % | "
-                       f"{res[1][1]} |")
+            cw = hardware_cost(p, "sg", bit_depth=b, fixed_point=wide)
+            cb = hardware_cost(p, "sg", bit_depth=b, fixed_point=base)
+            out.append(f"| {b} | {p} | {res[0][0]:.3f} % | {res[0][1]} | {res[1][0]:.3f} % | "
+                       f"{res[1][1]} | {cw.table_bits + cw.datapath_bits} "
+                       f"({cb.table_bits + cb.datapath_bits}) |")
     return out
 
 
@@ -108,10 +110,7 @@ def vitis_table():
     for m in ("bilinear", "sg"):
         for p in MASKS:
             for b in (11, 16):
-                cfg = FixedPointConfig()
-                if b > 11:
-                    cfg = cfg.replace(recip_bits=cfg.recip_bits + b - 11,
-                                      weight_bits=cfg.weight_bits + b - 11)
+                cfg = FixedPointConfig.for_bit_depth(b)
                 c = hardware_cost(p, m, width=3840, bit_depth=b, fixed_point=cfg)
                 tb = sum(t["bram18"] for t in c.tables.values())
                 out.append(f"| {m} | {p} | {b} | {c.line_buffers} x 3840 "
@@ -197,9 +196,10 @@ def main(argv=None):
     if kodak:
         lines += ["## Other bit depths (SG, linear protocol, the first 8 Kodak images)", "",
                   "The default configuration is searched at 11 bits (the paper's ADC). A "
-                  "wider frame keeps the relative error of the weighted mean, so its LSB "
-                  "error grows with the range: every bit beyond 11 wants one more bit of the "
-                  "normalisation's reciprocal and of the weights.", ""]
+                  "wider frame keeps the relative error of the weighted mean, so its error in "
+                  "LSB grows with the range; `FixedPointConfig.for_bit_depth(b)` widens every "
+                  "width by one bit per bit beyond 11 and doubles the tables per three bits.",
+                  ""]
         lines += bit_depth_table(kodak[:8]) + [""]
     lines += ["## Cost of every method (4000 pixels, 11 bits, the default configuration)", ""]
     lines += cost_table() + [""]
@@ -207,14 +207,15 @@ def main(argv=None):
               "AMD documents 37 BRAM_18K, 0 DSP, 4345 FF and 6243 LUT at 300 MHz, one pixel "
               "per clock, for a 4K 4x4 RGB-IR remosaic (5x5 colour and 3x3 IR filters) whose "
               "weights are fixed (shifts and adds: no multiplier). Our design at 3840 pixels "
-              "per row (16-bit frames: recip_bits and weight_bits widened by 5, as in the "
-              "table of other bit depths); FF and LUT counts need a synthesis run, not given "
+              "per row (16-bit frames: `FixedPointConfig.for_bit_depth(16)`); a table this "
+              "small (33 entries or fewer) maps to LUTs rather than block RAM, so the BRAM "
+              "column is an upper bound; FF and LUT counts need a synthesis run, not given "
               "here:", ""]
     lines += vitis_table() + [""]
     lines += ["## `rgbz-fast hardware --method sg` on both masks (Kodak)", ""]
     for p in MASKS:
         rep = H.hardware_report("sg", p, width=4000, images=kodak or None)
-        lines += [H.format_report(rep), ""]
+        lines += [H.format_report(rep).replace("## ", "### ", 1), ""]
     lines += ["## The sweep: quality against cost (SG, default dataset)", ""]
     for p in MASKS:
         ts = time.perf_counter()

@@ -216,6 +216,19 @@ def test_a_register_that_cannot_hold_its_sum_is_refused_not_wrapped():
         rz.ReconstructParams(precision="fixed", fixed_point={"exp_size": 8})
 
 
+def test_for_bit_depth_fits_16_bit_frames(rng):
+    """The widened defaults hold every register of every method at 16 bits, and agree with
+    the reference there."""
+    cfg = FixedPointConfig.for_bit_depth(16)
+    assert FixedPointConfig.for_bit_depth(11) == FixedPointConfig() == \
+        FixedPointConfig.for_bit_depth(8)
+    assert cfg.weight_bits == FixedPointConfig().weight_bits + 5
+    for pattern in (rz.mask1(), rz.mask2()):
+        data = _frame("random", (16, 20), 16, rng)
+        for m in FIXED_METHODS:
+            _check(data, pattern, m, 16, cfg)
+
+
 def test_the_params_carry_the_configuration():
     p = rz.ReconstructParams(precision="fixed")
     assert p.fixed_point == FixedPointConfig() and p.exp_mode == "pwl"

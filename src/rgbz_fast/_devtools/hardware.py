@@ -215,13 +215,16 @@ def pareto_front(rows):
     """Labels of the rows no other row beats in both cost (table + datapath bits) and the share
     of Z sites within 1 LSB."""
     ok = [r for r in rows if "bits" in r]
-    front = []
+    front, seen = [], set()
     for r in ok:
         c, q = r["bits"]["tables"] + r["bits"]["datapath"], r["within_1lsb_pct"]
+        if (c, q) in seen:               # the same point again (a field this method ignores)
+            continue
         if not any((o["bits"]["tables"] + o["bits"]["datapath"] <= c and o["within_1lsb_pct"] >= q)
                    and (o["bits"]["tables"] + o["bits"]["datapath"] < c
                         or o["within_1lsb_pct"] > q) for o in ok):
             front.append(r["label"])
+            seen.add((c, q))
     return front
 
 

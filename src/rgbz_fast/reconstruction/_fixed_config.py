@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, fields, replace
 
-from .._validate import check_choice, check_int
+from .._validate import check_bit_depth, check_choice, check_int
 
 __all__ = ["FixedPointConfig", "TABLE_MODES"]
 
@@ -35,8 +35,9 @@ class FixedPointConfig:
     the model within 1 LSB of float64 at >= 99.9 % of the Z sites and within
     0.05 dB of its CFA PSNR, for every method on Mask1 and Mask2 with 11-bit
     frames (tools/hardware_default.py; docs/reports/hardware.md gives the
-    search and the numbers). Wider frames want one more ``recip_bits`` and
-    ``weight_bits`` per bit beyond 11.
+    search and the numbers). Wider frames keep the relative error, so their
+    error in LSB grows with the range: :meth:`for_bit_depth` widens the
+    defaults for them.
 
     Every field is checked when the object is made; whether the widths fit a
     given plan and bit depth (no register wider than ``register_bits``) is
@@ -132,6 +133,25 @@ class FixedPointConfig:
     def recip_index_bits(self):
         """log2 of ``recip_table_size``: the mantissa bits after the leading one that index it."""
         return self.recip_table_size.bit_length() - 1
+
+    @classmethod
+    def for_bit_depth(cls, bit_depth, **changes):
+        """The defaults widened for ``bit_depth``-bit frames: beyond 11 bits, every width one bit
+        more per bit and each table twice the entries per three bits begun (a piecewise-linear
+        table's error falls with the square of its size); the defaults up to 11 bits.
+
+        >>> c = FixedPointConfig.for_bit_depth(16)
+        >>> c.recip_bits, c.weight_bits, c.recip_table_size
+        (18, 21, 128)
+        """
+        extra = max(check_bit_depth(bit_depth) - 11, 0)
+        base = cls()
+        widths = ("exp_bits", "recip_bits", "ratio_bits", "alpha_bits", "weight_bits")
+        tab = 1 << ((extra + 2) // 3)
+        wide = {f: getattr(base, f) + extra for f in widths}
+        wide.update(exp_table_size=base.exp_table_size * tab,
+                    recip_table_size=base.recip_table_size * tab)
+        return cls(**{**wide, **changes})
 
     def replace(self, **changes):
         """A copy with some fields changed (and checked)."""
