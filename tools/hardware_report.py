@@ -26,7 +26,9 @@ import numpy as np
 
 from rgbz_fast import FixedPointConfig, __version__
 from rgbz_fast._devtools import hardware as H
+from rgbz_fast._devtools.plots import hardware_sweep_plot
 from rgbz_fast.hardware import hardware_cost
+from rgbz_fast.io import atomic_write
 
 REPO = Path(__file__).resolve().parents[1]
 METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
@@ -222,18 +224,15 @@ def main(argv=None):
         rows = H.run_sweep("sg", p)
         secs = time.perf_counter() - ts
         fig = figs / f"hardware_sweep_sg_{p}.png"
-        tmp = fig.with_name(fig.stem + ".tmp.png")
-        H.plot_sweep(rows, tmp, f"SG on {p}: fixed vs float64, default dataset")
-        tmp.replace(fig)
+        atomic_write(fig, hardware_sweep_plot(rows, f"SG on {p}: fixed vs float64, "
+                                                    "default dataset"))
         lines += [f"### {p}: `rgbz-fast hardware --method sg --pattern {p} --sweep` "
                   f"({len(rows)} configurations, {secs:.0f} s)", "",
                   f"![sweep](figures/{fig.name})", "", H.format_sweep(rows), ""]
     lines += [f"Whole page: {time.perf_counter() - t0:.0f} s; load average "
               f"{os.getloadavg()[0]:.2f} after the run."]
     page = args.out / "hardware.md"
-    tmp = page.with_suffix(".tmp")
-    tmp.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    tmp.replace(page)
+    atomic_write(page, "\n".join(lines) + "\n")
     print(page)
     return 0
 

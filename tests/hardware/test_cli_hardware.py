@@ -54,7 +54,8 @@ def test_sweep_writes_its_table_and_plot(dataset, tmp_path, capsys):
 @pytest.mark.parametrize("argv, message", [
     (["--fixed-point", "exp_table_size=0"], "--fixed-point: exp_table_size: expected a power "
                                             "of two"),
-    (["--fixed-point", "exp_size=8"], "--fixed-point: fixed_point: unknown field 'exp_size'"),
+    (["--fixed-point", "exp_size=8"],
+     "--fixed-point: fixed_point got an unexpected keyword argument 'exp_size'"),
     (["--pattern", "ZZZZ/ZZZZ"], "pattern"),
     (["--width", "20000"], "width: expected an integer >= 1 and <= 16384"),
 ])

@@ -212,7 +212,8 @@ def test_a_register_that_cannot_hold_its_sum_is_refused_not_wrapped():
                                          r"5/2\^4; raise sigma_bits to 8 or more"):
         rz.reconstruct(data, "sg", pattern="mask1", precision="fixed", sigma_rel=0.3,
                        fixed_point=FixedPointConfig(sigma_bits=4))
-    with pytest.raises(TypeError, match="fixed_point: unknown field 'exp_size'"):
+    with pytest.raises(TypeError,
+                       match="fixed_point got an unexpected keyword argument 'exp_size'"):
         rz.ReconstructParams(precision="fixed", fixed_point={"exp_size": 8})
 
 

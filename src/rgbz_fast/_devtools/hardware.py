@@ -31,7 +31,7 @@ from ..reconstruction import ReconstructParams, reconstruct
 
 __all__ = ["PROTOCOLS", "TARGET", "load_images", "prepare_cases", "measure_error",
            "meets_target", "hardware_report", "sweep_configs", "run_sweep", "pareto_front",
-           "plot_sweep", "format_report", "format_sweep"]
+           "format_report", "format_sweep"]
 
 #: the two protocols of the error: evaluate's default and the 8-bit sRGB values at 11 bits
 PROTOCOLS = {"linear": EvalConfig(), "srgb": EvalConfig(linearise=False)}
@@ -41,9 +41,11 @@ TARGET = {"dpsnr_db": 0.05, "within_1lsb_pct": 99.9}
 HIST_BINS = ("<=-4", "-3", "-2", "-1", "0", "1", "2", "3", ">=4")
 
 
-def load_images(dataset=None, limit=None):
-    """[(name, RGB array)] of a folder of images, or the scikit-image samples (None)."""
-    sources = sample_dataset() if dataset is None else folder_dataset(dataset, limit)
+def load_images(dataset=None, limit=None, *, max_pixels=None, max_bytes=None):
+    """[(name, RGB array)] of a folder of images, or the scikit-image samples (None);
+    ``max_pixels``, ``max_bytes``: the read limits of every file."""
+    sources = sample_dataset() if dataset is None else folder_dataset(
+        dataset, limit, max_pixels=max_pixels, max_bytes=max_bytes)
     if dataset is None and limit:
         sources = sources[:limit]
     return [(s.name, s.load()) for s in sources]
@@ -226,34 +228,6 @@ def pareto_front(rows):
             front.append(r["label"])
             seen.add((c, q))
     return front
-
-
-def plot_sweep(rows, path, title=""):
-    """Quality (share of Z sites within 1 LSB of float64) against table + datapath bits (PNG)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    ok = [r for r in rows if "bits" in r]
-    fig, ax = plt.subplots(figsize=(7.5, 4.8))
-    for r in ok:
-        x = (r["bits"]["tables"] + r["bits"]["datapath"]) / 1000.0
-        y = 100.0 - r["within_1lsb_pct"]
-        colour = "tab:green" if r["meets_target"] else "tab:red"
-        ax.scatter(x, max(y, 1e-4), c=colour, s=36 if r["pareto"] else 14,
-                   edgecolors="k" if r["pareto"] else "none", zorder=3)
-        if r["pareto"] or r["label"] == "default":
-            ax.annotate(r["label"], (x, max(y, 1e-4)), fontsize=7, xytext=(3, 3),
-                        textcoords="offset points")
-    ax.axhline(100.0 - TARGET["within_1lsb_pct"], color="grey", ls="--", lw=0.8)
-    ax.set_yscale("log")
-    ax.set_xlabel("table + datapath bits (thousands; line buffers excluded: fixed)")
-    ax.set_ylabel("% of Z sites more than 1 LSB from float64")
-    ax.set_title(title, fontsize=9)
-    ax.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
 
 
 # -- text -------------------------------------------------------------------------------------

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, fields, replace
 
-from .._validate import check_bit_depth, check_choice, check_int
+from .._validate import check_bit_depth, check_choice, check_int, merge_params
 
 __all__ = ["FixedPointConfig", "TABLE_MODES"]
 
@@ -168,15 +168,4 @@ class FixedPointConfig:
     @classmethod
     def build(cls, value, name="fixed_point"):
         """``value`` as a FixedPointConfig: one, a mapping of its fields, or None (the default)."""
-        if value is None:
-            return cls()
-        if isinstance(value, cls):
-            return value
-        if isinstance(value, dict):
-            unknown = sorted(k for k in value if k not in cls.field_names())
-            if unknown:
-                raise TypeError(f"{name}: unknown field {unknown[0]!r} (FixedPointConfig "
-                                f"fields: {', '.join(cls.field_names())})")
-            return cls(**value)
-        raise TypeError(f"{name}: expected a FixedPointConfig, a dict of its fields or None, "
-                        f"got {type(value).__name__}")
+        return merge_params(cls, value, name=name)
