@@ -237,3 +237,16 @@ def test_the_params_carry_the_configuration():
     assert q.fixed_point.exp == "table" and q.exp_mode == "table"
     assert rz.ReconstructParams().fixed_point is None
     assert "fixed" in rz.PRECISIONS
+    # exp="table" names the fixed model's exponential: the same call as exp="auto" there
+    t = rz.ReconstructParams(precision="fixed", exp="table")
+    assert t.exp_mode == "pwl" and t.fixed_point == p.fixed_point
+
+
+def test_exp_table_runs_the_same_model_and_is_refused_for_the_floats(rng):
+    data = _frame("random", (12, 16), 11, rng)
+    a = rz.reconstruct(data, "sg", pattern="mask1", precision="fixed")
+    b = rz.reconstruct(data, "sg", pattern="mask1", precision="fixed", exp="table")
+    assert np.array_equal(a, b)
+    with pytest.raises(ValueError, match="exp: 'table' is the fixed-point model's exponential "
+                                         r"\(precision='fixed'\); precision='float32' takes"):
+        rz.reconstruct(data, "sg", pattern="mask1", exp="table")

@@ -13,7 +13,7 @@ __all__ = ["ReconstructParams", "PRECISIONS", "EXP_CHOICES", "SG_MODES", "DOMAIN
 #: arithmetic of the kernels: the float core's two, and the fixed-point streaming model
 PRECISIONS = ("float32", "float64", "fixed")
 #: the exponential of eq. 7 ("auto": the polynomial in float32, libm in float64)
-EXP_CHOICES = ("auto", "libm", "fast")
+EXP_CHOICES = ("auto", "libm", "fast", "table")
 SG_MODES = ("auto", "pure", "combined")
 DOMAINS = ("intensity", "colour_difference")
 
@@ -56,12 +56,13 @@ class ReconstructParams:
         weights alone), ``"combined"`` multiplies them by the EDILine weights;
         ``"auto"`` uses pure where every candidate lies on a diagonal (Mask1)
         and combined elsewhere (Mask2).
-    exp : {"auto", "libm", "fast"}
+    exp : {"auto", "libm", "fast", "table"}
         Exponential of eq. 7: the C library's, or a range-reduced polynomial
         (relative error below 3e-7 in float32, 1e-8 in float64; results below
-        the normal range flush to 0) that is faster and vectorises. With
-        ``precision="fixed"`` only ``"auto"``: the exponential is the
-        table of ``fixed_point.exp``. ``"auto"``
+        the normal range flush to 0) that is faster and vectorises, or
+        ``"table"``, a lookup table (``precision="fixed"`` only, where it is
+        what ``"auto"`` means; ``fixed_point.exp`` says whether the table is
+        read at its nearest entry or interpolated). ``"auto"``
         is ``"fast"`` in float32 -- its error is of the order of float32's own
         rounding, and it changes the mean CFA PSNR on Kodak by less than
         1e-5 dB (docs/reports/tradeoff.md) -- and ``"libm"`` in float64, so
@@ -132,6 +133,10 @@ class ReconstructParams:
             put(self, "fixed_point", FixedPointConfig.build(self.fixed_point))
         if self.precision == "fixed":
             _check_fixed(self)
+        elif self.exp == "table":
+            raise ValueError(f"exp: 'table' is the fixed-point model's exponential "
+                             f"(precision='fixed'); precision={self.precision!r} takes "
+                             f"'auto', 'libm' or 'fast'")
 
     @classmethod
     def paper(cls, **changes):
@@ -148,7 +153,9 @@ class ReconstructParams:
 
     @property
     def exp_mode(self):
-        """The exponential a call runs: ``"auto"`` resolved by the precision."""
+        """The exponential a call runs: ``"auto"`` resolved by the precision; with
+        ``precision="fixed"`` the table mode of ``fixed_point`` (``"table"``: its nearest
+        entry, ``"pwl"``: interpolated)."""
         if self.precision == "fixed":
             return self.fixed_point.exp
         if self.exp == "auto":
@@ -181,9 +188,9 @@ class ReconstructParams:
 
 def _check_fixed(p):
     """The options the fixed-point model has no rule for, refused by name."""
-    if p.exp != "auto":
+    if p.exp not in ("auto", "table"):
         raise ValueError(f"exp: precision='fixed' reads eq. 7's exponential from a table "
-                         f"(fixed_point.exp); expected exp='auto', got {p.exp!r}")
+                         f"(fixed_point.exp); expected exp='table' or 'auto', got {p.exp!r}")
     if p.domain != "intensity":
         raise ValueError(f"domain: precision='fixed' runs the intensity domain only; got "
                          f"{p.domain!r}")
