@@ -172,8 +172,8 @@ def main(argv=None):
                   f"least {m['within_1lsb_pct']} % of the Z sites within 1 LSB of float64, the "
                   f"mean CFA PSNR within {m['dpsnr_db']} dB and every image within "
                   f"{m['image_dpsnr_db']} dB; the cost is the table and datapath bits summed "
-                  f"over those methods and both masks (4000 pixels, 11 bits). The four "
-                  f"descents ended at:", "",
+                  f"over those methods and both masks (4000 pixels, 11 bits). The "
+                  f"{len(search['results'])} descents ended at:", "",
                   "| exp | recip | cost (bits) | configuration |", "|---|---|---|---|"]
         for r in search["results"]:
             c = r["config"]
@@ -205,14 +205,16 @@ def main(argv=None):
         lines += bit_depth_table(kodak[:8]) + [""]
     lines += ["## Cost of every method (4000 pixels, 11 bits, the default configuration)", ""]
     lines += cost_table() + [""]
+    big = FixedPointConfig.for_bit_depth(16)
+    entries = max(big.exp_table_size, big.recip_table_size) + 1
     lines += ["## Beside AMD Vitis `xf::cv::rgbir2bayer`", "",
               "AMD documents 37 BRAM_18K, 0 DSP, 4345 FF and 6243 LUT at 300 MHz, one pixel "
               "per clock, for a 4K 4x4 RGB-IR remosaic (5x5 colour and 3x3 IR filters) whose "
               "weights are fixed (shifts and adds: no multiplier). Our design at 3840 pixels "
-              "per row (16-bit frames: `FixedPointConfig.for_bit_depth(16)`); a table this "
-              "small (33 entries or fewer) maps to LUTs rather than block RAM, so the BRAM "
-              "column is an upper bound; FF and LUT counts need a synthesis run, not given "
-              "here:", ""]
+              "per row (16-bit frames: `FixedPointConfig.for_bit_depth(16)`); tables this "
+              f"small ({entries} entries or fewer) fit distributed RAM (LUTs) as well as block "
+              "RAM, so the BRAM column is an upper bound; FF and LUT counts need a synthesis "
+              "run, not given here:", ""]
     lines += vitis_table() + [""]
     lines += ["## `rgbz-fast hardware --method sg` on both masks (Kodak)", ""]
     for p in MASKS:
