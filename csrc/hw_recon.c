@@ -285,12 +285,18 @@ static int hw_check(const rgbz_plan *plans, int n_plans, const rgbz_hw_plan *hw,
     return RGBZ_OK;
 }
 
-int rgbz_hw_reconstruct(int in_type, const void *src, void *dst, ptrdiff_t rows,
-                        ptrdiff_t cols, int py, int px, const int32_t *plan_map,
-                        const rgbz_plan *plans, const rgbz_hw_plan *hw, int n_plans,
-                        const rgbz_hw_config *cfg, const int32_t *exp_table,
-                        const int32_t *recip_table, rgbz_hw_state *st)
+int rgbz_reconstruct_fixed(int in_type, const void *src, void *dst, ptrdiff_t rows,
+                           ptrdiff_t cols, int py, int px, const int32_t *plan_map,
+                           const rgbz_plan *plans, int n_plans, const rgbz_params *params,
+                           uint64_t *opcounts)
 {
+    (void)opcounts;
+    if (!params || !params->fixed || params->clip_on || params->mask1_fast) return RGBZ_EINVAL;
+    const rgbz_hw_plan *hw = params->fixed->hw;
+    const rgbz_hw_config *cfg = params->fixed->cfg;
+    const int32_t *exp_table = params->fixed->exp_table;
+    const int32_t *recip_table = params->fixed->recip_table;
+    rgbz_hw_state *st = params->fixed->state;
     if (!src || !dst || !plan_map || !plans || !hw || !cfg || !exp_table || !recip_table ||
         !st || n_plans < 1)
         return RGBZ_EINVAL;

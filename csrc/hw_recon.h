@@ -92,19 +92,27 @@ typedef struct {
    so that Python can check its dtypes and allocate the state */
 int rgbz_hw_layout(int64_t *out, int n);
 
+/* What precision FIXED reads of rgbz_params (its member fixed): hw, one rgbz_hw_plan per
+   plan; cfg; exp_table (2^exp_index_bits entries, + 1 with exp_pwl) and recip_table
+   (likewise): the tables' contents; state: the line buffers and the window. */
+typedef struct rgbz_fixed_args {
+    const rgbz_hw_plan *hw;
+    const rgbz_hw_config *cfg;
+    const int32_t *exp_table;
+    const int32_t *recip_table;
+    rgbz_hw_state *state;
+} rgbz_fixed_args;
+
 /*
- * The fixed-point streaming reconstruction of a frame of in_type RGBZ_T_U8 or RGBZ_T_U16
- * (rows x cols, C-contiguous; dst of the same type, fully written: colour sites copied,
- * Z sites reconstructed, clipped to [0, 2^bit_depth - 1]). plan_map, plans as for
- * rgbz_reconstruct (methods bilinear, bi, edi_central, edi_line, sg; intensity domain);
- * hw: one rgbz_hw_plan per plan; exp_table (2^exp_index_bits entries, + 1 with exp_pwl)
- * and recip_table (likewise): the tables' contents; state: scratch of the model.
- * Returns RGBZ_EINVAL for arguments the Python layer should have refused.
+ * rgbz_reconstruct_fixed (rgbz.h, the entry point of precision FIXED, of the type every
+ * precision shares): the fixed-point streaming reconstruction of a frame of in_type
+ * RGBZ_T_U8 or RGBZ_T_U16 (rows x cols, C-contiguous; dst of the same type, fully written:
+ * colour sites copied, Z sites reconstructed, clipped to [0, 2^bit_depth - 1]). phase_map,
+ * plans as for every precision (methods bilinear, bi, edi_central, edi_line, sg; intensity
+ * domain; no clip level, no Mask1 constant plans); params->fixed as above (the other fields
+ * of params are not read: the configuration holds what they say, as integers); opcounts
+ * is not read. One thread: the model streams the frame as the chip does. Returns
+ * RGBZ_EINVAL for arguments the Python layer should have refused.
  */
-int rgbz_hw_reconstruct(int in_type, const void *src, void *dst, ptrdiff_t rows,
-                        ptrdiff_t cols, int py, int px, const int32_t *plan_map,
-                        const rgbz_plan *plans, const rgbz_hw_plan *hw, int n_plans,
-                        const rgbz_hw_config *cfg, const int32_t *exp_table,
-                        const int32_t *recip_table, rgbz_hw_state *state);
 
 #endif /* HW_RECON_H */

@@ -116,9 +116,10 @@ def tof_bilateral(z_re: np.ndarray, z_im: np.ndarray, var: np.ndarray, g_re: np.
                   out_re: np.ndarray, out_im: np.ndarray, out_var: np.ndarray,
                   out_neff: np.ndarray, workers: int) -> None: ...
 def hw_layout() -> tuple[int, ...]: ...
-def hw_reconstruct(src: np.ndarray, dst: np.ndarray, py: int, px: int, plan_map: np.ndarray,
-                   plans: np.ndarray, hw: np.ndarray, n_plans: int, cfg: np.ndarray,
-                   exp_table: np.ndarray, recip_table: np.ndarray, state: np.ndarray) -> None: ...
+def reconstruct_fixed(src: np.ndarray, dst: np.ndarray, py: int, px: int,
+                      plan_map: np.ndarray, plans: np.ndarray, n_plans: int, hw: np.ndarray,
+                      cfg: np.ndarray, exp_table: np.ndarray, recip_table: np.ndarray,
+                      state: np.ndarray) -> None: ...
 
 # ToF phase of phasors (csrc/tof.h)
 def tof_phase_iq(i: np.ndarray, q: np.ndarray, phase: np.ndarray, amp: np.ndarray,

@@ -250,3 +250,32 @@ def test_exp_table_runs_the_same_model_and_is_refused_for_the_floats(rng):
     with pytest.raises(ValueError, match="exp: 'table' is the fixed-point model's exponential "
                                          r"\(precision='fixed'\); precision='float32' takes"):
         rz.reconstruct(data, "sg", pattern="mask1", exp="table")
+
+
+def test_the_c_dispatch_takes_the_fixed_precision():
+    """precision 'fixed' is the third entry of the C precisions (RGBZ_PRECISIONS): its entry
+    point runs through the bridge's one switch, with its tables and line buffers in
+    rgbz_params; the shared reconstruct bridge, the learned kernel and the counting module
+    have none and refuse it naming the precision."""
+    from rgbz_fast import _kernels, _kernels_count
+    from rgbz_fast.reconstruction._plans import build_plans
+
+    code = _kernels.PRECISIONS["fixed"]
+    assert code == int(_kernels.rgbz_precision.RGBZ_P_FIXED) == 2
+    assert _kernels_count.PRECISIONS == _kernels.PRECISIONS
+    assert hasattr(_kernels, "reconstruct_fixed") and \
+        not hasattr(_kernels_count, "reconstruct_fixed")
+    d = np.zeros((8, 8), np.uint16)
+    phase_map, plans = build_plans(rz.mask1(), "bi")
+    for k in (_kernels, _kernels_count):
+        counts = {"opcounts": np.zeros(k.NOPS, np.uint64)} if k.counting_build() else {}
+        with pytest.raises(ValueError, match="precision"):
+            k.reconstruct(d, np.empty_like(d), code, 2, 2, phase_map,
+                          plans.view(np.uint8).reshape(-1), 1, 1e-3, 0.0, 0.5, 2047.0, 0, 1,
+                          **counts)
+        i32, f64 = np.zeros((1, 1), np.int32), np.zeros((1, 1), np.float64)
+        with pytest.raises(ValueError, match="precision"):
+            k.learned(d, np.empty_like(d), code, 2, 2, phase_map, np.ones(1, np.int32), i32,
+                      i32, np.ones((1, 4), np.int32), np.zeros((1, 4, 1), np.int32),
+                      np.zeros((1, 4, 1), np.int32), f64, f64, np.zeros((1, 1, 8), np.float32),
+                      np.zeros((1, 1, 8)), 0, 0, 2047.0, 1, **counts)

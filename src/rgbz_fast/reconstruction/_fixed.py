@@ -347,5 +347,5 @@ def run_fixed(src, out, pattern, method, params, bit_depth):
         params.sigma_rel)
     P, Q = pattern.period
     state = np.empty(_LAYOUT[2], np.uint8)
-    _kernels.hw_reconstruct(src, out, P, Q, plan_map, plans, hw, n, cfg, et, rt, state)
+    _kernels.reconstruct_fixed(src, out, P, Q, plan_map, plans, n, hw, cfg, et, rt, state)
     return out
