@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from . import _common as c
 
 NAME = "train"
@@ -48,10 +50,15 @@ def run(args):
     from ..io import folder_dataset
 
     c.output_file(args.out)
-    if not args.dataset.is_dir():
+    if not (c._exists(args.dataset, "--dataset") and args.dataset.is_dir()):
         raise c.CliError(f"--dataset: {args.dataset} is not a folder")
+    from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
+
+    dataset = folder_dataset(args.dataset, args.limit, **c.limits(args))
+    c.check_outputs([("the filters", args.out)], [Path(s.location) for s in dataset],
+                    [(args.dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)])
     filters = train_filters(
-        folder_dataset(args.dataset, args.limit, **c.limits(args)), args.pattern,
+        dataset, args.pattern,
         bit_depth=args.bit_depth, noise=args.noise, linearise=args.linearise,
         name=args.name or args.dataset.resolve().name, progress=not args.quiet,
         radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from .._patterns import get_pattern
 from .._progress import ticking
+from .._validate import check_flag
 from ..reconstruction import train
 from ._config import EvalConfig
 from ._run import dataset_sources, image_frames
@@ -70,6 +71,7 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     ('astronaut', 'linear', 8)
     """
     pattern = get_pattern(pattern)
+    progress = check_flag(progress, "progress")
     config = EvalConfig(patterns=(pattern.tile_string,), bit_depth=bit_depth, noise=noise,
                         linearise=linearise, seed=seed, metrics=("cfa_psnr",))
     if isinstance(dataset, (str, os.PathLike)):
