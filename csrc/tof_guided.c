@@ -891,6 +891,37 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
     return (float)den;
 }
 
+/* The spatial weights of the fill by offset (di, dj) in [-reach, reach]^2, into sw, when
+   the grid lines are evenly spaced at multiples of half a pixel: every difference of
+   centres is then exact, so the table holds bit for bit what tofg_fill_node would compute
+   for each pair. Returns 0 (sw unused) for any other grid. */
+static int tofg_fill_table(const tofg_up_args *p, ptrdiff_t reach, float *sw)
+{
+    const double *ax[2] = {p->rc, p->cc};
+    const ptrdiff_t n[2] = {p->R, p->C};
+    for (int a = 0; a < 2; a++) {
+        if (n[a] <= reach) return 0;
+        const double step = n[a] > 1 ? ax[a][1] - ax[a][0] : 0.0;
+        for (ptrdiff_t k = 0; k < n[a]; k++) {
+            const double v = ax[a][k];
+            if (!(fabs(v) < 1e9) || 2.0 * v != floor(2.0 * v)) return 0;
+            if (k > 0 && v - ax[a][k - 1] != step) return 0;
+        }
+    }
+    const ptrdiff_t side = 2 * reach + 1;
+    for (ptrdiff_t di = -reach; di <= reach; di++) {
+        const double ddy = di >= 0 ? p->rc[di] - p->rc[0] : p->rc[0] - p->rc[-di];
+        const float dy = (float)(ddy / p->spacing);
+        for (ptrdiff_t dj = -reach; dj <= reach; dj++) {
+            const double ddx = dj >= 0 ? p->cc[dj] - p->cc[0] : p->cc[0] - p->cc[-dj];
+            const float dx = (float)(ddx / p->spacing);
+            sw[(di + reach) * side + (dj + reach)] = tofg_exp_neg((dy * dy + dx * dx)
+                                                                  * p->inv2s2);
+        }
+    }
+    return 1;
+}
+
 /* A node without a usable measurement takes the mode over the usable ones within 1, else 2,
    else 4 (at most `reach`) grid lines (Gaussian spatial weights, its own colour); its prior
    becomes a quarter of their normalised weight (0: none there). When the node has a
@@ -899,7 +930,7 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
    TOFG_VETO: the pixels around it cannot take a neighbour's surface unchallenged. */
 static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const double *own,
                            double own_k, ptrdiff_t r, ptrdiff_t c, ptrdiff_t reach,
-                           double *depth, double *sigma, float *prior)
+                           const float *sw, double *depth, double *sigma, float *prior)
 {
     const ptrdiff_t N = p->R * p->C, m = r * p->C + c;
     depth[m] = p->depth[m];
@@ -923,9 +954,13 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
         for (ptrdiff_t i = i0; i <= i1; i++) {
             const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
             for (ptrdiff_t j = j0; j <= j1; j++) {
-                const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
                 mm[n] = i * p->C + j;
-                ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                if (sw) {
+                    ww[n] = sw[(i - r + reach) * (2 * reach + 1) + (j - c + reach)];
+                } else {
+                    const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
+                    ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                }
                 all += ww[n++];
             }
         }
