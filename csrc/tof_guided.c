@@ -230,7 +230,8 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
 /* The same mean for 16 output columns at once, the frequency count a compile-time constant:
    the sums stay in registers over the taps (shift[t]: the offset of tap t in the planes;
    every neighbour is on the grid and within the radius), the order of every sum the
-   generic row's (offsets in increasing order, frequencies in order). */
+   generic row's (offsets in increasing order, frequencies in order). ew: the weight of tap t
+   for the output m0 + j at ew[t][j] (tofg_pairs), or NULL: computed here. */
 #define TOFG_BW 16
 #define TOFG_UNROLL _Pragma("GCC unroll 4")
 RGBZ_INLINE void tofg_block(
