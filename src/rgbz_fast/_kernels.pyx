@@ -16,7 +16,7 @@ tables of the Python layer (:data:`METHODS`, :data:`PRECISIONS`,
 them, so no code is typed twice.
 """
 
-from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint64_t
+from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint32_t, uint64_t
 
 cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_status:
@@ -595,4 +595,276 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     radius_px, inv_h2,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- sensor simulation (sim.c)
+cdef extern from "sim.h" nogil:
+    ctypedef struct rgbz_sim_noise:
+        int32_t noise, shot, quantise
+        double prnu, dsnu, read_noise, full_well, black, gain, top, dark
+        uint32_t key_temporal[4]
+        uint32_t key_fpn[4]
+    ctypedef struct rgbz_sim_tof_light:
+        double k, power, th, tv, ambient, duty, c25, suppression, unambiguous
+        double speed_of_light, two_pi
+        int32_t nfreq
+        double four_pi_f[16]
+        double shift_re[4]
+        double shift_im[4]
+    void rgbz_sim_key(const uint64_t *words, Py_ssize_t nwords, uint64_t stream, uint32_t *key)
+    int rgbz_sim_blocks(uint32_t c0, uint32_t c1, uint32_t c2, uint32_t c3, const uint32_t *key,
+                        Py_ssize_t n, uint32_t *out)
+    int rgbz_sim_variates(int kind, const double *lam, uint32_t c1, uint32_t c2,
+                          const uint32_t *key, Py_ssize_t n, double *out, int workers)
+    int rgbz_sim_math(int which, const double *x, Py_ssize_t n, double *out)
+    int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, Py_ssize_t rows, Py_ssize_t cols,
+                         int block, int64_t *site_r, int64_t *site_c, Py_ssize_t *count)
+    int rgbz_sim_rate_hist(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           Py_ssize_t row_stride, Py_ssize_t col_stride,
+                           const Py_ssize_t *chan_off, const int32_t *tile, int P, int Q,
+                           const double *per_unit, uint64_t *hist, int workers)
+    int rgbz_sim_rate_gather(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                             Py_ssize_t row_stride, Py_ssize_t col_stride,
+                             const Py_ssize_t *chan_off, const int32_t *tile, int P, int Q,
+                             const double *per_unit, uint32_t lo16, uint32_t hi16, double *out,
+                             Py_ssize_t cap, Py_ssize_t *count, int workers)
+    int rgbz_sim_colour(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                        Py_ssize_t row_stride, Py_ssize_t col_stride, const Py_ssize_t *chan_off,
+                        const int32_t *tile, const uint8_t *tile_z, int P, int Q,
+                        const double *per_unit, double exposure, const rgbz_sim_noise *nz,
+                        void *ref, void *data, int64_t *saturated, int workers)
+    int rgbz_sim_tof(const double *depth, const uint8_t *depth_valid, Py_ssize_t rows,
+                     Py_ssize_t cols, int ir_type, const void *ir, Py_ssize_t ir_rs,
+                     Py_ssize_t ir_cs, int ir_estimate, const int64_t *site_r,
+                     const int64_t *site_c, Py_ssize_t n, int block,
+                     const rgbz_sim_tof_light *light, const rgbz_sim_noise *nz, void *taps,
+                     double *depth_true, uint8_t *valid, uint8_t *beyond, uint8_t *sat,
+                     double *max_depth, int workers)
+    int rgbz_sim_tof_expose(const double *mean, const double *suppress, const int64_t *site_r,
+                            const int64_t *site_c, Py_ssize_t n, int nfreq,
+                            const rgbz_sim_noise *nz, void *taps, uint8_t *sat, int workers)
+
+ctypedef fused dn_t:
+    uint16_t
+    double
+
+
+cdef rgbz_sim_noise _sim_noise(dict p, const uint32_t[::1] keys) except *:
+    """The C noise chain of a dict of its fields (rgbz_fast.simulation._noise.noise_fields)."""
+    cdef rgbz_sim_noise nz
+    nz.noise, nz.shot, nz.quantise = p["noise"], p["shot"], p["quantise"]
+    nz.prnu, nz.dsnu, nz.read_noise = p["prnu"], p["dsnu"], p["read_noise"]
+    nz.full_well, nz.black, nz.gain = p["full_well"], p["black"], p["gain"]
+    nz.top, nz.dark = p["top"], p["dark"]
+    cdef int i
+    if keys.shape[0] != 8:
+        raise ValueError("keys: expected the 8 words of the temporal and fixed-pattern keys")
+    for i in range(4):
+        nz.key_temporal[i] = keys[i]
+        nz.key_fpn[i] = keys[4 + i]
+    return nz
+
+
+def sim_key(const uint64_t[::1] words, uint64_t stream):
+    """The four 32-bit words of the key of a seed's 64-bit words and a stream."""
+    cdef uint32_t key[4]
+    rgbz_sim_key(&words[0], words.shape[0], stream, key)
+    return int(key[0]), int(key[1]), int(key[2]), int(key[3])
+
+
+def sim_blocks(uint32_t c0, uint32_t c1, uint32_t c2, uint32_t c3, const uint32_t[::1] key,
+               uint32_t[:, ::1] out):
+    """Threefry4x32-20 blocks at counters (c0 + i, c1, c2, c3) and key (4 words) into
+    out (n, 4)."""
+    cdef int status
+    if key.shape[0] != 4:
+        raise ValueError("key: expected 4 words")
+    if out.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_sim_blocks(c0, c1, c2, c3, &key[0], out.shape[0], &out[0, 0])
+    _raise_for(status)
+
+
+def sim_variates(int kind, const double[::1] lam, uint32_t c1, uint32_t c2,
+                 const uint32_t[::1] key, double[::1] out, int workers):
+    """Standard normals (kind 0) or Poisson variates of means lam (kind 1) into out."""
+    cdef int status
+    cdef const double *lp = &lam[0] if lam.shape[0] else NULL
+    if out.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_sim_variates(kind, lp, c1, c2, &key[0], out.shape[0], &out[0], workers)
+    _raise_for(status)
+
+
+def sim_math(int which, const double[::1] x, double[::1] out):
+    """The Box-Muller transform's log (0), sin (1) or cos (2) of 2 pi x."""
+    cdef int status
+    if x.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_sim_math(which, &x[0], x.shape[0], &out[0])
+    _raise_for(status)
+
+
+def sim_z_sites(const uint8_t[:, ::1] tile_z, Py_ssize_t rows, Py_ssize_t cols, int block):
+    """(rows, cols) int64 arrays of the Z measurements' top-left cells, row-major."""
+    import numpy as np
+    cdef int status
+    cdef Py_ssize_t n = 0
+    status = rgbz_sim_z_sites(&tile_z[0, 0], tile_z.shape[0], tile_z.shape[1], rows, cols,
+                              block, NULL, NULL, &n)
+    _raise_for(status)
+    r = np.empty(n, np.int64)
+    c = np.empty(n, np.int64)
+    cdef int64_t[::1] rv = r, cv = c
+    if n:
+        status = rgbz_sim_z_sites(&tile_z[0, 0], tile_z.shape[0], tile_z.shape[1], rows, cols,
+                                  block, &rv[0], &cv[0], &n)
+        _raise_for(status)
+    return r, c
+
+
+def sim_rate_hist(const rgb_t[::1] src, Py_ssize_t rows, Py_ssize_t cols, Py_ssize_t row_stride,
+                  Py_ssize_t col_stride, const Py_ssize_t[::1] chan_off,
+                  const int32_t[:, ::1] tile, const double[::1] per_unit, uint64_t[::1] hist,
+                  int workers):
+    """Histogram (65536 bins) of the top 16 bits of every site's signal rate."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    with nogil:
+        status = rgbz_sim_rate_hist(t, &src[0], rows, cols, row_stride, col_stride, &chan_off[0],
+                                    &tile[0, 0], tile.shape[0], tile.shape[1], &per_unit[0],
+                                    &hist[0], workers)
+    _raise_for(status)
+
+
+def sim_rate_gather(const rgb_t[::1] src, Py_ssize_t rows, Py_ssize_t cols,
+                    Py_ssize_t row_stride, Py_ssize_t col_stride,
+                    const Py_ssize_t[::1] chan_off, const int32_t[:, ::1] tile,
+                    const double[::1] per_unit, uint32_t lo16, uint32_t hi16, double[::1] out,
+                    int workers):
+    """The rates whose top 16 bits lie in [lo16, hi16] into out; returns how many there are."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef Py_ssize_t count = 0
+    cdef double dummy = 0
+    cdef double *op = &out[0] if out.shape[0] else &dummy
+    with nogil:
+        status = rgbz_sim_rate_gather(t, &src[0], rows, cols, row_stride, col_stride,
+                                      &chan_off[0], &tile[0, 0], tile.shape[0], tile.shape[1],
+                                      &per_unit[0], lo16, hi16, op, out.shape[0], &count,
+                                      workers)
+    _raise_for(status)
+    return int(count)
+
+
+def sim_colour(const rgb_t[::1] src, Py_ssize_t rows, Py_ssize_t cols, Py_ssize_t row_stride,
+               Py_ssize_t col_stride, const Py_ssize_t[::1] chan_off, const int32_t[:, ::1] tile,
+               const uint8_t[:, ::1] tile_z, const double[::1] per_unit, double exposure,
+               dict noise, const uint32_t[::1] keys, dn_t[:, ::1] ref, dn_t[:, ::1] data,
+               int workers):
+    """The colour pixels through the noise chain into ref (and data, 0 at the Z sites, if
+    not None); returns the number of saturated samples."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef rgbz_sim_noise nz = _sim_noise(noise, keys)
+    cdef int64_t nsat = 0
+    cdef void *dp = NULL
+    cdef const uint8_t *zp = NULL
+    cdef bint u16
+    if dn_t is uint16_t:
+        u16 = True
+    else:
+        u16 = False
+    if u16 != bool(nz.quantise):
+        raise ValueError("sim_colour: uint16 outputs go with quantise, float64 without")
+    if data is not None:
+        dp = &data[0, 0]
+        zp = &tile_z[0, 0]
+    with nogil:
+        status = rgbz_sim_colour(t, &src[0], rows, cols, row_stride, col_stride, &chan_off[0],
+                                 &tile[0, 0], zp, tile.shape[0], tile.shape[1], &per_unit[0],
+                                 exposure, &nz, &ref[0, 0], dp, &nsat, workers)
+    _raise_for(status)
+    return int(nsat)
+
+
+cdef rgbz_sim_tof_light _sim_light(const double[::1] vals, const double[::1] four_pi_f,
+                                   const double[::1] shift_re,
+                                   const double[::1] shift_im) except *:
+    cdef rgbz_sim_tof_light L
+    cdef int i
+    if four_pi_f.shape[0] > 16 or shift_re.shape[0] != 4 or shift_im.shape[0] != 4:
+        raise ValueError("sim_tof: at most 16 frequencies and 4 tap shifts")
+    L.k, L.power, L.th, L.tv, L.ambient = vals[0], vals[1], vals[2], vals[3], vals[4]
+    L.duty, L.c25, L.suppression, L.unambiguous = vals[5], vals[6], vals[7], vals[8]
+    L.speed_of_light, L.two_pi = vals[9], vals[10]
+    L.nfreq = four_pi_f.shape[0]
+    for i in range(L.nfreq):
+        L.four_pi_f[i] = four_pi_f[i]
+    for i in range(4):
+        L.shift_re[i] = shift_re[i]
+        L.shift_im[i] = shift_im[i]
+    return L
+
+
+def sim_tof(const double[:, ::1] depth, const uint8_t[:, ::1] depth_valid, const rgb_t[::1] ir,
+            Py_ssize_t ir_rs, Py_ssize_t ir_cs, int ir_estimate, const int64_t[::1] site_r,
+            const int64_t[::1] site_c, int block, const double[::1] light,
+            const double[::1] four_pi_f, const double[::1] shift_re, const double[::1] shift_im,
+            dict noise, const uint32_t[::1] keys, dn_t[:, :, ::1] taps, double[::1] depth_true,
+            uint8_t[::1] valid, uint8_t[::1] beyond, uint8_t[::1] sat, int workers):
+    """The taps (F, 4, n) of ideal Z pixels and their per-site flags; returns the largest
+    valid cell depth (-inf if none)."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef rgbz_sim_noise nz = _sim_noise(noise, keys)
+    cdef rgbz_sim_tof_light L = _sim_light(light, four_pi_f, shift_re, shift_im)
+    cdef double dmax = 0
+    cdef Py_ssize_t n = site_r.shape[0]
+    cdef bint u16
+    if dn_t is uint16_t:
+        u16 = True
+    else:
+        u16 = False
+    if u16 != bool(nz.quantise):
+        raise ValueError("sim_tof: uint16 taps go with quantise, float64 without")
+    if n == 0:
+        return float("-inf")
+    with nogil:
+        status = rgbz_sim_tof(&depth[0, 0], &depth_valid[0, 0], depth.shape[0], depth.shape[1],
+                              t, &ir[0], ir_rs, ir_cs, ir_estimate, &site_r[0], &site_c[0], n,
+                              block, &L, &nz, &taps[0, 0, 0], &depth_true[0], &valid[0],
+                              &beyond[0], &sat[0], &dmax, workers)
+    _raise_for(status)
+    return float(dmax)
+
+
+def sim_tof_expose(const double[:, :, ::1] mean, const double[::1] suppress,
+                   const int64_t[::1] site_r, const int64_t[::1] site_c, dict noise,
+                   const uint32_t[::1] keys, dn_t[:, :, ::1] taps, uint8_t[::1] sat,
+                   int workers):
+    """The noise chain of taps whose mean electrons (F, 4, n) are given (suppress: per site,
+    or None)."""
+    cdef int status
+    cdef rgbz_sim_noise nz = _sim_noise(noise, keys)
+    cdef const double *sp = NULL
+    cdef Py_ssize_t n = mean.shape[2]
+    cdef bint u16
+    if dn_t is uint16_t:
+        u16 = True
+    else:
+        u16 = False
+    if u16 != bool(nz.quantise):
+        raise ValueError("sim_tof_expose: uint16 taps go with quantise, float64 without")
+    if suppress is not None:
+        sp = &suppress[0] if suppress.shape[0] else NULL
+    if n == 0:
+        return
+    with nogil:
+        status = rgbz_sim_tof_expose(&mean[0, 0, 0], sp, &site_r[0], &site_c[0], n,
+                                     mean.shape[0], &nz, &taps[0, 0, 0], &sat[0], workers)
     _raise_for(status)

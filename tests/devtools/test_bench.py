@@ -123,6 +123,13 @@ def test_bench_colour_chain_section(capsys):
     assert 0 < sum(ch["stages_s"].values()) <= ch["total_s"] * 1.5 + 1e-3
     text = bench.format_chain(ch)
     assert "defect_correction" in text and "gamma" in text
+    sim = res["simulate"]
+    assert set(sim["patterns"]) == {"mask1", "mask2"} and sim["frame_shape"] == [48, 64]
+    for r in sim["patterns"].values():
+        assert all(r[k]["median_s"] > 0 for k in ("noise_free", "noisy"))
+    assert {t["met"] for t in sim["targets"].values()} == {None}      # not the target frame
+    text = bench.format_simulate(sim)
+    assert "noise-free" in text and "no verdict" in text
 
 
 def test_measure_memory_tiny_frame():

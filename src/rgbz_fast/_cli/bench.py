@@ -37,7 +37,10 @@ call), with 1 thread and with all threads. Beside it:
   with the check that both agree. The target is >= 5x NumPy with all threads.
 * --chain: the colour ISP (defects -> SG float32 reconstruction -> white
   balance -> C Malvar demosaic -> colour correction -> sRGB gamma -> 8-bit
-  output) on the Mask1 frame, seconds per stage (medians).
+  output) on the Mask1 frame, seconds per stage (medians); and the sensor
+  simulation of the image with a depth plane (rgbz_fast.simulate, 3 ToF
+  frequencies, no optics), noise-free and noisy, on Mask1 and Mask2 (targets on
+  the full frame, Mask1: <= 0.5 s noise-free, <= 1 s noisy).
 * Peak memory of one reconstruct call on the full frame, measured in a fresh
   subprocess: the growth of the peak resident set size across the call, and
   tracemalloc's peak of the Python-side (NumPy) allocations, against the input

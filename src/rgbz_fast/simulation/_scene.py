@@ -253,7 +253,7 @@ class Scene:
                 raise ValueError(f"image: an RGB scene needs 3 channels in the last axis, got "
                                  f"shape {img.shape}; pass wavelengths= for a spectral cube")
             if integer:
-                img = srgb_to_linear(_int_to_unit(img, "image"))
+                img = _int_srgb_to_linear(img, "image")
             wl = None
         else:
             wl = np.asarray(self.wavelengths, dtype=np.float64)
@@ -401,6 +401,17 @@ class Scene:
         extra += ", with IR reflectance" if self.ir_reflectance is not None else ""
         name = f"{self.name!r}, " if self.name else ""
         return f"Scene({name}{self.shape[0]}x{self.shape[1]} {kind}{extra})"
+
+
+def _int_srgb_to_linear(img, name):
+    """``srgb_to_linear(_int_to_unit(img))`` of sRGB-encoded integers; for 8 and 16-bit
+    unsigned images through a table of every code's value (the same values, computed once
+    per code instead of once per pixel)."""
+    if img.dtype not in (np.uint8, np.uint16):
+        return srgb_to_linear(_int_to_unit(img, name))
+    top = float(np.iinfo(img.dtype).max)
+    table = srgb_to_linear(np.arange(int(top) + 1, dtype=np.float64) / top)
+    return table[img]
 
 
 def _int_to_unit(img, name):
