@@ -40,8 +40,8 @@ from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_imag
 from ._defects import DefectCorrection, correct_defects
 from ._demosaic import demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, _black_white,
-                      _encode, _quantise, correct_colour, fill_missing, srgb_oetf,
-                      stage_params, white_balance)
+                      _encode, _quantise, correct_colour, fill_missing, grey_world_gains,
+                      srgb_oetf, stage_params, white_balance)
 
 __all__ = ["ColourISP", "STAGES"]
 
@@ -286,6 +286,36 @@ class ColourISP:
         black, white = _black_white(black_level, (1 << bd) - 1)
         out, stages = self._render(data, pattern, black, white, gains, workers, return_stages)
         return (out, stages) if return_stages else out
+
+    def white_balance_gains(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None):
+        """The white-balance gains (R, G, B) :meth:`render` applies to a complete Bayer CFA:
+        this chain's fixed gains, the grey-world estimate or unit gains (its
+        :class:`WhiteBalance`). Pass them to :meth:`render` (``gains=``) to render other
+        CFAs of the scene with the same white balance (the RGB-Z path of Fig. 19).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rgbz_fast import ColourISP
+        >>> cfa = np.tile(np.array([[800, 400], [300, 800]], np.uint16), (4, 4))
+        >>> ColourISP().white_balance_gains(cfa, "GRBG").tolist()
+        [2.0, 1.0, 2.6666666666666665]
+        """
+        data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        pattern = get_pattern(phase)
+        if pattern.has_z or pattern.bayer_phase is None:
+            raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
+                             f"{pattern.name!r} (reconstruct the Z sites first)")
+        bd = check_bit_depth(bit_depth)
+        if black_level is None:
+            black_level = self.black_level if self.black_level is not None else 0.0
+        black, white = _black_white(black_level, (1 << bd) - 1)
+        wb = self.white_balance
+        if wb.gains is not None:
+            return np.asarray(wb.gains, np.float64)
+        if wb.method == "grey_world":
+            return grey_world_gains(data, pattern, black_level=black, white_level=white)
+        return np.ones(3)
 
     def _render(self, full, bayer, black, white, gains, workers, keep_stages=True):
         """White balance .. output of a validated complete CFA; (image, stages).

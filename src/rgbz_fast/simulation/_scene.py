@@ -253,7 +253,7 @@ class Scene:
                 raise ValueError(f"image: an RGB scene needs 3 channels in the last axis, got "
                                  f"shape {img.shape}; pass wavelengths= for a spectral cube")
             if integer:
-                img = _int_srgb_to_linear(img, "image")
+                img = srgb_decode(img, "image")
             wl = None
         else:
             wl = np.asarray(self.wavelengths, dtype=np.float64)
@@ -403,10 +403,10 @@ class Scene:
         return f"Scene({name}{self.shape[0]}x{self.shape[1]} {kind}{extra})"
 
 
-def _int_srgb_to_linear(img, name):
-    """``srgb_to_linear(_int_to_unit(img))`` of sRGB-encoded integers; for 8 and 16-bit
-    unsigned images through a table of every code's value (the same values, computed once
-    per code instead of once per pixel)."""
+def srgb_decode(img, name="image"):
+    """Linear values of an sRGB-encoded integer image: ``srgb_to_linear(img / max)``, for 8-
+    and 16-bit unsigned images through a table of every code's value (the same values,
+    computed once per code instead of once per pixel)."""
     if img.dtype not in (np.uint8, np.uint16):
         return srgb_to_linear(_int_to_unit(img, name))
     top = float(np.iinfo(img.dtype).max)
