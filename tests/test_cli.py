@@ -512,6 +512,26 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
     assert not (tmp_path / "g.npz").exists()
 
 
+def test_depth_full_resolution_writes_a_depth_at_every_pixel(tmp_path, capsys):
+    """--full-resolution guides the ToF ISP with the frame's colour image and writes
+    upsample_depth's map (float32 TIFF) and its preview."""
+    import tifffile
+
+    scene = rz.simulation.Scene(np.full((32, 48, 3), 0.5),
+                                depth=np.where(np.arange(48) < 24, 1.0, 2.0)[None, :].repeat(32, 0))
+    frame = rz.simulate(scene, "mask2", seed=2)
+    path = tmp_path / "step.npz"
+    frameio.save_frame(path, frame)
+    assert main(["depth", str(path), "--out", str(tmp_path), "--full-resolution"]) == 0
+    assert "step_depth_full.tif, step_depth_full.png" in capsys.readouterr().out
+    full = tifffile.imread(tmp_path / "step_depth_full.tif")
+    frame = frameio.load_frame(path)                  # as the command reads it
+    guide = rz.ColourISP().run(frame)
+    want, _ = rz.tof.upsample_depth(rz.tof_depth(frame.tof, guide=guide), guide)
+    np.testing.assert_array_equal(full, want)
+    assert full.shape == (32, 48) and (tmp_path / "step_depth_full.png").stat().st_size > 0
+
+
 def test_depth_validity_options_reach_the_isp(tmp_path, capsys):
     """--flying-step off / --max-sigma off keep measurements the defaults flag; the depth TIFF
     equals tof_depth with the same settings."""

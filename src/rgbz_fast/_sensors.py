@@ -19,11 +19,14 @@ import numpy as np
 from ._sensor_checks import (check_pixel_noise, check_readout, check_spectrum,
                              check_tof_contrast, check_tof_nonideal, store_number)
 
-__all__ = ["ColourSensor", "ToFSensor", "SPEED_OF_LIGHT"]
+__all__ = ["ColourSensor", "ToFSensor", "SPEED_OF_LIGHT", "DEFAULT_CELL_PITCH_UM"]
 
 #: Speed of light in vacuum, m/s.
 SPEED_OF_LIGHT = 299_792_458.0
 _PLANCK = 6.62607015e-34
+#: Pitch (um) of one Z cell when neither the :class:`ToFSensor` nor the caller gives one: the
+#: default colour pixel's (:attr:`ColourSensor.pixel_pitch_um`), whose cells the Z pixels share.
+DEFAULT_CELL_PITCH_UM = 2.8
 
 
 class _Readout:
@@ -387,7 +390,7 @@ class ToFSensor(_Readout):
                 and not isinstance(self.modulation_contrast, tuple) and self.delay_ps == 0
                 and self.delay_fpn_ps == 0 and self.multipath is None)
 
-    def tap_electrons(self, distance, ir_reflectance, *, pixel_pitch_um=2.8):
+    def tap_electrons(self, distance, ir_reflectance, *, pixel_pitch_um=DEFAULT_CELL_PITCH_UM):
         """Mean electrons per tap of one-cell Z pixels (noise-free, no FPN, no per-pixel delay).
 
         Parameters
@@ -415,6 +418,41 @@ class ToFSensor(_Readout):
         if self.ambient_suppression:
             mean = mean - self._suppressed(total)[None, None]
         return mean
+
+    def active_electrons(self, distance, ir_reflectance=1.0, *, pixel_pitch_um=None):
+        """Electrons of the source's light that one Z cell collects over one integration.
+
+        The radiometry of the class docstring, noise-free: ``rho P / (4 d^2
+        tan(h/2) tan(v/2)) * T A / (4 N^2) / (h c / lambda) * qe * t`` for a
+        cell of area ``A``; no ambient light, dark signal or modulation
+        contrast.
+
+        Parameters
+        ----------
+        distance : array_like
+            Metres (> 0).
+        ir_reflectance : float or array_like
+            NIR reflectance of the surface (1: the reference a measured
+            amplitude is compared with).
+        pixel_pitch_um : float, optional
+            Cell pitch; default :attr:`pixel_pitch_um`, or
+            :data:`DEFAULT_CELL_PITCH_UM` when that is None.
+
+        Returns
+        -------
+        ndarray of float64, the broadcast shape of the arguments
+
+        Examples
+        --------
+        >>> s = ToFSensor().active_electrons([1.0, 2.0])
+        >>> [round(float(v)) for v in s], round(float(s[0] / s[1]), 6)   # 1 / d^2
+        ([909, 227], 4.0)
+        """
+        if pixel_pitch_um is None:
+            pixel_pitch_um = self.pixel_pitch_um or DEFAULT_CELL_PITCH_UM
+        s, _ = self._cell_electrons(np.asarray(distance, np.float64), ir_reflectance,
+                                    float(pixel_pitch_um))
+        return s
 
     # -- internals ------------------------------------------------------------
     @property

@@ -53,6 +53,10 @@ def add_parser(sub):
     p.add_argument("--range", type=c.metre_range, default=None, metavar="MIN:MAX",
                    help="colour scale of the preview in metres (default: the 1st to 99th "
                         "percentile of the valid depth)")
+    p.add_argument("--full-resolution", action="store_true",
+                   help="also run the colour ISP, guide the ToF ISP with its image and write "
+                        "a depth at every pixel: OUT/<name>_depth_full.tif (float32 metres, "
+                        "NaN where none can be given) and OUT/<name>_depth_full.png (preview)")
     c.add_run_options(p, DEFAULT_OUT)
     return p
 
@@ -60,7 +64,7 @@ def add_parser(sub):
 def run(args):
     import tifffile
 
-    from .._devtools.plots import depth_preview
+    from .._devtools.plots import depth_preview, full_depth_preview
     from ..io import atomic_write, load_frame
     from ..tof import ToFCalibration, tof_depth
 
@@ -72,18 +76,23 @@ def run(args):
             calibration = ToFCalibration.load(args.calibration, max_bytes=args.max_bytes)
         except (OSError, ValueError, TypeError, KeyError) as exc:
             raise c.CliError(f"--calibration: {args.calibration}: {c.explain(exc)}") from None
-    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"])
-            for f in args.frames]
+    full = ["_depth_full.tif", "_depth_full.png"] if args.full_resolution else []
+    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"]
+             + [f.stem + x for x in full]) for f in args.frames]
     c.unique_outputs(outs, out)
-    for f, (tif_name, flags_name, png_name) in outs:
+    for f, (tif_name, flags_name, png_name, *full_names) in outs:
         frame = load_frame(f, **c.limits(args))
         if frame.tof is None:
             raise c.CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such "
                              "as an RGB-D folder, and save it as .npz)")
+        guide = None
+        if full_names:                 # the frame's own colour image, as a chip would have it
+            from ..isp import ColourISP
+            guide = ColourISP().run(frame, workers=args.workers)
         res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
                         min_snr=args.min_snr, max_sigma=args.max_sigma,
                         flying_step=args.flying_step, min_reflectance=args.min_reflectance,
-                        max_range=args.max_range, workers=args.workers)
+                        max_range=args.max_range, guide=guide, workers=args.workers)
         depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
         flags = res.to_frame(res.flags.astype(np.uint16), fill=NO_MEASUREMENT).astype(np.uint8)
         summary = depth_summary(frame.tof, res)
@@ -97,8 +106,20 @@ def run(args):
         atomic_write(out / png_name, depth_preview(
             res, title, args.range,
             frame.tof.valid if "truth_unknown_fraction" in summary else None))
+        if full_names:
+            from ..tof import upsample_depth
+            up, _ = upsample_depth(res, guide, workers=args.workers)
+            buf = io.BytesIO()
+            tifffile.imwrite(buf, up, description=json.dumps(
+                {"unit": "m", "invalid": "NaN", "source": str(f),
+                 "covered_fraction": float(np.isfinite(up).mean())}))
+            atomic_write(out / full_names[0], buf.getvalue())
+            atomic_write(out / full_names[1], full_depth_preview(
+                up, f"{f.stem}: depth at every pixel", args.range))
         if not args.quiet:
-            print(f"{f} -> {out / tif_name}, {flags_name}, {png_name}: {summary['text']}")
+            extra = "".join(f", {n}" for n in full_names)
+            print(f"{f} -> {out / tif_name}, {flags_name}, {png_name}{extra}: "
+                  f"{summary['text']}")
     return 0
 
 

@@ -22,7 +22,8 @@ def add_parser(sub):
                    help="folder of the Middlebury scenes (default: ../shared/data/rgbd when it "
                         "exists; without it the scene sections are skipped)")
     p.add_argument("--sections", type=c.csv, default=None,
-                   help="comma list from scenes,range,noise,sunlight,calibration (default: all)")
+                   help="comma list from scenes,upsample,rgbnir,range,noise,sunlight,"
+                        "calibration (default: all)")
     c.add_seed(p, 1, "seed of the sensor noise")
     c.add_json(p, "print the rows as JSON")
     c.add_limits(p)

@@ -92,6 +92,29 @@ _MARKERS = {("float64", "libm"): "o", ("float32", "libm"): "s", ("float64", "fas
             ("float32", "fast"): "D", ("float64", "-"): "o", ("float32", "-"): "s"}
 
 
+def full_depth_preview(depth, title, scale=None):
+    """An 8-bit colour-mapped PNG of a full-resolution depth map (NaN grey), with its scale.
+
+    ``scale``: (min, max) metres; default the 1st to 99th percentile of the finite depths."""
+    matplotlib, plt = _pyplot()
+    good = depth[np.isfinite(depth)]
+    if scale is None:
+        scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
+            else (0.0, 1.0)
+        if scale[1] <= scale[0]:
+            scale = (scale[0], scale[0] + 1e-3)
+    rows, cols = depth.shape
+    fig, ax = plt.subplots(figsize=(6.4, 6.4 * rows / cols * 0.92 + 0.6))
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
+    im = ax.imshow(np.ma.masked_invalid(depth), cmap=cmap, vmin=scale[0], vmax=scale[1],
+                   interpolation="nearest")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, extend="both").set_label("distance (m)")
+    ax.set_title(f"{title} ({100 * good.size / depth.size:.1f} % covered)", fontsize=9)
+    return _png(fig, plt, bbox_inches="tight")
+
+
 def tradeoff_plot(res):
     """Pareto plot of :func:`rgbz_fast._devtools.tradeoff.run_tradeoff`'s result (PNG bytes).
 
