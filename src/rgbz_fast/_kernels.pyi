@@ -177,3 +177,13 @@ def tofg_upsample(guide: np.ndarray, scale: float, cscale: np.ndarray, depth: np
                   cc: np.ndarray, spacing: float, reach: int, inv2s2: float, inv2hc2: float,
                   tol_k: float, tol_min: float, out: np.ndarray, conf: np.ndarray,
                   workers: int) -> None: ...
+
+CI_MAX_NEIGHBOURS: int
+def ci_defect_candidates(src: np.ndarray, noff: np.ndarray, offs: np.ndarray, thr: float,
+                         k: float, rr: np.ndarray, cc: np.ndarray, hot: np.ndarray,
+                         cold: np.ndarray, spread: np.ndarray, workers: int) -> int: ...
+def ci_phase_sums(src: np.ndarray, white: float, sums: np.ndarray, counts: np.ndarray,
+                  workers: int) -> None: ...
+def ci_render(src: np.ndarray, phase: np.ndarray, mode: int, scale: np.ndarray, black: float,
+              clip: int, matrix: np.ndarray, thresholds: np.ndarray, out: np.ndarray,
+              workers: int) -> None: ...

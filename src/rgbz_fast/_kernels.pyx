@@ -1138,3 +1138,89 @@ def tofg_upsample(const guide_t[:, :, ::1] guide, double scale, const double[::1
                                             spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
                                             &out[0, 0], &conf[0, 0], workers)
     _raise_for(status)
+
+
+# ---------------------------------------------------------------------- fused colour ISP (colour_isp.h)
+cdef extern from "colour_isp.h" nogil:
+    int RGBZ_CI_MAX_NEIGHBOURS
+    int rgbz_ci_defect_candidates(int in_type, const void *src, Py_ssize_t rows,
+                                  Py_ssize_t cols, int32_t P, int32_t Q, const int32_t *noff,
+                                  const int32_t *offs, float thr, float k, Py_ssize_t capacity,
+                                  int64_t *rr, int64_t *cc, float *hot, float *cold,
+                                  float *spread, Py_ssize_t *count, int workers)
+    int rgbz_ci_phase_sums(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           double white, double *sums, int64_t *counts, int workers)
+    int rgbz_ci_render_f32(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           const int32_t *phase, int mode, const float *scale, float black,
+                           int clip, const float *matrix, const float *thresholds, int bits,
+                           void *out, int workers)
+    int rgbz_ci_render_f64(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           const int32_t *phase, int mode, const double *scale, double black,
+                           int clip, const double *matrix, const double *thresholds, int bits,
+                           void *out, int workers)
+
+#: neighbours of one tile position in the defect test (the offsets' second axis)
+CI_MAX_NEIGHBOURS = RGBZ_CI_MAX_NEIGHBOURS
+
+
+def ci_defect_candidates(const frame_t[:, ::1] src, const int32_t[::1] noff,
+                         const int32_t[:, :, :, ::1] offs, float thr, float k,
+                         int64_t[::1] rr, int64_t[::1] cc, float[::1] hot, float[::1] cold,
+                         float[::1] spread, int workers):
+    """Tests 1 and 2 of the defect detection; the candidates' count (it may exceed the room
+    of the outputs, which then hold the first ones: call again with more room)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t count = 0, cap = rr.shape[0]
+    if (cc.shape[0] < cap or hot.shape[0] < cap or cold.shape[0] < cap
+            or spread.shape[0] < cap or offs.shape[3] != 2
+            or offs.shape[2] != RGBZ_CI_MAX_NEIGHBOURS
+            or noff.shape[0] != offs.shape[0] * offs.shape[1]):
+        raise ValueError("ci_defect_candidates: inconsistent array shapes")
+    with nogil:
+        status = rgbz_ci_defect_candidates(
+            in_type, &src[0, 0] if src.shape[0] * src.shape[1] else NULL,
+            src.shape[0], src.shape[1], <int32_t> offs.shape[0], <int32_t> offs.shape[1],
+            &noff[0], &offs[0, 0, 0, 0], thr, k, cap,
+            &rr[0] if cap else NULL, &cc[0] if cap else NULL, &hot[0] if cap else NULL,
+            &cold[0] if cap else NULL, &spread[0] if cap else NULL, &count, workers)
+    _raise_for(status)
+    return count
+
+
+def ci_phase_sums(const frame_t[:, ::1] src, double white, double[::1] sums,
+                  int64_t[::1] counts, int workers):
+    """The grey-world sums and counts of the four 2x2 phases of a complete Bayer CFA."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if sums.shape[0] < 4 or counts.shape[0] < 4:
+        raise ValueError("ci_phase_sums: sums and counts need 4 entries")
+    with nogil:
+        status = rgbz_ci_phase_sums(in_type, &src[0, 0], src.shape[0], src.shape[1], white,
+                                    &sums[0], &counts[0], workers)
+    _raise_for(status)
+
+
+def ci_render(const frame_t[:, ::1] src, const int32_t[::1] phase, int mode,
+              const rgb_t[::1] scale, rgb_t black, int clip, const rgb_t[::1] matrix,
+              const rgb_t[::1] thresholds, code_t[:, :, ::1] out, int workers):
+    """White balance .. output of a complete Bayer CFA (matrix: 9 values, or empty for the
+    identity); the precision is the type of scale, black, matrix and thresholds."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int bits = 8 if code_t is uint8_t else 16
+    cdef const rgb_t *m = &matrix[0] if matrix.shape[0] else NULL
+    if (phase.shape[0] != 4 or scale.shape[0] != 3 or matrix.shape[0] not in (0, 9)
+            or thresholds.shape[0] != (1 << bits) or out.shape[2] != 3
+            or out.shape[0] != src.shape[0] or out.shape[1] != src.shape[1]):
+        raise ValueError("ci_render: inconsistent array shapes")
+    with nogil:
+        if rgb_t is float:
+            status = rgbz_ci_render_f32(in_type, &src[0, 0], src.shape[0], src.shape[1],
+                                        &phase[0], mode, &scale[0], black, clip, m,
+                                        &thresholds[0], bits, &out[0, 0, 0], workers)
+        else:
+            status = rgbz_ci_render_f64(in_type, &src[0, 0], src.shape[0], src.shape[1],
+                                        &phase[0], mode, &scale[0], black, clip, m,
+                                        &thresholds[0], bits, &out[0, 0, 0], workers)
+    _raise_for(status)

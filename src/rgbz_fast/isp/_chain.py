@@ -36,8 +36,9 @@ import numpy as np
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
-                         check_number, merge_params)
-from ._defects import DefectCorrection, correct_defects
+                         check_number, check_workers, merge_params)
+from . import _fused
+from ._defects import DefectCorrection, _check_known, correct_defects
 from ._demosaic import demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, _black_white,
                       _encode, _quantise, correct_colour, fill_missing, grey_world_gains,
@@ -218,6 +219,14 @@ class ColourISP:
         """
         data, pat, bd, black, white = self._inputs(frame, pattern, bit_depth, black_level,
                                                    reference)
+        if not return_stages and self._fused(data):
+            threads = check_workers(workers)
+            fixed = _fused.defect_fixes(data, pat, self.defects, white,
+                                        _check_known(defects, data.shape), threads)
+            full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd,
+                                workers=workers) if pat.has_z else fixed
+            return _fused.render(full, pat.bayer_pattern(), self, black, white, gains,
+                                 threads)[0]
         seconds = {}
         t0 = time.perf_counter()
         fixed, mask = correct_defects(data, pat, self.defects, white_level=white,
@@ -284,8 +293,17 @@ class ColourISP:
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
         black, white = _black_white(black_level, (1 << bd) - 1)
+        if not return_stages and self._fused(data):
+            return _fused.render(data, pattern, self, black, white, gains,
+                                 check_workers(workers))[0]
         out, stages = self._render(data, pattern, black, white, gains, workers, return_stages)
         return (out, stages) if return_stages else out
+
+    def _fused(self, data):
+        """Whether the stages after the input checks run as the C passes of
+        :mod:`._fused` (the same image): the Malvar demosaic on a frame it takes."""
+        return (self.demosaicing.method == "malvar2004" and data.dtype in FRAME_DTYPES
+                and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2)
 
     def white_balance_gains(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None):
         """The white-balance gains (R, G, B) :meth:`render` applies to a complete Bayer CFA:

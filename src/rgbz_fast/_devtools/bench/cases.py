@@ -299,27 +299,53 @@ def tof_sites_benchmark(shape=FULL_SHAPE, repeat=5, workers=None, pattern="mask1
 
 
 def colour_chain_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, pattern="mask1"):
-    """Seconds of every stage of ``isp.ColourISP().run`` (SG float32, C Malvar) on the
-    benchmark frame mosaicked on ``pattern``: medians over ``repeat`` runs after a warm-up."""
+    """``isp.ColourISP().run`` (SG float32, Malvar) on the benchmark frame mosaicked on
+    ``pattern``: the fused path (``run(frame)``, the C passes) and the reference (``run(frame,
+    return_stages=True)``, the NumPy stages) timed in turn in the same rounds with OpenCV's
+    edge-aware demosaic of the Bayer frame (``workers`` threads): their medians, the
+    reference's seconds per stage, and the speed ratios of the rounds (OpenCV EA's seconds
+    over ours, > 1: we are faster), median over the rounds; whether the two paths give the
+    same image."""
     import rgbz_fast as rz
 
     from ...isp import STAGES, ColourISP
 
     workers = workers or (os.cpu_count() or 1)
-    frame = rz.mosaic(make_rgb(shape), pattern)
+    rgb = make_rgb(shape)
+    frame = rz.mosaic(rgb, pattern)
     chain = ColourISP()
     seconds = []                     # the stages' seconds of every call, warm-up first
 
-    def run():
+    def stages():
         seconds.append(chain.run(frame, workers=workers, return_stages=True)[1]["seconds"])
 
-    totals = interleaved({"chain": run}, repeat)["chain"]
+    fns = {"fused": lambda: chain.run(frame, workers=workers), "stages": stages}
+    calls = opencv_calls(lambda _: rz.mosaic(rgb, "bayer"))
+    cv2 = None
+    if calls is not None:
+        cv2, ocv = calls
+        fns["opencv_ea"] = ocv["ea"]
+    with OpenCVThreads(cv2, workers):
+        times = interleaved(fns, repeat)
     runs = seconds[-repeat:]
-    return dict(pattern=pattern, frame_shape=list(shape), workers=workers, repeat=repeat,
-                reconstruction=chain.reconstruction.method, precision=chain.precision,
-                demosaic=chain.demosaicing.method,
-                total_s=float(np.median(totals)), total_min_s=float(np.min(totals)),
-                stages_s={k: float(np.median([s[k] for s in runs])) for k in STAGES})
+    same = bool(np.array_equal(chain.run(frame, workers=workers),
+                               chain.run(frame, workers=workers, return_stages=True)[0]))
+    out = dict(pattern=pattern, frame_shape=list(shape), workers=workers, repeat=repeat,
+               reconstruction=chain.reconstruction.method, precision=chain.precision,
+               demosaic=chain.demosaicing.method,
+               fused_s=float(np.median(times["fused"])),
+               fused_min_s=float(np.min(times["fused"])),
+               total_s=float(np.median(times["stages"])),
+               total_min_s=float(np.min(times["stages"])),
+               stages_s={k: float(np.median([s[k] for s in runs])) for k in STAGES},
+               identical=same, opencv_ea_s=None, vs_opencv_ea_fused=None,
+               vs_opencv_ea_stages=None)
+    if "opencv_ea" in times:
+        ea = times["opencv_ea"]
+        out.update(opencv_ea_s=float(np.median(ea)),
+                   vs_opencv_ea_fused=float(np.median(ea / times["fused"])),
+                   vs_opencv_ea_stages=float(np.median(ea / times["stages"])))
+    return out
 
 
 def bench_depth(shape):
