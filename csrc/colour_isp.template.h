@@ -20,7 +20,7 @@
    thresholds padded with 2^steps values above 1. */
 typedef struct {
     const REAL *t;          /* the thresholds, padded */
-    const uint16_t *start;  /* the code of each bucket's smallest value */
+    const int32_t *start;   /* the code of each bucket's smallest value */
     CI_UINT(RS) base, last; /* the first and the last bucket */
     int shift, steps;
 } RGBZ_CAT(ci_codes, RS);
@@ -31,7 +31,7 @@ RGBZ_INLINE int RGBZ_CAT(ci_code, RS)(const RGBZ_CAT(ci_codes, RS) *tab, REAL v,
     memcpy(&u, &v, sizeof u);
     u >>= tab->shift;
     u = u < tab->base ? tab->base : (u > tab->last ? tab->last : u);
-    int c = tab->start[u - tab->base];
+    int32_t c = tab->start[(int32_t)(u - tab->base)];
     for (int s = 1 << (steps - 1); s > 0; s >>= 1) c += tab->t[c + s] <= v ? s : 0;
     return c;
 }
@@ -54,9 +54,9 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
     tab->last = uone >> tab->shift;
     const ptrdiff_t n = (ptrdiff_t)(tab->last - tab->base) + 1;
     const ptrdiff_t npad = (ptrdiff_t)top + 1 + 64;
-    REAL *tp = (REAL *)malloc((size_t)npad * sizeof(REAL) + (size_t)n * sizeof(uint16_t));
+    REAL *tp = (REAL *)malloc((size_t)npad * sizeof(REAL) + (size_t)n * sizeof(int32_t));
     if (!tp) return NULL;
-    uint16_t *start = (uint16_t *)(tp + npad);
+    int32_t *start = (int32_t *)(tp + npad);
     start[0] = 0;                                   /* holds 0, whose code is 0 */
     int c = 0, span = 0;
     for (ptrdiff_t i = 1; i < n; i++) {
@@ -64,7 +64,7 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
         REAL lo;
         memcpy(&lo, &u, sizeof lo);
         while (c < top && t[c + 1] <= lo) c++;
-        start[i] = (uint16_t)c;
+        start[i] = c;
         if (c - start[i - 1] > span) span = c - start[i - 1];
     }
     if (top - c > span) span = top - c;
@@ -98,124 +98,167 @@ RGBZ_INLINE REAL RGBZ_CAT(ci_clip01, RS)(REAL v)
     return v < (REAL)0 ? (REAL)0 : (v > (REAL)1 ? (REAL)1 : v);
 }
 
-/* Malvar 2004 at x of the five white-balanced rows r[0..4] (rows y-2 .. y+2), into rgb:
-   demosaic.c's dm_pixel term for term, in double. A green site (green), the colour of its
-   row being rc (0: R, 2: B); or a red or blue site of colour ch. */
-RGBZ_INLINE void RGBZ_CAT(ci_green, RS)(const double *const *r, ptrdiff_t x, int rc, double *rgb)
-{
-    const double c0 = (double)r[2][x];
-    const double diag = (double)r[1][x - 1] + (double)r[1][x + 1] + (double)r[3][x - 1] +
-                        (double)r[3][x + 1];
-    const double hz2 = (double)r[2][x - 2] + (double)r[2][x + 2];
-    const double vt2 = (double)r[0][x] + (double)r[4][x];
-    const double hz1 = (double)r[2][x - 1] + (double)r[2][x + 1];
-    const double vt1 = (double)r[1][x] + (double)r[3][x];
-    const double hv = (5 * c0 + 4 * hz1 - hz2 - diag + 0.5 * vt2) / 8;
-    const double vv = (5 * c0 + 4 * vt1 - vt2 - diag + 0.5 * hz2) / 8;
-    rgb[1] = c0;
-    rgb[0] = rc == 0 ? hv : vv;
-    rgb[2] = rc == 0 ? vv : hv;
-}
+/* The white-balanced rows are kept as two planes of double (exact: REAL values), the even
+   columns and the odd ones, each with 3 cells of border before: plane p of a row holds
+   column 2 j + p at index j + 3, so that every tap of the demosaic is a unit-stride read in
+   j and the loops below vectorise. CI_PLANE is a plane's length for `cols` columns. */
+#define CI_PLANE(cols) ((cols) / 2 + 6)
 
-RGBZ_INLINE void RGBZ_CAT(ci_colour, RS)(const double *const *r, ptrdiff_t x, int ch, double *rgb)
+/* Malvar 2004 of the n greens of a row at x = 2 j + gp: s[k] the plane of parity gp of row
+   y + k - 2 (at its cell 0, index j + 3 above), t[k] the other plane shifted so that t[k][j]
+   and t[k][j + 1] are the columns x - 1 and x + 1. Out: the row colour's value to oa (R on
+   an R row), the other's to ob, green to og. demosaic.c's dm_pixel term for term, in double,
+   rounded to REAL as isp.demosaic stores it. */
+static void RGBZ_CAT(ci_greens, RS)(const double *const *s, const double *const *t, ptrdiff_t n,
+                                    REAL *restrict oa, REAL *restrict og, REAL *restrict ob)
 {
-    const double c0 = (double)r[2][x];
-    const double n4 = (double)r[1][x] + (double)r[3][x] + (double)r[2][x - 1] +
-                      (double)r[2][x + 1];
-    const double far4 = (double)r[0][x] + (double)r[4][x] + (double)r[2][x - 2] +
-                        (double)r[2][x + 2];
-    const double diag = (double)r[1][x - 1] + (double)r[1][x + 1] + (double)r[3][x - 1] +
-                        (double)r[3][x + 1];
-    const double gg = (4 * c0 + 2 * n4 - far4) / 8;
-    const double oo = (6 * c0 + 2 * diag - 1.5 * far4) / 8;
-    rgb[1] = gg;
-    rgb[0] = ch == 0 ? c0 : oo;
-    rgb[2] = ch == 0 ? oo : c0;
-}
-
-/* the codes of one pixel's demosaicked rgb at o[0..2]: rounded to REAL (isp.demosaic's
-   output type), the colour matrix, the clip and the code */
-RGBZ_INLINE void RGBZ_CAT(ci_store, RS)(const RGBZ_CAT(ci_render_args, RS) *a, const double *rgb,
-                                        int has_matrix, int steps, int bits8, void *o, ptrdiff_t i)
-{
-    REAL v[3] = {(REAL)rgb[0], (REAL)rgb[1], (REAL)rgb[2]};
-    if (has_matrix) {
-        const REAL *m = a->m;
-        REAL w[3];
-        for (int k = 0; k < 3; k++)
-            w[k] = RGBZ_CAT(CI_DOT3, RS)(m[3 * k], v[0], m[3 * k + 1], v[1], m[3 * k + 2], v[2]);
-        v[0] = w[0]; v[1] = w[1]; v[2] = w[2];
-    }
-    for (int k = 0; k < 3; k++) {
-        const int c = RGBZ_CAT(ci_code, RS)(&a->codes, RGBZ_CAT(ci_clip01, RS)(v[k]), steps);
-        if (bits8) ((uint8_t *)o)[i + k] = (uint8_t)c;
-        else ((uint16_t *)o)[i + k] = (uint16_t)c;
+    const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
+    const double *t1 = t[1], *t2 = t[2], *t3 = t[3];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const double c0 = s2[j];
+        const double diag = t1[j] + t1[j + 1] + t3[j] + t3[j + 1];
+        const double hz2 = s2[j - 1] + s2[j + 1];
+        const double vt2 = s0[j] + s4[j];
+        const double hz1 = t2[j] + t2[j + 1];
+        const double vt1 = s1[j] + s3[j];
+        const double hv = (5 * c0 + 4 * hz1 - hz2 - diag + 0.5 * vt2) / 8;
+        const double vv = (5 * c0 + 4 * vt1 - vt2 - diag + 0.5 * hz2) / 8;
+        og[j] = (REAL)c0;
+        oa[j] = (REAL)hv;
+        ob[j] = (REAL)vv;
     }
 }
 
-/* Output row y from the five white-balanced rows rp[0..4] (rows y-2 .. y+2 after the
-   border rule, each padded by two columns on both sides). gfirst (a green at even x), rc
-   (the row's other colour), has_matrix, steps and bits8 are constants in every call, so
-   that each combination is a loop of its own without a branch per pixel. */
-RGBZ_INLINE void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
-                                      const RGBZ_CAT(ci_render_args, RS) *a, void *out,
-                                      int gfirst, int rc, int has_matrix, int steps, int bits8)
+/* the n red or blue sites of a row: s and t as above with the parities swapped; the site's
+   own colour to oc, green to og, the other colour to oo */
+static void RGBZ_CAT(ci_colours, RS)(const double *const *s, const double *const *t,
+                                     ptrdiff_t n, REAL *restrict oc, REAL *restrict og,
+                                     REAL *restrict oo)
 {
-    const double *r[5] = {rp[0] + 2, rp[1] + 2, rp[2] + 2, rp[3] + 2, rp[4] + 2};
-    const ptrdiff_t o = 3 * y * cols;
-    double rgb[3];
-    ptrdiff_t x = 0;
-    for (; x + 1 < cols; x += 2) {
-        if (gfirst) RGBZ_CAT(ci_green, RS)(r, x, rc, rgb);
-        else RGBZ_CAT(ci_colour, RS)(r, x, rc, rgb);
-        RGBZ_CAT(ci_store, RS)(a, rgb, has_matrix, steps, bits8, out, o + 3 * x);
-        if (gfirst) RGBZ_CAT(ci_colour, RS)(r, x + 1, rc, rgb);
-        else RGBZ_CAT(ci_green, RS)(r, x + 1, rc, rgb);
-        RGBZ_CAT(ci_store, RS)(a, rgb, has_matrix, steps, bits8, out, o + 3 * (x + 1));
-    }
-    if (x < cols) {
-        if (gfirst) RGBZ_CAT(ci_green, RS)(r, x, rc, rgb);
-        else RGBZ_CAT(ci_colour, RS)(r, x, rc, rgb);
-        RGBZ_CAT(ci_store, RS)(a, rgb, has_matrix, steps, bits8, out, o + 3 * x);
+    const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
+    const double *t1 = t[1], *t2 = t[2], *t3 = t[3];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const double c0 = s2[j];
+        const double n4 = s1[j] + s3[j] + t2[j] + t2[j + 1];
+        const double far4 = s0[j] + s4[j] + s2[j - 1] + s2[j + 1];
+        const double diag = t1[j] + t1[j + 1] + t3[j] + t3[j + 1];
+        const double gg = (4 * c0 + 2 * n4 - far4) / 8;
+        const double other = (6 * c0 + 2 * diag - 1.5 * far4) / 8;
+        oc[j] = (REAL)c0;
+        og[j] = (REAL)gg;
+        oo[j] = (REAL)other;
     }
 }
 
-/* ci_row with its constants: the steps of the table (1 for 8 bits, 3 for 16) and the rest */
-#define CI_ROW_STEPS_(G, RC, M, B)                                                          \
-    do {                                                                                    \
-        if (a->codes.steps == 1) RGBZ_CAT(ci_row, RS)(rp, y, cols, a, out, G, RC, M, 1, B);   \
-        else if (a->codes.steps == 2) RGBZ_CAT(ci_row, RS)(rp, y, cols, a, out, G, RC, M, 2, B); \
-        else if (a->codes.steps == 3) RGBZ_CAT(ci_row, RS)(rp, y, cols, a, out, G, RC, M, 3, B); \
-        else RGBZ_CAT(ci_row, RS)(rp, y, cols, a, out, G, RC, M, a->codes.steps, B);          \
-    } while (0)
+/* the colour matrix on n pixels of planes r, g, b, in place */
+static void RGBZ_CAT(ci_matrix, RS)(const REAL *m, REAL *restrict r, REAL *restrict g,
+                                    REAL *restrict b, ptrdiff_t n)
+{
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const REAL v0 = r[j], v1 = g[j], v2 = b[j];
+        r[j] = RGBZ_CAT(CI_DOT3, RS)(m[0], v0, m[1], v1, m[2], v2);
+        g[j] = RGBZ_CAT(CI_DOT3, RS)(m[3], v0, m[4], v1, m[5], v2);
+        b[j] = RGBZ_CAT(CI_DOT3, RS)(m[6], v0, m[7], v1, m[8], v2);
+    }
+}
 
-static void RGBZ_CAT(ci_row_any, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
-                                     const RGBZ_CAT(ci_render_args, RS) *a, void *out, int bits)
+/* the bucket of a clipped value v: the code of its smallest value (see ci_code) */
+RGBZ_INLINE int32_t RGBZ_CAT(ci_start, RS)(const RGBZ_CAT(ci_codes, RS) *tab, REAL v)
+{
+    union { REAL f; CI_UINT(RS) u; } bits = {v};
+    CI_UINT(RS) u = bits.u >> tab->shift;
+    u = u < tab->base ? tab->base : (u > tab->last ? tab->last : u);
+    return tab->start[(int32_t)(u - tab->base)];
+}
+
+/* the codes of n values (clipped first): ci_code with its steps written out for the tables
+   of 8 bits (1) and 16 (3), so that the loops vectorise (gathers) */
+CI_CLONES static void RGBZ_CAT(ci_encode, RS)(const RGBZ_CAT(ci_codes, RS) *tab, const REAL *v,
+                                              uint16_t *restrict code, ptrdiff_t n)
+{
+    const REAL *t = tab->t;
+    if (tab->steps == 1) {
+        for (ptrdiff_t j = 0; j < n; j++) {
+            const REAL x = RGBZ_CAT(ci_clip01, RS)(v[j]);
+            int32_t c = RGBZ_CAT(ci_start, RS)(tab, x);
+            c += t[c + 1] <= x ? 1 : 0;
+            code[j] = (uint16_t)c;
+        }
+    } else if (tab->steps == 3) {
+        for (ptrdiff_t j = 0; j < n; j++) {
+            const REAL x = RGBZ_CAT(ci_clip01, RS)(v[j]);
+            int32_t c = RGBZ_CAT(ci_start, RS)(tab, x);
+            c += t[c + 4] <= x ? 4 : 0;
+            c += t[c + 2] <= x ? 2 : 0;
+            c += t[c + 1] <= x ? 1 : 0;
+            code[j] = (uint16_t)c;
+        }
+    } else {
+        for (ptrdiff_t j = 0; j < n; j++)
+            code[j] = (uint16_t)RGBZ_CAT(ci_code, RS)(tab, RGBZ_CAT(ci_clip01, RS)(v[j]),
+                                                      tab->steps);
+    }
+}
+
+/* Output row y from the five white-balanced rows rp[0..4] (rows y-2 .. y+2 after the border
+   rule, as planes): the demosaic per parity into the planar scratch lin (6 planes of h
+   values: R, G, B of the even columns, then of the odd ones), the matrix, the codes (code,
+   the same layout), then interleaved into the output row. */
+static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
+                                 const RGBZ_CAT(ci_render_args, RS) *a, REAL *lin,
+                                 uint16_t *code, void *out, int bits)
 {
     const int32_t *ph = a->phase + 2 * (y & 1);
-    const int gfirst = ph[0] == 1;
-    const int rc = gfirst ? ph[1] : ph[0];
-#define CI_ROW_B_(G, RC, M)                                                                 \
-    do {                                                                                    \
-        if (bits == 8) CI_ROW_STEPS_(G, RC, M, 1);                                          \
-        else CI_ROW_STEPS_(G, RC, M, 0);                                                    \
-    } while (0)
-#define CI_ROW_M_(G, RC)                                                                    \
-    do {                                                                                    \
-        if (a->has_matrix) CI_ROW_B_(G, RC, 1);                                             \
-        else CI_ROW_B_(G, RC, 0);                                                           \
-    } while (0)
-    if (gfirst) {
-        if (rc == 0) CI_ROW_M_(1, 0);
-        else CI_ROW_M_(1, 2);
-    } else {
-        if (rc == 0) CI_ROW_M_(0, 0);
-        else CI_ROW_M_(0, 2);
+    const int gp = ph[0] == 1 ? 0 : 1;              /* the parity of the greens */
+    const int rc = ph[1 - gp];                      /* the row's other colour: 0 R, 2 B */
+    const ptrdiff_t hp = CI_PLANE(cols), h = cols / 2 + 1;
+    const ptrdiff_t ng = (cols - gp + 1) / 2, nc = (cols - (1 - gp) + 1) / 2;
+    const double *s[5], *t[5];
+    REAL *par[2][3];
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < 3; k++) par[p][k] = lin + (3 * p + k) * h;
+    /* the greens: the other plane's x - 1 is its cell j - 1 when the greens are even */
+    for (int k = 0; k < 5; k++) {
+        s[k] = rp[k] + gp * hp + 3;
+        t[k] = rp[k] + (1 - gp) * hp + 3 - (gp == 0);
     }
-#undef CI_ROW_M_
-#undef CI_ROW_B_
+    REAL **gpl = par[gp];
+    RGBZ_CAT(ci_greens, RS)(s, t, ng, gpl[rc], gpl[1], gpl[2 - rc]);
+    for (int k = 0; k < 5; k++) {
+        s[k] = rp[k] + (1 - gp) * hp + 3;
+        t[k] = rp[k] + gp * hp + 3 - (gp == 1);
+    }
+    REAL **cpl = par[1 - gp];
+    RGBZ_CAT(ci_colours, RS)(s, t, nc, cpl[rc], cpl[1], cpl[2 - rc]);
+    const ptrdiff_t nn[2] = {(cols + 1) / 2, cols / 2};
+    for (int p = 0; p < 2; p++) {
+        if (a->has_matrix) RGBZ_CAT(ci_matrix, RS)(a->m, par[p][0], par[p][1], par[p][2], nn[p]);
+        for (int k = 0; k < 3; k++)
+            RGBZ_CAT(ci_encode, RS)(&a->codes, par[p][k], code + (3 * p + k) * h, nn[p]);
+    }
+    const uint16_t *c[2][3];
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < 3; k++) c[p][k] = code + (3 * p + k) * h;
+    if (bits == 8) {
+        uint8_t *o = (uint8_t *)out + 3 * y * cols;
+        for (ptrdiff_t x = 0; x < cols; x++) {
+            const int p = (int)(x & 1);
+            const ptrdiff_t j = x >> 1;
+            o[3 * x] = (uint8_t)c[p][0][j];
+            o[3 * x + 1] = (uint8_t)c[p][1][j];
+            o[3 * x + 2] = (uint8_t)c[p][2][j];
+        }
+    } else {
+        uint16_t *o = (uint16_t *)out + 3 * y * cols;
+        for (ptrdiff_t x = 0; x < cols; x++) {
+            const int p = (int)(x & 1);
+            const ptrdiff_t j = x >> 1;
+            o[3 * x] = c[p][0][j];
+            o[3 * x + 1] = c[p][1][j];
+            o[3 * x + 2] = c[p][2][j];
+        }
+    }
 }
-#undef CI_ROW_STEPS_
 
 #define IN_T uint8_t
 #define IS u8
@@ -289,47 +332,53 @@ int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, p
 #else
 /* ---------------------------------------------------------------- per element type */
 
-/* the white-balanced row r of the frame into dst[2 .. cols + 1], its border columns into
-   dst[0, 1, cols + 2, cols + 3] (the columns colmap names): isp.white_balance's operations
-   in REAL, kept as double (exact), the type the demosaic computes in */
+/* the white-balanced row r of the frame into its two planes at dst (CI_PLANE), with the
+   border columns -4 .. -1 and cols .. cols + 3 by the border rule: isp.white_balance's
+   operations in REAL, kept as double (exact), the type the demosaic computes in */
 static void RGBZ_CAT3(ci_balance, RS, IS)(const IN_T *src, ptrdiff_t r, ptrdiff_t cols,
                                           const RGBZ_CAT(ci_render_args, RS) *a, double *dst)
 {
     const IN_T *row = src + r * cols;
     const int32_t *ph = a->phase + 2 * (r & 1);
     const REAL s0 = a->scale[ph[0]], s1 = a->scale[ph[1]], black = a->black;
-    double *d = dst + 2;
-    ptrdiff_t x = 0;
+    const ptrdiff_t hp = CI_PLANE(cols);
+    double *e = dst + 3, *o = dst + hp + 3;
+    const ptrdiff_t n = cols / 2;
     if (a->clip) {
-        for (; x + 1 < cols; x += 2) {
-            REAL u = (REAL)row[x], w = (REAL)row[x + 1];
+        for (ptrdiff_t j = 0; j < n; j++) {
+            REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
             u = u - black;
             w = w - black;
             u = u * s0;
             w = w * s1;
-            d[x] = RGBZ_CAT(ci_clip01, RS)(u);
-            d[x + 1] = RGBZ_CAT(ci_clip01, RS)(w);
+            e[j] = RGBZ_CAT(ci_clip01, RS)(u);
+            o[j] = RGBZ_CAT(ci_clip01, RS)(w);
         }
     } else {
-        for (; x + 1 < cols; x += 2) {
-            REAL u = (REAL)row[x], w = (REAL)row[x + 1];
+        for (ptrdiff_t j = 0; j < n; j++) {
+            REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
             u = u - black;
             w = w - black;
-            d[x] = u * s0;
-            d[x + 1] = w * s1;
+            e[j] = u * s0;
+            o[j] = w * s1;
         }
     }
-    if (x < cols) {
-        REAL u = (REAL)row[x];
+    if (cols & 1) {
+        REAL u = (REAL)row[cols - 1];
         u = u - black;
         u = u * s0;
-        d[x] = a->clip ? RGBZ_CAT(ci_clip01, RS)(u) : u;
+        e[n] = a->clip ? RGBZ_CAT(ci_clip01, RS)(u) : u;
     }
-    const ptrdiff_t *cm = a->colmap;
-    dst[0] = d[cm[0]];
-    dst[1] = d[cm[1]];
-    dst[cols + 2] = d[cm[cols + 2]];
-    dst[cols + 3] = d[cm[cols + 3]];
+    /* column c lives at (c & 1 ? o : e)[c >> 1] (an arithmetic shift: c >= -4) */
+    for (int side = 0; side < 2; side++) {
+        for (ptrdiff_t k = 0; k < 4; k++) {
+            const ptrdiff_t c = side ? cols + k : -4 + k;
+            const ptrdiff_t from = ci_extend(c, cols, a->mode);
+            const double v = (from & 1 ? o : e)[from >> 1];
+            const ptrdiff_t jc = c >= 0 ? c / 2 : -((-c + 1) / 2);
+            (c & 1 ? o : e)[jc] = v;
+        }
+    }
 }
 
 /* every output row: each thread renders a band of consecutive rows, keeping the last 8
@@ -346,8 +395,10 @@ static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff
 #pragma omp parallel num_threads(nt) reduction(|:bad)
 #endif
     {
-        const ptrdiff_t stride = cols + 4;
+        const ptrdiff_t stride = 2 * CI_PLANE(cols), h = cols / 2 + 1;
         double *ring = (double *)malloc((size_t)(8 * stride) * sizeof *ring);
+        REAL *lin = (REAL *)malloc((size_t)(6 * h) * sizeof *lin);
+        uint16_t *code = (uint16_t *)malloc((size_t)(6 * h) * sizeof *code);
         ptrdiff_t tag[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
         ptrdiff_t y0 = 0, y1 = rows;
 #ifdef _OPENMP
@@ -357,7 +408,7 @@ static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff
             y1 = rows * (t + 1) / n;
         }
 #endif
-        if (!ring) {
+        if (!ring || !lin || !code) {
             bad = 1;
         } else {
             for (ptrdiff_t y = y0; y < y1; y++) {
@@ -371,10 +422,12 @@ static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff
                     }
                     rp[d] = slot;
                 }
-                RGBZ_CAT(ci_row_any, RS)(rp, y, cols, a, out, bits);
+                RGBZ_CAT(ci_row, RS)(rp, y, cols, a, lin, code, out, bits);
             }
         }
         free(ring);
+        free(lin);
+        free(code);
     }
     return bad ? RGBZ_ENOMEM : RGBZ_OK;
 }
