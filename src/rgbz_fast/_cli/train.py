@@ -47,6 +47,7 @@ def run(args):
     from ..evaluation import train_filters
     from ..io import folder_dataset
 
+    c.output_file(args.out)
     if not args.dataset.is_dir():
         raise c.CliError(f"--dataset: {args.dataset} is not a folder")
     filters = train_filters(

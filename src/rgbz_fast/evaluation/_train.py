@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import os
+from contextlib import ExitStack
 from dataclasses import replace
 from pathlib import Path
 
 from .._patterns import get_pattern
+from .._progress import ticking
 from ..reconstruction import train
 from ._config import EvalConfig
 from ._run import dataset_sources, image_frames
@@ -76,13 +78,17 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     name = name or ("+".join(s.name for s in dataset) if len(dataset) <= 3 else "custom")
     from tqdm.auto import tqdm
 
+    fitting = ExitStack()
+
     def frames():
         for i, source in enumerate(tqdm(dataset, desc="train", unit="img",
                                         disable=not progress)):
             cfg = replace(config, seed=config.seed + i) if noise else config
             frame, ref = image_frames(source.load(), pattern, cfg)
             yield replace(frame, reference=ref)
+        fitting.enter_context(ticking("train: fitting the filters", progress))  # images read
 
     meta = {"training_set": name, "noise": bool(noise),
             "encoding": "linear" if linearise else "srgb", **options.pop("meta", {})}
-    return train(frames(), meta=meta, **options)
+    with fitting:
+        return train(frames(), meta=meta, **options)

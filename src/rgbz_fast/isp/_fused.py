@@ -96,7 +96,7 @@ def gains(full, bayer, wb, black, white, given, workers):
         return _check_gains(given, "gains")
     if wb.gains is not None:
         return np.asarray(wb.gains, np.float64)
-    if wb.method != "grey_world":
+    if wb.method not in ("grey_world", "as_shot"):      # an array records no gains
         return np.ones(3)
     sums, counts = np.zeros(4), np.zeros(4, np.int64)
     _kernels.ci_phase_sums(full, float(white), sums, counts,
@@ -104,14 +104,16 @@ def gains(full, bayer, wb, black, white, given, workers):
     return _gains_from_sums(list(sums), list(counts), bayer.bayer_tile(), black)
 
 
-def render(full, bayer, chain, black, white, given, workers):
+def render(full, bayer, chain, black, white, given, workers, matrix=None):
     """White balance .. output of a complete Bayer CFA (validated) by ``chain`` (a
-    :class:`ColourISP` with the Malvar demosaic): ``(image, gains)``."""
+    :class:`ColourISP` with the Malvar demosaic): ``(image, gains)``. ``matrix``: the colour
+    matrix when the chain has none (a frame's recorded one)."""
     dt = np.dtype(chain.precision)
     full = np.ascontiguousarray(full)
     g = gains(full, bayer, chain.white_balance, black, white, given, workers)
     scale = (g / (white - black)).astype(dt)
-    m = chain.colour_correction.matrix
+    m = chain.colour_correction.matrix if chain.colour_correction.matrix is not None \
+        else matrix
     matrix = np.zeros(0, dt) if m is None else np.asarray(m, dt).reshape(-1)
     phase = np.array([CHANNELS.index(c) for c in bayer.bayer_phase], np.int32)
     bits = chain.output_bits

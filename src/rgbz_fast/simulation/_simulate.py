@@ -202,7 +202,13 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         On the plain Bayer pattern, ``bit_depth = sensor.bit_depth``, uint16
         (float64 if ``sensor.quantise`` is False); ``meta`` holds
         ``exposure`` (s), ``system_gain`` (DN/e-), ``saturated`` (fraction of
-        sites at full well or full scale), ``spectral`` and ``rng_version``.
+        sites at full well or full scale), ``spectral``, ``rng_version``,
+        ``colour_black_level`` (the sensor's black level, DN) and, for a
+        spectral scene, ``white_gains`` (R, G, B) and ``colour_matrix`` (nine
+        numbers, row by row): the sensor's white balance and its matrix to
+        linear sRGB (:func:`~rgbz_fast.simulation.white_gains`,
+        :func:`~rgbz_fast.simulation.colour_matrix`), which the colour ISP
+        applies.
     """
     scene = _as_scene(scene)
     pattern = get_pattern(pattern)
@@ -260,7 +266,16 @@ def _colour_frames(scene, pattern, sensor, seed, noise, optics, rng_version, wor
         saturated = nsat / dn.size
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
             "saturated": saturated, "spectral": scene.is_spectral,
-            "noise": noise, "seed": seed, "scene": scene.name, "rng_version": rng_version}
+            "noise": noise, "seed": seed, "scene": scene.name, "rng_version": rng_version,
+            "colour_black_level": float(sensor.black_level)}
+    if scene.is_spectral:
+        # the camera RGB of spectral sensitivities is not sRGB: the gains and the matrix
+        # that render it, which the colour ISP takes from the frame
+        from ._colour import colour_matrix, white_gains
+
+        meta["white_gains"] = tuple(float(g) for g in white_gains(sensor, scene.wavelengths))
+        meta["colour_matrix"] = tuple(float(v) for v in
+                                      colour_matrix(sensor, scene.wavelengths).ravel())
     if optics is not None:
         meta["optics"] = optics
     return dn, data, meta
