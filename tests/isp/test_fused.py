@@ -190,3 +190,23 @@ def test_kernel_rejects_inconsistent_shapes():
         _kernels.ci_render(cfa, np.array([1, 0, 2, 1], np.int32), 0, np.ones(3, np.float32),
                            np.float32(0), 1, np.zeros(0, np.float32), np.zeros(16, np.float32),
                            out, 1)
+
+
+def test_recorded_gains_and_matrix_of_a_frame():
+    """A frame's as-shot gains and colour matrix (its meta) reach the fused path as the
+    stages: the same gains; the matrix within one code (NumPy's matmul)."""
+    data, pat = _frame("mask1", seed=13)
+    m = (1.5, -0.3, -0.2, -0.2, 1.4, -0.2, 0.0, -0.4, 1.4)
+    frame = rz.RawFrame(data, pat, 11, meta={"white_gains": (1.8, 1.0, 1.4),
+                                             "colour_matrix": m, "colour_black_level": 16.0})
+    chain = ColourISP()
+    fused = chain.run(frame)
+    staged, st = chain.run(frame, return_stages=True)
+    np.testing.assert_array_equal(st["gains"], [1.8, 1.0, 1.4])
+    diff = np.abs(fused.astype(np.int64) - staged)
+    assert diff.max() <= 1 and np.mean(diff > 0) < 1e-3
+    cfa = st["reconstruction"]
+    a = chain.render(cfa, "GRBG", gains=(1.8, 1.0, 1.4), colour_matrix=np.reshape(m, (3, 3)))
+    b = chain.render(cfa, "GRBG", gains=(1.8, 1.0, 1.4), colour_matrix=np.reshape(m, (3, 3)),
+                     return_stages=True)[0]
+    assert np.abs(a.astype(np.int64) - b).max() <= 1
