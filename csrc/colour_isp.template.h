@@ -93,9 +93,10 @@ typedef struct {
     RGBZ_CAT(ci_codes, RS) codes;
 } RGBZ_CAT(ci_render_args, RS);
 
+/* [0, 1]; -0 becomes +0 (whose bits the code lookup reads) */
 RGBZ_INLINE REAL RGBZ_CAT(ci_clip01, RS)(REAL v)
 {
-    return v < (REAL)0 ? (REAL)0 : (v > (REAL)1 ? (REAL)1 : v);
+    return v <= (REAL)0 ? (REAL)0 : (v > (REAL)1 ? (REAL)1 : v);
 }
 
 /* The white-balanced rows are kept as two planes of double (exact: REAL values), the even
@@ -171,21 +172,22 @@ RGBZ_INLINE int32_t RGBZ_CAT(ci_start, RS)(const RGBZ_CAT(ci_codes, RS) *tab, RE
     return tab->start[(int32_t)(u - tab->base)];
 }
 
-/* the codes of n values (clipped first): ci_code with its steps written out for the tables
-   of 8 bits (1) and 16 (3), so that the loops vectorise (gathers) */
-CI_CLONES static void RGBZ_CAT(ci_encode, RS)(const RGBZ_CAT(ci_codes, RS) *tab, const REAL *v,
-                                              uint16_t *restrict code, ptrdiff_t n)
+/* the codes of n values (clipped first): the vector codes of the precision if the CPU has
+   them, then ci_code with its steps written out for the tables of 8 bits (1) and 16 (3) */
+static void RGBZ_CAT(ci_encode, RS)(const RGBZ_CAT(ci_codes, RS) *tab, const REAL *v,
+                                    uint16_t *restrict code, ptrdiff_t n)
 {
     const REAL *t = tab->t;
+    ptrdiff_t j = RGBZ_CAT(CI_ENCODE_FAST, RS)(tab, v, code, n);
     if (tab->steps == 1) {
-        for (ptrdiff_t j = 0; j < n; j++) {
+        for (; j < n; j++) {
             const REAL x = RGBZ_CAT(ci_clip01, RS)(v[j]);
             int32_t c = RGBZ_CAT(ci_start, RS)(tab, x);
             c += t[c + 1] <= x ? 1 : 0;
             code[j] = (uint16_t)c;
         }
     } else if (tab->steps == 3) {
-        for (ptrdiff_t j = 0; j < n; j++) {
+        for (; j < n; j++) {
             const REAL x = RGBZ_CAT(ci_clip01, RS)(v[j]);
             int32_t c = RGBZ_CAT(ci_start, RS)(tab, x);
             c += t[c + 4] <= x ? 4 : 0;
@@ -194,7 +196,7 @@ CI_CLONES static void RGBZ_CAT(ci_encode, RS)(const RGBZ_CAT(ci_codes, RS) *tab,
             code[j] = (uint16_t)c;
         }
     } else {
-        for (ptrdiff_t j = 0; j < n; j++)
+        for (; j < n; j++)
             code[j] = (uint16_t)RGBZ_CAT(ci_code, RS)(tab, RGBZ_CAT(ci_clip01, RS)(v[j]),
                                                       tab->steps);
     }
