@@ -69,6 +69,10 @@ static ptrdiff_t ci_encode_avx2(const float *t, const int32_t *start, uint32_t b
     return j;
 }
 
+/* the demosaic's and the white balance's loops in 4 doubles as well (the same arithmetic:
+   -ffp-contract=off leaves every operation rounded on its own on every set) */
+#define CI_CLONES __attribute__((target_clones("avx2", "default")))
+
 static int ci_cpu_avx2(void)
 {
     static int have = -1;
@@ -299,6 +303,9 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
 #define CI_ENCODE_FAST_f32(tab, v, code, n) 0
 #endif
 #define CI_ENCODE_FAST_f64(tab, v, code, n) 0
+#ifndef CI_CLONES
+#define CI_CLONES
+#endif
 typedef uint32_t ci_uint_f32;       /* the unsigned integer of a float's bits */
 typedef uint64_t ci_uint_f64;
 #define CI_UINT(s) RGBZ_CAT(ci_uint, s)

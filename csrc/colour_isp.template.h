@@ -110,7 +110,7 @@ RGBZ_INLINE REAL RGBZ_CAT(ci_clip01, RS)(REAL v)
    and t[k][j + 1] are the columns x - 1 and x + 1. Out: the row colour's value to oa (R on
    an R row), the other's to ob, green to og. demosaic.c's dm_pixel term for term, in double,
    rounded to REAL as isp.demosaic stores it. */
-static void RGBZ_CAT(ci_greens, RS)(const double *const *s, const double *const *t, ptrdiff_t n,
+CI_CLONES static void RGBZ_CAT(ci_greens, RS)(const double *const *s, const double *const *t, ptrdiff_t n,
                                     REAL *restrict oa, REAL *restrict og, REAL *restrict ob)
 {
     const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
@@ -132,7 +132,7 @@ static void RGBZ_CAT(ci_greens, RS)(const double *const *s, const double *const 
 
 /* the n red or blue sites of a row: s and t as above with the parities swapped; the site's
    own colour to oc, green to og, the other colour to oo */
-static void RGBZ_CAT(ci_colours, RS)(const double *const *s, const double *const *t,
+CI_CLONES static void RGBZ_CAT(ci_colours, RS)(const double *const *s, const double *const *t,
                                      ptrdiff_t n, REAL *restrict oc, REAL *restrict og,
                                      REAL *restrict oo)
 {
@@ -337,7 +337,7 @@ int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, p
 /* the white-balanced row r of the frame into its two planes at dst (CI_PLANE), with the
    border columns -4 .. -1 and cols .. cols + 3 by the border rule: isp.white_balance's
    operations in REAL, kept as double (exact), the type the demosaic computes in */
-static void RGBZ_CAT3(ci_balance, RS, IS)(const IN_T *src, ptrdiff_t r, ptrdiff_t cols,
+CI_CLONES static void RGBZ_CAT3(ci_balance, RS, IS)(const IN_T *src, ptrdiff_t r, ptrdiff_t cols,
                                           const RGBZ_CAT(ci_render_args, RS) *a, double *dst)
 {
     const IN_T *row = src + r * cols;
