@@ -206,7 +206,18 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
     if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
     const int nt = ci_threads(workers, rows * cols);
     ci_list *lists = (ci_list *)calloc((size_t)nt, sizeof *lists);
-    if (!lists) return RGBZ_ENOMEM;
+    /* the neighbours' offsets in the frame, dy cols + dx */
+    ptrdiff_t *lin = (ptrdiff_t *)malloc((size_t)P * Q * RGBZ_CI_MAX_NEIGHBOURS * sizeof *lin);
+    if (!lists || !lin) {
+        free(lists);
+        free(lin);
+        return RGBZ_ENOMEM;
+    }
+    for (ptrdiff_t i = 0; i < (ptrdiff_t)P * Q; i++)
+        for (int32_t j = 0; j < RGBZ_CI_MAX_NEIGHBOURS; j++)
+            lin[i * RGBZ_CI_MAX_NEIGHBOURS + j] =
+                (ptrdiff_t)offs[(i * RGBZ_CI_MAX_NEIGHBOURS + j) * 2] * cols +
+                offs[(i * RGBZ_CI_MAX_NEIGHBOURS + j) * 2 + 1];
     int bad = 0;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(nt) reduction(|:bad)
@@ -220,7 +231,7 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
         if (bad) continue;
         int st = RGBZ_OK;
 #define CI_CAND_(s, T) st = RGBZ_CAT(ci_candidates, s)((const T *)src, rows, cols, y, P, Q, \
-                                                       noff, offs, thr, k, l)
+                                                       noff, offs, lin, thr, k, l)
         CI_SWITCH_TYPE(in_type, CI_CAND_, st = RGBZ_EINVAL)
 #undef CI_CAND_
         bad |= st != RGBZ_OK;
@@ -239,6 +250,7 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
         free(lists[t].v);
     }
     free(lists);
+    free(lin);
     *count = n;
     return bad ? RGBZ_ENOMEM : RGBZ_OK;
 }

@@ -13,10 +13,12 @@
    0, or RGBZ_ENOMEM when the list cannot grow */
 static int RGBZ_CAT(ci_candidates, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t cols,
                                        ptrdiff_t y, int32_t P, int32_t Q, const int32_t *noff,
-                                       const int32_t *offs, float thr, float k, ci_list *list)
+                                       const int32_t *offs, const ptrdiff_t *lin, float thr,
+                                       float k, ci_list *list)
 {
     const int32_t *prow_n = noff + (y % P) * Q;
     const int32_t *prow_o = offs + (ptrdiff_t)(y % P) * Q * 2 * RGBZ_CI_MAX_NEIGHBOURS;
+    const ptrdiff_t *prow_l = lin + (ptrdiff_t)(y % P) * Q * RGBZ_CI_MAX_NEIGHBOURS;
     const int inner_y = y >= 2 && y < rows - 2;
     const IN_T *row = src + y * cols;
     int32_t xq = 0;
@@ -28,13 +30,18 @@ static int RGBZ_CAT(ci_candidates, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff_
         float mx = 0, mn = 0;
         int seen = 0, out = 0;
         if (inner_y && x >= 2 && x < cols - 2) {
-            /* every neighbour is inside the frame */
-            for (int32_t i = 0; i < n; i++) {
-                const float w = (float)row[o[2 * i] * cols + x + o[2 * i + 1]];
-                if (!seen) { mx = mn = w; seen = 1; }
-                else { mx = w > mx ? w : mx; mn = w < mn ? w : mn; }
-                /* mx only grows and mn only falls: once both differences are within thr,
-                   test 1 fails for good */
+            /* every neighbour is inside the frame, at the offsets lin in the frame */
+            const ptrdiff_t *l = prow_l + (ptrdiff_t)xq * RGBZ_CI_MAX_NEIGHBOURS;
+            const IN_T *p = row + x;
+            mx = mn = (float)p[l[0]];
+            seen = 1;
+            /* mx only grows and mn only falls: once both differences are within thr,
+               test 1 fails for good */
+            if (!(v - mx > thr) && !(mn - v > thr)) continue;
+            for (int32_t i = 1; i < n; i++) {
+                const float w = (float)p[l[i]];
+                mx = w > mx ? w : mx;
+                mn = w < mn ? w : mn;
                 if (!(v - mx > thr) && !(mn - v > thr)) { out = 1; break; }
             }
         } else {
