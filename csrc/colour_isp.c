@@ -19,21 +19,7 @@
 #include <omp.h>
 #endif
 #include "colour_isp.h"
-
-#if defined(__GNUC__) || defined(__clang__)
-#define RGBZ_CI_INLINE static inline __attribute__((always_inline))
-#else
-#define RGBZ_CI_INLINE static inline
-#endif
-#ifndef RGBZ_CAT
-#define RGBZ_CAT_(a, b) a##_##b
-#define RGBZ_CAT(a, b) RGBZ_CAT_(a, b)
-#define RGBZ_CAT3_(a, b, c) a##_##b##_##c
-#define RGBZ_CAT3(a, b, c) RGBZ_CAT3_(a, b, c)
-#endif
-#ifndef RGBZ_INLINE
-#define RGBZ_INLINE RGBZ_CI_INLINE
-#endif
+#include "rgbz_templating.h"
 
 /* The codes of float32 values with the gathers of AVX2, 8 at a time: ci_encode's lookup
    (colour_isp.template.h) lane by lane, the same codes; the caller checks the CPU. Returns
@@ -152,45 +138,10 @@ static int ci_push(ci_list *l, ptrdiff_t r, ptrdiff_t c, float hot, float cold, 
     return 0;
 }
 
-/* the element types: CI_SWITCH_TYPE calls CALL(suffix, C type) for the type code */
-#define CI_SWITCH_TYPE(type, CALL, OTHERWISE)                                               \
-    switch (type) {                                                                         \
-    case RGBZ_T_U8: CALL(u8, uint8_t); break;                                               \
-    case RGBZ_T_U16: CALL(u16, uint16_t); break;                                            \
-    case RGBZ_T_F32: CALL(f32, float); break;                                               \
-    case RGBZ_T_F64: CALL(f64, double); break;                                              \
-    default: OTHERWISE;                                                                     \
-    }
-
-/* ---- the scans, once per element type ---- */
-#define IN_T uint8_t
-#define IS u8
-#define IN_IS_INT 1
-#include "colour_isp_scan.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T uint16_t
-#define IS u16
-#define IN_IS_INT 1
-#include "colour_isp_scan.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T float
-#define IS f32
-#define IN_IS_INT 0
-#include "colour_isp_scan.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T double
-#define IS f64
-#define IN_IS_INT 0
-#include "colour_isp_scan.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
+/* the scans, once per element type (rgbz_templating.h) */
+#define RGBZ_TYPE_TEMPLATE "colour_isp_scan.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
 
 int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
                               int32_t P, int32_t Q, const int32_t *noff, const int32_t *offs,
@@ -232,7 +183,7 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
         int st = RGBZ_OK;
 #define CI_CAND_(s, T) st = RGBZ_CAT(ci_candidates, s)((const T *)src, rows, cols, y, P, Q, \
                                                        noff, offs, lin, thr, k, l)
-        CI_SWITCH_TYPE(in_type, CI_CAND_, st = RGBZ_EINVAL)
+        RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_CAND_, st = RGBZ_EINVAL)
 #undef CI_CAND_
         bad |= st != RGBZ_OK;
     }
@@ -285,7 +236,7 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
         int st = RGBZ_OK;
 #define CI_SUMS_(sfx, T) RGBZ_CAT(ci_sums, sfx)((const T *)src, cols, y0, y1, white, s + 4 * t, \
                                                 c + 4 * t)
-        CI_SWITCH_TYPE(in_type, CI_SUMS_, st = RGBZ_EINVAL)
+        RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_SUMS_, st = RGBZ_EINVAL)
 #undef CI_SUMS_
         (void)st;
     }
@@ -332,13 +283,7 @@ typedef uint64_t ci_uint_f64;
 #define CI_DOT3_f32(a0, x0, a1, x1, a2, x2) fmaf((a2), (x2), fmaf((a1), (x1), (a0) * (x0)))
 #define CI_DOT3_f64(a0, x0, a1, x1, a2, x2) ((a0) * (x0) + (a1) * (x1) + (a2) * (x2))
 
-#define REAL float
-#define RS f32
-#include "colour_isp.template.h"
-#undef REAL
-#undef RS
-#define REAL double
-#define RS f64
-#include "colour_isp.template.h"
-#undef REAL
-#undef RS
+/* the render once per precision, its rows once per element type within it */
+#define RGBZ_REAL_TEMPLATE "colour_isp.template.h"
+#include "rgbz_each_real.h"
+#undef RGBZ_REAL_TEMPLATE

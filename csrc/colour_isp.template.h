@@ -3,8 +3,9 @@
  * precision. Instantiated by colour_isp.c once per precision, with
  *   REAL, RS   the float type of the arithmetic (float, double) and its suffix (f32, f64),
  *              appended to every name;
- * the row kernel, below, once per element type of the CFA: this file instantiates itself
- * with IN_T, IS and IN_IS_INT defined.
+ * through rgbz_each_real.h (rgbz_templating.h); the row kernel, below, once per element
+ * type of the CFA: this file instantiates itself through rgbz_each_type.h (IN_T, IS,
+ * IN_IS_INT).
  */
 #ifndef REAL
 #error "colour_isp.template.h: #define REAL (float or double) and RS first"
@@ -262,34 +263,9 @@ static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
     }
 }
 
-#define IN_T uint8_t
-#define IS u8
-#define IN_IS_INT 1
-#include "colour_isp.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T uint16_t
-#define IS u16
-#define IN_IS_INT 1
-#include "colour_isp.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T float
-#define IS f32
-#define IN_IS_INT 0
-#include "colour_isp.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T double
-#define IS f64
-#define IN_IS_INT 0
-#include "colour_isp.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
+#define RGBZ_TYPE_TEMPLATE "colour_isp.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
 
 int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
                                  const int32_t *phase, int mode, const REAL *scale, REAL black,
@@ -324,7 +300,7 @@ int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, p
     int st = RGBZ_OK;
 #define CI_RENDER_(s, T) st = RGBZ_CAT3(ci_render, RS, s)((const T *)src, rows, cols, &a, out, \
                                                           bits, workers)
-    CI_SWITCH_TYPE(in_type, CI_RENDER_, st = RGBZ_EINVAL)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_RENDER_, st = RGBZ_EINVAL)
 #undef CI_RENDER_
     free(colmap);
     free(codes);

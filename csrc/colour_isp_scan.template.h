@@ -1,7 +1,7 @@
 /*
  * colour_isp_scan.template.h -- the passes of colour_isp.c over a raw frame, for one element
  * type: the defect candidates (tests 1 and 2) and the grey-world sums. Instantiated by
- * colour_isp.c once per element type, with
+ * colour_isp.c once per element type through rgbz_each_type.h (rgbz_templating.h), with
  *   IN_T, IS, IN_IS_INT   the C type (uint8_t, uint16_t, float, double), its suffix (u8,
  *                         u16, f32, f64) and 1 for an integer type.
  */
