@@ -42,7 +42,7 @@ call), with 1 thread and with all threads. Beside it:
   strips) and the NumPy stages (run with return_stages, seconds per stage),
   timed in the same rounds as OpenCV's edge-aware demosaic with the same
   threads, with the paired speed ratios (medians); and the sensor
-  simulation of the image with a depth plane (rgbz_fast.simulate, 3 ToF
+  simulation of the image with a depth plane (as rgbz-fast simulate makes it, 3 ToF
   frequencies, no optics), noise-free and noisy, on Mask1 and Mask2 (targets on
   the full frame, Mask1: <= 0.5 s noise-free, <= 1 s noisy).
 * Peak memory of one reconstruct call on the full frame, measured in a fresh
