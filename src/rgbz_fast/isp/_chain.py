@@ -35,7 +35,7 @@ import numpy as np
 
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
-from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
+from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
                          check_number, check_workers, merge_params)
 from . import _fused
 from ._defects import DefectCorrection, _check_known, correct_defects
@@ -148,7 +148,8 @@ class ColourISP:
             object.__setattr__(self, name, stage_params(cls, getattr(self, name),
                                                         name=f"ColourISP.{name}",
                                                         allow_none=False))
-        if isinstance(self.output_bits, bool) or self.output_bits not in (8, 16):
+        if isinstance(self.output_bits, bool) or not isinstance(
+                self.output_bits, (int, np.integer)) or self.output_bits not in (8, 16):
             raise ValueError(f"ColourISP.output_bits: expected 8 or 16, got "
                              f"{self.output_bits!r}")
         if self.black_level is not None:
@@ -256,8 +257,10 @@ class ColourISP:
             ``"output"`` (the returned image), ``"seconds"`` (time per
             stage), ``"pattern"``, ``"black_level"``, ``"white_level"``.
         """
+        return_stages = check_flag(return_stages, "return_stages")
         data, pat, bd, black, white, recorded = self._inputs(frame, pattern, bit_depth,
-                                                             black_level, reference)
+                                                             black_level,
+                                                             check_flag(reference, "reference"))
         gains, matrix = self._recorded(recorded, gains, None)
         if not return_stages and self._fused(data):
             threads = check_workers(workers)
@@ -329,6 +332,7 @@ class ColourISP:
         ((8, 8, 3), dtype('uint8'), 187, [1.0, 1.0, 1.0])
         """
         data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        return_stages = check_flag(return_stages, "return_stages")
         pattern = get_pattern(phase)
         if pattern.has_z or pattern.bayer_phase is None:
             raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
@@ -348,9 +352,12 @@ class ColourISP:
 
     def _fused(self, data):
         """Whether the stages after the input checks run as the C passes of
-        :mod:`._fused` (the same image): the Malvar demosaic on a frame it takes."""
+        :mod:`._fused` (the same image): the Malvar demosaic on a frame it takes. A float
+        frame without the white balance's clip stays on the stages, which refuse balanced
+        values that overflow the working precision (the C passes would carry them on)."""
         return (self.demosaicing.method == "malvar2004" and data.dtype in FRAME_DTYPES
-                and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2)
+                and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2
+                and (self.white_balance.clip or data.dtype.kind != "f"))
 
     def white_balance_gains(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None):
         """The white-balance gains (R, G, B) :meth:`render` applies to a complete Bayer CFA:
@@ -439,6 +446,7 @@ class ColourISP:
         if not isinstance(frame, RawFrame):
             raise TypeError(f"frame: expected a RawFrame with a reference CFA, got "
                             f"{type(frame).__name__}")
+        return_stages = check_flag(return_stages, "return_stages")
         ref, ref_st = self.run(frame, reference=True, workers=workers, return_stages=True)
         test, test_st = self.run(frame, gains=ref_st["gains"], workers=workers,
                                  return_stages=True)

@@ -101,7 +101,7 @@ def gains(full, bayer, wb, black, white, given, workers):
     sums, counts = np.zeros(4), np.zeros(4, np.int64)
     _kernels.ci_phase_sums(full, float(white), sums, counts,
                            kernel_threads(workers, full.size))
-    return _gains_from_sums(list(sums), list(counts), bayer.bayer_tile(), black)
+    return _gains_from_sums(list(sums), list(counts), bayer.bayer_tile(), black, full, white)
 
 
 def render(full, bayer, chain, black, white, given, workers, matrix=None):

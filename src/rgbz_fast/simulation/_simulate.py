@@ -97,7 +97,7 @@ from .. import _kernels
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_seed
+from .._validate import check_flag, check_number, check_seed
 from . import _pixels
 from ._loaders import load_scene
 from ._noise import (RNG_VERSION, STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
@@ -145,7 +145,17 @@ def _exposure(level, sensor):
         raise ValueError(f"scene: the {sensor.ae_percentile:g}th percentile of the signal is 0 "
                          "(a black scene); auto-exposure needs light -- set "
                          "ColourSensor(exposure=...) instead")
-    return sensor.ae_target * sensor.usable_electrons() / level
+    exposure = sensor.ae_target * sensor.usable_electrons() / level
+    if not exposure <= _MAX_EXPOSURE:
+        raise ValueError(f"scene: too dark for auto-exposure, which would need {exposure:g} s "
+                         f"(more than {_MAX_EXPOSURE:g} s); brighten the scene or set "
+                         "ColourSensor(exposure=...)")
+    return exposure
+
+
+#: the longest exposure, in seconds: what ColourSensor(exposure=...) accepts, and what
+#: auto-exposure may choose (a longer one turns the dark current alone into ~1e50 electrons)
+_MAX_EXPOSURE = 3600.0
 
 
 def _check_optics(optics):
@@ -216,7 +226,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
     if not isinstance(sensor, ColourSensor):
         raise TypeError(f"colour_sensor: expected a ColourSensor, got {type(sensor).__name__}")
     seed = check_seed(seed, "seed")
-    dn, _, meta = _colour_frames(scene, pattern, sensor, seed, bool(noise),
+    dn, _, meta = _colour_frames(scene, pattern, sensor, seed, check_flag(noise, "noise"),
                                  _check_optics(optics), check_rng_version(rng_version), workers,
                                  rgbz=False)
     return RawFrame(_Adopt(dn), pattern.bayer_pattern(), sensor.bit_depth, meta=meta)
@@ -404,7 +414,7 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     seed = check_seed(seed, "seed")
     optics = _check_optics(optics)
     rng_version = check_rng_version(rng_version)
-    noise = bool(noise)
+    noise = check_flag(noise, "noise")
     if not scene.has_depth:
         raise ValueError("scene: has no depth map, so there is nothing for the ToF pixels "
                          "to measure")
@@ -412,8 +422,14 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         raise ValueError(f"pattern: {pattern.name!r} has no Z site")
     shape = pattern.check_shape(scene.shape, "scene")
     pitch = sensor.pixel_pitch_um
-    if pitch is None:
-        pitch = 2.8 if pixel_pitch_um is None else float(pixel_pitch_um)
+    if pixel_pitch_um is not None:
+        given = check_number(pixel_pitch_um, "pixel_pitch_um", lo=0, lo_open=True)
+        if pitch is not None and given != pitch:
+            raise ValueError(f"pixel_pitch_um: {given:g} um differs from the sensor's "
+                             f"pixel_pitch_um {pitch:g} um; give one of them")
+        pitch = given
+    if sensor.pixel_pitch_um is None:
+        pitch = 2.8 if pitch is None else pitch
         sensor = replace(sensor, pixel_pitch_um=pitch)
     block = sensor.z_block if sensor.z_block is not None else _z_block(pattern)
     rows, cols = _z_sites(pattern, shape, block)
@@ -556,9 +572,9 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
                          "reference Bayer CFA to simulate")
 
     optics = _check_optics(optics)
-    seed = check_seed(seed, "seed")
+    seed, noise = check_seed(seed, "seed"), check_flag(noise, "noise")
     rng_version = check_rng_version(rng_version)
-    ref, data, colour_meta = _colour_frames(scene, pattern, colour_sensor, seed, bool(noise),
+    ref, data, colour_meta = _colour_frames(scene, pattern, colour_sensor, seed, noise,
                                             optics, rng_version, workers, rgbz=True)
 
     if not scene.has_depth:
