@@ -21,6 +21,7 @@ them, so no code is typed twice.
 include "_kernels_common.pxi"
 
 from libc.string cimport memset
+from libc.stdint cimport uint32_t
 
 cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
@@ -345,6 +346,278 @@ def reconstruct_fixed(const int_frame_t[:, ::1] src, int_frame_t[:, ::1] dst, in
     _raise_for(status)
 
 
+# ---------------------------------------------------------------------- sensor simulation (sim.c)
+cdef extern from "sim.h" nogil:
+    ctypedef struct rgbz_sim_noise:
+        int32_t noise, shot, quantise
+        double prnu, dsnu, read_noise, full_well, black, gain, top, dark
+        uint32_t key_temporal[4]
+        uint32_t key_fpn[4]
+    ctypedef struct rgbz_sim_tof_light:
+        double k, power, th, tv, ambient, duty, c25, suppression, unambiguous
+        double speed_of_light, two_pi
+        int32_t nfreq
+        double four_pi_f[16]
+        double shift_re[4]
+        double shift_im[4]
+    void rgbz_sim_key(const uint64_t *words, Py_ssize_t nwords, uint64_t stream, uint32_t *key)
+    int rgbz_sim_blocks(uint32_t c0, uint32_t c1, uint32_t c2, uint32_t c3, const uint32_t *key,
+                        Py_ssize_t n, uint32_t *out)
+    int rgbz_sim_variates(int kind, const double *lam, uint32_t c1, uint32_t c2,
+                          const uint32_t *key, Py_ssize_t n, double *out, int workers)
+    int rgbz_sim_math(int which, const double *x, Py_ssize_t n, double *out)
+    int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, Py_ssize_t rows, Py_ssize_t cols,
+                         int block, int64_t *site_r, int64_t *site_c, Py_ssize_t *count)
+    int rgbz_sim_rate_hist(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           Py_ssize_t row_stride, Py_ssize_t col_stride,
+                           const Py_ssize_t *chan_off, const int32_t *tile, int P, int Q,
+                           const double *per_unit, uint64_t *hist, int workers)
+    int rgbz_sim_rate_gather(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                             Py_ssize_t row_stride, Py_ssize_t col_stride,
+                             const Py_ssize_t *chan_off, const int32_t *tile, int P, int Q,
+                             const double *per_unit, uint32_t lo16, uint32_t hi16, double *out,
+                             Py_ssize_t cap, Py_ssize_t *count, int workers)
+    int rgbz_sim_colour(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                        Py_ssize_t row_stride, Py_ssize_t col_stride, const Py_ssize_t *chan_off,
+                        const int32_t *tile, const uint8_t *tile_z, int P, int Q,
+                        const double *per_unit, double exposure, const rgbz_sim_noise *nz,
+                        void *ref, void *data, int64_t *saturated, int workers)
+    int rgbz_sim_tof(const double *depth, const uint8_t *depth_valid, Py_ssize_t rows,
+                     Py_ssize_t cols, int ir_type, const void *ir, Py_ssize_t ir_rs,
+                     Py_ssize_t ir_cs, int ir_estimate, const int64_t *site_r,
+                     const int64_t *site_c, Py_ssize_t n, int block,
+                     const rgbz_sim_tof_light *light, const rgbz_sim_noise *nz, void *taps,
+                     double *depth_true, uint8_t *valid, uint8_t *beyond, uint8_t *sat,
+                     double *max_depth, int workers)
+    int rgbz_sim_tof_expose(const double *mean, const double *suppress, const int64_t *site_r,
+                            const int64_t *site_c, Py_ssize_t n, int nfreq,
+                            const rgbz_sim_noise *nz, void *taps, uint8_t *sat, int workers)
+
+ctypedef fused dn_t:
+    uint16_t
+    double
+
+
+cdef rgbz_sim_noise _sim_noise(dict p, const uint32_t[::1] keys) except *:
+    """The C noise chain of a dict of its fields (rgbz_fast.simulation._noise.noise_fields)."""
+    cdef rgbz_sim_noise nz
+    nz.noise, nz.shot, nz.quantise = p["noise"], p["shot"], p["quantise"]
+    nz.prnu, nz.dsnu, nz.read_noise = p["prnu"], p["dsnu"], p["read_noise"]
+    nz.full_well, nz.black, nz.gain = p["full_well"], p["black"], p["gain"]
+    nz.top, nz.dark = p["top"], p["dark"]
+    cdef int i
+    if keys.shape[0] != 8:
+        raise ValueError("keys: expected the 8 words of the temporal and fixed-pattern keys")
+    for i in range(4):
+        nz.key_temporal[i] = keys[i]
+        nz.key_fpn[i] = keys[4 + i]
+    return nz
+
+
+def sim_key(const uint64_t[::1] words, uint64_t stream):
+    """The four 32-bit words of the key of a seed's 64-bit words and a stream."""
+    cdef uint32_t key[4]
+    rgbz_sim_key(&words[0], words.shape[0], stream, key)
+    return int(key[0]), int(key[1]), int(key[2]), int(key[3])
+
+
+def sim_blocks(uint32_t c0, uint32_t c1, uint32_t c2, uint32_t c3, const uint32_t[::1] key,
+               uint32_t[:, ::1] out):
+    """Threefry4x32-20 blocks at counters (c0 + i, c1, c2, c3) and key (4 words) into
+    out (n, 4)."""
+    cdef int status
+    if key.shape[0] != 4:
+        raise ValueError("key: expected 4 words")
+    if out.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_sim_blocks(c0, c1, c2, c3, &key[0], out.shape[0], &out[0, 0])
+    _raise_for(status)
+
+
+def sim_variates(int kind, const double[::1] lam, uint32_t c1, uint32_t c2,
+                 const uint32_t[::1] key, double[::1] out, int workers):
+    """Standard normals (kind 0) or Poisson variates of means lam (kind 1) into out."""
+    cdef int status
+    cdef const double *lp = &lam[0] if lam.shape[0] else NULL
+    if out.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_sim_variates(kind, lp, c1, c2, &key[0], out.shape[0], &out[0], workers)
+    _raise_for(status)
+
+
+def sim_math(int which, const double[::1] x, double[::1] out):
+    """The Box-Muller transform's log (0), sin (1) or cos (2) of 2 pi x."""
+    cdef int status
+    if x.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_sim_math(which, &x[0], x.shape[0], &out[0])
+    _raise_for(status)
+
+
+def sim_z_sites(const uint8_t[:, ::1] tile_z, Py_ssize_t rows, Py_ssize_t cols, int block):
+    """(rows, cols) int64 arrays of the Z measurements' top-left cells, row-major."""
+    import numpy as np
+    cdef int status
+    cdef Py_ssize_t n = 0
+    status = rgbz_sim_z_sites(&tile_z[0, 0], tile_z.shape[0], tile_z.shape[1], rows, cols,
+                              block, NULL, NULL, &n)
+    _raise_for(status)
+    r = np.empty(n, np.int64)
+    c = np.empty(n, np.int64)
+    cdef int64_t[::1] rv = r, cv = c
+    if n:
+        status = rgbz_sim_z_sites(&tile_z[0, 0], tile_z.shape[0], tile_z.shape[1], rows, cols,
+                                  block, &rv[0], &cv[0], &n)
+        _raise_for(status)
+    return r, c
+
+
+def sim_rate_hist(const rgb_t[::1] src, Py_ssize_t rows, Py_ssize_t cols, Py_ssize_t row_stride,
+                  Py_ssize_t col_stride, const Py_ssize_t[::1] chan_off,
+                  const int32_t[:, ::1] tile, const double[::1] per_unit, uint64_t[::1] hist,
+                  int workers):
+    """Histogram (65536 bins) of the top 16 bits of every site's signal rate."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    with nogil:
+        status = rgbz_sim_rate_hist(t, &src[0], rows, cols, row_stride, col_stride, &chan_off[0],
+                                    &tile[0, 0], tile.shape[0], tile.shape[1], &per_unit[0],
+                                    &hist[0], workers)
+    _raise_for(status)
+
+
+def sim_rate_gather(const rgb_t[::1] src, Py_ssize_t rows, Py_ssize_t cols,
+                    Py_ssize_t row_stride, Py_ssize_t col_stride,
+                    const Py_ssize_t[::1] chan_off, const int32_t[:, ::1] tile,
+                    const double[::1] per_unit, uint32_t lo16, uint32_t hi16, double[::1] out,
+                    int workers):
+    """The rates whose top 16 bits lie in [lo16, hi16] into out; returns how many there are."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef Py_ssize_t count = 0
+    cdef double dummy = 0
+    cdef double *op = &out[0] if out.shape[0] else &dummy
+    with nogil:
+        status = rgbz_sim_rate_gather(t, &src[0], rows, cols, row_stride, col_stride,
+                                      &chan_off[0], &tile[0, 0], tile.shape[0], tile.shape[1],
+                                      &per_unit[0], lo16, hi16, op, out.shape[0], &count,
+                                      workers)
+    _raise_for(status)
+    return int(count)
+
+
+def sim_colour(const rgb_t[::1] src, Py_ssize_t rows, Py_ssize_t cols, Py_ssize_t row_stride,
+               Py_ssize_t col_stride, const Py_ssize_t[::1] chan_off, const int32_t[:, ::1] tile,
+               const uint8_t[:, ::1] tile_z, const double[::1] per_unit, double exposure,
+               dict noise, const uint32_t[::1] keys, dn_t[:, ::1] ref, dn_t[:, ::1] data,
+               int workers):
+    """The colour pixels through the noise chain into ref (and data, 0 at the Z sites, if
+    not None); returns the number of saturated samples."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef rgbz_sim_noise nz = _sim_noise(noise, keys)
+    cdef int64_t nsat = 0
+    cdef void *dp = NULL
+    cdef const uint8_t *zp = NULL
+    cdef bint u16
+    if dn_t is uint16_t:
+        u16 = True
+    else:
+        u16 = False
+    if u16 != bool(nz.quantise):
+        raise ValueError("sim_colour: uint16 outputs go with quantise, float64 without")
+    if data is not None:
+        dp = &data[0, 0]
+        zp = &tile_z[0, 0]
+    with nogil:
+        status = rgbz_sim_colour(t, &src[0], rows, cols, row_stride, col_stride, &chan_off[0],
+                                 &tile[0, 0], zp, tile.shape[0], tile.shape[1], &per_unit[0],
+                                 exposure, &nz, &ref[0, 0], dp, &nsat, workers)
+    _raise_for(status)
+    return int(nsat)
+
+
+cdef rgbz_sim_tof_light _sim_light(const double[::1] vals, const double[::1] four_pi_f,
+                                   const double[::1] shift_re,
+                                   const double[::1] shift_im) except *:
+    cdef rgbz_sim_tof_light L
+    cdef int i
+    if four_pi_f.shape[0] > 16 or shift_re.shape[0] != 4 or shift_im.shape[0] != 4:
+        raise ValueError("sim_tof: at most 16 frequencies and 4 tap shifts")
+    L.k, L.power, L.th, L.tv, L.ambient = vals[0], vals[1], vals[2], vals[3], vals[4]
+    L.duty, L.c25, L.suppression, L.unambiguous = vals[5], vals[6], vals[7], vals[8]
+    L.speed_of_light, L.two_pi = vals[9], vals[10]
+    L.nfreq = four_pi_f.shape[0]
+    for i in range(L.nfreq):
+        L.four_pi_f[i] = four_pi_f[i]
+    for i in range(4):
+        L.shift_re[i] = shift_re[i]
+        L.shift_im[i] = shift_im[i]
+    return L
+
+
+def sim_tof(const double[:, ::1] depth, const uint8_t[:, ::1] depth_valid, const rgb_t[::1] ir,
+            Py_ssize_t ir_rs, Py_ssize_t ir_cs, int ir_estimate, const int64_t[::1] site_r,
+            const int64_t[::1] site_c, int block, const double[::1] light,
+            const double[::1] four_pi_f, const double[::1] shift_re, const double[::1] shift_im,
+            dict noise, const uint32_t[::1] keys, dn_t[:, :, ::1] taps, double[::1] depth_true,
+            uint8_t[::1] valid, uint8_t[::1] beyond, uint8_t[::1] sat, int workers):
+    """The taps (F, 4, n) of ideal Z pixels and their per-site flags; returns the largest
+    valid cell depth (-inf if none)."""
+    cdef int status
+    cdef int t = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    cdef rgbz_sim_noise nz = _sim_noise(noise, keys)
+    cdef rgbz_sim_tof_light L = _sim_light(light, four_pi_f, shift_re, shift_im)
+    cdef double dmax = 0
+    cdef Py_ssize_t n = site_r.shape[0]
+    cdef bint u16
+    if dn_t is uint16_t:
+        u16 = True
+    else:
+        u16 = False
+    if u16 != bool(nz.quantise):
+        raise ValueError("sim_tof: uint16 taps go with quantise, float64 without")
+    if n == 0:
+        return float("-inf")
+    with nogil:
+        status = rgbz_sim_tof(&depth[0, 0], &depth_valid[0, 0], depth.shape[0], depth.shape[1],
+                              t, &ir[0], ir_rs, ir_cs, ir_estimate, &site_r[0], &site_c[0], n,
+                              block, &L, &nz, &taps[0, 0, 0], &depth_true[0], &valid[0],
+                              &beyond[0], &sat[0], &dmax, workers)
+    _raise_for(status)
+    return float(dmax)
+
+
+def sim_tof_expose(const double[:, :, ::1] mean, const double[::1] suppress,
+                   const int64_t[::1] site_r, const int64_t[::1] site_c, dict noise,
+                   const uint32_t[::1] keys, dn_t[:, :, ::1] taps, uint8_t[::1] sat,
+                   int workers):
+    """The noise chain of taps whose mean electrons (F, 4, n) are given (suppress: per site,
+    or None)."""
+    cdef int status
+    cdef rgbz_sim_noise nz = _sim_noise(noise, keys)
+    cdef const double *sp = NULL
+    cdef Py_ssize_t n = mean.shape[2]
+    cdef bint u16
+    if dn_t is uint16_t:
+        u16 = True
+    else:
+        u16 = False
+    if u16 != bool(nz.quantise):
+        raise ValueError("sim_tof_expose: uint16 taps go with quantise, float64 without")
+    if suppress is not None:
+        sp = &suppress[0] if suppress.shape[0] else NULL
+    if n == 0:
+        return
+    with nogil:
+        status = rgbz_sim_tof_expose(&mean[0, 0, 0], sp, &site_r[0], &site_c[0], n,
+                                     mean.shape[0], &nz, &taps[0, 0, 0], &sat[0], workers)
+    _raise_for(status)
+
+
 # ---------------------------------------------------------------------- ToF phase of phasors (tof.h)
 cdef extern from "tof.h" nogil:
     int rgbz_tof_phase_iq(const double *i_comp, const double *q_comp, Py_ssize_t F,
@@ -542,4 +815,90 @@ def tofg_upsample(const frame_t[:, :, ::1] guide, double scale, const double[::1
                                     &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0], spacing, reach,
                                     inv2s2, inv2hc2, tol_k, tol_min, po, own_k, ambiguity, gap,
                                     &out[0, 0], &conf[0, 0], workers)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- fused colour ISP (colour_isp.h)
+cdef extern from "colour_isp.h" nogil:
+    int RGBZ_CI_MAX_NEIGHBOURS
+    int rgbz_ci_defect_candidates(int in_type, const void *src, Py_ssize_t rows,
+                                  Py_ssize_t cols, int32_t P, int32_t Q, const int32_t *noff,
+                                  const int32_t *offs, float thr, float k, Py_ssize_t capacity,
+                                  int64_t *rr, int64_t *cc, float *hot, float *cold,
+                                  float *spread, Py_ssize_t *count, int workers)
+    int rgbz_ci_phase_sums(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           double white, double *sums, int64_t *counts, int workers)
+    int rgbz_ci_render_f32(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           const int32_t *phase, int mode, const float *scale, float black,
+                           int clip, const float *matrix, const float *thresholds, int bits,
+                           void *out, int workers)
+    int rgbz_ci_render_f64(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                           const int32_t *phase, int mode, const double *scale, double black,
+                           int clip, const double *matrix, const double *thresholds, int bits,
+                           void *out, int workers)
+
+#: neighbours of one tile position in the defect test (the offsets' second axis)
+CI_MAX_NEIGHBOURS = RGBZ_CI_MAX_NEIGHBOURS
+
+
+def ci_defect_candidates(const frame_t[:, ::1] src, const int32_t[::1] noff,
+                         const int32_t[:, :, :, ::1] offs, float thr, float k,
+                         int64_t[::1] rr, int64_t[::1] cc, float[::1] hot, float[::1] cold,
+                         float[::1] spread, int workers):
+    """Tests 1 and 2 of the defect detection; the candidates' count (it may exceed the room
+    of the outputs, which then hold the first ones: call again with more room)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t count = 0, cap = rr.shape[0]
+    if (cc.shape[0] < cap or hot.shape[0] < cap or cold.shape[0] < cap
+            or spread.shape[0] < cap or offs.shape[3] != 2
+            or offs.shape[2] != RGBZ_CI_MAX_NEIGHBOURS
+            or noff.shape[0] != offs.shape[0] * offs.shape[1]):
+        raise ValueError("ci_defect_candidates: inconsistent array shapes")
+    with nogil:
+        status = rgbz_ci_defect_candidates(
+            in_type, &src[0, 0] if src.shape[0] * src.shape[1] else NULL,
+            src.shape[0], src.shape[1], <int32_t> offs.shape[0], <int32_t> offs.shape[1],
+            &noff[0], &offs[0, 0, 0, 0], thr, k, cap,
+            &rr[0] if cap else NULL, &cc[0] if cap else NULL, &hot[0] if cap else NULL,
+            &cold[0] if cap else NULL, &spread[0] if cap else NULL, &count, workers)
+    _raise_for(status)
+    return count
+
+
+def ci_phase_sums(const frame_t[:, ::1] src, double white, double[::1] sums,
+                  int64_t[::1] counts, int workers):
+    """The grey-world sums and counts of the four 2x2 phases of a complete Bayer CFA."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if sums.shape[0] < 4 or counts.shape[0] < 4:
+        raise ValueError("ci_phase_sums: sums and counts need 4 entries")
+    with nogil:
+        status = rgbz_ci_phase_sums(in_type, &src[0, 0], src.shape[0], src.shape[1], white,
+                                    &sums[0], &counts[0], workers)
+    _raise_for(status)
+
+
+def ci_render(const frame_t[:, ::1] src, const int32_t[::1] phase, int mode,
+              const rgb_t[::1] scale, rgb_t black, int clip, const rgb_t[::1] matrix,
+              const rgb_t[::1] thresholds, code_t[:, :, ::1] out, int workers):
+    """White balance .. output of a complete Bayer CFA (matrix: 9 values, or empty for the
+    identity); the precision is the type of scale, black, matrix and thresholds."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int bits = 8 if code_t is uint8_t else 16
+    cdef const rgb_t *m = &matrix[0] if matrix.shape[0] else NULL
+    if (phase.shape[0] != 4 or scale.shape[0] != 3 or matrix.shape[0] not in (0, 9)
+            or thresholds.shape[0] != (1 << bits) or out.shape[2] != 3
+            or out.shape[0] != src.shape[0] or out.shape[1] != src.shape[1]):
+        raise ValueError("ci_render: inconsistent array shapes")
+    with nogil:
+        if rgb_t is float:
+            status = rgbz_ci_render_f32(in_type, &src[0, 0], src.shape[0], src.shape[1],
+                                        &phase[0], mode, &scale[0], black, clip, m,
+                                        &thresholds[0], bits, &out[0, 0, 0], workers)
+        else:
+            status = rgbz_ci_render_f64(in_type, &src[0, 0], src.shape[0], src.shape[1],
+                                        &phase[0], mode, &scale[0], black, clip, m,
+                                        &thresholds[0], bits, &out[0, 0, 0], workers)
     _raise_for(status)

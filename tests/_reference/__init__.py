@@ -7,6 +7,8 @@
   rgbz_fast.metrics computed them in NumPy, SciPy and colour-science before its
   C kernels (csrc/metrics.c).
 * :mod:`_reference.tof` -- the ToF ISP's bilateral phasor mean (csrc/tof_filter.c).
+* :mod:`_reference.simulation` -- the sensor models' noise-free colour pixels and ideal
+  ToF taps (csrc/sim.c), bit for bit.
 
 The ToF kernels are checked against the vectorised NumPy twin
 ``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit; the

@@ -121,8 +121,16 @@ def test_bench_colour_chain_section(capsys):
     assert list(ch["stages_s"]) == list(__import__("rgbz_fast.isp").isp.STAGES)
     assert ch["reconstruction"] == "sg" and ch["demosaic"] == "malvar2004"
     assert 0 < sum(ch["stages_s"].values()) <= ch["total_s"] * 1.5 + 1e-3
+    assert ch["fused_s"] > 0 and ch["identical"] is True
     text = bench.format_chain(ch)
-    assert "defect_correction" in text and "gamma" in text
+    assert "defect_correction" in text and "gamma" in text and "fused (C passes)" in text
+    sim = res["simulate"]
+    assert set(sim["patterns"]) == {"mask1", "mask2"} and sim["frame_shape"] == [48, 64]
+    for r in sim["patterns"].values():
+        assert all(r[k]["median_s"] > 0 for k in ("noise_free", "noisy"))
+    assert {t["met"] for t in sim["targets"].values()} == {None}      # not the target frame
+    text = bench.format_simulate(sim)
+    assert "noise-free" in text and "no verdict" in text
 
 
 def test_measure_memory_tiny_frame():

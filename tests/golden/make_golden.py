@@ -1,6 +1,8 @@
 """Golden outputs: a grid of reconstructions, ToF depths, ISP images and evaluate tables.
 
-Run ``python tests/golden/make_golden.py`` to (re)write ``tests/golden/golden.npz``;
+Run ``python tests/golden/make_golden.py`` to (re)write ``tests/golden/golden.npz``
+(``python tests/golden/make_golden.py tof/mask1 sim/`` recomputes only the cases whose
+names start with the prefixes given and keeps every other entry);
 ``tests/test_golden.py`` recomputes every entry and compares. The file was first
 written before the 0.2 restructuring (issue 13) so that the restructured code
 could be shown to give bit-identical results; regenerate it only for a
@@ -11,6 +13,9 @@ Entries
 -------
 * ``recon/...``: SHA-256 of the output bytes of ``reconstruct`` (C kernels only:
   exact on any machine of the same libm);
+* ``sim/rng1/...``: frames of ``rng_version=1``, NumPy's random streams of rgbz-fast
+  0.1, which must stay the frames that release simulated (they are its ``tof/.../noise1``
+  taps and frames);
 * ``tof/...``, ``isp/...``, ``eval/...``, ``sim/...``: the arrays themselves.
   These pass through NumPy's and SciPy's transcendental functions (and FFTs),
   whose SIMD code paths may differ by an ulp between CPUs and releases: the
@@ -164,6 +169,16 @@ def _tof_cases(a):
                 return out
             cases.append((f"tof/{p}/noise{int(noise)}", run))
 
+    # the random numbers of rgbz-fast 0.1 (rng_version=1): its frames, bit for bit
+    for p in ("mask1", "mask2", "rows"):
+        def rng1(p=p):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                fr = a["simulate"](sc, p, seed=3, noise=True, rng_version=1)
+            return {"taps": np.asarray(fr.tof.taps, np.float64),
+                    "cfa": np.asarray(fr.data, np.float64)}
+        cases.append((f"sim/rng1/{p}", rng1))
+
     def optics_case():
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
@@ -284,10 +299,23 @@ def compute(cases):
     return out
 
 
-def main():
-    values = compute(all_cases())
+def main(prefixes=()):
+    """Write the golden file; with name ``prefixes`` recompute only the cases whose names
+    start with one and keep every other entry of the existing file."""
+    cases = all_cases()
+    if prefixes:
+        cases = [c for c in cases if c[0].startswith(tuple(prefixes))]
+        if not cases:
+            raise SystemExit(f"no golden case starts with {', '.join(prefixes)}")
+    values = compute(cases)
     arrays = {}
     hashes = {}
+    if prefixes:
+        old = np.load(GOLDEN, allow_pickle=False)
+        hashes = json.loads(str(old["__hashes__"]))
+        arrays = {k: old[k] for k in old.files if not k.startswith("__")
+                  and not any(k.startswith(p) for p in prefixes)}
+        hashes = {k: v for k, v in hashes.items() if not k.startswith(tuple(prefixes))}
     for k, v in values.items():
         if isinstance(v, str):
             hashes[k] = v
@@ -300,4 +328,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

@@ -78,3 +78,35 @@ def test_chain_without_stages_gives_the_same_image(precision, matrix):
         ref = isp.render(frame.reference, "GRBG", bit_depth=11)
         assert np.array_equal(ref, isp.render(frame.reference, "GRBG", bit_depth=11,
                                               return_stages=True)[0])
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("bits", [8, 16])
+def test_encode_table_gives_the_codes_of_the_stages(rng, dtype, bits):
+    """The thresholds of the fused chain's table (isp._encode_table): the code of a value is
+    the number of thresholds at or below it, the code of the NumPy stages bit for bit, at
+    and around every threshold (one float either side) and on random values. (Every
+    float32 of [0, 1] was checked once, 8 bits: 1 065 353 217 values, none differs.)"""
+    from rgbz_fast.isp._encode_table import encode_by_table, encode_thresholds
+
+    t = encode_thresholds(dtype, bits)
+    assert t.dtype == dtype and t.size == 2 ** bits and t[0] == 0 and np.all(np.diff(t) > 0)
+    x = np.concatenate([rng.random(300_000).astype(dtype), t[1:], np.nextafter(t[1:], dtype(-1)),
+                        np.nextafter(t[1:], dtype(2)), np.array([-1, 0, 1, 2, 1e-30], dtype)])
+    x = x[:x.size // 3 * 3]
+    got = encode_by_table(x, bits)
+    np.testing.assert_array_equal(got, _encode(x, bits))
+    np.testing.assert_array_equal(got, _stages(x.reshape(-1, 1, 3), bits).reshape(-1))
+
+
+def test_white_balance_gains_are_the_renders():
+    cfa = rz.mosaic(load_kodak(4, crop=(64, 96)), "bayer").data
+    chain = ColourISP(black_level=16.0)
+    _, stages = chain.render(cfa, "GRBG", return_stages=True)
+    np.testing.assert_array_equal(chain.white_balance_gains(cfa, "GRBG"), stages["gains"])
+    fixed = chain.replace(white_balance={"gains": (1.5, 1.0, 2.0)})
+    assert fixed.white_balance_gains(cfa).tolist() == [1.5, 1.0, 2.0]
+    assert chain.replace(white_balance={"method": "none"}).white_balance_gains(cfa).tolist() \
+        == [1.0, 1.0, 1.0]
+    with pytest.raises(ValueError, match="phase"):
+        chain.white_balance_gains(cfa, "mask1")

@@ -270,18 +270,28 @@ def test_no_depth_runs_no_tof_model(monkeypatch):
 
 def test_noise_free_draws_no_random_numbers(monkeypatch):
     scene = Scene(load_kodak(1, crop=(32, 32)), depth=np.full((32, 32), 1.5))
-    drawn = []
-    real = np.random.default_rng
+    drawn, keyed = [], []
+    real, real_keys = np.random.default_rng, sensor_mod.stream_keys
 
     def counting(*args, **kw):
         drawn.append(args)
         return real(*args, **kw)
 
+    def counting_keys(*args, **kw):
+        keyed.append(args)
+        return real_keys(*args, **kw)
+
     monkeypatch.setattr(np.random, "default_rng", counting)
-    f = simulate(scene, "mask2", noise=False)
-    assert drawn == [] and f.tof is not None
+    monkeypatch.setattr(sensor_mod, "stream_keys", counting_keys)
+    for version in (1, 2):
+        f = simulate(scene, "mask2", noise=False, rng_version=version)
+        assert drawn == [] and keyed == [] and f.tof is not None
+    # version 1: NumPy's generators, colour: temporal + FPN; ToF: temporal + FPN
+    simulate(scene, "mask2", noise=True, rng_version=1)
+    assert len(drawn) == 4 and keyed == []
+    # version 2: the keys of the colour streams and of the ToF streams
     simulate(scene, "mask2", noise=True)
-    assert len(drawn) == 4          # colour: temporal + FPN; ToF: temporal + FPN
+    assert len(drawn) == 4 and len(keyed) == 2
 
 
 def test_mask2_and_mask1_sites():

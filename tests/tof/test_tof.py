@@ -415,9 +415,10 @@ def test_flags_saturation_low_signal_and_inconsistency():
     assert np.mean(res.flags & FLAG_LOW_SIGNAL > 0) > 0.9
     loose = tof_depth(far, min_snr=0, max_residual=100, max_sigma=None, flying_step=None,
                       min_reflectance=0)
-    # only the guard at the end of the range is left: 7 m is within 5 sigma of 7.495 m
+    # only the guard at the end of the range is left: 7 m is within 5 sigma of 7.495 m,
+    # and a site whose noise carries it past the end wraps to just below 0
     assert np.all((loose.flags & ~np.uint8(FLAG_OUT_OF_RANGE)) == 0)
-    assert np.all(loose.valid | (loose.depth > U - 5 * loose.sigma))
+    assert np.all(loose.valid | (loose.depth > U - 5 * loose.sigma) | (loose.depth < 0))
 
     # three frequencies that see three different distances: inconsistent
     base = _wall(1.0, "mask1", (8, 8), noise=False)

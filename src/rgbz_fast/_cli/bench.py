@@ -38,7 +38,13 @@ call), with 1 thread and with all threads. Beside it:
   with the check that both agree. The target is >= 5x NumPy with all threads.
 * --chain: the colour ISP (defects -> SG float32 reconstruction -> white
   balance -> C Malvar demosaic -> colour correction -> sRGB gamma -> 8-bit
-  output) on the Mask1 frame, seconds per stage (medians).
+  output) on the Mask1 frame: the fused path (ColourISP.run, C passes over row
+  strips) and the NumPy stages (run with return_stages, seconds per stage),
+  timed in the same rounds as OpenCV's edge-aware demosaic with the same
+  threads, with the paired speed ratios (medians); and the sensor
+  simulation of the image with a depth plane (as rgbz-fast simulate makes it, 3 ToF
+  frequencies, no optics), noise-free and noisy, on Mask1 and Mask2 (targets on
+  the full frame, Mask1: <= 0.5 s noise-free, <= 1 s noisy).
 * Peak memory of one reconstruct call on the full frame, measured in a fresh
   subprocess: the growth of the peak resident set size across the call, and
   the peak of its NumPy allocations, against the input
@@ -77,7 +83,7 @@ def add_parser(sub):
     p.add_argument("--no-tof-sites", action="store_true",
                    help="skip the ToF section (C vs NumPy in M measurements/s)")
     p.add_argument("--chain", action="store_true",
-                   help="also time the colour ISP chain stage by stage")
+                   help="also time the colour ISP (fused and stage by stage) and the simulation")
     c.add_report_options(p)
     return p
 

@@ -22,7 +22,8 @@ from .._validate import (check_flag, check_image, check_path, check_processes, c
 from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
                   sample_dataset, to_rgbz)
 from ..reconstruction import reconstruct
-from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
+from ..simulation import ColourSensor, Scene, apply_optics, simulate
+from ..simulation._scene import srgb_decode
 from ._config import EvalConfig
 from ._results import Results
 
@@ -75,8 +76,8 @@ def _frames(img, pattern, config, memo):
     if "linear" not in memo:
         if not config.linearise:
             memo["linear"] = img
-        elif (bits := integer_bits(img, "img")) is not None:
-            memo["linear"] = srgb_to_linear(img.astype(np.float64) / float((1 << bits) - 1))
+        elif integer_bits(img, "img") is not None:        # the integer widths it takes
+            memo["linear"] = srgb_decode(img, "img")
         else:
             memo["linear"] = np.clip(img, 0, 1)
     lin = memo["linear"]
@@ -165,10 +166,10 @@ def _reference_render(chain, cfa, bayer, bit_depth, workers, renders):
     for done in renders:
         if done[1:3] == (bayer, bit_depth) and np.array_equal(done[0], cfa):
             return done[3], done[4]
-    image, stages = chain.render(cfa, bayer, bit_depth=bit_depth, workers=workers,
-                                 return_stages=True)
-    renders.append((cfa, bayer, bit_depth, image, stages["gains"]))
-    return image, stages["gains"]
+    gains = chain.white_balance_gains(cfa, bayer, bit_depth=bit_depth)
+    image = chain.render(cfa, bayer, bit_depth=bit_depth, gains=gains, workers=workers)
+    renders.append((cfa, bayer, bit_depth, image, gains))
+    return image, gains
 
 
 def _image_metrics(ref, test, config, workers):

@@ -36,12 +36,13 @@ import numpy as np
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
-                         check_number, merge_params)
-from ._defects import DefectCorrection, correct_defects
+                         check_number, check_workers, merge_params)
+from . import _fused
+from ._defects import DefectCorrection, _check_known, correct_defects
 from ._demosaic import demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, _black_white,
                       _check_gains, _encode, _quantise, correct_colour, fill_missing,
-                      srgb_oetf, stage_params, white_balance)
+                      grey_world_gains, srgb_oetf, stage_params, white_balance)
 
 __all__ = ["ColourISP", "STAGES", "recorded_rendering"]
 
@@ -261,6 +262,14 @@ class ColourISP:
                                                              black_level,
                                                              check_flag(reference, "reference"))
         gains, matrix = self._recorded(recorded, gains, None)
+        if not return_stages and self._fused(data):
+            threads = check_workers(workers)
+            fixed = _fused.defect_fixes(data, pat, self.defects, white,
+                                        _check_known(defects, data.shape), threads)
+            full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd,
+                                workers=workers) if pat.has_z else fixed
+            return _fused.render(full, pat.bayer_pattern(), self, black, white, gains,
+                                 threads, matrix)[0]
         seconds = {}
         t0 = time.perf_counter()
         fixed, mask = correct_defects(data, pat, self.defects, white_level=white,
@@ -334,9 +343,51 @@ class ColourISP:
         black, white = _black_white(black_level, (1 << bd) - 1)
         if colour_matrix is not None:
             colour_matrix = ColourCorrection(matrix=colour_matrix).matrix    # checked
+        if not return_stages and self._fused(data):
+            return _fused.render(data, pattern, self, black, white, gains,
+                                 check_workers(workers), colour_matrix)[0]
         out, stages = self._render(data, pattern, black, white, gains, workers, return_stages,
                                    colour_matrix)
         return (out, stages) if return_stages else out
+
+    def _fused(self, data):
+        """Whether the stages after the input checks run as the C passes of
+        :mod:`._fused` (the same image): the Malvar demosaic on a frame it takes. A float
+        frame without the white balance's clip stays on the stages, which refuse balanced
+        values that overflow the working precision (the C passes would carry them on)."""
+        return (self.demosaicing.method == "malvar2004" and data.dtype in FRAME_DTYPES
+                and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2
+                and (self.white_balance.clip or data.dtype.kind != "f"))
+
+    def white_balance_gains(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None):
+        """The white-balance gains (R, G, B) :meth:`render` applies to a complete Bayer CFA:
+        this chain's fixed gains, the grey-world estimate (``"as_shot"`` too: an array
+        records no gains) or unit gains (its :class:`WhiteBalance`). Pass them to :meth:`render` (``gains=``) to render other
+        CFAs of the scene with the same white balance (the RGB-Z path of Fig. 19).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rgbz_fast import ColourISP
+        >>> cfa = np.tile(np.array([[800, 400], [300, 800]], np.uint16), (4, 4))
+        >>> ColourISP().white_balance_gains(cfa, "GRBG").tolist()
+        [2.0, 1.0, 2.6666666666666665]
+        """
+        data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        pattern = get_pattern(phase)
+        if pattern.has_z or pattern.bayer_phase is None:
+            raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
+                             f"{pattern.name!r} (reconstruct the Z sites first)")
+        bd = check_bit_depth(bit_depth)
+        if black_level is None:
+            black_level = self.black_level if self.black_level is not None else 0.0
+        black, white = _black_white(black_level, (1 << bd) - 1)
+        wb = self.white_balance
+        if wb.gains is not None:
+            return np.asarray(wb.gains, np.float64)
+        if wb.method in ("grey_world", "as_shot"):      # an array records no gains
+            return grey_world_gains(data, pattern, black_level=black, white_level=white)
+        return np.ones(3)
 
     def _render(self, full, bayer, black, white, gains, workers, keep_stages=True,
                 matrix=None):

@@ -203,16 +203,28 @@ def detect_defects(cfa, pattern, params=None, *, white_level=2047, **overrides):
 
 
 def _detect_sites(data, tile, params, white_level):
-    """Rows and columns of the defects :func:`detect_defects` flags (validated input).
+    """Rows and columns of the defects :func:`detect_defects` flags (validated input):
+    tests 1 and 2 on every colour pixel (:func:`_candidates`), test 3 on the few
+    candidates (:func:`_confirm`)."""
+    return _confirm(data, tile, params, white_level,
+                    _candidates(data, tile, params, white_level))
 
-    Tests 1 and 2 run on every colour pixel, one tile position at a time on
-    contiguous NaN-padded sub-images (:func:`_position_planes`: Z sites are never
-    read), test 1 first on the whole plane and the rest on the few pixels that
-    pass it; test 3 on the candidates only.
+
+def _thresholds(params, white_level):
+    """Test 1's threshold and test 2's spread factor, in float32 (as the tests compute)."""
+    return np.float32(params.threshold * white_level), np.float32(params.spread_factor)
+
+
+def _candidates(data, tile, params, white_level):
+    """The pixels that pass tests 1 and 2: ``(rr, cc, hot, cold, spread)``, the last three
+    float32 (``v - max(N)``, ``min(N) - v``, ``max(N) - min(N)``); in any order.
+
+    One tile position at a time on contiguous NaN-padded sub-images
+    (:func:`_position_planes`: Z sites are never read), test 1 first on the whole plane
+    and test 2 on the few pixels that pass it.
     """
     P, Q = tile.shape
-    thr = np.float32(params.threshold * white_level)
-    k = np.float32(params.spread_factor)
+    thr, k = _thresholds(params, white_level)
     planes = _position_planes(data, tile)
     hmax = max(b.shape[0] for b in planes.values()) - 2 * _PAD if planes else 0
     wmax = max(b.shape[1] for b in planes.values()) - 2 * _PAD if planes else 0
@@ -244,14 +256,20 @@ def _detect_sites(data, tile, params, white_level):
         e_cold.append(cd[keep])
         spread.append(sp[keep])
     if not rr:
-        return np.zeros(0, np.intp), np.zeros(0, np.intp)
-    rr = np.concatenate(rr)
-    cc = np.concatenate(cc)
+        empty = np.zeros(0, np.float32)
+        return np.zeros(0, np.intp), np.zeros(0, np.intp), empty, empty, empty
+    return (np.concatenate(rr), np.concatenate(cc), np.concatenate(e_hot),
+            np.concatenate(e_cold), np.concatenate(spread))
+
+
+def _confirm(data, tile, params, white_level, candidates):
+    """Test 3 on the ``candidates`` of :func:`_candidates`: rows and columns of the defects."""
+    rr, cc, e_hot, e_cold, spread = candidates
     if rr.size == 0:
         return rr, cc
-    e_hot = np.concatenate(e_hot).astype(np.float64)
-    e_cold = np.concatenate(e_cold).astype(np.float64)
-    spread = np.concatenate(spread)
+    thr, k = _thresholds(params, white_level)
+    e_hot = e_hot.astype(np.float64)
+    e_cold = e_cold.astype(np.float64)
     # test 3 on the few candidates: high-pass of the adjacent pixels
     H, W = data.shape
     adj = np.array([(dy, dx) for dy in (-1, 0, 1) for dx in (-1, 0, 1) if dy or dx])
@@ -315,19 +333,41 @@ def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
     params = stage_params(DefectCorrection, params, overrides, caller="correct_defects()")
     return_mask = check_flag(return_mask, "return_mask")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
-    if known is not None:
-        kn = as_array(known, "known")
-        if kn.shape != data.shape or kn.dtype != np.bool_:
-            raise ValueError(f"known: expected a bool map of shape {data.shape}, got "
-                             f"{kn.dtype} {kn.shape}")
+    kn = _check_known(known, data.shape)
+    rr, cc, values, mask = _fixes(data, pattern, params, white_level, kn)
+    out = data.copy()
+    out[rr, cc] = values
+    return (out, mask) if return_mask else out
+
+
+def _check_known(known, shape):
+    """The known-defect map, checked (None passes)."""
+    if known is None:
+        return None
+    kn = as_array(known, "known")
+    if kn.shape != shape or kn.dtype != np.bool_:
+        raise ValueError(f"known: expected a bool map of shape {shape}, got "
+                         f"{kn.dtype} {kn.shape}")
+    return kn
+
+
+def _fixes(data, pattern, params, white_level, known, candidates=None):
+    """What :func:`correct_defects` changes, of validated arguments: ``(rr, cc, values,
+    mask)``, the corrected pixels, their new values (the CFA's dtype) and the map of the
+    corrected pixels. ``candidates``: tests 1 and 2's result when already computed (the C
+    pass of the fused chain), else :func:`_candidates` runs."""
     mask = np.zeros(data.shape, bool)
-    rr, cc = (_detect_sites(data, pattern.tile, params, white_level) if params.enabled
-              else (np.zeros(0, np.intp),) * 2)
+    if params.enabled:
+        if candidates is None:
+            candidates = _candidates(data, pattern.tile, params, white_level)
+        rr, cc = _confirm(data, pattern.tile, params, white_level, candidates)
+    else:
+        rr, cc = (np.zeros(0, np.intp),) * 2
     mask[rr, cc] = True
     if known is not None:
-        mask |= kn & ~pattern.z_mask(data.shape)
+        mask |= known & ~pattern.z_mask(data.shape)
         rr, cc = np.nonzero(mask)
-    out = data.copy()
+    values = data[rr, cc]
     if rr.size:
         # a defect never repairs another one: the flagged pixels are hidden, as Z sites are
         nb = _gather_neighbours(data, pattern.tile, rr, cc, np.float64, hidden=mask)
@@ -338,8 +378,8 @@ def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
         lo = srt[idx, np.maximum(m - 1, 0) // 2]
         hi = srt[idx, m // 2]
         values = np.where(m > 0, 0.5 * (lo + hi), data[rr, cc])   # no neighbour: kept
-        if np.issubdtype(out.dtype, np.integer):
+        if np.issubdtype(data.dtype, np.integer):
             values = np.floor(values + 0.5)
-        out[rr, cc] = values.astype(out.dtype)
+        values = values.astype(data.dtype)
         mask[rr[m == 0], cc[m == 0]] = False
-    return (out, mask) if return_mask else out
+    return rr, cc, values, mask

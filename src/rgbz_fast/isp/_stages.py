@@ -235,15 +235,29 @@ def grey_world_gains(cfa, phase="GRBG", *, black_level=0.0, white_level=2047):
         raise ValueError(f"phase: the white balance needs a complete Bayer CFA, got pattern "
                          f"{pattern.name!r} with Z sites (fill_missing first)")
     black, white = _black_white(black_level, white_level)
-    tile = pattern.bayer_tile()                      # 2x2
-    sums, counts = np.zeros(3), np.zeros(3)
+    totals, counts = [], []
     with np.errstate(over="ignore", invalid="ignore"):
         for py in range(2):
             for px in range(2):
                 sub = data[py::2, px::2]
                 ok = sub < white                             # clipped pixels carry no colour
-                sums[tile[py, px]] += np.sum(sub[ok], dtype=np.float64) - black * ok.sum()
-                counts[tile[py, px]] += ok.sum()
+                totals.append(np.sum(sub[ok], dtype=np.float64))
+                counts.append(ok.sum())
+    return _gains_from_sums(totals, counts, pattern.bayer_tile(), black, data, white)
+
+
+def _gains_from_sums(totals, counts, tile, black, data, white):
+    """Grey-world gains from the sum (float64) and the count (an integer) of the values below
+    the white level of each 2x2 phase, in raster order: the arithmetic of
+    :func:`grey_world_gains`, which the fused chain reaches with its own sums. ``data`` (the
+    CFA) is read again only when a sum overflows (:func:`_scaled_means`)."""
+    sums, n = np.zeros(3), np.zeros(3)
+    with np.errstate(over="ignore", invalid="ignore"):
+        for (py, px), total, count in zip(((0, 0), (0, 1), (1, 0), (1, 1)), totals, counts):
+            count = np.int64(count)
+            sums[tile[py, px]] += np.float64(total) - black * count
+            n[tile[py, px]] += count
+    counts = n
     means = np.divide(sums, counts, out=np.zeros(3), where=counts > 0)
     if not np.all(np.isfinite(sums)):
         means = _scaled_means(data, tile, white, black)

@@ -31,7 +31,7 @@ import numpy as np
 
 from .._deps import import_colour
 from .._sensors import ColourSensor
-from ._simulate import _resolve_spectrum, _spectral_weights
+from ._spectral import _resolve_spectrum, _spectral_weights
 
 __all__ = ["white_gains", "colour_matrix"]
 

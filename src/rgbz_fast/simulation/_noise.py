@@ -3,17 +3,40 @@
 Fixed-pattern noise (PRNU, DSNU), dark signal, shot noise, the full well,
 read noise and the ADC, in the order of the "Noise model" section of
 :mod:`rgbz_fast.simulation._simulate` (the conventions of the sensor models).
-The colour model and the ToF model call :func:`expose` with their own random
-streams (:data:`STREAM_COLOUR_TEMPORAL` ...), so that running one never
-changes the draws of the other.
+The colour model and the ToF model draw from their own random streams
+(:data:`STREAM_COLOUR_TEMPORAL` ...), so that running one never changes the
+draws of the other.
+
+Two versions of the random numbers (``rng_version`` of the models, recorded
+in ``frame.meta["rng_version"]``):
+
+* **2** (the default): counter-based. Every draw is Threefry4x32-20
+  (Random123's) of the stream's key (:func:`stream_keys`: the seed, or the
+  sensor's ``fpn_seed``, and the stream) and of the sample's position (pixel
+  row and column; Z pixel, frequency and tap), computed in C (csrc/sim.h
+  lists the counters). The result is the same on any number of threads, and a
+  pixel's fixed pattern does not depend on the frame's size.
+* **1**: NumPy's ``default_rng([seed, stream])`` (PCG64) drawn over whole
+  arrays, :func:`expose`: the frames of rgbz-fast 0.1 bit for bit, single
+  threaded.
+
+Without noise no random number is drawn, and both versions give the same
+frame.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from .. import _kernels
+
 __all__ = ["expose", "STREAM_COLOUR_TEMPORAL", "STREAM_COLOUR_FPN", "STREAM_TOF_TEMPORAL",
-           "STREAM_TOF_FPN", "STREAM_TOF_DELAY"]
+           "STREAM_TOF_FPN", "STREAM_TOF_DELAY", "RNG_VERSION", "RNG_VERSIONS",
+           "check_rng_version", "noise_fields", "stream_keys"]
+
+#: the random numbers of the sensor models by default, and the versions there are
+RNG_VERSION = 2
+RNG_VERSIONS = (1, 2)
 
 # sub-stream keys of the random generators: temporal noise follows the frame
 # seed, fixed-pattern noise the sensor's fpn_seed; each model has its own
@@ -80,3 +103,38 @@ def expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
     saturated = well_full | (dn >= top)
     dn = np.clip(dn, 0, top)
     return (dn.astype(np.uint16) if sensor.quantise else dn), saturated
+
+
+def check_rng_version(value, name="rng_version"):
+    """``value`` as an int of :data:`RNG_VERSIONS`, else a ValueError naming ``name``."""
+    if isinstance(value, (bool, np.bool_)) or value not in RNG_VERSIONS:
+        raise ValueError(f"{name}: expected one of {', '.join(map(str, RNG_VERSIONS))} "
+                         f"(the random numbers of the sensor models), got {value!r}")
+    return int(value)
+
+
+def noise_fields(sensor, *, noise, dark_e):
+    """The noise chain of ``sensor`` as the C kernels take it (csrc/sim.h, rgbz_sim_noise)."""
+    return {"noise": int(bool(noise)), "shot": int(bool(sensor.shot_noise)),
+            "quantise": int(bool(sensor.quantise)), "prnu": float(sensor.prnu),
+            "dsnu": float(sensor.dsnu), "read_noise": float(sensor.read_noise),
+            "full_well": float(sensor.full_well), "black": float(sensor.black_level),
+            "gain": float(sensor.system_gain), "top": float(sensor.white_level),
+            "dark": float(dark_e)}
+
+
+def _seed_words(seed):
+    """A seed >= 0 as 64-bit words, least significant first (at least one)."""
+    words = []
+    while True:
+        words.append(seed & 0xFFFF_FFFF_FFFF_FFFF)
+        seed >>= 64
+        if not seed:
+            return np.array(words, np.uint64)
+
+
+def stream_keys(seed, fpn_seed, temporal_stream, fpn_stream):
+    """The keys (uint32 (8,): temporal, then fixed pattern) of a frame's two streams."""
+    keys = [_kernels.sim_key(_seed_words(int(s)), stream)
+            for s, stream in ((seed, temporal_stream), (fpn_seed, fpn_stream))]
+    return np.array(keys[0] + keys[1], np.uint32)

@@ -285,7 +285,7 @@ class Scene:
                 raise ValueError(f"image: an RGB scene needs 3 channels in the last axis, got "
                                  f"shape {img.shape}; pass wavelengths= for a spectral cube")
             if integer:
-                img = srgb_to_linear(_int_to_unit(img, "image", bits))
+                img = srgb_decode(img, "image", bits)
             wl = None
         else:
             wl = check_image(self.wavelengths, "wavelengths").astype(np.float64)
@@ -305,7 +305,7 @@ class Scene:
         if img.min() < 0:
             raise ValueError(f"image: holds negative values (min {img.min()}); scene radiance "
                              "and reflectance are >= 0")
-        if img.max() > SCENE_MAX:
+        if float(img.max()) > SCENE_MAX:          # float32 cannot hold SCENE_MAX
             raise ValueError(f"image: values up to {img.max():g}; a relative radiance beyond "
                              f"{SCENE_MAX:g} (white = 1) overflows the sensor models")
         object.__setattr__(self, "image", _readonly(img))
@@ -445,6 +445,19 @@ class Scene:
         extra += ", with IR reflectance" if self.ir_reflectance is not None else ""
         name = f"{self.name!r}, " if self.name else ""
         return f"Scene({name}{self.shape[0]}x{self.shape[1]} {kind}{extra})"
+
+
+def srgb_decode(img, name="image", input_bits=None):
+    """Linear values of an sRGB-encoded integer image: ``srgb_to_linear(img / (2**bits - 1))``,
+    ``bits`` from :func:`integer_bits` (``input_bits`` when given); 8- and 16-bit unsigned
+    images through a table of every code's value (the same values, computed once per code
+    instead of once per pixel)."""
+    if img.dtype not in (np.uint8, np.uint16):
+        return srgb_to_linear(_int_to_unit(img, name, input_bits))
+    bits = 8 * img.itemsize if input_bits is None else integer_bits(img, name, input_bits)
+    top = float((1 << bits) - 1)
+    table = srgb_to_linear(np.arange(1 << bits, dtype=np.float64) / top)
+    return table[img]
 
 
 def _int_to_unit(img, name, input_bits=None):

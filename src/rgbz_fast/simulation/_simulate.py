@@ -93,16 +93,19 @@ from pathlib import Path
 
 import numpy as np
 
-from .._deps import import_colour
+from .. import _kernels
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
 from .._validate import check_flag, check_number, check_seed
+from . import _pixels
 from ._loaders import load_scene
-from ._noise import (STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
-                     STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, expose)
+from ._noise import (RNG_VERSION, STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
+                     STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, check_rng_version, expose,
+                     noise_fields, stream_keys)
 from ._optics import Optics, _convolve, apply_optics
 from ._scene import Scene, estimate_ir_reflectance
+from ._spectral import _spectral_integrate, _spectral_weights
 
 __all__ = ["UnambiguousRangeWarning", "simulate", "simulate_colour", "simulate_tof"]
 
@@ -110,99 +113,34 @@ class UnambiguousRangeWarning(RuntimeWarning):
     """A scene depth lies beyond the unambiguous range of the ToF frequencies."""
 
 
-def _resolve_spectrum(value, kind):
-    """(wavelengths, values) arrays from a colour-science name or explicit arrays."""
-    if not isinstance(value, str):
-        wl, vals = value
-        return np.asarray(wl, np.float64), np.asarray(vals, np.float64)
-    colour = import_colour()
-    table = (colour.MSDS_CAMERA_SENSITIVITIES if kind == "sensitivities"
-             else colour.SDS_ILLUMINANTS)
-    if value not in table:
-        table_name = ("MSDS_CAMERA_SENSITIVITIES" if kind == "sensitivities"
-                      else "SDS_ILLUMINANTS")
-        raise ValueError(f"ColourSensor.{kind}: {value!r} is not in colour-science's "
-                         f"{table_name} (known: {', '.join(sorted(table))[:300]})")
-    sd = table[value]
-    wl = np.asarray(sd.wavelengths, np.float64)
-    vals = np.asarray(sd.values, np.float64)
-    if vals.ndim == 1:
-        vals = vals[:, None]
-    return wl, vals
-
-
-def _band_widths(wl):
-    """Trapezoid weights of a wavelength sampling (nm)."""
-    if wl.size == 1:
-        return np.ones(1)
-    d = np.diff(wl)
-    w = np.empty_like(wl)
-    w[0] = d[0] / 2
-    w[-1] = d[-1] / 2
-    w[1:-1] = (d[:-1] + d[1:]) / 2
-    return w
-
-
-def _spectral_weights(sensor, wavelengths):
-    """Weights (K, 3): relative channel response per band of a reflectance cube.
-
-    ``w_c(l) = S_c(l) E(l) dl / sum_l S_G(l) E(l) dl`` with ``S_c`` the
-    sensitivities (per unit energy, each normalised to a peak of 1) and ``E``
-    the illuminant, both interpolated linearly onto the scene's bands (0
-    outside their range). A perfect white reflector gives 1 in green and the
-    camera's white-balance ratios in red and blue.
-    """
-    swl, svals = _resolve_spectrum(sensor.sensitivities, "sensitivities")
-    iwl, ivals = _resolve_spectrum(sensor.illuminant, "illuminant")
-    svals = svals / np.maximum(svals.max(axis=0, keepdims=True), 1e-300)
-    s = np.stack([np.interp(wavelengths, swl, svals[:, c], left=0.0, right=0.0)
-                  for c in range(3)], axis=1)
-    e = np.interp(wavelengths, iwl, ivals[:, 0], left=0.0, right=0.0)
-    w = s * (e * _band_widths(wavelengths))[:, None]
-    green_white = w[:, 1].sum()
-    if not green_white > 0:
-        raise ValueError("ColourSensor.sensitivities: the green sensitivity times the "
-                         "illuminant is zero over the scene's wavelengths "
-                         f"({wavelengths[0]:g}-{wavelengths[-1]:g} nm)")
-    return w / green_white
-
-
-def _spectral_integrate(cube, weights, colour_map):
-    """Relative channel value at every CFA site: ``cube[r, c, :] @ weights[:, colour]``.
-
-    Integrates only the channel each site needs (one dot product per site).
-    """
-    out = np.empty(colour_map.shape, np.float64)
-    for c in range(3):
-        m = colour_map == c
-        if m.any():
-            out[m] = cube[m].astype(np.float64, copy=False) @ weights[:, c]
-    return out
-
-
-def _colour_signal_rate(scene, sensor, colour_map, optics=None):
-    """Mean signal electrons per second at every CFA site (noise-free, no PRNU).
-
-    With ``optics`` the scene is first blurred through the lens and the pixel
-    aperture (every band of a spectral cube at its own wavelength, every RGB
-    channel over its band).
-    """
-    per_unit = sensor.electrons_per_unit(1.0)
+def _colour_values(scene, sensor, colour_map, optics=None):
+    """What the colour pixels see, before the per-unit signal: the scene's linear RGB image
+    (through ``optics`` when given), or for a spectral scene the channel value of every
+    site (one dot product per site)."""
     image = scene.image
     if optics is not None:
         image = apply_optics(image, optics, pixel_pitch_um=sensor.pixel_pitch_um,
                              wavelengths=scene.wavelengths)
     if scene.is_spectral:
-        weights = _spectral_weights(sensor, scene.wavelengths)
-        value = _spectral_integrate(image, weights, colour_map)
+        return _spectral_integrate(image, _spectral_weights(sensor, scene.wavelengths),
+                                   colour_map)
+    return image
+
+
+def _colour_signal_rate(values, sensor, colour_map):
+    """Mean signal electrons per second at every CFA site (noise-free, no PRNU), in NumPy:
+    the reference of the C kernels (csrc/sim.c) and the path of ``rng_version=1``."""
+    per_unit = sensor.electrons_per_unit(1.0)
+    if values.ndim == 2:
+        value = values
     else:
-        value = np.take_along_axis(image, colour_map[..., None].astype(np.intp),
+        value = np.take_along_axis(values, colour_map[..., None].astype(np.intp),
                                    axis=2)[..., 0].astype(np.float64)
     return value * per_unit[colour_map]
 
 
-def _auto_exposure(rate, sensor):
-    level = float(np.percentile(rate, sensor.ae_percentile))
+def _exposure(level, sensor):
+    """The auto-exposure time from the ``ae_percentile`` percentile of the signal rate."""
     if not level > 0:
         raise ValueError(f"scene: the {sensor.ae_percentile:g}th percentile of the signal is 0 "
                          "(a black scene); auto-exposure needs light -- set "
@@ -237,7 +175,8 @@ def _as_scene(scene):
                     f"{type(scene).__name__}")
 
 
-def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, optics=None):
+def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, optics=None,
+                    rng_version=RNG_VERSION, workers=None):
     """Simulate the colour pixels: the plain Bayer CFA of a scene (paper §5.1.1).
 
     Parameters
@@ -259,6 +198,13 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         Blur the scene through the lens and the pixel aperture before the
         pixels sample it (:mod:`rgbz_fast.simulation._optics`); None (the
         default): the scene's values reach the pixels as they are.
+    rng_version : {2, 1}
+        The random numbers (:mod:`rgbz_fast.simulation._noise`): 2, the
+        default, counter-based (the same frame on any number of threads); 1,
+        NumPy's streams of rgbz-fast 0.1 (its frames bit for bit). The same
+        noise-free frame either way.
+    workers : int, optional
+        Threads (None or -1: all cores). The frame does not depend on it.
 
     Returns
     -------
@@ -266,7 +212,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         On the plain Bayer pattern, ``bit_depth = sensor.bit_depth``, uint16
         (float64 if ``sensor.quantise`` is False); ``meta`` holds
         ``exposure`` (s), ``system_gain`` (DN/e-), ``saturated`` (fraction of
-        sites at full well or full scale), ``spectral``,
+        sites at full well or full scale), ``spectral``, ``rng_version``,
         ``colour_black_level`` (the sensor's black level, DN) and, for a
         spectral scene, ``white_gains`` (R, G, B) and ``colour_matrix`` (nine
         numbers, row by row): the sensor's white balance and its matrix to
@@ -280,18 +226,57 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
     if not isinstance(sensor, ColourSensor):
         raise TypeError(f"colour_sensor: expected a ColourSensor, got {type(sensor).__name__}")
     seed = check_seed(seed, "seed")
+    dn, _, meta = _colour_frames(scene, pattern, sensor, seed, check_flag(noise, "noise"),
+                                 _check_optics(optics), check_rng_version(rng_version), workers,
+                                 rgbz=False)
+    return RawFrame(_Adopt(dn), pattern.bayer_pattern(), sensor.bit_depth, meta=meta)
+
+
+def _keys(noise, seed, sensor, temporal_stream, fpn_stream):
+    """The random streams' keys of a noisy frame; none (zeros, never read) without noise."""
+    if not noise:
+        return np.zeros(8, np.uint32)
+    return stream_keys(seed, sensor.fpn_seed, temporal_stream, fpn_stream)
+
+
+def _colour_frames(scene, pattern, sensor, seed, noise, optics, rng_version, workers, rgbz):
+    """The colour pixels of validated arguments: ``(reference CFA, RGB-Z data or None,
+    meta)``; ``rgbz``: also the data, the reference with 0 at the Z sites."""
     shape = pattern.check_shape(scene.shape, "scene")
-    colour_map = pattern.bayer_map(shape)
-    optics = _check_optics(optics)
-    rate = _colour_signal_rate(scene, sensor, colour_map, optics)
-    exposure = _auto_exposure(rate, sensor) if sensor.exposure == "auto" else sensor.exposure
-    dn, saturated = expose(rate * exposure, sensor.dark_current * exposure, sensor,
-                           noise=check_flag(noise, "noise"), seed=seed,
-                           temporal_stream=STREAM_COLOUR_TEMPORAL,
-                           fpn_stream=STREAM_COLOUR_FPN)
+    colour_map = pattern.bayer_map(shape) if scene.is_spectral else None
+    values = _colour_values(scene, sensor, colour_map, optics)
+    per_unit = sensor.electrons_per_unit(1.0)
+    legacy = noise and rng_version == 1
+    if legacy:
+        colour_map = pattern.bayer_map(shape) if colour_map is None else colour_map
+        rate = _colour_signal_rate(values, sensor, colour_map)
+    else:
+        source = _pixels.colour_source(values)
+    if sensor.exposure != "auto":
+        exposure = sensor.exposure
+    elif legacy:
+        exposure = _exposure(float(np.percentile(rate, sensor.ae_percentile)), sensor)
+    else:
+        exposure = _exposure(_pixels.rate_percentile(source, pattern, per_unit,
+                                                     sensor.ae_percentile, workers), sensor)
+    if legacy:
+        dn, saturated = expose(rate * exposure, sensor.dark_current * exposure, sensor,
+                               noise=True, seed=seed, temporal_stream=STREAM_COLOUR_TEMPORAL,
+                               fpn_stream=STREAM_COLOUR_FPN)
+        saturated = float(saturated.mean())
+        data = None
+        if rgbz:
+            data = dn.copy()
+            data[pattern.z_mask(shape)] = 0
+    else:
+        fields = noise_fields(sensor, noise=noise, dark_e=sensor.dark_current * exposure)
+        keys = _keys(noise, seed, sensor, STREAM_COLOUR_TEMPORAL, STREAM_COLOUR_FPN)
+        dn, data, nsat = _pixels.colour_dn(source, pattern, per_unit, exposure, fields, keys,
+                                           rgbz=rgbz, workers=workers)
+        saturated = nsat / dn.size
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
-            "saturated": float(saturated.mean()), "spectral": scene.is_spectral,
-            "noise": bool(noise), "seed": seed, "scene": scene.name,
+            "saturated": saturated, "spectral": scene.is_spectral,
+            "noise": noise, "seed": seed, "scene": scene.name, "rng_version": rng_version,
             "colour_black_level": float(sensor.black_level)}
     if scene.is_spectral:
         # the camera RGB of spectral sensitivities is not sRGB: the gains and the matrix
@@ -303,7 +288,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
                                       colour_matrix(sensor, scene.wavelengths).ravel())
     if optics is not None:
         meta["optics"] = optics
-    return RawFrame(_Adopt(dn), pattern.bayer_pattern(), sensor.bit_depth, meta=meta)
+    return dn, data, meta
 
 
 def _z_block(pattern):
@@ -319,17 +304,12 @@ def _z_block(pattern):
 
 
 def _z_sites(pattern, shape, block):
-    zmask = pattern.z_mask(shape)
-    if block == 1:
-        r, c = np.nonzero(zmask)
-        return r, c
-    if _z_block(pattern) != 2:
+    """(rows, cols) of the Z measurements' top-left cells, row-major (a 2x2 block cut by
+    the frame edge is dropped)."""
+    if block == 2 and _z_block(pattern) != 2:
         raise ValueError(f"ToFSensor.z_block: 2 needs Z sites in aligned 2x2 squares; pattern "
                          f"{pattern.name!r} has none")
-    H, W = shape
-    top = zmask[0:H - 1:2, 0:W - 1:2]       # blocks cut by the frame edge are dropped
-    r, c = np.nonzero(top)
-    return r * 2, c * 2
+    return _pixels.z_sites(pattern, shape, block)
 
 
 def _tof_light_at_cells(scene, sensor, pitch, cr, cc):
@@ -383,7 +363,7 @@ def _pixel_delays(sensor, n):
 
 
 def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch_um=None,
-                 optics=None, _stacklevel=2):
+                 optics=None, rng_version=RNG_VERSION, workers=None, _stacklevel=2):
     """Simulate the i-ToF taps at the Z sites of a pattern (paper §5.1.2).
 
     Parameters
@@ -410,10 +390,15 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         before the pixels collect it: :class:`Optics` with the laser's
         ``sensor.wavelength_nm`` and the ToF lens's ``sensor.f_number``
         (its OLPF, defocus and fill factor as given). None: no blur.
+    rng_version : {2, 1}
+        The random numbers, as in :func:`simulate_colour`.
+    workers : int, optional
+        Threads (None or -1: all cores). The taps do not depend on it.
 
     Returns
     -------
     ToFTaps
+        ``meta`` holds ``rng_version`` beside the run's settings.
 
     Warns
     -----
@@ -428,6 +413,8 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         raise TypeError(f"tof_sensor: expected a ToFSensor, got {type(sensor).__name__}")
     seed = check_seed(seed, "seed")
     optics = _check_optics(optics)
+    rng_version = check_rng_version(rng_version)
+    noise = check_flag(noise, "noise")
     if not scene.has_depth:
         raise ValueError("scene: has no depth map, so there is nothing for the ToF pixels "
                          "to measure")
@@ -449,6 +436,43 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     if rows.size == 0:
         raise ValueError(f"scene: a {shape[0]}x{shape[1]} frame holds no complete "
                          f"{block}x{block} Z pixel of pattern {pattern.name!r}")
+    legacy = noise and rng_version == 1
+    if not legacy:
+        fields = noise_fields(sensor, noise=noise, dark_e=sensor._dark_electrons)
+        keys = _keys(noise, seed, sensor, STREAM_TOF_TEMPORAL, STREAM_TOF_FPN)
+    if (optics is None and sensor.is_ideal and not legacy
+            and len(sensor.frequencies) <= _kernels.TOF_MAX_FREQS):
+        taps, depth_true, valid, beyond, sat, dmax = _pixels.tof_ideal(
+            scene, sensor, pitch, (rows, cols), block, fields, keys, workers)
+    else:
+        mean, suppress, depth_true, valid, beyond, dmax = _tof_mean(
+            scene, sensor, pitch, rows, cols, block, optics)
+        if legacy:
+            taps, sat = expose(mean, sensor._dark_electrons, sensor, noise=True, seed=seed,
+                               temporal_stream=STREAM_TOF_TEMPORAL, fpn_stream=STREAM_TOF_FPN,
+                               fpn_shape=mean.shape[1:], suppress=suppress)
+            sat = sat.any(axis=(0, 1))
+        else:
+            taps, sat = _pixels.tof_expose(mean, suppress, (rows, cols), fields, keys, workers)
+    if beyond.any():
+        warnings.warn(
+            f"{int(beyond.sum())} of {rows.size} Z sites see depths up to {dmax:.3g} m, "
+            f"beyond the {sensor.unambiguous_range:.4g} m unambiguous range of "
+            f"{', '.join(f'{f / 1e6:g}' for f in sensor.frequencies)} MHz; they are marked "
+            "invalid (ToFTaps.valid)", UnambiguousRangeWarning, stacklevel=_stacklevel)
+        valid = valid & ~beyond
+    meta = {"noise": noise, "seed": seed, "pattern": pattern.name,
+            "integration_time": sensor.integration_time,
+            "system_gain": sensor.system_gain,
+            "wrap_ranges": sensor.wrap_ranges, "rng_version": rng_version}
+    return ToFTaps(taps, np.asarray(sensor.frequencies), (rows, cols), block,
+                   sensor.bit_depth, depth_true, valid, sat, sensor, shape, meta)
+
+
+def _tof_mean(scene, sensor, pitch, rows, cols, block, optics):
+    """The mean tap electrons (F, 4, n) of every model of the ToF pixels (the non-ideal
+    modulation, the optics), in NumPy; with the suppressed charge per site (or None), the
+    true depth, validity and beyond-range flag of every site and the largest valid depth."""
     # cells of every measurement: (n_sites, block*block)
     offs = [(dr, dc) for dr in range(block) for dc in range(block)]
     cr = np.stack([rows + dr for dr, _ in offs], axis=1)
@@ -462,39 +486,17 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     if sensor.delay_ps or sensor.delay_fpn_ps:
         phasors = sensor._delayed(phasors, _pixel_delays(sensor, rows.size))
     mean = sensor._taps_from(phasors, total)                                # (F, 4, n)
-
-    depth_true = d.mean(axis=1)
-    valid = cell_valid.all(axis=1)
-    beyond = np.any(cell_valid & (d >= sensor.unambiguous_range), axis=1)
-    if beyond.any():
-        warnings.warn(
-            f"{int(beyond.sum())} of {rows.size} Z sites see depths up to "
-            f"{d[cell_valid].max():.3g} m, "
-            f"beyond the {sensor.unambiguous_range:.4g} m unambiguous range of "
-            f"{', '.join(f'{f / 1e6:g}' for f in sensor.frequencies)} MHz; they are marked "
-            "invalid (ToFTaps.valid)", UnambiguousRangeWarning, stacklevel=_stacklevel)
-        valid = valid & ~beyond
-
     suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
-    noise = check_flag(noise, "noise")
-    taps, sat = expose(mean, sensor._dark_electrons, sensor,
-                       noise=noise, seed=seed, temporal_stream=STREAM_TOF_TEMPORAL,
-                       fpn_stream=STREAM_TOF_FPN, fpn_shape=mean.shape[1:],
-                       suppress=suppress)
-    meta = {"noise": bool(noise), "seed": seed, "pattern": pattern.name,
-            "integration_time": sensor.integration_time,
-            "system_gain": sensor.system_gain,
-            "wrap_ranges": sensor.wrap_ranges}
-    return ToFTaps(taps, np.asarray(sensor.frequencies), (rows, cols), block,
-                   sensor.bit_depth, depth_true, valid, sat.any(axis=(0, 1)), sensor, shape,
-                   meta)
+    beyond = np.any(cell_valid & (d >= sensor.unambiguous_range), axis=1)
+    dmax = float(d[cell_valid].max()) if beyond.any() else -np.inf
+    return mean, suppress, d.mean(axis=1), cell_valid.all(axis=1), beyond, dmax
 
 
 # --------------------------------------------------------------------------
 # RGB-Z build
 # --------------------------------------------------------------------------
 def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noise=True,
-             optics=None):
+             optics=None, rng_version=RNG_VERSION, workers=None):
     """Simulate a raw RGB-Z frame and its reference Bayer frame (paper §5.1.3, Fig. 16).
 
     The colour model runs once over every site of the pattern's underlying
@@ -527,6 +529,13 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         returned light for the Z pixels (at the laser wavelength and
         ``tof_sensor.f_number``, :func:`simulate_tof`). None (the default):
         no blur: the scene's values reach the pixels as they are.
+    rng_version : {2, 1}
+        The random numbers (:mod:`rgbz_fast.simulation._noise`): 2, the
+        default, counter-based, computed in C (the same frame on any number
+        of threads); 1, NumPy's streams of rgbz-fast 0.1 (its frames bit for
+        bit). The same noise-free frame either way.
+    workers : int, optional
+        Threads (None or -1: all cores). The frame does not depend on it.
 
     Returns
     -------
@@ -534,8 +543,9 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         ``data``: colour CFA at colour sites, 0 at Z sites; ``reference``:
         the plain Bayer CFA; ``tof``: :class:`ToFTaps` or None; ``meta``:
         ``exposure`` (s), ``system_gain``, ``saturated``, ``spectral``,
-        ``noise``, ``seed``, ``scene``, ``colour_sensor``, ``tof_sensor``
-        and ``tof`` (a sentence saying whether and why the ToF model ran).
+        ``noise``, ``seed``, ``scene``, ``rng_version``, ``colour_sensor``,
+        ``tof_sensor`` and ``tof`` (a sentence saying whether and why the ToF
+        model ran).
 
     Examples
     --------
@@ -562,11 +572,10 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
                          "reference Bayer CFA to simulate")
 
     optics = _check_optics(optics)
-    noise = check_flag(noise, "noise")
-    ref = simulate_colour(scene, pattern, colour_sensor, seed=seed, noise=noise, optics=optics)
-    zmask = pattern.z_mask(scene.shape)
-    data = ref.data.copy()
-    data[zmask] = 0
+    seed, noise = check_seed(seed, "seed"), check_flag(noise, "noise")
+    rng_version = check_rng_version(rng_version)
+    ref, data, colour_meta = _colour_frames(scene, pattern, colour_sensor, seed, noise,
+                                            optics, rng_version, workers, rgbz=True)
 
     if not scene.has_depth:
         tof, status, used = None, "not simulated: the scene has no depth map", None
@@ -581,11 +590,11 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
                              f"colour_sensor.pixel_pitch_um {colour_sensor.pixel_pitch_um} um; "
                              "Z and colour pixels share one matrix (leave it None)")
         tof = simulate_tof(scene, pattern, used, seed=seed, noise=noise, optics=optics,
-                           _stacklevel=3)
+                           rng_version=rng_version, workers=workers, _stacklevel=3)
         status = (f"simulated: {len(used.frequencies)} frequencies, {tof.n_sites} Z "
                   f"measurements of {tof.block}x{tof.block} pixels")
-    meta = dict(ref.meta)
+    meta = dict(colour_meta)
     meta.update(colour_sensor=colour_sensor, tof_sensor=used, tof=status,
                 pattern=pattern.name)
-    return RawFrame(_Adopt(data), pattern, colour_sensor.bit_depth, reference=_Adopt(ref.data),
+    return RawFrame(_Adopt(data), pattern, colour_sensor.bit_depth, reference=_Adopt(ref),
                     tof=tof, meta=meta)

@@ -274,7 +274,7 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
     >>> bool(np.allclose(result.depth, 1.5, atol=2e-3)), bool(result.valid.all())
     (True, True)
     >>> tof_depth(simulate(scene, "mask1").tof, params=ToFISP(denoise="box"), min_snr=3)
-    ToFDepth(64 measurements, block 1, 61 valid)
+    ToFDepth(64 measurements, block 1, 60 valid)
     """
     tof = as_taps(tof, "tof")
     params = merge_params(ToFISP, params, options, caller="tof_depth()")

@@ -16,7 +16,7 @@ from ..timing import WARMUP_CALLS, interleaved, rate_stats, timed
 
 __all__ = ["make_rgb", "load_numpy_reference", "tof_taps", "build_cases", "case_label",
            "opencv_calls", "opencv_speeds", "OpenCVThreads", "tof_sites_benchmark", "colour_chain_benchmark",
-           "FULL_SHAPE", "RECON_METHODS", "PATTERNS", "PRECISIONS", "TOF_FREQS",
+           "simulate_benchmark", "bench_depth", "SIMULATE_TARGETS_S", "FULL_SHAPE", "RECON_METHODS", "PATTERNS", "PRECISIONS", "TOF_FREQS",
            "TOF_TARGET_X_NUMPY"]
 
 FULL_SHAPE = (3000, 4000)     # rows, cols: a 4000x3000 (12 Mpix) frame
@@ -28,6 +28,8 @@ PRECISIONS = ("float32", "float64")
 TOF_FREQS = (80e6, 100e6, 120e6)
 #: the ToF section's target: the fused C kernel, all threads, over the NumPy implementation
 TOF_TARGET_X_NUMPY = 5.0
+#: the simulate case's targets on the full frame, Mask1 with ToF: seconds, noise-free / noisy
+SIMULATE_TARGETS_S = {"noise_free": 0.5, "noisy": 1.0}
 
 
 def make_rgb(shape):
@@ -297,24 +299,91 @@ def tof_sites_benchmark(shape=FULL_SHAPE, repeat=5, workers=None, pattern="mask1
 
 
 def colour_chain_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, pattern="mask1"):
-    """Seconds of every stage of ``isp.ColourISP().run`` (SG float32, C Malvar) on the
-    benchmark frame mosaicked on ``pattern``: medians over ``repeat`` runs after a warm-up."""
+    """``isp.ColourISP().run`` (SG float32, Malvar) on the benchmark frame mosaicked on
+    ``pattern``: the fused path (``run(frame)``, the C passes) and the reference (``run(frame,
+    return_stages=True)``, the NumPy stages) timed in turn in the same rounds with OpenCV's
+    edge-aware demosaic of the Bayer frame (``workers`` threads): their medians, the
+    reference's seconds per stage, and the speed ratios of the rounds (OpenCV EA's seconds
+    over ours, > 1: we are faster), median over the rounds; whether the two paths give the
+    same image."""
     import rgbz_fast as rz
 
     from ...isp import STAGES, ColourISP
 
     workers = workers or (os.cpu_count() or 1)
-    frame = rz.mosaic(make_rgb(shape), pattern)
+    rgb = make_rgb(shape)
+    frame = rz.mosaic(rgb, pattern)
     chain = ColourISP()
     seconds = []                     # the stages' seconds of every call, warm-up first
 
-    def run():
+    def stages():
         seconds.append(chain.run(frame, workers=workers, return_stages=True)[1]["seconds"])
 
-    totals = interleaved({"chain": run}, repeat)["chain"]
+    fns = {"fused": lambda: chain.run(frame, workers=workers), "stages": stages}
+    calls = opencv_calls(lambda _: rz.mosaic(rgb, "bayer"))
+    cv2 = None
+    if calls is not None:
+        cv2, ocv = calls
+        fns["opencv_ea"] = ocv["ea"]
+    with OpenCVThreads(cv2, workers):
+        times = interleaved(fns, repeat)
     runs = seconds[-repeat:]
-    return dict(pattern=pattern, frame_shape=list(shape), workers=workers, repeat=repeat,
-                reconstruction=chain.reconstruction.method, precision=chain.precision,
-                demosaic=chain.demosaicing.method,
-                total_s=float(np.median(totals)), total_min_s=float(np.min(totals)),
-                stages_s={k: float(np.median([s[k] for s in runs])) for k in STAGES})
+    same = bool(np.array_equal(chain.run(frame, workers=workers),
+                               chain.run(frame, workers=workers, return_stages=True)[0]))
+    out = dict(pattern=pattern, frame_shape=list(shape), workers=workers, repeat=repeat,
+               reconstruction=chain.reconstruction.method, precision=chain.precision,
+               demosaic=chain.demosaicing.method,
+               fused_s=float(np.median(times["fused"])),
+               fused_min_s=float(np.min(times["fused"])),
+               total_s=float(np.median(times["stages"])),
+               total_min_s=float(np.min(times["stages"])),
+               stages_s={k: float(np.median([s[k] for s in runs])) for k in STAGES},
+               identical=same, opencv_ea_s=None, vs_opencv_ea_fused=None,
+               vs_opencv_ea_stages=None)
+    if "opencv_ea" in times:
+        ea = times["opencv_ea"]
+        out.update(opencv_ea_s=float(np.median(ea)),
+                   vs_opencv_ea_fused=float(np.median(ea / times["fused"])),
+                   vs_opencv_ea_stages=float(np.median(ea / times["stages"])))
+    return out
+
+
+def bench_depth(shape):
+    """The simulate case's depth map: a plane sloping from 1 m to 3.5 m, within the range of
+    the default ToF frequencies (7.5 m)."""
+    rows, cols = shape
+    yy, xx = np.mgrid[:rows, :cols]
+    return 1.0 + 2.0 * xx / cols + 0.5 * yy / rows
+
+
+def simulate_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, patterns=("mask1", "mask2"),
+                       verdict=True):
+    """Seconds of :func:`rgbz_fast.simulate` of the benchmark scene with a depth map (the
+    8-bit image of :func:`make_rgb`, no optics, the default 3 ToF frequencies), noise-free
+    and noisy, per pattern: medians over ``repeat`` runs after a warm-up, the two runs of a
+    pattern alternated; and the seconds of building the :class:`~rgbz_fast.simulation.Scene`
+    (the sRGB decoding of the image). The targets are Mask1's on the full frame."""
+    import time
+
+    from ...simulation import Scene, simulate
+
+    workers = workers or (os.cpu_count() or 1)
+    rgb, depth = make_rgb(shape), bench_depth(shape)
+    t0 = time.perf_counter()
+    scene = Scene(rgb, depth=depth)
+    scene_s = time.perf_counter() - t0
+    out = {}
+    for pattern in patterns:
+        times = interleaved({
+            "noise_free": lambda p=pattern: simulate(scene, p, noise=False, workers=workers),
+            "noisy": lambda p=pattern: simulate(scene, p, seed=1, workers=workers)}, repeat)
+        out[pattern] = {k: {"median_s": float(np.median(v)), "min_s": float(np.min(v))}
+                        for k, v in times.items()}
+    targets = {}
+    if "mask1" in out:
+        for k, limit in SIMULATE_TARGETS_S.items():
+            got = out["mask1"][k]["median_s"]
+            targets[k] = {"seconds": got, "target_s": limit,
+                          "met": bool(got <= limit) if verdict else None}
+    return dict(frame_shape=list(shape), workers=workers, repeat=repeat, scene_s=scene_s,
+                frequencies=3, optics=None, patterns=out, targets=targets)

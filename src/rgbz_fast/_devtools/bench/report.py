@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ..timing import WARMUP_CALLS
 
-__all__ = ["format_table", "format_tof", "format_chain", "QUICK_NOTE"]
+__all__ = ["format_table", "format_tof", "format_chain", "format_simulate", "QUICK_NOTE"]
 
 #: what a quick run says instead of ratios and verdicts
 QUICK_NOTE = "quick run: numbers not comparable, no verdict"
@@ -98,6 +98,8 @@ def format_table(res):
         lines += ["", format_tof(tof, res.get("verdict", True))]
     if res.get("colour_chain"):
         lines += ["", format_chain(res["colour_chain"])]
+    if res.get("simulate"):
+        lines += ["", format_simulate(res["simulate"])]
     mem = res["memory"]
     if mem:
         if "error" in mem:
@@ -148,13 +150,40 @@ def format_tof(tof, verdict=True):
 
 
 def format_chain(ch):
-    """The colour-chain section: seconds per stage."""
-    lines = [f"colour chain: ColourISP on a {ch['frame_shape'][0]}x{ch['frame_shape'][1]} "
-             f"{ch['pattern']} frame ({ch['reconstruction']} {ch['precision']}, "
-             f"{ch['demosaic']}, {ch['workers']} threads), median of {ch['repeat']} runs: "
-             f"{ch['total_s']:.3f} s in all"]
+    """The colour-chain section: the fused total, the reference's seconds per stage, the
+    speed ratios over OpenCV's edge-aware demosaic."""
+    h, w = ch["frame_shape"]
+
+    def vs(key):
+        v = ch.get(key)
+        return "n/a (no cv2)" if v is None else f"{v:.3f}"
+    lines = [f"colour chain: ColourISP.run on a {h}x{w} {ch['pattern']} frame "
+             f"({ch['reconstruction']} {ch['precision']}, {ch['demosaic']}, "
+             f"{ch['workers']} threads), median of {ch['repeat']} rounds",
+             f"  fused (C passes)   {ch['fused_s']:.3f} s  x OpenCV EA {vs('vs_opencv_ea_fused')}"
+             f"  (image {'identical to' if ch['identical'] else 'DIFFERS from'} the stages')",
+             f"  stages (NumPy ref) {ch['total_s']:.3f} s  x OpenCV EA "
+             f"{vs('vs_opencv_ea_stages')}, per stage:"]
     for k, v in ch["stages_s"].items():
-        lines.append(f"  {k:<18} {v:.3f} s  {100 * v / ch['total_s']:5.1f} %")
+        lines.append(f"    {k:<18} {v:.3f} s  {100 * v / ch['total_s']:5.1f} %")
+    return "\n".join(lines)
+
+
+def format_simulate(sim):
+    """The simulate section: seconds per pattern, noise-free and noisy, and the targets."""
+    h, w = sim["frame_shape"]
+    lines = [f"simulate: the benchmark image with a depth plane, {h}x{w}, ToF 3 frequencies, "
+             f"no optics, {sim['workers']} threads, median of {sim['repeat']} runs "
+             f"(Scene from the 8-bit image: {sim['scene_s']:.3f} s, not included)"]
+    for pattern, r in sim["patterns"].items():
+        lines.append(f"  {pattern:<6} noise-free {r['noise_free']['median_s']:.3f} s (best "
+                     f"{r['noise_free']['min_s']:.3f}), noisy {r['noisy']['median_s']:.3f} s "
+                     f"(best {r['noisy']['min_s']:.3f})")
+    for k, t in sim["targets"].items():
+        verdict = ("no verdict (not the target frame)" if t["met"] is None
+                   else "met" if t["met"] else "NOT met")
+        lines.append(f"  target mask1 {k.replace('_', '-')} <= {t['target_s']:g} s: "
+                     f"{t['seconds']:.3f} s, {verdict}")
     return "\n".join(lines)
 
 

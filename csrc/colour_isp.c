@@ -1,0 +1,289 @@
+/*
+ * colour_isp.c -- the fused colour ISP (see colour_isp.h): the defect candidates, the
+ * grey-world sums and the render (white balance .. output) of rgbz_fast.isp.ColourISP.run.
+ *
+ * Bit for bit the NumPy stages' results (colour_isp.h lists the two exceptions): the
+ * operations of each stage in its order and type, compiled with -ffp-contract=off
+ * (csrc/meson.build) so that every multiply and add is rounded on its own as NumPy's are;
+ * the sRGB encoding is the thresholds of isp._encode_table (found with the stages' own
+ * encoding as the oracle), so the power never runs here.
+ *
+ * Threads: row bands, one per thread; one thread per 2^18 pixels at most. The results do not
+ * depend on the thread count (the candidates' order does; the caller does not use it).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <stdint.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "colour_isp.h"
+#include "rgbz_templating.h"
+
+/* The codes of float32 values with the gathers of AVX2, 8 at a time: ci_encode's lookup
+   (colour_isp.template.h) lane by lane, the same codes; the caller checks the CPU. Returns
+   how many of the n values it coded (a multiple of 8; the rest are the caller's). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#include <immintrin.h>
+#define CI_HAVE_AVX2 1
+__attribute__((target("avx2")))
+static ptrdiff_t ci_encode_avx2(const float *t, const int32_t *start, uint32_t base,
+                                uint32_t last, int shift, int steps, const float *v,
+                                uint16_t *code, ptrdiff_t n)
+{
+    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+    const __m256i vb = _mm256_set1_epi32((int32_t)base), vl = _mm256_set1_epi32((int32_t)last);
+    const __m128i sh = _mm_cvtsi32_si128(shift);
+    ptrdiff_t j = 0;
+    for (; j + 8 <= n; j += 8) {
+        /* clip: max gives +0 for -0 and NaN (its second operand), as ci_clip01 */
+        const __m256 x = _mm256_min_ps(_mm256_max_ps(_mm256_loadu_ps(v + j), zero), one);
+        __m256i u = _mm256_srl_epi32(_mm256_castps_si256(x), sh);
+        u = _mm256_min_epu32(_mm256_max_epu32(u, vb), vl);
+        __m256i c = _mm256_i32gather_epi32(start, _mm256_sub_epi32(u, vb), 4);
+        for (int s = 1 << (steps - 1); s > 0; s >>= 1) {
+            const __m256i step = _mm256_set1_epi32(s);
+            const __m256 ts = _mm256_i32gather_ps(t, _mm256_add_epi32(c, step), 4);
+            const __m256 le = _mm256_cmp_ps(ts, x, _CMP_LE_OQ);
+            c = _mm256_add_epi32(c, _mm256_and_si256(_mm256_castps_si256(le), step));
+        }
+        const __m128i p = _mm_packus_epi32(_mm256_castsi256_si128(c),
+                                           _mm256_extracti128_si256(c, 1));
+        _mm_storeu_si128((__m128i *)(code + j), p);
+    }
+    return j;
+}
+
+/* the demosaic's and the white balance's loops in 4 doubles as well (the same arithmetic:
+   -ffp-contract=off leaves every operation rounded on its own on every set) */
+#define CI_CLONES __attribute__((target_clones("avx2", "default")))
+
+static int ci_cpu_avx2(void)
+{
+    static int have = -1;
+    if (have < 0) have = __builtin_cpu_supports("avx2") ? 1 : 0;
+    return have;
+}
+#endif
+
+/* one thread per 2^18 pixels at most (MIN_PIXELS_PER_THREAD of the Python layer) */
+static int ci_threads(int workers, ptrdiff_t n)
+{
+#ifdef _OPENMP
+    int t = workers > 0 ? workers : omp_get_max_threads();
+    ptrdiff_t cap = n >> 18;
+    if (cap < t) t = cap < 1 ? 1 : (int)cap;
+    return t;
+#else
+    (void)workers; (void)n;
+    return 1;
+#endif
+}
+
+/* the border rules of demosaic.c: scipy 'reflect', or a shift by whole periods */
+static inline ptrdiff_t ci_extend(ptrdiff_t i, ptrdiff_t n, int mode)
+{
+    if (mode == RGBZ_DM_PERIOD) {
+        if (i < 0) return i + 2 * ((-i + 1) / 2);
+        if (i >= n) return i - 2 * ((i - n + 2) / 2);
+        return i;
+    }
+    if (n == 1) return 0;
+    ptrdiff_t period = 2 * n;
+    i %= period;
+    if (i < 0) i += period;
+    return i < n ? i : period - 1 - i;
+}
+
+/* a Bayer quad: two greens on one diagonal, red and blue on the other */
+static int ci_bayer_phase(const int32_t *phase)
+{
+    int greens = 0;
+    for (int i = 0; i < 4; i++) {
+        if (phase[i] < 0 || phase[i] > 2) return 0;
+        greens += phase[i] == 1;
+    }
+    int main_diag = phase[0] == 1 && phase[3] == 1 && phase[1] + phase[2] == 2 && phase[1] != 1;
+    int anti_diag = phase[1] == 1 && phase[2] == 1 && phase[0] + phase[3] == 2 && phase[0] != 1;
+    return greens == 2 && (main_diag || anti_diag);
+}
+
+/* the defect candidates of one thread, growing */
+typedef struct {
+    int64_t r, c;
+    float hot, cold, spread;
+} ci_cand;
+
+typedef struct {
+    ci_cand *v;
+    ptrdiff_t n, cap;
+} ci_list;
+
+static int ci_push(ci_list *l, ptrdiff_t r, ptrdiff_t c, float hot, float cold, float spread)
+{
+    if (l->n == l->cap) {
+        ptrdiff_t cap = l->cap ? 2 * l->cap : 256;
+        ci_cand *v = (ci_cand *)realloc(l->v, (size_t)cap * sizeof *v);
+        if (!v) return 1;
+        l->v = v;
+        l->cap = cap;
+    }
+    ci_cand *e = l->v + l->n++;
+    e->r = r;
+    e->c = c;
+    e->hot = hot;
+    e->cold = cold;
+    e->spread = spread;
+    return 0;
+}
+
+/* the scans, once per element type (rgbz_templating.h) */
+#define RGBZ_TYPE_TEMPLATE "colour_isp_scan.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
+
+int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                              int32_t P, int32_t Q, const int32_t *noff, const int32_t *offs,
+                              float thr, float k, ptrdiff_t capacity, int64_t *rr, int64_t *cc,
+                              float *hot, float *cold, float *spread, ptrdiff_t *count,
+                              int workers)
+{
+    if (!src || !noff || !offs || !count || rows < 0 || cols < 0 || P < 1 || Q < 1 ||
+        capacity < 0 || (capacity > 0 && (!rr || !cc || !hot || !cold || !spread)))
+        return RGBZ_EINVAL;
+    for (int32_t i = 0; i < P * Q; i++)
+        if (noff[i] > RGBZ_CI_MAX_NEIGHBOURS) return RGBZ_EINVAL;
+    if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
+    const int nt = ci_threads(workers, rows * cols);
+    ci_list *lists = (ci_list *)calloc((size_t)nt, sizeof *lists);
+    /* the neighbours' offsets in the frame, dy cols + dx */
+    ptrdiff_t *lin = (ptrdiff_t *)malloc((size_t)P * Q * RGBZ_CI_MAX_NEIGHBOURS * sizeof *lin);
+    if (!lists || !lin) {
+        free(lists);
+        free(lin);
+        return RGBZ_ENOMEM;
+    }
+    for (ptrdiff_t i = 0; i < (ptrdiff_t)P * Q; i++)
+        for (int32_t j = 0; j < RGBZ_CI_MAX_NEIGHBOURS; j++)
+            lin[i * RGBZ_CI_MAX_NEIGHBOURS + j] =
+                (ptrdiff_t)offs[(i * RGBZ_CI_MAX_NEIGHBOURS + j) * 2] * cols +
+                offs[(i * RGBZ_CI_MAX_NEIGHBOURS + j) * 2 + 1];
+    int bad = 0;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt) reduction(|:bad)
+#endif
+    for (ptrdiff_t y = 0; y < rows; y++) {
+#ifdef _OPENMP
+        ci_list *l = lists + omp_get_thread_num();
+#else
+        ci_list *l = lists;
+#endif
+        if (bad) continue;
+        int st = RGBZ_OK;
+#define CI_CAND_(s, T) st = RGBZ_CAT(ci_candidates, s)((const T *)src, rows, cols, y, P, Q, \
+                                                       noff, offs, lin, thr, k, l)
+        RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_CAND_, st = RGBZ_EINVAL)
+#undef CI_CAND_
+        bad |= st != RGBZ_OK;
+    }
+    ptrdiff_t n = 0;
+    for (int t = 0; t < nt; t++) {
+        for (ptrdiff_t i = 0; i < lists[t].n; i++, n++) {
+            if (n >= capacity) continue;
+            const ci_cand *e = lists[t].v + i;
+            rr[n] = e->r;
+            cc[n] = e->c;
+            hot[n] = e->hot;
+            cold[n] = e->cold;
+            spread[n] = e->spread;
+        }
+        free(lists[t].v);
+    }
+    free(lists);
+    free(lin);
+    *count = n;
+    return bad ? RGBZ_ENOMEM : RGBZ_OK;
+}
+
+int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                       double white, double *sums, int64_t *counts, int workers)
+{
+    if (!src || !sums || !counts || rows < 0 || cols < 0) return RGBZ_EINVAL;
+    if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
+    const int nt = ci_threads(workers, rows * cols);
+    double *s = (double *)calloc((size_t)nt * 4, sizeof *s);
+    int64_t *c = (int64_t *)calloc((size_t)nt * 4, sizeof *c);
+    if (!s || !c) {
+        free(s);
+        free(c);
+        return RGBZ_ENOMEM;
+    }
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt)
+#endif
+    {
+        ptrdiff_t t = 0, n = 1;
+#ifdef _OPENMP
+        t = omp_get_thread_num();
+        n = omp_get_num_threads();
+#endif
+        /* bands of even rows, so that every band starts on phase row 0 */
+        const ptrdiff_t pairs = (rows + 1) / 2;
+        const ptrdiff_t y0 = 2 * (pairs * t / n);
+        ptrdiff_t y1 = 2 * (pairs * (t + 1) / n);
+        if (y1 > rows) y1 = rows;
+        int st = RGBZ_OK;
+#define CI_SUMS_(sfx, T) RGBZ_CAT(ci_sums, sfx)((const T *)src, cols, y0, y1, white, s + 4 * t, \
+                                                c + 4 * t)
+        RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_SUMS_, st = RGBZ_EINVAL)
+#undef CI_SUMS_
+        (void)st;
+    }
+    for (int i = 0; i < 4; i++) {
+        /* integer sums are whole numbers below 2^53: exact in any order */
+        double a = 0;
+        int64_t b = 0;
+        for (int t = 0; t < nt; t++) {
+            a += s[4 * t + i];
+            b += c[4 * t + i];
+        }
+        sums[i] = a;
+        counts[i] = b;
+    }
+    free(s);
+    free(c);
+    return RGBZ_OK;
+}
+
+/* ---- the render, once per precision, its rows once per element type within it ---- */
+/* the vector codes of a precision, or none (0 values coded) */
+#ifdef CI_HAVE_AVX2
+#define CI_ENCODE_FAST_f32(tab, v, code, n)                                                \
+    (ci_cpu_avx2() ? ci_encode_avx2((tab)->t, (tab)->start, (tab)->base, (tab)->last,       \
+                                    (tab)->shift, (tab)->steps, (v), (code), (n)) : 0)
+#else
+#define CI_ENCODE_FAST_f32(tab, v, code, n) 0
+#endif
+#define CI_ENCODE_FAST_f64(tab, v, code, n) 0
+#ifndef CI_CLONES
+#define CI_CLONES
+#endif
+typedef uint32_t ci_uint_f32;       /* the unsigned integer of a float's bits */
+typedef uint64_t ci_uint_f64;
+#define CI_UINT(s) RGBZ_CAT(ci_uint, s)
+#define CI_MANT_f32 23              /* the bits of the mantissa */
+#define CI_MANT_f64 52
+#define CI_MANT(s) RGBZ_CAT(CI_MANT, s)
+
+/* One row of the colour matrix times a pixel, as NumPy's matmul computes it with OpenBLAS
+   (its sgemm kernels multiply-add in fused steps, its dgemm result is that of separate
+   roundings: both checked on every pixel of tests/isp/test_fused.py). Another BLAS may round
+   otherwise: a code may then differ by one. */
+#define CI_DOT3_f32(a0, x0, a1, x1, a2, x2) fmaf((a2), (x2), fmaf((a1), (x1), (a0) * (x0)))
+#define CI_DOT3_f64(a0, x0, a1, x1, a2, x2) ((a0) * (x0) + (a1) * (x1) + (a2) * (x2))
+
+/* the render once per precision, its rows once per element type within it */
+#define RGBZ_REAL_TEMPLATE "colour_isp.template.h"
+#include "rgbz_each_real.h"
+#undef RGBZ_REAL_TEMPLATE

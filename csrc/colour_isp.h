@@ -1,0 +1,82 @@
+/*
+ * colour_isp.h -- C API of the fused colour ISP (colour_isp.c), plain C99, no Python.h.
+ *
+ * rgbz_fast.isp.ColourISP.run without its stages, in three passes over the frame instead of
+ * one NumPy pass (and one frame-size temporary) per stage:
+ *
+ *   rgbz_ci_defect_candidates  tests 1 and 2 of the defect detection on every colour pixel
+ *                              (isp._defects._candidates); the few candidates go back to
+ *                              Python for test 3 and the median fixes;
+ *   rgbz_ci_phase_sums         the grey-world sums and counts of each 2x2 phase of the
+ *                              complete CFA (isp._stages.grey_world_gains);
+ *   rgbz_ci_render_<RS>        white balance, Malvar demosaic, colour matrix, clip, sRGB
+ *                              encoding and quantisation, row by row: the white-balanced rows
+ *                              live in a ring of 8 rows per thread (they stay in cache), and
+ *                              the codes come from the thresholds of isp._encode_table (the
+ *                              smallest value of each code) instead of a power.
+ *
+ * Every pass gives the results of the NumPy stages bit for bit (tests/isp/test_fused.py),
+ * except: the sums of a float CFA (added in another order: a relative difference of order
+ * 1e-16) and a colour matrix other than the identity (NumPy's matmul may round differently:
+ * a linear value a few ulp off, so a code may differ by one at a threshold).
+ *
+ * Layout: src rows x cols, row-major, of element type in_type (rgbz_type); out rows x cols x 3
+ * (R, G, B interleaved), uint8 (bits 8) or uint16 (bits 16). Status codes of rgbz.h.
+ */
+#ifndef RGBZ_COLOUR_ISP_H
+#define RGBZ_COLOUR_ISP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rgbz.h"
+
+/* neighbours of one tile position in the defect test: the same-colour pixels of the 5x5
+   window (12 on a Bayer green, 8 on red and blue) */
+enum { RGBZ_CI_MAX_NEIGHBOURS = 24 };
+
+/*
+ * Tests 1 and 2 of the defect detection (rgbz_fast.isp.DefectCorrection) on a P x Q tile:
+ * for a colour pixel p at tile position k = (y % P) * Q + x % Q, its neighbours are the
+ * pixels at (y + offs[k][i][0], x + offs[k][i][1]), i < noff[k], inside the frame (noff[k]
+ * < 0: a Z position, never tested). With v, mx, mn the float32 values of p and of the max
+ * and min of its neighbours, p is a candidate when
+ *     (v - mx > thr and v - mx > k (mx - mn)) or (mn - v > thr and mn - v > k (mx - mn)).
+ * The candidates' rows, columns, v - mx, mn - v and mx - mn go to rr, cc, hot, cold, spread
+ * (capacity entries at most, in no particular order); *count gets their number, which may
+ * exceed capacity (then only capacity were written: call again with more room).
+ */
+int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                              int32_t P, int32_t Q, const int32_t *noff, const int32_t *offs,
+                              float thr, float k, ptrdiff_t capacity, int64_t *rr, int64_t *cc,
+                              float *hot, float *cold, float *spread, ptrdiff_t *count,
+                              int workers);
+
+/*
+ * Grey-world sums of a complete Bayer CFA: for each 2x2 phase (raster order) the sum and the
+ * number of the values below `white` (compared in float32 for a float32 CFA, in double
+ * otherwise, as NumPy compares them with a Python float). Integer CFAs are summed exactly.
+ */
+int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                       double white, double *sums, int64_t *counts, int workers);
+
+/*
+ * White balance .. output of a complete Bayer CFA, in the precision of the name:
+ *   b = clip?((REAL) v - black) * scale[colour])           (isp.white_balance)
+ *   rgb = Malvar 2004 of b, in double, rounded to REAL      (isp.demosaic, border `mode`)
+ *   lin = clip(matrix @ rgb, 0, 1), matrix NULL: identity  (isp.correct_colour)
+ *   code = number of thresholds[1 .. 2^bits - 1] <= lin    (isp._encode_table)
+ * phase: the colour codes (R 0, G 1, B 2) of the 2x2 Bayer quad in raster order; scale: the
+ * R, G, B gains over (white - black); matrix: 9 values, row-major; thresholds: 2^bits
+ * non-decreasing values of [0, 1] (t[0] = 0). At least 2 x 2 pixels.
+ */
+int rgbz_ci_render_f32(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                       const int32_t *phase, int mode, const float *scale, float black,
+                       int clip, const float *matrix, const float *thresholds, int bits,
+                       void *out, int workers);
+int rgbz_ci_render_f64(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                       const int32_t *phase, int mode, const double *scale, double black,
+                       int clip, const double *matrix, const double *thresholds, int bits,
+                       void *out, int workers);
+
+#endif /* RGBZ_COLOUR_ISP_H */

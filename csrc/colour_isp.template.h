@@ -1,0 +1,412 @@
+/*
+ * colour_isp.template.h -- the fused render of colour_isp.c (white balance .. output) in one
+ * precision. Instantiated by colour_isp.c once per precision, with
+ *   REAL, RS   the float type of the arithmetic (float, double) and its suffix (f32, f64),
+ *              appended to every name;
+ * through rgbz_each_real.h (rgbz_templating.h); the row kernel, below, once per element
+ * type of the CFA: this file instantiates itself through rgbz_each_type.h (IN_T, IS,
+ * IN_IS_INT).
+ */
+#ifndef REAL
+#error "colour_isp.template.h: #define REAL (float or double) and RS first"
+#endif
+
+#ifndef IN_T
+/* ---------------------------------------------------------------- per precision */
+
+/* The code of a linear value v in [0, 1]: the number of thresholds t[1 .. top] <= v. The
+   bucket of v (its bits >> shift, counted from `base`; the bits of non-negative floats are
+   ordered as the floats) gives the code of the bucket's smallest value, at most `span` below
+   v's; `steps` halvings of 2^steps (>= span + 1) codes find v's without a branch, over the
+   thresholds padded with 2^steps values above 1. */
+typedef struct {
+    const REAL *t;          /* the thresholds, padded */
+    const int32_t *start;   /* the code of each bucket's smallest value */
+    CI_UINT(RS) base, last; /* the first and the last bucket */
+    int shift, steps;
+} RGBZ_CAT(ci_codes, RS);
+
+RGBZ_INLINE int RGBZ_CAT(ci_code, RS)(const RGBZ_CAT(ci_codes, RS) *tab, REAL v, int steps)
+{
+    CI_UINT(RS) u;
+    memcpy(&u, &v, sizeof u);
+    u >>= tab->shift;
+    u = u < tab->base ? tab->base : (u > tab->last ? tab->last : u);
+    int32_t c = tab->start[(int32_t)(u - tab->base)];
+    for (int s = 1 << (steps - 1); s > 0; s >>= 1) c += tab->t[c + s] <= v ? s : 0;
+    return c;
+}
+
+/* the bucket table and the padded thresholds of t (2^bits values) in one block, which the
+   caller frees; NULL when out of memory */
+static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REAL *t, int bits)
+{
+    /* 2^k buckets per octave over the 20 octaves below 1 (a value below 2^-20 has the code
+       0 or 1): a bucket spans at most 1 code for 8 bits, 6 for 16 (float32 and float64) */
+    const int k = bits == 8 ? 8 : 12;
+    const REAL low = (REAL)9.5367431640625e-07;      /* 2^-20 */
+    const REAL one = 1;
+    const int top = (1 << bits) - 1;
+    CI_UINT(RS) ulow, uone;
+    memcpy(&ulow, &low, sizeof ulow);
+    memcpy(&uone, &one, sizeof uone);
+    tab->shift = CI_MANT(RS) - k;
+    tab->base = ulow >> tab->shift;
+    tab->last = uone >> tab->shift;
+    const ptrdiff_t n = (ptrdiff_t)(tab->last - tab->base) + 1;
+    const ptrdiff_t npad = (ptrdiff_t)top + 1 + 64;
+    REAL *tp = (REAL *)malloc((size_t)npad * sizeof(REAL) + (size_t)n * sizeof(int32_t));
+    if (!tp) return NULL;
+    int32_t *start = (int32_t *)(tp + npad);
+    start[0] = 0;                                   /* holds 0, whose code is 0 */
+    int c = 0, span = 0;
+    for (ptrdiff_t i = 1; i < n; i++) {
+        const CI_UINT(RS) u = (tab->base + (CI_UINT(RS))i) << tab->shift;
+        REAL lo;
+        memcpy(&lo, &u, sizeof lo);
+        while (c < top && t[c + 1] <= lo) c++;
+        start[i] = c;
+        if (c - start[i - 1] > span) span = c - start[i - 1];
+    }
+    if (top - c > span) span = top - c;
+    int steps = 1;
+    while ((1 << steps) <= span) steps++;
+    if (steps > 6) {                                /* not these thresholds */
+        free(tp);
+        return NULL;
+    }
+    memcpy(tp, t, (size_t)(top + 1) * sizeof(REAL));
+    for (ptrdiff_t i = top + 1; i < npad; i++) tp[i] = (REAL)2;     /* above every v */
+    tab->t = tp;
+    tab->start = start;
+    tab->steps = steps;
+    return tp;
+}
+
+/* what a row kernel needs, beside the frame */
+typedef struct {
+    const int32_t *phase;
+    const ptrdiff_t *colmap;        /* cols + 4 entries: the source of padded column j - 2 */
+    REAL scale[3], black;
+    int clip, mode;
+    int has_matrix;
+    REAL m[9];
+    RGBZ_CAT(ci_codes, RS) codes;
+} RGBZ_CAT(ci_render_args, RS);
+
+/* [0, 1]; -0 becomes +0 (whose bits the code lookup reads) */
+RGBZ_INLINE REAL RGBZ_CAT(ci_clip01, RS)(REAL v)
+{
+    return v <= (REAL)0 ? (REAL)0 : (v > (REAL)1 ? (REAL)1 : v);
+}
+
+/* The white-balanced rows are kept as two planes of double (exact: REAL values), the even
+   columns and the odd ones, each with 3 cells of border before: plane p of a row holds
+   column 2 j + p at index j + 3, so that every tap of the demosaic is a unit-stride read in
+   j and the loops below vectorise. CI_PLANE is a plane's length for `cols` columns. */
+#define CI_PLANE(cols) ((cols) / 2 + 6)
+
+/* Malvar 2004 of the n greens of a row at x = 2 j + gp: s[k] the plane of parity gp of row
+   y + k - 2 (at its cell 0, index j + 3 above), t[k] the other plane shifted so that t[k][j]
+   and t[k][j + 1] are the columns x - 1 and x + 1. Out: the row colour's value to oa (R on
+   an R row), the other's to ob, green to og. demosaic.c's dm_pixel term for term, in double,
+   rounded to REAL as isp.demosaic stores it. */
+CI_CLONES static void RGBZ_CAT(ci_greens, RS)(const double *const *s, const double *const *t, ptrdiff_t n,
+                                    REAL *restrict oa, REAL *restrict og, REAL *restrict ob)
+{
+    const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
+    const double *t1 = t[1], *t2 = t[2], *t3 = t[3];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const double c0 = s2[j];
+        const double diag = t1[j] + t1[j + 1] + t3[j] + t3[j + 1];
+        const double hz2 = s2[j - 1] + s2[j + 1];
+        const double vt2 = s0[j] + s4[j];
+        const double hz1 = t2[j] + t2[j + 1];
+        const double vt1 = s1[j] + s3[j];
+        const double hv = (5 * c0 + 4 * hz1 - hz2 - diag + 0.5 * vt2) / 8;
+        const double vv = (5 * c0 + 4 * vt1 - vt2 - diag + 0.5 * hz2) / 8;
+        og[j] = (REAL)c0;
+        oa[j] = (REAL)hv;
+        ob[j] = (REAL)vv;
+    }
+}
+
+/* the n red or blue sites of a row: s and t as above with the parities swapped; the site's
+   own colour to oc, green to og, the other colour to oo */
+CI_CLONES static void RGBZ_CAT(ci_colours, RS)(const double *const *s, const double *const *t,
+                                     ptrdiff_t n, REAL *restrict oc, REAL *restrict og,
+                                     REAL *restrict oo)
+{
+    const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
+    const double *t1 = t[1], *t2 = t[2], *t3 = t[3];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const double c0 = s2[j];
+        const double n4 = s1[j] + s3[j] + t2[j] + t2[j + 1];
+        const double far4 = s0[j] + s4[j] + s2[j - 1] + s2[j + 1];
+        const double diag = t1[j] + t1[j + 1] + t3[j] + t3[j + 1];
+        const double gg = (4 * c0 + 2 * n4 - far4) / 8;
+        const double other = (6 * c0 + 2 * diag - 1.5 * far4) / 8;
+        oc[j] = (REAL)c0;
+        og[j] = (REAL)gg;
+        oo[j] = (REAL)other;
+    }
+}
+
+/* the colour matrix on n pixels of planes r, g, b, in place */
+static void RGBZ_CAT(ci_matrix, RS)(const REAL *m, REAL *restrict r, REAL *restrict g,
+                                    REAL *restrict b, ptrdiff_t n)
+{
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const REAL v0 = r[j], v1 = g[j], v2 = b[j];
+        r[j] = RGBZ_CAT(CI_DOT3, RS)(m[0], v0, m[1], v1, m[2], v2);
+        g[j] = RGBZ_CAT(CI_DOT3, RS)(m[3], v0, m[4], v1, m[5], v2);
+        b[j] = RGBZ_CAT(CI_DOT3, RS)(m[6], v0, m[7], v1, m[8], v2);
+    }
+}
+
+/* the bucket of a clipped value v: the code of its smallest value (see ci_code) */
+RGBZ_INLINE int32_t RGBZ_CAT(ci_start, RS)(const RGBZ_CAT(ci_codes, RS) *tab, REAL v)
+{
+    union { REAL f; CI_UINT(RS) u; } bits = {v};
+    CI_UINT(RS) u = bits.u >> tab->shift;
+    u = u < tab->base ? tab->base : (u > tab->last ? tab->last : u);
+    return tab->start[(int32_t)(u - tab->base)];
+}
+
+/* the codes of n values (clipped first): the vector codes of the precision if the CPU has
+   them, then ci_code with its steps written out for the tables of 8 bits (1) and 16 (3) */
+static void RGBZ_CAT(ci_encode, RS)(const RGBZ_CAT(ci_codes, RS) *tab, const REAL *v,
+                                    uint16_t *restrict code, ptrdiff_t n)
+{
+    const REAL *t = tab->t;
+    ptrdiff_t j = RGBZ_CAT(CI_ENCODE_FAST, RS)(tab, v, code, n);
+    if (tab->steps == 1) {
+        for (; j < n; j++) {
+            const REAL x = RGBZ_CAT(ci_clip01, RS)(v[j]);
+            int32_t c = RGBZ_CAT(ci_start, RS)(tab, x);
+            c += t[c + 1] <= x ? 1 : 0;
+            code[j] = (uint16_t)c;
+        }
+    } else if (tab->steps == 3) {
+        for (; j < n; j++) {
+            const REAL x = RGBZ_CAT(ci_clip01, RS)(v[j]);
+            int32_t c = RGBZ_CAT(ci_start, RS)(tab, x);
+            c += t[c + 4] <= x ? 4 : 0;
+            c += t[c + 2] <= x ? 2 : 0;
+            c += t[c + 1] <= x ? 1 : 0;
+            code[j] = (uint16_t)c;
+        }
+    } else {
+        for (; j < n; j++)
+            code[j] = (uint16_t)RGBZ_CAT(ci_code, RS)(tab, RGBZ_CAT(ci_clip01, RS)(v[j]),
+                                                      tab->steps);
+    }
+}
+
+/* Output row y from the five white-balanced rows rp[0..4] (rows y-2 .. y+2 after the border
+   rule, as planes): the demosaic per parity into the planar scratch lin (6 planes of h
+   values: R, G, B of the even columns, then of the odd ones), the matrix, the codes (code,
+   the same layout), then interleaved into the output row. */
+static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
+                                 const RGBZ_CAT(ci_render_args, RS) *a, REAL *lin,
+                                 uint16_t *code, void *out, int bits)
+{
+    const int32_t *ph = a->phase + 2 * (y & 1);
+    const int gp = ph[0] == 1 ? 0 : 1;              /* the parity of the greens */
+    const int rc = ph[1 - gp];                      /* the row's other colour: 0 R, 2 B */
+    const ptrdiff_t hp = CI_PLANE(cols), h = cols / 2 + 1;
+    const ptrdiff_t ng = (cols - gp + 1) / 2, nc = (cols - (1 - gp) + 1) / 2;
+    const double *s[5], *t[5];
+    REAL *par[2][3];
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < 3; k++) par[p][k] = lin + (3 * p + k) * h;
+    /* the greens: the other plane's x - 1 is its cell j - 1 when the greens are even */
+    for (int k = 0; k < 5; k++) {
+        s[k] = rp[k] + gp * hp + 3;
+        t[k] = rp[k] + (1 - gp) * hp + 3 - (gp == 0);
+    }
+    REAL **gpl = par[gp];
+    RGBZ_CAT(ci_greens, RS)(s, t, ng, gpl[rc], gpl[1], gpl[2 - rc]);
+    for (int k = 0; k < 5; k++) {
+        s[k] = rp[k] + (1 - gp) * hp + 3;
+        t[k] = rp[k] + gp * hp + 3 - (gp == 1);
+    }
+    REAL **cpl = par[1 - gp];
+    RGBZ_CAT(ci_colours, RS)(s, t, nc, cpl[rc], cpl[1], cpl[2 - rc]);
+    const ptrdiff_t nn[2] = {(cols + 1) / 2, cols / 2};
+    for (int p = 0; p < 2; p++) {
+        if (a->has_matrix) RGBZ_CAT(ci_matrix, RS)(a->m, par[p][0], par[p][1], par[p][2], nn[p]);
+        for (int k = 0; k < 3; k++)
+            RGBZ_CAT(ci_encode, RS)(&a->codes, par[p][k], code + (3 * p + k) * h, nn[p]);
+    }
+    const uint16_t *c[2][3];
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < 3; k++) c[p][k] = code + (3 * p + k) * h;
+    if (bits == 8) {
+        uint8_t *o = (uint8_t *)out + 3 * y * cols;
+        for (ptrdiff_t x = 0; x < cols; x++) {
+            const int p = (int)(x & 1);
+            const ptrdiff_t j = x >> 1;
+            o[3 * x] = (uint8_t)c[p][0][j];
+            o[3 * x + 1] = (uint8_t)c[p][1][j];
+            o[3 * x + 2] = (uint8_t)c[p][2][j];
+        }
+    } else {
+        uint16_t *o = (uint16_t *)out + 3 * y * cols;
+        for (ptrdiff_t x = 0; x < cols; x++) {
+            const int p = (int)(x & 1);
+            const ptrdiff_t j = x >> 1;
+            o[3 * x] = c[p][0][j];
+            o[3 * x + 1] = c[p][1][j];
+            o[3 * x + 2] = c[p][2][j];
+        }
+    }
+}
+
+#define RGBZ_TYPE_TEMPLATE "colour_isp.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
+
+int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                                 const int32_t *phase, int mode, const REAL *scale, REAL black,
+                                 int clip, const REAL *matrix, const REAL *thresholds, int bits,
+                                 void *out, int workers)
+{
+    if (!src || !out || !phase || !scale || !thresholds || rows < 2 || cols < 2 ||
+        (bits != 8 && bits != 16) || (mode != RGBZ_DM_REFLECT && mode != RGBZ_DM_PERIOD) ||
+        !ci_bayer_phase(phase))
+        return RGBZ_EINVAL;
+    RGBZ_CAT(ci_render_args, RS) a;
+    a.phase = phase;
+    a.mode = mode;
+    a.clip = clip;
+    a.black = black;
+    for (int i = 0; i < 3; i++) a.scale[i] = scale[i];
+    a.has_matrix = matrix != NULL;
+    for (int i = 0; i < 9; i++) a.m[i] = matrix ? matrix[i] : (REAL)(i % 4 == 0);
+    for (int i = 1; i < (1 << bits); i++)
+        if (!(thresholds[i] >= thresholds[i - 1]) || !(thresholds[i] <= (REAL)1))
+            return RGBZ_EINVAL;
+    if (thresholds[0] != (REAL)0) return RGBZ_EINVAL;
+    ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 4) * sizeof *colmap);
+    void *codes = RGBZ_CAT(ci_build_codes, RS)(&a.codes, thresholds, bits);
+    if (!colmap || !codes) {
+        free(colmap);
+        free(codes);
+        return codes ? RGBZ_ENOMEM : RGBZ_EINVAL;
+    }
+    for (ptrdiff_t i = 0; i < cols + 4; i++) colmap[i] = ci_extend(i - 2, cols, mode);
+    a.colmap = colmap;
+    int st = RGBZ_OK;
+#define CI_RENDER_(s, T) st = RGBZ_CAT3(ci_render, RS, s)((const T *)src, rows, cols, &a, out, \
+                                                          bits, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_RENDER_, st = RGBZ_EINVAL)
+#undef CI_RENDER_
+    free(colmap);
+    free(codes);
+    return st;
+}
+
+#else
+/* ---------------------------------------------------------------- per element type */
+
+/* the white-balanced row r of the frame into its two planes at dst (CI_PLANE), with the
+   border columns -4 .. -1 and cols .. cols + 3 by the border rule: isp.white_balance's
+   operations in REAL, kept as double (exact), the type the demosaic computes in */
+CI_CLONES static void RGBZ_CAT3(ci_balance, RS, IS)(const IN_T *src, ptrdiff_t r, ptrdiff_t cols,
+                                          const RGBZ_CAT(ci_render_args, RS) *a, double *dst)
+{
+    const IN_T *row = src + r * cols;
+    const int32_t *ph = a->phase + 2 * (r & 1);
+    const REAL s0 = a->scale[ph[0]], s1 = a->scale[ph[1]], black = a->black;
+    const ptrdiff_t hp = CI_PLANE(cols);
+    double *e = dst + 3, *o = dst + hp + 3;
+    const ptrdiff_t n = cols / 2;
+    if (a->clip) {
+        for (ptrdiff_t j = 0; j < n; j++) {
+            REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
+            u = u - black;
+            w = w - black;
+            u = u * s0;
+            w = w * s1;
+            e[j] = RGBZ_CAT(ci_clip01, RS)(u);
+            o[j] = RGBZ_CAT(ci_clip01, RS)(w);
+        }
+    } else {
+        for (ptrdiff_t j = 0; j < n; j++) {
+            REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
+            u = u - black;
+            w = w - black;
+            e[j] = u * s0;
+            o[j] = w * s1;
+        }
+    }
+    if (cols & 1) {
+        REAL u = (REAL)row[cols - 1];
+        u = u - black;
+        u = u * s0;
+        e[n] = a->clip ? RGBZ_CAT(ci_clip01, RS)(u) : u;
+    }
+    /* column c lives at (c & 1 ? o : e)[c >> 1] (an arithmetic shift: c >= -4) */
+    for (int side = 0; side < 2; side++) {
+        for (ptrdiff_t k = 0; k < 4; k++) {
+            const ptrdiff_t c = side ? cols + k : -4 + k;
+            const ptrdiff_t from = ci_extend(c, cols, a->mode);
+            const double v = (from & 1 ? o : e)[from >> 1];
+            const ptrdiff_t jc = c >= 0 ? c / 2 : -((-c + 1) / 2);
+            (c & 1 ? o : e)[jc] = v;
+        }
+    }
+}
+
+/* every output row: each thread renders a band of consecutive rows, keeping the last 8
+   white-balanced rows in a ring (a row r in slot r % 8; the 5 rows of an output row are 5
+   consecutive frame rows or fewer after the border rule, so they never share a slot) */
+static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t cols,
+                                        const RGBZ_CAT(ci_render_args, RS) *a, void *out,
+                                        int bits, int workers)
+{
+    const int nt = ci_threads(workers, rows * cols);
+    int bad = 0;
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt) reduction(|:bad)
+#endif
+    {
+        const ptrdiff_t stride = 2 * CI_PLANE(cols), h = cols / 2 + 1;
+        double *ring = (double *)malloc((size_t)(8 * stride) * sizeof *ring);
+        REAL *lin = (REAL *)malloc((size_t)(6 * h) * sizeof *lin);
+        uint16_t *code = (uint16_t *)malloc((size_t)(6 * h) * sizeof *code);
+        ptrdiff_t tag[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        ptrdiff_t y0 = 0, y1 = rows;
+#ifdef _OPENMP
+        {
+            const ptrdiff_t t = omp_get_thread_num(), n = omp_get_num_threads();
+            y0 = rows * t / n;
+            y1 = rows * (t + 1) / n;
+        }
+#endif
+        if (!ring || !lin || !code) {
+            bad = 1;
+        } else {
+            for (ptrdiff_t y = y0; y < y1; y++) {
+                double *rp[5];
+                for (int d = 0; d < 5; d++) {
+                    const ptrdiff_t r = ci_extend(y + d - 2, rows, a->mode);
+                    double *slot = ring + (r & 7) * stride;
+                    if (tag[r & 7] != r) {
+                        RGBZ_CAT3(ci_balance, RS, IS)(src, r, cols, a, slot);
+                        tag[r & 7] = r;
+                    }
+                    rp[d] = slot;
+                }
+                RGBZ_CAT(ci_row, RS)(rp, y, cols, a, lin, code, out, bits);
+            }
+        }
+        free(ring);
+        free(lin);
+        free(code);
+    }
+    return bad ? RGBZ_ENOMEM : RGBZ_OK;
+}
+#endif

@@ -1,0 +1,124 @@
+"""The colour chain without its stages, in C passes over the frame (csrc/colour_isp.c).
+
+:meth:`ColourISP.run` and :meth:`ColourISP.render` take this path when no stage is
+kept (``return_stages=False``) and the demosaic is Malvar's C kernel; the stage
+functions stay the reference and the path of ``return_stages``. Three passes:
+
+1. tests 1 and 2 of the defect detection on every colour pixel (:func:`defect_fixes`);
+   test 3 and the median fixes of the few candidates stay in NumPy
+   (:func:`._defects._confirm`, :func:`._defects._fixes`);
+2. the grey-world sums of each 2x2 phase of the complete CFA (:func:`gains`);
+3. white balance, Malvar demosaic, colour matrix and sRGB encoding row by row, the
+   white-balanced rows in cache and the codes from :func:`._encode_table.encode_thresholds`
+   (:func:`render`).
+
+The images are those of the stages bit for bit, except with a colour matrix (NumPy's
+matmul rounds its own way: a code may differ by one) or a float CFA's grey-world sums
+(another order of the additions); tests/isp/test_fused.py checks both.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from .. import _kernels
+from .._patterns import CHANNELS, Z
+from .._validate import kernel_threads
+from ._defects import _colour_offsets, _fixes, _thresholds
+from ._demosaic import DEMOSAIC_MODES
+from ._encode_table import encode_thresholds
+from ._stages import _check_gains, _gains_from_sums
+
+__all__ = ["defect_fixes", "gains", "render"]
+
+#: candidates the first call of the defect pass has room for (more: a second call)
+_CANDIDATE_ROOM = 1 << 14
+
+
+@lru_cache(maxsize=32)
+def _tile_neighbours(tile_bytes, shape):
+    """(noff, offs) of a tile for the C defect pass: the same-colour offsets of every tile
+    position (:func:`._defects._colour_offsets`), -1 neighbours at a Z position."""
+    tile = np.frombuffer(tile_bytes, np.int64).reshape(shape)
+    P, Q = shape
+    noff = np.full(P * Q, -1, np.int32)
+    offs = np.zeros((P, Q, _kernels.CI_MAX_NEIGHBOURS, 2), np.int32)
+    for py in range(P):
+        for px in range(Q):
+            if tile[py, px] == Z:
+                continue
+            o = _colour_offsets(tile, py, px)
+            noff[py * Q + px] = len(o)
+            if o:
+                offs[py, px, :len(o)] = o
+    noff.setflags(write=False)
+    offs.setflags(write=False)
+    return noff, offs
+
+
+def _candidates(data, tile, params, white_level, threads):
+    """:func:`._defects._candidates`'s result from the C pass (the same pixels and floats)."""
+    t = np.ascontiguousarray(tile, np.int64)
+    noff, offs = _tile_neighbours(t.tobytes(), t.shape)
+    thr, k = _thresholds(params, white_level)
+    room = _CANDIDATE_ROOM
+    while True:
+        rr, cc = np.empty(room, np.int64), np.empty(room, np.int64)
+        hot, cold, spread = (np.empty(room, np.float32) for _ in range(3))
+        n = _kernels.ci_defect_candidates(data, noff, offs, thr, k, rr, cc, hot, cold, spread,
+                                          threads)
+        if n <= room:
+            return (rr[:n].astype(np.intp), cc[:n].astype(np.intp), hot[:n], cold[:n],
+                    spread[:n])
+        room = n
+
+
+def defect_fixes(data, pattern, params, white_level, known, workers):
+    """The defect-corrected CFA of validated arguments, and whether anything changed:
+    :func:`._defects.correct_defects` (the input itself when nothing is corrected)."""
+    data = np.ascontiguousarray(data)
+    threads = kernel_threads(workers, data.size)
+    cands = _candidates(data, pattern.tile, params, white_level, threads) \
+        if params.enabled else None
+    rr, cc, values, _ = _fixes(data, pattern, params, white_level, known, candidates=cands)
+    if rr.size == 0:
+        return data
+    out = data.copy()
+    out[rr, cc] = values
+    return out
+
+
+def gains(full, bayer, wb, black, white, given, workers):
+    """The white-balance gains :func:`._stages.white_balance` uses (float64, (3,))."""
+    if given is not None:
+        return _check_gains(given, "gains")
+    if wb.gains is not None:
+        return np.asarray(wb.gains, np.float64)
+    if wb.method not in ("grey_world", "as_shot"):      # an array records no gains
+        return np.ones(3)
+    sums, counts = np.zeros(4), np.zeros(4, np.int64)
+    _kernels.ci_phase_sums(full, float(white), sums, counts,
+                           kernel_threads(workers, full.size))
+    return _gains_from_sums(list(sums), list(counts), bayer.bayer_tile(), black, full, white)
+
+
+def render(full, bayer, chain, black, white, given, workers, matrix=None):
+    """White balance .. output of a complete Bayer CFA (validated) by ``chain`` (a
+    :class:`ColourISP` with the Malvar demosaic): ``(image, gains)``. ``matrix``: the colour
+    matrix when the chain has none (a frame's recorded one)."""
+    dt = np.dtype(chain.precision)
+    full = np.ascontiguousarray(full)
+    g = gains(full, bayer, chain.white_balance, black, white, given, workers)
+    scale = (g / (white - black)).astype(dt)
+    m = chain.colour_correction.matrix if chain.colour_correction.matrix is not None \
+        else matrix
+    matrix = np.zeros(0, dt) if m is None else np.asarray(m, dt).reshape(-1)
+    phase = np.array([CHANNELS.index(c) for c in bayer.bayer_phase], np.int32)
+    bits = chain.output_bits
+    out = np.empty(full.shape + (3,), np.uint8 if bits == 8 else np.uint16)
+    _kernels.ci_render(full, phase, DEMOSAIC_MODES[chain.demosaicing.mode], scale,
+                       dt.type(black), int(chain.white_balance.clip), matrix,
+                       encode_thresholds(dt, bits), out, kernel_threads(workers, full.size))
+    return out, g

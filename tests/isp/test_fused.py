@@ -1,0 +1,212 @@
+"""The fused colour chain (csrc/colour_isp.c, isp/_fused.py) against the stages.
+
+``ColourISP.run(frame)`` and ``render(cfa)`` without stages run the C passes; with
+``return_stages`` they run the NumPy stages. Tolerance: none (the same codes) on integer
+CFAs with the identity colour matrix, the library's default; with a colour matrix one code
+where NumPy's matmul rounds the linear value differently (a few ulp). The NumPy reference
+of tests/_reference/colour_isp.py (colour-demosaicing's Malvar, np.power) agrees to one code.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from _reference.colour_isp import reference_render
+
+import rgbz_fast as rz
+from rgbz_fast import _kernels
+from rgbz_fast.isp import ColourISP, DefectCorrection
+from rgbz_fast.isp import _defects, _fused
+from rgbz_fast.isp._stages import grey_world_gains
+
+
+def _image(shape, seed=0):
+    """A textured linear image in [0, 1]: smooth colour, fine detail and saturated patches."""
+    rng = np.random.default_rng(seed)
+    rr, cc = np.mgrid[0:shape[0], 0:shape[1]] / max(shape)
+    img = np.stack([0.4 + 0.4 * np.sin(9 * rr + 1), 0.5 + 0.4 * np.cos(7 * cc),
+                    0.3 + 0.3 * np.sin(5 * rr + 8 * cc)], axis=-1)
+    img += rng.normal(0, 0.02, img.shape)
+    img[: shape[0] // 6, : shape[1] // 5] = 1.0                       # saturated highlights
+    return np.clip(img, 0, 1)
+
+
+def _frame(pattern, shape=(60, 84), seed=0, defects=40):
+    """A mosaic with hot and cold pixels planted on colour sites (so the defect pass has
+    work), as a RawFrame with its black level."""
+    fr = rz.mosaic(_image(shape, seed), pattern)
+    data = fr.data.copy()
+    rng = np.random.default_rng(seed + 1)
+    ok = np.argwhere(~fr.z_mask)
+    pick = ok[rng.choice(len(ok), defects, replace=False)]
+    data[pick[: defects // 2, 0], pick[: defects // 2, 1]] = 2047
+    data[pick[defects // 2:, 0], pick[defects // 2:, 1]] = 0
+    return data, fr.pattern
+
+
+def _both(chain, data, pattern, **kw):
+    fused = chain.run(data, pattern=pattern, **kw)
+    staged = chain.run(data, pattern=pattern, return_stages=True, **kw)[0]
+    return fused, staged
+
+
+@pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2"])
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+@pytest.mark.parametrize("bits", [8, 16])
+def test_run_is_the_stages(pattern, precision, bits):
+    data, pat = _frame(pattern)
+    chain = ColourISP(precision=precision, output_bits=bits, black_level=40)
+    fused, staged = _both(chain, data, pat)
+    assert fused.dtype == staged.dtype and fused.shape == staged.shape
+    np.testing.assert_array_equal(fused, staged)
+
+
+@pytest.mark.parametrize("changes", [
+    {"demosaicing": {"mode": "period"}},
+    {"white_balance": {"clip": False}},
+    {"white_balance": {"method": "none"}},
+    {"white_balance": {"gains": (1.5, 1.0, 2.25)}},
+    {"defects": {"enabled": False}},
+    {"defects": {"threshold": 0.02, "spread_factor": 0.5}},
+])
+def test_run_is_the_stages_for_every_setting(changes):
+    data, pat = _frame("mask1", seed=2)
+    chain = ColourISP().replace(**changes)
+    fused, staged = _both(chain, data, pat)
+    np.testing.assert_array_equal(fused, staged)
+
+
+@pytest.mark.parametrize("shape", [(2, 2), (3, 5), (5, 2), (7, 9), (13, 11)])
+def test_small_and_odd_frames(shape):
+    rng = np.random.default_rng(sum(shape))
+    data = rng.integers(0, 2048, shape).astype(np.uint16)
+    fused, staged = _both(ColourISP(), data, "bayer")
+    np.testing.assert_array_equal(fused, staged)
+
+
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+def test_every_frame_type(dtype):
+    data, pat = _frame("mask1", seed=4)
+    bits = 8 if dtype == np.uint8 else 11
+    cfa = (data >> 3).astype(dtype) if dtype == np.uint8 else data.astype(dtype)
+    chain = ColourISP()
+    fused, staged = _both(chain, cfa, pat, bit_depth=bits)
+    if np.issubdtype(dtype, np.floating):
+        # grey-world sums of floats in another order: gains a few ulp apart
+        assert np.max(np.abs(fused.astype(int) - staged)) <= 1
+        assert np.mean(fused != staged) < 1e-3
+    else:
+        np.testing.assert_array_equal(fused, staged)
+
+
+def test_known_defects_and_given_gains():
+    data, pat = _frame("mask2", seed=5)
+    known = np.zeros(data.shape, bool)
+    known[10:14, 20:23] = True
+    chain = ColourISP()
+    kw = {"defects": known, "gains": (2.0, 1.0, 1.5), "black_level": 12}
+    fused, staged = _both(chain, data, pat, **kw)
+    np.testing.assert_array_equal(fused, staged)
+
+
+def test_render_is_the_stages():
+    data, _ = _frame("bayer", seed=6)
+    chain = ColourISP(output_bits=16)
+    np.testing.assert_array_equal(chain.render(data, "GRBG"),
+                                  chain.render(data, "GRBG", return_stages=True)[0])
+
+
+def test_colour_matrix_within_one_code():
+    data, pat = _frame("mask1", seed=7)
+    m = ((1.6, -0.4, -0.2), (-0.3, 1.5, -0.2), (0.0, -0.5, 1.5))
+    for bits in (8, 16):
+        chain = ColourISP(colour_correction={"matrix": m}, output_bits=bits)
+        fused, staged = _both(chain, data, pat)
+        diff = np.abs(fused.astype(np.int64) - staged)
+        assert diff.max() <= 1 and np.mean(diff > 0) < 1e-3
+
+
+def test_thread_count_does_not_change_the_image():
+    data, pat = _frame("mask1", shape=(1030, 520), seed=8)       # two threads' worth
+    chain = ColourISP()
+    np.testing.assert_array_equal(chain.run(data, pattern=pat, workers=1),
+                                  chain.run(data, pattern=pat, workers=2))
+
+
+@pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2"])
+def test_defect_candidates_are_the_numpy_ones(pattern):
+    data, pat = _frame(pattern, seed=9, defects=60)
+    params = DefectCorrection(threshold=0.05, spread_factor=0.8)
+    want = _defects._candidates(data, pat.tile, params, 2047)
+    got = _fused._candidates(np.ascontiguousarray(data), pat.tile, params, 2047, 2)
+    assert want[0].size > 30
+
+    def table(c):
+        order = np.lexsort((c[1], c[0]))
+        return [np.asarray(a)[order] for a in c]
+    for a, b in zip(table(got), table(want)):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_defect_candidates_beyond_the_first_room(monkeypatch):
+    data, pat = _frame("bayer", seed=10, defects=200)
+    params = DefectCorrection(threshold=0.05, spread_factor=0.5)
+    monkeypatch.setattr(_fused, "_CANDIDATE_ROOM", 8)
+    got = _fused._candidates(data, pat.tile, params, 2047, 1)
+    assert got[0].size == _defects._candidates(data, pat.tile, params, 2047)[0].size > 8
+
+
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
+def test_phase_sums_give_the_grey_world_gains(dtype):
+    data, pat = _frame("bayer", seed=11)
+    cfa = data.astype(dtype)
+    want = grey_world_gains(cfa, "GRBG", black_level=30, white_level=2047)
+    got = _fused.gains(cfa, pat, ColourISP().white_balance, 30.0, 2047.0, None, 2)
+    if dtype == np.uint16:
+        np.testing.assert_array_equal(got, want)
+    else:
+        np.testing.assert_allclose(got, want, rtol=1e-13)
+
+
+@pytest.mark.parametrize("bits", [8, 16])
+@pytest.mark.parametrize("precision", [np.float32, np.float64])
+def test_render_against_the_numpy_reference(bits, precision):
+    data, pat = _frame("bayer", seed=12, defects=0)
+    gains = (1.7, 1.0, 1.3)
+    m = ((1.2, -0.1, -0.1), (-0.1, 1.2, -0.1), (0.0, -0.2, 1.2))
+    chain = ColourISP(colour_correction={"matrix": m}, output_bits=bits, precision=precision.__name__,
+                      defects={"enabled": False})
+    got = chain.render(data, "GRBG", black_level=20, gains=gains)
+    want = reference_render(data, "GRBG", black=20.0, white=2047.0, gains=gains, matrix=m,
+                            bits=bits, dtype=precision)
+    diff = np.abs(got.astype(np.int64) - want)
+    assert diff.max() <= 1 and np.mean(diff > 0) < 1e-3
+
+
+def test_kernel_rejects_inconsistent_shapes():
+    cfa = np.zeros((4, 4), np.uint16)
+    out = np.zeros((4, 4, 3), np.uint8)
+    with pytest.raises(ValueError, match="ci_render"):
+        _kernels.ci_render(cfa, np.array([1, 0, 2, 1], np.int32), 0, np.ones(3, np.float32),
+                           np.float32(0), 1, np.zeros(0, np.float32), np.zeros(16, np.float32),
+                           out, 1)
+
+
+def test_recorded_gains_and_matrix_of_a_frame():
+    """A frame's as-shot gains and colour matrix (its meta) reach the fused path as the
+    stages: the same gains; the matrix within one code (NumPy's matmul)."""
+    data, pat = _frame("mask1", seed=13)
+    m = (1.5, -0.3, -0.2, -0.2, 1.4, -0.2, 0.0, -0.4, 1.4)
+    frame = rz.RawFrame(data, pat, 11, meta={"white_gains": (1.8, 1.0, 1.4),
+                                             "colour_matrix": m, "colour_black_level": 16.0})
+    chain = ColourISP()
+    fused = chain.run(frame)
+    staged, st = chain.run(frame, return_stages=True)
+    np.testing.assert_array_equal(st["gains"], [1.8, 1.0, 1.4])
+    diff = np.abs(fused.astype(np.int64) - staged)
+    assert diff.max() <= 1 and np.mean(diff > 0) < 1e-3
+    cfa = st["reconstruction"]
+    a = chain.render(cfa, "GRBG", gains=(1.8, 1.0, 1.4), colour_matrix=np.reshape(m, (3, 3)))
+    b = chain.render(cfa, "GRBG", gains=(1.8, 1.0, 1.4), colour_matrix=np.reshape(m, (3, 3)),
+                     return_stages=True)[0]
+    assert np.abs(a.astype(np.int64) - b).max() <= 1
