@@ -41,8 +41,9 @@ DTYPES = (np.uint8, np.uint16, np.float32, np.float64)
 PHASES = rz.BAYER_PHASES
 PRESETS = [f"{base}_{ph.lower()}" for base in ("mask1", "mask2", "rows", "bayer")
            for ph in PHASES]
-#: the plan methods; "learned" (filters fitted per pattern and bit depth) has its own test below
-METHODS = tuple(m for m in rz.METHODS if m != "learned")
+#: the plan methods; "learned" (filters fitted per pattern and bit depth) has its own test below,
+#: the methods that need the Z pixels' measurements (NEEDS_TOF) theirs
+METHODS = tuple(m for m in rz.METHODS if m != "learned" and m not in rz.NEEDS_TOF)
 #: tools/sanitize.sh can skip the inputs of bug B10 (docs/reports/robustness.md): undefined behaviour
 #: that UBSan stops on, harmless on x86 today
 KNOWN_UB_SKIPPED = bool(os.environ.get("RGBZ_SKIP_KNOWN_UB"))

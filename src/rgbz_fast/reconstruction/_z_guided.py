@@ -1,0 +1,561 @@
+"""Colour reconstruction guided by what the Z pixels see (``method="z_guided"``).
+
+A monolithic RGB-Z chip measures, at every Z site, the scene's near-infrared
+reflectance: the demodulated i-ToF amplitude, exactly where the colour is
+missing. ``z_guided`` is the learned method (:mod:`._learned`: the known
+pixels of the 7x7 window, a bucket from a cheap hash of their structure, one
+dot product) with a second, small dot product over *guide features* made from
+that amplitude. Only the amplitude at the Z sites is read, never a NIR value
+at a colour site; on Mask2 one 2x2 Z pixel gives one value for its four
+sites.
+
+Guide features of a Z site (its target colour t, its Z measurement m0 and the
+3 x 3 measurements around it, one pattern period apart; at the frame's edge
+the nearest measurement inside stands in):
+
+* the *relative* amplitude ``u_m = N_m / mean(N) - 1`` (0 when the mean is 0),
+  so that any positive scale of the guide gives the same result;
+* ``base * u_m`` for the 9 measurements, ``base`` being the mean of the
+  target-colour taps of the 5x5 window (the learned method's baseline);
+* a local linear model of the colour against the amplitude: ``C_m``, the
+  mean of the known target-colour pixels in the box of the Z pixel m and the
+  two pixels around it, ``a = sum_m u_m (C_m - mean C) / (sum_m u_m^2 + 9
+  lam)``, and the two features ``mean C + a u_0 - base`` and ``a u_0 - (C_0 -
+  mean C)``.
+
+The colour weights (the learned filters' weights plus a fitted correction)
+and the 11 guide weights are fitted per (Z site of the tile, bucket) by
+:func:`train_z_guided` on frames whose true colour and NIR are known.
+docs/guide/z_guided.md is the specification.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+from pathlib import Path
+
+import numpy as np
+
+from .._frame import RawFrame, ToFTaps
+from .._patterns import Z, get_pattern
+from .._validate import check_number
+from ..io import atomic_write, read_npz
+from ._learned import (LearnedFilters, _extend_index, _features, check_filters, default_filters,
+                       gather_windows, hash_buckets, hash_features)
+
+__all__ = ["ZGuidedFilters", "train_z_guided", "z_layout", "guide_grid", "guide_features",
+           "N_GUIDE", "NEEDS_TOF"]
+
+#: the methods of :func:`rgbz_fast.reconstruct` that read what the Z pixels measured: a
+#: frame with ToF taps (or ``nir=``); a plain array alone cannot feed them
+NEEDS_TOF = frozenset({"z_guided"})
+#: guide features per site: 9 relative amplitudes times the baseline, 2 of the local model
+N_GUIDE = 11
+#: the neighbourhood of measurements: (2 K + 1)^2, one pattern period apart
+_K = 1
+#: version of the .npz layout; a file of another version is refused
+FORMAT_VERSION = 1
+_MAGIC = "rgbz-fast z_guided filters"
+
+
+def z_layout(pattern, name="pattern"):
+    """``(zr, zc, block)``: the top-left tile cell of the pattern's one Z pixel and its size.
+
+    ``z_guided`` reads one amplitude per Z pixel: a pattern must hold one Z
+    pixel per tile, a single Z site (Mask1, block 1) or one aligned 2x2 square
+    of them (Mask2, block 2), in a tile of a Bayer phase.
+    """
+    pattern = get_pattern(pattern)
+    z = np.argwhere(pattern.tile == Z)
+    if pattern.bayer_phase is None or len(z) not in (1, 4):
+        raise ValueError(f"{name}: method 'z_guided' needs a pattern of a Bayer phase with one "
+                         f"Z pixel per tile (one Z site, or one 2x2 square of them); "
+                         f"{pattern.name!r} ({pattern.tile_string}) is not one")
+    zr, zc = (int(v) for v in z.min(axis=0))
+    if len(z) == 4 and not (np.array_equal(z.max(axis=0) - z.min(axis=0), [1, 1])
+                            and zr % 2 == 0 and zc % 2 == 0):
+        raise ValueError(f"{name}: the 4 Z sites of {pattern.name!r} ({pattern.tile_string}) "
+                         "are not one aligned 2x2 Z pixel, which 'z_guided' needs")
+    return zr, zc, 1 if len(z) == 1 else 2
+
+
+def _grid_shape(shape, pattern):
+    """Rows and columns of the measurement grid: one Z pixel per tile of the frame."""
+    (P, Q), (zr, zc, _) = pattern.period, z_layout(pattern)
+    return len(range(zr, shape[0], P)), len(range(zc, shape[1], Q))
+
+
+def _complete(shape, pattern):
+    """Bool grid: the Z pixel of the tile lies wholly inside the frame (a measurement exists)."""
+    (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
+    gy, gx = _grid_shape(shape, pattern)
+    rows = zr + P * np.arange(gy) + b - 1 < shape[0]
+    cols = zc + Q * np.arange(gx) + b - 1 < shape[1]
+    return rows[:, None] & cols[None, :]
+
+
+def _fill_cut(grid, complete):
+    """A Z pixel cut by the frame's edge has no measurement: it takes the one a period inwards."""
+    if complete.all():
+        return grid
+    if not complete.any():
+        raise ValueError("shape: the frame holds no complete Z pixel")
+    out = grid.copy()
+    gy, gx = grid.shape
+    iy = np.minimum(np.arange(gy), np.nonzero(complete.any(axis=1))[0].max())
+    ix = np.minimum(np.arange(gx), np.nonzero(complete.any(axis=0))[0].max())
+    out[~complete] = grid[np.ix_(iy, ix)][~complete]
+    return out
+
+
+def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir"):
+    """The NIR value of every Z pixel, on the grid of the tiles (float64, (rows, cols) tiles).
+
+    From ``nir`` (an array of the frame's shape; only its Z sites are read, the
+    mean of the four on a 2x2 Z pixel; any positive scale) or else from
+    ``tof`` (:meth:`ToFTaps.amplitude`). A Z pixel cut by the frame's edge (no
+    measurement) takes the value a pattern period inwards. ValueError naming
+    ``name`` when neither is given or the values cannot be a NIR image.
+    """
+    pattern = get_pattern(pattern)
+    (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
+    gy, gx = _grid_shape(shape, pattern)
+    complete = _complete(shape, pattern)
+    if nir is not None:
+        a = np.asarray(nir)
+        if a.dtype == object or not (np.issubdtype(a.dtype, np.floating)
+                                     or np.issubdtype(a.dtype, np.integer)):
+            raise TypeError(f"{name}: expected a real numeric array of the frame's shape, got "
+                            f"dtype {a.dtype}")
+        if a.shape != tuple(shape):
+            raise ValueError(f"{name}: expected the frame's shape {tuple(shape)}, got {a.shape}")
+        grid = np.zeros((gy, gx))
+        for dy in range(b):
+            for dx in range(b):
+                cell = a[zr + dy::P, zc + dx::Q].astype(np.float64)
+                grid[:cell.shape[0], :cell.shape[1]] += cell / (b * b)
+        vals = grid[complete]
+        if not np.all(np.isfinite(vals)):
+            raise ValueError(f"{name}: holds NaN or infinite values at Z sites")
+        if vals.min() < 0:
+            raise ValueError(f"{name}: holds negative values at Z sites (min {vals.min():g}); "
+                             "a NIR image or amplitude is >= 0")
+        return _fill_cut(grid, complete)
+    if tof is None:
+        raise ValueError(f"{name}: method 'z_guided' is guided by the NIR amplitude the Z pixels "
+                         "measured, and this frame carries no ToF taps: pass nir=, a float "
+                         "array of the frame's shape (read at the Z sites only), or a RawFrame "
+                         "with its taps (rgbz_fast.simulation.simulate, rgbz_fast.io.load_frame)")
+    if not isinstance(tof, ToFTaps):
+        raise TypeError(f"frame.tof: expected ToFTaps, got {type(tof).__name__}")
+    if tof.block != b:
+        raise ValueError(f"frame.tof: taps of {tof.block}x{tof.block} Z pixels, pattern "
+                         f"{pattern.name!r} has {b}x{b} Z pixels")
+    rows, cols = tof.sites
+    iy, ry = np.divmod(rows - zr, P)
+    ix, rx = np.divmod(cols - zc, Q)
+    if np.any(ry) or np.any(rx) or not np.array_equal(np.sort(iy * gx + ix),
+                                                      np.flatnonzero(complete)):
+        raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
+                         f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
+    grid = np.zeros((gy, gx))
+    grid[iy, ix] = tof.amplitude()
+    return _fill_cut(grid, complete)
+
+
+def colour_grids(data, pattern, channels):
+    """For each channel: the mean of its known pixels in the box of every Z pixel and the two
+    pixels around it, on the grid of the tiles (borders: whole periods, as every kernel)."""
+    pattern = get_pattern(pattern)
+    (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
+    H, W = data.shape
+    gy, gx = _grid_shape(data.shape, pattern)
+    ext = 2
+    yi, xi = _extend_index(H, ext + P, P), _extend_index(W, ext + Q, Q)
+    pad = np.asarray(data, np.float64)[yi][:, xi]
+    chan = pattern.channel_map((P, Q))[(yi % P)[:, None], (xi % Q)[None, :]]
+    out = {}
+    for t in channels:
+        s = np.zeros((gy, gx))
+        n = 0
+        for dy in range(-ext, b + ext):
+            for dx in range(-ext, b + ext):
+                y0, x0 = ext + P + zr + dy, ext + Q + zc + dx
+                if chan[y0, x0] != t:
+                    continue
+                s += pad[y0::P, x0::Q][:gy, :gx]
+                n += 1
+        out[t] = s / n
+    return out
+
+
+def _neighbours(grid, iy, ix):
+    """The (2 K + 1)^2 values around grid cells (iy, ix), row-major (edges: clamped)."""
+    gy, gx = grid.shape
+    cols = []
+    for dy in range(-_K, _K + 1):
+        for dx in range(-_K, _K + 1):
+            cols.append(grid[np.clip(iy + dy, 0, gy - 1), np.clip(ix + dx, 0, gx - 1)])
+    return np.stack(cols, axis=1)
+
+
+def guide_features(N, C, base, lam):
+    """The guide features (n, 11) from the amplitudes ``N`` and colour means ``C`` (n, 9) of the
+    measurements around each site and its baseline ``base`` (n,); float64."""
+    c = N.shape[1] // 2
+    Nb = N.mean(axis=1)
+    ok = Nb > 0
+    u = np.where(ok[:, None], N / np.where(ok, Nb, 1.0)[:, None] - 1.0, 0.0)
+    Cb = C.mean(axis=1)
+    dc = C - Cb[:, None]
+    a = (u * dc).sum(axis=1) / ((u * u).sum(axis=1) + N.shape[1] * lam)
+    au = a * u[:, c]
+    return np.hstack([base[:, None] * u, (Cb + au - base)[:, None],
+                      (au - dc[:, c])[:, None]])
+
+
+def _site_features(data, pattern, grid, colour, lam):
+    """Per phase of ``colour`` (LearnedFilters): windows X, buckets, guide features G."""
+    P, Q = pattern.period
+    zr, zc, _ = z_layout(pattern)
+    cg = colour_grids(data, pattern, sorted({ph["target"] for ph in colour.geometry}))
+    out = []
+    for k, (X, (r, c, ny, nx)) in enumerate(
+            gather_windows(data, pattern, colour.radius, colour.geometry)):
+        ph = colour.geometry[k]
+        bk = hash_buckets(*hash_features(X, ph["pairs"]), colour.strength_thresholds[k],
+                          colour.coherence_thresholds[k])
+        # the site's tile index is its Z pixel's index on the grid
+        iy, ix = np.divmod(np.arange(ny * nx), nx)
+        N = _neighbours(grid, iy, ix)
+        C = _neighbours(cg[ph["target"]], iy, ix)
+        G = guide_features(N, C, X[:, ph["base"]].mean(axis=1), lam)
+        out.append((X, bk, G, (r, c, ny, nx)))
+    return out
+
+
+class ZGuidedFilters:
+    """The filters of ``method="z_guided"``: learned colour filters plus guide weights.
+
+    Made by :func:`train_z_guided` or read by :meth:`load`. Immutable; equal
+    when their contents are (:attr:`digest`).
+
+    Parameters
+    ----------
+    colour : LearnedFilters
+        The colour part: hash, taps and weights of every (Z site of the tile,
+        bucket), as for ``method="learned"``.
+    guide_weights : ndarray, shape (n_phases, n_buckets, 11)
+        The weights of the guide features (module docstring) of every (Z site
+        of the tile, bucket).
+    lam : float
+        Regularisation of the local linear model (> 0, in squared relative
+        amplitude).
+    meta : dict, optional
+        What they were fitted on (strings and numbers, kept in the file).
+    """
+
+    def __init__(self, colour, guide_weights, lam, *, meta=None):
+        if not isinstance(colour, LearnedFilters):
+            raise TypeError(f"colour: expected LearnedFilters, got {type(colour).__name__}")
+        z_layout(colour.pattern, "filters")
+        self.colour = colour
+        self.lam = check_number(lam, "lam", lo=0, lo_open=True)
+        g = np.array(guide_weights, np.float64).astype(np.float32).astype(np.float64)
+        shape = (len(colour.geometry), colour.n_buckets, N_GUIDE)
+        if g.shape != shape:
+            raise ValueError(f"filters: expected guide weights of shape {shape}, got {g.shape}")
+        if not np.all(np.isfinite(g)):
+            raise ValueError("filters: guide weights hold NaN or infinity")
+        g.setflags(write=False)
+        self.guide_weights = g
+        self.meta = {str(k): (v if isinstance(v, (int, float)) else str(v))
+                     for k, v in dict(meta or {}).items()}
+        h = hashlib.sha1(colour.digest.encode())
+        h.update(repr(self.lam).encode())
+        h.update(g.tobytes())
+        self.digest = h.hexdigest()[:16]
+
+    pattern = property(lambda self: self.colour.pattern)
+    bit_depth = property(lambda self: self.colour.bit_depth)
+    n_buckets = property(lambda self: self.colour.n_buckets)
+
+    def __repr__(self):
+        src = self.meta.get("training_set", "?")
+        return (f"ZGuidedFilters(pattern={self.pattern.name!r}, bit_depth={self.bit_depth}, "
+                f"buckets={self.n_buckets}, trained on {src!r}, digest={self.digest})")
+
+    __str__ = __repr__
+
+    def __eq__(self, other):
+        return isinstance(other, ZGuidedFilters) and other.digest == self.digest
+
+    def __hash__(self):
+        return hash(self.digest)
+
+    def check_frame(self, pattern, bit_depth, name="filters"):
+        """ValueError naming ``name`` unless the filters fit a frame of ``pattern`` and bits."""
+        self.colour.check_frame(pattern, bit_depth, name)
+
+    def reconstruct(self, data, grid):
+        """NumPy reconstruction (float64, unclipped) of ``data`` guided by ``grid``
+        (:func:`guide_grid`): the colour sites copied, the Z sites filled in."""
+        pattern = self.pattern
+        P, Q = pattern.period
+        out = np.array(data, np.float64)
+        for k, (X, bk, G, (r, c, ny, nx)) in enumerate(
+                _site_features(data, pattern, grid, self.colour, self.lam)):
+            w = self.colour.weights[k][:, :X.shape[1]]
+            v = np.einsum("ij,ij->i", X, w[bk]) + np.einsum("ij,ij->i", G,
+                                                             self.guide_weights[k][bk])
+            out[r::P, c::Q][:ny, :nx] = v.reshape(ny, nx)
+        return out
+
+    # -- files ------------------------------------------------------------------
+    def to_bytes(self):
+        """The .npz file's content (see :meth:`save`)."""
+        with np.load(io.BytesIO(self.colour.to_bytes())) as z:
+            colour = {f"colour_{k}": z[k] for k in z.files}
+        buf = io.BytesIO()
+        np.savez(buf, format=np.array(_MAGIC), version=np.array(FORMAT_VERSION),
+                 guide_weights=self.guide_weights.astype(np.float32), lam=np.array(self.lam),
+                 n_guide=np.array(N_GUIDE), meta_keys=np.array(list(self.meta), dtype=str),
+                 meta_values=np.array([repr(v) for v in self.meta.values()], dtype=str),
+                 **colour)
+        return buf.getvalue()
+
+    def save(self, path):
+        """Write the filters to ``path`` (.npz, atomically)."""
+        atomic_write(path, self.to_bytes())
+
+    @classmethod
+    def load(cls, path, name="filters"):
+        """Read a file written by :meth:`save`; ValueError naming ``name`` if it is not one."""
+        p = Path(path)
+        z = read_npz(p, name)
+        if not is_z_guided_file(z):
+            raise ValueError(f"{name}: {p} is not a rgbz-fast z_guided filters file")
+        try:
+            if int(z["version"]) != FORMAT_VERSION:
+                raise ValueError(f"{name}: {p} has format version {int(z['version'])}, this "
+                                 f"library reads version {FORMAT_VERSION}")
+            if int(z["n_guide"]) != N_GUIDE:
+                raise ValueError(f"{name}: {p} has {int(z['n_guide'])} guide features, "
+                                 f"expected {N_GUIDE}")
+            import ast
+            colour = LearnedFilters._from_arrays(
+                {k[len("colour_"):]: v for k, v in z.items() if k.startswith("colour_")}, p, name)
+            keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
+            if not isinstance(keys, list) or not isinstance(values, list):
+                raise TypeError("meta_keys and meta_values must be 1-d arrays")
+            meta = {str(k): ast.literal_eval(str(v)[:100_000]) for k, v in zip(keys, values)}
+            return cls(colour, z["guide_weights"].astype(np.float64), float(z["lam"]), meta=meta)
+        except KeyError as e:
+            raise ValueError(f"{name}: {p} lacks {e} (a damaged filters file)") from None
+        except (TypeError, ValueError, SyntaxError, RecursionError, MemoryError) as e:
+            msg = str(e)
+            if msg.startswith(f"{name}: "):
+                raise ValueError(msg) from None
+            raise ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
+                             f"{msg[:200]})") from None
+
+
+def is_z_guided_file(arrays):
+    """True if the arrays of an .npz are a z_guided filters file (its format tag)."""
+    f = arrays.get("format")
+    return f is not None and f.dtype.kind in "US" and str(f) == _MAGIC
+
+
+def check_any_filters(value, name="filters"):
+    """``filters`` of ReconstructParams: as :func:`._learned.check_filters`, and z_guided
+    filters (:class:`ZGuidedFilters` or their files) beside the learned ones."""
+    if value is None:
+        return None
+    items = [value] if isinstance(value, (str, Path, LearnedFilters, ZGuidedFilters)) else value
+    try:
+        items = list(items)
+    except TypeError:
+        raise TypeError(f"{name}: expected a LearnedFilters, a ZGuidedFilters, a path to a "
+                        f"filters file, a sequence of them or None, got "
+                        f"{type(value).__name__}") from None
+    out = []
+    for v in items:
+        if isinstance(v, ZGuidedFilters):
+            out.append(v)
+        elif isinstance(v, (str, Path)) and Path(v).suffix.lower() == ".npz" and \
+                Path(v).is_file() and is_z_guided_file(read_npz(v, name, keys=("format",))):
+            out.append(ZGuidedFilters.load(v, name))
+        else:
+            out.extend(check_filters(v, name))
+    if not out:
+        raise ValueError(f"{name}: empty sequence")
+    return tuple(out)
+
+
+def learned_only(filters, name="filters"):
+    """The LearnedFilters of a checked ``filters`` value (None stays None: the shipped ones)."""
+    if filters is None:
+        return None
+    out = tuple(f for f in filters if isinstance(f, LearnedFilters))
+    if not out:
+        raise ValueError(f"{name}: only z_guided filters given; method 'learned' needs "
+                         "LearnedFilters (rgbz_fast.reconstruction.train)")
+    return out
+
+
+def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
+    """The :class:`ZGuidedFilters` for a frame: one of ``filters`` fitted for its pattern and bit
+    depth (the package ships none yet)."""
+    cands = () if filters is None else tuple(f for f in filters if isinstance(f, ZGuidedFilters))
+    if not cands:
+        raise ValueError(f"{name}: method 'z_guided' needs z_guided filters, and none ship for "
+                         f"pattern {pattern.name!r} at {bit_depth} bits: fit some with "
+                         "rgbz_fast.reconstruction.train_z_guided and pass filters=")
+    for f in cands:
+        if f.pattern == pattern and f.bit_depth == bit_depth:
+            return f
+    if len(cands) == 1:
+        cands[0].check_frame(pattern, bit_depth, name)
+    have = ", ".join(f"{f.pattern.name} {f.bit_depth}-bit" for f in cands)
+    raise ValueError(f"{name}: no z_guided filters fit pattern {pattern.name!r} at "
+                     f"{bit_depth} bits (given: {have})")
+
+
+def run_z_guided(src, out, pattern, filters, grid, bit_depth):
+    """Fill ``out``: the colour sites of ``src`` and its Z sites by ``filters`` guided by
+    ``grid``, clipped to [0, 2^b - 1] (integer types rounded half up)."""
+    res = filters.reconstruct(src, grid)
+    np.clip(res, 0, (1 << bit_depth) - 1, out=res)
+    if np.issubdtype(out.dtype, np.integer):
+        res = np.floor(res + 0.5)
+    out[...] = res.astype(out.dtype)
+    return out
+
+
+def train_z_guided(frames, *, nir=None, base=None, ridge=1e-3, prior=50.0, colour_prior=4.0,
+                   lam=0.01, meta=None):
+    """Fit :class:`ZGuidedFilters` to frames whose true colour at the Z sites is known.
+
+    Parameters
+    ----------
+    frames : iterable of RawFrame
+        Frames of one pattern and bit depth, each with its ``reference`` (the
+        complete Bayer CFA) and its ToF taps (``frame.tof``, as
+        :func:`rgbz_fast.simulation.simulate` makes them) unless ``nir`` gives
+        its guide.
+    nir : sequence, optional
+        One entry per frame: an array of the frame's shape (read at its Z
+        sites only) or None (the frame's taps).
+    base : LearnedFilters, optional
+        The learned filters the fit starts from (their hash and taps); default
+        the ones shipped for the pattern and bit depth.
+    ridge, prior : float
+        As for :func:`rgbz_fast.reconstruction.train`: the ridge term relative
+        to the mean diagonal of each normal matrix, and the weight, in sites,
+        of the phase-wide fit in each bucket's.
+    colour_prior : float
+        The prior of the colour correction, times ``prior`` (> 0; a large
+        value keeps the colour weights of every bucket at the phase-wide
+        correction).
+    lam : float
+        Regularisation of the local linear model (module docstring), > 0.
+    meta : dict, optional
+        Extra metadata kept with the filters.
+
+    Returns
+    -------
+    ZGuidedFilters
+    """
+    ridge = check_number(ridge, "ridge", lo=0)
+    prior = check_number(prior, "prior", lo=0)
+    colour_prior = check_number(colour_prior, "colour_prior", lo=0, lo_open=True)
+    lam = check_number(lam, "lam", lo=0, lo_open=True)
+    frames = list(frames)
+    if not frames:
+        raise ValueError("frames: no frames to train on")
+    nir = [None] * len(frames) if nir is None else list(nir)
+    if len(nir) != len(frames):
+        raise ValueError(f"nir: expected one entry per frame ({len(frames)}), got {len(nir)}")
+    pattern = bit_depth = None
+    for i, fr in enumerate(frames):
+        if not isinstance(fr, RawFrame):
+            raise TypeError(f"frames: expected RawFrame entries, got {type(fr).__name__} at {i}")
+        if fr.reference is None:
+            raise ValueError(f"frames: frame {i} has no reference CFA to learn from")
+        if pattern is None:
+            pattern, bit_depth = fr.pattern, fr.bit_depth
+        elif fr.pattern != pattern or fr.bit_depth != bit_depth:
+            raise ValueError(f"frames: frame {i} is {fr.pattern.name!r} at {fr.bit_depth} bits, "
+                             f"frame 0 {pattern.name!r} at {bit_depth} bits")
+    z_layout(pattern, "frames")
+    if base is None:
+        base = default_filters(pattern, bit_depth)
+        if base is None:
+            raise ValueError(f"base: no learned filters ship for pattern {pattern.name!r} at "
+                             f"{bit_depth} bits; pass base=")
+    elif not isinstance(base, LearnedFilters):
+        raise TypeError(f"base: expected LearnedFilters, got {type(base).__name__}")
+    base.check_frame(pattern, bit_depth, "base")
+    geometry, nb = base.geometry, base.n_buckets
+    P, Q = pattern.period
+    sizes = [len(ph["taps"]) + N_GUIDE for ph in geometry]
+    A = [np.zeros((nb, q, q)) for q in sizes]
+    v = [np.zeros((nb, q)) for q in sizes]
+    counts = [np.zeros(nb, np.int64) for _ in geometry]
+    for i, fr in enumerate(frames):
+        grid = guide_grid(fr.shape, pattern, tof=fr.tof, nir=nir[i], name=f"nir[{i}]")
+        ref = np.asarray(fr.reference, np.float64)
+        for k, (X, bk, G, (r, c, ny, nx)) in enumerate(
+                _site_features(fr.data, pattern, grid, base, lam)):
+            F, _ = _features(X, geometry[k])
+            L = np.einsum("ij,ij->i", X, base.weights[k][:, :X.shape[1]][bk])
+            y = ref[r::P, c::Q][:ny, :nx].reshape(-1) - L
+            order = np.argsort(bk, kind="stable")
+            FG, y = np.hstack([F, G])[order], y[order]
+            bounds = np.searchsorted(bk[order], np.arange(nb + 1))
+            for j in range(nb):
+                a, e = bounds[j], bounds[j + 1]
+                if e > a:
+                    A[k][j] += FG[a:e].T @ FG[a:e]
+                    v[k][j] += FG[a:e].T @ y[a:e]
+            counts[k] += np.bincount(bk, minlength=nb)
+    weights = np.array(base.weights, np.float64)
+    guide = np.zeros((len(geometry), nb, N_GUIDE))
+    for k, ph in enumerate(geometry):
+        nt = len(ph["taps"])
+        mult = np.ones(sizes[k])
+        mult[:nt] = colour_prior
+        W = _fit_buckets(A[k], v[k], counts[k], ridge, prior, mult)
+        delta = W[:, :nt]
+        for col in np.unique(ph["colours"]):      # onto the taps: each colour's mean removed
+            m = ph["colours"] == col
+            delta[:, m] -= delta[:, m].sum(axis=1, keepdims=True) / m.sum()
+        weights[k, :, :nt] += delta
+        guide[k] = W[:, nt:]
+    from .._build_config import VERSION
+    info = {"n_images": len(frames), "n_sites": int(sum(c.sum() for c in counts)),
+            "ridge": ridge, "prior": prior, "colour_prior": colour_prior,
+            "base": base.meta.get("training_set", "?"), "base_digest": base.digest,
+            "library_version": VERSION}
+    info.update(meta or {})
+    colour = LearnedFilters(pattern, bit_depth, weights, base.strength_thresholds,
+                            base.coherence_thresholds, radius=base.radius,
+                            hash_radius=base.hash_radius, meta=info)
+    return ZGuidedFilters(colour, guide, lam, meta=info)
+
+
+def _fit_buckets(A, v, counts, ridge, prior, mult):
+    """Ridge fits from the normal equations: one on every site, then one per bucket shrunk
+    towards it by ``prior`` sites (times ``mult`` per feature)."""
+    p = A.shape[1]
+    Ag, vg, n = A.sum(axis=0), v.sum(axis=0), max(int(counts.sum()), 1)
+    scale = max(np.trace(Ag) / p, np.finfo(float).tiny)
+    eye = np.eye(p)
+    wg = np.linalg.solve(Ag + ridge * scale * eye, vg)
+    W = np.empty((len(A), p))
+    for j in range(len(A)):
+        lam = (prior * scale / n + ridge * np.trace(A[j]) / p) * mult
+        lam = np.where(lam > 0, lam, ridge * scale + np.finfo(float).tiny)
+        W[j] = np.linalg.solve(A[j] + np.diag(lam), v[j] + lam * wg)
+    return W
