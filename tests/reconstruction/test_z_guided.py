@@ -228,3 +228,17 @@ def test_the_fit_refuses_frames_it_cannot_learn_from():
         train_z_guided([frame], nir=[None, None])
     with pytest.raises(ValueError, match="^lam: "):
         train_z_guided([frame], lam=0)
+
+
+def test_the_fit_is_the_solution_of_the_summed_equations():
+    from rgbz_fast.reconstruction._z_guided_fit import fit_stats, frame_stats
+
+    frames = [simulate(_scene(seed=s)[0], "mask2", noise=bool(s % 2)) for s in (4, 5)]
+    base = train(frames, n_strength=1, n_coherence=2)
+    fit = train_z_guided(frames, base=base, lam=0.02)
+    s0, s1 = (frame_stats(f, base, 0.02) for f in frames)
+    total = [[a + b for a, b in zip(x, y)] for x, y in zip(s0, s1)]
+    assert fit_stats(total, base, 0.02) == fit
+    alone = train_z_guided(frames, base=base, lam=0.02, guide=False)
+    assert not alone.guide_weights.any() and alone.meta["guide"] == 0
+    assert not np.array_equal(alone.colour.weights, base.weights)

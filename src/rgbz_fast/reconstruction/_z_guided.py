@@ -25,7 +25,7 @@ the nearest measurement inside stands in):
 
 The colour weights (the learned filters' weights plus a fitted correction)
 and the 11 guide weights are fitted per (Z site of the tile, bucket) by
-:func:`train_z_guided` on frames whose true colour and NIR are known.
+:func:`._z_guided_fit.train_z_guided` on frames whose true colour and NIR are known.
 docs/guide/z_guided.md is the specification.
 """
 
@@ -37,15 +37,15 @@ from pathlib import Path
 
 import numpy as np
 
-from .._frame import RawFrame, ToFTaps
+from .._frame import ToFTaps
 from .._patterns import Z, get_pattern
 from .._validate import check_number
 from ..io import atomic_write, read_npz
-from ._learned import (LearnedFilters, _extend_index, _features, check_filters, default_filters,
-                       gather_windows, hash_buckets, hash_features)
+from ._learned import (LearnedFilters, _extend_index, check_filters, gather_windows, hash_buckets,
+                       hash_features)
 
-__all__ = ["ZGuidedFilters", "train_z_guided", "z_layout", "guide_grid", "guide_features",
-           "N_GUIDE", "NEEDS_TOF"]
+__all__ = ["ZGuidedFilters", "z_layout", "guide_grid", "guide_features", "N_GUIDE",
+           "NEEDS_TOF"]
 
 #: the methods of :func:`rgbz_fast.reconstruct` that read what the Z pixels measured: a
 #: frame with ToF taps (or ``nir=``); a plain array alone cannot feed them
@@ -431,131 +431,3 @@ def run_z_guided(src, out, pattern, filters, grid, bit_depth):
         res = np.floor(res + 0.5)
     out[...] = res.astype(out.dtype)
     return out
-
-
-def train_z_guided(frames, *, nir=None, base=None, ridge=1e-3, prior=50.0, colour_prior=4.0,
-                   lam=0.01, meta=None):
-    """Fit :class:`ZGuidedFilters` to frames whose true colour at the Z sites is known.
-
-    Parameters
-    ----------
-    frames : iterable of RawFrame
-        Frames of one pattern and bit depth, each with its ``reference`` (the
-        complete Bayer CFA) and its ToF taps (``frame.tof``, as
-        :func:`rgbz_fast.simulation.simulate` makes them) unless ``nir`` gives
-        its guide.
-    nir : sequence, optional
-        One entry per frame: an array of the frame's shape (read at its Z
-        sites only) or None (the frame's taps).
-    base : LearnedFilters, optional
-        The learned filters the fit starts from (their hash and taps); default
-        the ones shipped for the pattern and bit depth.
-    ridge, prior : float
-        As for :func:`rgbz_fast.reconstruction.train`: the ridge term relative
-        to the mean diagonal of each normal matrix, and the weight, in sites,
-        of the phase-wide fit in each bucket's.
-    colour_prior : float
-        The prior of the colour correction, times ``prior`` (> 0; a large
-        value keeps the colour weights of every bucket at the phase-wide
-        correction).
-    lam : float
-        Regularisation of the local linear model (module docstring), > 0.
-    meta : dict, optional
-        Extra metadata kept with the filters.
-
-    Returns
-    -------
-    ZGuidedFilters
-    """
-    ridge = check_number(ridge, "ridge", lo=0)
-    prior = check_number(prior, "prior", lo=0)
-    colour_prior = check_number(colour_prior, "colour_prior", lo=0, lo_open=True)
-    lam = check_number(lam, "lam", lo=0, lo_open=True)
-    frames = list(frames)
-    if not frames:
-        raise ValueError("frames: no frames to train on")
-    nir = [None] * len(frames) if nir is None else list(nir)
-    if len(nir) != len(frames):
-        raise ValueError(f"nir: expected one entry per frame ({len(frames)}), got {len(nir)}")
-    pattern = bit_depth = None
-    for i, fr in enumerate(frames):
-        if not isinstance(fr, RawFrame):
-            raise TypeError(f"frames: expected RawFrame entries, got {type(fr).__name__} at {i}")
-        if fr.reference is None:
-            raise ValueError(f"frames: frame {i} has no reference CFA to learn from")
-        if pattern is None:
-            pattern, bit_depth = fr.pattern, fr.bit_depth
-        elif fr.pattern != pattern or fr.bit_depth != bit_depth:
-            raise ValueError(f"frames: frame {i} is {fr.pattern.name!r} at {fr.bit_depth} bits, "
-                             f"frame 0 {pattern.name!r} at {bit_depth} bits")
-    z_layout(pattern, "frames")
-    if base is None:
-        base = default_filters(pattern, bit_depth)
-        if base is None:
-            raise ValueError(f"base: no learned filters ship for pattern {pattern.name!r} at "
-                             f"{bit_depth} bits; pass base=")
-    elif not isinstance(base, LearnedFilters):
-        raise TypeError(f"base: expected LearnedFilters, got {type(base).__name__}")
-    base.check_frame(pattern, bit_depth, "base")
-    geometry, nb = base.geometry, base.n_buckets
-    P, Q = pattern.period
-    sizes = [len(ph["taps"]) + N_GUIDE for ph in geometry]
-    A = [np.zeros((nb, q, q)) for q in sizes]
-    v = [np.zeros((nb, q)) for q in sizes]
-    counts = [np.zeros(nb, np.int64) for _ in geometry]
-    for i, fr in enumerate(frames):
-        grid = guide_grid(fr.shape, pattern, tof=fr.tof, nir=nir[i], name=f"nir[{i}]")
-        ref = np.asarray(fr.reference, np.float64)
-        for k, (X, bk, G, (r, c, ny, nx)) in enumerate(
-                _site_features(fr.data, pattern, grid, base, lam)):
-            F, _ = _features(X, geometry[k])
-            L = np.einsum("ij,ij->i", X, base.weights[k][:, :X.shape[1]][bk])
-            y = ref[r::P, c::Q][:ny, :nx].reshape(-1) - L
-            order = np.argsort(bk, kind="stable")
-            FG, y = np.hstack([F, G])[order], y[order]
-            bounds = np.searchsorted(bk[order], np.arange(nb + 1))
-            for j in range(nb):
-                a, e = bounds[j], bounds[j + 1]
-                if e > a:
-                    A[k][j] += FG[a:e].T @ FG[a:e]
-                    v[k][j] += FG[a:e].T @ y[a:e]
-            counts[k] += np.bincount(bk, minlength=nb)
-    weights = np.array(base.weights, np.float64)
-    guide = np.zeros((len(geometry), nb, N_GUIDE))
-    for k, ph in enumerate(geometry):
-        nt = len(ph["taps"])
-        mult = np.ones(sizes[k])
-        mult[:nt] = colour_prior
-        W = _fit_buckets(A[k], v[k], counts[k], ridge, prior, mult)
-        delta = W[:, :nt]
-        for col in np.unique(ph["colours"]):      # onto the taps: each colour's mean removed
-            m = ph["colours"] == col
-            delta[:, m] -= delta[:, m].sum(axis=1, keepdims=True) / m.sum()
-        weights[k, :, :nt] += delta
-        guide[k] = W[:, nt:]
-    from .._build_config import VERSION
-    info = {"n_images": len(frames), "n_sites": int(sum(c.sum() for c in counts)),
-            "ridge": ridge, "prior": prior, "colour_prior": colour_prior,
-            "base": base.meta.get("training_set", "?"), "base_digest": base.digest,
-            "library_version": VERSION}
-    info.update(meta or {})
-    colour = LearnedFilters(pattern, bit_depth, weights, base.strength_thresholds,
-                            base.coherence_thresholds, radius=base.radius,
-                            hash_radius=base.hash_radius, meta=info)
-    return ZGuidedFilters(colour, guide, lam, meta=info)
-
-
-def _fit_buckets(A, v, counts, ridge, prior, mult):
-    """Ridge fits from the normal equations: one on every site, then one per bucket shrunk
-    towards it by ``prior`` sites (times ``mult`` per feature)."""
-    p = A.shape[1]
-    Ag, vg, n = A.sum(axis=0), v.sum(axis=0), max(int(counts.sum()), 1)
-    scale = max(np.trace(Ag) / p, np.finfo(float).tiny)
-    eye = np.eye(p)
-    wg = np.linalg.solve(Ag + ridge * scale * eye, vg)
-    W = np.empty((len(A), p))
-    for j in range(len(A)):
-        lam = (prior * scale / n + ridge * np.trace(A[j]) / p) * mult
-        lam = np.where(lam > 0, lam, ridge * scale + np.finfo(float).tiny)
-        W[j] = np.linalg.solve(A[j] + np.diag(lam), v[j] + lam * wg)
-    return W
