@@ -389,15 +389,15 @@ class ToFTaps:
 
         Parameters
         ----------
-        frequency : int, optional
-            Index into :attr:`frequencies`; None (default): the mean over the
-            frequencies (less noisy).
+        frequency : int, "all" or None
+            Index into :attr:`frequencies`; ``"all"``: every frequency; None
+            (default): the mean over the frequencies (less noisy).
         workers : int, optional
             Threads (None or -1: all cores); the result does not depend on it.
 
         Returns
         -------
-        ndarray of float64, shape (n_sites,)
+        ndarray of float64, shape (n_sites,) or, for ``"all"``, (F, n_sites)
             One value per measurement (paint it with :meth:`to_frame`).
 
         Examples
@@ -414,15 +414,18 @@ class ToFTaps:
         from ._validate import check_workers
 
         F = self.taps.shape[0]
-        if frequency is not None and (isinstance(frequency, bool) or not isinstance(
-                frequency, (int, np.integer)) or not -F <= frequency < F):
-            raise ValueError(f"frequency: expected an index into the {F} frequencies or None, "
-                             f"got {frequency!r}")
+        every = isinstance(frequency, str) and frequency == "all"
+        index = isinstance(frequency, (int, np.integer)) and not isinstance(frequency, bool)
+        if not (frequency is None or every or (index and -F <= frequency < F)):
+            raise ValueError(f"frequency: expected an index into the {F} frequencies, 'all' or "
+                             f"None, got {frequency!r}")
         taps = self.taps if self.taps.dtype in (np.uint16, np.float32, np.float64) else \
             self.taps.astype(np.float64)
         taps = np.ascontiguousarray(taps)
         phase, amp, off = (np.empty((F, self.n_sites)) for _ in range(3))
         _kernels.tof_demodulate(taps, phase, amp, off, check_workers(workers))
+        if every:
+            return amp
         return amp.mean(axis=0) if frequency is None else amp[frequency]
 
     def to_frame(self, values, fill=0.0):

@@ -225,13 +225,13 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         return out
     if method == "z_guided":
         filters = resolve_z_filters(params.filters, pattern, bd)
-        grid = guide_grid(src.shape, pattern, nir=nir,
-                          tof=frame.tof if isinstance(frame, RawFrame) else None)
+        grids = guide_grid(src.shape, pattern, nir=nir,
+                           tof=frame.tof if isinstance(frame, RawFrame) else None)
         if clip is not None and _reaches(src, pattern, clip):
             raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
                              f"frame reaches the clip level {clip:g}, use another method or "
                              "clip_level=None")
-        run_z_guided(src, out, pattern, filters, grid, bd)
+        run_z_guided(src, out, pattern, filters, grids, bd)
         return out
     phase_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     if clip is not None and not _reaches(src, pattern, clip):

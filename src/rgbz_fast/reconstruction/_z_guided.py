@@ -14,19 +14,26 @@ Guide features of a Z site (its target colour t, its Z measurement m0 and the
 the nearest measurement inside stands in):
 
 * the *relative* amplitude ``u_m = N_m / mean(N) - 1`` (0 when the mean is 0),
-  so that any positive scale of the guide gives the same result;
-* ``base * u_m`` for the 9 measurements, ``base`` being the mean of the
-  target-colour taps of the 5x5 window (the learned method's baseline);
+  so that any positive scale of the guide gives the same result, and its
+  relative noise ``nu = mean(V_m) / mean(N)^2`` (``V_m``: the noise variance
+  of N_m, estimated from the disagreement of the modulation frequencies; 0
+  for a ``nir=`` image, taken as exact);
+* ``base * s * u_m`` for the 9 measurements, ``base`` being the mean of the
+  target-colour taps of the 5x5 window (the learned method's baseline) and
+  ``s = U / (U + 9 nu)``, ``U = sum_m u_m^2``, the share of the amplitude's
+  variation that is not noise;
 * a local linear model of the colour against the amplitude: ``C_m``, the
   mean of the known target-colour pixels in the box of the Z pixel m and the
-  two pixels around it, ``a = sum_m u_m (C_m - mean C) / (sum_m u_m^2 + 9
-  lam)``, and the two features ``mean C + a u_0 - base`` and ``a u_0 - (C_0 -
+  two pixels around it, ``a = sum_m u_m (C_m - mean C) / (U + 9 (lam +
+  nu))``, and the two features ``mean C + a u_0 - base`` and ``a u_0 - (C_0 -
   mean C)``.
 
-The colour weights (the learned filters' weights plus a fitted correction)
-and the 11 guide weights are fitted per (Z site of the tile, bucket) by
-:func:`._z_guided_fit.train_z_guided` on frames whose true colour and NIR are known.
-docs/guide/z_guided.md is the specification.
+The bucket is the learned hash's, times a level of the guide's noise: ``nu``
+above each of the noise thresholds. The colour weights (the learned filters'
+weights plus a fitted correction) and the 11 guide weights are fitted per (Z
+site of the tile, noise level, bucket) by :func:`._z_guided_fit.train_z_guided`
+on frames whose true colour and NIR are known. docs/guide/z_guided.md is the
+specification.
 """
 
 from __future__ import annotations
@@ -110,13 +117,21 @@ def _fill_cut(grid, complete):
 
 
 def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir"):
-    """The NIR value of every Z pixel, on the grid of the tiles (float64, (rows, cols) tiles).
+    """The NIR value of every Z pixel and its noise variance, on the grid of the tiles.
 
     From ``nir`` (an array of the frame's shape; only its Z sites are read, the
-    mean of the four on a 2x2 Z pixel; any positive scale) or else from
-    ``tof`` (:meth:`ToFTaps.amplitude`). A Z pixel cut by the frame's edge (no
-    measurement) takes the value a pattern period inwards. ValueError naming
-    ``name`` when neither is given or the values cannot be a NIR image.
+    mean of the four on a 2x2 Z pixel; any positive scale; taken as exact:
+    noise variance 0) or else from ``tof``: :meth:`ToFTaps.amplitude`, and the
+    variance of that mean over the F frequencies estimated from their
+    disagreement, ``sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1))``
+    (``r_f``: the median over the frame of ``A_f`` over the mean; 0 with one
+    frequency). A Z pixel cut by the frame's edge (no measurement) takes the
+    values a pattern period inwards. ValueError naming ``name`` when neither
+    is given or the values cannot be a NIR image.
+
+    Returns
+    -------
+    grid, var : ndarray of float64, shape (tile rows, tile columns)
     """
     pattern = get_pattern(pattern)
     (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
@@ -141,7 +156,7 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir"):
         if vals.min() < 0:
             raise ValueError(f"{name}: holds negative values at Z sites (min {vals.min():g}); "
                              "a NIR image or amplitude is >= 0")
-        return _fill_cut(grid, complete)
+        return _fill_cut(grid, complete), np.zeros((gy, gx))
     if tof is None:
         raise ValueError(f"{name}: method 'z_guided' is guided by the NIR amplitude the Z pixels "
                          "measured, and this frame carries no ToF taps: pass nir=, a float "
@@ -159,9 +174,21 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir"):
                                                       np.flatnonzero(complete)):
         raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
                          f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
-    grid = np.zeros((gy, gx))
-    grid[iy, ix] = tof.amplitude()
-    return _fill_cut(grid, complete)
+    amp = tof.amplitude("all")
+    mean = amp.mean(axis=0)
+    F = amp.shape[0]
+    var = np.zeros_like(mean)
+    if F > 1:
+        lit = mean > 0
+        ratio = np.median(amp[:, lit] / mean[lit], axis=1) if lit.any() else np.ones(F)
+        norm = amp / np.where(ratio > 0, ratio, 1.0)[:, None]
+        var = ((norm - norm.mean(axis=0)) ** 2).sum(axis=0) / (F * (F - 1))
+    out = []
+    for values in (mean, var):
+        grid = np.zeros((gy, gx))
+        grid[iy, ix] = values
+        out.append(_fill_cut(grid, complete))
+    return tuple(out)
 
 
 def colour_grids(data, pattern, channels):
@@ -200,25 +227,31 @@ def _neighbours(grid, iy, ix):
     return np.stack(cols, axis=1)
 
 
-def guide_features(N, C, base, lam):
-    """The guide features (n, 11) from the amplitudes ``N`` and colour means ``C`` (n, 9) of the
-    measurements around each site and its baseline ``base`` (n,); float64."""
+def guide_features(N, V, C, base, lam):
+    """The guide features (n, 11) and the relative noise ``nu`` (n,) of each site, from the
+    amplitudes ``N``, their noise variances ``V`` and the colour means ``C`` (n, 9) of the
+    measurements around it and its baseline ``base`` (n,); float64. ``nu`` is 1 where no
+    light came back (every amplitude 0)."""
     c = N.shape[1] // 2
     Nb = N.mean(axis=1)
-    ok = Nb > 0
-    u = np.where(ok[:, None], N / np.where(ok, Nb, 1.0)[:, None] - 1.0, 0.0)
+    lit = Nb > 0
+    inv = 1.0 / np.where(lit, Nb, 1.0)
+    u = np.where(lit[:, None], N * inv[:, None] - 1.0, 0.0)
+    nu = np.where(lit, V.mean(axis=1) * inv * inv, 1.0)
+    U = (u * u).sum(axis=1)
+    share = U / (U + N.shape[1] * nu + np.finfo(float).tiny)
     Cb = C.mean(axis=1)
     dc = C - Cb[:, None]
-    a = (u * dc).sum(axis=1) / ((u * u).sum(axis=1) + N.shape[1] * lam)
+    a = (u * dc).sum(axis=1) / (U + N.shape[1] * (lam + nu))
     au = a * u[:, c]
-    return np.hstack([base[:, None] * u, (Cb + au - base)[:, None],
-                      (au - dc[:, c])[:, None]])
+    return np.hstack([(base * share)[:, None] * u, (Cb + au - base)[:, None],
+                      (au - dc[:, c])[:, None]]), nu
 
 
-def _site_features(data, pattern, grid, colour, lam):
-    """Per phase of ``colour`` (LearnedFilters): windows X, buckets, guide features G."""
-    P, Q = pattern.period
-    zr, zc, _ = z_layout(pattern)
+def _site_features(data, pattern, grids, colour, lam, noise_thresholds):
+    """Per phase of ``colour`` (LearnedFilters): windows X, buckets (noise level * the hash's
+    buckets + the hash's bucket), guide features G, and where the sites are."""
+    grid, var = grids
     cg = colour_grids(data, pattern, sorted({ph["target"] for ph in colour.geometry}))
     out = []
     for k, (X, (r, c, ny, nx)) in enumerate(
@@ -228,27 +261,35 @@ def _site_features(data, pattern, grid, colour, lam):
                           colour.coherence_thresholds[k])
         # the site's tile index is its Z pixel's index on the grid
         iy, ix = np.divmod(np.arange(ny * nx), nx)
-        N = _neighbours(grid, iy, ix)
-        C = _neighbours(cg[ph["target"]], iy, ix)
-        G = guide_features(N, C, X[:, ph["base"]].mean(axis=1), lam)
-        out.append((X, bk, G, (r, c, ny, nx)))
+        G, nu = guide_features(_neighbours(grid, iy, ix), _neighbours(var, iy, ix),
+                               _neighbours(cg[ph["target"]], iy, ix),
+                               X[:, ph["base"]].mean(axis=1), lam)
+        level = np.zeros(len(nu), np.int64)
+        for t in noise_thresholds:
+            level += nu > t
+        out.append((X, level * colour.n_buckets + bk, G, (r, c, ny, nx)))
     return out
 
 
 class ZGuidedFilters:
-    """The filters of ``method="z_guided"``: learned colour filters plus guide weights.
+    """The filters of ``method="z_guided"``: colour and guide weights per (phase, level, bucket).
 
-    Made by :func:`train_z_guided` or read by :meth:`load`. Immutable; equal
-    when their contents are (:attr:`digest`).
+    Made by :func:`~rgbz_fast.reconstruction.train_z_guided` or read by
+    :meth:`load`. Immutable; equal when their contents are (:attr:`digest`).
 
     Parameters
     ----------
-    colour : LearnedFilters
-        The colour part: hash, taps and weights of every (Z site of the tile,
-        bucket), as for ``method="learned"``.
-    guide_weights : ndarray, shape (n_phases, n_buckets, 11)
-        The weights of the guide features (module docstring) of every (Z site
-        of the tile, bucket).
+    base : LearnedFilters
+        The learned filters they build on: the taps, the hash and its
+        thresholds (their own weights are kept, not used).
+    weights : ndarray, shape (n_phases, n_levels * n_buckets, n_taps_max)
+        The colour weights of every (Z site of the tile, noise level, bucket of
+        the hash), taps as in ``base`` (zeros past a phase's own tap count).
+    guide_weights : ndarray, shape (n_phases, n_levels * n_buckets, 11)
+        The weights of the guide features (module docstring).
+    noise_thresholds : sequence of float
+        The levels of the guide's relative noise ``nu`` (increasing, > 0):
+        ``n_levels - 1`` of them.
     lam : float
         Regularisation of the local linear model (> 0, in squared relative
         amplitude).
@@ -256,30 +297,43 @@ class ZGuidedFilters:
         What they were fitted on (strings and numbers, kept in the file).
     """
 
-    def __init__(self, colour, guide_weights, lam, *, meta=None):
-        if not isinstance(colour, LearnedFilters):
-            raise TypeError(f"colour: expected LearnedFilters, got {type(colour).__name__}")
-        z_layout(colour.pattern, "filters")
-        self.colour = colour
+    def __init__(self, base, weights, guide_weights, noise_thresholds, lam, *, meta=None):
+        if not isinstance(base, LearnedFilters):
+            raise TypeError(f"base: expected LearnedFilters, got {type(base).__name__}")
+        z_layout(base.pattern, "filters")
+        self.base = base
         self.lam = check_number(lam, "lam", lo=0, lo_open=True)
-        g = np.array(guide_weights, np.float64).astype(np.float32).astype(np.float64)
-        shape = (len(colour.geometry), colour.n_buckets, N_GUIDE)
-        if g.shape != shape:
-            raise ValueError(f"filters: expected guide weights of shape {shape}, got {g.shape}")
-        if not np.all(np.isfinite(g)):
-            raise ValueError("filters: guide weights hold NaN or infinity")
-        g.setflags(write=False)
-        self.guide_weights = g
+        thr = np.array(noise_thresholds, np.float64).reshape(-1)
+        if not np.all(np.isfinite(thr)) or np.any(thr <= 0) or np.any(np.diff(thr) <= 0):
+            raise ValueError(f"filters: noise thresholds must be increasing and > 0, got "
+                             f"{thr.tolist()}")
+        n_rows = (len(thr) + 1) * base.n_buckets
+        arrays = []
+        for label, a, cols in (("weights", weights, base.weights.shape[2]),
+                               ("guide weights", guide_weights, N_GUIDE)):
+            a = np.array(a, np.float64).astype(np.float32).astype(np.float64)
+            shape = (len(base.geometry), n_rows, cols)
+            if a.shape != shape:
+                raise ValueError(f"filters: expected {label} of shape {shape}, got {a.shape}")
+            if not np.all(np.isfinite(a)):
+                raise ValueError(f"filters: {label} hold NaN or infinity")
+            a.setflags(write=False)
+            arrays.append(a)
+        thr.setflags(write=False)
+        self.weights, self.guide_weights = arrays
+        self.noise_thresholds = thr
         self.meta = {str(k): (v if isinstance(v, (int, float)) else str(v))
                      for k, v in dict(meta or {}).items()}
-        h = hashlib.sha1(colour.digest.encode())
+        h = hashlib.sha1(base.digest.encode())
         h.update(repr(self.lam).encode())
-        h.update(g.tobytes())
+        for a in (thr, *arrays):
+            h.update(a.tobytes())
         self.digest = h.hexdigest()[:16]
 
-    pattern = property(lambda self: self.colour.pattern)
-    bit_depth = property(lambda self: self.colour.bit_depth)
-    n_buckets = property(lambda self: self.colour.n_buckets)
+    pattern = property(lambda self: self.base.pattern)
+    bit_depth = property(lambda self: self.base.bit_depth)
+    #: buckets per phase: noise levels x the hash's buckets
+    n_buckets = property(lambda self: self.weights.shape[1])
 
     def __repr__(self):
         src = self.meta.get("training_set", "?")
@@ -296,33 +350,37 @@ class ZGuidedFilters:
 
     def check_frame(self, pattern, bit_depth, name="filters"):
         """ValueError naming ``name`` unless the filters fit a frame of ``pattern`` and bits."""
-        self.colour.check_frame(pattern, bit_depth, name)
+        self.base.check_frame(pattern, bit_depth, name)
 
-    def reconstruct(self, data, grid):
-        """NumPy reconstruction (float64, unclipped) of ``data`` guided by ``grid``
+    def sites(self, data, grids):
+        """:func:`_site_features` of a frame with these filters' hash and settings."""
+        return _site_features(data, self.pattern, grids, self.base, self.lam,
+                              self.noise_thresholds)
+
+    def reconstruct(self, data, grids):
+        """NumPy reconstruction (float64, unclipped) of ``data`` guided by ``grids``
         (:func:`guide_grid`): the colour sites copied, the Z sites filled in."""
-        pattern = self.pattern
-        P, Q = pattern.period
+        P, Q = self.pattern.period
         out = np.array(data, np.float64)
-        for k, (X, bk, G, (r, c, ny, nx)) in enumerate(
-                _site_features(data, pattern, grid, self.colour, self.lam)):
-            w = self.colour.weights[k][:, :X.shape[1]]
-            v = np.einsum("ij,ij->i", X, w[bk]) + np.einsum("ij,ij->i", G,
-                                                             self.guide_weights[k][bk])
+        for k, (X, bk, G, (r, c, ny, nx)) in enumerate(self.sites(data, grids)):
+            v = np.einsum("ij,ij->i", X, self.weights[k][:, :X.shape[1]][bk]) + \
+                np.einsum("ij,ij->i", G, self.guide_weights[k][bk])
             out[r::P, c::Q][:ny, :nx] = v.reshape(ny, nx)
         return out
 
     # -- files ------------------------------------------------------------------
     def to_bytes(self):
         """The .npz file's content (see :meth:`save`)."""
-        with np.load(io.BytesIO(self.colour.to_bytes())) as z:
-            colour = {f"colour_{k}": z[k] for k in z.files}
+        with np.load(io.BytesIO(self.base.to_bytes())) as z:
+            base = {f"base_{k}": z[k] for k in z.files}
         buf = io.BytesIO()
         np.savez(buf, format=np.array(_MAGIC), version=np.array(FORMAT_VERSION),
-                 guide_weights=self.guide_weights.astype(np.float32), lam=np.array(self.lam),
+                 weights=self.weights.astype(np.float32),
+                 guide_weights=self.guide_weights.astype(np.float32),
+                 noise_thresholds=self.noise_thresholds, lam=np.array(self.lam),
                  n_guide=np.array(N_GUIDE), meta_keys=np.array(list(self.meta), dtype=str),
                  meta_values=np.array([repr(v) for v in self.meta.values()], dtype=str),
-                 **colour)
+                 **base)
         return buf.getvalue()
 
     def save(self, path):
@@ -344,13 +402,14 @@ class ZGuidedFilters:
                 raise ValueError(f"{name}: {p} has {int(z['n_guide'])} guide features, "
                                  f"expected {N_GUIDE}")
             import ast
-            colour = LearnedFilters._from_arrays(
-                {k[len("colour_"):]: v for k, v in z.items() if k.startswith("colour_")}, p, name)
+            base = LearnedFilters._from_arrays(
+                {k[len("base_"):]: v for k, v in z.items() if k.startswith("base_")}, p, name)
             keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
             if not isinstance(keys, list) or not isinstance(values, list):
                 raise TypeError("meta_keys and meta_values must be 1-d arrays")
             meta = {str(k): ast.literal_eval(str(v)[:100_000]) for k, v in zip(keys, values)}
-            return cls(colour, z["guide_weights"].astype(np.float64), float(z["lam"]), meta=meta)
+            return cls(base, z["weights"], z["guide_weights"], z["noise_thresholds"],
+                       float(z["lam"]), meta=meta)
         except KeyError as e:
             raise ValueError(f"{name}: {p} lacks {e} (a damaged filters file)") from None
         except (TypeError, ValueError, SyntaxError, RecursionError, MemoryError) as e:
@@ -422,10 +481,10 @@ def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
                      f"{bit_depth} bits (given: {have})")
 
 
-def run_z_guided(src, out, pattern, filters, grid, bit_depth):
+def run_z_guided(src, out, pattern, filters, grids, bit_depth):
     """Fill ``out``: the colour sites of ``src`` and its Z sites by ``filters`` guided by
-    ``grid``, clipped to [0, 2^b - 1] (integer types rounded half up)."""
-    res = filters.reconstruct(src, grid)
+    ``grids`` (:func:`guide_grid`), clipped to [0, 2^b - 1] (integer types rounded half up)."""
+    res = filters.reconstruct(src, grids)
     np.clip(res, 0, (1 << bit_depth) - 1, out=res)
     if np.issubdtype(out.dtype, np.integer):
         res = np.floor(res + 0.5)
