@@ -353,7 +353,8 @@ class ZGuidedFilters:
         self.base.check_frame(pattern, bit_depth, name)
 
     def sites(self, data, grids):
-        """:func:`_site_features` of a frame with these filters' hash and settings."""
+        """Per phase: the windows, buckets and guide features of every Z site of ``data`` and
+        where the sites are (the intermediate values of :meth:`reconstruct`)."""
         return _site_features(data, self.pattern, grids, self.base, self.lam,
                               self.noise_thresholds)
 
