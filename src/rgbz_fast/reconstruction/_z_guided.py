@@ -213,6 +213,9 @@ def colour_grids(data, pattern, channels):
                     continue
                 s += pad[y0::P, x0::Q][:gy, :gx]
                 n += 1
+        if not n:
+            raise ValueError(f"pattern: no {'RGB'[t]} pixel within two pixels of the Z pixel "
+                             f"of {pattern.name!r}, which 'z_guided' needs")
         out[t] = s / n
     return out
 
