@@ -49,6 +49,7 @@
 #include <stdint.h>
 #include "rgbz.h"
 #include "rgbz_ops.h"
+#include "tof.h"
 
 #define TOF_TWO_PI 6.283185307179586
 #define TOF_PI 3.141592653589793
@@ -117,7 +118,8 @@ static inline double tof_amplitude(double I, double Q)
  * One frequency of a block of nb sites from its phasors I, Q: the phase in [0, 2 pi)
  * (stored to ph if not NULL), the distance phase * sc (to dist if not NULL) and the
  * amplitude (to am if not NULL). ok (not NULL): a non-finite I or Q clears ok[k] and
- * gives the phase 0 (no NaN reaches the unwrapping's floors: B3).
+ * gives the phase 0, so that no NaN reaches the unwrapping's floors (a NaN through the
+ * int32 floor is undefined behaviour).
  */
 RGBZ_INLINE void tof_from_iq(const double *I, const double *Q, ptrdiff_t nb, int *ok,
                              double sc, double *restrict ph, double *restrict dist,
@@ -166,7 +168,8 @@ static int tof_plan_init(tof_plan *p, ptrdiff_t F, const double *freqs, const do
         p->wsum += weights[i];
     }
     if (!(p->wsum > 0 && p->wsum <= DBL_MAX)) return RGBZ_EINVAL;
-    /* the count is checked as a double, before any conversion to int (B2: it overflowed) */
+    /* the count is checked as a double, before any conversion to int: a huge max_range
+       would overflow the int (undefined behaviour) */
     const double nw = ceil(max_range / p->amb[p->base] - 1e-12);
     if (!(nw <= RGBZ_TOF_MAX_WRAPS)) return RGBZ_EINVAL;
     p->nwrap = nw < 1 ? 1 : (int)nw;
@@ -300,6 +303,36 @@ static int tof_unwrap_checked(const tof_plan *p, const double *d, const int *ok,
     return 1;
 }
 
+/* One block [n0, n0 + nb) of tof_unwrap_sites (below): the distances of every frequency from
+   the phases or the phasors, then the unwrapping; returns 1 if a site was outside the
+   domain. In the three builds of RGBZ_CLONES_512, which compute the same IEEE operations. */
+RGBZ_CLONES_512 static int tof_unwrap_site_block(const tof_plan *p, const double *x,
+                                                 const double *q, ptrdiff_t N, ptrdiff_t n0,
+                                                 ptrdiff_t nb, double *depth, double *residual,
+                                                 int32_t *wraps, double *phase, double *amp)
+{
+    double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
+    int ok[TOF_BLOCK];
+    for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
+    for (int f = 0; f < p->F; f++) {
+        const ptrdiff_t o = f * N + n0;
+        const double sc = p->scale[f];
+        double *df = d + f * TOF_BLOCK;
+        if (q) {
+            tof_from_iq(x + o, q + o, nb, ok, sc, phase ? phase + o : NULL, df,
+                        amp ? amp + o : NULL);
+            continue;
+        }
+        const double *ph = x + o;
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            const int in = ph[k] >= 0 && ph[k] < TOF_TWO_PI;   /* false for NaN too */
+            ok[k] &= in;
+            df[k] = in ? ph[k] * sc : 0.0;              /* no NaN reaches a floor */
+        }
+    }
+    return tof_unwrap_checked(p, d, ok, nb, depth + n0, residual + n0, wraps + n0);
+}
+
 /*
  * Unwrapping from phases (q = NULL: x holds the phases (F, N), checked to lie in [0, 2 pi))
  * or from phasors (x = I, q = Q, each (F, N), checked to be finite; phase and amp, if not
@@ -321,27 +354,8 @@ static int tof_unwrap_sites(const double *x, const double *q, ptrdiff_t F, ptrdi
     (void)nth;
     RGBZ_PARALLEL_FOR_OR(bad)
     for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
-        double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
-        int ok[TOF_BLOCK];
         const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
-        for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
-        for (int f = 0; f < p->F; f++) {
-            const ptrdiff_t o = f * N + n0;
-            const double sc = p->scale[f];
-            double *df = d + f * TOF_BLOCK;
-            if (q) {
-                tof_from_iq(x + o, q + o, nb, ok, sc, phase ? phase + o : NULL, df,
-                            amp ? amp + o : NULL);
-                continue;
-            }
-            const double *ph = x + o;
-            for (ptrdiff_t k = 0; k < nb; k++) {
-                const int in = ph[k] >= 0 && ph[k] < TOF_TWO_PI;   /* false for NaN too */
-                ok[k] &= in;
-                df[k] = in ? ph[k] * sc : 0.0;                 /* B3: no NaN reaches a floor */
-            }
-        }
-        bad |= tof_unwrap_checked(p, d, ok, nb, depth + n0, residual + n0, wraps + n0);
+        bad |= tof_unwrap_site_block(p, x, q, N, n0, nb, depth, residual, wraps, phase, amp);
     }
     return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }
@@ -440,4 +454,37 @@ int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
     if (!q_comp) return RGBZ_EINVAL;
     return tof_unwrap_sites(i_comp, q_comp, F, N, freqs, weights, max_range, depth, residual,
                             wraps, phase, amp, workers);
+}
+
+/* the block [n0, n0 + nb) of rgbz_tof_phase_iq; 1 if an I or Q was not finite */
+RGBZ_CLONES_512 static int tof_phase_block(const double *i_comp, const double *q_comp,
+                                           ptrdiff_t F, ptrdiff_t N, ptrdiff_t n0, ptrdiff_t nb,
+                                           double *phase, double *amp)
+{
+    int ok[TOF_BLOCK], bad = 0;
+    for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const ptrdiff_t o = f * N + n0;
+        tof_from_iq(i_comp + o, q_comp + o, nb, ok, 0.0, phase + o, NULL, amp + o);
+    }
+    for (ptrdiff_t k = 0; k < nb; k++) bad |= !ok[k];
+    return bad;
+}
+
+/* Phase and amplitude of phasors (I, Q), each (F, N), without unwrapping: the first half of
+   rgbz_tof_depth_iq, bit for bit (the same tof_from_iq). A non-finite I or Q gives the phase
+   0 and RGBZ_EDOMAIN. */
+int rgbz_tof_phase_iq(const double *i_comp, const double *q_comp, ptrdiff_t F, ptrdiff_t N,
+                      double *phase, double *amp, int workers)
+{
+    if (!i_comp || !q_comp || !phase || !amp || F < 1 || N < 0) return RGBZ_EINVAL;
+    int bad = 0;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR_OR(bad)
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        bad |= tof_phase_block(i_comp, q_comp, F, N, n0, nb, phase, amp);
+    }
+    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }

@@ -242,7 +242,7 @@ def test_readme_python_examples_run(capsys):
            "median error 3.3 mm" in out, out
 
 
-# --------------------------------------------------------------------------- issue-17 cases
+# --------------------------------------------------------------------------- real raw files
 RAW_FILES = {
     "colorchart.dng": [],
     "halide_bayer_small.png": ["--phase", "GRBG", "--black-level", "25", "--white-level",
@@ -301,8 +301,8 @@ def test_raw_options_file_and_cli_words(tmp_path, capsys):
 
 
 def test_plain_bayer_frame_is_not_copied_silently(tmp_path, capsys):
-    """`reconstruct colorchart.dng` wrote a TIFF identical to its Bayer input; now it says why
-    there is nothing to reconstruct, and writes nothing."""
+    """A plain Bayer file holds no Z site: reconstruct says why there is nothing to
+    reconstruct (and how to place Z sites), and writes nothing rather than a copy of it."""
     import tifffile
 
     bayer = tmp_path / "bayer.tif"
@@ -323,7 +323,8 @@ def test_plain_bayer_frame_is_not_copied_silently(tmp_path, capsys):
 
 
 def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
-    """`reconstruct x/f.npz y/f.npz` into one --out overwrote the first result silently."""
+    """Two inputs whose outputs would have one name in one --out are refused before any is
+    written."""
     for sub in ("x", "y"):
         (tmp_path / sub).mkdir()
         frameio.save_frame(tmp_path / sub / "f.npz", rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
@@ -336,8 +337,8 @@ def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
 
 
 def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
-    """--pattern ZR/BG created OUT/scene_ZR/BG.npz (a nested folder); a failed simulate left
-    an empty --out."""
+    """A tile pattern names its file with no folder separator (s_ZR-BG.npz), and a simulate
+    that fails creates no --out folder."""
     import imageio.v3 as iio
 
     img = tmp_path / "s.png"
@@ -427,15 +428,17 @@ def _options(parser):
 
 
 def test_every_option_has_help_with_its_default_in_user_words(capsys):
-    """Help text and its default for every option; no source-tree, Python or tracker words."""
+    """Help text and its default for every option of every command; no source-tree, Python or
+    tracker words."""
     import argparse
 
-    from rgbz_fast._cli import _Formatter, _parser
+    from rgbz_fast._cli import build_parser
+    from rgbz_fast._cli._common import Formatter
 
-    ap = _parser()
+    ap = build_parser()
     banned = re.compile(r"rgbz_fast\.|\.py\b|docs/|csrc|tests/|\bissue\b|\bB\d+\b|=\)",
                         re.IGNORECASE)
-    shown = _Formatter("rgbz-fast")
+    shown = Formatter("rgbz-fast")
     names = []
     for name, action in _options(ap):
         names.append(name)
@@ -447,22 +450,25 @@ def test_every_option_has_help_with_its_default_in_user_words(capsys):
             assert "default" in shown._get_help_string(action), name
         assert not banned.search(action.help), (name, action.help)
     assert "reconstruct --rgbz-pattern" in names and "depth --range" in names
-    # the developer commands parse their own options
-    import importlib
+    assert {"bench --kernels", "opcount --image", "tradeoff --dataset"} <= set(names)
 
-    for tool in ("bench", "opcount", "tradeoff"):
-        mod = importlib.import_module(f"rgbz_fast._devtools.{tool}")
-        seen = []
-        real = mod.run_main
-        mod.run_main = lambda parser, body, argv: seen.append(parser)
-        try:
-            mod.main([])
-        finally:
-            mod.run_main = real
-        for name, action in _options(seen[0]):
-            flag = isinstance(action, (argparse._StoreTrueAction, argparse._StoreConstAction))
-            assert action.help and (flag or "default" in action.help), (tool, name)
-            assert not banned.search(action.help), (tool, name, action.help)
+
+def test_shared_options_read_the_same_in_every_command():
+    """An option that several commands take has one text (written once, in _cli/_common.py)."""
+    ap = build_parser_options()
+    for flag in ("--workers", "--max-pixels", "--max-bytes", "--limit", "--patterns",
+                 "--clip-level", "--filters", "--domain", "--grey"):
+        texts = {a.help for name, a in ap if name.split()[1] == flag}
+        assert len(texts) <= 2, (flag, texts)       # --workers: kernels, or the bench's runs
+    workers = {name.split()[0]: a for name, a in ap if name.endswith(" --workers")}
+    assert set(workers) == {"reconstruct", "depth", "evaluate", "bench", "tradeoff"}
+    assert len({a.type for a in workers.values()}) == 1      # one rule: a positive integer
+
+
+def build_parser_options():
+    from rgbz_fast._cli import build_parser
+
+    return list(_options(build_parser()))
 
 
 def test_help_names_the_default_output_folders(capsys):
@@ -506,6 +512,26 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
     assert not (tmp_path / "g.npz").exists()
 
 
+def test_depth_full_resolution_writes_a_depth_at_every_pixel(tmp_path, capsys):
+    """--full-resolution guides the ToF ISP with the frame's colour image and writes
+    upsample_depth's map (float32 TIFF) and its preview."""
+    import tifffile
+
+    scene = rz.simulation.Scene(np.full((32, 48, 3), 0.5),
+                                depth=np.where(np.arange(48) < 24, 1.0, 2.0)[None, :].repeat(32, 0))
+    frame = rz.simulate(scene, "mask2", seed=2)
+    path = tmp_path / "step.npz"
+    frameio.save_frame(path, frame)
+    assert main(["depth", str(path), "--out", str(tmp_path), "--full-resolution"]) == 0
+    assert "step_depth_full.tif, step_depth_full.png" in capsys.readouterr().out
+    full = tifffile.imread(tmp_path / "step_depth_full.tif")
+    frame = frameio.load_frame(path)                  # as the command reads it
+    guide = rz.ColourISP().run(frame)
+    want, _ = rz.tof.upsample_depth(rz.tof_depth(frame.tof, guide=guide), guide)
+    np.testing.assert_array_equal(full, want)
+    assert full.shape == (32, 48) and (tmp_path / "step_depth_full.png").stat().st_size > 0
+
+
 def test_depth_validity_options_reach_the_isp(tmp_path, capsys):
     """--flying-step off / --max-sigma off keep measurements the defaults flag; the depth TIFF
     equals tof_depth with the same settings."""
@@ -526,3 +552,35 @@ def test_depth_validity_options_reach_the_isp(tmp_path, capsys):
     a = tifffile.imread(tmp_path / "a" / "step_depth.tif")
     b = tifffile.imread(tmp_path / "b" / "step_depth.tif")
     assert np.isfinite(b).sum() > np.isfinite(a).sum()      # the step's flying pixels kept
+
+
+def test_read_limits_reach_every_reader_as_arguments(tmp_path, capsys, monkeypatch):
+    """--max-pixels is passed to the readers (into evaluate's worker processes too), not
+    through the environment, and the advice of their errors is given as flags."""
+    import os
+
+    import imageio.v3 as iio
+
+    monkeypatch.delenv("RGBZ_FAST_MAX_PIXELS", raising=False)
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    for name in ("a", "b"):
+        iio.imwrite(ds / f"{name}.png", np.random.default_rng(0).integers(
+            0, 256, (32, 32, 3), dtype=np.uint8))
+    advice = "raise it with --max-pixels or RGBZ_FAST_MAX_PIXELS"
+    assert main(["simulate", str(ds / "a.png"), "--max-pixels", "100", "--out",
+                 str(tmp_path / "f"), "--quiet"]) == 2
+    assert capsys.readouterr().err.strip().endswith(advice)
+    assert main(["evaluate", "--dataset", str(ds), "--max-pixels", "100", "--processes", "2",
+                 "--skip-bad", "--no-cache", "--metrics", "cfa_psnr", "--methods", "bi",
+                 "--patterns", "mask1", "--out", str(tmp_path / "e"), "--quiet"]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert [line.split(": ", 2)[1] for line in err[:2]] == ["skipped a", "skipped b"]
+    assert all(line.endswith(advice) for line in err[:2])
+    assert err[-1].startswith("rgbz-fast evaluate: error: dataset: none of the 2 image(s)")
+    assert main(["train", "--dataset", str(ds), "--max-pixels", "100", "--out",
+                 str(tmp_path / "t.npz"), "--quiet"]) == 2
+    assert capsys.readouterr().err.strip().endswith(advice)
+    assert "RGBZ_FAST_MAX_PIXELS" not in os.environ
+    assert main(["simulate", str(ds / "a.png"), "--max-pixels", "1024", "--out",
+                 str(tmp_path / "f"), "--quiet"]) == 0

@@ -257,9 +257,9 @@ def test_kernel_thread_count_is_reported():
                     reason="under AddressSanitizer (tools/sanitize.sh): its shadow memory is "
                            "terabytes of address space, which ulimit -v forbids")
 def test_too_many_threads_for_the_address_space_is_a_clear_error():
-    """Under ``ulimit -v 4000000`` libgomp aborted the process at workers=512 ("Thread creation
-    failed"); now check_workers refuses beyond the bound the limit leaves, and a count within
-    it runs."""
+    """Under ``ulimit -v 4000000`` libgomp would abort the process at workers=512 ("Thread
+    creation failed"): check_workers refuses counts beyond the bound the limit leaves, and a
+    count within it runs."""
     import resource
 
     code = textwrap.dedent("""

@@ -31,9 +31,10 @@ def _modules():
 
 
 def test_import_loads_no_tooling_plotting_or_test_module():
-    """``python -X importtime -c "import rgbz_fast"`` lists no bench/opcount/tradeoff, not the
-    counting build of the kernels (``_kernels_count``, for opcount only), no matplotlib, no
-    test module, and none of the heavy libraries loaded lazily."""
+    """``python -X importtime -c "import rgbz_fast"`` lists no command line, no tooling
+    (bench/opcount/tradeoff, the figures), not the counting build of the kernels
+    (``_kernels_count``), no matplotlib, no test module, and none of the heavy libraries
+    loaded lazily."""
     r = subprocess.run([sys.executable, "-X", "importtime", "-c", "import rgbz_fast"],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr[-2000:]
@@ -41,9 +42,9 @@ def test_import_loads_no_tooling_plotting_or_test_module():
               if line.startswith("import time:")}
     assert "rgbz_fast" in loaded and "rgbz_fast.reconstruction" in loaded
     assert "rgbz_fast._kernels" in loaded           # extension modules are listed too
-    banned = ("rgbz_fast._devtools", "rgbz_fast._kernels_count", "matplotlib", "pytest", "_reference", "conftest",
-              "colour", "colour_demosaicing", "scipy", "skimage", "cv2", "tqdm", "dask",
-              "imageio", "tifffile")
+    banned = ("rgbz_fast._cli", "rgbz_fast._devtools", "rgbz_fast._kernels_count", "matplotlib",
+              "pytest", "_reference", "conftest", "colour", "colour_demosaicing", "scipy",
+              "skimage", "cv2", "tqdm", "dask", "imageio", "tifffile")
     bad = sorted(m for m in loaded if m.split(".")[0] in banned or m.startswith(banned)
                  or "test" in m.split(".")[0])
     assert not bad, bad
@@ -52,14 +53,26 @@ def test_import_loads_no_tooling_plotting_or_test_module():
 # the layers, bottom up: a module may import its own package and the layers below
 _LAYERS = [
     {"_validate", "_build_config", "_kernels", "_deps", "_config", "_compat"},
-    {"_patterns", "_sensors", "_frame"},
+    {"_patterns", "_sensor_checks", "_sensors", "_frame"},
     {"io"},
     {"simulation", "reconstruction", "tof", "metrics"},
     {"isp"},
+    # fixed-point models of the reconstruction and what they cost: above the models they
+    # imitate (and the ISP around them), below the evaluation that may compare them
+    {"hardware"},
     {"evaluation"},
-    # the counting build of the kernels sits with the tools: no library module may load it
-    {"_devtools", "_kernels_count", "_cli", "__init__", "__main__"},
+    {"__init__"},                # the package: re-exports the library, never the tools
+    # the tooling layer: the measuring engines (bench, opcount, tradeoff, the hardware
+    # model's cost), the figures of the commands; no argparse
+    {"_devtools"},
+    {"_cli"},                    # the command line: one module per command
+    {"__main__"},
 ]
+#: the counting build of the kernels, and the only layer that may load it: its counters cost
+#: every call, so no library module (the hardware models included) imports it; their cost
+#: engines, in the tooling layer, do
+_COUNTING_BUILD = "_kernels_count"
+_COUNTING_BUILD_USERS = {"_devtools"}
 
 
 def _layer(name):
@@ -75,34 +88,55 @@ def _top(module):
     return parts[1] if len(parts) > 1 else "__init__"
 
 
-@pytest.mark.parametrize("path", sorted(p for p in PKG.rglob("*.py")), ids=lambda p: str(
-    p.relative_to(PKG)))
-def test_layering(path):
-    """Imports point down the layers (data model, io, models, ISP, evaluation, tools), never up
-    or across between the model subpackages: no cycle, no function-local escape hatch."""
+def _imports(path):
+    """The rgbz_fast modules a file imports (anywhere in it: function-local imports too)."""
     rel = path.relative_to(PKG).with_suffix("")
     mod = ".".join(("rgbz_fast",) + rel.parts).removesuffix(".__init__")
-    own = _top(mod)
     pkg_parts = mod.split(".")[:-1] if not path.name == "__init__.py" else mod.split(".")
-    tree = ast.parse(path.read_text())
-    for node in ast.walk(tree):
+    for node in ast.walk(ast.parse(path.read_text())):
         if isinstance(node, ast.ImportFrom) and node.level:
             base = pkg_parts[:len(pkg_parts) - node.level + 1]
             target = ".".join(base + ([node.module] if node.module else []))
-            targets = [target] if node.module else [f"{target}.{a.name}" for a in node.names]
+            yield from [target] if node.module else [f"{target}.{a.name}" for a in node.names]
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             names = [a.name for a in node.names] if isinstance(node, ast.Import) else [
                 node.module]
-            targets = [n for n in names if n and n.startswith("rgbz_fast")]
-        else:
+            yield from (n for n in names if n and n.startswith("rgbz_fast"))
+
+
+def _module(path):
+    rel = path.relative_to(PKG).with_suffix("")
+    return ".".join(("rgbz_fast",) + rel.parts).removesuffix(".__init__")
+
+
+@pytest.mark.parametrize("path", sorted(p for p in PKG.rglob("*.py")), ids=lambda p: str(
+    p.relative_to(PKG)))
+def test_layering(path):
+    """Imports point down the layers (data model, io, models, ISP, hardware, evaluation,
+    tools, command line), never up or across between the model subpackages: no cycle, no
+    function-local escape hatch; only the tooling layer loads the counting build."""
+    mod = _module(path)
+    own = _top(mod)
+    for t in _imports(path):
+        other = _top(t)
+        if other == _COUNTING_BUILD:
+            assert own in _COUNTING_BUILD_USERS, f"{mod} loads the counting build {t}"
             continue
-        for t in targets:
-            other = _top(t)
-            if other == own or own in ("__init__", "_devtools", "_cli", "__main__"):
-                continue
-            assert _layer(other) < _layer(own) or (
-                _layer(other) == _layer(own) == 0) or (_layer(other) == _layer(own) == 1), \
-                f"{mod} imports {t}: layer {_layer(other)} from layer {_layer(own)}"
+        if other == own:
+            continue
+        assert _layer(other) < _layer(own) or (
+            _layer(other) == _layer(own) == 0) or (_layer(other) == _layer(own) == 1), \
+            f"{mod} imports {t}: layer {_layer(other)} from layer {_layer(own)}"
+
+
+def test_the_layers_name_every_subpackage():
+    """A new subpackage or top-level module gets its place in the layers (or the test fails
+    here, not silently in test_layering)."""
+    tops = {_top(_module(p)) for p in PKG.rglob("*.py")}
+    placed = set().union(*_LAYERS)
+    assert tops <= placed, tops - placed
+    assert _layer("hardware") > _layer("reconstruction")
+    assert _layer("_devtools") > _layer("evaluation") and _layer("_cli") > _layer("_devtools")
 
 
 def test_doctests_of_every_module():

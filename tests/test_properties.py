@@ -20,7 +20,6 @@ cores; CI loads the derandomized "deterministic" profile of conftest.py.
 
 from __future__ import annotations
 
-import os
 import re
 
 import numpy as np
@@ -44,9 +43,6 @@ PRESETS = [f"{base}_{ph.lower()}" for base in ("mask1", "mask2", "rows", "bayer"
 #: the plan methods; "learned" (filters fitted per pattern and bit depth) has its own test below,
 #: the methods that need the Z pixels' measurements (NEEDS_TOF) theirs
 METHODS = tuple(m for m in rz.METHODS if m != "learned" and m not in rz.NEEDS_TOF)
-#: tools/sanitize.sh can skip the inputs of bug B10 (docs/reports/robustness.md): undefined behaviour
-#: that UBSan stops on, harmless on x86 today
-KNOWN_UB_SKIPPED = bool(os.environ.get("RGBZ_SKIP_KNOWN_UB"))
 #: a message that names the parameter it is about: "frame: ...", "ToFSensor.bit_depth: ..."
 NAMED = re.compile(r"^[A-Za-z_][\w.\[\], ]*: ")
 
@@ -133,9 +129,6 @@ def test_reconstruct_never_crashes_or_returns_garbage(data, pattern_name, method
                             label="sigma_floor")
     sigma_rel = data.draw(st.sampled_from([0.0, 0.5, 10.0]), label="sigma_rel")
     edge_ratio = data.draw(st.sampled_from([1e-9, 0.5, 4.0]), label="edge_ratio")
-    if KNOWN_UB_SKIPPED and exp == "fast" and sigma_floor < 1e-150:
-        event("skipped: bug B10 (RGBZ_SKIP_KNOWN_UB)")
-        return
     try:
         pattern = rz.get_pattern(pattern_name)
     except (ValueError, TypeError) as exc:

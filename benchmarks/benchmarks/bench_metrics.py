@@ -1,4 +1,4 @@
-"""The metrics (C kernels since issue 16) on a Kodak-size pair, and the dataset evaluation.
+"""The metrics (C kernels) on a Kodak-size pair, and the dataset evaluation.
 
 The pair is the astronaut tiled to 768x512 and a blurred, noisy copy (8-bit sRGB, as the
 evaluation scores them). ``workers`` 1 and all cores: the kernels split rows across threads.

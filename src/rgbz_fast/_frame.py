@@ -18,7 +18,7 @@ from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
 from ._validate import FRAME_DTYPES, check_bit_depth, check_dtype, check_image
 
-__all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "raw_clip_level"]
+__all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -162,6 +162,39 @@ def validate_frame(data, pattern, bit_depth, name):
     pattern.check_shape(data.shape, name)
     _check_range(data, bit_depth, name, pattern)
     return data
+
+
+def frame_inputs(frame, pattern=None, bit_depth=None, name="frame"):
+    """``(data, pattern, bit_depth)`` of a frame argument: a RawFrame, or an array plus pattern.
+
+    What every function taking ``frame, *, pattern=None, bit_depth=None``
+    does first. A :class:`RawFrame` gives its own data, pattern and bit depth
+    (already checked when it was made); a ``pattern`` or ``bit_depth`` passed
+    with it must agree with them. A plain array needs ``pattern``, takes
+    ``bit_depth`` 11 by default, and is checked by :func:`validate_frame`
+    under ``name``, without a copy.
+
+    Raises
+    ------
+    TypeError
+        A plain array without ``pattern``; a bad pattern or bit depth type.
+    ValueError
+        A ``pattern`` or ``bit_depth`` that differs from the frame's; an array
+        :func:`validate_frame` refuses.
+    """
+    if isinstance(frame, RawFrame):
+        if pattern is not None and get_pattern(pattern) != frame.pattern:
+            raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
+                             f"frame's pattern {frame.pattern.name!r}")
+        if bit_depth is not None and check_bit_depth(bit_depth) != frame.bit_depth:
+            raise ValueError(f"bit_depth: {bit_depth} differs from the frame's {frame.bit_depth}")
+        return frame.data, frame.pattern, frame.bit_depth
+    if pattern is None:
+        raise TypeError(f"pattern: required when {name} is a plain array "
+                        "(pass a RawFrame, or pattern='mask1', ...)")
+    pattern = get_pattern(pattern)
+    bd = check_bit_depth(11 if bit_depth is None else bit_depth)
+    return validate_frame(frame, pattern, bd, name), pattern, bd
 
 
 def _check_range(data, bit_depth, name, pattern=None):

@@ -114,3 +114,37 @@ def tof_bilateral(z_re: np.ndarray, z_im: np.ndarray, var: np.ndarray, g_re: np.
                   col_px: np.ndarray, reach_rows: int, reach_cols: int, radius_px: int, inv_h2: float,
                   out_re: np.ndarray, out_im: np.ndarray, out_var: np.ndarray,
                   out_neff: np.ndarray, workers: int) -> None: ...
+
+# ToF phase of phasors (csrc/tof.h)
+def tof_phase_iq(i: np.ndarray, q: np.ndarray, phase: np.ndarray, amp: np.ndarray,
+                 workers: int) -> bool: ...
+
+# colour-guided ToF ISP and upsampling (csrc/tof_guided.h)
+def tofg_prepare(taps: np.ndarray, gain: float, black: float, supp: float, const_var: float,
+                 prnu: float, white: float, zr: np.ndarray, zi: np.ndarray, v: np.ndarray,
+                 sat: np.ndarray, offset: np.ndarray | None, workers: int) -> None: ...
+def tofg_colour(guide: np.ndarray, row_px: np.ndarray, col_px: np.ndarray, block: int,
+                scale: float, col: np.ndarray, cells: np.ndarray | None, lap: np.ndarray,
+                workers: int) -> None: ...
+def tofg_pass(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, nin: np.ndarray | None,
+              gr: np.ndarray, gi: np.ndarray, gv: np.ndarray, col: np.ndarray, use: np.ndarray,
+              R: int, C: int, axis: int, px: np.ndarray, reach: int, radius_px: int,
+              inv2h2: float, inv2hc2: float, out_re: np.ndarray | None,
+              out_im: np.ndarray | None, out_re64: np.ndarray | None,
+              out_im64: np.ndarray | None, out_var: np.ndarray, out_neff: np.ndarray,
+              workers: int) -> None: ...
+def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
+                  sat: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
+                  min_snr: float, min_amplitude: float, max_sigma: float, max_residual: float,
+                  min_reflectance: float, max_range: float, snr: np.ndarray,
+                  sigma: np.ndarray, refl: np.ndarray, flags: np.ndarray,
+                  workers: int) -> None: ...
+def tofg_flying(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, col: np.ndarray,
+                cells: np.ndarray | None, R: int, C: int, step: float, k: float,
+                contrast: float, side: float, unflag: int, flags: np.ndarray,
+                depth_out: np.ndarray, workers: int) -> None: ...
+def tofg_upsample(guide: np.ndarray, scale: float, cscale: np.ndarray, depth: np.ndarray,
+                  sigma: np.ndarray, col: np.ndarray, R: int, C: int, rc: np.ndarray,
+                  cc: np.ndarray, spacing: float, reach: int, inv2s2: float, inv2hc2: float,
+                  tol_k: float, tol_min: float, out: np.ndarray, conf: np.ndarray,
+                  workers: int) -> None: ...

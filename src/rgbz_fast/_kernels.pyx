@@ -596,3 +596,274 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
     _raise_for(status)
+
+
+# ---------------------------------------------------------------------- ToF phase of phasors (tof.h)
+cdef extern from "tof.h" nogil:
+    int rgbz_tof_phase_iq(const double *i_comp, const double *q_comp, Py_ssize_t F,
+                          Py_ssize_t N, double *phase, double *amp, int workers)
+
+
+def tof_phase_iq(const double[:, ::1] i, const double[:, ::1] q, double[:, ::1] phase,
+                 double[:, ::1] amp, int workers):
+    """Phasors I, Q (F, N) -> phase in [0, 2 pi) and amplitude (F, N), no unwrapping.
+
+    Returns False when an I or Q is not finite (RGBZ_EDOMAIN), True otherwise.
+    """
+    cdef int status
+    if i.shape[1] == 0:
+        return True
+    with nogil:
+        status = rgbz_tof_phase_iq(&i[0, 0], &q[0, 0], i.shape[0], i.shape[1], &phase[0, 0],
+                                   &amp[0, 0], workers)
+    if status == RGBZ_EDOMAIN:
+        return False
+    _raise_for(status)
+    return True
+
+
+# ---------------------------------------------------------------------- colour-guided ToF ISP (tof_guided.h)
+cdef extern from "tof_guided.h" nogil:
+    int rgbz_tofg_prepare_u16(const uint16_t *taps, Py_ssize_t F, Py_ssize_t N, double gain,
+                              double black, double supp, double const_var, double prnu,
+                              double white, float *zr, float *zi, float *v, uint8_t *sat,
+                              double *offset, int workers)
+    int rgbz_tofg_prepare_f32(const float *taps, Py_ssize_t F, Py_ssize_t N, double gain,
+                              double black, double supp, double const_var, double prnu,
+                              double white, float *zr, float *zi, float *v, uint8_t *sat,
+                              double *offset, int workers)
+    int rgbz_tofg_prepare_f64(const double *taps, Py_ssize_t F, Py_ssize_t N, double gain,
+                              double black, double supp, double const_var, double prnu,
+                              double white, float *zr, float *zi, float *v, uint8_t *sat,
+                              double *offset, int workers)
+    int rgbz_tofg_colour_u8(const uint8_t *guide, Py_ssize_t H, Py_ssize_t W,
+                            const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
+                            Py_ssize_t C, int block, double scale, float *col, float *cells,
+                            double *lap, int workers)
+    int rgbz_tofg_colour_u16(const uint16_t *guide, Py_ssize_t H, Py_ssize_t W,
+                             const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
+                             Py_ssize_t C, int block, double scale, float *col, float *cells,
+                             double *lap, int workers)
+    int rgbz_tofg_colour_f32(const float *guide, Py_ssize_t H, Py_ssize_t W,
+                             const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
+                             Py_ssize_t C, int block, double scale, float *col, float *cells,
+                             double *lap, int workers)
+    int rgbz_tofg_colour_f64(const double *guide, Py_ssize_t H, Py_ssize_t W,
+                             const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
+                             Py_ssize_t C, int block, double scale, float *col, float *cells,
+                             double *lap, int workers)
+    int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
+                       const float *gr, const float *gi, const float *gv, const float *col,
+                       const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C, int axis,
+                       const int64_t *px, Py_ssize_t reach, int64_t radius_px, double inv2h2,
+                       double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
+                       float *ov, float *on, int workers)
+    int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
+                           const double *residual, const uint8_t *sat, Py_ssize_t F,
+                           Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
+                           double min_snr, double min_amplitude, double max_sigma,
+                           double max_residual, double min_reflectance, double max_range,
+                           double *snr, double *sigma, double *refl, uint8_t *flags,
+                           int workers)
+    int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
+                         const float *col, const float *cells, int ncells, Py_ssize_t R,
+                         Py_ssize_t C, double step, double k, double contrast, double side,
+                         int unflag, uint8_t *flags, double *depth_out, int workers)
+    int rgbz_tofg_upsample_u8(const uint8_t *guide, Py_ssize_t H, Py_ssize_t W, double scale,
+                              const double *cscale, const double *depth, const double *sigma,
+                              const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
+                              const double *cc, double spacing, Py_ssize_t reach,
+                              double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                              float *out, float *conf, int workers)
+    int rgbz_tofg_upsample_u16(const uint16_t *guide, Py_ssize_t H, Py_ssize_t W, double scale,
+                               const double *cscale, const double *depth, const double *sigma,
+                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
+                               const double *cc, double spacing, Py_ssize_t reach,
+                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                               float *out, float *conf, int workers)
+    int rgbz_tofg_upsample_f32(const float *guide, Py_ssize_t H, Py_ssize_t W, double scale,
+                               const double *cscale, const double *depth, const double *sigma,
+                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
+                               const double *cc, double spacing, Py_ssize_t reach,
+                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                               float *out, float *conf, int workers)
+    int rgbz_tofg_upsample_f64(const double *guide, Py_ssize_t H, Py_ssize_t W, double scale,
+                               const double *cscale, const double *depth, const double *sigma,
+                               const float *col, Py_ssize_t R, Py_ssize_t C, const double *rc,
+                               const double *cc, double spacing, Py_ssize_t reach,
+                               double inv2s2, double inv2hc2, double tol_k, double tol_min,
+                               float *out, float *conf, int workers)
+
+ctypedef fused guide_t:
+    uint8_t
+    uint16_t
+    float
+    double
+
+
+def tofg_prepare(const tap_t[:, :, ::1] taps, double gain, double black, double supp,
+                 double const_var, double prnu, double white, float[:, ::1] zr,
+                 float[:, ::1] zi, float[::1] v, uint8_t[::1] sat, double[:, ::1] offset,
+                 int workers):
+    """Taps (F, 4, N) -> phasors zr, zi (F, N), component variance v (N,), sat |= full scale,
+    offset (F, N) when given."""
+    cdef int status
+    cdef double *of = _opt2(offset)
+    cdef Py_ssize_t F = taps.shape[0], N = taps.shape[2]
+    if N == 0:
+        return
+    with nogil:
+        if tap_t is uint16_t:
+            status = rgbz_tofg_prepare_u16(&taps[0, 0, 0], F, N, gain, black, supp, const_var,
+                                           prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0],
+                                           of, workers)
+        elif tap_t is float:
+            status = rgbz_tofg_prepare_f32(&taps[0, 0, 0], F, N, gain, black, supp, const_var,
+                                           prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0],
+                                           of, workers)
+        else:
+            status = rgbz_tofg_prepare_f64(&taps[0, 0, 0], F, N, gain, black, supp, const_var,
+                                           prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0],
+                                           of, workers)
+    _raise_for(status)
+
+
+cdef float *_optf(float[:, :, ::1] a) noexcept:
+    return NULL if a is None else &a[0, 0, 0]
+
+
+def tofg_colour(const guide_t[:, :, ::1] guide, const int64_t[::1] row_px,
+                const int64_t[::1] col_px, int block, double scale, float[:, ::1] col,
+                float[:, :, ::1] cells, double[::1] lap, int workers):
+    """The guide (H, W, 3) at the measurements: col (3, N), cells (block^2, 3, N) or None,
+    lap (3,) the sums of |Immerkaer's Laplacian| of col."""
+    cdef int status
+    cdef float *cp = _optf(cells)
+    cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
+    cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
+    if R == 0 or C == 0:
+        return
+    with nogil:
+        if guide_t is uint8_t:
+            status = rgbz_tofg_colour_u8(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
+                                         block, scale, &col[0, 0], cp, &lap[0], workers)
+        elif guide_t is uint16_t:
+            status = rgbz_tofg_colour_u16(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
+                                          block, scale, &col[0, 0], cp, &lap[0], workers)
+        elif guide_t is float:
+            status = rgbz_tofg_colour_f32(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
+                                          block, scale, &col[0, 0], cp, &lap[0], workers)
+        else:
+            status = rgbz_tofg_colour_f64(&guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
+                                          block, scale, &col[0, 0], cp, &lap[0], workers)
+    _raise_for(status)
+
+
+cdef const float *_optv(const float[::1] a) noexcept:
+    return NULL if a is None else &a[0]
+
+
+def tofg_pass(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v,
+              const float[::1] nin, const float[:, ::1] gr, const float[:, ::1] gi,
+              const float[::1] gv, const float[:, ::1] col, const uint8_t[::1] use,
+              Py_ssize_t R, Py_ssize_t C, int axis, const int64_t[::1] px, Py_ssize_t reach,
+              int64_t radius_px, double inv2h2, double inv2hc2, float[:, ::1] out_re,
+              float[:, ::1] out_im, double[:, ::1] out_re64, double[:, ::1] out_im64,
+              float[::1] out_var, float[::1] out_neff, int workers):
+    """One 1-D pass of the guided cross-bilateral mean (rows: axis 1, columns: axis 0); the
+    mean goes to out_re64/out_im64 (double) when they are given, else out_re/out_im."""
+    cdef int status
+    cdef const float *pn = _optv(nin)
+    cdef float *o_r = NULL
+    cdef float *o_i = NULL
+    cdef double *o_r64 = NULL
+    cdef double *o_i64 = NULL
+    if out_re64 is not None:
+        o_r64 = &out_re64[0, 0]
+        o_i64 = &out_im64[0, 0]
+    else:
+        o_r = &out_re[0, 0]
+        o_i = &out_im[0, 0]
+    if R == 0 or C == 0:
+        return
+    with nogil:
+        status = rgbz_tofg_pass(&zr[0, 0], &zi[0, 0], &v[0], pn, &gr[0, 0], &gi[0, 0], &gv[0],
+                                &col[0, 0], &use[0], zr.shape[0], R, C, axis, &px[0], reach,
+                                radius_px, inv2h2, inv2hc2, o_r, o_i, o_r64, o_i64,
+                                &out_var[0], &out_neff[0], workers)
+    _raise_for(status)
+
+
+def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[::1] depth,
+                  const double[::1] residual, const uint8_t[::1] sat,
+                  const double[::1] sigma_scale, const double[::1] refl_coef, double min_snr,
+                  double min_amplitude, double max_sigma, double max_residual,
+                  double min_reflectance, double max_range, double[::1] snr, double[::1] sigma,
+                  double[::1] refl, uint8_t[::1] flags, int workers):
+    """snr, sigma, implied reflectance and the validity bits (no flying test)."""
+    cdef int status
+    if depth.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_tofg_validity(&amp[0, 0], &var[0], &depth[0], &residual[0], &sat[0],
+                                    amp.shape[0], amp.shape[1], &sigma_scale[0], &refl_coef[0],
+                                    min_snr, min_amplitude, max_sigma, max_residual,
+                                    min_reflectance, max_range, &snr[0], &sigma[0], &refl[0],
+                                    &flags[0], workers)
+    _raise_for(status)
+
+
+def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[::1] usable,
+                const float[:, ::1] col, const float[:, :, ::1] cells, Py_ssize_t R,
+                Py_ssize_t C, double step, double k, double contrast, double side, int unflag,
+                uint8_t[::1] flags, double[::1] depth_out, int workers):
+    """The flying-pixel test with colour edges: bits 8 (flying) and 32 (resolved) into flags,
+    the resolved depths into depth_out (the measured depth elsewhere)."""
+    cdef int status
+    cdef const float *cp = NULL
+    cdef int ncells = 1
+    if cells is not None:
+        cp = &cells[0, 0, 0]
+        ncells = <int> cells.shape[0]
+    if depth.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_tofg_flying(&depth[0], &sigma[0], &usable[0], &col[0, 0], cp, ncells, R, C,
+                                  step, k, contrast, side, unflag, &flags[0], &depth_out[0],
+                                  workers)
+    _raise_for(status)
+
+
+def tofg_upsample(const guide_t[:, :, ::1] guide, double scale, const double[::1] cscale,
+                  const double[::1] depth, const double[::1] sigma, const float[:, ::1] col,
+                  Py_ssize_t R, Py_ssize_t C, const double[::1] rc, const double[::1] cc,
+                  double spacing, Py_ssize_t reach, double inv2s2, double inv2hc2,
+                  double tol_k, double tol_min, float[:, ::1] out, float[:, ::1] conf,
+                  int workers):
+    """Joint bilateral upsampling of the measurements' depth to every pixel of the guide."""
+    cdef int status
+    cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
+    if H == 0 or W == 0:
+        return
+    with nogil:
+        if guide_t is uint8_t:
+            status = rgbz_tofg_upsample_u8(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
+                                           &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
+                                           spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
+                                           &out[0, 0], &conf[0, 0], workers)
+        elif guide_t is uint16_t:
+            status = rgbz_tofg_upsample_u16(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
+                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
+                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
+                                            &out[0, 0], &conf[0, 0], workers)
+        elif guide_t is float:
+            status = rgbz_tofg_upsample_f32(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
+                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
+                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
+                                            &out[0, 0], &conf[0, 0], workers)
+        else:
+            status = rgbz_tofg_upsample_f64(&guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
+                                            &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0],
+                                            spacing, reach, inv2s2, inv2hc2, tol_k, tol_min,
+                                            &out[0, 0], &conf[0, 0], workers)
+    _raise_for(status)

@@ -34,13 +34,13 @@ def _check_period(rows_, cols):
                          f"({MAX_PERIOD}x{MAX_PERIOD})")
 
 
-def _bayer_tile(phase):
-    phase = str(phase).upper()
-    if phase not in BAYER_PHASES:
+def _bayer_tile(bayer):
+    bayer = str(bayer).upper()
+    if bayer not in BAYER_PHASES:
         raise ValueError(
-            f"phase: expected one of {', '.join(BAYER_PHASES)}, got {phase!r}")
-    return np.array([[CHANNELS.index(phase[0]), CHANNELS.index(phase[1])],
-                     [CHANNELS.index(phase[2]), CHANNELS.index(phase[3])]],
+            f"phase: expected one of {', '.join(BAYER_PHASES)}, got {bayer!r}")
+    return np.array([[CHANNELS.index(bayer[0]), CHANNELS.index(bayer[1])],
+                     [CHANNELS.index(bayer[2]), CHANNELS.index(bayer[3])]],
                     dtype=np.int8)
 
 
@@ -163,11 +163,11 @@ class Pattern:
         LP, LQ = _lcm(P, 2), _lcm(Q, 2)
         ext = np.tile(self._tile, (LP // P, LQ // Q))
         fits = []
-        for phase in BAYER_PHASES:
-            b = np.tile(_bayer_tile(phase), (LP // 2, LQ // 2))
+        for candidate in BAYER_PHASES:
+            b = np.tile(_bayer_tile(candidate), (LP // 2, LQ // 2))
             known = ext != Z
             if np.array_equal(ext[known], b[known]):
-                fits.append(phase)
+                fits.append(candidate)
         if bayer is not None:
             bayer = str(bayer).upper()
             if bayer not in BAYER_PHASES:

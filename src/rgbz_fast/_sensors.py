@@ -16,77 +16,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import check_bit_depth, check_flag, check_int, check_number, check_seed
+from ._sensor_checks import (check_pixel_noise, check_readout, check_spectrum,
+                             check_tof_contrast, check_tof_nonideal, store_number)
 
-__all__ = ["ColourSensor", "ToFSensor", "SPEED_OF_LIGHT"]
+__all__ = ["ColourSensor", "ToFSensor", "SPEED_OF_LIGHT", "DEFAULT_CELL_PITCH_UM"]
 
 #: Speed of light in vacuum, m/s.
 SPEED_OF_LIGHT = 299_792_458.0
 _PLANCK = 6.62607015e-34
-
-
-# --------------------------------------------------------------------------
-# parameter checks
-# --------------------------------------------------------------------------
-
-def _check_readout(obj):
-    """Well, conversion gain, swing, ADC bits and black level: shared by both sensors."""
-    _num(obj, "full_well", lo=0, lo_open=True, allow_inf=True)
-    _num(obj, "conversion_gain_uv_per_e", lo=0, hi=1e4, lo_open=True)
-    _num(obj, "voltage_swing", lo=0, hi=100, lo_open=True)
-    object.__setattr__(obj, "bit_depth",
-                       check_bit_depth(obj.bit_depth, f"{type(obj).__name__}.bit_depth"))
-    _num(obj, "black_level", lo=0, hi=(1 << obj.bit_depth) - 1, hi_open=True)
-
-
-def _check_pixel_noise(obj):
-    """The noise terms and the fixed-pattern seed: shared by both sensors."""
-    _flag(obj, "shot_noise")
-    _num(obj, "dark_current", lo=0, hi=1e7)
-    _num(obj, "read_noise", lo=0, hi=1e5)
-    _num(obj, "dsnu", lo=0, hi=1e5)
-    _num(obj, "prnu", lo=0, hi=1, hi_open=True)
-    _flag(obj, "quantise")
-    object.__setattr__(obj, "fpn_seed", check_seed(obj.fpn_seed, f"{type(obj).__name__}.fpn_seed"))
-
-
-def _num(obj, name, **bounds):
-    """Check the number ``obj.name`` (:func:`~rgbz_fast._validate.check_number`), store it as float."""
-    v = check_number(getattr(obj, name), f"{type(obj).__name__}.{name}", **bounds)
-    object.__setattr__(obj, name, v)
-    return v
-
-
-def _flag(obj, name):
-    value = check_flag(getattr(obj, name), f"{type(obj).__name__}.{name}")
-    object.__setattr__(obj, name, value)
-
-
-def _spectrum_param(obj, name, ncols):
-    """A colour-science name, or (wavelengths, values) turned into hashable tuples."""
-    value = getattr(obj, name)
-    label = f"{type(obj).__name__}.{name}"
-    if isinstance(value, str):
-        return
-    try:
-        wl, vals = value
-        wl = np.asarray(wl, dtype=np.float64)
-        vals = np.asarray(vals, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(f"{label}: expected a colour-science dataset name or a "
-                        f"(wavelengths, values) pair, got {type(value).__name__}") from None
-    if vals.ndim == 1 and ncols == 1:
-        vals = vals[:, None]
-    if wl.ndim != 1 or vals.shape != (wl.size, ncols) or wl.size < 2:
-        raise ValueError(f"{label}: expected wavelengths (N,) and values (N, {ncols}), got "
-                         f"{wl.shape} and {vals.shape}")
-    if not (np.all(np.isfinite(wl)) and np.all(np.isfinite(vals))):
-        raise ValueError(f"{label}: holds NaN or infinite values")
-    if np.any(np.diff(wl) <= 0):
-        raise ValueError(f"{label}: wavelengths must be strictly increasing")
-    if vals.min() < 0:
-        raise ValueError(f"{label}: a spectral sensitivity or power is >= 0, got {vals.min()}")
-    object.__setattr__(obj, name, (tuple(wl.tolist()), tuple(map(tuple, vals.tolist()))))
+#: Pitch (um) of one Z cell when neither the :class:`ToFSensor` nor the caller gives one: the
+#: default colour pixel's (:attr:`ColourSensor.pixel_pitch_um`), whose cells the Z pixels share.
+DEFAULT_CELL_PITCH_UM = 2.8
 
 
 class _Readout:
@@ -101,64 +41,6 @@ class _Readout:
     def white_level(self):
         """int: the largest digital number, ``2**bit_depth - 1``."""
         return (1 << self.bit_depth) - 1
-
-
-def _contrast(obj, nfreq):
-    """``modulation_contrast``: one number, or one per frequency (stored as a tuple)."""
-    value = obj.modulation_contrast
-    if isinstance(value, (tuple, list, np.ndarray)):
-        values = tuple(check_number(v, "ToFSensor.modulation_contrast", lo=0, hi=1, lo_open=True)
-                       for v in value)
-        if len(values) != nfreq:
-            raise ValueError(f"ToFSensor.modulation_contrast: expected one number or one per "
-                             f"frequency ({nfreq}), got {len(values)}")
-        object.__setattr__(obj, "modulation_contrast", values)
-    else:
-        _num(obj, "modulation_contrast", lo=0, hi=1, lo_open=True)
-
-
-def _check_tof_nonideal(obj):
-    """Harmonics, tap contrasts, delays, multipath, ambient suppression, duty cycle."""
-    label = "ToFSensor.harmonics"
-    try:
-        entries = [tuple(e) for e in obj.harmonics]
-    except TypeError:
-        raise TypeError(f"{label}: expected a sequence of (order, amplitude, phase) triples, "
-                        f"got {obj.harmonics!r}") from None
-    harmonics = []
-    for e in entries:
-        if len(e) != 3:
-            raise ValueError(f"{label}: expected (order, amplitude, phase) triples, got {e!r}")
-        order = check_int(e[0], f"{label} order", lo=2, hi=64)
-        amp = check_number(e[1], f"{label} amplitude", lo=0, hi=1)
-        phase = check_number(e[2], f"{label} phase", lo=-100, hi=100)
-        harmonics.append((order, amp, phase))
-    if len({h[0] for h in harmonics}) != len(harmonics):
-        raise ValueError(f"{label}: an order is repeated in {obj.harmonics!r}")
-    object.__setattr__(obj, "harmonics", tuple(harmonics))
-    try:
-        taps = tuple(obj.tap_contrast)
-    except TypeError:
-        raise TypeError(f"ToFSensor.tap_contrast: expected 4 numbers, got "
-                        f"{obj.tap_contrast!r}") from None
-    if len(taps) != 4:
-        raise ValueError(f"ToFSensor.tap_contrast: expected 4 numbers (one per tap), got "
-                         f"{len(taps)}")
-    object.__setattr__(obj, "tap_contrast", tuple(
-        check_number(t, "ToFSensor.tap_contrast", lo=0, hi=2, lo_open=True) for t in taps))
-    _num(obj, "delay_ps", lo=-1e6, hi=1e6)
-    _num(obj, "delay_fpn_ps", lo=0, hi=1e6)
-    if obj.multipath is not None:
-        try:
-            ratio, extra = obj.multipath
-        except (TypeError, ValueError):
-            raise TypeError(f"ToFSensor.multipath: expected None or (relative_amplitude, "
-                            f"extra_path_m), got {obj.multipath!r}") from None
-        object.__setattr__(obj, "multipath", (
-            check_number(ratio, "ToFSensor.multipath amplitude", lo=0, hi=1),
-            check_number(extra, "ToFSensor.multipath extra path", lo=0, hi=1e4, lo_open=True)))
-    _num(obj, "ambient_suppression", lo=0, hi=1, hi_open=True)
-    _num(obj, "duty_cycle", lo=0, hi=1, lo_open=True)
 
 
 # --------------------------------------------------------------------------
@@ -268,8 +150,8 @@ class ColourSensor(_Readout):
     fpn_seed: int = 0
 
     def __post_init__(self):
-        _num(self, "pixel_pitch_um", lo=0.1, hi=100)
-        _check_readout(self)
+        store_number(self, "pixel_pitch_um", lo=0.1, hi=100)
+        check_readout(self)
         try:
             qe = tuple(float(q) for q in self.qe)
         except (TypeError, ValueError):
@@ -279,18 +161,18 @@ class ColourSensor(_Readout):
             raise ValueError(f"ColourSensor.qe: expected 3 quantum efficiencies in (0, 1], "
                              f"got {self.qe!r}")
         object.__setattr__(self, "qe", qe)
-        _num(self, "photon_flux", lo=0, lo_open=True)
-        _spectrum_param(self, "sensitivities", 3)
-        _spectrum_param(self, "illuminant", 1)
+        store_number(self, "photon_flux", lo=0, lo_open=True)
+        check_spectrum(self, "sensitivities", 3)
+        check_spectrum(self, "illuminant", 1)
         if isinstance(self.exposure, str):
             if self.exposure != "auto":
                 raise ValueError(f"ColourSensor.exposure: expected seconds > 0 or 'auto', got "
                                  f"{self.exposure!r}")
         else:
-            _num(self, "exposure", lo=0, hi=3600, lo_open=True)
-        _num(self, "ae_target", lo=0, hi=1, lo_open=True)
-        _num(self, "ae_percentile", lo=0, hi=100, lo_open=True)
-        _check_pixel_noise(self)
+            store_number(self, "exposure", lo=0, hi=3600, lo_open=True)
+        store_number(self, "ae_target", lo=0, hi=1, lo_open=True)
+        store_number(self, "ae_percentile", lo=0, hi=100, lo_open=True)
+        check_pixel_noise(self)
 
     @property
     def pixel_area_um2(self):
@@ -456,10 +338,10 @@ class ToFSensor(_Readout):
         if len(set(round(f) for f in freqs)) != len(freqs):
             raise ValueError(f"ToFSensor.frequencies: repeated frequency in {freqs}")
         object.__setattr__(self, "frequencies", freqs)
-        _num(self, "integration_time", lo=0, hi=10, lo_open=True)
-        _num(self, "wavelength_nm", lo=700, hi=1700)
-        _num(self, "optical_power_w", lo=0, hi=1e3, lo_open=True)
-        _contrast(self, len(freqs))
+        store_number(self, "integration_time", lo=0, hi=10, lo_open=True)
+        store_number(self, "wavelength_nm", lo=700, hi=1700)
+        store_number(self, "optical_power_w", lo=0, hi=1e3, lo_open=True)
+        check_tof_contrast(self, len(freqs))
         try:
             fov = tuple(float(v) for v in self.fov_deg)
         except (TypeError, ValueError):
@@ -469,18 +351,18 @@ class ToFSensor(_Readout):
             raise ValueError(f"ToFSensor.fov_deg: expected two angles in (0, 180) degrees, got "
                              f"{self.fov_deg!r}")
         object.__setattr__(self, "fov_deg", fov)
-        _num(self, "f_number", lo=0.5, hi=64)
-        _num(self, "optics_transmission", lo=0, hi=1, lo_open=True)
-        _num(self, "qe", lo=0, hi=1, lo_open=True)
-        _num(self, "ambient_irradiance", lo=0, hi=1e4)
+        store_number(self, "f_number", lo=0.5, hi=64)
+        store_number(self, "optics_transmission", lo=0, hi=1, lo_open=True)
+        store_number(self, "qe", lo=0, hi=1, lo_open=True)
+        store_number(self, "ambient_irradiance", lo=0, hi=1e4)
         if self.pixel_pitch_um is not None:
-            _num(self, "pixel_pitch_um", lo=0.1, hi=100)
+            store_number(self, "pixel_pitch_um", lo=0.1, hi=100)
         if self.z_block is not None and (isinstance(self.z_block, bool)
                                          or self.z_block not in (1, 2)):
             raise ValueError(f"ToFSensor.z_block: expected None, 1 or 2, got {self.z_block!r}")
-        _check_readout(self)
-        _check_pixel_noise(self)
-        _check_tof_nonideal(self)
+        check_readout(self)
+        check_pixel_noise(self)
+        check_tof_nonideal(self)
 
     @property
     def wrap_ranges(self):
@@ -508,7 +390,7 @@ class ToFSensor(_Readout):
                 and not isinstance(self.modulation_contrast, tuple) and self.delay_ps == 0
                 and self.delay_fpn_ps == 0 and self.multipath is None)
 
-    def tap_electrons(self, distance, ir_reflectance, *, pixel_pitch_um=2.8):
+    def tap_electrons(self, distance, ir_reflectance, *, pixel_pitch_um=DEFAULT_CELL_PITCH_UM):
         """Mean electrons per tap of one-cell Z pixels (noise-free, no FPN, no per-pixel delay).
 
         Parameters
@@ -536,6 +418,41 @@ class ToFSensor(_Readout):
         if self.ambient_suppression:
             mean = mean - self._suppressed(total)[None, None]
         return mean
+
+    def active_electrons(self, distance, ir_reflectance=1.0, *, pixel_pitch_um=None):
+        """Electrons of the source's light that one Z cell collects over one integration.
+
+        The radiometry of the class docstring, noise-free: ``rho P / (4 d^2
+        tan(h/2) tan(v/2)) * T A / (4 N^2) / (h c / lambda) * qe * t`` for a
+        cell of area ``A``; no ambient light, dark signal or modulation
+        contrast.
+
+        Parameters
+        ----------
+        distance : array_like
+            Metres (> 0).
+        ir_reflectance : float or array_like
+            NIR reflectance of the surface (1: the reference a measured
+            amplitude is compared with).
+        pixel_pitch_um : float, optional
+            Cell pitch; default :attr:`pixel_pitch_um`, or
+            :data:`DEFAULT_CELL_PITCH_UM` when that is None.
+
+        Returns
+        -------
+        ndarray of float64, the broadcast shape of the arguments
+
+        Examples
+        --------
+        >>> s = ToFSensor().active_electrons([1.0, 2.0])
+        >>> [round(float(v)) for v in s], round(float(s[0] / s[1]), 6)   # 1 / d^2
+        ([909, 227], 4.0)
+        """
+        if pixel_pitch_um is None:
+            pixel_pitch_um = self.pixel_pitch_um or DEFAULT_CELL_PITCH_UM
+        s, _ = self._cell_electrons(np.asarray(distance, np.float64), ir_reflectance,
+                                    float(pixel_pitch_um))
+        return s
 
     # -- internals ------------------------------------------------------------
     @property

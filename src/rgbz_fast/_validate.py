@@ -8,19 +8,24 @@ infinity allowed on request), :func:`check_int` for every integer one,
 :func:`check_flag`, :func:`check_choice`, :func:`check_dtype`,
 :func:`check_bit_depth`, :func:`check_seed`, :func:`check_workers` (threads of
 a C kernel) and :func:`check_processes` (worker processes), and
-:func:`check_image` for arrays.
+:func:`check_image` for arrays. :func:`merge_params` is the one rule of every stage
+that takes parameters: a frozen dataclass (``params=``) plus keyword overrides of its
+fields, checked once by the dataclass.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import numbers
 import os
+from collections.abc import Mapping
 
 import numpy as np
 
 __all__ = ["check_image", "check_finite", "check_number", "check_int", "check_flag",
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
-           "check_processes", "thread_limit", "parse_shape", "FRAME_DTYPES", "MAX_WORKERS"]
+           "check_processes", "thread_limit", "parse_shape", "merge_params", "FRAME_DTYPES",
+           "MAX_WORKERS"]
 
 #: largest ``workers`` (threads of one kernel call); the result never depends on it.
 #: OpenMP aborts the process (libgomp: "Thread creation failed") when it cannot start the
@@ -58,6 +63,85 @@ def check_image(arr, name, ndim=None, dtypes=None):
                         f"{', '.join(str(d) for d in dtypes)}")
     check_finite(a, name)
     return a
+
+
+def merge_params(cls, params=None, overrides=None, *, name="params", caller=None, what=None):
+    """The parameters of one call: ``params`` with keyword ``overrides`` of its fields.
+
+    The one parameter rule of the library: a stage takes ``params=`` (an
+    instance of the frozen dataclass ``cls``) and keyword overrides of its
+    fields. The result is made by ``cls`` itself, so its ``__post_init__`` is
+    the one place the fields are checked; the caller never checks them again.
+
+    Parameters
+    ----------
+    cls : type
+        A frozen dataclass whose ``__post_init__`` checks (and may normalise)
+        every field.
+    params : cls, mapping or None
+        The base: an instance (returned as it is when there is nothing to
+        override), a mapping of field names to values, or None (the defaults).
+    overrides : mapping, optional
+        Field values that replace those of ``params`` (a function's
+        ``**kwargs``).
+    name : str
+        The parameter ``params`` is passed as, named in the errors about it.
+    caller : str, optional
+        What takes ``overrides``, named in the error about an unknown one
+        (``"reconstruct()"``); default ``name``.
+    what : str, optional
+        How the error lists the accepted names (default ``"fields of CLS"``).
+
+    Returns
+    -------
+    cls
+
+    Raises
+    ------
+    TypeError
+        ``params`` that is neither a ``cls``, a mapping nor None; a name that
+        is no field of ``cls`` (the message Python gives for an unexpected
+        keyword argument, plus the accepted names).
+    ValueError, TypeError
+        A bad field value, from ``cls`` (the message names the field).
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> @dataclass(frozen=True)
+    ... class Blur:
+    ...     sigma: float = 1.0
+    ...     def __post_init__(self):
+    ...         object.__setattr__(self, "sigma", check_number(self.sigma, "sigma", lo=0))
+    >>> merge_params(Blur, None, {"sigma": 2})
+    Blur(sigma=2.0)
+    >>> merge_params(Blur, Blur(3.0), {"size": 5}, caller="blur()")
+    Traceback (most recent call last):
+    ...
+    TypeError: blur() got an unexpected keyword argument 'size' (fields of Blur: sigma)
+    """
+    names = tuple(f.name for f in dataclasses.fields(cls))
+    what = what or f"fields of {cls.__name__}"
+
+    def known(mapping, label):
+        unknown = [k for k in mapping if k not in names]
+        if unknown:
+            raise TypeError(f"{label} got an unexpected keyword argument {unknown[0]!r} "
+                            f"({what}: {', '.join(names)})")
+        return mapping
+
+    overrides = known(dict(overrides or {}), caller or name)
+    if isinstance(params, cls):
+        return dataclasses.replace(params, **overrides) if overrides else params
+    if params is None:
+        base = {}
+    elif isinstance(params, Mapping):
+        base = known(dict(params), name)
+    else:
+        article = "an" if cls.__name__[:1] in "AEIOU" else "a"
+        raise TypeError(f"{name}: expected {article} {cls.__name__}, a dict of its fields or "
+                        f"None, got {type(params).__name__}")
+    return cls(**{**base, **overrides})
 
 
 def check_finite(a, name):
@@ -355,7 +439,7 @@ def check_processes(processes, name="processes"):
     return _check_count(processes, name, "processes", minus_one=False)
 
 
-def parse_shape(text, name="--shape"):
+def parse_shape(text, name="shape"):
     """A frame shape written ``ROWSxCOLS`` (``"1080x1920"``: 1080 rows of 1920 pixels).
 
     The one shape convention of the command line, as of every array in the
@@ -368,7 +452,7 @@ def parse_shape(text, name="--shape"):
     >>> parse_shape("1920*1080")
     Traceback (most recent call last):
     ...
-    ValueError: --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'
+    ValueError: shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'
     """
     parts = str(text).lower().replace(" ", "").split("x")
     if len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts):

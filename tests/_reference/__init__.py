@@ -2,7 +2,7 @@
 
 * :mod:`_reference.reconstruction` -- every reconstruction method, site by site
   (docs/guide/interpretation.md is its specification);
-* :mod:`_reference.defects` -- the first, full-frame defect correction;
+* :mod:`_reference.defects` -- the defect correction, pixel by pixel from its definition;
 * :mod:`_reference.metrics` -- SSIM, MS-SSIM, CIELAB and the zipper metric as
   rgbz_fast.metrics computed them in NumPy, SciPy and colour-science before its
   C kernels (csrc/metrics.c).

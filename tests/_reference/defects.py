@@ -1,14 +1,20 @@
-"""The defect correction of ``rgbz_fast.isp`` as it was first written (full-frame NumPy).
+"""A slow reference of the defect correction of ``rgbz_fast.isp``, pixel by pixel.
 
-Kept verbatim (argument checks dropped) as the reference
-of the phase-plane implementation in ``rgbz_fast.isp``, which must give the
-same map and the same corrected values (tests/test_isp.py): per tile phase,
-strided views of padded full-frame copies (``np.pad`` with +-inf), a float32
-working copy of the frame with NaN at the Z sites, and a float64 one for the
-medians.
+Written from the definition in the docstring of :class:`rgbz_fast.isp.DefectCorrection`,
+one colour pixel at a time with plain Python loops over its 5x5 window and its
+8-neighbourhood, reading colours from ``Pattern.channel_map`` (the library works on
+padded per-position sub-images and reads colours from the tile). The arithmetic
+types are the library's: the detection compares float32 values (differences and the
+``spread_factor`` product rounded to float32, as NumPy's float32 arithmetic does),
+its third test and the correction's median work in float64. Sums of at most 24
+float32 values are exact in float64 whatever the order (``math.fsum`` here, NumPy's
+pairwise sum there) for the frames of the tests (values below 2**16 with float32's
+24-bit mantissa), so the two agree bit for bit.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -17,151 +23,96 @@ from rgbz_fast.isp import DefectCorrection
 
 __all__ = ["reference_detect_defects", "reference_correct_defects"]
 
-
-def _colour_offsets(tile, py, px):
-    """Offsets (dy, dx) of the 5x5 window holding the colour of tile site (py, px)."""
-    P, Q = tile.shape
-    c = tile[py, px]
-    return [(dy, dx) for dy in range(-2, 3) for dx in range(-2, 3)
-            if (dy, dx) != (0, 0) and tile[(py + dy) % P, (px + dx) % Q] == c]
+f32 = np.float32
 
 
-def _neighbour_extremes(work, tile):
-    """Max and min of the same-colour non-Z neighbours of every colour site (float32).
-
-    ``work`` is float32 with NaN at the Z sites (which no colour offset
-    reaches anyway). Pixels outside the frame do not count; a site without any
-    neighbour gets -inf / +inf, which no test passes.
-    """
-    H, W = work.shape
-    P, Q = tile.shape
-    lo_pad = np.pad(work, 2, constant_values=np.inf)
-    hi_pad = np.pad(work, 2, constant_values=-np.inf)
-    mx = np.full((H, W), -np.inf, np.float32)
-    mn = np.full((H, W), np.inf, np.float32)
-    for py in range(min(P, H)):
-        for px in range(min(Q, W)):
-            if tile[py, px] == Z:
-                continue
-            h, w = work[py::P, px::Q].shape
-            lmx = np.full((h, w), -np.inf, np.float32)
-            lmn = np.full((h, w), np.inf, np.float32)
-            for dy, dx in _colour_offsets(tile, py, px):
-                sl = (slice(2 + py + dy, None, P), slice(2 + px + dx, None, Q))
-                np.maximum(lmx, hi_pad[sl][:h, :w], out=lmx)
-                np.minimum(lmn, lo_pad[sl][:h, :w], out=lmn)
-            mx[py::P, px::Q] = lmx
-            mn[py::P, px::Q] = lmn
-    return mx, mn
+def _same_colour_neighbours(channels, y, x):
+    """Positions of the same-colour non-Z pixels of the 5x5 window around (y, x), inside the
+    frame, the pixel itself excluded."""
+    H, W = channels.shape
+    c = channels[y, x]
+    return [(y + dy, x + dx) for dy in range(-2, 3) for dx in range(-2, 3)
+            if (dy or dx) and 0 <= y + dy < H and 0 <= x + dx < W
+            and channels[y + dy, x + dx] == c]
 
 
-def _gather_neighbours(work, tile, rr, cc):
-    """Same-colour neighbours of the sites (rr, cc): (len(rr), 24) float64, NaN-padded.
+def _trimmed_mean(values):
+    """Mean of ``values`` without the largest and the smallest one when there are 3 or more."""
+    if len(values) >= 3:
+        return (math.fsum(values) - max(values) - min(values)) / (len(values) - 2)
+    return math.fsum(values) / len(values)
 
-    NaN stands for no neighbour: outside the frame, or a NaN in ``work``
-    (a Z site, or a pixel the caller hid).
-    """
-    H, W = work.shape
-    P, Q = tile.shape
-    out = np.full((rr.size, 24), np.nan)
-    phase = (rr % P) * Q + (cc % Q)
-    for ph in np.unique(phase):
-        sel = np.nonzero(phase == ph)[0]
-        offs = np.array(_colour_offsets(tile, ph // Q, ph % Q), np.int64).reshape(-1, 2)
-        r = rr[sel, None] + offs[:, 0]
-        c = cc[sel, None] + offs[:, 1]
-        inside = (r >= 0) & (r < H) & (c >= 0) & (c < W)
-        nb = np.full(r.shape, np.nan)
-        nb[inside] = work[r[inside], c[inside]]
-        out[sel, :offs.shape[0]] = nb
-    return out
+
+def _is_defect(v32, channels, y, x, thr, k, f):
+    """Tests 1 to 3 of DefectCorrection for the colour pixel (y, x)."""
+    nb = [v32[q] for q in _same_colour_neighbours(channels, y, x)]
+    if not nb:
+        return False                          # a pixel without neighbours is never flagged
+    p, hi, lo = v32[y, x], max(nb), min(nb)
+    spread = f32(hi - lo)
+    hot, cold = f32(p - hi), f32(lo - p)
+    bound = f32(k * spread)
+    for excess, sign in ((hot, 1.0), (cold, -1.0)):
+        if not (excess > thr and excess > bound):             # tests 1 and 2
+            continue
+        # test 3: no adjacent non-Z pixel q rises (falls) with p by a share of its excess
+        H, W = channels.shape
+        rises = []
+        for qy in range(y - 1, y + 2):
+            for qx in range(x - 1, x + 2):
+                if (qy, qx) == (y, x) or not (0 <= qy < H and 0 <= qx < W):
+                    continue
+                if channels[qy, qx] == Z:
+                    continue
+                qnb = [float(v32[q]) for q in _same_colour_neighbours(channels, qy, qx)]
+                if qnb:
+                    rises.append(sign * (float(v32[qy, qx]) - _trimmed_mean(qnb)))
+        if all(r < f * float(excess) for r in rises):
+            return True
+    return False
 
 
 def reference_detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047):
-    """``rgbz_fast.isp.detect_defects`` (same parameters and results), full-frame NumPy."""
+    """``rgbz_fast.isp.detect_defects`` (same parameters and results), pixel by pixel."""
     data, pattern = np.asarray(cfa), get_pattern(pattern)
-    white_level = float(white_level)
     found = np.zeros(data.shape, bool)
     if not params.enabled:
         return found
-    zmask = pattern.z_mask(data.shape)
-    tile = pattern.tile
-    work = data.astype(np.float32)
-    work[zmask] = np.nan                  # Z sites are hidden before anything reads them
-    # tests 1 and 2 on every pixel
-    mx, mn = _neighbour_extremes(work, tile)
-    thr = np.float32(params.threshold * white_level)
-    k = np.float32(params.spread_factor)
-    spread = mx - mn
-    with np.errstate(invalid="ignore"):
-        hot = work - mx
-        cold = mn - work
-        cand = ((hot > thr) & (hot > k * spread)) | ((cold > thr) & (cold > k * spread))
-    cand &= ~zmask & np.isfinite(mx)                    # a pixel needs neighbours
-    rr, cc = np.nonzero(cand)
-    if rr.size == 0:
-        return found
-    # test 3 on the few candidates: high-pass of the adjacent pixels
-    H, W = data.shape
-    adj = np.array([(dy, dx) for dy in (-1, 0, 1) for dx in (-1, 0, 1) if dy or dx])
-    qr = rr[:, None] + adj[:, 0]
-    qc = cc[:, None] + adj[:, 1]
-    inside = (qr >= 0) & (qr < H) & (qc >= 0) & (qc < W)
-    qr, qc = np.where(inside, qr, 0), np.where(inside, qc, 0)
-    uq, inv = np.unique(qr * W + qc, return_inverse=True)
-    ur, uc = uq // W, uq % W
-    nb = _gather_neighbours(work, tile, ur, uc)
-    cnt = np.sum(~np.isnan(nb), axis=1)
-    tot = np.nansum(nb, axis=1)
-    trim = cnt >= 3                        # trimmed mean: one defect nearby does not move it
-    with np.errstate(invalid="ignore", divide="ignore"):
-        big = np.where(cnt > 0, np.nanmax(np.where(cnt[:, None] > 0, nb, 0), axis=1), 0)
-        small = np.where(cnt > 0, np.nanmin(np.where(cnt[:, None] > 0, nb, 0), axis=1), 0)
-        mean = np.where(trim, (tot - big - small) / np.maximum(cnt - 2, 1),
-                        tot / np.maximum(cnt, 1))
-        hp = np.where(cnt > 0, work[ur, uc] - mean, np.nan)   # NaN at Z sites
-    hp = hp[inv.reshape(qr.shape)]
-    hp[~inside] = np.nan
-    e_hot = hot[rr, cc].astype(np.float64)
-    e_cold = cold[rr, cc].astype(np.float64)
-    f = params.cross_factor
-    with np.errstate(invalid="ignore"):
-        adj_hi = np.nanmax(np.where(np.isnan(hp), -np.inf, hp), axis=1)
-        adj_lo = np.nanmin(np.where(np.isnan(hp), np.inf, hp), axis=1)
-        is_hot = (e_hot > thr) & (e_hot > k * spread[rr, cc]) & (adj_hi < f * e_hot)
-        is_cold = (e_cold > thr) & (e_cold > k * spread[rr, cc]) & (adj_lo > -f * e_cold)
-    found[rr, cc] = is_hot | is_cold
+    channels = pattern.channel_map(data.shape)
+    v32 = data.astype(np.float32)
+    thr = f32(params.threshold * float(white_level))
+    k = f32(params.spread_factor)
+    for y in range(data.shape[0]):
+        for x in range(data.shape[1]):
+            if channels[y, x] != Z:
+                found[y, x] = _is_defect(v32, channels, y, x, thr, k, params.cross_factor)
     return found
 
 
 def reference_correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047,
                               known=None, return_mask=False):
-    """``rgbz_fast.isp.correct_defects`` (same parameters and results), full-frame NumPy."""
+    """``rgbz_fast.isp.correct_defects`` (same parameters and results), pixel by pixel.
+
+    A flagged pixel (detected, or in ``known`` and not a Z site) takes the median of
+    its same-colour neighbours that are not flagged themselves; one without such a
+    neighbour keeps its value and is not reported as corrected.
+    """
     data, pattern = np.asarray(cfa), get_pattern(pattern)
+    channels = pattern.channel_map(data.shape)
     mask = reference_detect_defects(data, pattern, params, white_level=white_level)
-    zmask = pattern.z_mask(data.shape)
     if known is not None:
-        kn = np.asarray(known)
-        if kn.shape != data.shape or kn.dtype != np.bool_:
-            raise ValueError(f"known: expected a bool map of shape {data.shape}, got "
-                             f"{kn.dtype} {kn.shape}")
-        mask = mask | (kn & ~zmask)
+        mask |= np.asarray(known, bool) & (channels != Z)
     out = data.copy()
-    if mask.any():
-        rr, cc = np.nonzero(mask)
-        work = data.astype(np.float64)
-        work[zmask] = np.nan
-        work[mask] = np.nan                   # a defect never repairs another one
-        nb = _gather_neighbours(work, pattern.tile, rr, cc)
-        ok = ~np.isnan(nb)
-        m = ok.sum(axis=1)
-        srt = np.sort(nb, axis=1)             # NaN sorts last
-        idx = np.arange(rr.size)
-        lo = srt[idx, np.maximum(m - 1, 0) // 2]
-        hi = srt[idx, m // 2]
-        values = np.where(m > 0, 0.5 * (lo + hi), data[rr, cc])   # no neighbour: kept
+    corrected = mask.copy()
+    for y, x in zip(*np.nonzero(mask)):
+        good = sorted(float(data[q]) for q in _same_colour_neighbours(channels, y, x)
+                      if not mask[q])
+        if not good:
+            corrected[y, x] = False
+            continue
+        n = len(good)
+        median = 0.5 * (good[(n - 1) // 2] + good[n // 2])
         if np.issubdtype(out.dtype, np.integer):
-            values = np.floor(values + 0.5)
-        out[rr, cc] = values.astype(out.dtype)
-        mask[rr[m == 0], cc[m == 0]] = False
-    return (out, mask) if return_mask else out
+            median = math.floor(median + 0.5)
+        out[y, x] = median
+    return (out, corrected) if return_mask else out

@@ -62,3 +62,248 @@ def denoise_phasors_bilateral(i, q, var, sites, *, block=1, window=9, use=None,
         mean, mvar, n_eff = bilateral_pass(z, vg, mean, gv, useg, offsets, inv_h2)
     mean = grid.from_grid(mean)
     return mean.real, mean.imag, grid.from_grid(mvar), grid.from_grid(n_eff)
+
+
+# --------------------------------------------------------------------------- guided ISP
+# NumPy references of csrc/tof_guided.c, plain loops over offsets in float64. The kernels
+# compute the filter in float (the reference agrees to about 1e-5 relative) and the rest in
+# double (the same decisions, the same values to rounding).
+
+def guided_prepare(taps, gain, black, supp, const_var, prnu, white):
+    """Phasors (F, N), the mean over the frequencies of 2 var(A) (N,), full-scale taps (N,),
+    the offset (F, N)."""
+    t = np.asarray(taps, np.float64)
+    zr = t[:, 0] - t[:, 2]
+    zi = t[:, 3] - t[:, 1]
+    offset = 0.25 * ((t[:, 0] + t[:, 1]) + (t[:, 2] + t[:, 3]))
+    held = np.maximum(offset - black, 0.0)
+    var_a = gain * supp * held + const_var + (prnu * held) ** 2
+    v = 2.0 * var_a.mean(axis=0)
+    sat = (t.max(axis=(0, 1)) >= white)
+    return zr, zi, v, sat, offset
+
+
+def guided_colour(guide, rows, cols, block, scale):
+    """The guide at the measurements (3, R*C), each cell (block^2, 3, R*C) and the sums of
+    |Immerkaer's Laplacian| (3,)."""
+    g = np.asarray(guide, np.float64) * scale
+    cells = np.stack([np.moveaxis(g[np.add.outer(rows + dr, np.zeros_like(cols)),
+                                    np.add.outer(np.zeros_like(rows), cols + dc)], -1, 0)
+                      for dr in range(block) for dc in range(block)])
+    col = cells.mean(axis=0)
+    k = np.array([[1, -2, 1], [-2, 4, -2], [1, -2, 1]], np.float64)
+    R, C = rows.size, cols.size
+    lap = np.zeros(3)
+    for ch in range(3):
+        p = col[ch]
+        acc = np.zeros((R - 2, C - 2))
+        for a in range(3):
+            for b in range(3):
+                acc += k[a, b] * p[a:a + R - 2, b:b + C - 2]
+        lap[ch] = np.abs(acc).sum()
+    return col.reshape(3, -1), cells.reshape(block * block, 3, -1), lap
+
+
+def guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, reach, radius_px,
+                inv2h2, inv2hc2):
+    """One 1-D pass of the cross-bilateral mean: mean (F, N) x 2, variance (N,), n_eff (N,)."""
+    F = zr.shape[0]
+    shape = (R, C)
+    z = (np.asarray(zr, np.float64) + 1j * np.asarray(zi, np.float64)).reshape(F, R, C)
+    g = (np.asarray(gr, np.float64) + 1j * np.asarray(gi, np.float64)).reshape(F, R, C)
+    vv, gvv = (np.asarray(a, np.float64).reshape(shape) for a in (v, gv))
+    cc = np.asarray(col, np.float64).reshape(3, R, C)
+    ok = np.asarray(use, bool).reshape(shape)
+    if nin is not None:
+        nn = np.asarray(nin, np.float64).reshape(shape)
+        ok = ok & (nn > 0)
+    num = np.zeros((F, R, C), complex)
+    den, w2v, w2n = (np.zeros(shape) for _ in range(3))
+    n = C if axis == 1 else R
+    for a in range(-reach, reach + 1):
+        lo, hi = max(0, -a), min(n, n - a)
+        if hi <= lo:
+            continue
+        near = np.abs(px[lo + a:hi + a] - px[lo:hi]) <= radius_px
+        if axis == 1:
+            tgt, src = (slice(None), slice(lo, hi)), (slice(None), slice(lo + a, hi + a))
+            near = near[None, :]
+        else:
+            tgt, src = (slice(lo, hi), slice(None)), (slice(lo + a, hi + a), slice(None))
+            near = near[:, None]
+        d = g[(slice(None),) + src] - g[(slice(None),) + tgt]
+        xp = (np.abs(d) ** 2).sum(axis=0) / (gvv[src] + gvv[tgt]) - 2.0 * F
+        dc = cc[(slice(None),) + src] - cc[(slice(None),) + tgt]
+        xc = (dc * dc).sum(axis=0) - 3.0
+        x = np.maximum(xp, 0.0) * inv2h2 + np.maximum(xc, 0.0) * inv2hc2
+        w = np.where(x < 36.0, np.exp(-np.minimum(x, 36.0)), 0.0) * ok[src] * near
+        num[(slice(None),) + tgt] += w * z[(slice(None),) + src]
+        den[tgt] += w
+        w2v[tgt] += w * w * vv[src]
+        w2n[tgt] += w * w / (np.where(nn[src] > 0, nn[src], 1.0) if nin is not None else 1.0)
+    good = den > 0
+    inv = np.divide(1.0, den, out=np.zeros(shape), where=good)
+    mean = (num * inv).reshape(F, -1)
+    var = np.where(good, w2v * inv * inv, np.inf).reshape(-1)
+    if nin is None:
+        neff = np.divide(den * den, w2n, out=np.zeros(shape), where=good & (w2n > 0))
+    else:
+        neff = np.divide(1.0, w2n * inv * inv, out=np.zeros(shape), where=good & (w2n > 0))
+    return mean.real, mean.imag, var, neff.reshape(-1)
+
+
+def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_snr,
+                    min_amplitude, max_sigma, max_residual, min_reflectance, max_range):
+    """snr, sigma, reflectance and the bits 1, 2, 4, 16 of every measurement."""
+    amp = np.asarray(amp, np.float64)
+    var = np.asarray(var, np.float64)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ph = var[None] / (4.0 * amp * amp)
+        ph = np.where(ph < np.pi * np.pi / 3.0, ph, np.pi * np.pi / 3.0)
+        sigma = np.sqrt((np.asarray(sigma_scale)[:, None] * ph).sum(axis=0))
+        snr = (2.0 * amp / np.sqrt(var)[None]).min(axis=0)
+    d = np.asarray(depth)
+    dd = np.where(d > 0, d, 1.0)
+    refl = np.where(d > 0, (amp * np.asarray(refl_coef)[:, None]).mean(axis=0) * dd * dd, 0.0)
+    flags = np.where(np.asarray(sat, bool), 1, 0)
+    low = (snr < min_snr) | np.any(amp < min_amplitude, axis=0)
+    if max_sigma is not None:
+        low |= ~(sigma <= max_sigma)
+    flags |= np.where(low, 2, 0)
+    flags |= np.where(np.asarray(residual) > max_residual, 4, 0)
+    out = (d < 0) | (d > max_range - 5.0 * sigma) | (refl < min_reflectance)
+    flags |= np.where(out, 16, 0)
+    return snr, sigma, refl, flags.astype(np.uint8)
+
+
+def guided_flying(depth, sigma, usable, col, cells, R, C, step, k, contrast, side, unflag):
+    """Bits 8 (flying) and 32 (resolved) and the depths (resolved ones replaced), with plain
+    loops over the cells in the kernel's order."""
+    from rgbz_fast.tof import flying_pixels
+    from rgbz_fast.tof._filters import SiteGrid
+
+    d = np.asarray(depth, np.float64)
+    s = np.asarray(sigma, np.float64)
+    u = np.asarray(usable, bool)
+    rows, cols = np.divmod(np.arange(R * C), C)
+    cand = flying_pixels(d, s, SiteGrid((rows * 2, cols * 2), 1), step=step, usable=u, k=k)
+    cc = np.asarray(col, np.float64)
+    cl = cc[None] if cells is None else np.asarray(cells, np.float64)
+    flags = np.zeros(R * C, np.uint8)
+    out = d.copy()
+    for m in np.nonzero(cand)[0]:
+        r, c = divmod(int(m), C)
+        nb = [(r + a) * C + c + b for a in (-1, 0, 1) for b in (-1, 0, 1)
+              if (a or b) and 0 <= r + a < R and 0 <= c + b < C and u[(r + a) * C + c + b]]
+        vals = [d[n] for n in nb]
+        lo, hi = min(vals + [d[m]]), max(vals + [d[m]])
+        mid = 0.5 * (lo + hi)
+        sides = [[n for n in nb if not d[n] > mid], [n for n in nb if d[n] > mid]]
+        dside, cside = [], []
+        for grp in sides:
+            inv = 1.0 / len(grp) if grp else 0.0
+            acc = 0.0
+            for n in grp:
+                acc += d[n]
+            dside.append(acc * inv)
+            ch = [0.0, 0.0, 0.0]
+            for n in grp:
+                for i in range(3):
+                    ch[i] += float(np.float32(cc[i, n]))
+            cside.append([x * inv for x in ch])
+        tol = max(2.5 * s[m], 0.01)
+        near = [bool(sides[i]) and abs(d[m] - dside[i]) <= tol for i in (0, 1)]
+        axis = [cside[1][i] - cside[0][i] for i in range(3)]
+        con = sum(a * a for a in axis)
+        sig = bool(sides[0]) and bool(sides[1]) and con > contrast
+        all0 = all1 = True
+        for kk in range(cl.shape[0]):
+            t = sum((float(np.float32(cl[kk, i, m])) - cside[0][i]) * axis[i] for i in range(3))
+            t = t / con if con > 0 else 0.5
+            all0 &= t < side
+            all1 &= t > 1.0 - side
+        pure = sig and ((near[0] and all0) or (near[1] and all1))
+        if pure and unflag and cl.shape[0] > 1:
+            continue
+        if sig and (all0 or all1) and not near[0] and not near[1]:
+            flags[m] |= 32
+            out[m] = dside[0] if all0 else dside[1]
+            continue
+        flags[m] |= 8
+    return flags, out
+
+
+def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spacing, reach,
+                    inv2s2, inv2hc2, tol_k, tol_min):
+    """A depth and a confidence at every pixel (plain loops; csrc/tof_guided.c's rule)."""
+    g = np.asarray(guide, np.float64)
+    H, W = g.shape[:2]
+    d0 = np.asarray(depth, np.float64)
+    s0 = np.asarray(sigma, np.float64)
+    cm = np.asarray(col, np.float64)
+    prior0 = np.isfinite(d0).astype(np.float64)
+
+    def bracket(ctr, v):
+        i = int(np.searchsorted(ctr, v, side="right"))
+        if i == 0:
+            return 0, 0.0
+        if i == ctr.size:
+            return ctr.size - 1, 0.0
+        return i - 1, (v - ctr[i - 1]) / (ctr[i] - ctr[i - 1])
+
+    def mode(pc, ms, ws, d, s, prior):
+        w = []
+        for m, wsp in zip(ms, ws):
+            pr = prior[m] * wsp
+            if not pr > 0:
+                w.append(0.0)
+                continue
+            chi = ((pc - cm[:, m]) ** 2).sum() - 3.0
+            x = max(chi, 0.0) * inv2hc2
+            wc = np.exp(-x) if x < 36.0 else 0.0
+            w.append(pr * max(wc, 1e-20))
+        if not any(v > 0 for v in w):
+            return None
+        kb = int(np.argmax(w))
+        tol = max(tol_k * s[ms[kb]], tol_min)
+        used = [(wv, d[m]) for wv, m in zip(w, ms) if wv > 0 and abs(d[m] - d[ms[kb]]) <= tol]
+        den = sum(wv for wv, _ in used)
+        return sum(wv * dv for wv, dv in used) / den, den
+
+    # the nodes without a usable measurement, filled from those within reach
+    d, s, prior = d0.copy(), s0.copy(), prior0.copy()
+    for r in range(R):
+        for c in range(C):
+            m = r * C + c
+            if prior0[m] > 0:
+                continue
+            lv = 1
+            while lv <= reach:
+                ms, ws = [], []
+                for i in range(max(r - lv, 0), min(r + lv, R - 1) + 1):
+                    for j in range(max(c - lv, 0), min(c + lv, C - 1) + 1):
+                        ms.append(i * C + j)
+                        dist = ((rc[i] - rc[r]) ** 2 + (cc[j] - cc[c]) ** 2) / spacing ** 2
+                        ws.append(np.exp(-dist * inv2s2))
+                got = mode(cm[:, m], ms, ws, d0, s0, prior0)
+                if got is not None:
+                    d[m] = got[0]
+                    usable = [k for k in ms if prior0[k] > 0]
+                    s[m] = s0[min(usable, key=lambda k: abs(d0[k] - got[0]))]
+                    prior[m] = 0.25 * got[1] / sum(ws)
+                    break
+                lv *= 2
+    out = np.full((H, W), np.nan)
+    conf = np.zeros((H, W))
+    for y in range(H):
+        r, fy = bracket(rc, y)
+        for x in range(W):
+            c, fx = bracket(cc, x)
+            pc = g[y, x] * scale * np.asarray(cscale)
+            r1, c1 = min(r + 1, R - 1), min(c + 1, C - 1)
+            ms = [r * C + c, r * C + c1, r1 * C + c, r1 * C + c1]
+            ws = [(1 - fy) * (1 - fx), (1 - fy) * fx, fy * (1 - fx), fy * fx]
+            got = mode(pc, ms, ws, d, s, prior)
+            if got is not None:
+                out[y, x], conf[y, x] = got
+    return out, conf

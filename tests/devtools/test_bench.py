@@ -1,4 +1,4 @@
-"""The benchmark and trade-off commands run and produce well-formed output.
+"""The benchmark and trade-off commands and engines run and produce well-formed output.
 
 No timing is asserted (speed is measured in benchmarks,
 never in timed tests); only the structure and the invariants of the reports.
@@ -13,7 +13,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rgbz_fast._devtools import bench, tradeoff
+from rgbz_fast._cli import main
+from rgbz_fast._devtools import bench, timing, tradeoff
+from rgbz_fast._devtools.plots import tradeoff_plot
 
 
 def _finite_positive(x):
@@ -24,7 +26,7 @@ REFERENCE = Path(__file__).resolve().parents[1] / "_reference" / "reconstruction
 
 
 def _bench_json(capsys, tmp_path, *extra):
-    rc = bench.main(["--json", "--quiet", "--repeat", "1", "--shape", "48x64",
+    rc = main(["bench", "--json", "--quiet", "--repeat", "1", "--shape", "48x64",
                      "--kernels", "sg mask1,bilinear mask2 float32,demosaic,tof",
                      "--no-memory", "--out", str(tmp_path), "--numpy-reference",
                      str(REFERENCE), *extra])
@@ -110,9 +112,9 @@ def test_bench_small_frame_gives_ratios_but_no_verdict(capsys, tmp_path):
 
 
 def test_bench_colour_chain_section(capsys):
-    assert bench.main(["--quick", "--quiet", "--repeat", "1", "--shape", "48x64",
-                       "--kernels", "demosaic malvar2004 bayer float32", "--no-memory",
-                       "--no-reference", "--chain", "--json"]) == 0
+    assert main(["bench", "--quick", "--quiet", "--repeat", "1", "--shape", "48x64",
+                 "--kernels", "demosaic malvar2004 bayer float32", "--no-memory",
+                 "--no-reference", "--chain", "--json"]) == 0
     res = json.loads(capsys.readouterr().out)
     assert res["tof_sites"] is None                                    # --kernels left it out
     ch = res["colour_chain"]
@@ -141,8 +143,8 @@ def test_measure_memory_tiny_frame():
 def test_bench_table_and_opencv_optional(capsys, monkeypatch, tmp_path):
     monkeypatch.setitem(__import__("sys").modules, "cv2", None)     # import cv2 -> ImportError
     monkeypatch.chdir(tmp_path)      # no reference is looked for in the current directory
-    assert bench.main(["--quiet", "--repeat", "1", "--shape", "48x64",
-                       "--kernels", "bilinear mask1 float64", "--no-memory"]) == 0
+    assert main(["bench", "--quiet", "--repeat", "1", "--shape", "48x64",
+                 "--kernels", "bilinear mask1 float64", "--no-memory"]) == 0
     out = capsys.readouterr().out
     assert "reconstruct bilinear" in out and "n/a" in out
     assert "cv2 not installed" in out and "without --numpy-reference FILE" in out
@@ -152,22 +154,54 @@ def test_bench_numpy_reference_must_be_a_reference(capsys, tmp_path):
     (tmp_path / "other.py").write_text("x = 1\n")
     for path, msg in ((tmp_path / "missing.py", "is not a file"),
                       (tmp_path / "other.py", "defines no reference_reconstruct")):
-        assert bench.main(["--quick", "--quiet", "--no-memory", "--numpy-reference",
-                           str(path)]) == 2
+        assert main(["bench", "--quick", "--quiet", "--no-memory", "--numpy-reference",
+                     str(path)]) == 2
         err = capsys.readouterr().err
         assert "--numpy-reference" in err and msg in err and err.count("\n") == 1
 
 
 @pytest.mark.parametrize("args,msg", [
-    (["--shape", "48x63"], "--shape"), (["--shape", "64x48"], "--shape"),
-    (["--repeat", "0"], "--repeat"),
-    (["--kernels", "nothing-matches"], "--kernels"),
-    (["--workers", "0"], "--workers"),
+    (["--shape", "48x63"], "--shape: rows must be a multiple of 12"),
+    (["--shape", "64x48"], "--shape: rows must be a multiple of 12"),
+    (["--kernels", "nothing-matches"], "--kernels: no case matches"),
 ])
 def test_bench_bad_input(capsys, args, msg):
-    assert bench.main(["--quick", "--quiet", "--no-memory", "--no-reference"] + args) == 2
+    assert main(["bench", "--quick", "--quiet", "--no-memory", "--no-reference"] + args) == 2
     err = capsys.readouterr().err
-    assert msg in err and err.count("\n") == 1
+    assert err.startswith(f"rgbz-fast bench: error: {msg}") and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("command", ["bench", "tradeoff"])
+@pytest.mark.parametrize("args,msg", [
+    (["--repeat", "0"], "argument --repeat: expected a positive integer, got '0'"),
+    (["--workers", "0"], "argument --workers: expected a positive integer, got '0'"),
+    (["--shape", "48*64"], "argument --shape: expected ROWSxCOLS"),
+    (["--nope"], "unrecognized arguments: --nope"),
+])
+def test_measuring_commands_parse_as_every_command(capsys, command, args, msg):
+    """bench and tradeoff take their options through the one parser: the same usage errors,
+    under the command's name, as every other command."""
+    if command == "tradeoff" and args[0] == "--shape":
+        args, msg = ["--limit", "0"], "argument --limit: expected a positive integer, got '0'"
+    with pytest.raises(SystemExit) as e:
+        main([command, "--quick"] + args)
+    assert e.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[0].startswith(f"usage: rgbz-fast {command}")
+    assert err[-1].startswith(f"rgbz-fast {command}: error: {msg}")
+
+
+def test_timing_alternates_the_functions_after_the_warm_up():
+    calls = []
+    times = timing.interleaved({"a": lambda: calls.append("a"), "b": lambda: calls.append("b")},
+                               3, warmup=2)
+    assert calls == ["a", "a", "b", "b"] + ["a", "b"] * 3
+    assert set(times) == {"a", "b"} and all(t.shape == (3,) and (t >= 0).all()
+                                            for t in times.values())
+    st = timing.rate_stats(np.array([1.0, 2.0, 4.0]), 2e6)
+    assert st["mpix_s"] == 1.0 and st["mpix_s_best"] == 2.0 and st["n"] == 3
+    assert st["mpix_s_lo"] <= st["mpix_s"] <= st["mpix_s_hi"]
+    assert timing.rate_stats([2.0], 4e6, "msites")["msites_s"] == 2.0
 
 
 class _Image:
@@ -198,24 +232,26 @@ def test_tradeoff_one_tiny_image(capsys, tmp_path):
         assert r["frac_diff"] is None or 0 <= r["frac_diff"] <= 1
     for p in ("mask1", "mask2"):
         assert any(r["pareto"] for r in rows if r["pattern"] == p)
-    tradeoff.plot_tradeoff(res, tmp_path / "t.png")
-    assert (tmp_path / "t.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert tradeoff_plot(res)[:8] == b"\x89PNG\r\n\x1a\n"
     md = tradeoff.format_markdown(res, "t.png")
     assert md.startswith("# Speed/accuracy") and "| sg |" in md.replace("**", "")
 
 
 def test_tradeoff_cli(capsys, tmp_path):
-    assert tradeoff.main(["--quick", "--quiet", "--limit", "1", "--methods", "bi",
-                          "--patterns", "mask1", "--repeat", "1", "--out", str(tmp_path),
-                          "--json"]) == 0
+    assert main(["tradeoff", "--quick", "--quiet", "--limit", "1", "--methods", "bi",
+                 "--patterns", "mask1", "--repeat", "1", "--out", str(tmp_path), "--json"]) == 0
     res = json.loads(capsys.readouterr().out)
     assert [(r["method"], r["domain"]) for r in res["rows"]] == [
         ("bi", "intensity"), ("bi", "intensity"), ("bi", "colour_difference"),
         ("bi", "colour_difference")]
     assert {p.name for p in tmp_path.iterdir()} == {"tradeoff.md", "tradeoff.png",
                                                     "tradeoff.json"}
-    assert tradeoff.main(["--quick", "--quiet", "--methods", "nope"]) == 2
-    assert tradeoff.main(["--quick", "--quiet", "--dataset", str(tmp_path / "none")]) == 2
+    assert res["command"].startswith("rgbz-fast tradeoff --quick")
+    assert main(["tradeoff", "--quick", "--quiet", "--methods", "nope"]) == 2
+    assert main(["tradeoff", "--quick", "--quiet", "--dataset", str(tmp_path / "none")]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert err[-2].startswith("rgbz-fast tradeoff: error: --methods: unknown nope")
+    assert err[-1].startswith("rgbz-fast tradeoff: error: dataset: ")
 
 
 def test_pareto_front():

@@ -12,8 +12,9 @@ import rgbz_fast as rz
 from rgbz_fast import _kernels_count
 from rgbz_fast.reconstruction._plans import build_plans
 from rgbz_fast.reconstruction._reconstruct import _plans_for
-from rgbz_fast._devtools.opcount import (CATEGORIES, TABLE1, count_operations, main, opcount_report,
-                               opcount_table)
+from rgbz_fast._cli import main
+from rgbz_fast._devtools.opcount import (CATEGORIES, TABLE1, count_operations, opcount_report,
+                                         opcount_table)
 
 
 def n_candidates(pattern, method="bilinear"):
@@ -205,14 +206,15 @@ def test_report_and_table():
 
 
 def test_cli(capsys, tmp_path):
-    assert main(["--quick", "--json", "--methods", "bilinear,sg", "--image", "none",
+    assert main(["opcount", "--quick", "--json", "--methods", "bilinear,sg", "--image", "none",
                  "--out", str(tmp_path)]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert {r["method"] for r in doc["rows"]} == {"bilinear", "sg"}
     assert (tmp_path / "opcount.md").read_text().startswith("| method")
-    assert main(["--quick", "--methods", "nope", "--image", "none"]) == 2
+    assert json.loads((tmp_path / "opcount.json").read_text()) == doc
+    assert main(["opcount", "--quick", "--methods", "nope", "--image", "none"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "method" in err
+    assert err.count("\n") == 1 and err.startswith("rgbz-fast opcount: error: method")
     with pytest.raises(SystemExit) as exc:
-        main(["--shape"])
+        main(["opcount", "--shape"])
     assert exc.value.code == 2

@@ -35,19 +35,47 @@ def test_range_and_sunlight_sections_without_scene_data():
     assert "| mask2 | 0.5 | 1 |" in text
 
 
-def test_scenes_section_on_the_middlebury_scenes():
+def test_scenes_and_upsample_sections_on_the_middlebury_scenes():
+    """Each frame simulated with its colour, run without and with its guide: the unguided
+    totals keep their targets, the guided ones theirs on Mask2, and the guided upsampling
+    covers the known pixels and beats the nearest valid measurement at the depth edges."""
     data = shared_path("rgbd")
-    res = evaluate_depth(data, sections=("scenes",), patterns=("mask2",))
+    res = evaluate_depth(data, sections=("scenes", "upsample"), patterns=("mask2",))
     rows = res["scenes"]
-    assert [r["scene"] for r in rows][-1] == "all" and len(rows) == 7
-    total = rows[-1]
-    assert total["wrong_valid"] <= 0.001 * total["known"]
-    assert total["wrong"] - total["wrong_valid"] >= 0.95 * total["wrong"]
-    assert "| all | mask2 |" in depth_report(res)
-    # the paper's box denoise and no flying-pixel test: the issue's numbers
+    assert len(rows) == 6 * 2 + 2 and [r["scene"] for r in rows][-2:] == ["all", "all"]
+    totals = {r["guide"]: r for r in rows if r["scene"] == "all"}
+    plain, guided = totals["none"], totals["colour"]
+    assert plain["wrong_valid"] <= 0.001 * plain["known"]
+    assert plain["wrong"] - plain["wrong_valid"] >= 0.95 * plain["wrong"]
+    assert guided["valid"] >= 0.9 * guided["known"] and guided["valid"] > plain["valid"]
+    assert guided["wrong_valid"] <= 0.0005 * guided["known"]
+    assert guided["wrong"] - guided["wrong_valid"] >= 0.97 * guided["wrong"]
+    up = {r["method"]: r for r in res["upsample"] if r["scene"] == "all"}
+    assert up["guided"]["covered"] >= 0.95 * up["guided"]["known"]
+    assert up["guided"]["edge_err_both"] <= 0.9 * up["guided"]["edge_err_nearest_both"]
+    assert up["bilinear"]["covered"] < up["nearest"]["covered"] == up["nearest"]["known"]
+    text = depth_report(res)
+    assert "| all | mask2 | colour |" in text and "Full resolution" in text
+    # the paper's box denoise without the noise and flying-pixel tests lets mixtures at the
+    # depth edges through as valid
     old = evaluate_depth(data, sections=("scenes",), patterns=("mask2",),
                          isp=ToFISP(denoise="box", max_sigma=None, flying_step=None))
-    assert old["scenes"][-1]["wrong_valid"] > 0.02 * old["scenes"][-1]["known"]
+    box = [r for r in old["scenes"] if (r["scene"], r["guide"]) == ("all", "none")][0]
+    assert box["wrong_valid"] > 0.02 * box["known"]
+
+
+def test_rgbnir_section_on_one_pair(tmp_path):
+    """Real NIR reflectances in front of a plane: the guide keeps every valid depth right."""
+    pairs = shared_path("rgbnir")
+    for suffix in ("rgb", "nir"):
+        (tmp_path / f"0003_{suffix}.png").symlink_to(pairs / f"0003_{suffix}.png")
+    res = evaluate_depth(None, sections=("rgbnir",), patterns=("mask2",), rgbnir=tmp_path)
+    rows = {r["guide"]: r for r in res["rgbnir"]}
+    assert set(rows) == {"none", "colour"}
+    assert rows["colour"]["wrong_valid"] <= 0.0005 * rows["colour"]["known"]
+    assert rows["colour"]["valid"] >= rows["none"]["valid"]
+    assert rows["colour"]["covered"] >= 0.95 * rows["colour"]["pixels"]
+    assert "Real NIR reflectance" in depth_report(res)
 
 
 def test_bad_arguments():
@@ -57,6 +85,9 @@ def test_bad_arguments():
         evaluate_depth(None, sections=("noise",), isp="box")
     with pytest.raises(FileNotFoundError, match="data"):
         evaluate_depth("/nonexistent/rgbd", sections=("scenes",))
-    assert DEPTH_SECTIONS == ("scenes", "range", "noise", "sunlight", "calibration")
+    with pytest.raises(FileNotFoundError, match="rgbnir"):
+        evaluate_depth(None, sections=("rgbnir",), rgbnir="/nonexistent/rgbnir")
+    assert DEPTH_SECTIONS == ("scenes", "upsample", "rgbnir", "range", "noise", "sunlight",
+                              "calibration")
     assert evaluate_depth(None, sections="scenes") == {}          # no data: nothing to run
     assert np.isfinite(1.0)

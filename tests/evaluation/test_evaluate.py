@@ -46,6 +46,21 @@ def test_evaluate_rows_and_summary(tiny_dataset):
     assert "CFA PSNR" in res.plain_table()
 
 
+def test_config_takes_keyword_overrides(tiny_dataset):
+    """evaluate's parameter rule: ``config`` (an EvalConfig or a dict of its fields) with
+    keyword overrides of its fields, the same run as the merged configuration."""
+    ds = rio.folder_dataset(tiny_dataset)
+    merged = ev.EvalConfig(patterns=("mask1",), methods=("sg",), metrics=("cfa_psnr",),
+                           crop=2)
+    want = ev.evaluate(ds, merged, processes=1, progress=False)
+    got = ev.evaluate(ds, ev.EvalConfig(methods=("sg",), crop=2), patterns=("mask1",),
+                      metrics=("cfa_psnr",), processes=1, progress=False)
+    assert got.config == merged and got.rows == want.rows
+    got = ev.evaluate(ds, {"methods": ("sg",), "crop": 2}, patterns="mask1",
+                      metrics="cfa_psnr", processes=1, progress=False)
+    assert got.config == merged and got.rows == want.rows
+
+
 def test_cfa_psnr_only_runs_no_demosaic(tiny_dataset, monkeypatch):
     import rgbz_fast.isp as dm
 
@@ -210,7 +225,7 @@ def test_cache_follows_the_image_content_and_exact_name(tmp_path):
 
 
 def test_figures_show_every_error_bar_and_hide_nothing(tiny_dataset):
-    """The y axis spans every whisker (the old bars were cut off at the top), the legend sits
+    """The y axis spans every whisker (no bar is cut off at the top), the legend sits
     outside the plot, and the paired chart shows each image's difference and zero."""
     from rgbz_fast.evaluation import _reports
 

@@ -22,7 +22,8 @@ def _never(blob):
 
 # --------------------------------------------------------------------------- regular files only
 def test_fifo_device_and_folder_are_refused_before_reading(tmp_path):
-    """A FIFO named f.tif used to hang, /dev/zero read until MemoryError."""
+    """A FIFO (which would block a read) and a device such as /dev/zero (which would read
+    without end) are refused from their file type, before anything is read."""
     fifo = tmp_path / "f.tif"
     os.mkfifo(fifo)
     for reader in (rio.read_file, rio.read_image, rio.load_frame, rio.read_raw):
@@ -52,8 +53,8 @@ def test_read_file_is_bounded(tmp_path, monkeypatch):
     f.write_bytes(bytes(1000))
     assert len(rio.read_file(f, max_bytes=1000)) == 1000
     with pytest.raises(ValueError, match=r"^path: .*a\.bin is 1000 bytes, more than the limit of "
-                                         "999 bytes; raise it with max_bytes=, --max-bytes or "
-                                         "RGBZ_FAST_MAX_BYTES"):
+                                         "999 bytes; raise it with max_bytes= or "
+                                         "RGBZ_FAST_MAX_BYTES$"):
         rio.read_file(f, max_bytes=999)
     monkeypatch.setenv("RGBZ_FAST_MAX_BYTES", "999")
     with pytest.raises(ValueError, match="more than the limit of 999 bytes"):
@@ -74,7 +75,7 @@ def test_declared_size_is_checked_before_decoding(tmp_path, suffix):
     iio.imwrite(path, np.zeros((40, 50, 3), np.uint8))
     with pytest.raises(ValueError, match=r"declares a 40x50(x3)? image \(0\.0 megapixels\), more "
                                          "than the limit of 1999 pixels; raise it with "
-                                         "max_pixels=, --max-pixels or RGBZ_FAST_MAX_PIXELS"):
+                                         "max_pixels= or RGBZ_FAST_MAX_PIXELS$"):
         rio.read_image(path, decode=_never, max_pixels=1999)
     with pytest.raises(ValueError, match="more than the limit of 5999 bytes"):
         rio.read_image(path, decode=_never, max_bytes=5999)
@@ -114,7 +115,7 @@ def test_npz_zip_bomb_is_refused_from_the_zip_directory(tmp_path):
     with pytest.raises(ValueError, match=r"^path: .*bomb\.npz is not a readable rgbz-fast frame "
                                          r"\(its arrays declare \d+ bytes uncompressed, more "
                                          "than the limit of 1000000 bytes; raise it with "
-                                         "max_bytes="):
+                                         r"max_bytes= or RGBZ_FAST_MAX_BYTES\)$"):
         rio.load_frame(path, max_bytes=1_000_000)
     assert rio.load_frame(path).shape == (2048, 2048)
 
@@ -129,7 +130,8 @@ def test_npz_member_lying_about_its_shape_is_refused(tmp_path):
 
 
 def test_npz_512_tile_is_refused_at_once(tmp_path):
-    """A small NPZ whose pattern is a 512 x 512 tile cost 15 s and 660 MB; now a clear error."""
+    """A small NPZ whose pattern is a 512 x 512 tile is refused at once, before the work (and
+    the memory) such a tile would cost."""
     t = np.tile(np.array([[1, 0], [2, 1]]), (256, 256))
     t[::3, ::5] = 3
     tile = "/".join("".join("RGBZ"[c] for c in row) for row in t)
@@ -176,6 +178,51 @@ def test_grey_images_are_refused_unless_asked_for(tmp_path):
         rgb = load(grey=True)
         assert rgb.shape == (8, 8, 3) and np.all(rgb[..., 0] == rgb[..., 2])
     assert all(s.grey for s in rio.folder_dataset(tmp_path, grey=True))
+
+
+# --------------------------------------------------------------------------- errors
+def test_errors_carry_the_parameter_and_the_settings_that_fix_it(tmp_path):
+    """A reader's error names its parameter (``param``) and spells the settings of its advice
+    from parts, so that the command line gives its flags without rewriting the text; it
+    survives pickling (evaluate's worker processes return it)."""
+    import pickle
+
+    f = tmp_path / "a.bin"
+    f.write_bytes(bytes(100))
+    with pytest.raises(rio.ParameterError) as e:
+        rio.read_file(f, max_bytes=99)
+    assert e.value.param == "path" and e.value.settings == ("max_bytes",)
+    assert str(e.value).endswith("raise it with max_bytes= or RGBZ_FAST_MAX_BYTES")
+    assert e.value.render(lambda s: f"--{s.name}").endswith("with --max_bytes or "
+                                                            "RGBZ_FAST_MAX_BYTES")
+    with pytest.raises(rio.ParameterError) as e:
+        rio.read_raw(f, shape=None, phase="RGGB", black_level=0, white_level=1)
+    assert e.value.param == "shape" and str(e.value).endswith("needs shape=(rows, cols)")
+    back = pickle.loads(pickle.dumps(e.value))
+    assert type(back) is rio.ParameterError and back.parts == e.value.parts
+    assert str(back) == str(e.value) and back.param == "shape"
+    assert isinstance(back, ValueError)
+    with pytest.raises(rio.ParameterError) as e:
+        rio.read_raw(f, shape=(5, 10))
+    assert e.value.param == "phase" and e.value.settings == ("phase",)
+    nested = rio.ParameterError(None, "its arrays declare 9 bytes", "; raise it with ",
+                                rio.Setting("max_bytes")).within("path", "x.npz is bad (", ")")
+    assert str(nested) == "path: x.npz is bad (its arrays declare 9 bytes; raise it with " \
+                          "max_bytes=)" and nested.settings == ("max_bytes",)
+
+
+def test_readers_agree_on_the_suffixes_of_images_and_raw_files(tmp_path):
+    """One list per kind of file: a scene, a dataset and read_raw recognise the same names."""
+    from rgbz_fast.simulation import _loaders
+
+    assert rio.IMAGE_SUFFIXES >= set(rio.IMAGE_EXTENSIONS)
+    assert rio.RAW_SUFFIXES == set(rio.LIBRAW_EXTENSIONS + rio.HEADERLESS_EXTENSIONS)
+    assert set(rio.RAW_EXTENSIONS) == rio.RAW_SUFFIXES | set(rio.IMAGE_EXTENSIONS)
+    assert _loaders._IMAGE_SUFFIXES is rio.IMAGE_SUFFIXES
+    for name in ("a.pgm", "b.webp", "c.nrw", "d.txt"):
+        (tmp_path / name).write_bytes(b"")
+    sources = rio.folder_dataset(tmp_path)
+    assert [(s.name, s.is_raw) for s in sources] == [("a", False), ("b", False), ("c", True)]
 
 
 # --------------------------------------------------------------------------- atomic writes

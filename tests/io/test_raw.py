@@ -1,4 +1,5 @@
-"""rgbz_fast.rawio: the three real files of ../shared/data/raw and synthetic round trips."""
+"""The raw readers (rgbz_fast.io.read_raw, to_rgbz, clipped_mask): the three real files of
+../shared/data/raw and synthetic round trips."""
 
 from __future__ import annotations
 

@@ -233,9 +233,9 @@ def test_known_defects_and_disabled_stage():
 @pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2", "rows", "ZR/BG", "ZRGG/BGBZ",
                                      "RGZ/GBG/ZRB"])
 @pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
-def test_defect_correction_equals_the_full_frame_reference(pattern, dtype):
-    """The phase-plane implementation (contiguous sub-images, no full-frame
-    temporaries) against the first, full-frame one (tests/_reference/defects.py):
+def test_defect_correction_equals_the_pixel_by_pixel_reference(pattern, dtype):
+    """The per-position implementation (contiguous sub-images, no full-frame
+    temporaries) against the pixel-by-pixel reference of tests/_reference/defects.py:
     the same defect map and the same corrected values, bit for bit, on noisy frames
     with planted hot, cold and clustered defects, known defects, other thresholds,
     and frames smaller than or barely larger than a period."""
@@ -334,6 +334,57 @@ def test_reconstruction_options_reach_reconstruct(sim_frame):
                                                     sg_mode="combined"))
 
 
+def test_stages_take_params_and_keyword_overrides(sim_frame):
+    """The parameter rule of every stage: ``params=`` plus keyword overrides of its fields,
+    the same result as the object with those fields; unknown names are a TypeError."""
+    cfa = rz.reconstruct(sim_frame, "sg")
+    np.testing.assert_array_equal(
+        white_balance(cfa, "GRBG", clip=False, method="none")[0],
+        white_balance(cfa, "GRBG", WhiteBalance(method="none", clip=False))[0])
+    np.testing.assert_array_equal(
+        white_balance(cfa, "GRBG", WhiteBalance(method="none"), clip=False)[0],
+        white_balance(cfa, "GRBG", {"method": "none", "clip": False})[0])
+    m = ((1.2, -0.1, -0.1), (-0.2, 1.3, -0.1), (0.0, -0.3, 1.3))
+    rgb = np.random.default_rng(0).random((4, 5, 3))
+    np.testing.assert_array_equal(correct_colour(rgb, matrix=m),
+                                  correct_colour(rgb, ColourCorrection(matrix=m)))
+    np.testing.assert_array_equal(detect_defects(sim_frame.data, "mask1", threshold=0.02),
+                                  detect_defects(sim_frame.data, "mask1",
+                                                 DefectCorrection(threshold=0.02)))
+    np.testing.assert_array_equal(fill_missing(sim_frame.data, "mask1", method="bi"),
+                                  rz.reconstruct(sim_frame, "bi"))
+    with pytest.raises(TypeError, match=r"^white_balance\(\) got an unexpected keyword "
+                                        r"argument 'gain' \(fields of WhiteBalance: "):
+        white_balance(cfa, "GRBG", gain=(1, 1, 1))
+    with pytest.raises(ValueError, match="^DefectCorrection.threshold"):
+        correct_defects(sim_frame.data, "mask1", threshold=2)
+
+
+def test_colour_isp_takes_stage_dicts_and_overrides():
+    """A stage field takes a dict of the stage's fields (over the stage's defaults);
+    build/replace override fields of a chain, a dict changing some fields of its stage."""
+    assert ColourISP(demosaicing={"method": "menon2007"}) == ColourISP(
+        demosaicing=Demosaic(method="menon2007"))
+    base = ColourISP(white_balance=WhiteBalance(method="none"), precision="float64")
+    changed = base.replace(white_balance={"clip": False}, output_bits=16)
+    assert changed.white_balance == WhiteBalance(method="none", clip=False)
+    assert (changed.precision, changed.output_bits) == ("float64", 16)
+    assert ColourISP.build(base, {"white_balance": WhiteBalance()}).white_balance == \
+        WhiteBalance()
+    assert ColourISP.build(None, {"precision": "float64"}) == ColourISP(precision="float64")
+    assert ColourISP.build(base) is base
+    with pytest.raises(TypeError, match=r"^ColourISP.replace\(\) got an unexpected keyword "
+                                        r"argument 'demosaic'"):
+        base.replace(demosaic="menon2007")
+    with pytest.raises(TypeError, match=r"^ColourISP.white_balance got an unexpected keyword "
+                                        r"argument 'gain'"):
+        base.replace(white_balance={"gain": 2})
+    with pytest.raises(ValueError, match="^Demosaic.method"):
+        ColourISP(demosaicing={"method": "ahd"})
+    with pytest.raises(TypeError, match="^ColourISP.defects: expected DefectCorrection"):
+        ColourISP(defects=None)
+
+
 def test_the_colour_isp_does_not_reexport_the_tof_isp():
     """One home per name: the ToF ISP is rgbz_fast.tof (and rgbz_fast.tof_depth)."""
     from rgbz_fast.tof import ToFISP, tof_depth
@@ -377,7 +428,7 @@ def test_bad_run_input(sim_frame):
         chain.run(rz.mosaic(_smooth_scene(), "mask1"), reference=True)
     with pytest.raises(ValueError, match="frame"):
         chain.run(np.zeros((8, 8, 3), np.uint16), pattern="bayer")
-    with pytest.raises(ValueError, match="data"):
+    with pytest.raises(ValueError, match="^frame: values span"):
         chain.run(np.full((8, 8), 5000, np.uint16), pattern="bayer")
     with pytest.raises(ValueError, match="gains"):
         chain.run(sim_frame, gains=(1, -1, 1))

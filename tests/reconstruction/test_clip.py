@@ -42,6 +42,14 @@ RAW_ARGS = dict(shape=(1080, 1920), phase="RGGB", black_level=0, bit_depth_in=10
                 clip_level=1020)
 
 
+@pytest.fixture
+def plans_only():
+    """Every site on the plans of _plans.py: the clipped call (which never takes the Mask1
+    fast path) and the unclipped one run the same code, so they compare bit for bit."""
+    with R.plans_only():
+        yield
+
+
 def seeded(*key):
     return np.random.default_rng(zlib.crc32(repr(key).encode()))
 
@@ -134,11 +142,10 @@ def test_integer_frames_round_half_up(pname, method):
 # -- the rule: which differences count --------------------------------------------------------
 
 @pytest.mark.parametrize("pname, method", CASES, ids=IDS)
-def test_isolated_clipped_pixels_change_nothing(pname, method, monkeypatch):
+def test_isolated_clipped_pixels_change_nothing(pname, method, plans_only):
     """No difference joins two clipped pixels: every clipped-unclipped difference is used
     as it is (a lower bound of the true one), so the result is the unclipped one, exactly."""
     p = rz.get_pattern(pname)
-    monkeypatch.setattr(R, "_MASK1_FAST", False)
     rng = seeded("isolated", pname, method)
     shape, level = (62, 66), 1500
     z = p.z_mask(shape)
@@ -194,8 +201,9 @@ def test_beta_skips_only_the_terms_between_two_clipped_candidates():
     expect = np.sum(c / S) / np.sum(1 / S)
     out = recon(d, p, "bi", precision="float64", clip_level=level)
     np.testing.assert_allclose(out[y, x], expect, rtol=1e-12)
-    # without clip handling |1510 - 1900| counts; with the old rule (no clipped term at all)
-    # the two clipped candidates took the beta of the least trusted unclipped one
+    # without clip handling |1510 - 1900| counts; leaving out every term with a clipped
+    # pixel (not only clipped-clipped ones) would give the two clipped candidates the beta
+    # of the least trusted unclipped one, which is far from the expected value
     full = 1 + np.abs(c[:, None] - c[None, :]).sum(axis=1)
     assert abs(recon(d, p, "bi", precision="float64")[y, x] - np.sum(c / full) / np.sum(1 / full)) < 1e-9
     old = np.array([1 + 3 * 120.0] * 4)
@@ -261,11 +269,10 @@ def test_none_and_a_level_above_the_data_are_bit_identical(pname, method):
 
 @pytest.mark.parametrize("method", WEIGHTED)
 @pytest.mark.parametrize("pname", ["mask1", "mask2"])
-def test_sites_without_clipped_taps_equal_the_interpreter(pname, method, monkeypatch):
+def test_sites_without_clipped_taps_equal_the_interpreter(pname, method, plans_only):
     """A site none of whose taps is clipped takes the unclipped code: bit-identical."""
     p = rz.get_pattern(pname)
     d = clipped_frame(p, (40, 44), seeded("far", pname, method), 1500, dtype=np.uint16)
-    monkeypatch.setattr(R, "_MASK1_FAST", False)
     base = recon(d, p, method, precision="float32")
     out = recon(d, p, method, precision="float32", clip_level=1500)
     # (4 px from the border a tap moved back by a period may reach further than 2 px)
@@ -439,10 +446,10 @@ def test_kernel_rejects_clip_with_the_mask1_fast_path():
     from rgbz_fast import _kernels
 
     p = rz.mask1()
-    phase_map, plans, n = R._plans_for(p, "sg", "auto", "intensity")
+    plan_map, plans, n = R._plans_for(p, "sg", "auto", "intensity")
     d = np.zeros((8, 8))
     with pytest.raises(RuntimeError, match="status 1"):
-        _kernels.reconstruct(d, np.empty_like(d), 1, 2, 2, phase_map, plans, n, 1e-3, 0.5, 0.5,
+        _kernels.reconstruct(d, np.empty_like(d), 1, 2, 2, plan_map, plans, n, 1e-3, 0.5, 0.5,
                              2047.0, 0, 1, mask1_fast=1, clip_level=100.0)
 
 
@@ -462,8 +469,9 @@ def test_eval_config_clip_level():
                      (True, TypeError)):
         with pytest.raises(exc, match="clip_level"):
             cfg(bad)
-    # None (the default) and, for RGB sources, "auto" leave the cache keys as they were;
-    # raw sources key on "auto" and on a level
+    # None (the default) and, for RGB sources, "auto" stay out of the cache key (the key of
+    # a run that clips nothing does not depend on the clip option); raw sources key on
+    # "auto" and on a level
     off = EvalConfig()
     assert c.key("mask1", "sg") == off.key("mask1", "sg")
     assert off.key("mask1", "sg", raw=True) == off.key("mask1", "sg")

@@ -180,7 +180,7 @@ def test_evaluation_blurs_before_the_mosaic():
     assert not np.array_equal(ref, ref_o)
     np.testing.assert_array_equal(frame_o.data[~frame_o.z_mask], ref_o[~frame_o.z_mask])
     assert "optics f/2.8" in EvalConfig(optics=Optics()).label()
-    # the cache key of a configuration without optics is what it was before optics existed
+    # optics enter the cache key (a configuration without them leaves the field out)
     assert EvalConfig().key("mask1", "sg") != EvalConfig(optics=Optics()).key("mask1", "sg")
     flat = np.full((16, 16, 3), 128, np.uint8)
     np.testing.assert_array_equal(image_frames(flat, "mask1", cfg)[1],

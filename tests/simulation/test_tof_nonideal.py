@@ -1,4 +1,4 @@
-"""Non-idealities of the i-ToF pixel (issue 15): harmonics (cyclic error), tap contrasts,
+"""Non-idealities of the i-ToF pixel: harmonics (cyclic error), tap contrasts,
 per-frequency contrast, delays, multipath, ambient suppression and burst illumination.
 Every one is off by default, and then the taps are the ideal model's."""
 
@@ -132,8 +132,8 @@ def test_ambient_suppression_and_burst_keep_the_taps_out_of_saturation():
 
 
 def test_sunlight_configuration_gives_mask2_depth_to_2_m():
-    """Issue 15's target: Mask2 valid depth at 15 W/m^2 ambient up to 2 m for reflectance
-    0.5, with burst illumination (duty 0.1) and ambient suppression (0.9); the default
+    """Sunlight: Mask2 gives valid depth at 15 W/m^2 ambient up to 2 m for reflectance 0.5
+    with burst illumination (duty 0.1) and ambient suppression (0.9); the default
     continuous-wave sensor saturates."""
     sun = ToFSensor(ambient_irradiance=15.0, duty_cycle=0.1, ambient_suppression=0.9)
     for d in (0.5, 1.0, 2.0):

@@ -1,4 +1,4 @@
-"""Phase calibration from a flat-wall sweep (issue 15): known offsets and harmonics are
+"""Phase calibration from a flat-wall sweep: known offsets and harmonics are
 recovered, the residual cyclic error on a sweep the fit did not see is below 1 mm, the file
 round-trips, and mismatched or malformed input is refused."""
 

@@ -1,4 +1,4 @@
-"""The edge-aware ToF ISP stages (issue 15): the bilateral phasor mean (C kernel against its
+"""The edge-aware ToF ISP stages: the bilateral phasor mean (C kernel against its
 NumPy reference), flying pixels at depth steps, out-of-range depths, and the noise model."""
 
 from __future__ import annotations
@@ -198,7 +198,7 @@ def test_out_of_range_flag_and_its_limit():
                                                      ("mask2", (256, 256), (1.0, 2.5))])
 def test_predicted_sigma_matches_the_spread(pattern, shape, distances):
     """The ISP's sigma (the noise model through the denoise's weights) against the spread of
-    the valid depths of a flat wall: at most 1.2x (issue 15's target), with the fixed
+    the valid depths of a flat wall: within 1.2x, with the fixed
     pattern noise (DSNU, PRNU) on and off."""
     for d in distances:
         for sensor in (ToFSensor(), ToFSensor(dsnu=0.0, prnu=0.0)):

@@ -240,9 +240,28 @@ def test_denoised_phasors_unwrap_like_numpy():
     np.testing.assert_allclose(res.depth, depth, rtol=0, atol=1e-9)
 
 
-# --------------------------------------------------------------------------- B2, B3
+def test_phase_of_phasors_is_the_fused_passs_phase_bit_for_bit():
+    """The calibrated chain takes atan2 and amplitude alone (it unwraps after the cyclic-error
+    correction): the same bits as the fused phasor pass, and non-finite phasors refused."""
+    from rgbz_fast import _kernels
+
+    rng = np.random.default_rng(0)
+    i, q = rng.normal(size=(2, 3, 1000)) * 100
+    i[:, :5], q[:, :3], i[0, 7] = 0.0, 0.0, 1e-310
+    f = np.array([80e6, 100e6, 120e6])
+    d, r, k = np.empty(1000), np.empty(1000), np.empty(1000, np.int32)
+    ph1, am1, ph2, am2 = (np.empty_like(i) for _ in range(4))
+    assert _kernels.tof_depth_iq(i, q, f, f ** 2, 7.4, d, r, k, ph1, am1, workers=2)
+    assert _kernels.tof_phase_iq(i, q, ph2, am2, 2)
+    np.testing.assert_array_equal(ph1, ph2)
+    np.testing.assert_array_equal(am1, am2)
+    i[1, 5] = np.nan
+    assert not _kernels.tof_phase_iq(i, q, ph2, am2, 1)
+
+
+# --------------------------------------------------------------------------- domain of the unwrapping
 def test_max_range_is_bounded_by_the_unambiguous_range_and_the_wrap_count():
-    """B2: max_range beyond the unambiguous range (the search would repeat) or beyond
+    """max_range beyond the unambiguous range (the search would repeat) or beyond
     MAX_WRAPS wraps of the lowest frequency is refused, before any kernel runs."""
     f = [80e6, 100e6, 120e6]
     assert unambiguous_range(f) == pytest.approx(C / (2 * 20e6))
@@ -269,8 +288,8 @@ def test_max_range_is_bounded_by_the_unambiguous_range_and_the_wrap_count():
 
 
 def test_nearly_coprime_sensor_needs_an_explicit_max_range():
-    """B2: the default of tof_depth raised (instead of hanging for days) and names the
-    frequencies; an explicit max_range within the cap unwraps."""
+    """The default range of a nearly coprime set (1.5e8 m) is refused before the search
+    starts (it would take days), naming the frequencies; an explicit max_range within the cap unwraps."""
     sensor = ToFSensor(frequencies=(80e6 + 1, 100e6, 120e6), quantise=False,
                        optical_power_w=0.05)
     tof = _wall(1.5, "mask1", (12, 12), sensor=sensor, noise=False)
@@ -284,7 +303,7 @@ def test_nearly_coprime_sensor_needs_an_explicit_max_range():
 
 
 def test_phases_outside_zero_two_pi_are_refused():
-    """B3: checked inside the kernel (no extra pass); the message names the phase."""
+    """Checked inside the kernel (no extra pass); the message names the phase."""
     f = [80e6, 100e6, 120e6]
     good = np.random.default_rng(0).uniform(0, 2 * np.pi, (3, 1000))
     for value in (-1e-300, -0.1, 2 * np.pi, 7.0, 1e300, np.nan, np.inf, -np.inf):
@@ -446,6 +465,28 @@ def test_result_maps_and_the_parameter_object():
     assert "valid" in repr(res)
 
 
+def test_one_parameter_rule_params_plus_overrides():
+    """tof_depth takes a ToFISP (or a dict of its fields) and keyword overrides of its fields,
+    checked once by ToFISP; unknown names and bad params are TypeErrors naming them."""
+    tof = _wall(np.tile(np.linspace(0.8, 2.5, 32), (32, 1)), "mask2", (32, 32), seed=5)
+    want = ToFISP(denoise="box", min_snr=3.0, flying_step=None).run(tof)
+    for got in (tof_depth(tof, params=ToFISP(denoise="box"), min_snr=3, flying_step=None),
+                tof_depth(tof, params={"denoise": "box", "min_snr": 3}, flying_step=None),
+                tof_depth(tof, params=ToFISP(denoise="box", min_snr=9, flying_step=None),
+                          min_snr=3.0)):
+        np.testing.assert_array_equal(got.depth, want.depth)
+        np.testing.assert_array_equal(got.flags, want.flags)
+    assert ToFISP().replace(min_snr=3).min_snr == 3.0
+    with pytest.raises(TypeError, match=r"tof_depth\(\) got an unexpected keyword argument "
+                                        r"'snr' \(fields of ToFISP: denoise, window"):
+        tof_depth(tof, snr=3)
+    with pytest.raises(TypeError, match="params: expected a ToFISP, a dict of its fields or "
+                                        "None, got str"):
+        tof_depth(tof, params="box")
+    with pytest.raises(ValueError, match="min_snr: expected a finite number >= 0, got -1"):
+        tof_depth(tof, params=ToFISP(), min_snr=-1)
+
+
 def test_thread_count_does_not_change_the_result():
     tof = _wall(np.tile(np.linspace(0.5, 4, 64), (64, 1)), "mask1", (64, 64), seed=3)
     a, b = tof_depth(tof, workers=1), tof_depth(tof, workers=2)
@@ -501,7 +542,7 @@ RGBD = ("art", "aloe", "baby1", "bowling1", "flowerpots", "rocks1")
 
 
 def test_rgbd_scenes_meet_the_depth_targets():
-    """The six Middlebury scenes at default settings (issue 15): over all six, at most 0.1 % of
+    """The six Middlebury scenes at default settings: over all six, at most 0.1 % of
     the known measurements are valid and more than 5 cm off, and at least 95 % of those more
     than 5 cm off are flagged; no valid measurement unwraps wrongly. The full table is
     ``rgbz-fast evaluate-depth --sections scenes`` (docs/reports/isp.md)."""

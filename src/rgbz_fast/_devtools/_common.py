@@ -1,10 +1,8 @@
-"""Helpers shared by ``rgbz-fast bench``, ``opcount`` and ``tradeoff``: machine facts, the
-benchmark frame, command-line plumbing. Not a public API.
-"""
+"""What the measuring engines share: the facts of the machine, the benchmark frame, JSON of
+results, a progress bar. Not a public API."""
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import platform
@@ -13,12 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["machine_info", "tile_to", "CliError", "common_parser", "run_main", "write_json",
-           "progress"]
-
-
-class CliError(Exception):
-    """Bad command-line input: printed as one line, exit status 2."""
+__all__ = ["machine_info", "tile_to", "json_text", "progress"]
 
 
 def machine_info():
@@ -64,52 +57,9 @@ def tile_to(img, shape):
     return np.ascontiguousarray(full[:rows, :cols])
 
 
-class _Parser(argparse.ArgumentParser):
-    """argparse that reports a usage error as one line (and exit status 2)."""
-
-    def error(self, message):
-        self.exit(2, f"{self.prog}: error: {message} (see --help)\n")
-
-
-def common_parser(prog, description):
-    """An ArgumentParser with the options every benchmark command shares."""
-    p = _Parser(prog=prog, description=description,
-                formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    p.add_argument("--quick", action="store_true", help="small frames and few repeats (seconds)")
-    p.add_argument("--workers", type=int, default=None,
-                   help="threads of the 'all threads' runs (default: all cores)")
-    p.add_argument("--out", metavar="DIR", default=None,
-                   help="also write the report (and JSON, plots) into DIR (default: print "
-                        "only)")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
-    return p
-
-
-def check_out_dir(out):
-    if out is None:
-        return None
-    p = Path(out)
-    if p.exists() and not p.is_dir():
-        raise CliError(f"--out: {out!r} exists and is not a folder")
-    p.mkdir(parents=True, exist_ok=True)
-    return p
-
-
-def check_workers_arg(workers):
-    if workers is None:
-        return None
-    if workers < 1:
-        raise CliError(f"--workers: expected a positive integer, got {workers}")
-    return workers
-
-
-def write_json(obj, path=None):
-    text = json.dumps(obj, indent=2, sort_keys=False, default=_json_default)
-    if path is None:
-        return text
-    Path(path).write_text(text + "\n", encoding="utf-8")
-    return text
+def json_text(obj):
+    """``obj`` as indented JSON (NumPy numbers as numbers, non-finite floats as null)."""
+    return json.dumps(obj, indent=2, sort_keys=False, default=_json_default)
 
 
 def _json_default(o):
@@ -133,19 +83,3 @@ def progress(iterable, total=None, desc=None, quiet=False):
     except ImportError:  # pragma: no cover
         return iterable
     return tqdm(iterable, total=total, desc=desc, file=sys.stderr, leave=False)
-
-
-def run_main(parser, body, argv):
-    """Parse ``argv``, run ``body(args)``; bad input -> one line on stderr and exit status 2."""
-    args = parser.parse_args(argv)
-    try:
-        return int(body(args) or 0)
-    except CliError as exc:
-        print(f"{parser.prog}: error: {exc}", file=sys.stderr)
-        return 2
-    except (ValueError, TypeError) as exc:
-        print(f"{parser.prog}: error: {exc}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt:  # pragma: no cover
-        print(f"{parser.prog}: interrupted", file=sys.stderr)
-        return 130

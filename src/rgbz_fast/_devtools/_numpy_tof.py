@@ -24,7 +24,8 @@ import math
 
 import numpy as np
 
-SPEED_OF_LIGHT = 299_792_458.0
+from ..simulation import SPEED_OF_LIGHT
+
 TWO_PI = 2 * np.pi
 
 __all__ = ["unwrap_plan", "numpy_demodulate", "numpy_unwrap", "numpy_tof_depth"]

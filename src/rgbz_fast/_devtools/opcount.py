@@ -25,27 +25,23 @@ the first number is the **red/blue** case: BI's additions are exactly
 (8/11), with ``n`` the number of candidates. :data:`TABLE1` stores the
 pairs under the colour they belong to.
 
-Run ``rgbz-fast opcount`` (or ``rgbz-fast opcount``) for the table;
+``rgbz-fast opcount`` prints the table (:func:`opcount_report`);
 docs/guide/performance.md explains every difference of more than 25 %.
 """
 
 from __future__ import annotations
 
-import sys
-
 import numpy as np
 
 from .. import _kernels_count
-from .._frame import RawFrame, mosaic
+from .._frame import frame_inputs, mosaic
 from .._patterns import get_pattern
-from .._validate import parse_shape
-from ..reconstruction import PRECISIONS, ReconstructParams, reconstruct
+from ..reconstruction import ReconstructParams, reconstruct
 from ..reconstruction import _reconstruct as _recon
 from ..reconstruction._plans import build_plans
-from ._common import CliError, check_out_dir, common_parser, run_main, write_json
 
 __all__ = ["CATEGORIES", "TABLE1", "TABLE1_CATEGORIES", "count_operations", "opcount_table",
-           "opcount_report", "count_tof_operations", "main"]
+           "opcount_report", "opcount_legend", "count_tof_operations", "DEFAULT_METHODS"]
 
 #: counter categories, in the order of the C enum rgbz_op (csrc/rgbz.h, RGBZ_OP_*)
 CATEGORIES = tuple(sorted(_kernels_count.OP_CATEGORIES, key=_kernels_count.OP_CATEGORIES.get))
@@ -71,7 +67,7 @@ TABLE1 = {
     ("sg", "mask2", "green"): dict(add=142, mul=61, div=39, exp=12),
 }
 
-_DEFAULT_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
+DEFAULT_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
 #: the options of count_operations: the bit depth and the fields of ReconstructParams that
 #: change the arithmetic
 _KW = dict(bit_depth=11, **{k: v for k, v in ReconstructParams().as_dict().items()
@@ -92,14 +88,8 @@ def _group_of(target):
 def _frame_data(pattern, shape, seed, frame, bit_depth):
     """(uint16/float data with Z sites zeroed, pattern, bit depth) of the counting run."""
     if frame is not None:
-        if isinstance(frame, RawFrame):
-            if pattern is not None and get_pattern(pattern) != frame.pattern:
-                raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                                 f"frame's pattern {frame.pattern.name!r}")
-            return np.ascontiguousarray(frame.data), frame.pattern, frame.bit_depth
-        pattern = get_pattern(pattern)
-        bd = 11 if bit_depth is None else int(bit_depth)
-        return np.ascontiguousarray(RawFrame(np.asarray(frame), pattern, bd).data), pattern, bd
+        data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
+        return np.ascontiguousarray(data), pattern, bd
     pattern = get_pattern(pattern)
     try:
         rows, cols = (int(s) for s in shape)
@@ -190,8 +180,7 @@ def _learned_site_counts(data, pattern, precision, bit_depth):
 
 def _uses_mask1_fast(pattern, method, kw):
     """True where reconstruct() runs the Mask1 fast path (csrc/recon_mask1.h)."""
-    return bool(_recon._MASK1_FAST and kw["domain"] == "intensity" and method != "edi_rows"
-                and _recon.has_mask1_geometry(pattern))
+    return _recon.runs_mask1_fast_path(pattern, method, kw["domain"], kw.get("clip_level"))
 
 
 def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):
@@ -302,7 +291,8 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
                         f"{', '.join(sorted(bad))}; expected some of {', '.join(sorted(_KW))}")
     kw = dict(_KW)
     kw.update(reconstruct_kwargs)
-    data, pattern, bd = _frame_data(pattern, shape, seed, frame, kw["bit_depth"])
+    data, pattern, bd = _frame_data(pattern, shape, seed, frame,
+                                    reconstruct_kwargs.get("bit_depth"))
     kw["bit_depth"] = bd
     # the public function validates every argument (and runs the normal kernel once)
     reconstruct(data, method, pattern=pattern, bit_depth=kw["bit_depth"], workers=1,
@@ -345,7 +335,7 @@ def _image_frame(image, pattern, size=128):
     return mosaic(np.ascontiguousarray(image[r0:r0 + r, c0:c0 + c]), pattern)
 
 
-def opcount_table(methods=_DEFAULT_METHODS, patterns=("mask1", "mask2"), *,
+def opcount_table(methods=DEFAULT_METHODS, patterns=("mask1", "mask2"), *,
                   precision="float64", shape=(64, 64), seed=0, image=None, image_name=None,
                   **reconstruct_kwargs):
     """Rows of the comparison with Table 1, one per (method, pattern, target colour).
@@ -475,83 +465,16 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "then one dot product over the taps; the same at every site).")
 
 
-def main(argv=None):
-    """``rgbz-fast opcount``: operations per missing pixel beside Table 1."""
-    p = common_parser("rgbz-fast opcount", __doc__.split("\n\n")[0] + "\n\n"
-                      "Counts come from the counting build of the C kernels (-DRGBZ_COUNT_OPS).")
-    p.add_argument("--methods", default=",".join(_DEFAULT_METHODS),
-                   help="comma-separated methods (default: %(default)s)")
-    p.add_argument("--patterns", default="mask1,mask2",
-                   help="comma-separated patterns (default: %(default)s)")
-    p.add_argument("--precision", default="float64", choices=tuple(PRECISIONS),
-                   help="arithmetic of the counted kernels (default: %(default)s)")
-    p.add_argument("--shape", default="64x64", help="random frame size ROWSxCOLS (default "
-                   "%(default)s)")
-    p.add_argument("--seed", type=int, default=0,
-                   help="seed of the random frame (default: %(default)s)")
-    p.add_argument("--image", default="astronaut",
-                   help="also count on a 128x128 crop of this image: a scikit-image sample "
-                        "name, an image file, or 'none' (default: %(default)s)")
-    p.add_argument("--text", action="store_true", help="plain-text table instead of Markdown")
-
-    def body(args):
-        shape = parse_shape(args.shape)
-        if args.quick:
-            shape = (32, 32)
-        out = check_out_dir(args.out)
-        image, image_name = _load_image_arg(args.image)
-        rows = opcount_table(tuple(m.strip() for m in args.methods.split(",") if m.strip()),
-                             tuple(s.strip() for s in args.patterns.split(",") if s.strip()),
-                             precision=args.precision, shape=shape, seed=args.seed,
-                             image=image, image_name=image_name)
-        legend = _LEGEND.format(shape="x".join(map(str, shape)), seed=args.seed,
-                                precision=args.precision)
-        if image is not None:
-            legend += f" Last column: means on a 128x128 crop of {image_name}."
-        tof = count_tof_operations()
-        if tof is None:
-            legend += " ToF demodulation: not counted by this build."
-        else:
-            legend += (" ToF demodulation, per measurement and frequency: "
-                       + ", ".join(f"{v:g} {k}" for k, v in tof.items() if v) + ".")
-        md = opcount_report(rows, "markdown")
-        if out is not None:
-            (out / "opcount.md").write_text(md + "\n\n" + legend + "\n", encoding="utf-8")
-            write_json({"rows": rows, "tof_demodulate": tof, "legend": legend},
-                       out / "opcount.json")
-        if args.json:
-            print(write_json({"rows": rows, "tof_demodulate": tof, "legend": legend}))
-        else:
-            print(opcount_report(rows, "text" if args.text else "markdown"))
-            print()
-            print(legend)
-        return 0
-
-    return run_main(p, body, argv)
-
-
-def _load_image_arg(spec):
-    if spec is None or str(spec).lower() == "none":
-        return None, None
-    from pathlib import Path
-
-    if Path(spec).is_file():
-        import imageio.v3 as iio
-
-        img = np.asarray(iio.imread(spec))
-        if img.ndim != 3 or img.shape[2] < 3 or img.dtype != np.uint8:
-            raise CliError(f"--image: expected an 8-bit RGB image, got {img.dtype} {img.shape}")
-        return np.ascontiguousarray(img[..., :3]), Path(spec).name
-    import skimage.data
-
-    fn = getattr(skimage.data, str(spec), None)
-    if fn is None:
-        raise CliError(f"--image: {spec!r} is neither a file nor a scikit-image sample image")
-    img = np.asarray(fn())
-    if img.ndim != 3:
-        raise CliError(f"--image: {spec!r} is not an RGB image")
-    return np.ascontiguousarray(img[..., :3]), f"skimage.data.{spec}"
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+def opcount_legend(shape, seed, precision, image_name=None, tof=None):
+    """The paragraph under the table: how to read the cells, the image of the last column
+    (``image_name``) and the ToF demodulation's counts (``tof``, from
+    :func:`count_tof_operations`; None: not counted by this build)."""
+    legend = _LEGEND.format(shape="x".join(map(str, shape)), seed=seed, precision=precision)
+    if image_name is not None:
+        legend += f" Last column: means on a 128x128 crop of {image_name}."
+    if tof is None:
+        legend += " ToF demodulation: not counted by this build."
+    else:
+        legend += (" ToF demodulation, per measurement and frequency: "
+                   + ", ".join(f"{v:g} {k}" for k, v in tof.items() if v) + ".")
+    return legend

@@ -174,11 +174,13 @@ class EvalConfig:
         d = asdict(self)
         for k in ("patterns", "methods", "metrics"):
             d.pop(k)
+        # options at their defaults stay out of the key, so that a key names only what a run
+        # changes and adding an option never invalidates the cached results of runs without it
         if d["linearise"]:
-            d.pop("linearise")       # the keys of the linear protocol as before the option
+            d.pop("linearise")
         params = d.pop("params")
         if d["optics"] is None:
-            d.pop("optics")           # the keys of runs without optics stay what they were
+            d.pop("optics")
         if params["clip_level"] is None or (params["clip_level"] == "auto" and not raw):
             params.pop("clip_level")
         if params["filters"] is None or method != "learned":

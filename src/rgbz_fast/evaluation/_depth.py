@@ -4,16 +4,25 @@
 taps know their truth, ``ToFTaps.depth_true`` and ``valid``; the ISP never
 reads them) and runs the ToF ISP at its defaults. Sections:
 
-* ``scenes`` -- the six Middlebury RGB-D scenes (``../shared/data/rgbd``),
-  Mask1 and Mask2: the share of known measurements that are valid, wrong
-  (``|error| > tolerance``, 5 cm), wrong *and* valid, and the share of the
-  wrong ones that are flagged ("caught");
+* ``scenes`` -- the Middlebury RGB-D scenes of ``data`` (the six of
+  ``../shared/data/rgbd``), Mask1 and Mask2, each frame ``simulate(scene,
+  pattern, seed=seed)`` run without and with its guide ``ColourISP().run(frame)``:
+  the share of known measurements that are valid, wrong (``|error| >
+  tolerance``, 5 cm), wrong *and* valid, and the share of the wrong ones that
+  are flagged ("caught");
+* ``upsample`` -- the same frames at full resolution: nearest-neighbour and
+  bilinear upsampling of the guided ISP's valid measurements against
+  :func:`rgbz_fast.tof.upsample_depth` (coverage of the known pixels, share off,
+  RMSE, the edge-weighted MAE);
+* ``rgbnir`` -- the EPFL RGB-NIR pairs (``rgbnir`` beside ``data``): real NIR
+  reflectances, a planar depth, without and with the guide;
 * ``range`` -- depths beyond the unambiguous range: flat walls from 7.5 to
   15 m at NIR reflectance 0.2, 0.5 and 1 with the default source and a 10x
   stronger one, walls just below the range, and the Middlebury scenes moved 4x
   farther: the share of beyond-range measurements flagged;
 * ``noise`` -- flat walls: the spread of the valid depths against the ISP's
-  predicted ``sigma`` (the analytic noise through the denoise's weights);
+  predicted ``sigma`` (the analytic noise through the denoise's weights),
+  without and with the guide;
 * ``sunlight`` -- Mask2 walls at 15 W/m^2 in-band ambient light, reflectance
   0.5: the valid share by distance without and with ambient suppression or
   burst illumination;
@@ -32,18 +41,21 @@ from pathlib import Path
 
 import numpy as np
 
-from ..simulation import Scene, ToFSensor, load_rgbd, simulate_tof
-from ..tof import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
-                   FLAG_SATURATED, ToFISP, calibrate)
+from ..isp import ColourISP
+from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
+from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
+from ._depth_guided import (rgbnir_rows, scene_folders, scene_row, scene_runs, total_rows,
+                            upsample_rows)
+from ._depth_report import depth_report
 
 __all__ = ["evaluate_depth", "depth_report", "DEPTH_SECTIONS", "RGBD_SCENES"]
 
-DEPTH_SECTIONS = ("scenes", "range", "noise", "sunlight", "calibration")
-#: the six Middlebury scenes of ../shared/data/rgbd
-RGBD_SCENES = ("art", "aloe", "baby1", "bowling1", "flowerpots", "rocks1")
-_FLAGS = {"saturated": FLAG_SATURATED, "low_signal": FLAG_LOW_SIGNAL,
-          "inconsistent": FLAG_INCONSISTENT, "flying": FLAG_FLYING,
-          "out_of_range": FLAG_OUT_OF_RANGE}
+DEPTH_SECTIONS = ("scenes", "upsample", "rgbnir", "range", "noise", "sunlight", "calibration")
+#: the six Middlebury scenes of ../shared/data/rgbd (the sections run every scene folder
+#: of ``data``)
+RGBD_SCENES = ("aloe", "art", "baby1", "bowling1", "flowerpots", "rocks1")
+_SCENE_KEYS = ("known", "valid", "wrong", "wrong_valid", "saturated", "low_signal",
+               "inconsistent", "flying", "out_of_range", "resolved")
 
 
 def _wall(depth, pattern, shape, sensor=None, *, seed=0, ir=0.5, noise=True):
@@ -54,40 +66,37 @@ def _wall(depth, pattern, shape, sensor=None, *, seed=0, ir=0.5, noise=True):
         return simulate_tof(scene, pattern, sensor, seed=seed, noise=noise)
 
 
-def _scene_rows(data, patterns, isp, seed, tolerance):
-    rows = []
-    for name in RGBD_SCENES:
-        scene = load_rgbd(Path(data) / name)
-        for pattern in patterns:
-            tof = simulate_tof(scene, pattern, seed=seed)
-            res = isp.run(tof)
-            known = tof.valid
-            err = res.depth - tof.depth_true
-            wrong = (np.abs(err) > tolerance) & known
-            ok = res.valid & known
-            row = {"scene": name, "pattern": pattern, "known": int(known.sum()),
-                   "valid": int(ok.sum()), "wrong": int(wrong.sum()),
-                   "wrong_valid": int((wrong & res.valid).sum()),
-                   "depth_min": float(tof.depth_true[known].min()),
-                   "depth_max": float(tof.depth_true[known].max()),
-                   "rmse_valid": float(np.sqrt(np.mean(err[ok] ** 2))) if ok.any() else np.nan,
-                   "median_valid": float(np.median(np.abs(err[ok]))) if ok.any() else np.nan}
-            for key, bit in _FLAGS.items():
-                row[key] = int(((res.flags & bit) > 0)[known].sum())
-            rows.append(row)
+def _scene_tables(data, patterns, isp, seed, tolerance, limits, want_upsample):
+    """The scenes rows (without and with the guide, and their totals) and the upsample rows."""
+    rows, up = [], []
+    for run in scene_runs(data, patterns, isp, seed, limits):
+        rows += [scene_row(run, run["plain"], tolerance), scene_row(run, run["guided"],
+                                                                     tolerance)]
+        if want_upsample:
+            up += upsample_rows(run, tolerance)
+    totals = total_rows(rows, _SCENE_KEYS, ("pattern", "guide"))
+    for t in totals:
+        sel = [r for r in rows if (r["pattern"], r["guide"]) == (t["pattern"], t["guide"])]
+        t.update(depth_min=min(r["depth_min"] for r in sel),
+                 depth_max=max(r["depth_max"] for r in sel), rmse_valid=np.nan,
+                 median_valid=np.nan)
+    keys = ("known", "covered", "wrong")
+    both = ("edge_weight_both", "edge_err_both", "edge_err_nearest_both")
+    up_totals = []
     for pattern in patterns:
-        sel = [r for r in rows if r["pattern"] == pattern]
-        total = {"scene": "all", "pattern": pattern}
-        for key in ("known", "valid", "wrong", "wrong_valid") + tuple(_FLAGS):
-            total[key] = sum(r[key] for r in sel)
-        total.update(depth_min=min(r["depth_min"] for r in sel),
-                     depth_max=max(r["depth_max"] for r in sel), rmse_valid=np.nan,
-                     median_valid=np.nan)
-        rows.append(total)
-    return rows
+        for method in ("nearest", "bilinear", "guided"):
+            sel = [r for r in up if (r["pattern"], r["method"]) == (pattern, method)]
+            if sel:
+                t = {"scene": "all", "pattern": pattern, "method": method,
+                     **{k: sum(r[k] for r in sel) for k in keys},
+                     "rmse": np.nan, "edge_mae": np.nan}
+                if method == "guided":
+                    t.update({k: sum(r[k] for r in sel) for k in both})
+                up_totals.append(t)
+    return rows + totals, up + up_totals
 
 
-def _range_rows(data, isp, seed):
+def _range_rows(data, isp, seed, limits):
     rows = []
     u = ToFSensor().unambiguous_range
     for power in (0.5, 5.0):
@@ -117,8 +126,8 @@ def _range_rows(data, isp, seed):
                              "flagged": int((~res.valid).sum())})
     # the Middlebury scenes 4x farther (4.6-9.4 m): part of every scene is beyond the range
     if data is not None:
-        for name in RGBD_SCENES:
-            scene = load_rgbd(Path(data) / name)
+        for name in scene_folders(data):
+            scene = load_rgbd(Path(data) / name, **limits)
             far = Scene(scene.image, depth=scene.depth * 4.0, depth_valid=scene.depth_valid,
                         name=name)
             for pattern in ("mask1", "mask2"):
@@ -149,6 +158,11 @@ def _range_rows(data, isp, seed):
     return rows
 
 
+#: frames per wall of the guided noise rows: its window holds 5x the measurements of the
+#: unguided one, so a wall gives 5x fewer independent depths to measure their spread
+GUIDED_NOISE_FRAMES = 4
+
+
 def _noise_rows(isp, seed):
     rows = []
     for pattern, shape, distances in (("mask1", (256, 256), (0.5, 1.0, 1.5, 2.0)),
@@ -156,19 +170,30 @@ def _noise_rows(isp, seed):
         for k, d in enumerate(distances):
             for fpn in (True, False):
                 sensor = ToFSensor() if fpn else ToFSensor(dsnu=0.0, prnu=0.0)
-                tof = _wall(d, pattern, shape, sensor, seed=seed + k)
-                res = isp.run(tof)
-                r, c = tof.sites
-                margin = 6 * tof.block * 2
-                inner = ((r >= margin) & (r < shape[0] - margin) & (c >= margin)
-                         & (c < shape[1] - margin) & res.valid)
-                err = res.depth[inner] - d
-                rows.append({"pattern": pattern, "distance": d, "fpn": fpn,
-                             "n": int(inner.sum()),
-                             "std": float(err.std()) if inner.sum() > 1 else np.nan,
-                             "sigma": float(np.sqrt(np.mean(res.sigma[inner] ** 2)))
-                             if inner.any() else np.nan,
-                             "valid": float(res.valid.mean())})
+                scene = Scene(np.full(shape + (3,), 0.5), depth=np.full(shape, d),
+                              ir_reflectance=np.full(shape, 0.5))
+                for guide in ("none", "colour"):
+                    errs, sig, valid = [], [], []
+                    for j in range(1 if guide == "none" else GUIDED_NOISE_FRAMES):
+                        frame = simulate(scene, pattern, tof_sensor=sensor,
+                                         seed=seed + k + 1000 * j)
+                        tof = frame.tof
+                        res = isp.run(tof, guide=ColourISP().run(frame)
+                                      if guide == "colour" else None)
+                        r, c = tof.sites
+                        margin = 6 * tof.block * 2
+                        inner = ((r >= margin) & (r < shape[0] - margin) & (c >= margin)
+                                 & (c < shape[1] - margin) & res.valid)
+                        errs.append(res.depth[inner] - d)
+                        sig.append(res.sigma[inner])
+                        valid.append(res.valid)
+                    err, sig = np.concatenate(errs), np.concatenate(sig)
+                    rows.append({"pattern": pattern, "distance": d, "fpn": fpn, "guide": guide,
+                                 "frames": len(errs), "n": int(err.size),
+                                 "std": float(err.std()) if err.size > 1 else np.nan,
+                                 "sigma": float(np.sqrt(np.mean(sig ** 2)))
+                                 if sig.size else np.nan,
+                                 "valid": float(np.concatenate(valid).mean())})
     return rows
 
 
@@ -241,15 +266,17 @@ def _calibration_rows(isp, seed):
 
 
 def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "mask2"), isp=None,
-                   seed=1, tolerance=0.05):
+                   seed=1, tolerance=0.05, rgbnir=None, max_pixels=None,
+                   max_bytes=None):
     """Run the depth measurements of docs/reports/isp.md; returns ``{section: [row dict, ...]}``.
 
     Parameters
     ----------
     data : str or Path, optional
-        The folder of the six Middlebury scenes (``../shared/data/rgbd``);
-        None skips the sections that need it (``scenes`` and the scaled scenes
-        of ``range``).
+        The folder of the Middlebury scenes (``../shared/data/rgbd``: every
+        sub-folder with rgb.png, disp1.png and dmin.txt); None skips the
+        sections that need it (``scenes``, ``upsample``, ``rgbnir`` and the
+        scaled scenes of ``range``).
     sections : sequence of str
         Some of :data:`DEPTH_SECTIONS`.
     patterns : sequence of str
@@ -258,8 +285,14 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
         The ISP (default ``ToFISP()``: the library's defaults).
     seed : int
         Noise seed of the simulations.
+    rgbnir : str or Path, optional
+        The folder of the RGB-NIR pairs of the ``rgbnir`` section (default:
+        ``rgbnir`` beside ``data``); the section is skipped where it does not
+        exist.
     tolerance : float
         An error above it (m) is "wrong" (0.05).
+    max_pixels, max_bytes : int, optional
+        The read limits of the scenes' images (:func:`rgbz_fast.io.read_limits`).
 
     Returns
     -------
@@ -276,13 +309,27 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
     if data is not None and not Path(data).is_dir():
         raise FileNotFoundError(f"data: {data} is not a folder")
+    if rgbnir is not None and not Path(rgbnir).is_dir():
+        raise FileNotFoundError(f"rgbnir: {rgbnir} is not a folder")
     out = {}
+    limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)
+    if data is not None and ("scenes" in sections or "upsample" in sections):
+        rows, up = _scene_tables(data, patterns, isp, seed, tolerance, limits,
+                                 "upsample" in sections)
+        if "scenes" in sections:
+            out["scenes"] = rows
+        if "upsample" in sections:
+            out["upsample"] = up
     for s in sections:
-        if s == "scenes":
-            if data is not None:
-                out[s] = _scene_rows(data, patterns, isp, seed, tolerance)
+        if s in ("scenes", "upsample"):
+            continue
+        if s == "rgbnir":
+            folder = Path(rgbnir) if rgbnir is not None else (
+                Path(data).parent / "rgbnir" if data is not None else None)
+            if folder is not None and folder.is_dir():
+                out[s] = rgbnir_rows(folder, patterns, isp, seed, tolerance, limits)
         elif s == "range":
-            out[s] = _range_rows(data, isp, seed)
+            out[s] = _range_rows(data, isp, seed, limits)
         elif s == "noise":
             out[s] = _noise_rows(isp, seed)
         elif s == "sunlight":
@@ -290,95 +337,3 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
         else:
             out[s] = _calibration_rows(isp, seed)
     return out
-
-
-def _pct(a, b):
-    return f"{100.0 * a / b:.3f}" if b else "-"
-
-
-def depth_report(result, tolerance=0.05):
-    """Markdown tables of an :func:`evaluate_depth` result."""
-    lines = []
-    cm = f"{100 * tolerance:g} cm"
-    if "scenes" in result:
-        lines += [f"### Middlebury scenes (wrong: |error| > {cm})", "",
-                  "| scene | pattern | depth m | valid % | wrong % | wrong & valid % | "
-                  "caught % | flying % | RMSE valid cm |",
-                  "|---|---|---|---|---|---|---|---|---|"]
-        for r in result["scenes"]:
-            rmse = "" if np.isnan(r["rmse_valid"]) else f"{100 * r['rmse_valid']:.2f}"
-            caught = _pct(r["wrong"] - r["wrong_valid"], r["wrong"])
-            lines.append(f"| {r['scene']} | {r['pattern']} | {r['depth_min']:.2f}-"
-                         f"{r['depth_max']:.2f} | {_pct(r['valid'], r['known'])} | "
-                         f"{_pct(r['wrong'], r['known'])} | {_pct(r['wrong_valid'], r['known'])} | "
-                         f"{caught} | {_pct(r['flying'], r['known'])} | {rmse} |")
-        lines.append("")
-    if "range" in result:
-        walls = [r for r in result["range"] if r["case"] == "wall"]
-        lines += ["### Beyond the unambiguous range: flat walls (flagged % of the measurements)",
-                  "", "| pattern | source W | reflectance | " +
-                  " | ".join(f"{d:g} m" for d in sorted({r['distance'] for r in walls})) + " |",
-                  "|---|---|---|" + "---|" * len({r['distance'] for r in walls})]
-        keys = sorted({(r["pattern"], r["power_w"], r["reflectance"]) for r in walls})
-        for p, w, rho in keys:
-            cells = [r for r in walls if (r["pattern"], r["power_w"], r["reflectance"]) ==
-                     (p, w, rho)]
-            cells.sort(key=lambda r: r["distance"])
-            lines.append(f"| {p} | {w:g} | {rho:g} | " +
-                         " | ".join(_pct(r["flagged"], r["n"]) for r in cells) + " |")
-        lines.append("")
-        below = [r for r in result["range"] if r["case"] == "below"]
-        if below:
-            lines += ["| pattern | source W | wall m (reflectance 1, in range) | read < U/2 % | "
-                      "of those flagged % | flagged % |", "|---|---|---|---|---|---|"]
-            for r in below:
-                lines.append(f"| {r['pattern']} | {r['power_w']:g} | {r['distance']:g} | "
-                             f"{_pct(r['read_near'], r['n'])} | "
-                             f"{_pct(r['read_near_flagged'], r['read_near'])} | "
-                             f"{_pct(r['flagged'], r['n'])} |")
-            lines.append("")
-        scaled = [r for r in result["range"] if r["case"] == "scene x4"]
-        if scaled:
-            lines += ["| scene x4 | pattern | source W | Z pixels beyond the range | flagged % | "
-                      "partly beyond | flagged % | in range: valid % |",
-                      "|---|---|---|---|---|---|---|---|"]
-            for r in scaled:
-                lines.append(f"| {r['scene']} | {r['pattern']} | {r['power_w']:g} | {r['n']} | "
-                             f"{_pct(r['flagged'], r['n'])} | {r['partly']} | "
-                             f"{_pct(r['partly_flagged'], r['partly'])} | "
-                             f"{_pct(r['inside_valid'], r['inside'])} |")
-            lines.append("")
-    if "noise" in result:
-        lines += ["### Depth noise on flat walls (reflectance 0.5)", "",
-                  "| pattern | distance m | DSNU, PRNU | valid % | std of valid depths mm | "
-                  "predicted sigma mm | ratio |", "|---|---|---|---|---|---|---|"]
-        for r in result["noise"]:
-            ratio = r["std"] / r["sigma"] if r["n"] > 1 else np.nan
-            lines.append(f"| {r['pattern']} | {r['distance']:g} | {'on' if r['fpn'] else 'off'} "
-                         f"| {100 * r['valid']:.1f} | {1e3 * r['std']:.2f} | "
-                         f"{1e3 * r['sigma']:.2f} | {ratio:.3f} |")
-        lines.append("")
-    if "sunlight" in result:
-        rows = result["sunlight"]
-        ds = sorted({r["distance"] for r in rows})
-        lines += ["### Sunlight: Mask2, 15 W/m^2 in band, reflectance 0.5 (valid %)", "",
-                  "| sensor | " + " | ".join(f"{d:g} m" for d in ds) + " |",
-                  "|---|" + "---|" * len(ds)]
-        for label in dict.fromkeys(r["config"] for r in rows):
-            cells = sorted((r for r in rows if r["config"] == label), key=lambda r: r["distance"])
-            lines.append(f"| {label} | " + " | ".join(f"{100 * r['valid']:.1f}" for r in cells)
-                         + " |")
-        lines.append("")
-    if "calibration" in result:
-        lines += ["### Calibration (Mask2, harmonics 3 and 5, tap mismatch, delays)", "",
-                  "| ISP | positions | cyclic error RMS mm | peak mm | mean offset mm | "
-                  "mean error RMS mm | RMS of all errors mm |",
-                  "|---|---|---|---|---|---|---|"]
-        for r in result["calibration"]:
-            if r["isp"] == "fit":
-                continue
-            lines.append(f"| {r['isp']} | {r['positions']} | {1e3 * r['cyclic_rms']:.3f} | "
-                         f"{1e3 * r['cyclic_peak']:.3f} | {1e3 * r['offset']:.3f} | "
-                         f"{1e3 * r['bias_rms']:.3f} | {1e3 * r['error_rms']:.3f} |")
-        lines.append("")
-    return "\n".join(lines)

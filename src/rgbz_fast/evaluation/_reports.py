@@ -214,13 +214,13 @@ def crop_figure(source, config, box=None, size=64):
     tiles = []
     for pname in config.patterns:
         frame, ref_cfa = image_frames(img, get_pattern(pname), config)
-        phase, bd = frame.pattern.bayer_phase, frame.bit_depth
-        ref, st = chain.render(ref_cfa, phase, bit_depth=bd, return_stages=True)
+        bayer, bd = frame.pattern.bayer_phase, frame.bit_depth
+        ref, st = chain.render(ref_cfa, bayer, bit_depth=bd, return_stages=True)
         row = [("reference", ref)]
         for m in config.methods:
             out = reconstruct(frame, m, params=config.params)
             row.append((METHOD_LABELS.get(m, m),
-                        chain.render(out, phase, bit_depth=bd, gains=st["gains"])))
+                        chain.render(out, bayer, bit_depth=bd, gains=st["gains"])))
         tiles.append((pname, row))
     full = tiles[0][1][0][1]
     size = int(min(size, *full.shape[:2]))

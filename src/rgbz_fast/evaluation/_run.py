@@ -15,8 +15,9 @@ from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import check_flag, check_processes, check_workers
-from ..io import ImageSource, atomic_write, folder_dataset, sample_dataset, to_rgbz
+from .._validate import check_flag, check_processes, check_workers, merge_params
+from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, sample_dataset,
+                  to_rgbz)
 from ..reconstruction import reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ._config import EvalConfig
@@ -25,15 +26,16 @@ from ._results import Results
 __all__ = ["evaluate", "evaluate_image", "image_frames"]
 
 
-def _pattern_for(pname, phase):
-    """The pattern named ``pname`` on the Bayer phase of a raw file (presets follow the phase)."""
+def _pattern_for(pname, bayer):
+    """The pattern named ``pname`` on the Bayer arrangement ``bayer`` of a raw file (presets
+    follow the file's arrangement)."""
     base = str(pname).lower().split("_")[0]
     if base in ("mask1", "mask2", "rows", "bayer"):
-        return getattr(_patterns, base)(phase)
+        return getattr(_patterns, base)(bayer)
     pattern = get_pattern(pname)
-    if pattern.bayer_phase != phase:
+    if pattern.bayer_phase != bayer:
         raise ValueError(f"patterns: {pname!r} is built on {pattern.bayer_phase}, the raw file "
-                         f"on {phase}")
+                         f"on {bayer}")
     return pattern
 
 
@@ -116,13 +118,13 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     for pname in dict.fromkeys(p for p, _ in todo):
         frame, ref_cfa = _frames(img, get_pattern(pname), config, memo)
         pattern = frame.pattern
-        phase, bd = pattern.bayer_phase, frame.bit_depth
+        bayer, bd = pattern.bayer_phase, frame.bit_depth
         z = frame.z_mask
         if config.image_metrics:
             # per pattern: a raw frame is cropped to a whole number of periods; the
             # grey-world gains of the reference are reused on the RGB-Z path (Fig. 19).
-            # Patterns on one Bayer phase share their reference CFA, rendered once.
-            ref_srgb, gains = _reference_render(chain, ref_cfa, phase, bd, workers, renders)
+            # Patterns on one Bayer arrangement share their reference CFA, rendered once.
+            ref_srgb, gains = _reference_render(chain, ref_cfa, bayer, bd, workers, renders)
         for p, m in todo:
             if p != pname:
                 continue
@@ -131,7 +133,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
             if "cfa_psnr" in config.metrics:
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
-                test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
+                test_srgb = chain.render(out, bayer, bit_depth=bd, gains=gains, workers=workers)
                 values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
             if cdir:
                 _cache_write(cdir, key(p, m), values)
@@ -139,15 +141,15 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     return rows
 
 
-def _reference_render(chain, cfa, phase, bit_depth, workers, renders):
+def _reference_render(chain, cfa, bayer, bit_depth, workers, renders):
     """(sRGB image, white-balance gains) of a reference CFA, from ``renders`` (a list of
-    earlier (cfa, phase, bit_depth, image, gains)) when the same CFA was rendered before."""
+    earlier (cfa, bayer, bit_depth, image, gains)) when the same CFA was rendered before."""
     for done in renders:
-        if done[1:3] == (phase, bit_depth) and np.array_equal(done[0], cfa):
+        if done[1:3] == (bayer, bit_depth) and np.array_equal(done[0], cfa):
             return done[3], done[4]
-    image, stages = chain.render(cfa, phase, bit_depth=bit_depth, workers=workers,
+    image, stages = chain.render(cfa, bayer, bit_depth=bit_depth, workers=workers,
                                  return_stages=True)
-    renders.append((cfa, phase, bit_depth, image, stages["gains"]))
+    renders.append((cfa, bayer, bit_depth, image, stages["gains"]))
     return image, stages["gains"]
 
 
@@ -194,11 +196,17 @@ def _pool_task(args):
     try:
         return evaluate_image(source, config, cache_dir, workers=workers)
     except (ValueError, TypeError, OSError) as exc:       # a bad image, not a bug: skipped
-        return _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
+        skipped = _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
+        skipped.error = exc if isinstance(exc, ParameterError) else None    # it pickles
+        return skipped
 
 
 class _Skipped(str):
-    """The reason an image was skipped (``skip_bad=True``), in place of its rows."""
+    """The reason an image was skipped (``skip_bad=True``), in place of its rows; ``error``:
+    the :class:`~rgbz_fast.io.ParameterError` it came from, if it did, whose settings a caller
+    may name in its own words."""
+
+    error = None
 
 
 def _worker_init():
@@ -250,7 +258,7 @@ def dataset_sources(dataset, limit=None):
 
 
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
-             scheduler=None, progress=True, skip_bad=False, **config_kwargs):
+             scheduler=None, progress=True, skip_bad=False, **overrides):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
 
     For every image the *reference path* (plain Bayer CFA, no reconstruction)
@@ -267,8 +275,14 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         A list (any iterable) from :func:`~rgbz_fast.io.sample_dataset` /
         :func:`~rgbz_fast.io.folder_dataset`, or a folder. Default: the sample
         dataset (runs offline).
-    config : EvalConfig, optional
-        What to run; keyword arguments build one when it is None.
+    config : EvalConfig or dict, optional
+        What to run (default ``EvalConfig()``). It plays the part ``params``
+        plays elsewhere (``params`` is a field of it: the reconstruction's
+        parameters).
+    **overrides
+        Fields of :class:`EvalConfig` (``metrics=("cfa_psnr",)``,
+        ``noise=True``, ``params=ReconstructParams(...)``), applied over
+        ``config`` and checked by it.
     cache_dir : str or Path, optional
         Where per-image results are cached (one small JSON file per image x
         pattern x method, written atomically), so an interrupted run resumes
@@ -302,12 +316,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     local pool's worker processes before it propagates: no worker outlives
     the run, and no temporary cache file is left behind.
     """
-    if config is None:
-        config = EvalConfig(**config_kwargs)
-    elif config_kwargs:
-        raise TypeError("pass either config or keyword arguments, not both")
-    elif not isinstance(config, EvalConfig):
-        raise TypeError(f"config: expected an EvalConfig, got {type(config).__name__}")
+    config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
@@ -344,7 +353,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
             ex.shutdown(wait=True)
     finally:
         bar.close()
-    skipped = [(n, str(results[n])) for n in names if isinstance(results[n], _Skipped)]
+    skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped)
 

@@ -9,20 +9,30 @@
 * :func:`folder_dataset`, :func:`sample_dataset`, :class:`ImageSource` -- the one
   dataset loader of the evaluation, trade-off and training commands.
 * :func:`read_file`, :func:`read_image`, :func:`atomic_write` -- the file
-  primitives every other function goes through (errors name the parameter;
-  reads are bounded by :func:`read_limits`; writes are never partial).
+  primitives every other function goes through (reads are bounded by
+  :func:`read_limits`, given as ``max_pixels`` and ``max_bytes``; writes are never
+  partial).
+* :class:`ParameterError` -- the ValueError of the readers: it names the
+  parameter at fault (``param``) and spells the settings of its advice
+  (:class:`Setting`) so that a caller can give them in its own words.
+* The suffixes each reader recognises: :data:`IMAGE_SUFFIXES`, :data:`RAW_SUFFIXES`,
+  :data:`RAW_EXTENSIONS` (and its parts), :data:`FRAME_SUFFIXES`, one list each.
 """
 
-from ._datasets import IMAGE_SUFFIXES, RAW_SUFFIXES, ImageSource, folder_dataset, sample_dataset
+from ._bayer import clipped_mask, frame_clip_level, to_rgbz
+from ._datasets import ImageSource, folder_dataset, sample_dataset
+from ._errors import ParameterError, Setting
 from ._files import (DEFAULT_MAX_BYTES, DEFAULT_MAX_PIXELS, MAX_BYTES_ENV, MAX_PIXELS_ENV,
                      atomic_write, check_size, read_file, read_image, read_limits, rgb_image)
-from ._frames import FRAME_SUFFIXES, load_frame, read_npz, save_frame
-from ._raw import (HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS,
-                   clipped_mask, frame_clip_level, list_raw_files, read_raw, to_rgbz)
+from ._frames import load_frame, read_npz, save_frame
+from ._raw import list_raw_files, read_raw
+from ._suffixes import (FRAME_SUFFIXES, HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, IMAGE_SUFFIXES,
+                        LIBRAW_EXTENSIONS, RAW_EXTENSIONS, RAW_SUFFIXES)
 
 __all__ = ["save_frame", "load_frame", "read_npz", "FRAME_SUFFIXES",
            "read_raw", "list_raw_files", "to_rgbz", "clipped_mask", "frame_clip_level",
            "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS",
            "ImageSource", "folder_dataset", "sample_dataset", "IMAGE_SUFFIXES", "RAW_SUFFIXES",
            "read_image", "read_file", "read_limits", "rgb_image", "check_size", "atomic_write",
-           "DEFAULT_MAX_PIXELS", "DEFAULT_MAX_BYTES", "MAX_PIXELS_ENV", "MAX_BYTES_ENV"]
+           "DEFAULT_MAX_PIXELS", "DEFAULT_MAX_BYTES", "MAX_PIXELS_ENV", "MAX_BYTES_ENV",
+           "ParameterError", "Setting"]

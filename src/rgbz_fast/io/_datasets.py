@@ -13,15 +13,14 @@ from pathlib import Path
 
 import numpy as np
 
+from ._errors import ParameterError
 from ._files import read_file, read_image, rgb_image
 from ._raw import read_raw
+from ._suffixes import IMAGE_SUFFIXES, RAW_SUFFIXES
 
 __all__ = ["ImageSource", "folder_dataset", "sample_dataset", "IMAGE_SUFFIXES",
            "RAW_SUFFIXES"]
 
-RAW_SUFFIXES = {".dng", ".cr2", ".cr3", ".nef", ".arw", ".raf", ".rw2", ".orf", ".pef",
-                ".srw", ".raw", ".bin"}
-IMAGE_SUFFIXES = {".png", ".tif", ".tiff", ".jpg", ".jpeg", ".bmp", ".ppm", ".webp"}
 _SKIMAGE_SAMPLES = ("astronaut", "coffee", "chelsea", "rocket", "immunohistochemistry")
 
 
@@ -34,6 +33,9 @@ class ImageSource:
     :class:`~rgbz_fast.RawFrame`: the real CFA is then the reference and the
     RGB-Z pattern removes its Z sites (the paper's HDR+ protocol). A grey
     image is refused unless ``grey`` (see :func:`rgbz_fast.io.rgb_image`).
+    ``max_pixels`` and ``max_bytes`` are the read limits of the file
+    (:func:`rgbz_fast.io.read_limits`); a source carries them to the process
+    that loads it.
     """
 
     name: str
@@ -41,19 +43,22 @@ class ImageSource:
     raw_options: tuple = ()
     raw: bool = False
     grey: bool = False
+    max_pixels: int | None = None
+    max_bytes: int | None = None
 
     @property
     def is_raw(self):
         return self.raw or Path(self.location).suffix.lower() in RAW_SUFFIXES
 
     def load(self):
+        limits = dict(max_pixels=self.max_pixels, max_bytes=self.max_bytes)
         if self.is_raw:
-            return read_raw(self.location, **dict(self.raw_options))
+            return read_raw(self.location, **limits, **dict(self.raw_options))
         if self.location.startswith("skimage:"):
             import skimage.data
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
         else:
-            img = read_image(self.location, "dataset")
+            img = read_image(self.location, "dataset", **limits)
         return rgb_image(img, self.location, "dataset", grey=self.grey)
 
     def fingerprint(self):
@@ -68,7 +73,7 @@ class ImageSource:
 
             h.update(f"{self.location} {skimage.__version__}".encode())
         else:
-            h.update(read_file(self.location, "dataset"))
+            h.update(read_file(self.location, "dataset", max_bytes=self.max_bytes))
         h.update(repr((sorted(self.raw_options), self.is_raw, self.grey)).encode())
         return h.hexdigest()
 
@@ -78,7 +83,8 @@ def sample_dataset():
     return [ImageSource(n, f"skimage:{n}") for n in _SKIMAGE_SAMPLES]
 
 
-def folder_dataset(path, limit=None, raw_options=None, *, grey=False):
+def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels=None,
+                   max_bytes=None):
     """Every image file in a folder (sorted by name): RGB images, or camera raw / Bayer files.
 
     ``raw_options`` maps a file name (or ``"*"``, for every raw file) to the
@@ -87,7 +93,8 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False):
     the paper does for HDR+). A file named in ``raw_options`` is read as raw
     even if it is a PNG or TIFF (a 16-bit Bayer mosaic). ``limit``: the first
     ``limit`` files only (a positive integer). ``grey``: accept grey images,
-    repeated into R, G and B (:func:`rgbz_fast.io.rgb_image`).
+    repeated into R, G and B (:func:`rgbz_fast.io.rgb_image`). ``max_pixels``,
+    ``max_bytes``: the read limits of every file (:func:`rgbz_fast.io.read_limits`).
 
     Raises
     ------
@@ -98,10 +105,10 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False):
     """
     if limit is not None and (isinstance(limit, bool) or not isinstance(limit, (int, np.integer))
                               or limit < 1):
-        raise ValueError(f"limit: expected a positive number of images, got {limit!r}")
+        raise ParameterError("limit", f"expected a positive number of images, got {limit!r}")
     p = Path(path)
     if not p.exists():
-        raise ValueError(f"dataset: {p} does not exist")
+        raise ParameterError("dataset", f"{p} does not exist")
     if p.is_file():
         files = [p]
     else:
@@ -109,23 +116,24 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False):
                        if f.is_file() and f.suffix.lower() in IMAGE_SUFFIXES | RAW_SUFFIXES
                        and not f.name.startswith("."))
     if not files:
-        raise ValueError(f"dataset: no image files in {p} (looked for "
-                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")
+        raise ParameterError("dataset", f"no image files in {p} (looked for "
+                                        f"{', '.join(sorted(IMAGE_SUFFIXES))})")
     raw_options = dict(raw_options or {})
     files = files[:limit] if limit else files
     out = []
+    common = dict(grey=grey, max_pixels=max_pixels, max_bytes=max_bytes)
     for f in files:
         if f.suffix.lower() in RAW_SUFFIXES or f.name in raw_options:
             opts = {**raw_options.get("*", {}), **raw_options.get(f.name, {})}
             out.append(ImageSource(f.stem, str(f), tuple(sorted(
                 (k, tuple(v) if isinstance(v, list) else v) for k, v in opts.items())), raw=True,
-                grey=grey))
+                **common))
         else:
-            out.append(ImageSource(f.stem, str(f), grey=grey))
+            out.append(ImageSource(f.stem, str(f), **common))
     stems = [s.name for s in out]
     dup = sorted({n for n in stems if stems.count(n) > 1})
     if dup:
-        raise ValueError(f"dataset: several files are named {dup[0]!r} (e.g. "
-                         f"{', '.join(Path(s.location).name for s in out if s.name == dup[0])}); "
-                         "images are reported by name, so rename one")
+        raise ParameterError("dataset", f"several files are named {dup[0]!r} (e.g. "
+                             f"{', '.join(Path(s.location).name for s in out if s.name == dup[0])}"
+                             "); images are reported by name, so rename one")
     return out

@@ -21,6 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._errors import ParameterError, Setting
+
 __all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "read_limits", "check_size",
            "DEFAULT_MAX_PIXELS", "DEFAULT_MAX_BYTES", "MAX_PIXELS_ENV", "MAX_BYTES_ENV"]
 
@@ -28,12 +30,16 @@ __all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "read_limits"
 DEFAULT_MAX_PIXELS = 200_000_000
 #: default largest file a reader reads, and largest array it decodes: 2 GiB
 DEFAULT_MAX_BYTES = 2 * 2**30
-#: environment variables that override the defaults (the command line sets them)
+#: environment variables that replace the defaults when a call gives no limit
 MAX_PIXELS_ENV = "RGBZ_FAST_MAX_PIXELS"
 MAX_BYTES_ENV = "RGBZ_FAST_MAX_BYTES"
 
-_HOW_TO_RAISE = {"max_pixels": f"max_pixels=, --max-pixels or {MAX_PIXELS_ENV}",
-                 "max_bytes": f"max_bytes=, --max-bytes or {MAX_BYTES_ENV}"}
+
+def raise_it(limit):
+    """The advice of an error about a read limit: how to raise ``limit`` ("max_pixels" or
+    "max_bytes"), as message parts of a :class:`ParameterError`."""
+    env = MAX_PIXELS_ENV if limit == "max_pixels" else MAX_BYTES_ENV
+    return ("; raise it with ", Setting(limit), f" or {env}")
 
 
 def _limit(value, name, env, default):
@@ -44,14 +50,14 @@ def _limit(value, name, env, default):
         try:
             value = int(text.replace("_", ""))
         except ValueError:
-            raise ValueError(f"{env}: expected a positive integer, got {text!r}") from None
+            raise ParameterError(env, f"expected a positive integer, got {text!r}") from None
         if value < 1:
-            raise ValueError(f"{env}: expected a positive integer, got {text!r}")
+            raise ParameterError(env, f"expected a positive integer, got {text!r}")
         return value
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name}: expected a positive integer, got {value!r}")
     if value < 1:
-        raise ValueError(f"{name}: expected a positive integer, got {value!r}")
+        raise ParameterError(name, f"expected a positive integer, got {value!r}")
     return int(value)
 
 
@@ -61,8 +67,9 @@ def read_limits(max_pixels=None, max_bytes=None):
     Each is the argument when given, else the environment variable
     (``RGBZ_FAST_MAX_PIXELS``, ``RGBZ_FAST_MAX_BYTES``), else the default
     (:data:`DEFAULT_MAX_PIXELS`, 200 megapixels; :data:`DEFAULT_MAX_BYTES`,
-    2 GiB). The command line's ``--max-pixels`` and ``--max-bytes`` set the
-    environment variables, so worker processes inherit them.
+    2 GiB). Every reader takes ``max_pixels`` and ``max_bytes`` and passes
+    them on; the environment variables set the limits of a whole program
+    (and of the processes it starts) without changing its calls.
 
     Examples
     --------
@@ -72,14 +79,14 @@ def read_limits(max_pixels=None, max_bytes=None):
     >>> read_limits(max_pixels=0)
     Traceback (most recent call last):
     ...
-    ValueError: max_pixels: expected a positive integer, got 0
+    rgbz_fast.io.ParameterError: max_pixels: expected a positive integer, got 0
     """
     return (_limit(max_pixels, "max_pixels", MAX_PIXELS_ENV, DEFAULT_MAX_PIXELS),
             _limit(max_bytes, "max_bytes", MAX_BYTES_ENV, DEFAULT_MAX_BYTES))
 
 
 def check_size(shape, itemsize, path, name="path", *, limits=None):
-    """ValueError naming ``name`` when an array of ``shape`` breaks the limits.
+    """:class:`ParameterError` naming ``name`` when an array of ``shape`` breaks the limits.
 
     ``shape`` is what a file declares (rows, cols, ...): its first two
     dimensions are the pixels, and the product times ``itemsize`` the bytes
@@ -91,13 +98,13 @@ def check_size(shape, itemsize, path, name="path", *, limits=None):
     nbytes = int(np.prod(shape, dtype=object)) * int(itemsize)
     dims = "x".join(str(s) for s in shape)
     if pixels > max_pixels:
-        raise ValueError(f"{name}: {path} declares a {dims} image ({pixels / 1e6:.1f} "
-                         f"megapixels), more than the limit of {max_pixels} pixels; raise it "
-                         f"with {_HOW_TO_RAISE['max_pixels']}")
+        raise ParameterError(name, f"{path} declares a {dims} image ({pixels / 1e6:.1f} "
+                                   f"megapixels), more than the limit of {max_pixels} pixels",
+                             *raise_it("max_pixels"))
     if nbytes > max_bytes:
-        raise ValueError(f"{name}: {path} declares {dims} values of {itemsize} bytes "
-                         f"({nbytes} bytes), more than the limit of {max_bytes} bytes; raise "
-                         f"it with {_HOW_TO_RAISE['max_bytes']}")
+        raise ParameterError(name, f"{path} declares {dims} values of {itemsize} bytes "
+                                   f"({nbytes} bytes), more than the limit of {max_bytes} bytes",
+                             *raise_it("max_bytes"))
 
 
 def _file_kind(mode):
@@ -136,7 +143,7 @@ def read_file(path, name="path", *, max_bytes=None):
     >>> read_file("/dev/zero")
     Traceback (most recent call last):
     ...
-    ValueError: path: /dev/zero is a character device, not a regular file
+    rgbz_fast.io.ParameterError: path: /dev/zero is a character device, not a regular file
     """
     limit = read_limits(max_bytes=max_bytes)[1]
     p = Path(os.fspath(path))
@@ -146,26 +153,26 @@ def read_file(path, name="path", *, max_bytes=None):
     except FileNotFoundError:
         raise FileNotFoundError(f"{name}: no such file: {p}") from None
     except IsADirectoryError:
-        raise ValueError(f"{name}: {p} is a folder, not a regular file") from None
+        raise ParameterError(name, f"{p} is a folder, not a regular file") from None
     except OSError as exc:
-        raise ValueError(f"{name}: cannot open {p} ({exc.strerror or exc})") from None
+        raise ParameterError(name, f"cannot open {p} ({exc.strerror or exc})") from None
     st = os.fstat(fd)                  # the file opened, not what the name points to now
     if not stat.S_ISREG(st.st_mode):
         os.close(fd)
         kind = _file_kind(st.st_mode)
-        raise ValueError(f"{name}: {p} is {kind}" +
-                         ("" if kind.startswith("not") else ", not a regular file"))
+        raise ParameterError(name, f"{p} is {kind}"
+                             + ("" if kind.startswith("not") else ", not a regular file"))
     with os.fdopen(fd, "rb") as fh:
         if st.st_size > limit:
-            raise ValueError(f"{name}: {p} is {st.st_size} bytes, more than the limit of "
-                             f"{limit} bytes; raise it with {_HOW_TO_RAISE['max_bytes']}")
+            raise ParameterError(name, f"{p} is {st.st_size} bytes, more than the limit of "
+                                       f"{limit} bytes", *raise_it("max_bytes"))
         try:
             data = fh.read(limit + 1)      # bounded even if the file grows meanwhile
         except OSError as exc:
-            raise ValueError(f"{name}: cannot read {p} ({exc.strerror or exc})") from None
+            raise ParameterError(name, f"cannot read {p} ({exc.strerror or exc})") from None
     if len(data) > limit:
-        raise ValueError(f"{name}: {p} grew beyond the limit of {limit} bytes while being "
-                         "read")
+        raise ParameterError(name, f"{p} grew beyond the limit of {limit} bytes while being "
+                                   "read")
     return data
 
 
@@ -363,7 +370,7 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
     >>> read_image(path, max_pixels=1)
     Traceback (most recent call last):
     ...
-    ValueError: path: ... declares a 1x2x1 image (0.0 megapixels), more than the limit of 1 pixels; ...
+    rgbz_fast.io.ParameterError: path: ... declares a 1x2x1 image (0.0 megapixels), more than the limit of 1 pixels; ...
     >>> d.cleanup()
     """
     p = Path(path)
@@ -377,10 +384,10 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
         img = np.asarray(img)
     except Exception as exc:  # noqa: BLE001 - the decoders raise many types for bad data
         reason = " ".join(str(exc).split()) or type(exc).__name__
-        raise ValueError(f"{name}: cannot read {p} as an image ({reason})") from None
+        raise ParameterError(name, f"cannot read {p} as an image ({reason})") from None
     if img.size == 0:
-        raise ValueError(f"{name}: cannot read {p} as an image (it decodes to no pixel, "
-                         f"shape {img.shape})")
+        raise ParameterError(name, f"cannot read {p} as an image (it decodes to no pixel, "
+                                   f"shape {img.shape})")
     check_size(img.shape, img.dtype.itemsize, p, name, limits=limits)
     return img
 
@@ -403,7 +410,7 @@ def rgb_image(img, path, name="path", *, grey=False):
     >>> rgb_image(np.zeros((2, 3), np.uint8), "g.png")
     Traceback (most recent call last):
     ...
-    ValueError: path: g.png is a grey image (2x3); a colour sensor needs colour: ...
+    rgbz_fast.io.ParameterError: path: g.png is a grey image (2x3); a colour sensor needs colour: ...
     """
     img = np.asarray(img)
     if img.ndim == 3 and img.shape[2] in (2, 4):
@@ -412,11 +419,11 @@ def rgb_image(img, path, name="path", *, grey=False):
         img = img[..., 0]
     if img.ndim == 2:
         if not grey:
-            raise ValueError(f"{name}: {path} is a grey image ({img.shape[0]}x{img.shape[1]}); "
-                             "a colour sensor needs colour: pass grey=True (command line: "
-                             "--grey) to repeat it into R, G and B")
+            raise ParameterError(name, f"{path} is a grey image ({img.shape[0]}x{img.shape[1]}); "
+                                       "a colour sensor needs colour: pass ",
+                                 Setting("grey", "grey=True"), " to repeat it into R, G and B")
         img = np.repeat(img[..., None], 3, axis=2)
     if img.ndim != 3 or img.shape[2] != 3:
-        raise ValueError(f"{name}: {path} holds an image of shape {img.shape}; expected RGB "
-                         "(rows, cols, 3), RGBA or grey")
+        raise ParameterError(name, f"{path} holds an image of shape {img.shape}; expected "
+                                   "RGB (rows, cols, 3), RGBA or grey")
     return np.ascontiguousarray(img)

@@ -18,12 +18,13 @@ import numpy as np
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Pattern, get_pattern
 from .._sensors import ToFSensor
-from ._files import MAX_BYTES_ENV, atomic_write, check_size, read_file, read_image, read_limits
+from ._errors import ParameterError, named
+from ._files import atomic_write, check_size, raise_it, read_file, read_image, read_limits
 from ._raw import read_raw
+from ._suffixes import FRAME_SUFFIXES
 
 __all__ = ["save_frame", "load_frame", "FRAME_SUFFIXES"]
 
-FRAME_SUFFIXES = (".npz", ".tif", ".tiff")
 _FORMAT_TAG = "rgbz-fast raw frame"
 
 
@@ -207,9 +208,11 @@ def _checked(path, build):
     except KeyError as exc:
         raise ValueError(f"path: {path} is not a readable rgbz-fast frame (missing key "
                          f"{exc})") from None
+    except ParameterError as exc:
+        if exc.param == "path":                            # a size limit: already named
+            raise exc from None
+        raise named(exc, "path", f"{path} is not a readable rgbz-fast frame (", ")") from None
     except (ValueError, TypeError, OverflowError, RecursionError) as exc:
-        if str(exc).startswith("path: "):                  # a size limit: already named
-            raise ValueError(str(exc)) from None
         raise ValueError(f"path: {path} is not a readable rgbz-fast frame ({exc})") from None
 
 
@@ -256,9 +259,9 @@ def read_npz(path, name="path", *, keys=None, required=(), max_pixels=None, max_
     try:
         return _npz_members(path, name, keys, required, read_limits(max_pixels, max_bytes))
     except ValueError as exc:
-        msg = str(exc)
-        raise ValueError(msg if msg.startswith(f"{name}: ") else
-                         f"{name}: {path} is not a readable NPZ archive ({msg})") from None
+        if isinstance(exc, ParameterError) and exc.param == name:
+            raise exc from None                            # about the file itself: named
+        raise named(exc, name, f"{path} is not a readable NPZ archive (", ")") from None
 
 
 def _npz_members(path, name, keys, required, limits):
@@ -283,9 +286,9 @@ def _npz_members(path, name, keys, required, limits):
         wanted = [k for k in (members if keys is None else keys) if k in members]
         declared = sum(members[k].file_size for k in wanted)
         if declared > limits[1]:
-            raise ValueError(f"its arrays declare {declared} bytes uncompressed, more than "
-                             f"the limit of {limits[1]} bytes; raise it with max_bytes=, "
-                             f"--max-bytes or {MAX_BYTES_ENV}")
+            raise ParameterError(None, f"its arrays declare {declared} bytes uncompressed, "
+                                       f"more than the limit of {limits[1]} bytes",
+                                 *raise_it("max_bytes"))
         try:
             return {k: _npz_array(zf, members[k], path, limits, name) for k in wanted}
         except broken as exc:

@@ -3,10 +3,10 @@
 Every reader gives the library's :class:`~rgbz_fast.RawFrame`: the plain
 Bayer CFA with the black level subtracted, scaled to the working bit depth,
 its phase recorded as the frame's pattern (``bayer(phase)``) and the file's
-facts in ``frame.meta``. :func:`to_rgbz` then turns such a frame into an
-RGB-Z frame of the same phase (Z sites zeroed) plus the full CFA as the
-reference, which is how real raw data is evaluated (the paper's HDR+ burst
-dataset, section 5.2.2 [1]_).
+facts in ``frame.meta``. :func:`rgbz_fast.io.to_rgbz` then turns such a frame
+into an RGB-Z frame and its reference, the paper's protocol for real raw data
+[1]_ (the HDR+ burst dataset [2]_). The reader is chosen by the file's
+extension (:mod:`rgbz_fast.io._suffixes`).
 
 Camera raw files need the optional dependency rawpy (LibRaw):
 ``pip install rgbz-fast[raw]``.
@@ -26,36 +26,20 @@ from pathlib import Path
 
 import numpy as np
 
-from .._frame import RawFrame, _Adopt, raw_clip_level
-from .._patterns import BAYER_PHASES, Pattern, Z, bayer, mask1, mask2, rows
-from .._validate import check_bit_depth, check_dtype, check_number
+from .._frame import RawFrame, _Adopt
+from .._patterns import BAYER_PHASES, bayer
+from .._validate import check_bit_depth, check_dtype
+from ._errors import ParameterError, Setting
 from ._files import check_size, read_file, read_image, read_limits
+from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
 
-__all__ = ["read_raw", "list_raw_files", "to_rgbz", "clipped_mask", "frame_clip_level",
-           "LIBRAW_EXTENSIONS", "IMAGE_EXTENSIONS", "HEADERLESS_EXTENSIONS", "RAW_EXTENSIONS"]
-
-#: camera raw formats read through rawpy (LibRaw)
-LIBRAW_EXTENSIONS = (
-    ".dng", ".cr2", ".cr3", ".crw", ".nef", ".nrw", ".arw", ".srf", ".sr2", ".raf",
-    ".orf", ".rw2", ".rwl", ".pef", ".ptx", ".srw", ".3fr", ".fff", ".iiq", ".mos",
-    ".mef", ".mrw", ".erf", ".kdc", ".dcr", ".x3f",
-)
-#: single-channel Bayer mosaics stored as an image
-IMAGE_EXTENSIONS = (".png", ".tif", ".tiff")
-#: one uint16 per pixel, no header (needs ``shape``)
-HEADERLESS_EXTENSIONS = (".raw", ".bin")
-#: every extension :func:`read_raw` dispatches on
-RAW_EXTENSIONS = LIBRAW_EXTENSIONS + IMAGE_EXTENSIONS + HEADERLESS_EXTENSIONS
+__all__ = ["read_raw", "list_raw_files"]
 
 _READERS = ("libraw", "image", "headerless")
-_RGBZ_PRESETS = {"mask1": mask1, "mask2": mask2, "rows": rows}
 _OUT_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
                np.dtype(np.float64))
 
 
-# --------------------------------------------------------------------------
-# public API
-# --------------------------------------------------------------------------
 def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level=None,
              shape=None, bit_depth_in=None, byteorder="<", bit_depth=11, downsample=1,
              crop_even=False, dtype=np.uint16, reader=None, max_pixels=None, max_bytes=None):
@@ -158,7 +142,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
 
     Camera raw files are read from LibRaw's visible area
     (``raw_image_visible``), without the orientation flag applied. Clipped
-    pixels are flagged, not altered: see :func:`clipped_mask` and
+    pixels are flagged, not altered: see :func:`~rgbz_fast.io.clipped_mask` and
     ``docs/guide/raw.md`` for what the reconstruction does near them.
 
     Examples
@@ -204,23 +188,25 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     if phase is None:
         phase = info.get("phase")
     if phase is None:
-        raise ValueError(f"phase: {path.name} does not record its CFA phase; pass "
-                         f"phase= one of {', '.join(BAYER_PHASES)}")
+        raise ParameterError("phase", f"{path.name} does not record its CFA phase; pass ",
+                             Setting("phase"), f" one of {', '.join(BAYER_PHASES)}")
     phase = str(phase).upper()
     if phase not in BAYER_PHASES:
         raise ValueError(f"phase: expected one of {', '.join(BAYER_PHASES)}, got {phase!r}")
     if black_level is None:
         black_level = info.get("black_level")
     if black_level is None:
-        raise ValueError(f"black_level: {path.name} does not record its black level; "
-                         "pass black_level= (one value or four, per quad site)")
+        raise ParameterError("black_level", f"{path.name} does not record its black level; "
+                             "pass ", Setting("black_level"), " (one value or four, per quad "
+                             "site)")
     if white_level is None:
         white_level = info.get("white_level")
     if white_level is None and bit_depth_in is not None:
         white_level = (1 << bit_depth_in) - 1
     if white_level is None:
-        raise ValueError(f"white_level: {path.name} does not record its white level; "
-                         "pass white_level= (or bit_depth_in=, giving 2**bit_depth_in - 1)")
+        raise ParameterError("white_level", f"{path.name} does not record its white level; "
+                             "pass ", Setting("white_level"), " (or ", Setting("bit_depth_in"),
+                             ", giving 2**bit_depth_in - 1)")
     black = _quad_levels(black_level, "black_level")
     white = _quad_levels(white_level, "white_level")
     if np.any(white <= black):
@@ -318,147 +304,8 @@ def list_raw_files(folder, *, recursive=False, extensions=None):
                   if p.is_file() and not p.name.startswith(".") and p.suffix.lower() in exts)
 
 
-def to_rgbz(frame, pattern):
-    """Make an RGB-Z frame and its reference from a real Bayer frame.
 
-    Parameters
-    ----------
-    frame : RawFrame
-        A plain Bayer frame (no Z sites), e.g. from :func:`read_raw`.
-    pattern : {"mask1", "mask2", "rows"} or Pattern
-        The RGB-Z preset. It is built on the frame's Bayer phase
-        (``mask1(phase)``); a phase suffix (``"mask1_rggb"``) or a
-        :class:`~rgbz_fast.Pattern` must agree with it.
-
-    Returns
-    -------
-    rgbz : RawFrame
-        The RGB-Z frame: the CFA with the Z sites set to 0, its ``reference``
-        the full CFA, ``meta`` copied from ``frame`` (with ``"clipped"``
-        cropped alike and ``"rgbz_pattern"`` added).
-    reference : ndarray, shape (rows, cols)
-        The full raw CFA (the ground truth of the reconstruction).
-
-    Notes
-    -----
-    Both are cropped at the bottom and right to the largest multiple of the
-    pattern period (2x2 for Mask1, 4x4 for Mask2, 6x2 for rows), so that
-    every tile is whole and the phase at (0, 0) is kept.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from rgbz_fast import RawFrame, bayer
-    >>> from rgbz_fast.io import to_rgbz
-    >>> cfa = RawFrame(np.arange(1, 21, dtype=np.uint16).reshape(4, 5), bayer("RGGB"))
-    >>> rgbz, ref = to_rgbz(cfa, "mask1")
-    >>> rgbz.pattern.tile_string, rgbz.data
-    ('RZ/GB', array([[ 1,  0,  3,  0],
-           [ 6,  7,  8,  9],
-           [11,  0, 13,  0],
-           [16, 17, 18, 19]], dtype=uint16))
-    """
-    if not isinstance(frame, RawFrame):
-        raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
-    if frame.pattern.has_z:
-        raise ValueError(f"frame: pattern {frame.pattern.name!r} already has Z sites; "
-                         "expected a plain Bayer frame")
-    phase = frame.pattern.bayer_phase
-    if phase is None:
-        raise ValueError(f"frame: pattern {frame.pattern.name!r} is not a Bayer CFA")
-    target = _rgbz_pattern(pattern, phase)
-    P, Q = target.period
-    r = frame.shape[0] - frame.shape[0] % P
-    c = frame.shape[1] - frame.shape[1] % Q
-    if r == 0 or c == 0:
-        raise ValueError(f"frame: {frame.shape[0]}x{frame.shape[1]} is smaller than one "
-                         f"period ({P}x{Q}) of pattern {target.name!r}")
-    reference = np.ascontiguousarray(frame.data[:r, :c])
-    data = reference.copy()
-    data[target.channel_map((r, c)) == Z] = 0
-    meta = dict(frame.meta)
-    if isinstance(meta.get("clipped"), np.ndarray) and meta["clipped"].shape == frame.shape:
-        cm = np.ascontiguousarray(meta["clipped"][:r, :c])
-        cm.setflags(write=False)
-        meta["clipped"] = cm
-    meta["rgbz_pattern"] = target.name
-    meta["crop_rgbz"] = (int(r), int(c))
-    rgbz = RawFrame(_Adopt(data), target, frame.bit_depth, reference=reference, meta=meta)
-    return rgbz, reference
-
-
-def clipped_mask(frame, clip_level=None, *, radius=0):
-    """Where the raw data is clipped (saturated).
-
-    Parameters
-    ----------
-    frame : RawFrame or ndarray, shape (rows, cols)
-        A frame from :func:`read_raw` or :func:`to_rgbz` (its
-        ``meta["clipped"]`` is used), another RawFrame (pixels at its white
-        level ``2**bit_depth - 1``; Z sites are never clipped), or a plain
-        array (needs ``clip_level``).
-    clip_level : float, optional
-        Values at or above it are clipped. Overrides ``meta["clipped"]``
-        and the white level.
-    radius : int
-        Grow the mask by this many pixels (Chebyshev distance, a square
-        window). ``radius=2`` flags every pixel whose 5x5 reconstruction
-        window touches a clipped pixel.
-
-    Returns
-    -------
-    ndarray of bool, shape (rows, cols)
-
-    Raises
-    ------
-    TypeError
-        ``clip_level`` is not a number.
-    ValueError
-        ``clip_level`` is NaN or infinite (a NaN level would flag nothing),
-        or missing for a plain array; ``radius`` is not an integer >= 0.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from rgbz_fast.io import clipped_mask
-    >>> clipped_mask(np.array([[0, 1020], [5, 1023]]), 1020).astype(int)
-    array([[0, 1],
-           [0, 1]])
-    """
-    if clip_level is not None:
-        clip_level = check_number(clip_level, "clip_level")
-    if isinstance(radius, bool) or not isinstance(radius, (int, np.integer)) or radius < 0:
-        raise ValueError(f"radius: expected a non-negative integer, got {radius!r}")
-    if isinstance(frame, RawFrame):
-        stored = frame.meta.get("clipped")
-        if clip_level is None and isinstance(stored, np.ndarray) and stored.shape == frame.shape:
-            mask = np.array(stored, dtype=bool)
-        else:
-            level = frame.white_level if clip_level is None else clip_level
-            mask = frame.data >= level
-            mask[frame.z_mask] = False
-    else:
-        if clip_level is None:
-            raise ValueError("clip_level: a plain array needs clip_level= (the raw value at "
-                             "which the sensor saturates)")
-        data = np.asarray(frame)
-        if data.ndim != 2:
-            raise ValueError(f"frame: expected a 2-D array, got shape {data.shape}")
-        mask = data >= clip_level
-    if radius > 0:
-        from scipy.ndimage import maximum_filter
-
-        mask = maximum_filter(mask, size=2 * int(radius) + 1, mode="constant", cval=False)
-    return mask
-
-
-#: the clip level of a frame read from a raw file (:func:`rgbz_fast._frame.raw_clip_level`)
-frame_clip_level = raw_clip_level
-
-
-# --------------------------------------------------------------------------
-# readers
-# --------------------------------------------------------------------------
+# --------------------------------------------------------------------------- readers
 def _reader_for(path, reader):
     if reader is not None:
         if not isinstance(reader, str) or reader.lower() not in _READERS:
@@ -472,10 +319,11 @@ def _reader_for(path, reader):
         return "image"
     if ext in HEADERLESS_EXTENSIONS:
         return "headerless"
-    raise ValueError(f"path: unknown raw extension {ext or '(none)'!r} of {path.name}; "
-                     f"expected a camera raw ({', '.join(LIBRAW_EXTENSIONS[:6])}, ...), "
-                     f"{'/'.join(IMAGE_EXTENSIONS)} or headerless "
-                     f"{'/'.join(HEADERLESS_EXTENSIONS)}, or pass reader=")
+    raise ParameterError("path", f"unknown raw extension {ext or '(none)'!r} of {path.name}; "
+                                 f"expected a camera raw ({', '.join(LIBRAW_EXTENSIONS[:6])}, "
+                                 f"...), {'/'.join(IMAGE_EXTENSIONS)} or headerless "
+                                 f"{'/'.join(HEADERLESS_EXTENSIONS)}, or ",
+                         Setting("reader", "pass reader="))
 
 
 def _read_libraw(path, limits):
@@ -543,7 +391,8 @@ def _read_image(path, limits):
 
 def _read_headerless(path, shape, byteorder, limits):
     if shape is None:
-        raise ValueError(f"shape: the headerless file {path.name} needs shape=(rows, cols)")
+        raise ParameterError("shape", f"the headerless file {path.name} needs ",
+                             Setting("shape", "shape=(rows, cols)"))
     try:
         rows_, cols = (int(s) for s in shape)
     except (TypeError, ValueError):
@@ -562,31 +411,7 @@ def _read_headerless(path, shape, byteorder, limits):
     return data.astype(np.uint16)        # native byte order, a copy
 
 
-# --------------------------------------------------------------------------
-# helpers
-# --------------------------------------------------------------------------
-def _rgbz_pattern(pattern, phase):
-    """The RGB-Z preset on the Bayer phase of the frame."""
-    if isinstance(pattern, Pattern):
-        if not pattern.has_z:
-            raise ValueError(f"pattern: {pattern.name!r} has no Z sites")
-        if pattern.bayer_phase != phase:
-            raise ValueError(f"pattern: {pattern.name!r} lies on Bayer phase "
-                             f"{pattern.bayer_phase!r}, the frame on {phase!r}")
-        return pattern
-    if not isinstance(pattern, str):
-        raise TypeError(f"pattern: expected a preset name or a Pattern, got "
-                        f"{type(pattern).__name__}")
-    base, _, suffix = pattern.strip().lower().partition("_")
-    if base not in _RGBZ_PRESETS:
-        raise ValueError(f"pattern: expected one of {', '.join(map(repr, _RGBZ_PRESETS))}, "
-                         f"got {pattern!r}")
-    if suffix and suffix.upper() != phase:
-        raise ValueError(f"pattern: {pattern!r} asks for Bayer phase {suffix.upper()!r}, "
-                         f"but the frame is {phase!r}; pass {base!r}")
-    return _RGBZ_PRESETS[base](phase)
-
-
+# --------------------------------------------------------------------------- levels, binning
 def _check_downsample(k):
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
         raise ValueError(f"downsample: expected a positive integer binning factor, got {k!r}")

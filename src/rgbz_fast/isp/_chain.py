@@ -28,19 +28,20 @@ trade-off study, ``rgbz-fast reconstruct --output srgb``). The ToF ISP is
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
-from .._frame import RawFrame
+from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
-                         check_number)
+                         check_number, merge_params)
 from ._defects import DefectCorrection, correct_defects
 from ._demosaic import demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, _black_white,
                       _encode, _quantise, correct_colour, fill_missing, srgb_oetf,
-                      white_balance)
+                      stage_params, white_balance)
 
 __all__ = ["ColourISP", "STAGES"]
 
@@ -50,20 +51,33 @@ STAGES = ("defect_correction", "reconstruction", "white_balance", "demosaic",
 
 _PRECISIONS = {"float32": np.float32, "float64": np.float64}
 
+#: the fields of :class:`ColourISP` that hold a stage's parameters, and their classes
+_STAGE_FIELDS = {"defects": DefectCorrection, "reconstruction": Reconstruction,
+                 "white_balance": WhiteBalance, "demosaicing": Demosaic,
+                 "colour_correction": ColourCorrection}
+
 
 # =========================================================================== the chain
 @dataclass(frozen=True)
 class ColourISP:
     """The colour ISP chain (paper Fig. 18): a frozen set of stage parameters.
 
+    Every field is checked when the chain is made, by the class of its
+    stage. A stage field takes the stage's parameters or a dict of their
+    fields, applied over the stage's defaults
+    (``ColourISP(demosaicing={"method": "menon2007"})``);
+    :meth:`build` and :meth:`replace` apply keyword overrides to a chain,
+    and a dict given for a stage there overrides fields of that chain's
+    stage.
+
     Attributes
     ----------
-    defects : DefectCorrection
-    reconstruction : Reconstruction
+    defects : DefectCorrection or dict
+    reconstruction : Reconstruction or dict
         Used only when the frame's pattern has Z sites.
-    white_balance : WhiteBalance
-    demosaicing : Demosaic
-    colour_correction : ColourCorrection
+    white_balance : WhiteBalance or dict
+    demosaicing : Demosaic or dict
+    colour_correction : ColourCorrection or dict
     output_bits : {8, 16}
         Bits of the sRGB output.
     black_level : float or None
@@ -83,6 +97,9 @@ class ColourISP:
     ((8, 8, 3), dtype('uint8'), 188)
     >>> [k for k in stages if k in rz.isp.STAGES] == list(rz.isp.STAGES)
     True
+    >>> chain = ColourISP(precision="float64").replace(white_balance={"clip": False})
+    >>> chain.precision, chain.white_balance
+    ('float64', WhiteBalance(method='grey_world', gains=None, clip=False))
     """
 
     defects: DefectCorrection = DefectCorrection()
@@ -95,12 +112,10 @@ class ColourISP:
     precision: str = "float32"
 
     def __post_init__(self):
-        for name, cls in (("defects", DefectCorrection), ("reconstruction", Reconstruction),
-                          ("white_balance", WhiteBalance), ("demosaicing", Demosaic),
-                          ("colour_correction", ColourCorrection)):
-            if not isinstance(getattr(self, name), cls):
-                raise TypeError(f"ColourISP.{name}: expected {cls.__name__}, got "
-                                f"{type(getattr(self, name)).__name__}")
+        for name, cls in _STAGE_FIELDS.items():
+            object.__setattr__(self, name, stage_params(cls, getattr(self, name),
+                                                        name=f"ColourISP.{name}",
+                                                        allow_none=False))
         if isinstance(self.output_bits, bool) or self.output_bits not in (8, 16):
             raise ValueError(f"ColourISP.output_bits: expected 8 or 16, got "
                              f"{self.output_bits!r}")
@@ -109,36 +124,41 @@ class ColourISP:
         object.__setattr__(self, "precision", check_choice(self.precision, tuple(_PRECISIONS),
                                                            "ColourISP.precision"))
 
+    @classmethod
+    def build(cls, params=None, overrides=None, *, name="params", caller="ColourISP.build()"):
+        """``params`` (a ColourISP, a dict of its fields or None) with ``overrides`` applied.
+
+        :func:`~rgbz_fast._validate.merge_params`, the library's one parameter
+        rule; a dict given for a stage field overrides fields of the stage of
+        ``params`` (of the stage's defaults when ``params`` is not a ColourISP).
+        """
+        if isinstance(params, cls) and overrides:
+            overrides = dict(overrides)
+            for field, stage in _STAGE_FIELDS.items():
+                if isinstance(overrides.get(field), Mapping):
+                    overrides[field] = merge_params(stage, getattr(params, field),
+                                                    overrides[field], name=f"ColourISP.{field}",
+                                                    caller=f"ColourISP.{field}")
+        return merge_params(cls, params, overrides, name=name, caller=caller)
+
+    def replace(self, **changes):
+        """A copy with some fields changed (and checked); a dict for a stage field changes
+        some fields of that stage (see :meth:`build`)."""
+        return self.build(self, changes, caller="ColourISP.replace()")
+
     # ------------------------------------------------------------------ helpers
     def _inputs(self, frame, pattern, bit_depth, black_level, reference):
+        if reference and not isinstance(frame, RawFrame):
+            raise ValueError("reference: needs a RawFrame with a reference CFA")
+        data, pat, bd = frame_inputs(frame, pattern, bit_depth)
+        meta_black = None
         if isinstance(frame, RawFrame):
-            if pattern is not None and get_pattern(pattern) != frame.pattern:
-                raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                                 f"frame's pattern {frame.pattern.name!r}")
-            if bit_depth is not None and check_bit_depth(bit_depth) != frame.bit_depth:
-                raise ValueError(f"bit_depth: {bit_depth} differs from the frame's "
-                                 f"{frame.bit_depth}")
-            bd = frame.bit_depth
             if reference:
                 if frame.reference is None:
                     raise ValueError("reference: the frame holds no reference Bayer CFA "
                                      "(frame.reference is None)")
                 data, pat = frame.reference, frame.pattern.bayer_pattern()
-            else:
-                data, pat = frame.data, frame.pattern
-            sensor = frame.meta.get("colour_sensor")
-            meta_black = getattr(sensor, "black_level", None)
-        else:
-            if reference:
-                raise ValueError("reference: needs a RawFrame with a reference CFA")
-            if pattern is None:
-                raise TypeError("pattern: required when frame is a plain array "
-                                "(pass a RawFrame, or pattern='bayer', 'mask1', ...)")
-            data = check_image(frame, "frame", ndim=2, dtypes=FRAME_DTYPES)
-            pat = get_pattern(pattern)
-            bd = check_bit_depth(11 if bit_depth is None else bit_depth)
-            RawFrame(data, pat, bd)                       # shape, range, finiteness
-            meta_black = None
+            meta_black = getattr(frame.meta.get("colour_sensor"), "black_level", None)
         if pat.bayer_phase is None:
             raise ValueError(f"pattern: {pat.name!r} fits no Bayer phase; the chain needs "
                              "a Bayer-derived pattern")

@@ -14,7 +14,7 @@ import numpy as np
 
 from .._patterns import Z
 from .._validate import check_flag, check_number
-from ._stages import _prepare_cfa
+from ._stages import _prepare_cfa, stage_params
 
 __all__ = ["DefectCorrection", "detect_defects", "correct_defects"]
 
@@ -78,18 +78,18 @@ def _colour_offsets(tile, py, px):
             if (dy, dx) != (0, 0) and tile[(py + dy) % P, (px + dx) % Q] == c]
 
 
-#: NaN cells around every phase plane (enough for the 5x5 window's reach of +-2 pixels
-#: on any tile, including phases one row or column shorter than others)
+#: NaN cells around every position plane (enough for the 5x5 window's reach of +-2 pixels
+#: on any tile, including planes one row or column shorter than others)
 _PAD = 3
 
 
-def _phase_planes(data, tile):
-    """The colour phases of the tile as contiguous float32 sub-images, NaN-padded.
+def _position_planes(data, tile):
+    """The colour positions of the tile as contiguous float32 sub-images, NaN-padded.
 
     ``planes[py, px]`` holds ``data[py::P, px::Q]`` (converted to float32, as
     the detection works in float32) inside a border of :data:`_PAD` NaN cells,
-    so that every same-colour neighbour of a phase is a shifted, unit-stride
-    view of one plane and a neighbour outside the frame is NaN. Z phases are
+    so that every same-colour neighbour of a position is a shifted, unit-stride
+    view of one plane and a neighbour outside the frame is NaN. Z positions are
     left out (no colour pixel has a Z neighbour of its colour, and a Z site is
     never read).
     """
@@ -108,9 +108,9 @@ def _phase_planes(data, tile):
     return planes
 
 
-def _phase_extremes(planes, tile, py, px, mx, mn):
-    """Max and min (float32) of the same-colour neighbours of every pixel of phase (py, px),
-    into the buffers ``mx`` and ``mn`` (of the phase's shape).
+def _position_extremes(planes, tile, py, px, mx, mn):
+    """Max and min (float32) of the same-colour neighbours of every pixel at tile position
+    (py, px), into the buffers ``mx`` and ``mn`` (of that plane's shape).
 
     Neighbours outside the frame do not count (NaN, skipped by fmax / fmin); a
     pixel without any neighbour gets NaN, which no test passes.
@@ -120,7 +120,7 @@ def _phase_extremes(planes, tile, py, px, mx, mn):
     views = []
     for dy, dx in _colour_offsets(tile, py, px):
         target = planes.get(((py + dy) % P, (px + dx) % Q))
-        if target is None:                        # a phase the (tiny) frame does not hold
+        if target is None:                        # a position the (tiny) frame does not hold
             continue
         sy, sx = _PAD + (py + dy) // P, _PAD + (px + dx) // Q
         views.append(target[sy:sy + h, sx:sx + w])
@@ -159,10 +159,10 @@ def _gather_neighbours(data, tile, rr, cc, dtype, hidden=None):
     H, W = data.shape
     P, Q = tile.shape
     out = np.full((rr.size, 24), np.nan)
-    phase = (rr % P) * Q + (cc % Q)
-    for ph in np.unique(phase):
-        sel = np.nonzero(phase == ph)[0]
-        offs = np.array(_colour_offsets(tile, ph // Q, ph % Q), np.int64).reshape(-1, 2)
+    position = (rr % P) * Q + (cc % Q)
+    for pos in np.unique(position):
+        sel = np.nonzero(position == pos)[0]
+        offs = np.array(_colour_offsets(tile, pos // Q, pos % Q), np.int64).reshape(-1, 2)
         r = rr[sel, None] + offs[:, 0]
         c = cc[sel, None] + offs[:, 1]
         inside = (r >= 0) & (r < H) & (c >= 0) & (c < W)
@@ -172,7 +172,7 @@ def _gather_neighbours(data, tile, rr, cc, dtype, hidden=None):
     return out
 
 
-def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047):
+def detect_defects(cfa, pattern, params=None, *, white_level=2047, **overrides):
     """Boolean map of the defective colour pixels (see :class:`DefectCorrection`).
 
     Parameters
@@ -181,7 +181,9 @@ def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047)
         Raw frame in DN (the values at Z sites are never read).
     pattern : Pattern or str
         The frame's pattern.
-    params : DefectCorrection
+    params : DefectCorrection, optional
+        Default ``DefectCorrection()``; keyword ``overrides`` replace its
+        fields (``threshold=0.05``).
     white_level : float
         Full scale in DN (``2**bit_depth - 1``).
 
@@ -191,8 +193,7 @@ def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047)
         False at every Z site.
     """
     data, pattern = _prepare_cfa(cfa, pattern)
-    if not isinstance(params, DefectCorrection):
-        raise TypeError(f"params: expected DefectCorrection, got {type(params).__name__}")
+    params = stage_params(DefectCorrection, params, overrides, caller="detect_defects()")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
     found = np.zeros(data.shape, bool)
     if params.enabled:
@@ -204,15 +205,15 @@ def detect_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047)
 def _detect_sites(data, tile, params, white_level):
     """Rows and columns of the defects :func:`detect_defects` flags (validated input).
 
-    Tests 1 and 2 run on every colour pixel, one tile phase at a time on
-    contiguous NaN-padded sub-images (:func:`_phase_planes`: Z sites are never
-    read), test 1 first on the whole phase and the rest on the few pixels that
+    Tests 1 and 2 run on every colour pixel, one tile position at a time on
+    contiguous NaN-padded sub-images (:func:`_position_planes`: Z sites are never
+    read), test 1 first on the whole plane and the rest on the few pixels that
     pass it; test 3 on the candidates only.
     """
     P, Q = tile.shape
     thr = np.float32(params.threshold * white_level)
     k = np.float32(params.spread_factor)
-    planes = _phase_planes(data, tile)
+    planes = _position_planes(data, tile)
     hmax = max(b.shape[0] for b in planes.values()) - 2 * _PAD if planes else 0
     wmax = max(b.shape[1] for b in planes.values()) - 2 * _PAD if planes else 0
     bufs = [np.empty((hmax, wmax), np.float32) for _ in range(4)]
@@ -221,11 +222,11 @@ def _detect_sites(data, tile, params, white_level):
         v = buf[_PAD:-_PAD, _PAD:-_PAD]
         h, w = v.shape
         mx, mn, hot, cold = (b[:h, :w] for b in bufs)
-        _phase_extremes(planes, tile, py, px, mx, mn)
+        _position_extremes(planes, tile, py, px, mx, mn)
         with np.errstate(invalid="ignore"):
             np.subtract(v, mx, out=hot)
             np.subtract(mn, v, out=cold)
-            # test 1 (thr > 0), which the rest needs, on the whole phase
+            # test 1 (thr > 0), which the rest needs, on the whole plane
             cand = np.greater(hot, thr)
             cand |= np.greater(cold, thr)
         i, j = np.nonzero(cand)
@@ -283,8 +284,8 @@ def _detect_sites(data, tile, params, white_level):
     return rr[ok], cc[ok]
 
 
-def correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047, known=None,
-                    return_mask=False):
+def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
+                    return_mask=False, **overrides):
     """Replace defective colour pixels by the median of their same-colour neighbours.
 
     Parameters
@@ -292,7 +293,9 @@ def correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047
     cfa : ndarray, shape (rows, cols)
         Raw frame in DN. The values at Z sites are neither read nor changed.
     pattern : Pattern or str
-    params : DefectCorrection
+    params : DefectCorrection, optional
+        Default ``DefectCorrection()``; keyword ``overrides`` replace its
+        fields.
     white_level : float
         Full scale in DN.
     known : ndarray of bool, shape (rows, cols), optional
@@ -309,8 +312,7 @@ def correct_defects(cfa, pattern, params=DefectCorrection(), *, white_level=2047
         Only with ``return_mask``.
     """
     data, pattern = _prepare_cfa(cfa, pattern)
-    if not isinstance(params, DefectCorrection):
-        raise TypeError(f"params: expected DefectCorrection, got {type(params).__name__}")
+    params = stage_params(DefectCorrection, params, overrides, caller="correct_defects()")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
     if known is not None:
         kn = np.asarray(known)

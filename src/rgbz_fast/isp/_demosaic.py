@@ -54,7 +54,8 @@ _colour_demosaicing = import_colour_demosaicing
 
 
 def _bayer_phase(phase):
-    """Return the phase string ("GRBG", ...) from a string or a plain-Bayer Pattern."""
+    """The Bayer arrangement ("GRBG", ...) that the ``phase`` argument names: a string or a
+    plain-Bayer Pattern."""
     if isinstance(phase, Pattern):
         if phase.has_z or phase.bayer_phase is None or phase.period != (2, 2):
             raise ValueError(f"phase: expected a plain 2x2 Bayer pattern, got pattern "
@@ -161,7 +162,7 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         ri = _period_index(a.shape[0], pad)
         ci = _period_index(a.shape[1], pad)
         padded = src[ri[:, None], ci[None, :]]
-        # the padding is an even number of pixels, so the padded CFA keeps the phase
+        # an even number of padding pixels keeps the padded CFA's Bayer arrangement
         rgb = fn(padded, ph)[pad:pad + a.shape[0], pad:pad + a.shape[1]]
     else:
         rgb = fn(src, ph)

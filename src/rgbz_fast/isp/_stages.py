@@ -8,19 +8,31 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .. import _kernels
 from .._patterns import get_pattern
-from .._validate import check_choice, check_dtype, check_flag, check_image, check_number
+from .._validate import (check_choice, check_dtype, check_flag, check_image, check_number,
+                         merge_params)
 from ..reconstruction import ReconstructParams, reconstruct
 from ..reconstruction import METHODS
 from ._demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES
 
 __all__ = ["Reconstruction", "WhiteBalance", "Demosaic", "ColourCorrection", "fill_missing",
            "grey_world_gains", "white_balance", "correct_colour", "srgb_oetf", "srgb_encode"]
+
+
+def stage_params(cls, params, overrides=None, *, name="params", caller=None, allow_none=True):
+    """The parameters of one stage call: ``params`` (a ``cls``, a dict of its fields or None,
+    the defaults) with keyword ``overrides`` of its fields (:func:`~rgbz_fast._validate.merge_params`,
+    checked once by ``cls``). Another type is a TypeError naming ``name``."""
+    if not (isinstance(params, (cls, Mapping)) or (allow_none and params is None)):
+        raise TypeError(f"{name}: expected {cls.__name__} or a dict of its fields"
+                        f"{' (or None)' if allow_none else ''}, got {type(params).__name__}")
+    return merge_params(cls, params, overrides, name=name, caller=caller)
 
 
 @dataclass(frozen=True)
@@ -149,11 +161,13 @@ def _prepare_cfa(cfa, pattern, name="cfa"):
     return data, pattern
 
 
-def fill_missing(cfa, pattern, params=Reconstruction(), *, bit_depth=11, workers=None):
+def fill_missing(cfa, pattern, params=None, *, bit_depth=11, workers=None, **overrides):
     """Reconstruct the colour missing at the Z sites: RGB-Z CFA -> full Bayer CFA.
 
     Delegates to :func:`rgbz_fast.reconstruct`. A pattern without Z sites
-    returns a copy of its input (the reference path).
+    returns a copy of its input (the reference path). ``params`` is a
+    :class:`Reconstruction` (default ``Reconstruction()``); keyword
+    ``overrides`` replace its fields (``method="bi"``).
 
     Returns
     -------
@@ -161,8 +175,7 @@ def fill_missing(cfa, pattern, params=Reconstruction(), *, bit_depth=11, workers
         The CFA of the underlying Bayer phase.
     """
     data, pattern = _prepare_cfa(cfa, pattern)
-    if not isinstance(params, Reconstruction):
-        raise TypeError(f"params: expected Reconstruction, got {type(params).__name__}")
+    params = stage_params(Reconstruction, params, overrides, caller="fill_missing()")
     if not pattern.has_z:
         return data.copy()
     return reconstruct(data, params.method, params=params.params, pattern=pattern,
@@ -220,8 +233,8 @@ def grey_world_gains(cfa, phase="GRBG", *, black_level=0.0, white_level=2047):
     return gains
 
 
-def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
-                  white_level=2047, gains=None, dtype=np.float32):
+def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_level=2047,
+                  gains=None, dtype=np.float32, **overrides):
     """Normalise a Bayer CFA and apply white-balance gains.
 
     ``(v - black) / (white - black) * gain[colour]``, clipped to [0, 1] when
@@ -232,7 +245,9 @@ def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
     cfa : ndarray, shape (rows, cols)
         Complete Bayer CFA in DN.
     phase : str or Pattern
-    params : WhiteBalance
+    params : WhiteBalance, optional
+        Default ``WhiteBalance()``; keyword ``overrides`` replace its fields
+        (``clip=False``, ``method="none"``).
     black_level, white_level : float
         DN.
     gains : array_like (3,), optional
@@ -249,8 +264,7 @@ def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
     """
     dt = check_dtype(dtype, (np.float32, np.float64))
     data = check_image(cfa, "cfa", ndim=2)
-    if not isinstance(params, WhiteBalance):
-        raise TypeError(f"params: expected WhiteBalance, got {type(params).__name__}")
+    params = stage_params(WhiteBalance, params, overrides, caller="white_balance()")
     pattern = get_pattern(phase)
     if pattern.has_z:
         raise ValueError(f"phase: the white balance needs a complete Bayer CFA, got pattern "
@@ -276,14 +290,16 @@ def white_balance(cfa, phase="GRBG", params=WhiteBalance(), *, black_level=0.0,
     return out, g
 
 
-def correct_colour(rgb, params=ColourCorrection()):
+def correct_colour(rgb, params=None, **overrides):
     """Apply the 3x3 colour correction and clip to [0, 1].
 
     Parameters
     ----------
     rgb : ndarray, shape (rows, cols, 3)
         Linear, white-balanced camera RGB.
-    params : ColourCorrection
+    params : ColourCorrection, optional
+        Default ``ColourCorrection()`` (the identity); keyword ``overrides``
+        replace its fields (``matrix=M``).
 
     Returns
     -------
@@ -292,8 +308,7 @@ def correct_colour(rgb, params=ColourCorrection()):
     a = check_image(rgb, "rgb", ndim=3)
     if a.shape[2] != 3:
         raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {a.shape}")
-    if not isinstance(params, ColourCorrection):
-        raise TypeError(f"params: expected ColourCorrection, got {type(params).__name__}")
+    params = stage_params(ColourCorrection, params, overrides, caller="correct_colour()")
     dt = a.dtype if a.dtype in (np.float32, np.float64) else np.dtype(np.float64)
     if params.matrix is None:
         out = a.astype(dt, copy=True)

@@ -352,10 +352,11 @@ class LearnedFilters:
         atomic_write(path, self.to_bytes())
 
     @classmethod
-    def load(cls, path, name="filters"):
-        """Read a file written by :meth:`save`; ValueError naming ``name`` if it is not one."""
+    def load(cls, path, name="filters", *, max_bytes=None):
+        """Read a file written by :meth:`save`; ValueError naming ``name`` if it is not one.
+        ``max_bytes``: the read limit (:func:`rgbz_fast.io.read_limits`)."""
         p = Path(path)
-        z = read_npz(p, name)                    # bounded, no pickles, zip bombs refused
+        z = read_npz(p, name, max_bytes=max_bytes)   # bounded, no pickles, zip bombs refused
         if "format" not in z or z["format"].dtype.kind not in "US" or str(z["format"]) != _MAGIC:
             raise ValueError(f"{name}: {p} is not a rgbz-fast filters file")
         try:

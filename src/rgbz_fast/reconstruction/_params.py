@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, fields, replace
 
-from .._validate import check_choice, check_number
+from .._validate import check_choice, check_number, merge_params
 from ._z_guided import check_any_filters
 
 __all__ = ["ReconstructParams", "PRECISIONS", "EXP_CHOICES", "SG_MODES", "DOMAINS"]
@@ -151,31 +151,15 @@ class ReconstructParams:
         return tuple(f.name for f in fields(cls))
 
     @classmethod
-    def build(cls, params=None, options=None, *, name="params"):
+    def build(cls, params=None, options=None, *, name="params", caller="reconstruct()"):
         """``params`` (a ReconstructParams, a mapping of fields or None) with ``options`` applied.
 
-        Unknown option names are a TypeError naming them, as Python gives for an
-        unexpected keyword argument.
+        :func:`~rgbz_fast._validate.merge_params`, the library's one parameter
+        rule: unknown option names are a TypeError naming them, as Python gives
+        for an unexpected keyword argument of ``caller``.
         """
-        if params is None:
-            params = cls()
-        elif isinstance(params, dict):
-            params = _from_mapping(cls, params, name)
-        elif not isinstance(params, cls):
-            raise TypeError(f"{name}: expected a ReconstructParams, a dict of its fields or "
-                            f"None, got {type(params).__name__}")
-        if options:
-            params = _from_mapping(cls, {**params.as_dict(), **options}, "reconstruct()")
-        return params
-
-
-def _from_mapping(cls, mapping, name):
-    names = cls.field_names()
-    unknown = sorted(k for k in mapping if k not in names)
-    if unknown:
-        raise TypeError(f"{name} got an unexpected keyword argument {unknown[0]!r} "
-                        f"(reconstruction options: {', '.join(names)})")
-    return cls(**mapping)
+        return merge_params(cls, params, options, name=name, caller=caller,
+                            what="reconstruction options")
 
 
 def check_clip_level(value):

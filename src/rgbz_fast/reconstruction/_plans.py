@@ -1,7 +1,7 @@
-"""Per-phase reconstruction plans: which kernel pixels each method reads and how.
+"""Reconstruction plans, one per Z site of a tile: which kernel pixels each method reads and how.
 
-A *plan* describes the reconstruction of the missing pixels of one phase of a
-pattern (one Z position of its tile): the kernel offsets to gather (taps), the
+A *plan* describes the reconstruction of the missing pixels at one Z site of
+a pattern's tile (every pixel at that position of the tiled frame): the kernel offsets to gather (taps), the
 candidates (known pixels of the target colour) with their distance factor and
 orientation, and the pixel pairs whose absolute differences form the
 gradients and semi-gradients. The C kernel interprets plans; all the channel
@@ -188,9 +188,9 @@ def colour_difference_estimates(ch, positions, target):
 
 def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
                 domain: str = "intensity"):
-    """Return ``(phase_map, plans)`` for ``pattern`` and ``method``.
+    """Return ``(plan_map, plans)`` for ``pattern`` and ``method``.
 
-    phase_map : int32 array of size P*Q, the plan index of each tile site or -1.
+    plan_map : int32 array of size P*Q, the plan index of each tile site or -1.
     plans : structured array of PLAN_DTYPE.
 
     Raises ValueError when the method does not apply to the pattern.
@@ -200,7 +200,7 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
     P, Q = pattern.period
     tile = pattern.tile
     btile = pattern.bayer_tile()           # raises for patterns with no underlying Bayer
-    phase_map = np.full(P * Q, -1, np.int32)
+    plan_map = np.full(P * Q, -1, np.int32)
     plans = []
 
     def ch(r, c, dy, dx):
@@ -323,10 +323,10 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
             plan["n_taps"] = len(taps)
             for off, t in taps.items():
                 plan["tap_dy"][t], plan["tap_dx"][t] = off
-            phase_map[r * Q + c] = len(plans)
+            plan_map[r * Q + c] = len(plans)
             plans.append(plan)
 
     arr = np.zeros(len(plans), PLAN_DTYPE)
     for i, plan in enumerate(plans):
         arr[i] = plan
-    return phase_map, arr
+    return plan_map, arr

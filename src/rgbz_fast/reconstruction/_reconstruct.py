@@ -8,14 +8,15 @@ References
 
 from __future__ import annotations
 
+import contextvars
+from contextlib import contextmanager
 from functools import lru_cache
 
 import numpy as np
 
 from .. import _kernels
-from .._frame import RawFrame, raw_clip_level, validate_frame
-from .._patterns import get_pattern
-from .._validate import check_bit_depth, check_choice, check_workers, kernel_threads
+from .._frame import RawFrame, frame_inputs, raw_clip_level
+from .._validate import check_choice, check_workers, kernel_threads
 from ._learned import resolve_filters
 from ._z_guided import guide_grid, learned_only, resolve_z_filters, run_z_guided
 from ._params import ReconstructParams
@@ -34,9 +35,26 @@ check_layout(_kernels.plan_layout())
 #: rgbz_precision and rgbz_exp_mode (csrc/rgbz.h)
 _PRECISION_CODES = dict(_kernels.PRECISIONS)
 _EXP_CODES = dict(_kernels.EXP_MODES)
-#: run the interior sites of Mask1 on the constant plans of csrc/recon_mask1.h (the Mask1
-#: fast path) where it applies; tests switch it off to compare it with the plans of _plans.py
-_MASK1_FAST = True
+#: whether reconstruct() may run the interior sites of Mask1 on the constant plans of
+#: csrc/recon_mask1.h (the Mask1 fast path) where it applies: False inside
+#: :func:`plans_only`, in that thread (or task) only
+_FAST_PATH = contextvars.ContextVar("rgbz_fast_mask1_fast_path", default=True)
+
+
+@contextmanager
+def plans_only():
+    """Within the block, :func:`reconstruct` runs every Z site on the plans of ``_plans.py``.
+
+    The Mask1 fast path (csrc/recon_mask1.h) is a faster formulation of the
+    same plans, equal to them within rounding; this lets a test run the
+    interpreter it stands in for. Only the calling thread is affected, and the
+    fast path is back when the block exits, also on an exception.
+    """
+    token = _FAST_PATH.set(False)
+    try:
+        yield
+    finally:
+        _FAST_PATH.reset(token)
 
 
 def has_mask1_geometry(pattern):
@@ -47,30 +65,21 @@ def has_mask1_geometry(pattern):
         pattern.bayer_tile()[pattern.tile == 3][0]) == 1
 
 
+def runs_mask1_fast_path(pattern, method, domain, clip_level=None):
+    """True where :func:`reconstruct` runs the Mask1 fast path (csrc/recon_mask1.h): a Mask1
+    geometry, a plan method other than ``edi_rows``, the intensity domain, no clip level
+    (the fast path has no clipped-pixel rule), outside :func:`plans_only`."""
+    return bool(_FAST_PATH.get() and clip_level is None and domain == "intensity"
+                and method != "edi_rows" and has_mask1_geometry(pattern))
+
+
 @lru_cache(maxsize=128)
 def _plans_for(pattern, method, sg_mode, domain):
-    phase_map, plans = build_plans(pattern, method, sg_mode, domain)
-    phase_map.setflags(write=False)
+    plan_map, plans = build_plans(pattern, method, sg_mode, domain)
+    plan_map.setflags(write=False)
     raw = plans.view(np.uint8).reshape(-1)
     raw.setflags(write=False)
-    return phase_map, raw, len(plans)
-
-
-def _prepare(frame, pattern, bit_depth):
-    """Return (data, pattern, bit_depth) from a RawFrame or an array plus pattern."""
-    if isinstance(frame, RawFrame):
-        if pattern is not None and get_pattern(pattern) != frame.pattern:
-            raise ValueError(f"pattern: {get_pattern(pattern).name!r} differs from the "
-                             f"frame's pattern {frame.pattern.name!r}")
-        if bit_depth is not None and check_bit_depth(bit_depth) != frame.bit_depth:
-            raise ValueError(f"bit_depth: {bit_depth} differs from the frame's {frame.bit_depth}")
-        return frame.data, frame.pattern, frame.bit_depth
-    if pattern is None:
-        raise TypeError("pattern: required when frame is a plain array "
-                        "(pass a RawFrame, or pattern='mask1', ...)")
-    pattern = get_pattern(pattern)
-    bd = check_bit_depth(11 if bit_depth is None else bit_depth)
-    return validate_frame(frame, pattern, bd, "frame"), pattern, bd
+    return plan_map, raw, len(plans)
 
 
 def _check_out(out, data):
@@ -203,7 +212,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     (dtype('uint16'), 1028, True)
     """
     params = ReconstructParams.build(params, options)
-    data, pattern, bd = _prepare(frame, pattern, bit_depth)
+    data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
     method = check_choice(method, METHODS, "method")
     nthreads = check_workers(workers)
     clip = _resolve_clip(params.clip_level, frame)
@@ -233,24 +242,22 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
                              "clip_level=None")
         run_z_guided(src, out, pattern, filters, grids, bd)
         return out
-    phase_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
+    plan_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     if clip is not None and not _reaches(src, pattern, clip):
         clip = None          # nothing clipped: exactly the clip_level=None call
-    _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bd, clip,
+    _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bd, clip,
                 kernel_threads(nthreads, src.size))
     return out
 
 
-def _run_kernel(src, out, pattern, method, params, phase_map, plans, n_plans, bit_depth, clip,
+def _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bit_depth, clip,
                 nthreads, opcounts=None, kernels=None):
     """One call of the C reconstruction (``kernels``: the counting extension for opcount)."""
-    # the Mask1 fast path knows nothing of clipping: clipped frames take the interpreter
-    fast = int(_MASK1_FAST and clip is None and params.domain == "intensity"
-               and method != "edi_rows" and has_mask1_geometry(pattern))
+    fast = int(runs_mask1_fast_path(pattern, method, params.domain, clip))
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
     k.reconstruct(src, out, _PRECISION_CODES[params.precision], pattern.period[0],
-                  pattern.period[1], phase_map, plans, n_plans, params.sigma_floor,
+                  pattern.period[1], plan_map, plans, n_plans, params.sigma_floor,
                   params.sigma_rel, params.edge_ratio, float((1 << bit_depth) - 1),
                   _EXP_CODES[params.exp_mode], nthreads, mask1_fast=fast, clip_level=clip,
                   **extra)
@@ -260,13 +267,13 @@ def run_learned(src, out, pattern, filters, precision, bit_depth, nthreads, opco
                 kernels=None):
     """One call of the learned kernel (csrc/learned.c); ``kernels``: the counting extension."""
     P, Q = pattern.period
-    phase_map = np.full(P * Q, -1, np.int32)
+    plan_map = np.full(P * Q, -1, np.int32)
     for k, ph in enumerate(filters.geometry):
         r, c = ph["rc"]
-        phase_map[r * Q + c] = k
+        plan_map[r * Q + c] = k
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
-    k.learned(src, out, _PRECISION_CODES[precision], P, Q, phase_map,
+    k.learned(src, out, _PRECISION_CODES[precision], P, Q, plan_map,
               maxval=float((1 << bit_depth) - 1), workers=nthreads, **filters.kernel_arrays(),
               **extra)
 

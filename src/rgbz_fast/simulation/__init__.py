@@ -20,10 +20,11 @@ The conventions (tap phases, noise chain, radiometry) are in the docstring of
 
 from .._frame import ToFTaps
 from .._sensors import SPEED_OF_LIGHT, ColourSensor, ToFSensor
+from ._loaders import (MIDDLEBURY_BASELINE_M, MIDDLEBURY_FOCAL_PX, load_image, load_rgbd,
+                       load_scene, load_spectral)
 from ._optics import Optics, apply_optics
-from ._scene import (CAVE_WAVELENGTHS, MIDDLEBURY_BASELINE_M, MIDDLEBURY_FOCAL_PX, Scene,
-                     disparity_to_depth, estimate_ir_reflectance, load_image, load_rgbd,
-                     load_scene, load_spectral, srgb_to_linear)
+from ._scene import (CAVE_WAVELENGTHS, Scene, disparity_to_depth, estimate_ir_reflectance,
+                     srgb_to_linear)
 from ._simulate import UnambiguousRangeWarning, simulate, simulate_colour, simulate_tof
 
 __all__ = [

@@ -12,11 +12,8 @@ A :class:`Scene` is what the RGB-Z sensor looks at (paper §5.1, Fig. 16):
   missing :meth:`Scene.ir_map` gives a documented estimate
   (:func:`estimate_ir_reflectance`).
 
-Loaders: :func:`load_image` (a plain image file), :func:`load_spectral`
-(a MATLAB ``.mat`` cube such as CAVE ``balloons_ms.mat`` or a folder with one
-band per PNG file), :func:`load_rgbd` (a Middlebury-style folder with
-``rgb.png``, ``disp1.png`` and ``dmin.txt``) and :func:`load_scene`, which
-picks one of them from what the path holds.
+The loaders of scene files are in :mod:`rgbz_fast.simulation._loaders`
+(:func:`~rgbz_fast.simulation.load_scene` and the three it picks from).
 
 Encodings
 ---------
@@ -42,36 +39,22 @@ References
 
 from __future__ import annotations
 
-import math
-import re
-from io import BytesIO
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from .._validate import check_choice, check_image, check_number
-from ..io._files import check_size, read_file, read_image, read_limits, rgb_image
 
-__all__ = [
-    "Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
-    "load_image", "load_spectral", "load_rgbd", "load_scene",
-    "CAVE_WAVELENGTHS", "MIDDLEBURY_FOCAL_PX", "MIDDLEBURY_BASELINE_M",
-]
+__all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
+           "CAVE_WAVELENGTHS"]
 
 #: Wavelengths (nm) of a 31-band CAVE cube: 400, 410, ..., 700.
 CAVE_WAVELENGTHS = tuple(float(400 + 10 * k) for k in range(31))
-#: Focal length (full-size pixels) of the Middlebury 2005/2006 stereo rigs.
-MIDDLEBURY_FOCAL_PX = 3740.0
-#: Baseline (metres) of the Middlebury 2005/2006 stereo rigs.
-MIDDLEBURY_BASELINE_M = 0.160
 
 #: IR reflectance estimate: rho_IR = _IR_OFFSET + _IR_SLOPE * (nearest visible band)
 _IR_OFFSET = 0.2
 _IR_SLOPE = 0.6
 _IR_BAND_NM = 650.0
-
-_IMAGE_SUFFIXES = {".png", ".tif", ".tiff", ".jpg", ".jpeg", ".bmp", ".ppm", ".pgm", ".webp"}
 
 
 # --------------------------------------------------------------------------
@@ -427,222 +410,3 @@ def _int_to_unit(img, name):
     if img.min() < 0:
         raise ValueError(f"{name}: signed integer data holds negative values")
     return img.astype(np.float64) / float(info.max)
-
-
-# --------------------------------------------------------------------------
-# loaders
-# --------------------------------------------------------------------------
-def _require_file(path, what):
-    p = Path(path)
-    if not p.exists():
-        raise FileNotFoundError(f"{what}: {p} not found")
-    return p                      # a folder, FIFO or device: the reader says what it is
-
-
-def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflectance=None,
-               name=None, grey=False):
-    """Load a plain image file (PNG, TIFF, JPEG, ...) as an RGB :class:`Scene`.
-
-    8- and 16-bit files are sRGB-encoded and linearised (16-bit PNGs at their
-    full precision); float TIFFs are linear. An alpha channel is dropped. A
-    grey image is refused unless ``grey=True`` (see :func:`rgbz_fast.io.rgb_image`).
-
-    Raises
-    ------
-    FileNotFoundError
-        If the file does not exist.
-    ValueError
-        If it is not an RGB(A) image (or a grey one with ``grey=True``), is
-        not a regular file, or is larger than the read limits
-        (:func:`rgbz_fast.io.read_limits`).
-    """
-    p = _require_file(path, "path")
-    img = rgb_image(read_image(p, "path"), p, grey=grey)
-    return Scene.from_rgb(img, encoding=encoding, depth=depth, depth_valid=depth_valid,
-                          ir_reflectance=ir_reflectance, name=name or p.stem,
-                          meta={"source": str(p)})
-
-
-def _natural_key(p):
-    return [int(t) if t.isdigit() else t.lower() for t in re.split(r"(\d+)", p.name)]
-
-
-def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_valid=None,
-                  ir_reflectance=None, name=None):
-    """Load a spectral cube: a MATLAB ``.mat`` file or a folder with one band per PNG file.
-
-    Parameters
-    ----------
-    path : str or Path
-        A ``.mat`` file (v5/v7, read with :func:`scipy.io.loadmat`) holding an
-        (H, W, K) array, or a folder of single-band PNG files (read in
-        natural order of their names: ``band_2`` before ``band_10``).
-    wavelengths : array_like, shape (K,), optional
-        Band centres in nm. Default: ``400 + 10*k`` (the CAVE convention,
-        400..700 nm for 31 bands); a ``.mat`` file's own ``wavelengths``
-        variable (or ``wavelength``, ``wl``, ``bands``) is used when present.
-    variable : str, optional
-        The variable of a ``.mat`` file; default ``Omsi`` (CAVE), else the
-        only 3-D numeric array in the file.
-
-    Raises
-    ------
-    FileNotFoundError
-        If the path or the folder's PNG files are missing.
-    ValueError
-        If the bands differ in shape or dtype, the variable is ambiguous or
-        missing, or the wavelengths do not match the band count.
-    """
-    p = Path(path)
-    meta = {"source": str(p)}
-    if p.is_dir():
-        files = sorted((f for f in p.iterdir() if f.suffix.lower() == ".png" and f.is_file()),
-                       key=_natural_key)
-        if not files:
-            raise FileNotFoundError(f"path: no PNG band files in folder {p}")
-        bands = []
-        for f in files:
-            b = read_image(f, "path")
-            if b.ndim != 2:
-                raise ValueError(f"path: band file {f.name} has shape {b.shape}; expected a "
-                                 "single-band (grey) image")
-            if bands and (b.shape != bands[0].shape or b.dtype != bands[0].dtype):
-                raise ValueError(f"path: band file {f.name} is {b.shape} {b.dtype}, but "
-                                 f"{files[0].name} is {bands[0].shape} {bands[0].dtype}; "
-                                 "every band must have the same size and bit depth")
-            bands.append(b)
-        cube = np.stack(bands, axis=-1)
-        meta["band_files"] = [f.name for f in files]
-        file_wl = None
-    elif p.exists():                       # a FIFO or a device: read_file says what it is
-        from scipy import io as sio
-
-        blob = read_file(p, "path")
-        try:
-            limits = read_limits()
-            for var, shape, kind in sio.whosmat(BytesIO(blob)):   # headers only
-                check_size(shape, 8, p, "path", limits=limits)
-            mat = sio.loadmat(BytesIO(blob))
-        except NotImplementedError:
-            raise ValueError(f"path: {p.name} is a MATLAB v7.3 (HDF5) file; save it with "
-                             "-v7 or read it with h5py and use Scene.from_spectral") from None
-        except ValueError as exc:
-            if str(exc).startswith("path: "):             # a size limit
-                raise
-            raise ValueError(f"path: cannot read {p} as a MATLAB .mat file ({exc})") from None
-        except Exception as exc:
-            raise ValueError(f"path: cannot read {p} as a MATLAB .mat file ({exc})") from None
-        arrays = {k: v for k, v in mat.items() if not k.startswith("__")}
-        if variable is None:
-            if "Omsi" in arrays:
-                variable = "Omsi"
-            else:
-                cubes = [k for k, v in arrays.items() if isinstance(v, np.ndarray)
-                         and v.ndim == 3 and np.issubdtype(v.dtype, np.number)]
-                if len(cubes) != 1:
-                    raise ValueError(f"variable: {p.name} holds {len(cubes)} 3-D arrays "
-                                     f"({cubes}); name the cube with variable=")
-                variable = cubes[0]
-        if variable not in arrays:
-            raise ValueError(f"variable: {variable!r} is not in {p.name} (it holds "
-                             f"{sorted(arrays)})")
-        cube = np.asarray(arrays[variable])
-        if cube.ndim != 3:
-            raise ValueError(f"variable: {variable!r} has shape {cube.shape}; expected (H, W, K)")
-        file_wl = None
-        for k in ("wavelengths", "wavelength", "wl", "bands"):
-            if k in arrays:
-                file_wl = np.asarray(arrays[k], dtype=np.float64).ravel()
-                break
-        meta["variable"] = variable
-    else:
-        raise FileNotFoundError(f"path: {p} not found")
-    k = cube.shape[2]
-    if wavelengths is None:
-        wavelengths = file_wl if file_wl is not None else 400.0 + 10.0 * np.arange(k)
-    return Scene.from_spectral(cube, wavelengths, depth=depth, depth_valid=depth_valid,
-                               ir_reflectance=ir_reflectance,
-                               name=name or (p.stem if p.is_file() else p.name), meta=meta)
-
-
-def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BASELINE_M,
-              ir_reflectance=None, name=None, grey=False):
-    """Load a Middlebury-style RGB-D folder: ``rgb.png``, ``disp1.png``, ``dmin.txt``.
-
-    The depth is ``Z = focal_px * baseline_m / (v + dmin)`` with ``v`` the
-    value of ``disp1.png`` (full-size pixels at every stored resolution) and
-    ``v = 0`` unknown: with the defaults (f = 3740 px, B = 160 mm),
-    ``Z[mm] = 3740*160/(v + dmin)``. Unknown pixels are filled with the
-    nearest known depth and marked in ``Scene.depth_valid``.
-
-    Note that Middlebury's Z is measured along the optical axis; the scene
-    uses it as the distance the ToF pixels see (the line-of-sight distance is
-    at most about 3 % longer at the corners of these images).
-
-    Raises
-    ------
-    FileNotFoundError
-        If the folder or one of the three files is missing (all missing files
-        are named).
-    ValueError
-        If ``dmin.txt`` is not a number, ``disp1.png`` is not a single-band
-        image of the size of ``rgb.png``, or no pixel has a disparity.
-    """
-    d = Path(folder)
-    if not d.is_dir():
-        raise FileNotFoundError(f"folder: {d} is not a folder")
-    needed = ("rgb.png", "disp1.png", "dmin.txt")
-    missing = [n for n in needed if not (d / n).is_file()]
-    if missing:
-        raise FileNotFoundError(f"folder: {d} lacks {', '.join(missing)} (an RGB-D scene "
-                                f"folder holds {', '.join(needed)})")
-    text = read_file(d / "dmin.txt", "folder", max_bytes=4096).decode("utf-8", "replace").strip()
-    try:
-        dmin = float(text.split()[0])
-    except (ValueError, IndexError):
-        raise ValueError(f"folder: {d / 'dmin.txt'} should hold one number (the disparity "
-                         f"offset), got {text[:40]!r}") from None
-    if not math.isfinite(dmin) or dmin < 0:
-        raise ValueError(f"folder: dmin.txt gives {dmin}; expected a disparity offset >= 0")
-    rgb = rgb_image(read_image(d / "rgb.png", "folder"), d / "rgb.png", "folder", grey=grey)
-    disp = read_image(d / "disp1.png", "folder")
-    if disp.ndim == 3 and disp.shape[2] in (3, 4) and np.all(disp[..., 0:1] == disp[..., :3]):
-        disp = disp[..., 0]
-    if disp.ndim != 2:
-        raise ValueError(f"folder: disp1.png has shape {disp.shape}; expected a grey image")
-    if disp.shape != rgb.shape[:2]:
-        raise ValueError(f"folder: disp1.png is {disp.shape[1]}x{disp.shape[0]} but rgb.png is "
-                         f"{rgb.shape[1]}x{rgb.shape[0]}; they must be the same size")
-    try:
-        return Scene.from_rgb(rgb, disparity=disp, focal_px=focal_px, baseline_m=baseline_m,
-                              disparity_offset=dmin, invalid_disparity=0,
-                              ir_reflectance=ir_reflectance, name=name or d.name,
-                              meta={"source": str(d), "dmin": dmin})
-    except ValueError as exc:
-        raise ValueError(f"folder: {d}: {exc}") from None
-
-
-def load_scene(path, **kwargs):
-    """Load a scene from a path, choosing the loader from what it holds.
-
-    * a folder with ``disp1.png`` -> :func:`load_rgbd`;
-    * a ``.mat`` file or a folder of PNG files -> :func:`load_spectral`;
-    * an image file -> :func:`load_image`.
-
-    Keyword arguments go to the chosen loader; ``grey`` (see
-    :func:`rgbz_fast.io.rgb_image`) to the RGB ones only.
-    """
-    p = Path(path)
-    grey = kwargs.pop("grey", False)
-    if p.is_dir():
-        if (p / "disp1.png").exists() or (p / "rgb.png").exists():
-            return load_rgbd(p, grey=grey, **kwargs)
-        return load_spectral(p, **kwargs)
-    if not p.exists():
-        raise FileNotFoundError(f"path: {p} not found")
-    if p.suffix.lower() == ".mat":
-        return load_spectral(p, **kwargs)
-    if p.suffix.lower() in _IMAGE_SUFFIXES:
-        return load_image(p, grey=grey, **kwargs)
-    raise ValueError(f"path: cannot tell what kind of scene {p.name} holds; expected an image "
-                     "file, a .mat cube or a scene folder")

@@ -56,7 +56,8 @@ returns as a real pixel does ("flying pixels").
 
 Noise model (both sensors)
 --------------------------
-Per pixel (colour) or per tap (ToF), in electrons ``e``:
+Per pixel (colour) or per tap (ToF), in electrons ``e``
+(:func:`rgbz_fast.simulation._noise.expose`):
 
 1. mean signal ``mu``; PRNU multiplies it by a fixed gain ``1 + prnu * N1``;
 2. dark current adds ``dark_current * t``; shot noise draws
@@ -97,20 +98,13 @@ from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
 from .._validate import check_seed
+from ._loaders import load_scene
+from ._noise import (STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
+                     STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, expose)
 from ._optics import Optics, _convolve, apply_optics
-from ._scene import Scene, estimate_ir_reflectance, load_scene
+from ._scene import Scene, estimate_ir_reflectance
 
 __all__ = ["UnambiguousRangeWarning", "simulate", "simulate_colour", "simulate_tof"]
-
-# sub-stream keys of the random generators: temporal noise follows the frame
-# seed, fixed-pattern noise the sensor's fpn_seed; each model has its own
-# stream so that running (or not running) one never changes the other.
-_STREAM_COLOUR_TEMPORAL = 0
-_STREAM_COLOUR_FPN = 1
-_STREAM_TOF_TEMPORAL = 2
-_STREAM_TOF_FPN = 3
-_STREAM_TOF_DELAY = 4
-
 
 class UnambiguousRangeWarning(RuntimeWarning):
     """A scene depth lies beyond the unambiguous range of the ToF frequencies."""
@@ -216,63 +210,6 @@ def _auto_exposure(rate, sensor):
     return sensor.ae_target * sensor.usable_electrons() / level
 
 
-def _fpn_maps(seed, stream, shape, dsnu, prnu):
-    """Fixed-pattern maps (PRNU gain, DSNU offset), None when off.
-
-    Both standard-normal maps are always drawn, in a fixed order, so that
-    turning one term off leaves the other's pattern unchanged.
-    """
-    if dsnu == 0 and prnu == 0:
-        return None, None
-    rng = np.random.default_rng([seed, stream])
-    n = rng.standard_normal((2,) + tuple(shape))
-    gain = 1.0 + prnu * n[0] if prnu else None
-    offset = dsnu * n[1] if dsnu else None
-    return gain, offset
-
-
-def _expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
-            fpn_shape=None, suppress=None):
-    """Mean electrons -> DN through the noise chain of the module docstring.
-
-    ``mean_e`` is the mean signal (before PRNU), ``dark_e`` the mean dark
-    signal. The fixed-pattern maps have shape ``fpn_shape`` (default
-    ``mean_e.shape``) and broadcast against ``mean_e`` from the right: the
-    ToF draws one map per physical tap, (4, n), shared by every frequency.
-    ``suppress`` (electrons, broadcast against ``mean_e``) is drained after
-    the shot noise and before the well (the ToF ambient suppression).
-    Returns the DN array and a bool array of the samples at full well or
-    full scale.
-    """
-    gain = offset = None
-    if noise:
-        gain, offset = _fpn_maps(sensor.fpn_seed, fpn_stream,
-                                 mean_e.shape if fpn_shape is None else fpn_shape,
-                                 sensor.dsnu, sensor.prnu)
-    e = mean_e if gain is None else np.maximum(mean_e * gain, 0.0)
-    e = e + dark_e
-    rng = None
-    if noise and (sensor.shot_noise or sensor.read_noise > 0):
-        rng = np.random.default_rng([seed, temporal_stream])
-    if rng is not None and sensor.shot_noise:
-        e = rng.poisson(e).astype(np.float64)
-    if suppress is not None:
-        e = e - suppress
-    if offset is not None:
-        e = e + offset
-    well_full = e >= sensor.full_well
-    e = np.minimum(e, sensor.full_well)
-    if rng is not None and sensor.read_noise > 0:
-        e = e + sensor.read_noise * rng.standard_normal(e.shape)
-    dn = sensor.black_level + sensor.system_gain * e
-    if sensor.quantise:
-        dn = np.floor(dn + 0.5)
-    top = sensor.white_level
-    saturated = well_full | (dn >= top)
-    dn = np.clip(dn, 0, top)
-    return (dn.astype(np.uint16) if sensor.quantise else dn), saturated
-
-
 def _check_optics(optics):
     if optics is not None and not isinstance(optics, Optics):
         raise TypeError(f"optics: expected an Optics or None, got {type(optics).__name__}")
@@ -332,10 +269,10 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
     optics = _check_optics(optics)
     rate = _colour_signal_rate(scene, sensor, colour_map, optics)
     exposure = _auto_exposure(rate, sensor) if sensor.exposure == "auto" else sensor.exposure
-    dn, saturated = _expose(rate * exposure, sensor.dark_current * exposure, sensor,
-                            noise=bool(noise), seed=seed,
-                            temporal_stream=_STREAM_COLOUR_TEMPORAL,
-                            fpn_stream=_STREAM_COLOUR_FPN)
+    dn, saturated = expose(rate * exposure, sensor.dark_current * exposure, sensor,
+                           noise=bool(noise), seed=seed,
+                           temporal_stream=STREAM_COLOUR_TEMPORAL,
+                           fpn_stream=STREAM_COLOUR_FPN)
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
             "saturated": float(saturated.mean()), "spectral": scene.is_spectral,
             "noise": bool(noise), "seed": seed, "scene": scene.name}
@@ -415,7 +352,7 @@ def _pixel_delays(sensor, n):
     (drawn from ``fpn_seed`` on a stream of its own, so the PRNU/DSNU maps do not change)."""
     delay = np.full(n, sensor.delay_ps)
     if sensor.delay_fpn_ps:
-        rng = np.random.default_rng([sensor.fpn_seed, _STREAM_TOF_DELAY])
+        rng = np.random.default_rng([sensor.fpn_seed, STREAM_TOF_DELAY])
         delay += sensor.delay_fpn_ps * rng.standard_normal(n)
     return delay
 
@@ -508,10 +445,10 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         valid = valid & ~beyond
 
     suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
-    taps, sat = _expose(mean, sensor._dark_electrons, sensor,
-                        noise=bool(noise), seed=seed, temporal_stream=_STREAM_TOF_TEMPORAL,
-                        fpn_stream=_STREAM_TOF_FPN, fpn_shape=mean.shape[1:],
-                        suppress=suppress)
+    taps, sat = expose(mean, sensor._dark_electrons, sensor,
+                       noise=bool(noise), seed=seed, temporal_stream=STREAM_TOF_TEMPORAL,
+                       fpn_stream=STREAM_TOF_FPN, fpn_shape=mean.shape[1:],
+                       suppress=suppress)
     meta = {"noise": bool(noise), "seed": seed, "pattern": pattern.name,
             "integration_time": sensor.integration_time,
             "system_gain": sensor.system_gain,
@@ -559,7 +496,7 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         pixels (each channel over its band, :func:`simulate_colour`) and the
         returned light for the Z pixels (at the laser wavelength and
         ``tof_sensor.f_number``, :func:`simulate_tof`). None (the default):
-        no blur, as before optics existed.
+        no blur: the scene's values reach the pixels as they are.
 
     Returns
     -------

@@ -13,13 +13,17 @@ cyclic error and per-pixel phase offsets from a flat-wall sweep
 """
 
 from ._calibration import ToFCalibration, calibrate
-from ._depth import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
-                     FLAG_SATURATED, MAX_WRAPS, ToFDepth, ToFISP, demodulate, demodulate_unwrap,
-                     denoise_phasors, phasors, tof_depth, unambiguous_range, unwrap)
-from ._filters import denoise_phasors_bilateral, flying_pixels
+from ._chain import ToFISP, tof_depth
+from ._filters import denoise_phasors_bilateral
+from ._guided import upsample_depth
+from ._result import ToFDepth
+from ._stages import (MAX_WRAPS, demodulate, demodulate_unwrap, denoise_phasors, phasors,
+                      unambiguous_range, unwrap)
+from ._validity import (FLAG_FLYING, FLAG_INCONSISTENT, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
+                        FLAG_RESOLVED, FLAG_SATURATED, ToFFlag, flying_pixels)
 
 __all__ = ["ToFISP", "ToFDepth", "tof_depth", "demodulate", "phasors", "denoise_phasors",
            "denoise_phasors_bilateral", "flying_pixels", "unwrap", "demodulate_unwrap",
-           "unambiguous_range", "calibrate", "ToFCalibration", "MAX_WRAPS",
+           "unambiguous_range", "calibrate", "ToFCalibration", "MAX_WRAPS", "ToFFlag",
            "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
-           "FLAG_OUT_OF_RANGE"]
+           "FLAG_OUT_OF_RANGE", "FLAG_RESOLVED", "upsample_depth"]

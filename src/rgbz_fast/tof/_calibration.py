@@ -219,10 +219,12 @@ class ToFCalibration:
         return path
 
     @classmethod
-    def load(cls, path):
-        """Read a file written by :meth:`save` (ValueError naming ``path`` if it is not one)."""
+    def load(cls, path, *, max_bytes=None):
+        """Read a file written by :meth:`save` (ValueError naming ``path`` if it is not one);
+        ``max_bytes``: the read limit (:func:`rgbz_fast.io.read_limits`)."""
         path = Path(path)
-        arrays = read_npz(path, "path", required=("header",))   # bounded, no pickles
+        arrays = read_npz(path, "path", required=("header",),      # bounded, no pickles
+                          max_bytes=max_bytes)
         try:
             header = json.loads(str(arrays.pop("header")))
         except (ValueError, RecursionError) as exc:

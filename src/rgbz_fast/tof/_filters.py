@@ -1,6 +1,6 @@
-"""Edge-aware stages of the ToF ISP: the bilateral phasor denoise and the flying-pixel test.
+"""The edge-aware denoise of the ToF ISP: the bilateral phasor mean on the grid of the Z measurements.
 
-Both work on the grid of the Z measurements (one cell per distinct row and
+It works on the grid of the Z measurements (:class:`SiteGrid`: one cell per distinct row and
 column of their top-left pixels: Mask1's Z sites, Mask2's 2x2 Z pixels, the
 Z pixels of the ``rows`` pattern), with the neighbourhood rule of the paper's
 denoise (:func:`~rgbz_fast.tof.denoise_phasors`): measurement ``m`` is in the
@@ -35,22 +35,9 @@ there). The weights are box-shaped in space (the window), and the variance
 of every mean follows from them: ``sum w^2 v / (sum w)^2``, which
 :func:`~rgbz_fast.tof.tof_depth` turns into the depth noise ``sigma``.
 
-Flying pixels
--------------
-A measurement next to a depth discontinuity may mix the two surfaces (a 2x2
-Z pixel straddling the edge, the lens blur, a window the denoise could not
-split): its depth then lies anywhere between them. :func:`flying_pixels`
-takes second differences of the depths along the rows, columns and
-diagonals of the grid -- ~0 on any surface, sloped or not -- and where one
-jumps by more than ``max(step, 2 x its noise)`` flags the two measurements
-across the jump: the band of measurements along each depth edge, on both
-sides (the ISP cannot tell which side of the edge a 2x2 pixel's charge came
-from) [2]_.
-
 References
 ----------
 .. [1] Tomasi and Manduchi, "Bilateral filtering for gray and color images" (docs/references.bib: tomasi1998bilateral)
-.. [2] Hansard et al., *Time-of-Flight Cameras: Principles, Methods and Applications*, ch. 1: flying pixels at depth discontinuities (docs/references.bib: hansard2013tof)
 """
 
 from __future__ import annotations
@@ -60,7 +47,7 @@ import numpy as np
 from .. import _kernels
 from .._validate import check_int, check_number, check_workers
 
-__all__ = ["SiteGrid", "denoise_phasors_bilateral", "flying_pixels"]
+__all__ = ["SiteGrid", "denoise_phasors_bilateral"]
 
 
 class SiteGrid:
@@ -92,12 +79,12 @@ class SiteGrid:
         self.n = rows.size
         self.block = block
         if not self._row_major(rows, cols):
-            self.rows_u, self.ri = np.unique(rows, return_inverse=True)
-            self.cols_u, self.ci = np.unique(cols, return_inverse=True)
+            self.rows_u, self._ri = np.unique(rows, return_inverse=True)
+            self.cols_u, self._ci = np.unique(cols, return_inverse=True)
             self.shape = (self.rows_u.size, self.cols_u.size)
             self.full = (self.n == self.shape[0] * self.shape[1]
-                         and np.array_equal(self.ri, np.arange(self.n) // self.shape[1])
-                         and np.array_equal(self.ci, np.arange(self.n) % self.shape[1]))
+                         and np.array_equal(self._ri, np.arange(self.n) // self.shape[1])
+                         and np.array_equal(self._ci, np.arange(self.n) % self.shape[1]))
         self.present = self.to_grid(np.ones(self.n, bool), False)
 
     def _row_major(self, rows, cols):
@@ -118,11 +105,24 @@ class SiteGrid:
                 and np.all(grid_r == line_r[:, None]) and np.all(grid_c == line_c[None])):
             return False
         self.rows_u, self.cols_u = line_r.copy(), line_c.copy()
-        self.ri = np.repeat(np.arange(nrows), ncols)
-        self.ci = np.tile(np.arange(ncols), nrows)
+        self._ri = self._ci = None             # made when asked for (a full grid reshapes)
         self.shape = (nrows, ncols)
         self.full = True
         return True
+
+    @property
+    def ri(self):
+        """Grid row of every measurement, shape (n,)."""
+        if self._ri is None:
+            self._ri = np.repeat(np.arange(self.shape[0]), self.shape[1])
+        return self._ri
+
+    @property
+    def ci(self):
+        """Grid column of every measurement, shape (n,)."""
+        if self._ci is None:
+            self._ci = np.tile(np.arange(self.shape[1]), self.shape[0])
+        return self._ci
 
     def to_grid(self, values, fill=0.0):
         """(..., n) -> (..., R, C); cells without a measurement hold ``fill``."""
@@ -201,8 +201,8 @@ def _check_phasor_planes(i, q, var, n_name="i, q"):
 
 def _bilateral_pass(z_re, z_im, v, g_re, g_im, gv, use, grid, radius_px, reach, inv_h2,
                     workers):
-    # reach: (rows, cols) grid steps that can lie within radius_px
-    """One pass of the C kernel on the grid (planes (F, R, C), ``use`` (R, C) uint8).
+    """One pass of the C kernel on the grid (planes (F, R, C), ``use`` (R, C) uint8); ``reach``:
+    the (rows, cols) grid steps that can lie within ``radius_px``.
 
     Returns the mean (re, im), its variance (F, R, C) and ``n_eff`` (R, C).
     """
@@ -299,96 +299,3 @@ def _check_odd(window, name):
         raise ValueError(f"{name}: expected an odd positive integer (5 = the paper's 5x5 "
                          f"kernel), got {window!r}")
     return w
-
-
-def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0):
-    """Measurements at a depth discontinuity (possible mixtures of two surfaces).
-
-    Along each of the four grid directions (rows, columns, both diagonals) the
-    second difference ``J = |d[m+e] - 2 d[m] + d[m-e]|`` is ~0 on a surface,
-    sloped or not, and jumps at a discontinuity; where it exceeds
-    ``max(step, k sqrt(s[m+e]^2 + 4 s[m]^2 + s[m-e]^2))``, ``m`` and the
-    neighbour across the larger of its two first differences are flagged: the
-    pair on either side of the discontinuity. A measurement halfway between
-    the two surfaces (a 50 % mixture) is on the straight line through its
-    neighbours but not through its neighbours' neighbours: it is flagged by the
-    differences centred on them. (A first difference would flag slopes: none is
-    used, so two usable measurements alone on a line -- a frame corner's
-    diagonal -- are not tested along it.)
-
-    Parameters
-    ----------
-    depth, sigma : ndarray, shape (n,)
-        Depth and its noise (m).
-    sites : (rows, cols) or SiteGrid
-        Top-left pixel of every measurement (or their grid, built once).
-    block : {1, 2}
-        Z pixel size in colour pixels.
-    step : float
-        Smallest jump (m) that counts as a discontinuity.
-    usable : ndarray of bool, shape (n,), optional
-        Measurements whose depth can be trusted (default all); the others
-        take part in no difference.
-    k : float
-        A jump must also exceed ``k`` times the noise of the difference.
-
-    Returns
-    -------
-    ndarray of bool, shape (n,)
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> rows, cols = (a * 2 for a in np.nonzero(np.ones((3, 8), bool)))
-    >>> step = np.where(cols < 8, 1.0, 1.3)                     # a 30 cm step
-    >>> flying_pixels(step, np.full(24, 0.002), (rows, cols)).reshape(3, 8)[0].astype(int)
-    array([0, 0, 0, 1, 1, 0, 0, 0])
-    >>> slope = 1.0 + 0.06 * cols                             # 12 cm per Z site, no edge
-    >>> bool(flying_pixels(slope, np.full(24, 0.002), (rows, cols)).any())
-    False
-    """
-    d = np.asarray(depth, np.float64)
-    s = np.asarray(sigma, np.float64)
-    grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
-    if d.shape != (grid.n,) or s.shape != (grid.n,):
-        raise ValueError(f"depth, sigma: expected shape ({grid.n},), got {d.shape} and "
-                         f"{s.shape}")
-    step = check_number(step, "step", lo=0)
-    ok = np.ones(grid.n, bool) if usable is None else np.asarray(usable, bool)
-    if ok.shape != (grid.n,):
-        raise ValueError(f"usable: expected shape ({grid.n},), got {ok.shape}")
-    R, C = grid.shape
-    # pad by one cell: every shift below is a slice
-    dg = np.zeros((R + 2, C + 2))
-    vg = np.zeros((R + 2, C + 2))
-    og = np.zeros((R + 2, C + 2), bool)
-    inner = (slice(1, R + 1), slice(1, C + 1))
-    good = ok & np.isfinite(s) & np.isfinite(d)
-    dg[inner] = grid.to_grid(np.where(good, d, 0.0))
-    vg[inner] = grid.to_grid(np.where(good, s * s, 0.0))
-    og[inner] = grid.to_grid(good, False) & grid.present
-    flag = np.zeros((R + 2, C + 2), bool)
-    k2 = k * k
-    step2 = step * step
-
-    def at(a, b):
-        return slice(1 + a, R + 1 + a), slice(1 + b, C + 1 + b)
-
-    for e in ((0, 1), (1, 0), (1, 1), (1, -1)):
-        lo, hi = at(-e[0], -e[1]), at(*e)
-        down = dg[inner] - dg[lo]                       # d[m] - d[m - e]
-        up = dg[hi] - dg[inner]                         # d[m + e] - d[m]
-        jump = up - down
-        jump *= jump
-        noise = vg[hi] + vg[lo]
-        noise += 4.0 * vg[inner]
-        noise *= k2
-        np.maximum(noise, step2, out=noise)
-        hit = og[inner] & og[lo] & og[hi] & (jump > noise)
-        # the pair across the discontinuity: the centre and its neighbour on the side of the
-        # larger first difference
-        toward_hi = np.abs(up) >= np.abs(down)
-        flag[inner] |= hit
-        flag[hi] |= hit & toward_hi
-        flag[lo] |= hit & ~toward_hi
-    return grid.from_grid(flag[inner] & og[inner])

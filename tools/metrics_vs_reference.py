@@ -1,6 +1,6 @@
 """The metric kernels beside their NumPy references: agreement on a dataset, speed side by side.
 
-    python benchmarks/metrics_vs_reference.py --dataset ../shared/data/kodak [--limit N]
+    python tools/metrics_vs_reference.py --dataset ../shared/data/kodak [--limit N]
         [--repeat 7] [--json FILE]
 
 Needs a source checkout (the references are tests/_reference/metrics.py, the former
@@ -16,8 +16,10 @@ the pixels whose |psi| > delta decision differs), and the largest |L*a*b*|
 difference of the CIELAB conversion against colour-science.
 
 Speed: on the first image's Mask1 SG pair, every metric timed in turn (C with
-1 thread, C with all threads, reference), after one warm-up call each, the
-median of ``--repeat`` rounds; the speedup is reference / C, same run.
+1 thread, C with all threads, reference) by the tools' one timing loop
+(``rgbz_fast._devtools.timing.interleaved``: one warm-up call each, then
+``--repeat`` rounds), the median of the rounds; the speedup is reference / C,
+same run.
 """
 
 from __future__ import annotations
@@ -27,15 +29,15 @@ import importlib.util
 import json
 import os
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 
 import rgbz_fast as rz
 from rgbz_fast import metrics
+from rgbz_fast._devtools.timing import WARMUP_CALLS, interleaved
 from rgbz_fast.evaluation import EvalConfig, image_frames
-from rgbz_fast.io import folder_dataset
+from rgbz_fast.io import atomic_write, folder_dataset
 
 REPO = Path(__file__).resolve().parents[1]
 CROP = 8
@@ -135,21 +137,14 @@ def speed(source, ref, config, repeat):
     allw = os.cpu_count() or 1
     out = {}
     for name, (c, r) in cases.items():
-        fns = {"c_1": lambda: c(1), "c_all": lambda: c(allw), "reference": r}
-        for fn in fns.values():                       # one warm-up call each
-            fn()
-        times = {k: [] for k in fns}
-        for _ in range(repeat):                       # in turn: a load change hits all alike
-            for k, fn in fns.items():
-                t0 = time.perf_counter()
-                fn()
-                times[k].append(time.perf_counter() - t0)
+        times = interleaved({"c_1": lambda: c(1), "c_all": lambda: c(allw), "reference": r},
+                            repeat)
         med = {k: float(np.median(v)) for k, v in times.items()}
         out[name] = dict(median_s=med, x_reference_1=med["reference"] / med["c_1"],
                          x_reference_all=med["reference"] / med["c_all"])
     return dict(image=source.name, pair="mask1 sg", shape=list(r8.shape), repeat=repeat,
-                warmup_calls=1, threads_all=allw, metrics_isa=rz._kernels.metrics_isa(),
-                cases=out)
+                warmup_calls=WARMUP_CALLS, threads_all=allw,
+                metrics_isa=rz._kernels.metrics_isa(), cases=out)
 
 
 def main(argv=None):
@@ -164,7 +159,7 @@ def main(argv=None):
     sources = folder_dataset(args.dataset, args.limit)
     config = EvalConfig()
     load0 = os.getloadavg()
-    res = {"command": "python benchmarks/metrics_vs_reference.py "
+    res = {"command": "python tools/metrics_vs_reference.py "
                       + " ".join(sys.argv[1:] if argv is None else argv),
            "images": len(sources), "loadavg_before": load0}
     res["speed"] = speed(sources[0], ref, config, args.repeat)
@@ -191,7 +186,7 @@ def main(argv=None):
             print(f"  zipper differs: {d['image']} {d['pattern']} {d['method']}: "
                   f"{d['zipper_c']} vs {d['zipper_reference']}, pixels {d['pixels'][:10]}")
     if args.json:
-        Path(args.json).write_text(json.dumps(res, indent=1))
+        atomic_write(args.json, json.dumps(res, indent=1))
     return 0
 
 

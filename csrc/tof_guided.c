@@ -1,0 +1,967 @@
+/*
+ * tof_guided.c -- the colour-guided ToF ISP (rgbz_fast.tof with guide=) and the guided
+ * upsampling of its depth (rgbz_fast.tof.upsample_depth). Declared in tof_guided.h.
+ *
+ * The chain, one entry point per stage (the Python layer allocates and calls them):
+ *   rgbz_tofg_prepare_*   taps -> phasors (float) and the noise variance of each measurement
+ *   rgbz_tofg_colour_*    the guide image at the measurements, and its noise (Immerkaer)
+ *   rgbz_tofg_pass        one 1-D pass of the cross-bilateral mean (rows or columns); two
+ *                         rounds of a row pass then a column pass make the 2-D mean
+ *   (rgbz_tof_depth_iq)   atan2, amplitude, unwrapping (tof.c)
+ *   rgbz_tofg_validity    snr, sigma, implied reflectance and the validity bits
+ *   rgbz_tofg_flying      the flying-pixel test with colour edges
+ *   rgbz_tofg_upsample_*  a depth at every pixel of the guide
+ *
+ * Why a row pass then a column pass: the column pass averages row-pass outputs of
+ * different grid rows, which share no measurement, so the variance of the 2-D mean is
+ * exactly sum w^2 var / (sum w)^2 of the column pass over the row-pass variances (for
+ * given weights), at 2L instead of L^2 neighbours per measurement for an L x L window.
+ * The NumPy reference of every stage is tests/_reference/tof.py; the filter computes in
+ * float (its sums hold at most a few hundred terms of one sign), the rest in double.
+ */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math", "tree-loop-vectorize", "vect-cost-model=dynamic")
+#endif
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "rgbz.h"
+#include "tof_guided.h"
+
+#define TOFG_PI 3.141592653589793
+/* a weight exp(-x) with x above this is 0: e^-36 = 2.3e-16 cannot change a mean */
+#define TOFG_CUT 36.0f
+
+/* an OpenMP loop over the iterations that follow, on a local `nth` threads (a _Pragma
+   string is not macro-expanded, so the name is fixed) */
+#ifdef _OPENMP
+#define TOFG_PARALLEL_FOR _Pragma("omp parallel for schedule(static) num_threads(nth)")
+static inline int tofg_nth(int w) { return w > 0 ? w : omp_get_max_threads(); }
+#else
+#define TOFG_PARALLEL_FOR
+static inline int tofg_nth(int w) { (void)w; return 1; }
+#endif
+
+/* the hot loops in three builds (AVX-512F, AVX2, baseline), picked at load time; every
+   build computes the same IEEE operations (C99 mode: GCC contracts no multiply-add into an
+   FMA), so the result does not depend on the CPU */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define TOFG_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define TOFG_CLONES
+#endif
+
+/* exp(-x) for x in [0, TOFG_CUT] in float, branch-free so that the weight loops vectorise:
+   2^(-x log2 e) = 2^-n 2^-f with n the nearest integer and f in [-0.5, 0.5], 2^-f by its
+   Taylor polynomial of degree 6 in f ln 2 (relative error below 3e-7), 2^-n by the exponent
+   bits. x >= TOFG_CUT gives 0. */
+static inline __attribute__((always_inline)) float tofg_exp_neg(float x)
+{
+    const float xc = x < TOFG_CUT ? x : TOFG_CUT;
+    const float y = xc * 1.44269504f;                          /* in [0, 52] */
+    const float n = (y + 12582912.0f) - 12582912.0f;            /* round to nearest */
+    const float t = (y - n) * 0.693147181f;
+    const float p = 1.0f - t * (1.0f - t * (0.5f - t * (1.0f / 6 - t * (1.0f / 24
+                    - t * (1.0f / 120 - t * (1.0f / 720))))));
+    const int32_t bits = (127 - (int32_t)n) << 23;
+    float scale;
+    memcpy(&scale, &bits, sizeof scale);
+    const float r = p * scale;
+    return x < TOFG_CUT ? r : 0.0f;
+}
+
+/* ------------------------------------------------------------------ prepare */
+#define TOFG_PREPARE(TS, T)                                                                   \
+int rgbz_tofg_prepare_##TS(const T *taps, ptrdiff_t F, ptrdiff_t N, double gain,             \
+                           double black, double supp, double const_var, double prnu,         \
+                           double white, float *zr, float *zi, float *v, uint8_t *sat,       \
+                           double *offset, int workers)                                      \
+{                                                                                            \
+    if (!taps || !zr || !zi || !v || !sat || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)       \
+        return RGBZ_EINVAL;                                                                  \
+    const double inv_f = 2.0 / (double)F, k = gain * supp;                                   \
+    const int nth = tofg_nth(workers);                                                       \
+    (void)nth;                                                                               \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256) {                                              \
+        const ptrdiff_t nb = N - b0 < 256 ? N - b0 : 256;                                    \
+        double acc[256];                                                                     \
+        uint8_t hit[256];                                                                    \
+        for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }                     \
+        for (ptrdiff_t f = 0; f < F; f++) {                                                  \
+            const T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,              \
+                    *A3 = A0 + 3 * N;                                                        \
+            float *pr = zr + f * N + b0, *pi = zi + f * N + b0;                              \
+            for (ptrdiff_t j = 0; j < nb; j++) {                                             \
+                const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];                 \
+                pr[j] = (float)(a0 - a2);                                                    \
+                pi[j] = (float)(a3 - a1);                                                    \
+                const double off = 0.25 * ((a0 + a1) + (a2 + a3));                           \
+                if (offset) offset[f * N + b0 + j] = off;                                    \
+                double held = off - black;                                                   \
+                held = held > 0.0 ? held : 0.0;                                              \
+                const double ph = prnu * held;                                               \
+                acc[j] += k * held + const_var + ph * ph;                                    \
+                const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;               \
+                const double mx = m01 > m23 ? m01 : m23;                                     \
+                hit[j] |= (uint8_t)(mx >= white);                                            \
+            }                                                                                \
+        }                                                                                    \
+        for (ptrdiff_t j = 0; j < nb; j++) {                                                 \
+            v[b0 + j] = (float)(acc[j] * inv_f);                                             \
+            sat[b0 + j] |= hit[j];                                                           \
+        }                                                                                    \
+    }                                                                                        \
+    return RGBZ_OK;                                                                          \
+}
+
+TOFG_PREPARE(u16, uint16_t)
+TOFG_PREPARE(f32, float)
+TOFG_PREPARE(f64, double)
+
+/* ------------------------------------------------------------------ the guide's colours */
+static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers);
+
+#define TOFG_COLOUR(TS, T)                                                                    \
+int rgbz_tofg_colour_##TS(const T *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,    \
+                          ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block,         \
+                          double scale, float *col, float *cells, double *lap, int workers)   \
+{                                                                                            \
+    if (!guide || !row_px || !col_px || !col || !lap || R < 0 || C < 0 || block < 1          \
+        || block > 2)                                                                        \
+        return RGBZ_EINVAL;                                                                  \
+    const ptrdiff_t N = R * C;                                                               \
+    const double cell_w = scale / (double)(block * block);                                   \
+    for (ptrdiff_t r = 0; r < R; r++)                                                        \
+        if (row_px[r] < 0 || row_px[r] + block > H) return RGBZ_EINVAL;                      \
+    for (ptrdiff_t c = 0; c < C; c++)                                                        \
+        if (col_px[c] < 0 || col_px[c] + block > W) return RGBZ_EINVAL;                      \
+    const int nth = tofg_nth(workers);                                                       \
+    (void)nth;                                                                               \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t r = 0; r < R; r++) {                                                      \
+        for (ptrdiff_t c = 0; c < C; c++) {                                                  \
+            const ptrdiff_t n = r * C + c;                                                   \
+            double s[3] = {0.0, 0.0, 0.0};                                                   \
+            int k = 0;                                                                       \
+            for (int dr = 0; dr < block; dr++)                                               \
+                for (int dc = 0; dc < block; dc++, k++) {                                    \
+                    const T *p = guide + ((row_px[r] + dr) * W + col_px[c] + dc) * 3;        \
+                    for (int ch = 0; ch < 3; ch++) {                                         \
+                        s[ch] += (double)p[ch];                                              \
+                        if (cells) cells[(k * 3 + ch) * N + n] = (float)(p[ch] * scale);     \
+                    }                                                                        \
+                }                                                                            \
+            for (int ch = 0; ch < 3; ch++) col[ch * N + n] = (float)(s[ch] * cell_w);        \
+        }                                                                                    \
+    }                                                                                        \
+    tofg_laplacian(col, R, C, lap, workers);                                                 \
+    return RGBZ_OK;                                                                          \
+}
+
+/* sum over the interior of |L * plane| for L = [1 -2 1; -2 4 -2; 1 -2 1] (Immerkaer 1996),
+   per plane of col (3, R, C), in double */
+static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers)
+{
+    const ptrdiff_t N = R * C;
+    for (int ch = 0; ch < 3; ch++) {
+        const float *p = col + ch * N;
+        double total = 0.0;
+        const int nth = tofg_nth(workers);
+        (void)nth;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) reduction(+:total) num_threads(nth)
+#endif
+        for (ptrdiff_t r = 1; r < R - 1; r++) {
+            const float *a = p + (r - 1) * C, *b = p + r * C, *c = p + (r + 1) * C;
+            double row = 0.0;
+            for (ptrdiff_t x = 1; x < C - 1; x++) {
+                const double l = (double)a[x - 1] - 2.0 * a[x] + a[x + 1]
+                                 - 2.0 * b[x - 1] + 4.0 * b[x] - 2.0 * b[x + 1]
+                                 + (double)c[x - 1] - 2.0 * c[x] + c[x + 1];
+                row += fabs(l);
+            }
+            total += row;
+        }
+        lap[ch] = total;
+    }
+}
+
+TOFG_COLOUR(u8, uint8_t)
+TOFG_COLOUR(u16, uint16_t)
+TOFG_COLOUR(f32, float)
+TOFG_COLOUR(f64, double)
+
+/* ------------------------------------------------------------------ the 1-D passes */
+typedef struct {
+    const float *zr, *zi, *v, *nin, *gr, *gi, *gv, *col;
+    const uint8_t *use;
+    ptrdiff_t F, R, C;
+    int axis;
+    const int64_t *px;
+    ptrdiff_t reach;
+    int64_t radius_px;
+    float inv2h2, inv2hc2;
+    float *or_, *oi, *ov, *on;
+    double *or64, *oi64;
+} tofg_pass_args;
+
+/* the weights of one offset over the cells [c0, c1) of a row: w (0 or 1 on entry) times
+   exp(-(max(chi_p - 2F, 0) / (2 h^2) + max(chi_c - 3, 0) / (2 h_c^2))), chi_p from the
+   summed squared guide differences in chi (divided here by the two variances) */
+static inline __attribute__((always_inline)) void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_t row0,
+                                     ptrdiff_t c0, ptrdiff_t c1, float bias,
+                                     const float *restrict chi, float *restrict w)
+{
+    const ptrdiff_t N = p->R * p->C;
+    const float *gvn = p->gv + nbase, *gvm = p->gv + row0;
+    const float *a0 = p->col + nbase, *a1 = a0 + N, *a2 = a1 + N;
+    const float *b0 = p->col + row0, *b1 = b0 + N, *b2 = b1 + N;
+    const float ih = p->inv2h2, ic = p->inv2hc2;
+    for (ptrdiff_t c = c0; c < c1; c++) {
+        const float xp = chi[c] / (gvn[c] + gvm[c]) - bias;
+        const float d0 = a0[c] - b0[c], d1 = a1[c] - b1[c], d2 = a2[c] - b2[c];
+        const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
+        const float x = (xp > 0.0f ? xp : 0.0f) * ih + (xc > 0.0f ? xc : 0.0f) * ic;
+        w[c] *= tofg_exp_neg(x);
+    }
+}
+
+/* the output columns [clo, chi_) of row r, any layout; scratch: num_re, num_im (F C each),
+   den, w2v, w2n, chi, w (C each) */
+TOFG_CLONES static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
+                                      ptrdiff_t clo, ptrdiff_t chi_)
+{
+    const ptrdiff_t F = p->F, C = p->C, N = p->R * p->C;
+    const float bias = 2.0f * (float)F;
+    float *num_re = scratch, *num_im = num_re + F * C, *den = num_im + F * C;
+    float *w2v = den + C, *w2n = w2v + C, *chi = w2n + C, *w = chi + C;
+    for (ptrdiff_t f = 0; f < F; f++)
+        for (ptrdiff_t c = clo; c < chi_; c++) num_re[f * C + c] = num_im[f * C + c] = 0.0f;
+    for (ptrdiff_t c = clo; c < chi_; c++) den[c] = w2v[c] = w2n[c] = 0.0f;
+    const ptrdiff_t row0 = r * C;
+    for (ptrdiff_t a = -p->reach; a <= p->reach; a++) {
+        ptrdiff_t c0, c1, shift;
+        if (p->axis == 0) {                              /* along a column: rows r + a */
+            const ptrdiff_t rr = r + a;
+            if (rr < 0 || rr >= p->R) continue;
+            const int64_t d = p->px[rr] - p->px[r];
+            if (d < -p->radius_px || d > p->radius_px) continue;
+            c0 = 0;
+            c1 = C;
+            shift = a * C;
+        } else {                                         /* along the row: columns c + a */
+            c0 = a < 0 ? -a : 0;
+            c1 = a > 0 ? C - a : C;
+            shift = a;
+        }
+        c0 = c0 > clo ? c0 : clo;
+        c1 = c1 < chi_ ? c1 : chi_;
+        if (c1 <= c0) continue;
+        const ptrdiff_t nbase = row0 + shift;
+        for (ptrdiff_t c = c0; c < c1; c++) chi[c] = 0.0f;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const float *gr = p->gr + f * N, *gi = p->gi + f * N;
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                const float dre = gr[nbase + c] - gr[row0 + c];
+                const float dim = gi[nbase + c] - gi[row0 + c];
+                chi[c] += dre * dre + dim * dim;
+            }
+        }
+        /* w = 1 for a neighbour that may enter, 0 otherwise; then times its weight */
+        const uint8_t *use = p->use + nbase;
+        for (ptrdiff_t c = c0; c < c1; c++) w[c] = (float)(use[c] != 0);
+        if (p->axis == 1) {
+            const int64_t *px = p->px, rad = p->radius_px;
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                const int64_t d = px[c + shift] - px[c];
+                w[c] = (d >= -rad && d <= rad) ? w[c] : 0.0f;
+            }
+        }
+        if (p->nin) {
+            const float *nn = p->nin + nbase;
+            for (ptrdiff_t c = c0; c < c1; c++) w[c] = nn[c] > 0.0f ? w[c] : 0.0f;
+        }
+        tofg_weights(p, nbase, row0, c0, c1, bias, chi, w);
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const float *zr = p->zr + f * N + nbase, *zi = p->zi + f * N + nbase;
+            float *nr = num_re + f * C, *ni = num_im + f * C;
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                nr[c] += w[c] * zr[c];
+                ni[c] += w[c] * zi[c];
+            }
+        }
+        const float *vv = p->v + nbase;
+        if (p->nin) {
+            const float *nn = p->nin + nbase;
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                const float ww = w[c] * w[c];
+                den[c] += w[c];
+                w2v[c] += ww * vv[c];
+                w2n[c] += ww / (nn[c] > 0.0f ? nn[c] : 1.0f);     /* w = 0 where nn = 0 */
+            }
+        } else {
+            for (ptrdiff_t c = c0; c < c1; c++) {
+                const float ww = w[c] * w[c];
+                den[c] += w[c];
+                w2v[c] += ww * vv[c];
+                w2n[c] += ww;
+            }
+        }
+    }
+    for (ptrdiff_t c = clo; c < chi_; c++) {
+        const ptrdiff_t m = row0 + c;
+        const int ok = den[c] > 0.0f;
+        const float inv = ok ? 1.0f / den[c] : 0.0f;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const float mr = num_re[f * C + c] * inv, mi = num_im[f * C + c] * inv;
+            if (p->or64) {
+                p->or64[f * N + m] = mr;
+                p->oi64[f * N + m] = mi;
+            } else {
+                p->or_[f * N + m] = mr;
+                p->oi[f * N + m] = mi;
+            }
+        }
+        p->ov[m] = ok ? w2v[c] * (inv * inv) : HUGE_VALF;
+        if (p->nin)
+            p->on[m] = ok && w2n[c] > 0.0f ? 1.0f / (w2n[c] * (inv * inv)) : 0.0f;
+        else
+            p->on[m] = ok && w2n[c] > 0.0f ? den[c] * den[c] / w2n[c] : 0.0f;
+    }
+}
+
+/* The same mean for 16 output columns at once, the frequency count a compile-time constant:
+   the sums stay in registers over the taps (shift[t]: the offset of tap t in the planes;
+   every neighbour is on the grid and within the radius), the order of every sum the
+   generic row's (offsets in increasing order, frequencies in order). */
+#define TOFG_BW 16
+#define TOFG_UNROLL _Pragma("GCC unroll 4")
+static inline __attribute__((always_inline)) void tofg_block(
+    const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, int ntaps, const int NF)
+{
+    const ptrdiff_t N = p->R * p->C;
+    const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
+    float gr0[4][TOFG_BW], gi0[4][TOFG_BW], gv0[TOFG_BW], k0[TOFG_BW], k1[TOFG_BW],
+          k2[TOFG_BW];
+    float nr[4][TOFG_BW], ni[4][TOFG_BW], den[TOFG_BW], w2v[TOFG_BW], w2n[TOFG_BW];
+    for (int j = 0; j < TOFG_BW; j++) {
+        TOFG_UNROLL
+        for (int f = 0; f < NF; f++) {
+            gr0[f][j] = p->gr[f * N + m0 + j];
+            gi0[f][j] = p->gi[f * N + m0 + j];
+            nr[f][j] = ni[f][j] = 0.0f;
+        }
+        gv0[j] = p->gv[m0 + j];
+        k0[j] = p->col[m0 + j];
+        k1[j] = p->col[N + m0 + j];
+        k2[j] = p->col[2 * N + m0 + j];
+        den[j] = w2v[j] = w2n[j] = 0.0f;
+    }
+    for (int t = 0; t < ntaps; t++) {
+        const ptrdiff_t n0 = m0 + shift[t];
+        float w[TOFG_BW], rn[TOFG_BW];
+        /* w: 1 for a neighbour that may enter; rn: the reciprocal of its n_eff (1 in a first
+           pass) */
+        for (int j = 0; j < TOFG_BW; j++) {
+            w[j] = (float)(p->use[n0 + j] != 0);
+            rn[j] = 1.0f;
+        }
+        if (p->nin)
+            for (int j = 0; j < TOFG_BW; j++) {
+                const float nn = p->nin[n0 + j];
+                w[j] = nn > 0.0f ? w[j] : 0.0f;
+                rn[j] = 1.0f / (nn > 0.0f ? nn : 1.0f);
+            }
+        for (int j = 0; j < TOFG_BW; j++) {
+            float chi = 0.0f;
+            TOFG_UNROLL
+            for (int f = 0; f < NF; f++) {
+                const float dre = p->gr[f * N + n0 + j] - gr0[f][j];
+                const float dim = p->gi[f * N + n0 + j] - gi0[f][j];
+                chi += dre * dre + dim * dim;
+            }
+            const float xp = chi / (p->gv[n0 + j] + gv0[j]) - bias;
+            const float d0 = p->col[n0 + j] - k0[j], d1 = p->col[N + n0 + j] - k1[j];
+            const float d2 = p->col[2 * N + n0 + j] - k2[j];
+            const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
+            const float x = (xp > 0.0f ? xp : 0.0f) * ih + (xc > 0.0f ? xc : 0.0f) * ic;
+            w[j] *= tofg_exp_neg(x);
+        }
+        for (int j = 0; j < TOFG_BW; j++) {
+            TOFG_UNROLL
+            for (int f = 0; f < NF; f++) {
+                nr[f][j] += w[j] * p->zr[f * N + n0 + j];
+                ni[f][j] += w[j] * p->zi[f * N + n0 + j];
+            }
+            const float ww = w[j] * w[j];
+            den[j] += w[j];
+            w2v[j] += ww * p->v[n0 + j];
+            w2n[j] += ww * rn[j];
+        }
+    }
+    for (int j = 0; j < TOFG_BW; j++) {
+        const ptrdiff_t m = m0 + j;
+        const int ok = den[j] > 0.0f;
+        const float inv = ok ? 1.0f / den[j] : 0.0f;
+        TOFG_UNROLL
+        for (int f = 0; f < NF; f++) {
+            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
+            if (p->or64) {
+                p->or64[f * N + m] = mr;
+                p->oi64[f * N + m] = mi;
+            } else {
+                p->or_[f * N + m] = mr;
+                p->oi[f * N + m] = mi;
+            }
+        }
+        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
+        if (p->nin)
+            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
+        else
+            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
+    }
+}
+
+
+/* Row r: the 16-column blocks whose every tap is on the grid by the fast blocks, the rest by
+   the generic row. uniform: the grid lines along the axis are `step` pixels apart. */
+TOFG_CLONES static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
+                                       int uniform, int64_t step, ptrdiff_t clo,
+                                       ptrdiff_t chi_)
+{
+    const ptrdiff_t C = p->C;
+    ptrdiff_t shift[2 * 64 + 1];
+    int ntaps = 0;
+    ptrdiff_t lo = clo, hi = chi_;                /* the columns every tap may serve */
+    if (uniform && p->F <= 4 && p->reach <= 64) {
+        for (ptrdiff_t a = -p->reach; a <= p->reach; a++) {
+            const int64_t d = (p->axis == 0 ? p->px[r + a < 0 || r + a >= p->R ? r : r + a]
+                                             - p->px[r] : (int64_t)a * step);
+            if (p->axis == 0 && (r + a < 0 || r + a >= p->R)) continue;
+            if (d < -p->radius_px || d > p->radius_px) continue;
+            shift[ntaps++] = p->axis == 0 ? a * C : a;
+            if (p->axis == 1) {
+                lo = -a > lo ? -a : lo;
+                hi = C - a < hi ? C - a : hi;
+            }
+        }
+    } else {
+        hi = lo;                                  /* no fast block */
+    }
+    const ptrdiff_t nblk = hi > lo ? (hi - lo) / TOFG_BW : 0;
+    const ptrdiff_t fe = lo + nblk * TOFG_BW;
+    for (ptrdiff_t b = 0; b < nblk; b++) {
+        const ptrdiff_t m0 = r * C + lo + b * TOFG_BW;
+        switch (p->F) {
+        case 1: tofg_block(p, m0, shift, ntaps, 1); break;
+        case 2: tofg_block(p, m0, shift, ntaps, 2); break;
+        case 3: tofg_block(p, m0, shift, ntaps, 3); break;
+        default: tofg_block(p, m0, shift, ntaps, 4); break;
+        }
+    }
+    if (nblk == 0) {
+        tofg_pass_row(p, r, scratch, clo, chi_);
+    } else {
+        if (lo > clo) tofg_pass_row(p, r, scratch, clo, lo);
+        if (fe < chi_) tofg_pass_row(p, r, scratch, fe, chi_);
+    }
+}
+
+/* columns per tile of a column pass: the taps' rows of a tile stay in the cache from one
+   output row to the next (11 rows x 17 planes x 256 floats = 190 kB) */
+#define TOFG_TILE 256
+
+int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
+                   const float *gr, const float *gi, const float *gv, const float *col,
+                   const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C, int axis,
+                   const int64_t *px, ptrdiff_t reach, int64_t radius_px, double inv2h2,
+                   double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
+                   float *ov, float *on, int workers)
+{
+    if (!zr || !zi || !v || !gr || !gi || !gv || !col || !use || !px || !ov || !on
+        || (!or64 && (!or_ || !oi)) || (or64 && !oi64) || F < 1 || F > RGBZ_TOF_MAX_FREQS
+        || R < 0 || C < 0 || (axis != 0 && axis != 1) || reach < 0 || radius_px < 0
+        || !(inv2h2 >= 0.0) || !(inv2hc2 >= 0.0))
+        return RGBZ_EINVAL;
+    const tofg_pass_args p = {zr, zi, v, nin, gr, gi, gv, col, use, F, R, C, axis, px, reach,
+                              radius_px, (float)inv2h2, (float)inv2hc2, or_, oi, ov, on,
+                              or64, oi64};
+    const size_t per_row = (size_t)(2 * F + 5) * (size_t)(C > 0 ? C : 1);
+    int status = RGBZ_OK;
+    /* the grid lines along the pass's axis: evenly spaced (Mask1, Mask2, rows) or not */
+    const ptrdiff_t nl = axis == 1 ? C : R;
+    const int64_t step = nl > 1 ? px[1] - px[0] : 1;
+    int uniform = 1;
+    for (ptrdiff_t i = 1; i < nl; i++) uniform &= px[i] - px[i - 1] == step;
+    const int nth = tofg_nth(workers);
+    (void)nth;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth)
+#endif
+    {
+        float *scratch = malloc(per_row * sizeof(float));
+        if (!scratch) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ENOMEM;
+        }
+        if (axis == 0 && C > TOFG_TILE) {
+            /* a column pass tile by tile, every tile's rows in order */
+            const ptrdiff_t ntile = (C + TOFG_TILE - 1) / TOFG_TILE;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+            for (ptrdiff_t t = 0; t < ntile; t++) {
+                const ptrdiff_t c0 = t * TOFG_TILE, c1 = c0 + TOFG_TILE < C ? c0 + TOFG_TILE : C;
+                for (ptrdiff_t r = 0; r < R; r++)
+                    if (scratch) tofg_pass_line(&p, r, scratch, uniform, step, c0, c1);
+            }
+        } else {
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+            for (ptrdiff_t r = 0; r < R; r++)
+                if (scratch) tofg_pass_line(&p, r, scratch, uniform, step, 0, C);
+        }
+        free(scratch);
+    }
+    return status;
+}
+
+/* ------------------------------------------------------------------ validity */
+int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
+                       const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
+                       const double *sigma_scale, const double *refl_coef, double min_snr,
+                       double min_amplitude, double max_sigma, double max_residual,
+                       double min_reflectance, double max_range, double *snr, double *sigma,
+                       double *refl, uint8_t *flags, int workers)
+{
+    if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
+        || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
+        return RGBZ_EINVAL;
+    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)F;
+    const int nth = tofg_nth(workers);
+    (void)nth;
+    TOFG_PARALLEL_FOR
+    for (ptrdiff_t n = 0; n < N; n++) {
+        const double vn = var[n], sd = sqrt(vn), d = depth[n];
+        const double dd = d > 0.0 ? d : 1.0;
+        double s2 = 0.0, best = INFINITY, rho = 0.0;
+        int weak = 0;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const double a = amp[f * N + n];
+            double ph = vn / (4.0 * a * a);                      /* phase variance */
+            ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
+            s2 += sigma_scale[f] * ph;
+            const double q = 2.0 * a / sd;
+            best = q < best ? q : best;
+            weak |= a < min_amplitude;
+            rho += a * refl_coef[f];
+        }
+        rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
+        const double sg = sqrt(s2);
+        uint8_t fl = sat[n] ? 1 : 0;
+        if (best < min_snr || weak || (max_sigma >= 0.0 && !(sg <= max_sigma))) fl |= 2;
+        if (residual[n] > max_residual) fl |= 4;
+        if (d < 0.0 || d > max_range - 5.0 * sg || rho < min_reflectance) fl |= 16;
+        snr[n] = best;
+        sigma[n] = sg;
+        refl[n] = rho;
+        flags[n] = fl;
+    }
+    return RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ flying pixels */
+typedef struct {
+    const double *depth, *sigma;
+    const uint8_t *usable;
+    const float *col, *cells;
+    int ncells;
+    ptrdiff_t R, C;
+    double step2, k2, tol_k, contrast, side;
+    int unflag;
+    uint8_t *flags;
+    double *depth_out;
+} tofg_fly_args;
+
+static const int tofg_dirs[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
+
+/* usable measurement at (r, c) (0 off the grid) */
+static inline int tofg_ok(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
+{
+    return r >= 0 && r < p->R && c >= 0 && c < p->C && p->usable[r * p->C + c];
+}
+
+/* Whether the second-difference test flags (r, c): a hit centred there, or at a neighbour
+   whose pair across the discontinuity includes it. code: the hits of every cell (bit 2e: a
+   hit along direction e, bit 2e + 1: its pair is the neighbour at +e). */
+static int tofg_candidate(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t r, ptrdiff_t c)
+{
+    const ptrdiff_t C = p->C, m = r * C + c;
+    if (code[m] & 0x55) return 1;
+    for (int e = 0; e < 4; e++) {
+        const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
+        const int hit = 1 << (2 * e), hi = 2 << (2 * e);
+        if (r - dr >= 0 && c - dc >= 0 && c - dc < C
+            && (code[m - dr * C - dc] & (hit | hi)) == (hit | hi))
+            return 1;
+        if (r + dr < p->R && c + dc >= 0 && c + dc < C
+            && (code[m + dr * C + dc] & (hit | hi)) == hit)
+            return 1;
+    }
+    return 0;
+}
+
+/* the hits centred at the cells of row r along every direction (tofg_candidate's code) */
+TOFG_CLONES static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, uint8_t *code)
+{
+    const ptrdiff_t C = p->C;
+    const double *d = p->depth, *s = p->sigma;
+    const uint8_t *u = p->usable;
+    for (ptrdiff_t c = 0; c < C; c++) code[r * C + c] = 0;
+    for (int e = 0; e < 4; e++) {
+        const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
+        if (r - dr < 0 || r + dr >= p->R) continue;
+        const ptrdiff_t c0 = dc ? 1 : 0, c1 = dc ? C - 1 : C, off = dr * C + dc;
+        for (ptrdiff_t c = c0; c < c1; c++) {
+            const ptrdiff_t m = r * C + c, lo = m - off, hi = m + off;
+            /* every operand loaded (an unusable one may be NaN: it never counts) */
+            const int ok = u[m] & u[lo] & u[hi];
+            const double down = d[m] - d[lo], up = d[hi] - d[m];
+            double jump = up - down;
+            jump *= jump;
+            const double shi = s[hi], slo = s[lo], sm = s[m];
+            double noise = shi * shi + slo * slo;
+            noise += 4.0 * (sm * sm);
+            noise *= p->k2;
+            noise = noise > p->step2 ? noise : p->step2;
+            const int hit = ok & (jump > noise), toward = fabs(up) >= fabs(down);
+            code[m] |= (uint8_t)((hit << (2 * e)) | ((hit & toward) << (2 * e + 1)));
+        }
+    }
+}
+
+static void tofg_fly_cell(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t r, ptrdiff_t c)
+{
+    const ptrdiff_t C = p->C, N = p->R * p->C, m = r * C + c;
+    if (!p->usable[m] || !tofg_candidate(p, code, r, c)) return;
+    /* the two sides among the usable 8-neighbours: split at the middle of the depths */
+    const double dm = p->depth[m];
+    double lo = dm, hi = dm;
+    for (int a = -1; a <= 1; a++)
+        for (int b = -1; b <= 1; b++)
+            if ((a || b) && tofg_ok(p, r + a, c + b)) {
+                const double d = p->depth[m + a * C + b];
+                lo = d < lo ? d : lo;
+                hi = d > hi ? d : hi;
+            }
+    const double mid = 0.5 * (lo + hi);
+    double sum[2] = {0.0, 0.0}, cs[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+    int cnt[2] = {0, 0};
+    for (int a = -1; a <= 1; a++)
+        for (int b = -1; b <= 1; b++)
+            if ((a || b) && tofg_ok(p, r + a, c + b)) {
+                const ptrdiff_t n = m + a * C + b;
+                const int s = p->depth[n] > mid;
+                sum[s] += p->depth[n];
+                cnt[s]++;
+                for (int ch = 0; ch < 3; ch++) cs[s][ch] += p->col[ch * N + n];
+            }
+    double dside[2], cside[2][3];
+    for (int s = 0; s < 2; s++) {
+        const double inv = cnt[s] ? 1.0 / cnt[s] : 0.0;
+        dside[s] = sum[s] * inv;
+        for (int ch = 0; ch < 3; ch++) cside[s][ch] = cs[s][ch] * inv;
+    }
+    double tol = p->tol_k * p->sigma[m];
+    tol = tol > 0.01 ? tol : 0.01;
+    const int near0 = cnt[0] && fabs(dm - dside[0]) <= tol;
+    const int near1 = cnt[1] && fabs(dm - dside[1]) <= tol;
+    double axis[3], contrast = 0.0;
+    for (int ch = 0; ch < 3; ch++) {
+        axis[ch] = cside[1][ch] - cside[0][ch];
+        contrast += axis[ch] * axis[ch];
+    }
+    const int sig = cnt[0] && cnt[1] && contrast > p->contrast;
+    /* the side of every cell by its colour: t = 0 on side 0, 1 on side 1 */
+    int all0 = 1, all1 = 1;
+    for (int k = 0; k < p->ncells; k++) {
+        const float *cell = p->cells ? p->cells + (ptrdiff_t)k * 3 * N : p->col;
+        double t = 0.0;
+        for (int ch = 0; ch < 3; ch++) t += (cell[ch * N + m] - cside[0][ch]) * axis[ch];
+        t = contrast > 0.0 ? t / contrast : 0.5;
+        all0 &= t < p->side;
+        all1 &= t > 1.0 - p->side;
+    }
+    const int pure = sig && ((near0 && all0) || (near1 && all1));
+    if (pure && p->unflag && p->ncells > 1) return;
+    if (sig && (all0 || all1) && !near0 && !near1) {
+        p->flags[m] |= 32;
+        p->depth_out[m] = all0 ? dside[0] : dside[1];
+        return;
+    }
+    p->flags[m] |= 8;
+}
+
+int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
+                     const float *col, const float *cells, int ncells, ptrdiff_t R,
+                     ptrdiff_t C, double step, double k, double contrast, double side,
+                     int unflag, uint8_t *flags, double *depth_out, int workers)
+{
+    if (!depth || !sigma || !usable || !col || !flags || !depth_out || ncells < 1
+        || (ncells > 1 && !cells) || R < 0 || C < 0 || !(step >= 0.0) || !(k >= 0.0))
+        return RGBZ_EINVAL;
+    const tofg_fly_args p = {depth, sigma, usable, col, ncells > 1 ? cells : NULL, ncells, R,
+                             C, step * step, k * k, 2.5, contrast, side, unflag, flags,
+                             depth_out};
+    uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
+    if (!code) return RGBZ_ENOMEM;
+    memcpy(depth_out, depth, (size_t)(R * C) * sizeof *depth_out);
+    const int nth = tofg_nth(workers);
+    (void)nth;
+    TOFG_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
+    TOFG_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++)
+        for (ptrdiff_t c = 0; c < C; c++) tofg_fly_cell(&p, code, r, c);
+    free(code);
+    return RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ upsampling */
+/* the smallest colour weight of an upsampling candidate (exp(-36) = 2.3e-16 is cut to 0) */
+#define TOFG_WC_MIN 1e-20f
+
+/* A pixel between grid lines i and i + 1 (centres ctr, sorted) at fraction f of the way:
+   lines clamped at the ends (f = 0 there). */
+static void tofg_bracket(const double *ctr, ptrdiff_t n, double v, ptrdiff_t *i, float *f)
+{
+    ptrdiff_t lo = 0, hi = n;                        /* first centre > v */
+    while (lo < hi) {
+        const ptrdiff_t mid = lo + (hi - lo) / 2;
+        if (ctr[mid] <= v) lo = mid + 1;
+        else hi = mid;
+    }
+    if (lo == 0) { *i = 0; *f = 0.0f; return; }
+    if (lo == n) { *i = n - 1; *f = 0.0f; return; }
+    *i = lo - 1;
+    *f = (float)((v - ctr[lo - 1]) / (ctr[lo] - ctr[lo - 1]));
+}
+
+typedef struct {
+    const double *depth, *sigma;
+    const float *col, *prior;
+    ptrdiff_t R, C;
+    const double *rc, *cc;
+    double spacing;
+    float inv2s2, inv2hc2, tol_k, tol_min;
+} tofg_up_args;
+
+/* The depth at a point of colour pc (scaled) from the candidate measurements m[0..n) with
+   spatial weights ws, each times its prior (1 measured, the fill's confidence for a filled
+   node, 0 none): the depth of the heaviest (spatial times colour weight) and the weighted
+   mean of those within max(tol_k sigma, tol_min) of it. Returns the summed weight of the
+   mean (0: no usable candidate). */
+static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_t *m,
+                          const float *ws, int n, float *out)
+{
+    const ptrdiff_t N = p->R * p->C;
+    float w[81], best = 0.0f;
+    int kb = -1;
+    for (int k = 0; k < n; k++) {
+        const float pr = p->prior[m[k]] * ws[k];
+        w[k] = 0.0f;
+        if (!(pr > 0.0f)) continue;
+        const float t0 = pc[0] - p->col[m[k]], t1 = pc[1] - p->col[N + m[k]];
+        const float t2 = pc[2] - p->col[2 * N + m[k]];
+        const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
+        /* a colour weight never vanishes: where no candidate has the colour (a
+           demosaicking artefact at an edge) the spatial weights decide */
+        const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
+        w[k] = pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
+        if (w[k] > best) { best = w[k]; kb = k; }
+    }
+    if (kb < 0) return 0.0f;
+    const double db = p->depth[m[kb]];
+    double tol = p->tol_k * p->sigma[m[kb]];
+    tol = tol > p->tol_min ? tol : p->tol_min;
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < n; k++) {
+        const double d = p->depth[m[k]];
+        if (w[k] > 0.0f && fabs(d - db) <= tol) {
+            num += w[k] * d;
+            den += w[k];
+        }
+    }
+    *out = (float)(num / den);
+    return (float)den;
+}
+
+/* A node without a usable measurement takes the mode over the usable ones within 1, else 2,
+   else 4 (at most `reach`) grid lines (Gaussian spatial weights, its own colour); its prior
+   becomes a quarter of their normalised weight (0: none there). */
+static void tofg_fill_node(const tofg_up_args *p, const float *prior0, ptrdiff_t r,
+                           ptrdiff_t c, ptrdiff_t reach, double *depth, double *sigma,
+                           float *prior)
+{
+    const ptrdiff_t N = p->R * p->C, m = r * p->C + c;
+    depth[m] = p->depth[m];
+    sigma[m] = p->sigma[m];
+    prior[m] = prior0[m];
+    if (prior0[m] > 0.0f) return;
+    const float pc[3] = {p->col[m], p->col[N + m], p->col[2 * N + m]};
+    const tofg_up_args q = {p->depth, p->sigma, p->col, prior0, p->R, p->C, p->rc, p->cc,
+                            p->spacing, p->inv2s2, p->inv2hc2, p->tol_k, p->tol_min};
+    for (ptrdiff_t lv = 1; lv <= reach; lv *= 2) {
+        ptrdiff_t mm[81];
+        float ww[81], all = 0.0f, out;
+        int n = 0;
+        const ptrdiff_t i0 = r - lv > 0 ? r - lv : 0, i1 = r + lv < p->R - 1 ? r + lv : p->R - 1;
+        const ptrdiff_t j0 = c - lv > 0 ? c - lv : 0, j1 = c + lv < p->C - 1 ? c + lv : p->C - 1;
+        int any = 0;                             /* nothing usable this far: look farther */
+        for (ptrdiff_t i = i0; i <= i1 && !any; i++)
+            for (ptrdiff_t j = j0; j <= j1; j++) any |= prior0[i * p->C + j] > 0.0f;
+        if (!any) continue;
+        for (ptrdiff_t i = i0; i <= i1; i++) {
+            const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
+            for (ptrdiff_t j = j0; j <= j1; j++) {
+                const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
+                mm[n] = i * p->C + j;
+                ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                all += ww[n++];
+            }
+        }
+        const float got = tofg_up_mode(&q, pc, mm, ww, n, &out);
+        if (got > 0.0f) {
+            int kb = -1;                       /* the usable candidate nearest the depth */
+            for (int k = 0; k < n; k++)
+                if (prior0[mm[k]] > 0.0f
+                    && (kb < 0 || fabs(p->depth[mm[k]] - out) < fabs(p->depth[mm[kb]] - out)))
+                    kb = k;
+            depth[m] = out;
+            sigma[m] = p->sigma[mm[kb]];
+            prior[m] = 0.25f * got / all;
+            return;
+        }
+    }
+}
+
+/* a node as the pixel loop reads it: colour (scaled), prior, depth, sigma in one 32-byte
+   record, so the four nodes of a pixel are two cache lines */
+typedef struct {
+    float c0, c1, c2, prior;
+    double depth, sigma;
+} tofg_node;
+
+/* the 4 nodes around the pixel, bilinear weights (the filled nodes at their prior): the rule
+   of tofg_up_mode, written out for four candidates */
+static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, ptrdiff_t r,
+                                 float fy, ptrdiff_t c, float fx, const float *pc, float *out,
+                                 float *conf)
+{
+    const ptrdiff_t r1 = r + 1 < p->R ? r + 1 : r, c1 = c + 1 < p->C ? c + 1 : c;
+    const tofg_node *nd[4] = {nodes + r * p->C + c, nodes + r * p->C + c1,
+                              nodes + r1 * p->C + c, nodes + r1 * p->C + c1};
+    const float ws[4] = {(1.0f - fy) * (1.0f - fx), (1.0f - fy) * fx, fy * (1.0f - fx),
+                         fy * fx};
+    float w[4], best = 0.0f;
+    int kb = -1;
+    for (int k = 0; k < 4; k++) {
+        const float pr = nd[k]->prior * ws[k];
+        const float t0 = pc[0] - nd[k]->c0, t1 = pc[1] - nd[k]->c1, t2 = pc[2] - nd[k]->c2;
+        const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
+        const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
+        w[k] = pr > 0.0f ? pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN) : 0.0f;
+        if (w[k] > best) { best = w[k]; kb = k; }
+    }
+    if (kb < 0) {
+        *out = NAN;
+        *conf = 0.0f;
+        return;
+    }
+    const double db = nd[kb]->depth;
+    double tol = p->tol_k * nd[kb]->sigma;
+    tol = tol > p->tol_min ? tol : p->tol_min;
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < 4; k++) {
+        const double d = nd[k]->depth;
+        if (w[k] > 0.0f && fabs(d - db) <= tol) {
+            num += w[k] * d;
+            den += w[k];
+        }
+    }
+    *out = (float)(num / den);
+    *conf = (float)den;                               /* the bilinear weights sum to 1 */
+}
+
+#define TOFG_UPSAMPLE(TS, T)                                                                  \
+int rgbz_tofg_upsample_##TS(const T *guide, ptrdiff_t H, ptrdiff_t W, double scale,           \
+                            const double *cscale, const double *depth, const double *sigma,   \
+                            const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,     \
+                            const double *cc, double spacing, ptrdiff_t reach, double inv2s2, \
+                            double inv2hc2, double tol_k, double tol_min, float *out,         \
+                            float *conf, int workers)                                         \
+{                                                                                            \
+    if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf         \
+        || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4)   \
+        return RGBZ_EINVAL;                                                                  \
+    const ptrdiff_t N = R * C;                                                               \
+    ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);                            \
+    float *fx = malloc((size_t)(W > 0 ? W : 1) * sizeof *fx);                                \
+    float *prior0 = malloc((size_t)N * sizeof *prior0), *prior = malloc((size_t)N * sizeof *prior); \
+    double *fd = malloc((size_t)N * sizeof *fd), *fs = malloc((size_t)N * sizeof *fs);       \
+    if (!cx || !fx || !prior0 || !prior || !fd || !fs) {                                     \
+        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);                   \
+        return RGBZ_ENOMEM;                                                                  \
+    }                                                                                        \
+    for (ptrdiff_t x = 0; x < W; x++) tofg_bracket(cc, C, (double)x, cx + x, fx + x);        \
+    for (ptrdiff_t m = 0; m < N; m++) prior0[m] = depth[m] == depth[m] ? 1.0f : 0.0f;        \
+    const tofg_up_args p0 = {depth, sigma, col, prior0, R, C, rc, cc, spacing,               \
+                             (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};   \
+    const int nth = tofg_nth(workers);                                                       \
+    (void)nth;                                                                               \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t r = 0; r < R; r++)                                                        \
+        for (ptrdiff_t c = 0; c < C; c++) tofg_fill_node(&p0, prior0, r, c, reach, fd, fs, prior); \
+    const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,        \
+                            (float)inv2hc2, (float)tol_k, (float)tol_min};                   \
+    tofg_node *nodes = malloc((size_t)N * sizeof *nodes);                                    \
+    if (!nodes) {                                                                            \
+        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);                   \
+        return RGBZ_ENOMEM;                                                                  \
+    }                                                                                        \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t m = 0; m < N; m++) {                                                      \
+        const tofg_node nm = {col[m], col[N + m], col[2 * N + m], prior[m], fd[m], fs[m]};   \
+        nodes[m] = nm;                                                                       \
+    }                                                                                        \
+    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),            \
+                s2 = (float)(scale * cscale[2]);                                             \
+    TOFG_PARALLEL_FOR                                                                        \
+    for (ptrdiff_t y = 0; y < H; y++) {                                                      \
+        ptrdiff_t r;                                                                         \
+        float fy;                                                                            \
+        tofg_bracket(rc, R, (double)y, &r, &fy);                                             \
+        for (ptrdiff_t x = 0; x < W; x++) {                                                  \
+            const T *g = guide + (y * W + x) * 3;                                            \
+            const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};      \
+            tofg_up_pixel(nodes, &p, r, fy, cx[x], fx[x], pc, out + y * W + x,               \
+                          conf + y * W + x);                                                 \
+        }                                                                                    \
+    }                                                                                        \
+    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);          \
+    return RGBZ_OK;                                                                          \
+}
+
+TOFG_UPSAMPLE(u8, uint8_t)
+TOFG_UPSAMPLE(u16, uint16_t)
+TOFG_UPSAMPLE(f32, float)
+TOFG_UPSAMPLE(f64, double)

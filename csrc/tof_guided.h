@@ -1,0 +1,125 @@
+/*
+ * tof_guided.h -- the colour-guided ToF ISP and the guided upsampling of its depth
+ * (tof_guided.c). Plain C99, no Python.h; status codes of rgbz.h. Every entry point is
+ * typed: one function per element type of the array it reads (suffix u8, u16, f32, f64).
+ *
+ * Layout: the Z measurements fill a grid of R rows and C columns in row-major order
+ * (N = R C; the Python layer scatters other layouts onto such a grid and marks the holes
+ * unusable). Per-measurement planes are (N,) and per-frequency planes (F, N), row-major.
+ */
+#ifndef RGBZ_TOF_GUIDED_H
+#define RGBZ_TOF_GUIDED_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Taps (F, 4, N) -> phasors zr, zi (F, N) float, the variance of one component of a
+   measurement's phasor averaged over the frequencies v (N,) float (2 var(A), var(A) =
+   gain held / (1 - suppression) + const_var + (prnu held)^2, held = max(offset - black, 0)
+   in DN), sat[n] |= 1 where a tap reaches white, and the offset (F, N) mean(A_k) when
+   offset is not NULL. */
+int rgbz_tofg_prepare_u16(const uint16_t *taps, ptrdiff_t F, ptrdiff_t N, double gain,
+                          double black, double supp, double const_var, double prnu,
+                          double white, float *zr, float *zi, float *v, uint8_t *sat,
+                          double *offset, int workers);
+int rgbz_tofg_prepare_f32(const float *taps, ptrdiff_t F, ptrdiff_t N, double gain,
+                          double black, double supp, double const_var, double prnu,
+                          double white, float *zr, float *zi, float *v, uint8_t *sat,
+                          double *offset, int workers);
+int rgbz_tofg_prepare_f64(const double *taps, ptrdiff_t F, ptrdiff_t N, double gain,
+                          double black, double supp, double const_var, double prnu,
+                          double white, float *zr, float *zi, float *v, uint8_t *sat,
+                          double *offset, int workers);
+
+/* The guide (H, W, 3) at the measurements: col (3, N) the mean over the block x block
+   cells of each (times scale), cells (block^2, 3, N) each cell (NULL: not stored), and
+   lap (3,) the sums of |Immerkaer's Laplacian| of col over the grid's interior. */
+int rgbz_tofg_colour_u8(const uint8_t *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,
+                        ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block, double scale,
+                        float *col, float *cells, double *lap, int workers);
+int rgbz_tofg_colour_u16(const uint16_t *guide, ptrdiff_t H, ptrdiff_t W,
+                         const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
+                         int block, double scale, float *col, float *cells, double *lap,
+                         int workers);
+int rgbz_tofg_colour_f32(const float *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,
+                         ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block, double scale,
+                         float *col, float *cells, double *lap, int workers);
+int rgbz_tofg_colour_f64(const double *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,
+                         ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block, double scale,
+                         float *col, float *cells, double *lap, int workers);
+
+/* One 1-D pass of the guided cross-bilateral mean along rows (axis 1) or columns (axis 0):
+   data zr, zi (F, N), v (N,); guide phasors gr, gi (F, N) with variance gv (N,); colours
+   col (3, N) already divided by sqrt(2) sigma_c; use (N,) 1 = may enter a mean; nin (N,)
+   the n_eff of the data (a second pass) or NULL. px: the pixel coordinate of every grid
+   line along the axis; a neighbour enters within reach lines and radius_px pixels.
+   Outputs mean or_, oi (F, N) (or, when or64 is not NULL, or64, oi64 in double), its
+   variance ov (N,) (+inf where nothing entered) and n_eff on (N,). */
+int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
+                   const float *gr, const float *gi, const float *gv, const float *col,
+                   const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C, int axis,
+                   const int64_t *px, ptrdiff_t reach, int64_t radius_px, double inv2h2,
+                   double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
+                   float *ov, float *on, int workers);
+
+/* snr, sigma, reflectance and the validity bits (1 saturated, 2 low signal, 4 inconsistent,
+   16 out of range) of every measurement from amp (F, N), the component variance var (N,),
+   depth, residual (N,), sat (N,). sigma_scale (F,): (w_f c / (4 pi f) / sum w)^2;
+   refl_coef (F,): the reciprocal amplitude of a reflectance-1 surface at 1 m; max_sigma < 0:
+   no limit. */
+int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
+                       const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
+                       const double *sigma_scale, const double *refl_coef, double min_snr,
+                       double min_amplitude, double max_sigma, double max_residual,
+                       double min_reflectance, double max_range, double *snr, double *sigma,
+                       double *refl, uint8_t *flags, int workers);
+
+/* The flying-pixel test with colour edges on the grid (R, C): usable (N,) measurements
+   (not saturated, not low-signal); second differences of depth against max(step, k noise)
+   mark the candidates (rgbz_fast.tof.flying_pixels); a candidate whose depth is one side's
+   and whose every cell has that side's colour stays valid (unflag != 0, only with more than
+   one cell), one whose cells all have one side's colour while its depth lies between the
+   sides is resolved to that side (bit 32, depth_out), the others are flying (bit 8).
+   col (3, N), cells (ncells, 3, N): colours divided by the guide's noise. */
+int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
+                     const float *col, const float *cells, int ncells, ptrdiff_t R,
+                     ptrdiff_t C, double step, double k, double contrast, double side,
+                     int unflag, uint8_t *flags, double *depth_out, int workers);
+
+/* Joint bilateral upsampling of the usable measurements (depth finite) to every pixel of the
+   guide (H, W, 3). First every node without a usable measurement takes the same rule over
+   the usable ones within 1, else 2, else 4 (at most reach <= 4) grid lines (Gaussian
+   weights exp(-d^2 inv2s2), d in spacings, its own colour), at a quarter of their
+   normalised weight. Then a pixel takes
+   the 4 nodes around it (grid-line centres rc (R,), cc (C,) in pixels), weighted
+   bilinearly times the colour kernel exp(-max(chi - 3, 0) inv2hc2) of its colour against
+   theirs (col (3, N) divided by sqrt(2) sigma_c; the pixel's is guide * scale * cscale
+   (3,)): the depth of the heaviest and the weighted mean of those within max(tol_k sigma,
+   tol_min) of it; confidence: the summed weight of that mean. NaN and 0 where no node
+   around the pixel has a depth. */
+int rgbz_tofg_upsample_u8(const uint8_t *guide, ptrdiff_t H, ptrdiff_t W, double scale,
+                          const double *cscale, const double *depth, const double *sigma,
+                          const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
+                          const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
+                          double inv2hc2, double tol_k, double tol_min, float *out,
+                          float *conf, int workers);
+int rgbz_tofg_upsample_u16(const uint16_t *guide, ptrdiff_t H, ptrdiff_t W, double scale,
+                           const double *cscale, const double *depth, const double *sigma,
+                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
+                           const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
+                           double inv2hc2, double tol_k, double tol_min, float *out,
+                           float *conf, int workers);
+int rgbz_tofg_upsample_f32(const float *guide, ptrdiff_t H, ptrdiff_t W, double scale,
+                           const double *cscale, const double *depth, const double *sigma,
+                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
+                           const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
+                           double inv2hc2, double tol_k, double tol_min, float *out,
+                           float *conf, int workers);
+int rgbz_tofg_upsample_f64(const double *guide, ptrdiff_t H, ptrdiff_t W, double scale,
+                           const double *cscale, const double *depth, const double *sigma,
+                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
+                           const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
+                           double inv2hc2, double tol_k, double tol_min, float *out,
+                           float *conf, int workers);
+
+#endif

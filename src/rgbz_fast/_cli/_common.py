@@ -1,0 +1,378 @@
+"""What every command of ``rgbz-fast`` shares.
+
+The one error type (:class:`CliError`), the argument types, the option helpers
+(each option's text is written here once and every command that takes the
+option adds it through its helper), how a library error reads on the command
+line (:func:`explain`), and the checks of output paths. A command module
+declares its options with these helpers in ``add_parser(sub)`` and does its
+work in ``run(args)``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+from pathlib import Path
+
+from .._validate import parse_shape
+from ..io import MAX_BYTES_ENV, MAX_PIXELS_ENV
+
+__all__ = ["CliError", "Formatter", "EPILOG", "command_parser", "explain", "command_line",
+           "output_folder", "unique_outputs", "file_label"]
+
+EPILOG = ("Every option's default is shown in brackets. The user guide, the measured "
+          "results and the API reference are in the project's documentation.")
+
+
+class CliError(Exception):
+    """A user error: printed as one line, exit status 2."""
+
+
+class Formatter(argparse.RawDescriptionHelpFormatter):
+    """Help with each option's default (unless the text gives it, or it has none)."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        if "default" in text or not action.option_strings or any(
+                action.default is v for v in (None, False, argparse.SUPPRESS)):
+            return text
+        return text + " (default: %(default)s)"
+
+
+def command_parser(sub, name, help, description):
+    """The parser of one command, with the help format and epilog every command shares."""
+    return sub.add_parser(name, help=help, description=description, formatter_class=Formatter,
+                          epilog=EPILOG)
+
+
+# --------------------------------------------------------------------------- argument types
+def csv(text):
+    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c')."""
+    return tuple(s.strip() for s in text.split(",") if s.strip())
+
+
+def number(convert, accept, what):
+    """An argparse type: ``convert(text)`` when ``accept`` takes it, else a usage error."""
+    def parse(text):
+        try:
+            v = convert(text)
+        except ValueError:
+            v = None
+        if v is None or not accept(v):
+            raise argparse.ArgumentTypeError(f"expected {what}, got {text!r}")
+        return v
+    return parse
+
+
+positive_int = number(int, lambda v: v >= 1, "a positive integer")
+non_negative_int = number(int, lambda v: v >= 0, "an integer >= 0")
+positive_float = number(float, lambda v: 0 < v < float("inf"), "a positive number")
+non_negative_float = number(float, lambda v: 0 <= v < float("inf"), "a number >= 0")
+
+
+def off_or(parse):
+    """An argparse type: ``off`` (None: the test is not made), else ``parse(text)``."""
+    def parse_or_off(text):
+        return None if text.strip().lower() == "off" else parse(text)
+    return parse_or_off
+
+
+def levels(text):
+    """One level, or four (one per site of the 2x2 quad, row by row): '64' or '64,64,65,64'."""
+    try:
+        vals = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number or four comma-separated numbers, "
+                                          f"got {text!r}") from None
+    if len(vals) not in (1, 4):
+        raise argparse.ArgumentTypeError(f"expected one value or four, got {len(vals)}")
+    return vals[0] if len(vals) == 1 else vals
+
+
+def shape(text):
+    """ROWSxCOLS, rows first."""
+    try:
+        return parse_shape(text, "shape")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc).removeprefix("shape: ")) from None
+
+
+def metre_range(text):
+    """MIN:MAX in metres, 0 <= MIN < MAX."""
+    try:
+        lo, hi = (float(v) for v in text.split(":"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected MIN:MAX in metres, got {text!r}") from None
+    if not (0 <= lo < hi < float("inf")):
+        raise argparse.ArgumentTypeError(f"expected 0 <= MIN < MAX, got {text!r}")
+    return lo, hi
+
+
+def clip_level(text):
+    """'auto', 'off' (None) or a positive number of DN."""
+    t = text.strip().lower()
+    if t == "auto":
+        return "auto"
+    if t in ("off", "none"):
+        return None
+    try:
+        return positive_float(t)
+    except argparse.ArgumentTypeError:
+        raise argparse.ArgumentTypeError(
+            f"expected auto, off or a positive number, got {text!r}") from None
+
+
+# --------------------------------------------------------------------------- options
+def add_workers(p, what="threads of each kernel call",
+                default="all cores; evaluate: 1 per process when it runs several"):
+    """``--workers N``: the one thread-count option; a count below 1 is a usage error."""
+    p.add_argument("--workers", type=positive_int, default=None, metavar="N",
+                   help=f"{what} (default: {default})")
+
+
+def add_limits(p):
+    """``--max-pixels``, ``--max-bytes``: the read limits of every file the command reads."""
+    p.add_argument("--max-pixels", type=positive_int, default=None, metavar="N",
+                   help=f"refuse images larger than N pixels, as their headers declare them, "
+                        f"before decoding (default: {MAX_PIXELS_ENV} when set, else 200000000)")
+    p.add_argument("--max-bytes", type=positive_int, default=None, metavar="N",
+                   help=f"refuse files, and arrays in them, larger than N bytes (default: "
+                        f"{MAX_BYTES_ENV} when set, else 2147483648)")
+
+
+def add_run_options(p, default_out, workers=True):
+    """The options of the commands that run the chain on files: ``--workers`` (unless
+    ``workers`` is False), ``--out DIR`` (``default_out``), ``--quiet`` and the read limits."""
+    if workers:
+        add_workers(p)
+    add_output_folder(p, default_out)
+    add_quiet(p)
+    add_limits(p)
+
+
+def add_report_options(p, workers=True):
+    """The options of the measuring commands, which print a report: ``--quick``,
+    ``--workers`` of the 'all threads' runs (unless ``workers`` is False), ``--json``,
+    ``--out DIR`` to also write it, ``--quiet``."""
+    add_quick(p)
+    if workers:
+        add_workers(p, "threads of the 'all threads' runs", "all cores")
+    add_json(p, "print JSON instead of a table")
+    add_output_folder(p, None, "also write the report (and JSON, plots) into DIR (default: "
+                               "print only)")
+    add_quiet(p, "no progress bar")
+
+
+def add_output_folder(p, default, what="output folder, created when the first file is written"):
+    """``--out DIR``; ``default`` None: the command prints only, unless given a folder."""
+    p.add_argument("--out", type=Path, default=None if default is None else Path(default),
+                   metavar="DIR", help=what)
+
+
+def add_output_file(p, what, default=None):
+    """``--out FILE``: the one file a command writes (required when ``default`` is None)."""
+    p.add_argument("--out", type=Path, default=None if default is None else Path(default),
+                   required=default is None, metavar="FILE",
+                   help=what + (" (required)" if default is None else ""))
+
+
+def add_quiet(p, what="no progress bar or per-file lines"):
+    p.add_argument("--quiet", action="store_true", help=what)
+
+
+def add_json(p, what):
+    p.add_argument("--json", action="store_true", help=what)
+
+
+def add_quick(p):
+    p.add_argument("--quick", action="store_true",
+                   help="small frames and few repeats (seconds)")
+
+
+def add_repeat(p, what):
+    """``--repeat N``: timed runs; ``what`` names them and their defaults."""
+    p.add_argument("--repeat", type=positive_int, default=None, metavar="N", help=what)
+
+
+def add_seed(p, default, what):
+    p.add_argument("--seed", type=non_negative_int, default=default, help=what)
+
+
+def add_shape(p, default, what):
+    """``--shape ROWSxCOLS``: a frame size, rows first."""
+    p.add_argument("--shape", type=shape, default=None if default is None else shape(default),
+                   metavar="ROWSxCOLS", help=what)
+
+
+def add_pattern(p, default, what):
+    p.add_argument("--pattern", default=default, help=what)
+
+
+def add_patterns(p, default="mask1,mask2"):
+    p.add_argument("--patterns", type=csv, default=default, help="comma-separated patterns")
+
+
+def add_methods(p, default):
+    p.add_argument("--methods", type=csv, default=default, help="comma-separated methods")
+
+
+def add_dataset(p, what, required=False):
+    p.add_argument("--dataset", type=Path, default=None, required=required,
+                   metavar="DIR" if required else None, help=what)
+
+
+def add_limit(p):
+    p.add_argument("--limit", type=positive_int, default=None, metavar="N",
+                   help="the first N images only (default: all)")
+
+
+def add_precision(p, default, what):
+    p.add_argument("--precision", choices=("float32", "float64"), default=default, help=what)
+
+
+def add_bit_depth(p, default, what):
+    p.add_argument("--bit-depth", type=positive_int, default=default, help=what)
+
+
+def add_grey(p):
+    p.add_argument("--grey", action="store_true",
+                   help="accept grey images, repeating them into R, G and B (default: refuse "
+                        "them: a colour sensor needs colour)")
+
+
+def add_linearise(p, instead):
+    """``--linearise/--no-linearise``; ``instead``: what --no-linearise does with sRGB values."""
+    p.add_argument("--linearise", action=argparse.BooleanOptionalAction, default=True,
+                   help=f"linearise 8-bit sRGB images with the sRGB EOTF (default); "
+                        f"--no-linearise {instead} the sRGB values (the 8-bit sRGB protocol)")
+
+
+def add_reconstruction_options(p, precision, precision_help):
+    """The options of the reconstruction itself: precision, domain, clip level, filters."""
+    add_precision(p, precision, precision_help)
+    p.add_argument("--domain", choices=("intensity", "colour_difference"), default="intensity",
+                   help="interpolate intensities (the paper, eq. 13) or colour differences "
+                        "(eq. 5)")
+    p.add_argument("--clip-level", type=clip_level, default=None, metavar="off|auto|DN",
+                   help="clipped (saturated) pixels: off takes every pixel as a real value; "
+                        "auto uses the saturation level recorded when a raw file is read (none "
+                        "for other frames); a number is the level in DN. Differences between "
+                        "two clipped pixels are then left out of the weights (default: off; a "
+                        "pixel at the level is not always a clipped one)")
+    p.add_argument("--filters", type=csv, default=None, metavar="FILE[,FILE]",
+                   help="method learned: filters files from `rgbz-fast train` (the one fitted "
+                        "for the frame's pattern and bit depth is used); default: the ones "
+                        "shipped for Mask1 and Mask2")
+
+
+def add_raw_options_file(p, note=""):
+    """``--raw-options FILE``: how to read each raw file of the input, from a JSON file."""
+    p.add_argument("--raw-options", type=Path, default=None, metavar="FILE",
+                   help="JSON file mapping raw file names (or \"*\", every file) to how to read "
+                        "them: phase, black_level, white_level, clip_level, shape, "
+                        f"bit_depth_in, downsample{note} (default: none; camera raw files "
+                        "need none)")
+
+
+# --------------------------------------------------------------------------- errors
+#: how the command line gives the settings that library errors ask for, where it is not
+#: the parameter's own flag (--black-level for black_level)
+FLAG_WORDS = {"shape": "--shape ROWSxCOLS", "grey": "--grey",
+              "reader": "give the file a camera raw extension"}
+
+
+def flag(setting):
+    """The command line's words for a :class:`rgbz_fast.io.Setting`."""
+    return FLAG_WORDS.get(setting.name, "--" + setting.name.replace("_", "-"))
+
+
+def explain(exc):
+    """The message of an error in command-line words: the settings a library error asks for
+    are given as flags (pass --phase, not phase=). ``exc`` may also be an evaluation's skip
+    reason, which carries the error it came from."""
+    from ..io import ParameterError
+
+    error = getattr(exc, "error", None) or exc
+    if isinstance(error, ParameterError):
+        return " ".join(error.render(flag).split())
+    return str(exc)
+
+
+# --------------------------------------------------------------------------- running
+def limits(args):
+    """The read limits of the command (``--max-pixels``, ``--max-bytes``), as the keyword
+    arguments of the library's readers."""
+    return dict(max_pixels=args.max_pixels, max_bytes=args.max_bytes)
+
+
+def learned_filters(args):
+    """The ``--filters`` files, read with the command's limits (None: the shipped ones)."""
+    from ..reconstruction import LearnedFilters
+
+    if args.filters is None:
+        return None
+    return tuple(LearnedFilters.load(f, "filters", max_bytes=args.max_bytes)
+                 for f in args.filters)
+
+
+def command_line(args):
+    """The command as typed: ``rgbz-fast CMD ARGS...`` (recorded in the reports it writes)."""
+    return " ".join(["rgbz-fast", *args.argv])
+
+
+def output_folder(out):
+    """``out`` when it can be an output folder (it may not exist yet), else a CliError."""
+    if out is not None and out.exists() and not out.is_dir():
+        raise CliError(f"--out: {str(out)!r} exists and is not a folder")
+    return out
+
+
+def unique_outputs(pairs, out):
+    """``pairs``: (input, output names); a CliError when two inputs would write one file."""
+    seen = {}
+    for src, names in pairs:
+        for name in names:
+            if name in seen and seen[name] != src:
+                raise CliError(f"--out: {seen[name]} and {src} would both write "
+                               f"{out / name}; give them different --out folders or rename one")
+            seen[name] = src
+
+
+def file_label(pattern):
+    """A pattern's name as a file-name part: ZR/BG -> ZR-BG (no folder separator)."""
+    return re.sub(r"[^A-Za-z0-9_.-]", "-", pattern.name)
+
+
+def must_exist(paths, prefix="path: "):
+    """A CliError naming the first path of ``paths`` that does not exist."""
+    for f in paths:
+        if not f.exists():
+            raise CliError(f"{prefix}{f} does not exist")
+
+
+def png_bytes(image):
+    """An image as PNG bytes, for :func:`rgbz_fast.io.atomic_write`."""
+    import imageio.v3 as iio
+
+    return iio.imwrite("<bytes>", image, extension=".png")
+
+
+def write_report(out, files):
+    """Write ``files`` ({name: text or bytes}) into the folder ``out``, each atomically;
+    nothing when ``out`` is None."""
+    from ..io import atomic_write
+
+    if out is not None:
+        for name, data in files.items():
+            atomic_write(out / name, data)
+
+
+def tool(name):
+    """The measuring engine ``rgbz_fast._devtools.<name>``, or a CliError when this build
+    lacks what it needs (the counting build of the kernels)."""
+    import importlib
+
+    try:
+        return importlib.import_module(f"rgbz_fast._devtools.{name}")
+    except ImportError as exc:
+        raise CliError(f"not available in this build ({exc})") from None

@@ -1,0 +1,126 @@
+"""``rgbz-fast calibrate``: flat-wall sweep -> ToF phase calibration file (cyclic error,
+offsets)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from . import _common as c
+
+NAME = "calibrate"
+
+
+def add_parser(sub):
+    p = c.command_parser(
+        sub, NAME, "flat-wall sweep -> ToF phase calibration file",
+        "Fit the cyclic error of every modulation frequency and the phase offset of every Z "
+        "measurement from frames of a flat wall at known distances, and write them to an NPZ "
+        "file that tof_depth(calibration=ToFCalibration.load(...)) applies. Either give frame "
+        "files (from `simulate` or a real sensor, with ToF taps) and their distances, or "
+        "--simulate a sweep of a sensor model.")
+    p.add_argument("frames", nargs="*", type=Path,
+                   help=".npz frame files holding ToF taps, one per wall position (default: "
+                        "none; --simulate makes them)")
+    p.add_argument("--distances", default=None, metavar="M[,M...]",
+                   help="the wall distance (m) of every frame, comma-separated, in order "
+                        "(default: none; required with frame files)")
+    p.add_argument("--dark", nargs="*", type=Path, default=(),
+                   help=".npz frames taken with the lens capped, for the tap dark offsets "
+                        "(default: none)")
+    p.add_argument("--simulate", action="store_true",
+                   help="simulate the sweep instead: --pattern, --shape, --near, --far, "
+                        "--positions, --frames-per-position, --sensor")
+    c.add_pattern(p, "mask2", "pattern of a simulated sweep")
+    c.add_shape(p, "64x96", "size of a simulated sweep's frames (default: 64x96)")
+    p.add_argument("--near", type=c.positive_float, default=0.6, metavar="M",
+                   help="nearest wall of a simulated sweep, in metres")
+    p.add_argument("--far", type=c.positive_float, default=2.6, metavar="M",
+                   help="farthest wall of a simulated sweep, in metres (more than the 1.874 m "
+                        "wrap range of 80 MHz)")
+    p.add_argument("--positions", type=c.number(int, lambda v: v >= 2, "an integer >= 2"),
+                   default=48, help="wall positions of a simulated sweep")
+    p.add_argument("--frames-per-position", type=c.positive_int, default=3,
+                   help="frames at each position of a simulated sweep")
+    p.add_argument("--reflectance", type=c.number(float, lambda v: 0 < v <= 1,
+                                                  "a number in (0, 1]"), default=0.8,
+                   help="NIR reflectance of the simulated wall")
+    p.add_argument("--sensor", default=None, metavar="JSON",
+                   help="ToF sensor model arguments as JSON, e.g. '{\"harmonics\": [[3, 0.04, "
+                        "0.3]], \"delay_fpn_ps\": 20}' (default: the library's sensor)")
+    p.add_argument("--orders", type=c.positive_int, default=8,
+                   help="harmonics of the fitted cyclic error")
+    c.add_seed(p, 0, "seed of a simulated sweep's noise")
+    c.add_output_file(p, "the calibration file to write", default="tof_calibration.npz")
+    c.add_quiet(p, "no summary line")
+    c.add_limits(p)
+    return p
+
+
+def run(args):
+    from ..io import load_frame
+    from ..tof import calibrate
+
+    if args.simulate:
+        if args.frames:
+            raise c.CliError("give frame files or --simulate, not both")
+        sweep, distances, dark = _simulated_sweep(args)
+    else:
+        if not args.frames:
+            raise c.CliError("no frames: give .npz frame files with their --distances, or "
+                             "--simulate")
+        if args.distances is None:
+            raise c.CliError("--distances: one distance per frame is needed")
+        try:
+            distances = [float(v) for v in args.distances.split(",") if v.strip()]
+        except ValueError:
+            raise c.CliError(f"--distances: expected comma-separated metres, got "
+                             f"{args.distances!r}") from None
+        sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
+        dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
+    cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
+    cal.save(args.out)
+    if not args.quiet:
+        rms = ", ".join(f"{1e3 * v:.2f}" for v in cal.meta["fit_rms_m"])
+        print(f"{len(sweep)} frames -> {args.out}: {cal!r}; fit residual per frequency "
+              f"{rms} mm RMS")
+    return 0
+
+
+def _simulated_sweep(args):
+    """(wall frames, their distances, lens-capped frames) of a simulated sweep."""
+    import warnings
+    from dataclasses import replace
+
+    from ..simulation import Scene, ToFSensor, simulate_tof
+
+    try:
+        kw = json.loads(args.sensor) if args.sensor else {}
+    except ValueError as exc:
+        raise c.CliError(f"--sensor: not JSON ({exc})") from None
+    if not isinstance(kw, dict):
+        raise c.CliError("--sensor: expected a JSON object of ToFSensor arguments")
+    try:
+        sensor = ToFSensor(**kw)
+    except TypeError as exc:
+        raise c.CliError(f"--sensor: {exc}".replace("ToFSensor.__init__() ", "")) from None
+    shape = tuple(args.shape)
+    if not (0 < args.near < args.far):
+        raise c.CliError(f"--near, --far: expected 0 < near < far, got {args.near}, "
+                         f"{args.far}")
+    distances = np.repeat(np.linspace(args.near, args.far, args.positions),
+                          args.frames_per_position)
+
+    def wall(d, s, seed):
+        scene = Scene(np.full(shape + (3,), 0.5), depth=np.full(shape, d),
+                      ir_reflectance=np.full(shape, args.reflectance))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return simulate_tof(scene, args.pattern, s, seed=seed)
+
+    sweep = [wall(d, sensor, args.seed * 100_000 + k) for k, d in enumerate(distances)]
+    capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
+    dark = [wall(1.0, capped, args.seed * 100_000 + 90_000 + k) for k in range(8)]
+    return sweep, distances, dark

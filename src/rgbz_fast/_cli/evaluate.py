@@ -1,0 +1,116 @@
+"""``rgbz-fast evaluate``: dataset -> metrics tables, CSV/JSON, figures."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from . import _common as c
+from ._raw import raw_options_file
+
+NAME = "evaluate"
+DEFAULT_OUT = "rgbz_results"
+
+
+def add_parser(sub):
+    p = c.command_parser(
+        sub, NAME, "dataset -> metrics, tables and plots",
+        "Run the paper's Fig. 19 chain (reference Bayer path and RGB-Z path through the same "
+        "ISP) on every image x pattern x method and report CFA PSNR, CPSNR, SSIM, MS-SSIM and "
+        "the zipper metric. With no --dataset it runs on five colour images shipped with "
+        "scikit-image (offline).")
+    c.add_dataset(p, "folder of RGB images (Kodak, McMaster, your own) or of raw files, or one "
+                     "file (default: the scikit-image samples)")
+    c.add_patterns(p)
+    c.add_methods(p, "bilinear,bi,edi_central,edi_line,sg")
+    p.add_argument("--metrics", type=c.csv, default="cfa_psnr,cpsnr,ssim,ms_ssim,zipper",
+                   help="comma-separated metrics")
+    p.add_argument("--noise", action="store_true", help="use the sensor noise model (default: "
+                                                        "noise-free mosaics)")
+    p.add_argument("--demosaic", default="malvar2004", choices=("malvar2004", "menon2007"),
+                   help="Bayer demosaic of both paths")
+    p.add_argument("--crop", type=c.non_negative_int, default=8,
+                   help="border (pixels) left out of the image metrics")
+    c.add_reconstruction_options(p, "float64", "arithmetic of the reconstruction")
+    c.add_bit_depth(p, 11, "bits of the simulated frames")
+    c.add_linearise(p, "mosaics")
+    c.add_raw_options_file(p)
+    c.add_limit(p)
+    c.add_grey(p)
+    p.add_argument("--skip-bad", action="store_true",
+                   help="skip the images that cannot be evaluated, and list them (default: the "
+                        "first one stops the run)")
+    p.add_argument("--optics", action="store_true",
+                   help="blur the images through the lens model before sampling them "
+                        "(default: off, the pixels are the image's)")
+    p.add_argument("--f-number", type=c.positive_float, default=2.8,
+                   help="f-number of the lens, with --optics")
+    p.add_argument("--olpf", type=c.non_negative_float, default=0.0,
+                   help="optical low-pass filter spot separation in pixel pitches, with --optics "
+                        "(0: none; 1: zeros at Nyquist)")
+    p.add_argument("--defocus-um", type=c.non_negative_float, default=0.0,
+                   help="blur-disk diameter in micrometres, with --optics (0: in focus)")
+    p.add_argument("--table-image", default=None,
+                   help="image of the per-image table (default: kodim09 when present, else the "
+                        "first)")
+    p.add_argument("--processes", type=c.positive_int, default=None, metavar="N",
+                   help="worker processes, one image each (default: all cores)")
+    p.add_argument("--scheduler", default=None,
+                   help="Dask scheduler address, tcp://host:port (default: the local pool)")
+    p.add_argument("--cache", type=Path, default=None, metavar="DIR",
+                   help="cache folder, from which an interrupted run resumes (default: OUT/cache)")
+    p.add_argument("--no-cache", action="store_true", help="neither read nor write the cache")
+    p.add_argument("--no-plots", action="store_true", help="tables only, no figures")
+    c.add_json(p, "print the summary as JSON")
+    c.add_run_options(p, DEFAULT_OUT)
+    return p
+
+
+def run(args):
+    from ..evaluation import EvalConfig, evaluate, write_reports
+    from ..io import folder_dataset, sample_dataset
+    from ..reconstruction import ReconstructParams
+    from ..simulation import Optics
+
+    params = ReconstructParams(precision=args.precision, domain=args.domain,
+                               clip_level=args.clip_level, filters=c.learned_filters(args))
+    optics = None
+    if args.optics:
+        optics = Optics(f_number=args.f_number, olpf=args.olpf, defocus_um=args.defocus_um)
+    elif (args.f_number, args.olpf, args.defocus_um) != (2.8, 0.0, 0.0):
+        raise c.CliError("--f-number, --olpf and --defocus-um need --optics")
+    config = EvalConfig(patterns=args.patterns, methods=args.methods, metrics=args.metrics,
+                        noise=args.noise, bit_depth=args.bit_depth, linearise=args.linearise,
+                        demosaic=args.demosaic, crop=args.crop, params=params, optics=optics)
+    out = c.output_folder(args.out)
+    raw_options = None
+    if args.raw_options is not None:
+        raw_options = raw_options_file(args.raw_options)
+    if args.dataset:
+        dataset = folder_dataset(args.dataset, args.limit, raw_options, grey=args.grey,
+                                 **c.limits(args))
+    else:
+        dataset = sample_dataset()[:args.limit]
+    cache = None if args.no_cache else (args.cache or out / "cache")
+    res = evaluate(dataset, config, cache_dir=cache, processes=args.processes,
+                   workers=args.workers, scheduler=args.scheduler, progress=not args.quiet,
+                   skip_bad=args.skip_bad)
+    for name, why in res.skipped:
+        print(f"rgbz-fast evaluate: skipped {name}: {c.explain(why)}", file=sys.stderr)
+    if not res.rows:
+        raise c.CliError(f"dataset: none of the {len(dataset)} image(s) could be evaluated")
+    crop_src = None
+    if not args.no_plots and config.image_metrics:
+        done = [s for s in dataset if s.name in res.images()]
+        crop_src = next((s for s in done if s.name == (args.table_image or "kodim09")), done[0])
+    files = write_reports(res, out, table_image=args.table_image, crop_source=crop_src,
+                          plots=not args.no_plots)
+    if args.json:
+        print(json.dumps({f"{p}/{m}/{k}": {"mean": v[0], "std": v[1], "n": v[2]}
+                          for (p, m, k), v in res.summary().items()}, indent=1))
+    else:
+        print(res.plain_table())
+        if not args.quiet:
+            print(f"reports: {', '.join(str(f) for f in files)}")
+    return 0

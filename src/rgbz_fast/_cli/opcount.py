@@ -1,0 +1,75 @@
+"""``rgbz-fast opcount``: operations per missing pixel beside the paper's Table 1."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import _common as c
+
+NAME = "opcount"
+
+
+def add_parser(sub):
+    p = c.command_parser(
+        sub, NAME, "operations per missing pixel vs Table 1",
+        "Arithmetic operations per reconstructed pixel, beside the paper's Table 1.\n\n"
+        "Counts come from the counting build of the C kernels (-DRGBZ_COUNT_OPS).")
+    c.add_methods(p, "bilinear,bi,edi_central,edi_line,sg,learned")
+    c.add_patterns(p)
+    c.add_precision(p, "float64", "arithmetic of the counted kernels")
+    c.add_shape(p, "64x64", "random frame size ROWSxCOLS (default 64x64)")
+    c.add_seed(p, 0, "seed of the random frame")
+    p.add_argument("--image", default="astronaut",
+                   help="also count on a 128x128 crop of this image: a scikit-image sample "
+                        "name, an image file, or 'none'")
+    p.add_argument("--text", action="store_true", help="plain-text table instead of Markdown")
+    c.add_report_options(p, workers=False)
+    return p
+
+
+def run(args):
+    from .._devtools._common import json_text
+
+    opcount = c.tool("opcount")
+    shape = (32, 32) if args.quick else args.shape
+    out = c.output_folder(args.out)
+    image, image_name = _image(args.image)
+    rows = opcount.opcount_table(args.methods, args.patterns, precision=args.precision,
+                                 shape=shape, seed=args.seed, image=image, image_name=image_name)
+    tof = opcount.count_tof_operations()
+    legend = opcount.opcount_legend(shape, args.seed, args.precision, image_name, tof)
+    doc = json_text({"rows": rows, "tof_demodulate": tof, "legend": legend})
+    c.write_report(out, {"opcount.md": opcount.opcount_report(rows, "markdown") + "\n\n"
+                         + legend + "\n", "opcount.json": doc + "\n"})
+    if args.json:
+        print(doc)
+    else:
+        print(opcount.opcount_report(rows, "text" if args.text else "markdown"))
+        print()
+        print(legend)
+    return 0
+
+
+def _image(spec):
+    """(8-bit RGB image, its name) of ``--image``: a file, a scikit-image sample, or none."""
+    if spec is None or str(spec).lower() == "none":
+        return None, None
+    if Path(spec).is_file():
+        from ..io import read_image
+
+        img = read_image(spec, "--image")
+        if img.ndim != 3 or img.shape[2] < 3 or img.dtype != np.uint8:
+            raise c.CliError(f"--image: expected an 8-bit RGB image, got {img.dtype} "
+                             f"{img.shape}")
+        return np.ascontiguousarray(img[..., :3]), Path(spec).name
+    import skimage.data
+
+    fn = getattr(skimage.data, str(spec), None)
+    if fn is None:
+        raise c.CliError(f"--image: {spec!r} is neither a file nor a scikit-image sample image")
+    img = np.asarray(fn())
+    if img.ndim != 3:
+        raise c.CliError(f"--image: {spec!r} is not an RGB image")
+    return np.ascontiguousarray(img[..., :3]), f"skimage.data.{spec}"

@@ -1,0 +1,149 @@
+"""``rgbz-fast reconstruct``: RGB-Z frames, or camera raw / Bayer files given a Z pattern ->
+Bayer CFA or sRGB image (and the reference it is compared with)."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import numpy as np
+
+from . import _common as c
+from ._raw import RAW_FLAGS, add_raw_group, raw_kwargs, raw_options_file
+
+NAME = "reconstruct"
+DEFAULT_OUT = "rgbz_out"
+
+
+def add_parser(sub):
+    from ..reconstruction import METHODS
+
+    p = c.command_parser(
+        sub, NAME, "raw frame(s) -> Bayer CFA or sRGB image",
+        "Fill in the colour missing at the Z sites. Frames from `rgbz-fast simulate` carry "
+        "their pattern. A real Bayer raw (camera raw, 16-bit Bayer PNG/TIFF, headerless .raw) "
+        "has no Z sites: --rgbz-pattern places one on its CFA (the Z sites are dropped, then "
+        "reconstructed, and the real CFA is the reference). Writes "
+        "OUT/<name>_<method>_cfa.tif (or .png with --output srgb) and, when there is one, the "
+        "reference, and prints the CFA PSNR at the Z sites.")
+    p.add_argument("frames", nargs="+", type=Path,
+                   help=".npz/.tif frames from `rgbz-fast simulate`, or camera raw / Bayer files")
+    p.add_argument("--method", default="sg",
+                   help=f"reconstruction method: {', '.join(METHODS)}")
+    p.add_argument("--rgbz-pattern", default=None, choices=("mask1", "mask2", "rows"),
+                   help="place this Z pattern on the CFA of a plain Bayer raw, on its own Bayer "
+                        "phase (default: none; a raw without Z sites needs one)")
+    c.add_pattern(p, None, "the RGB-Z pattern of a plain 16-bit TIFF/PNG mosaic that holds Z "
+                           "sites but no rgbz-fast header, with --bit-depth (default: none; "
+                           "frames from simulate carry theirs)")
+    c.add_bit_depth(p, None, "bits of a plain TIFF/PNG mosaic given with --pattern; for a raw "
+                             "file, the working bit depth it is scaled to (default: 11)")
+    c.add_reconstruction_options(p, "float32", "arithmetic of the kernel")
+    p.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
+                   help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
+    add_raw_group(p)
+    c.add_run_options(p, DEFAULT_OUT)
+    return p
+
+
+def run(args):
+    from ..io import load_frame
+    from ..metrics import cfa_psnr
+    from ..reconstruction import ReconstructParams, reconstruct
+
+    if args.pattern is not None and args.rgbz_pattern is not None:
+        raise c.CliError("--pattern: names the pattern of a plain mosaic that already holds Z "
+                         "sites; --rgbz-pattern places one on a Bayer raw; give one of them")
+    if args.pattern is not None and any(getattr(args, f) is not None for f, _ in RAW_FLAGS):
+        raise c.CliError("--pattern: a plain RGB-Z mosaic is read as it is stored; the raw "
+                         "options (--phase, --black-level, ...) apply to Bayer raw files, with "
+                         "--rgbz-pattern")
+    params = ReconstructParams(precision=args.precision, domain=args.domain,
+                               clip_level=args.clip_level, filters=c.learned_filters(args))
+    from_file = raw_options_file(args.raw_options)
+    c.must_exist(args.frames)
+    out = c.output_folder(args.out)
+    label = args.rgbz_pattern and f"_{args.rgbz_pattern}"
+    ext = "_cfa.tif" if args.output == "cfa" else ".png"
+    names = [(f, f"{f.stem}{label or ''}") for f in args.frames]
+    c.unique_outputs([(f, [f"{n}_{args.method}{ext}", f"{n}_reference{ext}"]) for f, n in names],
+                     out)
+    for f, stem in names:
+        kw, explicit = raw_kwargs(args, f, from_file)
+        frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth, **c.limits(args),
+                           **kw)
+        if explicit and (frame.meta.get("reader") is None
+                         or frame.meta.get("source") != str(f)):
+            flag = "--" + next(iter(explicit)).replace("_", "-").replace("clip-level",
+                                                                         "saturation-level")
+            raise c.CliError(f"{flag}: {f} is an rgbz-fast frame file, which records its own "
+                             "pattern and levels; the raw options apply to raw files")
+        frame = _with_z_sites(frame, f, args.rgbz_pattern)
+        cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
+        ref = frame.reference
+        dest = out / f"{stem}_{args.method}{ext}"
+        ref_dest = out / f"{stem}_reference{ext}" if ref is not None else None
+        if args.output == "cfa":
+            _write_cfa(dest, cfa, frame, args.method)
+            if ref is not None:
+                _write_cfa(ref_dest, ref, frame, "reference")
+        else:
+            _write_srgb(dest, ref_dest, cfa, frame, args.workers)
+        if not args.quiet:
+            extra = ""
+            if ref is not None:
+                psnr = cfa_psnr(ref, cfa, frame.z_mask, bit_depth=frame.bit_depth)
+                extra = f", reference {ref_dest}; CFA PSNR at the Z sites {psnr:.2f} dB"
+            print(f"{f} -> {dest} ({frame.pattern.name}, {frame.shape[0]}x{frame.shape[1]}"
+                  f"{extra})")
+    return 0
+
+
+def _with_z_sites(frame, path, rgbz_pattern):
+    """The frame to reconstruct: a plain Bayer frame gets the Z pattern asked for, or fails."""
+    from ..io import to_rgbz
+
+    if frame.pattern.has_z:
+        if rgbz_pattern is not None:
+            raise c.CliError(f"--rgbz-pattern: {path} already has Z sites (pattern "
+                             f"{frame.pattern.name}); it applies to plain Bayer raw files")
+        return frame
+    if rgbz_pattern is None:
+        raise c.CliError(f"--rgbz-pattern: {path} is a plain Bayer frame ({frame.pattern.name}, "
+                         "no Z sites), so there is nothing to reconstruct; pass --rgbz-pattern "
+                         "mask1 (or mask2, rows) to place Z sites on its CFA and reconstruct them")
+    rgbz, _ = to_rgbz(frame, rgbz_pattern)
+    return rgbz
+
+
+def _write_cfa(dest, cfa, frame, method):
+    """The CFA as a 16-bit TIFF with its Bayer phase, bit depth and method in the description."""
+    import tifffile
+
+    from ..io import atomic_write
+
+    buf = io.BytesIO()
+    data = cfa if cfa.dtype in (np.uint8, np.uint16) else \
+        np.floor(np.clip(cfa, 0, frame.white_level) + 0.5).astype(np.uint16)
+    tifffile.imwrite(buf, data, description=json.dumps(
+        {"bayer": frame.pattern.bayer_phase, "bit_depth": frame.bit_depth, "method": method}))
+    atomic_write(dest, buf.getvalue())
+
+
+def _write_srgb(dest, ref_dest, cfa, frame, workers):
+    """8-bit sRGB PNGs through the evaluation's colour chain: grey world on the reference when
+    there is one, and the same gains on the reconstruction (Fig. 19)."""
+    from ..io import atomic_write
+    from ..isp import ColourISP
+
+    chain = ColourISP(precision="float64", black_level=0.0)
+    phase = frame.pattern.bayer_phase
+    gains = None
+    if frame.reference is not None:
+        ref_srgb, stages = chain.render(frame.reference, phase, bit_depth=frame.bit_depth,
+                                        workers=workers, return_stages=True)
+        gains = stages["gains"]
+        atomic_write(ref_dest, c.png_bytes(ref_srgb))
+    atomic_write(dest, c.png_bytes(chain.render(cfa, phase, bit_depth=frame.bit_depth,
+                                                gains=gains, workers=workers)))

@@ -1,0 +1,64 @@
+"""``rgbz-fast train``: dataset -> filters of the "learned" reconstruction (.npz)."""
+
+from __future__ import annotations
+
+from . import _common as c
+
+NAME = "train"
+
+
+def add_parser(sub):
+    p = c.command_parser(
+        sub, NAME, "dataset -> filters of the learned reconstruction",
+        "Fit the filters of method 'learned' (hashed 7x7 linear filters, see the user guide) "
+        "to a folder of images, with the evaluation's protocol (sRGB EOTF, mosaic at "
+        "--bit-depth), and write them to --out. Fit on images you do not evaluate on.")
+    c.add_dataset(p, "folder of RGB images to fit on (required; keep the images you evaluate "
+                     "on out of it)", required=True)
+    c.add_pattern(p, "mask1", "RGB-Z pattern: mask1, mask2 or a tile such as ZR/BG (default: "
+                              "mask1)")
+    c.add_output_file(p, "the .npz file to write")
+    c.add_bit_depth(p, 11, "bits of the frames the filters are for")
+    p.add_argument("--noise", action="store_true",
+                   help="fit on frames of the sensor noise model (default: noise-free mosaics)")
+    c.add_linearise(p, "fits on")
+    p.add_argument("--name", default=None,
+                   help="training set name kept in the file (default: the folder's name)")
+    c.add_limit(p)
+    p.add_argument("--radius", type=c.positive_int, default=3,
+                   help="window radius of the filter taps (3: a 7x7 window)")
+    p.add_argument("--hash-radius", type=c.positive_int, default=3,
+                   help="window radius of the gradients the hash is computed from")
+    p.add_argument("--strength", type=c.positive_int, default=3,
+                   help="strength levels of the hash")
+    p.add_argument("--coherence", type=c.positive_int, default=3,
+                   help="coherence levels of the hash")
+    p.add_argument("--ridge", type=c.positive_float, default=1e-3,
+                   help="ridge regularisation, relative to the mean diagonal of the normal "
+                        "matrix")
+    p.add_argument("--prior", type=c.non_negative_float, default=50.0,
+                   help="weight, in training sites, of the common filter in each bucket's fit")
+    c.add_quiet(p, "no progress bar or summary line")
+    c.add_limits(p)
+    return p
+
+
+def run(args):
+    from ..evaluation import train_filters
+    from ..io import folder_dataset
+
+    if not args.dataset.is_dir():
+        raise c.CliError(f"--dataset: {args.dataset} is not a folder")
+    filters = train_filters(
+        folder_dataset(args.dataset, args.limit, **c.limits(args)), args.pattern,
+        bit_depth=args.bit_depth, noise=args.noise, linearise=args.linearise,
+        name=args.name or args.dataset.resolve().name, progress=not args.quiet,
+        radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,
+        n_coherence=args.coherence, ridge=args.ridge, prior=args.prior,
+        meta={"command": c.command_line(args)})
+    filters.save(args.out)
+    if not args.quiet:
+        m = filters.meta
+        print(f"{filters} -> {args.out} ({m['n_images']} images, {m['n_sites']} sites, "
+              f"{m['empty_buckets']} empty buckets)")
+    return 0

@@ -1,0 +1,82 @@
+"""The noise chain both sensor models share: mean electrons -> digital numbers.
+
+Fixed-pattern noise (PRNU, DSNU), dark signal, shot noise, the full well,
+read noise and the ADC, in the order of the "Noise model" section of
+:mod:`rgbz_fast.simulation._simulate` (the conventions of the sensor models).
+The colour model and the ToF model call :func:`expose` with their own random
+streams (:data:`STREAM_COLOUR_TEMPORAL` ...), so that running one never
+changes the draws of the other.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["expose", "STREAM_COLOUR_TEMPORAL", "STREAM_COLOUR_FPN", "STREAM_TOF_TEMPORAL",
+           "STREAM_TOF_FPN", "STREAM_TOF_DELAY"]
+
+# sub-stream keys of the random generators: temporal noise follows the frame
+# seed, fixed-pattern noise the sensor's fpn_seed; each model has its own
+# stream so that running (or not running) one never changes the other.
+STREAM_COLOUR_TEMPORAL = 0
+STREAM_COLOUR_FPN = 1
+STREAM_TOF_TEMPORAL = 2
+STREAM_TOF_FPN = 3
+STREAM_TOF_DELAY = 4
+
+
+def _fpn_maps(seed, stream, shape, dsnu, prnu):
+    """Fixed-pattern maps (PRNU gain, DSNU offset), None when off.
+
+    Both standard-normal maps are always drawn, in a fixed order, so that
+    turning one term off leaves the other's pattern unchanged.
+    """
+    if dsnu == 0 and prnu == 0:
+        return None, None
+    rng = np.random.default_rng([seed, stream])
+    n = rng.standard_normal((2,) + tuple(shape))
+    gain = 1.0 + prnu * n[0] if prnu else None
+    offset = dsnu * n[1] if dsnu else None
+    return gain, offset
+
+
+def expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
+            fpn_shape=None, suppress=None):
+    """Mean electrons -> DN through the noise chain of the module docstring.
+
+    ``mean_e`` is the mean signal (before PRNU), ``dark_e`` the mean dark
+    signal. The fixed-pattern maps have shape ``fpn_shape`` (default
+    ``mean_e.shape``) and broadcast against ``mean_e`` from the right: the
+    ToF draws one map per physical tap, (4, n), shared by every frequency.
+    ``suppress`` (electrons, broadcast against ``mean_e``) is drained after
+    the shot noise and before the well (the ToF ambient suppression).
+    Returns the DN array and a bool array of the samples at full well or
+    full scale.
+    """
+    gain = offset = None
+    if noise:
+        gain, offset = _fpn_maps(sensor.fpn_seed, fpn_stream,
+                                 mean_e.shape if fpn_shape is None else fpn_shape,
+                                 sensor.dsnu, sensor.prnu)
+    e = mean_e if gain is None else np.maximum(mean_e * gain, 0.0)
+    e = e + dark_e
+    rng = None
+    if noise and (sensor.shot_noise or sensor.read_noise > 0):
+        rng = np.random.default_rng([seed, temporal_stream])
+    if rng is not None and sensor.shot_noise:
+        e = rng.poisson(e).astype(np.float64)
+    if suppress is not None:
+        e = e - suppress
+    if offset is not None:
+        e = e + offset
+    well_full = e >= sensor.full_well
+    e = np.minimum(e, sensor.full_well)
+    if rng is not None and sensor.read_noise > 0:
+        e = e + sensor.read_noise * rng.standard_normal(e.shape)
+    dn = sensor.black_level + sensor.system_gain * e
+    if sensor.quantise:
+        dn = np.floor(dn + 0.5)
+    top = sensor.white_level
+    saturated = well_full | (dn >= top)
+    dn = np.clip(dn, 0, top)
+    return (dn.astype(np.uint16) if sensor.quantise else dn), saturated

@@ -1,0 +1,383 @@
+"""The ToF ISP chain: taps -> depth, its noise and its validity (:func:`tof_depth`, :class:`ToFISP`).
+
+Paper §5.1.4 and Fig. 17: the depth is computed at the Z measurements only
+(no depth is interpolated at the colour sites); the paper's ISP turns its 3x3
+averaging filter into a 5x5 kernel in which only the Z sites count
+(``denoise="box"``). The default denoise is edge-aware instead.
+
+Chain (:func:`tof_depth`; every stage is also a function of its own)::
+
+    taps (F, 4, n) ─► [calibration: dark offsets, per-measurement phase offsets]
+                   ─► I, Q per frequency (demodulate, phasors)
+                   ─► denoise_phasors_bilateral (C; default) or denoise_phasors (the
+                      paper's box), saturated measurements left out of every mean
+                   ─► phase = atan2(Q, I) in [0, 2 pi) ─► [cyclic-error correction]
+                   ─► unwrap (C, weights f_i^2): depth, residual, wrap count
+                   ─► sigma (predicted depth noise), implied reflectance
+                   ─► validity: saturated, low signal, inconsistent, flying, out of range
+
+Without the denoise and the calibration, demodulation and unwrapping run as one
+fused C pass (:func:`demodulate_unwrap`); otherwise the atan2 of the averaged
+phasors and the unwrapping do.
+
+The tap conventions are in :mod:`._stages`; the choices are explained in docs/guide/isp.md and
+measured in docs/reports/isp.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from dataclasses import replace as dc_replace
+
+import numpy as np
+
+from .. import _kernels
+from .._validate import check_choice, check_number, check_workers, merge_params
+from ._calibration import ToFCalibration, as_taps
+from ._filters import SiteGrid, denoise_phasors_bilateral
+from ._guided import check_guide, guided_flying_of, guided_run
+from ._noise import tap_variance
+from ._result import ToFDepth
+from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
+                      denoise_phasors, unwrap)
+from ._validity import _depth_sigma, _implied_reflectance, assign_flags
+
+__all__ = ["ToFISP", "tof_depth"]
+
+
+_DENOISE = ("bilateral", "box", "none")
+
+
+def _check_denoise(denoise):
+    """'bilateral', 'box' or 'none'; True is the default ('bilateral'), False is 'none'."""
+    if isinstance(denoise, (bool, np.bool_)):
+        return "bilateral" if denoise else "none"
+    return check_choice(denoise, _DENOISE, "denoise")
+
+
+def _check_calibration(calibration):
+    if calibration is not None and not isinstance(calibration, ToFCalibration):
+        raise TypeError(f"calibration: expected a ToFCalibration or None, got "
+                        f"{type(calibration).__name__}")
+    return calibration
+
+
+@dataclass(frozen=True)
+class ToFISP:
+    """The parameters of the ToF ISP, checked once; :meth:`run` runs the chain with them.
+
+    :func:`tof_depth` takes one (``params=``) and keyword overrides of its
+    fields; ``ToFISP(**fields).run(tof)`` is the same call.
+
+    Parameters
+    ----------
+    denoise : {"bilateral", "box", "none"}
+        ``"bilateral"`` (default): the edge-aware mean of the phasors over the
+        Z measurements of the window, two passes
+        (:func:`~rgbz_fast.tof.denoise_phasors_bilateral`); ``"box"``: the
+        paper's plain mean (Fig. 17, :func:`~rgbz_fast.tof.denoise_phasors`);
+        ``"none"``. True and False mean ``"bilateral"`` and ``"none"``.
+    window : int or None
+        Odd window size in Z-pixel cells; None: 9 for the bilateral denoise
+        (the 5x5 nearest Z measurements), 21 for the bilateral denoise with a
+        guide (the 11x11 nearest, whose colour keeps the mean on one surface)
+        and 5 for the box (the paper's 5x5-pixel kernel: 3x3 Z measurements).
+    range_scale : float
+        Range scale ``h`` of the bilateral weights (2; larger smooths across
+        weaker edges).
+    colour_scale : float
+        With a guide: range scale ``h_c`` of the colour weights
+        ``exp(-max(chi_c - 3, 0) / (2 h_c^2))``, ``chi_c`` the colour
+        difference of two measurements in units of the guide's noise (5: a
+        colour step of a few noise levels, texture, still averages; a colour
+        edge does not). Without a guide it is not used.
+    min_snr : float
+        Smallest per-frequency ``|I + iQ| / sigma_I`` of a valid measurement
+        (4: on noisy walls the unwrapping errs on 0.07 % of the measurements
+        at SNR 4-5 and on 1 of 154 000 above 5, see docs/reports/isp.md).
+    min_amplitude : float
+        Smallest per-frequency amplitude (DN) of a valid measurement (0: only
+        the SNR test).
+    max_residual : float
+        Largest unwrapping residual (m) of a valid measurement (0.15: a wrong
+        wrap combination of 80/100/120 MHz leaves about 0.17 m or more).
+        Retune it for other frequency sets.
+    max_sigma : float or None
+        Largest predicted depth noise (m) of a valid measurement (0.015: a
+        5 cm error is then a 3.3-sigma event, 0.1 % of the valid
+        measurements); None: no limit.
+    flying_step : float or None
+        Depth jump (m) that marks a discontinuity (0.05; see
+        :func:`~rgbz_fast.tof.flying_pixels`); None: no flying-pixel test.
+    min_reflectance : float
+        Smallest NIR reflectance a valid measurement may imply (0.05; 0: no
+        test). Depths beyond the unambiguous range alias to shorter ones and
+        imply much darker surfaces (:func:`tof_depth`, Notes).
+    max_range : float or None
+        Unwrapping range in metres (see :func:`~rgbz_fast.tof.unwrap`); None:
+        the taps' unambiguous range, unless that spans more than
+        :data:`~rgbz_fast.tof.MAX_WRAPS` wraps of the lowest frequency (nearly
+        coprime frequencies), in which case a ValueError naming
+        ``frequencies`` asks for an explicit one; at most the unambiguous
+        range. Depths found beyond it are flagged out of range.
+    calibration : ToFCalibration or None
+        Per-measurement phase offsets and per-frequency cyclic error
+        (:func:`~rgbz_fast.tof.calibrate`), and the taps' dark offsets when
+        it holds them. It must have been made for these frequencies and Z
+        measurements.
+
+    Examples
+    --------
+    >>> isp = ToFISP(denoise="box")
+    >>> isp.window, isp.replace(min_snr=3).min_snr
+    (None, 3.0)
+    >>> ToFISP(window=4)
+    Traceback (most recent call last):
+    ...
+    ValueError: window: expected an odd positive integer (5 = the paper's 5x5 kernel), got 4
+    """
+
+    denoise: str = "bilateral"
+    window: int | None = None
+    range_scale: float = 2.0
+    colour_scale: float = 5.0
+    min_snr: float = 4.0
+    min_amplitude: float = 0.0
+    max_residual: float = 0.15
+    max_sigma: float | None = 0.015
+    flying_step: float | None = 0.05
+    min_reflectance: float = 0.05
+    max_range: float | None = None
+    calibration: ToFCalibration | None = None
+
+    def __post_init__(self):
+        put = object.__setattr__
+        put(self, "denoise", _check_denoise(self.denoise))
+        if self.window is not None:
+            put(self, "window", _check_window(self.window))
+        put(self, "range_scale", check_number(self.range_scale, "range_scale", lo=0,
+                                              lo_open=True))
+        put(self, "colour_scale", check_number(self.colour_scale, "colour_scale", lo=0,
+                                               lo_open=True))
+        put(self, "min_snr", check_number(self.min_snr, "min_snr", lo=0))
+        put(self, "min_amplitude", check_number(self.min_amplitude, "min_amplitude", lo=0))
+        put(self, "max_residual", check_number(self.max_residual, "max_residual", lo=0,
+                                               lo_open=True))
+        put(self, "max_sigma", check_number(self.max_sigma, "max_sigma", lo=0, lo_open=True,
+                                            allow_none=True))
+        put(self, "flying_step", check_number(self.flying_step, "flying_step", lo=0,
+                                              lo_open=True, allow_none=True))
+        put(self, "min_reflectance", check_number(self.min_reflectance, "min_reflectance",
+                                                  lo=0, hi=1))
+        put(self, "max_range", check_number(self.max_range, "max_range", lo=0, lo_open=True,
+                                            allow_none=True))
+        put(self, "calibration", _check_calibration(self.calibration))
+
+    @property
+    def _window_cells(self):
+        """The window the denoise runs with: ``window``, or 9 (bilateral) / 5 (box) if None."""
+        if self.window is not None:
+            return self.window
+        return 9 if self.denoise == "bilateral" else 5
+
+    def replace(self, **changes):
+        """A copy with some fields changed (and checked)."""
+        return merge_params(ToFISP, self, changes, caller="replace()")
+
+    def run(self, tof, *, guide=None, workers=None):
+        """Depth, amplitude and validity of every Z measurement of ``tof`` (a ToFTaps or a
+        RawFrame with taps); ``guide``: the frame's colour image (:func:`tof_depth`);
+        ``workers``: threads of the C kernels."""
+        return _run(as_taps(tof, "tof"), self, check_workers(workers), guide)
+
+
+def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
+    """The ToF ISP: taps of every Z measurement -> depth, amplitude, validity.
+
+    Parameters
+    ----------
+    tof : ToFTaps or RawFrame
+        The taps (``frame.tof`` of :func:`rgbz_fast.simulate`). The noise
+        model and the radiometry use ``tof.sensor`` (system gain, read noise,
+        DSNU, PRNU, black level, ambient suppression; source power, lens,
+        pixel): the ISP is calibrated for its sensor.
+    params : ToFISP or dict, optional
+        The parameters (default ``ToFISP()``; a dict holds some of its
+        fields).
+    guide : ndarray, shape (rows, cols, 3), optional
+        The frame's own colour image (``ColourISP().run(frame)``: uint8 or
+        uint16 sRGB, or float in [0, 1]). The bilateral denoise then also
+        weighs neighbours by colour similarity (window 21 by default) and the
+        flying-pixel test uses colour edges, resolving mixed measurements to
+        their side (:mod:`rgbz_fast.tof` guide, docs/guide/isp.md). None: the
+        unguided ISP.
+    workers : int, optional
+        Threads of the C kernels (None or -1: all cores). The result does
+        not depend on it.
+    **options
+        Fields of :class:`ToFISP` (``denoise="box"``, ``min_snr=3``,
+        ``calibration=cal``, ...), applied over ``params``: ``denoise``,
+        ``window``, ``range_scale``, ``colour_scale``, ``min_snr``, ``min_amplitude``,
+        ``max_residual``, ``max_sigma``, ``flying_step``, ``min_reflectance``,
+        ``max_range``, ``calibration``.
+
+    Returns
+    -------
+    ToFDepth
+
+    Raises
+    ------
+    ValueError, TypeError
+        A frame without taps, malformed taps, an unknown option, thresholds
+        out of range, a calibration of another sensor layout, a ``max_range``
+        the unwrapping cannot search (:class:`ToFISP`), or a ``guide`` that
+        is not the frame's colour image (wrong shape, 2-D, NaN, floats beyond
+        [0, 1]).
+
+    Notes
+    -----
+    Validity. A measurement is flagged
+
+    * saturated when a tap reached the white level at some frequency, or
+      the sensor flagged it (``tof.saturated``): its phase is biased;
+    * low-signal when ``snr < min_snr``, the amplitude is below
+      ``min_amplitude`` at some frequency, or ``sigma > max_sigma``.
+      ``snr = |I + iQ| / sigma_I`` with ``sigma_I^2`` the variance of the
+      (averaged) component: ``2 var(A)`` per measurement, ``var(A) = K c +
+      K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` (shot noise of the
+      collected charge ``c``, read noise, DSNU, quantisation and PRNU of a
+      tap holding ``e`` electrons, in DN^2), through the denoise's weights;
+    * inconsistent when the unwrapping residual exceeds ``max_residual``:
+      the frequencies disagree (a wrong unwrap, a mixed return);
+    * flying when the depth jumps by more than ``max(flying_step, 2 sigma)``
+      within one Z measurement of it (second differences along rows, columns
+      and diagonals, usable measurements only; slopes do not count): the
+      measurement may mix the two surfaces of a depth edge;
+    * out of range when the depth is < 0 or beyond ``max_range - 5 sigma``
+      (a guard: a surface just beyond the range reads either ~0 m or, through
+      the noise, just below the end), or the implied reflectance is below
+      ``min_reflectance``. A surface at ``D``
+      beyond the unambiguous range ``U`` gives the phases of ``D - kU`` at
+      every frequency -- no test on the phases can see it -- but its
+      amplitude is that of a surface ``((D - kU) / D)^2`` times darker: with
+      ``rho <= 1`` every ``D < U / (1 - sqrt(min_reflectance))`` (9.66 m for
+      80/100/120 MHz and 0.05) is flagged; farther ones only when their signal
+      is too low to be valid (docs/reports/isp.md measures both).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rgbz_fast.simulation import Scene
+    >>> from rgbz_fast.simulation import simulate
+    >>> scene = Scene(np.full((16, 16, 3), 0.5), depth=np.full((16, 16), 1.5))
+    >>> result = tof_depth(simulate(scene, "mask1", noise=False).tof)
+    >>> bool(np.allclose(result.depth, 1.5, atol=2e-3)), bool(result.valid.all())
+    (True, True)
+    >>> tof_depth(simulate(scene, "mask1").tof, params=ToFISP(denoise="box"), min_snr=3)
+    ToFDepth(64 measurements, block 1, 61 valid)
+    """
+    tof = as_taps(tof, "tof")
+    params = merge_params(ToFISP, params, options, caller="tof_depth()")
+    return _run(tof, params, check_workers(workers), guide)
+
+
+def _unwrap_phasors(i, q, f, w, max_range, calibration, nthreads):
+    """Depth, residual, wraps, phase and amplitude of (denoised) phasors (F, n): atan2,
+    amplitude and unwrapping in one C pass, or with a calibration atan2 and amplitude, the
+    cyclic-error correction of the phase, then the unwrapping."""
+    n = i.shape[1]
+    phase, amp = np.empty_like(i), np.empty_like(i)
+    i, q = np.ascontiguousarray(i), np.ascontiguousarray(q)
+    if calibration is None:
+        depth, residual, wraps = np.empty(n), np.empty(n), np.empty(n, np.int32)
+        ok = _kernels.tof_depth_iq(i, q, f, w, max_range, depth, residual, wraps, phase, amp,
+                                   workers=nthreads)
+    else:
+        ok = _kernels.tof_phase_iq(i, q, phase, amp, nthreads)
+    if not ok:
+        raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
+    if calibration is not None:
+        phase = calibration.correct_phase(phase)
+        depth, residual, wraps = unwrap(phase, f, max_range=max_range, workers=nthreads)
+    return depth, residual, wraps, phase, amp
+
+
+def _run(tof, p, nthreads, guide=None):
+    """The chain on checked taps with checked parameters ``p`` (a ToFISP)."""
+    if guide is not None:
+        return _run_guided(tof, p, nthreads, guide)
+    denoise, window, calibration = p.denoise, p._window_cells, p.calibration
+    taps = tof.taps
+    n = tof.n_sites
+    sensor = tof.sensor
+    f, w, max_range = _check_unwrap_args(taps.shape[0], tof.frequencies, None, p.max_range)
+    if calibration is not None:
+        calibration.check(tof)
+    # max over the 4F taps (uint16 reductions), then one comparison: = any(tap >= white)
+    saturated = np.asarray(tof.saturated, bool) | (taps.max(axis=(0, 1)) >= tof.white_level)
+    if calibration is not None and calibration.dark is not None:
+        taps = np.asarray(taps, np.float64) - calibration.dark[None]
+    grid = None                     # the grid of the Z measurements, built once when needed
+    if denoise == "none" and calibration is None:
+        depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
+            taps, f, max_range=max_range, workers=nthreads)
+        count = np.ones(n)
+        var = 2.0 * tap_variance(offset, sensor)
+    else:
+        # one pass over the taps in NumPy (I, Q and the offset exactly as the C kernel
+        # computes them), the calibration's offsets, the mean over the window, then one C
+        # pass from the phasors
+        i, q, offset = _phasors_offset(taps)
+        if calibration is not None:
+            z = (i + 1j * q) * np.exp(-1j * calibration.deviations)
+            i, q = np.ascontiguousarray(z.real), np.ascontiguousarray(z.imag)
+        if denoise == "box":
+            i, q, count, (off_mean,) = denoise_phasors(i, q, tof.sites, block=tof.block,
+                                                       window=window, use=~saturated,
+                                                       extra=(offset,))
+            noise_offset = np.where(count > 0, off_mean, offset)
+            var = 2.0 * tap_variance(noise_offset, sensor) / np.maximum(count, 1.0)
+        elif denoise == "bilateral":
+            var = 2.0 * tap_variance(offset, sensor)
+            grid = SiteGrid(tof.sites, tof.block)
+            i, q, var, count = denoise_phasors_bilateral(
+                i, q, var, grid, block=tof.block, window=window, use=~saturated,
+                range_scale=p.range_scale, workers=nthreads)
+        else:
+            count = np.ones(n)
+            var = 2.0 * tap_variance(offset, sensor)
+        depth, residual, wraps, phase, amp = _unwrap_phasors(i, q, f, w, max_range,
+                                                             calibration, nthreads)
+    snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
+    sigma = _depth_sigma(amp, var, f)
+    reflectance = _implied_reflectance(depth, amp, sensor, tof.block)
+
+    flags = assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated,
+                         grid if grid is not None else (lambda: SiteGrid(tof.sites, tof.block)),
+                         min_snr=p.min_snr, min_amplitude=p.min_amplitude,
+                         max_sigma=p.max_sigma, max_residual=p.max_residual,
+                         flying_step=p.flying_step, min_reflectance=p.min_reflectance,
+                         max_range=max_range)
+    return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
+                    offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
+                    valid=flags == 0, flags=flags,
+                    frequencies=np.asarray(tof.frequencies, np.float64).copy(),
+                    sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
+                    shape=tuple(tof.shape))
+
+
+def _run_guided(tof, p, nthreads, guide):
+    """The chain with the frame's colour image: the guided denoise (``"bilateral"``) or the
+    unguided one, then the flying-pixel test with colour edges."""
+    g, scale = check_guide(guide, tof.shape)
+    f, w, max_range = _check_unwrap_args(tof.taps.shape[0], tof.frequencies, None, p.max_range)
+    if p.calibration is not None:
+        p.calibration.check(tof)
+    if p.denoise == "bilateral":
+        return guided_run(tof, p, g, scale, nthreads, f, w, max_range,
+                          lambda i, q: _unwrap_phasors(i, q, f, w, max_range, p.calibration,
+                                                       nthreads))
+    res = _run(tof, dc_replace(p, flying_step=None), nthreads)
+    if p.flying_step is None:
+        return res
+    return guided_flying_of(res, g, scale, p.flying_step, nthreads)

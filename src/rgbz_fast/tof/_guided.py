@@ -1,0 +1,358 @@
+"""The colour-guided ToF ISP: the frame's own colour image steers the denoise and the
+flying-pixel test, and gives a depth at every pixel (:func:`upsample_depth`).
+
+A monolithic RGB-Z chip's colour image is registered with its Z measurements by
+construction, at full resolution and at a far higher SNR. With ``guide=`` the
+ToF ISP uses it three ways (C kernels, csrc/tof_guided.c; docs/guide/isp.md):
+
+* **Denoise.** A cross (joint) bilateral mean of the phasors over the Z
+  measurements of the window: each neighbour weighs
+  ``exp(-max(chi_p - 2F, 0) / (2 h^2) - max(chi_c - 3, 0) / (2 h_c^2))``, with
+  ``chi_p`` the phasor disagreement in units of its noise (as without a guide)
+  and ``chi_c = |c_m - c_n|^2 / (2 sigma_c^2)`` the colour disagreement in
+  units of the guide's own noise (Immerkaer's estimate [1]_, per channel, on
+  the colours at the measurements), so a low-signal measurement averages over its
+  own surface and never across a colour edge. It runs as a row pass then a
+  column pass, twice (the second round guided by the first's output): the
+  column pass averages row means of different rows, which share no
+  measurement, so the variance of the 2-D mean is exact for the weights at
+  ``2L`` instead of ``L^2`` neighbours for an ``L x L`` window.
+* **Flying pixels.** A measurement at a depth discontinuity (the second
+  differences of :func:`~rgbz_fast.tof.flying_pixels`) is compared with the two
+  sides of the discontinuity among its 8 neighbours: when its depth is one
+  side's and every cell of its Z pixel has that side's colour (a 2x2 Z pixel;
+  a 1x1 pixel's colour cannot tell a pure measurement from a blend), it is a
+  pure measurement and stays valid; when its depth lies between the sides and
+  all its cells have one side's colour, it takes that side's depth and the
+  bit :attr:`ToFFlag.RESOLVED` (``ToFDepth.measured`` keeps what was measured);
+  otherwise it is flagged flying.
+* **Full resolution.** :func:`upsample_depth`.
+
+References
+----------
+.. [1] Immerkaer, "Fast noise variance estimation" (docs/references.bib: immerkaer1996noise)
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _kernels
+from .._sensors import SPEED_OF_LIGHT
+from .._validate import check_image, check_number, check_workers
+from ._filters import SiteGrid
+from ._result import ToFDepth
+from ._validity import FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED
+
+__all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "UPSAMPLE_COLOUR_SCALE"]
+
+#: the window (Z-pixel cells) of the guided denoise when ``window`` is None: 11 Z
+#: measurements per axis on Mask1 and Mask2 (radius 10 cells)
+GUIDED_WINDOW = 21
+#: the colour contrast (``|c_1 - c_2|^2 / (2 sigma_c^2)``) between the two sides of a depth
+#: discontinuity above which the colour may say which side a measurement is on (25 sigma^2)
+EDGE_CONTRAST = 12.5
+#: a cell is on a side when its colour lies within this share of the contrast of it
+SIDE_SHARE = 0.15
+#: the smallest noise of a guide taken (sigma_c, in [0, 1] units): half a step of 8 bits
+NOISE_FLOOR = 0.5 / 255.0
+#: the range scale of the upsampling's colour kernel (units of the guide's noise, as the
+#: guided denoise's ``colour_scale``)
+UPSAMPLE_COLOUR_SCALE = 5.0
+#: upsampling: depths within max(3 sigma, 2 cm) of the heaviest candidate are averaged
+_UP_TOL_K, _UP_TOL_MIN = 3.0, 0.02
+#: upsampling in a hole: the measurements within 4 grid lines, Gaussian weights of this spread
+#: (grid spacings)
+_FILL_REACH, _FILL_SPREAD = 4, 2.0
+
+
+def check_guide(guide, shape, name="guide"):
+    """The frame's colour image as the kernels read it: (rows, cols, 3), C order, uint8,
+    uint16, float32 or float64 (other real types as float64), and its scale to [0, 1]."""
+    if guide is None:
+        raise TypeError(f"{name}: expected the frame's colour image (rows, cols, 3), got None")
+    g = check_image(guide, name)
+    if g.dtype == np.bool_:
+        raise TypeError(f"{name}: expected colour values, got dtype bool")
+    if g.ndim != 3 or g.shape[2] != 3:
+        raise ValueError(f"{name}: expected a colour image of shape (rows, cols, 3), got "
+                         f"shape {g.shape}")
+    if g.shape[:2] != tuple(shape):
+        raise ValueError(f"{name}: the image is {g.shape[0]}x{g.shape[1]}, the frame "
+                         f"{shape[0]}x{shape[1]}; expected the frame's own colour image")
+    if g.dtype == np.uint8:
+        scale = 1.0 / 255.0
+    elif g.dtype == np.uint16:
+        scale = 1.0 / 65535.0
+    else:
+        if g.dtype not in (np.float32, np.float64):
+            g = g.astype(np.float64)
+        lo, hi = float(g.min()), float(g.max())
+        if lo < 0.0 or hi > 1.0:
+            raise ValueError(f"{name}: float values span [{lo:g}, {hi:g}]; expected sRGB in "
+                             f"[0, 1] (or uint8 / uint16)")
+        scale = 1.0
+    return np.ascontiguousarray(g), scale
+
+
+class _Layout:
+    """The Z measurements on a full row-major grid (R, C): holes of an irregular layout are
+    scattered cells the kernels never use."""
+
+    def __init__(self, sites, block, shape):
+        self.grid = SiteGrid(sites, block)
+        self.block = block
+        self.R, self.C = self.grid.shape
+        self.N = self.R * self.C
+        self.full = self.grid.full
+        self.present = np.ascontiguousarray(self.grid.present.reshape(-1))
+        self.rows = np.ascontiguousarray(self.grid.rows_u, np.int64)
+        self.cols = np.ascontiguousarray(self.grid.cols_u, np.int64)
+
+    def to_grid(self, values, fill=0):
+        v = np.asarray(values)
+        return v if self.full else self.grid.to_grid(v, fill).reshape(v.shape[:-1] + (-1,))
+
+    def from_grid(self, values):
+        v = np.asarray(values)
+        return v if self.full else self.grid.from_grid(v.reshape(v.shape[:-1] + (self.R,
+                                                                                 self.C)))
+
+
+def guide_colours(g, scale, layout, nthreads):
+    """The guide at the measurements, in units of ``sqrt(2)`` times its noise: colours (3, N),
+    cells (block^2, 3, N) or None (1x1 Z pixels), and the noise sigma_c (3,)."""
+    N, b = layout.N, layout.block
+    col = np.empty((3, N), np.float32)
+    cells = np.empty((b * b, 3, N), np.float32) if b > 1 else None
+    lap = np.zeros(3)
+    _kernels.tofg_colour(g, layout.rows, layout.cols, b, scale, col, cells, lap, nthreads)
+    R, C = layout.R, layout.C
+    interior = max(R - 2, 0) * max(C - 2, 0)
+    # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|
+    sigma = (math.sqrt(math.pi / 2.0) / (6.0 * interior) * lap if interior else np.zeros(3))
+    sigma = np.maximum(sigma, NOISE_FLOOR)
+    inv = (1.0 / (math.sqrt(2.0) * sigma)).astype(np.float32)[:, None]
+    col *= inv
+    if cells is not None:
+        cells *= inv[None]
+    return col, cells, sigma
+
+
+def _radiometry(tof, f):
+    """(sigma_scale (F,), refl_coef (F,)) of the validity kernel: the weights of the depth
+    noise and the reciprocal amplitude of a reflectance-1 surface at 1 m."""
+    w = f * f
+    sigma_scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
+    sensor = tof.sensor
+    s1 = float(sensor.active_electrons(1.0))
+    contrast = sensor.contrasts * float(np.mean(sensor.tap_contrast))
+    model = sensor.system_gain * 0.25 * contrast * (s1 * tof.block * tof.block)
+    return np.ascontiguousarray(sigma_scale), np.ascontiguousarray(1.0 / model)
+
+
+def guided_flags(depth, sigma, flags, layout, col, cells, step, nthreads):
+    """The flying-pixel test with colour edges on measurements in grid order: adds FLYING and
+    RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced."""
+    usable = ((flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0) & layout.present
+    usable &= np.isfinite(depth) & np.isfinite(sigma)
+    out = np.empty_like(depth)
+    _kernels.tofg_flying(depth, sigma, usable.view(np.uint8), col, cells, layout.R, layout.C,
+                         step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out, nthreads)
+    return out
+
+
+def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
+    """The chain with the colour-guided denoise (``p.denoise == "bilateral"``); ``unwrap_iq(i,
+    q)`` gives depth, residual, wraps, phase and amplitude of the denoised phasors (F, N)."""
+    layout = _Layout(tof.sites, tof.block, tof.shape)
+    N, F = layout.N, f.size
+    taps = tof.taps
+    cal = p.calibration
+    if cal is not None and cal.dark is not None:
+        taps = np.asarray(taps, np.float64) - cal.dark[None]
+    if taps.dtype not in (np.uint16, np.float32, np.float64):
+        taps = taps.astype(np.float64)
+    sat = np.ascontiguousarray(layout.to_grid(np.asarray(tof.saturated, np.uint8), 1),
+                               np.uint8)
+    if not layout.full:
+        full = np.zeros(taps.shape[:2] + (N,), taps.dtype)
+        full[..., layout.grid.ri * layout.C + layout.grid.ci] = taps
+        taps = full
+    taps = np.ascontiguousarray(taps)
+    sensor = tof.sensor
+    k = sensor.system_gain
+    supp = 1.0 / (1.0 - sensor.ambient_suppression) if sensor.ambient_suppression else 1.0
+    const_var = k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + 1.0 / 12.0
+    zr, zi = np.empty((F, N), np.float32), np.empty((F, N), np.float32)
+    v = np.empty(N, np.float32)
+    offset = np.empty((F, N))
+    _kernels.tofg_prepare(taps, k, float(sensor.black_level), supp, const_var,
+                          float(sensor.prnu), float(tof.white_level), zr, zi, v, sat, offset,
+                          nthreads)
+    if cal is not None:
+        # each measurement's phasors turned by its phase offset's deviation (the ISP removes
+        # it before it averages neighbours)
+        turn = np.exp(-1j * layout.to_grid(cal.deviations, 0.0))
+        z = (zr + 1j * zi) * turn
+        zr, zi = np.ascontiguousarray(z.real, np.float32), np.ascontiguousarray(z.imag,
+                                                                                np.float32)
+    col, cells, _ = guide_colours(g, scale, layout, nthreads)
+    use = (layout.present & (sat == 0)).view(np.uint8)
+    radius = ((GUIDED_WINDOW if p.window is None else p.window) // 2) * tof.block
+    reach_r, reach_c = layout.grid.reach(radius)
+    inv2h2 = 1.0 / (2.0 * p.range_scale ** 2)
+    inv2hc2 = 1.0 / (2.0 * p.colour_scale ** 2)
+    R, C = layout.R, layout.C
+
+    def run_pass(data, nin, guide, axis, out64=False):
+        dr, di, dv = data
+        gr, gi, gv = guide
+        px, reach = (layout.cols, reach_c) if axis == 1 else (layout.rows, reach_r)
+        ov, on = np.empty(N, np.float32), np.empty(N, np.float32)
+        if out64:
+            o64 = (np.empty((F, N)), np.empty((F, N)))
+            _kernels.tofg_pass(dr, di, dv, nin, gr, gi, gv, col, use, R, C, axis, px, reach,
+                               radius, inv2h2, inv2hc2, None, None, o64[0], o64[1], ov, on,
+                               nthreads)
+            return (o64[0], o64[1], ov), on
+        o = (np.empty((F, N), np.float32), np.empty((F, N), np.float32))
+        _kernels.tofg_pass(dr, di, dv, nin, gr, gi, gv, col, use, R, C, axis, px, reach, radius,
+                           inv2h2, inv2hc2, o[0], o[1], None, None, ov, on, nthreads)
+        return (o[0], o[1], ov), on
+
+    raw = (zr, zi, v)
+    rows1, n1 = run_pass(raw, None, raw, 1)
+    guide1, _ = run_pass(rows1, n1, rows1, 0)
+    rows2, n2 = run_pass(raw, None, guide1, 1)
+    (mr, mi, var), neff = run_pass(rows2, n2, guide1, 0, out64=True)
+    depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
+    snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
+    flags = np.empty(N, np.uint8)
+    sigma_scale, refl_coef = _radiometry(tof, f)
+    _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, p.min_snr,
+                           p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
+                           p.max_residual, p.min_reflectance, max_range, snr, sigma, refl,
+                           flags, nthreads)
+    measured = depth
+    if p.flying_step is not None:
+        depth = guided_flags(measured, sigma, flags, layout, col, cells, p.flying_step,
+                             nthreads)
+    back = layout.from_grid
+    return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
+                    phase=back(phase), amplitude=back(amp), offset=back(offset),
+                    snr=back(snr), sigma=back(sigma), reflectance=back(refl),
+                    count=back(neff.astype(np.float64)), valid=back(flags == 0),
+                    flags=back(flags), frequencies=np.asarray(tof.frequencies, np.float64).copy(),
+                    sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
+                    shape=tuple(tof.shape), measured=back(measured))
+
+
+def guided_flying_of(result, g, scale, step, nthreads):
+    """The colour-guided flying-pixel test applied to a result of the unguided denoise (box or
+    none) whose flying test was left out: a new ToFDepth."""
+    layout = _Layout(result.sites, result.block, result.shape)
+    col, cells, _ = guide_colours(g, scale, layout, nthreads)
+    flags = np.ascontiguousarray(layout.to_grid(result.flags, FLAG_SATURATED), np.uint8)
+    measured = np.ascontiguousarray(layout.to_grid(result.depth, np.nan), np.float64)
+    sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
+    depth = guided_flags(measured, sigma, flags, layout, col, cells, step, nthreads)
+    back = layout.from_grid
+    fields = {k: getattr(result, k) for k in result.__dataclass_fields__}
+    fields.update(depth=back(depth), measured=result.depth, flags=back(flags),
+                  valid=back(flags) == 0)
+    return ToFDepth(**fields)
+
+
+def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers=None):
+    """A depth at every pixel of the frame, from the measurements guided by its colour image.
+
+    Joint bilateral upsampling [1]_: a pixel takes the four Z measurements
+    around it, each weighted bilinearly by its distance and by how close its
+    colour is to the pixel's (in units of the guide's noise, as the guided
+    denoise); the depth of the heaviest one, averaged with those of the four
+    within ``max(3 sigma, 2 cm)`` of it, so a pixel takes the depth of one
+    surface, never a blend across a depth edge. Valid measurements, resolved
+    ones (:attr:`ToFFlag.RESOLVED`, with the depth of their side) and those
+    flagged flying alone take part: the flying-pixel test flags both sides of
+    every depth edge, and the measurements right at an edge are the ones that
+    give its position (the colour picks the side; measured on the Middlebury
+    scenes, docs/reports/isp.md). A pixel whose four are all unusable takes the same rule over
+    the measurements within 4 grid lines (Gaussian weights) at a quarter of the
+    confidence; beyond that it gets NaN.
+
+    Parameters
+    ----------
+    result : ToFDepth
+        The ToF ISP's output for the frame (ideally guided by the same image).
+    guide : ndarray, shape (rows, cols, 3)
+        The frame's colour image: uint8 or uint16 sRGB, or float in [0, 1]
+        (``ColourISP().run(frame)``).
+    colour_scale : float
+        Range scale ``h_c`` of the colour kernel ``exp(-max(chi_c - 3, 0) /
+        (2 h_c^2))``, ``chi_c`` in units of the guide's noise (5).
+    workers : int, optional
+        Threads (None or -1: all cores); the result does not depend on it.
+
+    Returns
+    -------
+    depth : ndarray of float32, shape (rows, cols)
+        Metres; NaN where no measurement reaches.
+    confidence : ndarray of float32, shape (rows, cols)
+        The summed weight of the measurements the depth comes from, in
+        [0, 1]: 1 where the four around the pixel are valid and of its
+        colour, lower at colour edges, near unusable measurements and in
+        holes (at most 0.25 there); 0 where the depth is NaN.
+
+    Raises
+    ------
+    TypeError, ValueError
+        ``result`` that is not a ToFDepth; a ``guide`` of the wrong shape,
+        2-D, not finite, or float values outside [0, 1] (the message names
+        ``guide``).
+
+    References
+    ----------
+    .. [1] Kopf et al., "Joint bilateral upsampling" (docs/references.bib: kopf2007jbu)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rgbz_fast.simulation import Scene, simulate
+    >>> from rgbz_fast.isp import ColourISP
+    >>> from rgbz_fast.tof import tof_depth
+    >>> img = np.full((24, 32, 3), 0.4)
+    >>> img[:, 16:] = (0.1, 0.5, 0.2)                         # a green box ...
+    >>> z = np.where(np.arange(32) < 16, 2.0, 1.5) * np.ones((24, 1))   # ... in front
+    >>> frame = simulate(Scene(img, depth=z), "mask2", noise=False)
+    >>> guide = ColourISP().run(frame)
+    >>> depth, conf = upsample_depth(tof_depth(frame.tof, guide=guide), guide)
+    >>> depth.shape, depth[12, 12:20].round(2)              # the edge at column 16
+    ((24, 32), array([2. , 2. , 2. , 2. , 1.5, 1.5, 1.5, 1.5], dtype=float32))
+    """
+    if not isinstance(result, ToFDepth):
+        raise TypeError(f"result: expected a ToFDepth (tof_depth's output), got "
+                        f"{type(result).__name__}")
+    cs = check_number(colour_scale, "colour_scale", lo=0, lo_open=True)
+    nthreads = check_workers(workers)
+    g, scale = check_guide(guide, result.shape)
+    layout = _Layout(result.sites, result.block, result.shape)
+    col, _, sigma_c = guide_colours(g, scale, layout, nthreads)
+    usable = result.valid | ((result.flags & FLAG_RESOLVED) > 0) | (result.flags == FLAG_FLYING)
+    depth = np.ascontiguousarray(layout.to_grid(np.where(usable, result.depth, np.nan),
+                                                np.nan), np.float64)
+    sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
+    half = 0.5 * (result.block - 1)
+    rc = np.ascontiguousarray(layout.rows + half, np.float64)
+    cc = np.ascontiguousarray(layout.cols + half, np.float64)
+    steps = np.diff(rc) if rc.size > 1 else np.diff(cc)
+    spacing = float(np.median(steps)) if steps.size else 1.0
+    out = np.empty(result.shape, np.float32)
+    conf = np.empty(result.shape, np.float32)
+    cscale = np.ascontiguousarray(1.0 / (math.sqrt(2.0) * sigma_c))
+    _kernels.tofg_upsample(g, scale, cscale, depth, sigma, col, layout.R, layout.C, rc, cc,
+                           spacing, _FILL_REACH, 1.0 / (2.0 * _FILL_SPREAD ** 2),
+                           1.0 / (2.0 * cs * cs), _UP_TOL_K, _UP_TOL_MIN, out, conf, nthreads)
+    return out, conf

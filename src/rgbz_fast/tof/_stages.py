@@ -1,0 +1,391 @@
+"""The stages of the ToF ISP, each a function of arrays: demodulation, the paper's box denoise,
+unwrapping, and both fused.
+
+Conventions (docs/guide/sensor.md): ``I = A0 - A2``, ``Q = A3 - A1``,
+``phase = atan2(Q, I)`` wrapped to [0, 2 pi), ``amplitude = |I + iQ| / 2`` and
+``offset = mean(A_k)`` in DN; ``distance = c phase / (4 pi f) + m c / (2 f)``.
+The chain that runs them is :func:`~rgbz_fast.tof.tof_depth`; the edge-aware
+denoise is in :mod:`._filters`, the validity tests in :mod:`._validity`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _kernels
+from .._sensors import SPEED_OF_LIGHT
+from .._validate import check_number, check_workers
+from ._filters import _axis_offsets, _check_odd
+
+__all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unwrap",
+           "unambiguous_range", "MAX_WRAPS"]
+
+
+#: most wrap counts of the base frequency (the one with the longest ambiguity interval
+#: ``c / (2 f)``) that :func:`unwrap` searches per measurement: ``max_range`` may not exceed
+#: ``MAX_WRAPS * c / (2 min f)`` (csrc/rgbz.h, RGBZ_TOF_MAX_WRAPS). The cost of the search
+#: is linear in the count (at 1024 with two frequencies: 0.4 us per measurement and
+#: thread), while any practical frequency set needs a handful (80/100/120 MHz: 4).
+MAX_WRAPS = int(_kernels.TOF_MAX_WRAPS)
+
+
+def _check_taps(taps, name="taps"):
+    t = np.asarray(taps)
+    if t.ndim != 3 or t.shape[1] != 4 or t.shape[0] < 1:
+        raise ValueError(f"{name}: expected shape (F, 4, n_sites), got {t.shape}")
+    if t.dtype == np.bool_ or not (np.issubdtype(t.dtype, np.integer)
+                                   or np.issubdtype(t.dtype, np.floating)):
+        raise TypeError(f"{name}: expected real numbers, got dtype {t.dtype}")
+    if np.issubdtype(t.dtype, np.floating) and not np.all(np.isfinite(t)):
+        raise ValueError(f"{name}: holds NaN or infinite values; expected finite data")
+    return t
+
+
+def _check_window(window):
+    return _check_odd(window, "window")
+
+
+def demodulate(taps, *, workers=None):
+    """Four-tap demodulation of every measurement at every frequency (C kernel).
+
+    Parameters
+    ----------
+    taps : ndarray, shape (F, 4, n)
+        Tap values in DN. uint16, float32 and float64 are read directly,
+        other real types are converted to float64.
+    workers : int, optional
+        Threads (None or -1: all cores); the result does not depend on it.
+
+    Returns
+    -------
+    phase, amplitude, offset : ndarray of float64, shape (F, n)
+        ``atan2(A3 - A1, A0 - A2)`` in [0, 2 pi); ``|I + iQ| / 2`` (DN);
+        ``mean(A_k)`` (DN, black level included).
+    """
+    t = _check_taps(taps)
+    if t.dtype not in (np.uint16, np.float32, np.float64):
+        t = t.astype(np.float64)
+    t = np.ascontiguousarray(t)
+    F, _, n = t.shape
+    phase = np.empty((F, n))
+    amp = np.empty((F, n))
+    off = np.empty((F, n))
+    _kernels.tof_demodulate(t, phase, amp, off, check_workers(workers))
+    return phase, amp, off
+
+
+def phasors(taps):
+    """In-phase and quadrature components ``I = A0 - A2``, ``Q = A3 - A1`` (float64, DN).
+
+    Parameters
+    ----------
+    taps : ndarray, shape (F, 4, n)
+
+    Returns
+    -------
+    i, q : ndarray of float64, shape (F, n)
+        ``I + iQ = 2 * amplitude * exp(i * phase)``; the black level cancels.
+    """
+    t = _check_taps(taps)
+    i = np.subtract(t[:, 0], t[:, 2], dtype=np.float64)
+    q = np.subtract(t[:, 3], t[:, 1], dtype=np.float64)
+    return i, q
+
+
+def _phasors_offset(t):
+    """I, Q and the offset (F, n) float64 of checked taps, with the C kernel's arithmetic.
+
+    ``offset = 0.25 * ((A0 + A1) + (A2 + A3))`` in float64, as csrc/tof.c sums it.
+    """
+    i = np.subtract(t[:, 0], t[:, 2], dtype=np.float64)
+    q = np.subtract(t[:, 3], t[:, 1], dtype=np.float64)
+    offset = np.add(t[:, 0], t[:, 1], dtype=np.float64)
+    offset += np.add(t[:, 2], t[:, 3], dtype=np.float64)
+    offset *= 0.25
+    return i, q, offset
+
+
+def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
+    """Mean of ``I + iQ`` over the Z measurements of a window (paper Fig. 17).
+
+    The paper replaces the ToF ISP's 3x3 averaging filter by a 5x5 kernel in
+    which only the Z sites count. Measurement ``m`` enters the mean of
+    measurement ``n`` when both their top-left sites lie within
+    ``h = (window // 2) * block`` pixels of each other in rows and in columns:
+
+    * Mask1 (``block = 1``, Z sites every 2 pixels): ``h = 2``, the paper's
+      5x5 window, which holds 3x3 = 9 Z sites.
+    * Mask2 (``block = 2``, one 2x2 Z pixel every 4 pixels): a literal 5x5
+      pixel window around a Z pixel holds no other Z pixel, so the window is
+      measured in Z-pixel cells: ``h = 4`` pixels, the 3x3 = 9 nearest Z
+      pixels (a 12x12-pixel footprint). The same rule gives the 1x5 row of
+      Z pixels of the ``rows`` pattern (Z rows 6 pixels apart).
+
+    The mean is taken on the phasor (I, Q), not on the wrapped phase, so a
+    phase near 0 / 2 pi averages correctly and each measurement weighs by its
+    amplitude. Measurements with ``use = False`` (saturated) stay out of
+    every mean; at the frame edges the window holds fewer measurements.
+
+    Parameters
+    ----------
+    i, q : ndarray, shape (F, n)
+        Components per frequency (see :func:`phasors`).
+    sites : (rows, cols) arrays of int, shape (n,)
+        Top-left pixel of every measurement (``ToFTaps.sites``).
+    block : {1, 2}
+        Z pixel size in colour pixels.
+    window : int
+        Odd window size in Z-pixel cells (5: the paper's kernel).
+    use : ndarray of bool, shape (n,), optional
+        Measurements allowed into the means (default: all).
+    extra : tuple of ndarray, shape (F, n) or (n,)
+        More per-measurement values averaged with the same weights (e.g. the
+        offset).
+
+    Returns
+    -------
+    i_mean, q_mean : ndarray of float64, shape (F, n)
+    count : ndarray of float64, shape (n,)
+        Measurements in each mean (0 where every one was excluded; the means
+        are 0 there).
+    extra_mean : list of ndarray
+        The means of ``extra``.
+    """
+    i = np.asarray(i, np.float64)
+    q = np.asarray(q, np.float64)
+    if i.ndim != 2 or q.shape != i.shape:
+        raise ValueError(f"i, q: expected two arrays of the same shape (F, n), got "
+                         f"{i.shape} and {q.shape}")
+    n = i.shape[1]
+    rows, cols = (np.asarray(a, np.int64) for a in sites)
+    if rows.shape != (n,) or cols.shape != (n,):
+        raise ValueError(f"sites: expected two arrays of shape ({n},), got {rows.shape} and "
+                         f"{cols.shape}")
+    if block not in (1, 2):
+        raise ValueError(f"block: expected 1 or 2, got {block!r}")
+    window = _check_window(window)
+    use = np.ones(n, bool) if use is None else np.asarray(use, bool)
+    if use.shape != (n,):
+        raise ValueError(f"use: expected shape ({n},), got {use.shape}")
+    extra = [np.asarray(e, np.float64) for e in extra]
+    planes = [p for p in i] + [p for p in q]
+    for e in extra:
+        planes += [p for p in e] if e.ndim == 2 else [e]
+    radius = (window // 2) * block
+    # compress the measurements onto the grid of their distinct rows and columns
+    ur, ri = np.unique(rows, return_inverse=True)
+    uc, ci = np.unique(cols, return_inverse=True)
+    row_offs = _axis_offsets(ur, radius)
+    col_offs = _axis_offsets(uc, radius)
+    weight = None if use.all() else use.astype(np.float64)
+    # Mask1, Mask2, rows: the measurements fill the compressed grid in row-major order
+    full = (n == ur.size * uc.size and np.array_equal(ri, np.arange(n) // uc.size)
+            and np.array_equal(ci, np.arange(n) % uc.size))
+
+    def box(values):
+        if weight is not None:
+            values = values * weight
+        if full:
+            g = values.reshape(ur.size, uc.size)
+        else:
+            g = np.zeros((ur.size, uc.size))
+            g[ri, ci] = values
+        tmp = np.zeros_like(g)
+        for a, lo, hi, ok in row_offs:
+            tmp[lo:hi] += g[lo + a:hi + a] if ok.all() else g[lo + a:hi + a] * ok[:, None]
+        out = np.zeros_like(g)
+        for a, lo, hi, ok in col_offs:
+            out[:, lo:hi] += tmp[:, lo + a:hi + a] if ok.all() else tmp[:, lo + a:hi + a] * ok
+        return out.reshape(-1) if full else out[ri, ci]
+
+    count = box(np.ones(n))
+    inv = np.divide(1.0, count, out=np.zeros(n), where=count > 0)
+    means = [box(p) * inv for p in planes]
+    F = i.shape[0]
+    i_mean = np.stack(means[:F])
+    q_mean = np.stack(means[F:2 * F])
+    rest, k = [], 2 * F
+    for e in extra:
+        m = e.shape[0] if e.ndim == 2 else 1
+        rest.append(np.stack(means[k:k + m]) if e.ndim == 2 else means[k])
+        k += m
+    return i_mean, q_mean, count, rest
+
+
+def unambiguous_range(frequencies):
+    """``c / (2 gcd(f_i))`` in metres, the frequencies rounded to whole Hz (inf if they all
+    round to 0 Hz).
+
+    Depths that differ by this much give the same phases at every frequency: no
+    unwrapping can tell them apart (:attr:`rgbz_fast.ToFSensor.unambiguous_range`).
+    """
+    g = 0
+    for v in np.asarray(frequencies, np.float64).reshape(-1):
+        g = math.gcd(g, int(round(float(v))))
+    return SPEED_OF_LIGHT / (2 * g) if g else math.inf
+
+
+def _search_range(f, max_range):
+    """The validated unwrapping range (m) of frequencies ``f``: a search the kernel can finish.
+
+    None: the unambiguous range, unless it holds more than :data:`MAX_WRAPS` wraps of the
+    base frequency (nearly coprime frequencies): then the caller must choose. An explicit
+    range may not exceed the unambiguous range (the search would only repeat itself:
+    depths one range apart cost the same) nor :data:`MAX_WRAPS` base wraps.
+    """
+    amb = SPEED_OF_LIGHT / (2 * float(f.min()))
+    cap = MAX_WRAPS * amb
+    rng = unambiguous_range(f)
+    mhz = ", ".join(f"{v / 1e6:.9g}" for v in f)
+
+    def wraps(r):
+        return max(1, math.ceil(r / amb - 1e-12))
+
+    if max_range is None:
+        if rng > cap:
+            raise ValueError(
+                f"frequencies: the unambiguous range of {mhz} MHz is {rng:.6g} m, "
+                f"{rng / amb:.3g} wraps of the {amb:.6g} m interval of the lowest frequency; "
+                f"the search stops at {MAX_WRAPS} (nearly coprime frequencies): pass "
+                f"max_range= (at most {cap:.6g} m) for the distances you expect")
+        return rng
+    max_range = check_number(max_range, "max_range", lo=0, lo_open=True)
+    if max_range > rng * (1 + 1e-9):
+        raise ValueError(
+            f"max_range: {max_range:g} m is beyond the {rng:.6g} m unambiguous range of "
+            f"{mhz} MHz; farther depths alias onto nearer ones (the search would only "
+            f"repeat), so it must be at most that")
+    if wraps(max_range) > MAX_WRAPS:
+        raise ValueError(
+            f"max_range: {max_range:g} m holds {wraps(max_range)} wraps of the {amb:.6g} m "
+            f"interval of the lowest frequency; the search stops at {MAX_WRAPS} "
+            f"(max_range <= {cap:.6g} m)")
+    return max_range
+
+
+def _check_unwrap_args(phase_rows, frequencies, weights, max_range):
+    """(frequencies, weights, max_range) as the kernels take them, or a ValueError."""
+    f = np.asarray(frequencies, np.float64).reshape(-1)
+    if f.shape != (phase_rows,) or not np.all(np.isfinite(f)) or np.any(f <= 0):
+        raise ValueError(f"frequencies: expected {phase_rows} positive values in Hz, got "
+                         f"{frequencies!r}")
+    if phase_rows > _kernels.TOF_MAX_FREQS:
+        raise ValueError(f"phase: at most {_kernels.TOF_MAX_FREQS} frequencies, got "
+                         f"{phase_rows}")
+    w = f ** 2 if weights is None else np.asarray(weights, np.float64).reshape(-1)
+    if (w.shape != f.shape or not np.all(np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0
+            or not np.isfinite(w.sum())):
+        raise ValueError(f"weights: expected {f.size} non-negative values, not all 0, got "
+                         f"{weights!r}")
+    return np.ascontiguousarray(f), np.ascontiguousarray(w), _search_range(f, max_range)
+
+
+def _phase_error(ph):
+    """The ValueError for phases the unwrap kernel refused (it checks them as it reads them, so
+    this extra pass runs on the error path only)."""
+    if not np.all(np.isfinite(ph)):
+        return ValueError("phase: holds NaN or infinite values; expected finite data")
+    return ValueError(f"phase: values span [{float(ph.min())!r}, {float(ph.max())!r}]; expected "
+                      f"wrapped phases in [0, 2 pi) (as demodulate returns them)")
+
+
+def unwrap(phase, frequencies, *, weights=None, max_range=None, workers=None):
+    """Multi-frequency phase unwrapping to a distance (C kernel).
+
+    Brute force over the wrap counts of the frequency with the longest
+    ambiguity interval ``c / (2 f)``; every other frequency takes the wrap
+    count nearest to that candidate; the candidate with the smallest
+    weighted squared distance residual wins. The distance is the weighted
+    mean of the per-frequency distances.
+
+    Parameters
+    ----------
+    phase : ndarray, shape (F, n)
+        Wrapped phases in [0, 2 pi) (:func:`demodulate`'s). Anything else,
+        NaN included, raises ValueError (checked inside the kernel: no extra
+        pass over the data).
+    frequencies : array_like, shape (F,)
+        Modulation frequencies in Hz (at most 16).
+    weights : array_like, shape (F,), optional
+        Default ``f_i^2``: the inverse variance of each frequency's distance
+        for equal phase noise.
+    max_range : float, optional
+        Largest distance searched (m): at most the unambiguous range
+        ``c / (2 gcd(f_i))`` (frequencies rounded to whole Hz; beyond it the
+        search only repeats itself) and at most :data:`MAX_WRAPS` (1024)
+        wraps of the lowest frequency. Default: the unambiguous range; when
+        that is more than :data:`MAX_WRAPS` wraps (nearly coprime
+        frequencies such as 80 MHz + 1 Hz and 100 MHz: 1.5e8 m) a ValueError
+        naming ``frequencies`` asks for an explicit ``max_range``.
+    workers : int, optional
+        Threads (None or -1: all cores).
+
+    Returns
+    -------
+    depth : ndarray of float64, shape (n,)
+        Metres.
+    residual : ndarray of float64, shape (n,)
+        Weighted RMS of the per-frequency distances about the candidate (m):
+        small when the frequencies agree.
+    wraps : ndarray of int32, shape (n,)
+        Wrap count of the base frequency.
+
+    Raises
+    ------
+    ValueError
+        Malformed phases (shape, NaN, outside [0, 2 pi)), frequencies, weights
+        or ``max_range`` (see above); the message names the parameter.
+    """
+    ph = np.asarray(phase, np.float64)
+    if ph.ndim != 2:
+        raise ValueError(f"phase: expected shape (F, n), got {ph.shape}")
+    f, w, max_range = _check_unwrap_args(ph.shape[0], frequencies, weights, max_range)
+    ph = np.ascontiguousarray(ph)
+    n = ph.shape[1]
+    depth = np.empty(n)
+    residual = np.empty(n)
+    wraps = np.empty(n, np.int32)
+    if not _kernels.tof_unwrap(ph, f, w, max_range, depth, residual, wraps,
+                               check_workers(workers)):
+        raise _phase_error(ph)
+    return depth, residual, wraps
+
+
+def demodulate_unwrap(taps, frequencies, *, weights=None, max_range=None, workers=None):
+    """Demodulation and unwrapping fused in one C pass per measurement.
+
+    The same results as ``demodulate(taps)`` followed by ``unwrap(phase,
+    frequencies, ...)`` (phase, amplitude and offset bit for bit; depth and
+    residual to rounding), without the intermediate arrays: the kernel
+    demodulates a block of 128 measurements at every frequency into a scratch
+    buffer that stays in cache and unwraps it there.
+
+    Parameters
+    ----------
+    taps : ndarray, shape (F, 4, n)
+        As :func:`demodulate`.
+    frequencies, weights, max_range, workers
+        As :func:`unwrap`.
+
+    Returns
+    -------
+    depth, residual : ndarray of float64, shape (n,)
+    wraps : ndarray of int32, shape (n,)
+    phase, amplitude, offset : ndarray of float64, shape (F, n)
+    """
+    t = _check_taps(taps)
+    f, w, max_range = _check_unwrap_args(t.shape[0], frequencies, weights, max_range)
+    if t.dtype not in (np.uint16, np.float32, np.float64):
+        t = t.astype(np.float64)
+    t = np.ascontiguousarray(t)
+    F, _, n = t.shape
+    depth = np.empty(n)
+    residual = np.empty(n)
+    wraps = np.empty(n, np.int32)
+    phase, amp, off = (np.empty((F, n)) for _ in range(3))
+    _kernels.tof_depth(t, f, w, max_range, depth, residual, wraps, phase, amp, off,
+                       workers=check_workers(workers))
+    return depth, residual, wraps, phase, amp, off
+

@@ -1,0 +1,242 @@
+"""Validity of the ToF ISP's measurements: the flag bits, the predicted depth noise, the implied
+reflectance and the flying-pixel test.
+
+Flying pixels
+-------------
+A measurement next to a depth discontinuity may mix the two surfaces (a 2x2
+Z pixel straddling the edge, the lens blur, a window the denoise could not
+split): its depth then lies anywhere between them. :func:`flying_pixels`
+takes second differences of the depths along the rows, columns and
+diagonals of the grid -- ~0 on any surface, sloped or not -- and where one
+jumps by more than ``max(step, 2 x its noise)`` flags the two measurements
+across the jump: the band of measurements along each depth edge, on both
+sides (the ISP cannot tell which side of the edge a 2x2 pixel's charge came
+from) [1]_.
+
+References
+----------
+.. [1] Hansard et al., *Time-of-Flight Cameras: Principles, Methods and Applications*, ch. 1: flying pixels at depth discontinuities (docs/references.bib: hansard2013tof)
+"""
+
+from __future__ import annotations
+
+import enum
+
+import numpy as np
+
+from .._sensors import SPEED_OF_LIGHT
+from .._validate import check_number
+from ._filters import SiteGrid
+
+__all__ = ["ToFFlag", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
+           "FLAG_OUT_OF_RANGE", "FLAG_RESOLVED", "flying_pixels"]
+
+class ToFFlag(enum.IntFlag):
+    """The bits of :attr:`~rgbz_fast.tof.ToFDepth.flags`: why a measurement is not valid.
+
+    ``ToFFlag(int(result.flags[k]))`` names the tests measurement ``k`` failed.
+    The module constants ``FLAG_SATURATED`` ... ``FLAG_OUT_OF_RANGE`` are their
+    values as plain ints, so that ``flags |= FLAG_FLYING`` keeps a uint8 array
+    uint8 (NumPy takes an IntFlag member for an int64).
+
+    Attributes
+    ----------
+    SATURATED
+        A tap reached full scale (or the sensor flagged it saturated) at some
+        frequency.
+    LOW_SIGNAL
+        The SNR or the amplitude is below its threshold at some frequency, or
+        the predicted depth noise above ``max_sigma``.
+    INCONSISTENT
+        The frequencies disagree: the unwrapping residual exceeds
+        ``max_residual``.
+    FLYING
+        At a depth discontinuity: a second difference of the depths through
+        the measurement or an immediate Z neighbour exceeds ``flying_step``
+        (and 2 sigma), so the measurement may mix two surfaces.
+    OUT_OF_RANGE
+        The depth is < 0, within 5 sigma of ``max_range`` or beyond, or
+        implies a reflectance below ``min_reflectance``: most likely a surface
+        beyond the unambiguous range, aliased.
+    RESOLVED
+        With a guide only: a measurement at a depth edge whose depth lies
+        between the two sides and whose cells all have one side's colour
+        (a mixture of the two surfaces) holds that side's depth in
+        ``ToFDepth.depth``; ``ToFDepth.measured`` keeps the measured one. Not
+        valid (its measurement is of no single surface), but
+        :func:`~rgbz_fast.tof.upsample_depth` uses it.
+
+    Examples
+    --------
+    >>> ToFFlag(10)
+    <ToFFlag.LOW_SIGNAL|FLYING: 10>
+    >>> FLAG_FLYING == ToFFlag.FLYING, type(FLAG_FLYING).__name__
+    (True, 'int')
+    """
+
+    SATURATED = 1
+    LOW_SIGNAL = 2
+    INCONSISTENT = 4
+    FLYING = 8
+    OUT_OF_RANGE = 16
+    RESOLVED = 32
+
+
+FLAG_SATURATED = int(ToFFlag.SATURATED)
+FLAG_LOW_SIGNAL = int(ToFFlag.LOW_SIGNAL)
+FLAG_INCONSISTENT = int(ToFFlag.INCONSISTENT)
+FLAG_FLYING = int(ToFFlag.FLYING)
+FLAG_OUT_OF_RANGE = int(ToFFlag.OUT_OF_RANGE)
+FLAG_RESOLVED = int(ToFFlag.RESOLVED)
+
+
+def _depth_sigma(amp, var, frequencies):
+    """Depth noise (m) of the f^2-weighted mean of the per-frequency distances.
+
+    ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
+    variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
+    (uniform on the circle). In place on one (F, n) temporary: it runs on every frame.
+    """
+    f = np.asarray(frequencies, np.float64)
+    w = f * f
+    scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
+    t = np.multiply(amp, amp)
+    t *= 4.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.divide(var, t, out=t)                          # phase variance; inf / nan at 0
+    np.fmin(t, np.pi * np.pi / 3.0, out=t)               # fmin: a NaN takes the cap
+    t *= scale[:, None]
+    return np.sqrt(t.sum(axis=0))
+
+
+def _implied_reflectance(depth, amp, sensor, block):
+    """NIR reflectance that the amplitude implies at ``depth`` (the sensor's radiometry)."""
+    ok = depth > 0
+    d = np.where(ok, depth, 1.0)
+    s1 = sensor.active_electrons(d)
+    contrast = sensor.contrasts.reshape(-1, 1) * float(np.mean(sensor.tap_contrast))
+    model = sensor.system_gain * 0.25 * contrast * (s1 * block * block)[None]
+    rho = (amp / model).mean(axis=0)
+    return np.where(ok, rho, 0.0)
+
+
+def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid, *,
+                 min_snr, min_amplitude, max_sigma, max_residual, flying_step,
+                 min_reflectance, max_range):
+    """The flag bits (uint8, shape (n,)) of every measurement (:func:`~rgbz_fast.tof.tof_depth`).
+
+    ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes it (the
+    flying-pixel test needs it; the other tests do not).
+    """
+    n = depth.shape[0]
+    flags = np.zeros(n, np.uint8)
+    flags[saturated] |= FLAG_SATURATED
+    low = (snr < min_snr) | np.any(amp < min_amplitude, axis=0)
+    if max_sigma is not None:
+        low |= ~(sigma <= max_sigma)
+    flags[low] |= FLAG_LOW_SIGNAL
+    flags[residual > max_residual] |= FLAG_INCONSISTENT
+    if flying_step is not None:
+        usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
+        if not isinstance(grid, SiteGrid):
+            grid = grid()
+        flags[flying_pixels(depth, sigma, grid, block=grid.block, step=flying_step,
+                            usable=usable)] |= FLAG_FLYING
+    # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
+    # ~0 m (the reflectance test) or, through the noise, just below the end
+    out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
+    flags[out] |= FLAG_OUT_OF_RANGE
+    return flags
+
+
+def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0):
+    """Measurements at a depth discontinuity (possible mixtures of two surfaces).
+
+    Along each of the four grid directions (rows, columns, both diagonals) the
+    second difference ``J = |d[m+e] - 2 d[m] + d[m-e]|`` is ~0 on a surface,
+    sloped or not, and jumps at a discontinuity; where it exceeds
+    ``max(step, k sqrt(s[m+e]^2 + 4 s[m]^2 + s[m-e]^2))``, ``m`` and the
+    neighbour across the larger of its two first differences are flagged: the
+    pair on either side of the discontinuity. A measurement halfway between
+    the two surfaces (a 50 % mixture) is on the straight line through its
+    neighbours but not through its neighbours' neighbours: it is flagged by the
+    differences centred on them. (A first difference would flag slopes: none is
+    used, so two usable measurements alone on a line -- a frame corner's
+    diagonal -- are not tested along it.)
+
+    Parameters
+    ----------
+    depth, sigma : ndarray, shape (n,)
+        Depth and its noise (m).
+    sites : (rows, cols) or SiteGrid
+        Top-left pixel of every measurement (or their grid, built once).
+    block : {1, 2}
+        Z pixel size in colour pixels.
+    step : float
+        Smallest jump (m) that counts as a discontinuity.
+    usable : ndarray of bool, shape (n,), optional
+        Measurements whose depth can be trusted (default all); the others
+        take part in no difference.
+    k : float
+        A jump must also exceed ``k`` times the noise of the difference.
+
+    Returns
+    -------
+    ndarray of bool, shape (n,)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> rows, cols = (a * 2 for a in np.nonzero(np.ones((3, 8), bool)))
+    >>> step = np.where(cols < 8, 1.0, 1.3)                     # a 30 cm step
+    >>> flying_pixels(step, np.full(24, 0.002), (rows, cols)).reshape(3, 8)[0].astype(int)
+    array([0, 0, 0, 1, 1, 0, 0, 0])
+    >>> slope = 1.0 + 0.06 * cols                             # 12 cm per Z site, no edge
+    >>> bool(flying_pixels(slope, np.full(24, 0.002), (rows, cols)).any())
+    False
+    """
+    d = np.asarray(depth, np.float64)
+    s = np.asarray(sigma, np.float64)
+    grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
+    if d.shape != (grid.n,) or s.shape != (grid.n,):
+        raise ValueError(f"depth, sigma: expected shape ({grid.n},), got {d.shape} and "
+                         f"{s.shape}")
+    step = check_number(step, "step", lo=0)
+    ok = np.ones(grid.n, bool) if usable is None else np.asarray(usable, bool)
+    if ok.shape != (grid.n,):
+        raise ValueError(f"usable: expected shape ({grid.n},), got {ok.shape}")
+    R, C = grid.shape
+    # pad by one cell: every shift below is a slice
+    dg = np.zeros((R + 2, C + 2))
+    vg = np.zeros((R + 2, C + 2))
+    og = np.zeros((R + 2, C + 2), bool)
+    inner = (slice(1, R + 1), slice(1, C + 1))
+    good = ok & np.isfinite(s) & np.isfinite(d)
+    dg[inner] = grid.to_grid(np.where(good, d, 0.0))
+    vg[inner] = grid.to_grid(np.where(good, s * s, 0.0))
+    og[inner] = grid.to_grid(good, False) & grid.present
+    flag = np.zeros((R + 2, C + 2), bool)
+    k2 = k * k
+    step2 = step * step
+
+    def at(a, b):
+        return slice(1 + a, R + 1 + a), slice(1 + b, C + 1 + b)
+
+    for e in ((0, 1), (1, 0), (1, 1), (1, -1)):
+        lo, hi = at(-e[0], -e[1]), at(*e)
+        down = dg[inner] - dg[lo]                       # d[m] - d[m - e]
+        up = dg[hi] - dg[inner]                         # d[m + e] - d[m]
+        jump = up - down
+        jump *= jump
+        noise = vg[hi] + vg[lo]
+        noise += 4.0 * vg[inner]
+        noise *= k2
+        np.maximum(noise, step2, out=noise)
+        hit = og[inner] & og[lo] & og[hi] & (jump > noise)
+        # the pair across the discontinuity: the centre and its neighbour on the side of the
+        # larger first difference
+        toward_hi = np.abs(up) >= np.abs(down)
+        flag[inner] |= hit
+        flag[hi] |= hit & toward_hi
+        flag[lo] |= hit & ~toward_hi
+    return grid.from_grid(flag[inner] & og[inner])

@@ -1,0 +1,237 @@
+"""The bad-input contract of the command line, and its interrupts.
+
+Rows of docs/reports/robustness.md (``cli.*``), run by the shared runner of
+``tests/_contract.py``: exit status 2 and one line ``rgbz-fast CMD: error: ...``
+(after argparse's usage lines for usage errors). Then: Ctrl-C exits 130, a broken
+frame writes nothing, and SIGTERM during a write leaves no temporary file.
+"""
+
+from __future__ import annotations
+
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import pytest
+
+from _contract import CliRow, cli_tests, files  # noqa: F401
+from rgbz_fast._cli import main
+
+C = CliRow
+
+CLI_ROWS = [
+    C("cli.no-command", ("nope",), "argument COMMAND: invalid choice", usage=True),
+    C("cli.simulate-no-scene", ("simulate",), "the following arguments are required",
+      usage=True),
+    C("cli.simulate-missing", ("simulate", "{d}/missing.png"), "scene {d}/missing.png does not"),
+    C("cli.simulate-pattern", ("simulate", "{d}/rgb.png", "--pattern", "mask7"),
+      "pattern: 'mask7' is neither a preset"),
+    C("cli.simulate-no-bayer", ("simulate", "{d}/rgb.png", "--pattern", "ZR/RG"),
+      "pattern: 'ZR/RG' fits no Bayer phase"),
+    C("cli.simulate-seed", ("simulate", "{d}/rgb.png", "--seed", "-1"),
+      "argument --seed: expected an integer >= 0, got '-1'", usage=True),
+    C("cli.simulate-tiny", ("simulate", "{d}/tiny.png"),
+      "scene: frame 1x1 is smaller than one period"),
+    C("cli.simulate-corrupt", ("simulate", "{d}/corrupt.png"), "path: cannot read"),
+    C("cli.simulate-out-is-file", ("simulate", "{d}/rgb.png", "--out", "{d}/file.txt"), ""),
+    C("cli.reconstruct-missing", ("reconstruct", "{d}/missing.npz"), "path: "),
+    C("cli.reconstruct-rgb", ("reconstruct", "{d}/rgb.png"),
+      "rgb.png: expected a single-channel Bayer mosaic"),
+    C("cli.reconstruct-plain-bits", ("reconstruct", "{d}/plain.tif", "--pattern", "mask1"),
+      "bit_depth: required for a plain TIFF/PNG mosaic"),
+    C("cli.reconstruct-bits", ("reconstruct", "{d}/plain.tif", "--pattern", "mask1",
+                               "--bit-depth", "99"), "bit_depth: expected 1..16 bits"),
+    C("cli.reconstruct-extension", ("reconstruct", "{d}/notes.xyz"),
+      "path: unknown raw extension"),
+    C("cli.reconstruct-method", ("reconstruct", "{d}/ok.npz", "--method", "edi_rows"),
+      "method: 'edi_rows' needs"),
+    C("cli.reconstruct-method-unknown", ("reconstruct", "{d}/ok.npz", "--method", "nope"),
+      "method: expected one of"),
+    C("cli.reconstruct-workers", ("reconstruct", "{d}/ok.npz", "--workers", "0"),
+      "argument --workers: expected a positive integer, got '0'", usage=True),
+    C("cli.reconstruct-precision", ("reconstruct", "{d}/ok.npz", "--precision", "float16"),
+      "argument --precision: invalid choice", usage=True),
+    C("cli.reconstruct-truncated", ("reconstruct", "{d}/truncated.npz"),
+      "path: {d}/truncated.npz is not a readable rgbz-fast frame"),
+    C("cli.reconstruct-header", ("reconstruct", "{d}/nokeys.npz"),
+      "path: {d}/nokeys.npz is not a readable rgbz-fast frame (missing key 'pattern')"),
+    C("cli.reconstruct-corrupt-png", ("reconstruct", "{d}/corrupt.png", "--pattern", "mask1",
+                                      "--bit-depth", "11"), "path: cannot read {d}/corrupt.png"),
+    C("cli.evaluate-empty", ("evaluate", "--dataset", "{d}/empty"),
+      "dataset: no image files in"),
+    C("cli.evaluate-missing", ("evaluate", "--dataset", "{d}/missing"), "dataset: "),
+    C("cli.evaluate-crop", ("evaluate", "--dataset", "{d}/ds", "--crop", "-1"),
+      "argument --crop: expected an integer >= 0, got '-1'", usage=True),
+    C("cli.evaluate-methods", ("evaluate", "--dataset", "{d}/ds", "--methods", "nope"),
+      "methods: unknown method(s)"),
+    C("cli.evaluate-metrics", ("evaluate", "--dataset", "{d}/ds", "--metrics", "nope"),
+      "metrics: unknown metric(s)"),
+    C("cli.evaluate-patterns", ("evaluate", "--dataset", "{d}/ds", "--patterns", "foo"),
+      "pattern: 'foo' is neither"),
+    C("cli.evaluate-processes", ("evaluate", "--dataset", "{d}/ds", "--processes", "0"),
+      "argument --processes: expected a positive integer, got '0'", usage=True),
+    C("cli.evaluate-workers", ("evaluate", "--dataset", "{d}/ds", "--workers", "0"),
+      "argument --workers: expected a positive integer, got '0'", usage=True),
+    C("cli.evaluate-image-small", ("evaluate", "--dataset", "{d}/small.png", "--processes", "1",
+                                   "--no-cache", "--no-plots"), "crop: crop=8 leaves"),
+    C("cli.evaluate-corrupt", ("evaluate", "--dataset", "{d}/ds_corrupt", "--processes", "1",
+                               "--no-cache", "--metrics", "cfa_psnr"),
+      "dataset: cannot read {d}/ds_corrupt/a.png"),
+    C("cli.evaluate-out-is-file", ("evaluate", "--dataset", "{d}/ds", "--processes", "1",
+                                   "--metrics", "cfa_psnr", "--out", "{d}/file.txt"), ""),
+    C("cli.simulate-grey", ("simulate", "{d}/grey.png"),
+      "path: {d}/grey.png is a grey image (16x16); a colour sensor needs colour: pass --grey"),
+    C("cli.simulate-max-pixels", ("simulate", "{d}/rgb.png", "--max-pixels", "0"),
+      "argument --max-pixels: expected a positive integer, got '0'", usage=True),
+    C("cli.reconstruct-plain-bayer", ("reconstruct", "{d}/plain.tif", "--phase", "RGGB",
+                                      "--black-level", "0", "--white-level", "1023"),
+      "--rgbz-pattern: {d}/plain.tif is a plain Bayer frame (bayer_rggb, no Z sites), so there "
+      "is nothing to reconstruct"),
+    C("cli.reconstruct-rgbz-on-rgbz", ("reconstruct", "{d}/ok.npz", "--rgbz-pattern", "mask1"),
+      "--rgbz-pattern: {d}/ok.npz already has Z sites (pattern mask1)"),
+    C("cli.reconstruct-raw-flag-on-frame", ("reconstruct", "{d}/ok.npz", "--phase", "RGGB"),
+      "--phase: {d}/ok.npz is an rgbz-fast frame file"),
+    C("cli.reconstruct-two-patterns", ("reconstruct", "{d}/plain.tif", "--pattern", "mask1",
+                                       "--rgbz-pattern", "mask1"),
+      "--pattern: names the pattern of a plain mosaic that already holds Z sites"),
+    C("cli.reconstruct-png-phase", ("reconstruct", "{d}/bayer16.png", "--rgbz-pattern",
+                                    "mask1"),
+      "phase: bayer16.png does not record its CFA phase; pass --phase one of"),
+    C("cli.reconstruct-headerless-shape", ("reconstruct", "{d}/bayer.raw", "--rgbz-pattern",
+                                           "mask1", "--phase", "RGGB", "--black-level", "0",
+                                           "--white-level", "1023"),
+      "shape: the headerless file bayer.raw needs --shape ROWSxCOLS"),
+    C("cli.reconstruct-shape-syntax", ("reconstruct", "{d}/bayer.raw", "--shape", "4*4"),
+      "argument --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '4*4'",
+      usage=True),
+    C("cli.reconstruct-levels-syntax", ("reconstruct", "{d}/bayer.raw", "--black-level", "1,2"),
+      "argument --black-level: expected one value or four, got 2", usage=True),
+    C("cli.reconstruct-raw-options", ("reconstruct", "{d}/bayer16.png", "--rgbz-pattern",
+                                      "mask1", "--raw-options", "{d}/raw_options.json"),
+      "--raw-options: {d}/raw_options.json should map file names"),
+    C("cli.reconstruct-same-output", ("reconstruct", "{d}/ok.npz", "{d}/sub/ok.npz"),
+      "--out: {d}/ok.npz and {d}/sub/ok.npz would both write"),
+    C("cli.reconstruct-fifo", ("reconstruct", "{d}/fifo.npz"),
+      "path: {d}/fifo.npz is a FIFO (named pipe), not a regular file"),
+    C("cli.reconstruct-device", ("reconstruct", "{d}/zero.raw", "--shape", "4x4", "--phase",
+                                 "RGGB", "--black-level", "0", "--white-level", "1023",
+                                 "--rgbz-pattern", "mask1"),
+      "path: {d}/zero.raw is a character device, not a regular file"),
+    C("cli.reconstruct-max-pixels", ("reconstruct", "{d}/ok.npz", "--max-pixels", "10"),
+      "path: {d}/ok.npz declares a 16x16 image (0.0 megapixels), more than the limit of 10 "
+      "pixels; raise it with --max-pixels or RGBZ_FAST_MAX_PIXELS"),
+    C("cli.reconstruct-zip-bomb", ("reconstruct", "{d}/bomb.npz", "--max-bytes", "1000000"),
+      "path: {d}/bomb.npz is not a readable rgbz-fast frame (its arrays declare 2097"),
+    C("cli.depth-no-taps", ("depth", "{d}/ok.npz"), "path: {d}/ok.npz holds no ToF taps"),
+    C("cli.depth-range", ("depth", "{d}/tof.npz", "--range", "2:1"),
+      "argument --range: expected 0 <= MIN < MAX, got '2:1'", usage=True),
+    C("cli.evaluate-limit-zero", ("evaluate", "--dataset", "{d}/ds", "--limit", "0"),
+      "argument --limit: expected a positive integer, got '0'", usage=True),
+    C("cli.evaluate-limit-negative", ("evaluate", "--dataset", "{d}/ds", "--limit", "-1"),
+      "argument --limit: expected a positive integer, got '-1'", usage=True),
+    C("cli.evaluate-grey", ("evaluate", "--dataset", "{d}/ds_grey", "--processes", "1",
+                            "--no-cache", "--metrics", "cfa_psnr"),
+      "dataset: {d}/ds_grey/g.png is a grey image (16x16); a colour sensor needs colour: pass "
+      "--grey"),
+    C("cli.bench-shape", ("bench", "--shape", "1920*1080"),
+      "argument --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '1920*1080'",
+      usage=True),
+    C("cli.opcount-shape", ("opcount", "--shape", "64"),
+      "argument --shape: expected ROWSxCOLS such as 1080x1920 (rows first), got '64'",
+      usage=True),
+    C("cli.bench-workers", ("bench", "--workers", "0"),
+      "argument --workers: expected a positive integer", usage=True),
+    C("cli.bench-argument", ("bench", "--nope"), "unrecognized arguments: --nope", usage=True),
+    C("cli.opcount-pattern", ("opcount", "--patterns", "nope"), "pattern: 'nope' is neither"),
+    C("cli.opcount-argument", ("opcount", "--nope"), "unrecognized arguments: --nope",
+      usage=True),
+    C("cli.tradeoff-workers", ("tradeoff", "--workers", "0"),
+      "argument --workers: expected a positive integer", usage=True),
+    C("cli.tradeoff-argument", ("tradeoff", "--nope"), "unrecognized arguments: --nope",
+      usage=True),
+    C("cli.evaluate-optics-options", ("evaluate", "--dataset", "{d}/ds", "--olpf", "1"),
+      "--f-number, --olpf and --defocus-um need --optics"),
+    C("cli.calibrate-no-frames", ("calibrate",),
+      "no frames: give .npz frame files with their --distances, or --simulate"),
+    C("cli.calibrate-no-distances", ("calibrate", "{d}/ok.npz"),
+      "--distances: one distance per frame is needed"),
+    C("cli.calibrate-no-taps", ("calibrate", "{d}/ok.npz", "{d}/ok.npz", "--distances", "1,2",
+                                "--out", "{d}/cal.npz"), "sweep: the frame holds no ToF taps"),
+    C("cli.calibrate-both", ("calibrate", "{d}/ok.npz", "--simulate"),
+      "give frame files or --simulate, not both"),
+    C("cli.calibrate-sensor", ("calibrate", "--simulate", "--sensor", "[1]"),
+      "--sensor: expected a JSON object of ToFSensor arguments"),
+    C("cli.calibrate-sensor-value", ("calibrate", "--simulate", "--sensor",
+                                     '{"duty_cycle": 0}'),
+      "ToFSensor.duty_cycle: expected a finite number > 0 and <= 1"),
+    C("cli.evaluate-depth-sections", ("evaluate-depth", "--sections", "speed"),
+      "sections: unknown ['speed']"),
+    C("cli.config-argument", ("config", "--nope"), "unrecognized arguments: --nope",
+      usage=True),
+]
+
+test_cli_contract = cli_tests(CLI_ROWS)
+
+
+def test_cli_interrupt_exits_130(monkeypatch, capsys):
+    import rgbz_fast._cli.config as config_command
+
+    def interrupted(args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(config_command, "run", interrupted)
+    assert main(["config"]) == 130
+    assert capsys.readouterr().err.strip() == "rgbz-fast config: interrupted"
+
+
+def test_cli_reconstruct_of_a_broken_frame_writes_nothing(files, tmp_path, capsys):
+    """A frame file that does not load: exit 2, one line naming the file, no traceback, no
+    output file."""
+    out = tmp_path / "out"
+    for name in ("truncated.npz", "nokeys.npz", "notjson.npz"):
+        assert main(["reconstruct", str(files / name), "--out", str(out), "--quiet"]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1, err
+        assert err[0].startswith(f"rgbz-fast reconstruct: error: path: {files / name} is not "
+                                 "a readable rgbz-fast frame"), err
+    assert not out.exists() or not [p for p in out.rglob("*") if p.is_file()]
+
+
+# --------------------------------------------------------------------------- interrupted writes
+WRITE_LOOP = textwrap.dedent("""
+    import signal, sys
+    from pathlib import Path
+    from rgbz_fast import _cli, io as rio
+    signal.signal(signal.SIGTERM, _cli._terminate)      # what `rgbz-fast CMD` installs
+    blob = bytes(range(256)) * (1 << 17)                # 32 MiB per write
+    print("ready", flush=True)
+    i = 0
+    try:
+        while True:
+            rio.atomic_write(Path(sys.argv[1]) / f"f{i % 3}.bin", blob)
+            i += 1
+    except _cli.Terminated as exc:
+        sys.exit(exc.code)
+""")
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTERM"), reason="POSIX signals")
+def test_sigterm_during_writes_leaves_no_temporary_file(tmp_path):
+    """SIGTERM inside atomic_write leaves no hidden .tmp file: the command line's handler
+    turns the signal into an exception, and the write removes its temporary file."""
+    out = tmp_path / "w"
+    out.mkdir()
+    for delay in (0.02, 0.13, 0.31, 0.57):
+        proc = subprocess.Popen([sys.executable, "-c", WRITE_LOOP, str(out)],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        assert proc.stdout.readline().strip() == "ready", proc.stderr.read()
+        time.sleep(delay)
+        proc.send_signal(signal.SIGTERM)
+        _, err = proc.communicate(timeout=60)
+        assert proc.returncode == 128 + signal.SIGTERM, err[-2000:]
+        left = sorted(p.name for p in out.iterdir())
+        assert not [n for n in left if n.endswith(".tmp")], left
+        for p in out.iterdir():
+            assert p.stat().st_size == 256 << 17          # whole files only

@@ -1,0 +1,357 @@
+"""The bad-input contract of rgbz_fast.evaluation, and runs that are killed or interrupted.
+
+Rows of docs/reports/robustness.md (``evaluation.*``), run by the shared runner of
+``tests/_contract.py``; then: the configuration is checked when it is made, reports
+of no rows write nothing, a killed evaluation resumes from its cache, SIGTERM stops
+the worker pool, and a report is never half-written.
+"""
+
+from __future__ import annotations
+
+import json
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rgbz_fast as rz
+from _contract import Row, api_tests, files, rgb  # noqa: F401
+from rgbz_fast import evaluation as ev
+from rgbz_fast import io as rio
+
+R = Row
+
+ROWS = [
+    # -- evaluate, EvalConfig, evaluate_depth, reports -------------------------------------
+    R("evaluation.EvalConfig-empty", "EvalConfig(patterns=())",
+      lambda f: ev.EvalConfig(patterns=()), ValueError,
+      "patterns, methods and metrics must each name at least one entry"),
+    R("evaluation.EvalConfig-pattern", "EvalConfig(patterns=('foo',))",
+      lambda f: ev.EvalConfig(patterns=("foo",)), ValueError, "pattern: 'foo' is neither"),
+    R("evaluation.EvalConfig-method", "EvalConfig(methods=('foo',))",
+      lambda f: ev.EvalConfig(methods=("foo",)), ValueError, "methods: unknown method(s)"),
+    R("evaluation.EvalConfig-metric", "EvalConfig(metrics=('foo',))",
+      lambda f: ev.EvalConfig(metrics=("foo",)), ValueError, "metrics: unknown metric(s)"),
+    R("evaluation.EvalConfig-demosaic", "EvalConfig(demosaic='x')",
+      lambda f: ev.EvalConfig(demosaic="x"), ValueError,
+      "demosaic: expected one of 'malvar2004', 'menon2007', 'bilinear'"),
+    R("evaluation.EvalConfig-crop", "EvalConfig(crop=-1)", lambda f: ev.EvalConfig(crop=-1),
+      ValueError, "crop: expected an integer >= 0"),
+    R("evaluation.EvalConfig-optics", "EvalConfig(optics=2.8)",
+      lambda f: ev.EvalConfig(optics=2.8),
+      TypeError, "optics: expected an Optics or None, got float"),
+    R("evaluation.evaluate_depth-sections", "evaluate_depth(sections=('speed',))",
+      lambda f: ev.evaluate_depth(None, sections=("speed",)), ValueError,
+      "sections: unknown ['speed']"),
+    R("evaluation.evaluate_depth-isp", "evaluate_depth(isp='box')",
+      lambda f: ev.evaluate_depth(None, sections=("noise",), isp="box"), TypeError,
+      "isp: expected a ToFISP"),
+    R("evaluation.EvalConfig-bit_depth", "EvalConfig(bit_depth=40)",
+      lambda f: ev.EvalConfig(bit_depth=40), ValueError, "bit_depth: expected 1..16 bits"),
+    R("evaluation.EvalConfig-bit_depth-type", "EvalConfig(bit_depth='11')",
+      lambda f: ev.EvalConfig(bit_depth="11"), TypeError,
+      "bit_depth: expected an integer number of bits"),
+    R("evaluation.EvalConfig-params", "EvalConfig(params={'foo': 1})",
+      lambda f: ev.EvalConfig(params={"foo": 1}), TypeError,
+      "params got an unexpected keyword argument 'foo'"),
+    R("evaluation.EvalConfig-params-value", "EvalConfig(params={'sigma_floor': -1})",
+      lambda f: ev.EvalConfig(params={"sigma_floor": -1}), ValueError,
+      "sigma_floor: expected a finite number > 0"),
+    R("evaluation.EvalConfig-params-type", "EvalConfig(params='sg_mode=pure')",
+      lambda f: ev.EvalConfig(params="sg_mode=pure"), TypeError,
+      "params: expected a ReconstructParams, a dict of its fields or None"),
+    R("evaluation.EvalConfig-params-workers", "EvalConfig(params={'workers': 2})",
+      lambda f: ev.EvalConfig(params={"workers": 2}), TypeError,
+      "params got an unexpected keyword argument 'workers'"),
+    R("evaluation.EvalConfig-seed", "EvalConfig(seed=-1)", lambda f: ev.EvalConfig(seed=-1),
+      ValueError, "seed: expected an integer >= 0"),
+    R("evaluation.EvalConfig-noise", "EvalConfig(noise='yes')",
+      lambda f: ev.EvalConfig(noise="yes"),
+      TypeError, "noise: expected True or False"),
+    R("evaluation.evaluate-empty", "evaluate([])",
+      lambda f: ev.evaluate([], ev.EvalConfig()), ValueError,
+      "dataset: no images"),
+    R("evaluation.evaluate-override-unknown", "evaluate(ds, config, cropp=1)",
+      lambda f: ev.evaluate([], ev.EvalConfig(), cropp=1), TypeError,
+      "evaluate() got an unexpected keyword argument 'cropp' (fields of EvalConfig: "),
+    R("evaluation.EvalConfig-type", "evaluate(ds, config='sg')",
+      lambda f: ev.evaluate([], "sg"), TypeError,
+      "config: expected an EvalConfig, a dict of its fields or None, got str"),
+    R("evaluation.evaluate-processes", "evaluate(processes=0)",
+      lambda f: ev.evaluate(f / "ds", metrics=("cfa_psnr",), processes=0, progress=False),
+      ValueError, "processes: expected None or a positive number of processes"),
+    R("evaluation.evaluate-workers", "evaluate(workers=0)",
+      lambda f: ev.evaluate(f / "ds", metrics=("cfa_psnr",), workers=0, progress=False),
+      ValueError, "workers: expected None, -1 or a positive number of threads"),
+    R("evaluation.evaluate-duplicate-names", "evaluate(two images named 'a')",
+      lambda f: ev.evaluate([rio.ImageSource("a", "skimage:coffee")] * 2, progress=False),
+      ValueError, "dataset: image names must be unique"),
+    R("evaluation.evaluate-missing-folder", "evaluate('missing')",
+      lambda f: ev.evaluate(f / "missing", progress=False), ValueError, "dataset: "),
+    R("evaluation.evaluate-dataset-type", "evaluate(dataset=5)",
+      lambda f: ev.evaluate(5, progress=False), TypeError,
+      "dataset: expected a list of ImageSource, a folder or None, got int"),
+    R("evaluation.evaluate-dataset-entries", "evaluate(['a.png'])",
+      lambda f: ev.evaluate([str(f / "rgb.png")], progress=False), TypeError,
+      "dataset: expected ImageSource entries"),
+    R("evaluation.evaluate-image-too-small", "evaluate(1x1 image)",
+      lambda f: ev.evaluate([rio.ImageSource("t", str(f / "tiny.png"))], metrics=("cfa_psnr",),
+                            workers=1, progress=False), ValueError,
+      "rgb: frame 1x1 is smaller than one period"),
+    R("evaluation.evaluate-crop-too-large", "evaluate(20x20 image, crop=8, ssim)",
+      lambda f: ev.evaluate([rio.ImageSource("s", str(f / "small.png"))], metrics=("ssim",),
+                            workers=1, progress=False), ValueError, "crop: crop=8 leaves"),
+    R("evaluation.evaluate-skip_bad", "evaluate(skip_bad='yes')",
+      lambda f: ev.evaluate(f / "ds", metrics=("cfa_psnr",), skip_bad="yes", progress=False),
+      TypeError, "skip_bad: expected True or False"),
+    R("evaluation.paired_chart-one-method", "paired_chart(results of one method)",
+      lambda f: ev.paired_chart(ev.Results([{"image": "a", "pattern": "mask1", "method": "sg",
+                                             "metric": "cfa_psnr", "value": 1.0}],
+                                           ev.EvalConfig(methods=("sg",))), "cfa_psnr"),
+      ValueError, "baseline: 'sg' is the only method; nothing to compare"),
+    R("evaluation.write_reports-empty", "write_reports(Results([]))",
+      lambda f: ev.write_reports(ev.Results([], ev.EvalConfig()), f / "reports_empty"),
+      ValueError, "results: no rows to report"),
+    R("evaluation.write_reports-type", "write_reports(list of rows)",
+      lambda f: ev.write_reports([], f / "reports_list"), TypeError,
+      "results: expected Results"),
+]
+
+test_api_contract = api_tests(ROWS)
+
+
+def test_evaluate_accepts_any_iterable_dataset():
+    """The dataset check refuses only what is not a list of ImageSource: any iterable of
+    them (here a generator) is read once and evaluated."""
+    sources = (rio.ImageSource(n, f"skimage:{n}") for n in ["coffee"])
+    res = ev.evaluate(sources, metrics=("cfa_psnr",), methods=("bilinear",),
+                      patterns=("mask1",), workers=1, progress=False)
+    assert len(res) == 1 and np.isfinite(res.rows[0]["value"])
+
+
+# --------------------------------------------------------------------------- checked early
+def test_write_reports_of_no_rows_writes_nothing(tmp_path):
+    """An empty Results is an error before anything is written; old reports stay."""
+    empty = ev.Results([], ev.EvalConfig())
+    with pytest.raises(ValueError, match="^results: no rows to report"):
+        ev.write_reports(empty, tmp_path / "new")
+    assert not (tmp_path / "new").exists()
+    rows = [{"image": "a", "pattern": "mask1", "method": "sg", "metric": "cfa_psnr",
+             "value": 30.0}]
+    full = ev.Results(rows, ev.EvalConfig(patterns=("mask1",), methods=("sg",),
+                                          metrics=("cfa_psnr",)))
+    written = ev.write_reports(full, tmp_path / "old", plots=False)
+    before = {p: p.read_bytes() for p in written}
+    with pytest.raises(ValueError, match="^results: no rows to report"):
+        ev.write_reports(empty, tmp_path / "old", plots=False)
+    with pytest.raises(ValueError, match="^table_image: 'b' is not in the results"):
+        ev.write_reports(full, tmp_path / "old", plots=False, table_image="b")
+    assert {p: p.read_bytes() for p in (tmp_path / "old").iterdir()} == before
+
+
+def test_eval_config_is_checked_and_normalised_at_construction():
+    """A bad field fails at EvalConfig(...), naming it, before any worker runs; good values
+    are normalised so that equal configurations share their cache key."""
+    cfg = ev.EvalConfig(params=rz.ReconstructParams(precision="float64", sg_mode="pure",
+                                                    exp="fast"))
+    as_dict = ev.EvalConfig(params={"precision": "float64", "exp": "fast", "sg_mode": "pure"})
+    assert as_dict.params == cfg.params and isinstance(as_dict.params, rz.ReconstructParams)
+    assert as_dict.key("mask1", "sg") == cfg.key("mask1", "sg")
+    assert cfg.key("mask1", "sg") != ev.EvalConfig().key("mask1", "sg")
+    hash(as_dict)                                              # still hashable
+    np_typed = ev.EvalConfig(bit_depth=np.int64(11), noise=np.False_, seed=np.uint8(0))
+    assert np_typed.key("mask1", "sg") == ev.EvalConfig().key("mask1", "sg")
+    assert type(np_typed.bit_depth) is int and np_typed.noise is False
+    # every field of the parameters is accepted, and what is accepted runs
+    frame = rz.mosaic(rgb((8, 8)), "mask1")
+    for k, v in rz.ReconstructParams().as_dict().items():
+        params = ev.EvalConfig(params={k: v}).params
+        rz.reconstruct(frame, "sg", params=params)
+    for bad, exc in (({"method": "sg"}, TypeError), ({"pattern": "mask1"}, TypeError),
+                     ({"sigma_rel": None}, TypeError), ({1: 2}, TypeError),
+                     ({"domain": "lab"}, ValueError), ({"clip_level": -1}, ValueError),
+                     ({"clip_level": "high"}, TypeError), ({"out": None}, TypeError)):
+        with pytest.raises(exc):
+            ev.EvalConfig(params=bad)
+
+
+# --------------------------------------------------------------------------- interrupted runs
+def _cache_files(cache):
+    return sorted(p for p in Path(cache).rglob("*") if p.is_file())
+
+
+def test_killed_evaluate_resumes_from_its_cache(tmp_path):
+    """SIGKILL `rgbz-fast evaluate` once its first cache file exists; the rerun resumes.
+
+    Nothing visible is ever half-written: every cache file of the killed run parses,
+    temporary files are hidden (".name.XXXX.tmp") and never carry a final name, and
+    the reports are either absent or complete. The resumed run reuses every cached
+    result (the files are not rewritten) and gives the numbers of a fresh run.
+    """
+    import imageio.v3 as iio
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    rng = np.random.default_rng(0)
+    for i in range(4):
+        img = rng.integers(0, 256, (96, 128, 3), dtype=np.uint8)
+        iio.imwrite(ds / f"img{i}.png", img)
+    out, cache = tmp_path / "out", tmp_path / "cache"
+    argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--dataset", str(ds), "--out",
+            str(out), "--cache", str(cache), "--processes", "1", "--quiet", "--no-plots",
+            "--metrics", "cfa_psnr,cpsnr", "--methods", "bilinear,bi,edi_central,edi_line,sg",
+            "--patterns", "mask1,mask2"]
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    deadline = time.monotonic() + 300
+    visible = []
+    while time.monotonic() < deadline and proc.poll() is None:
+        visible = [p for p in _cache_files(cache) if not p.name.startswith(".")]
+        if visible:
+            break
+        time.sleep(0.005)
+    assert proc.poll() is None, "evaluate finished before it could be killed"
+    assert visible, "no cache file appeared"
+    proc.send_signal(signal.SIGKILL)
+    proc.communicate(timeout=60)
+    assert proc.returncode == -signal.SIGKILL
+
+    # nothing half-written under a final name
+    survivors = _cache_files(cache)
+    finals = [p for p in survivors if not p.name.startswith(".")]
+    assert finals
+    for p in finals:
+        assert p.suffix == ".json" and isinstance(json.loads(p.read_text()), dict), p
+    for p in survivors:
+        if p.name.startswith("."):
+            assert p.name.endswith(".tmp"), p
+    for p in _cache_files(out) if out.exists() else []:
+        if p.suffix == ".json" and p.parent == out:
+            json.loads(p.read_text())
+    mtimes = {p: p.stat().st_mtime_ns for p in finals}
+
+    # resume: the rerun finishes, reuses the cached results and equals a fresh run
+    r = subprocess.run(argv + ["--json"], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr[-3000:]
+    resumed = json.loads(r.stdout)
+    for p, t in mtimes.items():
+        assert p.stat().st_mtime_ns == t, f"{p} was recomputed"
+    fresh = ev.evaluate(rio.folder_dataset(ds), ev.EvalConfig(
+        patterns=("mask1", "mask2"), methods=("bilinear", "bi", "edi_central", "edi_line", "sg"),
+        metrics=("cfa_psnr", "cpsnr")), workers=1, progress=False)
+    for (p, m, k), (mean, _, n) in fresh.summary().items():
+        got = resumed[f"{p}/{m}/{k}"]
+        assert got["n"] == n and got["mean"] == pytest.approx(mean, rel=1e-12), (p, m, k)
+    reports = sorted(q.name for q in out.iterdir() if q.is_file())
+    assert {"results.csv", "results.json", "summary.md"} <= set(reports)
+    assert not [q for q in out.iterdir() if q.name.endswith(".tmp")]
+
+
+def _children(pid):
+    """Live (non-zombie) processes whose parent is ``pid``, from /proc."""
+    out = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            fields = stat.rsplit(")", 1)[1].split()
+            if int(fields[1]) == pid and fields[0] != "Z":
+                out.append(int(entry.name))
+    return out
+
+
+def _alive(pid):
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+def test_sigterm_stops_the_evaluation_pool(tmp_path):
+    """SIGTERM to `rgbz-fast evaluate --processes 2` stops the pool's workers before the
+    process exits (143): no worker outlives the run, and no temporary cache file is left."""
+    import imageio.v3 as iio
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    rng = np.random.default_rng(1)
+    for i in range(6):
+        iio.imwrite(ds / f"img{i}.png", rng.integers(0, 256, (256, 320, 3), dtype=np.uint8))
+    cache = tmp_path / "cache"
+    argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--dataset", str(ds), "--out",
+            str(tmp_path / "out"), "--cache", str(cache), "--processes", "2", "--quiet",
+            "--no-plots"]
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 300
+    workers = []
+    while time.monotonic() < deadline and proc.poll() is None:
+        workers = [c for c in _children(proc.pid)
+                   if "multiprocessing" in Path(f"/proc/{c}/cmdline").read_text()]
+        if len(workers) >= 2 and list(cache.rglob("*.json")):
+            break
+        time.sleep(0.02)
+    assert proc.poll() is None and len(workers) >= 2, "the pool never ran"
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 128 + signal.SIGTERM, err[-2000:]
+    assert err.strip().splitlines()[-1] == "rgbz-fast evaluate: terminated"
+    time.sleep(0.5)
+    assert not [w for w in workers if _alive(w)], "orphaned worker processes"
+    assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]
+
+
+REPORT_LOOP = textwrap.dedent("""
+    import sys
+    from pathlib import Path
+    from rgbz_fast import evaluation as ev
+    rows = [{"image": f"img{i}", "pattern": p, "method": m, "metric": k, "value": i * 0.5}
+            for i in range(60) for p in ("mask1", "mask2")
+            for m in ("bilinear", "bi", "edi_central", "edi_line", "sg")
+            for k in ("cfa_psnr", "cpsnr", "ssim", "ms_ssim", "zipper")]
+    res = ev.Results(rows, ev.EvalConfig())
+    print("ready", flush=True)
+    while True:
+        ev.write_reports(res, Path(sys.argv[1]), plots=False)
+""")
+
+
+def test_reports_are_never_half_written_when_killed(tmp_path):
+    """Kill a process that rewrites the reports in a loop, at several moments; every
+    visible report is complete (CSV rows, JSON that parses, Markdown tables whole).
+
+    Each file is all-or-nothing; the set is written file by file, so a kill between
+    two files leaves the earlier ones new and the later ones from the previous run.
+    """
+    out = tmp_path / "reports"
+    checked = 0
+    for delay in (0.05, 0.37, 0.81):            # one round of reports takes ~0.35 s
+        proc = subprocess.Popen([sys.executable, "-c", REPORT_LOOP, str(out)],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        assert proc.stdout.readline().strip() == "ready", proc.stderr.read()
+        time.sleep(delay)
+        proc.kill()
+        proc.communicate(timeout=60)
+        for p in (out.iterdir() if out.exists() else ()):
+            if p.name.startswith("."):
+                assert p.name.endswith(".tmp")      # a temporary file, never a final name
+                continue
+            text = p.read_text()
+            checked += 1
+            if p.name == "results.csv":
+                assert len(text.splitlines()) == 1 + 60 * 2 * 5 * 5 and text.endswith("\n")
+            elif p.name == "results.json":
+                assert len(json.loads(text)["rows"]) == 60 * 2 * 5 * 5
+            elif p.name == "summary.md":
+                # per mask: the means table and the paired differences to bilinear
+                assert text.endswith("\n") and text.count("| SG |") == 4, text[-200:]
+            elif p.suffix == ".md":
+                assert text.endswith("\n") and text.count("| Zipper (%) |") == 2, text[-200:]
+    assert checked >= 4, "the reports were never written before the kills"

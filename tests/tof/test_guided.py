@@ -1,0 +1,296 @@
+"""The colour-guided ToF ISP (tof_depth(guide=), ToFISP.run(guide=)) and upsample_depth: every
+C kernel of csrc/tof_guided.c against its NumPy reference (tests/_reference/tof.py), the
+chain on simulated frames, and bad guides."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from _reference import tof as ref  # noqa: E402
+
+from rgbz_fast import _kernels
+from rgbz_fast.isp import ColourISP
+from rgbz_fast.simulation import Scene, ToFSensor, simulate
+from rgbz_fast.tof import ToFFlag, ToFISP, tof_depth, upsample_depth
+
+#: the filter computes in float, its reference in double
+FILTER_TOL = dict(rtol=2e-4, atol=2e-4)
+
+
+def _frame(pattern="mask2", shape=(48, 64), seed=2, noise=True, sensor=None):
+    """Two boxes of their own colour in front of a textured wall, a slanted floor."""
+    H, W = shape
+    yy, xx = np.mgrid[0:H, 0:W]
+    img = np.stack([0.35 + 0.01 * np.sin(xx / 3.0), 0.4 + 0 * xx,
+                    0.3 + 0.01 * np.cos(yy / 4.0)], -1)
+    depth = 2.0 + 0.004 * yy
+    box = (yy > 10) & (yy < 30) & (xx > 12) & (xx < 30)
+    img[box] = (0.1, 0.5, 0.15)
+    depth[box] = 1.5
+    box2 = (yy > 20) & (yy < 44) & (xx > 38) & (xx < 58)
+    img[box2] = (0.6, 0.2, 0.1)
+    depth[box2] = 1.7
+    frame = simulate(Scene(img, depth=depth, ir_reflectance=np.full(shape, 0.6)), pattern,
+                     tof_sensor=sensor, seed=seed, noise=noise)
+    return frame, ColourISP().run(frame), depth
+
+
+# --------------------------------------------------------------------------- kernels
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
+def test_prepare_matches_numpy(dtype):
+    rng = np.random.default_rng(1)
+    taps = rng.uniform(0, 2047, (3, 4, 500)).round().astype(dtype)
+    taps[1, 2, 7] = 2047
+    args = (0.25, 64.0, 1.0 / 0.9, 6.3, 0.01, 2047.0)
+    zr, zi = np.empty((3, 500), np.float32), np.empty((3, 500), np.float32)
+    v, sat, off = np.empty(500, np.float32), np.zeros(500, np.uint8), np.empty((3, 500))
+    _kernels.tofg_prepare(taps, *args, zr, zi, v, sat, off, 2)
+    rzr, rzi, rv, rsat, roff = ref.guided_prepare(taps, *args)
+    np.testing.assert_array_equal(zr, rzr.astype(np.float32))
+    np.testing.assert_array_equal(zi, rzi.astype(np.float32))
+    np.testing.assert_allclose(v, rv, rtol=1e-6)
+    np.testing.assert_array_equal(sat.astype(bool), rsat)
+    np.testing.assert_array_equal(off, roff)
+
+
+@pytest.mark.parametrize("dtype,scale", [(np.uint8, 1 / 255), (np.uint16, 1 / 65535),
+                                         (np.float32, 1.0), (np.float64, 1.0)])
+@pytest.mark.parametrize("block", [1, 2])
+def test_guide_colours_match_numpy(dtype, scale, block):
+    rng = np.random.default_rng(3)
+    top = {np.uint8: 255, np.uint16: 65535}.get(dtype, 1.0)
+    guide = (rng.uniform(0, 1, (30, 41, 3)) * top).astype(dtype)
+    rows = np.arange(1, 28, 3, dtype=np.int64)
+    cols = np.arange(0, 40, 4, dtype=np.int64)
+    N = rows.size * cols.size
+    col = np.empty((3, N), np.float32)
+    cells = np.empty((block * block, 3, N), np.float32)
+    lap = np.zeros(3)
+    _kernels.tofg_colour(guide, rows, cols, block, scale, col, cells, lap, 2)
+    rcol, rcells, rlap = ref.guided_colour(guide, rows, cols, block, scale)
+    np.testing.assert_allclose(col, rcol, rtol=1e-6)
+    np.testing.assert_allclose(cells, rcells, rtol=1e-6)
+    np.testing.assert_allclose(lap, rlap, rtol=1e-5)
+
+
+def _planes(R, C, F=3, seed=0):
+    """Phasors of two surfaces with a step, their noise, colours that mostly follow it."""
+    rng = np.random.default_rng(seed)
+    N = R * C
+    step = (np.arange(C) >= C // 2)[None, :].repeat(R, 0).reshape(-1)
+    base = np.where(step, 300.0, -200.0)
+    zr = (base[None] + rng.normal(0, 20, (F, N))).astype(np.float32)
+    zi = (0.5 * base[None] + rng.normal(0, 20, (F, N))).astype(np.float32)
+    v = rng.uniform(300, 500, N).astype(np.float32)
+    col = (np.where(step, 5.0, 0.0)[None] + rng.normal(0, 0.7, (3, N))).astype(np.float32)
+    use = (rng.random(N) > 0.05).astype(np.uint8)
+    return zr, zi, v, col, use
+
+
+@pytest.mark.parametrize("axis", [0, 1])
+@pytest.mark.parametrize("second", [False, True])
+@pytest.mark.parametrize("R,C,F", [(23, 37, 3), (20, 70, 1), (9, 40, 5), (12, 300, 3)])
+def test_guided_pass_matches_numpy(axis, second, R, C, F):
+    """Both axes, a first pass and a pass over a first pass's output (n_eff in), regular lines
+    (the blocked fast path and the edges) and frequencies beyond the fast path's 4."""
+    zr, zi, v, col, use = _planes(R, C, F)
+    N = R * C
+    px = np.arange(C if axis == 1 else R, dtype=np.int64) * 2
+    nin = np.random.default_rng(5).uniform(0.5, 9, N).astype(np.float32) if second else None
+    if second:
+        nin[::7] = 0.0
+    gr, gi, gv = zr + 3, zi - 2, v * 1.5
+    outs = [np.empty((F, N), np.float32), np.empty((F, N), np.float32),
+            np.empty(N, np.float32), np.empty(N, np.float32)]
+    _kernels.tofg_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, 5, 10, 0.125, 0.02,
+                       outs[0], outs[1], None, None, outs[2], outs[3], 2)
+    want = ref.guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, 5, 10, 0.125,
+                           0.02)
+    scale = np.abs(zr).max()
+    np.testing.assert_allclose(outs[0], want[0], rtol=0, atol=2e-4 * scale)
+    np.testing.assert_allclose(outs[1], want[1], rtol=0, atol=2e-4 * scale)
+    np.testing.assert_allclose(outs[2], want[2], **FILTER_TOL)
+    np.testing.assert_allclose(outs[3], want[3], **FILTER_TOL)
+
+
+def test_guided_pass_on_uneven_lines_and_double_output():
+    """Grid lines at uneven pixel spacing (a neighbour beyond the radius stays out), and the
+    double-precision output of the last pass."""
+    R, C = 15, 33
+    zr, zi, v, col, use = _planes(R, C)
+    px = np.cumsum(np.r_[0, np.random.default_rng(2).integers(1, 5, C - 1)]).astype(np.int64)
+    o64 = (np.empty((3, R * C)), np.empty((3, R * C)))
+    ov, on = np.empty(R * C, np.float32), np.empty(R * C, np.float32)
+    _kernels.tofg_pass(zr, zi, v, None, zr, zi, v, col, use, R, C, 1, px, 4, 6, 0.125, 0.02,
+                       None, None, o64[0], o64[1], ov, on, 1)
+    want = ref.guided_pass(zr, zi, v, None, zr, zi, v, col, use, R, C, 1, px, 4, 6, 0.125, 0.02)
+    np.testing.assert_allclose(o64[0], want[0], rtol=0, atol=2e-4 * np.abs(zr).max())
+    np.testing.assert_allclose(on, want[3], **FILTER_TOL)
+
+
+def test_validity_matches_numpy():
+    rng = np.random.default_rng(4)
+    N, F = 2000, 3
+    amp = rng.uniform(0, 80, (F, N))
+    amp[:, :3] = 0.0
+    var = rng.uniform(50, 500, N).astype(np.float32)
+    depth = rng.uniform(-0.5, 8, N)
+    residual = rng.uniform(0, 0.3, N)
+    sat = (rng.random(N) < 0.05).astype(np.uint8)
+    scale, coef = rng.uniform(1e-5, 1e-4, F), rng.uniform(1e-3, 1e-2, F)
+    out = [np.empty(N), np.empty(N), np.empty(N), np.empty(N, np.uint8)]
+    args = (4.0, 1.0, 0.015, 0.15, 0.05, 7.49)
+    _kernels.tofg_validity(amp, var, depth, residual, sat, scale, coef, *args, *out, 2)
+    want = ref.guided_validity(amp, var, depth, residual, sat, scale, coef, *args)
+    for a, b in zip(out[:3], want[:3]):
+        np.testing.assert_allclose(a, b, rtol=1e-12)
+    np.testing.assert_array_equal(out[3], want[3])
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+def test_guided_flying_matches_numpy(pattern):
+    frame, guide, _ = _frame(pattern, shape=(64, 80))
+    res = tof_depth(frame.tof, guide=guide, flying_step=None)
+    from rgbz_fast.tof._guided import _Layout, guide_colours
+    lay = _Layout(frame.tof.sites, frame.tof.block, frame.tof.shape)
+    col, cells, _ = guide_colours(guide, 1 / 255, lay, 1)
+    usable = ((res.flags & 3) == 0).astype(np.uint8)
+    flags, out = np.zeros(lay.N, np.uint8), np.empty(lay.N)
+    _kernels.tofg_flying(res.depth, res.sigma, usable, col, cells, lay.R, lay.C, 0.05, 2.0, 12.5,
+                         0.15, 1, flags, out, 2)
+    want_flags, want = ref.guided_flying(res.depth, res.sigma, usable, col, cells, lay.R,
+                                         lay.C, 0.05, 2.0, 12.5, 0.15, 1)
+    assert (flags & 8).any()
+    np.testing.assert_array_equal(flags, want_flags)
+    np.testing.assert_array_equal(out, want)
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+def test_upsample_matches_numpy(pattern):
+    frame, guide, _ = _frame(pattern, shape=(24, 32))
+    res = tof_depth(frame.tof, guide=guide)
+    from rgbz_fast.tof._guided import _Layout, guide_colours
+    lay = _Layout(res.sites, res.block, res.shape)
+    col, _, sig = guide_colours(guide, 1 / 255, lay, 1)
+    depth = np.where(res.valid, res.depth, np.nan)
+    depth[::5] = np.nan                                  # holes: the fallback runs too
+    half = 0.5 * (res.block - 1)
+    rc, cc = lay.rows + half, lay.cols + half
+    cscale = 1.0 / (np.sqrt(2.0) * sig)
+    out, conf = np.empty(res.shape, np.float32), np.empty(res.shape, np.float32)
+    args = (2 * res.block, 4, 0.125, 0.02, 3.0, 0.02)
+    _kernels.tofg_upsample(guide, 1 / 255, cscale, depth, res.sigma, col, lay.R, lay.C, rc, cc,
+                           *args, out, conf, 2)
+    want, wconf = ref.guided_upsample(guide, 1 / 255, cscale, depth, res.sigma, col, lay.R,
+                                      lay.C, rc, cc, *args)
+    np.testing.assert_array_equal(np.isnan(out), np.isnan(want))
+    ok = np.isfinite(want)
+    np.testing.assert_allclose(out[ok], want[ok], rtol=0, atol=1e-5)
+    np.testing.assert_allclose(conf, wconf, rtol=1e-4, atol=1e-6)
+
+
+# --------------------------------------------------------------------------- the chain
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+def test_guided_chain_keeps_surfaces_apart(pattern):
+    frame, guide, depth = _frame(pattern)
+    tof = frame.tof
+    plain = tof_depth(tof)
+    res = tof_depth(tof, guide=guide)
+    known = tof.valid
+    err = np.abs(res.depth - tof.depth_true)
+    assert res.valid[known].mean() >= plain.valid[known].mean()
+    assert not np.any(res.valid & known & (err > 0.05))
+    wall = (frame.tof.sites[0] < 8) & plain.valid & res.valid     # textured wall, no edge
+    assert np.median(res.sigma[wall]) < 0.8 * np.median(plain.sigma[wall])
+    assert np.array_equal(res.measured[res.flags & ToFFlag.RESOLVED == 0],
+                          res.depth[res.flags & ToFFlag.RESOLVED == 0])
+    a = ToFISP().run(tof, guide=guide, workers=1)
+    b = ToFISP().run(tof, guide=guide.astype(np.float64) / 255, workers=2)
+    np.testing.assert_array_equal(a.flags, res.flags)
+    np.testing.assert_allclose(b.depth, a.depth, rtol=0, atol=1e-6)
+
+
+def test_without_guide_the_isp_is_unchanged():
+    frame, guide, _ = _frame("mask2")
+    a, b = tof_depth(frame.tof), ToFISP().run(frame.tof, guide=None)
+    for name in ("depth", "flags", "sigma", "count"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
+    assert a.measured is a.depth
+
+
+@pytest.mark.parametrize("denoise", ["box", "none"])
+def test_guide_with_the_other_denoise_uses_the_colour_edges(denoise):
+    frame, guide, _ = _frame("mask2", noise=False)
+    plain = tof_depth(frame.tof, denoise=denoise)
+    res = tof_depth(frame.tof, denoise=denoise, guide=guide)
+    np.testing.assert_array_equal(res.measured, plain.depth)
+    assert np.count_nonzero(res.flags & ToFFlag.FLYING) <= np.count_nonzero(
+        plain.flags & ToFFlag.FLYING)
+
+
+def test_guide_with_a_calibration_and_an_irregular_layout():
+    from rgbz_fast.tof import calibrate
+
+    sensor = ToFSensor(delay_ps=200.0)
+    walls = []
+    for d in np.linspace(0.6, 2.6, 20):
+        fr = simulate(Scene(np.full((12, 16, 3), 0.5), depth=np.full((12, 16), d)), "mask2",
+                      tof_sensor=sensor, noise=False)
+        walls.append(fr.tof)
+    cal = calibrate(walls, np.linspace(0.6, 2.6, 20))
+    fr = simulate(Scene(np.full((12, 16, 3), 0.5), depth=np.full((12, 16), 1.3)), "mask2",
+                  tof_sensor=sensor, noise=False)
+    res = tof_depth(fr.tof, calibration=cal, guide=ColourISP().run(fr))
+    np.testing.assert_allclose(res.depth, tof_depth(fr.tof, calibration=cal).depth, atol=1e-4)
+    # measurements that do not fill their grid (here: every third one dropped)
+    from dataclasses import replace
+
+    wall = simulate(Scene(np.full((16, 24, 3), 0.5), depth=np.full((16, 24), 1.2)), "mask1",
+                    noise=False)
+    t = wall.tof
+    keep = np.arange(t.n_sites) % 3 != 1
+    holes = replace(t, taps=t.taps[..., keep], sites=tuple(a[keep] for a in t.sites),
+                    depth_true=t.depth_true[keep], valid=t.valid[keep],
+                    saturated=t.saturated[keep])
+    res = tof_depth(holes, guide=ColourISP().run(wall))
+    assert res.n_sites == keep.sum()
+    np.testing.assert_allclose(res.depth, tof_depth(holes).depth, atol=1e-4)
+
+
+def test_upsample_gives_a_depth_at_every_pixel():
+    frame, guide, depth = _frame("mask2")
+    res = tof_depth(frame.tof, guide=guide)
+    up, conf = upsample_depth(res, guide)
+    assert up.shape == conf.shape == res.shape and up.dtype == np.float32
+    assert np.isfinite(up).mean() > 0.99
+    good = np.isfinite(up)
+    assert np.mean(np.abs(up[good] - depth[good]) <= 0.05) > 0.97
+    assert np.all((conf >= 0) & (conf <= 1)) and np.all(conf[~good] == 0)
+    same, _ = upsample_depth(res, guide, workers=1)
+    np.testing.assert_array_equal(same, up)
+
+
+@pytest.mark.parametrize("guide,exc,msg", [
+    (np.zeros((48, 64)), ValueError, "guide: expected a colour image of shape"),
+    (np.zeros((40, 64, 3)), ValueError, "guide: the image is 40x64, the frame 48x64"),
+    (np.full((48, 64, 3), np.nan), ValueError, "guide: holds 9216 NaN"),
+    (np.full((48, 64, 3), 2.0), ValueError, r"guide: float values span \[2, 2\]"),
+    (np.zeros((48, 64, 3), bool), TypeError, "guide: expected colour values"),
+    ("image.png", TypeError, "guide: "),
+])
+def test_bad_guides_name_the_guide(guide, exc, msg):
+    frame, _, _ = _frame("mask2")
+    with pytest.raises(exc, match=msg):
+        tof_depth(frame.tof, guide=guide)
+    res = tof_depth(frame.tof)
+    with pytest.raises(exc, match=msg):
+        upsample_depth(res, guide)
+
+
+def test_upsample_refuses_what_is_not_a_result():
+    with pytest.raises(TypeError, match="result: expected a ToFDepth"):
+        upsample_depth(np.zeros(4), np.zeros((2, 2, 3)))
+    frame, guide, _ = _frame("mask2")
+    with pytest.raises(ValueError, match="colour_scale"):
+        upsample_depth(tof_depth(frame.tof), guide, colour_scale=0)
