@@ -14,8 +14,10 @@ import pytest
 
 import rgbz_fast as rz
 from rgbz_fast.io import load_frame, save_frame
-from rgbz_fast.reconstruction import NEEDS_TOF, ZGuidedFilters, train, train_z_guided
-from rgbz_fast.reconstruction._z_guided import guide_grid, z_layout
+from rgbz_fast._patterns import get_pattern
+from rgbz_fast.reconstruction import (NEEDS_TOF, ZGuidedFilters, default_z_filters, train,
+                                      train_z_guided)
+from rgbz_fast.reconstruction._z_guided import guide_grid, resolve_z_filters, z_layout
 from rgbz_fast.simulation import Scene, simulate
 
 
@@ -213,10 +215,14 @@ def test_filters_round_trip_and_each_method_picks_its_kind(fitted, tmp_path):
                                   rz.reconstruct(frame, "z_guided", filters=zf))
     np.testing.assert_array_equal(rz.reconstruct(frame, "learned", filters=both),
                                   rz.reconstruct(frame, "learned", filters=base))
-    with pytest.raises(ValueError, match="^filters: only z_guided"):
-        rz.reconstruct(frame, "learned", filters=zf)
-    with pytest.raises(ValueError, match="^filters: .*z_guided filters"):
-        rz.reconstruct(frame, "z_guided", filters=base)
+    # given only the other kind, a method takes its shipped filters
+    np.testing.assert_array_equal(rz.reconstruct(frame, "learned", filters=zf),
+                                  rz.reconstruct(frame, "learned"))
+    np.testing.assert_array_equal(rz.reconstruct(frame, "z_guided", filters=base),
+                                  rz.reconstruct(frame, "z_guided",
+                                                 filters=default_z_filters("mask2")))
+    with pytest.raises(ValueError, match="^filters: .*none ship for pattern 'rows"):
+        resolve_z_filters(None, get_pattern("rows"), 11)
     with pytest.raises(ValueError, match="^filters: fitted for pattern 'mask2'"):
         rz.reconstruct(simulate(_scene()[0], "mask1", noise=False), "z_guided", filters=zf)
     with pytest.raises(ValueError, match="^filters: .*not a rgbz-fast"):

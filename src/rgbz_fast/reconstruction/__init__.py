@@ -17,10 +17,10 @@ from ._learned import LearnedFilters, default_filters, train
 from ._params import DOMAINS, EXP_CHOICES, PRECISIONS, SG_MODES, ReconstructParams
 from ._plans import ORIENTATIONS, SEMI_GRADIENTS, build_plans
 from ._reconstruct import METHODS, reconstruct
-from ._z_guided import NEEDS_TOF, ZGuidedFilters
+from ._z_guided import NEEDS_TOF, ZGuidedFilters, default_z_filters
 from ._z_guided_fit import train_z_guided
 
 __all__ = ["reconstruct", "ReconstructParams", "METHODS", "PRECISIONS", "EXP_CHOICES",
            "SG_MODES", "DOMAINS", "ORIENTATIONS", "SEMI_GRADIENTS", "build_plans",
            "LearnedFilters", "train", "default_filters", "NEEDS_TOF", "ZGuidedFilters",
-           "train_z_guided"]
+           "train_z_guided", "default_z_filters"]

@@ -28,7 +28,7 @@ import numpy as np
 
 from .._frame import RawFrame
 from .._patterns import Pattern, Z, get_pattern
-from .._validate import check_bit_depth, check_int, check_number
+from .._validate import check_bit_depth, check_flag, check_int, check_number
 from ..io import atomic_write, read_npz
 
 __all__ = ["LearnedFilters", "train", "default_filters", "learned_geometry",
@@ -462,7 +462,7 @@ def default_filters(pattern, bit_depth=11):
     key = (pattern.tile_string, bit_depth)
     if key not in _SHIPPED:
         found = None
-        for f in sorted(_DATA.glob("*.npz")):
+        for f in sorted(_DATA.glob("learned_*.npz")):
             lf = LearnedFilters.load(f)
             if lf.pattern == pattern and lf.bit_depth == bit_depth:
                 found = lf
@@ -472,7 +472,7 @@ def default_filters(pattern, bit_depth=11):
 
 
 def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, ridge=1e-3,
-          prior=50.0, meta=None):
+          prior=50.0, meta=None, z_guided=False, **z_options):
     """Fit :class:`LearnedFilters` to frames whose true colour at the Z sites is known.
 
     Parameters
@@ -499,10 +499,16 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, ridge
         on all of them (rare buckets merge into the common filter).
     meta : dict, optional
         Extra metadata kept with the filters (the training set's name...).
+    z_guided : bool
+        True: fit the filters of ``method="z_guided"`` instead
+        (:func:`~rgbz_fast.reconstruction.train_z_guided`, with ``ridge``,
+        ``prior``, ``meta`` and its own options ``**z_options``; the taps and
+        hash are those of its ``base`` learned filters, so ``radius`` ...
+        ``n_coherence`` keep their defaults).
 
     Returns
     -------
-    LearnedFilters
+    LearnedFilters (ZGuidedFilters with ``z_guided``)
 
     Notes
     -----
@@ -527,6 +533,18 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, ridge
     >>> f.n_buckets, f.meta["n_images"]
     (8, 1)
     """
+    if check_flag(z_guided, "z_guided"):
+        from ._z_guided_fit import train_z_guided
+        given = [k for k, v in (("radius", radius), ("hash_radius", hash_radius),
+                                ("n_strength", n_strength), ("n_coherence", n_coherence))
+                 if v != 3]
+        if given:
+            raise ValueError(f"{given[0]}: z_guided filters take the taps and hash of their "
+                             "base learned filters; pass base= instead")
+        return train_z_guided(frames, ridge=ridge, prior=prior, meta=meta, **z_options)
+    if z_options:
+        raise TypeError(f"{next(iter(z_options))}: not an option of train() without "
+                        "z_guided=True")
     radius = check_int(radius, "radius", lo=2, hi=5)
     hash_radius = check_int(hash_radius, "hash_radius", lo=2, hi=radius)
     n_strength = check_int(n_strength, "n_strength", lo=1, hi=8)

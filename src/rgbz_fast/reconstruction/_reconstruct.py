@@ -99,7 +99,7 @@ def _check_out(out, data):
 
 
 def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None, workers=None,
-                out=None, nir=None, **options):
+                out=None, nir=None, tof=None, **options):
     """Fill in the colour missing at every Z site: RGB-Z raw frame -> full Bayer CFA.
 
     Parameters
@@ -154,6 +154,10 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         Z pixels saw, any positive scale, read at the Z sites only (the mean
         of the four sites of a 2x2 Z pixel). Default: the amplitude of the
         frame's ToF taps (``frame.tof``); a frame without taps needs it.
+    tof : ToFTaps, optional
+        ``"z_guided"`` only: the ToF taps of a plain-array frame (what a
+        :class:`~rgbz_fast.RawFrame` carries as ``frame.tof``; an ISP stage
+        that works on the CFA alone passes them so). Default: ``frame.tof``.
     **options
         Fields of :class:`~rgbz_fast.ReconstructParams` (``precision="float64"``,
         ``sigma_rel=0``, ``filters="my_filters.npz"``, ...), applied over
@@ -234,8 +238,9 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         return out
     if method == "z_guided":
         filters = resolve_z_filters(params.filters, pattern, bd)
-        grids = guide_grid(src.shape, pattern, nir=nir,
-                           tof=frame.tof if isinstance(frame, RawFrame) else None)
+        if tof is None and isinstance(frame, RawFrame):
+            tof = frame.tof
+        grids = guide_grid(src.shape, pattern, nir=nir, tof=tof)
         if clip is not None and _reaches(src, pattern, clip):
             raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
                              f"frame reaches the clip level {clip:g}, use another method or "

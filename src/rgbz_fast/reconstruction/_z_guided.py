@@ -52,7 +52,7 @@ from ._learned import (LearnedFilters, _extend_index, check_filters, gather_wind
                        hash_features)
 
 __all__ = ["ZGuidedFilters", "z_layout", "guide_grid", "guide_features", "N_GUIDE",
-           "NEEDS_TOF"]
+           "NEEDS_TOF", "default_z_filters"]
 
 #: the methods of :func:`rgbz_fast.reconstruct` that read what the Z pixels measured: a
 #: frame with ToF taps (or ``nir=``); a plain array alone cannot feed them
@@ -64,6 +64,9 @@ _K = 1
 #: version of the .npz layout; a file of another version is refused
 FORMAT_VERSION = 1
 _MAGIC = "rgbz-fast z_guided filters"
+#: the shipped filters: reconstruction/data/z_guided_*.npz
+_DATA = Path(__file__).resolve().parent / "data"
+_SHIPPED = {}
 
 
 def z_layout(pattern, name="pattern"):
@@ -457,21 +460,43 @@ def check_any_filters(value, name="filters"):
 
 
 def learned_only(filters, name="filters"):
-    """The LearnedFilters of a checked ``filters`` value (None stays None: the shipped ones)."""
+    """The LearnedFilters of a checked ``filters`` value; None (the shipped ones) when it holds
+    none, so that one ``filters`` value can carry z_guided filters alone."""
     if filters is None:
         return None
     out = tuple(f for f in filters if isinstance(f, LearnedFilters))
-    if not out:
-        raise ValueError(f"{name}: only z_guided filters given; method 'learned' needs "
-                         "LearnedFilters (rgbz_fast.reconstruction.train)")
-    return out
+    return out or None
+
+
+def default_z_filters(pattern, bit_depth=11):
+    """The :class:`ZGuidedFilters` shipped for a pattern and bit depth, or None.
+
+    The package ships Mask1 and Mask2 filters for 11-bit linear frames of the
+    Bayer phases the shipped ``learned`` filters cover, fitted on the 20
+    RGB-NIR pairs (``reconstruction/data/z_guided_*.npz``; the command that
+    made them is in their metadata, ``meta["command"]``).
+    """
+    pattern = get_pattern(pattern)
+    key = (pattern.tile_string, int(bit_depth))
+    if key not in _SHIPPED:
+        found = None
+        for f in sorted(_DATA.glob("z_guided_*.npz")):
+            zf = ZGuidedFilters.load(f)
+            if zf.pattern == pattern and zf.bit_depth == bit_depth:
+                found = zf
+                break
+        _SHIPPED[key] = found
+    return _SHIPPED[key]
 
 
 def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
     """The :class:`ZGuidedFilters` for a frame: one of ``filters`` fitted for its pattern and bit
-    depth (the package ships none yet)."""
+    depth, or the shipped ones (:func:`default_z_filters`) when none of ``filters`` are."""
     cands = () if filters is None else tuple(f for f in filters if isinstance(f, ZGuidedFilters))
     if not cands:
+        shipped = default_z_filters(pattern, bit_depth)
+        if shipped is not None:
+            return shipped
         raise ValueError(f"{name}: method 'z_guided' needs z_guided filters, and none ship for "
                          f"pattern {pattern.name!r} at {bit_depth} bits: fit some with "
                          "rgbz_fast.reconstruction.train_z_guided and pass filters=")
