@@ -124,6 +124,35 @@ cdef extern from "learned.h" nogil:
                      Py_ssize_t cols, int py, int px, const int32_t *phase_map,
                      const rgbz_learned_filters *f, double maxval, int workers,
                      uint64_t *opcounts)
+cdef extern from "z_guided.h" nogil:
+    ctypedef struct rgbz_zguided_filters:
+        const rgbz_learned_filters *hash
+        int32_t n_levels
+        const float *w_f32
+        const double *w_f64
+        const float *g_f32
+        const double *g_f64
+        int32_t n_base_max
+        const int32_t *n_base
+        const int32_t *base_idx
+        Py_ssize_t gy, gx
+        const double *cell
+        const int32_t *level
+    int rgbz_zguided_u8(const uint8_t *src, uint8_t *dst, Py_ssize_t rows, Py_ssize_t cols,
+                        int py, int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
+                        int precision, double maxval, int workers, uint64_t *opcounts)
+    int rgbz_zguided_u16(const uint16_t *src, uint16_t *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_f32(const float *src, float *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_f64(const double *src, double *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
 cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
                            const double *g_re, const double *g_im, const double *g_var,
@@ -570,6 +599,97 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     with nogil:
         status = rgbz_learned(in_type, precision, &src[0, 0], &dst[0, 0], src.shape[0],
                               src.shape[1], py, px, &phase_map[0], &f, maxval, workers, counts)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- z_guided (z_guided.c)
+def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int py, int px,
+             const int32_t[::1] phase_map, const int32_t[::1] n_taps,
+             const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
+             const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
+             const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
+             const double[:, ::1] coh_thr2, int radius, int hash_radius,
+             const float[:, :, ::1] w_f32, const double[:, :, ::1] w_f64,
+             const float[:, :, ::1] g_f32, const double[:, :, ::1] g_f64,
+             const int32_t[::1] n_base, const int32_t[:, ::1] base_idx,
+             const double[:, :, :, ::1] cell, const int32_t[:, ::1] level, double maxval,
+             int workers, uint64_t[::1] opcounts=None):
+    """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
+    ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
+    (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
+    n_buckets, 11), the baseline taps (n_phases,) and (n_phases, n_base_max), the cell
+    features (n_phases, gy, gx, 11) and noise levels (gy, gx). ``opcounts``: as for
+    ``learned``."""
+    cdef int status
+    cdef rgbz_learned_filters h
+    cdef rgbz_zguided_filters f
+    cdef double zero = 0.0
+    cdef Py_ssize_t n_ph = w_f32.shape[0]
+    if (n_taps.shape[0] != n_ph or tap_dy.shape[0] != n_ph or tap_dx.shape[0] != n_ph
+            or n_pairs.shape[0] != n_ph or n_pairs.shape[1] != 4 or pair_a.shape[0] != n_ph
+            or pair_b.shape[0] != n_ph or pair_a.shape[1] != 4 or pair_b.shape[1] != 4
+            or pair_b.shape[2] != pair_a.shape[2] or tap_dy.shape[1] != w_f32.shape[1]
+            or tap_dx.shape[1] != w_f32.shape[1] or str_thr.shape[0] != n_ph
+            or coh_thr2.shape[0] != n_ph or w_f64.shape[0] != n_ph
+            or w_f64.shape[1] != w_f32.shape[1] or w_f64.shape[2] != w_f32.shape[2]
+            or g_f32.shape[0] != n_ph or g_f64.shape[0] != n_ph
+            or g_f32.shape[1] != w_f32.shape[2] or g_f64.shape[1] != w_f32.shape[2]
+            or g_f32.shape[2] != 11 or g_f64.shape[2] != 11 or n_base.shape[0] != n_ph
+            or base_idx.shape[0] != n_ph or cell.shape[0] != n_ph or cell.shape[3] != 11
+            or cell.shape[1] != level.shape[0] or cell.shape[2] != level.shape[1]
+            or dst.shape[0] != src.shape[0] or dst.shape[1] != src.shape[1]
+            or phase_map.shape[0] != py * px):
+        raise ValueError("z_guided: inconsistent filter arrays")
+    h.n_phases = n_ph
+    h.n_taps_max = w_f32.shape[1]
+    h.n_str = str_thr.shape[1] + 1
+    h.n_coh = coh_thr2.shape[1] + 1
+    h.n_buckets = 8 * h.n_str * h.n_coh
+    if w_f32.shape[2] % h.n_buckets:
+        raise ValueError("z_guided: the weights' buckets are not levels x hash buckets")
+    h.n_pairs_max = pair_a.shape[2]
+    h.radius = radius
+    h.hash_radius = hash_radius
+    h.n_taps = &n_taps[0]
+    h.tap_dy = &tap_dy[0, 0]
+    h.tap_dx = &tap_dx[0, 0]
+    h.n_pairs = &n_pairs[0, 0]
+    h.pair_a = &pair_a[0, 0, 0]
+    h.pair_b = &pair_b[0, 0, 0]
+    # a level count of 1 has no threshold: the kernel reads none
+    h.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
+    h.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    h.w_f32 = NULL
+    h.w_f64 = NULL
+    h.wd_f32 = NULL
+    h.wd_f64 = NULL
+    f.hash = &h
+    f.n_levels = w_f32.shape[2] // h.n_buckets
+    f.w_f32 = &w_f32[0, 0, 0]
+    f.w_f64 = &w_f64[0, 0, 0]
+    f.g_f32 = &g_f32[0, 0, 0]
+    f.g_f64 = &g_f64[0, 0, 0]
+    f.n_base_max = base_idx.shape[1]
+    f.n_base = &n_base[0]
+    f.base_idx = &base_idx[0, 0]
+    f.gy = level.shape[0]
+    f.gx = level.shape[1]
+    f.cell = &cell[0, 0, 0, 0]
+    f.level = &level[0, 0]
+    cdef uint64_t *counts = _counters(opcounts, n_ph * RGBZ_NOPS)
+    with nogil:
+        if frame_t is uint8_t:
+            status = rgbz_zguided_u8(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                                     &phase_map[0], &f, precision, maxval, workers, counts)
+        elif frame_t is uint16_t:
+            status = rgbz_zguided_u16(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        elif frame_t is float:
+            status = rgbz_zguided_f32(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        else:
+            status = rgbz_zguided_f64(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
     _raise_for(status)
 
 

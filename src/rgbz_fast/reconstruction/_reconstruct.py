@@ -18,7 +18,8 @@ from .. import _kernels
 from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._validate import check_choice, check_workers, kernel_threads
 from ._learned import resolve_filters
-from ._z_guided import guide_grid, learned_only, resolve_z_filters, run_z_guided
+from ._z_guided import guide_grid, learned_only, resolve_z_filters
+from ._z_guided_kernel import run_z_guided
 from ._params import ReconstructParams
 from ._plans import METHODS as PLAN_METHODS
 from ._plans import build_plans, check_layout
@@ -245,7 +246,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
             raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
                              f"frame reaches the clip level {clip:g}, use another method or "
                              "clip_level=None")
-        run_z_guided(src, out, pattern, filters, grids, bd)
+        run_z_guided(src, out, pattern, filters, grids, params.precision, bd, nthreads)
         return out
     plan_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     if clip is not None and not _reaches(src, pattern, clip):

@@ -238,6 +238,14 @@ def guide_features(N, V, C, base, lam):
     amplitudes ``N``, their noise variances ``V`` and the colour means ``C`` (n, 9) of the
     measurements around it and its baseline ``base`` (n,); float64. ``nu`` is 1 where no
     light came back (every amplitude 0)."""
+    T, nu = cell_terms(N, V, C, lam)
+    return np.hstack([base[:, None] * T[:, :9], (T[:, 9] - base)[:, None], T[:, 10:]]), nu
+
+
+def cell_terms(N, V, C, lam):
+    """What the guide features of a site take from its Z pixels alone, (n, 11), and ``nu``:
+    ``share * u_m`` (9), ``mean C + a u_0`` and ``a u_0 - (C_0 - mean C)`` (the features are
+    these with the first 9 times ``base`` and ``base`` taken from the 10th)."""
     c = N.shape[1] // 2
     Nb = N.mean(axis=1)
     lit = Nb > 0
@@ -250,8 +258,7 @@ def guide_features(N, V, C, base, lam):
     dc = C - Cb[:, None]
     a = (u * dc).sum(axis=1) / (U + N.shape[1] * (lam + nu))
     au = a * u[:, c]
-    return np.hstack([(base * share)[:, None] * u, (Cb + au - base)[:, None],
-                      (au - dc[:, c])[:, None]]), nu
+    return np.hstack([share[:, None] * u, (Cb + au)[:, None], (au - dc[:, c])[:, None]]), nu
 
 
 def _site_features(data, pattern, grids, colour, lam, noise_thresholds):
@@ -508,14 +515,3 @@ def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
     have = ", ".join(f"{f.pattern.name} {f.bit_depth}-bit" for f in cands)
     raise ValueError(f"{name}: no z_guided filters fit pattern {pattern.name!r} at "
                      f"{bit_depth} bits (given: {have})")
-
-
-def run_z_guided(src, out, pattern, filters, grids, bit_depth):
-    """Fill ``out``: the colour sites of ``src`` and its Z sites by ``filters`` guided by
-    ``grids`` (:func:`guide_grid`), clipped to [0, 2^b - 1] (integer types rounded half up)."""
-    res = filters.reconstruct(src, grids)
-    np.clip(res, 0, (1 << bit_depth) - 1, out=res)
-    if np.issubdtype(out.dtype, np.integer):
-        res = np.floor(res + 0.5)
-    out[...] = res.astype(out.dtype)
-    return out

@@ -1,0 +1,119 @@
+/*
+ * z_guided.c -- the z_guided reconstruction (z_guided.h): 4 element types x 2 precisions of
+ * z_guided.template.h, and the typed entry points that check the arguments the Python
+ * layer validated (a failure here is a bug there) and build the column map.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <stdint.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "rgbz.h"
+#include "rgbz_ops.h"
+#include "z_guided.h"
+
+/* the border rule of every kernel: an index outside [0, n) moves back inside by whole
+   periods P (n >= P), so that the pixel keeps its colour */
+static inline ptrdiff_t zg_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
+{
+    return i < 0 ? i + P * ((P - 1 - i) / P) : (i >= n ? i - P * ((i - n + P) / P) : i);
+}
+
+#define IN_T uint8_t
+#define IS u8
+#define IN_IS_INT 1
+#include "z_guided.instances.h"
+#define IN_T uint16_t
+#define IS u16
+#define IN_IS_INT 1
+#include "z_guided.instances.h"
+#define IN_T float
+#define IS f32
+#define IN_IS_INT 0
+#include "z_guided.instances.h"
+#define IN_T double
+#define IS f64
+#define IN_IS_INT 0
+#include "z_guided.instances.h"
+
+static int zg_check(const rgbz_zguided_filters *f, ptrdiff_t rows, ptrdiff_t cols, int py,
+                    int px, const int32_t *phase_map, int precision)
+{
+    if (!f || !f->hash || f->n_levels < 1 || f->gy < 1 || f->gx < 1 || !f->cell || !f->level ||
+        !f->w_f32 || !f->w_f64 || !f->g_f32 || !f->g_f64 || !f->n_base || !f->base_idx ||
+        f->n_base_max < 1 || (precision != RGBZ_P_FLOAT32 && precision != RGBZ_P_FLOAT64))
+        return RGBZ_EINVAL;
+    const rgbz_learned_filters *h = f->hash;
+    if (h->n_phases <= 0 || h->n_str < 1 || h->n_coh < 1 ||
+        h->n_buckets != 8 * h->n_str * h->n_coh || h->radius < 0 ||
+        h->radius > RGBZ_LEARNED_MAX_RADIUS || h->n_taps_max <= 0 ||
+        h->n_taps_max > RGBZ_LEARNED_MAX_TAPS || py <= 0 || px <= 0 || rows < py || cols < px)
+        return RGBZ_EINVAL;
+    for (int i = 0; i < py * px; i++)
+        if (phase_map[i] >= h->n_phases) return RGBZ_EINVAL;
+    for (ptrdiff_t i = 0; i < f->gy * f->gx; i++)
+        if (f->level[i] < 0 || f->level[i] >= f->n_levels) return RGBZ_EINVAL;
+    for (int k = 0; k < h->n_phases; k++) {
+        const int nt = h->n_taps[k], nb = f->n_base[k];
+        if (nt <= 0 || nt > h->n_taps_max || nb < 1 || nb > f->n_base_max) return RGBZ_EINVAL;
+        for (int t = 0; t < nt; t++) {
+            const int dy = h->tap_dy[k * h->n_taps_max + t], dx = h->tap_dx[k * h->n_taps_max + t];
+            if (dy < -h->radius || dy > h->radius || dx < -h->radius || dx > h->radius)
+                return RGBZ_EINVAL;
+        }
+        for (int i = 0; i < nb; i++)
+            if (f->base_idx[k * f->n_base_max + i] < 0 || f->base_idx[k * f->n_base_max + i] >= nt)
+                return RGBZ_EINVAL;
+        for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+            const int np = h->n_pairs[k * RGBZ_LEARNED_DIRS + d];
+            if (np <= 0 || np > h->n_pairs_max) return RGBZ_EINVAL;
+            const ptrdiff_t o = ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * h->n_pairs_max;
+            for (int p = 0; p < np; p++)
+                if (h->pair_a[o + p] < 0 || h->pair_a[o + p] >= nt || h->pair_b[o + p] < 0 ||
+                    h->pair_b[o + p] >= nt)
+                    return RGBZ_EINVAL;
+        }
+    }
+    return RGBZ_OK;
+}
+
+/* the column map of the taps: x in [-R, cols + R) -> its column inside the frame */
+static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int px)
+{
+    const int R = f->hash->radius;
+    ptrdiff_t *colmap = malloc((size_t)(cols + 2 * R) * sizeof *colmap);
+    if (colmap)
+        for (ptrdiff_t x = -R; x < cols + R; x++) colmap[x + R] = zg_extend(x, cols, px);
+    return colmap;
+}
+
+#define ZG_ENTRY(is, T)                                                                        \
+    int rgbz_zguided_##is(const T *src, T *dst, ptrdiff_t rows, ptrdiff_t cols, int py,      \
+                          int px, const int32_t *phase_map, const rgbz_zguided_filters *f,    \
+                          int precision, double maxval, int workers, uint64_t *opcounts)      \
+    {                                                                                          \
+        int status = zg_check(f, rows, cols, py, px, phase_map, precision);                   \
+        if (status != RGBZ_OK) return status;                                                  \
+        ZG_COUNTING_ONLY(if (!opcounts) return RGBZ_EINVAL; workers = 1;)                     \
+        ptrdiff_t *colmap = zg_colmap(f, cols, px);                                            \
+        if (!colmap) return RGBZ_ENOMEM;                                                       \
+        status = precision == RGBZ_P_FLOAT64                                                   \
+                     ? zg_loop_##is##_f64(src, dst, rows, cols, py, px, phase_map, f, colmap, \
+                                          maxval, workers, opcounts)                           \
+                     : zg_loop_##is##_f32(src, dst, rows, cols, py, px, phase_map, f, colmap, \
+                                          maxval, workers, opcounts);                          \
+        free(colmap);                                                                          \
+        return status;                                                                         \
+    }
+
+#ifdef RGBZ_COUNT_OPS
+#define ZG_COUNTING_ONLY(code) code
+#else
+#define ZG_COUNTING_ONLY(code)
+#endif
+
+ZG_ENTRY(u8, uint8_t)
+ZG_ENTRY(u16, uint16_t)
+ZG_ENTRY(f32, float)
+ZG_ENTRY(f64, double)
