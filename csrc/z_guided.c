@@ -117,3 +117,127 @@ ZG_ENTRY(u8, uint8_t)
 ZG_ENTRY(u16, uint16_t)
 ZG_ENTRY(f32, float)
 ZG_ENTRY(f64, double)
+
+/* the cell terms are one per tile and not counted (the counting build runs them too, on one
+   thread, without touching its counters) */
+#ifdef _OPENMP
+#define ZG_NTHREADS(w) ((w) > 0 ? (w) : omp_get_max_threads())
+#define ZG_CELLS_PARALLEL _Pragma("omp parallel for schedule(static) num_threads(zg_nth)")
+#else
+#define ZG_NTHREADS(w) ((void)(w), 1)
+#define ZG_CELLS_PARALLEL
+#endif
+
+/* the 11 terms of a tile from the 3 x 3 amplitudes N, their variances V and colour means C
+   (in the order of reconstruction/_z_guided.py's cell_terms), and nu */
+static void zg_cell_terms(const double *N, const double *V, const double *C, double lam,
+                          double *out, double *nu_out)
+{
+    double nb = 0.0, vb = 0.0, cb = 0.0;
+    for (int m = 0; m < 9; m++) {
+        nb += N[m];
+        vb += V[m];
+        cb += C[m];
+    }
+    nb /= 9.0;
+    vb /= 9.0;
+    cb /= 9.0;
+    const int lit = nb > 0.0;
+    const double inv = 1.0 / (lit ? nb : 1.0);
+    double u[9], U = 0.0, ud = 0.0;
+    for (int m = 0; m < 9; m++) {
+        u[m] = lit ? N[m] * inv - 1.0 : 0.0;
+        U += u[m] * u[m];
+    }
+    const double nu = lit ? vb * inv * inv : 1.0;
+    for (int m = 0; m < 9; m++) ud += u[m] * (C[m] - cb);
+    const double share = U / (U + 9.0 * nu + 2.2250738585072014e-308);
+    const double a = ud / (U + 9.0 * (lam + nu));
+    const double au = a * u[4];
+    for (int m = 0; m < 9; m++) out[m] = share * u[m];
+    out[9] = cb + au;
+    out[10] = au - (C[4] - cb);
+    *nu_out = nu;
+}
+
+static int zg_cells_check(ptrdiff_t rows, ptrdiff_t cols, int py, int px, const int8_t *chan,
+                          int zr, int zc, int block, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
+                          const int32_t *targets, const double *thr, int n_thr)
+{
+    if (py <= 0 || px <= 0 || rows < py || cols < px || zr < 0 || zc < 0 || zr >= py ||
+        zc >= px || (block != 1 && block != 2) || gy < 1 || gx < 1 || n_phases < 1 ||
+        n_thr < 0 || (n_thr > 0 && !thr) || !chan || !targets)
+        return RGBZ_EINVAL;
+    for (int k = 0; k < n_phases; k++) {
+        int found = 0;
+        for (int i = 0; i < py * px; i++) found |= chan[i] == targets[k];
+        if (targets[k] < 0 || targets[k] > 2 || !found) return RGBZ_EINVAL;
+    }
+    return RGBZ_OK;
+}
+
+/* the cell terms of one tile (iy, ix) for target colour t (z_guided.h) */
+#define ZG_CELLS(is, T)                                                                        \
+    static void zg_cell_##is(const T *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,    \
+                             const int8_t *chan, int zr, int zc, int block,                   \
+                             const double *grid, const double *var, ptrdiff_t gy,             \
+                             ptrdiff_t gx, ptrdiff_t iy, ptrdiff_t ix, int t, double lam,     \
+                             double *out, double *nu_out)                                     \
+    {                                                                                          \
+        double N[9], V[9], C[9];                                                               \
+        int m = 0;                                                                             \
+        for (int dy = -1; dy <= 1; dy++)                                                       \
+            for (int dx = -1; dx <= 1; dx++, m++) {                                            \
+                ptrdiff_t jy = iy + dy, jx = ix + dx;                                          \
+                jy = jy < 0 ? 0 : (jy >= gy ? gy - 1 : jy);                                    \
+                jx = jx < 0 ? 0 : (jx >= gx ? gx - 1 : jx);                                    \
+                N[m] = grid[jy * gx + jx];                                                     \
+                V[m] = var[jy * gx + jx];                                                      \
+                const ptrdiff_t y0 = zr + (ptrdiff_t)py * jy, x0 = zc + (ptrdiff_t)px * jx;   \
+                double s = 0.0;                                                                \
+                int n = 0;                                                                     \
+                for (int ey = -2; ey < block + 2; ey++) {                                      \
+                    const ptrdiff_t y = zg_extend(y0 + ey, rows, py);                         \
+                    for (int ex = -2; ex < block + 2; ex++) {                                  \
+                        const ptrdiff_t x = zg_extend(x0 + ex, cols, px);                     \
+                        if (chan[(y % py) * px + x % px] == t) {                               \
+                            s += (double)src[y * cols + x];                                       \
+                            n++;                                                               \
+                        }                                                                      \
+                    }                                                                          \
+                }                                                                              \
+                C[m] = s / (double)n;                                                          \
+            }                                                                                  \
+        zg_cell_terms(N, V, C, lam, out, nu_out);                                              \
+    }                                                                                          \
+    int rgbz_zguided_cells_##is(const T *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px, \
+                                const int8_t *chan, int zr, int zc, int block,                \
+                                const double *grid, const double *var, ptrdiff_t gy,          \
+                                ptrdiff_t gx, int n_phases, const int32_t *targets,           \
+                                double lam, const double *thr, int n_thr, double *cell,       \
+                                int32_t *level, int workers)                                  \
+    {                                                                                          \
+        int status = zg_cells_check(rows, cols, py, px, chan, zr, zc, block, gy, gx,          \
+                                    n_phases, targets, thr, n_thr);                            \
+        if (status != RGBZ_OK) return status;                                                  \
+        const int zg_nth = ZG_NTHREADS(workers);                                               \
+        (void)zg_nth;                                                                          \
+        ZG_CELLS_PARALLEL                                                                      \
+        for (ptrdiff_t iy = 0; iy < gy; iy++)                                                  \
+            for (ptrdiff_t ix = 0; ix < gx; ix++) {                                            \
+                double nu = 1.0;                                                               \
+                for (int k = 0; k < n_phases; k++)                                             \
+                    zg_cell_##is(src, rows, cols, py, px, chan, zr, zc, block, grid, var, gy, \
+                                 gx, iy, ix, targets[k], lam,                                  \
+                                 cell + ((k * gy + iy) * gx + ix) * RGBZ_ZG_FEATURES, &nu);    \
+                int lv = 0;                                                                    \
+                for (int i = 0; i < n_thr; i++) lv += nu > thr[i];                             \
+                level[iy * gx + ix] = lv;                                                      \
+            }                                                                                  \
+        return RGBZ_OK;                                                                        \
+    }
+
+ZG_CELLS(u8, uint8_t)
+ZG_CELLS(u16, uint16_t)
+ZG_CELLS(f32, float)
+ZG_CELLS(f64, double)

@@ -64,4 +64,41 @@ int rgbz_zguided_f64(const double *src, double *dst, ptrdiff_t rows, ptrdiff_t c
                      int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
                      int precision, double maxval, int workers, uint64_t *opcounts);
 
+/*
+ * The cell terms and noise levels (the `cell` and `level` arrays above) of a frame:
+ *   grid, var:  the NIR amplitude of every Z pixel and its noise variance, gy x gx (the
+ *               tile of row iy, column ix holds its Z pixel at (zr + py iy, zc + px ix),
+ *               block x block sites);
+ *   chan:       the colour code of every site of the py x px tile (0 R, 1 G, 2 B, 3 Z);
+ *   targets:    the target colour of each of the n_phases phases;
+ *   lam, thr:   the regularisation of the local model and the n_thr increasing noise
+ *               thresholds.
+ * For each phase and tile, with the 3 x 3 Z pixels m around it (clamped to the grid):
+ * u_m = N_m / mean N - 1, nu = mean V / (mean N)^2 (0 and 1 where mean N = 0), U = sum u^2,
+ * share = U / (U + 9 nu), C_m the mean of the pixels of the target colour in the box of
+ * Z pixel m and the two pixels around it (borders: whole periods), a = sum u_m (C_m -
+ * mean C) / (U + 9 (lam + nu)): cell = (share u_m (9), mean C + a u_4, a u_4 - (C_4 -
+ * mean C)); level = the number of thresholds nu exceeds.
+ */
+int rgbz_zguided_cells_u8(const uint8_t *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                          const int8_t *chan, int zr, int zc, int block, const double *grid,
+                          const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
+                          const int32_t *targets, double lam, const double *thr, int n_thr,
+                          double *cell, int32_t *level, int workers);
+int rgbz_zguided_cells_u16(const uint16_t *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                           const int8_t *chan, int zr, int zc, int block, const double *grid,
+                           const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
+                           const int32_t *targets, double lam, const double *thr, int n_thr,
+                           double *cell, int32_t *level, int workers);
+int rgbz_zguided_cells_f32(const float *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                           const int8_t *chan, int zr, int zc, int block, const double *grid,
+                           const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
+                           const int32_t *targets, double lam, const double *thr, int n_thr,
+                           double *cell, int32_t *level, int workers);
+int rgbz_zguided_cells_f64(const double *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
+                           const int8_t *chan, int zr, int zc, int block, const double *grid,
+                           const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
+                           const int32_t *targets, double lam, const double *thr, int n_thr,
+                           double *cell, int32_t *level, int workers);
+
 #endif /* RGBZ_Z_GUIDED_H */

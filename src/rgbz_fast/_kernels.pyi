@@ -78,6 +78,10 @@ def z_guided(src: np.ndarray, dst: np.ndarray, precision: int, py: int, px: int,
              w_f64: np.ndarray, g_f32: np.ndarray, g_f64: np.ndarray, n_base: np.ndarray,
              base_idx: np.ndarray, cell: np.ndarray, level: np.ndarray, maxval: float,
              workers: int, opcounts: np.ndarray | None = ...) -> None: ...
+def z_guided_cells(src: np.ndarray, py: int, px: int, chan: np.ndarray, zr: int, zc: int,
+                   block: int, grid: np.ndarray, var: np.ndarray, targets: np.ndarray,
+                   lam: float, thr: np.ndarray, cell: np.ndarray, level: np.ndarray,
+                   workers: int) -> None: ...
 def demosaic_malvar(src: np.ndarray, dst: np.ndarray, phase: np.ndarray, mode: int,
                     workers: int) -> None: ...
 def tof_demodulate(taps: np.ndarray, phase: np.ndarray, amp: np.ndarray, offset: np.ndarray,

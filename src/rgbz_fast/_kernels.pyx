@@ -16,7 +16,7 @@ tables of the Python layer (:data:`METHODS`, :data:`PRECISIONS`,
 them, so no code is typed twice.
 """
 
-from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint64_t
+from libc.stdint cimport int8_t, int32_t, int64_t, uint8_t, uint16_t, uint64_t
 
 cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_status:
@@ -153,6 +153,26 @@ cdef extern from "z_guided.h" nogil:
                          int py, int px, const int32_t *phase_map,
                          const rgbz_zguided_filters *f, int precision, double maxval,
                          int workers, uint64_t *opcounts)
+    int rgbz_zguided_cells_u8(const uint8_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_u16(const uint16_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_f32(const float *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_f64(const double *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
 cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
                            const double *g_re, const double *g_im, const double *g_var,
@@ -690,6 +710,51 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
         else:
             status = rgbz_zguided_f64(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
                                       px, &phase_map[0], &f, precision, maxval, workers, counts)
+    _raise_for(status)
+
+
+def z_guided_cells(const frame_t[:, ::1] src, int py, int px, const int8_t[::1] chan, int zr,
+                   int zc, int block, const double[:, ::1] grid, const double[:, ::1] var,
+                   const int32_t[::1] targets, double lam, const double[::1] thr,
+                   double[:, :, :, ::1] cell, int32_t[:, ::1] level, int workers):
+    """The cell terms (n_phases, gy, gx, 11) and noise levels (gy, gx) of z_guided
+    (csrc/z_guided.h) from the frame, the amplitude grid and its variance (gy, gx), the
+    colour codes of the tile (py * px), the Z pixel's corner and size, the target colour of
+    each phase, the regularisation and the noise thresholds."""
+    cdef int status
+    cdef double zero = 0.0
+    cdef const double *thr_p = &thr[0] if thr.shape[0] else &zero
+    if (var.shape[0] != grid.shape[0] or var.shape[1] != grid.shape[1]
+            or level.shape[0] != grid.shape[0] or level.shape[1] != grid.shape[1]
+            or cell.shape[0] != targets.shape[0] or cell.shape[1] != grid.shape[0]
+            or cell.shape[2] != grid.shape[1] or cell.shape[3] != 11
+            or chan.shape[0] != py * px or targets.shape[0] == 0):
+        raise ValueError("z_guided_cells: inconsistent arrays")
+    with nogil:
+        if frame_t is uint8_t:
+            status = rgbz_zguided_cells_u8(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        elif frame_t is uint16_t:
+            status = rgbz_zguided_cells_u16(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        elif frame_t is float:
+            status = rgbz_zguided_cells_f32(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        else:
+            status = rgbz_zguided_cells_f64(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
     _raise_for(status)
 
 

@@ -1,9 +1,8 @@
-"""The C kernel of ``method="z_guided"`` (csrc/z_guided.h): its arrays and its call.
+"""The C kernels of ``method="z_guided"`` (csrc/z_guided.h): their arrays and their calls.
 
-The kernel computes every Z site; what a site takes from its Z pixels alone -- the
-11 cell terms and the noise level of its tile (:func:`._z_guided.cell_terms`) --
-is one value per tile, computed here on the grid of the tiles (1/16 of the pixels
-on Mask1, 1/36 on Mask2) and handed to the kernel with the weights.
+Two passes: what a site takes from its Z pixels alone -- the 11 cell terms and
+the noise level of its tile (:func:`._z_guided.cell_terms`) -- is one value per
+tile (``_kernels.z_guided_cells``), then every Z site (``_kernels.z_guided``).
 """
 
 from __future__ import annotations
@@ -11,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
-from ._z_guided import _neighbours, cell_terms, colour_grids
+from ._z_guided import z_layout
 
 __all__ = ["run_z_guided", "cell_arrays", "kernel_arrays"]
 
@@ -41,27 +40,25 @@ def kernel_arrays(filters):
     return out
 
 
-def cell_arrays(filters, data, grids):
+def cell_arrays(filters, data, grids, nthreads=1, kernels=None):
     """``(cell, level)``: the cell terms (n_phases, tile rows, tile columns, 11) of every
-    phase's target colour and the noise level (tile rows, tile columns) of every tile."""
-    grid, var = grids
+    phase's target colour and the noise level (tile rows, tile columns) of every tile, by
+    the C kernel (the NumPy path: :func:`._z_guided.cell_terms`)."""
+    grid, var = (np.ascontiguousarray(g, np.float64) for g in grids)
     gy, gx = grid.shape
+    pattern = filters.pattern
+    P, Q = pattern.period
+    zr, zc, b = z_layout(pattern)
     geo = filters.base.geometry
-    iy, ix = np.divmod(np.arange(gy * gx), gx)
-    N, V = _neighbours(grid, iy, ix), _neighbours(var, iy, ix)
-    cg = colour_grids(data, filters.pattern, sorted({ph["target"] for ph in geo}))
+    chan = np.ascontiguousarray(pattern.channel_map((P, Q)).reshape(-1), np.int8)
+    targets = np.array([ph["target"] for ph in geo], np.int32)
     cell = np.empty((len(geo), gy, gx, 11))
-    terms = {}
-    nu = None
-    for k, ph in enumerate(geo):
-        t = ph["target"]
-        if t not in terms:
-            terms[t], nu = cell_terms(N, V, _neighbours(cg[t], iy, ix), filters.lam)
-        cell[k] = terms[t].reshape(gy, gx, 11)
-    level = np.zeros(gy * gx, np.int32)
-    for thr in filters.noise_thresholds:
-        level += nu > thr
-    return cell, level.reshape(gy, gx)
+    level = np.empty((gy, gx), np.int32)
+    k = _kernels if kernels is None else kernels
+    k.z_guided_cells(np.ascontiguousarray(data), P, Q, chan, zr, zc, b, grid, var, targets,
+                     float(filters.lam), np.ascontiguousarray(filters.noise_thresholds), cell,
+                     level, nthreads)
+    return cell, level
 
 
 def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthreads,
@@ -74,7 +71,7 @@ def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthrea
     for k, ph in enumerate(filters.base.geometry):
         r, c = ph["rc"]
         phase_map[r * Q + c] = k
-    cell, level = cell_arrays(filters, src, grids)
+    cell, level = cell_arrays(filters, src, grids, nthreads, kernels)
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
     k.z_guided(src, out, _PRECISION_CODES[precision], P, Q, phase_map, cell=cell, level=level,
