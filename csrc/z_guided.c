@@ -176,40 +176,58 @@ static int zg_cells_check(ptrdiff_t rows, ptrdiff_t cols, int py, int px, const 
     return RGBZ_OK;
 }
 
-/* the cell terms of one tile (iy, ix) for target colour t (z_guided.h) */
+/* the offsets (ey, ex) of the pixels of colour t in the box of a Z pixel and the two pixels
+   around it, row-major (the same for every tile: the tile keeps the colours); returns their
+   number */
+static int zg_box_offsets(const int8_t *chan, int py, int px, int zr, int zc, int block, int t,
+                          int *ey, int *ex)
+{
+    int n = 0;
+    for (int dy = -2; dy < block + 2; dy++)
+        for (int dx = -2; dx < block + 2; dx++) {
+            const int y = ((zr + dy) % py + py) % py, x = ((zc + dx) % px + px) % px;
+            if (chan[y * px + x] == t) {
+                ey[n] = dy;
+                ex[n] = dx;
+                n++;
+            }
+        }
+    return n;
+}
+
+/* the second pass: the terms of every tile of rows iy from the amplitude grid, its variance
+   and the colour means cg (n_phases, gy, gx) */
+static void zg_cells_terms(const double *grid, const double *var, const double *cg,
+                           ptrdiff_t gy, ptrdiff_t gx, int n_phases, double lam,
+                           const double *thr, int n_thr, double *cell, int32_t *level,
+                           ptrdiff_t iy)
+{
+    for (ptrdiff_t ix = 0; ix < gx; ix++) {
+        double N[9], V[9], C[9], nu = 1.0;
+        ptrdiff_t at[9];
+        int m = 0;
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++, m++) {
+                ptrdiff_t jy = iy + dy, jx = ix + dx;
+                jy = jy < 0 ? 0 : (jy >= gy ? gy - 1 : jy);
+                jx = jx < 0 ? 0 : (jx >= gx ? gx - 1 : jx);
+                at[m] = jy * gx + jx;
+                N[m] = grid[at[m]];
+                V[m] = var[at[m]];
+            }
+        for (int k = 0; k < n_phases; k++) {
+            for (m = 0; m < 9; m++) C[m] = cg[k * gy * gx + at[m]];
+            zg_cell_terms(N, V, C, lam, cell + ((k * gy + iy) * gx + ix) * RGBZ_ZG_FEATURES,
+                          &nu);
+        }
+        int lv = 0;
+        for (int i = 0; i < n_thr; i++) lv += nu > thr[i];
+        level[iy * gx + ix] = lv;
+    }
+}
+
+/* the entry points: the colour means of every Z pixel's box (one pass), then the terms */
 #define ZG_CELLS(is, T)                                                                        \
-    static void zg_cell_##is(const T *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,    \
-                             const int8_t *chan, int zr, int zc, int block,                   \
-                             const double *grid, const double *var, ptrdiff_t gy,             \
-                             ptrdiff_t gx, ptrdiff_t iy, ptrdiff_t ix, int t, double lam,     \
-                             double *out, double *nu_out)                                     \
-    {                                                                                          \
-        double N[9], V[9], C[9];                                                               \
-        int m = 0;                                                                             \
-        for (int dy = -1; dy <= 1; dy++)                                                       \
-            for (int dx = -1; dx <= 1; dx++, m++) {                                            \
-                ptrdiff_t jy = iy + dy, jx = ix + dx;                                          \
-                jy = jy < 0 ? 0 : (jy >= gy ? gy - 1 : jy);                                    \
-                jx = jx < 0 ? 0 : (jx >= gx ? gx - 1 : jx);                                    \
-                N[m] = grid[jy * gx + jx];                                                     \
-                V[m] = var[jy * gx + jx];                                                      \
-                const ptrdiff_t y0 = zr + (ptrdiff_t)py * jy, x0 = zc + (ptrdiff_t)px * jx;   \
-                double s = 0.0;                                                                \
-                int n = 0;                                                                     \
-                for (int ey = -2; ey < block + 2; ey++) {                                      \
-                    const ptrdiff_t y = zg_extend(y0 + ey, rows, py);                         \
-                    for (int ex = -2; ex < block + 2; ex++) {                                  \
-                        const ptrdiff_t x = zg_extend(x0 + ex, cols, px);                     \
-                        if (chan[(y % py) * px + x % px] == t) {                               \
-                            s += (double)src[y * cols + x];                                       \
-                            n++;                                                               \
-                        }                                                                      \
-                    }                                                                          \
-                }                                                                              \
-                C[m] = s / (double)n;                                                          \
-            }                                                                                  \
-        zg_cell_terms(N, V, C, lam, out, nu_out);                                              \
-    }                                                                                          \
     int rgbz_zguided_cells_##is(const T *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px, \
                                 const int8_t *chan, int zr, int zc, int block,                \
                                 const double *grid, const double *var, ptrdiff_t gy,          \
@@ -220,20 +238,45 @@ static int zg_cells_check(ptrdiff_t rows, ptrdiff_t cols, int py, int px, const 
         int status = zg_cells_check(rows, cols, py, px, chan, zr, zc, block, gy, gx,          \
                                     n_phases, targets, thr, n_thr);                            \
         if (status != RGBZ_OK) return status;                                                  \
+        double *cg = malloc((size_t)n_phases * (size_t)gy * (size_t)gx * sizeof *cg);         \
+        int *ey = malloc((size_t)n_phases * 36 * 2 * sizeof *ey);                              \
+        int *nbox = malloc((size_t)n_phases * sizeof *nbox);                                  \
+        if (!cg || !ey || !nbox) {                                                             \
+            free(cg);                                                                          \
+            free(ey);                                                                          \
+            free(nbox);                                                                        \
+            return RGBZ_ENOMEM;                                                                \
+        }                                                                                      \
+        for (int k = 0; k < n_phases; k++)                                                     \
+            nbox[k] = zg_box_offsets(chan, py, px, zr, zc, block, targets[k], ey + k * 72,    \
+                                     ey + k * 72 + 36);                                        \
         const int zg_nth = ZG_NTHREADS(workers);                                               \
         (void)zg_nth;                                                                          \
         ZG_CELLS_PARALLEL                                                                      \
-        for (ptrdiff_t iy = 0; iy < gy; iy++)                                                  \
+        for (ptrdiff_t iy = 0; iy < gy; iy++) {                                                \
+            const ptrdiff_t y0 = zr + (ptrdiff_t)py * iy;                                      \
             for (ptrdiff_t ix = 0; ix < gx; ix++) {                                            \
-                double nu = 1.0;                                                               \
-                for (int k = 0; k < n_phases; k++)                                             \
-                    zg_cell_##is(src, rows, cols, py, px, chan, zr, zc, block, grid, var, gy, \
-                                 gx, iy, ix, targets[k], lam,                                  \
-                                 cell + ((k * gy + iy) * gx + ix) * RGBZ_ZG_FEATURES, &nu);    \
-                int lv = 0;                                                                    \
-                for (int i = 0; i < n_thr; i++) lv += nu > thr[i];                             \
-                level[iy * gx + ix] = lv;                                                      \
+                const ptrdiff_t x0 = zc + (ptrdiff_t)px * ix;                                  \
+                const int inside = y0 - 2 >= 0 && y0 + block + 1 < rows && x0 - 2 >= 0 &&    \
+                                   x0 + block + 1 < cols;                                      \
+                for (int k = 0; k < n_phases; k++) {                                           \
+                    const int *oy = ey + k * 72, *ox = ey + k * 72 + 36;                       \
+                    double s = 0.0;                                                            \
+                    for (int i = 0; i < nbox[k]; i++) {                                        \
+                        const ptrdiff_t y = inside ? y0 + oy[i] : zg_extend(y0 + oy[i], rows, py); \
+                        const ptrdiff_t x = inside ? x0 + ox[i] : zg_extend(x0 + ox[i], cols, px); \
+                        s += (double)src[y * cols + x];                                        \
+                    }                                                                          \
+                    cg[(k * gy + iy) * gx + ix] = s / (double)nbox[k];                         \
+                }                                                                              \
             }                                                                                  \
+        }                                                                                      \
+        ZG_CELLS_PARALLEL                                                                      \
+        for (ptrdiff_t iy = 0; iy < gy; iy++)                                                  \
+            zg_cells_terms(grid, var, cg, gy, gx, n_phases, lam, thr, n_thr, cell, level, iy); \
+        free(cg);                                                                              \
+        free(ey);                                                                              \
+        free(nbox);                                                                            \
         return RGBZ_OK;                                                                        \
     }
 
