@@ -71,3 +71,33 @@ def frame_header(**fields):
     h = {"format": "rgbz-fast raw frame", "pattern": "ZR/BG", "bit_depth": 11, "meta": {}}
     h.update(fields)
     return np.array(json.dumps(h))
+
+
+def _colour():
+    """colour-science, imported as the library does (it leaves NumPy's print options alone)."""
+    from rgbz_fast._deps import import_colour
+
+    return import_colour()
+
+
+def delta_e2000(a8, b8):
+    """CIEDE2000 per pixel between two 8-bit sRGB images."""
+    colour = _colour()
+
+    def lab(im):
+        return colour.XYZ_to_Lab(colour.sRGB_to_XYZ(np.asarray(im) / 255.0))
+
+    return colour.delta_E(lab(a8), lab(b8), method="CIE 2000")
+
+
+def reference_srgb(scene, scale=1.0):
+    """The spectral scene rendered directly by colour-science: reflectance under D65, CIE 1931
+    2-degree observer, XYZ (white Y = 1) times ``scale`` (an exposure), sRGB, 8 bits."""
+    colour = _colour()
+    wl = scene.wavelengths
+    shape = colour.SpectralShape(wl[0], wl[-1], wl[1] - wl[0])
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
+    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
+    xyz = colour.msds_to_XYZ(scene.image, cmfs, d65, method="Integration", shape=shape) / 100
+    lin = np.clip(colour.XYZ_to_sRGB(xyz * scale, apply_cctf_encoding=False), 0, 1)
+    return np.round(colour.cctf_encoding(lin) * 255).astype(np.uint8)

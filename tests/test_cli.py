@@ -280,7 +280,8 @@ def test_reconstruct_places_a_z_pattern_on_real_raw(name, tmp_path, capsys):
     for k in ("black_level", "white_level", "bit_depth_in", "clip_level"):
         if k in kw:
             kw[k] = float(kw[k]) if k != "bit_depth_in" else int(kw[k])
-    rgbz, want_ref = frameio.to_rgbz(frameio.read_raw(path, **kw), "mask1")
+    # the command keeps the file's bit depth
+    rgbz, want_ref = frameio.to_rgbz(frameio.read_raw(path, bit_depth="input", **kw), "mask1")
     np.testing.assert_array_equal(ref, want_ref)
     np.testing.assert_array_equal(cfa, rz.reconstruct(rgbz, "sg"))
     z = rgbz.z_mask
@@ -296,8 +297,9 @@ def test_raw_options_file_and_cli_words(tmp_path, capsys):
     assert main(["reconstruct", str(path), "--rgbz-pattern", "mask2", "--out", str(tmp_path),
                  "--quiet"]) == 2
     err = capsys.readouterr().err
-    assert err.strip() == ("rgbz-fast reconstruct: error: shape: the headerless file "
-                           "openisp_test.RAW needs --shape ROWSxCOLS")
+    assert err.strip().startswith(
+        "rgbz-fast reconstruct: error: shape: openisp_test.RAW does not record its size, its "
+        "CFA phase, its black level or its white level; pass --shape ROWSxCOLS, --phase")
 
 
 def test_plain_bayer_frame_is_not_copied_silently(tmp_path, capsys):
@@ -337,7 +339,7 @@ def test_two_inputs_writing_one_output_are_refused(tmp_path, capsys):
 
 
 def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
-    """A tile pattern names its file with no folder separator (s_ZR-BG.npz), and a simulate
+    """A tile pattern names its file with no folder separator (s_zr-bg.npz), and a simulate
     that fails creates no --out folder."""
     import imageio.v3 as iio
 
@@ -345,8 +347,8 @@ def test_simulate_custom_tile_and_failure_leave_no_folders(tmp_path, capsys):
     iio.imwrite(img, np.random.default_rng(0).integers(0, 256, (16, 16, 3), dtype=np.uint8))
     out = tmp_path / "out"
     assert main(["simulate", str(img), "--pattern", "ZR/BG", "--out", str(out), "--quiet"]) == 0
-    assert sorted(p.name for p in out.iterdir()) == ["s_ZR-BG.npz"]
-    assert frameio.load_frame(out / "s_ZR-BG.npz").pattern == rz.Pattern("ZR/BG")
+    assert sorted(p.name for p in out.iterdir()) == ["s_zr-bg.npz"]
+    assert frameio.load_frame(out / "s_zr-bg.npz").pattern == rz.Pattern("ZR/BG")
     grey = tmp_path / "g.png"
     iio.imwrite(grey, np.arange(256, dtype=np.uint8).reshape(16, 16))
     out2 = tmp_path / "out2" / "deeper"
@@ -368,7 +370,7 @@ def test_depth_subcommand_writes_depth_flags_and_preview(tmp_path, capsys):
     out = tmp_path / "depth"
     assert main(["depth", str(frames / "aloe_mask2.npz"), "--out", str(out)]) == 0
     line = capsys.readouterr().out
-    assert "% valid; ground truth unknown at 3.8 % of them" in line
+    assert "% valid; flagged: " in line and "ground truth unknown at 3.8 % of them" in line
     frame = frameio.load_frame(frames / "aloe_mask2.npz")
     res = rz.tof_depth(frame.tof)
     depth = tifffile.imread(out / "aloe_mask2_depth.tif")
@@ -378,7 +380,7 @@ def test_depth_subcommand_writes_depth_flags_and_preview(tmp_path, capsys):
     with tifffile.TiffFile(out / "aloe_mask2_depth.tif") as tf:
         meta = json.loads(tf.pages[0].description)
     assert meta["unit"] == "m" and 0.03 < meta["truth_unknown_fraction"] < 0.04
-    flags = iio.imread(out / "aloe_mask2_depth_flags.png")
+    flags = tifffile.imread(out / "aloe_mask2_depth-flags.tif")
     assert flags.dtype == np.uint8 and set(np.unique(flags)) <= set(range(32)) | {255}
     z = frame.z_mask
     assert np.all(flags[~z] == 255) and np.mean(flags[z] == 0) > 0.75   # 255: no measurement
@@ -523,13 +525,13 @@ def test_depth_full_resolution_writes_a_depth_at_every_pixel(tmp_path, capsys):
     path = tmp_path / "step.npz"
     frameio.save_frame(path, frame)
     assert main(["depth", str(path), "--out", str(tmp_path), "--full-resolution"]) == 0
-    assert "step_depth_full.tif, step_depth_full.png" in capsys.readouterr().out
-    full = tifffile.imread(tmp_path / "step_depth_full.tif")
+    assert "step_depth-full.tif, step_depth-full.png" in capsys.readouterr().out
+    full = tifffile.imread(tmp_path / "step_depth-full.tif")
     frame = frameio.load_frame(path)                  # as the command reads it
     guide = rz.ColourISP().run(frame)
     want, _ = rz.tof.upsample_depth(rz.tof_depth(frame.tof, guide=guide), guide)
     np.testing.assert_array_equal(full, want)
-    assert full.shape == (32, 48) and (tmp_path / "step_depth_full.png").stat().st_size > 0
+    assert full.shape == (32, 48) and (tmp_path / "step_depth-full.png").stat().st_size > 0
 
 
 def test_depth_validity_options_reach_the_isp(tmp_path, capsys):

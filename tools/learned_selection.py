@@ -1,4 +1,4 @@
-"""Model selection of the learned filters on CBSD68 alone (the table of docs/guide/learned.md).
+"""Model selection of the learned filters on CBSD68 alone (the table of docs/reports/results.md).
 
     python tools/learned_selection.py [PATTERN] [CBSD68_DIR]
 

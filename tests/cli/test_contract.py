@@ -75,7 +75,7 @@ CLI_ROWS = [
     C("cli.evaluate-workers", ("evaluate", "--dataset", "{d}/ds", "--workers", "0"),
       "argument --workers: expected a positive integer, got '0'", usage=True),
     C("cli.evaluate-image-small", ("evaluate", "--dataset", "{d}/small.png", "--processes", "1",
-                                   "--no-cache", "--no-plots"), "crop: crop=8 leaves"),
+                                   "--no-cache", "--no-plots"), "crop: --crop 8 leaves"),
     C("cli.evaluate-corrupt", ("evaluate", "--dataset", "{d}/ds_corrupt", "--processes", "1",
                                "--no-cache", "--metrics", "cfa_psnr"),
       "dataset: cannot read {d}/ds_corrupt/a.png"),
@@ -98,7 +98,9 @@ CLI_ROWS = [
       "--pattern: names the pattern of a plain mosaic that already holds Z sites"),
     C("cli.reconstruct-png-phase", ("reconstruct", "{d}/bayer16.png", "--rgbz-pattern",
                                     "mask1"),
-      "phase: bayer16.png does not record its CFA phase; pass --phase one of"),
+      "phase: bayer16.png does not record its CFA phase, its black level or its white level; "
+      "pass --phase (one of GRBG, RGGB, BGGR, GBRG), --black-level (one value or four, per "
+      "quad site) and --white-level (or --bit-depth-in;"),
     C("cli.reconstruct-headerless-shape", ("reconstruct", "{d}/bayer.raw", "--rgbz-pattern",
                                            "mask1", "--phase", "RGGB", "--black-level", "0",
                                            "--white-level", "1023"),

@@ -204,7 +204,9 @@ def test_errors_carry_the_parameter_and_the_settings_that_fix_it(tmp_path):
     assert isinstance(back, ValueError)
     with pytest.raises(rio.ParameterError) as e:
         rio.read_raw(f, shape=(5, 10))
-    assert e.value.param == "phase" and e.value.settings == ("phase",)
+    # every setting the file lacks, in one error named after the first
+    assert e.value.param == "phase" and e.value.settings == ("phase", "black_level",
+                                                             "white_level", "bit_depth_in")
     nested = rio.ParameterError(None, "its arrays declare 9 bytes", "; raise it with ",
                                 rio.Setting("max_bytes")).within("path", "x.npz is bad (", ")")
     assert str(nested) == "path: x.npz is bad (its arrays declare 9 bytes; raise it with " \

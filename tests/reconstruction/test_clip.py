@@ -528,7 +528,7 @@ def test_cli_clip_level(tmp_path, capsys):
         out = tmp_path / str(flag)
         assert main(["reconstruct", str(src), "--method", "edi_line", "--out", str(out),
                      "--quiet"] + (["--clip-level", flag] if flag else [])) == 0
-        outs[flag] = tifffile.imread(out / "chart_edi_line_cfa.tif")
+        outs[flag] = tifffile.imread(out / "chart_edi-line_cfa.tif")
     np.testing.assert_array_equal(outs[None], outs["off"])             # off by default
     np.testing.assert_array_equal(outs["auto"], rz.reconstruct(rgbz, "edi_line",
                                                                clip_level=2041.0))

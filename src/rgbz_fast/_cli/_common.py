@@ -20,7 +20,7 @@ from ..io import MAX_BYTES_ENV, MAX_PIXELS_ENV
 __all__ = ["CliError", "Formatter", "EPILOG", "command_parser", "explain", "command_line",
            "output_folder", "unique_outputs", "file_label"]
 
-EPILOG = ("Every option's default is shown in brackets. The user guide, the measured "
+EPILOG = ("Every option's default is shown in parentheses. The user guide, the measured "
           "results and the API reference are in the project's documentation.")
 
 
@@ -278,7 +278,8 @@ def add_raw_options_file(p, note=""):
 #: how the command line gives the settings that library errors ask for, where it is not
 #: the parameter's own flag (--black-level for black_level)
 FLAG_WORDS = {"shape": "--shape ROWSxCOLS", "grey": "--grey",
-              "reader": "give the file a camera raw extension"}
+              "reader": "give the file a camera raw extension",
+              "filters": "--filters FILE", "train": "rgbz-fast train"}
 
 
 def flag(setting):
@@ -286,16 +287,56 @@ def flag(setting):
     return FLAG_WORDS.get(setting.name, "--" + setting.name.replace("_", "-"))
 
 
-def explain(exc):
+def raw_option_words(setting):
+    """The command line's words for a setting asked for in the ``--raw-options`` file: its
+    JSON key ("phase"), and the file itself with an example entry."""
+    if setting.name == "raw_options":
+        name = setting.python.removeprefix("raw_options[").removesuffix("]")
+        return f'--raw-options FILE, a JSON file {{{name}: {{"phase": ..., ...}}}}'
+    if setting.name == "shape":
+        return '"shape": "ROWSxCOLS"'
+    return f'"{setting.name}"'
+
+
+def explain(exc, parser=None):
     """The message of an error in command-line words: the settings a library error asks for
-    are given as flags (pass --phase, not phase=). ``exc`` may also be an evaluation's skip
-    reason, which carries the error it came from."""
+    are given as flags (pass --phase, not phase=), or as keys of the --raw-options file when
+    the error asks for them there; with the command's ``parser``, the ``name=value`` words
+    of other library messages become the command's flags (:func:`flag_words`). ``exc`` may
+    also be an evaluation's skip reason, which carries the error it came from."""
     from ..io import ParameterError
 
     error = getattr(exc, "error", None) or exc
     if isinstance(error, ParameterError):
-        return " ".join(error.render(flag).split())
-    return str(exc)
+        spell = raw_option_words if "raw_options" in error.settings else flag
+        return " ".join(error.render(spell).split())
+    return str(exc) if parser is None else flag_words(str(exc), parser)
+
+
+def flag_words(text, parser):
+    """``text`` with each ``name=value`` whose name is an option of ``parser`` written as
+    that option: ``noise=True`` -> ``--noise``, ``linearise=False`` -> ``--no-linearise``,
+    ``crop=300`` -> ``--crop 300``, ``filters=`` -> ``--filters``. Other words are left as
+    they are (a library message that names a parameter the command does not have)."""
+    options = {}
+    for action in parser._actions:
+        longs = [o for o in action.option_strings if o.startswith("--")]
+        if longs:
+            options[action.dest] = (longs, action)
+
+    def spell(m):
+        name, value = m.group(1), m.group(2)
+        longs, action = options[name]
+        if isinstance(action, argparse.BooleanOptionalAction) and value in ("True", "False"):
+            return longs[0] if value == "True" else longs[-1]
+        if isinstance(action, argparse._StoreTrueAction) and value in ("True", "False"):
+            return longs[0] if value == "True" else f"no {longs[0]}"
+        return f"{longs[0]} {value}" if value else longs[0]
+
+    if not options:
+        return text
+    names = "|".join(sorted(map(re.escape, options), key=len, reverse=True))
+    return re.sub(rf"(?<![\w.-])({names})=([^\s,;)]*)", spell, text)
 
 
 # --------------------------------------------------------------------------- running
@@ -327,6 +368,13 @@ def output_folder(out):
     return out
 
 
+def output_file(out):
+    """``out`` when it can be the one file a command writes, else a CliError."""
+    if out.is_dir():
+        raise CliError(f"--out: {str(out)!r} is a folder; give the name of the file to write")
+    return out
+
+
 def unique_outputs(pairs, out):
     """``pairs``: (input, output names); a CliError when two inputs would write one file."""
     seen = {}
@@ -338,9 +386,16 @@ def unique_outputs(pairs, out):
             seen[name] = src
 
 
-def file_label(pattern):
-    """A pattern's name as a file-name part: ZR/BG -> ZR-BG (no folder separator)."""
-    return re.sub(r"[^A-Za-z0-9_.-]", "-", pattern.name)
+def file_label(name):
+    """A pattern's or a method's name as one field of an output file name.
+
+    Every command names its outputs ``<input>_<pattern>_<method>[_<product>].<ext>``:
+    fields joined by ``_``, each lower-case with ``-`` inside it, so a field never splits
+    (``bayer_grbg`` -> ``bayer-grbg``, the tile ``ZR/BG`` -> ``zr-bg``, ``SG`` -> ``sg``).
+    ``name``: a string or anything with a ``name`` (a Pattern).
+    """
+    text = getattr(name, "name", name)
+    return re.sub(r"[^a-z0-9.-]", "-", str(text).strip().lower())
 
 
 def must_exist(paths, prefix="path: "):

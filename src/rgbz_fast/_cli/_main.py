@@ -61,7 +61,7 @@ def main(argv=None):
     try:
         return int(args.run(args) or 0)
     except (_common.CliError, ValueError, TypeError, OSError, ImportError) as exc:
-        text = _common.explain(exc)
+        text = _common.explain(exc, args.parser)
         print(f"rgbz-fast {args.command}: error: "
               f"{text.splitlines()[0] if text else type(exc).__name__}", file=sys.stderr)
         return 2

@@ -23,9 +23,10 @@ call), with 1 thread and with all threads. Beside it:
   a case alternates with one call of each OpenCV demosaic, and the ratio is
   the median of the rounds' ratios, so that a change of the machine's load
   during the run hits both sides alike.
-* With --numpy-reference FILE (the test suite's NumPy reference of the
-  reconstruction, in a source checkout), the plain NumPy reference of each
-  method, timed on a crop of the same frame and scaled to Mpix/s; the ratio is
+* With --numpy-reference FILE (a slow NumPy implementation of the
+  reconstruction: tests/_reference/reconstruction.py of a source checkout),
+  that implementation of each method, timed on a crop of the same frame and
+  scaled to Mpix/s; the ratio is
   our 1-thread speed over it ("n/a" without the option). The Malvar demosaic is
   compared with colour-demosaicing's NumPy/SciPy implementation and the
   demodulation with a NumPy one-liner.
@@ -40,16 +41,16 @@ call), with 1 thread and with all threads. Beside it:
   output) on the Mask1 frame, seconds per stage (medians).
 * Peak memory of one reconstruct call on the full frame, measured in a fresh
   subprocess: the growth of the peak resident set size across the call, and
-  tracemalloc's peak of the Python-side (NumPy) allocations, against the input
+  the peak of its NumPy allocations, against the input
   and output sizes. The budget is input + output + 10 %, i.e. a growth of at
   most output + 0.1 (input + output).
 
 Numbers from a shared machine are noisy: the load average before and after the
-run is printed with them. Every case is called once untimed (the OpenMP thread
-team, caches, lazy plans), then timed --repeat times. "All threads" is the
-thread count the library really uses on that frame: a kernel call takes at
-most one thread per 2**18 pixels, so on a small frame it is fewer than the
-cores, and the report shows the count. --quick is a smoke test: small frame,
+run is printed with them. Every case is called once untimed (thread start-up,
+caches), then timed --repeat times. "All threads" is the thread count the
+library really uses on that frame: a kernel call takes at most one thread per
+262,144 pixels (512x512), so on a small frame it is fewer than the cores, and
+the report shows the count. --quick is a smoke test: small frame,
 few runs; its numbers are not comparable with anything, so it prints no ratio
 and no target verdict ("quick run: numbers not comparable, no verdict"). A
 full run gives the verdicts of the targets, which are defined on the
@@ -68,10 +69,11 @@ def add_parser(sub):
     p.add_argument("--no-reference", action="store_true",
                    help="skip the NumPy and colour-demosaicing baselines")
     p.add_argument("--numpy-reference", default=None, metavar="FILE",
-                   help="also time the slow NumPy reference of the reconstruction: a Python "
-                        "file defining reference_reconstruct, such as the test suite's "
-                        "(default: none)")
-    p.add_argument("--no-memory", action="store_true", help="skip the peak-memory subprocess")
+                   help="also time a slow NumPy implementation of the reconstruction: a "
+                        "Python file defining reference_reconstruct, such as the one among "
+                        "the tests of a source checkout (default: none)")
+    p.add_argument("--no-memory", action="store_true",
+                   help="skip the peak-memory measurement (a separate process)")
     p.add_argument("--no-tof-sites", action="store_true",
                    help="skip the ToF section (C vs NumPy in M measurements/s)")
     p.add_argument("--chain", action="store_true",

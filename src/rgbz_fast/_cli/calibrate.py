@@ -60,9 +60,11 @@ def add_parser(sub):
 
 
 def run(args):
+    from .._progress import ticking
     from ..io import load_frame
     from ..tof import calibrate
 
+    c.output_file(args.out)
     if args.simulate:
         if args.frames:
             raise c.CliError("give frame files or --simulate, not both")
@@ -80,7 +82,8 @@ def run(args):
                              f"{args.distances!r}") from None
         sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
         dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
-    cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
+    with ticking(f"calibrate: fitting {len(sweep)} frames", not args.quiet):
+        cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
     cal.save(args.out)
     if not args.quiet:
         rms = ", ".join(f"{1e3 * v:.2f}" for v in cal.meta["fit_rms_m"])
@@ -120,7 +123,12 @@ def _simulated_sweep(args):
             warnings.simplefilter("ignore")
             return simulate_tof(scene, args.pattern, s, seed=seed)
 
-    sweep = [wall(d, sensor, args.seed * 100_000 + k) for k, d in enumerate(distances)]
+    from tqdm.auto import tqdm
+
     capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
-    dark = [wall(1.0, capped, args.seed * 100_000 + 90_000 + k) for k in range(8)]
+    jobs = [(d, sensor, args.seed * 100_000 + k) for k, d in enumerate(distances)]
+    jobs += [(1.0, capped, args.seed * 100_000 + 90_000 + k) for k in range(8)]
+    frames = [wall(*job) for job in tqdm(jobs, desc="calibrate: simulating the sweep",
+                                         unit="frame", disable=args.quiet)]
+    sweep, dark = frames[:len(distances)], frames[len(distances):]
     return sweep, distances, dark

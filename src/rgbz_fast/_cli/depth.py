@@ -23,11 +23,12 @@ def add_parser(sub):
         "unwrapping, validity) on the taps of frames simulated from scenes with depth. Writes, "
         "per frame, OUT/<name>_depth.tif (float32 metres on the frame grid, NaN where there is "
         "no valid measurement: the colour sites and the flagged Z pixels), "
-        "OUT/<name>_depth_flags.png (0 valid, bits 1 saturated, 2 low signal, 4 inconsistent "
-        "frequencies, 8 flying pixel, 16 out of range; 255 colour site) and "
-        "OUT/<name>_depth.png (a colour-mapped preview with its scale). Prints how much is "
-        "valid and, for simulated frames, the error against the ground truth and how much of "
-        "it is unknown.")
+        "OUT/<name>_depth.png (a colour-mapped preview with its scale), "
+        "OUT/<name>_depth-flags.png (why each measurement is flagged: a map with a legend) "
+        "and OUT/<name>_depth-flags.tif (uint8 on the frame grid: 0 valid, bits 1 saturated, "
+        "2 low signal, 4 inconsistent frequencies, 8 flying pixel, 16 out of range, 32 resolved "
+        "by the colour guide; 255 colour site). Prints how much is valid, why the rest is flagged and, for simulated frames, "
+        "the error against the ground truth and how much of it is unknown.")
     p.add_argument("frames", nargs="+", type=Path,
                    help=".npz frames from `rgbz-fast simulate` of scenes with depth")
     p.add_argument("--denoise", choices=("bilateral", "box", "none"), default="bilateral",
@@ -55,8 +56,8 @@ def add_parser(sub):
                         "percentile of the valid depth)")
     p.add_argument("--full-resolution", action="store_true",
                    help="also run the colour ISP, guide the ToF ISP with its image and write "
-                        "a depth at every pixel: OUT/<name>_depth_full.tif (float32 metres, "
-                        "NaN where none can be given) and OUT/<name>_depth_full.png (preview)")
+                        "a depth at every pixel: OUT/<name>_depth-full.tif (float32 metres, "
+                        "NaN where none can be given) and OUT/<name>_depth-full.png (preview)")
     c.add_run_options(p, DEFAULT_OUT)
     return p
 
@@ -64,7 +65,7 @@ def add_parser(sub):
 def run(args):
     import tifffile
 
-    from .._devtools.plots import depth_preview, full_depth_preview
+    from .._devtools.plots import depth_flags_figure, depth_preview, full_depth_preview
     from ..io import atomic_write, load_frame
     from ..tof import ToFCalibration, tof_depth
 
@@ -76,11 +77,11 @@ def run(args):
             calibration = ToFCalibration.load(args.calibration, max_bytes=args.max_bytes)
         except (OSError, ValueError, TypeError, KeyError) as exc:
             raise c.CliError(f"--calibration: {args.calibration}: {c.explain(exc)}") from None
-    full = ["_depth_full.tif", "_depth_full.png"] if args.full_resolution else []
-    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth_flags.png", f"{f.stem}_depth.png"]
-             + [f.stem + x for x in full]) for f in args.frames]
+    full = ["_depth-full.tif", "_depth-full.png"] if args.full_resolution else []
+    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth.png", f"{f.stem}_depth-flags.png",
+                 f"{f.stem}_depth-flags.tif"] + [f.stem + x for x in full]) for f in args.frames]
     c.unique_outputs(outs, out)
-    for f, (tif_name, flags_name, png_name, *full_names) in outs:
+    for f, (tif_name, png_name, flags_name, bits_name, *full_names) in outs:
         frame = load_frame(f, **c.limits(args))
         if frame.tof is None:
             raise c.CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such "
@@ -100,12 +101,17 @@ def run(args):
         tifffile.imwrite(buf, depth, description=json.dumps(
             {"unit": "m", "invalid": "NaN", "source": str(f), **summary}))
         atomic_write(out / tif_name, buf.getvalue())
-        atomic_write(out / flags_name, c.png_bytes(flags))
+        bits = io.BytesIO()
+        tifffile.imwrite(bits, flags, description=json.dumps(
+            {"flags": FLAG_LEGEND, "colour site": NO_MEASUREMENT, "source": str(f)}))
+        atomic_write(out / bits_name, bits.getvalue())
         title = (f"{f.stem}: depth, {100 * summary['valid_fraction']:.1f} % of "
                  f"{summary['measurements']} measurements valid")
         atomic_write(out / png_name, depth_preview(
             res, title, args.range,
             frame.tof.valid if "truth_unknown_fraction" in summary else None))
+        atomic_write(out / flags_name, depth_flags_figure(res, f"{f.stem}: why measurements "
+                                                                "are flagged"))
         if full_names:
             from ..tof import upsample_depth
             up, _ = upsample_depth(res, guide, workers=args.workers)
@@ -118,17 +124,33 @@ def run(args):
                 up, f"{f.stem}: depth at every pixel", args.range))
         if not args.quiet:
             extra = "".join(f", {n}" for n in full_names)
-            print(f"{f} -> {out / tif_name}, {flags_name}, {png_name}{extra}: "
+            print(f"{f} -> {out / tif_name}, {png_name}, {flags_name}, {bits_name}{extra}: "
                   f"{summary['text']}")
     return 0
 
 
+#: the flag bits of the flags TIFF, as its description gives them
+FLAG_LEGEND = {"1": "saturated", "2": "low signal", "4": "inconsistent frequencies",
+               "8": "flying pixel", "16": "out of range", "32": "resolved by the colour guide"}
+
+
 def depth_summary(taps, res):
-    """Validity and, for simulated taps, the error against the ground truth (a dict + a line)."""
+    """Validity, why the rest is flagged (the share of the measurements each flag marks; one
+    may carry several) and, for simulated taps, the error against the ground truth (a dict
+    + a line)."""
+    from .._devtools.plots import flag_bits
+
     n = res.n_sites
     valid = res.valid
     out = {"measurements": n, "valid_fraction": float(valid.mean())}
     text = f"{n} measurements, {100 * valid.mean():.1f} % valid"
+    flags = np.asarray(res.flags).astype(np.int64)
+    flagged = {label: float(np.mean((flags & bit) != 0)) for label, bit in flag_bits().items()}
+    out["flagged_fraction"] = flagged
+    shares = sorted(((v, k) for k, v in flagged.items() if v > 0), reverse=True)
+    if shares:
+        text += "; flagged: " + ", ".join(
+            (f"{100 * v:.1f} %" if v >= 5e-4 else "< 0.1 %") + f" {k}" for v, k in shares)
     truth = getattr(taps, "depth_true", None)
     known = getattr(taps, "valid", None)
     if truth is not None and known is not None and len(truth) == n:

@@ -38,13 +38,60 @@ def add_parser(sub):
                            "sites but no rgbz-fast header, with --bit-depth (default: none; "
                            "frames from simulate carry theirs)")
     c.add_bit_depth(p, None, "bits of a plain TIFF/PNG mosaic given with --pattern; for a raw "
-                             "file, the working bit depth it is scaled to (default: 11)")
+                             "file, the working bit depth it is scaled to (default: the file's "
+                             "own: 14 for a 14-bit DNG)")
     c.add_reconstruction_options(p, "float32", "arithmetic of the kernel")
     p.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
+    colour = p.add_argument_group("colour of --output srgb")
+    colour.add_argument("--white-balance", type=white_balance, default="auto",
+                        metavar="auto|grey-world|R,G,B",
+                        help="auto: the gains the file records (a camera raw's as-shot white "
+                             "balance, a simulated spectral sensor's white), else grey world "
+                             "on the reference; or three gains (default: auto)")
+    colour.add_argument("--colour-matrix", type=colour_matrix, default="auto",
+                        metavar="auto|none|M11,...,M33",
+                        help="white-balanced camera RGB -> linear sRGB: auto: the matrix the "
+                             "file records (a camera raw's, a simulated spectral sensor's), "
+                             "else none; none: the identity; or nine numbers, row by row "
+                             "(default: auto)")
     add_raw_group(p)
     c.add_run_options(p, DEFAULT_OUT)
     return p
+
+
+def _numbers(text, n, what):
+    import argparse
+
+    try:
+        vals = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        vals = ()
+    if len(vals) != n or not all(abs(v) < float("inf") for v in vals):
+        raise argparse.ArgumentTypeError(f"expected {what}, got {text!r}")
+    return vals
+
+
+def white_balance(text):
+    """auto, grey-world or three positive gains R,G,B."""
+    t = text.strip().lower()
+    if t in ("auto", "grey-world"):
+        return t
+    gains = _numbers(t, 3, "auto, grey-world or three gains R,G,B")
+    if min(gains) <= 0:
+        import argparse
+
+        raise argparse.ArgumentTypeError(f"expected positive gains, got {text!r}")
+    return gains
+
+
+def colour_matrix(text):
+    """auto, none or nine numbers, row by row."""
+    t = text.strip().lower()
+    if t in ("auto", "none"):
+        return t
+    m = _numbers(t, 9, "auto, none or nine comma-separated numbers (the 3x3 matrix row by row)")
+    return (m[0:3], m[3:6], m[6:9])
 
 
 def run(args):
@@ -64,15 +111,17 @@ def run(args):
     from_file = raw_options_file(args.raw_options)
     c.must_exist(args.frames)
     out = c.output_folder(args.out)
-    label = args.rgbz_pattern and f"_{args.rgbz_pattern}"
+    label = args.rgbz_pattern and f"_{c.file_label(args.rgbz_pattern)}"
+    method = c.file_label(args.method)
     ext = "_cfa.tif" if args.output == "cfa" else ".png"
     names = [(f, f"{f.stem}{label or ''}") for f in args.frames]
-    c.unique_outputs([(f, [f"{n}_{args.method}{ext}", f"{n}_reference{ext}"]) for f, n in names],
-                     out)
+    c.unique_outputs([(f, [f"{n}_{method}{ext}", f"{n}_reference{ext}"]) for f, n in names], out)
     for f, stem in names:
         kw, explicit = raw_kwargs(args, f, from_file)
-        frame = load_frame(f, pattern=args.pattern, bit_depth=args.bit_depth, **c.limits(args),
-                           **kw)
+        # a raw file keeps its own bit depth unless --bit-depth says otherwise
+        bit_depth = args.bit_depth if args.bit_depth is not None or args.pattern is not None \
+            else "input"
+        frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args), **kw)
         if explicit and (frame.meta.get("reader") is None
                          or frame.meta.get("source") != str(f)):
             flag = "--" + next(iter(explicit)).replace("_", "-").replace("clip-level",
@@ -82,14 +131,14 @@ def run(args):
         frame = _with_z_sites(frame, f, args.rgbz_pattern)
         cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
         ref = frame.reference
-        dest = out / f"{stem}_{args.method}{ext}"
+        dest = out / f"{stem}_{method}{ext}"
         ref_dest = out / f"{stem}_reference{ext}" if ref is not None else None
         if args.output == "cfa":
-            _write_cfa(dest, cfa, frame, args.method)
+            _write_cfa(dest, cfa, frame, args.method.strip().lower())
             if ref is not None:
                 _write_cfa(ref_dest, ref, frame, "reference")
         else:
-            _write_srgb(dest, ref_dest, cfa, frame, args.workers)
+            _write_srgb(dest, ref_dest, cfa, frame, args)
         if not args.quiet:
             extra = ""
             if ref is not None:
@@ -131,19 +180,24 @@ def _write_cfa(dest, cfa, frame, method):
     atomic_write(dest, buf.getvalue())
 
 
-def _write_srgb(dest, ref_dest, cfa, frame, workers):
-    """8-bit sRGB PNGs through the evaluation's colour chain: grey world on the reference when
-    there is one, and the same gains on the reconstruction (Fig. 19)."""
+def _write_srgb(dest, ref_dest, cfa, frame, args):
+    """8-bit sRGB PNGs through the evaluation's colour chain, with the black level, white
+    balance and colour matrix the frame records unless the options say otherwise: the gains
+    found on the reference when there is one are used on the reconstruction (Fig. 19)."""
     from ..io import atomic_write
-    from ..isp import ColourISP
+    from ..isp import ColourISP, recorded_rendering
 
-    chain = ColourISP(precision="float64", black_level=0.0)
+    recorded = recorded_rendering(frame)
+    chain = ColourISP(precision="float64", black_level=recorded["black_level"] or 0.0)
+    gains = recorded["white_gains"] if args.white_balance == "auto" else \
+        None if args.white_balance == "grey-world" else args.white_balance
+    matrix = recorded["colour_matrix"] if args.colour_matrix == "auto" else \
+        None if args.colour_matrix == "none" else args.colour_matrix
+    kw = dict(bit_depth=frame.bit_depth, colour_matrix=matrix, workers=args.workers)
     phase = frame.pattern.bayer_phase
-    gains = None
     if frame.reference is not None:
-        ref_srgb, stages = chain.render(frame.reference, phase, bit_depth=frame.bit_depth,
-                                        workers=workers, return_stages=True)
+        ref_srgb, stages = chain.render(frame.reference, phase, gains=gains, return_stages=True,
+                                        **kw)
         gains = stages["gains"]
         atomic_write(ref_dest, c.png_bytes(ref_srgb))
-    atomic_write(dest, c.png_bytes(chain.render(cfa, phase, bit_depth=frame.bit_depth,
-                                                gains=gains, workers=workers)))
+    atomic_write(dest, c.png_bytes(chain.render(cfa, phase, gains=gains, **kw)))

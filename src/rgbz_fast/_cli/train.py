@@ -55,6 +55,7 @@ def run(args):
     from ..evaluation import train_filters
     from ..io import folder_dataset
 
+    c.output_file(args.out)
     if not args.dataset.is_dir():
         raise c.CliError(f"--dataset: {args.dataset} is not a folder")
     dataset = folder_dataset(args.dataset, args.limit, **c.limits(args))

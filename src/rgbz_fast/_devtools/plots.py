@@ -1,5 +1,5 @@
-"""The figures of the commands: the depth preview of ``rgbz-fast depth`` and the Pareto plot
-of ``rgbz-fast tradeoff``.
+"""The figures of the commands: the depth preview and the flags map of ``rgbz-fast depth`` and
+the Pareto plot of ``rgbz-fast tradeoff``.
 
 Each function returns PNG bytes, which the command writes with
 :func:`rgbz_fast.io.atomic_write`. matplotlib is imported here only, and only
@@ -13,7 +13,8 @@ import io
 
 import numpy as np
 
-__all__ = ["depth_preview", "tradeoff_plot"]
+__all__ = ["depth_preview", "depth_flags_figure", "full_depth_preview", "tradeoff_plot",
+           "tradeoff_figure"]
 
 
 def _pyplot():
@@ -87,9 +88,84 @@ def depth_preview(res, title, scale=None, truth_known=None):
     return _png(fig, plt, bbox_inches="tight")
 
 
+#: the reasons a measurement is flagged: (label, flag bit of rgbz_fast.tof, colour)
+FLAG_REASONS = (("saturated", "FLAG_SATURATED", "#e7298a"),
+                ("low signal", "FLAG_LOW_SIGNAL", "#7570b3"),
+                ("inconsistent frequencies", "FLAG_INCONSISTENT", "#d95f02"),
+                ("flying pixel", "FLAG_FLYING", "#e6ab02"),
+                ("out of range", "FLAG_OUT_OF_RANGE", "#a6761d"),
+                ("resolved by the colour guide", "FLAG_RESOLVED", "#66a61e"))
+#: the categories of the flags figure: valid, each reason alone, several at once
+FLAG_CATEGORIES = ((("valid", "#1b9e77"),) + tuple((label, c) for label, _, c in FLAG_REASONS)
+                   + (("several reasons", "#000000"),))
+
+
+def flag_bits():
+    """{label: bit} of :data:`FLAG_REASONS`, from :mod:`rgbz_fast.tof`."""
+    from .. import tof
+
+    return {label: int(getattr(tof, name)) for label, name, _ in FLAG_REASONS}
+
+
+def depth_flags_figure(res, title):
+    """Why each Z measurement is flagged, as a map with a legend (PNG bytes).
+
+    Each measurement is painted over its footprint (every pixel shows the
+    nearest measurement, as the preview does), in one colour per reason:
+    valid, each flag bit alone, or several at once. The legend gives each
+    category's share of the measurements. The flag bits themselves are in the
+    command's flags TIFF.
+    """
+    matplotlib, plt = _pyplot()
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+    from scipy import ndimage
+
+    flags = np.asarray(res.flags).astype(np.int64)
+    bits = list(flag_bits().values())
+    reasons = sum(((flags & b) != 0).astype(int) for b in bits)
+    category = np.zeros(flags.shape, np.int64)                    # 0 valid
+    for k, b in enumerate(bits):
+        category[(flags & b) != 0] = k + 1
+    category[reasons > 1] = len(FLAG_CATEGORIES) - 1
+    measured = res.to_frame(np.ones(res.n_sites, bool), fill=False).astype(bool)
+    grid = res.to_frame(category.astype(float), fill=0.0)
+    idx = ndimage.distance_transform_edt(~measured, return_distances=False, return_indices=True)
+    grid = grid[idx[0], idx[1]]
+    rows, cols = grid.shape
+    width = 6.4
+    fig, ax = plt.subplots(figsize=(width, width * rows / cols * 0.92 + 1.1))
+    cmap = ListedColormap([c for _, c in FLAG_CATEGORIES])
+    ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(FLAG_CATEGORIES) - 0.5,
+              interpolation="nearest")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    n = max(res.n_sites, 1)
+    handles = [Patch(color=colour, label=f"{label} ({100 * np.mean(category == k):.1f} %)")
+               for k, (label, colour) in enumerate(FLAG_CATEGORIES)
+               if k == 0 or np.any(category == k)]
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8,
+              frameon=False, ncol=3)
+    ax.set_title(f"{title} ({n} measurements)", fontsize=9)
+    return _png(fig, plt, bbox_inches="tight")
+
+
 #: marker of each (precision, exponential) of the trade-off rows
 _MARKERS = {("float64", "libm"): "o", ("float32", "libm"): "s", ("float64", "fast"): "^",
             ("float32", "fast"): "D", ("float64", "-"): "o", ("float32", "-"): "s"}
+#: one colour per method (tab10 without its grey, which would read as 'no colour')
+_METHOD_COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+                   "#e377c2", "#bcbd22", "#17becf")
+
+
+def _log_axis_numbers(ax):
+    """A log x axis labelled with plain numbers at 1, 2 and 5 per decade (and no minor
+    labels), so that neighbouring labels never run together."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.xaxis.set_minor_formatter(NullFormatter())
 
 
 def full_depth_preview(depth, title, scale=None):
@@ -116,45 +192,83 @@ def full_depth_preview(depth, title, scale=None):
 
 
 def tradeoff_plot(res):
-    """Pareto plot of :func:`rgbz_fast._devtools.tradeoff.run_tradeoff`'s result (PNG bytes).
+    """Pareto plot of :func:`rgbz_fast._devtools.tradeoff.run_tradeoff`'s result (PNG bytes):
+    :func:`tradeoff_figure` drawn."""
+    _, plt = _pyplot()
+    return _png(tradeoff_figure(res), plt, bbox_inches="tight")
+
+
+def tradeoff_figure(res):
+    """The matplotlib figure of :func:`tradeoff_plot`.
 
     One panel per pattern: Mpix/s (log) against mean CFA PSNR. Each row is a
-    point with its IQR bar, coloured by method (and domain), shaped by its
-    precision and exponential, outlined when on the front; the front is a
-    dashed line.
+    point with its IQR bar: its colour is the method, its fill the domain
+    (filled: intensity, open: colour difference), its shape the precision and
+    exponential; the points of the Pareto front are ringed in black and joined
+    by a dashed line. One legend, beside the panels, says all four.
     """
-    from .tradeoff import NO_EXP, PATTERNS, QUICK_NOTE, series, threads_text
+    from matplotlib.lines import Line2D
+
+    from .tradeoff import NO_EXP, PATTERNS, QUICK_NOTE, threads_text
 
     _, plt = _pyplot()
-    pats = sorted({r["pattern"] for r in res["rows"]},
+    rows = res["rows"]
+    pats = sorted({r["pattern"] for r in rows},
                   key=lambda p: PATTERNS.index(p) if p in PATTERNS else 99)
-    fig, axes = plt.subplots(1, len(pats), figsize=(6.5 * len(pats), 5), squeeze=False)
-    names = list(dict.fromkeys(series(r) for r in res["rows"]))
-    cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    colours = {m: cycle[i % len(cycle)] for i, m in enumerate(names)}
+    methods = list(dict.fromkeys(r["method"] for r in rows))
+    colours = {m: _METHOD_COLOURS[i % len(_METHOD_COLOURS)] for i, m in enumerate(methods)}
+    fig, axes = plt.subplots(1, len(pats), figsize=(5.6 * len(pats) + 2.4, 5), squeeze=False)
     for ax, p in zip(axes[0], pats):
-        sub = [r for r in res["rows"] if r["pattern"] == p]
+        sub = [r for r in rows if r["pattern"] == p]
         for r in sub:
-            ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=_MARKERS[(r["precision"], r["exp"])],
-                       color=colours[series(r)], s=50,
-                       edgecolor="k" if r["pareto"] else "none", zorder=3)
-            ax.plot([r["mpix_s_lo"], r["mpix_s_hi"]], [r["cfa_psnr"]] * 2, lw=1, alpha=0.4,
-                    color=colours[series(r)], zorder=2)     # IQR of the runs
+            col = colours[r["method"]]
+            cd = r.get("domain") == "colour_difference"
+            mk = _MARKERS[(r["precision"], r["exp"])]
+            if r["pareto"]:
+                ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=mk, s=150, facecolor="none",
+                           edgecolor="k", linewidth=1.4, zorder=2)
+            ax.scatter(r["mpix_s"], r["cfa_psnr"], marker=mk, s=50,
+                       facecolor="white" if cd else col, edgecolor=col,
+                       linewidth=1.6 if cd else 0.5, zorder=3)
+            ax.plot([r["mpix_s_lo"], r["mpix_s_hi"]], [r["cfa_psnr"]] * 2, lw=1, alpha=0.5,
+                    color=col, zorder=1)                              # IQR of the runs
         front = sorted((r for r in sub if r["pareto"]), key=lambda r: r["mpix_s"])
         ax.plot([r["mpix_s"] for r in front], [r["cfa_psnr"] for r in front], "k--", lw=1,
-                zorder=1, label="Pareto front")
-        for m in names:
-            if any(series(r) == m for r in sub):
-                ax.scatter([], [], color=colours[m], label=m)
-        for (prec, exp), mk in _MARKERS.items():
-            if exp != NO_EXP:
-                ax.scatter([], [], marker=mk, color="grey", label=f"{prec}, exp={exp}")
+                zorder=1)
         ax.set_xscale("log")
+        _log_axis_numbers(ax)
         ax.set_xlabel(f"speed, Mpix/s, best of {res['repeat']} ({threads_text(res)}, "
                       f"{res['speed_frame'][1]}x{res['speed_frame'][0]} frame)")
         ax.set_ylabel(f"mean CFA PSNR, dB ({res['dataset']}, {len(res['images'])} images)")
         ax.set_title(p + (f" ({QUICK_NOTE})" if res.get("quick") else ""))
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, loc="lower left")
+        ax.grid(True, which="major", alpha=0.3)
+        ax.grid(True, which="minor", alpha=0.1)
+
+    def point(label, marker="o", face="k", edge="k", width=0.5, size=7):
+        return Line2D([], [], ls="none", marker=marker, markersize=size, markerfacecolor=face,
+                      markeredgecolor=edge, markeredgewidth=width, label=label)
+
+    def header(text):
+        return Line2D([], [], ls="none", label=text)
+
+    handles = [header("colour: method")]
+    handles += [point(m, face=colours[m], edge=colours[m]) for m in methods]
+    handles += [header("fill: domain"), point("intensity"),
+                point("colour difference", face="white", width=1.6)]
+    handles += [header("shape: precision, exp")]
+    shapes = sorted({(r["precision"], r["exp"]) for r in rows},
+                    key=lambda k: list(_MARKERS).index(k))
+    handles += [point(f"{prec}" + (f", exp={exp}" if exp != NO_EXP else ""),
+                      marker=_MARKERS[(prec, exp)], face="white", width=1.2)
+                for prec, exp in shapes if exp != NO_EXP or not any(
+                    (prec, e) in shapes for e in ("libm", "fast"))]
+    handles += [header("Pareto front"),
+                Line2D([], [], ls="--", color="k", lw=1, marker="o", markersize=10,
+                       markerfacecolor="none", markeredgecolor="k", label="ringed, dashed")]
+    legend = fig.legend(handles=handles, loc="center left", bbox_to_anchor=(1.0, 0.5),
+                        fontsize=8, frameon=False, handletextpad=0.6)
+    for text, h in zip(legend.get_texts(), handles):
+        if h.get_marker() in (None, "None", "none", "") and h.get_linestyle() in ("None", "none"):
+            text.set_fontweight("bold")                               # a header
     fig.tight_layout()
-    return _png(fig, plt)
+    return fig

@@ -14,7 +14,7 @@ from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS
 from ._results import Results
 from ._run import _safe, image_frames
 
-__all__ = ["write_reports", "bar_chart", "paired_chart", "crop_figure"]
+__all__ = ["write_reports", "bar_chart", "paired_chart", "crop_figure", "auto_crop"]
 
 
 def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_box=None,
@@ -24,7 +24,10 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     The figures, per metric: ``bars_<metric>.png`` (mean ± std per method and
     pattern) and, with several methods and images, ``paired_<metric>.png``
     (each method minus the baseline, image by image; see
-    :func:`paired_chart`). Returns the list of files written. ``table_image`` defaults to kodim09
+    :func:`paired_chart`). Returns the list of files written. The folder's
+    ``reports.txt`` lists them; the files a previous run listed there and
+    this one does not write are removed, so that a folder never mixes two
+    runs (nothing else in it is touched). ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
 
@@ -48,6 +51,7 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
                          f"({', '.join(images)})")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
+    previous = _previous_reports(out)
     written = []
 
     def put(name, data):
@@ -69,12 +73,36 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         if crop_source is not None:
             put(f"crops_{_safe(crop_source.name)}.png",
                 crop_figure(crop_source, results.config, box=crop_box))
+    names = [p.name for p in written]
+    for name in sorted(previous - set(names)):          # a previous run's, not rewritten
+        stale = out / name
+        if stale.is_file() and not stale.is_symlink():
+            stale.unlink()
+    atomic_write(out / MANIFEST, MANIFEST_HEAD + "".join(n + "\n" for n in names))
     return written
 
 
-def _figure_png(fig):
+#: the list of the files an evaluation wrote into its folder, so that the next run into
+#: that folder removes those it does not write again (and nothing else)
+MANIFEST = "reports.txt"
+MANIFEST_HEAD = ("# The reports rgbz-fast evaluate wrote here. The next evaluation into this "
+                 "folder\n# replaces them and removes those it does not write again.\n")
+
+
+def _previous_reports(out):
+    """The file names the manifest of a previous run lists (plain names in ``out`` only)."""
+    try:
+        text = (out / MANIFEST).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return set()
+    names = {line.strip() for line in text.splitlines()}
+    return {n for n in names if n and not n.startswith("#") and Path(n).name == n
+            and n not in (".", "..", MANIFEST)}
+
+
+def _figure_png(fig, metadata=None):
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight", metadata=metadata)
     import matplotlib.pyplot as plt
     plt.close(fig)
     return buf.getvalue()
@@ -198,13 +226,64 @@ def _paired_figure(results, metric, baseline=None):
     return fig
 
 
+#: the PNG text key of the crop figure's region
+CROP_KEY = "rgbz-fast crop"
+
+
+def auto_crop(reference, tests, size):
+    """(row, col, size, size): the crop of the figure, where the methods' errors show.
+
+    Among the ``size`` x ``size`` windows that show structure -- the detail
+    of the reference, its gradient after a blur of 1.5 pixels that keeps
+    edges and drops pixel noise, at least the median window's -- and are not
+    dark (mean above a quarter of the brightest window's), the one where the
+    methods differ most from the reference. Dark, flat areas are left out:
+    there the error is the sensor's noise, amplified by the sRGB gamma, and
+    the crop would show nothing. A flat image falls back to its most
+    detailed window.
+    """
+    from scipy.ndimage import gaussian_filter, sobel, uniform_filter
+
+    ref = np.asarray(reference, np.float64)
+    luma = ref.mean(axis=2)
+    err = sum(np.abs(np.asarray(t, np.float64) - ref).sum(axis=2) for t in tests)
+    smooth = gaussian_filter(luma, 1.5)
+    detail = np.hypot(sobel(smooth, 0), sobel(smooth, 1))
+    # window means, indexed by the window's top-left pixel
+    h = ref.shape[0] - size + 1
+    w = ref.shape[1] - size + 1
+    c = size // 2
+
+    def means(a):
+        return uniform_filter(a, size, mode="nearest")[c:c + h, c:c + w]
+
+    e, d, lum = means(err), means(detail), means(luma)
+    ok = (d >= np.median(d)) & (lum >= 0.25 * lum.max())
+    score = np.where(ok, e, -np.inf) if ok.any() else d
+    y0, x0 = np.unravel_index(np.argmax(score), score.shape)
+    return int(y0), int(x0), size, size
+
+
+def _check_box(box, shape):
+    try:
+        y0, x0, h, w = (int(v) for v in box)
+    except (TypeError, ValueError):
+        raise ValueError(f"crop_box: expected (row, col, rows, cols), got {box!r}") from None
+    if not (0 <= y0 and 0 <= x0 and h > 0 and w > 0 and y0 + h <= shape[0]
+            and x0 + w <= shape[1]):
+        raise ValueError(f"crop_box: ({y0}, {x0}, {h}, {w}) is not inside the "
+                         f"{shape[0]}x{shape[1]} image")
+    return y0, x0, h, w
+
+
 def crop_figure(source, config, box=None, size=64):
     """Fig. 21-like comparison: where the crop is, then the reference and each method (PNG).
 
     The left column shows the whole reference image with the crop outlined;
     each row then shows the crop, enlarged with no smoothing, for one
-    pattern: the reference and every method. By default the crop is where
-    the methods differ most from the reference on the first pattern.
+    pattern: the reference and every method. ``box`` (row, col, rows, cols)
+    places the crop; by default :func:`auto_crop` chooses a ``size`` x
+    ``size`` one on the first pattern, where the methods' errors show.
     """
     plt = _pyplot()
     from matplotlib.patches import Rectangle
@@ -224,26 +303,20 @@ def crop_figure(source, config, box=None, size=64):
         tiles.append((pname, row))
     full = tiles[0][1][0][1]
     size = int(min(size, *full.shape[:2]))
-    if box is None:
-        ref = full.astype(float)
-        err = sum(np.abs(t.astype(float) - ref).sum(2) for _, t in tiles[0][1][1:])
-        from scipy.ndimage import uniform_filter
-        e = uniform_filter(err, size)
-        y, x = np.unravel_index(np.argmax(e), e.shape)
-        y0 = int(np.clip(y - size // 2, 0, ref.shape[0] - size))
-        x0 = int(np.clip(x - size // 2, 0, ref.shape[1] - size))
-        box = (y0, x0, size, size)
+    box = auto_crop(full, [t for _, t in tiles[0][1][1:]], size) if box is None else \
+        _check_box(box, full.shape)
     y0, x0, h, w = box
     ncol = len(tiles[0][1])
     # the overview column: the image's aspect, but never so narrow that it shows nothing
     wide = max(1.25 * full.shape[1] / full.shape[0], 1.4)
     fig = plt.figure(figsize=(2.0 * (ncol + wide), 2.15 * len(tiles) + 0.4))
+    # the panels' titles below the figure's title: 0.55 inch kept above the grid
     grid = fig.add_gridspec(len(tiles), ncol + 1, width_ratios=[wide] + [1] * ncol,
-                            wspace=0.08, hspace=0.25)
+                            wspace=0.08, hspace=0.25, top=1 - 0.55 / fig.get_figheight())
     ax = fig.add_subplot(grid[:, 0])
     ax.imshow(full, interpolation="antialiased")
     ax.add_patch(Rectangle((x0 - 0.5, y0 - 0.5), w, h, fill=False, ec="red", lw=1.6))
-    ax.set_title(f"{source.name} (reference)\nthe crop in red", fontsize=8)
+    ax.set_title("reference, the crop in red", fontsize=8)
     ax.set_xticks([])
     ax.set_yticks([])
     for i, (pname, row) in enumerate(tiles):
@@ -256,5 +329,6 @@ def crop_figure(source, config, box=None, size=64):
                 sp.set_edgecolor("red" if j == 0 else "0.6")
             ax.set_title(f"{pname}: {label}" if j else "reference", fontsize=8)
     fig.suptitle(f"{source.name}: crop rows {y0}:{y0 + h}, cols {x0}:{x0 + w}, enlarged "
-                 "without smoothing", fontsize=9)
-    return _figure_png(fig)
+                 "without smoothing", fontsize=9, y=1 - 0.1 / fig.get_figheight())
+    # the region, readable by programs (a PNG text chunk): ROW,COL,ROWS,COLS
+    return _figure_png(fig, {CROP_KEY: f"{y0},{x0},{h},{w}"})

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import os
+from contextlib import ExitStack
 from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
 from .._patterns import get_pattern
+from .._progress import ticking
 from ..reconstruction import train
 from ..simulation import Scene, simulate
 from ._config import EvalConfig
@@ -94,16 +96,20 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     name = name or ("+".join(s.name for s in dataset) if len(dataset) <= 3 else "custom")
     from tqdm.auto import tqdm
 
+    fitting = ExitStack()
+
     def frames():
         for i, source in enumerate(tqdm(dataset, desc="train", unit="img",
                                         disable=not progress)):
             cfg = replace(config, seed=config.seed + i) if noise else config
             frame, ref = image_frames(source.load(), pattern, cfg)
             yield replace(frame, reference=ref)
+        fitting.enter_context(ticking("train: fitting the filters", progress))  # images read
 
     meta = {"training_set": name, "noise": bool(noise),
             "encoding": "linear" if linearise else "srgb", **options.pop("meta", {})}
-    return train(frames(), meta=meta, **options)
+    with fitting:
+        return train(frames(), meta=meta, **options)
 
 
 def _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, name, progress,
@@ -125,6 +131,8 @@ def _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, 
                          "from the RGB leaks the answer")
     from tqdm.auto import tqdm
 
+    fitting = ExitStack()
+
     def frames():
         for source in tqdm(dataset, desc="train", unit="img", disable=not progress):
             img = source.load()
@@ -132,7 +140,9 @@ def _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, 
                                    ir_reflectance=source.load_nir())
             for n in (False, True):
                 yield simulate(scene, pattern, seed=seed, noise=n)
+        fitting.enter_context(ticking("train: fitting the filters", progress))  # pairs read
 
     meta = {"training_set": name, "seed": seed, "protocol": "sensor model, noise-free + noisy",
             **options.pop("meta", {})}
-    return train(frames(), z_guided=True, meta=meta, **options)
+    with fitting:
+        return train(frames(), z_guided=True, meta=meta, **options)

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._errors import ParameterError
+from ._errors import ParameterError, Setting
 from ._files import read_file, read_image, rgb_image
 from ._raw import read_raw
 from ._suffixes import IMAGE_SUFFIXES, RAW_SUFFIXES
@@ -32,7 +32,11 @@ class ImageSource:
     arguments of :func:`rgbz_fast.io.read_raw` they need) load as a Bayer
     :class:`~rgbz_fast.RawFrame`: the real CFA is then the reference and the
     RGB-Z pattern removes its Z sites (the paper's HDR+ protocol). A grey
-    image is refused unless ``grey`` (see :func:`rgbz_fast.io.rgb_image`).
+    image is refused unless ``grey`` (see :func:`rgbz_fast.io.rgb_image`); a
+    one-channel image whose four 2x2 sites differ as a raw mosaic's do
+    (:data:`MOSAIC_RATIO`, :data:`MOSAIC_CONTRAST`) is refused even with ``grey``: its entry
+    in ``raw_options`` (phase and levels) reads it as raw. A raw file's missing
+    settings are asked for as entries of ``raw_options``.
     ``max_pixels`` and ``max_bytes`` are the read limits of the file
     (:func:`rgbz_fast.io.read_limits`); a source carries them to the process
     that loads it. ``nir``: the location of a registered near-infrared image
@@ -56,12 +60,20 @@ class ImageSource:
     def load(self):
         limits = dict(max_pixels=self.max_pixels, max_bytes=self.max_bytes)
         if self.is_raw:
-            return read_raw(self.location, **limits, **dict(self.raw_options))
+            try:
+                return read_raw(self.location, **limits, **dict(self.raw_options))
+            except ParameterError as exc:
+                if exc.settings and set(exc.settings) <= RAW_SETTINGS:
+                    # a dataset gives a raw file its settings through raw_options
+                    raise ParameterError(exc.param, *exc.parts, " in ",
+                                         _raw_options_setting(self.location)) from None
+                raise
         if self.location.startswith("skimage:"):
             import skimage.data
             img = getattr(skimage.data, self.location.split(":", 1)[1])()
         else:
             img = read_image(self.location, "dataset", **limits)
+            _refuse_mosaic(img, self.location)
         return rgb_image(img, self.location, "dataset", grey=self.grey)
 
     def load_nir(self):
@@ -97,6 +109,56 @@ class ImageSource:
             h.update(read_file(self.nir, "dataset", max_bytes=self.max_bytes))
         h.update(repr((sorted(self.raw_options), self.is_raw, self.grey)).encode())
         return h.hexdigest()
+
+
+#: the read_raw settings a dataset's raw_options give a file
+RAW_SETTINGS = frozenset({"shape", "phase", "black_level", "white_level", "bit_depth_in",
+                          "clip_level", "downsample", "byteorder"})
+
+#: how a raw Bayer mosaic shows in one channel, against a grey photograph: its four 2x2
+#: sites differ in mean (their colour filters) by more than this ratio ...
+MOSAIC_RATIO = 1.15
+#: ... and each site departs from the mean of its two neighbours, along the rows or the
+#: columns, by more than this fraction of the mean level. Natural grey images (Kodak and
+#: CBSD68 in grey, 32x32 crops and up) stay below 1.26 and 0.08, uniform noise of 64x64
+#: below 1.09 and 0.09; the three shared camera raws are above 1.5 and 0.37.
+MOSAIC_CONTRAST = 0.15
+#: smaller images are not tested: their site means are too noisy to tell
+MOSAIC_MIN_SIDE = 64
+
+
+def _raw_options_setting(location):
+    """How a dataset gives the settings of one raw file: its entry of ``raw_options``."""
+    import json
+
+    return Setting("raw_options", f"raw_options[{json.dumps(Path(location).name)}]")
+
+
+def _refuse_mosaic(img, location):
+    """A ParameterError when a one-channel image looks like a raw Bayer mosaic: read as grey,
+    it would be scored as a photograph of its own colour-filter pattern."""
+    a = np.asarray(img)
+    if a.ndim == 3 and a.shape[2] == 1:
+        a = a[..., 0]
+    if a.ndim != 2 or min(a.shape) < MOSAIC_MIN_SIDE:
+        return
+    a = a.astype(np.float64)
+    means = [float(a[i::2, j::2].mean()) for i in (0, 1) for j in (0, 1)]
+    if not max(means) > MOSAIC_RATIO * min(means):
+        return
+    rows = a[:, 1:-1] - (a[:, :-2] + a[:, 2:]) / 2          # second differences: ~0 where
+    cols = a[1:-1, :] - (a[:-2, :] + a[2:, :]) / 2          # the image is smooth
+    contrast = max(abs(float(d[i::2, j::2].mean())) for d in (rows, cols) for i in (0, 1)
+                   for j in (0, 1))
+    if not contrast > MOSAIC_CONTRAST * float(a.mean()):
+        return
+    name = Path(location).name
+    raise ParameterError(
+        "dataset", f"{location} is a one-channel {a.dtype.itemsize * 8}-bit image whose four "
+        f"2x2 sites differ (means {', '.join(f'{m:.0f}' for m in means)}): a raw Bayer mosaic, "
+        f"not a grey photograph; to evaluate {name} as raw, pass ", Setting("phase"), ", ",
+        Setting("black_level"), " and ", Setting("white_level"), " (or ",
+        Setting("bit_depth_in"), ") in ", _raw_options_setting(location))
 
 
 def sample_dataset():

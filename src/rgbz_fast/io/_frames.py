@@ -92,7 +92,8 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
     ``pattern`` and ``bit_depth`` are needed for a TIFF or PNG that carries
     no rgbz-fast header; they override nothing in files that do. For a raw
     file (read by :func:`~rgbz_fast.io.read_raw` with ``raw_kwargs``),
-    ``bit_depth`` is the working bit depth it is scaled to.
+    ``bit_depth`` is the working bit depth it is scaled to (``"input"``: the
+    file's own).
     ``max_pixels`` and ``max_bytes`` bound what is read (see
     :func:`rgbz_fast.io.read_limits`): the file's size, and every array the
     file declares, checked from the headers before anything is allocated.

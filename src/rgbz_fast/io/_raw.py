@@ -28,7 +28,7 @@ import numpy as np
 
 from .._frame import RawFrame, _Adopt
 from .._patterns import BAYER_PHASES, bayer
-from .._validate import check_bit_depth, check_dtype
+from .._validate import check_bit_depth, check_dtype, parse_shape
 from ._errors import ParameterError, Setting
 from ._files import check_size, read_file, read_image, read_limits
 from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
@@ -64,16 +64,20 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         Raw values at or above it are flagged as clipped (saturated).
         Defaults to the white level. Some sensors saturate a little below the
         nominal white level (the openISP test frame stops at 1020 of 1023).
-    shape : tuple (rows, cols), optional
-        Headerless files only: the frame shape.
+    shape : tuple (rows, cols) or str, optional
+        Headerless files only: the frame shape, ``(1080, 1920)`` or
+        ``"1080x1920"`` (rows first).
     bit_depth_in : int, optional
         Bits of the stored data (recorded in ``meta``; gives the default
         white level of PNG/TIFF and headerless files). Values are taken as
         stored, LSB-aligned.
     byteorder : {"<", ">"}
         Headerless files only: little- (default) or big-endian uint16.
-    bit_depth : int
-        Working bit depth of the frame (default 11, as in the paper).
+    bit_depth : int or "input"
+        Working bit depth of the frame (default 11, as in the paper), or
+        ``"input"``: the file's own, ``bit_depth_in`` when given, else the
+        bits of its white level (14 for a white level of 15000), so that a
+        frame written back keeps the precision of the file.
     downsample : int
         1 (default) or a binning factor k >= 2: each colour plane is binned
         k x k by averaging, i.e. each output Bayer quad is the mean of a k x k
@@ -109,7 +113,12 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         * ``"clipped"``: ndarray of bool on the output grid, True where the
           pixel is (or, downsampled, any of its binned pixels is) clipped;
         * ``"clipped_count"`` and ``"clipped_fraction"``: pixels at or above
-          ``clip_level`` in the original data as read.
+          ``clip_level`` in the original data as read;
+        * camera raw files, when LibRaw has them: ``"white_gains"`` (the
+          as-shot white balance, R, G, B with G = 1) and ``"colour_matrix"``
+          (nine numbers, row by row: white-balanced camera RGB to linear
+          sRGB), which the colour ISP applies
+          (:func:`rgbz_fast.isp.recorded_rendering`).
 
     Raises
     ------
@@ -118,7 +127,8 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     FileNotFoundError
         The file does not exist.
     ValueError
-        A missing phase or level (naming the parameter), a headerless file
+        A missing phase, level or shape (every one the file lacks, in one
+        message that names the first as its parameter), a headerless file
         whose size does not match ``shape``, an unknown extension, a path
         that is not a regular file (a FIFO, a device, a folder), a file
         larger than the limits, a file
@@ -162,9 +172,10 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     """
     path = Path(os.fspath(path))
     kind = _reader_for(path, reader)
-    bd = check_bit_depth(bit_depth)
+    own_depth = isinstance(bit_depth, str) and bit_depth == "input"
+    bd = None if own_depth else check_bit_depth(bit_depth)
     out_dtype = check_dtype(dtype, _OUT_DTYPES)
-    if out_dtype == np.uint8 and bd > 8:
+    if out_dtype == np.uint8 and bd is not None and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     k = _check_downsample(downsample)
     if bit_depth_in is not None:
@@ -176,6 +187,10 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         raise ValueError(f"shape: only headerless files take a shape; {path.name} is read "
                          f"with the {kind!r} reader")
     limits = read_limits(max_pixels, max_bytes)
+    given = dict(shape=shape, phase=phase, black_level=black_level, white_level=white_level,
+                 bit_depth_in=bit_depth_in)
+    if kind == "headerless" and shape is None:       # cannot be read: ask for all it lacks
+        _check_settings(path, kind, {}, given)
 
     if kind == "libraw":
         data, info = _read_libraw(path, limits)
@@ -183,35 +198,29 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         data, info = _read_image(path, limits)
     else:
         data, info = _read_headerless(path, shape, byteorder, limits), {}
+    _check_settings(path, kind, info, given)
 
     # arguments override the file
     if phase is None:
         phase = info.get("phase")
-    if phase is None:
-        raise ParameterError("phase", f"{path.name} does not record its CFA phase; pass ",
-                             Setting("phase"), f" one of {', '.join(BAYER_PHASES)}")
     phase = str(phase).upper()
     if phase not in BAYER_PHASES:
         raise ValueError(f"phase: expected one of {', '.join(BAYER_PHASES)}, got {phase!r}")
     if black_level is None:
         black_level = info.get("black_level")
-    if black_level is None:
-        raise ParameterError("black_level", f"{path.name} does not record its black level; "
-                             "pass ", Setting("black_level"), " (one value or four, per quad "
-                             "site)")
     if white_level is None:
         white_level = info.get("white_level")
-    if white_level is None and bit_depth_in is not None:
-        white_level = (1 << bit_depth_in) - 1
     if white_level is None:
-        raise ParameterError("white_level", f"{path.name} does not record its white level; "
-                             "pass ", Setting("white_level"), " (or ", Setting("bit_depth_in"),
-                             ", giving 2**bit_depth_in - 1)")
+        white_level = (1 << bit_depth_in) - 1
     black = _quad_levels(black_level, "black_level")
     white = _quad_levels(white_level, "white_level")
     if np.any(white <= black):
         raise ValueError(f"white_level: {tuple(white.ravel())} must exceed black_level "
                          f"{tuple(black.ravel())} at every quad site")
+    if own_depth:
+        bd = _input_bits(bit_depth_in or info.get("bit_depth_in"), white)
+        if out_dtype == np.uint8 and bd > 8:
+            raise ValueError(f"dtype: uint8 cannot hold the {bd}-bit data of {path.name}")
     if clip_level is None:
         clip = white
     else:
@@ -271,6 +280,9 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         "clipped_count": n_clipped,
         "clipped_fraction": n_clipped / float(shape_in[0] * shape_in[1]),
     }
+    for key in ("white_gains", "colour_matrix"):       # camera raw files, when LibRaw has them
+        if key in info:
+            meta[key] = info[key]
     if kind == "headerless":
         meta["byteorder"] = byteorder
     return RawFrame(_Adopt(out), bayer(phase), bd, meta=meta)
@@ -357,10 +369,29 @@ def _read_libraw(path, limits):
         wl = raw.white_level
         check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
         data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
+        colour = _camera_colour(raw, desc)
     make, model = _tiff_make_model(blob)
     info = {"phase": letters, "black_level": black, "white_level": float(wl),
-            "make": make, "model": model}
+            "make": make, "model": model, **colour}
     return data, info
+
+
+def _camera_colour(raw, desc):
+    """The as-shot white balance (R, G, B gains, G = 1) and the matrix from white-balanced
+    camera RGB to linear sRGB that LibRaw gives for the file; each left out when LibRaw has
+    none (zeros) for it."""
+    out = {}
+    idx = [desc.index(c) for c in "RGB"]
+    try:
+        wb = np.asarray(raw.camera_whitebalance, np.float64)[idx]
+        if np.all(np.isfinite(wb)) and np.all(wb > 0):
+            out["white_gains"] = tuple(float(v) for v in wb / wb[1])
+        m = np.asarray(raw.color_matrix, np.float64)[:, idx]
+        if m.shape == (3, 3) and np.all(np.isfinite(m)) and np.any(m != 0):
+            out["colour_matrix"] = tuple(float(v) for v in m.ravel())
+    except (AttributeError, IndexError, ValueError):     # an older rawpy, a partial file
+        pass
+    return out
 
 
 def _tiff_make_model(blob):
@@ -389,10 +420,55 @@ def _read_image(path, limits):
     return np.ascontiguousarray(data, dtype=np.uint16), {}
 
 
-def _read_headerless(path, shape, byteorder, limits):
-    if shape is None:
+#: what a reader asks for when the file does not record it: (what the file lacks, how to give it)
+_SETTINGS = {
+    "shape": ("its size", (Setting("shape", "shape=(rows, cols)"),)),
+    "phase": ("its CFA phase", (Setting("phase"), f" (one of {', '.join(BAYER_PHASES)})")),
+    "black_level": ("its black level", (Setting("black_level"),
+                                        " (one value or four, per quad site)")),
+    "white_level": ("its white level", (Setting("white_level"), " (or ", Setting("bit_depth_in"),
+                                        "; the white level is then 2^bits - 1)")),
+}
+
+
+def _input_bits(bit_depth_in, white):
+    """The bits of the data as stored: ``bit_depth_in``, else those of the largest white
+    level (15000 -> 14), within 1..16."""
+    if bit_depth_in is not None:
+        return int(bit_depth_in)
+    return int(min(16, max(1, np.ceil(np.log2(float(np.max(white)) + 1)))))
+
+
+def _check_settings(path, kind, info, given):
+    """One error naming every setting that neither the file (``info``) nor the arguments
+    (``given``) provide, so that a caller learns them all at once."""
+    missing = [k for k in ("shape", "phase", "black_level") if given[k] is None
+               and info.get(k) is None and (k != "shape" or kind == "headerless")]
+    if given["white_level"] is None and info.get("white_level") is None \
+            and given["bit_depth_in"] is None:
+        missing.append("white_level")
+    if not missing:
+        return
+    if missing == ["shape"]:
         raise ParameterError("shape", f"the headerless file {path.name} needs ",
                              Setting("shape", "shape=(rows, cols)"))
+    nouns = [_SETTINGS[k][0] for k in missing]
+    parts = [f"{path.name} does not record {_series(nouns, ' or ')}; pass "]
+    for j, k in enumerate(missing):
+        if j:
+            parts.append(" and " if j == len(missing) - 1 else ", ")
+        parts.extend(_SETTINGS[k][1])
+    raise ParameterError(missing[0], *parts)
+
+
+def _series(words, last):
+    """'a', 'a or b', 'a, b or c'."""
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + last + words[-1]
+
+
+def _read_headerless(path, shape, byteorder, limits):
+    if isinstance(shape, str):                           # "1080x1920", as on the command line
+        shape = parse_shape(shape)
     try:
         rows_, cols = (int(s) for s in shape)
     except (TypeError, ValueError):

@@ -13,7 +13,7 @@ frame, :meth:`ColourISP.run_pair` for the two paths of Fig. 19,
 :mod:`rgbz_fast.tof`.
 """
 
-from ._chain import STAGES, ColourISP
+from ._chain import STAGES, ColourISP, recorded_rendering
 from ._defects import DefectCorrection, correct_defects, detect_defects
 from ._demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES, demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, correct_colour,
@@ -23,5 +23,5 @@ __all__ = [
     "ColourISP", "STAGES", "DefectCorrection", "Reconstruction", "WhiteBalance", "Demosaic",
     "ColourCorrection", "detect_defects", "correct_defects", "fill_missing",
     "grey_world_gains", "white_balance", "demosaic", "DEMOSAIC_METHODS", "DEMOSAIC_MODES",
-    "correct_colour", "srgb_oetf", "srgb_encode",
+    "correct_colour", "srgb_oetf", "srgb_encode", "recorded_rendering",
 ]

@@ -40,10 +40,10 @@ from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_imag
 from ._defects import DefectCorrection, correct_defects
 from ._demosaic import demosaic
 from ._stages import (ColourCorrection, Demosaic, Reconstruction, WhiteBalance, _black_white,
-                      _encode, _quantise, correct_colour, fill_missing, srgb_oetf,
-                      stage_params, white_balance)
+                      _check_gains, _encode, _quantise, correct_colour, fill_missing,
+                      srgb_oetf, stage_params, white_balance)
 
-__all__ = ["ColourISP", "STAGES"]
+__all__ = ["ColourISP", "STAGES", "recorded_rendering"]
 
 #: the stages of :meth:`ColourISP.run`, in order (keys of ``return_stages``)
 STAGES = ("defect_correction", "reconstruction", "white_balance", "demosaic",
@@ -55,6 +55,37 @@ _PRECISIONS = {"float32": np.float32, "float64": np.float64}
 _STAGE_FIELDS = {"defects": DefectCorrection, "reconstruction": Reconstruction,
                  "white_balance": WhiteBalance, "demosaicing": Demosaic,
                  "colour_correction": ColourCorrection}
+
+
+def recorded_rendering(frame):
+    """What a frame records about how to render it, from its ``meta``.
+
+    A dict with ``"black_level"`` (DN of the frame's data: a simulated
+    sensor's black level; None for frames whose black level is already
+    subtracted, such as those of :func:`rgbz_fast.io.read_raw`),
+    ``"white_gains"`` (R, G, B: a camera raw file's as-shot white balance, a
+    simulated spectral sensor's white) and ``"colour_matrix"`` (3x3 tuple,
+    white-balanced camera RGB -> linear sRGB), each None when not recorded.
+    :class:`ColourISP` uses them where its own parameters leave the choice
+    open; a caller of :meth:`ColourISP.render` passes them.
+    """
+    if not isinstance(frame, RawFrame):
+        raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
+    meta = frame.meta
+    black = getattr(meta.get("colour_sensor"), "black_level", None)
+    if black is None:
+        black = meta.get("colour_black_level")
+    gains = meta.get("white_gains")
+    matrix = meta.get("colour_matrix")
+    try:
+        gains = None if gains is None else tuple(_check_gains(gains, "white_gains"))
+        if matrix is not None:
+            matrix = tuple(map(tuple, np.reshape(np.asarray(matrix, np.float64), (3, 3))))
+            matrix = ColourCorrection(matrix=matrix).matrix
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"frame: its meta records an unusable rendering ({exc})") from None
+    return {"black_level": None if black is None else float(black), "white_gains": gains,
+            "colour_matrix": matrix}
 
 
 # =========================================================================== the chain
@@ -99,7 +130,7 @@ class ColourISP:
     True
     >>> chain = ColourISP(precision="float64").replace(white_balance={"clip": False})
     >>> chain.precision, chain.white_balance
-    ('float64', WhiteBalance(method='grey_world', gains=None, clip=False))
+    ('float64', WhiteBalance(method='as_shot', gains=None, clip=False))
     """
 
     defects: DefectCorrection = DefectCorrection()
@@ -151,23 +182,31 @@ class ColourISP:
         if reference and not isinstance(frame, RawFrame):
             raise ValueError("reference: needs a RawFrame with a reference CFA")
         data, pat, bd = frame_inputs(frame, pattern, bit_depth)
-        meta_black = None
-        if isinstance(frame, RawFrame):
-            if reference:
-                if frame.reference is None:
-                    raise ValueError("reference: the frame holds no reference Bayer CFA "
-                                     "(frame.reference is None)")
-                data, pat = frame.reference, frame.pattern.bayer_pattern()
-            meta_black = getattr(frame.meta.get("colour_sensor"), "black_level", None)
+        recorded = recorded_rendering(frame) if isinstance(frame, RawFrame) else {}
+        if isinstance(frame, RawFrame) and reference:
+            if frame.reference is None:
+                raise ValueError("reference: the frame holds no reference Bayer CFA "
+                                 "(frame.reference is None)")
+            data, pat = frame.reference, frame.pattern.bayer_pattern()
         if pat.bayer_phase is None:
             raise ValueError(f"pattern: {pat.name!r} fits no Bayer phase; the chain needs "
                              "a Bayer-derived pattern")
         if black_level is None:
             black_level = self.black_level
         if black_level is None:
-            black_level = meta_black if meta_black is not None else 0.0
+            black_level = recorded.get("black_level") or 0.0
         black, white = _black_white(black_level, (1 << bd) - 1)
-        return data, pat, bd, black, white
+        return data, pat, bd, black, white, recorded
+
+    def _recorded(self, recorded, gains, matrix):
+        """The gains and the matrix of a run: the caller's, else the chain's, else what the
+        frame records (``as_shot`` gains; a matrix when the chain has none)."""
+        if gains is None and self.white_balance.gains is None \
+                and self.white_balance.method == "as_shot":
+            gains = recorded.get("white_gains")
+        if matrix is None and self.colour_correction.matrix is None:
+            matrix = recorded.get("colour_matrix")
+        return gains, matrix
 
     # ------------------------------------------------------------------ run
     def run(self, frame, *, pattern=None, bit_depth=None, black_level=None, gains=None,
@@ -221,8 +260,9 @@ class ColourISP:
             ``"output"`` (the returned image), ``"seconds"`` (time per
             stage), ``"pattern"``, ``"black_level"``, ``"white_level"``.
         """
-        data, pat, bd, black, white = self._inputs(frame, pattern, bit_depth, black_level,
-                                                   reference)
+        data, pat, bd, black, white, recorded = self._inputs(frame, pattern, bit_depth,
+                                                             black_level, reference)
+        gains, matrix = self._recorded(recorded, gains, None)
         seconds = {}
         t0 = time.perf_counter()
         fixed, mask = correct_defects(data, pat, self.defects, white_level=white,
@@ -234,7 +274,7 @@ class ColourISP:
                             tof=tof, nir=nir) if pat.has_z else fixed
         seconds["reconstruction"] = time.perf_counter() - t1
         out, stages = self._render(full, pat.bayer_pattern(), black, white, gains, workers,
-                                   return_stages)
+                                   return_stages, matrix)
         if not return_stages:
             return out
         stages["seconds"] = {**seconds, **stages["seconds"]}
@@ -243,7 +283,7 @@ class ColourISP:
         return out, stages
 
     def render(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None, gains=None,
-               workers=None, return_stages=False):
+               colour_matrix=None, workers=None, return_stages=False):
         """The stages after the reconstruction: complete Bayer CFA -> 8- or 16-bit sRGB.
 
         White balance, demosaic, colour correction, sRGB gamma and quantisation,
@@ -263,7 +303,11 @@ class ColourISP:
             DN; default :attr:`black_level`, else 0.
         gains : array_like (3,), optional
             White-balance gains to use instead of estimating them (the
-            reference path's, for the comparison of Fig. 19).
+            reference path's, for the comparison of Fig. 19, or the ones a
+            frame records: :func:`recorded_rendering`).
+        colour_matrix : 3x3 array_like, optional
+            The colour matrix when the chain has none (a frame's recorded
+            one); the chain's own :class:`ColourCorrection` matrix wins.
         workers : int, optional
             Threads of the C kernels.
         return_stages : bool
@@ -290,10 +334,14 @@ class ColourISP:
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
         black, white = _black_white(black_level, (1 << bd) - 1)
-        out, stages = self._render(data, pattern, black, white, gains, workers, return_stages)
+        if colour_matrix is not None:
+            colour_matrix = ColourCorrection(matrix=colour_matrix).matrix    # checked
+        out, stages = self._render(data, pattern, black, white, gains, workers, return_stages,
+                                   colour_matrix)
         return (out, stages) if return_stages else out
 
-    def _render(self, full, bayer, black, white, gains, workers, keep_stages=True):
+    def _render(self, full, bayer, black, white, gains, workers, keep_stages=True,
+                matrix=None):
         """White balance .. output of a validated complete CFA; (image, stages).
 
         Without ``keep_stages`` the stages are None, and the colour correction's clip,
@@ -315,12 +363,14 @@ class ColourISP:
         rgb = demosaic(balanced, bayer.bayer_phase, self.demosaicing.method,
                        mode=self.demosaicing.mode, dtype=dt, workers=workers)
         tick("demosaic")
+        cc = self.colour_correction
+        if cc.matrix is None and matrix is not None:
+            cc = ColourCorrection(matrix=matrix)
         if not keep_stages:
             # the identity matrix: correct_colour would only clip, which _encode does
-            linear = rgb if self.colour_correction.matrix is None else \
-                correct_colour(rgb, self.colour_correction)
+            linear = rgb if cc.matrix is None else correct_colour(rgb, cc)
             return _encode(linear, self.output_bits), None
-        corrected = correct_colour(rgb, self.colour_correction)
+        corrected = correct_colour(rgb, cc)
         tick("colour_correction")
         encoded = srgb_oetf(corrected)
         tick("gamma")

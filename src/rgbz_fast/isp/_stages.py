@@ -70,21 +70,27 @@ class WhiteBalance:
 
     Attributes
     ----------
-    method : {"grey_world", "none"}
-        How the gains are found when none are given: grey world
-        (:func:`grey_world_gains`) or unit gains.
+    method : {"as_shot", "grey_world", "none"}
+        How the gains are found when none are given: ``"as_shot"`` (the
+        default) takes the gains the frame records
+        (``frame.meta["white_gains"]``: a camera raw file's as-shot white
+        balance, a simulated spectral sensor's white under its illuminant)
+        and falls back to grey world when it records none (every frame of an
+        RGB scene, every plain array); ``"grey_world"``
+        (:func:`grey_world_gains`); ``"none"``: unit gains.
     gains : (float, float, float) or None
         Fixed R, G, B gains; they override ``method``.
     clip : bool
         Clip to [0, 1] after the gains (True).
     """
 
-    method: str = "grey_world"
+    method: str = "as_shot"
     gains: tuple | None = None
     clip: bool = True
 
     def __post_init__(self):
-        object.__setattr__(self, "method", check_choice(self.method, ("grey_world", "none"),
+        object.__setattr__(self, "method", check_choice(self.method,
+                                                        ("grey_world", "none", "as_shot"),
                                                         "WhiteBalance.method"))
         if self.gains is not None:
             object.__setattr__(self, "gains", tuple(_check_gains(self.gains,
@@ -121,9 +127,11 @@ class ColourCorrection:
     ----------
     matrix : 3x3 nested tuple or None
         Camera RGB (white balanced) -> linear sRGB, rows giving R, G, B.
-        None: the identity, right for the RGB scenes of
-        :mod:`rgbz_fast.simulation` (their camera channels are the scene's
-        linear sRGB up to the gains the white balance removes).
+        None: the matrix the frame records (``frame.meta["colour_matrix"]``:
+        a camera raw file's, a simulated spectral sensor's), else the
+        identity, right for the RGB scenes of :mod:`rgbz_fast.simulation`
+        (their camera channels are the scene's linear sRGB up to the gains
+        the white balance removes).
     """
 
     matrix: tuple | None = None
@@ -279,7 +287,7 @@ def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_leve
         g = _check_gains(gains, "gains")
     elif params.gains is not None:
         g = np.asarray(params.gains, np.float64)
-    elif params.method == "grey_world":
+    elif params.method in ("grey_world", "as_shot"):      # an array records no gains
         g = grey_world_gains(data, pattern, black_level=black, white_level=white)
     else:
         g = np.ones(3)

@@ -398,9 +398,12 @@ def resolve_filters(filters, pattern, bit_depth, name="filters"):
     if filters is None:
         f = default_filters(pattern, bit_depth)
         if f is None:
-            raise ValueError(f"{name}: no filters ship for pattern {pattern.name!r} at "
-                             f"{bit_depth} bits; fit some with rgbz_fast.reconstruction.train "
-                             "(or `rgbz-fast train`) and pass filters=FILE")
+            from ..io import ParameterError, Setting      # the settings, in the caller's words
+
+            raise ParameterError(name, f"no filters ship for pattern {pattern.name!r} at "
+                                 f"{bit_depth} bits; fit some with ",
+                                 Setting("train", "rgbz_fast.reconstruction.train"),
+                                 " and pass ", Setting("filters", "filters=FILE"))
         return f
     cands = filters if isinstance(filters, tuple) else (filters,)
     for f in cands:

@@ -12,7 +12,9 @@
 * the models: :func:`simulate_colour` (the plain Bayer CFA of a scene),
   :func:`simulate_tof` (four taps per Z pixel and frequency) and :func:`simulate`
   (the RGB-Z build, §5.1.3: a :class:`~rgbz_fast.RawFrame` with the reference
-  CFA of the same exposure and the ToF taps).
+  CFA of the same exposure and the ToF taps);
+* the colour of a simulated sensor: :func:`white_gains` and :func:`colour_matrix` (camera
+  RGB to sRGB), which a frame of a spectral scene records for the colour ISP.
 
 The conventions (tap phases, noise chain, radiometry) are in the docstring of
 :mod:`rgbz_fast.simulation._simulate` and in docs/guide/sensor.md.
@@ -26,6 +28,7 @@ from ._optics import Optics, apply_optics
 from ._scene import (CAVE_WAVELENGTHS, Scene, disparity_to_depth, estimate_ir_reflectance,
                      srgb_to_linear)
 from ._simulate import UnambiguousRangeWarning, simulate, simulate_colour, simulate_tof
+from ._colour import colour_matrix, white_gains
 
 __all__ = [
     "Scene", "load_scene", "load_image", "load_rgbd", "load_spectral", "srgb_to_linear",
@@ -33,4 +36,5 @@ __all__ = [
     "MIDDLEBURY_FOCAL_PX", "MIDDLEBURY_BASELINE_M",
     "ColourSensor", "ToFSensor", "ToFTaps", "SPEED_OF_LIGHT", "UnambiguousRangeWarning",
     "simulate", "simulate_colour", "simulate_tof", "Optics", "apply_optics",
+    "white_gains", "colour_matrix",
 ]

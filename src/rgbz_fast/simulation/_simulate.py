@@ -256,7 +256,13 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         On the plain Bayer pattern, ``bit_depth = sensor.bit_depth``, uint16
         (float64 if ``sensor.quantise`` is False); ``meta`` holds
         ``exposure`` (s), ``system_gain`` (DN/e-), ``saturated`` (fraction of
-        sites at full well or full scale) and ``spectral``.
+        sites at full well or full scale), ``spectral``,
+        ``colour_black_level`` (the sensor's black level, DN) and, for a
+        spectral scene, ``white_gains`` (R, G, B) and ``colour_matrix`` (nine
+        numbers, row by row): the sensor's white balance and its matrix to
+        linear sRGB (:func:`~rgbz_fast.simulation.white_gains`,
+        :func:`~rgbz_fast.simulation.colour_matrix`), which the colour ISP
+        applies.
     """
     scene = _as_scene(scene)
     pattern = get_pattern(pattern)
@@ -275,7 +281,16 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
                            fpn_stream=STREAM_COLOUR_FPN)
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
             "saturated": float(saturated.mean()), "spectral": scene.is_spectral,
-            "noise": bool(noise), "seed": seed, "scene": scene.name}
+            "noise": bool(noise), "seed": seed, "scene": scene.name,
+            "colour_black_level": float(sensor.black_level)}
+    if scene.is_spectral:
+        # the camera RGB of spectral sensitivities is not sRGB: the gains and the matrix
+        # that render it, which the colour ISP takes from the frame
+        from ._colour import colour_matrix, white_gains
+
+        meta["white_gains"] = tuple(float(g) for g in white_gains(sensor, scene.wavelengths))
+        meta["colour_matrix"] = tuple(float(v) for v in
+                                      colour_matrix(sensor, scene.wavelengths).ravel())
     if optics is not None:
         meta["optics"] = optics
     return RawFrame(_Adopt(dn), pattern.bayer_pattern(), sensor.bit_depth, meta=meta)

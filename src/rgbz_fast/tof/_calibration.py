@@ -416,12 +416,13 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
         ph = meas - deviation(offsets)[None]
         resid = np.angle(np.exp(1j * (err - offsets[None])))
         for fi in range(F):
-            x = ph[:, fi].reshape(-1)
-            y = resid[:, fi].reshape(-1)
-            w = weight[:, fi].reshape(-1)
-            basis = np.concatenate([np.cos(np.outer(x, kk)), np.sin(np.outer(x, kk))], axis=1)
-            lhs = basis.T @ (basis * w[:, None])
-            rhs = basis.T @ (w * y)
+            lhs, rhs = np.zeros((2 * orders, 2 * orders)), np.zeros(2 * orders)
+            for k in range(len(frames)):        # a frame at a time: the basis of one frame
+                x, y, w = ph[k, fi], resid[k, fi], weight[k, fi]
+                zk = _harmonics(x, orders)
+                basis = np.concatenate([zk.real, zk.imag], axis=1)
+                lhs += basis.T @ (basis * w[:, None])
+                rhs += basis.T @ (w * y)
             sol = np.linalg.lstsq(lhs, rhs, rcond=None)[0]
             coef[fi, :, 0] = sol[:orders]
             coef[fi, :, 1] = sol[orders:]
@@ -436,7 +437,19 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
 
 def _series(coef, phase, kk):
     """``sum_k a_k cos(k phi) + b_k sin(k phi)`` for phases (frames, F, n) and coef (F, K, 2)."""
-    kp = kk[None, None, :, None] * phase[:, :, None, :]
-    a = coef[None, :, :, 0, None]
-    b = coef[None, :, :, 1, None]
-    return (a * np.cos(kp) + b * np.sin(kp)).sum(axis=2)
+    z = np.exp(1j * phase)
+    zk = np.ones_like(z)
+    out = np.zeros(phase.shape)
+    for j in range(len(kk)):         # one harmonic at a time: the memory of one phase array
+        zk *= z                                                   # exp(i k phi), k = j + 1
+        out += coef[None, :, j, 0, None] * zk.real + coef[None, :, j, 1, None] * zk.imag
+    return out
+
+
+def _harmonics(x, orders):
+    """(n, K) complex: ``exp(i k x)`` for ``k = 1..K``, by repeated products (one exp)."""
+    out = np.empty((x.size, orders), complex)
+    out[:, 0] = np.exp(1j * x)
+    for j in range(1, orders):
+        out[:, j] = out[:, j - 1] * out[:, 0]
+    return out

@@ -134,11 +134,12 @@ class SiteGrid:
         return g
 
     def from_grid(self, grid):
-        """(..., R, C) -> (..., n)."""
+        """(..., R, C) -> (..., n), C-contiguous (the C kernels take no other layout)."""
         g = np.asarray(grid)
         if self.full:
             return g.reshape(g.shape[:-2] + (self.n,))
-        return g[..., self.ri, self.ci]
+        # fancy indexing of the last two axes lays the result out (n, ...) in memory
+        return np.ascontiguousarray(g[..., self.ri, self.ci])
 
     def reach(self, radius_px):
         """(rows, cols): the largest grid offsets that link two lines within ``radius_px``."""

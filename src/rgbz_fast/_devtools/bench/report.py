@@ -32,7 +32,7 @@ def format_table(res):
              f"{res.get('warmup_calls', WARMUP_CALLS)} warm-up call per case, Mpix/s = frame "
              "pixels / s",
              f"machine: {m['cpu_model']}, {m['logical_cores']} logical cores "
-             f"({m.get('usable_cores')} usable), OpenMP {m.get('openmp')}, "
+             f"({m.get('usable_cores')} usable), OpenMP {'on' if m.get('openmp') else 'off'}, "
              f"{m.get('compiler', '')}; all threads = {res['workers_all']}; load average "
              f"{_load(m['loadavg_before'])} -> {_load(m['loadavg_after'])}"]
     head = ["kernel", "pattern", "precision", "1 thread", "all threads", "threads", "xNumPy",
@@ -65,10 +65,10 @@ def format_table(res):
     lines += ["  ".join(c.ljust(n) for c, n in zip(x, w)) for x in rows]
     lines.append("")
     lines.append(f"threads: those of the 'all threads' column (at most {res['workers_all']}; "
-                 "a reconstruction or demosaic call takes one per 2**18 pixels at most).")
+                 "a reconstruction or demosaic call takes one per 262,144 pixels at most).")
     if quick:
-        lines.append(f"{QUICK_NOTE}: no xNumPy, xCV or target columns; run without --quick "
-                     "(the 4000x3000 frame) for them.")
+        lines.append(f"{QUICK_NOTE}: no speed ratios to NumPy or OpenCV and no target "
+                     "verdicts; run without --quick (the 4000x3000 frame) for them.")
     else:
         lines.append(
             "xNumPy: our 1-thread speed / the NumPy reference's (timed on a "
@@ -103,14 +103,14 @@ def format_table(res):
         if "error" in mem:
             lines.append(f"memory: n/a ({mem['error']})")
         else:
-            for mode, label in (("array", "plain array (range check)"),
-                                ("rawframe", "RawFrame (validated)")):
+            for mode, label in (("array", "a plain array (its values checked)"),
+                                ("rawframe", "a frame (checked when it was made)")):
                 m = mem[mode]
                 lines.append(
                     f"memory: reconstruct {mem['method']} {mem['pattern']} {mem['precision']}, "
                     f"{label}: peak RSS +{m['rss_growth'] / 2**20:.1f} MiB = "
                     f"{m['rss_growth_over_output']:.2f} x output ({m['out_bytes'] / 2**20:.1f} "
-                    f"MiB), tracemalloc peak {m['traced_peak'] / 2**20:.1f} MiB; input + growth ="
+                    f"MiB), NumPy allocations peak {m['traced_peak'] / 2**20:.1f} MiB; input + growth ="
                     f" {m['peak_over_in_plus_out']:.3f} x (input + output) [budget 1.10: "
                     f"{'ok' if m['within_budget'] else 'OVER'}]")
     return "\n".join(lines)
@@ -127,7 +127,7 @@ def format_tof(tof, verdict=True):
     rows = [("C fused, 1 thread", tof["c_1"]), (f"C fused, {tof['workers']} threads",
                                                  tof["c_all"]),
             (f"C demodulate + unwrap, {tof['workers']} threads", tof["c_stages_all"]),
-            ("NumPy (np.arctan2 + vectorised brute force)", tof["numpy"])]
+            ("NumPy, the same algorithm vectorised", tof["numpy"])]
     w = max(len(r[0]) for r in rows)
     for label, t in rows:
         lines.append(f"  {label.ljust(w)}  {_f(t['msites_s'])} [{_f(t['msites_s_lo'])}-"
