@@ -256,3 +256,17 @@ def test_the_fit_is_the_solution_of_the_summed_equations():
     assert not alone.guide_weights.any() and alone.meta["guide"] == 0
     assert alone.weights.shape == (4, 2 * base.n_buckets, base.weights.shape[2])
     assert not np.array_equal(alone.weights[:, :base.n_buckets], base.weights)
+
+
+def test_shipped_filters_build_on_the_shipped_learned_ones():
+    """The shipped z_guided filters: Mask1 and Mask2 at 11 bits, fitted by rgbz-fast train
+    --z-guided on the RGB-NIR pairs, on the learned filters the package ships (a refit of
+    those fails here until z_guided is refitted on them: the command is in meta)."""
+    from rgbz_fast.reconstruction import default_filters
+    for p in ("mask1", "mask2"):
+        f = default_z_filters(p)
+        assert f is not None and f.pattern == get_pattern(p) and f.bit_depth == 11
+        assert "train --z-guided" in f.meta["command"] and f.meta["training_set"] == "rgbnir"
+        assert f.meta["n_images"] == 40                     # 20 pairs, noise-free and noisy
+        assert f.meta["base_digest"] == default_filters(p).digest, f.meta["command"]
+    assert default_z_filters("mask1_rggb") is None
