@@ -468,7 +468,8 @@ def opcount_report(rows=None, fmt="markdown", **kwargs):
     body = []
     for r in rows:
         line = [r["method"], r["pattern"], r["target"],
-                {"mask1 fast path": "fast", "learned kernel": "learned"}.get(r.get("path"),
+                {"mask1 fast path": "fast", "learned kernel": "learned",
+                 "z_guided kernel": "z_guided"}.get(r.get("path"),
                                                                            "plans")]
         line += [_cell(r, k) for k in TABLE1_CATEGORIES]
         line += [_fmt(r["mean"]["abs"]), _fmt(r["mean"]["cmp"])]
@@ -500,7 +501,9 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "intensity factor of eq. 4. path: the code reconstruct() runs, the Mask1 fast path "
            "(csrc/recon_mask1.h) or the plan interpreter (_plans.py), one C core "
            "(csrc/recon_core.template.h); or the learned kernel (csrc/learned.c: the hash, "
-           "then one dot product over the taps; the same at every site).")
+           "then one dot product over the taps; the same at every site); or the z_guided "
+           "kernel (csrc/z_guided.c: the learned kernel's work plus the guide's dot product; "
+           "the cell terms, one per tile, are not counted).")
 
 
 def opcount_legend(shape, seed, precision, image_name=None, tof=None):
