@@ -16,7 +16,7 @@
  * mirror (as the reference); RGBZ_DM_PERIOD, a shift by whole periods (keeps
  * the colour). No clipping (the reference does not clip); the caller clips if
  * it wants. Arithmetic in double; demosaic.template.h is the row loop, once per
- * input and output type.
+ * input element type, with the store of each output type.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -90,44 +90,19 @@ static inline void dm_store(void *dst, int out_f64, ptrdiff_t i, const double *r
     }
 }
 
-/* ---- the row loop per input type (PyWavelets' template scheme) ---- */
-#if defined(IN_T) || defined(IS)
-#error "demosaic.c: the template parameters must not be defined here"
-#endif
-#define IN_T uint8_t
-#define IS u8
-#include "demosaic.template.h"
-#undef IN_T
-#undef IS
-#define IN_T uint16_t
-#define IS u16
-#include "demosaic.template.h"
-#undef IN_T
-#undef IS
-#define IN_T float
-#define IS f32
-#include "demosaic.template.h"
-#undef IN_T
-#undef IS
-#define IN_T double
-#define IS f64
-#include "demosaic.template.h"
-#undef IN_T
-#undef IS
+/* ---- the row loop per input element type ---- */
+#define RGBZ_TYPE_TEMPLATE "demosaic.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
 
 int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                          ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
                          int mode, int workers)
 {
-    typedef void (*malvar_fn)(const void *, void *, int, ptrdiff_t, ptrdiff_t, const int32_t *,
-                              const ptrdiff_t *, int, int);
-    static const malvar_fn by_type[4] = {rgbz_malvar_u8, rgbz_malvar_u16, rgbz_malvar_f32,
-                                         rgbz_malvar_f64};   /* indexed by rgbz_type */
     if (!src || !dst || !phase || rows < 2 || cols < 2 ||
         (mode != RGBZ_DM_REFLECT && mode != RGBZ_DM_PERIOD))
         return RGBZ_EINVAL;
     if (out_type != RGBZ_T_F32 && out_type != RGBZ_T_F64) return RGBZ_EINVAL;
-    if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
     int greens = 0;
     for (int i = 0; i < 4; i++) {
         if (phase[i] < 0 || phase[i] > 2) return RGBZ_EINVAL;
@@ -140,7 +115,12 @@ int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
     ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 4) * sizeof(ptrdiff_t));
     if (!colmap) return RGBZ_ENOMEM;
     for (ptrdiff_t i = 0; i < cols + 4; i++) colmap[i] = dm_extend(i - 2, cols, mode);
-    by_type[in_type](src, dst, out_type == RGBZ_T_F64, rows, cols, phase, colmap, mode, workers);
+    int st = RGBZ_OK;
+#define DM_MALVAR_(s, T)                                                                     \
+    RGBZ_CAT(rgbz_malvar, s)((const T *)src, dst, out_type == RGBZ_T_F64, rows, cols, phase, \
+                             colmap, mode, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, DM_MALVAR_, st = RGBZ_EINVAL)
+#undef DM_MALVAR_
     free(colmap);
-    return RGBZ_OK;
+    return st;
 }

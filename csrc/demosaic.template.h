@@ -8,7 +8,8 @@
  * cols x 3 (R, G, B interleaved), row-major. Rows beyond the frame come from
  * `extend` (reflect or period), columns through the column map (colmap[x + 2]).
  *
- * Template parameters, #defined by the includer (demosaic.c) and #undefined after:
+ * Template parameters (rgbz_templating.h), #defined by rgbz_each_type.h, which
+ * demosaic.c includes once:
  *   IN_T   the element type of the CFA: uint8_t, uint16_t, float, double
  *   IS     its suffix: u8, u16, f32, f64
  */
@@ -48,7 +49,7 @@ RGBZ_INLINE void RGBZ_CAT(dm_row, IS)(const IN_T *src, void *dst, int out_f64, p
     }
 }
 
-static void RGBZ_CAT(rgbz_malvar, IS)(const void *src, void *dst, int out_f64, ptrdiff_t rows,
+static void RGBZ_CAT(rgbz_malvar, IS)(const IN_T *src, void *dst, int out_f64, ptrdiff_t rows,
                                       ptrdiff_t cols, const int32_t *phase,
                                       const ptrdiff_t *colmap, int mode, int workers)
 {
@@ -57,8 +58,8 @@ static void RGBZ_CAT(rgbz_malvar, IS)(const void *src, void *dst, int out_f64, p
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t y = 0; y < rows; y++) {
         if (out_f64)
-            RGBZ_CAT(dm_row, IS)((const IN_T *)src, dst, 1, y, rows, cols, phase, colmap, mode);
+            RGBZ_CAT(dm_row, IS)(src, dst, 1, y, rows, cols, phase, colmap, mode);
         else
-            RGBZ_CAT(dm_row, IS)((const IN_T *)src, dst, 0, y, rows, cols, phase, colmap, mode);
+            RGBZ_CAT(dm_row, IS)(src, dst, 0, y, rows, cols, phase, colmap, mode);
     }
 }

@@ -1,7 +1,8 @@
 /*
- * learned.c -- the learned reconstruction (learned.h): 4 element types x 2 precisions
- * of learned.template.h, and the entry point that checks the arguments the Python
- * layer validated (a failure here is a bug there) and builds the column map.
+ * learned.c -- the learned reconstruction (learned.h): learned.template.h for every element
+ * type and precision, the entry points rgbz_learned_<precision> (learned_entry.template.h,
+ * once per precision), and what they share: the checks of the arguments the Python layer
+ * validated (a failure here is a bug there), the choice of the fast path and the column map.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -21,35 +22,23 @@
 #define LRN_BLK 32
 #endif
 
-/* the loops over the sites of a block carry no dependence (the tap, weight and result
-   rows never overlap): say so, so that GCC vectorises them without a run-time check */
-/* and keep the loops around them (pairs, taps) rolled: GCC's unroll-and-jam of those
+/* learned.template.h's names for the shared helpers: the loops over the sites of a block
+   carry no dependence (RGBZ_IVDEP, rgbz_ops.h); the hot loops are built for AVX-512, AVX2 and
+   the baseline (RGBZ_CLONES_512: every vectorised loop of the template is element by
+   element, no reduction across the vector, the dense dot products use 32-byte vectors
+   whatever the set, and nothing is contracted (C99), so every clone gives bit-identical
+   results); RGBZ_INLINE (rgbz_templating.h) compiles a helper for its caller's instruction
+   set and with its constant arguments */
+#define LRN_IVDEP RGBZ_IVDEP
+#define LRN_CLONES RGBZ_CLONES_512
+#define LRN_INLINE RGBZ_INLINE
+
+/* keep the loops around the site loops (pairs, taps) rolled: GCC's unroll-and-jam of those
    would turn the inner loops scalar */
 #if defined(__GNUC__) && !defined(__clang__)
-#define LRN_IVDEP _Pragma("GCC ivdep")
 #define LRN_NOJAM _Pragma("GCC unroll 1")
 #else
-#define LRN_IVDEP
 #define LRN_NOJAM
-#endif
-
-/* the instruction sets of the hot loops: rgbz_ops.h's RGBZ_CLONES (AVX2, the baseline) and
-   AVX-512. Every vectorised loop of this file is element by element (no reduction across the
-   vector; the dense dot products use 32-byte vectors whatever the set) and nothing is
-   contracted (C99), so that every clone gives bit-identical results. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
-#define LRN_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define LRN_CLONES RGBZ_CLONES
-#endif
-
-/* a helper inlined into its caller whatever its size, so that it is compiled for the caller's
-   instruction set (RGBZ_CLONES) and with the caller's constant arguments */
-#if defined(__GNUC__) || defined(__clang__)
-#define LRN_INLINE static inline __attribute__((always_inline))
-#else
-#define LRN_INLINE static inline
 #endif
 
 /* GCC >= 9 and Clang: vector extensions for the dense dot product of the fast path */
@@ -65,24 +54,6 @@ static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
 {
     return i < 0 ? i + P * ((P - 1 - i) / P) : (i >= n ? i - P * ((i - n + P) / P) : i);
 }
-
-/* the 8 instantiations: each element type (learned.instances.h adds both precisions) */
-#define IN_T uint8_t
-#define IS u8
-#define IN_IS_INT 1
-#include "learned.instances.h"
-#define IN_T uint16_t
-#define IS u16
-#define IN_IS_INT 1
-#include "learned.instances.h"
-#define IN_T float
-#define IS f32
-#define IN_IS_INT 0
-#include "learned.instances.h"
-#define IN_T double
-#define IS f64
-#define IN_IS_INT 0
-#include "learned.instances.h"
 
 /* 1 when the fast path computes what the pairs say: the window fits the dense rows of 8,
    both weight tables are there, and for every phase and direction the pairs are exactly the
@@ -149,45 +120,34 @@ static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t co
     return RGBZ_OK;
 }
 
-#define LRN_CALL(is, rs, T)                                                                  \
-    LRN_CAT_(lrn_loop, is, rs)((const T *)src, (T *)dst, rows, cols, py, px, phase_map, f,   \
-                               colmap, fast_ok, maxval, workers, opcounts)
-#define LRN_CAT_(a, b, c) a##_##b##_##c
-
-int rgbz_learned(int in_type, int precision, const void *src, void *dst,
-                           ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                           const int32_t *phase_map, const rgbz_learned_filters *f,
-                           double maxval, int workers, uint64_t *opcounts)
+/* The checks and the set-up of rgbz_learned_<precision>: RGBZ_OK with *colmap a malloc'ed
+   map of the columns x in [-radius, cols + radius) moved into the frame by whole periods
+   (colmap[x + radius]; the caller frees it), *fast_ok from lrn_fast_ok and *workers 1 in the
+   counting build; otherwise the status to return (nothing then to free). */
+static int lrn_setup(const void *src, const void *dst, ptrdiff_t rows, ptrdiff_t cols, int py,
+                     int px, const int32_t *phase_map, const rgbz_learned_filters *f,
+                     const uint64_t *opcounts, int *workers, ptrdiff_t **colmap, int *fast_ok)
 {
+    if (!src || !dst || !phase_map) return RGBZ_EINVAL;
     int status = lrn_check(f, rows, cols, py, px, phase_map);
     if (status != RGBZ_OK) return status;
-    if (precision != RGBZ_P_FLOAT32 && precision != RGBZ_P_FLOAT64) return RGBZ_EINVAL;
 #ifdef RGBZ_COUNT_OPS
     if (!opcounts) return RGBZ_EINVAL;
-    workers = 1;
+    *workers = 1;
+#else
+    (void)opcounts;
+    (void)workers;
 #endif
     const int R = f->radius;
-    ptrdiff_t *colmap = malloc((size_t)(cols + 2 * R) * sizeof *colmap);
-    if (!colmap) return RGBZ_ENOMEM;
-    for (ptrdiff_t x = -R; x < cols + R; x++) colmap[x + R] = lrn_extend(x, cols, px);
-    const int f64 = precision == RGBZ_P_FLOAT64;
-    const int fast_ok = lrn_fast_ok(f, py, px, phase_map);
-    switch (in_type) {
-    case RGBZ_T_U8:
-        status = f64 ? LRN_CALL(u8, f64, uint8_t) : LRN_CALL(u8, f32, uint8_t);
-        break;
-    case RGBZ_T_U16:
-        status = f64 ? LRN_CALL(u16, f64, uint16_t) : LRN_CALL(u16, f32, uint16_t);
-        break;
-    case RGBZ_T_F32:
-        status = f64 ? LRN_CALL(f32, f64, float) : LRN_CALL(f32, f32, float);
-        break;
-    case RGBZ_T_F64:
-        status = f64 ? LRN_CALL(f64, f64, double) : LRN_CALL(f64, f32, double);
-        break;
-    default:
-        status = RGBZ_EINVAL;
-    }
-    free(colmap);
-    return status;
+    ptrdiff_t *cm = malloc((size_t)(cols + 2 * R) * sizeof *cm);
+    if (!cm) return RGBZ_ENOMEM;
+    for (ptrdiff_t x = -R; x < cols + R; x++) cm[x + R] = lrn_extend(x, cols, px);
+    *colmap = cm;
+    *fast_ok = lrn_fast_ok(f, py, px, phase_map);
+    return RGBZ_OK;
 }
+
+/* ---- the instances: per precision, the frame loops and the entry point ---- */
+#define RGBZ_REAL_TEMPLATE "learned_entry.template.h"
+#include "rgbz_each_real.h"
+#undef RGBZ_REAL_TEMPLATE

@@ -48,19 +48,23 @@ typedef struct {
 } rgbz_learned_filters;
 
 /*
- * Reconstruct every Z site of a frame with learned filters.
- *   src, dst:  rows x cols frames of element type in_type (dst fully written: colour
- *              sites copied, Z sites clipped to [0, maxval] and, for integer types,
- *              rounded half up). src and dst must not overlap.
- *   precision: RGBZ_P_FLOAT32 or RGBZ_P_FLOAT64 (arithmetic and weights).
+ * rgbz_learned_<precision> (one per entry of RGBZ_PRECISIONS, rgbz.h, all of this type):
+ * reconstruct every Z site of a frame with learned filters, in that precision (the
+ * arithmetic, and the weights w_<precision>, wd_<precision>).
+ *   src, dst:  rows x cols frames of element type in_type (an rgbz_type; dst fully
+ *              written: colour sites copied, Z sites clipped to [0, maxval] and, for
+ *              integer types, rounded half up). src and dst must not overlap.
  *   py, px, phase_map: the pattern period and the phase (index into the filters) of
  *              each tile site, -1 for a colour site.
  *   opcounts:  counting build only: n_phases x RGBZ_NOPS counters.
  * Borders: a tap outside the frame moves back inside by whole periods.
  */
-int rgbz_learned(int in_type, int precision, const void *src, void *dst,
-                           ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                           const int32_t *phase_map, const rgbz_learned_filters *f,
-                           double maxval, int workers, uint64_t *opcounts);
+typedef int rgbz_learned_fn(int in_type, const void *src, void *dst, ptrdiff_t rows,
+                            ptrdiff_t cols, int py, int px, const int32_t *phase_map,
+                            const rgbz_learned_filters *f, double maxval, int workers,
+                            uint64_t *opcounts);
+#define RGBZ_DECLARE_LEARNED_(s, NAME) rgbz_learned_fn rgbz_learned_##s;
+RGBZ_PRECISIONS(RGBZ_DECLARE_LEARNED_)
+#undef RGBZ_DECLARE_LEARNED_
 
 #endif /* RGBZ_LEARNED_H */

@@ -1,13 +1,13 @@
 /*
  * learned.template.h -- the frame loop of the learned reconstruction for one input
- * element type and one precision. Included by learned.c once per combination, with
+ * element type and one precision. Instantiated by learned_entry.template.h through
+ * rgbz_each_type.h (rgbz_templating.h), once per element type and precision, with
  *   IN_T       the element type (uint8_t, uint16_t, float, double)
  *   IS         its suffix (u8, u16, f32, f64)
  *   IN_IS_INT  1 for the integer types (outputs rounded half up)
  *   REAL       the arithmetic (float or double)
- *   RS         its suffix (f32, f64)
- *   RW         the member of rgbz_learned_filters holding the weights in REAL
- *   RWD        the member holding the dense weights in REAL
+ *   RS         its suffix (f32, f64): the weights are the members w_<RS>, wd_<RS> of
+ *              rgbz_learned_filters (RW, RWD below)
  *
  * The sites of one phase in one row are processed in blocks of LRN_BLK: the taps are
  * loaded tap-major (v[t][j], tap t of site j), the hash runs on whole rows of v
@@ -29,15 +29,11 @@
 #ifndef RS
 #error "learned.template.h: define RS (the precision's suffix)"
 #endif
-#ifndef RW
-#error "learned.template.h: define RW (w_f32 or w_f64)"
-#endif
-#ifndef RWD
-#error "learned.template.h: define RWD (wd_f32 or wd_f64)"
-#endif
 
-#define LRN_CAT3(a, b, c) a##_##b##_##c
-#define LRN_CAT(a, b, c) LRN_CAT3(a, b, c)
+/* the names of this instance (rgbz_templating.h's pasting) and its weights */
+#define LRN_CAT RGBZ_CAT3
+#define RW RGBZ_CAT(w, RS)
+#define RWD RGBZ_CAT(wd, RS)
 
 /* the buckets of n sites from their direction energies e[d][j] (learned.h) */
 static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int n,
@@ -538,4 +534,5 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
 #undef LRN_STRIP
 #undef LRN_HALO
 #undef LRN_CAT
-#undef LRN_CAT3
+#undef RW
+#undef RWD

@@ -35,6 +35,7 @@
 #endif
 #include "metrics.h"
 #include "metrics_isa.h"
+#include "rgbz_templating.h"
 
 /* This file is compiled once per instruction set (csrc/meson.build): RGBZ_METRICS_ISA is the
    suffix of its entry points, which metrics_dispatch.c chooses from at run time. */
@@ -253,53 +254,9 @@ static int64_t mt_zipper_row(mt_labrow ru, mt_labrow rm, mt_labrow rd, mt_labrow
 }
 
 /* ------------------------------------------------------------------ per element type */
-#define MT_CAT_(a, b) a##_##b
-#define MT_CAT(a, b) MT_CAT_(a, b)
-
-#if defined(IN_T) || defined(IS) || defined(IN_IS_INT)
-#error "metrics.c: the template parameters must not be defined here"
-#endif
-
-#define IN_T uint8_t
-#define IS u8
-#define IN_IS_INT 1
-#include "metrics.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define IN_T uint16_t
-#define IS u16
-#define IN_IS_INT 1
-#include "metrics.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define IN_T float
-#define IS f32
-#define IN_IS_INT 0
-#include "metrics.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define IN_T double
-#define IS f64
-#define IN_IS_INT 0
-#include "metrics.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-
-#define MT_DISPATCH(st, in_type, name, ...)                                                  \
-    switch (in_type) {                                                                       \
-    case RGBZ_T_U8: st = MT_CAT(name, u8)(__VA_ARGS__); break;                               \
-    case RGBZ_T_U16: st = MT_CAT(name, u16)(__VA_ARGS__); break;                             \
-    case RGBZ_T_F32: st = MT_CAT(name, f32)(__VA_ARGS__); break;                             \
-    case RGBZ_T_F64: st = MT_CAT(name, f64)(__VA_ARGS__); break;                             \
-    default: st = RGBZ_EINVAL;                                                               \
-    }
+#define RGBZ_TYPE_TEMPLATE "metrics.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
 
 /* ------------------------------------------------------------------ public entry points */
 int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y, ptrdiff_t planes,
@@ -311,28 +268,29 @@ int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y, ptrdiff_
         return RGBZ_EINVAL;
     for (int k = 0; k < ntaps / 2; k++)
         if (weights[k] != weights[ntaps - 1 - k]) return RGBZ_EINVAL;
-    int st;
-    MT_DISPATCH(st, in_type, mt_ssim_sums, x, y, planes, rows, cols, weights, ntaps, c1, c2,
-                ssim_sum, cs_sum, workers)
-    return st;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_ssim_sums, s)(x, y, planes, rows, cols, weights, ntaps, c1, c2, ssim_sum,   \
+                              cs_sum, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
 }
 
 int MT_ENTRY(rgbz_downsample2)(int in_type, const void *src, ptrdiff_t planes,
                                ptrdiff_t rows, ptrdiff_t cols, double *dst, int workers)
 {
     if (!src || !dst || planes < 1 || rows < 1 || cols < 1) return RGBZ_EINVAL;
-    int st;
-    MT_DISPATCH(st, in_type, mt_downsample2, src, planes, rows, cols, dst, workers)
-    return st;
+#define MT_CALL_(s, T) return RGBZ_CAT(mt_downsample2, s)(src, planes, rows, cols, dst, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
 }
 
 int MT_ENTRY(rgbz_srgb_to_lab)(int in_type, const void *rgb, ptrdiff_t n, double scale,
                                double *lab, int workers)
 {
     if (!rgb || !lab || n < 0 || !(scale > 0.0)) return RGBZ_EINVAL;
-    int st;
-    MT_DISPATCH(st, in_type, mt_srgb_to_lab, rgb, n, scale, lab, workers)
-    return st;
+#define MT_CALL_(s, T) return RGBZ_CAT(mt_srgb_to_lab, s)(rgb, n, scale, lab, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
 }
 
 int MT_ENTRY(rgbz_zipper_count)(int in_type, const void *ref, const void *test,
@@ -342,10 +300,10 @@ int MT_ENTRY(rgbz_zipper_count)(int in_type, const void *ref, const void *test,
     if (!ref || !test || !count || rows < 3 || cols < 3 || !(scale >= 0.0)
         || !(delta >= 0.0))
         return RGBZ_EINVAL;
-    int st;
-    MT_DISPATCH(st, in_type, mt_zipper_count, ref, test, rows, cols, scale, delta, count,
-                workers)
-    return st;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_zipper_count, s)(ref, test, rows, cols, scale, delta, count, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
 }
 
 int MT_ENTRY(rgbz_sq_diff_sum)(int in_type, const void *a, const void *b, ptrdiff_t rows,
@@ -353,8 +311,8 @@ int MT_ENTRY(rgbz_sq_diff_sum)(int in_type, const void *a, const void *b, ptrdif
                                double *sum, int64_t *count, int workers)
 {
     if (!a || !b || !sum || !count || rows < 1 || cols < 1 || channels < 1) return RGBZ_EINVAL;
-    int st;
-    MT_DISPATCH(st, in_type, mt_sq_diff_sum, a, b, rows, cols, channels, mask, sum, count,
-                workers)
-    return st;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_sq_diff_sum, s)(a, b, rows, cols, channels, mask, sum, count, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
 }

@@ -1,7 +1,7 @@
 /*
  * metrics.template.h -- the metric kernels of metrics.c for one input element type.
  *
- * Included by metrics.c once per element type (PyWavelets' template scheme) with:
+ * Instantiated by metrics.c through rgbz_each_type.h (rgbz_templating.h), with:
  *   IN_T       the element type of the input images (uint8_t, uint16_t, float, double)
  *   IS         its suffix (u8, u16, f32, f64), appended to every function name
  *   IN_IS_INT  1 for the integer types (their sRGB EOTF is a table of every code value)
@@ -18,7 +18,7 @@
 #error "metrics.template.h: #define IN_IS_INT (1 for integer IN_T, else 0)"
 #endif
 
-#define MT(name) MT_CAT(name, IS)
+#define MT(name) RGBZ_CAT(name, IS)
 
 /* ------------------------------------------------------------------ SSIM */
 

@@ -8,9 +8,10 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "rgbz_templating.h"
 
-#define RGBZ_METRICS_CAT_(a, b) a##_##b
-#define RGBZ_METRICS_ENTRY(name, isa) RGBZ_METRICS_CAT_(name, isa)
+/* the entry point `name` of the build for instruction set `isa`: name_isa */
+#define RGBZ_METRICS_ENTRY(name, isa) RGBZ_CAT(name, isa)
 
 #define RGBZ_METRICS_DECLARE(isa)                                                            \
     int RGBZ_METRICS_ENTRY(rgbz_ssim_sums, isa)(                                             \

@@ -1,6 +1,7 @@
 /*
  * recon.c -- missing-colour reconstruction at the Z sites of an RGB-Z frame:
- * the entry point, the checks of the plans, and the instances of the templates.
+ * what its entry points share (the checks of the arguments and of the plans,
+ * the column map), the plan layout, and the build information.
  *
  * Paper: Rebiere et al., section 4 (eqs. 2-19, Table 1); Shi et al.'s row
  * method (eqs. 1a-1e) (docs/references.bib: rebiere_rgbz, shi_rgbz). The
@@ -9,9 +10,10 @@
  *
  * Layout: C-contiguous row-major frames, strides in elements (= cols).
  * Borders: a tap outside the frame is moved back by whole pattern periods
- * (rgbz_extend), so it keeps its colour.
+ * (rgbz_extend, recon.h), so it keeps its colour.
  * Code: recon_core.template.h is the per-site arithmetic (one core for every
- * method, pattern and option), compiled once per precision (float, double);
+ * method, pattern and option) and the entry point of a precision, compiled
+ * once per precision, each in its own file (recon_f32.c, recon_f64.c);
  * recon_loop.template.h the frame loop, once per precision and element type
  * (u8, u16, f32, f64); recon_mask1.h the Mask1 plans as constants.
  */
@@ -21,55 +23,13 @@
 #include <stdint.h>
 #include "rgbz.h"
 #include "rgbz_ops.h"
+#include "recon.h"
 #include "recon_mask1.h"
 
-#define RGBZ_MAX_RADIUS 8
-
-/* sites per block of the core: its scratch stays in L1. The counting build runs one site
-   per block, so that a branch the core takes per block is counted per site. */
+/* the operation counters of the plan being run (rgbz_ops.h) */
 #ifdef RGBZ_COUNT_OPS
-#define RGBZ_BLK 1
 uint64_t *rgbz_opc_cur = NULL;
-#else
-#define RGBZ_BLK 128
 #endif
-
-/* index i moved into [0, n) by whole periods P (n >= P) */
-static inline ptrdiff_t rgbz_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
-{
-    if (i < 0) return i + P * ((-i + P - 1) / P);
-    if (i >= n) return i - P * ((i - n + P) / P);
-    return i;
-}
-
-/* ---- the core and the frame loops, per precision (PyWavelets' template scheme) ---- */
-#if defined(REAL) || defined(RS) || defined(IN_T)
-#error "recon.c: the template parameters must not be defined here"
-#endif
-
-#define REAL float
-#define RS f32
-#define RABSDIFF OABSDIFF_F
-#define REXP_LIBM expf
-#define REXP_FAST rgbz_fast_exp_f
-#include "recon_core.template.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
-
-#define REAL double
-#define RS f64
-#define RABSDIFF OABSDIFF_D
-#define REXP_LIBM exp
-#define REXP_FAST rgbz_fast_exp_d
-#include "recon_core.template.h"
-#undef REAL
-#undef RS
-#undef RABSDIFF
-#undef REXP_LIBM
-#undef REXP_FAST
 
 int rgbz_plan_layout(int64_t *out, int n)
 {
@@ -138,21 +98,21 @@ static int rgbz_check_plans(const rgbz_plan *plans, int n_plans, int *ry, int *r
     return RGBZ_OK;
 }
 
-int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
-                     ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                     const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
-                     const rgbz_params *prm, uint64_t *opcounts)
+int rgbz_recon_setup(const void *src, const void *dst, ptrdiff_t rows, ptrdiff_t cols, int py,
+                     int px, const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
+                     const rgbz_params *prm, const uint64_t *opcounts, int *ry, int *rx,
+                     ptrdiff_t **colmap)
 {
     if (!src || !dst || !phase_map || !plans || !prm || n_plans < 1) return RGBZ_EINVAL;
     if (py < 1 || px < 1 || rows < py || cols < px) return RGBZ_EINVAL;
-    if (precision != RGBZ_P_FLOAT32 && precision != RGBZ_P_FLOAT64) return RGBZ_EINVAL;
     for (int i = 0; i < py * px; i++)
         if (phase_map[i] < -1 || phase_map[i] >= n_plans) return RGBZ_EINVAL;
 #ifdef RGBZ_COUNT_OPS
     if (!opcounts) return RGBZ_EINVAL;
+#else
+    (void)opcounts;
 #endif
-    int ry, rx;
-    int st = rgbz_check_plans(plans, n_plans, &ry, &rx);
+    int st = rgbz_check_plans(plans, n_plans, ry, rx);
     if (st != RGBZ_OK) return st;
     if (prm->mask1_fast) {
         /* the caller vouches for the Mask1 geometry; check what the constant plans rely
@@ -169,38 +129,11 @@ int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
         return RGBZ_EINVAL;
 
     /* column map for x in [-rx, cols + rx): shared, read-only, O(cols) */
-    ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 2 * rx) * sizeof(ptrdiff_t));
-    if (!colmap) return RGBZ_ENOMEM;
-    for (ptrdiff_t i = 0; i < cols + 2 * rx; i++) colmap[i] = rgbz_extend(i - rx, cols, px);
-
-    typedef int (*loop_fn)(const void *, void *, ptrdiff_t, ptrdiff_t, int, int, const int32_t *,
-                           const rgbz_plan *, int, int, const ptrdiff_t *, const rgbz_params *,
-                           uint64_t *);
-    /* [element type][precision] */
-    static const loop_fn loops[4][2] = {
-        {(loop_fn)rgbz_recon_loop_u8_f32, (loop_fn)rgbz_recon_loop_u8_f64},
-        {(loop_fn)rgbz_recon_loop_u16_f32, (loop_fn)rgbz_recon_loop_u16_f64},
-        {(loop_fn)rgbz_recon_loop_f32_f32, (loop_fn)rgbz_recon_loop_f32_f64},
-        {(loop_fn)rgbz_recon_loop_f64_f32, (loop_fn)rgbz_recon_loop_f64_f64},
-    };
-    if (in_type >= RGBZ_T_U8 && in_type <= RGBZ_T_F64)
-        st = loops[in_type][precision](src, dst, rows, cols, py, px, phase_map, plans, ry, rx,
-                                       colmap, prm, opcounts);
-    else
-        st = RGBZ_EINVAL;
-    free(colmap);
-    return st;
-}
-
-int rgbz_fast_exp(int type, const void *x, void *out, ptrdiff_t n)
-{
-    if (!x || !out || n < 0) return RGBZ_EINVAL;
-    if (type == RGBZ_T_F32)
-        for (ptrdiff_t i = 0; i < n; i++) ((float *)out)[i] = rgbz_fast_exp_f(((const float *)x)[i]);
-    else if (type == RGBZ_T_F64)
-        for (ptrdiff_t i = 0; i < n; i++) ((double *)out)[i] = rgbz_fast_exp_d(((const double *)x)[i]);
-    else
-        return RGBZ_EINVAL;
+    const int r = *rx;
+    ptrdiff_t *cm = (ptrdiff_t *)malloc((size_t)(cols + 2 * r) * sizeof(ptrdiff_t));
+    if (!cm) return RGBZ_ENOMEM;
+    for (ptrdiff_t i = 0; i < cols + 2 * r; i++) cm[i] = rgbz_extend(i - r, cols, px);
+    *colmap = cm;
     return RGBZ_OK;
 }
 

@@ -24,7 +24,7 @@
  * vectorises, and the plan's control flow runs once per block. The frame loop
  * (recon_loop.template.h) gathers the block and converts the results.
  *
- * One core, three uses (recon.c instantiates rgbz_core below with each):
+ * One core, three uses (rgbz_core's instances below):
  *   - a plan built in Python, no clipped pixel (the plan is run-time data);
  *   - the same with clipped pixels (clipped != NULL: bit t of clipped[j] says that
  *     tap t of site j is clipped);
@@ -35,12 +35,14 @@
  * build runs blocks of one site (RGBZ_BLK = 1), so a branch taken per block is
  * counted per site.
  *
- * Template parameters, #defined by the includer (recon.c) and #undefined after:
+ * After the core: the frame loop (recon_loop.template.h) per element type, and the
+ * entry points of this precision, rgbz_reconstruct_<RS> and rgbz_fast_exp_<RS> (rgbz.h).
+ *
+ * Template parameters (rgbz_templating.h), #defined by the includer (recon_f32.c,
+ * recon_f64.c) and #undefined after:
  *   REAL       float or double: the precision of the arithmetic
- *   RS         its suffix, f32 or f64 (names: rgbz_core_f32, ...)
- *   RABSDIFF   OABSDIFF_F or OABSDIFF_D (rgbz_ops.h)
- *   REXP_LIBM  expf or exp
- *   REXP_FAST  rgbz_fast_exp_f or rgbz_fast_exp_d (rgbz_ops.h)
+ *   RS         its suffix, f32 or f64 (names: rgbz_core_f32, ...); the helpers of the
+ *              precision are rgbz_ops.h's of that suffix
  */
 #ifndef REAL
 #error "recon_core.template.h: #define REAL (float or double) before including it"
@@ -48,19 +50,14 @@
 #ifndef RS
 #error "recon_core.template.h: #define RS (the suffix of REAL: f32 or f64)"
 #endif
-#ifndef RABSDIFF
-#error "recon_core.template.h: #define RABSDIFF (OABSDIFF_F or OABSDIFF_D)"
-#endif
-#ifndef REXP_LIBM
-#error "recon_core.template.h: #define REXP_LIBM (expf or exp)"
-#endif
-#ifndef REXP_FAST
-#error "recon_core.template.h: #define REXP_FAST (rgbz_fast_exp_f or rgbz_fast_exp_d)"
-#endif
 #ifndef RGBZ_BLK
-#error "recon_core.template.h: #define RGBZ_BLK (sites per block) before including it"
+#error "recon_core.template.h: include recon.h (RGBZ_BLK, the sites per block) first"
 #endif
 
+/* the helpers of this precision (rgbz_ops.h) */
+#define RABSDIFF RGBZ_CAT(OABSDIFF, RS)
+#define REXP_LIBM RGBZ_CAT(rgbz_exp_libm, RS)
+#define REXP_FAST RGBZ_CAT(rgbz_exp_poly, RS)
 #define RFN(name) RGBZ_CAT(name, RS)
 #define BLOOP for (int j = 0; j < n; j++)
 #define RCLIPPED(mask, t) ((int)(((mask) >> (t)) & 1u))
@@ -635,9 +632,11 @@ RGBZ_CLONES_512 static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *
     RFN(rgbz_core)(p, v, n, NULL, kn, r);
 }
 
-RGBZ_CLONES_512 static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
-                                            const uint64_t *clipped,
-                                            const RFN(rgbz_knobs) *kn, REAL *restrict r)
+/* one build, for the baseline instruction set: only the blocks that hold a clipped tap run
+   it (recon_loop.template.h); its clones would be a sixth of the compile time */
+static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
+                                const uint64_t *clipped, const RFN(rgbz_knobs) *kn,
+                                REAL *restrict r)
 {
     RFN(rgbz_core)(p, v, n, clipped, kn, r);
 }
@@ -665,36 +664,41 @@ static void (*const RFN(rgbz_mask1_core)[RGBZ_M1_NPLANS])(const REAL *const *, i
     RFN(rgbz_core_m1_edi_line), RFN(rgbz_core_m1_sg), RFN(rgbz_core_m1_sg_combined),
 };
 
-/* ---- the frame loop (recon_loop.template.h) for the four element types ---- */
-#define IN_T uint8_t
-#define IS u8
-#define IN_IS_INT 1
-#include "recon_loop.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T uint16_t
-#define IS u16
-#define IN_IS_INT 1
-#include "recon_loop.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T float
-#define IS f32
-#define IN_IS_INT 0
-#include "recon_loop.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
-#define IN_T double
-#define IS f64
-#define IN_IS_INT 0
-#include "recon_loop.template.h"
-#undef IN_T
-#undef IS
-#undef IN_IS_INT
+/* ---- the frame loop (recon_loop.template.h) for each element type ---- */
+#define RGBZ_TYPE_TEMPLATE "recon_loop.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
+
+/* ---- the entry points of this precision (rgbz.h) ---- */
+int RFN(rgbz_reconstruct)(int in_type, const void *src, void *dst, ptrdiff_t rows,
+                          ptrdiff_t cols, int py, int px, const int32_t *phase_map,
+                          const rgbz_plan *plans, int n_plans, const rgbz_params *prm,
+                          uint64_t *opcounts)
+{
+    int ry, rx;
+    ptrdiff_t *colmap;
+    int st = rgbz_recon_setup(src, dst, rows, cols, py, px, phase_map, plans, n_plans, prm,
+                              opcounts, &ry, &rx, &colmap);
+    if (st != RGBZ_OK) return st;
+#define RECON_LOOP_(s, T)                                                                    \
+    st = RGBZ_CAT3(rgbz_recon_loop, s, RS)((const T *)src, (T *)dst, rows, cols, py, px,    \
+                                           phase_map, plans, ry, rx, colmap, prm, opcounts)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, RECON_LOOP_, st = RGBZ_EINVAL)
+#undef RECON_LOOP_
+    free(colmap);
+    return st;
+}
+
+int RFN(rgbz_fast_exp)(const REAL *x, REAL *out, ptrdiff_t n)
+{
+    if (!x || !out || n < 0) return RGBZ_EINVAL;
+    for (ptrdiff_t i = 0; i < n; i++) out[i] = REXP_FAST(x[i]);
+    return RGBZ_OK;
+}
 
 #undef RCLIPPED
 #undef BLOOP
 #undef RFN
+#undef RABSDIFF
+#undef REXP_LIBM
+#undef REXP_FAST

@@ -24,13 +24,12 @@
  * other sites the plan of _plans.py, as they always have (recon_mask1.h says
  * why the two must stay apart).
  *
- * Template parameters, #defined by the includer (the end of recon_core.template.h, once
- * per element type) and #undefined after:
+ * Template parameters (rgbz_templating.h), #defined by rgbz_each_type.h, which the end of
+ * recon_core.template.h includes once per precision:
  *   IN_T       the element type of the frames: uint8_t, uint16_t, float, double
  *   IS         its suffix: u8, u16, f32, f64
  *   IN_IS_INT  1 for the integer types (results rounded half up), else 0
- *   REAL, RS   the precision of the arithmetic and its suffix (as recon_core.template.h,
- *              which must have been included with the same REAL before)
+ *   REAL, RS   the precision of the arithmetic and its suffix (recon_core.template.h's)
  */
 #ifndef IN_T
 #error "recon_loop.template.h: #define IN_T (the element type of the frames)"
@@ -186,12 +185,19 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
             RGBZ_CAT(rgbz_mask1_core, RS)[m1](v, n, kn, r);
         } else if (clip_on) {
             /* compared in double, exact for every input type and precision */
+            uint64_t any = 0;
             for (int j = 0; j < n; j++) clipped[j] = 0;
             for (int t = 0; t < nt; t++)
                 for (int j = 0; j < n; j++)
                     if ((double)LFN(rgbz_tap)(w, p, t, xb + (ptrdiff_t)j * px, direct) >= clip_level)
                         clipped[j] |= (uint64_t)1 << t;
-            RGBZ_CAT(rgbz_core_clip, RS)(p, v, n, clipped, kn, r);
+            for (int j = 0; j < n; j++) any |= clipped[j];
+            /* a site without a clipped tap gives the same with either core (rgbz_core): a
+               block without one runs the vectorised core of the unclipped frames */
+            if (any)
+                RGBZ_CAT(rgbz_core_clip, RS)(p, v, n, clipped, kn, r);
+            else
+                RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
         } else {
             RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
         }

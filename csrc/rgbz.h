@@ -21,6 +21,10 @@
  * The enums below are also the Python constants: _kernels.pyx declares them
  * as `cpdef enum`s, and the Python layer builds its name -> code tables
  * (METHODS, PRECISIONS, EXP_MODES, DEMOSAIC_MODES) from them.
+ *
+ * Element types and precisions (rgbz_templating.h): an entry point's name carries the
+ * precision of its arithmetic (rgbz_reconstruct_f32); the element type of a frame is an
+ * rgbz_type code beside a void pointer.
  */
 #ifndef RGBZ_H
 #define RGBZ_H
@@ -45,11 +49,22 @@ typedef enum rgbz_type {
     RGBZ_T_F64 = 3,
 } rgbz_type;
 
-/* computation precision of the reconstruction */
+/*
+ * The precisions of the reconstruction's arithmetic, X(suffix, NAME) each: the enum member
+ * RGBZ_P_<NAME> (numbered in this order; the Python name is the lower-case NAME) and the
+ * entry points rgbz_reconstruct_<suffix> and rgbz_learned_<suffix> declared below. A new
+ * precision is one more line here plus its arithmetic (rgbz_templating.h says where).
+ */
+#define RGBZ_PRECISIONS(X) \
+    X(f32, FLOAT32)        \
+    X(f64, FLOAT64)
+
+#define RGBZ_P_MEMBER_(s, NAME) RGBZ_P_##NAME,
 typedef enum rgbz_precision {
-    RGBZ_P_FLOAT32 = 0,
-    RGBZ_P_FLOAT64 = 1,
+    RGBZ_PRECISIONS(RGBZ_P_MEMBER_)
+    RGBZ_NPRECISIONS
 } rgbz_precision;
+#undef RGBZ_P_MEMBER_
 
 /* reconstruction methods (the Python names are the lower-case suffixes) */
 typedef enum rgbz_method {
@@ -158,19 +173,23 @@ int rgbz_plan_layout(int64_t *out, int n);
 int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out);
 
 /*
- * Reconstruct the missing colour of every Z site.
- *   src, dst: rows x cols frames of element type `in_type` (dst fully written:
- *             colour sites copied, Z sites reconstructed, clipped, rounded
+ * rgbz_reconstruct_<precision> (f32, f64: one per entry of RGBZ_PRECISIONS, all of this
+ * type): reconstruct the missing colour of every Z site in that precision.
+ *   src, dst: rows x cols frames of element type `in_type` (an rgbz_type; dst fully
+ *             written: colour sites copied, Z sites reconstructed, clipped, rounded
  *             half up for integer types). src and dst must not overlap.
  *   py, px:   pattern period; phase_map[(y % py) * px + (x % px)] is the plan
  *             index of that site, or -1 for a colour site.
  *   opcounts: counting build only: n_plans x RGBZ_NOPS counters (required there;
  *             ignored, and may be NULL, in the normal build).
  */
-int rgbz_reconstruct(int in_type, int precision, const void *src, void *dst,
-                     ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                     const int32_t *phase_map, const rgbz_plan *plans, int n_plans,
-                     const rgbz_params *params, uint64_t *opcounts);
+typedef int rgbz_reconstruct_fn(int in_type, const void *src, void *dst, ptrdiff_t rows,
+                                ptrdiff_t cols, int py, int px, const int32_t *phase_map,
+                                const rgbz_plan *plans, int n_plans, const rgbz_params *params,
+                                uint64_t *opcounts);
+#define RGBZ_DECLARE_RECONSTRUCT_(s, NAME) rgbz_reconstruct_fn rgbz_reconstruct_##s;
+RGBZ_PRECISIONS(RGBZ_DECLARE_RECONSTRUCT_)
+#undef RGBZ_DECLARE_RECONSTRUCT_
 
 /*
  * Malvar-He-Cutler 2004 demosaic of a Bayer CFA (demosaic.c).
@@ -182,7 +201,7 @@ int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                          ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
                          int mode, int workers);
 
-/* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
+/* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */
 int rgbz_tof_demodulate(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                         double *phase, double *amp, double *offset, int workers);
@@ -197,7 +216,7 @@ int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double 
                     const double *weights, double max_range, double *depth,
                     double *residual, int32_t *wraps, int workers);
 
-/* Fused demodulation + unwrapping (tof.c): taps (F, 4, N) of in_type (U16, F32, F64) ->
+/* Fused demodulation + unwrapping (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    depth, residual, wraps as rgbz_tof_unwrap, and phase, amplitude, offset (F, N) as
    rgbz_tof_demodulate (each may be NULL: not stored). One pass per site, no intermediate
    arrays. */
@@ -213,9 +232,10 @@ int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
                       double max_range, double *depth, double *residual,
                       int32_t *wraps, double *phase, double *amp, int workers);
 
-/* The fast exponential of rgbz_ops.h (exp_mode RGBZ_EXP_FAST) of n values of type
-   RGBZ_T_F32 or RGBZ_T_F64, so that the tests can measure it against libm. */
-int rgbz_fast_exp(int type, const void *x, void *out, ptrdiff_t n);
+/* The fast exponential of rgbz_ops.h (exp_mode RGBZ_EXP_FAST) of n values, in float and
+   double, so that the tests can measure it against libm. */
+int rgbz_fast_exp_f32(const float *x, float *out, ptrdiff_t n);
+int rgbz_fast_exp_f64(const double *x, double *out, ptrdiff_t n);
 
 /* build information */
 int rgbz_have_openmp(void);

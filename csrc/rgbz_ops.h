@@ -1,9 +1,10 @@
 /*
  * rgbz_ops.h -- what every kernel file shares: the counted arithmetic macros
  * (the operation counts of the paper's Table 1), the fast exponential of the
- * gamma factors (eq. 7), the template name pasting, and the compiler-specific
- * helpers, each behind a test of the compiler with a portable fallback. No
- * arrays here: the memory layouts are in the kernel files.
+ * gamma factors (eq. 7), the helpers of each precision under its suffix (f32,
+ * f64: what a template reaches as RGBZ_CAT(name, RS), rgbz_templating.h), and the
+ * compiler-specific helpers, each behind a test of the compiler with a portable
+ * fallback. No arrays here: the memory layouts are in the kernel files.
  *
  * Counting: in the normal build every macro is the plain operation. Built with
  * -DRGBZ_COUNT_OPS (the library of rgbz_fast._kernels_count, behind
@@ -21,6 +22,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "rgbz.h"
+#include "rgbz_templating.h"
 
 #ifdef RGBZ_COUNT_OPS
 extern uint64_t *rgbz_opc_cur;
@@ -35,16 +37,16 @@ extern uint64_t *rgbz_opc_cur;
 #define ODIV(a, b) (OPC_(RGBZ_OP_DIV), (a) / (b))
 #define OCMP(expr) (OPC_(RGBZ_OP_CMP), (expr))
 
-/* |a - b|: one subtraction and one absolute value */
-#define OABSDIFF_F(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabsf((a) - (b)))
-#define OABSDIFF_D(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabs((a) - (b)))
+/* ---- per precision, under its suffix ---- */
 
-/* name pasting for the *.template.h files (as PyWavelets' templating.h): the arguments are
-   expanded first, so RGBZ_CAT(rgbz_core, RS) with RS defined as f32 is rgbz_core_f32 */
-#define RGBZ_CAT_(a, b) a##_##b
-#define RGBZ_CAT(a, b) RGBZ_CAT_(a, b)
-#define RGBZ_CAT3_(a, b, c) a##_##b##_##c
-#define RGBZ_CAT3(a, b, c) RGBZ_CAT3_(a, b, c)
+/* |a - b|: one subtraction and one absolute value */
+#define OABSDIFF_f32(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabsf((a) - (b)))
+#define OABSDIFF_f64(a, b) (OPC_(RGBZ_OP_ADD), OPC_(RGBZ_OP_ABS), fabs((a) - (b)))
+
+/* the C library's exponential (exp_mode RGBZ_EXP_LIBM); rgbz_exp_poly_<suffix> below is
+   the fast one (RGBZ_EXP_FAST) */
+#define rgbz_exp_libm_f32 expf
+#define rgbz_exp_libm_f64 exp
 
 /* a result of the reconstruction kernels as an output element, before the cast to the
    element type: clamped to [0, maxval] (a NaN to 0), plus 0.5 for an integer type, which
@@ -64,15 +66,8 @@ static inline double rgbz_out_f64(double r, double maxval, int is_int)
     return is_int ? r + 0.5 : r;
 }
 
-/* ---- compiler-specific helpers, each with a portable fallback ---- */
-
-/* a function to inline into every caller, so that constants propagate into it (the Mask1
-   plans of recon_mask1.h, the element type of a ToF tap array) */
-#if defined(__GNUC__) || defined(__clang__)
-#define RGBZ_INLINE static inline __attribute__((always_inline))
-#else
-#define RGBZ_INLINE static inline
-#endif
+/* ---- compiler-specific helpers, each with a portable fallback (RGBZ_INLINE:
+   rgbz_templating.h) ---- */
 
 /* before a loop of a compile-time trip count (at most 24) whose full unrolling lets the loop
    around it vectorise */
@@ -173,7 +168,7 @@ static inline int rgbz_threads(int workers)
  * gives 0 (no NaN reaches the integer conversion, which would be undefined
  * behaviour: docs/reports/robustness.md, B10).
  */
-static inline double rgbz_fast_exp_d(double x)
+static inline double rgbz_exp_poly_f64(double x)
 {
     if (!(x > -708.0)) return 0.0;         /* also NaN: no NaN-to-integer conversion */
     double n = floor(x * 1.4426950408889634 + 0.5);
@@ -187,7 +182,7 @@ static inline double rgbz_fast_exp_d(double x)
     return p * scale;
 }
 
-static inline float rgbz_fast_exp_f(float x)
+static inline float rgbz_exp_poly_f32(float x)
 {
     /* branch-free, so that loops over several gammas vectorise: clamp, evaluate,
        then zero the result below the normal range. NaN fails `x > -87` and takes the

@@ -7,7 +7,8 @@
  * same power the codes are the same bit for bit; -ffp-contract=off (csrc/meson.build) keeps
  * every multiply and add rounded on its own, as NumPy's are.
  *
- * Layout: n contiguous values; p has n values of the same type; code n uint8 or uint16.
+ * Layout: n contiguous values; p has n values of the same type; code n uint8 or uint16
+ * (code_type RGBZ_T_U8 or RGBZ_T_U16).
  * The floor is a conversion to int32: the value floored is e (2^bits - 1) + 0.5 >= 0.5 (v is
  * clipped to [0, 1], so e >= 0), where truncation and floor agree, and it vectorises.
  */
@@ -16,6 +17,7 @@
 #include <omp.h>
 #endif
 #include "srgb.h"
+#include "rgbz_templating.h"
 
 #define SR_PRAGMA(x) _Pragma(#x)
 
@@ -41,40 +43,8 @@ static int sr_threads(int workers, ptrdiff_t n)
 
 #define SR_CLIP(T, x) ((x) < (T)0 ? (T)0 : ((x) > (T)1 ? (T)1 : (x)))
 
-/* srgb.template.h once per float type (REAL, RS), and within it the finish once per code
-   type (CODE_T, CS, CODE_TOP) */
-#define REAL float
-#define RS f32
-#include "srgb.template.h"
-#undef REAL
-#undef RS
-#define REAL double
-#define RS f64
-#include "srgb.template.h"
-#undef REAL
-#undef RS
-
-int rgbz_oetf_prepare(int type, const void *x, void *p, ptrdiff_t n, int workers)
-{
-    if (!x || !p || n < 0) return RGBZ_EINVAL;
-    if (type == RGBZ_T_F32) sr_prepare_f32(x, p, n, workers);
-    else if (type == RGBZ_T_F64) sr_prepare_f64(x, p, n, workers);
-    else return RGBZ_EINVAL;
-    return RGBZ_OK;
-}
-
-int rgbz_oetf_finish(int type, const void *x, const void *p, ptrdiff_t n, int bits, void *code,
-                     int workers)
-{
-    if (!x || !p || !code || n < 0 || (bits != 8 && bits != 16)) return RGBZ_EINVAL;
-    if (type == RGBZ_T_F32) {
-        if (bits == 8) sr_finish_f32_u8(x, p, n, code, workers);
-        else sr_finish_f32_u16(x, p, n, code, workers);
-    } else if (type == RGBZ_T_F64) {
-        if (bits == 8) sr_finish_f64_u8(x, p, n, code, workers);
-        else sr_finish_f64_u16(x, p, n, code, workers);
-    } else {
-        return RGBZ_EINVAL;
-    }
-    return RGBZ_OK;
-}
+/* srgb.template.h once per precision: the entry points rgbz_oetf_prepare_<RS> and
+   rgbz_oetf_finish_<RS> (srgb.h), the finish once per integer code type within it */
+#define RGBZ_REAL_TEMPLATE "srgb.template.h"
+#include "rgbz_each_real.h"
+#undef RGBZ_REAL_TEMPLATE

@@ -5,12 +5,13 @@
  * IEC 61966-2-1, quantisation to 8 or 16 bits) in two passes around the power, which the
  * caller computes with NumPy (np.power): so that the codes are those of the NumPy stages bit
  * for bit (the same operations in the same order, the same power function), without their
- * temporaries. For n values x (float32 or float64, type RGBZ_T_F32 / RGBZ_T_F64):
+ * temporaries. For n values x of the precision in the name (float32: _f32, float64: _f64):
  *
  *   rgbz_oetf_prepare: p = v <= 0.0031308 ? 1 : v, with v = min(max(x, 0), 1)
  *                      (the caller then raises p to 1 / 2.4 in place)
  *   rgbz_oetf_finish:  e = v <= 0.0031308 ? v * 12.92 : p * 1.055 - 0.055,
- *                      code = floor(e * (2^bits - 1) + 0.5), bits 8 (uint8) or 16 (uint16)
+ *                      code = floor(e * (2^bits - 1) + 0.5), into code of code_type
+ *                      RGBZ_T_U8 (bits 8) or RGBZ_T_U16 (bits 16)
  *
  * Arithmetic in the type of x (constants rounded to it), as NumPy does with scalars of that
  * type; compiled with -ffp-contract=off. Contiguous arrays; status codes of rgbz.h.
@@ -22,8 +23,11 @@
 
 #include "rgbz.h"
 
-int rgbz_oetf_prepare(int type, const void *x, void *p, ptrdiff_t n, int workers);
-int rgbz_oetf_finish(int type, const void *x, const void *p, ptrdiff_t n, int bits, void *code,
-                     int workers);
+int rgbz_oetf_prepare_f32(const float *x, float *p, ptrdiff_t n, int workers);
+int rgbz_oetf_prepare_f64(const double *x, double *p, ptrdiff_t n, int workers);
+int rgbz_oetf_finish_f32(const float *x, const float *p, ptrdiff_t n, int code_type,
+                         void *code, int workers);
+int rgbz_oetf_finish_f64(const double *x, const double *p, ptrdiff_t n, int code_type,
+                         void *code, int workers);
 
 #endif /* RGBZ_SRGB_H */

@@ -12,9 +12,10 @@
  *     amplitude = sqrt(I^2 + Q^2) / 2,  offset = (A0 + A1 + A2 + A3) / 4,
  *     distance = c * phi / (4 * pi * f)  (modulo c / (2 f)).
  *
- * Layout: taps (F, 4, N) row-major, element type u16, f32 or f64 (tof.template.h,
- * once per type); outputs (F, N) or (N,) float64. Work is done in blocks of
- * TOF_BLOCK sites, each block's scratch in L1, blocks split across threads.
+ * Layout: taps (F, 4, N) row-major, of any element type (tof.template.h, once
+ * per type; the Python layer passes u16, f32 or f64); outputs (F, N) or (N,)
+ * float64. Work is done in blocks of TOF_BLOCK sites, each block's scratch in
+ * L1, blocks split across threads.
  *
  * Unwrapping: brute force over the wrap counts w = 0 .. nwrap-1 of the
  * frequency with the longest ambiguity interval A = c / (2 f_base) (nwrap =
@@ -369,68 +370,31 @@ int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double 
 }
 
 /* ------------------------------------------------------------------ the tap types */
-/* the arrays of a call that reads taps: taps (F, 4, N); the plan, depth, residual and
-   wraps of rgbz_tof_depth (NULL for rgbz_tof_demodulate); phase, amp, offset (F, N) or
-   NULL where not stored */
-typedef struct {
-    const void *taps;
-    ptrdiff_t F, N;
-    const tof_plan *p;
-    double *depth, *residual;
-    int32_t *wraps;
-    double *phase, *amp, *offset;
-} tof_args;
+/* the per-block kernels that read the taps and the loop over the blocks, per element type */
+#define RGBZ_TYPE_TEMPLATE "tof.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
 
-/* the per-block kernels that read the taps, per tap type (PyWavelets' template scheme) */
-#if defined(TAP_T) || defined(TS)
-#error "tof.c: the template parameters must not be defined here"
-#endif
-#define TAP_T uint16_t
-#define TS u16
-#include "tof.template.h"
-#undef TAP_T
-#undef TS
-#define TAP_T float
-#define TS f32
-#include "tof.template.h"
-#undef TAP_T
-#undef TS
-#define TAP_T double
-#define TS f64
-#include "tof.template.h"
-#undef TAP_T
-#undef TS
-
-/* the per-block kernels by tap type (indexed by in_type - RGBZ_T_U16) and the loop over
-   the blocks of the two entry points that read taps */
-typedef void (*tof_block_fn)(const tof_args *a, ptrdiff_t n0, ptrdiff_t nb);
-static const tof_block_fn tof_demod_by_type[3] = {tof_demod_u16, tof_demod_f32, tof_demod_f64};
-static const tof_block_fn tof_depth_by_type[3] = {tof_depth_u16, tof_depth_f32, tof_depth_f64};
-
-static int tof_tap_blocks(int in_type, const tof_args *a, const tof_block_fn *by_type,
-                          int workers)
+/* The entry points that read taps (F, 4, N) of in_type: demodulation only (p = NULL), or
+   demodulation and unwrapping with plan p into depth, residual and wraps; phase, amp,
+   offset (F, N) where they are not NULL. */
+static int tof_taps(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, const tof_plan *p,
+                    double *depth, double *residual, int32_t *wraps, double *phase,
+                    double *amp, double *offset, int workers)
 {
-    if (a->N == 0) return RGBZ_OK;
-    if (in_type != RGBZ_T_U16 && in_type != RGBZ_T_F32 && in_type != RGBZ_T_F64)
-        return RGBZ_EINVAL;
-    const tof_block_fn fn = by_type[in_type - RGBZ_T_U16];
-    const ptrdiff_t N = a->N;
-    const int nth = rgbz_threads(workers);
-    (void)nth;
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
-        const ptrdiff_t n0 = blk * TOF_BLOCK;
-        fn(a, n0, N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK);
-    }
-    return RGBZ_OK;
+    if (N == 0) return RGBZ_OK;
+#define TOF_TAPS_(s, T)                                                                      \
+    return RGBZ_CAT(tof_blocks, s)((const T *)taps, F, N, p, depth, residual, wraps, phase,  \
+                                   amp, offset, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOF_TAPS_, return RGBZ_EINVAL)
+#undef TOF_TAPS_
 }
 
 int rgbz_tof_demodulate(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                         double *phase, double *amp, double *offset, int workers)
 {
     if (!taps || !phase || !amp || !offset || F < 1 || N < 0) return RGBZ_EINVAL;
-    const tof_args a = {taps, F, N, NULL, NULL, NULL, NULL, phase, amp, offset};
-    return tof_tap_blocks(in_type, &a, tof_demod_by_type, workers);
+    return tof_taps(in_type, taps, F, N, NULL, NULL, NULL, NULL, phase, amp, offset, workers);
 }
 
 int rgbz_tof_depth(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
@@ -442,8 +406,8 @@ int rgbz_tof_depth(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
     if (!taps || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
     int st = tof_plan_init(&plan, F, freqs, weights, max_range);
     if (st != RGBZ_OK) return st;
-    const tof_args a = {taps, F, N, &plan, depth, residual, wraps, phase, amp, offset};
-    return tof_tap_blocks(in_type, &a, tof_depth_by_type, workers);
+    return tof_taps(in_type, taps, F, N, &plan, depth, residual, wraps, phase, amp, offset,
+                    workers);
 }
 
 int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,

@@ -3,14 +3,14 @@
  * upsampling of its depth (rgbz_fast.tof.upsample_depth). Declared in tof_guided.h.
  *
  * The chain, one entry point per stage (the Python layer allocates and calls them):
- *   rgbz_tofg_prepare_*   taps -> phasors (float) and the noise variance of each measurement
- *   rgbz_tofg_colour_*    the guide image at the measurements, and its noise (Immerkaer)
+ *   rgbz_tofg_prepare     taps -> phasors (float) and the noise variance of each measurement
+ *   rgbz_tofg_colour      the guide image at the measurements, and its noise (Immerkaer)
  *   rgbz_tofg_pass        one 1-D pass of the cross-bilateral mean (rows or columns); two
  *                         rounds of a row pass then a column pass make the 2-D mean
  *   (rgbz_tof_depth_iq)   atan2, amplitude, unwrapping (tof.c)
  *   rgbz_tofg_validity    snr, sigma, implied reflectance and the validity bits
  *   rgbz_tofg_flying      the flying-pixel test with colour edges
- *   rgbz_tofg_upsample_*  a depth at every pixel of the guide
+ *   rgbz_tofg_upsample    a depth at every pixel of the guide
  *
  * Why a row pass then a column pass: the column pass averages row-pass outputs of
  * different grid rows, which share no measurement, so the variance of the 2-D mean is
@@ -27,40 +27,19 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 #include "rgbz.h"
+#include "rgbz_ops.h"
 #include "tof_guided.h"
 
 #define TOFG_PI 3.141592653589793
 /* a weight exp(-x) with x above this is 0: e^-36 = 2.3e-16 cannot change a mean */
 #define TOFG_CUT 36.0f
 
-/* an OpenMP loop over the iterations that follow, on a local `nth` threads (a _Pragma
-   string is not macro-expanded, so the name is fixed) */
-#ifdef _OPENMP
-#define TOFG_PARALLEL_FOR _Pragma("omp parallel for schedule(static) num_threads(nth)")
-static inline int tofg_nth(int w) { return w > 0 ? w : omp_get_max_threads(); }
-#else
-#define TOFG_PARALLEL_FOR
-static inline int tofg_nth(int w) { (void)w; return 1; }
-#endif
-
-/* the hot loops in three builds (AVX-512F, AVX2, baseline), picked at load time; every
-   build computes the same IEEE operations (C99 mode: GCC contracts no multiply-add into an
-   FMA), so the result does not depend on the CPU */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define TOFG_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define TOFG_CLONES
-#endif
-
 /* exp(-x) for x in [0, TOFG_CUT] in float, branch-free so that the weight loops vectorise:
    2^(-x log2 e) = 2^-n 2^-f with n the nearest integer and f in [-0.5, 0.5], 2^-f by its
    Taylor polynomial of degree 6 in f ln 2 (relative error below 3e-7), 2^-n by the exponent
    bits. x >= TOFG_CUT gives 0. */
-static inline __attribute__((always_inline)) float tofg_exp_neg(float x)
+RGBZ_INLINE float tofg_exp_neg(float x)
 {
     const float xc = x < TOFG_CUT ? x : TOFG_CUT;
     const float y = xc * 1.44269504f;                          /* in [0, 52] */
@@ -75,95 +54,7 @@ static inline __attribute__((always_inline)) float tofg_exp_neg(float x)
     return x < TOFG_CUT ? r : 0.0f;
 }
 
-/* ------------------------------------------------------------------ prepare */
-#define TOFG_PREPARE(TS, T)                                                                   \
-int rgbz_tofg_prepare_##TS(const T *taps, ptrdiff_t F, ptrdiff_t N, double gain,             \
-                           double black, double supp, double const_var, double prnu,         \
-                           double white, float *zr, float *zi, float *v, uint8_t *sat,       \
-                           double *offset, int workers)                                      \
-{                                                                                            \
-    if (!taps || !zr || !zi || !v || !sat || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)       \
-        return RGBZ_EINVAL;                                                                  \
-    const double inv_f = 2.0 / (double)F, k = gain * supp;                                   \
-    const int nth = tofg_nth(workers);                                                       \
-    (void)nth;                                                                               \
-    TOFG_PARALLEL_FOR                                                                        \
-    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256) {                                              \
-        const ptrdiff_t nb = N - b0 < 256 ? N - b0 : 256;                                    \
-        double acc[256];                                                                     \
-        uint8_t hit[256];                                                                    \
-        for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }                     \
-        for (ptrdiff_t f = 0; f < F; f++) {                                                  \
-            const T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,              \
-                    *A3 = A0 + 3 * N;                                                        \
-            float *pr = zr + f * N + b0, *pi = zi + f * N + b0;                              \
-            for (ptrdiff_t j = 0; j < nb; j++) {                                             \
-                const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];                 \
-                pr[j] = (float)(a0 - a2);                                                    \
-                pi[j] = (float)(a3 - a1);                                                    \
-                const double off = 0.25 * ((a0 + a1) + (a2 + a3));                           \
-                if (offset) offset[f * N + b0 + j] = off;                                    \
-                double held = off - black;                                                   \
-                held = held > 0.0 ? held : 0.0;                                              \
-                const double ph = prnu * held;                                               \
-                acc[j] += k * held + const_var + ph * ph;                                    \
-                const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;               \
-                const double mx = m01 > m23 ? m01 : m23;                                     \
-                hit[j] |= (uint8_t)(mx >= white);                                            \
-            }                                                                                \
-        }                                                                                    \
-        for (ptrdiff_t j = 0; j < nb; j++) {                                                 \
-            v[b0 + j] = (float)(acc[j] * inv_f);                                             \
-            sat[b0 + j] |= hit[j];                                                           \
-        }                                                                                    \
-    }                                                                                        \
-    return RGBZ_OK;                                                                          \
-}
-
-TOFG_PREPARE(u16, uint16_t)
-TOFG_PREPARE(f32, float)
-TOFG_PREPARE(f64, double)
-
 /* ------------------------------------------------------------------ the guide's colours */
-static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers);
-
-#define TOFG_COLOUR(TS, T)                                                                    \
-int rgbz_tofg_colour_##TS(const T *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,    \
-                          ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block,         \
-                          double scale, float *col, float *cells, double *lap, int workers)   \
-{                                                                                            \
-    if (!guide || !row_px || !col_px || !col || !lap || R < 0 || C < 0 || block < 1          \
-        || block > 2)                                                                        \
-        return RGBZ_EINVAL;                                                                  \
-    const ptrdiff_t N = R * C;                                                               \
-    const double cell_w = scale / (double)(block * block);                                   \
-    for (ptrdiff_t r = 0; r < R; r++)                                                        \
-        if (row_px[r] < 0 || row_px[r] + block > H) return RGBZ_EINVAL;                      \
-    for (ptrdiff_t c = 0; c < C; c++)                                                        \
-        if (col_px[c] < 0 || col_px[c] + block > W) return RGBZ_EINVAL;                      \
-    const int nth = tofg_nth(workers);                                                       \
-    (void)nth;                                                                               \
-    TOFG_PARALLEL_FOR                                                                        \
-    for (ptrdiff_t r = 0; r < R; r++) {                                                      \
-        for (ptrdiff_t c = 0; c < C; c++) {                                                  \
-            const ptrdiff_t n = r * C + c;                                                   \
-            double s[3] = {0.0, 0.0, 0.0};                                                   \
-            int k = 0;                                                                       \
-            for (int dr = 0; dr < block; dr++)                                               \
-                for (int dc = 0; dc < block; dc++, k++) {                                    \
-                    const T *p = guide + ((row_px[r] + dr) * W + col_px[c] + dc) * 3;        \
-                    for (int ch = 0; ch < 3; ch++) {                                         \
-                        s[ch] += (double)p[ch];                                              \
-                        if (cells) cells[(k * 3 + ch) * N + n] = (float)(p[ch] * scale);     \
-                    }                                                                        \
-                }                                                                            \
-            for (int ch = 0; ch < 3; ch++) col[ch * N + n] = (float)(s[ch] * cell_w);        \
-        }                                                                                    \
-    }                                                                                        \
-    tofg_laplacian(col, R, C, lap, workers);                                                 \
-    return RGBZ_OK;                                                                          \
-}
-
 /* sum over the interior of |L * plane| for L = [1 -2 1; -2 4 -2; 1 -2 1] (Immerkaer 1996),
    per plane of col (3, R, C), in double */
 static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers)
@@ -172,7 +63,7 @@ static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *l
     for (int ch = 0; ch < 3; ch++) {
         const float *p = col + ch * N;
         double total = 0.0;
-        const int nth = tofg_nth(workers);
+        const int nth = rgbz_threads(workers);
         (void)nth;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) reduction(+:total) num_threads(nth)
@@ -192,10 +83,6 @@ static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *l
     }
 }
 
-TOFG_COLOUR(u8, uint8_t)
-TOFG_COLOUR(u16, uint16_t)
-TOFG_COLOUR(f32, float)
-TOFG_COLOUR(f64, double)
 
 /* ------------------------------------------------------------------ the 1-D passes */
 typedef struct {
@@ -214,7 +101,7 @@ typedef struct {
 /* the weights of one offset over the cells [c0, c1) of a row: w (0 or 1 on entry) times
    exp(-(max(chi_p - 2F, 0) / (2 h^2) + max(chi_c - 3, 0) / (2 h_c^2))), chi_p from the
    summed squared guide differences in chi (divided here by the two variances) */
-static inline __attribute__((always_inline)) void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_t row0,
+RGBZ_INLINE void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_t row0,
                                      ptrdiff_t c0, ptrdiff_t c1, float bias,
                                      const float *restrict chi, float *restrict w)
 {
@@ -234,7 +121,7 @@ static inline __attribute__((always_inline)) void tofg_weights(const tofg_pass_a
 
 /* the output columns [clo, chi_) of row r, any layout; scratch: num_re, num_im (F C each),
    den, w2v, w2n, chi, w (C each) */
-TOFG_CLONES static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
+RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
                                       ptrdiff_t clo, ptrdiff_t chi_)
 {
     const ptrdiff_t F = p->F, C = p->C, N = p->R * p->C;
@@ -342,7 +229,7 @@ TOFG_CLONES static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, floa
    generic row's (offsets in increasing order, frequencies in order). */
 #define TOFG_BW 16
 #define TOFG_UNROLL _Pragma("GCC unroll 4")
-static inline __attribute__((always_inline)) void tofg_block(
+RGBZ_INLINE void tofg_block(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, int ntaps, const int NF)
 {
     const ptrdiff_t N = p->R * p->C;
@@ -431,7 +318,7 @@ static inline __attribute__((always_inline)) void tofg_block(
 
 /* Row r: the 16-column blocks whose every tap is on the grid by the fast blocks, the rest by
    the generic row. uniform: the grid lines along the axis are `step` pixels apart. */
-TOFG_CLONES static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
+RGBZ_CLONES_512 static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
                                        int uniform, int64_t step, ptrdiff_t clo,
                                        ptrdiff_t chi_)
 {
@@ -499,7 +386,7 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
     const int64_t step = nl > 1 ? px[1] - px[0] : 1;
     int uniform = 1;
     for (ptrdiff_t i = 1; i < nl; i++) uniform &= px[i] - px[i - 1] == step;
-    const int nth = tofg_nth(workers);
+    const int nth = rgbz_threads(workers);
     (void)nth;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth)
@@ -547,9 +434,9 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
         || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
         return RGBZ_EINVAL;
     const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)F;
-    const int nth = tofg_nth(workers);
+    const int nth = rgbz_threads(workers);
     (void)nth;
-    TOFG_PARALLEL_FOR
+    RGBZ_PARALLEL_FOR
     for (ptrdiff_t n = 0; n < N; n++) {
         const double vn = var[n], sd = sqrt(vn), d = depth[n];
         const double dd = d > 0.0 ? d : 1.0;
@@ -621,7 +508,7 @@ static int tofg_candidate(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t
 }
 
 /* the hits centred at the cells of row r along every direction (tofg_candidate's code) */
-TOFG_CLONES static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, uint8_t *code)
+RGBZ_CLONES_512 static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, uint8_t *code)
 {
     const ptrdiff_t C = p->C;
     const double *d = p->depth, *s = p->sigma;
@@ -725,11 +612,11 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
     uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
     if (!code) return RGBZ_ENOMEM;
     memcpy(depth_out, depth, (size_t)(R * C) * sizeof *depth_out);
-    const int nth = tofg_nth(workers);
+    const int nth = rgbz_threads(workers);
     (void)nth;
-    TOFG_PARALLEL_FOR
+    RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
-    TOFG_PARALLEL_FOR
+    RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++)
         for (ptrdiff_t c = 0; c < C; c++) tofg_fly_cell(&p, code, r, c);
     free(code);
@@ -902,66 +789,46 @@ static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, 
     *conf = (float)den;                               /* the bilinear weights sum to 1 */
 }
 
-#define TOFG_UPSAMPLE(TS, T)                                                                  \
-int rgbz_tofg_upsample_##TS(const T *guide, ptrdiff_t H, ptrdiff_t W, double scale,           \
-                            const double *cscale, const double *depth, const double *sigma,   \
-                            const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,     \
-                            const double *cc, double spacing, ptrdiff_t reach, double inv2s2, \
-                            double inv2hc2, double tol_k, double tol_min, float *out,         \
-                            float *conf, int workers)                                         \
-{                                                                                            \
-    if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf         \
-        || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4)   \
-        return RGBZ_EINVAL;                                                                  \
-    const ptrdiff_t N = R * C;                                                               \
-    ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);                            \
-    float *fx = malloc((size_t)(W > 0 ? W : 1) * sizeof *fx);                                \
-    float *prior0 = malloc((size_t)N * sizeof *prior0), *prior = malloc((size_t)N * sizeof *prior); \
-    double *fd = malloc((size_t)N * sizeof *fd), *fs = malloc((size_t)N * sizeof *fs);       \
-    if (!cx || !fx || !prior0 || !prior || !fd || !fs) {                                     \
-        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);                   \
-        return RGBZ_ENOMEM;                                                                  \
-    }                                                                                        \
-    for (ptrdiff_t x = 0; x < W; x++) tofg_bracket(cc, C, (double)x, cx + x, fx + x);        \
-    for (ptrdiff_t m = 0; m < N; m++) prior0[m] = depth[m] == depth[m] ? 1.0f : 0.0f;        \
-    const tofg_up_args p0 = {depth, sigma, col, prior0, R, C, rc, cc, spacing,               \
-                             (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};   \
-    const int nth = tofg_nth(workers);                                                       \
-    (void)nth;                                                                               \
-    TOFG_PARALLEL_FOR                                                                        \
-    for (ptrdiff_t r = 0; r < R; r++)                                                        \
-        for (ptrdiff_t c = 0; c < C; c++) tofg_fill_node(&p0, prior0, r, c, reach, fd, fs, prior); \
-    const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,        \
-                            (float)inv2hc2, (float)tol_k, (float)tol_min};                   \
-    tofg_node *nodes = malloc((size_t)N * sizeof *nodes);                                    \
-    if (!nodes) {                                                                            \
-        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);                   \
-        return RGBZ_ENOMEM;                                                                  \
-    }                                                                                        \
-    TOFG_PARALLEL_FOR                                                                        \
-    for (ptrdiff_t m = 0; m < N; m++) {                                                      \
-        const tofg_node nm = {col[m], col[N + m], col[2 * N + m], prior[m], fd[m], fs[m]};   \
-        nodes[m] = nm;                                                                       \
-    }                                                                                        \
-    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),            \
-                s2 = (float)(scale * cscale[2]);                                             \
-    TOFG_PARALLEL_FOR                                                                        \
-    for (ptrdiff_t y = 0; y < H; y++) {                                                      \
-        ptrdiff_t r;                                                                         \
-        float fy;                                                                            \
-        tofg_bracket(rc, R, (double)y, &r, &fy);                                             \
-        for (ptrdiff_t x = 0; x < W; x++) {                                                  \
-            const T *g = guide + (y * W + x) * 3;                                            \
-            const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};      \
-            tofg_up_pixel(nodes, &p, r, fy, cx[x], fx[x], pc, out + y * W + x,               \
-                          conf + y * W + x);                                                 \
-        }                                                                                    \
-    }                                                                                        \
-    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);          \
-    return RGBZ_OK;                                                                          \
+/* ------------------------------------------------------------------ the element types */
+/* prepare, colour and upsample for every element type (tof_guided.template.h), and the entry
+   points that call the instance of in_type */
+#define RGBZ_TYPE_TEMPLATE "tof_guided.template.h"
+#include "rgbz_each_type.h"
+#undef RGBZ_TYPE_TEMPLATE
+
+int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double gain,
+                      double black, double supp, double const_var, double prnu, double white,
+                      float *zr, float *zi, float *v, uint8_t *sat, double *offset, int workers)
+{
+#define TOFG_PREPARE_(s, T)                                                                  \
+    return RGBZ_CAT(tofg_prepare, s)((const T *)taps, F, N, gain, black, supp, const_var,    \
+                                     prnu, white, zr, zi, v, sat, offset, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_PREPARE_, return RGBZ_EINVAL)
+#undef TOFG_PREPARE_
 }
 
-TOFG_UPSAMPLE(u8, uint8_t)
-TOFG_UPSAMPLE(u16, uint16_t)
-TOFG_UPSAMPLE(f32, float)
-TOFG_UPSAMPLE(f64, double)
+int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
+                     const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
+                     int block, double scale, float *col, float *cells, double *lap, int workers)
+{
+#define TOFG_COLOUR_(s, T)                                                                   \
+    return RGBZ_CAT(tofg_colour, s)((const T *)guide, H, W, row_px, R, col_px, C, block,     \
+                                    scale, col, cells, lap, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_COLOUR_, return RGBZ_EINVAL)
+#undef TOFG_COLOUR_
+}
+
+int rgbz_tofg_upsample(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W, double scale,
+                       const double *cscale, const double *depth, const double *sigma,
+                       const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
+                       const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
+                       double inv2hc2, double tol_k, double tol_min, float *out, float *conf,
+                       int workers)
+{
+#define TOFG_UPSAMPLE_(s, T)                                                                 \
+    return RGBZ_CAT(tofg_upsample, s)((const T *)guide, H, W, scale, cscale, depth, sigma,   \
+                                      col, R, C, rc, cc, spacing, reach, inv2s2, inv2hc2,    \
+                                      tol_k, tol_min, out, conf, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_UPSAMPLE_, return RGBZ_EINVAL)
+#undef TOFG_UPSAMPLE_
+}

@@ -1,7 +1,8 @@
 /*
  * tof_guided.h -- the colour-guided ToF ISP and the guided upsampling of its depth
- * (tof_guided.c). Plain C99, no Python.h; status codes of rgbz.h. Every entry point is
- * typed: one function per element type of the array it reads (suffix u8, u16, f32, f64).
+ * (tof_guided.c). Plain C99, no Python.h; status codes of rgbz.h. An entry point that reads
+ * an array of the caller's element type (the taps, the guide) takes its rgbz_type code
+ * in_type beside a void pointer (rgbz_templating.h); RGBZ_EINVAL for another code.
  *
  * Layout: the Z measurements fill a grid of R rows and C columns in row-major order
  * (N = R C; the Python layer scatters other layouts onto such a grid and marks the holes
@@ -18,35 +19,16 @@
    gain held / (1 - suppression) + const_var + (prnu held)^2, held = max(offset - black, 0)
    in DN), sat[n] |= 1 where a tap reaches white, and the offset (F, N) mean(A_k) when
    offset is not NULL. */
-int rgbz_tofg_prepare_u16(const uint16_t *taps, ptrdiff_t F, ptrdiff_t N, double gain,
-                          double black, double supp, double const_var, double prnu,
-                          double white, float *zr, float *zi, float *v, uint8_t *sat,
-                          double *offset, int workers);
-int rgbz_tofg_prepare_f32(const float *taps, ptrdiff_t F, ptrdiff_t N, double gain,
-                          double black, double supp, double const_var, double prnu,
-                          double white, float *zr, float *zi, float *v, uint8_t *sat,
-                          double *offset, int workers);
-int rgbz_tofg_prepare_f64(const double *taps, ptrdiff_t F, ptrdiff_t N, double gain,
-                          double black, double supp, double const_var, double prnu,
-                          double white, float *zr, float *zi, float *v, uint8_t *sat,
-                          double *offset, int workers);
+int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double gain,
+                      double black, double supp, double const_var, double prnu, double white,
+                      float *zr, float *zi, float *v, uint8_t *sat, double *offset, int workers);
 
 /* The guide (H, W, 3) at the measurements: col (3, N) the mean over the block x block
    cells of each (times scale), cells (block^2, 3, N) each cell (NULL: not stored), and
    lap (3,) the sums of |Immerkaer's Laplacian| of col over the grid's interior. */
-int rgbz_tofg_colour_u8(const uint8_t *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,
-                        ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block, double scale,
-                        float *col, float *cells, double *lap, int workers);
-int rgbz_tofg_colour_u16(const uint16_t *guide, ptrdiff_t H, ptrdiff_t W,
-                         const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
-                         int block, double scale, float *col, float *cells, double *lap,
-                         int workers);
-int rgbz_tofg_colour_f32(const float *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,
-                         ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block, double scale,
-                         float *col, float *cells, double *lap, int workers);
-int rgbz_tofg_colour_f64(const double *guide, ptrdiff_t H, ptrdiff_t W, const int64_t *row_px,
-                         ptrdiff_t R, const int64_t *col_px, ptrdiff_t C, int block, double scale,
-                         float *col, float *cells, double *lap, int workers);
+int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
+                     const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
+                     int block, double scale, float *col, float *cells, double *lap, int workers);
 
 /* One 1-D pass of the guided cross-bilateral mean along rows (axis 1) or columns (axis 0):
    data zr, zi (F, N), v (N,); guide phasors gr, gi (F, N) with variance gv (N,); colours
@@ -97,29 +79,11 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
    (3,)): the depth of the heaviest and the weighted mean of those within max(tol_k sigma,
    tol_min) of it; confidence: the summed weight of that mean. NaN and 0 where no node
    around the pixel has a depth. */
-int rgbz_tofg_upsample_u8(const uint8_t *guide, ptrdiff_t H, ptrdiff_t W, double scale,
-                          const double *cscale, const double *depth, const double *sigma,
-                          const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
-                          const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
-                          double inv2hc2, double tol_k, double tol_min, float *out,
-                          float *conf, int workers);
-int rgbz_tofg_upsample_u16(const uint16_t *guide, ptrdiff_t H, ptrdiff_t W, double scale,
-                           const double *cscale, const double *depth, const double *sigma,
-                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
-                           const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
-                           double inv2hc2, double tol_k, double tol_min, float *out,
-                           float *conf, int workers);
-int rgbz_tofg_upsample_f32(const float *guide, ptrdiff_t H, ptrdiff_t W, double scale,
-                           const double *cscale, const double *depth, const double *sigma,
-                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
-                           const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
-                           double inv2hc2, double tol_k, double tol_min, float *out,
-                           float *conf, int workers);
-int rgbz_tofg_upsample_f64(const double *guide, ptrdiff_t H, ptrdiff_t W, double scale,
-                           const double *cscale, const double *depth, const double *sigma,
-                           const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
-                           const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
-                           double inv2hc2, double tol_k, double tol_min, float *out,
-                           float *conf, int workers);
+int rgbz_tofg_upsample(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W, double scale,
+                       const double *cscale, const double *depth, const double *sigma,
+                       const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
+                       const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
+                       double inv2hc2, double tol_k, double tol_min, float *out, float *conf,
+                       int workers);
 
 #endif

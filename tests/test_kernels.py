@@ -52,6 +52,37 @@ def test_counting_code_only_in_the_counting_module():
         assert "rgbz_opc_cur" not in out.stdout          # (an empty table if stripped)
 
 
+def test_counting_module_bridges_the_counted_kernels_only():
+    # _kernels_count.pyx is _kernels_common.pxi alone: the counted kernels and the constants,
+    # the same objects' names and values as in _kernels
+    public = {n for n in dir(_kernels_count) if not n.startswith("_")}
+    assert {"reconstruct", "learned", "tof_demodulate", "plan_layout"} <= public
+    assert not {"demosaic_malvar", "ssim_sums", "oetf_finish", "tof_bilateral"} & public
+    assert public <= set(dir(_kernels))
+    for name in ("NOPS", "PLAN_LIMITS", "METHODS", "PRECISIONS", "EXP_MODES", "OP_CATEGORIES"):
+        assert getattr(_kernels_count, name) == getattr(_kernels, name)
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_a_precision_code_without_a_kernel_is_refused(name):
+    # _kernels_of, the bridge's one switch over the precisions, names the parameter
+    k = MODULES[name]
+    bad = max(k.PRECISIONS.values()) + 1
+    d = np.zeros((8, 8), np.uint16)
+    phase_map, plans = build_plans(rz.mask1(), "bi")
+    counts = {"opcounts": np.zeros(k.NOPS, np.uint64)} if k.counting_build() else {}
+    with pytest.raises(ValueError, match="precision"):
+        k.reconstruct(d, np.empty_like(d), bad, 2, 2, phase_map,
+                      plans.view(np.uint8).reshape(-1), 1, 1e-3, 0.0, 0.5, 2047.0, 0, 1,
+                      **counts)
+    i32, f64 = np.zeros((1, 1), np.int32), np.zeros((1, 1), np.float64)
+    with pytest.raises(ValueError, match="precision"):
+        k.learned(d, np.empty_like(d), bad, 2, 2, phase_map, np.ones(1, np.int32), i32, i32,
+                  np.ones((1, 4), np.int32), np.zeros((1, 4, 1), np.int32),
+                  np.zeros((1, 4, 1), np.int32), f64, f64, np.zeros((1, 1, 8), np.float32),
+                  np.zeros((1, 1, 8)), 0, 0, 2047.0, 1, **counts)
+
+
 # -- constants from the C enums -----------------------------------------------------------------
 
 def test_tables_come_from_the_c_enums():
@@ -173,3 +204,15 @@ def test_stub_lists_exactly_the_public_names_of_the_module():
               and getattr(getattr(_kernels, n), "__module__", "rgbz_fast._kernels")
               in ("rgbz_fast._kernels", None)}
     assert set(stub) == public
+
+
+def test_counting_stub_reexports_exactly_the_public_names_of_the_module():
+    # src/rgbz_fast/_kernels_count.pyi: the names of _kernels_count, re-exported from _kernels
+    import ast
+    from pathlib import Path
+
+    tree = ast.parse((Path(rz.__file__).parent / "_kernels_count.pyi").read_text())
+    stub = [a.asname for n in tree.body if isinstance(n, ast.ImportFrom) for a in n.names]
+    assert all(n.module == "rgbz_fast._kernels" for n in tree.body if isinstance(n, ast.ImportFrom))
+    public = {n for n in dir(_kernels_count) if not n.startswith("_")}
+    assert sorted(stub) == sorted(public)

@@ -1,0 +1,20 @@
+/*
+ * recon_f64.c -- the reconstruction in double arithmetic: recon_core.template.h and its frame
+ * loops for REAL = double, and the entry points rgbz_reconstruct_f64 and rgbz_fast_exp_f64
+ * (rgbz.h). One file per precision, so that the two compile in parallel: they are most of
+ * the build's compile time.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <stdint.h>
+#include "rgbz.h"
+#include "rgbz_ops.h"
+#include "recon.h"
+#include "recon_mask1.h"
+
+#define REAL double
+#define RS f64
+#include "recon_core.template.h"
+#undef REAL
+#undef RS

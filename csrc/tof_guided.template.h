@@ -1,0 +1,158 @@
+/*
+ * tof_guided.template.h -- the stages of the colour-guided ToF ISP that read an array of the
+ * caller's element type: the taps (prepare), the guide image (colour, upsample). tof_guided.c
+ * has the algorithm, the helpers these call, the instances and the entry points.
+ *
+ * Template parameters (rgbz_templating.h), #defined by rgbz_each_type.h, which tof_guided.c
+ * includes once:
+ *   IN_T  the element type of the taps or of the guide
+ *   IS    its suffix (u8, u16, f32, f64)
+ */
+#ifndef IN_T
+#error "tof_guided.template.h: #define IN_T (the element type of the taps or the guide)"
+#endif
+#ifndef IS
+#error "tof_guided.template.h: #define IS (the suffix of IN_T: u8, u16, f32 or f64)"
+#endif
+
+/* the prepare stage of rgbz_tofg_prepare (tof_guided.h) for taps of IN_T */
+static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N, double gain,
+                                      double black, double supp, double const_var, double prnu,
+                                      double white, float *zr, float *zi, float *v,
+                                      uint8_t *sat, double *offset, int workers)
+{
+    if (!taps || !zr || !zi || !v || !sat || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
+        return RGBZ_EINVAL;
+    const double inv_f = 2.0 / (double)F, k = gain * supp;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256) {
+        const ptrdiff_t nb = N - b0 < 256 ? N - b0 : 256;
+        double acc[256];
+        uint8_t hit[256];
+        for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
+                    *A3 = A0 + 3 * N;
+            float *pr = zr + f * N + b0, *pi = zi + f * N + b0;
+            for (ptrdiff_t j = 0; j < nb; j++) {
+                const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
+                pr[j] = (float)(a0 - a2);
+                pi[j] = (float)(a3 - a1);
+                const double off = 0.25 * ((a0 + a1) + (a2 + a3));
+                if (offset) offset[f * N + b0 + j] = off;
+                double held = off - black;
+                held = held > 0.0 ? held : 0.0;
+                const double ph = prnu * held;
+                acc[j] += k * held + const_var + ph * ph;
+                const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
+                const double mx = m01 > m23 ? m01 : m23;
+                hit[j] |= (uint8_t)(mx >= white);
+            }
+        }
+        for (ptrdiff_t j = 0; j < nb; j++) {
+            v[b0 + j] = (float)(acc[j] * inv_f);
+            sat[b0 + j] |= hit[j];
+        }
+    }
+    return RGBZ_OK;
+}
+
+/* the colour stage of rgbz_tofg_colour for a guide of IN_T */
+static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
+                                     const int64_t *row_px, ptrdiff_t R, const int64_t *col_px,
+                                     ptrdiff_t C, int block, double scale, float *col,
+                                     float *cells, double *lap, int workers)
+{
+    if (!guide || !row_px || !col_px || !col || !lap || R < 0 || C < 0 || block < 1
+        || block > 2)
+        return RGBZ_EINVAL;
+    const ptrdiff_t N = R * C;
+    const double cell_w = scale / (double)(block * block);
+    for (ptrdiff_t r = 0; r < R; r++)
+        if (row_px[r] < 0 || row_px[r] + block > H) return RGBZ_EINVAL;
+    for (ptrdiff_t c = 0; c < C; c++)
+        if (col_px[c] < 0 || col_px[c] + block > W) return RGBZ_EINVAL;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++) {
+        for (ptrdiff_t c = 0; c < C; c++) {
+            const ptrdiff_t n = r * C + c;
+            double s[3] = {0.0, 0.0, 0.0};
+            int k = 0;
+            for (int dr = 0; dr < block; dr++)
+                for (int dc = 0; dc < block; dc++, k++) {
+                    const IN_T *p = guide + ((row_px[r] + dr) * W + col_px[c] + dc) * 3;
+                    for (int ch = 0; ch < 3; ch++) {
+                        s[ch] += (double)p[ch];
+                        if (cells) cells[(k * 3 + ch) * N + n] = (float)(p[ch] * scale);
+                    }
+                }
+            for (int ch = 0; ch < 3; ch++) col[ch * N + n] = (float)(s[ch] * cell_w);
+        }
+    }
+    tofg_laplacian(col, R, C, lap, workers);
+    return RGBZ_OK;
+}
+
+/* the upsampling of rgbz_tofg_upsample for a guide of IN_T */
+static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
+                                       double scale, const double *cscale, const double *depth,
+                                       const double *sigma, const float *col, ptrdiff_t R,
+                                       ptrdiff_t C, const double *rc, const double *cc,
+                                       double spacing, ptrdiff_t reach, double inv2s2,
+                                       double inv2hc2, double tol_k, double tol_min, float *out,
+                                       float *conf, int workers)
+{
+    if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf
+        || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4)
+        return RGBZ_EINVAL;
+    const ptrdiff_t N = R * C;
+    ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);
+    float *fx = malloc((size_t)(W > 0 ? W : 1) * sizeof *fx);
+    float *prior0 = malloc((size_t)N * sizeof *prior0), *prior = malloc((size_t)N * sizeof *prior);
+    double *fd = malloc((size_t)N * sizeof *fd), *fs = malloc((size_t)N * sizeof *fs);
+    if (!cx || !fx || !prior0 || !prior || !fd || !fs) {
+        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
+        return RGBZ_ENOMEM;
+    }
+    for (ptrdiff_t x = 0; x < W; x++) tofg_bracket(cc, C, (double)x, cx + x, fx + x);
+    for (ptrdiff_t m = 0; m < N; m++) prior0[m] = depth[m] == depth[m] ? 1.0f : 0.0f;
+    const tofg_up_args p0 = {depth, sigma, col, prior0, R, C, rc, cc, spacing,
+                             (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++)
+        for (ptrdiff_t c = 0; c < C; c++) tofg_fill_node(&p0, prior0, r, c, reach, fd, fs, prior);
+    const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
+                            (float)inv2hc2, (float)tol_k, (float)tol_min};
+    tofg_node *nodes = malloc((size_t)N * sizeof *nodes);
+    if (!nodes) {
+        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
+        return RGBZ_ENOMEM;
+    }
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t m = 0; m < N; m++) {
+        const tofg_node nm = {col[m], col[N + m], col[2 * N + m], prior[m], fd[m], fs[m]};
+        nodes[m] = nm;
+    }
+    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),
+                s2 = (float)(scale * cscale[2]);
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t y = 0; y < H; y++) {
+        ptrdiff_t r;
+        float fy;
+        tofg_bracket(rc, R, (double)y, &r, &fy);
+        for (ptrdiff_t x = 0; x < W; x++) {
+            const IN_T *g = guide + (y * W + x) * 3;
+            const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};
+            tofg_up_pixel(nodes, &p, r, fy, cx[x], fx[x], pc, out + y * W + x,
+                          conf + y * W + x);
+        }
+    }
+    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);
+    return RGBZ_OK;
+}

@@ -1,0 +1,531 @@
+# The part of the bridge that both extensions hold (src/rgbz_fast/meson.build): _kernels.pyx
+# and _kernels_count.pyx include it. It declares the C core's API (csrc/rgbz.h, learned.h),
+# takes the Python constants from its enums, and bridges the kernels that the counting build
+# counts (reconstruct, learned, tof_demodulate) and the build queries.
+
+from libc.stdint cimport int8_t, int32_t, int64_t, uint8_t, uint16_t, uint64_t
+
+cdef extern from "rgbz.h" nogil:
+    cpdef enum rgbz_status:
+        RGBZ_OK
+        RGBZ_EINVAL
+        RGBZ_ENOMEM
+        RGBZ_EDOMAIN
+    cpdef enum rgbz_type:
+        RGBZ_T_U8
+        RGBZ_T_U16
+        RGBZ_T_F32
+        RGBZ_T_F64
+    cpdef enum rgbz_precision:
+        RGBZ_P_FLOAT32
+        RGBZ_P_FLOAT64
+    cpdef enum rgbz_method:
+        RGBZ_M_BILINEAR
+        RGBZ_M_BI
+        RGBZ_M_EDI_CENTRAL
+        RGBZ_M_EDI_LINE
+        RGBZ_M_SG
+        RGBZ_M_EDI_ROWS
+    cpdef enum rgbz_exp_mode:
+        RGBZ_EXP_LIBM
+        RGBZ_EXP_FAST
+    cpdef enum rgbz_demosaic_mode:
+        RGBZ_DM_REFLECT
+        RGBZ_DM_PERIOD
+    cpdef enum rgbz_op:
+        RGBZ_OP_ADD
+        RGBZ_OP_MUL
+        RGBZ_OP_DIV
+        RGBZ_OP_EXP
+        RGBZ_OP_ABS
+        RGBZ_OP_CMP
+        RGBZ_OP_SQRT
+        RGBZ_OP_ATAN2
+    enum:
+        RGBZ_NOPS
+        RGBZ_MAX_TAPS
+        RGBZ_MAX_CAND
+        RGBZ_MAX_PAIRS
+        RGBZ_NGROUPS
+        RGBZ_MAX_CD
+        RGBZ_TOF_MAX_FREQS
+        RGBZ_TOF_MAX_WRAPS
+        RGBZ_PLAN_FIELDS
+    ctypedef struct rgbz_plan:
+        pass
+    ctypedef struct rgbz_params:
+        double sigma_floor
+        double sigma_rel
+        double edge_ratio
+        double maxval
+        int32_t exp_mode
+        int32_t workers
+        int32_t mask1_fast
+        int32_t clip_on
+        double clip_level
+    int rgbz_plan_layout(int64_t *out, int n)
+    int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
+    # one entry point per precision, all of this type (csrc/rgbz_templating.h)
+    ctypedef int rgbz_reconstruct_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
+                                     Py_ssize_t cols, int py, int px, const int32_t *phase_map,
+                                     const rgbz_plan *plans, int n_plans,
+                                     const rgbz_params *params, uint64_t *opcounts) noexcept
+    rgbz_reconstruct_fn rgbz_reconstruct_f32
+    rgbz_reconstruct_fn rgbz_reconstruct_f64
+    int rgbz_fast_exp_f32(const float *x, float *out, Py_ssize_t n)
+    int rgbz_fast_exp_f64(const double *x, double *out, Py_ssize_t n)
+    int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
+                             Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
+                             int mode, int workers)
+    int rgbz_tof_demodulate(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                            double *phase, double *amp, double *offset, int workers)
+    int rgbz_tof_unwrap(const double *phase, Py_ssize_t F, Py_ssize_t N, const double *freqs,
+                        const double *weights, double max_range, double *depth,
+                        double *residual, int32_t *wraps, int workers)
+    int rgbz_tof_depth(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                       const double *freqs, const double *weights, double max_range,
+                       double *depth, double *residual, int32_t *wraps, double *phase,
+                       double *amp, double *offset, int workers)
+    int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, Py_ssize_t F,
+                          Py_ssize_t N, const double *freqs, const double *weights,
+                          double max_range, double *depth, double *residual, int32_t *wraps,
+                          double *phase, double *amp, int workers)
+    int rgbz_have_openmp()
+    int rgbz_max_threads()
+    int rgbz_counting_build()
+    int rgbz_opcount_target(uint64_t *counts)
+
+cdef extern from "learned.h" nogil:
+    ctypedef struct rgbz_learned_filters:
+        int32_t n_phases, n_buckets, n_taps_max, n_pairs_max, n_str, n_coh, radius
+        int32_t hash_radius
+        const int32_t *n_taps
+        const int32_t *tap_dy
+        const int32_t *tap_dx
+        const int32_t *n_pairs
+        const int32_t *pair_a
+        const int32_t *pair_b
+        const double *str_thr
+        const double *coh_thr2
+        const float *w_f32
+        const double *w_f64
+        const float *wd_f32
+        const double *wd_f64
+    ctypedef int rgbz_learned_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
+                                 Py_ssize_t cols, int py, int px, const int32_t *phase_map,
+                                 const rgbz_learned_filters *f, double maxval, int workers,
+                                 uint64_t *opcounts) noexcept
+    rgbz_learned_fn rgbz_learned_f32
+    rgbz_learned_fn rgbz_learned_f64
+ctypedef fused frame_t:
+    uint8_t
+    uint16_t
+    float
+    double
+
+ctypedef fused tap_t:
+    uint16_t
+    float
+    double
+
+
+cdef int _type_code(frame_t *p) noexcept nogil:
+    if frame_t is uint8_t:
+        return RGBZ_T_U8
+    elif frame_t is uint16_t:
+        return RGBZ_T_U16
+    elif frame_t is float:
+        return RGBZ_T_F32
+    else:
+        return RGBZ_T_F64
+
+
+def _codes(enum_class, prefix):
+    """{name: code} of a C enum, the name its member's lower-case suffix after ``prefix``."""
+    return {m.name[len(prefix):].lower(): int(m) for m in enum_class}
+
+
+NOPS = RGBZ_NOPS
+TOF_MAX_WRAPS = RGBZ_TOF_MAX_WRAPS
+TOF_MAX_FREQS = RGBZ_TOF_MAX_FREQS
+#: the sizes of the arrays of one plan (rgbz_plan, csrc/rgbz.h)
+PLAN_LIMITS = {"max_taps": RGBZ_MAX_TAPS, "max_cand": RGBZ_MAX_CAND,
+               "max_pairs": RGBZ_MAX_PAIRS, "ngroups": RGBZ_NGROUPS, "max_cd": RGBZ_MAX_CD}
+#: reconstruction methods, precisions, exponentials, demosaic border modes and operation
+#: counters: {name: code}, from the enums of csrc/rgbz.h
+METHODS = _codes(rgbz_method, "RGBZ_M_")
+PRECISIONS = _codes(rgbz_precision, "RGBZ_P_")
+EXP_MODES = _codes(rgbz_exp_mode, "RGBZ_EXP_")
+DEMOSAIC_MODES = _codes(rgbz_demosaic_mode, "RGBZ_DM_")
+OP_CATEGORIES = _codes(rgbz_op, "RGBZ_OP_")
+
+
+cdef int _raise_for(int status) except -1:
+    if status == RGBZ_OK:
+        return 0
+    if status == RGBZ_ENOMEM:
+        raise MemoryError("scratch allocation failed in a C kernel")
+    if status == RGBZ_EINVAL:
+        raise RuntimeError("a C kernel rejected its arguments (status 1): "
+                           "a bug in the Python validation layer")
+    raise RuntimeError(f"C kernel failed with status {status}")
+
+
+ctypedef struct _precision_kernels:
+    rgbz_reconstruct_fn *reconstruct
+    rgbz_learned_fn *learned
+
+
+cdef _precision_kernels _kernels_of(int precision) except *:
+    """The entry points of a precision (RGBZ_PRECISIONS, csrc/rgbz.h), NULL where it has no
+    such kernel: the one switch over the precisions."""
+    cdef _precision_kernels k
+    if precision == RGBZ_P_FLOAT32:
+        k.reconstruct, k.learned = rgbz_reconstruct_f32, rgbz_learned_f32
+    elif precision == RGBZ_P_FLOAT64:
+        k.reconstruct, k.learned = rgbz_reconstruct_f64, rgbz_learned_f64
+    else:
+        raise ValueError(f"precision: expected a code of PRECISIONS {PRECISIONS}, "
+                         f"got {precision}")
+    return k
+
+
+cdef uint64_t *_counters(uint64_t[::1] opcounts, Py_ssize_t need) except? NULL:
+    """The counters of a counting call: required by _kernels_count, refused by _kernels."""
+    if not rgbz_counting_build():
+        if opcounts is not None:
+            raise ValueError("opcounts: this module does not count operations; "
+                             "use rgbz_fast._kernels_count")
+        return NULL
+    if opcounts is None or opcounts.shape[0] < need:
+        raise ValueError(f"opcounts: the counting module needs {need} counters")
+    return &opcounts[0]
+
+
+def plan_layout():
+    """(sizeof(rgbz_plan), field offsets...) as compiled, to check the Python dtype."""
+    cdef int64_t out[RGBZ_PLAN_FIELDS + 1]
+    _raise_for(rgbz_plan_layout(out, RGBZ_PLAN_FIELDS + 1))
+    return tuple(out[i] for i in range(RGBZ_PLAN_FIELDS + 1))
+
+
+def mask1_plan(int method, int sg_combined=0):
+    """The bytes of the constant Mask1 plan of csrc/recon_mask1.h for ``method``."""
+    cdef rgbz_plan plan
+    _raise_for(rgbz_mask1_plan(method, sg_combined, &plan))
+    return (<char *> &plan)[:sizeof(rgbz_plan)]
+
+
+def have_openmp():
+    return bool(rgbz_have_openmp())
+
+
+def max_threads():
+    return int(rgbz_max_threads())
+
+
+def counting_build():
+    """True in rgbz_fast._kernels_count, the module built with -DRGBZ_COUNT_OPS."""
+    return bool(rgbz_counting_build())
+
+
+def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
+                int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
+                int n_plans, double sigma_floor, double sigma_rel, double edge_ratio, double maxval,
+                int exp_mode, int workers, uint64_t[::1] opcounts=None, int mask1_fast=0,
+                clip_level=None):
+    """Run the reconstruction kernel.
+
+    ``opcounts`` (n_plans x NOPS counters): required by the counting module
+    (``_kernels_count``, single thread), refused by ``_kernels``.
+    ``clip_level`` (DN, or None): known pixels at or above it are clipped; needs
+    ``mask1_fast=0`` (the C core rejects the combination otherwise).
+    """
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int status
+    cdef rgbz_params prm
+    cdef rgbz_reconstruct_fn *kernel = _kernels_of(precision).reconstruct
+    cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> n_plans * RGBZ_NOPS)
+    prm.sigma_floor = sigma_floor
+    prm.sigma_rel = sigma_rel
+    prm.edge_ratio = edge_ratio
+    prm.maxval = maxval
+    prm.exp_mode = exp_mode
+    prm.workers = 1 if counts != NULL else workers
+    prm.mask1_fast = mask1_fast
+    prm.clip_on = 0 if clip_level is None else 1
+    prm.clip_level = 0.0 if clip_level is None else float(clip_level)
+    with nogil:
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
+    _raise_for(status)
+
+
+def tof_demodulate(const tap_t[:, :, ::1] taps, double[:, ::1] phase, double[:, ::1] amp,
+                   double[:, ::1] offset, int workers, uint64_t[::1] opcounts=None):
+    """Four-tap demodulation: taps (F, 4, N) -> phase, amplitude, offset (F, N).
+
+    ``opcounts`` (NOPS counters): as for :func:`reconstruct`.
+    """
+    cdef int status
+    cdef int in_type = _type_code(<tap_t *> NULL)
+    cdef uint64_t *counts = _counters(opcounts, RGBZ_NOPS)
+    if taps.shape[2] == 0:
+        return
+    if counts != NULL:
+        _raise_for(rgbz_opcount_target(counts))
+        workers = 1
+    with nogil:
+        status = rgbz_tof_demodulate(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                     &phase[0, 0], &amp[0, 0], &offset[0, 0], workers)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- learned (learned.c)
+def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int py, int px,
+            const int32_t[::1] phase_map, const int32_t[::1] n_taps,
+            const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
+            const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
+            const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
+            const double[:, ::1] coh_thr2, const float[:, :, ::1] w_f32,
+            const double[:, :, ::1] w_f64, int radius, int hash_radius, double maxval,
+            int workers, const float[:, :, :, ::1] wd_f32=None,
+            const double[:, :, :, ::1] wd_f64=None, uint64_t[::1] opcounts=None):
+    """Run the learned reconstruction. ``opcounts`` (n_phases x NOPS counters): required by
+    the counting module (``_kernels_count``, single thread), refused by ``_kernels``.
+
+    Weights are tap-major, (n_phases, n_taps_max, n_buckets); thresholds
+    (n_phases, levels - 1), the coherence ones squared; the optional dense weights
+    (n_phases, n_buckets, 2 radius + 1, 8) enable the fast path (the layout of learned.h).
+    """
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int status
+    cdef rgbz_learned_filters f
+    cdef rgbz_learned_fn *kernel = _kernels_of(precision).learned
+    cdef double zero = 0.0
+    f.n_phases = w_f32.shape[0]
+    f.n_taps_max = w_f32.shape[1]
+    f.n_buckets = w_f32.shape[2]
+    f.n_pairs_max = pair_a.shape[2]
+    f.n_str = str_thr.shape[1] + 1
+    f.n_coh = coh_thr2.shape[1] + 1
+    f.radius = radius
+    f.hash_radius = hash_radius
+    f.n_taps = &n_taps[0]
+    f.tap_dy = &tap_dy[0, 0]
+    f.tap_dx = &tap_dx[0, 0]
+    f.n_pairs = &n_pairs[0, 0]
+    f.pair_a = &pair_a[0, 0, 0]
+    f.pair_b = &pair_b[0, 0, 0]
+    # a level count of 1 has no threshold: the kernel reads none
+    f.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
+    f.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    f.w_f32 = &w_f32[0, 0, 0]
+    f.w_f64 = &w_f64[0, 0, 0]
+    f.wd_f32 = NULL
+    f.wd_f64 = NULL
+    if wd_f32 is not None and wd_f64 is not None:
+        if (wd_f32.shape[0] != f.n_phases or wd_f32.shape[1] != f.n_buckets
+                or wd_f32.shape[2] != 2 * radius + 1 or wd_f32.shape[3] != 8
+                or wd_f64.shape[0] != f.n_phases or wd_f64.shape[1] != f.n_buckets
+                or wd_f64.shape[2] != 2 * radius + 1 or wd_f64.shape[3] != 8):
+            raise ValueError("learned: inconsistent dense weights")
+        f.wd_f32 = &wd_f32[0, 0, 0, 0]
+        f.wd_f64 = &wd_f64[0, 0, 0, 0]
+    if (tap_dy.shape[0] != f.n_phases or n_taps.shape[0] != f.n_phases
+            or w_f64.shape[0] != f.n_phases or w_f64.shape[1] != f.n_taps_max
+            or w_f64.shape[2] != f.n_buckets or tap_dy.shape[1] != f.n_taps_max
+            or tap_dx.shape[1] != f.n_taps_max or pair_b.shape[2] != f.n_pairs_max):
+        raise ValueError("learned: inconsistent filter arrays")
+    cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> f.n_phases * RGBZ_NOPS)
+    with nogil:
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &phase_map[0], &f, maxval, workers, counts)
+    _raise_for(status)
+
+
+cdef extern from "z_guided.h" nogil:
+    ctypedef struct rgbz_zguided_filters:
+        const rgbz_learned_filters *hash
+        int32_t n_levels
+        const float *w_f32
+        const double *w_f64
+        const float *g_f32
+        const double *g_f64
+        int32_t n_base_max
+        const int32_t *n_base
+        const int32_t *base_idx
+        Py_ssize_t gy, gx
+        const double *cell
+        const int32_t *level
+    int rgbz_zguided_u8(const uint8_t *src, uint8_t *dst, Py_ssize_t rows, Py_ssize_t cols,
+                        int py, int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
+                        int precision, double maxval, int workers, uint64_t *opcounts)
+    int rgbz_zguided_u16(const uint16_t *src, uint16_t *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_f32(const float *src, float *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_f64(const double *src, double *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_cells_u8(const uint8_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_u16(const uint16_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_f32(const float *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_f64(const double *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+
+
+# ---------------------------------------------------------------------- z_guided (z_guided.c)
+def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int py, int px,
+             const int32_t[::1] phase_map, const int32_t[::1] n_taps,
+             const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
+             const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
+             const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
+             const double[:, ::1] coh_thr2, int radius, int hash_radius,
+             const float[:, :, ::1] w_f32, const double[:, :, ::1] w_f64,
+             const float[:, :, ::1] g_f32, const double[:, :, ::1] g_f64,
+             const int32_t[::1] n_base, const int32_t[:, ::1] base_idx,
+             const double[:, :, :, ::1] cell, const int32_t[:, ::1] level, double maxval,
+             int workers, uint64_t[::1] opcounts=None):
+    """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
+    ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
+    (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
+    n_buckets, 11), the baseline taps (n_phases,) and (n_phases, n_base_max), the cell
+    features (n_phases, gy, gx, 11) and noise levels (gy, gx). ``opcounts``: as for
+    ``learned``."""
+    cdef int status
+    cdef rgbz_learned_filters h
+    cdef rgbz_zguided_filters f
+    cdef double zero = 0.0
+    cdef Py_ssize_t n_ph = w_f32.shape[0]
+    if (n_taps.shape[0] != n_ph or tap_dy.shape[0] != n_ph or tap_dx.shape[0] != n_ph
+            or n_pairs.shape[0] != n_ph or n_pairs.shape[1] != 4 or pair_a.shape[0] != n_ph
+            or pair_b.shape[0] != n_ph or pair_a.shape[1] != 4 or pair_b.shape[1] != 4
+            or pair_b.shape[2] != pair_a.shape[2] or tap_dy.shape[1] != w_f32.shape[1]
+            or tap_dx.shape[1] != w_f32.shape[1] or str_thr.shape[0] != n_ph
+            or coh_thr2.shape[0] != n_ph or w_f64.shape[0] != n_ph
+            or w_f64.shape[1] != w_f32.shape[1] or w_f64.shape[2] != w_f32.shape[2]
+            or g_f32.shape[0] != n_ph or g_f64.shape[0] != n_ph
+            or g_f32.shape[1] != w_f32.shape[2] or g_f64.shape[1] != w_f32.shape[2]
+            or g_f32.shape[2] != 11 or g_f64.shape[2] != 11 or n_base.shape[0] != n_ph
+            or base_idx.shape[0] != n_ph or cell.shape[0] != n_ph or cell.shape[3] != 11
+            or cell.shape[1] != level.shape[0] or cell.shape[2] != level.shape[1]
+            or dst.shape[0] != src.shape[0] or dst.shape[1] != src.shape[1]
+            or phase_map.shape[0] != py * px):
+        raise ValueError("z_guided: inconsistent filter arrays")
+    h.n_phases = n_ph
+    h.n_taps_max = w_f32.shape[1]
+    h.n_str = str_thr.shape[1] + 1
+    h.n_coh = coh_thr2.shape[1] + 1
+    h.n_buckets = 8 * h.n_str * h.n_coh
+    if w_f32.shape[2] % h.n_buckets:
+        raise ValueError("z_guided: the weights' buckets are not levels x hash buckets")
+    h.n_pairs_max = pair_a.shape[2]
+    h.radius = radius
+    h.hash_radius = hash_radius
+    h.n_taps = &n_taps[0]
+    h.tap_dy = &tap_dy[0, 0]
+    h.tap_dx = &tap_dx[0, 0]
+    h.n_pairs = &n_pairs[0, 0]
+    h.pair_a = &pair_a[0, 0, 0]
+    h.pair_b = &pair_b[0, 0, 0]
+    # a level count of 1 has no threshold: the kernel reads none
+    h.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
+    h.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    h.w_f32 = NULL
+    h.w_f64 = NULL
+    h.wd_f32 = NULL
+    h.wd_f64 = NULL
+    f.hash = &h
+    f.n_levels = w_f32.shape[2] // h.n_buckets
+    f.w_f32 = &w_f32[0, 0, 0]
+    f.w_f64 = &w_f64[0, 0, 0]
+    f.g_f32 = &g_f32[0, 0, 0]
+    f.g_f64 = &g_f64[0, 0, 0]
+    f.n_base_max = base_idx.shape[1]
+    f.n_base = &n_base[0]
+    f.base_idx = &base_idx[0, 0]
+    f.gy = level.shape[0]
+    f.gx = level.shape[1]
+    f.cell = &cell[0, 0, 0, 0]
+    f.level = &level[0, 0]
+    cdef uint64_t *counts = _counters(opcounts, n_ph * RGBZ_NOPS)
+    with nogil:
+        if frame_t is uint8_t:
+            status = rgbz_zguided_u8(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                                     &phase_map[0], &f, precision, maxval, workers, counts)
+        elif frame_t is uint16_t:
+            status = rgbz_zguided_u16(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        elif frame_t is float:
+            status = rgbz_zguided_f32(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        else:
+            status = rgbz_zguided_f64(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+    _raise_for(status)
+
+
+def z_guided_cells(const frame_t[:, ::1] src, int py, int px, const int8_t[::1] chan, int zr,
+                   int zc, int block, const double[:, ::1] grid, const double[:, ::1] var,
+                   const int32_t[::1] targets, double lam, const double[::1] thr,
+                   double[:, :, :, ::1] cell, int32_t[:, ::1] level, int workers):
+    """The cell terms (n_phases, gy, gx, 11) and noise levels (gy, gx) of z_guided
+    (csrc/z_guided.h) from the frame, the amplitude grid and its variance (gy, gx), the
+    colour codes of the tile (py * px), the Z pixel's corner and size, the target colour of
+    each phase, the regularisation and the noise thresholds."""
+    cdef int status
+    cdef double zero = 0.0
+    cdef const double *thr_p = &thr[0] if thr.shape[0] else &zero
+    if (var.shape[0] != grid.shape[0] or var.shape[1] != grid.shape[1]
+            or level.shape[0] != grid.shape[0] or level.shape[1] != grid.shape[1]
+            or cell.shape[0] != targets.shape[0] or cell.shape[1] != grid.shape[0]
+            or cell.shape[2] != grid.shape[1] or cell.shape[3] != 11
+            or chan.shape[0] != py * px or targets.shape[0] == 0):
+        raise ValueError("z_guided_cells: inconsistent arrays")
+    with nogil:
+        if frame_t is uint8_t:
+            status = rgbz_zguided_cells_u8(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        elif frame_t is uint16_t:
+            status = rgbz_zguided_cells_u16(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        elif frame_t is float:
+            status = rgbz_zguided_cells_f32(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        else:
+            status = rgbz_zguided_cells_f64(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+    _raise_for(status)
