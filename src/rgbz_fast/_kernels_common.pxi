@@ -1,7 +1,7 @@
 # The part of the bridge that both extensions hold (src/rgbz_fast/meson.build): _kernels.pyx
 # and _kernels_count.pyx include it. It declares the C core's API (csrc/rgbz.h, learned.h),
 # takes the Python constants from its enums, and bridges the kernels that the counting build
-# counts (reconstruct, learned, tof_demodulate) and the build queries.
+# counts (reconstruct, learned, z_guided, tof_demodulate) and the build queries.
 
 from libc.stdint cimport int8_t, int32_t, int64_t, uint8_t, uint16_t, uint64_t
 
