@@ -652,13 +652,17 @@ typedef struct {
     float inv2s2, inv2hc2, tol_k, tol_min;
 } tofg_up_args;
 
+/* the weight of a node without a depth whose own (low-signal) measurement no candidate
+   agrees with: it takes part in a pixel's choice as a surface of unknown depth */
+#define TOFG_VETO 1.0f
+
 /* The depth at a point of colour pc (scaled) from the candidate measurements m[0..n) with
-   spatial weights ws, each times its prior (1 measured, the fill's confidence for a filled
-   node, 0 none): the depth of the heaviest (spatial times colour weight) and the weighted
-   mean of those within max(tol_k sigma, tol_min) of it. Returns the summed weight of the
-   mean (0: no usable candidate). */
+   spatial weights ws, each times its prior (1 measured, 0 none), among those within otol of
+   own (every one when own is NaN): the depth of the heaviest (spatial times colour weight)
+   and the weighted mean of those within max(tol_k sigma, tol_min) of it. Returns the summed
+   weight of the mean (0: no usable candidate). */
 static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_t *m,
-                          const float *ws, int n, float *out)
+                          const float *ws, int n, double own, double otol, float *out)
 {
     const ptrdiff_t N = p->R * p->C;
     float w[81], best = 0.0f;
@@ -667,6 +671,7 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
         const float pr = p->prior[m[k]] * ws[k];
         w[k] = 0.0f;
         if (!(pr > 0.0f)) continue;
+        if (own == own && !(fabs(p->depth[m[k]] - own) <= otol)) continue;
         const float t0 = pc[0] - p->col[m[k]], t1 = pc[1] - p->col[N + m[k]];
         const float t2 = pc[2] - p->col[2 * N + m[k]];
         const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
@@ -694,16 +699,20 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
 
 /* A node without a usable measurement takes the mode over the usable ones within 1, else 2,
    else 4 (at most `reach`) grid lines (Gaussian spatial weights, its own colour); its prior
-   becomes a quarter of their normalised weight (0: none there). */
-static void tofg_fill_node(const tofg_up_args *p, const float *prior0, ptrdiff_t r,
-                           ptrdiff_t c, ptrdiff_t reach, double *depth, double *sigma,
-                           float *prior)
+   becomes a quarter of their normalised weight (0: none there). When the node has a
+   measurement of its own too noisy to use (own finite), only candidates within own_k of its
+   sigma of it take part, and a node that none agrees with gets no depth (NaN) at the weight
+   TOFG_VETO: the pixels around it cannot take a neighbour's surface unchallenged. */
+static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const double *own,
+                           double own_k, ptrdiff_t r, ptrdiff_t c, ptrdiff_t reach,
+                           double *depth, double *sigma, float *prior)
 {
     const ptrdiff_t N = p->R * p->C, m = r * p->C + c;
     depth[m] = p->depth[m];
     sigma[m] = p->sigma[m];
     prior[m] = prior0[m];
     if (prior0[m] > 0.0f) return;
+    const double om = own ? own[m] : NAN, otol = own_k * p->sigma[m];
     const float pc[3] = {p->col[m], p->col[N + m], p->col[2 * N + m]};
     const tofg_up_args q = {p->depth, p->sigma, p->col, prior0, p->R, p->C, p->rc, p->cc,
                             p->spacing, p->inv2s2, p->inv2hc2, p->tol_k, p->tol_min};
@@ -726,7 +735,7 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, ptrdiff_t
                 all += ww[n++];
             }
         }
-        const float got = tofg_up_mode(&q, pc, mm, ww, n, &out);
+        const float got = tofg_up_mode(&q, pc, mm, ww, n, om, otol, &out);
         if (got > 0.0f) {
             int kb = -1;                       /* the usable candidate nearest the depth */
             for (int k = 0; k < n; k++)
@@ -739,6 +748,10 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, ptrdiff_t
             return;
         }
     }
+    if (om == om) {
+        depth[m] = NAN;
+        prior[m] = TOFG_VETO;
+    }
 }
 
 /* a node as the pixel loop reads it: colour (scaled), prior, depth, sigma in one 32-byte
@@ -749,10 +762,16 @@ typedef struct {
 } tofg_node;
 
 /* the 4 nodes around the pixel, bilinear weights (the filled nodes at their prior): the rule
-   of tofg_up_mode, written out for four candidates */
-static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, ptrdiff_t r,
-                                 float fy, ptrdiff_t c, float fx, const float *pc, float *out,
-                                 float *conf)
+   of tofg_up_mode, written out for four candidates; NaN where the heaviest node has no depth
+   (a veto node) or the nodes outside the chosen surface hold more than `ambiguity` of the
+   weight (the colour cannot say which surface the pixel is on); a node counts as off it when
+   its depth lies more than max(gap, the mean's tolerance) from the chosen one, or it has none
+   (a slanted surface's nodes differ by more than the tolerance without being another
+   surface) */
+static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, float ambiguity,
+                                 double gap, ptrdiff_t r, float fy, ptrdiff_t c, float fx,
+                                 const float *pc,
+                                 float *out, float *conf)
 {
     const ptrdiff_t r1 = r + 1 < p->R ? r + 1 : r, c1 = c + 1 < p->C ? c + 1 : c;
     const tofg_node *nd[4] = {nodes + r * p->C + c, nodes + r * p->C + c1,
@@ -763,13 +782,15 @@ static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, 
     int kb = -1;
     for (int k = 0; k < 4; k++) {
         const float pr = nd[k]->prior * ws[k];
+        w[k] = 0.0f;
+        if (!(pr > 0.0f)) continue;       /* on a grid line (Mask1: 3 pixels in 4) or a hole */
         const float t0 = pc[0] - nd[k]->c0, t1 = pc[1] - nd[k]->c1, t2 = pc[2] - nd[k]->c2;
         const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
         const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
-        w[k] = pr > 0.0f ? pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN) : 0.0f;
+        w[k] = pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
         if (w[k] > best) { best = w[k]; kb = k; }
     }
-    if (kb < 0) {
+    if (kb < 0 || nd[kb]->depth != nd[kb]->depth) {
         *out = NAN;
         *conf = 0.0f;
         return;
@@ -777,13 +798,21 @@ static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, 
     const double db = nd[kb]->depth;
     double tol = p->tol_k * nd[kb]->sigma;
     tol = tol > p->tol_min ? tol : p->tol_min;
-    double num = 0.0, den = 0.0;
+    const double off = gap > tol ? gap : tol;
+    double num = 0.0, den = 0.0, other = 0.0;
     for (int k = 0; k < 4; k++) {
         const double d = nd[k]->depth;
         if (w[k] > 0.0f && fabs(d - db) <= tol) {
             num += w[k] * d;
             den += w[k];
+        } else if (!(fabs(d - db) <= off)) {           /* true for a veto node's NaN */
+            other += w[k];
         }
+    }
+    if (other > ambiguity * (den + other)) {
+        *out = NAN;
+        *conf = 0.0f;
+        return;
     }
     *out = (float)(num / den);
     *conf = (float)den;                               /* the bilinear weights sum to 1 */
@@ -822,13 +851,15 @@ int rgbz_tofg_upsample(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
                        const double *cscale, const double *depth, const double *sigma,
                        const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
                        const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
-                       double inv2hc2, double tol_k, double tol_min, float *out, float *conf,
+                       double inv2hc2, double tol_k, double tol_min, const double *own,
+                       double own_k, double ambiguity, double gap, float *out, float *conf,
                        int workers)
 {
 #define TOFG_UPSAMPLE_(s, T)                                                                 \
     return RGBZ_CAT(tofg_upsample, s)((const T *)guide, H, W, scale, cscale, depth, sigma,   \
                                       col, R, C, rc, cc, spacing, reach, inv2s2, inv2hc2,    \
-                                      tol_k, tol_min, out, conf, workers)
+                                      tol_k, tol_min, own, own_k, ambiguity, gap, out, conf, \
+                                      workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_UPSAMPLE_, return RGBZ_EINVAL)
 #undef TOFG_UPSAMPLE_
 }

@@ -77,13 +77,18 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
    bilinearly times the colour kernel exp(-max(chi - 3, 0) inv2hc2) of its colour against
    theirs (col (3, N) divided by sqrt(2) sigma_c; the pixel's is guide * scale * cscale
    (3,)): the depth of the heaviest and the weighted mean of those within max(tol_k sigma,
-   tol_min) of it; confidence: the summed weight of that mean. NaN and 0 where no node
-   around the pixel has a depth. */
+   tol_min) of it; confidence: the summed weight of that mean. own (N,) or NULL: a node's
+   own measurement too noisy to use (NaN: none); a node with one takes only candidates
+   within own_k times its sigma of it, and gets no depth, at weight 1, when none is. NaN and
+   0 where no node around the pixel has a depth, where the heaviest node has none, or where
+   the nodes more than max(gap, the tolerance) off the chosen depth (or without one) hold more
+   than `ambiguity` of the weight. */
 int rgbz_tofg_upsample(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W, double scale,
                        const double *cscale, const double *depth, const double *sigma,
                        const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,
                        const double *cc, double spacing, ptrdiff_t reach, double inv2s2,
-                       double inv2hc2, double tol_k, double tol_min, float *out, float *conf,
+                       double inv2hc2, double tol_k, double tol_min, const double *own,
+                       double own_k, double ambiguity, double gap, float *out, float *conf,
                        int workers);
 
 #endif

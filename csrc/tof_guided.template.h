@@ -103,11 +103,13 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
                                        const double *sigma, const float *col, ptrdiff_t R,
                                        ptrdiff_t C, const double *rc, const double *cc,
                                        double spacing, ptrdiff_t reach, double inv2s2,
-                                       double inv2hc2, double tol_k, double tol_min, float *out,
-                                       float *conf, int workers)
+                                       double inv2hc2, double tol_k, double tol_min,
+                                       const double *own, double own_k, double ambiguity,
+                                       double gap, float *out, float *conf, int workers)
 {
     if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf
-        || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4)
+        || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4
+        || !(own_k >= 0.0) || !(ambiguity >= 0.0) || !(gap >= 0.0))
         return RGBZ_EINVAL;
     const ptrdiff_t N = R * C;
     ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);
@@ -126,7 +128,8 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
     (void)nth;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++)
-        for (ptrdiff_t c = 0; c < C; c++) tofg_fill_node(&p0, prior0, r, c, reach, fd, fs, prior);
+        for (ptrdiff_t c = 0; c < C; c++)
+            tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, fd, fs, prior);
     const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
                             (float)inv2hc2, (float)tol_k, (float)tol_min};
     tofg_node *nodes = malloc((size_t)N * sizeof *nodes);
@@ -149,8 +152,8 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
         for (ptrdiff_t x = 0; x < W; x++) {
             const IN_T *g = guide + (y * W + x) * 3;
             const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};
-            tofg_up_pixel(nodes, &p, r, fy, cx[x], fx[x], pc, out + y * W + x,
-                          conf + y * W + x);
+            tofg_up_pixel(nodes, &p, (float)ambiguity, gap, r, fy, cx[x], fx[x], pc,
+                          out + y * W + x, conf + y * W + x);
         }
     }
     free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);

@@ -157,5 +157,6 @@ def tofg_flying(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, col: n
 def tofg_upsample(guide: np.ndarray, scale: float, cscale: np.ndarray, depth: np.ndarray,
                   sigma: np.ndarray, col: np.ndarray, R: int, C: int, rc: np.ndarray,
                   cc: np.ndarray, spacing: float, reach: int, inv2s2: float, inv2hc2: float,
-                  tol_k: float, tol_min: float, out: np.ndarray, conf: np.ndarray,
+                  tol_k: float, tol_min: float, own: np.ndarray | None, own_k: float,
+                  ambiguity: float, gap: float, out: np.ndarray, conf: np.ndarray,
                   workers: int) -> None: ...

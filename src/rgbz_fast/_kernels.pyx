@@ -355,7 +355,8 @@ cdef extern from "tof_guided.h" nogil:
                            const double *sigma, const float *col, Py_ssize_t R, Py_ssize_t C,
                            const double *rc, const double *cc, double spacing,
                            Py_ssize_t reach, double inv2s2, double inv2hc2, double tol_k,
-                           double tol_min, float *out, float *conf, int workers)
+                           double tol_min, const double *own, double own_k, double ambiguity,
+                           double gap, float *out, float *conf, int workers)
 
 def tofg_prepare(const tap_t[:, :, ::1] taps, double gain, double black, double supp,
                  double const_var, double prnu, double white, float[:, ::1] zr,
@@ -477,17 +478,22 @@ def tofg_upsample(const frame_t[:, :, ::1] guide, double scale, const double[::1
                   const double[::1] depth, const double[::1] sigma, const float[:, ::1] col,
                   Py_ssize_t R, Py_ssize_t C, const double[::1] rc, const double[::1] cc,
                   double spacing, Py_ssize_t reach, double inv2s2, double inv2hc2,
-                  double tol_k, double tol_min, float[:, ::1] out, float[:, ::1] conf,
+                  double tol_k, double tol_min, const double[::1] own, double own_k,
+                  double ambiguity, double gap, float[:, ::1] out, float[:, ::1] conf,
                   int workers):
-    """Joint bilateral upsampling of the measurements' depth to every pixel of the guide."""
+    """Joint bilateral upsampling of the measurements' depth to every pixel of the guide
+    (own: the nodes' own too-noisy measurements or None)."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef const double *po = NULL
+    if own is not None:
+        po = &own[0]
     cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
     if H == 0 or W == 0:
         return
     with nogil:
         status = rgbz_tofg_upsample(in_type, &guide[0, 0, 0], H, W, scale, &cscale[0], &depth[0],
                                     &sigma[0], &col[0, 0], R, C, &rc[0], &cc[0], spacing, reach,
-                                    inv2s2, inv2hc2, tol_k, tol_min, &out[0, 0], &conf[0, 0],
-                                    workers)
+                                    inv2s2, inv2hc2, tol_k, tol_min, po, own_k, ambiguity, gap,
+                                    &out[0, 0], &conf[0, 0], workers)
     _raise_for(status)

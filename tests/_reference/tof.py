@@ -234,7 +234,8 @@ def guided_flying(depth, sigma, usable, col, cells, R, C, step, k, contrast, sid
 
 
 def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spacing, reach,
-                    inv2s2, inv2hc2, tol_k, tol_min):
+                    inv2s2, inv2hc2, tol_k, tol_min, own=None, own_k=2.0, ambiguity=1.0,
+                    gap=0.0):
     """A depth and a confidence at every pixel (plain loops; csrc/tof_guided.c's rule)."""
     g = np.asarray(guide, np.float64)
     H, W = g.shape[:2]
@@ -251,11 +252,11 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
             return ctr.size - 1, 0.0
         return i - 1, (v - ctr[i - 1]) / (ctr[i] - ctr[i - 1])
 
-    def mode(pc, ms, ws, d, s, prior):
+    def mode(pc, ms, ws, d, s, prior, own_d=np.nan, otol=0.0, amb=None):
         w = []
         for m, wsp in zip(ms, ws):
             pr = prior[m] * wsp
-            if not pr > 0:
+            if not pr > 0 or (np.isfinite(own_d) and not abs(d[m] - own_d) <= otol):
                 w.append(0.0)
                 continue
             chi = ((pc - cm[:, m]) ** 2).sum() - 3.0
@@ -265,9 +266,15 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
         if not any(v > 0 for v in w):
             return None
         kb = int(np.argmax(w))
+        if np.isnan(d[ms[kb]]):                       # a node that vetoes
+            return None
         tol = max(tol_k * s[ms[kb]], tol_min)
         used = [(wv, d[m]) for wv, m in zip(w, ms) if wv > 0 and abs(d[m] - d[ms[kb]]) <= tol]
         den = sum(wv for wv, _ in used)
+        off = max(gap, tol)
+        other = sum(wv for wv, m in zip(w, ms) if wv > 0 and not abs(d[m] - d[ms[kb]]) <= off)
+        if amb is not None and other > amb * (den + other):
+            return None
         return sum(wv * dv for wv, dv in used) / den, den
 
     # the nodes without a usable measurement, filled from those within reach
@@ -277,6 +284,7 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
             m = r * C + c
             if prior0[m] > 0:
                 continue
+            own_d = np.nan if own is None else own[m]
             lv = 1
             while lv <= reach:
                 ms, ws = [], []
@@ -285,7 +293,7 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
                         ms.append(i * C + j)
                         dist = ((rc[i] - rc[r]) ** 2 + (cc[j] - cc[c]) ** 2) / spacing ** 2
                         ws.append(np.exp(-dist * inv2s2))
-                got = mode(cm[:, m], ms, ws, d0, s0, prior0)
+                got = mode(cm[:, m], ms, ws, d0, s0, prior0, own_d, own_k * s0[m])
                 if got is not None:
                     d[m] = got[0]
                     usable = [k for k in ms if prior0[k] > 0]
@@ -293,6 +301,8 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
                     prior[m] = 0.25 * got[1] / sum(ws)
                     break
                 lv *= 2
+            if lv > reach and np.isfinite(own_d):
+                d[m], prior[m] = np.nan, 1.0          # no neighbour agrees: a veto
     out = np.full((H, W), np.nan)
     conf = np.zeros((H, W))
     for y in range(H):
@@ -303,7 +313,7 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
             r1, c1 = min(r + 1, R - 1), min(c + 1, C - 1)
             ms = [r * C + c, r * C + c1, r1 * C + c, r1 * C + c1]
             ws = [(1 - fy) * (1 - fx), (1 - fy) * fx, fy * (1 - fx), fy * fx]
-            got = mode(pc, ms, ws, d, s, prior)
+            got = mode(pc, ms, ws, d, s, prior, amb=ambiguity)
             if got is not None:
                 out[y, x], conf[y, x] = got
     return out, conf

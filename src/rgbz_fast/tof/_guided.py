@@ -46,7 +46,8 @@ from ._filters import SiteGrid
 from ._result import ToFDepth
 from ._validity import FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED
 
-__all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "UPSAMPLE_COLOUR_SCALE"]
+__all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "UPSAMPLE_COLOUR_SCALE",
+           "UPSAMPLE_AMBIGUITY"]
 
 #: the window (Z-pixel cells) of the guided denoise when ``window`` is None: 11 Z
 #: measurements per axis on Mask1 and Mask2 (radius 10 cells)
@@ -59,8 +60,20 @@ SIDE_SHARE = 0.15
 #: the smallest noise of a guide taken (sigma_c, in [0, 1] units): half a step of 8 bits
 NOISE_FLOOR = 0.5 / 255.0
 #: the range scale of the upsampling's colour kernel (units of the guide's noise, as the
-#: guided denoise's ``colour_scale``)
-UPSAMPLE_COLOUR_SCALE = 5.0
+#: guided denoise's ``colour_scale``); wider than the denoise's, because the choice between
+#: the surfaces of a pixel's four measurements and the abstention (UPSAMPLE_AMBIGUITY) keep
+#: it from blending them
+UPSAMPLE_COLOUR_SCALE = 20.0
+#: upsampling: a pixel gets no depth when the measurements off the surface it would take hold
+#: more than this share of its weight
+UPSAMPLE_AMBIGUITY = 0.15
+#: upsampling: a measurement counts as another surface than the chosen one when its depth
+#: lies more than this (m) from it (or than the mean's tolerance, if wider): the neighbouring
+#: measurements of a slanted surface differ by more than that tolerance
+_UP_GAP = 0.05
+#: upsampling: a node whose own measurement is low-signal takes only the candidates within
+#: this many of its sigma of that measurement
+_UP_OWN_K = 2.0
 #: upsampling: depths within max(3 sigma, 2 cm) of the heaviest candidate are averaged
 _UP_TOL_K, _UP_TOL_MIN = 3.0, 0.02
 #: upsampling in a hole: the measurements within 4 grid lines, Gaussian weights of this spread
@@ -266,22 +279,29 @@ def guided_flying_of(result, g, scale, step, nthreads):
     return ToFDepth(**fields)
 
 
-def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers=None):
+def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
+                   ambiguity=UPSAMPLE_AMBIGUITY, workers=None):
     """A depth at every pixel of the frame, from the measurements guided by its colour image.
 
-    Joint bilateral upsampling [1]_: a pixel takes the four Z measurements
-    around it, each weighted bilinearly by its distance and by how close its
-    colour is to the pixel's (in units of the guide's noise, as the guided
-    denoise); the depth of the heaviest one, averaged with those of the four
-    within ``max(3 sigma, 2 cm)`` of it, so a pixel takes the depth of one
-    surface, never a blend across a depth edge. Valid measurements, resolved
-    ones (:attr:`ToFFlag.RESOLVED`, with the depth of their side) and those
-    flagged flying alone take part: the flying-pixel test flags both sides of
-    every depth edge, and the measurements right at an edge are the ones that
-    give its position (the colour picks the side; measured on the Middlebury
-    scenes, docs/reports/isp.md). A pixel whose four are all unusable takes the same rule over
-    the measurements within 4 grid lines (Gaussian weights) at a quarter of the
-    confidence; beyond that it gets NaN.
+    Joint bilateral upsampling [1]_ that chooses rather than averages: a pixel
+    takes the four Z measurements around it, each weighted bilinearly by its
+    distance and by how close its colour is to the pixel's (in units of the
+    guide's noise, as the guided denoise); the depth of the heaviest one,
+    averaged with those of the four within ``max(3 sigma, 2 cm)`` of it, so a
+    pixel takes the depth of one surface, never a blend across a depth edge.
+    Where those more than 5 cm from that depth (another surface) hold more
+    than ``ambiguity`` of the weight, the colour cannot tell which surface
+    the pixel is on and it gets NaN. Valid measurements, resolved ones
+    (:attr:`ToFFlag.RESOLVED`, with the depth of their side) and those
+    flagged flying alone take part: the flying-pixel test flags both sides
+    of every depth edge, and the measurements right at an edge are the ones
+    that give its position (the colour picks the side; measured on the
+    Middlebury scenes, docs/reports/isp.md). A Z pixel without a usable
+    measurement takes the same rule over the measurements within 1, 2 or 4
+    grid lines (Gaussian weights) at a quarter of the weight; when its own
+    measurement is low-signal, only the candidates within 2 of its sigma of
+    that measurement, and none when none is (it then counts as a surface of
+    unknown depth: the pixels it would win get NaN).
 
     Parameters
     ----------
@@ -292,7 +312,12 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers
         (``ColourISP().run(frame)``).
     colour_scale : float
         Range scale ``h_c`` of the colour kernel ``exp(-max(chi_c - 3, 0) /
-        (2 h_c^2))``, ``chi_c`` in units of the guide's noise (5).
+        (2 h_c^2))``, ``chi_c`` in units of the guide's noise (20).
+    ambiguity : float
+        The largest share of a pixel's weight the measurements off its chosen
+        surface may hold (0.15); 1 gives a depth wherever a measurement reaches
+        but for the pixels a low-signal measurement without an agreeing
+        neighbour wins.
     workers : int, optional
         Threads (None or -1: all cores); the result does not depend on it.
 
@@ -305,6 +330,9 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers
         [0, 1]: 1 where the four around the pixel are valid and of its
         colour, lower at colour edges, near unusable measurements and in
         holes (at most 0.25 there); 0 where the depth is NaN.
+
+    The defaults were chosen on four Middlebury scenes and checked on two held
+    out (docs/reports/isp.md, "Measured: full resolution").
 
     Raises
     ------
@@ -336,6 +364,7 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers
         raise TypeError(f"result: expected a ToFDepth (tof_depth's output), got "
                         f"{type(result).__name__}")
     cs = check_number(colour_scale, "colour_scale", lo=0, lo_open=True)
+    amb = check_number(ambiguity, "ambiguity", lo=0, hi=1)
     nthreads = check_workers(workers)
     g, scale = check_guide(guide, result.shape)
     layout = _Layout(result.sites, result.block, result.shape)
@@ -344,6 +373,10 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers
     depth = np.ascontiguousarray(layout.to_grid(np.where(usable, result.depth, np.nan),
                                                 np.nan), np.float64)
     sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
+    # a low-signal measurement's own depth: too noisy to give a depth, enough to reject the
+    # neighbours' surfaces it disagrees with
+    own = np.ascontiguousarray(layout.to_grid(
+        np.where(result.flags == FLAG_LOW_SIGNAL, result.depth, np.nan), np.nan), np.float64)
     half = 0.5 * (result.block - 1)
     rc = np.ascontiguousarray(layout.rows + half, np.float64)
     cc = np.ascontiguousarray(layout.cols + half, np.float64)
@@ -354,5 +387,6 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE, workers
     cscale = np.ascontiguousarray(1.0 / (math.sqrt(2.0) * sigma_c))
     _kernels.tofg_upsample(g, scale, cscale, depth, sigma, col, layout.R, layout.C, rc, cc,
                            spacing, _FILL_REACH, 1.0 / (2.0 * _FILL_SPREAD ** 2),
-                           1.0 / (2.0 * cs * cs), _UP_TOL_K, _UP_TOL_MIN, out, conf, nthreads)
+                           1.0 / (2.0 * cs * cs), _UP_TOL_K, _UP_TOL_MIN, own, _UP_OWN_K, amb,
+                           _UP_GAP, out, conf, nthreads)
     return out, conf
