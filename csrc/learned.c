@@ -67,7 +67,10 @@ static int lrn_fast_ok(const rgbz_learned_filters *f, int py, int px, const int3
 #else
     static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
     const int hr = f->hash_radius;
-    if (!f->wd_f32 || !f->wd_f64 || f->radius > 3 || hr < 1 || hr > f->radius) return 0;
+    /* an even period along the rows: the column parity (so the colour) of a pair start is the
+       same at every site of a phase */
+    if (!f->wd_f32 || !f->wd_f64 || f->radius > 3 || hr < 1 || hr > f->radius || px % 2)
+        return 0;
     for (int i = 0; i < py * px; i++) {
         const int k = phase_map[i];
         if (k < 0) continue;
@@ -93,12 +96,14 @@ static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t co
                      int px, const int32_t *phase_map)
 {
     if (!f || f->n_phases <= 0 || f->n_buckets <= 0 || f->n_str < 1 || f->n_coh < 1 ||
-        f->n_buckets != 8 * f->n_str * f->n_coh || f->radius < 0 ||
+        f->n_spr < 1 || f->n_buckets != 8 * f->n_str * f->n_coh * f->n_spr || f->radius < 0 ||
         f->radius > RGBZ_LEARNED_MAX_RADIUS || f->n_taps_max <= 0 ||
         f->n_taps_max > RGBZ_LEARNED_MAX_TAPS || f->hash_radius > f->radius || py <= 0 || px <= 0 || rows < py || cols < px)
         return RGBZ_EINVAL;
     for (int i = 0; i < py * px; i++)
         if (phase_map[i] >= f->n_phases) return RGBZ_EINVAL;
+    for (int i = 0; i < 4; i++)
+        if (f->bayer[i] < 0 || f->bayer[i] > 2) return RGBZ_EINVAL;
     for (int k = 0; k < f->n_phases; k++) {
         const int nt = f->n_taps[k];
         if (nt <= 0 || nt > f->n_taps_max) return RGBZ_EINVAL;
@@ -113,7 +118,7 @@ static int lrn_check(const rgbz_learned_filters *f, ptrdiff_t rows, ptrdiff_t co
             const ptrdiff_t o = ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * f->n_pairs_max;
             for (int p = 0; p < np; p++)
                 if (f->pair_a[o + p] < 0 || f->pair_a[o + p] >= nt || f->pair_b[o + p] < 0 ||
-                    f->pair_b[o + p] >= nt)
+                    f->pair_b[o + p] >= nt || f->pair_col[o + p] < 0 || f->pair_col[o + p] > 2)
                     return RGBZ_EINVAL;
         }
     }

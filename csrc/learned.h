@@ -12,7 +12,9 @@
  * the orientation = the octant of (a, b) rotated by 22.5 degrees (sign tests
  * and one comparison), the strength = how many thresholds t exceeds, the
  * coherence = how many squared thresholds c2 satisfy a^2 + b^2 > c2 * (t * t);
- *   bucket = (octant * n_str + strength) * n_coh + coherence.
+ * and for each colour c the mean squared difference E_c of its horizontal and
+ * vertical pairs, the spread = how many thresholds s satisfy max_c E_c > s * min_c E_c;
+ *   bucket = ((octant * n_str + strength) * n_coh + coherence) * n_spr + spread.
  */
 #ifndef RGBZ_LEARNED_H
 #define RGBZ_LEARNED_H
@@ -24,21 +26,28 @@
 #define RGBZ_LEARNED_MAX_TAPS 121     /* an 11x11 window (radius 5) */
 #define RGBZ_LEARNED_MAX_RADIUS 5
 #define RGBZ_LEARNED_DIRS 4           /* horizontal, vertical, main and anti-diagonal */
+#define RGBZ_LEARNED_SPREAD_DIRS 2    /* the first two (horizontal, vertical) give the spread */
 
 typedef struct {
     int32_t n_phases;     /* Z positions of the tile */
-    int32_t n_buckets;    /* 8 * n_str * n_coh */
+    int32_t n_buckets;    /* 8 * n_str * n_coh * n_spr */
     int32_t n_taps_max;   /* row length of tap_dy / tap_dx and of the weights' tap axis */
     int32_t n_pairs_max;  /* row length of pair_a / pair_b */
     int32_t n_str, n_coh; /* strength and coherence levels */
+    int32_t n_spr;        /* channel-spread levels (1: no spread term) */
     int32_t radius;       /* largest |dy|, |dx| of a tap */
     int32_t hash_radius;  /* largest |dy|, |dx| of a pixel of a hash pair */
     const int32_t *n_taps;            /* [n_phases] */
     const int32_t *tap_dy, *tap_dx;   /* [n_phases][n_taps_max] */
     const int32_t *n_pairs;           /* [n_phases][4] */
     const int32_t *pair_a, *pair_b;   /* [n_phases][4][n_pairs_max]: tap indices */
+    const int32_t *pair_col;          /* [n_phases][4][n_pairs_max]: colour of each pair, 0..2 */
+    const double *inv_col;            /* [n_phases][3]: 1 / the horizontal and vertical pairs
+                                         of each colour */
+    const int32_t *bayer;             /* [2][2]: colour of the pixels at (row, col) mod 2 */
     const double *str_thr;            /* [n_phases][n_str - 1], increasing */
     const double *coh_thr2;           /* [n_phases][n_coh - 1]: squared coherence thresholds */
+    const double *spr_thr;            /* [n_phases][n_spr - 1]: spread thresholds, >= 1 */
     const float *w_f32;               /* [n_phases][n_taps_max][n_buckets] (tap-major) */
     const double *w_f64;              /* the same weights in double */
     /* optional (NULL: not used), for radius <= 3: the weights on the dense window, zeros at

@@ -35,14 +35,17 @@
 #define RW RGBZ_CAT(w, RS)
 #define RWD RGBZ_CAT(wd, RS)
 
-/* the buckets of n sites from their direction energies e[d][j] (learned.h) */
-static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int n,
+/* the buckets of n sites from their direction energies e[d][j] and their colour energies
+   ec[c][j] (learned.h) */
+static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK],
+                                               REAL (*restrict ec)[LRN_BLK], int n,
                                                const rgbz_learned_filters *f, int k,
                                                int32_t *restrict bucket)
 {
-    const int ns = f->n_str, nc = f->n_coh;
+    const int ns = f->n_str, nc = f->n_coh, nk = f->n_spr;
     const double *st = f->str_thr + (ptrdiff_t)k * (ns - 1);
     const double *ct = f->coh_thr2 + (ptrdiff_t)k * (nc - 1);
+    const double *kt = f->spr_thr + (ptrdiff_t)k * (nk - 1);
     const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
     REAL tt[LRN_BLK] = {0}, m2[LRN_BLK] = {0};
     LRN_IVDEP for (int j = 0; j < n; j++) {
@@ -57,19 +60,33 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK], int 
         const REAL ar1 = neg ? -ar : ar, br1 = neg ? -br : br;
         const int left = OCMP(ar1 < 0);
         const REAL ar2 = left ? br1 : ar1, br2 = left ? -ar1 : br1;
-        bucket[j] = (4 * neg + 2 * left + OCMP(br2 > ar2)) * (ns * nc);
+        bucket[j] = (4 * neg + 2 * left + OCMP(br2 > ar2)) * (ns * nc * nk);
         tt[j] = t;
         m2[j] = OADD(OMUL(a, a), OMUL(b, b));
     }
     for (int i = 0; i < ns - 1; i++) {
         const REAL thr = (REAL)st[i];
-        LRN_IVDEP for (int j = 0; j < n; j++) bucket[j] += OCMP(tt[j] > thr) ? nc : 0;
+        LRN_IVDEP for (int j = 0; j < n; j++) bucket[j] += OCMP(tt[j] > thr) ? nc * nk : 0;
     }
     if (nc > 1) {
         LRN_IVDEP for (int j = 0; j < n; j++) tt[j] = OMUL(tt[j], tt[j]);
         for (int i = 0; i < nc - 1; i++) {
             const REAL thr = (REAL)ct[i];
-            LRN_IVDEP for (int j = 0; j < n; j++) bucket[j] += OCMP(m2[j] > OMUL(thr, tt[j]));
+            LRN_IVDEP for (int j = 0; j < n; j++)
+                bucket[j] += OCMP(m2[j] > OMUL(thr, tt[j])) ? nk : 0;
+        }
+    }
+    if (nk > 1) {
+        /* the largest and the smallest colour energy (tt: largest, m2: smallest) */
+        LRN_IVDEP for (int j = 0; j < n; j++) {
+            const REAL r = ec[0][j], g = ec[1][j], b = ec[2][j];
+            const REAL hi1 = OCMP(g > r) ? g : r, lo1 = OCMP(g > r) ? r : g;
+            tt[j] = OCMP(b > hi1) ? b : hi1;
+            m2[j] = OCMP(b < lo1) ? b : lo1;
+        }
+        for (int i = 0; i < nk - 1; i++) {
+            const REAL thr = (REAL)kt[i];
+            LRN_IVDEP for (int j = 0; j < n; j++) bucket[j] += OCMP(tt[j] > OMUL(thr, m2[j]));
         }
     }
 }
@@ -82,29 +99,51 @@ static void LRN_CAT(lrn_hash, IS, RS)(REAL (*restrict v)[LRN_BLK], int n,
                                        int32_t *restrict bucket)
 {
     REAL e[RGBZ_LEARNED_DIRS][LRN_BLK];
+    REAL ec[3][LRN_BLK];
+    const int spread = f->n_spr > 1;
+    for (int c = 0; c < 3; c++)
+        for (int j = 0; j < n; j++) ec[c][j] = 0;
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const int np = f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
-        const int32_t *pa = f->pair_a + ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * f->n_pairs_max;
-        const int32_t *pb = f->pair_b + ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * f->n_pairs_max;
+        const ptrdiff_t o = ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * f->n_pairs_max;
+        const int32_t *pa = f->pair_a + o, *pb = f->pair_b + o, *pc = f->pair_col + o;
         REAL *restrict ed = e[d];
-        {
+        {   /* the first pair sets the sum */
             const REAL *restrict va = v[pa[0]], *restrict vb = v[pb[0]];
+            REAL *restrict ecp = ec[pc[0]];
             LRN_IVDEP for (int j = 0; j < n; j++) {
                 const REAL df = OSUB(va[j], vb[j]);
                 ed[j] = OMUL(df, df);
             }
+            if (spread && d < RGBZ_LEARNED_SPREAD_DIRS)
+                LRN_IVDEP for (int j = 0; j < n; j++) ecp[j] = OADD(ecp[j], ed[j]);
         }
         LRN_NOJAM for (int p = 1; p < np; p++) {
             const REAL *restrict va = v[pa[p]], *restrict vb = v[pb[p]];
-            LRN_IVDEP for (int j = 0; j < n; j++) {
-                const REAL df = OSUB(va[j], vb[j]);
-                ed[j] = OADD(ed[j], OMUL(df, df));
+            REAL *restrict ecp = ec[pc[p]];
+            if (spread && d < RGBZ_LEARNED_SPREAD_DIRS) {
+                LRN_IVDEP for (int j = 0; j < n; j++) {
+                    const REAL df = OSUB(va[j], vb[j]);
+                    const REAL sq = OMUL(df, df);
+                    ed[j] = OADD(ed[j], sq);
+                    ecp[j] = OADD(ecp[j], sq);
+                }
+            } else {
+                LRN_IVDEP for (int j = 0; j < n; j++) {
+                    const REAL df = OSUB(va[j], vb[j]);
+                    ed[j] = OADD(ed[j], OMUL(df, df));
+                }
             }
         }
         const REAL inv = (REAL)1 / (REAL)np;
         LRN_IVDEP for (int j = 0; j < n; j++) ed[j] = OMUL(ed[j], inv);
     }
-    LRN_CAT(lrn_bucket, IS, RS)(e, n, f, k, bucket);
+    if (spread)
+        for (int c = 0; c < 3; c++) {
+            const REAL inv = (REAL)f->inv_col[k * 3 + c];
+            LRN_IVDEP for (int j = 0; j < n; j++) ec[c][j] = OMUL(ec[c][j], inv);
+        }
+    LRN_CAT(lrn_bucket, IS, RS)(e, ec, n, f, k, bucket);
 }
 
 /* res[j] = sum_t w[t][bucket[j]] * v[t][j] */
@@ -188,15 +227,85 @@ LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const 
     }
 }
 
-/* the box sums bx[d][x], x in [xa, xb), of Z row y: the D rows from the rings (computed
-   where a slot does not hold them yet), summed down the rows, then along the row */
+/* c[x] = sum over the nr rows D_i of D_i[x], in the order of i, for any nr (the constant
+   row counts of the box sums unrolled) */
+LRN_INLINE void LRN_CAT(lrn_sum_rows, IS, RS)(REAL *restrict c, const REAL *const *D, int nr,
+                                                 ptrdiff_t xa, ptrdiff_t xb)
+{
+    switch (nr) {
+    case 1: LRN_CAT(lrn_colsum, IS, RS)(c, D, 1, xa, xb); break;
+    case 2: LRN_CAT(lrn_colsum, IS, RS)(c, D, 2, xa, xb); break;
+    case 3: LRN_CAT(lrn_colsum, IS, RS)(c, D, 3, xa, xb); break;
+    case 4: LRN_CAT(lrn_colsum, IS, RS)(c, D, 4, xa, xb); break;
+    case 5: LRN_CAT(lrn_colsum, IS, RS)(c, D, 5, xa, xb); break;
+    case 7: LRN_CAT(lrn_colsum, IS, RS)(c, D, 7, xa, xb); break;
+    default: LRN_CAT(lrn_colsum, IS, RS)(c, D, nr, xa, xb);
+    }
+}
+
+/* the row stage of one direction at n sites x = x0 + m PX (c0, c1: its column sums, the rows
+   of even and of odd offset from the rectangle's first row, already moved by its first
+   column; nc columns; PX and nc are constants where it is inlined): bxd[m] the box sum of
+   site m and, when split, k[2 r + p][m] (+)= the part of the rows of offset parity r and the
+   columns of offset parity p (assigned when first, else added). Unsplit, c0 holds every row
+   and c1 is not read. */
+LRN_INLINE void LRN_CAT(lrn_rowstage, IS, RS)(const REAL *restrict c0, const REAL *restrict c1,
+                                                 const int nc, const int split, const int first,
+                                                 ptrdiff_t x0, const int PX, int n,
+                                                 REAL *restrict bxd, REAL *restrict k0,
+                                                 REAL *restrict k1, REAL *restrict k2,
+                                                 REAL *restrict k3)
+{
+    if (!split) {
+        LRN_IVDEP for (int m = 0; m < n; m++) {
+            const ptrdiff_t x = x0 + (ptrdiff_t)m * PX;
+            REAL s = 0;
+            for (int j = 0; j < nc; j++) s = OADD(s, c0[x + j]);
+            bxd[m] = s;
+        }
+        return;
+    }
+    LRN_IVDEP for (int m = 0; m < n; m++) {
+        const ptrdiff_t x = x0 + (ptrdiff_t)m * PX;
+        REAL s0e = c0[x], s1e = c1[x], s0o = 0, s1o = 0;
+        for (int j = 2; j < nc; j += 2) {
+            s0e = OADD(s0e, c0[x + j]);
+            s1e = OADD(s1e, c1[x + j]);
+        }
+        if (nc > 1) {
+            s0o = c0[x + 1];
+            s1o = c1[x + 1];
+        }
+        for (int j = 3; j < nc; j += 2) {
+            s0o = OADD(s0o, c0[x + j]);
+            s1o = OADD(s1o, c1[x + j]);
+        }
+        bxd[m] = OADD(OADD(s0e, s0o), OADD(s1e, s1o));
+        if (first) {
+            k0[m] = s0e;
+            k1[m] = s0o;
+            k2[m] = s1e;
+            k3[m] = s1o;
+        } else {
+            k0[m] = OADD(k0[m], s0e);
+            k1[m] = OADD(k1[m], s0o);
+            k2[m] = OADD(k2[m], s1e);
+            k3[m] = OADD(k3[m], s1o);
+        }
+    }
+}
+
+/* the column stage of Z row y, columns [xa + clo, xb + chi) of each direction's rectangle:
+   the D rows from the rings (computed where a slot does not hold them yet), summed down the
+   rectangle's rows into cs[2 d] or, for the directions of the spread term when split, into
+   cs[2 d] and cs[2 d + 1]: the rows of even and of odd offset from its first row apart */
 LRN_CLONES
 static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t y, int py,
                                            const REAL *restrict valid, ptrdiff_t cols, int hr,
-                                           ptrdiff_t xa, ptrdiff_t xb, ptrdiff_t ra,
+                                           int split, ptrdiff_t xa, ptrdiff_t xb, ptrdiff_t ra,
                                            ptrdiff_t rb, REAL *conv,
                                            ptrdiff_t *ctag, REAL *dsq, ptrdiff_t *dtag,
-                                           REAL *restrict cs, REAL *restrict bx)
+                                           REAL *restrict cs)
 {
     static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
@@ -222,25 +331,49 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdi
             }
             D[i] = Dr;
         }
-        REAL *restrict c = cs + (ptrdiff_t)d * cols;
-        switch (nr) {     /* the row counts of hash radii 1..3, unrolled */
-        case 1: LRN_CAT(lrn_colsum, IS, RS)(c, D, 1, ca, cb); break;
-        case 3: LRN_CAT(lrn_colsum, IS, RS)(c, D, 3, ca, cb); break;
-        case 5: LRN_CAT(lrn_colsum, IS, RS)(c, D, 5, ca, cb); break;
-        case 7: LRN_CAT(lrn_colsum, IS, RS)(c, D, 7, ca, cb); break;
-        default: LRN_CAT(lrn_colsum, IS, RS)(c, D, nr, ca, cb);
+        if (!split || d >= RGBZ_LEARNED_SPREAD_DIRS) {
+            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)2 * d * cols, D, nr, ca, cb);
+            continue;
         }
-        /* along the row: the same sums, over the columns clo..chi of c (in that order) */
-        const REAL *C[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
-        const int nc = chi - clo + 1;
-        for (int i = 0; i < nc; i++) C[i] = c + clo + i;
-        REAL *restrict b = bx + (ptrdiff_t)d * cols;
-        switch (nc) {     /* the column counts of hash radii 1..3 */
-        case 3: LRN_CAT(lrn_colsum, IS, RS)(b, C, 3, xa, xb); break;
-        case 5: LRN_CAT(lrn_colsum, IS, RS)(b, C, 5, xa, xb); break;
-        case 7: LRN_CAT(lrn_colsum, IS, RS)(b, C, 7, xa, xb); break;
-        default: LRN_CAT(lrn_colsum, IS, RS)(b, C, nc, xa, xb);
+        for (int r = 0; r < 2; r++) {
+            const REAL *Dp[RGBZ_LEARNED_MAX_RADIUS + 1];
+            int np = 0;
+            for (int i = r; i < nr; i += 2) Dp[np++] = D[i];
+            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)(2 * d + r) * cols, Dp, np, ca, cb);
         }
+    }
+}
+
+/* the row stage of every direction at the n sites x0 + m px of a phase (column sums cs of
+   lrn_energies): bx[d][m], one row per direction, and with the spread term (split) the four
+   class rows bx[4 + 2 r + p][m]: over the horizontal and vertical directions, the pair
+   starts whose row offset from y - hr has the parity r and whose column offset from x - hr
+   the parity p (both rectangles start at row y - hr and column x - hr), so each class is one
+   Bayer colour */
+LRN_CLONES
+static void LRN_CAT(lrn_rows, IS, RS)(const REAL *cs, ptrdiff_t cols, int hr, int split,
+                                       ptrdiff_t x0, int px, int n, REAL *bx)
+{
+    static const int SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
+    REAL *k[4];
+    for (int q = 0; q < 4; q++) k[q] = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + q) * cols;
+    for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+        const int sx = SX[d];
+        const int clo = sx < 0 ? -hr - sx : -hr, chi = sx > 0 ? hr - sx : hr;
+        const int nc = chi - clo + 1, sp = split && d < RGBZ_LEARNED_SPREAD_DIRS;
+        const REAL *c0 = cs + (ptrdiff_t)2 * d * cols + clo;
+        const REAL *c1 = c0 + cols;
+        REAL *bxd = bx + (ptrdiff_t)d * cols;
+        /* the column counts of hash radius 3 and the periods of Mask1 and Mask2, unrolled */
+#define LRN_ROWS_(NC, PXC)                                                                    \
+        LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, NC, sp, d == 0, x0, PXC, n, bxd, k[0], k[1], k[2], \
+                                      k[3])
+        if (nc == 5 && px == 2) LRN_ROWS_(5, 2);
+        else if (nc == 7 && px == 2) LRN_ROWS_(7, 2);
+        else if (nc == 5 && px == 4) LRN_ROWS_(5, 4);
+        else if (nc == 7 && px == 4) LRN_ROWS_(7, 4);
+        else LRN_ROWS_(nc, px);
+#undef LRN_ROWS_
     }
 }
 
@@ -318,23 +451,55 @@ static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0
     }
 }
 
-/* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the
-   box sums bx of the row, their buckets, their dense dot products (rowp: the REAL rows) */
+/* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their energies from the box
+   sums bx of the phase's sites in the row, from m0 on (with the spread term also the colour
+   energies, from its class rows: lrn_rows), their buckets, their dense dot products (rowp:
+   the REAL rows) */
 LRN_CLONES
-static void LRN_CAT(lrn_fast_block, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
-                                             int n, const rgbz_learned_filters *f, int k,
-                                             const REAL *bx, ptrdiff_t cols, const REAL *dense,
-                                             REAL *res)
+static void LRN_CAT(lrn_fast_block, IS, RS)(const REAL *const *rowp, ptrdiff_t y, ptrdiff_t x0,
+                                             int px, int n, const rgbz_learned_filters *f, int k,
+                                             const REAL *bx, ptrdiff_t m0, ptrdiff_t cols,
+                                             const REAL *dense, REAL *res)
 {
     const int R = f->radius;
     REAL e[RGBZ_LEARNED_DIRS][LRN_BLK];
+    REAL ec[3][LRN_BLK];
     int32_t bucket[LRN_BLK];
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const REAL inv = (REAL)1 / (REAL)f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
-        const REAL *restrict b = bx + (ptrdiff_t)d * cols + x0;
-        LRN_IVDEP for (int j = 0; j < n; j++) e[d][j] = OMUL(b[(ptrdiff_t)j * px], inv);
+        const REAL *restrict b = bx + (ptrdiff_t)d * cols + m0;
+        LRN_IVDEP for (int j = 0; j < n; j++) e[d][j] = OMUL(b[j], inv);
     }
-    LRN_CAT(lrn_bucket, IS, RS)(e, n, f, k, bucket);
+    if (f->n_spr > 1) {
+        /* class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r) and
+           column parity (x - hr + p): one colour, the same at every site (px is even); green
+           holds two classes */
+        const int hr = f->hash_radius;
+        int g0 = -1, g1 = -1, cr = -1, cb = -1;
+        for (int q = 0; q < 4; q++) {
+            const int row = (int)((y - hr + (q >> 1)) & 1), col0 = (int)((x0 - hr + (q & 1)) & 1);
+            const int col = f->bayer[row * 2 + col0];
+            if (col == 1) {
+                if (g0 < 0) g0 = q; else g1 = q;
+            } else if (col == 0) {
+                cr = q;
+            } else {
+                cb = q;
+            }
+        }
+        const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + m0;
+        const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + m0;
+        const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + m0;
+        const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + m0;
+        const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
+        const REAL ib = (REAL)f->inv_col[k * 3 + 2];
+        LRN_IVDEP for (int j = 0; j < n; j++) {
+            ec[0][j] = OMUL(kr[j], ir);
+            ec[1][j] = OMUL(OADD(kg0[j], kg1[j]), ig);
+            ec[2][j] = OMUL(kb[j], ib);
+        }
+    }
+    LRN_CAT(lrn_bucket, IS, RS)(e, ec, n, f, k, bucket);
     LRN_CAT(lrn_dense_dot, IS, RS)(rowp, x0, px, n,
                                    dense + (ptrdiff_t)k * f->n_buckets * (2 * R + 1) * 8, R,
                                    bucket, res);
@@ -408,12 +573,15 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
     (void)workers;
 #endif
     {
-        /* the fast path's rows: cs and bx (4 rows each), the REAL ring, the D rings */
-        REAL *scratch = dense ? malloc((size_t)cols * (2 * RGBZ_LEARNED_DIRS + LRN_RING +
+        /* the fast path's rows: cs (2 per direction), bxs (1 per direction and the 4 class
+           rows, of the sites of one phase), the REAL ring, the D rings */
+        REAL *scratch = dense ? malloc((size_t)cols * (3 * RGBZ_LEARNED_DIRS + 4 + LRN_RING +
                                                        RGBZ_LEARNED_DIRS * LRN_RING) *
                                        sizeof(REAL))
                               : NULL;
-        REAL *conv = scratch ? scratch + (ptrdiff_t)2 * RGBZ_LEARNED_DIRS * cols : NULL;
+        REAL *conv = scratch ? scratch + (ptrdiff_t)(3 * RGBZ_LEARNED_DIRS + 4) * cols : NULL;
+        REAL *bxs = scratch ? scratch + (ptrdiff_t)2 * RGBZ_LEARNED_DIRS * cols : NULL;
+        const int split = f->n_spr > 1;
         REAL *dsq = scratch ? conv + (ptrdiff_t)LRN_RING * cols : NULL;
         ptrdiff_t ctag[LRN_RING], dtag[RGBZ_LEARNED_DIRS * LRN_RING];
         const int nomem = dense && !scratch;
@@ -500,22 +668,25 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                 IN_T *restrict drow = dst + y * cols;
                 memcpy(drow + sa, src + y * cols + sa, (size_t)(sb - sa) * sizeof(IN_T));
                 const REAL *realp[2 * RGBZ_LEARNED_MAX_RADIUS + 1];
-                LRN_CAT(lrn_energies, IS, RS)(src, rows, y, py, valid, cols, hr, sa, sb, ra, rb,
-                                              conv, ctag, dsq, dtag, scratch,
-                                              scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols);
+                LRN_CAT(lrn_energies, IS, RS)(src, rows, y, py, valid, cols, hr, split, sa, sb,
+                                              ra, rb, conv, ctag, dsq, dtag, scratch);
                 for (int dy = -R; dy <= R; dy++)
                     realp[dy + R] = LRN_CAT(lrn_real_row, IS, RS)(src, rows, cols, py, y + dy,
                                                                   ra, rb, conv, ctag);
                 for (int ph0 = 0; ph0 < px; ph0++) {
                     const int k = pm[ph0];
                     if (k < 0) continue;
-                    /* the sites of this phase in the strip (all of them fast sites) */
-                    for (ptrdiff_t x0 = sa + ((ph0 - sa) % px + px) % px; x0 < sb;) {
+                    /* the sites of this phase in the strip (all of them fast sites): their
+                       box sums, then blocks of them */
+                    const ptrdiff_t xs = sa + ((ph0 - sa) % px + px) % px;
+                    if (xs >= sb) continue;
+                    LRN_CAT(lrn_rows, IS, RS)(scratch, cols, hr, split, xs, px,
+                                              (int)((sb - 1 - xs) / px + 1), bxs);
+                    for (ptrdiff_t x0 = xs; x0 < sb;) {
                         const ptrdiff_t left = (sb - 1 - x0) / px + 1;
                         const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_fast_block, IS, RS)(realp, x0, px, n, f, k,
-                                                        scratch + (ptrdiff_t)RGBZ_LEARNED_DIRS * cols,
-                                                        cols, dense, res);
+                        LRN_CAT(lrn_fast_block, IS, RS)(realp, y, x0, px, n, f, k, bxs,
+                                                        (x0 - xs) / px, cols, dense, res);
                         for (int j = 0; j < n; j++)
                             drow[x0 + (ptrdiff_t)j * px] =
                             (IN_T)RGBZ_CAT(rgbz_out, RS)(res[j], maxval, IN_IS_INT);

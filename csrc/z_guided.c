@@ -45,13 +45,19 @@ static int zg_check(const rgbz_zguided_filters *f, ptrdiff_t rows, ptrdiff_t col
         f->n_base_max < 1 || (precision != RGBZ_P_FLOAT32 && precision != RGBZ_P_FLOAT64))
         return RGBZ_EINVAL;
     const rgbz_learned_filters *h = f->hash;
-    if (h->n_phases <= 0 || h->n_str < 1 || h->n_coh < 1 ||
-        h->n_buckets != 8 * h->n_str * h->n_coh || h->radius < 0 ||
+    if (h->n_phases <= 0 || h->n_str < 1 || h->n_coh < 1 || h->n_spr < 1 ||
+        h->n_buckets != 8 * h->n_str * h->n_coh * h->n_spr || h->radius < 0 ||
         h->radius > RGBZ_LEARNED_MAX_RADIUS || h->n_taps_max <= 0 ||
         h->n_taps_max > RGBZ_LEARNED_MAX_TAPS || py <= 0 || px <= 0 || rows < py || cols < px)
         return RGBZ_EINVAL;
     for (int i = 0; i < py * px; i++)
         if (phase_map[i] >= h->n_phases) return RGBZ_EINVAL;
+    /* the spread term indexes the colour energies by pair_col */
+    if (h->n_spr > 1) {
+        if (!h->pair_col || !h->inv_col || !h->spr_thr) return RGBZ_EINVAL;
+        for (ptrdiff_t i = 0; i < (ptrdiff_t)h->n_phases * RGBZ_LEARNED_DIRS * h->n_pairs_max; i++)
+            if (h->pair_col[i] < 0 || h->pair_col[i] > 2) return RGBZ_EINVAL;
+    }
     for (ptrdiff_t i = 0; i < f->gy * f->gx; i++)
         if (f->level[i] < 0 || f->level[i] >= f->n_levels) return RGBZ_EINVAL;
     for (int k = 0; k < h->n_phases; k++) {

@@ -21,26 +21,33 @@
 #define ZG_CAT3(a, b, c) a##_##b##_##c
 #define ZG_CAT(a, b, c) ZG_CAT3(a, b, c)
 
-/* the hash bucket of one site from its taps v (phase k): learned.h's octant, strength and
-   coherence of the four direction energies */
+/* the hash bucket of one site from its taps v (phase k): learned.h's octant, strength,
+   coherence and channel spread of the direction and colour energies */
 static int ZG_CAT(zg_hash, IS, RS)(const REAL *v, const rgbz_learned_filters *h, int k)
 {
     REAL e[RGBZ_LEARNED_DIRS];
+    REAL ec[3] = {0, 0, 0};
+    const int nk = h->n_spr;
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const int np = h->n_pairs[k * RGBZ_LEARNED_DIRS + d];
-        const int32_t *pa = h->pair_a + ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * h->n_pairs_max;
-        const int32_t *pb = h->pair_b + ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * h->n_pairs_max;
+        const ptrdiff_t o = ((ptrdiff_t)k * RGBZ_LEARNED_DIRS + d) * h->n_pairs_max;
+        const int32_t *pa = h->pair_a + o, *pb = h->pair_b + o, *pc = h->pair_col + o;
+        const int spread = nk > 1 && d < RGBZ_LEARNED_SPREAD_DIRS;
         REAL df = OSUB(v[pa[0]], v[pb[0]]);
         REAL s = OMUL(df, df);
+        if (spread) ec[pc[0]] = OADD(ec[pc[0]], s);
         for (int p = 1; p < np; p++) {
             df = OSUB(v[pa[p]], v[pb[p]]);
-            s = OADD(s, OMUL(df, df));
+            const REAL sq = OMUL(df, df);
+            s = OADD(s, sq);
+            if (spread) ec[pc[p]] = OADD(ec[pc[p]], sq);
         }
         e[d] = OMUL(s, (REAL)1 / (REAL)np);
     }
     const int ns = h->n_str, nc = h->n_coh;
     const double *st = h->str_thr + (ptrdiff_t)k * (ns - 1);
     const double *ct = h->coh_thr2 + (ptrdiff_t)k * (nc - 1);
+    const double *kt = h->spr_thr + (ptrdiff_t)k * (nk - 1);
     const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
     const REAL a = OSUB(e[0], e[1]);
     const REAL b = OMUL(OSUB(e[2], e[3]), (REAL)0.5);
@@ -52,12 +59,21 @@ static int ZG_CAT(zg_hash, IS, RS)(const REAL *v, const rgbz_learned_filters *h,
     const REAL ar1 = neg ? -ar : ar, br1 = neg ? -br : br;
     const int left = OCMP(ar1 < 0);
     const REAL ar2 = left ? br1 : ar1, br2 = left ? -ar1 : br1;
-    int bucket = (4 * neg + 2 * left + OCMP(br2 > ar2)) * (ns * nc);
-    for (int i = 0; i < ns - 1; i++) bucket += OCMP(t > (REAL)st[i]) ? nc : 0;
+    int bucket = (4 * neg + 2 * left + OCMP(br2 > ar2)) * (ns * nc * nk);
+    for (int i = 0; i < ns - 1; i++) bucket += OCMP(t > (REAL)st[i]) ? nc * nk : 0;
     if (nc > 1) {
         const REAL m2 = OADD(OMUL(a, a), OMUL(b, b));
         t = OMUL(t, t);
-        for (int i = 0; i < nc - 1; i++) bucket += OCMP(m2 > OMUL((REAL)ct[i], t));
+        for (int i = 0; i < nc - 1; i++) bucket += OCMP(m2 > OMUL((REAL)ct[i], t)) ? nk : 0;
+    }
+    if (nk > 1) {
+        /* the largest and the smallest colour energy */
+        const REAL r = OMUL(ec[0], (REAL)h->inv_col[k * 3]);
+        const REAL g = OMUL(ec[1], (REAL)h->inv_col[k * 3 + 1]);
+        const REAL bl = OMUL(ec[2], (REAL)h->inv_col[k * 3 + 2]);
+        const REAL hi1 = OCMP(g > r) ? g : r, lo1 = OCMP(g > r) ? r : g;
+        const REAL hi = OCMP(bl > hi1) ? bl : hi1, lo = OCMP(bl < lo1) ? bl : lo1;
+        for (int i = 0; i < nk - 1; i++) bucket += OCMP(hi > OMUL((REAL)kt[i], lo));
     }
     return bucket;
 }

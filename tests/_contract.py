@@ -190,6 +190,26 @@ class Files:
         (d / "sub" / "ok.npz").write_bytes((d / "ok.npz").read_bytes())
         iio.imwrite(d / "bayer16.png", np.full((8, 8), 300, np.uint16))
         (d / "raw_options.json").write_text('{"bayer16.png": {"phase": "GBRG"}, "*": 5}')
+        # integer samples wider than 16 bits: their type says nothing about their range
+        iio.imwrite(d / "int32.tif", np.full((16, 16, 3), 200, np.int32))
+        # samples that are no RGB or grey, and a damaged 16-bit PGM
+        from PIL import Image
+
+        Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("CMYK").save(d / "cmyk.jpg")
+        Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("CMYK").save(d / "cmyk.tif")
+        Image.fromarray(np.zeros((16, 16, 3), np.uint8)).convert("LAB").save(d / "lab.tif")
+        (d / "short.pgm").write_bytes(b"P5\n16 16\n65535\n" + bytes(100))
+        # inputs named like the outputs of other inputs
+        (d / "collide").mkdir()
+        iio.imwrite(d / "collide" / "a.png", np.zeros((16, 16, 3), np.uint8))
+        (d / "collide" / "a_mask1.npz").write_bytes((d / "ok.npz").read_bytes())
+        (d / "collide" / "a_mask1_sg_cfa.tif").write_bytes((d / "plain.tif").read_bytes())
+        # option files nested too deeply, naming no option, or not text
+        (d / "deep.json").write_text("[" * 100000 + "]" * 100000)
+        (d / "unknown.json").write_text('{"*": {"phse": "RGGB"}}')
+        (d / "binary.json").write_bytes(b"\xff\xfe\x00{")
+        # a file no decoder knows under a known suffix
+        (d / "junk.bmp").write_bytes(b"junk" * 8)
 
     def __truediv__(self, name):
         return self.d / name
@@ -262,8 +282,8 @@ def _argv(row, d):
 def cli_prefix(command):
     """Subcommands report as `rgbz-fast CMD: error:` (their unknown arguments too); the
     top-level parser (an unknown command) as `rgbz-fast: error:`."""
-    if command in ("simulate", "reconstruct", "depth", "evaluate", "calibrate", "evaluate-depth",
-                   "bench", "opcount", "tradeoff", "config"):
+    if command in ("simulate", "reconstruct", "depth", "evaluate", "train", "calibrate",
+                   "evaluate-depth", "bench", "opcount", "tradeoff", "config"):
         return f"rgbz-fast {command}: error: "
     return "rgbz-fast: error: "
 

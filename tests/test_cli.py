@@ -494,21 +494,33 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
     iio.imwrite(data / "b.png", skimage.data.coffee()[:64, :96])
     out = tmp_path / "f.npz"
     assert main(["train", "--dataset", str(data), "--pattern", "mask2", "--out", str(out),
-                 "--strength", "1", "--coherence", "1", "--quiet"]) == 0
+                 "--strength", "1", "--coherence", "1", "--spread", "1", "--quiet"]) == 0
     f = rz.reconstruction.LearnedFilters.load(out)
     assert f.pattern == rz.mask2() and f.meta["training_set"] == "images"
     assert f.meta["n_images"] == 2 and f.n_buckets == 8
+    # several folders, both encodings: every image twice
+    more = tmp_path / "more"
+    more.mkdir()
+    iio.imwrite(more / "c.png", skimage.data.chelsea()[:64, :96])
+    both = tmp_path / "both.npz"
+    assert main(["train", "--dataset", str(data), "--dataset", str(more), "--pattern", "mask1",
+                 "--out", str(both), "--encoding", "both", "--strength", "1", "--coherence",
+                 "1", "--spread", "2", "--quiet"]) == 0
+    g = rz.reconstruction.LearnedFilters.load(both)
+    assert g.meta["training_set"] == "images+more" and g.meta["encoding"] == "linear+srgb"
+    assert g.meta["n_images"] == 6 and g.n_buckets == 16
     assert main(["evaluate", "--dataset", str(data), "--patterns", "mask2", "--methods",
                  "bilinear,learned", "--metrics", "cfa_psnr", "--filters", str(out),
                  "--out", str(tmp_path / "res"), "--no-plots", "--quiet",
                  "--processes", "1"]) == 0
     assert "learned" in capsys.readouterr().out
-    # filters of another pattern: one line, status 2
-    assert main(["evaluate", "--dataset", str(data), "--patterns", "mask1", "--methods",
+    # a pattern neither the given filters nor the shipped ones fit: one line, status 2
+    assert main(["evaluate", "--dataset", str(data), "--patterns", "rows", "--methods",
                  "learned", "--metrics", "cfa_psnr", "--filters", str(out), "--out",
                  str(tmp_path / "res2"), "--no-plots", "--quiet", "--processes", "1"]) == 2
     err = capsys.readouterr().err
-    assert re.match(r"^rgbz-fast evaluate: error: filters: fitted for pattern 'mask2'", err)
+    assert re.match(r"^rgbz-fast evaluate: error: filters: none fits pattern 'rows' "
+                    r"\(given: mask2\)", err)
     assert main(["train", "--dataset", str(tmp_path / "nope"), "--pattern", "mask1",
                  "--out", str(tmp_path / "g.npz")]) == 2
     assert not (tmp_path / "g.npz").exists()

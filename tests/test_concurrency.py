@@ -288,3 +288,57 @@ def test_too_many_threads_for_the_address_space_is_a_clear_error():
     n = int(out.rsplit(" ", 1)[1])
     assert 100 < n < 512
     assert run(n) == "ran"
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v: Linux")
+@pytest.mark.skipif("ASAN_OPTIONS" in __import__("os").environ,
+                    reason="under AddressSanitizer (tools/sanitize.sh): its shadow memory is "
+                           "terabytes of address space, which ulimit -v forbids")
+def test_a_thread_stack_the_system_refuses_is_a_clear_error():
+    """``OMP_STACKSIZE=32G`` made libgomp abort the interpreter inside reconstruct(workers=2)
+    ("Thread creation failed", no error line from the CLI): the stacks OpenMP would ask for
+    are checked before the first parallel region, in the API and on the command line (here
+    under ``ulimit -v 8000000``, so that no 32 GiB stack fits); one thread runs, and a stack
+    the system grants changes nothing."""
+    import os
+    import resource
+    import tempfile
+
+    code = textwrap.dedent("""
+        import sys, numpy as np, rgbz_fast as rz
+        a = np.zeros((600, 600), np.uint16)
+        try:
+            rz.reconstruct(a, "sg", pattern="mask1", workers=int(sys.argv[1]))
+            print("ran")
+        except ValueError as exc:
+            print(exc)
+    """)
+
+    def limited():
+        resource.setrlimit(resource.RLIMIT_AS, (8_000_000 * 1024, 8_000_000 * 1024))
+
+    def run(argv, stack):
+        env = {**os.environ, "OMP_STACKSIZE": stack}
+        r = subprocess.run([sys.executable, *argv], capture_output=True, text=True,
+                           timeout=300, preexec_fn=limited, env=env)
+        assert r.returncode in (0, 2), (r.returncode, r.stderr[-500:])     # no abort
+        return r.returncode, (r.stdout.strip().splitlines() or [""])[-1], \
+            (r.stderr.strip().splitlines() or [""])[-1]
+
+    want = ("OMP_STACKSIZE: '32G' asks for a stack of 32 GiB for each of the 1 thread(s) "
+            "OpenMP starts for workers=2, which this system refuses")
+    assert run(["-c", code, "2"], "32G")[1].startswith(want)
+    assert run(["-c", code, "1"], "32G")[1] == "ran"
+    assert run(["-c", code, "2"], "16M")[1] == "ran"
+    assert run(["-c", code, "2"], "not a size")[1] == "ran"        # libgomp ignores it too
+    with tempfile.TemporaryDirectory() as d:
+        frame = Path(d) / "f.npz"
+        rz.io.save_frame(frame, rz.mosaic(np.random.default_rng(0).random((64, 64, 3)),
+                                          "mask1"))
+        code_cli, _, line = run(["-m", "rgbz_fast", "reconstruct", str(frame), "--out",
+                                 str(Path(d) / "out"), "--quiet", "--workers", "2"], "32G")
+        # the command line says it in its own words: the option, not the keyword
+        assert code_cli == 2 and line.startswith(
+            "rgbz-fast reconstruct: error: " + want.replace("workers=2", "--workers 2"))
+        assert line.endswith("or pass --workers 1")
+        assert not (Path(d) / "out").exists()

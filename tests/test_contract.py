@@ -17,6 +17,18 @@ from rgbz_fast import simulation as sim
 
 R = Row
 
+
+def _tof():
+    """The ToF taps of a simulated 16x16 Mask1 frame."""
+    return sim_frame().tof
+
+
+def _retaps(**changes):
+    """Those taps with some fields replaced (and checked again)."""
+    import dataclasses
+
+    return dataclasses.replace(_tof(), **changes)
+
 ROWS = [
     # -- patterns (rgbz_fast._patterns) ----------------------------------------------------
     R("patterns.none", "get_pattern(None)", lambda f: rz.get_pattern(None), TypeError,
@@ -88,6 +100,12 @@ ROWS = [
     R("frame.RawFrame-bit_depth-range", "RawFrame(bit_depth=17)",
       lambda f: rz.RawFrame(u16(), "mask1", bit_depth=17), ValueError,
       "bit_depth: expected 1..16 bits"),
+    R("frame.RawFrame-meta-list", "RawFrame(meta=[1, 2])",
+      lambda f: rz.RawFrame(u16(), "mask1", meta=[1, 2]), TypeError,
+      "meta: expected a dict, got list"),
+    R("frame.RawFrame-tof-number", "RawFrame(tof=5)",
+      lambda f: rz.RawFrame(u16(), "mask1", tof=5), TypeError,
+      "tof: expected ToFTaps or None, got int"),
     R("frame.RawFrame-pattern", "RawFrame(pattern='mask7')", lambda f: rz.RawFrame(u16(), "mask7"),
       ValueError, "pattern: 'mask7' is neither a preset"),
     R("frame.RawFrame-reference-shape", "RawFrame(reference of another shape)",
@@ -134,6 +152,16 @@ ROWS = [
     R("frame.mosaic-input_bits-100", "mosaic(uint8 image, input_bits=100)",
       lambda f: rz.mosaic(u8img(), "mask1", input_bits=100), ValueError,
       "input_bits: expected 1..8 bits for uint8 input, got 100"),
+    R("frame.mosaic-int64-list", "mosaic(a list of ints)",
+      lambda f: rz.mosaic([[[200, 200, 200]] * 4] * 4, "mask1"), TypeError,
+      "rgb: an int64 image (a list of Python ints becomes int64) says nothing about the range "
+      "of its values; pass input_bits="),
+    R("frame.mosaic-uint32", "mosaic(uint32 image)",
+      lambda f: rz.mosaic(np.full((4, 4, 3), 200, np.uint32), "mask1"), TypeError,
+      "rgb: a uint32 image says nothing about the range of its values"),
+    R("frame.mosaic-input_bits-values", "mosaic(int64 300, input_bits=8)",
+      lambda f: rz.mosaic(np.full((4, 4, 3), 300), "mask1", input_bits=8), ValueError,
+      "rgb: integer values span [300, 300], beyond the 8-bit input range [0, 255]"),
     R("frame.mosaic-input_bits-float", "mosaic(float image, input_bits=8)",
       lambda f: rz.mosaic(rgb(), "mask1", input_bits=8), ValueError,
       "input_bits: applies to integer input only"),
@@ -143,6 +171,41 @@ ROWS = [
     R("frame.ToFTaps-sites", "ToFTaps(sites outside the frame)",
       lambda f: taps_with_sites(1000), ValueError,
       "sites: rows span [1000, 1000], outside the 4x4 frame"),
+    R("frame.ToFTaps-taps-complex", "ToFTaps(complex taps)",
+      lambda f: _retaps(taps=_tof().taps * 1j), TypeError,
+      "taps: expected real numbers, got dtype complex128"),
+    R("frame.ToFTaps-taps-text", "ToFTaps(taps of text)",
+      lambda f: _retaps(taps=_tof().taps.astype(str)), TypeError,
+      "taps: expected real numbers, got dtype <U"),
+    R("frame.ToFTaps-taps-beyond-bits", "ToFTaps(11-bit taps of 3000)",
+      lambda f: _retaps(taps=np.full(_tof().taps.shape, 3000.0)), ValueError,
+      "taps: values span [3000, 3000], beyond the 11-bit range [0, 2047]"),
+    R("frame.ToFTaps-taps-negative", "ToFTaps(taps of -1)",
+      lambda f: _retaps(taps=np.full(_tof().taps.shape, -1.0)), ValueError,
+      "taps: values span [-1, -1], beyond the 11-bit range"),
+    R("frame.ToFTaps-sites-float", "ToFTaps(sites of floats)",
+      lambda f: _retaps(sites=(_tof().sites[0] + 0.5, _tof().sites[1])), TypeError,
+      "sites: expected integer pixel indices, got rows of dtype float64"),
+    R("frame.ToFTaps-sites-twice", "ToFTaps(a site twice)",
+      lambda f: _retaps(sites=(np.r_[_tof().sites[0][:-1], 0], np.r_[_tof().sites[1][:-1], 0])),
+      ValueError, "sites: the site (0, 0) is given twice"),
+    R("frame.ToFTaps-bit_depth-0", "ToFTaps(bit_depth=0)", lambda f: _retaps(bit_depth=0),
+      ValueError, "bit_depth: expected 1..16 bits, got 0"),
+    R("frame.ToFTaps-bit_depth-99", "ToFTaps(bit_depth=99)", lambda f: _retaps(bit_depth=99),
+      ValueError, "bit_depth: expected 1..16 bits, got 99"),
+    R("frame.ToFTaps-frequencies-twice", "ToFTaps(frequencies 80, 80, 120 MHz)",
+      lambda f: _retaps(frequencies=[80e6, 80e6, 120e6]), ValueError,
+      "frequencies: a frequency is given twice"),
+    R("frame.ToFTaps-valid-int", "ToFTaps(valid of ints)",
+      lambda f: _retaps(valid=_tof().valid.astype(int)), TypeError,
+      "valid: expected a bool array, got dtype int64"),
+    R("frame.ToFTaps-sensor", "ToFTaps(sensor=None)", lambda f: _retaps(sensor=None),
+      TypeError, "sensor: expected a ToFSensor, got NoneType"),
+    R("frame.RawFrame-tof-colour-site", "RawFrame(tof measured at a colour pixel)",
+      lambda f: rz.RawFrame(sim_frame().data, "mask1",
+                            tof=_retaps(sites=(_tof().sites[0], _tof().sites[1] + 1))),
+      ValueError, "tof: the measurement at (0, 1) (a 1x1 block) covers a colour pixel of "
+                  "pattern 'mask1'"),
     R("frame.ToFTaps-shape", "ToFTaps(taps of shape (3, 4))",
       lambda f: sim.ToFTaps(np.zeros((3, 4)), [1], (np.zeros(0), np.zeros(0)), 1, 11,
                             np.zeros(0), np.zeros(0, bool), np.zeros(0, bool),
@@ -211,3 +274,273 @@ def test_docs_tables_match_the_rows():
     assert table_between(text, "<!-- cli-table:start -->", "<!-- cli-table:end -->") == cli
     for bug, what in BUGS.items():
         assert f"**{bug} — " in text, f"{bug} is not described in docs/reports/robustness.md"
+
+
+def test_integer_images_wider_than_16_bits_need_their_bits():
+    """The one dtype rule (``rgbz_fast._validate.integer_bits``): an int32/int64/uint32/uint64
+    image -- any list of Python ints -- is never scaled by the width of its type (200 became
+    0 in a mosaic and an auto-exposed scene saturated). Every entry that takes the range of
+    an image from the image refuses it; stating the bits gives the result of a uint8 image of
+    the same values, and an entry given its range (metrics, data_range) reads it as it is."""
+    import pytest
+
+    from rgbz_fast import evaluation as ev
+    from rgbz_fast import isp, metrics
+
+    u8 = np.random.default_rng(0).integers(0, 256, (16, 16, 3)).astype(np.uint8)
+    for dtype in (np.int32, np.int64, np.uint32, np.uint64):
+        wide = u8.astype(dtype)
+        for call in (lambda a: rz.mosaic(a, "mask1"), lambda a: sim.Scene(a),
+                     lambda a: sim.Scene.from_rgb(a, encoding="srgb"),
+                     lambda a: sim.simulate(a, "mask1", noise=False),
+                     lambda a: ev.image_frames(a, "mask1", ev.EvalConfig()),
+                     lambda a: rz.reconstruct(a[..., 0], "bi", pattern="mask1"),
+                     lambda a: isp.srgb_encode(a), lambda a: isp.correct_colour(a)):
+            with pytest.raises(TypeError, match=f"{np.dtype(dtype)}"):
+                call(wide)
+        np.testing.assert_array_equal(rz.mosaic(wide, "mask1", input_bits=8).data,
+                                      rz.mosaic(u8, "mask1").data)
+        np.testing.assert_array_equal(sim.Scene(wide, input_bits=8).image, sim.Scene(u8).image)
+        np.testing.assert_array_equal(
+            sim.Scene.from_rgb(wide, encoding="linear", input_bits=8).image,
+            sim.Scene.from_rgb(u8, encoding="linear").image)
+        assert metrics.cpsnr(wide, wide[::-1]) == metrics.cpsnr(u8, u8[::-1])
+    # a list of ints is int64; the stated bits apply, values beyond them are refused
+    assert rz.mosaic(u8.tolist(), "mask1", input_bits=8).data.max() > 0
+    scene = sim.Scene(np.full((4, 4, 3), 4095), input_bits=12)
+    assert scene.image.max() == 1.0 and scene.input_bits is None
+
+
+def _public_flags():
+    """(qualified name, parameter) of every parameter of the public API whose default is a
+    bool: functions, classes and their public methods, found from the signatures."""
+    import inspect
+
+    mods = [rz, rz.simulation, rz.reconstruction, rz.isp, rz.tof, rz.metrics, rz.evaluation,
+            rz.io]
+    found, seen = set(), set()
+    for m in mods:
+        for n in m.__all__:
+            obj = getattr(m, n)
+            if id(obj) in seen or not callable(obj):
+                continue
+            seen.add(id(obj))
+            targets = [(n, obj)]
+            if inspect.isclass(obj):
+                targets += [(f"{n}.{a}", getattr(obj, a)) for a, f in vars(obj).items()
+                            if not a.startswith("_") and inspect.isfunction(f)]
+            for qual, fn in targets:
+                try:
+                    params = inspect.signature(fn).parameters.values()
+                except (TypeError, ValueError):
+                    continue
+                found |= {(qual, p.name) for p in params if isinstance(p.default, bool)}
+    return found
+
+
+def test_every_flag_of_the_public_api_refuses_what_is_not_a_bool(files):
+    """One flag check (``_validate.check_flag``) for every boolean parameter: "no", 0 and
+    None are a TypeError naming the parameter (``simulate(noise="no")`` ran the noise model,
+    ``ssim(gaussian_weights="no")`` used the Gaussian window). The list of flags comes from
+    the public signatures, so a new flag without its check fails here."""
+    import pytest
+
+    from rgbz_fast import evaluation as ev
+    from rgbz_fast import io as rio
+    from rgbz_fast import isp, metrics
+
+    scene = sim.Scene(rgb(), depth=np.full((16, 16), 1.5))
+    frame = sim_frame()
+    res = ev.Results([{"image": "a", "pattern": "mask1", "method": "bi", "metric": "cfa_psnr",
+                       "value": 1.0}], ev.EvalConfig(methods=("bi",), metrics=("cfa_psnr",)))
+    ds = dict(metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",), processes=1)
+    raw = dict(shape=(4, 4), phase="RGGB", black_level=0, bit_depth_in=12)
+    calls = {
+        ("ColourSensor", "shot_noise"): lambda v: sim.ColourSensor(shot_noise=v),
+        ("ColourSensor", "quantise"): lambda v: sim.ColourSensor(quantise=v),
+        ("ToFSensor", "shot_noise"): lambda v: sim.ToFSensor(shot_noise=v),
+        ("ToFSensor", "quantise"): lambda v: sim.ToFSensor(quantise=v),
+        ("simulate", "noise"): lambda v: sim.simulate(scene, "mask1", noise=v),
+        ("simulate_colour", "noise"): lambda v: sim.simulate_colour(scene, noise=v),
+        ("simulate_tof", "noise"): lambda v: sim.simulate_tof(scene, "mask1", noise=v),
+        ("ColourISP.run", "reference"): lambda v: isp.ColourISP().run(frame, reference=v),
+        ("ColourISP.run", "return_stages"):
+            lambda v: isp.ColourISP().run(frame, return_stages=v),
+        ("ColourISP.render", "return_stages"):
+            lambda v: isp.ColourISP().render(frame.reference, return_stages=v),
+        ("ColourISP.run_pair", "return_stages"):
+            lambda v: isp.ColourISP().run_pair(frame, return_stages=v),
+        ("load_image", "grey"): lambda v: sim.load_image(files / "rgb.png", grey=v),
+        ("load_rgbd", "grey"): lambda v: sim.load_rgbd(files / "empty", grey=v),
+        ("DefectCorrection", "enabled"): lambda v: isp.DefectCorrection(enabled=v),
+        ("WhiteBalance", "clip"): lambda v: isp.WhiteBalance(clip=v),
+        ("correct_defects", "return_mask"):
+            lambda v: isp.correct_defects(frame.data, "mask1", return_mask=v),
+        ("ssim", "gaussian_weights"):
+            lambda v: metrics.ssim(f64((16, 16)), f64((16, 16)), gaussian_weights=v),
+        ("EvalConfig", "noise"): lambda v: ev.EvalConfig(noise=v),
+        ("EvalConfig", "linearise"): lambda v: ev.EvalConfig(linearise=v),
+        ("EvalConfig.key", "raw"): lambda v: ev.EvalConfig().key("mask1", "sg", raw=v),
+        ("evaluate", "progress"): lambda v: ev.evaluate(files / "ds", progress=v, **ds),
+        ("evaluate", "skip_bad"):
+            lambda v: ev.evaluate(files / "ds", progress=False, skip_bad=v, **ds),
+        ("write_reports", "plots"): lambda v: ev.write_reports(res, files / "rep", plots=v),
+        ("train_filters", "noise"): lambda v: ev.train_filters(files / "ds", "mask1", noise=v),
+        ("train_filters", "linearise"):
+            lambda v: ev.train_filters(files / "ds", "mask1", linearise=v),
+        ("train_filters", "progress"):
+            lambda v: ev.train_filters(files / "ds", "mask1", progress=v),
+        ("read_raw", "crop_even"):
+            lambda v: rio.read_raw(files / "bayer.raw", crop_even=v, **raw),
+        ("list_raw_files", "recursive"): lambda v: rio.list_raw_files(files.d, recursive=v),
+        ("ImageSource", "raw"): lambda v: rio.ImageSource("a", "a.png", raw=v),
+        ("ImageSource", "grey"): lambda v: rio.ImageSource("a", "a.png", grey=v),
+        ("folder_dataset", "grey"): lambda v: rio.folder_dataset(files / "ds", grey=v),
+        ("rgb_image", "grey"): lambda v: rio.rgb_image(u8img(), "x.png", grey=v),
+    }
+    assert set(calls) == _public_flags()
+    for (qual, param), call in calls.items():
+        for bad in ("no", 0, None, np.array([True])):
+            with pytest.raises(TypeError, match=rf"^(\w+\.)?{param}: expected True or False"):
+                call(bad)
+
+
+def test_sequences_of_names_refuse_repeated_entries():
+    """A configuration naming an entry twice (two spellings of one pattern included) would
+    run it twice and count it twice in every mean: refused, naming the field."""
+    import re
+
+    import pytest
+
+    from rgbz_fast import evaluation as ev
+
+    for kw, twice in ((dict(patterns=("mask1", "mask1")), "'mask1' is given twice"),
+                      (dict(patterns="mask1,mask1_grbg"), "'mask1_grbg' is given twice "
+                                                          "(as 'mask1')"),
+                      (dict(methods=("sg", "bi", "sg")), "'sg' is given twice"),
+                      (dict(metrics="cpsnr,cpsnr"), "'cpsnr' is given twice")):
+        field = next(iter(kw))
+        with pytest.raises(ValueError, match="^" + re.escape(f"{field}: {twice}; name each")):
+            ev.EvalConfig(**kw)
+    with pytest.raises(ValueError, match=r"^sections: 'noise' is given twice"):
+        ev.evaluate_depth(sections=("noise", "noise"))
+    with pytest.raises(TypeError, match=r"^methods: expected names \(strings\), got 5"):
+        ev.EvalConfig(methods=("sg", 5))
+
+
+def _sweep_calls(d):
+    """(name, function, args, kwargs) of valid calls of the public API on small inputs,
+    each of whose arguments the sweep below replaces by hostile values in turn."""
+    from rgbz_fast import evaluation as ev
+    from rgbz_fast import io as rio
+    from rgbz_fast import isp, metrics
+    from rgbz_fast import reconstruction as rec
+
+    rng = np.random.default_rng(0)
+    img = rng.random((32, 32, 3))
+    u8 = (img * 255).astype(np.uint8)
+    big = np.zeros((176, 176, 3), np.uint8)
+    scene = sim.Scene(img, depth=np.full((32, 32), 1.5))
+    frame = sim.simulate(scene, "mask1", noise=False)
+    cfa = frame.reference
+    bayer_frame = rz.RawFrame(cfa, rz.bayer())
+    cfg = ev.EvalConfig(methods=("bilinear", "sg"), metrics=("cfa_psnr",), patterns=("mask1",))
+    res = ev.Results([{"image": "a", "pattern": "mask1", "method": m, "metric": "cfa_psnr",
+                       "value": 1.0 + i} for i, m in enumerate(cfg.methods)], cfg)
+    src = rio.ImageSource("a", str(d / "ds" / "a.png"))
+    one = dict(metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",))
+    raw = dict(shape=(4, 4), phase="RGGB", black_level=0, bit_depth_in=12)
+    return [
+        ("mosaic", rz.mosaic, (img, "mask1"), {}),
+        ("RawFrame", rz.RawFrame, (frame.data, "mask1"), {}),
+        ("Pattern", rz.Pattern, ("ZR/BG",), {}),
+        ("reconstruct", rz.reconstruct, (frame.data, "sg"), {"pattern": "mask1"}),
+        ("build_plans", rec.build_plans, (rz.mask1(), "sg"), {}),
+        ("Scene", sim.Scene, (img,), {}),
+        ("Scene.from_rgb", sim.Scene.from_rgb, (u8,), {}),
+        ("load_image", sim.load_image, (d / "rgb.png",), {}),
+        ("simulate", sim.simulate, (scene, "mask1"), {"noise": False}),
+        ("simulate_tof", sim.simulate_tof, (scene, "mask1"), {"noise": False}),
+        ("apply_optics", sim.apply_optics, (img, sim.Optics()), {"pixel_pitch_um": 2.8}),
+        ("Optics.mtf", sim.Optics().mtf, (np.linspace(0, 1, 5), 550),
+         {"pixel_pitch_um": 2.8}),
+        ("disparity_to_depth", sim.disparity_to_depth, (f64((4, 4), 10.0), 3740, 0.16), {}),
+        ("ColourISP.run", isp.ColourISP().run, (frame,), {}),
+        ("ColourISP.render", isp.ColourISP().render, (cfa,), {}),
+        ("demosaic", isp.demosaic, (cfa,), {}),
+        ("white_balance", isp.white_balance, (cfa,), {}),
+        ("correct_colour", isp.correct_colour, (img,), {}),
+        ("srgb_encode", isp.srgb_encode, (img,), {}),
+        ("correct_defects", isp.correct_defects, (frame.data, "mask1"), {}),
+        ("cfa_psnr", metrics.cfa_psnr, (cfa, cfa[::-1], frame.z_mask), {"bit_depth": 11}),
+        ("cpsnr_pooled", metrics.cpsnr_pooled, ([u8], [u8[::-1]]), {}),
+        ("ssim", metrics.ssim, (u8, u8[::-1]), {}),
+        ("zipper", metrics.zipper, (u8, u8[::-1]), {}),
+        ("all_metrics", metrics.all_metrics, (big, big), {}),
+        ("EvalConfig", ev.EvalConfig, (), {}),
+        ("evaluate", ev.evaluate, (d / "ds",), {**one, "progress": False, "processes": 1}),
+        ("evaluate_image", ev.evaluate_image, (src, ev.EvalConfig(**one)), {}),
+        ("image_frames", ev.image_frames, (u8, "mask1", cfg), {}),
+        ("Results", ev.Results, (res.rows, res.config), {}),
+        ("Results.paired", res.paired, ("mask1", "sg", "cfa_psnr"), {}),
+        ("Results.summary_markdown", res.summary_markdown, (), {}),
+        ("bar_chart", ev.bar_chart, (res, "cfa_psnr"), {}),
+        ("write_reports", ev.write_reports, (res, d / "sweep_reports"), {"plots": False}),
+        ("depth_report", ev.depth_report, ({"noise": []},), {}),
+        ("load_frame", rio.load_frame, (d / "ok.npz",), {}),
+        ("read_npz", rio.read_npz, (d / "ok.npz",), {}),
+        ("read_raw", rio.read_raw, (d / "bayer.raw",), raw),
+        ("list_raw_files", rio.list_raw_files, (d,), {}),
+        ("to_rgbz", rio.to_rgbz, (bayer_frame, "mask1"), {}),
+        ("clipped_mask", rio.clipped_mask, (bayer_frame,), {"clip_level": 2000}),
+        ("folder_dataset", rio.folder_dataset, (d / "ds",), {}),
+        ("read_image", rio.read_image, (d / "rgb.png",), {}),
+        ("rgb_image", rio.rgb_image, (u8, "x"), {}),
+        ("check_size", rio.check_size, ((4, 4), 2, "x"), {}),
+        ("save_frame", rio.save_frame, (d / "sweep.npz", frame), {}),
+    ]
+
+
+def test_every_argument_of_the_public_api_refuses_hostile_values_by_name(files, tmp_path,
+                                                                         monkeypatch):
+    """Each argument of a sweep of the public API (the calls of :func:`_sweep_calls`)
+    replaced in turn by None, text, a negative, a huge or NaN number, a ragged list, an
+    object, a 0-d array or bytes: the call either works (finite output from finite input)
+    or raises ValueError/TypeError (FileNotFoundError for a missing file) whose message
+    starts with the name of what is wrong -- never a NumPy, os or matplotlib message, a
+    KeyError, an IndexError, an OverflowError or a MemoryError (each of those was found
+    here and fixed where the argument comes in)."""
+    import inspect
+    import math
+    import re
+    import warnings
+
+    bad_values = [None, "x", -1, 2**70, 1e308, math.nan, [[1, 2], [3]], object(),
+                  np.array(5), b"x", {"a": 1}]
+    named = re.compile(r"^[\w.'\[\]()]+(: | got an unexpected keyword argument )"
+                       r"|^patterns, methods and metrics must")
+    monkeypatch.chdir(tmp_path)                    # a path "x" that works is written here
+    for name, fn, args, kwargs in _sweep_calls(files.d):
+        sig = inspect.signature(fn)
+        bound = sig.bind_partial(*args, **kwargs).arguments
+        for p in sig.parameters.values():
+            if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+                continue
+            for bad in bad_values:
+                call = {**bound, p.name: bad}
+                for q in sig.parameters.values():
+                    if q.kind == q.VAR_KEYWORD and q.name in call:
+                        call.update(call.pop(q.name))
+                where = f"{name}({p.name}={bad!r:.30})"
+                try:
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        out = fn(**call)
+                except (ValueError, TypeError, FileNotFoundError) as exc:
+                    assert named.match(str(exc)), f"{where}: {type(exc).__name__}: {exc}"
+                    continue
+                except Exception as exc:                  # noqa: BLE001 - what the test finds
+                    raise AssertionError(f"{where} leaked {type(exc).__name__}: {exc}")
+                for o in out if isinstance(out, tuple) else (out,):
+                    if isinstance(o, np.ndarray) and o.dtype.kind == "f" and bad is not math.nan:
+                        assert np.all(np.isfinite(o)), f"{where}: a non-finite result"

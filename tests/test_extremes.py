@@ -184,16 +184,35 @@ def test_malvar_extremes_are_finite_and_bounded(mode):
     }
     for name, cfa in cases.items():
         for out_dtype in (np.float32, np.float64):
-            with warnings.catch_warnings():
-                # 1e300 does not fit float32: the cast to inf is the caller's request
-                warnings.simplefilter("ignore", RuntimeWarning)
-                rgb = demosaic(cfa, "GRBG", mode=mode, dtype=out_dtype)
             if name == "huge_float" and out_dtype == np.float32:
+                # 1e300 does not fit float32: refused, not cast to inf
+                with pytest.raises(ValueError, match="^cfa: values up to 1e.300 .*float32"):
+                    demosaic(cfa, "GRBG", mode=mode, dtype=out_dtype)
                 continue
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", RuntimeWarning)
+                rgb = demosaic(cfa, "GRBG", mode=mode, dtype=out_dtype)
             assert np.all(np.isfinite(rgb)), (name, out_dtype)
             lo, hi = float(cfa.min()), float(cfa.max())
             assert rgb.min() >= lo - 0.75 * (hi - lo) * (1 + 1e-6), name
             assert rgb.max() <= lo + 1.75 * (hi - lo) * (1 + 1e-6), name
+
+
+def test_demosaic_near_the_largest_float_is_finite_or_refused():
+    """Finite values near the float maximum: every method and border gives finite values up
+    to 1/32 of the output type's largest float (NaN from inf - inf before), and refuses
+    larger ones naming the CFA."""
+    rng = np.random.default_rng(3)
+    for dtype in (np.float32, np.float64):
+        limit = float(np.finfo(dtype).max) / 32
+        cfa = ((rng.random((12, 12)) * 2 - 1) * limit).astype(dtype)
+        for method in ("malvar2004", "menon2007", "bilinear"):
+            for mode in ("reflect", "period"):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("error", RuntimeWarning)
+                    assert np.all(np.isfinite(demosaic(cfa, "RGGB", method, mode=mode)))
+        with pytest.raises(ValueError, match="^cfa: values up to .* in magnitude"):
+            demosaic(np.full((4, 4), np.finfo(dtype).max, dtype), "RGGB")
 
 
 def test_malvar_one_pixel_feature_stays_local():

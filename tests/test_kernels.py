@@ -79,8 +79,10 @@ def test_a_precision_code_without_a_kernel_is_refused(name):
     with pytest.raises(ValueError, match="precision"):
         k.learned(d, np.empty_like(d), bad, 2, 2, phase_map, np.ones(1, np.int32), i32, i32,
                   np.ones((1, 4), np.int32), np.zeros((1, 4, 1), np.int32),
-                  np.zeros((1, 4, 1), np.int32), f64, f64, np.zeros((1, 1, 8), np.float32),
-                  np.zeros((1, 1, 8)), 0, 0, 2047.0, 1, **counts)
+                  np.zeros((1, 4, 1), np.int32), np.zeros((1, 4, 1), np.int32),
+                  np.ones((1, 3)), np.array([1, 0, 2, 1], np.int32), f64, f64, f64,
+                  np.zeros((1, 1, 8), np.float32), np.zeros((1, 1, 8)), 0, 0, 2047.0, 1,
+                  **counts)
 
 
 # -- constants from the C enums -----------------------------------------------------------------

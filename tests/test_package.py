@@ -52,7 +52,8 @@ def test_import_loads_no_tooling_plotting_or_test_module():
 
 # the layers, bottom up: a module may import its own package and the layers below
 _LAYERS = [
-    {"_validate", "_build_config", "_kernels", "_deps", "_config", "_compat", "_progress"},
+    {"_validate", "_threads", "_build_config", "_kernels", "_deps", "_config", "_compat",
+     "_progress"},
     {"_patterns", "_sensor_checks", "_sensors", "_frame"},
     {"io"},
     {"simulation", "reconstruction", "tof", "metrics"},

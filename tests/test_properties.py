@@ -188,7 +188,8 @@ def test_reconstruct_never_crashes_or_returns_garbage(data, pattern_name, method
 
 
 @quick(300)
-@given(data=st.data(), pattern_name=st.sampled_from(["mask1", "mask2"]),
+@given(data=st.data(), pattern_name=st.sampled_from(["mask1", "mask2", "mask1_rggb", "mask2_bggr",
+                                                    "mask2_gbrg"]),
        bit_depth=st.sampled_from([8, 11]), dtype=st.sampled_from(DTYPES),
        precision=st.sampled_from(["float32", "float64"]), workers=st.sampled_from([1, 2]))
 def test_learned_never_crashes_or_returns_garbage(data, pattern_name, bit_depth, dtype,
@@ -219,7 +220,8 @@ def test_learned_never_crashes_or_returns_garbage(data, pattern_name, bit_depth,
     if precision == "float64":
         # fragile sites (an isotropic window: its orientation is rounding noise) excepted
         ref, fragile = reference_learned(
-            frame, rz.reconstruction.default_filters(pattern, bit_depth), return_fragile=True)
+            frame, rz.reconstruction.default_filters(pattern), return_fragile=True,
+            bit_depth=bit_depth)
         tol = {np.float64: 1e-9 * top, np.float32: 1e-6 * top}.get(dtype, 0.5 + 1e-6 * top)
         keep = z & ~fragile
         if (z & fragile).any():

@@ -39,7 +39,7 @@ from rgbz_fast import reconstruct
 from rgbz_fast.io import read_image
 from rgbz_fast.metrics import cfa_psnr
 from rgbz_fast.reconstruction import default_filters
-from rgbz_fast.reconstruction._learned import gather_windows, hash_buckets, hash_features
+from rgbz_fast.reconstruction._learned_hash import gather_windows, hash_buckets, hash_features
 from rgbz_fast.reconstruction._z_guided_fit import fit_stats, frame_stats
 from rgbz_fast.simulation import Scene, simulate
 
@@ -70,9 +70,8 @@ def strength(frame, base):
     levels, where = [], []
     for k, (X, (r, c, ny, nx)) in enumerate(
             gather_windows(frame.data, frame.pattern, base.radius, base.geometry)):
-        bk = hash_buckets(*hash_features(X, base.geometry[k]["pairs"]),
-                          base.strength_thresholds[k], base.coherence_thresholds[k])
-        levels.append((bk // base.n_coherence) % base.n_strength)
+        bk = hash_buckets(hash_features(X, base.geometry[k]), *(t[k] for t in base.thresholds()))
+        levels.append((bk // (base.n_coherence * base.n_spread)) % base.n_strength)
         where.append((r, c, ny, nx))
 
     def sites(img):
@@ -88,7 +87,7 @@ def t_interval(d):
 
 
 def run_pattern(folder, names, pattern, n_folds, rows):
-    base = default_filters(pattern, 11)
+    base = default_filters(pattern)
     all_frames = {}
     equations = {}
     for n in names:

@@ -16,7 +16,9 @@ import numpy as np
 
 from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
-from ._validate import FRAME_DTYPES, check_bit_depth, check_dtype, check_image
+from ._validate import (FRAME_DTYPES, as_array, as_list, check_bit_depth, check_dtype,
+                        check_block, check_fill, check_finite, check_frequencies, check_image, check_int,
+                        check_meta, check_sites, integer_bits)
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
 
@@ -85,18 +87,26 @@ class RawFrame:
         bd = check_bit_depth(self.bit_depth)
         object.__setattr__(self, "bit_depth", bd)
         # copied before the checks: what is checked is what the frame keeps
-        data = validate_frame(_owned(self.data), pattern, bd, "data")
+        data = validate_frame(_owned(self.data, "data"), pattern, bd, "data")
         object.__setattr__(self, "data", _read_only(data))
         if self.reference is not None:
-            ref = check_image(_owned(self.reference), "reference", ndim=2, dtypes=FRAME_DTYPES)
+            ref = check_image(_owned(self.reference, "reference"), "reference", ndim=2,
+                              dtypes=FRAME_DTYPES)
             if ref.shape != self.data.shape:
                 raise ValueError(f"reference: shape {ref.shape} differs from data "
                                  f"{self.data.shape}")
             _check_range(ref, bd, "reference")
             object.__setattr__(self, "reference", _read_only(ref))
+        # checked here, not where they are used: a list as meta or a number as tof failed
+        # later with an AttributeError deep inside the ISP or a writer
+        if self.tof is not None and not isinstance(self.tof, ToFTaps):
+            raise TypeError(f"tof: expected ToFTaps or None, got {type(self.tof).__name__}")
         if isinstance(self.tof, ToFTaps) and self.tof.shape != self.data.shape:
             raise ValueError(f"tof: taps of a {self.tof.shape[0]}x{self.tof.shape[1]} frame, "
                              f"the data is {self.data.shape[0]}x{self.data.shape[1]}")
+        if isinstance(self.tof, ToFTaps):
+            _check_z_sites(self.tof, pattern)
+        object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
 
     @property
     def shape(self):
@@ -121,6 +131,22 @@ class RawFrame:
                 f"pattern={self.pattern.name!r}, bit_depth={self.bit_depth}{extra})")
 
 
+def _check_z_sites(tof, pattern):
+    """Every cell of every measurement's block is a Z site of ``pattern``: a measurement at
+    a colour pixel would be reported as depth there."""
+    z = pattern.z_mask(tof.shape)
+    rows, cols = tof.sites
+    ok = np.ones(rows.size, bool)
+    for dr in range(tof.block):
+        for dc in range(tof.block):
+            ok &= z[rows + dr, cols + dc]
+    if not ok.all():
+        i = int(np.flatnonzero(~ok)[0])
+        raise ValueError(f"tof: the measurement at ({rows[i]}, {cols[i]}) (a {tof.block}x"
+                         f"{tof.block} block) covers a colour pixel of pattern "
+                         f"{pattern.name!r}; ToF measurements sit on its Z sites")
+
+
 class _Adopt:
     """An array the library has just made and hands to a RawFrame, which keeps it as its own
     without copying it (the public constructor copies what a caller may still hold)."""
@@ -131,7 +157,7 @@ class _Adopt:
         self.array = array
 
 
-def _owned(a):
+def _owned(a, name="data"):
     """A C-ordered copy of an array-like (None stays None): the frame's own memory. An
     :class:`_Adopt` array is kept as it is when it is already C-ordered."""
     if a is None:
@@ -140,7 +166,7 @@ def _owned(a):
         return np.ascontiguousarray(a.array)
     if isinstance(a, np.ma.MaskedArray):
         a = a.data
-    return np.array(a, copy=True, order="C")
+    return np.array(as_array(a, name), copy=True, order="C")
 
 
 def _read_only(a):
@@ -234,7 +260,9 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     rgb : ndarray, shape (rows, cols, 3)
         The image. Integer input of k bits is scaled to the full range of the
         bit depth, ``round(v / (2**k - 1) * (2**bit_depth - 1))``; float input
-        is taken as [0, 1].
+        is taken as [0, 1]. An integer type wider than 16 bits (int32, int64:
+        a list of Python ints) needs ``input_bits`` (see
+        :func:`rgbz_fast._validate.integer_bits`).
     pattern : Pattern or str
         The pattern; ``bayer(...)`` gives the reference CFA of the same image.
     bit_depth : int
@@ -243,8 +271,9 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
         Output dtype. Integer outputs are rounded; float outputs keep the
         exact scaled values.
     input_bits : int, optional
-        Bits of integer input, 1 up to the dtype's width (default: the width,
-        8 for uint8 and 16 for uint16; 31 for int32). Not for float input.
+        Bits of integer input, 1 up to the dtype's width (default: the width
+        for types of at most 16 bits, 8 for uint8 and 16 for uint16; required
+        for wider ones, int32 or int64). Not for float input.
 
     Returns
     -------
@@ -265,12 +294,10 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     """
     pattern = get_pattern(pattern)
     bd = check_bit_depth(bit_depth)
-    if input_bits is not None and (isinstance(input_bits, bool)
-                                   or not isinstance(input_bits, (int, np.integer))):
-        raise TypeError(f"input_bits: expected an integer number of bits, got {input_bits!r}")
     img = check_image(rgb, "rgb", ndim=3)
     if img.shape[2] != 3:
         raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {img.shape}")
+    k = integer_bits(img, "rgb", input_bits)
     out_dtype = check_dtype(dtype, FRAME_DTYPES)
     if out_dtype == np.uint8 and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
@@ -279,24 +306,8 @@ def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=No
     colour = pattern.bayer_map(shape)
     rr, cc = np.indices(shape, sparse=True)
     sampled = img[rr, cc, colour]
-    integer = np.issubdtype(img.dtype, np.integer) or img.dtype == np.bool_
-    if integer:
-        # the widest value the dtype holds: more bits would scale every value to ~0
-        width = 1 if img.dtype == np.bool_ else \
-            8 * img.dtype.itemsize - int(np.issubdtype(img.dtype, np.signedinteger))
-        k = width if input_bits is None else int(input_bits)
-        if not 1 <= k <= width:
-            raise ValueError(f"input_bits: expected 1..{width} bits for {img.dtype} input, "
-                             f"got {input_bits}")
-    elif input_bits is not None:
-        raise ValueError(f"input_bits: applies to integer input only; {img.dtype} input is "
-                         f"taken as [0, 1], got input_bits={input_bits}")
-    if integer:
-        vmax = (1 << k) - 1
-        if sampled.min() < 0 or sampled.max() > vmax:
-            raise ValueError(f"rgb: integer values span [{sampled.min()}, {sampled.max()}], "
-                             f"beyond the {k}-bit input range")
-        scaled = sampled.astype(np.float64) * (top / vmax)
+    if k is not None:
+        scaled = sampled.astype(np.float64) * (top / ((1 << k) - 1))
     else:
         if sampled.min() < 0 or sampled.max() > 1:
             raise ValueError(f"rgb: float values span [{sampled.min()}, {sampled.max()}]; "
@@ -361,27 +372,52 @@ class ToFTaps:
     meta: dict = field(default_factory=dict)
 
     def __post_init__(self):
-        # own copies, read-only (as RawFrame): the caller's arrays stay the caller's
-        taps = _owned(self.taps)
+        # own copies, read-only (as RawFrame): the caller's arrays stay the caller's; every
+        # field checked here, where a file or a caller gives it (complex or text taps, float
+        # or repeated sites, 0 or 99 bits failed later or gave silent results)
+        if self.taps is None:
+            raise TypeError("taps: expected an array of shape (F, 4, n_sites), got None")
+        taps = _owned(self.taps, "taps")
         if taps.ndim != 3 or taps.shape[1] != 4:
             raise ValueError(f"taps: expected shape (F, 4, n_sites), got {taps.shape}")
+        if taps.dtype.kind not in "iuf":
+            raise TypeError(f"taps: expected real numbers, got dtype {taps.dtype}")
+        check_finite(taps, "taps")
         F, _, n = taps.shape
-        freqs = np.array(self.frequencies, np.float64)
+        freqs = check_frequencies(self.frequencies, "frequencies", unique=True)
         if freqs.shape != (F,):
             raise ValueError(f"frequencies: expected {F} values, got shape {freqs.shape}")
-        rows, cols = (np.array(a, np.int64) for a in self.sites)
-        per_site = {k: _owned(getattr(self, k)) for k in ("depth_true", "valid", "saturated")}
+        rows, cols = check_sites(self.sites, "sites")
+        per_site = {k: _owned(getattr(self, k), k) for k in ("depth_true", "valid",
+                                                             "saturated")}
         for name, a in (("sites", rows), ("sites", cols), *per_site.items()):
             if np.shape(a) != (n,):
                 raise ValueError(f"{name}: expected shape ({n},), got {np.shape(a)}")
-        if self.block not in (1, 2):
-            raise ValueError(f"block: expected 1 or 2, got {self.block!r}")
-        shape = tuple(int(v) for v in self.shape)
-        if len(shape) != 2 or min(shape) < self.block:
+        if n and per_site["depth_true"].dtype.kind not in "iuf":
+            raise TypeError(f"depth_true: expected metres, got dtype "
+                            f"{per_site['depth_true'].dtype}")
+        for k in ("valid", "saturated"):
+            if n and per_site[k].dtype != np.bool_:
+                raise TypeError(f"{k}: expected a bool array, got dtype {per_site[k].dtype}")
+        block = check_block(self.block, "block")
+        object.__setattr__(self, "block", block)
+        object.__setattr__(self, "bit_depth", check_bit_depth(self.bit_depth, "bit_depth"))
+        top = (1 << self.bit_depth) - 1             # the ADC's codes: none can lie beyond
+        if taps.size and (taps.min() < 0 or taps.max() > top):
+            raise ValueError(f"taps: values span [{taps.min():g}, {taps.max():g}], beyond the "
+                             f"{self.bit_depth}-bit range [0, {top}]")
+        if not isinstance(self.sensor, ToFSensor):
+            raise TypeError(f"sensor: expected a ToFSensor, got {type(self.sensor).__name__}")
+        shape = as_list(self.shape, "shape", "a (rows, cols) frame shape")
+        if len(shape) != 2 or not all(isinstance(v, (int, np.integer)) and
+                                      not isinstance(v, bool) for v in shape) \
+                or min(shape) < block:
             raise ValueError(f"shape: expected a (rows, cols) frame shape, got {self.shape!r}")
+        shape = tuple(int(v) for v in shape)
+        object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
         # every site's block inside the frame (a file could say anything)
         for name, a, size in (("rows", rows, shape[0]), ("cols", cols, shape[1])):
-            if n and (a.min() < 0 or a.max() > size - self.block):
+            if n and (a.min() < 0 or a.max() > size - block):
                 raise ValueError(f"sites: {name} span [{a.min()}, {a.max()}], outside the "
                                  f"{shape[0]}x{shape[1]} frame")
         for a in (taps, freqs, rows, cols, *per_site.values()):
@@ -474,7 +510,8 @@ class ToFTaps:
         -------
         ndarray, shape ``self.shape``
         """
-        v = np.asarray(values)
+        v = as_array(values, "values")
+        fill = check_fill(fill)
         if v.shape != (self.n_sites,):
             raise ValueError(f"values: expected shape ({self.n_sites},), got {v.shape}")
         out = np.full(self.shape, fill, dtype=np.result_type(v.dtype, np.min_scalar_type(fill)))

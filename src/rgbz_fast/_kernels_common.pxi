@@ -97,7 +97,7 @@ cdef extern from "rgbz.h" nogil:
 
 cdef extern from "learned.h" nogil:
     ctypedef struct rgbz_learned_filters:
-        int32_t n_phases, n_buckets, n_taps_max, n_pairs_max, n_str, n_coh, radius
+        int32_t n_phases, n_buckets, n_taps_max, n_pairs_max, n_str, n_coh, n_spr, radius
         int32_t hash_radius
         const int32_t *n_taps
         const int32_t *tap_dy
@@ -105,8 +105,12 @@ cdef extern from "learned.h" nogil:
         const int32_t *n_pairs
         const int32_t *pair_a
         const int32_t *pair_b
+        const int32_t *pair_col
+        const double *inv_col
+        const int32_t *bayer
         const double *str_thr
         const double *coh_thr2
+        const double *spr_thr
         const float *w_f32
         const double *w_f64
         const float *wd_f32
@@ -286,8 +290,10 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
             const int32_t[::1] phase_map, const int32_t[::1] n_taps,
             const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
             const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
-            const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
-            const double[:, ::1] coh_thr2, const float[:, :, ::1] w_f32,
+            const int32_t[:, :, ::1] pair_b, const int32_t[:, :, ::1] pair_col,
+            const double[:, ::1] inv_col, const int32_t[::1] bayer,
+            const double[:, ::1] str_thr, const double[:, ::1] coh_thr2,
+            const double[:, ::1] spr_thr, const float[:, :, ::1] w_f32,
             const double[:, :, ::1] w_f64, int radius, int hash_radius, double maxval,
             int workers, const float[:, :, :, ::1] wd_f32=None,
             const double[:, :, :, ::1] wd_f64=None, uint64_t[::1] opcounts=None):
@@ -295,7 +301,9 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     the counting module (``_kernels_count``, single thread), refused by ``_kernels``.
 
     Weights are tap-major, (n_phases, n_taps_max, n_buckets); thresholds
-    (n_phases, levels - 1), the coherence ones squared; the optional dense weights
+    (n_phases, levels - 1), the coherence ones squared; ``pair_col`` the colour of each
+    pair, ``inv_col`` (n_phases, 3) one over the pairs of each colour, ``bayer`` the colours
+    of the 2x2 Bayer tile at the frame's origin (row-major); the optional dense weights
     (n_phases, n_buckets, 2 radius + 1, 8) enable the fast path (the layout of learned.h).
     """
     cdef int in_type = _type_code(<frame_t *> NULL)
@@ -309,6 +317,7 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     f.n_pairs_max = pair_a.shape[2]
     f.n_str = str_thr.shape[1] + 1
     f.n_coh = coh_thr2.shape[1] + 1
+    f.n_spr = spr_thr.shape[1] + 1
     f.radius = radius
     f.hash_radius = hash_radius
     f.n_taps = &n_taps[0]
@@ -317,9 +326,13 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     f.n_pairs = &n_pairs[0, 0]
     f.pair_a = &pair_a[0, 0, 0]
     f.pair_b = &pair_b[0, 0, 0]
+    f.pair_col = &pair_col[0, 0, 0]
+    f.inv_col = &inv_col[0, 0]
+    f.bayer = &bayer[0]
     # a level count of 1 has no threshold: the kernel reads none
     f.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
     f.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    f.spr_thr = &spr_thr[0, 0] if spr_thr.shape[1] else &zero
     f.w_f32 = &w_f32[0, 0, 0]
     f.w_f64 = &w_f64[0, 0, 0]
     f.wd_f32 = NULL
@@ -335,7 +348,10 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     if (tap_dy.shape[0] != f.n_phases or n_taps.shape[0] != f.n_phases
             or w_f64.shape[0] != f.n_phases or w_f64.shape[1] != f.n_taps_max
             or w_f64.shape[2] != f.n_buckets or tap_dy.shape[1] != f.n_taps_max
-            or tap_dx.shape[1] != f.n_taps_max or pair_b.shape[2] != f.n_pairs_max):
+            or tap_dx.shape[1] != f.n_taps_max or pair_b.shape[2] != f.n_pairs_max
+            or pair_col.shape[0] != f.n_phases or pair_col.shape[2] != f.n_pairs_max
+            or inv_col.shape[0] != f.n_phases or inv_col.shape[1] != 3
+            or bayer.shape[0] != 4 or spr_thr.shape[0] != f.n_phases):
         raise ValueError("learned: inconsistent filter arrays")
     cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> f.n_phases * RGBZ_NOPS)
     with nogil:
@@ -400,9 +416,10 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
              const int32_t[::1] phase_map, const int32_t[::1] n_taps,
              const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
              const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
-             const int32_t[:, :, ::1] pair_b, const double[:, ::1] str_thr,
-             const double[:, ::1] coh_thr2, int radius, int hash_radius,
-             const float[:, :, ::1] w_f32, const double[:, :, ::1] w_f64,
+             const int32_t[:, :, ::1] pair_b, const int32_t[:, :, ::1] pair_col,
+             const double[:, ::1] inv_col, const double[:, ::1] str_thr,
+             const double[:, ::1] coh_thr2, const double[:, ::1] spr_thr, int radius,
+             int hash_radius, const float[:, :, ::1] w_f32, const double[:, :, ::1] w_f64,
              const float[:, :, ::1] g_f32, const double[:, :, ::1] g_f64,
              const int32_t[::1] n_base, const int32_t[:, ::1] base_idx,
              const double[:, :, :, ::1] cell, const int32_t[:, ::1] level, double maxval,
@@ -421,7 +438,10 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     if (n_taps.shape[0] != n_ph or tap_dy.shape[0] != n_ph or tap_dx.shape[0] != n_ph
             or n_pairs.shape[0] != n_ph or n_pairs.shape[1] != 4 or pair_a.shape[0] != n_ph
             or pair_b.shape[0] != n_ph or pair_a.shape[1] != 4 or pair_b.shape[1] != 4
-            or pair_b.shape[2] != pair_a.shape[2] or tap_dy.shape[1] != w_f32.shape[1]
+            or pair_b.shape[2] != pair_a.shape[2] or pair_col.shape[0] != n_ph
+            or pair_col.shape[1] != 4 or pair_col.shape[2] != pair_a.shape[2]
+            or inv_col.shape[0] != n_ph or inv_col.shape[1] != 3 or spr_thr.shape[0] != n_ph
+            or tap_dy.shape[1] != w_f32.shape[1]
             or tap_dx.shape[1] != w_f32.shape[1] or str_thr.shape[0] != n_ph
             or coh_thr2.shape[0] != n_ph or w_f64.shape[0] != n_ph
             or w_f64.shape[1] != w_f32.shape[1] or w_f64.shape[2] != w_f32.shape[2]
@@ -437,7 +457,8 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     h.n_taps_max = w_f32.shape[1]
     h.n_str = str_thr.shape[1] + 1
     h.n_coh = coh_thr2.shape[1] + 1
-    h.n_buckets = 8 * h.n_str * h.n_coh
+    h.n_spr = spr_thr.shape[1] + 1
+    h.n_buckets = 8 * h.n_str * h.n_coh * h.n_spr
     if w_f32.shape[2] % h.n_buckets:
         raise ValueError("z_guided: the weights' buckets are not levels x hash buckets")
     h.n_pairs_max = pair_a.shape[2]
@@ -449,9 +470,13 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     h.n_pairs = &n_pairs[0, 0]
     h.pair_a = &pair_a[0, 0, 0]
     h.pair_b = &pair_b[0, 0, 0]
+    h.pair_col = &pair_col[0, 0, 0]
+    h.inv_col = &inv_col[0, 0]
+    h.bayer = NULL
     # a level count of 1 has no threshold: the kernel reads none
     h.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
     h.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    h.spr_thr = &spr_thr[0, 0] if spr_thr.shape[1] else &zero
     h.w_f32 = NULL
     h.w_f64 = NULL
     h.wd_f32 = NULL

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._validate import as_array
+
 __all__ = [
     "R", "G", "B", "Z", "CHANNELS", "BAYER_PHASES", "MAX_PERIOD",
     "Pattern", "bayer", "mask1", "mask2", "rows", "get_pattern",
@@ -62,7 +64,7 @@ def _parse_tile(tile):
                              "use R, G, B and Z")
         arr = np.array([[CHANNELS.index(c) for c in r] for r in rows_], dtype=np.int8)
     else:
-        arr = np.asarray(tile)
+        arr = as_array(tile, "tile")
         if arr.ndim != 2 or arr.size == 0:
             raise ValueError(f"tile: expected a non-empty 2-D array of channel codes, "
                              f"got shape {arr.shape}")

@@ -20,7 +20,9 @@ __all__ = ["check_readout", "check_pixel_noise", "check_spectrum", "check_tof_co
 def check_readout(obj):
     """Well, conversion gain, swing, ADC bits and black level: shared by both sensors."""
     store_number(obj, "full_well", lo=0, lo_open=True, allow_inf=True)
-    store_number(obj, "conversion_gain_uv_per_e", lo=0, hi=1e4, lo_open=True)
+    # at least 1e-6 uV per electron: the gain divides the white level, which a subnormal one
+    # turns into a division by zero
+    store_number(obj, "conversion_gain_uv_per_e", lo=1e-6, hi=1e4)
     store_number(obj, "voltage_swing", lo=0, hi=100, lo_open=True)
     object.__setattr__(obj, "bit_depth",
                        check_bit_depth(obj.bit_depth, f"{type(obj).__name__}.bit_depth"))
@@ -83,7 +85,7 @@ def check_spectrum(obj, name, ncols):
 def check_tof_contrast(obj, nfreq):
     """``modulation_contrast``: one number, or one per frequency (stored as a tuple)."""
     value = obj.modulation_contrast
-    if isinstance(value, (tuple, list, np.ndarray)):
+    if isinstance(value, (tuple, list)) or (isinstance(value, np.ndarray) and value.ndim):
         values = tuple(check_number(v, "ToFSensor.modulation_contrast", lo=0, hi=1, lo_open=True)
                        for v in value)
         if len(values) != nfreq:

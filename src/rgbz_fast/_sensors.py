@@ -18,6 +18,7 @@ import numpy as np
 
 from ._sensor_checks import (check_pixel_noise, check_readout, check_spectrum,
                              check_tof_contrast, check_tof_nonideal, store_number)
+from ._validate import check_image, check_number
 
 __all__ = ["ColourSensor", "ToFSensor", "SPEED_OF_LIGHT", "DEFAULT_CELL_PITCH_UM"]
 
@@ -184,9 +185,7 @@ class ColourSensor(_Readout):
         ``photon_flux * pixel_area * qe[c] * exposure``: the scale that maps
         a scene to mean electrons (before PRNU, dark current and clipping).
         """
-        t = float(exposure)
-        if not (math.isfinite(t) and t > 0):
-            raise ValueError(f"exposure: expected seconds > 0, got {exposure!r}")
+        t = check_number(exposure, "exposure", lo=0, hi=3600, lo_open=True)
         return self.photon_flux * self.pixel_area_um2 * np.asarray(self.qe) * t
 
     def usable_electrons(self):
@@ -357,8 +356,8 @@ class ToFSensor(_Readout):
         store_number(self, "ambient_irradiance", lo=0, hi=1e4)
         if self.pixel_pitch_um is not None:
             store_number(self, "pixel_pitch_um", lo=0.1, hi=100)
-        if self.z_block is not None and (isinstance(self.z_block, bool)
-                                         or self.z_block not in (1, 2)):
+        if self.z_block is not None and (isinstance(self.z_block, bool) or not isinstance(
+                self.z_block, (int, np.integer)) or self.z_block not in (1, 2)):
             raise ValueError(f"ToFSensor.z_block: expected None, 1 or 2, got {self.z_block!r}")
         check_readout(self)
         check_pixel_noise(self)
@@ -407,9 +406,21 @@ class ToFSensor(_Readout):
             harmonics, tap contrasts, global delay and multipath when set),
             dark current included, less the suppressed common mode.
         """
-        d = np.asarray(distance, np.float64)
-        rho = np.broadcast_to(np.asarray(ir_reflectance, np.float64), d.shape)
-        s, b = self._cell_electrons(d, rho, float(pixel_pitch_um))
+        d = check_image(distance, "distance").astype(np.float64)
+        if not (d.min() >= 1e-100 and d.max() <= 1e100):
+            raise ValueError(f"distance: expected metres in [1e-100, 1e100] (the light falls "
+                             f"off as 1 / distance**2), got [{d.min():g}, {d.max():g}]")
+        rho = check_image(ir_reflectance, "ir_reflectance").astype(np.float64)
+        if rho.min() < 0 or rho.max() > 1:
+            raise ValueError(f"ir_reflectance: expected values in [0, 1], got "
+                             f"[{rho.min():g}, {rho.max():g}]")
+        try:
+            rho = np.broadcast_to(rho, d.shape)
+        except ValueError:
+            raise ValueError(f"ir_reflectance: shape {rho.shape} does not match distance "
+                             f"{d.shape}") from None
+        pitch = check_number(pixel_pitch_um, "pixel_pitch_um", lo=0.01, hi=1000)
+        s, b = self._cell_electrons(d, rho, pitch)
         phasors, active = self._returns(d, s)
         if self.delay_ps:
             phasors = self._delayed(phasors, np.full(d.shape, self.delay_ps))

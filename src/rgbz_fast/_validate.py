@@ -6,8 +6,10 @@ what it got and what it expects. There is one check per kind of value:
 :func:`check_number` for every real parameter (bounds open or closed, None or
 infinity allowed on request), :func:`check_int` for every integer one,
 :func:`check_flag`, :func:`check_choice`, :func:`check_dtype`,
-:func:`check_bit_depth`, :func:`check_seed`, :func:`check_workers` (threads of
-a C kernel) and :func:`check_processes` (worker processes), and
+:func:`check_bit_depth`, :func:`check_entries` (a sequence of names, each once),
+:func:`integer_bits` (the one rule for the range of integer
+images), :func:`check_seed`, :func:`check_workers` (threads of
+a C kernel, and the stacks OpenMP gives them) and :func:`check_processes` (worker processes), and
 :func:`check_image` for arrays. :func:`merge_params` is the one rule of every stage
 that takes parameters: a frozen dataclass (``params=``) plus keyword overrides of its
 fields, checked once by the dataclass.
@@ -17,36 +19,34 @@ from __future__ import annotations
 
 import dataclasses
 import numbers
-import os
 from collections.abc import Mapping
 
 import numpy as np
 
+from ._threads import (MAX_WORKERS, MIN_PIXELS_PER_THREAD, check_processes,
+                       check_thread_stacks, check_workers, kernel_threads, thread_limit)
+
 __all__ = ["check_image", "check_finite", "check_number", "check_int", "check_flag",
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
-           "check_processes", "thread_limit", "parse_shape", "merge_params", "FRAME_DTYPES",
-           "MAX_WORKERS"]
-
-#: largest ``workers`` (threads of one kernel call); the result never depends on it.
-#: OpenMP aborts the process (libgomp: "Thread creation failed") when it cannot start the
-#: threads it is asked for, so a request above what this machine allows is refused before
-#: any kernel runs (:func:`thread_limit`).
-MAX_WORKERS = 1024
-
-#: address space kept free for the buffers of the call itself when the thread limit is
-#: derived from ``ulimit -v``
-_THREAD_HEADROOM = 512 * 2**20
+           "check_processes", "check_thread_stacks", "thread_limit", "parse_shape",
+           "merge_params", "integer_bits", "check_entries", "check_path", "check_meta",
+           "as_array", "as_list", "check_frequencies", "check_sites", "check_block",
+           "check_fill", "FRAME_DTYPES", "FLOAT_DTYPES",
+           "MAX_WORKERS", "TYPE_RANGE_BITS"]
 
 #: dtypes a raw frame may hold; kernels read and write them directly.
 FRAME_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
                 np.dtype(np.float64))
+#: dtypes of the stages that take linear or encoded light as floats in [0, 1]: an integer
+#: image there has no [0, 1] scale (200 would be clipped to 1), so it is refused
+FLOAT_DTYPES = (np.dtype(np.float16), np.dtype(np.float32), np.dtype(np.float64))
 
 
 def check_image(arr, name, ndim=None, dtypes=None):
     """Return ``np.asarray(arr)`` after checking ndim, dtype kind, size and finiteness."""
     if arr is None:
         raise TypeError(f"{name}: expected an array, got None")
-    a = np.asarray(arr)
+    a = as_array(arr, name)
     if a.dtype == object or np.issubdtype(a.dtype, np.complexfloating):
         raise TypeError(f"{name}: expected a real numeric array, got dtype {a.dtype}")
     if not (np.issubdtype(a.dtype, np.number) or a.dtype == np.bool_):
@@ -63,6 +63,214 @@ def check_image(arr, name, ndim=None, dtypes=None):
                         f"{', '.join(str(d) for d in dtypes)}")
     check_finite(a, name)
     return a
+
+
+#: the widest integer type whose width says the range of an image's values: uint8 holds 8-bit
+#: values, uint16 16-bit ones (int8 7, int16 15, bool 1). NumPy makes int64 of any list of
+#: Python ints and int32/uint32 are what wide readers give, whatever the data's range, so a
+#: wider type says nothing about it (200 in an int64 is not 200 / (2**63 - 1) of full scale).
+TYPE_RANGE_BITS = 16
+
+
+def integer_bits(a, name, input_bits=None, *, what=None,
+                 instead="; or pass a uint8 or uint16 array"):
+    """The bits of the values of an integer image (None for a float one): the one rule.
+
+    Every entry that reads an integer image against a range it takes from the
+    image (``mosaic``, ``Scene``, the scene loaders, the evaluation) asks this
+    function. The range is ``input_bits`` when the caller states it (1 up to
+    the type's width), else the type's width when it is at most
+    :data:`TYPE_RANGE_BITS` (bool 1, uint8 8, int8 7, uint16 16, int16 15);
+    a wider type without ``input_bits`` is a TypeError, never the width of
+    the type. The values must lie in ``[0, 2**bits - 1]``.
+
+    Parameters
+    ----------
+    a : ndarray
+        The image (already checked by :func:`check_image`).
+    name : str
+        The parameter named in the errors about the values.
+    input_bits : int, optional
+        The bits the caller states; not for float images.
+    what : str, optional
+        How the error names the image (default ``"an int64 image (a list of
+        Python ints becomes int64)"``, with its dtype).
+    instead : str
+        The other way out the error gives, after ``input_bits``.
+
+    Examples
+    --------
+    >>> integer_bits(np.zeros(3, np.uint8), "rgb"), integer_bits(np.zeros(3), "rgb")
+    (8, None)
+    >>> integer_bits(np.array([200]), "rgb", input_bits=8)
+    8
+    >>> integer_bits(np.array([200]), "rgb")
+    Traceback (most recent call last):
+    ...
+    TypeError: rgb: an int64 image (a list of Python ints becomes int64) says nothing about the range of its values; pass input_bits= (the bits of the values, e.g. 8 or 12); or pass a uint8 or uint16 array
+    """
+    if input_bits is not None and (isinstance(input_bits, (bool, np.bool_))
+                                   or not isinstance(input_bits, numbers.Integral)):
+        raise TypeError(f"input_bits: expected an integer number of bits, got {input_bits!r}")
+    if a.dtype.kind not in "biu":
+        if input_bits is not None:
+            raise ValueError(f"input_bits: applies to integer input only; {a.dtype} input is "
+                             f"read as it is, got input_bits={input_bits}")
+        return None
+    width = 1 if a.dtype.kind == "b" else 8 * a.dtype.itemsize - (a.dtype.kind == "i")
+    lo, hi = (a.min(), a.max()) if a.dtype.kind != "b" and a.size else (0, 0)
+    if lo < 0:
+        raise ValueError(f"{name}: integer values span [{lo}, {hi}]; expected values >= 0")
+    if input_bits is None:
+        if width > TYPE_RANGE_BITS:
+            what = what or (f"{'an' if a.dtype.kind == 'i' else 'a'} {a.dtype} image"
+                            + (" (a list of Python ints becomes int64)"
+                               if a.dtype == np.int64 else ""))
+            raise TypeError(f"{name}: {what} says nothing about the range of its values; pass "
+                            f"input_bits= (the bits of the values, e.g. 8 or 12){instead}")
+        bits = width
+    else:
+        bits = int(input_bits)
+        if not 1 <= bits <= width:
+            raise ValueError(f"input_bits: expected 1..{width} bits for {a.dtype} input, "
+                             f"got {input_bits}")
+    if int(hi) > (1 << bits) - 1:
+        raise ValueError(f"{name}: integer values span [{lo}, {hi}], beyond the {bits}-bit "
+                         f"input range [0, {(1 << bits) - 1}]")
+    return bits
+
+
+def check_path(value, name="path"):
+    """A file or folder path (a non-empty str or os.PathLike) as a :class:`pathlib.Path`;
+    a TypeError or ValueError naming ``name`` otherwise (NumPy scalars, bytes and None had
+    os.fspath's message, which names no parameter)."""
+    import os
+    from pathlib import Path
+
+    if not isinstance(value, (str, os.PathLike)):
+        raise TypeError(f"{name}: expected a path (str or pathlib.Path), got "
+                        f"{type(value).__name__} {value!r:.40}")
+    text = os.fspath(value)
+    if not isinstance(text, str):
+        raise TypeError(f"{name}: expected a path (str or pathlib.Path), got a bytes path")
+    if not text or "\0" in text:
+        raise ValueError(f"{name}: expected a file name, got {text!r}")
+    longest = max((len(os.fsencode(part)) for part in Path(text).parts), default=0)
+    if longest > 255:
+        raise ValueError(f"{name}: a name in {text[:60]!r}{'...' * (len(text) > 60)} is "
+                         f"{longest} bytes, more than the 255 a file name may have")
+    return Path(text)
+
+
+def check_meta(meta, name="meta", allow_none=False):
+    """Free-form metadata: a mapping with string keys, as a dict of its own (None: an empty
+    one, when ``allow_none``); a TypeError naming ``name`` otherwise."""
+    if meta is None and allow_none:
+        return {}
+    if not isinstance(meta, Mapping):
+        raise TypeError(f"{name}: expected a dict, got {type(meta).__name__}")
+    bad = next((k for k in meta if not isinstance(k, str)), None)
+    if bad is not None:
+        raise TypeError(f"{name}: expected string keys, got {bad!r}")
+    return dict(meta)
+
+
+def as_array(value, name, **kwargs):
+    """``np.asarray(value, **kwargs)``, or a TypeError naming ``name`` when NumPy cannot make
+    an array of it (a ragged list, an object it refuses): NumPy's message names no parameter.
+    With a real ``dtype``, complex numbers, text and dates are refused too: the conversion
+    would drop the imaginary part or read numbers out of text."""
+    if value is None:                              # np.asarray(None, float) is NaN
+        raise TypeError(f"{name}: expected an array of numbers, got None")
+    try:
+        a = np.asarray(value)
+        if kwargs.get("dtype") is not None and np.dtype(kwargs["dtype"]).kind in "biuf" \
+                and a.dtype.kind in "cUSMm":
+            raise TypeError(f"{name}: expected real numbers, got dtype {a.dtype}")
+        return np.asarray(a, **kwargs)
+    except (ValueError, TypeError) as exc:
+        if str(exc).startswith(f"{name}: "):
+            raise
+        raise TypeError(f"{name}: expected an array of numbers, got a {type(value).__name__} "
+                        f"NumPy cannot make one of ({' '.join(str(exc).split())[:80]})") \
+            from None
+
+
+def as_list(value, name, what="a sequence"):
+    """``list(value)`` of a sequence (not a string, bytes, a mapping or a 0-d array), or a
+    TypeError naming ``name``."""
+    if isinstance(value, (str, bytes, Mapping)) or (isinstance(value, np.ndarray)
+                                                    and value.ndim == 0):
+        raise TypeError(f"{name}: expected {what}, got {type(value).__name__} {value!r:.40}")
+    try:
+        return list(value)
+    except TypeError:
+        raise TypeError(f"{name}: expected {what}, got {type(value).__name__} "
+                        f"{value!r:.40}") from None
+
+
+def check_frequencies(values, name="frequencies", *, unique=False):
+    """Modulation frequencies: a non-empty 1-D sequence of real numbers >= 1 Hz, as float64
+    (finite; ``unique``: none twice). A complex or text value was converted or dropped,
+    an empty list or 0 Hz gave an infinite unambiguous range, a negative one a number."""
+    f = as_array(values, name)
+    if f.dtype.kind not in "iuf" or f.dtype == np.bool_:
+        raise TypeError(f"{name}: expected real numbers in Hz, got dtype {f.dtype}")
+    f = f.astype(np.float64).reshape(-1) if f.ndim <= 1 else f
+    if f.ndim != 1 or f.size == 0:
+        raise ValueError(f"{name}: expected one or more frequencies in Hz, got shape "
+                         f"{np.shape(values)}")
+    if not np.all(np.isfinite(f)) or f.min() < 1 or f.max() > 1e18:
+        raise ValueError(f"{name}: expected frequencies in [1 Hz, 1e18 Hz], got "
+                         f"{f.tolist()!r:.80}")
+    if unique and np.unique(f).size != f.size:
+        raise ValueError(f"{name}: a frequency is given twice in {f.tolist()}; each "
+                         "frequency is one measurement")
+    return f
+
+
+def check_block(block, name="block"):
+    """The size of a Z pixel in colour pixels: 1 (Mask1) or 2 (Mask2), as ``int``."""
+    if isinstance(block, (bool, np.bool_)) or not isinstance(block, numbers.Integral) \
+            or block not in (1, 2):
+        raise ValueError(f"{name}: expected 1 or 2, got {block!r:.40}")
+    return int(block)
+
+
+def check_sites(sites, name="sites"):
+    """Measurement sites: a pair (rows, cols) of 1-D integer arrays of one length, >= 0,
+    no site twice; as two int64 arrays. Float indices were truncated, a repeated site made
+    two measurements of one pixel."""
+    pair = as_list(sites, name, "(rows, cols) arrays of pixel indices")
+    if len(pair) != 2:
+        raise TypeError(f"{name}: expected (rows, cols), got {len(pair)} arrays")
+    out = []
+    for label, a in zip(("rows", "cols"), pair):
+        arr = as_array(a, name)
+        if arr.ndim != 1:
+            raise ValueError(f"{name}: expected two arrays of the same shape (n,), got "
+                             f"{label} of shape {arr.shape}")
+        if arr.size and (arr.dtype.kind not in "iu"):
+            raise TypeError(f"{name}: expected integer pixel indices, got {label} of dtype "
+                            f"{arr.dtype}")
+        if arr.size and (arr.min() < 0 or arr.max() >= 1 << 31):
+            raise ValueError(f"{name}: {label} span [{arr.min()}, {arr.max()}]; expected "
+                             "pixel indices >= 0")
+        out.append(arr.astype(np.int64))
+    rows, cols = out
+    if rows.shape != cols.shape:
+        raise ValueError(f"{name}: expected two arrays of the same shape (n,), got "
+                         f"{rows.shape} and {cols.shape}")
+    if rows.size > 1:
+        key = rows * (int(cols.max()) + 1) + cols
+        if not np.all(key[1:] > key[:-1]):                # row-major: no repeat, O(n)
+            order = np.argsort(key, kind="stable")
+            same = np.flatnonzero(key[order][1:] == key[order][:-1])
+            if same.size:
+                i = order[same[0]]
+                raise ValueError(f"{name}: the site ({rows[i]}, {cols[i]}) is given twice; "
+                                 "each measurement has a site of its own")
+    return rows, cols
 
 
 def merge_params(cls, params=None, overrides=None, *, name="params", caller=None, what=None):
@@ -151,25 +359,6 @@ def check_finite(a, name):
         raise ValueError(f"{name}: holds {bad} NaN or infinite value(s); expected finite data")
 
 
-#: pixels (or other work units) per thread below which a kernel call takes fewer threads:
-#: a call on fewer pixels lasts well under a millisecond on one core, while each extra thread
-#: costs a wake-up and a barrier (tens of microseconds on an idle machine, up to a scheduler
-#: time slice, ~20 ms measured, when other processes hold the cores: docs/reports/benchmarks.md)
-MIN_PIXELS_PER_THREAD = 1 << 18
-
-
-def kernel_threads(threads, pixels, min_pixels=MIN_PIXELS_PER_THREAD):
-    """Threads for one kernel call on ``pixels``: at most ``threads`` (a checked count),
-    one per ``min_pixels``, at least 1. Results never depend on the thread count.
-
-    Examples
-    --------
-    >>> kernel_threads(8, 256 * 192), kernel_threads(8, 1008 * 756), kernel_threads(2, 4000 * 3000)
-    (1, 2, 2)
-    """
-    return max(1, min(int(threads), int(pixels) // int(min_pixels)))
-
-
 def _real(value):
     """``value`` as a Python number if it is a real number (bool excluded), else None."""
     if isinstance(value, (bool, np.bool_)):
@@ -235,6 +424,16 @@ def check_number(value, name, *, lo=None, hi=None, lo_open=False, hi_open=False,
     return v
 
 
+def check_fill(value, name="fill"):
+    """The value of the pixels that have none: a real number, NaN and inf included (they
+    mark those pixels), or a bool (a map of flags); returned as it is. An array or text is
+    a TypeError naming ``name``."""
+    if not isinstance(value, (bool, np.bool_)) and _real(value) is None:
+        raise TypeError(f"{name}: expected a number (NaN marks pixels without a value), got "
+                        f"{value!r:.40}")
+    return value
+
+
 def check_int(value, name, *, lo=None, hi=None):
     """An integer (Python or NumPy; bool and floats rejected) within [lo, hi], as ``int``.
 
@@ -261,6 +460,38 @@ def check_flag(value, name):
     if not isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name}: expected True or False, got {value!r}")
     return bool(value)
+
+
+def check_entries(value, name, key=None, strings=True):
+    """A sequence of names (a tuple of strings, or one comma-separated string) as a tuple: at
+    least one, each a string (unless ``strings`` is False: ``key`` checks them), none twice.
+    ``key(entry)`` says when two spellings name the same thing (``"mask1"`` and
+    ``"mask1_grbg"``): a repeated entry would be run and reported twice.
+
+    Examples
+    --------
+    >>> check_entries("sg, bi", "methods")
+    ('sg', 'bi')
+    >>> check_entries(("sg", "sg"), "methods")
+    Traceback (most recent call last):
+    ...
+    ValueError: methods: 'sg' is given twice; name each entry once
+    """
+    if isinstance(value, str):
+        value = tuple(s.strip() for s in value.split(",") if s.strip())
+    value = tuple(as_list(value, name, "a sequence of names or a comma-separated string"))
+    if not value:
+        raise ValueError(f"{name}: expected at least one entry, got none")
+    seen = {}
+    for v in value:
+        if strings and not isinstance(v, str):
+            raise TypeError(f"{name}: expected names (strings), got {v!r}")
+        k = v if key is None else key(v)
+        if k in seen:
+            same = "" if seen[k] == v else f" (as {seen[k]!r})"
+            raise ValueError(f"{name}: {v!r} is given twice{same}; name each entry once")
+        seen[k] = v
+    return value
 
 
 def check_choice(value, choices, name):
@@ -303,140 +534,6 @@ def check_seed(value, name="seed"):
             or value < 0:
         raise ValueError(f"{name}: expected an integer >= 0, got {value!r}")
     return int(value)
-
-
-def _check_count(value, name, unit, minus_one):
-    """None (or -1 when ``minus_one``) -> every core; else 1..MAX_WORKERS, as ``int``."""
-    integral = not isinstance(value, (bool, np.bool_)) and isinstance(value, numbers.Integral)
-    if value is None or (minus_one and integral and value == -1):
-        return os.cpu_count() or 1
-    if not integral or value < 1:
-        accepted = "None, -1" if minus_one else "None"
-        raise ValueError(f"{name}: expected {accepted} or a positive number of {unit}, "
-                         f"got {value!r}")
-    if value > MAX_WORKERS:
-        raise ValueError(f"{name}: expected at most {MAX_WORKERS} {unit}, got {value!r}")
-    if value > (os.cpu_count() or 1):            # the usual counts never pay for the probe
-        limit, reason = thread_limit()
-        if value > limit:
-            raise ValueError(f"{name}: {value} {unit} cannot be started here ({reason}); "
-                             f"pass at most {limit}")
-    return int(value)
-
-
-def _stack_bytes():
-    """The stack of each OpenMP thread: OMP_STACKSIZE / GOMP_STACKSIZE, else the pthread
-    default, which glibc takes from ``ulimit -s``; when that is unlimited glibc uses its
-    architecture default (2 MiB on x86-64, measured; more elsewhere), taken as 8 MiB."""
-    import resource
-
-    for var in ("OMP_STACKSIZE", "GOMP_STACKSIZE"):
-        text = os.environ.get(var, "").strip().upper()
-        if text:
-            unit = {"B": 1, "K": 2**10, "M": 2**20, "G": 2**30}.get(text[-1])
-            try:
-                return int(text[:-1] if unit else text) * (unit or 2**10)   # bare: KiB
-            except ValueError:
-                break
-    soft = resource.getrlimit(resource.RLIMIT_STACK)[0]
-    return 8 * 2**20 if soft == resource.RLIM_INFINITY else max(int(soft), 2**16)
-
-
-def _proc_fields(path, keys):
-    out = {}
-    try:
-        with open(path) as fh:
-            for line in fh:
-                k, _, v = line.partition(":")
-                if k in keys:
-                    out[k] = v.split()
-    except OSError:
-        pass
-    return out
-
-
-def _user_threads(uid):
-    """Threads of every process of ``uid`` (what RLIMIT_NPROC counts), from /proc."""
-    n = 0
-    for entry in os.scandir("/proc"):
-        if entry.name.isdigit():
-            f = _proc_fields(f"/proc/{entry.name}/status", ("Uid", "Threads"))
-            if f.get("Uid", [None])[0] == str(uid) and f.get("Threads"):
-                n += int(f["Threads"][0])
-    return n
-
-
-def thread_limit():
-    """How many threads one kernel call can start on this machine: ``(limit, reason)``.
-
-    libgomp aborts the process when a thread cannot be created. On Linux that
-    happens when the address space (``ulimit -v``) has no room for another
-    thread stack (``ulimit -s`` or ``OMP_STACKSIZE``; measured: 450 threads
-    of 8 MiB under ``ulimit -v 4000000`` started, 512 aborted), when the
-    user's processes and threads reach ``ulimit -u`` (not for root), when the
-    cgroup's ``pids.max`` is reached, or at the kernel's ``threads-max``. The
-    limit is the smallest of these, with headroom, and at most
-    :data:`MAX_WORKERS`; ``reason`` names the one that binds.
-    """
-    found = [(MAX_WORKERS, f"at most {MAX_WORKERS} threads")]
-    try:
-        import resource
-    except ImportError:  # pragma: no cover - not POSIX
-        return found[0]
-    soft = resource.getrlimit(resource.RLIMIT_AS)[0]
-    if soft != resource.RLIM_INFINITY:
-        vm = _proc_fields("/proc/self/status", ("VmSize",)).get("VmSize")
-        used = int(vm[0]) * 1024 if vm else 0
-        stack = _stack_bytes()
-        n = max((int(soft) - used - _THREAD_HEADROOM) // (stack + 2**16), 1)
-        found.append((n, f"the address-space limit, ulimit -v {int(soft) // 1024} kB, leaves "
-                         f"room for {n} thread stacks of {stack / 2**20:g} MiB"))
-    if hasattr(resource, "RLIMIT_NPROC") and os.geteuid() != 0:
-        nproc = resource.getrlimit(resource.RLIMIT_NPROC)[0]
-        if nproc != resource.RLIM_INFINITY and os.path.isdir("/proc"):
-            n = max(int(nproc) - _user_threads(os.geteuid()) - 16, 1)
-            found.append((n, f"ulimit -u {nproc} processes and threads for this user"))
-    for line in _proc_lines("/proc/self/cgroup"):
-        parts = line.split(":", 2)
-        if len(parts) == 3 and parts[0] == "0":                    # cgroup v2
-            d = f"/sys/fs/cgroup{parts[2].strip()}"
-            cap, cur = _first(f"{d}/pids.max"), _first(f"{d}/pids.current")
-            if cap and cap.isdigit() and cur and cur.isdigit():
-                n = max(int(cap) - int(cur) - 8, 1)
-                found.append((n, f"the control group allows {cap} tasks, {cur} in use"))
-    cap, load = _first("/proc/sys/kernel/threads-max"), _first("/proc/loadavg", 3)
-    if cap and cap.isdigit() and load and "/" in load:
-        n = max(int(cap) - int(load.split("/")[1]) - 64, 1)
-        found.append((n, f"the kernel's threads-max {cap}"))
-    return min(found, key=lambda t: t[0])
-
-
-def _proc_lines(path):
-    try:
-        with open(path) as fh:
-            return fh.read().splitlines()
-    except OSError:
-        return []
-
-
-def _first(path, field=0):
-    lines = _proc_lines(path)
-    parts = lines[0].split() if lines else []
-    return parts[field] if len(parts) > field else None
-
-
-def check_workers(workers, name="workers"):
-    """Threads of one C kernel call: None or -1 -> every core; else 1..MAX_WORKERS.
-
-    ``workers`` means threads everywhere in the library; the worker *processes*
-    of a dataset evaluation are ``processes`` (:func:`check_processes`).
-    """
-    return _check_count(workers, name, "threads", minus_one=True)
-
-
-def check_processes(processes, name="processes"):
-    """Worker processes of a dataset run: None -> every core; else a positive integer."""
-    return _check_count(processes, name, "processes", minus_one=False)
 
 
 def parse_shape(text, name="shape"):

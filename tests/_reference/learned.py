@@ -4,7 +4,7 @@ Written from docs/guide/learned.md, independently of ``rgbz_fast.reconstruction.
 and of csrc/learned.c: the window, its taps and the hash pairs come from the channel codes
 of the gathered window (not from the library's geometry), the orientation from an
 arctangent (not from the octant tests of the kernels), the coherence from a root and a
-division. Only the fitted numbers (weights, thresholds) are read from the filters object.
+division, the channel spread from a division. Only the fitted numbers (weights, thresholds) are read from the filters object.
 Arithmetic is float64; the result is clipped to [0, maxval] but not rounded.
 
 *Fragile* sites: an isotropic window that is not flat (a and b zero in exact arithmetic,
@@ -26,9 +26,13 @@ STEPS = ((0, 2), (2, 0), (2, 2), (2, -2))
 FRAGILE_COHERENCE = 1e-9
 
 
-def reference_learned(data, filters, return_fragile=False):
+def reference_learned(data, filters, return_fragile=False, bit_depth=None):
     """Every pixel of ``data`` (colour sites copied, Z sites reconstructed), float64;
-    with ``return_fragile``, also the bool frame of the fragile sites."""
+    with ``return_fragile``, also the bool frame of the fragile sites. ``bit_depth``: the
+    frame's (default: the filters'): the strength thresholds scale with the squared ratio of
+    the white levels."""
+    bd = filters.bit_depth if bit_depth is None else bit_depth
+    gain = (((1 << bd) - 1) / ((1 << filters.bit_depth) - 1)) ** 2
     pattern = filters.pattern
     P, Q = pattern.period
     R, hr = filters.radius, filters.hash_radius
@@ -49,7 +53,8 @@ def reference_learned(data, filters, return_fragile=False):
             X = vals[:, taps]
             tap_off = [tuple(offsets[i]) for i in taps]
             E = []
-            for sy, sx in STEPS:
+            by_colour = {0: [], 1: [], 2: []}          # horizontal and vertical pairs' squared
+            for sy, sx in STEPS:                        # differences, by colour
                 terms = []
                 for i, (dy, dx) in enumerate(tap_off):
                     other = (dy + sy, dx + sx)
@@ -57,7 +62,13 @@ def reference_learned(data, filters, return_fragile=False):
                                                  abs(other[1])) <= hr
                             and codes[0, taps[i]] == codes[0, taps[tap_off.index(other)]]):
                         terms.append((X[:, i] - X[:, tap_off.index(other)]) ** 2)
+                        if sy == 0 or sx == 0:
+                            by_colour[int(codes[0, taps[i]])].append(terms[-1])
                 E.append(np.mean(terms, axis=0))
+            Ec = np.array([np.mean(by_colour[c], axis=0) for c in range(3)])
+            with np.errstate(invalid="ignore", divide="ignore"):
+                spread = Ec.max(0) / Ec.min(0)          # inf: a channel without texture
+            spread[Ec.max(0) == 0] = 0.0                 # no texture at all: the lowest level
             eh, ev, ed1, ed2 = E
             a = eh - ev
             b = (ed1 - ed2) / 2
@@ -66,12 +77,14 @@ def reference_learned(data, filters, return_fragile=False):
             octant = np.floor((theta + 22.5) / 45.0).astype(int) % 8
             with np.errstate(invalid="ignore", divide="ignore"):
                 coherence = np.sqrt(a * a + b * b) / t
-            strength = (t[:, None] > filters.strength_thresholds[phase][None, :]).sum(1)
+            strength = (t[:, None] > gain * filters.strength_thresholds[phase][None, :]).sum(1)
             coh = (coherence[:, None] > filters.coherence_thresholds[phase][None, :]).sum(1)
-            bucket = (octant * filters.n_strength + strength) * filters.n_coherence + coh
+            spr = (spread[:, None] > filters.spread_thresholds[phase][None, :]).sum(1)
+            bucket = (((octant * filters.n_strength + strength) * filters.n_coherence + coh)
+                      * filters.n_spread + spr)
             w = filters.weights[phase][bucket][:, :len(taps)]
             est = (X * w).sum(1)
-            out[ys, xs] = np.clip(est, 0, (1 << filters.bit_depth) - 1)
+            out[ys, xs] = np.clip(est, 0, (1 << bd) - 1)
             fragile[ys, xs] = (t > 0) & ~(coherence > FRAGILE_COHERENCE)
             phase += 1
     return (out, fragile) if return_fragile else out

@@ -58,7 +58,8 @@ def reference_z_guided(data, filters, grid, var):
             X = vals[:, taps]
             tap_off = [tuple(offsets[i]) for i in taps]
             E = []
-            for sy, sx in STEPS:
+            by_colour = {0: [], 1: [], 2: []}          # horizontal and vertical pairs' squared
+            for sy, sx in STEPS:                        # differences, by colour
                 terms = []
                 for i, (dy, dx) in enumerate(tap_off):
                     other = (dy + sy, dx + sx)
@@ -66,7 +67,13 @@ def reference_z_guided(data, filters, grid, var):
                                                  abs(other[1])) <= hr
                             and codes[0, taps[i]] == codes[0, taps[tap_off.index(other)]]):
                         terms.append((X[:, i] - X[:, tap_off.index(other)]) ** 2)
+                        if sy == 0 or sx == 0:
+                            by_colour[int(codes[0, taps[i]])].append(terms[-1])
                 E.append(np.mean(terms, axis=0))
+            Ec = np.array([np.mean(by_colour[c], axis=0) for c in range(3)])
+            with np.errstate(invalid="ignore", divide="ignore"):
+                spread = Ec.max(0) / Ec.min(0)          # inf: a channel without texture
+            spread[Ec.max(0) == 0] = 0.0                 # no texture at all: the lowest level
             eh, ev, ed1, ed2 = E
             a = eh - ev
             bb = (ed1 - ed2) / 2
@@ -76,7 +83,9 @@ def reference_z_guided(data, filters, grid, var):
                 coherence = np.sqrt(a * a + bb * bb) / t
             strength = (t[:, None] > lf.strength_thresholds[phase][None, :]).sum(1)
             coh = (coherence[:, None] > lf.coherence_thresholds[phase][None, :]).sum(1)
-            bucket = (octant * lf.n_strength + strength) * lf.n_coherence + coh
+            spr = (spread[:, None] > lf.spread_thresholds[phase][None, :]).sum(1)
+            bucket = ((octant * lf.n_strength + strength) * lf.n_coherence + coh) \
+                * lf.n_spread + spr
             # the guide: the site's Z pixel (its tile) and the 3 x 3 around it, clamped
             tc = int(target[r, c])
             base_taps = [i for i, (dy, dx) in enumerate(tap_off)

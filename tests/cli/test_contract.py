@@ -35,6 +35,39 @@ CLI_ROWS = [
     C("cli.simulate-tiny", ("simulate", "{d}/tiny.png"),
       "scene: frame 1x1 is smaller than one period"),
     C("cli.simulate-corrupt", ("simulate", "{d}/corrupt.png"), "path: cannot read"),
+    C("cli.simulate-int32", ("simulate", "{d}/int32.tif"),
+      "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
+      "their values; pass --input-bits"),
+    C("cli.reconstruct-colour-matrix-huge", ("reconstruct", "{d}/ok.npz", "--output", "srgb",
+                                             "--colour-matrix", "1e300,0,0,0,1,0,0,0,1"),
+      "argument --colour-matrix: expected entries within +-1e+30", usage=True),
+    C("cli.evaluate-too-small", ("evaluate", "--dataset", "{d}/ds", "--methods", "bi",
+                                 "--patterns", "mask1", "--metrics", "ms_ssim", "--crop", "0"),
+      "metrics: image 'a': MS-SSIM with 5 scales needs at least 161 x 161 pixels"),
+    C("cli.evaluate-int32", ("evaluate", "--dataset", "{d}/int32.tif"),
+      "dataset: {d}/int32.tif holds int32 samples, a type that says nothing about the range "
+      "of their values; convert the file to 8 or 16 bits"),
+    C("cli.simulate-cmyk", ("simulate", "{d}/cmyk.jpg"),
+      "path: cannot read {d}/cmyk.jpg as an image (it holds CMYK samples"),
+    C("cli.evaluate-cmyk", ("evaluate", "--dataset", "{d}/cmyk.tif"),
+      "dataset: cannot read {d}/cmyk.tif as an image (it holds CMYK (separated) samples"),
+    C("cli.simulate-over-input", ("simulate", "{d}/collide/a.png", "{d}/collide/a_mask1.npz",
+                                  "--out", "{d}/collide"),
+      "--out: writing {d}/collide/a_mask1.npz (from {d}/collide/a.png) would overwrite the "
+      "input {d}/collide/a_mask1.npz"),
+    C("cli.reconstruct-over-input", ("reconstruct", "{d}/collide/a_mask1.npz",
+                                     "{d}/collide/a_mask1_sg_cfa.tif", "--out", "{d}/collide"),
+      "--out: writing {d}/collide/a_mask1_sg_cfa.tif (from {d}/collide/a_mask1.npz) would "
+      "overwrite the input {d}/collide/a_mask1_sg_cfa.tif"),
+    C("cli.evaluate-out-in-dataset", ("evaluate", "--dataset", "{d}/ds", "--out", "{d}/ds"),
+      "--out: bars_cfa_psnr.png (from the reports) would be written into {d}/ds, a folder read "
+      "as input"),
+    C("cli.calibrate-over-frame", ("calibrate", "{d}/tof.npz", "--distances", "1.5", "--out",
+                                   "{d}/tof.npz"),
+      "--out: writing {d}/tof.npz (from the calibration) would overwrite the input "
+      "{d}/tof.npz"),
+    C("cli.train-into-dataset", ("train", "--dataset", "{d}/ds", "--out", "{d}/ds/f.png"),
+      "--out: f.png (from the filters) would be written into {d}/ds, a folder read as input"),
     C("cli.simulate-out-is-file", ("simulate", "{d}/rgb.png", "--out", "{d}/file.txt"), ""),
     C("cli.reconstruct-missing", ("reconstruct", "{d}/missing.npz"), "path: "),
     C("cli.reconstruct-rgb", ("reconstruct", "{d}/rgb.png"),
@@ -61,6 +94,14 @@ CLI_ROWS = [
                                       "--bit-depth", "11"), "path: cannot read {d}/corrupt.png"),
     C("cli.evaluate-empty", ("evaluate", "--dataset", "{d}/empty"),
       "dataset: no image files in"),
+    C("cli.evaluate-patterns-twice", ("evaluate", "--dataset", "{d}/ds", "--patterns",
+                                      "mask1,mask1_grbg"),
+      "patterns: 'mask1_grbg' is given twice (as 'mask1')"),
+    C("cli.evaluate-methods-twice", ("evaluate", "--dataset", "{d}/ds", "--methods", "sg,sg"),
+      "argument --methods: 'sg' is given twice in 'sg,sg'; name each entry once", usage=True),
+    C("cli.tradeoff-out-in-dataset", ("tradeoff", "--dataset", "{d}/ds", "--out", "{d}/ds"),
+      "--out: tradeoff.png (from the report) would be written into {d}/ds, a folder read as "
+      "input"),
     C("cli.evaluate-missing", ("evaluate", "--dataset", "{d}/missing"), "dataset: "),
     C("cli.evaluate-crop", ("evaluate", "--dataset", "{d}/ds", "--crop", "-1"),
       "argument --crop: expected an integer >= 0, got '-1'", usage=True),
@@ -110,6 +151,18 @@ CLI_ROWS = [
       usage=True),
     C("cli.reconstruct-levels-syntax", ("reconstruct", "{d}/bayer.raw", "--black-level", "1,2"),
       "argument --black-level: expected one value or four, got 2", usage=True),
+    C("cli.reconstruct-raw-options-deep", ("reconstruct", "{d}/bayer16.png", "--rgbz-pattern",
+                                           "mask1", "--raw-options", "{d}/deep.json"),
+      "--raw-options: {d}/deep.json nests its JSON too deeply"),
+    C("cli.reconstruct-raw-options-unknown", ("reconstruct", "{d}/bayer16.png",
+                                              "--rgbz-pattern", "mask1", "--raw-options",
+                                              "{d}/unknown.json"),
+      "--raw-options: {d}/unknown.json: 'phse' (for '*') is not a raw option"),
+    C("cli.evaluate-raw-options-binary", ("evaluate", "--dataset", "{d}/ds", "--raw-options",
+                                          "{d}/binary.json"),
+      "--raw-options: {d}/binary.json is not a UTF-8 text file"),
+    C("cli.calibrate-sensor-deep", ("calibrate", "--simulate", "--sensor", "[" * 5000),
+      "--sensor: not JSON"),
     C("cli.reconstruct-raw-options", ("reconstruct", "{d}/bayer16.png", "--rgbz-pattern",
                                       "mask1", "--raw-options", "{d}/raw_options.json"),
       "--raw-options: {d}/raw_options.json should map file names"),
@@ -172,6 +225,27 @@ CLI_ROWS = [
       "sections: unknown ['speed']"),
     C("cli.config-argument", ("config", "--nope"), "unrecognized arguments: --nope",
       usage=True),
+    C("cli.reconstruct-workers-huge", ("reconstruct", "{d}/ok.npz", "--workers", "5000"),
+      "argument --workers: expected at most 1024 threads, got '5000'", usage=True),
+    C("cli.simulate-long-name", ("simulate", "{d}/" + "a" * 296 + ".png"), "scene: "),
+    C("cli.evaluate-long-out", ("evaluate", "--dataset", "{d}/ds", "--out",
+                                "{d}/" + "o" * 300), "--out: "),
+    C("cli.train-long-dataset", ("train", "--dataset", "{d}/" + "a" * 300, "--out",
+                                 "{d}/f.npz"), "--dataset: "),
+    C("cli.evaluate-fifo", ("evaluate", "--dataset", "{d}/fifo.tif"),
+      "dataset: {d}/fifo.tif is a FIFO (named pipe), not a regular file"),
+    C("cli.simulate-out-uncreatable", ("simulate", "{d}/small.png", "--out", "/proc/rgbz-out"),
+      "--out: /proc/rgbz-out: No such file or directory"),
+    C("cli.calibrate-shape-huge", ("calibrate", "--simulate", "--shape", "100000x100000",
+                                   "--out", "{d}/cal_huge.npz"),
+      "--shape: 100000x100000 is 1e+04 megapixels, more than the limit of 200 megapixels"),
+    C("cli.opcount-shape-huge", ("opcount", "--shape", "100000x100000"),
+      "--shape: 100000x100000 is 1e+04 megapixels"),
+    C("cli.reconstruct-frame-pattern", ("reconstruct", "{d}/ok.npz", "--pattern", "bayer"),
+      "pattern: {d}/ok.npz records its own pattern 'mask1'; --pattern 'bayer' applies to a "
+      "plain TIFF/PNG mosaic"),
+    C("cli.reconstruct-frame-bit-depth", ("reconstruct", "{d}/ok.npz", "--bit-depth", "12"),
+      "bit_depth: {d}/ok.npz records its own bit depth 11; --bit-depth 12 applies"),
 ]
 
 test_cli_contract = cli_tests(CLI_ROWS)
@@ -237,3 +311,54 @@ def test_sigterm_during_writes_leaves_no_temporary_file(tmp_path):
         assert not [n for n in left if n.endswith(".tmp")], left
         for p in out.iterdir():
             assert p.stat().st_size == 256 << 17          # whole files only
+
+
+def test_outputs_are_checked_against_inputs_before_anything_is_written(files, tmp_path,
+                                                                      capsys):
+    """One input/output collision check (``_cli._common.check_outputs``): an output that is
+    an input -- by name, through a symbolic or a hard link -- or that would land in a dataset
+    folder as an image is refused before anything is written, and every input keeps its
+    bytes. An output folder beside the inputs, or a subfolder of the dataset, is fine."""
+    import os
+    import shutil
+
+    d = tmp_path / "w"
+    shutil.copytree(files / "collide", d)
+    shutil.copy(files / "small.png", d / "a.png")
+    (d / "link.tif").symlink_to(d / "a_mask1_sg_cfa.tif")
+    os.link(d / "a_mask1.npz", d / "hard.npz")
+    before = {p.name: p.read_bytes() for p in d.iterdir() if p.is_file()}
+    cases = [
+        ("reconstruct", str(d / "a_mask1.npz"), str(d / "link.tif"), "--out", str(d)),
+        ("simulate", str(d / "a.png"), str(d / "hard.npz"), "--out", str(d)),
+        ("simulate", str(d / "a.png"), "--out", str(d), "--format", "npz",
+         "--pattern", "mask1"),                                   # over a_mask1.npz: no input
+        ("evaluate", "--dataset", str(d), "--out", str(d), "--metrics", "cfa_psnr"),
+    ]
+    for argv in cases[:2] + cases[3:]:
+        assert main([*argv, "--quiet"]) == 2
+        assert "would" in capsys.readouterr().err
+    assert {p.name: p.read_bytes() for p in d.iterdir() if p.is_file()} == before
+    # not an input: a_mask1.npz is rewritten from a.png, as asked
+    assert main([*cases[2], "--quiet"]) == 0
+    # a subfolder of the dataset is not read (the listing is not recursive)
+    ds = tmp_path / "ds"
+    shutil.copytree(files / "ds", ds)
+    assert main(["evaluate", "--dataset", str(ds), "--out", str(ds / "results"), "--metrics",
+                 "cfa_psnr", "--methods", "bi", "--patterns", "mask1", "--quiet"]) == 0
+    assert sorted(p.name for p in ds.iterdir()) == ["a.png", "results"]
+
+
+def test_an_allocation_that_fails_is_one_error_line(files, capsys, monkeypatch):
+    """A MemoryError that no size check foresaw ends the command with exit 2 and one error
+    line, not a traceback."""
+    from rgbz_fast._cli import reconstruct as command
+
+    def no_memory(args):
+        raise MemoryError("Unable to allocate 224. GiB")
+
+    monkeypatch.setattr(command, "run", no_memory)
+    assert main(["reconstruct", str(files / "ok.npz"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["rgbz-fast reconstruct: error: out of memory (Unable to allocate 224. GiB); "
+                   "try a smaller input or --max-pixels"]

@@ -33,6 +33,12 @@ ROWS = [
       "patterns, methods and metrics must each name at least one entry"),
     R("evaluation.EvalConfig-pattern", "EvalConfig(patterns=('foo',))",
       lambda f: ev.EvalConfig(patterns=("foo",)), ValueError, "pattern: 'foo' is neither"),
+    R("evaluation.EvalConfig-patterns-twice", "EvalConfig(patterns=('mask1', 'mask1_grbg'))",
+      lambda f: ev.EvalConfig(patterns=("mask1", "mask1_grbg")), ValueError,
+      "patterns: 'mask1_grbg' is given twice (as 'mask1'); name each entry once"),
+    R("evaluation.EvalConfig-metrics-twice", "EvalConfig(metrics=('cpsnr', 'cpsnr'))",
+      lambda f: ev.EvalConfig(metrics=("cpsnr", "cpsnr")), ValueError,
+      "metrics: 'cpsnr' is given twice"),
     R("evaluation.EvalConfig-method", "EvalConfig(methods=('foo',))",
       lambda f: ev.EvalConfig(methods=("foo",)), ValueError, "methods: unknown method(s)"),
     R("evaluation.EvalConfig-metric", "EvalConfig(metrics=('foo',))",
@@ -120,6 +126,20 @@ ROWS = [
     R("evaluation.write_reports-type", "write_reports(list of rows)",
       lambda f: ev.write_reports([], f / "reports_list"), TypeError,
       "results: expected Results"),
+    R("evaluation.image_frames-int64", "image_frames(int64 image)",
+      lambda f: ev.image_frames(np.full((8, 8, 3), 200), "mask1", ev.EvalConfig()), TypeError,
+      "img: an int64 image (a list of Python ints becomes int64) says nothing about the range"),
+    R("evaluation.evaluate-int32-tif", "evaluate(folder of an int32 TIFF)",
+      lambda f: ev.evaluate([rio.ImageSource("i", str(f / "int32.tif"))], progress=False,
+                            metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",)),
+      ValueError, "dataset: {d}/int32.tif holds int32 samples"),
+    R("evaluation.evaluate-cache-file", "evaluate(cache_dir=a file)",
+      lambda f: ev.evaluate(f / "ds", cache_dir=f / "file.txt", progress=False), ValueError,
+      "cache_dir: {d}/file.txt exists and is not a folder"),
+    R("evaluation.evaluate-fifo", "evaluate(folder_dataset(a FIFO))",
+      lambda f: ev.evaluate(rio.folder_dataset(f / "fifo.tif"), progress=False, processes=1,
+                            metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",)),
+      ValueError, "dataset: {d}/fifo.tif is a FIFO (named pipe), not a regular file"),
 ]
 
 test_api_contract = api_tests(ROWS)
@@ -181,6 +201,52 @@ def test_eval_config_is_checked_and_normalised_at_construction():
 
 
 # --------------------------------------------------------------------------- interrupted runs
+def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
+    """The evaluation's cache is read through the guarded reader and checked: a FIFO under an
+    entry's name does not block, and a damaged or tampered entry (NaN, 1e999, text, a value
+    out of its metric's range, not an object, a value edited without its checksum) is
+    recomputed and written again, never served as a result; a cache that cannot take an
+    entry costs a warning, not the result."""
+    import os
+    import threading
+
+    kw = dict(metrics=("cfa_psnr", "ssim"), methods=("bi",), patterns=("mask1",),
+              progress=False, processes=1)
+    src = [rio.ImageSource("s", str(files / "small.png"))]
+    want = ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows
+    (entry,) = tmp_path.rglob("*.json")
+    good = entry.read_text()
+    for bad in ('{"cfa_psnr": NaN, "ssim": 0.5}', '{"cfa_psnr": 1e999, "ssim": 0.5}',
+                '{"cfa_psnr": 20.0, "ssim": 7.0}', '{"cfa_psnr": "20", "ssim": 0.5}',
+                '{"cfa_psnr": 20.0, "ssim": -Infinity}', "[20.0, 0.5]", "\xff\xfe",
+                '{"cfa_psnr": 20.0, "ssim": 0.5, "zz": 1.0}',
+                # a plausible value edited by hand: the checksum no longer matches
+                good.replace(str(json.loads(good)["values"]["cfa_psnr"]), "99.5"),
+                json.dumps({**json.loads(good), "values": {"cfa_psnr": 99.5, "ssim": 0.5}})):
+        entry.write_text(bad)
+        assert ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows == want, bad
+        assert entry.read_text() == good, bad
+    # an entry the cache cannot take (a folder under its name): the result, and a warning
+    entry.unlink()
+    entry.mkdir()
+    with pytest.warns(RuntimeWarning, match="^cache_dir: could not write"):
+        assert ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows == want
+    entry.rmdir()
+    ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw)
+    entry.unlink()
+    os.mkfifo(entry)
+    done = []
+    t = threading.Thread(target=lambda: done.append(
+        ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows), daemon=True)
+    t.start()
+    t.join(60)
+    if t.is_alive():                                      # unblock the reader, then fail
+        with open(os.open(entry, os.O_WRONLY | os.O_NONBLOCK), "w"):
+            pass
+        pytest.fail("a FIFO in the cache blocked the evaluation")
+    assert done == [want] and entry.is_file() and entry.read_text() == good
+
+
 def _cache_files(cache):
     return sorted(p for p in Path(cache).rglob("*") if p.is_file())
 
@@ -266,6 +332,13 @@ def _children(pid):
     return out
 
 
+def _cmdline(pid):
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_text()
+    except OSError:                                      # it has just ended
+        return ""
+
+
 def _alive(pid):
     try:
         stat = Path(f"/proc/{pid}/stat").read_text()
@@ -274,10 +347,10 @@ def _alive(pid):
     return stat.rsplit(")", 1)[1].split()[0] != "Z"
 
 
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
-def test_sigterm_stops_the_evaluation_pool(tmp_path):
-    """SIGTERM to `rgbz-fast evaluate --processes 2` stops the pool's workers before the
-    process exits (143): no worker outlives the run, and no temporary cache file is left."""
+def _stop_a_running_pool(tmp_path, stop):
+    """Start `rgbz-fast evaluate --processes 2` in a session of its own, call ``stop(proc)``
+    once both workers run and the cache has an entry; (return code, stderr, seconds from the
+    signal to the exit, the workers, the cache folder)."""
     import imageio.v3 as iio
 
     ds = tmp_path / "ds"
@@ -289,20 +362,43 @@ def test_sigterm_stops_the_evaluation_pool(tmp_path):
     argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--dataset", str(ds), "--out",
             str(tmp_path / "out"), "--cache", str(cache), "--processes", "2", "--quiet",
             "--no-plots"]
-    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
     deadline = time.monotonic() + 300
     workers = []
     while time.monotonic() < deadline and proc.poll() is None:
-        workers = [c for c in _children(proc.pid)
-                   if "multiprocessing" in Path(f"/proc/{c}/cmdline").read_text()]
+        workers = [c for c in _children(proc.pid) if "multiprocessing" in _cmdline(c)]
         if len(workers) >= 2 and list(cache.rglob("*.json")):
             break
         time.sleep(0.02)
     assert proc.poll() is None and len(workers) >= 2, "the pool never ran"
-    proc.send_signal(signal.SIGTERM)
+    t0 = time.monotonic()
+    stop(proc)
     _, err = proc.communicate(timeout=120)
-    assert proc.returncode == 128 + signal.SIGTERM, err[-2000:]
-    assert err.strip().splitlines()[-1] == "rgbz-fast evaluate: terminated"
+    return proc.returncode, err, time.monotonic() - t0, workers, cache
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+@pytest.mark.parametrize("how", ["sigterm", "ctrl-c"])
+def test_a_stopped_evaluation_pool_ends_at_once_and_cleans_up(tmp_path, how):
+    """SIGTERM to `rgbz-fast evaluate --processes 2`, or Ctrl-C to its process group, stops
+    the pool's workers before the process exits (143, 130): no worker outlives the run, no
+    temporary cache file is left, and no worker has to be killed (evaluate warns when one
+    did not stop within 10 s of its SIGTERM). The workers used to catch the signal as a
+    failed image and go on to the next (10-20 s, then SIGKILL, temporary files left)."""
+    import os
+
+    def stop(proc):
+        if how == "sigterm":
+            proc.send_signal(signal.SIGTERM)
+        else:
+            os.killpg(proc.pid, signal.SIGINT)
+
+    code, err, seconds, workers, cache = _stop_a_running_pool(tmp_path, stop)
+    want = (128 + signal.SIGTERM, "terminated") if how == "sigterm" else (130, "interrupted")
+    assert code == want[0], err[-2000:]
+    assert err.strip().splitlines()[-1] == f"rgbz-fast evaluate: {want[1]}"
+    assert "were killed" not in err, f"the workers did not stop by themselves ({seconds:.1f} s)"
     time.sleep(0.5)
     assert not [w for w in workers if _alive(w)], "orphaned worker processes"
     assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]

@@ -230,6 +230,20 @@ ROWS = [
     R("io.read_file-max_bytes", "read_file(ok.npz, max_bytes=10)",
       lambda f: rio.read_file(f / "ok.npz", max_bytes=10), ValueError,
       "path: {d}/ok.npz is "),
+    R("io.read_image-cmyk-jpeg", "read_image(CMYK JPEG)",
+      lambda f: rio.read_image(f / "cmyk.jpg"), ValueError,
+      "path: cannot read {d}/cmyk.jpg as an image (it holds CMYK samples, not RGB or grey; "
+      "convert it to RGB first"),
+    R("io.read_image-cmyk-tiff", "read_image(CMYK TIFF)",
+      lambda f: rio.read_image(f / "cmyk.tif"), ValueError,
+      "path: cannot read {d}/cmyk.tif as an image (it holds CMYK (separated) samples"),
+    R("io.read_image-lab-tiff", "read_image(CIELAB TIFF)",
+      lambda f: rio.read_image(f / "lab.tif"), ValueError,
+      "path: cannot read {d}/lab.tif as an image (it holds CIELAB samples"),
+    R("io.read_image-pgm-truncated", "read_image(truncated 16-bit PGM)",
+      lambda f: rio.read_image(f / "short.pgm"), ValueError,
+      "path: cannot read {d}/short.pgm as an image (truncated: 100 bytes of samples, 512 "
+      "needed)"),
     R("io.read_image-max_pixels", "read_image(16x16 PNG, max_pixels=10)",
       lambda f: rio.read_image(f / "rgb.png", max_pixels=10), ValueError,
       "path: {d}/rgb.png declares a 16x16x3 image (0.0 megapixels), more than the limit of 10 "
@@ -254,6 +268,12 @@ ROWS = [
     R("io.ImageSource-corrupt", "ImageSource(corrupt .png).load()",
       lambda f: rio.ImageSource("c", str(f / "corrupt.png")).load(), ValueError,
       "dataset: cannot read"),
+    R("io.folder_dataset-raw_options-unknown", "folder_dataset(raw_options={'*': {'phse': ..}})",
+      lambda f: rio.folder_dataset(f / "ds", raw_options={"*": {"phse": "RGGB"}}), ValueError,
+      "raw_options: 'phse' (for '*') is not a raw option; expected some of phase"),
+    R("io.folder_dataset-raw_options-list", "folder_dataset(raw_options=[1])",
+      lambda f: rio.folder_dataset(f / "ds", raw_options=[1]), TypeError,
+      "raw_options: expected a mapping of file names"),
     R("io.folder_dataset-empty", "folder_dataset(empty folder)",
       lambda f: rio.folder_dataset(f / "empty"), ValueError, "dataset: no image files in"),
     R("io.folder_dataset-limit", "folder_dataset(limit=0)",
@@ -268,6 +288,21 @@ ROWS = [
     R("io.ImageSource-grey", "ImageSource(grey .png).load()",
       lambda f: rio.ImageSource("g", str(f / "grey.png")).load(), ValueError,
       "dataset: {d}/grey.png is a grey image (16x16)"),
+    R("io.read_image-unidentified", "read_image(junk under .bmp)",
+      lambda f: rio.read_image(f / "junk.bmp"), ValueError,
+      "path: cannot read {d}/junk.bmp as an image (not an image format this library reads"),
+    R("io.read_image-long-name", "read_image(a 300-byte name)",
+      lambda f: rio.read_image(f / ("a" * 296 + ".png")), ValueError,
+      "path: a name in "),
+    R("io.load_frame-npz-pattern", "load_frame(NPZ frame, pattern='bayer')",
+      lambda f: rio.load_frame(f / "ok.npz", pattern="bayer"), ValueError,
+      "pattern: {d}/ok.npz records its own pattern 'mask1'; pattern='bayer' applies to a plain"),
+    R("io.load_frame-npz-bit_depth", "load_frame(NPZ frame, bit_depth=12)",
+      lambda f: rio.load_frame(f / "ok.npz", bit_depth=12), ValueError,
+      "bit_depth: {d}/ok.npz records its own bit depth 11"),
+    R("io.atomic_write-folder", "atomic_write(a folder, 'x')",
+      lambda f: rio.atomic_write(f / "empty", "x"), ValueError,
+      "path: {d}/empty is a folder; expected a file to write"),
 ]
 
 test_api_contract = api_tests(ROWS)
@@ -304,7 +339,7 @@ def test_atomic_write_failure_keeps_the_old_file(tmp_path, monkeypatch):
     rio.atomic_write(target, '{"old": true}')
     with pytest.raises(TypeError):
         rio.atomic_write(target, 12345)                # not str or bytes
-    with pytest.raises(IsADirectoryError):
+    with pytest.raises(ValueError, match="path: .* is a folder"):
         rio.atomic_write(tmp_path, "x")                # the target is a folder
 
     def replace_fails(src, dst):
@@ -393,3 +428,18 @@ def test_unreadable_files_name_the_path_and_leak_no_handle(files, tmp_path):
         assert issubclass(kind, ValueError), (path.name, kind, msg)
         assert str(path) in msg and reason in msg, (path.name, msg)
         assert msg.split(":")[0] in ("path", "dataset") and "\n" not in msg, msg
+
+
+def test_a_frame_file_takes_the_pattern_and_bit_depth_it_records(files):
+    """A frame file records its pattern and bit depth: the same ones (or bit_depth="input")
+    are accepted, a different one is refused rather than ignored; "." and other paths without
+    a name part are valid paths."""
+    frame = rio.load_frame(files / "ok.npz")
+    for kw in ({"pattern": "mask1"}, {"pattern": rz.mask1()}, {"bit_depth": 11},
+               {"bit_depth": "input"}, {"pattern": "mask1", "bit_depth": 11}):
+        got = rio.load_frame(files / "ok.npz", **kw)
+        assert got.pattern == frame.pattern and got.bit_depth == frame.bit_depth
+        np.testing.assert_array_equal(got.data, frame.data)
+    from rgbz_fast._validate import check_path
+
+    assert str(check_path(".")) == "." and str(check_path("/")) == "/"

@@ -1,5 +1,6 @@
 """The file primitives: bounded reads of regular files only, size limits checked from the
-headers before anything is decoded, 16-bit colour PNGs at full precision, atomic writes."""
+headers before anything is decoded, 16-bit colour PNGs at full precision, every format's
+samples as its header means them, atomic writes."""
 
 from __future__ import annotations
 
@@ -12,6 +13,8 @@ from _support import frame_header, npy_bytes, write_npz
 
 import rgbz_fast as rz
 from rgbz_fast import io as rio
+from rgbz_fast import simulation as sim
+from rgbz_fast.io import read_image
 
 cv2 = pytest.importorskip("cv2")
 
@@ -248,3 +251,105 @@ def test_atomic_write_leaves_no_temporary_when_interrupted(tmp_path, monkeypatch
         rio.atomic_write(target, 5)
     rio.atomic_write(target, "±")
     assert target.read_bytes() == "±".encode()
+
+
+def _pnm(path, arr, maxval):
+    """A binary PGM (2-D) or PPM (3-D) of ``arr`` with ``maxval``, big-endian when 16-bit."""
+    magic = b"P5" if arr.ndim == 2 else b"P6"
+    dtype = ">u2" if maxval > 255 else "u1"
+    path.write_bytes(magic + f"\n{arr.shape[1]} {arr.shape[0]}\n{maxval}\n".encode()
+                     + arr.astype(dtype).tobytes())
+    return path
+
+
+def test_image_formats_are_read_as_what_they_mean(tmp_path):
+    """Each format's samples as its header means them, or a clear refusal: 16-bit PGM/PPM
+    at 16 bits (Pillow gave int32 or 8 bits), a 12-bit one scaled to the full 16 bits, ASCII
+    ones; a palette TIFF's colours (not its indices, which grey=True made a grey image);
+    MINISWHITE inverted; planar RGB interleaved; CMYK JPEG/TIFF, CIELAB and YCbCr TIFF
+    refused (they were read as RGB plus alpha); 32-bit integer TIFFs need their bits."""
+    import tifffile
+    from PIL import Image
+
+    rng = np.random.default_rng(0)
+    g16 = rng.integers(0, 65536, (8, 8), dtype=np.uint16)
+    c12 = rng.integers(0, 4096, (8, 8, 3), dtype=np.uint16)
+    g8 = rng.integers(0, 256, (8, 8), dtype=np.uint8)
+    rgb = rng.integers(0, 256, (8, 8, 3), dtype=np.uint8)
+    assert np.array_equal(read_image(_pnm(tmp_path / "g16.pgm", g16, 65535)), g16)
+    got = read_image(_pnm(tmp_path / "c12.ppm", c12, 4095))
+    assert got.dtype == np.uint16
+    assert np.array_equal(got, (c12.astype(np.int64) * 131070 + 4095) // 8190)
+    assert np.array_equal(read_image(_pnm(tmp_path / "g8.pgm", g8, 255)), g8)
+    (tmp_path / "a.pgm").write_text("P2\n# a comment\n3 1\n1000\n0 500 1000\n")
+    assert read_image(tmp_path / "a.pgm").tolist() == [[0, 32768, 65535]]
+    scene = sim.load_image(tmp_path / "g16.pgm", grey=True)
+    assert np.allclose(scene.image[..., 0], sim.srgb_to_linear(g16 / 65535.0))
+    for bad, why in ((b"P5\n4 4\n255\n\x00", "truncated"), (b"P2 2 1 10 5 11", "above its"),
+                     (b"P5 4 4 70000 ", "maxval")):
+        (tmp_path / "bad.pgm").write_bytes(bad)
+        with pytest.raises(ValueError, match=f"^path: cannot read .*bad.pgm as an image .*{why}"):
+            read_image(tmp_path / "bad.pgm")
+
+    cmap = np.zeros((3, 256), np.uint16)
+    cmap[:, :4] = rng.integers(0, 65536, (3, 4))
+    idx = rng.integers(0, 4, (8, 8), dtype=np.uint8)
+    tifffile.imwrite(tmp_path / "pal.tif", idx, photometric="palette", colormap=cmap)
+    assert np.array_equal(read_image(tmp_path / "pal.tif"), cmap.T[idx])
+    assert sim.load_image(tmp_path / "pal.tif", grey=True).image.shape == (8, 8, 3)
+    Image.fromarray(g8).convert("P").save(tmp_path / "palgrey.png")
+    assert np.array_equal(rio.rgb_image(read_image(tmp_path / "palgrey.png"), "p", grey=True),
+                          np.repeat(g8[..., None], 3, axis=2))
+    tifffile.imwrite(tmp_path / "white.tif", g8, photometric="miniswhite")
+    assert np.array_equal(read_image(tmp_path / "white.tif"), 255 - g8)
+    tifffile.imwrite(tmp_path / "white16.tif", g16, photometric="miniswhite")
+    assert np.array_equal(read_image(tmp_path / "white16.tif"), 65535 - g16)
+    tifffile.imwrite(tmp_path / "planar.tif", np.moveaxis(rgb, 2, 0), photometric="rgb",
+                     planarconfig="separate")
+    assert np.array_equal(read_image(tmp_path / "planar.tif"), rgb)
+
+    Image.fromarray(rgb).convert("CMYK").save(tmp_path / "cmyk.jpg")
+    tifffile.imwrite(tmp_path / "cmyk.tif", np.zeros((8, 8, 4), np.uint8),
+                     photometric="separated")
+    Image.fromarray(rgb).convert("LAB").save(tmp_path / "lab.tif")
+    Image.fromarray(rgb).convert("YCbCr").save(tmp_path / "ycbcr.tif")
+    for name, kind in (("cmyk.jpg", "CMYK"), ("cmyk.tif", "CMYK"), ("lab.tif", "CIELAB"),
+                       ("ycbcr.tif", "YCbCr")):
+        for read in (read_image, sim.load_image):
+            with pytest.raises(ValueError, match=f"^path: cannot read .*{name} as an image "
+                                                 f"\\(it holds {kind}"):
+                read(tmp_path / name)
+
+    for dtype in (np.int32, np.uint32):
+        tifffile.imwrite(tmp_path / "wide.tif", c12.astype(dtype), photometric="rgb")
+        with pytest.raises(ValueError, match=f"^path: .*wide.tif holds {np.dtype(dtype)} "
+                                             "samples, a type that says nothing"):
+            sim.load_image(tmp_path / "wide.tif")
+        assert np.array_equal(sim.load_image(tmp_path / "wide.tif", input_bits=12).image,
+                              sim.Scene(c12, input_bits=12).image)
+
+
+def test_output_names_up_to_the_longest_file_name_are_written(tmp_path):
+    """A name of 234 to 255 bytes is a valid file name, but its temporary name (22 bytes
+    more) was not: atomic_write failed with 'File name too long'. The temporary name keeps
+    as much of the name as fits; a name beyond 255 bytes is the command line's clear error."""
+    from rgbz_fast._cli import main
+
+    for size in (233, 234, 240, 255):
+        path = tmp_path / ("n" * (size - 4) + ".txt")
+        rio.atomic_write(path, "x")
+        assert path.read_text() == "x"
+    wide = tmp_path / ("é" * 125 + ".txt")                   # 254 bytes in UTF-8
+    rio.atomic_write(wide, "x")
+    assert wide.read_text() == "x"
+    assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".")) == []
+    import imageio.v3 as iio
+
+    img = np.random.default_rng(0).integers(0, 256, (16, 16, 3), dtype=np.uint8)
+    iio.imwrite(tmp_path / ("s" * 236 + ".png"), img)      # simulate writes 246 bytes
+    assert main(["simulate", str(tmp_path / ("s" * 236 + ".png")), "--out",
+                 str(tmp_path / "o"), "--quiet"]) == 0
+    iio.imwrite(tmp_path / ("t" * 248 + ".png"), img)      # 258 bytes: no such file
+    assert main(["simulate", str(tmp_path / ("t" * 248 + ".png")), "--out",
+                 str(tmp_path / "o2"), "--quiet"]) == 2
+    assert not (tmp_path / "o2").exists()

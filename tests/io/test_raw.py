@@ -420,3 +420,50 @@ def test_real_frame_to_rgbz_reconstructs(raw_path):
     err = np.abs(out[z].astype(np.float64) - ref[z])
     assert err.mean() < 0.05 * 2047
     assert set(BAYER_PHASES) == set(PHASES)
+
+
+def test_a_truncated_or_damaged_camera_raw_is_one_clear_error(tmp_path, capfd):
+    """LibRaw reads a camera raw lazily: a truncated DNG passed the header and failed when its
+    pixels were unpacked, with rawpy's LibRawIOError and LibRaw's own lines on stderr. Every
+    failure of LibRaw is now one ValueError naming the file, LibRaw's complaints inside it,
+    nothing else on stderr; the command line prints one line."""
+    pytest.importorskip("rawpy")
+    from rgbz_fast._cli import main
+
+    blob = shared_path("raw", "colorchart.dng").read_bytes()
+    for keep in (0.9, 0.3, 0.01):
+        f = tmp_path / f"cut{keep}.dng"
+        f.write_bytes(blob[:int(len(blob) * keep)])
+        capfd.readouterr()
+        with pytest.raises(ValueError, match=f"^path: LibRaw cannot read {f.name}: LibRaw"):
+            read_raw(f)
+        assert capfd.readouterr().err == ""
+        assert main(["reconstruct", str(f), "--rgbz-pattern", "mask1", "--out",
+                     str(tmp_path / "out"), "--quiet"]) == 2
+        err = capfd.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and err[0].startswith(f"rgbz-fast reconstruct: error: path: "
+                                                   f"LibRaw cannot read {f.name}"), err
+    flipped = bytearray(blob)
+    flipped[8:4000:7] = b"\xff" * len(flipped[8:4000:7])
+    (tmp_path / "flip.dng").write_bytes(bytes(flipped))
+    try:
+        read_raw(tmp_path / "flip.dng")                   # LibRaw may still read it
+    except ValueError as exc:
+        assert str(exc).startswith("path: ")
+
+
+def test_dng_with_a_damaged_tag_reads_without_log_lines(dng_path, tmp_path, caplog):
+    """A DNG whose TIFF tags are damaged where LibRaw does not look is read; the metadata
+    reader skips the tags it cannot read without logging each one to stderr (on the command
+    line those lines came before its own)."""
+    blob = bytearray(dng_path.read_bytes())
+    rng = np.random.default_rng(0)
+    for _ in range(3):                                 # the third draw damages tag 296 only
+        damaged = bytearray(blob)
+        for i in rng.integers(8, 4096, 20):
+            damaged[i] = rng.integers(0, 256)
+    (tmp_path / "d.dng").write_bytes(bytes(damaged))
+    caplog.set_level("DEBUG")
+    frame = read_raw(tmp_path / "d.dng")
+    assert frame.shape == (1156, 1734)
+    assert [r.getMessage() for r in caplog.records if r.name.startswith("tifffile")] == []

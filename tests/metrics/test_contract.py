@@ -81,6 +81,9 @@ ROWS = [
     R("metrics.cpsnr_pooled-generator", "cpsnr_pooled(generator)",
       lambda f: metrics.cpsnr_pooled((x for x in [u8img()]), [u8img()]), TypeError,
       "references: expected a sequence of images"),
+    R("metrics.ssim-gaussian_weights-text", "ssim(gaussian_weights='no')",
+      lambda f: metrics.ssim(f64((16, 16)), f64((16, 16)), gaussian_weights="no"), TypeError,
+      "gaussian_weights: expected True or False, got 'no'"),
     R("metrics.ssim-small", "ssim(5x5)", lambda f: metrics.ssim(f64((5, 5)), f64((5, 5))),
       ValueError, "crop: crop=0 leaves 5 x 5 pixels"),
     R("metrics.ssim-win-even", "ssim(win_size=4)",
@@ -119,6 +122,17 @@ ROWS = [
     R("metrics.ms_ssim-weights-negative", "ms_ssim(weights=[-1])",
       lambda f: metrics.ms_ssim(u8img(), u8img(), weights=[-1]), ValueError,
       "weights: expected finite exponents >= 0"),
+    R("metrics.zipper-huge", "zipper(1e300, input='srgb01')",
+      lambda f: metrics.zipper(np.full((4, 4, 3), 1e300), np.zeros((4, 4, 3)), input="srgb01"),
+      ValueError, "input: reference holds values up to 1e+300 in magnitude, beyond 1e+100"),
+    R("metrics.delta_e_map-huge", "delta_e_map(lab 1e200)",
+      lambda f: metrics.delta_e_map(np.zeros((4, 4, 3)), np.full((4, 4, 3), 1e200),
+                                    input="lab"),
+      ValueError, "input: test holds values up to 1e+200 in magnitude, beyond 1e+100"),
+    R("metrics.ssim-huge-data", "ssim(data 1e200)",
+      lambda f: metrics.ssim(f64((16, 16), 1e200), f64((16, 16)), data_range=1), ValueError,
+      "reference: reference holds values up to 1e+200 in magnitude, beyond 1e+150: SSIM "
+      "multiplies squares"),
     R("metrics.zipper-small", "zipper(2x2)",
       lambda f: metrics.zipper(np.zeros((2, 2, 3)), np.zeros((2, 2, 3))), ValueError,
       "crop: crop=0 leaves 2 x 2 pixels"),
@@ -143,11 +157,33 @@ ROWS = [
 test_api_contract = api_tests(ROWS)
 
 
-def test_cfa_psnr_of_an_overflowing_difference_is_minus_inf_with_a_warning():
-    """Accepted on purpose (docs/reports/robustness.md): a squared error that overflows
-    gives -inf dB and NumPy's RuntimeWarning, not an error."""
-    with pytest.warns(RuntimeWarning):
-        assert metrics.cfa_psnr(f64(), f64(value=1e300), data_range=1.0) == -np.inf
+def test_psnr_of_finite_images_is_finite_at_every_scale():
+    """The PSNR of two different finite images is a finite number of dB, without a warning,
+    whatever the scale: squared differences that overflow (1e300) or underflow (1e-200,
+    subnormal differences down to the smallest double) and a data_range whose square overflows (1e200) or underflows (1e-200) used to give
+    -inf, inf or NaN. Equal images give inf."""
+    import warnings
+
+    a = f64((8, 8, 3))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert metrics.cfa_psnr(f64(), f64(value=1e300), data_range=1.0) == \
+            pytest.approx(-6000.0)
+        one = with_value(1.0, shape=(8, 8, 3), at=(0, 0, 0))
+        for scale in (5e-324, 1e-310, 1e-200, 1e-100, 1.0, 1e100, 1e200, 1e300):
+            want = 10 * np.log10(192.0)                  # one pixel of 192 off by data_range
+            for psnr in (metrics.cpsnr(a, one * scale, data_range=scale),
+                         metrics.cfa_psnr(a, one * scale, data_range=scale),
+                         metrics.cpsnr_pooled([a, a], [one * scale, one * scale],
+                                              data_range=scale)):
+                assert psnr == pytest.approx(want, rel=1e-12)
+        big = np.finfo(np.float64).max
+        assert metrics.cfa_psnr(f64(value=-big), f64(value=big), data_range=big) == \
+            pytest.approx(-20 * np.log10(2.0))
+        f32 = np.finfo(np.float32).max
+        assert np.isfinite(metrics.cpsnr(np.full((4, 4, 3), f32, np.float32),
+                                         np.full((4, 4, 3), -f32, np.float32), data_range=1))
+        assert metrics.cpsnr(a, a, data_range=1e-300) == np.inf
 
 
 def test_ssim_data_range_at_its_bounds_is_scale_invariant():

@@ -11,6 +11,7 @@ import pytest
 from _support import SHARED_DATA, shared_path  # noqa: E402
 
 import rgbz_fast as rz  # noqa: E402
+from rgbz_fast import _kernels  # noqa: E402
 from rgbz_fast.simulation import Scene, load_rgbd  # noqa: E402
 from rgbz_fast.simulation import (SPEED_OF_LIGHT, ToFSensor, ToFTaps, simulate,  # noqa: E402
                               simulate_tof)
@@ -154,7 +155,11 @@ def test_fast_atan2_matches_numpy_to_one_ulp():
     with np.errstate(over="ignore"):
         i, q = taps[0, 0] - taps[0, 2], taps[0, 3] - taps[0, 1]
     assert np.isinf(i).sum() >= 3 and np.isinf(q).sum() >= 3
-    phase, _, _ = demodulate(taps)
+    # the kernel itself: demodulate refuses taps beyond TAP_MAX, whose sums overflow
+    phase, amp, off = (np.empty((1, q.size)) for _ in range(3))
+    _kernels.tof_demodulate(np.ascontiguousarray(taps), phase, amp, off, 1)
+    with pytest.raises(ValueError, match="^taps: values up to 1e.308 in magnitude"):
+        demodulate(taps)
     want = np.arctan2(q, i)
     want[want < 0] += 2 * np.pi
     want[want >= 2 * np.pi] = 0.0

@@ -11,6 +11,7 @@ work in ``run(args)``.
 from __future__ import annotations
 
 import argparse
+import os
 import re
 from pathlib import Path
 
@@ -18,7 +19,7 @@ from .._validate import parse_shape
 from ..io import MAX_BYTES_ENV, MAX_PIXELS_ENV
 
 __all__ = ["CliError", "Formatter", "EPILOG", "command_parser", "explain", "command_line",
-           "output_folder", "unique_outputs", "file_label"]
+           "output_folder", "check_outputs", "unique_outputs", "file_label"]
 
 EPILOG = ("Every option's default is shown in parentheses. The user guide, the measured "
           "results and the API reference are in the project's documentation.")
@@ -47,8 +48,14 @@ def command_parser(sub, name, help, description):
 
 # --------------------------------------------------------------------------- argument types
 def csv(text):
-    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c')."""
-    return tuple(s.strip() for s in text.split(",") if s.strip())
+    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c'); an entry given twice is a usage
+    error (it would be run, and reported, twice)."""
+    items = tuple(s.strip() for s in text.split(",") if s.strip())
+    twice = next((s for i, s in enumerate(items) if s in items[:i]), None)
+    if twice is not None:
+        raise argparse.ArgumentTypeError(f"{twice!r} is given twice in {text!r}; name each "
+                                          "entry once")
+    return items
 
 
 def number(convert, accept, what):
@@ -68,6 +75,17 @@ positive_int = number(int, lambda v: v >= 1, "a positive integer")
 non_negative_int = number(int, lambda v: v >= 0, "an integer >= 0")
 positive_float = number(float, lambda v: 0 < v < float("inf"), "a positive number")
 non_negative_float = number(float, lambda v: 0 <= v < float("inf"), "a number >= 0")
+
+
+def thread_count(text):
+    """Threads: a positive integer up to what check_workers accepts (MAX_WORKERS), so that
+    no count reaches C as an integer too large for it."""
+    from .._validate import MAX_WORKERS
+
+    v = positive_int(text)
+    if v > MAX_WORKERS:
+        raise argparse.ArgumentTypeError(f"expected at most {MAX_WORKERS} threads, got {text!r}")
+    return v
 
 
 def off_or(parse):
@@ -126,7 +144,7 @@ def clip_level(text):
 def add_workers(p, what="threads of each kernel call",
                 default="all cores; evaluate: 1 per process when it runs several"):
     """``--workers N``: the one thread-count option; a count below 1 is a usage error."""
-    p.add_argument("--workers", type=positive_int, default=None, metavar="N",
+    p.add_argument("--workers", type=thread_count, default=None, metavar="N",
                    help=f"{what} (default: {default})")
 
 
@@ -204,6 +222,21 @@ def add_shape(p, default, what):
                    metavar="ROWSxCOLS", help=what)
 
 
+def made_shape(args, shape):
+    """``shape``, the size of frames a command makes (not reads), within the pixel limit of
+    reads (--max-pixels where the command has it, else RGBZ_FAST_MAX_PIXELS or 200
+    megapixels): beyond it the arrays would not fit in memory. A CliError naming --shape."""
+    from ..io import read_limits
+
+    limit = read_limits(getattr(args, "max_pixels", None))[0]
+    rows, cols = shape
+    if rows * cols > limit:
+        raise CliError(f"--shape: {rows}x{cols} is {rows * cols / 1e6:.4g} megapixels, more "
+                       f"than the limit of {limit / 1e6:.4g} megapixels (--max-pixels or "
+                       f"{MAX_PIXELS_ENV})")
+    return tuple(shape)
+
+
 def add_pattern(p, default, what):
     p.add_argument("--pattern", default=default, help=what)
 
@@ -260,9 +293,10 @@ def add_reconstruction_options(p, precision, precision_help):
                         "two clipped pixels are then left out of the weights (default: off; a "
                         "pixel at the level is not always a clipped one)")
     p.add_argument("--filters", type=csv, default=None, metavar="FILE[,FILE]",
-                   help="method learned: filters files from `rgbz-fast train` (the one fitted "
-                        "for the frame's pattern and bit depth is used); default: the ones "
-                        "shipped for Mask1 and Mask2")
+                   help="method learned: filters files from `rgbz-fast train`, tried before "
+                        "the shipped ones (Mask1 and Mask2, every Bayer phase); the first that "
+                        "fits the frame's pattern, or a mirror or shift of it, is used (default: "
+                        "the shipped ones only)")
 
 
 def add_raw_options_file(p, note=""):
@@ -311,6 +345,20 @@ def explain(exc, parser=None):
         spell = raw_option_words if "raw_options" in error.settings else flag
         return " ".join(error.render(spell).split())
     return str(exc) if parser is None else flag_words(str(exc), parser)
+
+
+def os_error_words(exc, args):
+    """A system error about a file ("[Errno 2] No such file or directory: '/proc/x'") as
+    ``FLAG: path: reason``: ``--out`` when the file is the output folder or in it, else
+    ``path``."""
+    path = os.fsdecode(exc.filename)
+    flag = "path"
+    out = getattr(args, "out", None)
+    if out is not None:
+        where, target = os.path.abspath(out), os.path.abspath(path)
+        if target == where or target.startswith(where.rstrip(os.sep) + os.sep):
+            flag = "--out"
+    return f"{flag}: {path}: {exc.strerror or exc}"
 
 
 def flag_words(text, parser):
@@ -363,27 +411,82 @@ def command_line(args):
 
 def output_folder(out):
     """``out`` when it can be an output folder (it may not exist yet), else a CliError."""
-    if out is not None and out.exists() and not out.is_dir():
+    if out is not None and _exists(out, "--out") and not out.is_dir():
         raise CliError(f"--out: {str(out)!r} exists and is not a folder")
     return out
 
 
 def output_file(out):
     """``out`` when it can be the one file a command writes, else a CliError."""
-    if out.is_dir():
+    if _exists(out, "--out") and out.is_dir():
         raise CliError(f"--out: {str(out)!r} is a folder; give the name of the file to write")
     return out
 
 
-def unique_outputs(pairs, out):
-    """``pairs``: (input, output names); a CliError when two inputs would write one file."""
+def _exists(path, flag):
+    """``path.exists()``, or a CliError naming ``flag`` when the path cannot even be looked
+    up (a name longer than the file system allows, a loop of links)."""
+    try:
+        return path.exists()
+    except OSError as exc:
+        raise CliError(f"{flag}: {str(path)[:80]!r}: {exc.strerror or exc}") from None
+
+
+def _same_file_key(path):
+    """What identifies the file at ``path``: its device and inode when it exists (a symbolic
+    or hard link to an input is that input), else its absolute path with links resolved."""
+    try:
+        st = os.stat(path)
+        return ("inode", st.st_dev, st.st_ino)
+    except OSError:
+        return ("path", os.path.realpath(path))
+
+
+def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
+    """The one input/output collision check of the command line, before anything is written.
+
+    ``writes``: (source, path) of every file the command will write, ``source`` being what
+    it comes from; ``reads``: every file it reads (frames, scenes, --filters, --raw-options,
+    --calibration, the images of a dataset); ``read_dirs``: (folder, suffixes) of the
+    folders whose files of those suffixes it reads (a dataset). A CliError naming ``flag``
+    when two sources would write one file, when a file written is a file read (a link to it
+    too: it would be overwritten, before it is read if it comes later), or when a file of
+    a suffix read is written into a folder that is read (an evaluation would read its
+    figures back as images on the next run).
+    """
     seen = {}
-    for src, names in pairs:
-        for name in names:
-            if name in seen and seen[name] != src:
-                raise CliError(f"--out: {seen[name]} and {src} would both write "
-                               f"{out / name}; give them different --out folders or rename one")
-            seen[name] = src
+    for src, path in writes:
+        size = len(os.fsencode(Path(path).name))
+        if size > 255:
+            raise CliError(f"{flag}: the output name {Path(path).name[:40]}... (from {src}) is "
+                           f"{size} bytes, more than the 255 a file name may have; rename "
+                           "the input")
+        key = _same_file_key(path)
+        if key in seen and seen[key][0] != src:
+            raise CliError(f"{flag}: {seen[key][0]} and {src} would both write {path}; give "
+                           f"them different --out folders or rename one")
+        seen[key] = (src, path)
+    inputs = {_same_file_key(f): f for f in reads if f is not None}
+    for src, path in writes:
+        hit = inputs.get(_same_file_key(path))
+        if hit is not None:
+            raise CliError(f"{flag}: writing {path} (from {src}) would overwrite the input "
+                           f"{hit}; choose another {flag}")
+    for folder, suffixes in read_dirs:
+        where = os.path.realpath(folder)
+        for src, path in writes:
+            if (os.path.realpath(Path(path).parent) == where
+                    and Path(path).suffix.lower() in suffixes):
+                raise CliError(f"{flag}: {Path(path).name} (from {src}) would be written "
+                               f"into {folder}, a folder read as input, and read back from it; "
+                               f"choose an {flag} outside it")
+
+
+def unique_outputs(pairs, out, reads=()):
+    """``pairs``: (input, output names) in the folder ``out``; :func:`check_outputs` of them
+    against each other and against the files ``reads`` (the inputs themselves included)."""
+    check_outputs([(src, out / name) for src, names in pairs for name in names],
+                  [*(src for src, _ in pairs), *reads])
 
 
 def file_label(name):
@@ -401,7 +504,7 @@ def file_label(name):
 def must_exist(paths, prefix="path: "):
     """A CliError naming the first path of ``paths`` that does not exist."""
     for f in paths:
-        if not f.exists():
+        if not _exists(f, prefix.rstrip(": ").rstrip() or "path"):
             raise CliError(f"{prefix}{f} does not exist")
 
 

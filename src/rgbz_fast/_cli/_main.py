@@ -61,9 +61,15 @@ def main(argv=None):
     try:
         return int(args.run(args) or 0)
     except (_common.CliError, ValueError, TypeError, OSError, ImportError) as exc:
-        text = _common.explain(exc, args.parser)
+        text = _common.os_error_words(exc, args) if isinstance(exc, OSError) \
+            and exc.filename is not None and str(exc).startswith("[Errno") \
+            else _common.explain(exc, args.parser)
         print(f"rgbz-fast {args.command}: error: "
               f"{text.splitlines()[0] if text else type(exc).__name__}", file=sys.stderr)
+        return 2
+    except MemoryError as exc:              # a size no check foresaw: one line, not a traceback
+        print(f"rgbz-fast {args.command}: error: out of memory ({exc or 'no detail'}); try a "
+              "smaller input or --max-pixels", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print(f"rgbz-fast {args.command}: interrupted", file=sys.stderr)

@@ -44,18 +44,29 @@ def add_raw_group(p):
 def raw_options_file(path):
     """The JSON file of ``--raw-options``: {file name or "*": {read_raw option: value}}."""
     from ..io import read_file
+    from ..io._raw import check_raw_options
 
     if path is None:
         return {}
     try:
-        opts = json.loads(read_file(path, "--raw-options", max_bytes=1 << 20))
+        text = read_file(path, "--raw-options", max_bytes=1 << 20).decode("utf-8")
+        opts = json.loads(text)
+    except UnicodeDecodeError:
+        raise c.CliError(f"--raw-options: {path} is not a UTF-8 text file; expected JSON") \
+            from None
+    except RecursionError:
+        raise c.CliError(f"--raw-options: {path} nests its JSON too deeply; expected an "
+                         "object of file names and their options") from None
     except (OSError, ValueError) as exc:
         raise c.CliError(f"--raw-options: cannot read {path}: "
                          f"{' '.join(c.explain(exc).split())}") from None
     if not isinstance(opts, dict) or not all(isinstance(v, dict) for v in opts.values()):
         raise c.CliError(f"--raw-options: {path} should map file names (or \"*\") to objects of "
                          "options")
-    return opts
+    try:
+        return check_raw_options(opts, f"--raw-options: {path}")
+    except ValueError as exc:
+        raise c.CliError(str(exc)) from None
 
 
 def raw_kwargs(args, path, from_file):

@@ -86,7 +86,7 @@ def run(args):
     from .._devtools import bench
     from .._devtools._common import json_text
 
-    shape = bench.check_shape(args.shape, "--shape") if args.shape else (
+    shape = bench.check_shape(c.made_shape(args, args.shape), "--shape") if args.shape else (
         bench.QUICK_SHAPE if args.quick else bench.FULL_SHAPE)
     repeat = args.repeat or (3 if args.quick else 5)
     out = c.output_folder(args.out)

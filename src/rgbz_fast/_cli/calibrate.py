@@ -82,6 +82,7 @@ def run(args):
                              f"{args.distances!r}") from None
         sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
         dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
+    c.check_outputs([("the calibration", args.out)], [*args.frames, *args.dark])
     with ticking(f"calibrate: fitting {len(sweep)} frames", not args.quiet):
         cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
     cal.save(args.out)
@@ -101,15 +102,15 @@ def _simulated_sweep(args):
 
     try:
         kw = json.loads(args.sensor) if args.sensor else {}
-    except ValueError as exc:
-        raise c.CliError(f"--sensor: not JSON ({exc})") from None
+    except (ValueError, RecursionError) as exc:
+        raise c.CliError(f"--sensor: not JSON ({str(exc) or 'nested too deeply'})") from None
     if not isinstance(kw, dict):
         raise c.CliError("--sensor: expected a JSON object of ToFSensor arguments")
     try:
         sensor = ToFSensor(**kw)
     except TypeError as exc:
         raise c.CliError(f"--sensor: {exc}".replace("ToFSensor.__init__() ", "")) from None
-    shape = tuple(args.shape)
+    shape = c.made_shape(args, args.shape)
     if not (0 < args.near < args.far):
         raise c.CliError(f"--near, --far: expected 0 < near < far, got {args.near}, "
                          f"{args.far}")

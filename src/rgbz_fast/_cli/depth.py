@@ -80,7 +80,7 @@ def run(args):
     full = ["_depth-full.tif", "_depth-full.png"] if args.full_resolution else []
     outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth.png", f"{f.stem}_depth-flags.png",
                  f"{f.stem}_depth-flags.tif"] + [f.stem + x for x in full]) for f in args.frames]
-    c.unique_outputs(outs, out)
+    c.unique_outputs(outs, out, reads=[args.calibration])
     for f, (tif_name, png_name, flags_name, bits_name, *full_names) in outs:
         frame = load_frame(f, **c.limits(args))
         if frame.tof is None:

@@ -71,6 +71,24 @@ def add_parser(sub):
     return p
 
 
+def _check_reports(args, config, dataset, out):
+    """The files the reports may write, checked against the inputs before anything is run:
+    no report over an image, --filters or --raw-options file, and no figure in the dataset's
+    folder, where the next run would evaluate it as an image."""
+    from ..evaluation._run import _safe
+    from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
+
+    names = ["results.csv", "results.json", "summary.md"]
+    names += [f"{kind}_{k}.png" for k in config.metrics for kind in ("bars", "paired")]
+    names += [f"{kind}_{_safe(s.name)}{ext}" for s in dataset
+              for kind, ext in (("table", ".md"), ("crops", ".png"))]
+    reads = [Path(s.location) for s in dataset if not s.location.startswith("skimage:")]
+    reads += [*(args.filters or ()), args.raw_options]
+    folders = [(args.dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)] \
+        if args.dataset is not None and args.dataset.is_dir() else []
+    c.check_outputs([("the reports", out / n) for n in names], reads, folders)
+
+
 def zoom(text):
     """ROW,COL[,SIZE]: the crop figure's region (SIZE 64 when not given)."""
     import argparse
@@ -110,6 +128,7 @@ def run(args):
                                  **c.limits(args))
     else:
         dataset = sample_dataset()[:args.limit]
+    _check_reports(args, config, dataset, out)
     cache = None if args.no_cache else (args.cache or out / "cache")
     res = evaluate(dataset, config, cache_dir=cache, processes=args.processes,
                    workers=args.workers, scheduler=args.scheduler, progress=not args.quiet,

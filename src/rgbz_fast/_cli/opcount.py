@@ -33,7 +33,7 @@ def run(args):
     from .._devtools._common import json_text
 
     opcount = c.tool("opcount")
-    shape = (32, 32) if args.quick else args.shape
+    shape = (32, 32) if args.quick else c.made_shape(args, args.shape)
     out = c.output_folder(args.out)
     image, image_name = _image(args.image)
     rows = opcount.opcount_table(args.methods, args.patterns, precision=args.precision,

@@ -91,6 +91,13 @@ def colour_matrix(text):
     if t in ("auto", "none"):
         return t
     m = _numbers(t, 9, "auto, none or nine comma-separated numbers (the 3x3 matrix row by row)")
+    from ..isp._stages import MATRIX_MAX
+
+    if max(abs(v) for v in m) > MATRIX_MAX:
+        import argparse
+
+        raise argparse.ArgumentTypeError(f"expected entries within +-{MATRIX_MAX:g} (a "
+                                         f"camera's lie within about 10), got {text!r}")
     return (m[0:3], m[3:6], m[6:9])
 
 
@@ -115,7 +122,8 @@ def run(args):
     method = c.file_label(args.method)
     ext = "_cfa.tif" if args.output == "cfa" else ".png"
     names = [(f, f"{f.stem}{label or ''}") for f in args.frames]
-    c.unique_outputs([(f, [f"{n}_{method}{ext}", f"{n}_reference{ext}"]) for f, n in names], out)
+    c.unique_outputs([(f, [f"{n}_{method}{ext}", f"{n}_reference{ext}"]) for f, n in names], out,
+                     reads=[*(args.filters or ()), args.raw_options])
     for f, stem in names:
         kw, explicit = raw_kwargs(args, f, from_file)
         # a raw file keeps its own bit depth unless --bit-depth says otherwise

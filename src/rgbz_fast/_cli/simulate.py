@@ -29,6 +29,9 @@ def add_parser(sub):
                    help="npz keeps everything (mosaic, reference CFA, ToF taps); tiff keeps the "
                         "16-bit mosaic and its metadata")
     c.add_grey(p)
+    p.add_argument("--input-bits", type=c.positive_int, default=None, metavar="N",
+                   help="bits the values of an image of 32-bit integer samples use (a TIFF of "
+                        "int32 or uint32; 8- and 16-bit files say their range) (default: none)")
     c.add_run_options(p, DEFAULT_OUT, workers=False)
     return p
 
@@ -48,7 +51,7 @@ def run(args):
              for s in args.scenes]
     c.unique_outputs([(s, [n]) for s, n in dests], out)
     for s, name in tqdm(dests, desc="simulate", unit="scene", disable=args.quiet):
-        scene = load_scene(s, grey=args.grey, **c.limits(args))
+        scene = load_scene(s, grey=args.grey, input_bits=args.input_bits, **c.limits(args))
         frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)
         save_frame(out / name, frame)            # the folder appears with its first file
         if not args.quiet:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from . import _common as c
 
 NAME = "tradeoff"
@@ -65,8 +67,15 @@ def run(args):
         raise c.CliError(f"--methods: unknown {', '.join(bad)}; expected some of "
                          f"{', '.join(known)}")
     if args.dataset:
+        from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
+
         images = folder_dataset(args.dataset, args.limit)
         name = args.dataset.name
+        if out is not None:
+            c.check_outputs([("the report", out / n) for n in
+                             ("tradeoff.png", "tradeoff.md", "tradeoff.json")],
+                            [Path(s.location) for s in images],
+                            [(args.dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)])
     else:
         images = sample_dataset()[:args.limit]
         name = "scikit-image samples"

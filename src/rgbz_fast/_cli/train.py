@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from . import _common as c
 
 NAME = "train"
@@ -16,8 +18,9 @@ def add_parser(sub):
         "With --z-guided, fit those of method 'z_guided' on a folder of registered RGB + NIR "
         "pairs (NNNN_rgb.png + NNNN_nir.png): each pair through the sensor model, noise-free "
         "and noisy (11 bits), on top of the shipped learned filters of the pattern.")
-    c.add_dataset(p, "folder of RGB images to fit on (required; keep the images you evaluate "
-                     "on out of it)", required=True)
+    p.add_argument("--dataset", type=Path, required=True, metavar="DIR", action="append",
+                   help="folder of RGB images to fit on (required; repeat it to fit on several "
+                        "folders; keep the images you evaluate on out of them)")
     c.add_pattern(p, "mask1", "RGB-Z pattern: mask1, mask2 or a tile such as ZR/BG (default: "
                               "mask1)")
     c.add_output_file(p, "the .npz file to write")
@@ -25,8 +28,13 @@ def add_parser(sub):
     p.add_argument("--noise", action="store_true",
                    help="fit on frames of the sensor noise model (default: noise-free mosaics)")
     c.add_linearise(p, "fits on")
+    p.add_argument("--encoding", choices=("linear", "srgb", "both"), default=None,
+                   help="the frames' encoding: linear (--linearise), srgb (--no-linearise) or "
+                        "both, every image twice (the shipped filters) (default: from "
+                        "--linearise)")
     p.add_argument("--name", default=None,
-                   help="training set name kept in the file (default: the folder's name)")
+                   help="training set name kept in the file (default: the folders' names "
+                        "joined by +)")
     c.add_limit(p)
     p.add_argument("--radius", type=c.positive_int, default=3,
                    help="window radius of the filter taps (3: a 7x7 window)")
@@ -36,6 +44,8 @@ def add_parser(sub):
                    help="strength levels of the hash")
     p.add_argument("--coherence", type=c.positive_int, default=3,
                    help="coherence levels of the hash")
+    p.add_argument("--spread", type=c.positive_int, default=3,
+                   help="channel-spread levels of the hash (1: none)")
     p.add_argument("--ridge", type=c.positive_float, default=1e-3,
                    help="ridge regularisation, relative to the mean diagonal of the normal "
                         "matrix")
@@ -56,12 +66,18 @@ def run(args):
     from ..io import folder_dataset
 
     c.output_file(args.out)
-    if not args.dataset.is_dir():
-        raise c.CliError(f"--dataset: {args.dataset} is not a folder")
-    dataset = folder_dataset(args.dataset, args.limit, **c.limits(args))
-    name = args.name or args.dataset.resolve().name
+    for d in args.dataset:
+        if not (c._exists(d, "--dataset") and d.is_dir()):
+            raise c.CliError(f"--dataset: {d} is not a folder")
+    from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
+
+    sources = [s for d in args.dataset
+               for s in folder_dataset(d, args.limit, **c.limits(args))]
+    c.check_outputs([("the filters", args.out)], [Path(s.location) for s in sources],
+                    [(d, IMAGE_SUFFIXES | RAW_SUFFIXES) for d in args.dataset])
+    name = args.name or "+".join(d.resolve().name for d in args.dataset)
     if args.z_guided:
-        filters = train_filters(dataset, args.pattern, name=name, progress=not args.quiet,
+        filters = train_filters(sources, args.pattern, name=name, progress=not args.quiet,
                                 z_guided=True, seed=args.seed, ridge=args.ridge,
                                 prior=args.prior, meta={"command": c.command_line(args)})
         filters.save(args.out)
@@ -70,12 +86,11 @@ def run(args):
                   f"{filters.meta['n_sites']} sites)")
         return 0
     filters = train_filters(
-        dataset, args.pattern,
-        bit_depth=args.bit_depth, noise=args.noise, linearise=args.linearise,
-        name=name, progress=not args.quiet,
-        radius=args.radius, hash_radius=args.hash_radius, n_strength=args.strength,
-        n_coherence=args.coherence, ridge=args.ridge, prior=args.prior,
-        meta={"command": c.command_line(args)})
+        sources, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
+        linearise=args.linearise, encoding=args.encoding, name=name,
+        progress=not args.quiet, radius=args.radius, hash_radius=args.hash_radius,
+        n_strength=args.strength, n_coherence=args.coherence, n_spread=args.spread,
+        ridge=args.ridge, prior=args.prior, meta={"command": c.command_line(args)})
     filters.save(args.out)
     if not args.quiet:
         m = filters.meta

@@ -160,7 +160,7 @@ def _learned_site_counts(data, pattern, precision, bit_depth):
     """
     from ..reconstruction._learned import resolve_filters
 
-    filters = resolve_filters(None, pattern, bit_depth)
+    filters = resolve_filters(None, pattern)
     n_ph = len(filters.geometry)
     counts = np.zeros(n_ph * _kernels_count.NOPS, np.uint64)
     _recon.run_learned(data, np.empty_like(data), pattern, filters, precision, bit_depth, 1,

@@ -8,7 +8,8 @@ from dataclasses import asdict, dataclass, field
 
 from .._build_config import VERSION
 from .._patterns import get_pattern
-from .._validate import check_bit_depth, check_choice, check_flag, check_int, check_seed
+from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
+                         check_int, check_seed)
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, NEEDS_TOF, ReconstructParams
 from ..reconstruction._learned import resolve_filters
@@ -116,11 +117,16 @@ class EvalConfig:
             v = getattr(self, name)
             if isinstance(v, str):
                 v = tuple(s.strip() for s in v.split(",") if s.strip())
+            else:
+                v = as_list(v, name, "a sequence of names or a comma-separated string")
             object.__setattr__(self, name, tuple(v))
         if not self.patterns or not self.methods or not self.metrics:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
-        for p in self.patterns:
-            get_pattern(p)
+        # each once: a repeated entry (mask1 and mask1_grbg are one pattern) would be run
+        # twice and counted twice in every mean
+        check_entries(self.patterns, "patterns", key=get_pattern, strings=False)
+        check_entries(self.methods, "methods")
+        check_entries(self.metrics, "metrics")
         bad = [m for m in self.methods if m not in METHODS]
         if bad:
             raise ValueError(f"methods: unknown method(s) {bad}; expected some of {list(METHODS)}")
@@ -141,10 +147,9 @@ class EvalConfig:
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
         if "learned" in self.methods:
-            # filters for every pattern at this bit depth (shipped or given), before any image
+            # filters for every pattern (shipped or given), before any image
             for p in self.patterns:
-                resolve_filters(learned_only(self.params.filters), get_pattern(p),
-                                self.bit_depth)
+                resolve_filters(learned_only(self.params.filters), get_pattern(p))
         if "z_guided" in self.methods:
             for p in self.patterns:
                 resolve_z_filters(self.params.filters, get_pattern(p), self.bit_depth)
@@ -185,6 +190,7 @@ class EvalConfig:
         level out of the key; raw sources are clipped by ``"auto"``, so their
         key includes it.
         """
+        raw = check_flag(raw, "raw")
         d = asdict(self)
         for k in ("patterns", "methods", "metrics"):
             d.pop(k)

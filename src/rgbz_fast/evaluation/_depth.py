@@ -41,6 +41,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .._patterns import get_pattern
+from .._validate import check_entries, check_number, check_path, check_seed
 from ..isp import ColourISP
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
 from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
@@ -302,14 +304,16 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     isp = ToFISP() if isp is None else isp
     if not isinstance(isp, ToFISP):
         raise TypeError(f"isp: expected a ToFISP, got {type(isp).__name__}")
-    if isinstance(sections, str):
-        sections = tuple(s.strip() for s in sections.split(",") if s.strip())
+    seed = check_seed(seed, "seed")
+    tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
+    sections = check_entries(sections, "sections")
+    patterns = check_entries(patterns, "patterns", key=get_pattern, strings=False)
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
-    if data is not None and not Path(data).is_dir():
+    if data is not None and not check_path(data, "data").is_dir():
         raise FileNotFoundError(f"data: {data} is not a folder")
-    if rgbnir is not None and not Path(rgbnir).is_dir():
+    if rgbnir is not None and not check_path(rgbnir, "rgbnir").is_dir():
         raise FileNotFoundError(f"rgbnir: {rgbnir} is not a folder")
     out = {}
     limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)

@@ -14,6 +14,13 @@ def _pct(a, b):
 
 def depth_report(result, tolerance=0.05):
     """Markdown tables of an :func:`evaluate_depth` result."""
+    from .._validate import check_number
+    from ._depth import DEPTH_SECTIONS
+
+    if not isinstance(result, dict) or not set(result) <= set(DEPTH_SECTIONS):
+        raise TypeError(f"result: expected the dict of sections evaluate_depth returns, got "
+                        f"{result!r:.60}")
+    tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
     lines = []
     cm = f"{100 * tolerance:g} cm"
     if "scenes" in result:

@@ -8,9 +8,10 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
+from .._validate import check_flag, check_path
 from ..io import atomic_write
 from ..reconstruction import reconstruct
-from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS
+from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, EvalConfig
 from ._results import Results
 from ._run import _safe, image_frames
 
@@ -40,16 +41,20 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         nothing is written, not even the folder), or ``table_image`` is not
         one of its images.
     """
+    plots = check_flag(plots, "plots")
     if not isinstance(results, Results):
         raise TypeError(f"results: expected Results, got {type(results).__name__}")
     if not results.rows:
         raise ValueError("results: no rows to report (an evaluation of no image); nothing "
                          "was written")
     images = results.images()
-    if table_image is not None and table_image not in images:
+    if table_image is not None and (not isinstance(table_image, str)
+                                    or table_image not in images):
         raise ValueError(f"table_image: {table_image!r} is not in the results "
                          f"({', '.join(images)})")
-    out = Path(out_dir)
+    if crop_box is not None:
+        crop_box = _check_box(crop_box, name="crop_box")
+    out = check_path(out_dir, "out_dir")
     out.mkdir(parents=True, exist_ok=True)
     previous = _previous_reports(out)
     written = []
@@ -71,8 +76,13 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
             if several:
                 put(f"paired_{k}.png", paired_chart(results, k))
         if crop_source is not None:
-            put(f"crops_{_safe(crop_source.name)}.png",
-                crop_figure(crop_source, results.config, box=crop_box))
+            try:
+                figure = crop_figure(crop_source, results.config, box=crop_box)
+            except ValueError as exc:                    # the box is this call's crop_box
+                if str(exc).startswith("box: "):
+                    raise ValueError("crop_" + str(exc)) from None
+                raise
+            put(f"crops_{_safe(crop_source.name)}.png", figure)
     names = [p.name for p in written]
     for name in sorted(previous - set(names)):          # a previous run's, not rewritten
         stale = out / name
@@ -141,7 +151,16 @@ def bar_chart(results, metric):
     spread is that of the images (it shows how hard they are, not how sure
     the ranking is): :func:`paired_chart` shows the latter.
     """
-    return _figure_png(_bar_figure(results, metric))
+    return _figure_png(_bar_figure(*_chart_inputs(results, metric)))
+
+
+def _chart_inputs(results, metric):
+    """(results, metric) of a chart, checked: a metric the results do not hold drew an
+    empty chart or failed inside matplotlib."""
+    if not isinstance(results, Results):
+        raise TypeError(f"results: expected Results, got {type(results).__name__}")
+    results._known(metric, "metric", results.config.metrics)
+    return results, metric
 
 
 def _bar_figure(results, metric):
@@ -181,6 +200,9 @@ def paired_chart(results, metric, baseline=None):
     method that is better on every image shows it even when the images'
     spread dwarfs the gain.
     """
+    results, metric = _chart_inputs(results, metric)
+    if baseline is not None:
+        results._known(baseline, "baseline", results.config.methods)
     return _figure_png(_paired_figure(results, metric, baseline))
 
 
@@ -264,14 +286,18 @@ def auto_crop(reference, tests, size):
     return int(y0), int(x0), size, size
 
 
-def _check_box(box, shape):
-    try:
-        y0, x0, h, w = (int(v) for v in box)
-    except (TypeError, ValueError):
-        raise ValueError(f"crop_box: expected (row, col, rows, cols), got {box!r}") from None
-    if not (0 <= y0 and 0 <= x0 and h > 0 and w > 0 and y0 + h <= shape[0]
-            and x0 + w <= shape[1]):
-        raise ValueError(f"crop_box: ({y0}, {x0}, {h}, {w}) is not inside the "
+def _check_box(box, shape=None, name="box"):
+    """A crop box: four integers (row, col, rows, cols), the sizes >= 1, inside an image of
+    ``shape`` when given; a TypeError or ValueError naming ``name`` otherwise."""
+    from .._validate import as_list, check_int
+
+    box = as_list(box, name, "(row, col, rows, cols)")
+    if len(box) != 4:
+        raise TypeError(f"{name}: expected (row, col, rows, cols), got {box!r:.40}")
+    y0, x0, h, w = (check_int(v, f"{name}[{i}]", lo=0 if i < 2 else 1)
+                    for i, v in enumerate(box))
+    if shape is not None and (y0 + h > shape[0] or x0 + w > shape[1]):
+        raise ValueError(f"{name}: ({y0}, {x0}, {h}, {w}) is not inside the "
                          f"{shape[0]}x{shape[1]} image")
     return y0, x0, h, w
 
@@ -285,6 +311,15 @@ def crop_figure(source, config, box=None, size=64):
     places the crop; by default :func:`auto_crop` chooses a ``size`` x
     ``size`` one on the first pattern, where the methods' errors show.
     """
+    from .._validate import check_int, merge_params
+    from ..io import ImageSource
+
+    if not isinstance(source, ImageSource):
+        raise TypeError(f"source: expected an ImageSource, got {type(source).__name__}")
+    config = merge_params(EvalConfig, config, name="config")
+    size = check_int(size, "size", lo=1)
+    if box is not None:
+        box = _check_box(box)
     plt = _pyplot()
     from matplotlib.patches import Rectangle
 

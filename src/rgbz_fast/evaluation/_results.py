@@ -10,10 +10,14 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
+from .._validate import as_list, check_int, merge_params
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, PAPER_TABLE3,
                       EvalConfig)
 
 __all__ = ["Results"]
+
+#: the keys of one row of the table
+_ROW_KEYS = {"image", "pattern", "method", "metric", "value"}
 
 
 @dataclass
@@ -28,10 +32,32 @@ class Results:
     config: EvalConfig = field(default_factory=EvalConfig)
     skipped: list = field(default_factory=list)
 
+    def __post_init__(self):
+        self.config = merge_params(EvalConfig, self.config, name="config")
+        self.rows = as_list(self.rows, "rows", "a list of row dicts")
+        for r in self.rows:
+            # "ir_estimated": an optional mark of the rows of a method guided by the Z pixels
+            if not isinstance(r, dict) or set(r) - {"ir_estimated"} != _ROW_KEYS or \
+                    not isinstance(r["value"], (int, float)) or isinstance(r["value"], bool):
+                raise TypeError(f"rows: expected dicts of {', '.join(sorted(_ROW_KEYS))} "
+                                f"(value a number), got {r!r:.80}")
+        self.skipped = as_list(self.skipped, "skipped", "a list of (image, reason)")
+
     def __len__(self):
         return len(self.rows)
 
+    def _known(self, value, name, known):
+        """``value`` when it is one of ``known`` (the names of these results), else a
+        ValueError naming ``name``: an unknown name would select nothing, silently."""
+        if not isinstance(value, str) or value not in known:
+            raise ValueError(f"{name}: {value!r:.40} is not in the results (expected one of "
+                             f"{', '.join(known)})")
+        return value
+
     def values(self, pattern, method, metric):
+        self._known(pattern, "pattern", self.config.patterns)
+        self._known(method, "method", self.config.methods)
+        self._known(metric, "metric", self.config.metrics)
         return np.array([r["value"] for r in self.rows if r["pattern"] == pattern
                          and r["method"] == method and r["metric"] == metric], dtype=float)
 
@@ -94,6 +120,11 @@ class Results:
         >>> diffs.tolist(), mean, round(lo, 3), round(hi, 3)
         ([1.0, 1.5], 1.25, -1.927, 4.427)
         """
+        self._known(pattern, "pattern", self.config.patterns)
+        self._known(method, "method", self.config.methods)
+        self._known(baseline, "baseline", self.config.methods)
+        self._known(metric, "metric", self.config.metrics)
+
         def per_image(m):
             return {r["image"]: r["value"] for r in self.rows if r["pattern"] == pattern
                     and r["method"] == m and r["metric"] == metric}
@@ -136,7 +167,15 @@ class Results:
     def summary_markdown(self, digits=None):
         """Per pattern: a table of mean ± std per method and metric, best per column in bold."""
         s = self.summary()
-        fmt = digits or {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
+        fmt = {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
+        if digits is not None:
+            if not isinstance(digits, dict):
+                raise TypeError(f"digits: expected a dict of metric -> digits, got "
+                                f"{type(digits).__name__}")
+            for k, v in digits.items():
+                self._known(k, "digits", ALL_METRICS)
+                check_int(v, f"digits[{k!r}]", lo=0, hi=17)
+            fmt = {**fmt, **digits}
         lines = [f"Mean ± std over {len(self.images())} image(s); {self.config.label()}.", ""]
         if self.skipped:
             lines[-1:] = [f"Skipped {len(self.skipped)} image(s) that could not be evaluated: "
@@ -183,7 +222,7 @@ class Results:
 
     def image_markdown(self, image):
         """The paper's Table 3 layout for one image, with the paper's kodim09 values beside ours."""
-        if image not in self.images():
+        if not isinstance(image, str) or image not in self.images():
             raise ValueError(f"image: {image!r} is not in the results ({', '.join(self.images())})")
         lines = []
         for p in self.config.patterns:

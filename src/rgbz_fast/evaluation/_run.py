@@ -5,6 +5,8 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
+import signal
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
@@ -15,9 +17,10 @@ from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, mosaic
 from .._patterns import get_pattern
-from .._validate import check_flag, check_processes, check_workers, merge_params
-from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, sample_dataset,
-                  to_rgbz)
+from .._validate import (check_flag, check_image, check_path, check_processes, check_workers,
+                         integer_bits, merge_params)
+from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
+                  sample_dataset, to_rgbz)
 from ..reconstruction import NEEDS_TOF, reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ._config import EvalConfig
@@ -61,6 +64,11 @@ def image_frames(img, pattern, config, nir=None):
     estimates one from the RGB, and the frame's ``tof.meta["ir_estimated"]``
     says so.
     """
+    if not isinstance(img, RawFrame):
+        img = check_image(img, "img", ndim=3)
+        if img.shape[2] != 3:
+            raise ValueError(f"img: expected an RGB image (rows, cols, 3), got shape {img.shape}")
+    config = merge_params(EvalConfig, config, name="config")
     return _frames(img, get_pattern(pattern), config, {}, nir)
 
 
@@ -88,9 +96,8 @@ def _frames(img, pattern, config, memo, nir=None):
     if "linear" not in memo:
         if not config.linearise:
             memo["linear"] = img
-        elif np.issubdtype(img.dtype, np.integer):
-            memo["linear"] = srgb_to_linear(img.astype(np.float64)
-                                            / float(np.iinfo(img.dtype).max))
+        elif (bits := integer_bits(img, "img")) is not None:
+            memo["linear"] = srgb_to_linear(img.astype(np.float64) / float((1 << bits) - 1))
         else:
             memo["linear"] = np.clip(img, 0, 1)
     lin = memo["linear"]
@@ -120,8 +127,13 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     (:meth:`~rgbz_fast.io.ImageSource.fingerprint`), in a folder of its own
     per image name. ``workers`` are the threads of each kernel call.
     """
+    if not isinstance(source, ImageSource):
+        raise TypeError(f"source: expected an ImageSource, got {type(source).__name__}")
+    config = merge_params(EvalConfig, config, name="config")
+    workers = check_workers(workers)
     rows, todo = [], []
-    cdir = Path(cache_dir) / cache_folder(source.name) if cache_dir else None
+    cdir = check_path(cache_dir, "cache_dir") / cache_folder(source.name) \
+        if cache_dir is not None else None
     content = source.fingerprint() if cdir else ""
 
     def key(p, m):
@@ -161,7 +173,13 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
                 test_srgb = chain.render(out, bayer, bit_depth=bd, gains=gains, workers=workers)
-                values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
+                try:
+                    values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
+                except ValueError as exc:            # an image too small for a metric
+                    if not str(exc).startswith("reference: "):
+                        raise                        # a message of the caller's parameter
+                    raise ValueError(f"metrics: image {source.name!r}: "
+                                     f"{str(exc).removeprefix('reference: ')}") from None
             if cdir:
                 _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k], estimated) for k in config.metrics]
@@ -206,26 +224,91 @@ def cache_folder(name):
     return f"{_safe(name)[:60]}-{hashlib.sha1(name.encode()).hexdigest()[:10]}"
 
 
+#: the largest cache entry read (one small JSON object of at most five numbers)
+_CACHE_MAX_BYTES = 1 << 16
+#: the values each metric can take: PSNRs are finite or +inf (equal images), the others
+#: lie in their ranges; anything else in a cache entry was not written by the evaluation
+_METRIC_RANGES = {"cfa_psnr": (-np.inf, np.inf), "cpsnr": (-np.inf, np.inf),
+                  "ssim": (-1.0, 1.0), "ms_ssim": (0.0, 1.0), "zipper": (0.0, 100.0)}
+
+
+def _json_number(text):
+    """A JSON number of a cache entry: a literal too large for a double (1e999) is no value
+    the evaluation wrote (it writes inf as Infinity)."""
+    v = float(text)
+    if not np.isfinite(v):
+        raise ValueError(f"the number {text} is beyond the doubles")
+    return v
+
+
+def _json_constant(name):
+    if name != "Infinity":                    # NaN and -Infinity are no metric's value
+        raise ValueError(f"{name} is no metric value")
+    return float("inf")
+
+
+def _cache_check(key, body):
+    """The checksum that binds an entry's values to its key: an entry edited by hand, or
+    moved under another key, fails it and is computed again."""
+    return hashlib.sha256(f"{key}\n{body}".encode()).hexdigest()
+
+
 def _cache_read(cdir, key):
-    f = cdir / f"{key}.json"
+    """The cached values of one (pattern, method), or None to compute them again.
+
+    Read through the guarded reader (a regular file of at most 64 kB, so that a FIFO or a
+    device in the cache never blocks) and validated: ``{"values": ..., "check": ...}`` whose
+    checksum matches (:func:`_cache_check`), the values a JSON object of known metrics, each
+    a number in its range (a PSNR may be +inf). A damaged or tampered entry (NaN, 1e999,
+    text, a value out of range, values edited without their checksum) is a miss, recomputed
+    and written again.
+    """
     try:
-        return json.loads(f.read_text())
-    except (OSError, ValueError):
+        data = read_file(cdir / f"{key}.json", "cache", max_bytes=_CACHE_MAX_BYTES)
+        entry = json.loads(data.decode("utf-8"), parse_float=_json_number,
+                           parse_int=_json_number, parse_constant=_json_constant)
+        values = entry["values"]
+        body = json.dumps(values, sort_keys=True)
+        if entry.get("check") != _cache_check(key, body) or len(entry) != 2:
+            return None
+    except (OSError, ValueError, RecursionError, TypeError, KeyError, AttributeError):
+        return None                                      # UnicodeDecodeError: a ValueError
+    if not isinstance(values, dict):
         return None
+    for k, v in values.items():
+        lo, hi = _METRIC_RANGES.get(k, (None, None))
+        if lo is None or not isinstance(v, float) or not lo <= v <= hi \
+                or (v == np.inf and k not in ("cfa_psnr", "cpsnr")):
+            return None
+    return values
 
 
 def _cache_write(cdir, key, values):
-    cdir.mkdir(parents=True, exist_ok=True)
-    atomic_write(cdir / f"{key}.json", json.dumps(values, sort_keys=True))
+    """Write an entry; a cache that cannot take it (a folder or a file of no write
+    permission under its name) costs a warning, never the result."""
+    body = json.dumps(values, sort_keys=True)
+    try:
+        cdir.mkdir(parents=True, exist_ok=True)
+        atomic_write(cdir / f"{key}.json", json.dumps(
+            {"check": _cache_check(key, body), "values": values}, sort_keys=True))
+    except (OSError, ValueError) as exc:
+        import warnings
+
+        warnings.warn(f"cache_dir: could not write {cdir / key}.json ({exc}); the result is "
+                      "kept, not cached", RuntimeWarning, stacklevel=2)
 
 
 def _pool_task(args):
     source, config, cache_dir, workers, skip_bad = args
-    if not skip_bad:
-        return evaluate_image(source, config, cache_dir, workers=workers)
     try:
         return evaluate_image(source, config, cache_dir, workers=workers)
+    except _WorkerStopped as stop:
+        # the writes in progress have removed their temporary files on the way here; the
+        # pool's loop would catch the exception and take the next image, so end the process
+        os._exit(stop.code)
     except (ValueError, TypeError, OSError) as exc:       # a bad image, not a bug: skipped
+        if not skip_bad:
+            raise
         skipped = _Skipped(" ".join(str(exc).split()) or type(exc).__name__)
         skipped.error = exc if isinstance(exc, ParameterError) else None    # it pickles
         return skipped
@@ -239,15 +322,29 @@ class _Skipped(str):
     error = None
 
 
-def _worker_init():
-    """Pool workers turn SIGTERM into SystemExit, so that a terminated run's cache writes
-    remove their temporary files (atomic_write cleans up on any exception)."""
-    import signal
+class _WorkerStopped(SystemExit):
+    """SIGTERM in a pool worker: unwinds the image in progress (its cache write removes its
+    temporary file), then the worker ends (:func:`_pool_task`); raised while the worker waits
+    for work, it ends the process as a SystemExit."""
 
+
+def _worker_init():
+    """Pool workers end promptly on SIGTERM, cleaning up on the way, and leave SIGINT to the
+    parent.
+
+    A Ctrl-C reaches the whole process group: each worker would get its KeyboardInterrupt in
+    the middle of an image, the pool would hand it back as that image's result and the
+    worker would start the next one. Workers ignore it instead; the parent's interrupt stops
+    the pool (:func:`_stop_pool`), which sends SIGTERM. SIGTERM raises
+    :class:`_WorkerStopped`, which :func:`_pool_task` turns into the end of the process once
+    the writes in progress have cleaned up -- the pool would otherwise catch it too, and
+    keep the worker running until it is killed (10 s later, its temporary files left).
+    """
     def terminated(signum, frame):
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
-        raise SystemExit(128 + signum)
+        raise _WorkerStopped(128 + signum)
 
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, terminated)
 
 
@@ -258,12 +355,22 @@ def _stop_pool(ex):
     for p in procs:
         if p.is_alive():
             p.terminate()
+    killed = 0
     for p in procs:
         p.join(timeout=10)
         if p.is_alive():                                 # pragma: no cover - stuck in C
             p.kill()
             p.join(timeout=10)
+            # join can return as the worker's pipes close, a moment before the kernel lets
+            # it be reaped: only an exit by SIGKILL is a worker that did not stop itself
+            killed += p.exitcode == -signal.SIGKILL
     ex.shutdown(wait=True, cancel_futures=True)
+    if killed:                                           # pragma: no cover - stuck in C
+        import warnings
+
+        warnings.warn(f"{killed} worker process(es) did not stop within 10 s of SIGTERM and "
+                      "were killed; their temporary files may remain", RuntimeWarning,
+                      stacklevel=3)
 
 
 def dataset_sources(dataset, limit=None):
@@ -348,14 +455,23 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     """
     config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
+    if scheduler is not None and not hasattr(scheduler, "submit") and not (
+            isinstance(scheduler, str) and re.fullmatch(r"\w+://[^/\s]+:\d+", scheduler)):
+        raise ValueError(f"scheduler: expected a Dask scheduler address such as "
+                         f"tcp://host:8786, or a distributed.Client, got {scheduler!r:.60}")
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")
     pooled = scheduler is not None or (nproc > 1 and len(dataset) > 1)
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
-    cache_dir = str(cache_dir) if cache_dir is not None else None
+    if cache_dir is not None:
+        cache_dir = check_path(cache_dir, "cache_dir")
+        if cache_dir.exists() and not cache_dir.is_dir():
+            raise ValueError(f"cache_dir: {cache_dir} exists and is not a folder")
+        cache_dir = str(cache_dir)
     skip_bad = check_flag(skip_bad, "skip_bad")
+    progress = check_flag(progress, "progress")
     tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]
     from tqdm.auto import tqdm
     bar = tqdm(total=len(tasks), desc="evaluate", unit="img", disable=not progress)

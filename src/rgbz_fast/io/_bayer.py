@@ -17,7 +17,7 @@ import numpy as np
 
 from .._frame import RawFrame, _Adopt, raw_clip_level
 from .._patterns import Pattern, Z, mask1, mask2, rows
-from .._validate import check_number
+from .._validate import as_array, check_number
 
 __all__ = ["to_rgbz", "clipped_mask", "frame_clip_level"]
 
@@ -135,6 +135,8 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
         clip_level = check_number(clip_level, "clip_level")
     if isinstance(radius, bool) or not isinstance(radius, (int, np.integer)) or radius < 0:
         raise ValueError(f"radius: expected a non-negative integer, got {radius!r}")
+    if radius > 1 << 16:
+        raise ValueError(f"radius: expected at most {1 << 16} pixels, got {radius!r}")
     if isinstance(frame, RawFrame):
         stored = frame.meta.get("clipped")
         if clip_level is None and isinstance(stored, np.ndarray) and stored.shape == frame.shape:
@@ -147,7 +149,7 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
         if clip_level is None:
             raise ValueError("clip_level: a plain array needs clip_level= (the raw value at "
                              "which the sensor saturates)")
-        data = np.asarray(frame)
+        data = as_array(frame, "frame")
         if data.ndim != 2:
             raise ValueError(f"frame: expected a 2-D array, got shape {data.shape}")
         mask = data >= clip_level

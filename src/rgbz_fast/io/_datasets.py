@@ -13,9 +13,10 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import check_flag, check_path
 from ._errors import ParameterError, Setting
-from ._files import read_file, read_image, rgb_image
-from ._raw import read_raw
+from ._files import read_file, read_image, rgb_image, sample_bits
+from ._raw import check_raw_options, read_raw
 from ._suffixes import IMAGE_SUFFIXES, RAW_SUFFIXES
 
 __all__ = ["ImageSource", "folder_dataset", "sample_dataset", "IMAGE_SUFFIXES",
@@ -53,6 +54,14 @@ class ImageSource:
     max_bytes: int | None = None
     nir: str | None = None
 
+    def __post_init__(self):
+        for name in ("name", "location"):
+            if not isinstance(getattr(self, name), str):
+                raise TypeError(f"ImageSource.{name}: expected a string, got "
+                                f"{type(getattr(self, name)).__name__}")
+        for name in ("raw", "grey"):
+            check_flag(getattr(self, name), f"ImageSource.{name}")
+
     @property
     def is_raw(self):
         return self.raw or Path(self.location).suffix.lower() in RAW_SUFFIXES
@@ -74,7 +83,9 @@ class ImageSource:
         else:
             img = read_image(self.location, "dataset", **limits)
             _refuse_mosaic(img, self.location)
-        return rgb_image(img, self.location, "dataset", grey=self.grey)
+        img = rgb_image(img, self.location, "dataset", grey=self.grey)
+        sample_bits(img, self.location, name="dataset", settable=False)  # 8/16 bits, floats
+        return img
 
     def load_nir(self):
         """The registered NIR image as float64 reflectance in [0, 1] (the file's values over
@@ -191,13 +202,14 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     whose :attr:`ImageSource.nir` is the NIR file: the guide of
     ``method="z_guided"``, never an image of its own.
     """
+    grey = check_flag(grey, "grey")
     if limit is not None and (isinstance(limit, bool) or not isinstance(limit, (int, np.integer))
                               or limit < 1):
         raise ParameterError("limit", f"expected a positive number of images, got {limit!r}")
-    p = Path(path)
+    p = check_path(path, "dataset")
     if not p.exists():
         raise ParameterError("dataset", f"{p} does not exist")
-    if p.is_file():
+    if not p.is_dir():                             # a file, or a FIFO the reader will refuse
         files = [p]
     else:
         files = sorted(f for f in p.iterdir()
@@ -206,7 +218,7 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     if not files:
         raise ParameterError("dataset", f"no image files in {p} (looked for "
                                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")
-    raw_options = dict(raw_options or {})
+    raw_options = check_raw_options(raw_options)
     nir = {f.name[:-len("_rgb" + f.suffix)]: f.with_name(f.name[:-len("_rgb" + f.suffix)]
                                                          + "_nir" + f.suffix)
            for f in files if f.stem.endswith("_rgb")}

@@ -21,9 +21,12 @@ from pathlib import Path
 
 import numpy as np
 
+from .._validate import as_array, as_list, check_flag, check_path, integer_bits
+from ._decode import PNM_MAGIC, decode_pillow, decode_pnm, decode_tiff
 from ._errors import ParameterError, Setting
 
-__all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "read_limits", "check_size",
+__all__ = ["atomic_write", "read_image", "read_file", "rgb_image", "sample_bits", "read_limits",
+           "check_size",
            "DEFAULT_MAX_PIXELS", "DEFAULT_MAX_BYTES", "MAX_PIXELS_ENV", "MAX_BYTES_ENV"]
 
 #: default largest image (rows x cols) a reader decodes: 200 megapixels
@@ -58,7 +61,11 @@ def _limit(value, name, env, default):
         raise TypeError(f"{name}: expected a positive integer, got {value!r}")
     if value < 1:
         raise ParameterError(name, f"expected a positive integer, got {value!r}")
-    return int(value)
+    return min(int(value), _NO_LIMIT)       # a limit beyond any file is no limit
+
+
+#: a limit larger than any file or image (and than what a read may ask for)
+_NO_LIMIT = 1 << 62
 
 
 def read_limits(max_pixels=None, max_bytes=None):
@@ -92,7 +99,16 @@ def check_size(shape, itemsize, path, name="path", *, limits=None):
     dimensions are the pixels, and the product times ``itemsize`` the bytes
     it decodes to. Called before the array is allocated.
     """
-    max_pixels, max_bytes = limits if limits is not None else read_limits()
+    if limits is not None and (not isinstance(limits, (tuple, list)) or len(limits) != 2):
+        raise TypeError(f"limits: expected (max_pixels, max_bytes), got {limits!r:.40}")
+    max_pixels, max_bytes = read_limits(*(limits or ()))
+    if not all(isinstance(s, (int, np.integer)) and not isinstance(s, bool) and s >= 0
+               for s in as_list(shape, "shape", "a sequence of sizes")):
+        raise TypeError(f"shape: expected a sequence of sizes (integers >= 0), got "
+                        f"{shape!r:.40}")
+    if isinstance(itemsize, bool) or not isinstance(itemsize, (int, np.integer)) \
+            or itemsize < 1:
+        raise TypeError(f"itemsize: expected a positive number of bytes, got {itemsize!r}")
     shape = tuple(int(s) for s in shape)
     pixels = int(np.prod(shape[:2], dtype=object)) if shape else 1
     nbytes = int(np.prod(shape, dtype=object)) * int(itemsize)
@@ -145,8 +161,8 @@ def read_file(path, name="path", *, max_bytes=None):
     ...
     rgbz_fast.io.ParameterError: path: /dev/zero is a character device, not a regular file
     """
+    p = check_path(path, name)
     limit = read_limits(max_bytes=max_bytes)[1]
-    p = Path(os.fspath(path))
     try:
         # O_NONBLOCK: opening a FIFO for reading would wait for a writer
         fd = os.open(p, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
@@ -167,7 +183,7 @@ def read_file(path, name="path", *, max_bytes=None):
             raise ParameterError(name, f"{p} is {st.st_size} bytes, more than the limit of "
                                        f"{limit} bytes", *raise_it("max_bytes"))
         try:
-            data = fh.read(limit + 1)      # bounded even if the file grows meanwhile
+            data = _read_bounded(fh, st.st_size, limit)
         except OSError as exc:
             raise ParameterError(name, f"cannot read {p} ({exc.strerror or exc})") from None
     if len(data) > limit:
@@ -176,11 +192,40 @@ def read_file(path, name="path", *, max_bytes=None):
     return data
 
 
+def _read_bounded(fh, size, limit):
+    """At most ``limit + 1`` bytes of ``fh``: the ``size`` its fstat gave first, then 1 MiB
+    at a time if it grew meanwhile (a read of ``limit + 1`` bytes at once allocates that
+    much, whatever the file holds)."""
+    parts, total = [], 0
+    want = min(limit, size) + 1
+    while total <= limit:
+        part = fh.read(want)
+        if not part:
+            break
+        parts.append(part)
+        total += len(part)
+        want = min(1 << 20, limit + 1 - total)
+    return b"".join(parts)
+
+
 def _unlink(path):
     try:
         os.unlink(path)
     except OSError:
         pass
+
+
+def _temporary_stem(path):
+    """The part of ``path``'s name its temporary file keeps: all of it, or as much as fits
+    the folder's longest name with the 22 bytes the temporary name adds (a 240-byte output
+    name is valid; its temporary name of 262 bytes was not)."""
+    try:
+        longest = os.pathconf(path.parent, "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):
+        longest = 255
+    room = max(longest - 22, 8)
+    raw = os.fsencode(path.name)
+    return path.name if len(raw) <= room else os.fsdecode(raw[:room])
 
 
 def atomic_write(path, data):
@@ -204,11 +249,14 @@ def atomic_write(path, data):
     """
     if not isinstance(data, (str, bytes, bytearray, memoryview)):
         raise TypeError(f"data: expected str or bytes, got {type(data).__name__}")
-    path = Path(path)
+    path = check_path(path, "path")
+    if path.is_dir():                              # os.replace would name the temporary file
+        raise ParameterError("path", f"{path} is a folder; expected a file to write")
     path.parent.mkdir(parents=True, exist_ok=True)
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    stem = _temporary_stem(path)
     while True:
-        tmp = path.parent / f".{path.name}.{secrets.token_hex(8)}.tmp"
+        tmp = path.parent / f".{stem}.{secrets.token_hex(8)}.tmp"
         try:
             fd = os.open(tmp, flags, 0o666)        # the umask applies, as to any new file
             break
@@ -308,12 +356,14 @@ def _decode_default(data, suffix):
             raise ValueError("a 16-bit grey + alpha PNG cannot be read at full precision; "
                              "save it without alpha")
     if data[:4] in _TIFF_MAGIC:
-        import tifffile
+        return decode_tiff(data)
+    if data[:2] in PNM_MAGIC:
+        return decode_pnm(data)
+    if png is not None:
+        import imageio.v3 as iio
 
-        return tifffile.imread(io.BytesIO(data), key=0)     # the first page only
-    import imageio.v3 as iio
-
-    return iio.imread(data, extension=suffix or None)
+        return iio.imread(data, extension=".png")
+    return decode_pillow(data)
 
 
 def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=None):
@@ -327,9 +377,12 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
     name : str
         The parameter named in the error message.
     decode : callable, optional
-        ``decode(data: bytes) -> array_like``; default: 16-bit RGB(A) PNGs at
-        full precision, the first page of a TIFF (tifffile), anything else
-        through imageio with the file's extension as the format hint.
+        ``decode(data: bytes) -> array_like``; default: by the format the
+        bytes start with, whatever the extension: 16-bit RGB(A) PNGs at full
+        precision, the first page of a TIFF (palette colours, MINISWHITE
+        inverted, planar RGB interleaved), PGM/PPM at 8 or 16 bits, other
+        formats through Pillow (first frame, palette colours); CMYK, CIELAB
+        and YCbCr samples are refused (:mod:`rgbz_fast.io._decode`).
     max_pixels, max_bytes : int, optional
         Size limits (see :func:`read_limits`): the file's size, the image
         size its header declares (checked before decoding) and the decoded
@@ -373,7 +426,7 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
     rgbz_fast.io.ParameterError: path: ... declares a 1x2x1 image (0.0 megapixels), more than the limit of 1 pixels; ...
     >>> d.cleanup()
     """
-    p = Path(path)
+    p = check_path(path, name)
     limits = read_limits(max_pixels, max_bytes)
     data = read_file(p, name, max_bytes=limits[1])
     declared = _declared_shape(data)
@@ -412,7 +465,8 @@ def rgb_image(img, path, name="path", *, grey=False):
     ...
     rgbz_fast.io.ParameterError: path: g.png is a grey image (2x3); a colour sensor needs colour: ...
     """
-    img = np.asarray(img)
+    grey = check_flag(grey, "grey")
+    img = as_array(img, "img")
     if img.ndim == 3 and img.shape[2] in (2, 4):
         img = img[..., :-1]                           # alpha
     if img.ndim == 3 and img.shape[2] == 1:
@@ -427,3 +481,24 @@ def rgb_image(img, path, name="path", *, grey=False):
         raise ParameterError(name, f"{path} holds an image of shape {img.shape}; expected "
                                    "RGB (rows, cols, 3), RGBA or grey")
     return np.ascontiguousarray(img)
+
+
+def sample_bits(img, path, input_bits=None, name="path", *, settable=True):
+    """The bits of the samples of an image read from ``path`` (None for floats): the library's
+    one rule for integer images (:func:`rgbz_fast._validate.integer_bits`), in the words of a
+    file. 8- and 16-bit files say their range; wider integer samples (a 32-bit TIFF) need
+    ``input_bits``, else a :class:`ParameterError` naming ``name`` and the file (which asks
+    for ``input_bits`` only when the caller can pass it: ``settable``)."""
+    try:
+        return integer_bits(img, name, input_bits)
+    except TypeError:
+        fix = ("pass ", Setting("input_bits"), " (the bits the values use, e.g. 12) or "
+               "convert the file to 8 or 16 bits") if settable else \
+            ("convert the file to 8 or 16 bits (a dataset's images say their range by their "
+             "type)",)
+        raise ParameterError(name, f"{path} holds {img.dtype} samples, a type that says nothing "
+                                   "about the range of their values; ", *fix) from None
+    except ValueError as exc:
+        if str(exc).startswith("input_bits:"):
+            raise
+        raise ParameterError(name, f"{path}: {str(exc).removeprefix(name + ': ')}") from None

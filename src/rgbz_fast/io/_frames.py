@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import io
 import json
-from pathlib import Path
 
 import numpy as np
 
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Pattern, get_pattern
 from .._sensors import ToFSensor
+from .._validate import as_list, check_bit_depth, check_path
 from ._errors import ParameterError, named
 from ._files import atomic_write, check_size, raise_it, read_file, read_image, read_limits
 from ._raw import read_raw
@@ -44,7 +44,7 @@ def save_frame(path, frame):
     """Write ``frame`` to ``path`` (.npz or .tif/.tiff), atomically; returns the path."""
     if not isinstance(frame, RawFrame):
         raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
-    path = Path(path)
+    path = check_path(path, "path")
     suffix = path.suffix.lower()
     header = {"format": _FORMAT_TAG, "pattern": frame.pattern.tile_string,
               "pattern_name": frame.pattern.name, "bayer": frame.pattern.bayer_phase,
@@ -90,7 +90,8 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
     """Read a frame written by :func:`save_frame`, or a camera raw file through :func:`rgbz_fast.io.read_raw`.
 
     ``pattern`` and ``bit_depth`` are needed for a TIFF or PNG that carries
-    no rgbz-fast header; they override nothing in files that do. For a raw
+    no rgbz-fast header; a file that has one records its own, and a different
+    ``pattern`` or ``bit_depth`` is refused (it would be ignored). For a raw
     file (read by :func:`~rgbz_fast.io.read_raw` with ``raw_kwargs``),
     ``bit_depth`` is the working bit depth it is scaled to (``"input"``: the
     file's own).
@@ -109,13 +110,13 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         describes no valid frame. The errors of :func:`rgbz_fast.io.read_raw`
         for other files.
     """
-    path = Path(path)
+    path = check_path(path, "path")
     limits = read_limits(max_pixels, max_bytes)
     if not path.exists():
         raise ValueError(f"path: {path} does not exist")
     suffix = path.suffix.lower()
     if suffix == ".npz":
-        return _load_npz(path, limits)
+        return _as_recorded(_load_npz(path, limits), path, pattern, bit_depth)
     if suffix in (".tif", ".tiff"):
         import tifffile
 
@@ -133,7 +134,8 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         except ValueError:
             header = None                                   # not ours: a plain mosaic
         if isinstance(header, dict) and header.get("format") == _FORMAT_TAG:
-            return _checked(path, lambda: _frame_from(_check_header(header), data))
+            return _as_recorded(_checked(path, lambda: _frame_from(_check_header(header), data)),
+                                path, pattern, bit_depth)
     if pattern is not None and suffix in (".tif", ".tiff", ".png"):
         if bit_depth is None:
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
@@ -142,6 +144,21 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
     if bit_depth is not None:
         raw_kwargs["bit_depth"] = bit_depth           # the working bit depth of a raw file
     return read_raw(path, max_pixels=limits[0], max_bytes=limits[1], **raw_kwargs)
+
+
+def _as_recorded(frame, path, pattern, bit_depth):
+    """``frame``, read from a file that records its pattern and bit depth, when ``pattern``
+    and ``bit_depth`` (None, or ``"input"``: the file's own) agree with what it records; a
+    ValueError naming the one that does not (it would be ignored)."""
+    if pattern is not None and get_pattern(pattern) != frame.pattern:
+        raise ValueError(f"pattern: {path} records its own pattern {frame.pattern.name!r}; "
+                         f"pattern={pattern!r:.40} applies to a plain TIFF/PNG mosaic")
+    if not (bit_depth is None or isinstance(bit_depth, str) and bit_depth == "input") \
+            and check_bit_depth(bit_depth) != frame.bit_depth:
+        raise ValueError(f"bit_depth: {path} records its own bit depth {frame.bit_depth}; "
+                         f"bit_depth={bit_depth!r:.40} applies to a plain TIFF/PNG mosaic or "
+                         "a raw file")
+    return frame
 
 
 #: the arrays of an NPZ frame (anything else in the archive is not read)
@@ -256,7 +273,12 @@ def read_npz(path, name="path", *, keys=None, required=(), max_pixels=None, max_
     ...     read_npz(p)["x"]
     array([0, 1, 2])
     """
-    path = Path(path)
+    path = check_path(path, name)
+    required = () if required is None else required
+    for label, names in (("keys", keys), ("required", required)):
+        if names is not None and not all(
+                isinstance(k, str) for k in as_list(names, label, "member names")):
+            raise TypeError(f"{label}: expected member names (strings), got {names!r:.40}")
     try:
         return _npz_members(path, name, keys, required, read_limits(max_pixels, max_bytes))
     except ValueError as exc:

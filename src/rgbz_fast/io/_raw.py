@@ -19,18 +19,15 @@ References
 
 from __future__ import annotations
 
-import io
-import os
-import warnings
-from pathlib import Path
-
 import numpy as np
 
 from .._frame import RawFrame, _Adopt
 from .._patterns import BAYER_PHASES, bayer
-from .._validate import check_bit_depth, check_dtype, parse_shape
+from .._validate import (as_list, check_bit_depth, check_dtype, check_flag, check_path,
+                         parse_shape)
 from ._errors import ParameterError, Setting
 from ._files import check_size, read_file, read_image, read_limits
+from ._libraw import read_libraw
 from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
 
 __all__ = ["read_raw", "list_raw_files"]
@@ -170,7 +167,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     (1, (1023.0, 1023.0, 1023.0, 1023.0))
     >>> tmp.cleanup()
     """
-    path = Path(os.fspath(path))
+    path = check_path(path, "path")
     kind = _reader_for(path, reader)
     own_depth = isinstance(bit_depth, str) and bit_depth == "input"
     bd = None if own_depth else check_bit_depth(bit_depth)
@@ -178,9 +175,10 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     if out_dtype == np.uint8 and bd is not None and bd > 8:
         raise ValueError(f"dtype: uint8 cannot hold {bd}-bit data")
     k = _check_downsample(downsample)
+    crop_even = check_flag(crop_even, "crop_even")
     if bit_depth_in is not None:
         bit_depth_in = check_bit_depth(bit_depth_in, "bit_depth_in")
-    if byteorder not in ("<", ">"):
+    if not isinstance(byteorder, str) or byteorder not in ("<", ">"):
         raise ValueError(f"byteorder: expected '<' (little-endian) or '>' (big-endian), "
                          f"got {byteorder!r}")
     if kind != "headerless" and shape is not None:
@@ -193,7 +191,7 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         _check_settings(path, kind, {}, given)
 
     if kind == "libraw":
-        data, info = _read_libraw(path, limits)
+        data, info = read_libraw(path, limits)
     elif kind == "image":
         data, info = _read_image(path, limits)
     else:
@@ -288,6 +286,29 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     return RawFrame(_Adopt(out), bayer(phase), bd, meta=meta)
 
 
+#: the keyword arguments of :func:`read_raw` that say how to read one file (what a dataset's
+#: or the command line's raw options may set); the others belong to the caller
+RAW_OPTIONS = ("phase", "black_level", "white_level", "clip_level", "shape", "bit_depth_in",
+               "byteorder", "downsample", "crop_even", "reader")
+
+
+def check_raw_options(options, name="raw_options"):
+    """``options``, a mapping of file names (or ``"*"``) to mappings of :data:`RAW_OPTIONS`,
+    as a dict of dicts; a TypeError or ValueError naming ``name`` otherwise (an unknown
+    option was a TypeError of read_raw when the file was read)."""
+    if options is None:
+        return {}
+    if not isinstance(options, dict) or not all(isinstance(v, dict) for v in options.values()):
+        raise TypeError(f"{name}: expected a mapping of file names (or \"*\") to mappings "
+                        f"of options, got {type(options).__name__}")
+    for file, opts in options.items():
+        unknown = [k for k in opts if k not in RAW_OPTIONS]
+        if unknown:
+            raise ValueError(f"{name}: {unknown[0]!r} (for {file!r}) is not a raw option; "
+                             f"expected some of {', '.join(RAW_OPTIONS)}")
+    return {k: dict(v) for k, v in options.items()}
+
+
 def list_raw_files(folder, *, recursive=False, extensions=None):
     """The raw files of a folder that :func:`read_raw` can read, sorted by path.
 
@@ -306,9 +327,14 @@ def list_raw_files(folder, *, recursive=False, extensions=None):
     list of pathlib.Path
         Hidden files (name starting with ".") are skipped.
     """
-    folder = Path(os.fspath(folder))
+    recursive = check_flag(recursive, "recursive")
+    folder = check_path(folder, "folder")
     if not folder.is_dir():
         raise NotADirectoryError(f"folder: not a directory: {folder}")
+    if extensions is not None and not all(
+            isinstance(e, str) for e in as_list(extensions, "extensions")):
+        raise TypeError(f"extensions: expected a sequence of extensions ('.png', ...), got "
+                        f"{extensions!r:.40}")
     exts = RAW_EXTENSIONS if extensions is None else extensions
     exts = {str(e).lower() if str(e).startswith(".") else "." + str(e).lower() for e in exts}
     files = folder.rglob("*") if recursive else folder.iterdir()
@@ -336,78 +362,6 @@ def _reader_for(path, reader):
                                  f"...), {'/'.join(IMAGE_EXTENSIONS)} or headerless "
                                  f"{'/'.join(HEADERLESS_EXTENSIONS)}, or ",
                          Setting("reader", "pass reader="))
-
-
-def _read_libraw(path, limits):
-    try:
-        import rawpy
-    except ImportError:
-        raise ImportError(f"reading camera raw files such as {path.name} needs rawpy (LibRaw): "
-                          "pip install rawpy  (or pip install rgbz-fast[raw])") from None
-    blob = read_file(path, "path", max_bytes=limits[1])
-    try:
-        raw_ctx = rawpy.imread(io.BytesIO(blob))
-    except rawpy.LibRawError as exc:
-        raise ValueError(f"path: LibRaw cannot read {path.name}: "
-                         f"{type(exc).__name__}: {exc}") from None
-    with raw_ctx as raw:
-        if raw.raw_type != rawpy.RawType.Flat:
-            raise ValueError(f"{path.name}: not a CFA mosaic (LibRaw raw_type "
-                             f"{raw.raw_type.name}, e.g. a linear DNG)")
-        pattern = raw.raw_pattern
-        desc = raw.color_desc.decode("ascii", "replace")
-        if pattern is None or pattern.shape != (2, 2):
-            shp = None if pattern is None else pattern.shape
-            raise ValueError(f"{path.name}: not a 2x2 Bayer sensor (CFA pattern {shp}, "
-                             f"colours {desc!r}; X-Trans and Foveon are not supported)")
-        letters = "".join(desc[int(i)] for i in pattern.ravel())
-        if letters not in BAYER_PHASES:
-            raise ValueError(f"{path.name}: CFA {letters!r} (colours {desc!r}) is not an RGB "
-                             "Bayer phase")
-        bl = raw.black_level_per_channel      # indexed by colour index
-        black = [float(bl[int(i)]) for i in pattern.ravel()]
-        wl = raw.white_level
-        check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
-        data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
-        colour = _camera_colour(raw, desc)
-    make, model = _tiff_make_model(blob)
-    info = {"phase": letters, "black_level": black, "white_level": float(wl),
-            "make": make, "model": model, **colour}
-    return data, info
-
-
-def _camera_colour(raw, desc):
-    """The as-shot white balance (R, G, B gains, G = 1) and the matrix from white-balanced
-    camera RGB to linear sRGB that LibRaw gives for the file; each left out when LibRaw has
-    none (zeros) for it."""
-    out = {}
-    idx = [desc.index(c) for c in "RGB"]
-    try:
-        wb = np.asarray(raw.camera_whitebalance, np.float64)[idx]
-        if np.all(np.isfinite(wb)) and np.all(wb > 0):
-            out["white_gains"] = tuple(float(v) for v in wb / wb[1])
-        m = np.asarray(raw.color_matrix, np.float64)[:, idx]
-        if m.shape == (3, 3) and np.all(np.isfinite(m)) and np.any(m != 0):
-            out["colour_matrix"] = tuple(float(v) for v in m.ravel())
-    except (AttributeError, IndexError, ValueError):     # an older rawpy, a partial file
-        pass
-    return out
-
-
-def _tiff_make_model(blob):
-    """Make and Model from the TIFF IFD0 most raw formats are built on, or (None, None)."""
-    try:
-        import tifffile
-
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            with tifffile.TiffFile(io.BytesIO(blob)) as tif:
-                tags = tif.pages[0].tags
-                make, model = tags.get("Make"), tags.get("Model")
-                return (str(make.value).strip() if make is not None else None,
-                        str(model.value).strip() if model is not None else None)
-    except Exception:  # noqa: BLE001 - metadata only: a non-TIFF raw has none to give
-        return None, None
 
 
 def _read_image(path, limits):

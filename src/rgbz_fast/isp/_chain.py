@@ -35,7 +35,7 @@ import numpy as np
 
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
-from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_image,
+from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
                          check_number, merge_params)
 from ._defects import DefectCorrection, correct_defects
 from ._demosaic import demosaic
@@ -147,7 +147,8 @@ class ColourISP:
             object.__setattr__(self, name, stage_params(cls, getattr(self, name),
                                                         name=f"ColourISP.{name}",
                                                         allow_none=False))
-        if isinstance(self.output_bits, bool) or self.output_bits not in (8, 16):
+        if isinstance(self.output_bits, bool) or not isinstance(
+                self.output_bits, (int, np.integer)) or self.output_bits not in (8, 16):
             raise ValueError(f"ColourISP.output_bits: expected 8 or 16, got "
                              f"{self.output_bits!r}")
         if self.black_level is not None:
@@ -260,8 +261,10 @@ class ColourISP:
             ``"output"`` (the returned image), ``"seconds"`` (time per
             stage), ``"pattern"``, ``"black_level"``, ``"white_level"``.
         """
+        return_stages = check_flag(return_stages, "return_stages")
         data, pat, bd, black, white, recorded = self._inputs(frame, pattern, bit_depth,
-                                                             black_level, reference)
+                                                             black_level,
+                                                             check_flag(reference, "reference"))
         gains, matrix = self._recorded(recorded, gains, None)
         seconds = {}
         t0 = time.perf_counter()
@@ -326,6 +329,7 @@ class ColourISP:
         ((8, 8, 3), dtype('uint8'), 187, [1.0, 1.0, 1.0])
         """
         data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        return_stages = check_flag(return_stages, "return_stages")
         pattern = get_pattern(phase)
         if pattern.has_z or pattern.bayer_phase is None:
             raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
@@ -397,6 +401,7 @@ class ColourISP:
         if not isinstance(frame, RawFrame):
             raise TypeError(f"frame: expected a RawFrame with a reference CFA, got "
                             f"{type(frame).__name__}")
+        return_stages = check_flag(return_stages, "return_stages")
         ref, ref_st = self.run(frame, reference=True, workers=workers, return_stages=True)
         test, test_st = self.run(frame, gains=ref_st["gains"], workers=workers,
                                  return_stages=True)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._patterns import Z
-from .._validate import check_flag, check_number
+from .._validate import as_array, check_flag, check_number
 from ._stages import _prepare_cfa, stage_params
 
 __all__ = ["DefectCorrection", "detect_defects", "correct_defects"]
@@ -313,9 +313,10 @@ def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
     """
     data, pattern = _prepare_cfa(cfa, pattern)
     params = stage_params(DefectCorrection, params, overrides, caller="correct_defects()")
+    return_mask = check_flag(return_mask, "return_mask")
     white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
     if known is not None:
-        kn = np.asarray(known)
+        kn = as_array(known, "known")
         if kn.shape != data.shape or kn.dtype != np.bool_:
             raise ValueError(f"known: expected a bool map of shape {data.shape}, got "
                              f"{kn.dtype} {kn.shape}")

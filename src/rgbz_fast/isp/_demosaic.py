@@ -143,6 +143,17 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     else:
         out_dtype = check_dtype(dtype, (np.float32, np.float64))
     nthreads = check_workers(workers)
+    if a.dtype.kind == "f":
+        # finite input, finite output: the filters add up to 16 weighted taps and overshoot
+        # the input range 4.5-fold, so beyond 1/32 of the largest float of the output (and
+        # of the float64 arithmetic) a value would overflow to inf, or NaN (inf - inf)
+        limit = float(np.finfo(out_dtype).max) / 32
+        top = float(max(-a.min(), a.max()))
+        if top > limit:
+            raise ValueError(f"cfa: values up to {top:g} in magnitude; the demosaic's filters "
+                             f"overflow {out_dtype} beyond {limit:g}"
+                             + (", pass dtype=float64 or rescale the CFA"
+                                if out_dtype == np.float32 else ", rescale the CFA"))
 
     if method == "malvar2004":
         src = a if a.dtype in FRAME_DTYPES else a.astype(np.float64)

@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -15,8 +16,8 @@ import numpy as np
 
 from .. import _kernels
 from .._patterns import get_pattern
-from .._validate import (check_choice, check_dtype, check_flag, check_image, check_number,
-                         merge_params)
+from .._validate import (FLOAT_DTYPES, check_choice, check_dtype, check_flag, check_image,
+                         check_number, merge_params)
 from ..reconstruction import ReconstructParams, reconstruct
 from ..reconstruction import METHODS
 from ._demosaic import DEMOSAIC_METHODS, DEMOSAIC_MODES
@@ -160,7 +161,16 @@ def _check_matrix(matrix, name):
         raise TypeError(f"{name}: expected a 3x3 matrix of numbers, got {matrix!r}") from None
     if m.shape != (3, 3) or not np.all(np.isfinite(m)):
         raise ValueError(f"{name}: expected a finite 3x3 matrix, got shape {m.shape}")
+    if np.max(np.abs(m)) > MATRIX_MAX:
+        raise ValueError(f"{name}: entries up to {np.max(np.abs(m)):g} in magnitude, beyond "
+                         f"{MATRIX_MAX:g} (a camera's lie within about 10); float32 images "
+                         "would overflow to inf and NaN")
     return m
+
+
+#: the largest colour-matrix entry: three products with values in [0, 1] stay far inside
+#: float32 (3.4e38), whose cast of a larger entry is inf (and inf * 0 NaN)
+MATRIX_MAX = 1e30
 
 
 def _prepare_cfa(cfa, pattern, name="cfa"):
@@ -232,18 +242,39 @@ def grey_world_gains(cfa, phase="GRBG", *, black_level=0.0, white_level=2047):
     black, white = _black_white(black_level, white_level)
     tile = pattern.bayer_tile()                      # 2x2
     sums, counts = np.zeros(3), np.zeros(3)
-    for py in range(2):
-        for px in range(2):
-            sub = data[py::2, px::2]
-            ok = sub < white                             # clipped pixels carry no colour
-            sums[tile[py, px]] += np.sum(sub[ok], dtype=np.float64) - black * ok.sum()
-            counts[tile[py, px]] += ok.sum()
+    with np.errstate(over="ignore", invalid="ignore"):
+        for py in range(2):
+            for px in range(2):
+                sub = data[py::2, px::2]
+                ok = sub < white                             # clipped pixels carry no colour
+                sums[tile[py, px]] += np.sum(sub[ok], dtype=np.float64) - black * ok.sum()
+                counts[tile[py, px]] += ok.sum()
     means = np.divide(sums, counts, out=np.zeros(3), where=counts > 0)
+    if not np.all(np.isfinite(sums)):
+        means = _scaled_means(data, tile, white, black)
     gains = np.ones(3)
     if means[1] > 0:
         good = means > 0
-        gains[good] = means[1] / means[good]
+        with np.errstate(over="ignore"):
+            ratio = means[1] / means[good]
+        # a colour so far below green that the ratio overflows has no signal: gain 1
+        gains[good] = np.where(np.isfinite(ratio), ratio, 1.0)
     return gains
+
+
+def _scaled_means(data, tile, white, black):
+    """The black-subtracted mean of each colour below ``white``, for values whose sums
+    overflow (near the largest float): summed after a scaling by a power of two (exact)."""
+    means = np.zeros(3)
+    for c in range(3):
+        vals = [data[py::2, px::2] for py in range(2) for px in range(2) if tile[py, px] == c]
+        vals = np.concatenate([v[v < white].astype(np.float64).ravel() for v in vals])
+        if vals.size:
+            exp = math.frexp(max(float(np.max(np.abs(vals))), black))[1]
+            with np.errstate(over="ignore"):
+                means[c] = np.ldexp(float(np.mean(np.ldexp(vals, -exp)))
+                                    - math.ldexp(black, -exp), exp)
+    return means
 
 
 def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_level=2047,
@@ -291,16 +322,46 @@ def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_leve
         g = grey_world_gains(data, pattern, black_level=black, white_level=white)
     else:
         g = np.ones(3)
-    scale = (g / (white - black)).astype(dt)
-    out = data.astype(dt)
-    out -= dt.type(black)
     tile = pattern.bayer_tile()                      # 2x2
-    for py in range(2):
-        for px in range(2):
-            out[py::2, px::2] *= scale[tile[py, px]]
+    with np.errstate(over="ignore", under="ignore"):
+        scale = (g / (white - black)).astype(dt)
+    if _fits(data, dt, black, white, scale):
+        out = data.astype(dt)
+        out -= dt.type(black)
+        for py in range(2):
+            for px in range(2):
+                out[py::2, px::2] *= scale[tile[py, px]]
+    else:
+        # levels or values beyond the output type (near its largest float): in float64, in an
+        # order that never makes NaN -- (v - black) / (white - black) is finite or +-inf
+        out = data.astype(np.float64) - black
+        with np.errstate(over="ignore"):
+            out /= white - black
+            for py in range(2):
+                for px in range(2):
+                    out[py::2, px::2] *= g[tile[py, px]]
     if params.clip:
         np.clip(out, 0, 1, out=out)
-    return out, g
+    elif out.dtype != dt or out.dtype.kind == "f" and not np.all(np.isfinite(out)):
+        with np.errstate(over="ignore"):
+            out = out.astype(dt)
+        if not np.all(np.isfinite(out)):
+            raise ValueError(f"cfa: the balanced values (v - black_level) / (white_level - "
+                             f"black_level) * gains overflow {dt} (levels {black:g}, {white:g}, "
+                             f"gains {tuple(float(v) for v in g)}); clip them (clip=True) or "
+                             "pass the levels of the data")
+    return out.astype(dt, copy=False), g
+
+
+def _fits(data, dt, black, white, scale):
+    """Whether :func:`white_balance` may compute in ``dt`` without an inf or a NaN: the
+    levels and the three scales are normal numbers of ``dt``, and the data fits it."""
+    info = np.finfo(dt)
+    if not (white <= info.max and np.all(scale >= info.tiny) and np.all(scale <= info.max)):
+        return False
+    if data.dtype.kind == "f" and data.dtype.itemsize > dt.itemsize:
+        return bool(max(-data.min(), data.max()) <= info.max / 2)
+    return True
 
 
 def correct_colour(rgb, params=None, **overrides):
@@ -318,7 +379,7 @@ def correct_colour(rgb, params=None, **overrides):
     -------
     ndarray, same shape and float dtype (a new array)
     """
-    a = check_image(rgb, "rgb", ndim=3)
+    a = check_image(rgb, "rgb", ndim=3, dtypes=FLOAT_DTYPES)
     if a.shape[2] != 3:
         raise ValueError(f"rgb: expected 3 channels in the last axis, got shape {a.shape}")
     params = stage_params(ColourCorrection, params, overrides, caller="correct_colour()")
@@ -336,7 +397,7 @@ def srgb_oetf(linear):
 
     ``12.92 v`` for ``v <= 0.0031308``, else ``1.055 v^(1/2.4) - 0.055``.
     """
-    a = check_image(linear, "linear")
+    a = check_image(linear, "linear", dtypes=FLOAT_DTYPES)
     dt = a.dtype if a.dtype in (np.float32, np.float64) else np.dtype(np.float64)
     out = np.empty(a.shape, dt)
     flat_in, flat_out = a.reshape(-1), out.reshape(-1)
@@ -371,9 +432,9 @@ def srgb_encode(linear, bits=8):
     ``_quantise(srgb_oetf(linear), bits)`` bit for bit, without their
     frame-size temporaries (:func:`_encode`).
     """
-    if bits not in (8, 16) or isinstance(bits, bool):
+    if isinstance(bits, bool) or not isinstance(bits, (int, np.integer)) or bits not in (8, 16):
         raise ValueError(f"bits: expected 8 or 16, got {bits!r}")
-    a = check_image(linear, "linear")
+    a = check_image(linear, "linear", dtypes=FLOAT_DTYPES)
     return _encode(a.astype(a.dtype if a.dtype in (np.float32, np.float64) else np.float64,
                             copy=False), bits)
 

@@ -5,11 +5,12 @@ from __future__ import annotations
 import numpy as np
 
 from .._validate import check_number, check_workers
-from ._common import (_check_crop, _check_integer_range, _check_rgb_pair,
+from ._common import (COLOUR_MAX_VALUE, SSIM_MAX_VALUE, _check_crop, _check_integer_range,
+                      _check_magnitude, _check_rgb_pair,
                       _check_ssim_data_range, _crop_hw, _kernel_pair, _psnr_from_mse)
 from ._psnr import _rgb_mse
-from ._ssim import MS_SSIM_WEIGHTS, _check_ms_ssim_size, _ssim_and_ms_ssim
-from ._zipper import _zipper_percent
+from ._ssim import _SSIM_WHY, MS_SSIM_WEIGHTS, _check_ms_ssim_size, _ssim_and_ms_ssim
+from ._zipper import _COLOUR_WHY, _zipper_percent
 
 __all__ = ["all_metrics"]
 
@@ -74,6 +75,10 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
     else:
         peak = check_number(data_range, "data_range", lo=0, lo_open=True)
     _check_integer_range((ref, tst), names, peak)
+    if want_ssim:
+        _check_magnitude((ref, tst), names, SSIM_MAX_VALUE, _SSIM_WHY)
+    if "zipper" in metrics:
+        _check_magnitude((ref, tst), names, COLOUR_MAX_VALUE * peak, _COLOUR_WHY)
     threads = check_workers(workers)
     crop = _check_crop(crop, ref.shape[:2], minimum=11 if want_ssim else 3,
                        what="a centre pixel with all eight neighbours" if not want_ssim
@@ -83,7 +88,7 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
         _check_ms_ssim_size(ref.shape[:2], len(MS_SSIM_WEIGHTS), crop)
     out = {}
     if "cpsnr" in metrics:
-        out["cpsnr"] = _psnr_from_mse(_rgb_mse(ref, tst, 0, threads), peak)
+        out["cpsnr"] = _psnr_from_mse(*_rgb_mse(ref, tst, 0, threads), peak)
     if want_ssim:
         x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
         ssim_value, ms_value = _ssim_and_ms_ssim(

@@ -61,6 +61,25 @@ def _check_integer_range(arrays, names, data_range, param="data_range"):
                                  f"data (2**bit_depth - 1)")
 
 
+#: the largest magnitude of the data SSIM takes: its local moments are squares of the data,
+#: which stay below 1e300 (the largest double is 1.8e308)
+SSIM_MAX_VALUE = 1e150
+#: the largest magnitude of the colour metrics' data, in units of the encoding's white: the
+#: sRGB decoding raises it to the power 2.4 and the colour differences square it
+COLOUR_MAX_VALUE = 1e100
+
+
+def _check_magnitude(arrays, names, limit, why, param=None):
+    """Float data within [-limit, limit]: beyond, the metric's arithmetic overflows to inf or
+    NaN (integer data is checked against its range by :func:`_check_integer_range`)."""
+    for a, name in zip(arrays, names):
+        if a.dtype.kind == "f":
+            top = float(max(-a.min(), a.max()))
+            if top > limit:
+                raise ValueError(f"{param or name}: {name} holds values up to {top:g} in "
+                                 f"magnitude, beyond {limit:g}: {why}")
+
+
 def _crop_hw(a, crop, axes=(0, 1)):
     """Remove `crop` pixels from both ends of `axes`."""
     if crop == 0:
@@ -108,7 +127,18 @@ def _kernel_pair(a, b):
     return np.ascontiguousarray(a, dtype=dt), np.ascontiguousarray(b, dtype=dt)
 
 
-def _psnr_from_mse(mse, peak):
+def _psnr_from_mse(mse, e, peak):
+    """PSNR in dB of the MSE ``mse * 4**e`` (see ``_psnr._mse``) and the peak ``peak``.
+
+    ``10 log10(peak**2 / mse)`` when that ratio is a finite, non-zero double; else the same
+    in logarithms, so that a ``data_range`` whose square overflows (or underflows) still gives
+    the PSNR of the data, not inf (or -inf). inf when the images are equal (``mse`` 0).
+    """
     if mse == 0:
         return math.inf
-    return float(10.0 * np.log10(peak * peak / mse))
+    if e == 0:
+        ratio = peak * peak / mse
+        if 0 < ratio < math.inf:
+            return float(10.0 * np.log10(ratio))
+    return float(20.0 * math.log10(peak) - 10.0 * math.log10(mse)
+                 - 20.0 * e * math.log10(2.0))

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_int, check_number, check_workers
+from .._validate import as_array, check_int, check_number, check_workers
 from ._common import (_check_crop, _check_integer_range, _check_pair, _check_rgb_pair, _crop_hw,
                       _kernel_pair, _psnr_from_mse)
 
@@ -90,9 +92,8 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, wor
         _check_integer_range((ref, tst), ("reference", "test"), peak)
     threads = check_workers(workers)
     if mask is None:
-        total, count = _sq_diff_sum(ref, tst, None, threads)
-        return _psnr_from_mse(total / count, peak)
-    m = np.asarray(mask)
+        return _psnr_from_mse(*_mse(ref, tst, None, threads), peak)
+    m = as_array(mask, "mask")
     if m.dtype != np.bool_:
         raise TypeError(f"mask: expected a boolean array, got dtype {m.dtype}")
     if m.shape != ref.shape and not (m.shape == ref.shape[:2] and ref.ndim == 3):
@@ -103,8 +104,42 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, wor
     if m.ndim == 3:                    # one flag per element: each element is a 'pixel'
         ref, tst = ref.reshape(ref.shape[0], -1), tst.reshape(tst.shape[0], -1)
         m = m.reshape(m.shape[0], -1)
-    total, count = _sq_diff_sum(ref, tst, m, threads)
-    return _psnr_from_mse(total / count, peak)
+    return _psnr_from_mse(*_mse(ref, tst, m, threads), peak)
+
+
+def _mse(ref, tst, mask, threads):
+    """The mean squared difference over ``mask`` (None: every element) as ``(m, e)``, the MSE
+    being ``m * 4**e``.
+
+    ``e`` is 0 and ``m`` the C kernel's sum over the count, unless the squares of float
+    differences leave the normal doubles: differences beyond ~1e154 overflow the sum (inf, or
+    NaN from inf - inf), differences below ~1e-154 underflow it (0 for two different images,
+    or a subnormal sum that has lost its digits). Those are summed again on differences
+    scaled by a power of two (exact), so the PSNR of any two finite images is a finite number
+    (or inf when they are equal).
+    """
+    total, count = _sq_diff_sum(ref, tst, mask, threads)
+    if total >= _NORMAL or (total == 0 and ref.dtype.kind in "biu" and tst.dtype.kind in "biu"):
+        if total < math.inf:
+            return total / count, 0
+    a, b = ref.astype(np.float64), tst.astype(np.float64)
+    if mask is not None:
+        a, b = a[mask], b[mask]
+    with np.errstate(over="ignore"):
+        diff = a - b                            # exact for subnormals (no halving rounds them)
+    extra = 0
+    if not np.all(np.isfinite(diff)):           # beyond the largest double: halves, exact there
+        diff, extra = a * 0.5 - b * 0.5, 1
+    top = float(np.max(np.abs(diff)))
+    if top == 0:
+        return 0.0, 0
+    exp = math.frexp(top)[1]
+    r = np.ldexp(diff, -exp)                    # |r| < 1
+    return float(np.mean(r * r)), exp + extra   # (2**extra diff)**2 = r**2 * 4**(exp + extra)
+
+
+#: the smallest normal double: a sum of squares below it has lost digits (or underflowed)
+_NORMAL = float(np.finfo(np.float64).tiny)
 
 
 def _sq_diff_sum(ref, tst, mask, threads):
@@ -120,9 +155,9 @@ def _sq_diff_sum(ref, tst, mask, threads):
 
 
 def _rgb_mse(ref, tst, crop, threads):
+    """The colour MSE after the crop, as ``(m, e)`` (see :func:`_mse`)."""
     crop = _check_crop(crop, ref.shape[:2])
-    total, count = _sq_diff_sum(_crop_hw(ref, crop), _crop_hw(tst, crop), None, threads)
-    return total / count
+    return _mse(_crop_hw(ref, crop), _crop_hw(tst, crop), None, threads)
 
 
 def cpsnr(reference, test, *, data_range=255, crop=0, workers=None):
@@ -175,7 +210,7 @@ def cpsnr(reference, test, *, data_range=255, crop=0, workers=None):
     ref, tst = _check_rgb_pair(reference, test)
     peak = check_number(data_range, "data_range", lo=0, lo_open=True)
     _check_integer_range((ref, tst), ("reference", "test"), peak)
-    return _psnr_from_mse(_rgb_mse(ref, tst, crop, check_workers(workers)), peak)
+    return _psnr_from_mse(*_rgb_mse(ref, tst, crop, check_workers(workers)), peak)
 
 
 def cpsnr_pooled(references, tests, *, data_range=255, crop=0, workers=None):
@@ -236,4 +271,9 @@ def cpsnr_pooled(references, tests, *, data_range=255, crop=0, workers=None):
         ref, tst = _check_rgb_pair(r, t, f"references[{i}]", f"tests[{i}]")
         _check_integer_range((ref, tst), (f"references[{i}]", f"tests[{i}]"), peak)
         mses.append(_rgb_mse(ref, tst, crop, threads))
-    return _psnr_from_mse(float(np.mean(mses)), peak)
+    top = max(e for _, e in mses)
+    if top == 0:
+        return _psnr_from_mse(float(np.mean([m for m, _ in mses])), 0, peak)
+    # a common scale: the mean of m_i * 4**e_i is 4**top times the mean of the scaled terms
+    return _psnr_from_mse(float(np.mean([math.ldexp(m, 2 * (e - top)) for m, e in mses])),
+                          top, peak)

@@ -7,11 +7,15 @@ import numbers
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_int, check_number, check_workers
-from ._common import (_check_crop, _check_integer_range, _check_pair, _check_ssim_data_range,
+from .._validate import check_flag, check_int, check_number, check_workers
+from ._common import (SSIM_MAX_VALUE, _check_crop, _check_integer_range, _check_magnitude,
+                      _check_pair, _check_ssim_data_range,
                       _crop_hw, _kernel_pair)
 
 __all__ = ["ssim", "ms_ssim", "MS_SSIM_WEIGHTS"]
+
+_SSIM_WHY = ("SSIM multiplies squares of the data, which overflow; rescale both images and "
+             "data_range")
 
 #: Exponents beta_j = gamma_j (and alpha_M) of eq. 28, from Wang et al. 2003.
 MS_SSIM_WEIGHTS = (0.0448, 0.2856, 0.3001, 0.2363, 0.1333)
@@ -39,6 +43,8 @@ def _window(win_size, sigma, gaussian_weights):
         return np.full(win_size, 1.0 / win_size)
     radius = (win_size - 1) // 2
     x = np.arange(-radius, radius + 1)
+    if sigma < 1e-150:                    # sigma**2 underflows: the limit, all on the centre
+        return (x == 0).astype(np.float64)
     phi = np.exp(-0.5 / (sigma * sigma) * x ** 2)
     return phi / phi.sum()
 
@@ -194,8 +200,9 @@ def ssim(reference, test, *, data_range=255, crop=0, channel_axis=-1, gaussian_w
     ref, tst = _check_pair(reference, test, (2, 3))
     peak = _check_ssim_data_range(data_range)
     win_size, sigma = _check_ssim_window(win_size, sigma)
-    gaussian_weights = bool(gaussian_weights)
+    gaussian_weights = check_flag(gaussian_weights, "gaussian_weights")
     _check_integer_range((ref, tst), ("reference", "test"), peak)
+    _check_magnitude((ref, tst), ("reference", "test"), SSIM_MAX_VALUE, _SSIM_WHY)
     threads = check_workers(workers)
     x, y = _channels_first(ref, tst, channel_axis)
     crop = _check_crop(crop, x.shape[1:], minimum=win_size,
@@ -292,6 +299,7 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     if not np.all(np.isfinite(w)) or np.any(w < 0):
         raise ValueError(f"weights: expected finite exponents >= 0, got {weights!r}")
     _check_integer_range((ref, tst), ("reference", "test"), peak)
+    _check_magnitude((ref, tst), ("reference", "test"), SSIM_MAX_VALUE, _SSIM_WHY)
     threads = check_workers(workers)
     x, y = _channels_first(ref, tst, channel_axis)
     crop = _check_crop(crop, x.shape[1:])

@@ -6,7 +6,8 @@ import numpy as np
 
 from .. import _kernels
 from .._validate import check_choice, check_number, check_workers
-from ._common import (_check_crop, _check_integer_range, _check_rgb_pair, _crop_hw,
+from ._common import (COLOUR_MAX_VALUE, _check_crop, _check_integer_range, _check_magnitude,
+                      _check_rgb_pair, _crop_hw,
                       _kernel_dtype, _kernel_pair)
 
 __all__ = ["zipper", "delta_e_map", "ZIPPER_INPUTS"]
@@ -28,11 +29,17 @@ def _to_lab(rgb, input, threads):
     return lab
 
 
+_COLOUR_WHY = ("the sRGB decoding and the colour differences of such values overflow; "
+               "expected colour images in the range of their encoding")
+
+
 def _check_colour_input(ref, tst, input):
     input = check_choice(input, tuple(ZIPPER_INPUTS), "input")
-    if ZIPPER_INPUTS[input] is not None:
-        _check_integer_range((ref, tst), ("reference", "test"), ZIPPER_INPUTS[input],
-                             param="input")
+    white = ZIPPER_INPUTS[input]
+    if white is not None:
+        _check_integer_range((ref, tst), ("reference", "test"), white, param="input")
+    _check_magnitude((ref, tst), ("reference", "test"), COLOUR_MAX_VALUE * (white or 1.0),
+                     _COLOUR_WHY, param="input")
     return input
 
 

@@ -16,7 +16,9 @@ import math
 import numpy as np
 
 from .. import _kernels
-from .._patterns import Pattern, Z
+from .._patterns import Pattern, Z, get_pattern
+from .._validate import check_choice
+from ._params import DOMAINS, SG_MODES
 
 __all__ = ["METHODS", "build_plans", "PLAN_DTYPE", "ORIENTATIONS", "SEMI_GRADIENTS"]
 
@@ -195,8 +197,10 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
 
     Raises ValueError when the method does not apply to the pattern.
     """
-    if method not in METHODS:
-        raise ValueError(f"method: expected one of {', '.join(map(repr, METHODS))}, got {method!r}")
+    pattern = get_pattern(pattern)
+    method = check_choice(method, tuple(METHODS), "method")
+    sg_mode = check_choice(sg_mode, SG_MODES, "sg_mode")
+    domain = check_choice(domain, DOMAINS, "domain")
     P, Q = pattern.period
     tile = pattern.tile
     btile = pattern.bayer_tile()           # raises for patterns with no underlying Bayer

@@ -230,7 +230,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
                          "sites stand in for no defined colour")
     src = np.ascontiguousarray(data)
     if method == "learned":
-        filters = resolve_filters(learned_only(params.filters), pattern, bd)
+        filters = resolve_filters(learned_only(params.filters), pattern)
         if clip is not None and _reaches(src, pattern, clip):
             raise ValueError("clip_level: method 'learned' has no clipped-pixel rule; the frame "
                              f"reaches the clip level {clip:g}, use another method or "
@@ -280,7 +280,8 @@ def run_learned(src, out, pattern, filters, precision, bit_depth, nthreads, opco
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
     k.learned(src, out, _PRECISION_CODES[precision], P, Q, plan_map,
-              maxval=float((1 << bit_depth) - 1), workers=nthreads, **filters.kernel_arrays(),
+              maxval=float((1 << bit_depth) - 1), workers=nthreads,
+              **filters.kernel_arrays(bit_depth),
               **extra)
 
 

@@ -48,8 +48,8 @@ from .._frame import ToFTaps
 from .._patterns import Z, get_pattern
 from .._validate import check_number
 from ..io import atomic_write, read_npz
-from ._learned import (LearnedFilters, _extend_index, check_filters, gather_windows, hash_buckets,
-                       hash_features)
+from ._learned import LearnedFilters, check_filters
+from ._learned_hash import extend_index, gather_windows, hash_buckets, hash_features
 
 __all__ = ["ZGuidedFilters", "z_layout", "guide_grid", "guide_features", "N_GUIDE",
            "NEEDS_TOF", "default_z_filters"]
@@ -202,7 +202,7 @@ def colour_grids(data, pattern, channels):
     H, W = data.shape
     gy, gx = _grid_shape(data.shape, pattern)
     ext = 2
-    yi, xi = _extend_index(H, ext + P, P), _extend_index(W, ext + Q, Q)
+    yi, xi = extend_index(H, ext + P, P), extend_index(W, ext + Q, Q)
     pad = np.asarray(data, np.float64)[yi][:, xi]
     chan = pattern.channel_map((P, Q))[(yi % P)[:, None], (xi % Q)[None, :]]
     out = {}
@@ -262,16 +262,18 @@ def cell_terms(N, V, C, lam):
 
 
 def _site_features(data, pattern, grids, colour, lam, noise_thresholds):
-    """Per phase of ``colour`` (LearnedFilters): windows X, buckets (noise level * the hash's
-    buckets + the hash's bucket), guide features G, and where the sites are."""
+    """Per phase of ``colour`` (LearnedFilters): windows X (sites, taps), buckets (noise
+    level * the hash's buckets + the hash's bucket), guide features G, and where the sites
+    are."""
     grid, var = grids
     cg = colour_grids(data, pattern, sorted({ph["target"] for ph in colour.geometry}))
+    thr = colour.thresholds()
     out = []
     for k, (X, (r, c, ny, nx)) in enumerate(
             gather_windows(data, pattern, colour.radius, colour.geometry)):
         ph = colour.geometry[k]
-        bk = hash_buckets(*hash_features(X, ph["pairs"]), colour.strength_thresholds[k],
-                          colour.coherence_thresholds[k])
+        bk = hash_buckets(hash_features(X, ph), *(t[k] for t in thr))
+        X = np.ascontiguousarray(X.T)
         # the site's tile index is its Z pixel's index on the grid
         iy, ix = np.divmod(np.arange(ny * nx), nx)
         G, nu = guide_features(_neighbours(grid, iy, ix), _neighbours(var, iy, ix),
@@ -363,7 +365,7 @@ class ZGuidedFilters:
 
     def check_frame(self, pattern, bit_depth, name="filters"):
         """ValueError naming ``name`` unless the filters fit a frame of ``pattern`` and bits."""
-        self.base.check_frame(pattern, bit_depth, name)
+        check_base(self.base, pattern, bit_depth, name)
 
     def sites(self, data, grids):
         """Per phase: the windows, buckets and guide features of every Z site of ``data`` and
@@ -432,6 +434,18 @@ class ZGuidedFilters:
                 raise ValueError(msg) from None
             raise ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
                              f"{msg[:200]})") from None
+
+
+def check_base(base, pattern, bit_depth, name):
+    """ValueError naming ``name`` unless learned filters ``base`` are for ``pattern`` and
+    ``bit_depth`` exactly (z_guided filters are fitted on one pattern and bit depth)."""
+    if get_pattern(pattern) != base.pattern:
+        raise ValueError(f"{name}: fitted for pattern {base.pattern.name!r} "
+                         f"({base.pattern.tile_string}), the frame's is "
+                         f"{get_pattern(pattern).name!r}")
+    if bit_depth != base.bit_depth:
+        raise ValueError(f"{name}: fitted for {base.bit_depth}-bit frames, the frame has "
+                         f"{bit_depth} bits")
 
 
 def is_z_guided_file(arrays):

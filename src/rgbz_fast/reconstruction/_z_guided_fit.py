@@ -11,8 +11,8 @@ import numpy as np
 
 from .._frame import RawFrame
 from .._validate import check_number
-from ._learned import LearnedFilters, _features, default_filters
-from ._z_guided import N_GUIDE, ZGuidedFilters, _site_features, guide_grid, z_layout
+from ._learned import LearnedFilters, default_filters
+from ._z_guided import N_GUIDE, ZGuidedFilters, _site_features, check_base, guide_grid, z_layout
 
 __all__ = ["train_z_guided", "frame_stats", "fit_stats"]
 
@@ -103,13 +103,15 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=1e-3, prior=50.0, colou
                              f"frame 0 {pattern.name!r} at {bit_depth} bits")
     z_layout(pattern, "frames")
     if base is None:
-        base = default_filters(pattern, bit_depth)
+        base = default_filters(pattern)
+        if base is not None and base.bit_depth != bit_depth:
+            base = None
         if base is None:
             raise ValueError(f"base: no learned filters ship for pattern {pattern.name!r} at "
                              f"{bit_depth} bits; pass base=")
     elif not isinstance(base, LearnedFilters):
         raise TypeError(f"base: expected LearnedFilters, got {type(base).__name__}")
-    base.check_frame(pattern, bit_depth, "base")
+    check_base(base, pattern, bit_depth, "base")
     stats = None
     for i, fr in enumerate(frames):
         s = frame_stats(fr, base, lam, noise_thresholds, nir=nir[i], name=f"nir[{i}]")
@@ -133,7 +135,7 @@ def frame_stats(frame, base, lam, noise_thresholds=(0.003,), *, nir=None, name="
     out = []
     for k, (X, bk, G, (r, c, ny, nx)) in enumerate(
             _site_features(frame.data, pattern, grids, base, lam, noise_thresholds)):
-        F, _ = _features(X, geometry[k])
+        F = _features(X, geometry[k])
         y = ref[r::P, c::Q][:ny, :nx].reshape(-1) - np.einsum(
             "ij,ij->i", X, base.weights[k][:, :X.shape[1]][bk % base.n_buckets])
         order = np.argsort(bk, kind="stable")
@@ -177,6 +179,16 @@ def fit_stats(stats, base, lam, noise_thresholds=(0.003,), *, ridge=1e-3, prior=
             "library_version": VERSION}
     info.update(meta or {})
     return ZGuidedFilters(base, weights, gw, noise_thresholds, lam, meta=info)
+
+
+def _features(X, ph):
+    """The windows ``X`` (sites, taps) minus the mean of each tap's colour in the window (the
+    features of the learned fit)."""
+    F = X.copy()
+    for col in np.unique(ph["colours"]):
+        m = ph["colours"] == col
+        F[:, m] -= X[:, m].mean(1, keepdims=True)
+    return F
 
 
 def _fit_buckets(A, v, counts, ridge, prior, mult):

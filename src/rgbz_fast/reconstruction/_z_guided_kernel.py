@@ -33,7 +33,8 @@ def kernel_arrays(filters):
     w64 = np.ascontiguousarray(filters.weights.transpose(0, 2, 1))
     g64 = np.ascontiguousarray(filters.guide_weights)
     out = {k: base[k] for k in ("n_taps", "tap_dy", "tap_dx", "n_pairs", "pair_a", "pair_b",
-                                "str_thr", "coh_thr2", "radius", "hash_radius")}
+                                "pair_col", "inv_col", "str_thr", "coh_thr2", "spr_thr",
+                                "radius", "hash_radius")}
     out.update(w_f32=w64.astype(np.float32), w_f64=w64, g_f32=g64.astype(np.float32),
                g_f64=g64, n_base=n_base, base_idx=base_idx)
     object.__setattr__(filters, "_kernel", out)

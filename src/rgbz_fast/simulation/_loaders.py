@@ -24,7 +24,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..io._files import check_size, read_file, read_image, read_limits, rgb_image
+from .._validate import check_flag, check_path
+from ..io._files import (check_size, read_file, read_image, read_limits, rgb_image,
+                         sample_bits)
 from ..io._suffixes import IMAGE_SUFFIXES as _IMAGE_SUFFIXES
 from ._scene import Scene
 
@@ -38,19 +40,21 @@ MIDDLEBURY_BASELINE_M = 0.160
 
 
 def _require_file(path, what):
-    p = Path(path)
+    p = check_path(path, what)
     if not p.exists():
         raise FileNotFoundError(f"{what}: {p} not found")
     return p                      # a folder, FIFO or device: the reader says what it is
 
 
 def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflectance=None,
-               name=None, grey=False, max_pixels=None, max_bytes=None):
+               name=None, grey=False, input_bits=None, max_pixels=None, max_bytes=None):
     """Load a plain image file (PNG, TIFF, JPEG, ...) as an RGB :class:`Scene`.
 
     8- and 16-bit files are sRGB-encoded and linearised (16-bit PNGs at their
     full precision); float TIFFs are linear. An alpha channel is dropped. A
     grey image is refused unless ``grey=True`` (see :func:`rgbz_fast.io.rgb_image`).
+    A file of wider integer samples (a 32-bit TIFF) needs ``input_bits``, the
+    bits its values use (see :class:`Scene`).
     ``max_pixels``, ``max_bytes``: the read limits (:func:`rgbz_fast.io.read_limits`).
 
     Raises
@@ -63,11 +67,19 @@ def load_image(path, *, encoding="auto", depth=None, depth_valid=None, ir_reflec
         (:func:`rgbz_fast.io.read_limits`).
     """
     p = _require_file(path, "path")
+    check_flag(grey, "grey")
+    _check_name(name)
     img = rgb_image(read_image(p, "path", max_pixels=max_pixels, max_bytes=max_bytes), p,
                     grey=grey)
+    sample_bits(img, p, input_bits)
     return Scene.from_rgb(img, encoding=encoding, depth=depth, depth_valid=depth_valid,
                           ir_reflectance=ir_reflectance, name=name or p.stem,
-                          meta={"source": str(p)})
+                          meta={"source": str(p)}, input_bits=input_bits)
+
+
+def _check_name(name):
+    if name is not None and not isinstance(name, str):
+        raise TypeError(f"name: expected a string or None, got {type(name).__name__}")
 
 
 def _natural_key(p):
@@ -75,7 +87,8 @@ def _natural_key(p):
 
 
 def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_valid=None,
-                  ir_reflectance=None, name=None, max_pixels=None, max_bytes=None):
+                  ir_reflectance=None, name=None, input_bits=None, max_pixels=None,
+                  max_bytes=None):
     """Load a spectral cube: a MATLAB ``.mat`` file or a folder with one band per PNG file.
 
     Parameters
@@ -91,6 +104,9 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
     variable : str, optional
         The variable of a ``.mat`` file; default ``Omsi`` (CAVE), else the
         only 3-D numeric array in the file.
+    input_bits : int, optional
+        Bits of the values of an integer cube wider than 16 bits (see
+        :class:`Scene`); 8- and 16-bit cubes say their range.
     max_pixels, max_bytes : int, optional
         The read limits (:func:`rgbz_fast.io.read_limits`).
 
@@ -102,7 +118,8 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         If the bands differ in shape or dtype, the variable is ambiguous or
         missing, or the wavelengths do not match the band count.
     """
-    p = Path(path)
+    p = check_path(path, "path")
+    _check_name(name)
     meta = {"source": str(p)}
     if p.is_dir():
         files = sorted((f for f in p.iterdir() if f.suffix.lower() == ".png" and f.is_file()),
@@ -166,12 +183,14 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         meta["variable"] = variable
     else:
         raise FileNotFoundError(f"path: {p} not found")
+    sample_bits(cube, p, input_bits)
     k = cube.shape[2]
     if wavelengths is None:
         wavelengths = file_wl if file_wl is not None else 400.0 + 10.0 * np.arange(k)
     return Scene.from_spectral(cube, wavelengths, depth=depth, depth_valid=depth_valid,
                                ir_reflectance=ir_reflectance,
-                               name=name or (p.stem if p.is_file() else p.name), meta=meta)
+                               name=name or (p.stem if p.is_file() else p.name), meta=meta,
+                               input_bits=input_bits)
 
 
 def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BASELINE_M,
@@ -198,7 +217,9 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
         If ``dmin.txt`` is not a number, ``disp1.png`` is not a single-band
         image of the size of ``rgb.png``, or no pixel has a disparity.
     """
-    d = Path(folder)
+    check_flag(grey, "grey")
+    _check_name(name)
+    d = check_path(folder, "folder")
     if not d.is_dir():
         raise FileNotFoundError(f"folder: {d} is not a folder")
     needed = ("rgb.png", "disp1.png", "dmin.txt")
@@ -242,12 +263,18 @@ def load_scene(path, **kwargs):
     * an image file -> :func:`load_image`.
 
     Keyword arguments go to the chosen loader; ``grey`` (see
-    :func:`rgbz_fast.io.rgb_image`) to the RGB ones only.
+    :func:`rgbz_fast.io.rgb_image`) to the RGB ones only; ``input_bits`` to
+    the image and spectral loaders (an RGB-D folder's PNG files say their
+    range, so it is refused there).
     """
-    p = Path(path)
-    grey = kwargs.pop("grey", False)
+    p = check_path(path, "path")
+    grey = check_flag(kwargs.pop("grey", False), "grey")
     if p.is_dir():
         if (p / "disp1.png").exists() or (p / "rgb.png").exists():
+            if kwargs.get("input_bits") is not None:
+                raise ValueError(f"input_bits: applies to image files and spectral cubes; "
+                                 f"{p} is an RGB-D folder, whose PNG files say their range")
+            kwargs.pop("input_bits", None)
             return load_rgbd(p, grey=grey, **kwargs)
         return load_spectral(p, **kwargs)
     if not p.exists():

@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import check_number
+from .._validate import check_image, check_number
 
 __all__ = ["Optics", "apply_optics"]
 
@@ -173,7 +173,17 @@ class Optics:
         p = check_number(pixel_pitch_um, "pixel_pitch_um", lo=0.1, hi=100)
         n = self.f_number if f_number is None else check_number(f_number, "f_number",
                                                                 lo=0.5, hi=64)
-        xi, eta = np.broadcast_arrays(np.asarray(xi, np.float64), np.asarray(eta, np.float64))
+        xi = check_image(xi, "xi").astype(np.float64)
+        eta = check_image(eta, "eta").astype(np.float64)
+        for a, label in ((xi, "xi"), (eta, "eta")):
+            if np.abs(a).max() > 1e6:       # sin(pi x) of larger ones is NaN beyond 1e308
+                raise ValueError(f"{label}: expected frequencies within +-1e6 cycles per "
+                                 f"pixel, got up to {np.abs(a).max():g}")
+        try:
+            xi, eta = np.broadcast_arrays(xi, eta)
+        except ValueError:
+            raise ValueError(f"eta: shape {eta.shape} does not broadcast with xi "
+                             f"{xi.shape}") from None
         rho = np.hypot(xi, eta)
         lams = np.linspace(lo, hi, _BAND_SAMPLES) if hi > lo else np.array([lo])
         h = np.zeros(rho.shape)
@@ -195,8 +205,9 @@ class Optics:
 
     def mtf(self, frequency, wavelength_nm, *, pixel_pitch_um, f_number=None):
         """``|OTF|`` along the rows at ``frequency`` cycles per pixel (see :meth:`otf`)."""
-        return np.abs(self.otf(frequency, 0.0, wavelength_nm, pixel_pitch_um=pixel_pitch_um,
-                               f_number=f_number))
+        f = check_image(frequency, "frequency")
+        return np.abs(self.otf(f, np.zeros(f.shape), wavelength_nm,
+                               pixel_pitch_um=pixel_pitch_um, f_number=f_number))
 
     def psf(self, wavelength_nm, *, pixel_pitch_um, f_number=None):
         """The discrete kernel: the PSF integrated over each pixel, at whole-pixel offsets.
@@ -301,7 +312,13 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
     """
     if not isinstance(optics, Optics):
         raise TypeError(f"optics: expected an Optics, got {type(optics).__name__}")
-    img = np.asarray(image)
+    img = check_image(image, "image", ndim=(2, 3))
+    if img.min() < 0:
+        raise ValueError(f"image: holds negative values (min {img.min()}); expected linear "
+                         "values >= 0")
+    if img.max() > 1e300:
+        raise ValueError(f"image: values up to {img.max():g}; the convolution overflows "
+                         "beyond 1e300 (linear values, 1 = white)")
     if img.ndim == 2:
         if wavelengths is None:
             raise ValueError("wavelengths: a single plane needs its wavelength in nm")
@@ -316,7 +333,7 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
         kernels = [optics.psf(b, pixel_pitch_um=pixel_pitch_um, f_number=f_number)
                    for b in optics.bands_nm]
     else:
-        wl = np.asarray(wavelengths, np.float64).reshape(-1)
+        wl = check_image(wavelengths, "wavelengths").astype(np.float64).reshape(-1)
         if wl.size != img.shape[2]:
             raise ValueError(f"wavelengths: expected {img.shape[2]} values, got {wl.size}")
         kernels = [optics.psf(float(w), pixel_pitch_um=pixel_pitch_um, f_number=f_number)

@@ -43,10 +43,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validate import check_choice, check_image, check_number
+from .._validate import (FLOAT_DTYPES, check_choice, check_image, check_meta, check_number,
+                         integer_bits)
 
 __all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
            "CAVE_WAVELENGTHS"]
+
+#: the brightest scene value (relative radiance, 1 = white): the sensor models multiply it
+#: by a photon flux, an area and an exposure, which must stay finite doubles
+SCENE_MAX = 1e300
 
 #: Wavelengths (nm) of a 31-band CAVE cube: 400, 410, ..., 700.
 CAVE_WAVELENGTHS = tuple(float(400 + 10 * k) for k in range(31))
@@ -69,7 +74,10 @@ def srgb_to_linear(v):
     >>> np.round(srgb_to_linear(np.array([0.0, 0.04045, 0.5, 1.0])), 6)
     array([0.      , 0.003131, 0.214041, 1.      ])
     """
-    v = np.asarray(v, dtype=np.float64)
+    v = check_image(v, "v", dtypes=FLOAT_DTYPES).astype(np.float64)
+    if v.min() < 0 or v.max() > 1:
+        raise ValueError(f"v: values span [{v.min()}, {v.max()}]; expected encoded values in "
+                         "[0, 1]")
     return np.where(v <= 0.04045, v / 12.92, ((np.maximum(v, 0.04045) + 0.055) / 1.055) ** 2.4)
 
 
@@ -131,7 +139,8 @@ def disparity_to_depth(disparity, focal_px, baseline_m, *, offset=0.0, invalid=0
     f = check_number(focal_px, "focal_px", lo=0, lo_open=True)
     b = check_number(baseline_m, "baseline_m", lo=0, lo_open=True)
     off = check_number(offset, "offset")
-    valid = np.ones(disp.shape, bool) if invalid is None else disp != float(invalid)
+    valid = np.ones(disp.shape, bool) if invalid is None else \
+        disp != check_number(invalid, "invalid", allow_inf=True)
     if not valid.any():
         raise ValueError("disparity: every pixel is marked invalid "
                          f"(value {invalid}); there is no depth to use")
@@ -141,7 +150,13 @@ def disparity_to_depth(disparity, focal_px, baseline_m, *, offset=0.0, invalid=0
         raise ValueError(f"disparity: {bad} known pixel(s) have disparity + offset <= 0 "
                          f"(offset {off}); depth would be infinite or negative")
     depth = np.zeros_like(total)
-    depth[valid] = f * b / total[valid]
+    with np.errstate(over="ignore"):
+        depth[valid] = f * b / total[valid]
+    if not np.all(np.isfinite(depth[valid])):
+        raise ValueError(f"disparity: a known disparity + offset as small as "
+                         f"{total[valid].min():g} puts a point at {f:g} * {b:g} / "
+                         f"{total[valid].min():g}, beyond the largest double; expected "
+                         "disparities in pixels")
     return _fill_nearest(depth, valid), valid
 
 
@@ -170,11 +185,17 @@ def estimate_ir_reflectance(image, wavelengths=None):
     -------
     ndarray of float64, shape (H, W), values in [0.2, 0.8]
     """
-    img = np.asarray(image)
+    img = check_image(image, "image", dtypes=FLOAT_DTYPES)
     if wavelengths is None:
+        if img.ndim < 2 or img.shape[-1] != 3:
+            raise ValueError(f"image: expected linear RGB (rows, cols, 3) or wavelengths= for "
+                             f"a spectral cube, got shape {img.shape}")
         x = img[..., 0]
     else:
-        wl = np.asarray(wavelengths, dtype=np.float64)
+        wl = check_image(wavelengths, "wavelengths", ndim=1).astype(np.float64)
+        if wl.size != img.shape[-1]:
+            raise ValueError(f"wavelengths: expected {img.shape[-1]} band centres, got "
+                             f"{wl.size}")
         sel = wl >= _IR_BAND_NM
         if not sel.any():
             sel = wl == wl.max()
@@ -202,7 +223,9 @@ class Scene:
         allowed and simply brighter), or a spectral cube of relative
         reflectance with ``wavelengths``. Integer RGB is taken as sRGB
         (8 or 16 bit) and linearised; integer spectral data is divided by its
-        dtype's maximum. Values must be finite and >= 0.
+        dtype's maximum. Values must be finite and >= 0. An integer type
+        wider than 16 bits (int32, int64: a list of Python ints) needs
+        ``input_bits``.
     wavelengths : array_like, shape (K,), optional
         Band centres in nm (strictly increasing, 300..1100) of a spectral
         cube; None for an RGB scene.
@@ -222,6 +245,11 @@ class Scene:
         A short name for reports.
     meta : dict
         Free-form metadata (source files, conversion constants).
+    input_bits : int, optional
+        Bits of the values of an integer ``image`` (default: 8 for uint8, 16
+        for uint16; required for wider types); the image is divided by
+        ``2**input_bits - 1``. Not for float images. The scene keeps the
+        converted float image, and None here.
 
     Attributes
     ----------
@@ -244,19 +272,23 @@ class Scene:
     ir_reflectance: np.ndarray | None = None
     name: str = ""
     meta: dict = field(default_factory=dict)
+    input_bits: int | None = None
 
     def __post_init__(self):
         img = check_image(self.image, "image", ndim=3)
         integer = np.issubdtype(img.dtype, np.integer) or img.dtype == np.bool_
+        bits = self.input_bits
+        if not integer:
+            integer_bits(img, "image", bits)          # input_bits with a float image: refused
         if self.wavelengths is None:
             if img.shape[2] != 3:
                 raise ValueError(f"image: an RGB scene needs 3 channels in the last axis, got "
                                  f"shape {img.shape}; pass wavelengths= for a spectral cube")
             if integer:
-                img = srgb_to_linear(_int_to_unit(img, "image"))
+                img = srgb_to_linear(_int_to_unit(img, "image", bits))
             wl = None
         else:
-            wl = np.asarray(self.wavelengths, dtype=np.float64)
+            wl = check_image(self.wavelengths, "wavelengths").astype(np.float64)
             if wl.ndim != 1 or wl.size != img.shape[2]:
                 raise ValueError(f"wavelengths: expected {img.shape[2]} band centres (one per "
                                  f"band of image {img.shape}), got shape {wl.shape}")
@@ -266,14 +298,18 @@ class Scene:
             if wl.size > 1 and np.any(np.diff(wl) <= 0):
                 raise ValueError("wavelengths: expected strictly increasing band centres")
             if integer:
-                img = _int_to_unit(img, "image")
+                img = _int_to_unit(img, "image", bits)
             wl = _readonly(wl)
         if not integer and img.dtype not in (np.float32, np.float64):
             img = img.astype(np.float32 if img.dtype == np.float16 else np.float64)
         if img.min() < 0:
             raise ValueError(f"image: holds negative values (min {img.min()}); scene radiance "
                              "and reflectance are >= 0")
+        if img.max() > SCENE_MAX:
+            raise ValueError(f"image: values up to {img.max():g}; a relative radiance beyond "
+                             f"{SCENE_MAX:g} (white = 1) overflows the sensor models")
         object.__setattr__(self, "image", _readonly(img))
+        object.__setattr__(self, "input_bits", None)          # the image is float now
         object.__setattr__(self, "wavelengths", wl)
         shape = img.shape[:2]
 
@@ -311,14 +347,15 @@ class Scene:
                 raise ValueError(f"ir_reflectance: values span [{ir.min()}, {ir.max()}]; "
                                  "a reflectance lies in [0, 1]")
             object.__setattr__(self, "ir_reflectance", _readonly(ir))
-        object.__setattr__(self, "name", str(self.name))
-        object.__setattr__(self, "meta", dict(self.meta))
+        if not isinstance(self.name, str):
+            raise TypeError(f"name: expected a string, got {type(self.name).__name__}")
+        object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
 
     # -- constructors -------------------------------------------------------
     @classmethod
     def from_rgb(cls, image, *, encoding="auto", depth=None, depth_valid=None,
                  disparity=None, focal_px=None, baseline_m=None, disparity_offset=0.0,
-                 invalid_disparity=0, ir_reflectance=None, name="", meta=None):
+                 invalid_disparity=0, ir_reflectance=None, name="", meta=None, input_bits=None):
         """An RGB scene, with the encoding stated and depth given as depth or disparity.
 
         Parameters
@@ -335,19 +372,25 @@ class Scene:
             Instead of ``depth``: converted with :func:`disparity_to_depth`
             using ``focal_px``, ``baseline_m``, ``disparity_offset`` and
             ``invalid_disparity``.
+        input_bits : int, optional
+            Bits of the values of an integer image (see :class:`Scene`).
         """
         enc = check_choice(encoding, ("auto", "srgb", "linear"), "encoding")
         img = check_image(image, "image", ndim=3)
         integer = np.issubdtype(img.dtype, np.integer) or img.dtype == np.bool_
+        integer_bits(img, "image", input_bits)     # input_bits for integer images only
         if enc == "srgb":
-            unit = _int_to_unit(img, "image") if integer else img.astype(np.float64)
+            unit = _int_to_unit(img, "image", input_bits) if integer else \
+                img.astype(np.float64)
             if unit.min() < 0 or unit.max() > 1:
                 raise ValueError(f"image: sRGB-encoded floats must lie in [0, 1], got "
                                  f"[{unit.min()}, {unit.max()}]")
             img = srgb_to_linear(unit)
         elif enc == "linear" and integer:
-            img = _int_to_unit(img, "image")
-        meta = dict(meta or {})
+            img = _int_to_unit(img, "image", input_bits)
+        if enc != "auto":
+            input_bits = None                      # converted to float above
+        meta = check_meta(meta, "meta", allow_none=True)
         if disparity is not None:
             if depth is not None:
                 raise ValueError("disparity: give either depth or disparity, not both")
@@ -360,16 +403,17 @@ class Scene:
             meta.update(focal_px=float(focal_px), baseline_m=float(baseline_m),
                         disparity_offset=float(disparity_offset))
         return cls(img, depth=depth, depth_valid=depth_valid, ir_reflectance=ir_reflectance,
-                   name=name, meta=meta)
+                   name=name, meta=meta, input_bits=input_bits)
 
     @classmethod
     def from_spectral(cls, cube, wavelengths, *, depth=None, depth_valid=None,
-                      ir_reflectance=None, name="", meta=None):
+                      ir_reflectance=None, name="", meta=None, input_bits=None):
         """A spectral scene: relative reflectance per band and the band centres in nm."""
         if wavelengths is None:
             raise ValueError("wavelengths: a spectral scene needs its band centres in nm")
         return cls(cube, wavelengths=wavelengths, depth=depth, depth_valid=depth_valid,
-                   ir_reflectance=ir_reflectance, name=name, meta=dict(meta or {}))
+                   ir_reflectance=ir_reflectance, name=name,
+                   meta=check_meta(meta, "meta", allow_none=True), input_bits=input_bits)
 
     # -- properties -----------------------------------------------------------
     @property
@@ -403,10 +447,9 @@ class Scene:
         return f"Scene({name}{self.shape[0]}x{self.shape[1]} {kind}{extra})"
 
 
-def _int_to_unit(img, name):
-    if img.dtype == np.bool_:
-        return img.astype(np.float64)
-    info = np.iinfo(img.dtype)
-    if img.min() < 0:
+def _int_to_unit(img, name, input_bits=None):
+    """An integer image in [0, 1]: divided by the top of its range (:func:`integer_bits`)."""
+    if img.dtype != np.bool_ and img.min() < 0:
         raise ValueError(f"{name}: signed integer data holds negative values")
-    return img.astype(np.float64) / float(info.max)
+    bits = integer_bits(img, name, input_bits)
+    return img.astype(np.float64) / float((1 << bits) - 1)

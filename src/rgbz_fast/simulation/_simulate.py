@@ -97,7 +97,7 @@ from .._deps import import_colour
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_seed
+from .._validate import check_flag, check_number, check_seed
 from ._loaders import load_scene
 from ._noise import (STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
                      STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, expose)
@@ -207,7 +207,17 @@ def _auto_exposure(rate, sensor):
         raise ValueError(f"scene: the {sensor.ae_percentile:g}th percentile of the signal is 0 "
                          "(a black scene); auto-exposure needs light -- set "
                          "ColourSensor(exposure=...) instead")
-    return sensor.ae_target * sensor.usable_electrons() / level
+    exposure = sensor.ae_target * sensor.usable_electrons() / level
+    if not exposure <= _MAX_EXPOSURE:
+        raise ValueError(f"scene: too dark for auto-exposure, which would need {exposure:g} s "
+                         f"(more than {_MAX_EXPOSURE:g} s); brighten the scene or set "
+                         "ColourSensor(exposure=...)")
+    return exposure
+
+
+#: the longest exposure, in seconds: what ColourSensor(exposure=...) accepts, and what
+#: auto-exposure may choose (a longer one turns the dark current alone into ~1e50 electrons)
+_MAX_EXPOSURE = 3600.0
 
 
 def _check_optics(optics):
@@ -276,7 +286,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
     rate = _colour_signal_rate(scene, sensor, colour_map, optics)
     exposure = _auto_exposure(rate, sensor) if sensor.exposure == "auto" else sensor.exposure
     dn, saturated = expose(rate * exposure, sensor.dark_current * exposure, sensor,
-                           noise=bool(noise), seed=seed,
+                           noise=check_flag(noise, "noise"), seed=seed,
                            temporal_stream=STREAM_COLOUR_TEMPORAL,
                            fpn_stream=STREAM_COLOUR_FPN)
     meta = {"exposure": float(exposure), "system_gain": sensor.system_gain,
@@ -425,8 +435,14 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         raise ValueError(f"pattern: {pattern.name!r} has no Z site")
     shape = pattern.check_shape(scene.shape, "scene")
     pitch = sensor.pixel_pitch_um
-    if pitch is None:
-        pitch = 2.8 if pixel_pitch_um is None else float(pixel_pitch_um)
+    if pixel_pitch_um is not None:
+        given = check_number(pixel_pitch_um, "pixel_pitch_um", lo=0, lo_open=True)
+        if pitch is not None and given != pitch:
+            raise ValueError(f"pixel_pitch_um: {given:g} um differs from the sensor's "
+                             f"pixel_pitch_um {pitch:g} um; give one of them")
+        pitch = given
+    if sensor.pixel_pitch_um is None:
+        pitch = 2.8 if pitch is None else pitch
         sensor = replace(sensor, pixel_pitch_um=pitch)
     block = sensor.z_block if sensor.z_block is not None else _z_block(pattern)
     rows, cols = _z_sites(pattern, shape, block)
@@ -460,8 +476,9 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         valid = valid & ~beyond
 
     suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
+    noise = check_flag(noise, "noise")
     taps, sat = expose(mean, sensor._dark_electrons, sensor,
-                       noise=bool(noise), seed=seed, temporal_stream=STREAM_TOF_TEMPORAL,
+                       noise=noise, seed=seed, temporal_stream=STREAM_TOF_TEMPORAL,
                        fpn_stream=STREAM_TOF_FPN, fpn_shape=mean.shape[1:],
                        suppress=suppress)
     meta = {"noise": bool(noise), "seed": seed, "pattern": pattern.name,
@@ -547,6 +564,7 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
                          "reference Bayer CFA to simulate")
 
     optics = _check_optics(optics)
+    noise = check_flag(noise, "noise")
     ref = simulate_colour(scene, pattern, colour_sensor, seed=seed, noise=noise, optics=optics)
     zmask = pattern.z_mask(scene.shape)
     data = ref.data.copy()

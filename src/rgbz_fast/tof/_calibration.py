@@ -47,13 +47,12 @@ from __future__ import annotations
 import io
 import json
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import check_int
+from .._validate import as_list, check_image, check_int, check_path
 from ..io import atomic_write, read_npz
 from ._noise import tap_variance
 
@@ -146,6 +145,7 @@ class ToFCalibration:
 
     def check(self, tof, name="calibration"):
         """ValueError naming ``name`` unless ``tof`` has this calibration's frequencies and sites."""
+        tof = as_taps(tof, "tof")
         freqs = np.asarray(tof.frequencies, np.float64).reshape(-1)
         if freqs.shape != self.frequencies.shape or not np.allclose(freqs, self.frequencies,
                                                                     rtol=1e-9, atol=0):
@@ -172,7 +172,7 @@ class ToFCalibration:
 
     def cyclic_error(self, phase):
         """``g_f(phase)`` (rad) for phases of shape (F, ...)."""
-        ph = np.asarray(phase, np.float64)
+        ph = _check_phase(phase, self.frequencies.size)
         k = np.arange(1, self.orders + 1).reshape((1, -1) + (1,) * (ph.ndim - 1))
         a = self.coefficients[:, :, 0].reshape(self.coefficients.shape[:2] + (1,) * (ph.ndim - 1))
         b = self.coefficients[:, :, 1].reshape(a.shape)
@@ -186,7 +186,7 @@ class ToFCalibration:
         :attr:`deviations` (the ISP turns the phasors by them before the
         denoise).
         """
-        ph = np.asarray(phase, np.float64)
+        ph = _check_phase(phase, self.frequencies.size)
         mean = self.mean_offset.reshape((-1,) + (1,) * (ph.ndim - 1))
         out = np.mod(ph - self.cyclic_error(ph) - mean, 2 * np.pi)
         out[out >= 2 * np.pi] = 0.0
@@ -205,7 +205,7 @@ class ToFCalibration:
         >>> back.offsets.tolist(), back.shape
         ([[1.0, 1.0]], (2, 4))
         """
-        path = Path(path)
+        path = check_path(path, "path")
         header = {"format": _FORMAT_TAG, "block": self.block, "shape": list(self.shape),
                   "meta": _jsonable(self.meta)}
         arrays = {"frequencies": self.frequencies, "offsets": self.offsets,
@@ -222,7 +222,7 @@ class ToFCalibration:
     def load(cls, path, *, max_bytes=None):
         """Read a file written by :meth:`save` (ValueError naming ``path`` if it is not one);
         ``max_bytes``: the read limit (:func:`rgbz_fast.io.read_limits`)."""
-        path = Path(path)
+        path = check_path(path, "path")
         arrays = read_npz(path, "path", required=("header",),      # bounded, no pickles
                           max_bytes=max_bytes)
         try:
@@ -274,8 +274,18 @@ def as_taps(item, name):
     return item
 
 
+def _check_phase(phase, nfreq):
+    """Phases of shape (F, ...), one row per frequency of the calibration, as float64."""
+    ph = check_image(phase, "phase").astype(np.float64)
+    if ph.ndim < 1 or ph.shape[0] != nfreq:
+        raise ValueError(f"phase: expected shape ({nfreq}, ...), one row per frequency, got "
+                         f"{ph.shape}")
+    return ph
+
+
 def _dark_offsets(dark, first):
-    frames = [dark] if isinstance(dark, (ToFTaps, RawFrame)) else list(dark)
+    frames = [dark] if isinstance(dark, (ToFTaps, RawFrame)) else \
+        as_list(dark, "dark", "frames or ToFTaps of the capped lens")
     if not frames:
         raise ValueError("dark: no frames")
     acc = np.zeros((4, first.n_sites))

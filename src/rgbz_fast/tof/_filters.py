@@ -45,7 +45,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_int, check_number, check_workers
+from .._validate import check_block, check_int, check_number, check_sites, check_workers
 
 __all__ = ["SiteGrid", "denoise_phasors_bilateral"]
 
@@ -70,12 +70,8 @@ class SiteGrid:
     """
 
     def __init__(self, sites, block=1):
-        rows, cols = (np.asarray(a, np.int64) for a in sites)
-        if rows.ndim != 1 or rows.shape != cols.shape:
-            raise ValueError(f"sites: expected two arrays of the same shape (n,), got "
-                             f"{rows.shape} and {cols.shape}")
-        if block not in (1, 2):
-            raise ValueError(f"block: expected 1 or 2, got {block!r}")
+        rows, cols = check_sites(sites, "sites")           # integers, none twice
+        block = check_block(block, "block")
         self.n = rows.size
         self.block = block
         if not self._row_major(rows, cols):

@@ -99,6 +99,9 @@ def check_guide(guide, shape, name="guide"):
         scale = 1.0 / 255.0
     elif g.dtype == np.uint16:
         scale = 1.0 / 65535.0
+    elif g.dtype.kind in "iu":                   # its type would not say its range
+        raise TypeError(f"{name}: an image of {g.dtype}; expected uint8 or uint16 sRGB, or "
+                        "floats in [0, 1]")
     else:
         if g.dtype not in (np.float32, np.float64):
             g = g.astype(np.float64)

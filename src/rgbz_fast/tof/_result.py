@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._validate import as_array, check_fill
+
 __all__ = ["ToFDepth"]
 
 
@@ -110,7 +112,8 @@ class ToFDepth:
                 raise ValueError(f"values: unknown field {values!r}")
             v = getattr(self, values)
         else:
-            v = np.asarray(values)
+            v = as_array(values, "values")
+        fill = check_fill(fill)
         n = self.n_sites
         if v.shape[-1:] != (n,) or v.ndim > 2:
             raise ValueError(f"values: expected shape ({n},) or (F, {n}), got {v.shape}")
@@ -124,6 +127,7 @@ class ToFDepth:
 
     def depth_map(self, fill=np.nan):
         """Depth (m) on the frame where valid; ``fill`` elsewhere."""
+        fill = check_fill(fill)
         return self.to_frame(np.where(self.valid, self.depth, fill), fill)
 
     def __repr__(self):

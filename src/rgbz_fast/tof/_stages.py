@@ -16,7 +16,8 @@ import numpy as np
 
 from .. import _kernels
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import check_number, check_workers
+from .._validate import (as_array, as_list, check_block, check_frequencies, check_image,
+                         check_number, check_sites, check_workers)
 from ._filters import _axis_offsets, _check_odd
 
 __all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unwrap",
@@ -31,8 +32,13 @@ __all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unw
 MAX_WRAPS = int(_kernels.TOF_MAX_WRAPS)
 
 
+#: the largest tap magnitude: the phasor, its noise and its SNR square sums of taps, which
+#: stay finite doubles below it (taps are counts or electrons, far below)
+TAP_MAX = 1e150
+
+
 def _check_taps(taps, name="taps"):
-    t = np.asarray(taps)
+    t = as_array(taps, name)
     if t.ndim != 3 or t.shape[1] != 4 or t.shape[0] < 1:
         raise ValueError(f"{name}: expected shape (F, 4, n_sites), got {t.shape}")
     if t.dtype == np.bool_ or not (np.issubdtype(t.dtype, np.integer)
@@ -40,6 +46,10 @@ def _check_taps(taps, name="taps"):
         raise TypeError(f"{name}: expected real numbers, got dtype {t.dtype}")
     if np.issubdtype(t.dtype, np.floating) and not np.all(np.isfinite(t)):
         raise ValueError(f"{name}: holds NaN or infinite values; expected finite data")
+    if t.size and t.dtype.kind == "f" and float(np.max(np.abs(t))) > TAP_MAX:
+        raise ValueError(f"{name}: values up to {float(np.max(np.abs(t))):g} in magnitude, "
+                         f"beyond {TAP_MAX:g}: their sums and squares (offset, amplitude, "
+                         "noise) would overflow; expected counts or electrons")
     return t
 
 
@@ -153,23 +163,23 @@ def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
     extra_mean : list of ndarray
         The means of ``extra``.
     """
-    i = np.asarray(i, np.float64)
-    q = np.asarray(q, np.float64)
+    i = as_array(i, "i", dtype=np.float64)
+    q = as_array(q, "q", dtype=np.float64)
     if i.ndim != 2 or q.shape != i.shape:
         raise ValueError(f"i, q: expected two arrays of the same shape (F, n), got "
                          f"{i.shape} and {q.shape}")
     n = i.shape[1]
-    rows, cols = (np.asarray(a, np.int64) for a in sites)
+    rows, cols = (as_array(a, "sites") for a in as_list(sites, "sites", "(rows, cols)")[:2])
     if rows.shape != (n,) or cols.shape != (n,):
         raise ValueError(f"sites: expected two arrays of shape ({n},), got {rows.shape} and "
                          f"{cols.shape}")
-    if block not in (1, 2):
-        raise ValueError(f"block: expected 1 or 2, got {block!r}")
+    rows, cols = check_sites((rows, cols), "sites")             # integers, none twice
+    block = check_block(block, "block")
     window = _check_window(window)
-    use = np.ones(n, bool) if use is None else np.asarray(use, bool)
+    use = np.ones(n, bool) if use is None else as_array(use, "use", dtype=bool)
     if use.shape != (n,):
         raise ValueError(f"use: expected shape ({n},), got {use.shape}")
-    extra = [np.asarray(e, np.float64) for e in extra]
+    extra = [as_array(e, "extra", dtype=np.float64) for e in as_list(extra, "extra")]
     planes = [p for p in i] + [p for p in q]
     for e in extra:
         planes += [p for p in e] if e.ndim == 2 else [e]
@@ -222,7 +232,7 @@ def unambiguous_range(frequencies):
     unwrapping can tell them apart (:attr:`rgbz_fast.ToFSensor.unambiguous_range`).
     """
     g = 0
-    for v in np.asarray(frequencies, np.float64).reshape(-1):
+    for v in check_frequencies(frequencies, "frequencies"):
         g = math.gcd(g, int(round(float(v))))
     return SPEED_OF_LIGHT / (2 * g) if g else math.inf
 
@@ -267,14 +277,18 @@ def _search_range(f, max_range):
 
 def _check_unwrap_args(phase_rows, frequencies, weights, max_range):
     """(frequencies, weights, max_range) as the kernels take them, or a ValueError."""
-    f = np.asarray(frequencies, np.float64).reshape(-1)
-    if f.shape != (phase_rows,) or not np.all(np.isfinite(f)) or np.any(f <= 0):
+    try:
+        f = check_frequencies(frequencies, "frequencies")       # TypeError: not numbers
+    except ValueError:
+        f = None
+    if f is None or f.shape != (phase_rows,):
         raise ValueError(f"frequencies: expected {phase_rows} positive values in Hz, got "
                          f"{frequencies!r}")
     if phase_rows > _kernels.TOF_MAX_FREQS:
         raise ValueError(f"phase: at most {_kernels.TOF_MAX_FREQS} frequencies, got "
                          f"{phase_rows}")
-    w = f ** 2 if weights is None else np.asarray(weights, np.float64).reshape(-1)
+    w = f ** 2 if weights is None else \
+        check_image(weights, "weights").astype(np.float64).reshape(-1)
     if (w.shape != f.shape or not np.all(np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0
             or not np.isfinite(w.sum())):
         raise ValueError(f"weights: expected {f.size} non-negative values, not all 0, got "
@@ -338,7 +352,7 @@ def unwrap(phase, frequencies, *, weights=None, max_range=None, workers=None):
         Malformed phases (shape, NaN, outside [0, 2 pi)), frequencies, weights
         or ``max_range`` (see above); the message names the parameter.
     """
-    ph = np.asarray(phase, np.float64)
+    ph = as_array(phase, "phase", dtype=np.float64)
     if ph.ndim != 2:
         raise ValueError(f"phase: expected shape (F, n), got {ph.shape}")
     f, w, max_range = _check_unwrap_args(ph.shape[0], frequencies, weights, max_range)

@@ -25,7 +25,7 @@ import enum
 import numpy as np
 
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import check_number
+from .._validate import as_array, check_number
 from ._filters import SiteGrid
 
 __all__ = ["ToFFlag", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
@@ -195,14 +195,15 @@ def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0
     >>> bool(flying_pixels(slope, np.full(24, 0.002), (rows, cols)).any())
     False
     """
-    d = np.asarray(depth, np.float64)
-    s = np.asarray(sigma, np.float64)
+    d = as_array(depth, "depth", dtype=np.float64)
+    s = as_array(sigma, "sigma", dtype=np.float64)
+    k = check_number(k, "k", lo=0)
     grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
     if d.shape != (grid.n,) or s.shape != (grid.n,):
         raise ValueError(f"depth, sigma: expected shape ({grid.n},), got {d.shape} and "
                          f"{s.shape}")
     step = check_number(step, "step", lo=0)
-    ok = np.ones(grid.n, bool) if usable is None else np.asarray(usable, bool)
+    ok = np.ones(grid.n, bool) if usable is None else as_array(usable, "usable", dtype=bool)
     if ok.shape != (grid.n,):
         raise ValueError(f"usable: expected shape ({grid.n},), got {ok.shape}")
     R, C = grid.shape

@@ -1,0 +1,143 @@
+"""Camera raw files through LibRaw (rawpy): the visible CFA, its phase and levels, the
+camera's colour, with LibRaw's own complaints and lazy failures turned into one error."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import sys
+import tempfile
+import warnings
+
+import numpy as np
+
+from .._patterns import BAYER_PHASES
+from ._files import check_size, read_file
+
+__all__ = ["read_libraw"]
+
+
+def read_libraw(path, limits):
+    """(the visible CFA, what LibRaw says of it) of the camera raw file ``path``; a ValueError
+    naming ``path`` when LibRaw cannot read it, with what it printed."""
+    try:
+        import rawpy
+    except ImportError:
+        raise ImportError(f"reading camera raw files such as {path.name} needs rawpy (LibRaw): "
+                          "pip install rawpy  (or pip install rgbz-fast[raw])") from None
+    blob = read_file(path, "path", max_bytes=limits[1])
+    try:
+        with _c_stderr() as said:
+            data, info = _libraw_mosaic(rawpy, blob, path, limits)
+    except rawpy.LibRawError as exc:
+        # LibRaw decodes lazily: a truncated or damaged file fails when the pixels are
+        # unpacked, after the header was read, with its own exception types
+        reason = exc.args[0] if exc.args else exc
+        if isinstance(reason, bytes):
+            reason = reason.decode("utf-8", "replace")
+        told = " ".join(dict.fromkeys(line.strip() for line in said if line.strip()))
+        raise ValueError(f"path: LibRaw cannot read {path.name}: {type(exc).__name__}: "
+                         f"{reason}" + (f" ({told})" if told else "")) from None
+    return data, info
+
+
+@contextlib.contextmanager
+def _c_stderr():
+    """What C code writes to file descriptor 2 meanwhile, as a list of lines.
+
+    LibRaw prints its own complaints there ("unknown file: Unexpected end of file", once per
+    read attempt), which would come before the one error line of the command line. They are
+    caught here: part of the error when the read fails, written out as they were when it
+    succeeds.
+    """
+    said = []
+    try:
+        sys.stderr.flush()
+        saved = os.dup(2)
+    except (OSError, ValueError, AttributeError):       # no file descriptor 2 to catch
+        yield said
+        return
+    failed = True
+    with tempfile.TemporaryFile() as tmp:
+        os.dup2(tmp.fileno(), 2)
+        try:
+            yield said
+            failed = False
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+            tmp.seek(0)
+            text = tmp.read()
+            said += text.decode("utf-8", "replace").splitlines()
+            if text and not failed:
+                os.write(2, text)
+
+
+def _libraw_mosaic(rawpy, blob, path, limits):
+    """The visible CFA and what LibRaw says of it, from the bytes of a camera raw file."""
+    with rawpy.imread(io.BytesIO(blob)) as raw:
+        if raw.raw_type != rawpy.RawType.Flat:
+            raise ValueError(f"{path.name}: not a CFA mosaic (LibRaw raw_type "
+                             f"{raw.raw_type.name}, e.g. a linear DNG)")
+        pattern = raw.raw_pattern
+        desc = raw.color_desc.decode("ascii", "replace")
+        if pattern is None or pattern.shape != (2, 2):
+            shp = None if pattern is None else pattern.shape
+            raise ValueError(f"{path.name}: not a 2x2 Bayer sensor (CFA pattern {shp}, "
+                             f"colours {desc!r}; X-Trans and Foveon are not supported)")
+        letters = "".join(desc[int(i)] for i in pattern.ravel())
+        if letters not in BAYER_PHASES:
+            raise ValueError(f"{path.name}: CFA {letters!r} (colours {desc!r}) is not an RGB "
+                             "Bayer phase")
+        bl = raw.black_level_per_channel      # indexed by colour index
+        black = [float(bl[int(i)]) for i in pattern.ravel()]
+        wl = raw.white_level
+        check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
+        data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
+        colour = _camera_colour(raw, desc)
+    make, model = _tiff_make_model(blob)
+    info = {"phase": letters, "black_level": black, "white_level": float(wl),
+            "make": make, "model": model, **colour}
+    return data, info
+
+
+def _camera_colour(raw, desc):
+    """The as-shot white balance (R, G, B gains, G = 1) and the matrix from white-balanced
+    camera RGB to linear sRGB that LibRaw gives for the file; each left out when LibRaw has
+    none (zeros) for it."""
+    out = {}
+    idx = [desc.index(c) for c in "RGB"]
+    try:
+        wb = np.asarray(raw.camera_whitebalance, np.float64)[idx]
+        if np.all(np.isfinite(wb)) and np.all(wb > 0):
+            out["white_gains"] = tuple(float(v) for v in wb / wb[1])
+        m = np.asarray(raw.color_matrix, np.float64)[:, idx]
+        if m.shape == (3, 3) and np.all(np.isfinite(m)) and np.any(m != 0):
+            out["colour_matrix"] = tuple(float(v) for v in m.ravel())
+    except (AttributeError, IndexError, ValueError):     # an older rawpy, a partial file
+        pass
+    return out
+
+
+def _tiff_make_model(blob):
+    """Make and Model from the TIFF IFD0 most raw formats are built on, or (None, None)."""
+    import logging
+
+    log = logging.getLogger("tifffile")        # it logs each damaged tag it skips
+    quiet = log.disabled
+    log.disabled = True
+    try:
+        import tifffile
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            with tifffile.TiffFile(io.BytesIO(blob)) as tif:
+                tags = tif.pages[0].tags
+                make, model = tags.get("Make"), tags.get("Model")
+                return (str(make.value).strip() if make is not None else None,
+                        str(model.value).strip() if model is not None else None)
+    except Exception:  # noqa: BLE001 - metadata only: a non-TIFF raw has none to give
+        return None, None
+    finally:
+        log.disabled = quiet
