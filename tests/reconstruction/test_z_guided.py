@@ -274,4 +274,33 @@ def test_shipped_filters_build_on_the_shipped_learned_ones():
         assert "train --z-guided" in f.meta["command"] and f.meta["training_set"] == "rgbnir"
         assert f.meta["n_images"] == 40                     # 20 pairs, noise-free and noisy
         assert f.meta["base_digest"] == default_filters(p).digest, f.meta["command"]
-    assert default_z_filters("mask1_rggb") is None
+    # the other Bayer phases: the same filters mirrored or shifted, on the same base
+    for p in ("mask1_rggb", "mask2_bggr"):
+        f = default_z_filters(p)
+        assert f.pattern == get_pattern(p) and f.base == default_filters(p)
+        assert f.meta["derived_from"].startswith(p.split("_")[0] + ", digest ")
+    assert default_z_filters("rows") is None
+
+
+@pytest.mark.parametrize("src", ["mask1", "mask2"])
+@pytest.mark.parametrize("phase", ["rggb", "bggr", "gbrg"])
+def test_filters_of_every_bayer_phase_are_the_fit_moved_with_the_frame(src, phase):
+    """On a frame that is a Mask frame flipped and shifted onto another Bayer phase (with its
+    guide), the derived filters give the Mask frame's values moved the same way, to float64
+    rounding, away from the borders."""
+    from rgbz_fast.reconstruction._learned import pattern_transform
+    dst = f"{src}_{phase}"
+    fy, fx, oy, ox = pattern_transform(get_pattern(src), get_pattern(dst))
+    rng = np.random.default_rng(5)
+    H, W = 48, 64
+    img = rng.random((H, W, 3)) * 0.6 + 0.2
+    nir = rng.random((H, W)) * 0.5 + img.mean(2) * 0.5
+    P, Q = get_pattern(src).period
+    y0 = oy if fy == 1 else H - 1 - (H - 1 - oy) % P
+    x0 = ox if fx == 1 else W - 1 - (W - 1 - ox) % Q
+    at = np.ix_(y0 + fy * np.arange(H - P), x0 + fx * np.arange(W - Q))
+    a = rz.mosaic(img, src, dtype=np.float64).data
+    want = rz.reconstruct(a, "z_guided", pattern=src, nir=nir, precision="float64")[at]
+    got = rz.reconstruct(a[at], "z_guided", pattern=dst, nir=nir[at], precision="float64")
+    assert not np.allclose(got, a[at])          # the Z sites were filled
+    np.testing.assert_allclose(got[8:-8, 8:-8], want[8:-8, 8:-8], rtol=0, atol=1e-9)

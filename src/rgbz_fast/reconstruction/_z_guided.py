@@ -48,8 +48,9 @@ from .._frame import ToFTaps
 from .._patterns import Z, get_pattern
 from .._validate import check_number
 from ..io import atomic_write, read_npz
-from ._learned import LearnedFilters, check_filters
-from ._learned_hash import extend_index, gather_windows, hash_buckets, hash_features
+from ._learned import LearnedFilters, check_filters, pattern_transform
+from ._learned_hash import (N_ANGLES, extend_index, gather_windows, hash_buckets, hash_features,
+                            mirror_octants)
 
 __all__ = ["ZGuidedFilters", "z_layout", "guide_grid", "guide_features", "N_GUIDE",
            "NEEDS_TOF", "default_z_filters"]
@@ -373,6 +374,12 @@ class ZGuidedFilters:
         return _site_features(data, self.pattern, grids, self.base, self.lam,
                               self.noise_thresholds)
 
+    def for_pattern(self, pattern):
+        """These filters for ``pattern``: themselves, or mirrored/shifted as
+        :meth:`LearnedFilters.for_pattern` mirrors their base (Mask1 and Mask2 of every Bayer
+        phase from the GRBG ones), or None."""
+        return _derived(self, get_pattern(pattern))
+
     def reconstruct(self, data, grids):
         """NumPy reconstruction (float64, unclipped) of ``data`` guided by ``grids``
         (:func:`guide_grid`): the colour sites copied, the Z sites filled in."""
@@ -436,6 +443,46 @@ class ZGuidedFilters:
                              f"{msg[:200]})") from None
 
 
+def _derived(f, pattern):
+    """:meth:`ZGuidedFilters.for_pattern`: the taps and buckets moved as the base's are, the
+    guide weights of the 3 x 3 measurements flipped with the window."""
+    if pattern == f.pattern:
+        return f
+    tr = pattern_transform(f.pattern, pattern)
+    base = f.base.for_pattern(pattern)
+    if tr is None or base is None:
+        return None
+    try:
+        z_layout(pattern)
+    except ValueError:
+        return None
+    fy, fx, oy, ox = tr
+    P, Q = pattern.period
+    src_geom = f.base.geometry
+    src_index = {ph["rc"]: k for k, ph in enumerate(src_geom)}
+    nb = f.base.n_buckets
+    octant = mirror_octants() if fy * fx < 0 else np.arange(N_ANGLES)
+    per_angle = nb // N_ANGLES
+    bmap = (octant[:, None] * per_angle + np.arange(per_angle)[None, :]).reshape(-1)
+    levels = f.n_buckets // nb
+    bmap = (np.arange(levels)[:, None] * nb + bmap[None, :]).reshape(-1)
+    # the measurement (dy, dx) of the 3 x 3, row-major, is (fy dy, fx dx) of the source
+    cells = [(fy * dy + _K) * (2 * _K + 1) + fx * dx + _K
+             for dy in range(-_K, _K + 1) for dx in range(-_K, _K + 1)]
+    gmap = np.array(cells + list(range(len(cells), N_GUIDE)))
+    weights = np.zeros_like(f.weights)
+    gw = np.zeros_like(f.guide_weights)
+    for k, ph in enumerate(base.geometry):
+        r, c = ph["rc"]
+        ks = src_index[((fy * r + oy) % P, (fx * c + ox) % Q)]
+        taps = {tuple(t): i for i, t in enumerate(src_geom[ks]["taps"])}
+        idx = np.array([taps[(fy * dy, fx * dx)] for dy, dx in ph["taps"]])
+        weights[k, :, :len(idx)] = f.weights[ks][bmap][:, idx]
+        gw[k] = f.guide_weights[ks][bmap][:, gmap]
+    meta = {**f.meta, "derived_from": f"{f.pattern.name}, digest {f.digest}"}
+    return ZGuidedFilters(base, weights, gw, f.noise_thresholds, f.lam, meta=meta)
+
+
 def check_base(base, pattern, bit_depth, name):
     """ValueError naming ``name`` unless learned filters ``base`` are for ``pattern`` and
     ``bit_depth`` exactly (z_guided filters are fitted on one pattern and bit depth)."""
@@ -492,18 +539,19 @@ def learned_only(filters, name="filters"):
 def default_z_filters(pattern, bit_depth=11):
     """The :class:`ZGuidedFilters` shipped for a pattern and bit depth, or None.
 
-    The package ships Mask1 and Mask2 filters for 11-bit linear frames of the
-    Bayer phases the shipped ``learned`` filters cover, fitted on the 20
-    RGB-NIR pairs (``reconstruction/data/z_guided_*.npz``; the command that
-    made them is in their metadata, ``meta["command"]``).
+    The package ships Mask1 and Mask2 (GRBG) filters for 11-bit linear frames,
+    fitted on the 20 RGB-NIR pairs on top of the shipped ``learned`` filters
+    (``reconstruction/data/z_guided_*.npz``; the command that made them is in
+    their metadata, ``meta["command"]``); mirrored, they serve the RGGB, BGGR
+    and GBRG phases (:meth:`ZGuidedFilters.for_pattern`).
     """
     pattern = get_pattern(pattern)
     key = (pattern.tile_string, int(bit_depth))
     if key not in _SHIPPED:
         found = None
         for f in sorted(_DATA.glob("z_guided_*.npz")):
-            zf = ZGuidedFilters.load(f)
-            if zf.pattern == pattern and zf.bit_depth == bit_depth:
+            zf = ZGuidedFilters.load(f).for_pattern(pattern)
+            if zf is not None and zf.bit_depth == bit_depth:
                 found = zf
                 break
         _SHIPPED[key] = found
@@ -511,8 +559,9 @@ def default_z_filters(pattern, bit_depth=11):
 
 
 def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
-    """The :class:`ZGuidedFilters` for a frame: one of ``filters`` fitted for its pattern and bit
-    depth, or the shipped ones (:func:`default_z_filters`) when none of ``filters`` are."""
+    """The :class:`ZGuidedFilters` for a frame: one of ``filters`` fitted for its pattern (or
+    mirrored to it) and bit depth, or the shipped ones (:func:`default_z_filters`) when none
+    of ``filters`` are."""
     cands = () if filters is None else tuple(f for f in filters if isinstance(f, ZGuidedFilters))
     if not cands:
         shipped = default_z_filters(pattern, bit_depth)
@@ -522,8 +571,9 @@ def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
                          f"pattern {pattern.name!r} at {bit_depth} bits: fit some with "
                          "rgbz_fast.reconstruction.train_z_guided and pass filters=")
     for f in cands:
-        if f.pattern == pattern and f.bit_depth == bit_depth:
-            return f
+        d = f.for_pattern(pattern)
+        if d is not None and d.bit_depth == bit_depth:
+            return d
     if len(cands) == 1:
         cands[0].check_frame(pattern, bit_depth, name)
     have = ", ".join(f"{f.pattern.name} {f.bit_depth}-bit" for f in cands)
