@@ -98,10 +98,12 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     ('astronaut', 'linear', 8)
     """
     pattern = get_pattern(pattern)
-    if z_guided:
+    progress = check_flag(progress, "progress")
+    linearise = check_flag(linearise, "linearise")
+    noise = check_flag(noise, "noise")
+    if check_flag(z_guided, "z_guided"):
         return _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, name,
                                progress, options)
-    progress = check_flag(progress, "progress")
     if encoding is None:
         encoding = "linear" if linearise else "srgb"
     encoding = check_choice(encoding, ENCODINGS, "encoding")

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._frame import RawFrame
-from .._validate import check_number
+from .._validate import check_flag, check_number
 from ._learned import LearnedFilters, default_filters
 from ._z_guided import N_GUIDE, ZGuidedFilters, _site_features, check_base, guide_grid, z_layout
 
@@ -71,6 +71,7 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=1e-3, prior=50.0, colou
     colour correction is folded onto the taps and added to ``base``'s
     weights, so the colour part is one dot product, as for ``"learned"``.
     """
+    guide = check_flag(guide, "guide")
     ridge = check_number(ridge, "ridge", lo=0)
     prior = check_number(prior, "prior", lo=0)
     colour_prior = check_number(colour_prior, "colour_prior", lo=0, lo_open=True)
