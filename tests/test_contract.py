@@ -348,6 +348,7 @@ def test_every_flag_of_the_public_api_refuses_what_is_not_a_bool(files):
     from rgbz_fast import evaluation as ev
     from rgbz_fast import io as rio
     from rgbz_fast import isp, metrics
+    from rgbz_fast import reconstruction as rec
 
     scene = sim.Scene(rgb(), depth=np.full((16, 16), 1.5))
     frame = sim_frame()
@@ -390,6 +391,10 @@ def test_every_flag_of_the_public_api_refuses_what_is_not_a_bool(files):
             lambda v: ev.train_filters(files / "ds", "mask1", linearise=v),
         ("train_filters", "progress"):
             lambda v: ev.train_filters(files / "ds", "mask1", progress=v),
+        ("train_filters", "z_guided"):
+            lambda v: ev.train_filters(files / "ds", "mask1", z_guided=v),
+        ("train", "z_guided"): lambda v: rec.train([frame], z_guided=v),
+        ("train_z_guided", "guide"): lambda v: rec.train_z_guided([frame], guide=v),
         ("read_raw", "crop_even"):
             lambda v: rio.read_raw(files / "bayer.raw", crop_even=v, **raw),
         ("list_raw_files", "recursive"): lambda v: rio.list_raw_files(files.d, recursive=v),

@@ -40,8 +40,9 @@ DTYPES = (np.uint8, np.uint16, np.float32, np.float64)
 PHASES = rz.BAYER_PHASES
 PRESETS = [f"{base}_{ph.lower()}" for base in ("mask1", "mask2", "rows", "bayer")
            for ph in PHASES]
-#: the plan methods; "learned" (filters fitted per pattern and bit depth) has its own test below
-METHODS = tuple(m for m in rz.METHODS if m != "learned")
+#: the plan methods; "learned" (filters fitted per pattern and bit depth) has its own test below,
+#: the methods that need the Z pixels' measurements (NEEDS_TOF) theirs
+METHODS = tuple(m for m in rz.METHODS if m != "learned" and m not in rz.NEEDS_TOF)
 #: a message that names the parameter it is about: "frame: ...", "ToFSensor.bit_depth: ..."
 NAMED = re.compile(r"^[A-Za-z_][\w.\[\], ]*: ")
 

@@ -88,3 +88,28 @@ class InputTypeSuite:
             rz.reconstruct(self.data, "sg", pattern="mask1")
         else:
             rz.reconstruct(self.frame, "sg")
+
+
+class ZGuidedSuite:
+    """method="z_guided" from a frame's ToF taps (the amplitude's demodulation included)."""
+
+    params = ([KODAK_SHAPE, BIG_SHAPE], ["mask1", "mask2"], ["float32", "float64"])
+    param_names = ["shape", "pattern", "precision"]
+    timeout = 600
+
+    def setup(self, shape, pattern, precision):
+        need("reconstruct")
+        need_method("z_guided")
+        skip_if_slow(shape)
+        from rgbz_fast.reconstruction import default_z_filters
+        from rgbz_fast.simulation import Scene, simulate
+        if default_z_filters(pattern) is None:
+            raise NotImplementedError(f"no z_guided filters ship for {pattern}")
+        scene = Scene.from_rgb(astronaut(shape), depth=np.full(shape, 2.0))
+        self.frame = simulate(scene, pattern, seed=0, noise=True)
+
+    def time_z_guided(self, shape, pattern, precision):
+        rz.reconstruct(self.frame, "z_guided", precision=precision)
+
+    def time_z_guided_2threads(self, shape, pattern, precision):
+        rz.reconstruct(self.frame, "z_guided", precision=precision, workers=2)

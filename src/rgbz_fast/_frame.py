@@ -352,6 +352,11 @@ class ToFTaps:
     shape : tuple (rows, cols)
         Frame shape.
     meta : dict
+        From a simulation: ``noise``, ``seed``, ``system_gain``... and
+        ``ir_estimated``: True when the scene had no NIR reflectance and the
+        simulation estimated it from the RGB (the amplitude then carries the
+        colour: no evidence for a method guided by it), False when it was
+        given, None when unknown (a file saved before it was recorded).
     """
 
     taps: np.ndarray
@@ -439,6 +444,58 @@ class ToFTaps:
     @property
     def unambiguous_range(self):
         return self.sensor.unambiguous_range
+
+    def amplitude(self, frequency=None, *, workers=None):
+        """The demodulated amplitude of every Z measurement: what the Z pixels see of the scene.
+
+        ``|I + iQ| / 2`` in DN (``I = A0 - A2``, ``Q = A3 - A1``; the black
+        level and the ambient light cancel), by the C kernel of
+        :func:`rgbz_fast.tof.demodulate`. At one distance it is proportional
+        to the NIR reflectance at the laser wavelength, which is what
+        ``reconstruct(frame, "z_guided")`` uses as its guide; it falls as
+        ``1 / d^2`` with the distance ``d``, and noise biases it upwards
+        where it is small.
+
+        Parameters
+        ----------
+        frequency : int, "all" or None
+            Index into :attr:`frequencies`; ``"all"``: every frequency; None
+            (default): the mean over the frequencies (less noisy).
+        workers : int, optional
+            Threads (None or -1: all cores); the result does not depend on it.
+
+        Returns
+        -------
+        ndarray of float64, shape (n_sites,) or, for ``"all"``, (F, n_sites)
+            One value per measurement (paint it with :meth:`to_frame`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rgbz_fast.simulation import Scene, simulate
+        >>> ir = np.tile([0.2, 0.2, 0.8, 0.8], (8, 2))          # a dark and a bright half
+        >>> scene = Scene(np.full((8, 8, 3), 0.5), depth=np.full((8, 8), 1.0), ir_reflectance=ir)
+        >>> amp = simulate(scene, "mask1", noise=False).tof.amplitude()
+        >>> amp.shape, bool(amp[1] > 3 * amp[0])
+        ((16,), True)
+        """
+        from . import _kernels
+        from ._validate import check_workers
+
+        F = self.taps.shape[0]
+        every = isinstance(frequency, str) and frequency == "all"
+        index = isinstance(frequency, (int, np.integer)) and not isinstance(frequency, bool)
+        if not (frequency is None or every or (index and -F <= frequency < F)):
+            raise ValueError(f"frequency: expected an index into the {F} frequencies, 'all' or "
+                             f"None, got {frequency!r}")
+        taps = self.taps if self.taps.dtype in (np.uint16, np.float32, np.float64) else \
+            self.taps.astype(np.float64)
+        taps = np.ascontiguousarray(taps)
+        phase, amp, off = (np.empty((F, self.n_sites)) for _ in range(3))
+        _kernels.tof_demodulate(taps, phase, amp, off, check_workers(workers))
+        if every:
+            return amp
+        return amp.mean(axis=0) if frequency is None else amp[frequency]
 
     def to_frame(self, values, fill=0.0):
         """Paint one value per measurement onto the frame (every cell of its block).

@@ -73,6 +73,18 @@ def learned(src: np.ndarray, dst: np.ndarray, precision: int, py: int, px: int,
             spr_thr: np.ndarray, w_f32: np.ndarray, w_f64: np.ndarray, radius: int,
             hash_radius: int, maxval: float, workers: int, wd_f32: np.ndarray | None = ...,
             wd_f64: np.ndarray | None = ..., opcounts: np.ndarray | None = ...) -> None: ...
+def z_guided(src: np.ndarray, dst: np.ndarray, precision: int, py: int, px: int,
+             phase_map: np.ndarray, n_taps: np.ndarray, tap_dy: np.ndarray, tap_dx: np.ndarray,
+             n_pairs: np.ndarray, pair_a: np.ndarray, pair_b: np.ndarray, pair_col: np.ndarray,
+             inv_col: np.ndarray, str_thr: np.ndarray, coh_thr2: np.ndarray,
+             spr_thr: np.ndarray, radius: int, hash_radius: int, w_f32: np.ndarray,
+             w_f64: np.ndarray, g_f32: np.ndarray, g_f64: np.ndarray, n_base: np.ndarray,
+             base_idx: np.ndarray, cell: np.ndarray, level: np.ndarray, maxval: float,
+             workers: int, opcounts: np.ndarray | None = ...) -> None: ...
+def z_guided_cells(src: np.ndarray, py: int, px: int, chan: np.ndarray, zr: int, zc: int,
+                   block: int, grid: np.ndarray, var: np.ndarray, targets: np.ndarray,
+                   lam: float, thr: np.ndarray, cell: np.ndarray, level: np.ndarray,
+                   workers: int) -> None: ...
 def demosaic_malvar(src: np.ndarray, dst: np.ndarray, phase: np.ndarray, mode: int,
                     workers: int) -> None: ...
 def tof_demodulate(taps: np.ndarray, phase: np.ndarray, amp: np.ndarray, offset: np.ndarray,

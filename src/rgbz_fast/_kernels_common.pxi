@@ -1,9 +1,9 @@
 # The part of the bridge that both extensions hold (src/rgbz_fast/meson.build): _kernels.pyx
 # and _kernels_count.pyx include it. It declares the C core's API (csrc/rgbz.h, learned.h),
 # takes the Python constants from its enums, and bridges the kernels that the counting build
-# counts (reconstruct, learned, tof_demodulate) and the build queries.
+# counts (reconstruct, learned, z_guided, tof_demodulate) and the build queries.
 
-from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint64_t
+from libc.stdint cimport int8_t, int32_t, int64_t, uint8_t, uint16_t, uint64_t
 
 # what the entry point of precision fixed reads of rgbz_params (csrc/hw_recon.h)
 cdef extern from "hw_recon.h" nogil:
@@ -389,4 +389,200 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     with nogil:
         status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
                         &phase_map[0], &f, maxval, workers, counts)
+    _raise_for(status)
+
+
+cdef extern from "z_guided.h" nogil:
+    ctypedef struct rgbz_zguided_filters:
+        const rgbz_learned_filters *hash
+        int32_t n_levels
+        const float *w_f32
+        const double *w_f64
+        const float *g_f32
+        const double *g_f64
+        int32_t n_base_max
+        const int32_t *n_base
+        const int32_t *base_idx
+        Py_ssize_t gy, gx
+        const double *cell
+        const int32_t *level
+    int rgbz_zguided_u8(const uint8_t *src, uint8_t *dst, Py_ssize_t rows, Py_ssize_t cols,
+                        int py, int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
+                        int precision, double maxval, int workers, uint64_t *opcounts)
+    int rgbz_zguided_u16(const uint16_t *src, uint16_t *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_f32(const float *src, float *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_f64(const double *src, double *dst, Py_ssize_t rows, Py_ssize_t cols,
+                         int py, int px, const int32_t *phase_map,
+                         const rgbz_zguided_filters *f, int precision, double maxval,
+                         int workers, uint64_t *opcounts)
+    int rgbz_zguided_cells_u8(const uint8_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_u16(const uint16_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_f32(const float *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+    int rgbz_zguided_cells_f64(const double *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
+                              const int8_t *chan, int zr, int zc, int block, const double *grid,
+                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
+                              const int32_t *targets, double lam, const double *thr, int n_thr,
+                              double *cell, int32_t *level, int workers)
+
+
+# ---------------------------------------------------------------------- z_guided (z_guided.c)
+def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int py, int px,
+             const int32_t[::1] phase_map, const int32_t[::1] n_taps,
+             const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
+             const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
+             const int32_t[:, :, ::1] pair_b, const int32_t[:, :, ::1] pair_col,
+             const double[:, ::1] inv_col, const double[:, ::1] str_thr,
+             const double[:, ::1] coh_thr2, const double[:, ::1] spr_thr, int radius,
+             int hash_radius, const float[:, :, ::1] w_f32, const double[:, :, ::1] w_f64,
+             const float[:, :, ::1] g_f32, const double[:, :, ::1] g_f64,
+             const int32_t[::1] n_base, const int32_t[:, ::1] base_idx,
+             const double[:, :, :, ::1] cell, const int32_t[:, ::1] level, double maxval,
+             int workers, uint64_t[::1] opcounts=None):
+    """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
+    ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
+    (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
+    n_buckets, 11), the baseline taps (n_phases,) and (n_phases, n_base_max), the cell
+    features (n_phases, gy, gx, 11) and noise levels (gy, gx). ``opcounts``: as for
+    ``learned``."""
+    cdef int status
+    cdef rgbz_learned_filters h
+    cdef rgbz_zguided_filters f
+    cdef double zero = 0.0
+    cdef Py_ssize_t n_ph = w_f32.shape[0]
+    if (n_taps.shape[0] != n_ph or tap_dy.shape[0] != n_ph or tap_dx.shape[0] != n_ph
+            or n_pairs.shape[0] != n_ph or n_pairs.shape[1] != 4 or pair_a.shape[0] != n_ph
+            or pair_b.shape[0] != n_ph or pair_a.shape[1] != 4 or pair_b.shape[1] != 4
+            or pair_b.shape[2] != pair_a.shape[2] or pair_col.shape[0] != n_ph
+            or pair_col.shape[1] != 4 or pair_col.shape[2] != pair_a.shape[2]
+            or inv_col.shape[0] != n_ph or inv_col.shape[1] != 3 or spr_thr.shape[0] != n_ph
+            or tap_dy.shape[1] != w_f32.shape[1]
+            or tap_dx.shape[1] != w_f32.shape[1] or str_thr.shape[0] != n_ph
+            or coh_thr2.shape[0] != n_ph or w_f64.shape[0] != n_ph
+            or w_f64.shape[1] != w_f32.shape[1] or w_f64.shape[2] != w_f32.shape[2]
+            or g_f32.shape[0] != n_ph or g_f64.shape[0] != n_ph
+            or g_f32.shape[1] != w_f32.shape[2] or g_f64.shape[1] != w_f32.shape[2]
+            or g_f32.shape[2] != 11 or g_f64.shape[2] != 11 or n_base.shape[0] != n_ph
+            or base_idx.shape[0] != n_ph or cell.shape[0] != n_ph or cell.shape[3] != 11
+            or cell.shape[1] != level.shape[0] or cell.shape[2] != level.shape[1]
+            or dst.shape[0] != src.shape[0] or dst.shape[1] != src.shape[1]
+            or phase_map.shape[0] != py * px):
+        raise ValueError("z_guided: inconsistent filter arrays")
+    h.n_phases = n_ph
+    h.n_taps_max = w_f32.shape[1]
+    h.n_str = str_thr.shape[1] + 1
+    h.n_coh = coh_thr2.shape[1] + 1
+    h.n_spr = spr_thr.shape[1] + 1
+    h.n_buckets = 8 * h.n_str * h.n_coh * h.n_spr
+    if w_f32.shape[2] % h.n_buckets:
+        raise ValueError("z_guided: the weights' buckets are not levels x hash buckets")
+    h.n_pairs_max = pair_a.shape[2]
+    h.radius = radius
+    h.hash_radius = hash_radius
+    h.n_taps = &n_taps[0]
+    h.tap_dy = &tap_dy[0, 0]
+    h.tap_dx = &tap_dx[0, 0]
+    h.n_pairs = &n_pairs[0, 0]
+    h.pair_a = &pair_a[0, 0, 0]
+    h.pair_b = &pair_b[0, 0, 0]
+    h.pair_col = &pair_col[0, 0, 0]
+    h.inv_col = &inv_col[0, 0]
+    h.bayer = NULL
+    # a level count of 1 has no threshold: the kernel reads none
+    h.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
+    h.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
+    h.spr_thr = &spr_thr[0, 0] if spr_thr.shape[1] else &zero
+    h.w_f32 = NULL
+    h.w_f64 = NULL
+    h.wd_f32 = NULL
+    h.wd_f64 = NULL
+    f.hash = &h
+    f.n_levels = w_f32.shape[2] // h.n_buckets
+    f.w_f32 = &w_f32[0, 0, 0]
+    f.w_f64 = &w_f64[0, 0, 0]
+    f.g_f32 = &g_f32[0, 0, 0]
+    f.g_f64 = &g_f64[0, 0, 0]
+    f.n_base_max = base_idx.shape[1]
+    f.n_base = &n_base[0]
+    f.base_idx = &base_idx[0, 0]
+    f.gy = level.shape[0]
+    f.gx = level.shape[1]
+    f.cell = &cell[0, 0, 0, 0]
+    f.level = &level[0, 0]
+    cdef uint64_t *counts = _counters(opcounts, n_ph * RGBZ_NOPS)
+    with nogil:
+        if frame_t is uint8_t:
+            status = rgbz_zguided_u8(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                                     &phase_map[0], &f, precision, maxval, workers, counts)
+        elif frame_t is uint16_t:
+            status = rgbz_zguided_u16(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        elif frame_t is float:
+            status = rgbz_zguided_f32(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        else:
+            status = rgbz_zguided_f64(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
+                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+    _raise_for(status)
+
+
+def z_guided_cells(const frame_t[:, ::1] src, int py, int px, const int8_t[::1] chan, int zr,
+                   int zc, int block, const double[:, ::1] grid, const double[:, ::1] var,
+                   const int32_t[::1] targets, double lam, const double[::1] thr,
+                   double[:, :, :, ::1] cell, int32_t[:, ::1] level, int workers):
+    """The cell terms (n_phases, gy, gx, 11) and noise levels (gy, gx) of z_guided
+    (csrc/z_guided.h) from the frame, the amplitude grid and its variance (gy, gx), the
+    colour codes of the tile (py * px), the Z pixel's corner and size, the target colour of
+    each phase, the regularisation and the noise thresholds."""
+    cdef int status
+    cdef double zero = 0.0
+    cdef const double *thr_p = &thr[0] if thr.shape[0] else &zero
+    if (var.shape[0] != grid.shape[0] or var.shape[1] != grid.shape[1]
+            or level.shape[0] != grid.shape[0] or level.shape[1] != grid.shape[1]
+            or cell.shape[0] != targets.shape[0] or cell.shape[1] != grid.shape[0]
+            or cell.shape[2] != grid.shape[1] or cell.shape[3] != 11
+            or chan.shape[0] != py * px or targets.shape[0] == 0):
+        raise ValueError("z_guided_cells: inconsistent arrays")
+    with nogil:
+        if frame_t is uint8_t:
+            status = rgbz_zguided_cells_u8(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        elif frame_t is uint16_t:
+            status = rgbz_zguided_cells_u16(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        elif frame_t is float:
+            status = rgbz_zguided_cells_f32(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        else:
+            status = rgbz_zguided_cells_f64(&src[0, 0], src.shape[0], src.shape[1], py, px,
+                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
+                                             grid.shape[0], grid.shape[1], targets.shape[0],
+                                             &targets[0], lam, thr_p, thr.shape[0],
+                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
     _raise_for(status)

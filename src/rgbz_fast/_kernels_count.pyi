@@ -24,3 +24,5 @@ from rgbz_fast._kernels import rgbz_precision as rgbz_precision
 from rgbz_fast._kernels import rgbz_status as rgbz_status
 from rgbz_fast._kernels import rgbz_type as rgbz_type
 from rgbz_fast._kernels import tof_demodulate as tof_demodulate
+from rgbz_fast._kernels import z_guided as z_guided
+from rgbz_fast._kernels import z_guided_cells as z_guided_cells

@@ -41,7 +41,7 @@ PATTERNS = {
 ROW_PATTERNS = {"rows": lambda: rz.rows(), "rows_rggb": lambda: rz.rows("RGGB")}
 ALL_PATTERNS = {**PATTERNS, **ROW_PATTERNS}
 WEIGHTED = ("bilinear", "bi", "edi_central", "edi_line", "sg")
-assert set(WEIGHTED) | {"edi_rows"} == set(METHODS) == set(rz.METHODS) - {"learned"}
+assert set(WEIGHTED) | {"edi_rows"} == set(METHODS) == set(rz.METHODS) - {"learned", "z_guided"}
 
 CASES = ([(pn, m) for pn in PATTERNS for m in WEIGHTED]
          + [(pn, "edi_rows") for pn in ROW_PATTERNS])

@@ -61,10 +61,11 @@ def run(args):
     from ..io import folder_dataset, sample_dataset
 
     out = c.output_folder(args.out)
-    bad = [m for m in args.methods if m not in tradeoff.METHODS]
+    known = tradeoff.METHODS + tradeoff.OPTIONAL_METHODS
+    bad = [m for m in args.methods if m not in known]
     if bad:
         raise c.CliError(f"--methods: unknown {', '.join(bad)}; expected some of "
-                         f"{', '.join(tradeoff.METHODS)}")
+                         f"{', '.join(known)}")
     if args.dataset:
         from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
 

@@ -1,4 +1,4 @@
-"""``rgbz-fast train``: dataset -> filters of the "learned" reconstruction (.npz)."""
+"""``rgbz-fast train``: dataset -> filters of the "learned" or "z_guided" reconstruction (.npz)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,10 @@ def add_parser(sub):
         sub, NAME, "dataset -> filters of the learned reconstruction",
         "Fit the filters of method 'learned' (hashed 7x7 linear filters, see the user guide) "
         "to a folder of images, with the evaluation's protocol (sRGB EOTF, mosaic at "
-        "--bit-depth), and write them to --out. Fit on images you do not evaluate on.")
+        "--bit-depth), and write them to --out. Fit on images you do not evaluate on. "
+        "With --z-guided, fit those of method 'z_guided' on a folder of registered RGB + NIR "
+        "pairs (NNNN_rgb.png + NNNN_nir.png): each pair through the sensor model, noise-free "
+        "and noisy (11 bits), on top of the shipped learned filters of the pattern.")
     p.add_argument("--dataset", type=Path, required=True, metavar="DIR", action="append",
                    help="folder of RGB images to fit on (required; repeat it to fit on several "
                         "folders; keep the images you evaluate on out of them)")
@@ -48,6 +51,11 @@ def add_parser(sub):
                         "matrix")
     p.add_argument("--prior", type=c.non_negative_float, default=50.0,
                    help="weight, in training sites, of the common filter in each bucket's fit")
+    p.add_argument("--z-guided", action="store_true",
+                   help="fit the filters of method z_guided (guided by the NIR amplitude of the "
+                        "Z pixels) on RGB + NIR pairs; --radius, --hash-radius, --strength, "
+                        "--coherence, --noise and --linearise do not apply")
+    c.add_seed(p, 1, "noise seed of every pair's noisy frame (--z-guided)")
     c.add_quiet(p, "no progress bar or summary line")
     c.add_limits(p)
     return p
@@ -67,10 +75,19 @@ def run(args):
                for s in folder_dataset(d, args.limit, **c.limits(args))]
     c.check_outputs([("the filters", args.out)], [Path(s.location) for s in sources],
                     [(d, IMAGE_SUFFIXES | RAW_SUFFIXES) for d in args.dataset])
+    name = args.name or "+".join(d.resolve().name for d in args.dataset)
+    if args.z_guided:
+        filters = train_filters(sources, args.pattern, name=name, progress=not args.quiet,
+                                z_guided=True, seed=args.seed, ridge=args.ridge,
+                                prior=args.prior, meta={"command": c.command_line(args)})
+        filters.save(args.out)
+        if not args.quiet:
+            print(f"{filters} -> {args.out} ({filters.meta['n_images']} frames, "
+                  f"{filters.meta['n_sites']} sites)")
+        return 0
     filters = train_filters(
         sources, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
-        linearise=args.linearise, encoding=args.encoding,
-        name=args.name or "+".join(d.resolve().name for d in args.dataset),
+        linearise=args.linearise, encoding=args.encoding, name=name,
         progress=not args.quiet, radius=args.radius, hash_radius=args.hash_radius,
         n_strength=args.strength, n_coherence=args.coherence, n_spread=args.spread,
         ridge=args.ridge, prior=args.prior, meta={"command": c.command_line(args)})

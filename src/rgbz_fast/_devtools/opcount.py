@@ -178,6 +178,39 @@ def _learned_site_counts(data, pattern, precision, bit_depth):
     return np.array(targets), np.concatenate(rows)
 
 
+def _counting_guide(shape, seed):
+    """A positive NIR image for counting ``z_guided``: its operations do not depend on the
+    values, only on the pattern (every counted operation of the kernel is unconditional)."""
+    return np.random.default_rng(seed).uniform(0.05, 1.0, shape)
+
+
+def _z_guided_site_counts(data, pattern, precision, bit_depth, seed):
+    """Counts of the z_guided kernel (csrc/z_guided.c) per Z site: (targets, counts). As the
+    learned kernel's, every site of a phase costs the same. The cell terms, one per tile,
+    computed before the kernel (reconstruction/_z_guided_kernel.py), are not counted; the
+    demodulation of the taps is count_tof_operations'."""
+    from ..reconstruction._z_guided import guide_grid, resolve_z_filters
+    from ..reconstruction._z_guided_kernel import run_z_guided
+
+    filters = resolve_z_filters(None, pattern, bit_depth)
+    n_ph = len(filters.base.geometry)
+    counts = np.zeros(n_ph * _kernels_count.NOPS, np.uint64)
+    grids = guide_grid(data.shape, pattern, nir=_counting_guide(data.shape, seed))
+    run_z_guided(np.ascontiguousarray(data), np.empty_like(data), pattern, filters, grids,
+                 precision, bit_depth, 1, opcounts=counts, kernels=_kernels_count)
+    counts = counts.reshape(n_ph, _kernels_count.NOPS)
+    P, Q = pattern.period
+    targets, rows = [], []
+    for k, ph in enumerate(filters.base.geometry):
+        r, c = ph["rc"]
+        n = len(range(r, data.shape[0], P)) * len(range(c, data.shape[1], Q))
+        targets += [ph["target"]] * n
+        rows.append(np.repeat(counts[k:k + 1] // max(n, 1), n, axis=0))
+        if counts[k].any() and (counts[k] % n).any():
+            raise RuntimeError("z_guided: site counts differ within a phase")
+    return np.array(targets), np.concatenate(rows)
+
+
 def _uses_mask1_fast(pattern, method, kw):
     """True where reconstruct() runs the Mask1 fast path (csrc/recon_mask1.h)."""
     return _recon.runs_mask1_fast_path(pattern, method, kw["domain"], kw.get("clip_level"))
@@ -248,7 +281,9 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
     method : str
         A method of :func:`rgbz_fast.reconstruct` ("bilinear", "bi",
         "edi_central", "edi_line", "sg", "edi_rows", "learned": the shipped
-        filters of the pattern; every site, borders included, costs the same).
+        filters of the pattern; every site, borders included, costs the same;
+        "z_guided": its shipped filters guided by a random NIR image, the
+        per-site kernel only -- the cell terms, one per tile, are not counted).
     pattern : Pattern or str
         The pattern (default Mask1).
     precision : {"float64", "float32"}
@@ -295,12 +330,15 @@ def count_operations(method, pattern="mask1", *, precision="float64", shape=(64,
                                     reconstruct_kwargs.get("bit_depth"))
     kw["bit_depth"] = bd
     # the public function validates every argument (and runs the normal kernel once)
+    guide = {"nir": _counting_guide(data.shape, seed)} if method == "z_guided" else {}
     reconstruct(data, method, pattern=pattern, bit_depth=kw["bit_depth"], workers=1,
-                precision=precision, **{k: v for k, v in kw.items() if k != "bit_depth"})
+                precision=precision, **guide, **{k: v for k, v in kw.items() if k != "bit_depth"})
     if path not in ("auto", "generic"):
         raise ValueError(f"path: expected 'auto' or 'generic', got {path!r}")
     if method == "learned":
         return _summarise(*_learned_site_counts(data, pattern, precision.lower(), bd))
+    if method == "z_guided":
+        return _summarise(*_z_guided_site_counts(data, pattern, precision.lower(), bd, seed))
     targets, counts = _site_counts(data, pattern, method, precision.lower(), kw,
                                    fast_path=path == "auto")
     return _summarise(targets, counts)
@@ -359,9 +397,9 @@ def opcount_table(methods=DEFAULT_METHODS, patterns=("mask1", "mask2"), *,
                                    **reconstruct_kwargs)
             data, _, bd = _frame_data(pattern, shape, seed, None, kw["bit_depth"])
             kwb = dict(kw, bit_depth=bd)
-            if method == "learned":          # no beta, one code path
+            if method in ("learned", "z_guided"):          # no beta, one code path
                 nb = gen = res
-                path = "learned kernel"
+                path = f"{method} kernel"
             else:
                 # the cost of beta, measured on the plan interpreter (plans with beta off)
                 t_nb, c_nb = _site_counts(data, pattern, method, precision, kwb,
@@ -430,7 +468,8 @@ def opcount_report(rows=None, fmt="markdown", **kwargs):
     body = []
     for r in rows:
         line = [r["method"], r["pattern"], r["target"],
-                {"mask1 fast path": "fast", "learned kernel": "learned"}.get(r.get("path"),
+                {"mask1 fast path": "fast", "learned kernel": "learned",
+                 "z_guided kernel": "z_guided"}.get(r.get("path"),
                                                                            "plans")]
         line += [_cell(r, k) for k in TABLE1_CATEGORIES]
         line += [_fmt(r["mean"]["abs"]), _fmt(r["mean"]["cmp"])]
@@ -462,7 +501,9 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "intensity factor of eq. 4. path: the code reconstruct() runs, the Mask1 fast path "
            "(csrc/recon_mask1.h) or the plan interpreter (_plans.py), one C core "
            "(csrc/recon_core.template.h); or the learned kernel (csrc/learned.c: the hash, "
-           "then one dot product over the taps; the same at every site).")
+           "then one dot product over the taps; the same at every site); or the z_guided "
+           "kernel (csrc/z_guided.c: the learned kernel's work plus the guide's dot product; "
+           "the cell terms, one per tile, are not counted).")
 
 
 def opcount_legend(shape, seed, precision, image_name=None, tof=None):

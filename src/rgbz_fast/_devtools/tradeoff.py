@@ -26,6 +26,9 @@ __all__ = ["run_tradeoff", "pareto_front", "format_markdown", "format_text", "Cr
            "PATTERNS", "SPEED_SHAPE", "QUICK_SPEED_SHAPE", "QUICK_NOTE"]
 
 METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
+#: what a run may ask for besides: z_guided reads the Z pixels' measurements, so a run with it
+#: takes every frame from the sensor model (as evaluate does) and is not a default
+OPTIONAL_METHODS = ("z_guided",)
 #: border (pixels) left out of CPSNR, as evaluate's default crop
 CROP = 8
 USES_EXP = ("edi_central", "edi_line", "sg")
@@ -42,7 +45,7 @@ def _variants(methods):
     """(method, precision, exp, domain) of every row."""
     for m in methods:
         for prec in ("float64", "float32"):
-            if m == "learned":
+            if m in ("learned", "z_guided"):
                 yield m, prec, NO_EXP, "intensity"
                 continue
             for exp in (("libm", "fast") if m in USES_EXP else ("libm",)):
@@ -128,7 +131,8 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     for src in sources:
         img = src.load()
         for p in patterns:
-            frame, ref = image_frames(img, p, config)
+            nir = src.load_nir() if config.needs_tof and hasattr(src, "load_nir") else None
+            frame, ref = image_frames(img, p, config, nir)
             phase = frame.pattern.bayer_phase
             ref8, st = chain.render(ref, phase, bit_depth=bd, workers=workers,
                                     return_stages=True)
@@ -137,6 +141,11 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     # from other processes slows every variant alike; the speed is the best of the runs
     # (the least disturbed), the median is kept beside it
     speed_frames = {p: rz.mosaic(speed_rgb, rz.get_pattern(p), bd) for p in patterns}
+    if config.needs_tof:        # frames with ToF taps: the speed includes the demodulation
+        from ..simulation import ColourSensor, Scene, simulate
+        scene = Scene.from_rgb(speed_rgb, depth=np.full(speed_shape, 2.0))
+        speed_frames = {p: simulate(scene, p, ColourSensor(black_level=0), noise=True)
+                        for p in patterns}
 
     def call(v):
         p, m, prec, exp, dom = v
@@ -194,6 +203,10 @@ class Crop:
 
     def load(self):
         return np.ascontiguousarray(self.source.load()[:self.size, :self.size])
+
+    def load_nir(self):
+        nir = getattr(self.source, "load_nir", lambda: None)()
+        return None if nir is None else np.ascontiguousarray(nir[:self.size, :self.size])
 
 
 def series(r):

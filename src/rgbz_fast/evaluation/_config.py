@@ -11,8 +11,9 @@ from .._patterns import get_pattern
 from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
                          check_int, check_seed)
 from ..isp import ColourISP, DefectCorrection, Demosaic
-from ..reconstruction import METHODS, ReconstructParams
+from ..reconstruction import METHODS, NEEDS_TOF, ReconstructParams
 from ..reconstruction._learned import resolve_filters
+from ..reconstruction._z_guided import learned_only, resolve_z_filters
 from ..simulation import Optics
 
 __all__ = ["EvalConfig", "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "HIGHER_IS_BETTER",
@@ -27,7 +28,7 @@ HIGHER_IS_BETTER = {"cfa_psnr": True, "cpsnr": True, "ssim": True, "ms_ssim": Tr
                     "zipper": False}
 METHOD_LABELS = {"bilinear": "bilinear", "bi": "BI", "edi_central": "EDICentral",
                  "edi_line": "EDILine", "sg": "SG", "edi_rows": "EDI rows (Shi)",
-                 "learned": "learned"}
+                 "learned": "learned", "z_guided": "z_guided"}
 
 #: the paper's Table 3 (kodim09), for the comparison in the reports
 PAPER_TABLE3 = {
@@ -148,13 +149,25 @@ class EvalConfig:
         if "learned" in self.methods:
             # filters for every pattern (shipped or given), before any image
             for p in self.patterns:
-                resolve_filters(self.params.filters, get_pattern(p))
+                resolve_filters(learned_only(self.params.filters), get_pattern(p))
+        if "z_guided" in self.methods:
+            for p in self.patterns:
+                resolve_z_filters(self.params.filters, get_pattern(p), self.bit_depth)
+        if self.needs_tof and not self.linearise:
+            raise ValueError(f"linearise: methods {sorted(set(self.methods) & NEEDS_TOF)} read "
+                             "the sensor model's frames, which take linear light")
         if self.optics is not None and not isinstance(self.optics, Optics):
             raise TypeError(f"optics: expected an Optics or None, got "
                             f"{type(self.optics).__name__}")
         if self.optics is not None and not self.linearise:
             raise ValueError("optics: a lens blurs linear light; it needs linearise=True (the "
                              "8-bit sRGB protocol mosaics the encoded values)")
+
+    @property
+    def needs_tof(self):
+        """True if a method reads the Z pixels' measurements (:data:`rgbz_fast.NEEDS_TOF`):
+        every frame of the run then comes from the sensor model (:func:`image_frames`)."""
+        return any(m in NEEDS_TOF for m in self.methods)
 
     @property
     def image_metrics(self):
@@ -190,12 +203,14 @@ class EvalConfig:
             d.pop("optics")
         if params["clip_level"] is None or (params["clip_level"] == "auto" and not raw):
             params.pop("clip_level")
-        if params["filters"] is None or method != "learned":
+        if params["filters"] is None or method not in ("learned", "z_guided"):
             params.pop("filters")
-        if params["fixed_point"] is None:
-            params.pop("fixed_point")      # the keys of the float precisions stay what they were
         else:
             params["filters"] = [f.digest for f in params["filters"]]
+        if params["fixed_point"] is None:
+            params.pop("fixed_point")      # the keys of the float precisions stay what they were
+        if self.needs_tof:          # the sensor model's frames, for every method of the run
+            d["tof_frames"] = 1
         d.update(params, pattern=str(get_pattern(pattern)), method=method,
                  version=_cache_version())
         blob = json.dumps(d, sort_keys=True, default=str).encode()

@@ -36,8 +36,9 @@ class Results:
         self.config = merge_params(EvalConfig, self.config, name="config")
         self.rows = as_list(self.rows, "rows", "a list of row dicts")
         for r in self.rows:
-            if not isinstance(r, dict) or set(r) != _ROW_KEYS or not isinstance(
-                    r["value"], (int, float)) or isinstance(r["value"], bool):
+            # "ir_estimated": an optional mark of the rows of a method guided by the Z pixels
+            if not isinstance(r, dict) or set(r) - {"ir_estimated"} != _ROW_KEYS or \
+                    not isinstance(r["value"], (int, float)) or isinstance(r["value"], bool):
                 raise TypeError(f"rows: expected dicts of {', '.join(sorted(_ROW_KEYS))} "
                                 f"(value a number), got {r!r:.80}")
         self.skipped = as_list(self.skipped, "skipped", "a list of (image, reason)")
@@ -74,6 +75,22 @@ class Results:
 
     def images(self):
         return list(dict.fromkeys(r["image"] for r in self.rows))
+
+    def ir_estimated(self, pattern, method):
+        """The images on which ``method`` was guided by a NIR reflectance estimated from the RGB
+        (rows marked ``"ir_estimated"``: :func:`~rgbz_fast.evaluation.evaluate_image`). Such
+        a result has seen the colour it had to find: it is no evidence for the method."""
+        return list(dict.fromkeys(r["image"] for r in self.rows if r.get("ir_estimated")
+                                  and r["pattern"] == pattern and r["method"] == method))
+
+    def _label(self, pattern, method):
+        """The method's label; a guide estimated from the RGB is said in it."""
+        label = METHOD_LABELS.get(method, method)
+        est = self.ir_estimated(pattern, method)
+        if est:
+            label += (f" (NIR estimated from the RGB on {len(est)} of {len(self.images())} "
+                      "images: leaks the answer, not evidence)")
+        return label
 
     def paired(self, pattern, method, metric, baseline="bilinear"):
         """Per-image differences ``method - baseline`` and their mean with a 95 % interval.
@@ -135,8 +152,10 @@ class Results:
 
     def to_csv(self):
         buf = io.StringIO()
-        w = csv.DictWriter(buf, fieldnames=["image", "pattern", "method", "metric", "value"],
-                           lineterminator="\n")
+        fields = ["image", "pattern", "method", "metric", "value"]
+        if any("ir_estimated" in r for r in self.rows):
+            fields.append("ir_estimated")
+        w = csv.DictWriter(buf, fieldnames=fields, lineterminator="\n")
         w.writeheader()
         for r in self.rows:
             w.writerow({**r, "value": repr(r["value"])})
@@ -180,7 +199,7 @@ class Results:
                     mean, std, _ = s[(p, m, k)]
                     cell = f"{mean:.{fmt[k]}f} ± {std:.{fmt[k]}f}"
                     cells.append(f"**{cell}**" if best.get(k) == mean else cell)
-                lines.append(f"| {METHOD_LABELS.get(m, m)} | " + " | ".join(cells) + " |")
+                lines.append(f"| {self._label(p, m)} | " + " | ".join(cells) + " |")
             lines.append("")
         base = self.baseline()
         others = [m for m in self.config.methods if m != base]
@@ -199,7 +218,7 @@ class Results:
                         _, mean, lo, hi = self.paired(p, m, k, base)
                         f = fmt[k]
                         cells.append(f"{mean:+.{f}f} [{lo:+.{f}f}, {hi:+.{f}f}]")
-                    lines.append(f"| {METHOD_LABELS.get(m, m)} | " + " | ".join(cells) + " |")
+                    lines.append(f"| {self._label(p, m)} | " + " | ".join(cells) + " |")
                 lines.append("")
         return "\n".join(lines)
 
@@ -240,5 +259,7 @@ class Results:
                 cells = "".join(f"{s[(p, m, k)][0]:>12.4f} ±{s[(p, m, k)][1]:<7.3f}"
                                 for k in self.config.metrics)
                 out.append(f"{METHOD_LABELS.get(m, m):<{w}}{cells}")
+                if self.ir_estimated(p, m):
+                    out.append(" " * w + self._label(p, m)[len(METHOD_LABELS.get(m, m)) + 1:])
             out.append("")
         return "\n".join(out)

@@ -21,8 +21,8 @@ from .._validate import (check_flag, check_image, check_path, check_processes, c
                          integer_bits, merge_params)
 from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
                   sample_dataset, to_rgbz)
-from ..reconstruction import reconstruct
-from ..simulation import ColourSensor, Scene, apply_optics, simulate
+from ..reconstruction import NEEDS_TOF, reconstruct
+from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ..simulation._scene import srgb_decode
 from ._config import EvalConfig
 from ._results import Results
@@ -43,7 +43,7 @@ def _pattern_for(pname, bayer):
     return pattern
 
 
-def image_frames(img, pattern, config):
+def image_frames(img, pattern, config, nir=None):
     """(rgbz_frame, reference_cfa) of one image (RGB array or raw Bayer frame) and pattern.
 
     A raw Bayer frame keeps its real CFA as the reference and loses its Z sites
@@ -54,20 +54,41 @@ def image_frames(img, pattern, config):
     image is blurred through the lens before the mosaic is sampled (the sensor
     model does it itself for noisy runs); a raw frame has been through a real
     lens already and is left alone.
+
+    A configuration with a method of :data:`rgbz_fast.NEEDS_TOF`
+    (``"z_guided"``) takes every frame from the sensor model, noise-free or
+    not (``simulate(Scene.from_rgb(img, depth=2 m everywhere, ir_reflectance=nir),
+    pattern, ColourSensor(black_level=0), seed=config.seed, noise=config.noise)``),
+    so that its frames carry ToF taps and every method of the run sees the
+    same frames. ``nir``: the registered NIR reflectance of the image, in
+    [0, 1] (:meth:`rgbz_fast.io.ImageSource.load_nir`); without it the scene
+    estimates one from the RGB, and the frame's ``tof.meta["ir_estimated"]``
+    says so.
     """
     if not isinstance(img, RawFrame):
         img = check_image(img, "img", ndim=3)
         if img.shape[2] != 3:
             raise ValueError(f"img: expected an RGB image (rows, cols, 3), got shape {img.shape}")
     config = merge_params(EvalConfig, config, name="config")
-    return _frames(img, get_pattern(pattern), config, {})
+    return _frames(img, get_pattern(pattern), config, {}, nir)
 
 
-def _frames(img, pattern, config, memo):
+def _frames(img, pattern, config, memo, nir=None):
     """:func:`image_frames`, reusing from ``memo`` (one dict per image) the linear image and
     the reference CFAs that the patterns of one image share."""
     if isinstance(img, RawFrame):
+        if config.needs_tof:
+            raise ValueError(f"methods: {sorted(set(config.methods) & NEEDS_TOF)} need the Z "
+                             "pixels' measurements, and a raw camera file has none; evaluate "
+                             "them on RGB (+ NIR) images")
         return to_rgbz(img, _pattern_for(pattern.name, img.pattern.bayer_phase))
+    if config.needs_tof:
+        if "scene" not in memo:
+            memo["scene"] = Scene.from_rgb(img, depth=np.full(img.shape[:2], 2.0),
+                                           ir_reflectance=nir)
+        frame = simulate(memo["scene"], pattern, ColourSensor(black_level=0), seed=config.seed,
+                         noise=config.noise, optics=config.optics)
+        return frame, frame.reference
     if config.noise:
         scene = Scene.from_rgb(img)
         frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
@@ -98,7 +119,10 @@ def _frames(img, pattern, config, memo):
 def evaluate_image(source, config, cache_dir=None, workers=1):
     """Every (pattern, method) of ``config`` on one image: a list of tidy rows.
 
-    Each row: ``{"image", "pattern", "method", "metric", "value"}``. Cached
+    Each row: ``{"image", "pattern", "method", "metric", "value"}``, and for
+    a method of :data:`rgbz_fast.NEEDS_TOF` ``"ir_estimated"``: True when the
+    image has no registered NIR image (``source.nir``), so that its guide was
+    estimated from the very colour it has to find. Cached
     results are reused; new ones are written to ``cache_dir`` atomically. A
     cache entry is keyed by the configuration and by the image's content
     (:meth:`~rgbz_fast.io.ImageSource.fingerprint`), in a folder of its own
@@ -116,20 +140,23 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     def key(p, m):
         return hashlib.sha1(f"{config.key(p, m, source.is_raw)} {content}".encode()).hexdigest()[:20]
 
+    estimated = getattr(source, "nir", None) is None
     for p in config.patterns:
         for m in config.methods:
             cached = _cache_read(cdir, key(p, m)) if cdir else None
             if cached is not None and set(config.metrics) <= set(cached):
-                rows += [_row(source.name, p, m, k, cached[k]) for k in config.metrics]
+                rows += [_row(source.name, p, m, k, cached[k], estimated)
+                         for k in config.metrics]
             else:
                 todo.append((p, m))
     if not todo:
         return rows
     img = source.load()
+    nir = source.load_nir() if config.needs_tof else None
     chain = config.colour_isp()
     memo, renders = {}, []
     for pname in dict.fromkeys(p for p, _ in todo):
-        frame, ref_cfa = _frames(img, get_pattern(pname), config, memo)
+        frame, ref_cfa = _frames(img, get_pattern(pname), config, memo, nir)
         pattern = frame.pattern
         bayer, bd = pattern.bayer_phase, frame.bit_depth
         z = frame.z_mask
@@ -156,7 +183,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
                                      f"{str(exc).removeprefix('reference: ')}") from None
             if cdir:
                 _cache_write(cdir, key(p, m), values)
-            rows += [_row(source.name, p, m, k, values[k]) for k in config.metrics]
+            rows += [_row(source.name, p, m, k, values[k], estimated) for k in config.metrics]
     return rows
 
 
@@ -177,9 +204,12 @@ def _image_metrics(ref, test, config, workers):
     return _colour_metrics(ref, test, config.image_metrics, 255, config.crop, workers)
 
 
-def _row(image, pattern, method, metric, value):
-    return {"image": image, "pattern": pattern, "method": method, "metric": metric,
-            "value": float(value)}
+def _row(image, pattern, method, metric, value, ir_estimated=False):
+    row = {"image": image, "pattern": pattern, "method": method, "metric": metric,
+           "value": float(value)}
+    if method in NEEDS_TOF:
+        row["ir_estimated"] = bool(ir_estimated)
+    return row
 
 
 def _safe(name):

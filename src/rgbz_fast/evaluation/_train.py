@@ -7,10 +7,13 @@ from contextlib import ExitStack
 from dataclasses import replace
 from pathlib import Path
 
+import numpy as np
+
 from .._patterns import get_pattern
 from .._progress import ticking
 from .._validate import check_choice, check_flag
 from ..reconstruction import train
+from ..simulation import Scene, simulate
 from ._config import EvalConfig
 from ._run import dataset_sources, image_frames
 
@@ -22,7 +25,8 @@ ENCODINGS = ("linear", "srgb", "both")
 
 
 def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True, encoding=None,
-                  seed=0, limit=None, name=None, progress=False, **options):
+                  seed=0, limit=None, name=None, progress=False, z_guided=False,
+                  **options):
     """Fit :class:`~rgbz_fast.reconstruction.LearnedFilters` to folders of images.
 
     Every image becomes a frame of ``pattern`` and its reference Bayer CFA
@@ -61,14 +65,26 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
         names joined by ``+``).
     progress : bool
         Show a progress bar.
+    z_guided : bool
+        Fit the filters of ``method="z_guided"`` (:func:`~rgbz_fast.reconstruction.train_z_guided`)
+        instead, on registered RGB + NIR pairs (a folder of ``NNNN_rgb.png`` +
+        ``NNNN_nir.png``; an image without its NIR is refused: a NIR estimated
+        from the RGB leaks the answer). Every pair gives two frames of the
+        targets' protocol, ``simulate(Scene.from_rgb(rgb, depth=2 m everywhere,
+        ir_reflectance=nir), pattern, seed=seed, noise=False)`` and
+        ``noise=True`` (default sensors, 11 bits), so that one fit serves
+        noise-free and noisy frames; ``noise``, ``linearise`` and
+        ``bit_depth`` other than 11 do not apply.
     **options
         Passed to :func:`~rgbz_fast.reconstruction.train` (``radius``,
         ``hash_radius``, ``n_strength``, ``n_coherence``, ``n_spread``,
-        ``ridge``, ``prior``).
+        ``ridge``, ``prior``; with ``z_guided`` those of ``train_z_guided``:
+        ``base``, ``ridge``, ``prior``, ``colour_prior``, ``lam``,
+        ``noise_thresholds``, ``guide``).
 
     Returns
     -------
-    LearnedFilters
+    LearnedFilters (ZGuidedFilters with ``z_guided``)
         With ``meta``: ``training_set``, ``n_images`` (frames: twice the
         images with ``encoding="both"``), ``noise``, ``encoding``
         (``"linear"``, ``"srgb"`` or ``"linear+srgb"``) and the fit's settings.
@@ -85,6 +101,9 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     progress = check_flag(progress, "progress")
     linearise = check_flag(linearise, "linearise")
     noise = check_flag(noise, "noise")
+    if check_flag(z_guided, "z_guided"):
+        return _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, name,
+                               progress, options)
     if encoding is None:
         encoding = "linear" if linearise else "srgb"
     encoding = check_choice(encoding, ENCODINGS, "encoding")
@@ -134,3 +153,39 @@ class _Frames:
                 yield replace(frame, reference=ref)
         if self.passes == 2:            # the second pass read every image: the solve follows
             self.fitting.enter_context(ticking("train: fitting the filters", self.progress))
+
+
+def _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, name, progress,
+                    options):
+    """:func:`train_filters` with ``z_guided``: the RGB-NIR pairs through the sensor model."""
+    if bit_depth != 11 or noise or not linearise:
+        bad = ("bit_depth", bit_depth) if bit_depth != 11 else \
+            ("noise", noise) if noise else ("linearise", linearise)
+        raise ValueError(f"{bad[0]}: z_guided filters are fitted on the sensor model's 11-bit "
+                         f"linear frames, noise-free and noisy together; got {bad[1]!r}")
+    if isinstance(dataset, (str, os.PathLike)):
+        name = name or Path(dataset).resolve().name
+    dataset = dataset_sources(dataset, limit)
+    name = name or ("+".join(s.name for s in dataset) if len(dataset) <= 3 else "custom")
+    bare = [s.name for s in dataset if getattr(s, "nir", None) is None]
+    if bare:
+        raise ValueError(f"dataset: {bare[0]!r} has no registered NIR image (NNNN_rgb.png + "
+                         "NNNN_nir.png); z_guided is fitted on measured NIR only, one estimated "
+                         "from the RGB leaks the answer")
+    from tqdm.auto import tqdm
+
+    fitting = ExitStack()
+
+    def frames():
+        for source in tqdm(dataset, desc="train", unit="img", disable=not progress):
+            img = source.load()
+            scene = Scene.from_rgb(img, depth=np.full(img.shape[:2], 2.0),
+                                   ir_reflectance=source.load_nir())
+            for n in (False, True):
+                yield simulate(scene, pattern, seed=seed, noise=n)
+        fitting.enter_context(ticking("train: fitting the filters", progress))  # pairs read
+
+    meta = {"training_set": name, "seed": seed, "protocol": "sensor model, noise-free + noisy",
+            **options.pop("meta", {})}
+    with fitting:
+        return train(frames(), z_guided=True, meta=meta, **options)

@@ -40,7 +40,9 @@ class ImageSource:
     settings are asked for as entries of ``raw_options``.
     ``max_pixels`` and ``max_bytes`` are the read limits of the file
     (:func:`rgbz_fast.io.read_limits`); a source carries them to the process
-    that loads it.
+    that loads it. ``nir``: the location of a registered near-infrared image
+    of the same scene (a folder's ``NNNN_nir.png`` beside ``NNNN_rgb.png``),
+    read by :meth:`load_nir`.
     """
 
     name: str
@@ -50,6 +52,7 @@ class ImageSource:
     grey: bool = False
     max_pixels: int | None = None
     max_bytes: int | None = None
+    nir: str | None = None
 
     def __post_init__(self):
         for name in ("name", "location"):
@@ -84,6 +87,22 @@ class ImageSource:
         sample_bits(img, self.location, name="dataset", settable=False)  # 8/16 bits, floats
         return img
 
+    def load_nir(self):
+        """The registered NIR image as float64 reflectance in [0, 1] (the file's values over
+        its type's maximum, the first channel of a multi-channel file), or None without one."""
+        if self.nir is None:
+            return None
+        img = np.asarray(read_image(self.nir, "dataset", max_pixels=self.max_pixels,
+                                    max_bytes=self.max_bytes))
+        if img.ndim == 3:
+            img = img[..., 0]
+        if img.ndim != 2:
+            raise ParameterError("dataset", f"{self.nir}: expected a one-channel NIR image, "
+                                            f"got shape {img.shape}")
+        if np.issubdtype(img.dtype, np.integer):
+            return img.astype(np.float64) / float(np.iinfo(img.dtype).max)
+        return np.clip(img.astype(np.float64), 0.0, 1.0)
+
     def fingerprint(self):
         """SHA-256 of what the image is: the file's bytes (with the raw options and the
         grey flag), or the name of a scikit-image sample. Part of the evaluation's cache
@@ -97,6 +116,8 @@ class ImageSource:
             h.update(f"{self.location} {skimage.__version__}".encode())
         else:
             h.update(read_file(self.location, "dataset", max_bytes=self.max_bytes))
+        if self.nir is not None:
+            h.update(read_file(self.nir, "dataset", max_bytes=self.max_bytes))
         h.update(repr((sorted(self.raw_options), self.is_raw, self.grey)).encode())
         return h.hexdigest()
 
@@ -175,6 +196,11 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
         The folder does not exist or holds no image file, ``limit`` is not
         a positive integer, or two files have the same name stem
         (``a.png`` and ``a.tif``: their results would be one image's).
+
+    A registered RGB + NIR pair, ``NNNN_rgb.<ext>`` and ``NNNN_nir.<ext>``
+    (the layout of ``../shared/data/rgbnir``), is one source named ``NNNN``
+    whose :attr:`ImageSource.nir` is the NIR file: the guide of
+    ``method="z_guided"``, never an image of its own.
     """
     grey = check_flag(grey, "grey")
     if limit is not None and (isinstance(limit, bool) or not isinstance(limit, (int, np.integer))
@@ -193,6 +219,11 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
         raise ParameterError("dataset", f"no image files in {p} (looked for "
                                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")
     raw_options = check_raw_options(raw_options)
+    nir = {f.name[:-len("_rgb" + f.suffix)]: f.with_name(f.name[:-len("_rgb" + f.suffix)]
+                                                         + "_nir" + f.suffix)
+           for f in files if f.stem.endswith("_rgb")}
+    nir = {k: v for k, v in nir.items() if v.is_file()}
+    files = [f for f in files if not (f.stem.endswith("_nir") and f.stem[:-4] in nir)]
     files = files[:limit] if limit else files
     out = []
     common = dict(grey=grey, max_pixels=max_pixels, max_bytes=max_bytes)
@@ -202,6 +233,8 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
             out.append(ImageSource(f.stem, str(f), tuple(sorted(
                 (k, tuple(v) if isinstance(v, list) else v) for k, v in opts.items())), raw=True,
                 **common))
+        elif f.stem.endswith("_rgb") and f.stem[:-4] in nir:
+            out.append(ImageSource(f.stem[:-4], str(f), nir=str(nir[f.stem[:-4]]), **common))
         else:
             out.append(ImageSource(f.stem, str(f), **common))
     stems = [s.name for s in out]

@@ -384,8 +384,9 @@ def _json_default(v):
 def _load_tof(z, h):
     sensor = ToFSensor(**{k: tuple(v) if isinstance(v, list) else v
                           for k, v in h["sensor"].items()})
+    # a file that does not say whether the scene's NIR was estimated: unknown (None), not False
     return ToFTaps(taps=z["tof_taps"], frequencies=z["tof_frequencies"],
                    sites=(z["tof_sites_rows"], z["tof_sites_cols"]), block=h["block"],
                    bit_depth=h["bit_depth"], depth_true=z["tof_depth_true"],
                    valid=z["tof_valid"], saturated=z["tof_saturated"], sensor=sensor,
-                   shape=tuple(h["shape"]), meta=h.get("meta", {}))
+                   shape=tuple(h["shape"]), meta={"ir_estimated": None, **h.get("meta", {})})

@@ -212,7 +212,7 @@ class ColourISP:
 
     # ------------------------------------------------------------------ run
     def run(self, frame, *, pattern=None, bit_depth=None, black_level=None, gains=None,
-            reference=False, defects=None, workers=None, return_stages=False):
+            reference=False, defects=None, workers=None, return_stages=False, nir=None):
         """Run the chain: raw frame -> 8- or 16-bit sRGB image.
 
         Parameters
@@ -241,6 +241,11 @@ class ColourISP:
             Threads of the C kernels (None or -1: all cores).
         return_stages : bool
             Also return a dict of every intermediate result.
+        nir : ndarray, optional
+            The guide of a reconstruction method of :data:`rgbz_fast.NEEDS_TOF`
+            (``"z_guided"``) for a frame without ToF taps
+            (:func:`rgbz_fast.reconstruct`); a :class:`~rgbz_fast.RawFrame`'s
+            taps (``frame.tof``) are passed through by default.
 
         Returns
         -------
@@ -276,8 +281,9 @@ class ColourISP:
                                       known=defects, return_mask=True)
         t1 = time.perf_counter()
         seconds["defect_correction"] = t1 - t0
-        full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd,
-                            workers=workers) if pat.has_z else fixed
+        tof = frame.tof if isinstance(frame, RawFrame) and not reference else None
+        full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd, workers=workers,
+                            tof=tof, nir=nir) if pat.has_z else fixed
         seconds["reconstruction"] = time.perf_counter() - t1
         out, stages = self._render(full, pat.bayer_pattern(), black, white, gains, workers,
                                    return_stages, matrix)

@@ -44,7 +44,8 @@ class Reconstruction:
     ----------
     method : str
         ``"sg"`` (default), ``"edi_line"``, ``"edi_central"``, ``"bi"``,
-        ``"bilinear"`` or ``"edi_rows"``.
+        ``"bilinear"``, ``"edi_rows"``, ``"learned"`` or ``"z_guided"`` (guided by the
+        frame's ToF taps: :meth:`ColourISP.run` passes them through).
     params : ReconstructParams
         How the kernel computes (precision, sigma floors, SG mode, exponential,
         domain, clip level), checked when the stage is made.
@@ -179,13 +180,17 @@ def _prepare_cfa(cfa, pattern, name="cfa"):
     return data, pattern
 
 
-def fill_missing(cfa, pattern, params=None, *, bit_depth=11, workers=None, **overrides):
+def fill_missing(cfa, pattern, params=None, *, bit_depth=11, workers=None, tof=None, nir=None,
+                 **overrides):
     """Reconstruct the colour missing at the Z sites: RGB-Z CFA -> full Bayer CFA.
 
     Delegates to :func:`rgbz_fast.reconstruct`. A pattern without Z sites
     returns a copy of its input (the reference path). ``params`` is a
     :class:`Reconstruction` (default ``Reconstruction()``); keyword
-    ``overrides`` replace its fields (``method="bi"``).
+    ``overrides`` replace its fields (``method="bi"``). ``tof`` (the frame's
+    ToF taps) and ``nir`` are the guide of the methods of
+    :data:`rgbz_fast.NEEDS_TOF` (:func:`rgbz_fast.reconstruct`); the other
+    methods do not read them.
 
     Returns
     -------
@@ -197,7 +202,7 @@ def fill_missing(cfa, pattern, params=None, *, bit_depth=11, workers=None, **ove
     if not pattern.has_z:
         return data.copy()
     return reconstruct(data, params.method, params=params.params, pattern=pattern,
-                       bit_depth=bit_depth, workers=workers)
+                       bit_depth=bit_depth, workers=workers, tof=tof, nir=nir)
 
 
 def _black_white(black_level, white_level):

@@ -372,7 +372,7 @@ _SHIPPED = []
 def _shipped():
     """The filters shipped in reconstruction/data/ (read once)."""
     if not _SHIPPED:
-        _SHIPPED.extend(LearnedFilters.load(p) for p in sorted(_DATA.glob("*.npz")))
+        _SHIPPED.extend(LearnedFilters.load(p) for p in sorted(_DATA.glob("learned_*.npz")))
     return tuple(_SHIPPED)
 
 

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from .._frame import RawFrame
-from .._validate import check_int, check_number
+from .._validate import check_flag, check_int, check_number
 from ._learned_hash import N_ANGLES, gather_windows, hash_buckets, hash_features, learned_geometry
 
 __all__ = ["train"]
@@ -19,7 +19,7 @@ _SPREAD_CAP = 1e6
 
 
 def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spread=3,
-          ridge=1e-3, prior=50.0, meta=None):
+          ridge=1e-3, prior=50.0, meta=None, z_guided=False, **z_options):
     """Fit :class:`LearnedFilters` to frames whose true colour at the Z sites is known.
 
     Parameters
@@ -48,10 +48,16 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
         on all of them (rare buckets merge into the common filter).
     meta : dict, optional
         Extra metadata kept with the filters (the training set's name...).
+    z_guided : bool
+        True: fit the filters of ``method="z_guided"`` instead
+        (:func:`~rgbz_fast.reconstruction.train_z_guided`, with ``ridge``,
+        ``prior``, ``meta`` and its own options ``**z_options``; the taps and
+        hash are those of its ``base`` learned filters, so ``radius`` ...
+        ``n_spread`` keep their defaults).
 
     Returns
     -------
-    LearnedFilters
+    LearnedFilters (ZGuidedFilters with ``z_guided``)
 
     Notes
     -----
@@ -79,6 +85,18 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
     >>> f.n_buckets, f.meta["n_images"]
     (8, 1)
     """
+    if check_flag(z_guided, "z_guided"):
+        from ._z_guided_fit import train_z_guided
+        given = [k for k, v in (("radius", radius), ("hash_radius", hash_radius),
+                                ("n_strength", n_strength), ("n_coherence", n_coherence),
+                                ("n_spread", n_spread)) if v != 3]
+        if given:
+            raise ValueError(f"{given[0]}: z_guided filters take the taps and hash of their "
+                             "base learned filters; pass base= instead")
+        return train_z_guided(frames, ridge=ridge, prior=prior, meta=meta, **z_options)
+    if z_options:
+        raise TypeError(f"{next(iter(z_options))}: not an option of train() without "
+                        "z_guided=True")
     from ._learned import LearnedFilters
     radius = check_int(radius, "radius", lo=2, hi=5)
     hash_radius = check_int(hash_radius, "hash_radius", lo=2, hi=radius)

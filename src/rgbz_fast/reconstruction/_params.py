@@ -6,7 +6,7 @@ from dataclasses import asdict, dataclass, fields, replace
 
 from .._validate import check_choice, check_number, merge_params
 from ._fixed_config import FixedPointConfig
-from ._learned import check_filters
+from ._z_guided import check_any_filters
 
 __all__ = ["ReconstructParams", "PRECISIONS", "EXP_CHOICES", "SG_MODES", "DOMAINS"]
 
@@ -84,7 +84,9 @@ class ReconstructParams:
         files are read when the parameters are made). With several, the one
         fitted for the frame's pattern and bit depth is used. None (default):
         the filters shipped for the frame's pattern and bit depth
-        (:func:`~rgbz_fast.reconstruction.default_filters`).
+        (:func:`~rgbz_fast.reconstruction.default_filters`). ``method="z_guided"``
+        takes :class:`~rgbz_fast.reconstruction.ZGuidedFilters` (or their
+        files) from the same field; each method picks its own kind.
     fixed_point : FixedPointConfig, dict or None
         ``precision="fixed"`` only: the widths and table sizes of the
         fixed-point model (:class:`~rgbz_fast.reconstruction.FixedPointConfig`,
@@ -128,7 +130,7 @@ class ReconstructParams:
         put(self, "exp", check_choice(self.exp, EXP_CHOICES, "exp"))
         put(self, "domain", check_choice(self.domain, DOMAINS, "domain"))
         put(self, "clip_level", check_clip_level(self.clip_level))
-        put(self, "filters", check_filters(self.filters))
+        put(self, "filters", check_any_filters(self.filters))
         if self.fixed_point is not None or self.precision == "fixed":
             put(self, "fixed_point", FixedPointConfig.build(self.fixed_point))
         if self.precision == "fixed":

@@ -19,14 +19,17 @@ from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._validate import check_choice, check_workers, kernel_threads
 from ._fixed import check_fixed_call, run_fixed
 from ._learned import resolve_filters
+from ._z_guided import guide_grid, learned_only, resolve_z_filters
+from ._z_guided_kernel import run_z_guided
 from ._params import ReconstructParams
 from ._plans import METHODS as PLAN_METHODS
 from ._plans import build_plans, check_layout
 
 __all__ = ["reconstruct", "METHODS"]
 
-#: every method of :func:`reconstruct`: the plan interpreter's, then the learned filters
-METHODS = (*PLAN_METHODS, "learned")
+#: every method of :func:`reconstruct`: the plan interpreter's, then the learned filters,
+#: then the learned filters guided by the Z pixels' amplitude (``NEEDS_TOF``)
+METHODS = (*PLAN_METHODS, "learned", "z_guided")
 
 check_layout(_kernels.plan_layout())
 
@@ -98,7 +101,7 @@ def _check_out(out, data):
 
 
 def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None, workers=None,
-                out=None, **options):
+                out=None, nir=None, tof=None, **options):
     """Fill in the colour missing at every Z site: RGB-Z raw frame -> full Bayer CFA.
 
     Parameters
@@ -106,7 +109,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     frame : RawFrame or ndarray, shape (rows, cols)
         The raw frame. A plain array needs ``pattern`` (and ``bit_depth`` if
         not 11). uint8, uint16, float32 and float64 are read directly.
-    method : {"sg", "edi_line", "edi_central", "bi", "bilinear", "edi_rows", "learned"}
+    method : {"sg", "edi_line", "edi_central", "bi", "bilinear", "edi_rows", "learned", "z_guided"}
         * ``"bilinear"``: mean of the same-colour known pixels of the 5x5
           window (the baseline).
         * ``"bi"``: bilateral interpolation, eqs. 2-5 (sigma = 1).
@@ -124,6 +127,10 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
           gradient hash), fitted by least squares on a training set
           (``filters``; by default the ones shipped for Mask1 and Mask2,
           fitted on CBSD68). docs/guide/learned.md.
+        * ``"z_guided"``: ``"learned"`` plus a few weights on the NIR
+          amplitude the Z pixels measured around the site (the frame's ToF
+          taps, or ``nir``); docs/guide/z_guided.md. Its filters are given
+          with ``filters`` (:func:`~rgbz_fast.reconstruction.train_z_guided`).
     params : ReconstructParams, optional
         How to compute: precision, the sigma floors of eq. 7, the SG mode, the
         exponential, the domain, the clip level, the learned filters (see
@@ -145,6 +152,15 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         to it. (Reusing a buffer bounds the memory of a stream of frames; it
         was not measurably faster than a new output on Linux, 12-megapixel
         frames: docs/reports/benchmarks.md.)
+    nir : ndarray, shape (rows, cols), optional
+        ``"z_guided"`` only (other methods do not read it): the NIR image the
+        Z pixels saw, any positive scale, read at the Z sites only (the mean
+        of the four sites of a 2x2 Z pixel). Default: the amplitude of the
+        frame's ToF taps (``frame.tof``); a frame without taps needs it.
+    tof : ToFTaps, optional
+        ``"z_guided"`` only: the ToF taps of a plain-array frame (what a
+        :class:`~rgbz_fast.RawFrame` carries as ``frame.tof``; an ISP stage
+        that works on the CFA alone passes them so). Default: ``frame.tof``.
     **options
         Fields of :class:`~rgbz_fast.ReconstructParams` (``precision="float64"``,
         ``sigma_rel=0``, ``filters="my_filters.npz"``, ...), applied over
@@ -222,12 +238,23 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         check_fixed_call(src, pattern, method)
         return run_fixed(src, out, pattern, method, params, bd)
     if method == "learned":
-        filters = resolve_filters(params.filters, pattern)
+        filters = resolve_filters(learned_only(params.filters), pattern)
         if clip is not None and _reaches(src, pattern, clip):
             raise ValueError("clip_level: method 'learned' has no clipped-pixel rule; the frame "
                              f"reaches the clip level {clip:g}, use another method or "
                              "clip_level=None")
         run_learned(src, out, pattern, filters, params.precision, bd, nthreads)
+        return out
+    if method == "z_guided":
+        filters = resolve_z_filters(params.filters, pattern, bd)
+        if tof is None and isinstance(frame, RawFrame):
+            tof = frame.tof
+        grids = guide_grid(src.shape, pattern, nir=nir, tof=tof)
+        if clip is not None and _reaches(src, pattern, clip):
+            raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
+                             f"frame reaches the clip level {clip:g}, use another method or "
+                             "clip_level=None")
+        run_z_guided(src, out, pattern, filters, grids, params.precision, bd, nthreads)
         return out
     plan_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
     if clip is not None and not _reaches(src, pattern, clip):

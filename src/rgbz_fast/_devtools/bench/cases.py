@@ -22,7 +22,7 @@ __all__ = ["make_rgb", "load_numpy_reference", "tof_taps", "build_cases", "case_
 FULL_SHAPE = (3000, 4000)     # rows, cols: a 4000x3000 (12 Mpix) frame
 #: the paper's methods, then the library's learned filters (the shipped ones of each pattern;
 #: no NumPy reference row: tests/_reference/learned.py is a test, not a benchmark)
-RECON_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
+RECON_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned", "z_guided")
 PATTERNS = ("mask1", "mask2")
 PRECISIONS = ("float32", "float64")
 TOF_FREQS = (80e6, 100e6, 120e6)
@@ -97,14 +97,23 @@ def build_cases(shape, ref_crop, ref=None):
             frames[pat] = rz.mosaic(rgb, pat)
         return frames[pat]
 
+    def tof_frame(pat):
+        """The scene through the sensor model (a plane at 2 m): a frame with ToF taps, for the
+        methods of NEEDS_TOF (the speed of z_guided includes demodulating the amplitude)."""
+        if ("tof", pat) not in frames:
+            from ...simulation import Scene, simulate
+            frames["tof", pat] = simulate(Scene.from_rgb(rgb, depth=np.full(shape, 2.0)), pat,
+                                          seed=0, noise=True)
+        return frames["tof", pat]
+
     cr = (ref_crop[0] // 12 * 12, ref_crop[1] // 4 * 4)   # fits every pattern period
     cases = []
 
     def recon_case(method, pat, prec, exp="auto"):
         def build():
-            fr = frame(pat)
+            fr = tof_frame(pat) if method in rz.NEEDS_TOF else frame(pat)
             ref_fn = None
-            if ref is not None and exp == "auto" and method != "learned":
+            if ref is not None and exp == "auto" and method not in ("learned", "z_guided"):
                 crop = np.ascontiguousarray(fr.data[:cr[0], :cr[1]])
                 pattern = fr.pattern
 

@@ -1,0 +1,121 @@
+"""Slow NumPy reference of the z_guided reconstruction (method "z_guided").
+
+Written from docs/guide/z_guided.md, apart from ``rgbz_fast.reconstruction._z_guided``
+and csrc/z_guided.c: the window, its taps and the hash come from the channel codes of
+the gathered window as in :mod:`_reference.learned` (an arctangent for the orientation,
+a root and a division for the coherence); the guide features of each site from its own
+Z pixel and the 3 x 3 around it, the colour means from the pixels of the box
+gathered with the border rule of every kernel. The amplitude grid and its noise
+variance (``rgbz_fast.reconstruction._z_guided.guide_grid``, which the tests of the
+amplitude check) and the fitted numbers are read from the library. Arithmetic is
+float64; the result is clipped to [0, maxval] but not rounded.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .learned import STEPS, Z
+from .reconstruction import gather, shift_index, window_offsets
+
+
+def _colour_mean(data, chan, t, y0, x0, b, period):
+    """Mean of the pixels of colour t in the box of the Z pixel at (y0, x0) (size b) and the
+    two pixels around it: (n,) for arrays y0, x0."""
+    P, Q = period
+    dy, dx = np.mgrid[-2:b + 2, -2:b + 2]
+    yy = shift_index(y0[:, None] + dy.ravel()[None, :], data.shape[0], P)
+    xx = shift_index(x0[:, None] + dx.ravel()[None, :], data.shape[1], Q)
+    keep = chan[yy, xx] == t
+    return np.where(keep, data[yy, xx], 0.0).sum(1) / keep.sum(1)
+
+
+def reference_z_guided(data, filters, grid, var):
+    """Every pixel of ``data`` (colour sites copied, Z sites reconstructed), float64."""
+    lf = filters.base
+    pattern = filters.pattern
+    P, Q = pattern.period
+    R, hr = lf.radius, lf.hash_radius
+    offsets = window_offsets(R, R)
+    chan = pattern.channel_map(data.shape)
+    target = pattern.bayer_pattern().channel_map(data.shape)
+    data = data.astype(np.float64)
+    out = data.copy()
+    gy, gx = grid.shape
+    z = np.argwhere(pattern.tile == Z)
+    zr, zc = z.min(axis=0)
+    b = 1 if len(z) == 1 else 2
+    phase = 0
+    for r in range(P):
+        for c in range(Q):
+            if pattern.tile[r, c] != Z:
+                continue
+            ys, xs = np.mgrid[r:data.shape[0]:P, c:data.shape[1]:Q]
+            ys, xs = ys.ravel(), xs.ravel()
+            vals, codes = gather(data, chan, ys, xs, offsets, (P, Q))
+            known = codes[0] != Z
+            taps = np.flatnonzero(known)
+            X = vals[:, taps]
+            tap_off = [tuple(offsets[i]) for i in taps]
+            E = []
+            by_colour = {0: [], 1: [], 2: []}          # horizontal and vertical pairs' squared
+            for sy, sx in STEPS:                        # differences, by colour
+                terms = []
+                for i, (dy, dx) in enumerate(tap_off):
+                    other = (dy + sy, dx + sx)
+                    if (other in tap_off and max(abs(dy), abs(dx), abs(other[0]),
+                                                 abs(other[1])) <= hr
+                            and codes[0, taps[i]] == codes[0, taps[tap_off.index(other)]]):
+                        terms.append((X[:, i] - X[:, tap_off.index(other)]) ** 2)
+                        if sy == 0 or sx == 0:
+                            by_colour[int(codes[0, taps[i]])].append(terms[-1])
+                E.append(np.mean(terms, axis=0))
+            Ec = np.array([np.mean(by_colour[c], axis=0) for c in range(3)])
+            with np.errstate(invalid="ignore", divide="ignore"):
+                spread = Ec.max(0) / Ec.min(0)          # inf: a channel without texture
+            spread[Ec.max(0) == 0] = 0.0                 # no texture at all: the lowest level
+            eh, ev, ed1, ed2 = E
+            a = eh - ev
+            bb = (ed1 - ed2) / 2
+            t = (eh + ev) / 2 + (ed1 + ed2) / 4
+            octant = np.floor((np.degrees(np.arctan2(bb, a)) + 22.5) / 45.0).astype(int) % 8
+            with np.errstate(invalid="ignore", divide="ignore"):
+                coherence = np.sqrt(a * a + bb * bb) / t
+            strength = (t[:, None] > lf.strength_thresholds[phase][None, :]).sum(1)
+            coh = (coherence[:, None] > lf.coherence_thresholds[phase][None, :]).sum(1)
+            spr = (spread[:, None] > lf.spread_thresholds[phase][None, :]).sum(1)
+            bucket = ((octant * lf.n_strength + strength) * lf.n_coherence + coh) \
+                * lf.n_spread + spr
+            # the guide: the site's Z pixel (its tile) and the 3 x 3 around it, clamped
+            tc = int(target[r, c])
+            base_taps = [i for i, (dy, dx) in enumerate(tap_off)
+                         if abs(dy) <= 2 and abs(dx) <= 2 and codes[0, taps[i]] == tc]
+            base = X[:, base_taps].mean(1)
+            iy, ix = ys // P, xs // Q
+            N, V, C = [], [], []
+            for dy in (-1, 0, 1):
+                for dx in (-1, 0, 1):
+                    jy, jx = np.clip(iy + dy, 0, gy - 1), np.clip(ix + dx, 0, gx - 1)
+                    N.append(grid[jy, jx])
+                    V.append(var[jy, jx])
+                    C.append(_colour_mean(data, chan, tc, zr + P * jy, zc + Q * jx, b, (P, Q)))
+            N, V, C = (np.stack(v, 1) for v in (N, V, C))
+            mean_n = N.mean(1)
+            lit = mean_n > 0
+            safe = np.where(lit, mean_n, 1.0)
+            u = np.where(lit[:, None], N / safe[:, None] - 1, 0.0)
+            nu = np.where(lit, V.mean(1) / safe ** 2, 1.0)
+            U = (u ** 2).sum(1)
+            share = U / (U + 9 * nu + np.finfo(float).tiny)
+            dC = C - C.mean(1)[:, None]
+            slope = (u * dC).sum(1) / (U + 9 * (filters.lam + nu))
+            G = np.hstack([base[:, None] * share[:, None] * u,
+                           (C.mean(1) + slope * u[:, 4] - base)[:, None],
+                           (slope * u[:, 4] - dC[:, 4])[:, None]])
+            level = (nu[:, None] > filters.noise_thresholds[None, :]).sum(1)
+            full = level * lf.n_buckets + bucket
+            est = (X * filters.weights[phase][full][:, :len(taps)]).sum(1) + \
+                (G * filters.guide_weights[phase][full]).sum(1)
+            out[ys, xs] = np.clip(est, 0, (1 << lf.bit_depth) - 1)
+            phase += 1
+    return out

@@ -1,0 +1,107 @@
+"""method="z_guided": the C kernel (csrc/z_guided.c) against tests/_reference/z_guided.py.
+
+Tolerances (stated here, asserted below):
+
+* float64 precision: the kernel, the library's NumPy path (ZGuidedFilters.reconstruct)
+  and the reference agree to 1e-9 DN (relative 1e-12) at every Z site; integer frames:
+  C == floor(ref + 0.5) (+-1 at exact .5 ties);
+* float32 precision: within 2e-3 DN of the float64 reference (times the frame's scale in
+  DN: 2e-3 of 2047 is float32's rounding of a few terms) at all but MAX_F32_FLIPS of the
+  Z sites: a float32 hash term on a bucket threshold lands in the neighbouring bucket.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import rgbz_fast as rz
+from _reference.z_guided import reference_z_guided
+from rgbz_fast.reconstruction import train, train_z_guided
+from rgbz_fast.reconstruction._z_guided import guide_grid
+from rgbz_fast.simulation import Scene, simulate
+
+MAX_F32_FLIPS = 1e-3
+
+
+def _scene(shape, seed):
+    """Random colour and NIR with some shared texture, a plane at 2 m."""
+    rng = np.random.default_rng(seed)
+    tex = np.kron(rng.random((shape[0] // 2 + 1, shape[1] // 2 + 1)),
+                  np.ones((2, 2)))[:shape[0], :shape[1]]
+    img = np.clip(0.5 * tex[..., None] + 0.5 * rng.random(shape + (3,)), 0, 1)
+    return Scene(img, depth=np.full(shape, 2.0), ir_reflectance=0.1 + 0.8 * tex)
+
+
+@pytest.fixture(scope="module")
+def fitted():
+    """Per mask: z_guided filters (on learned filters fitted here) with both noise levels."""
+    out = {}
+    for p in ("mask1", "mask2"):
+        frames = [simulate(_scene((60, 72), s), p, seed=s, noise=n) for s in (1, 2)
+                  for n in (False, True)]
+        base = train(frames, n_strength=2, n_coherence=2)
+        out[p] = train_z_guided(frames, base=base)
+    return out
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+@pytest.mark.parametrize("shape", [(60, 76), (13, 17), (6, 6)])
+@pytest.mark.parametrize("noise", [False, True])
+def test_float64_matches_reference(fitted, pattern, shape, noise):
+    f = fitted[pattern]
+    frame = simulate(_scene(shape, 7), pattern, seed=3, noise=noise)
+    data = frame.data.astype(np.float64)
+    grids = guide_grid(data.shape, frame.pattern, tof=frame.tof)
+    want = reference_z_guided(data, f, *grids)
+    z = frame.z_mask
+    for workers in (1, 2):
+        got = rz.reconstruct(data, "z_guided", pattern=pattern, tof=frame.tof, filters=f,
+                             precision="float64", workers=workers)
+        np.testing.assert_allclose(got[z], want[z], rtol=1e-12, atol=1e-9)
+        assert np.array_equal(got[~z], data[~z])
+    np.testing.assert_allclose(np.clip(f.reconstruct(data, grids), 0, 2047)[z], want[z],
+                               rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+def test_nir_guide_and_integer_frames(fitted, pattern):
+    f = fitted[pattern]
+    frame = simulate(_scene((48, 60), 9), pattern, seed=4, noise=True)
+    nir = np.random.default_rng(1).random(frame.shape) * 50
+    grids = guide_grid(frame.shape, frame.pattern, nir=nir)
+    want = np.floor(reference_z_guided(frame.data, f, *grids) + 0.5)
+    got = rz.reconstruct(frame, "z_guided", filters=f, nir=nir, precision="float64")
+    assert got.dtype == frame.data.dtype
+    assert np.abs(got.astype(np.float64) - want).max() <= 1
+    data = frame.data.astype(np.float32)
+    out = rz.reconstruct(data, "z_guided", pattern=pattern, bit_depth=11, nir=nir, filters=f,
+                         precision="float64")
+    ref = reference_z_guided(data, f, *guide_grid(data.shape, frame.pattern, nir=nir))
+    z = frame.z_mask
+    assert out.dtype == np.float32        # the float64 result rounded to float32
+    np.testing.assert_allclose(out[z], ref[z], rtol=2.0**-24, atol=1e-9)
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+@pytest.mark.parametrize("dtype", [np.float32, np.uint16])
+def test_float32_within_tolerance(fitted, pattern, dtype):
+    f = fitted[pattern]
+    frame = simulate(_scene((96, 120), 11), pattern, seed=5, noise=True)
+    data = frame.data.astype(dtype)
+    got = rz.reconstruct(data, "z_guided", pattern=pattern, tof=frame.tof, filters=f,
+                         precision="float32", workers=2)
+    want = reference_z_guided(data, f, *guide_grid(data.shape, frame.pattern, tof=frame.tof))
+    z = frame.z_mask
+    diff = np.abs(got[z].astype(np.float64) - (np.floor(want[z] + 0.5) if dtype == np.uint16
+                                               else want[z]))
+    assert np.mean(diff > (1 if dtype == np.uint16 else 2e-3)) <= MAX_F32_FLIPS
+    assert got.dtype == dtype
+
+
+def test_threads_give_identical_results(fitted):
+    f = fitted["mask2"]
+    frame = simulate(_scene((120, 200), 5), "mask2", seed=6, noise=True)
+    one = rz.reconstruct(frame, "z_guided", filters=f, workers=1, precision="float32")
+    two = rz.reconstruct(frame, "z_guided", filters=f, workers=2, precision="float32")
+    assert np.array_equal(one, two)
