@@ -83,6 +83,7 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     """
     pattern = get_pattern(pattern)
     progress = check_flag(progress, "progress")
+    linearise = check_flag(linearise, "linearise")
     if encoding is None:
         encoding = "linear" if linearise else "srgb"
     encoding = check_choice(encoding, ENCODINGS, "encoding")
