@@ -145,16 +145,35 @@ class EvalConfig:
                              "linearise=False is a noise-free protocol")
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
-        if "learned" in self.methods:
-            # filters for every pattern (shipped or given), before any image
-            for p in self.patterns:
-                resolve_filters(self.params.filters, get_pattern(p))
+        # which method reconstructs which pattern, before any image: a pair that does not
+        # apply is left out of the run with its reason (:meth:`not_applicable`); a run in
+        # which no pair applies fails with the first reason
+        skips = {}
+        for p in self.patterns:
+            for m in self.methods:
+                why = _does_not_apply(get_pattern(p), m, self.params)
+                if why is not None:
+                    skips[(p, m)] = why
+        if len(skips) == len(self.patterns) * len(self.methods):
+            raise next(iter(skips.values()))
+        object.__setattr__(self, "_skips", skips)
         if self.optics is not None and not isinstance(self.optics, Optics):
             raise TypeError(f"optics: expected an Optics or None, got "
                             f"{type(self.optics).__name__}")
         if self.optics is not None and not self.linearise:
             raise ValueError("optics: a lens blurs linear light; it needs linearise=True (the "
                              "8-bit sRGB protocol mosaics the encoded values)")
+
+    def not_applicable(self):
+        """``{(pattern, method): reason}`` of the pairs this configuration leaves out: the
+        method does not reconstruct the pattern (``edi_rows`` off row patterns, ``learned``
+        without filters that fit it). ``reason`` is the ValueError the reconstruction would
+        raise; the other pairs run."""
+        return dict(self._skips)
+
+    def applies(self, pattern, method):
+        """Whether ``method`` runs on ``pattern`` in this configuration."""
+        return (pattern, method) not in self._skips
 
     @property
     def image_metrics(self):
@@ -227,6 +246,25 @@ class EvalConfig:
         return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))
+
+
+def _does_not_apply(pattern, method, params):
+    """The ValueError ``reconstruct(frame, method, params=params)`` raises for any frame of
+    ``pattern`` because of the pattern alone, or None when the method applies."""
+    from ..reconstruction._learned import learned_geometry
+    from ..reconstruction._reconstruct import _plans_for
+
+    try:
+        if pattern.bayer_phase is None:
+            pattern.bayer_tile()                 # the error that names the missing phase
+        if method == "learned":
+            learned_geometry(pattern)
+            resolve_filters(params.filters, pattern)
+        else:
+            _plans_for(pattern, method, params.sg_mode, params.domain)
+    except ValueError as exc:
+        return exc
+    return None
 
 
 def _cache_version():
