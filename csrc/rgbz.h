@@ -57,7 +57,8 @@ typedef enum rgbz_type {
  */
 #define RGBZ_PRECISIONS(X) \
     X(f32, FLOAT32)        \
-    X(f64, FLOAT64)
+    X(f64, FLOAT64)        \
+    X(fixed, FIXED)
 
 #define RGBZ_P_MEMBER_(s, NAME) RGBZ_P_##NAME,
 typedef enum rgbz_precision {
@@ -160,6 +161,9 @@ typedef struct {
                              difference of the weights between two of them is skipped
                              (docs/guide/raw.md, "Near clipping"). Needs mask1_fast = 0. */
     double clip_level;    /* in the frame's DN; read only when clip_on */
+    /* precision FIXED only (NULL for the others): the fixed-point model's configuration,
+       integer constants per plan, tables and line buffers (rgbz_fixed_args, hw_recon.h) */
+    const struct rgbz_fixed_args *fixed;
 } rgbz_params;
 
 /* sizeof(rgbz_plan) and the offsets of its fields, in declaration order (RGBZ_PLAN_FIELDS
@@ -173,8 +177,10 @@ int rgbz_plan_layout(int64_t *out, int n);
 int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out);
 
 /*
- * rgbz_reconstruct_<precision> (f32, f64: one per entry of RGBZ_PRECISIONS, all of this
- * type): reconstruct the missing colour of every Z site in that precision.
+ * rgbz_reconstruct_<precision> (f32, f64, fixed: one per entry of RGBZ_PRECISIONS, all of
+ * this type): reconstruct the missing colour of every Z site in that precision. fixed is
+ * the integer streaming model of hw_recon.h: integer frames, params->fixed, no counters
+ * (its operations are counted from the plans, rgbz_fast.hardware).
  *   src, dst: rows x cols frames of element type `in_type` (an rgbz_type; dst fully
  *             written: colour sites copied, Z sites reconstructed, clipped, rounded
  *             half up for integer types). src and dst must not overlap.

@@ -34,7 +34,8 @@
  * fused type and selects the entry points of a precision with one explicit switch
  * (_kernels_of).
  *
- * Adding a precision (say an integer fixed-point one, `fixed`):
+ * Adding a precision (as the integer fixed-point one, `fixed`, is: hw_recon.c defines
+ * rgbz_reconstruct_fixed, its settings are rgbz_params.fixed, it has no learned kernel):
  *   1. one line in RGBZ_PRECISIONS (rgbz.h): it gives the enum member RGBZ_P_FIXED and
  *      declares rgbz_reconstruct_fixed and rgbz_learned_fixed with the signatures every
  *      precision shares (rgbz_reconstruct_fn, rgbz_learned_fn; a precision's own
@@ -44,7 +45,7 @@
  *      rgbz_ops.h and a file recon_<suffix>.c as recon_f32.c; its kernels are then the
  *      templates' instances.) An entry point it does not have yet stays undefined and
  *      unreferenced;
- *   3. in _kernels.pyx, the member of the cpdef enum rgbz_precision and one case in
+ *   3. in _kernels_common.pxi, the member of the cpdef enum rgbz_precision and one case in
  *      _kernels_of, the switch over the precisions (NULL for a kernel it does not have,
  *      which its caller then refuses with a ValueError naming `precision`).
  */

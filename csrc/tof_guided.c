@@ -96,6 +96,10 @@ typedef struct {
     float inv2h2, inv2hc2;
     float *or_, *oi, *ov, *on;
     double *or64, *oi64;
+    /* per measurement, for the blocks of pair weights: gate 1 where it may enter as a
+       neighbour (use, and n_eff > 0 in a second pass), else 0; rn the reciprocal of its
+       n_eff (1 in a first pass, and where n_eff <= 0) */
+    const float *gate, *rn;
 } tofg_pass_args;
 
 /* the weights of one offset over the cells [c0, c1) of a row: w (0 or 1 on entry) times
@@ -226,11 +230,13 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
 /* The same mean for 16 output columns at once, the frequency count a compile-time constant:
    the sums stay in registers over the taps (shift[t]: the offset of tap t in the planes;
    every neighbour is on the grid and within the radius), the order of every sum the
-   generic row's (offsets in increasing order, frequencies in order). */
+   generic row's (offsets in increasing order, frequencies in order). ew: the weight of tap t
+   for the output m0 + j at ew[t][j] (tofg_pairs), or NULL: computed here. */
 #define TOFG_BW 16
 #define TOFG_UNROLL _Pragma("GCC unroll 4")
 RGBZ_INLINE void tofg_block(
-    const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, int ntaps, const int NF)
+    const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
+    int ntaps, const int NF)
 {
     const ptrdiff_t N = p->R * p->C;
     const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
@@ -265,20 +271,25 @@ RGBZ_INLINE void tofg_block(
                 w[j] = nn > 0.0f ? w[j] : 0.0f;
                 rn[j] = 1.0f / (nn > 0.0f ? nn : 1.0f);
             }
-        for (int j = 0; j < TOFG_BW; j++) {
-            float chi = 0.0f;
-            TOFG_UNROLL
-            for (int f = 0; f < NF; f++) {
-                const float dre = p->gr[f * N + n0 + j] - gr0[f][j];
-                const float dim = p->gi[f * N + n0 + j] - gi0[f][j];
-                chi += dre * dre + dim * dim;
+        if (ew) {
+            const float *e = ew[t];
+            for (int j = 0; j < TOFG_BW; j++) w[j] *= e[j];
+        } else {
+            for (int j = 0; j < TOFG_BW; j++) {
+                float chi = 0.0f;
+                TOFG_UNROLL
+                for (int f = 0; f < NF; f++) {
+                    const float dre = p->gr[f * N + n0 + j] - gr0[f][j];
+                    const float dim = p->gi[f * N + n0 + j] - gi0[f][j];
+                    chi += dre * dre + dim * dim;
+                }
+                const float xp = chi / (p->gv[n0 + j] + gv0[j]) - bias;
+                const float d0 = p->col[n0 + j] - k0[j], d1 = p->col[N + n0 + j] - k1[j];
+                const float d2 = p->col[2 * N + n0 + j] - k2[j];
+                const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
+                const float x = (xp > 0.0f ? xp : 0.0f) * ih + (xc > 0.0f ? xc : 0.0f) * ic;
+                w[j] *= tofg_exp_neg(x);
             }
-            const float xp = chi / (p->gv[n0 + j] + gv0[j]) - bias;
-            const float d0 = p->col[n0 + j] - k0[j], d1 = p->col[N + n0 + j] - k1[j];
-            const float d2 = p->col[2 * N + n0 + j] - k2[j];
-            const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
-            const float x = (xp > 0.0f ? xp : 0.0f) * ih + (xc > 0.0f ? xc : 0.0f) * ic;
-            w[j] *= tofg_exp_neg(x);
         }
         for (int j = 0; j < TOFG_BW; j++) {
             TOFG_UNROLL
@@ -316,17 +327,137 @@ RGBZ_INLINE void tofg_block(
 }
 
 
+/* tofg_block on the weights of the pairs (ew[t][j] for the output m0 + j and tap t) and
+   the gates of p->gate, p->rn: the same sums in the same order, every lane's work the same
+   so that the loops vectorise */
+RGBZ_INLINE void tofg_block_e(
+    const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
+    int ntaps, const int NF)
+{
+    const ptrdiff_t N = p->R * p->C;
+    float nr[4][TOFG_BW], ni[4][TOFG_BW], den[TOFG_BW], w2v[TOFG_BW], w2n[TOFG_BW];
+    for (int j = 0; j < TOFG_BW; j++) {
+        TOFG_UNROLL
+        for (int f = 0; f < NF; f++) nr[f][j] = ni[f][j] = 0.0f;
+        den[j] = w2v[j] = w2n[j] = 0.0f;
+    }
+    for (int t = 0; t < ntaps; t++) {
+        const ptrdiff_t n0 = m0 + shift[t];
+        const float *restrict e = ew[t], *restrict gt = p->gate + n0, *restrict rq = p->rn + n0;
+        const float *restrict vv = p->v + n0;
+        for (int j = 0; j < TOFG_BW; j++) {
+            const float w = gt[j] * e[j];
+            TOFG_UNROLL
+            for (int f = 0; f < NF; f++) {
+                nr[f][j] += w * p->zr[f * N + n0 + j];
+                ni[f][j] += w * p->zi[f * N + n0 + j];
+            }
+            const float ww = w * w;
+            den[j] += w;
+            w2v[j] += ww * vv[j];
+            w2n[j] += ww * rq[j];
+        }
+    }
+    for (int j = 0; j < TOFG_BW; j++) {
+        const ptrdiff_t m = m0 + j;
+        const int ok = den[j] > 0.0f;
+        const float inv = ok ? 1.0f / den[j] : 0.0f;
+        TOFG_UNROLL
+        for (int f = 0; f < NF; f++) {
+            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
+            if (p->or64) {
+                p->or64[f * N + m] = mr;
+                p->oi64[f * N + m] = mi;
+            } else {
+                p->or_[f * N + m] = mr;
+                p->oi[f * N + m] = mi;
+            }
+        }
+        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
+        if (p->nin)
+            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
+        else
+            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
+    }
+}
+
+/* The weight factor of the pairs (m0 + k, n0 + k), k < cnt, into e[k]: the expression of
+   tofg_block's weight, whose every operand is symmetric in the two measurements (squared
+   differences, the sum of the two variances), so e(m, n) == e(n, m) bit for bit and each
+   pair's exp is taken once for both directions. */
+RGBZ_INLINE void tofg_pair(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n0, ptrdiff_t cnt,
+                           float *restrict e, const int NF)
+{
+    const ptrdiff_t N = p->R * p->C;
+    const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
+    for (ptrdiff_t j = 0; j < cnt; j++) {
+        float chi = 0.0f;
+        TOFG_UNROLL
+        for (int f = 0; f < NF; f++) {
+            const float dre = p->gr[f * N + n0 + j] - p->gr[f * N + m0 + j];
+            const float dim = p->gi[f * N + n0 + j] - p->gi[f * N + m0 + j];
+            chi += dre * dre + dim * dim;
+        }
+        const float xp = chi / (p->gv[n0 + j] + p->gv[m0 + j]) - bias;
+        const float d0 = p->col[n0 + j] - p->col[m0 + j];
+        const float d1 = p->col[N + n0 + j] - p->col[N + m0 + j];
+        const float d2 = p->col[2 * N + n0 + j] - p->col[2 * N + m0 + j];
+        const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
+        const float x = (xp > 0.0f ? xp : 0.0f) * ih + (xc > 0.0f ? xc : 0.0f) * ic;
+        e[j] = tofg_exp_neg(x);
+    }
+}
+
+RGBZ_CLONES_512 static void tofg_pairs(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n0,
+                                       ptrdiff_t cnt, float *e)
+{
+    switch (p->F) {
+    case 1: tofg_pair(p, m0, n0, cnt, e, 1); break;
+    case 2: tofg_pair(p, m0, n0, cnt, e, 2); break;
+    case 3: tofg_pair(p, m0, n0, cnt, e, 3); break;
+    default: tofg_pair(p, m0, n0, cnt, e, 4); break;
+    }
+}
+
+RGBZ_CLONES_512 static void tofg_blocks(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t nblk,
+                                        const ptrdiff_t *shift, const float **ew, int ntaps)
+{
+    for (ptrdiff_t b = 0; b < nblk; b++) {
+        const ptrdiff_t m = m0 + b * TOFG_BW;
+        if (ew && p->gate) {
+            switch (p->F) {
+            case 1: tofg_block_e(p, m, shift, ew, ntaps, 1); break;
+            case 2: tofg_block_e(p, m, shift, ew, ntaps, 2); break;
+            case 3: tofg_block_e(p, m, shift, ew, ntaps, 3); break;
+            default: tofg_block_e(p, m, shift, ew, ntaps, 4); break;
+            }
+        } else {
+            switch (p->F) {
+            case 1: tofg_block(p, m, shift, ew, ntaps, 1); break;
+            case 2: tofg_block(p, m, shift, ew, ntaps, 2); break;
+            case 3: tofg_block(p, m, shift, ew, ntaps, 3); break;
+            default: tofg_block(p, m, shift, ew, ntaps, 4); break;
+            }
+        }
+        if (ew)
+            for (int t = 0; t < ntaps; t++) ew[t] += TOFG_BW;
+    }
+}
+
 /* Row r: the 16-column blocks whose every tap is on the grid by the fast blocks, the rest by
-   the generic row. uniform: the grid lines along the axis are `step` pixels apart. */
+   the generic row. fast: the grid lines along the axis are `step` pixels apart (and F, reach
+   within the blocks' bounds). E: for a row pass, room for (A + 1) C pair weights, A the
+   largest tap offset; the pairs' weights are then taken once for both directions (NULL:
+   each block computes its own). */
 RGBZ_CLONES_512 static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
-                                       int uniform, int64_t step, ptrdiff_t clo,
-                                       ptrdiff_t chi_)
+                                       int fast, int64_t step, ptrdiff_t clo,
+                                       ptrdiff_t chi_, float *E, ptrdiff_t A)
 {
     const ptrdiff_t C = p->C;
     ptrdiff_t shift[2 * 64 + 1];
     int ntaps = 0;
     ptrdiff_t lo = clo, hi = chi_;                /* the columns every tap may serve */
-    if (uniform && p->F <= 4 && p->reach <= 64) {
+    if (fast) {
         for (ptrdiff_t a = -p->reach; a <= p->reach; a++) {
             const int64_t d = (p->axis == 0 ? p->px[r + a < 0 || r + a >= p->R ? r : r + a]
                                              - p->px[r] : (int64_t)a * step);
@@ -343,14 +474,20 @@ RGBZ_CLONES_512 static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r,
     }
     const ptrdiff_t nblk = hi > lo ? (hi - lo) / TOFG_BW : 0;
     const ptrdiff_t fe = lo + nblk * TOFG_BW;
-    for (ptrdiff_t b = 0; b < nblk; b++) {
-        const ptrdiff_t m0 = r * C + lo + b * TOFG_BW;
-        switch (p->F) {
-        case 1: tofg_block(p, m0, shift, ntaps, 1); break;
-        case 2: tofg_block(p, m0, shift, ntaps, 2); break;
-        case 3: tofg_block(p, m0, shift, ntaps, 3); break;
-        default: tofg_block(p, m0, shift, ntaps, 4); break;
+    if (nblk > 0) {
+        const float *ew[2 * 64 + 1];
+        const int pairs = E && p->axis == 1;
+        if (pairs) {
+            /* E[a][c] = e(c, c + a) for the columns [lo - a, fe) the blocks reach */
+            const ptrdiff_t row0 = r * C;
+            for (ptrdiff_t a = 0; a <= A; a++)
+                tofg_pairs(p, row0 + lo - a, row0 + lo, fe - lo + a, E + a * C + lo - a);
+            for (int t = 0; t < ntaps; t++) {
+                const ptrdiff_t a = shift[t];
+                ew[t] = a >= 0 ? E + a * C + lo : E + (-a) * C + lo + a;
+            }
         }
+        tofg_blocks(p, r * C + lo, nblk, shift, pairs ? ew : NULL, ntaps);
     }
     if (nblk == 0) {
         tofg_pass_row(p, r, scratch, clo, chi_);
@@ -364,6 +501,32 @@ RGBZ_CLONES_512 static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r,
    output row to the next (11 rows x 17 planes x 256 floats = 190 kB) */
 #define TOFG_TILE 256
 
+/* A column pass over the columns [c0, c1) (at most TOFG_TILE) of evenly spaced grid rows,
+   the rows in order: row r's pair weights e(r, r + a), a = 0..A, go to slot r mod (A + 1)
+   of ring ((A + 1)^2 TOFG_TILE floats), where the rows below find them as their offsets -a. */
+RGBZ_CLONES_512 static void tofg_pass_tile(const tofg_pass_args *p, float *scratch,
+                                           ptrdiff_t c0, ptrdiff_t c1, ptrdiff_t A, float *ring)
+{
+    const ptrdiff_t C = p->C, R = p->R, w = c1 - c0, nblk = w / TOFG_BW;
+    const ptrdiff_t fe = c0 + nblk * TOFG_BW, slot = (A + 1) * TOFG_TILE;
+    ptrdiff_t shift[2 * 64 + 1];
+    const float *ew[2 * 64 + 1];
+    for (ptrdiff_t r = 0; r < R; r++) {
+        float *own = ring + (r % (A + 1)) * slot;
+        for (ptrdiff_t a = 0; a <= A && r + a < R; a++)
+            tofg_pairs(p, r * C + c0, (r + a) * C + c0, w, own + a * TOFG_TILE);
+        int ntaps = 0;
+        for (ptrdiff_t a = -A; a <= A; a++) {
+            if (r + a < 0 || r + a >= R) continue;
+            shift[ntaps] = a * C;
+            ew[ntaps++] = a >= 0 ? own + a * TOFG_TILE
+                                 : ring + ((r + a) % (A + 1)) * slot + (-a) * TOFG_TILE;
+        }
+        if (nblk > 0) tofg_blocks(p, r * C + c0, nblk, shift, ew, ntaps);
+        if (fe < c1) tofg_pass_row(p, r, scratch, nblk > 0 ? fe : c0, c1);
+    }
+}
+
 int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
                    const float *gr, const float *gi, const float *gv, const float *col,
                    const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C, int axis,
@@ -376,9 +539,6 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
         || R < 0 || C < 0 || (axis != 0 && axis != 1) || reach < 0 || radius_px < 0
         || !(inv2h2 >= 0.0) || !(inv2hc2 >= 0.0))
         return RGBZ_EINVAL;
-    const tofg_pass_args p = {zr, zi, v, nin, gr, gi, gv, col, use, F, R, C, axis, px, reach,
-                              radius_px, (float)inv2h2, (float)inv2hc2, or_, oi, ov, on,
-                              or64, oi64};
     const size_t per_row = (size_t)(2 * F + 5) * (size_t)(C > 0 ? C : 1);
     int status = RGBZ_OK;
     /* the grid lines along the pass's axis: evenly spaced (Mask1, Mask2, rows) or not */
@@ -386,20 +546,47 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
     const int64_t step = nl > 1 ? px[1] - px[0] : 1;
     int uniform = 1;
     for (ptrdiff_t i = 1; i < nl; i++) uniform &= px[i] - px[i - 1] == step;
+    const int fast = uniform && step > 0 && F <= 4 && reach <= 64;
     const int nth = rgbz_threads(workers);
     (void)nth;
+    const ptrdiff_t N = R * C;
+    float *gate = fast && N > 0 ? malloc((size_t)N * sizeof(float)) : NULL;
+    float *rn = fast && N > 0 ? malloc((size_t)N * sizeof(float)) : NULL;
+    if (!gate || !rn) {                           /* the blocks then compute their own */
+        free(gate);
+        free(rn);
+        gate = rn = NULL;
+    } else {
+        RGBZ_PARALLEL_FOR
+        for (ptrdiff_t n = 0; n < N; n++) {
+            const float nn = nin ? nin[n] : 1.0f;
+            gate[n] = use[n] != 0 && nn > 0.0f ? 1.0f : 0.0f;
+            rn[n] = 1.0f / (nn > 0.0f ? nn : 1.0f);
+        }
+    }
+    const tofg_pass_args p = {zr, zi, v, nin, gr, gi, gv, col, use, F, R, C, axis, px, reach,
+                              radius_px, (float)inv2h2, (float)inv2hc2, or_, oi, ov, on,
+                              or64, oi64, gate, rn};
+    /* the largest tap offset of the fast blocks: |a| <= reach and |a step| <= radius */
+    const ptrdiff_t A = fast ? (radius_px / step < reach ? (ptrdiff_t)(radius_px / step) : reach)
+                             : 0;
+    const int tiles = axis == 0 && C > TOFG_TILE;
+    const size_t ebuf = !fast ? 0 : tiles ? (size_t)(A + 1) * (size_t)(A + 1) * TOFG_TILE
+                      : axis == 1 ? (size_t)(A + 1) * (size_t)(C > 0 ? C : 1) : 0;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth)
 #endif
     {
         float *scratch = malloc(per_row * sizeof(float));
-        if (!scratch) {
+        float *E = ebuf ? malloc(ebuf * sizeof(float)) : NULL;
+        if (!scratch || (ebuf && !E)) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             status = RGBZ_ENOMEM;
         }
-        if (axis == 0 && C > TOFG_TILE) {
+        const int ok = scratch && (!ebuf || E);
+        if (tiles) {
             /* a column pass tile by tile, every tile's rows in order */
             const ptrdiff_t ntile = (C + TOFG_TILE - 1) / TOFG_TILE;
 #ifdef _OPENMP
@@ -407,18 +594,26 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
 #endif
             for (ptrdiff_t t = 0; t < ntile; t++) {
                 const ptrdiff_t c0 = t * TOFG_TILE, c1 = c0 + TOFG_TILE < C ? c0 + TOFG_TILE : C;
-                for (ptrdiff_t r = 0; r < R; r++)
-                    if (scratch) tofg_pass_line(&p, r, scratch, uniform, step, c0, c1);
+                if (!ok) continue;
+                if (fast) {
+                    tofg_pass_tile(&p, scratch, c0, c1, A, E);
+                } else {
+                    for (ptrdiff_t r = 0; r < R; r++)
+                        tofg_pass_line(&p, r, scratch, 0, step, c0, c1, NULL, 0);
+                }
             }
         } else {
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
             for (ptrdiff_t r = 0; r < R; r++)
-                if (scratch) tofg_pass_line(&p, r, scratch, uniform, step, 0, C);
+                if (ok) tofg_pass_line(&p, r, scratch, fast, step, 0, C, E, A);
         }
+        free(E);
         free(scratch);
     }
+    free(gate);
+    free(rn);
     return status;
 }
 
@@ -697,6 +892,37 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
     return (float)den;
 }
 
+/* The spatial weights of the fill by offset (di, dj) in [-reach, reach]^2, into sw, when
+   the grid lines are evenly spaced at multiples of half a pixel: every difference of
+   centres is then exact, so the table holds bit for bit what tofg_fill_node would compute
+   for each pair. Returns 0 (sw unused) for any other grid. */
+static int tofg_fill_table(const tofg_up_args *p, ptrdiff_t reach, float *sw)
+{
+    const double *ax[2] = {p->rc, p->cc};
+    const ptrdiff_t n[2] = {p->R, p->C};
+    for (int a = 0; a < 2; a++) {
+        if (n[a] <= reach) return 0;
+        const double step = n[a] > 1 ? ax[a][1] - ax[a][0] : 0.0;
+        for (ptrdiff_t k = 0; k < n[a]; k++) {
+            const double v = ax[a][k];
+            if (!(fabs(v) < 1e9) || 2.0 * v != floor(2.0 * v)) return 0;
+            if (k > 0 && v - ax[a][k - 1] != step) return 0;
+        }
+    }
+    const ptrdiff_t side = 2 * reach + 1;
+    for (ptrdiff_t di = -reach; di <= reach; di++) {
+        const double ddy = di >= 0 ? p->rc[di] - p->rc[0] : p->rc[0] - p->rc[-di];
+        const float dy = (float)(ddy / p->spacing);
+        for (ptrdiff_t dj = -reach; dj <= reach; dj++) {
+            const double ddx = dj >= 0 ? p->cc[dj] - p->cc[0] : p->cc[0] - p->cc[-dj];
+            const float dx = (float)(ddx / p->spacing);
+            sw[(di + reach) * side + (dj + reach)] = tofg_exp_neg((dy * dy + dx * dx)
+                                                                  * p->inv2s2);
+        }
+    }
+    return 1;
+}
+
 /* A node without a usable measurement takes the mode over the usable ones within 1, else 2,
    else 4 (at most `reach`) grid lines (Gaussian spatial weights, its own colour); its prior
    becomes a quarter of their normalised weight (0: none there). When the node has a
@@ -705,7 +931,7 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
    TOFG_VETO: the pixels around it cannot take a neighbour's surface unchallenged. */
 static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const double *own,
                            double own_k, ptrdiff_t r, ptrdiff_t c, ptrdiff_t reach,
-                           double *depth, double *sigma, float *prior)
+                           const float *sw, double *depth, double *sigma, float *prior)
 {
     const ptrdiff_t N = p->R * p->C, m = r * p->C + c;
     depth[m] = p->depth[m];
@@ -729,9 +955,13 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
         for (ptrdiff_t i = i0; i <= i1; i++) {
             const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
             for (ptrdiff_t j = j0; j <= j1; j++) {
-                const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
                 mm[n] = i * p->C + j;
-                ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                if (sw) {
+                    ww[n] = sw[(i - r + reach) * (2 * reach + 1) + (j - c + reach)];
+                } else {
+                    const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
+                    ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                }
                 all += ww[n++];
             }
         }

@@ -126,10 +126,12 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
                              (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};
     const int nth = rgbz_threads(workers);
     (void)nth;
+    float sw[9 * 9];                           /* reach <= 4 */
+    const float *swp = tofg_fill_table(&p0, reach, sw) ? sw : NULL;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++)
         for (ptrdiff_t c = 0; c < C; c++)
-            tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, fd, fs, prior);
+            tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, fd, fs, prior);
     const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
                             (float)inv2hc2, (float)tol_k, (float)tol_min};
     tofg_node *nodes = malloc((size_t)N * sizeof *nodes);

@@ -45,9 +45,10 @@ from rgbz_fast import tof  # noqa: E402
 REPO = TESTS.parent
 DOC = REPO / "docs" / "reports" / "robustness.md"
 #: the contract files, in the order of the report's tables
-FILES = ("test_contract.py", "reconstruction/test_contract.py", "isp/test_contract.py",
-         "metrics/test_contract.py", "simulation/test_contract.py", "io/test_contract.py",
-         "tof/test_contract.py", "evaluation/test_contract.py", "cli/test_contract.py")
+FILES = ("test_contract.py", "reconstruction/test_contract.py", "hardware/test_contract.py",
+         "isp/test_contract.py", "metrics/test_contract.py", "simulation/test_contract.py",
+         "io/test_contract.py", "tof/test_contract.py", "evaluation/test_contract.py",
+         "cli/test_contract.py")
 
 # open bugs: id -> what is wrong (docs/reports/robustness.md describes each, fixed ones too);
 # a row with ``bug=`` is a strict xfail until the bug is fixed. None is open.
@@ -283,7 +284,7 @@ def cli_prefix(command):
     """Subcommands report as `rgbz-fast CMD: error:` (their unknown arguments too); the
     top-level parser (an unknown command) as `rgbz-fast: error:`."""
     if command in ("simulate", "reconstruct", "depth", "evaluate", "train", "calibrate",
-                   "evaluate-depth", "bench", "opcount", "tradeoff", "config"):
+                   "evaluate-depth", "bench", "opcount", "tradeoff", "hardware", "config"):
         return f"rgbz-fast {command}: error: "
     return "rgbz-fast: error: "
 

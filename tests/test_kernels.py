@@ -99,7 +99,7 @@ def test_tables_come_from_the_c_enums():
                        "edi_rows": 5}
     assert METHODS == {m.name[len("RGBZ_M_"):].lower(): int(m) for m in _kernels.rgbz_method}
     assert ALL_METHODS == (*METHODS, "learned")           # the plan methods, then csrc/learned.c
-    assert _PRECISION_CODES == {"float32": 0, "float64": 1}
+    assert _PRECISION_CODES == {"float32": 0, "float64": 1, "fixed": 2}
     assert tuple(_PRECISION_CODES) == PRECISIONS          # the names ReconstructParams accepts
     assert _EXP_CODES == {"libm": 0, "fast": 1}
     assert DEMOSAIC_MODES == {"reflect": 0, "period": 1}

@@ -28,8 +28,9 @@ OUT = REPO / "docs" / "reference" / "api.md"
 
 #: the public modules, in the order of the reference (the package's own layering, top down
 #: from what a user imports first)
-MODULES = ("rgbz_fast", "rgbz_fast.simulation", "rgbz_fast.reconstruction", "rgbz_fast.isp",
-           "rgbz_fast.tof", "rgbz_fast.metrics", "rgbz_fast.evaluation", "rgbz_fast.io")
+MODULES = ("rgbz_fast", "rgbz_fast.simulation", "rgbz_fast.reconstruction",
+           "rgbz_fast.hardware", "rgbz_fast.isp", "rgbz_fast.tof", "rgbz_fast.metrics",
+           "rgbz_fast.evaluation", "rgbz_fast.io")
 
 HEADER = """\
 # API reference
@@ -104,16 +105,19 @@ def _signature(obj):
 def _home(obj):
     """The public module whose entry documents ``obj``.
 
-    The subpackage whose code defines it; else the one subpackage that exports it (the
-    frame and sensor types defined below the subpackages); else ``rgbz_fast`` itself.
+    The subpackage whose code defines it, if it exports it; else the one subpackage that
+    exports it (the frame and sensor types defined below the subpackages, the fixed-point
+    model's internals that rgbz_fast.hardware exports); else ``rgbz_fast`` itself.
     """
+    def exports(name):
+        m = importlib.import_module(name)
+        return any(getattr(m, k, None) is obj for k in m.__all__)
+
     mod = getattr(obj, "__module__", None) or ""
     for name in MODULES[1:]:
-        if mod == name or mod.startswith(name + "."):
+        if (mod == name or mod.startswith(name + ".")) and exports(name):
             return name
-    exporters = [name for name in MODULES[1:]
-                 if any(getattr(importlib.import_module(name), k, None) is obj
-                        for k in importlib.import_module(name).__all__)]
+    exporters = [name for name in MODULES[1:] if exports(name)]
     return exporters[0] if len(exporters) == 1 else "rgbz_fast"
 
 

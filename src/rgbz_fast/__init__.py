@@ -27,7 +27,7 @@ from ._frame import RawFrame, ToFTaps, mosaic
 from ._patterns import (B, BAYER_PHASES, G, Pattern, R, Z, bayer, get_pattern, mask1, mask2,
                         rows)
 from .isp import ColourISP
-from .reconstruction import METHODS, PRECISIONS, ReconstructParams, reconstruct
+from .reconstruction import METHODS, PRECISIONS, FixedPointConfig, ReconstructParams, reconstruct
 from .simulation import ColourSensor, Scene, ToFSensor, load_scene, simulate
 from .tof import ToFDepth, ToFISP, tof_depth
 
@@ -35,7 +35,7 @@ __all__ = [
     "__version__", "show_config", "config",
     "Pattern", "bayer", "mask1", "mask2", "rows", "get_pattern", "R", "G", "B", "Z",
     "BAYER_PHASES", "RawFrame", "ToFTaps", "mosaic",
-    "reconstruct", "ReconstructParams", "METHODS", "PRECISIONS",
+    "reconstruct", "ReconstructParams", "FixedPointConfig", "METHODS", "PRECISIONS",
     "Scene", "load_scene", "ColourSensor", "ToFSensor", "simulate",
     "ColourISP", "tof_depth", "ToFISP", "ToFDepth",
     "simulation", "reconstruction", "isp", "tof", "metrics", "evaluation", "io",

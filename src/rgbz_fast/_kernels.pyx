@@ -20,6 +20,8 @@ them, so no code is typed twice.
 
 include "_kernels_common.pxi"
 
+from libc.string cimport memset
+
 cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var,
                            const double *g_re, const double *g_im, const double *g_var,
@@ -296,6 +298,50 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     radius_px, inv_h2,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
+    _raise_for(status)
+
+
+# ---------------------------------------------------------------------- fixed-point model (hw_recon.c)
+ctypedef fused int_frame_t:
+    uint8_t
+    uint16_t
+
+
+def hw_layout():
+    """(sizeof rgbz_hw_plan, sizeof rgbz_hw_config, sizeof rgbz_hw_state, max width, max
+    period, kernel radius, max table entries) as compiled."""
+    cdef int64_t out[7]
+    _raise_for(rgbz_hw_layout(out, 7))
+    return tuple(out[i] for i in range(7))
+
+
+def reconstruct_fixed(const int_frame_t[:, ::1] src, int_frame_t[:, ::1] dst, int py, int px,
+                      const int32_t[::1] plan_map, const uint8_t[::1] plans, int n_plans,
+                      const uint8_t[::1] hw, const uint8_t[::1] cfg,
+                      const int32_t[::1] exp_table, const int32_t[::1] recip_table,
+                      uint8_t[::1] state):
+    """Run the entry point of precision fixed (rgbz_reconstruct_fixed, the fixed-point
+    streaming model): plans as for :func:`reconstruct`, hw the rgbz_hw_plan bytes of each,
+    cfg the rgbz_hw_config bytes, the two tables, and ``state`` (sizeof rgbz_hw_state bytes,
+    the line buffers and the window), handed over in rgbz_params.fixed."""
+    cdef int status
+    cdef int in_type = RGBZ_T_U8 if int_frame_t is uint8_t else RGBZ_T_U16
+    cdef rgbz_reconstruct_fn *kernel = _kernels_of(RGBZ_P_FIXED).reconstruct
+    cdef rgbz_fixed_args args
+    cdef rgbz_params prm
+    if kernel == NULL:
+        raise ValueError("precision: this module has no kernel of precision 'fixed'")
+    memset(&prm, 0, sizeof(prm))        # the float fields are not read by this precision
+    args.hw = <const rgbz_hw_plan *> &hw[0]
+    args.cfg = <const rgbz_hw_config *> &cfg[0]
+    args.exp_table = &exp_table[0]
+    args.recip_table = &recip_table[0]
+    args.state = <rgbz_hw_state *> &state[0]
+    prm.workers = 1
+    prm.fixed = &args
+    with nogil:
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &plan_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, NULL)
     _raise_for(status)
 
 

@@ -5,6 +5,22 @@
 
 from libc.stdint cimport int32_t, int64_t, uint8_t, uint16_t, uint64_t
 
+# what the entry point of precision fixed reads of rgbz_params (csrc/hw_recon.h)
+cdef extern from "hw_recon.h" nogil:
+    ctypedef struct rgbz_hw_plan:
+        pass
+    ctypedef struct rgbz_hw_config:
+        pass
+    ctypedef struct rgbz_hw_state:
+        pass
+    ctypedef struct rgbz_fixed_args:
+        const rgbz_hw_plan *hw
+        const rgbz_hw_config *cfg
+        const int32_t *exp_table
+        const int32_t *recip_table
+        rgbz_hw_state *state
+    int rgbz_hw_layout(int64_t *out, int n)
+
 cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_status:
         RGBZ_OK
@@ -19,6 +35,7 @@ cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_precision:
         RGBZ_P_FLOAT32
         RGBZ_P_FLOAT64
+        RGBZ_P_FIXED
     cpdef enum rgbz_method:
         RGBZ_M_BILINEAR
         RGBZ_M_BI
@@ -63,6 +80,7 @@ cdef extern from "rgbz.h" nogil:
         int32_t mask1_fast
         int32_t clip_on
         double clip_level
+        const rgbz_fixed_args *fixed
     int rgbz_plan_layout(int64_t *out, int n)
     int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
     # one entry point per precision, all of this type (csrc/rgbz_templating.h)
@@ -72,6 +90,7 @@ cdef extern from "rgbz.h" nogil:
                                      const rgbz_params *params, uint64_t *opcounts) noexcept
     rgbz_reconstruct_fn rgbz_reconstruct_f32
     rgbz_reconstruct_fn rgbz_reconstruct_f64
+    rgbz_reconstruct_fn rgbz_reconstruct_fixed
     int rgbz_fast_exp_f32(const float *x, float *out, Py_ssize_t n)
     int rgbz_fast_exp_f64(const double *x, double *out, Py_ssize_t n)
     int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
@@ -188,6 +207,12 @@ cdef _precision_kernels _kernels_of(int precision) except *:
         k.reconstruct, k.learned = rgbz_reconstruct_f32, rgbz_learned_f32
     elif precision == RGBZ_P_FLOAT64:
         k.reconstruct, k.learned = rgbz_reconstruct_f64, rgbz_learned_f64
+    elif precision == RGBZ_P_FIXED:
+        # the integer streaming model (hw_recon.h): no learned filters yet, and nothing the
+        # counting build counts (its operations are rgbz_fast.hardware's, from the plans)
+        k.reconstruct, k.learned = rgbz_reconstruct_fixed, NULL
+        if rgbz_counting_build():
+            k.reconstruct = NULL
     else:
         raise ValueError(f"precision: expected a code of PRECISIONS {PRECISIONS}, "
                          f"got {precision}")
@@ -250,6 +275,9 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     cdef rgbz_params prm
     cdef rgbz_reconstruct_fn *kernel = _kernels_of(precision).reconstruct
     cdef uint64_t *counts = _counters(opcounts, <Py_ssize_t> n_plans * RGBZ_NOPS)
+    if precision == RGBZ_P_FIXED:
+        raise ValueError("precision: the fixed-point model runs through reconstruct_fixed "
+                         "(its tables and line buffers)")
     prm.sigma_floor = sigma_floor
     prm.sigma_rel = sigma_rel
     prm.edge_ratio = edge_ratio
@@ -259,6 +287,7 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     prm.mask1_fast = mask1_fast
     prm.clip_on = 0 if clip_level is None else 1
     prm.clip_level = 0.0 if clip_level is None else float(clip_level)
+    prm.fixed = NULL
     with nogil:
         status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
                         &phase_map[0], <const rgbz_plan *> &plans[0], n_plans, &prm, counts)
@@ -311,6 +340,9 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     cdef rgbz_learned_filters f
     cdef rgbz_learned_fn *kernel = _kernels_of(precision).learned
     cdef double zero = 0.0
+    if kernel == NULL:
+        raise ValueError(f"precision: the learned filters have no kernel of precision code "
+                         f"{precision}")
     f.n_phases = w_f32.shape[0]
     f.n_taps_max = w_f32.shape[1]
     f.n_buckets = w_f32.shape[2]

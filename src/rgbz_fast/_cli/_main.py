@@ -8,14 +8,14 @@ import sys
 import threading
 
 from .._build_config import VERSION
-from . import (_common, bench, calibrate, config, depth, evaluate, evaluate_depth, opcount,
-               pattern_study, reconstruct, simulate, tradeoff, train)
+from . import (_common, bench, calibrate, config, depth, evaluate, evaluate_depth, hardware,
+               opcount, pattern_study, reconstruct, simulate, tradeoff, train)
 
 __all__ = ["main", "build_parser", "COMMANDS", "Terminated"]
 
 #: the commands, in the order of ``rgbz-fast --help``
 COMMANDS = (simulate, reconstruct, depth, evaluate, train, calibrate, evaluate_depth, bench,
-            opcount, tradeoff, pattern_study, config)
+            opcount, tradeoff, pattern_study, hardware, config)
 
 
 class Terminated(SystemExit):

@@ -1,5 +1,6 @@
 """The figures of the commands: the depth preview and the flags map of ``rgbz-fast depth``,
-the Pareto plot of ``rgbz-fast tradeoff`` and the layouts of ``rgbz-fast pattern-study``.
+the Pareto plot of ``rgbz-fast tradeoff``, the layouts of ``rgbz-fast pattern-study`` and the
+sweep of ``rgbz-fast hardware``.
 
 Each function returns PNG bytes, which the command writes with
 :func:`rgbz_fast.io.atomic_write`. matplotlib is imported here only, and only
@@ -14,7 +15,7 @@ import io
 import numpy as np
 
 __all__ = ["depth_preview", "depth_flags_figure", "full_depth_preview", "tradeoff_plot",
-           "tradeoff_figure", "pattern_study_plot", "tile_thumbnail"]
+           "tradeoff_figure", "pattern_study_plot", "tile_thumbnail", "hardware_sweep_plot"]
 
 
 def _pyplot():
@@ -357,4 +358,31 @@ def pattern_study_plot(res):
         ax.annotate(text, xy, xytext=(34, dy - 3), textcoords="offset points", fontsize=7,
                     arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5") if abs(dy) > 16
                     else None)
+
+
+def hardware_sweep_plot(rows, title=""):
+    """Quality (share of Z sites more than 1 LSB from float64, log) against table + datapath
+    bits of :func:`rgbz_fast._devtools.hardware.run_sweep`'s rows (PNG bytes): green where the
+    target is met, outlined and labelled on the front."""
+    from .hardware import TARGET
+
+    _, plt = _pyplot()
+    ok = [r for r in rows if "bits" in r]
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    for r in ok:
+        x = (r["bits"]["tables"] + r["bits"]["datapath"]) / 1000.0
+        y = max(100.0 - r["within_1lsb_pct"], 1e-4)      # exact rows drawn at the axis floor
+        ax.scatter(x, y, c="tab:green" if r["meets_target"] else "tab:red",
+                   s=36 if r["pareto"] else 14, edgecolors="k" if r["pareto"] else "none",
+                   zorder=3)
+        if r["pareto"] or r["label"] == "default":
+            ax.annotate(r["label"], (x, y), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
+    ax.axhline(100.0 - TARGET["within_1lsb_pct"], color="grey", ls="--", lw=0.8)
+    ax.set_yscale("log")
+    ax.set_xlabel("table + datapath bits (thousands; line buffers excluded: fixed)")
+    ax.set_ylabel("% of Z sites more than 1 LSB from float64")
+    ax.set_title(title, fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
     return _png(fig, plt)

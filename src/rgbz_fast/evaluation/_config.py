@@ -211,6 +211,8 @@ class EvalConfig:
             params.pop("clip_level")
         if params["filters"] is None or method != "learned":
             params.pop("filters")
+        if params["fixed_point"] is None:
+            params.pop("fixed_point")      # the keys of the float precisions stay what they were
         else:
             params["filters"] = [f.digest for f in params["filters"]]
         d.update(params, pattern=str(get_pattern(pattern)), method=method,

@@ -5,14 +5,15 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, fields, replace
 
 from .._validate import check_choice, check_number, merge_params
+from ._fixed_config import FixedPointConfig
 from ._learned import check_filters
 
 __all__ = ["ReconstructParams", "PRECISIONS", "EXP_CHOICES", "SG_MODES", "DOMAINS"]
 
-#: arithmetic of the kernels
-PRECISIONS = ("float32", "float64")
+#: arithmetic of the kernels: the float core's two, and the fixed-point streaming model
+PRECISIONS = ("float32", "float64", "fixed")
 #: the exponential of eq. 7 ("auto": the polynomial in float32, libm in float64)
-EXP_CHOICES = ("auto", "libm", "fast")
+EXP_CHOICES = ("auto", "libm", "fast", "table")
 SG_MODES = ("auto", "pure", "combined")
 DOMAINS = ("intensity", "colour_difference")
 
@@ -30,9 +31,13 @@ class ReconstructParams:
 
     Parameters
     ----------
-    precision : {"float32", "float64"}
+    precision : {"float32", "float64", "fixed"}
         Arithmetic of the kernel. float32 is faster; float64 agrees with the
-        NumPy reference to 1e-9 relative.
+        NumPy reference to 1e-9 relative. ``"fixed"`` runs the bit-exact
+        fixed-point streaming model of a hardware implementation
+        (``fixed_point`` sets its widths; docs/guide/hardware.md): integer
+        frames (uint8, uint16), the methods bilinear, bi, edi_central,
+        edi_line and sg, the intensity domain, no ``clip_level``.
     sigma_floor : float
         Absolute floor of sigma in eq. 7 (DN), used when the smallest gradient
         is 0 (a flat area): > 0.
@@ -51,10 +56,13 @@ class ReconstructParams:
         weights alone), ``"combined"`` multiplies them by the EDILine weights;
         ``"auto"`` uses pure where every candidate lies on a diagonal (Mask1)
         and combined elsewhere (Mask2).
-    exp : {"auto", "libm", "fast"}
+    exp : {"auto", "libm", "fast", "table"}
         Exponential of eq. 7: the C library's, or a range-reduced polynomial
         (relative error below 3e-7 in float32, 1e-8 in float64; results below
-        the normal range flush to 0) that is faster and vectorises. ``"auto"``
+        the normal range flush to 0) that is faster and vectorises, or
+        ``"table"``, a lookup table (``precision="fixed"`` only, where it is
+        what ``"auto"`` means; ``fixed_point.exp`` says whether the table is
+        read at its nearest entry or interpolated). ``"auto"``
         is ``"fast"`` in float32 -- its error is of the order of float32's own
         rounding, and it changes the mean CFA PSNR on Kodak by less than
         1e-5 dB (docs/reports/tradeoff.md) -- and ``"libm"`` in float64, so
@@ -77,6 +85,11 @@ class ReconstructParams:
         fitted for the frame's pattern and bit depth is used. None (default):
         the filters shipped for the frame's pattern and bit depth
         (:func:`~rgbz_fast.reconstruction.default_filters`).
+    fixed_point : FixedPointConfig, dict or None
+        ``precision="fixed"`` only: the widths and table sizes of the
+        fixed-point model (:class:`~rgbz_fast.reconstruction.FixedPointConfig`,
+        or a dict of its fields). None: its defaults when the precision is
+        ``"fixed"`` (read by the float precisions never).
 
     Examples
     --------
@@ -101,6 +114,7 @@ class ReconstructParams:
     domain: str = "intensity"
     clip_level: object = None
     filters: object = None
+    fixed_point: object = None
 
     def __post_init__(self):
         put = object.__setattr__
@@ -115,6 +129,14 @@ class ReconstructParams:
         put(self, "domain", check_choice(self.domain, DOMAINS, "domain"))
         put(self, "clip_level", check_clip_level(self.clip_level))
         put(self, "filters", check_filters(self.filters))
+        if self.fixed_point is not None or self.precision == "fixed":
+            put(self, "fixed_point", FixedPointConfig.build(self.fixed_point))
+        if self.precision == "fixed":
+            _check_fixed(self)
+        elif self.exp == "table":
+            raise ValueError(f"exp: 'table' is the fixed-point model's exponential "
+                             f"(precision='fixed'); precision={self.precision!r} takes "
+                             f"'auto', 'libm' or 'fast'")
 
     @classmethod
     def paper(cls, **changes):
@@ -131,7 +153,11 @@ class ReconstructParams:
 
     @property
     def exp_mode(self):
-        """The exponential a call runs: ``"auto"`` resolved by the precision."""
+        """The exponential a call runs: ``"auto"`` resolved by the precision; with
+        ``precision="fixed"`` the table mode of ``fixed_point`` (``"table"``: its nearest
+        entry, ``"pwl"``: interpolated)."""
+        if self.precision == "fixed":
+            return self.fixed_point.exp
         if self.exp == "auto":
             return "fast" if self.precision == "float32" else "libm"
         return self.exp
@@ -158,6 +184,19 @@ class ReconstructParams:
         """
         return merge_params(cls, params, options, name=name, caller=caller,
                             what="reconstruction options")
+
+
+def _check_fixed(p):
+    """The options the fixed-point model has no rule for, refused by name."""
+    if p.exp not in ("auto", "table"):
+        raise ValueError(f"exp: precision='fixed' reads eq. 7's exponential from a table "
+                         f"(fixed_point.exp); expected exp='table' or 'auto', got {p.exp!r}")
+    if p.domain != "intensity":
+        raise ValueError(f"domain: precision='fixed' runs the intensity domain only; got "
+                         f"{p.domain!r}")
+    if p.clip_level is not None:
+        raise ValueError(f"clip_level: precision='fixed' has no clipped-pixel rule; expected "
+                         f"None, got {p.clip_level!r}")
 
 
 def check_clip_level(value):

@@ -17,6 +17,7 @@ import numpy as np
 from .. import _kernels
 from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._validate import check_choice, check_workers, kernel_threads
+from ._fixed import check_fixed_call, run_fixed
 from ._learned import resolve_filters
 from ._params import ReconstructParams
 from ._plans import METHODS as PLAN_METHODS
@@ -136,7 +137,8 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         Threads at most (rows are split across them). None or -1: all cores.
         A frame gets one thread per 2**18 pixels at most (a smaller frame takes
         longer to start a thread than to compute). The result is identical for
-        every value.
+        every value. ``precision="fixed"`` streams the frame through one
+        model, as a chip does: one thread.
     out : ndarray, optional
         Where to write the result: C-contiguous, writeable, the frame's shape
         and dtype, not overlapping the frame. On an error nothing is written
@@ -162,9 +164,12 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         pattern, a frame smaller than one period, values beyond the bit depth,
         NaN or inf, a ``clip_level`` that is not a positive finite number,
         ``"learned"`` filters fitted for another pattern or bit depth (or none
-        shipped for this one).
+        shipped for this one); with ``precision="fixed"``, a method it does not
+        model, a frame wider than its line buffers, widths of ``fixed_point``
+        that cannot hold a register of this plan and bit depth.
     TypeError
-        A ``clip_level`` that is not a number, None or ``"auto"``.
+        A ``clip_level`` that is not a number, None or ``"auto"``; a float frame
+        with ``precision="fixed"``.
 
     Notes
     -----
@@ -213,6 +218,9 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         raise ValueError(f"pattern: tile {pattern.tile_string!r} fits no Bayer phase, so its Z "
                          "sites stand in for no defined colour")
     src = np.ascontiguousarray(data)
+    if params.precision == "fixed":
+        check_fixed_call(src, pattern, method)
+        return run_fixed(src, out, pattern, method, params, bd)
     if method == "learned":
         filters = resolve_filters(params.filters, pattern)
         if clip is not None and _reaches(src, pattern, clip):

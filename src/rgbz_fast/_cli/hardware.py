@@ -1,0 +1,100 @@
+"""``rgbz-fast hardware``: the fixed-point model's silicon, its error against float64, the sweep."""
+
+from __future__ import annotations
+
+import argparse
+
+from . import _common as c
+
+NAME = "hardware"
+DESCRIPTION = """\
+The fixed-point streaming model of one method on one pattern (precision='fixed').
+
+It reports the silicon -- line buffers (count x width x bits, BRAM_18K at 18
+Kbit a block), window registers, latency in rows and pixels, pixels per clock,
+multipliers by width, adders, comparators, table bits, every register's
+declared width -- and the error against float64 on a dataset: the change of
+the mean CFA PSNR and the histogram of the differences (LSB) at the Z sites,
+under evaluate's default protocol (sRGB linearised, noise-free 11-bit mosaics)
+and on the 8-bit sRGB values mosaicked at 11 bits; and the fixed model's
+operations per pixel beside the paper's Table 1 and the float core's.
+
+--sweep varies every width and table size around the configuration and gives
+quality against cost (a table, its Pareto front, and with --out a plot)."""
+
+#: the methods the fixed-point model runs
+METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+
+
+def fixed_fields(text):
+    """--fixed-point: 'field=value,...' -> {field: int or str} (FixedPointConfig checks them)."""
+    out = {}
+    for item in c.csv(text):
+        key, sep, value = item.partition("=")
+        if not sep or not key.strip() or not value.strip():
+            raise argparse.ArgumentTypeError(f"expected FIELD=VALUE pairs, got {item!r}")
+        value = value.strip()
+        out[key.strip()] = int(value) if value.lstrip("-").isdigit() else value
+    return out
+
+
+def add_parser(sub):
+    p = c.command_parser(sub, NAME, "the fixed-point model: silicon cost, error against float64",
+                         DESCRIPTION)
+    p.add_argument("--method", default="sg", choices=METHODS, help="reconstruction method")
+    c.add_pattern(p, "mask1", "RGB-Z pattern: mask1, mask2, rows, or a tile such as ZR/BG")
+    p.add_argument("--width", type=c.positive_int, default=4000, metavar="PIXELS",
+                   help="pixels per row: the depth of a line buffer")
+    c.add_dataset(p, "folder of RGB images for the error (default: the five scikit-image "
+                     "samples evaluate uses with no --dataset)")
+    c.add_limit(p)
+    p.add_argument("--sweep", action="store_true",
+                   help="also vary every width and table size around the configuration: a "
+                        "table of quality against cost (and hardware_sweep.png with --out)")
+    p.add_argument("--fixed-point", type=fixed_fields, default=None, metavar="FIELD=VALUE,...",
+                   help="the configuration to report, as fields of FixedPointConfig (default: "
+                        "its defaults), e.g. exp_bits=12,recip=table")
+    c.add_json(p, "print JSON instead of Markdown")
+    c.add_output_folder(p, None, "also write hardware.md, hardware.json and, with --sweep, "
+                                 "hardware_sweep.png into DIR (default: print only)")
+    c.add_quiet(p, "no progress bar")
+    c.add_limits(p)
+    return p
+
+
+def run(args):
+    from .._devtools import hardware as hw
+    from .._devtools._common import json_text, progress
+    from .._patterns import get_pattern
+    from ..hardware import FixedPointConfig
+
+    out = c.output_folder(args.out)
+    try:
+        config = FixedPointConfig.build(args.fixed_point)
+    except (TypeError, ValueError) as exc:
+        raise c.CliError(f"--fixed-point: {exc}") from None
+    pattern = get_pattern(args.pattern)
+    images = hw.load_images(args.dataset, args.limit, **c.limits(args))
+    report = hw.hardware_report(args.method, pattern, width=args.width, images=images,
+                                config=config)
+    text = hw.format_report(report) + "\n"
+    files = {}
+    if args.sweep:
+        from .._devtools.plots import hardware_sweep_plot
+
+        configs = hw.sweep_configs(config)
+        ticks = iter(progress(range(len(configs)), total=len(configs), desc="sweep",
+                              quiet=args.quiet))
+        rows = hw.run_sweep(args.method, pattern, width=args.width, images=images, base=config,
+                            configs=configs, tick=lambda: next(ticks, None))
+        report["sweep"] = rows
+        text += "\n## Sweep\n\n" + hw.format_sweep(rows) + "\n"
+        if out is not None:
+            files["hardware_sweep.png"] = hardware_sweep_plot(
+                rows, f"{args.method} on {pattern.name}")
+    report["command"] = c.command_line(args)
+    doc = json_text(report) + "\n"
+    files.update({"hardware.md": text, "hardware.json": doc})
+    c.write_report(out, files)
+    print(doc if args.json else text, end="")
+    return 0

@@ -1,0 +1,78 @@
+"""rgbz_fast.hardware.hardware_cost: the fixed-point model's silicon, counted from the plans."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import rgbz_fast as rz
+from rgbz_fast.hardware import FixedPointConfig, bram18_blocks, hardware_cost
+from rgbz_fast.reconstruction import build_plans
+
+
+def test_line_buffers_window_and_latency_follow_the_border_rule():
+    """A 5x5 window needs 4 line buffers; the period-shift border of a 4-periodic tile reaches
+    row 3 from the top row, one buffer more (hw_recon.h)."""
+    m1 = hardware_cost("mask1", "sg", width=4000)
+    assert (m1.line_buffers, m1.latency_rows, m1.latency_pixels, m1.window) == (4, 2, 2,
+                                                                                 (5, 5, 11))
+    assert m1.line_buffer_bits == 4 * 4000 * 11
+    m2 = hardware_cost("mask2", "sg", width=4000)
+    assert (m2.line_buffers, m2.latency_rows, m2.latency_pixels, m2.window) == (5, 3, 3,
+                                                                                 (5, 6, 11))
+    assert m2.notes and "line buffer" in m2.notes[0]
+    rows = hardware_cost("rows", "bi", width=640, bit_depth=10)       # period 6
+    assert rows.line_buffers == 2 + 5 and rows.line_buffer_bits == 7 * 640 * 10
+
+
+def test_bram18_mapping():
+    assert bram18_blocks(4000, 11) == 3          # 4K x 4, three wide
+    assert bram18_blocks(1024, 18) == 1 and bram18_blocks(1025, 18) == 2
+    assert bram18_blocks(3840, 16) == 4
+    c = hardware_cost("mask1", "bilinear", width=3840, bit_depth=16)
+    assert c.line_buffer_bram18 == 4 * 4
+
+
+def test_operators_follow_the_plan():
+    """Counts read from the plans: the differences, beta's pairs, one reciprocal per
+    candidate plus sigma and the normalisation, one exponential per group with differences."""
+    for pattern in ("mask1", "mask2"):
+        _, plans = build_plans(rz.get_pattern(pattern), "sg")
+        c = hardware_cost(pattern, "sg")
+        for p in plans:
+            group = "green" if int(p["target"]) == 1 else "red/blue"
+            ops = c.ops[group]
+            nc = int(p["n_cand"])
+            combined = bool(p["use_ab"])
+            assert ops["abs"] == int(p["n_pairs"]) + combined * nc * (nc - 1) // 2
+            assert ops["recip_lookup"] == 1 + 1 + combined * (nc + 1)
+            assert ops["exp_lookup"] == 8 + 4 * combined
+    bi = hardware_cost("mask1", "bi")
+    assert "exp" not in bi.tables and bi.ops["green"]["recip_lookup"] == 4 + 1
+    lin = hardware_cost("mask2", "bilinear")
+    assert not lin.tables and not lin.multipliers() and lin.dsp48() == 0
+
+
+def test_tables_and_totals():
+    cfg = FixedPointConfig(exp="table", exp_table_size=64, exp_bits=12, recip="pwl",
+                           recip_table_size=32, recip_bits=14)
+    c = hardware_cost("mask2", "sg", fixed_point=cfg)
+    e, r = c.tables["exp"], c.tables["recip"]
+    assert (e["entries"], e["bits"], e["copies"]) == (64, 12, math.ceil(e["reads_per_site"] / 2))
+    assert (r["entries"], r["bits"], r["copies"]) == (33, 15, r["reads_per_site"])
+    assert c.table_bits == e["total_bits"] + r["total_bits"]
+    assert c.total_bits == c.line_buffer_bits + c.table_bits + c.datapath_bits
+    wider = hardware_cost("mask2", "sg", fixed_point=cfg.replace(weight_bits=cfg.weight_bits + 4))
+    assert wider.datapath_bits > c.datapath_bits and wider.table_bits == c.table_bits
+    d = c.as_dict()
+    assert d["bits"]["total"] == c.total_bits and d["registers"]["weight"] == cfg.weight_bits
+
+
+def test_bad_arguments_name_the_parameter():
+    with pytest.raises(ValueError, match="method: expected one of 'bilinear'"):
+        hardware_cost("mask1", "learned")
+    with pytest.raises(ValueError, match="width: expected an integer >= 1 and <= 16384"):
+        hardware_cost("mask1", "sg", width=20000)
+    with pytest.raises(ValueError, match="register_bits: the register"):
+        hardware_cost("mask2", "sg", bit_depth=16, fixed_point={"register_bits": 20})
