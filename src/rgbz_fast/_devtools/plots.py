@@ -358,6 +358,7 @@ def pattern_study_plot(res):
         ax.annotate(text, xy, xytext=(34, dy - 3), textcoords="offset points", fontsize=7,
                     arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5") if abs(dy) > 16
                     else None)
+    return _png(fig, plt)
 
 
 def hardware_sweep_plot(rows, title=""):
