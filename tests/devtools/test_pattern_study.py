@@ -249,3 +249,25 @@ def test_method_that_does_not_apply_is_a_note(tiny):
         assert r["note"].startswith("does not apply: pattern: the Z site")
         assert "depth without the colour guide" in r["note"] and r["wall_sigma_mm"] > 0
     assert all(r["cpsnr"] > 20 for r in res["rows"] if r["layout"] == "mask1")
+
+
+def test_line_buffers_and_multipliers_come_from_the_fixed_point_model():
+    """The hardware columns are hardware_cost's line buffers and variable multipliers where
+    the fixed-point model covers the method and the period, absent elsewhere."""
+    from rgbz_fast.hardware import hardware_cost
+
+    for tile, method in (("mask1", "sg"), ("ZRGR/BGBG/GRZR/BGBG", "bi"), ("mask2", "bilinear")):
+        cost = hardware_cost(get_pattern(tile), method)
+        assert ps._hardware(get_pattern(tile), method) == {
+            "line_buffers": cost.line_buffers,
+            "multipliers": sum(cost.multipliers().values())}
+    assert ps._hardware(get_pattern("mask1"), "sg")["line_buffers"] == 4
+    assert ps._hardware(get_pattern("mask1"), "bilinear")["multipliers"] == 0
+    assert ps._hardware(get_pattern("mask1"), "learned") == {}
+    assert ps._hardware(get_pattern("rows"), "edi_rows") == {}
+    sixteen = "/".join(["ZRGRGRGRGRGRGRGR"] + ["BGBGBGBGBGBGBGBG", "GRGRGRGRGRGRGRGR"] * 7
+                       + ["BGBGBGBGBGBGBGBG"])
+    assert ps._hardware(Pattern(sixteen), "sg") == {}            # period 16: beyond the model
+    from rgbz_fast._devtools.pattern_report import COLUMNS
+
+    assert {"line_buffers", "multipliers"} <= {c[0] for c in COLUMNS}

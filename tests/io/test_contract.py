@@ -131,7 +131,7 @@ ROWS = [
       "frame: pattern 'mask1' already has Z sites"),
     R("io.to_rgbz-pattern", "to_rgbz(pattern='bayer')",
       lambda f: rio.to_rgbz(small_frame("bayer"), "bayer"), ValueError,
-      "pattern: expected one of 'mask1', 'mask2', 'rows'"),
+      "pattern: 'bayer_grbg' has no Z sites; expected 'mask1', 'mask2', 'rows' or a tile"),
     R("io.to_rgbz-phase", "to_rgbz(GRBG frame, 'mask1_rggb')",
       lambda f: rio.to_rgbz(small_frame("bayer"), "mask1_rggb"), ValueError,
       "pattern: 'mask1_rggb' asks for Bayer phase 'RGGB'"),

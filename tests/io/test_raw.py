@@ -404,8 +404,12 @@ def test_to_rgbz_errors():
     with pytest.raises(ValueError, match="phase"):
         to_rgbz(frame, mask1("GRBG"))
     assert to_rgbz(frame, "mask1_rggb")[0].pattern == mask1("RGGB")
-    with pytest.raises(ValueError, match="expected one of"):
+    with pytest.raises(ValueError, match="has no Z sites; expected 'mask1'"):
         to_rgbz(frame, "bayer")
+    # a tile is shifted onto the frame's phase: its Z sites replace the raw's greens
+    tiled, _ = to_rgbz(frame, "ZRGR/BGBG/GRZR/BGBG")
+    assert tiled.pattern.bayer_phase == "RGGB"
+    assert tiled.pattern.tile_string == "RGRZ/GBGB/RZRG/GBGB"
     rgbz, _ = to_rgbz(frame, "mask1")
     with pytest.raises(ValueError, match="Z sites"):
         to_rgbz(rgbz, "mask1")

@@ -241,8 +241,8 @@ def add_pattern(p, default, what):
     p.add_argument("--pattern", default=default, help=what)
 
 
-def add_patterns(p, default="mask1,mask2"):
-    p.add_argument("--patterns", type=csv, default=default, help="comma-separated patterns")
+def add_patterns(p, default="mask1,mask2", what="comma-separated patterns"):
+    p.add_argument("--patterns", type=csv, default=default, help=what)
 
 
 def add_methods(p, default):

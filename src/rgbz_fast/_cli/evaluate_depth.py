@@ -24,6 +24,10 @@ def add_parser(sub):
     p.add_argument("--sections", type=c.csv, default=None,
                    help="comma list from scenes,upsample,rgbnir,range,noise,sunlight,"
                         "calibration (default: all)")
+    c.add_patterns(p, what="comma-separated patterns of the scene sections (scenes, upsample, "
+                 "rgbnir): mask1, mask2, rows or tiles such as ZRGR/BGBG/GRZR/BGBG, "
+                 "with Z pixels of 1x1 or 2x2 sites; the other sections measure mask1 and "
+                 "mask2")
     c.add_seed(p, 1, "seed of the sensor noise")
     c.add_json(p, "print the rows as JSON")
     c.add_limits(p)
@@ -38,7 +42,7 @@ def run(args):
         guess = Path("..") / "shared" / "data" / "rgbd"
         data = guess if guess.is_dir() else None
     result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed,
-                            **c.limits(args))
+                            patterns=args.patterns, **c.limits(args))
     if args.json:
         print(json.dumps(result, indent=1, default=float))
     else:

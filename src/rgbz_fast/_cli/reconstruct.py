@@ -31,9 +31,12 @@ def add_parser(sub):
                    help=".npz/.tif frames from `rgbz-fast simulate`, or camera raw / Bayer files")
     p.add_argument("--method", default="sg",
                    help=f"reconstruction method: {', '.join(METHODS)}")
-    p.add_argument("--rgbz-pattern", default=None, choices=("mask1", "mask2", "rows"),
+    p.add_argument("--rgbz-pattern", default=None, type=rgbz_pattern,
+                   metavar="mask1|mask2|rows|TILE",
                    help="place this Z pattern on the CFA of a plain Bayer raw, on its own Bayer "
-                        "phase (default: none; a raw without Z sites needs one)")
+                        "phase: a preset is built on it, a tile such as ZRGR/BGBG/GRZR/BGBG is "
+                        "shifted onto it by a row and/or a column (default: none; a raw "
+                        "without Z sites needs one)")
     c.add_pattern(p, None, "the RGB-Z pattern of a plain 16-bit TIFF/PNG mosaic that holds Z "
                            "sites but no rgbz-fast header, with --bit-depth (default: none; "
                            "frames from simulate carry theirs)")
@@ -58,6 +61,23 @@ def add_parser(sub):
     add_raw_group(p)
     c.add_run_options(p, DEFAULT_OUT)
     return p
+
+
+def rgbz_pattern(text):
+    """A preset name or a tile with Z sites whose colour sites fit a Bayer phase."""
+    import argparse
+
+    from .._patterns import get_pattern
+
+    try:
+        pattern = get_pattern(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(" ".join(str(exc).split())) from None
+    if not pattern.has_z or pattern.bayer_phase is None:
+        raise argparse.ArgumentTypeError(
+            f"expected a pattern with Z sites whose colour sites fit a Bayer phase (mask1, "
+            f"mask2, rows or a tile such as ZRGR/BGBG/GRZR/BGBG), got {text!r}")
+    return text.strip()
 
 
 def _numbers(text, n, what):
@@ -169,7 +189,8 @@ def _with_z_sites(frame, path, rgbz_pattern):
     if rgbz_pattern is None:
         raise c.CliError(f"--rgbz-pattern: {path} is a plain Bayer frame ({frame.pattern.name}, "
                          "no Z sites), so there is nothing to reconstruct; pass --rgbz-pattern "
-                         "mask1 (or mask2, rows) to place Z sites on its CFA and reconstruct them")
+                         "mask1 (or mask2, rows, a tile) to place Z sites on its CFA and "
+                         "reconstruct them")
     rgbz, _ = to_rgbz(frame, rgbz_pattern)
     return rgbz
 

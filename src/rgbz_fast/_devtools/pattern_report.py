@@ -2,9 +2,8 @@
 
 :data:`COLUMNS` is the one list of the table's columns (key, header, format,
 meaning); CSV, Markdown and the column legend are all written from it. A
-measurement that lands later (the fixed-point hardware model's line buffers
-and multipliers per layout) is one more entry here and one more field in the
-rows of :func:`rgbz_fast._devtools.pattern_study.pattern_study`.
+new measurement is one more entry here and one more field in the rows of
+:func:`rgbz_fast._devtools.pattern_study.pattern_study`.
 """
 
 from __future__ import annotations
@@ -43,6 +42,11 @@ COLUMNS = (
     ("ops_per_z", "ops/Z", _num(".1f"), "arithmetic per reconstructed pixel (counting "
                                         "build, every category summed)"),
     ("ops_per_pixel", "ops/px", _num(".2f"), "the same per frame pixel (ops/Z x Z fill)"),
+    ("line_buffers", "line buf", _num("d"), "line buffers of the fixed-point streaming model "
+                                           "(rgbz_fast.hardware.hardware_cost, its default "
+                                           "widths; methods and periods up to 8 it models)"),
+    ("multipliers", "mults", _num("d"), "variable multipliers of that model's datapath (one "
+                                        "site per clock)"),
     ("tof_ops_per_pixel", "ToF ops/px", _num(".2f"), "four-tap demodulation per frame pixel "
                                                      "(every frequency)"),
     ("wall_sigma_mm", "σ wall (mm)", _num(".1f"), "depth noise the guided ToF ISP predicts "
@@ -161,9 +165,6 @@ def to_markdown(res, png_name=None, command=None):
     lines += ["## Every layout and method", ""]
     lines += _table(rows, _present(rows), bold=lambda r: r.get("best")) + [""]
     lines += ["## Columns", ""] + [f"* **{h}**: {d}" for k, h, _, d in _present(rows)] + [""]
-    lines += ["Line buffers and multipliers per layout join the table when the fixed-point "
-              "hardware model lands (a column each in "
-              "`rgbz_fast._devtools.pattern_report.COLUMNS`).", ""]
     return "\n".join(lines)
 
 

@@ -20,9 +20,9 @@ the same) and measures, per layout, with what the library has:
 * **cost** -- operations per reconstructed pixel of each method, from the
   counting build of the kernels (every category of ``opcount`` summed), and
   per frame pixel (times the share of Z sites); the ToF demodulation per
-  frame pixel. Line buffers and multipliers are columns to add when the
-  fixed-point hardware model lands (one entry each in ``pattern_report.COLUMNS``
-  and one field here).
+  frame pixel; the line buffers and variable multipliers of the fixed-point
+  streaming model (:func:`rgbz_fast.hardware.hardware_cost` at its default
+  widths) for the methods and periods it models.
 
 Every measurement is a task (the colour and cost of a layout, its wall, one
 RGB-D scene) whose result is cached as JSON under ``cache_dir``, so an
@@ -419,6 +419,21 @@ def _settings_dict(s):
     return {k: (list(v) if isinstance(v, tuple) else v) for k, v in s.__dict__.items()}
 
 
+def _hardware(pattern, method):
+    """Line buffers and variable multipliers of the fixed-point model of ``method`` on
+    ``pattern`` ({} where the model does not cover them: learned, edi_rows, periods over 8)."""
+    from ..hardware import FIXED_METHODS, hardware_cost
+
+    if method not in FIXED_METHODS:
+        return {}
+    try:
+        cost = hardware_cost(pattern, method)
+    except ValueError:
+        return {}
+    return {"line_buffers": cost.line_buffers,
+            "multipliers": int(sum(cost.multipliers().values()))}
+
+
 def _rows(cands, jobs, results, settings, tof_ops):
     by = {}
     for job, res in zip(jobs, results):
@@ -461,6 +476,7 @@ def _rows(cands, jobs, results, settings, tof_ops):
             r.update({k: v.get(k) for k in COLOUR_METRICS})
             ops = v.get("ops_per_z")
             r.update(ops_per_z=ops, ops_per_pixel=None if ops is None else ops * z_fill)
+            r.update(_hardware(c.pattern, m) if "cpsnr" in v else {})
             depth_note = (wall or {}).get("note") or next(
                 (x["note"] for x in scenes if x.get("note")), "")
             r["note"] = "; ".join(n for n in (v.get("note"), c.note, depth_note,

@@ -125,7 +125,10 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     bd = config.bit_depth
     chain = config.colour_isp()
     speed_rgb = make_rgb(speed_shape)
-    variants = [(p, m, pr, e, d) for p in patterns for (m, pr, e, d) in _variants(methods)]
+    # a method that does not reconstruct a pattern (learned without filters for a tile) is
+    # left out of that pattern's rows, with its reason in "not_applicable"
+    variants = [(p, m, pr, e, d) for p in patterns for (m, pr, e, d) in _variants(methods)
+                if config.applies(p, m)]
     # per pattern, per image: reference CFA, RGB-Z frame, reference sRGB and its gains
     prepared = {p: [] for p in patterns}
     for src in sources:
@@ -192,7 +195,9 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
             "images": [src.name for src in sources], "speed_frame": list(speed_shape),
             "repeat": repeat, "warmup_calls": WARMUP_CALLS, "workers": workers,
             "threads_used": kernel_threads(workers, speed_shape[0] * speed_shape[1]),
-            "bit_depth": bd, "rows": rows}
+            "bit_depth": bd, "rows": rows,
+            "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
+                               in config.not_applicable().items()]}
 
 
 class Crop:
@@ -297,6 +302,7 @@ def format_markdown(res, png_name=None, command=None):
                          f"[{r['mpix_s_lo']:.1f}-{r['mpix_s_hi']:.1f}] | "
                          f"{r['cfa_psnr']:.3f} | {r['cpsnr']:.3f} | {d} | {f} |")
         lines.append("")
+    lines += [f"Not run: {m} on {p} ({why})." for p, m, why in res.get("not_applicable", ())]
     return "\n".join(lines)
 
 
@@ -313,4 +319,5 @@ def format_text(res):
         lines.append(f"{r['pattern']:7}  {series(r):14}  {r['precision']:7}  {r['exp']:4}  "
                      f"{r['mpix_s']:7.1f}  {r['cfa_psnr']:8.3f}  {r['cpsnr']:7.3f}  {d:>5}  "
                      f"{f:>8}  {'*' if r['pareto'] else ''}")
+    lines += [f"not run: {m} on {p} ({why})" for p, m, why in res.get("not_applicable", ())]
     return "\n".join(lines + [""] + _findings(res))

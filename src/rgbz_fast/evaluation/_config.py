@@ -146,13 +146,18 @@ class EvalConfig:
                              "linearise=False is a noise-free protocol")
         object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
-        if "learned" in self.methods:
-            # filters for every pattern (shipped or given), before any image
-            for p in self.patterns:
-                resolve_filters(learned_only(self.params.filters), get_pattern(p))
-        if "z_guided" in self.methods:
-            for p in self.patterns:
-                resolve_z_filters(self.params.filters, get_pattern(p), self.bit_depth)
+        # which method reconstructs which pattern, before any image: a pair that does not
+        # apply is left out of the run with its reason (:meth:`not_applicable`); a run in
+        # which no pair applies fails with the first reason
+        skips = {}
+        for p in self.patterns:
+            for m in self.methods:
+                why = _does_not_apply(get_pattern(p), m, self.params, self.bit_depth)
+                if why is not None:
+                    skips[(p, m)] = why
+        if len(skips) == len(self.patterns) * len(self.methods):
+            raise next(iter(skips.values()))
+        object.__setattr__(self, "_skips", skips)
         if self.needs_tof and not self.linearise:
             raise ValueError(f"linearise: methods {sorted(set(self.methods) & NEEDS_TOF)} read "
                              "the sensor model's frames, which take linear light")
@@ -162,6 +167,17 @@ class EvalConfig:
         if self.optics is not None and not self.linearise:
             raise ValueError("optics: a lens blurs linear light; it needs linearise=True (the "
                              "8-bit sRGB protocol mosaics the encoded values)")
+
+    def not_applicable(self):
+        """``{(pattern, method): reason}`` of the pairs this configuration leaves out: the
+        method does not reconstruct the pattern (``edi_rows`` off row patterns, ``learned``
+        without filters that fit it). ``reason`` is the ValueError the reconstruction would
+        raise; the other pairs run."""
+        return dict(self._skips)
+
+    def applies(self, pattern, method):
+        """Whether ``method`` runs on ``pattern`` in this configuration."""
+        return (pattern, method) not in self._skips
 
     @property
     def needs_tof(self):
@@ -244,6 +260,28 @@ class EvalConfig:
         return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))
+
+
+def _does_not_apply(pattern, method, params, bit_depth):
+    """The ValueError ``reconstruct(frame, method, params=params)`` raises for any frame of
+    ``pattern`` because of the pattern alone, or None when the method applies."""
+    from ..reconstruction._learned import learned_geometry
+    from ..reconstruction._reconstruct import _plans_for
+
+    try:
+        if pattern.bayer_phase is None:
+            pattern.bayer_tile()                 # the error that names the missing phase
+        if method == "learned":
+            learned_geometry(pattern)
+            resolve_filters(learned_only(params.filters), pattern)
+        elif method == "z_guided":
+            learned_geometry(pattern)
+            resolve_z_filters(params.filters, pattern, bit_depth)
+        else:
+            _plans_for(pattern, method, params.sg_mode, params.domain)
+    except ValueError as exc:
+        return exc
+    return None
 
 
 def _cache_version():

@@ -332,6 +332,9 @@ def crop_figure(source, config, box=None, size=64):
         ref, st = chain.render(ref_cfa, bayer, bit_depth=bd, return_stages=True)
         row = [("reference", ref)]
         for m in config.methods:
+            if not config.applies(pname, m):     # a grey tile where the method does not apply
+                row.append((f"{METHOD_LABELS.get(m, m)} (n/a)", np.full_like(ref, 128)))
+                continue
             out = reconstruct(frame, m, params=config.params)
             row.append((METHOD_LABELS.get(m, m),
                         chain.render(out, bayer, bit_depth=bd, gains=st["gains"])))

@@ -163,8 +163,10 @@ class Results:
 
     def to_json(self):
         return json.dumps({"config": asdict(self.config), "rows": self.rows,
-                           "skipped": [list(t) for t in self.skipped]}, indent=1,
-                          default=str)
+                           "skipped": [list(t) for t in self.skipped],
+                           "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
+                                              in self.config.not_applicable().items()]},
+                          indent=1, default=str)
 
     def summary_markdown(self, digits=None):
         """Per pattern: a table of mean ± std per method and metric, best per column in bold."""
@@ -198,9 +200,12 @@ class Results:
                 for k in self.config.metrics:
                     mean, std, _ = s[(p, m, k)]
                     cell = f"{mean:.{fmt[k]}f} ± {std:.{fmt[k]}f}"
-                    cells.append(f"**{cell}**" if best.get(k) == mean else cell)
+                    cells.append("n/a" if not self.config.applies(p, m) else
+                                 f"**{cell}**" if best.get(k) == mean else cell)
                 lines.append(f"| {self._label(p, m)} | " + " | ".join(cells) + " |")
             lines.append("")
+        if self.config.not_applicable():
+            lines += [self.notes(), ""]
         base = self.baseline()
         others = [m for m in self.config.methods if m != base]
         if others and len(self.images()) > 1:
@@ -213,6 +218,8 @@ class Results:
                                                      for k in self.config.metrics) + " |",
                           "|---" * (len(self.config.metrics) + 1) + "|"]
                 for m in others:
+                    if not (self.config.applies(p, m) and self.config.applies(p, base)):
+                        continue
                     cells = []
                     for k in self.config.metrics:
                         _, mean, lo, hi = self.paired(p, m, k, base)
@@ -257,9 +264,17 @@ class Results:
             out.append(" " * w + "".join(f"{METRIC_LABELS[k]:>20}" for k in self.config.metrics))
             for m in self.config.methods:
                 cells = "".join(f"{s[(p, m, k)][0]:>12.4f} ±{s[(p, m, k)][1]:<7.3f}"
+                                if self.config.applies(p, m) else f"{'n/a':>12}{'':8}"
                                 for k in self.config.metrics)
                 out.append(f"{METHOD_LABELS.get(m, m):<{w}}{cells}")
                 if self.ir_estimated(p, m):
                     out.append(" " * w + self._label(p, m)[len(METHOD_LABELS.get(m, m)) + 1:])
             out.append("")
+        if self.config.not_applicable():
+            out += [self.notes(), ""]
         return "\n".join(out)
+
+    def notes(self):
+        """One line per (pattern, method) the evaluation left out, and why ("" when none)."""
+        return "\n".join(f"n/a: {METHOD_LABELS.get(m, m)} on {p}: {' '.join(str(why).split())}"
+                         for (p, m), why in self.config.not_applicable().items())

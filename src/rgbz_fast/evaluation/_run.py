@@ -21,6 +21,7 @@ from .._validate import (check_flag, check_image, check_path, check_processes, c
                          integer_bits, merge_params)
 from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
                   sample_dataset, to_rgbz)
+from ..io._bayer import place_on_phase
 from ..reconstruction import NEEDS_TOF, reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ..simulation._scene import srgb_decode
@@ -32,15 +33,14 @@ __all__ = ["evaluate", "evaluate_image", "image_frames"]
 
 def _pattern_for(pname, bayer):
     """The pattern named ``pname`` on the Bayer arrangement ``bayer`` of a raw file (presets
-    follow the file's arrangement)."""
+    follow the file's arrangement; a tile is shifted onto it, :func:`place_on_phase`)."""
     base = str(pname).lower().split("_")[0]
     if base in ("mask1", "mask2", "rows", "bayer"):
         return getattr(_patterns, base)(bayer)
-    pattern = get_pattern(pname)
-    if pattern.bayer_phase != bayer:
-        raise ValueError(f"patterns: {pname!r} is built on {pattern.bayer_phase}, the raw file "
-                         f"on {bayer}")
-    return pattern
+    try:
+        return place_on_phase(str(pname), bayer)
+    except ValueError as exc:
+        raise ValueError(f"patterns: {str(exc).removeprefix('pattern: ')}") from None
 
 
 def image_frames(img, pattern, config, nir=None):
@@ -143,6 +143,8 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     estimated = getattr(source, "nir", None) is None
     for p in config.patterns:
         for m in config.methods:
+            if not config.applies(p, m):
+                continue                         # noted in the results, never run
             cached = _cache_read(cdir, key(p, m)) if cdir else None
             if cached is not None and set(config.metrics) <= set(cached):
                 rows += [_row(source.name, p, m, k, cached[k], estimated)

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._frame import RawFrame, _Adopt, raw_clip_level
-from .._patterns import Pattern, Z, mask1, mask2, rows
+from .._patterns import BAYER_PHASES, Pattern, Z, get_pattern, mask1, mask2, rows
 from .._validate import as_array, check_number
 
 __all__ = ["to_rgbz", "clipped_mask", "frame_clip_level"]
@@ -31,9 +31,11 @@ def to_rgbz(frame, pattern):
     ----------
     frame : RawFrame
         A plain Bayer frame (no Z sites), e.g. from :func:`~rgbz_fast.io.read_raw`.
-    pattern : {"mask1", "mask2", "rows"} or Pattern
-        The RGB-Z preset. It is built on the frame's Bayer phase
-        (``mask1(phase)``); a phase suffix (``"mask1_rggb"``) or a
+    pattern : {"mask1", "mask2", "rows"}, str or Pattern
+        The RGB-Z preset or a tile string (``"ZRGR/BGBG/GRZR/BGBG"``). A
+        preset is built on the frame's Bayer phase (``mask1(phase)``); a
+        tile is shifted by a row and/or a column onto it
+        (:func:`place_on_phase`); a phase suffix (``"mask1_rggb"``) or a
         :class:`~rgbz_fast.Pattern` must agree with it.
 
     Returns
@@ -72,7 +74,8 @@ def to_rgbz(frame, pattern):
     phase = frame.pattern.bayer_phase
     if phase is None:
         raise ValueError(f"frame: pattern {frame.pattern.name!r} is not a Bayer CFA")
-    target = _rgbz_pattern(pattern, phase)
+    target = place_on_phase(pattern, phase) if isinstance(pattern, str) else \
+        _rgbz_pattern(pattern, phase)
     P, Q = target.period
     r = frame.shape[0] - frame.shape[0] % P
     c = frame.shape[1] - frame.shape[1] % Q
@@ -162,6 +165,50 @@ def clipped_mask(frame, clip_level=None, *, radius=0):
 
 #: the clip level of a frame read from a raw file (:func:`rgbz_fast._frame.raw_clip_level`)
 frame_clip_level = raw_clip_level
+
+
+def place_on_phase(pattern, phase):
+    """``pattern`` (a preset name, a tile string or a Pattern) on the Bayer phase ``phase``.
+
+    A preset is built on the phase (``mask1(phase)``). Any other tile is shifted by one row
+    and/or one column -- the shift that maps its Bayer phase onto ``phase`` -- which is what
+    the presets' other phases are (``mask1("RGGB")`` is ``mask1()`` shifted by a column):
+    the layout stays the same, the frame's colour sites keep their colours.
+
+    Raises
+    ------
+    ValueError
+        ``pattern`` has no Z sites, its colour sites fit no Bayer phase, or a preset
+        name's phase suffix (``"mask1_rggb"``) differs from ``phase``.
+
+    Examples
+    --------
+    >>> from rgbz_fast.io._bayer import place_on_phase
+    >>> place_on_phase("ZRGR/BGBG/GRZR/BGBG", "RGGB").tile_string
+    'RGRZ/GBGB/RZRG/GBGB'
+    """
+    if isinstance(pattern, str):
+        base, _, suffix = pattern.strip().lower().partition("_")
+        if base in _RGBZ_PRESETS and (not suffix or suffix.upper() in BAYER_PHASES):
+            return _rgbz_pattern(pattern, phase)
+        pattern = get_pattern(pattern)
+    elif not isinstance(pattern, Pattern):
+        raise TypeError(f"pattern: expected a preset name, a tile string or a Pattern, got "
+                        f"{type(pattern).__name__}")
+    if not pattern.has_z:
+        raise ValueError(f"pattern: {pattern.name!r} has no Z sites; expected 'mask1', "
+                         "'mask2', 'rows' or a tile with Z sites such as 'ZRGR/BGBG/GRZR/BGBG'")
+    if pattern.bayer_phase is None:
+        raise ValueError(f"pattern: the colour sites of {pattern.name!r} fit no Bayer phase")
+    if pattern.bayer_phase == phase:
+        return pattern
+    for shift in ((0, 0), (0, 1), (1, 0), (1, 1)):
+        moved = np.roll(pattern.tile, (-shift[0], -shift[1]), (0, 1))
+        try:
+            return Pattern(moved, bayer=phase)
+        except ValueError:                # the colour sites of this shift fit another phase
+            continue
+    raise ValueError(f"pattern: {pattern.name!r} cannot be placed on Bayer phase {phase!r}")
 
 
 def _rgbz_pattern(pattern, phase):
