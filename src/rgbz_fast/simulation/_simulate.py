@@ -462,11 +462,9 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
             "invalid (ToFTaps.valid)", UnambiguousRangeWarning, stacklevel=_stacklevel)
         valid = valid & ~beyond
     meta = {"noise": noise, "seed": seed, "pattern": pattern.name,
-            "integration_time": sensor.integration_time,
-            "system_gain": sensor.system_gain,
+            "integration_time": sensor.integration_time, "system_gain": sensor.system_gain,
             "wrap_ranges": sensor.wrap_ranges, "rng_version": rng_version,
-            # an amplitude made from the scene's own RGB: a guide that leaks the colour
-            "ir_estimated": scene.ir_reflectance is None}
+            "ir_estimated": scene.ir_reflectance is None}   # NIR from the RGB: a leaking guide
     return ToFTaps(taps, np.asarray(sensor.frequencies), (rows, cols), block,
                    sensor.bit_depth, depth_true, valid, sat, sensor, shape, meta)
 
