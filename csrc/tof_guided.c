@@ -227,13 +227,46 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
     }
 }
 
+
+#define TOFG_BW 16
+#define TOFG_UNROLL _Pragma("GCC unroll 4")
+
+/* The outputs of one block of TOFG_BW measurements from its sums: the weighted mean
+   phasors, the variance of the mean (HUGE_VALF without weight) and the output noise. */
+RGBZ_INLINE void tofg_store(
+    const tofg_pass_args *p, ptrdiff_t m0, float nr[][TOFG_BW], float ni[][TOFG_BW],
+    const float *den, const float *w2v, const float *w2n, const int NF)
+{
+    const ptrdiff_t N = p->R * p->C;
+    for (int j = 0; j < TOFG_BW; j++) {
+        const ptrdiff_t m = m0 + j;
+        const int ok = den[j] > 0.0f;
+        const float inv = ok ? 1.0f / den[j] : 0.0f;
+        TOFG_UNROLL
+        for (int f = 0; f < NF; f++) {
+            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
+            if (p->or64) {
+                p->or64[f * N + m] = mr;
+                p->oi64[f * N + m] = mi;
+            } else {
+                p->or_[f * N + m] = mr;
+                p->oi[f * N + m] = mi;
+            }
+        }
+        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
+        if (p->nin)
+            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
+        else
+            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
+    }
+}
+
+
 /* The same mean for 16 output columns at once, the frequency count a compile-time constant:
    the sums stay in registers over the taps (shift[t]: the offset of tap t in the planes;
    every neighbour is on the grid and within the radius), the order of every sum the
    generic row's (offsets in increasing order, frequencies in order). ew: the weight of tap t
    for the output m0 + j at ew[t][j] (tofg_pairs), or NULL: computed here. */
-#define TOFG_BW 16
-#define TOFG_UNROLL _Pragma("GCC unroll 4")
 RGBZ_INLINE void tofg_block(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
     int ntaps, const int NF)
@@ -303,27 +336,7 @@ RGBZ_INLINE void tofg_block(
             w2n[j] += ww * rn[j];
         }
     }
-    for (int j = 0; j < TOFG_BW; j++) {
-        const ptrdiff_t m = m0 + j;
-        const int ok = den[j] > 0.0f;
-        const float inv = ok ? 1.0f / den[j] : 0.0f;
-        TOFG_UNROLL
-        for (int f = 0; f < NF; f++) {
-            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
-            if (p->or64) {
-                p->or64[f * N + m] = mr;
-                p->oi64[f * N + m] = mi;
-            } else {
-                p->or_[f * N + m] = mr;
-                p->oi[f * N + m] = mi;
-            }
-        }
-        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
-        if (p->nin)
-            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
-        else
-            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
-    }
+    tofg_store(p, m0, nr, ni, den, w2v, w2n, NF);
 }
 
 
@@ -358,27 +371,7 @@ RGBZ_INLINE void tofg_block_e(
             w2n[j] += ww * rq[j];
         }
     }
-    for (int j = 0; j < TOFG_BW; j++) {
-        const ptrdiff_t m = m0 + j;
-        const int ok = den[j] > 0.0f;
-        const float inv = ok ? 1.0f / den[j] : 0.0f;
-        TOFG_UNROLL
-        for (int f = 0; f < NF; f++) {
-            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
-            if (p->or64) {
-                p->or64[f * N + m] = mr;
-                p->oi64[f * N + m] = mi;
-            } else {
-                p->or_[f * N + m] = mr;
-                p->oi[f * N + m] = mi;
-            }
-        }
-        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
-        if (p->nin)
-            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
-        else
-            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
-    }
+    tofg_store(p, m0, nr, ni, den, w2v, w2n, NF);
 }
 
 /* The weight factor of the pairs (m0 + k, n0 + k), k < cnt, into e[k]: the expression of

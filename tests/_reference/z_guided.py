@@ -2,8 +2,8 @@
 
 Written from docs/guide/z_guided.md, apart from ``rgbz_fast.reconstruction._z_guided``
 and csrc/z_guided.c: the window, its taps and the hash come from the channel codes of
-the gathered window as in :mod:`_reference.learned` (an arctangent for the orientation,
-a root and a division for the coherence); the guide features of each site from its own
+the gathered window by :func:`_reference.learned.hash_sites` (an arctangent for the
+orientation, a root and a division for the coherence); the guide features of each site from its own
 Z pixel and the 3 x 3 around it, the colour means from the pixels of the box
 gathered with the border rule of every kernel. The amplitude grid and its noise
 variance (``rgbz_fast.reconstruction._z_guided.guide_grid``, which the tests of the
@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .learned import STEPS, Z
-from .reconstruction import gather, shift_index, window_offsets
+from .learned import Z, hash_sites
+from .reconstruction import shift_index, window_offsets
 
 
 def _colour_mean(data, chan, t, y0, x0, b, period):
@@ -50,42 +50,8 @@ def reference_z_guided(data, filters, grid, var):
         for c in range(Q):
             if pattern.tile[r, c] != Z:
                 continue
-            ys, xs = np.mgrid[r:data.shape[0]:P, c:data.shape[1]:Q]
-            ys, xs = ys.ravel(), xs.ravel()
-            vals, codes = gather(data, chan, ys, xs, offsets, (P, Q))
-            known = codes[0] != Z
-            taps = np.flatnonzero(known)
-            X = vals[:, taps]
-            tap_off = [tuple(offsets[i]) for i in taps]
-            E = []
-            by_colour = {0: [], 1: [], 2: []}          # horizontal and vertical pairs' squared
-            for sy, sx in STEPS:                        # differences, by colour
-                terms = []
-                for i, (dy, dx) in enumerate(tap_off):
-                    other = (dy + sy, dx + sx)
-                    if (other in tap_off and max(abs(dy), abs(dx), abs(other[0]),
-                                                 abs(other[1])) <= hr
-                            and codes[0, taps[i]] == codes[0, taps[tap_off.index(other)]]):
-                        terms.append((X[:, i] - X[:, tap_off.index(other)]) ** 2)
-                        if sy == 0 or sx == 0:
-                            by_colour[int(codes[0, taps[i]])].append(terms[-1])
-                E.append(np.mean(terms, axis=0))
-            Ec = np.array([np.mean(by_colour[c], axis=0) for c in range(3)])
-            with np.errstate(invalid="ignore", divide="ignore"):
-                spread = Ec.max(0) / Ec.min(0)          # inf: a channel without texture
-            spread[Ec.max(0) == 0] = 0.0                 # no texture at all: the lowest level
-            eh, ev, ed1, ed2 = E
-            a = eh - ev
-            bb = (ed1 - ed2) / 2
-            t = (eh + ev) / 2 + (ed1 + ed2) / 4
-            octant = np.floor((np.degrees(np.arctan2(bb, a)) + 22.5) / 45.0).astype(int) % 8
-            with np.errstate(invalid="ignore", divide="ignore"):
-                coherence = np.sqrt(a * a + bb * bb) / t
-            strength = (t[:, None] > lf.strength_thresholds[phase][None, :]).sum(1)
-            coh = (coherence[:, None] > lf.coherence_thresholds[phase][None, :]).sum(1)
-            spr = (spread[:, None] > lf.spread_thresholds[phase][None, :]).sum(1)
-            bucket = ((octant * lf.n_strength + strength) * lf.n_coherence + coh) \
-                * lf.n_spread + spr
+            ys, xs, X, taps, tap_off, codes, _, _, bucket = hash_sites(
+                data, chan, pattern, (r, c), offsets, hr, lf, phase)
             # the guide: the site's Z pixel (its tile) and the 3 x 3 around it, clamped
             tc = int(target[r, c])
             base_taps = [i for i, (dy, dx) in enumerate(tap_off)
