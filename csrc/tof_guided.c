@@ -977,68 +977,94 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
     }
 }
 
-/* a node as the pixel loop reads it: colour (scaled), prior, depth, sigma in one 32-byte
-   record, so the four nodes of a pixel are two cache lines */
-typedef struct {
-    float c0, c1, c2, prior;
-    double depth, sigma;
-} tofg_node;
+/* pixels per chunk of the pixel loop (tofg_up_span) */
+#define TOFG_UPB 64
 
-/* the 4 nodes around the pixel, bilinear weights (the filled nodes at their prior): the rule
-   of tofg_up_mode, written out for four candidates; NaN where the heaviest node has no depth
-   (a veto node) or the nodes outside the chosen surface hold more than `ambiguity` of the
-   weight (the colour cannot say which surface the pixel is on); a node counts as off it when
-   its depth lies more than max(gap, the mean's tolerance) from the chosen one, or it has none
-   (a slanted surface's nodes differ by more than the tolerance without being another
-   surface) */
-static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, float ambiguity,
-                                 double gap, ptrdiff_t r, float fy, ptrdiff_t c, float fx,
-                                 const float *pc,
-                                 float *out, float *conf)
+/* The pixels x0 .. x0 + n - 1 (n <= TOFG_UPB) of a row of pixels between grid rows r and r + 1
+   (r at the last) at fraction fy, colours pc[ch][j] (scaled): each takes the 4 nodes around it
+   with bilinear weights (the filled nodes at their prior), the rule of tofg_up_mode written
+   out for four candidates; NaN where the heaviest node has no depth (a veto node) or the
+   nodes outside the chosen surface hold more than `ambiguity` of the weight (the colour
+   cannot say which surface the pixel is on); a node counts as off it when its depth lies
+   more than max(gap, the mean's tolerance) from the chosen one, or it has none (a slanted
+   surface's nodes differ by more than the tolerance without being another surface).
+   Branch-free, in two loops over the pixels that vectorise (the nodes by gathers): the
+   weights and the heaviest node in float, then the mean and the ambiguity in double; every
+   weight, sum and comparison is the scalar rule's, in its order (a node without weight adds
+   exact zeros). */
+RGBZ_CLONES_512 static void tofg_up_span(const tofg_up_args *p, float ambiguity, double gap,
+                                         ptrdiff_t r, float fy, const int32_t *restrict cx,
+                                         const float *restrict fx, ptrdiff_t x0, ptrdiff_t n,
+                                         float pc[3][TOFG_UPB], float *restrict out,
+                                         float *restrict conf)
 {
-    const ptrdiff_t r1 = r + 1 < p->R ? r + 1 : r, c1 = c + 1 < p->C ? c + 1 : c;
-    const tofg_node *nd[4] = {nodes + r * p->C + c, nodes + r * p->C + c1,
-                              nodes + r1 * p->C + c, nodes + r1 * p->C + c1};
-    const float ws[4] = {(1.0f - fy) * (1.0f - fx), (1.0f - fy) * fx, fy * (1.0f - fx),
-                         fy * fx};
-    float w[4], best = 0.0f;
-    int kb = -1;
-    for (int k = 0; k < 4; k++) {
-        const float pr = nd[k]->prior * ws[k];
-        w[k] = 0.0f;
-        if (!(pr > 0.0f)) continue;       /* on a grid line (Mask1: 3 pixels in 4) or a hole */
-        const float t0 = pc[0] - nd[k]->c0, t1 = pc[1] - nd[k]->c1, t2 = pc[2] - nd[k]->c2;
-        const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
-        const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
-        w[k] = pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
-        if (w[k] > best) { best = w[k]; kb = k; }
-    }
-    if (kb < 0 || nd[kb]->depth != nd[kb]->depth) {
-        *out = NAN;
-        *conf = 0.0f;
-        return;
-    }
-    const double db = nd[kb]->depth;
-    double tol = p->tol_k * nd[kb]->sigma;
-    tol = tol > p->tol_min ? tol : p->tol_min;
-    const double off = gap > tol ? gap : tol;
-    double num = 0.0, den = 0.0, other = 0.0;
-    for (int k = 0; k < 4; k++) {
-        const double d = nd[k]->depth;
-        if (w[k] > 0.0f && fabs(d - db) <= tol) {
-            num += w[k] * d;
-            den += w[k];
-        } else if (!(fabs(d - db) <= off)) {           /* true for a veto node's NaN */
-            other += w[k];
+    /* the nodes by their column (int32: gathers of 32-bit indices vectorise) in the rows of
+       the two grid lines; dr: the second line's offset from the first (0 at the last) */
+    const ptrdiff_t C = p->C, N = p->R * C, r1 = r + 1 < p->R ? r + 1 : r;
+    const int32_t dr = (int32_t)((r1 - r) * C);
+    const float *restrict pr0 = p->prior + r * C, *restrict pr1 = p->prior + r1 * C;
+    const float *restrict a0 = p->col + r * C, *restrict a1 = a0 + N, *restrict a2 = a1 + N;
+    const float *restrict b0 = p->col + r1 * C, *restrict b1 = b0 + N, *restrict b2 = b1 + N;
+    const double *restrict d0 = p->depth + r * C, *restrict d1 = p->depth + r1 * C;
+    const double *restrict sg0 = p->sigma + r * C;
+    const float ihc = p->inv2hc2, gy = 1.0f - fy;
+    const double tol_k = p->tol_k, tol_min = p->tol_min;
+    float w0[TOFG_UPB], w1[TOFG_UPB], w2[TOFG_UPB], w3[TOFG_UPB];
+    int32_t kb[TOFG_UPB], ca[TOFG_UPB], cb[TOFG_UPB];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const int32_t c = cx[x0 + j], c1 = c + 1 < C ? c + 1 : c;
+        ca[j] = c;
+        cb[j] = c1;
+        const float f = fx[x0 + j], g = 1.0f - f;
+        const float q0 = pc[0][j], q1 = pc[1][j], q2 = pc[2][j];
+        float wk[4];
+        /* the weight of node k: spatial ws times its prior times the colour weight; none on
+           a grid line (Mask1: 3 pixels in 4) nor from a hole */
+#define TOFG_UP_W(k, ws, prv, e0, e1, e2, i)                                                  \
+        {                                                                                      \
+            const float pr = prv[i] * (ws);                                                    \
+            const float t0 = q0 - e0[i], t1 = q1 - e1[i], t2 = q2 - e2[i];                     \
+            const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;                            \
+            const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * ihc);                    \
+            wk[k] = pr > 0.0f ? pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN) : 0.0f;            \
         }
+        TOFG_UP_W(0, gy * g, pr0, a0, a1, a2, c)
+        TOFG_UP_W(1, gy * f, pr0, a0, a1, a2, c1)
+        TOFG_UP_W(2, fy * g, pr1, b0, b1, b2, c)
+        TOFG_UP_W(3, fy * f, pr1, b0, b1, b2, c1)
+#undef TOFG_UP_W
+        float best = 0.0f;
+        int32_t kbest = -1;
+        for (int k = 0; k < 4; k++) {
+            kbest = wk[k] > best ? k : kbest;
+            best = wk[k] > best ? wk[k] : best;
+        }
+        w0[j] = wk[0];
+        w1[j] = wk[1];
+        w2[j] = wk[2];
+        w3[j] = wk[3];
+        kb[j] = kbest;
     }
-    if (other > ambiguity * (den + other)) {
-        *out = NAN;
-        *conf = 0.0f;
-        return;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const int32_t k = kb[j], c = ca[j], c1 = cb[j];
+        const double dk[4] = {d0[c], d0[c1], d1[c], d1[c1]};
+        const float wk[4] = {w0[j], w1[j], w2[j], w3[j]};
+        const double db = (k & 2) ? ((k & 1) ? dk[3] : dk[2]) : ((k & 1) ? dk[1] : dk[0]);
+        double tol = tol_k * sg0[((k & 2) ? dr : 0) + ((k & 1) ? c1 : c)];
+        tol = tol > tol_min ? tol : tol_min;
+        const double off = gap > tol ? gap : tol;
+        double num = 0.0, den = 0.0, other = 0.0;
+        for (int q = 0; q < 4; q++) {
+            const double d = dk[q], wq = wk[q], e = fabs(d - db);
+            const int in = (wk[q] > 0.0f) & (e <= tol);
+            num += in ? wq * d : 0.0;
+            den += in ? wq : 0.0;
+            other += (!in & !(e <= off)) ? wq : 0.0;        /* true for a veto node's NaN */
+        }
+        const int none = (k < 0) | (db != db) | (other > ambiguity * (den + other));
+        out[x0 + j] = none ? NAN : (float)(num / den);
+        conf[x0 + j] = none ? 0.0f : (float)den;          /* the bilinear weights sum to 1 */
     }
-    *out = (float)(num / den);
-    *conf = (float)den;                               /* the bilinear weights sum to 1 */
 }
 
 /* ------------------------------------------------------------------ the element types */

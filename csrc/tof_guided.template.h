@@ -109,10 +109,11 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
 {
     if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf
         || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4
-        || !(own_k >= 0.0) || !(ambiguity >= 0.0) || !(gap >= 0.0))
+        || !(own_k >= 0.0) || !(ambiguity >= 0.0) || !(gap >= 0.0)
+        || C > INT32_MAX / 2)                   /* tofg_up_span's 32-bit node indices */
         return RGBZ_EINVAL;
     const ptrdiff_t N = R * C;
-    ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);
+    int32_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);
     float *fx = malloc((size_t)(W > 0 ? W : 1) * sizeof *fx);
     float *prior0 = malloc((size_t)N * sizeof *prior0), *prior = malloc((size_t)N * sizeof *prior);
     double *fd = malloc((size_t)N * sizeof *fd), *fs = malloc((size_t)N * sizeof *fs);
@@ -120,7 +121,11 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
         free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
         return RGBZ_ENOMEM;
     }
-    for (ptrdiff_t x = 0; x < W; x++) tofg_bracket(cc, C, (double)x, cx + x, fx + x);
+    for (ptrdiff_t x = 0; x < W; x++) {
+        ptrdiff_t c;
+        tofg_bracket(cc, C, (double)x, &c, fx + x);
+        cx[x] = (int32_t)c;
+    }
     for (ptrdiff_t m = 0; m < N; m++) prior0[m] = depth[m] == depth[m] ? 1.0f : 0.0f;
     const tofg_up_args p0 = {depth, sigma, col, prior0, R, C, rc, cc, spacing,
                              (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};
@@ -134,16 +139,6 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
             tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, fd, fs, prior);
     const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
                             (float)inv2hc2, (float)tol_k, (float)tol_min};
-    tofg_node *nodes = malloc((size_t)N * sizeof *nodes);
-    if (!nodes) {
-        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
-        return RGBZ_ENOMEM;
-    }
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t m = 0; m < N; m++) {
-        const tofg_node nm = {col[m], col[N + m], col[2 * N + m], prior[m], fd[m], fs[m]};
-        nodes[m] = nm;
-    }
     const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),
                 s2 = (float)(scale * cscale[2]);
     RGBZ_PARALLEL_FOR
@@ -151,13 +146,19 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
         ptrdiff_t r;
         float fy;
         tofg_bracket(rc, R, (double)y, &r, &fy);
-        for (ptrdiff_t x = 0; x < W; x++) {
-            const IN_T *g = guide + (y * W + x) * 3;
-            const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};
-            tofg_up_pixel(nodes, &p, (float)ambiguity, gap, r, fy, cx[x], fx[x], pc,
-                          out + y * W + x, conf + y * W + x);
+        for (ptrdiff_t x0 = 0; x0 < W; x0 += TOFG_UPB) {
+            const ptrdiff_t n = W - x0 < TOFG_UPB ? W - x0 : TOFG_UPB;
+            const IN_T *g = guide + (y * W + x0) * 3;
+            float pc[3][TOFG_UPB];
+            for (ptrdiff_t j = 0; j < n; j++) {
+                pc[0][j] = (float)g[3 * j] * s0;
+                pc[1][j] = (float)g[3 * j + 1] * s1;
+                pc[2][j] = (float)g[3 * j + 2] * s2;
+            }
+            tofg_up_span(&p, (float)ambiguity, gap, r, fy, cx, fx, x0, n, pc, out + y * W,
+                         conf + y * W);
         }
     }
-    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);
+    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
     return RGBZ_OK;
 }
