@@ -55,34 +55,45 @@ RGBZ_INLINE float tofg_exp_neg(float x)
 }
 
 /* ------------------------------------------------------------------ the guide's colours */
+/* |L * plane| at the columns [x0, x1) of row r (interior) into l[0 .. x1 - x0), in double:
+   a loop that vectorises */
+RGBZ_CLONES_512 static void tofg_lap_row(const float *restrict p, ptrdiff_t r, ptrdiff_t C,
+                                         ptrdiff_t x0, ptrdiff_t x1, double *restrict l)
+{
+    const float *a = p + (r - 1) * C, *b = p + r * C, *c = p + (r + 1) * C;
+    for (ptrdiff_t x = x0; x < x1; x++) {
+        const double v = (double)a[x - 1] - 2.0 * a[x] + a[x + 1]
+                         - 2.0 * b[x - 1] + 4.0 * b[x] - 2.0 * b[x + 1]
+                         + (double)c[x - 1] - 2.0 * c[x] + c[x + 1];
+        l[x - x0] = fabs(v);
+    }
+}
+
 /* sum over the interior of |L * plane| for L = [1 -2 1; -2 4 -2; 1 -2 1] (Immerkaer 1996),
-   per plane of col (3, R, C), in double */
+   per plane of col (3, R, C), in double, each row's terms in column order */
 static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers)
 {
     const ptrdiff_t N = R * C;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
     for (int ch = 0; ch < 3; ch++) {
         const float *p = col + ch * N;
         double total = 0.0;
-        const int nth = rgbz_threads(workers);
-        (void)nth;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) reduction(+:total) num_threads(nth)
 #endif
         for (ptrdiff_t r = 1; r < R - 1; r++) {
-            const float *a = p + (r - 1) * C, *b = p + r * C, *c = p + (r + 1) * C;
-            double row = 0.0;
-            for (ptrdiff_t x = 1; x < C - 1; x++) {
-                const double l = (double)a[x - 1] - 2.0 * a[x] + a[x + 1]
-                                 - 2.0 * b[x - 1] + 4.0 * b[x] - 2.0 * b[x + 1]
-                                 + (double)c[x - 1] - 2.0 * c[x] + c[x + 1];
-                row += fabs(l);
+            double row = 0.0, l[256];
+            for (ptrdiff_t x0 = 1; x0 < C - 1; x0 += 256) {
+                const ptrdiff_t x1 = C - 1 - x0 < 256 ? C - 1 : x0 + 256;
+                tofg_lap_row(p, r, C, x0, x1, l);
+                for (ptrdiff_t x = 0; x < x1 - x0; x++) row += l[x];
             }
             total += row;
         }
         lap[ch] = total;
     }
 }
-
 
 /* ------------------------------------------------------------------ the 1-D passes */
 typedef struct {

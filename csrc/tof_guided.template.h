@@ -97,6 +97,28 @@ static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W
     return RGBZ_OK;
 }
 
+/* the pixels of row y of a guide of IN_T (scales s[3]) between grid rows r and r + 1 at
+   fraction fy, span by span (tofg_up_span) */
+RGBZ_CLONES_512 static void RGBZ_CAT(tofg_up_row, IS)(const tofg_up_args *p, const IN_T *guide,
+                                                      ptrdiff_t W, ptrdiff_t y, const float *s,
+                                                      float ambiguity, double gap, ptrdiff_t r,
+                                                      float fy, const int32_t *cx,
+                                                      const float *fx, float *out, float *conf)
+{
+    const float s0 = s[0], s1 = s[1], s2 = s[2];
+    for (ptrdiff_t x0 = 0; x0 < W; x0 += TOFG_UPB) {
+        const ptrdiff_t n = W - x0 < TOFG_UPB ? W - x0 : TOFG_UPB;
+        const IN_T *restrict g = guide + (y * W + x0) * 3;
+        float pc[3][TOFG_UPB];
+        for (ptrdiff_t j = 0; j < n; j++) {
+            pc[0][j] = (float)g[3 * j] * s0;
+            pc[1][j] = (float)g[3 * j + 1] * s1;
+            pc[2][j] = (float)g[3 * j + 2] * s2;
+        }
+        tofg_up_span(p, ambiguity, gap, r, fy, cx, fx, x0, n, pc, out + y * W, conf + y * W);
+    }
+}
+
 /* the upsampling of rgbz_tofg_upsample for a guide of IN_T */
 static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
                                        double scale, const double *cscale, const double *depth,
@@ -139,25 +161,15 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
             tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, fd, fs, prior);
     const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
                             (float)inv2hc2, (float)tol_k, (float)tol_min};
-    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),
-                s2 = (float)(scale * cscale[2]);
+    const float s[3] = {(float)(scale * cscale[0]), (float)(scale * cscale[1]),
+                        (float)(scale * cscale[2])};
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t y = 0; y < H; y++) {
         ptrdiff_t r;
         float fy;
         tofg_bracket(rc, R, (double)y, &r, &fy);
-        for (ptrdiff_t x0 = 0; x0 < W; x0 += TOFG_UPB) {
-            const ptrdiff_t n = W - x0 < TOFG_UPB ? W - x0 : TOFG_UPB;
-            const IN_T *g = guide + (y * W + x0) * 3;
-            float pc[3][TOFG_UPB];
-            for (ptrdiff_t j = 0; j < n; j++) {
-                pc[0][j] = (float)g[3 * j] * s0;
-                pc[1][j] = (float)g[3 * j + 1] * s1;
-                pc[2][j] = (float)g[3 * j + 2] * s2;
-            }
-            tofg_up_span(&p, (float)ambiguity, gap, r, fy, cx, fx, x0, n, pc, out + y * W,
-                         conf + y * W);
-        }
+        RGBZ_CAT(tofg_up_row, IS)(&p, guide, W, y, s, (float)ambiguity, gap, r, fy, cx, fx,
+                                  out, conf);
     }
     free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
     return RGBZ_OK;
