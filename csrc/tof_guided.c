@@ -622,6 +622,77 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
 }
 
 /* ------------------------------------------------------------------ validity */
+typedef struct {
+    const double *amp, *depth, *residual, *sigma_scale, *refl_coef;
+    const float *var;
+    const uint8_t *sat;
+    ptrdiff_t N;
+    double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
+    double *snr, *sigma, *refl;
+    uint8_t *flags;
+} tofg_valid_args;
+
+/* the measurements [n0, n1) with NF frequencies (a compile-time constant up to 4): branch-free,
+   the arrays restrict parameters, so that the loop over the measurements vectorises */
+RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restrict amp,
+                                 const float *restrict var, const double *restrict depth,
+                                 const double *restrict residual, const uint8_t *restrict sat,
+                                 double *restrict snr, double *restrict sigma,
+                                 double *restrict refl, uint8_t *restrict flags, ptrdiff_t n0,
+                                 ptrdiff_t n1, const int NF)
+{
+    const ptrdiff_t N = p->N;
+    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)NF;
+    const double min_snr = p->min_snr, min_amplitude = p->min_amplitude;
+    const double max_sigma = p->max_sigma, max_residual = p->max_residual;
+    const double min_reflectance = p->min_reflectance, max_range = p->max_range;
+    double ssc[RGBZ_TOF_MAX_FREQS], rco[RGBZ_TOF_MAX_FREQS];
+    for (int f = 0; f < NF; f++) {
+        ssc[f] = p->sigma_scale[f];
+        rco[f] = p->refl_coef[f];
+    }
+    for (ptrdiff_t n = n0; n < n1; n++) {
+        const double vn = var[n], sd = sqrt(vn), d = depth[n];
+        const double dd = d > 0.0 ? d : 1.0;
+        double s2 = 0.0, best = INFINITY, rho = 0.0;
+        int weak = 0;
+        for (int f = 0; f < NF; f++) {
+            const double a = amp[f * N + n];
+            double ph = vn / (4.0 * a * a);                      /* phase variance */
+            ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
+            s2 += ssc[f] * ph;
+            const double q = 2.0 * a / sd;
+            best = q < best ? q : best;
+            weak |= a < min_amplitude;
+            rho += a * rco[f];
+        }
+        rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
+        const double sg = sqrt(s2);
+        const int low = (best < min_snr) | weak | ((max_sigma >= 0.0) & !(sg <= max_sigma));
+        const int far = (d < 0.0) | (d > max_range - 5.0 * sg) | (rho < min_reflectance);
+        flags[n] = (uint8_t)((sat[n] != 0) | (low << 1) | ((residual[n] > max_residual) << 2)
+                             | (far << 4));
+        snr[n] = best;
+        sigma[n] = sg;
+        refl[n] = rho;
+    }
+}
+
+RGBZ_CLONES_512 static void tofg_valid_block(const tofg_valid_args *p, ptrdiff_t F,
+                                             ptrdiff_t n0, ptrdiff_t n1)
+{
+#define TOFG_VALID_(nf) tofg_valid_span(p, p->amp, p->var, p->depth, p->residual, p->sat,     \
+                                        p->snr, p->sigma, p->refl, p->flags, n0, n1, nf)
+    switch (F) {
+    case 1: TOFG_VALID_(1); break;
+    case 2: TOFG_VALID_(2); break;
+    case 3: TOFG_VALID_(3); break;
+    case 4: TOFG_VALID_(4); break;
+    default: TOFG_VALID_((int)F); break;
+    }
+#undef TOFG_VALID_
+}
+
 int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
                        const double *sigma_scale, const double *refl_coef, double min_snr,
@@ -632,36 +703,14 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
     if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
         || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
         return RGBZ_EINVAL;
-    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)F;
+    const tofg_valid_args p = {amp, depth, residual, sigma_scale, refl_coef, var, sat, N,
+                               min_snr, min_amplitude, max_sigma, max_residual,
+                               min_reflectance, max_range, snr, sigma, refl, flags};
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR
-    for (ptrdiff_t n = 0; n < N; n++) {
-        const double vn = var[n], sd = sqrt(vn), d = depth[n];
-        const double dd = d > 0.0 ? d : 1.0;
-        double s2 = 0.0, best = INFINITY, rho = 0.0;
-        int weak = 0;
-        for (ptrdiff_t f = 0; f < F; f++) {
-            const double a = amp[f * N + n];
-            double ph = vn / (4.0 * a * a);                      /* phase variance */
-            ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
-            s2 += sigma_scale[f] * ph;
-            const double q = 2.0 * a / sd;
-            best = q < best ? q : best;
-            weak |= a < min_amplitude;
-            rho += a * refl_coef[f];
-        }
-        rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
-        const double sg = sqrt(s2);
-        uint8_t fl = sat[n] ? 1 : 0;
-        if (best < min_snr || weak || (max_sigma >= 0.0 && !(sg <= max_sigma))) fl |= 2;
-        if (residual[n] > max_residual) fl |= 4;
-        if (d < 0.0 || d > max_range - 5.0 * sg || rho < min_reflectance) fl |= 16;
-        snr[n] = best;
-        sigma[n] = sg;
-        refl[n] = rho;
-        flags[n] = fl;
-    }
+    for (ptrdiff_t n0 = 0; n0 < N; n0 += 4096)
+        tofg_valid_block(&p, F, n0, N - n0 < 4096 ? N : n0 + 4096);
     return RGBZ_OK;
 }
 
@@ -952,9 +1001,15 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
         int n = 0;
         const ptrdiff_t i0 = r - lv > 0 ? r - lv : 0, i1 = r + lv < p->R - 1 ? r + lv : p->R - 1;
         const ptrdiff_t j0 = c - lv > 0 ? c - lv : 0, j1 = c + lv < p->C - 1 ? c + lv : p->C - 1;
-        int any = 0;                             /* nothing usable this far: look farther */
-        for (ptrdiff_t i = i0; i <= i1 && !any; i++)
-            for (ptrdiff_t j = j0; j <= j1; j++) any |= prior0[i * p->C + j] > 0.0f;
+        /* no usable candidate this far that tofg_up_mode would take (with an own
+           measurement: none within otol of it): look farther without weighing any */
+        int any = 0;
+        for (ptrdiff_t i = i0; i <= i1 && !any; i++) {
+            const float *pr = prior0 + i * p->C;
+            const double *dd = p->depth + i * p->C;
+            for (ptrdiff_t j = j0; j <= j1; j++)
+                any |= (pr[j] > 0.0f) & ((om != om) | (fabs(dd[j] - om) <= otol));
+        }
         if (!any) continue;
         for (ptrdiff_t i = i0; i <= i1; i++) {
             const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
