@@ -1001,15 +1001,9 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
         int n = 0;
         const ptrdiff_t i0 = r - lv > 0 ? r - lv : 0, i1 = r + lv < p->R - 1 ? r + lv : p->R - 1;
         const ptrdiff_t j0 = c - lv > 0 ? c - lv : 0, j1 = c + lv < p->C - 1 ? c + lv : p->C - 1;
-        /* no usable candidate this far that tofg_up_mode would take (with an own
-           measurement: none within otol of it): look farther without weighing any */
-        int any = 0;
-        for (ptrdiff_t i = i0; i <= i1 && !any; i++) {
-            const float *pr = prior0 + i * p->C;
-            const double *dd = p->depth + i * p->C;
-            for (ptrdiff_t j = j0; j <= j1; j++)
-                any |= (pr[j] > 0.0f) & ((om != om) | (fabs(dd[j] - om) <= otol));
-        }
+        int any = 0;                             /* nothing usable this far: look farther */
+        for (ptrdiff_t i = i0; i <= i1 && !any; i++)
+            for (ptrdiff_t j = j0; j <= j1; j++) any |= prior0[i * p->C + j] > 0.0f;
         if (!any) continue;
         for (ptrdiff_t i = i0; i <= i1; i++) {
             const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);

@@ -15,6 +15,43 @@
 #error "tof_guided.template.h: #define IS (the suffix of IN_T: u8, u16, f32 or f64)"
 #endif
 
+/* the measurements [b0, b0 + nb) (nb <= 256) of the prepare stage: a clone per instruction
+   set, so that the loops over the measurements vectorise at its width */
+RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
+    const IN_T *restrict taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t b0, ptrdiff_t nb, double k,
+    double black, double const_var, double prnu, double white, double inv_f,
+    float *restrict zr, float *restrict zi, float *restrict v, uint8_t *restrict sat,
+    double *restrict offset)
+{
+    double acc[256];
+    uint8_t hit[256];
+    for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
+                *A3 = A0 + 3 * N;
+        float *pr = zr + f * N + b0, *pi = zi + f * N + b0;
+        double *po = offset ? offset + f * N + b0 : NULL;
+        for (ptrdiff_t j = 0; j < nb; j++) {
+            const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
+            pr[j] = (float)(a0 - a2);
+            pi[j] = (float)(a3 - a1);
+            const double off = 0.25 * ((a0 + a1) + (a2 + a3));
+            if (po) po[j] = off;
+            double held = off - black;
+            held = held > 0.0 ? held : 0.0;
+            const double ph = prnu * held;
+            acc[j] += k * held + const_var + ph * ph;
+            const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
+            const double mx = m01 > m23 ? m01 : m23;
+            hit[j] |= (uint8_t)(mx >= white);
+        }
+    }
+    for (ptrdiff_t j = 0; j < nb; j++) {
+        v[b0 + j] = (float)(acc[j] * inv_f);
+        sat[b0 + j] |= hit[j];
+    }
+}
+
 /* the prepare stage of rgbz_tofg_prepare (tof_guided.h) for taps of IN_T */
 static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N, double gain,
                                       double black, double supp, double const_var, double prnu,
@@ -27,35 +64,9 @@ static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR
-    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256) {
-        const ptrdiff_t nb = N - b0 < 256 ? N - b0 : 256;
-        double acc[256];
-        uint8_t hit[256];
-        for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }
-        for (ptrdiff_t f = 0; f < F; f++) {
-            const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
-                    *A3 = A0 + 3 * N;
-            float *pr = zr + f * N + b0, *pi = zi + f * N + b0;
-            for (ptrdiff_t j = 0; j < nb; j++) {
-                const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
-                pr[j] = (float)(a0 - a2);
-                pi[j] = (float)(a3 - a1);
-                const double off = 0.25 * ((a0 + a1) + (a2 + a3));
-                if (offset) offset[f * N + b0 + j] = off;
-                double held = off - black;
-                held = held > 0.0 ? held : 0.0;
-                const double ph = prnu * held;
-                acc[j] += k * held + const_var + ph * ph;
-                const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
-                const double mx = m01 > m23 ? m01 : m23;
-                hit[j] |= (uint8_t)(mx >= white);
-            }
-        }
-        for (ptrdiff_t j = 0; j < nb; j++) {
-            v[b0 + j] = (float)(acc[j] * inv_f);
-            sat[b0 + j] |= hit[j];
-        }
-    }
+    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256)
+        RGBZ_CAT(tofg_prepare_block, IS)(taps, F, N, b0, N - b0 < 256 ? N - b0 : 256, k, black,
+                                         const_var, prnu, white, inv_f, zr, zi, v, sat, offset);
     return RGBZ_OK;
 }
 
@@ -155,7 +166,10 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
     (void)nth;
     float sw[9 * 9];                           /* reach <= 4 */
     const float *swp = tofg_fill_table(&p0, reach, sw) ? sw : NULL;
-    RGBZ_PARALLEL_FOR
+    /* dynamic: the holes, whose fill is most of the work, cluster in dark regions */
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 8) num_threads(nth)
+#endif
     for (ptrdiff_t r = 0; r < R; r++)
         for (ptrdiff_t c = 0; c < C; c++)
             tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, fd, fs, prior);
