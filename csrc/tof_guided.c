@@ -784,10 +784,35 @@ RGBZ_CLONES_512 static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, ui
     }
 }
 
-static void tofg_fly_cell(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t r, ptrdiff_t c)
+/* tofg_candidate for the cells of row r into cand[0 .. C): in the interior (every neighbour on
+   the grid) branch-free, in a loop that vectorises; on the border as tofg_candidate */
+RGBZ_CLONES_512 static void tofg_cand_row(const tofg_fly_args *p, const uint8_t *code,
+                                          ptrdiff_t r, uint8_t *restrict cand)
+{
+    const ptrdiff_t C = p->C;
+    if (r == 0 || r == p->R - 1 || C < 3) {
+        for (ptrdiff_t c = 0; c < C; c++) cand[c] = (uint8_t)tofg_candidate(p, code, r, c);
+        return;
+    }
+    cand[0] = (uint8_t)tofg_candidate(p, code, r, 0);
+    cand[C - 1] = (uint8_t)tofg_candidate(p, code, r, C - 1);
+    const uint8_t *restrict k = code + r * C, *restrict up = k - C, *restrict dn = k + C;
+    /* direction e = (dr, dc): the hit of the neighbour at -e with its pair at +e (both bits
+       2e, 2e + 1), or of the neighbour at +e with its pair away (bit 2e alone) */
+    for (ptrdiff_t c = 1; c < C - 1; c++) {
+        const int v = ((k[c] & 0x55) != 0)
+                      | ((k[c - 1] & 0x03) == 0x03) | ((k[c + 1] & 0x03) == 0x01)
+                      | ((up[c] & 0x0c) == 0x0c) | ((dn[c] & 0x0c) == 0x04)
+                      | ((up[c - 1] & 0x30) == 0x30) | ((dn[c + 1] & 0x30) == 0x10)
+                      | ((up[c + 1] & 0xc0) == 0xc0) | ((dn[c - 1] & 0xc0) == 0x40);
+        cand[c] = (uint8_t)v;
+    }
+}
+
+/* the test of a usable candidate cell (tofg_candidate) */
+static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
 {
     const ptrdiff_t C = p->C, N = p->R * p->C, m = r * C + c;
-    if (!p->usable[m] || !tofg_candidate(p, code, r, c)) return;
     /* the two sides among the usable 8-neighbours: split at the middle of the depths */
     const double dm = p->depth[m];
     double lo = dm, hi = dm;
@@ -864,11 +889,27 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
     (void)nth;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t r = 0; r < R; r++)
-        for (ptrdiff_t c = 0; c < C; c++) tofg_fly_cell(&p, code, r, c);
+    int bad = 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth) reduction(|:bad)
+#endif
+    {
+        uint8_t *cand = malloc((size_t)(C > 0 ? C : 1));
+        bad |= !cand;
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t r = 0; r < R; r++) {
+            if (!cand) continue;
+            tofg_cand_row(&p, code, r, cand);
+            const uint8_t *u = usable + r * C;
+            for (ptrdiff_t c = 0; c < C; c++)
+                if ((u[c] != 0) & cand[c]) tofg_fly_cell(&p, r, c);
+        }
+        free(cand);
+    }
     free(code);
-    return RGBZ_OK;
+    return bad ? RGBZ_ENOMEM : RGBZ_OK;
 }
 
 /* ------------------------------------------------------------------ upsampling */
