@@ -25,11 +25,13 @@
 #endif
 
 /* keep the loops around the site loops (pairs, taps) rolled: GCC's unroll-and-jam of those
-   would turn the inner loops scalar */
+   would turn the inner loops scalar (ZG_NOJAM_FN: the function's loops not jammed either) */
 #if defined(__GNUC__) && !defined(__clang__)
 #define ZG_NOJAM _Pragma("GCC unroll 1")
+#define ZG_NOJAM_FN __attribute__((optimize("no-loop-unroll-and-jam")))
 #else
 #define ZG_NOJAM
+#define ZG_NOJAM_FN
 #endif
 
 #define ZG_MAX_BOX 36   /* the pixels of a Z pixel's box: (2 + 2 + 2)^2 at most */
@@ -106,7 +108,7 @@ typedef struct {
     ptrdiff_t cell_tag[3];
     int32_t *level;             /* [gx] */
     ptrdiff_t level_tag;
-    double *nv;                 /* [6][gx + 2]: N of rows iy - 1 .. iy + 1, then V */
+    double *nv;                 /* [7][gx + 2]: N of rows iy - 1 .. iy + 1, then V, then nu */
     ptrdiff_t nv_tag;
     int nbox[3];
     int ey[3][ZG_MAX_BOX], ex[3][ZG_MAX_BOX];
@@ -122,7 +124,7 @@ static int zg_cells_init(zg_cells *s, const rgbz_zguided_filters *f, int py, int
     s->cg = malloc((size_t)9 * (size_t)(gx + 2) * sizeof *s->cg);
     s->cell = malloc((size_t)3 * RGBZ_ZG_FEATURES * (size_t)gx * sizeof *s->cell);
     s->level = malloc((size_t)gx * sizeof *s->level);
-    s->nv = malloc((size_t)6 * (size_t)(gx + 2) * sizeof *s->nv);
+    s->nv = malloc((size_t)7 * (size_t)(gx + 2) * sizeof *s->nv);
     for (int t = 0; t < 3; t++) {
         s->cell_tag[t] = PTRDIFF_MIN;
         for (int i = 0; i < 3; i++) s->cg_tag[t][i] = PTRDIFF_MIN;
@@ -158,21 +160,23 @@ static inline void zg_pad(double *r, ptrdiff_t gx)
     r[gx + 1] = r[gx];
 }
 
-/* the cell terms of tile row iy: out[m][ix] (RGBZ_ZG_FEATURES rows of gx) and, when lvl is
-   not NULL, the noise levels, from the padded rows N[3], V[3], C[3] (rows iy - 1 .. iy + 1,
-   clamped; index ix + 1 is cell ix). Every sum in the order of m, as cell_terms. */
+/* the cell terms of tile row iy: out[m][ix] (RGBZ_ZG_FEATURES rows of gx) and the relative
+   noise nu[ix], from the padded rows N[3], V[3], C[3] (rows iy - 1 .. iy + 1, clamped;
+   index ix + 1 is cell ix). Every sum in the order of m, as cell_terms. */
 RGBZ_CLONES_512
 static void zg_cell_row(const double *const *N, const double *const *V, const double *const *C,
-                        ptrdiff_t gx, double lam, const double *thr, int n_thr,
-                        double *restrict out, int32_t *restrict lvl)
+                        ptrdiff_t gx, double lam, double *restrict out, double *restrict nu_out)
 {
+    const double *restrict n0 = N[0], *restrict n1 = N[1], *restrict n2 = N[2];
+    const double *restrict v0 = V[0], *restrict v1 = V[1], *restrict v2 = V[2];
+    const double *restrict c0 = C[0], *restrict c1 = C[1], *restrict c2 = C[2];
     RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) {
-        double n_[9], v_[9], c_[9];
-        for (int m = 0; m < 9; m++) {
-            n_[m] = N[m / 3][ix + m % 3];
-            v_[m] = V[m / 3][ix + m % 3];
-            c_[m] = C[m / 3][ix + m % 3];
-        }
+        const double n_[9] = {n0[ix], n0[ix + 1], n0[ix + 2], n1[ix], n1[ix + 1], n1[ix + 2],
+                              n2[ix], n2[ix + 1], n2[ix + 2]};
+        const double v_[9] = {v0[ix], v0[ix + 1], v0[ix + 2], v1[ix], v1[ix + 1], v1[ix + 2],
+                              v2[ix], v2[ix + 1], v2[ix + 2]};
+        const double c_[9] = {c0[ix], c0[ix + 1], c0[ix + 2], c1[ix], c1[ix + 1], c1[ix + 2],
+                              c2[ix], c2[ix + 1], c2[ix + 2]};
         double nb = 0.0, vb = 0.0, cb = 0.0;
         for (int m = 0; m < 9; m++) {
             nb += n_[m];
@@ -197,11 +201,18 @@ static void zg_cell_row(const double *const *N, const double *const *V, const do
         for (int m = 0; m < 9; m++) out[m * gx + ix] = share * u[m];
         out[9 * gx + ix] = cb + au;
         out[10 * gx + ix] = au - (c_[4] - cb);
-        if (lvl) {
-            int lv = 0;
-            for (int i = 0; i < n_thr; i++) lv += nu > thr[i];
-            lvl[ix] = lv;
-        }
+        nu_out[ix] = nu;
+    }
+}
+
+/* the noise levels of a tile row: how many of the n_thr thresholds nu exceeds */
+static void zg_level_row(const double *restrict nu, ptrdiff_t gx, const double *thr, int n_thr,
+                         int32_t *restrict lvl)
+{
+    for (ptrdiff_t ix = 0; ix < gx; ix++) lvl[ix] = 0;
+    for (int i = 0; i < n_thr; i++) {
+        const double t = thr[i];
+        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) lvl[ix] += nu[ix] > t;
     }
 }
 

@@ -87,8 +87,9 @@ static const double *ZG_CAT(zg_cells_get, IS, RS)(zg_cells *st, const rgbz_zguid
         V[r] = v;
     }
     st->nv_tag = iy;
-    const int lv = st->level_tag != iy;
-    zg_cell_row(N, V, C, gx, f->lam, f->thr, f->n_levels - 1, out, lv ? st->level : NULL);
+    double *nu = st->nv + 6 * w;
+    zg_cell_row(N, V, C, gx, f->lam, out, nu);
+    if (st->level_tag != iy) zg_level_row(nu, gx, f->thr, f->n_levels - 1, st->level);
     st->level_tag = iy;
     st->cell_tag[t] = iy;
     return out;
@@ -194,6 +195,21 @@ static void ZG_CAT(zg_hash, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     }
 }
 
+/* res[j] = sum_t w[t][bucket[j]] * v[t][j], in the order of t */
+RGBZ_CLONES_512 ZG_NOJAM_FN
+static void ZG_CAT(zg_colour_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
+                                          const REAL *restrict w, int n_taps,
+                                          ptrdiff_t n_buckets, const int32_t *restrict bucket,
+                                          REAL *restrict res)
+{
+    RGBZ_IVDEP for (int j = 0; j < n; j++) res[j] = OMUL(w[bucket[j]], v[0][j]);
+    ZG_NOJAM for (int t = 1; t < n_taps; t++) {
+        const REAL *restrict wt = w + (ptrdiff_t)t * n_buckets;
+        const REAL *restrict vt = v[t];
+        RGBZ_IVDEP for (int j = 0; j < n; j++) res[j] = OADD(res[j], OMUL(wt[bucket[j]], vt[j]));
+    }
+}
+
 /* the values res[j] of the n sites x0, x0 + px, ... of phase k (taps v[t][j], hash buckets
    bucket[j]) in tile row cells ix0, ix0 + 1, ... (clamped to the grid): the colour dot
    product of bucket level * n_hash + bucket, then the guide term of the cell terms cell */
@@ -209,21 +225,25 @@ static void ZG_CAT(zg_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     const ptrdiff_t nb = (ptrdiff_t)f->n_levels * nbh, gx = f->gx;
     const REAL *restrict w = f->RW + (ptrdiff_t)k * h->n_taps_max * nb;
     const REAL *restrict g = f->RG + (ptrdiff_t)k * nb * RGBZ_ZG_FEATURES;
-    int32_t b[ZG_BLK];
-    ptrdiff_t ix[ZG_BLK];
-    RGBZ_IVDEP for (int j = 0; j < n; j++) {
-        ix[j] = ix0 + j < gx ? ix0 + j : gx - 1;
-        b[j] = level[ix[j]] * nbh + bucket[j];
+    int32_t b[ZG_BLK] = {0};
+    REAL cj[RGBZ_ZG_FEATURES][ZG_BLK];
+    if (ix0 + n <= gx) {   /* the cells ix0 .. ix0 + n - 1: contiguous */
+        RGBZ_IVDEP for (int j = 0; j < n; j++) b[j] = level[ix0 + j] * nbh + bucket[j];
+        for (int m = 0; m < RGBZ_ZG_FEATURES; m++) {
+            const double *restrict cm = cell + (ptrdiff_t)m * gx + ix0;
+            RGBZ_IVDEP for (int j = 0; j < n; j++) cj[m][j] = (REAL)cm[j];
+        }
+    } else {               /* past the grid's last column: its last cell */
+        for (int j = 0; j < n; j++) {
+            const ptrdiff_t ix = ix0 + j < gx ? ix0 + j : gx - 1;
+            b[j] = level[ix] * nbh + bucket[j];
+            for (int m = 0; m < RGBZ_ZG_FEATURES; m++) cj[m][j] = (REAL)cell[m * gx + ix];
+        }
     }
-    RGBZ_IVDEP for (int j = 0; j < n; j++) res[j] = OMUL(w[b[j]], v[0][j]);
-    ZG_NOJAM for (int t = 1; t < nt; t++) {
-        const REAL *restrict wt = w + (ptrdiff_t)t * nb;
-        const REAL *restrict vt = v[t];
-        RGBZ_IVDEP for (int j = 0; j < n; j++) res[j] = OADD(res[j], OMUL(wt[b[j]], vt[j]));
-    }
+    ZG_CAT(zg_colour_dot, IS, RS)(v, n, w, nt, nb, b, res);
     const int32_t *bi = f->base_idx + (ptrdiff_t)k * f->n_base_max;
     const int n_base = f->n_base[k];
-    REAL base[ZG_BLK], s[ZG_BLK] = {0};
+    REAL base[ZG_BLK] = {0}, s[ZG_BLK] = {0};
     RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = v[bi[0]][j];
     for (int i = 1; i < n_base; i++) {
         const REAL *restrict vi = v[bi[i]];
@@ -232,19 +252,44 @@ static void ZG_CAT(zg_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     const REAL inv_base = (REAL)1 / (REAL)n_base;
     RGBZ_IVDEP for (int j = 0; j < n; j++) {
         base[j] = OMUL(base[j], inv_base);
-        s[j] = OMUL(g[b[j] * RGBZ_ZG_FEATURES], (REAL)cell[ix[j]]);
+        s[j] = OMUL(g[b[j] * RGBZ_ZG_FEATURES], cj[0][j]);
     }
     for (int m = 1; m < 9; m++) {
-        const double *restrict cm = cell + (ptrdiff_t)m * gx;
+        const REAL *restrict cm = cj[m];
         RGBZ_IVDEP for (int j = 0; j < n; j++)
-            s[j] = OADD(s[j], OMUL(g[b[j] * RGBZ_ZG_FEATURES + m], (REAL)cm[ix[j]]));
+            s[j] = OADD(s[j], OMUL(g[b[j] * RGBZ_ZG_FEATURES + m], cm[j]));
     }
-    const double *restrict c9 = cell + 9 * gx, *restrict c10 = cell + 10 * gx;
     RGBZ_IVDEP for (int j = 0; j < n; j++) {
         const REAL *gj = g + b[j] * RGBZ_ZG_FEATURES;
         REAL r = OADD(res[j], OMUL(base[j], OSUB(s[j], gj[9])));
-        r = OADD(r, OMUL(gj[9], (REAL)c9[ix[j]]));
-        res[j] = OADD(r, OMUL(gj[10], (REAL)c10[ix[j]]));
+        r = OADD(r, OMUL(gj[9], cj[9][j]));
+        res[j] = OADD(r, OMUL(gj[10], cj[10][j]));
+    }
+}
+
+/* the taps v[t][j] of the n sites x0, x0 + px, ... of phase k (rows rowp[dy + R]; through
+   the column map at the borders) */
+RGBZ_CLONES_512
+static void ZG_CAT(zg_gather, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px, int n,
+                                      ptrdiff_t cols, const ptrdiff_t *colmap,
+                                      const rgbz_learned_filters *h, int k,
+                                      REAL (*restrict v)[ZG_BLK])
+{
+    const int R = h->radius, nt = h->n_taps[k];
+    const int32_t *tdy = h->tap_dy + (ptrdiff_t)k * h->n_taps_max;
+    const int32_t *tdx = h->tap_dx + (ptrdiff_t)k * h->n_taps_max;
+    const ptrdiff_t xl = x0 + (ptrdiff_t)(n - 1) * px;
+    if (x0 - R >= 0 && xl + R < cols) {
+        for (int t = 0; t < nt; t++) {
+            const IN_T *restrict row = rowp[tdy[t] + R] + x0 + tdx[t];
+            RGBZ_IVDEP for (int j = 0; j < n; j++) v[t][j] = (REAL)row[(ptrdiff_t)j * px];
+        }
+    } else {
+        for (int t = 0; t < nt; t++) {
+            const IN_T *restrict row = rowp[tdy[t] + R];
+            const ptrdiff_t *cm = colmap + x0 + R + tdx[t];
+            RGBZ_IVDEP for (int j = 0; j < n; j++) v[t][j] = (REAL)row[cm[(ptrdiff_t)j * px]];
+        }
     }
 }
 
@@ -299,27 +344,10 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
 #endif
                 const double *cell = ZG_CAT(zg_cells_get, IS, RS)(&st, f, src, rows, cols, py,
                                                                   px, iy, f->targets[k]);
-                const int nt = h->n_taps[k];
-                const int32_t *tdy = h->tap_dy + (ptrdiff_t)k * h->n_taps_max;
-                const int32_t *tdx = h->tap_dx + (ptrdiff_t)k * h->n_taps_max;
                 for (ptrdiff_t x0 = c0; x0 < cols;) {
                     const ptrdiff_t left = (cols - 1 - x0) / px + 1;
                     const int n = (int)(left < ZG_BLK ? left : ZG_BLK);
-                    const ptrdiff_t xl = x0 + (ptrdiff_t)(n - 1) * px;
-                    if (x0 - R >= 0 && xl + R < cols) {
-                        for (int t = 0; t < nt; t++) {
-                            const IN_T *restrict row = rowp[tdy[t] + R] + x0 + tdx[t];
-                            RGBZ_IVDEP for (int j = 0; j < n; j++)
-                                v[t][j] = (REAL)row[(ptrdiff_t)j * px];
-                        }
-                    } else {
-                        for (int t = 0; t < nt; t++) {
-                            const IN_T *restrict row = rowp[tdy[t] + R];
-                            const ptrdiff_t *cm = colmap + x0 + R + tdx[t];
-                            RGBZ_IVDEP for (int j = 0; j < n; j++)
-                                v[t][j] = (REAL)row[cm[(ptrdiff_t)j * px]];
-                        }
-                    }
+                    ZG_CAT(zg_gather, IS, RS)(rowp, x0, px, n, cols, colmap, h, k, v);
                     ZG_CAT(zg_hash, IS, RS)(v, n, h, k, bucket);
                     ZG_CAT(zg_dot, IS, RS)(v, n, f, k, bucket, x0 / px, cell, st.level, res);
                     for (int j = 0; j < n; j++)

@@ -5,10 +5,10 @@
  * median per frequency. z_guided_guide.template.h holds the passes per element type of the
  * taps; reconstruction/_z_guided.py and tests/_reference/z_guided.py state the formulas.
  *
- * The median of the ratios A_f / mean over the lit sites is exact: a histogram of the
- * ratios (ZGG_BINS bins of [0, F], a monotone map, so that the k-th smallest ratio lies in
- * the bin where the histogram's cumulative count passes k), then a selection among the
- * ratios of the one or two bins that hold the middle ranks.
+ * The median of the ratios A_f / mean over the lit sites is exact: a sample of the sites
+ * places a bracket around it, the first pass counts the ratios below the bracket and keeps
+ * those in it, and a selection among those finds the middle ranks; when the bracket
+ * misses them (or holds more than was kept), a second pass keeps every ratio.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -23,14 +23,7 @@
 #include "z_guided.h"
 
 #define ZGG_BLOCK 256      /* sites per block of a pass: its amplitudes stay in L1 */
-#define ZGG_BINS 65536     /* bins of a frequency's histogram of ratios */
-
-/* the bin of a ratio r >= 0 (scale = ZGG_BINS / F): non-decreasing in r */
-static inline int zgg_bin(double r, double scale)
-{
-    const double b = r * scale;
-    return b < 1.0 ? 0 : (b >= (double)(ZGG_BINS - 1) ? ZGG_BINS - 1 : (int)b);
-}
+#define ZGG_SAMPLE 16384   /* sites of the sample that places the median's bracket */
 
 #define RGBZ_TYPE_TEMPLATE "z_guided_guide.template.h"
 #include "rgbz_each_type.h"
@@ -62,16 +55,10 @@ static double zgg_select(double *a, ptrdiff_t n, ptrdiff_t k)
     return a[k];
 }
 
-/* the thread's share [lo, hi) of n sites when nth threads split them */
-static void zgg_share(ptrdiff_t n, int nth, int t, ptrdiff_t *lo, ptrdiff_t *hi)
-{
-    *lo = n * t / nth;
-    *hi = n * (t + 1) / nth;
-}
-
 #define ZGG_PASS_(s, T)                                                                      \
-    RGBZ_CAT(zgg_pass, s)(pass, (const T *)taps, F, N, lo, hi, gxc, gx, grid, var, h, nl,  \
-                          blo, bhi, sel, pos, ratio)
+    RGBZ_CAT(zgg_pass, s)(pass, (const T *)taps, F, N, lo, hi, gxc, gx, grid, var, nl, blo, \
+                          bhi, bel, mine, cap, pos, ratio)
+#define ZGG_SAMPLE_(s, T) m = RGBZ_CAT(zgg_sample, s)((const T *)taps, F, N, step, samp)
 
 int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                        const int64_t *site_rows, const int64_t *site_cols, int py, int px,
@@ -103,24 +90,52 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                site_cols[n] != zc + (int64_t)px * (n % gxc);
     if (bad) return RGBZ_ZG_SITES;
 
-    uint32_t *hist = F > 1 ? calloc((size_t)nth * (size_t)F * ZGG_BINS, sizeof *hist) : NULL;
-    ptrdiff_t *n_lit = calloc((size_t)nth, sizeof *n_lit);
-    ptrdiff_t *offs = calloc((size_t)nth * (size_t)F, sizeof *offs);
-    if ((F > 1 && !hist) || !n_lit || !offs) {
-        free(hist);
-        free(n_lit);
-        free(offs);
+    /* the bracket of each frequency's median from the sample: ranks m / 2 -+ (3 sqrt(m) +
+       16) of its m lit ratios (a median's rank in a sample strays by about sqrt(m) / 2) */
+    const ptrdiff_t step = N / ZGG_SAMPLE + 1;
+    double blo[RGBZ_TOF_MAX_FREQS], bhi[RGBZ_TOF_MAX_FREQS], ratio[RGBZ_TOF_MAX_FREQS];
+    double *samp[RGBZ_TOF_MAX_FREQS] = {NULL};
+    double frac = 1.0;   /* the share of the ratios a bracket is expected to hold, at most */
+    ptrdiff_t m = 0;
+    int status = RGBZ_OK;
+    for (ptrdiff_t f = 0; f < F; f++) {
+        ratio[f] = 1.0;
+        blo[f] = -INFINITY;
+        bhi[f] = INFINITY;
+    }
+    if (F > 1) {
+        for (ptrdiff_t f = 0; f < F && status == RGBZ_OK; f++) {
+            samp[f] = malloc((size_t)(N / step + 1) * sizeof **samp);
+            if (!samp[f]) status = RGBZ_ENOMEM;
+        }
+        if (status == RGBZ_OK) {
+            RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_SAMPLE_, (void)0)
+        }
+        const ptrdiff_t d = (ptrdiff_t)(3.0 * sqrt((double)m)) + 16;
+        if (status == RGBZ_OK && m / 2 - d >= 0 && m / 2 + d < m) {
+            for (ptrdiff_t f = 0; f < F; f++) {
+                blo[f] = zgg_select(samp[f], m, m / 2 - d);
+                bhi[f] = zgg_select(samp[f], m, m / 2 + d);
+            }
+            frac = (double)(2 * d + 1) / (double)m;
+        }
+        for (ptrdiff_t f = 0; f < F; f++) free(samp[f]);
+        if (status != RGBZ_OK) return status;
+    }
+    ptrdiff_t *cnt = calloc((size_t)nth * (size_t)(2 * F + 1), sizeof *cnt);
+    double **bufs = calloc((size_t)nth * (size_t)F, sizeof *bufs);
+    double *sel[RGBZ_TOF_MAX_FREQS] = {NULL};
+    ptrdiff_t n_sel[RGBZ_TOF_MAX_FREQS], below[RGBZ_TOF_MAX_FREQS];
+    ptrdiff_t total_lit = 0;
+    int redo = 0, overflow = 0;
+    if (!cnt || !bufs) {
+        free(cnt);
+        free(bufs);
         return RGBZ_ENOMEM;
     }
-    double ratio[RGBZ_TOF_MAX_FREQS];
-    double *sel[RGBZ_TOF_MAX_FREQS] = {NULL};
-    int blo[RGBZ_TOF_MAX_FREQS] = {0}, bhi[RGBZ_TOF_MAX_FREQS] = {0};
-    ptrdiff_t below[RGBZ_TOF_MAX_FREQS], n_sel[RGBZ_TOF_MAX_FREQS];
-    ptrdiff_t total_lit = 0;
-    int status = RGBZ_OK;
-    for (ptrdiff_t f = 0; f < F; f++) ratio[f] = 1.0;
-    /* pass 1 on every thread; then (one thread) the median's bins and every thread's place
-       in the list of their ratios; pass 2; the medians; pass 3 */
+    /* pass 1 (grid, counts, the ratios in the brackets); one thread checks that every
+       bracket holds the middle ranks and gathers them (else pass 2 keeps every ratio, and it
+       gathers again); the medians; pass 3 (variance) */
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth)
 #endif
@@ -130,60 +145,102 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
 #else
         const int t = 0, team = 1;
 #endif
-        ptrdiff_t lo, hi, pos[RGBZ_TOF_MAX_FREQS];
-        zgg_share(N, team, t, &lo, &hi);
-        uint32_t *h = hist ? hist + (size_t)t * (size_t)F * ZGG_BINS : NULL;
-        ptrdiff_t *nl = n_lit + t;
+        const ptrdiff_t lo = N * t / team, hi = N * (t + 1) / team;
+        ptrdiff_t *nl = cnt + (size_t)t * (size_t)(2 * F + 1), *bel = nl + 1, *pos = bel + F;
+        double **mine = bufs + (size_t)t * (size_t)F;
+        /* room for twice the expected share of the bracket's ratios */
+        ptrdiff_t cap = F > 1 ? (ptrdiff_t)(2.0 * frac * (double)(hi - lo)) + 1024 : 0;
+        cap = cap < hi - lo ? cap : hi - lo;
+        int ok = 1;
+        for (ptrdiff_t f = 0; f < F && F > 1; f++)
+            ok &= (mine[f] = malloc((size_t)(cap + 1) * sizeof **mine)) != NULL;
+        if (!ok) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ENOMEM;
+        }
         int pass = 1;
-        RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
+        if (ok) {
+            RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
+        }
         if (F == 1)
             for (ptrdiff_t n = lo; n < hi; n++) var[(n / gxc) * gx + n % gxc] = 0.0;
+        for (ptrdiff_t f = 0; f < F; f++)
+            if (pos[f] > cap) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+                overflow = 1;
+            }
+        for (int round = 0; round < 2; round++) {
 #ifdef _OPENMP
 #pragma omp barrier
 #pragma omp single
 #endif
-        {
-            for (int i = 0; i < team; i++) total_lit += n_lit[i];
-            if (F > 1 && total_lit > 0 && status == RGBZ_OK) {
-                /* the middle ranks: k1 = (n - 1) / 2 and k2 = n / 2 (equal when n is odd) */
+            {
+                if (round == 0)
+                    for (int i = 0; i < team; i++)
+                        total_lit += cnt[(size_t)i * (size_t)(2 * F + 1)];
                 const ptrdiff_t k1 = (total_lit - 1) / 2, k2 = total_lit / 2;
-                for (ptrdiff_t f = 0; f < F && status == RGBZ_OK; f++) {
-                    ptrdiff_t cum = 0, cnt = 0;
-                    blo[f] = bhi[f] = -1;
-                    for (int b = 0; b < ZGG_BINS; b++) {
-                        ptrdiff_t c = 0;
-                        for (int i = 0; i < team; i++)
-                            c += hist[((size_t)i * (size_t)F + (size_t)f) * ZGG_BINS + b];
-                        if (blo[f] < 0 && cum + c > k1) {
-                            blo[f] = b;
-                            below[f] = cum;
-                        }
-                        if (cum + c > k2) {
-                            bhi[f] = b;
+                const int any = F > 1 && total_lit > 0 && status == RGBZ_OK;
+                for (ptrdiff_t f = 0; f < F && any; f++) {
+                    ptrdiff_t b = 0, in = 0;
+                    for (int i = 0; i < team; i++) {
+                        const ptrdiff_t *c = cnt + (size_t)i * (size_t)(2 * F + 1);
+                        b += c[1 + f];
+                        in += c[1 + F + f];
+                    }
+                    if (round == 0 && (b > k1 || k2 >= b + in || overflow)) {
+                        redo = 1;
+                        continue;
+                    }
+                    below[f] = round == 0 ? b : 0;
+                    n_sel[f] = in;
+                }
+                if (round == 0 && redo) {
+                    /* every ratio kept: the brackets widened to everything */
+                    for (ptrdiff_t f = 0; f < F; f++) {
+                        blo[f] = -INFINITY;
+                        bhi[f] = INFINITY;
+                    }
+                }
+                if (!(round == 0 && redo))
+                    for (ptrdiff_t f = 0; f < F && any && status == RGBZ_OK; f++) {
+                        sel[f] = malloc((size_t)(n_sel[f] > 0 ? n_sel[f] : 1) * sizeof **sel);
+                        if (!sel[f]) {
+                            status = RGBZ_ENOMEM;
                             break;
                         }
-                        cum += c;
+                        ptrdiff_t o = 0;
+                        for (int i = 0; i < team; i++) {
+                            const ptrdiff_t c = cnt[(size_t)i * (size_t)(2 * F + 1) + 1 + F + f];
+                            memcpy(sel[f] + o, bufs[(size_t)i * (size_t)F + f],
+                                   (size_t)c * sizeof **sel);
+                            o += c;
+                        }
                     }
-                    /* every thread's count in the bins gives its place in sel[f] */
-                    for (int i = 0; i < team; i++) {
-                        const uint32_t *hf = hist + ((size_t)i * (size_t)F + (size_t)f) * ZGG_BINS;
-                        offs[(size_t)i * (size_t)F + (size_t)f] = cnt;
-                        for (int b = blo[f]; b <= bhi[f]; b++) cnt += hf[b];
-                    }
-                    sel[f] = malloc((size_t)(cnt > 0 ? cnt : 1) * sizeof **sel);
-                    if (!sel[f]) status = RGBZ_ENOMEM;
-                    n_sel[f] = cnt;   /* the ratios in sel[f] */
+            }
+            if (!(round == 0 && redo)) break;
+            /* pass 2: every ratio, room for all of this thread's */
+            for (ptrdiff_t f = 0; f < F; f++) {
+                free(mine[f]);
+                mine[f] = malloc((size_t)(hi - lo + 1) * sizeof **mine);
+                pos[f] = 0;
+                if (!mine[f]) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+                    status = RGBZ_ENOMEM;
                 }
             }
-        }
-        if (F > 1 && total_lit > 0 && status == RGBZ_OK) {
-            for (ptrdiff_t f = 0; f < F; f++)
-                pos[f] = offs[(size_t)t * (size_t)F + (size_t)f];
+            cap = hi - lo;
             pass = 2;
-            RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
+            if (status == RGBZ_OK) {
+                RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
+            }
         }
 #ifdef _OPENMP
-#pragma omp barrier
 #pragma omp for schedule(static)
 #endif
         for (ptrdiff_t f = 0; f < F; f++) {
@@ -197,18 +254,18 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                     v1 = sel[f][0];
                     for (ptrdiff_t i = 1; i < k2; i++) v1 = sel[f][i] > v1 ? sel[f][i] : v1;
                 }
-                const double m = k1 == k2 ? v2 : (v1 + v2) / 2.0;
-                ratio[f] = m > 0 ? m : 1.0;
+                const double md = k1 == k2 ? v2 : (v1 + v2) / 2.0;
+                ratio[f] = md > 0 ? md : 1.0;
             }
         }
         if (F > 1 && status == RGBZ_OK) {
             pass = 3;
             RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
         }
+        for (ptrdiff_t f = 0; f < F; f++) free(mine[f]);
     }
     for (ptrdiff_t f = 0; f < F; f++) free(sel[f]);
-    free(hist);
-    free(n_lit);
-    free(offs);
+    free(bufs);
+    free(cnt);
     return status;
 }

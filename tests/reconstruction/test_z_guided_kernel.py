@@ -163,3 +163,21 @@ def test_guide_of_one_frequency_and_of_dark_pixels():
     for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=half, workers=2),
                     reference_guide_grid(frame.shape, frame.pattern, half)):
         np.testing.assert_array_equal(g, w)
+
+
+def test_guide_median_when_the_sample_misses_it():
+    # the kernel places the median's bracket from every (N // 16384 + 1)-th site: here every
+    # second site, all alike, while the others differ, so that the bracket misses the median
+    # and a second pass keeps every ratio
+    frame = simulate(_scene((200, 400), 8), "mask1", seed=1, noise=False)
+    tof = frame.tof
+    n = tof.n_sites
+    amp = np.where(np.arange(n) % 2 == 0, 1.0, 1.0 + np.arange(3)[:, None] * 0.5) * 40.0
+    amp = amp * (1 + 0.01 * np.random.default_rng(3).random(n))
+    taps = np.full((3, 4, n), 100.0)
+    taps[:, 0] += 2 * amp
+    t = _with_taps(tof, np.round(taps).astype(np.uint16))
+    want = reference_guide_grid(frame.shape, frame.pattern, t)
+    for workers in (1, 2):
+        for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=t, workers=workers), want):
+            np.testing.assert_array_equal(g, w)
