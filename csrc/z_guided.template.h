@@ -267,6 +267,19 @@ static void ZG_CAT(zg_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     }
 }
 
+/* the taps v[t][j] of the n sites x0, x0 + PX, ... of phase k inside the row (PX a
+   constant where it is inlined, so that the strided loads vectorise) */
+RGBZ_INLINE void ZG_CAT(zg_gather_in, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0,
+                                              const int PX, int n, const int32_t *tdy,
+                                              const int32_t *tdx, int nt, int R,
+                                              REAL (*restrict v)[ZG_BLK])
+{
+    for (int t = 0; t < nt; t++) {
+        const IN_T *restrict row = rowp[tdy[t] + R] + x0 + tdx[t];
+        RGBZ_IVDEP for (int j = 0; j < n; j++) v[t][j] = (REAL)row[(ptrdiff_t)j * PX];
+    }
+}
+
 /* the taps v[t][j] of the n sites x0, x0 + px, ... of phase k (rows rowp[dy + R]; through
    the column map at the borders) */
 RGBZ_CLONES_512
@@ -280,9 +293,10 @@ static void ZG_CAT(zg_gather, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int
     const int32_t *tdx = h->tap_dx + (ptrdiff_t)k * h->n_taps_max;
     const ptrdiff_t xl = x0 + (ptrdiff_t)(n - 1) * px;
     if (x0 - R >= 0 && xl + R < cols) {
-        for (int t = 0; t < nt; t++) {
-            const IN_T *restrict row = rowp[tdy[t] + R] + x0 + tdx[t];
-            RGBZ_IVDEP for (int j = 0; j < n; j++) v[t][j] = (REAL)row[(ptrdiff_t)j * px];
+        switch (px) {   /* the periods of Mask1 and Mask2, unrolled */
+        case 2: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 2, n, tdy, tdx, nt, R, v); break;
+        case 4: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, n, tdy, tdx, nt, R, v); break;
+        default: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, px, n, tdy, tdx, nt, R, v);
         }
     } else {
         for (int t = 0; t < nt; t++) {

@@ -132,14 +132,16 @@ static void RGBZ_CAT(zgg_pass, IS)(int pass, const IN_T *taps, ptrdiff_t F, ptrd
                 c += lit && r < bl;
             }
             if (pass == 1) below[f] += c;
-            double *restrict bf = buf[f];
-            ptrdiff_t p = pos[f];
-            for (ptrdiff_t k = 0; k < nb; k++)
-                if (af[k] >= bl && af[k] <= bh) {
-                    if (p < cap) bf[p] = af[k];
-                    p++;
-                }
-            pos[f] = p;
+            /* the ratios in the bracket, compacted without branches, then kept */
+            ptrdiff_t q = 0;
+            for (ptrdiff_t k = 0; k < nb; k++) {
+                const double x = af[k];
+                val[q] = x;
+                q += (x >= bl) & (x <= bh);
+            }
+            const ptrdiff_t p = pos[f], room = cap - p;
+            if (room > 0) memcpy(buf[f] + p, val, (size_t)(q < room ? q : room) * sizeof *val);
+            pos[f] = p + q;
         }
     }
 }
