@@ -26,8 +26,18 @@
 #define RW RGBZ_CAT(w, RS)
 #define RG RGBZ_CAT(g, RS)
 
+/* acc[ix] += row[x0 + PX ix] for the cells ix in [ia, ib), all inside the row (PX a constant
+   where it is inlined, so that the strided loads vectorise) */
+RGBZ_INLINE void ZG_CAT(zg_cg_add, IS, RS)(double *restrict acc, const IN_T *restrict row,
+                                           ptrdiff_t x0, const int PX, ptrdiff_t ia,
+                                           ptrdiff_t ib)
+{
+    RGBZ_IVDEP for (ptrdiff_t ix = ia; ix < ib; ix++) acc[ix] += (double)row[x0 + PX * ix];
+}
+
 /* the colour means of target t in tile row jy (0 <= jy < gy) into the padded row c: for
    each cell, its box's pixels of colour t summed in the order of the box, over their count */
+RGBZ_CLONES_512
 static void ZG_CAT(zg_cg_row, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t cols, int py,
                                       int px, const rgbz_zguided_filters *f, const zg_cells *st,
                                       int t, ptrdiff_t jy, double *restrict c)
@@ -45,7 +55,11 @@ static void ZG_CAT(zg_cg_row, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t
         if (ia > ib) ia = ib;
         for (ptrdiff_t ix = 0; ix < ia; ix++)
             acc[ix] += (double)row[zg_extend(x0 + px * ix, cols, px)];
-        RGBZ_IVDEP for (ptrdiff_t ix = ia; ix < ib; ix++) acc[ix] += (double)row[x0 + px * ix];
+        switch (px) {   /* the periods of Mask1 and Mask2, unrolled */
+        case 2: ZG_CAT(zg_cg_add, IS, RS)(acc, row, x0, 2, ia, ib); break;
+        case 4: ZG_CAT(zg_cg_add, IS, RS)(acc, row, x0, 4, ia, ib); break;
+        default: ZG_CAT(zg_cg_add, IS, RS)(acc, row, x0, px, ia, ib);
+        }
         for (ptrdiff_t ix = ib; ix < gx; ix++)
             acc[ix] += (double)row[zg_extend(x0 + px * ix, cols, px)];
     }
@@ -148,7 +162,7 @@ static void ZG_CAT(zg_hash, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     const double *cth = h->coh_thr2 + (ptrdiff_t)k * (nc - 1);
     const double *kth = h->spr_thr + (ptrdiff_t)k * (nk - 1);
     const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
-    REAL tt[ZG_BLK], m2[ZG_BLK];
+    REAL tt[ZG_BLK] = {0}, m2[ZG_BLK] = {0};
     RGBZ_IVDEP for (int j = 0; j < n; j++) {
         const REAL a = OSUB(e[0][j], e[1][j]);
         const REAL b = OMUL(OSUB(e[2][j], e[3][j]), (REAL)0.5);

@@ -181,3 +181,15 @@ def test_guide_median_when_the_sample_misses_it():
     for workers in (1, 2):
         for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=t, workers=workers), want):
             np.testing.assert_array_equal(g, w)
+
+
+def test_guide_refuses_more_frequencies_than_it_reads():
+    from rgbz_fast import _kernels
+    frame = simulate(_scene((12, 16), 2), "mask1", seed=1, noise=True)
+    tof = frame.tof
+    F = _kernels.TOF_MAX_FREQS + 1
+    many = ToFTaps(np.tile(tof.taps[:1], (F, 1, 1)), 1e6 * np.arange(1, F + 1), tof.sites,
+                   tof.block, tof.bit_depth, tof.depth_true, tof.valid, tof.saturated,
+                   tof.sensor, tof.shape, tof.meta)
+    with pytest.raises(ValueError, match="frame.tof: the guide reads at most"):
+        guide_grid(frame.shape, frame.pattern, tof=many)

@@ -177,6 +177,9 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):
                          f"{pattern.name!r} has {b}x{b} Z pixels")
     if not complete.any():
         raise ValueError("shape: the frame holds no complete Z pixel")
+    if tof.taps.shape[0] > _kernels.TOF_MAX_FREQS:
+        raise ValueError(f"frame.tof: the guide reads at most {_kernels.TOF_MAX_FREQS} "
+                         f"frequencies, the taps hold {tof.taps.shape[0]}")
     grid, var = np.zeros((gy, gx)), np.zeros((gy, gx))
     gyc, gxc = int(complete.any(axis=1).sum()), int(complete.any(axis=0).sum())
     taps = tof.taps if tof.taps.dtype in (np.uint8, np.uint16, np.float32, np.float64) else \
