@@ -180,15 +180,17 @@ static int ci_push(ci_list *l, ptrdiff_t r, ptrdiff_t c, float hot, float cold, 
    (the most frequent among the row's colour positions; a position without one of them is
    kept for the full test), their frame offsets `lin` (CI_PRE per tile row), their masks
    (CI_PRE rows of cols bytes per tile row: 1 at x when the offset is a neighbour of x) and
-   the colour mask (a row of cols bytes per tile row: 1 where x has neighbours to test). */
+   the colour mask (a row of cols bytes per tile row: 1 where x has neighbours to test);
+   same[py]: every mask of tile row py is its colour mask. */
 enum { CI_PRE = 4 };
 typedef struct {
     ptrdiff_t *lin;
-    uint8_t *mask, *colour;
+    uint8_t *mask, *colour, *same;
 } ci_pre;
 
 static void ci_pre_free(ci_pre *pre)
 {
+    free(pre->same);
     free(pre->lin);
     free(pre->mask);
     free(pre->colour);
@@ -200,7 +202,8 @@ static int ci_pre_build(ci_pre *pre, ptrdiff_t cols, int32_t P, int32_t Q, const
     pre->lin = (ptrdiff_t *)calloc((size_t)P * CI_PRE, sizeof *pre->lin);
     pre->mask = (uint8_t *)calloc((size_t)P * CI_PRE * (size_t)cols, 1);
     pre->colour = (uint8_t *)calloc((size_t)P * (size_t)cols, 1);
-    if (!pre->lin || !pre->mask || !pre->colour) {
+    pre->same = (uint8_t *)calloc((size_t)P, 1);
+    if (!pre->lin || !pre->mask || !pre->colour || !pre->same) {
         ci_pre_free(pre);
         return RGBZ_ENOMEM;
     }
@@ -232,6 +235,11 @@ static int ci_pre_build(ci_pre *pre, ptrdiff_t cols, int32_t P, int32_t Q, const
         }
         for (ptrdiff_t x = 0; x < cols; x++)
             pre->colour[py * cols + x] = noff[py * Q + (int32_t)(x % Q)] > 0;
+        pre->same[py] = 1;
+        for (int d = 0; d < CI_PRE; d++)
+            if (memcmp(pre->mask + ((ptrdiff_t)py * CI_PRE + d) * cols,
+                       pre->colour + py * cols, (size_t)cols))
+                pre->same[py] = 0;
     }
     return RGBZ_OK;
 }
@@ -258,7 +266,7 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
     /* the neighbours' offsets in the frame, dy cols + dx */
     ptrdiff_t *lin = (ptrdiff_t *)malloc((size_t)P * Q * RGBZ_CI_MAX_NEIGHBOURS * sizeof *lin);
     uint8_t *keep = (uint8_t *)malloc((size_t)nt * (size_t)(cols > 0 ? cols : 1));
-    ci_pre pre = {NULL, NULL, NULL};
+    ci_pre pre = {NULL, NULL, NULL, NULL};
     if (!lists || !lin || !keep || ci_pre_build(&pre, cols, P, Q, noff, offs) != RGBZ_OK) {
         free(lists);
         free(lin);
@@ -359,6 +367,50 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
     free(s);
     free(c);
     return RGBZ_OK;
+}
+
+/* An output row from its codes: 6 planes of h codes (R, G, B of the even columns, then of
+   the odd ones) interleaved as R, G, B per pixel, a pair of pixels per step */
+CI_CLONES static void ci_interleave8(const uint16_t *code, ptrdiff_t h, ptrdiff_t cols,
+                                     uint8_t *restrict o)
+{
+    const uint16_t *c0 = code, *c1 = code + h, *c2 = code + 2 * h, *c3 = code + 3 * h,
+                   *c4 = code + 4 * h, *c5 = code + 5 * h;
+    const ptrdiff_t n = cols / 2;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        o[6 * j] = (uint8_t)c0[j];
+        o[6 * j + 1] = (uint8_t)c1[j];
+        o[6 * j + 2] = (uint8_t)c2[j];
+        o[6 * j + 3] = (uint8_t)c3[j];
+        o[6 * j + 4] = (uint8_t)c4[j];
+        o[6 * j + 5] = (uint8_t)c5[j];
+    }
+    if (cols & 1) {
+        o[6 * n] = (uint8_t)c0[n];
+        o[6 * n + 1] = (uint8_t)c1[n];
+        o[6 * n + 2] = (uint8_t)c2[n];
+    }
+}
+
+CI_CLONES static void ci_interleave16(const uint16_t *code, ptrdiff_t h, ptrdiff_t cols,
+                                      uint16_t *restrict o)
+{
+    const uint16_t *c0 = code, *c1 = code + h, *c2 = code + 2 * h, *c3 = code + 3 * h,
+                   *c4 = code + 4 * h, *c5 = code + 5 * h;
+    const ptrdiff_t n = cols / 2;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        o[6 * j] = c0[j];
+        o[6 * j + 1] = c1[j];
+        o[6 * j + 2] = c2[j];
+        o[6 * j + 3] = c3[j];
+        o[6 * j + 4] = c4[j];
+        o[6 * j + 5] = c5[j];
+    }
+    if (cols & 1) {
+        o[6 * n] = c0[n];
+        o[6 * n + 1] = c1[n];
+        o[6 * n + 2] = c2[n];
+    }
 }
 
 /* ---- the render, once per precision, its rows once per element type within it ---- */

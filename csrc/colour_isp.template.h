@@ -255,28 +255,8 @@ static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
         for (int k = 0; k < 3; k++)
             RGBZ_CAT(ci_encode, RS)(&a->codes, par[p][k], code + (3 * p + k) * h, nn[p]);
     }
-    const uint16_t *c[2][3];
-    for (int p = 0; p < 2; p++)
-        for (int k = 0; k < 3; k++) c[p][k] = code + (3 * p + k) * h;
-    if (bits == 8) {
-        uint8_t *o = (uint8_t *)out + 3 * y * cols;
-        for (ptrdiff_t x = 0; x < cols; x++) {
-            const int p = (int)(x & 1);
-            const ptrdiff_t j = x >> 1;
-            o[3 * x] = (uint8_t)c[p][0][j];
-            o[3 * x + 1] = (uint8_t)c[p][1][j];
-            o[3 * x + 2] = (uint8_t)c[p][2][j];
-        }
-    } else {
-        uint16_t *o = (uint16_t *)out + 3 * y * cols;
-        for (ptrdiff_t x = 0; x < cols; x++) {
-            const int p = (int)(x & 1);
-            const ptrdiff_t j = x >> 1;
-            o[3 * x] = c[p][0][j];
-            o[3 * x + 1] = c[p][1][j];
-            o[3 * x + 2] = c[p][2][j];
-        }
-    }
+    if (bits == 8) ci_interleave8(code, h, cols, (uint8_t *)out + 3 * y * cols);
+    else ci_interleave16(code, h, cols, (uint16_t *)out + 3 * y * cols);
 }
 
 #define RGBZ_TYPE_TEMPLATE "colour_isp.template.h"

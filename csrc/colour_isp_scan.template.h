@@ -57,13 +57,22 @@ RGBZ_INLINE int RGBZ_CAT(ci_test_pixel, IS)(const IN_T *src, ptrdiff_t rows, ptr
    the plan (frame offsets pl, masks pm: 1 where the offset is one of x's neighbours) has
    |v - w| <= thr, else the colour mask pc. Such a pixel fails test 1 (v - mx <= v - w <= thr
    and mn - v <= w - v <= thr, float32 subtraction being monotonic and odd), so only the
-   kept pixels need ci_test_pixel. A NaN w rejects nothing. */
+   kept pixels need ci_test_pixel. A NaN w rejects nothing. pm NULL: every mask is pc. */
 CI_CLONES static void RGBZ_CAT(ci_pretest, IS)(const IN_T *restrict row, ptrdiff_t cols,
                                                const ptrdiff_t *pl, const uint8_t *pm,
                                                const uint8_t *pc, float thr,
                                                uint8_t *restrict keep)
 {
     const IN_T *r0 = row + pl[0], *r1 = row + pl[1], *r2 = row + pl[2], *r3 = row + pl[3];
+    if (!pm) {                                  /* every mask is the colour mask */
+        for (ptrdiff_t x = 2; x < cols - 2; x++) {
+            const float v = (float)row[x];
+            const int a0 = fabsf(v - (float)r0[x]) <= thr, a1 = fabsf(v - (float)r1[x]) <= thr;
+            const int a2 = fabsf(v - (float)r2[x]) <= thr, a3 = fabsf(v - (float)r3[x]) <= thr;
+            keep[x] = (uint8_t)(pc[x] & ((a0 | a1 | a2 | a3) ^ 1));
+        }
+        return;
+    }
     const uint8_t *m0 = pm, *m1 = pm + cols, *m2 = pm + 2 * cols, *m3 = pm + 3 * cols;
     for (ptrdiff_t x = 2; x < cols - 2; x++) {
         const float v = (float)row[x];
@@ -90,7 +99,8 @@ static int RGBZ_CAT(ci_candidates, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff_
     const int inner_y = y >= 2 && y < rows - 2 && cols > 4;
     if (inner_y) {
         RGBZ_CAT(ci_pretest, IS)(src + y * cols, cols, pre->lin + py * CI_PRE,
-                                 pre->mask + (ptrdiff_t)py * CI_PRE * cols, pc, thr, keep);
+                                 pre->same[py] ? NULL : pre->mask + (ptrdiff_t)py * CI_PRE * cols,
+                                 pc, thr, keep);
         keep[0] = pc[0];
         keep[1] = pc[1];
         keep[cols - 2] = pc[cols - 2];
@@ -121,7 +131,7 @@ static int RGBZ_CAT(ci_candidates, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff_
 }
 
 /* grey-world sums of rows [y0, y1) into sums[4] and counts[4] (phase = 2 (y & 1) + (x & 1)) */
-static void RGBZ_CAT(ci_sums, IS)(const IN_T *src, ptrdiff_t cols, ptrdiff_t y0, ptrdiff_t y1,
+CI_CLONES static void RGBZ_CAT(ci_sums, IS)(const IN_T *src, ptrdiff_t cols, ptrdiff_t y0, ptrdiff_t y1,
                                   double white, double *sums, int64_t *counts)
 {
 #if IN_IS_INT
