@@ -24,6 +24,10 @@ _BOUNDS = {
     "alpha_bits": (2, 30),
     "weight_bits": (2, 40),
     "register_bits": (8, 63),
+    "hash_norm_bits": (1, 24),
+    "hash_bits": (4, 30),
+    "hash_const_bits": (2, 30),
+    "tap_bits": (4, 32),
 }
 
 
@@ -84,6 +88,21 @@ class FixedPointConfig:
         The widest register the datapath may use, 8 .. 63 (the C model holds
         every register in a 64-bit integer). A plan and bit depth whose worst
         case needs a wider one is refused, naming the register.
+    hash_norm_bits : int
+        ``method="learned"``: bits of the constants round(2^N / n) that turn
+        the hash's sums of squared differences into means (N = this field),
+        1 .. 24.
+    hash_bits : int
+        ``method="learned"``: bits kept of the structure terms a, b, t and of
+        the colour energies after the normalising shift (their leading one
+        decides it) for the orientation, coherence and spread tests, 4 .. 30.
+    hash_const_bits : int
+        ``method="learned"``: fractional bits of cos and sin of 22.5 degrees
+        and of the quantised coherence (squared) and spread thresholds, 2 .. 30.
+    tap_bits : int
+        ``method="learned"``: signed width of a filter tap in the filter ROM,
+        4 .. 32; its fractional bits are the most that hold every weight of
+        the filters (a refit with larger weights keeps fewer).
 
     Examples
     --------
@@ -108,6 +127,10 @@ class FixedPointConfig:
     alpha_bits: int = 9
     weight_bits: int = 16
     register_bits: int = 63
+    hash_norm_bits: int = 16
+    hash_bits: int = 16
+    hash_const_bits: int = 16
+    tap_bits: int = 16
 
     def __post_init__(self):
         put = object.__setattr__
