@@ -359,9 +359,10 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     cdef rgbz_learned_filters f
     cdef rgbz_learned_fn *kernel = _kernels_of(precision).learned
     cdef double zero = 0.0
-    if kernel == NULL:
+    if kernel == NULL or precision == RGBZ_P_FIXED:
+        # precision fixed runs through learned_fixed, which hands over its integer constants
         raise ValueError(f"precision: the learned filters have no kernel of precision code "
-                         f"{precision}")
+                         f"{precision} here")
     f.n_phases = w_f32.shape[0]
     f.n_taps_max = w_f32.shape[1]
     f.n_buckets = w_f32.shape[2]

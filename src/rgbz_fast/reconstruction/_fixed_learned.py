@@ -107,8 +107,8 @@ def learned_registers(filters, config, bit_depth):
     top = (1 << bit_depth) - 1
     sq = top * top
     H, K = config.hash_bits, config.hash_const_bits
-    n_pairs = a["n_pairs"]
-    colour_pairs = np.array([ph["colour_pairs"] for ph in filters.geometry])
+    n_pairs = a["n_pairs"].astype(np.int64)
+    colour_pairs = np.array([ph["colour_pairs"] for ph in filters.geometry], np.int64)
     E = n_pairs * sq * a["knorm"]                    # per phase and direction
     Ec = colour_pairs * sq * a["kcol"]
     Tmax = int((2 * (E[:, 0] + E[:, 1]) + E[:, 2] + E[:, 3]).max())
