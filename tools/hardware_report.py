@@ -11,8 +11,8 @@ masks, both protocols of `rgbz-fast hardware`);
 the same on an independent set (CBSD68) and on the default dataset the search used;
 the cost of every method and mask at 4000 pixels; the full `rgbz-fast hardware` report
 of SG and learned on both masks; the sweep of SG and learned on both masks
-(`rgbz-fast hardware --sweep`: table and plot) with its time. The page and its figures are written to temporary files and
-renamed.
+(`rgbz-fast hardware --sweep`: table and plot) with its time. The page and its figures
+are written to temporary files and renamed.
 """
 
 from __future__ import annotations
@@ -146,8 +146,9 @@ def cost_table():
     return out
 
 
-def learned_search_section(search):
-    """The learned filters' fields: the search and the hash buckets that flip."""
+def learned_search_section(search, held_out=None):
+    """The learned filters' fields: the search and the hash buckets that flip (``held_out``:
+    the flips at the default on Kodak, measured by this tool)."""
     m, d = search["margin"], search["default"]
     out = ["### The learned filters' fields", "",
            f"Found by `python tools/hardware_default.py --method learned` in "
@@ -172,8 +173,11 @@ def learned_search_section(search):
              "calibration_wide_start": ("calibration", "wide start"),
              "check": ("Kodak (held out)", "default"),
              "check_wide_start": ("Kodak (held out)", "wide start")}
+    flips = dict(search["bucket_flips"])
+    if held_out is not None:
+        flips["check"] = held_out
     for key, (imgs, cfg) in names.items():
-        for proto, e in search["bucket_flips"].get(key, {}).items():
+        for proto, e in flips.get(key, {}).items():
             out.append(f"| {imgs} | {cfg} | {proto} | {e['sites']} | {e['flipped']} "
                        f"({e['flipped_pct']:.4f} %) | {e['flipped_within_1lsb_pct']:.1f} % | "
                        f"{e['flipped_mean_abs_lsb']:.2f} | {e['other_within_1lsb_pct']:.4f} % | "
@@ -226,9 +230,7 @@ def main(argv=None):
                                                                            "register_bits"))
             lines.append(f"| {c['exp']} | {c['recip']} | {r['cost_bits']} | {rest} |")
         lines.append("")
-    learned_path = figs / "hardware_search_learned.json"
-    if learned_path.exists():
-        lines += learned_search_section(json.loads(learned_path.read_text()))
+    learned_at = len(lines)     # the learned search's section, read when the page is done
     kodak = H.load_images(args.kodak) if args.kodak.exists() else None
     lines += ["## The targets", "",
               "Target: the default configuration within 0.05 dB of float64's mean CFA PSNR "
@@ -281,6 +283,14 @@ def main(argv=None):
             lines += [f"### {p}: `rgbz-fast hardware --method {m} --pattern {p} --sweep` "
                       f"({len(rows)} configurations, {secs:.0f} s)", "",
                       f"![sweep](figures/{fig.name})", "", H.format_sweep(rows), ""]
+    held_out = None
+    if kodak:
+        from hardware_default import LEARNED_PATTERNS as PHASES, bucket_flips
+        held_out = bucket_flips(kodak, PHASES, FixedPointConfig())
+    learned_path = figs / "hardware_search_learned.json"
+    if learned_path.exists():
+        lines[learned_at:learned_at] = learned_search_section(
+            json.loads(learned_path.read_text()), held_out)
     lines += [f"Whole page: {time.perf_counter() - t0:.0f} s; load average "
               f"{os.getloadavg()[0]:.2f} after the run."]
     page = args.out / "hardware.md"

@@ -164,9 +164,28 @@ def test_the_cost_counts_the_filter_rom_and_the_hash():
             assert c.window == (2 * f.radius + 1, f.radius + max(f.radius, Q - 1) + 1, 11)
             mults = c.multipliers()
             taps = max(len(g["taps"]) for g in f.geometry)
-            assert mults[tuple(sorted((cfg.tap_bits, 11), reverse=True))] == taps   # the dot product
+            dot = tuple(sorted((cfg.tap_bits, 11), reverse=True))
+            assert mults[dot] == taps                       # the dot product
             assert c.dsp48() > 0 and c.depth > 0
             assert c.as_dict()["tables"]["filter ROM"]["bram18"] >= 1
         narrow = hardware_cost(p, "learned", fixed_point=NARROW)
         wide = hardware_cost(p, "learned", fixed_point=CONFIGS["wide"])
         assert narrow.total_bits < wide.total_bits
+
+
+def test_thresholds_outside_the_range_of_the_structure_decide_as_in_float(rng):
+    """A strength threshold below 0 or beyond the largest T is held at the ends of T's range
+    (its declared width): the decisions do not change, and the model still agrees."""
+    f = _refit("mask2", 3, 3, 3, 2, 2, rng)
+    s = np.tile([-5.0, 1e12], (f.weights.shape[0], 1))
+    g = LearnedFilters(f.pattern, 11, f.weights, s, f.coherence_thresholds,
+                       f.spread_thresholds, radius=3, hash_radius=3)
+    data = _frame("random", (20, 24), 11, rng)
+    got = _check(data, g, 11, FixedPointConfig())
+    q = quantise_learned(g, FixedPointConfig(), 11)["arrays"]["str_q"]
+    regs = {r.name: r for r in learned_registers(g, FixedPointConfig(), 11)}
+    assert q.min() == -1 and int(q.max()).bit_length() <= regs["strength_threshold"].bits
+    exact = rz.reconstruct(data, "learned", pattern=g.pattern, bit_depth=11,
+                           precision="float64", filters=g)
+    z = g.pattern.z_mask(data.shape)
+    assert np.mean(np.abs(got[z].astype(int) - exact[z].astype(int)) <= 1) > 0.99

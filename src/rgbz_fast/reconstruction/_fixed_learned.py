@@ -71,7 +71,12 @@ def quantise_learned(filters, config, bit_depth):
         knorm[k] = [int(np.floor(2.0 ** N / len(pp) + 0.5)) for pp in ph["pairs"]]
         kcol[k] = [int(np.floor(2.0 ** N / n + 0.5)) for n in ph["colour_pairs"]]
     s_thr, c_thr, k_thr = filters.thresholds(bit_depth)
-    str_q = np.floor(s_thr * (4.0 * 2.0 ** N)).astype(np.int64)   # exact: a power of two
+    # exact (a power of two), then held within T's range [0, Tmax]: a threshold outside it
+    # decides the same (T >= 0 exceeds a negative one, never one at or above Tmax)
+    top2 = ((1 << bit_depth) - 1) ** 2
+    E = ka["n_pairs"].astype(np.int64) * top2 * knorm
+    tmax = int((2 * (E[:, 0] + E[:, 1]) + E[:, 2] + E[:, 3]).max())
+    str_q = np.clip(np.floor(s_thr * (4.0 * 2.0 ** N)), -1, tmax).astype(np.int64)
     coh_q = _round((c_thr ** 2) * 2.0 ** K)
     spr_q = _round(k_thr * 2.0 ** K)
     F = tap_fraction(filters.weights, config.tap_bits)
