@@ -260,8 +260,9 @@ def main(argv=None):
     if args.extra.exists():
         images += H.load_images(args.extra)[::8]
     if args.out is None:
-        args.out = Path("docs/reports/figures/hardware_search"
-                        + ("_learned" if args.method == "learned" else "") + ".json")
+        args.out = Path("docs/reports/figures/hardware_search_learned.json"
+                        if args.method == "learned"
+                        else "docs/reports/figures/hardware_search.json")
     if args.method == "learned":
         return main_learned(args, images)
     search = Search(images)
