@@ -343,7 +343,10 @@ static void ZG_CAT(zg_gather, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int
             if (n == ZG_BLK) ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 2, ZG_BLK, tdy, tdx, nt, R, v);
             else ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 2, n, tdy, tdx, nt, R, v);
             break;
-        case 4: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, n, tdy, tdx, nt, R, v); break;
+        case 4:
+            if (n == ZG_BLK) ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, ZG_BLK, tdy, tdx, nt, R, v);
+            else ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, n, tdy, tdx, nt, R, v);
+            break;
         default: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, px, n, tdy, tdx, nt, R, v);
         }
     } else {
