@@ -55,6 +55,41 @@ static ptrdiff_t ci_encode_avx2(const float *t, const int32_t *start, uint32_t b
     return j;
 }
 
+/* ci_encode_avx2 for a table of one step (8 bits) from its pairs (ci_codes' `pair`): one
+   8-byte gather per value gives the bucket's start code and the threshold above it, instead
+   of two gathers one after the other; the same codes */
+__attribute__((target("avx2")))
+static ptrdiff_t ci_encode1_avx2(const uint64_t *pair, uint32_t base, uint32_t last,
+                                 int shift, const float *v, uint16_t *code, ptrdiff_t n)
+{
+    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+    const __m256i vb = _mm256_set1_epi32((int32_t)base), vl = _mm256_set1_epi32((int32_t)last);
+    const __m128i sh = _mm_cvtsi32_si128(shift);
+    const long long *tab = (const long long *)pair;
+    ptrdiff_t j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const __m256 x = _mm256_min_ps(_mm256_max_ps(_mm256_loadu_ps(v + j), zero), one);
+        __m256i u = _mm256_srl_epi32(_mm256_castps_si256(x), sh);
+        u = _mm256_sub_epi32(_mm256_min_epu32(_mm256_max_epu32(u, vb), vl), vb);
+        const __m256 lo = _mm256_castsi256_ps(
+            _mm256_i32gather_epi64(tab, _mm256_castsi256_si128(u), 8));
+        const __m256 hi = _mm256_castsi256_ps(
+            _mm256_i32gather_epi64(tab, _mm256_extracti128_si256(u, 1), 8));
+        /* the low halves (thresholds) and the high ones (codes) of the 8 pairs, in order */
+        const __m256 t = _mm256_castpd_ps(_mm256_permute4x64_pd(
+            _mm256_castps_pd(_mm256_shuffle_ps(lo, hi, 0x88)), 0xD8));
+        const __m256i c = _mm256_castpd_si256(_mm256_permute4x64_pd(
+            _mm256_castps_pd(_mm256_shuffle_ps(lo, hi, 0xDD)), 0xD8));
+        /* t <= x: all ones, -1 */
+        const __m256i k = _mm256_sub_epi32(c, _mm256_castps_si256(_mm256_cmp_ps(t, x,
+                                                                            _CMP_LE_OQ)));
+        const __m128i p = _mm_packus_epi32(_mm256_castsi256_si128(k),
+                                           _mm256_extracti128_si256(k, 1));
+        _mm_storeu_si128((__m128i *)(code + j), p);
+    }
+    return j;
+}
+
 /* the demosaic's and the white balance's loops in 4 doubles as well (the same arithmetic:
    -ffp-contract=off leaves every operation rounded on its own on every set) */
 #define CI_CLONES __attribute__((target_clones("avx2", "default")))
@@ -65,6 +100,9 @@ static int ci_cpu_avx2(void)
     if (have < 0) have = __builtin_cpu_supports("avx2") ? 1 : 0;
     return have;
 }
+#endif
+#ifndef CI_CLONES
+#define CI_CLONES
 #endif
 
 /* one thread per 2^18 pixels at most (MIN_PIXELS_PER_THREAD of the Python layer) */
@@ -138,6 +176,74 @@ static int ci_push(ci_list *l, ptrdiff_t r, ptrdiff_t c, float hot, float cold, 
     return 0;
 }
 
+/* The pre-test of the defect scan (ci_pretest): per tile row, CI_PRE neighbour offsets
+   (the most frequent among the row's colour positions; a position without one of them is
+   kept for the full test), their frame offsets `lin` (CI_PRE per tile row), their masks
+   (CI_PRE rows of cols bytes per tile row: 1 at x when the offset is a neighbour of x) and
+   the colour mask (a row of cols bytes per tile row: 1 where x has neighbours to test);
+   same[py]: every mask of tile row py is its colour mask. */
+enum { CI_PRE = 4 };
+typedef struct {
+    ptrdiff_t *lin;
+    uint8_t *mask, *colour, *same;
+} ci_pre;
+
+static void ci_pre_free(ci_pre *pre)
+{
+    free(pre->same);
+    free(pre->lin);
+    free(pre->mask);
+    free(pre->colour);
+}
+
+static int ci_pre_build(ci_pre *pre, ptrdiff_t cols, int32_t P, int32_t Q, const int32_t *noff,
+                        const int32_t *offs)
+{
+    pre->lin = (ptrdiff_t *)calloc((size_t)P * CI_PRE, sizeof *pre->lin);
+    pre->mask = (uint8_t *)calloc((size_t)P * CI_PRE * (size_t)cols, 1);
+    pre->colour = (uint8_t *)calloc((size_t)P * (size_t)cols, 1);
+    pre->same = (uint8_t *)calloc((size_t)P, 1);
+    if (!pre->lin || !pre->mask || !pre->colour || !pre->same) {
+        ci_pre_free(pre);
+        return RGBZ_ENOMEM;
+    }
+    for (int32_t py = 0; py < P; py++) {
+        /* the offsets of the 5x5 window, dy, dx in [-2, 2]: how many positions have each */
+        int count[25] = {0}, taken[25] = {0};
+        for (int32_t q = 0; q < Q; q++) {
+            const int32_t n = noff[py * Q + q];
+            const int32_t *o = offs + (ptrdiff_t)(py * Q + q) * 2 * RGBZ_CI_MAX_NEIGHBOURS;
+            for (int32_t i = 0; i < n; i++)
+                if (o[2 * i] >= -2 && o[2 * i] <= 2 && o[2 * i + 1] >= -2 && o[2 * i + 1] <= 2)
+                    count[(o[2 * i] + 2) * 5 + o[2 * i + 1] + 2]++;
+        }
+        for (int d = 0; d < CI_PRE; d++) {
+            int best = -1;
+            for (int i = 0; i < 25; i++)
+                if (!taken[i] && count[i] > 0 && (best < 0 || count[i] > count[best])) best = i;
+            if (best < 0) continue;                 /* lin 0, mask 0: tests nothing */
+            taken[best] = 1;
+            const int32_t dy = best / 5 - 2, dx = best % 5 - 2;
+            pre->lin[py * CI_PRE + d] = (ptrdiff_t)dy * cols + dx;
+            uint8_t *m = pre->mask + ((ptrdiff_t)py * CI_PRE + d) * cols;
+            for (ptrdiff_t x = 0; x < cols; x++) {
+                const int32_t q = (int32_t)(x % Q), n = noff[py * Q + q];
+                const int32_t *o = offs + (ptrdiff_t)(py * Q + q) * 2 * RGBZ_CI_MAX_NEIGHBOURS;
+                for (int32_t i = 0; i < n; i++)
+                    if (o[2 * i] == dy && o[2 * i + 1] == dx) m[x] = 1;
+            }
+        }
+        for (ptrdiff_t x = 0; x < cols; x++)
+            pre->colour[py * cols + x] = noff[py * Q + (int32_t)(x % Q)] > 0;
+        pre->same[py] = 1;
+        for (int d = 0; d < CI_PRE; d++)
+            if (memcmp(pre->mask + ((ptrdiff_t)py * CI_PRE + d) * cols,
+                       pre->colour + py * cols, (size_t)cols))
+                pre->same[py] = 0;
+    }
+    return RGBZ_OK;
+}
+
 /* the scans, once per element type (rgbz_templating.h) */
 #define RGBZ_TYPE_TEMPLATE "colour_isp_scan.template.h"
 #include "rgbz_each_type.h"
@@ -159,9 +265,12 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
     ci_list *lists = (ci_list *)calloc((size_t)nt, sizeof *lists);
     /* the neighbours' offsets in the frame, dy cols + dx */
     ptrdiff_t *lin = (ptrdiff_t *)malloc((size_t)P * Q * RGBZ_CI_MAX_NEIGHBOURS * sizeof *lin);
-    if (!lists || !lin) {
+    uint8_t *keep = (uint8_t *)malloc((size_t)nt * (size_t)(cols > 0 ? cols : 1));
+    ci_pre pre = {NULL, NULL, NULL, NULL};
+    if (!lists || !lin || !keep || ci_pre_build(&pre, cols, P, Q, noff, offs) != RGBZ_OK) {
         free(lists);
         free(lin);
+        free(keep);
         return RGBZ_ENOMEM;
     }
     for (ptrdiff_t i = 0; i < (ptrdiff_t)P * Q; i++)
@@ -175,14 +284,16 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
 #endif
     for (ptrdiff_t y = 0; y < rows; y++) {
 #ifdef _OPENMP
-        ci_list *l = lists + omp_get_thread_num();
+        const int t = omp_get_thread_num();
 #else
-        ci_list *l = lists;
+        const int t = 0;
 #endif
+        ci_list *l = lists + t;
+        uint8_t *kp = keep + (ptrdiff_t)t * cols;
         if (bad) continue;
         int st = RGBZ_OK;
 #define CI_CAND_(s, T) st = RGBZ_CAT(ci_candidates, s)((const T *)src, rows, cols, y, P, Q, \
-                                                       noff, offs, lin, thr, k, l)
+                                                       noff, offs, lin, &pre, thr, k, kp, l)
         RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_CAND_, st = RGBZ_EINVAL)
 #undef CI_CAND_
         bad |= st != RGBZ_OK;
@@ -202,6 +313,8 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
     }
     free(lists);
     free(lin);
+    free(keep);
+    ci_pre_free(&pre);
     *count = n;
     return bad ? RGBZ_ENOMEM : RGBZ_OK;
 }
@@ -256,19 +369,63 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
     return RGBZ_OK;
 }
 
+/* An output row from its codes: 6 planes of h codes (R, G, B of the even columns, then of
+   the odd ones) interleaved as R, G, B per pixel, a pair of pixels per step */
+CI_CLONES static void ci_interleave8(const uint16_t *code, ptrdiff_t h, ptrdiff_t cols,
+                                     uint8_t *restrict o)
+{
+    const uint16_t *c0 = code, *c1 = code + h, *c2 = code + 2 * h, *c3 = code + 3 * h,
+                   *c4 = code + 4 * h, *c5 = code + 5 * h;
+    const ptrdiff_t n = cols / 2;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        o[6 * j] = (uint8_t)c0[j];
+        o[6 * j + 1] = (uint8_t)c1[j];
+        o[6 * j + 2] = (uint8_t)c2[j];
+        o[6 * j + 3] = (uint8_t)c3[j];
+        o[6 * j + 4] = (uint8_t)c4[j];
+        o[6 * j + 5] = (uint8_t)c5[j];
+    }
+    if (cols & 1) {
+        o[6 * n] = (uint8_t)c0[n];
+        o[6 * n + 1] = (uint8_t)c1[n];
+        o[6 * n + 2] = (uint8_t)c2[n];
+    }
+}
+
+CI_CLONES static void ci_interleave16(const uint16_t *code, ptrdiff_t h, ptrdiff_t cols,
+                                      uint16_t *restrict o)
+{
+    const uint16_t *c0 = code, *c1 = code + h, *c2 = code + 2 * h, *c3 = code + 3 * h,
+                   *c4 = code + 4 * h, *c5 = code + 5 * h;
+    const ptrdiff_t n = cols / 2;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        o[6 * j] = c0[j];
+        o[6 * j + 1] = c1[j];
+        o[6 * j + 2] = c2[j];
+        o[6 * j + 3] = c3[j];
+        o[6 * j + 4] = c4[j];
+        o[6 * j + 5] = c5[j];
+    }
+    if (cols & 1) {
+        o[6 * n] = c0[n];
+        o[6 * n + 1] = c1[n];
+        o[6 * n + 2] = c2[n];
+    }
+}
+
 /* ---- the render, once per precision, its rows once per element type within it ---- */
 /* the vector codes of a precision, or none (0 values coded) */
 #ifdef CI_HAVE_AVX2
 #define CI_ENCODE_FAST_f32(tab, v, code, n)                                                \
-    (ci_cpu_avx2() ? ci_encode_avx2((tab)->t, (tab)->start, (tab)->base, (tab)->last,       \
-                                    (tab)->shift, (tab)->steps, (v), (code), (n)) : 0)
+    (!ci_cpu_avx2() ? 0 :                                                                   \
+     (tab)->pair ? ci_encode1_avx2((tab)->pair, (tab)->base, (tab)->last, (tab)->shift,     \
+                                   (v), (code), (n)) :                                      \
+     ci_encode_avx2((tab)->t, (tab)->start, (tab)->base, (tab)->last, (tab)->shift,         \
+                    (tab)->steps, (v), (code), (n)))
 #else
 #define CI_ENCODE_FAST_f32(tab, v, code, n) 0
 #endif
 #define CI_ENCODE_FAST_f64(tab, v, code, n) 0
-#ifndef CI_CLONES
-#define CI_CLONES
-#endif
 typedef uint32_t ci_uint_f32;       /* the unsigned integer of a float's bits */
 typedef uint64_t ci_uint_f64;
 #define CI_UINT(s) RGBZ_CAT(ci_uint, s)

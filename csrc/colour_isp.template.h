@@ -24,6 +24,9 @@ typedef struct {
     const int32_t *start;   /* the code of each bucket's smallest value */
     CI_UINT(RS) base, last; /* the first and the last bucket */
     int shift, steps;
+    /* one step (steps 1) in float32: each bucket's start code c in the high half and the
+       bits of t[c + 1] in the low half, so that one 8-byte load gives both; else NULL */
+    const uint64_t *pair;
 } RGBZ_CAT(ci_codes, RS);
 
 RGBZ_INLINE int RGBZ_CAT(ci_code, RS)(const RGBZ_CAT(ci_codes, RS) *tab, REAL v, int steps)
@@ -55,8 +58,12 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
     tab->last = uone >> tab->shift;
     const ptrdiff_t n = (ptrdiff_t)(tab->last - tab->base) + 1;
     const ptrdiff_t npad = (ptrdiff_t)top + 1 + 64;
-    REAL *tp = (REAL *)malloc((size_t)npad * sizeof(REAL) + (size_t)n * sizeof(int32_t));
-    if (!tp) return NULL;
+    /* one block: the pairs (8-byte aligned), the padded thresholds, the start codes */
+    const size_t npair = sizeof(REAL) == 4 ? (size_t)n : 0;
+    uint64_t *pair = (uint64_t *)malloc(npair * sizeof(uint64_t) + (size_t)npad * sizeof(REAL) +
+                                        (size_t)n * sizeof(int32_t));
+    if (!pair) return NULL;
+    REAL *tp = (REAL *)(pair + npair);
     int32_t *start = (int32_t *)(tp + npad);
     start[0] = 0;                                   /* holds 0, whose code is 0 */
     int c = 0, span = 0;
@@ -72,7 +79,7 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
     int steps = 1;
     while ((1 << steps) <= span) steps++;
     if (steps > 6) {                                /* not these thresholds */
-        free(tp);
+        free(pair);
         return NULL;
     }
     memcpy(tp, t, (size_t)(top + 1) * sizeof(REAL));
@@ -80,7 +87,16 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
     tab->t = tp;
     tab->start = start;
     tab->steps = steps;
-    return tp;
+    tab->pair = NULL;
+    if (npair && steps == 1) {
+        for (ptrdiff_t i = 0; i < n; i++) {
+            uint32_t tb;
+            memcpy(&tb, tp + start[i] + 1, sizeof tb);
+            pair[i] = (uint64_t)tb | (uint64_t)(uint32_t)start[i] << 32;
+        }
+        tab->pair = pair;
+    }
+    return pair;
 }
 
 /* what a row kernel needs, beside the frame */
@@ -239,28 +255,8 @@ static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
         for (int k = 0; k < 3; k++)
             RGBZ_CAT(ci_encode, RS)(&a->codes, par[p][k], code + (3 * p + k) * h, nn[p]);
     }
-    const uint16_t *c[2][3];
-    for (int p = 0; p < 2; p++)
-        for (int k = 0; k < 3; k++) c[p][k] = code + (3 * p + k) * h;
-    if (bits == 8) {
-        uint8_t *o = (uint8_t *)out + 3 * y * cols;
-        for (ptrdiff_t x = 0; x < cols; x++) {
-            const int p = (int)(x & 1);
-            const ptrdiff_t j = x >> 1;
-            o[3 * x] = (uint8_t)c[p][0][j];
-            o[3 * x + 1] = (uint8_t)c[p][1][j];
-            o[3 * x + 2] = (uint8_t)c[p][2][j];
-        }
-    } else {
-        uint16_t *o = (uint16_t *)out + 3 * y * cols;
-        for (ptrdiff_t x = 0; x < cols; x++) {
-            const int p = (int)(x & 1);
-            const ptrdiff_t j = x >> 1;
-            o[3 * x] = c[p][0][j];
-            o[3 * x + 1] = c[p][1][j];
-            o[3 * x + 2] = c[p][2][j];
-        }
-    }
+    if (bits == 8) ci_interleave8(code, h, cols, (uint8_t *)out + 3 * y * cols);
+    else ci_interleave16(code, h, cols, (uint16_t *)out + 3 * y * cols);
 }
 
 #define RGBZ_TYPE_TEMPLATE "colour_isp.template.h"

@@ -224,6 +224,68 @@ static void sim_inv_fill(const double *restrict lam, const uint32_t *restrict c0
                                                     &p[q], &F[q]);
 }
 
+/* The sort of the first PTRS attempt's samples (sim_poisson_fill): e[i] the accepted
+   candidate pk[i] (lam >= 10, state 1), lam (lam >= 10 or 0 < lam < 10) or 0; the indices of
+   the small means (0 < lam < 10), of the open ones (lam >= 10, state 0) and of the rejected
+   ones (lam >= 10, state 2) appended to their lists, in order. Returns how far it went (a
+   multiple of 8; the caller sorts the rest) with the lists' lengths in len[3]. With the
+   compressing stores of AVX-512 when the CPU has them (the same lists and values as the
+   caller's scalar loop), else nothing. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#include <immintrin.h>
+__attribute__((target("avx512f,avx512vl")))
+static ptrdiff_t sim_sort_avx512(double *e, const int32_t *state, const double *pk,
+                                 ptrdiff_t n, int32_t *small, int32_t *open_, int32_t *pend,
+                                 ptrdiff_t len[3])
+{
+    const __m512d ten = _mm512_set1_pd(10.0), zero = _mm512_setzero_pd();
+    const __m256i one = _mm256_set1_epi32(1), two = _mm256_set1_epi32(2),
+                  z = _mm256_setzero_si256(), eight = _mm256_set1_epi32(8);
+    __m256i idx = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    ptrdiff_t ns = len[0], no = len[1], np = len[2], i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const __m512d lam = _mm512_loadu_pd(e + i);
+        const __m256i st = _mm256_loadu_si256((const __m256i *)(state + i));
+        const __mmask8 big = _mm512_cmp_pd_mask(lam, ten, _CMP_GE_OQ);
+        const __mmask8 pos = _mm512_cmp_pd_mask(lam, zero, _CMP_GT_OQ);
+        const __mmask8 is_small = (__mmask8)(~big & pos);
+        const __mmask8 is_open = big & _mm256_cmpeq_epi32_mask(st, z);
+        const __mmask8 is_pend = big & _mm256_cmpeq_epi32_mask(st, two);
+        const __mmask8 acc = big & _mm256_cmpeq_epi32_mask(st, one);
+        __m512d out = _mm512_maskz_mov_pd((__mmask8)(big | is_small), lam);
+        out = _mm512_mask_loadu_pd(out, acc, pk + i);
+        _mm512_storeu_pd(e + i, out);
+        _mm256_mask_compressstoreu_epi32(small + ns, is_small, idx);
+        _mm256_mask_compressstoreu_epi32(open_ + no, is_open, idx);
+        _mm256_mask_compressstoreu_epi32(pend + np, is_pend, idx);
+        ns += __builtin_popcount(is_small);
+        no += __builtin_popcount(is_open);
+        np += __builtin_popcount(is_pend);
+        idx = _mm256_add_epi32(idx, eight);
+    }
+    len[0] = ns;
+    len[1] = no;
+    len[2] = np;
+    return i;
+}
+
+static ptrdiff_t sim_sort_fast(double *e, const int32_t *state, const double *pk, ptrdiff_t n,
+                               int32_t *small, int32_t *open_, int32_t *pend, ptrdiff_t len[3])
+{
+    static int have = -1;
+    if (have < 0)
+        have = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+    return have ? sim_sort_avx512(e, state, pk, n, small, open_, pend, len) : 0;
+}
+#else
+static ptrdiff_t sim_sort_fast(double *e, const int32_t *state, const double *pk, ptrdiff_t n,
+                               int32_t *small, int32_t *open_, int32_t *pend, ptrdiff_t len[3])
+{
+    (void)e; (void)state; (void)pk; (void)n; (void)small; (void)open_; (void)pend; (void)len;
+    return 0;
+}
+#endif
+
 /* e[i] <- a Poisson variate of mean e[i] (i < n, n <= SIM_CHUNK), attempt j at the counter
    (c0[i], c1[i], c2, j): below a mean of 10 the inversion of the distribution function
    (one uniform, attempt 0), above it PTRS. The first attempt of PTRS runs over every sample
@@ -239,9 +301,14 @@ static void sim_poisson_fill(double *e, const uint32_t *c0, const uint32_t *c1, 
     double slam[SIM_CHUNK], sk[SIM_CHUNK], sus[SIM_CHUNK], sv[SIM_CHUNK], pq[SIM_CHUNK];
     ptrdiff_t np = 0, ns = 0, nsmall = 0;
     sim_ptrs_attempt(e, c0, c1, c2, 0, key, n, pk, state, pus, pv);
+    ptrdiff_t len[3] = {0, 0, 0};
+    const ptrdiff_t sorted = sim_sort_fast(e, state, pk, n, small, open_, pend, len);
+    nsmall = len[0];
+    ns = len[1];
+    np = len[2];
     /* sorted without branches (their outcome is random): each index written at the end of
        every list, the list's length advanced by its flag */
-    for (ptrdiff_t i = 0; i < n; i++) {
+    for (ptrdiff_t i = sorted; i < n; i++) {
         const double lam = e[i];
         const int big = lam >= 10.0, st = state[i];
         const int is_small = !big & (lam > 0.0);

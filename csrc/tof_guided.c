@@ -55,34 +55,45 @@ RGBZ_INLINE float tofg_exp_neg(float x)
 }
 
 /* ------------------------------------------------------------------ the guide's colours */
+/* |L * plane| at the columns [x0, x1) of row r (interior) into l[0 .. x1 - x0), in double:
+   a loop that vectorises */
+RGBZ_CLONES_512 static void tofg_lap_row(const float *restrict p, ptrdiff_t r, ptrdiff_t C,
+                                         ptrdiff_t x0, ptrdiff_t x1, double *restrict l)
+{
+    const float *a = p + (r - 1) * C, *b = p + r * C, *c = p + (r + 1) * C;
+    for (ptrdiff_t x = x0; x < x1; x++) {
+        const double v = (double)a[x - 1] - 2.0 * a[x] + a[x + 1]
+                         - 2.0 * b[x - 1] + 4.0 * b[x] - 2.0 * b[x + 1]
+                         + (double)c[x - 1] - 2.0 * c[x] + c[x + 1];
+        l[x - x0] = fabs(v);
+    }
+}
+
 /* sum over the interior of |L * plane| for L = [1 -2 1; -2 4 -2; 1 -2 1] (Immerkaer 1996),
-   per plane of col (3, R, C), in double */
+   per plane of col (3, R, C), in double, each row's terms in column order */
 static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers)
 {
     const ptrdiff_t N = R * C;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
     for (int ch = 0; ch < 3; ch++) {
         const float *p = col + ch * N;
         double total = 0.0;
-        const int nth = rgbz_threads(workers);
-        (void)nth;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) reduction(+:total) num_threads(nth)
 #endif
         for (ptrdiff_t r = 1; r < R - 1; r++) {
-            const float *a = p + (r - 1) * C, *b = p + r * C, *c = p + (r + 1) * C;
-            double row = 0.0;
-            for (ptrdiff_t x = 1; x < C - 1; x++) {
-                const double l = (double)a[x - 1] - 2.0 * a[x] + a[x + 1]
-                                 - 2.0 * b[x - 1] + 4.0 * b[x] - 2.0 * b[x + 1]
-                                 + (double)c[x - 1] - 2.0 * c[x] + c[x + 1];
-                row += fabs(l);
+            double row = 0.0, l[256];
+            for (ptrdiff_t x0 = 1; x0 < C - 1; x0 += 256) {
+                const ptrdiff_t x1 = C - 1 - x0 < 256 ? C - 1 : x0 + 256;
+                tofg_lap_row(p, r, C, x0, x1, l);
+                for (ptrdiff_t x = 0; x < x1 - x0; x++) row += l[x];
             }
             total += row;
         }
         lap[ch] = total;
     }
 }
-
 
 /* ------------------------------------------------------------------ the 1-D passes */
 typedef struct {
@@ -611,6 +622,77 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
 }
 
 /* ------------------------------------------------------------------ validity */
+typedef struct {
+    const double *amp, *depth, *residual, *sigma_scale, *refl_coef;
+    const float *var;
+    const uint8_t *sat;
+    ptrdiff_t N;
+    double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
+    double *snr, *sigma, *refl;
+    uint8_t *flags;
+} tofg_valid_args;
+
+/* the measurements [n0, n1) with NF frequencies (a compile-time constant up to 4): branch-free,
+   the arrays restrict parameters, so that the loop over the measurements vectorises */
+RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restrict amp,
+                                 const float *restrict var, const double *restrict depth,
+                                 const double *restrict residual, const uint8_t *restrict sat,
+                                 double *restrict snr, double *restrict sigma,
+                                 double *restrict refl, uint8_t *restrict flags, ptrdiff_t n0,
+                                 ptrdiff_t n1, const int NF)
+{
+    const ptrdiff_t N = p->N;
+    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)NF;
+    const double min_snr = p->min_snr, min_amplitude = p->min_amplitude;
+    const double max_sigma = p->max_sigma, max_residual = p->max_residual;
+    const double min_reflectance = p->min_reflectance, max_range = p->max_range;
+    double ssc[RGBZ_TOF_MAX_FREQS], rco[RGBZ_TOF_MAX_FREQS];
+    for (int f = 0; f < NF; f++) {
+        ssc[f] = p->sigma_scale[f];
+        rco[f] = p->refl_coef[f];
+    }
+    for (ptrdiff_t n = n0; n < n1; n++) {
+        const double vn = var[n], sd = sqrt(vn), d = depth[n];
+        const double dd = d > 0.0 ? d : 1.0;
+        double s2 = 0.0, best = INFINITY, rho = 0.0;
+        int weak = 0;
+        for (int f = 0; f < NF; f++) {
+            const double a = amp[f * N + n];
+            double ph = vn / (4.0 * a * a);                      /* phase variance */
+            ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
+            s2 += ssc[f] * ph;
+            const double q = 2.0 * a / sd;
+            best = q < best ? q : best;
+            weak |= a < min_amplitude;
+            rho += a * rco[f];
+        }
+        rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
+        const double sg = sqrt(s2);
+        const int low = (best < min_snr) | weak | ((max_sigma >= 0.0) & !(sg <= max_sigma));
+        const int far = (d < 0.0) | (d > max_range - 5.0 * sg) | (rho < min_reflectance);
+        flags[n] = (uint8_t)((sat[n] != 0) | (low << 1) | ((residual[n] > max_residual) << 2)
+                             | (far << 4));
+        snr[n] = best;
+        sigma[n] = sg;
+        refl[n] = rho;
+    }
+}
+
+RGBZ_CLONES_512 static void tofg_valid_block(const tofg_valid_args *p, ptrdiff_t F,
+                                             ptrdiff_t n0, ptrdiff_t n1)
+{
+#define TOFG_VALID_(nf) tofg_valid_span(p, p->amp, p->var, p->depth, p->residual, p->sat,     \
+                                        p->snr, p->sigma, p->refl, p->flags, n0, n1, nf)
+    switch (F) {
+    case 1: TOFG_VALID_(1); break;
+    case 2: TOFG_VALID_(2); break;
+    case 3: TOFG_VALID_(3); break;
+    case 4: TOFG_VALID_(4); break;
+    default: TOFG_VALID_((int)F); break;
+    }
+#undef TOFG_VALID_
+}
+
 int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
                        const double *sigma_scale, const double *refl_coef, double min_snr,
@@ -621,36 +703,14 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
     if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
         || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
         return RGBZ_EINVAL;
-    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)F;
+    const tofg_valid_args p = {amp, depth, residual, sigma_scale, refl_coef, var, sat, N,
+                               min_snr, min_amplitude, max_sigma, max_residual,
+                               min_reflectance, max_range, snr, sigma, refl, flags};
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR
-    for (ptrdiff_t n = 0; n < N; n++) {
-        const double vn = var[n], sd = sqrt(vn), d = depth[n];
-        const double dd = d > 0.0 ? d : 1.0;
-        double s2 = 0.0, best = INFINITY, rho = 0.0;
-        int weak = 0;
-        for (ptrdiff_t f = 0; f < F; f++) {
-            const double a = amp[f * N + n];
-            double ph = vn / (4.0 * a * a);                      /* phase variance */
-            ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
-            s2 += sigma_scale[f] * ph;
-            const double q = 2.0 * a / sd;
-            best = q < best ? q : best;
-            weak |= a < min_amplitude;
-            rho += a * refl_coef[f];
-        }
-        rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
-        const double sg = sqrt(s2);
-        uint8_t fl = sat[n] ? 1 : 0;
-        if (best < min_snr || weak || (max_sigma >= 0.0 && !(sg <= max_sigma))) fl |= 2;
-        if (residual[n] > max_residual) fl |= 4;
-        if (d < 0.0 || d > max_range - 5.0 * sg || rho < min_reflectance) fl |= 16;
-        snr[n] = best;
-        sigma[n] = sg;
-        refl[n] = rho;
-        flags[n] = fl;
-    }
+    for (ptrdiff_t n0 = 0; n0 < N; n0 += 4096)
+        tofg_valid_block(&p, F, n0, N - n0 < 4096 ? N : n0 + 4096);
     return RGBZ_OK;
 }
 
@@ -724,10 +784,35 @@ RGBZ_CLONES_512 static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, ui
     }
 }
 
-static void tofg_fly_cell(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t r, ptrdiff_t c)
+/* tofg_candidate for the cells of row r into cand[0 .. C): in the interior (every neighbour on
+   the grid) branch-free, in a loop that vectorises; on the border as tofg_candidate */
+RGBZ_CLONES_512 static void tofg_cand_row(const tofg_fly_args *p, const uint8_t *code,
+                                          ptrdiff_t r, uint8_t *restrict cand)
+{
+    const ptrdiff_t C = p->C;
+    if (r == 0 || r == p->R - 1 || C < 3) {
+        for (ptrdiff_t c = 0; c < C; c++) cand[c] = (uint8_t)tofg_candidate(p, code, r, c);
+        return;
+    }
+    cand[0] = (uint8_t)tofg_candidate(p, code, r, 0);
+    cand[C - 1] = (uint8_t)tofg_candidate(p, code, r, C - 1);
+    const uint8_t *restrict k = code + r * C, *restrict up = k - C, *restrict dn = k + C;
+    /* direction e = (dr, dc): the hit of the neighbour at -e with its pair at +e (both bits
+       2e, 2e + 1), or of the neighbour at +e with its pair away (bit 2e alone) */
+    for (ptrdiff_t c = 1; c < C - 1; c++) {
+        const int v = ((k[c] & 0x55) != 0)
+                      | ((k[c - 1] & 0x03) == 0x03) | ((k[c + 1] & 0x03) == 0x01)
+                      | ((up[c] & 0x0c) == 0x0c) | ((dn[c] & 0x0c) == 0x04)
+                      | ((up[c - 1] & 0x30) == 0x30) | ((dn[c + 1] & 0x30) == 0x10)
+                      | ((up[c + 1] & 0xc0) == 0xc0) | ((dn[c - 1] & 0xc0) == 0x40);
+        cand[c] = (uint8_t)v;
+    }
+}
+
+/* the test of a usable candidate cell (tofg_candidate) */
+static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
 {
     const ptrdiff_t C = p->C, N = p->R * p->C, m = r * C + c;
-    if (!p->usable[m] || !tofg_candidate(p, code, r, c)) return;
     /* the two sides among the usable 8-neighbours: split at the middle of the depths */
     const double dm = p->depth[m];
     double lo = dm, hi = dm;
@@ -804,11 +889,27 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
     (void)nth;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t r = 0; r < R; r++)
-        for (ptrdiff_t c = 0; c < C; c++) tofg_fly_cell(&p, code, r, c);
+    int bad = 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth) reduction(|:bad)
+#endif
+    {
+        uint8_t *cand = malloc((size_t)(C > 0 ? C : 1));
+        bad |= !cand;
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t r = 0; r < R; r++) {
+            if (!cand) continue;
+            tofg_cand_row(&p, code, r, cand);
+            const uint8_t *u = usable + r * C;
+            for (ptrdiff_t c = 0; c < C; c++)
+                if ((u[c] != 0) & cand[c]) tofg_fly_cell(&p, r, c);
+        }
+        free(cand);
+    }
     free(code);
-    return RGBZ_OK;
+    return bad ? RGBZ_ENOMEM : RGBZ_OK;
 }
 
 /* ------------------------------------------------------------------ upsampling */
@@ -977,68 +1078,94 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
     }
 }
 
-/* a node as the pixel loop reads it: colour (scaled), prior, depth, sigma in one 32-byte
-   record, so the four nodes of a pixel are two cache lines */
-typedef struct {
-    float c0, c1, c2, prior;
-    double depth, sigma;
-} tofg_node;
+/* pixels per chunk of the pixel loop (tofg_up_span) */
+#define TOFG_UPB 64
 
-/* the 4 nodes around the pixel, bilinear weights (the filled nodes at their prior): the rule
-   of tofg_up_mode, written out for four candidates; NaN where the heaviest node has no depth
-   (a veto node) or the nodes outside the chosen surface hold more than `ambiguity` of the
-   weight (the colour cannot say which surface the pixel is on); a node counts as off it when
-   its depth lies more than max(gap, the mean's tolerance) from the chosen one, or it has none
-   (a slanted surface's nodes differ by more than the tolerance without being another
-   surface) */
-static inline void tofg_up_pixel(const tofg_node *nodes, const tofg_up_args *p, float ambiguity,
-                                 double gap, ptrdiff_t r, float fy, ptrdiff_t c, float fx,
-                                 const float *pc,
-                                 float *out, float *conf)
+/* The pixels x0 .. x0 + n - 1 (n <= TOFG_UPB) of a row of pixels between grid rows r and r + 1
+   (r at the last) at fraction fy, colours pc[ch][j] (scaled): each takes the 4 nodes around it
+   with bilinear weights (the filled nodes at their prior), the rule of tofg_up_mode written
+   out for four candidates; NaN where the heaviest node has no depth (a veto node) or the
+   nodes outside the chosen surface hold more than `ambiguity` of the weight (the colour
+   cannot say which surface the pixel is on); a node counts as off it when its depth lies
+   more than max(gap, the mean's tolerance) from the chosen one, or it has none (a slanted
+   surface's nodes differ by more than the tolerance without being another surface).
+   Branch-free, in two loops over the pixels that vectorise (the nodes by gathers): the
+   weights and the heaviest node in float, then the mean and the ambiguity in double; every
+   weight, sum and comparison is the scalar rule's, in its order (a node without weight adds
+   exact zeros). */
+RGBZ_CLONES_512 static void tofg_up_span(const tofg_up_args *p, float ambiguity, double gap,
+                                         ptrdiff_t r, float fy, const int32_t *restrict cx,
+                                         const float *restrict fx, ptrdiff_t x0, ptrdiff_t n,
+                                         float pc[3][TOFG_UPB], float *restrict out,
+                                         float *restrict conf)
 {
-    const ptrdiff_t r1 = r + 1 < p->R ? r + 1 : r, c1 = c + 1 < p->C ? c + 1 : c;
-    const tofg_node *nd[4] = {nodes + r * p->C + c, nodes + r * p->C + c1,
-                              nodes + r1 * p->C + c, nodes + r1 * p->C + c1};
-    const float ws[4] = {(1.0f - fy) * (1.0f - fx), (1.0f - fy) * fx, fy * (1.0f - fx),
-                         fy * fx};
-    float w[4], best = 0.0f;
-    int kb = -1;
-    for (int k = 0; k < 4; k++) {
-        const float pr = nd[k]->prior * ws[k];
-        w[k] = 0.0f;
-        if (!(pr > 0.0f)) continue;       /* on a grid line (Mask1: 3 pixels in 4) or a hole */
-        const float t0 = pc[0] - nd[k]->c0, t1 = pc[1] - nd[k]->c1, t2 = pc[2] - nd[k]->c2;
-        const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;
-        const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * p->inv2hc2);
-        w[k] = pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN);
-        if (w[k] > best) { best = w[k]; kb = k; }
-    }
-    if (kb < 0 || nd[kb]->depth != nd[kb]->depth) {
-        *out = NAN;
-        *conf = 0.0f;
-        return;
-    }
-    const double db = nd[kb]->depth;
-    double tol = p->tol_k * nd[kb]->sigma;
-    tol = tol > p->tol_min ? tol : p->tol_min;
-    const double off = gap > tol ? gap : tol;
-    double num = 0.0, den = 0.0, other = 0.0;
-    for (int k = 0; k < 4; k++) {
-        const double d = nd[k]->depth;
-        if (w[k] > 0.0f && fabs(d - db) <= tol) {
-            num += w[k] * d;
-            den += w[k];
-        } else if (!(fabs(d - db) <= off)) {           /* true for a veto node's NaN */
-            other += w[k];
+    /* the nodes by their column (int32: gathers of 32-bit indices vectorise) in the rows of
+       the two grid lines; dr: the second line's offset from the first (0 at the last) */
+    const ptrdiff_t C = p->C, N = p->R * C, r1 = r + 1 < p->R ? r + 1 : r;
+    const int32_t dr = (int32_t)((r1 - r) * C);
+    const float *restrict pr0 = p->prior + r * C, *restrict pr1 = p->prior + r1 * C;
+    const float *restrict a0 = p->col + r * C, *restrict a1 = a0 + N, *restrict a2 = a1 + N;
+    const float *restrict b0 = p->col + r1 * C, *restrict b1 = b0 + N, *restrict b2 = b1 + N;
+    const double *restrict d0 = p->depth + r * C, *restrict d1 = p->depth + r1 * C;
+    const double *restrict sg0 = p->sigma + r * C;
+    const float ihc = p->inv2hc2, gy = 1.0f - fy;
+    const double tol_k = p->tol_k, tol_min = p->tol_min;
+    float w0[TOFG_UPB], w1[TOFG_UPB], w2[TOFG_UPB], w3[TOFG_UPB];
+    int32_t kb[TOFG_UPB], ca[TOFG_UPB], cb[TOFG_UPB];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const int32_t c = cx[x0 + j], c1 = c + 1 < C ? c + 1 : c;
+        ca[j] = c;
+        cb[j] = c1;
+        const float f = fx[x0 + j], g = 1.0f - f;
+        const float q0 = pc[0][j], q1 = pc[1][j], q2 = pc[2][j];
+        float wk[4];
+        /* the weight of node k: spatial ws times its prior times the colour weight; none on
+           a grid line (Mask1: 3 pixels in 4) nor from a hole */
+#define TOFG_UP_W(k, ws, prv, e0, e1, e2, i)                                                  \
+        {                                                                                      \
+            const float pr = prv[i] * (ws);                                                    \
+            const float t0 = q0 - e0[i], t1 = q1 - e1[i], t2 = q2 - e2[i];                     \
+            const float chi = (t0 * t0 + t1 * t1) + t2 * t2 - 3.0f;                            \
+            const float wc = tofg_exp_neg((chi > 0.0f ? chi : 0.0f) * ihc);                    \
+            wk[k] = pr > 0.0f ? pr * (wc > TOFG_WC_MIN ? wc : TOFG_WC_MIN) : 0.0f;            \
         }
+        TOFG_UP_W(0, gy * g, pr0, a0, a1, a2, c)
+        TOFG_UP_W(1, gy * f, pr0, a0, a1, a2, c1)
+        TOFG_UP_W(2, fy * g, pr1, b0, b1, b2, c)
+        TOFG_UP_W(3, fy * f, pr1, b0, b1, b2, c1)
+#undef TOFG_UP_W
+        float best = 0.0f;
+        int32_t kbest = -1;
+        for (int k = 0; k < 4; k++) {
+            kbest = wk[k] > best ? k : kbest;
+            best = wk[k] > best ? wk[k] : best;
+        }
+        w0[j] = wk[0];
+        w1[j] = wk[1];
+        w2[j] = wk[2];
+        w3[j] = wk[3];
+        kb[j] = kbest;
     }
-    if (other > ambiguity * (den + other)) {
-        *out = NAN;
-        *conf = 0.0f;
-        return;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        const int32_t k = kb[j], c = ca[j], c1 = cb[j];
+        const double dk[4] = {d0[c], d0[c1], d1[c], d1[c1]};
+        const float wk[4] = {w0[j], w1[j], w2[j], w3[j]};
+        const double db = (k & 2) ? ((k & 1) ? dk[3] : dk[2]) : ((k & 1) ? dk[1] : dk[0]);
+        double tol = tol_k * sg0[((k & 2) ? dr : 0) + ((k & 1) ? c1 : c)];
+        tol = tol > tol_min ? tol : tol_min;
+        const double off = gap > tol ? gap : tol;
+        double num = 0.0, den = 0.0, other = 0.0;
+        for (int q = 0; q < 4; q++) {
+            const double d = dk[q], wq = wk[q], e = fabs(d - db);
+            const int in = (wk[q] > 0.0f) & (e <= tol);
+            num += in ? wq * d : 0.0;
+            den += in ? wq : 0.0;
+            other += (!in & !(e <= off)) ? wq : 0.0;        /* true for a veto node's NaN */
+        }
+        const int none = (k < 0) | (db != db) | (other > ambiguity * (den + other));
+        out[x0 + j] = none ? NAN : (float)(num / den);
+        conf[x0 + j] = none ? 0.0f : (float)den;          /* the bilinear weights sum to 1 */
     }
-    *out = (float)(num / den);
-    *conf = (float)den;                               /* the bilinear weights sum to 1 */
 }
 
 /* ------------------------------------------------------------------ the element types */

@@ -15,6 +15,43 @@
 #error "tof_guided.template.h: #define IS (the suffix of IN_T: u8, u16, f32 or f64)"
 #endif
 
+/* the measurements [b0, b0 + nb) (nb <= 256) of the prepare stage: a clone per instruction
+   set, so that the loops over the measurements vectorise at its width */
+RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
+    const IN_T *restrict taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t b0, ptrdiff_t nb, double k,
+    double black, double const_var, double prnu, double white, double inv_f,
+    float *restrict zr, float *restrict zi, float *restrict v, uint8_t *restrict sat,
+    double *restrict offset)
+{
+    double acc[256];
+    uint8_t hit[256];
+    for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
+                *A3 = A0 + 3 * N;
+        float *pr = zr + f * N + b0, *pi = zi + f * N + b0;
+        double *po = offset ? offset + f * N + b0 : NULL;
+        for (ptrdiff_t j = 0; j < nb; j++) {
+            const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
+            pr[j] = (float)(a0 - a2);
+            pi[j] = (float)(a3 - a1);
+            const double off = 0.25 * ((a0 + a1) + (a2 + a3));
+            if (po) po[j] = off;
+            double held = off - black;
+            held = held > 0.0 ? held : 0.0;
+            const double ph = prnu * held;
+            acc[j] += k * held + const_var + ph * ph;
+            const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
+            const double mx = m01 > m23 ? m01 : m23;
+            hit[j] |= (uint8_t)(mx >= white);
+        }
+    }
+    for (ptrdiff_t j = 0; j < nb; j++) {
+        v[b0 + j] = (float)(acc[j] * inv_f);
+        sat[b0 + j] |= hit[j];
+    }
+}
+
 /* the prepare stage of rgbz_tofg_prepare (tof_guided.h) for taps of IN_T */
 static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N, double gain,
                                       double black, double supp, double const_var, double prnu,
@@ -27,35 +64,9 @@ static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR
-    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256) {
-        const ptrdiff_t nb = N - b0 < 256 ? N - b0 : 256;
-        double acc[256];
-        uint8_t hit[256];
-        for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }
-        for (ptrdiff_t f = 0; f < F; f++) {
-            const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
-                    *A3 = A0 + 3 * N;
-            float *pr = zr + f * N + b0, *pi = zi + f * N + b0;
-            for (ptrdiff_t j = 0; j < nb; j++) {
-                const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
-                pr[j] = (float)(a0 - a2);
-                pi[j] = (float)(a3 - a1);
-                const double off = 0.25 * ((a0 + a1) + (a2 + a3));
-                if (offset) offset[f * N + b0 + j] = off;
-                double held = off - black;
-                held = held > 0.0 ? held : 0.0;
-                const double ph = prnu * held;
-                acc[j] += k * held + const_var + ph * ph;
-                const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
-                const double mx = m01 > m23 ? m01 : m23;
-                hit[j] |= (uint8_t)(mx >= white);
-            }
-        }
-        for (ptrdiff_t j = 0; j < nb; j++) {
-            v[b0 + j] = (float)(acc[j] * inv_f);
-            sat[b0 + j] |= hit[j];
-        }
-    }
+    for (ptrdiff_t b0 = 0; b0 < N; b0 += 256)
+        RGBZ_CAT(tofg_prepare_block, IS)(taps, F, N, b0, N - b0 < 256 ? N - b0 : 256, k, black,
+                                         const_var, prnu, white, inv_f, zr, zi, v, sat, offset);
     return RGBZ_OK;
 }
 
@@ -97,6 +108,28 @@ static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W
     return RGBZ_OK;
 }
 
+/* the pixels of row y of a guide of IN_T (scales s[3]) between grid rows r and r + 1 at
+   fraction fy, span by span (tofg_up_span) */
+RGBZ_CLONES_512 static void RGBZ_CAT(tofg_up_row, IS)(const tofg_up_args *p, const IN_T *guide,
+                                                      ptrdiff_t W, ptrdiff_t y, const float *s,
+                                                      float ambiguity, double gap, ptrdiff_t r,
+                                                      float fy, const int32_t *cx,
+                                                      const float *fx, float *out, float *conf)
+{
+    const float s0 = s[0], s1 = s[1], s2 = s[2];
+    for (ptrdiff_t x0 = 0; x0 < W; x0 += TOFG_UPB) {
+        const ptrdiff_t n = W - x0 < TOFG_UPB ? W - x0 : TOFG_UPB;
+        const IN_T *restrict g = guide + (y * W + x0) * 3;
+        float pc[3][TOFG_UPB];
+        for (ptrdiff_t j = 0; j < n; j++) {
+            pc[0][j] = (float)g[3 * j] * s0;
+            pc[1][j] = (float)g[3 * j + 1] * s1;
+            pc[2][j] = (float)g[3 * j + 2] * s2;
+        }
+        tofg_up_span(p, ambiguity, gap, r, fy, cx, fx, x0, n, pc, out + y * W, conf + y * W);
+    }
+}
+
 /* the upsampling of rgbz_tofg_upsample for a guide of IN_T */
 static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
                                        double scale, const double *cscale, const double *depth,
@@ -109,10 +142,11 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
 {
     if (!guide || !cscale || !depth || !sigma || !col || !rc || !cc || !out || !conf
         || H < 0 || W < 0 || R < 1 || C < 1 || !(spacing > 0.0) || reach < 1 || reach > 4
-        || !(own_k >= 0.0) || !(ambiguity >= 0.0) || !(gap >= 0.0))
+        || !(own_k >= 0.0) || !(ambiguity >= 0.0) || !(gap >= 0.0)
+        || C > INT32_MAX / 2)                   /* tofg_up_span's 32-bit node indices */
         return RGBZ_EINVAL;
     const ptrdiff_t N = R * C;
-    ptrdiff_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);
+    int32_t *cx = malloc((size_t)(W > 0 ? W : 1) * sizeof *cx);
     float *fx = malloc((size_t)(W > 0 ? W : 1) * sizeof *fx);
     float *prior0 = malloc((size_t)N * sizeof *prior0), *prior = malloc((size_t)N * sizeof *prior);
     double *fd = malloc((size_t)N * sizeof *fd), *fs = malloc((size_t)N * sizeof *fs);
@@ -120,7 +154,11 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
         free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
         return RGBZ_ENOMEM;
     }
-    for (ptrdiff_t x = 0; x < W; x++) tofg_bracket(cc, C, (double)x, cx + x, fx + x);
+    for (ptrdiff_t x = 0; x < W; x++) {
+        ptrdiff_t c;
+        tofg_bracket(cc, C, (double)x, &c, fx + x);
+        cx[x] = (int32_t)c;
+    }
     for (ptrdiff_t m = 0; m < N; m++) prior0[m] = depth[m] == depth[m] ? 1.0f : 0.0f;
     const tofg_up_args p0 = {depth, sigma, col, prior0, R, C, rc, cc, spacing,
                              (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};
@@ -128,36 +166,25 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
     (void)nth;
     float sw[9 * 9];                           /* reach <= 4 */
     const float *swp = tofg_fill_table(&p0, reach, sw) ? sw : NULL;
-    RGBZ_PARALLEL_FOR
+    /* dynamic: the holes, whose fill is most of the work, cluster in dark regions */
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 8) num_threads(nth)
+#endif
     for (ptrdiff_t r = 0; r < R; r++)
         for (ptrdiff_t c = 0; c < C; c++)
             tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, fd, fs, prior);
     const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
                             (float)inv2hc2, (float)tol_k, (float)tol_min};
-    tofg_node *nodes = malloc((size_t)N * sizeof *nodes);
-    if (!nodes) {
-        free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
-        return RGBZ_ENOMEM;
-    }
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t m = 0; m < N; m++) {
-        const tofg_node nm = {col[m], col[N + m], col[2 * N + m], prior[m], fd[m], fs[m]};
-        nodes[m] = nm;
-    }
-    const float s0 = (float)(scale * cscale[0]), s1 = (float)(scale * cscale[1]),
-                s2 = (float)(scale * cscale[2]);
+    const float s[3] = {(float)(scale * cscale[0]), (float)(scale * cscale[1]),
+                        (float)(scale * cscale[2])};
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t y = 0; y < H; y++) {
         ptrdiff_t r;
         float fy;
         tofg_bracket(rc, R, (double)y, &r, &fy);
-        for (ptrdiff_t x = 0; x < W; x++) {
-            const IN_T *g = guide + (y * W + x) * 3;
-            const float pc[3] = {(float)g[0] * s0, (float)g[1] * s1, (float)g[2] * s2};
-            tofg_up_pixel(nodes, &p, (float)ambiguity, gap, r, fy, cx[x], fx[x], pc,
-                          out + y * W + x, conf + y * W + x);
-        }
+        RGBZ_CAT(tofg_up_row, IS)(&p, guide, W, y, s, (float)ambiguity, gap, r, fy, cx, fx,
+                                  out, conf);
     }
-    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs); free(nodes);
+    free(cx); free(fx); free(prior0); free(prior); free(fd); free(fs);
     return RGBZ_OK;
 }

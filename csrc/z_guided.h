@@ -10,14 +10,13 @@
  *   res = sum_t w[t][b] x_t + base * (sum_{m<9} g[b][m] c_m - g[b][9])
  *         + g[b][9] c_9 + g[b][10] c_10,
  * where base is the mean of the phase's baseline taps (the target colour in the 5x5
- * window), and c (per phase and cell: the guide features of the NumPy path without their
- * factor base, share * u_m for m < 9, mean C + a u_0 and a u_0 - (C_0 - mean C)) and the
- * noise level of each cell come from the Python layer: they depend on the 3x3 Z pixels
- * around the cell only, one value per tile and not per site. The cell of the site at
- * (y, x) is (y / py, x / px).
+ * window), and c (per target colour and cell: the guide features of the NumPy path without
+ * their factor base, share * u_m for m < 9, mean C + a u_0 and a u_0 - (C_0 - mean C)) and
+ * the noise level of each cell depend on the 3x3 Z pixels around the cell only: the kernel
+ * computes them once per tile row and target colour (stated below), in the rows it
+ * reconstructs. The cell of the site at (y, x) is (y / py, x / px).
  *
- * Entry points are typed (one per element type of the frame, suffix u8, u16, f32, f64);
- * precision RGBZ_P_FLOAT32 or RGBZ_P_FLOAT64 chooses the arithmetic and the weights.
+ * rgbz_zguided_guide gives the amplitude grid and its variance from the ToF taps.
  */
 #ifndef RGBZ_Z_GUIDED_H
 #define RGBZ_Z_GUIDED_H
@@ -39,66 +38,63 @@ typedef struct {
     int32_t n_base_max;        /* row length of base_idx */
     const int32_t *n_base;     /* [n_phases]: baseline taps of the phase */
     const int32_t *base_idx;   /* [n_phases][n_base_max]: their tap indices */
-    ptrdiff_t gy, gx;          /* the grid of cells (tiles) */
-    const double *cell;        /* [n_phases][gy][gx][RGBZ_ZG_FEATURES] */
-    const int32_t *level;      /* [gy][gx]: the noise level of each cell, 0..n_levels - 1 */
+    /* the guide: the NIR amplitude of every Z pixel and its noise variance, gy x gx (the
+       tile of row iy, column ix holds its Z pixel at (zr + py iy, zc + px ix), block x
+       block sites) */
+    ptrdiff_t gy, gx;
+    const double *grid, *var;
+    const int8_t *chan;        /* [py * px]: the colour code of every site of the tile */
+    int32_t zr, zc, block;
+    const int32_t *targets;    /* [n_phases]: the target colour of each phase, 0..2 */
+    double lam;                /* the regularisation of the local model */
+    const double *thr;         /* [n_levels - 1]: the increasing noise thresholds */
 } rgbz_zguided_filters;
 
 /*
- * Reconstruct every Z site of a rows x cols frame (src, dst: not overlapping; dst fully
- * written: colour sites copied, Z sites clipped to [0, maxval], integer types rounded
- * half up). py, px, phase_map: the pattern period and the phase of each tile site (-1 for a
- * colour site). opcounts: counting build only, n_phases x RGBZ_NOPS counters. Borders: a
+ * rgbz_zguided_<precision> (float32 and float64; the fixed-point precision has none):
+ * reconstruct every Z site of a rows x cols frame of element type in_type (an rgbz_type)
+ * in that precision (its arithmetic and the weights w_<precision>, g_<precision>). src,
+ * dst: not overlapping; dst fully written: colour sites copied, Z sites clipped to
+ * [0, maxval], integer types rounded half up. py, px, phase_map: the pattern period and
+ * the phase of each tile site (-1 for a colour site). opcounts: counting build only,
+ * n_phases x RGBZ_NOPS counters (the cell terms, one per tile, are not counted). Borders: a
  * tap outside the frame moves back inside by whole periods.
  */
-int rgbz_zguided_u8(const uint8_t *src, uint8_t *dst, ptrdiff_t rows, ptrdiff_t cols, int py,
-                    int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
-                    int precision, double maxval, int workers, uint64_t *opcounts);
-int rgbz_zguided_u16(const uint16_t *src, uint16_t *dst, ptrdiff_t rows, ptrdiff_t cols,
-                     int py, int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
-                     int precision, double maxval, int workers, uint64_t *opcounts);
-int rgbz_zguided_f32(const float *src, float *dst, ptrdiff_t rows, ptrdiff_t cols, int py,
-                     int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
-                     int precision, double maxval, int workers, uint64_t *opcounts);
-int rgbz_zguided_f64(const double *src, double *dst, ptrdiff_t rows, ptrdiff_t cols, int py,
-                     int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
-                     int precision, double maxval, int workers, uint64_t *opcounts);
+typedef int rgbz_zguided_fn(int in_type, const void *src, void *dst, ptrdiff_t rows,
+                            ptrdiff_t cols, int py, int px, const int32_t *phase_map,
+                            const rgbz_zguided_filters *f, double maxval, int workers,
+                            uint64_t *opcounts);
+rgbz_zguided_fn rgbz_zguided_f32;
+rgbz_zguided_fn rgbz_zguided_f64;
+
+/* rgbz_zguided_guide: the sites are not the complete Z pixels in row-major order */
+#define RGBZ_ZG_SITES 100
 
 /*
- * The cell terms and noise levels (the `cell` and `level` arrays above) of a frame:
- *   grid, var:  the NIR amplitude of every Z pixel and its noise variance, gy x gx (the
- *               tile of row iy, column ix holds its Z pixel at (zr + py iy, zc + px ix),
- *               block x block sites);
- *   chan:       the colour code of every site of the py x px tile (0 R, 1 G, 2 B, 3 Z);
- *   targets:    the target colour of each of the n_phases phases;
- *   lam, thr:   the regularisation of the local model and the n_thr increasing noise
- *               thresholds.
- * For each phase and tile, with the 3 x 3 Z pixels m around it (clamped to the grid):
- * u_m = N_m / mean N - 1, nu = mean V / (mean N)^2 (0 and 1 where mean N = 0), U = sum u^2,
- * share = U / (U + 9 nu), C_m the mean of the pixels of the target colour in the box of
- * Z pixel m and the two pixels around it (borders: whole periods), a = sum u_m (C_m -
- * mean C) / (U + 9 (lam + nu)): cell = (share u_m (9), mean C + a u_4, a u_4 - (C_4 -
- * mean C)); level = the number of thresholds nu exceeds.
+ * The guide from the ToF taps (F, 4, N) of in_type (an rgbz_type): grid[iy * gx + ix] the
+ * mean over the frequencies of the amplitude (tof.c's, 0.5 |I + iQ|) of the Z pixel of
+ * tile (iy, ix), var the noise variance of that mean,
+ *   sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1))   (0 when F = 1),
+ * r_f the median over the lit sites (mean > 0) of A_f / mean (NumPy's median; 1 when no
+ * site is lit or the median is not > 0). Site n (site_rows[n], site_cols[n]) must be the
+ * Z pixel of tile (n / gxc, n % gxc), N = gyc * gxc: the gyc x gxc complete Z pixels in
+ * row-major order (else RGBZ_ZG_SITES); the other cells of the gy x gx grids are not
+ * written. The result does not depend on workers.
  */
-int rgbz_zguided_cells_u8(const uint8_t *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                          const int8_t *chan, int zr, int zc, int block, const double *grid,
-                          const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
-                          const int32_t *targets, double lam, const double *thr, int n_thr,
-                          double *cell, int32_t *level, int workers);
-int rgbz_zguided_cells_u16(const uint16_t *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                           const int8_t *chan, int zr, int zc, int block, const double *grid,
-                           const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
-                           const int32_t *targets, double lam, const double *thr, int n_thr,
-                           double *cell, int32_t *level, int workers);
-int rgbz_zguided_cells_f32(const float *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                           const int8_t *chan, int zr, int zc, int block, const double *grid,
-                           const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
-                           const int32_t *targets, double lam, const double *thr, int n_thr,
-                           double *cell, int32_t *level, int workers);
-int rgbz_zguided_cells_f64(const double *src, ptrdiff_t rows, ptrdiff_t cols, int py, int px,
-                           const int8_t *chan, int zr, int zc, int block, const double *grid,
-                           const double *var, ptrdiff_t gy, ptrdiff_t gx, int n_phases,
-                           const int32_t *targets, double lam, const double *thr, int n_thr,
-                           double *cell, int32_t *level, int workers);
+int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                       const int64_t *site_rows, const int64_t *site_cols, int py, int px,
+                       int zr, int zc, ptrdiff_t gy, ptrdiff_t gx, ptrdiff_t gyc, ptrdiff_t gxc,
+                       double *grid, double *var, int workers);
+
+/*
+ * The cell terms and the noise level of tile (iy, ix) for a target colour t, with the 3 x 3
+ * Z pixels m around it (clamped to the grid): u_m = N_m / mean N - 1, nu = mean V /
+ * (mean N)^2 (0 and 1 where mean N = 0), U = sum u^2, share = U / (U + 9 nu), C_m the mean
+ * of the pixels of colour t in the box of Z pixel m and the two pixels around it (borders:
+ * whole periods), a = sum u_m (C_m - mean C) / (U + 9 (lam + nu)): cell = (share u_m (9),
+ * mean C + a u_4, a u_4 - (C_4 - mean C)); level = the number of thresholds nu exceeds.
+ * Every sum runs in the order of m (row-major), as reconstruction/_z_guided.py's
+ * cell_terms, in double.
+ */
 
 #endif /* RGBZ_Z_GUIDED_H */

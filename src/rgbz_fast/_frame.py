@@ -387,7 +387,9 @@ class ToFTaps:
         freqs = check_frequencies(self.frequencies, "frequencies", unique=True)
         if freqs.shape != (F,):
             raise ValueError(f"frequencies: expected {F} values, got shape {freqs.shape}")
-        rows, cols = check_sites(self.sites, "sites")
+        adopted = isinstance(self.sites, _Adopt)
+        rows, cols = check_sites(self.sites.array if adopted else self.sites, "sites",
+                                 copy=not adopted)
         per_site = {k: _owned(getattr(self, k), k) for k in ("depth_true", "valid",
                                                              "saturated")}
         for name, a in (("sites", rows), ("sites", cols), *per_site.items()):

@@ -79,12 +79,12 @@ def z_guided(src: np.ndarray, dst: np.ndarray, precision: int, py: int, px: int,
              inv_col: np.ndarray, str_thr: np.ndarray, coh_thr2: np.ndarray,
              spr_thr: np.ndarray, radius: int, hash_radius: int, w_f32: np.ndarray,
              w_f64: np.ndarray, g_f32: np.ndarray, g_f64: np.ndarray, n_base: np.ndarray,
-             base_idx: np.ndarray, cell: np.ndarray, level: np.ndarray, maxval: float,
-             workers: int, opcounts: np.ndarray | None = ...) -> None: ...
-def z_guided_cells(src: np.ndarray, py: int, px: int, chan: np.ndarray, zr: int, zc: int,
-                   block: int, grid: np.ndarray, var: np.ndarray, targets: np.ndarray,
-                   lam: float, thr: np.ndarray, cell: np.ndarray, level: np.ndarray,
-                   workers: int) -> None: ...
+             base_idx: np.ndarray, grid: np.ndarray, var: np.ndarray, chan: np.ndarray,
+             zr: int, zc: int, block: int, targets: np.ndarray, lam: float, thr: np.ndarray,
+             maxval: float, workers: int, opcounts: np.ndarray | None = ...) -> None: ...
+def z_guided_guide(taps: np.ndarray, site_rows: np.ndarray, site_cols: np.ndarray, py: int,
+                   px: int, zr: int, zc: int, gyc: int, gxc: int, grid: np.ndarray,
+                   var: np.ndarray, workers: int) -> bool: ...
 def demosaic_malvar(src: np.ndarray, dst: np.ndarray, phase: np.ndarray, mode: int,
                     workers: int) -> None: ...
 def tof_demodulate(taps: np.ndarray, phase: np.ndarray, amp: np.ndarray, offset: np.ndarray,

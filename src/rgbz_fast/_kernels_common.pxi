@@ -194,9 +194,42 @@ cdef int _raise_for(int status) except -1:
     raise RuntimeError(f"C kernel failed with status {status}")
 
 
+cdef extern from "z_guided.h" nogil:
+    ctypedef struct rgbz_zguided_filters:
+        const rgbz_learned_filters *hash
+        int32_t n_levels
+        const float *w_f32
+        const double *w_f64
+        const float *g_f32
+        const double *g_f64
+        int32_t n_base_max
+        const int32_t *n_base
+        const int32_t *base_idx
+        Py_ssize_t gy, gx
+        const double *grid
+        const double *var
+        const int8_t *chan
+        int32_t zr, zc, block
+        const int32_t *targets
+        double lam
+        const double *thr
+    ctypedef int rgbz_zguided_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
+                                 Py_ssize_t cols, int py, int px, const int32_t *phase_map,
+                                 const rgbz_zguided_filters *f, double maxval, int workers,
+                                 uint64_t *opcounts) noexcept
+    rgbz_zguided_fn rgbz_zguided_f32
+    rgbz_zguided_fn rgbz_zguided_f64
+    int RGBZ_ZG_SITES
+    int rgbz_zguided_guide(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                           const int64_t *site_rows, const int64_t *site_cols, int py, int px,
+                           int zr, int zc, Py_ssize_t gy, Py_ssize_t gx, Py_ssize_t gyc,
+                           Py_ssize_t gxc, double *grid, double *var, int workers)
+
+
 ctypedef struct _precision_kernels:
     rgbz_reconstruct_fn *reconstruct
     rgbz_learned_fn *learned
+    rgbz_zguided_fn *zguided
 
 
 cdef _precision_kernels _kernels_of(int precision) except *:
@@ -205,12 +238,15 @@ cdef _precision_kernels _kernels_of(int precision) except *:
     cdef _precision_kernels k
     if precision == RGBZ_P_FLOAT32:
         k.reconstruct, k.learned = rgbz_reconstruct_f32, rgbz_learned_f32
+        k.zguided = rgbz_zguided_f32
     elif precision == RGBZ_P_FLOAT64:
         k.reconstruct, k.learned = rgbz_reconstruct_f64, rgbz_learned_f64
+        k.zguided = rgbz_zguided_f64
     elif precision == RGBZ_P_FIXED:
         # the integer streaming model (hw_recon.h): no learned filters yet, and nothing the
         # counting build counts (its operations are rgbz_fast.hardware's, from the plans)
         k.reconstruct, k.learned = rgbz_reconstruct_fixed, NULL
+        k.zguided = NULL
         if rgbz_counting_build():
             k.reconstruct = NULL
     else:
@@ -392,57 +428,6 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     _raise_for(status)
 
 
-cdef extern from "z_guided.h" nogil:
-    ctypedef struct rgbz_zguided_filters:
-        const rgbz_learned_filters *hash
-        int32_t n_levels
-        const float *w_f32
-        const double *w_f64
-        const float *g_f32
-        const double *g_f64
-        int32_t n_base_max
-        const int32_t *n_base
-        const int32_t *base_idx
-        Py_ssize_t gy, gx
-        const double *cell
-        const int32_t *level
-    int rgbz_zguided_u8(const uint8_t *src, uint8_t *dst, Py_ssize_t rows, Py_ssize_t cols,
-                        int py, int px, const int32_t *phase_map, const rgbz_zguided_filters *f,
-                        int precision, double maxval, int workers, uint64_t *opcounts)
-    int rgbz_zguided_u16(const uint16_t *src, uint16_t *dst, Py_ssize_t rows, Py_ssize_t cols,
-                         int py, int px, const int32_t *phase_map,
-                         const rgbz_zguided_filters *f, int precision, double maxval,
-                         int workers, uint64_t *opcounts)
-    int rgbz_zguided_f32(const float *src, float *dst, Py_ssize_t rows, Py_ssize_t cols,
-                         int py, int px, const int32_t *phase_map,
-                         const rgbz_zguided_filters *f, int precision, double maxval,
-                         int workers, uint64_t *opcounts)
-    int rgbz_zguided_f64(const double *src, double *dst, Py_ssize_t rows, Py_ssize_t cols,
-                         int py, int px, const int32_t *phase_map,
-                         const rgbz_zguided_filters *f, int precision, double maxval,
-                         int workers, uint64_t *opcounts)
-    int rgbz_zguided_cells_u8(const uint8_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                              const int8_t *chan, int zr, int zc, int block, const double *grid,
-                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
-                              const int32_t *targets, double lam, const double *thr, int n_thr,
-                              double *cell, int32_t *level, int workers)
-    int rgbz_zguided_cells_u16(const uint16_t *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                              const int8_t *chan, int zr, int zc, int block, const double *grid,
-                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
-                              const int32_t *targets, double lam, const double *thr, int n_thr,
-                              double *cell, int32_t *level, int workers)
-    int rgbz_zguided_cells_f32(const float *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                              const int8_t *chan, int zr, int zc, int block, const double *grid,
-                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
-                              const int32_t *targets, double lam, const double *thr, int n_thr,
-                              double *cell, int32_t *level, int workers)
-    int rgbz_zguided_cells_f64(const double *src, Py_ssize_t rows, Py_ssize_t cols, int py, int px,
-                              const int8_t *chan, int zr, int zc, int block, const double *grid,
-                              const double *var, Py_ssize_t gy, Py_ssize_t gx, int n_phases,
-                              const int32_t *targets, double lam, const double *thr, int n_thr,
-                              double *cell, int32_t *level, int workers)
-
-
 # ---------------------------------------------------------------------- z_guided (z_guided.c)
 def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int py, int px,
              const int32_t[::1] phase_map, const int32_t[::1] n_taps,
@@ -454,19 +439,25 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
              int hash_radius, const float[:, :, ::1] w_f32, const double[:, :, ::1] w_f64,
              const float[:, :, ::1] g_f32, const double[:, :, ::1] g_f64,
              const int32_t[::1] n_base, const int32_t[:, ::1] base_idx,
-             const double[:, :, :, ::1] cell, const int32_t[:, ::1] level, double maxval,
-             int workers, uint64_t[::1] opcounts=None):
+             const double[:, ::1] grid, const double[:, ::1] var, const int8_t[::1] chan,
+             int zr, int zc, int block, const int32_t[::1] targets, double lam,
+             const double[::1] thr, double maxval, int workers, uint64_t[::1] opcounts=None):
     """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
     ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
     (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
-    n_buckets, 11), the baseline taps (n_phases,) and (n_phases, n_base_max), the cell
-    features (n_phases, gy, gx, 11) and noise levels (gy, gx). ``opcounts``: as for
-    ``learned``."""
+    n_buckets, 11), the baseline taps (n_phases,) and (n_phases, n_base_max); the guide: the
+    amplitude grid and its variance (gy, gx), the colour codes of the tile (py * px), the Z
+    pixel's corner and size, the target colour of each phase, the regularisation and the
+    n_levels - 1 noise thresholds. ``opcounts``: as for ``learned``."""
     cdef int status
     cdef rgbz_learned_filters h
     cdef rgbz_zguided_filters f
     cdef double zero = 0.0
     cdef Py_ssize_t n_ph = w_f32.shape[0]
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef rgbz_zguided_fn *kernel = _kernels_of(precision).zguided
+    if kernel == NULL:
+        raise ValueError(f"precision: z_guided has no kernel in precision code {precision}")
     if (n_taps.shape[0] != n_ph or tap_dy.shape[0] != n_ph or tap_dx.shape[0] != n_ph
             or n_pairs.shape[0] != n_ph or n_pairs.shape[1] != 4 or pair_a.shape[0] != n_ph
             or pair_b.shape[0] != n_ph or pair_a.shape[1] != 4 or pair_b.shape[1] != 4
@@ -480,8 +471,9 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
             or g_f32.shape[0] != n_ph or g_f64.shape[0] != n_ph
             or g_f32.shape[1] != w_f32.shape[2] or g_f64.shape[1] != w_f32.shape[2]
             or g_f32.shape[2] != 11 or g_f64.shape[2] != 11 or n_base.shape[0] != n_ph
-            or base_idx.shape[0] != n_ph or cell.shape[0] != n_ph or cell.shape[3] != 11
-            or cell.shape[1] != level.shape[0] or cell.shape[2] != level.shape[1]
+            or base_idx.shape[0] != n_ph or targets.shape[0] != n_ph
+            or var.shape[0] != grid.shape[0] or var.shape[1] != grid.shape[1]
+            or chan.shape[0] != py * px
             or dst.shape[0] != src.shape[0] or dst.shape[1] != src.shape[1]
             or phase_map.shape[0] != py * px):
         raise ValueError("z_guided: inconsistent filter arrays")
@@ -491,7 +483,7 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     h.n_coh = coh_thr2.shape[1] + 1
     h.n_spr = spr_thr.shape[1] + 1
     h.n_buckets = 8 * h.n_str * h.n_coh * h.n_spr
-    if w_f32.shape[2] % h.n_buckets:
+    if w_f32.shape[2] % h.n_buckets or thr.shape[0] + 1 != w_f32.shape[2] // h.n_buckets:
         raise ValueError("z_guided: the weights' buckets are not levels x hash buckets")
     h.n_pairs_max = pair_a.shape[2]
     h.radius = radius
@@ -522,67 +514,44 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     f.n_base_max = base_idx.shape[1]
     f.n_base = &n_base[0]
     f.base_idx = &base_idx[0, 0]
-    f.gy = level.shape[0]
-    f.gx = level.shape[1]
-    f.cell = &cell[0, 0, 0, 0]
-    f.level = &level[0, 0]
+    f.gy = grid.shape[0]
+    f.gx = grid.shape[1]
+    f.grid = &grid[0, 0]
+    f.var = &var[0, 0]
+    f.chan = &chan[0]
+    f.zr = zr
+    f.zc = zc
+    f.block = block
+    f.targets = &targets[0]
+    f.lam = lam
+    f.thr = &thr[0] if thr.shape[0] else &zero
     cdef uint64_t *counts = _counters(opcounts, n_ph * RGBZ_NOPS)
     with nogil:
-        if frame_t is uint8_t:
-            status = rgbz_zguided_u8(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
-                                     &phase_map[0], &f, precision, maxval, workers, counts)
-        elif frame_t is uint16_t:
-            status = rgbz_zguided_u16(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
-                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
-        elif frame_t is float:
-            status = rgbz_zguided_f32(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
-                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
-        else:
-            status = rgbz_zguided_f64(&src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py,
-                                      px, &phase_map[0], &f, precision, maxval, workers, counts)
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &phase_map[0], &f, maxval, workers, counts)
     _raise_for(status)
 
 
-def z_guided_cells(const frame_t[:, ::1] src, int py, int px, const int8_t[::1] chan, int zr,
-                   int zc, int block, const double[:, ::1] grid, const double[:, ::1] var,
-                   const int32_t[::1] targets, double lam, const double[::1] thr,
-                   double[:, :, :, ::1] cell, int32_t[:, ::1] level, int workers):
-    """The cell terms (n_phases, gy, gx, 11) and noise levels (gy, gx) of z_guided
-    (csrc/z_guided.h) from the frame, the amplitude grid and its variance (gy, gx), the
-    colour codes of the tile (py * px), the Z pixel's corner and size, the target colour of
-    each phase, the regularisation and the noise thresholds."""
+def z_guided_guide(const frame_t[:, :, ::1] taps, const int64_t[::1] site_rows,
+                   const int64_t[::1] site_cols, int py, int px, int zr, int zc,
+                   Py_ssize_t gyc, Py_ssize_t gxc, double[:, ::1] grid, double[:, ::1] var,
+                   int workers):
+    """The guide of z_guided from ToF taps (F, 4, N) (csrc/z_guided.h, rgbz_zguided_guide):
+    the mean amplitude and its noise variance of the gyc x gxc complete Z pixels into
+    ``grid`` and ``var`` (gy, gx). True when done; False when the sites are not those Z
+    pixels in row-major order (nothing is then meaningful in the grids)."""
     cdef int status
-    cdef double zero = 0.0
-    cdef const double *thr_p = &thr[0] if thr.shape[0] else &zero
-    if (var.shape[0] != grid.shape[0] or var.shape[1] != grid.shape[1]
-            or level.shape[0] != grid.shape[0] or level.shape[1] != grid.shape[1]
-            or cell.shape[0] != targets.shape[0] or cell.shape[1] != grid.shape[0]
-            or cell.shape[2] != grid.shape[1] or cell.shape[3] != 11
-            or chan.shape[0] != py * px or targets.shape[0] == 0):
-        raise ValueError("z_guided_cells: inconsistent arrays")
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if (site_rows.shape[0] != taps.shape[2] or site_cols.shape[0] != taps.shape[2]
+            or taps.shape[1] != 4 or var.shape[0] != grid.shape[0]
+            or var.shape[1] != grid.shape[1] or taps.shape[2] == 0):
+        raise ValueError("z_guided_guide: inconsistent arrays")
     with nogil:
-        if frame_t is uint8_t:
-            status = rgbz_zguided_cells_u8(&src[0, 0], src.shape[0], src.shape[1], py, px,
-                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
-                                             grid.shape[0], grid.shape[1], targets.shape[0],
-                                             &targets[0], lam, thr_p, thr.shape[0],
-                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
-        elif frame_t is uint16_t:
-            status = rgbz_zguided_cells_u16(&src[0, 0], src.shape[0], src.shape[1], py, px,
-                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
-                                             grid.shape[0], grid.shape[1], targets.shape[0],
-                                             &targets[0], lam, thr_p, thr.shape[0],
-                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
-        elif frame_t is float:
-            status = rgbz_zguided_cells_f32(&src[0, 0], src.shape[0], src.shape[1], py, px,
-                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
-                                             grid.shape[0], grid.shape[1], targets.shape[0],
-                                             &targets[0], lam, thr_p, thr.shape[0],
-                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
-        else:
-            status = rgbz_zguided_cells_f64(&src[0, 0], src.shape[0], src.shape[1], py, px,
-                                             &chan[0], zr, zc, block, &grid[0, 0], &var[0, 0],
-                                             grid.shape[0], grid.shape[1], targets.shape[0],
-                                             &targets[0], lam, thr_p, thr.shape[0],
-                                             &cell[0, 0, 0, 0], &level[0, 0], workers)
+        status = rgbz_zguided_guide(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                    &site_rows[0], &site_cols[0], py, px, zr, zc,
+                                    grid.shape[0], grid.shape[1], gyc, gxc, &grid[0, 0],
+                                    &var[0, 0], workers)
+    if status == RGBZ_ZG_SITES:
+        return False
     _raise_for(status)
+    return True

@@ -25,4 +25,4 @@ from rgbz_fast._kernels import rgbz_status as rgbz_status
 from rgbz_fast._kernels import rgbz_type as rgbz_type
 from rgbz_fast._kernels import tof_demodulate as tof_demodulate
 from rgbz_fast._kernels import z_guided as z_guided
-from rgbz_fast._kernels import z_guided_cells as z_guided_cells
+from rgbz_fast._kernels import z_guided_guide as z_guided_guide

@@ -237,10 +237,11 @@ def check_block(block, name="block"):
     return int(block)
 
 
-def check_sites(sites, name="sites"):
+def check_sites(sites, name="sites", copy=True):
     """Measurement sites: a pair (rows, cols) of 1-D integer arrays of one length, >= 0,
-    no site twice; as two int64 arrays. Float indices were truncated, a repeated site made
-    two measurements of one pixel."""
+    no site twice; as two int64 arrays (copies, or with ``copy`` False the arrays themselves
+    when they are int64). Float indices were truncated, a repeated site made two
+    measurements of one pixel."""
     pair = as_list(sites, name, "(rows, cols) arrays of pixel indices")
     if len(pair) != 2:
         raise TypeError(f"{name}: expected (rows, cols), got {len(pair)} arrays")
@@ -256,7 +257,7 @@ def check_sites(sites, name="sites"):
         if arr.size and (arr.min() < 0 or arr.max() >= 1 << 31):
             raise ValueError(f"{name}: {label} span [{arr.min()}, {arr.max()}]; expected "
                              "pixel indices >= 0")
-        out.append(arr.astype(np.int64))
+        out.append(arr.astype(np.int64, copy=copy))
     rows, cols = out
     if rows.shape != cols.shape:
         raise ValueError(f"{name}: expected two arrays of the same shape (n,), got "

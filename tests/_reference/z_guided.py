@@ -6,9 +6,10 @@ the gathered window by :func:`_reference.learned.hash_sites` (an arctangent for 
 orientation, a root and a division for the coherence); the guide features of each site from its own
 Z pixel and the 3 x 3 around it, the colour means from the pixels of the box
 gathered with the border rule of every kernel. The amplitude grid and its noise
-variance (``rgbz_fast.reconstruction._z_guided.guide_grid``, which the tests of the
-amplitude check) and the fitted numbers are read from the library. Arithmetic is
-float64; the result is clipped to [0, maxval] but not rounded.
+variance from the taps: :func:`reference_guide_grid`, from ``ToFTaps.amplitude``
+(the data model's demodulation) in NumPy; the fitted numbers are read from the
+library. Arithmetic is float64; the result is clipped to [0, maxval] but not
+rounded.
 """
 
 from __future__ import annotations
@@ -28,6 +29,40 @@ def _colour_mean(data, chan, t, y0, x0, b, period):
     xx = shift_index(x0[:, None] + dx.ravel()[None, :], data.shape[1], Q)
     keep = chan[yy, xx] == t
     return np.where(keep, data[yy, xx], 0.0).sum(1) / keep.sum(1)
+
+
+def reference_guide_grid(shape, pattern, tof):
+    """The amplitude grid and its noise variance (tile rows, tile columns) from the taps of
+    ``tof``, as docs/guide/z_guided.md states them: the mean over the frequencies of the
+    amplitude, sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1)) with r_f the median over
+    the lit sites of A_f / mean (1 if none lit, or if it is not > 0); a Z pixel cut by the
+    frame's edge takes the values of the last complete row and column."""
+    P, Q = pattern.period
+    z = np.argwhere(pattern.tile == Z)
+    zr, zc = (int(v) for v in z.min(axis=0))
+    b = 1 if len(z) == 1 else 2
+    gy, gx = len(range(zr, shape[0], P)), len(range(zc, shape[1], Q))
+    amp = tof.amplitude("all")
+    mean = amp.mean(axis=0)
+    F = amp.shape[0]
+    var = np.zeros_like(mean)
+    if F > 1:
+        lit = mean > 0
+        ratio = np.median(amp[:, lit] / mean[lit], axis=1) if lit.any() else np.ones(F)
+        norm = amp / np.where(ratio > 0, ratio, 1.0)[:, None]
+        var = ((norm - norm.mean(axis=0)) ** 2).sum(axis=0) / (F * (F - 1))
+    rows, cols = tof.sites
+    iy, ix = (rows - zr) // P, (cols - zc) // Q
+    # the complete Z pixels: the first gyc rows and gxc columns of the grid
+    gyc = len([r for r in range(zr, shape[0], P) if r + b - 1 < shape[0]])
+    gxc = len([c for c in range(zc, shape[1], Q) if c + b - 1 < shape[1]])
+    out = []
+    for values in (mean, var):
+        grid = np.zeros((gy, gx))
+        grid[iy, ix] = values
+        grid = grid[np.minimum(np.arange(gy), gyc - 1)][:, np.minimum(np.arange(gx), gxc - 1)]
+        out.append(grid)
+    return tuple(out)
 
 
 def reference_z_guided(data, filters, grid, var):

@@ -7,7 +7,10 @@ Tolerances (stated here, asserted below):
   C == floor(ref + 0.5) (+-1 at exact .5 ties);
 * float32 precision: within 2e-3 DN of the float64 reference (times the frame's scale in
   DN: 2e-3 of 2047 is float32's rounding of a few terms) at all but MAX_F32_FLIPS of the
-  Z sites: a float32 hash term on a bucket threshold lands in the neighbouring bucket.
+  Z sites: a float32 hash term on a bucket threshold lands in the neighbouring bucket;
+* the guide from the taps (csrc/z_guided_guide.c) equals the NumPy reference's bit for bit
+  (the same float64 operations in the same order, an exact median), for any thread count
+  and any order of the sites.
 """
 
 from __future__ import annotations
@@ -16,9 +19,10 @@ import numpy as np
 import pytest
 
 import rgbz_fast as rz
-from _reference.z_guided import reference_z_guided
+from _reference.z_guided import reference_guide_grid, reference_z_guided
 from rgbz_fast.reconstruction import train, train_z_guided
 from rgbz_fast.reconstruction._z_guided import guide_grid
+from rgbz_fast._frame import ToFTaps
 from rgbz_fast.simulation import Scene, simulate
 
 MAX_F32_FLIPS = 1e-3
@@ -105,3 +109,87 @@ def test_threads_give_identical_results(fitted):
     one = rz.reconstruct(frame, "z_guided", filters=f, workers=1, precision="float32")
     two = rz.reconstruct(frame, "z_guided", filters=f, workers=2, precision="float32")
     assert np.array_equal(one, two)
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2", "mask2_rggb"])
+@pytest.mark.parametrize("shape", [(60, 76), (45, 62), (6, 6)])
+@pytest.mark.parametrize("noise", [False, True])
+def test_guide_from_the_taps_equals_the_reference(pattern, shape, noise):
+    pattern = rz.get_pattern(pattern)
+    frame = simulate(_scene(shape, 3), pattern, seed=2, noise=noise)
+    want = reference_guide_grid(frame.shape, pattern, frame.tof)
+    for workers in (1, 2, 3):
+        got = guide_grid(frame.shape, pattern, tof=frame.tof, workers=workers)
+        for g, w in zip(got, want):
+            np.testing.assert_array_equal(g, w)
+
+
+def _with_taps(tof, taps, order=None):
+    """``tof`` with other taps and, given ``order``, its sites in that order."""
+    order = np.arange(tof.n_sites) if order is None else order
+    return ToFTaps(taps[:, :, order], tof.frequencies, tuple(a[order] for a in tof.sites),
+                   tof.block, tof.bit_depth, tof.depth_true[order], tof.valid[order],
+                   tof.saturated[order], tof.sensor, tof.shape, tof.meta)
+
+
+def test_guide_from_taps_in_any_order_of_any_type():
+    frame = simulate(_scene((40, 52), 4), "mask1", seed=5, noise=True)
+    tof = frame.tof
+    want = reference_guide_grid(frame.shape, frame.pattern, tof)
+    shuffled = _with_taps(tof, tof.taps, np.random.default_rng(0).permutation(tof.n_sites))
+    for t in (shuffled, _with_taps(tof, tof.taps.astype(np.float32)),
+              _with_taps(tof, tof.taps.astype(np.int32))):
+        for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=t, workers=2), want):
+            np.testing.assert_array_equal(g, w)
+
+
+def test_guide_of_one_frequency_and_of_dark_pixels():
+    frame = simulate(_scene((24, 28), 6), "mask2", seed=1, noise=True)
+    tof = frame.tof
+    one = ToFTaps(tof.taps[:1], tof.frequencies[:1], tof.sites, tof.block, tof.bit_depth,
+                  tof.depth_true, tof.valid, tof.saturated, tof.sensor, tof.shape, tof.meta)
+    grid, var = guide_grid(frame.shape, frame.pattern, tof=one, workers=2)
+    np.testing.assert_array_equal(grid, reference_guide_grid(frame.shape, frame.pattern,
+                                                             one)[0])
+    assert not var.any()
+    # every pixel dark (equal taps): amplitude 0, no lit site, ratios 1
+    flat = _with_taps(tof, np.full_like(tof.taps, 7))
+    grid, var = guide_grid(frame.shape, frame.pattern, tof=flat)
+    assert not grid.any() and not var.any()
+    # half of them dark: the median runs over the lit ones
+    taps = tof.taps.copy()
+    taps[:, :, ::2] = 7
+    half = _with_taps(tof, taps)
+    for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=half, workers=2),
+                    reference_guide_grid(frame.shape, frame.pattern, half)):
+        np.testing.assert_array_equal(g, w)
+
+
+def test_guide_median_when_the_sample_misses_it():
+    # the kernel places the median's bracket from every (N // 16384 + 1)-th site: here every
+    # second site, all alike, while the others differ, so that the bracket misses the median
+    # and a second pass keeps every ratio
+    frame = simulate(_scene((200, 400), 8), "mask1", seed=1, noise=False)
+    tof = frame.tof
+    n = tof.n_sites
+    amp = np.where(np.arange(n) % 2 == 0, 1.0, 1.0 + np.arange(3)[:, None] * 0.5) * 40.0
+    amp = amp * (1 + 0.01 * np.random.default_rng(3).random(n))
+    taps = np.full((3, 4, n), 100.0)
+    taps[:, 0] += 2 * amp
+    t = _with_taps(tof, np.round(taps).astype(np.uint16))
+    want = reference_guide_grid(frame.shape, frame.pattern, t)
+    for workers in (1, 2):
+        for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=t, workers=workers), want):
+            np.testing.assert_array_equal(g, w)
+
+
+def test_guide_refuses_more_frequencies_than_it_reads():
+    from rgbz_fast import _kernels
+    frame = simulate(_scene((12, 16), 2), "mask1", seed=1, noise=True)
+    tof = frame.tof
+    F = _kernels.TOF_MAX_FREQS + 1
+    many = ToFTaps(np.tile(tof.taps[:1], (F, 1, 1)), 1e6 * np.arange(1, F + 1), tof.sites,
+                   tof.block, tof.bit_depth, tof.depth_true, tof.valid, tof.saturated,
+                   tof.sensor, tof.shape, tof.meta)
+    with pytest.raises(ValueError, match="frame.tof: the guide reads at most"):
+        guide_grid(frame.shape, frame.pattern, tof=many)

@@ -187,7 +187,7 @@ def _counting_guide(shape, seed):
 def _z_guided_site_counts(data, pattern, precision, bit_depth, seed):
     """Counts of the z_guided kernel (csrc/z_guided.c) per Z site: (targets, counts). As the
     learned kernel's, every site of a phase costs the same. The cell terms, one per tile,
-    computed before the kernel (reconstruction/_z_guided_kernel.py), are not counted; the
+    computed by the kernel once per tile row (csrc/z_guided.c), are not counted; the
     demodulation of the taps is count_tof_operations'."""
     from ..reconstruction._z_guided import guide_grid, resolve_z_filters
     from ..reconstruction._z_guided_kernel import run_z_guided

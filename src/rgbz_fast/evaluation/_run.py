@@ -156,7 +156,7 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     img = source.load()
     nir = source.load_nir() if config.needs_tof else None
     chain = config.colour_isp()
-    memo, renders = {}, []
+    memo, renders, metric_memos = {}, [], {}
     for pname in dict.fromkeys(p for p, _ in todo):
         frame, ref_cfa = _frames(img, get_pattern(pname), config, memo, nir)
         pattern = frame.pattern
@@ -177,7 +177,8 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
             if config.image_metrics:
                 test_srgb = chain.render(out, bayer, bit_depth=bd, gains=gains, workers=workers)
                 try:
-                    values.update(_image_metrics(ref_srgb, test_srgb, config, workers))
+                    values.update(_image_metrics(ref_srgb, test_srgb, config, workers,
+                                                 metric_memos.setdefault(id(ref_srgb), {})))
                 except ValueError as exc:            # an image too small for a metric
                     if not str(exc).startswith("reference: "):
                         raise                        # a message of the caller's parameter
@@ -201,9 +202,12 @@ def _reference_render(chain, cfa, bayer, bit_depth, workers, renders):
     return image, gains
 
 
-def _image_metrics(ref, test, config, workers):
-    """The colour metrics of ``config`` on one pair of 8-bit sRGB images (shared work)."""
-    return _colour_metrics(ref, test, config.image_metrics, 255, config.crop, workers)
+def _image_metrics(ref, test, config, workers, memo=None):
+    """The colour metrics of ``config`` on one pair of 8-bit sRGB images (shared work;
+    ``memo``: what the calls with this ``ref`` share, see ``_colour_metrics``; ``ref`` is
+    kept alive by the renders of :func:`_reference_render`, so its id keys it)."""
+    return _colour_metrics(ref, test, config.image_metrics, 255, config.crop, workers,
+                           memo=memo)
 
 
 def _row(image, pattern, method, metric, value, ir_estimated=False):

@@ -142,12 +142,20 @@ def _position_extremes(planes, tile, py, px, mx, mn):
 def _site_values(data, tile, rr, cc, dtype, hidden=None):
     """``data[rr, cc]`` as ``dtype`` (then float64), NaN at Z sites and where ``hidden``."""
     P, Q = tile.shape
-    v = data[rr, cc].astype(dtype).astype(np.float64)
-    drop = tile[rr % P, cc % Q] == Z
+    v = _at(data, rr, cc).astype(dtype).astype(np.float64)
+    drop = _at(tile, rr % P, cc % Q) == Z
     if hidden is not None:
-        drop |= hidden[rr, cc]
+        drop |= _at(hidden, rr, cc)
     v[drop] = np.nan
     return v
+
+
+def _at(a, rr, cc):
+    """``a[rr, cc]`` (indices inside ``a``): one take of flat indices on a C-contiguous
+    array, a fraction of the time of two index arrays."""
+    if a.flags.c_contiguous:
+        return a.reshape(-1).take(rr * a.shape[1] + cc)
+    return a[rr, cc]
 
 
 def _gather_neighbours(data, tile, rr, cc, dtype, hidden=None):

@@ -7,7 +7,8 @@ import numpy as np
 from .._validate import check_number, check_workers
 from ._common import (COLOUR_MAX_VALUE, SSIM_MAX_VALUE, _check_crop, _check_integer_range,
                       _check_magnitude, _check_rgb_pair,
-                      _check_ssim_data_range, _crop_hw, _kernel_pair, _psnr_from_mse)
+                      _check_ssim_data_range, _crop_hw, _kernel_dtype, _kernel_pair,
+                      _psnr_from_mse)
 from ._psnr import _rgb_mse
 from ._ssim import _SSIM_WHY, MS_SSIM_WEIGHTS, _check_ms_ssim_size, _ssim_and_ms_ssim
 from ._zipper import _COLOUR_WHY, _zipper_percent
@@ -63,11 +64,14 @@ def all_metrics(reference_rgb, test_rgb, *, data_range=255, crop=0, workers=None
 
 
 def _colour_metrics(reference, test, metrics, data_range, crop, workers,
-                    names=("reference", "test")):
+                    names=("reference", "test"), memo=None):
     """The colour metrics ``metrics`` (a subset of :data:`COLOUR_METRICS`) of one image pair,
     with the defaults of the public functions: what :func:`all_metrics` and the dataset
     evaluation compute. The pair is checked, cropped and converted once; SSIM and MS-SSIM
-    share their first scale."""
+    share their first scale. ``memo``: a dict the caller keeps for the calls with the same
+    ``reference``, ``data_range`` and ``crop`` (the dataset evaluation: one reference, many
+    test images), which holds what only the reference gives (its planar scales for the
+    SSIMs); the same values."""
     ref, tst = _check_rgb_pair(reference, test, *names)
     want_ssim = "ssim" in metrics or "ms_ssim" in metrics
     if want_ssim:
@@ -90,9 +94,16 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
     if "cpsnr" in metrics:
         out["cpsnr"] = _psnr_from_mse(*_rgb_mse(ref, tst, 0, threads), peak)
     if want_ssim:
-        x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
+        x_scales = None
+        if memo is None:
+            x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
+        else:
+            dt = _kernel_dtype(ref.dtype, tst.dtype)
+            x, x_scales = memo.get(("ssim", dt)) or memo.setdefault(
+                ("ssim", dt), (np.ascontiguousarray(np.moveaxis(ref, -1, 0), dt), []))
+            y = np.ascontiguousarray(np.moveaxis(tst, -1, 0), dt)
         ssim_value, ms_value = _ssim_and_ms_ssim(
-            x, y, peak, MS_SSIM_WEIGHTS if "ms_ssim" in metrics else None, threads)
+            x, y, peak, MS_SSIM_WEIGHTS if "ms_ssim" in metrics else None, threads, x_scales)
         out.update(ssim=ssim_value, ms_ssim=ms_value)
     if "zipper" in metrics:
         out["zipper"] = _zipper_percent(ref, tst, peak, 2.3, threads)

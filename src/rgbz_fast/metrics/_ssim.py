@@ -85,11 +85,12 @@ def _check_ms_ssim_size(shape, levels, crop):
                          f"{shape[0]} x {shape[1]}")
 
 
-def _ssim_and_ms_ssim(x, y, data_range, weights, threads):
+def _ssim_and_ms_ssim(x, y, data_range, weights, threads, x_scales=None):
     """(SSIM, MS-SSIM) of planar kernel-typed arrays with the default window.
 
     The SSIM is MS-SSIM's first scale, computed once; ``weights`` None: the
-    MS-SSIM is not computed (None).
+    MS-SSIM is not computed (None). ``x_scales``: a list that holds (or receives) the
+    downsampled scales of ``x`` after the first, for another call with the same ``x``.
     """
     s, cs = _ssim_means(x, y, data_range, 11, 1.5, True, threads)
     ssim_value = float(s.mean())
@@ -97,9 +98,13 @@ def _ssim_and_ms_ssim(x, y, data_range, weights, threads):
         return ssim_value, None
     w = np.asarray(weights, dtype=np.float64)
     factors = np.empty((w.size, x.shape[0]))                 # (scales, channels)
+    if x_scales is None:
+        x_scales = []
     for j in range(w.size):                                 # 5 scales, not pixels
         if j:
-            x, y = _downsample2(x, threads), _downsample2(y, threads)
+            if len(x_scales) < j:
+                x_scales.append(_downsample2(x, threads))
+            x, y = x_scales[j - 1], _downsample2(y, threads)
             s, cs = _ssim_means(x, y, data_range, 11, 1.5, True, threads)
         factors[j] = s if j == w.size - 1 else cs
     per_channel = np.prod(np.maximum(factors, 0.0) ** w[:, np.newaxis], axis=0)

@@ -249,7 +249,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         filters = resolve_z_filters(params.filters, pattern, bd)
         if tof is None and isinstance(frame, RawFrame):
             tof = frame.tof
-        grids = guide_grid(src.shape, pattern, nir=nir, tof=tof)
+        grids = guide_grid(src.shape, pattern, nir=nir, tof=tof, workers=nthreads)
         if clip is not None and _reaches(src, pattern, clip):
             raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
                              f"frame reaches the clip level {clip:g}, use another method or "

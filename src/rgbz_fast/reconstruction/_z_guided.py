@@ -44,6 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import _kernels
 from .._frame import ToFTaps
 from .._patterns import Z, get_pattern
 from .._validate import check_number
@@ -120,18 +121,21 @@ def _fill_cut(grid, complete):
     return out
 
 
-def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir"):
+def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):
     """The NIR value of every Z pixel and its noise variance, on the grid of the tiles.
 
     From ``nir`` (an array of the frame's shape; only its Z sites are read, the
     mean of the four on a 2x2 Z pixel; any positive scale; taken as exact:
-    noise variance 0) or else from ``tof``: :meth:`ToFTaps.amplitude`, and the
-    variance of that mean over the F frequencies estimated from their
-    disagreement, ``sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1))``
-    (``r_f``: the median over the frame of ``A_f`` over the mean; 0 with one
-    frequency). A Z pixel cut by the frame's edge (no measurement) takes the
-    values a pattern period inwards. ValueError naming ``name`` when neither
-    is given or the values cannot be a NIR image.
+    noise variance 0) or else from ``tof``: the mean over the F frequencies of
+    :meth:`ToFTaps.amplitude` ``A_f``, and the variance of that mean estimated
+    from their disagreement, ``sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F -
+    1))`` (``r_f``: the median over the lit Z pixels of the frame, mean > 0, of
+    ``A_f`` over the mean, 1 if none; 0 with one frequency), demodulated by the
+    C kernel (csrc/z_guided_guide.c) in ``workers`` threads, the same result
+    for any number (tests/_reference/z_guided.py holds the NumPy path). A Z
+    pixel cut by the frame's edge (no measurement) takes the values a pattern
+    period inwards. ValueError naming ``name`` when neither is given or the
+    values cannot be a NIR image.
 
     Returns
     -------
@@ -171,28 +175,31 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir"):
     if tof.block != b:
         raise ValueError(f"frame.tof: taps of {tof.block}x{tof.block} Z pixels, pattern "
                          f"{pattern.name!r} has {b}x{b} Z pixels")
-    rows, cols = tof.sites
-    iy, ry = np.divmod(rows - zr, P)
-    ix, rx = np.divmod(cols - zc, Q)
-    if np.any(ry) or np.any(rx) or not np.array_equal(np.sort(iy * gx + ix),
-                                                      np.flatnonzero(complete)):
-        raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
-                         f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
-    amp = tof.amplitude("all")
-    mean = amp.mean(axis=0)
-    F = amp.shape[0]
-    var = np.zeros_like(mean)
-    if F > 1:
-        lit = mean > 0
-        ratio = np.median(amp[:, lit] / mean[lit], axis=1) if lit.any() else np.ones(F)
-        norm = amp / np.where(ratio > 0, ratio, 1.0)[:, None]
-        var = ((norm - norm.mean(axis=0)) ** 2).sum(axis=0) / (F * (F - 1))
-    out = []
-    for values in (mean, var):
-        grid = np.zeros((gy, gx))
-        grid[iy, ix] = values
-        out.append(_fill_cut(grid, complete))
-    return tuple(out)
+    if not complete.any():
+        raise ValueError("shape: the frame holds no complete Z pixel")
+    if tof.taps.shape[0] > _kernels.TOF_MAX_FREQS:
+        raise ValueError(f"frame.tof: the guide reads at most {_kernels.TOF_MAX_FREQS} "
+                         f"frequencies, the taps hold {tof.taps.shape[0]}")
+    grid, var = np.zeros((gy, gx)), np.zeros((gy, gx))
+    gyc, gxc = int(complete.any(axis=1).sum()), int(complete.any(axis=0).sum())
+    taps = tof.taps if tof.taps.dtype in (np.uint8, np.uint16, np.float32, np.float64) else \
+        tof.taps.astype(np.float64)
+    taps = np.ascontiguousarray(taps)
+    rows, cols = (np.ascontiguousarray(a, np.int64) for a in tof.sites)
+    args = (P, Q, zr, zc, gyc, gxc, grid, var, workers)
+    if tof.n_sites == 0 or not _kernels.z_guided_guide(taps, rows, cols, *args):
+        # sites in another order (or not the frame's Z pixels): checked, then row-major
+        iy, ry = np.divmod(rows - zr, P)
+        ix, rx = np.divmod(cols - zc, Q)
+        at = iy * gx + ix
+        order = np.argsort(at, kind="stable")
+        if np.any(ry) or np.any(rx) or not np.array_equal(at[order], np.flatnonzero(complete)):
+            raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
+                             f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
+        _kernels.z_guided_guide(np.ascontiguousarray(taps[:, :, order]),
+                                np.ascontiguousarray(rows[order]),
+                                np.ascontiguousarray(cols[order]), *args)
+    return _fill_cut(grid, complete), _fill_cut(var, complete)
 
 
 def colour_grids(data, pattern, channels):

@@ -465,8 +465,8 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
             "integration_time": sensor.integration_time, "system_gain": sensor.system_gain,
             "wrap_ranges": sensor.wrap_ranges, "rng_version": rng_version,
             "ir_estimated": scene.ir_reflectance is None}   # NIR from the RGB: a leaking guide
-    return ToFTaps(taps, np.asarray(sensor.frequencies), (rows, cols), block,
-                   sensor.bit_depth, depth_true, valid, sat, sensor, shape, meta)
+    return ToFTaps(_Adopt(taps), np.asarray(sensor.frequencies), _Adopt((rows, cols)), block,
+                   sensor.bit_depth, *map(_Adopt, (depth_true, valid, sat)), sensor, shape, meta)
 
 
 def _tof_mean(scene, sensor, pitch, rows, cols, block, optics):

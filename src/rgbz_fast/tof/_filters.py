@@ -70,18 +70,40 @@ class SiteGrid:
     """
 
     def __init__(self, sites, block=1):
-        rows, cols = check_sites(sites, "sites")           # integers, none twice
-        block = check_block(block, "block")
-        self.n = rows.size
-        self.block = block
-        if not self._row_major(rows, cols):
-            self.rows_u, self._ri = np.unique(rows, return_inverse=True)
-            self.cols_u, self._ci = np.unique(cols, return_inverse=True)
-            self.shape = (self.rows_u.size, self.cols_u.size)
-            self.full = (self.n == self.shape[0] * self.shape[1]
-                         and np.array_equal(self._ri, np.arange(self.n) // self.shape[1])
-                         and np.array_equal(self._ci, np.arange(self.n) % self.shape[1]))
+        fast = self._checked_row_major(sites)
+        if fast:
+            self.n = sites[0].size
+        else:
+            rows, cols = check_sites(sites, "sites")       # integers, none twice
+            self.n = rows.size
+        self.block = check_block(block, "block")
+        if not fast and not self._row_major(rows, cols):
+            self._irregular(rows, cols)
         self.present = self.to_grid(np.ones(self.n, bool), False)
+
+    def _checked_row_major(self, sites):
+        """The common case checked without check_sites' copies and sort: two int64 arrays of
+        one shape that fill a grid in row-major order (strictly increasing grid lines, so no
+        site twice) within [0, 2^31); then the grid is made. False: anything else (check_sites
+        then names what is wrong)."""
+        if not (isinstance(sites, (tuple, list)) and len(sites) == 2):
+            return False
+        rows, cols = sites
+        if not (isinstance(rows, np.ndarray) and isinstance(cols, np.ndarray)
+                and rows.dtype == np.int64 and cols.dtype == np.int64 and rows.ndim == 1
+                and rows.shape == cols.shape and self._row_major(rows, cols)):
+            return False
+        return bool(self.rows_u[0] >= 0 and self.cols_u[0] >= 0
+                    and self.rows_u[-1] < 1 << 31 and self.cols_u[-1] < 1 << 31)
+
+    def _irregular(self, rows, cols):
+        """Any other layout: the grid of the distinct rows and columns."""
+        self.rows_u, self._ri = np.unique(rows, return_inverse=True)
+        self.cols_u, self._ci = np.unique(cols, return_inverse=True)
+        self.shape = (self.rows_u.size, self.cols_u.size)
+        self.full = (self.n == self.shape[0] * self.shape[1]
+                     and np.array_equal(self._ri, np.arange(self.n) // self.shape[1])
+                     and np.array_equal(self._ci, np.arange(self.n) % self.shape[1]))
 
     def _row_major(self, rows, cols):
         """The fast path (Mask1, Mask2, rows): the sites fill a grid in row-major order, which

@@ -1,0 +1,147 @@
+/*
+ * z_guided_guide.template.h -- the guide of z_guided (z_guided.h, rgbz_zguided_guide) for one
+ * element type of the ToF taps. Instantiated by z_guided_guide.c through rgbz_each_type.h
+ * (rgbz_templating.h), with IN_T and IS.
+ *
+ * Taps (F, 4, N) row-major: A_k of frequency f and site n at taps[(4 f + k) N + n]. The
+ * amplitude of a site at a frequency is tof.c's, 0.5 sqrt(I^2 + Q^2) with I = A0 - A2,
+ * Q = A3 - A1 in double, so that it equals ToFTaps.amplitude bit for bit.
+ */
+#if !defined(IN_T) || !defined(IS)
+#error "z_guided_guide.template.h: define IN_T and IS (rgbz_each_type.h)"
+#endif
+
+/* the amplitudes A[f][k] of the sites n0 .. n0 + nb - 1 and their mean over the frequencies
+   (summed in the order of f, then divided by F: NumPy's mean over the first axis) */
+RGBZ_INLINE void RGBZ_CAT(zgg_amplitudes, IS)(const IN_T *restrict taps, ptrdiff_t F,
+                                              ptrdiff_t N, ptrdiff_t n0, ptrdiff_t nb,
+                                              double (*restrict A)[ZGG_BLOCK],
+                                              double *restrict mean)
+{
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const IN_T *restrict a0 = taps + 4 * f * N + n0, *restrict a1 = a0 + N;
+        const IN_T *restrict a2 = a0 + 2 * N, *restrict a3 = a0 + 3 * N;
+        double *restrict af = A[f];
+        RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
+            const double I = (double)a0[k] - (double)a2[k], Q = (double)a3[k] - (double)a1[k];
+            af[k] = 0.5 * sqrt(I * I + Q * Q);
+        }
+    }
+    RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] = A[0][k];
+    for (ptrdiff_t f = 1; f < F; f++)
+        RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] += A[f][k];
+    RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] /= (double)F;
+}
+
+/* the lit ratios A_f / mean of the sites 0, step, 2 step, ... (a sample that places the
+   median's bracket; its arithmetic need not match the passes') into samp[f], their count */
+static ptrdiff_t RGBZ_CAT(zgg_sample, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N,
+                                          ptrdiff_t step, double *const *samp)
+{
+    ptrdiff_t m = 0;
+    for (ptrdiff_t n = 0; n < N; n += step) {
+        double a[RGBZ_TOF_MAX_FREQS], mean = 0.0;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const IN_T *t = taps + 4 * f * N + n;
+            const double I = (double)t[0] - (double)t[2 * N], Q = (double)t[3 * N] - (double)t[N];
+            a[f] = 0.5 * sqrt(I * I + Q * Q);
+            mean += a[f];
+        }
+        mean /= (double)F;
+        if (mean > 0) {
+            for (ptrdiff_t f = 0; f < F; f++) samp[f][m] = a[f] / mean;
+            m++;
+        }
+    }
+    return m;
+}
+
+/*
+ * The passes over the sites [lo, hi) of one thread (z_guided_guide.c runs them between its
+ * barriers):
+ *   pass 1: the mean amplitude of every site into the grid, the count of the lit sites
+ *           (mean > 0), and for each frequency f the count of their ratios A_f / mean below
+ *           the bracket [blo[f], bhi[f]] (to below[f]) and those in it, appended to buf[f]
+ *           (its first cap of them; the count goes on in pos[f]);
+ *   pass 2: the ratios in the brackets only (the bracket missed the median);
+ *   pass 3: the noise variance of every site into var, from ratio[f].
+ */
+RGBZ_CLONES_512
+static void RGBZ_CAT(zgg_pass, IS)(int pass, const IN_T *taps, ptrdiff_t F, ptrdiff_t N,
+                                   ptrdiff_t lo, ptrdiff_t hi, ptrdiff_t gxc, ptrdiff_t gx,
+                                   double *grid, double *var, ptrdiff_t *n_lit,
+                                   const double *blo, const double *bhi, ptrdiff_t *below,
+                                   double *const *buf, ptrdiff_t cap, ptrdiff_t *pos,
+                                   const double *ratio)
+{
+    double A[RGBZ_TOF_MAX_FREQS][ZGG_BLOCK], mean[ZGG_BLOCK], val[ZGG_BLOCK];
+    ptrdiff_t at[ZGG_BLOCK];
+    for (ptrdiff_t n0 = lo; n0 < hi; n0 += ZGG_BLOCK) {
+        const ptrdiff_t nb = hi - n0 < ZGG_BLOCK ? hi - n0 : ZGG_BLOCK;
+        RGBZ_CAT(zgg_amplitudes, IS)(taps, F, N, n0, nb, A, mean);
+        /* the grid cell of each site: site n is cell (n / gxc, n % gxc) */
+        ptrdiff_t iy = n0 / gxc, ix = n0 % gxc;
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            at[k] = iy * gx + ix;
+            if (++ix == gxc) {
+                ix = 0;
+                iy++;
+            }
+        }
+        if (pass == 3) {
+            /* NumPy's order: norm = A_f / ratio_f, its mean over f (summed in order, over
+               F), then sum_f (norm_f - mean)^2 in order, over F (F - 1) */
+            for (ptrdiff_t f = 0; f < F; f++) {
+                const double r = ratio[f];
+                double *restrict af = A[f];
+                RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) af[k] = af[k] / r;
+            }
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] = A[0][k];
+            for (ptrdiff_t f = 1; f < F; f++)
+                RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] += A[f][k];
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
+                mean[k] /= (double)F;
+                const double d = A[0][k] - mean[k];
+                val[k] = d * d;
+            }
+            for (ptrdiff_t f = 1; f < F; f++)
+                RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
+                    const double d = A[f][k] - mean[k];
+                    val[k] += d * d;
+                }
+            const double den = (double)(F * (F - 1));
+            for (ptrdiff_t k = 0; k < nb; k++) var[at[k]] = val[k] / den;
+            continue;
+        }
+        if (pass == 1) {
+            for (ptrdiff_t k = 0; k < nb; k++) grid[at[k]] = mean[k];
+            ptrdiff_t c = 0;
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) c += mean[k] > 0;
+            *n_lit += c;
+        }
+        if (F == 1) continue;
+        /* the ratios A_f / mean of the lit sites (unlit: NaN, in no bracket and below none) */
+        for (ptrdiff_t f = 0; f < F; f++) {
+            double *restrict af = A[f];
+            const double bl = blo[f], bh = bhi[f];
+            ptrdiff_t c = 0;
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
+                const int lit = mean[k] > 0;
+                const double r = af[k] / (lit ? mean[k] : 1.0);
+                af[k] = lit ? r : NAN;
+                c += lit && r < bl;
+            }
+            if (pass == 1) below[f] += c;
+            /* the ratios in the bracket, compacted without branches, then kept */
+            ptrdiff_t q = 0;
+            for (ptrdiff_t k = 0; k < nb; k++) {
+                const double x = af[k];
+                val[q] = x;
+                q += (x >= bl) & (x <= bh);
+            }
+            const ptrdiff_t p = pos[f], room = cap - p;
+            if (room > 0) memcpy(buf[f] + p, val, (size_t)(q < room ? q : room) * sizeof *val);
+            pos[f] = p + q;
+        }
+    }
+}
