@@ -40,7 +40,7 @@ from rgbz_fast.metrics import cfa_psnr
 from rgbz_fast.reconstruction import LearnedFilters
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from learned_fit import DATA, fit, heldout_split  # noqa: E402
+from learned_fit import DATA, fit, heldout_split, saturate  # noqa: E402
 
 NON_Z = [(m, d) for m in ("bilinear", "bi", "edi_central", "edi_line", "sg")
          for d in ("intensity", "colour_difference")]
@@ -54,10 +54,7 @@ TARGET_BEST, TARGET_SG = 0.3, 1.5
 
 def boost_saturation(img8):
     """The issue's saturated Kodak: HSV saturation x 2 (clipped at 1), rounded to 8 bits."""
-    from skimage.color import hsv2rgb, rgb2hsv
-    hsv = rgb2hsv(img8)
-    hsv[..., 1] = np.clip(hsv[..., 1] * 2, 0, 1)
-    return np.round(hsv2rgb(hsv) * 255).astype(np.uint8)
+    return saturate(img8, 2.0)
 
 
 def images(name, data):

@@ -16,6 +16,8 @@ Tolerances (stated here, asserted below):
 from __future__ import annotations
 
 import dataclasses
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -149,13 +151,39 @@ def test_shipped_filters_record_their_training():
     for pname in ("mask1", "mask2"):
         f = default_filters(pname)
         assert f.pattern == rz.get_pattern(pname) and f.bit_depth == 11
-        # three quarters of each folder (tools/learned_fit.py --heldout), in both encodings
+        # three quarters of each folder (tools/learned_fit.py --heldout), each image as it
+        # is and saturated, in both encodings
         assert f.meta["training_set"] == ("cbsd68+manga109+sun_hays80 without the held-out "
-                                          "quarter")
+                                          "quarter, and each saturated x U(1.5, 2.5)")
         assert f.meta["encoding"] == "linear+srgb" and f.meta["noise"] is False
-        assert f.meta["n_images"] == 2 * (51 + 18 + 60)
+        assert f.meta["n_images"] == 2 * 2 * (51 + 18 + 60)
         assert f.n_buckets == 216 and f.n_spread == 3 and f.radius == 3
         assert f.meta["command"] == f"python tools/learned_fit.py {pname} OUT.npz --heldout"
+
+
+def test_fit_saturates_only_the_fitted_images(monkeypatch):
+    """tools/learned_fit.py adds one saturated copy of every fitted image, with the issue's
+    protocol; no held-out image enters the fit, saturated or not."""
+    import importlib.util
+
+    data = shared_path()
+    path = Path(__file__).resolve().parents[2] / "tools" / "learned_fit.py"
+    spec = importlib.util.spec_from_file_location("learned_fit", path)
+    tool = importlib.util.module_from_spec(spec)
+    monkeypatch.setitem(sys.modules, "learned_fit", tool)  # its dataclass looks itself up
+    spec.loader.exec_module(tool)
+    for name in tool.FOLDERS:
+        if not (data / tool.FOLDERS[name]).is_dir():
+            pytest.skip(f"shared training folder not found: {data / tool.FOLDERS[name]}")
+        held, fitted = tool.heldout_split(name, data)
+        copies = tool.saturated_copies(fitted)
+        assert [c.location for c in copies] == [s.location for s in fitted]
+        assert not {c.location for c in copies} & {s.location for s in held}
+        ks = np.array([c.k for c in copies])
+        assert np.all((ks >= tool.SATURATION[0]) & (ks < tool.SATURATION[1]))
+    img = np.array([[[200, 100, 100], [90, 100, 110]]], np.uint8)
+    # value kept, saturation doubled (clipped at 1): (200, 100, 100) -> (200, 0, 0)
+    assert np.array_equal(tool.saturate(img, 2.0), [[[200, 0, 0], [70, 90, 110]]])
 
 
 def test_default_filters_are_used_when_none_given():
