@@ -20,9 +20,11 @@ ToF ISP uses it three ways (C kernels, csrc/tof_guided.c; docs/guide/isp.md):
 * **Flying pixels.** A measurement at a depth discontinuity (the second
   differences of :func:`~rgbz_fast.tof.flying_pixels`) is compared with the two
   sides of the discontinuity among its 8 neighbours: when its depth is one
-  side's and every cell of its Z pixel has that side's colour (a 2x2 Z pixel;
-  a 1x1 pixel's colour cannot tell a pure measurement from a blend), it is a
-  pure measurement and stays valid; when its depth lies between the sides and
+  side's, every cell of its Z pixel has that side's colour and every pixel
+  bordering the Z pixel is nearer that side's colour than the other's (a 2x2
+  Z pixel, whose cells' colours the colour ISP interpolates, so they place an
+  edge to a pixel at best; a 1x1 pixel's colour cannot tell a pure
+  measurement from a blend), it is a pure measurement and stays valid; when its depth lies between the sides and
   all its cells have one side's colour, it takes that side's depth and the
   bit :attr:`ToFFlag.RESOLVED` (``ToFDepth.measured`` keeps what was measured);
   otherwise it is flagged flying.
