@@ -48,6 +48,65 @@
 #define LRN_VECTOR_EXT 0
 #endif
 
+#if LRN_VECTOR_EXT
+/* The lane sums of the dense dot products (learned.template.h): for L sites' accumulators
+   a[i] (L = 8 floats or 4 doubles, one 32-byte vector each), the vector whose element i is
+   a[i][0] + a[i][1] + ... + a[i][L - 1], added in lane order (into *sum): the accumulators transposed
+   in registers (the unpack, pair and half shuffles of an L x L transpose), then L - 1
+   vector additions. Inlined into each clone of its caller. */
+typedef float lrn_v8f __attribute__((vector_size(32)));
+typedef double lrn_v4d __attribute__((vector_size(32)));
+#if defined(__clang__)
+#define LRN_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
+    __builtin_shufflevector(a, b, i0, i1, i2, i3, i4, i5, i6, i7)
+#define LRN_SHUF4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+typedef int32_t lrn_m8 __attribute__((vector_size(32)));
+typedef int64_t lrn_m4 __attribute__((vector_size(32)));
+#define LRN_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
+    __builtin_shuffle(a, b, (lrn_m8){i0, i1, i2, i3, i4, i5, i6, i7})
+#define LRN_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
+#endif
+
+LRN_INLINE void lrn_lane_sums_f32(const lrn_v8f *a, lrn_v8f *sum)
+{
+    lrn_v8f t[8], u[8], T[8];
+    /* t[2m], t[2m + 1]: sites 2m and 2m + 1, lanes (0, 1, 4, 5) and (2, 3, 6, 7) interleaved */
+    for (int i = 0; i < 8; i += 2) {
+        t[i] = LRN_SHUF8(a[i], a[i + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+        t[i + 1] = LRN_SHUF8(a[i], a[i + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+    }
+    /* u[4h + l]: sites 4h .. 4h + 3, lane l in the low half, lane l + 4 in the high half */
+    for (int i = 0; i < 8; i += 4) {
+        u[i] = LRN_SHUF8(t[i], t[i + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[i + 1] = LRN_SHUF8(t[i], t[i + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+        u[i + 2] = LRN_SHUF8(t[i + 1], t[i + 3], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[i + 3] = LRN_SHUF8(t[i + 1], t[i + 3], 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+    /* T[l]: lane l of sites 0 .. 7 */
+    for (int l = 0; l < 4; l++) {
+        T[l] = LRN_SHUF8(u[l], u[l + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+        T[l + 4] = LRN_SHUF8(u[l], u[l + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+    }
+    lrn_v8f s = T[0] + T[1];
+    for (int l = 2; l < 8; l++) s += T[l];
+    *sum = s;
+}
+
+LRN_INLINE void lrn_lane_sums_f64(const lrn_v4d *a, lrn_v4d *sum)
+{
+    /* t[0], t[1]: sites 0 and 1, lanes (0, 2) and (1, 3) interleaved; t[2], t[3]: sites 2, 3 */
+    const lrn_v4d t0 = LRN_SHUF4(a[0], a[1], 0, 4, 2, 6), t1 = LRN_SHUF4(a[0], a[1], 1, 5, 3, 7);
+    const lrn_v4d t2 = LRN_SHUF4(a[2], a[3], 0, 4, 2, 6), t3 = LRN_SHUF4(a[2], a[3], 1, 5, 3, 7);
+    lrn_v4d s = LRN_SHUF4(t0, t2, 0, 1, 4, 5) + LRN_SHUF4(t1, t3, 0, 1, 4, 5);
+    s += LRN_SHUF4(t0, t2, 2, 3, 6, 7);
+    s += LRN_SHUF4(t1, t3, 2, 3, 6, 7);
+    *sum = s;
+}
+#undef LRN_SHUF8
+#undef LRN_SHUF4
+#endif
+
 /* the border rule of every kernel: an index outside [0, n) moves back inside by whole
    periods P (n >= P), so that the pixel keeps its colour */
 static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)

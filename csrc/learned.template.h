@@ -47,7 +47,7 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK],
     const double *ct = f->coh_thr2 + (ptrdiff_t)k * (nc - 1);
     const double *kt = f->spr_thr + (ptrdiff_t)k * (nk - 1);
     const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
-    REAL tt[LRN_BLK] = {0}, m2[LRN_BLK] = {0};
+    REAL tt[LRN_BLK], m2[LRN_BLK];         /* written for j < n before any read */
     LRN_IVDEP for (int j = 0; j < n; j++) {
         const REAL a = OSUB(e[0][j], e[1][j]);
         const REAL b = OMUL(OSUB(e[2][j], e[3][j]), (REAL)0.5);
@@ -381,8 +381,9 @@ static void LRN_CAT(lrn_rows, IS, RS)(const REAL *cs, ptrdiff_t cols, int hr, in
    y - R .. y + R) with its bucket's dense weights (rows of 8: the 7 pixels of the window row
    and one weight of 0). With GCC or Clang each row is one or two 32-byte vector operations
    (vector extensions: the auto-vectoriser leaves this loop scalar), and the lanes of each
-   site's accumulator are added in lane order for all the sites of the block at once (a
-   transpose the vectoriser makes of the loop over j); the fast path never runs in the
+   site's accumulator are added in lane order for 8 floats' or 4 doubles' sites at once
+   (their accumulators transposed in registers: lrn_lane_sums_<RS>, learned.c); the fast
+   path never runs in the
    counting build, which counts the per-site formulation. */
 #if LRN_VECTOR_EXT
 /* 32-byte vectors (AVX2's width: 8 floats or 4 doubles; wider ones are expanded element by
@@ -399,23 +400,45 @@ LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptr
     const int rows = 2 * R + 1;
 #if LRN_VECTOR_EXT
     typedef LRN_CAT(lrn_rv, IS, RS) rv;
-    REAL lanes[LRN_BLK][LRN_LANES];
-    for (int j = 0; j < n; j++) {
+    enum { L = LRN_LANES };
+    int j = 0;
+    for (; j + L <= n; j += L) {
+        /* L sites' accumulators acc[i] (lane l: window column h + l), then their lanes added
+           in lane order for the L sites at once: the accumulators transposed in registers */
+        rv acc[L];
+        for (int i = 0; i < L; i++) {
+            const REAL *restrict w = wd + (ptrdiff_t)bucket[j + i] * rows * 8;
+            const ptrdiff_t x = x0 + (ptrdiff_t)(j + i) * px - R;
+            rv a = {0};
+            for (int dy = 0; dy < rows; dy++)
+                for (int h = 0; h < 8; h += L) {
+                    rv xv, wv;
+                    memcpy(&xv, rowp[dy] + x + h, sizeof xv);
+                    memcpy(&wv, w + dy * 8 + h, sizeof wv);
+                    a += wv * xv;
+                }
+            acc[i] = a;
+        }
+        rv sum;
+        RGBZ_CAT(lrn_lane_sums, RS)(acc, &sum);
+        memcpy(res + j, &sum, sizeof sum);
+    }
+    /* the last sites of a partial block: the same sums, one site at a time */
+    for (; j < n; j++) {
         const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
         const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
-        rv acc = {0};
+        rv a = {0};
         for (int dy = 0; dy < rows; dy++)
-            for (int h = 0; h < 8; h += LRN_LANES) {
+            for (int h = 0; h < 8; h += L) {
                 rv xv, wv;
                 memcpy(&xv, rowp[dy] + x + h, sizeof xv);
                 memcpy(&wv, w + dy * 8 + h, sizeof wv);
-                acc += wv * xv;
+                a += wv * xv;
             }
-        memcpy(lanes[j], &acc, sizeof acc);
-    }
-    LRN_IVDEP for (int j = 0; j < n; j++) {
-        REAL sum = lanes[j][0];
-        for (int l = 1; l < LRN_LANES; l++) sum += lanes[j][l];
+        REAL lanes[L];
+        memcpy(lanes, &a, sizeof a);
+        REAL sum = lanes[0];
+        for (int l = 1; l < L; l++) sum += lanes[l];
         res[j] = sum;
     }
 #else

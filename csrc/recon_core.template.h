@@ -204,8 +204,18 @@ RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v
 {
     uint32_t started = 0;
     if (p->sum_from_zero) {
+#ifdef RGBZ_COUNT_OPS
+        /* the counting build adds every difference to a 0 (what the plan counts) */
         for (int g = 0; g < RGBZ_NGROUPS; g++) BLOOP G[g][j] = (REAL)0;
         started = (1u << RGBZ_NGROUPS) - 1;
+#else
+        /* 0 + d is d (d = |a - b| >= +0): a group's first difference is assigned rather
+           than added to a 0; only the groups without a difference are zeroed */
+        uint32_t touched = 0;
+        for (int i = 0; i < p->n_pairs; i++) touched |= (uint32_t)p->pair_gmask[i];
+        for (int g = 0; g < RGBZ_NGROUPS; g++)
+            if (!((touched >> g) & 1u)) BLOOP G[g][j] = (REAL)0;
+#endif
     }
     if (clipped)
         for (int g = 0; g < RGBZ_NGROUPS; g++) BLOOP cnt[g][j] = 0;
@@ -251,6 +261,13 @@ static inline REAL RFN(rgbz_exp_arg)(REAL G, REAL inv, int known)
     return known ? (OPC_(RGBZ_OP_EXP), -OMUL(OMUL(G, G), inv)) : (REAL)0;
 }
 
+/* the same from ninv = -inv, the negation taken once per site rather than once per group:
+   G^2 * (-inv) and -(G^2 * inv) are the same number (rounding is symmetric in the sign) */
+static inline REAL RFN(rgbz_exp_narg)(REAL G, REAL ninv)
+{
+    return (OPC_(RGBZ_OP_EXP), OMUL(OMUL(G, G), ninv));
+}
+
 /*
  * rgbz_gammas_block without clipped pixels, for a family of NG groups from g0 (compile-time
  * NG, REL = rel > 0, FAST = the fast exponential where it is called) whose groups all have
@@ -280,11 +297,11 @@ RGBZ_INLINE void RFN(rgbz_gammas_full)(const rgbz_plan *p, REAL (*G)[RGBZ_BLK], 
             const REAL rf = ODIV(OMUL(rel, gsum), (REAL)NG);
             sg = OCMP(rf > sg) ? rf : sg;
         }
-        const REAL inv = ODIV((REAL)1, OMUL((REAL)2, OMUL(sg, sg)));
+        const REAL ninv = -ODIV((REAL)1, OMUL((REAL)2, OMUL(sg, sg)));
         RGBZ_UNROLL
         for (int q = 0; q < NG; q++)
-            gamma[g0 + q][j] = FAST ? REXP_FAST(RFN(rgbz_exp_arg)(gm[q], inv, 1))
-                                    : REXP_LIBM(RFN(rgbz_exp_arg)(gm[q], inv, 1));
+            gamma[g0 + q][j] = FAST ? REXP_FAST(RFN(rgbz_exp_narg)(gm[q], ninv))
+                                    : REXP_LIBM(RFN(rgbz_exp_narg)(gm[q], ninv));
     }
 }
 
@@ -428,18 +445,50 @@ typedef struct {
 /* the weight of candidate f->k at site j, from the factors the method uses (ab: alpha *
    beta, eq. 2; grad: gamma of its orientation, eq. 6; sg: eq. 19's sum), added to the
    sums of eqs. 12-13 */
-RGBZ_INLINE void RFN(rgbz_weigh)(const RFN(rgbz_weights) *f, int j, int ab, int grad, int sg,
-                                 REAL *restrict den, REAL *restrict num)
+RGBZ_INLINE void RFN(rgbz_weigh_sv)(const RFN(rgbz_weights) *f, int j, int ab, int grad,
+                                    int sg, REAL sv, REAL *restrict den, REAL *restrict num)
 {
     REAL w = ab ? ODIV(f->alpha, f->S[j]) : (REAL)1;
     if (grad) w = OMUL(w, f->gamma[j]);
-    if (sg) w = (ab || grad) ? OMUL(w, f->sv[j]) : f->sv[j];
+    if (sg) w = (ab || grad) ? OMUL(w, sv) : sv;
     if (f->k == 0) {
         den[j] = w;
     } else {
         den[j] = OADD(den[j], w);
         const REAL t = OMUL(w, OSUB(f->c[j], f->c0[j]));
         num[j] = f->first ? t : OADD(num[j], t);
+    }
+}
+
+/* the same with eq. 19's sum read from f->sv */
+RGBZ_INLINE void RFN(rgbz_weigh)(const RFN(rgbz_weights) *f, int j, int ab, int grad, int sg,
+                                 REAL *restrict den, REAL *restrict num)
+{
+    RFN(rgbz_weigh_sv)(f, j, ab, grad, sg, sg ? f->sv[j] : (REAL)0, den, num);
+}
+
+/* eq. 19's sum scaled by sc where the plan scales it (scaled). x * 1 is x exactly, so the
+   normal build multiplies every sum by sc (1 where it is not scaled: no per-site select);
+   the counting build counts the multiplication only where the plan has it. */
+#ifdef RGBZ_COUNT_OPS
+#define RSGSCALE(x, scaled, sc) ((scaled) ? OMUL(x, sc) : (x))
+#else
+#define RSGSCALE(x, scaled, sc) ((void)(scaled), (x) * (sc))
+#endif
+
+/* SG's weight of candidate f->k (ab_grad: times alpha * beta * gamma(ori), the combined
+   mode) with eq. 19's sum of the nr (a compile-time 1..4 where it is called) gamma rows
+   taken in the same pass, in their order: the sum never goes through memory */
+RGBZ_INLINE void RFN(rgbz_weigh_sg)(const RFN(rgbz_weights) *f, const REAL *const *rows, int nr,
+                                    int scaled, REAL sc, int ab_grad, int n, REAL *restrict den,
+                                    REAL *restrict num)
+{
+    RGBZ_IVDEP
+    BLOOP {
+        REAL sv = rows[0][j];
+        for (int i = 1; i < nr; i++) sv = OADD(sv, rows[i][j]);
+        sv = RSGSCALE(sv, scaled, sc);
+        RFN(rgbz_weigh_sv)(f, j, ab_grad, ab_grad, 1, sv, den, num);
     }
 }
 
@@ -579,6 +628,29 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, int n,
             const REAL *rows[8];
             int nr = 0;
             for (uint32_t m = (uint32_t)p->cand_sgmask[k]; m; m &= m - 1) rows[nr++] = gamma[rgbz_ctz(m)];
+            if ((combo == 4 || combo == 7) && nr >= 1 && nr <= 4) {
+                /* SG and SG combined: the sum in the pass of the weight */
+                const int sc_on = p->sg_scaled;
+                const REAL sc = sc_on ? (REAL)p->cand_sgscale[k] : (REAL)1;
+#define RGBZ_WSG_(NR, AB) RFN(rgbz_weigh_sg)(&f, rows, NR, sc_on, sc, AB, n, den, num)
+                if (combo == 7) {
+                    switch (nr) {
+                    case 1: RGBZ_WSG_(1, 1); break;
+                    case 2: RGBZ_WSG_(2, 1); break;
+                    case 3: RGBZ_WSG_(3, 1); break;
+                    default: RGBZ_WSG_(4, 1); break;
+                    }
+                } else {
+                    switch (nr) {
+                    case 1: RGBZ_WSG_(1, 0); break;
+                    case 2: RGBZ_WSG_(2, 0); break;
+                    case 3: RGBZ_WSG_(3, 0); break;
+                    default: RGBZ_WSG_(4, 0); break;
+                    }
+                }
+#undef RGBZ_WSG_
+                continue;
+            }
             switch (nr) {
             case 0: BLOOP svb[j] = (REAL)0; break;
             case 1: RFN(rgbz_rows_sum)(rows, 1, n, svb); break;
@@ -696,6 +768,7 @@ int RFN(rgbz_fast_exp)(const REAL *x, REAL *out, ptrdiff_t n)
     return RGBZ_OK;
 }
 
+#undef RSGSCALE
 #undef RCLIPPED
 #undef BLOOP
 #undef RFN

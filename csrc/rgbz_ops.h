@@ -188,12 +188,19 @@ static inline float rgbz_exp_poly_f32(float x)
        then zero the result below the normal range. NaN fails `x > -87` and takes the
        clamp (and the final 0). */
     const float xc = x > -87.0f ? x : -87.0f;
-    const float n = (xc * 1.44269504f + 12582912.0f) - 12582912.0f;   /* round to nearest */
+    /* t = 1.5 * 2^23 + n, n = x log2(e) rounded to nearest: t lies in [2^23, 2^24), where
+       floats are the integers, so that the low bits of t are n */
+    const float t = xc * 1.44269504f + 12582912.0f;
+    const float n = t - 12582912.0f;
     /* Cody-Waite: r = x - n*ln2 with ln2 split in two, exact in float */
     const float y = (xc - n * 0.693359375f) - n * -2.12194440e-4f;
     const float p = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6 + y * (1.0f / 24 + y * (1.0f / 120 + y * (1.0f / 720))))));
-    const int32_t e = (int32_t)n + 127;
-    const uint32_t bits = (uint32_t)e << 23;
+    /* 2^n: the exponent field n + 127 (in [1, 127] for x in [-87, 0]), from the bits of t,
+       bits(1.5 * 2^23) + n, shifted by 23 (the shift drops bits(1.5 * 2^23), a multiple of
+       2^9): one shift and one add, no float-to-integer conversion */
+    uint32_t tbits;
+    memcpy(&tbits, &t, sizeof tbits);
+    const uint32_t bits = (tbits << 23) + (127u << 23);
     float scale;
     memcpy(&scale, &bits, sizeof scale);
     return x > -87.0f ? p * scale : 0.0f;
