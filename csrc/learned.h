@@ -54,6 +54,9 @@ typedef struct {
        the Z sites and in column 7, [n_phases][n_buckets][2 radius + 1][8] */
     const float *wd_f32;
     const double *wd_f64;
+    /* precision FIXED only (NULL for the others): the integer hash constants, the quantised
+       weights and the streaming state (hw_learned.h) */
+    const struct rgbz_learned_fixed_args *fixed;
 } rgbz_learned_filters;
 
 /*

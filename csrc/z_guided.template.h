@@ -111,10 +111,9 @@ static const double *ZG_CAT(zg_cells_get, IS, RS)(zg_cells *st, const rgbz_zguid
 
 /* the buckets of the n sites whose taps are v[t][j] (phase k): learned.h's octant,
    strength, coherence and channel spread of the direction and colour energies */
-RGBZ_CLONES_512
-static void ZG_CAT(zg_hash, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
-                                    const rgbz_learned_filters *h, int k,
-                                    int32_t *restrict bucket)
+RGBZ_INLINE void ZG_CAT(zg_hash_n, IS, RS)(REAL (*restrict v)[ZG_BLK], const int n,
+                                           const rgbz_learned_filters *h, int k,
+                                           int32_t *restrict bucket)
 {
     REAL e[RGBZ_LEARNED_DIRS][ZG_BLK];
     REAL ec[3][ZG_BLK];
@@ -209,9 +208,19 @@ static void ZG_CAT(zg_hash, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     }
 }
 
+/* zg_hash_n with the block's size a constant for a whole block (so that every loop over the
+   sites runs as whole vectors, without a remainder; the same arithmetic per site) */
+RGBZ_CLONES_512
+static void ZG_CAT(zg_hash, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
+                                    const rgbz_learned_filters *h, int k,
+                                    int32_t *restrict bucket)
+{
+    if (n == ZG_BLK) ZG_CAT(zg_hash_n, IS, RS)(v, ZG_BLK, h, k, bucket);
+    else ZG_CAT(zg_hash_n, IS, RS)(v, n, h, k, bucket);
+}
+
 /* res[j] = sum_t w[t][bucket[j]] * v[t][j], in the order of t */
-RGBZ_CLONES_512 ZG_NOJAM_FN
-static void ZG_CAT(zg_colour_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
+RGBZ_INLINE ZG_NOJAM_FN void ZG_CAT(zg_colour_dot_n, IS, RS)(REAL (*restrict v)[ZG_BLK], const int n,
                                           const REAL *restrict w, int n_taps,
                                           ptrdiff_t n_buckets, const int32_t *restrict bucket,
                                           REAL *restrict res)
@@ -224,11 +233,21 @@ static void ZG_CAT(zg_colour_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     }
 }
 
+/* zg_colour_dot_n with the block's size a constant for a whole block */
+RGBZ_CLONES_512 ZG_NOJAM_FN
+static void ZG_CAT(zg_colour_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
+                                          const REAL *restrict w, int n_taps,
+                                          ptrdiff_t n_buckets, const int32_t *restrict bucket,
+                                          REAL *restrict res)
+{
+    if (n == ZG_BLK) ZG_CAT(zg_colour_dot_n, IS, RS)(v, ZG_BLK, w, n_taps, n_buckets, bucket, res);
+    else ZG_CAT(zg_colour_dot_n, IS, RS)(v, n, w, n_taps, n_buckets, bucket, res);
+}
+
 /* the values res[j] of the n sites x0, x0 + px, ... of phase k (taps v[t][j], hash buckets
    bucket[j]) in tile row cells ix0, ix0 + 1, ... (clamped to the grid): the colour dot
    product of bucket level * n_hash + bucket, then the guide term of the cell terms cell */
-RGBZ_CLONES_512
-static void ZG_CAT(zg_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
+RGBZ_INLINE void ZG_CAT(zg_dot_n, IS, RS)(REAL (*restrict v)[ZG_BLK], const int n,
                                    const rgbz_zguided_filters *f, int k,
                                    const int32_t *restrict bucket, ptrdiff_t ix0,
                                    const double *restrict cell, const int32_t *restrict level,
@@ -281,10 +300,22 @@ static void ZG_CAT(zg_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
     }
 }
 
+/* zg_dot_n with the block's size a constant for a whole block */
+RGBZ_CLONES_512
+static void ZG_CAT(zg_dot, IS, RS)(REAL (*restrict v)[ZG_BLK], int n,
+                                   const rgbz_zguided_filters *f, int k,
+                                   const int32_t *restrict bucket, ptrdiff_t ix0,
+                                   const double *restrict cell, const int32_t *restrict level,
+                                   REAL *restrict res)
+{
+    if (n == ZG_BLK) ZG_CAT(zg_dot_n, IS, RS)(v, ZG_BLK, f, k, bucket, ix0, cell, level, res);
+    else ZG_CAT(zg_dot_n, IS, RS)(v, n, f, k, bucket, ix0, cell, level, res);
+}
+
 /* the taps v[t][j] of the n sites x0, x0 + PX, ... of phase k inside the row (PX a
    constant where it is inlined, so that the strided loads vectorise) */
 RGBZ_INLINE void ZG_CAT(zg_gather_in, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0,
-                                              const int PX, int n, const int32_t *tdy,
+                                              const int PX, const int n, const int32_t *tdy,
                                               const int32_t *tdx, int nt, int R,
                                               REAL (*restrict v)[ZG_BLK])
 {
@@ -308,8 +339,14 @@ static void ZG_CAT(zg_gather, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int
     const ptrdiff_t xl = x0 + (ptrdiff_t)(n - 1) * px;
     if (x0 - R >= 0 && xl + R < cols) {
         switch (px) {   /* the periods of Mask1 and Mask2, unrolled */
-        case 2: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 2, n, tdy, tdx, nt, R, v); break;
-        case 4: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, n, tdy, tdx, nt, R, v); break;
+        case 2:
+            if (n == ZG_BLK) ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 2, ZG_BLK, tdy, tdx, nt, R, v);
+            else ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 2, n, tdy, tdx, nt, R, v);
+            break;
+        case 4:
+            if (n == ZG_BLK) ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, ZG_BLK, tdy, tdx, nt, R, v);
+            else ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, 4, n, tdy, tdx, nt, R, v);
+            break;
         default: ZG_CAT(zg_gather_in, IS, RS)(rowp, x0, px, n, tdy, tdx, nt, R, v);
         }
     } else {

@@ -3,13 +3,16 @@
     python tools/hardware_report.py [--kodak DIR] [--extra DIR] [--out docs/reports]
 
 Sections: the default configuration and its search (from
-docs/reports/figures/hardware_search.json, which tools/hardware_default.py writes);
-the targets on Kodak (every method and mask, both protocols of `rgbz-fast hardware`);
+docs/reports/figures/hardware_search.json, which tools/hardware_default.py writes,
+and hardware_search_learned.json, which `tools/hardware_default.py --method learned`
+writes: the learned filters' fields and their hash buckets that flip);
+the targets on Kodak (every method and mask, learned on every Bayer phase of both
+masks, both protocols of `rgbz-fast hardware`);
 the same on an independent set (CBSD68) and on the default dataset the search used;
 the cost of every method and mask at 4000 pixels; the full `rgbz-fast hardware` report
-of SG on both masks; the sweep of SG on both masks (`rgbz-fast hardware --sweep`: table
-and plot) with its time. The page and its figures are written to temporary files and
-renamed.
+of SG and learned on both masks; the sweep of SG and learned on both masks
+(`rgbz-fast hardware --sweep`: table and plot) with its time. The page and its figures
+are written to temporary files and renamed.
 """
 
 from __future__ import annotations
@@ -33,6 +36,9 @@ from rgbz_fast.io import atomic_write
 REPO = Path(__file__).resolve().parents[1]
 METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
 MASKS = ("mask1", "mask2")
+#: the learned filters on every Bayer phase of both masks they cover
+LEARNED_PATTERNS = tuple(f"{m}{ph}" for m in MASKS for ph in ("", "_rggb", "_bggr", "_gbrg"))
+LEARNED_FIELDS = ("tap_bits", "hash_const_bits", "hash_bits", "hash_norm_bits")
 
 
 def _cpu():
@@ -46,24 +52,25 @@ def _cpu():
 
 
 def target_table(images, label):
-    """Rows method x mask x protocol of the default configuration against float64."""
+    """Rows method x mask x protocol of the default configuration against float64 (learned:
+    every Bayer phase of both masks)."""
     out = [f"### {label}", "",
            "| method | mask | protocol | CFA PSNR float64 (dB) | fixed - float64 (dB, mean) | "
            "worst image (dB) | within 1 LSB | max abs diff (LSB) | target |",
            "|---|---|---|---|---|---|---|---|---|"]
     worst = {"dpsnr": 0.0, "within": 100.0}
-    for m in METHODS:
-        for p in MASKS:
-            cases = H.prepare_cases(images, p, m)
-            err = H.measure_error(cases, m, FixedPointConfig())
-            for proto, e in err.items():
-                ok = H.meets_target({proto: e})
-                worst["dpsnr"] = max(worst["dpsnr"], abs(e["dpsnr_mean"]))
-                worst["within"] = min(worst["within"], e["within_1lsb_pct"])
-                out.append(f"| {m} | {p} | {proto} | {e['psnr_float']:.3f} | "
-                           f"{e['dpsnr_mean']:+.4f} | {e['dpsnr_max_abs']:.4f} | "
-                           f"{e['within_1lsb_pct']:.3f} % | {e['max_abs_lsb']} | "
-                           f"{'met' if ok else 'MISSED'} |")
+    for m, p in [(m, p) for m in METHODS for p in MASKS] + \
+            [("learned", p) for p in LEARNED_PATTERNS]:
+        cases = H.prepare_cases(images, p, m)
+        err = H.measure_error(cases, m, FixedPointConfig())
+        for proto, e in err.items():
+            ok = H.meets_target({proto: e})
+            worst["dpsnr"] = max(worst["dpsnr"], abs(e["dpsnr_mean"]))
+            worst["within"] = min(worst["within"], e["within_1lsb_pct"])
+            out.append(f"| {m} | {p} | {proto} | {e['psnr_float']:.3f} | "
+                       f"{e['dpsnr_mean']:+.4f} | {e['dpsnr_max_abs']:.4f} | "
+                       f"{e['within_1lsb_pct']:.3f} % | {e['max_abs_lsb']} | "
+                       f"{'met' if ok else 'MISSED'} |")
     out += ["", f"Worst over the table: |mean change| {worst['dpsnr']:.4f} dB, "
             f"{worst['within']:.3f} % of Z sites within 1 LSB.", ""]
     return out
@@ -109,7 +116,7 @@ def vitis_table():
     """Our design at the 4K width of the Vitis figures, 11 and 16 bits."""
     out = ["| method | mask | bits | line buffers (BRAM_18K) | tables (bits; BRAM_18K if in block "
            "RAM) | variable multipliers | DSP48E2 (estimate) |", "|---|---|---|---|---|---|---|"]
-    for m in ("bilinear", "sg"):
+    for m in ("bilinear", "sg", "learned"):
         for p in MASKS:
             for b in (11, 16):
                 cfg = FixedPointConfig.for_bit_depth(b)
@@ -125,16 +132,58 @@ def cost_table():
     out = ["| method | mask | line buffers (BRAM_18K) | tables (bits) | datapath (bits) | "
            "total (bits) | multipliers | DSP48E2 | table reads per site (1/x, exp) | "
            "latency | longest path (operations) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for m in METHODS:
+    for m in (*METHODS, "learned"):
         for p in MASKS:
             c = hardware_cost(p, m, width=4000)
             reads = (c.tables.get("recip", {}).get("reads_per_site", 0),
                      c.tables.get("exp", {}).get("reads_per_site", 0))
+            if m == "learned":
+                reads = ("ROM", 1)
             out.append(f"| {m} | {p} | {c.line_buffers} x 4000 x 11 ({c.line_buffer_bram18}) | "
                        f"{c.table_bits} | {c.datapath_bits} | {c.total_bits} | "
                        f"{sum(c.multipliers().values())} | {c.dsp48()} | {reads[0]}, {reads[1]} | "
                        f"{c.latency_rows} rows + {c.latency_pixels} px | {c.depth} |")
     return out
+
+
+def learned_search_section(search, held_out=None):
+    """The learned filters' fields: the search and the hash buckets that flip (``held_out``:
+    the flips at the default on Kodak, measured by this tool)."""
+    m, d = search["margin"], search["default"]
+    out = ["### The learned filters' fields", "",
+           f"Found by `python tools/hardware_default.py --method learned` in "
+           f"{search['seconds']} s ({len(search['evaluated'])} configurations evaluated): one "
+           f"coordinate descent from {', '.join(f'{k}={v}' for k, v in search['start'].items())}"
+           f" over {', '.join(search['fields'])} (in that order), each narrowed to the smallest "
+           f"value that keeps, on every Bayer phase of both masks "
+           f"({', '.join(search['patterns'])}) and both protocols of the calibration images, "
+           f"at least {m['within_1lsb_pct']} % of the Z sites within 1 LSB of float64, the mean "
+           f"CFA PSNR within {m['dpsnr_db']} dB and every image within {m['image_dpsnr_db']} dB; "
+           f"the cost is the learned model's table (filter ROM and hash constants) and datapath "
+           f"bits summed over Mask1 and Mask2. Result: "
+           f"{', '.join(f'{k}={v}' for k, v in d.items())} ({search['cost_bits']} bits).", "",
+           "Hash buckets that flip: a Z site whose bucket in the fixed model differs from the "
+           "float64 hash of the filters' specification gets another filter. The share of such "
+           "sites, and the error there and elsewhere (|fixed - float64| in LSB), at the default "
+           "and at the wide start of the search:", "",
+           "| images | configuration | protocol | Z sites | flipped | within 1 LSB where "
+           "flipped | mean abs diff where flipped | within 1 LSB elsewhere | sites > 1 LSB: "
+           "flipped / elsewhere |", "|---|---|---|---|---|---|---|---|---|"]
+    names = {"calibration": ("calibration", "default"),
+             "calibration_wide_start": ("calibration", "wide start"),
+             "check": ("Kodak (held out)", "default"),
+             "check_wide_start": ("Kodak (held out)", "wide start")}
+    flips = dict(search["bucket_flips"])
+    if held_out is not None:
+        flips["check"] = held_out
+    for key, (imgs, cfg) in names.items():
+        for proto, e in flips.get(key, {}).items():
+            out.append(f"| {imgs} | {cfg} | {proto} | {e['sites']} | {e['flipped']} "
+                       f"({e['flipped_pct']:.4f} %) | {e['flipped_within_1lsb_pct']:.1f} % | "
+                       f"{e['flipped_mean_abs_lsb']:.2f} | {e['other_within_1lsb_pct']:.4f} % | "
+                       f"{e['sites_beyond_1lsb_from_flips']} / "
+                       f"{e['sites_beyond_1lsb_other']} |")
+    return out + [""]
 
 
 def main(argv=None):
@@ -181,6 +230,7 @@ def main(argv=None):
                                                                            "register_bits"))
             lines.append(f"| {c['exp']} | {c['recip']} | {r['cost_bits']} | {rest} |")
         lines.append("")
+    learned_at = len(lines)     # the learned search's section, read when the page is done
     kodak = H.load_images(args.kodak) if args.kodak.exists() else None
     lines += ["## The targets", "",
               "Target: the default configuration within 0.05 dB of float64's mean CFA PSNR "
@@ -216,21 +266,31 @@ def main(argv=None):
               "RAM, so the BRAM column is an upper bound; FF and LUT counts need a synthesis "
               "run, not given here:", ""]
     lines += vitis_table() + [""]
-    lines += ["## `rgbz-fast hardware --method sg` on both masks (Kodak)", ""]
-    for p in MASKS:
-        rep = H.hardware_report("sg", p, width=4000, images=kodak or None)
-        lines += [H.format_report(rep).replace("## ", "### ", 1), ""]
-    lines += ["## The sweep: quality against cost (SG, default dataset)", ""]
-    for p in MASKS:
-        ts = time.perf_counter()
-        rows = H.run_sweep("sg", p)
-        secs = time.perf_counter() - ts
-        fig = figs / f"hardware_sweep_sg_{p}.png"
-        atomic_write(fig, hardware_sweep_plot(rows, f"SG on {p}: fixed vs float64, "
-                                                    "default dataset"))
-        lines += [f"### {p}: `rgbz-fast hardware --method sg --pattern {p} --sweep` "
-                  f"({len(rows)} configurations, {secs:.0f} s)", "",
-                  f"![sweep](figures/{fig.name})", "", H.format_sweep(rows), ""]
+    for m, name in (("sg", "SG"), ("learned", "learned")):
+        lines += [f"## `rgbz-fast hardware --method {m}` on both masks (Kodak)", ""]
+        for p in MASKS:
+            rep = H.hardware_report(m, p, width=4000, images=kodak or None)
+            lines += [H.format_report(rep).replace("## ", "### ", 1), ""]
+    for m, name in (("sg", "SG"), ("learned", "learned")):
+        lines += [f"## The sweep: quality against cost ({name}, default dataset)", ""]
+        for p in MASKS:
+            ts = time.perf_counter()
+            rows = H.run_sweep(m, p)
+            secs = time.perf_counter() - ts
+            fig = figs / f"hardware_sweep_{m}_{p}.png"
+            atomic_write(fig, hardware_sweep_plot(rows, f"{name} on {p}: fixed vs float64, "
+                                                        "default dataset"))
+            lines += [f"### {p}: `rgbz-fast hardware --method {m} --pattern {p} --sweep` "
+                      f"({len(rows)} configurations, {secs:.0f} s)", "",
+                      f"![sweep](figures/{fig.name})", "", H.format_sweep(rows), ""]
+    held_out = None
+    if kodak:
+        from hardware_default import LEARNED_PATTERNS as PHASES, bucket_flips
+        held_out = bucket_flips(kodak, PHASES, FixedPointConfig())
+    learned_path = figs / "hardware_search_learned.json"
+    if learned_path.exists():
+        lines[learned_at:learned_at] = learned_search_section(
+            json.loads(learned_path.read_text()), held_out)
     lines += [f"Whole page: {time.perf_counter() - t0:.0f} s; load average "
               f"{os.getloadavg()[0]:.2f} after the run."]
     page = args.out / "hardware.md"

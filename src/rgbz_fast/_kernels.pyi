@@ -133,6 +133,14 @@ def reconstruct_fixed(src: np.ndarray, dst: np.ndarray, py: int, px: int,
                       plan_map: np.ndarray, plans: np.ndarray, n_plans: int, hw: np.ndarray,
                       cfg: np.ndarray, exp_table: np.ndarray, recip_table: np.ndarray,
                       state: np.ndarray) -> None: ...
+def hwl_layout() -> tuple[int, ...]: ...
+def learned_fixed(src: np.ndarray, dst: np.ndarray, py: int, px: int, phase_map: np.ndarray,
+                  n_taps: np.ndarray, tap_dy: np.ndarray, tap_dx: np.ndarray,
+                  n_pairs: np.ndarray, pair_a: np.ndarray, pair_b: np.ndarray,
+                  pair_col: np.ndarray, n_str: int, n_coh: int, n_spr: int, radius: int,
+                  cfg: np.ndarray, knorm: np.ndarray, kcol: np.ndarray, str_q: np.ndarray,
+                  coh_q: np.ndarray, spr_q: np.ndarray, wq: np.ndarray, maxval: float,
+                  state: np.ndarray) -> None: ...
 
 # sensor simulation (csrc/sim.c)
 def sim_key(words: np.ndarray, stream: int) -> tuple[int, int, int, int]: ...

@@ -346,6 +346,77 @@ def reconstruct_fixed(const int_frame_t[:, ::1] src, int_frame_t[:, ::1] dst, in
     _raise_for(status)
 
 
+def hwl_layout():
+    """(sizeof rgbz_hwl_config, sizeof rgbz_hwl_state, max width, max period, max radius) as
+    compiled (csrc/hw_learned.h)."""
+    cdef int64_t out[5]
+    _raise_for(rgbz_hwl_layout(out, 5))
+    return tuple(out[i] for i in range(5))
+
+
+def learned_fixed(const int_frame_t[:, ::1] src, int_frame_t[:, ::1] dst, int py, int px,
+                  const int32_t[::1] phase_map, const int32_t[::1] n_taps,
+                  const int32_t[:, ::1] tap_dy, const int32_t[:, ::1] tap_dx,
+                  const int32_t[:, ::1] n_pairs, const int32_t[:, :, ::1] pair_a,
+                  const int32_t[:, :, ::1] pair_b, const int32_t[:, :, ::1] pair_col,
+                  int n_str, int n_coh, int n_spr, int radius, const uint8_t[::1] cfg,
+                  const int64_t[:, ::1] knorm, const int64_t[:, ::1] kcol,
+                  const int64_t[::1] str_q, const int64_t[::1] coh_q, const int64_t[::1] spr_q,
+                  const int32_t[:, :, ::1] wq, double maxval, uint8_t[::1] state):
+    """Run the learned filters' entry point of precision fixed (rgbz_learned_fixed, the
+    fixed-point streaming model of csrc/hw_learned.h): the geometry of the filters
+    (as for :func:`learned`), ``cfg`` the rgbz_hwl_config bytes, the integer hash constants
+    (thresholds flattened, one int64 at least each), the quantised weights (n_phases,
+    n_buckets, n_taps_max), and ``state`` (sizeof rgbz_hwl_state bytes)."""
+    cdef int status
+    cdef int in_type = RGBZ_T_U8 if int_frame_t is uint8_t else RGBZ_T_U16
+    cdef rgbz_learned_fn *kernel = _kernels_of(RGBZ_P_FIXED).learned
+    cdef rgbz_learned_fixed_args args
+    cdef rgbz_learned_filters f
+    if kernel == NULL:
+        raise ValueError("precision: this module has no learned kernel of precision 'fixed'")
+    if (tap_dy.shape[0] != n_taps.shape[0] or tap_dx.shape[0] != n_taps.shape[0]
+            or tap_dy.shape[1] != wq.shape[2] or tap_dx.shape[1] != wq.shape[2]
+            or n_pairs.shape[0] != n_taps.shape[0] or n_pairs.shape[1] != 4
+            or pair_a.shape[0] != n_taps.shape[0] or pair_b.shape[2] != pair_a.shape[2]
+            or pair_col.shape[2] != pair_a.shape[2] or wq.shape[0] != n_taps.shape[0]
+            or knorm.shape[0] != n_taps.shape[0] or knorm.shape[1] != 4
+            or kcol.shape[0] != n_taps.shape[0] or kcol.shape[1] != 3
+            or str_q.shape[0] < max(n_taps.shape[0] * (n_str - 1), 1)
+            or coh_q.shape[0] < max(n_taps.shape[0] * (n_coh - 1), 1)
+            or spr_q.shape[0] < max(n_taps.shape[0] * (n_spr - 1), 1)
+            or state.shape[0] < hwl_layout()[1]):
+        raise ValueError("learned_fixed: inconsistent arrays")
+    memset(&f, 0, sizeof(f))            # the float members are not read by this precision
+    f.n_phases = wq.shape[0]
+    f.n_buckets = wq.shape[1]
+    f.n_taps_max = wq.shape[2]
+    f.n_pairs_max = pair_a.shape[2]
+    f.n_str, f.n_coh, f.n_spr = n_str, n_coh, n_spr
+    f.radius = radius
+    f.hash_radius = radius
+    f.n_taps = &n_taps[0]
+    f.tap_dy = &tap_dy[0, 0]
+    f.tap_dx = &tap_dx[0, 0]
+    f.n_pairs = &n_pairs[0, 0]
+    f.pair_a = &pair_a[0, 0, 0]
+    f.pair_b = &pair_b[0, 0, 0]
+    f.pair_col = &pair_col[0, 0, 0]
+    args.cfg = <const rgbz_hwl_config *> &cfg[0]
+    args.knorm = &knorm[0, 0]
+    args.kcol = &kcol[0, 0]
+    args.str_q = &str_q[0]
+    args.coh_q = &coh_q[0]
+    args.spr_q = &spr_q[0]
+    args.wq = &wq[0, 0, 0]
+    args.state = <rgbz_hwl_state *> &state[0]
+    f.fixed = &args
+    with nogil:
+        status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
+                        &phase_map[0], &f, maxval, 1, NULL)
+    _raise_for(status)
+
+
 # ---------------------------------------------------------------------- sensor simulation (sim.c)
 cdef extern from "sim.h" nogil:
     ctypedef struct rgbz_sim_noise:

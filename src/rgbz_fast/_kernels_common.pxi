@@ -21,6 +21,23 @@ cdef extern from "hw_recon.h" nogil:
         rgbz_hw_state *state
     int rgbz_hw_layout(int64_t *out, int n)
 
+# what the learned filters' entry point of precision fixed reads (csrc/hw_learned.h)
+cdef extern from "hw_learned.h" nogil:
+    ctypedef struct rgbz_hwl_config:
+        pass
+    ctypedef struct rgbz_hwl_state:
+        pass
+    ctypedef struct rgbz_learned_fixed_args:
+        const rgbz_hwl_config *cfg
+        const int64_t *knorm
+        const int64_t *kcol
+        const int64_t *str_q
+        const int64_t *coh_q
+        const int64_t *spr_q
+        const int32_t *wq
+        rgbz_hwl_state *state
+    int rgbz_hwl_layout(int64_t *out, int n)
+
 cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_status:
         RGBZ_OK
@@ -134,12 +151,14 @@ cdef extern from "learned.h" nogil:
         const double *w_f64
         const float *wd_f32
         const double *wd_f64
+        const rgbz_learned_fixed_args *fixed
     ctypedef int rgbz_learned_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
                                  Py_ssize_t cols, int py, int px, const int32_t *phase_map,
                                  const rgbz_learned_filters *f, double maxval, int workers,
                                  uint64_t *opcounts) noexcept
     rgbz_learned_fn rgbz_learned_f32
     rgbz_learned_fn rgbz_learned_f64
+    rgbz_learned_fn rgbz_learned_fixed
 ctypedef fused frame_t:
     uint8_t
     uint16_t
@@ -243,12 +262,13 @@ cdef _precision_kernels _kernels_of(int precision) except *:
         k.reconstruct, k.learned = rgbz_reconstruct_f64, rgbz_learned_f64
         k.zguided = rgbz_zguided_f64
     elif precision == RGBZ_P_FIXED:
-        # the integer streaming model (hw_recon.h): no learned filters yet, and nothing the
-        # counting build counts (its operations are rgbz_fast.hardware's, from the plans)
-        k.reconstruct, k.learned = rgbz_reconstruct_fixed, NULL
+        # the integer streaming models (hw_recon.h, hw_learned.h): no z_guided one, and
+        # nothing the counting build counts (their operations are rgbz_fast.hardware's, from
+        # the plans and filters)
+        k.reconstruct, k.learned = rgbz_reconstruct_fixed, rgbz_learned_fixed
         k.zguided = NULL
         if rgbz_counting_build():
-            k.reconstruct = NULL
+            k.reconstruct, k.learned = NULL, NULL
     else:
         raise ValueError(f"precision: expected a code of PRECISIONS {PRECISIONS}, "
                          f"got {precision}")
@@ -376,9 +396,10 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     cdef rgbz_learned_filters f
     cdef rgbz_learned_fn *kernel = _kernels_of(precision).learned
     cdef double zero = 0.0
-    if kernel == NULL:
+    if kernel == NULL or precision == RGBZ_P_FIXED:
+        # precision fixed runs through learned_fixed, which hands over its integer constants
         raise ValueError(f"precision: the learned filters have no kernel of precision code "
-                         f"{precision}")
+                         f"{precision} here")
     f.n_phases = w_f32.shape[0]
     f.n_taps_max = w_f32.shape[1]
     f.n_buckets = w_f32.shape[2]
@@ -405,6 +426,7 @@ def learned(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int p
     f.w_f64 = &w_f64[0, 0, 0]
     f.wd_f32 = NULL
     f.wd_f64 = NULL
+    f.fixed = NULL
     if wd_f32 is not None and wd_f64 is not None:
         if (wd_f32.shape[0] != f.n_phases or wd_f32.shape[1] != f.n_buckets
                 or wd_f32.shape[2] != 2 * radius + 1 or wd_f32.shape[3] != 8
@@ -505,6 +527,7 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     h.w_f64 = NULL
     h.wd_f32 = NULL
     h.wd_f64 = NULL
+    h.fixed = NULL
     f.hash = &h
     f.n_levels = w_f32.shape[2] // h.n_buckets
     f.w_f32 = &w_f32[0, 0, 0]

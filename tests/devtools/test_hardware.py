@@ -100,3 +100,27 @@ def test_the_default_meets_the_target_on_real_images(source):
         for m in FIXED_METHODS:
             err = H.measure_error(H.prepare_cases(imgs, pattern, m), m, FixedPointConfig())
             assert H.meets_target(err), (pattern, m, err)
+
+
+def test_learned_sweep_configurations_cover_its_fields():
+    labels = [lab for lab, _ in H.sweep_configs(FixedPointConfig(), "learned")]
+    for field in H.SWEEP_LEARNED:
+        assert any(lab.startswith(field + "=") for lab in labels), field
+    assert "every width -2" in labels and not any(lab.startswith("exp=") for lab in labels)
+
+
+@pytest.mark.parametrize("source", ["samples", "kodak"])
+def test_the_learned_default_meets_the_target_on_real_images(source):
+    """The learned filters' default fields within the target of float64 on every Bayer phase
+    of both masks, both protocols: centre crops of two images the search used and of two it
+    did not (Kodak)."""
+    from _support import load_kodak
+
+    if source == "kodak":
+        imgs = [(f"kodim{n:02d}", load_kodak(n, (192, 192))) for n in (5, 19)]
+    else:
+        imgs = [(n, img[:192, :192]) for n, img in H.load_images()[:2]]
+    for pattern in ("mask1", "mask1_bggr", "mask2", "mask2_rggb", "mask2_gbrg"):
+        err = H.measure_error(H.prepare_cases(imgs, pattern, "learned"), "learned",
+                              FixedPointConfig())
+        assert H.meets_target(err), (pattern, err)

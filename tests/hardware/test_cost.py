@@ -71,7 +71,7 @@ def test_tables_and_totals():
 
 def test_bad_arguments_name_the_parameter():
     with pytest.raises(ValueError, match="method: expected one of 'bilinear'"):
-        hardware_cost("mask1", "learned")
+        hardware_cost("mask1", "z_guided")
     with pytest.raises(ValueError, match="width: expected an integer >= 1 and <= 16384"):
         hardware_cost("mask1", "sg", width=20000)
     with pytest.raises(ValueError, match="register_bits: the register"):

@@ -165,7 +165,7 @@ def test_refusals_name_the_parameter():
     data = np.zeros((8, 8), np.uint16)
     with pytest.raises(TypeError, match="frame: precision='fixed' takes integer frames"):
         rz.reconstruct(data.astype(np.float32), "sg", pattern="mask1", precision="fixed")
-    for m in ("learned", "edi_rows"):
+    for m in ("z_guided", "edi_rows"):
         with pytest.raises(ValueError, match=f"method: precision='fixed' has no model of '{m}'"):
             rz.reconstruct(data, m, pattern="mask2", precision="fixed")
     with pytest.raises(ValueError, match="clip_level: precision='fixed' has no clipped-pixel"):
@@ -255,8 +255,9 @@ def test_exp_table_runs_the_same_model_and_is_refused_for_the_floats(rng):
 def test_the_c_dispatch_takes_the_fixed_precision():
     """precision 'fixed' is the third entry of the C precisions (RGBZ_PRECISIONS): its entry
     point runs through the bridge's one switch, with its tables and line buffers in
-    rgbz_params; the shared reconstruct bridge, the learned kernel and the counting module
-    have none and refuse it naming the precision."""
+    rgbz_params; the learned filters' one (learned_fixed) likewise with its integer constants;
+    the shared reconstruct and learned bridges (which hand over no such constants) and the
+    counting module refuse it naming the precision."""
     from rgbz_fast import _kernels, _kernels_count
     from rgbz_fast.reconstruction._plans import build_plans
 
@@ -265,6 +266,7 @@ def test_the_c_dispatch_takes_the_fixed_precision():
     assert _kernels_count.PRECISIONS == _kernels.PRECISIONS
     assert hasattr(_kernels, "reconstruct_fixed") and \
         not hasattr(_kernels_count, "reconstruct_fixed")
+    assert hasattr(_kernels, "learned_fixed") and not hasattr(_kernels_count, "learned_fixed")
     d = np.zeros((8, 8), np.uint16)
     phase_map, plans = build_plans(rz.mask1(), "bi")
     for k in (_kernels, _kernels_count):

@@ -23,7 +23,7 @@ operations per pixel beside the paper's Table 1 and the float core's.
 quality against cost (a table, its Pareto front, and with --out a plot)."""
 
 #: the methods the fixed-point model runs
-METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
 
 
 def fixed_fields(text):
@@ -82,7 +82,7 @@ def run(args):
     if args.sweep:
         from .._devtools.plots import hardware_sweep_plot
 
-        configs = hw.sweep_configs(config)
+        configs = hw.sweep_configs(config, args.method)
         ticks = iter(progress(range(len(configs)), total=len(configs), desc="sweep",
                               quiet=args.quiet))
         rows = hw.run_sweep(args.method, pattern, width=args.width, images=images, base=config,

@@ -151,13 +151,35 @@ SWEEP = {
     "recip_table_size": (0.25, 0.5, 2, 4),
     "exp_table_size": (0.25, 0.5, 2, 4),
 }
+#: the same for the fields of the learned filters' model
+SWEEP_LEARNED = {
+    "tap_bits": (-4, -2, -1, 1, 2),
+    "hash_bits": (-6, -3, -1, 2),
+    "hash_const_bits": (-6, -3, -1, 2),
+    "hash_norm_bits": (-6, -3, -1, 2),
+}
 
 
-def sweep_configs(base):
-    """The base configuration, each field of SWEEP moved alone (values a field cannot take are
-    left out), the other table modes, and every width narrowed and widened by 2 bits together:
-    [(label, config)]."""
+def sweep_configs(base, method="sg"):
+    """The base configuration, each field of SWEEP (``method="learned"``: SWEEP_LEARNED) moved
+    alone (values a field cannot take are left out), the other table modes, and every width
+    narrowed and widened by 2 bits together: [(label, config)]."""
     out = [("default", base)]
+    if method == "learned":
+        for field, steps in SWEEP_LEARNED.items():
+            for step in steps:
+                try:
+                    out.append((f"{field}={getattr(base, field) + step}",
+                                base.replace(**{field: getattr(base, field) + step})))
+                except ValueError:
+                    continue
+        for step in (-2, 2):
+            try:
+                out.append((f"every width {step:+d}", base.replace(
+                    **{f: getattr(base, f) + step for f in SWEEP_LEARNED})))
+            except ValueError:
+                continue
+        return out
     for field, steps in SWEEP.items():
         for step in steps:
             cur = getattr(base, field)
@@ -188,7 +210,7 @@ def run_sweep(method="sg", pattern="mask1", *, width=4000, images=None, params=N
     images = load_images() if images is None else images
     cases = prepare_cases(images, pattern, method, protocols, params)
     rows = []
-    for label, cfg in (configs or sweep_configs(base)):
+    for label, cfg in (configs or sweep_configs(base, method)):
         try:
             cost = hardware_cost(pattern, method, width=width, bit_depth=bit_depth,
                                  params=params, fixed_point=cfg)
@@ -274,7 +296,7 @@ def format_report(rep):
                      f"{e['within_1lsb_pct']:.3f} % | {e['max_abs_lsb']} | "
                      + " ".join(str(v) for v in e["hist"].values()) + " |")
     lines += ["", "| operations per site | " + " | ".join(
-        ("add/sub", "mul", "div", "exp", "cmp", "abs", "table reads (1/x, exp)")) + " |",
+        ("add/sub", "mul", "div", "exp", "cmp", "abs", "table reads (1/x, exp; ROM)")) + " |",
         "|---" * 8 + "|"]
     ops = rep["opcounts"]
     for g, f in ops["fixed"].items():
@@ -282,7 +304,8 @@ def format_report(rep):
         adds = f.get("add", 0) + f.get("sub", 0)
         lines.append(f"| fixed, {g} | {adds} | {f.get('mul', 0)} (+{f.get('cmul', 0)} "
                      f"constant) | 0 | 0 | {f.get('cmp', 0)} | {f.get('abs', 0)} | "
-                     f"{f.get('recip_lookup', 0)}, {f.get('exp_lookup', 0)} |")
+                     f"{f.get('recip_lookup', 0)}, {f.get('exp_lookup', 0)}"
+                     + (f"; {f['rom_read']}" if f.get("rom_read") else "") + " |")
         if fl:
             lines.append(f"| float64, {g} | {fl['add']:g} | {fl['mul']:g} | {fl['div']:g} | "
                          f"{fl['exp']:g} | {fl['cmp']:g} | {fl['abs']:g} | - |")

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 from .._patterns import get_pattern
 from ..reconstruction import ReconstructParams
-from ..reconstruction._fixed import (FIXED_METHODS, LIMITS, _group_counts, fixed_setup,
+from ..reconstruction._fixed import (ALL_FIXED_METHODS, LIMITS, _group_counts, fixed_setup,
                                      hw_constants, register_widths)
 from ..reconstruction._fixed_config import FixedPointConfig
 from ..reconstruction._plans import build_plans
@@ -283,13 +283,15 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
     ----------
     pattern, method : str or Pattern, str
         A Bayer-derived pattern (periods up to 8) and one of bilinear, bi,
-        edi_central, edi_line, sg.
+        edi_central, edi_line, sg, learned (its filters: ``params.filters``, or
+        the shipped ones for the pattern).
     width : int
         Pixels per row (the depth of a line buffer), 1 .. 16384.
     bit_depth : int
         Bits per pixel (a line buffer's width), 1 .. 16.
     params : ReconstructParams, optional
-        The method's parameters (``sigma_floor``, ``sigma_rel``, ``sg_mode``).
+        The method's parameters (``sigma_floor``, ``sigma_rel``, ``sg_mode``;
+        ``filters`` for learned).
     fixed_point : FixedPointConfig or dict, optional
         The widths and tables; default ``params.fixed_point`` or
         :class:`FixedPointConfig`'s defaults.
@@ -312,7 +314,7 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
     """
     from .._validate import check_bit_depth, check_choice, check_int
     pattern = get_pattern(pattern)
-    method = check_choice(method, FIXED_METHODS, "method")
+    method = check_choice(method, ALL_FIXED_METHODS, "method")
     width = check_int(width, "width", lo=1, hi=LIMITS["max_width"])
     b = check_bit_depth(bit_depth)
     params = ReconstructParams.build(params)
@@ -322,6 +324,12 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
     if max(P, Q) > LIMITS["max_period"]:
         raise ValueError(f"pattern: the streaming model holds periods up to "
                          f"{LIMITS['max_period']}; {pattern.name!r} has {pattern.period}")
+    if method == "learned":
+        from ..reconstruction._learned import resolve_filters
+        from ..reconstruction._z_guided import learned_only
+        from ._cost_learned import learned_cost
+        filters = resolve_filters(learned_only(params.filters), pattern)
+        return learned_cost(pattern, filters, config, width=width, bit_depth=b)
     fixed_setup(pattern, method, params.sg_mode, config, b, params.sigma_floor,
                 params.sigma_rel)          # every width checked against register_bits
     plan_map, plans = build_plans(pattern, method, params.sg_mode, "intensity")

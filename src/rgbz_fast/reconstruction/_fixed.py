@@ -25,12 +25,14 @@ from .. import _kernels
 from ._fixed_config import FixedPointConfig
 from ._plans import NGROUPS, build_plans
 
-__all__ = ["HW_PLAN_DTYPE", "HW_CONFIG_DTYPE", "FIXED_METHODS", "Register", "tables",
+__all__ = ["HW_PLAN_DTYPE", "HW_CONFIG_DTYPE", "FIXED_METHODS", "ALL_FIXED_METHODS", "Register", "tables",
            "hw_constants", "register_widths", "fixed_setup", "run_fixed", "LIMITS",
            "check_fixed_call", "check_widths"]
 
-#: the methods the fixed-point model runs
+#: the methods of the plans' fixed-point model (csrc/hw_recon.c)
 FIXED_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg")
+#: every method precision "fixed" runs: the plans' and the learned filters' (csrc/hw_learned.c)
+ALL_FIXED_METHODS = (*FIXED_METHODS, "learned")
 _MAX_CAND = _kernels.PLAN_LIMITS["max_cand"]
 _LN2 = math.log(2.0)
 
@@ -324,9 +326,9 @@ def fixed_setup(pattern, method, sg_mode, config, bit_depth, sigma_floor, sigma_
 def check_fixed_call(data, pattern, method):
     """What the fixed-point model takes, refused by name before any work: a method it
     models, an integer frame no wider than its line buffers, a pattern of periods <= 8."""
-    if method not in FIXED_METHODS:
+    if method not in ALL_FIXED_METHODS:
         raise ValueError(f"method: precision='fixed' has no model of {method!r} yet; it runs "
-                         f"{', '.join(map(repr, FIXED_METHODS))}")
+                         f"{', '.join(map(repr, ALL_FIXED_METHODS))}")
     if data.dtype not in (np.uint8, np.uint16):
         raise TypeError(f"frame: precision='fixed' takes integer frames (uint8 or uint16), got "
                         f"{data.dtype}")

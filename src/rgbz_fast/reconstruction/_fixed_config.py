@@ -24,6 +24,10 @@ _BOUNDS = {
     "alpha_bits": (2, 30),
     "weight_bits": (2, 40),
     "register_bits": (8, 63),
+    "hash_norm_bits": (1, 24),
+    "hash_bits": (4, 30),
+    "hash_const_bits": (2, 30),
+    "tap_bits": (4, 32),
 }
 
 
@@ -33,9 +37,10 @@ class FixedPointConfig:
 
     The defaults are the narrowest configuration found to keep, with a margin,
     the model within 1 LSB of float64 at >= 99.9 % of the Z sites and within
-    0.05 dB of its CFA PSNR, for every method on Mask1 and Mask2 with 11-bit
-    frames (tools/hardware_default.py; docs/reports/hardware.md gives the
-    search and the numbers). Wider frames keep the relative error, so their
+    0.05 dB of its CFA PSNR, for every method on Mask1 and Mask2 (learned: every
+    Bayer phase of both) with 11-bit frames (tools/hardware_default.py, with
+    ``--method learned`` for the learned filters' fields;
+    docs/reports/hardware.md gives the searches and the numbers). Wider frames keep the relative error, so their
     error in LSB grows with the range: :meth:`for_bit_depth` widens the
     defaults for them.
 
@@ -84,6 +89,21 @@ class FixedPointConfig:
         The widest register the datapath may use, 8 .. 63 (the C model holds
         every register in a 64-bit integer). A plan and bit depth whose worst
         case needs a wider one is refused, naming the register.
+    hash_norm_bits : int
+        ``method="learned"``: bits of the constants round(2^N / n) that turn
+        the hash's sums of squared differences into means (N = this field),
+        1 .. 24.
+    hash_bits : int
+        ``method="learned"``: bits kept of the structure terms a, b, t and of
+        the colour energies after the normalising shift (their leading one
+        decides it) for the orientation, coherence and spread tests, 4 .. 30.
+    hash_const_bits : int
+        ``method="learned"``: fractional bits of cos and sin of 22.5 degrees
+        and of the quantised coherence (squared) and spread thresholds, 2 .. 30.
+    tap_bits : int
+        ``method="learned"``: signed width of a filter tap in the filter ROM,
+        4 .. 32; its fractional bits are the most that hold every weight of
+        the filters (a refit with larger weights keeps fewer).
 
     Examples
     --------
@@ -108,6 +128,10 @@ class FixedPointConfig:
     alpha_bits: int = 9
     weight_bits: int = 16
     register_bits: int = 63
+    hash_norm_bits: int = 18
+    hash_bits: int = 16
+    hash_const_bits: int = 14
+    tap_bits: int = 15
 
     def __post_init__(self):
         put = object.__setattr__
@@ -146,7 +170,8 @@ class FixedPointConfig:
         """
         extra = max(check_bit_depth(bit_depth) - 11, 0)
         base = cls()
-        widths = ("exp_bits", "recip_bits", "ratio_bits", "alpha_bits", "weight_bits")
+        widths = ("exp_bits", "recip_bits", "ratio_bits", "alpha_bits", "weight_bits",
+                  "tap_bits")
         tab = 1 << ((extra + 2) // 3)
         wide = {f: getattr(base, f) + extra for f in widths}
         wide.update(exp_table_size=base.exp_table_size * tab,

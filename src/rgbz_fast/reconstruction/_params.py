@@ -37,7 +37,7 @@ class ReconstructParams:
         fixed-point streaming model of a hardware implementation
         (``fixed_point`` sets its widths; docs/guide/hardware.md): integer
         frames (uint8, uint16), the methods bilinear, bi, edi_central,
-        edi_line and sg, the intensity domain, no ``clip_level``.
+        edi_line, sg and learned, the intensity domain, no ``clip_level``.
     sigma_floor : float
         Absolute floor of sigma in eq. 7 (DN), used when the smallest gradient
         is 0 (a flat area): > 0.

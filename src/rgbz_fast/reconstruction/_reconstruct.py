@@ -18,6 +18,7 @@ from .. import _kernels
 from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._validate import check_choice, check_workers, kernel_threads
 from ._fixed import check_fixed_call, run_fixed
+from ._fixed_learned import run_fixed_learned
 from ._learned import resolve_filters
 from ._z_guided import guide_grid, learned_only, resolve_z_filters
 from ._z_guided_kernel import run_z_guided
@@ -236,6 +237,9 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     src = np.ascontiguousarray(data)
     if params.precision == "fixed":
         check_fixed_call(src, pattern, method)
+        if method == "learned":
+            filters = resolve_filters(learned_only(params.filters), pattern)
+            return run_fixed_learned(src, out, pattern, filters, params.fixed_point, bd)
         return run_fixed(src, out, pattern, method, params, bd)
     if method == "learned":
         filters = resolve_filters(learned_only(params.filters), pattern)
