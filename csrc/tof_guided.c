@@ -718,8 +718,8 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
 typedef struct {
     const double *depth, *sigma;
     const uint8_t *usable;
-    const float *col, *cells;
-    int ncells;
+    const float *col, *cells, *ring;
+    int ncells, nring;
     ptrdiff_t R, C;
     double step2, k2, tol_k, contrast, side;
     int unflag;
@@ -862,7 +862,24 @@ static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
         all1 &= t > 1.0 - p->side;
     }
     const int pure = sig && ((near0 && all0) || (near1 && all1));
-    if (pure && p->unflag && p->ncells > 1) return;
+    if (pure && p->unflag && p->ncells > 1) {
+        /* The cells' colours place the edge to within a pixel at best (a Z pixel's colours
+           are interpolated from the colour pixels around it): a pure measurement also needs
+           every pixel bordering its Z pixel nearer its side's colour than the other's, else
+           the depth edge may cross the Z pixel and it is flagged flying. */
+        const int s1 = !(near0 && all0);
+        int ring_ok = 1;
+        for (int k = 0; k < p->nring; k++) {
+            const float *px = p->ring + (ptrdiff_t)k * 3 * N;
+            double t = 0.0;
+            for (int ch = 0; ch < 3; ch++) t += (px[ch * N + m] - cside[0][ch]) * axis[ch];
+            t /= contrast;                                /* contrast > 0: sig holds */
+            ring_ok &= s1 ? t > 0.5 : t < 0.5;
+        }
+        if (ring_ok) return;
+        p->flags[m] |= 8;
+        return;
+    }
     if (sig && (all0 || all1) && !near0 && !near1) {
         p->flags[m] |= 32;
         p->depth_out[m] = all0 ? dside[0] : dside[1];
@@ -872,16 +889,18 @@ static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
 }
 
 int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
-                     const float *col, const float *cells, int ncells, ptrdiff_t R,
-                     ptrdiff_t C, double step, double k, double contrast, double side,
-                     int unflag, uint8_t *flags, double *depth_out, int workers)
+                     const float *col, const float *cells, int ncells, const float *ring,
+                     int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,
+                     double contrast, double side, int unflag, uint8_t *flags,
+                     double *depth_out, int workers)
 {
     if (!depth || !sigma || !usable || !col || !flags || !depth_out || ncells < 1
-        || (ncells > 1 && !cells) || R < 0 || C < 0 || !(step >= 0.0) || !(k >= 0.0))
+        || (ncells > 1 && !cells) || nring < 0 || (nring > 0 && !ring) || R < 0 || C < 0
+        || !(step >= 0.0) || !(k >= 0.0))
         return RGBZ_EINVAL;
-    const tofg_fly_args p = {depth, sigma, usable, col, ncells > 1 ? cells : NULL, ncells, R,
-                             C, step * step, k * k, 2.5, contrast, side, unflag, flags,
-                             depth_out};
+    const tofg_fly_args p = {depth, sigma, usable, col, ncells > 1 ? cells : NULL,
+                             nring > 0 ? ring : NULL, ncells, nring, R, C, step * step, k * k,
+                             2.5, contrast, side, unflag, flags, depth_out};
     uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
     if (!code) return RGBZ_ENOMEM;
     memcpy(depth_out, depth, (size_t)(R * C) * sizeof *depth_out);

@@ -59,14 +59,17 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
 /* The flying-pixel test with colour edges on the grid (R, C): usable (N,) measurements
    (not saturated, not low-signal); second differences of depth against max(step, k noise)
    mark the candidates (rgbz_fast.tof.flying_pixels); a candidate whose depth is one side's
-   and whose every cell has that side's colour stays valid (unflag != 0, only with more than
-   one cell), one whose cells all have one side's colour while its depth lies between the
-   sides is resolved to that side (bit 32, depth_out), the others are flying (bit 8).
-   col (3, N), cells (ncells, 3, N): colours divided by the guide's noise. */
+   and whose every cell has that side's colour, and every pixel of its ring (the pixels
+   bordering its Z pixel) nearer that side's colour than the other's, stays valid (unflag !=
+   0, only with more than one cell), one whose cells all have one side's colour while its
+   depth lies between the sides is resolved to that side (bit 32, depth_out), the others are
+   flying (bit 8). col (3, N), cells (ncells, 3, N), ring (nring, 3, N) or NULL with nring 0:
+   colours divided by the guide's noise. */
 int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
-                     const float *col, const float *cells, int ncells, ptrdiff_t R,
-                     ptrdiff_t C, double step, double k, double contrast, double side,
-                     int unflag, uint8_t *flags, double *depth_out, int workers);
+                     const float *col, const float *cells, int ncells, const float *ring,
+                     int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,
+                     double contrast, double side, int unflag, uint8_t *flags,
+                     double *depth_out, int workers);
 
 /* Joint bilateral upsampling of the usable measurements (depth finite) to every pixel of the
    guide (H, W, 3). First every node without a usable measurement takes the same rule over

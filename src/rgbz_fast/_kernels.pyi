@@ -196,7 +196,8 @@ def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual:
                   sigma: np.ndarray, refl: np.ndarray, flags: np.ndarray,
                   workers: int) -> None: ...
 def tofg_flying(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, col: np.ndarray,
-                cells: np.ndarray | None, R: int, C: int, step: float, k: float,
+                cells: np.ndarray | None, ring: np.ndarray | None, R: int, C: int,
+                step: float, k: float,
                 contrast: float, side: float, unflag: int, flags: np.ndarray,
                 depth_out: np.ndarray, workers: int) -> None: ...
 def tofg_upsample(guide: np.ndarray, scale: float, cscale: np.ndarray, depth: np.ndarray,

@@ -737,9 +737,10 @@ cdef extern from "tof_guided.h" nogil:
                            double *snr, double *sigma, double *refl, uint8_t *flags,
                            int workers)
     int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
-                         const float *col, const float *cells, int ncells, Py_ssize_t R,
-                         Py_ssize_t C, double step, double k, double contrast, double side,
-                         int unflag, uint8_t *flags, double *depth_out, int workers)
+                         const float *col, const float *cells, int ncells, const float *ring,
+                         int nring, Py_ssize_t R, Py_ssize_t C, double step, double k,
+                         double contrast, double side, int unflag, uint8_t *flags,
+                         double *depth_out, int workers)
     int rgbz_tofg_upsample(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
                            double scale, const double *cscale, const double *depth,
                            const double *sigma, const float *col, Py_ssize_t R, Py_ssize_t C,
@@ -844,23 +845,30 @@ def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[:
 
 
 def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[::1] usable,
-                const float[:, ::1] col, const float[:, :, ::1] cells, Py_ssize_t R,
-                Py_ssize_t C, double step, double k, double contrast, double side, int unflag,
-                uint8_t[::1] flags, double[::1] depth_out, int workers):
+                const float[:, ::1] col, const float[:, :, ::1] cells,
+                const float[:, :, ::1] ring, Py_ssize_t R, Py_ssize_t C, double step, double k,
+                double contrast, double side, int unflag, uint8_t[::1] flags,
+                double[::1] depth_out, int workers):
     """The flying-pixel test with colour edges: bits 8 (flying) and 32 (resolved) into flags,
-    the resolved depths into depth_out (the measured depth elsewhere)."""
+    the resolved depths into depth_out (the measured depth elsewhere); ring (nring, 3, N) or
+    None: the colours of the pixels bordering each Z pixel."""
     cdef int status
     cdef const float *cp = NULL
+    cdef const float *rp = NULL
     cdef int ncells = 1
+    cdef int nring = 0
     if cells is not None:
         cp = &cells[0, 0, 0]
         ncells = <int> cells.shape[0]
+    if ring is not None and ring.shape[0] > 0:
+        rp = &ring[0, 0, 0]
+        nring = <int> ring.shape[0]
     if depth.shape[0] == 0:
         return
     with nogil:
-        status = rgbz_tofg_flying(&depth[0], &sigma[0], &usable[0], &col[0, 0], cp, ncells, R, C,
-                                  step, k, contrast, side, unflag, &flags[0], &depth_out[0],
-                                  workers)
+        status = rgbz_tofg_flying(&depth[0], &sigma[0], &usable[0], &col[0, 0], cp, ncells, rp,
+                                  nring, R, C, step, k, contrast, side, unflag, &flags[0],
+                                  &depth_out[0], workers)
     _raise_for(status)
 
 

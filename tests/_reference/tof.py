@@ -176,9 +176,10 @@ def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_
     return snr, sigma, refl, flags.astype(np.uint8)
 
 
-def guided_flying(depth, sigma, usable, col, cells, R, C, step, k, contrast, side, unflag):
+def guided_flying(depth, sigma, usable, col, cells, ring, R, C, step, k, contrast, side,
+                  unflag):
     """Bits 8 (flying) and 32 (resolved) and the depths (resolved ones replaced), with plain
-    loops over the cells in the kernel's order."""
+    loops over the cells and the ring pixels in the kernel's order."""
     from rgbz_fast.tof import flying_pixels
     from rgbz_fast.tof._filters import SiteGrid
 
@@ -224,6 +225,16 @@ def guided_flying(depth, sigma, usable, col, cells, R, C, step, k, contrast, sid
             all1 &= t > 1.0 - side
         pure = sig and ((near[0] and all0) or (near[1] and all1))
         if pure and unflag and cl.shape[0] > 1:
+            # every pixel bordering the Z pixel nearer the side's colour than the other's
+            s1 = not (near[0] and all0)
+            ring_ok = True
+            for kk in range(0 if ring is None else ring.shape[0]):
+                t = sum((float(np.float32(ring[kk, i, m])) - cside[0][i]) * axis[i]
+                        for i in range(3)) / con
+                ring_ok &= t > 0.5 if s1 else t < 0.5
+            if ring_ok:
+                continue
+            flags[m] |= 8
             continue
         if sig and (all0 or all1) and not near[0] and not near[1]:
             flags[m] |= 32

@@ -152,18 +152,34 @@ def test_validity_matches_numpy():
 def test_guided_flying_matches_numpy(pattern):
     frame, guide, _ = _frame(pattern, shape=(64, 80))
     res = tof_depth(frame.tof, guide=guide, flying_step=None)
-    from rgbz_fast.tof._guided import _Layout, guide_colours
+    from rgbz_fast.tof._guided import _Layout, guide_colours, guide_ring
     lay = _Layout(frame.tof.sites, frame.tof.block, frame.tof.shape)
-    col, cells, _ = guide_colours(guide, 1 / 255, lay, 1)
+    col, cells, sig = guide_colours(guide, 1 / 255, lay, 1)
+    ring = guide_ring(guide, 1 / 255, lay, sig)
+    assert (ring is None) == (pattern == "mask1")
     usable = ((res.flags & 3) == 0).astype(np.uint8)
     flags, out = np.zeros(lay.N, np.uint8), np.empty(lay.N)
-    _kernels.tofg_flying(res.depth, res.sigma, usable, col, cells, lay.R, lay.C, 0.05, 2.0, 12.5,
-                         0.15, 1, flags, out, 2)
-    want_flags, want = ref.guided_flying(res.depth, res.sigma, usable, col, cells, lay.R,
+    _kernels.tofg_flying(res.depth, res.sigma, usable, col, cells, ring, lay.R, lay.C, 0.05, 2.0,
+                         12.5, 0.15, 1, flags, out, 2)
+    want_flags, want = ref.guided_flying(res.depth, res.sigma, usable, col, cells, ring, lay.R,
                                          lay.C, 0.05, 2.0, 12.5, 0.15, 1)
     assert (flags & 8).any()
     np.testing.assert_array_equal(flags, want_flags)
     np.testing.assert_array_equal(out, want)
+    if ring is not None:
+        # without the ring test some of the flagged measurements pass as pure
+        loose = np.zeros(lay.N, np.uint8)
+        _kernels.tofg_flying(res.depth, res.sigma, usable, col, cells, None, lay.R, lay.C, 0.05,
+                             2.0, 12.5, 0.15, 1, loose, np.empty(lay.N), 2)
+        assert ((flags & 8) >= (loose & 8)).all()
+        assert ((flags & 8) > (loose & 8)).any()
+        # the ring pixels of every Z pixel: the 12 pixels bordering its 2x2 cells
+        r0, c0 = lay.rows[1], lay.cols[1]
+        m = 1 * lay.C + 1
+        want_ring = [guide[r0 + a, c0 + b] for a in range(-1, 3) for b in range(-1, 3)
+                     if not (0 <= a < 2 and 0 <= b < 2)]
+        np.testing.assert_allclose(ring[:, :, m] * (np.sqrt(2.0) * sig) * 255,
+                                   np.asarray(want_ring, np.float64), rtol=1e-6)
 
 
 @pytest.mark.parametrize("pattern,ambiguity", [("mask1", 1.0), ("mask2", 1.0), ("mask1", 0.2),

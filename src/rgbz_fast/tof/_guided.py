@@ -20,9 +20,11 @@ ToF ISP uses it three ways (C kernels, csrc/tof_guided.c; docs/guide/isp.md):
 * **Flying pixels.** A measurement at a depth discontinuity (the second
   differences of :func:`~rgbz_fast.tof.flying_pixels`) is compared with the two
   sides of the discontinuity among its 8 neighbours: when its depth is one
-  side's and every cell of its Z pixel has that side's colour (a 2x2 Z pixel;
-  a 1x1 pixel's colour cannot tell a pure measurement from a blend), it is a
-  pure measurement and stays valid; when its depth lies between the sides and
+  side's, every cell of its Z pixel has that side's colour and every pixel
+  bordering the Z pixel is nearer that side's colour than the other's (a 2x2
+  Z pixel, whose cells' colours the colour ISP interpolates, so they place an
+  edge to a pixel at best; a 1x1 pixel's colour cannot tell a pure
+  measurement from a blend), it is a pure measurement and stays valid; when its depth lies between the sides and
   all its cells have one side's colour, it takes that side's depth and the
   bit :attr:`ToFFlag.RESOLVED` (``ToFDepth.measured`` keeps what was measured);
   otherwise it is flagged flying.
@@ -157,6 +159,27 @@ def guide_colours(g, scale, layout, nthreads):
     return col, cells, sigma
 
 
+def guide_ring(g, scale, layout, sigma):
+    """The guide at the pixels bordering each Z pixel, in the units of :func:`guide_colours`:
+    (4 block + 4, 3, N) float32, or None for 1x1 Z pixels (whose colour cannot tell a pure
+    measurement from a blend). A ring pixel off the frame repeats the nearest one on it (a
+    pixel of the ring or of the Z pixel, so it adds no test)."""
+    b = layout.block
+    if b == 1:
+        return None
+    H, W = g.shape[:2]
+    rows = np.repeat(layout.rows, layout.C)
+    cols = np.tile(layout.cols, layout.R)
+    inv = scale / (math.sqrt(2.0) * np.asarray(sigma, np.float64))
+    offs = [(a, c) for a in range(-1, b + 1) for c in range(-1, b + 1)
+            if not (0 <= a < b and 0 <= c < b)]
+    ring = np.empty((len(offs), 3, layout.N), np.float32)
+    for k, (a, c) in enumerate(offs):
+        px = g[np.clip(rows + a, 0, H - 1), np.clip(cols + c, 0, W - 1)]
+        ring[k] = (px.astype(np.float64) * inv).T
+    return ring
+
+
 def _radiometry(tof, f):
     """(sigma_scale (F,), refl_coef (F,)) of the validity kernel: the weights of the depth
     noise and the reciprocal amplitude of a reflectance-1 surface at 1 m."""
@@ -169,14 +192,15 @@ def _radiometry(tof, f):
     return np.ascontiguousarray(sigma_scale), np.ascontiguousarray(1.0 / model)
 
 
-def guided_flags(depth, sigma, flags, layout, col, cells, step, nthreads):
+def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):
     """The flying-pixel test with colour edges on measurements in grid order: adds FLYING and
     RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced."""
     usable = ((flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0) & layout.present
     usable &= np.isfinite(depth) & np.isfinite(sigma)
     out = np.empty_like(depth)
-    _kernels.tofg_flying(depth, sigma, usable.view(np.uint8), col, cells, layout.R, layout.C,
-                         step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out, nthreads)
+    _kernels.tofg_flying(depth, sigma, usable.view(np.uint8), col, cells, ring, layout.R,
+                         layout.C, step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out,
+                         nthreads)
     return out
 
 
@@ -215,7 +239,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
         z = (zr + 1j * zi) * turn
         zr, zi = np.ascontiguousarray(z.real, np.float32), np.ascontiguousarray(z.imag,
                                                                                 np.float32)
-    col, cells, _ = guide_colours(g, scale, layout, nthreads)
+    col, cells, sigma_c = guide_colours(g, scale, layout, nthreads)
     use = (layout.present & (sat == 0)).view(np.uint8)
     radius = ((GUIDED_WINDOW if p.window is None else p.window) // 2) * tof.block
     reach_r, reach_c = layout.grid.reach(radius)
@@ -254,8 +278,8 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
                            flags, nthreads)
     measured = depth
     if p.flying_step is not None:
-        depth = guided_flags(measured, sigma, flags, layout, col, cells, p.flying_step,
-                             nthreads)
+        depth = guided_flags(measured, sigma, flags, layout, col, cells,
+                             guide_ring(g, scale, layout, sigma_c), p.flying_step, nthreads)
     back = layout.from_grid
     return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
                     phase=back(phase), amplitude=back(amp), offset=back(offset),
@@ -270,11 +294,12 @@ def guided_flying_of(result, g, scale, step, nthreads):
     """The colour-guided flying-pixel test applied to a result of the unguided denoise (box or
     none) whose flying test was left out: a new ToFDepth."""
     layout = _Layout(result.sites, result.block, result.shape)
-    col, cells, _ = guide_colours(g, scale, layout, nthreads)
+    col, cells, sigma_c = guide_colours(g, scale, layout, nthreads)
     flags = np.ascontiguousarray(layout.to_grid(result.flags, FLAG_SATURATED), np.uint8)
     measured = np.ascontiguousarray(layout.to_grid(result.depth, np.nan), np.float64)
     sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
-    depth = guided_flags(measured, sigma, flags, layout, col, cells, step, nthreads)
+    depth = guided_flags(measured, sigma, flags, layout, col, cells,
+                         guide_ring(g, scale, layout, sigma_c), step, nthreads)
     back = layout.from_grid
     fields = {k: getattr(result, k) for k in result.__dataclass_fields__}
     fields.update(depth=back(depth), measured=result.depth, flags=back(flags),
