@@ -165,7 +165,9 @@ def learned_search_section(search, held_out=None):
            "Hash buckets that flip: a Z site whose bucket in the fixed model differs from the "
            "float64 hash of the filters' specification gets another filter. The share of such "
            "sites, and the error there and elsewhere (|fixed - float64| in LSB), at the default "
-           "and at the wide start of the search:", "",
+           "and at the wide start of the search (the calibration rows as the search measured "
+           "them, on the filters it ran on; the Kodak default rows measured by this tool, on "
+           "the shipped filters):", "",
            "| images | configuration | protocol | Z sites | flipped | within 1 LSB where "
            "flipped | mean abs diff where flipped | within 1 LSB elsewhere | sites > 1 LSB: "
            "flipped / elsewhere |", "|---|---|---|---|---|---|---|---|---|"]
