@@ -48,7 +48,26 @@ _DATA = Path(__file__).resolve().parent / "data"
 _MAGIC = "rgbz-fast learned filters"
 
 
-class LearnedFilters:
+class FilterIdentity:
+    """A filter set is its weights: equality, hash and repr by their digest (``digest``),
+    with the pattern, bit depth, bucket count and training set in the repr."""
+
+    def __repr__(self):
+        src = self.meta.get("training_set", "?")
+        return (f"{type(self).__name__}(pattern={self.pattern.name!r}, "
+                f"bit_depth={self.bit_depth}, buckets={self.n_buckets}, trained on {src!r}, "
+                f"digest={self.digest})")
+
+    __str__ = __repr__
+
+    def __eq__(self, other):
+        return isinstance(other, type(self)) and other.digest == self.digest
+
+    def __hash__(self):
+        return hash(self.digest)
+
+
+class LearnedFilters(FilterIdentity):
     """Hashed linear filters of one pattern (``method="learned"``).
 
     Made by :func:`train` or read by :meth:`load`; :func:`default_filters`
@@ -151,19 +170,6 @@ class LearnedFilters:
     @property
     def n_spread(self):
         return self.spread_thresholds.shape[1] + 1
-
-    def __repr__(self):
-        src = self.meta.get("training_set", "?")
-        return (f"LearnedFilters(pattern={self.pattern.name!r}, bit_depth={self.bit_depth}, "
-                f"buckets={self.n_buckets}, trained on {src!r}, digest={self.digest})")
-
-    __str__ = __repr__
-
-    def __eq__(self, other):
-        return isinstance(other, LearnedFilters) and other.digest == self.digest
-
-    def __hash__(self):
-        return hash(self.digest)
 
     def thresholds(self, bit_depth=None):
         """``(strength, coherence, spread)`` thresholds, per phase, for frames of

@@ -49,7 +49,7 @@ from .._frame import ToFTaps
 from .._patterns import Z, get_pattern
 from .._validate import check_number
 from ..io import atomic_write, read_npz
-from ._learned import LearnedFilters, check_filters, pattern_transform
+from ._learned import FilterIdentity, LearnedFilters, check_filters, pattern_transform
 from ._learned_hash import (N_ANGLES, extend_index, gather_windows, hash_buckets, hash_features,
                             mirror_octants)
 
@@ -294,7 +294,7 @@ def _site_features(data, pattern, grids, colour, lam, noise_thresholds):
     return out
 
 
-class ZGuidedFilters:
+class ZGuidedFilters(FilterIdentity):
     """The filters of ``method="z_guided"``: colour and guide weights per (phase, level, bucket).
 
     Made by :func:`~rgbz_fast.reconstruction.train_z_guided` or read by
@@ -357,19 +357,6 @@ class ZGuidedFilters:
     bit_depth = property(lambda self: self.base.bit_depth)
     #: buckets per phase: noise levels x the hash's buckets
     n_buckets = property(lambda self: self.weights.shape[1])
-
-    def __repr__(self):
-        src = self.meta.get("training_set", "?")
-        return (f"ZGuidedFilters(pattern={self.pattern.name!r}, bit_depth={self.bit_depth}, "
-                f"buckets={self.n_buckets}, trained on {src!r}, digest={self.digest})")
-
-    __str__ = __repr__
-
-    def __eq__(self, other):
-        return isinstance(other, ZGuidedFilters) and other.digest == self.digest
-
-    def __hash__(self):
-        return hash(self.digest)
 
     def check_frame(self, pattern, bit_depth, name="filters"):
         """ValueError naming ``name`` unless the filters fit a frame of ``pattern`` and bits."""
