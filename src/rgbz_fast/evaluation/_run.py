@@ -491,24 +491,60 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
                 results[t[0].name] = _pool_task(t)
                 bar.update()
         else:
-            import multiprocessing as mp
-            ctx = mp.get_context("spawn")
-            ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
-                                     initializer=_worker_init)
+            own_tracker = not _tracker_running()
             try:
-                futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
-                for f in as_completed(futs):
-                    results[futs[f]] = f.result()
-                    bar.update()
-            except BaseException:
-                _stop_pool(ex)              # an error or an interrupt: no orphaned worker
-                raise
-            ex.shutdown(wait=True)
+                _run_pool(tasks, nproc, bar, results)
+            finally:
+                if own_tracker:
+                    _stop_tracker()
     finally:
         bar.close()
     skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped)
+
+
+def _run_pool(tasks, nproc, bar, results):
+    """The tasks on a local pool of spawned processes, their results into ``results``."""
+    import multiprocessing as mp
+    ctx = mp.get_context("spawn")
+    ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
+                             initializer=_worker_init)
+    try:
+        futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
+        for f in as_completed(futs):
+            results[futs[f]] = f.result()
+            bar.update()
+    except BaseException:
+        _stop_pool(ex)                      # an error or an interrupt: no orphaned worker
+        del ex                              # its semaphores go before the tracker does
+        raise
+    ex.shutdown(wait=True)
+
+
+def _tracker_running():
+    """Whether this process has a multiprocessing resource tracker running."""
+    from multiprocessing import resource_tracker
+    return getattr(resource_tracker._resource_tracker, "_pid", None) is not None
+
+
+def _stop_tracker():
+    """Stop and reap the resource tracker that a spawned pool started in this process, once
+    the pool's semaphores are gone: left to itself it outlives the run by a moment (it ends
+    when it notices that this process has ended), a process that a caller waiting for the
+    run's process group sees left behind. The tracker of a pool that is still alive (a
+    caller's own) is left alone: its semaphores would start a new one."""
+    import gc
+    from multiprocessing import resource_tracker
+
+    gc.collect()                            # the pool's queues, and with them its semaphores
+    tracker = resource_tracker._resource_tracker
+    if getattr(tracker, "_pid", None) is None or not hasattr(tracker, "_stop"):
+        return                              # pragma: no cover - another Python's tracker
+    if any(getattr(getattr(obj, "_semlock", None), "name", None) is not None
+           for obj in gc.get_objects() if type(obj).__module__ == "multiprocessing.synchronize"):
+        return                              # named semaphores alive: the tracker keeps them
+    tracker._stop()
 
 
 def _run_dask(tasks, scheduler, bar):
