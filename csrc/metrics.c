@@ -239,25 +239,51 @@ static void mt_ssim_hpass_x(const double *m, ptrdiff_t cols, const double *w, in
 }
 
 /* SSIM, test side: the horizontal pass over the three moment rows m (y, y^2, xy filtered
-   along the columns, mt_ssim_vpass_y) into a (3 (cols - 2 rad) doubles), the reference's row
-   mom (mt_ssim_hpass_x), the SSIM formula in NumPy's order, and the sums of the SSIM and c s
-   values of the row (their values in m, free by then). */
-static void mt_ssim_hpass_y(double *m, const double *mom, ptrdiff_t cols, const double *w,
-                            int rad, double c1, double c2, double *restrict a,
+   along the columns, mt_ssim_vpass_y), the reference's row mom (mt_ssim_hpass_x), the SSIM
+   formula in NumPy's order, and the sums of the SSIM and c s values of the row (their values
+   in a, 5 (cols - 2 rad) doubles of scratch). The default window filters in registers, in
+   the loop of the formula; another one filters into a first. */
+static inline MT_INLINE double mt_ssim_value(double mx, double vx, double my, double eyy,
+                                             double exy, double c1, double c2, double *cs_out)
+{
+    const double vy = eyy - my * my, vxy = exy - mx * my;
+    const double lum = (2.0 * mx * my + c1) / (mx * mx + my * my + c1);
+    const double cs = (2.0 * vxy + c2) / (vx + vy + c2);
+    *cs_out = cs;
+    return lum * cs;
+}
+
+static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
+                            const double *w, int rad, double c1, double c2, double *restrict a,
                             double *ssim_row, double *cs_row)
 {
     const ptrdiff_t n = cols - 2 * rad;
-    for (int q = 0; q < 3; q++) mt_hpass(m + q * cols + rad, n, w, rad, a + q * n);
-    const double *ay = a, *ayy = a + n, *axy = a + 2 * n, *ax = mom, *vxs = mom + n;
-    double *restrict ssim_v = m, *restrict cs_v = m + cols;
-    MT_SIMD
-    for (ptrdiff_t j = 0; j < n; j++) {
-        const double mx = ax[j], my = ay[j], vx = vxs[j];
-        const double vy = ayy[j] - my * my, vxy = axy[j] - mx * my;
-        const double lum = (2.0 * mx * my + c1) / (mx * mx + my * my + c1);
-        const double cs = (2.0 * vxy + c2) / (vx + vy + c2);
-        ssim_v[j] = lum * cs;
-        cs_v[j] = cs;
+    const double *ax = mom, *vxs = mom + n;
+    double *restrict ssim_v = a, *restrict cs_v = a + n;
+    if (rad == MT_SSIM_RAD) {
+        const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
+        const double *vxy = m + 2 * cols + MT_SSIM_RAD;
+        const double wc = w[MT_SSIM_RAD];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++) {
+            double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--) {
+                const double wk = w[MT_SSIM_RAD - k];
+                sy += (vy[j - k] + vy[j + k]) * wk;
+                syy += (vyy[j - k] + vyy[j + k]) * wk;
+                sxy += (vxy[j - k] + vxy[j + k]) * wk;
+            }
+            ssim_v[j] = mt_ssim_value(ax[j], vxs[j], sy, syy, sxy, c1, c2, &cs_v[j]);
+        }
+    } else {
+        double *ay = a + 2 * n, *ayy = a + 3 * n, *axy = a + 4 * n;
+        mt_hpass(m + rad, n, w, rad, ay);
+        mt_hpass(m + cols + rad, n, w, rad, ayy);
+        mt_hpass(m + 2 * cols + rad, n, w, rad, axy);
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++)
+            ssim_v[j] = mt_ssim_value(ax[j], vxs[j], ay[j], ayy[j], axy[j], c1, c2, &cs_v[j]);
     }
     *ssim_row = mt_sum(ssim_v, n);
     *cs_row = mt_sum(cs_v, n);

@@ -186,8 +186,8 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
 #pragma omp parallel num_threads(nt)
 #endif
     {
-        /* three moment rows, two of the reference side, three filtered moments */
-        double *m = (double *)malloc((size_t)(3 * cols + 5 * ocols) * sizeof(double));
+        /* three moment rows, two of the reference side, five of mt_ssim_hpass_y */
+        double *m = (double *)malloc((size_t)(3 * cols + 7 * ocols) * sizeof(double));
         if (!m) {
 #ifdef _OPENMP
 #pragma omp atomic write
@@ -464,6 +464,28 @@ static MT(mt_acc) MT(mt_sq_row)(const IN_T *a, const IN_T *b, ptrdiff_t cols, pt
 {
     MT(mt_acc) s = 0;
     int64_t k = 0;
+#if IN_IS_INT
+    if (ch == 1) {             /* exact integer sums: any order, so vectorised */
+        if (!mask) {
+            MT_SIMD_COUNT(s)
+            for (ptrdiff_t c = 0; c < cols; c++) {
+                const int64_t d = (int64_t)a[c] - (int64_t)b[c];
+                s += d * d;
+            }
+            *n = cols;
+            return s;
+        }
+        MT_PRAGMA(omp simd reduction(+:s, k))
+        for (ptrdiff_t c = 0; c < cols; c++) {
+            const int64_t d = (int64_t)a[c] - (int64_t)b[c];
+            const int on = mask[c] != 0;
+            s += on ? d * d : 0;
+            k += on;
+        }
+        *n = k;
+        return s;
+    }
+#endif
     for (ptrdiff_t c = 0; c < cols; c++) {
         if (mask && !mask[c]) continue;
         k += ch;
@@ -491,6 +513,11 @@ static int MT(mt_sq_diff_sum)(const void *av, const void *bv, ptrdiff_t rows, pt
         free(rs);
         free(rn);
         return RGBZ_ENOMEM;
+    }
+    if (!mask) {               /* every pixel: rows of cols * ch single elements, the same
+                                  elements in the same order */
+        cols *= ch;
+        ch = 1;
     }
     int nt = mt_threads(workers, rows, 3.0 * (double)(cols * ch));
     (void)nt;

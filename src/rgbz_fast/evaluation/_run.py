@@ -15,7 +15,7 @@ import numpy as np
 from .. import _patterns
 from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
-from .._frame import RawFrame, mosaic
+from .._frame import RawFrame, _Adopt, mosaic
 from .._patterns import get_pattern
 from .._validate import (check_flag, check_image, check_path, check_processes, check_workers,
                          integer_bits, merge_params)
@@ -108,12 +108,16 @@ def _frames(img, pattern, config, memo, nir=None):
                                                   pixel_pitch_um=ColourSensor().pixel_pitch_um),
                                       0.0, 1.0)
         lin = memo["optics"]
-    frame = mosaic(lin, pattern, config.bit_depth)
+    shape = pattern.check_shape(lin.shape[:2], "rgb")      # mosaic's name of the image
     references = memo.setdefault("reference", {})          # Bayer pattern -> CFA
     bayer = pattern.bayer_pattern()
     if bayer not in references:
         references[bayer] = mosaic(lin, bayer, config.bit_depth).data
-    return frame, references[bayer]
+    # mosaic(lin, pattern): the colour of the underlying Bayer at the colour sites, 0 at the
+    # Z sites -- the reference CFA with its Z sites cleared, without sampling the image again
+    data = references[bayer].copy()
+    data[pattern.channel_map(shape) == _patterns.Z] = 0
+    return RawFrame(_Adopt(data), pattern, config.bit_depth), references[bayer]
 
 
 def evaluate_image(source, config, cache_dir=None, workers=1):
