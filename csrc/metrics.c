@@ -4,8 +4,10 @@
  *  - SSIM and MS-SSIM (Z. Wang, A. C. Bovik, H. R. Sheikh, E. P. Simoncelli, IEEE TIP 13(4),
  *    2004; Z. Wang, E. P. Simoncelli, A. C. Bovik, Asilomar 2003): the five local moments of a
  *    pair of planes filtered by a separable symmetric window over the windows lying wholly
- *    inside the image, one output row at a time (vertical pass into five row buffers, then
- *    horizontal pass and the SSIM formula), so no moment image is stored. The operations are
+ *    inside the image, one output row at a time (vertical pass into row buffers, then
+ *    horizontal pass and the SSIM formula). What the reference alone gives (its local means
+ *    and variances) can be computed once and stored, for a reference compared with many
+ *    images; otherwise no moment image is stored. The operations are
  *    those of rgbz_fast.metrics' former NumPy code, in its order: scipy.ndimage.correlate1d
  *    for symmetric weights (centre * w0, then (far pair sum) * w ... (near pair sum) * w),
  *    rows first; then the SSIM formula as NumPy evaluates it left to right. Only the final
@@ -22,6 +24,7 @@
  *    29-31): Lab three rows at a time in a ring buffer per thread, then for each interior
  *    pixel the neighbour with the smallest reference dE (strict <, raster order, so the first
  *    one wins a tie), psi = dE_test - dE_ref at that neighbour, counted when |psi| > delta.
+ *    The reference's half (the neighbour and its dE) can be stored once for many test images.
  *
  * Compiled with -ffp-contract=off (csrc/meson.build): a fused multiply-add would change the
  * rounding of the formulas above and the agreement with the NumPy references.
