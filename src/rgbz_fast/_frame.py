@@ -181,13 +181,45 @@ def validate_frame(data, pattern, bit_depth, name):
     period, values (colour sites only) within [0, 2**bit_depth - 1], and a
     dtype wide enough for the bit depth.
     """
-    data = check_image(data, name, ndim=2, dtypes=FRAME_DTYPES)
+    data = check_image(data, name, ndim=2, dtypes=FRAME_DTYPES, finite=False)
+    # a frame whose extremes are in range is finite too (NaN makes them NaN, infinity is out
+    # of range): one reduction pass each, no frame-sized temporary; any other frame gets the
+    # checks one by one, so that its errors come in the same order
+    in_range = _in_range_fast(data, (1 << bit_depth) - 1)
+    if not in_range:
+        check_finite(data, name)
     if data.dtype == np.uint8 and bit_depth > 8:
         raise ValueError(f"{name}: a uint8 frame cannot hold {bit_depth}-bit data; "
                          "pass uint16 or a float dtype, or bit_depth <= 8")
     pattern.check_shape(data.shape, name)
-    _check_range(data, bit_depth, name, pattern)
+    if not in_range:
+        _check_range(data, bit_depth, name, pattern)
     return data
+
+
+#: the signed integer type of each float width (:func:`_in_range_fast`)
+_FLOAT_BITS = {2: np.int16, 4: np.int32, 8: np.int64}
+
+
+def _in_range_fast(data, top):
+    """True if a C-contiguous ``data`` lies within [0, top] (NaN: False), by one contiguous
+    integer reduction per bound (SIMD, no buffering; an unsigned type needs no lower one);
+    False also for a non-contiguous array, which the per-phase views of
+    :func:`_check_range` read instead.
+
+    A float array is read as the signed integers of its bits: they order the non-negative
+    floats as their values, and put every float with the sign bit (the negatives, -0.0, a
+    negative NaN) below 0 and +inf and a positive NaN above ``top``'s bits. So True means
+    the same, and False (also for -0.0, which the slower checks then accept) is only
+    conservative; NumPy's float reductions are several times slower than its integer ones.
+    """
+    if not (data.size and data.flags.c_contiguous):
+        return False
+    if data.dtype.kind == "f" and data.dtype.itemsize in _FLOAT_BITS:
+        ity = _FLOAT_BITS[data.dtype.itemsize]
+        bits = data.view(ity)
+        return bool(bits.min() >= 0 and bits.max() <= np.array(top, data.dtype).view(ity))
+    return bool((data.dtype.kind == "u" or data.min() >= 0) and data.max() <= top)
 
 
 def frame_inputs(frame, pattern=None, bit_depth=None, name="frame"):
@@ -230,12 +262,10 @@ def _check_range(data, bit_depth, name, pattern=None):
     so a 50-megapixel frame costs no extra memory.
     """
     top = (1 << bit_depth) - 1
-    if data.size and data.flags.c_contiguous:
-        # one contiguous pass first (SIMD, no buffering); only a frame whose
-        # extremes are out of range -- perhaps only at Z sites -- needs the
-        # per-phase views below
-        if data.min() >= 0 and data.max() <= top:
-            return
+    # one contiguous pass first; only a frame whose extremes are out of range -- perhaps
+    # only at Z sites -- needs the per-phase views below
+    if _in_range_fast(data, top):
+        return
     if pattern is None:
         views = [data]
     else:
