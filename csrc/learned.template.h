@@ -174,9 +174,10 @@ static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const R
  * as 8 contiguous REAL pixels against the bucket's dense weights.
  */
 #define LRN_RING 8   /* rows of a ring: the fast path's windows span at most 2 * 3 + 1 */
-#define LRN_STRIP 4096 /* columns of a strip of the fast path: every strip costs each Z row
-                          its own set-up and halo, which outweighs the cache misses of the
-                          longer ring rows (up to 40 rows of 16 KiB per thread in float32) */
+/* columns of a strip of the fast path, 16 KiB of REAL per ring row (4096 in float32, 2048 in
+   float64): every strip costs each Z row its own set-up and halo, which outweighs the cache
+   misses of longer ring rows up to about that length (40 ring rows per thread) */
+#define LRN_STRIP ((ptrdiff_t)(16384 / sizeof(REAL)))
 #define LRN_HALO 8    /* columns the fast path reads beyond its sites: 3 + 2 (hash), 3 + 4 (dot) */
 
 /* the ring row of logical row Y (slot Y mod LRN_RING), or -1 before it is computed */
