@@ -20,7 +20,11 @@
 
 /* the fast path (learned_hash.template.h) */
 #define LRN_RING 8   /* rows of a ring: the fast path's windows span at most 2 * 3 + 1 */
-#define LRN_STRIP 1024 /* columns of a strip of the fast path */
+/* columns of a strip of the fast path, 16 KiB of REAL per ring row (4096 in float32, 2048 in
+   float64): every strip costs each Z row its own set-up and halo, which outweighs the cache
+   misses of longer ring rows up to about that length (40 ring rows per thread); REAL is the
+   template instance's */
+#define LRN_STRIP ((ptrdiff_t)(16384 / sizeof(REAL)))
 #define LRN_HALO 8    /* columns the fast path reads beyond its sites: 3 + 2 (hash), 3 + 4 (dot) */
 
 /* sites per block: a multiple of the widest vector; one in the counting build, so that
