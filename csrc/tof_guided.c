@@ -679,10 +679,11 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
     return status;
 }
 
-/* grid rows of output per strip of the fused denoise when the caller gives none: each strip
-   recomputes 2 reach rows of the first row pass and reach rows of the other two passes above
-   and below it */
-#define TOFG_STRIP 64
+/* grid rows of output per strip of the fused denoise when the caller gives none, at most:
+   each strip recomputes 2 reach rows of the first row pass and reach rows of the other two
+   passes above and below it (at 128 and reach 5, 8 % of the passes' work), and each thread
+   holds the buffers of one strip (41 MB for 2000 columns and 3 frequencies) */
+#define TOFG_STRIP 128
 
 /* One strip's planes of a pass output (2F + 2 planes of cap C floats: re (F), im (F), var,
    n_eff). */
@@ -739,7 +740,12 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
                || !uw->phase || !uw->amp))
         return RGBZ_EINVAL;
     if (R == 0 || C == 0) return RGBZ_OK;
-    const ptrdiff_t N = R * C, S = strip > 0 ? strip : TOFG_STRIP, H = reach_r;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    /* by default a multiple of the threads' count of strips of at most TOFG_STRIP rows, of
+       even heights: the threads' shares stay even */
+    const ptrdiff_t nt = nth, nauto = nt * ((R + nt * TOFG_STRIP - 1) / (nt * TOFG_STRIP));
+    const ptrdiff_t N = R * C, S = strip > 0 ? strip : (R + nauto - 1) / nauto, H = reach_r;
     const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
     const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
     /* the rows of a strip's buffers: the first row pass over S + 4H rows, the other passes
@@ -753,8 +759,6 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     const size_t nmean = uw ? 2 * (size_t)F * (size_t)S * (size_t)C : 0;
     const float fh = (float)inv2h2, fc = (float)inv2hc2;
     const ptrdiff_t nstrip = (R + S - 1) / S;
-    const int nth = rgbz_threads(workers);
-    (void)nth;
     int bad = 0, dom = 0;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth) reduction(|:bad, dom)

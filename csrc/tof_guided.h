@@ -65,7 +65,8 @@ typedef struct {
    and along rows reaches. With uw (not NULL) each strip's means are unwrapped as they are
    made (rgbz_tof_depth_iq, bit for bit) into uw's arrays instead of being stored (or64, oi64
    unused); a non-finite mean gives RGBZ_EDOMAIN after every other one is computed. strip:
-   the grid rows of output per strip (<= 0: 64); the outputs do not depend on it. */
+   the grid rows of output per strip (<= 0: at most 128, a multiple of the threads' count of
+   strips); the outputs do not depend on it. */
 int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,

@@ -165,11 +165,11 @@ def test_guided_denoise_is_the_four_passes(R, C, F, reach_r, reach_c, radius, un
     cols = np.arange(C, dtype=np.int64) * (1 if reach_c > reach_r else 2)
     want = _four_passes(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radius, hc)
     N = R * C
-    for workers in (1, 2):
+    for workers, strip in ((1, 0), (2, 0), (2, 1), (1, 7)):
         got = (np.empty((F, N)), np.empty((F, N)), np.empty(N, np.float32),
                np.empty(N, np.float32))
         _kernels.tofg_denoise(zr, zi, v, col, use, rows, cols, reach_r, reach_c, radius, 0.125,
-                              hc, *got, workers)
+                              hc, *got, workers, strip=strip)
         for a, b in zip(got, want):
             np.testing.assert_array_equal(a, b)
     ref_out = ref.guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c,
@@ -179,6 +179,32 @@ def test_guided_denoise_is_the_four_passes(R, C, F, reach_r, reach_c, radius, un
     np.testing.assert_allclose(got[1], ref_out[1], rtol=0, atol=2e-4 * scale)
     np.testing.assert_allclose(got[2], ref_out[2], **FILTER_TOL)
     np.testing.assert_allclose(got[3], ref_out[3], **FILTER_TOL)
+
+
+@pytest.mark.parametrize("F,strip", [(3, 0), (2, 5), (1, 0)])
+def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip):
+    """With the unwrapping's arrays, tofg_denoise unwraps each strip's means as tof_depth_iq
+    unwraps the stored means, bit for bit; a non-finite phasor is reported (False)."""
+    R, C = 140, 60
+    zr, zi, v, col, use = _planes(R, C, F, seed=11)
+    rows, cols = np.arange(R, dtype=np.int64) * 2, np.arange(C, dtype=np.int64) * 2
+    f = np.array([80e6, 100e6, 120e6][:F])
+    w = np.ones(F)
+    N = R * C
+    mr, mi = np.empty((F, N)), np.empty((F, N))
+    var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
+    args = (zr, zi, v, col, use, rows, cols, 5, 5, 10, 0.125, 0.02)
+    assert _kernels.tofg_denoise(*args, mr, mi, var, neff, 2)
+    want = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
+    assert _kernels.tof_depth_iq(mr, mi, f, w, 7.5, *want, workers=2)
+    got = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
+    var2, neff2 = np.empty(N, np.float32), np.empty(N, np.float32)
+    assert _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got,
+                                 strip=strip)
+    for a, b in zip(got + [var2, neff2], want + [var, neff]):
+        np.testing.assert_array_equal(a, b)
+    zr[0, 3] = np.nan
+    assert not _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got)
 
 
 def test_validity_matches_numpy():

@@ -54,10 +54,6 @@ __all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "UPSAMPLE_COLOUR_SC
 #: the window (Z-pixel cells) of the guided denoise when ``window`` is None: 11 Z
 #: measurements per axis on Mask1 and Mask2 (radius 10 cells)
 GUIDED_WINDOW = 21
-#: grid rows per strip of the fused guided denoise (the kernel recomputes the rows its
-#: column passes reach beyond a strip: fewer, taller strips compute less, and hold larger
-#: buffers); the result does not depend on it
-DENOISE_STRIP = 64
 #: the colour contrast (``|c_1 - c_2|^2 / (2 sigma_c^2)``) between the two sides of a depth
 #: discontinuity above which the colour may say which side a measurement is on (25 sigma^2)
 EDGE_CONTRAST = 12.5
@@ -261,11 +257,11 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
         if not _kernels.tofg_denoise(*args, None, None, var, neff, nthreads,
                                      np.ascontiguousarray(f, np.float64),
                                      np.ascontiguousarray(w, np.float64), max_range, depth,
-                                     residual, wraps, phase, amp, DENOISE_STRIP):
+                                     residual, wraps, phase, amp):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
     else:
         mr, mi = np.empty((F, N)), np.empty((F, N))
-        _kernels.tofg_denoise(*args, mr, mi, var, neff, nthreads, strip=DENOISE_STRIP)
+        _kernels.tofg_denoise(*args, mr, mi, var, neff, nthreads)
         depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
     snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
     flags = np.empty(N, np.uint8)
