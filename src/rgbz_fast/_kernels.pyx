@@ -133,9 +133,13 @@ def tof_depth_iq(const double[:, ::1] i, const double[:, ::1] q, const double[::
 # ---------------------------------------------------------------------- metrics (metrics.c)
 cdef extern from "metrics.h" nogil:
     int RGBZ_SSIM_MAX_TAPS
-    int rgbz_ssim_sums(int in_type, const void *x, const void *y, Py_ssize_t planes,
-                       Py_ssize_t rows, Py_ssize_t cols, const double *weights, int ntaps,
-                       double c1, double c2, double *ssim_sum, double *cs_sum, int workers)
+    int rgbz_ssim_sums(int in_type, const void *x, const void *y, const double *x_moments,
+                       Py_ssize_t planes, Py_ssize_t rows, Py_ssize_t cols,
+                       const double *weights, int ntaps, double c1, double c2,
+                       double *ssim_sum, double *cs_sum, int workers)
+    int rgbz_ssim_reference(int in_type, const void *x, Py_ssize_t planes, Py_ssize_t rows,
+                            Py_ssize_t cols, const double *weights, int ntaps,
+                            double *x_moments, int workers)
     int rgbz_downsample2(int in_type, const void *src, Py_ssize_t planes, Py_ssize_t rows,
                          Py_ssize_t cols, double *dst, int workers)
     int rgbz_srgb_to_lab(int in_type, const void *rgb, Py_ssize_t n, double scale,
@@ -143,6 +147,12 @@ cdef extern from "metrics.h" nogil:
     int rgbz_zipper_count(int in_type, const void *ref, const void *test, Py_ssize_t rows,
                           Py_ssize_t cols, double scale, double delta, int64_t *count,
                           int workers)
+    int rgbz_zipper_reference(int in_type, const void *ref, Py_ssize_t rows, Py_ssize_t cols,
+                              double scale, double *best, uint8_t *nearest, int workers)
+    int rgbz_zipper_count_reference(int in_type, const void *test, Py_ssize_t rows,
+                                    Py_ssize_t cols, double scale, const double *best,
+                                    const uint8_t *nearest, double delta, int64_t *count,
+                                    int workers)
     int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, Py_ssize_t rows,
                          Py_ssize_t cols, Py_ssize_t channels, const uint8_t *mask,
                          double *sum, int64_t *count, int workers)
@@ -174,16 +184,41 @@ def metrics_use_isa(name=None):
 
 
 def ssim_sums(const frame_t[:, :, ::1] x, const frame_t[:, :, ::1] y,
-              const double[::1] weights, double c1, double c2, double[::1] ssim_sum,
-              double[::1] cs_sum, int workers):
+              const double[:, :, ::1] x_moments, const double[::1] weights, double c1,
+              double c2, double[::1] ssim_sum, double[::1] cs_sum, int workers):
     """Per-plane sums of the SSIM and contrast-structure maps of planar (planes, rows, cols)
-    images over the windows wholly inside them (separable symmetric window ``weights``)."""
+    images over the windows wholly inside them (separable symmetric window ``weights``);
+    ``x_moments``: :func:`ssim_reference` of ``x``, or None."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef const double *mom = NULL
+    cdef Py_ssize_t n = weights.shape[0]
+    if x_moments is not None:
+        if (x_moments.shape[0] != x.shape[0] * (x.shape[1] - n + 1) or x_moments.shape[1] != 2
+                or x_moments.shape[2] != x.shape[2] - n + 1):
+            raise ValueError("x_moments: not the shape of ssim_reference(x)")
+        mom = &x_moments[0, 0, 0]
     with nogil:
-        status = rgbz_ssim_sums(in_type, &x[0, 0, 0], &y[0, 0, 0], x.shape[0], x.shape[1],
-                                x.shape[2], &weights[0], <int> weights.shape[0], c1, c2,
+        status = rgbz_ssim_sums(in_type, &x[0, 0, 0], &y[0, 0, 0], mom, x.shape[0],
+                                x.shape[1], x.shape[2], &weights[0], <int> n, c1, c2,
                                 &ssim_sum[0], &cs_sum[0], workers)
+    _raise_for(status)
+
+
+def ssim_reference(const frame_t[:, :, ::1] x, const double[::1] weights,
+                   double[:, :, ::1] x_moments, int workers):
+    """What the SSIM of planar ``x`` takes from ``x`` alone: ``x_moments`` (planes *
+    (rows - n + 1), 2, cols - n + 1), the local means and variances of each window row."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t n = weights.shape[0]
+    if (x_moments.shape[0] != x.shape[0] * (x.shape[1] - n + 1) or x_moments.shape[1] != 2
+            or x_moments.shape[2] != x.shape[2] - n + 1):
+        raise ValueError("x_moments: expected (planes * (rows - n + 1), 2, cols - n + 1)")
+    with nogil:
+        status = rgbz_ssim_reference(in_type, &x[0, 0, 0], x.shape[0], x.shape[1],
+                                     x.shape[2], &weights[0], <int> n, &x_moments[0, 0, 0],
+                                     workers)
     _raise_for(status)
 
 
@@ -218,6 +253,39 @@ def zipper_count(const frame_t[:, :, ::1] ref, const frame_t[:, :, ::1] test, do
     with nogil:
         status = rgbz_zipper_count(in_type, &ref[0, 0, 0], &test[0, 0, 0], ref.shape[0],
                                    ref.shape[1], scale, delta, &count, workers)
+    _raise_for(status)
+    return int(count)
+
+
+def zipper_reference(const frame_t[:, :, ::1] ref, double scale, double[:, ::1] best,
+                     uint8_t[:, ::1] nearest, int workers):
+    """The reference half of :func:`zipper_count`: for each interior pixel of ``ref``
+    ((rows - 2, cols - 2) arrays) the smallest dE to a neighbour and that neighbour (0..7)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if (best.shape[0] != ref.shape[0] - 2 or best.shape[1] != ref.shape[1] - 2
+            or nearest.shape[0] != best.shape[0] or nearest.shape[1] != best.shape[1]):
+        raise ValueError("best, nearest: expected (rows - 2, cols - 2) arrays")
+    with nogil:
+        status = rgbz_zipper_reference(in_type, &ref[0, 0, 0], ref.shape[0], ref.shape[1],
+                                       scale, &best[0, 0], &nearest[0, 0], workers)
+    _raise_for(status)
+
+
+def zipper_count_reference(const frame_t[:, :, ::1] test, double scale,
+                           const double[:, ::1] best, const uint8_t[:, ::1] nearest,
+                           double delta, int workers):
+    """:func:`zipper_count` of ``test`` against the reference of :func:`zipper_reference`."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int64_t count = 0
+    if (best.shape[0] != test.shape[0] - 2 or best.shape[1] != test.shape[1] - 2
+            or nearest.shape[0] != best.shape[0] or nearest.shape[1] != best.shape[1]):
+        raise ValueError("best, nearest: expected (rows - 2, cols - 2) arrays")
+    with nogil:
+        status = rgbz_zipper_count_reference(in_type, &test[0, 0, 0], test.shape[0],
+                                             test.shape[1], scale, &best[0, 0],
+                                             &nearest[0, 0], delta, &count, workers)
     _raise_for(status)
     return int(count)
 
