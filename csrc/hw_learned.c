@@ -10,21 +10,10 @@
  */
 #include <string.h>
 #include "hw_learned.h"
+#include "hw_stream.h"
 
-/* floor(log2 x) + 1 of x >= 0 (a priority encoder) */
-static inline int64_t hwl_bitlen(int64_t x)
-{
-    int64_t p = 0;
-    for (int s = 32; s >= 1; s >>= 1)
-        if ((x >> (p + s)) > 0) p += s;
-    return p + (x > 0);
-}
-
-/* i moved into [0, n) by whole periods P (n >= P): the float kernel's border rule */
-static inline ptrdiff_t hwl_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
-{
-    return i < 0 ? i + P * ((P - 1 - i) / P) : (i >= n ? i - P * ((i - n + P) / P) : i);
-}
+/* the streaming front end holds the window rows of this radius */
+typedef char hw_learned_radius_fits[RGBZ_LEARNED_MAX_RADIUS <= RGBZ_HW_STREAM_MAX_RADIUS ? 1 : -1];
 
 /* the bucket of one site of phase k from its taps v (hw_learned.h, steps 1-5) */
 static int32_t hwl_bucket(const rgbz_learned_filters *f, const rgbz_learned_fixed_args *x,
@@ -50,7 +39,7 @@ static int32_t hwl_bucket(const rgbz_learned_filters *f, const rgbz_learned_fixe
     for (int i = 0; i < ns - 1; i++) strength += T > x->str_q[(ptrdiff_t)k * (ns - 1) + i];
 
     /* the normalising shift: |A|, |B| <= 2 T, so |a|, |b| <= 2^(hash_bits + 1) */
-    const int64_t bl = hwl_bitlen(T);
+    const int64_t bl = rgbz_hw_bitlen(T);
     const int64_t sh = bl > c->hash_bits ? bl - c->hash_bits : 0;
     const int64_t a = A >> sh, b = B >> sh, t = T >> sh;
     const int64_t ar = c->cos_q * a - c->sin_q * b;
@@ -76,7 +65,7 @@ static int32_t hwl_bucket(const rgbz_learned_filters *f, const rgbz_learned_fixe
         emax = ec[2] > emax ? ec[2] : emax;
         emin = ec[0] < ec[1] ? ec[0] : ec[1];
         emin = ec[2] < emin ? ec[2] : emin;
-        const int64_t bl2 = hwl_bitlen(emax);
+        const int64_t bl2 = rgbz_hw_bitlen(emax);
         const int64_t sh2 = bl2 > c->hash_bits ? bl2 - c->hash_bits : 0;
         const int64_t hi = (emax >> sh2) << c->const_bits, lo = emin >> sh2;
         for (int i = 0; i < nk - 1; i++)
@@ -96,6 +85,17 @@ static int64_t hwl_site(const rgbz_learned_filters *f, const rgbz_learned_fixed_
         acc += (int64_t)w[t] * v[t];
     const int64_t F = x->cfg->tap_frac;
     return F > 0 ? (acc + ((int64_t)1 << (F - 1))) >> F : acc;
+}
+
+/* the streamed site of phase k in column x: its taps from the window, then hwl_site */
+static int64_t hwl_stream_site(const void *ctx, int32_t k, const rgbz_hw_stream *s, ptrdiff_t x)
+{
+    const rgbz_learned_filters *f = (const rgbz_learned_filters *)ctx;
+    int32_t v[RGBZ_LEARNED_MAX_TAPS];
+    const ptrdiff_t o = (ptrdiff_t)k * f->n_taps_max;
+    for (int t = 0; t < f->n_taps[k] && t < RGBZ_LEARNED_MAX_TAPS; t++)
+        v[t] = rgbz_hw_tap(s, f->tap_dy[o + t], f->tap_dx[o + t], x);
+    return hwl_site(f, f->fixed, k, v);
 }
 
 int rgbz_hwl_layout(int64_t *out, int n)
@@ -163,55 +163,9 @@ int rgbz_learned_fixed(int in_type, const void *src, void *dst, ptrdiff_t rows, 
         if (phase_map[i] < -1 || phase_map[i] >= f->n_phases) return RGBZ_EINVAL;
 
     rgbz_hwl_state *st = x->state;
-    const int R = f->radius;
-    const int A = R > py - 1 ? R : py - 1;        /* rows of look-ahead */
-    const int Ax = R > px - 1 ? R : px - 1;       /* pixels of look-ahead */
-    const int NLB = R + A;                        /* line buffers */
-    const int WC = R + Ax + 1;                    /* window columns */
-    const int WR = 2 * R + 1;                     /* window rows */
-    const uint8_t *s8 = (const uint8_t *)src;
-    const uint16_t *s16 = (const uint16_t *)src;
-    uint8_t *d8 = (uint8_t *)dst;
-    uint16_t *d16 = (uint16_t *)dst;
-
-    /* one step per input pixel, blanking included: (rows + A) x (cols + Ax) steps */
-    for (ptrdiff_t in_row = 0; in_row < rows + A; in_row++) {
-        const ptrdiff_t y = in_row - A;           /* the output row of these steps */
-        ptrdiff_t rsel[RGBZ_HWL_WR];              /* frame row of each window row */
-        for (int d = 0; d < WR; d++) rsel[d] = y >= 0 ? hwl_extend(y + d - R, rows, py) : 0;
-        for (ptrdiff_t x_in = 0; x_in < cols + Ax; x_in++) {
-            /* 1. the input pixel; the column x_in of the window rows into the window (the
-                  line buffers read before the incoming pixel overwrites the oldest row) */
-            if (x_in < cols) {
-                int32_t pix = 0;
-                if (in_row < rows)
-                    pix = in_type == RGBZ_T_U8 ? s8[in_row * cols + x_in]
-                                               : s16[in_row * cols + x_in];
-                if (y >= 0)
-                    for (int d = 0; d < WR; d++)
-                        st->win[d][x_in % WC] = rsel[d] == in_row
-                                                    ? pix : st->lb[rsel[d] % NLB][x_in];
-                if (in_row < rows) st->lb[in_row % NLB][x_in] = (uint16_t)pix;
-            }
-            /* 2. the output pixel (y, xo) */
-            const ptrdiff_t xo = x_in - Ax;
-            if (y < 0 || xo < 0) continue;
-            const int32_t k = phase_map[(y % py) * px + xo % px];
-            int64_t out = st->win[R][xo % WC];    /* a colour site: copied */
-            if (k >= 0) {
-                int32_t v[RGBZ_LEARNED_MAX_TAPS];
-                const ptrdiff_t o = (ptrdiff_t)k * f->n_taps_max;
-                for (int t = 0; t < f->n_taps[k] && t < RGBZ_LEARNED_MAX_TAPS; t++)
-                    v[t] = st->win[f->tap_dy[o + t] + R]
-                                  [hwl_extend(xo + f->tap_dx[o + t], cols, px) % WC];
-                out = hwl_site(f, x, k, v);
-                out = out < 0 ? 0 : out > top ? top : out;
-            }
-            if (in_type == RGBZ_T_U8)
-                d8[y * cols + xo] = (uint8_t)out;
-            else
-                d16[y * cols + xo] = (uint16_t)out;
-        }
-    }
+    const rgbz_hw_stream s = rgbz_hw_stream_init(rows, cols, f->radius, py, px, &st->lb[0][0],
+                                                 RGBZ_HWL_MAX_WIDTH, &st->win[0][0],
+                                                 RGBZ_HWL_MAX_WC);
+    rgbz_hw_stream_frame(&s, in_type, src, dst, phase_map, top, hwl_stream_site, f);
     return RGBZ_OK;
 }

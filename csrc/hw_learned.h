@@ -25,15 +25,9 @@
  *   6. bucket as in learned.h; out = (sum_t wq[k][bucket][t] v_t + 2^(F - 1)) >> F
  *      (F = tap_frac: round half up), clipped to [0, 2^b - 1].
  *
- * Streaming: the frame is read row by row, one pixel per step, through R + A line buffers
- * (R the filters' radius, A = max(R, P - 1) rows of look-ahead, P the row period) into a
- * window of 2 R + 1 rows by R + Ax + 1 columns (Ax = max(R, Q - 1) pixels of look-ahead,
- * Q the column period); one output pixel per step, A rows and Ax pixels after its input.
- * The border rule of the float kernel (a tap outside the frame moves back by whole
- * periods) reaches at most P - 1 rows below the top row (Q - 1 columns right of the left
- * column): the look-ahead holds it; at the bottom (right) border the buffers still hold the
- * last R + A rows (the window its last R + Ax + 1 columns). Static buffers only: a frame is
- * at most RGBZ_HWL_MAX_WIDTH pixels wide, R <= RGBZ_LEARNED_MAX_RADIUS, P, Q <= 8.
+ * Streaming: the front end of hw_stream.h (line buffers, a window, one output pixel per
+ * step, the float kernel's border rule) with R the filters' radius. Static buffers only: a
+ * frame is at most RGBZ_HWL_MAX_WIDTH pixels wide, R <= RGBZ_LEARNED_MAX_RADIUS, P, Q <= 8.
  */
 #ifndef HW_LEARNED_H
 #define HW_LEARNED_H

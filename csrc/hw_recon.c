@@ -23,22 +23,17 @@
  */
 #include <string.h>
 #include "hw_recon.h"
+#include "hw_stream.h"
 
-/* floor(log2 x) + 1 of x >= 0 (a priority encoder) */
-static inline int64_t hw_bitlen(int64_t x)
-{
-    int64_t p = 0;
-    for (int s = 32; s >= 1; s >>= 1)
-        if ((x >> (p + s)) > 0) p += s;
-    return p + (x > 0);
-}
+/* the streaming front end holds the window rows of this radius */
+typedef char hw_recon_radius_fits[RGBZ_HW_RADIUS <= RGBZ_HW_STREAM_MAX_RADIUS ? 1 : -1];
 
 /* 1/x ~ m 2^-(p + recip_bits) for x >= 1: p = floor(log2 x); the recip_index_bits bits
    after the leading one index the table ("pwl": and the next recip_bits bits interpolate) */
 static inline void hw_recip(int64_t x, const rgbz_hw_config *c, const int32_t *RT,
                             int64_t *m, int64_t *p)
 {
-    const int64_t pp = hw_bitlen(x) - 1;
+    const int64_t pp = rgbz_hw_bitlen(x) - 1;
     const int64_t Fi = c->recip_pwl ? c->recip_bits : 0;
     const int64_t F = c->recip_index_bits + Fi;
     const int64_t sh = F - pp;
@@ -229,14 +224,23 @@ static int64_t hw_site(const rgbz_plan *p, const rgbz_hw_plan *h, const rgbz_hw_
     return cv[0] + ((num * md + ((int64_t)1 << (sh - 1))) >> sh);
 }
 
-/* i moved into [0, n) by whole periods P (|offset| <= RGBZ_HW_RADIUS <= 2 P, n >= P) */
-static inline ptrdiff_t hw_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
+/* what the streamed site needs besides the window */
+typedef struct {
+    const rgbz_plan *plans;
+    const rgbz_hw_plan *hw;
+    const rgbz_hw_config *cfg;
+    const int32_t *exp_table, *recip_table;
+} hw_site_ctx;
+
+/* the streamed site of plan pl in column x: its taps from the window, then hw_site */
+static int64_t hw_stream_site(const void *ctx, int32_t pl, const rgbz_hw_stream *s, ptrdiff_t x)
 {
-    if (i < 0) i += P;
-    if (i < 0) i += P;
-    if (i >= n) i -= P;
-    if (i >= n) i -= P;
-    return i;
+    const hw_site_ctx *c = (const hw_site_ctx *)ctx;
+    const rgbz_plan *p = &c->plans[pl];
+    int32_t v[RGBZ_MAX_TAPS];
+    for (int t = 0; t < p->n_taps && t < RGBZ_MAX_TAPS; t++)
+        v[t] = rgbz_hw_tap(s, p->tap_dy[t], p->tap_dx[t], x);
+    return hw_site(p, &c->hw[pl], c->cfg, c->exp_table, c->recip_table, v);
 }
 
 int rgbz_hw_layout(int64_t *out, int n)
@@ -308,54 +312,11 @@ int rgbz_reconstruct_fixed(int in_type, const void *src, void *dst, ptrdiff_t ro
         if (plan_map[i] < -1 || plan_map[i] >= n_plans) return RGBZ_EINVAL;
     if (hw_check(plans, n_plans, hw, cfg) != RGBZ_OK) return RGBZ_EINVAL;
 
-    const int R = RGBZ_HW_RADIUS;
-    const int A = R > py - 1 ? R : py - 1;        /* rows of look-ahead */
-    const int Ax = R > px - 1 ? R : px - 1;       /* pixels of look-ahead */
-    const int NLB = R + A;                        /* line buffers */
-    const int WC = R + Ax + 1;                    /* window columns */
-    const int64_t top = ((int64_t)1 << cfg->bit_depth) - 1;
-    const uint8_t *s8 = (const uint8_t *)src;
-    const uint16_t *s16 = (const uint16_t *)src;
-    uint8_t *d8 = (uint8_t *)dst;
-    uint16_t *d16 = (uint16_t *)dst;
-
-    /* one step per input pixel, blanking included: (rows + A) x (cols + Ax) steps */
-    for (ptrdiff_t in_row = 0; in_row < rows + A; in_row++) {
-        const ptrdiff_t y = in_row - A;           /* the output row of these steps */
-        ptrdiff_t rsel[RGBZ_HW_WR];               /* frame row of each kernel row */
-        for (int d = 0; d < RGBZ_HW_WR; d++) rsel[d] = y >= 0 ? hw_extend(y + d - R, rows, py) : 0;
-        for (ptrdiff_t x_in = 0; x_in < cols + Ax; x_in++) {
-            /* 1. the input pixel; the column x_in of the kernel rows into the window (the
-                  line buffers read before the incoming pixel overwrites the oldest row) */
-            if (x_in < cols) {
-                int32_t pix = 0;
-                if (in_row < rows)
-                    pix = in_type == RGBZ_T_U8 ? s8[in_row * cols + x_in]
-                                               : s16[in_row * cols + x_in];
-                if (y >= 0)
-                    for (int d = 0; d < RGBZ_HW_WR; d++)
-                        st->win[d][x_in % WC] = rsel[d] == in_row
-                                                    ? pix : st->lb[rsel[d] % NLB][x_in];
-                if (in_row < rows) st->lb[in_row % NLB][x_in] = (uint16_t)pix;
-            }
-            /* 2. the output pixel (y, x) */
-            const ptrdiff_t x = x_in - Ax;
-            if (y < 0 || x < 0) continue;
-            const int32_t pl = plan_map[(y % py) * px + x % px];
-            int64_t out = st->win[R][x % WC];     /* a colour site: copied */
-            if (pl >= 0) {
-                const rgbz_plan *p = &plans[pl];
-                int32_t v[RGBZ_MAX_TAPS];
-                for (int t = 0; t < p->n_taps && t < RGBZ_MAX_TAPS; t++)
-                    v[t] = st->win[p->tap_dy[t] + R][hw_extend(x + p->tap_dx[t], cols, px) % WC];
-                out = hw_site(p, &hw[pl], cfg, exp_table, recip_table, v);
-                out = out < 0 ? 0 : out > top ? top : out;
-            }
-            if (in_type == RGBZ_T_U8)
-                d8[y * cols + x] = (uint8_t)out;
-            else
-                d16[y * cols + x] = (uint16_t)out;
-        }
-    }
+    const hw_site_ctx ctx = {plans, hw, cfg, exp_table, recip_table};
+    const rgbz_hw_stream s = rgbz_hw_stream_init(rows, cols, RGBZ_HW_RADIUS, py, px,
+                                                 &st->lb[0][0], RGBZ_HW_MAX_WIDTH,
+                                                 &st->win[0][0], RGBZ_HW_MAX_WC);
+    rgbz_hw_stream_frame(&s, in_type, src, dst, plan_map, ((int64_t)1 << cfg->bit_depth) - 1,
+                         hw_stream_site, &ctx);
     return RGBZ_OK;
 }

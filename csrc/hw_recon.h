@@ -11,16 +11,8 @@
  * describe except edi_rows, and every pattern whose row and column periods are at most
  * RGBZ_HW_MAX_PERIOD.
  *
- * Streaming: the frame is read row by row, one pixel per step, through
- * RGBZ_HW_RADIUS + A line buffers (A = max(RGBZ_HW_RADIUS, P - 1) rows of look-ahead,
- * P the row period) into a window of 2 RGBZ_HW_RADIUS + 1 rows by
- * RGBZ_HW_RADIUS + Ax + 1 columns (Ax = max(RGBZ_HW_RADIUS, Q - 1) pixels of look-ahead,
- * Q the column period); one output pixel per step, A rows and Ax pixels after its input.
- * The border rule of the float core (a tap outside the frame moves back by whole
- * periods, so it keeps its colour) needs a tap at most P - 1 rows below the top row (Q - 1
- * columns right of the left column): the look-ahead A (Ax) holds it, and at the bottom
- * (right) border the buffers still hold the last RGBZ_HW_RADIUS + A rows (the window its
- * last RGBZ_HW_RADIUS + Ax + 1 columns).
+ * Streaming: the front end of hw_stream.h (line buffers, a window, one output pixel per
+ * step, the float core's border rule) with R = RGBZ_HW_RADIUS.
  *
  * Arithmetic: integers only in the per-pixel path (int64_t registers whose worst-case
  * widths the Python layer declares and checks against the configuration before a call:
