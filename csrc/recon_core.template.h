@@ -131,8 +131,8 @@ RGBZ_INLINE void RFN(rgbz_rows_block)(const REAL *const *v, int n, const uint64_
 /*
  * `np` (a compile-time 1..RGBZ_PAIRS_PASS where it is called) consecutive pairs of one
  * group, added in their order to G, or starting it (started = 0: the first difference is
- * the sum), in one pass over the sites: the running sum stays in a register. Near clipping a pair whose two
- * pixels are clipped adds nothing and is not counted in cnt.
+ * the sum), in one pass over the sites: the running sum stays in a register. Near
+ * clipping a pair whose two pixels are clipped adds nothing and is not counted in cnt.
  */
 RGBZ_INLINE void RFN(rgbz_pairs_into)(const rgbz_plan *p, int i0, int np, const REAL *const *v,
                                       int n, const uint64_t *clipped, int started,
@@ -201,8 +201,9 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
  * (recon_mask1.h) --; a run of consecutive pairs of one group is summed in passes of up
  * to RGBZ_PAIRS_PASS pairs of nearly equal length, a pair of several groups (the
  * semi-gradients) has its difference computed once. Near clipping a pair whose two pixels
- * are clipped is skipped and cnt[g][j] counts the pairs group g has left at site j; without clipping cnt is not
- * written. The sums become means in rgbz_gammas_block, their only reader.
+ * are clipped is skipped and cnt[g][j] counts the pairs group g has left at site j;
+ * without clipping cnt is not written. The sums become means in rgbz_gammas_block, their
+ * only reader.
  */
 RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v, int n,
                                         const uint64_t *clipped, REAL (*G)[RGBZ_BLK],
