@@ -3,7 +3,8 @@
  * element type and precision, the entry points rgbz_zguided_<precision>
  * (z_guided_entry.template.h, once per precision), and what they share: the checks of the
  * arguments the Python layer validated (a failure here is a bug there), the column map and
- * the cell terms of a tile row.
+ * the cell terms of a tile row. The hash, the dot products and the fast path are the learned
+ * kernel's (learned_common.h, learned_hash.template.h).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -14,34 +15,10 @@
 #include "rgbz.h"
 #include "rgbz_ops.h"
 #include "rgbz_templating.h"
+#include "learned_common.h"
 #include "z_guided.h"
 
-/* sites per block: a multiple of the widest vector; one in the counting build, so that
-   every counted operation belongs to a real site */
-#ifdef RGBZ_COUNT_OPS
-#define ZG_BLK 1
-#else
-#define ZG_BLK 32
-#endif
-
-/* keep the loops around the site loops (pairs, taps) rolled: GCC's unroll-and-jam of those
-   would turn the inner loops scalar (ZG_NOJAM_FN: the function's loops not jammed either) */
-#if defined(__GNUC__) && !defined(__clang__)
-#define ZG_NOJAM _Pragma("GCC unroll 1")
-#define ZG_NOJAM_FN __attribute__((optimize("no-loop-unroll-and-jam")))
-#else
-#define ZG_NOJAM
-#define ZG_NOJAM_FN
-#endif
-
 #define ZG_MAX_BOX 36   /* the pixels of a Z pixel's box: (2 + 2 + 2)^2 at most */
-
-/* the border rule of every kernel: an index outside [0, n) moves back inside by whole
-   periods P (n >= P), so that the pixel keeps its colour */
-static inline ptrdiff_t zg_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)
-{
-    return i < 0 ? i + P * ((P - 1 - i) / P) : (i >= n ? i - P * ((i - n + P) / P) : i);
-}
 
 static int zg_check(const void *src, const void *dst, const rgbz_zguided_filters *f,
                     ptrdiff_t rows, ptrdiff_t cols, int py, int px, const int32_t *phase_map)
@@ -222,7 +199,7 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
     const int R = f->hash->radius;
     ptrdiff_t *colmap = malloc((size_t)(cols + 2 * R) * sizeof *colmap);
     if (colmap)
-        for (ptrdiff_t x = -R; x < cols + R; x++) colmap[x + R] = zg_extend(x, cols, px);
+        for (ptrdiff_t x = -R; x < cols + R; x++) colmap[x + R] = lrn_extend(x, cols, px);
     return colmap;
 }
 

@@ -33,6 +33,11 @@ typedef struct {
     int32_t n_levels;          /* noise levels of the guide: buckets = n_levels * hash buckets */
     const float *w_f32;        /* [n_phases][n_taps_max][n_levels * n_buckets] (tap-major) */
     const double *w_f64;
+    /* optional (NULL: not used), for radius <= 3: the colour weights on the dense window
+       (learned.h's layout), [n_phases][n_levels * n_buckets][2 radius + 1][8]; the hash's
+       bayer is then needed with the spread term */
+    const float *wd_f32;
+    const double *wd_f64;
     const float *g_f32;        /* [n_phases][n_levels * n_buckets][RGBZ_ZG_FEATURES] */
     const double *g_f64;
     int32_t n_base_max;        /* row length of base_idx */

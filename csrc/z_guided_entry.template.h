@@ -25,9 +25,10 @@ int RGBZ_CAT(rgbz_zguided, RS)(int in_type, const void *src, void *dst, ptrdiff_
 #endif
     ptrdiff_t *colmap = zg_colmap(f, cols, px);
     if (!colmap) return RGBZ_ENOMEM;
+    const int fast_ok = lrn_fast_ok(f->hash, f->wd_f32 && f->wd_f64, py, px, phase_map);
 #define ZG_LOOP_(s, T)                                                                       \
     st = RGBZ_CAT3(zg_loop, s, RS)((const T *)src, (T *)dst, rows, cols, py, px, phase_map,  \
-                                   f, colmap, maxval, workers, opcounts)
+                                   f, colmap, fast_ok, maxval, workers, opcounts)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZG_LOOP_, st = RGBZ_EINVAL)
 #undef ZG_LOOP_
     free(colmap);

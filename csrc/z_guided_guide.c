@@ -85,9 +85,14 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(nth) reduction(| : bad)
 #endif
-    for (ptrdiff_t n = 0; n < N; n++)
-        bad |= site_rows[n] != zr + (int64_t)py * (n / gxc) ||
-               site_cols[n] != zc + (int64_t)px * (n % gxc);
+    for (ptrdiff_t iy = 0; iy < gyc; iy++) {
+        const int64_t *restrict sr = site_rows + iy * gxc, *restrict sc = site_cols + iy * gxc;
+        const int64_t r = zr + (int64_t)py * iy;
+        int b = 0;
+        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gxc; ix++)
+            b |= (sr[ix] != r) | (sc[ix] != zc + (int64_t)px * ix);
+        bad |= b;
+    }
     if (bad) return RGBZ_ZG_SITES;
 
     /* the bracket of each frequency's median from the sample: ranks m / 2 -+ (3 sqrt(m) +

@@ -75,19 +75,14 @@ static void RGBZ_CAT(zgg_pass, IS)(int pass, const IN_T *taps, ptrdiff_t F, ptrd
                                    const double *ratio)
 {
     double A[RGBZ_TOF_MAX_FREQS][ZGG_BLOCK], mean[ZGG_BLOCK], val[ZGG_BLOCK];
-    ptrdiff_t at[ZGG_BLOCK];
-    for (ptrdiff_t n0 = lo; n0 < hi; n0 += ZGG_BLOCK) {
-        const ptrdiff_t nb = hi - n0 < ZGG_BLOCK ? hi - n0 : ZGG_BLOCK;
+    for (ptrdiff_t n0 = lo, nb; n0 < hi; n0 += nb) {
+        /* a block within one row of the grid: site n is cell (n / gxc, n % gxc), so the
+           block's cells are at[0 ..] */
+        const ptrdiff_t ix = n0 % gxc;
+        nb = hi - n0 < ZGG_BLOCK ? hi - n0 : ZGG_BLOCK;
+        nb = gxc - ix < nb ? gxc - ix : nb;
+        const ptrdiff_t cell0 = (n0 / gxc) * gx + ix;
         RGBZ_CAT(zgg_amplitudes, IS)(taps, F, N, n0, nb, A, mean);
-        /* the grid cell of each site: site n is cell (n / gxc, n % gxc) */
-        ptrdiff_t iy = n0 / gxc, ix = n0 % gxc;
-        for (ptrdiff_t k = 0; k < nb; k++) {
-            at[k] = iy * gx + ix;
-            if (++ix == gxc) {
-                ix = 0;
-                iy++;
-            }
-        }
         if (pass == 3) {
             /* NumPy's order: norm = A_f / ratio_f, its mean over f (summed in order, over
                F), then sum_f (norm_f - mean)^2 in order, over F (F - 1) */
@@ -110,11 +105,12 @@ static void RGBZ_CAT(zgg_pass, IS)(int pass, const IN_T *taps, ptrdiff_t F, ptrd
                     val[k] += d * d;
                 }
             const double den = (double)(F * (F - 1));
-            for (ptrdiff_t k = 0; k < nb; k++) var[at[k]] = val[k] / den;
+            double *restrict vo = var + cell0;
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) vo[k] = val[k] / den;
             continue;
         }
         if (pass == 1) {
-            for (ptrdiff_t k = 0; k < nb; k++) grid[at[k]] = mean[k];
+            memcpy(grid + cell0, mean, (size_t)nb * sizeof *mean);
             ptrdiff_t c = 0;
             RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) c += mean[k] > 0;
             *n_lit += c;

@@ -81,7 +81,9 @@ def z_guided(src: np.ndarray, dst: np.ndarray, precision: int, py: int, px: int,
              w_f64: np.ndarray, g_f32: np.ndarray, g_f64: np.ndarray, n_base: np.ndarray,
              base_idx: np.ndarray, grid: np.ndarray, var: np.ndarray, chan: np.ndarray,
              zr: int, zc: int, block: int, targets: np.ndarray, lam: float, thr: np.ndarray,
-             maxval: float, workers: int, opcounts: np.ndarray | None = ...) -> None: ...
+             maxval: float, workers: int, wd_f32: np.ndarray | None = ...,
+             wd_f64: np.ndarray | None = ..., bayer: np.ndarray | None = ...,
+             opcounts: np.ndarray | None = ...) -> None: ...
 def z_guided_guide(taps: np.ndarray, site_rows: np.ndarray, site_cols: np.ndarray, py: int,
                    px: int, zr: int, zc: int, gyc: int, gxc: int, grid: np.ndarray,
                    var: np.ndarray, workers: int) -> bool: ...

@@ -219,6 +219,8 @@ cdef extern from "z_guided.h" nogil:
         int32_t n_levels
         const float *w_f32
         const double *w_f64
+        const float *wd_f32
+        const double *wd_f64
         const float *g_f32
         const double *g_f64
         int32_t n_base_max
@@ -463,14 +465,18 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
              const int32_t[::1] n_base, const int32_t[:, ::1] base_idx,
              const double[:, ::1] grid, const double[:, ::1] var, const int8_t[::1] chan,
              int zr, int zc, int block, const int32_t[::1] targets, double lam,
-             const double[::1] thr, double maxval, int workers, uint64_t[::1] opcounts=None):
+             const double[::1] thr, double maxval, int workers,
+             const float[:, :, :, ::1] wd_f32=None, const double[:, :, :, ::1] wd_f64=None,
+             const int32_t[::1] bayer=None, uint64_t[::1] opcounts=None):
     """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
     ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
     (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
     n_buckets, 11), the baseline taps (n_phases,) and (n_phases, n_base_max); the guide: the
     amplitude grid and its variance (gy, gx), the colour codes of the tile (py * px), the Z
     pixel's corner and size, the target colour of each phase, the regularisation and the
-    n_levels - 1 noise thresholds. ``opcounts``: as for ``learned``."""
+    n_levels - 1 noise thresholds; the optional dense colour weights (n_phases, n_levels *
+    n_buckets, 2 radius + 1, 8) and the Bayer tile (as for ``learned``) enable the fast path.
+    ``opcounts``: as for ``learned``."""
     cdef int status
     cdef rgbz_learned_filters h
     cdef rgbz_zguided_filters f
@@ -519,6 +525,10 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     h.pair_col = &pair_col[0, 0, 0]
     h.inv_col = &inv_col[0, 0]
     h.bayer = NULL
+    if bayer is not None:
+        if bayer.shape[0] != 4:
+            raise ValueError("z_guided: inconsistent filter arrays")
+        h.bayer = &bayer[0]
     # a level count of 1 has no threshold: the kernel reads none
     h.str_thr = &str_thr[0, 0] if str_thr.shape[1] else &zero
     h.coh_thr2 = &coh_thr2[0, 0] if coh_thr2.shape[1] else &zero
@@ -534,6 +544,16 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     f.w_f64 = &w_f64[0, 0, 0]
     f.g_f32 = &g_f32[0, 0, 0]
     f.g_f64 = &g_f64[0, 0, 0]
+    f.wd_f32 = NULL
+    f.wd_f64 = NULL
+    if wd_f32 is not None and wd_f64 is not None:
+        if (wd_f32.shape[0] != n_ph or wd_f32.shape[1] != w_f32.shape[2]
+                or wd_f32.shape[2] != 2 * radius + 1 or wd_f32.shape[3] != 8
+                or wd_f64.shape[0] != n_ph or wd_f64.shape[1] != w_f32.shape[2]
+                or wd_f64.shape[2] != 2 * radius + 1 or wd_f64.shape[3] != 8):
+            raise ValueError("z_guided: inconsistent dense weights")
+        f.wd_f32 = &wd_f32[0, 0, 0, 0]
+        f.wd_f64 = &wd_f64[0, 0, 0, 0]
     f.n_base_max = base_idx.shape[1]
     f.n_base = &n_base[0]
     f.base_idx = &base_idx[0, 0]

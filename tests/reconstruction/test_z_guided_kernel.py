@@ -111,6 +111,40 @@ def test_threads_give_identical_results(fitted):
     assert np.array_equal(one, two)
 
 
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+def test_fast_path_agrees_with_the_generic_path(fitted, pattern, precision):
+    # interior sites take the fast path (the learned kernel's: hash from box sums, colour
+    # weights on the dense window); without the dense weights every site takes the generic
+    # path (the taps' pairs and list): the same values up to the order of the sums
+    from rgbz_fast import _kernels
+    from rgbz_fast.reconstruction._z_guided_kernel import _PRECISION_CODES, kernel_arrays
+    f = fitted[pattern]
+    frame = simulate(_scene((70, 130), 12), pattern, seed=7, noise=True)
+    data = frame.data.astype(np.float64)
+    grid, var = guide_grid(data.shape, frame.pattern, tof=frame.tof)
+    arrays = kernel_arrays(f)
+    assert "wd_f32" in arrays            # the shipped window (radius 3) has the fast path
+    generic = {k: v for k, v in arrays.items() if k not in ("wd_f32", "wd_f64")}
+    P, Q = frame.pattern.period
+    phase_map = np.full(P * Q, -1, np.int32)
+    for k, ph in enumerate(f.base.geometry):
+        phase_map[ph["rc"][0] * Q + ph["rc"][1]] = k
+    got = {}
+    for name, arr in (("fast", arrays), ("generic", generic)):
+        out = np.empty_like(data)
+        _kernels.z_guided(data, out, _PRECISION_CODES[precision], P, Q, phase_map, grid=grid,
+                          var=var, maxval=2047.0, workers=2, **arr)
+        got[name] = out
+    z = frame.z_mask
+    assert np.array_equal(got["fast"][~z], data[~z])
+    if precision == "float64":
+        np.testing.assert_allclose(got["fast"][z], got["generic"][z], rtol=1e-12, atol=1e-9)
+    else:
+        diff = np.abs(got["fast"][z] - got["generic"][z])
+        assert np.mean(diff > 2e-3) <= MAX_F32_FLIPS
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2", "mask2_rggb"])
 @pytest.mark.parametrize("shape", [(60, 76), (45, 62), (6, 6)])
 @pytest.mark.parametrize("noise", [False, True])

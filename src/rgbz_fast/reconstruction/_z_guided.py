@@ -108,17 +108,19 @@ def _complete(shape, pattern):
 
 
 def _fill_cut(grid, complete):
-    """A Z pixel cut by the frame's edge has no measurement: it takes the one a period inwards."""
-    if complete.all():
-        return grid
+    """A Z pixel cut by the frame's edge has no measurement: it takes the one a period inwards.
+
+    The complete cells are the first rows and columns of the grid (``_complete``), so the cut
+    ones are its last rows and columns: filled in place from the last complete row and
+    column (no copy of the grid). Returns ``grid``.
+    """
     if not complete.any():
         raise ValueError("shape: the frame holds no complete Z pixel")
-    out = grid.copy()
-    gy, gx = grid.shape
-    iy = np.minimum(np.arange(gy), np.nonzero(complete.any(axis=1))[0].max())
-    ix = np.minimum(np.arange(gx), np.nonzero(complete.any(axis=0))[0].max())
-    out[~complete] = grid[np.ix_(iy, ix)][~complete]
-    return out
+    ny = int(complete.any(axis=1).sum())
+    nx = int(complete.any(axis=0).sum())
+    grid[:ny, nx:] = grid[:ny, nx - 1:nx]
+    grid[ny:, :] = grid[ny - 1:ny, :]
+    return grid
 
 
 def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):

@@ -34,7 +34,7 @@ def kernel_arrays(filters):
     g64 = np.ascontiguousarray(filters.guide_weights)
     out = {k: base[k] for k in ("n_taps", "tap_dy", "tap_dx", "n_pairs", "pair_a", "pair_b",
                                 "pair_col", "inv_col", "str_thr", "coh_thr2", "spr_thr",
-                                "radius", "hash_radius")}
+                                "radius", "hash_radius", "bayer")}
     pattern = filters.pattern
     P, Q = pattern.period
     zr, zc, b = z_layout(pattern)
@@ -44,6 +44,15 @@ def kernel_arrays(filters):
                zr=zr, zc=zc, block=b,
                targets=np.array([ph["target"] for ph in geo], np.int32),
                lam=float(filters.lam), thr=np.ascontiguousarray(filters.noise_thresholds))
+    R = int(base["radius"])
+    if R <= 3:
+        # the kernel's fast path: each window row as 8 colour weights, 0 off the taps
+        dense = np.zeros((len(geo), w64.shape[2], 2 * R + 1, 8))
+        for k, ph in enumerate(geo):
+            nt = len(ph["taps"])
+            # (advanced indices around a slice put the tap axis first)
+            dense[k, :, ph["taps"][:, 0] + R, ph["taps"][:, 1] + R] = w64[k, :nt, :]
+        out.update(wd_f32=dense.astype(np.float32), wd_f64=dense)
     object.__setattr__(filters, "_kernel", out)
     return out
 
