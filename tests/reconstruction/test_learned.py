@@ -112,8 +112,9 @@ def test_float32_within_tolerance(fitted, name, dtype):
 
 @pytest.mark.parametrize("name", ["mask1", "mask2", "mask1_nospread"])
 def test_frames_wider_than_a_strip_match_reference(fitted, name):
-    # the kernel's fast path runs in strips of 1024 columns (csrc/learned.template.h,
-    # LRN_STRIP), each with its own rings of rows: 2600 columns make three strips; float32
+    # the kernel's fast path runs in strips of 16 KiB of REAL per ring row (LRN_STRIP,
+    # csrc/learned_common.h: 2048 columns in float64 arithmetic), each with its own rings of
+    # rows: 2600 columns make two strips; float32
     # data in float64 arithmetic goes through the ring of converted rows, exactly (the output
     # is float32: the float64 result rounded, to half a unit in the last place)
     f = fitted[name]
