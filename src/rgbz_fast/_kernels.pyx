@@ -797,6 +797,21 @@ cdef extern from "tof_guided.h" nogil:
                        const int64_t *px, Py_ssize_t reach, int64_t radius_px, double inv2h2,
                        double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
                        float *ov, float *on, int workers)
+    ctypedef struct tofg_unwrap_out:
+        const double *freqs
+        const double *weights
+        double max_range
+        double *depth
+        double *residual
+        int32_t *wraps
+        double *phase
+        double *amp
+    int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
+                          const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C,
+                          const int64_t *row_px, const int64_t *col_px, Py_ssize_t reach_r,
+                          Py_ssize_t reach_c, int64_t radius_px, double inv2h2,
+                          double inv2hc2, double *or64, double *oi64, float *ov, float *on,
+                          const tofg_unwrap_out *uw, Py_ssize_t strip, int workers)
     int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                            const double *residual, const uint8_t *sat, Py_ssize_t F,
                            Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
@@ -891,6 +906,53 @@ def tofg_pass(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v
                                 radius_px, inv2h2, inv2hc2, o_r, o_i, o_r64, o_i64,
                                 &out_var[0], &out_neff[0], workers)
     _raise_for(status)
+
+
+def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v,
+                 const float[:, ::1] col, const uint8_t[::1] use, const int64_t[::1] row_px,
+                 const int64_t[::1] col_px, Py_ssize_t reach_r, Py_ssize_t reach_c,
+                 int64_t radius_px, double inv2h2, double inv2hc2, double[:, ::1] out_re,
+                 double[:, ::1] out_im, float[::1] out_var, float[::1] out_neff, int workers,
+                 const double[::1] freqs=None, const double[::1] weights=None,
+                 double max_range=0.0, double[::1] depth=None, double[::1] residual=None,
+                 int32_t[::1] wraps=None, double[:, ::1] phase=None, double[:, ::1] amp=None,
+                 Py_ssize_t strip=0):
+    """The guided denoise: the four passes of tofg_pass (rows, columns, rows guided by the
+    columns' output, columns) fused strip by strip; the last pass's outputs, bit for bit.
+    With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
+    unwrapped strip by strip (tof_depth_iq, bit for bit) instead of stored in out_re, out_im
+    (then None); strip: grid rows per strip (0: the kernel's default). Returns False when
+    a mean is not finite (RGBZ_EDOMAIN), True otherwise."""
+    cdef int status
+    cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
+    cdef tofg_unwrap_out uw
+    cdef tofg_unwrap_out *puw = NULL
+    cdef double *o_r = NULL
+    cdef double *o_i = NULL
+    if R == 0 or C == 0:
+        return True
+    if depth is not None:
+        uw.freqs = &freqs[0]
+        uw.weights = &weights[0]
+        uw.max_range = max_range
+        uw.depth = &depth[0]
+        uw.residual = &residual[0]
+        uw.wraps = &wraps[0]
+        uw.phase = &phase[0, 0]
+        uw.amp = &amp[0, 0]
+        puw = &uw
+    else:
+        o_r = &out_re[0, 0]
+        o_i = &out_im[0, 0]
+    with nogil:
+        status = rgbz_tofg_denoise(&zr[0, 0], &zi[0, 0], &v[0], &col[0, 0], &use[0],
+                                   zr.shape[0], R, C, &row_px[0], &col_px[0], reach_r, reach_c,
+                                   radius_px, inv2h2, inv2hc2, o_r, o_i, &out_var[0],
+                                   &out_neff[0], puw, strip, workers)
+    if status == RGBZ_EDOMAIN:
+        return False
+    _raise_for(status)
+    return True
 
 
 def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[::1] depth,
