@@ -61,6 +61,10 @@
 #define RFN(name) RGBZ_CAT(name, RS)
 #define BLOOP for (int j = 0; j < n; j++)
 #define RCLIPPED(mask, t) ((int)(((mask) >> (t)) & 1u))
+/* the most pairs of one gradient group summed in one pass over the block: its
+   2 * RGBZ_PAIRS_PASS tap pointers, G and the index fit the general registers (more are
+   parked in vector registers, one vector-port move per difference and vector of sites) */
+#define RGBZ_PAIRS_PASS 5      /* rgbz_groups_block's switch has the cases 1..5 */
 
 /* the run-time tuning of eq. 7 and of edi_rows, in the precision of the arithmetic */
 typedef struct {
@@ -125,23 +129,24 @@ RGBZ_INLINE void RFN(rgbz_rows_block)(const REAL *const *v, int n, const uint64_
 }
 
 /*
- * `np` (a compile-time 1..8 where it is called) consecutive pairs of one group, added in
- * their order to G, or starting it (started = 0: the first difference is the sum), in one
- * pass over the sites: the running sum stays in a register. Near clipping a pair whose two
- * pixels are clipped adds nothing and is not counted in cnt.
+ * `np` (a compile-time 1..RGBZ_PAIRS_PASS where it is called) consecutive pairs of one
+ * group, added in their order to G, or starting it (started = 0: the first difference is
+ * the sum), in one pass over the sites: the running sum stays in a register. Near
+ * clipping a pair whose two pixels are clipped adds nothing and is not counted in cnt.
  */
 RGBZ_INLINE void RFN(rgbz_pairs_into)(const rgbz_plan *p, int i0, int np, const REAL *const *v,
                                       int n, const uint64_t *clipped, int started,
                                       REAL *restrict G, uint8_t *restrict cnt)
 {
-    const REAL *a[8], *b[8];
-    int ta[8], tb[8];
+    const REAL *a[RGBZ_PAIRS_PASS], *b[RGBZ_PAIRS_PASS];
+    int ta[RGBZ_PAIRS_PASS], tb[RGBZ_PAIRS_PASS];
     for (int i = 0; i < np; i++) {
         ta[i] = p->pair_a[i0 + i];
         tb[i] = p->pair_b[i0 + i];
         a[i] = v[ta[i]];
         b[i] = v[tb[i]];
     }
+    RGBZ_IVDEP
     BLOOP {
         REAL acc = started ? G[j] : (REAL)0;  /* never reads a G not yet written */
         int kept = 0;
@@ -177,6 +182,7 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
         cq[q] = cnt[g];
         st[q] = (int)((started >> g) & 1u);
     }
+    RGBZ_IVDEP
     BLOOP {
         const int keep = !clipped || !(RCLIPPED(clipped[j], ta) && RCLIPPED(clipped[j], tb));
         const REAL d = keep ? RABSDIFF(a[j], b[j]) : (REAL)0;
@@ -193,10 +199,11 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
  * pixel pairs. A pair belongs to the groups of its bit mask. The sums are taken in the
  * plan's pair order -- which is part of the result, float addition not being associative
  * (recon_mask1.h) --; a run of consecutive pairs of one group is summed in passes of up
- * to eight pairs, a pair of several groups (the semi-gradients) has its difference
- * computed once. Near clipping a pair whose two pixels are clipped is skipped and
- * cnt[g][j] counts the pairs group g has left at site j; without clipping cnt is not
- * written. The sums become means in rgbz_gammas_block, their only reader.
+ * to RGBZ_PAIRS_PASS pairs of nearly equal length, a pair of several groups (the
+ * semi-gradients) has its difference computed once. Near clipping a pair whose two pixels
+ * are clipped is skipped and cnt[g][j] counts the pairs group g has left at site j;
+ * without clipping cnt is not written. The sums become means in rgbz_gammas_block, their
+ * only reader.
  */
 RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v, int n,
                                         const uint64_t *clipped, REAL (*G)[RGBZ_BLK],
@@ -222,21 +229,21 @@ RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v
     for (int i = 0; i < p->n_pairs;) {
         const uint32_t m = (uint32_t)p->pair_gmask[i];
         if (m && !(m & (m - 1))) {
-            /* one group: the run of its consecutive pairs, eight per pass (the gradients of
-               Mask2 have 7 to 9) */
+            /* one group: the run of its consecutive pairs (the gradients of Mask2 have 7 to
+               9), in passes of at most RGBZ_PAIRS_PASS */
             const int g = rgbz_ctz(m);
-            int np = 1;
-            while (np < 8 && i + np < p->n_pairs && (uint32_t)p->pair_gmask[i + np] == m) np++;
+            int run = 1;
+            while (i + run < p->n_pairs && (uint32_t)p->pair_gmask[i + run] == m) run++;
+            /* a run longer than RGBZ_PAIRS_PASS pairs in passes of nearly equal length */
+            const int passes = (run + RGBZ_PAIRS_PASS - 1) / RGBZ_PAIRS_PASS;
+            const int np = (run + passes - 1) / passes;
             const int st = (int)((started >> g) & 1u);
             switch (np) {
             case 1: RFN(rgbz_pairs_into)(p, i, 1, v, n, clipped, st, G[g], cnt[g]); break;
             case 2: RFN(rgbz_pairs_into)(p, i, 2, v, n, clipped, st, G[g], cnt[g]); break;
             case 3: RFN(rgbz_pairs_into)(p, i, 3, v, n, clipped, st, G[g], cnt[g]); break;
             case 4: RFN(rgbz_pairs_into)(p, i, 4, v, n, clipped, st, G[g], cnt[g]); break;
-            case 5: RFN(rgbz_pairs_into)(p, i, 5, v, n, clipped, st, G[g], cnt[g]); break;
-            case 6: RFN(rgbz_pairs_into)(p, i, 6, v, n, clipped, st, G[g], cnt[g]); break;
-            case 7: RFN(rgbz_pairs_into)(p, i, 7, v, n, clipped, st, G[g], cnt[g]); break;
-            default: RFN(rgbz_pairs_into)(p, i, 8, v, n, clipped, st, G[g], cnt[g]); break;
+            default: RFN(rgbz_pairs_into)(p, i, 5, v, n, clipped, st, G[g], cnt[g]); break;
             }
             started |= m;
             i += np;

@@ -120,10 +120,11 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
     REAL r[RGBZ_BLK];
     uint64_t clipped[RGBZ_BLK];
     const int px = w->px, nt = p->n_taps;
-    /* the streams of the plan: kernel row s_dy, column phase s_r, shifts [s_q0, s_q1] */
+    /* the streams of the plan: kernel row s_dy, column phase s_r, shifts [s_q0, s_q1]; only
+       the strided gather reads them (rows not deinterleaved) */
     int ns = 0, s_dy[RGBZ_MAX_TAPS], s_r[RGBZ_MAX_TAPS], s_q0[RGBZ_MAX_TAPS], s_q1[RGBZ_MAX_TAPS];
     int tap_s[RGBZ_MAX_TAPS], tap_q[RGBZ_MAX_TAPS];
-    for (int t = 0; t < nt; t++) {
+    for (int t = 0; t < (w->prow[0] ? 0 : nt); t++) {
         const int dx = p->tap_dx[t];
         const int q = dx >= 0 ? dx / px : -((-dx + px - 1) / px), rr = dx - q * px;
         int s = 0;
@@ -148,18 +149,23 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
     if (jd0 > ns_all) jd0 = ns_all;
     if (jd1 > ns_all) jd1 = ns_all;
     if (jd1 < jd0) jd1 = jd0;
+    /* rows deinterleaved: tap t of the site j is element j + tap_off[t] of its row's ring
+       slot (x0 + dx = q px + phase, 0 <= phase < px: the plane of that phase, shifted by q
+       sites), so that a block's pointers take no division */
+    ptrdiff_t tap_off[RGBZ_MAX_TAPS];
+    for (int t = 0; t < (w->prow[0] ? nt : 0); t++) {
+        const ptrdiff_t c = x0 + p->tap_dx[t];
+        const ptrdiff_t ph = ((c % px) + px) % px;
+        tap_off[t] = ph * w->plen + (c - ph) / px;
+    }
     for (ptrdiff_t jb = 0; jb < ns_all;) {
         const ptrdiff_t seg_end = jb < jd0 ? jd0 : jb < jd1 ? jd1 : ns_all;
         const int direct = jb >= jd0 && jb < jd1;
         const int n = (int)(seg_end - jb < RGBZ_BLK ? seg_end - jb : RGBZ_BLK);
         const ptrdiff_t xb = x0 + jb * px;
-        jb += n;
         if (direct && w->prow[0]) {
             /* rows deinterleaved: each tap of the block is a contiguous run of a plane */
-            for (int t = 0; t < nt; t++) {
-                const ptrdiff_t c = xb + p->tap_dx[t];
-                v[t] = w->prow[p->tap_dy[t] + w->ry] + (c % px) * w->plen + c / px;
-            }
+            for (int t = 0; t < nt; t++) v[t] = w->prow[p->tap_dy[t] + w->ry] + (tap_off[t] + jb);
         } else if (direct) {
             for (int s = 0; s < ns; s++) {
                 const IN_T *row = w->rowp[s_dy[s] + w->ry];
@@ -181,6 +187,7 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
                 v[t] = buf[t];
             }
         }
+        jb += n;
         if (m1 >= 0) {
             RGBZ_CAT(rgbz_mask1_core, RS)[m1](v, n, kn, r);
         } else if (clip_on) {
