@@ -9,16 +9,26 @@ undo or silence what the import does to the user's process.
 
 from __future__ import annotations
 
+import threading
 import warnings
 
 import numpy as np
 
 __all__ = ["import_colour", "import_colour_demosaicing"]
 
+#: held while an import changes the warning filters and the print options, which belong to
+#: the process: two threads importing at once would each restore the other's changed state
+_PROCESS_STATE = threading.RLock()
+
 
 def import_colour():
     """``colour`` (colour-science), leaving NumPy's print options and the warning filters as
     they were."""
+    with _PROCESS_STATE:
+        return _import_colour()
+
+
+def _import_colour():
     opts = np.get_printoptions()
     try:
         with warnings.catch_warnings():
@@ -37,7 +47,12 @@ def import_colour_demosaicing():
     a namespace SciPy deprecates; only that warning is silenced. It imports
     colour-science, whose print-option change is undone as in :func:`import_colour`.
     """
-    import_colour()
+    with _PROCESS_STATE:
+        return _import_colour_demosaicing()
+
+
+def _import_colour_demosaicing():
+    _import_colour()
     opts = np.get_printoptions()
     try:
         with warnings.catch_warnings():

@@ -347,10 +347,11 @@ def _alive(pid):
     return stat.rsplit(")", 1)[1].split()[0] != "Z"
 
 
-def _stop_a_running_pool(tmp_path, stop):
-    """Start `rgbz-fast evaluate --processes 2` in a session of its own, call ``stop(proc)``
-    once both workers run and the cache has an entry; (return code, stderr, seconds from the
-    signal to the exit, the workers, the cache folder)."""
+def _stop_a_running_pool(tmp_path, stop, pool="processes"):
+    """Start `rgbz-fast evaluate --processes 2` (``pool="threads"``: the default pool of
+    threads) in a session of its own, call ``stop(proc)`` once the pool runs and the cache
+    has an entry; (return code, stderr, seconds from the signal to the exit, the worker
+    processes, the cache folder)."""
     import imageio.v3 as iio
 
     ds = tmp_path / "ds"
@@ -360,18 +361,18 @@ def _stop_a_running_pool(tmp_path, stop):
         iio.imwrite(ds / f"img{i}.png", rng.integers(0, 256, (256, 320, 3), dtype=np.uint8))
     cache = tmp_path / "cache"
     argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--dataset", str(ds), "--out",
-            str(tmp_path / "out"), "--cache", str(cache), "--processes", "2", "--quiet",
-            "--no-plots"]
+            str(tmp_path / "out"), "--cache", str(cache), "--quiet", "--no-plots"]
+    argv += ["--processes", "2"] if pool == "processes" else []
     proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             start_new_session=True)
     deadline = time.monotonic() + 300
     workers = []
     while time.monotonic() < deadline and proc.poll() is None:
         workers = [c for c in _children(proc.pid) if "multiprocessing" in _cmdline(c)]
-        if len(workers) >= 2 and list(cache.rglob("*.json")):
+        if len(workers) >= 2 * (pool == "processes") and list(cache.rglob("*.json")):
             break
         time.sleep(0.02)
-    assert proc.poll() is None and len(workers) >= 2, "the pool never ran"
+    assert proc.poll() is None and list(cache.rglob("*.json")), "the pool never ran"
     t0 = time.monotonic()
     stop(proc)
     _, err = proc.communicate(timeout=120)
@@ -395,6 +396,7 @@ def test_a_stopped_evaluation_pool_ends_at_once_and_cleans_up(tmp_path, how):
             os.killpg(proc.pid, signal.SIGINT)
 
     code, err, seconds, workers, cache = _stop_a_running_pool(tmp_path, stop)
+    assert len(workers) >= 2, "the pool's processes were never seen"
     want = (128 + signal.SIGTERM, "terminated") if how == "sigterm" else (130, "interrupted")
     assert code == want[0], err[-2000:]
     assert err.strip().splitlines()[-1] == f"rgbz-fast evaluate: {want[1]}"
@@ -402,6 +404,31 @@ def test_a_stopped_evaluation_pool_ends_at_once_and_cleans_up(tmp_path, how):
     time.sleep(0.5)
     assert not [w for w in workers if _alive(w)], "orphaned worker processes"
     assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+@pytest.mark.parametrize("how", ["sigterm", "ctrl-c"])
+def test_a_stopped_thread_pool_ends_its_images_and_cleans_up(tmp_path, how):
+    """SIGTERM to `rgbz-fast evaluate` (its default pool of threads), or Ctrl-C to its
+    process group: the threads end their images at the next (pattern, method), the command
+    exits 143 or 130 with its one line, leaves no temporary cache file, and every cache entry
+    it wrote is whole (the next run reads it)."""
+    import os
+
+    def stop(proc):
+        if how == "sigterm":
+            proc.send_signal(signal.SIGTERM)
+        else:
+            os.killpg(proc.pid, signal.SIGINT)
+
+    code, err, seconds, workers, cache = _stop_a_running_pool(tmp_path, stop, "threads")
+    assert workers == [], "the default pool started processes"
+    want = (128 + signal.SIGTERM, "terminated") if how == "sigterm" else (130, "interrupted")
+    assert code == want[0], err[-2000:]
+    assert err.strip().splitlines()[-1] == f"rgbz-fast evaluate: {want[1]}"
+    assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]
+    for entry in cache.rglob("*.json"):
+        assert set(json.loads(entry.read_text())) == {"check", "values"}, entry
 
 
 REPORT_LOOP = textwrap.dedent("""

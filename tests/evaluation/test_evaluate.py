@@ -97,7 +97,7 @@ def test_interrupted_run_resumes(tiny_dataset, tmp_path, monkeypatch):
     cache = tmp_path / "cache"
     ds = rio.folder_dataset(tiny_dataset)
     import rgbz_fast.evaluation._run as mod
-    real = mod.evaluate_image
+    real = mod._evaluate_image
     seen = []
 
     def dying(source, *a, **k):
@@ -105,11 +105,11 @@ def test_interrupted_run_resumes(tiny_dataset, tmp_path, monkeypatch):
             raise KeyboardInterrupt
         seen.append(source.name)
         return real(source, *a, **k)
-    monkeypatch.setattr(mod, "evaluate_image", dying)
+    monkeypatch.setattr(mod, "_evaluate_image", dying)
     with pytest.raises(KeyboardInterrupt):
         ev.evaluate(ds, cache_dir=cache, processes=1, progress=False, metrics=("cfa_psnr",),
                     methods=("sg",))
-    monkeypatch.setattr(mod, "evaluate_image", real)
+    monkeypatch.setattr(mod, "_evaluate_image", real)
     done = {p.parent.name for p in cache.rglob("*.json")}
     assert done == {mod.cache_folder(n) for n in seen}
     full = ev.evaluate(ds, cache_dir=cache, processes=1, progress=False, metrics=("cfa_psnr",),
@@ -128,10 +128,89 @@ def test_atomic_write_never_leaves_partial_files(tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == ["out.txt"]
 
 
-def test_process_pool_equals_serial(tiny_dataset):
+def test_thread_and_process_pools_equal_serial(tiny_dataset, monkeypatch):
+    """The default pool (threads of this process, as many as cores) and a pool of spawned
+    processes give the serial run's rows, in its order."""
+    import os
+    import threading
+
+    from rgbz_fast.evaluation import _run
+
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)        # a pool even on one core
+    seen = []
+    task = _run._pool_task
+    monkeypatch.setattr(_run, "_pool_task", lambda *a: seen.append(
+        threading.current_thread().name) or task(*a))
     ds = rio.folder_dataset(tiny_dataset)
-    kw = dict(progress=False, metrics=("cfa_psnr", "cpsnr"), methods=("bi", "sg"))
-    assert ev.evaluate(ds, processes=2, **kw).rows == ev.evaluate(ds, processes=1, **kw).rows
+    kw = dict(progress=False, metrics=("cfa_psnr", "cpsnr", "ssim", "zipper"),
+              methods=("bi", "sg"))
+    serial = ev.evaluate(ds, processes=1, **kw).rows
+    seen.clear()
+    assert ev.evaluate(ds, **kw).rows == serial
+    assert len(seen) == 3 and all(n.startswith("rgbz-evaluate") for n in seen), seen
+    monkeypatch.setattr(_run, "_pool_task", task)          # the processes import it by name
+    assert ev.evaluate(ds, processes=2, **kw).rows == serial
+
+
+def _pool_threads():
+    import threading
+    return [t for t in threading.enumerate() if t.name.startswith("rgbz-evaluate")]
+
+
+def test_thread_pool_stops_at_a_bad_image_and_leaves_no_thread(tiny_dataset, monkeypatch):
+    """A bad image in the thread pool stops the run with its error once every thread has
+    ended; with ``skip_bad`` it is listed and the others give the serial rows."""
+    import os
+
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)
+    (tiny_dataset / "broken.png").write_bytes(b"\x89PNG\r\n\x1a\n not a png")
+    ds = rio.folder_dataset(tiny_dataset)
+    kw = dict(progress=False, metrics=("cfa_psnr",), methods=("sg",), patterns=("mask1",))
+    with pytest.raises(ValueError, match="broken"):
+        ev.evaluate(ds, **kw)
+    assert _pool_threads() == []
+    res = ev.evaluate(ds, skip_bad=True, **kw)
+    assert [name for name, _ in res.skipped] == ["broken"]
+    good = [s for s in ds if s.name != "broken"]
+    assert res.rows == ev.evaluate(good, processes=1, **kw).rows
+
+
+def test_thread_pool_tasks_see_the_callers_context(monkeypatch):
+    """Each task of the thread pool runs in a copy of the caller's context: a context
+    variable set around evaluate() (here the Mask1 fast-path switch) reaches the kernels."""
+    from rgbz_fast.evaluation import _run
+    from rgbz_fast.reconstruction import _reconstruct
+
+    class Bar:
+        def update(self):
+            pass
+
+    monkeypatch.setattr(_run, "_pool_task", lambda t, stop: [_reconstruct._FAST_PATH.get()])
+    tasks = [(type("S", (), {"name": f"img{i}"})(),) for i in range(4)]
+    token = _reconstruct._FAST_PATH.set(False)
+    try:
+        results = {}
+        _run._run_threads(tasks, 2, Bar(), results)
+    finally:
+        _reconstruct._FAST_PATH.reset(token)
+    assert results == {f"img{i}": [False] for i in range(4)}
+    assert _pool_threads() == []
+
+
+def test_a_stopped_image_ends_before_its_next_method(tiny_dataset, tmp_path):
+    """A thread of the pool asked to stop ends its image before the next (pattern,
+    method): nothing is computed or cached after the request."""
+    import threading
+
+    from rgbz_fast.evaluation import _run
+
+    stop = threading.Event()
+    stop.set()
+    source = rio.folder_dataset(tiny_dataset)[0]
+    with pytest.raises(_run._Stopped):
+        _run._evaluate_image(source, ev.EvalConfig(methods=("sg",)), tmp_path / "cache", 1,
+                             stop)
+    assert not (tmp_path / "cache").exists() or not list((tmp_path / "cache").rglob("*"))
 
 
 def test_dask_local_cluster_equals_local_run(tiny_dataset):

@@ -59,7 +59,9 @@ def add_parser(sub):
                    help="image of the per-image table (default: kodim09 when present, else the "
                         "first)")
     p.add_argument("--processes", type=c.positive_int, default=None, metavar="N",
-                   help="worker processes, one image each (default: all cores)")
+                   help="spawned worker processes, one image each (default: none; threads "
+                        "of this process take one image each, as many as cores; 1: one "
+                        "image at a time)")
     p.add_argument("--scheduler", default=None,
                    help="Dask scheduler address, tcp://host:port (default: the local pool)")
     p.add_argument("--cache", type=Path, default=None, metavar="DIR",

@@ -132,6 +132,12 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
     (:meth:`~rgbz_fast.io.ImageSource.fingerprint`), in a folder of its own
     per image name. ``workers`` are the threads of each kernel call.
     """
+    return _evaluate_image(source, config, cache_dir, workers)
+
+
+def _evaluate_image(source, config, cache_dir, workers, stop=None):
+    """:func:`evaluate_image`; ``stop`` (a :class:`threading.Event`), when set, ends the
+    image before its next (pattern, method) with :class:`_Stopped`."""
     if not isinstance(source, ImageSource):
         raise TypeError(f"source: expected an ImageSource, got {type(source).__name__}")
     config = merge_params(EvalConfig, config, name="config")
@@ -174,6 +180,8 @@ def evaluate_image(source, config, cache_dir=None, workers=1):
         for p, m in todo:
             if p != pname:
                 continue
+            if stop is not None and stop.is_set():
+                raise _Stopped
             out = reconstruct(frame, m, params=config.params, workers=workers)
             values = {}
             if "cfa_psnr" in config.metrics:
@@ -309,10 +317,10 @@ def _cache_write(cdir, key, values):
                       "kept, not cached", RuntimeWarning, stacklevel=2)
 
 
-def _pool_task(args):
+def _pool_task(args, stop=None):
     source, config, cache_dir, workers, skip_bad = args
     try:
-        return evaluate_image(source, config, cache_dir, workers=workers)
+        return _evaluate_image(source, config, cache_dir, workers, stop)
     except _WorkerStopped as stop:
         # the writes in progress have removed their temporary files on the way here; the
         # pool's loop would catch the exception and take the next image, so end the process
@@ -331,6 +339,11 @@ class _Skipped(str):
     may name in its own words."""
 
     error = None
+
+
+class _Stopped(Exception):
+    """The run was stopped (an error elsewhere, an interrupt): a thread of the pool ends its
+    image between two (pattern, method), its cache writes done or removed."""
 
 
 class _WorkerStopped(SystemExit):
@@ -436,11 +449,15 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         pattern x method, written atomically), so an interrupted run resumes
         and a re-run with one more method computes only that method.
     processes : int, optional
-        Worker processes of the local pool, one image each (default: all
-        cores; 1 runs in-process).
+        Spawned worker processes, one image each. Default: none; a pool of
+        threads of this process takes one image each, as many as there are
+        cores (the kernels release the GIL: no process start-up, no second
+        import of the package, nothing pickled). 1: one image at a time in
+        this process.
     workers : int, optional
-        Threads of each kernel call (default: 1 with a pool of several
-        processes, all cores in-process). Results never depend on it.
+        Threads of each kernel call (default: 1 in a pool of several threads
+        or processes, all cores one image at a time). Results never depend
+        on it.
     scheduler : str or distributed.Client, optional
         A Dask scheduler address (``"tcp://host:8786"``) or client: the same
         tasks run on Dask distributed instead of the local pool and give the
@@ -461,8 +478,9 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     Notes
     -----
     An interrupt (Ctrl-C, or SIGTERM under the command line) stops the
-    local pool's worker processes before it propagates: no worker outlives
-    the run, and no temporary cache file is left behind.
+    local pool before it propagates: a thread ends its image at its next
+    (pattern, method), a worker process at once; no worker outlives the
+    run, and no temporary cache file is left behind.
     """
     config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
@@ -494,6 +512,8 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
             for t in tasks:
                 results[t[0].name] = _pool_task(t)
                 bar.update()
+        elif processes is None:
+            _run_threads(tasks, nproc, bar, results)
         else:
             own_tracker = not _tracker_running()
             try:
@@ -506,6 +526,34 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped)
+
+
+def _run_threads(tasks, nthreads, bar, results):
+    """The tasks on a pool of threads of this process, their results into ``results``.
+
+    The kernels release the GIL, so the threads compute side by side. Each task runs in a
+    copy of the caller's context (its context variables, NumPy's error state). An error or
+    an interrupt sets ``stop``: the images not started are cancelled, the ones in progress
+    end at their next (pattern, method), and every thread has ended before it propagates.
+    """
+    import contextvars
+    import threading
+    from concurrent.futures import ThreadPoolExecutor
+
+    stop = threading.Event()
+    ex = ThreadPoolExecutor(max_workers=min(nthreads, len(tasks)),
+                            thread_name_prefix="rgbz-evaluate")
+    try:
+        futs = {ex.submit(contextvars.copy_context().run, _pool_task, t, stop): t[0].name
+                for t in tasks}
+        for f in as_completed(futs):
+            results[futs[f]] = f.result()
+            bar.update()
+    except BaseException:
+        stop.set()
+        ex.shutdown(wait=True, cancel_futures=True)
+        raise
+    ex.shutdown(wait=True)
 
 
 def _run_pool(tasks, nproc, bar, results):

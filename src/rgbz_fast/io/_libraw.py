@@ -8,6 +8,7 @@ import io
 import os
 import sys
 import tempfile
+import threading
 import warnings
 
 import numpy as np
@@ -16,6 +17,10 @@ from .._patterns import BAYER_PHASES
 from ._files import check_size, read_file
 
 __all__ = ["read_libraw"]
+
+#: held while a read redirects the process's file descriptor 2 and the tifffile logger: two
+#: threads redirecting at once would leave fd 2 on the first one's temporary file
+_PROCESS_STATE = threading.Lock()
 
 
 def read_libraw(path, limits):
@@ -28,7 +33,7 @@ def read_libraw(path, limits):
                           "pip install rawpy  (or pip install rgbz-fast[raw])") from None
     blob = read_file(path, "path", max_bytes=limits[1])
     try:
-        with _c_stderr() as said:
+        with _PROCESS_STATE, _c_stderr() as said:
             data, info = _libraw_mosaic(rawpy, blob, path, limits)
     except rawpy.LibRawError as exc:
         # LibRaw decodes lazily: a truncated or damaged file fails when the pixels are

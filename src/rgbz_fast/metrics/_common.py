@@ -54,6 +54,9 @@ def _check_integer_range(arrays, names, data_range, param="data_range"):
     """
     for a, name in zip(arrays, names):
         if np.issubdtype(a.dtype, np.integer):
+            info = np.iinfo(a.dtype)
+            if info.min >= 0 and info.max <= data_range:
+                continue                       # every value of the type is in the range
             lo, hi = int(a.min()), int(a.max())
             if lo < 0 or hi > data_range:
                 raise ValueError(f"{param}: {name} holds integer values in [{lo}, {hi}], "
