@@ -198,6 +198,8 @@ def fit_folds(folds, base, lam, noise_thresholds=(0.003,), *, ridge=None, prior=
     each fold of a cross-validation), the parameters left at None set by ``select`` (as in
     :func:`train_z_guided`, which runs this once its frames' equations are summed per fold:
     group i in fold i mod k). Records the choice in ``meta``."""
+    if select not in SELECTIONS:
+        raise ValueError(f"select: expected 'cv' or None, got {select!r}")
     given = {"ridge": ridge, "prior": prior, "colour_prior": colour_prior}
     info = {}
     if select == "cv":
