@@ -174,7 +174,10 @@ static void LRN_CAT(lrn_dot, IS, RS)(REAL (*restrict v)[LRN_BLK], int n, const R
  * as 8 contiguous REAL pixels against the bucket's dense weights.
  */
 #define LRN_RING 8   /* rows of a ring: the fast path's windows span at most 2 * 3 + 1 */
-#define LRN_STRIP 1024 /* columns of a strip of the fast path */
+/* columns of a strip of the fast path, 16 KiB of REAL per ring row (4096 in float32, 2048 in
+   float64): every strip costs each Z row its own set-up and halo, which outweighs the cache
+   misses of longer ring rows up to about that length (40 ring rows per thread) */
+#define LRN_STRIP ((ptrdiff_t)(16384 / sizeof(REAL)))
 #define LRN_HALO 8    /* columns the fast path reads beyond its sites: 3 + 2 (hash), 3 + 4 (dot) */
 
 /* the ring row of logical row Y (slot Y mod LRN_RING), or -1 before it is computed */
@@ -556,6 +559,35 @@ static void LRN_CAT(lrn_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_
     LRN_CAT(lrn_dot, IS, RS)(v, n, w, nt, f->n_buckets, bucket, res);
 }
 
+/* the border sites (ys[j], xs[j]) of phase k, n <= LRN_BLK of them from any rows, through the
+   per-site path (taps through the column map, hash pairs, dot), written to dst: the border
+   sites of the fast path, gathered across rows so that the per-site path runs on whole
+   blocks (row by row it had two sites or so per block) */
+static void LRN_CAT(lrn_border_block, IS, RS)(const IN_T *src, IN_T *dst, ptrdiff_t rows,
+                                               ptrdiff_t cols, int py, const ptrdiff_t *ys,
+                                               const ptrdiff_t *xs, int n,
+                                               const ptrdiff_t *colmap,
+                                               const rgbz_learned_filters *f, int k,
+                                               const REAL *w, REAL maxval, REAL (*v)[LRN_BLK],
+                                               int32_t *bucket, REAL *res)
+{
+    const int R = f->radius, nt = f->n_taps[k];
+    const int32_t *tdy = f->tap_dy + (ptrdiff_t)k * f->n_taps_max;
+    const int32_t *tdx = f->tap_dx + (ptrdiff_t)k * f->n_taps_max;
+    const IN_T *rp[2 * RGBZ_LEARNED_MAX_RADIUS + 1][LRN_BLK];
+    for (int dy = -R; dy <= R; dy++)
+        for (int j = 0; j < n; j++) rp[dy + R][j] = src + lrn_extend(ys[j] + dy, rows, py) * cols;
+    for (int t = 0; t < nt; t++) {
+        const IN_T *const *rt = rp[tdy[t] + R];
+        const ptrdiff_t *cm = colmap + R + tdx[t];
+        for (int j = 0; j < n; j++) v[t][j] = (REAL)rt[j][cm[xs[j]]];
+    }
+    LRN_CAT(lrn_hash, IS, RS)(v, n, f, k, bucket);
+    LRN_CAT(lrn_dot, IS, RS)(v, n, w, nt, f->n_buckets, bucket, res);
+    for (int j = 0; j < n; j++)
+        dst[ys[j] * cols + xs[j]] = (IN_T)RGBZ_CAT(rgbz_out, RS)(res[j], maxval, IN_IS_INT);
+}
+
 static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
                                      ptrdiff_t rows, ptrdiff_t cols, int py, int px,
                                      const int32_t *phase_map, const rgbz_learned_filters *f,
@@ -618,6 +650,12 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
         REAL v[RGBZ_LEARNED_MAX_TAPS][LRN_BLK];
         int32_t bucket[LRN_BLK];
         REAL res[LRN_BLK];
+        /* the fast path's border sites waiting for a block of their phase k: pend_n[k] of
+           them, rows pend[k][0][...], columns pend[k][1][...] (without the memory, each
+           row's border sites run on their own) */
+        ptrdiff_t (*pend)[2][LRN_BLK] = fast ? malloc((size_t)f->n_phases * sizeof *pend) : NULL;
+        int *pend_n = fast ? calloc((size_t)f->n_phases, sizeof *pend_n) : NULL;
+        const int batch = pend && pend_n;
         /* every row: the colour sites and the border (generic) sites; the fast sites below,
            in strips. Both loops give each thread the same rows (static schedule), which the
            rings need: a thread's rows are consecutive within each strip. */
@@ -659,6 +697,19 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                         x0 = xl + px;
                         continue;
                     }
+                    if (batch) {   /* a border site of the fast path: to its phase's block */
+                        pend[k][0][pend_n[k]] = y;
+                        pend[k][1][pend_n[k]] = x0;
+                        if (++pend_n[k] == LRN_BLK) {
+                            LRN_CAT(lrn_border_block, IS, RS)(src, dst, rows, cols, py,
+                                                              pend[k][0], pend[k][1], LRN_BLK,
+                                                              colmap, f, k, w, maxval, v,
+                                                              bucket, res);
+                            pend_n[k] = 0;
+                        }
+                        x0 += px;
+                        continue;
+                    }
                     /* border sites: up to the first fast site, or to the end */
                     const ptrdiff_t stop = x0 < xf ? xf : cols;
                     const ptrdiff_t left = (stop - 1 - x0) / px + 1;
@@ -672,6 +723,17 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                 }
             }
         }
+        /* this thread's last border sites (its rows: the same thread wrote their colour
+           sites above) */
+        for (int k = 0; batch && k < f->n_phases; k++)
+            if (pend_n[k])
+                LRN_CAT(lrn_border_block, IS, RS)(src, dst, rows, cols, py, pend[k][0],
+                                                  pend[k][1], pend_n[k], colmap, f, k,
+                                                  weights + (ptrdiff_t)k * f->n_taps_max *
+                                                                f->n_buckets,
+                                                  maxval, v, bucket, res);
+        free(pend);
+        free(pend_n);
         /* the fast sites, in strips of LRN_STRIP columns so that the rings' part of a strip
            stays in the cache from one Z row to the next */
         for (ptrdiff_t sa = fast_lo; fast && sa <= fast_hi; sa += LRN_STRIP) {

@@ -4,8 +4,10 @@
  *  - SSIM and MS-SSIM (Z. Wang, A. C. Bovik, H. R. Sheikh, E. P. Simoncelli, IEEE TIP 13(4),
  *    2004; Z. Wang, E. P. Simoncelli, A. C. Bovik, Asilomar 2003): the five local moments of a
  *    pair of planes filtered by a separable symmetric window over the windows lying wholly
- *    inside the image, one output row at a time (vertical pass into five row buffers, then
- *    horizontal pass and the SSIM formula), so no moment image is stored. The operations are
+ *    inside the image, one output row at a time (vertical pass into row buffers, then
+ *    horizontal pass and the SSIM formula). What the reference alone gives (its local means
+ *    and variances) can be computed once and stored, for a reference compared with many
+ *    images; otherwise no moment image is stored. The operations are
  *    those of rgbz_fast.metrics' former NumPy code, in its order: scipy.ndimage.correlate1d
  *    for symmetric weights (centre * w0, then (far pair sum) * w ... (near pair sum) * w),
  *    rows first; then the SSIM formula as NumPy evaluates it left to right. Only the final
@@ -22,6 +24,7 @@
  *    29-31): Lab three rows at a time in a ring buffer per thread, then for each interior
  *    pixel the neighbour with the smallest reference dE (strict <, raster order, so the first
  *    one wins a tie), psi = dE_test - dE_ref at that neighbour, counted when |psi| > delta.
+ *    The reference's half (the neighbour and its dE) can be stored once for many test images.
  *
  * Compiled with -ffp-contract=off (csrc/meson.build): a fused multiply-add would change the
  * rounding of the formulas above and the agreement with the NumPy references.
@@ -183,71 +186,169 @@ static double mt_sum(const double *a, ptrdiff_t n)
     return s;
 }
 
-/* SSIM: the horizontal pass over the five moment rows m (mt_ssim_vpass) into the five rows
-   a (cols - 2 rad values each), the SSIM formula in NumPy's order, and the sums of the SSIM
-   and c s values of the row (the first two rows of m, free by then, hold the values) */
-static void mt_ssim_hpass(double *m, ptrdiff_t cols, const double *w, int rad,
-                          double c1, double c2, double *restrict a, double *ssim_row,
-                          double *cs_row)
+/* The radius of the default SSIM window (11 taps), whose loops are unrolled; `always_inline`
+   lets the constant reach them. */
+#define MT_SSIM_RAD 5
+#define MT_INLINE __attribute__((always_inline))
+#define MT_UNROLL MT_PRAGMA(GCC unroll 8)
+
+/* The horizontal pass of one moment row v (read from v - rad to v + n + rad) into o[0..n),
+   correlate1d's order for symmetric weights (the centre times its weight, then the pairs
+   from the farthest to the nearest): unrolled, in registers, for the default window; the
+   pairs added into o otherwise. */
+static inline MT_INLINE void mt_hpass_reg(const double *v, ptrdiff_t n, const double *w,
+                                          int rad, double *restrict o)
 {
-    const ptrdiff_t n = cols - 2 * rad;
     const double wc = w[rad];
-    for (int q = 0; q < 5; q++) {
-        const double *restrict v = m + q * cols + rad;
-        double *restrict o = a + q * n;
-        MT_SIMD
-        for (ptrdiff_t j = 0; j < n; j++) o[j] = v[j] * wc;
-        for (int k = rad; k >= 1; k--) {
-            const double wk = w[rad - k];
-            MT_SIMD
-            for (ptrdiff_t j = 0; j < n; j++) o[j] += (v[j - k] + v[j + k]) * wk;
-        }
-    }
-    const double *ax = a, *ay = a + n, *axx = a + 2 * n, *ayy = a + 3 * n, *axy = a + 4 * n;
-    double *restrict ssim_v = (double *)m, *restrict cs_v = (double *)m + cols;
     MT_SIMD
     for (ptrdiff_t j = 0; j < n; j++) {
-        const double mx = ax[j], my = ay[j];
-        const double vx = axx[j] - mx * mx, vy = ayy[j] - my * my, vxy = axy[j] - mx * my;
-        const double lum = (2.0 * mx * my + c1) / (mx * mx + my * my + c1);
-        const double cs = (2.0 * vxy + c2) / (vx + vy + c2);
-        ssim_v[j] = lum * cs;
-        cs_v[j] = cs;
+        double s = v[j] * wc;
+        MT_UNROLL
+        for (int k = rad; k >= 1; k--) s += (v[j - k] + v[j + k]) * w[rad - k];
+        o[j] = s;
+    }
+}
+
+static void mt_hpass(const double *v, ptrdiff_t n, const double *w, int rad,
+                     double *restrict o)
+{
+    if (rad == MT_SSIM_RAD) {
+        mt_hpass_reg(v, n, w, MT_SSIM_RAD, o);
+        return;
+    }
+    const double wc = w[rad];
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < n; j++) o[j] = v[j] * wc;
+    for (int k = rad; k >= 1; k--) {
+        const double wk = w[rad - k];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++) o[j] += (v[j - k] + v[j + k]) * wk;
+    }
+}
+
+/* SSIM, reference side: the horizontal pass over the two moment rows m (x, x^2 filtered
+   along the columns, mt_ssim_vpass_x) into the mean and the variance of x over each of the
+   cols - 2 rad windows of the row: mom[0..n) = mu_x, mom[n..2n) = E[x^2] - mu_x^2, the values
+   the SSIM formula uses, so that a stored row gives the same SSIM as one computed anew. */
+static void mt_ssim_hpass_x(const double *m, ptrdiff_t cols, const double *w, int rad,
+                            double *restrict mom)
+{
+    const ptrdiff_t n = cols - 2 * rad;
+    double *restrict mx = mom, *restrict vx = mom + n;
+    mt_hpass(m + rad, n, w, rad, mx);
+    mt_hpass(m + cols + rad, n, w, rad, vx);
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < n; j++) vx[j] = vx[j] - mx[j] * mx[j];
+}
+
+/* SSIM, test side: the horizontal pass over the three moment rows m (y, y^2, xy filtered
+   along the columns, mt_ssim_vpass_y), the reference's row mom (mt_ssim_hpass_x), the SSIM
+   formula in NumPy's order, and the sums of the SSIM and c s values of the row (their values
+   in a, 5 (cols - 2 rad) doubles of scratch). The default window filters in registers, in
+   the loop of the formula; another one filters into a first. */
+static inline MT_INLINE double mt_ssim_value(double mx, double vx, double my, double eyy,
+                                             double exy, double c1, double c2, double *cs_out)
+{
+    const double vy = eyy - my * my, vxy = exy - mx * my;
+    const double lum = (2.0 * mx * my + c1) / (mx * mx + my * my + c1);
+    const double cs = (2.0 * vxy + c2) / (vx + vy + c2);
+    *cs_out = cs;
+    return lum * cs;
+}
+
+static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
+                            const double *w, int rad, double c1, double c2, double *restrict a,
+                            double *ssim_row, double *cs_row)
+{
+    const ptrdiff_t n = cols - 2 * rad;
+    const double *ax = mom, *vxs = mom + n;
+    double *restrict ssim_v = a, *restrict cs_v = a + n;
+    if (rad == MT_SSIM_RAD) {
+        const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
+        const double *vxy = m + 2 * cols + MT_SSIM_RAD;
+        const double wc = w[MT_SSIM_RAD];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++) {
+            double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--) {
+                const double wk = w[MT_SSIM_RAD - k];
+                sy += (vy[j - k] + vy[j + k]) * wk;
+                syy += (vyy[j - k] + vyy[j + k]) * wk;
+                sxy += (vxy[j - k] + vxy[j + k]) * wk;
+            }
+            ssim_v[j] = mt_ssim_value(ax[j], vxs[j], sy, syy, sxy, c1, c2, &cs_v[j]);
+        }
+    } else {
+        double *ay = a + 2 * n, *ayy = a + 3 * n, *axy = a + 4 * n;
+        mt_hpass(m + rad, n, w, rad, ay);
+        mt_hpass(m + cols + rad, n, w, rad, ayy);
+        mt_hpass(m + 2 * cols + rad, n, w, rad, axy);
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++)
+            ssim_v[j] = mt_ssim_value(ax[j], vxs[j], ay[j], ayy[j], axy[j], c1, c2, &cs_v[j]);
     }
     *ssim_row = mt_sum(ssim_v, n);
     *cs_row = mt_sum(cs_v, n);
 }
 
-/* zipper: the count of one row of centre pixels 1..cols-2 (rm, tm: its Lab in the reference
-   and the test image; ru, tu above, rd, td below) */
+/* zipper: one row of Lab values per channel */
 typedef struct {
     double *L, *A, *B;      /* one row of each Lab channel */
 } mt_labrow;
 
-static int64_t mt_zipper_row(mt_labrow ru, mt_labrow rm, mt_labrow rd, mt_labrow tu,
-                             mt_labrow tm, mt_labrow td, ptrdiff_t cols, double delta)
+/* zipper, reference side: for each centre pixel 1..cols-2 of the row rm (ru above, rd
+   below), the smallest dE to its eight neighbours (strict <, raster order: the first wins a
+   tie) into best[j - 1] and that neighbour's raster index 0..7 into nearest[j - 1]. */
+static void mt_zipper_ref_row(mt_labrow ru, mt_labrow rm, mt_labrow rd, ptrdiff_t cols,
+                              double *restrict best, uint8_t *restrict nearest)
+{
+    MT_SIMD
+    for (ptrdiff_t j = 1; j < cols - 1; j++) {
+        const double cl = rm.L[j], ca = rm.A[j], cb = rm.B[j];
+        double b = INFINITY;
+        int k = 0;
+#define MT_NB(R, dc, idx)                                                                    \
+        {                                                                                    \
+            double dl = cl - R.L[j + dc], da = ca - R.A[j + dc], db = cb - R.B[j + dc];      \
+            double de = sqrt((dl * dl + da * da) + db * db);                                 \
+            int closer = de < b;                                                             \
+            b = closer ? de : b;                                                             \
+            k = closer ? idx : k;                                                            \
+        }
+        MT_NB(ru, -1, 0) MT_NB(ru, 0, 1) MT_NB(ru, 1, 2)
+        MT_NB(rm, -1, 3) MT_NB(rm, 1, 4)
+        MT_NB(rd, -1, 5) MT_NB(rd, 0, 6) MT_NB(rd, 1, 7)
+#undef MT_NB
+        best[j - 1] = b;
+        nearest[j - 1] = (uint8_t)k;
+    }
+}
+
+/* zipper, test side: the count of the centre pixels 1..cols-2 of the test row tm (tu above,
+   td below) whose psi = dE_test(P, I) - best has |psi| > delta, I the reference's nearest
+   neighbour (mt_zipper_ref_row) */
+static int64_t mt_zipper_test_row(mt_labrow tu, mt_labrow tm, mt_labrow td, ptrdiff_t cols,
+                                  const double *best, const uint8_t *nearest, double delta)
 {
     int64_t cnt = 0;
     MT_SIMD_COUNT(cnt)
     for (ptrdiff_t j = 1; j < cols - 1; j++) {
-        const double cl = rm.L[j], ca = rm.A[j], cb = rm.B[j];
-        const double ql = tm.L[j], qa = tm.A[j], qb = tm.B[j];
-        double best = INFINITY, bl = 0.0, ba = 0.0, bb = 0.0;
-#define MT_NB(R, T, dc)                                                                      \
+        const int k = nearest[j - 1];
+        double nl = 0.0, na = 0.0, nb = 0.0;
+#define MT_PICK(T, dc, idx)                                                                  \
         {                                                                                    \
-            double dl = cl - R.L[j + dc], da = ca - R.A[j + dc], db = cb - R.B[j + dc];      \
-            double de = sqrt((dl * dl + da * da) + db * db);                                 \
-            int closer = de < best;                                                          \
-            best = closer ? de : best;                                                       \
-            bl = closer ? ql - T.L[j + dc] : bl;                                             \
-            ba = closer ? qa - T.A[j + dc] : ba;                                             \
-            bb = closer ? qb - T.B[j + dc] : bb;                                             \
+            int here = k == idx;                                                             \
+            nl = here ? T.L[j + dc] : nl;                                                    \
+            na = here ? T.A[j + dc] : na;                                                    \
+            nb = here ? T.B[j + dc] : nb;                                                    \
         }
-        MT_NB(ru, tu, -1) MT_NB(ru, tu, 0) MT_NB(ru, tu, 1)
-        MT_NB(rm, tm, -1) MT_NB(rm, tm, 1)
-        MT_NB(rd, td, -1) MT_NB(rd, td, 0) MT_NB(rd, td, 1)
-#undef MT_NB
-        double psi = sqrt((bl * bl + ba * ba) + bb * bb) - best;
+        MT_PICK(tu, -1, 0) MT_PICK(tu, 0, 1) MT_PICK(tu, 1, 2)
+        MT_PICK(tm, -1, 3) MT_PICK(tm, 1, 4)
+        MT_PICK(td, -1, 5) MT_PICK(td, 0, 6) MT_PICK(td, 1, 7)
+#undef MT_PICK
+        const double bl = tm.L[j] - nl, ba = tm.A[j] - na, bb = tm.B[j] - nb;
+        double psi = sqrt((bl * bl + ba * ba) + bb * bb) - best[j - 1];
         cnt += fabs(psi) > delta;
     }
     return cnt;
@@ -259,18 +360,40 @@ static int64_t mt_zipper_row(mt_labrow ru, mt_labrow rm, mt_labrow rd, mt_labrow
 #undef RGBZ_TYPE_TEMPLATE
 
 /* ------------------------------------------------------------------ public entry points */
-int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y, ptrdiff_t planes,
-                             ptrdiff_t rows, ptrdiff_t cols, const double *weights, int ntaps,
-                             double c1, double c2, double *ssim_sum, double *cs_sum, int workers)
+/* the window checks of both SSIM entry points */
+static int mt_ssim_args_ok(const void *x, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,
+                           const double *weights, int ntaps)
 {
-    if (!x || !y || !weights || !ssim_sum || !cs_sum || planes < 1 || ntaps < 1
-        || ntaps % 2 == 0 || ntaps > RGBZ_SSIM_MAX_TAPS || rows < ntaps || cols < ntaps)
-        return RGBZ_EINVAL;
+    if (!x || !weights || planes < 1 || ntaps < 1 || ntaps % 2 == 0
+        || ntaps > RGBZ_SSIM_MAX_TAPS || rows < ntaps || cols < ntaps)
+        return 0;
     for (int k = 0; k < ntaps / 2; k++)
-        if (weights[k] != weights[ntaps - 1 - k]) return RGBZ_EINVAL;
+        if (weights[k] != weights[ntaps - 1 - k]) return 0;
+    return 1;
+}
+
+int MT_ENTRY(rgbz_ssim_reference)(int in_type, const void *x, ptrdiff_t planes, ptrdiff_t rows,
+                                  ptrdiff_t cols, const double *weights, int ntaps,
+                                  double *x_moments, int workers)
+{
+    if (!mt_ssim_args_ok(x, planes, rows, cols, weights, ntaps) || !x_moments)
+        return RGBZ_EINVAL;
 #define MT_CALL_(s, T)                                                                       \
-    return RGBZ_CAT(mt_ssim_sums, s)(x, y, planes, rows, cols, weights, ntaps, c1, c2, ssim_sum,   \
-                              cs_sum, workers)
+    return RGBZ_CAT(mt_ssim_ref, s)(x, planes, rows, cols, weights, ntaps, x_moments, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
+}
+
+int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y,
+                             const double *x_moments, ptrdiff_t planes, ptrdiff_t rows,
+                             ptrdiff_t cols, const double *weights, int ntaps, double c1,
+                             double c2, double *ssim_sum, double *cs_sum, int workers)
+{
+    if (!mt_ssim_args_ok(x, planes, rows, cols, weights, ntaps) || !y || !ssim_sum || !cs_sum)
+        return RGBZ_EINVAL;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_ssim_sums, s)(x, y, x_moments, planes, rows, cols, weights, ntaps, c1, \
+                                     c2, ssim_sum, cs_sum, workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
 #undef MT_CALL_
 }
@@ -301,7 +424,38 @@ int MT_ENTRY(rgbz_zipper_count)(int in_type, const void *ref, const void *test,
         || !(delta >= 0.0))
         return RGBZ_EINVAL;
 #define MT_CALL_(s, T)                                                                       \
-    return RGBZ_CAT(mt_zipper_count, s)(ref, test, rows, cols, scale, delta, count, workers)
+    return RGBZ_CAT(mt_zipper_pass, s)((const T *)ref, (const T *)test, rows, cols, scale,    \
+                                       delta, NULL, NULL, 0, count, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
+}
+
+int MT_ENTRY(rgbz_zipper_reference)(int in_type, const void *ref, ptrdiff_t rows,
+                                    ptrdiff_t cols, double scale, double *best,
+                                    uint8_t *nearest, int workers)
+{
+    if (!ref || !best || !nearest || rows < 3 || cols < 3 || !(scale >= 0.0))
+        return RGBZ_EINVAL;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_zipper_pass, s)((const T *)ref, NULL, rows, cols, scale, 0.0, best,    \
+                                       nearest, 1, NULL, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
+}
+
+int MT_ENTRY(rgbz_zipper_count_reference)(int in_type, const void *test, ptrdiff_t rows,
+                                          ptrdiff_t cols, double scale, const double *best,
+                                          const uint8_t *nearest, double delta,
+                                          int64_t *count, int workers)
+{
+    if (!test || !best || !nearest || !count || rows < 3 || cols < 3 || !(scale >= 0.0)
+        || !(delta >= 0.0))
+        return RGBZ_EINVAL;
+    for (ptrdiff_t k = 0; k < (rows - 2) * (cols - 2); k++)
+        if (nearest[k] > 7) return RGBZ_EINVAL;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_zipper_pass, s)(NULL, (const T *)test, rows, cols, scale, delta,       \
+                                       (double *)best, (uint8_t *)nearest, 0, count, workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
 #undef MT_CALL_
 }

@@ -31,14 +31,27 @@
  *            window; the 2-D window is its outer product. The five local moments are filtered
  *            along the rows, then the columns, with scipy.ndimage.correlate1d's order of
  *            operations for symmetric weights (so they equal gaussian_filter's bit for bit).
+ *   x_moments: what x alone gives (rgbz_ssim_reference of this x and window), for the calls
+ *            that compare one reference with many images; NULL: computed here. The sums are
+ *            the same bit for bit either way.
  *   c1, c2:  the constants (0.01 L)^2 and (0.03 L)^2.
  *   ssim_sum[p], cs_sum[p]: the sums, over the (rows - ntaps + 1) x (cols - ntaps + 1) windows
  *            lying wholly inside plane p, of the SSIM map l c s and of the contrast-structure
  *            map c s = (2 s_xy + c2) / (s_x^2 + s_y^2 + c2).
  */
-int rgbz_ssim_sums(int in_type, const void *x, const void *y, ptrdiff_t planes, ptrdiff_t rows,
-                   ptrdiff_t cols, const double *weights, int ntaps, double c1, double c2,
-                   double *ssim_sum, double *cs_sum, int workers);
+int rgbz_ssim_sums(int in_type, const void *x, const void *y, const double *x_moments,
+                   ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols, const double *weights,
+                   int ntaps, double c1, double c2, double *ssim_sum, double *cs_sum,
+                   int workers);
+
+/*
+ * The reference side of the SSIM of x (planar, as in rgbz_ssim_sums, same window): for each
+ * plane p and window row i, two rows of (cols - ntaps + 1) doubles at x_moments +
+ * 2 (p (rows - ntaps + 1) + i) (cols - ntaps + 1): the local means, then the local variances.
+ */
+int rgbz_ssim_reference(int in_type, const void *x, ptrdiff_t planes, ptrdiff_t rows,
+                        ptrdiff_t cols, const double *weights, int ntaps, double *x_moments,
+                        int workers);
 
 /*
  * 2 x 2 mean decimation (Wang et al.'s MS-SSIM code): src planar (planes, rows, cols) of
@@ -71,6 +84,20 @@ int rgbz_srgb_to_lab(int in_type, const void *rgb, ptrdiff_t n, double scale, do
  */
 int rgbz_zipper_count(int in_type, const void *ref, const void *test, ptrdiff_t rows,
                       ptrdiff_t cols, double scale, double delta, int64_t *count, int workers);
+
+/*
+ * The zipper count in two halves, for one reference compared with many images:
+ * rgbz_zipper_reference finds, for each of the (rows - 2) x (cols - 2) interior pixels P of
+ * ref (row-major), the neighbour I with the smallest reference dE: best = that dE, nearest =
+ * I's raster index in the 3 x 3 neighbourhood without P (0..7: the row above left to right,
+ * left, right, the row below); rgbz_zipper_count_reference counts the pixels of test with
+ * |dE_test(P, I) - best| > delta. The count equals rgbz_zipper_count's bit for bit.
+ */
+int rgbz_zipper_reference(int in_type, const void *ref, ptrdiff_t rows, ptrdiff_t cols,
+                          double scale, double *best, uint8_t *nearest, int workers);
+int rgbz_zipper_count_reference(int in_type, const void *test, ptrdiff_t rows, ptrdiff_t cols,
+                                double scale, const double *best, const uint8_t *nearest,
+                                double delta, int64_t *count, int workers);
 
 /*
  * Sum of squared differences (the MSE of the PSNRs): a, b of in_type hold rows x cols pixels of

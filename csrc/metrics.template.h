@@ -22,22 +22,97 @@
 
 /* ------------------------------------------------------------------ SSIM */
 
-/* The five moments x, y, x^2, y^2, xy of one output row filtered along the columns: x, y
-   point at the centre row of the window (rows above and below at -k * cols, +k * cols);
-   m receives five rows of `cols` values. correlate1d's order for symmetric weights: the
-   centre times its weight, then the pairs from the farthest to the nearest. */
-static void MT(mt_ssim_vpass)(const IN_T *x, const IN_T *y, ptrdiff_t cols, const double *w,
-                              int rad, double *restrict m)
+/* The moments of one output row filtered along the columns, in correlate1d's order for
+   symmetric weights (the centre times its weight, then the pairs from the farthest to the
+   nearest): x, y point at the centre row of the window (rows above and below at -k * cols,
+   +k * cols). The _x pass writes the two rows x, x^2 of m; the _y pass the three rows y, y^2,
+   xy. For the default window (radius MT_SSIM_RAD) the taps are unrolled and each sum stays
+   in a register; other windows add the pairs row by row into m. The same operations in the
+   same order either way. */
+static inline MT_INLINE void MT(mt_vx_reg)(const IN_T *x, ptrdiff_t cols, const double *w,
+                                           int rad, double *restrict mx, double *restrict mxx)
 {
-    double *restrict mx = m, *restrict my = m + cols, *restrict mxx = m + 2 * cols;
-    double *restrict myy = m + 3 * cols, *restrict mxy = m + 4 * cols;
+    const double wc = w[rad];
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < cols; j++) {
+        const double xc = (double)x[j];
+        double sx = xc * wc, sxx = (xc * xc) * wc;
+        MT_UNROLL
+        for (int k = rad; k >= 1; k--) {
+            const double a = (double)x[j - k * cols], b = (double)x[j + k * cols];
+            const double wk = w[rad - k];
+            sx += (a + b) * wk;
+            sxx += (a * a + b * b) * wk;
+        }
+        mx[j] = sx;
+        mxx[j] = sxx;
+    }
+}
+
+static void MT(mt_ssim_vpass_x)(const IN_T *x, ptrdiff_t cols, const double *w, int rad,
+                                double *restrict m)
+{
+    double *restrict mx = m, *restrict mxx = m + cols;
+    if (rad == MT_SSIM_RAD) {
+        MT(mt_vx_reg)(x, cols, w, MT_SSIM_RAD, mx, mxx);
+        return;
+    }
+    const double wc = w[rad];
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < cols; j++) {
+        const double xc = (double)x[j];
+        mx[j] = xc * wc;
+        mxx[j] = (xc * xc) * wc;
+    }
+    for (int k = rad; k >= 1; k--) {
+        const IN_T *xu = x - k * cols, *xd = x + k * cols;
+        const double wk = w[rad - k];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < cols; j++) {
+            const double a = (double)xu[j], b = (double)xd[j];
+            mx[j] += (a + b) * wk;
+            mxx[j] += (a * a + b * b) * wk;
+        }
+    }
+}
+
+static inline MT_INLINE void MT(mt_vy_reg)(const IN_T *x, const IN_T *y, ptrdiff_t cols,
+                                           const double *w, int rad, double *restrict my,
+                                           double *restrict myy, double *restrict mxy)
+{
     const double wc = w[rad];
     MT_SIMD
     for (ptrdiff_t j = 0; j < cols; j++) {
         const double xc = (double)x[j], yc = (double)y[j];
-        mx[j] = xc * wc;
+        double sy = yc * wc, syy = (yc * yc) * wc, sxy = (xc * yc) * wc;
+        MT_UNROLL
+        for (int k = rad; k >= 1; k--) {
+            const double a = (double)x[j - k * cols], b = (double)x[j + k * cols];
+            const double c = (double)y[j - k * cols], d = (double)y[j + k * cols];
+            const double wk = w[rad - k];
+            sy += (c + d) * wk;
+            syy += (c * c + d * d) * wk;
+            sxy += (a * c + b * d) * wk;
+        }
+        my[j] = sy;
+        myy[j] = syy;
+        mxy[j] = sxy;
+    }
+}
+
+static void MT(mt_ssim_vpass_y)(const IN_T *x, const IN_T *y, ptrdiff_t cols, const double *w,
+                                int rad, double *restrict m)
+{
+    double *restrict my = m, *restrict myy = m + cols, *restrict mxy = m + 2 * cols;
+    if (rad == MT_SSIM_RAD) {
+        MT(mt_vy_reg)(x, y, cols, w, MT_SSIM_RAD, my, myy, mxy);
+        return;
+    }
+    const double wc = w[rad];
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < cols; j++) {
+        const double xc = (double)x[j], yc = (double)y[j];
         my[j] = yc * wc;
-        mxx[j] = (xc * xc) * wc;
         myy[j] = (yc * yc) * wc;
         mxy[j] = (xc * yc) * wc;
     }
@@ -48,32 +123,71 @@ static void MT(mt_ssim_vpass)(const IN_T *x, const IN_T *y, ptrdiff_t cols, cons
         for (ptrdiff_t j = 0; j < cols; j++) {
             const double a = (double)xu[j], b = (double)xd[j];
             const double c = (double)yu[j], d = (double)yd[j];
-            mx[j] += (a + b) * wk;
             my[j] += (c + d) * wk;
-            mxx[j] += (a * a + b * b) * wk;
             myy[j] += (c * c + d * d) * wk;
             mxy[j] += (a * c + b * d) * wk;
         }
     }
 }
 
-static int MT(mt_ssim_sums)(const void *xv, const void *yv, ptrdiff_t planes, ptrdiff_t rows,
-                            ptrdiff_t cols, const double *w, int ntaps, double c1, double c2,
-                            double *ssim_sum, double *cs_sum, int workers)
+/* The reference side of the SSIM of planar x: for each of the planes * (rows - 2 rad) output
+   rows u, mom[2 u ocols ...] = the means of the row's windows, then their variances
+   (mt_ssim_hpass_x), ocols = cols - 2 rad. */
+static int MT(mt_ssim_ref)(const void *xv, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,
+                           const double *w, int ntaps, double *mom, int workers)
 {
-    const IN_T *x = (const IN_T *)xv, *y = (const IN_T *)yv;
+    const IN_T *x = (const IN_T *)xv;
     const int rad = ntaps / 2;
-    const ptrdiff_t orows = rows - 2 * rad, units = planes * orows;
-    double *rowsum = (double *)malloc((size_t)(2 * units) * sizeof(double));
-    if (!rowsum) return RGBZ_ENOMEM;
+    const ptrdiff_t orows = rows - 2 * rad, ocols = cols - 2 * rad, units = planes * orows;
     int failed = 0;
-    int nt = mt_threads(workers, units, (double)cols * (16.0 * ntaps + 40.0));
+    int nt = mt_threads(workers, units, (double)cols * (6.0 * ntaps + 10.0));
     (void)nt;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nt)
 #endif
     {
-        double *m = (double *)malloc((size_t)(10 * cols) * sizeof(double));
+        double *m = (double *)malloc((size_t)(2 * cols) * sizeof(double));
+        if (!m) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            failed = 1;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t u = 0; u < units; u++) {
+            if (!m) continue;
+            const ptrdiff_t p = u / orows, i = u % orows;
+            MT(mt_ssim_vpass_x)(x + (p * rows + i + rad) * cols, cols, w, rad, m);
+            mt_ssim_hpass_x(m, cols, w, rad, mom + 2 * u * ocols);
+        }
+        free(m);
+    }
+    return failed ? RGBZ_ENOMEM : RGBZ_OK;
+}
+
+/* The SSIM sums of x, y; mom: the reference side of x (mt_ssim_ref), or NULL to compute it
+   row by row. */
+static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
+                            ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols, const double *w,
+                            int ntaps, double c1, double c2, double *ssim_sum, double *cs_sum,
+                            int workers)
+{
+    const IN_T *x = (const IN_T *)xv, *y = (const IN_T *)yv;
+    const int rad = ntaps / 2;
+    const ptrdiff_t orows = rows - 2 * rad, ocols = cols - 2 * rad, units = planes * orows;
+    double *rowsum = (double *)malloc((size_t)(2 * units) * sizeof(double));
+    if (!rowsum) return RGBZ_ENOMEM;
+    int failed = 0;
+    int nt = mt_threads(workers, units, (double)cols * ((mom ? 10.0 : 16.0) * ntaps + 40.0));
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt)
+#endif
+    {
+        /* three moment rows, two of the reference side, five of mt_ssim_hpass_y */
+        double *m = (double *)malloc((size_t)(3 * cols + 7 * ocols) * sizeof(double));
         if (!m) {
 #ifdef _OPENMP
 #pragma omp atomic write
@@ -87,9 +201,16 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, ptrdiff_t planes, pt
             if (!m) continue;
             const ptrdiff_t p = u / orows, i = u % orows;
             const ptrdiff_t centre = (p * rows + i + rad) * cols;
-            MT(mt_ssim_vpass)(x + centre, y + centre, cols, w, rad, m);
-            mt_ssim_hpass(m, cols, w, rad, c1, c2, m + 5 * cols, rowsum + 2 * u,
-                          rowsum + 2 * u + 1);
+            double *xmom = m + 3 * cols, *vals = xmom + 2 * ocols;
+            if (mom) {
+                xmom = (double *)mom + 2 * u * ocols;
+            } else {
+                MT(mt_ssim_vpass_x)(x + centre, cols, w, rad, m);
+                mt_ssim_hpass_x(m, cols, w, rad, xmom);
+            }
+            MT(mt_ssim_vpass_y)(x + centre, y + centre, cols, w, rad, m);
+            mt_ssim_hpass_y(m, xmom, cols, w, rad, c1, c2, vals, rowsum + 2 * u,
+                            rowsum + 2 * u + 1);
         }
         free(m);
     }
@@ -241,17 +362,27 @@ static int MT(mt_srgb_to_lab)(const void *rgbv, ptrdiff_t n, double scale, doubl
 }
 
 /* ------------------------------------------------------------------ zipper */
-static int MT(mt_zipper_count)(const void *refv, const void *testv, ptrdiff_t rows,
-                               ptrdiff_t cols, double scale, double delta, int64_t *count,
-                               int workers)
+
+/* The zipper pass over the centre rows 1..rows-2, split in one band per thread, with the Lab
+   of each band's rows and the two around it in a ring of three rows per image:
+     ref, best, nearest: ref given -> each centre pixel's nearest neighbour in the reference
+                         is found (mt_zipper_ref_row), into best/nearest when they are the
+                         full (rows - 2) x (cols - 2) arrays (store = 1), else into one
+                         scratch row;
+                         ref NULL -> best/nearest hold them (rgbz_zipper_reference);
+     test:               given -> the pixels with |psi| > delta are counted into *count. */
+static int MT(mt_zipper_pass)(const IN_T *ref, const IN_T *test, ptrdiff_t rows,
+                              ptrdiff_t cols, double scale, double delta, double *best,
+                              uint8_t *nearest, int store, int64_t *count, int workers)
 {
-    const IN_T *ref = (const IN_T *)refv, *test = (const IN_T *)testv;
     double *lut;
     if (MT(mt_lut)(rows * cols, scale, workers, &lut) != RGBZ_OK) return RGBZ_ENOMEM;
-    const ptrdiff_t centres = rows - 2;
+    const ptrdiff_t centres = rows - 2, inner = cols - 2;
+    const int images = (ref != NULL) + (test != NULL);
     int64_t total = 0;
     int failed = 0;
-    int nt = mt_threads(workers, centres, 250.0 * (double)cols);
+    int nt = mt_threads(workers, centres,
+                        ((ref ? 170.0 : 0.0) + (test ? 90.0 : 0.0)) * (double)cols);
     (void)nt;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nt) reduction(+:total)
@@ -262,11 +393,13 @@ static int MT(mt_zipper_count)(const void *refv, const void *testv, ptrdiff_t ro
         t = omp_get_thread_num();
         T = omp_get_num_threads();
 #endif
-        /* a band of centre rows per thread; Lab of its rows and the two around it */
         const ptrdiff_t b0 = 1 + centres * t / T, b1 = 1 + centres * (t + 1) / T;
-        /* ring of three Lab rows per image, buf[(image * 3 + slot) * 3 + channel][cols],
-           then the linear-RGB scratch of mt_lab_run (3 cols) */
-        double *buf = b0 < b1 ? (double *)malloc((size_t)(21 * cols) * sizeof(double)) : NULL;
+        /* the ring, buf[(image * 3 + slot) * 3 + channel][cols], the linear-RGB scratch of
+           mt_lab_run (3 cols), then one row of best and nearest when they are not stored */
+        const size_t doubles = (size_t)(9 * images + 3) * (size_t)cols
+                               + (ref && !store ? (size_t)inner : 0);
+        const size_t bytes = doubles * sizeof(double) + (ref && !store ? (size_t)inner : 0);
+        char *buf = b0 < b1 ? (char *)malloc(bytes) : NULL;
         if (b0 < b1 && !buf) {
 #ifdef _OPENMP
 #pragma omp atomic write
@@ -274,32 +407,45 @@ static int MT(mt_zipper_count)(const void *refv, const void *testv, ptrdiff_t ro
             failed = 1;
         }
         if (buf) {
-            double *lin = buf + 18 * cols;
+            double *d = (double *)buf;
+            double *lin = d + (ptrdiff_t)(9 * images) * cols;
+            double *row_best = lin + 3 * cols;
+            uint8_t *row_near = (uint8_t *)(d + doubles);
             mt_labrow rr[3], tr[3];
             for (int s = 0; s < 3; s++) {
-                double *rb = buf + (ptrdiff_t)(3 * s) * cols;
-                double *tb = buf + (ptrdiff_t)(9 + 3 * s) * cols;
+                double *rb = d + (ptrdiff_t)(3 * s) * cols;
+                double *tb = rb + (ref ? (ptrdiff_t)9 * cols : 0);
                 rr[s] = (mt_labrow){rb, rb + cols, rb + 2 * cols};
                 tr[s] = (mt_labrow){tb, tb + cols, tb + 2 * cols};
             }
             for (ptrdiff_t q = b0 - 1; q <= b1; q++) {
                 const int s = (int)(q % 3);
-                MT(mt_lab_run)(ref + 3 * q * cols, cols, scale, lut, lin, rr[s].L, rr[s].A,
-                               rr[s].B, 1);
-                MT(mt_lab_run)(test + 3 * q * cols, cols, scale, lut, lin, tr[s].L, tr[s].A,
-                               tr[s].B, 1);
-                if (q >= b0 + 1) {
-                    const int u = (int)((q - 2) % 3), c = (int)((q - 1) % 3);
-                    total += mt_zipper_row(rr[u], rr[c], rr[s], tr[u], tr[c], tr[s], cols,
-                                           delta);
+                if (ref)
+                    MT(mt_lab_run)(ref + 3 * q * cols, cols, scale, lut, lin, rr[s].L,
+                                   rr[s].A, rr[s].B, 1);
+                if (test)
+                    MT(mt_lab_run)(test + 3 * q * cols, cols, scale, lut, lin, tr[s].L,
+                                   tr[s].A, tr[s].B, 1);
+                if (q < b0 + 1) continue;
+                const int u = (int)((q - 2) % 3), c = (int)((q - 1) % 3);
+                double *bst = best ? best + (q - 2) * inner : NULL;
+                uint8_t *nrs = nearest ? nearest + (q - 2) * inner : NULL;
+                if (ref) {
+                    if (!store) {
+                        bst = row_best;
+                        nrs = row_near;
+                    }
+                    mt_zipper_ref_row(rr[u], rr[c], rr[s], cols, bst, nrs);
                 }
+                if (test)
+                    total += mt_zipper_test_row(tr[u], tr[c], tr[s], cols, bst, nrs, delta);
             }
         }
         free(buf);
     }
     free(lut);
     if (failed) return RGBZ_ENOMEM;
-    *count = total;
+    if (count) *count = total;
     return RGBZ_OK;
 }
 
@@ -318,6 +464,28 @@ static MT(mt_acc) MT(mt_sq_row)(const IN_T *a, const IN_T *b, ptrdiff_t cols, pt
 {
     MT(mt_acc) s = 0;
     int64_t k = 0;
+#if IN_IS_INT
+    if (ch == 1) {             /* exact integer sums: any order, so vectorised */
+        if (!mask) {
+            MT_SIMD_COUNT(s)
+            for (ptrdiff_t c = 0; c < cols; c++) {
+                const int64_t d = (int64_t)a[c] - (int64_t)b[c];
+                s += d * d;
+            }
+            *n = cols;
+            return s;
+        }
+        MT_PRAGMA(omp simd reduction(+:s, k))
+        for (ptrdiff_t c = 0; c < cols; c++) {
+            const int64_t d = (int64_t)a[c] - (int64_t)b[c];
+            const int on = mask[c] != 0;
+            s += on ? d * d : 0;
+            k += on;
+        }
+        *n = k;
+        return s;
+    }
+#endif
     for (ptrdiff_t c = 0; c < cols; c++) {
         if (mask && !mask[c]) continue;
         k += ch;
@@ -345,6 +513,11 @@ static int MT(mt_sq_diff_sum)(const void *av, const void *bv, ptrdiff_t rows, pt
         free(rs);
         free(rn);
         return RGBZ_ENOMEM;
+    }
+    if (!mask) {               /* every pixel: rows of cols * ch single elements, the same
+                                  elements in the same order */
+        cols *= ch;
+        ch = 1;
     }
     int nt = mt_threads(workers, rows, 3.0 * (double)(cols * ch));
     (void)nt;

@@ -89,12 +89,21 @@ int rgbz_metrics_use_isa(int isa)
     default: return RGBZ_METRICS_ENTRY(name, generic)(__VA_ARGS__);                          \
     }
 
-int rgbz_ssim_sums(int in_type, const void *x, const void *y, ptrdiff_t planes, ptrdiff_t rows,
-                   ptrdiff_t cols, const double *weights, int ntaps, double c1, double c2,
-                   double *ssim_sum, double *cs_sum, int workers)
+int rgbz_ssim_sums(int in_type, const void *x, const void *y, const double *x_moments,
+                   ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols, const double *weights,
+                   int ntaps, double c1, double c2, double *ssim_sum, double *cs_sum,
+                   int workers)
 {
-    MT_DISPATCH(rgbz_ssim_sums, in_type, x, y, planes, rows, cols, weights, ntaps, c1, c2,
-                ssim_sum, cs_sum, workers)
+    MT_DISPATCH(rgbz_ssim_sums, in_type, x, y, x_moments, planes, rows, cols, weights, ntaps,
+                c1, c2, ssim_sum, cs_sum, workers)
+}
+
+int rgbz_ssim_reference(int in_type, const void *x, ptrdiff_t planes, ptrdiff_t rows,
+                        ptrdiff_t cols, const double *weights, int ntaps, double *x_moments,
+                        int workers)
+{
+    MT_DISPATCH(rgbz_ssim_reference, in_type, x, planes, rows, cols, weights, ntaps,
+                x_moments, workers)
 }
 
 int rgbz_downsample2(int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows,
@@ -114,6 +123,21 @@ int rgbz_zipper_count(int in_type, const void *ref, const void *test, ptrdiff_t 
 {
     MT_DISPATCH(rgbz_zipper_count, in_type, ref, test, rows, cols, scale, delta, count,
                 workers)
+}
+
+int rgbz_zipper_reference(int in_type, const void *ref, ptrdiff_t rows, ptrdiff_t cols,
+                          double scale, double *best, uint8_t *nearest, int workers)
+{
+    MT_DISPATCH(rgbz_zipper_reference, in_type, ref, rows, cols, scale, best, nearest,
+                workers)
+}
+
+int rgbz_zipper_count_reference(int in_type, const void *test, ptrdiff_t rows, ptrdiff_t cols,
+                                double scale, const double *best, const uint8_t *nearest,
+                                double delta, int64_t *count, int workers)
+{
+    MT_DISPATCH(rgbz_zipper_count_reference, in_type, test, rows, cols, scale, best, nearest,
+                delta, count, workers)
 }
 
 int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, ptrdiff_t rows, ptrdiff_t cols,

@@ -15,9 +15,12 @@
 
 #define RGBZ_METRICS_DECLARE(isa)                                                            \
     int RGBZ_METRICS_ENTRY(rgbz_ssim_sums, isa)(                                             \
-        int in_type, const void *x, const void *y, ptrdiff_t planes, ptrdiff_t rows,          \
-        ptrdiff_t cols, const double *weights, int ntaps, double c1, double c2,               \
-        double *ssim_sum, double *cs_sum, int workers);                                       \
+        int in_type, const void *x, const void *y, const double *x_moments,                   \
+        ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols, const double *weights, int ntaps,   \
+        double c1, double c2, double *ssim_sum, double *cs_sum, int workers);                 \
+    int RGBZ_METRICS_ENTRY(rgbz_ssim_reference, isa)(                                        \
+        int in_type, const void *x, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,         \
+        const double *weights, int ntaps, double *x_moments, int workers);                    \
     int RGBZ_METRICS_ENTRY(rgbz_downsample2, isa)(                                           \
         int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,       \
         double *dst, int workers);                                                            \
@@ -26,6 +29,13 @@
     int RGBZ_METRICS_ENTRY(rgbz_zipper_count, isa)(                                          \
         int in_type, const void *ref, const void *test, ptrdiff_t rows, ptrdiff_t cols,       \
         double scale, double delta, int64_t *count, int workers);                              \
+    int RGBZ_METRICS_ENTRY(rgbz_zipper_reference, isa)(                                      \
+        int in_type, const void *ref, ptrdiff_t rows, ptrdiff_t cols, double scale,           \
+        double *best, uint8_t *nearest, int workers);                                         \
+    int RGBZ_METRICS_ENTRY(rgbz_zipper_count_reference, isa)(                                \
+        int in_type, const void *test, ptrdiff_t rows, ptrdiff_t cols, double scale,          \
+        const double *best, const uint8_t *nearest, double delta, int64_t *count,             \
+        int workers);                                                                         \
     int RGBZ_METRICS_ENTRY(rgbz_sq_diff_sum, isa)(                                           \
         int in_type, const void *a, const void *b, ptrdiff_t rows, ptrdiff_t cols,             \
         ptrdiff_t channels, const uint8_t *mask, double *sum, int64_t *count, int workers);

@@ -238,6 +238,14 @@ int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
                       double max_range, double *depth, double *residual,
                       int32_t *wraps, double *phase, double *amp, int workers);
 
+/* The same with the planes of phase and amp ldo (>= N) apart: the rows of a larger (F, ldo)
+   array (the fused guided denoise unwraps strip by strip). */
+int rgbz_tof_depth_iq_strided(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                              ptrdiff_t N, ptrdiff_t ldo, const double *freqs,
+                              const double *weights, double max_range, double *depth,
+                              double *residual, int32_t *wraps, double *phase, double *amp,
+                              int workers);
+
 /* The fast exponential of rgbz_ops.h (exp_mode RGBZ_EXP_FAST) of n values, in float and
    double, so that the tests can measure it against libm. */
 int rgbz_fast_exp_f32(const float *x, float *out, ptrdiff_t n);

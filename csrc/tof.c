@@ -306,22 +306,24 @@ static int tof_unwrap_checked(const tof_plan *p, const double *d, const int *ok,
 
 /* One block [n0, n0 + nb) of tof_unwrap_sites (below): the distances of every frequency from
    the phases or the phasors, then the unwrapping; returns 1 if a site was outside the
-   domain. In the three builds of RGBZ_CLONES_512, which compute the same IEEE operations. */
+   domain. In the three builds of RGBZ_CLONES_512, which compute the same IEEE operations.
+   The planes of x and q are N apart, those of phase and amp NO apart. */
 RGBZ_CLONES_512 static int tof_unwrap_site_block(const tof_plan *p, const double *x,
-                                                 const double *q, ptrdiff_t N, ptrdiff_t n0,
-                                                 ptrdiff_t nb, double *depth, double *residual,
-                                                 int32_t *wraps, double *phase, double *amp)
+                                                 const double *q, ptrdiff_t N, ptrdiff_t NO,
+                                                 ptrdiff_t n0, ptrdiff_t nb, double *depth,
+                                                 double *residual, int32_t *wraps,
+                                                 double *phase, double *amp)
 {
     double d[RGBZ_TOF_MAX_FREQS * TOF_BLOCK];
     int ok[TOF_BLOCK];
     for (ptrdiff_t k = 0; k < nb; k++) ok[k] = 1;
     for (int f = 0; f < p->F; f++) {
-        const ptrdiff_t o = f * N + n0;
+        const ptrdiff_t o = f * N + n0, oo = f * NO + n0;
         const double sc = p->scale[f];
         double *df = d + f * TOF_BLOCK;
         if (q) {
-            tof_from_iq(x + o, q + o, nb, ok, sc, phase ? phase + o : NULL, df,
-                        amp ? amp + o : NULL);
+            tof_from_iq(x + o, q + o, nb, ok, sc, phase ? phase + oo : NULL, df,
+                        amp ? amp + oo : NULL);
             continue;
         }
         const double *ph = x + o;
@@ -341,9 +343,9 @@ RGBZ_CLONES_512 static int tof_unwrap_site_block(const tof_plan *p, const double
  * RGBZ_EDOMAIN.
  */
 static int tof_unwrap_sites(const double *x, const double *q, ptrdiff_t F, ptrdiff_t N,
-                            const double *freqs, const double *weights, double max_range,
-                            double *depth, double *residual, int32_t *wraps, double *phase,
-                            double *amp, int workers)
+                            ptrdiff_t NO, const double *freqs, const double *weights,
+                            double max_range, double *depth, double *residual, int32_t *wraps,
+                            double *phase, double *amp, int workers)
 {
     tof_plan plan;
     if (!x || !depth || !residual || !wraps || N < 0) return RGBZ_EINVAL;
@@ -356,7 +358,8 @@ static int tof_unwrap_sites(const double *x, const double *q, ptrdiff_t F, ptrdi
     RGBZ_PARALLEL_FOR_OR(bad)
     for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
         const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
-        bad |= tof_unwrap_site_block(p, x, q, N, n0, nb, depth, residual, wraps, phase, amp);
+        bad |= tof_unwrap_site_block(p, x, q, N, NO, n0, nb, depth, residual, wraps, phase,
+                                     amp);
     }
     return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }
@@ -365,7 +368,7 @@ int rgbz_tof_unwrap(const double *phase, ptrdiff_t F, ptrdiff_t N, const double 
                     const double *weights, double max_range, double *depth,
                     double *residual, int32_t *wraps, int workers)
 {
-    return tof_unwrap_sites(phase, NULL, F, N, freqs, weights, max_range, depth, residual,
+    return tof_unwrap_sites(phase, NULL, F, N, N, freqs, weights, max_range, depth, residual,
                             wraps, NULL, NULL, workers);
 }
 
@@ -416,8 +419,19 @@ int rgbz_tof_depth_iq(const double *i_comp, const double *q_comp, ptrdiff_t F,
                       int32_t *wraps, double *phase, double *amp, int workers)
 {
     if (!q_comp) return RGBZ_EINVAL;
-    return tof_unwrap_sites(i_comp, q_comp, F, N, freqs, weights, max_range, depth, residual,
+    return tof_unwrap_sites(i_comp, q_comp, F, N, N, freqs, weights, max_range, depth, residual,
                             wraps, phase, amp, workers);
+}
+
+int rgbz_tof_depth_iq_strided(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                              ptrdiff_t N, ptrdiff_t ldo, const double *freqs,
+                              const double *weights, double max_range, double *depth,
+                              double *residual, int32_t *wraps, double *phase, double *amp,
+                              int workers)
+{
+    if (!q_comp || ldo < N) return RGBZ_EINVAL;
+    return tof_unwrap_sites(i_comp, q_comp, F, N, ldo, freqs, weights, max_range, depth,
+                            residual, wraps, phase, amp, workers);
 }
 
 /* the block [n0, n0 + nb) of rgbz_tof_phase_iq; 1 if an I or Q was not finite */

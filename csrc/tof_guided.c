@@ -107,6 +107,10 @@ typedef struct {
     float inv2h2, inv2hc2;
     float *or_, *oi, *ov, *on;
     double *or64, *oi64;
+    /* plane strides of the data zr, zi, of the guide gr, gi, of col and of the outputs, and
+       the offset of a measurement's output (out[m - ooff]): a pass may run on rows of a grid
+       held in a strip buffer (every other plane is indexed by the measurement m) */
+    ptrdiff_t zs, gs, cs, os, ooff;
     /* per measurement, for the blocks of pair weights: gate 1 where it may enter as a
        neighbour (use, and n_eff > 0 in a second pass), else 0; rn the reciprocal of its
        n_eff (1 in a first pass, and where n_eff <= 0) */
@@ -120,7 +124,7 @@ RGBZ_INLINE void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_
                                      ptrdiff_t c0, ptrdiff_t c1, float bias,
                                      const float *restrict chi, float *restrict w)
 {
-    const ptrdiff_t N = p->R * p->C;
+    const ptrdiff_t N = p->cs;
     const float *gvn = p->gv + nbase, *gvm = p->gv + row0;
     const float *a0 = p->col + nbase, *a1 = a0 + N, *a2 = a1 + N;
     const float *b0 = p->col + row0, *b1 = b0 + N, *b2 = b1 + N;
@@ -139,7 +143,7 @@ RGBZ_INLINE void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_
 RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
                                       ptrdiff_t clo, ptrdiff_t chi_)
 {
-    const ptrdiff_t F = p->F, C = p->C, N = p->R * p->C;
+    const ptrdiff_t F = p->F, C = p->C, ZS = p->zs, GS = p->gs, OS = p->os;
     const float bias = 2.0f * (float)F;
     float *num_re = scratch, *num_im = num_re + F * C, *den = num_im + F * C;
     float *w2v = den + C, *w2n = w2v + C, *chi = w2n + C, *w = chi + C;
@@ -168,7 +172,7 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
         const ptrdiff_t nbase = row0 + shift;
         for (ptrdiff_t c = c0; c < c1; c++) chi[c] = 0.0f;
         for (ptrdiff_t f = 0; f < F; f++) {
-            const float *gr = p->gr + f * N, *gi = p->gi + f * N;
+            const float *gr = p->gr + f * GS, *gi = p->gi + f * GS;
             for (ptrdiff_t c = c0; c < c1; c++) {
                 const float dre = gr[nbase + c] - gr[row0 + c];
                 const float dim = gi[nbase + c] - gi[row0 + c];
@@ -191,7 +195,7 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
         }
         tofg_weights(p, nbase, row0, c0, c1, bias, chi, w);
         for (ptrdiff_t f = 0; f < F; f++) {
-            const float *zr = p->zr + f * N + nbase, *zi = p->zi + f * N + nbase;
+            const float *zr = p->zr + f * ZS + nbase, *zi = p->zi + f * ZS + nbase;
             float *nr = num_re + f * C, *ni = num_im + f * C;
             for (ptrdiff_t c = c0; c < c1; c++) {
                 nr[c] += w[c] * zr[c];
@@ -217,17 +221,17 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
         }
     }
     for (ptrdiff_t c = clo; c < chi_; c++) {
-        const ptrdiff_t m = row0 + c;
+        const ptrdiff_t m = row0 + c - p->ooff;
         const int ok = den[c] > 0.0f;
         const float inv = ok ? 1.0f / den[c] : 0.0f;
         for (ptrdiff_t f = 0; f < F; f++) {
             const float mr = num_re[f * C + c] * inv, mi = num_im[f * C + c] * inv;
             if (p->or64) {
-                p->or64[f * N + m] = mr;
-                p->oi64[f * N + m] = mi;
+                p->or64[f * OS + m] = mr;
+                p->oi64[f * OS + m] = mi;
             } else {
-                p->or_[f * N + m] = mr;
-                p->oi[f * N + m] = mi;
+                p->or_[f * OS + m] = mr;
+                p->oi[f * OS + m] = mi;
             }
         }
         p->ov[m] = ok ? w2v[c] * (inv * inv) : HUGE_VALF;
@@ -248,20 +252,20 @@ RGBZ_INLINE void tofg_store(
     const tofg_pass_args *p, ptrdiff_t m0, float nr[][TOFG_BW], float ni[][TOFG_BW],
     const float *den, const float *w2v, const float *w2n, const int NF)
 {
-    const ptrdiff_t N = p->R * p->C;
+    const ptrdiff_t OS = p->os;
     for (int j = 0; j < TOFG_BW; j++) {
-        const ptrdiff_t m = m0 + j;
+        const ptrdiff_t m = m0 + j - p->ooff;
         const int ok = den[j] > 0.0f;
         const float inv = ok ? 1.0f / den[j] : 0.0f;
         TOFG_UNROLL
         for (int f = 0; f < NF; f++) {
             const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
             if (p->or64) {
-                p->or64[f * N + m] = mr;
-                p->oi64[f * N + m] = mi;
+                p->or64[f * OS + m] = mr;
+                p->oi64[f * OS + m] = mi;
             } else {
-                p->or_[f * N + m] = mr;
-                p->oi[f * N + m] = mi;
+                p->or_[f * OS + m] = mr;
+                p->oi[f * OS + m] = mi;
             }
         }
         p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
@@ -282,7 +286,7 @@ RGBZ_INLINE void tofg_block(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
     int ntaps, const int NF)
 {
-    const ptrdiff_t N = p->R * p->C;
+    const ptrdiff_t ZS = p->zs, GS = p->gs, N = p->cs;
     const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
     float gr0[4][TOFG_BW], gi0[4][TOFG_BW], gv0[TOFG_BW], k0[TOFG_BW], k1[TOFG_BW],
           k2[TOFG_BW];
@@ -290,8 +294,8 @@ RGBZ_INLINE void tofg_block(
     for (int j = 0; j < TOFG_BW; j++) {
         TOFG_UNROLL
         for (int f = 0; f < NF; f++) {
-            gr0[f][j] = p->gr[f * N + m0 + j];
-            gi0[f][j] = p->gi[f * N + m0 + j];
+            gr0[f][j] = p->gr[f * GS + m0 + j];
+            gi0[f][j] = p->gi[f * GS + m0 + j];
             nr[f][j] = ni[f][j] = 0.0f;
         }
         gv0[j] = p->gv[m0 + j];
@@ -323,8 +327,8 @@ RGBZ_INLINE void tofg_block(
                 float chi = 0.0f;
                 TOFG_UNROLL
                 for (int f = 0; f < NF; f++) {
-                    const float dre = p->gr[f * N + n0 + j] - gr0[f][j];
-                    const float dim = p->gi[f * N + n0 + j] - gi0[f][j];
+                    const float dre = p->gr[f * GS + n0 + j] - gr0[f][j];
+                    const float dim = p->gi[f * GS + n0 + j] - gi0[f][j];
                     chi += dre * dre + dim * dim;
                 }
                 const float xp = chi / (p->gv[n0 + j] + gv0[j]) - bias;
@@ -338,8 +342,8 @@ RGBZ_INLINE void tofg_block(
         for (int j = 0; j < TOFG_BW; j++) {
             TOFG_UNROLL
             for (int f = 0; f < NF; f++) {
-                nr[f][j] += w[j] * p->zr[f * N + n0 + j];
-                ni[f][j] += w[j] * p->zi[f * N + n0 + j];
+                nr[f][j] += w[j] * p->zr[f * ZS + n0 + j];
+                ni[f][j] += w[j] * p->zi[f * ZS + n0 + j];
             }
             const float ww = w[j] * w[j];
             den[j] += w[j];
@@ -358,7 +362,7 @@ RGBZ_INLINE void tofg_block_e(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
     int ntaps, const int NF)
 {
-    const ptrdiff_t N = p->R * p->C;
+    const ptrdiff_t ZS = p->zs;
     float nr[4][TOFG_BW], ni[4][TOFG_BW], den[TOFG_BW], w2v[TOFG_BW], w2n[TOFG_BW];
     for (int j = 0; j < TOFG_BW; j++) {
         TOFG_UNROLL
@@ -373,8 +377,8 @@ RGBZ_INLINE void tofg_block_e(
             const float w = gt[j] * e[j];
             TOFG_UNROLL
             for (int f = 0; f < NF; f++) {
-                nr[f][j] += w * p->zr[f * N + n0 + j];
-                ni[f][j] += w * p->zi[f * N + n0 + j];
+                nr[f][j] += w * p->zr[f * ZS + n0 + j];
+                ni[f][j] += w * p->zi[f * ZS + n0 + j];
             }
             const float ww = w * w;
             den[j] += w;
@@ -392,14 +396,14 @@ RGBZ_INLINE void tofg_block_e(
 RGBZ_INLINE void tofg_pair(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n0, ptrdiff_t cnt,
                            float *restrict e, const int NF)
 {
-    const ptrdiff_t N = p->R * p->C;
+    const ptrdiff_t GS = p->gs, N = p->cs;
     const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
     for (ptrdiff_t j = 0; j < cnt; j++) {
         float chi = 0.0f;
         TOFG_UNROLL
         for (int f = 0; f < NF; f++) {
-            const float dre = p->gr[f * N + n0 + j] - p->gr[f * N + m0 + j];
-            const float dim = p->gi[f * N + n0 + j] - p->gi[f * N + m0 + j];
+            const float dre = p->gr[f * GS + n0 + j] - p->gr[f * GS + m0 + j];
+            const float dim = p->gi[f * GS + n0 + j] - p->gi[f * GS + m0 + j];
             chi += dre * dre + dim * dim;
         }
         const float xp = chi / (p->gv[n0 + j] + p->gv[m0 + j]) - bias;
@@ -415,6 +419,13 @@ RGBZ_INLINE void tofg_pair(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n0, 
 RGBZ_CLONES_512 static void tofg_pairs(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n0,
                                        ptrdiff_t cnt, float *e)
 {
+    if (m0 == n0) {
+        /* a measurement with itself: every squared difference is 0 (or NaN, which the
+           clamps take to 0), so the exponent is 0 ih + 0 ic for every one */
+        const float self = tofg_exp_neg(0.0f * p->inv2h2 + 0.0f * p->inv2hc2);
+        for (ptrdiff_t j = 0; j < cnt; j++) e[j] = self;
+        return;
+    }
     switch (p->F) {
     case 1: tofg_pair(p, m0, n0, cnt, e, 1); break;
     case 2: tofg_pair(p, m0, n0, cnt, e, 2); break;
@@ -506,19 +517,22 @@ RGBZ_CLONES_512 static void tofg_pass_line(const tofg_pass_args *p, ptrdiff_t r,
 #define TOFG_TILE 256
 
 /* A column pass over the columns [c0, c1) (at most TOFG_TILE) of evenly spaced grid rows,
-   the rows in order: row r's pair weights e(r, r + a), a = 0..A, go to slot r mod (A + 1)
-   of ring ((A + 1)^2 TOFG_TILE floats), where the rows below find them as their offsets -a. */
+   the output rows [ra, rb) in order: row r's pair weights e(r, r + a), a = 0..A, go to slot
+   r mod (A + 1) of ring ((A + 1)^2 TOFG_TILE floats), where the rows below find them as their
+   offsets -a (the A rows above ra only fill the ring). */
 RGBZ_CLONES_512 static void tofg_pass_tile(const tofg_pass_args *p, float *scratch,
-                                           ptrdiff_t c0, ptrdiff_t c1, ptrdiff_t A, float *ring)
+                                           ptrdiff_t c0, ptrdiff_t c1, ptrdiff_t A, float *ring,
+                                           ptrdiff_t ra, ptrdiff_t rb)
 {
     const ptrdiff_t C = p->C, R = p->R, w = c1 - c0, nblk = w / TOFG_BW;
     const ptrdiff_t fe = c0 + nblk * TOFG_BW, slot = (A + 1) * TOFG_TILE;
     ptrdiff_t shift[2 * 64 + 1];
     const float *ew[2 * 64 + 1];
-    for (ptrdiff_t r = 0; r < R; r++) {
+    for (ptrdiff_t r = ra - A > 0 ? ra - A : 0; r < rb; r++) {
         float *own = ring + (r % (A + 1)) * slot;
         for (ptrdiff_t a = 0; a <= A && r + a < R; a++)
             tofg_pairs(p, r * C + c0, (r + a) * C + c0, w, own + a * TOFG_TILE);
+        if (r < ra) continue;
         int ntaps = 0;
         for (ptrdiff_t a = -A; a <= A; a++) {
             if (r + a < 0 || r + a >= R) continue;
@@ -528,6 +542,65 @@ RGBZ_CLONES_512 static void tofg_pass_tile(const tofg_pass_args *p, float *scrat
         }
         if (nblk > 0) tofg_blocks(p, r * C + c0, nblk, shift, ew, ntaps);
         if (fe < c1) tofg_pass_row(p, r, scratch, nblk > 0 ? fe : c0, c1);
+    }
+}
+
+/* The shape of a pass along an axis whose grid lines sit at px (nl of them): fast (evenly
+   spaced lines `step` apart, and F, reach within the blocks' bounds), the largest tap offset A
+   of the fast blocks (|a| <= reach, |a step| <= radius) and the floats of the pair-weight
+   buffer of one thread (ebuf: a row pass's (A + 1) C, a tiled column pass's ring). */
+typedef struct {
+    int fast, tiles;
+    int64_t step;
+    ptrdiff_t A;
+    size_t ebuf;
+} tofg_plan;
+
+static tofg_plan tofg_plan_of(const int64_t *px, ptrdiff_t nl, int axis, ptrdiff_t F,
+                              ptrdiff_t C, ptrdiff_t reach, int64_t radius_px)
+{
+    tofg_plan q;
+    q.step = nl > 1 ? px[1] - px[0] : 1;
+    int uniform = 1;
+    for (ptrdiff_t i = 1; i < nl; i++) uniform &= px[i] - px[i - 1] == q.step;
+    q.fast = uniform && q.step > 0 && F <= 4 && reach <= 64;
+    q.A = q.fast ? (radius_px / q.step < reach ? (ptrdiff_t)(radius_px / q.step) : reach) : 0;
+    q.tiles = axis == 0 && C > TOFG_TILE;
+    q.ebuf = !q.fast ? 0 : q.tiles ? (size_t)(q.A + 1) * (size_t)(q.A + 1) * TOFG_TILE
+           : axis == 1 ? (size_t)(q.A + 1) * (size_t)(C > 0 ? C : 1) : 0;
+    return q;
+}
+
+/* the gates of the fast blocks for the measurements [n0, n1) (tofg_pass_args) */
+static void tofg_gates(const uint8_t *use, const float *nin, ptrdiff_t n0, ptrdiff_t n1,
+                       float *gate, float *rn)
+{
+    for (ptrdiff_t n = n0; n < n1; n++) {
+        const float nn = nin ? nin[n] : 1.0f;
+        gate[n] = use[n] != 0 && nn > 0.0f ? 1.0f : 0.0f;
+        rn[n] = 1.0f / (nn > 0.0f ? nn : 1.0f);
+    }
+}
+
+/* The output rows [ra, rb) of a pass in one thread: a column pass tile by tile (every tile's
+   rows in order), a row pass row by row. scratch: (2F + 5) C floats; E: q->ebuf floats. */
+static void tofg_pass_rows(const tofg_pass_args *p, const tofg_plan *q, ptrdiff_t ra,
+                           ptrdiff_t rb, float *scratch, float *E)
+{
+    const ptrdiff_t C = p->C;
+    if (q->tiles) {
+        for (ptrdiff_t c0 = 0; c0 < C; c0 += TOFG_TILE) {
+            const ptrdiff_t c1 = c0 + TOFG_TILE < C ? c0 + TOFG_TILE : C;
+            if (q->fast) {
+                tofg_pass_tile(p, scratch, c0, c1, q->A, E, ra, rb);
+            } else {
+                for (ptrdiff_t r = ra; r < rb; r++)
+                    tofg_pass_line(p, r, scratch, 0, q->step, c0, c1, NULL, 0);
+            }
+        }
+    } else {
+        for (ptrdiff_t r = ra; r < rb; r++)
+            tofg_pass_line(p, r, scratch, q->fast, q->step, 0, C, E, q->A);
     }
 }
 
@@ -545,52 +618,37 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
         return RGBZ_EINVAL;
     const size_t per_row = (size_t)(2 * F + 5) * (size_t)(C > 0 ? C : 1);
     int status = RGBZ_OK;
-    /* the grid lines along the pass's axis: evenly spaced (Mask1, Mask2, rows) or not */
-    const ptrdiff_t nl = axis == 1 ? C : R;
-    const int64_t step = nl > 1 ? px[1] - px[0] : 1;
-    int uniform = 1;
-    for (ptrdiff_t i = 1; i < nl; i++) uniform &= px[i] - px[i - 1] == step;
-    const int fast = uniform && step > 0 && F <= 4 && reach <= 64;
+    const tofg_plan q = tofg_plan_of(px, axis == 1 ? C : R, axis, F, C, reach, radius_px);
     const int nth = rgbz_threads(workers);
     (void)nth;
     const ptrdiff_t N = R * C;
-    float *gate = fast && N > 0 ? malloc((size_t)N * sizeof(float)) : NULL;
-    float *rn = fast && N > 0 ? malloc((size_t)N * sizeof(float)) : NULL;
+    float *gate = q.fast && N > 0 ? malloc((size_t)N * sizeof(float)) : NULL;
+    float *rn = q.fast && N > 0 ? malloc((size_t)N * sizeof(float)) : NULL;
     if (!gate || !rn) {                           /* the blocks then compute their own */
         free(gate);
         free(rn);
         gate = rn = NULL;
     } else {
         RGBZ_PARALLEL_FOR
-        for (ptrdiff_t n = 0; n < N; n++) {
-            const float nn = nin ? nin[n] : 1.0f;
-            gate[n] = use[n] != 0 && nn > 0.0f ? 1.0f : 0.0f;
-            rn[n] = 1.0f / (nn > 0.0f ? nn : 1.0f);
-        }
+        for (ptrdiff_t r = 0; r < R; r++) tofg_gates(use, nin, r * C, (r + 1) * C, gate, rn);
     }
     const tofg_pass_args p = {zr, zi, v, nin, gr, gi, gv, col, use, F, R, C, axis, px, reach,
                               radius_px, (float)inv2h2, (float)inv2hc2, or_, oi, ov, on,
-                              or64, oi64, gate, rn};
-    /* the largest tap offset of the fast blocks: |a| <= reach and |a step| <= radius */
-    const ptrdiff_t A = fast ? (radius_px / step < reach ? (ptrdiff_t)(radius_px / step) : reach)
-                             : 0;
-    const int tiles = axis == 0 && C > TOFG_TILE;
-    const size_t ebuf = !fast ? 0 : tiles ? (size_t)(A + 1) * (size_t)(A + 1) * TOFG_TILE
-                      : axis == 1 ? (size_t)(A + 1) * (size_t)(C > 0 ? C : 1) : 0;
+                              or64, oi64, N, N, N, N, 0, gate, rn};
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth)
 #endif
     {
         float *scratch = malloc(per_row * sizeof(float));
-        float *E = ebuf ? malloc(ebuf * sizeof(float)) : NULL;
-        if (!scratch || (ebuf && !E)) {
+        float *E = q.ebuf ? malloc(q.ebuf * sizeof(float)) : NULL;
+        if (!scratch || (q.ebuf && !E)) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             status = RGBZ_ENOMEM;
         }
-        const int ok = scratch && (!ebuf || E);
-        if (tiles) {
+        const int ok = scratch && (!q.ebuf || E);
+        if (q.tiles) {
             /* a column pass tile by tile, every tile's rows in order */
             const ptrdiff_t ntile = (C + TOFG_TILE - 1) / TOFG_TILE;
 #ifdef _OPENMP
@@ -599,11 +657,11 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
             for (ptrdiff_t t = 0; t < ntile; t++) {
                 const ptrdiff_t c0 = t * TOFG_TILE, c1 = c0 + TOFG_TILE < C ? c0 + TOFG_TILE : C;
                 if (!ok) continue;
-                if (fast) {
-                    tofg_pass_tile(&p, scratch, c0, c1, A, E);
+                if (q.fast) {
+                    tofg_pass_tile(&p, scratch, c0, c1, q.A, E, 0, R);
                 } else {
                     for (ptrdiff_t r = 0; r < R; r++)
-                        tofg_pass_line(&p, r, scratch, 0, step, c0, c1, NULL, 0);
+                        tofg_pass_line(&p, r, scratch, 0, q.step, c0, c1, NULL, 0);
                 }
             }
         } else {
@@ -611,7 +669,7 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
 #pragma omp for schedule(static)
 #endif
             for (ptrdiff_t r = 0; r < R; r++)
-                if (ok) tofg_pass_line(&p, r, scratch, fast, step, 0, C, E, A);
+                if (ok) tofg_pass_line(&p, r, scratch, q.fast, q.step, 0, C, E, q.A);
         }
         free(E);
         free(scratch);
@@ -619,6 +677,170 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
     free(gate);
     free(rn);
     return status;
+}
+
+/* grid rows of output per strip of the fused denoise when the caller gives none, at most:
+   each strip recomputes 2 reach rows of the first row pass and reach rows of the other two
+   passes above and below it (at 128 and reach 5, 8 % of the passes' work), and each thread
+   holds the buffers of one strip (41 MB for 2000 columns and 3 frequencies) */
+#define TOFG_STRIP 128
+
+/* One strip's planes of a pass output (2F + 2 planes of cap C floats: re (F), im (F), var,
+   n_eff). */
+typedef struct {
+    float *re, *im, *var, *neff;
+    ptrdiff_t stride;
+} tofg_strip_buf;
+
+static tofg_strip_buf tofg_strip_at(float *base, ptrdiff_t F, ptrdiff_t cap, ptrdiff_t C)
+{
+    const ptrdiff_t s = cap * C;
+    tofg_strip_buf b = {NULL, NULL, NULL, NULL, s};
+    if (base) {
+        b.re = base;
+        b.im = base + F * s;
+        b.var = base + 2 * F * s;
+        b.neff = base + (2 * F + 1) * s;
+    }
+    return b;
+}
+
+/* the args of one pass over the local grid of rows [g0, g0 + Rl) (every input pointer already
+   at row g0), output rows [ra, rb) of it to outputs whose row 0 is local row ra */
+static tofg_pass_args tofg_local(const float *zr, const float *zi, const float *v,
+                                 const float *nin, ptrdiff_t zs, const float *gr,
+                                 const float *gi, const float *gv, ptrdiff_t gs,
+                                 const float *col, ptrdiff_t cs, const uint8_t *use,
+                                 ptrdiff_t F, ptrdiff_t Rl, ptrdiff_t C, int axis,
+                                 const int64_t *px, ptrdiff_t reach, int64_t radius_px,
+                                 float inv2h2, float inv2hc2, float *or_, float *oi,
+                                 double *or64, double *oi64, float *ov, float *on,
+                                 ptrdiff_t os, ptrdiff_t ra, const float *gate,
+                                 const float *rn)
+{
+    const tofg_pass_args p = {zr, zi, v, nin, gr, gi, gv, col, use, F, Rl, C, axis, px, reach,
+                              radius_px, inv2h2, inv2hc2, or_, oi, ov, on, or64, oi64, zs, gs,
+                              cs, os, ra * C, gate, rn};
+    return p;
+}
+
+int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
+                      const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
+                      const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
+                      ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
+                      double *or64, double *oi64, float *ov, float *on,
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
+{
+    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
+        || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
+        || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
+        || !(inv2hc2 >= 0.0))
+        return RGBZ_EINVAL;
+    if (uw && (!uw->freqs || !uw->weights || !uw->depth || !uw->residual || !uw->wraps
+               || !uw->phase || !uw->amp))
+        return RGBZ_EINVAL;
+    if (R == 0 || C == 0) return RGBZ_OK;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    /* by default a multiple of the threads' count of strips of at most TOFG_STRIP rows, of
+       even heights: the threads' shares stay even */
+    const ptrdiff_t nt = nth, nauto = nt * ((R + nt * TOFG_STRIP - 1) / (nt * TOFG_STRIP));
+    const ptrdiff_t N = R * C, S = strip > 0 ? strip : (R + nauto - 1) / nauto, H = reach_r;
+    const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
+    const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
+    /* the rows of a strip's buffers: the first row pass over S + 4H rows, the other passes
+       over S + 2H */
+    const ptrdiff_t cap1 = S + 4 * H < R ? S + 4 * H : R, cap2 = S + 2 * H < R ? S + 2 * H : R;
+    const size_t per_row = (size_t)(2 * F + 5) * (size_t)C;
+    const size_t ebuf = qr.ebuf > qc.ebuf ? qr.ebuf : qc.ebuf;
+    const size_t nbuf = (size_t)(2 * F + 2) * (size_t)C * (size_t)(cap1 + 2 * cap2)
+                        + 2 * (size_t)cap1 * (size_t)C + per_row + ebuf;
+    /* unwrapping: the strip's mean phasors (F, S C) in double, I then Q */
+    const size_t nmean = uw ? 2 * (size_t)F * (size_t)S * (size_t)C : 0;
+    const float fh = (float)inv2h2, fc = (float)inv2hc2;
+    const ptrdiff_t nstrip = (R + S - 1) / S;
+    int bad = 0, dom = 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth) reduction(|:bad, dom)
+#endif
+    {
+        /* gate, rn (cap1 C each), scratch, E, then the planes of 1, 2 and 3 */
+        float *buf = malloc(nbuf * sizeof(float));
+        double *mean = nmean ? malloc(nmean * sizeof(double)) : NULL;
+        if (nmean && !mean) {
+            free(buf);
+            buf = NULL;
+        }
+        bad |= !buf;
+        float *gate = NULL, *rn = NULL, *scratch = NULL, *E = NULL, *b = NULL;
+        if (buf) {
+            gate = buf;
+            rn = gate + cap1 * C;
+            scratch = rn + cap1 * C;
+            E = scratch + per_row;
+            b = E + ebuf;
+        }
+        const tofg_strip_buf B1 = tofg_strip_at(b, F, cap1, C);
+        const tofg_strip_buf G1 = tofg_strip_at(b ? b + (2 * F + 2) * cap1 * C : NULL, F, cap2,
+                                                C);
+        const tofg_strip_buf B2 = tofg_strip_at(b ? b + (2 * F + 2) * (cap1 + cap2) * C : NULL,
+                                                F, cap2, C);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (ptrdiff_t t = 0; t < nstrip; t++) {
+            if (!buf) continue;
+            /* output rows [s0, s1); the column passes' rows [a2, b2), the first row pass's
+               [a1, b1): every row within reach of an output row that is on the grid */
+            const ptrdiff_t s0 = t * S, s1 = s0 + S < R ? s0 + S : R;
+            const ptrdiff_t a2 = s0 - H > 0 ? s0 - H : 0, b2 = s1 + H < R ? s1 + H : R;
+            const ptrdiff_t a1 = a2 - H > 0 ? a2 - H : 0, b1 = b2 + H < R ? b2 + H : R;
+            const ptrdiff_t n1 = b1 - a1, n2 = b2 - a2, o1 = a1 * C, o2 = a2 * C;
+            /* 1: rows of the raw phasors guided by themselves, rows [a1, b1) */
+            if (qr.fast) tofg_gates(use + o1, NULL, 0, n1 * C, gate, rn);
+            tofg_pass_args p = tofg_local(zr + o1, zi + o1, v + o1, NULL, N, zr + o1, zi + o1,
+                                          v + o1, N, col + o1, N, use + o1, F, n1, C, 1,
+                                          col_px, reach_c, radius_px, fh, fc, B1.re, B1.im,
+                                          NULL, NULL, B1.var, B1.neff, B1.stride, 0,
+                                          qr.fast ? gate : NULL, qr.fast ? rn : NULL);
+            tofg_pass_rows(&p, &qr, 0, n1, scratch, E);
+            /* 2: columns of 1 guided by themselves: the guide of the second round, [a2, b2) */
+            if (qc.fast) tofg_gates(use + o1, B1.neff, 0, n1 * C, gate, rn);
+            p = tofg_local(B1.re, B1.im, B1.var, B1.neff, B1.stride, B1.re, B1.im, B1.var,
+                           B1.stride, col + o1, N, use + o1, F, n1, C, 0, row_px + a1, reach_r,
+                           radius_px, fh, fc, G1.re, G1.im, NULL, NULL, G1.var, G1.neff,
+                           G1.stride, a2 - a1, qc.fast ? gate : NULL, qc.fast ? rn : NULL);
+            tofg_pass_rows(&p, &qc, a2 - a1, b2 - a1, scratch, E);
+            /* 3: rows of the raw phasors guided by 2, [a2, b2) */
+            if (qr.fast) tofg_gates(use + o2, NULL, 0, n2 * C, gate, rn);
+            p = tofg_local(zr + o2, zi + o2, v + o2, NULL, N, G1.re, G1.im, G1.var, G1.stride,
+                           col + o2, N, use + o2, F, n2, C, 1, col_px, reach_c, radius_px, fh,
+                           fc, B2.re, B2.im, NULL, NULL, B2.var, B2.neff, B2.stride, 0,
+                           qr.fast ? gate : NULL, qr.fast ? rn : NULL);
+            tofg_pass_rows(&p, &qr, 0, n2, scratch, E);
+            /* 4: columns of 3 guided by 2, the output rows [s0, s1) in double (to the strip's
+               buffer when they are unwrapped here) */
+            const ptrdiff_t ns = (s1 - s0) * C;
+            double *mr = mean ? mean : or64 + s0 * C, *mi = mean ? mean + F * ns : oi64 + s0 * C;
+            if (qc.fast) tofg_gates(use + o2, B2.neff, 0, n2 * C, gate, rn);
+            p = tofg_local(B2.re, B2.im, B2.var, B2.neff, B2.stride, G1.re, G1.im, G1.var,
+                           G1.stride, col + o2, N, use + o2, F, n2, C, 0, row_px + a2, reach_r,
+                           radius_px, fh, fc, NULL, NULL, mr, mi, ov + s0 * C, on + s0 * C,
+                           mean ? ns : N, s0 - a2, qc.fast ? gate : NULL, qc.fast ? rn : NULL);
+            tofg_pass_rows(&p, &qc, s0 - a2, s1 - a2, scratch, E);
+            if (mean) {
+                const int st = rgbz_tof_depth_iq_strided(
+                    mr, mi, F, ns, N, uw->freqs, uw->weights, uw->max_range,
+                    uw->depth + s0 * C, uw->residual + s0 * C, uw->wraps + s0 * C,
+                    uw->phase + s0 * C, uw->amp + s0 * C, 1);
+                dom |= st == RGBZ_EDOMAIN;
+                bad |= st != RGBZ_OK && st != RGBZ_EDOMAIN;
+            }
+        }
+        free(mean);
+        free(buf);
+    }
+    return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
 }
 
 /* ------------------------------------------------------------------ validity */
@@ -1008,8 +1230,10 @@ static float tofg_up_mode(const tofg_up_args *p, const float *pc, const ptrdiff_
 /* The spatial weights of the fill by offset (di, dj) in [-reach, reach]^2, into sw, when
    the grid lines are evenly spaced at multiples of half a pixel: every difference of
    centres is then exact, so the table holds bit for bit what tofg_fill_node would compute
-   for each pair. Returns 0 (sw unused) for any other grid. */
-static int tofg_fill_table(const tofg_up_args *p, ptrdiff_t reach, float *sw)
+   for each pair; sall[k]: the sum of the weights of the window of 2^k grid lines (k = 0, 1, 2,
+   up to reach) in tofg_fill_node's order, for a window the grid does not clip. Returns 0 (sw
+   and sall unused) for any other grid. */
+static int tofg_fill_table(const tofg_up_args *p, ptrdiff_t reach, float *sw, float *sall)
 {
     const double *ax[2] = {p->rc, p->cc};
     const ptrdiff_t n[2] = {p->R, p->C};
@@ -1033,6 +1257,13 @@ static int tofg_fill_table(const tofg_up_args *p, ptrdiff_t reach, float *sw)
                                                                   * p->inv2s2);
         }
     }
+    for (ptrdiff_t lv = 1, k = 0; lv <= reach; lv *= 2, k++) {
+        float all = 0.0f;
+        for (ptrdiff_t di = -lv; di <= lv; di++)
+            for (ptrdiff_t dj = -lv; dj <= lv; dj++)
+                all += sw[(di + reach) * side + (dj + reach)];
+        sall[k] = all;
+    }
     return 1;
 }
 
@@ -1044,9 +1275,10 @@ static int tofg_fill_table(const tofg_up_args *p, ptrdiff_t reach, float *sw)
    TOFG_VETO: the pixels around it cannot take a neighbour's surface unchallenged. */
 static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const double *own,
                            double own_k, ptrdiff_t r, ptrdiff_t c, ptrdiff_t reach,
-                           const float *sw, double *depth, double *sigma, float *prior)
+                           const float *sw, const float *sall, double *depth, double *sigma,
+                           float *prior)
 {
-    const ptrdiff_t N = p->R * p->C, m = r * p->C + c;
+    const ptrdiff_t N = p->R * p->C, m = r * p->C + c, C = p->C, side = 2 * reach + 1;
     depth[m] = p->depth[m];
     sigma[m] = p->sigma[m];
     prior[m] = prior0[m];
@@ -1055,36 +1287,52 @@ static void tofg_fill_node(const tofg_up_args *p, const float *prior0, const dou
     const float pc[3] = {p->col[m], p->col[N + m], p->col[2 * N + m]};
     const tofg_up_args q = {p->depth, p->sigma, p->col, prior0, p->R, p->C, p->rc, p->cc,
                             p->spacing, p->inv2s2, p->inv2hc2, p->tol_k, p->tol_min};
-    for (ptrdiff_t lv = 1; lv <= reach; lv *= 2) {
+    for (ptrdiff_t lv = 1, k = 0; lv <= reach; lv *= 2, k++) {
+        /* the usable candidates alone, in the window's order (tofg_up_mode gives the others
+           no weight), and the sum of every node's spatial weight */
         ptrdiff_t mm[81];
         float ww[81], all = 0.0f, out;
         int n = 0;
         const ptrdiff_t i0 = r - lv > 0 ? r - lv : 0, i1 = r + lv < p->R - 1 ? r + lv : p->R - 1;
-        const ptrdiff_t j0 = c - lv > 0 ? c - lv : 0, j1 = c + lv < p->C - 1 ? c + lv : p->C - 1;
-        int any = 0;                             /* nothing usable this far: look farther */
-        for (ptrdiff_t i = i0; i <= i1 && !any; i++)
-            for (ptrdiff_t j = j0; j <= j1; j++) any |= prior0[i * p->C + j] > 0.0f;
-        if (!any) continue;
-        for (ptrdiff_t i = i0; i <= i1; i++) {
-            const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
-            for (ptrdiff_t j = j0; j <= j1; j++) {
-                mm[n] = i * p->C + j;
-                if (sw) {
-                    ww[n] = sw[(i - r + reach) * (2 * reach + 1) + (j - c + reach)];
-                } else {
-                    const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
-                    ww[n] = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
-                }
-                all += ww[n++];
+        const ptrdiff_t j0 = c - lv > 0 ? c - lv : 0, j1 = c + lv < C - 1 ? c + lv : C - 1;
+        if (sw) {
+            for (ptrdiff_t i = i0; i <= i1; i++) {
+                const float *pr = prior0 + i * C, *row = sw + (i - r + reach) * side + reach;
+                for (ptrdiff_t j = j0; j <= j1; j++)
+                    if (pr[j] > 0.0f) {
+                        mm[n] = i * C + j;
+                        ww[n++] = row[j - c];
+                    }
             }
+            if (!n) continue;                    /* nothing usable this far: look farther */
+            if (i1 - i0 == 2 * lv && j1 - j0 == 2 * lv) {
+                all = sall[k];
+            } else {
+                for (ptrdiff_t i = i0; i <= i1; i++) {
+                    const float *row = sw + (i - r + reach) * side + reach;
+                    for (ptrdiff_t j = j0; j <= j1; j++) all += row[j - c];
+                }
+            }
+        } else {
+            for (ptrdiff_t i = i0; i <= i1; i++) {
+                const float dy = (float)((p->rc[i] - p->rc[r]) / p->spacing);
+                for (ptrdiff_t j = j0; j <= j1; j++) {
+                    const float dx = (float)((p->cc[j] - p->cc[c]) / p->spacing);
+                    const float w = tofg_exp_neg((dy * dy + dx * dx) * p->inv2s2);
+                    all += w;
+                    if (prior0[i * C + j] > 0.0f) {
+                        mm[n] = i * C + j;
+                        ww[n++] = w;
+                    }
+                }
+            }
+            if (!n) continue;
         }
         const float got = tofg_up_mode(&q, pc, mm, ww, n, om, otol, &out);
         if (got > 0.0f) {
-            int kb = -1;                       /* the usable candidate nearest the depth */
-            for (int k = 0; k < n; k++)
-                if (prior0[mm[k]] > 0.0f
-                    && (kb < 0 || fabs(p->depth[mm[k]] - out) < fabs(p->depth[mm[kb]] - out)))
-                    kb = k;
+            int kb = 0;                          /* the usable candidate nearest the depth */
+            for (int t = 1; t < n; t++)
+                if (fabs(p->depth[mm[t]] - out) < fabs(p->depth[mm[kb]] - out)) kb = t;
             depth[m] = out;
             sigma[m] = p->sigma[mm[kb]];
             prior[m] = 0.25f * got / all;

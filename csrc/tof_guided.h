@@ -44,6 +44,36 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
                    double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
                    float *ov, float *on, int workers);
 
+/* The unwrapping of the fused denoise's means (rgbz_tof_depth_iq's arguments): depth,
+   residual, wraps (N,), phase and amp (F, N). */
+typedef struct {
+    const double *freqs, *weights;
+    double max_range;
+    double *depth, *residual;
+    int32_t *wraps;
+    double *phase, *amp;
+} tofg_unwrap_out;
+
+/* The guided denoise, the four passes of rgbz_tofg_pass fused: a row pass of the raw
+   phasors zr, zi (F, N) with variance v (N,) guided by themselves, a column pass of it guided
+   by itself (the guide of the second round), a row pass of the raw phasors guided by that,
+   and a column pass of it guided by the same; outputs as rgbz_tofg_pass's last (or64, oi64
+   (F, N), ov, on (N,)), bit for bit. It runs strip by strip of grid rows in buffers that stay
+   small (each strip recomputes the rows its column passes reach beyond it), so no plane of
+   the intermediate passes is ever held for the whole frame. row_px (R,), col_px (C,): the
+   pixel coordinates of the grid lines; reach_r, reach_c: the grid lines a pass along columns
+   and along rows reaches. With uw (not NULL) each strip's means are unwrapped as they are
+   made (rgbz_tof_depth_iq, bit for bit) into uw's arrays instead of being stored (or64, oi64
+   unused); a non-finite mean gives RGBZ_EDOMAIN after every other one is computed. strip:
+   the grid rows of output per strip (<= 0: at most 128, a multiple of the threads' count of
+   strips); the outputs do not depend on it. */
+int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
+                      const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
+                      const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
+                      ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
+                      double *or64, double *oi64, float *ov, float *on,
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers);
+
 /* snr, sigma, reflectance and the validity bits (1 saturated, 2 low signal, 4 inconsistent,
    16 out of range) of every measurement from amp (F, N), the component variance var (N,),
    depth, residual (N,), sat (N,). sigma_scale (F,): (w_f c / (4 pi f) / sum w)^2;

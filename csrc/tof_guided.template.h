@@ -164,15 +164,15 @@ static int RGBZ_CAT(tofg_upsample, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t
                              (float)inv2s2, (float)inv2hc2, (float)tol_k, (float)tol_min};
     const int nth = rgbz_threads(workers);
     (void)nth;
-    float sw[9 * 9];                           /* reach <= 4 */
-    const float *swp = tofg_fill_table(&p0, reach, sw) ? sw : NULL;
+    float sw[9 * 9], sall[3];                  /* reach <= 4 */
+    const float *swp = tofg_fill_table(&p0, reach, sw, sall) ? sw : NULL;
     /* dynamic: the holes, whose fill is most of the work, cluster in dark regions */
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 8) num_threads(nth)
 #endif
     for (ptrdiff_t r = 0; r < R; r++)
         for (ptrdiff_t c = 0; c < C; c++)
-            tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, fd, fs, prior);
+            tofg_fill_node(&p0, prior0, own, own_k, r, c, reach, swp, sall, fd, fs, prior);
     const tofg_up_args p = {fd, fs, col, prior, R, C, rc, cc, spacing, (float)inv2s2,
                             (float)inv2hc2, (float)tol_k, (float)tol_min};
     const float s[3] = {(float)(scale * cscale[0]), (float)(scale * cscale[1]),

@@ -181,13 +181,31 @@ def validate_frame(data, pattern, bit_depth, name):
     period, values (colour sites only) within [0, 2**bit_depth - 1], and a
     dtype wide enough for the bit depth.
     """
-    data = check_image(data, name, ndim=2, dtypes=FRAME_DTYPES)
+    data = check_image(data, name, ndim=2, dtypes=FRAME_DTYPES, finite=False)
+    # a frame whose extremes are in range is finite too (NaN makes them NaN, infinity is out
+    # of range): one reduction pass each, no frame-sized temporary; any other frame gets the
+    # checks one by one, so that its errors come in the same order
+    in_range = _in_range_fast(data, (1 << bit_depth) - 1)
+    if not in_range:
+        check_finite(data, name)
     if data.dtype == np.uint8 and bit_depth > 8:
         raise ValueError(f"{name}: a uint8 frame cannot hold {bit_depth}-bit data; "
                          "pass uint16 or a float dtype, or bit_depth <= 8")
     pattern.check_shape(data.shape, name)
-    _check_range(data, bit_depth, name, pattern)
+    if not in_range:
+        _check_range(data, bit_depth, name, pattern)
     return data
+
+
+def _in_range_fast(data, top):
+    """True if a C-contiguous ``data`` lies within [0, top], by one contiguous reduction per
+    bound (SIMD, no buffering; an unsigned type needs no lower one). NaN makes NumPy's min
+    and max NaN and infinity is out of range, so True also says the data are finite. False
+    for a non-contiguous array, which the per-phase views of :func:`_check_range` read
+    instead."""
+    if not (data.size and data.flags.c_contiguous):
+        return False
+    return bool((data.dtype.kind == "u" or data.min() >= 0) and data.max() <= top)
 
 
 def frame_inputs(frame, pattern=None, bit_depth=None, name="frame"):
@@ -230,12 +248,10 @@ def _check_range(data, bit_depth, name, pattern=None):
     so a 50-megapixel frame costs no extra memory.
     """
     top = (1 << bit_depth) - 1
-    if data.size and data.flags.c_contiguous:
-        # one contiguous pass first (SIMD, no buffering); only a frame whose
-        # extremes are out of range -- perhaps only at Z sites -- needs the
-        # per-phase views below
-        if data.min() >= 0 and data.max() <= top:
-            return
+    # one contiguous pass first; only a frame whose extremes are out of range -- perhaps
+    # only at Z sites -- needs the per-phase views below
+    if _in_range_fast(data, top):
+        return
     if pattern is None:
         views = [data]
     else:

@@ -133,9 +133,13 @@ def tof_depth_iq(const double[:, ::1] i, const double[:, ::1] q, const double[::
 # ---------------------------------------------------------------------- metrics (metrics.c)
 cdef extern from "metrics.h" nogil:
     int RGBZ_SSIM_MAX_TAPS
-    int rgbz_ssim_sums(int in_type, const void *x, const void *y, Py_ssize_t planes,
-                       Py_ssize_t rows, Py_ssize_t cols, const double *weights, int ntaps,
-                       double c1, double c2, double *ssim_sum, double *cs_sum, int workers)
+    int rgbz_ssim_sums(int in_type, const void *x, const void *y, const double *x_moments,
+                       Py_ssize_t planes, Py_ssize_t rows, Py_ssize_t cols,
+                       const double *weights, int ntaps, double c1, double c2,
+                       double *ssim_sum, double *cs_sum, int workers)
+    int rgbz_ssim_reference(int in_type, const void *x, Py_ssize_t planes, Py_ssize_t rows,
+                            Py_ssize_t cols, const double *weights, int ntaps,
+                            double *x_moments, int workers)
     int rgbz_downsample2(int in_type, const void *src, Py_ssize_t planes, Py_ssize_t rows,
                          Py_ssize_t cols, double *dst, int workers)
     int rgbz_srgb_to_lab(int in_type, const void *rgb, Py_ssize_t n, double scale,
@@ -143,6 +147,12 @@ cdef extern from "metrics.h" nogil:
     int rgbz_zipper_count(int in_type, const void *ref, const void *test, Py_ssize_t rows,
                           Py_ssize_t cols, double scale, double delta, int64_t *count,
                           int workers)
+    int rgbz_zipper_reference(int in_type, const void *ref, Py_ssize_t rows, Py_ssize_t cols,
+                              double scale, double *best, uint8_t *nearest, int workers)
+    int rgbz_zipper_count_reference(int in_type, const void *test, Py_ssize_t rows,
+                                    Py_ssize_t cols, double scale, const double *best,
+                                    const uint8_t *nearest, double delta, int64_t *count,
+                                    int workers)
     int rgbz_sq_diff_sum(int in_type, const void *a, const void *b, Py_ssize_t rows,
                          Py_ssize_t cols, Py_ssize_t channels, const uint8_t *mask,
                          double *sum, int64_t *count, int workers)
@@ -174,16 +184,41 @@ def metrics_use_isa(name=None):
 
 
 def ssim_sums(const frame_t[:, :, ::1] x, const frame_t[:, :, ::1] y,
-              const double[::1] weights, double c1, double c2, double[::1] ssim_sum,
-              double[::1] cs_sum, int workers):
+              const double[:, :, ::1] x_moments, const double[::1] weights, double c1,
+              double c2, double[::1] ssim_sum, double[::1] cs_sum, int workers):
     """Per-plane sums of the SSIM and contrast-structure maps of planar (planes, rows, cols)
-    images over the windows wholly inside them (separable symmetric window ``weights``)."""
+    images over the windows wholly inside them (separable symmetric window ``weights``);
+    ``x_moments``: :func:`ssim_reference` of ``x``, or None."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef const double *mom = NULL
+    cdef Py_ssize_t n = weights.shape[0]
+    if x_moments is not None:
+        if (x_moments.shape[0] != x.shape[0] * (x.shape[1] - n + 1) or x_moments.shape[1] != 2
+                or x_moments.shape[2] != x.shape[2] - n + 1):
+            raise ValueError("x_moments: not the shape of ssim_reference(x)")
+        mom = &x_moments[0, 0, 0]
     with nogil:
-        status = rgbz_ssim_sums(in_type, &x[0, 0, 0], &y[0, 0, 0], x.shape[0], x.shape[1],
-                                x.shape[2], &weights[0], <int> weights.shape[0], c1, c2,
+        status = rgbz_ssim_sums(in_type, &x[0, 0, 0], &y[0, 0, 0], mom, x.shape[0],
+                                x.shape[1], x.shape[2], &weights[0], <int> n, c1, c2,
                                 &ssim_sum[0], &cs_sum[0], workers)
+    _raise_for(status)
+
+
+def ssim_reference(const frame_t[:, :, ::1] x, const double[::1] weights,
+                   double[:, :, ::1] x_moments, int workers):
+    """What the SSIM of planar ``x`` takes from ``x`` alone: ``x_moments`` (planes *
+    (rows - n + 1), 2, cols - n + 1), the local means and variances of each window row."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t n = weights.shape[0]
+    if (x_moments.shape[0] != x.shape[0] * (x.shape[1] - n + 1) or x_moments.shape[1] != 2
+            or x_moments.shape[2] != x.shape[2] - n + 1):
+        raise ValueError("x_moments: expected (planes * (rows - n + 1), 2, cols - n + 1)")
+    with nogil:
+        status = rgbz_ssim_reference(in_type, &x[0, 0, 0], x.shape[0], x.shape[1],
+                                     x.shape[2], &weights[0], <int> n, &x_moments[0, 0, 0],
+                                     workers)
     _raise_for(status)
 
 
@@ -218,6 +253,39 @@ def zipper_count(const frame_t[:, :, ::1] ref, const frame_t[:, :, ::1] test, do
     with nogil:
         status = rgbz_zipper_count(in_type, &ref[0, 0, 0], &test[0, 0, 0], ref.shape[0],
                                    ref.shape[1], scale, delta, &count, workers)
+    _raise_for(status)
+    return int(count)
+
+
+def zipper_reference(const frame_t[:, :, ::1] ref, double scale, double[:, ::1] best,
+                     uint8_t[:, ::1] nearest, int workers):
+    """The reference half of :func:`zipper_count`: for each interior pixel of ``ref``
+    ((rows - 2, cols - 2) arrays) the smallest dE to a neighbour and that neighbour (0..7)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if (best.shape[0] != ref.shape[0] - 2 or best.shape[1] != ref.shape[1] - 2
+            or nearest.shape[0] != best.shape[0] or nearest.shape[1] != best.shape[1]):
+        raise ValueError("best, nearest: expected (rows - 2, cols - 2) arrays")
+    with nogil:
+        status = rgbz_zipper_reference(in_type, &ref[0, 0, 0], ref.shape[0], ref.shape[1],
+                                       scale, &best[0, 0], &nearest[0, 0], workers)
+    _raise_for(status)
+
+
+def zipper_count_reference(const frame_t[:, :, ::1] test, double scale,
+                           const double[:, ::1] best, const uint8_t[:, ::1] nearest,
+                           double delta, int workers):
+    """:func:`zipper_count` of ``test`` against the reference of :func:`zipper_reference`."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int64_t count = 0
+    if (best.shape[0] != test.shape[0] - 2 or best.shape[1] != test.shape[1] - 2
+            or nearest.shape[0] != best.shape[0] or nearest.shape[1] != best.shape[1]):
+        raise ValueError("best, nearest: expected (rows - 2, cols - 2) arrays")
+    with nogil:
+        status = rgbz_zipper_count_reference(in_type, &test[0, 0, 0], test.shape[0],
+                                             test.shape[1], scale, &best[0, 0],
+                                             &nearest[0, 0], delta, &count, workers)
     _raise_for(status)
     return int(count)
 
@@ -729,6 +797,21 @@ cdef extern from "tof_guided.h" nogil:
                        const int64_t *px, Py_ssize_t reach, int64_t radius_px, double inv2h2,
                        double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
                        float *ov, float *on, int workers)
+    ctypedef struct tofg_unwrap_out:
+        const double *freqs
+        const double *weights
+        double max_range
+        double *depth
+        double *residual
+        int32_t *wraps
+        double *phase
+        double *amp
+    int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
+                          const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C,
+                          const int64_t *row_px, const int64_t *col_px, Py_ssize_t reach_r,
+                          Py_ssize_t reach_c, int64_t radius_px, double inv2h2,
+                          double inv2hc2, double *or64, double *oi64, float *ov, float *on,
+                          const tofg_unwrap_out *uw, Py_ssize_t strip, int workers)
     int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                            const double *residual, const uint8_t *sat, Py_ssize_t F,
                            Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
@@ -823,6 +906,53 @@ def tofg_pass(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v
                                 radius_px, inv2h2, inv2hc2, o_r, o_i, o_r64, o_i64,
                                 &out_var[0], &out_neff[0], workers)
     _raise_for(status)
+
+
+def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v,
+                 const float[:, ::1] col, const uint8_t[::1] use, const int64_t[::1] row_px,
+                 const int64_t[::1] col_px, Py_ssize_t reach_r, Py_ssize_t reach_c,
+                 int64_t radius_px, double inv2h2, double inv2hc2, double[:, ::1] out_re,
+                 double[:, ::1] out_im, float[::1] out_var, float[::1] out_neff, int workers,
+                 const double[::1] freqs=None, const double[::1] weights=None,
+                 double max_range=0.0, double[::1] depth=None, double[::1] residual=None,
+                 int32_t[::1] wraps=None, double[:, ::1] phase=None, double[:, ::1] amp=None,
+                 Py_ssize_t strip=0):
+    """The guided denoise: the four passes of tofg_pass (rows, columns, rows guided by the
+    columns' output, columns) fused strip by strip; the last pass's outputs, bit for bit.
+    With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
+    unwrapped strip by strip (tof_depth_iq, bit for bit) instead of stored in out_re, out_im
+    (then None); strip: grid rows per strip (0: the kernel's default). Returns False when
+    a mean is not finite (RGBZ_EDOMAIN), True otherwise."""
+    cdef int status
+    cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
+    cdef tofg_unwrap_out uw
+    cdef tofg_unwrap_out *puw = NULL
+    cdef double *o_r = NULL
+    cdef double *o_i = NULL
+    if R == 0 or C == 0:
+        return True
+    if depth is not None:
+        uw.freqs = &freqs[0]
+        uw.weights = &weights[0]
+        uw.max_range = max_range
+        uw.depth = &depth[0]
+        uw.residual = &residual[0]
+        uw.wraps = &wraps[0]
+        uw.phase = &phase[0, 0]
+        uw.amp = &amp[0, 0]
+        puw = &uw
+    else:
+        o_r = &out_re[0, 0]
+        o_i = &out_im[0, 0]
+    with nogil:
+        status = rgbz_tofg_denoise(&zr[0, 0], &zi[0, 0], &v[0], &col[0, 0], &use[0],
+                                   zr.shape[0], R, C, &row_px[0], &col_px[0], reach_r, reach_c,
+                                   radius_px, inv2h2, inv2hc2, o_r, o_i, &out_var[0],
+                                   &out_neff[0], puw, strip, workers)
+    if status == RGBZ_EDOMAIN:
+        return False
+    _raise_for(status)
+    return True
 
 
 def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[::1] depth,

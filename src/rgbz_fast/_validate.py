@@ -42,8 +42,9 @@ FRAME_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
 FLOAT_DTYPES = (np.dtype(np.float16), np.dtype(np.float32), np.dtype(np.float64))
 
 
-def check_image(arr, name, ndim=None, dtypes=None):
-    """Return ``np.asarray(arr)`` after checking ndim, dtype kind, size and finiteness."""
+def check_image(arr, name, ndim=None, dtypes=None, *, finite=True):
+    """Return ``np.asarray(arr)`` after checking ndim, dtype kind, size and (``finite``)
+    finiteness; a caller passing ``finite=False`` checks it itself."""
     if arr is None:
         raise TypeError(f"{name}: expected an array, got None")
     a = as_array(arr, name)
@@ -61,7 +62,8 @@ def check_image(arr, name, ndim=None, dtypes=None):
     if dtypes is not None and a.dtype not in dtypes:
         raise TypeError(f"{name}: dtype {a.dtype} is not supported; expected one of "
                         f"{', '.join(str(d) for d in dtypes)}")
-    check_finite(a, name)
+    if finite:
+        check_finite(a, name)
     return a
 
 

@@ -152,6 +152,25 @@ def guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, reach, rad
     return mean.real, mean.imag, var, neff.reshape(-1)
 
 
+def guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radius_px,
+                   inv2h2, inv2hc2):
+    """The guided denoise (rgbz_tofg_denoise): a row pass guided by the raw phasors, a column
+    pass of it guided by itself, a row pass of the raw phasors guided by that, a column pass
+    of it guided by the same; the last pass's outputs."""
+    def run(data, nin, guide, axis):
+        px, reach = (cols, reach_c) if axis == 1 else (rows, reach_r)
+        mr, mi, var, neff = guided_pass(*data, nin, *guide, col, use, R, C, axis, px, reach,
+                                        radius_px, inv2h2, inv2hc2)
+        return (mr, mi, var), neff
+
+    raw = (zr, zi, v)
+    rows1, n1 = run(raw, None, raw, 1)
+    guide1, _ = run(rows1, n1, rows1, 0)
+    rows2, n2 = run(raw, None, guide1, 1)
+    (mr, mi, var), neff = run(rows2, n2, guide1, 0)
+    return mr, mi, var, neff
+
+
 def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_snr,
                     min_amplitude, max_sigma, max_residual, min_reflectance, max_range):
     """snr, sigma, reflectance and the bits 1, 2, 4, 16 of every measurement."""

@@ -451,3 +451,32 @@ def test_reports_are_never_half_written_when_killed(tmp_path):
             elif p.suffix == ".md":
                 assert text.endswith("\n") and text.count("| Zipper (%) |") == 2, text[-200:]
     assert checked >= 4, "the reports were never written before the kills"
+
+
+def _group(pgid):
+    """The live processes of process group ``pgid``."""
+    out = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[2]) == pgid and fields[0] != "Z":
+                out.append(int(entry.name))
+    return out
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+def test_a_pooled_evaluation_leaves_no_process_behind(tmp_path):
+    """`rgbz-fast evaluate --processes 2` in a session of its own: once it has exited,
+    nothing of its process group runs (the spawned pool's resource tracker used to outlive
+    it)."""
+    argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--limit", "2", "--processes", "2",
+            "--metrics", "cfa_psnr", "--methods", "bilinear", "--patterns", "mask1",
+            "--no-cache", "--no-plots", "--quiet", "--out", str(tmp_path / "out")]
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            text=True, start_new_session=True)
+    _, err = proc.communicate(timeout=300)
+    assert proc.returncode == 0, err[-2000:]
+    assert _group(proc.pid) == [], "processes left behind"

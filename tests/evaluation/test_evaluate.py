@@ -7,6 +7,7 @@ import pytest
 
 from _support import shared_path  # noqa: E402
 
+import rgbz_fast as rz
 from rgbz_fast import evaluation as ev
 from rgbz_fast import io as rio  # noqa: E402
 
@@ -263,3 +264,18 @@ def test_paired_differences_are_per_image():
     half = stats.t.ppf(0.975, 2) * np.std([1.0, 1.2, 0.8], ddof=1) / np.sqrt(3)
     assert mean == pytest.approx(1.0) and (lo, hi) == pytest.approx((1 - half, 1 + half))
     assert lo > 0                     # sure, although the images spread over 20 dB
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2", "rows", "bayer", "ZR/BG", "ZZGR/ZZBG"])
+@pytest.mark.parametrize("bit_depth", [8, 11])
+def test_frames_are_the_mosaics_of_the_image(pattern, bit_depth):
+    """The RGB-Z frame of an image is its pattern's mosaic (made from the reference CFA by
+    clearing the Z sites), and the reference the mosaic of the pattern's Bayer."""
+    img = np.random.default_rng(3).integers(0, 256, (40, 48, 3), dtype=np.uint8)
+    frame, reference = ev.image_frames(img, pattern, ev.EvalConfig(bit_depth=bit_depth))
+    lin = rz.simulation.srgb_to_linear(img / 255.0)
+    want = rz.mosaic(lin, pattern, bit_depth)
+    assert np.array_equal(frame.data, want.data) and frame.data.dtype == want.data.dtype
+    assert frame.pattern == want.pattern and frame.bit_depth == bit_depth
+    assert np.array_equal(reference, rz.mosaic(lin, want.pattern.bayer_pattern(),
+                                               bit_depth).data)

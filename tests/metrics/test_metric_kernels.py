@@ -22,6 +22,9 @@ Tolerances, and why:
   one pixel differs, an exact tie of two different colours that colour-science's
   rounding breaks against the raster-order rule (see
   test_zipper_exact_tie_takes_the_first_neighbour_in_raster_order).
+* one reference compared with many images (the dataset evaluation): the reference's
+  SSIM moments and zipper neighbours are computed once and reused; every value equals
+  the one of the pair alone bit for bit.
 """
 
 from __future__ import annotations
@@ -38,7 +41,8 @@ import rgbz_fast as rz
 from rgbz_fast import _kernels
 from rgbz_fast.metrics import (all_metrics, cfa_psnr, cpsnr, cpsnr_pooled, delta_e_map,
                                ms_ssim, ssim, zipper)
-from rgbz_fast.metrics._ssim import _downsample2
+from rgbz_fast.metrics._combined import COLOUR_METRICS, _colour_metrics
+from rgbz_fast.metrics._ssim import _downsample2, _window
 
 SSIM_TOL = dict(rtol=1e-12, atol=0)
 LAB_ATOL = 1e-12
@@ -268,12 +272,77 @@ def test_zipper_on_chain_images_matches_reference(n, pattern, method):
     assert all_metrics(ref, test, crop=8)["zipper"] == want
 
 
+# ---------------------------------------------------------------- one reference, many images
+
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+def test_a_reference_reused_gives_the_values_of_each_pair_alone(rng, dtype):
+    ref, first = _pair(rng, (190, 170, 3), dtype, noise=6.0)
+    tests = [first] + [_pair(rng, (190, 170, 3), dtype, noise=n)[1] for n in (2.0, 12.0)]
+    tests[1] = np.clip(ref.astype(np.float64) + rng.normal(0, 2, ref.shape), 0, 255)
+    tests[1] = np.rint(tests[1]).astype(dtype) if np.issubdtype(dtype, np.integer) else \
+        tests[1].astype(dtype)
+    memo = {}
+    for test in tests + [ref]:
+        got = _colour_metrics(ref, test, COLOUR_METRICS, 255, 3, 2, memo=memo)
+        assert got == all_metrics(ref, test, crop=3, workers=2)
+    assert {k[0] for k in memo} == {"ssim", "zipper"}
+
+
+@pytest.mark.parametrize("ntaps, gaussian", [(11, True), (7, True), (5, False), (1, True)])
+@pytest.mark.parametrize("dtype", [np.uint8, np.float64])
+def test_ssim_sums_from_the_reference_moments_are_those_computed_anew(rng, ntaps, gaussian,
+                                                                      dtype):
+    ref, test = _pair(rng, (3, 41, 37), dtype)
+    w = _window(ntaps, 1.5, gaussian)
+    moments = np.empty((3 * (41 - ntaps + 1), 2, 37 - ntaps + 1))
+    _kernels.ssim_reference(ref, w, moments, 2)
+    sums = [(np.empty(3), np.empty(3)) for _ in range(2)]
+    for mom, (s, c) in zip((None, moments), sums):
+        _kernels.ssim_sums(ref, test, mom, w, 6.5, 58.5, s, c, 2)
+    assert np.array_equal(sums[0][0], sums[1][0]) and np.array_equal(sums[0][1], sums[1][1])
+    # the moments are the local means and population variances of the reference
+    mean = ndi.correlate1d(ndi.correlate1d(ref[0].astype(np.float64), w, axis=0), w, axis=1)
+    sq = ndi.correlate1d(ndi.correlate1d(ref[0].astype(np.float64) ** 2, w, axis=0), w, axis=1)
+    r = ntaps // 2
+    inner = (slice(r, 41 - r), slice(r, 37 - r))
+    assert np.array_equal(moments[:41 - ntaps + 1, 0], mean[inner])
+    assert np.array_equal(moments[:41 - ntaps + 1, 1], sq[inner] - mean[inner] ** 2)
+    with pytest.raises(ValueError, match="x_moments"):
+        _kernels.ssim_sums(ref, test, moments[1:], w, 6.5, 58.5, *sums[0], 1)
+
+
+@pytest.mark.parametrize("dtype, scale", [(np.uint8, 255.0), (np.float64, 255.0),
+                                          (np.float64, 0.0)])
+def test_zipper_in_two_halves_is_the_fused_count(rng, dtype, scale):
+    ref, test = _pair(rng, (37, 45, 3), np.float64, noise=6.0)
+    if scale == 0.0:                                  # quantised Lab: many exact ties
+        ref, test = np.rint(ref / 4), np.rint(test / 4)
+    ref, test = ref.astype(dtype), test.astype(dtype)
+    best = np.empty((35, 43))
+    nearest = np.empty((35, 43), dtype=np.uint8)
+    _kernels.zipper_reference(ref, scale, best, nearest, 2)
+    assert nearest.max() <= 7
+    for delta in (0.0, 1.0, 2.3):
+        assert _kernels.zipper_count_reference(test, scale, best, nearest, delta, 2) == \
+            _kernels.zipper_count(ref, test, scale, delta, 2)
+    want = ref_metrics.zipper(ref, test, full_scale=scale) if scale else \
+        ref_metrics.zipper_lab(ref, test, 2.3)
+    assert 100.0 * _kernels.zipper_count_reference(test, scale, best, nearest, 2.3, 1) \
+        / (35 * 43) == want
+    nearest[3, 4] = 8                                 # no neighbour: refused
+    with pytest.raises(RuntimeError, match="rejected its arguments"):
+        _kernels.zipper_count_reference(test, scale, best, nearest, 2.3, 1)
+
+
 # ---------------------------------------------------------------- threads and instruction sets
 
 def _all_values(ref, test, workers):
+    memo = {}
     return (all_metrics(ref, test, crop=2, workers=workers),
             ssim(ref, test, workers=workers, win_size=7, gaussian_weights=False),
-            delta_e_map(ref, test, workers=workers))
+            delta_e_map(ref, test, workers=workers),
+            [_colour_metrics(ref, t, COLOUR_METRICS, 255, 2, workers, memo=memo)
+             for t in (test, ref)])
 
 
 def test_results_do_not_depend_on_threads(rng):
@@ -281,7 +350,7 @@ def test_results_do_not_depend_on_threads(rng):
     first = _all_values(ref, test, 1)
     for workers in (2, 3, 7, None):
         again = _all_values(ref, test, workers)
-        assert again[0] == first[0] and again[1] == first[1]
+        assert again[0] == first[0] and again[1] == first[1] and again[3] == first[3]
         assert np.array_equal(again[2], first[2])
 
 
@@ -300,6 +369,7 @@ def test_every_instruction_set_gives_the_same_bits(rng):
     assert _kernels.metrics_isa() == isas[-1]
     for isa, values in results.items():
         assert values[0] == results["generic"][0] and values[1] == results["generic"][1], isa
+        assert values[3] == results["generic"][3], isa
         assert np.array_equal(values[2], results["generic"][2]), isa
 
 

@@ -129,6 +129,84 @@ def test_guided_pass_on_uneven_lines_and_double_output():
     np.testing.assert_allclose(on, want[3], **FILTER_TOL)
 
 
+def _four_passes(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radius, hc):
+    """The four passes of the guided denoise by tofg_pass, one call each."""
+    F, N = zr.shape
+
+    def run(data, nin, guide, axis, out64=False):
+        px, reach = (cols, reach_c) if axis == 1 else (rows, reach_r)
+        ov, on = np.empty(N, np.float32), np.empty(N, np.float32)
+        o = (np.empty((F, N)), np.empty((F, N))) if out64 else \
+            (np.empty((F, N), np.float32), np.empty((F, N), np.float32))
+        _kernels.tofg_pass(*data, nin, *guide, col, use, R, C, axis, px, reach, radius, 0.125,
+                           hc, *(((None, None) + o) if out64 else (o + (None, None))), ov, on, 2)
+        return (o[0], o[1], ov), on
+
+    raw = (zr, zi, v)
+    rows1, n1 = run(raw, None, raw, 1)
+    guide1, _ = run(rows1, n1, rows1, 0)
+    rows2, n2 = run(raw, None, guide1, 1)
+    (mr, mi, var), neff = run(rows2, n2, guide1, 0, out64=True)
+    return mr, mi, var, neff
+
+
+@pytest.mark.parametrize("R,C,F,reach_r,reach_c,radius,uneven,hc", [
+    (150, 300, 3, 5, 5, 10, False, 0.02),     # strips, tiled column passes
+    (200, 270, 4, 3, 5, 6, False, 0.02),      # rows reach farther than the radius allows
+    (130, 37, 5, 4, 4, 8, False, 0.1),        # beyond the fast blocks' 4 frequencies
+    (3, 5, 3, 5, 5, 10, False, 0.02),         # a grid smaller than a window
+    (90, 300, 3, 5, 5, 10, True, 0.02)])      # uneven grid rows: the generic column pass
+def test_guided_denoise_is_the_four_passes(R, C, F, reach_r, reach_c, radius, uneven, hc):
+    """tofg_denoise (the passes fused strip by strip) gives the four tofg_pass calls' outputs
+    bit for bit, on 1 and 2 threads, and agrees with the NumPy reference."""
+    zr, zi, v, col, use = _planes(R, C, F, seed=R + C)
+    rows = (np.cumsum(np.r_[0, np.random.default_rng(2).integers(1, 5, R - 1)]) if uneven
+            else np.arange(R) * 2).astype(np.int64)
+    cols = np.arange(C, dtype=np.int64) * (1 if reach_c > reach_r else 2)
+    want = _four_passes(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radius, hc)
+    N = R * C
+    for workers, strip in ((1, 0), (2, 0), (2, 1), (1, 7)):
+        got = (np.empty((F, N)), np.empty((F, N)), np.empty(N, np.float32),
+               np.empty(N, np.float32))
+        _kernels.tofg_denoise(zr, zi, v, col, use, rows, cols, reach_r, reach_c, radius, 0.125,
+                              hc, *got, workers, strip=strip)
+        for a, b in zip(got, want):
+            np.testing.assert_array_equal(a, b)
+    ref_out = ref.guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c,
+                                 radius, 0.125, hc)
+    scale = np.abs(zr).max()
+    np.testing.assert_allclose(got[0], ref_out[0], rtol=0, atol=2e-4 * scale)
+    np.testing.assert_allclose(got[1], ref_out[1], rtol=0, atol=2e-4 * scale)
+    np.testing.assert_allclose(got[2], ref_out[2], **FILTER_TOL)
+    np.testing.assert_allclose(got[3], ref_out[3], **FILTER_TOL)
+
+
+@pytest.mark.parametrize("F,strip", [(3, 0), (2, 5), (1, 0)])
+def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip):
+    """With the unwrapping's arrays, tofg_denoise unwraps each strip's means as tof_depth_iq
+    unwraps the stored means, bit for bit; a non-finite phasor is reported (False)."""
+    R, C = 140, 60
+    zr, zi, v, col, use = _planes(R, C, F, seed=11)
+    rows, cols = np.arange(R, dtype=np.int64) * 2, np.arange(C, dtype=np.int64) * 2
+    f = np.array([80e6, 100e6, 120e6][:F])
+    w = np.ones(F)
+    N = R * C
+    mr, mi = np.empty((F, N)), np.empty((F, N))
+    var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
+    args = (zr, zi, v, col, use, rows, cols, 5, 5, 10, 0.125, 0.02)
+    assert _kernels.tofg_denoise(*args, mr, mi, var, neff, 2)
+    want = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
+    assert _kernels.tof_depth_iq(mr, mi, f, w, 7.5, *want, workers=2)
+    got = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
+    var2, neff2 = np.empty(N, np.float32), np.empty(N, np.float32)
+    assert _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got,
+                                 strip=strip)
+    for a, b in zip(got + [var2, neff2], want + [var, neff]):
+        np.testing.assert_array_equal(a, b)
+    zr[0, 3] = np.nan
+    assert not _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got)
+
+
 def test_validity_matches_numpy():
     rng = np.random.default_rng(4)
     N, F = 2000, 3

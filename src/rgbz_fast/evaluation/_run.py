@@ -15,7 +15,7 @@ import numpy as np
 from .. import _patterns
 from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
-from .._frame import RawFrame, mosaic
+from .._frame import RawFrame, _Adopt, mosaic
 from .._patterns import get_pattern
 from .._validate import (check_flag, check_image, check_path, check_processes, check_workers,
                          integer_bits, merge_params)
@@ -108,12 +108,16 @@ def _frames(img, pattern, config, memo, nir=None):
                                                   pixel_pitch_um=ColourSensor().pixel_pitch_um),
                                       0.0, 1.0)
         lin = memo["optics"]
-    frame = mosaic(lin, pattern, config.bit_depth)
+    shape = pattern.check_shape(lin.shape[:2], "rgb")      # mosaic's name of the image
     references = memo.setdefault("reference", {})          # Bayer pattern -> CFA
     bayer = pattern.bayer_pattern()
     if bayer not in references:
         references[bayer] = mosaic(lin, bayer, config.bit_depth).data
-    return frame, references[bayer]
+    # mosaic(lin, pattern): the colour of the underlying Bayer at the colour sites, 0 at the
+    # Z sites -- the reference CFA with its Z sites cleared, without sampling the image again
+    data = references[bayer].copy()
+    data[pattern.channel_map(shape) == _patterns.Z] = 0
+    return RawFrame(_Adopt(data), pattern, config.bit_depth), references[bayer]
 
 
 def evaluate_image(source, config, cache_dir=None, workers=1):
@@ -491,24 +495,60 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
                 results[t[0].name] = _pool_task(t)
                 bar.update()
         else:
-            import multiprocessing as mp
-            ctx = mp.get_context("spawn")
-            ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
-                                     initializer=_worker_init)
+            own_tracker = not _tracker_running()
             try:
-                futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
-                for f in as_completed(futs):
-                    results[futs[f]] = f.result()
-                    bar.update()
-            except BaseException:
-                _stop_pool(ex)              # an error or an interrupt: no orphaned worker
-                raise
-            ex.shutdown(wait=True)
+                _run_pool(tasks, nproc, bar, results)
+            finally:
+                if own_tracker:
+                    _stop_tracker()
     finally:
         bar.close()
     skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped)
+
+
+def _run_pool(tasks, nproc, bar, results):
+    """The tasks on a local pool of spawned processes, their results into ``results``."""
+    import multiprocessing as mp
+    ctx = mp.get_context("spawn")
+    ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
+                             initializer=_worker_init)
+    try:
+        futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
+        for f in as_completed(futs):
+            results[futs[f]] = f.result()
+            bar.update()
+    except BaseException:
+        _stop_pool(ex)                      # an error or an interrupt: no orphaned worker
+        del ex                              # its semaphores go before the tracker does
+        raise
+    ex.shutdown(wait=True)
+
+
+def _tracker_running():
+    """Whether this process has a multiprocessing resource tracker running."""
+    from multiprocessing import resource_tracker
+    return getattr(resource_tracker._resource_tracker, "_pid", None) is not None
+
+
+def _stop_tracker():
+    """Stop and reap the resource tracker that a spawned pool started in this process, once
+    the pool's semaphores are gone: left to itself it outlives the run by a moment (it ends
+    when it notices that this process has ended), a process that a caller waiting for the
+    run's process group sees left behind. The tracker of a pool that is still alive (a
+    caller's own) is left alone: its semaphores would start a new one."""
+    import gc
+    from multiprocessing import resource_tracker
+
+    gc.collect()                            # the pool's queues, and with them its semaphores
+    tracker = resource_tracker._resource_tracker
+    if getattr(tracker, "_pid", None) is None or not hasattr(tracker, "_stop"):
+        return                              # pragma: no cover - another Python's tracker
+    if any(getattr(getattr(obj, "_semlock", None), "name", None) is not None
+           for obj in gc.get_objects() if type(obj).__module__ == "multiprocessing.synchronize"):
+        return                              # named semaphores alive: the tracker keeps them
+    tracker._stop()
 
 
 def _run_dask(tasks, scheduler, bar):

@@ -71,7 +71,7 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
     share their first scale. ``memo``: a dict the caller keeps for the calls with the same
     ``reference``, ``data_range`` and ``crop`` (the dataset evaluation: one reference, many
     test images), which holds what only the reference gives (its planar scales for the
-    SSIMs); the same values."""
+    SSIMs and their local moments, its nearest neighbours for the zipper); the same values."""
     ref, tst = _check_rgb_pair(reference, test, *names)
     want_ssim = "ssim" in metrics or "ms_ssim" in metrics
     if want_ssim:
@@ -94,17 +94,17 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
     if "cpsnr" in metrics:
         out["cpsnr"] = _psnr_from_mse(*_rgb_mse(ref, tst, 0, threads), peak)
     if want_ssim:
-        x_scales = None
+        x_cache = None
         if memo is None:
             x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
         else:
             dt = _kernel_dtype(ref.dtype, tst.dtype)
-            x, x_scales = memo.get(("ssim", dt)) or memo.setdefault(
+            x, x_cache = memo.get(("ssim", dt)) or memo.setdefault(
                 ("ssim", dt), (np.ascontiguousarray(np.moveaxis(ref, -1, 0), dt), []))
             y = np.ascontiguousarray(np.moveaxis(tst, -1, 0), dt)
         ssim_value, ms_value = _ssim_and_ms_ssim(
-            x, y, peak, MS_SSIM_WEIGHTS if "ms_ssim" in metrics else None, threads, x_scales)
+            x, y, peak, MS_SSIM_WEIGHTS if "ms_ssim" in metrics else None, threads, x_cache)
         out.update(ssim=ssim_value, ms_ssim=ms_value)
     if "zipper" in metrics:
-        out["zipper"] = _zipper_percent(ref, tst, peak, 2.3, threads)
+        out["zipper"] = _zipper_percent(ref, tst, peak, 2.3, threads, memo)
     return {m: out[m] for m in metrics}

@@ -49,20 +49,32 @@ def _window(win_size, sigma, gaussian_weights):
     return phi / phi.sum()
 
 
-def _ssim_means(x, y, data_range, win_size, sigma, gaussian_weights, threads):
+def _ssim_means(x, y, data_range, win_size, sigma, gaussian_weights, threads,
+                x_moments=None):
     """Per-channel means of the local SSIM and contrast-structure maps (C kernel).
 
     ``x``, ``y``: C-contiguous (channels, rows, cols) arrays of one kernel dtype
     (:func:`._common._kernel_pair`). Only windows wholly inside the image count
-    (the 'valid' part of Wang et al.'s MATLAB code).
+    (the 'valid' part of Wang et al.'s MATLAB code). ``x_moments``: :func:`_ssim_reference`
+    of ``x`` with this window, or None; the same means either way, bit for bit.
     """
     channels, rows, cols = x.shape
     ssim_sum, cs_sum = np.empty(channels), np.empty(channels)
-    _kernels.ssim_sums(x, y, _window(win_size, sigma, gaussian_weights),
+    _kernels.ssim_sums(x, y, x_moments, _window(win_size, sigma, gaussian_weights),
                        (0.01 * data_range) ** 2, (0.03 * data_range) ** 2, ssim_sum, cs_sum,
                        threads)
     count = (rows - win_size + 1) * (cols - win_size + 1)
     return ssim_sum / count, cs_sum / count
+
+
+def _ssim_reference(x, threads):
+    """What the SSIM of ``x`` (as in :func:`_ssim_means`) with the default window takes from
+    ``x`` alone (its local means and variances), for the comparisons of one reference with
+    many images."""
+    channels, rows, cols = x.shape
+    moments = np.empty((channels * (rows - 10), 2, cols - 10))
+    _kernels.ssim_reference(x, _window(11, 1.5, True), moments, threads)
+    return moments
 
 
 def _downsample2(a, threads):
@@ -85,28 +97,36 @@ def _check_ms_ssim_size(shape, levels, crop):
                          f"{shape[0]} x {shape[1]}")
 
 
-def _ssim_and_ms_ssim(x, y, data_range, weights, threads, x_scales=None):
+def _ssim_and_ms_ssim(x, y, data_range, weights, threads, x_cache=None):
     """(SSIM, MS-SSIM) of planar kernel-typed arrays with the default window.
 
     The SSIM is MS-SSIM's first scale, computed once; ``weights`` None: the
-    MS-SSIM is not computed (None). ``x_scales``: a list that holds (or receives) the
-    downsampled scales of ``x`` after the first, for another call with the same ``x``.
+    MS-SSIM is not computed (None). ``x_cache``: a list that holds (or receives), for
+    each scale j, ``x`` at that scale and its :func:`_ssim_reference`, for the other calls
+    with the same ``x`` (the same values, computed once).
     """
-    s, cs = _ssim_means(x, y, data_range, 11, 1.5, True, threads)
-    ssim_value = float(s.mean())
-    if weights is None:
-        return ssim_value, None
-    w = np.asarray(weights, dtype=np.float64)
-    factors = np.empty((w.size, x.shape[0]))                 # (scales, channels)
-    if x_scales is None:
-        x_scales = []
-    for j in range(w.size):                                 # 5 scales, not pixels
+    scales = 1 if weights is None else len(weights)
+    factors = np.empty((scales, x.shape[0]))                 # (scales, channels)
+    xj = x
+    for j in range(scales):                                 # 5 scales, not pixels
         if j:
-            if len(x_scales) < j:
-                x_scales.append(_downsample2(x, threads))
-            x, y = x_scales[j - 1], _downsample2(y, threads)
-            s, cs = _ssim_means(x, y, data_range, 11, 1.5, True, threads)
-        factors[j] = s if j == w.size - 1 else cs
+            y = _downsample2(y, threads)
+        moments = None
+        if x_cache is not None:
+            if len(x_cache) <= j:
+                xj = x_cache[j - 1][0] if j else x
+                xj = _downsample2(xj, threads) if j else xj
+                x_cache.append((xj, _ssim_reference(xj, threads)))
+            xj, moments = x_cache[j]
+        elif j:
+            xj = _downsample2(xj, threads)
+        s, cs = _ssim_means(xj, y, data_range, 11, 1.5, True, threads, moments)
+        if j == 0:
+            ssim_value = float(s.mean())
+            if weights is None:
+                return ssim_value, None
+        factors[j] = s if j == scales - 1 else cs
+    w = np.asarray(weights, dtype=np.float64)
     per_channel = np.prod(np.maximum(factors, 0.0) ** w[:, np.newaxis], axis=0)
     return ssim_value, float(per_channel.mean())
 

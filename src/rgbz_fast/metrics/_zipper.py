@@ -48,15 +48,29 @@ def _delta_e(lab1, lab2):
     return np.sqrt(np.sum(d * d, axis=-1))
 
 
-def _zipper_percent(ref, tst, full_scale, delta, threads):
+def _zipper_percent(ref, tst, full_scale, delta, threads, memo=None):
     """Percentage of interior pixels with |psi| > delta (eqs. 30-31), one fused C pass.
 
-    ``full_scale``: the sRGB code value of white, or None for CIELAB images.
+    ``full_scale``: the sRGB code value of white, or None for CIELAB images. ``memo``: a
+    dict kept for the calls with the same ``ref`` (one reference, many test images), which
+    holds the reference's nearest neighbours; the same percentage.
     """
-    a, b = _kernel_pair(ref, tst)
-    count = _kernels.zipper_count(a, b, 0.0 if full_scale is None else float(full_scale),
-                                  float(delta), threads)
-    return float(100.0 * count / ((a.shape[0] - 2) * (a.shape[1] - 2)))
+    scale = 0.0 if full_scale is None else float(full_scale)
+    if memo is None:
+        a, b = _kernel_pair(ref, tst)
+        count = _kernels.zipper_count(a, b, scale, float(delta), threads)
+    else:
+        dt = _kernel_dtype(ref.dtype, tst.dtype)
+        key = ("zipper", dt, scale)
+        if key not in memo:
+            a = np.ascontiguousarray(ref, dtype=dt)
+            best = np.empty((a.shape[0] - 2, a.shape[1] - 2))
+            nearest = np.empty(best.shape, dtype=np.uint8)
+            _kernels.zipper_reference(a, scale, best, nearest, threads)
+            memo[key] = best, nearest
+        b = np.ascontiguousarray(tst, dtype=dt)
+        count = _kernels.zipper_count_reference(b, scale, *memo[key], float(delta), threads)
+    return float(100.0 * count / ((ref.shape[0] - 2) * (ref.shape[1] - 2)))
 
 
 def delta_e_map(reference, test, *, input="srgb8", workers=None):

@@ -245,30 +245,24 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     reach_r, reach_c = layout.grid.reach(radius)
     inv2h2 = 1.0 / (2.0 * p.range_scale ** 2)
     inv2hc2 = 1.0 / (2.0 * p.colour_scale ** 2)
-    R, C = layout.R, layout.C
-
-    def run_pass(data, nin, guide, axis, out64=False):
-        dr, di, dv = data
-        gr, gi, gv = guide
-        px, reach = (layout.cols, reach_c) if axis == 1 else (layout.rows, reach_r)
-        ov, on = np.empty(N, np.float32), np.empty(N, np.float32)
-        if out64:
-            o64 = (np.empty((F, N)), np.empty((F, N)))
-            _kernels.tofg_pass(dr, di, dv, nin, gr, gi, gv, col, use, R, C, axis, px, reach,
-                               radius, inv2h2, inv2hc2, None, None, o64[0], o64[1], ov, on,
-                               nthreads)
-            return (o64[0], o64[1], ov), on
-        o = (np.empty((F, N), np.float32), np.empty((F, N), np.float32))
-        _kernels.tofg_pass(dr, di, dv, nin, gr, gi, gv, col, use, R, C, axis, px, reach, radius,
-                           inv2h2, inv2hc2, o[0], o[1], None, None, ov, on, nthreads)
-        return (o[0], o[1], ov), on
-
-    raw = (zr, zi, v)
-    rows1, n1 = run_pass(raw, None, raw, 1)
-    guide1, _ = run_pass(rows1, n1, rows1, 0)
-    rows2, n2 = run_pass(raw, None, guide1, 1)
-    (mr, mi, var), neff = run_pass(rows2, n2, guide1, 0, out64=True)
-    depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
+    # the four passes (rows, columns, rows guided by the columns' output, columns) in one C
+    # call, strip by strip: no intermediate plane of the whole frame; without a calibration
+    # (whose cyclic-error correction acts on the phases) each strip's means are unwrapped there
+    var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
+    args = (zr, zi, v, col, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
+            inv2hc2)
+    if cal is None:
+        depth, residual, wraps = np.empty(N), np.empty(N), np.empty(N, np.int32)
+        phase, amp = np.empty((F, N)), np.empty((F, N))
+        if not _kernels.tofg_denoise(*args, None, None, var, neff, nthreads,
+                                     np.ascontiguousarray(f, np.float64),
+                                     np.ascontiguousarray(w, np.float64), max_range, depth,
+                                     residual, wraps, phase, amp):
+            raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
+    else:
+        mr, mi = np.empty((F, N)), np.empty((F, N))
+        _kernels.tofg_denoise(*args, mr, mi, var, neff, nthreads)
+        depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
     snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
     flags = np.empty(N, np.uint8)
     sigma_scale, refl_coef = _radiometry(tof, f)
