@@ -1,6 +1,7 @@
 """The targets of method z_guided on the RGB-NIR pairs, every number out of sample (k-fold).
 
-    python tools/z_guided_targets.py [RGBNIR_DIR] [--patterns mask1,mask2] [--folds 5] [--csv OUT]
+    python tools/z_guided_targets.py [RGBNIR_DIR] [--patterns mask1,mask2] [--folds 5]
+        [--inner 4] [--select cv|none] [--csv OUT]
 
 The protocol of the targets: for every pair NNNN_rgb.png + NNNN_nir.png of the folder
 (default ../shared/data/rgbnir), ``Scene.from_rgb(rgb8, depth=np.full(shape, 2.0),
@@ -10,9 +11,13 @@ method)`` at the default precision, CFA PSNR at the Z sites against ``frame.refe
 over the images.
 
 Pair i (names sorted) is in fold i mod k: 5 folds of 4 pairs for the 20 pairs. Each fold's
-z_guided filters are fitted (``train_z_guided``: the shipped learned filters as the base, the
-noise-free and the noisy frames of the other pairs; one fit serves both, as the shipped one must)
-and score the fold's own pairs. Printed, per pattern and noise setting:
+z_guided filters are fitted by the shipped procedure (``train_z_guided``: the shipped learned
+filters as the base, the noise-free and the noisy frames of the other pairs, one fit for both
+as the shipped one must; its ridge, prior and colour prior chosen with ``select="cv"`` by an
+``--inner``-fold cross-validation over those other pairs alone, the two frames of a pair in
+one inner fold: ``fit_folds`` on their equations, pair i of the fit in inner fold i mod 4) and
+score the fold's own pairs, which no step of the fit saw. ``--select none``: the fixed settings
+instead (ridge 1e-3, prior 50, colour prior 4). Printed, per pattern and noise setting:
 
 * the mean CFA PSNR of learned and z_guided and the mean paired gain with its 95 % t-interval
   (of the per-image differences); the same for z_guided fitted without the guide (its colour
@@ -23,8 +28,9 @@ and score the fold's own pairs. Printed, per pattern and noise setting:
   level of the learned hash (flat, textured, strong structure), over learned and over the fit
   without the guide.
 
-The pairs are fitting data for the shipped filters: the numbers here are the k-fold estimate.
-About 30 minutes on 2 busy cores.
+The settings each fold's inner cross-validation chose are printed too. The pairs are fitting
+data for the shipped filters: the numbers here are the k-fold estimate. About 30 minutes on
+2 busy cores.
 """
 
 import argparse
@@ -40,7 +46,7 @@ from rgbz_fast.io import read_image
 from rgbz_fast.metrics import cfa_psnr
 from rgbz_fast.reconstruction import default_filters
 from rgbz_fast.reconstruction._learned_hash import gather_windows, hash_buckets, hash_features
-from rgbz_fast.reconstruction._z_guided_fit import fit_stats, frame_stats
+from rgbz_fast.reconstruction._z_guided_fit import fit_folds, frame_stats, sum_stats
 from rgbz_fast.simulation import Scene, simulate
 
 LAM = 0.01
@@ -86,26 +92,35 @@ def t_interval(d):
     return d.mean(), d.mean() - h, d.mean() + h
 
 
-def run_pattern(folder, names, pattern, n_folds, rows):
+def fold_fits(equations, fit_names, base, n_inner, select):
+    """The z_guided fit of one outer fold and the same without the guide, from the equations
+    of its training pairs ``fit_names`` alone (``equations``: per pair, its two frames'
+    summed): train_z_guided's procedure, pair i of the fit in inner fold i mod ``n_inner``."""
+    inner = [sum_stats(equations[n] for n in fit_names[i::n_inner]) for i in range(n_inner)]
+    return {"z_guided": fit_folds(inner, base, LAM, select=select),
+            "no_guide": fit_folds(inner, base, LAM, select=select, guide=False)}
+
+
+def run_pattern(folder, names, pattern, n_folds, n_inner, select, rows, chosen):
     base = default_filters(pattern)
     all_frames = {}
-    equations = {}
+    equations = {}                  # per pair: the sum of its two frames' (one group)
     for n in names:
         all_frames[n] = frames(folder, n, pattern)
-        equations[n] = [frame_stats(f, base, LAM) for f in all_frames[n]]
+        equations[n] = sum_stats(frame_stats(f, base, LAM) for f in all_frames[n])
         print(f"  {pattern} {n}: equations", file=sys.stderr, flush=True)
     folds = [names[i::n_folds] for i in range(n_folds)]
     score = {}                      # (noise, method, image) -> dB
     err = {}                        # (noise, method) -> [squared errors], strength levels
     for fi, held in enumerate(folds):
         fit_names = [n for n in names if n not in held]
-        total = None
-        for n in fit_names:
-            for s in equations[n]:
-                total = s if total is None else [[a + b for a, b in zip(x, y)]
-                                                 for x, y in zip(total, s)]
-        fits = {"z_guided": fit_stats(total, base, LAM),
-                "no_guide": fit_stats(total, base, LAM, guide=False)}
+        fits = fold_fits(equations, fit_names, base, n_inner, select)
+        for m, f in fits.items():
+            chosen.append((pattern, fi, m, f.meta["ridge"], f.meta["prior"],
+                           f.meta["colour_prior"]))
+            print(f"  {pattern} fold {fi + 1} {m}: ridge {f.meta['ridge']:g}, prior "
+                  f"{f.meta['prior']:g}, colour prior {f.meta['colour_prior']:g}",
+                  file=sys.stderr, flush=True)
         for n in held:
             for noise, frame in enumerate(all_frames[n]):
                 outs = {"learned": reconstruct(frame, "learned")}
@@ -171,17 +186,35 @@ def main(argv=None):
                                 / "rgbnir"))
     ap.add_argument("--patterns", default="mask1,mask2")
     ap.add_argument("--folds", type=int, default=5)
+    ap.add_argument("--inner", type=int, default=4,
+                    help="folds of the inner cross-validation of --select cv (default 4)")
+    ap.add_argument("--select", choices=("cv", "none"), default="cv",
+                    help="the fit's ridge, prior and colour prior: by inner cross-validation "
+                         "(the shipped procedure) or the fixed settings (default cv)")
     ap.add_argument("--csv", help="write the per-image scores to this CSV file")
     a = ap.parse_args(argv)
     names = pairs(a.folder)
     if not 2 <= a.folds <= len(names):
         sys.exit(f"--folds: expected 2..{len(names)}, got {a.folds}")
-    rows = []
+    if not 2 <= a.inner <= len(names) - -(-len(names) // a.folds):
+        sys.exit(f"--inner: expected 2..{len(names) - -(-len(names) // a.folds)}, got {a.inner}")
+    select = None if a.select == "none" else "cv"
+    rows, chosen = [], []
     print(f"z_guided against learned, {len(names)} RGB-NIR pairs of {a.folder}, "
-          f"{a.folds}-fold (every score out of sample)")
+          f"{a.folds}-fold (every score out of sample), fit settings "
+          + (f"by {a.inner}-fold inner cross-validation on each fold's training pairs"
+             if select else "fixed (ridge 1e-3, prior 50, colour prior 4)"))
     for pattern in a.patterns.split(","):
-        score, err = run_pattern(a.folder, names, pattern, a.folds, rows)
+        score, err = run_pattern(a.folder, names, pattern, a.folds, a.inner, select, rows,
+                                 chosen)
         report(pattern, names, score, err)
+    if select:
+        print("\n### The settings each fold's inner cross-validation chose\n")
+        print("| pattern | fold | fit | ridge | prior | colour prior |")
+        print("|---|---|---|---|---|---|")
+        for pattern, fi, m, r, p, cp in chosen:
+            lab = "z_guided" if m == "z_guided" else "without the guide"
+            print(f"| {pattern} | {fi + 1} | {lab} | {r:g} | {p:g} | {cp:g} |")
     if a.csv:
         with open(a.csv, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(rows[0]))

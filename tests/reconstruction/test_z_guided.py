@@ -38,12 +38,14 @@ def _scene(shape=(48, 64), seed=0, ir=True):
 
 @pytest.fixture(scope="module")
 def fitted():
-    """z_guided and learned filters fitted on three noise-free frames per mask."""
+    """z_guided and learned filters fitted on three noise-free frames per mask (the fixed
+    settings: test_z_guided_select.py tests their choice)."""
     out = {}
     for p in ("mask1", "mask2"):
         frames = [simulate(_scene(seed=s)[0], p, noise=False) for s in (1, 2, 3)]
         base = train(frames, n_strength=2, n_coherence=2)
-        out[p] = (base, train_z_guided(frames, base=base, meta={"training_set": "test"}))
+        out[p] = (base, train_z_guided(frames, base=base, select=None,
+                                       meta={"training_set": "test"}))
     return out
 
 
@@ -253,11 +255,11 @@ def test_the_fit_is_the_solution_of_the_summed_equations():
 
     frames = [simulate(_scene(seed=s)[0], "mask2", noise=bool(s % 2)) for s in (4, 5)]
     base = train(frames, n_strength=1, n_coherence=2)
-    fit = train_z_guided(frames, base=base, lam=0.02)
+    fit = train_z_guided(frames, base=base, lam=0.02, select=None)
     s0, s1 = (frame_stats(f, base, 0.02) for f in frames)
     total = [[a + b for a, b in zip(x, y)] for x, y in zip(s0, s1)]
     assert fit_stats(total, base, 0.02) == fit
-    alone = train_z_guided(frames, base=base, lam=0.02, guide=False)
+    alone = train_z_guided(frames, base=base, lam=0.02, guide=False, select=None)
     assert not alone.guide_weights.any() and alone.meta["guide"] == 0
     assert alone.weights.shape == (4, 2 * base.n_buckets, base.weights.shape[2])
     assert not np.array_equal(alone.weights[:, :base.n_buckets], base.weights)
@@ -274,6 +276,8 @@ def test_shipped_filters_build_on_the_shipped_learned_ones():
         assert "train --z-guided" in f.meta["command"] and f.meta["training_set"] == "rgbnir"
         assert f.meta["n_images"] == 40                     # 20 pairs, noise-free and noisy
         assert f.meta["base_digest"] == default_filters(p).digest, f.meta["command"]
+        # its settings chosen by the 4-fold cross-validation over the 20 pairs
+        assert (f.meta["select"], f.meta["cv_folds"], f.meta["cv_groups"]) == ("cv", 4, 20)
     # the other Bayer phases: the same filters mirrored or shifted, on the same base
     for p in ("mask1_rggb", "mask2_bggr"):
         f = default_z_filters(p)

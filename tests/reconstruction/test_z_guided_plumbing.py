@@ -126,14 +126,17 @@ def test_evaluate_refuses_what_z_guided_cannot_run(zf):
 
 def test_train_z_guided_routes(pairs):
     frames = [_frame(s, noise=n) for s in (1, 2) for n in (False, True)]
-    a = train(frames, z_guided=True, lam=0.02)
-    assert isinstance(a, ZGuidedFilters) and a == train_z_guided(frames, lam=0.02)
+    a = train(frames, z_guided=True, lam=0.02, select=None)
+    assert isinstance(a, ZGuidedFilters) and a == train_z_guided(frames, lam=0.02, select=None)
     with pytest.raises(ValueError, match="^radius: z_guided"):
         train(frames, z_guided=True, radius=2)
     with pytest.raises(TypeError, match="^lam: not an option"):
         train(frames, lam=0.02)
     f = train_filters(folder_dataset(pairs)[:2], "mask1", z_guided=True, seed=1)
     assert isinstance(f, ZGuidedFilters) and f.meta["n_images"] == 4
+    assert f.meta["cv_groups"] == 2                     # a pair's two frames: one group
+    with pytest.raises(TypeError, match="^groups: not an option of train_filters"):
+        train_filters(folder_dataset(pairs)[:2], "mask1", z_guided=True, groups=[0, 1, 2, 3])
     with pytest.raises(ValueError, match="^dataset: 'plain' has no registered NIR"):
         train_filters(pairs, "mask1", z_guided=True)
     with pytest.raises(ValueError, match="^noise: z_guided filters"):
@@ -147,7 +150,7 @@ def test_cli_train_z_guided(pairs, tmp_path, capsys):
         (folder / p.name).write_bytes(p.read_bytes())
     out = tmp_path / "z.npz"
     assert main(["train", "--z-guided", "--dataset", str(folder), "--pattern", "mask2",
-                 "--out", str(out), "--quiet"]) == 0
+                 "--out", str(out), "--quiet", "--select", "none"]) == 0
     f = ZGuidedFilters.load(out)
     assert f.pattern == rz.mask2() and f.meta["training_set"] == "pairs"
     assert "--z-guided" in f.meta["command"]

@@ -46,15 +46,26 @@ def add_parser(sub):
                    help="coherence levels of the hash")
     p.add_argument("--spread", type=c.positive_int, default=3,
                    help="channel-spread levels of the hash (1: none)")
-    p.add_argument("--ridge", type=c.positive_float, default=1e-3,
+    p.add_argument("--ridge", type=c.positive_float, default=None,
                    help="ridge regularisation, relative to the mean diagonal of the normal "
-                        "matrix")
-    p.add_argument("--prior", type=c.non_negative_float, default=50.0,
-                   help="weight, in training sites, of the common filter in each bucket's fit")
+                        "matrix (default: 1e-3; with --z-guided, set by --select)")
+    p.add_argument("--prior", type=c.non_negative_float, default=None,
+                   help="weight, in training sites, of the common filter in each bucket's fit "
+                        "(default: 50; with --z-guided, set by --select)")
     p.add_argument("--z-guided", action="store_true",
                    help="fit the filters of method z_guided (guided by the NIR amplitude of the "
                         "Z pixels) on RGB + NIR pairs; --radius, --hash-radius, --strength, "
                         "--coherence, --noise and --linearise do not apply")
+    p.add_argument("--colour-prior", type=c.positive_float, default=None,
+                   help="--z-guided: the prior of the colour correction, times --prior "
+                        "(default: set by --select)")
+    p.add_argument("--select", choices=("cv", "none"), default=None,
+                   help="--z-guided: how --ridge, --prior and --colour-prior are set when not "
+                        "given: cv, the best of a grid by k-fold cross-validation over the "
+                        "pairs (the shipped filters); none, the fixed settings ridge 1e-3, "
+                        "prior 50, colour prior 4 (default: cv)")
+    p.add_argument("--cv-folds", type=c.positive_int, default=None,
+                   help="--z-guided: folds of --select cv, >= 2 (default: 4)")
     c.add_seed(p, 1, "noise seed of every pair's noisy frame (--z-guided)")
     c.add_quiet(p, "no progress bar or summary line")
     c.add_limits(p)
@@ -65,6 +76,7 @@ def run(args):
     from ..evaluation import train_filters
     from ..io import folder_dataset
 
+    _check_z_options(args)
     c.output_file(args.out)
     for d in args.dataset:
         if not (c._exists(d, "--dataset") and d.is_dir()):
@@ -77,9 +89,12 @@ def run(args):
                     [(d, IMAGE_SUFFIXES | RAW_SUFFIXES) for d in args.dataset])
     name = args.name or "+".join(d.resolve().name for d in args.dataset)
     if args.z_guided:
-        filters = train_filters(sources, args.pattern, name=name, progress=not args.quiet,
-                                z_guided=True, seed=args.seed, ridge=args.ridge,
-                                prior=args.prior, meta={"command": c.command_line(args)})
+        filters = train_filters(
+            sources, args.pattern, name=name, progress=not args.quiet, z_guided=True,
+            seed=args.seed, ridge=args.ridge, prior=args.prior, colour_prior=args.colour_prior,
+            select=None if args.select == "none" else "cv",
+            cv_folds=4 if args.cv_folds is None else args.cv_folds,
+            meta={"command": c.command_line(args)})
         filters.save(args.out)
         if not args.quiet:
             print(f"{filters} -> {args.out} ({filters.meta['n_images']} frames, "
@@ -97,3 +112,17 @@ def run(args):
         print(f"{filters} -> {args.out} ({m['n_images']} images, {m['n_sites']} sites, "
               f"{m['empty_buckets']} empty buckets)")
     return 0
+
+
+def _check_z_options(args):
+    """The options of --z-guided alone: refused without it, and --cv-folds with --select cv."""
+    if not args.z_guided:
+        for flag, value in (("--colour-prior", args.colour_prior), ("--select", args.select),
+                            ("--cv-folds", args.cv_folds)):
+            if value is not None:
+                raise c.CliError(f"{flag}: applies with --z-guided only")
+    if args.cv_folds is not None:
+        if args.select == "none":
+            raise c.CliError("--cv-folds: applies to --select cv only")
+        if args.cv_folds < 2:
+            raise c.CliError(f"--cv-folds: expected an integer >= 2, got {args.cv_folds}")

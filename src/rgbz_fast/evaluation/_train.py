@@ -74,13 +74,14 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
         ir_reflectance=nir), pattern, seed=seed, noise=False)`` and
         ``noise=True`` (default sensors, 11 bits), so that one fit serves
         noise-free and noisy frames; ``noise``, ``linearise`` and
-        ``bit_depth`` other than 11 do not apply.
+        ``bit_depth`` other than 11 do not apply. The two frames of a pair
+        are one group of the fit's cross-validation (``groups``).
     **options
         Passed to :func:`~rgbz_fast.reconstruction.train` (``radius``,
         ``hash_radius``, ``n_strength``, ``n_coherence``, ``n_spread``,
         ``ridge``, ``prior``; with ``z_guided`` those of ``train_z_guided``:
-        ``base``, ``ridge``, ``prior``, ``colour_prior``, ``lam``,
-        ``noise_thresholds``, ``guide``).
+        ``base``, ``ridge``, ``prior``, ``colour_prior``, ``select``,
+        ``cv_folds``, ``cv_grid``, ``lam``, ``noise_thresholds``, ``guide``).
 
     Returns
     -------
@@ -185,7 +186,11 @@ def _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, 
                 yield simulate(scene, pattern, seed=seed, noise=n)
         fitting.enter_context(ticking("train: fitting the filters", progress))  # pairs read
 
+    if "groups" in options:
+        raise TypeError("groups: not an option of train_filters; the two frames of each pair "
+                        "are one group")
     meta = {"training_set": name, "seed": seed, "protocol": "sensor model, noise-free + noisy",
             **options.pop("meta", {})}
+    groups = [i for i in range(len(dataset)) for _ in (False, True)]
     with fitting:
-        return train(frames(), z_guided=True, meta=meta, **options)
+        return train(frames(), z_guided=True, meta=meta, groups=groups, **options)

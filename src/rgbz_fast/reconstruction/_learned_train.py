@@ -19,7 +19,7 @@ _SPREAD_CAP = 1e6
 
 
 def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spread=3,
-          ridge=1e-3, prior=50.0, meta=None, z_guided=False, **z_options):
+          ridge=None, prior=None, meta=None, z_guided=False, **z_options):
     """Fit :class:`LearnedFilters` to frames whose true colour at the Z sites is known.
 
     Parameters
@@ -39,19 +39,21 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
         Levels of the strength, the coherence and the channel spread of the
         hash, 1..8 (thresholds at the quantiles of the training sites).
         Buckets: 8 x n_strength x n_coherence x n_spread.
-    ridge : float
+    ridge : float, optional
         Ridge term of every least-squares fit, relative to the mean diagonal
-        of its normal matrix (>= 0).
-    prior : float
+        of its normal matrix (>= 0; None: 1e-3).
+    prior : float, optional
         Weight of the phase-wide filter in each bucket's fit, in training
-        sites (>= 0): a bucket with few sites stays close to the filter fitted
-        on all of them (rare buckets merge into the common filter).
+        sites (>= 0; None: 50): a bucket with few sites stays close to the
+        filter fitted on all of them (rare buckets merge into the common
+        filter).
     meta : dict, optional
         Extra metadata kept with the filters (the training set's name...).
     z_guided : bool
         True: fit the filters of ``method="z_guided"`` instead
         (:func:`~rgbz_fast.reconstruction.train_z_guided`, with ``ridge``,
-        ``prior``, ``meta`` and its own options ``**z_options``; the taps and
+        ``prior``, ``meta`` and its own options ``**z_options``; None leaves
+        ``ridge`` and ``prior`` to its ``select``; the taps and
         hash are those of its ``base`` learned filters, so ``radius`` ...
         ``n_spread`` keep their defaults).
 
@@ -103,8 +105,8 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
     levels = [check_int(v, n, lo=1, hi=8) for v, n in ((n_strength, "n_strength"),
                                                       (n_coherence, "n_coherence"),
                                                       (n_spread, "n_spread"))]
-    ridge = check_number(ridge, "ridge", lo=0)
-    prior = check_number(prior, "prior", lo=0)
+    ridge = 1e-3 if ridge is None else check_number(ridge, "ridge", lo=0)
+    prior = 50.0 if prior is None else check_number(prior, "prior", lo=0)
     if isinstance(frames, Iterator):            # one-shot: kept for the second pass
         frames = list(frames)
     pattern, bit_depth, samples, n_frames = _first_pass(frames, radius, hash_radius)
