@@ -19,6 +19,7 @@ from ._sensors import ToFSensor
 from ._validate import (FRAME_DTYPES, as_array, as_list, check_bit_depth, check_dtype,
                         check_block, check_fill, check_finite, check_frequencies, check_image, check_int,
                         check_meta, check_sites, integer_bits)
+from ._validate import _check_range, _in_range_fast
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
 
@@ -197,17 +198,6 @@ def validate_frame(data, pattern, bit_depth, name):
     return data
 
 
-def _in_range_fast(data, top):
-    """True if a C-contiguous ``data`` lies within [0, top], by one contiguous reduction per
-    bound (SIMD, no buffering; an unsigned type needs no lower one). NaN makes NumPy's min
-    and max NaN and infinity is out of range, so True also says the data are finite. False
-    for a non-contiguous array, which the per-phase views of :func:`_check_range` read
-    instead."""
-    if not (data.size and data.flags.c_contiguous):
-        return False
-    return bool((data.dtype.kind == "u" or data.min() >= 0) and data.max() <= top)
-
-
 def frame_inputs(frame, pattern=None, bit_depth=None, name="frame"):
     """``(data, pattern, bit_depth)`` of a frame argument: a RawFrame, or an array plus pattern.
 
@@ -239,33 +229,6 @@ def frame_inputs(frame, pattern=None, bit_depth=None, name="frame"):
     pattern = get_pattern(pattern)
     bd = check_bit_depth(11 if bit_depth is None else bit_depth)
     return validate_frame(frame, pattern, bd, name), pattern, bd
-
-
-def _check_range(data, bit_depth, name, pattern=None):
-    """Values of the colour sites within [0, 2**bit_depth - 1], without frame-sized temporaries.
-
-    With a pattern, each non-Z phase of the tile is reduced on a strided view,
-    so a 50-megapixel frame costs no extra memory.
-    """
-    top = (1 << bit_depth) - 1
-    # one contiguous pass first; only a frame whose extremes are out of range -- perhaps
-    # only at Z sites -- needs the per-phase views below
-    if _in_range_fast(data, top):
-        return
-    if pattern is None:
-        views = [data]
-    else:
-        P, Q = pattern.period
-        views = [data[r::P, c::Q] for r in range(P) for c in range(Q)
-                 if pattern.tile[r, c] != 3 and r < data.shape[0] and c < data.shape[1]]
-    views = [v for v in views if v.size]
-    if not views:
-        return
-    lo = min(v.min() for v in views)
-    hi = max(v.max() for v in views)
-    if lo < 0 or hi > top:
-        raise ValueError(f"{name}: values span [{lo}, {hi}], beyond the {bit_depth}-bit "
-                         f"range [0, {top}]")
 
 
 def mosaic(rgb, pattern="mask1", bit_depth=11, *, dtype=np.uint16, input_bits=None):

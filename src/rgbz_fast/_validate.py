@@ -559,3 +559,41 @@ def parse_shape(text, name="shape"):
         raise ValueError(f"{name}: expected ROWSxCOLS such as 1080x1920 (rows first), "
                          f"got {text!r}")
     return int(parts[0]), int(parts[1])
+
+
+def _in_range_fast(data, top):
+    """True if a C-contiguous ``data`` lies within [0, top], by one contiguous reduction per
+    bound (SIMD, no buffering; an unsigned type needs no lower one). NaN makes NumPy's min
+    and max NaN and infinity is out of range, so True also says the data are finite. False
+    for a non-contiguous array, which the per-phase views of :func:`_check_range` read
+    instead."""
+    if not (data.size and data.flags.c_contiguous):
+        return False
+    return bool((data.dtype.kind == "u" or data.min() >= 0) and data.max() <= top)
+
+
+def _check_range(data, bit_depth, name, pattern=None):
+    """Values of the colour sites within [0, 2**bit_depth - 1], without frame-sized temporaries.
+
+    With a pattern, each non-Z phase of the tile is reduced on a strided view,
+    so a 50-megapixel frame costs no extra memory.
+    """
+    top = (1 << bit_depth) - 1
+    # one contiguous pass first; only a frame whose extremes are out of range -- perhaps
+    # only at Z sites -- needs the per-phase views below
+    if _in_range_fast(data, top):
+        return
+    if pattern is None:
+        views = [data]
+    else:
+        P, Q = pattern.period
+        views = [data[r::P, c::Q] for r in range(P) for c in range(Q)
+                 if pattern.tile[r, c] != 3 and r < data.shape[0] and c < data.shape[1]]
+    views = [v for v in views if v.size]
+    if not views:
+        return
+    lo = min(v.min() for v in views)
+    hi = max(v.max() for v in views)
+    if lo < 0 or hi > top:
+        raise ValueError(f"{name}: values span [{lo}, {hi}], beyond the {bit_depth}-bit "
+                         f"range [0, {top}]")

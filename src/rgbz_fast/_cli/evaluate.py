@@ -77,7 +77,7 @@ def _check_reports(args, config, dataset, out):
     """The files the reports may write, checked against the inputs before anything is run:
     no report over an image, --filters or --raw-options file, and no figure in the dataset's
     folder, where the next run would evaluate it as an image."""
-    from ..evaluation._run import _safe
+    from ..evaluation._cache import _safe
     from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
 
     names = ["results.csv", "results.json", "summary.md"]

@@ -13,7 +13,8 @@ from ..io import atomic_write
 from ..reconstruction import reconstruct
 from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, EvalConfig
 from ._results import Results
-from ._run import _safe, image_frames
+from ._cache import _safe
+from ._run import image_frames
 
 __all__ = ["write_reports", "bar_chart", "paired_chart", "crop_figure", "auto_crop"]
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import hashlib
-import json
 import os
 import re
 import signal
@@ -19,12 +18,12 @@ from .._frame import RawFrame, _Adopt, mosaic
 from .._patterns import get_pattern
 from .._validate import (check_flag, check_image, check_path, check_processes, check_workers,
                          integer_bits, merge_params)
-from ..io import (ImageSource, ParameterError, atomic_write, folder_dataset, read_file,
-                  sample_dataset, to_rgbz)
+from ..io import ImageSource, ParameterError, folder_dataset, sample_dataset, to_rgbz
 from ..io._bayer import place_on_phase
 from ..reconstruction import NEEDS_TOF, reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ..simulation._scene import srgb_decode
+from ._cache import _cache_read, _cache_write, cache_folder
 from ._config import EvalConfig
 from ._results import Results
 
@@ -228,93 +227,6 @@ def _row(image, pattern, method, metric, value, ir_estimated=False):
     if method in NEEDS_TOF:
         row["ir_estimated"] = bool(ir_estimated)
     return row
-
-
-def _safe(name):
-    return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name)
-
-
-def cache_folder(name):
-    """The cache folder of an image name: readable, and distinct for distinct names.
-
-    The name's characters outside ``[A-Za-z0-9._-]`` become ``_``, and a hash
-    of the exact name is appended, so ``"a b"`` and ``"a_b"`` get two folders.
-    """
-    return f"{_safe(name)[:60]}-{hashlib.sha1(name.encode()).hexdigest()[:10]}"
-
-
-#: the largest cache entry read (one small JSON object of at most five numbers)
-_CACHE_MAX_BYTES = 1 << 16
-#: the values each metric can take: PSNRs are finite or +inf (equal images), the others
-#: lie in their ranges; anything else in a cache entry was not written by the evaluation
-_METRIC_RANGES = {"cfa_psnr": (-np.inf, np.inf), "cpsnr": (-np.inf, np.inf),
-                  "ssim": (-1.0, 1.0), "ms_ssim": (0.0, 1.0), "zipper": (0.0, 100.0)}
-
-
-def _json_number(text):
-    """A JSON number of a cache entry: a literal too large for a double (1e999) is no value
-    the evaluation wrote (it writes inf as Infinity)."""
-    v = float(text)
-    if not np.isfinite(v):
-        raise ValueError(f"the number {text} is beyond the doubles")
-    return v
-
-
-def _json_constant(name):
-    if name != "Infinity":                    # NaN and -Infinity are no metric's value
-        raise ValueError(f"{name} is no metric value")
-    return float("inf")
-
-
-def _cache_check(key, body):
-    """The checksum that binds an entry's values to its key: an entry edited by hand, or
-    moved under another key, fails it and is computed again."""
-    return hashlib.sha256(f"{key}\n{body}".encode()).hexdigest()
-
-
-def _cache_read(cdir, key):
-    """The cached values of one (pattern, method), or None to compute them again.
-
-    Read through the guarded reader (a regular file of at most 64 kB, so that a FIFO or a
-    device in the cache never blocks) and validated: ``{"values": ..., "check": ...}`` whose
-    checksum matches (:func:`_cache_check`), the values a JSON object of known metrics, each
-    a number in its range (a PSNR may be +inf). A damaged or tampered entry (NaN, 1e999,
-    text, a value out of range, values edited without their checksum) is a miss, recomputed
-    and written again.
-    """
-    try:
-        data = read_file(cdir / f"{key}.json", "cache", max_bytes=_CACHE_MAX_BYTES)
-        entry = json.loads(data.decode("utf-8"), parse_float=_json_number,
-                           parse_int=_json_number, parse_constant=_json_constant)
-        values = entry["values"]
-        body = json.dumps(values, sort_keys=True)
-        if entry.get("check") != _cache_check(key, body) or len(entry) != 2:
-            return None
-    except (OSError, ValueError, RecursionError, TypeError, KeyError, AttributeError):
-        return None                                      # UnicodeDecodeError: a ValueError
-    if not isinstance(values, dict):
-        return None
-    for k, v in values.items():
-        lo, hi = _METRIC_RANGES.get(k, (None, None))
-        if lo is None or not isinstance(v, float) or not lo <= v <= hi \
-                or (v == np.inf and k not in ("cfa_psnr", "cpsnr")):
-            return None
-    return values
-
-
-def _cache_write(cdir, key, values):
-    """Write an entry; a cache that cannot take it (a folder or a file of no write
-    permission under its name) costs a warning, never the result."""
-    body = json.dumps(values, sort_keys=True)
-    try:
-        cdir.mkdir(parents=True, exist_ok=True)
-        atomic_write(cdir / f"{key}.json", json.dumps(
-            {"check": _cache_check(key, body), "values": values}, sort_keys=True))
-    except (OSError, ValueError) as exc:
-        import warnings
-
-        warnings.warn(f"cache_dir: could not write {cdir / key}.json ({exc}); the result is "
-                      "kept, not cached", RuntimeWarning, stacklevel=2)
 
 
 def _pool_task(args, stop=None):
