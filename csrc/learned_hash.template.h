@@ -363,6 +363,24 @@ static void LRN_CAT(lrn_rows, IS, RS)(const REAL *cs, ptrdiff_t cols, int hr, in
 #define LRN_LANES ((int)(32 / sizeof(REAL)))
 typedef REAL LRN_CAT(lrn_rv, IS, RS) __attribute__((vector_size(32)));
 #endif
+#if LRN_VECTOR_EXT
+/* one site's accumulator over its window rows into *acc (lane l: window column h + l) */
+LRN_INLINE void LRN_CAT(lrn_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t x,
+                                              const REAL *restrict w, int rows,
+                                              LRN_CAT(lrn_rv, IS, RS) *acc)
+{
+    typedef LRN_CAT(lrn_rv, IS, RS) rv;
+    rv a = {0};
+    for (int dy = 0; dy < rows; dy++)
+        for (int h = 0; h < 8; h += LRN_LANES) {
+            rv xv, wv;
+            memcpy(&xv, rowp[dy] + x + h, sizeof xv);
+            memcpy(&wv, w + dy * 8 + h, sizeof wv);
+            a += wv * xv;
+        }
+    *acc = a;
+}
+#endif
 LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t x0,
                                                        int px, int n,
                                                        const REAL *restrict wd, const int R,
@@ -379,17 +397,9 @@ LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptr
            in lane order for the L sites at once: the accumulators transposed in registers */
         rv acc[L];
         for (int i = 0; i < L; i++) {
-            const REAL *restrict w = wd + (ptrdiff_t)bucket[j + i] * rows * 8;
-            const ptrdiff_t x = x0 + (ptrdiff_t)(j + i) * px - R;
-            rv a = {0};
-            for (int dy = 0; dy < rows; dy++)
-                for (int h = 0; h < 8; h += L) {
-                    rv xv, wv;
-                    memcpy(&xv, rowp[dy] + x + h, sizeof xv);
-                    memcpy(&wv, w + dy * 8 + h, sizeof wv);
-                    a += wv * xv;
-                }
-            acc[i] = a;
+            LRN_CAT(lrn_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)(j + i) * px - R,
+                                          wd + (ptrdiff_t)bucket[j + i] * rows * 8, rows,
+                                          &acc[i]);
         }
         rv sum;
         RGBZ_CAT(lrn_lane_sums, RS)(acc, &sum);
@@ -397,16 +407,9 @@ LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptr
     }
     /* the last sites of a partial block: the same sums, one site at a time */
     for (; j < n; j++) {
-        const REAL *restrict w = wd + (ptrdiff_t)bucket[j] * rows * 8;
-        const ptrdiff_t x = x0 + (ptrdiff_t)j * px - R;
-        rv a = {0};
-        for (int dy = 0; dy < rows; dy++)
-            for (int h = 0; h < 8; h += L) {
-                rv xv, wv;
-                memcpy(&xv, rowp[dy] + x + h, sizeof xv);
-                memcpy(&wv, w + dy * 8 + h, sizeof wv);
-                a += wv * xv;
-            }
+        rv a;
+        LRN_CAT(lrn_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)j * px - R,
+                                      wd + (ptrdiff_t)bucket[j] * rows * 8, rows, &a);
         REAL lanes[L];
         memcpy(lanes, &a, sizeof a);
         REAL sum = lanes[0];
