@@ -78,9 +78,6 @@ static int zg_check(const void *src, const void *dst, const rgbz_zguided_filters
     return RGBZ_OK;
 }
 
-/* the lanes of a cell's vector of terms and of a bucket's guide weights in the fast path's
-   layout (z_guided_cells.template.h) */
-#define ZG_CV 16
 /* the smallest normal of each precision: keeps share = U / (U + 9 nu) at 0 for U = nu = 0 */
 #define RGBZ_TINY_f32 FLT_MIN
 #define RGBZ_TINY_f64 DBL_MIN

@@ -77,7 +77,7 @@ static void ZG_CAT(zg_cg_row, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t
     RGBZ_CAT(zg_pad, RS)(c, gx);
 }
 
-/* the cell terms [gx][ZG_CV] of target t in tile row iy, computed if the thread does not
+/* the cell terms [gx][ZG_CVR] of target t in tile row iy, computed if the thread does not
    hold them yet (with the colour means of the rows around it and, once per tile row, the
    noise levels into st->level) */
 static const REAL *ZG_CAT(zg_cells_get, IS, RS)(ZG_CELLS *st, const rgbz_zguided_filters *f,
@@ -86,7 +86,7 @@ static const REAL *ZG_CAT(zg_cells_get, IS, RS)(ZG_CELLS *st, const rgbz_zguided
                                                 ptrdiff_t iy, int t)
 {
     const ptrdiff_t gx = f->gx, gy = f->gy, w = gx + 2;
-    REAL *out = st->cell + (ptrdiff_t)t * ZG_CV * gx;
+    REAL *out = st->cell + (ptrdiff_t)t * ZG_CVR * gx;
     if (st->cell_tag[t] == iy) return out;
     const REAL *N[3], *V[3], *C[3];
     for (int r = 0; r < 3; r++) {
@@ -141,10 +141,10 @@ RGBZ_INLINE void ZG_CAT(zg_prep, IS, RS)(const int n, const rgbz_zguided_filters
 {
     const ptrdiff_t gx = f->gx;
     for (int j = 0; j < n; j++) {
-        const REAL *restrict c = cell + (ix0 + j < gx ? ix0 + j : gx - 1) * ZG_CV;
+        const REAL *restrict c = cell + (ix0 + j < gx ? ix0 + j : gx - 1) * ZG_CVR;
         for (int m = 0; m < 9; m++) cj[m][j] = c[m];
-        cj[9][j] = c[10];
-        cj[10][j] = c[11];
+        cj[9][j] = c[8 + ZG_L];
+        cj[10][j] = c[9 + ZG_L];
     }
 }
 
@@ -209,8 +209,8 @@ static void ZG_CAT(zg_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t 
 
 #if LRN_VECTOR_EXT
 /* one site's accumulator (lrn_site_acc: its dense window against the weights w) plus its
-   guide term, lane by lane (z_guided_cells.template.h's layout): base gw[0..9] c[0..9] and
-   gw[10..11] c[10..11] */
+   guide term, lane by lane (z_guided_cells.template.h's layout): base times the products
+   of the first two rows of gw and c, plus those of the third */
 RGBZ_INLINE void ZG_CAT(zg_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t x,
                                              const REAL *restrict w, int rows,
                                              const REAL *restrict gw, const REAL *restrict c,
@@ -218,21 +218,17 @@ RGBZ_INLINE void ZG_CAT(zg_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t 
 {
     typedef LRN_CAT(lrn_rv, IS, RS) rv;
     enum { L = (int)(32 / sizeof(REAL)) };
-    rv a;
+    rv a, t = {0}, gv, cv;
     LRN_CAT(lrn_site_acc, IS, RS)(rowp, x, w, rows, &a);
-    for (int h = 0; h < 8; h += L) {
-        rv gv, cv;
+    for (int h = 0; h < 8 + L; h += L) {
         memcpy(&gv, gw + h, sizeof gv);
         memcpy(&cv, c + h, sizeof cv);
-        a += (gv * cv) * base;
+        t += gv * cv;
     }
-    /* lanes 8 .. 11: base (g_8 c_8 - g_9) + g_9 c_9 + g_10 c_10 */
-    rv gv, cv, mb;
-    memcpy(&gv, gw + 8, sizeof gv);
-    memcpy(&cv, c + 8, sizeof cv);
-    for (int l = 0; l < L; l++) mb[l] = l < 2 ? base : (REAL)1;
-    a += (gv * cv) * mb;
-    *acc = a;
+    a += t * base;
+    memcpy(&gv, gw + 8 + L, sizeof gv);
+    memcpy(&cv, c + 8 + L, sizeof cv);
+    *acc = a + gv * cv;
 }
 #endif
 
@@ -266,7 +262,7 @@ RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t 
             const ptrdiff_t ix = ix0 + j + i < gx ? ix0 + j + i : gx - 1;
             ZG_CAT(zg_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)(j + i) * px - R,
                                         wd + (ptrdiff_t)b[j + i] * rows * 8, rows,
-                                        gw + (ptrdiff_t)b[j + i] * ZG_CV, cell + ix * ZG_CV,
+                                        gw + (ptrdiff_t)b[j + i] * ZG_CVR, cell + ix * ZG_CVR,
                                         base[j + i], &acc[i]);
         }
         rv sum;
@@ -279,7 +275,7 @@ RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t 
         rv a;
         ZG_CAT(zg_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)j * px - R,
                                     wd + (ptrdiff_t)b[j] * rows * 8, rows,
-                                    gw + (ptrdiff_t)b[j] * ZG_CV, cell + ix * ZG_CV, base[j],
+                                    gw + (ptrdiff_t)b[j] * ZG_CVR, cell + ix * ZG_CVR, base[j],
                                     &a);
         REAL lanes[L];
         memcpy(lanes, &a, sizeof a);
@@ -297,6 +293,30 @@ RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t 
     RGBZ_IVDEP for (int j = 0; j < n; j++) bs[j] = base[j] * (REAL)f->n_base[k];
     ZG_CAT(zg_guide, IS, RS)(n, f, k, b, cj, bs, res);
 #endif
+}
+
+/* base[j]: the mean of the baseline taps of the n sites x0 + j PX of phase k (the REAL rows
+   realp[dy + R]), summed in the order of the phase's list (PX a constant where it is
+   inlined, so that the strided loads vectorise) */
+RGBZ_INLINE void ZG_CAT(zg_base, IS, RS)(const REAL *const *realp, ptrdiff_t x0, const int PX,
+                                         const int n, const rgbz_zguided_filters *f, int k,
+                                         REAL *restrict base)
+{
+    const rgbz_learned_filters *h = f->hash;
+    const int R = h->radius;
+    const int32_t *bi = f->base_idx + (ptrdiff_t)k * f->n_base_max;
+    const int32_t *tdy = h->tap_dy + (ptrdiff_t)k * h->n_taps_max;
+    const int32_t *tdx = h->tap_dx + (ptrdiff_t)k * h->n_taps_max;
+    {
+        const REAL *restrict r = realp[tdy[bi[0]] + R] + x0 + tdx[bi[0]];
+        RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = r[(ptrdiff_t)j * PX];
+    }
+    for (int i = 1; i < f->n_base[k]; i++) {
+        const REAL *restrict r = realp[tdy[bi[i]] + R] + x0 + tdx[bi[i]];
+        RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = OADD(base[j], r[(ptrdiff_t)j * PX]);
+    }
+    const REAL inv_base = (REAL)1 / (REAL)f->n_base[k];
+    RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = OMUL(base[j], inv_base);
 }
 
 /* the fast path: the values res[j] of the n sites x0, x0 + px, ... of phase k in row y (the
@@ -320,21 +340,13 @@ static void ZG_CAT(zg_fast_block, IS, RS)(const REAL *const *realp, ptrdiff_t y,
     LRN_CAT(lrn_fast_bucket, IS, RS)(y, x0, n, h, k, bx, m0, cols, bucket);
     ZG_CAT(zg_buckets, IS, RS)(n, f, bucket, ix0, level, b);
     /* the baseline: the mean of the baseline taps, summed in the order of the phase's list */
-    const int32_t *bi = f->base_idx + (ptrdiff_t)k * f->n_base_max;
-    const int32_t *tdy = h->tap_dy + (ptrdiff_t)k * h->n_taps_max;
-    const int32_t *tdx = h->tap_dx + (ptrdiff_t)k * h->n_taps_max;
-    {
-        const REAL *restrict r = realp[tdy[bi[0]] + R] + x0 + tdx[bi[0]];
-        RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = r[(ptrdiff_t)j * px];
+    switch (px) {   /* the periods of Mask1 and Mask2, unrolled */
+    case 2: ZG_CAT(zg_base, IS, RS)(realp, x0, 2, n, f, k, base); break;
+    case 4: ZG_CAT(zg_base, IS, RS)(realp, x0, 4, n, f, k, base); break;
+    default: ZG_CAT(zg_base, IS, RS)(realp, x0, px, n, f, k, base);
     }
-    for (int i = 1; i < f->n_base[k]; i++) {
-        const REAL *restrict r = realp[tdy[bi[i]] + R] + x0 + tdx[bi[i]];
-        RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = OADD(base[j], r[(ptrdiff_t)j * px]);
-    }
-    const REAL inv_base = (REAL)1 / (REAL)f->n_base[k];
-    RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = OMUL(base[j], inv_base);
     const REAL *wd = f->RWD + (ptrdiff_t)k * nb * (2 * R + 1) * 8;
-    gw += (ptrdiff_t)k * nb * ZG_CV;
+    gw += (ptrdiff_t)k * nb * ZG_CVR;
     switch (R) {      /* the window radii of the fast path, unrolled */
     case 1: ZG_CAT(zg_dot_rows, IS, RS)(realp, x0, px, n, wd, 1, b, gw, cell, ix0, f->gx, base,
                                         cj, f, k, res); break;

@@ -4,28 +4,32 @@
  * the guide weights in the layout of the fast path's dot product. Instantiated by
  * z_guided_entry.template.h (once per precision, with REAL and RS) before the frame loops.
  *
- * A cell's terms are one vector of ZG_CV REAL (the layout of the fast path): [0..7] the
- * terms c_0 .. c_7, [8..11] c_8, -1, c_9, c_10, the rest 0; the guide weights of a bucket
- * likewise [0..7] g_0 .. g_7, [8..11] g_8, g_9, g_9, g_10, the rest 0, so that the guide
- * term base (sum_{m<9} g_m c_m - g_9) + g_9 c_9 + g_10 c_10 is the sum over the lanes of
- * base g[0..9] c[0..9] and g[10..11] c[10..11].
+ * A cell's terms are three rows of REAL (the layout of the fast path, ZG_CVR values with
+ * L lanes of 32 bytes: 8 floats or 4 doubles): [0..7] the terms c_0 .. c_7, then L values
+ * c_8, -1, 0, ..., then L values c_9, c_10, 0, ...; the guide weights of a bucket likewise
+ * g_0 .. g_7 | g_8, g_9, 0, ... | g_9, g_10, 0, ..., so that the guide term
+ * base (sum_{m<9} g_m c_m - g_9) + g_9 c_9 + g_10 c_10 is the sum over the lanes of base
+ * times the products of the first two rows plus those of the third.
  */
 #if !defined(REAL) || !defined(RS)
 #error "z_guided_cells.template.h: #define REAL and RS (the precision) first"
 #endif
 
 #define ZGC RGBZ_CAT
+/* the lanes of a 32-byte vector, and the values of a cell's (a bucket's) three rows */
+#define ZG_L ((int)(32 / sizeof(REAL)))
+#define ZG_CVR (8 + 2 * ZG_L)
 
 /* what a thread keeps of the cell terms: for each target colour t, the colour means of
    three tile rows (a ring, slot = tile row mod 3, tagged) padded by one cell on each side
-   with the edge cell, and the terms of one tile row, [gx][ZG_CV] (tagged); the noise levels
+   with the edge cell, and the terms of one tile row, [gx][ZG_CVR] (tagged); the noise levels
    of one tile row (tagged); the amplitude and variance rows (a ring of three tile rows,
    padded likewise, tagged) and the nu row; the rows of the guide from the taps (double) */
 typedef struct {
     ptrdiff_t gx;
     REAL *cg;                   /* [3 targets][3 slots][gx + 2] */
     ptrdiff_t cg_tag[3][3];
-    REAL *cell;                 /* [3 targets][gx][ZG_CV] */
+    REAL *cell;                 /* [3 targets][gx][ZG_CVR] */
     ptrdiff_t cell_tag[3];
     int32_t *level;             /* [gx] */
     ptrdiff_t level_tag;
@@ -46,7 +50,7 @@ static int ZGC(zg_cells_init, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filte
     s->gx = gx;
     s->cg = malloc((size_t)9 * (size_t)(gx + 2) * sizeof *s->cg);
     /* the cell vectors' padding lanes stay 0 */
-    s->cell = calloc((size_t)3 * ZG_CV * (size_t)gx, sizeof *s->cell);
+    s->cell = calloc((size_t)3 * ZG_CVR * (size_t)gx, sizeof *s->cell);
     s->level = malloc((size_t)gx * sizeof *s->level);
     s->nv = malloc((size_t)7 * (size_t)(gx + 2) * sizeof *s->nv);
     s->gv = malloc((size_t)2 * (size_t)gx * sizeof *s->gv);
@@ -118,7 +122,7 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
     ZGC(zg_pad, RS)(v, gx);
 }
 
-/* the cell terms of tile row iy: out[ix][.] (ZG_CV lanes, the layout above) and the relative
+/* the cell terms of tile row iy: out[ix][.] (ZG_CVR values, the layout above) and the relative
    noise nu[ix], from the padded rows N[3], V[3], C[3] (rows iy - 1 .. iy + 1, clamped;
    index ix + 1 is cell ix), in REAL: every sum in the order of m (as cell_terms), the
    means and the quotients as products with reciprocals */
@@ -159,11 +163,11 @@ static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
         const REAL share = U / (U + (REAL)9 * nu + tiny);
         const REAL a = ud / (U + (REAL)9 * (lam + nu));
         const REAL au = a * u[4];
-        REAL *restrict o = out + ix * ZG_CV;
+        REAL *restrict o = out + ix * ZG_CVR;
         for (int m = 0; m < 9; m++) o[m] = share * u[m];
         o[9] = (REAL)-1;
-        o[10] = cb + au;
-        o[11] = au - (c_[4] - cb);
+        o[8 + ZG_L] = cb + au;
+        o[9 + ZG_L] = au - (c_[4] - cb);
         nu_out[ix] = nu;
     }
 }
@@ -179,21 +183,20 @@ static void ZGC(zg_level_row, RS)(const REAL *restrict nu, ptrdiff_t gx, const d
     }
 }
 
-/* the guide weights g[k][b][ZG_CV] of every phase and bucket in the layout above, from
+/* the guide weights g[k][b][ZG_CVR] of every phase and bucket in the layout above, from
    f->g_<RS> (malloc'ed; NULL: no memory) */
 static REAL *ZGC(zg_guide_weights, RS)(const rgbz_zguided_filters *f)
 {
     const ptrdiff_t n = (ptrdiff_t)f->hash->n_phases * f->n_levels * f->hash->n_buckets;
     const REAL *g = f->RGBZ_CAT(g, RS);
-    REAL *out = calloc((size_t)n * ZG_CV, sizeof *out);
+    REAL *out = calloc((size_t)n * ZG_CVR, sizeof *out);
     if (out)
         for (ptrdiff_t i = 0; i < n; i++) {
             const REAL *gi = g + i * RGBZ_ZG_FEATURES;
-            REAL *o = out + i * ZG_CV;
-            for (int m = 0; m < 9; m++) o[m] = gi[m];
-            o[9] = gi[9];
-            o[10] = gi[9];
-            o[11] = gi[10];
+            REAL *o = out + i * ZG_CVR;
+            for (int m = 0; m < 10; m++) o[m] = gi[m];
+            o[8 + ZG_L] = gi[9];
+            o[9 + ZG_L] = gi[10];
         }
     return out;
 }
