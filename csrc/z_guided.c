@@ -28,7 +28,7 @@ static int zg_check(const void *src, const void *dst, const rgbz_zguided_filters
     if (!src || !dst || !phase_map || !f || !f->hash || f->n_levels < 1 || f->gy < 1 ||
         f->gx < 1 || !f->chan || !f->targets ||
         (f->grid ? !f->var
-                 : (!f->taps || !f->ratio || f->taps_F < 1 || f->taps_F > RGBZ_TOF_MAX_FREQS ||
+                 : (!f->taps || !f->ratio || !f->site_rows || !f->site_cols || f->taps_F < 1 || f->taps_F > RGBZ_TOF_MAX_FREQS ||
                     f->gyc < 1 || f->gxc < 1 || f->gyc > f->gy || f->gxc > f->gx ||
                     (f->taps_type != RGBZ_T_U8 && f->taps_type != RGBZ_T_U16 &&
                      f->taps_type != RGBZ_T_F32 && f->taps_type != RGBZ_T_F64))) ||

@@ -52,8 +52,11 @@ typedef struct {
        rgbz_zguided_guide_row does: from the ToF taps (taps_F, 4, gyc * gxc) of element type
        taps_type (an rgbz_type) of the gyc x gxc complete Z pixels in row-major order, and the
        medians ratio (taps_F values: rgbz_zguided_ratios); the cells past them take the last
-       complete row and column */
+       complete row and column. site_rows, site_cols: the sites of the taps; the kernel checks
+       that they are those Z pixels in row-major order, else returns RGBZ_ZG_SITES (dst then
+       holds nothing meaningful) */
     const void *taps;
+    const int64_t *site_rows, *site_cols;
     int taps_type;
     ptrdiff_t taps_F, gyc, gxc;
     const double *ratio;
@@ -106,8 +109,10 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                        double *grid, double *var, int workers);
 
 /*
- * The two parts of rgbz_zguided_guide: rgbz_zguided_ratios checks the sites (RGBZ_ZG_SITES, as
- * rgbz_zguided_guide) and gives the medians ratio[f] (F values);
+ * The two parts of rgbz_zguided_guide: rgbz_zguided_ratios checks the sites when check is
+ * not 0 (RGBZ_ZG_SITES, as rgbz_zguided_guide; with check 0 the sites are not read and the
+ * caller checks them: the kernel's guide from the taps) and gives the medians ratio[f] (F
+ * values);
  * rgbz_zguided_guide_row gives, from them, the grid and var values of the gxc sites from lo
  * on (lo a multiple of gxc: one row of the grid) into grid[0 .. gxc - 1], var[0 ..], the
  * values of rgbz_zguided_guide bit for bit.
@@ -115,7 +120,7 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
 int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                         const int64_t *site_rows, const int64_t *site_cols, int py, int px,
                         int zr, int zc, ptrdiff_t gyc, ptrdiff_t gxc, double *ratio,
-                        int workers);
+                        int check, int workers);
 void rgbz_zguided_guide_row(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                             ptrdiff_t lo, ptrdiff_t gxc, const double *ratio, double *grid,
                             double *var);

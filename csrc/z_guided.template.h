@@ -101,7 +101,7 @@ static const REAL *ZG_CAT(zg_cells_get, IS, RS)(ZG_CELLS *st, const rgbz_zguided
         C[r] = c;
         REAL *n = st->nv + (ptrdiff_t)slot * 2 * w, *v = n + w;
         if (st->nv_tag[slot] != jy) {
-            RGBZ_CAT(zg_guide_rows, RS)(st, f, jy, n, v);
+            RGBZ_CAT(zg_guide_rows, RS)(st, f, py, px, jy, n, v);
             st->nv_tag[slot] = jy;
         }
         N[r] = n;
@@ -495,6 +495,12 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
             }
         }
         free(scratch);
+        if (st.bad && ok) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ZG_SITES;
+        }
         RGBZ_CAT(zg_cells_free, RS)(&st);
     }
     free(valid);

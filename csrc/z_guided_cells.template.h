@@ -36,6 +36,7 @@ typedef struct {
     REAL *nv;                   /* [3 slots][2][gx + 2]: N and V of a tile row; then nu */
     ptrdiff_t nv_tag[3];
     double *gv;                 /* [2][gx]: a row of the guide from the taps */
+    int bad;                    /* a row of the taps' sites was not its Z pixels in order */
     int nbox[3];
     int ey[3][ZG_MAX_BOX], ex[3][ZG_MAX_BOX];
 } ZGC(zg_cells, RS);
@@ -71,6 +72,7 @@ static int ZGC(zg_cells_init, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filte
     }
     s->level_tag = PTRDIFF_MIN;
     for (int i = 0; i < 3; i++) s->nv_tag[i] = PTRDIFF_MIN;
+    s->bad = 0;
     return s->cg && s->cell && s->level && s->nv && s->gv ? RGBZ_OK : RGBZ_ENOMEM;
 }
 
@@ -92,9 +94,11 @@ static inline void ZGC(zg_pad, RS)(REAL *r, ptrdiff_t gx)
 
 /* the amplitude and variance rows n, v (gx values at n[1 ..], padded) of tile row jy: from
    the grids, or computed from the taps (the row min(jy, gyc - 1), its cells past gxc taking
-   the last complete one) */
+   the last complete one; its sites checked: s->bad when they are not the row's Z pixels in
+   order) */
 static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filters *f,
-                                   ptrdiff_t jy, REAL *restrict n, REAL *restrict v)
+                                   int py, int px, ptrdiff_t jy, REAL *restrict n,
+                                   REAL *restrict v)
 {
     const ptrdiff_t gx = f->gx;
     const double *gr, *vr;
@@ -104,6 +108,13 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
         vr = f->var + jy * gx;
     } else {
         const ptrdiff_t gxc = f->gxc, jc = jy < f->gyc ? jy : f->gyc - 1;
+        const int64_t *restrict sr = f->site_rows + jc * gxc;
+        const int64_t *restrict sc = f->site_cols + jc * gxc;
+        const int64_t r = f->zr + (int64_t)py * jc;
+        int bad = 0;
+        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gxc; ix++)
+            bad |= (sr[ix] != r) | (sc[ix] != f->zc + (int64_t)px * ix);
+        s->bad |= bad;
         rgbz_zguided_guide_row(f->taps_type, f->taps, f->taps_F, f->gyc * gxc, jc * gxc, gxc,
                                f->ratio, s->gv, s->gv + gx);
         gr = s->gv;

@@ -59,9 +59,10 @@ static double zgg_select(double *a, ptrdiff_t n, ptrdiff_t k)
 int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                         const int64_t *site_rows, const int64_t *site_cols, int py, int px,
                         int zr, int zc, ptrdiff_t gyc, ptrdiff_t gxc, double *ratio,
-                        int workers)
+                        int check, int workers)
 {
-    if (!taps || !site_rows || !site_cols || !ratio || F < 1 || F > RGBZ_TOF_MAX_FREQS ||
+    if (!taps || (check && (!site_rows || !site_cols)) || !ratio || F < 1 ||
+        F > RGBZ_TOF_MAX_FREQS ||
         py <= 0 || px <= 0 || gyc < 1 || gxc < 1)
         return RGBZ_EINVAL;
     if (in_type != RGBZ_T_U8 && in_type != RGBZ_T_U16 && in_type != RGBZ_T_F32 &&
@@ -77,9 +78,9 @@ int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
        (n / gxc, n % gxc) */
     int bad = 0;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(nth) reduction(| : bad)
+#pragma omp parallel for schedule(static) num_threads(nth) reduction(| : bad) if (check)
 #endif
-    for (ptrdiff_t iy = 0; iy < gyc; iy++) {
+    for (ptrdiff_t iy = 0; iy < gyc * (check != 0); iy++) {
         const int64_t *restrict sr = site_rows + iy * gxc, *restrict sc = site_cols + iy * gxc;
         const int64_t r = zr + (int64_t)py * iy;
         int b = 0;
@@ -154,7 +155,7 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
     if (!grid || !var || gyc > gy || gxc > gx) return RGBZ_EINVAL;
     double ratio[RGBZ_TOF_MAX_FREQS];
     const int st = rgbz_zguided_ratios(in_type, taps, F, N, site_rows, site_cols, py, px, zr,
-                                       zc, gyc, gxc, ratio, workers);
+                                       zc, gyc, gxc, ratio, 1, workers);
     if (st != RGBZ_OK) return st;
     /* one pass over the taps: both grids */
 #ifdef _OPENMP

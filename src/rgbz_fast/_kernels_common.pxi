@@ -231,6 +231,8 @@ cdef extern from "z_guided.h" nogil:
         const double *grid
         const double *var
         const void *taps
+        const int64_t *site_rows
+        const int64_t *site_cols
         int taps_type
         Py_ssize_t taps_F, gyc, gxc
         const double *ratio
@@ -253,7 +255,7 @@ cdef extern from "z_guided.h" nogil:
     int rgbz_zguided_ratios(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                             const int64_t *site_rows, const int64_t *site_cols, int py,
                             int px, int zr, int zc, Py_ssize_t gyc, Py_ssize_t gxc,
-                            double *ratio, int workers)
+                            double *ratio, int check, int workers)
 
 
 ctypedef struct _precision_kernels:
@@ -479,7 +481,8 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
              const int32_t[::1] bayer=None, uint64_t[::1] opcounts=None,
              const uint8_t[::1] taps=None, int taps_type=0, Py_ssize_t taps_F=0,
              Py_ssize_t gy=0, Py_ssize_t gx=0, Py_ssize_t gyc=0, Py_ssize_t gxc=0,
-             const double[::1] ratio=None):
+             const double[::1] ratio=None, const int64_t[::1] site_rows=None,
+             const int64_t[::1] site_cols=None):
     """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
     ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
     (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
@@ -491,7 +494,9 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     ``opcounts``: as for ``learned``. With ``grid`` and ``var`` None, the guide from the ToF
     taps instead: ``taps`` their bytes ((taps_F, 4, gyc * gxc) elements of type code
     ``taps_type``, TYPES), ``ratio`` their medians (z_guided_ratios), the grid's shape
-    (gy, gx) and its complete part (gyc, gxc)."""
+    (gy, gx) and its complete part (gyc, gxc), ``site_rows`` and ``site_cols`` their sites.
+    True when done; False (from the taps only) when the sites are not the complete Z pixels
+    in row-major order (``dst`` then holds nothing meaningful)."""
     cdef int status
     cdef rgbz_learned_filters h
     cdef rgbz_zguided_filters f
@@ -589,6 +594,8 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
         f.var = &var[0, 0]
     else:
         if (taps is None or ratio is None or ratio.shape[0] != taps_F or gyc < 1 or gxc < 1
+                or site_rows is None or site_cols is None
+                or site_rows.shape[0] != gyc * gxc or site_cols.shape[0] != gyc * gxc
                 or gy < gyc or gx < gxc or taps_type not in TYPES.values()
                 or taps.shape[0] != taps_F * 4 * gyc * gxc * _TYPE_SIZES[taps_type]):
             raise ValueError("z_guided: inconsistent guide arrays")
@@ -596,6 +603,8 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
         f.gx = gx
         f.taps = &taps[0]
         f.ratio = &ratio[0]
+        f.site_rows = &site_rows[0]
+        f.site_cols = &site_cols[0]
     f.chan = &chan[0]
     f.zr = zr
     f.zc = zc
@@ -607,7 +616,10 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     with nogil:
         status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
                         &phase_map[0], &f, maxval, workers, counts)
+    if status == RGBZ_ZG_SITES and grid is None:
+        return False
     _raise_for(status)
+    return True
 
 
 _TYPE_SIZES = {TYPES["u8"]: 1, TYPES["u16"]: 2, TYPES["f32"]: 4, TYPES["f64"]: 8}
@@ -615,10 +627,10 @@ _TYPE_SIZES = {TYPES["u8"]: 1, TYPES["u16"]: 2, TYPES["f32"]: 4, TYPES["f64"]: 8
 
 def z_guided_ratios(const frame_t[:, :, ::1] taps, const int64_t[::1] site_rows,
                     const int64_t[::1] site_cols, int py, int px, int zr, int zc,
-                    Py_ssize_t gyc, Py_ssize_t gxc, double[::1] ratio, int workers):
+                    Py_ssize_t gyc, Py_ssize_t gxc, double[::1] ratio, int check, int workers):
     """The medians of the guide of z_guided (csrc/z_guided.h, rgbz_zguided_ratios) from ToF
     taps (F, 4, N) into ``ratio`` (F,). True when done; False when the sites are not the
-    gyc x gxc complete Z pixels in row-major order."""
+    gyc x gxc complete Z pixels in row-major order (checked only when ``check``)."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     if (site_rows.shape[0] != taps.shape[2] or site_cols.shape[0] != taps.shape[2]
@@ -627,7 +639,7 @@ def z_guided_ratios(const frame_t[:, :, ::1] taps, const int64_t[::1] site_rows,
     with nogil:
         status = rgbz_zguided_ratios(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
                                      &site_rows[0], &site_cols[0], py, px, zr, zc, gyc, gxc,
-                                     &ratio[0], workers)
+                                     &ratio[0], check, workers)
     if status == RGBZ_ZG_SITES:
         return False
     _raise_for(status)

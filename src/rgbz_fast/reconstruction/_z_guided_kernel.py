@@ -65,30 +65,35 @@ def kernel_arrays(filters):
 
 
 class TapGuide:
-    """The guide of z_guided as the kernel computes it from the taps: the checked taps
-    (F, 4, gyc * gxc) of the complete Z pixels in row-major order, their medians ``ratio``
-    (F,), the grid's shape and its complete part."""
+    """The guide of z_guided as the kernel computes it from the taps: the taps (F, 4,
+    gyc * gxc) and sites of the complete Z pixels, their medians ``ratio`` (F,), the grid's
+    shape and its complete part; ``redo()``: the same with the sites checked first (and
+    sorted when they are not in row-major order, which the kernel checks as it reads them)."""
 
-    def __init__(self, taps, ratio, gy, gx, gyc, gxc):
-        self.taps, self.ratio = taps, ratio
+    def __init__(self, taps, rows, cols, ratio, gy, gx, gyc, gxc, redo):
+        self.taps, self.rows, self.cols, self.ratio = taps, rows, cols, ratio
         self.gy, self.gx, self.gyc, self.gxc = gy, gx, gyc, gxc
+        self.redo = redo
 
 
-def guide_source(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):
+def guide_source(shape, pattern, *, tof=None, nir=None, name="nir", workers=1, check=False):
     """What :func:`run_z_guided` takes as its guide: ``guide_grid``'s grids for ``nir``, else
     a :class:`TapGuide` of ``tof`` (the same checks and errors as :func:`guide_grid`; its
-    grids are then computed by the kernel, the same values)."""
+    grids are then computed by the kernel, the same values). The order of the sites is
+    checked by the kernel as it reads them (``check``: here, before)."""
     if nir is not None or tof is None:
         return guide_grid(shape, pattern, tof=tof, nir=nir, name=name, workers=workers)
     ratio = []
 
     def medians(taps, *args):
         ratio[:] = [np.empty(taps.shape[0])]
-        return _kernels.z_guided_ratios(taps, *args, ratio[0], workers)
+        return _kernels.z_guided_ratios(taps, *args, ratio[0], int(check), workers)
 
-    taps, _, _, gyc, gxc = tof_taps(shape, pattern, tof, name, medians)
+    taps, rows, cols, gyc, gxc = tof_taps(shape, pattern, tof, name, medians)
     gy, gx = _grid_shape(shape, get_pattern(pattern))
-    return TapGuide(taps, ratio[0], gy, gx, gyc, gxc)
+    return TapGuide(taps, rows, cols, ratio[0], gy, gx, gyc, gxc,
+                    lambda: guide_source(shape, pattern, tof=tof, name=name, workers=workers,
+                                         check=True))
 
 
 def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthreads,
@@ -103,14 +108,22 @@ def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthrea
         phase_map[r * Q + c] = k
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
-    if isinstance(grids, TapGuide):
-        g = grids
-        extra.update(grid=None, var=None, taps=g.taps.reshape(-1).view(np.uint8),
-                     taps_type=_TYPE_CODES[g.taps.dtype.char], taps_F=g.taps.shape[0],
-                     gy=g.gy, gx=g.gx, gyc=g.gyc, gxc=g.gxc, ratio=g.ratio)
-    else:
+    args = (src, out, _PRECISION_CODES[precision], P, Q, phase_map)
+    kw = dict(maxval=float((1 << bit_depth) - 1), workers=nthreads, **kernel_arrays(filters))
+    if not isinstance(grids, TapGuide):
         extra.update(zip(("grid", "var"), (np.ascontiguousarray(a, np.float64) for a in grids)))
-    k.z_guided(src, out, _PRECISION_CODES[precision], P, Q, phase_map,
-               maxval=float((1 << bit_depth) - 1), workers=nthreads, **kernel_arrays(filters),
-               **extra)
+    elif not k.z_guided(*args, **kw, **extra, **_tap_arrays(grids)):
+        # the sites were not in row-major order: checked and sorted (or refused), once more
+        extra.update(_tap_arrays(grids.redo()))
+    else:
+        return out
+    k.z_guided(*args, **kw, **extra)
     return out
+
+
+def _tap_arrays(g):
+    """The kernel's arguments of a TapGuide."""
+    return dict(grid=None, var=None, taps=g.taps.reshape(-1).view(np.uint8),
+                taps_type=_TYPE_CODES[g.taps.dtype.char], taps_F=g.taps.shape[0], gy=g.gy,
+                gx=g.gx, gyc=g.gyc, gxc=g.gxc, ratio=g.ratio, site_rows=g.rows,
+                site_cols=g.cols)
