@@ -137,6 +137,79 @@ int rgbz_recon_setup(const void *src, const void *dst, ptrdiff_t rows, ptrdiff_t
     return RGBZ_OK;
 }
 
+/* the index of the difference |pixel a - pixel b| in q (added if new), or -1 when full */
+static int rgbz_quad_diff(rgbz_quad *q, int ay, int ax, int by, int bx)
+{
+    if (ay > by || (ay == by && ax > bx)) {  /* one order for the pair: |a - b| = |b - a| */
+        int t = ay;
+        ay = by;
+        by = t;
+        t = ax;
+        ax = bx;
+        bx = t;
+    }
+    for (int u = 0; u < q->nd; u++)
+        if (q->ay[u] == ay && q->ax[u] == ax && q->by[u] == by && q->bx[u] == bx) return u;
+    if (q->nd == RGBZ_QMAX_D) return -1;
+    q->ay[q->nd] = (int16_t)ay;
+    q->ax[q->nd] = (int16_t)ax;
+    q->by[q->nd] = (int16_t)by;
+    q->bx[q->nd] = (int16_t)bx;
+    return q->nd++;
+}
+
+int rgbz_quad_setup(int py, int px, const int32_t *phase_map, const rgbz_plan *plans,
+                    const rgbz_params *prm, rgbz_quad *q)
+{
+#ifdef RGBZ_COUNT_OPS
+    (void)py, (void)px, (void)phase_map, (void)plans, (void)prm, (void)q;
+    return 0;
+#else
+    if (py != 4 || px != 4 || prm->clip_on || prm->mask1_fast) return 0;
+    int r0 = -1, c0 = -1, nz = 0;
+    for (int i = 0; i < 16; i++)
+        if (phase_map[i] >= 0) {
+            if (r0 < 0) {
+                r0 = i / 4;
+                c0 = i % 4;
+            }
+            nz++;
+        }
+    if (nz != 4 || r0 > 2 || c0 > 2) return 0;
+    q->r0 = r0;
+    q->c0 = c0;
+    q->nd = 0;
+    for (int s = 0; s < 4; s++) {
+        const int sy = s / 2, sx = s % 2;
+        const int pl = phase_map[(r0 + sy) * 4 + c0 + sx];
+        if (pl < 0) return 0;
+        q->pl[s] = pl;
+        const rgbz_plan *p = &plans[pl];
+        if (p->method == RGBZ_M_EDI_ROWS || p->method == RGBZ_M_BILINEAR) return 0;
+        for (int i = 0; i < RGBZ_MAX_PAIRS; i++) q->pidx[s][i] = -1;
+        for (int i = 0; i < RGBZ_MAX_BPAIRS; i++) q->bidx[s][i] = -1;
+        if (p->use_sg || p->use_grad)
+            for (int i = 0; i < p->n_pairs; i++) {
+                const int a = p->pair_a[i], b = p->pair_b[i];
+                const int u = rgbz_quad_diff(q, sy + p->tap_dy[a], sx + p->tap_dx[a],
+                                             sy + p->tap_dy[b], sx + p->tap_dx[b]);
+                if (u < 0) return 0;
+                q->pidx[s][i] = (int16_t)u;
+            }
+        if (p->use_ab)
+            for (int k = 0, i = 0; k < p->n_cand; k++)
+                for (int m = k + 1; m < p->n_cand; m++, i++) {
+                    const int a = p->cand_tap[k], b = p->cand_tap[m];
+                    const int u = rgbz_quad_diff(q, sy + p->tap_dy[a], sx + p->tap_dx[a],
+                                                 sy + p->tap_dy[b], sx + p->tap_dx[b]);
+                    if (u < 0) return 0;
+                    q->bidx[s][i] = (int16_t)u;
+                }
+    }
+    return q->nd > 0;
+#endif
+}
+
 int rgbz_have_openmp(void)
 {
 #ifdef _OPENMP
