@@ -133,20 +133,18 @@ RGBZ_INLINE void RFN(rgbz_rows_block)(const REAL *const *v, int n, const uint64_
  * group, added in their order to G, or starting it (started = 0: the first difference is
  * the sum), in one pass over the sites: the running sum stays in a register. Near
  * clipping a pair whose two pixels are clipped adds nothing and is not counted in cnt.
- * dv: NULL, or the differences computed beforehand (dv[i][j] = |a - b| of pair i at site
- * j, never with clipped pixels): the same numbers, |a - b| and |b - a| being equal.
  */
 RGBZ_INLINE void RFN(rgbz_pairs_into)(const rgbz_plan *p, int i0, int np, const REAL *const *v,
-                                      const REAL *const *dv, int n, const uint64_t *clipped,
-                                      int started, REAL *restrict G, uint8_t *restrict cnt)
+                                      int n, const uint64_t *clipped, int started,
+                                      REAL *restrict G, uint8_t *restrict cnt)
 {
     const REAL *a[RGBZ_PAIRS_PASS], *b[RGBZ_PAIRS_PASS];
     int ta[RGBZ_PAIRS_PASS], tb[RGBZ_PAIRS_PASS];
     for (int i = 0; i < np; i++) {
         ta[i] = p->pair_a[i0 + i];
         tb[i] = p->pair_b[i0 + i];
-        a[i] = dv ? dv[i0 + i] : v[ta[i]];
-        b[i] = dv ? NULL : v[tb[i]];
+        a[i] = v[ta[i]];
+        b[i] = v[tb[i]];
     }
     RGBZ_IVDEP
     BLOOP {
@@ -154,7 +152,7 @@ RGBZ_INLINE void RFN(rgbz_pairs_into)(const rgbz_plan *p, int i0, int np, const 
         int kept = 0;
         for (int i = 0; i < np; i++) {
             const int keep = !clipped || !(RCLIPPED(clipped[j], ta[i]) && RCLIPPED(clipped[j], tb[i]));
-            const REAL d = dv ? a[i][j] : keep ? RABSDIFF(a[i][j], b[i][j]) : (REAL)0;
+            const REAL d = keep ? RABSDIFF(a[i][j], b[i][j]) : (REAL)0;
             acc = (started || i) ? (keep ? OADD(acc, d) : acc) : d;
             kept += keep;
         }
@@ -168,12 +166,12 @@ RGBZ_INLINE void RFN(rgbz_pairs_into)(const rgbz_plan *p, int i0, int np, const 
  * is called; started: which groups already have a term), in one pass over the sites.
  */
 RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
-                                            const REAL *const *v, const REAL *const *dv, int n,
+                                            const REAL *const *v, int n,
                                             const uint64_t *clipped, uint32_t started,
                                             REAL (*G)[RGBZ_BLK], uint8_t (*cnt)[RGBZ_BLK])
 {
     const int ta = p->pair_a[i], tb = p->pair_b[i];
-    const REAL *restrict a = dv ? dv[i] : v[ta], *restrict b = dv ? NULL : v[tb];
+    const REAL *restrict a = v[ta], *restrict b = v[tb];
     REAL *Gq[4];
     uint8_t *cq[4];
     int st[4];
@@ -187,7 +185,7 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
     RGBZ_IVDEP
     BLOOP {
         const int keep = !clipped || !(RCLIPPED(clipped[j], ta) && RCLIPPED(clipped[j], tb));
-        const REAL d = dv ? a[j] : keep ? RABSDIFF(a[j], b[j]) : (REAL)0;
+        const REAL d = keep ? RABSDIFF(a[j], b[j]) : (REAL)0;
         for (int q = 0; q < ng; q++) {
             const REAL acc = st[q] ? Gq[q][j] : (REAL)0;   /* never reads a G not yet written */
             Gq[q][j] = st[q] ? (keep ? OADD(acc, d) : acc) : d;
@@ -205,10 +203,9 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
  * semi-gradients) has its difference computed once. Near clipping a pair whose two pixels
  * are clipped is skipped and cnt[g][j] counts the pairs group g has left at site j;
  * without clipping cnt is not written. The sums become means in rgbz_gammas_block, their
- * only reader. dv: NULL, or the pairs' differences computed beforehand (rgbz_pairs_into).
+ * only reader.
  */
-RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v,
-                                        const REAL *const *dv, int n,
+RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v, int n,
                                         const uint64_t *clipped, REAL (*G)[RGBZ_BLK],
                                         uint8_t (*cnt)[RGBZ_BLK])
 {
@@ -242,11 +239,11 @@ RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v
             const int np = (run + passes - 1) / passes;
             const int st = (int)((started >> g) & 1u);
             switch (np) {
-            case 1: RFN(rgbz_pairs_into)(p, i, 1, v, dv, n, clipped, st, G[g], cnt[g]); break;
-            case 2: RFN(rgbz_pairs_into)(p, i, 2, v, dv, n, clipped, st, G[g], cnt[g]); break;
-            case 3: RFN(rgbz_pairs_into)(p, i, 3, v, dv, n, clipped, st, G[g], cnt[g]); break;
-            case 4: RFN(rgbz_pairs_into)(p, i, 4, v, dv, n, clipped, st, G[g], cnt[g]); break;
-            default: RFN(rgbz_pairs_into)(p, i, 5, v, dv, n, clipped, st, G[g], cnt[g]); break;
+            case 1: RFN(rgbz_pairs_into)(p, i, 1, v, n, clipped, st, G[g], cnt[g]); break;
+            case 2: RFN(rgbz_pairs_into)(p, i, 2, v, n, clipped, st, G[g], cnt[g]); break;
+            case 3: RFN(rgbz_pairs_into)(p, i, 3, v, n, clipped, st, G[g], cnt[g]); break;
+            case 4: RFN(rgbz_pairs_into)(p, i, 4, v, n, clipped, st, G[g], cnt[g]); break;
+            default: RFN(rgbz_pairs_into)(p, i, 5, v, n, clipped, st, G[g], cnt[g]); break;
             }
             started |= m;
             i += np;
@@ -255,9 +252,9 @@ RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v
         /* a difference shared by several groups (at most 4, rgbz_check_plans): computed
            once, added to each in one pass */
         switch (rgbz_popcount(m)) {
-        case 2: RFN(rgbz_pair_into_groups)(p, i, 2, v, dv, n, clipped, started, G, cnt); break;
-        case 3: RFN(rgbz_pair_into_groups)(p, i, 3, v, dv, n, clipped, started, G, cnt); break;
-        default: RFN(rgbz_pair_into_groups)(p, i, 4, v, dv, n, clipped, started, G, cnt); break;
+        case 2: RFN(rgbz_pair_into_groups)(p, i, 2, v, n, clipped, started, G, cnt); break;
+        case 3: RFN(rgbz_pair_into_groups)(p, i, 3, v, n, clipped, started, G, cnt); break;
+        default: RFN(rgbz_pair_into_groups)(p, i, 4, v, n, clipped, started, G, cnt); break;
         }
         started |= m;
         i++;
@@ -419,11 +416,9 @@ RGBZ_INLINE void RFN(rgbz_rows_sum)(const REAL *const *rows, int nr, int n, REAL
  * differences added in the order of the pair loop of rgbz_core (pairs (k, m), k < m, k
  * outer), for `nc` candidates, a compile-time constant where it is called: the loops over
  * the pairs unroll, the loop over the sites vectorises, and the nc running sums stay in
- * registers rather than being loaded and stored once per pair. db: NULL, or the pairs'
- * differences computed beforehand, db[i][j] for the i-th pair in that order.
+ * registers rather than being loaded and stored once per pair.
  */
-RGBZ_INLINE void RFN(rgbz_beta_sums)(const REAL *const *c, const REAL *const *db, int nc, int n,
-                                     REAL (*S)[RGBZ_BLK])
+RGBZ_INLINE void RFN(rgbz_beta_sums)(const REAL *const *c, int nc, int n, REAL (*S)[RGBZ_BLK])
 {
     RGBZ_IVDEP
     BLOOP {
@@ -437,8 +432,7 @@ RGBZ_INLINE void RFN(rgbz_beta_sums)(const REAL *const *c, const REAL *const *db
         for (int k = 0; k < nc; k++) {
             RGBZ_UNROLL
             for (int m = k + 1; m < nc; m++) {
-                const int i = k * (2 * nc - k - 1) / 2 + (m - k - 1);
-                const REAL d = db ? db[i][j] : RABSDIFF(cc[k], cc[m]);
+                const REAL d = RABSDIFF(cc[k], cc[m]);
                 s[k] = OADD(s[k], d);
                 s[m] = OADD(s[m], d);
             }
@@ -514,9 +508,9 @@ RGBZ_INLINE void RFN(rgbz_weigh_sg)(const RFN(rgbz_weights) *f, const REAL *cons
  * clipped pixel is still used as a value). A site with no clipped tap gives exactly what
  * it gives with clipped = NULL.
  */
-RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, const REAL *const *dv,
-                                const REAL *const *db, int n, const uint64_t *clipped,
-                                const RFN(rgbz_knobs) *kn, REAL *restrict r)
+RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, int n,
+                                const uint64_t *clipped, const RFN(rgbz_knobs) *kn,
+                                REAL *restrict r)
 {
     if (n < 1) return;
     if (p->method == RGBZ_M_EDI_ROWS) {
@@ -541,7 +535,7 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, const 
         } else {
             REAL G[RGBZ_NGROUPS][RGBZ_BLK];
             uint8_t cnt[RGBZ_NGROUPS][RGBZ_BLK];
-            RFN(rgbz_groups_block)(p, v, dv, n, clipped, G, cnt);
+            RFN(rgbz_groups_block)(p, v, n, clipped, G, cnt);
             if (use_sg)
                 RFN(rgbz_gammas_block)(p, G, cnt, clipped != NULL, 0, 8, kn, n, gamma);
             if (use_grad)
@@ -558,24 +552,23 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, const 
         /* the candidate counts of Mask2: sums in registers (Mask1's 4 candidates, 6 pairs,
            gain nothing: measured 0.98x on BI) */
         if (nc == 8)
-            RFN(rgbz_beta_sums)(c, db, 8, n, S);
+            RFN(rgbz_beta_sums)(c, 8, n, S);
         else
-            RFN(rgbz_beta_sums)(c, db, 11, n, S);
+            RFN(rgbz_beta_sums)(c, 11, n, S);
     } else if (use_ab) {
         uint8_t u[RGBZ_MAX_CAND][RGBZ_BLK];
         for (int k = 0; k < nc; k++) BLOOP {
             S[k][j] = (REAL)1;
             u[k][j] = 0;
         }
-        for (int k = 0, i = 0; k < nc; k++)
-            for (int m = k + 1; m < nc; m++, i++) {
+        for (int k = 0; k < nc; k++)
+            for (int m = k + 1; m < nc; m++) {
                 const int tk = p->cand_tap[k], tm = p->cand_tap[m];
                 const REAL *restrict ck = c[k], *restrict cm = c[m];
-                const REAL *restrict di = db ? db[i] : NULL;
                 REAL *restrict Sk = S[k], *restrict Sm = S[m];
                 BLOOP {
                     if (clipped && RCLIPPED(clipped[j], tk) && RCLIPPED(clipped[j], tm)) continue;
-                    const REAL d = db ? di[j] : RABSDIFF(ck[j], cm[j]);
+                    const REAL d = RABSDIFF(ck[j], cm[j]);
                     Sk[j] = OADD(Sk[j], d);
                     Sm[j] = OADD(Sm[j], d);
                     if (clipped) {
@@ -715,19 +708,7 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, const 
 RGBZ_CLONES_512 static void RFN(rgbz_core_plan)(const rgbz_plan *p, const REAL *const *v, int n,
                                             const RFN(rgbz_knobs) *kn, REAL *restrict r)
 {
-    RFN(rgbz_core)(p, v, NULL, NULL, n, NULL, kn, r);
-}
-
-/* the same with the differences of the gradient pairs (dv, in plan order) and of beta's
-   candidate pairs (db, (k, m) with k < m, k outer) computed beforehand: the Z pixels of
-   Mask2 share them across their four sites (recon_loop.template.h, rgbz_quads) */
-RGBZ_CLONES_512 static void RFN(rgbz_core_shared)(const rgbz_plan *p, const REAL *const *v,
-                                              const REAL *const *dv, const REAL *const *db,
-                                              int n, const RFN(rgbz_knobs) *kn, REAL *restrict r)
-{
-    /* both given: the core's tests of dv and db fold at compile time */
-    if (!dv || !db) __builtin_unreachable();
-    RFN(rgbz_core)(p, v, dv, db, n, NULL, kn, r);
+    RFN(rgbz_core)(p, v, n, NULL, kn, r);
 }
 
 /* one build, for the baseline instruction set: only the blocks that hold a clipped tap run
@@ -736,7 +717,7 @@ static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
                                 const uint64_t *clipped, const RFN(rgbz_knobs) *kn,
                                 REAL *restrict r)
 {
-    RFN(rgbz_core)(p, v, NULL, NULL, n, clipped, kn, r);
+    RFN(rgbz_core)(p, v, n, clipped, kn, r);
 }
 
 /* clones: bilinear and BI on Mask1 run slower on 1 thread with the AVX-512F clone (BI
@@ -745,7 +726,7 @@ static void RFN(rgbz_core_clip)(const rgbz_plan *p, const REAL *const *v, int n,
     clones static void RFN(rgbz_core_m1_##name)(const REAL *const *v, int n,              \
                                                 const RFN(rgbz_knobs) *kn, REAL *r)      \
     {                                                                                    \
-        RFN(rgbz_core)(&rgbz_mask1_##name, v, NULL, NULL, n, NULL, kn, r);               \
+        RFN(rgbz_core)(&rgbz_mask1_##name, v, n, NULL, kn, r);                           \
     }
 RGBZ_M1_CORE(bilinear, RGBZ_CLONES)
 RGBZ_M1_CORE(bi, RGBZ_CLONES)

@@ -228,64 +228,6 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
     }
 }
 
-#ifndef RGBZ_COUNT_OPS
-/*
- * The Z pixels iq0 <= i < iq1 of a pair of Z rows (rgbz_quad): the top-left site of Z
- * pixel i at column 4 i + c0 of the first row, every tap inside the frame. pw[d]: the
- * window's rows y - ry + d, deinterleaved (rgbz_deinterleave), d < 2 ry + 2, y the first
- * Z row. Per block of RGBZ_QBLK Z pixels, the distinct differences into D (nd rows of
- * RGBZ_QBLK), then each of the four sites through the core with its differences read from
- * D; the results converted and stored to d0 (the first row) and d1.
- */
-RGBZ_CLONES_512 static void LFN(rgbz_quads)(const REAL *const *pw, ptrdiff_t plen, int ry,
-                                        const rgbz_quad *qd, const rgbz_plan *plans,
-                                        ptrdiff_t iq0, ptrdiff_t iq1,
-                                        const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
-                                        REAL *restrict D, IN_T *d0, IN_T *d1)
-{
-    const int nd = qd->nd, c0 = qd->c0;
-    /* pixel (dy, dx) from the top-left site of Z pixel i: element i + off of its row's
-       slot (c0 + dx = 4 q + phase, 0 <= phase < 4: the plane of that phase, q pixels on) */
-#define QOFF(dx) ((ptrdiff_t)(((c0 + (dx)) % 4 + 4) % 4) * plen + \
-                  (ptrdiff_t)((c0 + (dx) - (((c0 + (dx)) % 4 + 4) % 4)) / 4))
-    const REAL *da[RGBZ_QMAX_D], *db_[RGBZ_QMAX_D];
-    for (int u = 0; u < nd; u++) {
-        da[u] = pw[qd->ay[u] + ry] + QOFF(qd->ax[u]);
-        db_[u] = pw[qd->by[u] + ry] + QOFF(qd->bx[u]);
-    }
-    const REAL *tp[4][RGBZ_MAX_TAPS];
-    for (int s = 0; s < 4; s++) {
-        const rgbz_plan *p = &plans[qd->pl[s]];
-        for (int t = 0; t < p->n_taps; t++)
-            tp[s][t] = pw[s / 2 + p->tap_dy[t] + ry] + QOFF(s % 2 + p->tap_dx[t]);
-    }
-#undef QOFF
-    const REAL *v[RGBZ_MAX_TAPS], *dv[RGBZ_MAX_PAIRS], *dbe[RGBZ_MAX_BPAIRS];
-    REAL r[RGBZ_BLK];
-    for (ptrdiff_t ib = iq0; ib < iq1; ib += RGBZ_QBLK) {
-        const int n = (int)(iq1 - ib < RGBZ_QBLK ? iq1 - ib : RGBZ_QBLK);
-        for (int u = 0; u < nd; u++) {
-            const REAL *restrict a = da[u] + ib, *restrict b = db_[u] + ib;
-            REAL *restrict du = D + (ptrdiff_t)u * RGBZ_QBLK;
-            for (int j = 0; j < n; j++) du[j] = RGBZ_CAT(OABSDIFF, RS)(a[j], b[j]);
-        }
-        for (int s = 0; s < 4; s++) {
-            const rgbz_plan *p = &plans[qd->pl[s]];
-            for (int t = 0; t < p->n_taps; t++) v[t] = tp[s][t] + ib;
-            for (int i = 0; i < p->n_pairs; i++)
-                dv[i] = qd->pidx[s][i] >= 0 ? D + (ptrdiff_t)qd->pidx[s][i] * RGBZ_QBLK : NULL;
-            const int nb = p->n_cand * (p->n_cand - 1) / 2;
-            for (int i = 0; i < nb; i++)
-                dbe[i] = qd->bidx[s][i] >= 0 ? D + (ptrdiff_t)qd->bidx[s][i] * RGBZ_QBLK : NULL;
-            RGBZ_CAT(rgbz_core_shared, RS)(p, v, dv, dbe, n, kn, r);
-            IN_T *restrict d = (s / 2 ? d1 : d0) + 4 * ib + c0 + s % 2;
-            for (int j = 0; j < n; j++)
-                d[(ptrdiff_t)4 * j] = (IN_T)RGBZ_CAT(rgbz_out, RS)(r[j], maxval, IN_IS_INT);
-        }
-    }
-}
-#endif
-
 static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, ptrdiff_t rows,
                                  ptrdiff_t cols, int py, int px, const int32_t *phase_map,
                                  const rgbz_plan *plans, int ry, int rx, const ptrdiff_t *colmap,
@@ -306,13 +248,6 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
     }
     const int nth = rgbz_threads(prm->workers);
     (void)nth;
-    /* Mask2: the two Z rows of a tile together, their Z pixels as rgbz_quad (a pair is
-       reconstructed in the iteration of its first row, the second row skipped) */
-    rgbz_quad *qd = NULL;
-#ifndef RGBZ_COUNT_OPS
-    rgbz_quad qbuf;
-    if (px == 4 && rgbz_quad_setup(py, px, phase_map, plans, prm, &qbuf)) qd = &qbuf;
-#endif
     /* 2- and 4-column tiles (Mask1, Mask2): each thread keeps the rows its window needs
        converted and deinterleaved (rgbz_deinterleave) in a ring of 2 ry + 1 slots, tagged
        with the frame row they hold, so that a row is converted once per thread rather than
@@ -321,7 +256,7 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
        process on its core does not hold up the call: on the shared 2-core machine,
        1.04x on Mask2 and 1.19x on Mask1 over a static split, medians of paired rounds).
        Without the memory, the strided gather of rgbz_sites. */
-    const int nslot = 2 * ry + 1 + (qd != NULL);
+    const int nslot = 2 * ry + 1;
     const ptrdiff_t plen = (px == 2 || px == 4) ? (cols + px - 1) / px : 0;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth)
@@ -329,40 +264,25 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
     {
         REAL *ring = plen ? (REAL *)malloc((size_t)nslot * (size_t)px * (size_t)plen * sizeof(REAL))
                           : NULL;
-        REAL *qdiff = qd && ring ? (REAL *)malloc((size_t)qd->nd * RGBZ_QBLK * sizeof(REAL))
-                                 : NULL;
-        ptrdiff_t tag[2 * RGBZ_MAX_RADIUS + 2];
+        ptrdiff_t tag[2 * RGBZ_MAX_RADIUS + 1];
         for (int k = 0; k < nslot; k++) tag[k] = -1;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 32)
 #endif
         for (ptrdiff_t y = 0; y < rows; y++) {
-            /* a pair of Z rows of rgbz_quad: y its first row (pair), or its second (skip) */
-            const int qon = qd && qdiff;
-            const int pair = qon && y % py == qd->r0 && y + 1 < rows;
-            if (qon && y % py == qd->r0 + 1 && y >= 1) continue;
-            const int nwin = 2 * ry + 1 + pair;
             LFN(rgbz_row) w;
             w.colmap = colmap;
             w.ry = ry;
             w.rx = rx;
             w.px = px;
             w.plen = plen;
-            ptrdiff_t need[2 * RGBZ_MAX_RADIUS + 2];
-            const IN_T *rowp[2 * RGBZ_MAX_RADIUS + 2];
-            const REAL *prow[2 * RGBZ_MAX_RADIUS + 2];
-            for (int d = 0; d < nwin; d++) {
-                need[d] = rgbz_extend(y - ry + d, rows, py);
-                rowp[d] = src + need[d] * cols;
-                prow[d] = NULL;
-            }
-            for (int d = 0; d <= 2 * ry; d++) {
-                w.rowp[d] = rowp[d];
-                w.prow[d] = NULL;
+            ptrdiff_t need[2 * RGBZ_MAX_RADIUS + 1];
+            for (int dy = -ry; dy <= ry; dy++) {
+                need[dy + ry] = rgbz_extend(y + dy, rows, py);
+                w.rowp[dy + ry] = src + need[dy + ry] * cols;
+                w.prow[dy + ry] = NULL;
             }
             memcpy(dst + y * cols, src + y * cols, (size_t)cols * sizeof(IN_T));
-            if (pair)
-                memcpy(dst + (y + 1) * cols, src + (y + 1) * cols, (size_t)cols * sizeof(IN_T));
             const int32_t *pm = phase_map + (y % py) * px;
             int row_has_z = 0;
             for (int i = 0; i < px; i++) row_has_z |= pm[i] >= 0;
@@ -370,58 +290,25 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
             if (ring) {
                 /* the window's rows from the ring; a missing one into a slot no row of the
                    window holds */
-                int held[2 * RGBZ_MAX_RADIUS + 2] = {0};
-                for (int d = 0; d < nwin; d++)
+                int held[2 * RGBZ_MAX_RADIUS + 1] = {0};
+                for (int d = 0; d < nslot; d++)
                     for (int k = 0; k < nslot; k++)
                         if (tag[k] == need[d]) {
-                            prow[d] = ring + (ptrdiff_t)k * px * plen;
+                            w.prow[d] = ring + (ptrdiff_t)k * px * plen;
                             held[k] = 1;
                         }
-                for (int d = 0; d < nwin; d++) {
-                    if (prow[d]) continue;
+                for (int d = 0; d < nslot; d++) {
+                    if (w.prow[d]) continue;
                     int k = 0;
-                    while (held[k]) k++;        /* at most nwin <= nslot rows are held: one is free */
+                    while (held[k]) k++;        /* at most nslot rows are held: one is free */
                     REAL *slot = ring + (ptrdiff_t)k * px * plen;
-                    LFN(rgbz_deinterleave)(rowp[d], cols, px, plen, slot);
+                    LFN(rgbz_deinterleave)(w.rowp[d], cols, px, plen, slot);
                     tag[k] = need[d];
                     held[k] = 1;
-                    for (int e = d; e < nwin; e++)        /* the window may hold a row twice */
-                        if (need[e] == need[d]) prow[e] = slot;
+                    for (int e = d; e < nslot; e++)       /* the window may hold a row twice */
+                        if (need[e] == need[d]) w.prow[e] = slot;
                 }
-                for (int d = 0; d <= 2 * ry; d++) w.prow[d] = prow[d];
             }
-#ifndef RGBZ_COUNT_OPS
-            if (pair) {
-                /* the Z pixels whose taps are all inside the frame as rgbz_quad, the sites
-                   left and right of them (the columns [0, xl) and [xr, cols)) one by one */
-                const int c0 = qd->c0;
-                const ptrdiff_t iq0 = rx > c0 ? (rx - c0 + 3) / 4 : 0;
-                ptrdiff_t iq1 = cols - rx - 2 - c0 >= 0 ? (cols - rx - 2 - c0) / 4 + 1 : 0;
-                if (iq1 < iq0) iq1 = iq0;
-                const ptrdiff_t xl = 4 * iq0, xr = 4 * iq1;
-                LFN(rgbz_row) w1 = w;
-                for (int d = 0; d <= 2 * ry; d++) {
-                    w1.rowp[d] = rowp[d + 1];
-                    w1.prow[d] = prow[d + 1];
-                }
-                for (int sy = 0; sy < 2; sy++) {
-                    const int32_t *pr = phase_map + ((y + sy) % py) * px;
-                    const ptrdiff_t xs[4] = {0, xl, xr, cols};
-                    for (int sgm = 0; sgm < 4; sgm += 2)
-                        for (int ph = 0; ph < px; ph++) {
-                            const int pl = pr[ph];
-                            if (pl < 0 || xs[sgm] >= xs[sgm + 1]) continue;
-                            const ptrdiff_t x0 = xs[sgm] + ((ph - xs[sgm] % px) + px) % px;
-                            LFN(rgbz_sites)(sy ? &w1 : &w, &plans[pl], -1, cols, x0,
-                                            xs[sgm + 1], &kn, maxval, 0, 0.0,
-                                            dst + (y + sy) * cols);
-                        }
-                }
-                LFN(rgbz_quads)(prow, plen, ry, qd, plans, iq0, iq1, &kn, maxval, qdiff,
-                                dst + y * cols, dst + (y + 1) * cols);
-                continue;
-            }
-#endif
             /* segments [xa[s], xa[s + 1]) of the row, and their constant plan (-1: none): a
                Mask1 Z row runs its interior [2, cols - 2) on the constant plan */
             const int fast_row = m1 >= 0 && y >= 2 && y < rows - 2 && (y & 1) == zr && cols > 4;
@@ -441,7 +328,6 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
                 }
             }
         }
-        free(qdiff);
         free(ring);
     }
     return RGBZ_OK;
