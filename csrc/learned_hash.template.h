@@ -66,6 +66,39 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK],
     }
 }
 
+/* the bucket of one site, lrn_bucket's arithmetic in its order, from its direction energies
+   e0 .. e3 and (spread: a constant where it is inlined) its colour energies r, g, b, with at
+   most two thresholds of each kind: st, ct, kt hold them padded with +inf (a padded strength
+   or coherence level never counts: t > inf and m2 > inf * t^2 are false, inf * 0 is NaN;
+   likewise a padded spread level); ms, mc: the bucket steps of a strength and a coherence
+   level, mo that of an octant */
+LRN_INLINE int32_t LRN_CAT(lrn_bucket1, IS, RS)(REAL e0, REAL e1, REAL e2, REAL e3, REAL r,
+                                               REAL g, REAL b_, const int spread,
+                                               const REAL *st, const REAL *ct, const REAL *kt,
+                                               int32_t mo, int32_t ms, int32_t mc)
+{
+    const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
+    const REAL a = OSUB(e0, e1);
+    const REAL b = OMUL(OSUB(e2, e3), (REAL)0.5);
+    const REAL t = OADD(OMUL(OADD(e0, e1), (REAL)0.5), OMUL(OADD(e2, e3), (REAL)0.25));
+    const REAL ar = OSUB(OMUL(C, a), OMUL(S, b));
+    const REAL br = OADD(OMUL(S, a), OMUL(C, b));
+    const int neg = OCMP(br < 0);
+    const REAL ar1 = neg ? -ar : ar, br1 = neg ? -br : br;
+    const int left = OCMP(ar1 < 0);
+    const REAL ar2 = left ? br1 : ar1, br2 = left ? -ar1 : br1;
+    int32_t bk = (4 * neg + 2 * left + OCMP(br2 > ar2)) * mo;
+    const REAL m2 = OADD(OMUL(a, a), OMUL(b, b)), t2 = OMUL(t, t);
+    bk += (OCMP(t > st[0]) ? ms : 0) + (OCMP(t > st[1]) ? ms : 0);
+    bk += (OCMP(m2 > OMUL(ct[0], t2)) ? mc : 0) + (OCMP(m2 > OMUL(ct[1], t2)) ? mc : 0);
+    if (spread) {
+        const REAL hi1 = OCMP(g > r) ? g : r, lo1 = OCMP(g > r) ? r : g;
+        const REAL hi = OCMP(b_ > hi1) ? b_ : hi1, lo = OCMP(b_ < lo1) ? b_ : lo1;
+        bk += OCMP(hi > OMUL(kt[0], lo)) + OCMP(hi > OMUL(kt[1], lo));
+    }
+    return bk;
+}
+
 /* the buckets of the n sites whose taps are v[t][j] (phase k); every loop runs over the
    sites (to the run-time n, so that the compiler vectorises it rather than unrolling it) */
 LRN_CLONES
@@ -187,70 +220,114 @@ static void LRN_CAT(lrn_dsq, IS, RS)(REAL *restrict D, const REAL *restrict a,
     }
 }
 
-/* c[x] = sum over nr rows i of D_i[x], in the order of i (nr is a constant where it is
-   inlined, so that the rows unroll and x vectorises; one pass, one store per x) */
-LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const *D,
+/* the column sums' layout (lrn_energies writes it, lrn_rows reads it): a row of cols REALs
+   holds the even columns first, then the odd ones, so that the sites of a phase (px even)
+   read theirs at unit stride (Mask1) or every other element: column x at lrn_cs_at(x, H),
+   H = (cols + 1) / 2 */
+static inline ptrdiff_t LRN_CAT(lrn_cs_at, IS, RS)(ptrdiff_t x, ptrdiff_t H)
+{
+    return ((x & 1) ? H : 0) + (x >> 1);
+}
+
+/* column x of c (the layout above, c + H the odd columns) = sum over nr rows i of D_i[x], in
+   the order of i, for x in [xa, xb) (nr is a constant where it is inlined, so that the rows
+   unroll and x vectorises; one pass). With vector extensions, 2 L columns at a time: their
+   sums, then dealt into the even and the odd half (two shuffles) */
+LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, ptrdiff_t H, const REAL *const *D,
                                                const int nr, ptrdiff_t xa, ptrdiff_t xb)
 {
-    LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
+    REAL *restrict ce = c, *restrict co = c + H;
+    ptrdiff_t x = xa;
+    if (x < xb && (x & 1)) {   /* an odd first column on its own: the pairs start even */
         REAL s = 0;
         for (int i = 0; i < nr; i++) s = OADD(s, D[i][x]);
-        c[x] = s;
+        co[x >> 1] = s;
+        x++;
+    }
+#if LRN_VECTOR_EXT
+    typedef REAL rv __attribute__((vector_size(32)));
+    enum { L = (int)(32 / sizeof(REAL)) };
+    for (; x + 2 * L <= xb; x += 2 * L) {
+        rv s0 = {0}, s1 = {0};
+        for (int i = 0; i < nr; i++) {
+            rv a, b;
+            memcpy(&a, D[i] + x, sizeof a);
+            memcpy(&b, D[i] + x + L, sizeof b);
+            s0 += a;
+            s1 += b;
+        }
+        rv e, o;
+        RGBZ_CAT(lrn_deal, RS)(s0, s1, &e, &o);
+        memcpy(ce + (x >> 1), &e, sizeof e);
+        memcpy(co + (x >> 1), &o, sizeof o);
+    }
+#endif
+    for (; x < xb; x++) {
+        REAL s = 0;
+        for (int i = 0; i < nr; i++) s = OADD(s, D[i][x]);
+        (x & 1 ? co : ce)[x >> 1] = s;
     }
 }
 
-/* c[x] = sum over the nr rows D_i of D_i[x], in the order of i, for any nr (the constant
-   row counts of the box sums unrolled) */
-LRN_INLINE void LRN_CAT(lrn_sum_rows, IS, RS)(REAL *restrict c, const REAL *const *D, int nr,
-                                                 ptrdiff_t xa, ptrdiff_t xb)
+/* lrn_colsum for any nr (the constant row counts of the box sums unrolled) */
+LRN_INLINE void LRN_CAT(lrn_sum_rows, IS, RS)(REAL *restrict c, ptrdiff_t H, const REAL *const *D,
+                                                 int nr, ptrdiff_t xa, ptrdiff_t xb)
 {
     switch (nr) {
-    case 1: LRN_CAT(lrn_colsum, IS, RS)(c, D, 1, xa, xb); break;
-    case 2: LRN_CAT(lrn_colsum, IS, RS)(c, D, 2, xa, xb); break;
-    case 3: LRN_CAT(lrn_colsum, IS, RS)(c, D, 3, xa, xb); break;
-    case 4: LRN_CAT(lrn_colsum, IS, RS)(c, D, 4, xa, xb); break;
-    case 5: LRN_CAT(lrn_colsum, IS, RS)(c, D, 5, xa, xb); break;
-    case 7: LRN_CAT(lrn_colsum, IS, RS)(c, D, 7, xa, xb); break;
-    default: LRN_CAT(lrn_colsum, IS, RS)(c, D, nr, xa, xb);
+    case 1: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 1, xa, xb); break;
+    case 2: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 2, xa, xb); break;
+    case 3: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 3, xa, xb); break;
+    case 4: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 4, xa, xb); break;
+    case 5: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 5, xa, xb); break;
+    case 7: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 7, xa, xb); break;
+    default: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, nr, xa, xb);
     }
 }
 
 /* the row stage of one direction at n sites x = x0 + m PX (c0, c1: its column sums, the rows
-   of even and of odd offset from the rectangle's first row, already moved by its first
-   column; nc columns; PX and nc are constants where it is inlined): bxd[m] the box sum of
-   site m and, when split, k[2 r + p][m] (+)= the part of the rows of offset parity r and the
-   columns of offset parity p (assigned when first, else added). Unsplit, c0 holds every row
-   and c1 is not read. */
+   of even and of odd offset from the rectangle's first row, in the layout of lrn_cs_at; X0:
+   the rectangle's first column at site 0; nc columns; PX and nc are constants where it is
+   inlined, PX even, so that column X0 + j of site m is element m PX / 2 of one half): bxd[m]
+   the box sum of site m and, when split, k[2 r + p][m] (+)= the part of the rows of offset
+   parity r and the columns of offset parity p (assigned when first, else added). Unsplit,
+   c0 holds every row and c1 is not read. */
 LRN_INLINE void LRN_CAT(lrn_rowstage, IS, RS)(const REAL *restrict c0, const REAL *restrict c1,
-                                                 const int nc, const int split, const int first,
-                                                 ptrdiff_t x0, const int PX, int n,
-                                                 REAL *restrict bxd, REAL *restrict k0,
+                                                 ptrdiff_t H, ptrdiff_t X0, const int nc,
+                                                 const int split, const int first, const int PX,
+                                                 int n, REAL *restrict bxd, REAL *restrict k0,
                                                  REAL *restrict k1, REAL *restrict k2,
                                                  REAL *restrict k3)
 {
+    const REAL *p0[2 * 3 + 1], *p1[2 * 3 + 1];   /* column X0 + j: nc <= 2 hr + 1 <= 7 */
+    for (int j = 0; j < nc; j++) {
+        const ptrdiff_t o = LRN_CAT(lrn_cs_at, IS, RS)(X0 + j, H);
+        p0[j] = c0 + o;
+        p1[j] = c1 + o;
+    }
+    const int S = PX / 2;
     if (!split) {
         LRN_IVDEP for (int m = 0; m < n; m++) {
-            const ptrdiff_t x = x0 + (ptrdiff_t)m * PX;
+            const ptrdiff_t x = (ptrdiff_t)m * S;
             REAL s = 0;
-            for (int j = 0; j < nc; j++) s = OADD(s, c0[x + j]);
+            for (int j = 0; j < nc; j++) s = OADD(s, p0[j][x]);
             bxd[m] = s;
         }
         return;
     }
     LRN_IVDEP for (int m = 0; m < n; m++) {
-        const ptrdiff_t x = x0 + (ptrdiff_t)m * PX;
-        REAL s0e = c0[x], s1e = c1[x], s0o = 0, s1o = 0;
+        const ptrdiff_t x = (ptrdiff_t)m * S;
+        REAL s0e = p0[0][x], s1e = p1[0][x], s0o = 0, s1o = 0;
         for (int j = 2; j < nc; j += 2) {
-            s0e = OADD(s0e, c0[x + j]);
-            s1e = OADD(s1e, c1[x + j]);
+            s0e = OADD(s0e, p0[j][x]);
+            s1e = OADD(s1e, p1[j][x]);
         }
         if (nc > 1) {
-            s0o = c0[x + 1];
-            s1o = c1[x + 1];
+            s0o = p0[1][x];
+            s1o = p1[1][x];
         }
         for (int j = 3; j < nc; j += 2) {
-            s0o = OADD(s0o, c0[x + j]);
-            s1o = OADD(s1o, c1[x + j]);
+            s0o = OADD(s0o, p0[j][x]);
+            s1o = OADD(s1o, p1[j][x]);
         }
         bxd[m] = OADD(OADD(s0e, s0o), OADD(s1e, s1o));
         if (first) {
@@ -280,6 +357,7 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdi
                                            REAL *restrict cs)
 {
     static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
+    const ptrdiff_t H = (cols + 1) / 2;   /* the layout of cs (lrn_cs_at) */
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const int sy = SY[d], sx = SX[d];
         /* the rectangle of pair starts: rows dlo..dhi, columns clo..chi */
@@ -304,14 +382,15 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdi
             D[i] = Dr;
         }
         if (!split || d >= RGBZ_LEARNED_SPREAD_DIRS) {
-            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)2 * d * cols, D, nr, ca, cb);
+            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)2 * d * cols, H, D, nr, ca, cb);
             continue;
         }
         for (int r = 0; r < 2; r++) {
             const REAL *Dp[RGBZ_LEARNED_MAX_RADIUS + 1];
             int np = 0;
             for (int i = r; i < nr; i += 2) Dp[np++] = D[i];
-            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)(2 * d + r) * cols, Dp, np, ca, cb);
+            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)(2 * d + r) * cols, H, Dp, np, ca,
+                                          cb);
         }
     }
 }
@@ -327,19 +406,28 @@ static void LRN_CAT(lrn_rows, IS, RS)(const REAL *cs, ptrdiff_t cols, int hr, in
                                        ptrdiff_t x0, int px, int n, REAL *bx)
 {
     static const int SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
+    const ptrdiff_t H = (cols + 1) / 2;   /* the layout of cs (lrn_cs_at) */
     REAL *k[4];
     for (int q = 0; q < 4; q++) k[q] = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + q) * cols;
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const int sx = SX[d];
         const int clo = sx < 0 ? -hr - sx : -hr, chi = sx > 0 ? hr - sx : hr;
         const int nc = chi - clo + 1, sp = split && d < RGBZ_LEARNED_SPREAD_DIRS;
-        const REAL *c0 = cs + (ptrdiff_t)2 * d * cols + clo;
+        const REAL *c0 = cs + (ptrdiff_t)2 * d * cols;
         const REAL *c1 = c0 + cols;
+        const ptrdiff_t X0 = x0 + clo;
         REAL *bxd = bx + (ptrdiff_t)d * cols;
-        /* the column counts of hash radius 3 and the periods of Mask1 and Mask2, unrolled */
+        /* the column counts of hash radius 3 and the periods of Mask1 and Mask2, unrolled
+           (the first direction, the only one that assigns the class rows, on its own) */
 #define LRN_ROWS_(NC, PXC)                                                                    \
-        LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, NC, sp, d == 0, x0, PXC, n, bxd, k[0], k[1], k[2], \
-                                      k[3])
+        do {                                                                                  \
+            if (d == 0)                                                                       \
+                LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, H, X0, NC, sp, 1, PXC, n, bxd, k[0], k[1], \
+                                              k[2], k[3]);                                    \
+            else                                                                              \
+                LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, H, X0, NC, sp, 0, PXC, n, bxd, k[0], k[1], \
+                                              k[2], k[3]);                                    \
+        } while (0)
         if (nc == 5 && px == 2) LRN_ROWS_(5, 2);
         else if (nc == 7 && px == 2) LRN_ROWS_(7, 2);
         else if (nc == 5 && px == 4) LRN_ROWS_(5, 4);
@@ -449,9 +537,9 @@ static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0
     }
 }
 
-/* the buckets of the fast path's sites x0, x0 + px, ... (n of them) of phase k in row y: their
-   energies from the box sums bx of the phase's sites in the row, from m0 on (with the spread
-   term also the colour energies, from its class rows: lrn_rows) */
+/* the buckets of the fast path's sites x0, x0 + px, ... (n of them, any number) of phase k in
+   row y: their energies from the box sums bx of the phase's sites in the row, from m0 on (with
+   the spread term also the colour energies, from its class rows: lrn_rows) */
 LRN_CLONES
 static void LRN_CAT(lrn_fast_bucket, IS, RS)(ptrdiff_t y, ptrdiff_t x0, int n,
                                               const rgbz_learned_filters *f, int k,
@@ -460,41 +548,94 @@ static void LRN_CAT(lrn_fast_bucket, IS, RS)(ptrdiff_t y, ptrdiff_t x0, int n,
 {
     REAL e[RGBZ_LEARNED_DIRS][LRN_BLK];
     REAL ec[3][LRN_BLK];
-    for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
-        const REAL inv = (REAL)1 / (REAL)f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
-        const REAL *restrict b = bx + (ptrdiff_t)d * cols + m0;
-        LRN_IVDEP for (int j = 0; j < n; j++) e[d][j] = OMUL(b[j], inv);
+    const int ns = f->n_str, nc = f->n_coh, nk = f->n_spr;
+    if (ns <= 3 && nc <= 3 && nk <= 3) {
+        /* at most two thresholds of each kind: one pass over the sites, every value in
+           registers (lrn_bucket1, the same arithmetic as lrn_bucket's passes) */
+        const REAL inf = (REAL)INFINITY;
+        REAL st[2] = {inf, inf}, ct[2] = {inf, inf}, kt[2] = {inf, inf};
+        for (int i = 0; i < ns - 1; i++) st[i] = (REAL)f->str_thr[(ptrdiff_t)k * (ns - 1) + i];
+        for (int i = 0; i < nc - 1; i++) ct[i] = (REAL)f->coh_thr2[(ptrdiff_t)k * (nc - 1) + i];
+        for (int i = 0; i < nk - 1; i++) kt[i] = (REAL)f->spr_thr[(ptrdiff_t)k * (nk - 1) + i];
+        const int32_t mo = ns * nc * nk, ms = nc * nk, mc = nk;
+        const int32_t *np = f->n_pairs + k * RGBZ_LEARNED_DIRS;
+        const REAL i0 = (REAL)1 / (REAL)np[0], i1 = (REAL)1 / (REAL)np[1];
+        const REAL i2 = (REAL)1 / (REAL)np[2], i3 = (REAL)1 / (REAL)np[3];
+        const REAL *restrict b0 = bx + m0, *restrict b1 = bx + cols + m0;
+        const REAL *restrict b2 = bx + 2 * cols + m0, *restrict b3 = bx + 3 * cols + m0;
+        if (nk > 1) {
+            int g0 = -1, g1 = -1, cr = -1, cb = -1;
+            const int hr = f->hash_radius;
+            for (int q = 0; q < 4; q++) {   /* the classes' colours, as below */
+                const int row = (int)((y - hr + (q >> 1)) & 1);
+                const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
+                if (col == 1) {
+                    if (g0 < 0) g0 = q; else g1 = q;
+                } else if (col == 0) {
+                    cr = q;
+                } else {
+                    cb = q;
+                }
+            }
+            const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + m0;
+            const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + m0;
+            const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + m0;
+            const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + m0;
+            const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
+            const REAL ib = (REAL)f->inv_col[k * 3 + 2];
+            LRN_IVDEP for (int j = 0; j < n; j++)
+                bucket[j] = LRN_CAT(lrn_bucket1, IS, RS)(
+                    OMUL(b0[j], i0), OMUL(b1[j], i1), OMUL(b2[j], i2), OMUL(b3[j], i3),
+                    OMUL(kr[j], ir), OMUL(OADD(kg0[j], kg1[j]), ig), OMUL(kb[j], ib), 1, st, ct,
+                    kt, mo, ms, mc);
+        } else {
+            LRN_IVDEP for (int j = 0; j < n; j++)
+                bucket[j] = LRN_CAT(lrn_bucket1, IS, RS)(
+                    OMUL(b0[j], i0), OMUL(b1[j], i1), OMUL(b2[j], i2), OMUL(b3[j], i3), 0, 0, 0,
+                    0, st, ct, kt, mo, ms, mc);
+        }
+        return;
     }
-    if (f->n_spr > 1) {
-        /* class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r) and
-           column parity (x - hr + p): one colour, the same at every site (px is even); green
-           holds two classes */
-        const int hr = f->hash_radius;
-        int g0 = -1, g1 = -1, cr = -1, cb = -1;
-        for (int q = 0; q < 4; q++) {
-            const int row = (int)((y - hr + (q >> 1)) & 1), col0 = (int)((x0 - hr + (q & 1)) & 1);
-            const int col = f->bayer[row * 2 + col0];
-            if (col == 1) {
-                if (g0 < 0) g0 = q; else g1 = q;
-            } else if (col == 0) {
-                cr = q;
-            } else {
-                cb = q;
+    /* more levels: lrn_bucket, LRN_BLK sites at a time */
+    for (int j0 = 0; j0 < n; j0 += LRN_BLK) {
+        const int nb = n - j0 < LRN_BLK ? n - j0 : LRN_BLK;
+        const ptrdiff_t mb = m0 + j0;
+        for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+            const REAL inv = (REAL)1 / (REAL)f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
+            const REAL *restrict b = bx + (ptrdiff_t)d * cols + mb;
+            LRN_IVDEP for (int j = 0; j < nb; j++) e[d][j] = OMUL(b[j], inv);
+        }
+        if (f->n_spr > 1) {
+            /* class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r) and
+               column parity (x - hr + p): one colour, the same at every site (px is even); green
+               holds two classes */
+            const int hr = f->hash_radius;
+            int g0 = -1, g1 = -1, cr = -1, cb = -1;
+            for (int q = 0; q < 4; q++) {
+                const int row = (int)((y - hr + (q >> 1)) & 1);
+                const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
+                if (col == 1) {
+                    if (g0 < 0) g0 = q; else g1 = q;
+                } else if (col == 0) {
+                    cr = q;
+                } else {
+                    cb = q;
+                }
+            }
+            const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + mb;
+            const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + mb;
+            const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + mb;
+            const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + mb;
+            const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
+            const REAL ib = (REAL)f->inv_col[k * 3 + 2];
+            LRN_IVDEP for (int j = 0; j < nb; j++) {
+                ec[0][j] = OMUL(kr[j], ir);
+                ec[1][j] = OMUL(OADD(kg0[j], kg1[j]), ig);
+                ec[2][j] = OMUL(kb[j], ib);
             }
         }
-        const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + m0;
-        const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + m0;
-        const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + m0;
-        const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + m0;
-        const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
-        const REAL ib = (REAL)f->inv_col[k * 3 + 2];
-        LRN_IVDEP for (int j = 0; j < n; j++) {
-            ec[0][j] = OMUL(kr[j], ir);
-            ec[1][j] = OMUL(OADD(kg0[j], kg1[j]), ig);
-            ec[2][j] = OMUL(kb[j], ib);
-        }
+        LRN_CAT(lrn_bucket, IS, RS)(e, ec, nb, f, k, bucket + j0);
     }
-    LRN_CAT(lrn_bucket, IS, RS)(e, ec, n, f, k, bucket);
 }
 
 /* the taps v[t][j] of the n sites x0, x0 + px, ... (n <= LRN_BLK) of phase k, tap-major
