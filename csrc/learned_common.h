@@ -116,19 +116,6 @@ LRN_INLINE void lrn_lane_sums_f64(const lrn_v4d *a, lrn_v4d *sum)
     s += LRN_SHUF4(t1, t3, 2, 3, 6, 7);
     *sum = s;
 }
-/* the even and the odd elements of the 2 L values a, b (in that order): *e = a0 a2 .. b(L-2),
-   *o = a1 a3 .. b(L-1) (the column sums' layout, learned_hash.template.h) */
-LRN_INLINE void lrn_deal_f32(lrn_v8f a, lrn_v8f b, lrn_v8f *e, lrn_v8f *o)
-{
-    *e = LRN_SHUF8(a, b, 0, 2, 4, 6, 8, 10, 12, 14);
-    *o = LRN_SHUF8(a, b, 1, 3, 5, 7, 9, 11, 13, 15);
-}
-
-LRN_INLINE void lrn_deal_f64(lrn_v4d a, lrn_v4d b, lrn_v4d *e, lrn_v4d *o)
-{
-    *e = LRN_SHUF4(a, b, 0, 2, 4, 6);
-    *o = LRN_SHUF4(a, b, 1, 3, 5, 7);
-}
 #undef LRN_SHUF8
 #undef LRN_SHUF4
 #endif

@@ -220,114 +220,70 @@ static void LRN_CAT(lrn_dsq, IS, RS)(REAL *restrict D, const REAL *restrict a,
     }
 }
 
-/* the column sums' layout (lrn_energies writes it, lrn_rows reads it): a row of cols REALs
-   holds the even columns first, then the odd ones, so that the sites of a phase (px even)
-   read theirs at unit stride (Mask1) or every other element: column x at lrn_cs_at(x, H),
-   H = (cols + 1) / 2 */
-static inline ptrdiff_t LRN_CAT(lrn_cs_at, IS, RS)(ptrdiff_t x, ptrdiff_t H)
-{
-    return ((x & 1) ? H : 0) + (x >> 1);
-}
-
-/* column x of c (the layout above, c + H the odd columns) = sum over nr rows i of D_i[x], in
-   the order of i, for x in [xa, xb) (nr is a constant where it is inlined, so that the rows
-   unroll and x vectorises; one pass). With vector extensions, 2 L columns at a time: their
-   sums, then dealt into the even and the odd half (two shuffles) */
-LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, ptrdiff_t H, const REAL *const *D,
+/* c[x] = sum over nr rows i of D_i[x], in the order of i (nr is a constant where it is
+   inlined, so that the rows unroll and x vectorises; one pass, one store per x) */
+LRN_INLINE void LRN_CAT(lrn_colsum, IS, RS)(REAL *restrict c, const REAL *const *D,
                                                const int nr, ptrdiff_t xa, ptrdiff_t xb)
 {
-    REAL *restrict ce = c, *restrict co = c + H;
-    ptrdiff_t x = xa;
-    if (x < xb && (x & 1)) {   /* an odd first column on its own: the pairs start even */
+    LRN_IVDEP for (ptrdiff_t x = xa; x < xb; x++) {
         REAL s = 0;
         for (int i = 0; i < nr; i++) s = OADD(s, D[i][x]);
-        co[x >> 1] = s;
-        x++;
-    }
-#if LRN_VECTOR_EXT
-    typedef REAL rv __attribute__((vector_size(32)));
-    enum { L = (int)(32 / sizeof(REAL)) };
-    for (; x + 2 * L <= xb; x += 2 * L) {
-        rv s0 = {0}, s1 = {0};
-        for (int i = 0; i < nr; i++) {
-            rv a, b;
-            memcpy(&a, D[i] + x, sizeof a);
-            memcpy(&b, D[i] + x + L, sizeof b);
-            s0 += a;
-            s1 += b;
-        }
-        rv e, o;
-        RGBZ_CAT(lrn_deal, RS)(s0, s1, &e, &o);
-        memcpy(ce + (x >> 1), &e, sizeof e);
-        memcpy(co + (x >> 1), &o, sizeof o);
-    }
-#endif
-    for (; x < xb; x++) {
-        REAL s = 0;
-        for (int i = 0; i < nr; i++) s = OADD(s, D[i][x]);
-        (x & 1 ? co : ce)[x >> 1] = s;
+        c[x] = s;
     }
 }
 
-/* lrn_colsum for any nr (the constant row counts of the box sums unrolled) */
-LRN_INLINE void LRN_CAT(lrn_sum_rows, IS, RS)(REAL *restrict c, ptrdiff_t H, const REAL *const *D,
-                                                 int nr, ptrdiff_t xa, ptrdiff_t xb)
+/* c[x] = sum over the nr rows D_i of D_i[x], in the order of i, for any nr (the constant
+   row counts of the box sums unrolled) */
+LRN_INLINE void LRN_CAT(lrn_sum_rows, IS, RS)(REAL *restrict c, const REAL *const *D, int nr,
+                                                 ptrdiff_t xa, ptrdiff_t xb)
 {
     switch (nr) {
-    case 1: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 1, xa, xb); break;
-    case 2: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 2, xa, xb); break;
-    case 3: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 3, xa, xb); break;
-    case 4: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 4, xa, xb); break;
-    case 5: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 5, xa, xb); break;
-    case 7: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, 7, xa, xb); break;
-    default: LRN_CAT(lrn_colsum, IS, RS)(c, H, D, nr, xa, xb);
+    case 1: LRN_CAT(lrn_colsum, IS, RS)(c, D, 1, xa, xb); break;
+    case 2: LRN_CAT(lrn_colsum, IS, RS)(c, D, 2, xa, xb); break;
+    case 3: LRN_CAT(lrn_colsum, IS, RS)(c, D, 3, xa, xb); break;
+    case 4: LRN_CAT(lrn_colsum, IS, RS)(c, D, 4, xa, xb); break;
+    case 5: LRN_CAT(lrn_colsum, IS, RS)(c, D, 5, xa, xb); break;
+    case 7: LRN_CAT(lrn_colsum, IS, RS)(c, D, 7, xa, xb); break;
+    default: LRN_CAT(lrn_colsum, IS, RS)(c, D, nr, xa, xb);
     }
 }
 
 /* the row stage of one direction at n sites x = x0 + m PX (c0, c1: its column sums, the rows
-   of even and of odd offset from the rectangle's first row, in the layout of lrn_cs_at; X0:
-   the rectangle's first column at site 0; nc columns; PX and nc are constants where it is
-   inlined, PX even, so that column X0 + j of site m is element m PX / 2 of one half): bxd[m]
-   the box sum of site m and, when split, k[2 r + p][m] (+)= the part of the rows of offset
-   parity r and the columns of offset parity p (assigned when first, else added). Unsplit,
-   c0 holds every row and c1 is not read. */
+   of even and of odd offset from the rectangle's first row, already moved by its first
+   column; nc columns; PX and nc are constants where it is inlined): bxd[m] the box sum of
+   site m and, when split, k[2 r + p][m] (+)= the part of the rows of offset parity r and the
+   columns of offset parity p (assigned when first, else added). Unsplit, c0 holds every row
+   and c1 is not read. */
 LRN_INLINE void LRN_CAT(lrn_rowstage, IS, RS)(const REAL *restrict c0, const REAL *restrict c1,
-                                                 ptrdiff_t H, ptrdiff_t X0, const int nc,
-                                                 const int split, const int first, const int PX,
-                                                 int n, REAL *restrict bxd, REAL *restrict k0,
+                                                 const int nc, const int split, const int first,
+                                                 ptrdiff_t x0, const int PX, int n,
+                                                 REAL *restrict bxd, REAL *restrict k0,
                                                  REAL *restrict k1, REAL *restrict k2,
                                                  REAL *restrict k3)
 {
-    const REAL *p0[2 * 3 + 1], *p1[2 * 3 + 1];   /* column X0 + j: nc <= 2 hr + 1 <= 7 */
-    for (int j = 0; j < nc; j++) {
-        const ptrdiff_t o = LRN_CAT(lrn_cs_at, IS, RS)(X0 + j, H);
-        p0[j] = c0 + o;
-        p1[j] = c1 + o;
-    }
-    const int S = PX / 2;
     if (!split) {
         LRN_IVDEP for (int m = 0; m < n; m++) {
-            const ptrdiff_t x = (ptrdiff_t)m * S;
+            const ptrdiff_t x = x0 + (ptrdiff_t)m * PX;
             REAL s = 0;
-            for (int j = 0; j < nc; j++) s = OADD(s, p0[j][x]);
+            for (int j = 0; j < nc; j++) s = OADD(s, c0[x + j]);
             bxd[m] = s;
         }
         return;
     }
     LRN_IVDEP for (int m = 0; m < n; m++) {
-        const ptrdiff_t x = (ptrdiff_t)m * S;
-        REAL s0e = p0[0][x], s1e = p1[0][x], s0o = 0, s1o = 0;
+        const ptrdiff_t x = x0 + (ptrdiff_t)m * PX;
+        REAL s0e = c0[x], s1e = c1[x], s0o = 0, s1o = 0;
         for (int j = 2; j < nc; j += 2) {
-            s0e = OADD(s0e, p0[j][x]);
-            s1e = OADD(s1e, p1[j][x]);
+            s0e = OADD(s0e, c0[x + j]);
+            s1e = OADD(s1e, c1[x + j]);
         }
         if (nc > 1) {
-            s0o = p0[1][x];
-            s1o = p1[1][x];
+            s0o = c0[x + 1];
+            s1o = c1[x + 1];
         }
         for (int j = 3; j < nc; j += 2) {
-            s0o = OADD(s0o, p0[j][x]);
-            s1o = OADD(s1o, p1[j][x]);
+            s0o = OADD(s0o, c0[x + j]);
+            s1o = OADD(s1o, c1[x + j]);
         }
         bxd[m] = OADD(OADD(s0e, s0o), OADD(s1e, s1o));
         if (first) {
@@ -357,7 +313,6 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdi
                                            REAL *restrict cs)
 {
     static const int SY[RGBZ_LEARNED_DIRS] = {0, 2, 2, 2}, SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
-    const ptrdiff_t H = (cols + 1) / 2;   /* the layout of cs (lrn_cs_at) */
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const int sy = SY[d], sx = SX[d];
         /* the rectangle of pair starts: rows dlo..dhi, columns clo..chi */
@@ -382,15 +337,14 @@ static void LRN_CAT(lrn_energies, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdi
             D[i] = Dr;
         }
         if (!split || d >= RGBZ_LEARNED_SPREAD_DIRS) {
-            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)2 * d * cols, H, D, nr, ca, cb);
+            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)2 * d * cols, D, nr, ca, cb);
             continue;
         }
         for (int r = 0; r < 2; r++) {
             const REAL *Dp[RGBZ_LEARNED_MAX_RADIUS + 1];
             int np = 0;
             for (int i = r; i < nr; i += 2) Dp[np++] = D[i];
-            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)(2 * d + r) * cols, H, Dp, np, ca,
-                                          cb);
+            LRN_CAT(lrn_sum_rows, IS, RS)(cs + (ptrdiff_t)(2 * d + r) * cols, Dp, np, ca, cb);
         }
     }
 }
@@ -406,28 +360,19 @@ static void LRN_CAT(lrn_rows, IS, RS)(const REAL *cs, ptrdiff_t cols, int hr, in
                                        ptrdiff_t x0, int px, int n, REAL *bx)
 {
     static const int SX[RGBZ_LEARNED_DIRS] = {2, 0, 2, -2};
-    const ptrdiff_t H = (cols + 1) / 2;   /* the layout of cs (lrn_cs_at) */
     REAL *k[4];
     for (int q = 0; q < 4; q++) k[q] = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + q) * cols;
     for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
         const int sx = SX[d];
         const int clo = sx < 0 ? -hr - sx : -hr, chi = sx > 0 ? hr - sx : hr;
         const int nc = chi - clo + 1, sp = split && d < RGBZ_LEARNED_SPREAD_DIRS;
-        const REAL *c0 = cs + (ptrdiff_t)2 * d * cols;
+        const REAL *c0 = cs + (ptrdiff_t)2 * d * cols + clo;
         const REAL *c1 = c0 + cols;
-        const ptrdiff_t X0 = x0 + clo;
         REAL *bxd = bx + (ptrdiff_t)d * cols;
-        /* the column counts of hash radius 3 and the periods of Mask1 and Mask2, unrolled
-           (the first direction, the only one that assigns the class rows, on its own) */
+        /* the column counts of hash radius 3 and the periods of Mask1 and Mask2, unrolled */
 #define LRN_ROWS_(NC, PXC)                                                                    \
-        do {                                                                                  \
-            if (d == 0)                                                                       \
-                LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, H, X0, NC, sp, 1, PXC, n, bxd, k[0], k[1], \
-                                              k[2], k[3]);                                    \
-            else                                                                              \
-                LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, H, X0, NC, sp, 0, PXC, n, bxd, k[0], k[1], \
-                                              k[2], k[3]);                                    \
-        } while (0)
+        LRN_CAT(lrn_rowstage, IS, RS)(c0, c1, NC, sp, d == 0, x0, PXC, n, bxd, k[0], k[1], k[2], \
+                                      k[3])
         if (nc == 5 && px == 2) LRN_ROWS_(5, 2);
         else if (nc == 7 && px == 2) LRN_ROWS_(7, 2);
         else if (nc == 5 && px == 4) LRN_ROWS_(5, 4);
