@@ -209,7 +209,8 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
                 const float ww = w[c] * w[c];
                 den[c] += w[c];
                 w2v[c] += ww * vv[c];
-                w2n[c] += ww / (nn[c] > 0.0f ? nn[c] : 1.0f);     /* w = 0 where nn = 0 */
+                /* times the reciprocal, as the fast blocks (w = 0 where nn = 0) */
+                w2n[c] += ww * (1.0f / (nn[c] > 0.0f ? nn[c] : 1.0f));
             }
         } else {
             for (ptrdiff_t c = c0; c < c1; c++) {
@@ -724,24 +725,15 @@ static tofg_pass_args tofg_local(const float *zr, const float *zi, const float *
     return p;
 }
 
-int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
-                      const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
-                      const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
-                      ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
-                      double *or64, double *oi64, float *ov, float *on,
-                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
+/* The four passes strip by strip (any grid lines): rgbz_tofg_denoise's arguments, checked. */
+static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
+                               const float *col, const uint8_t *use, ptrdiff_t F, ptrdiff_t R,
+                               ptrdiff_t C, const int64_t *row_px, const int64_t *col_px,
+                               ptrdiff_t reach_r, ptrdiff_t reach_c, int64_t radius_px,
+                               double inv2h2, double inv2hc2, double *or64, double *oi64,
+                               float *ov, float *on, const tofg_unwrap_out *uw,
+                               ptrdiff_t strip, int nth)
 {
-    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
-        || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
-        || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
-        || !(inv2hc2 >= 0.0))
-        return RGBZ_EINVAL;
-    if (uw && (!uw->freqs || !uw->weights || !uw->depth || !uw->residual || !uw->wraps
-               || !uw->phase || !uw->amp))
-        return RGBZ_EINVAL;
-    if (R == 0 || C == 0) return RGBZ_OK;
-    const int nth = rgbz_threads(workers);
-    (void)nth;
     /* by default a multiple of the threads' count of strips of at most TOFG_STRIP rows, of
        even heights: the threads' shares stay even */
     const ptrdiff_t nt = nth, nauto = nt * ((R + nt * TOFG_STRIP - 1) / (nt * TOFG_STRIP));
@@ -839,6 +831,336 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
         }
         free(mean);
         free(buf);
+    }
+    return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
+}
+
+/* ---------------------------------------------------------------- the sliding pipeline */
+/* The four passes of rgbz_tofg_denoise row by row on evenly spaced grid lines: a band of
+   output rows [b0, b1) runs its rows through the passes in turn, the column passes' inputs
+   held in rings of K = 2H + 1 padded rows (grid row r in slot r mod K), so every row of every
+   pass is computed once per band (a band recomputes only the rows its column passes reach
+   beyond it) and the working set is a few rows of the frame. A padded row holds the grid
+   row's C columns at [pad, pad + C) and zeros (gate 0) around them, so every output column
+   runs in the fast blocks (the off-grid neighbours of the generic row enter with weight 0
+   and add +0 to every sum: the same sums bit for bit). */
+typedef struct {
+    const float *zr, *zi, *v, *col;
+    const uint8_t *use;
+    ptrdiff_t F, R, C, N;
+    ptrdiff_t H, Ac;              /* the column passes' tap offsets |a| <= H, the rows' <= Ac */
+    ptrdiff_t pad, nblk, W, K;    /* the padded row: C at [pad, pad + nblk 16), W floats */
+    const int64_t *row_px, *col_px;
+    ptrdiff_t reach_r, reach_c;
+    int64_t radius_px;
+    float ih, ic;
+    int nrt;                      /* the row passes' taps */
+    ptrdiff_t rshift[2 * 64 + 1];
+    double *or64, *oi64;
+    float *ov, *on;
+    const tofg_unwrap_out *uw;
+    ptrdiff_t chunk;              /* output rows per unwrapping */
+} tofg_slide;
+
+/* one thread's buffers (floats unless said): see tofg_slide_alloc */
+typedef struct {
+    float *raw, *gate, *ones, *E, *colr, *r1, *g2, *n2, *gd, *r3, *g4, *n4, *pr2, *pr4, *tv,
+          *tn;
+    double *t64, *mean;
+    void *block;
+} tofg_slide_buf;
+
+static int tofg_slide_alloc(const tofg_slide *S, tofg_slide_buf *b)
+{
+    const size_t F = (size_t)S->F, W = (size_t)S->W, KW = (size_t)S->K * W;
+    const size_t A1 = (size_t)S->H + 1, P = (2 * F + 2) * KW;
+    size_t nf = (2 * F + 1) * W + 2 * W + ((size_t)S->Ac + 1) * W + 3 * KW + 3 * P + 4 * KW
+                + 2 * A1 * A1 * W + 2 * W;
+    nf = (nf + 1) & ~(size_t)1;                      /* the doubles after it stay aligned */
+    const size_t nd = 2 * F * W + (S->uw ? 2 * F * (size_t)S->chunk * (size_t)S->C : 0);
+    /* zeros: the padding of every row stays 0 (finite, gate 0) */
+    float *f = calloc(nf * sizeof(float) + nd * sizeof(double), 1);
+    b->block = f;
+    if (!f) return 0;
+    b->raw = f;
+    b->gate = b->raw + (2 * F + 1) * W;
+    b->ones = b->gate + W;
+    b->E = b->ones + W;
+    b->colr = b->E + ((size_t)S->Ac + 1) * W;
+    b->r1 = b->colr + 3 * KW;
+    b->g2 = b->r1 + P;
+    b->n2 = b->g2 + KW;
+    b->gd = b->n2 + KW;
+    b->r3 = b->gd + P;
+    b->g4 = b->r3 + P;
+    b->n4 = b->g4 + KW;
+    b->pr2 = b->n4 + KW;
+    b->pr4 = b->pr2 + A1 * A1 * W;
+    b->tv = b->pr4 + A1 * A1 * W;
+    b->tn = b->tv + W;
+    b->t64 = (double *)(f + nf);
+    b->mean = S->uw ? b->t64 + 2 * F * W : NULL;
+    for (size_t k = 0; k < W; k++) b->ones[k] = 1.0f;
+    return 1;
+}
+
+/* grid row r of the frame's raw phasors, variance and use into the padded row buffers */
+static void tofg_slide_raw(const tofg_slide *S, const tofg_slide_buf *b, ptrdiff_t r)
+{
+    const ptrdiff_t F = S->F, C = S->C, W = S->W, N = S->N, o = r * C, pd = S->pad;
+    for (ptrdiff_t f = 0; f < F; f++) {
+        memcpy(b->raw + f * W + pd, S->zr + f * N + o, (size_t)C * sizeof(float));
+        memcpy(b->raw + (F + f) * W + pd, S->zi + f * N + o, (size_t)C * sizeof(float));
+    }
+    memcpy(b->raw + 2 * F * W + pd, S->v + o, (size_t)C * sizeof(float));
+    for (ptrdiff_t c = 0; c < C; c++) b->gate[pd + c] = S->use[o + c] != 0 ? 1.0f : 0.0f;
+}
+
+/* the pass arguments of a row pass of the padded raw row (its data) guided by gr (planes of
+   stride gs) into the ring at base `out` (planes of stride KW) */
+static tofg_pass_args tofg_slide_rowargs(const tofg_slide *S, const tofg_slide_buf *b,
+                                         const float *gr, const float *gi, const float *gv,
+                                         ptrdiff_t gs, const float *colrow, float *out)
+{
+    const ptrdiff_t F = S->F, W = S->W, KW = S->K * W;
+    const tofg_pass_args p = {
+        b->raw, b->raw + F * W, b->raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
+        S->C, 1, S->col_px, S->reach_c, S->radius_px, S->ih, S->ic, out, out + F * KW, out +
+        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, b->gate, b->ones};
+    return p;
+}
+
+/* one row pass (p: a single padded row, m = pad + column) */
+static void tofg_slide_row(const tofg_slide *S, const tofg_pass_args *p, float *E)
+{
+    const ptrdiff_t pd = S->pad, W = S->W, n = S->nblk * TOFG_BW;
+    const float *ew[2 * 64 + 1];
+    for (ptrdiff_t a = 0; a <= S->Ac; a++) tofg_pairs(p, pd - a, pd, n + a, E + a * W + pd - a);
+    for (int t = 0; t < S->nrt; t++) {
+        const ptrdiff_t a = S->rshift[t];
+        ew[t] = a >= 0 ? E + a * W + pd : E + (-a) * W + pd + a;
+    }
+    tofg_blocks(p, pd, S->nblk, S->rshift, ew, S->nrt);
+}
+
+/* the pair weights e(r, r + a), a = 0..H, of ring row r into slot r mod (H + 1) of pr */
+static void tofg_slide_colpairs(const tofg_slide *S, const tofg_pass_args *p, float *pr,
+                                ptrdiff_t r)
+{
+    const ptrdiff_t H = S->H, W = S->W, K = S->K, pd = S->pad, n = S->nblk * TOFG_BW;
+    float *own = pr + (r % (H + 1)) * (H + 1) * W;
+    for (ptrdiff_t a = 0; a <= H && r + a < S->R; a++)
+        tofg_pairs(p, (r % K) * W + pd, ((r + a) % K) * W + pd, n, own + a * W);
+}
+
+/* output row r of a column pass over the rings (pair weights in pr) */
+static void tofg_slide_col(const tofg_slide *S, const tofg_pass_args *p, const float *pr,
+                           ptrdiff_t r)
+{
+    const ptrdiff_t H = S->H, W = S->W, K = S->K, pd = S->pad, A1 = H + 1;
+    ptrdiff_t shift[2 * 64 + 1];
+    const float *ew[2 * 64 + 1];
+    int nt = 0;
+    for (ptrdiff_t a = -H; a <= H; a++) {
+        if (r + a < 0 || r + a >= S->R) continue;
+        shift[nt] = ((r + a) % K - r % K) * W;
+        ew[nt++] = a >= 0 ? pr + (r % A1) * A1 * W + a * W
+                          : pr + ((r + a) % A1) * A1 * W + (-a) * W;
+    }
+    tofg_blocks(p, (r % K) * W + pd, S->nblk, shift, ew, nt);
+}
+
+/* the gates of ring row r of a column pass's data (n_eff in neff) into g, n (tofg_gates) */
+static void tofg_slide_gates(const tofg_slide *S, const float *neff, float *g, float *n,
+                             ptrdiff_t r)
+{
+    const ptrdiff_t o = (r % S->K) * S->W + S->pad, C = S->C, m = r * C;
+    for (ptrdiff_t c = 0; c < C; c++) {
+        const float nn = neff[o + c];
+        g[o + c] = S->use[m + c] != 0 && nn > 0.0f ? 1.0f : 0.0f;
+        n[o + c] = 1.0f / (nn > 0.0f ? nn : 1.0f);
+    }
+}
+
+/* unwrap the output rows [c0, c1) held in b->mean (2F planes of chunk C doubles, packed
+   here to planes of (c1 - c0) C); RGBZ_OK, RGBZ_EDOMAIN or another status */
+static int tofg_slide_unwrap(const tofg_slide *S, const tofg_slide_buf *b, ptrdiff_t c0,
+                             ptrdiff_t c1)
+{
+    const tofg_unwrap_out *uw = S->uw;
+    const ptrdiff_t ns = (c1 - c0) * S->C, o = c0 * S->C, cs = S->chunk * S->C;
+    if (ns <= 0) return RGBZ_OK;
+    if (ns < cs)
+        for (ptrdiff_t f = 1; f < 2 * S->F; f++)
+            memmove(b->mean + f * ns, b->mean + f * cs, (size_t)ns * sizeof(double));
+    return rgbz_tof_depth_iq_strided(b->mean, b->mean + S->F * ns, S->F, ns, S->N, uw->freqs,
+                                     uw->weights, uw->max_range, uw->depth + o,
+                                     uw->residual + o, uw->wraps + o, uw->phase + o,
+                                     uw->amp + o, 1);
+}
+
+/* the band of output rows [b0, b1); returns RGBZ_OK, RGBZ_EDOMAIN or another status */
+static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, ptrdiff_t b0,
+                           ptrdiff_t b1)
+{
+    const ptrdiff_t F = S->F, C = S->C, R = S->R, H = S->H, W = S->W, K = S->K, KW = K * W;
+    const ptrdiff_t pd = S->pad, N = S->N;
+    const ptrdiff_t lo1 = b0 - 2 * H > 0 ? b0 - 2 * H : 0, hi1 = b1 + 2 * H < R ? b1 + 2 * H : R;
+    const ptrdiff_t lo2 = b0 - H > 0 ? b0 - H : 0, hi2 = b1 + H < R ? b1 + H : R;
+    /* the rows whose column pair weights the outputs reach: H above the first output */
+    const ptrdiff_t lp2 = lo2 - H > 0 ? lo2 - H : 0, lp4 = b0 - H > 0 ? b0 - H : 0;
+    /* the column passes: 2 = columns of 1 (ring r1) guided by themselves into gd; 4 = columns
+       of 3 (ring r3) guided by gd, to t64, tv, tn */
+    const tofg_pass_args p2 = {
+        b->r1, b->r1 + F * KW, b->r1 + 2 * F * KW, b->r1 + (2 * F + 1) * KW, b->r1,
+        b->r1 + F * KW, b->r1 + 2 * F * KW, b->colr, S->use, F, R, C, 0, S->row_px, S->reach_r,
+        S->radius_px, S->ih, S->ic, b->gd, b->gd + F * KW, b->gd + 2 * F * KW,
+        b->gd + (2 * F + 1) * KW, NULL, NULL, KW, KW, KW, KW, 0, b->g2, b->n2};
+    tofg_pass_args p4 = {
+        b->r3, b->r3 + F * KW, b->r3 + 2 * F * KW, b->r3 + (2 * F + 1) * KW, b->gd,
+        b->gd + F * KW, b->gd + 2 * F * KW, b->colr, S->use, F, R, C, 0, S->row_px, S->reach_r,
+        S->radius_px, S->ih, S->ic, NULL, NULL, b->tv, b->tn, b->t64, b->t64 + F * W, KW, KW,
+        KW, W, 0, b->g4, b->n4};
+    int st = RGBZ_OK;
+    ptrdiff_t cstart = b0;                 /* the first output row of the unwrapping chunk */
+    for (ptrdiff_t t = lo1; t < hi1 + 2 * H; t++) {
+        if (t < hi1) {                     /* 1: row t of the raw phasors guided by itself */
+            const ptrdiff_t so = (t % K) * W;
+            for (int k = 0; k < 3; k++)
+                memcpy(b->colr + k * KW + so + pd, S->col + k * N + t * C,
+                       (size_t)C * sizeof(float));
+            tofg_slide_raw(S, b, t);
+            const tofg_pass_args p1 = tofg_slide_rowargs(S, b, b->raw, b->raw + F * W,
+                                                         b->raw + 2 * F * W, W, b->colr + so,
+                                                         b->r1 + so);
+            tofg_slide_row(S, &p1, b->E);
+            tofg_slide_gates(S, b->r1 + (2 * F + 1) * KW, b->g2, b->n2, t);
+        }
+        const ptrdiff_t q = t - H;         /* 2 and 3 at row q */
+        if (q >= lp2 && q < hi2) tofg_slide_colpairs(S, &p2, b->pr2, q);
+        if (q >= lo2 && q < hi2) {
+            tofg_slide_col(S, &p2, b->pr2, q);
+            const ptrdiff_t so = (q % K) * W;
+            tofg_slide_raw(S, b, q);
+            const tofg_pass_args p3 = tofg_slide_rowargs(S, b, b->gd + so, b->gd + F * KW + so,
+                                                         b->gd + 2 * F * KW + so, KW,
+                                                         b->colr + so, b->r3 + so);
+            tofg_slide_row(S, &p3, b->E);
+            tofg_slide_gates(S, b->r3 + (2 * F + 1) * KW, b->g4, b->n4, q);
+        }
+        const ptrdiff_t s = t - 2 * H;     /* 4 at row s */
+        if (s >= lp4 && s < b1) tofg_slide_colpairs(S, &p4, b->pr4, s);
+        if (s >= b0 && s < b1) {
+            p4.ooff = (s % K) * W;
+            tofg_slide_col(S, &p4, b->pr4, s);
+            const ptrdiff_t o = s * C;
+            memcpy(S->ov + o, b->tv + pd, (size_t)C * sizeof(float));
+            memcpy(S->on + o, b->tn + pd, (size_t)C * sizeof(float));
+            if (S->uw) {
+                const ptrdiff_t cs = S->chunk * C, mo = (s - cstart) * C;
+                for (ptrdiff_t f = 0; f < F; f++) {
+                    memcpy(b->mean + f * cs + mo, b->t64 + f * W + pd,
+                           (size_t)C * sizeof(double));
+                    memcpy(b->mean + (F + f) * cs + mo, b->t64 + (F + f) * W + pd,
+                           (size_t)C * sizeof(double));
+                }
+                if (s + 1 - cstart == S->chunk || s + 1 == b1) {
+                    const int u = tofg_slide_unwrap(S, b, cstart, s + 1);
+                    st = u == RGBZ_OK ? st : st == RGBZ_OK || st == RGBZ_EDOMAIN ? u : st;
+                    cstart = s + 1;
+                }
+            } else {
+                for (ptrdiff_t f = 0; f < F; f++) {
+                    memcpy(S->or64 + f * N + o, b->t64 + f * W + pd, (size_t)C * sizeof(double));
+                    memcpy(S->oi64 + f * N + o, b->t64 + (F + f) * W + pd,
+                           (size_t)C * sizeof(double));
+                }
+            }
+        }
+    }
+    return st;
+}
+
+/* output rows per unwrapping of the sliding pipeline (its means in double, 2F planes) */
+#define TOFG_CHUNK 8
+
+int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
+                      const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
+                      const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
+                      ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
+                      double *or64, double *oi64, float *ov, float *on,
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
+{
+    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
+        || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
+        || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
+        || !(inv2hc2 >= 0.0))
+        return RGBZ_EINVAL;
+    if (uw && (!uw->freqs || !uw->weights || !uw->depth || !uw->residual || !uw->wraps
+               || !uw->phase || !uw->amp))
+        return RGBZ_EINVAL;
+    if (R == 0 || C == 0) return RGBZ_OK;
+    const int nth = rgbz_threads(workers);
+    const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
+    const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
+    if (!qr.fast || !qc.fast)
+        return tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px, reach_r,
+                                   reach_c, radius_px, inv2h2, inv2hc2, or64, oi64, ov, on, uw,
+                                   strip, nth);
+    tofg_slide S;
+    S.zr = zr;
+    S.zi = zi;
+    S.v = v;
+    S.col = col;
+    S.use = use;
+    S.F = F;
+    S.R = R;
+    S.C = C;
+    S.N = R * C;
+    S.H = qc.A;
+    S.Ac = qr.A;
+    S.pad = qr.A;
+    S.nblk = (C + TOFG_BW - 1) / TOFG_BW;
+    S.W = 2 * qr.A + S.nblk * TOFG_BW;
+    S.K = 2 * qc.A + 1;
+    S.row_px = row_px;
+    S.col_px = col_px;
+    S.reach_r = reach_r;
+    S.reach_c = reach_c;
+    S.radius_px = radius_px;
+    S.ih = (float)inv2h2;
+    S.ic = (float)inv2hc2;
+    S.nrt = 0;
+    for (ptrdiff_t a = -qr.A; a <= qr.A; a++) S.rshift[S.nrt++] = a;
+    S.or64 = or64;
+    S.oi64 = oi64;
+    S.ov = ov;
+    S.on = on;
+    S.uw = uw;
+    S.chunk = TOFG_CHUNK;
+    /* bands of output rows: one per thread, or `strip` rows each; a band recomputes the 4H
+       rows of the first pass and 2H of the next two beyond its ends */
+    const ptrdiff_t nb = strip > 0 ? (R + strip - 1) / strip : (R < nth ? R : nth);
+    int bad = 0, dom = 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth) reduction(|:bad, dom)
+#endif
+    {
+        tofg_slide_buf b;
+        const int ok = tofg_slide_alloc(&S, &b);
+        bad |= !ok;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (ptrdiff_t k = 0; k < nb; k++) {
+            if (!ok) continue;
+            const ptrdiff_t b0 = strip > 0 ? k * strip : k * R / nb;
+            const ptrdiff_t b1 = strip > 0 ? (b0 + strip < R ? b0 + strip : R) : (k + 1) * R / nb;
+            const int st = tofg_slide_band(&S, &b, b0, b1);
+            dom |= st == RGBZ_EDOMAIN;
+            bad |= st != RGBZ_OK && st != RGBZ_EDOMAIN;
+        }
+        free(b.block);
     }
     return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
 }
