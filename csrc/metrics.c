@@ -226,6 +226,69 @@ static void mt_hpass(const double *v, ptrdiff_t n, const double *w, int rad,
     }
 }
 
+/* The vertical pass of the default window from a ring of input rows (metrics.template.h:
+   mt_ring_fill): MT_RING_ROWS slots, nq quantities per row at ring + (slot * nq + q) * cols,
+   row r in slot r % MT_RING_ROWS. Output row i reads input rows i .. i + 2 MT_SSIM_RAD; its
+   quantity q goes to m + (t * nq + q) * cols for the t-th of the g rows i .. i + g - 1
+   (g <= MT_VROWS), filtered in the order of mt_ssim_vpass_x / _y: the centre times its weight,
+   then the pairs from the farthest to the nearest. MT_VROWS rows at a time read each input
+   row once for all of them: the ring is in L2, and its loads are what the pass waits for. */
+#define MT_VROWS 4
+#define MT_RING_ROWS (2 * MT_SSIM_RAD + MT_VROWS)
+
+static inline MT_INLINE void mt_vpass_rows(const double *const *r, int g, ptrdiff_t cols,
+                                           const double *w, double *const *o)
+{
+    const double wc = w[MT_SSIM_RAD];
+    if (g == MT_VROWS) {
+        double *restrict o0 = o[0], *restrict o1 = o[1], *restrict o2 = o[2];
+        double *restrict o3 = o[3];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < cols; j++) {
+            double s0 = r[MT_SSIM_RAD][j] * wc, s1 = r[MT_SSIM_RAD + 1][j] * wc;
+            double s2 = r[MT_SSIM_RAD + 2][j] * wc, s3 = r[MT_SSIM_RAD + 3][j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--) {
+                const double wk = w[MT_SSIM_RAD - k];
+                s0 += (r[MT_SSIM_RAD - k][j] + r[MT_SSIM_RAD + k][j]) * wk;
+                s1 += (r[MT_SSIM_RAD + 1 - k][j] + r[MT_SSIM_RAD + 1 + k][j]) * wk;
+                s2 += (r[MT_SSIM_RAD + 2 - k][j] + r[MT_SSIM_RAD + 2 + k][j]) * wk;
+                s3 += (r[MT_SSIM_RAD + 3 - k][j] + r[MT_SSIM_RAD + 3 + k][j]) * wk;
+            }
+            o0[j] = s0;
+            o1[j] = s1;
+            o2[j] = s2;
+            o3[j] = s3;
+        }
+        return;
+    }
+    for (int t = 0; t < g; t++) {
+        double *restrict ot = o[t];
+        const double *const *rt = r + t;
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < cols; j++) {
+            double s = rt[MT_SSIM_RAD][j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--)
+                s += (rt[MT_SSIM_RAD - k][j] + rt[MT_SSIM_RAD + k][j]) * w[MT_SSIM_RAD - k];
+            ot[j] = s;
+        }
+    }
+}
+
+static void mt_vpass_ring(const double *ring, int nq, ptrdiff_t i, int g, ptrdiff_t cols,
+                          const double *w, double *m)
+{
+    for (int q = 0; q < nq; q++) {
+        const double *r[MT_RING_ROWS];
+        double *o[MT_VROWS];
+        for (int k = 0; k < 2 * MT_SSIM_RAD + g; k++)
+            r[k] = ring + ((ptrdiff_t)((i + k) % MT_RING_ROWS) * nq + q) * cols;
+        for (int t = 0; t < g; t++) o[t] = m + (ptrdiff_t)(t * nq + q) * cols;
+        mt_vpass_rows(r, g, cols, w, o);
+    }
+}
+
 /* SSIM, reference side: the horizontal pass over the two moment rows m (x, x^2 filtered
    along the columns, mt_ssim_vpass_x) into the mean and the variance of x over each of the
    cols - 2 rad windows of the row: mom[0..n) = mu_x, mom[n..2n) = E[x^2] - mu_x^2, the values
