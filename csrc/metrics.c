@@ -319,6 +319,13 @@ static inline MT_INLINE double mt_ssim_value(double mx, double vx, double my, do
     return lum * cs;
 }
 
+static inline MT_INLINE double mt_cs_value(double mx, double vx, double my, double eyy,
+                                           double exy, double c2)
+{
+    const double vy = eyy - my * my, vxy = exy - mx * my;
+    return (2.0 * vxy + c2) / (vx + vy + c2);
+}
+
 static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
                             const double *w, int rad, double c1, double c2, double *restrict a,
                             double *ssim_row, double *cs_row)
@@ -326,6 +333,25 @@ static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
     const ptrdiff_t n = cols - 2 * rad;
     const double *ax = mom, *vxs = mom + n;
     double *restrict ssim_v = a, *restrict cs_v = a + n;
+    if (rad == MT_SSIM_RAD && !ssim_row) {          /* c s alone: one division a window */
+        const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
+        const double *vxy = m + 2 * cols + MT_SSIM_RAD;
+        const double wc = w[MT_SSIM_RAD];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++) {
+            double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--) {
+                const double wk = w[MT_SSIM_RAD - k];
+                sy += (vy[j - k] + vy[j + k]) * wk;
+                syy += (vyy[j - k] + vyy[j + k]) * wk;
+                sxy += (vxy[j - k] + vxy[j + k]) * wk;
+            }
+            cs_v[j] = mt_cs_value(ax[j], vxs[j], sy, syy, sxy, c2);
+        }
+        *cs_row = mt_sum(cs_v, n);
+        return;
+    }
     if (rad == MT_SSIM_RAD) {
         const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
         const double *vxy = m + 2 * cols + MT_SSIM_RAD;
@@ -351,7 +377,7 @@ static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
         for (ptrdiff_t j = 0; j < n; j++)
             ssim_v[j] = mt_ssim_value(ax[j], vxs[j], ay[j], ayy[j], axy[j], c1, c2, &cs_v[j]);
     }
-    *ssim_row = mt_sum(ssim_v, n);
+    if (ssim_row) *ssim_row = mt_sum(ssim_v, n);
     *cs_row = mt_sum(cs_v, n);
 }
 
@@ -452,7 +478,7 @@ int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y,
                              ptrdiff_t cols, const double *weights, int ntaps, double c1,
                              double c2, double *ssim_sum, double *cs_sum, int workers)
 {
-    if (!mt_ssim_args_ok(x, planes, rows, cols, weights, ntaps) || !y || !ssim_sum || !cs_sum)
+    if (!mt_ssim_args_ok(x, planes, rows, cols, weights, ntaps) || !y || !cs_sum)
         return RGBZ_EINVAL;
 #define MT_CALL_(s, T)                                                                       \
     return RGBZ_CAT(mt_ssim_sums, s)(x, y, x_moments, planes, rows, cols, weights, ntaps, c1, \

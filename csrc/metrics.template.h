@@ -306,7 +306,7 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
                     mt_ssim_hpass_x(mx, cols, w, rad, xmom);
                 }
                 mt_ssim_hpass_y(m + 3 * t * cols, xmom, cols, w, rad, c1, c2, vals,
-                                rowsum + 2 * ut, rowsum + 2 * ut + 1);
+                                ssim_sum ? rowsum + 2 * ut : NULL, rowsum + 2 * ut + 1);
             }
             u += g;
         }
@@ -316,10 +316,10 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
         for (ptrdiff_t p = 0; p < planes; p++) {
             double s = 0.0, c = 0.0;
             for (ptrdiff_t i = 0; i < orows; i++) {
-                s += rowsum[2 * (p * orows + i)];
+                if (ssim_sum) s += rowsum[2 * (p * orows + i)];
                 c += rowsum[2 * (p * orows + i) + 1];
             }
-            ssim_sum[p] = s;
+            if (ssim_sum) ssim_sum[p] = s;
             cs_sum[p] = c;
         }
     }
