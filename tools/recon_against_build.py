@@ -1,0 +1,122 @@
+"""This build's reconstruction against another build's extension: bit for bit, or paired speed.
+
+    python tools/recon_against_build.py same OTHER.so [--calls 100] [--seed 0]
+    python tools/recon_against_build.py speed OTHER.so [--pattern mask2] [--workers 2] [--rounds 9]
+
+OTHER.so: a copy of src/rgbz_fast/_kernels*.so of the build to compare with (copy it out of
+build/ before changing the C code). Both extensions are loaded in one process; the Python
+layer of this checkout calls one or the other.
+
+``same``: random ``reconstruct`` calls (Mask1, Mask2 at three Bayer phases; sg, edi_line,
+edi_central, bi, bilinear; the four element types; both precisions, exponentials, domains
+and sigma_rel values; a clip level in one call of five; random, smooth and partly flat
+frames of 8-69 x 8-299 pixels; 1 or 2 threads), each output compared bit for bit; exits 1 if
+one differs.
+
+``speed``: SG on the 12 MP bench frame (``make_rgb((3000, 4000))`` mosaicked), the two
+extensions alternated call by call (the order swapped every round, one warm-up round), and
+the median [IQR] of the rounds' speed ratios this / OTHER (> 1: this build is faster).
+"""
+import argparse
+import importlib.util
+import sys
+import time
+
+import numpy as np
+
+import rgbz_fast as rz
+from rgbz_fast._devtools.bench import make_rgb
+from rgbz_fast.reconstruction import _reconstruct as R
+
+
+def load(path):
+    spec = importlib.util.spec_from_file_location("rgbz_fast._kernels", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def run_with(kernels, *args, **kw):
+    saved = R._kernels
+    R._kernels = kernels
+    try:
+        return rz.reconstruct(*args, **kw)
+    finally:
+        R._kernels = saved
+
+
+def same(other, calls, seed):
+    cur = R._kernels
+    rng = np.random.default_rng(seed)
+    pats = ["mask2", "mask2", "mask2", rz.mask2("RGGB"), rz.mask2("BGGR"), "mask1"]
+    methods = ["sg", "sg", "sg", "edi_line", "edi_central", "bi", "bilinear"]
+    bad = 0
+    for i in range(calls):
+        pat = pats[rng.integers(len(pats))]
+        meth = methods[rng.integers(len(methods))]
+        dt = [np.uint8, np.uint16, np.float32, np.float64][rng.integers(4)]
+        rows, cols = int(rng.integers(8, 70)), int(rng.integers(8, 300))
+        bd = 8 if dt == np.uint8 else 11
+        kw = dict(precision=["float32", "float64"][rng.integers(2)],
+                  exp=["libm", "fast"][rng.integers(2)],
+                  domain=["intensity", "colour_difference"][rng.integers(2)],
+                  sigma_rel=[0.0, 0.5][rng.integers(2)])
+        if meth == "sg":
+            kw["sg_mode"] = ["auto", "pure", "combined"][rng.integers(3)]
+        if rng.random() < 0.2:
+            kw["clip_level"] = float(0.8 * ((1 << bd) - 1))
+        smooth = rng.random() < 0.5
+        x = rng.random((rows, cols)) * ((1 << bd) - 1)
+        if smooth:
+            x = np.cumsum(np.cumsum(x, 0), 1)
+            x = x / x.max() * ((1 << bd) - 1)
+        if rng.random() < 0.2:
+            x[:, : cols // 3] = 100.0
+        frame = x.astype(dt) if dt in (np.float32, np.float64) else np.round(x).astype(dt)
+        w = int(rng.integers(1, 3))
+        a, b = (run_with(k, frame, meth, pattern=pat, bit_depth=bd, workers=w, **kw)
+                for k in (cur, other))
+        if not (a.dtype == b.dtype and np.array_equal(a.view(np.uint8), b.view(np.uint8))):
+            bad += 1
+            print("differs:", i, getattr(pat, "name", pat), meth, dt.__name__, rows, cols, w, kw)
+    print(f"{calls} calls, {bad} differ")
+    return 1 if bad else 0
+
+
+def speed(other, pattern, workers, rounds):
+    cur = R._kernels
+    frame = rz.mosaic(make_rgb((3000, 4000)), pattern)
+    ratios = []
+    for i in range(rounds + 1):
+        t = {}
+        order = (("this", cur), ("other", other)) if i % 2 else (("other", other), ("this", cur))
+        for name, k in order:
+            t0 = time.perf_counter()
+            run_with(k, frame, "sg", workers=workers)
+            t[name] = time.perf_counter() - t0
+        if i:
+            ratios.append(t["other"] / t["this"])
+    q = np.percentile(ratios, [25, 50, 75])
+    print(f"sg {pattern} float32, {workers} thread(s): speed this / other {q[1]:.3f} "
+          f"[{q[0]:.3f}-{q[2]:.3f}], {rounds} rounds")
+    return 0
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("what", choices=("same", "speed"))
+    ap.add_argument("other", help="the other build's _kernels extension file")
+    ap.add_argument("--calls", type=int, default=100)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--pattern", default="mask2")
+    ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--rounds", type=int, default=9)
+    a = ap.parse_args(argv)
+    other = load(a.other)
+    if a.what == "same":
+        return same(other, a.calls, a.seed)
+    return speed(other, a.pattern, a.workers, a.rounds)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
