@@ -133,7 +133,11 @@ def _frames_coded(img, pattern, config, memo):
         top = (1 << check_bit_depth(config.bit_depth)) - 1
         table = srgb_decode_table(8 * img.itemsize).astype(np.float64) * top
         table = np.floor(table + 0.5).astype(np.uint16)
-        codes = np.take_along_axis(img, bayer.bayer_map(shape)[..., None], axis=2)[..., 0]
+        colour = bayer.bayer_map(shape)
+        (py, px), codes = bayer.period, np.empty(shape, img.dtype)
+        for dy in range(min(py, shape[0])):                # one strided copy per tile site
+            for dx in range(min(px, shape[1])):
+                codes[dy::py, dx::px] = img[dy::py, dx::px, colour[dy, dx]]
         references[bayer] = table[codes]
     data = references[bayer].copy()
     data[pattern.channel_map(shape) == _patterns.Z] = 0
