@@ -13,7 +13,8 @@
  * loaded tap-major (v[t][j], tap t of site j), the hash runs on whole rows of v
  * (branch-free selects), and the dot product gathers each site's weight of tap t
  * from the tap-major weight table (w[t][bucket]), so every loop runs over j. Interior sites
- * take the fast path (box sums, dense weights: learned_hash.template.h).
+ * take the fast path (box sums, dense weights: learned_hash.template.h), the sites of a phase
+ * in a strip row all at once.
  */
 #ifndef IN_T
 #error "learned.template.h: define IN_T (the element type)"
@@ -38,22 +39,6 @@
 /* the hash, the dot products and the fast path's rows (shared with z_guided) */
 #include "learned_hash.template.h"
 
-
-/* the fast path's sites x0, x0 + px, ... (n of them) of phase k: their buckets
-   (lrn_fast_bucket), their dense dot products (rowp: the REAL rows) */
-LRN_CLONES
-static void LRN_CAT(lrn_fast_block, IS, RS)(const REAL *const *rowp, ptrdiff_t y, ptrdiff_t x0,
-                                             int px, int n, const rgbz_learned_filters *f, int k,
-                                             const REAL *bx, ptrdiff_t m0, ptrdiff_t cols,
-                                             const REAL *dense, REAL *res)
-{
-    const int R = f->radius;
-    int32_t bucket[LRN_BLK];
-    LRN_CAT(lrn_fast_bucket, IS, RS)(y, x0, n, f, k, bx, m0, cols, bucket);
-    LRN_CAT(lrn_dense_dot, IS, RS)(rowp, x0, px, n,
-                                   dense + (ptrdiff_t)k * f->n_buckets * (2 * R + 1) * 8, R,
-                                   bucket, res);
-}
 
 /* the sites x0, x0 + px, ... (n of them, n <= LRN_BLK) of phase k through the generic path:
    taps gathered tap-major (through the column map at the borders), hash pairs, dot */
@@ -130,9 +115,19 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
         /* the fast path's rows: cs (2 per direction), bxs (1 per direction and the 4 class
            rows, of the sites of one phase), the REAL ring, the D rings */
         REAL *scratch = dense ? malloc((size_t)cols * (3 * RGBZ_LEARNED_DIRS + 4 + LRN_RING +
-                                                       RGBZ_LEARNED_DIRS * LRN_RING) *
+                                                       RGBZ_LEARNED_DIRS * LRN_RING + 1) *
                                        sizeof(REAL))
                               : NULL;
+        /* the fast sites of one phase in a strip row, all at once: their results (the last
+           row of scratch) and buckets */
+        int32_t *fbucket = scratch ? malloc((size_t)cols * sizeof *fbucket) : NULL;
+        REAL *fres = fbucket ? scratch + (ptrdiff_t)(3 * RGBZ_LEARNED_DIRS + 4 + LRN_RING +
+                                                     RGBZ_LEARNED_DIRS * LRN_RING) * cols
+                             : NULL;
+        if (!fbucket) {
+            free(scratch);
+            scratch = NULL;
+        }
         REAL *conv = scratch ? scratch + (ptrdiff_t)(3 * RGBZ_LEARNED_DIRS + 4) * cols : NULL;
         REAL *bxs = scratch ? scratch + (ptrdiff_t)2 * RGBZ_LEARNED_DIRS * cols : NULL;
         const int split = f->n_spr > 1;
@@ -264,22 +259,21 @@ static int LRN_CAT(lrn_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict ds
                        box sums, then blocks of them */
                     const ptrdiff_t xs = sa + ((ph0 - sa) % px + px) % px;
                     if (xs >= sb) continue;
-                    LRN_CAT(lrn_rows, IS, RS)(scratch, cols, hr, split, xs, px,
-                                              (int)((sb - 1 - xs) / px + 1), bxs);
-                    for (ptrdiff_t x0 = xs; x0 < sb;) {
-                        const ptrdiff_t left = (sb - 1 - x0) / px + 1;
-                        const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
-                        LRN_CAT(lrn_fast_block, IS, RS)(realp, y, x0, px, n, f, k, bxs,
-                                                        (x0 - xs) / px, cols, dense, res);
-                        for (int j = 0; j < n; j++)
-                            drow[x0 + (ptrdiff_t)j * px] =
-                            (IN_T)RGBZ_CAT(rgbz_out, RS)(res[j], maxval, IN_IS_INT);
-                        x0 += (ptrdiff_t)n * px;
-                    }
+                    const int n = (int)((sb - 1 - xs) / px + 1);
+                    LRN_CAT(lrn_rows, IS, RS)(scratch, cols, hr, split, xs, px, n, bxs);
+                    LRN_CAT(lrn_fast_bucket, IS, RS)(y, xs, n, f, k, bxs, 0, cols, fbucket);
+                    LRN_CAT(lrn_dense_dot, IS, RS)(realp, xs, px, n,
+                                                   dense + (ptrdiff_t)k * f->n_buckets *
+                                                               (2 * R + 1) * 8,
+                                                   R, fbucket, fres);
+                    for (int j = 0; j < n; j++)
+                        drow[xs + (ptrdiff_t)j * px] =
+                            (IN_T)RGBZ_CAT(rgbz_out, RS)(fres[j], maxval, IN_IS_INT);
                 }
             }
         }
         free(scratch);
+        free(fbucket);
     }
     free(valid);
     return status;

@@ -66,6 +66,39 @@ static inline void LRN_CAT(lrn_bucket, IS, RS)(REAL (*restrict e)[LRN_BLK],
     }
 }
 
+/* the bucket of one site, lrn_bucket's arithmetic in its order, from its direction energies
+   e0 .. e3 and (spread: a constant where it is inlined) its colour energies r, g, b, with at
+   most two thresholds of each kind: st, ct, kt hold them padded with +inf (a padded strength
+   or coherence level never counts: t > inf and m2 > inf * t^2 are false, inf * 0 is NaN;
+   likewise a padded spread level); ms, mc: the bucket steps of a strength and a coherence
+   level, mo that of an octant */
+LRN_INLINE int32_t LRN_CAT(lrn_bucket1, IS, RS)(REAL e0, REAL e1, REAL e2, REAL e3, REAL r,
+                                               REAL g, REAL b_, const int spread,
+                                               const REAL *st, const REAL *ct, const REAL *kt,
+                                               int32_t mo, int32_t ms, int32_t mc)
+{
+    const REAL C = (REAL)0.92387953251128674, S = (REAL)0.38268343236508978;
+    const REAL a = OSUB(e0, e1);
+    const REAL b = OMUL(OSUB(e2, e3), (REAL)0.5);
+    const REAL t = OADD(OMUL(OADD(e0, e1), (REAL)0.5), OMUL(OADD(e2, e3), (REAL)0.25));
+    const REAL ar = OSUB(OMUL(C, a), OMUL(S, b));
+    const REAL br = OADD(OMUL(S, a), OMUL(C, b));
+    const int neg = OCMP(br < 0);
+    const REAL ar1 = neg ? -ar : ar, br1 = neg ? -br : br;
+    const int left = OCMP(ar1 < 0);
+    const REAL ar2 = left ? br1 : ar1, br2 = left ? -ar1 : br1;
+    int32_t bk = (4 * neg + 2 * left + OCMP(br2 > ar2)) * mo;
+    const REAL m2 = OADD(OMUL(a, a), OMUL(b, b)), t2 = OMUL(t, t);
+    bk += (OCMP(t > st[0]) ? ms : 0) + (OCMP(t > st[1]) ? ms : 0);
+    bk += (OCMP(m2 > OMUL(ct[0], t2)) ? mc : 0) + (OCMP(m2 > OMUL(ct[1], t2)) ? mc : 0);
+    if (spread) {
+        const REAL hi1 = OCMP(g > r) ? g : r, lo1 = OCMP(g > r) ? r : g;
+        const REAL hi = OCMP(b_ > hi1) ? b_ : hi1, lo = OCMP(b_ < lo1) ? b_ : lo1;
+        bk += OCMP(hi > OMUL(kt[0], lo)) + OCMP(hi > OMUL(kt[1], lo));
+    }
+    return bk;
+}
+
 /* the buckets of the n sites whose taps are v[t][j] (phase k); every loop runs over the
    sites (to the run-time n, so that the compiler vectorises it rather than unrolling it) */
 LRN_CLONES
@@ -449,9 +482,9 @@ static void LRN_CAT(lrn_dense_dot, IS, RS)(const REAL *const *rowp, ptrdiff_t x0
     }
 }
 
-/* the buckets of the fast path's sites x0, x0 + px, ... (n of them) of phase k in row y: their
-   energies from the box sums bx of the phase's sites in the row, from m0 on (with the spread
-   term also the colour energies, from its class rows: lrn_rows) */
+/* the buckets of the fast path's sites x0, x0 + px, ... (n of them, any number) of phase k in
+   row y: their energies from the box sums bx of the phase's sites in the row, from m0 on (with
+   the spread term also the colour energies, from its class rows: lrn_rows) */
 LRN_CLONES
 static void LRN_CAT(lrn_fast_bucket, IS, RS)(ptrdiff_t y, ptrdiff_t x0, int n,
                                               const rgbz_learned_filters *f, int k,
@@ -460,41 +493,94 @@ static void LRN_CAT(lrn_fast_bucket, IS, RS)(ptrdiff_t y, ptrdiff_t x0, int n,
 {
     REAL e[RGBZ_LEARNED_DIRS][LRN_BLK];
     REAL ec[3][LRN_BLK];
-    for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
-        const REAL inv = (REAL)1 / (REAL)f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
-        const REAL *restrict b = bx + (ptrdiff_t)d * cols + m0;
-        LRN_IVDEP for (int j = 0; j < n; j++) e[d][j] = OMUL(b[j], inv);
+    const int ns = f->n_str, nc = f->n_coh, nk = f->n_spr;
+    if (ns <= 3 && nc <= 3 && nk <= 3) {
+        /* at most two thresholds of each kind: one pass over the sites, every value in
+           registers (lrn_bucket1, the same arithmetic as lrn_bucket's passes) */
+        const REAL inf = (REAL)INFINITY;
+        REAL st[2] = {inf, inf}, ct[2] = {inf, inf}, kt[2] = {inf, inf};
+        for (int i = 0; i < ns - 1; i++) st[i] = (REAL)f->str_thr[(ptrdiff_t)k * (ns - 1) + i];
+        for (int i = 0; i < nc - 1; i++) ct[i] = (REAL)f->coh_thr2[(ptrdiff_t)k * (nc - 1) + i];
+        for (int i = 0; i < nk - 1; i++) kt[i] = (REAL)f->spr_thr[(ptrdiff_t)k * (nk - 1) + i];
+        const int32_t mo = ns * nc * nk, ms = nc * nk, mc = nk;
+        const int32_t *np = f->n_pairs + k * RGBZ_LEARNED_DIRS;
+        const REAL i0 = (REAL)1 / (REAL)np[0], i1 = (REAL)1 / (REAL)np[1];
+        const REAL i2 = (REAL)1 / (REAL)np[2], i3 = (REAL)1 / (REAL)np[3];
+        const REAL *restrict b0 = bx + m0, *restrict b1 = bx + cols + m0;
+        const REAL *restrict b2 = bx + 2 * cols + m0, *restrict b3 = bx + 3 * cols + m0;
+        if (nk > 1) {
+            int g0 = -1, g1 = -1, cr = -1, cb = -1;
+            const int hr = f->hash_radius;
+            for (int q = 0; q < 4; q++) {   /* the classes' colours, as below */
+                const int row = (int)((y - hr + (q >> 1)) & 1);
+                const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
+                if (col == 1) {
+                    if (g0 < 0) g0 = q; else g1 = q;
+                } else if (col == 0) {
+                    cr = q;
+                } else {
+                    cb = q;
+                }
+            }
+            const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + m0;
+            const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + m0;
+            const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + m0;
+            const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + m0;
+            const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
+            const REAL ib = (REAL)f->inv_col[k * 3 + 2];
+            LRN_IVDEP for (int j = 0; j < n; j++)
+                bucket[j] = LRN_CAT(lrn_bucket1, IS, RS)(
+                    OMUL(b0[j], i0), OMUL(b1[j], i1), OMUL(b2[j], i2), OMUL(b3[j], i3),
+                    OMUL(kr[j], ir), OMUL(OADD(kg0[j], kg1[j]), ig), OMUL(kb[j], ib), 1, st, ct,
+                    kt, mo, ms, mc);
+        } else {
+            LRN_IVDEP for (int j = 0; j < n; j++)
+                bucket[j] = LRN_CAT(lrn_bucket1, IS, RS)(
+                    OMUL(b0[j], i0), OMUL(b1[j], i1), OMUL(b2[j], i2), OMUL(b3[j], i3), 0, 0, 0,
+                    0, st, ct, kt, mo, ms, mc);
+        }
+        return;
     }
-    if (f->n_spr > 1) {
-        /* class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r) and
-           column parity (x - hr + p): one colour, the same at every site (px is even); green
-           holds two classes */
-        const int hr = f->hash_radius;
-        int g0 = -1, g1 = -1, cr = -1, cb = -1;
-        for (int q = 0; q < 4; q++) {
-            const int row = (int)((y - hr + (q >> 1)) & 1), col0 = (int)((x0 - hr + (q & 1)) & 1);
-            const int col = f->bayer[row * 2 + col0];
-            if (col == 1) {
-                if (g0 < 0) g0 = q; else g1 = q;
-            } else if (col == 0) {
-                cr = q;
-            } else {
-                cb = q;
+    /* more levels: lrn_bucket, LRN_BLK sites at a time */
+    for (int j0 = 0; j0 < n; j0 += LRN_BLK) {
+        const int nb = n - j0 < LRN_BLK ? n - j0 : LRN_BLK;
+        const ptrdiff_t mb = m0 + j0;
+        for (int d = 0; d < RGBZ_LEARNED_DIRS; d++) {
+            const REAL inv = (REAL)1 / (REAL)f->n_pairs[k * RGBZ_LEARNED_DIRS + d];
+            const REAL *restrict b = bx + (ptrdiff_t)d * cols + mb;
+            LRN_IVDEP for (int j = 0; j < nb; j++) e[d][j] = OMUL(b[j], inv);
+        }
+        if (f->n_spr > 1) {
+            /* class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r) and
+               column parity (x - hr + p): one colour, the same at every site (px is even); green
+               holds two classes */
+            const int hr = f->hash_radius;
+            int g0 = -1, g1 = -1, cr = -1, cb = -1;
+            for (int q = 0; q < 4; q++) {
+                const int row = (int)((y - hr + (q >> 1)) & 1);
+                const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
+                if (col == 1) {
+                    if (g0 < 0) g0 = q; else g1 = q;
+                } else if (col == 0) {
+                    cr = q;
+                } else {
+                    cb = q;
+                }
+            }
+            const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + mb;
+            const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + mb;
+            const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + mb;
+            const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + mb;
+            const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
+            const REAL ib = (REAL)f->inv_col[k * 3 + 2];
+            LRN_IVDEP for (int j = 0; j < nb; j++) {
+                ec[0][j] = OMUL(kr[j], ir);
+                ec[1][j] = OMUL(OADD(kg0[j], kg1[j]), ig);
+                ec[2][j] = OMUL(kb[j], ib);
             }
         }
-        const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + m0;
-        const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + m0;
-        const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + m0;
-        const REAL *restrict kg1 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g1) * cols + m0;
-        const REAL ir = (REAL)f->inv_col[k * 3], ig = (REAL)f->inv_col[k * 3 + 1];
-        const REAL ib = (REAL)f->inv_col[k * 3 + 2];
-        LRN_IVDEP for (int j = 0; j < n; j++) {
-            ec[0][j] = OMUL(kr[j], ir);
-            ec[1][j] = OMUL(OADD(kg0[j], kg1[j]), ig);
-            ec[2][j] = OMUL(kb[j], ib);
-        }
+        LRN_CAT(lrn_bucket, IS, RS)(e, ec, nb, f, k, bucket + j0);
     }
-    LRN_CAT(lrn_bucket, IS, RS)(e, ec, n, f, k, bucket);
 }
 
 /* the taps v[t][j] of the n sites x0, x0 + px, ... (n <= LRN_BLK) of phase k, tap-major

@@ -209,7 +209,8 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
                 const float ww = w[c] * w[c];
                 den[c] += w[c];
                 w2v[c] += ww * vv[c];
-                w2n[c] += ww / (nn[c] > 0.0f ? nn[c] : 1.0f);     /* w = 0 where nn = 0 */
+                /* times the reciprocal, as the fast blocks (w = 0 where nn = 0) */
+                w2n[c] += ww * (1.0f / (nn[c] > 0.0f ? nn[c] : 1.0f));
             }
         } else {
             for (ptrdiff_t c = c0; c < c1; c++) {
@@ -724,24 +725,15 @@ static tofg_pass_args tofg_local(const float *zr, const float *zi, const float *
     return p;
 }
 
-int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
-                      const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
-                      const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
-                      ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
-                      double *or64, double *oi64, float *ov, float *on,
-                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
+/* The four passes strip by strip (any grid lines): rgbz_tofg_denoise's arguments, checked. */
+static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
+                               const float *col, const uint8_t *use, ptrdiff_t F, ptrdiff_t R,
+                               ptrdiff_t C, const int64_t *row_px, const int64_t *col_px,
+                               ptrdiff_t reach_r, ptrdiff_t reach_c, int64_t radius_px,
+                               double inv2h2, double inv2hc2, double *or64, double *oi64,
+                               float *ov, float *on, const tofg_unwrap_out *uw,
+                               ptrdiff_t strip, int nth)
 {
-    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
-        || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
-        || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
-        || !(inv2hc2 >= 0.0))
-        return RGBZ_EINVAL;
-    if (uw && (!uw->freqs || !uw->weights || !uw->depth || !uw->residual || !uw->wraps
-               || !uw->phase || !uw->amp))
-        return RGBZ_EINVAL;
-    if (R == 0 || C == 0) return RGBZ_OK;
-    const int nth = rgbz_threads(workers);
-    (void)nth;
     /* by default a multiple of the threads' count of strips of at most TOFG_STRIP rows, of
        even heights: the threads' shares stay even */
     const ptrdiff_t nt = nth, nauto = nt * ((R + nt * TOFG_STRIP - 1) / (nt * TOFG_STRIP));
@@ -839,6 +831,354 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
         }
         free(mean);
         free(buf);
+    }
+    return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
+}
+
+/* ---------------------------------------------------------------- the sliding pipeline */
+/* The four passes of rgbz_tofg_denoise row by row on evenly spaced grid lines. The frame is
+   cut into tiles of output columns [c0, c1) (at most TOFG_VIEW of them) and bands of output
+   rows [b0, b1); a thread runs a tile's band through the passes one grid row at a time, the
+   column passes' inputs held in rings of K = 2H + 1 padded rows (grid row r in slot r mod K),
+   so the working set is a few rows of the tile (it stays in the cache) and no row is computed
+   twice inside a band. A tile's row passes see the frame's columns [c0 - 2 Ac, c1 + 2 Ac)
+   (its view): the first two passes run over all of them (the second-round row pass reaches
+   Ac columns beyond the tile into the first round's output, which reaches Ac further), the
+   last two over the tile. A padded row holds the view's columns at [pad, pad + cv) and zeros
+   (gate 0) around them, so every column runs in the fast blocks: the off-grid neighbours of
+   the generic row enter with weight 0 and add +0 to every sum, the same sums bit for bit. */
+typedef struct {
+    const float *zr, *zi, *v, *col;
+    const uint8_t *use;
+    ptrdiff_t F, R, C, N;
+    ptrdiff_t H, Ac;              /* the column passes' tap offsets |a| <= H, the rows' <= Ac */
+    ptrdiff_t pad, W, K;          /* the padded row: W floats, the view from pad on */
+    const int64_t *row_px, *col_px;
+    ptrdiff_t reach_r, reach_c;
+    int64_t radius_px;
+    float ih, ic;
+    int nrt;                      /* the row passes' taps */
+    ptrdiff_t rshift[2 * 64 + 1];
+    double *or64, *oi64;
+    float *ov, *on;
+    const tofg_unwrap_out *uw;
+    size_t nfloat, ndouble;       /* one thread's buffers */
+} tofg_slide;
+
+/* a tile: output columns [c0, c1), its view [v0, v0 + cv) of the frame's columns, the blocks
+   of the view (nv) and of the output columns (no, from buffer column xo) */
+typedef struct {
+    ptrdiff_t c0, c1, v0, cv, nv, no, xo;
+} tofg_tile;
+
+/* one thread's buffers (floats unless said): see tofg_slide_buf_at */
+typedef struct {
+    float *raw, *gate, *ones, *E, *colr, *r1, *g2, *n2, *gd, *r3, *g4, *n4, *pr2, *pr4, *tv,
+          *tn;
+    double *t64, *mean;
+    float *block;
+} tofg_slide_buf;
+
+/* the layout of a thread's buffers from `base` (NULL: only their size into S) */
+static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
+{
+    const size_t F = (size_t)S->F, W = (size_t)S->W, KW = (size_t)S->K * W;
+    const size_t A1 = (size_t)S->H + 1, P = (2 * F + 2) * KW;
+    tofg_slide_buf b;
+    float *f = base;
+    b.block = base;
+    b.raw = f;
+    b.gate = b.raw + (2 * F + 1) * W;
+    b.ones = b.gate + W;
+    b.E = b.ones + W;
+    b.colr = b.E + ((size_t)S->Ac + 1) * W;
+    b.r1 = b.colr + 3 * KW;
+    b.g2 = b.r1 + P;
+    b.n2 = b.g2 + KW;
+    b.gd = b.n2 + KW;
+    b.r3 = b.gd + P;
+    b.g4 = b.r3 + P;
+    b.n4 = b.g4 + KW;
+    b.pr2 = b.n4 + KW;
+    b.pr4 = b.pr2 + A1 * A1 * W;
+    b.tv = b.pr4 + A1 * A1 * W;
+    b.tn = b.tv + W;
+    const size_t nf = ((size_t)(b.tn + W - f) + 1) & ~(size_t)1;  /* the doubles aligned */
+    b.t64 = (double *)(f + nf);
+    b.mean = b.t64 + 2 * F * W;
+    S->nfloat = nf;
+    S->ndouble = 4 * F * W;
+    return b;
+}
+
+/* grid row r of the frame's raw phasors, variance and use in the tile's view into the padded
+   row buffers */
+static void tofg_slide_raw(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
+                           ptrdiff_t r)
+{
+    const ptrdiff_t F = S->F, W = S->W, N = S->N, o = r * S->C + T->v0, pd = S->pad;
+    const size_t n = (size_t)T->cv * sizeof(float);
+    for (ptrdiff_t f = 0; f < F; f++) {
+        memcpy(b->raw + f * W + pd, S->zr + f * N + o, n);
+        memcpy(b->raw + (F + f) * W + pd, S->zi + f * N + o, n);
+    }
+    memcpy(b->raw + 2 * F * W + pd, S->v + o, n);
+    for (ptrdiff_t c = 0; c < T->cv; c++) b->gate[pd + c] = S->use[o + c] != 0 ? 1.0f : 0.0f;
+}
+
+/* the pass arguments of a row pass of the padded raw row (its data) guided by gr (planes of
+   stride gs) into the ring at base `out` (planes of stride KW) */
+static tofg_pass_args tofg_slide_rowargs(const tofg_slide *S, const tofg_slide_buf *b,
+                                         const float *gr, const float *gi, const float *gv,
+                                         ptrdiff_t gs, const float *colrow, float *out)
+{
+    const ptrdiff_t F = S->F, W = S->W, KW = S->K * W;
+    const tofg_pass_args p = {
+        b->raw, b->raw + F * W, b->raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
+        W, 1, S->col_px, S->reach_c, S->radius_px, S->ih, S->ic, out, out + F * KW, out +
+        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, b->gate, b->ones};
+    return p;
+}
+
+/* one row pass over nblk blocks from buffer column x0 (p: a single padded row) */
+static void tofg_slide_row(const tofg_slide *S, const tofg_pass_args *p, float *E,
+                           ptrdiff_t x0, ptrdiff_t nblk)
+{
+    const ptrdiff_t W = S->W, n = nblk * TOFG_BW;
+    const float *ew[2 * 64 + 1];
+    for (ptrdiff_t a = 0; a <= S->Ac; a++) tofg_pairs(p, x0 - a, x0, n + a, E + a * W + x0 - a);
+    for (int t = 0; t < S->nrt; t++) {
+        const ptrdiff_t a = S->rshift[t];
+        ew[t] = a >= 0 ? E + a * W + x0 : E + (-a) * W + x0 + a;
+    }
+    tofg_blocks(p, x0, nblk, S->rshift, ew, S->nrt);
+}
+
+/* the pair weights e(r, r + a), a = 0..H, of ring row r (nblk blocks from buffer column x0)
+   into slot r mod (H + 1) of pr */
+static void tofg_slide_colpairs(const tofg_slide *S, const tofg_pass_args *p, float *pr,
+                                ptrdiff_t r, ptrdiff_t x0, ptrdiff_t nblk)
+{
+    const ptrdiff_t H = S->H, W = S->W, K = S->K, n = nblk * TOFG_BW;
+    float *own = pr + (r % (H + 1)) * (H + 1) * W;
+    for (ptrdiff_t a = 0; a <= H && r + a < S->R; a++)
+        tofg_pairs(p, (r % K) * W + x0, ((r + a) % K) * W + x0, n, own + a * W);
+}
+
+/* output row r of a column pass over the rings (pair weights in pr) */
+static void tofg_slide_col(const tofg_slide *S, const tofg_pass_args *p, const float *pr,
+                           ptrdiff_t r, ptrdiff_t x0, ptrdiff_t nblk)
+{
+    const ptrdiff_t H = S->H, W = S->W, K = S->K, A1 = H + 1;
+    ptrdiff_t shift[2 * 64 + 1];
+    const float *ew[2 * 64 + 1];
+    int nt = 0;
+    for (ptrdiff_t a = -H; a <= H; a++) {
+        if (r + a < 0 || r + a >= S->R) continue;
+        shift[nt] = ((r + a) % K - r % K) * W;
+        ew[nt++] = a >= 0 ? pr + (r % A1) * A1 * W + a * W
+                          : pr + ((r + a) % A1) * A1 * W + (-a) * W;
+    }
+    tofg_blocks(p, (r % K) * W + x0, nblk, shift, ew, nt);
+}
+
+/* the gates of ring row r of a column pass's data (n_eff in neff) over the view into g, n
+   (tofg_gates) */
+static void tofg_slide_gates(const tofg_slide *S, const tofg_tile *T, const float *neff,
+                             float *g, float *n, ptrdiff_t r)
+{
+    const ptrdiff_t o = (r % S->K) * S->W + S->pad, m = r * S->C + T->v0;
+    for (ptrdiff_t c = 0; c < T->cv; c++) {
+        const float nn = neff[o + c];
+        g[o + c] = S->use[m + c] != 0 && nn > 0.0f ? 1.0f : 0.0f;
+        n[o + c] = 1.0f / (nn > 0.0f ? nn : 1.0f);
+    }
+}
+
+/* the tile's outputs of grid row s from t64, tv, tn: stored, or unwrapped (rgbz_tof_depth_iq
+   on the row's means packed in b->mean); RGBZ_OK, RGBZ_EDOMAIN or another status */
+static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
+                          ptrdiff_t s)
+{
+    const ptrdiff_t F = S->F, W = S->W, N = S->N, n = T->c1 - T->c0, o = s * S->C + T->c0;
+    const ptrdiff_t x = S->pad + T->c0 - T->v0;
+    memcpy(S->ov + o, b->tv + x, (size_t)n * sizeof(float));
+    memcpy(S->on + o, b->tn + x, (size_t)n * sizeof(float));
+    if (!S->uw) {
+        for (ptrdiff_t f = 0; f < F; f++) {
+            memcpy(S->or64 + f * N + o, b->t64 + f * W + x, (size_t)n * sizeof(double));
+            memcpy(S->oi64 + f * N + o, b->t64 + (F + f) * W + x, (size_t)n * sizeof(double));
+        }
+        return RGBZ_OK;
+    }
+    for (ptrdiff_t f = 0; f < 2 * F; f++)
+        memcpy(b->mean + f * n, b->t64 + f * W + x, (size_t)n * sizeof(double));
+    const tofg_unwrap_out *uw = S->uw;
+    return rgbz_tof_depth_iq_strided(b->mean, b->mean + F * n, F, n, N, uw->freqs, uw->weights,
+                                     uw->max_range, uw->depth + o, uw->residual + o,
+                                     uw->wraps + o, uw->phase + o, uw->amp + o, 1);
+}
+
+/* the tile's band of output rows [b0, b1); RGBZ_OK, RGBZ_EDOMAIN or another status */
+static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
+                           ptrdiff_t b0, ptrdiff_t b1)
+{
+    const ptrdiff_t F = S->F, C = S->C, R = S->R, H = S->H, W = S->W, K = S->K, KW = K * W;
+    const ptrdiff_t pd = S->pad, N = S->N, xo = T->xo, no = T->no, nv = T->nv;
+    const ptrdiff_t lo1 = b0 - 2 * H > 0 ? b0 - 2 * H : 0, hi1 = b1 + 2 * H < R ? b1 + 2 * H : R;
+    const ptrdiff_t lo2 = b0 - H > 0 ? b0 - H : 0, hi2 = b1 + H < R ? b1 + H : R;
+    /* the rows whose column pair weights the outputs reach: H above the first output */
+    const ptrdiff_t lp2 = lo2 - H > 0 ? lo2 - H : 0, lp4 = b0 - H > 0 ? b0 - H : 0;
+    /* the column passes: 2 = columns of 1 (ring r1) guided by themselves into gd; 4 = columns
+       of 3 (ring r3) guided by gd, to t64, tv, tn */
+    const tofg_pass_args p2 = {
+        b->r1, b->r1 + F * KW, b->r1 + 2 * F * KW, b->r1 + (2 * F + 1) * KW, b->r1,
+        b->r1 + F * KW, b->r1 + 2 * F * KW, b->colr, S->use, F, R, W, 0, S->row_px, S->reach_r,
+        S->radius_px, S->ih, S->ic, b->gd, b->gd + F * KW, b->gd + 2 * F * KW,
+        b->gd + (2 * F + 1) * KW, NULL, NULL, KW, KW, KW, KW, 0, b->g2, b->n2};
+    tofg_pass_args p4 = {
+        b->r3, b->r3 + F * KW, b->r3 + 2 * F * KW, b->r3 + (2 * F + 1) * KW, b->gd,
+        b->gd + F * KW, b->gd + 2 * F * KW, b->colr, S->use, F, R, W, 0, S->row_px, S->reach_r,
+        S->radius_px, S->ih, S->ic, NULL, NULL, b->tv, b->tn, b->t64, b->t64 + F * W, KW, KW,
+        KW, W, 0, b->g4, b->n4};
+    int st = RGBZ_OK;
+    for (ptrdiff_t t = lo1; t < hi1 + 2 * H; t++) {
+        if (t < hi1) {                     /* 1: row t of the raw phasors guided by itself */
+            const ptrdiff_t so = (t % K) * W;
+            for (int k = 0; k < 3; k++)
+                memcpy(b->colr + k * KW + so + pd, S->col + k * N + t * C + T->v0,
+                       (size_t)T->cv * sizeof(float));
+            tofg_slide_raw(S, b, T, t);
+            const tofg_pass_args p1 = tofg_slide_rowargs(S, b, b->raw, b->raw + F * W,
+                                                         b->raw + 2 * F * W, W, b->colr + so,
+                                                         b->r1 + so);
+            tofg_slide_row(S, &p1, b->E, pd, nv);
+            tofg_slide_gates(S, T, b->r1 + (2 * F + 1) * KW, b->g2, b->n2, t);
+        }
+        const ptrdiff_t q = t - H;         /* 2 (over the view) and 3 (the tile) at row q */
+        if (q >= lp2 && q < hi2) tofg_slide_colpairs(S, &p2, b->pr2, q, pd, nv);
+        if (q >= lo2 && q < hi2) {
+            tofg_slide_col(S, &p2, b->pr2, q, pd, nv);
+            const ptrdiff_t so = (q % K) * W;
+            tofg_slide_raw(S, b, T, q);
+            const tofg_pass_args p3 = tofg_slide_rowargs(S, b, b->gd + so, b->gd + F * KW + so,
+                                                         b->gd + 2 * F * KW + so, KW,
+                                                         b->colr + so, b->r3 + so);
+            tofg_slide_row(S, &p3, b->E, xo, no);
+            tofg_slide_gates(S, T, b->r3 + (2 * F + 1) * KW, b->g4, b->n4, q);
+        }
+        const ptrdiff_t s = t - 2 * H;     /* 4 (the tile) at row s */
+        if (s >= lp4 && s < b1) tofg_slide_colpairs(S, &p4, b->pr4, s, xo, no);
+        if (s >= b0 && s < b1) {
+            p4.ooff = (s % K) * W;
+            tofg_slide_col(S, &p4, b->pr4, s, xo, no);
+            const int u = tofg_slide_out(S, b, T, s);
+            st = u == RGBZ_OK ? st : st == RGBZ_OK || st == RGBZ_EDOMAIN ? u : st;
+        }
+    }
+    return st;
+}
+
+/* output columns per tile of the sliding pipeline, at most: the rings of a tile's view
+   (F = 3, H = 5) stay within about a megabyte */
+#define TOFG_VIEW 512
+
+int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
+                      const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
+                      const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
+                      ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
+                      double *or64, double *oi64, float *ov, float *on,
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
+{
+    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
+        || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
+        || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
+        || !(inv2hc2 >= 0.0))
+        return RGBZ_EINVAL;
+    if (uw && (!uw->freqs || !uw->weights || !uw->depth || !uw->residual || !uw->wraps
+               || !uw->phase || !uw->amp))
+        return RGBZ_EINVAL;
+    if (R == 0 || C == 0) return RGBZ_OK;
+    const int nth = rgbz_threads(workers);
+    const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
+    const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
+    if (!qr.fast || !qc.fast)
+        return tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px, reach_r,
+                                   reach_c, radius_px, inv2h2, inv2hc2, or64, oi64, ov, on, uw,
+                                   strip, nth);
+    /* tiles of even widths; bands: `strip` rows each, else as many as make at least two
+       tiles' bands a thread (a band recomputes the 4H rows of the first pass and 2H of the
+       next two beyond its ends; a tile 4 Ac columns of the first two passes) */
+    const ptrdiff_t ntile = (C + TOFG_VIEW - 1) / TOFG_VIEW, tw = (C + ntile - 1) / ntile;
+    const ptrdiff_t want = (2 * (ptrdiff_t)nth + ntile - 1) / ntile;
+    const ptrdiff_t nb = strip > 0 ? (R + strip - 1) / strip : (want < R ? want : R);
+    tofg_slide S;
+    S.zr = zr;
+    S.zi = zi;
+    S.v = v;
+    S.col = col;
+    S.use = use;
+    S.F = F;
+    S.R = R;
+    S.C = C;
+    S.N = R * C;
+    S.H = qc.A;
+    S.Ac = qr.A;
+    S.pad = qr.A;
+    /* a view's blocks end at most 16 columns past its cv <= tw + 4 Ac, the tile's reach Ac
+       further */
+    S.W = qr.A + (tw + 4 * qr.A + 2 * TOFG_BW) / TOFG_BW * TOFG_BW + qr.A;
+    S.K = 2 * qc.A + 1;
+    S.row_px = row_px;
+    S.col_px = col_px;
+    S.reach_r = reach_r;
+    S.reach_c = reach_c;
+    S.radius_px = radius_px;
+    S.ih = (float)inv2h2;
+    S.ic = (float)inv2hc2;
+    S.nrt = 0;
+    for (ptrdiff_t a = -qr.A; a <= qr.A; a++) S.rshift[S.nrt++] = a;
+    S.or64 = or64;
+    S.oi64 = oi64;
+    S.ov = ov;
+    S.on = on;
+    S.uw = uw;
+    (void)tofg_slide_buf_at(&S, NULL);
+    const size_t nbytes = S.nfloat * sizeof(float) + S.ndouble * sizeof(double);
+    int bad = 0, dom = 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth) reduction(|:bad, dom)
+#endif
+    {
+        float *mem = malloc(nbytes);
+        const tofg_slide_buf b = tofg_slide_buf_at(&S, mem);
+        bad |= !mem;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (ptrdiff_t k = 0; k < nb * ntile; k++) {
+            if (!mem) continue;
+            const ptrdiff_t band = k / ntile, j = k % ntile;
+            const ptrdiff_t b0 = strip > 0 ? band * strip : band * R / nb;
+            const ptrdiff_t b1 = strip > 0 ? (b0 + strip < R ? b0 + strip : R)
+                                           : (band + 1) * R / nb;
+            tofg_tile T;
+            T.c0 = j * tw;
+            T.c1 = T.c0 + tw < C ? T.c0 + tw : C;
+            T.v0 = T.c0 - 2 * qr.A > 0 ? T.c0 - 2 * qr.A : 0;
+            T.cv = (T.c1 + 2 * qr.A < C ? T.c1 + 2 * qr.A : C) - T.v0;
+            T.nv = (T.cv + TOFG_BW - 1) / TOFG_BW;
+            T.xo = S.pad + T.c0 - T.v0;
+            T.no = (T.c1 - T.c0 + TOFG_BW - 1) / TOFG_BW;
+            /* zeros: the padding of every row is 0 (finite, gate 0) whatever the last tile
+               left there */
+            memset(mem, 0, S.nfloat * sizeof(float));
+            for (ptrdiff_t x = 0; x < S.W; x++) b.ones[x] = 1.0f;
+            const int st = tofg_slide_band(&S, &b, &T, b0, b1);
+            dom |= st == RGBZ_EDOMAIN;
+            bad |= st != RGBZ_OK && st != RGBZ_EDOMAIN;
+        }
+        free(mem);
     }
     return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
 }

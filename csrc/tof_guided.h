@@ -58,15 +58,17 @@ typedef struct {
    phasors zr, zi (F, N) with variance v (N,) guided by themselves, a column pass of it guided
    by itself (the guide of the second round), a row pass of the raw phasors guided by that,
    and a column pass of it guided by the same; outputs as rgbz_tofg_pass's last (or64, oi64
-   (F, N), ov, on (N,)), bit for bit. It runs strip by strip of grid rows in buffers that stay
-   small (each strip recomputes the rows its column passes reach beyond it), so no plane of
-   the intermediate passes is ever held for the whole frame. row_px (R,), col_px (C,): the
-   pixel coordinates of the grid lines; reach_r, reach_c: the grid lines a pass along columns
-   and along rows reaches. With uw (not NULL) each strip's means are unwrapped as they are
-   made (rgbz_tof_depth_iq, bit for bit) into uw's arrays instead of being stored (or64, oi64
-   unused); a non-finite mean gives RGBZ_EDOMAIN after every other one is computed. strip:
-   the grid rows of output per strip (<= 0: at most 128, a multiple of the threads' count of
-   strips); the outputs do not depend on it. */
+   (F, N), ov, on (N,)), bit for bit. No plane of the intermediate passes is ever held for the
+   whole frame: on evenly spaced grid lines (and F <= 4) each thread runs a band of output
+   rows through the four passes row by row, the column passes' inputs in rings of a few padded
+   rows (a band recomputes only the rows its column passes reach beyond it); otherwise strip
+   by strip of grid rows, each strip recomputing the rows its column passes reach beyond it.
+   row_px (R,), col_px (C,): the pixel coordinates of the grid lines; reach_r, reach_c: the
+   grid lines a pass along columns and along rows reaches. With uw (not NULL) the means are
+   unwrapped as they are made (rgbz_tof_depth_iq, bit for bit) into uw's arrays instead of
+   being stored (or64, oi64 unused); a non-finite mean gives RGBZ_EDOMAIN after every other
+   one is computed. strip: the grid rows of output per band or strip (<= 0: one band per
+   thread, or strips of at most 128 rows); the outputs do not depend on it. */
 int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,

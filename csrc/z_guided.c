@@ -2,10 +2,12 @@
  * z_guided.c -- the z_guided reconstruction (z_guided.h): z_guided.template.h for every
  * element type and precision, the entry points rgbz_zguided_<precision>
  * (z_guided_entry.template.h, once per precision), and what they share: the checks of the
- * arguments the Python layer validated (a failure here is a bug there), the column map and
- * the cell terms of a tile row. The hash, the dot products and the fast path are the learned
- * kernel's (learned_common.h, learned_hash.template.h).
+ * arguments the Python layer validated (a failure here is a bug there) and the column map
+ * (z_guided_cells.template.h: the cell terms of a tile row, per precision). The hash, the
+ * dot products and the fast path are the learned kernel's (learned_common.h,
+ * learned_hash.template.h).
  */
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 #include <stdint.h>
@@ -24,7 +26,12 @@ static int zg_check(const void *src, const void *dst, const rgbz_zguided_filters
                     ptrdiff_t rows, ptrdiff_t cols, int py, int px, const int32_t *phase_map)
 {
     if (!src || !dst || !phase_map || !f || !f->hash || f->n_levels < 1 || f->gy < 1 ||
-        f->gx < 1 || !f->grid || !f->var || !f->chan || !f->targets ||
+        f->gx < 1 || !f->chan || !f->targets ||
+        (f->grid ? !f->var
+                 : (!f->taps || !f->ratio || !f->site_rows || !f->site_cols || f->taps_F < 1 || f->taps_F > RGBZ_TOF_MAX_FREQS ||
+                    f->gyc < 1 || f->gxc < 1 || f->gyc > f->gy || f->gxc > f->gx ||
+                    (f->taps_type != RGBZ_T_U8 && f->taps_type != RGBZ_T_U16 &&
+                     f->taps_type != RGBZ_T_F32 && f->taps_type != RGBZ_T_F64))) ||
         (f->n_levels > 1 && !f->thr) || !f->w_f32 || !f->w_f64 || !f->g_f32 || !f->g_f64 ||
         !f->n_base || !f->base_idx || f->n_base_max < 1 || (f->block != 1 && f->block != 2) ||
         f->zr < 0 || f->zc < 0 || f->zr >= py || f->zc >= px)
@@ -71,127 +78,9 @@ static int zg_check(const void *src, const void *dst, const rgbz_zguided_filters
     return RGBZ_OK;
 }
 
-/* ---- the cell terms (z_guided.h), one tile row and target colour at a time, in double ---- */
-
-/* what a thread keeps of the cell terms: for each target colour t, the colour means of
-   three tile rows (a ring, slot = tile row mod 3, tagged) padded by one cell on each side
-   with the edge cell, and the terms of one tile row, [11][gx] (tagged); the noise levels of
-   one tile row (tagged); the padded amplitude and variance rows; the box offsets */
-typedef struct {
-    ptrdiff_t gx;
-    double *cg;                 /* [3 targets][3 slots][gx + 2] */
-    ptrdiff_t cg_tag[3][3];
-    double *cell;               /* [3 targets][RGBZ_ZG_FEATURES][gx] */
-    ptrdiff_t cell_tag[3];
-    int32_t *level;             /* [gx] */
-    ptrdiff_t level_tag;
-    double *nv;                 /* [7][gx + 2]: N of rows iy - 1 .. iy + 1, then V, then nu */
-    ptrdiff_t nv_tag;
-    int nbox[3];
-    int ey[3][ZG_MAX_BOX], ex[3][ZG_MAX_BOX];
-} zg_cells;
-
-/* a thread's cell state (buffers, empty tags, the box offsets of each colour: the pixels of
-   colour t in the box of the Z pixel and the two pixels around it, row-major, the same for
-   every tile); RGBZ_ENOMEM */
-static int zg_cells_init(zg_cells *s, const rgbz_zguided_filters *f, int py, int px)
-{
-    const ptrdiff_t gx = f->gx;
-    s->gx = gx;
-    s->cg = malloc((size_t)9 * (size_t)(gx + 2) * sizeof *s->cg);
-    s->cell = malloc((size_t)3 * RGBZ_ZG_FEATURES * (size_t)gx * sizeof *s->cell);
-    s->level = malloc((size_t)gx * sizeof *s->level);
-    s->nv = malloc((size_t)7 * (size_t)(gx + 2) * sizeof *s->nv);
-    for (int t = 0; t < 3; t++) {
-        s->cell_tag[t] = PTRDIFF_MIN;
-        for (int i = 0; i < 3; i++) s->cg_tag[t][i] = PTRDIFF_MIN;
-        int n = 0;
-        for (int dy = -2; dy < f->block + 2; dy++)
-            for (int dx = -2; dx < f->block + 2; dx++) {
-                const int y = ((f->zr + dy) % py + py) % py, x = ((f->zc + dx) % px + px) % px;
-                if (f->chan[y * px + x] == t) {
-                    s->ey[t][n] = dy;
-                    s->ex[t][n] = dx;
-                    n++;
-                }
-            }
-        s->nbox[t] = n;
-    }
-    s->level_tag = PTRDIFF_MIN;
-    s->nv_tag = PTRDIFF_MIN;
-    return s->cg && s->cell && s->level && s->nv ? RGBZ_OK : RGBZ_ENOMEM;
-}
-
-static void zg_cells_free(zg_cells *s)
-{
-    free(s->cg);
-    free(s->cell);
-    free(s->level);
-    free(s->nv);
-}
-
-/* pads row r (gx values at r[1 ..]) with its edge values at r[0] and r[gx + 1] */
-static inline void zg_pad(double *r, ptrdiff_t gx)
-{
-    r[0] = r[1];
-    r[gx + 1] = r[gx];
-}
-
-/* the cell terms of tile row iy: out[m][ix] (RGBZ_ZG_FEATURES rows of gx) and the relative
-   noise nu[ix], from the padded rows N[3], V[3], C[3] (rows iy - 1 .. iy + 1, clamped;
-   index ix + 1 is cell ix). Every sum in the order of m, as cell_terms. */
-RGBZ_CLONES_512
-static void zg_cell_row(const double *const *N, const double *const *V, const double *const *C,
-                        ptrdiff_t gx, double lam, double *restrict out, double *restrict nu_out)
-{
-    const double *restrict n0 = N[0], *restrict n1 = N[1], *restrict n2 = N[2];
-    const double *restrict v0 = V[0], *restrict v1 = V[1], *restrict v2 = V[2];
-    const double *restrict c0 = C[0], *restrict c1 = C[1], *restrict c2 = C[2];
-    RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) {
-        const double n_[9] = {n0[ix], n0[ix + 1], n0[ix + 2], n1[ix], n1[ix + 1], n1[ix + 2],
-                              n2[ix], n2[ix + 1], n2[ix + 2]};
-        const double v_[9] = {v0[ix], v0[ix + 1], v0[ix + 2], v1[ix], v1[ix + 1], v1[ix + 2],
-                              v2[ix], v2[ix + 1], v2[ix + 2]};
-        const double c_[9] = {c0[ix], c0[ix + 1], c0[ix + 2], c1[ix], c1[ix + 1], c1[ix + 2],
-                              c2[ix], c2[ix + 1], c2[ix + 2]};
-        double nb = 0.0, vb = 0.0, cb = 0.0;
-        for (int m = 0; m < 9; m++) {
-            nb += n_[m];
-            vb += v_[m];
-            cb += c_[m];
-        }
-        nb /= 9.0;
-        vb /= 9.0;
-        cb /= 9.0;
-        const int lit = nb > 0.0;
-        const double inv = 1.0 / (lit ? nb : 1.0);
-        double u[9], U = 0.0, ud = 0.0;
-        for (int m = 0; m < 9; m++) {
-            u[m] = lit ? n_[m] * inv - 1.0 : 0.0;
-            U += u[m] * u[m];
-        }
-        const double nu = lit ? vb * inv * inv : 1.0;
-        for (int m = 0; m < 9; m++) ud += u[m] * (c_[m] - cb);
-        const double share = U / (U + 9.0 * nu + 2.2250738585072014e-308);
-        const double a = ud / (U + 9.0 * (lam + nu));
-        const double au = a * u[4];
-        for (int m = 0; m < 9; m++) out[m * gx + ix] = share * u[m];
-        out[9 * gx + ix] = cb + au;
-        out[10 * gx + ix] = au - (c_[4] - cb);
-        nu_out[ix] = nu;
-    }
-}
-
-/* the noise levels of a tile row: how many of the n_thr thresholds nu exceeds */
-static void zg_level_row(const double *restrict nu, ptrdiff_t gx, const double *thr, int n_thr,
-                         int32_t *restrict lvl)
-{
-    for (ptrdiff_t ix = 0; ix < gx; ix++) lvl[ix] = 0;
-    for (int i = 0; i < n_thr; i++) {
-        const double t = thr[i];
-        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) lvl[ix] += nu[ix] > t;
-    }
-}
+/* the smallest normal of each precision: keeps share = U / (U + 9 nu) at 0 for U = nu = 0 */
+#define RGBZ_TINY_f32 FLT_MIN
+#define RGBZ_TINY_f64 DBL_MIN
 
 /* the column map of the taps: x in [-R, cols + R) -> its column inside the frame */
 static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int px)

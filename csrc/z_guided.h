@@ -48,6 +48,18 @@ typedef struct {
        block sites) */
     ptrdiff_t gy, gx;
     const double *grid, *var;
+    /* or, when grid is NULL, their rows computed in the rows that use them, as
+       rgbz_zguided_guide_row does: from the ToF taps (taps_F, 4, gyc * gxc) of element type
+       taps_type (an rgbz_type) of the gyc x gxc complete Z pixels in row-major order, and the
+       medians ratio (taps_F values: rgbz_zguided_ratios); the cells past them take the last
+       complete row and column. site_rows, site_cols: the sites of the taps; the kernel checks
+       that they are those Z pixels in row-major order, else returns RGBZ_ZG_SITES (dst then
+       holds nothing meaningful) */
+    const void *taps;
+    const int64_t *site_rows, *site_cols;
+    int taps_type;
+    ptrdiff_t taps_F, gyc, gxc;
+    const double *ratio;
     const int8_t *chan;        /* [py * px]: the colour code of every site of the tile */
     int32_t zr, zc, block;
     const int32_t *targets;    /* [n_phases]: the target colour of each phase, 0..2 */
@@ -74,14 +86,19 @@ rgbz_zguided_fn rgbz_zguided_f64;
 
 /* rgbz_zguided_guide: the sites are not the complete Z pixels in row-major order */
 #define RGBZ_ZG_SITES 100
+/* rgbz_zguided_guide's medians run over every s-th site, s = N / RGBZ_ZG_SAMPLE + 1: all
+   of a frame of fewer sites, else between half of RGBZ_ZG_SAMPLE and RGBZ_ZG_SAMPLE */
+#define RGBZ_ZG_SAMPLE 16384
 
 /*
  * The guide from the ToF taps (F, 4, N) of in_type (an rgbz_type): grid[iy * gx + ix] the
  * mean over the frequencies of the amplitude (tof.c's, 0.5 |I + iQ|) of the Z pixel of
  * tile (iy, ix), var the noise variance of that mean,
  *   sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1))   (0 when F = 1),
- * r_f the median over the lit sites (mean > 0) of A_f / mean (NumPy's median; 1 when no
- * site is lit or the median is not > 0). Site n (site_rows[n], site_cols[n]) must be the
+ * r_f the median over the lit sites (mean > 0) of the sample of A_f / mean (NumPy's median;
+ * 1 when no site of the sample is lit or the median is not > 0), the sample being the sites
+ * 0, s, 2 s, ... with s = N / RGBZ_ZG_SAMPLE + 1 (every site of a frame of fewer than
+ * RGBZ_ZG_SAMPLE). Site n (site_rows[n], site_cols[n]) must be the
  * Z pixel of tile (n / gxc, n % gxc), N = gyc * gxc: the gyc x gxc complete Z pixels in
  * row-major order (else RGBZ_ZG_SITES); the other cells of the gy x gx grids are not
  * written. The result does not depend on workers.
@@ -90,6 +107,23 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                        const int64_t *site_rows, const int64_t *site_cols, int py, int px,
                        int zr, int zc, ptrdiff_t gy, ptrdiff_t gx, ptrdiff_t gyc, ptrdiff_t gxc,
                        double *grid, double *var, int workers);
+
+/*
+ * The two parts of rgbz_zguided_guide: rgbz_zguided_ratios checks the sites when check is
+ * not 0 (RGBZ_ZG_SITES, as rgbz_zguided_guide; with check 0 the sites are not read and the
+ * caller checks them: the kernel's guide from the taps) and gives the medians ratio[f] (F
+ * values);
+ * rgbz_zguided_guide_row gives, from them, the grid and var values of the gxc sites from lo
+ * on (lo a multiple of gxc: one row of the grid) into grid[0 .. gxc - 1], var[0 ..], the
+ * values of rgbz_zguided_guide bit for bit.
+ */
+int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                        const int64_t *site_rows, const int64_t *site_cols, int py, int px,
+                        int zr, int zc, ptrdiff_t gyc, ptrdiff_t gxc, double *ratio,
+                        int check, int workers);
+void rgbz_zguided_guide_row(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                            ptrdiff_t lo, ptrdiff_t gxc, const double *ratio, double *grid,
+                            double *var);
 
 /*
  * The cell terms and the noise level of tile (iy, ix) for a target colour t, with the 3 x 3

@@ -17,7 +17,8 @@
  * that bucket); then the guide term of the site's cell (the baseline taps summed in the
  * order of the phase's list). Every loop runs over the sites of a block, and each site's
  * arithmetic does not depend on the block's size. The cell terms come from the thread's
- * zg_cells, computed once per tile row and target colour (z_guided.c).
+ * zg_cells_<RS>, computed once per tile row and target colour
+ * (z_guided_cells.template.h).
  */
 #if !defined(IN_T) || !defined(IS) || !defined(IN_IS_INT) || !defined(REAL) || !defined(RS)
 #error "z_guided.template.h: define IN_T, IS, IN_IS_INT, REAL and RS"
@@ -27,29 +28,32 @@
 #define RW RGBZ_CAT(w, RS)
 #define RWD RGBZ_CAT(wd, RS)
 #define RG RGBZ_CAT(g, RS)
+#define ZG_CELLS RGBZ_CAT(zg_cells, RS)
 
 /* the hash, the dot products and the fast path's rows (shared with learned) */
 #include "learned_hash.template.h"
 
 /* acc[ix] += row[x0 + PX ix] for the cells ix in [ia, ib), all inside the row (PX a constant
    where it is inlined, so that the strided loads vectorise) */
-RGBZ_INLINE void ZG_CAT(zg_cg_add, IS, RS)(double *restrict acc, const IN_T *restrict row,
+RGBZ_INLINE void ZG_CAT(zg_cg_add, IS, RS)(REAL *restrict acc, const IN_T *restrict row,
                                            ptrdiff_t x0, const int PX, ptrdiff_t ia,
                                            ptrdiff_t ib)
 {
-    RGBZ_IVDEP for (ptrdiff_t ix = ia; ix < ib; ix++) acc[ix] += (double)row[x0 + PX * ix];
+    RGBZ_IVDEP for (ptrdiff_t ix = ia; ix < ib; ix++) acc[ix] += (REAL)row[x0 + PX * ix];
 }
 
 /* the colour means of target t in tile row jy (0 <= jy < gy) into the padded row c: for
-   each cell, its box's pixels of colour t summed in the order of the box, over their count */
+   each cell, its box's pixels of colour t summed in the order of the box, times the
+   reciprocal of their count (REAL) */
 RGBZ_CLONES_512
 static void ZG_CAT(zg_cg_row, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t cols, int py,
-                                      int px, const rgbz_zguided_filters *f, const zg_cells *st,
-                                      int t, ptrdiff_t jy, double *restrict c)
+                                      int px, const rgbz_zguided_filters *f,
+                                      const ZG_CELLS *st, int t, ptrdiff_t jy,
+                                      REAL *restrict c)
 {
     const ptrdiff_t gx = f->gx, y0 = f->zr + (ptrdiff_t)py * jy;
-    double *restrict acc = c + 1;
-    for (ptrdiff_t ix = 0; ix < gx; ix++) acc[ix] = 0.0;
+    REAL *restrict acc = c + 1;
+    for (ptrdiff_t ix = 0; ix < gx; ix++) acc[ix] = 0;
     for (int i = 0; i < st->nbox[t]; i++) {
         const IN_T *restrict row = src + lrn_extend(y0 + st->ey[t][i], rows, py) * cols;
         const ptrdiff_t x0 = f->zc + st->ex[t][i];
@@ -59,83 +63,88 @@ static void ZG_CAT(zg_cg_row, IS, RS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t
         if (ib > gx) ib = gx;
         if (ia > ib) ia = ib;
         for (ptrdiff_t ix = 0; ix < ia; ix++)
-            acc[ix] += (double)row[lrn_extend(x0 + px * ix, cols, px)];
+            acc[ix] += (REAL)row[lrn_extend(x0 + px * ix, cols, px)];
         switch (px) {   /* the periods of Mask1 and Mask2, unrolled */
         case 2: ZG_CAT(zg_cg_add, IS, RS)(acc, row, x0, 2, ia, ib); break;
         case 4: ZG_CAT(zg_cg_add, IS, RS)(acc, row, x0, 4, ia, ib); break;
         default: ZG_CAT(zg_cg_add, IS, RS)(acc, row, x0, px, ia, ib);
         }
         for (ptrdiff_t ix = ib; ix < gx; ix++)
-            acc[ix] += (double)row[lrn_extend(x0 + px * ix, cols, px)];
+            acc[ix] += (REAL)row[lrn_extend(x0 + px * ix, cols, px)];
     }
-    const double n = (double)st->nbox[t];
-    for (ptrdiff_t ix = 0; ix < gx; ix++) acc[ix] /= n;
-    zg_pad(c, gx);
+    const REAL inv = (REAL)1 / (REAL)st->nbox[t];
+    RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) acc[ix] *= inv;
+    RGBZ_CAT(zg_pad, RS)(c, gx);
 }
 
-/* the cell terms [RGBZ_ZG_FEATURES][gx] of target t in tile row iy, computed if the thread
-   does not hold them yet (with the colour means of the rows around it and, once per tile
-   row, the noise levels into st->level) */
-static const double *ZG_CAT(zg_cells_get, IS, RS)(zg_cells *st, const rgbz_zguided_filters *f,
-                                                  const IN_T *src, ptrdiff_t rows,
-                                                  ptrdiff_t cols, int py, int px,
-                                                  ptrdiff_t iy, int t)
+/* the cell terms [gx][ZG_CVR] of target t in tile row iy, computed if the thread does not
+   hold them yet (with the colour means of the rows around it and, once per tile row, the
+   noise levels into st->level) */
+static const REAL *ZG_CAT(zg_cells_get, IS, RS)(ZG_CELLS *st, const rgbz_zguided_filters *f,
+                                                const IN_T *src, ptrdiff_t rows,
+                                                ptrdiff_t cols, int py, int px,
+                                                ptrdiff_t iy, int t)
 {
     const ptrdiff_t gx = f->gx, gy = f->gy, w = gx + 2;
-    double *out = st->cell + (ptrdiff_t)t * RGBZ_ZG_FEATURES * gx;
+    REAL *out = st->cell + (ptrdiff_t)t * ZG_CVR * gx;
     if (st->cell_tag[t] == iy) return out;
-    const double *N[3], *V[3], *C[3];
+    const REAL *N[3], *V[3], *C[3];
     for (int r = 0; r < 3; r++) {
         ptrdiff_t jy = iy - 1 + r;
         jy = jy < 0 ? 0 : (jy >= gy ? gy - 1 : jy);
         const int slot = (int)(jy % 3);
-        double *c = st->cg + ((ptrdiff_t)t * 3 + slot) * w;
+        REAL *c = st->cg + ((ptrdiff_t)t * 3 + slot) * w;
         if (st->cg_tag[t][slot] != jy) {
             ZG_CAT(zg_cg_row, IS, RS)(src, rows, cols, py, px, f, st, t, jy, c);
             st->cg_tag[t][slot] = jy;
         }
         C[r] = c;
-        double *n = st->nv + (ptrdiff_t)r * w, *v = st->nv + (ptrdiff_t)(3 + r) * w;
-        if (st->nv_tag != iy) {
-            memcpy(n + 1, f->grid + jy * gx, (size_t)gx * sizeof *n);
-            memcpy(v + 1, f->var + jy * gx, (size_t)gx * sizeof *v);
-            zg_pad(n, gx);
-            zg_pad(v, gx);
+        REAL *n = st->nv + (ptrdiff_t)slot * 2 * w, *v = n + w;
+        if (st->nv_tag[slot] != jy) {
+            RGBZ_CAT(zg_guide_rows, RS)(st, f, py, px, jy, n, v);
+            st->nv_tag[slot] = jy;
         }
         N[r] = n;
         V[r] = v;
     }
-    st->nv_tag = iy;
-    double *nu = st->nv + 6 * w;
-    zg_cell_row(N, V, C, gx, f->lam, out, nu);
-    if (st->level_tag != iy) zg_level_row(nu, gx, f->thr, f->n_levels - 1, st->level);
+    REAL *nu = st->nv + 6 * w;
+    RGBZ_CAT(zg_cell_row, RS)(N, V, C, gx, (REAL)f->lam, out, nu);
+    if (st->level_tag != iy)
+        RGBZ_CAT(zg_level_row, RS)(nu, gx, f->thr, f->n_levels - 1, st->level);
     st->level_tag = iy;
     st->cell_tag[t] = iy;
     return out;
 }
 
 /* the buckets b[j] = level * n_hash + bucket[j] of the n sites of phase k in tile row cells
-   ix0, ix0 + 1, ... (clamped to the grid), and their cell terms cj[m][j] (from cell) */
-RGBZ_INLINE void ZG_CAT(zg_prep, IS, RS)(const int n, const rgbz_zguided_filters *f,
-                                         const int32_t *restrict bucket, ptrdiff_t ix0,
-                                         const double *restrict cell,
-                                         const int32_t *restrict level, int32_t *restrict b,
-                                         REAL (*restrict cj)[LRN_BLK])
+   ix0, ix0 + 1, ... (clamped to the grid) */
+RGBZ_INLINE void ZG_CAT(zg_buckets, IS, RS)(const int n, const rgbz_zguided_filters *f,
+                                            const int32_t *restrict bucket, ptrdiff_t ix0,
+                                            const int32_t *restrict level,
+                                            int32_t *restrict b)
 {
     const int nbh = f->hash->n_buckets;
     const ptrdiff_t gx = f->gx;
     if (ix0 + n <= gx) {   /* the cells ix0 .. ix0 + n - 1: contiguous */
         RGBZ_IVDEP for (int j = 0; j < n; j++) b[j] = level[ix0 + j] * nbh + bucket[j];
-        for (int m = 0; m < RGBZ_ZG_FEATURES; m++) {
-            const double *restrict cm = cell + (ptrdiff_t)m * gx + ix0;
-            RGBZ_IVDEP for (int j = 0; j < n; j++) cj[m][j] = (REAL)cm[j];
-        }
     } else {               /* past the grid's last column: its last cell */
-        for (int j = 0; j < n; j++) {
-            const ptrdiff_t ix = ix0 + j < gx ? ix0 + j : gx - 1;
-            b[j] = level[ix] * nbh + bucket[j];
-            for (int m = 0; m < RGBZ_ZG_FEATURES; m++) cj[m][j] = (REAL)cell[m * gx + ix];
-        }
+        for (int j = 0; j < n; j++)
+            b[j] = level[ix0 + j < gx ? ix0 + j : gx - 1] * nbh + bucket[j];
+    }
+}
+
+/* the cell terms cj[m][j] (m < RGBZ_ZG_FEATURES: share u_m, then c_9, c_10) of the n sites in
+   tile row cells ix0, ix0 + 1, ... (clamped to the grid), from the cell vectors */
+RGBZ_INLINE void ZG_CAT(zg_prep, IS, RS)(const int n, const rgbz_zguided_filters *f,
+                                         ptrdiff_t ix0, const REAL *restrict cell,
+                                         REAL (*restrict cj)[LRN_BLK])
+{
+    const ptrdiff_t gx = f->gx;
+    for (int j = 0; j < n; j++) {
+        const REAL *restrict c = cell + (ix0 + j < gx ? ix0 + j : gx - 1) * ZG_CVR;
+        for (int m = 0; m < 9; m++) cj[m][j] = c[m];
+        cj[9][j] = c[8 + ZG_L];
+        cj[10][j] = c[9 + ZG_L];
     }
 }
 
@@ -175,7 +184,7 @@ RGBZ_CLONES_512
 static void ZG_CAT(zg_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t x0, int px,
                                              int n, ptrdiff_t cols, const ptrdiff_t *colmap,
                                              const rgbz_zguided_filters *f, int k,
-                                             ptrdiff_t ix0, const double *restrict cell,
+                                             ptrdiff_t ix0, const REAL *restrict cell,
                                              const int32_t *restrict level,
                                              REAL (*restrict v)[LRN_BLK], REAL *restrict res)
 {
@@ -186,7 +195,8 @@ static void ZG_CAT(zg_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t 
     REAL cj[RGBZ_ZG_FEATURES][LRN_BLK], bsum[LRN_BLK];
     LRN_CAT(lrn_gather, IS, RS)(rowp, x0, px, n, cols, colmap, h, k, v);
     LRN_CAT(lrn_hash, IS, RS)(v, n, h, k, bucket);
-    ZG_CAT(zg_prep, IS, RS)(n, f, bucket, ix0, cell, level, b, cj);
+    ZG_CAT(zg_buckets, IS, RS)(n, f, bucket, ix0, level, b);
+    ZG_CAT(zg_prep, IS, RS)(n, f, ix0, cell, cj);
     LRN_CAT(lrn_dot, IS, RS)(v, n, w, h->n_taps[k], (int)nb, b, res);
     const int32_t *bi = f->base_idx + (ptrdiff_t)k * f->n_base_max;
     RGBZ_IVDEP for (int j = 0; j < n; j++) bsum[j] = v[bi[0]][j];
@@ -197,39 +207,156 @@ static void ZG_CAT(zg_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t 
     ZG_CAT(zg_guide, IS, RS)(n, f, k, b, cj, bsum, res);
 }
 
-/* the fast path: the values res[j] of the n sites x0, x0 + px, ... of phase k in row y (the
-   REAL rows realp[dy + R]; box sums bx of the phase's sites in the row from m0 on) in tile
-   row cells ix0, ix0 + 1, ...: the hash from the box sums, the dense colour dot product of
-   bucket level * n_hash + hash bucket, the guide term */
-RGBZ_CLONES_512
-static void ZG_CAT(zg_fast_block, IS, RS)(const REAL *const *realp, ptrdiff_t y, ptrdiff_t x0,
-                                          int px, int n, const rgbz_zguided_filters *f, int k,
-                                          const REAL *bx, ptrdiff_t m0, ptrdiff_t cols,
-                                          ptrdiff_t ix0, const double *restrict cell,
-                                          const int32_t *restrict level, REAL *restrict res)
+#if LRN_VECTOR_EXT
+/* one site's accumulator (lrn_site_acc: its dense window against the weights w) plus its
+   guide term, lane by lane (z_guided_cells.template.h's layout): base times the products
+   of the first two rows of gw and c, plus those of the third */
+RGBZ_INLINE void ZG_CAT(zg_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t x,
+                                             const REAL *restrict w, int rows,
+                                             const REAL *restrict gw, const REAL *restrict c,
+                                             REAL base, LRN_CAT(lrn_rv, IS, RS) *acc)
+{
+    typedef LRN_CAT(lrn_rv, IS, RS) rv;
+    enum { L = (int)(32 / sizeof(REAL)) };
+    rv a, t = {0}, gv, cv;
+    LRN_CAT(lrn_site_acc, IS, RS)(rowp, x, w, rows, &a);
+    for (int h = 0; h < 8 + L; h += L) {
+        memcpy(&gv, gw + h, sizeof gv);
+        memcpy(&cv, c + h, sizeof cv);
+        t += gv * cv;
+    }
+    a += t * base;
+    memcpy(&gv, gw + 8 + L, sizeof gv);
+    memcpy(&cv, c + 8 + L, sizeof cv);
+    *acc = a + gv * cv;
+}
+#endif
+
+/* res[j] = the dense dot product of the site at x0 + j px (its bucket b[j]'s dense weights
+   in wd, as lrn_dense_dot) plus its guide term (the guide weights gw of b[j], the cell vector
+   of its tile column ix0 + j clamped to the grid, its baseline base[j]); with the vector
+   extensions one accumulator per site, its lanes added in lane order for 8 floats' or 4
+   doubles' sites at once (lrn_lane_sums) */
+RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t x0, int px,
+                                             int n, const REAL *restrict wd, const int R,
+                                             const int32_t *restrict b,
+                                             const REAL *restrict gw,
+                                             const REAL *restrict cell, ptrdiff_t ix0,
+                                             ptrdiff_t gx, const REAL *restrict base,
+                                             REAL (*restrict cj)[LRN_BLK],
+                                             const rgbz_zguided_filters *f, int k,
+                                             REAL *restrict res)
+{
+#if LRN_VECTOR_EXT
+    typedef LRN_CAT(lrn_rv, IS, RS) rv;
+    enum { L = (int)(32 / sizeof(REAL)) };
+    const int rows = 2 * R + 1;
+    (void)cj;
+    (void)f;
+    (void)k;
+    (void)LRN_CAT(lrn_dense_dot, IS, RS);   /* learned's own dot product: not used here */
+    int j = 0;
+    for (; j + L <= n; j += L) {
+        rv acc[L];
+        for (int i = 0; i < L; i++) {
+            const ptrdiff_t ix = ix0 + j + i < gx ? ix0 + j + i : gx - 1;
+            ZG_CAT(zg_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)(j + i) * px - R,
+                                        wd + (ptrdiff_t)b[j + i] * rows * 8, rows,
+                                        gw + (ptrdiff_t)b[j + i] * ZG_CVR, cell + ix * ZG_CVR,
+                                        base[j + i], &acc[i]);
+        }
+        rv sum;
+        RGBZ_CAT(lrn_lane_sums, RS)(acc, &sum);
+        memcpy(res + j, &sum, sizeof sum);
+    }
+    /* the last sites of a partial block: the same sums, one site at a time */
+    for (; j < n; j++) {
+        const ptrdiff_t ix = ix0 + j < gx ? ix0 + j : gx - 1;
+        rv a;
+        ZG_CAT(zg_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)j * px - R,
+                                    wd + (ptrdiff_t)b[j] * rows * 8, rows,
+                                    gw + (ptrdiff_t)b[j] * ZG_CVR, cell + ix * ZG_CVR, base[j],
+                                    &a);
+        REAL lanes[L];
+        memcpy(lanes, &a, sizeof a);
+        REAL sum = lanes[0];
+        for (int l = 1; l < L; l++) sum += lanes[l];
+        res[j] = sum;
+    }
+#else
+    /* the dense dot product, then the guide term of the generic path */
+    (void)gw;
+    LRN_CAT(lrn_dense_dot, IS, RS)(rowp, x0, px, n, wd, R, b, res);
+    (void)gx;
+    ZG_CAT(zg_prep, IS, RS)(n, f, ix0, cell, cj);
+    REAL bs[LRN_BLK];
+    RGBZ_IVDEP for (int j = 0; j < n; j++) bs[j] = base[j] * (REAL)f->n_base[k];
+    ZG_CAT(zg_guide, IS, RS)(n, f, k, b, cj, bs, res);
+#endif
+}
+
+/* base[j]: the mean of the baseline taps of the n sites x0 + j PX of phase k (the REAL rows
+   realp[dy + R]), summed in the order of the phase's list (PX a constant where it is
+   inlined, so that the strided loads vectorise) */
+RGBZ_INLINE void ZG_CAT(zg_base, IS, RS)(const REAL *const *realp, ptrdiff_t x0, const int PX,
+                                         const int n, const rgbz_zguided_filters *f, int k,
+                                         REAL *restrict base)
 {
     const rgbz_learned_filters *h = f->hash;
     const int R = h->radius;
-    const ptrdiff_t nb = (ptrdiff_t)f->n_levels * h->n_buckets;
-    int32_t bucket[LRN_BLK], b[LRN_BLK] = {0};
-    REAL cj[RGBZ_ZG_FEATURES][LRN_BLK], bsum[LRN_BLK];
-    LRN_CAT(lrn_fast_bucket, IS, RS)(y, x0, n, h, k, bx, m0, cols, bucket);
-    ZG_CAT(zg_prep, IS, RS)(n, f, bucket, ix0, cell, level, b, cj);
-    LRN_CAT(lrn_dense_dot, IS, RS)(realp, x0, px, n,
-                                   f->RWD + (ptrdiff_t)k * nb * (2 * R + 1) * 8, R, b, res);
-    /* the baseline taps, in the order of the phase's list */
     const int32_t *bi = f->base_idx + (ptrdiff_t)k * f->n_base_max;
     const int32_t *tdy = h->tap_dy + (ptrdiff_t)k * h->n_taps_max;
     const int32_t *tdx = h->tap_dx + (ptrdiff_t)k * h->n_taps_max;
     {
         const REAL *restrict r = realp[tdy[bi[0]] + R] + x0 + tdx[bi[0]];
-        RGBZ_IVDEP for (int j = 0; j < n; j++) bsum[j] = r[(ptrdiff_t)j * px];
+        RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = r[(ptrdiff_t)j * PX];
     }
     for (int i = 1; i < f->n_base[k]; i++) {
         const REAL *restrict r = realp[tdy[bi[i]] + R] + x0 + tdx[bi[i]];
-        RGBZ_IVDEP for (int j = 0; j < n; j++) bsum[j] = OADD(bsum[j], r[(ptrdiff_t)j * px]);
+        RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = OADD(base[j], r[(ptrdiff_t)j * PX]);
     }
-    ZG_CAT(zg_guide, IS, RS)(n, f, k, b, cj, bsum, res);
+    const REAL inv_base = (REAL)1 / (REAL)f->n_base[k];
+    RGBZ_IVDEP for (int j = 0; j < n; j++) base[j] = OMUL(base[j], inv_base);
+}
+
+/* the fast path: the values res[j] of the n sites x0, x0 + px, ... of phase k in row y (the
+   REAL rows realp[dy + R]; box sums bx of the phase's sites in the row from m0 on) in tile
+   row cells ix0, ix0 + 1, ...: the hash from the box sums, then per site the dense colour
+   dot product of bucket level * n_hash + hash bucket with its guide term (gw: the guide
+   weights of z_guided_cells.template.h's layout, of phase k) */
+RGBZ_CLONES_512
+static void ZG_CAT(zg_fast_block, IS, RS)(const REAL *const *realp, ptrdiff_t y, ptrdiff_t x0,
+                                          int px, int n, const rgbz_zguided_filters *f, int k,
+                                          const REAL *bx, ptrdiff_t m0, ptrdiff_t cols,
+                                          ptrdiff_t ix0, const REAL *restrict cell,
+                                          const int32_t *restrict level,
+                                          const REAL *restrict gw, REAL *restrict res)
+{
+    const rgbz_learned_filters *h = f->hash;
+    const int R = h->radius;
+    const ptrdiff_t nb = (ptrdiff_t)f->n_levels * h->n_buckets;
+    int32_t bucket[LRN_BLK], b[LRN_BLK] = {0};
+    REAL cj[RGBZ_ZG_FEATURES][LRN_BLK], base[LRN_BLK];
+    LRN_CAT(lrn_fast_bucket, IS, RS)(y, x0, n, h, k, bx, m0, cols, bucket);
+    ZG_CAT(zg_buckets, IS, RS)(n, f, bucket, ix0, level, b);
+    /* the baseline: the mean of the baseline taps, summed in the order of the phase's list */
+    switch (px) {   /* the periods of Mask1 and Mask2, unrolled */
+    case 2: ZG_CAT(zg_base, IS, RS)(realp, x0, 2, n, f, k, base); break;
+    case 4: ZG_CAT(zg_base, IS, RS)(realp, x0, 4, n, f, k, base); break;
+    default: ZG_CAT(zg_base, IS, RS)(realp, x0, px, n, f, k, base);
+    }
+    const REAL *wd = f->RWD + (ptrdiff_t)k * nb * (2 * R + 1) * 8;
+    gw += (ptrdiff_t)k * nb * ZG_CVR;
+    switch (R) {      /* the window radii of the fast path, unrolled */
+    case 1: ZG_CAT(zg_dot_rows, IS, RS)(realp, x0, px, n, wd, 1, b, gw, cell, ix0, f->gx, base,
+                                        cj, f, k, res); break;
+    case 2: ZG_CAT(zg_dot_rows, IS, RS)(realp, x0, px, n, wd, 2, b, gw, cell, ix0, f->gx, base,
+                                        cj, f, k, res); break;
+    case 3: ZG_CAT(zg_dot_rows, IS, RS)(realp, x0, px, n, wd, 3, b, gw, cell, ix0, f->gx, base,
+                                        cj, f, k, res); break;
+    default: ZG_CAT(zg_dot_rows, IS, RS)(realp, x0, px, n, wd, R, b, gw, cell, ix0, f->gx,
+                                         base, cj, f, k, res);
+    }
 }
 
 /* the frame loop: every row copied, then the Z sites of its phases, the interior ones
@@ -250,11 +377,16 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
     const ptrdiff_t fast_lo = R > hr ? R : hr;
     const ptrdiff_t fast_hi = cols - 8 + R < cols - 1 - hr ? cols - 8 + R : cols - 1 - hr;
     const int dense = fast_ok && fast_lo <= fast_hi;
-    REAL *valid = NULL;
+    REAL *valid = NULL, *gw = NULL;
     if (dense) {
         /* valid[tile row][d][x]: 1 where the pixel and its partner along d are both known */
         valid = LRN_CAT(lrn_valid, IS, RS)(cols, py, px, phase_map);
-        if (!valid) return RGBZ_ENOMEM;
+        gw = RGBZ_CAT(zg_guide_weights, RS)(f);
+        if (!valid || !gw) {
+            free(valid);
+            free(gw);
+            return RGBZ_ENOMEM;
+        }
     }
     /* the columns the fast path converts and reads */
     const ptrdiff_t ra = fast_lo - LRN_HALO > 0 ? fast_lo - LRN_HALO : 0;
@@ -268,8 +400,8 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
     (void)workers;
 #endif
     {
-        zg_cells st;
-        int ok = zg_cells_init(&st, f, py, px) == RGBZ_OK;
+        ZG_CELLS st;
+        int ok = RGBZ_CAT(zg_cells_init, RS)(&st, f, py, px) == RGBZ_OK;
         /* the fast path's rows: cs (2 per direction), bxs (1 per direction and the 4 class
            rows, of the sites of one phase), the REAL ring, the D rings */
         REAL *scratch = dense ? malloc((size_t)cols * (3 * RGBZ_LEARNED_DIRS + 4 + LRN_RING +
@@ -322,7 +454,7 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
 #ifdef RGBZ_COUNT_OPS
                 rgbz_opc_cur = opcounts + (size_t)k * RGBZ_NOPS;
 #endif
-                const double *cell = ZG_CAT(zg_cells_get, IS, RS)(&st, f, src, rows, cols, py,
+                const REAL *cell = ZG_CAT(zg_cells_get, IS, RS)(&st, f, src, rows, cols, py,
                                                                   px, iy, f->targets[k]);
                 /* the fast sites of this phase: xf .. xl (none when xf > xl) */
                 ptrdiff_t xf = cols, xl = -1;
@@ -340,7 +472,7 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
                             const int n = (int)(left < LRN_BLK ? left : LRN_BLK);
                             ZG_CAT(zg_fast_block, IS, RS)(realp, y, xb, px, n, f, k, bxs,
                                                           (xb - xf) / px, cols, xb / px, cell,
-                                                          st.level, res);
+                                                          st.level, gw, res);
                             for (int j = 0; j < n; j++)
                                 drow[xb + (ptrdiff_t)j * px] =
                                     (IN_T)RGBZ_CAT(rgbz_out, RS)(res[j], maxval, IN_IS_INT);
@@ -363,9 +495,16 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
             }
         }
         free(scratch);
-        zg_cells_free(&st);
+        if (st.bad && ok) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ZG_SITES;
+        }
+        RGBZ_CAT(zg_cells_free, RS)(&st);
     }
     free(valid);
+    free(gw);
     return status;
 }
 
@@ -373,3 +512,4 @@ static int ZG_CAT(zg_loop, IS, RS)(const IN_T *restrict src, IN_T *restrict dst,
 #undef RW
 #undef RWD
 #undef RG
+#undef ZG_CELLS

@@ -8,6 +8,8 @@
 #error "z_guided_entry.template.h: #define REAL and RS (the precision) before including it"
 #endif
 
+#include "z_guided_cells.template.h"
+
 #define RGBZ_TYPE_TEMPLATE "z_guided.template.h"
 #include "rgbz_each_type.h"
 #undef RGBZ_TYPE_TEMPLATE

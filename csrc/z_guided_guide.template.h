@@ -33,111 +33,69 @@ RGBZ_INLINE void RGBZ_CAT(zgg_amplitudes, IS)(const IN_T *restrict taps, ptrdiff
     RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] /= (double)F;
 }
 
-/* the lit ratios A_f / mean of the sites 0, step, 2 step, ... (a sample that places the
-   median's bracket; its arithmetic need not match the passes') into samp[f], their count */
-static ptrdiff_t RGBZ_CAT(zgg_sample, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N,
-                                          ptrdiff_t step, double *const *samp)
+/* the ratios A_f / mean of the sample's sites i step, i in [i0, i1), into samp[f][i] (NaN
+   where the site is not lit, mean <= 0), in the arithmetic of zgg_amplitudes */
+static void RGBZ_CAT(zgg_sample, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N,
+                                     ptrdiff_t step, ptrdiff_t i0, ptrdiff_t i1,
+                                     double *const *samp)
 {
-    ptrdiff_t m = 0;
-    for (ptrdiff_t n = 0; n < N; n += step) {
+    for (ptrdiff_t i = i0; i < i1; i++) {
+        const ptrdiff_t n = i * step;
         double a[RGBZ_TOF_MAX_FREQS], mean = 0.0;
         for (ptrdiff_t f = 0; f < F; f++) {
             const IN_T *t = taps + 4 * f * N + n;
             const double I = (double)t[0] - (double)t[2 * N], Q = (double)t[3 * N] - (double)t[N];
             a[f] = 0.5 * sqrt(I * I + Q * Q);
-            mean += a[f];
+            mean = f ? mean + a[f] : a[f];
         }
         mean /= (double)F;
-        if (mean > 0) {
-            for (ptrdiff_t f = 0; f < F; f++) samp[f][m] = a[f] / mean;
-            m++;
-        }
+        for (ptrdiff_t f = 0; f < F; f++) samp[f][i] = mean > 0 ? a[f] / mean : NAN;
     }
-    return m;
 }
 
-/*
- * The passes over the sites [lo, hi) of one thread (z_guided_guide.c runs them between its
- * barriers):
- *   pass 1: the mean amplitude of every site into the grid, the count of the lit sites
- *           (mean > 0), and for each frequency f the count of their ratios A_f / mean below
- *           the bracket [blo[f], bhi[f]] (to below[f]) and those in it, appended to buf[f]
- *           (its first cap of them; the count goes on in pos[f]);
- *   pass 2: the ratios in the brackets only (the bracket missed the median);
- *   pass 3: the noise variance of every site into var, from ratio[f].
- */
+/* the sites [lo, hi): the mean amplitude of every site into the grid, the noise variance into
+   var (from the medians ratio[f]; 0 when F = 1), in NumPy's order: norm_f = A_f / ratio_f,
+   its mean over f (summed in order, over F), then sum_f (norm_f - mean)^2 in order, over
+   F (F - 1) */
 RGBZ_CLONES_512
-static void RGBZ_CAT(zgg_pass, IS)(int pass, const IN_T *taps, ptrdiff_t F, ptrdiff_t N,
-                                   ptrdiff_t lo, ptrdiff_t hi, ptrdiff_t gxc, ptrdiff_t gx,
-                                   double *grid, double *var, ptrdiff_t *n_lit,
-                                   const double *blo, const double *bhi, ptrdiff_t *below,
-                                   double *const *buf, ptrdiff_t cap, ptrdiff_t *pos,
-                                   const double *ratio)
+static void RGBZ_CAT(zgg_pass, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t lo,
+                                   ptrdiff_t hi, ptrdiff_t gxc, ptrdiff_t gx, double *grid,
+                                   double *var, const double *ratio)
 {
     double A[RGBZ_TOF_MAX_FREQS][ZGG_BLOCK], mean[ZGG_BLOCK], val[ZGG_BLOCK];
+    const double den = (double)(F * (F - 1));
     for (ptrdiff_t n0 = lo, nb; n0 < hi; n0 += nb) {
         /* a block within one row of the grid: site n is cell (n / gxc, n % gxc), so the
-           block's cells are at[0 ..] */
+           block's cells are contiguous */
         const ptrdiff_t ix = n0 % gxc;
         nb = hi - n0 < ZGG_BLOCK ? hi - n0 : ZGG_BLOCK;
         nb = gxc - ix < nb ? gxc - ix : nb;
         const ptrdiff_t cell0 = (n0 / gxc) * gx + ix;
         RGBZ_CAT(zgg_amplitudes, IS)(taps, F, N, n0, nb, A, mean);
-        if (pass == 3) {
-            /* NumPy's order: norm = A_f / ratio_f, its mean over f (summed in order, over
-               F), then sum_f (norm_f - mean)^2 in order, over F (F - 1) */
-            for (ptrdiff_t f = 0; f < F; f++) {
-                const double r = ratio[f];
-                double *restrict af = A[f];
-                RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) af[k] = af[k] / r;
-            }
-            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] = A[0][k];
-            for (ptrdiff_t f = 1; f < F; f++)
-                RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] += A[f][k];
-            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
-                mean[k] /= (double)F;
-                const double d = A[0][k] - mean[k];
-                val[k] = d * d;
-            }
-            for (ptrdiff_t f = 1; f < F; f++)
-                RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
-                    const double d = A[f][k] - mean[k];
-                    val[k] += d * d;
-                }
-            const double den = (double)(F * (F - 1));
-            double *restrict vo = var + cell0;
-            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) vo[k] = val[k] / den;
+        memcpy(grid + cell0, mean, (size_t)nb * sizeof *mean);
+        double *restrict vo = var + cell0;
+        if (F == 1) {
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) vo[k] = 0.0;
             continue;
         }
-        if (pass == 1) {
-            memcpy(grid + cell0, mean, (size_t)nb * sizeof *mean);
-            ptrdiff_t c = 0;
-            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) c += mean[k] > 0;
-            *n_lit += c;
-        }
-        if (F == 1) continue;
-        /* the ratios A_f / mean of the lit sites (unlit: NaN, in no bracket and below none) */
         for (ptrdiff_t f = 0; f < F; f++) {
+            const double r = ratio[f];
             double *restrict af = A[f];
-            const double bl = blo[f], bh = bhi[f];
-            ptrdiff_t c = 0;
-            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
-                const int lit = mean[k] > 0;
-                const double r = af[k] / (lit ? mean[k] : 1.0);
-                af[k] = lit ? r : NAN;
-                c += lit && r < bl;
-            }
-            if (pass == 1) below[f] += c;
-            /* the ratios in the bracket, compacted without branches, then kept */
-            ptrdiff_t q = 0;
-            for (ptrdiff_t k = 0; k < nb; k++) {
-                const double x = af[k];
-                val[q] = x;
-                q += (x >= bl) & (x <= bh);
-            }
-            const ptrdiff_t p = pos[f], room = cap - p;
-            if (room > 0) memcpy(buf[f] + p, val, (size_t)(q < room ? q : room) * sizeof *val);
-            pos[f] = p + q;
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) af[k] = af[k] / r;
         }
+        RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] = A[0][k];
+        for (ptrdiff_t f = 1; f < F; f++)
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) mean[k] += A[f][k];
+        RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
+            mean[k] /= (double)F;
+            const double d = A[0][k] - mean[k];
+            val[k] = d * d;
+        }
+        for (ptrdiff_t f = 1; f < F; f++)
+            RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) {
+                const double d = A[f][k] - mean[k];
+                val[k] += d * d;
+            }
+        RGBZ_IVDEP for (ptrdiff_t k = 0; k < nb; k++) vo[k] = val[k] / den;
     }
 }

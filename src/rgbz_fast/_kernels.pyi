@@ -51,6 +51,7 @@ TOF_MAX_FREQS: int
 PLAN_LIMITS: dict[str, int]
 METHODS: dict[str, int]
 PRECISIONS: dict[str, int]
+TYPES: dict[str, int]
 EXP_MODES: dict[str, int]
 DEMOSAIC_MODES: dict[str, int]
 OP_CATEGORIES: dict[str, int]
@@ -83,7 +84,14 @@ def z_guided(src: np.ndarray, dst: np.ndarray, precision: int, py: int, px: int,
              zr: int, zc: int, block: int, targets: np.ndarray, lam: float, thr: np.ndarray,
              maxval: float, workers: int, wd_f32: np.ndarray | None = ...,
              wd_f64: np.ndarray | None = ..., bayer: np.ndarray | None = ...,
-             opcounts: np.ndarray | None = ...) -> None: ...
+             opcounts: np.ndarray | None = ..., taps: np.ndarray | None = ...,
+             taps_type: int = ..., taps_F: int = ..., gy: int = ..., gx: int = ...,
+             gyc: int = ..., gxc: int = ..., ratio: np.ndarray | None = ...,
+             site_rows: np.ndarray | None = ...,
+             site_cols: np.ndarray | None = ...) -> bool: ...
+def z_guided_ratios(taps: np.ndarray, site_rows: np.ndarray, site_cols: np.ndarray, py: int,
+                    px: int, zr: int, zc: int, gyc: int, gxc: int, ratio: np.ndarray,
+                    check: int, workers: int) -> bool: ...
 def z_guided_guide(taps: np.ndarray, site_rows: np.ndarray, site_cols: np.ndarray, py: int,
                    px: int, zr: int, zc: int, gyc: int, gxc: int, grid: np.ndarray,
                    var: np.ndarray, workers: int) -> bool: ...

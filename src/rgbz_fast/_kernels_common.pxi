@@ -197,6 +197,7 @@ PLAN_LIMITS = {"max_taps": RGBZ_MAX_TAPS, "max_cand": RGBZ_MAX_CAND,
 #: counters: {name: code}, from the enums of csrc/rgbz.h
 METHODS = _codes(rgbz_method, "RGBZ_M_")
 PRECISIONS = _codes(rgbz_precision, "RGBZ_P_")
+TYPES = _codes(rgbz_type, "RGBZ_T_")
 EXP_MODES = _codes(rgbz_exp_mode, "RGBZ_EXP_")
 DEMOSAIC_MODES = _codes(rgbz_demosaic_mode, "RGBZ_DM_")
 OP_CATEGORIES = _codes(rgbz_op, "RGBZ_OP_")
@@ -229,6 +230,12 @@ cdef extern from "z_guided.h" nogil:
         Py_ssize_t gy, gx
         const double *grid
         const double *var
+        const void *taps
+        const int64_t *site_rows
+        const int64_t *site_cols
+        int taps_type
+        Py_ssize_t taps_F, gyc, gxc
+        const double *ratio
         const int8_t *chan
         int32_t zr, zc, block
         const int32_t *targets
@@ -245,6 +252,10 @@ cdef extern from "z_guided.h" nogil:
                            const int64_t *site_rows, const int64_t *site_cols, int py, int px,
                            int zr, int zc, Py_ssize_t gy, Py_ssize_t gx, Py_ssize_t gyc,
                            Py_ssize_t gxc, double *grid, double *var, int workers)
+    int rgbz_zguided_ratios(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                            const int64_t *site_rows, const int64_t *site_cols, int py,
+                            int px, int zr, int zc, Py_ssize_t gyc, Py_ssize_t gxc,
+                            double *ratio, int check, int workers)
 
 
 ctypedef struct _precision_kernels:
@@ -467,7 +478,11 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
              int zr, int zc, int block, const int32_t[::1] targets, double lam,
              const double[::1] thr, double maxval, int workers,
              const float[:, :, :, ::1] wd_f32=None, const double[:, :, :, ::1] wd_f64=None,
-             const int32_t[::1] bayer=None, uint64_t[::1] opcounts=None):
+             const int32_t[::1] bayer=None, uint64_t[::1] opcounts=None,
+             const uint8_t[::1] taps=None, int taps_type=0, Py_ssize_t taps_F=0,
+             Py_ssize_t gy=0, Py_ssize_t gx=0, Py_ssize_t gyc=0, Py_ssize_t gxc=0,
+             const double[::1] ratio=None, const int64_t[::1] site_rows=None,
+             const int64_t[::1] site_cols=None):
     """Run the z_guided reconstruction (csrc/z_guided.h). The hash arrays are those of
     ``learned`` (LearnedFilters.kernel_arrays of the base filters); colour weights tap-major
     (n_phases, n_taps_max, n_levels * n_buckets), guide weights (n_phases, n_levels *
@@ -476,7 +491,12 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     pixel's corner and size, the target colour of each phase, the regularisation and the
     n_levels - 1 noise thresholds; the optional dense colour weights (n_phases, n_levels *
     n_buckets, 2 radius + 1, 8) and the Bayer tile (as for ``learned``) enable the fast path.
-    ``opcounts``: as for ``learned``."""
+    ``opcounts``: as for ``learned``. With ``grid`` and ``var`` None, the guide from the ToF
+    taps instead: ``taps`` their bytes ((taps_F, 4, gyc * gxc) elements of type code
+    ``taps_type``, TYPES), ``ratio`` their medians (z_guided_ratios), the grid's shape
+    (gy, gx) and its complete part (gyc, gxc), ``site_rows`` and ``site_cols`` their sites.
+    True when done; False (from the taps only) when the sites are not the complete Z pixels
+    in row-major order (``dst`` then holds nothing meaningful)."""
     cdef int status
     cdef rgbz_learned_filters h
     cdef rgbz_zguided_filters f
@@ -500,7 +520,9 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
             or g_f32.shape[1] != w_f32.shape[2] or g_f64.shape[1] != w_f32.shape[2]
             or g_f32.shape[2] != 11 or g_f64.shape[2] != 11 or n_base.shape[0] != n_ph
             or base_idx.shape[0] != n_ph or targets.shape[0] != n_ph
-            or var.shape[0] != grid.shape[0] or var.shape[1] != grid.shape[1]
+            or (grid is None) != (var is None)
+            or (grid is not None and (var.shape[0] != grid.shape[0]
+                                      or var.shape[1] != grid.shape[1]))
             or chan.shape[0] != py * px
             or dst.shape[0] != src.shape[0] or dst.shape[1] != src.shape[1]
             or phase_map.shape[0] != py * px):
@@ -557,10 +579,32 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     f.n_base_max = base_idx.shape[1]
     f.n_base = &n_base[0]
     f.base_idx = &base_idx[0, 0]
-    f.gy = grid.shape[0]
-    f.gx = grid.shape[1]
-    f.grid = &grid[0, 0]
-    f.var = &var[0, 0]
+    f.grid = NULL
+    f.var = NULL
+    f.taps = NULL
+    f.ratio = NULL
+    f.taps_type = taps_type
+    f.taps_F = taps_F
+    f.gyc = gyc
+    f.gxc = gxc
+    if grid is not None:
+        f.gy = grid.shape[0]
+        f.gx = grid.shape[1]
+        f.grid = &grid[0, 0]
+        f.var = &var[0, 0]
+    else:
+        if (taps is None or ratio is None or ratio.shape[0] != taps_F or gyc < 1 or gxc < 1
+                or site_rows is None or site_cols is None
+                or site_rows.shape[0] != gyc * gxc or site_cols.shape[0] != gyc * gxc
+                or gy < gyc or gx < gxc or taps_type not in TYPES.values()
+                or taps.shape[0] != taps_F * 4 * gyc * gxc * _TYPE_SIZES[taps_type]):
+            raise ValueError("z_guided: inconsistent guide arrays")
+        f.gy = gy
+        f.gx = gx
+        f.taps = &taps[0]
+        f.ratio = &ratio[0]
+        f.site_rows = &site_rows[0]
+        f.site_cols = &site_cols[0]
     f.chan = &chan[0]
     f.zr = zr
     f.zc = zc
@@ -572,7 +616,34 @@ def z_guided(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision, int 
     with nogil:
         status = kernel(in_type, &src[0, 0], &dst[0, 0], src.shape[0], src.shape[1], py, px,
                         &phase_map[0], &f, maxval, workers, counts)
+    if status == RGBZ_ZG_SITES and grid is None:
+        return False
     _raise_for(status)
+    return True
+
+
+_TYPE_SIZES = {TYPES["u8"]: 1, TYPES["u16"]: 2, TYPES["f32"]: 4, TYPES["f64"]: 8}
+
+
+def z_guided_ratios(const frame_t[:, :, ::1] taps, const int64_t[::1] site_rows,
+                    const int64_t[::1] site_cols, int py, int px, int zr, int zc,
+                    Py_ssize_t gyc, Py_ssize_t gxc, double[::1] ratio, int check, int workers):
+    """The medians of the guide of z_guided (csrc/z_guided.h, rgbz_zguided_ratios) from ToF
+    taps (F, 4, N) into ``ratio`` (F,). True when done; False when the sites are not the
+    gyc x gxc complete Z pixels in row-major order (checked only when ``check``)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if (site_rows.shape[0] != taps.shape[2] or site_cols.shape[0] != taps.shape[2]
+            or taps.shape[1] != 4 or ratio.shape[0] != taps.shape[0] or taps.shape[2] == 0):
+        raise ValueError("z_guided_ratios: inconsistent arrays")
+    with nogil:
+        status = rgbz_zguided_ratios(in_type, &taps[0, 0, 0], taps.shape[0], taps.shape[2],
+                                     &site_rows[0], &site_cols[0], py, px, zr, zc, gyc, gxc,
+                                     &ratio[0], check, workers)
+    if status == RGBZ_ZG_SITES:
+        return False
+    _raise_for(status)
+    return True
 
 
 def z_guided_guide(const frame_t[:, :, ::1] taps, const int64_t[::1] site_rows,

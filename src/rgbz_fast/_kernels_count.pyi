@@ -8,6 +8,7 @@ from rgbz_fast._kernels import OP_CATEGORIES as OP_CATEGORIES
 from rgbz_fast._kernels import PLAN_LIMITS as PLAN_LIMITS
 from rgbz_fast._kernels import PRECISIONS as PRECISIONS
 from rgbz_fast._kernels import TOF_MAX_FREQS as TOF_MAX_FREQS
+from rgbz_fast._kernels import TYPES as TYPES
 from rgbz_fast._kernels import TOF_MAX_WRAPS as TOF_MAX_WRAPS
 from rgbz_fast._kernels import counting_build as counting_build
 from rgbz_fast._kernels import have_openmp as have_openmp
@@ -26,3 +27,4 @@ from rgbz_fast._kernels import rgbz_type as rgbz_type
 from rgbz_fast._kernels import tof_demodulate as tof_demodulate
 from rgbz_fast._kernels import z_guided as z_guided
 from rgbz_fast._kernels import z_guided_guide as z_guided_guide
+from rgbz_fast._kernels import z_guided_ratios as z_guided_ratios

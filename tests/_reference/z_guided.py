@@ -19,6 +19,9 @@ import numpy as np
 from .learned import Z, hash_sites
 from .reconstruction import shift_index, window_offsets
 
+#: the guide's median runs over every s-th of the N Z pixels, s = N // SAMPLE + 1
+SAMPLE = 16384
+
 
 def _colour_mean(data, chan, t, y0, x0, b, period):
     """Mean of the pixels of colour t in the box of the Z pixel at (y0, x0) (size b) and the
@@ -34,9 +37,10 @@ def _colour_mean(data, chan, t, y0, x0, b, period):
 def reference_guide_grid(shape, pattern, tof):
     """The amplitude grid and its noise variance (tile rows, tile columns) from the taps of
     ``tof``, as docs/guide/z_guided.md states them: the mean over the frequencies of the
-    amplitude, sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1)) with r_f the median over
-    the lit sites of A_f / mean (1 if none lit, or if it is not > 0); a Z pixel cut by the
-    frame's edge takes the values of the last complete row and column."""
+    amplitude, sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F - 1)) with r_f the median of
+    A_f / mean over the lit sites of a sample (every s-th Z pixel in row-major order,
+    s = N // SAMPLE + 1; 1 if none lit, or if it is not > 0); a Z pixel cut by the frame's
+    edge takes the values of the last complete row and column."""
     P, Q = pattern.period
     z = np.argwhere(pattern.tile == Z)
     zr, zc = (int(v) for v in z.min(axis=0))
@@ -46,13 +50,14 @@ def reference_guide_grid(shape, pattern, tof):
     mean = amp.mean(axis=0)
     F = amp.shape[0]
     var = np.zeros_like(mean)
-    if F > 1:
-        lit = mean > 0
-        ratio = np.median(amp[:, lit] / mean[lit], axis=1) if lit.any() else np.ones(F)
-        norm = amp / np.where(ratio > 0, ratio, 1.0)[:, None]
-        var = ((norm - norm.mean(axis=0)) ** 2).sum(axis=0) / (F * (F - 1))
     rows, cols = tof.sites
     iy, ix = (rows - zr) // P, (cols - zc) // Q
+    if F > 1:
+        sample = np.argsort(iy * gx + ix, kind="stable")[::len(mean) // SAMPLE + 1]
+        lit = sample[mean[sample] > 0]
+        ratio = np.median(amp[:, lit] / mean[lit], axis=1) if len(lit) else np.ones(F)
+        norm = amp / np.where(ratio > 0, ratio, 1.0)[:, None]
+        var = ((norm - norm.mean(axis=0)) ** 2).sum(axis=0) / (F * (F - 1))
     # the complete Z pixels: the first gyc rows and gxc columns of the grid
     gyc = len([r for r in range(zr, shape[0], P) if r + b - 1 < shape[0]])
     gxc = len([c for c in range(zc, shape[1], Q) if c + b - 1 < shape[1]])

@@ -127,6 +127,23 @@ def test_frames_wider_than_a_strip_match_reference(fitted, name):
         assert np.array_equal(got[~z], frame.data[~z])
 
 
+@pytest.mark.parametrize("levels", [(4, 4, 3), (2, 1, 2), (1, 3, 1)])
+def test_every_count_of_hash_levels_matches_reference(levels):
+    # the fast path's bucket takes one pass over a row's sites with at most two thresholds of
+    # each kind (missing ones padded), blocks of LRN_BLK sites through lrn_bucket with more:
+    # 96 sites of a phase per row (more than one block), against the reference
+    n_str, n_coh, n_spr = levels
+    frames = [_frame(rz.mask1(), (60, 72), seed=s) for s in range(3)]
+    f = train(frames, n_strength=n_str, n_coherence=n_coh, n_spread=n_spr,
+              meta={"training_set": "synthetic"})
+    assert f.n_buckets == 8 * n_str * n_coh * n_spr
+    frame = _frame(f.pattern, (24, 200), seed=17, dtype=np.float64)
+    got = rz.reconstruct(frame, "learned", filters=f, precision="float64")
+    want = reference_learned(frame.data, f)
+    z = frame.z_mask
+    np.testing.assert_allclose(got[z], want[z], rtol=1e-12, atol=1e-9)
+
+
 def test_threads_give_identical_results(fitted):
     f = fitted["mask2"]
     frame = _frame(f.pattern, (120, 200), seed=5, dtype=np.float32)

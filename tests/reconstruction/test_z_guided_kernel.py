@@ -9,8 +9,8 @@ Tolerances (stated here, asserted below):
   DN: 2e-3 of 2047 is float32's rounding of a few terms) at all but MAX_F32_FLIPS of the
   Z sites: a float32 hash term on a bucket threshold lands in the neighbouring bucket;
 * the guide from the taps (csrc/z_guided_guide.c) equals the NumPy reference's bit for bit
-  (the same float64 operations in the same order, an exact median), for any thread count
-  and any order of the sites.
+  (the same float64 operations in the same order, the exact median of the same sample of
+  the sites), for any thread count and any order of the sites.
 """
 
 from __future__ import annotations
@@ -158,6 +158,27 @@ def test_guide_from_the_taps_equals_the_reference(pattern, shape, noise):
             np.testing.assert_array_equal(g, w)
 
 
+@pytest.mark.parametrize("pattern,shape", [("mask1", (60, 76)), ("mask1", (45, 63)),
+                                           ("mask2", (45, 62)), ("mask2", (13, 17))])
+def test_guide_from_the_taps_inside_the_kernel(fitted, pattern, shape):
+    # the kernel demodulates the guide's rows itself from the taps (guide_source): the result
+    # of the grids of guide_grid bit for bit, whatever the order of the sites and the threads
+    from rgbz_fast.reconstruction._z_guided_kernel import TapGuide, guide_source, run_z_guided
+    f = fitted[pattern]
+    frame = simulate(_scene(shape, 13), pattern, seed=8, noise=True)
+    order = np.random.default_rng(2).permutation(frame.tof.n_sites)
+    grids = guide_grid(frame.shape, frame.pattern, tof=frame.tof)
+    for tof in (frame.tof, _with_taps(frame.tof, frame.tof.taps, order)):
+        source = guide_source(frame.shape, frame.pattern, tof=tof, workers=2)
+        assert isinstance(source, TapGuide)
+        for precision in ("float32", "float64"):
+            for workers in (1, 2):
+                got, want = (run_z_guided(frame.data, np.empty_like(frame.data), frame.pattern,
+                                          f, g, precision, 11, workers)
+                             for g in (source, grids))
+                np.testing.assert_array_equal(got, want)
+
+
 def _with_taps(tof, taps, order=None):
     """``tof`` with other taps and, given ``order``, its sites in that order."""
     order = np.arange(tof.n_sites) if order is None else order
@@ -199,13 +220,14 @@ def test_guide_of_one_frequency_and_of_dark_pixels():
         np.testing.assert_array_equal(g, w)
 
 
-def test_guide_median_when_the_sample_misses_it():
-    # the kernel places the median's bracket from every (N // 16384 + 1)-th site: here every
-    # second site, all alike, while the others differ, so that the bracket misses the median
-    # and a second pass keeps every ratio
+def test_guide_median_runs_over_the_sample():
+    # the medians r_f run over every (N // 16384 + 1)-th Z pixel in row-major order: here
+    # every second one, all alike (ratios 1), while the others differ, so that the median over
+    # every site would differ from the sample's
     frame = simulate(_scene((200, 400), 8), "mask1", seed=1, noise=False)
     tof = frame.tof
     n = tof.n_sites
+    assert n // 16384 + 1 == 2
     amp = np.where(np.arange(n) % 2 == 0, 1.0, 1.0 + np.arange(3)[:, None] * 0.5) * 40.0
     amp = amp * (1 + 0.01 * np.random.default_rng(3).random(n))
     taps = np.full((3, 4, n), 100.0)
@@ -215,6 +237,11 @@ def test_guide_median_when_the_sample_misses_it():
     for workers in (1, 2):
         for g, w in zip(guide_grid(frame.shape, frame.pattern, tof=t, workers=workers), want):
             np.testing.assert_array_equal(g, w)
+    # the variance with the medians over every site: not the guide's
+    a = t.amplitude("all")
+    norm = a / np.median(a / a.mean(axis=0), axis=1)[:, None]
+    every = ((norm - norm.mean(axis=0)) ** 2).sum(axis=0) / 6
+    assert not np.allclose(want[1].reshape(-1), every, rtol=1e-3)
 
 
 def test_guide_refuses_more_frequencies_than_it_reads():

@@ -151,7 +151,8 @@ def _four_passes(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radius
 
 
 @pytest.mark.parametrize("R,C,F,reach_r,reach_c,radius,uneven,hc", [
-    (150, 300, 3, 5, 5, 10, False, 0.02),     # strips, tiled column passes
+    (150, 300, 3, 5, 5, 10, False, 0.02),     # bands of rows, tiled column passes
+    (40, 1100, 3, 5, 5, 10, False, 0.02),     # tiles of columns with their views
     (200, 270, 4, 3, 5, 6, False, 0.02),      # rows reach farther than the radius allows
     (130, 37, 5, 4, 4, 8, False, 0.1),        # beyond the fast blocks' 4 frequencies
     (3, 5, 3, 5, 5, 10, False, 0.02),         # a grid smaller than a window

@@ -20,8 +20,8 @@ from .._validate import check_choice, check_workers, kernel_threads
 from ._fixed import check_fixed_call, run_fixed
 from ._fixed_learned import run_fixed_learned
 from ._learned import resolve_filters
-from ._z_guided import guide_grid, learned_only, resolve_z_filters
-from ._z_guided_kernel import run_z_guided
+from ._z_guided import learned_only, resolve_z_filters
+from ._z_guided_kernel import guide_source, run_z_guided
 from ._params import ReconstructParams
 from ._plans import METHODS as PLAN_METHODS
 from ._plans import build_plans, check_layout
@@ -253,7 +253,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         filters = resolve_z_filters(params.filters, pattern, bd)
         if tof is None and isinstance(frame, RawFrame):
             tof = frame.tof
-        grids = guide_grid(src.shape, pattern, nir=nir, tof=tof, workers=nthreads)
+        grids = guide_source(src.shape, pattern, nir=nir, tof=tof, workers=nthreads)
         if clip is not None and _reaches(src, pattern, clip):
             raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
                              f"frame reaches the clip level {clip:g}, use another method or "

@@ -131,8 +131,9 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):
     noise variance 0) or else from ``tof``: the mean over the F frequencies of
     :meth:`ToFTaps.amplitude` ``A_f``, and the variance of that mean estimated
     from their disagreement, ``sum_f (A_f / r_f - mean_f A_f / r_f)^2 / (F (F -
-    1))`` (``r_f``: the median over the lit Z pixels of the frame, mean > 0, of
-    ``A_f`` over the mean, 1 if none; 0 with one frequency), demodulated by the
+    1))`` (``r_f``: the median of ``A_f`` over the mean over the lit Z pixels,
+    mean > 0, of a sample, every (N // 16384 + 1)-th Z pixel in row-major order;
+    1 if none; 0 with one frequency), demodulated by the
     C kernel (csrc/z_guided_guide.c) in ``workers`` threads, the same result
     for any number (tests/_reference/z_guided.py holds the NumPy path). A Z
     pixel cut by the frame's edge (no measurement) takes the values a pattern
@@ -167,6 +168,22 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):
             raise ValueError(f"{name}: holds negative values at Z sites (min {vals.min():g}); "
                              "a NIR image or amplitude is >= 0")
         return _fill_cut(grid, complete), np.zeros((gy, gx))
+    grid, var = np.zeros((gy, gx)), np.zeros((gy, gx))
+    taps, rows, cols, gyc, gxc = tof_taps(shape, pattern, tof, name,
+                                          lambda *a: _kernels.z_guided_guide(*a, grid, var,
+                                                                             workers))
+    return _fill_cut(grid, complete), _fill_cut(var, complete)
+
+
+def tof_taps(shape, pattern, tof, name, call):
+    """The checked taps of ``tof`` for the guide: ``call(taps, rows, cols, P, Q, zr, zc, gyc,
+    gxc)`` (a C call of the guide's, False when the sites are not the complete Z pixels in
+    row-major order) with the taps as they are, else with their sites checked and put in that
+    order. Returns the arguments of the call that succeeded, ``(taps, rows, cols, gyc, gxc)``."""
+    pattern = get_pattern(pattern)
+    (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
+    gy, gx = _grid_shape(shape, pattern)
+    complete = _complete(shape, pattern)
     if tof is None:
         raise ValueError(f"{name}: method 'z_guided' is guided by the NIR amplitude the Z pixels "
                          "measured, and this frame carries no ToF taps: pass nir=, a float "
@@ -182,26 +199,25 @@ def guide_grid(shape, pattern, *, tof=None, nir=None, name="nir", workers=1):
     if tof.taps.shape[0] > _kernels.TOF_MAX_FREQS:
         raise ValueError(f"frame.tof: the guide reads at most {_kernels.TOF_MAX_FREQS} "
                          f"frequencies, the taps hold {tof.taps.shape[0]}")
-    grid, var = np.zeros((gy, gx)), np.zeros((gy, gx))
     gyc, gxc = int(complete.any(axis=1).sum()), int(complete.any(axis=0).sum())
     taps = tof.taps if tof.taps.dtype in (np.uint8, np.uint16, np.float32, np.float64) else \
         tof.taps.astype(np.float64)
     taps = np.ascontiguousarray(taps)
     rows, cols = (np.ascontiguousarray(a, np.int64) for a in tof.sites)
-    args = (P, Q, zr, zc, gyc, gxc, grid, var, workers)
-    if tof.n_sites == 0 or not _kernels.z_guided_guide(taps, rows, cols, *args):
-        # sites in another order (or not the frame's Z pixels): checked, then row-major
-        iy, ry = np.divmod(rows - zr, P)
-        ix, rx = np.divmod(cols - zc, Q)
-        at = iy * gx + ix
-        order = np.argsort(at, kind="stable")
-        if np.any(ry) or np.any(rx) or not np.array_equal(at[order], np.flatnonzero(complete)):
-            raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
-                             f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
-        _kernels.z_guided_guide(np.ascontiguousarray(taps[:, :, order]),
-                                np.ascontiguousarray(rows[order]),
-                                np.ascontiguousarray(cols[order]), *args)
-    return _fill_cut(grid, complete), _fill_cut(var, complete)
+    if tof.n_sites and call(taps, rows, cols, P, Q, zr, zc, gyc, gxc):
+        return taps, rows, cols, gyc, gxc
+    # sites in another order (or not the frame's Z pixels): checked, then row-major
+    iy, ry = np.divmod(rows - zr, P)
+    ix, rx = np.divmod(cols - zc, Q)
+    at = iy * gx + ix
+    order = np.argsort(at, kind="stable")
+    if np.any(ry) or np.any(rx) or not np.array_equal(at[order], np.flatnonzero(complete)):
+        raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
+                         f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
+    args = (np.ascontiguousarray(taps[:, :, order]), np.ascontiguousarray(rows[order]),
+            np.ascontiguousarray(cols[order]), P, Q, zr, zc, gyc, gxc)
+    call(*args)
+    return args[:3] + args[-2:]
 
 
 def colour_grids(data, pattern, channels):

@@ -3,6 +3,9 @@
 One pass: the kernel computes what a site takes from its Z pixels alone -- the
 11 cell terms and the noise level of its tile (:func:`._z_guided.cell_terms`)
 -- once per tile row in the rows it reconstructs, then every Z site of them.
+From ToF taps (:func:`guide_source`) it also demodulates the amplitude grid and
+its variance there, row by row, so that the taps are read once: only the
+medians of :func:`._z_guided.guide_grid` come first.
 """
 
 from __future__ import annotations
@@ -10,12 +13,16 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
-from ._z_guided import z_layout
+from .._patterns import get_pattern
+from ._z_guided import _grid_shape, guide_grid, tof_taps, z_layout
 
-__all__ = ["run_z_guided", "kernel_arrays"]
+__all__ = ["run_z_guided", "kernel_arrays", "guide_source", "TapGuide"]
 
 _PRECISION_CODES = {"float32": _kernels.PRECISIONS["float32"],
                     "float64": _kernels.PRECISIONS["float64"]}
+#: the element types of the taps (tof_taps gives no other) -> the kernel's type codes
+_TYPE_CODES = {np.dtype(t).char: _kernels.TYPES[c] for t, c in
+               ((np.uint8, "u8"), (np.uint16, "u16"), (np.float32, "f32"), (np.float64, "f64"))}
 
 
 def kernel_arrays(filters):
@@ -57,20 +64,66 @@ def kernel_arrays(filters):
     return out
 
 
+class TapGuide:
+    """The guide of z_guided as the kernel computes it from the taps: the taps (F, 4,
+    gyc * gxc) and sites of the complete Z pixels, their medians ``ratio`` (F,), the grid's
+    shape and its complete part; ``redo()``: the same with the sites checked first (and
+    sorted when they are not in row-major order, which the kernel checks as it reads them)."""
+
+    def __init__(self, taps, rows, cols, ratio, gy, gx, gyc, gxc, redo):
+        self.taps, self.rows, self.cols, self.ratio = taps, rows, cols, ratio
+        self.gy, self.gx, self.gyc, self.gxc = gy, gx, gyc, gxc
+        self.redo = redo
+
+
+def guide_source(shape, pattern, *, tof=None, nir=None, name="nir", workers=1, check=False):
+    """What :func:`run_z_guided` takes as its guide: ``guide_grid``'s grids for ``nir``, else
+    a :class:`TapGuide` of ``tof`` (the same checks and errors as :func:`guide_grid`; its
+    grids are then computed by the kernel, the same values). The order of the sites is
+    checked by the kernel as it reads them (``check``: here, before)."""
+    if nir is not None or tof is None:
+        return guide_grid(shape, pattern, tof=tof, nir=nir, name=name, workers=workers)
+    ratio = []
+
+    def medians(taps, *args):
+        ratio[:] = [np.empty(taps.shape[0])]
+        return _kernels.z_guided_ratios(taps, *args, ratio[0], int(check), workers)
+
+    taps, rows, cols, gyc, gxc = tof_taps(shape, pattern, tof, name, medians)
+    gy, gx = _grid_shape(shape, get_pattern(pattern))
+    return TapGuide(taps, rows, cols, ratio[0], gy, gx, gyc, gxc,
+                    lambda: guide_source(shape, pattern, tof=tof, name=name, workers=workers,
+                                         check=True))
+
+
 def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthreads,
                  opcounts=None, kernels=None):
     """Fill ``out``: the colour sites of ``src`` and its Z sites by ``filters`` guided by
-    ``grids`` (:func:`._z_guided.guide_grid`), clipped to [0, 2^b - 1] (integer types
+    ``grids`` (:func:`._z_guided.guide_grid`'s, or a :class:`TapGuide`), clipped to [0, 2^b - 1] (integer types
     rounded half up), by the C kernel; ``kernels``: the counting extension."""
     P, Q = pattern.period
     phase_map = np.full(P * Q, -1, np.int32)
     for k, ph in enumerate(filters.base.geometry):
         r, c = ph["rc"]
         phase_map[r * Q + c] = k
-    grid, var = (np.ascontiguousarray(g, np.float64) for g in grids)
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
-    k.z_guided(src, out, _PRECISION_CODES[precision], P, Q, phase_map, grid=grid, var=var,
-               maxval=float((1 << bit_depth) - 1), workers=nthreads, **kernel_arrays(filters),
-               **extra)
+    args = (src, out, _PRECISION_CODES[precision], P, Q, phase_map)
+    kw = dict(maxval=float((1 << bit_depth) - 1), workers=nthreads, **kernel_arrays(filters))
+    if not isinstance(grids, TapGuide):
+        extra.update(zip(("grid", "var"), (np.ascontiguousarray(a, np.float64) for a in grids)))
+    elif not k.z_guided(*args, **kw, **extra, **_tap_arrays(grids)):
+        # the sites were not in row-major order: checked and sorted (or refused), once more
+        extra.update(_tap_arrays(grids.redo()))
+    else:
+        return out
+    k.z_guided(*args, **kw, **extra)
     return out
+
+
+def _tap_arrays(g):
+    """The kernel's arguments of a TapGuide."""
+    return dict(grid=None, var=None, taps=g.taps.reshape(-1).view(np.uint8),
+                taps_type=_TYPE_CODES[g.taps.dtype.char], taps_F=g.taps.shape[0], gy=g.gy,
+                gx=g.gx, gyc=g.gyc, gxc=g.gxc, ratio=g.ratio, site_rows=g.rows,
+                site_cols=g.cols)

@@ -246,8 +246,9 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     inv2h2 = 1.0 / (2.0 * p.range_scale ** 2)
     inv2hc2 = 1.0 / (2.0 * p.colour_scale ** 2)
     # the four passes (rows, columns, rows guided by the columns' output, columns) in one C
-    # call, strip by strip: no intermediate plane of the whole frame; without a calibration
-    # (whose cyclic-error correction acts on the phases) each strip's means are unwrapped there
+    # call, row by row through rings of a few rows: no intermediate plane of the whole frame;
+    # without a calibration (whose cyclic-error correction acts on the phases) the means are
+    # unwrapped there as they are made
     var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
     args = (zr, zi, v, col, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
             inv2hc2)
