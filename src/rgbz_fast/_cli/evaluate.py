@@ -131,7 +131,7 @@ def _keep_freed_memory():
 
     try:
         mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError):          # pragma: no cover - not glibc
+    except (OSError, AttributeError, TypeError):   # pragma: no cover - not glibc
         return
     mallopt.argtypes = (ctypes.c_int, ctypes.c_int)
     m_trim_threshold, m_mmap_threshold = -1, -3
