@@ -92,6 +92,11 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
     return colmap;
 }
 
+/* a row of the guide from the taps in each precision (zg_guide_rows): in double the values
+   of rgbz_zguided_guide (those of ToFTaps.amplitude), in float its float arithmetic */
+#define zg_taps_row_f64 rgbz_zguided_guide_row
+#define zg_taps_row_f32 rgbz_zguided_guide_row_f32
+
 /* ---- the instances: per precision, the frame loops and the entry point ---- */
 #define RGBZ_REAL_TEMPLATE "z_guided_entry.template.h"
 #include "rgbz_each_real.h"

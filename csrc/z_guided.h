@@ -124,6 +124,14 @@ int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
 void rgbz_zguided_guide_row(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                             ptrdiff_t lo, ptrdiff_t gxc, const double *ratio, double *grid,
                             double *var);
+/* rgbz_zguided_guide_row in float (the float32 kernel's guide from the taps): the taps'
+   differences, the amplitudes, their means and the variance in float, the means and the
+   quotients by the medians as products with reciprocals; within a few float roundings of
+   rgbz_zguided_guide_row's values (relative ~1e-6 on grid, ~1e-6 of grid^2 on var), not
+   bit for bit */
+void rgbz_zguided_guide_row_f32(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                                ptrdiff_t lo, ptrdiff_t gxc, const double *ratio, float *grid,
+                                float *var);
 
 /*
  * The cell terms and the noise level of tile (iy, ix) for a target colour t, with the 3 x 3

@@ -19,12 +19,13 @@
 /* the lanes of a 32-byte vector, and the values of a cell's (a bucket's) three rows */
 #define ZG_L ((int)(32 / sizeof(REAL)))
 #define ZG_CVR (8 + 2 * ZG_L)
+#define ZG_TAPS_ROW RGBZ_CAT(zg_taps_row, RS)
 
 /* what a thread keeps of the cell terms: for each target colour t, the colour means of
    three tile rows (a ring, slot = tile row mod 3, tagged) padded by one cell on each side
    with the edge cell, and the terms of one tile row, [gx][ZG_CVR] (tagged); the noise levels
    of one tile row (tagged); the amplitude and variance rows (a ring of three tile rows,
-   padded likewise, tagged) and the nu row; the rows of the guide from the taps (double) */
+   padded likewise, tagged) and the nu row */
 typedef struct {
     ptrdiff_t gx;
     REAL *cg;                   /* [3 targets][3 slots][gx + 2] */
@@ -35,7 +36,6 @@ typedef struct {
     ptrdiff_t level_tag;
     REAL *nv;                   /* [3 slots][2][gx + 2]: N and V of a tile row; then nu */
     ptrdiff_t nv_tag[3];
-    double *gv;                 /* [2][gx]: a row of the guide from the taps */
     int bad;                    /* a row of the taps' sites was not its Z pixels in order */
     int nbox[3];
     int ey[3][ZG_MAX_BOX], ex[3][ZG_MAX_BOX];
@@ -54,7 +54,6 @@ static int ZGC(zg_cells_init, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filte
     s->cell = calloc((size_t)3 * ZG_CVR * (size_t)gx, sizeof *s->cell);
     s->level = malloc((size_t)gx * sizeof *s->level);
     s->nv = malloc((size_t)7 * (size_t)(gx + 2) * sizeof *s->nv);
-    s->gv = malloc((size_t)2 * (size_t)gx * sizeof *s->gv);
     for (int t = 0; t < 3; t++) {
         s->cell_tag[t] = PTRDIFF_MIN;
         for (int i = 0; i < 3; i++) s->cg_tag[t][i] = PTRDIFF_MIN;
@@ -73,7 +72,7 @@ static int ZGC(zg_cells_init, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filte
     s->level_tag = PTRDIFF_MIN;
     for (int i = 0; i < 3; i++) s->nv_tag[i] = PTRDIFF_MIN;
     s->bad = 0;
-    return s->cg && s->cell && s->level && s->nv && s->gv ? RGBZ_OK : RGBZ_ENOMEM;
+    return s->cg && s->cell && s->level && s->nv ? RGBZ_OK : RGBZ_ENOMEM;
 }
 
 static void ZGC(zg_cells_free, RS)(ZGC(zg_cells, RS) *s)
@@ -82,7 +81,6 @@ static void ZGC(zg_cells_free, RS)(ZGC(zg_cells, RS) *s)
     free(s->cell);
     free(s->level);
     free(s->nv);
-    free(s->gv);
 }
 
 /* pads row r (gx values at r[1 ..]) with its edge values at r[0] and r[gx + 1] */
@@ -93,19 +91,22 @@ static inline void ZGC(zg_pad, RS)(REAL *r, ptrdiff_t gx)
 }
 
 /* the amplitude and variance rows n, v (gx values at n[1 ..], padded) of tile row jy: from
-   the grids, or computed from the taps (the row min(jy, gyc - 1), its cells past gxc taking
-   the last complete one; its sites checked: s->bad when they are not the row's Z pixels in
-   order) */
+   the grids (converted to REAL), or computed from the taps in REAL (ZG_TAPS_ROW: in double
+   rgbz_zguided_guide_row's values, in float rgbz_zguided_guide_row_f32's; the row
+   min(jy, gyc - 1), its cells past gxc taking the last complete one; its sites checked:
+   s->bad when they are not the row's Z pixels in order) */
 static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filters *f,
                                    int py, int px, ptrdiff_t jy, REAL *restrict n,
                                    REAL *restrict v)
 {
     const ptrdiff_t gx = f->gx;
-    const double *gr, *vr;
     ptrdiff_t nc = gx;
     if (f->grid) {
-        gr = f->grid + jy * gx;
-        vr = f->var + jy * gx;
+        const double *restrict gr = f->grid + jy * gx, *restrict vr = f->var + jy * gx;
+        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < nc; ix++) {
+            n[ix + 1] = (REAL)gr[ix];
+            v[ix + 1] = (REAL)vr[ix];
+        }
     } else {
         const ptrdiff_t gxc = f->gxc, jc = jy < f->gyc ? jy : f->gyc - 1;
         const int64_t *restrict sr = f->site_rows + jc * gxc;
@@ -115,15 +116,9 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
         RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gxc; ix++)
             bad |= (sr[ix] != r) | (sc[ix] != f->zc + (int64_t)px * ix);
         s->bad |= bad;
-        rgbz_zguided_guide_row(f->taps_type, f->taps, f->taps_F, f->gyc * gxc, jc * gxc, gxc,
-                               f->ratio, s->gv, s->gv + gx);
-        gr = s->gv;
-        vr = s->gv + gx;
+        ZG_TAPS_ROW(f->taps_type, f->taps, f->taps_F, f->gyc * gxc, jc * gxc, gxc, f->ratio,
+                    n + 1, v + 1);
         nc = gxc;
-    }
-    RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < nc; ix++) {
-        n[ix + 1] = (REAL)gr[ix];
-        v[ix + 1] = (REAL)vr[ix];
     }
     for (ptrdiff_t ix = nc; ix < gx; ix++) {
         n[ix + 1] = n[nc];
@@ -213,3 +208,4 @@ static REAL *ZGC(zg_guide_weights, RS)(const rgbz_zguided_filters *f)
 }
 
 #undef ZGC
+#undef ZG_TAPS_ROW

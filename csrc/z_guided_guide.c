@@ -54,6 +54,8 @@ static double zgg_select(double *a, ptrdiff_t n, ptrdiff_t k)
 
 #define ZGG_PASS_(s, T)                                                                      \
     RGBZ_CAT(zgg_pass, s)((const T *)taps, F, N, lo, hi, gxc, gx, grid, var, ratio)
+#define ZGG_PASS32_(s, T)                                                                    \
+    RGBZ_CAT(zgg_pass32, s)((const T *)taps, F, N, lo, lo + gxc, grid, var, ratio)
 #define ZGG_SAMPLE_(s, T) RGBZ_CAT(zgg_sample, s)((const T *)taps, F, N, step, i0, i1, samp)
 
 int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
@@ -145,6 +147,13 @@ void rgbz_zguided_guide_row(int in_type, const void *taps, ptrdiff_t F, ptrdiff_
        gxc - 1 of grid and var (a pass whose grid rows are 0 apart) */
     const ptrdiff_t hi = lo + gxc, gx = 0;
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
+}
+
+void rgbz_zguided_guide_row_f32(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
+                                ptrdiff_t lo, ptrdiff_t gxc, const double *ratio, float *grid,
+                                float *var)
+{
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS32_, (void)0)
 }
 
 int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
