@@ -407,3 +407,25 @@ def test_upsample_refuses_what_is_not_a_result():
     for bad in (-0.1, 1.5):
         with pytest.raises(ValueError, match="ambiguity"):
             upsample_depth(tof_depth(frame.tof), guide, ambiguity=bad)
+
+
+def test_the_layout_is_made_once_per_read_only_sites():
+    from rgbz_fast.tof import _guided
+
+    frame, guide, _ = _frame("mask1")
+    tof = frame.tof
+    first = _guided._layout_of(tof.sites, tof.block, tof.shape)
+    assert _guided._layout_of(tof.sites, tof.block, tof.shape) is first   # a ToFTaps' own
+    res = tof_depth(tof, guide=guide)
+    assert _guided._layout_of(res.sites, res.block, res.shape) is first   # its result's
+    # arrays a caller may still write, or other arrays of the same values: made again
+    rows, cols = (a.copy() for a in tof.sites)
+    again = _guided._layout_of((rows, cols), tof.block, tof.shape)
+    assert again is not first and _guided._layout_of((rows, cols), tof.block, tof.shape) \
+        is not again
+    np.testing.assert_array_equal(again.rows, first.rows)
+    # a second call on the cached layout gives the first's result bit for bit
+    again_res = tof_depth(tof, guide=guide)
+    for k in ("depth", "flags", "count", "phase", "measured"):
+        np.testing.assert_array_equal(getattr(again_res, k), getattr(res, k))
+    assert len(_guided._LAYOUTS) <= _guided._LAYOUTS_KEPT
