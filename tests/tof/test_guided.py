@@ -227,6 +227,25 @@ def test_validity_matches_numpy():
     np.testing.assert_array_equal(out[3], want[3])
 
 
+def test_usable_matches_numpy():
+    rng = np.random.default_rng(4)
+    n = 10_003
+    flags = rng.integers(0, 64, n).astype(np.uint8)
+    depth, sigma = rng.uniform(0, 5, n), rng.uniform(0, 0.1, n)
+    depth[rng.integers(0, n, 300)] = np.nan
+    depth[rng.integers(0, n, 30)] = np.inf
+    sigma[rng.integers(0, n, 300)] = np.inf
+    sigma[rng.integers(0, n, 30)] = -np.nan
+    present = (rng.random(n) > 0.2).astype(np.uint8)
+    for pres in (present, None):
+        for workers in (1, 2):
+            out = np.full(n, 7, np.uint8)
+            _kernels.tofg_usable(flags, depth, sigma, pres, 3, out, workers)
+            np.testing.assert_array_equal(out, ref.guided_usable(flags, depth, sigma, pres, 3))
+    with pytest.raises(ValueError, match="present"):
+        _kernels.tofg_usable(flags, depth, sigma, present[:-1], 3, out, 1)
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_guided_flying_matches_numpy(pattern):
     frame, guide, _ = _frame(pattern, shape=(64, 80))

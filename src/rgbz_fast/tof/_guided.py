@@ -227,14 +227,11 @@ def _radiometry(tof, f):
 def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):
     """The flying-pixel test with colour edges on measurements in grid order: adds FLYING and
     RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced."""
-    usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
-    if not layout.full:
-        usable &= layout.present
-    finite = np.isfinite(depth)
-    usable &= finite
-    usable &= np.isfinite(sigma, out=finite)
+    usable = np.empty(layout.N, np.uint8)
+    _kernels.tofg_usable(flags, depth, sigma, None if layout.full else layout.present.view(
+        np.uint8), FLAG_SATURATED | FLAG_LOW_SIGNAL, usable, nthreads)
     out = np.empty_like(depth)
-    _kernels.tofg_flying(depth, sigma, usable.view(np.uint8), col, cells, ring, layout.R,
+    _kernels.tofg_flying(depth, sigma, usable, col, cells, ring, layout.R,
                          layout.C, step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out,
                          nthreads)
     return out
