@@ -21,7 +21,7 @@
 #include "colour_isp.h"
 #include "rgbz_templating.h"
 
-/* The codes of float32 values with the gathers of AVX2, 8 at a time: ci_encode's lookup
+/* The codes of float32 values with the gathers of AVX2, 8 at a time (float64: 4): ci_encode's lookup
    (colour_isp.template.h) lane by lane, the same codes; the caller checks the CPU. Returns
    how many of the n values it coded (a multiple of 8; the rest are the caller's). */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
@@ -86,6 +86,39 @@ static ptrdiff_t ci_encode1_avx2(const uint64_t *pair, uint32_t base, uint32_t l
         const __m128i p = _mm_packus_epi32(_mm256_castsi256_si128(k),
                                            _mm256_extracti128_si256(k, 1));
         _mm_storeu_si128((__m128i *)(code + j), p);
+    }
+    return j;
+}
+
+/* ci_encode_avx2 for float64 values, 4 at a time: the clip, the bucket's start code from the
+   value's bits, then `steps` threshold tests, lane by lane as ci_code; the same codes. The
+   clipped values lie in [0, 1], so their bits and the buckets compare as signed integers. */
+__attribute__((target("avx2")))
+static ptrdiff_t ci_encode_f64_avx2(const double *t, const int32_t *start, uint64_t base,
+                                    uint64_t last, int shift, int steps, const double *v,
+                                    uint16_t *code, ptrdiff_t n)
+{
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    const __m256i vb = _mm256_set1_epi64x((long long)base);
+    const __m256i vl = _mm256_set1_epi64x((long long)last);
+    const __m128i sh = _mm_cvtsi32_si128(shift);
+    /* the low 32 bits of each 64-bit lane, into the low 128 bits */
+    const __m256i lows = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    ptrdiff_t j = 0;
+    for (; j + 4 <= n; j += 4) {
+        const __m256d x = _mm256_min_pd(_mm256_max_pd(_mm256_loadu_pd(v + j), zero), one);
+        __m256i u = _mm256_srl_epi64(_mm256_castpd_si256(x), sh);
+        u = _mm256_blendv_epi8(u, vb, _mm256_cmpgt_epi64(vb, u));
+        u = _mm256_blendv_epi8(u, vl, _mm256_cmpgt_epi64(u, vl));
+        __m128i c = _mm256_i64gather_epi32(start, _mm256_sub_epi64(u, vb), 4);
+        for (int s = 1 << (steps - 1); s > 0; s >>= 1) {
+            const __m128i step = _mm_set1_epi32(s);
+            const __m256d ts = _mm256_i32gather_pd(t, _mm_add_epi32(c, step), 8);
+            const __m256i le = _mm256_castpd_si256(_mm256_cmp_pd(ts, x, _CMP_LE_OQ));
+            const __m128i le32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(le, lows));
+            c = _mm_add_epi32(c, _mm_and_si128(le32, step));
+        }
+        _mm_storel_epi64((__m128i *)(code + j), _mm_packus_epi32(c, c));
     }
     return j;
 }
@@ -425,7 +458,14 @@ CI_CLONES static void ci_interleave16(const uint16_t *code, ptrdiff_t h, ptrdiff
 #else
 #define CI_ENCODE_FAST_f32(tab, v, code, n) 0
 #endif
+#ifdef CI_HAVE_AVX2
+#define CI_ENCODE_FAST_f64(tab, v, code, n)                                                \
+    (!ci_cpu_avx2() ? 0 :                                                                   \
+     ci_encode_f64_avx2((tab)->t, (tab)->start, (tab)->base, (tab)->last, (tab)->shift,     \
+                        (tab)->steps, (v), (code), (n)))
+#else
 #define CI_ENCODE_FAST_f64(tab, v, code, n) 0
+#endif
 typedef uint32_t ci_uint_f32;       /* the unsigned integer of a float's bits */
 typedef uint64_t ci_uint_f64;
 #define CI_UINT(s) RGBZ_CAT(ci_uint, s)

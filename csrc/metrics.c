@@ -226,6 +226,69 @@ static void mt_hpass(const double *v, ptrdiff_t n, const double *w, int rad,
     }
 }
 
+/* The vertical pass of the default window from a ring of input rows (metrics.template.h:
+   mt_ring_fill): MT_RING_ROWS slots, nq quantities per row at ring + (slot * nq + q) * cols,
+   row r in slot r % MT_RING_ROWS. Output row i reads input rows i .. i + 2 MT_SSIM_RAD; its
+   quantity q goes to m + (t * nq + q) * cols for the t-th of the g rows i .. i + g - 1
+   (g <= MT_VROWS), filtered in the order of mt_ssim_vpass_x / _y: the centre times its weight,
+   then the pairs from the farthest to the nearest. MT_VROWS rows at a time read each input
+   row once for all of them: the ring is in L2, and its loads are what the pass waits for. */
+#define MT_VROWS 4
+#define MT_RING_ROWS (2 * MT_SSIM_RAD + MT_VROWS)
+
+static inline MT_INLINE void mt_vpass_rows(const double *const *r, int g, ptrdiff_t cols,
+                                           const double *w, double *const *o)
+{
+    const double wc = w[MT_SSIM_RAD];
+    if (g == MT_VROWS) {
+        double *restrict o0 = o[0], *restrict o1 = o[1], *restrict o2 = o[2];
+        double *restrict o3 = o[3];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < cols; j++) {
+            double s0 = r[MT_SSIM_RAD][j] * wc, s1 = r[MT_SSIM_RAD + 1][j] * wc;
+            double s2 = r[MT_SSIM_RAD + 2][j] * wc, s3 = r[MT_SSIM_RAD + 3][j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--) {
+                const double wk = w[MT_SSIM_RAD - k];
+                s0 += (r[MT_SSIM_RAD - k][j] + r[MT_SSIM_RAD + k][j]) * wk;
+                s1 += (r[MT_SSIM_RAD + 1 - k][j] + r[MT_SSIM_RAD + 1 + k][j]) * wk;
+                s2 += (r[MT_SSIM_RAD + 2 - k][j] + r[MT_SSIM_RAD + 2 + k][j]) * wk;
+                s3 += (r[MT_SSIM_RAD + 3 - k][j] + r[MT_SSIM_RAD + 3 + k][j]) * wk;
+            }
+            o0[j] = s0;
+            o1[j] = s1;
+            o2[j] = s2;
+            o3[j] = s3;
+        }
+        return;
+    }
+    for (int t = 0; t < g; t++) {
+        double *restrict ot = o[t];
+        const double *const *rt = r + t;
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < cols; j++) {
+            double s = rt[MT_SSIM_RAD][j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--)
+                s += (rt[MT_SSIM_RAD - k][j] + rt[MT_SSIM_RAD + k][j]) * w[MT_SSIM_RAD - k];
+            ot[j] = s;
+        }
+    }
+}
+
+static void mt_vpass_ring(const double *ring, int nq, ptrdiff_t i, int g, ptrdiff_t cols,
+                          const double *w, double *m)
+{
+    for (int q = 0; q < nq; q++) {
+        const double *r[MT_RING_ROWS];
+        double *o[MT_VROWS];
+        for (int k = 0; k < 2 * MT_SSIM_RAD + g; k++)
+            r[k] = ring + ((ptrdiff_t)((i + k) % MT_RING_ROWS) * nq + q) * cols;
+        for (int t = 0; t < g; t++) o[t] = m + (ptrdiff_t)(t * nq + q) * cols;
+        mt_vpass_rows(r, g, cols, w, o);
+    }
+}
+
 /* SSIM, reference side: the horizontal pass over the two moment rows m (x, x^2 filtered
    along the columns, mt_ssim_vpass_x) into the mean and the variance of x over each of the
    cols - 2 rad windows of the row: mom[0..n) = mu_x, mom[n..2n) = E[x^2] - mu_x^2, the values
@@ -256,6 +319,13 @@ static inline MT_INLINE double mt_ssim_value(double mx, double vx, double my, do
     return lum * cs;
 }
 
+static inline MT_INLINE double mt_cs_value(double mx, double vx, double my, double eyy,
+                                           double exy, double c2)
+{
+    const double vy = eyy - my * my, vxy = exy - mx * my;
+    return (2.0 * vxy + c2) / (vx + vy + c2);
+}
+
 static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
                             const double *w, int rad, double c1, double c2, double *restrict a,
                             double *ssim_row, double *cs_row)
@@ -263,6 +333,25 @@ static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
     const ptrdiff_t n = cols - 2 * rad;
     const double *ax = mom, *vxs = mom + n;
     double *restrict ssim_v = a, *restrict cs_v = a + n;
+    if (rad == MT_SSIM_RAD && !ssim_row) {          /* c s alone: one division a window */
+        const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
+        const double *vxy = m + 2 * cols + MT_SSIM_RAD;
+        const double wc = w[MT_SSIM_RAD];
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < n; j++) {
+            double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;
+            MT_UNROLL
+            for (int k = MT_SSIM_RAD; k >= 1; k--) {
+                const double wk = w[MT_SSIM_RAD - k];
+                sy += (vy[j - k] + vy[j + k]) * wk;
+                syy += (vyy[j - k] + vyy[j + k]) * wk;
+                sxy += (vxy[j - k] + vxy[j + k]) * wk;
+            }
+            cs_v[j] = mt_cs_value(ax[j], vxs[j], sy, syy, sxy, c2);
+        }
+        *cs_row = mt_sum(cs_v, n);
+        return;
+    }
     if (rad == MT_SSIM_RAD) {
         const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
         const double *vxy = m + 2 * cols + MT_SSIM_RAD;
@@ -288,7 +377,7 @@ static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
         for (ptrdiff_t j = 0; j < n; j++)
             ssim_v[j] = mt_ssim_value(ax[j], vxs[j], ay[j], ayy[j], axy[j], c1, c2, &cs_v[j]);
     }
-    *ssim_row = mt_sum(ssim_v, n);
+    if (ssim_row) *ssim_row = mt_sum(ssim_v, n);
     *cs_row = mt_sum(cs_v, n);
 }
 
@@ -389,7 +478,7 @@ int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y,
                              ptrdiff_t cols, const double *weights, int ntaps, double c1,
                              double c2, double *ssim_sum, double *cs_sum, int workers)
 {
-    if (!mt_ssim_args_ok(x, planes, rows, cols, weights, ntaps) || !y || !ssim_sum || !cs_sum)
+    if (!mt_ssim_args_ok(x, planes, rows, cols, weights, ntaps) || !y || !cs_sum)
         return RGBZ_EINVAL;
 #define MT_CALL_(s, T)                                                                       \
     return RGBZ_CAT(mt_ssim_sums, s)(x, y, x_moments, planes, rows, cols, weights, ntaps, c1, \

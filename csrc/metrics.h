@@ -37,7 +37,8 @@
  *   c1, c2:  the constants (0.01 L)^2 and (0.03 L)^2.
  *   ssim_sum[p], cs_sum[p]: the sums, over the (rows - ntaps + 1) x (cols - ntaps + 1) windows
  *            lying wholly inside plane p, of the SSIM map l c s and of the contrast-structure
- *            map c s = (2 s_xy + c2) / (s_x^2 + s_y^2 + c2).
+ *            map c s = (2 s_xy + c2) / (s_x^2 + s_y^2 + c2). ssim_sum NULL: only the cs sums
+ *            (the scales of MS-SSIM between the first and the last), the same values.
  */
 int rgbz_ssim_sums(int in_type, const void *x, const void *y, const double *x_moments,
                    ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols, const double *weights,

@@ -130,6 +130,67 @@ static void MT(mt_ssim_vpass_y)(const IN_T *x, const IN_T *y, ptrdiff_t cols, co
     }
 }
 
+/* The default window (radius MT_SSIM_RAD) reads each input row as doubles from a ring
+   (mt_vpass_ring) with the products the moments filter (x x; or y y and x y), converted and
+   multiplied once per pixel instead of once per tap: a product is the same double whichever
+   pass computes it, so the moments are those of mt_ssim_vpass_x / _y bit for bit. */
+
+/* one input row into the ring's slot: ref side a = x, b = x x; test side a = y, b = y y,
+   c = x y */
+static void MT(mt_ring_row_x)(const IN_T *x, ptrdiff_t cols, double *restrict a,
+                              double *restrict b)
+{
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < cols; j++) {
+        const double xc = (double)x[j];
+        a[j] = xc;
+        b[j] = xc * xc;
+    }
+}
+
+static void MT(mt_ring_row_y)(const IN_T *x, const IN_T *y, ptrdiff_t cols,
+                              double *restrict a, double *restrict b, double *restrict c)
+{
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < cols; j++) {
+        const double xc = (double)x[j], yc = (double)y[j];
+        a[j] = yc;
+        b[j] = yc * yc;
+        c[j] = xc * yc;
+    }
+}
+
+/* Input rows up to `last` of plane p into the ring (nq quantities: 2 for x alone, 3 with y);
+   *next_r: the next row the ring lacks, from the plane's row `first` on (-1: a new plane). */
+static void MT(mt_ring_fill)(const IN_T *x, const IN_T *y, ptrdiff_t p, ptrdiff_t first,
+                             ptrdiff_t last, ptrdiff_t rows, ptrdiff_t cols, double *ring,
+                             ptrdiff_t *next_r)
+{
+    const int nq = y ? 3 : 2;
+    if (*next_r < first) *next_r = first;
+    for (; *next_r <= last; (*next_r)++) {
+        const ptrdiff_t r = *next_r, off = (p * rows + r) * cols;
+        double *slot = ring + (ptrdiff_t)(r % MT_RING_ROWS) * nq * cols;
+        if (y)
+            MT(mt_ring_row_y)(x + off, y + off, cols, slot, slot + cols, slot + 2 * cols);
+        else
+            MT(mt_ring_row_x)(x + off, cols, slot, slot + cols);
+    }
+}
+
+/* This thread's share [*u0, *u1) of n units, in one contiguous run (the ring's rows follow
+   one another). */
+static void MT(mt_share)(ptrdiff_t n, ptrdiff_t *u0, ptrdiff_t *u1)
+{
+    int t = 0, T = 1;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+    T = omp_get_num_threads();
+#endif
+    *u0 = n * t / T;
+    *u1 = n * (t + 1) / T;
+}
+
 /* The reference side of the SSIM of planar x: for each of the planes * (rows - 2 rad) output
    rows u, mom[2 u ocols ...] = the means of the row's windows, then their variances
    (mt_ssim_hpass_x), ocols = cols - 2 rad. */
@@ -137,7 +198,7 @@ static int MT(mt_ssim_ref)(const void *xv, ptrdiff_t planes, ptrdiff_t rows, ptr
                            const double *w, int ntaps, double *mom, int workers)
 {
     const IN_T *x = (const IN_T *)xv;
-    const int rad = ntaps / 2;
+    const int rad = ntaps / 2, ring = rad == MT_SSIM_RAD;
     const ptrdiff_t orows = rows - 2 * rad, ocols = cols - 2 * rad, units = planes * orows;
     int failed = 0;
     int nt = mt_threads(workers, units, (double)cols * (6.0 * ntaps + 10.0));
@@ -146,21 +207,33 @@ static int MT(mt_ssim_ref)(const void *xv, ptrdiff_t planes, ptrdiff_t rows, ptr
 #pragma omp parallel num_threads(nt)
 #endif
     {
-        double *m = (double *)malloc((size_t)(2 * cols) * sizeof(double));
-        if (!m) {
+        const size_t n = (size_t)(2 * cols) * (ring ? MT_VROWS + MT_RING_ROWS : 1);
+        double *m = (double *)malloc(n * sizeof(double));
+        double *rg = m + 2 * MT_VROWS * cols;
+        ptrdiff_t u0, u1;
+        MT(mt_share)(units, &u0, &u1);
+        if (!m && u0 < u1) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             failed = 1;
         }
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-        for (ptrdiff_t u = 0; u < units; u++) {
-            if (!m) continue;
+        ptrdiff_t next_r = -1, plane = -1;
+        for (ptrdiff_t u = u0; m && u < u1;) {
             const ptrdiff_t p = u / orows, i = u % orows;
-            MT(mt_ssim_vpass_x)(x + (p * rows + i + rad) * cols, cols, w, rad, m);
-            mt_ssim_hpass_x(m, cols, w, rad, mom + 2 * u * ocols);
+            int g = 1;
+            if (ring) {
+                g = (int)(u1 - u < orows - i ? u1 - u : orows - i);
+                g = g < MT_VROWS ? g : MT_VROWS;
+                if (p != plane) next_r = -1, plane = p;
+                MT(mt_ring_fill)(x, NULL, p, i, i + 2 * rad + g - 1, rows, cols, rg, &next_r);
+                mt_vpass_ring(rg, 2, i, g, cols, w, m);
+            } else {
+                MT(mt_ssim_vpass_x)(x + (p * rows + i + rad) * cols, cols, w, rad, m);
+            }
+            for (int t = 0; t < g; t++)
+                mt_ssim_hpass_x(m + 2 * t * cols, cols, w, rad, mom + 2 * (u + t) * ocols);
+            u += g;
         }
         free(m);
     }
@@ -175,7 +248,7 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
                             int workers)
 {
     const IN_T *x = (const IN_T *)xv, *y = (const IN_T *)yv;
-    const int rad = ntaps / 2;
+    const int rad = ntaps / 2, ring = rad == MT_SSIM_RAD;
     const ptrdiff_t orows = rows - 2 * rad, ocols = cols - 2 * rad, units = planes * orows;
     double *rowsum = (double *)malloc((size_t)(2 * units) * sizeof(double));
     if (!rowsum) return RGBZ_ENOMEM;
@@ -186,31 +259,56 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
 #pragma omp parallel num_threads(nt)
 #endif
     {
-        /* three moment rows, two of the reference side, five of mt_ssim_hpass_y */
-        double *m = (double *)malloc((size_t)(3 * cols + 7 * ocols) * sizeof(double));
-        if (!m) {
+        /* the y-side moment rows (MT_VROWS rows of 3 with the ring, else one), the x-side
+           ones (2 rows), the reference side of one row (2 ocols), five ocols of
+           mt_ssim_hpass_y, then the rings of the default window (y side; x side without
+           mom) */
+        const ptrdiff_t my_n = (ring ? MT_VROWS : 1) * 3 * cols;
+        const size_t base = (size_t)(my_n + 2 * cols + 7 * ocols);
+        const size_t n = base + (ring ? (size_t)(MT_RING_ROWS * cols) * (mom ? 3 : 5) : 0);
+        double *m = (double *)malloc(n * sizeof(double));
+        double *mx = m + my_n, *xmom_buf = mx + 2 * cols, *vals = xmom_buf + 2 * ocols;
+        double *rg_y = m + base, *rg_x = rg_y + 3 * MT_RING_ROWS * cols;
+        ptrdiff_t u0, u1;
+        MT(mt_share)(units, &u0, &u1);
+        if (!m && u0 < u1) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             failed = 1;
         }
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-        for (ptrdiff_t u = 0; u < units; u++) {
-            if (!m) continue;
+        ptrdiff_t next_ry = -1, next_rx = -1, plane = -1;
+        for (ptrdiff_t u = u0; m && u < u1;) {
             const ptrdiff_t p = u / orows, i = u % orows;
-            const ptrdiff_t centre = (p * rows + i + rad) * cols;
-            double *xmom = m + 3 * cols, *vals = xmom + 2 * ocols;
-            if (mom) {
-                xmom = (double *)mom + 2 * u * ocols;
+            int g = 1;
+            if (ring) {
+                g = (int)(u1 - u < orows - i ? u1 - u : orows - i);
+                g = g < MT_VROWS ? g : MT_VROWS;
+                if (p != plane) next_ry = next_rx = -1, plane = p;
+                MT(mt_ring_fill)(x, y, p, i, i + 2 * rad + g - 1, rows, cols, rg_y, &next_ry);
+                mt_vpass_ring(rg_y, 3, i, g, cols, w, m);
             } else {
-                MT(mt_ssim_vpass_x)(x + centre, cols, w, rad, m);
-                mt_ssim_hpass_x(m, cols, w, rad, xmom);
+                const ptrdiff_t centre = (p * rows + i + rad) * cols;
+                MT(mt_ssim_vpass_y)(x + centre, y + centre, cols, w, rad, m);
             }
-            MT(mt_ssim_vpass_y)(x + centre, y + centre, cols, w, rad, m);
-            mt_ssim_hpass_y(m, xmom, cols, w, rad, c1, c2, vals, rowsum + 2 * u,
-                            rowsum + 2 * u + 1);
+            for (int t = 0; t < g; t++) {
+                const ptrdiff_t ut = u + t;
+                double *xmom = xmom_buf;
+                if (mom) {
+                    xmom = (double *)mom + 2 * ut * ocols;
+                } else if (ring) {
+                    MT(mt_ring_fill)(x, NULL, p, i + t, i + t + 2 * rad, rows, cols, rg_x,
+                                     &next_rx);
+                    mt_vpass_ring(rg_x, 2, i + t, 1, cols, w, mx);
+                    mt_ssim_hpass_x(mx, cols, w, rad, xmom);
+                } else {
+                    MT(mt_ssim_vpass_x)(x + (p * rows + i + rad) * cols, cols, w, rad, mx);
+                    mt_ssim_hpass_x(mx, cols, w, rad, xmom);
+                }
+                mt_ssim_hpass_y(m + 3 * t * cols, xmom, cols, w, rad, c1, c2, vals,
+                                ssim_sum ? rowsum + 2 * ut : NULL, rowsum + 2 * ut + 1);
+            }
+            u += g;
         }
         free(m);
     }
@@ -218,10 +316,10 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
         for (ptrdiff_t p = 0; p < planes; p++) {
             double s = 0.0, c = 0.0;
             for (ptrdiff_t i = 0; i < orows; i++) {
-                s += rowsum[2 * (p * orows + i)];
+                if (ssim_sum) s += rowsum[2 * (p * orows + i)];
                 c += rowsum[2 * (p * orows + i) + 1];
             }
-            ssim_sum[p] = s;
+            if (ssim_sum) ssim_sum[p] = s;
             cs_sum[p] = c;
         }
     }

@@ -188,10 +188,14 @@ def ssim_sums(const frame_t[:, :, ::1] x, const frame_t[:, :, ::1] y,
               double c2, double[::1] ssim_sum, double[::1] cs_sum, int workers):
     """Per-plane sums of the SSIM and contrast-structure maps of planar (planes, rows, cols)
     images over the windows wholly inside them (separable symmetric window ``weights``);
-    ``x_moments``: :func:`ssim_reference` of ``x``, or None."""
+    ``x_moments``: :func:`ssim_reference` of ``x``, or None; ``ssim_sum`` None: the
+    contrast-structure sums alone."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef const double *mom = NULL
+    cdef double *ssim_out = NULL
+    if ssim_sum is not None:
+        ssim_out = &ssim_sum[0]
     cdef Py_ssize_t n = weights.shape[0]
     if x_moments is not None:
         if (x_moments.shape[0] != x.shape[0] * (x.shape[1] - n + 1) or x_moments.shape[1] != 2
@@ -201,7 +205,7 @@ def ssim_sums(const frame_t[:, :, ::1] x, const frame_t[:, :, ::1] y,
     with nogil:
         status = rgbz_ssim_sums(in_type, &x[0, 0, 0], &y[0, 0, 0], mom, x.shape[0],
                                 x.shape[1], x.shape[2], &weights[0], <int> n, c1, c2,
-                                &ssim_sum[0], &cs_sum[0], workers)
+                                ssim_out, &cs_sum[0], workers)
     _raise_for(status)
 
 

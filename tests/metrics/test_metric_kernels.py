@@ -285,7 +285,7 @@ def test_a_reference_reused_gives_the_values_of_each_pair_alone(rng, dtype):
     for test in tests + [ref]:
         got = _colour_metrics(ref, test, COLOUR_METRICS, 255, 3, 2, memo=memo)
         assert got == all_metrics(ref, test, crop=3, workers=2)
-    assert {k[0] for k in memo} == {"ssim", "zipper"}
+    assert {k[0] for k in memo} == {"cropped", "ssim", "zipper"}
 
 
 @pytest.mark.parametrize("ntaps, gaussian", [(11, True), (7, True), (5, False), (1, True)])
@@ -309,6 +309,11 @@ def test_ssim_sums_from_the_reference_moments_are_those_computed_anew(rng, ntaps
     assert np.array_equal(moments[:41 - ntaps + 1, 1], sq[inner] - mean[inner] ** 2)
     with pytest.raises(ValueError, match="x_moments"):
         _kernels.ssim_sums(ref, test, moments[1:], w, 6.5, 58.5, *sums[0], 1)
+    # without the SSIM sums (MS-SSIM's middle scales): the same contrast-structure sums
+    for mom in (None, moments):
+        cs = np.empty(3)
+        _kernels.ssim_sums(ref, test, mom, w, 6.5, 58.5, None, cs, 2)
+        assert np.array_equal(cs, sums[0][1])
 
 
 @pytest.mark.parametrize("dtype, scale", [(np.uint8, 255.0), (np.float64, 255.0),

@@ -16,13 +16,13 @@ from .. import metrics as _metrics
 from ..metrics._combined import _colour_metrics
 from .._frame import RawFrame, _Adopt, mosaic
 from .._patterns import get_pattern
-from .._validate import (check_flag, check_image, check_path, check_processes, check_workers,
-                         integer_bits, merge_params)
+from .._validate import (check_bit_depth, check_flag, check_image, check_path,
+                         check_processes, check_workers, integer_bits, merge_params)
 from ..io import ImageSource, ParameterError, folder_dataset, sample_dataset, to_rgbz
 from ..io._bayer import place_on_phase
 from ..reconstruction import NEEDS_TOF, reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
-from ..simulation._scene import srgb_decode
+from ..simulation._scene import srgb_decode, srgb_decode_table
 from ._cache import _cache_read, _cache_write, cache_folder
 from ._config import EvalConfig
 from ._results import Results
@@ -93,6 +93,8 @@ def _frames(img, pattern, config, memo, nir=None):
         frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
                          noise=True, optics=config.optics)
         return frame, frame.reference
+    if config.linearise and config.optics is None and img.dtype in (np.uint8, np.uint16):
+        return _frames_coded(img, pattern, config, memo)
     if "linear" not in memo:
         if not config.linearise:
             memo["linear"] = img
@@ -114,6 +116,29 @@ def _frames(img, pattern, config, memo, nir=None):
         references[bayer] = mosaic(lin, bayer, config.bit_depth).data
     # mosaic(lin, pattern): the colour of the underlying Bayer at the colour sites, 0 at the
     # Z sites -- the reference CFA with its Z sites cleared, without sampling the image again
+    data = references[bayer].copy()
+    data[pattern.channel_map(shape) == _patterns.Z] = 0
+    return RawFrame(_Adopt(data), pattern, config.bit_depth), references[bayer]
+
+
+def _frames_coded(img, pattern, config, memo):
+    """:func:`_frames` of an 8- or 16-bit sRGB image, linearised, without optics: the
+    reference CFA samples the image's codes at its Bayer sites first and looks each up in a
+    table of what ``mosaic(srgb_decode(img), bayer, bit_depth)`` makes of that code (the
+    same operations on the same values, once per code instead of once per sample)."""
+    shape = pattern.check_shape(img.shape[:2], "rgb")      # mosaic's name of the image
+    references = memo.setdefault("reference", {})          # Bayer pattern -> CFA
+    bayer = pattern.bayer_pattern()
+    if bayer not in references:
+        top = (1 << check_bit_depth(config.bit_depth)) - 1
+        table = srgb_decode_table(8 * img.itemsize).astype(np.float64) * top
+        table = np.floor(table + 0.5).astype(np.uint16)
+        colour = bayer.bayer_map(shape)
+        (py, px), codes = bayer.period, np.empty(shape, img.dtype)
+        for dy in range(min(py, shape[0])):                # one strided copy per tile site
+            for dx in range(min(px, shape[1])):
+                codes[dy::py, dx::px] = img[dy::py, dx::px, colour[dy, dx]]
+        references[bayer] = table[codes]
     data = references[bayer].copy()
     data[pattern.channel_map(shape) == _patterns.Z] = 0
     return RawFrame(_Adopt(data), pattern, config.bit_depth), references[bayer]

@@ -87,7 +87,16 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
     crop = _check_crop(crop, ref.shape[:2], minimum=11 if want_ssim else 3,
                        what="a centre pixel with all eight neighbours" if not want_ssim
                        else "an image at least win_size=11 pixels wide")
-    ref, tst = _crop_hw(ref, crop), _crop_hw(tst, crop)
+    # the cropped pair as the kernels read it, copied once for every metric (the reference
+    # once for all the calls that share ``memo``)
+    dt = _kernel_dtype(ref.dtype, tst.dtype)
+    if memo is None:
+        ref = np.ascontiguousarray(_crop_hw(ref, crop), dt)
+    else:
+        if ("cropped", dt) not in memo:
+            memo["cropped", dt] = np.ascontiguousarray(_crop_hw(ref, crop), dt)
+        ref = memo["cropped", dt]
+    tst = np.ascontiguousarray(_crop_hw(tst, crop), dt)
     if "ms_ssim" in metrics:
         _check_ms_ssim_size(ref.shape[:2], len(MS_SSIM_WEIGHTS), crop)
     out = {}
@@ -98,7 +107,6 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
         if memo is None:
             x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
         else:
-            dt = _kernel_dtype(ref.dtype, tst.dtype)
             x, x_cache = memo.get(("ssim", dt)) or memo.setdefault(
                 ("ssim", dt), (np.ascontiguousarray(np.moveaxis(ref, -1, 0), dt), []))
             y = np.ascontiguousarray(np.moveaxis(tst, -1, 0), dt)

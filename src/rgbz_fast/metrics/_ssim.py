@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numbers
+from functools import lru_cache
 
 import numpy as np
 
@@ -36,9 +37,17 @@ def _channels_first(ref, tst, channel_axis):
     return np.moveaxis(ref, channel_axis, 0), np.moveaxis(tst, channel_axis, 0)
 
 
+@lru_cache(maxsize=16)
 def _window(win_size, sigma, gaussian_weights):
     """The 1-D window: scipy.ndimage.gaussian_filter's kernel for ``radius=(win_size - 1) // 2``
-    (the same expression, so the same weights bit for bit), or a uniform one."""
+    (the same expression, so the same weights bit for bit), or a uniform one; read-only, one
+    array per window."""
+    w = _window_values(win_size, sigma, gaussian_weights)
+    w.setflags(write=False)
+    return w
+
+
+def _window_values(win_size, sigma, gaussian_weights):
     if not gaussian_weights:
         return np.full(win_size, 1.0 / win_size)
     radius = (win_size - 1) // 2
@@ -50,21 +59,22 @@ def _window(win_size, sigma, gaussian_weights):
 
 
 def _ssim_means(x, y, data_range, win_size, sigma, gaussian_weights, threads,
-                x_moments=None):
+                x_moments=None, cs_only=False):
     """Per-channel means of the local SSIM and contrast-structure maps (C kernel).
 
     ``x``, ``y``: C-contiguous (channels, rows, cols) arrays of one kernel dtype
     (:func:`._common._kernel_pair`). Only windows wholly inside the image count
     (the 'valid' part of Wang et al.'s MATLAB code). ``x_moments``: :func:`_ssim_reference`
     of ``x`` with this window, or None; the same means either way, bit for bit.
+    ``cs_only``: the SSIM means are not computed (None), the others are the same.
     """
     channels, rows, cols = x.shape
-    ssim_sum, cs_sum = np.empty(channels), np.empty(channels)
+    ssim_sum, cs_sum = (None if cs_only else np.empty(channels)), np.empty(channels)
     _kernels.ssim_sums(x, y, x_moments, _window(win_size, sigma, gaussian_weights),
                        (0.01 * data_range) ** 2, (0.03 * data_range) ** 2, ssim_sum, cs_sum,
                        threads)
     count = (rows - win_size + 1) * (cols - win_size + 1)
-    return ssim_sum / count, cs_sum / count
+    return (None if cs_only else ssim_sum / count), cs_sum / count
 
 
 def _ssim_reference(x, threads):
@@ -120,7 +130,9 @@ def _ssim_and_ms_ssim(x, y, data_range, weights, threads, x_cache=None):
             xj, moments = x_cache[j]
         elif j:
             xj = _downsample2(xj, threads)
-        s, cs = _ssim_means(xj, y, data_range, 11, 1.5, True, threads, moments)
+        # the scales between the first and the last contribute their c s alone
+        s, cs = _ssim_means(xj, y, data_range, 11, 1.5, True, threads, moments,
+                            cs_only=0 < j < scales - 1)
         if j == 0:
             ssim_value = float(s.mean())
             if weights is None:

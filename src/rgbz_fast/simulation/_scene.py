@@ -40,6 +40,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -455,9 +456,17 @@ def srgb_decode(img, name="image", input_bits=None):
     if img.dtype not in (np.uint8, np.uint16):
         return srgb_to_linear(_int_to_unit(img, name, input_bits))
     bits = 8 * img.itemsize if input_bits is None else integer_bits(img, name, input_bits)
+    return srgb_decode_table(bits)[img]
+
+
+@lru_cache(maxsize=4)
+def srgb_decode_table(bits):
+    """The linear value of every code of a ``bits``-bit sRGB image (read-only):
+    ``srgb_to_linear(code / (2**bits - 1))``, what :func:`srgb_decode` looks codes up in."""
     top = float((1 << bits) - 1)
     table = srgb_to_linear(np.arange(1 << bits, dtype=np.float64) / top)
-    return table[img]
+    table.setflags(write=False)
+    return table
 
 
 def _int_to_unit(img, name, input_bits=None):
