@@ -1450,6 +1450,26 @@ static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
     p->flags[m] |= 8;
 }
 
+int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *sigma,
+                     const uint8_t *present, uint8_t bad, ptrdiff_t N, uint8_t *usable,
+                     int workers)
+{
+    if (!flags || !depth || !sigma || !usable || N < 0) return RGBZ_EINVAL;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    const ptrdiff_t B = 4096, nb = (N + B - 1) / B;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t b = 0; b < nb; b++) {
+        const ptrdiff_t lo = b * B, hi = lo + B < N ? lo + B : N;
+        /* branch-free, so that it vectorises: |x| < inf is false for NaN and +-inf */
+        for (ptrdiff_t m = lo; m < hi; m++)
+            usable[m] = (uint8_t)(((flags[m] & bad) == 0) & (fabs(depth[m]) < INFINITY)
+                                  & (fabs(sigma[m]) < INFINITY)
+                                  & (present ? present[m] != 0 : 1));
+    }
+    return RGBZ_OK;
+}
+
 int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
                      const float *col, const float *cells, int ncells, const float *ring,
                      int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,

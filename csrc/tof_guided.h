@@ -88,6 +88,12 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        double min_reflectance, double max_range, double *snr, double *sigma,
                        double *refl, uint8_t *flags, int workers);
 
+/* usable (N,) = 1 where the measurement may enter the flying-pixel test: none of the bits
+   bad in flags, depth and sigma finite, present (NULL: every one) nonzero; else 0. */
+int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *sigma,
+                     const uint8_t *present, uint8_t bad, ptrdiff_t N, uint8_t *usable,
+                     int workers);
+
 /* The flying-pixel test with colour edges on the grid (R, C): usable (N,) measurements
    (not saturated, not low-signal); second differences of depth against max(step, k noise)
    mark the candidates (rgbz_fast.tof.flying_pixels); a candidate whose depth is one side's

@@ -823,6 +823,9 @@ cdef extern from "tof_guided.h" nogil:
                            double max_residual, double min_reflectance, double max_range,
                            double *snr, double *sigma, double *refl, uint8_t *flags,
                            int workers)
+    int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *sigma,
+                         const uint8_t *present, uint8_t bad, Py_ssize_t N, uint8_t *usable,
+                         int workers)
     int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
                          const float *col, const float *cells, int ncells, const float *ring,
                          int nring, Py_ssize_t R, Py_ssize_t C, double step, double k,
@@ -975,6 +978,27 @@ def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[:
                                     min_snr, min_amplitude, max_sigma, max_residual,
                                     min_reflectance, max_range, &snr[0], &sigma[0], &refl[0],
                                     &flags[0], workers)
+    _raise_for(status)
+
+
+def tofg_usable(const uint8_t[::1] flags, const double[::1] depth, const double[::1] sigma,
+                const uint8_t[::1] present, uint8_t bad, uint8_t[::1] usable, int workers):
+    """usable = 1 where flags has none of the bits bad, depth and sigma are finite and present
+    (None: every one) is nonzero, else 0; all (N,)."""
+    cdef Py_ssize_t n = flags.shape[0]
+    cdef const uint8_t *pp = NULL
+    if depth.shape[0] != n or sigma.shape[0] != n or usable.shape[0] != n:
+        raise ValueError(f"tofg_usable: expected planes of {n} measurements")
+    if present is not None:
+        if present.shape[0] != n:
+            raise ValueError(f"tofg_usable: expected present of {n} measurements")
+        pp = &present[0]
+    if n == 0:
+        return
+    cdef int status
+    with nogil:
+        status = rgbz_tofg_usable(&flags[0], &depth[0], &sigma[0], pp, bad, n, &usable[0],
+                                  workers)
     _raise_for(status)
 
 

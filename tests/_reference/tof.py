@@ -347,3 +347,12 @@ def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spaci
             if got is not None:
                 out[y, x], conf[y, x] = got
     return out, conf
+
+
+def guided_usable(flags, depth, sigma, present, bad):
+    """The measurements that may enter the flying-pixel test (rgbz_tofg_usable): none of the
+    bits ``bad`` in flags, depth and sigma finite, present (None: every one)."""
+    u = ((flags & bad) == 0) & np.isfinite(depth) & np.isfinite(sigma)
+    if present is not None:
+        u &= present.astype(bool)
+    return u.astype(np.uint8)

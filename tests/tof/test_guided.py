@@ -227,6 +227,25 @@ def test_validity_matches_numpy():
     np.testing.assert_array_equal(out[3], want[3])
 
 
+def test_usable_matches_numpy():
+    rng = np.random.default_rng(4)
+    n = 10_003
+    flags = rng.integers(0, 64, n).astype(np.uint8)
+    depth, sigma = rng.uniform(0, 5, n), rng.uniform(0, 0.1, n)
+    depth[rng.integers(0, n, 300)] = np.nan
+    depth[rng.integers(0, n, 30)] = np.inf
+    sigma[rng.integers(0, n, 300)] = np.inf
+    sigma[rng.integers(0, n, 30)] = -np.nan
+    present = (rng.random(n) > 0.2).astype(np.uint8)
+    for pres in (present, None):
+        for workers in (1, 2):
+            out = np.full(n, 7, np.uint8)
+            _kernels.tofg_usable(flags, depth, sigma, pres, 3, out, workers)
+            np.testing.assert_array_equal(out, ref.guided_usable(flags, depth, sigma, pres, 3))
+    with pytest.raises(ValueError, match="present"):
+        _kernels.tofg_usable(flags, depth, sigma, present[:-1], 3, out, 1)
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_guided_flying_matches_numpy(pattern):
     frame, guide, _ = _frame(pattern, shape=(64, 80))
@@ -407,3 +426,25 @@ def test_upsample_refuses_what_is_not_a_result():
     for bad in (-0.1, 1.5):
         with pytest.raises(ValueError, match="ambiguity"):
             upsample_depth(tof_depth(frame.tof), guide, ambiguity=bad)
+
+
+def test_the_layout_is_made_once_per_read_only_sites():
+    from rgbz_fast.tof import _guided
+
+    frame, guide, _ = _frame("mask1")
+    tof = frame.tof
+    first = _guided._layout_of(tof.sites, tof.block, tof.shape)
+    assert _guided._layout_of(tof.sites, tof.block, tof.shape) is first   # a ToFTaps' own
+    res = tof_depth(tof, guide=guide)
+    assert _guided._layout_of(res.sites, res.block, res.shape) is first   # its result's
+    # arrays a caller may still write, or other arrays of the same values: made again
+    rows, cols = (a.copy() for a in tof.sites)
+    again = _guided._layout_of((rows, cols), tof.block, tof.shape)
+    assert again is not first and _guided._layout_of((rows, cols), tof.block, tof.shape) \
+        is not again
+    np.testing.assert_array_equal(again.rows, first.rows)
+    # a second call on the cached layout gives the first's result bit for bit
+    again_res = tof_depth(tof, guide=guide)
+    for k in ("depth", "flags", "count", "phase", "measured"):
+        np.testing.assert_array_equal(getattr(again_res, k), getattr(res, k))
+    assert len(_guided._LAYOUTS) <= _guided._LAYOUTS_KEPT

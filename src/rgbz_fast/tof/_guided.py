@@ -38,6 +38,8 @@ References
 from __future__ import annotations
 
 import math
+import threading
+import weakref
 
 import numpy as np
 
@@ -139,6 +141,36 @@ class _Layout:
                                                                                  self.C)))
 
 
+#: the layouts of the last few site arrays (_layout_of): (id(rows), id(cols), block, shape) ->
+#: (weak references to rows and cols, the _Layout)
+_LAYOUTS = {}
+_LAYOUTS_KEPT = 4
+_LAYOUTS_LOCK = threading.Lock()
+
+
+def _layout_of(sites, block, shape):
+    """The _Layout of ``sites``, made once per pair of read-only site arrays (a ToFTaps' own,
+    which its results share): proving a 3 M-site layout a grid costs about 10 ms a call. Arrays
+    a caller may still write are checked every time."""
+    rows, cols = sites if isinstance(sites, tuple) and len(sites) == 2 else (None, None)
+    if not (isinstance(rows, np.ndarray) and isinstance(cols, np.ndarray)
+            and not rows.flags.writeable and not cols.flags.writeable):
+        return _Layout(sites, block, shape)
+    key = (id(rows), id(cols), int(block), tuple(shape))
+    with _LAYOUTS_LOCK:
+        hit = _LAYOUTS.get(key)
+    if hit is not None and hit[0]() is rows and hit[1]() is cols:
+        return hit[2]
+    layout = _Layout(sites, block, shape)
+    with _LAYOUTS_LOCK:
+        for k in [k for k, v in _LAYOUTS.items() if v[0]() is None or v[1]() is None]:
+            del _LAYOUTS[k]
+        while len(_LAYOUTS) >= _LAYOUTS_KEPT:
+            del _LAYOUTS[next(iter(_LAYOUTS))]
+        _LAYOUTS[key] = (weakref.ref(rows), weakref.ref(cols), layout)
+    return layout
+
+
 def guide_colours(g, scale, layout, nthreads):
     """The guide at the measurements, in units of ``sqrt(2)`` times its noise: colours (3, N),
     cells (block^2, 3, N) or None (1x1 Z pixels), and the noise sigma_c (3,)."""
@@ -195,10 +227,11 @@ def _radiometry(tof, f):
 def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):
     """The flying-pixel test with colour edges on measurements in grid order: adds FLYING and
     RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced."""
-    usable = ((flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0) & layout.present
-    usable &= np.isfinite(depth) & np.isfinite(sigma)
+    usable = np.empty(layout.N, np.uint8)
+    _kernels.tofg_usable(flags, depth, sigma, None if layout.full else layout.present.view(
+        np.uint8), FLAG_SATURATED | FLAG_LOW_SIGNAL, usable, nthreads)
     out = np.empty_like(depth)
-    _kernels.tofg_flying(depth, sigma, usable.view(np.uint8), col, cells, ring, layout.R,
+    _kernels.tofg_flying(depth, sigma, usable, col, cells, ring, layout.R,
                          layout.C, step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out,
                          nthreads)
     return out
@@ -207,7 +240,7 @@ def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):
 def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     """The chain with the colour-guided denoise (``p.denoise == "bilateral"``); ``unwrap_iq(i,
     q)`` gives depth, residual, wraps, phase and amplitude of the denoised phasors (F, N)."""
-    layout = _Layout(tof.sites, tof.block, tof.shape)
+    layout = _layout_of(tof.sites, tof.block, tof.shape)
     N, F = layout.N, f.size
     taps = tof.taps
     cal = p.calibration
@@ -240,7 +273,10 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
         zr, zi = np.ascontiguousarray(z.real, np.float32), np.ascontiguousarray(z.imag,
                                                                                 np.float32)
     col, cells, sigma_c = guide_colours(g, scale, layout, nthreads)
-    use = (layout.present & (sat == 0)).view(np.uint8)
+    use = sat == 0
+    if not layout.full:
+        use &= layout.present
+    use = use.view(np.uint8)
     radius = ((GUIDED_WINDOW if p.window is None else p.window) // 2) * tof.block
     reach_r, reach_c = layout.grid.reach(radius)
     inv2h2 = 1.0 / (2.0 * p.range_scale ** 2)
@@ -288,7 +324,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
 def guided_flying_of(result, g, scale, step, nthreads):
     """The colour-guided flying-pixel test applied to a result of the unguided denoise (box or
     none) whose flying test was left out: a new ToFDepth."""
-    layout = _Layout(result.sites, result.block, result.shape)
+    layout = _layout_of(result.sites, result.block, result.shape)
     col, cells, sigma_c = guide_colours(g, scale, layout, nthreads)
     flags = np.ascontiguousarray(layout.to_grid(result.flags, FLAG_SATURATED), np.uint8)
     measured = np.ascontiguousarray(layout.to_grid(result.depth, np.nan), np.float64)
@@ -390,7 +426,7 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     amb = check_number(ambiguity, "ambiguity", lo=0, hi=1)
     nthreads = check_workers(workers)
     g, scale = check_guide(guide, result.shape)
-    layout = _Layout(result.sites, result.block, result.shape)
+    layout = _layout_of(result.sites, result.block, result.shape)
     col, _, sigma_c = guide_colours(g, scale, layout, nthreads)
     usable = result.valid | ((result.flags & FLAG_RESOLVED) > 0) | (result.flags == FLAG_FLYING)
     depth = np.ascontiguousarray(layout.to_grid(np.where(usable, result.depth, np.nan),
