@@ -120,6 +120,28 @@ LRN_INLINE void lrn_lane_sums_f64(const lrn_v4d *a, lrn_v4d *sum)
 #undef LRN_SHUF4
 #endif
 
+/* the energy classes' colours of the sites of row y from column x0 (every px-th, px even, so
+   the same for all): class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r)
+   and column parity (x0 - hr + p); cls[0] is red's class, cls[1] and cls[2] green's two,
+   cls[3] blue's */
+static inline void lrn_colour_classes(const rgbz_learned_filters *f, ptrdiff_t y, ptrdiff_t x0,
+                                      int cls[4])
+{
+    const int hr = f->hash_radius;
+    cls[0] = cls[1] = cls[2] = cls[3] = -1;
+    for (int q = 0; q < 4; q++) {
+        const int row = (int)((y - hr + (q >> 1)) & 1);
+        const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
+        if (col == 1) {
+            if (cls[1] < 0) cls[1] = q; else cls[2] = q;
+        } else if (col == 0) {
+            cls[0] = q;
+        } else {
+            cls[3] = q;
+        }
+    }
+}
+
 /* the border rule of every kernel: an index outside [0, n) moves back inside by whole
    periods P (n >= P), so that the pixel keeps its colour */
 static inline ptrdiff_t lrn_extend(ptrdiff_t i, ptrdiff_t n, ptrdiff_t P)

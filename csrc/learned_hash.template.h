@@ -509,19 +509,9 @@ static void LRN_CAT(lrn_fast_bucket, IS, RS)(ptrdiff_t y, ptrdiff_t x0, int n,
         const REAL *restrict b0 = bx + m0, *restrict b1 = bx + cols + m0;
         const REAL *restrict b2 = bx + 2 * cols + m0, *restrict b3 = bx + 3 * cols + m0;
         if (nk > 1) {
-            int g0 = -1, g1 = -1, cr = -1, cb = -1;
-            const int hr = f->hash_radius;
-            for (int q = 0; q < 4; q++) {   /* the classes' colours, as below */
-                const int row = (int)((y - hr + (q >> 1)) & 1);
-                const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
-                if (col == 1) {
-                    if (g0 < 0) g0 = q; else g1 = q;
-                } else if (col == 0) {
-                    cr = q;
-                } else {
-                    cb = q;
-                }
-            }
+            int cls[4];
+            lrn_colour_classes(f, y, x0, cls);
+            const int cr = cls[0], g0 = cls[1], g1 = cls[2], cb = cls[3];
             const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + m0;
             const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + m0;
             const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + m0;
@@ -551,22 +541,9 @@ static void LRN_CAT(lrn_fast_bucket, IS, RS)(ptrdiff_t y, ptrdiff_t x0, int n,
             LRN_IVDEP for (int j = 0; j < nb; j++) e[d][j] = OMUL(b[j], inv);
         }
         if (f->n_spr > 1) {
-            /* class q = 2 r + p holds the pixels of the frame's row parity (y - hr + r) and
-               column parity (x - hr + p): one colour, the same at every site (px is even); green
-               holds two classes */
-            const int hr = f->hash_radius;
-            int g0 = -1, g1 = -1, cr = -1, cb = -1;
-            for (int q = 0; q < 4; q++) {
-                const int row = (int)((y - hr + (q >> 1)) & 1);
-                const int col = f->bayer[row * 2 + (int)((x0 - hr + (q & 1)) & 1)];
-                if (col == 1) {
-                    if (g0 < 0) g0 = q; else g1 = q;
-                } else if (col == 0) {
-                    cr = q;
-                } else {
-                    cb = q;
-                }
-            }
+            int cls[4];
+            lrn_colour_classes(f, y, x0, cls);
+            const int cr = cls[0], g0 = cls[1], g1 = cls[2], cb = cls[3];
             const REAL *restrict kr = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cr) * cols + mb;
             const REAL *restrict kb = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + cb) * cols + mb;
             const REAL *restrict kg0 = bx + (ptrdiff_t)(RGBZ_LEARNED_DIRS + g0) * cols + mb;

@@ -55,6 +55,25 @@ def kernels(mod):
         _reconstruct._kernels = saved
 
 
+def alternate(call, other, rounds):
+    """``rounds`` timings of ``call(None)`` (this build) and ``call(other)``, alternated with
+    the order swapped every round: (median, q25, q75) of this / other speed, and the medians
+    of the two builds' times in ms."""
+    ratio, tn, to = [], [], []
+    for i in range(rounds):
+        if i % 2:
+            t_new, _ = call(None)
+            t_old, _ = call(other)
+        else:
+            t_old, _ = call(other)
+            t_new, _ = call(None)
+        ratio.append(t_old / t_new)
+        tn.append(t_new)
+        to.append(t_old)
+    q = np.percentile(ratio, [25, 50, 75])
+    return q[1], q[0], q[2], np.median(tn) * 1e3, np.median(to) * 1e3
+
+
 def speed(other, rounds, threads, patterns=("mask1", "mask2")):
     from rgbz_fast._devtools.bench.cases import make_rgb
     clock = time.process_time if threads == 1 else time.perf_counter
@@ -70,21 +89,10 @@ def speed(other, rounds, threads, patterns=("mask1", "mask2")):
         _, a = call(None)
         _, b = call(other)
         same = int(np.count_nonzero(np.asarray(a) != np.asarray(b)))
-        ratio, tn, to = [], [], []
-        for i in range(rounds):
-            if i % 2:
-                t_new, _ = call(None)
-                t_old, _ = call(other)
-            else:
-                t_old, _ = call(other)
-                t_new, _ = call(None)
-            ratio.append(t_old / t_new)
-            tn.append(t_new)
-            to.append(t_old)
-        q = np.percentile(ratio, [25, 50, 75])
-        print(f"{pat}: {threads} thread(s), {rounds} rounds: this / other speed {q[1]:.3f} "
-              f"[IQR {q[0]:.3f}-{q[2]:.3f}]; medians this {np.median(tn) * 1e3:.1f} ms, "
-              f"other {np.median(to) * 1e3:.1f} ms; differing output pixels {same}")
+        med, q25, q75, tn, to = alternate(call, other, rounds)
+        print(f"{pat}: {threads} thread(s), {rounds} rounds: this / other speed {med:.3f} "
+              f"[IQR {q25:.3f}-{q75:.3f}]; medians this {tn:.1f} ms, "
+              f"other {to:.1f} ms; differing output pixels {same}")
 
 
 def kodak(other, dataset):

@@ -22,7 +22,7 @@ import numpy as np
 
 import rgbz_fast as rz
 from rgbz_fast.reconstruction import _reconstruct, _z_guided, _z_guided_kernel, default_z_filters
-from learned_paired import load_other
+from learned_paired import alternate, load_other
 
 _MODULES = (_reconstruct, _z_guided, _z_guided_kernel)
 
@@ -61,21 +61,10 @@ def speed(other, rounds, threads, patterns):
         _, b = call(other)
         z = frame.z_mask
         worst = float(np.abs(a[z].astype(np.float64) - b[z]).max())
-        ratio, tn, to = [], [], []
-        for i in range(rounds):
-            if i % 2:
-                t_new, _ = call(None)
-                t_old, _ = call(other)
-            else:
-                t_old, _ = call(other)
-                t_new, _ = call(None)
-            ratio.append(t_old / t_new)
-            tn.append(t_new)
-            to.append(t_old)
-        q = np.percentile(ratio, [25, 50, 75])
-        print(f"{pat}: {threads} thread(s), {rounds} rounds: this / other speed {q[1]:.3f} "
-              f"[IQR {q[0]:.3f}-{q[2]:.3f}]; medians this {np.median(tn) * 1e3:.1f} ms, "
-              f"other {np.median(to) * 1e3:.1f} ms; largest output difference {worst:g} DN")
+        med, q25, q75, tn, to = alternate(call, other, rounds)
+        print(f"{pat}: {threads} thread(s), {rounds} rounds: this / other speed {med:.3f} "
+              f"[IQR {q25:.3f}-{q75:.3f}]; medians this {tn:.1f} ms, "
+              f"other {to:.1f} ms; largest output difference {worst:g} DN")
 
 
 def main(argv):
