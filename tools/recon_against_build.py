@@ -18,7 +18,6 @@ extensions alternated call by call (the order swapped every round, one warm-up r
 the median [IQR] of the rounds' speed ratios this / OTHER (> 1: this build is faster).
 """
 import argparse
-import importlib.util
 import sys
 import time
 
@@ -27,13 +26,7 @@ import numpy as np
 import rgbz_fast as rz
 from rgbz_fast._devtools.bench import make_rgb
 from rgbz_fast.reconstruction import _reconstruct as R
-
-
-def load(path):
-    spec = importlib.util.spec_from_file_location("rgbz_fast._kernels", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+from learned_paired import load_other
 
 
 def run_with(kernels, *args, **kw):
@@ -112,7 +105,7 @@ def main(argv=None):
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--rounds", type=int, default=9)
     a = ap.parse_args(argv)
-    other = load(a.other)
+    other = load_other(a.other)
     if a.what == "same":
         return same(other, a.calls, a.seed)
     return speed(other, a.pattern, a.workers, a.rounds)
