@@ -99,8 +99,9 @@ def guide_source(shape, pattern, *, tof=None, nir=None, name="nir", workers=1, c
 def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthreads,
                  opcounts=None, kernels=None):
     """Fill ``out``: the colour sites of ``src`` and its Z sites by ``filters`` guided by
-    ``grids`` (:func:`._z_guided.guide_grid`'s, or a :class:`TapGuide`), clipped to [0, 2^b - 1] (integer types
-    rounded half up), by the C kernel; ``kernels``: the counting extension."""
+    ``grids`` (:func:`._z_guided.guide_grid`'s, or a :class:`TapGuide`), clipped to
+    [0, 2^b - 1] (integer types rounded half up), by the C kernel; ``kernels``: the counting
+    extension."""
     P, Q = pattern.period
     phase_map = np.full(P * Q, -1, np.int32)
     for k, ph in enumerate(filters.base.geometry):
@@ -111,13 +112,11 @@ def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthrea
     args = (src, out, _PRECISION_CODES[precision], P, Q, phase_map)
     kw = dict(maxval=float((1 << bit_depth) - 1), workers=nthreads, **kernel_arrays(filters))
     if not isinstance(grids, TapGuide):
-        extra.update(zip(("grid", "var"), (np.ascontiguousarray(a, np.float64) for a in grids)))
+        grid, var = (np.ascontiguousarray(a, np.float64) for a in grids)
+        k.z_guided(*args, **kw, **extra, grid=grid, var=var)
     elif not k.z_guided(*args, **kw, **extra, **_tap_arrays(grids)):
         # the sites were not in row-major order: checked and sorted (or refused), once more
-        extra.update(_tap_arrays(grids.redo()))
-    else:
-        return out
-    k.z_guided(*args, **kw, **extra)
+        k.z_guided(*args, **kw, **extra, **_tap_arrays(grids.redo()))
     return out
 
 
