@@ -414,29 +414,22 @@ static void mt_zipper_ref_row(mt_labrow ru, mt_labrow rm, mt_labrow rd, ptrdiff_
     }
 }
 
-/* zipper, test side: the count of the centre pixels 1..cols-2 of the test row tm (tu above,
-   td below) whose psi = dE_test(P, I) - best has |psi| > delta, I the reference's nearest
-   neighbour (mt_zipper_ref_row) */
-static int64_t mt_zipper_test_row(mt_labrow tu, mt_labrow tm, mt_labrow td, ptrdiff_t cols,
+/* zipper, test side: the count of the centre pixels 1..cols-2 of the test row whose
+   psi = dE_test(P, I) - best has |psi| > delta, I the reference's nearest neighbour
+   (mt_zipper_ref_row). The three rows of the test image's ring lie in one buffer: cL is the
+   centre row's L (its A at cL + cols, its B at cL + 2 cols, the same layout for the rows above
+   and below), and off[k] the offset of neighbour k's L from the centre pixel's, so that the
+   neighbour's three channels are loaded at one computed index (a gather) instead of being
+   selected among all eight. */
+static int64_t mt_zipper_test_row(const double *cL, ptrdiff_t cols, const ptrdiff_t *off,
                                   const double *best, const uint8_t *nearest, double delta)
 {
     int64_t cnt = 0;
     MT_SIMD_COUNT(cnt)
     for (ptrdiff_t j = 1; j < cols - 1; j++) {
-        const int k = nearest[j - 1];
-        double nl = 0.0, na = 0.0, nb = 0.0;
-#define MT_PICK(T, dc, idx)                                                                  \
-        {                                                                                    \
-            int here = k == idx;                                                             \
-            nl = here ? T.L[j + dc] : nl;                                                    \
-            na = here ? T.A[j + dc] : na;                                                    \
-            nb = here ? T.B[j + dc] : nb;                                                    \
-        }
-        MT_PICK(tu, -1, 0) MT_PICK(tu, 0, 1) MT_PICK(tu, 1, 2)
-        MT_PICK(tm, -1, 3) MT_PICK(tm, 1, 4)
-        MT_PICK(td, -1, 5) MT_PICK(td, 0, 6) MT_PICK(td, 1, 7)
-#undef MT_PICK
-        const double bl = tm.L[j] - nl, ba = tm.A[j] - na, bb = tm.B[j] - nb;
+        const ptrdiff_t o = j + off[nearest[j - 1]];
+        const double bl = cL[j] - cL[o], ba = cL[j + cols] - cL[o + cols];
+        const double bb = cL[j + 2 * cols] - cL[o + 2 * cols];
         double psi = sqrt((bl * bl + ba * ba) + bb * bb) - best[j - 1];
         cnt += fabs(psi) > delta;
     }

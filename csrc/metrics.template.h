@@ -376,6 +376,7 @@ static void MT(mt_lab_run)(const IN_T *src, ptrdiff_t n, double scale, const dou
     double *restrict lr = lin, *restrict lg = lin + n, *restrict lb = lin + 2 * n;
 #if IN_IS_INT
     if (lut) {
+        MT_SIMD
         for (ptrdiff_t j = 0; j < n; j++) {
             lr[j] = lut[src[3 * j]];
             lg[j] = lut[src[3 * j + 1]];
@@ -535,8 +536,12 @@ static int MT(mt_zipper_pass)(const IN_T *ref, const IN_T *test, ptrdiff_t rows,
                     }
                     mt_zipper_ref_row(rr[u], rr[c], rr[s], cols, bst, nrs);
                 }
-                if (test)
-                    total += mt_zipper_test_row(tr[u], tr[c], tr[s], cols, bst, nrs, delta);
+                if (test) {
+                    /* the neighbours' L relative to the centre pixel's, in raster order */
+                    const ptrdiff_t ru = tr[u].L - tr[c].L, rd = tr[s].L - tr[c].L;
+                    const ptrdiff_t off[8] = {ru - 1, ru, ru + 1, -1, 1, rd - 1, rd, rd + 1};
+                    total += mt_zipper_test_row(tr[c].L, cols, off, bst, nrs, delta);
+                }
             }
         }
         free(buf);
