@@ -127,19 +127,41 @@ static double mt_f_any(double t)
     return t > MT_LAB_T3 ? cbrt(t) : MT_LAB_K * t + MT_LAB_C;
 }
 
-/* linear sRGB -> the three ratios X/Xn, Y/Yn, Z/Zn (colour's matrix, row by row) */
-#define MT_XYZ(r, g, b, tx, ty, tz)                                                          \
+/* x / c, c one of the white point's constants and rc = 1 / c rounded (both constants): the
+   division, or where the instruction set has FMA the same quotient without a division
+   instruction (the Lab loop waits for its eight divisions a pixel): q = x rc is within an
+   ulp of x / c, so the remainder x - q c is exact in an FMA and q + (x - q c) rc rounds to
+   x / c (Markstein's theorem; it needs normal x and quotients, which the linear values of
+   integer codes are: 0 or above 1e-6). metrics.template.h takes it for integer inputs; the
+   tests compare it with the division on every 8-bit colour. */
+#define MT_QDIV(x, c, rc) ((x) / (c))
+#if defined(__FMA__)
+#define MT_HAVE_QFMA 1
+static inline double mt_qfma(double x, double c, double rc)
+{
+    const double q = x * rc;
+    return fma(fma(-q, c, x), rc, q);
+}
+#define MT_QFMA(x, c, rc) mt_qfma((x), (c), (rc))
+#endif
+#define MT_RXN (1.0 / MT_XN)
+#define MT_RZN (1.0 / MT_ZN)
+
+/* linear sRGB -> the three ratios X/Xn, Y/Yn, Z/Zn (colour's matrix, row by row), the
+   divisions by Xn and Zn as QUOT computes them (MT_QDIV or MT_QFMA: the same quotients) */
+#define MT_XYZ_Q(r, g, b, tx, ty, tz, QUOT)                                                  \
     do {                                                                                     \
-        tx = ((0.4124 * (r) + 0.3576 * (g)) + 0.1805 * (b)) / MT_XN;                          \
+        tx = QUOT((0.4124 * (r) + 0.3576 * (g)) + 0.1805 * (b), MT_XN, MT_RXN);               \
         ty = (0.2126 * (r) + 0.7152 * (g)) + 0.0722 * (b);                                    \
-        tz = ((0.0193 * (r) + 0.1192 * (g)) + 0.9505 * (b)) / MT_ZN;                          \
+        tz = QUOT((0.0193 * (r) + 0.1192 * (g)) + 0.9505 * (b), MT_ZN, MT_RZN);               \
     } while (0)
+#define MT_XYZ(r, g, b, tx, ty, tz) MT_XYZ_Q(r, g, b, tx, ty, tz, MT_QDIV)
 
 /* Lab of linear sRGB: fast path (ratios < 8); tmax >= 8 when a ratio needs mt_lab_any */
-#define MT_LAB(r, g, b, L, A, B, tmax)                                                       \
+#define MT_LAB(r, g, b, L, A, B, tmax, QUOT)                                                 \
     do {                                                                                     \
         double tx_, ty_, tz_;                                                                \
-        MT_XYZ(r, g, b, tx_, ty_, tz_);                                                      \
+        MT_XYZ_Q(r, g, b, tx_, ty_, tz_, QUOT);                                              \
         tmax = tx_ > tmax ? tx_ : tmax;                                                      \
         tmax = ty_ > tmax ? ty_ : tmax;                                                      \
         tmax = tz_ > tmax ? tz_ : tmax;                                                      \

@@ -395,7 +395,11 @@ static void MT(mt_lab_run)(const IN_T *src, ptrdiff_t n, double scale, const dou
     double tmax = 0.0;
     MT_SIMD_MAX(tmax)
     for (ptrdiff_t j = 0; j < n; j++) {
-        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax);
+#if IN_IS_INT && defined(MT_HAVE_QFMA)
+        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax, MT_QFMA);
+#else
+        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax, MT_QDIV);
+#endif
     }
     if (!(tmax < 8.0)) {
         /* rare: a ratio X/Xn, Y/Yn or Z/Zn >= 8 (a float input far above white) */

@@ -20,12 +20,13 @@ static int mt_isa_available(int isa)
         return 1;
 #if defined(RGBZ_METRICS_HAVE_AVX2)
     case RGBZ_ISA_AVX2:
-        return __builtin_cpu_supports("avx2");
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #endif
 #if defined(RGBZ_METRICS_HAVE_AVX512)
     case RGBZ_ISA_AVX512:
         return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")
-               && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+               && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw")
+               && __builtin_cpu_supports("fma");
 #endif
     default:
         return 0;
