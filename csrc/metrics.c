@@ -254,8 +254,10 @@ static void mt_hpass(const double *v, ptrdiff_t n, const double *w, int rad,
    quantity q goes to m + (t * nq + q) * cols for the t-th of the g rows i .. i + g - 1
    (g <= MT_VROWS), filtered in the order of mt_ssim_vpass_x / _y: the centre times its weight,
    then the pairs from the farthest to the nearest. MT_VROWS rows at a time read each input
-   row once for all of them: the ring is in L2, and its loads are what the pass waits for. */
-#define MT_VROWS 4
+   row once for all of them: the ring is in L2, and its loads are what the pass waits for.
+   Eight sums in registers (measured on a Kodak plane, one thread: 10 % faster than four;
+   twelve spill, twice as slow). */
+#define MT_VROWS 8
 #define MT_RING_ROWS (2 * MT_SSIM_RAD + MT_VROWS)
 
 static inline MT_INLINE void mt_vpass_rows(const double *const *r, int g, ptrdiff_t cols,
@@ -263,24 +265,20 @@ static inline MT_INLINE void mt_vpass_rows(const double *const *r, int g, ptrdif
 {
     const double wc = w[MT_SSIM_RAD];
     if (g == MT_VROWS) {
-        double *restrict o0 = o[0], *restrict o1 = o[1], *restrict o2 = o[2];
-        double *restrict o3 = o[3];
         MT_SIMD
         for (ptrdiff_t j = 0; j < cols; j++) {
-            double s0 = r[MT_SSIM_RAD][j] * wc, s1 = r[MT_SSIM_RAD + 1][j] * wc;
-            double s2 = r[MT_SSIM_RAD + 2][j] * wc, s3 = r[MT_SSIM_RAD + 3][j] * wc;
+            double s[MT_VROWS];
+            MT_UNROLL
+            for (int t = 0; t < MT_VROWS; t++) s[t] = r[MT_SSIM_RAD + t][j] * wc;
             MT_UNROLL
             for (int k = MT_SSIM_RAD; k >= 1; k--) {
                 const double wk = w[MT_SSIM_RAD - k];
-                s0 += (r[MT_SSIM_RAD - k][j] + r[MT_SSIM_RAD + k][j]) * wk;
-                s1 += (r[MT_SSIM_RAD + 1 - k][j] + r[MT_SSIM_RAD + 1 + k][j]) * wk;
-                s2 += (r[MT_SSIM_RAD + 2 - k][j] + r[MT_SSIM_RAD + 2 + k][j]) * wk;
-                s3 += (r[MT_SSIM_RAD + 3 - k][j] + r[MT_SSIM_RAD + 3 + k][j]) * wk;
+                MT_UNROLL
+                for (int t = 0; t < MT_VROWS; t++)
+                    s[t] += (r[MT_SSIM_RAD + t - k][j] + r[MT_SSIM_RAD + t + k][j]) * wk;
             }
-            o0[j] = s0;
-            o1[j] = s1;
-            o2[j] = s2;
-            o3[j] = s3;
+            MT_UNROLL
+            for (int t = 0; t < MT_VROWS; t++) o[t][j] = s[t];
         }
         return;
     }
