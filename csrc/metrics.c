@@ -553,8 +553,11 @@ int MT_ENTRY(rgbz_zipper_count_reference)(int in_type, const void *test, ptrdiff
     if (!test || !best || !nearest || !count || rows < 3 || cols < 3 || !(scale >= 0.0)
         || !(delta >= 0.0))
         return RGBZ_EINVAL;
+    uint8_t top = 0;                     /* the largest neighbour index: one vector pass */
+    MT_PRAGMA(omp simd reduction(max:top))
     for (ptrdiff_t k = 0; k < (rows - 2) * (cols - 2); k++)
-        if (nearest[k] > 7) return RGBZ_EINVAL;
+        top = nearest[k] > top ? nearest[k] : top;
+    if (top > 7) return RGBZ_EINVAL;
 #define MT_CALL_(s, T)                                                                       \
     return RGBZ_CAT(mt_zipper_pass, s)(NULL, (const T *)test, rows, cols, scale, delta,       \
                                        (double *)best, (uint8_t *)nearest, 0, count, workers)
