@@ -328,7 +328,8 @@ static void mt_ssim_hpass_x(const double *m, ptrdiff_t cols, const double *w, in
    along the columns, mt_ssim_vpass_y), the reference's row mom (mt_ssim_hpass_x), the SSIM
    formula in NumPy's order, and the sums of the SSIM and c s values of the row (their values
    in a, 5 (cols - 2 rad) doubles of scratch). The default window filters in registers, in
-   the loop of the formula; another one filters into a first. */
+   the loop of the formula, and sums the values as they come (mt_hpass_y_sums); another one
+   filters into a first. */
 static inline MT_INLINE double mt_ssim_value(double mx, double vx, double my, double eyy,
                                              double exy, double c1, double c2, double *cs_out)
 {
@@ -346,6 +347,63 @@ static inline MT_INLINE double mt_cs_value(double mx, double vx, double my, doub
     return (2.0 * vxy + c2) / (vx + vy + c2);
 }
 
+/* The default window's horizontal pass, the formula and the row's sums in one loop: the
+   sums of mt_sum (eight partial sums over the blocks of eight values, their tree, then the
+   tail in order) taken as the values come, so that no value is stored; with_ssim 0: the c s
+   values alone (one division a window). Constant with_ssim: the two loops are compiled
+   apart. */
+static inline MT_INLINE void mt_hpass_y_sums(const double *m, const double *mom, ptrdiff_t cols,
+                                             const double *w, double c1, double c2,
+                                             int with_ssim, double *ssim_row, double *cs_row)
+{
+    const ptrdiff_t n = cols - 2 * MT_SSIM_RAD;
+    const double *ax = mom, *vxs = mom + n;
+    const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
+    const double *vxy = m + 2 * cols + MT_SSIM_RAD;
+    const double wc = w[MT_SSIM_RAD];
+    double ps[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double pc[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    ptrdiff_t j0 = 0;
+#define MT_HSUMS(j)                                                                          \
+    double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;                            \
+    MT_UNROLL                                                                                \
+    for (int k = MT_SSIM_RAD; k >= 1; k--) {                                                 \
+        const double wk = w[MT_SSIM_RAD - k];                                                \
+        sy += (vy[j - k] + vy[j + k]) * wk;                                                  \
+        syy += (vyy[j - k] + vyy[j + k]) * wk;                                               \
+        sxy += (vxy[j - k] + vxy[j + k]) * wk;                                               \
+    }
+    for (; j0 + 8 <= n; j0 += 8) {
+        MT_SIMD
+        for (int l = 0; l < 8; l++) {
+            const ptrdiff_t j = j0 + l;
+            MT_HSUMS(j)
+            if (with_ssim) {
+                double cs;
+                ps[l] += mt_ssim_value(ax[j], vxs[j], sy, syy, sxy, c1, c2, &cs);
+                pc[l] += cs;
+            } else {
+                pc[l] += mt_cs_value(ax[j], vxs[j], sy, syy, sxy, c2);
+            }
+        }
+    }
+    double ss = ((ps[0] + ps[1]) + (ps[2] + ps[3])) + ((ps[4] + ps[5]) + (ps[6] + ps[7]));
+    double cc = ((pc[0] + pc[1]) + (pc[2] + pc[3])) + ((pc[4] + pc[5]) + (pc[6] + pc[7]));
+    for (ptrdiff_t j = j0; j < n; j++) {
+        MT_HSUMS(j)
+        if (with_ssim) {
+            double cs;
+            ss += mt_ssim_value(ax[j], vxs[j], sy, syy, sxy, c1, c2, &cs);
+            cc += cs;
+        } else {
+            cc += mt_cs_value(ax[j], vxs[j], sy, syy, sxy, c2);
+        }
+    }
+#undef MT_HSUMS
+    if (with_ssim) *ssim_row = ss;
+    *cs_row = cc;
+}
+
 static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
                             const double *w, int rad, double c1, double c2, double *restrict a,
                             double *ssim_row, double *cs_row)
@@ -353,50 +411,20 @@ static void mt_ssim_hpass_y(const double *m, const double *mom, ptrdiff_t cols,
     const ptrdiff_t n = cols - 2 * rad;
     const double *ax = mom, *vxs = mom + n;
     double *restrict ssim_v = a, *restrict cs_v = a + n;
-    if (rad == MT_SSIM_RAD && !ssim_row) {          /* c s alone: one division a window */
-        const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
-        const double *vxy = m + 2 * cols + MT_SSIM_RAD;
-        const double wc = w[MT_SSIM_RAD];
-        MT_SIMD
-        for (ptrdiff_t j = 0; j < n; j++) {
-            double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;
-            MT_UNROLL
-            for (int k = MT_SSIM_RAD; k >= 1; k--) {
-                const double wk = w[MT_SSIM_RAD - k];
-                sy += (vy[j - k] + vy[j + k]) * wk;
-                syy += (vyy[j - k] + vyy[j + k]) * wk;
-                sxy += (vxy[j - k] + vxy[j + k]) * wk;
-            }
-            cs_v[j] = mt_cs_value(ax[j], vxs[j], sy, syy, sxy, c2);
-        }
-        *cs_row = mt_sum(cs_v, n);
+    if (rad == MT_SSIM_RAD) {
+        if (ssim_row)
+            mt_hpass_y_sums(m, mom, cols, w, c1, c2, 1, ssim_row, cs_row);
+        else
+            mt_hpass_y_sums(m, mom, cols, w, c1, c2, 0, NULL, cs_row);
         return;
     }
-    if (rad == MT_SSIM_RAD) {
-        const double *vy = m + MT_SSIM_RAD, *vyy = m + cols + MT_SSIM_RAD;
-        const double *vxy = m + 2 * cols + MT_SSIM_RAD;
-        const double wc = w[MT_SSIM_RAD];
-        MT_SIMD
-        for (ptrdiff_t j = 0; j < n; j++) {
-            double sy = vy[j] * wc, syy = vyy[j] * wc, sxy = vxy[j] * wc;
-            MT_UNROLL
-            for (int k = MT_SSIM_RAD; k >= 1; k--) {
-                const double wk = w[MT_SSIM_RAD - k];
-                sy += (vy[j - k] + vy[j + k]) * wk;
-                syy += (vyy[j - k] + vyy[j + k]) * wk;
-                sxy += (vxy[j - k] + vxy[j + k]) * wk;
-            }
-            ssim_v[j] = mt_ssim_value(ax[j], vxs[j], sy, syy, sxy, c1, c2, &cs_v[j]);
-        }
-    } else {
-        double *ay = a + 2 * n, *ayy = a + 3 * n, *axy = a + 4 * n;
-        mt_hpass(m + rad, n, w, rad, ay);
-        mt_hpass(m + cols + rad, n, w, rad, ayy);
-        mt_hpass(m + 2 * cols + rad, n, w, rad, axy);
-        MT_SIMD
-        for (ptrdiff_t j = 0; j < n; j++)
-            ssim_v[j] = mt_ssim_value(ax[j], vxs[j], ay[j], ayy[j], axy[j], c1, c2, &cs_v[j]);
-    }
+    double *ay = a + 2 * n, *ayy = a + 3 * n, *axy = a + 4 * n;
+    mt_hpass(m + rad, n, w, rad, ay);
+    mt_hpass(m + cols + rad, n, w, rad, ayy);
+    mt_hpass(m + 2 * cols + rad, n, w, rad, axy);
+    MT_SIMD
+    for (ptrdiff_t j = 0; j < n; j++)
+        ssim_v[j] = mt_ssim_value(ax[j], vxs[j], ay[j], ayy[j], axy[j], c1, c2, &cs_v[j]);
     if (ssim_row) *ssim_row = mt_sum(ssim_v, n);
     *cs_row = mt_sum(cs_v, n);
 }
