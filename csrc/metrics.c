@@ -528,6 +528,17 @@ int MT_ENTRY(rgbz_ssim_sums)(int in_type, const void *x, const void *y,
 #undef MT_CALL_
 }
 
+int MT_ENTRY(rgbz_planar)(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                          ptrdiff_t channels, ptrdiff_t row_stride, void *dst, int workers)
+{
+    if (!src || !dst || rows < 1 || cols < 1 || channels < 1 || row_stride < cols * channels)
+        return RGBZ_EINVAL;
+#define MT_CALL_(s, T)                                                                       \
+    return RGBZ_CAT(mt_planar, s)(src, rows, cols, channels, row_stride, dst, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, MT_CALL_, return RGBZ_EINVAL)
+#undef MT_CALL_
+}
+
 int MT_ENTRY(rgbz_downsample2)(int in_type, const void *src, ptrdiff_t planes,
                                ptrdiff_t rows, ptrdiff_t cols, double *dst, int workers)
 {

@@ -327,6 +327,39 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
     return failed ? RGBZ_ENOMEM : RGBZ_OK;
 }
 
+/* ------------------------------------------------------------------ planar copy */
+static int MT(mt_planar)(const void *srcv, ptrdiff_t rows, ptrdiff_t cols, ptrdiff_t ch,
+                         ptrdiff_t row_stride, void *dstv, int workers)
+{
+    const IN_T *src = (const IN_T *)srcv;
+    IN_T *dst = (IN_T *)dstv;
+    const ptrdiff_t plane = rows * cols;
+    int nt = mt_threads(workers, rows, 2.0 * (double)(cols * ch));
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt)
+#endif
+    for (ptrdiff_t r = 0; r < rows; r++) {
+        const IN_T *s = src + r * row_stride;
+        if (ch == 3) {             /* RGB: the three planes in one vector pass */
+            IN_T *restrict d0 = dst + r * cols, *restrict d1 = d0 + plane;
+            IN_T *restrict d2 = d1 + plane;
+            MT_SIMD
+            for (ptrdiff_t j = 0; j < cols; j++) {
+                d0[j] = s[3 * j];
+                d1[j] = s[3 * j + 1];
+                d2[j] = s[3 * j + 2];
+            }
+        } else {
+            for (ptrdiff_t c = 0; c < ch; c++) {
+                IN_T *restrict d = dst + c * plane + r * cols;
+                for (ptrdiff_t j = 0; j < cols; j++) d[j] = s[ch * j + c];
+            }
+        }
+    }
+    return RGBZ_OK;
+}
+
 /* ------------------------------------------------------------------ MS-SSIM decimation */
 static int MT(mt_downsample2)(const void *srcv, ptrdiff_t planes, ptrdiff_t rows,
                               ptrdiff_t cols, double *dst, int workers)

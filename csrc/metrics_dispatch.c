@@ -107,6 +107,12 @@ int rgbz_ssim_reference(int in_type, const void *x, ptrdiff_t planes, ptrdiff_t 
                 x_moments, workers)
 }
 
+int rgbz_planar(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                ptrdiff_t channels, ptrdiff_t row_stride, void *dst, int workers)
+{
+    MT_DISPATCH(rgbz_planar, in_type, src, rows, cols, channels, row_stride, dst, workers)
+}
+
 int rgbz_downsample2(int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows,
                      ptrdiff_t cols, double *dst, int workers)
 {

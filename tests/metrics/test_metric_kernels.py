@@ -410,3 +410,17 @@ def test_every_instruction_set_gives_the_lab_of_the_divisions(rng, dtype, bits):
                 assert np.array_equal(lab[isa], lab["generic"]), (isa, rgb[0])
     finally:
         _kernels.metrics_use_isa(None)
+
+
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+@pytest.mark.parametrize("channels", [1, 2, 3, 4])
+def test_planar_copy_is_numpy_moveaxis(rng, dtype, channels):
+    img = rng.integers(0, 256, (37, 41, channels)).astype(dtype)
+    for src in (img, img[2:-3, 1:-4]):                    # contiguous, and a crop
+        out = np.empty((channels,) + src.shape[:2], dtype)
+        _kernels.planar(src, out, 3)
+        assert np.array_equal(out, np.moveaxis(src, -1, 0))
+    with pytest.raises(ValueError, match="src: expected contiguous pixels"):
+        _kernels.planar(img[:, ::2], np.empty((channels, 37, 21), dtype), 1)
+    with pytest.raises(ValueError, match="dst: not the"):
+        _kernels.planar(img, np.empty((channels, 41, 37), dtype), 1)
