@@ -92,6 +92,67 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
     return colmap;
 }
 
+/* the cells of a chunk of zg_cell_row: its terms are computed into per-term rows of this
+   many cells (the vectorised loop's contiguous stores), then written into the cells' vectors */
+#define ZG_CHUNK 64
+
+#if LRN_VECTOR_EXT
+#if defined(__clang__)
+#define ZG_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
+    __builtin_shufflevector(a, b, i0, i1, i2, i3, i4, i5, i6, i7)
+#define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define ZG_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
+    __builtin_shuffle(a, b, (lrn_m8){i0, i1, i2, i3, i4, i5, i6, i7})
+#define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
+#endif
+
+/* the terms 0 .. 7 of the 8 cells from column i of the rows tm[m] (row stride ZG_CHUNK) into
+   the first 8 floats of those cells' vectors (out, cell stride cvr floats): the 8 x 8 block
+   transposed in registers (the unpack, pair and half shuffles of lrn_lane_sums_f32) */
+RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
+{
+    lrn_v8f r[8], t[8], u[8];
+    for (int m = 0; m < 8; m++) memcpy(&r[m], tm + (ptrdiff_t)m * ZG_CHUNK + i, sizeof r[m]);
+    for (int m = 0; m < 8; m += 2) {
+        t[m] = ZG_SHUF8(r[m], r[m + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+        t[m + 1] = ZG_SHUF8(r[m], r[m + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+    }
+    for (int m = 0; m < 8; m += 4) {
+        u[m] = ZG_SHUF8(t[m], t[m + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[m + 1] = ZG_SHUF8(t[m], t[m + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+        u[m + 2] = ZG_SHUF8(t[m + 1], t[m + 3], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[m + 3] = ZG_SHUF8(t[m + 1], t[m + 3], 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+    for (int l = 0; l < 4; l++) {
+        const lrn_v8f lo = ZG_SHUF8(u[l], u[l + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+        const lrn_v8f hi = ZG_SHUF8(u[l], u[l + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+        memcpy(out + (ptrdiff_t)l * cvr, &lo, sizeof lo);
+        memcpy(out + (ptrdiff_t)(l + 4) * cvr, &hi, sizeof hi);
+    }
+}
+
+/* the same for doubles: 4 cells, their terms 0 .. 3 and 4 .. 7 as two 4 x 4 blocks */
+RGBZ_INLINE void zg_put8_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff_t cvr)
+{
+    for (int h = 0; h < 8; h += 4) {
+        lrn_v4d r[4];
+        for (int m = 0; m < 4; m++)
+            memcpy(&r[m], tm + (ptrdiff_t)(h + m) * ZG_CHUNK + i, sizeof r[m]);
+        const lrn_v4d t0 = ZG_SHUF4(r[0], r[1], 0, 4, 2, 6), t1 = ZG_SHUF4(r[0], r[1], 1, 5, 3, 7);
+        const lrn_v4d t2 = ZG_SHUF4(r[2], r[3], 0, 4, 2, 6), t3 = ZG_SHUF4(r[2], r[3], 1, 5, 3, 7);
+        const lrn_v4d c0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), c1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
+        const lrn_v4d c2 = ZG_SHUF4(t0, t2, 2, 3, 6, 7), c3 = ZG_SHUF4(t1, t3, 2, 3, 6, 7);
+        memcpy(out + h, &c0, sizeof c0);
+        memcpy(out + cvr + h, &c1, sizeof c1);
+        memcpy(out + 2 * cvr + h, &c2, sizeof c2);
+        memcpy(out + 3 * cvr + h, &c3, sizeof c3);
+    }
+}
+#undef ZG_SHUF8
+#undef ZG_SHUF4
+#endif
+
 /* a row of the guide from the taps in each precision (zg_guide_rows): in double the values
    of rgbz_zguided_guide (those of ToFTaps.amplitude), in float its float arithmetic */
 #define zg_taps_row_f64 rgbz_zguided_guide_row

@@ -50,8 +50,10 @@ static int ZGC(zg_cells_init, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filte
     const ptrdiff_t gx = f->gx;
     s->gx = gx;
     s->cg = malloc((size_t)9 * (size_t)(gx + 2) * sizeof *s->cg);
-    /* the cell vectors' padding lanes stay 0 */
+    /* the cell vectors' padding lanes stay 0, their constant -1 (value 9) is set here */
     s->cell = calloc((size_t)3 * ZG_CVR * (size_t)gx, sizeof *s->cell);
+    if (s->cell)
+        for (ptrdiff_t i = 0; i < 3 * gx; i++) s->cell[i * ZG_CVR + 9] = (REAL)-1;
     s->level = malloc((size_t)gx * sizeof *s->level);
     s->nv = malloc((size_t)7 * (size_t)(gx + 2) * sizeof *s->nv);
     for (int t = 0; t < 3; t++) {
@@ -128,10 +130,12 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
     ZGC(zg_pad, RS)(v, gx);
 }
 
-/* the cell terms of tile row iy: out[ix][.] (ZG_CVR values, the layout above) and the relative
-   noise nu[ix], from the padded rows N[3], V[3], C[3] (rows iy - 1 .. iy + 1, clamped;
-   index ix + 1 is cell ix), in REAL: every sum in the order of m (as cell_terms), the
-   means and the quotients as products with reciprocals */
+/* the cell terms of tile row iy: out[ix][.] (ZG_CVR values, the layout above, value 9 the
+   -1 zg_cells_init set) and the relative noise nu[ix], from the padded rows N[3], V[3], C[3]
+   (rows iy - 1 .. iy + 1, clamped; index ix + 1 is cell ix), in REAL: every sum in the order
+   of m (as cell_terms), the means and the quotients as products with reciprocals. By chunks
+   of ZG_CHUNK cells: the terms into per-term rows tm (contiguous stores), then into the cells'
+   vectors (terms 0 .. 7 transposed in registers, zg_put8_<RS>) */
 RGBZ_CLONES_512
 static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
                                  const REAL *const *C, ptrdiff_t gx, REAL lam,
@@ -141,40 +145,56 @@ static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
     const REAL *restrict v0 = V[0], *restrict v1 = V[1], *restrict v2 = V[2];
     const REAL *restrict c0 = C[0], *restrict c1 = C[1], *restrict c2 = C[2];
     const REAL ninth = (REAL)1 / (REAL)9, tiny = RGBZ_CAT(RGBZ_TINY, RS);
-    RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) {
-        const REAL n_[9] = {n0[ix], n0[ix + 1], n0[ix + 2], n1[ix], n1[ix + 1], n1[ix + 2],
-                            n2[ix], n2[ix + 1], n2[ix + 2]};
-        const REAL v_[9] = {v0[ix], v0[ix + 1], v0[ix + 2], v1[ix], v1[ix + 1], v1[ix + 2],
-                            v2[ix], v2[ix + 1], v2[ix + 2]};
-        const REAL c_[9] = {c0[ix], c0[ix + 1], c0[ix + 2], c1[ix], c1[ix + 1], c1[ix + 2],
-                            c2[ix], c2[ix + 1], c2[ix + 2]};
-        REAL nb = 0, vb = 0, cb = 0;
-        for (int m = 0; m < 9; m++) {
-            nb += n_[m];
-            vb += v_[m];
-            cb += c_[m];
+    REAL tm[RGBZ_ZG_FEATURES][ZG_CHUNK];
+    for (ptrdiff_t i0 = 0; i0 < gx; i0 += ZG_CHUNK) {
+        const int nc = (int)(gx - i0 < ZG_CHUNK ? gx - i0 : ZG_CHUNK);
+        RGBZ_IVDEP for (int i = 0; i < nc; i++) {
+            const ptrdiff_t ix = i0 + i;
+            const REAL n_[9] = {n0[ix], n0[ix + 1], n0[ix + 2], n1[ix], n1[ix + 1], n1[ix + 2],
+                                n2[ix], n2[ix + 1], n2[ix + 2]};
+            const REAL v_[9] = {v0[ix], v0[ix + 1], v0[ix + 2], v1[ix], v1[ix + 1], v1[ix + 2],
+                                v2[ix], v2[ix + 1], v2[ix + 2]};
+            const REAL c_[9] = {c0[ix], c0[ix + 1], c0[ix + 2], c1[ix], c1[ix + 1], c1[ix + 2],
+                                c2[ix], c2[ix + 1], c2[ix + 2]};
+            REAL nb = 0, vb = 0, cb = 0;
+            for (int m = 0; m < 9; m++) {
+                nb += n_[m];
+                vb += v_[m];
+                cb += c_[m];
+            }
+            nb *= ninth;
+            vb *= ninth;
+            cb *= ninth;
+            const int lit = nb > 0;
+            const REAL inv = (REAL)1 / (lit ? nb : (REAL)1);
+            REAL u[9], U = 0, ud = 0;
+            for (int m = 0; m < 9; m++) {
+                u[m] = lit ? n_[m] * inv - (REAL)1 : (REAL)0;
+                U += u[m] * u[m];
+            }
+            const REAL nu = lit ? vb * inv * inv : (REAL)1;
+            for (int m = 0; m < 9; m++) ud += u[m] * (c_[m] - cb);
+            const REAL share = U / (U + (REAL)9 * nu + tiny);
+            const REAL a = ud / (U + (REAL)9 * (lam + nu));
+            const REAL au = a * u[4];
+            for (int m = 0; m < 9; m++) tm[m][i] = share * u[m];
+            tm[9][i] = cb + au;
+            tm[10][i] = au - (c_[4] - cb);
+            nu_out[ix] = nu;
         }
-        nb *= ninth;
-        vb *= ninth;
-        cb *= ninth;
-        const int lit = nb > 0;
-        const REAL inv = (REAL)1 / (lit ? nb : (REAL)1);
-        REAL u[9], U = 0, ud = 0;
-        for (int m = 0; m < 9; m++) {
-            u[m] = lit ? n_[m] * inv - (REAL)1 : (REAL)0;
-            U += u[m] * u[m];
+        REAL *restrict o = out + i0 * ZG_CVR;
+        int i = 0;
+#if LRN_VECTOR_EXT
+        for (; i + ZG_L <= nc; i += ZG_L)
+            RGBZ_CAT(zg_put8, RS)(&tm[0][0], i, o + i * ZG_CVR, ZG_CVR);
+#endif
+        for (; i < nc; i++)
+            for (int m = 0; m < 8; m++) o[i * ZG_CVR + m] = tm[m][i];
+        for (i = 0; i < nc; i++) {
+            o[i * ZG_CVR + 8] = tm[8][i];
+            o[i * ZG_CVR + 8 + ZG_L] = tm[9][i];
+            o[i * ZG_CVR + 9 + ZG_L] = tm[10][i];
         }
-        const REAL nu = lit ? vb * inv * inv : (REAL)1;
-        for (int m = 0; m < 9; m++) ud += u[m] * (c_[m] - cb);
-        const REAL share = U / (U + (REAL)9 * nu + tiny);
-        const REAL a = ud / (U + (REAL)9 * (lam + nu));
-        const REAL au = a * u[4];
-        REAL *restrict o = out + ix * ZG_CVR;
-        for (int m = 0; m < 9; m++) o[m] = share * u[m];
-        o[9] = (REAL)-1;
-        o[8 + ZG_L] = cb + au;
-        o[9 + ZG_L] = au - (c_[4] - cb);
-        nu_out[ix] = nu;
     }
 }
 
