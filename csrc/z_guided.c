@@ -149,6 +149,63 @@ RGBZ_INLINE void zg_put8_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff
         memcpy(out + 3 * cvr + h, &c3, sizeof c3);
     }
 }
+/* the values c_8, -1, c_9, c_10 of the 8 cells from column i of the rows tm[8], tm[9],
+   tm[10] (row stride ZG_CHUNK) into the 4 floats after the first 8 of those cells' vectors
+   (out, cell stride cvr; the 4 floats after them stay 0): a 4 x 8 block transposed */
+RGBZ_INLINE void zg_putb_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
+{
+    lrn_v8f c8, c9, c10;
+    const lrn_v8f m1 = {-1, -1, -1, -1, -1, -1, -1, -1};
+    memcpy(&c8, tm + 8 * ZG_CHUNK + i, sizeof c8);
+    memcpy(&c9, tm + 9 * ZG_CHUNK + i, sizeof c9);
+    memcpy(&c10, tm + 10 * ZG_CHUNK + i, sizeof c10);
+    const lrn_v8f t0 = ZG_SHUF8(c8, m1, 0, 8, 1, 9, 4, 12, 5, 13);
+    const lrn_v8f t1 = ZG_SHUF8(c8, m1, 2, 10, 3, 11, 6, 14, 7, 15);
+    const lrn_v8f t2 = ZG_SHUF8(c9, c10, 0, 8, 1, 9, 4, 12, 5, 13);
+    const lrn_v8f t3 = ZG_SHUF8(c9, c10, 2, 10, 3, 11, 6, 14, 7, 15);
+    lrn_v8f u[4];   /* u[l]: cell l in the low half, cell l + 4 in the high half */
+    u[0] = ZG_SHUF8(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[1] = ZG_SHUF8(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+    u[2] = ZG_SHUF8(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[3] = ZG_SHUF8(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+    for (int l = 0; l < 4; l++) {
+        memcpy(out + (ptrdiff_t)l * cvr + 8, &u[l], 4 * sizeof(float));
+        memcpy(out + (ptrdiff_t)(l + 4) * cvr + 8, (const char *)&u[l] + 4 * sizeof(float),
+               4 * sizeof(float));
+    }
+}
+
+/* the same for doubles: 4 cells, each value 8 .. 11 of its vector */
+RGBZ_INLINE void zg_putb_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff_t cvr)
+{
+    lrn_v4d c8, c9, c10;
+    const lrn_v4d m1 = {-1, -1, -1, -1};
+    memcpy(&c8, tm + 8 * ZG_CHUNK + i, sizeof c8);
+    memcpy(&c9, tm + 9 * ZG_CHUNK + i, sizeof c9);
+    memcpy(&c10, tm + 10 * ZG_CHUNK + i, sizeof c10);
+    const lrn_v4d t0 = ZG_SHUF4(c8, m1, 0, 4, 2, 6), t1 = ZG_SHUF4(c8, m1, 1, 5, 3, 7);
+    const lrn_v4d t2 = ZG_SHUF4(c9, c10, 0, 4, 2, 6), t3 = ZG_SHUF4(c9, c10, 1, 5, 3, 7);
+    const lrn_v4d u0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), u1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
+    const lrn_v4d u2 = ZG_SHUF4(t0, t2, 2, 3, 6, 7), u3 = ZG_SHUF4(t1, t3, 2, 3, 6, 7);
+    memcpy(out + 8, &u0, sizeof u0);
+    memcpy(out + cvr + 8, &u1, sizeof u1);
+    memcpy(out + 2 * cvr + 8, &u2, sizeof u2);
+    memcpy(out + 3 * cvr + 8, &u3, sizeof u3);
+}
+
+/* a cell's second row c_8, -1, c_9, c_10, 0, ... -> c_9, c_10, 0, ... (the floats' lanes 6
+   and 7 are 0: the in-lane shift by two) */
+RGBZ_INLINE lrn_v8f zg_low2_f32(lrn_v8f c)
+{
+    const lrn_v8f z = {0};
+    return ZG_SHUF8(c, z, 2, 3, 8, 8, 6, 7, 8, 8);
+}
+
+RGBZ_INLINE lrn_v4d zg_low2_f64(lrn_v4d c)
+{
+    const lrn_v4d z = {0};
+    return ZG_SHUF4(c, z, 2, 3, 4, 4);
+}
 #undef ZG_SHUF8
 #undef ZG_SHUF4
 #endif

@@ -4,21 +4,24 @@
  * the guide weights in the layout of the fast path's dot product. Instantiated by
  * z_guided_entry.template.h (once per precision, with REAL and RS) before the frame loops.
  *
- * A cell's terms are three rows of REAL (the layout of the fast path, ZG_CVR values with
+ * A cell's terms are two rows of REAL (the layout of the fast path, ZG_CVR values with
  * L lanes of 32 bytes: 8 floats or 4 doubles): [0..7] the terms c_0 .. c_7, then L values
- * c_8, -1, 0, ..., then L values c_9, c_10, 0, ...; the guide weights of a bucket likewise
+ * c_8, -1, c_9, c_10, 0, ...; the guide weights of a bucket are three rows (ZG_GVR values)
  * g_0 .. g_7 | g_8, g_9, 0, ... | g_9, g_10, 0, ..., so that the guide term
  * base (sum_{m<9} g_m c_m - g_9) + g_9 c_9 + g_10 c_10 is the sum over the lanes of base
- * times the products of the first two rows plus those of the third.
+ * times the products of the first two rows plus the products of the third row and the
+ * second row's values 2 and 3 moved to lanes 0 and 1 (zg_low2_<RS>; the weights' zeros
+ * keep c_9 and c_10 out of the first sum).
  */
 #if !defined(REAL) || !defined(RS)
 #error "z_guided_cells.template.h: #define REAL and RS (the precision) first"
 #endif
 
 #define ZGC RGBZ_CAT
-/* the lanes of a 32-byte vector, and the values of a cell's (a bucket's) three rows */
+/* the lanes of a 32-byte vector, the values of a cell's two rows and of a bucket's three */
 #define ZG_L ((int)(32 / sizeof(REAL)))
-#define ZG_CVR (8 + 2 * ZG_L)
+#define ZG_CVR (8 + ZG_L)
+#define ZG_GVR (8 + 2 * ZG_L)
 #define ZG_TAPS_ROW RGBZ_CAT(zg_taps_row, RS)
 
 /* what a thread keeps of the cell terms: for each target colour t, the colour means of
@@ -185,15 +188,16 @@ static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
         REAL *restrict o = out + i0 * ZG_CVR;
         int i = 0;
 #if LRN_VECTOR_EXT
-        for (; i + ZG_L <= nc; i += ZG_L)
+        for (; i + ZG_L <= nc; i += ZG_L) {
             RGBZ_CAT(zg_put8, RS)(&tm[0][0], i, o + i * ZG_CVR, ZG_CVR);
+            RGBZ_CAT(zg_putb, RS)(&tm[0][0], i, o + i * ZG_CVR, ZG_CVR);
+        }
 #endif
-        for (; i < nc; i++)
+        for (; i < nc; i++) {
             for (int m = 0; m < 8; m++) o[i * ZG_CVR + m] = tm[m][i];
-        for (i = 0; i < nc; i++) {
             o[i * ZG_CVR + 8] = tm[8][i];
-            o[i * ZG_CVR + 8 + ZG_L] = tm[9][i];
-            o[i * ZG_CVR + 9 + ZG_L] = tm[10][i];
+            o[i * ZG_CVR + 10] = tm[9][i];
+            o[i * ZG_CVR + 11] = tm[10][i];
         }
     }
 }
@@ -209,17 +213,17 @@ static void ZGC(zg_level_row, RS)(const REAL *restrict nu, ptrdiff_t gx, const d
     }
 }
 
-/* the guide weights g[k][b][ZG_CVR] of every phase and bucket in the layout above, from
+/* the guide weights g[k][b][ZG_GVR] of every phase and bucket in the layout above, from
    f->g_<RS> (malloc'ed; NULL: no memory) */
 static REAL *ZGC(zg_guide_weights, RS)(const rgbz_zguided_filters *f)
 {
     const ptrdiff_t n = (ptrdiff_t)f->hash->n_phases * f->n_levels * f->hash->n_buckets;
     const REAL *g = f->RGBZ_CAT(g, RS);
-    REAL *out = calloc((size_t)n * ZG_CVR, sizeof *out);
+    REAL *out = calloc((size_t)n * ZG_GVR, sizeof *out);
     if (out)
         for (ptrdiff_t i = 0; i < n; i++) {
             const REAL *gi = g + i * RGBZ_ZG_FEATURES;
-            REAL *o = out + i * ZG_CVR;
+            REAL *o = out + i * ZG_GVR;
             for (int m = 0; m < 10; m++) o[m] = gi[m];
             o[8 + ZG_L] = gi[9];
             o[9 + ZG_L] = gi[10];
