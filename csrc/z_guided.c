@@ -210,6 +210,21 @@ RGBZ_INLINE lrn_v4d zg_low2_f64(lrn_v4d c)
 #undef ZG_SHUF4
 #endif
 
+/* not 0 when the n sites (sr[i], sc[i]) are not (r, c0 + px i), i = 0 .. n - 1: a row of
+   Z pixels in order */
+RGBZ_CLONES_512
+static int zg_sites_bad(const int64_t *restrict sr, const int64_t *restrict sc, ptrdiff_t n,
+                        int64_t r, int64_t c0, int px)
+{
+    int bad = 0;
+    int64_t c = c0;   /* an induction variable: no 64-bit products in the vectorised loop */
+    RGBZ_IVDEP for (ptrdiff_t i = 0; i < n; i++) {
+        bad |= (sr[i] != r) | (sc[i] != c);
+        c += px;
+    }
+    return bad;
+}
+
 /* a row of the guide from the taps in each precision (zg_guide_rows): in double the values
    of rgbz_zguided_guide (those of ToFTaps.amplitude), in float its float arithmetic */
 #define zg_taps_row_f64 rgbz_zguided_guide_row

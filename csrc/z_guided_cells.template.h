@@ -117,10 +117,7 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
         const int64_t *restrict sr = f->site_rows + jc * gxc;
         const int64_t *restrict sc = f->site_cols + jc * gxc;
         const int64_t r = f->zr + (int64_t)py * jc;
-        int bad = 0;
-        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gxc; ix++)
-            bad |= (sr[ix] != r) | (sc[ix] != f->zc + (int64_t)px * ix);
-        s->bad |= bad;
+        s->bad |= zg_sites_bad(sr, sc, gxc, r, f->zc, px);
         ZG_TAPS_ROW(f->taps_type, f->taps, f->taps_F, f->gyc * gxc, jc * gxc, gxc, f->ratio,
                     n + 1, v + 1);
         nc = gxc;
