@@ -110,10 +110,22 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
 /* the terms 0 .. 7 of the 8 cells from column i of the rows tm[m] (row stride ZG_CHUNK) into
    the first 8 floats of those cells' vectors (out, cell stride cvr floats): the 8 x 8 block
    transposed in registers (the unpack, pair and half shuffles of lrn_lane_sums_f32) */
+RGBZ_INLINE lrn_v8f zg_ld8(const float *p)
+{
+    lrn_v8f v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
 RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
 {
-    lrn_v8f r[8], t[8], u[8];
-    for (int m = 0; m < 8; m++) memcpy(&r[m], tm + (ptrdiff_t)m * ZG_CHUNK + i, sizeof r[m]);
+    /* (the rows loaded one by one: a loop of memcpy's became a copy through the stack) */
+    const float *p = tm + i;
+    const lrn_v8f r[8] = {zg_ld8(p), zg_ld8(p + ZG_CHUNK), zg_ld8(p + 2 * ZG_CHUNK),
+                          zg_ld8(p + 3 * ZG_CHUNK), zg_ld8(p + 4 * ZG_CHUNK),
+                          zg_ld8(p + 5 * ZG_CHUNK), zg_ld8(p + 6 * ZG_CHUNK),
+                          zg_ld8(p + 7 * ZG_CHUNK)};
+    lrn_v8f t[8], u[8];
     for (int m = 0; m < 8; m += 2) {
         t[m] = ZG_SHUF8(r[m], r[m + 1], 0, 8, 1, 9, 4, 12, 5, 13);
         t[m + 1] = ZG_SHUF8(r[m], r[m + 1], 2, 10, 3, 11, 6, 14, 7, 15);
@@ -136,9 +148,12 @@ RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t
 RGBZ_INLINE void zg_put8_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff_t cvr)
 {
     for (int h = 0; h < 8; h += 4) {
+        const double *p = tm + (ptrdiff_t)h * ZG_CHUNK + i;
         lrn_v4d r[4];
-        for (int m = 0; m < 4; m++)
-            memcpy(&r[m], tm + (ptrdiff_t)(h + m) * ZG_CHUNK + i, sizeof r[m]);
+        memcpy(&r[0], p, sizeof r[0]);
+        memcpy(&r[1], p + ZG_CHUNK, sizeof r[1]);
+        memcpy(&r[2], p + 2 * ZG_CHUNK, sizeof r[2]);
+        memcpy(&r[3], p + 3 * ZG_CHUNK, sizeof r[3]);
         const lrn_v4d t0 = ZG_SHUF4(r[0], r[1], 0, 4, 2, 6), t1 = ZG_SHUF4(r[0], r[1], 1, 5, 3, 7);
         const lrn_v4d t2 = ZG_SHUF4(r[2], r[3], 0, 4, 2, 6), t3 = ZG_SHUF4(r[2], r[3], 1, 5, 3, 7);
         const lrn_v4d c0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), c1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
