@@ -107,9 +107,7 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
 #define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
 #endif
 
-/* the terms 0 .. 7 of the 8 cells from column i of the rows tm[m] (row stride ZG_CHUNK) into
-   the first 8 floats of those cells' vectors (out, cell stride cvr floats): the 8 x 8 block
-   transposed in registers (the unpack, pair and half shuffles of lrn_lane_sums_f32) */
+/* the 8 floats at p as a vector */
 RGBZ_INLINE lrn_v8f zg_ld8(const float *p)
 {
     lrn_v8f v;
@@ -117,9 +115,13 @@ RGBZ_INLINE lrn_v8f zg_ld8(const float *p)
     return v;
 }
 
+/* the terms 0 .. 7 of the 8 cells from column i of the rows tm[m] (row stride ZG_CHUNK) into
+   the first 8 floats of those cells' vectors (out, cell stride cvr floats): the 8 x 8 block
+   transposed in registers (the unpack, pair and half shuffles of lrn_lane_sums_f32) */
 RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
 {
-    /* (the rows loaded one by one: a loop of memcpy's became a copy through the stack) */
+    /* each row loaded by itself: a loop of memcpy's into the array compiles, in the AVX2
+       clone, to a copy through the stack */
     const float *p = tm + i;
     const lrn_v8f r[8] = {zg_ld8(p), zg_ld8(p + ZG_CHUNK), zg_ld8(p + 2 * ZG_CHUNK),
                           zg_ld8(p + 3 * ZG_CHUNK), zg_ld8(p + 4 * ZG_CHUNK),
@@ -164,6 +166,7 @@ RGBZ_INLINE void zg_put8_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff
         memcpy(out + 3 * cvr + h, &c3, sizeof c3);
     }
 }
+
 /* the values c_8, -1, c_9, c_10 of the 8 cells from column i of the rows tm[8], tm[9],
    tm[10] (row stride ZG_CHUNK) into the 4 floats after the first 8 of those cells' vectors
    (out, cell stride cvr; the 4 floats after them stay 0): a 4 x 8 block transposed */

@@ -135,7 +135,8 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
    (rows iy - 1 .. iy + 1, clamped; index ix + 1 is cell ix), in REAL: every sum in the order
    of m (as cell_terms), the means and the quotients as products with reciprocals. By chunks
    of ZG_CHUNK cells: the terms into per-term rows tm (contiguous stores), then into the cells'
-   vectors (terms 0 .. 7 transposed in registers, zg_put8_<RS>) */
+   vectors, transposed in registers (terms 0 .. 7: zg_put8_<RS>; c_8, -1, c_9, c_10:
+   zg_putb_<RS>) */
 RGBZ_CLONES_512
 static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
                                  const REAL *const *C, ptrdiff_t gx, REAL lam,
