@@ -123,6 +123,44 @@ static ptrdiff_t ci_encode_f64_avx2(const double *t, const int32_t *start, uint6
     return j;
 }
 
+/* ci_encode_f64_avx2 for a table of one step (8 bits) with the buckets' next thresholds
+   (ci_codes' `next`), with AVX-512, 8 values at a time: the bucket's start code and the
+   threshold above it are two gathers at the same index, not one after the other, and the
+   lanes the threshold passes get one code more; the same codes. (An AVX2-only CPU keeps
+   ci_encode_f64_avx2.) */
+__attribute__((target("avx512f,avx512vl,avx512dq,avx512bw")))
+static ptrdiff_t ci_encode1_f64_avx512(const double *next, const int32_t *start, uint64_t base,
+                                       uint64_t last, int shift, const double *v,
+                                       uint16_t *code, ptrdiff_t n)
+{
+    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
+    const __m512i vb = _mm512_set1_epi64((long long)base);
+    const __m512i vl = _mm512_set1_epi64((long long)last);
+    const __m128i sh = _mm_cvtsi32_si128(shift);
+    const __m256i ones = _mm256_set1_epi32(1);
+    ptrdiff_t j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const __m512d x = _mm512_min_pd(_mm512_max_pd(_mm512_loadu_pd(v + j), zero), one);
+        __m512i u = _mm512_srl_epi64(_mm512_castpd_si512(x), sh);
+        u = _mm512_sub_epi64(_mm512_min_epu64(_mm512_max_epu64(u, vb), vl), vb);
+        const __m256i c = _mm512_i64gather_epi32(u, start, 4);
+        const __m512d ts = _mm512_i64gather_pd(u, next, 8);
+        const __mmask8 le = _mm512_cmp_pd_mask(ts, x, _CMP_LE_OQ);
+        const __m256i k = _mm256_mask_add_epi32(c, le, c, ones);
+        _mm_storeu_si128((__m128i *)(code + j), _mm256_cvtepi32_epi16(k));
+    }
+    return j;
+}
+
+static int ci_cpu_avx512(void)
+{
+    static int have = -1;
+    if (have < 0)
+        have = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")
+               && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+    return have;
+}
+
 /* the demosaic's and the white balance's loops in 4 doubles as well (the same arithmetic:
    -ffp-contract=off leaves every operation rounded on its own on every set) */
 #define CI_CLONES __attribute__((target_clones("avx2", "default")))
@@ -461,6 +499,9 @@ CI_CLONES static void ci_interleave16(const uint16_t *code, ptrdiff_t h, ptrdiff
 #ifdef CI_HAVE_AVX2
 #define CI_ENCODE_FAST_f64(tab, v, code, n)                                                \
     (!ci_cpu_avx2() ? 0 :                                                                   \
+     (tab)->next && ci_cpu_avx512() ?                                                       \
+     ci_encode1_f64_avx512((tab)->next, (tab)->start, (tab)->base, (tab)->last,            \
+                           (tab)->shift, (v), (code), (n)) :                                \
      ci_encode_f64_avx2((tab)->t, (tab)->start, (tab)->base, (tab)->last, (tab)->shift,     \
                         (tab)->steps, (v), (code), (n)))
 #else

@@ -27,6 +27,9 @@ typedef struct {
     /* one step (steps 1) in float32: each bucket's start code c in the high half and the
        bits of t[c + 1] in the low half, so that one 8-byte load gives both; else NULL */
     const uint64_t *pair;
+    /* one step in float64: t[c + 1] of each bucket's start code c, so that the bucket gives
+       both (two loads at one index, not one after the other); else NULL */
+    const REAL *next;
 } RGBZ_CAT(ci_codes, RS);
 
 RGBZ_INLINE int RGBZ_CAT(ci_code, RS)(const RGBZ_CAT(ci_codes, RS) *tab, REAL v, int steps)
@@ -58,13 +61,16 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
     tab->last = uone >> tab->shift;
     const ptrdiff_t n = (ptrdiff_t)(tab->last - tab->base) + 1;
     const ptrdiff_t npad = (ptrdiff_t)top + 1 + 64;
-    /* one block: the pairs (8-byte aligned), the padded thresholds, the start codes */
+    /* one block: the pairs (8-byte aligned), the padded thresholds, the float64 buckets'
+       next thresholds, the start codes */
     const size_t npair = sizeof(REAL) == 4 ? (size_t)n : 0;
+    const size_t nnext = sizeof(REAL) == 8 ? (size_t)n : 0;
     uint64_t *pair = (uint64_t *)malloc(npair * sizeof(uint64_t) + (size_t)npad * sizeof(REAL) +
-                                        (size_t)n * sizeof(int32_t));
+                                        nnext * sizeof(REAL) + (size_t)n * sizeof(int32_t));
     if (!pair) return NULL;
     REAL *tp = (REAL *)(pair + npair);
-    int32_t *start = (int32_t *)(tp + npad);
+    REAL *next = tp + npad;
+    int32_t *start = (int32_t *)(next + nnext);
     start[0] = 0;                                   /* holds 0, whose code is 0 */
     int c = 0, span = 0;
     for (ptrdiff_t i = 1; i < n; i++) {
@@ -88,6 +94,11 @@ static void *RGBZ_CAT(ci_build_codes, RS)(RGBZ_CAT(ci_codes, RS) *tab, const REA
     tab->start = start;
     tab->steps = steps;
     tab->pair = NULL;
+    tab->next = NULL;
+    if (nnext && steps == 1) {
+        for (ptrdiff_t i = 0; i < n; i++) next[i] = tp[start[i] + 1];
+        tab->next = next;
+    }
     if (npair && steps == 1) {
         for (ptrdiff_t i = 0; i < n; i++) {
             uint32_t tb;

@@ -55,6 +55,14 @@ int rgbz_ssim_reference(int in_type, const void *x, ptrdiff_t planes, ptrdiff_t 
                         int workers);
 
 /*
+ * Planar copy: src (rows, cols, channels) of in_type, its rows row_stride elements apart and
+ * its pixels contiguous (a crop of an interleaved image) -> dst (channels, rows, cols),
+ * contiguous: what the SSIM kernels read.
+ */
+int rgbz_planar(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                ptrdiff_t channels, ptrdiff_t row_stride, void *dst, int workers);
+
+/*
  * 2 x 2 mean decimation (Wang et al.'s MS-SSIM code): src planar (planes, rows, cols) of
  * in_type -> dst (planes, (rows + 1) / 2, (cols + 1) / 2) double,
  * dst = ((a00 + a01) + (a10 + a11)) / 4, an odd last row or column repeated (NumPy's

@@ -327,6 +327,39 @@ static int MT(mt_ssim_sums)(const void *xv, const void *yv, const double *mom,
     return failed ? RGBZ_ENOMEM : RGBZ_OK;
 }
 
+/* ------------------------------------------------------------------ planar copy */
+static int MT(mt_planar)(const void *srcv, ptrdiff_t rows, ptrdiff_t cols, ptrdiff_t ch,
+                         ptrdiff_t row_stride, void *dstv, int workers)
+{
+    const IN_T *src = (const IN_T *)srcv;
+    IN_T *dst = (IN_T *)dstv;
+    const ptrdiff_t plane = rows * cols;
+    int nt = mt_threads(workers, rows, 2.0 * (double)(cols * ch));
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt)
+#endif
+    for (ptrdiff_t r = 0; r < rows; r++) {
+        const IN_T *s = src + r * row_stride;
+        if (ch == 3) {             /* RGB: the three planes in one vector pass */
+            IN_T *restrict d0 = dst + r * cols, *restrict d1 = d0 + plane;
+            IN_T *restrict d2 = d1 + plane;
+            MT_SIMD
+            for (ptrdiff_t j = 0; j < cols; j++) {
+                d0[j] = s[3 * j];
+                d1[j] = s[3 * j + 1];
+                d2[j] = s[3 * j + 2];
+            }
+        } else {
+            for (ptrdiff_t c = 0; c < ch; c++) {
+                IN_T *restrict d = dst + c * plane + r * cols;
+                for (ptrdiff_t j = 0; j < cols; j++) d[j] = s[ch * j + c];
+            }
+        }
+    }
+    return RGBZ_OK;
+}
+
 /* ------------------------------------------------------------------ MS-SSIM decimation */
 static int MT(mt_downsample2)(const void *srcv, ptrdiff_t planes, ptrdiff_t rows,
                               ptrdiff_t cols, double *dst, int workers)
@@ -376,6 +409,7 @@ static void MT(mt_lab_run)(const IN_T *src, ptrdiff_t n, double scale, const dou
     double *restrict lr = lin, *restrict lg = lin + n, *restrict lb = lin + 2 * n;
 #if IN_IS_INT
     if (lut) {
+        MT_SIMD
         for (ptrdiff_t j = 0; j < n; j++) {
             lr[j] = lut[src[3 * j]];
             lg[j] = lut[src[3 * j + 1]];
@@ -394,7 +428,11 @@ static void MT(mt_lab_run)(const IN_T *src, ptrdiff_t n, double scale, const dou
     double tmax = 0.0;
     MT_SIMD_MAX(tmax)
     for (ptrdiff_t j = 0; j < n; j++) {
-        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax);
+#if IN_IS_INT && defined(MT_HAVE_QFMA)
+        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax, MT_QFMA);
+#else
+        MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax, MT_QDIV);
+#endif
     }
     if (!(tmax < 8.0)) {
         /* rare: a ratio X/Xn, Y/Yn or Z/Zn >= 8 (a float input far above white) */
@@ -535,8 +573,12 @@ static int MT(mt_zipper_pass)(const IN_T *ref, const IN_T *test, ptrdiff_t rows,
                     }
                     mt_zipper_ref_row(rr[u], rr[c], rr[s], cols, bst, nrs);
                 }
-                if (test)
-                    total += mt_zipper_test_row(tr[u], tr[c], tr[s], cols, bst, nrs, delta);
+                if (test) {
+                    /* the neighbours' L relative to the centre pixel's, in raster order */
+                    const ptrdiff_t ru = tr[u].L - tr[c].L, rd = tr[s].L - tr[c].L;
+                    const ptrdiff_t off[8] = {ru - 1, ru, ru + 1, -1, 1, rd - 1, rd, rd + 1};
+                    total += mt_zipper_test_row(tr[c].L, cols, off, bst, nrs, delta);
+                }
             }
         }
         free(buf);

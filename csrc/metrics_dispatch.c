@@ -20,12 +20,13 @@ static int mt_isa_available(int isa)
         return 1;
 #if defined(RGBZ_METRICS_HAVE_AVX2)
     case RGBZ_ISA_AVX2:
-        return __builtin_cpu_supports("avx2");
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #endif
 #if defined(RGBZ_METRICS_HAVE_AVX512)
     case RGBZ_ISA_AVX512:
         return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")
-               && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+               && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw")
+               && __builtin_cpu_supports("fma");
 #endif
     default:
         return 0;
@@ -104,6 +105,12 @@ int rgbz_ssim_reference(int in_type, const void *x, ptrdiff_t planes, ptrdiff_t 
 {
     MT_DISPATCH(rgbz_ssim_reference, in_type, x, planes, rows, cols, weights, ntaps,
                 x_moments, workers)
+}
+
+int rgbz_planar(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                ptrdiff_t channels, ptrdiff_t row_stride, void *dst, int workers)
+{
+    MT_DISPATCH(rgbz_planar, in_type, src, rows, cols, channels, row_stride, dst, workers)
 }
 
 int rgbz_downsample2(int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows,

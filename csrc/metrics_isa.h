@@ -21,6 +21,9 @@
     int RGBZ_METRICS_ENTRY(rgbz_ssim_reference, isa)(                                        \
         int in_type, const void *x, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,         \
         const double *weights, int ntaps, double *x_moments, int workers);                    \
+    int RGBZ_METRICS_ENTRY(rgbz_planar, isa)(                                                \
+        int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols, ptrdiff_t channels,     \
+        ptrdiff_t row_stride, void *dst, int workers);                                        \
     int RGBZ_METRICS_ENTRY(rgbz_downsample2, isa)(                                           \
         int in_type, const void *src, ptrdiff_t planes, ptrdiff_t rows, ptrdiff_t cols,       \
         double *dst, int workers);                                                            \

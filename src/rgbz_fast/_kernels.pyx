@@ -140,6 +140,8 @@ cdef extern from "metrics.h" nogil:
     int rgbz_ssim_reference(int in_type, const void *x, Py_ssize_t planes, Py_ssize_t rows,
                             Py_ssize_t cols, const double *weights, int ntaps,
                             double *x_moments, int workers)
+    int rgbz_planar(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                    Py_ssize_t channels, Py_ssize_t row_stride, void *dst, int workers)
     int rgbz_downsample2(int in_type, const void *src, Py_ssize_t planes, Py_ssize_t rows,
                          Py_ssize_t cols, double *dst, int workers)
     int rgbz_srgb_to_lab(int in_type, const void *rgb, Py_ssize_t n, double scale,
@@ -223,6 +225,26 @@ def ssim_reference(const frame_t[:, :, ::1] x, const double[::1] weights,
         status = rgbz_ssim_reference(in_type, &x[0, 0, 0], x.shape[0], x.shape[1],
                                      x.shape[2], &weights[0], <int> n, &x_moments[0, 0, 0],
                                      workers)
+    _raise_for(status)
+
+
+def planar(const frame_t[:, :, :] src, frame_t[:, :, ::1] dst, int workers):
+    """(rows, cols, channels) -> (channels, rows, cols): ``src`` with contiguous pixels (its
+    rows may lie further apart: a crop), ``dst`` contiguous, of the same type."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t size = sizeof(frame_t)
+    if dst.shape[0] != src.shape[2] or dst.shape[1] != src.shape[0] \
+            or dst.shape[2] != src.shape[1]:
+        raise ValueError("dst: not the (channels, rows, cols) of src")
+    if src.strides[2] != size or src.strides[1] != size * src.shape[2] \
+            or src.strides[0] % size:
+        raise ValueError("src: expected contiguous pixels, rows a whole number of elements apart")
+    if src.shape[0] == 0 or src.shape[1] == 0 or src.shape[2] == 0:
+        return
+    with nogil:
+        status = rgbz_planar(in_type, &src[0, 0, 0], src.shape[0], src.shape[1], src.shape[2],
+                             src.strides[0] // size, &dst[0, 0, 0], workers)
     _raise_for(status)
 
 

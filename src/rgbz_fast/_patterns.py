@@ -161,24 +161,25 @@ class Pattern:
 
     # -- Bayer inference ----------------------------------------------------
     def _infer_bayer(self, bayer):
-        P, Q = self.period
-        LP, LQ = _lcm(P, 2), _lcm(Q, 2)
-        ext = np.tile(self._tile, (LP // P, LQ // Q))
-        fits = []
-        for candidate in BAYER_PHASES:
-            b = np.tile(_bayer_tile(candidate), (LP // 2, LQ // 2))
-            known = ext != Z
-            if np.array_equal(ext[known], b[known]):
-                fits.append(candidate)
         if bayer is not None:
             bayer = str(bayer).upper()
             if bayer not in BAYER_PHASES:
                 raise ValueError(f"bayer: expected one of {', '.join(BAYER_PHASES)}, got {bayer!r}")
-            if bayer not in fits:
+            if not self._fits(bayer):          # the phases it fits, to say so
+                fits = [c for c in BAYER_PHASES if self._fits(c)]
                 raise ValueError(f"bayer: the colour sites of tile {self.tile_string!r} do not "
                                  f"fit the Bayer phase {bayer!r} (they fit {fits or 'none'})")
             return bayer
-        return fits[0] if fits else None
+        return next((c for c in BAYER_PHASES if self._fits(c)), None)
+
+    def _fits(self, candidate):
+        """Whether every colour site of the tile is that of the Bayer phase ``candidate``."""
+        P, Q = self.period
+        LP, LQ = _lcm(P, 2), _lcm(Q, 2)
+        ext = np.tile(self._tile, (LP // P, LQ // Q))
+        b = np.tile(_bayer_tile(candidate), (LP // 2, LQ // 2))
+        known = ext != Z
+        return bool(np.array_equal(ext[known], b[known]))
 
     # -- maps over a frame --------------------------------------------------
     def check_shape(self, shape, name="shape"):

@@ -61,7 +61,7 @@ def _check_count(value, name, unit, minus_one):
                          f"got {value!r}")
     if value > MAX_WORKERS:
         raise ValueError(f"{name}: expected at most {MAX_WORKERS} {unit}, got {value!r}")
-    if value > (os.cpu_count() or 1):            # the usual counts never pay for the probe
+    if value > 1 and value > (os.cpu_count() or 1):    # the usual counts never pay for the probe
         limit, reason = thread_limit()
         if value > limit:
             raise ValueError(f"{name}: {value} {unit} cannot be started here ({reason}); "

@@ -385,3 +385,42 @@ def test_unknown_instruction_set_is_refused():
         with pytest.raises(RuntimeError):
             _kernels.metrics_use_isa(name)
     assert _kernels.metrics_isa() == _kernels.metrics_isas_available()[-1]
+
+
+@pytest.mark.parametrize("dtype, bits", [(np.uint8, 8), (np.uint16, 16)])
+def test_every_instruction_set_gives_the_lab_of_the_divisions(rng, dtype, bits):
+    # integer codes reach the white point's divisions as x * (1 / c) corrected by an FMA
+    # where the set has one (metrics.c, MT_QFMA): every 8-bit colour (2**24, in blocks of
+    # 2**20), and 10**6 random 16-bit ones, give the Lab of the generic build, which divides
+    if bits == 8:
+        blocks = [np.arange(k << 20, (k + 1) << 20, dtype=np.uint32) for k in range(16)]
+        blocks = [np.stack([c >> 16, (c >> 8) & 255, c & 255], axis=-1).astype(dtype)
+                  for c in blocks]
+    else:
+        blocks = [rng.integers(0, 1 << 16, (10**6, 3)).astype(dtype)]
+    isas = _kernels.metrics_isas_available()
+    try:
+        for rgb in blocks:
+            lab = {}
+            for isa in isas:
+                _kernels.metrics_use_isa(isa)
+                lab[isa] = np.empty(rgb.shape)
+                _kernels.srgb_to_lab(rgb, float((1 << bits) - 1), lab[isa], 2)
+            for isa in isas:
+                assert np.array_equal(lab[isa], lab["generic"]), (isa, rgb[0])
+    finally:
+        _kernels.metrics_use_isa(None)
+
+
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+@pytest.mark.parametrize("channels", [1, 2, 3, 4])
+def test_planar_copy_is_numpy_moveaxis(rng, dtype, channels):
+    img = rng.integers(0, 256, (37, 41, channels)).astype(dtype)
+    for src in (img, img[2:-3, 1:-4]):                    # contiguous, and a crop
+        out = np.empty((channels,) + src.shape[:2], dtype)
+        _kernels.planar(src, out, 3)
+        assert np.array_equal(out, np.moveaxis(src, -1, 0))
+    with pytest.raises(ValueError, match="src: expected contiguous pixels"):
+        _kernels.planar(img[:, ::2], np.empty((channels, 37, 21), dtype), 1)
+    with pytest.raises(ValueError, match="dst: not the"):
+        _kernels.planar(img, np.empty((channels, 41, 37), dtype), 1)

@@ -270,6 +270,16 @@ def _pool_task(args, stop=None):
         return skipped
 
 
+class _NoBar:
+    """The progress bar of a quiet run: counts nothing, shows nothing."""
+
+    def update(self, n=1):
+        pass
+
+    def close(self):
+        pass
+
+
 class _Skipped(str):
     """The reason an image was skipped (``skip_bad=True``), in place of its rows; ``error``:
     the :class:`~rgbz_fast.io.ParameterError` it came from, if it did, whose settings a caller
@@ -439,8 +449,11 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     skip_bad = check_flag(skip_bad, "skip_bad")
     progress = check_flag(progress, "progress")
     tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]
-    from tqdm.auto import tqdm
-    bar = tqdm(total=len(tasks), desc="evaluate", unit="img", disable=not progress)
+    if progress:
+        from tqdm.auto import tqdm
+        bar = tqdm(total=len(tasks), desc="evaluate", unit="img")
+    else:                       # tqdm's import (asyncio with it) would delay the first image
+        bar = _NoBar()
     results = {}
     try:
         if scheduler is not None:

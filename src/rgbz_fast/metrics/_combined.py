@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import _kernels
 from .._validate import check_number, check_workers
 from ._common import (COLOUR_MAX_VALUE, SSIM_MAX_VALUE, _check_crop, _check_integer_range,
                       _check_magnitude, _check_rgb_pair,
-                      _check_ssim_data_range, _crop_hw, _kernel_dtype, _kernel_pair,
+                      _check_ssim_data_range, _crop_hw, _kernel_dtype,
                       _psnr_from_mse)
 from ._psnr import _rgb_mse
 from ._ssim import _SSIM_WHY, MS_SSIM_WEIGHTS, _check_ms_ssim_size, _ssim_and_ms_ssim
@@ -105,14 +106,23 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
     if want_ssim:
         x_cache = None
         if memo is None:
-            x, y = _kernel_pair(np.moveaxis(ref, -1, 0), np.moveaxis(tst, -1, 0))
+            x = _planar(ref, threads)
         else:
             x, x_cache = memo.get(("ssim", dt)) or memo.setdefault(
-                ("ssim", dt), (np.ascontiguousarray(np.moveaxis(ref, -1, 0), dt), []))
-            y = np.ascontiguousarray(np.moveaxis(tst, -1, 0), dt)
+                ("ssim", dt), (_planar(ref, threads), []))
+        y = _planar(tst, threads)
         ssim_value, ms_value = _ssim_and_ms_ssim(
             x, y, peak, MS_SSIM_WEIGHTS if "ms_ssim" in metrics else None, threads, x_cache)
         out.update(ssim=ssim_value, ms_ssim=ms_value)
     if "zipper" in metrics:
         out["zipper"] = _zipper_percent(ref, tst, peak, 2.3, threads, memo)
     return {m: out[m] for m in metrics}
+
+
+def _planar(a, threads):
+    """The (channels, rows, cols) copy of a contiguous (rows, cols, channels) kernel-typed
+    array, as the SSIM kernels read it (C kernel: NumPy copies the strided bytes one by
+    one)."""
+    out = np.empty((a.shape[2],) + a.shape[:2], a.dtype)
+    _kernels.planar(a, out, threads)
+    return out
