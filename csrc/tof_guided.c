@@ -247,33 +247,68 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
 #define TOFG_BW 16
 #define TOFG_UNROLL _Pragma("GCC unroll 4")
 
-/* The outputs of one block of TOFG_BW measurements from its sums: the weighted mean
-   phasors, the variance of the mean (HUGE_VALF without weight) and the output noise. */
-RGBZ_INLINE void tofg_store(
-    const tofg_pass_args *p, ptrdiff_t m0, float nr[][TOFG_BW], float ni[][TOFG_BW],
-    const float *den, const float *w2v, const float *w2n, const int NF)
+/* blocks whose sums one call of tofg_store_span turns into outputs */
+#define TOFG_CHUNK 32
+#define TOFG_SPAN (TOFG_CHUNK * TOFG_BW)
+
+/* The sums of one block into the span buffer s (planes of TOFG_SPAN floats, the block's
+   lanes from column j0): the phasors nr, ni (F planes each), then den, w2v, w2n. */
+RGBZ_INLINE void tofg_sums_out(float *restrict s, ptrdiff_t j0, float nr[][TOFG_BW],
+                               float ni[][TOFG_BW], const float *den, const float *w2v,
+                               const float *w2n, const int NF)
 {
-    const ptrdiff_t OS = p->os;
-    for (int j = 0; j < TOFG_BW; j++) {
-        const ptrdiff_t m = m0 + j - p->ooff;
+    TOFG_UNROLL
+    for (int f = 0; f < NF; f++) {
+        for (int j = 0; j < TOFG_BW; j++) s[f * TOFG_SPAN + j0 + j] = nr[f][j];
+        for (int j = 0; j < TOFG_BW; j++) s[(NF + f) * TOFG_SPAN + j0 + j] = ni[f][j];
+    }
+    for (int j = 0; j < TOFG_BW; j++) s[2 * NF * TOFG_SPAN + j0 + j] = den[j];
+    for (int j = 0; j < TOFG_BW; j++) s[(2 * NF + 1) * TOFG_SPAN + j0 + j] = w2v[j];
+    for (int j = 0; j < TOFG_BW; j++) s[(2 * NF + 2) * TOFG_SPAN + j0 + j] = w2n[j];
+}
+
+/* The outputs of n <= TOFG_SPAN measurements from m0 from their sums in s (tofg_sums_out):
+   the weighted mean phasors, the variance of the mean (HUGE_VALF without weight) and the
+   output noise; loops over the span that vectorise, the same operations per measurement as
+   the generic row's */
+RGBZ_INLINE void tofg_store_span(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n,
+                                 const float *restrict s, const int NF)
+{
+    const ptrdiff_t OS = p->os, mb = m0 - p->ooff;
+    const float *restrict den = s + 2 * NF * TOFG_SPAN, *restrict w2v = den + TOFG_SPAN;
+    const float *restrict w2n = w2v + TOFG_SPAN;
+    float inv[TOFG_SPAN];
+    for (ptrdiff_t j = 0; j < n; j++) {
         const int ok = den[j] > 0.0f;
-        const float inv = ok ? 1.0f / den[j] : 0.0f;
-        TOFG_UNROLL
-        for (int f = 0; f < NF; f++) {
-            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
-            if (p->or64) {
-                p->or64[f * OS + m] = mr;
-                p->oi64[f * OS + m] = mi;
-            } else {
-                p->or_[f * OS + m] = mr;
-                p->oi[f * OS + m] = mi;
+        inv[j] = ok ? 1.0f / den[j] : 0.0f;
+    }
+    TOFG_UNROLL
+    for (int f = 0; f < NF; f++) {
+        const float *restrict sr = s + f * TOFG_SPAN, *restrict si = s + (NF + f) * TOFG_SPAN;
+        if (p->or64) {
+            double *restrict o_r = p->or64 + f * OS + mb, *restrict o_i = p->oi64 + f * OS + mb;
+            for (ptrdiff_t j = 0; j < n; j++) {
+                o_r[j] = sr[j] * inv[j];
+                o_i[j] = si[j] * inv[j];
+            }
+        } else {
+            float *restrict o_r = p->or_ + f * OS + mb, *restrict o_i = p->oi + f * OS + mb;
+            for (ptrdiff_t j = 0; j < n; j++) {
+                o_r[j] = sr[j] * inv[j];
+                o_i[j] = si[j] * inv[j];
             }
         }
-        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
-        if (p->nin)
-            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
-        else
-            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
+    }
+    float *restrict ov = p->ov + mb, *restrict on = p->on + mb;
+    for (ptrdiff_t j = 0; j < n; j++)
+        ov[j] = den[j] > 0.0f ? w2v[j] * (inv[j] * inv[j]) : HUGE_VALF;
+    if (p->nin) {
+        for (ptrdiff_t j = 0; j < n; j++)
+            on[j] = den[j] > 0.0f && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv[j] * inv[j]))
+                                                    : 0.0f;
+    } else {
+        for (ptrdiff_t j = 0; j < n; j++)
+            on[j] = den[j] > 0.0f && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
     }
 }
 
@@ -285,7 +320,7 @@ RGBZ_INLINE void tofg_store(
    for the output m0 + j at ew[t][j] (tofg_pairs), or NULL: computed here. */
 RGBZ_INLINE void tofg_block(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
-    int ntaps, const int NF)
+    int ntaps, float *sums, ptrdiff_t j0, const int NF)
 {
     const ptrdiff_t ZS = p->zs, GS = p->gs, N = p->cs;
     const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
@@ -352,7 +387,7 @@ RGBZ_INLINE void tofg_block(
             w2n[j] += ww * rn[j];
         }
     }
-    tofg_store(p, m0, nr, ni, den, w2v, w2n, NF);
+    tofg_sums_out(sums, j0, nr, ni, den, w2v, w2n, NF);
 }
 
 
@@ -361,7 +396,7 @@ RGBZ_INLINE void tofg_block(
    so that the loops vectorise */
 RGBZ_INLINE void tofg_block_e(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
-    int ntaps, const int NF)
+    int ntaps, float *sums, ptrdiff_t j0, const int NF)
 {
     const ptrdiff_t ZS = p->zs;
     float nr[4][TOFG_BW], ni[4][TOFG_BW], den[TOFG_BW], w2v[TOFG_BW], w2n[TOFG_BW];
@@ -387,7 +422,7 @@ RGBZ_INLINE void tofg_block_e(
             w2n[j] += ww * rq[j];
         }
     }
-    tofg_store(p, m0, nr, ni, den, w2v, w2n, NF);
+    tofg_sums_out(sums, j0, nr, ni, den, w2v, w2n, NF);
 }
 
 /* The weight factor of the pairs (m0 + k, n0 + k), k < cnt, into e[k]: the expression of
@@ -435,28 +470,46 @@ RGBZ_CLONES_512 static void tofg_pairs(const tofg_pass_args *p, ptrdiff_t m0, pt
     }
 }
 
+/* tofg_store_span for the frame's frequency count */
+RGBZ_CLONES_512 static void tofg_store_spans(const tofg_pass_args *p, ptrdiff_t m0,
+                                             ptrdiff_t n, const float *s)
+{
+    switch (p->F) {
+    case 1: tofg_store_span(p, m0, n, s, 1); break;
+    case 2: tofg_store_span(p, m0, n, s, 2); break;
+    case 3: tofg_store_span(p, m0, n, s, 3); break;
+    default: tofg_store_span(p, m0, n, s, 4); break;
+    }
+}
+
+/* the blocks, TOFG_CHUNK at a time: their sums into a buffer, then their outputs */
 RGBZ_CLONES_512 static void tofg_blocks(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t nblk,
                                         const ptrdiff_t *shift, const float **ew, int ntaps)
 {
-    for (ptrdiff_t b = 0; b < nblk; b++) {
-        const ptrdiff_t m = m0 + b * TOFG_BW;
-        if (ew && p->gate) {
-            switch (p->F) {
-            case 1: tofg_block_e(p, m, shift, ew, ntaps, 1); break;
-            case 2: tofg_block_e(p, m, shift, ew, ntaps, 2); break;
-            case 3: tofg_block_e(p, m, shift, ew, ntaps, 3); break;
-            default: tofg_block_e(p, m, shift, ew, ntaps, 4); break;
+    float sums[(2 * 4 + 3) * TOFG_SPAN];
+    for (ptrdiff_t b0 = 0; b0 < nblk; b0 += TOFG_CHUNK) {
+        const ptrdiff_t nb = nblk - b0 < TOFG_CHUNK ? nblk - b0 : TOFG_CHUNK;
+        for (ptrdiff_t b = 0; b < nb; b++) {
+            const ptrdiff_t m = m0 + (b0 + b) * TOFG_BW, j0 = b * TOFG_BW;
+            if (ew && p->gate) {
+                switch (p->F) {
+                case 1: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 1); break;
+                case 2: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 2); break;
+                case 3: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 3); break;
+                default: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 4); break;
+                }
+            } else {
+                switch (p->F) {
+                case 1: tofg_block(p, m, shift, ew, ntaps, sums, j0, 1); break;
+                case 2: tofg_block(p, m, shift, ew, ntaps, sums, j0, 2); break;
+                case 3: tofg_block(p, m, shift, ew, ntaps, sums, j0, 3); break;
+                default: tofg_block(p, m, shift, ew, ntaps, sums, j0, 4); break;
+                }
             }
-        } else {
-            switch (p->F) {
-            case 1: tofg_block(p, m, shift, ew, ntaps, 1); break;
-            case 2: tofg_block(p, m, shift, ew, ntaps, 2); break;
-            case 3: tofg_block(p, m, shift, ew, ntaps, 3); break;
-            default: tofg_block(p, m, shift, ew, ntaps, 4); break;
-            }
+            if (ew)
+                for (int t = 0; t < ntaps; t++) ew[t] += TOFG_BW;
         }
-        if (ew)
-            for (int t = 0; t < ntaps; t++) ew[t] += TOFG_BW;
+        tofg_store_spans(p, m0 + b0 * TOFG_BW, nb * TOFG_BW, sums);
     }
 }
 
