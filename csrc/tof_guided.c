@@ -69,30 +69,76 @@ RGBZ_CLONES_512 static void tofg_lap_row(const float *restrict p, ptrdiff_t r, p
     }
 }
 
+/* the interior rows [r0, r0 + nr) (nr <= TOFG_LAPR) of a plane: each row's sum of
+   |L * plane| over its interior columns, its terms in column order, into rs; the rows' sums
+   advance together (independent chains of additions, where one row's chain waits on the
+   latency of every addition) */
+#define TOFG_LAPR 8
+RGBZ_CLONES_512 static void tofg_lap_rows(const float *p, ptrdiff_t r0, int nr, ptrdiff_t C,
+                                          double *rs)
+{
+    double l[TOFG_LAPR][256], acc[TOFG_LAPR];
+    for (int k = 0; k < TOFG_LAPR; k++) acc[k] = 0.0;
+    for (int k = nr; k < TOFG_LAPR; k++)
+        for (int x = 0; x < 256; x++) l[k][x] = 0.0;
+    for (ptrdiff_t x0 = 1; x0 < C - 1; x0 += 256) {
+        const ptrdiff_t x1 = C - 1 - x0 < 256 ? C - 1 : x0 + 256;
+        for (int k = 0; k < nr; k++) tofg_lap_row(p, r0 + k, C, x0, x1, l[k]);
+        for (ptrdiff_t x = 0; x < x1 - x0; x++)
+            for (int k = 0; k < TOFG_LAPR; k++) acc[k] += l[k][x];
+    }
+    for (int k = 0; k < nr; k++) rs[k] = acc[k];
+}
+
 /* sum over the interior of |L * plane| for L = [1 -2 1; -2 4 -2; 1 -2 1] (Immerkaer 1996),
-   per plane of col (3, R, C), in double, each row's terms in column order */
+   per plane of col (3, R, C), in double: each row's terms in column order, then the rows of
+   each of nth consecutive shares (the shares of a static OpenMP schedule of the rows over
+   nth threads) in row order, then the shares' sums in order onto 0 */
 static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers)
 {
-    const ptrdiff_t N = R * C;
+    const ptrdiff_t N = R * C, n = R - 2 > 0 ? R - 2 : 0;
     const int nth = rgbz_threads(workers);
-    (void)nth;
-    for (int ch = 0; ch < 3; ch++) {
-        const float *p = col + ch * N;
-        double total = 0.0;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) reduction(+:total) num_threads(nth)
-#endif
-        for (ptrdiff_t r = 1; r < R - 1; r++) {
-            double row = 0.0, l[256];
-            for (ptrdiff_t x0 = 1; x0 < C - 1; x0 += 256) {
-                const ptrdiff_t x1 = C - 1 - x0 < 256 ? C - 1 : x0 + 256;
-                tofg_lap_row(p, r, C, x0, x1, l);
-                for (ptrdiff_t x = 0; x < x1 - x0; x++) row += l[x];
+    double *rs = malloc((size_t)(3 * n > 0 ? 3 * n : 1) * sizeof *rs);
+    if (!rs) {                                  /* the rows one at a time, no buffer */
+        for (int ch = 0; ch < 3; ch++) {
+            double total = 0.0;
+            for (ptrdiff_t i = 0; i < nth; i++) {
+                const ptrdiff_t q = n / nth, rem = n % nth;
+                const ptrdiff_t a = i * q + (i < rem ? i : rem), b = a + q + (i < rem);
+                double part = 0.0;
+                for (ptrdiff_t r = a; r < b; r++) {
+                    double one;
+                    tofg_lap_rows(col + ch * N, r + 1, 1, C, &one);
+                    part += one;
+                }
+                total += part;
             }
-            total += row;
+            lap[ch] = total;
+        }
+        return;
+    }
+    const ptrdiff_t ng = (n + TOFG_LAPR - 1) / TOFG_LAPR;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nth)
+#endif
+    for (ptrdiff_t g = 0; g < 3 * ng; g++) {
+        const int ch = (int)(g / ng);
+        const ptrdiff_t r = (g % ng) * TOFG_LAPR;
+        const int nr = n - r < TOFG_LAPR ? (int)(n - r) : TOFG_LAPR;
+        tofg_lap_rows(col + ch * N, r + 1, nr, C, rs + ch * n + r);
+    }
+    for (int ch = 0; ch < 3; ch++) {
+        double total = 0.0;
+        for (ptrdiff_t i = 0; i < nth; i++) {
+            const ptrdiff_t q = n / nth, rem = n % nth;
+            const ptrdiff_t a = i * q + (i < rem ? i : rem), b = a + q + (i < rem);
+            double part = 0.0;
+            for (ptrdiff_t r = a; r < b; r++) part += rs[ch * n + r];
+            total += part;
         }
         lap[ch] = total;
     }
+    free(rs);
 }
 
 /* ------------------------------------------------------------------ the 1-D passes */
