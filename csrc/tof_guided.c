@@ -141,6 +141,36 @@ static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *l
     free(rs);
 }
 
+/* The guide's noise sigma (3,) from lap (Immerkaer: sqrt(pi / 2) / (6 (R - 2)(C - 2)) lap,
+   at least floor; floor without an interior) and col (3, N), cells (block^2, 3, N; NULL: none)
+   multiplied by the float (float)(1 / (sqrt(2) sigma)) of their channel */
+static void tofg_colour_scale(ptrdiff_t R, ptrdiff_t C, int block, const double *lap,
+                              double floor, double *sigma, float *col, float *cells,
+                              int workers)
+{
+    const ptrdiff_t N = R * C;
+    const double interior = (double)(R - 2 > 0 ? R - 2 : 0) * (double)(C - 2 > 0 ? C - 2 : 0);
+    float inv[3];
+    for (int ch = 0; ch < 3; ch++) {
+        const double s = interior > 0.0 ? sqrt(TOFG_PI / 2.0) / (6.0 * interior) * lap[ch]
+                                        : 0.0;
+        sigma[ch] = s != s ? s : s > floor ? s : floor;     /* NaN stays NaN */
+        inv[ch] = (float)(1.0 / (sqrt(2.0) * sigma[ch]));
+    }
+    const ptrdiff_t planes = cells ? 3 + (ptrdiff_t)block * block * 3 : 3, piece = 1 << 16;
+    const ptrdiff_t np = (N + piece - 1) / piece;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t k = 0; k < planes * np; k++) {
+        const ptrdiff_t pl = k / np, n0 = (k % np) * piece;
+        const ptrdiff_t n1 = N - n0 < piece ? N : n0 + piece;
+        float *restrict a = pl < 3 ? col + pl * N : cells + (pl - 3) * N;
+        const float f = inv[pl % 3];
+        for (ptrdiff_t n = n0; n < n1; n++) a[n] *= f;
+    }
+}
+
 /* ------------------------------------------------------------------ the 1-D passes */
 typedef struct {
     const float *zr, *zi, *v, *nin, *gr, *gi, *gv, *col;
@@ -1914,11 +1944,12 @@ int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, d
 
 int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
-                     int block, double scale, float *col, float *cells, double *lap, int workers)
+                     int block, double scale, float *col, float *cells, double *lap,
+                     double floor, double *sigma, int workers)
 {
 #define TOFG_COLOUR_(s, T)                                                                   \
     return RGBZ_CAT(tofg_colour, s)((const T *)guide, H, W, row_px, R, col_px, C, block,     \
-                                    scale, col, cells, lap, workers)
+                                    scale, col, cells, lap, floor, sigma, workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_COLOUR_, return RGBZ_EINVAL)
 #undef TOFG_COLOUR_
 }

@@ -25,10 +25,14 @@ int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, d
 
 /* The guide (H, W, 3) at the measurements: col (3, N) the mean over the block x block
    cells of each (times scale), cells (block^2, 3, N) each cell (NULL: not stored), and
-   lap (3,) the sums of |Immerkaer's Laplacian| of col over the grid's interior. */
+   lap (3,) the sums of |Immerkaer's Laplacian| of col over the grid's interior. With sigma
+   not NULL, also the guide's noise per channel, sigma = max(sqrt(pi / 2) / (6 (R - 2)(C - 2))
+   lap, floor) (floor where the interior is empty), into sigma (3,), and col and cells
+   multiplied by (float)(1 / (sqrt(2) sigma)) of their channel, in float. */
 int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
-                     int block, double scale, float *col, float *cells, double *lap, int workers);
+                     int block, double scale, float *col, float *cells, double *lap,
+                     double floor, double *sigma, int workers);
 
 /* One 1-D pass of the guided cross-bilateral mean along rows (axis 1) or columns (axis 0):
    data zr, zi (F, N), v (N,); guide phasors gr, gi (F, N) with variance gv (N,); colours

@@ -110,7 +110,8 @@ RGBZ_INLINE void RGBZ_CAT(tofg_colour_row, IS)(const IN_T *restrict guide, ptrdi
 static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
                                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px,
                                      ptrdiff_t C, int block, double scale, float *col,
-                                     float *cells, double *lap, int workers)
+                                     float *cells, double *lap, double floor, double *sigma,
+                                     int workers)
 {
     if (!guide || !row_px || !col_px || !col || !lap || R < 0 || C < 0 || block < 1
         || block > 2)
@@ -133,6 +134,7 @@ static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W
                                           cell_w, col, cells, 2);
     }
     tofg_laplacian(col, R, C, lap, workers);
+    if (sigma) tofg_colour_scale(R, C, block, lap, floor, sigma, col, cells, workers);
     return RGBZ_OK;
 }
 

@@ -794,7 +794,7 @@ cdef extern from "tof_guided.h" nogil:
     int rgbz_tofg_colour(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
                          const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
                          Py_ssize_t C, int block, double scale, float *col, float *cells,
-                         double *lap, int workers)
+                         double *lap, double floor, double *sigma, int workers)
     int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
                        const float *gr, const float *gi, const float *gv, const float *col,
                        const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C, int axis,
@@ -864,19 +864,25 @@ cdef float *_optf(float[:, :, ::1] a) noexcept:
 
 def tofg_colour(const frame_t[:, :, ::1] guide, const int64_t[::1] row_px,
                 const int64_t[::1] col_px, int block, double scale, float[:, ::1] col,
-                float[:, :, ::1] cells, double[::1] lap, int workers):
+                float[:, :, ::1] cells, double[::1] lap, int workers, double floor=0.0,
+                double[::1] sigma=None):
     """The guide (H, W, 3) at the measurements: col (3, N), cells (block^2, 3, N) or None,
-    lap (3,) the sums of |Immerkaer's Laplacian| of col."""
+    lap (3,) the sums of |Immerkaer's Laplacian| of col. With sigma (3,) given, also the
+    guide's noise (Immerkaer, at least floor) into sigma, and col and cells divided by
+    sqrt(2) sigma of their channel (times its float reciprocal)."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef float *cp = _optf(cells)
+    cdef double *sp = NULL if sigma is None else &sigma[0]
+    if sigma is not None and sigma.shape[0] != 3:
+        raise ValueError(f"sigma: expected 3 channels, got {sigma.shape[0]}")
     cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
     if R == 0 or C == 0:
         return
     with nogil:
         status = rgbz_tofg_colour(in_type, &guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
-                                  block, scale, &col[0, 0], cp, &lap[0], workers)
+                                  block, scale, &col[0, 0], cp, &lap[0], floor, sp, workers)
     _raise_for(status)
 
 

@@ -177,17 +177,11 @@ def guide_colours(g, scale, layout, nthreads):
     N, b = layout.N, layout.block
     col = np.empty((3, N), np.float32)
     cells = np.empty((b * b, 3, N), np.float32) if b > 1 else None
-    lap = np.zeros(3)
-    _kernels.tofg_colour(g, layout.rows, layout.cols, b, scale, col, cells, lap, nthreads)
-    R, C = layout.R, layout.C
-    interior = max(R - 2, 0) * max(C - 2, 0)
-    # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|
-    sigma = (math.sqrt(math.pi / 2.0) / (6.0 * interior) * lap if interior else np.zeros(3))
-    sigma = np.maximum(sigma, NOISE_FLOOR)
-    inv = (1.0 / (math.sqrt(2.0) * sigma)).astype(np.float32)[:, None]
-    col *= inv
-    if cells is not None:
-        cells *= inv[None]
+    lap, sigma = np.zeros(3), np.empty(3)
+    # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|, at least
+    # NOISE_FLOOR; the kernel divides col and cells by sqrt(2) sigma
+    _kernels.tofg_colour(g, layout.rows, layout.cols, b, scale, col, cells, lap, nthreads,
+                         NOISE_FLOOR, sigma)
     return col, cells, sigma
 
 
