@@ -990,6 +990,7 @@ typedef struct {
     ptrdiff_t rshift[2 * 64 + 1];
     double *or64, *oi64;
     float *ov, *on;
+    double *on64;
     const tofg_unwrap_out *uw;
     size_t nfloat, ndouble;       /* one thread's buffers */
 } tofg_slide;
@@ -1132,7 +1133,10 @@ static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const to
     const ptrdiff_t F = S->F, W = S->W, N = S->N, n = T->c1 - T->c0, o = s * S->C + T->c0;
     const ptrdiff_t x = S->pad + T->c0 - T->v0;
     memcpy(S->ov + o, b->tv + x, (size_t)n * sizeof(float));
-    memcpy(S->on + o, b->tn + x, (size_t)n * sizeof(float));
+    if (S->on64)
+        for (ptrdiff_t j = 0; j < n; j++) S->on64[o + j] = b->tn[x + j];
+    else
+        memcpy(S->on + o, b->tn + x, (size_t)n * sizeof(float));
     if (!S->uw) {
         for (ptrdiff_t f = 0; f < F; f++) {
             memcpy(S->or64 + f * N + o, b->t64 + f * W + x, (size_t)n * sizeof(double));
@@ -1216,10 +1220,10 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
-                      double *or64, double *oi64, float *ov, float *on,
+                      double *or64, double *oi64, float *ov, float *on, double *on64,
                       const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
 {
-    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
+    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || (!on && !on64)
         || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
         || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
         || !(inv2hc2 >= 0.0))
@@ -1231,10 +1235,21 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     const int nth = rgbz_threads(workers);
     const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
     const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
-    if (!qr.fast || !qc.fast)
-        return tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px, reach_r,
-                                   reach_c, radius_px, inv2h2, inv2hc2, or64, oi64, ov, on, uw,
-                                   strip, nth);
+    if (!qr.fast || !qc.fast) {
+        /* the strips write n_eff in float: into on, or a buffer widened into on64 */
+        float *o = on ? on : malloc((size_t)(R * C) * sizeof *o);
+        if (!o) return RGBZ_ENOMEM;
+        const int st = tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px,
+                                           reach_r, reach_c, radius_px, inv2h2, inv2hc2, or64,
+                                           oi64, ov, o, uw, strip, nth);
+        if (on64) {
+            const ptrdiff_t N = R * C;
+            RGBZ_PARALLEL_FOR
+            for (ptrdiff_t n = 0; n < N; n++) on64[n] = o[n];
+        }
+        if (!on) free(o);
+        return st;
+    }
     /* tiles of even widths; bands: `strip` rows each, else as many as make at least two
        tiles' bands a thread (a band recomputes the 4H rows of the first pass and 2H of the
        next two beyond its ends; a tile 4 Ac columns of the first two passes) */
@@ -1271,6 +1286,7 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     S.oi64 = oi64;
     S.ov = ov;
     S.on = on;
+    S.on64 = on64;
     S.uw = uw;
     (void)tofg_slide_buf_at(&S, NULL);
     const size_t nbytes = S.nfloat * sizeof(float) + S.ndouble * sizeof(double);

@@ -72,12 +72,13 @@ typedef struct {
    unwrapped as they are made (rgbz_tof_depth_iq, bit for bit) into uw's arrays instead of
    being stored (or64, oi64 unused); a non-finite mean gives RGBZ_EDOMAIN after every other
    one is computed. strip: the grid rows of output per band or strip (<= 0: one band per
-   thread, or strips of at most 128 rows); the outputs do not depend on it. */
+   thread, or strips of at most 128 rows); the outputs do not depend on it. on64 (N,), when
+   not NULL, takes the n_eff of on in double (on may then be NULL). */
 int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
-                      double *or64, double *oi64, float *ov, float *on,
+                      double *or64, double *oi64, float *ov, float *on, double *on64,
                       const tofg_unwrap_out *uw, ptrdiff_t strip, int workers);
 
 /* snr, sigma, reflectance and the validity bits (1 saturated, 2 low signal, 4 inconsistent,

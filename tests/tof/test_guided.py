@@ -208,6 +208,12 @@ def test_guided_denoise_is_the_four_passes(R, C, F, reach_r, reach_c, radius, un
                               hc, *got, workers, strip=strip)
         for a, b in zip(got, want):
             np.testing.assert_array_equal(a, b)
+        # n_eff in double instead (count), with or without the float plane
+        for neff in (None, np.empty(N, np.float32)):
+            count = np.empty(N)
+            _kernels.tofg_denoise(zr, zi, v, col, use, rows, cols, reach_r, reach_c, radius,
+                                  0.125, hc, *got[:3], neff, workers, strip=strip, count=count)
+            np.testing.assert_array_equal(count, want[3].astype(np.float64))
     ref_out = ref.guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c,
                                  radius, 0.125, hc)
     scale = np.abs(zr).max()
@@ -239,6 +245,12 @@ def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip):
                                  strip=strip)
     for a, b in zip(got + [var2, neff2], want + [var, neff]):
         np.testing.assert_array_equal(a, b)
+    count = np.empty(N)
+    assert _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, 7.5, *got,
+                                 strip=strip, count=count)
+    np.testing.assert_array_equal(count, neff.astype(np.float64))
+    with pytest.raises(TypeError, match="out_neff"):
+        _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, 7.5, *got)
     zr[0, 3] = np.nan
     assert not _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got)
 

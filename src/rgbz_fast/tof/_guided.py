@@ -279,20 +279,21 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # call, row by row through rings of a few rows: no intermediate plane of the whole frame;
     # without a calibration (whose cyclic-error correction acts on the phases) the means are
     # unwrapped there as they are made
-    var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
+    # n_eff comes in count's public dtype, float64, from the kernel
+    var, count = np.empty(N, np.float32), np.empty(N)
     args = (zr, zi, v, col, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
             inv2hc2)
     if cal is None:
         depth, residual, wraps = np.empty(N), np.empty(N), np.empty(N, np.int32)
         phase, amp = np.empty((F, N)), np.empty((F, N))
-        if not _kernels.tofg_denoise(*args, None, None, var, neff, nthreads,
+        if not _kernels.tofg_denoise(*args, None, None, var, None, nthreads,
                                      np.ascontiguousarray(f, np.float64),
                                      np.ascontiguousarray(w, np.float64), max_range, depth,
-                                     residual, wraps, phase, amp):
+                                     residual, wraps, phase, amp, count=count):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
     else:
         mr, mi = np.empty((F, N)), np.empty((F, N))
-        _kernels.tofg_denoise(*args, mr, mi, var, neff, nthreads)
+        _kernels.tofg_denoise(*args, mr, mi, var, None, nthreads, count=count)
         depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
     snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
     flags = np.empty(N, np.uint8)
@@ -309,7 +310,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
                     phase=back(phase), amplitude=back(amp), offset=back(offset),
                     snr=back(snr), sigma=back(sigma), reflectance=back(refl),
-                    count=back(neff.astype(np.float64)), valid=back(flags == 0),
+                    count=back(count), valid=back(flags == 0),
                     flags=back(flags), frequencies=np.asarray(tof.frequencies, np.float64).copy(),
                     sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
                     shape=tuple(tof.shape), measured=back(measured))
