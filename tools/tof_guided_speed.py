@@ -1,7 +1,7 @@
 """Speed of the colour-guided ToF ISP and of upsample_depth beside the unguided ISP and the fused
 kernel: the table "Speed of the guided ISP" of docs/reports/isp.md.
 
-    python tools/tof_guided_speed.py [ROUNDS] [--kernels SO | --package DIR]   # about a minute
+    python tools/tof_guided_speed.py [ROUNDS] [--kernels SO | --package DIR]   # a minute
 
 A 12 MP Mask1 frame (art from ../shared/data/rgbd scaled to 3000x4000, 3 M measurements,
 ``simulate(scene, "mask1", seed=1)``) and its guide ``ColourISP().run(frame)``; 2 threads;
@@ -11,9 +11,10 @@ less than the wall time, and its user part (the system part is mostly the kernel
 the fresh pages of the arrays a call returns, which swings with the machine's load).
 
 ``--kernels SO`` runs the extension module SO (another build's ``_kernels*.so``) in place of
-the installed one: the same tool, alternated with it in turn, pairs two builds. ``--package DIR`` runs the
-package ``DIR/rgbz_fast`` (another checkout's ``src/rgbz_fast`` with its build's extension
-modules and ``_build_config.py`` copied in) in place of the installed one: it pairs two
+the installed one: the same tool, alternated with it in turn, pairs two builds.
+``--package DIR`` runs the package ``DIR/rgbz_fast`` (another checkout's ``src/rgbz_fast``
+with its build's extension modules and ``_build_config.py`` copied in) in place of the
+installed one: it pairs two
 builds whose Python calls the kernels differently.
 """
 
