@@ -14,8 +14,7 @@ the fresh pages of the arrays a call returns, which swings with the machine's lo
 the installed one: the same tool, alternated with it in turn, pairs two builds.
 ``--package DIR`` runs the package ``DIR/rgbz_fast`` (another checkout's ``src/rgbz_fast``
 with its build's extension modules and ``_build_config.py`` copied in) in place of the
-installed one: it pairs two
-builds whose Python calls the kernels differently.
+installed one: it pairs two builds whose Python calls the kernels differently.
 """
 
 import importlib.util
