@@ -1017,9 +1017,9 @@ static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
     tofg_slide_buf b;
     float *f = base;
     b.block = base;
-    b.raw = f;
-    b.gate = b.raw + (2 * F + 1) * W;
-    b.ones = b.gate + W;
+    b.raw = f;                                   /* K rows of (2F + 1) W: the ring of raw rows */
+    b.gate = b.raw + (2 * F + 1) * KW;           /* K rows of W */
+    b.ones = b.gate + KW;
     b.E = b.ones + W;
     b.colr = b.E + ((size_t)S->Ac + 1) * W;
     b.r1 = b.colr + 3 * KW;
@@ -1041,32 +1041,41 @@ static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
     return b;
 }
 
+/* the raw row buffer (2F + 1 padded rows: zr, zi, v) and gate row of ring slot r mod K */
+static float *tofg_slide_rawrow(const tofg_slide *S, const tofg_slide_buf *b, ptrdiff_t r)
+{
+    return b->raw + (r % S->K) * (2 * S->F + 1) * S->W;
+}
+
 /* grid row r of the frame's raw phasors, variance and use in the tile's view into the padded
-   row buffers */
+   row buffers of its ring slot (the first row pass reads them at r, the second H rows later) */
 static void tofg_slide_raw(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
                            ptrdiff_t r)
 {
     const ptrdiff_t F = S->F, W = S->W, N = S->N, o = r * S->C + T->v0, pd = S->pad;
     const size_t n = (size_t)T->cv * sizeof(float);
+    float *raw = tofg_slide_rawrow(S, b, r), *gate = b->gate + (r % S->K) * W;
     for (ptrdiff_t f = 0; f < F; f++) {
-        memcpy(b->raw + f * W + pd, S->zr + f * N + o, n);
-        memcpy(b->raw + (F + f) * W + pd, S->zi + f * N + o, n);
+        memcpy(raw + f * W + pd, S->zr + f * N + o, n);
+        memcpy(raw + (F + f) * W + pd, S->zi + f * N + o, n);
     }
-    memcpy(b->raw + 2 * F * W + pd, S->v + o, n);
-    for (ptrdiff_t c = 0; c < T->cv; c++) b->gate[pd + c] = S->use[o + c] != 0 ? 1.0f : 0.0f;
+    memcpy(raw + 2 * F * W + pd, S->v + o, n);
+    for (ptrdiff_t c = 0; c < T->cv; c++) gate[pd + c] = S->use[o + c] != 0 ? 1.0f : 0.0f;
 }
 
-/* the pass arguments of a row pass of the padded raw row (its data) guided by gr (planes of
-   stride gs) into the ring at base `out` (planes of stride KW) */
+/* the pass arguments of a row pass of the padded raw row r (its data, in its ring slot)
+   guided by gr (planes of stride gs) into the ring at base `out` (planes of stride KW) */
 static tofg_pass_args tofg_slide_rowargs(const tofg_slide *S, const tofg_slide_buf *b,
-                                         const float *gr, const float *gi, const float *gv,
-                                         ptrdiff_t gs, const float *colrow, float *out)
+                                         ptrdiff_t r, const float *gr, const float *gi,
+                                         const float *gv, ptrdiff_t gs, const float *colrow,
+                                         float *out)
 {
     const ptrdiff_t F = S->F, W = S->W, KW = S->K * W;
+    const float *raw = tofg_slide_rawrow(S, b, r), *gate = b->gate + (r % S->K) * W;
     const tofg_pass_args p = {
-        b->raw, b->raw + F * W, b->raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
+        raw, raw + F * W, raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
         W, 1, S->col_px, S->reach_c, S->radius_px, S->ih, S->ic, out, out + F * KW, out +
-        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, b->gate, b->ones};
+        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, gate, b->ones};
     return p;
 }
 
@@ -1182,8 +1191,9 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
                 memcpy(b->colr + k * KW + so + pd, S->col + k * N + t * C + T->v0,
                        (size_t)T->cv * sizeof(float));
             tofg_slide_raw(S, b, T, t);
-            const tofg_pass_args p1 = tofg_slide_rowargs(S, b, b->raw, b->raw + F * W,
-                                                         b->raw + 2 * F * W, W, b->colr + so,
+            const float *raw = tofg_slide_rawrow(S, b, t);
+            const tofg_pass_args p1 = tofg_slide_rowargs(S, b, t, raw, raw + F * W,
+                                                         raw + 2 * F * W, W, b->colr + so,
                                                          b->r1 + so);
             tofg_slide_row(S, &p1, b->E, pd, nv);
             tofg_slide_gates(S, T, b->r1 + (2 * F + 1) * KW, b->g2, b->n2, t);
@@ -1193,8 +1203,9 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
         if (q >= lo2 && q < hi2) {
             tofg_slide_col(S, &p2, b->pr2, q, pd, nv);
             const ptrdiff_t so = (q % K) * W;
-            tofg_slide_raw(S, b, T, q);
-            const tofg_pass_args p3 = tofg_slide_rowargs(S, b, b->gd + so, b->gd + F * KW + so,
+            /* row q's raw data: in its ring slot since the first row pass (H rows ago) */
+            const tofg_pass_args p3 = tofg_slide_rowargs(S, b, q, b->gd + so,
+                                                         b->gd + F * KW + so,
                                                          b->gd + 2 * F * KW + so, KW,
                                                          b->colr + so, b->r3 + so);
             tofg_slide_row(S, &p3, b->E, xo, no);
