@@ -92,6 +92,157 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
     return colmap;
 }
 
+/* the cells of a chunk of zg_cell_row: its terms are computed into per-term rows of this
+   many cells (the vectorised loop's contiguous stores), then written into the cells' vectors */
+#define ZG_CHUNK 64
+
+#if LRN_VECTOR_EXT
+#if defined(__clang__)
+#define ZG_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
+    __builtin_shufflevector(a, b, i0, i1, i2, i3, i4, i5, i6, i7)
+#define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define ZG_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
+    __builtin_shuffle(a, b, (lrn_m8){i0, i1, i2, i3, i4, i5, i6, i7})
+#define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
+#endif
+
+/* the 8 floats at p as a vector */
+RGBZ_INLINE lrn_v8f zg_ld8(const float *p)
+{
+    lrn_v8f v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/* the terms 0 .. 7 of the 8 cells from column i of the rows tm[m] (row stride ZG_CHUNK) into
+   the first 8 floats of those cells' vectors (out, cell stride cvr floats): the 8 x 8 block
+   transposed in registers (the unpack, pair and half shuffles of lrn_lane_sums_f32) */
+RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
+{
+    /* each row loaded by itself: a loop of memcpy's into the array compiles, in the AVX2
+       clone, to a copy through the stack */
+    const float *p = tm + i;
+    const lrn_v8f r[8] = {zg_ld8(p), zg_ld8(p + ZG_CHUNK), zg_ld8(p + 2 * ZG_CHUNK),
+                          zg_ld8(p + 3 * ZG_CHUNK), zg_ld8(p + 4 * ZG_CHUNK),
+                          zg_ld8(p + 5 * ZG_CHUNK), zg_ld8(p + 6 * ZG_CHUNK),
+                          zg_ld8(p + 7 * ZG_CHUNK)};
+    lrn_v8f t[8], u[8];
+    for (int m = 0; m < 8; m += 2) {
+        t[m] = ZG_SHUF8(r[m], r[m + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+        t[m + 1] = ZG_SHUF8(r[m], r[m + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+    }
+    for (int m = 0; m < 8; m += 4) {
+        u[m] = ZG_SHUF8(t[m], t[m + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[m + 1] = ZG_SHUF8(t[m], t[m + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+        u[m + 2] = ZG_SHUF8(t[m + 1], t[m + 3], 0, 1, 8, 9, 4, 5, 12, 13);
+        u[m + 3] = ZG_SHUF8(t[m + 1], t[m + 3], 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+    for (int l = 0; l < 4; l++) {
+        const lrn_v8f lo = ZG_SHUF8(u[l], u[l + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+        const lrn_v8f hi = ZG_SHUF8(u[l], u[l + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+        memcpy(out + (ptrdiff_t)l * cvr, &lo, sizeof lo);
+        memcpy(out + (ptrdiff_t)(l + 4) * cvr, &hi, sizeof hi);
+    }
+}
+
+/* the same for doubles: 4 cells, their terms 0 .. 3 and 4 .. 7 as two 4 x 4 blocks */
+RGBZ_INLINE void zg_put8_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff_t cvr)
+{
+    for (int h = 0; h < 8; h += 4) {
+        const double *p = tm + (ptrdiff_t)h * ZG_CHUNK + i;
+        lrn_v4d r[4];
+        memcpy(&r[0], p, sizeof r[0]);
+        memcpy(&r[1], p + ZG_CHUNK, sizeof r[1]);
+        memcpy(&r[2], p + 2 * ZG_CHUNK, sizeof r[2]);
+        memcpy(&r[3], p + 3 * ZG_CHUNK, sizeof r[3]);
+        const lrn_v4d t0 = ZG_SHUF4(r[0], r[1], 0, 4, 2, 6), t1 = ZG_SHUF4(r[0], r[1], 1, 5, 3, 7);
+        const lrn_v4d t2 = ZG_SHUF4(r[2], r[3], 0, 4, 2, 6), t3 = ZG_SHUF4(r[2], r[3], 1, 5, 3, 7);
+        const lrn_v4d c0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), c1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
+        const lrn_v4d c2 = ZG_SHUF4(t0, t2, 2, 3, 6, 7), c3 = ZG_SHUF4(t1, t3, 2, 3, 6, 7);
+        memcpy(out + h, &c0, sizeof c0);
+        memcpy(out + cvr + h, &c1, sizeof c1);
+        memcpy(out + 2 * cvr + h, &c2, sizeof c2);
+        memcpy(out + 3 * cvr + h, &c3, sizeof c3);
+    }
+}
+
+/* the values c_8, -1, c_9, c_10 of the 8 cells from column i of the rows tm[8], tm[9],
+   tm[10] (row stride ZG_CHUNK) into the 4 floats after the first 8 of those cells' vectors
+   (out, cell stride cvr; the 4 floats after them stay 0): a 4 x 8 block transposed */
+RGBZ_INLINE void zg_putb_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
+{
+    lrn_v8f c8, c9, c10;
+    const lrn_v8f m1 = {-1, -1, -1, -1, -1, -1, -1, -1};
+    memcpy(&c8, tm + 8 * ZG_CHUNK + i, sizeof c8);
+    memcpy(&c9, tm + 9 * ZG_CHUNK + i, sizeof c9);
+    memcpy(&c10, tm + 10 * ZG_CHUNK + i, sizeof c10);
+    const lrn_v8f t0 = ZG_SHUF8(c8, m1, 0, 8, 1, 9, 4, 12, 5, 13);
+    const lrn_v8f t1 = ZG_SHUF8(c8, m1, 2, 10, 3, 11, 6, 14, 7, 15);
+    const lrn_v8f t2 = ZG_SHUF8(c9, c10, 0, 8, 1, 9, 4, 12, 5, 13);
+    const lrn_v8f t3 = ZG_SHUF8(c9, c10, 2, 10, 3, 11, 6, 14, 7, 15);
+    lrn_v8f u[4];   /* u[l]: cell l in the low half, cell l + 4 in the high half */
+    u[0] = ZG_SHUF8(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[1] = ZG_SHUF8(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+    u[2] = ZG_SHUF8(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[3] = ZG_SHUF8(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+    for (int l = 0; l < 4; l++) {
+        memcpy(out + (ptrdiff_t)l * cvr + 8, &u[l], 4 * sizeof(float));
+        memcpy(out + (ptrdiff_t)(l + 4) * cvr + 8, (const char *)&u[l] + 4 * sizeof(float),
+               4 * sizeof(float));
+    }
+}
+
+/* the same for doubles: 4 cells, each value 8 .. 11 of its vector */
+RGBZ_INLINE void zg_putb_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff_t cvr)
+{
+    lrn_v4d c8, c9, c10;
+    const lrn_v4d m1 = {-1, -1, -1, -1};
+    memcpy(&c8, tm + 8 * ZG_CHUNK + i, sizeof c8);
+    memcpy(&c9, tm + 9 * ZG_CHUNK + i, sizeof c9);
+    memcpy(&c10, tm + 10 * ZG_CHUNK + i, sizeof c10);
+    const lrn_v4d t0 = ZG_SHUF4(c8, m1, 0, 4, 2, 6), t1 = ZG_SHUF4(c8, m1, 1, 5, 3, 7);
+    const lrn_v4d t2 = ZG_SHUF4(c9, c10, 0, 4, 2, 6), t3 = ZG_SHUF4(c9, c10, 1, 5, 3, 7);
+    const lrn_v4d u0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), u1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
+    const lrn_v4d u2 = ZG_SHUF4(t0, t2, 2, 3, 6, 7), u3 = ZG_SHUF4(t1, t3, 2, 3, 6, 7);
+    memcpy(out + 8, &u0, sizeof u0);
+    memcpy(out + cvr + 8, &u1, sizeof u1);
+    memcpy(out + 2 * cvr + 8, &u2, sizeof u2);
+    memcpy(out + 3 * cvr + 8, &u3, sizeof u3);
+}
+
+/* a cell's second row c_8, -1, c_9, c_10, 0, ... -> c_9, c_10, 0, ... (the floats' lanes 6
+   and 7 are 0: the in-lane shift by two) */
+RGBZ_INLINE lrn_v8f zg_low2_f32(lrn_v8f c)
+{
+    const lrn_v8f z = {0};
+    return ZG_SHUF8(c, z, 2, 3, 8, 8, 6, 7, 8, 8);
+}
+
+RGBZ_INLINE lrn_v4d zg_low2_f64(lrn_v4d c)
+{
+    const lrn_v4d z = {0};
+    return ZG_SHUF4(c, z, 2, 3, 4, 4);
+}
+#undef ZG_SHUF8
+#undef ZG_SHUF4
+#endif
+
+/* not 0 when the n sites (sr[i], sc[i]) are not (r, c0 + px i), i = 0 .. n - 1: a row of
+   Z pixels in order */
+RGBZ_CLONES_512
+static int zg_sites_bad(const int64_t *restrict sr, const int64_t *restrict sc, ptrdiff_t n,
+                        int64_t r, int64_t c0, int px)
+{
+    int bad = 0;
+    int64_t c = c0;   /* an induction variable: no 64-bit products in the vectorised loop */
+    RGBZ_IVDEP for (ptrdiff_t i = 0; i < n; i++) {
+        bad |= (sr[i] != r) | (sc[i] != c);
+        c += px;
+    }
+    return bad;
+}
+
 /* a row of the guide from the taps in each precision (zg_guide_rows): in double the values
    of rgbz_zguided_guide (those of ToFTaps.amplitude), in float its float arithmetic */
 #define zg_taps_row_f64 rgbz_zguided_guide_row

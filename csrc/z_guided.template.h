@@ -143,8 +143,8 @@ RGBZ_INLINE void ZG_CAT(zg_prep, IS, RS)(const int n, const rgbz_zguided_filters
     for (int j = 0; j < n; j++) {
         const REAL *restrict c = cell + (ix0 + j < gx ? ix0 + j : gx - 1) * ZG_CVR;
         for (int m = 0; m < 9; m++) cj[m][j] = c[m];
-        cj[9][j] = c[8 + ZG_L];
-        cj[10][j] = c[9 + ZG_L];
+        cj[9][j] = c[10];
+        cj[10][j] = c[11];
     }
 }
 
@@ -210,7 +210,7 @@ static void ZG_CAT(zg_generic_block, IS, RS)(const IN_T *const *rowp, ptrdiff_t 
 #if LRN_VECTOR_EXT
 /* one site's accumulator (lrn_site_acc: its dense window against the weights w) plus its
    guide term, lane by lane (z_guided_cells.template.h's layout): base times the products
-   of the first two rows of gw and c, plus those of the third */
+   of the first two rows of gw and c, plus those of gw's third row and c_9, c_10 */
 RGBZ_INLINE void ZG_CAT(zg_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t x,
                                              const REAL *restrict w, int rows,
                                              const REAL *restrict gw, const REAL *restrict c,
@@ -227,8 +227,7 @@ RGBZ_INLINE void ZG_CAT(zg_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t 
     }
     a += t * base;
     memcpy(&gv, gw + 8 + L, sizeof gv);
-    memcpy(&cv, c + 8 + L, sizeof cv);
-    *acc = a + gv * cv;
+    *acc = a + gv * RGBZ_CAT(zg_low2, RS)(cv);
 }
 #endif
 
@@ -262,7 +261,7 @@ RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t 
             const ptrdiff_t ix = ix0 + j + i < gx ? ix0 + j + i : gx - 1;
             ZG_CAT(zg_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)(j + i) * px - R,
                                         wd + (ptrdiff_t)b[j + i] * rows * 8, rows,
-                                        gw + (ptrdiff_t)b[j + i] * ZG_CVR, cell + ix * ZG_CVR,
+                                        gw + (ptrdiff_t)b[j + i] * ZG_GVR, cell + ix * ZG_CVR,
                                         base[j + i], &acc[i]);
         }
         rv sum;
@@ -275,7 +274,7 @@ RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t 
         rv a;
         ZG_CAT(zg_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)j * px - R,
                                     wd + (ptrdiff_t)b[j] * rows * 8, rows,
-                                    gw + (ptrdiff_t)b[j] * ZG_CVR, cell + ix * ZG_CVR, base[j],
+                                    gw + (ptrdiff_t)b[j] * ZG_GVR, cell + ix * ZG_CVR, base[j],
                                     &a);
         REAL lanes[L];
         memcpy(lanes, &a, sizeof a);
@@ -346,7 +345,7 @@ static void ZG_CAT(zg_fast_block, IS, RS)(const REAL *const *realp, ptrdiff_t y,
     default: ZG_CAT(zg_base, IS, RS)(realp, x0, px, n, f, k, base);
     }
     const REAL *wd = f->RWD + (ptrdiff_t)k * nb * (2 * R + 1) * 8;
-    gw += (ptrdiff_t)k * nb * ZG_CVR;
+    gw += (ptrdiff_t)k * nb * ZG_GVR;
     switch (R) {      /* the window radii of the fast path, unrolled */
     case 1: ZG_CAT(zg_dot_rows, IS, RS)(realp, x0, px, n, wd, 1, b, gw, cell, ix0, f->gx, base,
                                         cj, f, k, res); break;

@@ -4,21 +4,24 @@
  * the guide weights in the layout of the fast path's dot product. Instantiated by
  * z_guided_entry.template.h (once per precision, with REAL and RS) before the frame loops.
  *
- * A cell's terms are three rows of REAL (the layout of the fast path, ZG_CVR values with
+ * A cell's terms are two rows of REAL (the layout of the fast path, ZG_CVR values with
  * L lanes of 32 bytes: 8 floats or 4 doubles): [0..7] the terms c_0 .. c_7, then L values
- * c_8, -1, 0, ..., then L values c_9, c_10, 0, ...; the guide weights of a bucket likewise
+ * c_8, -1, c_9, c_10, 0, ...; the guide weights of a bucket are three rows (ZG_GVR values)
  * g_0 .. g_7 | g_8, g_9, 0, ... | g_9, g_10, 0, ..., so that the guide term
  * base (sum_{m<9} g_m c_m - g_9) + g_9 c_9 + g_10 c_10 is the sum over the lanes of base
- * times the products of the first two rows plus those of the third.
+ * times the products of the first two rows plus the products of the third row and the
+ * second row's values 2 and 3 moved to lanes 0 and 1 (zg_low2_<RS>; the weights' zeros
+ * keep c_9 and c_10 out of the first sum).
  */
 #if !defined(REAL) || !defined(RS)
 #error "z_guided_cells.template.h: #define REAL and RS (the precision) first"
 #endif
 
 #define ZGC RGBZ_CAT
-/* the lanes of a 32-byte vector, and the values of a cell's (a bucket's) three rows */
+/* the lanes of a 32-byte vector, the values of a cell's two rows and of a bucket's three */
 #define ZG_L ((int)(32 / sizeof(REAL)))
-#define ZG_CVR (8 + 2 * ZG_L)
+#define ZG_CVR (8 + ZG_L)
+#define ZG_GVR (8 + 2 * ZG_L)
 #define ZG_TAPS_ROW RGBZ_CAT(zg_taps_row, RS)
 
 /* what a thread keeps of the cell terms: for each target colour t, the colour means of
@@ -50,8 +53,10 @@ static int ZGC(zg_cells_init, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filte
     const ptrdiff_t gx = f->gx;
     s->gx = gx;
     s->cg = malloc((size_t)9 * (size_t)(gx + 2) * sizeof *s->cg);
-    /* the cell vectors' padding lanes stay 0 */
+    /* the cell vectors' padding lanes stay 0, their constant -1 (value 9) is set here */
     s->cell = calloc((size_t)3 * ZG_CVR * (size_t)gx, sizeof *s->cell);
+    if (s->cell)
+        for (ptrdiff_t i = 0; i < 3 * gx; i++) s->cell[i * ZG_CVR + 9] = (REAL)-1;
     s->level = malloc((size_t)gx * sizeof *s->level);
     s->nv = malloc((size_t)7 * (size_t)(gx + 2) * sizeof *s->nv);
     for (int t = 0; t < 3; t++) {
@@ -112,10 +117,7 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
         const int64_t *restrict sr = f->site_rows + jc * gxc;
         const int64_t *restrict sc = f->site_cols + jc * gxc;
         const int64_t r = f->zr + (int64_t)py * jc;
-        int bad = 0;
-        RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gxc; ix++)
-            bad |= (sr[ix] != r) | (sc[ix] != f->zc + (int64_t)px * ix);
-        s->bad |= bad;
+        s->bad |= zg_sites_bad(sr, sc, gxc, r, f->zc, px);
         ZG_TAPS_ROW(f->taps_type, f->taps, f->taps_F, f->gyc * gxc, jc * gxc, gxc, f->ratio,
                     n + 1, v + 1);
         nc = gxc;
@@ -128,10 +130,13 @@ static void ZGC(zg_guide_rows, RS)(ZGC(zg_cells, RS) *s, const rgbz_zguided_filt
     ZGC(zg_pad, RS)(v, gx);
 }
 
-/* the cell terms of tile row iy: out[ix][.] (ZG_CVR values, the layout above) and the relative
-   noise nu[ix], from the padded rows N[3], V[3], C[3] (rows iy - 1 .. iy + 1, clamped;
-   index ix + 1 is cell ix), in REAL: every sum in the order of m (as cell_terms), the
-   means and the quotients as products with reciprocals */
+/* the cell terms of tile row iy: out[ix][.] (ZG_CVR values, the layout above, value 9 the
+   -1 zg_cells_init set) and the relative noise nu[ix], from the padded rows N[3], V[3], C[3]
+   (rows iy - 1 .. iy + 1, clamped; index ix + 1 is cell ix), in REAL: every sum in the order
+   of m (as cell_terms), the means and the quotients as products with reciprocals. By chunks
+   of ZG_CHUNK cells: the terms into per-term rows tm (contiguous stores), then into the cells'
+   vectors, transposed in registers (terms 0 .. 7: zg_put8_<RS>; c_8, -1, c_9, c_10:
+   zg_putb_<RS>) */
 RGBZ_CLONES_512
 static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
                                  const REAL *const *C, ptrdiff_t gx, REAL lam,
@@ -141,40 +146,57 @@ static void ZGC(zg_cell_row, RS)(const REAL *const *N, const REAL *const *V,
     const REAL *restrict v0 = V[0], *restrict v1 = V[1], *restrict v2 = V[2];
     const REAL *restrict c0 = C[0], *restrict c1 = C[1], *restrict c2 = C[2];
     const REAL ninth = (REAL)1 / (REAL)9, tiny = RGBZ_CAT(RGBZ_TINY, RS);
-    RGBZ_IVDEP for (ptrdiff_t ix = 0; ix < gx; ix++) {
-        const REAL n_[9] = {n0[ix], n0[ix + 1], n0[ix + 2], n1[ix], n1[ix + 1], n1[ix + 2],
-                            n2[ix], n2[ix + 1], n2[ix + 2]};
-        const REAL v_[9] = {v0[ix], v0[ix + 1], v0[ix + 2], v1[ix], v1[ix + 1], v1[ix + 2],
-                            v2[ix], v2[ix + 1], v2[ix + 2]};
-        const REAL c_[9] = {c0[ix], c0[ix + 1], c0[ix + 2], c1[ix], c1[ix + 1], c1[ix + 2],
-                            c2[ix], c2[ix + 1], c2[ix + 2]};
-        REAL nb = 0, vb = 0, cb = 0;
-        for (int m = 0; m < 9; m++) {
-            nb += n_[m];
-            vb += v_[m];
-            cb += c_[m];
+    REAL tm[RGBZ_ZG_FEATURES][ZG_CHUNK];
+    for (ptrdiff_t i0 = 0; i0 < gx; i0 += ZG_CHUNK) {
+        const int nc = (int)(gx - i0 < ZG_CHUNK ? gx - i0 : ZG_CHUNK);
+        RGBZ_IVDEP for (int i = 0; i < nc; i++) {
+            const ptrdiff_t ix = i0 + i;
+            const REAL n_[9] = {n0[ix], n0[ix + 1], n0[ix + 2], n1[ix], n1[ix + 1], n1[ix + 2],
+                                n2[ix], n2[ix + 1], n2[ix + 2]};
+            const REAL v_[9] = {v0[ix], v0[ix + 1], v0[ix + 2], v1[ix], v1[ix + 1], v1[ix + 2],
+                                v2[ix], v2[ix + 1], v2[ix + 2]};
+            const REAL c_[9] = {c0[ix], c0[ix + 1], c0[ix + 2], c1[ix], c1[ix + 1], c1[ix + 2],
+                                c2[ix], c2[ix + 1], c2[ix + 2]};
+            REAL nb = 0, vb = 0, cb = 0;
+            for (int m = 0; m < 9; m++) {
+                nb += n_[m];
+                vb += v_[m];
+                cb += c_[m];
+            }
+            nb *= ninth;
+            vb *= ninth;
+            cb *= ninth;
+            const int lit = nb > 0;
+            const REAL inv = (REAL)1 / (lit ? nb : (REAL)1);
+            REAL u[9], U = 0, ud = 0;
+            for (int m = 0; m < 9; m++) {
+                u[m] = lit ? n_[m] * inv - (REAL)1 : (REAL)0;
+                U += u[m] * u[m];
+            }
+            const REAL nu = lit ? vb * inv * inv : (REAL)1;
+            for (int m = 0; m < 9; m++) ud += u[m] * (c_[m] - cb);
+            const REAL share = U / (U + (REAL)9 * nu + tiny);
+            const REAL a = ud / (U + (REAL)9 * (lam + nu));
+            const REAL au = a * u[4];
+            for (int m = 0; m < 9; m++) tm[m][i] = share * u[m];
+            tm[9][i] = cb + au;
+            tm[10][i] = au - (c_[4] - cb);
+            nu_out[ix] = nu;
         }
-        nb *= ninth;
-        vb *= ninth;
-        cb *= ninth;
-        const int lit = nb > 0;
-        const REAL inv = (REAL)1 / (lit ? nb : (REAL)1);
-        REAL u[9], U = 0, ud = 0;
-        for (int m = 0; m < 9; m++) {
-            u[m] = lit ? n_[m] * inv - (REAL)1 : (REAL)0;
-            U += u[m] * u[m];
+        REAL *restrict o = out + i0 * ZG_CVR;
+        int i = 0;
+#if LRN_VECTOR_EXT
+        for (; i + ZG_L <= nc; i += ZG_L) {
+            RGBZ_CAT(zg_put8, RS)(&tm[0][0], i, o + i * ZG_CVR, ZG_CVR);
+            RGBZ_CAT(zg_putb, RS)(&tm[0][0], i, o + i * ZG_CVR, ZG_CVR);
         }
-        const REAL nu = lit ? vb * inv * inv : (REAL)1;
-        for (int m = 0; m < 9; m++) ud += u[m] * (c_[m] - cb);
-        const REAL share = U / (U + (REAL)9 * nu + tiny);
-        const REAL a = ud / (U + (REAL)9 * (lam + nu));
-        const REAL au = a * u[4];
-        REAL *restrict o = out + ix * ZG_CVR;
-        for (int m = 0; m < 9; m++) o[m] = share * u[m];
-        o[9] = (REAL)-1;
-        o[8 + ZG_L] = cb + au;
-        o[9 + ZG_L] = au - (c_[4] - cb);
-        nu_out[ix] = nu;
+#endif
+        for (; i < nc; i++) {
+            for (int m = 0; m < 8; m++) o[i * ZG_CVR + m] = tm[m][i];
+            o[i * ZG_CVR + 8] = tm[8][i];
+            o[i * ZG_CVR + 10] = tm[9][i];
+            o[i * ZG_CVR + 11] = tm[10][i];
+        }
     }
 }
 
@@ -189,17 +211,17 @@ static void ZGC(zg_level_row, RS)(const REAL *restrict nu, ptrdiff_t gx, const d
     }
 }
 
-/* the guide weights g[k][b][ZG_CVR] of every phase and bucket in the layout above, from
+/* the guide weights g[k][b][ZG_GVR] of every phase and bucket in the layout above, from
    f->g_<RS> (malloc'ed; NULL: no memory) */
 static REAL *ZGC(zg_guide_weights, RS)(const rgbz_zguided_filters *f)
 {
     const ptrdiff_t n = (ptrdiff_t)f->hash->n_phases * f->n_levels * f->hash->n_buckets;
     const REAL *g = f->RGBZ_CAT(g, RS);
-    REAL *out = calloc((size_t)n * ZG_CVR, sizeof *out);
+    REAL *out = calloc((size_t)n * ZG_GVR, sizeof *out);
     if (out)
         for (ptrdiff_t i = 0; i < n; i++) {
             const REAL *gi = g + i * RGBZ_ZG_FEATURES;
-            REAL *o = out + i * ZG_CVR;
+            REAL *o = out + i * ZG_GVR;
             for (int m = 0; m < 10; m++) o[m] = gi[m];
             o[8 + ZG_L] = gi[9];
             o[9 + ZG_L] = gi[10];

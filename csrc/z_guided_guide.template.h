@@ -34,22 +34,29 @@ RGBZ_INLINE void RGBZ_CAT(zgg_amplitudes, IS)(const IN_T *restrict taps, ptrdiff
 }
 
 /* the ratios A_f / mean of the sample's sites i step, i in [i0, i1), into samp[f][i] (NaN
-   where the site is not lit, mean <= 0), in the arithmetic of zgg_amplitudes */
+   where the site is not lit, mean <= 0), in the arithmetic of zgg_amplitudes: first the
+   amplitudes A_f into samp[f] frequency by frequency (each of the four loads of the loop a
+   constant stride through its plane of taps, which the hardware prefetches; the sites' taps
+   lie step apart, a cache line each), then the ratios */
 static void RGBZ_CAT(zgg_sample, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N,
                                      ptrdiff_t step, ptrdiff_t i0, ptrdiff_t i1,
                                      double *const *samp)
 {
-    for (ptrdiff_t i = i0; i < i1; i++) {
-        const ptrdiff_t n = i * step;
-        double a[RGBZ_TOF_MAX_FREQS], mean = 0.0;
-        for (ptrdiff_t f = 0; f < F; f++) {
-            const IN_T *t = taps + 4 * f * N + n;
-            const double I = (double)t[0] - (double)t[2 * N], Q = (double)t[3 * N] - (double)t[N];
-            a[f] = 0.5 * sqrt(I * I + Q * Q);
-            mean = f ? mean + a[f] : a[f];
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const IN_T *restrict t0 = taps + 4 * f * N, *restrict t1 = t0 + N;
+        const IN_T *restrict t2 = t0 + 2 * N, *restrict t3 = t0 + 3 * N;
+        double *restrict a = samp[f];
+        for (ptrdiff_t i = i0; i < i1; i++) {
+            const ptrdiff_t n = i * step;
+            const double I = (double)t0[n] - (double)t2[n], Q = (double)t3[n] - (double)t1[n];
+            a[i] = 0.5 * sqrt(I * I + Q * Q);
         }
+    }
+    for (ptrdiff_t i = i0; i < i1; i++) {
+        double mean = samp[0][i];
+        for (ptrdiff_t f = 1; f < F; f++) mean = mean + samp[f][i];
         mean /= (double)F;
-        for (ptrdiff_t f = 0; f < F; f++) samp[f][i] = mean > 0 ? a[f] / mean : NAN;
+        for (ptrdiff_t f = 0; f < F; f++) samp[f][i] = mean > 0 ? samp[f][i] / mean : NAN;
     }
 }
 

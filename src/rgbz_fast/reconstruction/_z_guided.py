@@ -100,11 +100,16 @@ def _grid_shape(shape, pattern):
 
 def _complete(shape, pattern):
     """Bool grid: the Z pixel of the tile lies wholly inside the frame (a measurement exists)."""
+    rows, cols = _complete_lines(shape, pattern)
+    return rows[:, None] & cols[None, :]
+
+
+def _complete_lines(shape, pattern):
+    """The grid's rows and columns whose Z pixels lie wholly inside the frame (bool vectors):
+    the complete cells are their crossings."""
     (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
     gy, gx = _grid_shape(shape, pattern)
-    rows = zr + P * np.arange(gy) + b - 1 < shape[0]
-    cols = zc + Q * np.arange(gx) + b - 1 < shape[1]
-    return rows[:, None] & cols[None, :]
+    return (zr + P * np.arange(gy) + b - 1 < shape[0], zc + Q * np.arange(gx) + b - 1 < shape[1])
 
 
 def _fill_cut(grid, complete):
@@ -183,7 +188,7 @@ def tof_taps(shape, pattern, tof, name, call):
     pattern = get_pattern(pattern)
     (P, Q), (zr, zc, b) = pattern.period, z_layout(pattern)
     gy, gx = _grid_shape(shape, pattern)
-    complete = _complete(shape, pattern)
+    complete_rows, complete_cols = _complete_lines(shape, pattern)
     if tof is None:
         raise ValueError(f"{name}: method 'z_guided' is guided by the NIR amplitude the Z pixels "
                          "measured, and this frame carries no ToF taps: pass nir=, a float "
@@ -194,12 +199,12 @@ def tof_taps(shape, pattern, tof, name, call):
     if tof.block != b:
         raise ValueError(f"frame.tof: taps of {tof.block}x{tof.block} Z pixels, pattern "
                          f"{pattern.name!r} has {b}x{b} Z pixels")
-    if not complete.any():
+    if not (complete_rows.any() and complete_cols.any()):
         raise ValueError("shape: the frame holds no complete Z pixel")
     if tof.taps.shape[0] > _kernels.TOF_MAX_FREQS:
         raise ValueError(f"frame.tof: the guide reads at most {_kernels.TOF_MAX_FREQS} "
                          f"frequencies, the taps hold {tof.taps.shape[0]}")
-    gyc, gxc = int(complete.any(axis=1).sum()), int(complete.any(axis=0).sum())
+    gyc, gxc = int(complete_rows.sum()), int(complete_cols.sum())
     taps = tof.taps if tof.taps.dtype in (np.uint8, np.uint16, np.float32, np.float64) else \
         tof.taps.astype(np.float64)
     taps = np.ascontiguousarray(taps)
@@ -211,6 +216,7 @@ def tof_taps(shape, pattern, tof, name, call):
     ix, rx = np.divmod(cols - zc, Q)
     at = iy * gx + ix
     order = np.argsort(at, kind="stable")
+    complete = complete_rows[:, None] & complete_cols[None, :]
     if np.any(ry) or np.any(rx) or not np.array_equal(at[order], np.flatnonzero(complete)):
         raise ValueError(f"frame.tof: its sites are not the Z pixels of pattern "
                          f"{pattern.name!r} in a {shape[0]}x{shape[1]} frame")
