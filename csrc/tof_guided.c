@@ -69,29 +69,105 @@ RGBZ_CLONES_512 static void tofg_lap_row(const float *restrict p, ptrdiff_t r, p
     }
 }
 
+/* the interior rows [r0, r0 + nr) (nr <= TOFG_LAPR) of a plane: each row's sum of
+   |L * plane| over its interior columns, its terms in column order, into rs; the rows' sums
+   advance together (independent chains of additions, where one row's chain waits on the
+   latency of every addition) */
+#define TOFG_LAPR 8
+RGBZ_CLONES_512 static void tofg_lap_rows(const float *p, ptrdiff_t r0, int nr, ptrdiff_t C,
+                                          double *rs)
+{
+    double l[TOFG_LAPR][256], acc[TOFG_LAPR];
+    for (int k = 0; k < TOFG_LAPR; k++) acc[k] = 0.0;
+    for (int k = nr; k < TOFG_LAPR; k++)
+        for (int x = 0; x < 256; x++) l[k][x] = 0.0;
+    for (ptrdiff_t x0 = 1; x0 < C - 1; x0 += 256) {
+        const ptrdiff_t x1 = C - 1 - x0 < 256 ? C - 1 : x0 + 256;
+        for (int k = 0; k < nr; k++) tofg_lap_row(p, r0 + k, C, x0, x1, l[k]);
+        for (ptrdiff_t x = 0; x < x1 - x0; x++)
+            for (int k = 0; k < TOFG_LAPR; k++) acc[k] += l[k][x];
+    }
+    for (int k = 0; k < nr; k++) rs[k] = acc[k];
+}
+
 /* sum over the interior of |L * plane| for L = [1 -2 1; -2 4 -2; 1 -2 1] (Immerkaer 1996),
-   per plane of col (3, R, C), in double, each row's terms in column order */
+   per plane of col (3, R, C), in double: each row's terms in column order, then the rows of
+   each of nth consecutive shares (the shares of a static OpenMP schedule of the rows over
+   nth threads) in row order, then the shares' sums in order onto 0 */
 static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *lap, int workers)
 {
-    const ptrdiff_t N = R * C;
+    const ptrdiff_t N = R * C, n = R - 2 > 0 ? R - 2 : 0;
     const int nth = rgbz_threads(workers);
-    (void)nth;
-    for (int ch = 0; ch < 3; ch++) {
-        const float *p = col + ch * N;
-        double total = 0.0;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) reduction(+:total) num_threads(nth)
-#endif
-        for (ptrdiff_t r = 1; r < R - 1; r++) {
-            double row = 0.0, l[256];
-            for (ptrdiff_t x0 = 1; x0 < C - 1; x0 += 256) {
-                const ptrdiff_t x1 = C - 1 - x0 < 256 ? C - 1 : x0 + 256;
-                tofg_lap_row(p, r, C, x0, x1, l);
-                for (ptrdiff_t x = 0; x < x1 - x0; x++) row += l[x];
+    double *rs = malloc((size_t)(3 * n > 0 ? 3 * n : 1) * sizeof *rs);
+    if (!rs) {                                  /* the rows one at a time, no buffer */
+        for (int ch = 0; ch < 3; ch++) {
+            double total = 0.0;
+            for (ptrdiff_t i = 0; i < nth; i++) {
+                const ptrdiff_t q = n / nth, rem = n % nth;
+                const ptrdiff_t a = i * q + (i < rem ? i : rem), b = a + q + (i < rem);
+                double part = 0.0;
+                for (ptrdiff_t r = a; r < b; r++) {
+                    double one;
+                    tofg_lap_rows(col + ch * N, r + 1, 1, C, &one);
+                    part += one;
+                }
+                total += part;
             }
-            total += row;
+            lap[ch] = total;
+        }
+        return;
+    }
+    const ptrdiff_t ng = (n + TOFG_LAPR - 1) / TOFG_LAPR;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nth)
+#endif
+    for (ptrdiff_t g = 0; g < 3 * ng; g++) {
+        const int ch = (int)(g / ng);
+        const ptrdiff_t r = (g % ng) * TOFG_LAPR;
+        const int nr = n - r < TOFG_LAPR ? (int)(n - r) : TOFG_LAPR;
+        tofg_lap_rows(col + ch * N, r + 1, nr, C, rs + ch * n + r);
+    }
+    for (int ch = 0; ch < 3; ch++) {
+        double total = 0.0;
+        for (ptrdiff_t i = 0; i < nth; i++) {
+            const ptrdiff_t q = n / nth, rem = n % nth;
+            const ptrdiff_t a = i * q + (i < rem ? i : rem), b = a + q + (i < rem);
+            double part = 0.0;
+            for (ptrdiff_t r = a; r < b; r++) part += rs[ch * n + r];
+            total += part;
         }
         lap[ch] = total;
+    }
+    free(rs);
+}
+
+/* The guide's noise sigma (3,) from lap (Immerkaer: sqrt(pi / 2) / (6 (R - 2)(C - 2)) lap,
+   at least floor; floor without an interior) and col (3, N), cells (block^2, 3, N; NULL: none)
+   multiplied by the float (float)(1 / (sqrt(2) sigma)) of their channel */
+static void tofg_colour_scale(ptrdiff_t R, ptrdiff_t C, int block, const double *lap,
+                              double floor, double *sigma, float *col, float *cells,
+                              int workers)
+{
+    const ptrdiff_t N = R * C;
+    const double interior = (double)(R - 2 > 0 ? R - 2 : 0) * (double)(C - 2 > 0 ? C - 2 : 0);
+    float inv[3];
+    for (int ch = 0; ch < 3; ch++) {
+        const double s = interior > 0.0 ? sqrt(TOFG_PI / 2.0) / (6.0 * interior) * lap[ch]
+                                        : 0.0;
+        sigma[ch] = s != s ? s : s > floor ? s : floor;     /* NaN stays NaN */
+        inv[ch] = (float)(1.0 / (sqrt(2.0) * sigma[ch]));
+    }
+    const ptrdiff_t planes = cells ? 3 + (ptrdiff_t)block * block * 3 : 3, piece = 1 << 16;
+    const ptrdiff_t np = (N + piece - 1) / piece;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t k = 0; k < planes * np; k++) {
+        const ptrdiff_t pl = k / np, n0 = (k % np) * piece;
+        const ptrdiff_t n1 = N - n0 < piece ? N : n0 + piece;
+        float *restrict a = pl < 3 ? col + pl * N : cells + (pl - 3) * N;
+        const float f = inv[pl % 3];
+        for (ptrdiff_t n = n0; n < n1; n++) a[n] *= f;
     }
 }
 
@@ -247,33 +323,68 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
 #define TOFG_BW 16
 #define TOFG_UNROLL _Pragma("GCC unroll 4")
 
-/* The outputs of one block of TOFG_BW measurements from its sums: the weighted mean
-   phasors, the variance of the mean (HUGE_VALF without weight) and the output noise. */
-RGBZ_INLINE void tofg_store(
-    const tofg_pass_args *p, ptrdiff_t m0, float nr[][TOFG_BW], float ni[][TOFG_BW],
-    const float *den, const float *w2v, const float *w2n, const int NF)
+/* blocks whose sums one call of tofg_store_span turns into outputs */
+#define TOFG_CHUNK 32
+#define TOFG_SPAN (TOFG_CHUNK * TOFG_BW)
+
+/* The sums of one block into the span buffer s (planes of TOFG_SPAN floats, the block's
+   lanes from column j0): the phasors nr, ni (F planes each), then den, w2v, w2n. */
+RGBZ_INLINE void tofg_sums_out(float *restrict s, ptrdiff_t j0, float nr[][TOFG_BW],
+                               float ni[][TOFG_BW], const float *den, const float *w2v,
+                               const float *w2n, const int NF)
 {
-    const ptrdiff_t OS = p->os;
-    for (int j = 0; j < TOFG_BW; j++) {
-        const ptrdiff_t m = m0 + j - p->ooff;
+    TOFG_UNROLL
+    for (int f = 0; f < NF; f++) {
+        for (int j = 0; j < TOFG_BW; j++) s[f * TOFG_SPAN + j0 + j] = nr[f][j];
+        for (int j = 0; j < TOFG_BW; j++) s[(NF + f) * TOFG_SPAN + j0 + j] = ni[f][j];
+    }
+    for (int j = 0; j < TOFG_BW; j++) s[2 * NF * TOFG_SPAN + j0 + j] = den[j];
+    for (int j = 0; j < TOFG_BW; j++) s[(2 * NF + 1) * TOFG_SPAN + j0 + j] = w2v[j];
+    for (int j = 0; j < TOFG_BW; j++) s[(2 * NF + 2) * TOFG_SPAN + j0 + j] = w2n[j];
+}
+
+/* The outputs of n <= TOFG_SPAN measurements from m0 from their sums in s (tofg_sums_out):
+   the weighted mean phasors, the variance of the mean (HUGE_VALF without weight) and the
+   output noise; loops over the span that vectorise, the same operations per measurement as
+   the generic row's */
+RGBZ_INLINE void tofg_store_span(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n,
+                                 const float *restrict s, const int NF)
+{
+    const ptrdiff_t OS = p->os, mb = m0 - p->ooff;
+    const float *restrict den = s + 2 * NF * TOFG_SPAN, *restrict w2v = den + TOFG_SPAN;
+    const float *restrict w2n = w2v + TOFG_SPAN;
+    float inv[TOFG_SPAN];
+    for (ptrdiff_t j = 0; j < n; j++) {
         const int ok = den[j] > 0.0f;
-        const float inv = ok ? 1.0f / den[j] : 0.0f;
-        TOFG_UNROLL
-        for (int f = 0; f < NF; f++) {
-            const float mr = nr[f][j] * inv, mi = ni[f][j] * inv;
-            if (p->or64) {
-                p->or64[f * OS + m] = mr;
-                p->oi64[f * OS + m] = mi;
-            } else {
-                p->or_[f * OS + m] = mr;
-                p->oi[f * OS + m] = mi;
+        inv[j] = ok ? 1.0f / den[j] : 0.0f;
+    }
+    TOFG_UNROLL
+    for (int f = 0; f < NF; f++) {
+        const float *restrict sr = s + f * TOFG_SPAN, *restrict si = s + (NF + f) * TOFG_SPAN;
+        if (p->or64) {
+            double *restrict o_r = p->or64 + f * OS + mb, *restrict o_i = p->oi64 + f * OS + mb;
+            for (ptrdiff_t j = 0; j < n; j++) {
+                o_r[j] = sr[j] * inv[j];
+                o_i[j] = si[j] * inv[j];
+            }
+        } else {
+            float *restrict o_r = p->or_ + f * OS + mb, *restrict o_i = p->oi + f * OS + mb;
+            for (ptrdiff_t j = 0; j < n; j++) {
+                o_r[j] = sr[j] * inv[j];
+                o_i[j] = si[j] * inv[j];
             }
         }
-        p->ov[m] = ok ? w2v[j] * (inv * inv) : HUGE_VALF;
-        if (p->nin)
-            p->on[m] = ok && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv * inv)) : 0.0f;
-        else
-            p->on[m] = ok && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
+    }
+    float *restrict ov = p->ov + mb, *restrict on = p->on + mb;
+    for (ptrdiff_t j = 0; j < n; j++)
+        ov[j] = den[j] > 0.0f ? w2v[j] * (inv[j] * inv[j]) : HUGE_VALF;
+    if (p->nin) {
+        for (ptrdiff_t j = 0; j < n; j++)
+            on[j] = den[j] > 0.0f && w2n[j] > 0.0f ? 1.0f / (w2n[j] * (inv[j] * inv[j]))
+                                                    : 0.0f;
+    } else {
+        for (ptrdiff_t j = 0; j < n; j++)
+            on[j] = den[j] > 0.0f && w2n[j] > 0.0f ? den[j] * den[j] / w2n[j] : 0.0f;
     }
 }
 
@@ -285,7 +396,7 @@ RGBZ_INLINE void tofg_store(
    for the output m0 + j at ew[t][j] (tofg_pairs), or NULL: computed here. */
 RGBZ_INLINE void tofg_block(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
-    int ntaps, const int NF)
+    int ntaps, float *sums, ptrdiff_t j0, const int NF)
 {
     const ptrdiff_t ZS = p->zs, GS = p->gs, N = p->cs;
     const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
@@ -352,7 +463,7 @@ RGBZ_INLINE void tofg_block(
             w2n[j] += ww * rn[j];
         }
     }
-    tofg_store(p, m0, nr, ni, den, w2v, w2n, NF);
+    tofg_sums_out(sums, j0, nr, ni, den, w2v, w2n, NF);
 }
 
 
@@ -361,7 +472,7 @@ RGBZ_INLINE void tofg_block(
    so that the loops vectorise */
 RGBZ_INLINE void tofg_block_e(
     const tofg_pass_args *p, ptrdiff_t m0, const ptrdiff_t *shift, const float *const *ew,
-    int ntaps, const int NF)
+    int ntaps, float *sums, ptrdiff_t j0, const int NF)
 {
     const ptrdiff_t ZS = p->zs;
     float nr[4][TOFG_BW], ni[4][TOFG_BW], den[TOFG_BW], w2v[TOFG_BW], w2n[TOFG_BW];
@@ -387,7 +498,7 @@ RGBZ_INLINE void tofg_block_e(
             w2n[j] += ww * rq[j];
         }
     }
-    tofg_store(p, m0, nr, ni, den, w2v, w2n, NF);
+    tofg_sums_out(sums, j0, nr, ni, den, w2v, w2n, NF);
 }
 
 /* The weight factor of the pairs (m0 + k, n0 + k), k < cnt, into e[k]: the expression of
@@ -435,28 +546,46 @@ RGBZ_CLONES_512 static void tofg_pairs(const tofg_pass_args *p, ptrdiff_t m0, pt
     }
 }
 
+/* tofg_store_span for the frame's frequency count */
+RGBZ_CLONES_512 static void tofg_store_spans(const tofg_pass_args *p, ptrdiff_t m0,
+                                             ptrdiff_t n, const float *s)
+{
+    switch (p->F) {
+    case 1: tofg_store_span(p, m0, n, s, 1); break;
+    case 2: tofg_store_span(p, m0, n, s, 2); break;
+    case 3: tofg_store_span(p, m0, n, s, 3); break;
+    default: tofg_store_span(p, m0, n, s, 4); break;
+    }
+}
+
+/* the blocks, TOFG_CHUNK at a time: their sums into a buffer, then their outputs */
 RGBZ_CLONES_512 static void tofg_blocks(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t nblk,
                                         const ptrdiff_t *shift, const float **ew, int ntaps)
 {
-    for (ptrdiff_t b = 0; b < nblk; b++) {
-        const ptrdiff_t m = m0 + b * TOFG_BW;
-        if (ew && p->gate) {
-            switch (p->F) {
-            case 1: tofg_block_e(p, m, shift, ew, ntaps, 1); break;
-            case 2: tofg_block_e(p, m, shift, ew, ntaps, 2); break;
-            case 3: tofg_block_e(p, m, shift, ew, ntaps, 3); break;
-            default: tofg_block_e(p, m, shift, ew, ntaps, 4); break;
+    float sums[(2 * 4 + 3) * TOFG_SPAN];
+    for (ptrdiff_t b0 = 0; b0 < nblk; b0 += TOFG_CHUNK) {
+        const ptrdiff_t nb = nblk - b0 < TOFG_CHUNK ? nblk - b0 : TOFG_CHUNK;
+        for (ptrdiff_t b = 0; b < nb; b++) {
+            const ptrdiff_t m = m0 + (b0 + b) * TOFG_BW, j0 = b * TOFG_BW;
+            if (ew && p->gate) {
+                switch (p->F) {
+                case 1: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 1); break;
+                case 2: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 2); break;
+                case 3: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 3); break;
+                default: tofg_block_e(p, m, shift, ew, ntaps, sums, j0, 4); break;
+                }
+            } else {
+                switch (p->F) {
+                case 1: tofg_block(p, m, shift, ew, ntaps, sums, j0, 1); break;
+                case 2: tofg_block(p, m, shift, ew, ntaps, sums, j0, 2); break;
+                case 3: tofg_block(p, m, shift, ew, ntaps, sums, j0, 3); break;
+                default: tofg_block(p, m, shift, ew, ntaps, sums, j0, 4); break;
+                }
             }
-        } else {
-            switch (p->F) {
-            case 1: tofg_block(p, m, shift, ew, ntaps, 1); break;
-            case 2: tofg_block(p, m, shift, ew, ntaps, 2); break;
-            case 3: tofg_block(p, m, shift, ew, ntaps, 3); break;
-            default: tofg_block(p, m, shift, ew, ntaps, 4); break;
-            }
+            if (ew)
+                for (int t = 0; t < ntaps; t++) ew[t] += TOFG_BW;
         }
-        if (ew)
-            for (int t = 0; t < ntaps; t++) ew[t] += TOFG_BW;
+        tofg_store_spans(p, m0 + b0 * TOFG_BW, nb * TOFG_BW, sums);
     }
 }
 
@@ -861,6 +990,7 @@ typedef struct {
     ptrdiff_t rshift[2 * 64 + 1];
     double *or64, *oi64;
     float *ov, *on;
+    double *on64;
     const tofg_unwrap_out *uw;
     size_t nfloat, ndouble;       /* one thread's buffers */
 } tofg_slide;
@@ -887,9 +1017,9 @@ static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
     tofg_slide_buf b;
     float *f = base;
     b.block = base;
-    b.raw = f;
-    b.gate = b.raw + (2 * F + 1) * W;
-    b.ones = b.gate + W;
+    b.raw = f;                                   /* K rows of (2F + 1) W: the ring of raw rows */
+    b.gate = b.raw + (2 * F + 1) * KW;           /* K rows of W */
+    b.ones = b.gate + KW;
     b.E = b.ones + W;
     b.colr = b.E + ((size_t)S->Ac + 1) * W;
     b.r1 = b.colr + 3 * KW;
@@ -911,32 +1041,41 @@ static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
     return b;
 }
 
+/* the raw row buffer (2F + 1 padded rows: zr, zi, v) and gate row of ring slot r mod K */
+static float *tofg_slide_rawrow(const tofg_slide *S, const tofg_slide_buf *b, ptrdiff_t r)
+{
+    return b->raw + (r % S->K) * (2 * S->F + 1) * S->W;
+}
+
 /* grid row r of the frame's raw phasors, variance and use in the tile's view into the padded
-   row buffers */
+   row buffers of its ring slot (the first row pass reads them at r, the second H rows later) */
 static void tofg_slide_raw(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
                            ptrdiff_t r)
 {
     const ptrdiff_t F = S->F, W = S->W, N = S->N, o = r * S->C + T->v0, pd = S->pad;
     const size_t n = (size_t)T->cv * sizeof(float);
+    float *raw = tofg_slide_rawrow(S, b, r), *gate = b->gate + (r % S->K) * W;
     for (ptrdiff_t f = 0; f < F; f++) {
-        memcpy(b->raw + f * W + pd, S->zr + f * N + o, n);
-        memcpy(b->raw + (F + f) * W + pd, S->zi + f * N + o, n);
+        memcpy(raw + f * W + pd, S->zr + f * N + o, n);
+        memcpy(raw + (F + f) * W + pd, S->zi + f * N + o, n);
     }
-    memcpy(b->raw + 2 * F * W + pd, S->v + o, n);
-    for (ptrdiff_t c = 0; c < T->cv; c++) b->gate[pd + c] = S->use[o + c] != 0 ? 1.0f : 0.0f;
+    memcpy(raw + 2 * F * W + pd, S->v + o, n);
+    for (ptrdiff_t c = 0; c < T->cv; c++) gate[pd + c] = S->use[o + c] != 0 ? 1.0f : 0.0f;
 }
 
-/* the pass arguments of a row pass of the padded raw row (its data) guided by gr (planes of
-   stride gs) into the ring at base `out` (planes of stride KW) */
+/* the pass arguments of a row pass of the padded raw row r (its data, in its ring slot)
+   guided by gr (planes of stride gs) into the ring at base `out` (planes of stride KW) */
 static tofg_pass_args tofg_slide_rowargs(const tofg_slide *S, const tofg_slide_buf *b,
-                                         const float *gr, const float *gi, const float *gv,
-                                         ptrdiff_t gs, const float *colrow, float *out)
+                                         ptrdiff_t r, const float *gr, const float *gi,
+                                         const float *gv, ptrdiff_t gs, const float *colrow,
+                                         float *out)
 {
     const ptrdiff_t F = S->F, W = S->W, KW = S->K * W;
+    const float *raw = tofg_slide_rawrow(S, b, r), *gate = b->gate + (r % S->K) * W;
     const tofg_pass_args p = {
-        b->raw, b->raw + F * W, b->raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
+        raw, raw + F * W, raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
         W, 1, S->col_px, S->reach_c, S->radius_px, S->ih, S->ic, out, out + F * KW, out +
-        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, b->gate, b->ones};
+        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, gate, b->ones};
     return p;
 }
 
@@ -1003,7 +1142,10 @@ static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const to
     const ptrdiff_t F = S->F, W = S->W, N = S->N, n = T->c1 - T->c0, o = s * S->C + T->c0;
     const ptrdiff_t x = S->pad + T->c0 - T->v0;
     memcpy(S->ov + o, b->tv + x, (size_t)n * sizeof(float));
-    memcpy(S->on + o, b->tn + x, (size_t)n * sizeof(float));
+    if (S->on64)
+        for (ptrdiff_t j = 0; j < n; j++) S->on64[o + j] = b->tn[x + j];
+    else
+        memcpy(S->on + o, b->tn + x, (size_t)n * sizeof(float));
     if (!S->uw) {
         for (ptrdiff_t f = 0; f < F; f++) {
             memcpy(S->or64 + f * N + o, b->t64 + f * W + x, (size_t)n * sizeof(double));
@@ -1049,8 +1191,9 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
                 memcpy(b->colr + k * KW + so + pd, S->col + k * N + t * C + T->v0,
                        (size_t)T->cv * sizeof(float));
             tofg_slide_raw(S, b, T, t);
-            const tofg_pass_args p1 = tofg_slide_rowargs(S, b, b->raw, b->raw + F * W,
-                                                         b->raw + 2 * F * W, W, b->colr + so,
+            const float *raw = tofg_slide_rawrow(S, b, t);
+            const tofg_pass_args p1 = tofg_slide_rowargs(S, b, t, raw, raw + F * W,
+                                                         raw + 2 * F * W, W, b->colr + so,
                                                          b->r1 + so);
             tofg_slide_row(S, &p1, b->E, pd, nv);
             tofg_slide_gates(S, T, b->r1 + (2 * F + 1) * KW, b->g2, b->n2, t);
@@ -1060,8 +1203,9 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
         if (q >= lo2 && q < hi2) {
             tofg_slide_col(S, &p2, b->pr2, q, pd, nv);
             const ptrdiff_t so = (q % K) * W;
-            tofg_slide_raw(S, b, T, q);
-            const tofg_pass_args p3 = tofg_slide_rowargs(S, b, b->gd + so, b->gd + F * KW + so,
+            /* row q's raw data: in its ring slot since the first row pass (H rows ago) */
+            const tofg_pass_args p3 = tofg_slide_rowargs(S, b, q, b->gd + so,
+                                                         b->gd + F * KW + so,
                                                          b->gd + 2 * F * KW + so, KW,
                                                          b->colr + so, b->r3 + so);
             tofg_slide_row(S, &p3, b->E, xo, no);
@@ -1087,10 +1231,10 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
-                      double *or64, double *oi64, float *ov, float *on,
+                      double *or64, double *oi64, float *ov, float *on, double *on64,
                       const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
 {
-    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || !on
+    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || (!on && !on64)
         || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
         || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
         || !(inv2hc2 >= 0.0))
@@ -1102,10 +1246,21 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     const int nth = rgbz_threads(workers);
     const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
     const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
-    if (!qr.fast || !qc.fast)
-        return tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px, reach_r,
-                                   reach_c, radius_px, inv2h2, inv2hc2, or64, oi64, ov, on, uw,
-                                   strip, nth);
+    if (!qr.fast || !qc.fast) {
+        /* the strips write n_eff in float: into on, or a buffer widened into on64 */
+        float *o = on ? on : malloc((size_t)(R * C) * sizeof *o);
+        if (!o) return RGBZ_ENOMEM;
+        const int st = tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px,
+                                           reach_r, reach_c, radius_px, inv2h2, inv2hc2, or64,
+                                           oi64, ov, o, uw, strip, nth);
+        if (on64) {
+            const ptrdiff_t N = R * C;
+            RGBZ_PARALLEL_FOR
+            for (ptrdiff_t n = 0; n < N; n++) on64[n] = o[n];
+        }
+        if (!on) free(o);
+        return st;
+    }
     /* tiles of even widths; bands: `strip` rows each, else as many as make at least two
        tiles' bands a thread (a band recomputes the 4H rows of the first pass and 2H of the
        next two beyond its ends; a tile 4 Ac columns of the first two passes) */
@@ -1142,6 +1297,7 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     S.oi64 = oi64;
     S.ov = ov;
     S.on = on;
+    S.on64 = on64;
     S.uw = uw;
     (void)tofg_slide_buf_at(&S, NULL);
     const size_t nbytes = S.nfloat * sizeof(float) + S.ndouble * sizeof(double);
@@ -1815,11 +1971,12 @@ int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, d
 
 int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
-                     int block, double scale, float *col, float *cells, double *lap, int workers)
+                     int block, double scale, float *col, float *cells, double *lap,
+                     double floor, double *sigma, int workers)
 {
 #define TOFG_COLOUR_(s, T)                                                                   \
     return RGBZ_CAT(tofg_colour, s)((const T *)guide, H, W, row_px, R, col_px, C, block,     \
-                                    scale, col, cells, lap, workers)
+                                    scale, col, cells, lap, floor, sigma, workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_COLOUR_, return RGBZ_EINVAL)
 #undef TOFG_COLOUR_
 }

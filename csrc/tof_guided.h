@@ -25,10 +25,14 @@ int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, d
 
 /* The guide (H, W, 3) at the measurements: col (3, N) the mean over the block x block
    cells of each (times scale), cells (block^2, 3, N) each cell (NULL: not stored), and
-   lap (3,) the sums of |Immerkaer's Laplacian| of col over the grid's interior. */
+   lap (3,) the sums of |Immerkaer's Laplacian| of col over the grid's interior. With sigma
+   not NULL, also the guide's noise per channel, sigma = max(sqrt(pi / 2) / (6 (R - 2)(C - 2))
+   lap, floor) (floor where the interior is empty), into sigma (3,), and col and cells
+   multiplied by (float)(1 / (sqrt(2) sigma)) of their channel, in float. */
 int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
-                     int block, double scale, float *col, float *cells, double *lap, int workers);
+                     int block, double scale, float *col, float *cells, double *lap,
+                     double floor, double *sigma, int workers);
 
 /* One 1-D pass of the guided cross-bilateral mean along rows (axis 1) or columns (axis 0):
    data zr, zi (F, N), v (N,); guide phasors gr, gi (F, N) with variance gv (N,); colours
@@ -68,12 +72,13 @@ typedef struct {
    unwrapped as they are made (rgbz_tof_depth_iq, bit for bit) into uw's arrays instead of
    being stored (or64, oi64 unused); a non-finite mean gives RGBZ_EDOMAIN after every other
    one is computed. strip: the grid rows of output per band or strip (<= 0: one band per
-   thread, or strips of at most 128 rows); the outputs do not depend on it. */
+   thread, or strips of at most 128 rows); the outputs do not depend on it. on64 (N,), when
+   not NULL, takes the n_eff of on in double (on may then be NULL). */
 int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
-                      double *or64, double *oi64, float *ov, float *on,
+                      double *or64, double *oi64, float *ov, float *on, double *on64,
                       const tofg_unwrap_out *uw, ptrdiff_t strip, int workers);
 
 /* snr, sigma, reflectance and the validity bits (1 saturated, 2 low signal, 4 inconsistent,

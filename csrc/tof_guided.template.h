@@ -70,11 +70,48 @@ static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N
     return RGBZ_OK;
 }
 
+/* the colours of the measurements [n0, n0 + C) of one grid row, whose Z pixels' top-left
+   pixels are in guide row y at the columns col_px, for Z pixels of B x B cells (B a
+   compile-time constant, so that the cell loops unroll): each channel's sum over the cells
+   in double, in the cells' row-major order, times cell_w; each cell times scale into cells
+   (NULL: not stored) */
+RGBZ_INLINE void RGBZ_CAT(tofg_colour_row, IS)(const IN_T *restrict guide, ptrdiff_t W,
+                                               ptrdiff_t y, const int64_t *restrict col_px,
+                                               ptrdiff_t C, ptrdiff_t N, ptrdiff_t n0,
+                                               double scale, double cell_w,
+                                               float *restrict col, float *restrict cells,
+                                               const int B)
+{
+    const IN_T *restrict g0 = guide + y * W * 3;
+    float *restrict c0 = col + n0, *restrict c1 = c0 + N, *restrict c2 = c1 + N;
+    for (ptrdiff_t c = 0; c < C; c++) {
+        const IN_T *q = g0 + col_px[c] * 3;
+        double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+        for (int dr = 0; dr < B; dr++)
+            for (int dc = 0; dc < B; dc++) {
+                const IN_T *p = q + (dr * W + dc) * 3;
+                s0 += (double)p[0];
+                s1 += (double)p[1];
+                s2 += (double)p[2];
+                if (cells) {
+                    float *cp = cells + (ptrdiff_t)(dr * B + dc) * 3 * N + n0 + c;
+                    cp[0] = (float)(p[0] * scale);
+                    cp[N] = (float)(p[1] * scale);
+                    cp[2 * N] = (float)(p[2] * scale);
+                }
+            }
+        c0[c] = (float)(s0 * cell_w);
+        c1[c] = (float)(s1 * cell_w);
+        c2[c] = (float)(s2 * cell_w);
+    }
+}
+
 /* the colour stage of rgbz_tofg_colour for a guide of IN_T */
 static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
                                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px,
                                      ptrdiff_t C, int block, double scale, float *col,
-                                     float *cells, double *lap, int workers)
+                                     float *cells, double *lap, double floor, double *sigma,
+                                     int workers)
 {
     if (!guide || !row_px || !col_px || !col || !lap || R < 0 || C < 0 || block < 1
         || block > 2)
@@ -89,22 +126,15 @@ static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W
     (void)nth;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t r = 0; r < R; r++) {
-        for (ptrdiff_t c = 0; c < C; c++) {
-            const ptrdiff_t n = r * C + c;
-            double s[3] = {0.0, 0.0, 0.0};
-            int k = 0;
-            for (int dr = 0; dr < block; dr++)
-                for (int dc = 0; dc < block; dc++, k++) {
-                    const IN_T *p = guide + ((row_px[r] + dr) * W + col_px[c] + dc) * 3;
-                    for (int ch = 0; ch < 3; ch++) {
-                        s[ch] += (double)p[ch];
-                        if (cells) cells[(k * 3 + ch) * N + n] = (float)(p[ch] * scale);
-                    }
-                }
-            for (int ch = 0; ch < 3; ch++) col[ch * N + n] = (float)(s[ch] * cell_w);
-        }
+        if (block == 1)
+            RGBZ_CAT(tofg_colour_row, IS)(guide, W, row_px[r], col_px, C, N, r * C, scale,
+                                          cell_w, col, cells, 1);
+        else
+            RGBZ_CAT(tofg_colour_row, IS)(guide, W, row_px[r], col_px, C, N, r * C, scale,
+                                          cell_w, col, cells, 2);
     }
     tofg_laplacian(col, R, C, lap, workers);
+    if (sigma) tofg_colour_scale(R, C, block, lap, floor, sigma, col, cells, workers);
     return RGBZ_OK;
 }
 

@@ -1,7 +1,7 @@
 """Speed of the colour-guided ToF ISP and of upsample_depth beside the unguided ISP and the fused
 kernel: the table "Speed of the guided ISP" of docs/reports/isp.md.
 
-    python tools/tof_guided_speed.py [ROUNDS] [--kernels SO]   # about a minute (plus the simulation)
+    python tools/tof_guided_speed.py [ROUNDS] [--kernels SO | --package DIR]   # a minute
 
 A 12 MP Mask1 frame (art from ../shared/data/rgbd scaled to 3000x4000, 3 M measurements,
 ``simulate(scene, "mask1", seed=1)``) and its guide ``ColourISP().run(frame)``; 2 threads;
@@ -12,6 +12,9 @@ the fresh pages of the arrays a call returns, which swings with the machine's lo
 
 ``--kernels SO`` runs the extension module SO (another build's ``_kernels*.so``) in place of
 the installed one: the same tool, alternated with it in turn, pairs two builds.
+``--package DIR`` runs the package ``DIR/rgbz_fast`` (another checkout's ``src/rgbz_fast``
+with its build's extension modules and ``_build_config.py`` copied in) in place of the
+installed one: it pairs two builds whose Python calls the kernels differently.
 """
 
 import importlib.util
@@ -32,12 +35,24 @@ def _kernels_from(path):
     spec.loader.exec_module(module)
 
 
+def _package_from(path):
+    """Import rgbz_fast from the directory `path` instead of the editable install."""
+    sys.meta_path[:] = [f for f in sys.meta_path if type(f).__name__ != "MesonpyMetaFinder"]
+    sys.path.insert(0, str(Path(path).resolve()))
+
+
 if "--kernels" in sys.argv:
     _i = sys.argv.index("--kernels")
     _kernels_from(sys.argv[_i + 1])
     del sys.argv[_i:_i + 2]
+if "--package" in sys.argv:
+    _i = sys.argv.index("--package")
+    _package_from(sys.argv[_i + 1])
+    del sys.argv[_i:_i + 2]
 
 import numpy as np  # noqa: E402
+
+import rgbz_fast  # noqa: E402
 
 from rgbz_fast.isp import ColourISP  # noqa: E402
 from rgbz_fast.simulation import Scene, load_rgbd, simulate  # noqa: E402
@@ -86,7 +101,8 @@ def main(rounds=5):
         print(f"| `{name}` | {statistics.median(wall[name]):.2f} s ({min(wall[name]):.2f} s) | "
               f"{statistics.median(cpu[name]) / units * 1e9:.0f} ns | "
               f"{statistics.median(user[name]) / units * 1e9:.0f} ns |")
-    print(f"load average {os.getloadavg()[0]:.1f}, {tof.n_sites} measurements")
+    print(f"load average {os.getloadavg()[0]:.1f}, {tof.n_sites} measurements, "
+          f"package {Path(rgbz_fast.__file__).parent}")
 
 
 if __name__ == "__main__":

@@ -199,7 +199,7 @@ def tofg_prepare(taps: np.ndarray, gain: float, black: float, supp: float, const
                  sat: np.ndarray, offset: np.ndarray | None, workers: int) -> None: ...
 def tofg_colour(guide: np.ndarray, row_px: np.ndarray, col_px: np.ndarray, block: int,
                 scale: float, col: np.ndarray, cells: np.ndarray | None, lap: np.ndarray,
-                workers: int) -> None: ...
+                workers: int, floor: float = ..., sigma: np.ndarray | None = ...) -> None: ...
 def tofg_pass(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, nin: np.ndarray | None,
               gr: np.ndarray, gi: np.ndarray, gv: np.ndarray, col: np.ndarray, use: np.ndarray,
               R: int, C: int, axis: int, px: np.ndarray, reach: int, radius_px: int,
@@ -211,11 +211,12 @@ def tofg_denoise(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, col: np.ndarray,
                  use: np.ndarray, row_px: np.ndarray, col_px: np.ndarray, reach_r: int,
                  reach_c: int, radius_px: int, inv2h2: float, inv2hc2: float,
                  out_re: np.ndarray | None, out_im: np.ndarray | None, out_var: np.ndarray,
-                 out_neff: np.ndarray, workers: int, freqs: np.ndarray | None = ...,
+                 out_neff: np.ndarray | None, workers: int, freqs: np.ndarray | None = ...,
                  weights: np.ndarray | None = ..., max_range: float = ...,
                  depth: np.ndarray | None = ..., residual: np.ndarray | None = ...,
                  wraps: np.ndarray | None = ..., phase: np.ndarray | None = ...,
-                 amp: np.ndarray | None = ..., strip: int = ...) -> bool: ...
+                 amp: np.ndarray | None = ..., strip: int = ...,
+                 count: np.ndarray | None = ...) -> bool: ...
 def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
                   sat: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
                   min_snr: float, min_amplitude: float, max_sigma: float, max_residual: float,

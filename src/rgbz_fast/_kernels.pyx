@@ -816,7 +816,7 @@ cdef extern from "tof_guided.h" nogil:
     int rgbz_tofg_colour(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
                          const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
                          Py_ssize_t C, int block, double scale, float *col, float *cells,
-                         double *lap, int workers)
+                         double *lap, double floor, double *sigma, int workers)
     int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
                        const float *gr, const float *gi, const float *gv, const float *col,
                        const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C, int axis,
@@ -837,7 +837,8 @@ cdef extern from "tof_guided.h" nogil:
                           const int64_t *row_px, const int64_t *col_px, Py_ssize_t reach_r,
                           Py_ssize_t reach_c, int64_t radius_px, double inv2h2,
                           double inv2hc2, double *or64, double *oi64, float *ov, float *on,
-                          const tofg_unwrap_out *uw, Py_ssize_t strip, int workers)
+                          double *on64, const tofg_unwrap_out *uw, Py_ssize_t strip,
+                          int workers)
     int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                            const double *residual, const uint8_t *sat, Py_ssize_t F,
                            Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
@@ -886,19 +887,25 @@ cdef float *_optf(float[:, :, ::1] a) noexcept:
 
 def tofg_colour(const frame_t[:, :, ::1] guide, const int64_t[::1] row_px,
                 const int64_t[::1] col_px, int block, double scale, float[:, ::1] col,
-                float[:, :, ::1] cells, double[::1] lap, int workers):
+                float[:, :, ::1] cells, double[::1] lap, int workers, double floor=0.0,
+                double[::1] sigma=None):
     """The guide (H, W, 3) at the measurements: col (3, N), cells (block^2, 3, N) or None,
-    lap (3,) the sums of |Immerkaer's Laplacian| of col."""
+    lap (3,) the sums of |Immerkaer's Laplacian| of col. With sigma (3,) given, also the
+    guide's noise (Immerkaer, at least floor) into sigma, and col and cells divided by
+    sqrt(2) sigma of their channel (times its float reciprocal)."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef float *cp = _optf(cells)
+    cdef double *sp = NULL if sigma is None else &sigma[0]
+    if sigma is not None and sigma.shape[0] != 3:
+        raise ValueError(f"sigma: expected 3 channels, got {sigma.shape[0]}")
     cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
     if R == 0 or C == 0:
         return
     with nogil:
         status = rgbz_tofg_colour(in_type, &guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
-                                  block, scale, &col[0, 0], cp, &lap[0], workers)
+                                  block, scale, &col[0, 0], cp, &lap[0], floor, sp, workers)
     _raise_for(status)
 
 
@@ -945,21 +952,26 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
                  const double[::1] freqs=None, const double[::1] weights=None,
                  double max_range=0.0, double[::1] depth=None, double[::1] residual=None,
                  int32_t[::1] wraps=None, double[:, ::1] phase=None, double[:, ::1] amp=None,
-                 Py_ssize_t strip=0):
+                 Py_ssize_t strip=0, double[::1] count=None):
     """The guided denoise: the four passes of tofg_pass (rows, columns, rows guided by the
     columns' output, columns) fused strip by strip; the last pass's outputs, bit for bit.
     With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
     unwrapped strip by strip (tof_depth_iq, bit for bit) instead of stored in out_re, out_im
-    (then None); strip: grid rows per strip (0: the kernel's default). Returns False when
-    a mean is not finite (RGBZ_EDOMAIN), True otherwise."""
+    (then None); strip: grid rows per strip (0: the kernel's default); count (N,), when
+    given, takes n_eff in double (out_neff may then be None). Returns False when a mean is
+    not finite (RGBZ_EDOMAIN), True otherwise."""
     cdef int status
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
     cdef tofg_unwrap_out uw
     cdef tofg_unwrap_out *puw = NULL
     cdef double *o_r = NULL
     cdef double *o_i = NULL
+    cdef float *o_n = NULL if out_neff is None else &out_neff[0]
+    cdef double *o_n64 = NULL if count is None else &count[0]
     if R == 0 or C == 0:
         return True
+    if o_n == NULL and o_n64 == NULL:
+        raise TypeError("out_neff: expected a float32 array (N,) when count is None, got None")
     if depth is not None:
         uw.freqs = &freqs[0]
         uw.weights = &weights[0]
@@ -977,7 +989,7 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
         status = rgbz_tofg_denoise(&zr[0, 0], &zi[0, 0], &v[0], &col[0, 0], &use[0],
                                    zr.shape[0], R, C, &row_px[0], &col_px[0], reach_r, reach_c,
                                    radius_px, inv2h2, inv2hc2, o_r, o_i, &out_var[0],
-                                   &out_neff[0], puw, strip, workers)
+                                   o_n, o_n64, puw, strip, workers)
     if status == RGBZ_EDOMAIN:
         return False
     _raise_for(status)

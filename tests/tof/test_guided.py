@@ -4,6 +4,8 @@ chain on simulated frames, and bad guides."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -72,6 +74,39 @@ def test_guide_colours_match_numpy(dtype, scale, block):
     np.testing.assert_allclose(col, rcol, rtol=1e-6)
     np.testing.assert_allclose(cells, rcells, rtol=1e-6)
     np.testing.assert_allclose(lap, rlap, rtol=1e-5)
+
+
+@pytest.mark.parametrize("block,R", [(1, 10), (2, 10), (1, 2)])
+def test_guide_colours_scaled_in_the_kernel(block, R):
+    """With sigma given, the kernel divides col and cells by sqrt(2) sigma_c, sigma_c by
+    Immerkaer's formula from its own lap (at least the floor; the floor without an interior),
+    bit for bit as the same statement in NumPy on the unscaled outputs."""
+    rng = np.random.default_rng(5)
+    guide = (rng.uniform(0, 1, (31, 41, 3)) * 255).astype(np.uint8)
+    guide[..., 2] = 7                                     # a flat channel: sigma at the floor
+    rows = np.arange(0, 3 * R, 3, dtype=np.int64)
+    cols = np.arange(0, 40, 4, dtype=np.int64)
+    N = rows.size * cols.size
+    outs = []
+    for sigma in (None, np.empty(3)):
+        col = np.empty((3, N), np.float32)
+        cells = np.empty((block * block, 3, N), np.float32)
+        lap = np.zeros(3)
+        _kernels.tofg_colour(guide, rows, cols, block, 1 / 255, col, cells, lap, 2, 0.002,
+                             sigma)
+        outs.append((col, cells, lap, sigma))
+    col, cells, lap, _ = outs[0]
+    interior = max(R - 2, 0) * max(cols.size - 2, 0)
+    sig = math.sqrt(math.pi / 2.0) / (6.0 * interior) * lap if interior else np.zeros(3)
+    sig = np.maximum(sig, 0.002)
+    inv = (1.0 / (math.sqrt(2.0) * sig)).astype(np.float32)[:, None]
+    np.testing.assert_array_equal(outs[1][3], sig)
+    np.testing.assert_array_equal(outs[1][0], col * inv)
+    np.testing.assert_array_equal(outs[1][1], cells * inv[None])
+    assert outs[1][3][2] == 0.002
+    with pytest.raises(ValueError, match="sigma"):
+        _kernels.tofg_colour(guide, rows, cols, block, 1 / 255, col, cells, lap, 2, 0.002,
+                             np.empty(2))
 
 
 def _planes(R, C, F=3, seed=0):
@@ -173,6 +208,12 @@ def test_guided_denoise_is_the_four_passes(R, C, F, reach_r, reach_c, radius, un
                               hc, *got, workers, strip=strip)
         for a, b in zip(got, want):
             np.testing.assert_array_equal(a, b)
+        # n_eff in double instead (count), with or without the float plane
+        for neff in (None, np.empty(N, np.float32)):
+            count = np.empty(N)
+            _kernels.tofg_denoise(zr, zi, v, col, use, rows, cols, reach_r, reach_c, radius,
+                                  0.125, hc, *got[:3], neff, workers, strip=strip, count=count)
+            np.testing.assert_array_equal(count, want[3].astype(np.float64))
     ref_out = ref.guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c,
                                  radius, 0.125, hc)
     scale = np.abs(zr).max()
@@ -204,6 +245,12 @@ def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip):
                                  strip=strip)
     for a, b in zip(got + [var2, neff2], want + [var, neff]):
         np.testing.assert_array_equal(a, b)
+    count = np.empty(N)
+    assert _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, 7.5, *got,
+                                 strip=strip, count=count)
+    np.testing.assert_array_equal(count, neff.astype(np.float64))
+    with pytest.raises(TypeError, match="out_neff"):
+        _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, 7.5, *got)
     zr[0, 3] = np.nan
     assert not _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got)
 

@@ -177,17 +177,11 @@ def guide_colours(g, scale, layout, nthreads):
     N, b = layout.N, layout.block
     col = np.empty((3, N), np.float32)
     cells = np.empty((b * b, 3, N), np.float32) if b > 1 else None
-    lap = np.zeros(3)
-    _kernels.tofg_colour(g, layout.rows, layout.cols, b, scale, col, cells, lap, nthreads)
-    R, C = layout.R, layout.C
-    interior = max(R - 2, 0) * max(C - 2, 0)
-    # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|
-    sigma = (math.sqrt(math.pi / 2.0) / (6.0 * interior) * lap if interior else np.zeros(3))
-    sigma = np.maximum(sigma, NOISE_FLOOR)
-    inv = (1.0 / (math.sqrt(2.0) * sigma)).astype(np.float32)[:, None]
-    col *= inv
-    if cells is not None:
-        cells *= inv[None]
+    lap, sigma = np.zeros(3), np.empty(3)
+    # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|, at least
+    # NOISE_FLOOR; the kernel divides col and cells by sqrt(2) sigma
+    _kernels.tofg_colour(g, layout.rows, layout.cols, b, scale, col, cells, lap, nthreads,
+                         NOISE_FLOOR, sigma)
     return col, cells, sigma
 
 
@@ -285,20 +279,21 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # call, row by row through rings of a few rows: no intermediate plane of the whole frame;
     # without a calibration (whose cyclic-error correction acts on the phases) the means are
     # unwrapped there as they are made
-    var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
+    # n_eff comes in count's public dtype, float64, from the kernel
+    var, count = np.empty(N, np.float32), np.empty(N)
     args = (zr, zi, v, col, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
             inv2hc2)
     if cal is None:
         depth, residual, wraps = np.empty(N), np.empty(N), np.empty(N, np.int32)
         phase, amp = np.empty((F, N)), np.empty((F, N))
-        if not _kernels.tofg_denoise(*args, None, None, var, neff, nthreads,
+        if not _kernels.tofg_denoise(*args, None, None, var, None, nthreads,
                                      np.ascontiguousarray(f, np.float64),
                                      np.ascontiguousarray(w, np.float64), max_range, depth,
-                                     residual, wraps, phase, amp):
+                                     residual, wraps, phase, amp, count=count):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
     else:
         mr, mi = np.empty((F, N)), np.empty((F, N))
-        _kernels.tofg_denoise(*args, mr, mi, var, neff, nthreads)
+        _kernels.tofg_denoise(*args, mr, mi, var, None, nthreads, count=count)
         depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
     snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
     flags = np.empty(N, np.uint8)
@@ -315,7 +310,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
                     phase=back(phase), amplitude=back(amp), offset=back(offset),
                     snr=back(snr), sigma=back(sigma), reflectance=back(refl),
-                    count=back(neff.astype(np.float64)), valid=back(flags == 0),
+                    count=back(count), valid=back(flags == 0),
                     flags=back(flags), frequencies=np.asarray(tof.frequencies, np.float64).copy(),
                     sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
                     shape=tuple(tof.shape), measured=back(measured))
