@@ -246,6 +246,15 @@ int rgbz_tof_depth_iq_strided(const double *i_comp, const double *q_comp, ptrdif
                               double *residual, int32_t *wraps, double *phase, double *amp,
                               int workers);
 
+/* The same on the calling thread for the planes of I and Q ldi (>= N) apart and those of phase
+   and amp ldo (>= N) apart (every output given): the guided denoise unwraps each output row
+   from its buffer of means. Three frequencies with four wrap counts of the base one (the
+   ISP's defaults) take a path of their own; the results are rgbz_tof_depth_iq's bit for bit. */
+int rgbz_tof_depth_iq_row(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                          ptrdiff_t N, ptrdiff_t ldi, ptrdiff_t ldo, const double *freqs,
+                          const double *weights, double max_range, double *depth,
+                          double *residual, int32_t *wraps, double *phase, double *amp);
+
 /* The fast exponential of rgbz_ops.h (exp_mode RGBZ_EXP_FAST) of n values, in float and
    double, so that the tests can measure it against libm. */
 int rgbz_fast_exp_f32(const float *x, float *out, ptrdiff_t n);

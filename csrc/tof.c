@@ -36,7 +36,9 @@
  * rgbz_tof_depth fuses the two stages (taps -> phase, amplitude, offset,
  * depth, residual, wrap count in one pass over the blocks, no frame-size
  * intermediate array); rgbz_tof_depth_iq does the same from averaged phasors
- * (I, Q).
+ * (I, Q), and rgbz_tof_depth_iq_row for one row of them on the calling thread (the
+ * guided denoise's output rows), with a path of its own for three frequencies and four
+ * wrap counts that computes the same operations per site in registers.
  */
 /* No FP trap is ever enabled here, so GCC may compute both arms of a `?:` and
    vectorise the site loops (its default -ftrapping-math forbids that; clang's
@@ -432,6 +434,111 @@ int rgbz_tof_depth_iq_strided(const double *i_comp, const double *q_comp, ptrdif
     if (!q_comp || ldo < N) return RGBZ_EINVAL;
     return tof_unwrap_sites(i_comp, q_comp, F, N, ldo, freqs, weights, max_range, depth,
                             residual, wraps, phase, amp, workers);
+}
+
+/* ------------------------------------------------------------------ one row of phasors */
+/* candidate w (its offsets r1, r2) of tof_unwrap_row_f3w4 against the best so far: the
+   operations of tof_unwrap_block_impl's candidate loop for one site */
+static inline void tof_candidate(double y1, double y2, double r1, double r2, double wc1,
+                                 double wc2, double w, double *best, double *bw)
+{
+    const double u1 = y1 + r1, u2 = y2 + r2;
+    const double e1 = tof_floor_i32(u1 + 0.5) - u1, e2 = tof_floor_i32(u2 + 0.5) - u2;
+    double cost = 0;
+    cost += wc1 * (e1 * e1);
+    cost += wc2 * (e2 * e2);
+    /* the first minimum wins a tie; bw moves by an exact integer step (a select here would
+       keep GCC from if-converting the four candidates into one vector loop) */
+    const double better = cost < *best ? 1.0 : 0.0;
+    *best = cost < *best ? cost : *best;
+    *bw += better * (w - *bw);
+}
+
+/* One row of averaged phasors with three frequencies and four wrap counts of the base one
+   (the ISP's default frequency set and range, p->int_floor): tof_unwrap_site_block's
+   operations on the same values in the same order, each site's values in registers instead
+   of the block's scratch rows and every candidate unrolled, so the results are the same bit
+   for bit. The planes of x and q are ldi apart, those of phase and amp ldo apart. Returns 1
+   if an I or Q was not finite (that site reported as tof_unwrap_checked does). */
+RGBZ_CLONES_512 static int tof_unwrap_row_f3w4(const tof_plan *p, const double *x,
+                                               const double *q, ptrdiff_t ldi, ptrdiff_t n,
+                                               ptrdiff_t ldo, double *restrict depth,
+                                               double *restrict residual,
+                                               int32_t *restrict wraps,
+                                               double *restrict phase, double *restrict amp)
+{
+    const int b = p->base, i1 = p->other[0], i2 = p->other[1];
+    const double *xb = x + b * ldi, *qb = q + b * ldi, *x1 = x + i1 * ldi, *q1 = q + i1 * ldi,
+                 *x2 = x + i2 * ldi, *q2 = q + i2 * ldi;
+    double *restrict pb = phase + b * ldo, *restrict p1 = phase + i1 * ldo,
+           *restrict p2 = phase + i2 * ldo, *restrict ab = amp + b * ldo,
+           *restrict a1 = amp + i1 * ldo, *restrict a2 = amp + i2 * ldo;
+    const double sb = p->scale[b], s1 = p->scale[i1], s2 = p->scale[i2];
+    const double ia1 = p->inv_amb[i1], ia2 = p->inv_amb[i2];
+    const double r1 = p->ratio[i1], r2 = p->ratio[i2], wc1 = p->wcost[i1], wc2 = p->wcost[i2];
+    /* the candidates' offsets w r_i, as tof_unwrap_block_impl computes them */
+    const double r1w[4] = {0 * r1, 1 * r1, 2 * r1, 3 * r1};
+    const double r2w[4] = {0 * r2, 1 * r2, 2 * r2, 3 * r2};
+    const double wb = p->w[b], w1 = p->w[i1], w2 = p->w[i2], amb = p->amb[b];
+    const double am1 = p->amb[i1], am2 = p->amb[i2], ws = p->wsum;
+    int bad = 0;
+    for (ptrdiff_t k = 0; k < n; k++) {
+        const double Ib = xb[k], Qb = qb[k], I1 = x1[k], Q1 = q1[k], I2 = x2[k], Q2 = q2[k];
+        const int inb = (fabs(Ib) <= DBL_MAX) & (fabs(Qb) <= DBL_MAX);   /* not NaN */
+        const int in1 = (fabs(I1) <= DBL_MAX) & (fabs(Q1) <= DBL_MAX);
+        const int in2 = (fabs(I2) <= DBL_MAX) & (fabs(Q2) <= DBL_MAX);
+        const double tb = tof_phase(Ib, Qb), t1 = tof_phase(I1, Q1), t2 = tof_phase(I2, Q2);
+        const double phb = inb ? tb : 0.0, ph1 = in1 ? t1 : 0.0, ph2 = in2 ? t2 : 0.0;
+        pb[k] = phb;
+        p1[k] = ph1;
+        p2[k] = ph2;
+        ab[k] = tof_amplitude(Ib, Qb);
+        a1[k] = tof_amplitude(I1, Q1);
+        a2[k] = tof_amplitude(I2, Q2);
+        const double db = phb * sb, d1 = ph1 * s1, d2 = ph2 * s2;
+        const double y1 = (db - d1) * ia1, y2 = (db - d2) * ia2;
+        double best = INFINITY, bw = 0;
+        tof_candidate(y1, y2, r1w[0], r2w[0], wc1, wc2, 0.0, &best, &bw);
+        tof_candidate(y1, y2, r1w[1], r2w[1], wc1, wc2, 1.0, &best, &bw);
+        tof_candidate(y1, y2, r1w[2], r2w[2], wc1, wc2, 2.0, &best, &bw);
+        tof_candidate(y1, y2, r1w[3], r2w[3], wc1, wc2, 3.0, &best, &bw);
+        double num = wb * (db + bw * amb);
+        const double k1 = tof_floor_i32(y1 + bw * r1 + 0.5), k2 = tof_floor_i32(y2 + bw * r2 + 0.5);
+        num += w1 * (d1 + k1 * am1);
+        num += w2 * (d2 + k2 * am2);
+        const int ok = inb & in1 & in2;
+        bad |= !ok;
+        const double dk = num / ws, rk = sqrt(best / ws);
+        const int32_t wk = (int32_t)bw;
+        depth[k] = ok ? dk : NAN;
+        residual[k] = ok ? rk : NAN;
+        wraps[k] = ok ? wk : -1;
+    }
+    return bad;
+}
+
+/* rgbz_tof_depth_iq on one thread for phasor planes ldi apart (see tof.h) */
+int rgbz_tof_depth_iq_row(const double *i_comp, const double *q_comp, ptrdiff_t F,
+                          ptrdiff_t N, ptrdiff_t ldi, ptrdiff_t ldo, const double *freqs,
+                          const double *weights, double max_range, double *depth,
+                          double *residual, int32_t *wraps, double *phase, double *amp)
+{
+    tof_plan plan;
+    if (!i_comp || !q_comp || !depth || !residual || !wraps || !phase || !amp || N < 0
+        || ldi < N || ldo < N)
+        return RGBZ_EINVAL;
+    int st = tof_plan_init(&plan, F, freqs, weights, max_range);
+    if (st != RGBZ_OK) return st;
+    if (plan.F == 3 && plan.nwrap == 4 && plan.int_floor)
+        return tof_unwrap_row_f3w4(&plan, i_comp, q_comp, ldi, N, ldo, depth, residual, wraps,
+                                   phase, amp) ? RGBZ_EDOMAIN : RGBZ_OK;
+    int bad = 0;
+    for (ptrdiff_t blk = 0; blk < TOF_NBLOCKS(N); blk++) {
+        const ptrdiff_t n0 = blk * TOF_BLOCK, nb = N - n0 < TOF_BLOCK ? N - n0 : TOF_BLOCK;
+        bad |= tof_unwrap_site_block(&plan, i_comp, q_comp, ldi, ldo, n0, nb, depth, residual,
+                                     wraps, phase, amp);
+    }
+    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
 }
 
 /* the block [n0, n0 + nb) of rgbz_tof_phase_iq; 1 if an I or Q was not finite */

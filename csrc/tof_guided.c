@@ -1005,7 +1005,7 @@ typedef struct {
 typedef struct {
     float *raw, *gate, *ones, *E, *colr, *r1, *g2, *n2, *gd, *r3, *g4, *n4, *pr2, *pr4, *tv,
           *tn;
-    double *t64, *mean;
+    double *t64;
     float *block;
 } tofg_slide_buf;
 
@@ -1035,9 +1035,8 @@ static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
     b.tn = b.tv + W;
     const size_t nf = ((size_t)(b.tn + W - f) + 1) & ~(size_t)1;  /* the doubles aligned */
     b.t64 = (double *)(f + nf);
-    b.mean = b.t64 + 2 * F * W;
     S->nfloat = nf;
-    S->ndouble = 4 * F * W;
+    S->ndouble = 2 * F * W;
     return b;
 }
 
@@ -1134,8 +1133,8 @@ static void tofg_slide_gates(const tofg_slide *S, const tofg_tile *T, const floa
     }
 }
 
-/* the tile's outputs of grid row s from t64, tv, tn: stored, or unwrapped (rgbz_tof_depth_iq
-   on the row's means packed in b->mean); RGBZ_OK, RGBZ_EDOMAIN or another status */
+/* the tile's outputs of grid row s from t64, tv, tn: stored, or unwrapped (rgbz_tof_depth_iq_row
+   on the row's means where t64 holds them); RGBZ_OK, RGBZ_EDOMAIN or another status */
 static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
                           ptrdiff_t s)
 {
@@ -1153,12 +1152,10 @@ static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const to
         }
         return RGBZ_OK;
     }
-    for (ptrdiff_t f = 0; f < 2 * F; f++)
-        memcpy(b->mean + f * n, b->t64 + f * W + x, (size_t)n * sizeof(double));
     const tofg_unwrap_out *uw = S->uw;
-    return rgbz_tof_depth_iq_strided(b->mean, b->mean + F * n, F, n, N, uw->freqs, uw->weights,
-                                     uw->max_range, uw->depth + o, uw->residual + o,
-                                     uw->wraps + o, uw->phase + o, uw->amp + o, 1);
+    return rgbz_tof_depth_iq_row(b->t64 + x, b->t64 + F * W + x, F, n, W, N, uw->freqs,
+                                 uw->weights, uw->max_range, uw->depth + o, uw->residual + o,
+                                 uw->wraps + o, uw->phase + o, uw->amp + o);
 }
 
 /* the tile's band of output rows [b0, b1); RGBZ_OK, RGBZ_EDOMAIN or another status */

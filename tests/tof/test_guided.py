@@ -223,36 +223,47 @@ def test_guided_denoise_is_the_four_passes(R, C, F, reach_r, reach_c, radius, un
     np.testing.assert_allclose(got[3], ref_out[3], **FILTER_TOL)
 
 
-@pytest.mark.parametrize("F,strip", [(3, 0), (2, 5), (1, 0)])
-def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip):
+# (frequency count, strip, max_range, frequency order, weights): 7.49 m is four wrap counts
+# of 80 MHz (the ISP's default set and range, the row unwrapping's path of its own), 7.5 m five
+@pytest.mark.parametrize("F,strip,max_range,order,weights", [
+    (3, 0, 7.5, [0, 1, 2], "ones"), (2, 5, 7.5, [0, 1, 2], "ones"),
+    (1, 0, 7.5, [0, 1, 2], "ones"), (3, 0, 7.49, [0, 1, 2], "ones"),
+    (3, 5, 7.49, [2, 0, 1], "squares"), (3, 0, 7.49, [1, 2, 0], "squares")])
+def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip, max_range, order, weights):
     """With the unwrapping's arrays, tofg_denoise unwraps each strip's means as tof_depth_iq
-    unwraps the stored means, bit for bit; a non-finite phasor is reported (False)."""
+    unwraps the stored means, bit for bit; a non-finite phasor is reported (False) and its
+    sites as tof_depth_iq reports them."""
     R, C = 140, 60
     zr, zi, v, col, use = _planes(R, C, F, seed=11)
     rows, cols = np.arange(R, dtype=np.int64) * 2, np.arange(C, dtype=np.int64) * 2
-    f = np.array([80e6, 100e6, 120e6][:F])
-    w = np.ones(F)
+    f = np.array([80e6, 100e6, 120e6])[order][:F]
+    w = np.ones(F) if weights == "ones" else (f / 1e8) ** 2
     N = R * C
     mr, mi = np.empty((F, N)), np.empty((F, N))
     var, neff = np.empty(N, np.float32), np.empty(N, np.float32)
     args = (zr, zi, v, col, use, rows, cols, 5, 5, 10, 0.125, 0.02)
     assert _kernels.tofg_denoise(*args, mr, mi, var, neff, 2)
     want = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
-    assert _kernels.tof_depth_iq(mr, mi, f, w, 7.5, *want, workers=2)
+    assert _kernels.tof_depth_iq(mr, mi, f, w, max_range, *want, workers=2)
     got = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
     var2, neff2 = np.empty(N, np.float32), np.empty(N, np.float32)
-    assert _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got,
+    assert _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, max_range, *got,
                                  strip=strip)
     for a, b in zip(got + [var2, neff2], want + [var, neff]):
         np.testing.assert_array_equal(a, b)
     count = np.empty(N)
-    assert _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, 7.5, *got,
+    assert _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, max_range, *got,
                                  strip=strip, count=count)
     np.testing.assert_array_equal(count, neff.astype(np.float64))
     with pytest.raises(TypeError, match="out_neff"):
-        _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, 7.5, *got)
+        _kernels.tofg_denoise(*args, None, None, var2, None, 2, f, w, max_range, *got)
     zr[0, 3] = np.nan
-    assert not _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, 7.5, *got)
+    _kernels.tofg_denoise(*args, mr, mi, var, neff, 2)               # the means, NaN around
+    assert not _kernels.tof_depth_iq(mr, mi, f, w, max_range, *want, workers=2)
+    assert not _kernels.tofg_denoise(*args, None, None, var2, neff2, 2, f, w, max_range, *got)
+    assert (want[2] == -1).any()
+    for a, b in zip(got, want):
+        np.testing.assert_array_equal(a, b)
 
 
 def test_validity_matches_numpy():
