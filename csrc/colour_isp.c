@@ -161,9 +161,10 @@ static int ci_cpu_avx512(void)
     return have;
 }
 
-/* the demosaic's and the white balance's loops in 4 doubles as well (the same arithmetic:
-   -ffp-contract=off leaves every operation rounded on its own on every set) */
-#define CI_CLONES __attribute__((target_clones("avx2", "default")))
+/* the demosaic's and the white balance's loops in 8 doubles (x86-64-v4: AVX-512) or 4 (AVX2)
+   as well (the same arithmetic: -ffp-contract=off leaves every operation rounded on its own
+   on every set) */
+#define CI_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 
 static int ci_cpu_avx2(void)
 {

@@ -377,10 +377,19 @@ static int MT(mt_downsample2)(const void *srcv, ptrdiff_t planes, ptrdiff_t rows
         const IN_T *r0 = src + (p * rows + 2 * i) * cols;
         const IN_T *r1 = 2 * i + 1 < rows ? r0 + cols : r0;     /* odd: the last row twice */
         double *restrict o = dst + u * ocols;
+#if IN_IS_INT
+        /* integer codes (8 or 16 bits): the sums of two and of four are exact in int32 as in
+           double, so the same value reaches the division; the adds vectorise in integers */
+        MT_SIMD
+        for (ptrdiff_t j = 0; j < half; j++)
+            o[j] = (double)(((int32_t)r0[2 * j] + (int32_t)r0[2 * j + 1])
+                            + ((int32_t)r1[2 * j] + (int32_t)r1[2 * j + 1])) / 4.0;
+#else
         MT_SIMD
         for (ptrdiff_t j = 0; j < half; j++)
             o[j] = (((double)r0[2 * j] + (double)r0[2 * j + 1])
                     + ((double)r1[2 * j] + (double)r1[2 * j + 1])) / 4.0;
+#endif
         if (cols % 2) {
             const double a = (double)r0[cols - 1], b = (double)r1[cols - 1];
             o[half] = ((a + a) + (b + b)) / 4.0;

@@ -19,7 +19,7 @@ Subpackages, from the sensor to the report:
 The names most used are re-exported here.
 """
 
-from . import evaluation, io, isp, metrics, reconstruction, simulation, tof
+from . import evaluation, io, isp, metrics, reconstruction, simulation
 from ._build_config import VERSION as __version__
 from ._compat import install_aliases as _install_aliases
 from ._config import config, show_config
@@ -30,7 +30,6 @@ from .isp import ColourISP
 from .reconstruction import (METHODS, NEEDS_TOF, PRECISIONS, FixedPointConfig, ReconstructParams,
                              reconstruct)
 from .simulation import ColourSensor, Scene, ToFSensor, load_scene, simulate
-from .tof import ToFDepth, ToFISP, tof_depth
 
 __all__ = [
     "__version__", "show_config", "config",
@@ -42,5 +41,8 @@ __all__ = [
     "simulation", "reconstruction", "isp", "tof", "metrics", "evaluation", "io",
 ]
 
-_install_aliases(__name__)
+# the ToF chain is imported at its first use: the colour chain's commands (evaluate,
+# reconstruct) never load it
+_install_aliases(__name__, lazy={"tof": ("tof", None), "ToFDepth": ("tof", "ToFDepth"),
+                                 "ToFISP": ("tof", "ToFISP"), "tof_depth": ("tof", "tof_depth")})
 del _install_aliases

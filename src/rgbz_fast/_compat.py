@@ -92,13 +92,23 @@ class _AliasFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         pass
 
 
-def install_aliases(package):
-    """Register the 0.1 module names of ``package`` (its ``__getattr__`` and an import finder)."""
+def install_aliases(package, lazy=None):
+    """Register the 0.1 module names of ``package`` (its ``__getattr__`` and an import finder).
+
+    ``lazy``: name -> (submodule, attribute or None), the names the package imports at first
+    use (the submodule itself when the attribute is None), kept in the package after it."""
     if not any(isinstance(f, _AliasFinder) and f.package == package for f in sys.meta_path):
         sys.meta_path.append(_AliasFinder(package))
     mod = sys.modules[package]
+    lazy = dict(lazy or {})
 
     def __getattr__(name):
+        if name in lazy:
+            sub, attr = lazy[name]
+            home = importlib.import_module(f"{package}.{sub}")
+            value = home if attr is None else getattr(home, attr)
+            setattr(mod, name, value)
+            return value
         if name in ALIASES:
             _warn(package, name, stacklevel=3)
             return _alias_module(package, name)

@@ -114,6 +114,10 @@ class Pattern:
     def __init__(self, tile, *, name=None, bayer=None):
         self._tile = _parse_tile(tile)
         self._tile.setflags(write=False)
+        # the tile is read-only: its period and whether it holds Z are fixed, and asked at
+        # every kernel call of a frame
+        self._period = tuple(int(s) for s in self._tile.shape)
+        self._has_z = bool(np.any(self._tile == Z))
         self.name = str(name) if name is not None else self.tile_string
         self._bayer = self._infer_bayer(bayer)
 
@@ -126,7 +130,7 @@ class Pattern:
     @property
     def period(self):
         """tuple (rows, cols): the repetition period of the tile."""
-        return tuple(int(s) for s in self._tile.shape)
+        return self._period
 
     @property
     def tile_string(self):
@@ -139,7 +143,7 @@ class Pattern:
 
     @property
     def has_z(self):
-        return bool(np.any(self._tile == Z))
+        return self._has_z
 
     @property
     def z_fraction(self):

@@ -345,6 +345,20 @@ def test_paired_differences_are_per_image():
     assert lo > 0                     # sure, although the images spread over 20 dB
 
 
+def test_t_quantiles_of_the_intervals_are_scipys():
+    """The table of the paired intervals' t quantiles holds scipy.special.stdtrit's values
+    (bit for bit with the scipy it was made with, within an ulp of another), and the
+    degrees of freedom beyond it ask scipy."""
+    from scipy.special import stdtrit
+
+    from rgbz_fast.evaluation._results import _T975, _t975
+
+    for df in range(1, len(_T975) + 3):
+        want = float(stdtrit(df, 0.975))
+        assert _t975(df) == pytest.approx(want, rel=3e-16, abs=0), df
+    assert _t975(len(_T975) + 1) == float(stdtrit(len(_T975) + 1, 0.975))
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2", "rows", "bayer", "ZR/BG", "ZZGR/ZZBG"])
 @pytest.mark.parametrize("bit_depth", [8, 11])
 def test_frames_are_the_mosaics_of_the_image(pattern, bit_depth):

@@ -166,6 +166,41 @@ def test_16_bit_colour_png_is_read_at_full_precision(tmp_path, channels):
     np.testing.assert_allclose(scene.image, lin, rtol=1e-12, atol=1e-15)
 
 
+def test_8_bit_png_reads_as_imageio_reads_it():
+    """The 8-bit PNGs read through Pillow directly give imageio's array (values, shape,
+    dtype, a writeable array) in every mode, interlaced too; palettes and animated PNGs,
+    which imageio converts or stacks, are left to it."""
+    import io
+
+    import imageio.v3 as iio
+    from PIL import Image
+
+    from rgbz_fast.io._files import _decode_default, _decode_png8
+
+    rng = np.random.default_rng(8)
+    for mode, shape in (("L", (5, 7)), ("LA", (5, 7, 2)), ("RGB", (9, 6, 3)),
+                        ("RGBA", (5, 7, 4))):
+        for interlace in (False, True):
+            buf = io.BytesIO()
+            Image.fromarray(rng.integers(0, 256, shape, dtype=np.uint8), mode).save(
+                buf, "PNG", interlace=interlace)
+            got, want = _decode_default(buf.getvalue(), ".png"), iio.imread(buf.getvalue(),
+                                                                            extension=".png")
+            assert got.dtype == want.dtype and got.flags.writeable, (mode, interlace)
+            np.testing.assert_array_equal(got, want)
+    frames = [Image.fromarray(rng.integers(0, 256, (4, 6, 3), dtype=np.uint8)) for _ in "ab"]
+    buf = io.BytesIO()
+    frames[0].save(buf, "PNG", save_all=True, append_images=frames[1:])
+    assert _decode_png8(buf.getvalue()) is None
+    np.testing.assert_array_equal(_decode_default(buf.getvalue(), ".png"),
+                                  iio.imread(buf.getvalue(), extension=".png"))
+    buf = io.BytesIO()
+    frames[0].convert("P").save(buf, "PNG")
+    assert _decode_png8(buf.getvalue()) is None
+    np.testing.assert_array_equal(_decode_default(buf.getvalue(), ".png"),
+                                  iio.imread(buf.getvalue(), extension=".png"))
+
+
 def test_grey_images_are_refused_unless_asked_for(tmp_path):
     """One policy for scenes and datasets: grey is refused, grey=True repeats it into RGB."""
     import imageio.v3 as iio

@@ -105,22 +105,6 @@ def zoom(text):
     return (*vals, 64)[:3]
 
 
-def _import_aside(module):
-    """Import ``module`` in a thread of its own now, beside the run, rather than after it
-    when the reports need it (the evaluation's threads spend their time in C kernels that
-    release the GIL; an import error is left to the later import to raise)."""
-    import importlib
-    import threading
-
-    def load():
-        try:
-            importlib.import_module(module)
-        except Exception:                   # pragma: no cover - the later import says why
-            pass
-
-    threading.Thread(target=load, name=f"import {module}", daemon=True).start()
-
-
 def _keep_freed_memory():
     """glibc's malloc keeps the memory this process frees for its next arrays instead of
     handing it back to the system and faulting it in again, zeroed, at the next allocation
@@ -167,7 +151,6 @@ def run(args):
     _check_reports(args, config, dataset, out)
     cache = None if args.no_cache else (args.cache or out / "cache")
     _keep_freed_memory()
-    _import_aside("scipy.special")        # the summary's intervals, once the images are done
     res = evaluate(dataset, config, cache_dir=cache, processes=args.processes,
                    workers=args.workers, scheduler=args.scheduler, progress=not args.quiet,
                    skip_bad=args.skip_bad)

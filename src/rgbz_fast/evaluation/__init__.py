@@ -13,7 +13,6 @@ method's filters to a dataset with the same protocol.
 
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, IMAGE_METRICS, METHOD_LABELS,
                       METRIC_LABELS, PAPER_TABLE3, EvalConfig)
-from ._depth import DEPTH_SECTIONS, depth_report, evaluate_depth
 from ._reports import bar_chart, crop_figure, paired_chart, write_reports
 from ._results import Results
 from ._run import evaluate, evaluate_image, image_frames
@@ -24,3 +23,15 @@ __all__ = ["EvalConfig", "evaluate", "evaluate_image", "image_frames", "Results"
            "IMAGE_METRICS", "ALL_METRICS", "METRIC_LABELS", "METHOD_LABELS", "HIGHER_IS_BETTER",
            "train_filters",
            "evaluate_depth", "depth_report", "DEPTH_SECTIONS"]
+
+
+def __getattr__(name):
+    """The depth evaluation (and with it the ToF chain) is imported at its first use: the
+    colour evaluation never loads it."""
+    if name in ("DEPTH_SECTIONS", "depth_report", "evaluate_depth"):
+        from . import _depth
+
+        value = getattr(_depth, name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

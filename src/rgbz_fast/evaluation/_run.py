@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+from functools import lru_cache
 import re
 import signal
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -28,6 +29,11 @@ from ._config import EvalConfig
 from ._results import Results
 
 __all__ = ["evaluate", "evaluate_image", "image_frames"]
+
+#: the Pattern of a name of the configuration, made once: every image of a run asks for the
+#: same few patterns and their Bayer phases, and get_pattern builds a new Pattern (its tile
+#: parsed and checked against the four Bayer phases) at each call. Read only.
+_named_pattern = lru_cache(maxsize=64)(get_pattern)
 
 
 def _pattern_for(pname, bayer):
@@ -116,9 +122,8 @@ def _frames(img, pattern, config, memo, nir=None):
         references[bayer] = mosaic(lin, bayer, config.bit_depth).data
     # mosaic(lin, pattern): the colour of the underlying Bayer at the colour sites, 0 at the
     # Z sites -- the reference CFA with its Z sites cleared, without sampling the image again
-    data = references[bayer].copy()
-    data[pattern.channel_map(shape) == _patterns.Z] = 0
-    return RawFrame(_Adopt(data), pattern, config.bit_depth), references[bayer]
+    return RawFrame(_Adopt(_without_z(references[bayer], pattern)), pattern,
+                    config.bit_depth), references[bayer]
 
 
 def _frames_coded(img, pattern, config, memo):
@@ -138,10 +143,19 @@ def _frames_coded(img, pattern, config, memo):
         for dy in range(min(py, shape[0])):                # one strided copy per tile site
             for dx in range(min(px, shape[1])):
                 codes[dy::py, dx::px] = img[dy::py, dx::px, colour[dy, dx]]
-        references[bayer] = table[codes]
-    data = references[bayer].copy()
-    data[pattern.channel_map(shape) == _patterns.Z] = 0
-    return RawFrame(_Adopt(data), pattern, config.bit_depth), references[bayer]
+        references[bayer] = np.take(table, codes)          # table[codes], a third of the time
+    return RawFrame(_Adopt(_without_z(references[bayer], pattern)), pattern,
+                    config.bit_depth), references[bayer]
+
+
+def _without_z(cfa, pattern):
+    """A copy of ``cfa`` with 0 at the Z sites of ``pattern`` (``cfa[pattern.channel_map(shape)
+    == Z] = 0``, one strided store per Z site of the tile instead of a boolean mask)."""
+    data = cfa.copy()
+    (py, px), tile = pattern.period, pattern.tile
+    for dy, dx in zip(*np.nonzero(tile == _patterns.Z)):
+        data[dy::py, dx::px] = 0
+    return data
 
 
 def evaluate_image(source, config, cache_dir=None, workers=1):
@@ -192,15 +206,16 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
     chain = config.colour_isp()
     memo, renders, metric_memos = {}, [], {}
     for pname in dict.fromkeys(p for p, _ in todo):
-        frame, ref_cfa = _frames(img, get_pattern(pname), config, memo, nir)
+        frame, ref_cfa = _frames(img, _named_pattern(pname), config, memo, nir)
         pattern = frame.pattern
         bayer, bd = pattern.bayer_phase, frame.bit_depth
+        phase = _named_pattern(bayer) if bayer is not None else bayer   # the renders' Pattern
         z = frame.z_mask
         if config.image_metrics:
             # per pattern: a raw frame is cropped to a whole number of periods; the
             # grey-world gains of the reference are reused on the RGB-Z path (Fig. 19).
             # Patterns on one Bayer arrangement share their reference CFA, rendered once.
-            ref_srgb, gains = _reference_render(chain, ref_cfa, bayer, bd, workers, renders)
+            ref_srgb, gains = _reference_render(chain, ref_cfa, phase, bd, workers, renders)
         for p, m in todo:
             if p != pname:
                 continue
@@ -211,7 +226,7 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
             if "cfa_psnr" in config.metrics:
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)
             if config.image_metrics:
-                test_srgb = chain.render(out, bayer, bit_depth=bd, gains=gains, workers=workers)
+                test_srgb = chain.render(out, phase, bit_depth=bd, gains=gains, workers=workers)
                 try:
                     values.update(_image_metrics(ref_srgb, test_srgb, config, workers,
                                                  metric_memos.setdefault(id(ref_srgb), {})))
@@ -230,7 +245,7 @@ def _reference_render(chain, cfa, bayer, bit_depth, workers, renders):
     """(sRGB image, white-balance gains) of a reference CFA, from ``renders`` (a list of
     earlier (cfa, bayer, bit_depth, image, gains)) when the same CFA was rendered before."""
     for done in renders:
-        if done[1:3] == (bayer, bit_depth) and np.array_equal(done[0], cfa):
+        if done[1:3] == (bayer, bit_depth) and (done[0] is cfa or np.array_equal(done[0], cfa)):
             return done[3], done[4]
     gains = chain.white_balance_gains(cfa, bayer, bit_depth=bit_depth)
     image = chain.render(cfa, bayer, bit_depth=bit_depth, gains=gains, workers=workers)

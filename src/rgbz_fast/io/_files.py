@@ -359,11 +359,29 @@ def _decode_default(data, suffix):
         return decode_tiff(data)
     if data[:2] in PNM_MAGIC:
         return decode_pnm(data)
+    if png is not None and png[3] == 8:
+        plain = _decode_png8(data)                   # None: the file is imageio's case
+        if plain is not None:
+            return plain
     if png is not None:
         import imageio.v3 as iio
 
         return iio.imread(data, extension=".png")
     return decode_pillow(data)
+
+
+def _decode_png8(data):
+    """An 8-bit grey, grey + alpha, RGB or RGBA PNG of one frame, as ``imageio.v3.imread``
+    reads it (its Pillow plugin: the pixels of Pillow's decoder in its mode, a writeable
+    copy), without imageio's plugin machinery; None for what imageio converts or stacks
+    (palettes, animated PNGs) and for what Pillow opens in another mode."""
+    from PIL import Image
+
+    with Image.open(io.BytesIO(data)) as im:
+        if im.format != "PNG" or im.mode not in ("L", "LA", "RGB", "RGBA") \
+                or getattr(im, "custom_mimetype", None) == "image/apng":
+            return None
+        return np.array(im)
 
 
 def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=None):

@@ -57,7 +57,11 @@ def _check_integer_range(arrays, names, data_range, param="data_range"):
             info = np.iinfo(a.dtype)
             if info.min >= 0 and info.max <= data_range:
                 continue                       # every value of the type is in the range
-            lo, hi = int(a.min()), int(a.max())
+            # an unsigned array holds no value below 0: its maximum alone decides
+            hi = int(a.max())
+            if info.min >= 0 and hi <= data_range:
+                continue
+            lo = int(a.min())
             if lo < 0 or hi > data_range:
                 raise ValueError(f"{param}: {name} holds integer values in [{lo}, {hi}], "
                                  f"outside [0, {data_range:g}]; pass the real range of the "
