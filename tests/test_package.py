@@ -201,3 +201,17 @@ def test_every_exported_name_exists_and_0_1_top_level_names_remain():
            "ToFSensor", "ToFTaps", "simulate", "ColourISP", "tof_depth", "ToFISP", "ToFDepth"]
     assert all(hasattr(rgbz_fast, k) for k in old)
     assert "supported_float_type" not in dir(rgbz_fast._validate)
+
+
+def test_the_tof_names_load_at_first_use_and_are_listed_before():
+    code = ("import sys, rgbz_fast as rz, rgbz_fast.evaluation as ev\n"
+            "assert 'rgbz_fast.tof' not in sys.modules, 'the colour chain loaded tof'\n"
+            "lazy = {'tof', 'ToFISP', 'ToFDepth', 'tof_depth'}\n"
+            "assert lazy <= set(dir(rz)), lazy - set(dir(rz))\n"
+            "assert {'evaluate_depth', 'depth_report', 'DEPTH_SECTIONS'} <= set(dir(ev))\n"
+            "assert rz.ToFISP is rz.tof.ToFISP and callable(ev.evaluate_depth)\n"
+            "assert 'rgbz_fast.tof' in sys.modules and 'ToFISP' in vars(rz)\n"
+            "print('ok')")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=120)
+    assert r.returncode == 0 and r.stdout.strip() == "ok", r.stdout + r.stderr[-2000:]

@@ -114,4 +114,9 @@ def install_aliases(package, lazy=None):
             return _alias_module(package, name)
         raise AttributeError(f"module {package!r} has no attribute {name!r}")
 
+    def __dir__():
+        # the lazy names are the package's before their first use too (dir, completion)
+        return sorted(set(vars(mod)) | set(lazy))
+
     mod.__getattr__ = __getattr__
+    mod.__dir__ = __dir__

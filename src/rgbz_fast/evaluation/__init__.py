@@ -25,13 +25,20 @@ __all__ = ["EvalConfig", "evaluate", "evaluate_image", "image_frames", "Results"
            "evaluate_depth", "depth_report", "DEPTH_SECTIONS"]
 
 
+_LAZY = ("DEPTH_SECTIONS", "depth_report", "evaluate_depth")
+
+
 def __getattr__(name):
     """The depth evaluation (and with it the ToF chain) is imported at its first use: the
     colour evaluation never loads it."""
-    if name in ("DEPTH_SECTIONS", "depth_report", "evaluate_depth"):
+    if name in _LAZY:
         from . import _depth
 
         value = getattr(_depth, name)
         globals()[name] = value
         return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_LAZY))
