@@ -413,6 +413,15 @@ LRN_INLINE void LRN_CAT(lrn_site_acc, IS, RS)(const REAL *const *rowp, ptrdiff_t
         }
     *acc = a;
 }
+/* the lanes of one accumulator added in lane order */
+LRN_INLINE REAL LRN_CAT(lrn_lane_total, IS, RS)(LRN_CAT(lrn_rv, IS, RS) a)
+{
+    REAL lanes[LRN_LANES];
+    memcpy(lanes, &a, sizeof a);
+    REAL sum = lanes[0];
+    for (int l = 1; l < LRN_LANES; l++) sum += lanes[l];
+    return sum;
+}
 #endif
 LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t x0,
                                                        int px, int n,
@@ -443,11 +452,7 @@ LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptr
         rv a;
         LRN_CAT(lrn_site_acc, IS, RS)(rowp, x0 + (ptrdiff_t)j * px - R,
                                       wd + (ptrdiff_t)bucket[j] * rows * 8, rows, &a);
-        REAL lanes[L];
-        memcpy(lanes, &a, sizeof a);
-        REAL sum = lanes[0];
-        for (int l = 1; l < L; l++) sum += lanes[l];
-        res[j] = sum;
+        res[j] = LRN_CAT(lrn_lane_total, IS, RS)(a);
     }
 #else
     for (int j = 0; j < n; j++) {

@@ -142,12 +142,29 @@ static inline int rgbz_threads(int workers)
 {
     return workers > 0 ? workers : omp_get_max_threads();
 }
+/* inside a parallel region: this thread's number and the team's size (0 and 1 outside) */
+static inline int rgbz_thread_num(void)
+{
+    return omp_get_thread_num();
+}
+static inline int rgbz_team_size(void)
+{
+    return omp_get_num_threads();
+}
 #else
 #define RGBZ_PARALLEL_FOR
 #define RGBZ_PARALLEL_FOR_OR(bad)
 static inline int rgbz_threads(int workers)
 {
     (void)workers;
+    return 1;
+}
+static inline int rgbz_thread_num(void)
+{
+    return 0;
+}
+static inline int rgbz_team_size(void)
+{
     return 1;
 }
 #endif

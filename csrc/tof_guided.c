@@ -98,34 +98,20 @@ static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *l
 {
     const ptrdiff_t N = R * C, n = R - 2 > 0 ? R - 2 : 0;
     const int nth = rgbz_threads(workers);
+    /* the rows' sums into a buffer on the threads; without memory for it, each row's sum
+       where the order below needs it, on this thread */
     double *rs = malloc((size_t)(3 * n > 0 ? 3 * n : 1) * sizeof *rs);
-    if (!rs) {                                  /* the rows one at a time, no buffer */
-        for (int ch = 0; ch < 3; ch++) {
-            double total = 0.0;
-            for (ptrdiff_t i = 0; i < nth; i++) {
-                const ptrdiff_t q = n / nth, rem = n % nth;
-                const ptrdiff_t a = i * q + (i < rem ? i : rem), b = a + q + (i < rem);
-                double part = 0.0;
-                for (ptrdiff_t r = a; r < b; r++) {
-                    double one;
-                    tofg_lap_rows(col + ch * N, r + 1, 1, C, &one);
-                    part += one;
-                }
-                total += part;
-            }
-            lap[ch] = total;
-        }
-        return;
-    }
-    const ptrdiff_t ng = (n + TOFG_LAPR - 1) / TOFG_LAPR;
+    if (rs) {
+        const ptrdiff_t ng = (n + TOFG_LAPR - 1) / TOFG_LAPR;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(nth)
 #endif
-    for (ptrdiff_t g = 0; g < 3 * ng; g++) {
-        const int ch = (int)(g / ng);
-        const ptrdiff_t r = (g % ng) * TOFG_LAPR;
-        const int nr = n - r < TOFG_LAPR ? (int)(n - r) : TOFG_LAPR;
-        tofg_lap_rows(col + ch * N, r + 1, nr, C, rs + ch * n + r);
+        for (ptrdiff_t g = 0; g < 3 * ng; g++) {
+            const int ch = (int)(g / ng);
+            const ptrdiff_t r = (g % ng) * TOFG_LAPR;
+            const int nr = n - r < TOFG_LAPR ? (int)(n - r) : TOFG_LAPR;
+            tofg_lap_rows(col + ch * N, r + 1, nr, C, rs + ch * n + r);
+        }
     }
     for (int ch = 0; ch < 3; ch++) {
         double total = 0.0;
@@ -133,7 +119,14 @@ static void tofg_laplacian(const float *col, ptrdiff_t R, ptrdiff_t C, double *l
             const ptrdiff_t q = n / nth, rem = n % nth;
             const ptrdiff_t a = i * q + (i < rem ? i : rem), b = a + q + (i < rem);
             double part = 0.0;
-            for (ptrdiff_t r = a; r < b; r++) part += rs[ch * n + r];
+            for (ptrdiff_t r = a; r < b; r++) {
+                double one;
+                if (rs)
+                    one = rs[ch * n + r];
+                else
+                    tofg_lap_rows(col + ch * N, r + 1, 1, C, &one);
+                part += one;
+            }
             total += part;
         }
         lap[ch] = total;

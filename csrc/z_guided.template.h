@@ -276,11 +276,7 @@ RGBZ_INLINE void ZG_CAT(zg_dot_rows, IS, RS)(const REAL *const *rowp, ptrdiff_t 
                                     wd + (ptrdiff_t)b[j] * rows * 8, rows,
                                     gw + (ptrdiff_t)b[j] * ZG_GVR, cell + ix * ZG_CVR, base[j],
                                     &a);
-        REAL lanes[L];
-        memcpy(lanes, &a, sizeof a);
-        REAL sum = lanes[0];
-        for (int l = 1; l < L; l++) sum += lanes[l];
-        res[j] = sum;
+        res[j] = LRN_CAT(lrn_lane_total, IS, RS)(a);
     }
 #else
     /* the dense dot product, then the guide term of the generic path */

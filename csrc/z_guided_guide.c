@@ -71,11 +71,8 @@ int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
         in_type != RGBZ_T_F64)
         return RGBZ_EINVAL;
     if (N != gyc * gxc) return RGBZ_ZG_SITES;
-#ifdef _OPENMP
-    const int nth = workers > 0 ? workers : omp_get_max_threads();
-#else
-    (void)workers;
-#endif
+    const int nth = rgbz_threads(workers);
+    (void)nth;                                  /* read by the OpenMP pragmas only */
     /* the sites must be the complete Z pixels in row-major order: site n is the cell
        (n / gxc, n % gxc) */
     int bad = 0;
@@ -107,11 +104,7 @@ int rgbz_zguided_ratios(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
 #pragma omp parallel num_threads(nth)
 #endif
         {
-#ifdef _OPENMP
-            const int t = omp_get_thread_num(), team = omp_get_num_threads();
-#else
-            const int t = 0, team = 1;
-#endif
+            const int t = rgbz_thread_num(), team = rgbz_team_size();
             const ptrdiff_t i0 = ns * t / team, i1 = ns * (t + 1) / team;
             RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_SAMPLE_, (void)0)
         }
@@ -167,16 +160,13 @@ int rgbz_zguided_guide(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N,
                                        zc, gyc, gxc, ratio, 1, workers);
     if (st != RGBZ_OK) return st;
     /* one pass over the taps: both grids */
+    const int nth = rgbz_threads(workers);
+    (void)nth;                                  /* read by the OpenMP pragma only */
 #ifdef _OPENMP
-    const int nth = workers > 0 ? workers : omp_get_max_threads();
 #pragma omp parallel num_threads(nth)
 #endif
     {
-#ifdef _OPENMP
-        const int t = omp_get_thread_num(), team = omp_get_num_threads();
-#else
-        const int t = 0, team = 1;
-#endif
+        const int t = rgbz_thread_num(), team = rgbz_team_size();
         const ptrdiff_t lo = N * t / team, hi = N * (t + 1) / team;
         RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, ZGG_PASS_, (void)0)
     }
