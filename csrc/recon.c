@@ -25,6 +25,7 @@
 #include "rgbz_ops.h"
 #include "recon.h"
 #include "recon_mask1.h"
+#include "rgbz_exp.h"
 
 /* the operation counters of the plan being run (rgbz_ops.h) */
 #ifdef RGBZ_COUNT_OPS
@@ -134,6 +135,64 @@ int rgbz_recon_setup(const void *src, const void *dst, ptrdiff_t rows, ptrdiff_t
     if (!cm) return RGBZ_ENOMEM;
     for (ptrdiff_t i = 0; i < cols + 2 * r; i++) cm[i] = rgbz_extend(i - r, cols, px);
     *colmap = cm;
+    return RGBZ_OK;
+}
+
+/* rgbz_exp.h's port of glibc's exp() stands in for exp() only where it gives exp()'s bits:
+   the CPU runs the AVX-512F clones (where fma() is an instruction, the clones calling it are
+   the ones that run) and this machine's exp() agrees with it on a sweep of arguments
+   (eq. 7's are in [-128, 0] with the default sigma_rel, beyond with others). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
+    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+__attribute__((target("avx512f")))
+static int rgbz_exp_vec_agrees(void)
+{
+    static const double edges[] = {0.0, -0.0, -0x1p-54, -0x1.fffffffffffffp-1, -1.0, -0.5,
+                                   -0x1.62e42fefa39efp-8, -0x1.62e42fefa39efp-9, -36.0,
+                                   -127.99999999999999, -128.0, -511.99999999999994, 0x1p-54,
+                                   1.0, 88.5, 511.99999999999994};
+    for (size_t i = 0; i < sizeof edges / sizeof edges[0]; i++)
+        if (rgbz_exp_asu64(rgbz_exp_glibc_f64(edges[i])) != rgbz_exp_asu64(exp(edges[i])))
+            return 0;
+    uint64_t s = 0x9e3779b97f4a7c15u;                   /* a fixed sequence: xorshift64 */
+    for (int i = 0; i < 4096; i++) {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        const double u = (double)(s >> 11) * 0x1p-53;   /* [0, 1) */
+        const double x = i % 4 == 3 ? -600.0 * u : i % 4 == 2 ? -8.0 * u : -128.0 * u;
+        if (rgbz_exp_glibc_covers(x)
+                && rgbz_exp_asu64(rgbz_exp_glibc_f64(x)) != rgbz_exp_asu64(exp(x)))
+            return 0;
+    }
+    return 1;
+}
+#endif
+
+int rgbz_exp_vec_ready(void)
+{
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
+    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+    static volatile int ready = -1;     /* a race computes the same answer twice */
+    if (ready < 0)
+        ready = __builtin_cpu_supports("avx512f") && rgbz_exp_vec_agrees();
+    return ready;
+#else
+    return 0;
+#endif
+}
+
+int rgbz_exp_libm_vectorised(void)
+{
+    return rgbz_exp_vec_ready();
+}
+
+RGBZ_CLONES_512 int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n)
+{
+    if (!x || !out || n < 0) return RGBZ_EINVAL;
+    const int vec = rgbz_exp_vec_ready();
+    for (ptrdiff_t i = 0; i < n; i++)
+        out[i] = vec && rgbz_exp_glibc_covers(x[i]) ? rgbz_exp_glibc_f64(x[i]) : exp(x[i]);
     return RGBZ_OK;
 }
 

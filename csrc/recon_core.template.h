@@ -276,8 +276,24 @@ static inline REAL RFN(rgbz_exp_narg)(REAL G, REAL ninv)
 }
 
 /*
+ * row[j] = exp(row[j]), j < n, with exp()'s bits (exp_mode RGBZ_EXP_LIBM_VEC, double only):
+ * rgbz_exp.h's vector port of glibc's exp() when it covers every argument of the row, else
+ * exp() one value at a time.
+ */
+RGBZ_INLINE void RFN(rgbz_exp_libm_row)(REAL *restrict row, int n)
+{
+    int covered = 1;
+    BLOOP covered &= rgbz_exp_glibc_covers((double)row[j]);
+    if (covered && sizeof(REAL) == sizeof(double))
+        BLOOP row[j] = (REAL)rgbz_exp_glibc_f64((double)row[j]);
+    else
+        BLOOP row[j] = REXP_LIBM(row[j]);
+}
+
+/*
  * rgbz_gammas_block without clipped pixels, for a family of NG groups from g0 (compile-time
- * NG, REL = rel > 0, FAST = the fast exponential where it is called) whose groups all have
+ * NG, REL = rel > 0, FAST = the exponential where it is called: 1 the fast one, 2 exp()'s
+ * bits from its vector port (rgbz_exp_libm_row), 0 exp()) whose groups all have
  * differences and all get a gamma: the same operations in the same order per site, with
  * the family's means, minimum and sum in registers rather than one pass over the block
  * per group and quantity.
@@ -307,9 +323,12 @@ RGBZ_INLINE void RFN(rgbz_gammas_full)(const rgbz_plan *p, REAL (*G)[RGBZ_BLK], 
         const REAL ninv = -ODIV((REAL)1, OMUL((REAL)2, OMUL(sg, sg)));
         RGBZ_UNROLL
         for (int q = 0; q < NG; q++)
-            gamma[g0 + q][j] = FAST ? REXP_FAST(RFN(rgbz_exp_narg)(gm[q], ninv))
-                                    : REXP_LIBM(RFN(rgbz_exp_narg)(gm[q], ninv));
+            gamma[g0 + q][j] = FAST == 1 ? REXP_FAST(RFN(rgbz_exp_narg)(gm[q], ninv))
+                             : FAST == 2 ? RFN(rgbz_exp_narg)(gm[q], ninv)
+                                         : REXP_LIBM(RFN(rgbz_exp_narg)(gm[q], ninv));
     }
+    if (FAST == 2)
+        for (int q = 0; q < NG; q++) RFN(rgbz_exp_libm_row)(gamma[g0 + q], n);
 }
 
 /*
@@ -335,18 +354,24 @@ RGBZ_INLINE void RFN(rgbz_gammas_block)(const rgbz_plan *p, REAL (*G)[RGBZ_BLK],
     if (!clip && n_known == g1 - g0 && n_gamma == g1 - g0 && (g1 - g0 == 8 || g1 - g0 == 4)) {
         /* every group known and evaluated (the semi-gradients and gradients of the SG
            plans): the family in registers */
-        const int fast = kn->exp_mode == RGBZ_EXP_FAST, r = rel > (REAL)0;
-        if (g1 - g0 == 8) {
-            if (fast && r) RFN(rgbz_gammas_full)(p, G, g0, 8, 1, 1, kn, n, gamma);
-            else if (fast) RFN(rgbz_gammas_full)(p, G, g0, 8, 0, 1, kn, n, gamma);
-            else if (r) RFN(rgbz_gammas_full)(p, G, g0, 8, 1, 0, kn, n, gamma);
-            else RFN(rgbz_gammas_full)(p, G, g0, 8, 0, 0, kn, n, gamma);
-        } else {
-            if (fast && r) RFN(rgbz_gammas_full)(p, G, g0, 4, 1, 1, kn, n, gamma);
-            else if (fast) RFN(rgbz_gammas_full)(p, G, g0, 4, 0, 1, kn, n, gamma);
-            else if (r) RFN(rgbz_gammas_full)(p, G, g0, 4, 1, 0, kn, n, gamma);
-            else RFN(rgbz_gammas_full)(p, G, g0, 4, 0, 0, kn, n, gamma);
-        }
+        const int e = kn->exp_mode == RGBZ_EXP_FAST ? 1
+                    : kn->exp_mode == RGBZ_EXP_LIBM_VEC ? 2 : 0;
+        const int r = rel > (REAL)0;
+#define RGBZ_GAMMAS_FULL_(NG)                                                             \
+        do {                                                                              \
+            if (r) {                                                                      \
+                if (e == 1) RFN(rgbz_gammas_full)(p, G, g0, NG, 1, 1, kn, n, gamma);      \
+                else if (e == 2) RFN(rgbz_gammas_full)(p, G, g0, NG, 1, 2, kn, n, gamma); \
+                else RFN(rgbz_gammas_full)(p, G, g0, NG, 1, 0, kn, n, gamma);             \
+            } else {                                                                      \
+                if (e == 1) RFN(rgbz_gammas_full)(p, G, g0, NG, 0, 1, kn, n, gamma);      \
+                else if (e == 2) RFN(rgbz_gammas_full)(p, G, g0, NG, 0, 2, kn, n, gamma); \
+                else RFN(rgbz_gammas_full)(p, G, g0, NG, 0, 0, kn, n, gamma);             \
+            }                                                                             \
+        } while (0)
+        if (g1 - g0 == 8) RGBZ_GAMMAS_FULL_(8);
+        else RGBZ_GAMMAS_FULL_(4);
+#undef RGBZ_GAMMAS_FULL_
         return;
     }
     if (!n_known) {
@@ -394,7 +419,10 @@ RGBZ_INLINE void RFN(rgbz_gammas_block)(const rgbz_plan *p, REAL (*G)[RGBZ_BLK],
         const REAL *restrict Gg = G[g];
         if (kn->exp_mode == RGBZ_EXP_FAST)
             BLOOP out[j] = REXP_FAST(RFN(rgbz_exp_arg)(Gg[j], inv[j], !clip || cnt[g][j]));
-        else
+        else if (kn->exp_mode == RGBZ_EXP_LIBM_VEC) {
+            BLOOP out[j] = RFN(rgbz_exp_arg)(Gg[j], inv[j], !clip || cnt[g][j]);
+            RFN(rgbz_exp_libm_row)(out, n);
+        } else
             BLOOP out[j] = REXP_LIBM(RFN(rgbz_exp_arg)(Gg[j], inv[j], !clip || cnt[g][j]));
         /* near clipping: an unknown group 0, every gamma 1 where no group is known */
         if (clip) BLOOP out[j] = !nk[j] ? (REAL)1 : cnt[g][j] ? out[j] : (REAL)0;

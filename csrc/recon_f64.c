@@ -12,6 +12,7 @@
 #include "rgbz_ops.h"
 #include "recon.h"
 #include "recon_mask1.h"
+#include "rgbz_exp.h"
 
 #define REAL double
 #define RS f64

@@ -2,6 +2,7 @@
 
     python tools/recon_against_build.py same OTHER.so [--calls 100] [--seed 0]
     python tools/recon_against_build.py speed OTHER.so [--pattern mask2] [--workers 2] [--rounds 9]
+        [--method sg] [--precision float32]
 
 OTHER.so: a copy of src/rgbz_fast/_kernels*.so of the build to compare with (copy it out of
 build/ before changing the C code). Both extensions are loaded in one process; the Python
@@ -13,7 +14,7 @@ and sigma_rel values; a clip level in one call of five; random, smooth and partl
 frames of 8-69 x 8-299 pixels; 1 or 2 threads), each output compared bit for bit; exits 1 if
 one differs.
 
-``speed``: SG on the 12 MP bench frame (``make_rgb((3000, 4000))`` mosaicked), the two
+``speed``: SG (or ``--method``, in ``--precision``) on the 12 MP bench frame (``make_rgb((3000, 4000))`` mosaicked), the two
 extensions alternated call by call (the order swapped every round, one warm-up round), and
 the median [IQR] of the rounds' speed ratios this / OTHER (> 1: this build is faster).
 """
@@ -76,7 +77,7 @@ def same(other, calls, seed):
     return 1 if bad else 0
 
 
-def speed(other, pattern, workers, rounds):
+def speed(other, pattern, workers, rounds, method="sg", precision="float32"):
     cur = R._kernels
     frame = rz.mosaic(make_rgb((3000, 4000)), pattern)
     ratios = []
@@ -85,12 +86,12 @@ def speed(other, pattern, workers, rounds):
         order = (("this", cur), ("other", other)) if i % 2 else (("other", other), ("this", cur))
         for name, k in order:
             t0 = time.perf_counter()
-            run_with(k, frame, "sg", workers=workers)
+            run_with(k, frame, method, workers=workers, precision=precision)
             t[name] = time.perf_counter() - t0
         if i:
             ratios.append(t["other"] / t["this"])
     q = np.percentile(ratios, [25, 50, 75])
-    print(f"sg {pattern} float32, {workers} thread(s): speed this / other {q[1]:.3f} "
+    print(f"{method} {pattern} {precision}, {workers} thread(s): speed this / other {q[1]:.3f} "
           f"[{q[0]:.3f}-{q[2]:.3f}], {rounds} rounds")
     return 0
 
@@ -104,11 +105,13 @@ def main(argv=None):
     ap.add_argument("--pattern", default="mask2")
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--rounds", type=int, default=9)
+    ap.add_argument("--method", default="sg")
+    ap.add_argument("--precision", default="float32", choices=("float32", "float64"))
     a = ap.parse_args(argv)
     other = load_other(a.other)
     if a.what == "same":
         return same(other, a.calls, a.seed)
-    return speed(other, a.pattern, a.workers, a.rounds)
+    return speed(other, a.pattern, a.workers, a.rounds, a.method, a.precision)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,118 @@
+"""exp="libm" in float64 gives the C library's exp() bit for bit, however the kernel computes it.
+
+Eq. 7's gamma factors run through a vector port of glibc's exp() (csrc/rgbz_exp.h) where
+``_kernels.libm_exp_vectorised()`` says this machine's exp() is that algorithm; everywhere
+else through exp() itself. Either way the values are exp()'s: these tests hold the port to
+Python's math.exp (which calls the same exp()), its table to 2^(i/128) computed in 60-digit
+decimals, and the reconstruction to the counting extension, whose scalar loops call exp()
+one value at a time.
+"""
+import math
+import platform
+import re
+from decimal import Decimal, getcontext
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rgbz_fast as rz
+from rgbz_fast import _kernels, _kernels_count
+from rgbz_fast.reconstruction import ReconstructParams
+from rgbz_fast.reconstruction._plans import build_plans
+from rgbz_fast.reconstruction._reconstruct import _run_kernel
+
+HEADER = Path(__file__).resolve().parents[1] / "csrc" / "rgbz_exp.h"
+
+
+def _bits(a):
+    return np.asarray(a, np.float64).view(np.uint64)
+
+
+def test_libm_exp_is_math_exp_bit_for_bit():
+    rng = np.random.default_rng(7)
+    # eq. 7's arguments are -G^2 / (2 sigma^2) <= 0: in [-128, 0] with the default sigma_rel,
+    # anything below with sigma_rel=0; the port covers 2^-54 <= |x| < 512 and exp() the rest
+    parts = [-rng.random(40_000) * s for s in (1e-15, 1e-6, 1e-2, 1.0, 8.0, 36.0, 128.0,
+                                              511.999, 745.0, 800.0)]
+    edges = np.array([0.0, -0.0, -2.0 ** -54, -2.0 ** -55, -2.0 ** -53, -5e-324, -1e-310,
+                      -511.99999999999994, -512.0, -708.39, -708.4, -744.44, -745.2,
+                      -math.log(2) / 256, -math.log(2) / 128, -1.0, -np.inf, 0.5, 1e-300])
+    x = np.concatenate(parts + [edges])
+    out = np.empty_like(x)
+    _kernels.libm_exp(x, out)
+    ref = np.array([math.exp(v) for v in x])
+    differ = np.flatnonzero(_bits(out) != _bits(ref))
+    assert differ.size == 0, f"{differ.size} differ, first x = {x[differ[0]]!r}"
+
+
+def test_libm_exp_of_nan_is_nan():
+    out = np.empty(2)
+    _kernels.libm_exp(np.array([np.nan, -np.nan]), out)
+    assert np.isnan(out).all()
+
+
+def test_the_table_is_two_to_the_i_over_128():
+    # tab[2i + 1] + (i << 45) is the double nearest 2^(i/128); tab[2i] the relative
+    # correction to it, rounded
+    text = HEADER.read_text()
+    body = re.search(r"rgbz_exp_tab\[256\] = \{(.*?)\};", text, re.S).group(1)
+    tab = [int(v, 16) for v in re.findall(r"0x([0-9a-f]{16})u", body)]
+    assert len(tab) == 256
+    getcontext().prec = 60
+    for i in range(128):
+        exact = Decimal(2) ** (Decimal(i) / 128)
+        s = float(exact)
+        tail = float((exact - Decimal(s)) / Decimal(s))
+        assert (tab[2 * i + 1] + (i << 45)) % 2 ** 64 == int(_bits(s)), i
+        assert tab[2 * i] == int(_bits(tail)), i
+
+
+def _cpu_flags():
+    try:
+        text = Path("/proc/cpuinfo").read_text()
+    except OSError:
+        return set()
+    line = next((ln for ln in text.splitlines() if ln.startswith("flags")), "")
+    return set(line.split(":", 1)[-1].split())
+
+
+def test_vectorised_on_an_avx512_glibc_machine():
+    # where the port can stand in (x86-64, AVX-512F with FMA, glibc 2.28 or later, whose
+    # exp() is the algorithm of the port) the start-up sweep must find it agrees: a port
+    # that had drifted from exp() would fail the sweep and leave every call on exp()
+    lib, version = platform.libc_ver()
+    if platform.machine() != "x86_64" or lib != "glibc" or not {"avx512f", "fma"} <= _cpu_flags():
+        pytest.skip("the vector port runs on x86-64 glibc with AVX-512F only")
+    if tuple(int(v) for v in version.split(".")[:2]) < (2, 28):
+        pytest.skip(f"glibc {version} predates the exp() the port follows (2.28)")
+    assert _kernels.libm_exp_vectorised()
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+@pytest.mark.parametrize("method", ["sg", "edi_line", "bi"])
+@pytest.mark.parametrize("sigma_rel", [0.5, 0.0])
+def test_reconstruction_in_float64_libm_equals_the_scalar_exp_build(pattern, method,
+                                                                    sigma_rel):
+    # the counting extension runs one site per block and calls exp() per value: the frame
+    # loop of _kernels (vectorised exponentials where it can) must give the same bits.
+    # sigma_rel=0 leaves arguments below -512, which go to exp() one by one.
+    rng = np.random.default_rng(3)
+    pat = rz.get_pattern(pattern)
+    y, x = np.mgrid[:48, :64]
+    img = np.stack([np.sin(x / 5.0 + c) * np.cos(y / 7.0) for c in range(3)], -1) * 0.4 + 0.5
+    img = np.clip(img + rng.normal(0, 0.02, img.shape), 0, 1)
+    img[:, :20] = 0.3                                             # flat: G = 0, exp(-0)
+    frame = rz.mosaic(img, pat, 11)
+    src = np.ascontiguousarray(frame.data)
+    params = ReconstructParams(precision="float64", exp="libm", sigma_rel=sigma_rel)
+    plan_map, plans = build_plans(pat, method)
+    n_plans = len(plans)
+    plans = plans.view(np.uint8).reshape(-1)
+    out = np.empty_like(src)
+    _run_kernel(src, out, pat, method, params, plan_map, plans, n_plans, 11, None, 1)
+    ref = np.empty_like(src)
+    counts = np.zeros(n_plans * _kernels_count.NOPS, np.uint64)
+    _run_kernel(src, ref, pat, method, params, plan_map, plans, n_plans, 11, None, 1,
+                opcounts=counts, kernels=_kernels_count)
+    assert np.array_equal(out, ref)
