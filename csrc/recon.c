@@ -187,12 +187,25 @@ int rgbz_exp_libm_vectorised(void)
     return rgbz_exp_vec_ready();
 }
 
-RGBZ_CLONES_512 int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n)
+int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n)
 {
     if (!x || !out || n < 0) return RGBZ_EINVAL;
     const int vec = rgbz_exp_vec_ready();
-    for (ptrdiff_t i = 0; i < n; i++)
-        out[i] = vec && rgbz_exp_glibc_covers(x[i]) ? rgbz_exp_glibc_f64(x[i]) : exp(x[i]);
+    (void)vec;
+    /* as the reconstruction's rows: the vector port on a run of values it covers */
+    for (ptrdiff_t i0 = 0; i0 < n; i0 += 64) {
+        const ptrdiff_t m = n - i0 < 64 ? n - i0 : 64;
+        int covered = 1;
+        for (ptrdiff_t i = 0; i < m; i++) covered &= rgbz_exp_glibc_covers(x[i0 + i]);
+#ifdef RGBZ_HAVE_EXP_VEC
+        if (vec && covered) {
+            memcpy(out + i0, x + i0, (size_t)m * sizeof(double));
+            rgbz_exp_glibc_row(out + i0, m);
+            continue;
+        }
+#endif
+        for (ptrdiff_t i = 0; i < m; i++) out[i0 + i] = exp(x[i0 + i]);
+    }
     return RGBZ_OK;
 }
 

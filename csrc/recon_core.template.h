@@ -284,10 +284,13 @@ RGBZ_INLINE void RFN(rgbz_exp_libm_row)(REAL *restrict row, int n)
 {
     int covered = 1;
     BLOOP covered &= rgbz_exp_glibc_covers((double)row[j]);
-    if (covered && sizeof(REAL) == sizeof(double))
-        BLOOP row[j] = (REAL)rgbz_exp_glibc_f64((double)row[j]);
-    else
-        BLOOP row[j] = REXP_LIBM(row[j]);
+#ifdef RGBZ_HAVE_EXP_VEC
+    if (covered && sizeof(REAL) == sizeof(double)) {
+        rgbz_exp_glibc_row((double *)(void *)row, n);
+        return;
+    }
+#endif
+    BLOOP row[j] = REXP_LIBM(row[j]);
 }
 
 /*

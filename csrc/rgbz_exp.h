@@ -19,6 +19,7 @@
 #ifndef RGBZ_EXP_H
 #define RGBZ_EXP_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
@@ -142,5 +143,48 @@ static inline int rgbz_exp_glibc_covers(double x)
     const uint64_t u = rgbz_exp_asu64(x);
     return (uint32_t)((u >> 52) & 0x7ff) - 0x3c9u <= 0x3eu || !(u << 1);
 }
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
+    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#define RGBZ_HAVE_EXP_VEC 1
+#include <immintrin.h>
+
+/* row[j] = rgbz_exp_glibc_f64(row[j]), j < n, eight at a time (the same operations in AVX-512F
+   registers; GCC's generic tuning would not vectorise the table's gathers). Call it only
+   when the CPU has AVX-512F: rgbz_exp_vec_ready(). */
+__attribute__((target("avx512f"), unused))
+static void rgbz_exp_glibc_row(double *row, ptrdiff_t n)
+{
+    const __m512d shift = _mm512_set1_pd(0x1.8p52), inv = _mm512_set1_pd(0x1.71547652b82fep7);
+    const __m512d hi = _mm512_set1_pd(-0x1.62e42fefa0000p-8);
+    const __m512d lo = _mm512_set1_pd(-0x1.cf79abc9e3b3ap-47);
+    const __m512d c2 = _mm512_set1_pd(0x1.ffffffffffdbdp-2);
+    const __m512d c3 = _mm512_set1_pd(0x1.555555555543cp-3);
+    const __m512d c4 = _mm512_set1_pd(0x1.55555cf172b91p-5);
+    const __m512d c5 = _mm512_set1_pd(0x1.1111167a4d017p-7);
+    const __m512i low7 = _mm512_set1_epi64(127);
+    const long long *tab = (const long long *)rgbz_exp_tab;
+    ptrdiff_t j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const __m512d x = _mm512_loadu_pd(row + j);
+        __m512d kd = _mm512_fmadd_pd(x, inv, shift);
+        const __m512i ki = _mm512_castpd_si512(kd);
+        kd = _mm512_sub_pd(kd, shift);
+        __m512d r = _mm512_fmadd_pd(kd, hi, x);
+        r = _mm512_fmadd_pd(kd, lo, r);
+        const __m512i idx = _mm512_slli_epi64(_mm512_and_si512(ki, low7), 1);
+        const __m512d tail = _mm512_castsi512_pd(_mm512_i64gather_epi64(idx, tab, 8));
+        const __m512d scale = _mm512_castsi512_pd(_mm512_add_epi64(
+            _mm512_i64gather_epi64(idx, tab + 1, 8), _mm512_slli_epi64(ki, 45)));
+        const __m512d r2 = _mm512_mul_pd(r, r);
+        const __m512d p23 = _mm512_fmadd_pd(r, c3, c2);
+        const __m512d p45 = _mm512_fmadd_pd(r, c5, c4);
+        const __m512d tmp = _mm512_fmadd_pd(_mm512_mul_pd(r2, r2), p45,
+                                            _mm512_fmadd_pd(p23, r2, _mm512_add_pd(r, tail)));
+        _mm512_storeu_pd(row + j, _mm512_fmadd_pd(scale, tmp, scale));
+    }
+    for (; j < n; j++) row[j] = rgbz_exp_glibc_f64(row[j]);
+}
+#endif
 
 #endif /* RGBZ_EXP_H */
