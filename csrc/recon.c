@@ -138,12 +138,20 @@ int rgbz_recon_setup(const void *src, const void *dst, ptrdiff_t rows, ptrdiff_t
     return RGBZ_OK;
 }
 
-/* rgbz_exp.h's port of glibc's exp() stands in for exp() only where it gives exp()'s bits:
-   the CPU runs the AVX-512F clones (where fma() is an instruction, the clones calling it are
-   the ones that run) and this machine's exp() agrees with it on a sweep of arguments
+/* rgbz_exp.h's ports of glibc's exp() and expf() stand in for them only where they give
+   their bits: the CPU runs AVX-512F (where fma() is an instruction and the ports' row
+   functions run) and this machine's exp() / expf() agree with them on a sweep of arguments
    (eq. 7's are in [-128, 0] with the default sigma_rel, beyond with others). */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
-    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#ifdef RGBZ_HAVE_EXP_VEC
+/* a fixed sequence in [0, 1): xorshift64 */
+static double rgbz_exp_sweep_u(uint64_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 7;
+    *s ^= *s << 17;
+    return (double)(*s >> 11) * 0x1p-53;
+}
+
 __attribute__((target("avx512f")))
 static int rgbz_exp_vec_agrees(void)
 {
@@ -154,12 +162,9 @@ static int rgbz_exp_vec_agrees(void)
     for (size_t i = 0; i < sizeof edges / sizeof edges[0]; i++)
         if (rgbz_exp_asu64(rgbz_exp_glibc_f64(edges[i])) != rgbz_exp_asu64(exp(edges[i])))
             return 0;
-    uint64_t s = 0x9e3779b97f4a7c15u;                   /* a fixed sequence: xorshift64 */
+    uint64_t s = 0x9e3779b97f4a7c15u;
     for (int i = 0; i < 4096; i++) {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        const double u = (double)(s >> 11) * 0x1p-53;   /* [0, 1) */
+        const double u = rgbz_exp_sweep_u(&s);
         const double x = i % 4 == 3 ? -600.0 * u : i % 4 == 2 ? -8.0 * u : -128.0 * u;
         if (rgbz_exp_glibc_covers(x)
                 && rgbz_exp_asu64(rgbz_exp_glibc_f64(x)) != rgbz_exp_asu64(exp(x)))
@@ -167,12 +172,30 @@ static int rgbz_exp_vec_agrees(void)
     }
     return 1;
 }
+
+__attribute__((target("avx512f")))
+static int rgbz_expf_vec_agrees(void)
+{
+    static const float edges[] = {0.0f, -0.0f, -0x1p-60f, -0x1.fffffep-1f, -1.0f, -0.5f,
+                                  -36.0f, -87.99999f, -0x1p-149f, 1.0f, 87.99999f};
+    for (size_t i = 0; i < sizeof edges / sizeof edges[0]; i++) {
+        const float a = rgbz_expf_glibc_f32(edges[i]), b = expf(edges[i]);
+        if (memcmp(&a, &b, sizeof a)) return 0;
+    }
+    uint64_t s = 0x9e3779b97f4a7c15u;
+    for (int i = 0; i < 4096; i++) {
+        const double u = rgbz_exp_sweep_u(&s);
+        const float x = (float)(i % 2 ? -88.0 * u : -8.0 * u);
+        const float a = rgbz_expf_glibc_f32(x), b = expf(x);
+        if (rgbz_expf_glibc_covers(x) && memcmp(&a, &b, sizeof a)) return 0;
+    }
+    return 1;
+}
 #endif
 
 int rgbz_exp_vec_ready(void)
 {
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
-    !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
+#ifdef RGBZ_HAVE_EXP_VEC
     static volatile int ready = -1;     /* a race computes the same answer twice */
     if (ready < 0)
         ready = __builtin_cpu_supports("avx512f") && rgbz_exp_vec_agrees();
@@ -182,29 +205,61 @@ int rgbz_exp_vec_ready(void)
 #endif
 }
 
-int rgbz_exp_libm_vectorised(void)
+int rgbz_expf_vec_ready(void)
 {
-    return rgbz_exp_vec_ready();
+#ifdef RGBZ_HAVE_EXP_VEC
+    static volatile int ready = -1;
+    if (ready < 0)
+        ready = __builtin_cpu_supports("avx512f") && rgbz_expf_vec_agrees();
+    return ready;
+#else
+    return 0;
+#endif
 }
 
+int rgbz_exp_libm_vectorised(int single)
+{
+    return single ? rgbz_expf_vec_ready() : rgbz_exp_vec_ready();
+}
+
+/* as the reconstruction's rows: the vector port on a run of values it covers, else the C
+   library's function value by value */
 int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n)
 {
     if (!x || !out || n < 0) return RGBZ_EINVAL;
     const int vec = rgbz_exp_vec_ready();
-    (void)vec;
-    /* as the reconstruction's rows: the vector port on a run of values it covers */
     for (ptrdiff_t i0 = 0; i0 < n; i0 += 64) {
         const ptrdiff_t m = n - i0 < 64 ? n - i0 : 64;
-        int covered = 1;
+        int covered = vec;
         for (ptrdiff_t i = 0; i < m; i++) covered &= rgbz_exp_glibc_covers(x[i0 + i]);
 #ifdef RGBZ_HAVE_EXP_VEC
-        if (vec && covered) {
+        if (covered) {
             memcpy(out + i0, x + i0, (size_t)m * sizeof(double));
             rgbz_exp_glibc_row(out + i0, m);
             continue;
         }
 #endif
         for (ptrdiff_t i = 0; i < m; i++) out[i0 + i] = exp(x[i0 + i]);
+    }
+    return RGBZ_OK;
+}
+
+int rgbz_libm_exp_f32(const float *x, float *out, ptrdiff_t n)
+{
+    if (!x || !out || n < 0) return RGBZ_EINVAL;
+    const int vec = rgbz_expf_vec_ready();
+    for (ptrdiff_t i0 = 0; i0 < n; i0 += 64) {
+        const ptrdiff_t m = n - i0 < 64 ? n - i0 : 64;
+        int covered = vec;
+        for (ptrdiff_t i = 0; i < m; i++) covered &= rgbz_expf_glibc_covers(x[i0 + i]);
+#ifdef RGBZ_HAVE_EXP_VEC
+        if (covered) {
+            memcpy(out + i0, x + i0, (size_t)m * sizeof(float));
+            rgbz_expf_glibc_row(out + i0, m);
+            continue;
+        }
+#endif
+        for (ptrdiff_t i = 0; i < m; i++) out[i0 + i] = expf(x[i0 + i]);
     }
     return RGBZ_OK;
 }

@@ -276,18 +276,26 @@ static inline REAL RFN(rgbz_exp_narg)(REAL G, REAL ninv)
 }
 
 /*
- * row[j] = exp(row[j]), j < n, with exp()'s bits (exp_mode RGBZ_EXP_LIBM_VEC, double only):
- * rgbz_exp.h's vector port of glibc's exp() when it covers every argument of the row, else
- * exp() one value at a time.
+ * row[j] = exp(row[j]), j < n, with exp()'s (expf()'s) bits (exp_mode RGBZ_EXP_LIBM_VEC):
+ * rgbz_exp.h's vector port of glibc's function when it covers every argument of the row,
+ * else the function one value at a time.
  */
 RGBZ_INLINE void RFN(rgbz_exp_libm_row)(REAL *restrict row, int n)
 {
-    int covered = 1;
-    BLOOP covered &= rgbz_exp_glibc_covers((double)row[j]);
 #ifdef RGBZ_HAVE_EXP_VEC
-    if (covered && sizeof(REAL) == sizeof(double)) {
-        rgbz_exp_glibc_row((double *)(void *)row, n);
-        return;
+    int covered = 1;
+    if (sizeof(REAL) == sizeof(double)) {
+        BLOOP covered &= rgbz_exp_glibc_covers((double)row[j]);
+        if (covered) {
+            rgbz_exp_glibc_row((double *)(void *)row, n);
+            return;
+        }
+    } else {
+        BLOOP covered &= rgbz_expf_glibc_covers((float)row[j]);
+        if (covered) {
+            rgbz_expf_glibc_row((float *)(void *)row, n);
+            return;
+        }
     }
 #endif
     BLOOP row[j] = REXP_LIBM(row[j]);

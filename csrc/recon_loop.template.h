@@ -233,10 +233,12 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
                                  const rgbz_plan *plans, int ry, int rx, const ptrdiff_t *colmap,
                                  const rgbz_params *prm, uint64_t *opcounts)
 {
-    /* exp()'s bits from its vector port where this machine's exp() is that algorithm
-       (rgbz_exp.h) */
-    const int exp_mode = prm->exp_mode == RGBZ_EXP_LIBM && sizeof(REAL) == sizeof(double)
-                         && rgbz_exp_vec_ready() ? RGBZ_EXP_LIBM_VEC : prm->exp_mode;
+    /* exp()'s (expf()'s) bits from its vector port where this machine's function is that
+       algorithm (rgbz_exp.h) */
+    const int exp_mode = prm->exp_mode == RGBZ_EXP_LIBM
+                         && (sizeof(REAL) == sizeof(double) ? rgbz_exp_vec_ready()
+                                                            : rgbz_expf_vec_ready())
+                         ? RGBZ_EXP_LIBM_VEC : prm->exp_mode;
     const RGBZ_CAT(rgbz_knobs, RS) kn = {(REAL)prm->sigma_floor, (REAL)prm->sigma_rel,
                                 (REAL)prm->edge_ratio, exp_mode};
     const REAL maxval = (REAL)prm->maxval;

@@ -260,11 +260,13 @@ int rgbz_tof_depth_iq_row(const double *i_comp, const double *q_comp, ptrdiff_t 
 int rgbz_fast_exp_f32(const float *x, float *out, ptrdiff_t n);
 int rgbz_fast_exp_f64(const double *x, double *out, ptrdiff_t n);
 
-/* exp() of n values as the reconstruction computes it in double with exp_mode RGBZ_EXP_LIBM:
-   exp()'s own bits, through a vector port of glibc's algorithm (rgbz_exp.h) where
-   rgbz_exp_libm_vectorised() says this machine's exp() is that algorithm, else exp() */
+/* exp() / expf() of n values as the reconstruction computes them with exp_mode
+   RGBZ_EXP_LIBM: the C library's own bits, through a vector port of glibc's algorithm
+   (rgbz_exp.h) where rgbz_exp_libm_vectorised(single) says this machine's exp() (single = 0)
+   or expf() (1) is that algorithm, else by calling it */
+int rgbz_libm_exp_f32(const float *x, float *out, ptrdiff_t n);
 int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n);
-int rgbz_exp_libm_vectorised(void);
+int rgbz_exp_libm_vectorised(int single);
 
 /* build information */
 int rgbz_have_openmp(void);

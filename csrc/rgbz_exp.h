@@ -1,20 +1,23 @@
 /*
- * rgbz_exp.h -- the C library's double exponential, eight sites at a time.
+ * rgbz_exp.h -- the C library's exp() and expf(), eight sites at a time.
  *
- * eq. 7's gamma factors call exp() once per group and site in the paper's double-precision
- * path (exp_mode RGBZ_EXP_LIBM); one call per value keeps the loops over the sites from
- * vectorising. glibc (2.28 and later) computes exp() by the algorithm of Arm's
- * optimized-routines (also musl's): x = k ln2/128 + r, exp(x) = 2^(k/128) exp(r), the
- * 128 values 2^(i/128) from a table as a double and a correction, exp(r) by a degree-5
- * polynomial. rgbz_exp_glibc_f64 is that algorithm with its constants and the operations
- * of glibc's x86-64 FMA build (__exp_fma) in their order, written without a branch so that
- * it vectorises: on a machine whose exp() is that build, it returns exp()'s bits for every
- * argument it covers (rgbz_exp_glibc_covers: x = 0, or 2^-54 <= |x| < 512; glibc takes
- * the others down a special path). The frame loops use it only after
- * rgbz_exp_vec_ready() (recon.c) has found the machine's exp() to give the same bits on a
- * sweep of arguments, and call exp() itself for any value it does not cover; everywhere
- * else exp() is called as before. tests/test_kernels_exp.py compares the table with
- * 2^(i/128) computed in 60-digit decimals and the results with exp().
+ * eq. 7's gamma factors call exp() (expf() in float) once per group and site with
+ * exp_mode RGBZ_EXP_LIBM (the paper's double-precision path, the default in float64); one
+ * call per value keeps the loops over the sites from vectorising. glibc computes both by
+ * the algorithms of Arm's optimized-routines (exp since 2.28, expf since 2.27; musl's too):
+ * x = k ln2/N + r, exp(x) = 2^(k/N) exp(r), 2^(i/N) from a table (N = 128 with a
+ * correction for exp, N = 32 for expf, which works in double), exp(r) by a polynomial.
+ * rgbz_exp_glibc_f64 and rgbz_expf_glibc_f32 are those algorithms with their constants and
+ * the operations of glibc's x86-64 FMA builds (__exp_fma, __expf_fma) in their order,
+ * without a branch: on a machine whose functions are those builds they return the same
+ * bits for every argument they cover (rgbz_exp_glibc_covers: x = 0 or 2^-54 <= |x| < 512;
+ * rgbz_expf_glibc_covers: |x| < 88; glibc takes the others down special paths).
+ * The reconstruction uses them (the row functions, AVX-512F) only after
+ * rgbz_exp_vec_ready() / rgbz_expf_vec_ready() (recon.c) have found the machine's
+ * functions give the same bits on a sweep of arguments, and calls the function itself for
+ * any row with a value they do not cover; everywhere else it calls the function as before.
+ * tests/test_kernels_exp.py compares the tables with 2^(i/N) computed in 60-digit decimals
+ * and the results with the C library's.
  */
 #ifndef RGBZ_EXP_H
 #define RGBZ_EXP_H
@@ -30,8 +33,10 @@
 #define RGBZ_EXP_LIBM_VEC 2
 
 /* 1 when exp() of this machine gives the bits of rgbz_exp_glibc_f64 (and the CPU runs
-   the AVX-512 clones, where fma() is one instruction); checked once (recon.c) */
+   the AVX-512 clones, where fma() is one instruction); checked once (recon.c). The same
+   for expf() and rgbz_expf_glibc_f32. */
 int rgbz_exp_vec_ready(void);
+int rgbz_expf_vec_ready(void);
 
 /* 2^(i/128) = asdouble(tab[2i + 1] + (i << 45)) (1 + asdouble(tab[2i])): the double nearest
    2^(i/128) with i << 45 taken out of its bits (the scale adds k << 45 back), and the
@@ -103,6 +108,18 @@ static const uint64_t rgbz_exp_tab[256] = {
     0x3c77893b4d91cd9du, 0x3fefe7c1819e90d8u, 0x3c5305c14160cc89u, 0x3feff3c22b8f71f1u,
 };
 
+/* the same for expf(): 2^(i/32) = asdouble(tabf[i] + (i << 47)), the double nearest */
+static const uint64_t rgbz_expf_tab[32] = {
+    0x3ff0000000000000u, 0x3fefd9b0d3158574u, 0x3fefb5586cf9890fu, 0x3fef9301d0125b51u,
+    0x3fef72b83c7d517bu, 0x3fef54873168b9aau, 0x3fef387a6e756238u, 0x3fef1e9df51fdee1u,
+    0x3fef06fe0a31b715u, 0x3feef1a7373aa9cbu, 0x3feedea64c123422u, 0x3feece086061892du,
+    0x3feebfdad5362a27u, 0x3feeb42b569d4f82u, 0x3feeab07dd485429u, 0x3feea47eb03a5585u,
+    0x3feea09e667f3bcdu, 0x3fee9f75e8ec5f74u, 0x3feea11473eb0187u, 0x3feea589994cce13u,
+    0x3feeace5422aa0dbu, 0x3feeb737b0cdc5e5u, 0x3feec49182a3f090u, 0x3feed503b23e255du,
+    0x3feee89f995ad3adu, 0x3feeff76f2fb5e47u, 0x3fef199bdd85529cu, 0x3fef3720dcef9069u,
+    0x3fef5818dcfba487u, 0x3fef7c97337b9b5fu, 0x3fefa4afa2a490dau, 0x3fefd0765b6e4540u,
+};
+
 static inline uint64_t rgbz_exp_asu64(double x)
 {
     uint64_t u;
@@ -135,6 +152,31 @@ static inline double rgbz_exp_glibc_f64(double x)
     const double p45 = fma(r, 0x1.1111167a4d017p-7, 0x1.55555cf172b91p-5);
     const double tmp = fma(r2 * r2, p45, fma(p23, r2, r + tail));
     return fma(scale, tmp, scale);                             /* scale (1 + tmp) */
+}
+
+/* expf(x) as glibc's __expf_fma computes it for |x| < 88, in double: x 32 / ln2 = k + r,
+   2^(k/32) from the table, 2^(r/32) by a cubic, the product rounded to float */
+static inline float rgbz_expf_glibc_f32(float x)
+{
+    const double xd = (double)x, shift = 0x1.8p52, inv = 0x1.71547652b82fep5;
+    double kd = fma(inv, xd, shift);
+    const uint64_t ki = rgbz_exp_asu64(kd);
+    kd -= shift;
+    const double r = fma(inv, xd, -kd);
+    const double s = rgbz_exp_asf64(rgbz_expf_tab[ki & 31] + (ki << 47));
+    const double z = fma(r, 0x1.c6af84b912394p-20, 0x1.ebfce50fac4f3p-13);
+    const double r2 = r * r;
+    double y = fma(r, 0x1.62e42ff0c52d6p-6, 1.0);
+    y = fma(z, r2, y);
+    return (float)(y * s);
+}
+
+/* whether rgbz_expf_glibc_f32(x) is glibc's expf(x): |x| < 88 */
+static inline int rgbz_expf_glibc_covers(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return ((u >> 20) & 0x7ff) <= 0x42au;
 }
 
 /* whether rgbz_exp_glibc_f64(x) is glibc's exp(x): x = +-0, or 2^-54 <= |x| < 512 */
@@ -184,6 +226,35 @@ static void rgbz_exp_glibc_row(double *row, ptrdiff_t n)
         _mm512_storeu_pd(row + j, _mm512_fmadd_pd(scale, tmp, scale));
     }
     for (; j < n; j++) row[j] = rgbz_exp_glibc_f64(row[j]);
+}
+
+/* row[j] = rgbz_expf_glibc_f32(row[j]), j < n, eight at a time in doubles (AVX-512F) */
+__attribute__((target("avx512f"), unused))
+static void rgbz_expf_glibc_row(float *row, ptrdiff_t n)
+{
+    const __m512d shift = _mm512_set1_pd(0x1.8p52), inv = _mm512_set1_pd(0x1.71547652b82fep5);
+    const __m512d c0 = _mm512_set1_pd(0x1.c6af84b912394p-20);
+    const __m512d c1 = _mm512_set1_pd(0x1.ebfce50fac4f3p-13);
+    const __m512d c2 = _mm512_set1_pd(0x1.62e42ff0c52d6p-6), one = _mm512_set1_pd(1.0);
+    const __m512i low5 = _mm512_set1_epi64(31);
+    const long long *tab = (const long long *)rgbz_expf_tab;
+    ptrdiff_t j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const __m512d xd = _mm512_cvtps_pd(_mm256_loadu_ps(row + j));
+        __m512d kd = _mm512_fmadd_pd(inv, xd, shift);
+        const __m512i ki = _mm512_castpd_si512(kd);
+        kd = _mm512_sub_pd(kd, shift);
+        const __m512d r = _mm512_fmsub_pd(inv, xd, kd);
+        const __m512d s = _mm512_castsi512_pd(_mm512_add_epi64(
+            _mm512_i64gather_epi64(_mm512_and_si512(ki, low5), tab, 8),
+            _mm512_slli_epi64(ki, 47)));
+        const __m512d z = _mm512_fmadd_pd(r, c0, c1);
+        const __m512d r2 = _mm512_mul_pd(r, r);
+        __m512d y = _mm512_fmadd_pd(r, c2, one);
+        y = _mm512_fmadd_pd(z, r2, y);
+        _mm256_storeu_ps(row + j, _mm512_cvtpd_ps(_mm512_mul_pd(y, s)));
+    }
+    for (; j < n; j++) row[j] = rgbz_expf_glibc_f32(row[j]);
 }
 #endif
 

@@ -1,11 +1,13 @@
-"""exp="libm" in float64 gives the C library's exp() bit for bit, however the kernel computes it.
+"""exp="libm" gives the C library's exp() (expf() in float32) bit for bit, however the kernel
+computes it.
 
-Eq. 7's gamma factors run through a vector port of glibc's exp() (csrc/rgbz_exp.h) where
-``_kernels.libm_exp_vectorised()`` says this machine's exp() is that algorithm; everywhere
-else through exp() itself. Either way the values are exp()'s: these tests hold the port to
-Python's math.exp (which calls the same exp()), its table to 2^(i/128) computed in 60-digit
-decimals, and the reconstruction to the counting extension, whose scalar loops call exp()
-one value at a time.
+Eq. 7's gamma factors run through a vector port of glibc's exp() / expf() (csrc/rgbz_exp.h)
+where ``_kernels.libm_exp_vectorised()`` says this machine's function is that algorithm;
+everywhere else through the function itself. Either way the values are the C library's:
+these tests hold the ports to Python's math.exp (which calls the same exp()) and to expf()
+called through ctypes, the tables to 2^(i/128) and 2^(i/32) computed in 60-digit decimals,
+and the reconstruction to the counting extension, whose scalar loops call the function one
+value at a time.
 """
 import math
 import platform
@@ -46,13 +48,38 @@ def test_libm_exp_is_math_exp_bit_for_bit():
     assert differ.size == 0, f"{differ.size} differ, first x = {x[differ[0]]!r}"
 
 
+def _c_expf():
+    import ctypes
+    import ctypes.util
+
+    name = ctypes.util.find_library("m")
+    if name is None:
+        pytest.skip("no C math library to call expf() from")
+    lib = ctypes.CDLL(name)
+    lib.expf.restype, lib.expf.argtypes = ctypes.c_float, [ctypes.c_float]
+    return lib.expf
+
+
+def test_libm_expf_is_the_c_librarys_expf_bit_for_bit():
+    expf = _c_expf()
+    rng = np.random.default_rng(8)
+    parts = [-rng.random(20_000) * s for s in (1e-30, 1e-6, 1.0, 8.0, 36.0, 87.99, 104.0, 200.0)]
+    edges = np.array([0.0, -0.0, -1e-45, -87.99999, -88.0, -103.9, -104.0, -np.inf, 1.0, 88.5])
+    x = np.concatenate(parts + [edges]).astype(np.float32)
+    out = np.empty_like(x)
+    _kernels.libm_exp(x, out)
+    ref = np.array([expf(float(v)) for v in x], np.float32)
+    differ = np.flatnonzero(out.view(np.uint32) != ref.view(np.uint32))
+    assert differ.size == 0, f"{differ.size} differ, first x = {x[differ[0]]!r}"
+
+
 def test_libm_exp_of_nan_is_nan():
     out = np.empty(2)
     _kernels.libm_exp(np.array([np.nan, -np.nan]), out)
     assert np.isnan(out).all()
 
 
-def test_the_table_is_two_to_the_i_over_128():
+def test_the_tables_are_powers_of_two():
     # tab[2i + 1] + (i << 45) is the double nearest 2^(i/128); tab[2i] the relative
     # correction to it, rounded
     text = HEADER.read_text()
@@ -66,6 +93,13 @@ def test_the_table_is_two_to_the_i_over_128():
         tail = float((exact - Decimal(s)) / Decimal(s))
         assert (tab[2 * i + 1] + (i << 45)) % 2 ** 64 == int(_bits(s)), i
         assert tab[2 * i] == int(_bits(tail)), i
+    # expf()'s: tabf[i] + (i << 47) is the double nearest 2^(i/32)
+    body = re.search(r"rgbz_expf_tab\[32\] = \{(.*?)\};", text, re.S).group(1)
+    tabf = [int(v, 16) for v in re.findall(r"0x([0-9a-f]{16})u", body)]
+    assert len(tabf) == 32
+    for i in range(32):
+        s = float(Decimal(2) ** (Decimal(i) / 32))
+        assert (tabf[i] + (i << 47)) % 2 ** 64 == int(_bits(s)), i
 
 
 def _cpu_flags():
@@ -86,14 +120,15 @@ def test_vectorised_on_an_avx512_glibc_machine():
         pytest.skip("the vector port runs on x86-64 glibc with AVX-512F only")
     if tuple(int(v) for v in version.split(".")[:2]) < (2, 28):
         pytest.skip(f"glibc {version} predates the exp() the port follows (2.28)")
-    assert _kernels.libm_exp_vectorised()
+    assert _kernels.libm_exp_vectorised() and _kernels.libm_exp_vectorised(single=True)
 
 
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 @pytest.mark.parametrize("method", ["sg", "edi_line", "bi"])
 @pytest.mark.parametrize("sigma_rel", [0.5, 0.0])
-def test_reconstruction_in_float64_libm_equals_the_scalar_exp_build(pattern, method,
-                                                                    sigma_rel):
+@pytest.mark.parametrize("precision", ["float64", "float32"])
+def test_reconstruction_with_libm_equals_the_scalar_exp_build(pattern, method, sigma_rel,
+                                                              precision):
     # the counting extension runs one site per block and calls exp() per value: the frame
     # loop of _kernels (vectorised exponentials where it can) must give the same bits.
     # sigma_rel=0 leaves arguments below -512, which go to exp() one by one.
@@ -105,7 +140,7 @@ def test_reconstruction_in_float64_libm_equals_the_scalar_exp_build(pattern, met
     img[:, :20] = 0.3                                             # flat: G = 0, exp(-0)
     frame = rz.mosaic(img, pat, 11)
     src = np.ascontiguousarray(frame.data)
-    params = ReconstructParams(precision="float64", exp="libm", sigma_rel=sigma_rel)
+    params = ReconstructParams(precision=precision, exp="libm", sigma_rel=sigma_rel)
     plan_map, plans = build_plans(pat, method)
     n_plans = len(plans)
     plans = plans.view(np.uint8).reshape(-1)

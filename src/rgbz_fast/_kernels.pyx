@@ -50,21 +50,26 @@ def fast_exp(const rgb_t[::1] x, rgb_t[::1] out):
     _raise_for(status)
 
 
-def libm_exp(const double[::1] x, double[::1] out):
-    """exp() of every element of ``x`` as the reconstruction computes it in float64 with
-    exp="libm": the C library's bits (its vector port where :func:`libm_exp_vectorised`)."""
+def libm_exp(const rgb_t[::1] x, rgb_t[::1] out):
+    """exp() (float64) or expf() (float32) of every element of ``x`` as the reconstruction
+    computes it with exp="libm": the C library's bits (its vector port where
+    :func:`libm_exp_vectorised`)."""
     cdef int status
     if x.shape[0] == 0:
         return
     with nogil:
-        status = rgbz_libm_exp_f64(&x[0], &out[0], x.shape[0])
+        if rgb_t is float:
+            status = rgbz_libm_exp_f32(&x[0], &out[0], x.shape[0])
+        else:
+            status = rgbz_libm_exp_f64(&x[0], &out[0], x.shape[0])
     _raise_for(status)
 
 
-def libm_exp_vectorised():
-    """Whether exp="libm" in float64 runs through the vector port of glibc's exp() (the CPU
-    runs the AVX-512F code and this machine's exp() gives the port's bits), not exp()."""
-    return bool(rgbz_exp_libm_vectorised())
+def libm_exp_vectorised(bint single=False):
+    """Whether exp="libm" in float64 (``single``: float32) runs through the vector port of
+    glibc's exp() (expf()): the CPU runs AVX-512F and this machine's function gives the
+    port's bits; otherwise the reconstruction calls the function itself."""
+    return bool(rgbz_exp_libm_vectorised(single))
 
 
 def demosaic_malvar(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst, const int32_t[::1] phase,

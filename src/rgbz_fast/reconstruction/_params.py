@@ -66,9 +66,9 @@ class ReconstructParams:
         is ``"fast"`` in float32 -- its error is of the order of float32's own
         rounding, and it changes the mean CFA PSNR on Kodak by less than
         1e-5 dB (docs/reports/tradeoff.md) -- and ``"libm"`` in float64, so
-        that float64 stays the accurate reference. ``"libm"`` in float64
-        gives the C library's ``exp()`` bit for bit; on x86-64 with AVX-512F
-        and glibc it computes those bits eight sites at a time
+        that float64 stays the accurate reference. ``"libm"`` gives the C
+        library's ``exp()`` (``expf()`` in float32) bit for bit; on x86-64
+        with AVX-512F and glibc it computes those bits eight sites at a time
         (docs/guide/performance.md).
     domain : {"intensity", "colour_difference"}
         Interpolate the candidates themselves (eq. 13, the paper) or their
