@@ -5,8 +5,10 @@
  *
  * Every value is computed by the operations of MT_LAB, mt_f and mt_cbrt, in their order, each
  * an IEEE operation rounded once (no contraction: the intrinsics name each multiply and add;
- * the only FMAs are those of mt_qfma when the caller asks for it), so the results are the
- * C loop's bit for bit, for any input, NaN and infinities included. What differs is the
+ * the FMAs are those of mt_qfma when the caller asks for it), except mt_cbrt's scaling of its
+ * argument, which mt512_reduce computes exactly by other operations, equal wherever the root
+ * is used; so the results are the C loop's bit for bit, for any input, NaN and infinities
+ * included. What differs is the
  * schedule: the C loop computes one pixel vector's three cube roots one after the other, and
  * each root is a chain of about 130 cycles (two divisions of about 22 cycles each, waited
  * for) that the out-of-order window cannot overlap with the next vector's; here the three
@@ -22,21 +24,22 @@
 #define MT_B(x) _mm512_set1_pd(x)
 #define MT_AI static inline __attribute__((always_inline))
 
-/* mt_cbrt's scaling of t by 8^k into [1/8, 1) and its factor s, the same selects in order */
+/* mt_cbrt's scaling of t into [1/8, 1) and its factor s: t 8^-k and 2^k, both exact, k the
+   number of scalings by 1/8 its three selects make (-2 to 1 for the t in (MT_LAB_T3, 8) whose
+   root is used; smaller or larger t, NaN and infinities take mt_f's linear branch or
+   mt_lab_any, which discard it). With e = floor(log2 t) (getexp), t 8^-k in [1/8, 1) is
+   e - 3 k in [-3, -1], k = ceil((e + 1) / 3), computed as ceil(fma(e, c, c)) for c = 1/3
+   rounded: for e + 1 = 3 j the product is j + 3 j (c - 1/3), which rounds to j (|j| <= 1:
+   below half an ulp, or the tie 2^-54 that rounds to the even j); otherwise it is at least
+   1/3 - 1e-16 away from an integer. Four operations of the FMA ports where the selects
+   took nine. */
 MT_AI void mt512_reduce(MT_V t, MT_V *tr, MT_V *s)
 {
-    MT_V sc = MT_B(1.0);
-    const __mmask8 lo = _mm512_cmp_pd_mask(t, MT_B(0x1p-6), _CMP_LT_OQ);
-    t = _mm512_mask_mul_pd(t, lo, t, MT_B(64.0));
-    sc = _mm512_mask_blend_pd(lo, sc, MT_B(0.25));
-    const __mmask8 mid = _mm512_cmp_pd_mask(t, MT_B(0.125), _CMP_LT_OQ);
-    t = _mm512_mask_mul_pd(t, mid, t, MT_B(8.0));
-    sc = _mm512_mask_mul_pd(sc, mid, sc, MT_B(0.5));
-    const __mmask8 hi = _mm512_cmp_pd_mask(t, MT_B(1.0), _CMP_GE_OQ);
-    t = _mm512_mask_mul_pd(t, hi, t, MT_B(0.125));
-    sc = _mm512_mask_blend_pd(hi, sc, MT_B(2.0));
-    *tr = t;
-    *s = sc;
+    const MT_V k = _mm512_roundscale_pd(
+        _mm512_fmadd_pd(_mm512_getexp_pd(t), MT_B(1.0 / 3.0), MT_B(1.0 / 3.0)),
+        _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC);
+    *tr = _mm512_scalef_pd(t, _mm512_mul_pd(k, MT_B(-3.0)));
+    *s = _mm512_scalef_pd(MT_B(1.0), k);
 }
 
 /* mt_cbrt's cubic, ((a t - b) t + c) t + d */
