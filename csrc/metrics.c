@@ -171,6 +171,8 @@ static inline double mt_qfma(double x, double c, double rc)
         B = 200.0 * (fy_ - fz_);                                                             \
     } while (0)
 
+#include "metrics_lab512.h"
+
 static void mt_lab_any(double r, double g, double b, double *L, double *A, double *B)
 {
     double tx, ty, tz;

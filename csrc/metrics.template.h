@@ -435,8 +435,14 @@ static void MT(mt_lab_run)(const IN_T *src, ptrdiff_t n, double scale, const dou
         }
     }
     double tmax = 0.0;
+    ptrdiff_t j0 = 0;
+#if defined(MT_HAVE_LAB512)
+    /* the same operations, scheduled for AVX-512 (metrics_lab512.h, built only with FMA, so
+       with MT_QFMA for integer codes as below); the loop below does the last n % 8 */
+    j0 = mt_lab512(lr, lg, lb, n, IN_IS_INT, L, A, B, os, &tmax);
+#endif
     MT_SIMD_MAX(tmax)
-    for (ptrdiff_t j = 0; j < n; j++) {
+    for (ptrdiff_t j = j0; j < n; j++) {
 #if IN_IS_INT && defined(MT_HAVE_QFMA)
         MT_LAB(lr[j], lg[j], lb[j], L[j * os], A[j * os], B[j * os], tmax, MT_QFMA);
 #else

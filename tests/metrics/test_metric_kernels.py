@@ -412,6 +412,47 @@ def test_every_instruction_set_gives_the_lab_of_the_divisions(rng, dtype, bits):
         _kernels.metrics_use_isa(None)
 
 
+def _lab_rows(rgb, scale):
+    """The Lab of rgb (rows, cols, 3) both ways the kernels compute it: pixel by pixel into an
+    (n, 3) array (srgb_to_lab), and row by row into planes (the zipper's best dE, which needs
+    the Lab of every pixel and its neighbours)."""
+    lab = np.empty((rgb.shape[0] * rgb.shape[1], 3))
+    _kernels.srgb_to_lab(np.ascontiguousarray(rgb.reshape(-1, 3)), scale, lab, 1)
+    best = np.empty((rgb.shape[0] - 2, rgb.shape[1] - 2))
+    nearest = np.empty(best.shape, np.uint8)
+    _kernels.zipper_reference(np.ascontiguousarray(rgb), scale, best, nearest, 1)
+    return lab, best, nearest
+
+
+@pytest.mark.parametrize("dtype, scale", [(np.uint8, 255.0), (np.uint16, 65535.0),
+                                          (np.float32, 1.0), (np.float64, 1.0)])
+def test_every_instruction_set_gives_the_same_lab_at_every_row_length(rng, dtype, scale):
+    # the AVX-512 Lab loop (metrics_lab512.h) does 8 pixels at a time and leaves the last
+    # n % 8 to the C loop; floats reach it with NaN, infinities, negative values and ratios
+    # >= 8 (the slow path)
+    isas = _kernels.metrics_isas_available()
+    shapes = [(3, cols) for cols in range(3, 42)] + [(5, 517)]
+    try:
+        for rows, cols in shapes:
+            if np.issubdtype(dtype, np.integer):
+                rgb = rng.integers(0, int(scale) + 1, (rows, cols, 3)).astype(dtype)
+            else:
+                rgb = rng.uniform(-0.2, 1.3, (rows, cols, 3))
+                special = [np.nan, np.inf, -np.inf, 9.0, 1e6, -1.0, 0.0]
+                rgb.reshape(-1)[rng.choice(rgb.size, min(rgb.size // 4, 40), replace=False)] = \
+                    rng.choice(special, min(rgb.size // 4, 40))
+                rgb = rgb.astype(dtype)
+            got = {}
+            for isa in isas:
+                _kernels.metrics_use_isa(isa)
+                got[isa] = _lab_rows(rgb, scale)
+            for isa in isas:
+                for a, b in zip(got[isa], got["generic"]):
+                    assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), (isa, cols)
+    finally:
+        _kernels.metrics_use_isa(None)
+
+
 @pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
 @pytest.mark.parametrize("channels", [1, 2, 3, 4])
 def test_planar_copy_is_numpy_moveaxis(rng, dtype, channels):
