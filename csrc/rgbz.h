@@ -267,6 +267,9 @@ int rgbz_fast_exp_f64(const double *x, double *out, ptrdiff_t n);
 int rgbz_libm_exp_f32(const float *x, float *out, ptrdiff_t n);
 int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n);
 int rgbz_exp_libm_vectorised(int single);
+/* the ports alone, value by value, for the arguments they cover (for the tests) */
+int rgbz_exp_port_f32(const float *x, float *out, ptrdiff_t n);
+int rgbz_exp_port_f64(const double *x, double *out, ptrdiff_t n);
 
 /* build information */
 int rgbz_have_openmp(void);

@@ -4,15 +4,18 @@ computes it.
 Eq. 7's gamma factors run through a vector port of glibc's exp() / expf() (csrc/rgbz_exp.h)
 where ``_kernels.libm_exp_vectorised()`` says this machine's function is that algorithm;
 everywhere else through the function itself. Either way the values are the C library's:
-these tests hold the ports to Python's math.exp (which calls the same exp()) and to expf()
-called through ctypes, the tables to 2^(i/128) and 2^(i/32) computed in 60-digit decimals,
-and the reconstruction to the counting extension, whose scalar loops call the function one
-value at a time.
+these tests hold the results to Python's math.exp (which calls the same exp()) and to expf()
+called through ctypes, the ports to a Python model of glibc's algorithms (each fused
+multiply-add rounded once through Fraction), the tables to 2^(i/128) and 2^(i/32) computed
+in 60-digit decimals, and the reconstruction to the counting extension, whose scalar loops
+call the function one value at a time. Where the machine's functions are that algorithm and
+the CPU runs AVX-512F, the port must be in use.
 """
 import math
 import platform
 import re
 from decimal import Decimal, getcontext
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -111,16 +114,98 @@ def _cpu_flags():
     return set(line.split(":", 1)[-1].split())
 
 
-def test_vectorised_on_an_avx512_glibc_machine():
-    # where the port can stand in (x86-64, AVX-512F with FMA, glibc 2.28 or later, whose
-    # exp() is the algorithm of the port) the start-up sweep must find it agrees: a port
-    # that had drifted from exp() would fail the sweep and leave every call on exp()
-    lib, version = platform.libc_ver()
-    if platform.machine() != "x86_64" or lib != "glibc" or not {"avx512f", "fma"} <= _cpu_flags():
+# -- a model of glibc's algorithms: every fused multiply-add rounded once, exactly (Fraction) --
+
+_H = float.fromhex
+
+def _fma(a, b, c):
+    return float(Fraction(a) * Fraction(b) + Fraction(c))
+
+
+def _u64(x):
+    return int(np.float64(x).view(np.uint64))
+
+
+def _f64(u):
+    return float(np.uint64(u % 2 ** 64).view(np.float64))
+
+
+def _tables():
+    text = HEADER.read_text()
+    out = []
+    for name in ("rgbz_exp_tab", "rgbz_expf_tab"):
+        body = re.search(name + r"\[\d+\] = \{(.*?)\};", text, re.S).group(1)
+        out.append([int(v, 16) for v in re.findall(r"0x([0-9a-f]{16})u", body)])
+    return out
+
+
+def _exp_model(x, tab):
+    """glibc's exp() (its x86-64 FMA build, __exp_fma) for 2^-54 <= |x| < 512."""
+    shift = _H("0x1.8p52")
+    kd = _fma(x, _H("0x1.71547652b82fep7"), shift)
+    ki = _u64(kd)
+    kd -= shift
+    r = _fma(kd, -_H("0x1.cf79abc9e3b3ap-47"), _fma(kd, -_H("0x1.62e42fefa0000p-8"), x))
+    idx = 2 * (ki & 127)
+    tail, scale = _f64(tab[idx]), _f64(tab[idx + 1] + (ki << 45))
+    r2 = r * r
+    p23 = _fma(r, _H("0x1.555555555543cp-3"), _H("0x1.ffffffffffdbdp-2"))
+    p45 = _fma(r, _H("0x1.1111167a4d017p-7"), _H("0x1.55555cf172b91p-5"))
+    return _fma(scale, _fma(r2 * r2, p45, _fma(p23, r2, r + tail)), scale)
+
+
+def _expf_model(x, tabf):
+    """glibc's expf() (__expf_fma) for |x| < 88, x a float32."""
+    xd, shift, inv = float(x), _H("0x1.8p52"), _H("0x1.71547652b82fep5")
+    kd = _fma(inv, xd, shift)
+    ki = _u64(kd)
+    kd -= shift
+    r = _fma(inv, xd, -kd)
+    s = _f64(tabf[ki & 31] + (ki << 47))
+    z = _fma(r, _H("0x1.c6af84b912394p-20"), _H("0x1.ebfce50fac4f3p-13"))
+    y = _fma(z, r * r, _fma(r, _H("0x1.62e42ff0c52d6p-6"), 1.0))
+    return np.float32(y * s)
+
+
+def _sample():
+    rng = np.random.default_rng(11)
+    x = np.concatenate([-rng.random(300) * s for s in (1e-6, 1.0, 8.0, 36.0, 128.0, 511.9)])
+    return np.concatenate([x, [0.0, -0.0, -2.0 ** -54, -1.0, 1.0, 88.5]])
+
+
+def test_the_ports_are_glibcs_algorithms():
+    # the C ports, value by value, against the model of glibc's algorithms: the same bits
+    # (on any machine: fma() is exact wherever it runs)
+    tab, tabf = _tables()
+    x = _sample()
+    out = np.empty_like(x)
+    _kernels.exp_port(x, out)
+    model = np.array([_exp_model(float(v), tab) for v in x])
+    assert np.array_equal(_bits(out), _bits(model))
+    xf = np.clip(x, -87.9, 87.9).astype(np.float32)
+    outf = np.empty_like(xf)
+    _kernels.exp_port(xf, outf)
+    modelf = np.array([_expf_model(v, tabf) for v in xf], np.float32)
+    assert np.array_equal(outf.view(np.uint32), modelf.view(np.uint32))
+
+
+def test_vectorised_where_the_c_library_is_that_algorithm():
+    # where the CPU runs AVX-512F and this machine's exp() / expf() give the model's bits,
+    # the start-up sweep must find it and vectorise; a port that had drifted would fail the
+    # sweep and leave every call on the C library's function
+    if platform.machine() != "x86_64" or platform.libc_ver()[0] != "glibc" \
+            or not {"avx512f", "fma"} <= _cpu_flags():
         pytest.skip("the vector port runs on x86-64 glibc with AVX-512F only")
-    if tuple(int(v) for v in version.split(".")[:2]) < (2, 28):
-        pytest.skip(f"glibc {version} predates the exp() the port follows (2.28)")
-    assert _kernels.libm_exp_vectorised() and _kernels.libm_exp_vectorised(single=True)
+    tab, tabf = _tables()
+    x = _sample()
+    if any(math.exp(v) != _exp_model(float(v), tab) for v in x):
+        pytest.skip("this machine's exp() is not the algorithm of glibc's FMA build")
+    assert _kernels.libm_exp_vectorised()
+    expf = _c_expf()
+    xf = np.clip(x, -87.9, 87.9).astype(np.float32)
+    if any(np.float32(expf(float(v))) != _expf_model(v, tabf) for v in xf):
+        pytest.skip("this machine's expf() is not the algorithm of glibc's FMA build")
+    assert _kernels.libm_exp_vectorised(single=True)
 
 
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])

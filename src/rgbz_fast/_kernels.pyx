@@ -65,6 +65,20 @@ def libm_exp(const rgb_t[::1] x, rgb_t[::1] out):
     _raise_for(status)
 
 
+def exp_port(const rgb_t[::1] x, rgb_t[::1] out):
+    """The vector port's value of exp(x) (float64) or expf(x) (float32), one value at a time,
+    whatever this machine's own function gives (csrc/rgbz_exp.h; for the tests)."""
+    cdef int status
+    if x.shape[0] == 0:
+        return
+    with nogil:
+        if rgb_t is float:
+            status = rgbz_exp_port_f32(&x[0], &out[0], x.shape[0])
+        else:
+            status = rgbz_exp_port_f64(&x[0], &out[0], x.shape[0])
+    _raise_for(status)
+
+
 def libm_exp_vectorised(bint single=False):
     """Whether exp="libm" in float64 (``single``: float32) runs through the vector port of
     glibc's exp() (expf()): the CPU runs AVX-512F and this machine's function gives the

@@ -113,6 +113,8 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_libm_exp_f32(const float *x, float *out, Py_ssize_t n)
     int rgbz_libm_exp_f64(const double *x, double *out, Py_ssize_t n)
     int rgbz_exp_libm_vectorised(int single)
+    int rgbz_exp_port_f32(const float *x, float *out, Py_ssize_t n)
+    int rgbz_exp_port_f64(const double *x, double *out, Py_ssize_t n)
     int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                              Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
                              int mode, int workers)
