@@ -81,9 +81,11 @@ typedef int64_t lrn_m4 __attribute__((vector_size(32)));
 #define LRN_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
 #endif
 
-LRN_INLINE void lrn_lane_sums_f32(const lrn_v8f *a, lrn_v8f *sum)
+/* the 8 x 8 transpose in registers: T[l] holds lane l of a[0] .. a[7] (the unpack, pair and
+   half shuffles); z_guided.c writes its cells' terms with it */
+LRN_INLINE void lrn_transpose8_f32(const lrn_v8f *a, lrn_v8f *T)
 {
-    lrn_v8f t[8], u[8], T[8];
+    lrn_v8f t[8], u[8];
     /* t[2m], t[2m + 1]: sites 2m and 2m + 1, lanes (0, 1, 4, 5) and (2, 3, 6, 7) interleaved */
     for (int i = 0; i < 8; i += 2) {
         t[i] = LRN_SHUF8(a[i], a[i + 1], 0, 8, 1, 9, 4, 12, 5, 13);
@@ -96,11 +98,28 @@ LRN_INLINE void lrn_lane_sums_f32(const lrn_v8f *a, lrn_v8f *sum)
         u[i + 2] = LRN_SHUF8(t[i + 1], t[i + 3], 0, 1, 8, 9, 4, 5, 12, 13);
         u[i + 3] = LRN_SHUF8(t[i + 1], t[i + 3], 2, 3, 10, 11, 6, 7, 14, 15);
     }
-    /* T[l]: lane l of sites 0 .. 7 */
     for (int l = 0; l < 4; l++) {
         T[l] = LRN_SHUF8(u[l], u[l + 4], 0, 1, 2, 3, 8, 9, 10, 11);
         T[l + 4] = LRN_SHUF8(u[l], u[l + 4], 4, 5, 6, 7, 12, 13, 14, 15);
     }
+}
+
+/* the 4 x 4 transpose of doubles: T[l] holds lane l of a[0] .. a[3] */
+LRN_INLINE void lrn_transpose4_f64(const lrn_v4d *a, lrn_v4d *T)
+{
+    /* t0, t1: sites 0 and 1, lanes (0, 2) and (1, 3) interleaved; t2, t3: sites 2, 3 */
+    const lrn_v4d t0 = LRN_SHUF4(a[0], a[1], 0, 4, 2, 6), t1 = LRN_SHUF4(a[0], a[1], 1, 5, 3, 7);
+    const lrn_v4d t2 = LRN_SHUF4(a[2], a[3], 0, 4, 2, 6), t3 = LRN_SHUF4(a[2], a[3], 1, 5, 3, 7);
+    T[0] = LRN_SHUF4(t0, t2, 0, 1, 4, 5);
+    T[1] = LRN_SHUF4(t1, t3, 0, 1, 4, 5);
+    T[2] = LRN_SHUF4(t0, t2, 2, 3, 6, 7);
+    T[3] = LRN_SHUF4(t1, t3, 2, 3, 6, 7);
+}
+
+LRN_INLINE void lrn_lane_sums_f32(const lrn_v8f *a, lrn_v8f *sum)
+{
+    lrn_v8f T[8];
+    lrn_transpose8_f32(a, T);
     lrn_v8f s = T[0] + T[1];
     for (int l = 2; l < 8; l++) s += T[l];
     *sum = s;
@@ -108,16 +127,13 @@ LRN_INLINE void lrn_lane_sums_f32(const lrn_v8f *a, lrn_v8f *sum)
 
 LRN_INLINE void lrn_lane_sums_f64(const lrn_v4d *a, lrn_v4d *sum)
 {
-    /* t[0], t[1]: sites 0 and 1, lanes (0, 2) and (1, 3) interleaved; t[2], t[3]: sites 2, 3 */
-    const lrn_v4d t0 = LRN_SHUF4(a[0], a[1], 0, 4, 2, 6), t1 = LRN_SHUF4(a[0], a[1], 1, 5, 3, 7);
-    const lrn_v4d t2 = LRN_SHUF4(a[2], a[3], 0, 4, 2, 6), t3 = LRN_SHUF4(a[2], a[3], 1, 5, 3, 7);
-    lrn_v4d s = LRN_SHUF4(t0, t2, 0, 1, 4, 5) + LRN_SHUF4(t1, t3, 0, 1, 4, 5);
-    s += LRN_SHUF4(t0, t2, 2, 3, 6, 7);
-    s += LRN_SHUF4(t1, t3, 2, 3, 6, 7);
+    lrn_v4d T[4];
+    lrn_transpose4_f64(a, T);
+    lrn_v4d s = T[0] + T[1];
+    s += T[2];
+    s += T[3];
     *sum = s;
 }
-#undef LRN_SHUF8
-#undef LRN_SHUF4
 #endif
 
 /* the energy classes' colours of the sites of row y from column x0 (every px-th, px even, so

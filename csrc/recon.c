@@ -193,26 +193,17 @@ static int rgbz_expf_vec_agrees(void)
 }
 #endif
 
-int rgbz_exp_vec_ready(void)
+int rgbz_exp_libm_vectorised(int single)
 {
 #ifdef RGBZ_HAVE_EXP_VEC
-    static volatile int ready = -1;     /* a race computes the same answer twice */
-    if (ready < 0)
-        ready = __builtin_cpu_supports("avx512f") && rgbz_exp_vec_agrees();
-    return ready;
+    static volatile int ready[2] = {-1, -1};     /* a race computes the same answer twice */
+    const int k = single != 0;
+    if (ready[k] < 0)
+        ready[k] = __builtin_cpu_supports("avx512f")
+                   && (k ? rgbz_expf_vec_agrees() : rgbz_exp_vec_agrees());
+    return ready[k];
 #else
-    return 0;
-#endif
-}
-
-int rgbz_expf_vec_ready(void)
-{
-#ifdef RGBZ_HAVE_EXP_VEC
-    static volatile int ready = -1;
-    if (ready < 0)
-        ready = __builtin_cpu_supports("avx512f") && rgbz_expf_vec_agrees();
-    return ready;
-#else
+    (void)single;
     return 0;
 #endif
 }
@@ -230,53 +221,6 @@ int rgbz_exp_port_f32(const float *x, float *out, ptrdiff_t n)
 {
     if (!x || !out || n < 0) return RGBZ_EINVAL;
     for (ptrdiff_t i = 0; i < n; i++) out[i] = rgbz_expf_glibc_f32(x[i]);
-    return RGBZ_OK;
-}
-
-int rgbz_exp_libm_vectorised(int single)
-{
-    return single ? rgbz_expf_vec_ready() : rgbz_exp_vec_ready();
-}
-
-/* as the reconstruction's rows: the vector port on a run of values it covers, else the C
-   library's function value by value */
-int rgbz_libm_exp_f64(const double *x, double *out, ptrdiff_t n)
-{
-    if (!x || !out || n < 0) return RGBZ_EINVAL;
-    const int vec = rgbz_exp_vec_ready();
-    for (ptrdiff_t i0 = 0; i0 < n; i0 += 64) {
-        const ptrdiff_t m = n - i0 < 64 ? n - i0 : 64;
-        int covered = vec;
-        for (ptrdiff_t i = 0; i < m; i++) covered &= rgbz_exp_glibc_covers(x[i0 + i]);
-#ifdef RGBZ_HAVE_EXP_VEC
-        if (covered) {
-            memcpy(out + i0, x + i0, (size_t)m * sizeof(double));
-            rgbz_exp_glibc_row(out + i0, m);
-            continue;
-        }
-#endif
-        for (ptrdiff_t i = 0; i < m; i++) out[i0 + i] = exp(x[i0 + i]);
-    }
-    return RGBZ_OK;
-}
-
-int rgbz_libm_exp_f32(const float *x, float *out, ptrdiff_t n)
-{
-    if (!x || !out || n < 0) return RGBZ_EINVAL;
-    const int vec = rgbz_expf_vec_ready();
-    for (ptrdiff_t i0 = 0; i0 < n; i0 += 64) {
-        const ptrdiff_t m = n - i0 < 64 ? n - i0 : 64;
-        int covered = vec;
-        for (ptrdiff_t i = 0; i < m; i++) covered &= rgbz_expf_glibc_covers(x[i0 + i]);
-#ifdef RGBZ_HAVE_EXP_VEC
-        if (covered) {
-            memcpy(out + i0, x + i0, (size_t)m * sizeof(float));
-            rgbz_expf_glibc_row(out + i0, m);
-            continue;
-        }
-#endif
-        for (ptrdiff_t i = 0; i < m; i++) out[i0 + i] = expf(x[i0 + i]);
-    }
     return RGBZ_OK;
 }
 

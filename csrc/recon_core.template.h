@@ -807,6 +807,22 @@ int RFN(rgbz_reconstruct)(int in_type, const void *src, void *dst, ptrdiff_t row
     return st;
 }
 
+/* exp() of n values as the frame loops compute it with exp_mode RGBZ_EXP_LIBM: blocks of
+   RGBZ_BLK through rgbz_exp_libm_row where the port runs, else the function itself */
+int RFN(rgbz_libm_exp)(const REAL *x, REAL *out, ptrdiff_t n)
+{
+    if (!x || !out || n < 0) return RGBZ_EINVAL;
+    const int vec = rgbz_exp_libm_vectorised(sizeof(REAL) == sizeof(float));
+    for (ptrdiff_t i0 = 0; i0 < n; i0 += RGBZ_BLK) {
+        const int m = (int)(n - i0 < RGBZ_BLK ? n - i0 : RGBZ_BLK);
+        REAL *restrict row = out + i0;
+        for (int j = 0; j < m; j++) row[j] = x[i0 + j];
+        if (vec) RFN(rgbz_exp_libm_row)(row, m);
+        else for (int j = 0; j < m; j++) row[j] = REXP_LIBM(row[j]);
+    }
+    return RGBZ_OK;
+}
+
 int RFN(rgbz_fast_exp)(const REAL *x, REAL *out, ptrdiff_t n)
 {
     if (!x || !out || n < 0) return RGBZ_EINVAL;

@@ -236,8 +236,7 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
     /* exp()'s (expf()'s) bits from its vector port where this machine's function is that
        algorithm (rgbz_exp.h) */
     const int exp_mode = prm->exp_mode == RGBZ_EXP_LIBM
-                         && (sizeof(REAL) == sizeof(double) ? rgbz_exp_vec_ready()
-                                                            : rgbz_expf_vec_ready())
+                         && rgbz_exp_libm_vectorised(sizeof(REAL) == sizeof(float))
                          ? RGBZ_EXP_LIBM_VEC : prm->exp_mode;
     const RGBZ_CAT(rgbz_knobs, RS) kn = {(REAL)prm->sigma_floor, (REAL)prm->sigma_rel,
                                 (REAL)prm->edge_ratio, exp_mode};

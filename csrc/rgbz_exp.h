@@ -13,7 +13,7 @@
  * bits for every argument they cover (rgbz_exp_glibc_covers: x = 0 or 2^-54 <= |x| < 512;
  * rgbz_expf_glibc_covers: |x| < 88; glibc takes the others down special paths).
  * The reconstruction uses them (the row functions, AVX-512F) only after
- * rgbz_exp_vec_ready() / rgbz_expf_vec_ready() (recon.c) have found the machine's
+ * rgbz_exp_libm_vectorised (rgbz.h, recon.c) has found the machine's
  * functions give the same bits on a sweep of arguments, and calls the function itself for
  * any row with a value they do not cover; everywhere else it calls the function as before.
  * tests/test_kernels_exp.py compares the tables with 2^(i/N) computed in 60-digit decimals
@@ -31,12 +31,6 @@
    internal value next to rgbz.h's RGBZ_EXP_LIBM and RGBZ_EXP_FAST; same results as
    RGBZ_EXP_LIBM) */
 #define RGBZ_EXP_LIBM_VEC 2
-
-/* 1 when exp() of this machine gives the bits of rgbz_exp_glibc_f64 (and the CPU runs
-   the AVX-512 clones, where fma() is one instruction); checked once (recon.c). The same
-   for expf() and rgbz_expf_glibc_f32. */
-int rgbz_exp_vec_ready(void);
-int rgbz_expf_vec_ready(void);
 
 /* 2^(i/128) = asdouble(tab[2i + 1] + (i << 45)) (1 + asdouble(tab[2i])): the double nearest
    2^(i/128) with i << 45 taken out of its bits (the scale adds k << 45 back), and the
@@ -193,7 +187,7 @@ static inline int rgbz_exp_glibc_covers(double x)
 
 /* row[j] = rgbz_exp_glibc_f64(row[j]), j < n, eight at a time (the same operations in AVX-512F
    registers; GCC's generic tuning would not vectorise the table's gathers). Call it only
-   when the CPU has AVX-512F: rgbz_exp_vec_ready(). */
+   when the CPU has AVX-512F: rgbz_exp_libm_vectorised(0). */
 __attribute__((target("avx512f"), unused))
 static void rgbz_exp_glibc_row(double *row, ptrdiff_t n)
 {

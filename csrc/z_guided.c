@@ -97,16 +97,6 @@ static ptrdiff_t *zg_colmap(const rgbz_zguided_filters *f, ptrdiff_t cols, int p
 #define ZG_CHUNK 64
 
 #if LRN_VECTOR_EXT
-#if defined(__clang__)
-#define ZG_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
-    __builtin_shufflevector(a, b, i0, i1, i2, i3, i4, i5, i6, i7)
-#define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
-#else
-#define ZG_SHUF8(a, b, i0, i1, i2, i3, i4, i5, i6, i7) \
-    __builtin_shuffle(a, b, (lrn_m8){i0, i1, i2, i3, i4, i5, i6, i7})
-#define ZG_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
-#endif
-
 /* the 8 floats at p as a vector */
 RGBZ_INLINE lrn_v8f zg_ld8(const float *p)
 {
@@ -117,7 +107,7 @@ RGBZ_INLINE lrn_v8f zg_ld8(const float *p)
 
 /* the terms 0 .. 7 of the 8 cells from column i of the rows tm[m] (row stride ZG_CHUNK) into
    the first 8 floats of those cells' vectors (out, cell stride cvr floats): the 8 x 8 block
-   transposed in registers (the unpack, pair and half shuffles of lrn_lane_sums_f32) */
+   transposed in registers (lrn_transpose8_f32) */
 RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t cvr)
 {
     /* each row loaded by itself: a loop of memcpy's into the array compiles, in the AVX2
@@ -127,23 +117,9 @@ RGBZ_INLINE void zg_put8_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t
                           zg_ld8(p + 3 * ZG_CHUNK), zg_ld8(p + 4 * ZG_CHUNK),
                           zg_ld8(p + 5 * ZG_CHUNK), zg_ld8(p + 6 * ZG_CHUNK),
                           zg_ld8(p + 7 * ZG_CHUNK)};
-    lrn_v8f t[8], u[8];
-    for (int m = 0; m < 8; m += 2) {
-        t[m] = ZG_SHUF8(r[m], r[m + 1], 0, 8, 1, 9, 4, 12, 5, 13);
-        t[m + 1] = ZG_SHUF8(r[m], r[m + 1], 2, 10, 3, 11, 6, 14, 7, 15);
-    }
-    for (int m = 0; m < 8; m += 4) {
-        u[m] = ZG_SHUF8(t[m], t[m + 2], 0, 1, 8, 9, 4, 5, 12, 13);
-        u[m + 1] = ZG_SHUF8(t[m], t[m + 2], 2, 3, 10, 11, 6, 7, 14, 15);
-        u[m + 2] = ZG_SHUF8(t[m + 1], t[m + 3], 0, 1, 8, 9, 4, 5, 12, 13);
-        u[m + 3] = ZG_SHUF8(t[m + 1], t[m + 3], 2, 3, 10, 11, 6, 7, 14, 15);
-    }
-    for (int l = 0; l < 4; l++) {
-        const lrn_v8f lo = ZG_SHUF8(u[l], u[l + 4], 0, 1, 2, 3, 8, 9, 10, 11);
-        const lrn_v8f hi = ZG_SHUF8(u[l], u[l + 4], 4, 5, 6, 7, 12, 13, 14, 15);
-        memcpy(out + (ptrdiff_t)l * cvr, &lo, sizeof lo);
-        memcpy(out + (ptrdiff_t)(l + 4) * cvr, &hi, sizeof hi);
-    }
+    lrn_v8f T[8];
+    lrn_transpose8_f32(r, T);
+    for (int l = 0; l < 8; l++) memcpy(out + (ptrdiff_t)l * cvr, &T[l], sizeof T[l]);
 }
 
 /* the same for doubles: 4 cells, their terms 0 .. 3 and 4 .. 7 as two 4 x 4 blocks */
@@ -156,14 +132,9 @@ RGBZ_INLINE void zg_put8_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff
         memcpy(&r[1], p + ZG_CHUNK, sizeof r[1]);
         memcpy(&r[2], p + 2 * ZG_CHUNK, sizeof r[2]);
         memcpy(&r[3], p + 3 * ZG_CHUNK, sizeof r[3]);
-        const lrn_v4d t0 = ZG_SHUF4(r[0], r[1], 0, 4, 2, 6), t1 = ZG_SHUF4(r[0], r[1], 1, 5, 3, 7);
-        const lrn_v4d t2 = ZG_SHUF4(r[2], r[3], 0, 4, 2, 6), t3 = ZG_SHUF4(r[2], r[3], 1, 5, 3, 7);
-        const lrn_v4d c0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), c1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
-        const lrn_v4d c2 = ZG_SHUF4(t0, t2, 2, 3, 6, 7), c3 = ZG_SHUF4(t1, t3, 2, 3, 6, 7);
-        memcpy(out + h, &c0, sizeof c0);
-        memcpy(out + cvr + h, &c1, sizeof c1);
-        memcpy(out + 2 * cvr + h, &c2, sizeof c2);
-        memcpy(out + 3 * cvr + h, &c3, sizeof c3);
+        lrn_v4d c[4];
+        lrn_transpose4_f64(r, c);
+        for (int l = 0; l < 4; l++) memcpy(out + (ptrdiff_t)l * cvr + h, &c[l], sizeof c[l]);
     }
 }
 
@@ -177,15 +148,15 @@ RGBZ_INLINE void zg_putb_f32(const float *tm, ptrdiff_t i, float *out, ptrdiff_t
     memcpy(&c8, tm + 8 * ZG_CHUNK + i, sizeof c8);
     memcpy(&c9, tm + 9 * ZG_CHUNK + i, sizeof c9);
     memcpy(&c10, tm + 10 * ZG_CHUNK + i, sizeof c10);
-    const lrn_v8f t0 = ZG_SHUF8(c8, m1, 0, 8, 1, 9, 4, 12, 5, 13);
-    const lrn_v8f t1 = ZG_SHUF8(c8, m1, 2, 10, 3, 11, 6, 14, 7, 15);
-    const lrn_v8f t2 = ZG_SHUF8(c9, c10, 0, 8, 1, 9, 4, 12, 5, 13);
-    const lrn_v8f t3 = ZG_SHUF8(c9, c10, 2, 10, 3, 11, 6, 14, 7, 15);
+    const lrn_v8f t0 = LRN_SHUF8(c8, m1, 0, 8, 1, 9, 4, 12, 5, 13);
+    const lrn_v8f t1 = LRN_SHUF8(c8, m1, 2, 10, 3, 11, 6, 14, 7, 15);
+    const lrn_v8f t2 = LRN_SHUF8(c9, c10, 0, 8, 1, 9, 4, 12, 5, 13);
+    const lrn_v8f t3 = LRN_SHUF8(c9, c10, 2, 10, 3, 11, 6, 14, 7, 15);
     lrn_v8f u[4];   /* u[l]: cell l in the low half, cell l + 4 in the high half */
-    u[0] = ZG_SHUF8(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
-    u[1] = ZG_SHUF8(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
-    u[2] = ZG_SHUF8(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
-    u[3] = ZG_SHUF8(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+    u[0] = LRN_SHUF8(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[1] = LRN_SHUF8(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+    u[2] = LRN_SHUF8(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[3] = LRN_SHUF8(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
     for (int l = 0; l < 4; l++) {
         memcpy(out + (ptrdiff_t)l * cvr + 8, &u[l], 4 * sizeof(float));
         memcpy(out + (ptrdiff_t)(l + 4) * cvr + 8, (const char *)&u[l] + 4 * sizeof(float),
@@ -201,14 +172,10 @@ RGBZ_INLINE void zg_putb_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff
     memcpy(&c8, tm + 8 * ZG_CHUNK + i, sizeof c8);
     memcpy(&c9, tm + 9 * ZG_CHUNK + i, sizeof c9);
     memcpy(&c10, tm + 10 * ZG_CHUNK + i, sizeof c10);
-    const lrn_v4d t0 = ZG_SHUF4(c8, m1, 0, 4, 2, 6), t1 = ZG_SHUF4(c8, m1, 1, 5, 3, 7);
-    const lrn_v4d t2 = ZG_SHUF4(c9, c10, 0, 4, 2, 6), t3 = ZG_SHUF4(c9, c10, 1, 5, 3, 7);
-    const lrn_v4d u0 = ZG_SHUF4(t0, t2, 0, 1, 4, 5), u1 = ZG_SHUF4(t1, t3, 0, 1, 4, 5);
-    const lrn_v4d u2 = ZG_SHUF4(t0, t2, 2, 3, 6, 7), u3 = ZG_SHUF4(t1, t3, 2, 3, 6, 7);
-    memcpy(out + 8, &u0, sizeof u0);
-    memcpy(out + cvr + 8, &u1, sizeof u1);
-    memcpy(out + 2 * cvr + 8, &u2, sizeof u2);
-    memcpy(out + 3 * cvr + 8, &u3, sizeof u3);
+    const lrn_v4d rows[4] = {c8, m1, c9, c10};
+    lrn_v4d u[4];
+    lrn_transpose4_f64(rows, u);
+    for (int l = 0; l < 4; l++) memcpy(out + (ptrdiff_t)l * cvr + 8, &u[l], sizeof u[l]);
 }
 
 /* a cell's second row c_8, -1, c_9, c_10, 0, ... -> c_9, c_10, 0, ... (the floats' lanes 6
@@ -216,16 +183,14 @@ RGBZ_INLINE void zg_putb_f64(const double *tm, ptrdiff_t i, double *out, ptrdiff
 RGBZ_INLINE lrn_v8f zg_low2_f32(lrn_v8f c)
 {
     const lrn_v8f z = {0};
-    return ZG_SHUF8(c, z, 2, 3, 8, 8, 6, 7, 8, 8);
+    return LRN_SHUF8(c, z, 2, 3, 8, 8, 6, 7, 8, 8);
 }
 
 RGBZ_INLINE lrn_v4d zg_low2_f64(lrn_v4d c)
 {
     const lrn_v4d z = {0};
-    return ZG_SHUF4(c, z, 2, 3, 4, 4);
+    return LRN_SHUF4(c, z, 2, 3, 4, 4);
 }
-#undef ZG_SHUF8
-#undef ZG_SHUF4
 #endif
 
 /* not 0 when the n sites (sr[i], sc[i]) are not (r, c0 + px i), i = 0 .. n - 1: a row of
