@@ -190,6 +190,41 @@ def test_fast_exp_against_libm():
         assert out.tolist() == [1.0, 0.0, 0.0, 0.0, 0.0]
 
 
+def test_fast_exp_is_its_formula_bit_for_bit():
+    # csrc/rgbz_ops.h's polynomials are branch-free so that the gamma loops vectorise; in
+    # float64 n = floor(x log2(e) + 0.5) comes from the bits of a rounding constant rather
+    # than floor() and an integer conversion. The result must be the formula's, written
+    # plainly in NumPy (IEEE operations in the same order), on every argument and at the
+    # boundaries where x log2(e) + 0.5 is an integer (where round-to-nearest and floor part)
+    rng = np.random.default_rng(3)
+    k = (np.arange(-1021, 1) - 0.5) / 1.4426950408889634
+    x = np.concatenate([rng.uniform(-708, 0, 400_000), -np.logspace(-300, 2.85, 20_000),
+                        k, np.nextafter(k, 0), np.nextafter(k, -1), [0.0, -0.0, -707.99]])
+    n = np.floor(x * 1.4426950408889634 + 0.5)
+    y = (x - n * 0.693147180369123816490) - n * 1.90821492927058770002e-10
+    p = 1.0 + y * (1.0 + y * (0.5 + y * (1.0 / 6 + y * (1.0 / 24 + y * (1.0 / 120 + y * (
+        1.0 / 720 + y * (1.0 / 5040)))))))
+    want = np.where(x > -708.0, np.ldexp(p, n.astype(np.int64)), 0.0)   # flushed below
+    got = np.empty_like(x)
+    _kernels.fast_exp(x, got)
+    assert np.array_equal(got.view(np.int64), want.view(np.int64))
+    # float32: n by the rounding constant 1.5 * 2^23 (round to nearest), 2^n from its bits
+    x32 = np.concatenate([rng.uniform(-87, 0, 400_000).astype(np.float32),
+                          ((np.arange(-125, 1) + 0.5) / np.float32(1.44269504)).astype(
+                              np.float32)])
+    f = np.float32
+    t = x32 * f(1.44269504) + f(12582912.0)
+    n32 = t - f(12582912.0)
+    y32 = (x32 - n32 * f(0.693359375)) - n32 * f(-2.12194440e-4)
+    c = [f(1) / f(d) for d in (6, 24, 120, 720)]              # 1.0f / 6 etc. in float
+    p32 = f(1) + y32 * (f(1) + y32 * (f(0.5) + y32 * (c[0] + y32 * (c[1] + y32 * (
+        c[2] + y32 * c[3])))))
+    want32 = np.ldexp(p32, n32.astype(np.int32))
+    got32 = np.empty_like(x32)
+    _kernels.fast_exp(x32, got32)
+    assert np.array_equal(got32.view(np.int32), want32.view(np.int32))
+
+
 # -- the type stub ------------------------------------------------------------------------------
 
 def test_stub_lists_exactly_the_public_names_of_the_module():

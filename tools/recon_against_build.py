@@ -77,7 +77,7 @@ def same(other, calls, seed):
     return 1 if bad else 0
 
 
-def speed(other, pattern, workers, rounds, method="sg", precision="float32"):
+def speed(other, pattern, workers, rounds, method="sg", precision="float32", exp="auto"):
     cur = R._kernels
     frame = rz.mosaic(make_rgb((3000, 4000)), pattern)
     ratios = []
@@ -86,12 +86,12 @@ def speed(other, pattern, workers, rounds, method="sg", precision="float32"):
         order = (("this", cur), ("other", other)) if i % 2 else (("other", other), ("this", cur))
         for name, k in order:
             t0 = time.perf_counter()
-            run_with(k, frame, method, workers=workers, precision=precision)
+            run_with(k, frame, method, workers=workers, precision=precision, exp=exp)
             t[name] = time.perf_counter() - t0
         if i:
             ratios.append(t["other"] / t["this"])
     q = np.percentile(ratios, [25, 50, 75])
-    print(f"{method} {pattern} {precision}, {workers} thread(s): speed this / other {q[1]:.3f} "
+    print(f"{method} {pattern} {precision} exp={exp}, {workers} thread(s): speed this / other {q[1]:.3f} "
           f"[{q[0]:.3f}-{q[2]:.3f}], {rounds} rounds")
     return 0
 
@@ -107,11 +107,12 @@ def main(argv=None):
     ap.add_argument("--rounds", type=int, default=9)
     ap.add_argument("--method", default="sg")
     ap.add_argument("--precision", default="float32", choices=("float32", "float64"))
+    ap.add_argument("--exp", default="auto", choices=("auto", "libm", "fast"))
     a = ap.parse_args(argv)
     other = load_other(a.other)
     if a.what == "same":
         return same(other, a.calls, a.seed)
-    return speed(other, a.pattern, a.workers, a.rounds, a.method, a.precision)
+    return speed(other, a.pattern, a.workers, a.rounds, a.method, a.precision, a.exp)
 
 
 if __name__ == "__main__":
