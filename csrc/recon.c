@@ -125,9 +125,13 @@ int rgbz_recon_setup(const void *src, const void *dst, ptrdiff_t rows, ptrdiff_t
             rgbz_mask1_index(p->method, p->use_grad && p->use_sg) < 0)
             return RGBZ_EINVAL;
     }
-    /* the Mask1 constant plans know nothing of clipping */
-    if (prm->clip_on && (prm->mask1_fast || !(prm->clip_level == prm->clip_level)))
-        return RGBZ_EINVAL;
+    /* the Mask1 constant plans know nothing of clipping: the sites with a clipped tap run
+       again on plans[0] (recon_loop.template.h); the counting build, whose counts would
+       then hold both, keeps the two apart */
+    if (prm->clip_on && !(prm->clip_level == prm->clip_level)) return RGBZ_EINVAL;
+#ifdef RGBZ_COUNT_OPS
+    if (prm->clip_on && prm->mask1_fast) return RGBZ_EINVAL;
+#endif
 
     /* column map for x in [-rx, cols + rx): shared, read-only, O(cols) */
     const int r = *rx;

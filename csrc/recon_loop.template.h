@@ -96,12 +96,59 @@ RGBZ_INLINE void LFN(rgbz_stream)(const IN_T *restrict row, ptrdiff_t x0, ptrdif
     for (int j = 0; j < n; j++) stream[j] = (REAL)s[j * stride];
 }
 
+/* The clip level as a threshold of IN_T: (double)v >= level exactly when v >= *thr (v not
+   NaN); 0 when no value of IN_T reaches it. level > 0 (the Python layer checks it). */
+static int LFN(rgbz_clip_threshold)(double level, IN_T *thr)
+{
+#if IN_IS_INT
+    const double c = ceil(level);
+    if (c > (double)(IN_T)-1) return 0;           /* unsigned: (IN_T)-1 is the largest */
+    *thr = (IN_T)c;
+#else
+    IN_T f = (IN_T)level;
+    if ((double)f < level) f = sizeof(IN_T) == sizeof(float) ? (IN_T)nextafterf((float)f, INFINITY)
+                                                               : (IN_T)nextafter((double)f, INFINITY);
+    *thr = f;
+#endif
+    return 1;
+}
+
+/* clipped[j] |= bit where row[c0 + j P] >= thr, j < n (P a compile-time 2 or 4 where it is
+   called, so that the loop vectorises) */
+RGBZ_INLINE void LFN(rgbz_clip_bits)(const IN_T *restrict row, ptrdiff_t c0, int P, int n,
+                                     IN_T thr, uint64_t bit, uint64_t *restrict clipped)
+{
+    const IN_T *restrict s = row + c0;
+    for (int j = 0; j < n; j++) clipped[j] |= s[(ptrdiff_t)j * P] >= thr ? bit : 0;
+}
+
+/* 1 if a pixel of the window's rows at a column in [a, b] (inside the frame) is at or above
+   level: the largest, compared in double (a NaN is never the largest, nor clipped) */
+RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdiff_t a,
+                                                  ptrdiff_t b, double level)
+{
+    for (int d = 0; d < 2 * w->ry + 1; d++) {
+        const IN_T *restrict row = w->rowp[d];
+        IN_T m = row[a];
+        for (ptrdiff_t x = a + 1; x <= b; x++) m = row[x] > m ? row[x] : m;
+        if ((double)m >= level) return 1;
+    }
+    return 0;
+}
+
 /*
  * The sites x0, x0 + px, ... < x1 of the row, one plan: gathered, reconstructed, stored to
  * drow. m1 >= 0: the interior sites of a Mask1 Z row, run with the constant plan m1 of
- * recon_mask1.h (p is then that plan). Near clipping (clip_on) each site also gets the
- * bit mask of its clipped taps, and a site whose candidates (edi_rows: its ten taps) are
- * all clipped stays at or above the smallest of them: saturation is kept exactly in IN_T.
+ * recon_mask1.h (p is then that plan); pg: the plan _plans.py built for these sites (p
+ * itself where m1 < 0). Near clipping (clip_on) every block runs the core of the unclipped
+ * frames (a site without a clipped tap gives the same with either core, rgbz_core); in a
+ * block whose window reaches the level, each site gets the bit mask of its clipped taps
+ * (pg's), and a site with one is computed again by the clipped-pixel core on pg
+ * (with the others of its block that have one, their taps gathered into a block of their
+ * own); a site whose candidates (edi_rows: its ten taps) are all
+ * clipped stays at or above the smallest of them: saturation is kept exactly in IN_T. So
+ * the slow core runs only where a clipped pixel is (with clipped pixels in every block it
+ * ran everywhere: SG 37 against 452 Mpix/s with 6 % clipped, docs/reports/benchmarks.md).
  *
  * Gathering: inside the frame, the taps of one kernel row whose columns are equal modulo
  * px are one strided stream of that row shifted by whole sites (tap (dy, dx) of site j is
@@ -109,7 +156,8 @@ RGBZ_INLINE void LFN(rgbz_stream)(const IN_T *restrict row, ptrdiff_t x0, ptrdif
  * block and the core reads the taps as pointers into it (Mask1: 7 streams for 16 taps).
  * Near the borders each tap is gathered through the column map.
  */
-RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p, int m1,
+RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p,
+                                        const rgbz_plan *pg, int m1,
                                         ptrdiff_t cols, ptrdiff_t x0, ptrdiff_t x1,
                                         const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
                                         int clip_on, double clip_level, IN_T *drow)
@@ -118,7 +166,13 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
     REAL buf[RGBZ_MAX_TAPS][SPAN];
     const REAL *v[RGBZ_MAX_TAPS];
     REAL r[RGBZ_BLK];
-    uint64_t clipped[RGBZ_BLK];
+    /* near clipping: each site's clipped taps, and the taps, masks and places of a block's
+       sites with one (zeroed once: GCC cannot tell they are written before they are read) */
+    uint64_t clipped[RGBZ_BLK] = {0}, cmask[RGBZ_BLK];
+    REAL cbuf[RGBZ_MAX_TAPS][RGBZ_BLK];
+    int at[RGBZ_BLK] = {0};
+    IN_T clip_thr = 0;
+    const int clip_any = clip_on && LFN(rgbz_clip_threshold)(clip_level, &clip_thr);
     const int px = w->px, nt = p->n_taps;
     /* the streams of the plan: kernel row s_dy, column phase s_r, shifts [s_q0, s_q1]; only
        the strided gather reads them (rows not deinterleaved) */
@@ -188,39 +242,65 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
             }
         }
         jb += n;
-        if (m1 >= 0) {
+        /* near clipping: does the block's window reach the level? (the border blocks, read
+           through the column map, are taken as if it did) */
+        const int hit = clip_on && (!direct || LFN(rgbz_span_reaches)(
+                            w, xb - w->rx, xb + (ptrdiff_t)(n - 1) * px + w->rx, clip_level));
+        if (m1 >= 0)
             RGBZ_CAT(rgbz_mask1_core, RS)[m1](v, n, kn, r);
-        } else if (clip_on) {
-            /* compared in double, exact for every input type and precision */
-            uint64_t any = 0;
-            for (int j = 0; j < n; j++) clipped[j] = 0;
-            for (int t = 0; t < nt; t++)
-                for (int j = 0; j < n; j++)
-                    if ((double)LFN(rgbz_tap)(w, p, t, xb + (ptrdiff_t)j * px, direct) >= clip_level)
-                        clipped[j] |= (uint64_t)1 << t;
-            for (int j = 0; j < n; j++) any |= clipped[j];
-            /* a site without a clipped tap gives the same with either core (rgbz_core): a
-               block without one runs the vectorised core of the unclipped frames */
-            if (any)
-                RGBZ_CAT(rgbz_core_clip, RS)(p, v, n, clipped, kn, r);
-            else
-                RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
-        } else {
+        else
             RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
+        if (hit) {
+            /* the sites with a clipped tap (the level as a threshold of IN_T: the comparison
+               in double, exactly), their taps gathered into a block of their own */
+            const int ng = pg->n_taps;
+            int nc = 0;
+            for (int j = 0; j < n; j++) clipped[j] = 0;
+            for (int t = 0; t < ng && clip_any; t++) {
+                const IN_T *restrict row = w->rowp[pg->tap_dy[t] + w->ry];
+                const ptrdiff_t c0 = xb + pg->tap_dx[t];
+                const uint64_t bit = (uint64_t)1 << t;
+                if (direct && px == 2)
+                    LFN(rgbz_clip_bits)(row, c0, 2, n, clip_thr, bit, clipped);
+                else if (direct && px == 4)
+                    LFN(rgbz_clip_bits)(row, c0, 4, n, clip_thr, bit, clipped);
+                else if (direct)
+                    LFN(rgbz_clip_bits)(row, c0, px, n, clip_thr, bit, clipped);
+                else
+                    for (int j = 0; j < n; j++)
+                        clipped[j] |= row[w->colmap[c0 + (ptrdiff_t)j * px + w->rx]] >= clip_thr
+                                      ? bit : 0;
+            }
+            for (int j = 0; j < n; j++)
+                if (clipped[j]) {
+                    cmask[nc] = clipped[j];
+                    at[nc++] = j;
+                }
+            for (int t = 0; t < ng && nc; t++)
+                for (int k = 0; k < nc; k++)
+                    cbuf[t][k] = (REAL)LFN(rgbz_tap)(w, pg, t, xb + (ptrdiff_t)at[k] * px, direct);
+            if (nc) {
+                const REAL *vc[RGBZ_MAX_TAPS];
+                REAL rc[RGBZ_BLK];
+                for (int t = 0; t < ng; t++) vc[t] = cbuf[t];
+                RGBZ_CAT(rgbz_core_clip, RS)(pg, vc, nc, cmask, kn, rc);
+                for (int k = 0; k < nc; k++) r[at[k]] = rc[k];
+            }
         }
         IN_T *restrict d = drow + xb;
         for (int j = 0; j < n; j++)
             d[(ptrdiff_t)j * px] = (IN_T)RGBZ_CAT(rgbz_out, RS)(r[j], maxval, IN_IS_INT);
-        if (!clip_on) continue;
-        const int rows_m = p->method == RGBZ_M_EDI_ROWS;
-        const int nk = rows_m ? nt : p->n_cand;
+        if (!hit) continue;
+        const int rows_m = pg->method == RGBZ_M_EDI_ROWS;
+        const int nk = rows_m ? pg->n_taps : pg->n_cand;
         for (int j = 0; j < n; j++) {
+            if (!clipped[j]) continue;
             int all = 1;
             IN_T lo = 0;
             for (int k = 0; k < nk && all; k++) {
-                const int t = rows_m ? k : p->cand_tap[k];
+                const int t = rows_m ? k : pg->cand_tap[k];
                 all = (int)((clipped[j] >> t) & 1u);
-                const IN_T raw = LFN(rgbz_tap)(w, p, t, xb + (ptrdiff_t)j * px, direct);
+                const IN_T raw = LFN(rgbz_tap)(w, pg, t, xb + (ptrdiff_t)j * px, direct);
                 if (!k || raw < lo) lo = raw;
             }
             if (all && d[(ptrdiff_t)j * px] < lo) d[(ptrdiff_t)j * px] = lo;
@@ -328,7 +408,8 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
                     rgbz_opc_cur = opcounts + (size_t)pl * RGBZ_NOPS;
 #endif
                     const int m = seg_m1[s];
-                    LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], m, cols, x0,
+                    LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], &plans[pl],
+                                    m, cols, x0,
                                     xa[s + 1], &kn, maxval, clip_on, clip_level, dst + y * cols);
                 }
             }

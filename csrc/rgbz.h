@@ -159,7 +159,9 @@ typedef struct {
                              constant plans of recon_mask1.h */
     int32_t clip_on;      /* 1: known pixels >= clip_level are clipped (saturated); a
                              difference of the weights between two of them is skipped
-                             (docs/guide/raw.md, "Near clipping"). Needs mask1_fast = 0. */
+                             (docs/guide/raw.md, "Near clipping"); with mask1_fast, the
+                             sites with a clipped tap run on plans[0] (the counting build
+                             needs mask1_fast = 0). */
     double clip_level;    /* in the frame's DN; read only when clip_on */
     /* precision FIXED only (NULL for the others): the fixed-point model's configuration,
        integer constants per plan, tables and line buffers (rgbz_fixed_args, hw_recon.h) */

@@ -1,8 +1,8 @@
 """This build's reconstruction against another build's extension: bit for bit, or paired speed.
 
-    python tools/recon_against_build.py same OTHER.so [--calls 100] [--seed 0]
+    python tools/recon_against_build.py same OTHER.so [--calls 100] [--seed 0] [--clip-share 0.2]
     python tools/recon_against_build.py speed OTHER.so [--pattern mask2] [--workers 2] [--rounds 9]
-        [--method sg] [--precision float32]
+        [--method sg] [--precision float32] [--exp auto] [--clip-level DN]
 
 OTHER.so: a copy of src/rgbz_fast/_kernels*.so of the build to compare with (copy it out of
 build/ before changing the C code). Both extensions are loaded in one process; the Python
@@ -10,9 +10,11 @@ layer of this checkout calls one or the other.
 
 ``same``: random ``reconstruct`` calls (Mask1, Mask2 at three Bayer phases; sg, edi_line,
 edi_central, bi, bilinear; the four element types; both precisions, exponentials, domains
-and sigma_rel values; a clip level in one call of five; random, smooth and partly flat
-frames of 8-69 x 8-299 pixels; 1 or 2 threads), each output compared bit for bit; exits 1 if
-one differs.
+and sigma_rel values; a clip level in one call of five (``--clip-share``); random, smooth and
+partly flat frames of 8-69 x 8-299 pixels; 1 or 2 threads), each output compared bit for bit;
+exits 1 if one differs. OTHER runs the calls with a clip level on the plans of _plans.py
+(``plans_only``, the same bits as the Mask1 fast path): builds before 2026-11-26 17:40 UTC
+refuse the fast path with a clip level.
 
 ``speed``: SG (or ``--method``, in ``--precision``) on the 12 MP bench frame (``make_rgb((3000, 4000))`` mosaicked), the two
 extensions alternated call by call (the order swapped every round, one warm-up round), and
@@ -30,16 +32,19 @@ from rgbz_fast.reconstruction import _reconstruct as R
 from learned_paired import load_other
 
 
-def run_with(kernels, *args, **kw):
+def run_with(kernels, *args, plans=False, **kw):
     saved = R._kernels
     R._kernels = kernels
     try:
+        if plans:
+            with R.plans_only():
+                return rz.reconstruct(*args, **kw)
         return rz.reconstruct(*args, **kw)
     finally:
         R._kernels = saved
 
 
-def same(other, calls, seed):
+def same(other, calls, seed, clip_share=0.2):
     cur = R._kernels
     rng = np.random.default_rng(seed)
     pats = ["mask2", "mask2", "mask2", rz.mask2("RGGB"), rz.mask2("BGGR"), "mask1"]
@@ -57,7 +62,7 @@ def same(other, calls, seed):
                   sigma_rel=[0.0, 0.5][rng.integers(2)])
         if meth == "sg":
             kw["sg_mode"] = ["auto", "pure", "combined"][rng.integers(3)]
-        if rng.random() < 0.2:
+        if rng.random() < clip_share:
             kw["clip_level"] = float(0.8 * ((1 << bd) - 1))
         smooth = rng.random() < 0.5
         x = rng.random((rows, cols)) * ((1 << bd) - 1)
@@ -68,8 +73,8 @@ def same(other, calls, seed):
             x[:, : cols // 3] = 100.0
         frame = x.astype(dt) if dt in (np.float32, np.float64) else np.round(x).astype(dt)
         w = int(rng.integers(1, 3))
-        a, b = (run_with(k, frame, meth, pattern=pat, bit_depth=bd, workers=w, **kw)
-                for k in (cur, other))
+        a, b = (run_with(k, frame, meth, pattern=pat, bit_depth=bd, workers=w,
+                         plans=k is other and "clip_level" in kw, **kw) for k in (cur, other))
         if not (a.dtype == b.dtype and np.array_equal(a.view(np.uint8), b.view(np.uint8))):
             bad += 1
             print("differs:", i, getattr(pat, "name", pat), meth, dt.__name__, rows, cols, w, kw)
@@ -77,7 +82,8 @@ def same(other, calls, seed):
     return 1 if bad else 0
 
 
-def speed(other, pattern, workers, rounds, method="sg", precision="float32", exp="auto"):
+def speed(other, pattern, workers, rounds, method="sg", precision="float32", exp="auto",
+          clip_level=None):
     cur = R._kernels
     frame = rz.mosaic(make_rgb((3000, 4000)), pattern)
     ratios = []
@@ -86,12 +92,13 @@ def speed(other, pattern, workers, rounds, method="sg", precision="float32", exp
         order = (("this", cur), ("other", other)) if i % 2 else (("other", other), ("this", cur))
         for name, k in order:
             t0 = time.perf_counter()
-            run_with(k, frame, method, workers=workers, precision=precision, exp=exp)
+            run_with(k, frame, method, workers=workers, precision=precision, exp=exp,
+                     clip_level=clip_level, plans=k is other and clip_level is not None)
             t[name] = time.perf_counter() - t0
         if i:
             ratios.append(t["other"] / t["this"])
     q = np.percentile(ratios, [25, 50, 75])
-    print(f"{method} {pattern} {precision} exp={exp}, {workers} thread(s): speed this / other {q[1]:.3f} "
+    print(f"{method} {pattern} {precision} exp={exp} clip_level={clip_level}, {workers} thread(s): speed this / other {q[1]:.3f} "
           f"[{q[0]:.3f}-{q[2]:.3f}], {rounds} rounds")
     return 0
 
@@ -108,11 +115,14 @@ def main(argv=None):
     ap.add_argument("--method", default="sg")
     ap.add_argument("--precision", default="float32", choices=("float32", "float64"))
     ap.add_argument("--exp", default="auto", choices=("auto", "libm", "fast"))
+    ap.add_argument("--clip-share", type=float, default=0.2)
+    ap.add_argument("--clip-level", type=float, default=None)
     a = ap.parse_args(argv)
     other = load_other(a.other)
     if a.what == "same":
-        return same(other, a.calls, a.seed)
-    return speed(other, a.pattern, a.workers, a.rounds, a.method, a.precision, a.exp)
+        return same(other, a.calls, a.seed, a.clip_share)
+    return speed(other, a.pattern, a.workers, a.rounds, a.method, a.precision, a.exp,
+                 a.clip_level)
 
 
 if __name__ == "__main__":

@@ -341,8 +341,9 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
 
     ``opcounts`` (n_plans x NOPS counters): required by the counting module
     (``_kernels_count``, single thread), refused by ``_kernels``.
-    ``clip_level`` (DN, or None): known pixels at or above it are clipped; needs
-    ``mask1_fast=0`` (the C core rejects the combination otherwise).
+    ``clip_level`` (DN, or None): known pixels at or above it are clipped; with
+    ``mask1_fast=1`` the sites with a clipped tap run on the plan given (the counting
+    module needs ``mask1_fast=0``).
     """
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status

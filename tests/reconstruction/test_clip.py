@@ -26,6 +26,7 @@ from _reference.reconstruction import (edi_rows_decision_margin, reference_recon
                         round_half_up)
 from _support import TOL, shared_path  # noqa: E402
 from rgbz_fast.reconstruction import _reconstruct as R  # noqa: E402
+from rgbz_fast.reconstruction._plans import build_plans  # noqa: E402
 from rgbz_fast import io as rio  # noqa: E402
 from rgbz_fast.io import clipped_mask, frame_clip_level, read_raw, to_rgbz  # noqa: E402
 
@@ -442,15 +443,60 @@ def test_saved_frame_keeps_the_level(tmp_path):
     assert frame_clip_level(g) == frame_clip_level(f)
 
 
-def test_kernel_rejects_clip_with_the_mask1_fast_path():
-    from rgbz_fast import _kernels
+def _sites_with_a_clipped_tap(d, p, method, level):
+    """Per pixel: a Z site at least 4 pixels from the border one of whose plan's taps (those
+    of _plans.py) is at or above the level."""
+    phase_map, plans = build_plans(p, method, "auto", "intensity")
+    P, Q = p.period
+    out = np.zeros(d.shape, bool)
+    for y in range(4, d.shape[0] - 4):
+        for x in range(4, d.shape[1] - 4):
+            k = phase_map[(y % P) * Q + x % Q]
+            if k < 0:
+                continue
+            pl = plans[k]
+            out[y, x] = any(d[y + int(pl["tap_dy"][t]), x + int(pl["tap_dx"][t])] >= level
+                            for t in range(int(pl["n_taps"])))
+    return out
+
+
+@pytest.mark.parametrize("method", WEIGHTED)
+@pytest.mark.parametrize("dtype", [np.uint16, np.float64])
+def test_mask1_fast_path_with_a_clip_level(method, dtype):
+    """With a clip level the Mask1 fast path still runs: a site with a clipped tap is computed
+    again by the clipped-pixel rule on the plans of _plans.py (the bits of the plans-only
+    call there), every other site is the clip_level=None call's, bit for bit (the fast path
+    and the plans differ in the order of their sums: by rounding, at a few sites)."""
+    p = rz.mask1()
+    d = clipped_frame(p, (40, 70), seeded("m1clip", method, dtype), 1500, dtype=dtype)
+    base = recon(d, p, method, precision="float64")
+    out = recon(d, p, method, precision="float64", clip_level=1500)
+    with R.plans_only():
+        plans_out = recon(d, p, method, precision="float64", clip_level=1500)
+    hit = _sites_with_a_clipped_tap(d, p, method, 1500)
+    assert hit.sum() > 50
+    np.testing.assert_array_equal(out[hit], plans_out[hit])
+    inner = np.zeros(d.shape, bool)
+    inner[4:-4, 4:-4] = True
+    np.testing.assert_array_equal(out[inner & ~hit], base[inner & ~hit])
+
+
+def test_counting_kernel_rejects_clip_with_the_mask1_fast_path():
+    # the counting build keeps the two apart: its counts would hold both cores at a site
+    from rgbz_fast import _kernels, _kernels_count
 
     p = rz.mask1()
     plan_map, plans, n = R._plans_for(p, "sg", "auto", "intensity")
     d = np.zeros((8, 8))
+    counts = np.zeros(n * _kernels_count.NOPS, np.uint64)
     with pytest.raises(RuntimeError, match="status 1"):
-        _kernels.reconstruct(d, np.empty_like(d), 1, 2, 2, plan_map, plans, n, 1e-3, 0.5, 0.5,
-                             2047.0, 0, 1, mask1_fast=1, clip_level=100.0)
+        _kernels_count.reconstruct(d, np.empty_like(d), 1, 2, 2, plan_map, plans, n, 1e-3,
+                                   0.5, 0.5, 2047.0, 0, 1, opcounts=counts, mask1_fast=1,
+                                   clip_level=100.0)
+    out = np.empty_like(d)                 # the library's kernel takes it
+    _kernels.reconstruct(d, out, 1, 2, 2, plan_map, plans, n, 1e-3, 0.5, 0.5, 2047.0, 0, 1,
+                         mask1_fast=1, clip_level=100.0)
+    assert (out == 0).all()
 
 
 # -- evaluate and the CLI -----------------------------------------------------------------------

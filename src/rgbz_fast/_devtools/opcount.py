@@ -213,7 +213,7 @@ def _z_guided_site_counts(data, pattern, precision, bit_depth, seed):
 
 def _uses_mask1_fast(pattern, method, kw):
     """True where reconstruct() runs the Mask1 fast path (csrc/recon_mask1.h)."""
-    return _recon.runs_mask1_fast_path(pattern, method, kw["domain"], kw.get("clip_level"))
+    return _recon.runs_mask1_fast_path(pattern, method, kw["domain"])
 
 
 def _mask1_fast_delta(data, pattern, yy, xx, method, precision, kw):

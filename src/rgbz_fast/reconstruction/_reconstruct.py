@@ -68,11 +68,12 @@ def has_mask1_geometry(pattern):
         pattern.bayer_tile()[pattern.tile == 3][0]) == 1
 
 
-def runs_mask1_fast_path(pattern, method, domain, clip_level=None):
+def runs_mask1_fast_path(pattern, method, domain):
     """True where :func:`reconstruct` runs the Mask1 fast path (csrc/recon_mask1.h): a Mask1
-    geometry, a plan method other than ``edi_rows``, the intensity domain, no clip level
-    (the fast path has no clipped-pixel rule), outside :func:`plans_only`."""
-    return bool(_FAST_PATH.get() and clip_level is None and domain == "intensity"
+    geometry, a plan method other than ``edi_rows``, the intensity domain, outside
+    :func:`plans_only`. With a clip level too: the sites with a clipped tap are computed
+    again by the clipped-pixel rule on the plans of _plans.py (csrc/recon_loop.template.h)."""
+    return bool(_FAST_PATH.get() and domain == "intensity"
                 and method != "edi_rows" and has_mask1_geometry(pattern))
 
 
@@ -271,7 +272,8 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
 def _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bit_depth, clip,
                 nthreads, opcounts=None, kernels=None):
     """One call of the C reconstruction (``kernels``: the counting extension for opcount)."""
-    fast = int(runs_mask1_fast_path(pattern, method, params.domain, clip))
+    fast = int(runs_mask1_fast_path(pattern, method, params.domain)
+               and (kernels is None or clip is None))     # the counting module: one or other
     k = _kernels if kernels is None else kernels
     extra = {} if opcounts is None else {"opcounts": opcounts}
     k.reconstruct(src, out, _PRECISION_CODES[params.precision], pattern.period[0],
@@ -306,6 +308,8 @@ def _resolve_clip(value, frame):
 
 def _reaches(data, pattern, level):
     """True if a colour site of ``data`` is at or above ``level`` (strided views, no copy)."""
+    if data.size and data.dtype.kind in "ui" and not data.max() >= level:
+        return False          # one contiguous pass (Z sites too) settles most frames
     P, Q = pattern.period
     for r in range(P):
         for c in range(Q):
