@@ -129,8 +129,12 @@ RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdif
 {
     for (int d = 0; d < 2 * w->ry + 1; d++) {
         const IN_T *restrict row = w->rowp[d];
-        IN_T m = row[a];
-        for (ptrdiff_t x = a + 1; x <= b; x++) m = row[x] > m ? row[x] : m;
+#if IN_IS_INT
+        IN_T m = 0;                                   /* unsigned */
+#else
+        IN_T m = -INFINITY;                           /* a NaN never replaces it */
+#endif
+        for (ptrdiff_t x = a; x <= b; x++) m = row[x] > m ? row[x] : m;
         if ((double)m >= level) return 1;
     }
     return 0;
@@ -148,7 +152,8 @@ RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdif
  * own); a site whose candidates (edi_rows: its ten taps) are all
  * clipped stays at or above the smallest of them: saturation is kept exactly in IN_T. So
  * the slow core runs only where a clipped pixel is (with clipped pixels in every block it
- * ran everywhere: SG 37 against 452 Mpix/s with 6 % clipped, docs/reports/benchmarks.md).
+ * ran everywhere: SG Mask1 40 against 449 Mpix/s with 6 % of the pixels clipped,
+ * docs/reports/benchmarks.md).
  *
  * Gathering: inside the frame, the taps of one kernel row whose columns are equal modulo
  * px are one strided stream of that row shifted by whole sites (tap (dy, dx) of site j is
