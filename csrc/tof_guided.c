@@ -1616,6 +1616,32 @@ int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *si
     return RGBZ_OK;
 }
 
+int rgbz_tofg_flying_candidates(const double *depth, const double *sigma,
+                                const uint8_t *usable, ptrdiff_t R, ptrdiff_t C, double step,
+                                double k, uint8_t *cand, int workers)
+{
+    if (!depth || !sigma || !usable || !cand || R < 0 || C < 0 || !(step >= 0.0)
+        || !(k > 0.0) || !(k < INFINITY))
+        return RGBZ_EINVAL;
+    const tofg_fly_args p = {depth, sigma, usable, NULL, NULL, NULL, 0, 0, R, C, step * step,
+                             k * k, 0.0, 0.0, 0.0, 0, NULL, NULL};
+    uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
+    if (!code) return RGBZ_ENOMEM;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++) {
+        uint8_t *cr = cand + r * C;
+        const uint8_t *u = usable + r * C;
+        tofg_cand_row(&p, code, r, cr);
+        for (ptrdiff_t c = 0; c < C; c++) cr[c] = (uint8_t)((u[c] != 0) & (cr[c] != 0));
+    }
+    free(code);
+    return RGBZ_OK;
+}
+
 int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
                      const float *col, const float *cells, int ncells, const float *ring,
                      int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,

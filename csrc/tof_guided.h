@@ -99,6 +99,16 @@ int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *si
                      const uint8_t *present, uint8_t bad, ptrdiff_t N, uint8_t *usable,
                      int workers);
 
+/* The candidates of the flying-pixel test (rgbz_fast.tof.flying_pixels) on the grid (R, C):
+   cand (N,) = 1 where a usable (usable != 0) measurement is at a depth discontinuity along
+   one of the four grid directions -- the second difference of depth exceeds
+   max(step, k sqrt(s[m+e]^2 + 4 s[m]^2 + s[m-e]^2)), three usable measurements in a row --
+   or is the neighbour across its larger first difference; else 0. The unusable cells' depth
+   and sigma are never used (they may be NaN). 0 < k < inf. */
+int rgbz_tofg_flying_candidates(const double *depth, const double *sigma,
+                                const uint8_t *usable, ptrdiff_t R, ptrdiff_t C, double step,
+                                double k, uint8_t *cand, int workers);
+
 /* The flying-pixel test with colour edges on the grid (R, C): usable (N,) measurements
    (not saturated, not low-signal); second differences of depth against max(step, k noise)
    mark the candidates (rgbz_fast.tof.flying_pixels); a candidate whose depth is one side's

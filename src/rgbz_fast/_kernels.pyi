@@ -229,6 +229,9 @@ def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual:
 def tofg_usable(flags: np.ndarray, depth: np.ndarray, sigma: np.ndarray,
                 present: np.ndarray | None, bad: int, usable: np.ndarray,
                 workers: int) -> None: ...
+def tofg_flying_candidates(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, R: int,
+                           C: int, step: float, k: float, cand: np.ndarray,
+                           workers: int) -> None: ...
 def tofg_flying(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, col: np.ndarray,
                 cells: np.ndarray | None, ring: np.ndarray | None, R: int, C: int,
                 step: float, k: float,

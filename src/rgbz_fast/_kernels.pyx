@@ -885,6 +885,9 @@ cdef extern from "tof_guided.h" nogil:
     int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *sigma,
                          const uint8_t *present, uint8_t bad, Py_ssize_t N, uint8_t *usable,
                          int workers)
+    int rgbz_tofg_flying_candidates(const double *depth, const double *sigma,
+                                    const uint8_t *usable, Py_ssize_t R, Py_ssize_t C,
+                                    double step, double k, uint8_t *cand, int workers)
     int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *usable,
                          const float *col, const float *cells, int ncells, const float *ring,
                          int nring, Py_ssize_t R, Py_ssize_t C, double step, double k,
@@ -1069,6 +1072,24 @@ def tofg_usable(const uint8_t[::1] flags, const double[::1] depth, const double[
     with nogil:
         status = rgbz_tofg_usable(&flags[0], &depth[0], &sigma[0], pp, bad, n, &usable[0],
                                   workers)
+    _raise_for(status)
+
+
+def tofg_flying_candidates(const double[::1] depth, const double[::1] sigma,
+                           const uint8_t[::1] usable, Py_ssize_t R, Py_ssize_t C, double step,
+                           double k, uint8_t[::1] cand, int workers):
+    """The candidates of the flying-pixel test (rgbz_fast.tof.flying_pixels) on the grid
+    (R, C): cand = 1 at the usable measurements at a depth discontinuity; all (R * C,)."""
+    cdef Py_ssize_t n = R * C
+    if R < 0 or C < 0 or depth.shape[0] != n or sigma.shape[0] != n or \
+            usable.shape[0] != n or cand.shape[0] != n:
+        raise ValueError(f"tofg_flying_candidates: expected planes of {R} x {C} measurements")
+    if n == 0:
+        return
+    cdef int status
+    with nogil:
+        status = rgbz_tofg_flying_candidates(&depth[0], &sigma[0], &usable[0], R, C, step, k,
+                                             &cand[0], workers)
     _raise_for(status)
 
 

@@ -195,13 +195,54 @@ def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_
     return snr, sigma, refl, flags.astype(np.uint8)
 
 
+def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0):
+    """rgbz_fast.tof.flying_pixels (csrc/tof_guided.c, rgbz_tofg_flying_candidates) in whole-grid
+    NumPy operations: the grid padded by one cell, each direction's second differences as
+    shifted slices, the pair across every hit marked."""
+    d = np.asarray(depth, np.float64)
+    s = np.asarray(sigma, np.float64)
+    grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
+    ok = np.ones(grid.n, bool) if usable is None else np.asarray(usable, bool)
+    R, C = grid.shape
+    dg = np.zeros((R + 2, C + 2))
+    vg = np.zeros((R + 2, C + 2))
+    og = np.zeros((R + 2, C + 2), bool)
+    inner = (slice(1, R + 1), slice(1, C + 1))
+    good = ok & np.isfinite(s) & np.isfinite(d)
+    with np.errstate(over="ignore", invalid="ignore"):
+        dg[inner] = grid.to_grid(np.where(good, d, 0.0))
+        vg[inner] = grid.to_grid(np.where(good, s * s, 0.0))
+    og[inner] = grid.to_grid(good, False) & grid.present
+    flag = np.zeros((R + 2, C + 2), bool)
+    k2 = k * k
+    step2 = step * step
+
+    def at(a, b):
+        return slice(1 + a, R + 1 + a), slice(1 + b, C + 1 + b)
+
+    with np.errstate(over="ignore", invalid="ignore"):
+        for e in ((0, 1), (1, 0), (1, 1), (1, -1)):
+            lo, hi = at(-e[0], -e[1]), at(*e)
+            down = dg[inner] - dg[lo]
+            up = dg[hi] - dg[inner]
+            jump = up - down
+            jump *= jump
+            noise = vg[hi] + vg[lo]
+            noise += 4.0 * vg[inner]
+            noise *= k2
+            np.maximum(noise, step2, out=noise)
+            hit = og[inner] & og[lo] & og[hi] & (jump > noise)
+            toward_hi = np.abs(up) >= np.abs(down)
+            flag[inner] |= hit
+            flag[hi] |= hit & toward_hi
+            flag[lo] |= hit & ~toward_hi
+    return grid.from_grid(flag[inner] & og[inner])
+
+
 def guided_flying(depth, sigma, usable, col, cells, ring, R, C, step, k, contrast, side,
                   unflag):
     """Bits 8 (flying) and 32 (resolved) and the depths (resolved ones replaced), with plain
     loops over the cells and the ring pixels in the kernel's order."""
-    from rgbz_fast.tof import flying_pixels
-    from rgbz_fast.tof._filters import SiteGrid
-
     d = np.asarray(depth, np.float64)
     s = np.asarray(sigma, np.float64)
     u = np.asarray(usable, bool)

@@ -127,6 +127,41 @@ def test_flying_pixels_on_ideal_depths():
     assert not flying_pixels(mixed, sigma, (rows, cols), usable=usable).any()
 
 
+@pytest.mark.parametrize("layout", ["mask1", "mask2", "holes", "large"])
+def test_flying_pixels_kernel_equals_reference(layout):
+    """The C kernel (rgbz_tofg_flying_candidates) against the whole-grid NumPy reference,
+    flag for flag: steps, slopes, noise of every size, NaN and infinite depths and sigmas,
+    unusable measurements, a grid with holes, k = 0, step = 0, 1 and 2 threads."""
+    rng = np.random.default_rng(11)
+    shape = {"holes": (64, 64), "large": (1500, 1500)}.get(layout, (90, 130))
+    if layout == "large":                          # 750 x 750 cells: two threads
+        sites, block = _sites("mask1", shape)
+    elif layout == "holes":                          # an irregular layout: some cells empty
+        rr, cc = np.nonzero(rng.random((32, 32)) < 0.8)
+        sites, block = (rr * 2, cc * 2), 1
+    else:
+        sites, block = _sites(layout, shape)
+    n = sites[0].size
+    y, x = sites[0] / shape[0], sites[1] / shape[1]
+    base = np.where(x + 0.3 * y < 0.5, 1.0, 1.6) + 0.2 * np.sin(9 * y)
+    depth = base + rng.normal(0, 0.004, n)
+    depth[rng.random(n) < 0.05] = 1.3                # mixtures on and off the edge
+    sigma = rng.uniform(0.001, 0.03, n)
+    sigma[rng.random(n) < 0.02] = rng.uniform(0.1, 1e3, 1)
+    depth[rng.random(n) < 0.01] = np.nan
+    sigma[rng.random(n) < 0.01] = np.inf
+    usable = rng.random(n) < 0.95
+    hits = 0
+    for kw in (dict(), dict(step=0.0), dict(k=0.0), dict(k=0.7, step=0.2), dict(k=5.0)):
+        want = ref.flying_pixels(depth, sigma, sites, block=block, usable=usable, **kw)
+        hits += int(want.sum())
+        for workers in (1, 2):
+            got = flying_pixels(depth, sigma, sites, block=block, usable=usable,
+                                workers=workers, **kw)
+            np.testing.assert_array_equal(got, want)
+    assert hits > 100
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 @pytest.mark.parametrize("far", [2.0, 1.3])
 def test_step_edges_are_flagged(pattern, far):

@@ -357,7 +357,7 @@ def _run(tof, p, nthreads, guide=None):
                          min_snr=p.min_snr, min_amplitude=p.min_amplitude,
                          max_sigma=p.max_sigma, max_residual=p.max_residual,
                          flying_step=p.flying_step, min_reflectance=p.min_reflectance,
-                         max_range=max_range)
+                         max_range=max_range, workers=nthreads)
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
                     offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
                     valid=flags == 0, flags=flags,

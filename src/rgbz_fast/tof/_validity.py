@@ -25,7 +25,8 @@ import enum
 import numpy as np
 
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import as_array, check_number
+from .. import _kernels
+from .._validate import as_array, check_number, check_workers, kernel_threads
 from ._filters import SiteGrid
 
 __all__ = ["ToFFlag", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
@@ -122,11 +123,11 @@ def _implied_reflectance(depth, amp, sensor, block):
 
 def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid, *,
                  min_snr, min_amplitude, max_sigma, max_residual, flying_step,
-                 min_reflectance, max_range):
+                 min_reflectance, max_range, workers=None):
     """The flag bits (uint8, shape (n,)) of every measurement (:func:`~rgbz_fast.tof.tof_depth`).
 
     ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes it (the
-    flying-pixel test needs it; the other tests do not).
+    flying-pixel test needs it; the other tests do not); ``workers``: its threads.
     """
     n = depth.shape[0]
     flags = np.zeros(n, np.uint8)
@@ -141,7 +142,7 @@ def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid,
         if not isinstance(grid, SiteGrid):
             grid = grid()
         flags[flying_pixels(depth, sigma, grid, block=grid.block, step=flying_step,
-                            usable=usable)] |= FLAG_FLYING
+                            usable=usable, workers=workers)] |= FLAG_FLYING
     # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
     # ~0 m (the reflectance test) or, through the noise, just below the end
     out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
@@ -149,7 +150,8 @@ def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid,
     return flags
 
 
-def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0):
+def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0,
+                  workers=None):
     """Measurements at a depth discontinuity (possible mixtures of two surfaces).
 
     Along each of the four grid directions (rows, columns, both diagonals) the
@@ -179,6 +181,8 @@ def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0
         take part in no difference.
     k : float
         A jump must also exceed ``k`` times the noise of the difference.
+    workers : int, optional
+        Threads of the C kernel (csrc/tof_guided.c; default: all cores).
 
     Returns
     -------
@@ -198,6 +202,7 @@ def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0
     d = as_array(depth, "depth", dtype=np.float64)
     s = as_array(sigma, "sigma", dtype=np.float64)
     k = check_number(k, "k", lo=0)
+    nthreads = check_workers(workers)
     grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
     if d.shape != (grid.n,) or s.shape != (grid.n,):
         raise ValueError(f"depth, sigma: expected shape ({grid.n},), got {d.shape} and "
@@ -207,37 +212,13 @@ def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0
     if ok.shape != (grid.n,):
         raise ValueError(f"usable: expected shape ({grid.n},), got {ok.shape}")
     R, C = grid.shape
-    # pad by one cell: every shift below is a slice
-    dg = np.zeros((R + 2, C + 2))
-    vg = np.zeros((R + 2, C + 2))
-    og = np.zeros((R + 2, C + 2), bool)
-    inner = (slice(1, R + 1), slice(1, C + 1))
     good = ok & np.isfinite(s) & np.isfinite(d)
-    dg[inner] = grid.to_grid(np.where(good, d, 0.0))
-    vg[inner] = grid.to_grid(np.where(good, s * s, 0.0))
-    og[inner] = grid.to_grid(good, False) & grid.present
-    flag = np.zeros((R + 2, C + 2), bool)
-    k2 = k * k
-    step2 = step * step
-
-    def at(a, b):
-        return slice(1 + a, R + 1 + a), slice(1 + b, C + 1 + b)
-
-    for e in ((0, 1), (1, 0), (1, 1), (1, -1)):
-        lo, hi = at(-e[0], -e[1]), at(*e)
-        down = dg[inner] - dg[lo]                       # d[m] - d[m - e]
-        up = dg[hi] - dg[inner]                         # d[m + e] - d[m]
-        jump = up - down
-        jump *= jump
-        noise = vg[hi] + vg[lo]
-        noise += 4.0 * vg[inner]
-        noise *= k2
-        np.maximum(noise, step2, out=noise)
-        hit = og[inner] & og[lo] & og[hi] & (jump > noise)
-        # the pair across the discontinuity: the centre and its neighbour on the side of the
-        # larger first difference
-        toward_hi = np.abs(up) >= np.abs(down)
-        flag[inner] |= hit
-        flag[hi] |= hit & toward_hi
-        flag[lo] |= hit & ~toward_hi
-    return grid.from_grid(flag[inner] & og[inner])
+    usable_grid = np.ascontiguousarray(grid.to_grid(good, False) & grid.present, np.uint8)
+    # k = 0: the noise term is 0 whatever sigma is, so sigma 0 and any k > 0 give it
+    dg = np.ascontiguousarray(grid.to_grid(np.where(good, d, 0.0)), np.float64)
+    sg = np.ascontiguousarray(grid.to_grid(np.where(good & (k > 0), s, 0.0)), np.float64)
+    cand = np.empty(R * C, np.uint8)
+    _kernels.tofg_flying_candidates(dg.reshape(-1), sg.reshape(-1), usable_grid.reshape(-1),
+                                    R, C, step, k if k > 0 else 1.0, cand,
+                                    kernel_threads(nthreads, R * C))
+    return grid.from_grid(cand.reshape(R, C).astype(bool))

@@ -1,0 +1,74 @@
+"""The flying-pixel test's C kernel against the NumPy code it replaced, in the unguided ToF ISP.
+
+    python tools/tof_flying_speed.py [ROUNDS] [WORKERS]      # a minute or two
+
+The 12 MP frame of tools/tof_guided_speed.py (art scaled to 3000x4000, Mask1, 3 M
+measurements). ``ToFISP(denoise=...).run(tof)`` for "none", "box" and "bilateral" (the
+default), and ``flying_pixels`` alone on that result, each run with the library's
+``flying_pixels`` (csrc/tof_guided.c, rgbz_tofg_flying_candidates) and with the whole-grid NumPy
+code it replaced (tests/_reference/tof.py, which the tests hold it to flag for flag),
+alternated round by round: medians of the wall times and their ratio (> 1: the C kernel
+is faster). The flags are compared too.
+"""
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "tests"))
+sys.path.insert(0, str(HERE))
+
+from _reference import tof as ref  # noqa: E402
+from tof_guided_speed import frame_12mp  # noqa: E402
+
+import rgbz_fast.tof._validity as V  # noqa: E402
+from rgbz_fast.tof import ToFISP  # noqa: E402
+from rgbz_fast.tof._filters import SiteGrid  # noqa: E402
+
+C_KERNEL = V.flying_pixels
+
+
+def numpy_code(*args, workers=None, **kw):
+    return ref.flying_pixels(*args, **kw)
+
+
+def paired(run, rounds):
+    t = {"C": [], "NumPy": []}
+    out = {}
+    for i in range(rounds + 1):
+        for name in (("C", "NumPy") if i % 2 else ("NumPy", "C")):
+            V.flying_pixels = C_KERNEL if name == "C" else numpy_code
+            try:
+                a = time.perf_counter()
+                out[name] = run()
+                s = time.perf_counter() - a
+            finally:
+                V.flying_pixels = C_KERNEL
+            if i:
+                t[name].append(s)
+    return np.median(t["C"]), np.median(t["NumPy"]), out
+
+
+def main(rounds=7, workers=2):
+    frame, _ = frame_12mp()
+    tof = frame.tof
+    print(f"{tof.n_sites} measurements, {workers} thread(s), {rounds} rounds")
+    for denoise in ("none", "box", "bilateral"):
+        isp = ToFISP(denoise=denoise)
+        c, n, out = paired(lambda: isp.run(tof, workers=workers), rounds)
+        same = np.array_equal(out["C"].flags, out["NumPy"].flags)
+        print(f"ToFISP(denoise={denoise!r}).run(tof): C {c:.3f} s, NumPy {n:.3f} s, "
+              f"{n / c:.3f}x; flags equal: {same}", flush=True)
+    res = ToFISP().run(tof, workers=workers)
+    grid = SiteGrid(tof.sites, tof.block)
+    usable = (res.flags & 3) == 0
+    c, n, out = paired(lambda: V.flying_pixels(res.depth, res.sigma, grid, block=tof.block,
+                                               usable=usable, workers=workers), rounds)
+    print(f"flying_pixels alone: C {1e3 * c:.1f} ms, NumPy {1e3 * n:.1f} ms, {n / c:.2f}x; "
+          f"equal: {np.array_equal(out['C'], out['NumPy'])}")
+
+
+if __name__ == "__main__":
+    main(*(int(a) for a in sys.argv[1:3]))
