@@ -160,3 +160,70 @@ int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var
     (void)workers;
     return status;
 }
+
+/* ------------------------------------------------------------------ validity (unguided ISP) */
+/*
+ * snr, sigma, the implied reflectance and the validity bits but the flying one of the
+ * measurements n in [n0, n1): the NumPy operations of rgbz_fast.tof's unguided chain in their
+ * order (tests/_reference/tof.py, unguided_validity), so the same bits.
+ */
+static void validity_block(const rgbz_tof_validity_args *p, ptrdiff_t n0, ptrdiff_t n1)
+{
+    const ptrdiff_t F = p->F, N = p->N;
+    const double cap = p->phase_var_cap;
+    for (ptrdiff_t n = n0; n < n1; n++) {
+        /* snr = min_f 2 amp / sqrt(var), NaN if any is NaN (np.min) */
+        double snr = 0.0, t = 0.0, rho = 0.0;
+        int nan = 0, low_amp = 0;
+        const double dep = p->depth[n];
+        const int ok = dep > 0.0;
+        const double d = ok ? dep : 1.0;
+        /* the electrons of a reflectance-1 surface at d (ToFSensor.active_electrons), times
+           block^2 */
+        const double s1 = p->power / (4.0 * d * d * p->tan_h * p->tan_v) * p->k_cell;
+        const double cells = s1 * p->block * p->block;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const double a = p->amp[f * N + n], v = p->var[f * N + n];
+            const double x = 2.0 * a / sqrt(v);
+            nan |= x != x;
+            snr = f == 0 ? x : (x < snr ? x : snr);
+            low_amp |= a < p->min_amplitude;
+            /* the phase variance var / |I + iQ|^2, capped (fmin: a NaN takes the cap) */
+            double ph = v / (a * a * 4.0);
+            ph = fmin(ph, cap) * p->sigma_scale[f];
+            t = f == 0 ? ph : t + ph;
+            const double q = a / (p->refl_coef[f] * cells);
+            rho = f == 0 ? q : rho + q;
+        }
+        if (nan) snr = NAN;
+        const double sigma = sqrt(t);
+        const double refl = ok ? rho / (double)F : 0.0;
+        uint8_t fl = p->saturated[n] ? 1 : 0;
+        int low = (snr < p->min_snr) | low_amp;
+        if (p->max_sigma >= 0.0) low |= !(sigma <= p->max_sigma);
+        fl |= low ? 2 : 0;
+        fl |= p->residual[n] > p->max_residual ? 4 : 0;
+        fl |= ((dep < 0.0) | (dep > p->max_range - 5.0 * sigma) | (refl < p->min_reflectance))
+              ? 16 : 0;
+        p->snr[n] = snr;
+        p->sigma[n] = sigma;
+        p->refl[n] = refl;
+        p->flags[n] = fl;
+    }
+}
+
+int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
+{
+    if (!p || !p->amp || !p->var || !p->depth || !p->residual || !p->saturated
+        || !p->sigma_scale || !p->refl_coef || !p->snr || !p->sigma || !p->refl || !p->flags
+        || p->F < 1 || p->N < 0)
+        return RGBZ_EINVAL;
+    const ptrdiff_t B = 4096, nb = (p->N + B - 1) / B;
+    (void)workers;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(workers > 0 ? workers : omp_get_max_threads())
+#endif
+    for (ptrdiff_t b = 0; b < nb; b++)
+        validity_block(p, b * B, (b + 1) * B < p->N ? (b + 1) * B : p->N);
+    return RGBZ_OK;
+}

@@ -229,6 +229,13 @@ def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual:
 def tofg_usable(flags: np.ndarray, depth: np.ndarray, sigma: np.ndarray,
                 present: np.ndarray | None, bad: int, usable: np.ndarray,
                 workers: int) -> None: ...
+def tof_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
+                 saturated: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
+                 phase_var_cap: float, power: float, tan_h: float, tan_v: float,
+                 k_cell: float, block: float, min_snr: float, min_amplitude: float,
+                 max_sigma: float, max_residual: float, min_reflectance: float,
+                 max_range: float, snr: np.ndarray, sigma: np.ndarray, refl: np.ndarray,
+                 flags: np.ndarray, workers: int) -> None: ...
 def tofg_flying_candidates(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, R: int,
                            C: int, step: float, k: float, cand: np.ndarray,
                            workers: int) -> None: ...

@@ -31,6 +31,23 @@ cdef extern from "tof_filter.h" nogil:
                            Py_ssize_t reach_rows, Py_ssize_t reach_cols, int64_t radius_px,
                            double inv_h2, double *out_re, double *out_im, double *out_var, double *out_neff,
                            int workers)
+    ctypedef struct rgbz_tof_validity_args:
+        const double *amp
+        const double *var
+        const double *depth
+        const double *residual
+        const uint8_t *saturated
+        Py_ssize_t F
+        Py_ssize_t N
+        const double *sigma_scale
+        const double *refl_coef
+        double phase_var_cap, power, tan_h, tan_v, k_cell, block
+        double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range
+        double *snr
+        double *sigma
+        double *refl
+        uint8_t *flags
+    int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
 
 ctypedef fused rgb_t:
     float
@@ -429,6 +446,57 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     radius_px, inv_h2,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
+    _raise_for(status)
+
+
+def tof_validity(const double[:, ::1] amp, const double[:, ::1] var, const double[::1] depth,
+                 const double[::1] residual, const uint8_t[::1] saturated,
+                 const double[::1] sigma_scale, const double[::1] refl_coef,
+                 double phase_var_cap, double power, double tan_h, double tan_v,
+                 double k_cell, double block, double min_snr, double min_amplitude,
+                 double max_sigma, double max_residual, double min_reflectance,
+                 double max_range, double[::1] snr, double[::1] sigma, double[::1] refl,
+                 uint8_t[::1] flags, int workers):
+    """The unguided ToF ISP's snr, sigma, implied reflectance and validity bits but the
+    flying one (csrc/tof_filter.c, rgbz_tof_validity); amp, var (F, N), the rest (N,),
+    sigma_scale and refl_coef (F,); max_sigma < 0: no limit."""
+    cdef Py_ssize_t F = amp.shape[0], n = amp.shape[1]
+    if (var.shape[0] != F or var.shape[1] != n or sigma_scale.shape[0] != F
+            or refl_coef.shape[0] != F or depth.shape[0] != n or residual.shape[0] != n
+            or saturated.shape[0] != n or snr.shape[0] != n or sigma.shape[0] != n
+            or refl.shape[0] != n or flags.shape[0] != n):
+        raise ValueError(f"tof_validity: expected (F, N) and (N,) planes, F = {F}, N = {n}")
+    if n == 0:
+        return
+    cdef rgbz_tof_validity_args a
+    a.amp = &amp[0, 0]
+    a.var = &var[0, 0]
+    a.depth = &depth[0]
+    a.residual = &residual[0]
+    a.saturated = &saturated[0]
+    a.F = F
+    a.N = n
+    a.sigma_scale = &sigma_scale[0]
+    a.refl_coef = &refl_coef[0]
+    a.phase_var_cap = phase_var_cap
+    a.power = power
+    a.tan_h = tan_h
+    a.tan_v = tan_v
+    a.k_cell = k_cell
+    a.block = block
+    a.min_snr = min_snr
+    a.min_amplitude = min_amplitude
+    a.max_sigma = max_sigma
+    a.max_residual = max_residual
+    a.min_reflectance = min_reflectance
+    a.max_range = max_range
+    a.snr = &snr[0]
+    a.sigma = &sigma[0]
+    a.refl = &refl[0]
+    a.flags = &flags[0]
+    cdef int status
+    with nogil:
+        status = rgbz_tof_validity(&a, workers)
     _raise_for(status)
 
 

@@ -475,18 +475,25 @@ class ToFSensor(_Readout):
         """Charge drained from each tap by the ambient suppression: a share of its DC part."""
         return self.ambient_suppression * (0.25 * total + self._dark_electrons)
 
-    def _cell_electrons(self, d, rho, pitch_um):
-        """Active (S) and ambient (B) electrons collected by one cell over one integration.
-
-        The burst illumination (``duty_cycle``) keeps the laser energy and
-        collects ambient light only while the pixel integrates.
-        """
+    def _cell_constants(self, pitch_um):
+        """(tan(h/2), tan(v/2), k): the field of view's half-angle tangents and the electrons
+        per unit irradiance of one cell of pitch ``pitch_um`` (the radiometry of
+        :meth:`_cell_electrons`; the unguided ToF ISP's C validity takes them as they are)."""
         area = (pitch_um * 1e-6) ** 2
         photon_energy = _PLANCK * SPEED_OF_LIGHT / (self.wavelength_nm * 1e-9)
         th = math.tan(math.radians(self.fov_deg[0]) / 2)
         tv = math.tan(math.radians(self.fov_deg[1]) / 2)
         k = (self.optics_transmission * area / (4 * self.f_number ** 2) / photon_energy
              * self.qe * self.integration_time)
+        return th, tv, k
+
+    def _cell_electrons(self, d, rho, pitch_um):
+        """Active (S) and ambient (B) electrons collected by one cell over one integration.
+
+        The burst illumination (``duty_cycle``) keeps the laser energy and
+        collects ambient light only while the pixel integrates.
+        """
+        th, tv, k = self._cell_constants(pitch_um)
         irradiance = self.optical_power_w / (4 * d * d * th * tv)
         ambient = rho * self.ambient_irradiance * k
         if self.duty_cycle != 1.0:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from rgbz_fast._sensors import SPEED_OF_LIGHT
 from rgbz_fast.tof._filters import SiteGrid
 
 
@@ -397,3 +398,87 @@ def guided_usable(flags, depth, sigma, present, bad):
     if present is not None:
         u &= present.astype(bool)
     return u.astype(np.uint8)
+
+
+# -- the unguided chain's validity (csrc/tof_filter.c, rgbz_tof_validity) ----------------------
+# The NumPy code the kernel replaced, as it was (rgbz_fast.tof._validity before 2026-11-26):
+# _depth_sigma, _implied_reflectance, assign_flags, and unguided_validity, which runs them as
+# the chain did.
+
+FLAG_SATURATED, FLAG_LOW_SIGNAL, FLAG_INCONSISTENT, FLAG_FLYING, FLAG_OUT_OF_RANGE = 1, 2, 4, 8, 16
+
+
+def _depth_sigma(amp, var, frequencies):
+    """Depth noise (m) of the f^2-weighted mean of the per-frequency distances.
+
+    ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
+    variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
+    (uniform on the circle). In place on one (F, n) temporary: it runs on every frame.
+    """
+    f = np.asarray(frequencies, np.float64)
+    w = f * f
+    scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
+    t = np.multiply(amp, amp)
+    t *= 4.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.divide(var, t, out=t)                          # phase variance; inf / nan at 0
+    np.fmin(t, np.pi * np.pi / 3.0, out=t)               # fmin: a NaN takes the cap
+    t *= scale[:, None]
+    return np.sqrt(t.sum(axis=0))
+
+
+def _implied_reflectance(depth, amp, sensor, block):
+    """NIR reflectance that the amplitude implies at ``depth`` (the sensor's radiometry)."""
+    ok = depth > 0
+    d = np.where(ok, depth, 1.0)
+    s1 = sensor.active_electrons(d)
+    contrast = sensor.contrasts.reshape(-1, 1) * float(np.mean(sensor.tap_contrast))
+    model = sensor.system_gain * 0.25 * contrast * (s1 * block * block)[None]
+    rho = (amp / model).mean(axis=0)
+    return np.where(ok, rho, 0.0)
+
+
+def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid, *,
+                 min_snr, min_amplitude, max_sigma, max_residual, flying_step,
+                 min_reflectance, max_range):
+    """The flag bits (uint8, shape (n,)) of every measurement (:func:`~rgbz_fast.tof.tof_depth`).
+
+    ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes it (the
+    flying-pixel test needs it; the other tests do not).
+    """
+    n = depth.shape[0]
+    flags = np.zeros(n, np.uint8)
+    flags[saturated] |= FLAG_SATURATED
+    low = (snr < min_snr) | np.any(amp < min_amplitude, axis=0)
+    if max_sigma is not None:
+        low |= ~(sigma <= max_sigma)
+    flags[low] |= FLAG_LOW_SIGNAL
+    flags[residual > max_residual] |= FLAG_INCONSISTENT
+    if flying_step is not None:
+        usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
+        if not isinstance(grid, SiteGrid):
+            grid = grid()
+        flags[flying_pixels(depth, sigma, grid, block=grid.block, step=flying_step,
+                            usable=usable)] |= FLAG_FLYING
+    # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
+    # ~0 m (the reflectance test) or, through the noise, just below the end
+    out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
+    flags[out] |= FLAG_OUT_OF_RANGE
+    return flags
+
+
+def unguided_validity(depth, residual, amp, var, saturated, sensor, block, frequencies, sites,
+                      *, min_snr, min_amplitude, max_sigma, max_residual, flying_step,
+                      min_reflectance, max_range):
+    """snr, sigma, reflectance, flags as the unguided chain computed them in NumPy (sites: the
+    measurements' sites or their SiteGrid)."""
+    snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
+    sigma = _depth_sigma(amp, var, frequencies)
+    reflectance = _implied_reflectance(depth, amp, sensor, block)
+    grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
+    flags = assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid,
+                         min_snr=min_snr,
+                         min_amplitude=min_amplitude, max_sigma=max_sigma,
+                         max_residual=max_residual, flying_step=flying_step,
+                         min_reflectance=min_reflectance, max_range=max_range)
+    return snr, sigma, reflectance, flags

@@ -12,6 +12,7 @@ from _reference import tof as ref  # noqa: E402
 
 import rgbz_fast as rz
 from rgbz_fast.simulation import Scene, ToFSensor, simulate_tof
+from rgbz_fast.tof._filters import SiteGrid
 from rgbz_fast.tof import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
                            denoise_phasors_bilateral, flying_pixels, tof_depth)
 
@@ -160,6 +161,44 @@ def test_flying_pixels_kernel_equals_reference(layout):
                                 workers=workers, **kw)
             np.testing.assert_array_equal(got, want)
     assert hits > 100
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+def test_validity_kernel_equals_reference(pattern):
+    """The unguided chain's snr, sigma, reflectance and flags (csrc/tof_filter.c,
+    rgbz_tof_validity, and the flying-pixel test) against the NumPy code they replaced, bit
+    for bit: a simulated frame's measurements with amplitudes of 0, NaN and negative depths,
+    saturated ones, every threshold on and off, 1 and 2 threads (the large case)."""
+    from rgbz_fast.tof._validity import validity
+
+    rng = np.random.default_rng(5)
+    shape = (1100, 1100) if pattern == "mask1" else (60, 80)
+    sites, block = _sites(pattern, shape)
+    n = sites[0].size
+    sensor = ToFSensor(tap_contrast=(1.0, 0.9, 1.0, 0.95)) if pattern == "mask2" else ToFSensor()
+    f = np.array(sensor.frequencies, np.float64)
+    depth = rng.uniform(0.3, 7.0, n)
+    depth[rng.random(n) < 0.01] = np.nan
+    depth[rng.random(n) < 0.01] = -0.2
+    amp = rng.uniform(0, 300, (f.size, n))
+    amp[:, rng.random(n) < 0.01] = 0.0
+    var = rng.uniform(1, 400, (f.size, n))
+    residual = rng.uniform(0, 0.3, n)
+    saturated = rng.random(n) < 0.02
+    kw = dict(min_snr=4.0, min_amplitude=0.0, max_sigma=0.015, max_residual=0.15,
+              flying_step=0.05, min_reflectance=0.05, max_range=7.49)
+    for change in ({}, dict(max_sigma=None), dict(min_amplitude=20.0, flying_step=None),
+                   dict(min_reflectance=0.0, max_range=3.0)):
+        k = dict(kw, **change)
+        want = ref.unguided_validity(depth, residual, amp, var, saturated, sensor, block, f,
+                                     sites, **k)
+        for workers in (1, 2):
+            got = validity(depth, residual, amp, var, saturated, sensor, block, f,
+                           SiteGrid(sites, block), workers=workers, **k)
+            for g, w in zip(got, want):
+                assert g.dtype == w.dtype
+                np.testing.assert_array_equal(g.view(np.uint8), w.view(np.uint8))
+    assert 0 < (want[3] & 2).mean() < 1 and (want[3] & 16).any() and (want[3] & 8).any()
 
 
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])

@@ -40,7 +40,7 @@ from ._noise import tap_variance
 from ._result import ToFDepth
 from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
                       denoise_phasors, unwrap)
-from ._validity import _depth_sigma, _implied_reflectance, assign_flags
+from ._validity import validity
 
 __all__ = ["ToFISP", "tof_depth"]
 
@@ -348,16 +348,12 @@ def _run(tof, p, nthreads, guide=None):
             var = 2.0 * tap_variance(offset, sensor)
         depth, residual, wraps, phase, amp = _unwrap_phasors(i, q, f, w, max_range,
                                                              calibration, nthreads)
-    snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
-    sigma = _depth_sigma(amp, var, f)
-    reflectance = _implied_reflectance(depth, amp, sensor, tof.block)
-
-    flags = assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated,
-                         grid if grid is not None else (lambda: SiteGrid(tof.sites, tof.block)),
-                         min_snr=p.min_snr, min_amplitude=p.min_amplitude,
-                         max_sigma=p.max_sigma, max_residual=p.max_residual,
-                         flying_step=p.flying_step, min_reflectance=p.min_reflectance,
-                         max_range=max_range, workers=nthreads)
+    snr, sigma, reflectance, flags = validity(
+        depth, residual, amp, var, saturated, sensor, tof.block, f,
+        grid if grid is not None else (lambda: SiteGrid(tof.sites, tof.block)),
+        min_snr=p.min_snr, min_amplitude=p.min_amplitude, max_sigma=p.max_sigma,
+        max_residual=p.max_residual, flying_step=p.flying_step,
+        min_reflectance=p.min_reflectance, max_range=max_range, workers=nthreads)
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
                     offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
                     valid=flags == 0, flags=flags,

@@ -24,7 +24,7 @@ import enum
 
 import numpy as np
 
-from .._sensors import SPEED_OF_LIGHT
+from .._sensors import DEFAULT_CELL_PITCH_UM, SPEED_OF_LIGHT
 from .. import _kernels
 from .._validate import as_array, check_number, check_workers, kernel_threads
 from ._filters import SiteGrid
@@ -91,63 +91,55 @@ FLAG_OUT_OF_RANGE = int(ToFFlag.OUT_OF_RANGE)
 FLAG_RESOLVED = int(ToFFlag.RESOLVED)
 
 
-def _depth_sigma(amp, var, frequencies):
-    """Depth noise (m) of the f^2-weighted mean of the per-frequency distances.
+def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, grid, *,
+             min_snr, min_amplitude, max_sigma, max_residual, flying_step, min_reflectance,
+             max_range, workers=None):
+    """snr, sigma, implied reflectance and flags (uint8) of every measurement of the unguided
+    chain (:func:`~rgbz_fast.tof.tof_depth`), from the per-frequency amplitude ``amp`` and
+    component variance ``var`` (F, n), ``depth``, ``residual`` and ``saturated`` (n,).
 
-    ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
-    variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
-    (uniform on the circle). In place on one (F, n) temporary: it runs on every frame.
+    * snr: ``min_f 2 |I + iQ|_f / sqrt(var_f)``;
+    * sigma: the depth noise of the f^2-weighted mean of the per-frequency distances,
+      ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
+      variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
+      (uniform on the circle);
+    * reflectance: the NIR reflectance the amplitude implies at ``depth`` (the sensor's
+      radiometry, :meth:`~rgbz_fast.simulation.ToFSensor.active_electrons`), 0 where the
+      depth is not positive;
+    * flags: saturated, low signal, inconsistent, flying (:func:`flying_pixels` on the
+      grid: ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes
+      it) and out of range.
+
+    One C pass (csrc/tof_filter.c, ``rgbz_tof_validity``) but for the flying-pixel test; the
+    NumPy operations it replaced are its reference (tests/_reference/tof.py), bit for bit.
     """
     f = np.asarray(frequencies, np.float64)
     w = f * f
-    scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
-    t = np.multiply(amp, amp)
-    t *= 4.0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        np.divide(var, t, out=t)                          # phase variance; inf / nan at 0
-    np.fmin(t, np.pi * np.pi / 3.0, out=t)               # fmin: a NaN takes the cap
-    t *= scale[:, None]
-    return np.sqrt(t.sum(axis=0))
-
-
-def _implied_reflectance(depth, amp, sensor, block):
-    """NIR reflectance that the amplitude implies at ``depth`` (the sensor's radiometry)."""
-    ok = depth > 0
-    d = np.where(ok, depth, 1.0)
-    s1 = sensor.active_electrons(d)
+    scale = np.ascontiguousarray((w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2)
+    # the reflectance's model, (gain / 4) contrast_f active_electrons(d) block^2
     contrast = sensor.contrasts.reshape(-1, 1) * float(np.mean(sensor.tap_contrast))
-    model = sensor.system_gain * 0.25 * contrast * (s1 * block * block)[None]
-    rho = (amp / model).mean(axis=0)
-    return np.where(ok, rho, 0.0)
-
-
-def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid, *,
-                 min_snr, min_amplitude, max_sigma, max_residual, flying_step,
-                 min_reflectance, max_range, workers=None):
-    """The flag bits (uint8, shape (n,)) of every measurement (:func:`~rgbz_fast.tof.tof_depth`).
-
-    ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes it (the
-    flying-pixel test needs it; the other tests do not); ``workers``: its threads.
-    """
+    coef = np.ascontiguousarray((sensor.system_gain * 0.25 * contrast).reshape(-1), np.float64)
+    pitch = float(sensor.pixel_pitch_um or DEFAULT_CELL_PITCH_UM)
+    tan_h, tan_v, k_cell = sensor._cell_constants(pitch)
     n = depth.shape[0]
-    flags = np.zeros(n, np.uint8)
-    flags[saturated] |= FLAG_SATURATED
-    low = (snr < min_snr) | np.any(amp < min_amplitude, axis=0)
-    if max_sigma is not None:
-        low |= ~(sigma <= max_sigma)
-    flags[low] |= FLAG_LOW_SIGNAL
-    flags[residual > max_residual] |= FLAG_INCONSISTENT
+    snr, sigma, reflectance = np.empty(n), np.empty(n), np.empty(n)
+    flags = np.empty(n, np.uint8)
+    nthreads = check_workers(workers)
+    _kernels.tof_validity(
+        np.ascontiguousarray(amp, np.float64), np.ascontiguousarray(var, np.float64),
+        np.ascontiguousarray(depth, np.float64), np.ascontiguousarray(residual, np.float64),
+        np.ascontiguousarray(saturated, np.uint8), scale, coef, np.pi * np.pi / 3.0,
+        float(sensor.optical_power_w), tan_h, tan_v, k_cell, float(block), float(min_snr),
+        float(min_amplitude), -1.0 if max_sigma is None else float(max_sigma),
+        float(max_residual), float(min_reflectance), float(max_range), snr, sigma,
+        reflectance, flags, kernel_threads(nthreads, n))
     if flying_step is not None:
         usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
         if not isinstance(grid, SiteGrid):
             grid = grid()
         flags[flying_pixels(depth, sigma, grid, block=grid.block, step=flying_step,
-                            usable=usable, workers=workers)] |= FLAG_FLYING
-    # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
-    # ~0 m (the reflectance test) or, through the noise, just below the end
-    out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
-    flags[out] |= FLAG_OUT_OF_RANGE
-    return flags
+                            usable=usable, workers=nthreads)] |= FLAG_FLYING
+    return snr, sigma, reflectance, flags
 
 
 def flying_pixels(depth, sigma, sites, *, block=1, step=0.05, usable=None, k=2.0,
