@@ -123,9 +123,9 @@ RGBZ_INLINE void LFN(rgbz_clip_bits)(const IN_T *restrict row, ptrdiff_t c0, int
 }
 
 /* 1 if a pixel of the window's rows at a column in [a, b] (inside the frame) is at or above
-   level: the largest, compared in double (a NaN is never the largest, nor clipped) */
+   thr (rgbz_clip_threshold): the largest (a NaN is never the largest, nor clipped) */
 RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdiff_t a,
-                                                  ptrdiff_t b, double level)
+                                                  ptrdiff_t b, IN_T thr)
 {
     for (int d = 0; d < 2 * w->ry + 1; d++) {
         const IN_T *restrict row = w->rowp[d];
@@ -135,7 +135,7 @@ RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdif
         IN_T m = -INFINITY;                           /* a NaN never replaces it */
 #endif
         for (ptrdiff_t x = a; x <= b; x++) m = row[x] > m ? row[x] : m;
-        if ((double)m >= level) return 1;
+        if (m >= thr) return 1;
     }
     return 0;
 }
@@ -144,8 +144,9 @@ RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdif
  * The sites x0, x0 + px, ... < x1 of the row, one plan: gathered, reconstructed, stored to
  * drow. m1 >= 0: the interior sites of a Mask1 Z row, run with the constant plan m1 of
  * recon_mask1.h (p is then that plan); pg: the plan _plans.py built for these sites (p
- * itself where m1 < 0). Near clipping (clip_on) every block runs the core of the unclipped
- * frames (a site without a clipped tap gives the same with either core, rgbz_core); in a
+ * itself where m1 < 0). Near clipping (clip_on, clip_thr: the clip level as a threshold of
+ * IN_T, rgbz_clip_threshold) every block runs the core of the unclipped frames (a site
+ * without a clipped tap gives the same with either core, rgbz_core); in a
  * block whose window reaches the level, each site gets the bit mask of its clipped taps
  * (pg's), and a site with one is computed again by the clipped-pixel core on pg
  * (with the others of its block that have one, their taps gathered into a block of their
@@ -165,7 +166,7 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
                                         const rgbz_plan *pg, int m1,
                                         ptrdiff_t cols, ptrdiff_t x0, ptrdiff_t x1,
                                         const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
-                                        int clip_on, double clip_level, IN_T *drow)
+                                        int clip_on, IN_T clip_thr, IN_T *drow)
 {
     enum { SPAN = RGBZ_BLK + 2 * RGBZ_MAX_RADIUS + 1 };
     REAL buf[RGBZ_MAX_TAPS][SPAN];
@@ -176,8 +177,6 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
     uint64_t clipped[RGBZ_BLK] = {0}, cmask[RGBZ_BLK];
     REAL cbuf[RGBZ_MAX_TAPS][RGBZ_BLK];
     int at[RGBZ_BLK] = {0};
-    IN_T clip_thr = 0;
-    const int clip_any = clip_on && LFN(rgbz_clip_threshold)(clip_level, &clip_thr);
     const int px = w->px, nt = p->n_taps;
     /* the streams of the plan: kernel row s_dy, column phase s_r, shifts [s_q0, s_q1]; only
        the strided gather reads them (rows not deinterleaved) */
@@ -250,7 +249,7 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
         /* near clipping: does the block's window reach the level? (the border blocks, read
            through the column map, are taken as if it did) */
         const int hit = clip_on && (!direct || LFN(rgbz_span_reaches)(
-                            w, xb - w->rx, xb + (ptrdiff_t)(n - 1) * px + w->rx, clip_level));
+                            w, xb - w->rx, xb + (ptrdiff_t)(n - 1) * px + w->rx, clip_thr));
         if (m1 >= 0)
             RGBZ_CAT(rgbz_mask1_core, RS)[m1](v, n, kn, r);
         else
@@ -261,7 +260,7 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
             const int ng = pg->n_taps;
             int nc = 0;
             for (int j = 0; j < n; j++) clipped[j] = 0;
-            for (int t = 0; t < ng && clip_any; t++) {
+            for (int t = 0; t < ng; t++) {
                 const IN_T *restrict row = w->rowp[pg->tap_dy[t] + w->ry];
                 const ptrdiff_t c0 = xb + pg->tap_dx[t];
                 const uint64_t bit = (uint64_t)1 << t;
@@ -326,8 +325,9 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
     const RGBZ_CAT(rgbz_knobs, RS) kn = {(REAL)prm->sigma_floor, (REAL)prm->sigma_rel,
                                 (REAL)prm->edge_ratio, exp_mode};
     const REAL maxval = (REAL)prm->maxval;
-    const int clip_on = prm->clip_on;
-    const double clip_level = prm->clip_level;
+    /* the clip level as a threshold of IN_T; a level no value of IN_T reaches clips nothing */
+    IN_T clip_thr = 0;
+    const int clip_on = prm->clip_on && LFN(rgbz_clip_threshold)(prm->clip_level, &clip_thr);
     (void)opcounts;
     /* Mask1: the Z row phase zr and the constant plan of its interior sites */
     int zr = -1, m1 = -1;
@@ -415,7 +415,7 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
                     const int m = seg_m1[s];
                     LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], &plans[pl],
                                     m, cols, x0,
-                                    xa[s + 1], &kn, maxval, clip_on, clip_level, dst + y * cols);
+                                    xa[s + 1], &kn, maxval, clip_on, clip_thr, dst + y * cols);
                 }
             }
         }

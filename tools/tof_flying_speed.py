@@ -34,20 +34,22 @@ def numpy_code(*args, workers=None, **kw):
     return ref.flying_pixels(*args, **kw)
 
 
-def paired(run, rounds):
+def paired(run, rounds, module=V, name="flying_pixels", c_code=C_KERNEL, numpy=numpy_code):
+    """run() with module.name set to c_code ("C") and to numpy ("NumPy") in turn, the order
+    swapped every round, one warm-up round: the medians of both and the last outputs."""
     t = {"C": [], "NumPy": []}
     out = {}
     for i in range(rounds + 1):
-        for name in (("C", "NumPy") if i % 2 else ("NumPy", "C")):
-            V.flying_pixels = C_KERNEL if name == "C" else numpy_code
+        for variant in (("C", "NumPy") if i % 2 else ("NumPy", "C")):
+            setattr(module, name, c_code if variant == "C" else numpy)
             try:
                 a = time.perf_counter()
-                out[name] = run()
+                out[variant] = run()
                 s = time.perf_counter() - a
             finally:
-                V.flying_pixels = C_KERNEL
+                setattr(module, name, c_code)
             if i:
-                t[name].append(s)
+                t[variant].append(s)
     return np.median(t["C"]), np.median(t["NumPy"]), out
 
 

@@ -10,7 +10,6 @@ the flying-pixel test in C) and with the NumPy code they replaced (tests/_refere
 of the wall times and their ratio (> 1: C is faster). Every field of the results is compared.
 """
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +19,7 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 sys.path.insert(0, str(HERE))
 
 from _reference import tof as ref  # noqa: E402
+from tof_flying_speed import paired  # noqa: E402
 from tof_guided_speed import frame_12mp  # noqa: E402
 
 import rgbz_fast.tof._chain as chain  # noqa: E402
@@ -40,23 +40,11 @@ def main(rounds=7, workers=2):
     print(f"{tof.n_sites} measurements, {workers} thread(s), {rounds} rounds")
     for denoise in ("none", "box", "bilateral"):
         isp = ToFISP(denoise=denoise)
-        t = {"C": [], "NumPy": []}
-        out = {}
-        for i in range(rounds + 1):
-            for name in (("C", "NumPy") if i % 2 else ("NumPy", "C")):
-                chain.validity = C_STAGE if name == "C" else numpy_stage
-                try:
-                    a = time.perf_counter()
-                    out[name] = isp.run(tof, workers=workers)
-                    s = time.perf_counter() - a
-                finally:
-                    chain.validity = C_STAGE
-                if i:
-                    t[name].append(s)
+        c, n, out = paired(lambda: isp.run(tof, workers=workers), rounds, chain, "validity",
+                           C_STAGE, numpy_stage)
         same = all(np.array_equal(np.asarray(getattr(out["C"], k)).view(np.uint8),
                                   np.asarray(getattr(out["NumPy"], k)).view(np.uint8))
                    for k in ("snr", "sigma", "reflectance", "flags", "depth", "valid"))
-        c, n = np.median(t["C"]), np.median(t["NumPy"])
         print(f"ToFISP(denoise={denoise!r}).run(tof): C {c:.3f} s, NumPy {n:.3f} s, "
               f"{n / c:.3f}x; every field equal: {same}", flush=True)
 

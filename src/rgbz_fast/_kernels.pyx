@@ -54,46 +54,41 @@ ctypedef fused rgb_t:
     double
 
 
-def fast_exp(const rgb_t[::1] x, rgb_t[::1] out):
-    """The fast exponential of the reconstruction (exp="fast") of every element of ``x``."""
+ctypedef int (*exp_f32_fn)(const float *, float *, Py_ssize_t) noexcept nogil
+ctypedef int (*exp_f64_fn)(const double *, double *, Py_ssize_t) noexcept nogil
+
+
+cdef _exp_each(const rgb_t[::1] x, rgb_t[::1] out, exp_f32_fn f32, exp_f64_fn f64):
+    """out = f(x) element by element, f the entry point of x's precision."""
     cdef int status
+    if out.shape[0] != x.shape[0]:
+        raise ValueError(f"out: expected {x.shape[0]} values, got {out.shape[0]}")
     if x.shape[0] == 0:
         return
     with nogil:
         if rgb_t is float:
-            status = rgbz_fast_exp_f32(&x[0], &out[0], x.shape[0])
+            status = f32(&x[0], &out[0], x.shape[0])
         else:
-            status = rgbz_fast_exp_f64(&x[0], &out[0], x.shape[0])
+            status = f64(&x[0], &out[0], x.shape[0])
     _raise_for(status)
+
+
+def fast_exp(const rgb_t[::1] x, rgb_t[::1] out):
+    """The fast exponential of the reconstruction (exp="fast") of every element of ``x``."""
+    _exp_each(x, out, rgbz_fast_exp_f32, rgbz_fast_exp_f64)
 
 
 def libm_exp(const rgb_t[::1] x, rgb_t[::1] out):
     """exp() (float64) or expf() (float32) of every element of ``x`` as the reconstruction
     computes it with exp="libm": the C library's bits (its vector port where
     :func:`libm_exp_vectorised`)."""
-    cdef int status
-    if x.shape[0] == 0:
-        return
-    with nogil:
-        if rgb_t is float:
-            status = rgbz_libm_exp_f32(&x[0], &out[0], x.shape[0])
-        else:
-            status = rgbz_libm_exp_f64(&x[0], &out[0], x.shape[0])
-    _raise_for(status)
+    _exp_each(x, out, rgbz_libm_exp_f32, rgbz_libm_exp_f64)
 
 
 def exp_port(const rgb_t[::1] x, rgb_t[::1] out):
     """The vector port's value of exp(x) (float64) or expf(x) (float32), one value at a time,
     whatever this machine's own function gives (csrc/rgbz_exp.h; for the tests)."""
-    cdef int status
-    if x.shape[0] == 0:
-        return
-    with nogil:
-        if rgb_t is float:
-            status = rgbz_exp_port_f32(&x[0], &out[0], x.shape[0])
-        else:
-            status = rgbz_exp_port_f64(&x[0], &out[0], x.shape[0])
-    _raise_for(status)
+    _exp_each(x, out, rgbz_exp_port_f32, rgbz_exp_port_f64)
 
 
 def libm_exp_vectorised(bint single=False):

@@ -44,11 +44,11 @@ import weakref
 import numpy as np
 
 from .. import _kernels
-from .._sensors import SPEED_OF_LIGHT
 from .._validate import check_image, check_number, check_workers
 from ._filters import SiteGrid
 from ._result import ToFDepth
-from ._validity import FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED
+from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
+                        radiometry_coefficients)
 
 __all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "UPSAMPLE_COLOUR_SCALE",
            "UPSAMPLE_AMBIGUITY"]
@@ -209,13 +209,11 @@ def guide_ring(g, scale, layout, sigma):
 def _radiometry(tof, f):
     """(sigma_scale (F,), refl_coef (F,)) of the validity kernel: the weights of the depth
     noise and the reciprocal amplitude of a reflectance-1 surface at 1 m."""
-    w = f * f
-    sigma_scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
     sensor = tof.sensor
+    sigma_scale, coef = radiometry_coefficients(sensor, f)
     s1 = float(sensor.active_electrons(1.0))
-    contrast = sensor.contrasts * float(np.mean(sensor.tap_contrast))
-    model = sensor.system_gain * 0.25 * contrast * (s1 * tof.block * tof.block)
-    return np.ascontiguousarray(sigma_scale), np.ascontiguousarray(1.0 / model)
+    model = coef * (s1 * tof.block * tof.block)
+    return sigma_scale, np.ascontiguousarray(1.0 / model)
 
 
 def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):

@@ -91,6 +91,19 @@ FLAG_OUT_OF_RANGE = int(ToFFlag.OUT_OF_RANGE)
 FLAG_RESOLVED = int(ToFFlag.RESOLVED)
 
 
+def radiometry_coefficients(sensor, f):
+    """(sigma_scale, coef), both (F,) for the frequencies ``f``: ``(w_f c / (4 pi f) /
+    sum w)^2``, w = f^2, the weight of a frequency's phase variance in the depth noise; and
+    ``(gain / 4) contrast_f``, the amplitude (DN) of one electron of active signal, which the
+    implied reflectance divides by. The guided and the unguided validity share them."""
+    w = f * f
+    sigma_scale = (w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2
+    contrast = sensor.contrasts * float(np.mean(sensor.tap_contrast))
+    coef = sensor.system_gain * 0.25 * contrast
+    return (np.ascontiguousarray(sigma_scale, np.float64),
+            np.ascontiguousarray(coef, np.float64))
+
+
 def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, grid, *,
              min_snr, min_amplitude, max_sigma, max_residual, flying_step, min_reflectance,
              max_range, workers=None):
@@ -113,12 +126,7 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
     One C pass (csrc/tof_filter.c, ``rgbz_tof_validity``) but for the flying-pixel test; the
     NumPy operations it replaced are its reference (tests/_reference/tof.py), bit for bit.
     """
-    f = np.asarray(frequencies, np.float64)
-    w = f * f
-    scale = np.ascontiguousarray((w * SPEED_OF_LIGHT / (4 * np.pi * f) / w.sum()) ** 2)
-    # the reflectance's model, (gain / 4) contrast_f active_electrons(d) block^2
-    contrast = sensor.contrasts.reshape(-1, 1) * float(np.mean(sensor.tap_contrast))
-    coef = np.ascontiguousarray((sensor.system_gain * 0.25 * contrast).reshape(-1), np.float64)
+    scale, coef = radiometry_coefficients(sensor, np.asarray(frequencies, np.float64))
     pitch = float(sensor.pixel_pitch_um or DEFAULT_CELL_PITCH_UM)
     tan_h, tan_v, k_cell = sensor._cell_constants(pitch)
     n = depth.shape[0]
