@@ -19,6 +19,7 @@
 #include <omp.h>
 #endif
 #include "colour_isp.h"
+#include "demosaic_bilinear.h"
 #include "rgbz_templating.h"
 
 /* The codes of float32 values with the gathers of AVX2, 8 at a time (float64: 4): ci_encode's lookup

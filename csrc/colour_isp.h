@@ -9,7 +9,7 @@
  *                              Python for test 3 and the median fixes;
  *   rgbz_ci_phase_sums         the grey-world sums and counts of each 2x2 phase of the
  *                              complete CFA (isp._stages.grey_world_gains);
- *   rgbz_ci_render_<RS>        white balance, Malvar demosaic, colour matrix, clip, sRGB
+ *   rgbz_ci_render_<RS>        white balance, demosaic (Malvar or bilinear), colour matrix, clip, sRGB
  *                              encoding and quantisation, row by row: the white-balanced rows
  *                              live in a ring of 8 rows per thread (they stay in cache), and
  *                              the codes come from the thresholds of isp._encode_table (the
@@ -63,7 +63,8 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
 /*
  * White balance .. output of a complete Bayer CFA, in the precision of the name:
  *   b = clip?((REAL) v - black) * scale[colour])           (isp.white_balance)
- *   rgb = Malvar 2004 of b, in double, rounded to REAL      (isp.demosaic, border `mode`)
+ *   rgb = demosaic of b, in double, rounded to REAL         (isp.demosaic, border `mode`;
+ *         `method` an rgbz_demosaic_method: Malvar 2004 or bilinear, demosaic.c's formulas)
  *   lin = clip(matrix @ rgb, 0, 1), matrix NULL: identity  (isp.correct_colour)
  *   code = number of thresholds[1 .. 2^bits - 1] <= lin    (isp._encode_table)
  * phase: the colour codes (R 0, G 1, B 2) of the 2x2 Bayer quad in raster order; scale: the
@@ -71,12 +72,12 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
  * non-decreasing values of [0, 1] (t[0] = 0). At least 2 x 2 pixels.
  */
 int rgbz_ci_render_f32(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
-                       const int32_t *phase, int mode, const float *scale, float black,
-                       int clip, const float *matrix, const float *thresholds, int bits,
-                       void *out, int workers);
+                       const int32_t *phase, int mode, int method, const float *scale,
+                       float black, int clip, const float *matrix, const float *thresholds,
+                       int bits, void *out, int workers);
 int rgbz_ci_render_f64(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
-                       const int32_t *phase, int mode, const double *scale, double black,
-                       int clip, const double *matrix, const double *thresholds, int bits,
-                       void *out, int workers);
+                       const int32_t *phase, int mode, int method, const double *scale,
+                       double black, int clip, const double *matrix, const double *thresholds,
+                       int bits, void *out, int workers);
 
 #endif /* RGBZ_COLOUR_ISP_H */

@@ -118,6 +118,8 @@ typedef struct {
     const ptrdiff_t *colmap;        /* cols + 4 entries: the source of padded column j - 2 */
     REAL scale[3], black;
     int clip, mode;
+    int method;                     /* an rgbz_demosaic_method */
+    ptrdiff_t rows;
     int has_matrix;
     REAL m[9];
     RGBZ_CAT(ci_codes, RS) codes;
@@ -179,6 +181,59 @@ CI_CLONES static void RGBZ_CAT(ci_colours, RS)(const double *const *s, const dou
         og[j] = (REAL)gg;
         oo[j] = (REAL)other;
     }
+}
+
+/* Bilinear (demosaic.c's dm_bilinear_pixel, in double from 0.0 in scipy's order of the
+   taps, rounded to REAL) of the n greens of a row, with s, t, oa, og, ob as ci_greens */
+CI_CLONES static void RGBZ_CAT(ci_bilinear_greens, RS)(const double *const *s,
+                                                       const double *const *t, ptrdiff_t n,
+                                                       REAL *restrict oa, REAL *restrict og,
+                                                       REAL *restrict ob)
+{
+    const double *s1 = s[1], *s2 = s[2], *s3 = s[3], *t2 = t[2];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        og[j] = (REAL)(0.0 + s2[j]);
+        oa[j] = (REAL)((0.0 + t2[j] * 0.5) + t2[j + 1] * 0.5);
+        ob[j] = (REAL)((0.0 + s1[j] * 0.5) + s3[j] * 0.5);
+    }
+}
+
+/* bilinear of the n red or blue sites of a row, with s, t, oc, og, oo as ci_colours */
+CI_CLONES static void RGBZ_CAT(ci_bilinear_colours, RS)(const double *const *s,
+                                                        const double *const *t, ptrdiff_t n,
+                                                        REAL *restrict oc, REAL *restrict og,
+                                                        REAL *restrict oo)
+{
+    const double *s1 = s[1], *s2 = s[2], *s3 = s[3], *t1 = t[1], *t2 = t[2], *t3 = t[3];
+    for (ptrdiff_t j = 0; j < n; j++) {
+        oc[j] = (REAL)(0.0 + s2[j]);
+        og[j] = (REAL)((((0.0 + s1[j] * 0.25) + t2[j] * 0.25) + t2[j + 1] * 0.25) +
+                       s3[j] * 0.25);
+        oo[j] = (REAL)((((0.0 + t1[j] * 0.25) + t1[j + 1] * 0.25) + t3[j] * 0.25) +
+                       t3[j + 1] * 0.25);
+    }
+}
+
+/* bilinear with the reflect border: pixel x of row y by the rule (demosaic_bilinear.h),
+   into the planar scratch par (as ci_row's) */
+static void RGBZ_CAT(ci_bilinear_edge, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t x,
+                                           ptrdiff_t cols, const RGBZ_CAT(ci_render_args, RS) *a,
+                                           REAL *(*par)[3])
+{
+    const ptrdiff_t hp = CI_PLANE(cols);
+    double v[9], rgb[3];
+    int c[9];
+    for (int i = 0; i < 3; i++) {
+        const ptrdiff_t ry = ci_extend(y + i - 1, a->rows, a->mode);
+        for (int k = 0; k < 3; k++) {
+            const ptrdiff_t cc = x + k - 1;      /* >= -1: its plane cell by an arithmetic shift */
+            const ptrdiff_t jc = cc >= 0 ? cc / 2 : -1;
+            v[3 * i + k] = rp[i + 1][(cc & 1) * hp + 3 + jc];
+            c[3 * i + k] = a->phase[2 * (ry & 1) + (a->colmap[cc + 2] & 1)];
+        }
+    }
+    dm_bilinear_taps(v, c, rgb);
+    for (int k = 0; k < 3; k++) par[x & 1][k][x >> 1] = (REAL)rgb[k];
 }
 
 /* the colour matrix on n pixels of planes r, g, b, in place */
@@ -254,13 +309,29 @@ static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
         t[k] = rp[k] + (1 - gp) * hp + 3 - (gp == 0);
     }
     REAL **gpl = par[gp];
-    RGBZ_CAT(ci_greens, RS)(s, t, ng, gpl[rc], gpl[1], gpl[2 - rc]);
+    if (a->method == RGBZ_DM_BILINEAR)
+        RGBZ_CAT(ci_bilinear_greens, RS)(s, t, ng, gpl[rc], gpl[1], gpl[2 - rc]);
+    else
+        RGBZ_CAT(ci_greens, RS)(s, t, ng, gpl[rc], gpl[1], gpl[2 - rc]);
     for (int k = 0; k < 5; k++) {
         s[k] = rp[k] + (1 - gp) * hp + 3;
         t[k] = rp[k] + gp * hp + 3 - (gp == 1);
     }
     REAL **cpl = par[1 - gp];
-    RGBZ_CAT(ci_colours, RS)(s, t, nc, cpl[rc], cpl[1], cpl[2 - rc]);
+    if (a->method == RGBZ_DM_BILINEAR)
+        RGBZ_CAT(ci_bilinear_colours, RS)(s, t, nc, cpl[rc], cpl[1], cpl[2 - rc]);
+    else
+        RGBZ_CAT(ci_colours, RS)(s, t, nc, cpl[rc], cpl[1], cpl[2 - rc]);
+    if (a->method == RGBZ_DM_BILINEAR && a->mode == RGBZ_DM_REFLECT) {
+        /* the outer pixels, whose mirrored taps may be of another colour */
+        if (y == 0 || y == a->rows - 1) {
+            for (ptrdiff_t x = 0; x < cols; x++)
+                RGBZ_CAT(ci_bilinear_edge, RS)(rp, y, x, cols, a, par);
+        } else {
+            RGBZ_CAT(ci_bilinear_edge, RS)(rp, y, 0, cols, a, par);
+            RGBZ_CAT(ci_bilinear_edge, RS)(rp, y, cols - 1, cols, a, par);
+        }
+    }
     const ptrdiff_t nn[2] = {(cols + 1) / 2, cols / 2};
     for (int p = 0; p < 2; p++) {
         if (a->has_matrix) RGBZ_CAT(ci_matrix, RS)(a->m, par[p][0], par[p][1], par[p][2], nn[p]);
@@ -276,17 +347,19 @@ static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
 #undef RGBZ_TYPE_TEMPLATE
 
 int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
-                                 const int32_t *phase, int mode, const REAL *scale, REAL black,
-                                 int clip, const REAL *matrix, const REAL *thresholds, int bits,
-                                 void *out, int workers)
+                                 const int32_t *phase, int mode, int method, const REAL *scale,
+                                 REAL black, int clip, const REAL *matrix,
+                                 const REAL *thresholds, int bits, void *out, int workers)
 {
     if (!src || !out || !phase || !scale || !thresholds || rows < 2 || cols < 2 ||
         (bits != 8 && bits != 16) || (mode != RGBZ_DM_REFLECT && mode != RGBZ_DM_PERIOD) ||
-        !ci_bayer_phase(phase))
+        (method != RGBZ_DM_MALVAR && method != RGBZ_DM_BILINEAR) || !ci_bayer_phase(phase))
         return RGBZ_EINVAL;
     RGBZ_CAT(ci_render_args, RS) a;
     a.phase = phase;
     a.mode = mode;
+    a.method = method;
+    a.rows = rows;
     a.clip = clip;
     a.black = black;
     for (int i = 0; i < 3; i++) a.scale[i] = scale[i];

@@ -1,6 +1,6 @@
 /*
  * demosaic.c -- Malvar-He-Cutler (2004) gradient-corrected linear demosaicing
- * of a Bayer CFA, as a C kernel.
+ * and bilinear demosaicing of a Bayer CFA, as C kernels.
  *
  * H. S. Malvar, L. He, R. Cutler, "High-quality linear interpolation for
  * demosaicing of Bayer-patterned color images", Proc. ICASSP 2004. The filter
@@ -8,6 +8,17 @@
  * per-site choice of filter are those of colour-demosaicing's
  * demosaicing_CFA_Bayer_Malvar2004, which tests/isp/test_demosaic.py uses as the
  * reference (to 1e-6).
+ *
+ * Bilinear: colour-demosaicing's demosaicing_CFA_Bayer_bilinear, which convolves
+ * each colour's masked plane with [[0,1,0],[1,4,1],[0,1,0]]/4 (green) or
+ * [[1,2,1],[2,4,2],[1,2,1]]/4 (red, blue) through scipy.ndimage.convolve. The
+ * weights are powers of two, so each product is exact, and scipy adds the taps in
+ * double from 0.0 in raster order; dm_bilinear_pixel adds the same nonzero taps
+ * in the same order (a masked tap adds +-0, which changes no finite sum), so the
+ * result is the reference's bit for bit. With the reflect border the reference
+ * masks before it mirrors, so a mirrored tap of another colour adds nothing: the
+ * frame's outer pixels take dm_bilinear_taps (demosaic_bilinear.h), the rule
+ * itself.
  *
  * Layout: input rows x cols row-major; output rows x cols x 3 (R, G, B)
  * row-major, interleaved. `phase` gives the colour of the 2x2 Bayer quad in
@@ -23,6 +34,7 @@
 #include <stdint.h>
 #include "rgbz.h"
 #include "rgbz_ops.h"
+#include "demosaic_bilinear.h"
 
 static inline ptrdiff_t dm_reflect(ptrdiff_t i, ptrdiff_t n)
 {
@@ -74,6 +86,31 @@ static inline void dm_pixel(const int32_t *ph, int xp, double c0, double n4, dou
     }
 }
 
+/*
+ * Bilinear (colour-demosaicing's filters, scipy's order of the taps: raster order, from 0.0)
+ * of one pixel from its 3x3 neighbourhood: c0 the pixel, up/left/right/down its four
+ * neighbours, ul/ur/dl/dr the diagonal ones. rgb[] gets R, G, B.
+ */
+static inline void dm_bilinear_pixel(const int32_t *ph, int xp, double c0, double up,
+                                     double left, double right, double down, double ul,
+                                     double ur, double dl, double dr, double *rgb)
+{
+    const int ch = ph[xp];
+    if (ch == 1) {
+        const int row_colour = ph[xp ^ 1];   /* R or B, the colour of this row */
+        const double h = (0.0 + left * 0.5) + right * 0.5;
+        const double v = (0.0 + up * 0.5) + down * 0.5;
+        rgb[1] = 0.0 + c0;
+        rgb[0] = row_colour == 0 ? h : v;
+        rgb[2] = row_colour == 0 ? v : h;
+    } else {
+        const double o = (((0.0 + ul * 0.25) + ur * 0.25) + dl * 0.25) + dr * 0.25;
+        rgb[1] = (((0.0 + up * 0.25) + left * 0.25) + right * 0.25) + down * 0.25;
+        rgb[0] = ch == 0 ? 0.0 + c0 : o;
+        rgb[2] = ch == 0 ? o : 0.0 + c0;
+    }
+}
+
 /* element i..i+2 of an RGB output of float or double */
 static inline void dm_store(void *dst, int out_f64, ptrdiff_t i, const double *rgb)
 {
@@ -95,9 +132,9 @@ static inline void dm_store(void *dst, int out_f64, ptrdiff_t i, const double *r
 #include "rgbz_each_type.h"
 #undef RGBZ_TYPE_TEMPLATE
 
-int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
-                         ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                         int mode, int workers)
+/* the checks of both entry points: RGBZ_OK or RGBZ_EINVAL */
+static int dm_check(int out_type, const void *src, void *dst, ptrdiff_t rows, ptrdiff_t cols,
+                    const int32_t *phase, int mode)
 {
     if (!src || !dst || !phase || rows < 2 || cols < 2 ||
         (mode != RGBZ_DM_REFLECT && mode != RGBZ_DM_PERIOD))
@@ -111,16 +148,48 @@ int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
     /* a Bayer quad: two greens on one diagonal, red and blue on the other */
     int main_diag = phase[0] == 1 && phase[3] == 1 && phase[1] + phase[2] == 2 && phase[1] != 1;
     int anti_diag = phase[1] == 1 && phase[2] == 1 && phase[0] + phase[3] == 2 && phase[0] != 1;
-    if (greens != 2 || !(main_diag || anti_diag)) return RGBZ_EINVAL;
+    return greens == 2 && (main_diag || anti_diag) ? RGBZ_OK : RGBZ_EINVAL;
+}
+
+/* the source of padded column i - 2 for i in [0, cols + 4), or NULL */
+static ptrdiff_t *dm_colmap(ptrdiff_t cols, int mode)
+{
     ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 4) * sizeof(ptrdiff_t));
+    if (colmap)
+        for (ptrdiff_t i = 0; i < cols + 4; i++) colmap[i] = dm_extend(i - 2, cols, mode);
+    return colmap;
+}
+
+int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
+                         ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
+                         int mode, int workers)
+{
+    int st = dm_check(out_type, src, dst, rows, cols, phase, mode);
+    if (st != RGBZ_OK) return st;
+    ptrdiff_t *colmap = dm_colmap(cols, mode);
     if (!colmap) return RGBZ_ENOMEM;
-    for (ptrdiff_t i = 0; i < cols + 4; i++) colmap[i] = dm_extend(i - 2, cols, mode);
-    int st = RGBZ_OK;
 #define DM_MALVAR_(s, T)                                                                     \
     RGBZ_CAT(rgbz_malvar, s)((const T *)src, dst, out_type == RGBZ_T_F64, rows, cols, phase, \
                              colmap, mode, workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, DM_MALVAR_, st = RGBZ_EINVAL)
 #undef DM_MALVAR_
+    free(colmap);
+    return st;
+}
+
+int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
+                           ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
+                           int mode, int workers)
+{
+    int st = dm_check(out_type, src, dst, rows, cols, phase, mode);
+    if (st != RGBZ_OK) return st;
+    ptrdiff_t *colmap = dm_colmap(cols, mode);
+    if (!colmap) return RGBZ_ENOMEM;
+#define DM_BILINEAR_(s, T)                                                                     \
+    RGBZ_CAT(rgbz_bilinear, s)((const T *)src, dst, out_type == RGBZ_T_F64, rows, cols, phase, \
+                               colmap, mode, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, DM_BILINEAR_, st = RGBZ_EINVAL)
+#undef DM_BILINEAR_
     free(colmap);
     return st;
 }

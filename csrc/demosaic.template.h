@@ -1,6 +1,6 @@
 /*
- * demosaic.template.h -- the Malvar-He-Cutler (2004) demosaic for one input
- * element type (demosaic.c has the algorithm's description, the entry point and
+ * demosaic.template.h -- the Malvar-He-Cutler (2004) and the bilinear demosaic
+ * for one input element type (demosaic.c has the algorithm's description, the entry point and
  * the instances). The output is float or double (out_f64), chosen per call: the
  * arithmetic is in double either way, only the store differs.
  *
@@ -61,5 +61,73 @@ static void RGBZ_CAT(rgbz_malvar, IS)(const IN_T *src, void *dst, int out_f64, p
             RGBZ_CAT(dm_row, IS)(src, dst, 1, y, rows, cols, phase, colmap, mode);
         else
             RGBZ_CAT(dm_row, IS)(src, dst, 0, y, rows, cols, phase, colmap, mode);
+    }
+}
+
+/* bilinear, pixel x of row y by the rule (demosaic_bilinear.h): rows u, m, d the sources of
+   rows y - 1, y, y + 1, which are yu, y, yd */
+RGBZ_INLINE void RGBZ_CAT(dm_bilinear_edge, IS)(const IN_T *u, const IN_T *m, const IN_T *d,
+                                                ptrdiff_t yu, ptrdiff_t y, ptrdiff_t yd,
+                                                ptrdiff_t x, const int32_t *phase,
+                                                const ptrdiff_t *colmap, double *rgb)
+{
+    const IN_T *rw[3] = {u, m, d};
+    const ptrdiff_t ry[3] = {yu, y, yd}, cx[3] = {colmap[x + 1], x, colmap[x + 3]};
+    double v[9];
+    int c[9];
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++) {
+            v[3 * i + k] = (double)rw[i][cx[k]];
+            c[3 * i + k] = phase[2 * (ry[i] & 1) + (cx[k] & 1)];
+        }
+    dm_bilinear_taps(v, c, rgb);
+}
+
+/* bilinear, row y (as dm_row); with the reflect border the outer pixels by the rule */
+RGBZ_INLINE void RGBZ_CAT(dm_bilinear_row, IS)(const IN_T *src, void *dst, int out_f64,
+                                               ptrdiff_t y, ptrdiff_t rows, ptrdiff_t cols,
+                                               const int32_t *phase, const ptrdiff_t *colmap,
+                                               int mode)
+{
+    const ptrdiff_t yu = dm_extend(y - 1, rows, mode), yd = dm_extend(y + 1, rows, mode);
+    const IN_T *u = src + yu * cols, *m = src + y * cols, *d = src + yd * cols;
+    const int32_t *ph = phase + 2 * (y & 1);
+    const int reflect = mode == RGBZ_DM_REFLECT;
+    const ptrdiff_t x0 = reflect, x1 = reflect ? cols - 1 : cols;
+    double rgb[3];
+    if (reflect && (y == 0 || y == rows - 1)) {
+        for (ptrdiff_t x = 0; x < cols; x++) {
+            RGBZ_CAT(dm_bilinear_edge, IS)(u, m, d, yu, y, yd, x, phase, colmap, rgb);
+            dm_store(dst, out_f64, 3 * (y * cols + x), rgb);
+        }
+        return;
+    }
+    for (ptrdiff_t x = x0; x < x1; x++) {
+        const ptrdiff_t l = colmap[x + 1], r = colmap[x + 3];
+        dm_bilinear_pixel(ph, (int)(x & 1), (double)m[x], (double)u[x], (double)m[l],
+                          (double)m[r], (double)d[x], (double)u[l], (double)u[r], (double)d[l],
+                          (double)d[r], rgb);
+        dm_store(dst, out_f64, 3 * (y * cols + x), rgb);
+    }
+    if (reflect) {
+        RGBZ_CAT(dm_bilinear_edge, IS)(u, m, d, yu, y, yd, 0, phase, colmap, rgb);
+        dm_store(dst, out_f64, 3 * y * cols, rgb);
+        RGBZ_CAT(dm_bilinear_edge, IS)(u, m, d, yu, y, yd, cols - 1, phase, colmap, rgb);
+        dm_store(dst, out_f64, 3 * (y * cols + cols - 1), rgb);
+    }
+}
+
+static void RGBZ_CAT(rgbz_bilinear, IS)(const IN_T *src, void *dst, int out_f64, ptrdiff_t rows,
+                                        ptrdiff_t cols, const int32_t *phase,
+                                        const ptrdiff_t *colmap, int mode, int workers)
+{
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t y = 0; y < rows; y++) {
+        if (out_f64)
+            RGBZ_CAT(dm_bilinear_row, IS)(src, dst, 1, y, rows, cols, phase, colmap, mode);
+        else
+            RGBZ_CAT(dm_bilinear_row, IS)(src, dst, 0, y, rows, cols, phase, colmap, mode);
     }
 }

@@ -90,6 +90,12 @@ typedef enum rgbz_demosaic_mode {
     RGBZ_DM_PERIOD = 1,   /* shift by whole 2x2 periods: a padded pixel keeps its colour */
 } rgbz_demosaic_mode;
 
+/* demosaic methods of the fused colour ISP (colour_isp.h) */
+typedef enum rgbz_demosaic_method {
+    RGBZ_DM_MALVAR = 0,    /* Malvar-He-Cutler 2004 (rgbz_demosaic_malvar) */
+    RGBZ_DM_BILINEAR = 1,  /* bilinear (rgbz_demosaic_bilinear) */
+} rgbz_demosaic_method;
+
 /* operation counters (Table 1 categories plus the rest); RGBZ_NOPS counts them */
 typedef enum rgbz_op {
     RGBZ_OP_ADD = 0,   /* additions and subtractions */
@@ -208,6 +214,12 @@ RGBZ_PRECISIONS(RGBZ_DECLARE_RECONSTRUCT_)
 int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                          ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
                          int mode, int workers);
+
+/* Bilinear demosaic of a Bayer CFA (demosaic.c): colour-demosaicing's
+   demosaicing_CFA_Bayer_bilinear bit for bit; arguments as rgbz_demosaic_malvar. */
+int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
+                           ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
+                           int mode, int workers);
 
 /* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */

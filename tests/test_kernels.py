@@ -89,7 +89,7 @@ def test_a_precision_code_without_a_kernel_is_refused(name):
 
 def test_tables_come_from_the_c_enums():
     from rgbz_fast._devtools import opcount
-    from rgbz_fast.isp import DEMOSAIC_MODES
+    from rgbz_fast.isp import DEMOSAIC_METHODS, DEMOSAIC_MODES
     from rgbz_fast.reconstruction import METHODS as ALL_METHODS
     from rgbz_fast.reconstruction import PRECISIONS
     from rgbz_fast.reconstruction._plans import METHODS
@@ -103,6 +103,8 @@ def test_tables_come_from_the_c_enums():
     assert tuple(_PRECISION_CODES) == PRECISIONS          # the names ReconstructParams accepts
     assert _EXP_CODES == {"libm": 0, "fast": 1}
     assert DEMOSAIC_MODES == {"reflect": 0, "period": 1}
+    assert _kernels.DEMOSAIC_KERNELS == {"malvar2004": 0, "bilinear": 1}
+    assert set(_kernels.DEMOSAIC_KERNELS) <= set(DEMOSAIC_METHODS)
     assert opcount.CATEGORIES == ("add", "mul", "div", "exp", "abs", "cmp", "sqrt", "atan2")
     assert len(opcount.CATEGORIES) == _kernels.NOPS
     assert int(_kernels.rgbz_status.RGBZ_EINVAL) == 1

@@ -1,4 +1,5 @@
-"""Malvar 2004 demosaic of the full Bayer CFA (C kernel)."""
+"""Malvar 2004 and bilinear demosaic of the full Bayer CFA (C kernels; bilinear ran through
+colour-demosaicing before its kernel)."""
 
 import numpy as np
 
@@ -18,6 +19,7 @@ class DemosaicSuite:
         try:
             from rgbz_fast.isp import demosaic
             self.fn = lambda: demosaic(self.cfa, "GRBG", "malvar2004", dtype=self.dtype)
+            self.bilinear = lambda: demosaic(self.cfa, "GRBG", "bilinear", dtype=self.dtype)
         except ImportError:
             try:
                 from rgbz_fast import _kernels
@@ -31,9 +33,20 @@ class DemosaicSuite:
                 _kernels.demosaic_malvar(self.cfa, out, phase, 0, 0)
                 return out
             self.fn = fn
+            self.bilinear = None
 
     def time_malvar(self, shape, dtype):
         self.fn()
 
     def peakmem_malvar(self, shape, dtype):
         self.fn()
+
+    def time_bilinear(self, shape, dtype):
+        if self.bilinear is None:
+            raise NotImplementedError("no isp.demosaic in this commit")
+        self.bilinear()
+
+    def peakmem_bilinear(self, shape, dtype):
+        if self.bilinear is None:
+            raise NotImplementedError("no isp.demosaic in this commit")
+        self.bilinear()

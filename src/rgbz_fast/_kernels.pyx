@@ -110,6 +110,19 @@ def demosaic_malvar(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst, const int32
     _raise_for(status)
 
 
+def demosaic_bilinear(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst,
+                      const int32_t[::1] phase, int mode, int workers):
+    """Bilinear demosaic (colour-demosaicing's filters and scipy's order of the taps, bit for
+    bit): Bayer CFA (rows, cols) -> RGB (rows, cols, 3)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef int out_type = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
+    with nogil:
+        status = rgbz_demosaic_bilinear(in_type, out_type, &src[0, 0], &dst[0, 0, 0],
+                                        src.shape[0], src.shape[1], &phase[0], mode, workers)
+    _raise_for(status)
+
+
 def tof_unwrap(const double[:, ::1] phase, const double[::1] freqs, const double[::1] weights,
                double max_range, double[::1] depth, double[::1] residual, int32_t[::1] wraps,
                int workers):
@@ -1220,11 +1233,13 @@ cdef extern from "colour_isp.h" nogil:
     int rgbz_ci_phase_sums(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
                            double white, double *sums, int64_t *counts, int workers)
     int rgbz_ci_render_f32(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
-                           const int32_t *phase, int mode, const float *scale, float black,
+                           const int32_t *phase, int mode, int method, const float *scale,
+                           float black,
                            int clip, const float *matrix, const float *thresholds, int bits,
                            void *out, int workers)
     int rgbz_ci_render_f64(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
-                           const int32_t *phase, int mode, const double *scale, double black,
+                           const int32_t *phase, int mode, int method, const double *scale,
+                           double black,
                            int clip, const double *matrix, const double *thresholds, int bits,
                            void *out, int workers)
 
@@ -1272,9 +1287,11 @@ def ci_phase_sums(const frame_t[:, ::1] src, double white, double[::1] sums,
 
 def ci_render(const frame_t[:, ::1] src, const int32_t[::1] phase, int mode,
               const rgb_t[::1] scale, rgb_t black, int clip, const rgb_t[::1] matrix,
-              const rgb_t[::1] thresholds, code_t[:, :, ::1] out, int workers):
+              const rgb_t[::1] thresholds, code_t[:, :, ::1] out, int workers,
+              int method=RGBZ_DM_MALVAR):
     """White balance .. output of a complete Bayer CFA (matrix: 9 values, or empty for the
-    identity); the precision is the type of scale, black, matrix and thresholds."""
+    identity); the precision is the type of scale, black, matrix and thresholds; method: a
+    code of DEMOSAIC_KERNELS."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int bits = 8 if code_t is uint8_t else 16
@@ -1286,10 +1303,10 @@ def ci_render(const frame_t[:, ::1] src, const int32_t[::1] phase, int mode,
     with nogil:
         if rgb_t is float:
             status = rgbz_ci_render_f32(in_type, &src[0, 0], src.shape[0], src.shape[1],
-                                        &phase[0], mode, &scale[0], black, clip, m,
+                                        &phase[0], mode, method, &scale[0], black, clip, m,
                                         &thresholds[0], bits, &out[0, 0, 0], workers)
         else:
             status = rgbz_ci_render_f64(in_type, &src[0, 0], src.shape[0], src.shape[1],
-                                        &phase[0], mode, &scale[0], black, clip, m,
+                                        &phase[0], mode, method, &scale[0], black, clip, m,
                                         &thresholds[0], bits, &out[0, 0, 0], workers)
     _raise_for(status)

@@ -66,6 +66,9 @@ cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_demosaic_mode:
         RGBZ_DM_REFLECT
         RGBZ_DM_PERIOD
+    cpdef enum rgbz_demosaic_method:
+        RGBZ_DM_MALVAR
+        RGBZ_DM_BILINEAR
     cpdef enum rgbz_op:
         RGBZ_OP_ADD
         RGBZ_OP_MUL
@@ -118,6 +121,9 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                              Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
                              int mode, int workers)
+    int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
+                               Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
+                               int mode, int workers)
     int rgbz_tof_demodulate(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                             double *phase, double *amp, double *offset, int workers)
     int rgbz_tof_unwrap(const double *phase, Py_ssize_t F, Py_ssize_t N, const double *freqs,
@@ -205,6 +211,8 @@ PRECISIONS = _codes(rgbz_precision, "RGBZ_P_")
 TYPES = _codes(rgbz_type, "RGBZ_T_")
 EXP_MODES = _codes(rgbz_exp_mode, "RGBZ_EXP_")
 DEMOSAIC_MODES = _codes(rgbz_demosaic_mode, "RGBZ_DM_")
+#: the fused colour ISP's demosaic methods (ci_render's method): {name: code}
+DEMOSAIC_KERNELS = {"malvar2004": RGBZ_DM_MALVAR, "bilinear": RGBZ_DM_BILINEAR}
 OP_CATEGORIES = _codes(rgbz_op, "RGBZ_OP_")
 
 

@@ -1,5 +1,6 @@
 # rgbz_fast._kernels_count: the counted kernels and the constants of _kernels, over the counting
 # C library (_kernels_common.pxi is the source both modules share).
+from rgbz_fast._kernels import DEMOSAIC_KERNELS as DEMOSAIC_KERNELS
 from rgbz_fast._kernels import DEMOSAIC_MODES as DEMOSAIC_MODES
 from rgbz_fast._kernels import EXP_MODES as EXP_MODES
 from rgbz_fast._kernels import METHODS as METHODS
@@ -17,6 +18,7 @@ from rgbz_fast._kernels import mask1_plan as mask1_plan
 from rgbz_fast._kernels import max_threads as max_threads
 from rgbz_fast._kernels import plan_layout as plan_layout
 from rgbz_fast._kernels import reconstruct as reconstruct
+from rgbz_fast._kernels import rgbz_demosaic_method as rgbz_demosaic_method
 from rgbz_fast._kernels import rgbz_demosaic_mode as rgbz_demosaic_mode
 from rgbz_fast._kernels import rgbz_exp_mode as rgbz_exp_mode
 from rgbz_fast._kernels import rgbz_method as rgbz_method

@@ -1,5 +1,5 @@
-"""Bayer demosaic: the C Malvar 2004 kernel against colour-demosaicing, borders, dtypes,
-the colour-demosaicing methods, and bad input."""
+"""Bayer demosaic: the C Malvar 2004 and bilinear kernels against colour-demosaicing (Malvar
+to 1e-6, bilinear bit for bit), borders, dtypes, Menon 2007, and bad input."""
 
 from __future__ import annotations
 
@@ -99,6 +99,46 @@ def test_colour_demosaicing_methods_run_and_match(cd, method):
     np.testing.assert_allclose(per[10:-10, 10:-10], want[10:-10, 10:-10], atol=1e-9)
 
 
+def _period_reference(fn, cfa, phase, pad=8):
+    """``fn`` with the period border as the library gave it before the C kernel: the CFA
+    padded by whole periods, the reference's reflect border, cropped."""
+    from rgbz_fast.isp._demosaic import _period_index
+    ri, ci = _period_index(cfa.shape[0], pad), _period_index(cfa.shape[1], pad)
+    return fn(cfa[ri[:, None], ci[None, :]], phase)[pad:pad + cfa.shape[0],
+                                                    pad:pad + cfa.shape[1]]
+
+
+@pytest.mark.parametrize("shape", [(2, 2), (3, 5), (7, 2), (2, 9), (33, 46), (64, 97)])
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64, np.int32])
+def test_bilinear_is_colour_demosaicing_bit_for_bit(cd, shape, dtype):
+    """The C kernel's bilinear is the reference's bits (with their signs), every phase,
+    both output types, both borders: the reflect border masks before it mirrors, so a
+    border pixel's mirrored taps of another colour add nothing (tested on frames of one
+    and two periods, where every pixel is a border pixel)."""
+    rng = np.random.default_rng(sum(shape))
+    raw = (rng.standard_normal(shape) * 1e3 if dtype == np.float64
+           else (rng.random(shape) * 200).astype(dtype))
+    for phase in PHASES:
+        want = cd.demosaicing_CFA_Bayer_bilinear(raw.astype(np.float64), phase)
+        per = _period_reference(cd.demosaicing_CFA_Bayer_bilinear, raw.astype(np.float64),
+                                phase)
+        for out in (np.float32, np.float64):
+            for mode, ref in (("reflect", want), ("period", per)):
+                got = demosaic(raw, phase, "bilinear", mode=mode, dtype=out)
+                assert got.dtype == out
+                np.testing.assert_array_equal(got, ref.astype(out), err_msg=f"{phase} {mode}")
+                np.testing.assert_array_equal(np.signbit(got), np.signbit(ref.astype(out)))
+
+
+def test_bilinear_borders_differ_from_the_direct_formula():
+    """The reflect border's rule has an effect (else the test above would not see a wrong
+    border): a flat CFA is not flat at the reflect border, and is flat with periods."""
+    cfa = np.full((6, 8), 100.0)
+    rgb = demosaic(cfa, "GRBG", "bilinear", dtype=np.float64)
+    assert np.all(rgb[2:-2, 2:-2] == 100) and np.any(rgb[0] != 100)
+    np.testing.assert_array_equal(demosaic(cfa, "GRBG", "bilinear", mode="period"), 100)
+
+
 def test_menon_beats_bilinear_and_malvar_is_close_on_kodak():
     img = load_kodak(19, crop=(128, 128))
     cfa = mosaic(img, bayer()).data
@@ -117,13 +157,14 @@ def test_flat_cfa_gives_flat_image_with_period_borders():
     np.testing.assert_allclose(demosaic(cfa), 321, rtol=1e-6)
 
 
-def test_pattern_object_as_phase_and_workers_do_not_change_the_result():
-    raw = np.random.default_rng(4).random((64, 48))
-    a = demosaic(raw, bayer("GBRG"), workers=1)
-    b = demosaic(raw, "gbrg", workers=2)
+@pytest.mark.parametrize("method", ["malvar2004", "bilinear"])
+def test_pattern_object_as_phase_and_workers_do_not_change_the_result(method):
+    raw = np.random.default_rng(4).random((1100, 480))        # two threads' worth
+    a = demosaic(raw, bayer("GBRG"), method, workers=1)
+    b = demosaic(raw, "gbrg", method, workers=2)
     np.testing.assert_array_equal(a, b)
     with ThreadPoolExecutor(4) as ex:
-        outs = list(ex.map(lambda _: demosaic(raw, "GBRG"), range(4)))
+        outs = list(ex.map(lambda _: demosaic(raw, "GBRG", method), range(4)))
     for o in outs:
         np.testing.assert_array_equal(o, a)
 

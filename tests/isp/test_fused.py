@@ -1,7 +1,8 @@
 """The fused colour chain (csrc/colour_isp.c, isp/_fused.py) against the stages.
 
 ``ColourISP.run(frame)`` and ``render(cfa)`` without stages run the C passes; with
-``return_stages`` they run the NumPy stages. Tolerance: none (the same codes) on integer
+``return_stages`` they run the NumPy stages (the bilinear demosaic's stage is itself a C
+kernel, held to colour-demosaicing bit for bit in test_demosaic.py). Tolerance: none (the same codes) on integer
 CFAs with the identity colour matrix, the library's default; with a colour matrix one code
 where NumPy's matmul rounds the linear value differently (a few ulp). The NumPy reference
 of tests/_reference/colour_isp.py (colour-demosaicing's Malvar, np.power) agrees to one code.
@@ -53,9 +54,13 @@ def _both(chain, data, pattern, **kw):
 @pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2"])
 @pytest.mark.parametrize("precision", ["float32", "float64"])
 @pytest.mark.parametrize("bits", [8, 16])
-def test_run_is_the_stages(pattern, precision, bits):
+@pytest.mark.parametrize("demosaicing", [{}, {"method": "bilinear"},
+                                         {"method": "bilinear", "mode": "period"}])
+def test_run_is_the_stages(pattern, precision, bits, demosaicing):
     data, pat = _frame(pattern)
-    chain = ColourISP(precision=precision, output_bits=bits, black_level=40)
+    chain = ColourISP(precision=precision, output_bits=bits, black_level=40,
+                      demosaicing=demosaicing)
+    assert chain._fused(data)
     fused, staged = _both(chain, data, pat)
     assert fused.dtype == staged.dtype and fused.shape == staged.shape
     np.testing.assert_array_equal(fused, staged)
@@ -77,11 +82,14 @@ def test_run_is_the_stages_for_every_setting(changes):
 
 
 @pytest.mark.parametrize("shape", [(2, 2), (3, 5), (5, 2), (7, 9), (13, 11)])
-def test_small_and_odd_frames(shape):
+@pytest.mark.parametrize("method", ["malvar2004", "bilinear"])
+def test_small_and_odd_frames(shape, method):
     rng = np.random.default_rng(sum(shape))
     data = rng.integers(0, 2048, shape).astype(np.uint16)
-    fused, staged = _both(ColourISP(), data, "bayer")
-    np.testing.assert_array_equal(fused, staged)
+    for mode in ("reflect", "period"):
+        chain = ColourISP(demosaicing={"method": method, "mode": mode})
+        fused, staged = _both(chain, data, "bayer")
+        np.testing.assert_array_equal(fused, staged)
 
 
 @pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
@@ -126,11 +134,17 @@ def test_colour_matrix_within_one_code():
         assert diff.max() <= 1 and np.mean(diff > 0) < 1e-3
 
 
-def test_thread_count_does_not_change_the_image():
+@pytest.mark.parametrize("method", ["malvar2004", "bilinear"])
+def test_thread_count_does_not_change_the_image(method):
     data, pat = _frame("mask1", shape=(1030, 520), seed=8)       # two threads' worth
-    chain = ColourISP()
+    chain = ColourISP(demosaicing={"method": method})
     np.testing.assert_array_equal(chain.run(data, pattern=pat, workers=1),
                                   chain.run(data, pattern=pat, workers=2))
+
+
+def test_menon_stays_on_the_stages():
+    data, pat = _frame("bayer", shape=(20, 24))
+    assert not ColourISP(demosaicing={"method": "menon2007"})._fused(data)
 
 
 @pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2"])

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _kernels
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
@@ -358,10 +359,12 @@ class ColourISP:
 
     def _fused(self, data):
         """Whether the stages after the input checks run as the C passes of
-        :mod:`._fused` (the same image): the Malvar demosaic on a frame it takes. A float
+        :mod:`._fused` (the same image): the Malvar or bilinear demosaic on a frame it takes
+        (Menon 2007 runs through colour-demosaicing on the stages). A float
         frame without the white balance's clip stays on the stages, which refuse balanced
         values that overflow the working precision (the C passes would carry them on)."""
-        return (self.demosaicing.method == "malvar2004" and data.dtype in FRAME_DTYPES
+        return (self.demosaicing.method in _kernels.DEMOSAIC_KERNELS
+                and data.dtype in FRAME_DTYPES
                 and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2
                 and (self.white_balance.clip or data.dtype.kind != "f"))
 

@@ -17,7 +17,9 @@ Methods
     decision and refining step, through colour-demosaicing (pure NumPy; the
     quality option, about 20x slower).
 ``"bilinear"``
-    Bilinear interpolation, through colour-demosaicing (a baseline).
+    Bilinear interpolation (a baseline), as a C kernel (threaded): colour-demosaicing's
+    ``demosaicing_CFA_Bayer_bilinear`` bit for bit (its filters' weights are powers of
+    two, and the kernel adds the taps in scipy's order), in either border mode.
 
 References
 ----------
@@ -44,7 +46,10 @@ DEMOSAIC_METHODS = ("malvar2004", "menon2007", "bilinear")
 #: {name: code} from the C enum rgbz_demosaic_mode (csrc/rgbz.h)
 DEMOSAIC_MODES = dict(_kernels.DEMOSAIC_MODES)
 
-# margin added around the CFA for the colour-demosaicing methods in "period" mode: more
+#: the methods with a C kernel: {name: kernel}
+_KERNELS = {"malvar2004": _kernels.demosaic_malvar, "bilinear": _kernels.demosaic_bilinear}
+
+# margin added around the CFA for Menon 2007 (colour-demosaicing) in "period" mode: more
 # than the support of Menon 2007 (5-tap directional filters, 3x3 decision window,
 # 5-tap refining), so that the interior never sees colour-demosaicing's own reflect border
 _PERIOD_PAD = 8
@@ -99,15 +104,15 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         colour-demosaicing (a mirrored pixel may change colour, as in the
         reference implementation). ``"period"``: a tap outside the frame is
         moved back by whole Bayer periods, so it keeps its colour (the
-        library's convention, docs/guide/interpretation.md). Both agree two pixels (Malvar) or
-        more from the border. colour-demosaicing methods get the period
-        border by padding the CFA by 8 pixels this way and cropping.
+        library's convention, docs/guide/interpretation.md). Both agree two pixels (Malvar),
+        one (bilinear) or more from the border. Menon 2007 (colour-demosaicing) gets the
+        period border by padding the CFA by 8 pixels this way and cropping.
     dtype : {None, float32, float64}
         Output dtype. None: float64 for float64 input, float32 otherwise.
     workers : int, optional
         Threads of the C kernel at most (None or -1: all cores; one per 2**18
-        pixels at most). The result does not depend on it. Ignored by the
-        colour-demosaicing methods.
+        pixels at most). The result does not depend on it. Ignored by Menon
+        2007 (colour-demosaicing).
 
     Returns
     -------
@@ -155,18 +160,16 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
                              + (", pass dtype=float64 or rescale the CFA"
                                 if out_dtype == np.float32 else ", rescale the CFA"))
 
-    if method == "malvar2004":
+    if method in _KERNELS:
         src = a if a.dtype in FRAME_DTYPES else a.astype(np.float64)
         src = np.ascontiguousarray(src)
         out = np.empty(a.shape + (3,), out_dtype)
         codes = np.array([CHANNELS.index(c) for c in ph], np.int32)
-        _kernels.demosaic_malvar(src, out, codes, DEMOSAIC_MODES[mode],
-                                 kernel_threads(nthreads, src.size))
+        _KERNELS[method](src, out, codes, DEMOSAIC_MODES[mode],
+                         kernel_threads(nthreads, src.size))
         return out
 
-    cd = _colour_demosaicing()
-    fn = {"menon2007": cd.demosaicing_CFA_Bayer_Menon2007,
-          "bilinear": cd.demosaicing_CFA_Bayer_bilinear}[method]
+    fn = _colour_demosaicing().demosaicing_CFA_Bayer_Menon2007
     src = a.astype(np.float64)
     if mode == "period":
         pad = _PERIOD_PAD

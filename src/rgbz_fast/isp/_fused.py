@@ -1,14 +1,14 @@
 """The colour chain without its stages, in C passes over the frame (csrc/colour_isp.c).
 
 :meth:`ColourISP.run` and :meth:`ColourISP.render` take this path when no stage is
-kept (``return_stages=False``) and the demosaic is Malvar's C kernel; the stage
+kept (``return_stages=False``) and the demosaic has a C kernel (Malvar, bilinear); the stage
 functions stay the reference and the path of ``return_stages``. Three passes:
 
 1. tests 1 and 2 of the defect detection on every colour pixel (:func:`defect_fixes`);
    test 3 and the median fixes of the few candidates stay in NumPy
    (:func:`._defects._confirm`, :func:`._defects._fixes`);
 2. the grey-world sums of each 2x2 phase of the complete CFA (:func:`gains`);
-3. white balance, Malvar demosaic, colour matrix and sRGB encoding row by row, the
+3. white balance, demosaic, colour matrix and sRGB encoding row by row, the
    white-balanced rows in cache and the codes from :func:`._encode_table.encode_thresholds`
    (:func:`render`).
 
@@ -106,7 +106,7 @@ def gains(full, bayer, wb, black, white, given, workers):
 
 def render(full, bayer, chain, black, white, given, workers, matrix=None):
     """White balance .. output of a complete Bayer CFA (validated) by ``chain`` (a
-    :class:`ColourISP` with the Malvar demosaic): ``(image, gains)``. ``matrix``: the colour
+    :class:`ColourISP` with the Malvar or the bilinear demosaic): ``(image, gains)``. ``matrix``: the colour
     matrix when the chain has none (a frame's recorded one)."""
     dt = np.dtype(chain.precision)
     full = np.ascontiguousarray(full)
@@ -120,5 +120,6 @@ def render(full, bayer, chain, black, white, given, workers, matrix=None):
     out = np.empty(full.shape + (3,), np.uint8 if bits == 8 else np.uint16)
     _kernels.ci_render(full, phase, DEMOSAIC_MODES[chain.demosaicing.mode], scale,
                        dt.type(black), int(chain.white_balance.clip), matrix,
-                       encode_thresholds(dt, bits), out, kernel_threads(workers, full.size))
+                       encode_thresholds(dt, bits), out, kernel_threads(workers, full.size),
+                       _kernels.DEMOSAIC_KERNELS[chain.demosaicing.method])
     return out, g
