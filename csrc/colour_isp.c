@@ -166,6 +166,11 @@ static int ci_cpu_avx512(void)
    as well (the same arithmetic: -ffp-contract=off leaves every operation rounded on its own
    on every set) */
 #define CI_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
+/* the colour matrix's loop likewise, on sets that have FMA: the float32 dot product is
+   fmaf's (CI_DOT3_f32), which the baseline set (and AVX2 alone) can only call, one value
+   at a time */
+#define CI_CLONES_FMA \
+    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 
 static int ci_cpu_avx2(void)
 {
@@ -176,6 +181,9 @@ static int ci_cpu_avx2(void)
 #endif
 #ifndef CI_CLONES
 #define CI_CLONES
+#endif
+#ifndef CI_CLONES_FMA
+#define CI_CLONES_FMA
 #endif
 
 /* one thread per 2^18 pixels at most (MIN_PIXELS_PER_THREAD of the Python layer) */

@@ -237,8 +237,9 @@ static void RGBZ_CAT(ci_bilinear_edge, RS)(double *const *rp, ptrdiff_t y, ptrdi
 }
 
 /* the colour matrix on n pixels of planes r, g, b, in place */
-static void RGBZ_CAT(ci_matrix, RS)(const REAL *m, REAL *restrict r, REAL *restrict g,
-                                    REAL *restrict b, ptrdiff_t n)
+CI_CLONES_FMA static void RGBZ_CAT(ci_matrix, RS)(const REAL *m, REAL *restrict r,
+                                                  REAL *restrict g, REAL *restrict b,
+                                                  ptrdiff_t n)
 {
     for (ptrdiff_t j = 0; j < n; j++) {
         const REAL v0 = r[j], v1 = g[j], v2 = b[j];
