@@ -25,8 +25,12 @@
  * (rows, cols).
  *
  * Speed: one grid row at a time, each offset a loop over the row's cells (chi and
- * the accumulations vectorise; exp() is called only where chi > 2F, in a loop of
- * its own). Threads: OpenMP over grid rows, each with its own scratch; every cell
+ * the accumulations vectorise; exp() is called only where chi > 2F). Where
+ * rgbz_exp_libm_vectorised(0) has found that rgbz_exp.h's port of glibc's exp()
+ * gives this machine's bits (AVX-512F), the exponentials of a row segment run
+ * through it eight at a time instead of one call each, and the row loops have
+ * AVX-512F and AVX2 clones (RGBZ_CLONES_512: the same operations, so the same
+ * bits). Threads: OpenMP over grid rows, each with its own scratch; every cell
  * is computed alone, so the result does not depend on the thread count.
  */
 /* As in tof.c: no FP trap is ever enabled, so GCC may vectorise the selects. */
@@ -40,6 +44,8 @@
 #include <omp.h>
 #endif
 #include "rgbz.h"
+#include "rgbz_exp.h"
+#include "rgbz_ops.h"
 #include "tof_filter.h"
 
 /* weights below exp(-36) = 2.3e-16 are 0: they cannot change a mean of doubles, and
@@ -54,15 +60,69 @@ typedef struct {
     int64_t radius_px;
     double inv_h2;
     double *out_re, *out_im, *out_var, *out_neff;
+    int vec_exp;                    /* rgbz_exp_libm_vectorised(0): the port's exp rows */
 } filter_args;
 
-/* scratch of one row: num_re, num_im, w2v (nfreq * cols each), den, w2, chi, w (cols) */
-static void filter_row(const filter_args *p, ptrdiff_t r, double *scratch)
+/* w[c] for c in [c0, c1) from chi[c] (see the top), the neighbour's usability and distance:
+   exp() by the vector port, arg[] its scratch. glibc's exp(-x) is 1.0 for 0 < x < 2^-54
+   (1.0 + -x rounds to 1), where the port does not cover it: those cells take exp() itself
+   (tiny counts them; chi - 2F that close to 0 above is rare). */
+#ifdef RGBZ_HAVE_EXP_VEC
+static inline __attribute__((always_inline)) void filter_weights_vec(
+    const filter_args *p, ptrdiff_t b, ptrdiff_t c0, ptrdiff_t c1, ptrdiff_t row_n,
+    double bias, const double *restrict chi, double *restrict arg, double *restrict w)
+{
+    const double k = 0.5 * p->inv_h2;
+    const int64_t *restrict cpx = p->col_px, rad = p->radius_px;
+    const uint8_t *restrict use = p->use + row_n + b;
+    ptrdiff_t tiny = 0;
+    for (ptrdiff_t c = c0; c < c1; c++) {
+        const double x = k * (chi[c] - bias);
+        const int in = x > 0.0 && x < RGBZ_TOF_FILTER_CUT;
+        tiny += in && x < 0x1p-54;
+        arg[c] = in ? -x : 0.0;
+    }
+    rgbz_exp_glibc_row(arg + c0, c1 - c0);
+    for (ptrdiff_t c = c0; c < c1; c++) {
+        const int64_t dc = cpx[c + b] - cpx[c];
+        const int ok = (dc >= -rad) & (dc <= rad) & (use[c] != 0);
+        const double x = k * (chi[c] - bias);
+        const double wc = x > 0.0 ? (x < RGBZ_TOF_FILTER_CUT ? arg[c] : 0.0) : 1.0;
+        w[c] = ok ? wc : 0.0;
+    }
+    if (tiny)
+        for (ptrdiff_t c = c0; c < c1; c++) {
+            const double x = k * (chi[c] - bias);
+            if (x > 0.0 && x < 0x1p-54 && w[c] != 0.0) w[c] = exp(-x);
+        }
+}
+#endif
+
+/* the sums of one frequency and offset: n += w z, w^2 v on the cells [c0, c1) (restrict
+   parameters: GCC vectorises the loop) */
+static inline __attribute__((always_inline)) void filter_accumulate(
+    const double *restrict w, const double *restrict zr, const double *restrict zi,
+    const double *restrict v, double *restrict nr, double *restrict ni, double *restrict nv,
+    ptrdiff_t c0, ptrdiff_t c1)
+{
+    for (ptrdiff_t c = c0; c < c1; c++) {
+        nr[c] += w[c] * zr[c];
+        ni[c] += w[c] * zi[c];
+        nv[c] += (w[c] * w[c]) * v[c];
+    }
+}
+
+/* scratch of one row: num_re, num_im, w2v (nfreq * cols each), den, w2, chi, w, arg (cols) */
+RGBZ_CLONES_512 static void filter_row(const filter_args *p, ptrdiff_t r, double *scratch)
 {
     const ptrdiff_t F = p->nfreq, C = p->cols, plane = p->rows * p->cols;
     const double bias = 2.0 * (double)F;
-    double *num_re = scratch, *num_im = num_re + F * C, *w2v = num_im + F * C;
-    double *den = w2v + F * C, *w2 = den + C, *chi = w2 + C, *w = chi + C;
+    /* disjoint parts of the scratch (restrict: the loops below vectorise) */
+    double *restrict num_re = scratch, *restrict num_im = num_re + F * C;
+    double *restrict w2v = num_im + F * C, *restrict den = w2v + F * C;
+    double *restrict w2 = den + C, *restrict chi = w2 + C, *restrict w = chi + C;
+    double *restrict arg = w + C;
+    (void)arg;
     for (ptrdiff_t k = 0; k < 3 * F * C + 2 * C; k++) scratch[k] = 0.0;
     for (ptrdiff_t a = -p->reach_rows; a <= p->reach_rows; a++) {
         const ptrdiff_t rr = r + a;
@@ -76,8 +136,9 @@ static void filter_row(const filter_args *p, ptrdiff_t r, double *scratch)
             /* chi over the frequencies, in order */
             for (ptrdiff_t c = c0; c < c1; c++) chi[c] = 0.0;
             for (ptrdiff_t f = 0; f < F; f++) {
-                const double *gr = p->g_re + f * plane, *gi = p->g_im + f * plane;
-                const double *gv = p->g_var + f * plane;
+                const double *restrict gr = p->g_re + f * plane;
+                const double *restrict gi = p->g_im + f * plane;
+                const double *restrict gv = p->g_var + f * plane;
                 for (ptrdiff_t c = c0; c < c1; c++) {
                     const double dre = gr[row_n + c + b] - gr[row_c + c];
                     const double dim = gi[row_n + c + b] - gi[row_c + c];
@@ -85,6 +146,11 @@ static void filter_row(const filter_args *p, ptrdiff_t r, double *scratch)
                 }
             }
             /* the weights: usable neighbours within the radius; exp only above 2F */
+#ifdef RGBZ_HAVE_EXP_VEC
+            if (p->vec_exp) {
+                filter_weights_vec(p, b, c0, c1, row_n, bias, chi, arg, w);
+            } else
+#endif
             for (ptrdiff_t c = c0; c < c1; c++) {
                 const int64_t dc = p->col_px[c + b] - p->col_px[c];
                 const int near = dc >= -p->radius_px && dc <= p->radius_px;
@@ -92,17 +158,11 @@ static void filter_row(const filter_args *p, ptrdiff_t r, double *scratch)
                 double wc = x > 0.0 ? (x < RGBZ_TOF_FILTER_CUT ? exp(-x) : 0.0) : 1.0;
                 w[c] = (near && p->use[row_n + c + b]) ? wc : 0.0;
             }
-            for (ptrdiff_t f = 0; f < F; f++) {
-                const double *zr = p->z_re + f * plane + row_n + b;
-                const double *zi = p->z_im + f * plane + row_n + b;
-                const double *v = p->var + f * plane + row_n + b;
-                double *nr = num_re + f * C, *ni = num_im + f * C, *nv = w2v + f * C;
-                for (ptrdiff_t c = c0; c < c1; c++) {
-                    nr[c] += w[c] * zr[c];
-                    ni[c] += w[c] * zi[c];
-                    nv[c] += (w[c] * w[c]) * v[c];
-                }
-            }
+            for (ptrdiff_t f = 0; f < F; f++)
+                filter_accumulate(w, p->z_re + f * plane + row_n + b,
+                                  p->z_im + f * plane + row_n + b,
+                                  p->var + f * plane + row_n + b, num_re + f * C,
+                                  num_im + f * C, w2v + f * C, c0, c1);
             for (ptrdiff_t c = c0; c < c1; c++) {
                 den[c] += w[c];
                 w2[c] += w[c] * w[c];
@@ -136,8 +196,8 @@ int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var
         return RGBZ_EINVAL;
     const filter_args p = {z_re, z_im, var, g_re, g_im, g_var, use, row_px, col_px, nfreq,
                            rows, cols, reach_rows, reach_cols, radius_px, inv_h2, out_re, out_im, out_var,
-                           out_neff};
-    const size_t per_row = (size_t)(3 * nfreq + 4) * (size_t)(cols > 0 ? cols : 1);
+                           out_neff, rgbz_exp_libm_vectorised(0)};
+    const size_t per_row = (size_t)(3 * nfreq + 5) * (size_t)(cols > 0 ? cols : 1);
     int status = RGBZ_OK;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(workers > 0 ? workers : omp_get_max_threads())
