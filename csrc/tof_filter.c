@@ -44,6 +44,7 @@
 #include <omp.h>
 #endif
 #include "rgbz.h"
+#include "rgbz_templating.h"
 #include "rgbz_exp.h"
 #include "rgbz_ops.h"
 #include "tof_filter.h"
@@ -220,6 +221,179 @@ int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var
     (void)workers;
     return status;
 }
+
+/* ------------------------------------------------------------------ box mean (paper Fig. 17) */
+
+/* tmp[c] = the row sum of v (= in * weight) at grid row r over the row offsets (tof_filter.h) */
+static void box_rows(const double *in, const double *weight, ptrdiff_t R, ptrdiff_t C,
+                     const int64_t *row_px, const int64_t *offs, ptrdiff_t n_offs,
+                     int64_t radius, ptrdiff_t r, double *restrict tmp)
+{
+    for (ptrdiff_t c = 0; c < C; c++) tmp[c] = 0.0;
+    for (ptrdiff_t k = 0; k < n_offs; k++) {
+        const ptrdiff_t rr = r + (ptrdiff_t)offs[k];
+        if (rr < 0 || rr >= R) continue;
+        const int64_t d = row_px[rr] - row_px[r];
+        const double ok = d >= -radius && d <= radius ? 1.0 : 0.0;
+        const double *restrict v = in + rr * C;
+        if (weight) {
+            const double *restrict w = weight + rr * C;
+            for (ptrdiff_t c = 0; c < C; c++) tmp[c] += (v[c] * w[c]) * ok;
+        } else {
+            for (ptrdiff_t c = 0; c < C; c++) tmp[c] += v[c] * ok;
+        }
+    }
+}
+
+/* out[c] = the column sum of tmp over the column offsets, times scale[c] (or not: NULL) */
+static void box_cols(const double *restrict tmp, ptrdiff_t C, const int64_t *restrict col_px,
+                     const int64_t *offs, ptrdiff_t n_offs, int64_t radius,
+                     const double *restrict scale, double *restrict out)
+{
+    for (ptrdiff_t c = 0; c < C; c++) out[c] = 0.0;
+    for (ptrdiff_t k = 0; k < n_offs; k++) {
+        const ptrdiff_t b = (ptrdiff_t)offs[k];
+        const ptrdiff_t c0 = b < 0 ? -b : 0, c1 = b > 0 ? C - b : C;
+        for (ptrdiff_t c = c0; c < c1; c++) {
+            const int64_t d = col_px[c + b] - col_px[c];
+            out[c] += tmp[c + b] * (d >= -radius && d <= radius ? 1.0 : 0.0);
+        }
+    }
+    if (scale)
+        for (ptrdiff_t c = 0; c < C; c++) out[c] *= scale[c];
+}
+
+int rgbz_tof_box(const double *const *in, double *const *out, ptrdiff_t P, ptrdiff_t R,
+                 ptrdiff_t C, const int64_t *row_px, const int64_t *col_px,
+                 const int64_t *row_offs, ptrdiff_t n_row_offs, const int64_t *col_offs,
+                 ptrdiff_t n_col_offs, int64_t radius, const double *weight, double *count,
+                 int workers)
+{
+    if (!in || !out || !row_px || !col_px || !count || P < 0 || R < 0 || C < 0 ||
+        n_row_offs < 0 || n_col_offs < 0 || (n_row_offs && !row_offs) ||
+        (n_col_offs && !col_offs) || radius < 0)
+        return RGBZ_EINVAL;
+    for (ptrdiff_t p = 0; p < P; p++)
+        if (!in[p] || !out[p]) return RGBZ_EINVAL;
+    if (R == 0 || C == 0) return RGBZ_OK;
+    int status = RGBZ_OK;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(workers > 0 ? workers : omp_get_max_threads())
+#endif
+    {
+        double *buf = malloc((size_t)(3 * C) * sizeof(double));
+        if (!buf) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            status = RGBZ_ENOMEM;
+        }
+        double *tmp = buf, *inv = buf + C, *ones = buf + 2 * C;
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (ptrdiff_t r = 0; r < R; r++) {
+            if (!buf) continue;
+            /* the count: the sums of the weights (of ones), then its reciprocal */
+            if (weight) {
+                box_rows(weight, NULL, R, C, row_px, row_offs, n_row_offs, radius, r, tmp);
+            } else {
+                for (ptrdiff_t c = 0; c < C; c++) ones[c] = 0.0;
+                for (ptrdiff_t k = 0; k < n_row_offs; k++) {
+                    const ptrdiff_t rr = r + (ptrdiff_t)row_offs[k];
+                    if (rr < 0 || rr >= R) continue;
+                    const int64_t d = row_px[rr] - row_px[r];
+                    const double ok = d >= -radius && d <= radius ? 1.0 : 0.0;
+                    for (ptrdiff_t c = 0; c < C; c++) ones[c] += ok;
+                }
+                for (ptrdiff_t c = 0; c < C; c++) tmp[c] = ones[c];
+            }
+            double *cnt = count + r * C;
+            box_cols(tmp, C, col_px, col_offs, n_col_offs, radius, NULL, cnt);
+            for (ptrdiff_t c = 0; c < C; c++) inv[c] = cnt[c] > 0.0 ? 1.0 / cnt[c] : 0.0;
+            for (ptrdiff_t p = 0; p < P; p++) {
+                box_rows(in[p], weight, R, C, row_px, row_offs, n_row_offs, radius, r, tmp);
+                box_cols(tmp, C, col_px, col_offs, n_col_offs, radius, inv, out[p] + r * C);
+            }
+        }
+        free(buf);
+    }
+    return status;
+}
+
+/* ------------------------------------------------------------------ phasors, tap noise */
+
+#define TOF_PO_(s, T, code, A)                                                              \
+    static void tof_po_##s(const T *t, ptrdiff_t F, ptrdiff_t N, double *i, double *q,        \
+                           double *offset, int nt)                                          \
+    {                                                                                       \
+        (void)nt;                                                                           \
+        for (ptrdiff_t f = 0; f < F; f++) {                                                 \
+            const T *restrict a0 = t + (4 * f) * N, *restrict a1 = a0 + N;                   \
+            const T *restrict a2 = a1 + N, *restrict a3 = a2 + N;                            \
+            double *restrict pi = i + f * N, *restrict pq = q + f * N;                       \
+            double *restrict po = offset + f * N;                                            \
+            TOF_PARALLEL_FOR                                                                \
+            for (ptrdiff_t n = 0; n < N; n++) {                                             \
+                const double v0 = (double)a0[n], v1 = (double)a1[n];                        \
+                const double v2 = (double)a2[n], v3 = (double)a3[n];                        \
+                pi[n] = v0 - v2;                                                            \
+                pq[n] = v3 - v1;                                                            \
+                po[n] = ((v0 + v1) + (v2 + v3)) * 0.25;                                     \
+            }                                                                               \
+        }                                                                                   \
+    }
+#ifdef _OPENMP
+#define TOF_PARALLEL_FOR _Pragma("omp parallel for schedule(static) num_threads(nt)")
+#else
+#define TOF_PARALLEL_FOR
+#endif
+RGBZ_ELEMENT_TYPES(TOF_PO_, _)
+#undef TOF_PO_
+
+int rgbz_tof_phasors_offset(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double *i,
+                            double *q, double *offset, int workers)
+{
+    if (!taps || !i || !q || !offset || F < 1 || N < 0) return RGBZ_EINVAL;
+    const int nt = workers > 0 ? workers : 1;
+    int st = RGBZ_OK;
+#define TOF_PO_CALL_(s, T) tof_po_##s((const T *)taps, F, N, i, q, offset, nt)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOF_PO_CALL_, st = RGBZ_EINVAL)
+#undef TOF_PO_CALL_
+    return st;
+}
+
+int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, double k,
+                          double supp, double readout, double prnu, double scale,
+                          const double *count, ptrdiff_t count_period, double *out,
+                          int workers)
+{
+    if (!offset || !out || N < 0 || (count && count_period < 1)) return RGBZ_EINVAL;
+    const int nt = workers > 0 ? workers : 1;
+    const double twelfth = 1.0 / 12.0;
+    (void)nt;
+    TOF_PARALLEL_FOR
+    for (ptrdiff_t n = 0; n < N; n++) {
+        double h = offset[n] - black;
+        h = (h >= 0.0 || h != h) ? h : 0.0;          /* np.maximum(h, 0): NaN stays */
+        double v = h * k;
+        if (supp != 0.0) v /= supp;
+        v += readout;
+        v += twelfth;
+        if (prnu != 0.0) {
+            h *= prnu;
+            v += h * h;
+        }
+        v = scale * v;
+        if (count) {
+            const double c = count[n % count_period];
+            v /= (c >= 1.0 || c != c) ? c : 1.0;      /* np.maximum(count, 1.0) */
+        }
+        out[n] = v;
+    }
+    return RGBZ_OK;
+}
+#undef TOF_PARALLEL_FOR
 
 /* ------------------------------------------------------------------ validity (unguided ISP) */
 /*

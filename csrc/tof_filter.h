@@ -16,6 +16,38 @@ int rgbz_tof_bilateral(const double *z_re, const double *z_im, const double *var
                        double *out_re, double *out_im, double *out_var, double *out_neff,
                        int workers);
 
+/* The paper's box mean (rgbz_fast.tof.denoise_phasors) on the grid of the Z measurements
+   (R x C cells, row-major; row_px, col_px the pixel coordinates of the grid lines): for every
+   plane p < P, in[p] and out[p] (R*C each),
+       tmp[r][c] = 0 + sum over a in row_offs (in order, 0 <= r + a < R) of
+                   v[r + a][c] * (|row_px[r + a] - row_px[r]| <= radius ? 1 : 0),
+       sum[r][c] = 0 + the same over b in col_offs along the row, of tmp,
+       out[p][r][c] = sum[r][c] * (count > 0 ? 1 / count : 0),
+   with v = in[p] * weight (weight NULL: v = in[p]) and count[r][c] the same sums of weight
+   (of 1 without one). The operations of the NumPy code it replaced, in its order
+   (tests/_reference/tof.py, denoise_phasors), so the same bits, NaN and inf included. */
+int rgbz_tof_box(const double *const *in, double *const *out, ptrdiff_t P, ptrdiff_t R,
+                 ptrdiff_t C, const int64_t *row_px, const int64_t *col_px,
+                 const int64_t *row_offs, ptrdiff_t n_row_offs, const int64_t *col_offs,
+                 ptrdiff_t n_col_offs, int64_t radius, const double *weight, double *count,
+                 int workers);
+
+/* I = A0 - A2, Q = A3 - A1 and offset = 0.25 ((A0 + A1) + (A2 + A3)) of taps (F, 4, N) of
+   in_type (an rgbz_type; the rgbz_fast.tof._stages._phasors_offset NumPy operations: each
+   tap converted to double first), into i, q, offset (F, N) */
+int rgbz_tof_phasors_offset(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double *i,
+                            double *q, double *offset, int workers);
+
+/* The variance the ToF ISP gives a phasor component (rgbz_fast.tof._noise.tap_variance,
+   its NumPy operations in their order): for x = offset[n] (n < N),
+       h = max(x - black, 0) (NaN stays NaN),  v = h k,  v /= supp (supp != 0),
+       v += readout,  v += 1/12,  v += (h prnu)^2 (prnu != 0),
+       out[n] = (scale v) / max(count[n], 1) (count NULL: scale v). */
+int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, double k,
+                          double supp, double readout, double prnu, double scale,
+                          const double *count, ptrdiff_t count_period, double *out,
+                          int workers);
+
 /* The unguided ToF ISP's validity (rgbz_fast.tof._validity.validity): for every measurement
    n, from amp and var (F, N) (the per-frequency amplitude and component variance), depth,
    residual (N,) and saturated (N,):

@@ -236,6 +236,14 @@ def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual:
 def tofg_usable(flags: np.ndarray, depth: np.ndarray, sigma: np.ndarray,
                 present: np.ndarray | None, bad: int, usable: np.ndarray,
                 workers: int) -> None: ...
+def tof_box(planes: list[np.ndarray], outs: list[np.ndarray], row_px: np.ndarray,
+            col_px: np.ndarray, row_offs: np.ndarray, col_offs: np.ndarray, radius: int,
+            weight: np.ndarray | None, count: np.ndarray, workers: int) -> None: ...
+def tof_phasors_offset(taps: np.ndarray, i: np.ndarray, q: np.ndarray, offset: np.ndarray,
+                       workers: int) -> None: ...
+def tof_tap_variance(offset: np.ndarray, black: float, k: float, supp: float, readout: float,
+                     prnu: float, scale: float, count: np.ndarray | None, out: np.ndarray,
+                     workers: int) -> None: ...
 def tof_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
                  saturated: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
                  phase_var_cap: float, power: float, tan_h: float, tan_v: float,

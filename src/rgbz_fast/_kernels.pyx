@@ -21,6 +21,7 @@ them, so no code is typed twice.
 include "_kernels_common.pxi"
 
 from libc.string cimport memset
+from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.stdint cimport uint32_t
 
 cdef extern from "tof_filter.h" nogil:
@@ -48,6 +49,17 @@ cdef extern from "tof_filter.h" nogil:
         double *refl
         uint8_t *flags
     int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
+    int rgbz_tof_phasors_offset(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
+                                double *i, double *q, double *offset, int workers)
+    int rgbz_tof_tap_variance(const double *offset, Py_ssize_t N, double black, double k,
+                              double supp, double readout, double prnu, double scale,
+                              const double *count, Py_ssize_t count_period, double *out,
+                              int workers)
+    int rgbz_tof_box(const double *const *inp, double *const *out, Py_ssize_t P, Py_ssize_t R,
+                     Py_ssize_t C, const int64_t *row_px, const int64_t *col_px,
+                     const int64_t *row_offs, Py_ssize_t n_row_offs, const int64_t *col_offs,
+                     Py_ssize_t n_col_offs, int64_t radius, const double *weight,
+                     double *count, int workers)
 
 ctypedef fused rgb_t:
     float
@@ -454,6 +466,97 @@ def tof_bilateral(const double[:, :, ::1] z_re, const double[:, :, ::1] z_im,
                                     radius_px, inv_h2,
                                     &out_re[0, 0, 0], &out_im[0, 0, 0], &out_var[0, 0, 0],
                                     &out_neff[0, 0], workers)
+    _raise_for(status)
+
+
+def tof_phasors_offset(const frame_t[:, :, ::1] taps, double[:, ::1] i, double[:, ::1] q,
+                       double[:, ::1] offset, int workers):
+    """I, Q and the offset (F, N) of taps (F, 4, N) (csrc/tof_filter.c)."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t F = taps.shape[0], N = taps.shape[2]
+    if (taps.shape[1] != 4 or i.shape[0] != F or i.shape[1] != N or q.shape[0] != F
+            or q.shape[1] != N or offset.shape[0] != F or offset.shape[1] != N):
+        raise ValueError("tof_phasors_offset: inconsistent array shapes")
+    if N == 0:
+        return
+    with nogil:
+        status = rgbz_tof_phasors_offset(in_type, &taps[0, 0, 0], F, N, &i[0, 0], &q[0, 0],
+                                         &offset[0, 0], workers)
+    _raise_for(status)
+
+
+def tof_tap_variance(const double[::1] offset, double black, double k, double supp,
+                     double readout, double prnu, double scale, count, double[::1] out,
+                     int workers):
+    """The ISP's variance of a phasor component from the offsets (flattened), times scale,
+    over max(count, 1) (count None, or (P,) repeated along the offsets) (csrc/tof_filter.c)."""
+    cdef const double[::1] c
+    cdef const double *cp = NULL
+    cdef Py_ssize_t period = 1
+    cdef int status
+    if out.shape[0] != offset.shape[0]:
+        raise ValueError("tof_tap_variance: inconsistent array shapes")
+    if count is not None:
+        c = count
+        period = c.shape[0]
+        if period == 0 or offset.shape[0] % period:
+            raise ValueError("tof_tap_variance: inconsistent array shapes")
+        cp = &c[0]
+    if offset.shape[0] == 0:
+        return
+    with nogil:
+        status = rgbz_tof_tap_variance(&offset[0], offset.shape[0], black, k, supp, readout,
+                                       prnu, scale, cp, period, &out[0], workers)
+    _raise_for(status)
+
+
+def tof_box(list planes, list outs, const int64_t[::1] row_px, const int64_t[::1] col_px,
+            const int64_t[::1] row_offs, const int64_t[::1] col_offs, int64_t radius,
+            weight, double[:, ::1] count, int workers):
+    """The paper's box mean on the grid of Z measurements (csrc/tof_filter.c, rgbz_tof_box):
+    planes and outs, lists of 1-D C-contiguous float64 arrays of rows x cols values (the grid
+    in row-major order; the lists keep them alive during the call); weight None or (rows,
+    cols) float64; count (rows, cols)."""
+    cdef Py_ssize_t P = len(planes), R = count.shape[0], C = count.shape[1], k
+    cdef const double[::1] a
+    cdef double[::1] o
+    cdef const double[:, ::1] w
+    cdef const double *wp = NULL
+    cdef int status
+    if len(outs) != P or row_px.shape[0] != R or col_px.shape[0] != C:
+        raise ValueError("tof_box: inconsistent array shapes")
+    if weight is not None:
+        w = weight
+        if w.shape[0] != R or w.shape[1] != C:
+            raise ValueError("tof_box: inconsistent array shapes")
+        if R * C:
+            wp = &w[0, 0]
+    if R * C == 0:
+        return
+    cdef const double **ip = <const double **> PyMem_Malloc(max(P, 1) * sizeof(double *))
+    cdef double **op = <double **> PyMem_Malloc(max(P, 1) * sizeof(double *))
+    if ip == NULL or op == NULL:
+        PyMem_Free(ip)
+        PyMem_Free(op)
+        raise MemoryError()
+    try:
+        for k in range(P):
+            a = planes[k]
+            o = outs[k]
+            if a.shape[0] != R * C or o.shape[0] != R * C:
+                raise ValueError("tof_box: inconsistent array shapes")
+            ip[k] = &a[0]
+            op[k] = &o[0]
+        with nogil:
+            status = rgbz_tof_box(ip, op, P, R, C, &row_px[0], &col_px[0],
+                                  &row_offs[0] if row_offs.shape[0] else NULL,
+                                  row_offs.shape[0],
+                                  &col_offs[0] if col_offs.shape[0] else NULL,
+                                  col_offs.shape[0], radius, wp, &count[0, 0], workers)
+    finally:
+        PyMem_Free(ip)
+        PyMem_Free(op)
     _raise_for(status)
 
 

@@ -1,4 +1,5 @@
-"""NumPy reference of the ToF ISP's bilateral phasor mean (csrc/tof_filter.c).
+"""NumPy references of the ToF ISP's C kernels: the bilateral phasor mean and the paper's box
+mean (csrc/tof_filter.c), the guided ISP's stages (csrc/tof_guided.c) and the validity.
 
 The same weights as the C kernel, written as whole-grid NumPy operations over the
 offsets of the window, each offset a shifted view of the grid
@@ -12,7 +13,9 @@ from __future__ import annotations
 import numpy as np
 
 from rgbz_fast._sensors import SPEED_OF_LIGHT
-from rgbz_fast.tof._filters import SiteGrid
+from rgbz_fast._validate import as_array, as_list, check_block, check_sites
+from rgbz_fast.tof._filters import SiteGrid, _axis_offsets
+from rgbz_fast.tof._stages import _check_window
 
 
 def bilateral_pass(z, v, gz, gv, use, offsets, inv_h2):
@@ -69,6 +72,98 @@ def denoise_phasors_bilateral(i, q, var, sites, *, block=1, window=9, use=None,
 # NumPy references of csrc/tof_guided.c, plain loops over offsets in float64. The kernels
 # compute the filter in float (the reference agrees to about 1e-5 relative) and the rest in
 # double (the same decisions, the same values to rounding).
+
+def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
+    """The paper's box mean as the library computed it in NumPy before its C kernel
+    (csrc/tof_filter.c, rgbz_tof_box): the reference the kernel is held to bit for bit."""
+    i = as_array(i, "i", dtype=np.float64)
+    q = as_array(q, "q", dtype=np.float64)
+    if i.ndim != 2 or q.shape != i.shape:
+        raise ValueError(f"i, q: expected two arrays of the same shape (F, n), got "
+                         f"{i.shape} and {q.shape}")
+    n = i.shape[1]
+    rows, cols = (as_array(a, "sites") for a in as_list(sites, "sites", "(rows, cols)")[:2])
+    if rows.shape != (n,) or cols.shape != (n,):
+        raise ValueError(f"sites: expected two arrays of shape ({n},), got {rows.shape} and "
+                         f"{cols.shape}")
+    rows, cols = check_sites((rows, cols), "sites")             # integers, none twice
+    block = check_block(block, "block")
+    window = _check_window(window)
+    use = np.ones(n, bool) if use is None else as_array(use, "use", dtype=bool)
+    if use.shape != (n,):
+        raise ValueError(f"use: expected shape ({n},), got {use.shape}")
+    extra = [as_array(e, "extra", dtype=np.float64) for e in as_list(extra, "extra")]
+    planes = [p for p in i] + [p for p in q]
+    for e in extra:
+        planes += [p for p in e] if e.ndim == 2 else [e]
+    radius = (window // 2) * block
+    # compress the measurements onto the grid of their distinct rows and columns
+    ur, ri = np.unique(rows, return_inverse=True)
+    uc, ci = np.unique(cols, return_inverse=True)
+    row_offs = _axis_offsets(ur, radius)
+    col_offs = _axis_offsets(uc, radius)
+    weight = None if use.all() else use.astype(np.float64)
+    # Mask1, Mask2, rows: the measurements fill the compressed grid in row-major order
+    full = (n == ur.size * uc.size and np.array_equal(ri, np.arange(n) // uc.size)
+            and np.array_equal(ci, np.arange(n) % uc.size))
+
+    def box(values):
+        if weight is not None:
+            values = values * weight
+        if full:
+            g = values.reshape(ur.size, uc.size)
+        else:
+            g = np.zeros((ur.size, uc.size))
+            g[ri, ci] = values
+        tmp = np.zeros_like(g)
+        for a, lo, hi, ok in row_offs:
+            tmp[lo:hi] += g[lo + a:hi + a] if ok.all() else g[lo + a:hi + a] * ok[:, None]
+        out = np.zeros_like(g)
+        for a, lo, hi, ok in col_offs:
+            out[:, lo:hi] += tmp[:, lo + a:hi + a] if ok.all() else tmp[:, lo + a:hi + a] * ok
+        return out.reshape(-1) if full else out[ri, ci]
+
+    count = box(np.ones(n))
+    inv = np.divide(1.0, count, out=np.zeros(n), where=count > 0)
+    means = [box(p) * inv for p in planes]
+    F = i.shape[0]
+    i_mean = np.stack(means[:F])
+    q_mean = np.stack(means[F:2 * F])
+    rest, k = [], 2 * F
+    for e in extra:
+        m = e.shape[0] if e.ndim == 2 else 1
+        rest.append(np.stack(means[k:k + m]) if e.ndim == 2 else means[k])
+        k += m
+    return i_mean, q_mean, count, rest
+
+
+def phasors_offset(t):
+    """I, Q and the offset of taps as NumPy computed them before the C pass
+    (csrc/tof_filter.c, rgbz_tof_phasors_offset)."""
+    i = np.subtract(t[:, 0], t[:, 2], dtype=np.float64)
+    q = np.subtract(t[:, 3], t[:, 1], dtype=np.float64)
+    offset = np.add(t[:, 0], t[:, 1], dtype=np.float64)
+    offset += np.add(t[:, 2], t[:, 3], dtype=np.float64)
+    offset *= 0.25
+    return i, q, offset
+
+
+def tap_variance(offset, sensor):
+    """The variance of one tap as NumPy computed it before the C pass (csrc/tof_filter.c,
+    rgbz_tof_tap_variance)."""
+    k = sensor.system_gain
+    held = np.subtract(offset, sensor.black_level, dtype=np.float64)
+    np.maximum(held, 0.0, out=held)
+    v = held * k
+    if sensor.ambient_suppression:
+        v /= 1.0 - sensor.ambient_suppression
+    v += k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2)
+    v += 1.0 / 12.0
+    if sensor.prnu:
+        held *= sensor.prnu
+        v += held * held
+    return v
+
 
 def guided_prepare(taps, gain, black, supp, const_var, prnu, white):
     """Phasors (F, N), the mean over the frequencies of 2 var(A) (N,), full-scale taps (N,),

@@ -1,5 +1,6 @@
-"""The edge-aware ToF ISP stages: the bilateral phasor mean (C kernel against its
-NumPy reference), flying pixels at depth steps, out-of-range depths, and the noise model."""
+"""The ToF ISP's denoise stages: the paper's box mean and the bilateral phasor mean (C kernels
+against their NumPy references), flying pixels at depth steps, out-of-range depths, and the
+noise model."""
 
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ from _reference import tof as ref  # noqa: E402
 import rgbz_fast as rz
 from rgbz_fast.simulation import Scene, ToFSensor, simulate_tof
 from rgbz_fast.tof._filters import SiteGrid
-from rgbz_fast.tof import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE,
+from rgbz_fast.tof import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, denoise_phasors,
                            denoise_phasors_bilateral, flying_pixels, tof_depth)
 
 #: C kernel against the NumPy reference: the sums run in the same order, exp() differs
@@ -34,6 +35,88 @@ def _wall(depth, pattern, shape, sensor=None, *, seed=0, ir=0.5, noise=True):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return simulate_tof(scene, pattern, sensor, seed=seed, noise=noise)
+
+
+# --------------------------------------------------------------------------- box
+def _holes(sites, rng, share=0.15):
+    """The sites with a share of them removed (a grid with holes: the general path)."""
+    keep = rng.random(sites[0].size) > share
+    return tuple(a[keep] for a in sites)
+
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2", "rows", "ZRGG/BGBZ"])
+@pytest.mark.parametrize("window", [1, 3, 5, 7])
+@pytest.mark.parametrize("holes", [False, True])
+def test_box_kernel_equals_the_numpy_reference_bit_for_bit(pattern, window, holes):
+    """The C box mean is the NumPy code it replaced, bit for bit: full grids (Mask1, Mask2,
+    rows) and grids with holes, saturated measurements kept out, extra planes of both
+    shapes, NaN and inf in the values, 1 and 2 threads (a grid of two threads' rows)."""
+    rng = np.random.default_rng(window + 10 * holes)
+    sites, block = _sites(pattern, (96, 90))
+    if holes:
+        sites = _holes(sites, rng)
+    n = sites[0].size
+    i, q = rng.normal(size=(2, 3, n)) * 100
+    i[0, 5], q[1, 7], i[2, 11] = np.nan, np.inf, -np.inf
+    extra = (rng.random((3, n)) * 1e3, rng.random(n))
+    for use in (None, rng.random(n) > 0.2):
+        with np.errstate(invalid="ignore"):                   # inf * 0 in NumPy
+            want = ref.denoise_phasors(i, q, sites, block=block, window=window, use=use,
+                                       extra=extra)
+        for workers in (1, 2):
+            got = denoise_phasors(i, q, sites, block=block, window=window, use=use,
+                                  extra=extra, workers=workers)
+            for a, b in zip(got[:3] + tuple(got[3]), want[:3] + tuple(want[3])):
+                assert a.shape == b.shape and a.dtype == b.dtype
+                np.testing.assert_array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+def test_box_takes_a_site_grid_and_checks_it():
+    sites, block = _sites("mask1", (40, 40))
+    n = sites[0].size
+    i = np.random.default_rng(3).normal(size=(2, n))
+    grid = SiteGrid(sites, block)
+    a = denoise_phasors(i, i, sites, block=block)
+    b = denoise_phasors(i, i, grid, block=block)
+    for x, y in zip(a[:3], b[:3]):
+        np.testing.assert_array_equal(x, y)
+    with pytest.raises(ValueError, match="sites"):
+        denoise_phasors(i[:, :-1], i[:, :-1], grid, block=block)
+
+
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.int32, np.float32, np.float64])
+def test_phasors_offset_kernel_equals_the_numpy_reference(dtype):
+    from rgbz_fast.tof._stages import _phasors_offset
+    rng = np.random.default_rng(7)
+    taps = rng.random((3, 4, 70001)) * (200 if dtype == np.uint8 else 4000)
+    taps = taps.astype(dtype) if np.dtype(dtype).kind != "f" else (taps - 100).astype(dtype)
+    want = ref.phasors_offset(taps)
+    for workers in (1, 2):
+        for a, b in zip(_phasors_offset(taps, workers), want):
+            np.testing.assert_array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+@pytest.mark.parametrize("changes", [{}, {"ambient_suppression": 0.0}, {"prnu": 0.0},
+                                     {"ambient_suppression": 0.9, "prnu": 0.03},
+                                     {"read_noise": 0.0, "dsnu": 0.0}])
+def test_tap_variance_kernel_equals_the_numpy_reference(changes):
+    """The C pass is the NumPy formula bit for bit (offsets below the black level, NaN,
+    huge), with the chain's scale and division by max(count, 1)."""
+    from rgbz_fast.tof._noise import tap_variance
+    sensor = ToFSensor(**changes)
+    rng = np.random.default_rng(8)
+    offset = rng.random((3, 40001)) * 5000 - 100
+    offset[0, :3] = np.nan, 1e300, -1e300
+    count = np.floor(rng.random(40001) * 26)
+    with np.errstate(invalid="ignore", over="ignore"):                 # 1e300 squared
+        want = ref.tap_variance(offset, sensor)
+        for workers in (1, 2):
+            got = tap_variance(offset, sensor, workers=workers)
+            np.testing.assert_array_equal(got.view(np.uint64), want.view(np.uint64))
+            got = tap_variance(offset, sensor, scale=2.0, count=count, workers=workers)
+            np.testing.assert_array_equal(got, 2.0 * want / np.maximum(count, 1.0))
+    with pytest.raises(ValueError, match="count"):
+        tap_variance(offset, sensor, count=count[:-1])
 
 
 # --------------------------------------------------------------------------- bilateral

@@ -322,30 +322,31 @@ def _run(tof, p, nthreads, guide=None):
         depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
             taps, f, max_range=max_range, workers=nthreads)
         count = np.ones(n)
-        var = 2.0 * tap_variance(offset, sensor)
+        var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
     else:
         # one pass over the taps in NumPy (I, Q and the offset exactly as the C kernel
         # computes them), the calibration's offsets, the mean over the window, then one C
         # pass from the phasors
-        i, q, offset = _phasors_offset(taps)
+        i, q, offset = _phasors_offset(taps, nthreads)
         if calibration is not None:
             z = (i + 1j * q) * np.exp(-1j * calibration.deviations)
             i, q = np.ascontiguousarray(z.real), np.ascontiguousarray(z.imag)
         if denoise == "box":
-            i, q, count, (off_mean,) = denoise_phasors(i, q, tof.sites, block=tof.block,
+            grid = SiteGrid(tof.sites, tof.block)
+            i, q, count, (off_mean,) = denoise_phasors(i, q, grid, block=tof.block,
                                                        window=window, use=~saturated,
-                                                       extra=(offset,))
+                                                       extra=(offset,), workers=nthreads)
             noise_offset = np.where(count > 0, off_mean, offset)
-            var = 2.0 * tap_variance(noise_offset, sensor) / np.maximum(count, 1.0)
+            var = tap_variance(noise_offset, sensor, scale=2.0, count=count, workers=nthreads)
         elif denoise == "bilateral":
-            var = 2.0 * tap_variance(offset, sensor)
+            var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
             grid = SiteGrid(tof.sites, tof.block)
             i, q, var, count = denoise_phasors_bilateral(
                 i, q, var, grid, block=tof.block, window=window, use=~saturated,
                 range_scale=p.range_scale, workers=nthreads)
         else:
             count = np.ones(n)
-            var = 2.0 * tap_variance(offset, sensor)
+            var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
         depth, residual, wraps, phase, amp = _unwrap_phasors(i, q, f, w, max_range,
                                                              calibration, nthreads)
     snr, sigma, reflectance, flags = validity(

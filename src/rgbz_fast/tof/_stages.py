@@ -16,9 +16,9 @@ import numpy as np
 
 from .. import _kernels
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import (as_array, as_list, check_block, check_frequencies, check_image,
-                         check_number, check_sites, check_workers)
-from ._filters import _axis_offsets, _check_odd
+from .._validate import (FRAME_DTYPES, as_array, as_list, check_block, check_frequencies,
+                         check_image, check_number, check_workers, kernel_threads)
+from ._filters import SiteGrid, _axis_offsets, _check_odd
 
 __all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unwrap",
            "unambiguous_range", "MAX_WRAPS"]
@@ -104,20 +104,25 @@ def phasors(taps):
     return i, q
 
 
-def _phasors_offset(t):
+def _phasors_offset(t, workers=1):
     """I, Q and the offset (F, n) float64 of checked taps, with the C kernel's arithmetic.
 
-    ``offset = 0.25 * ((A0 + A1) + (A2 + A3))`` in float64, as csrc/tof.c sums it.
+    ``offset = 0.25 * ((A0 + A1) + (A2 + A3))`` in float64, as csrc/tof.c sums it; one C
+    pass (csrc/tof_filter.c, ``rgbz_tof_phasors_offset``: the NumPy operations it replaced,
+    each tap converted to float64 first, tests/_reference/tof.py) on ``workers`` threads
+    (a checked count). Taps of another integer type go through float64, as NumPy converted
+    them.
     """
-    i = np.subtract(t[:, 0], t[:, 2], dtype=np.float64)
-    q = np.subtract(t[:, 3], t[:, 1], dtype=np.float64)
-    offset = np.add(t[:, 0], t[:, 1], dtype=np.float64)
-    offset += np.add(t[:, 2], t[:, 3], dtype=np.float64)
-    offset *= 0.25
+    src = t if t.dtype in FRAME_DTYPES else t.astype(np.float64)
+    src = np.ascontiguousarray(src)
+    F, n = t.shape[0], t.shape[2]
+    i, q, offset = np.empty((F, n)), np.empty((F, n)), np.empty((F, n))
+    _kernels.tof_phasors_offset(src, i, q, offset, kernel_threads(workers, F * n))
     return i, q, offset
 
 
-def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
+def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=(),
+                    workers=None):
     """Mean of ``I + iQ`` over the Z measurements of a window (paper Fig. 17).
 
     The paper replaces the ToF ISP's 3x3 averaging filter by a 5x5 kernel in
@@ -138,12 +143,18 @@ def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
     amplitude. Measurements with ``use = False`` (saturated) stay out of
     every mean; at the frame edges the window holds fewer measurements.
 
+    A C kernel (csrc/tof_filter.c, ``rgbz_tof_box``) on the grid of the
+    measurements: separable sums, rows then columns, each in the order of the
+    window's offsets, so the same bits as the NumPy code it replaced (kept in
+    tests/_reference/tof.py and held to the kernel there).
+
     Parameters
     ----------
     i, q : ndarray, shape (F, n)
         Components per frequency (see :func:`phasors`).
-    sites : (rows, cols) arrays of int, shape (n,)
-        Top-left pixel of every measurement (``ToFTaps.sites``).
+    sites : (rows, cols) arrays of int, shape (n,), or SiteGrid
+        Top-left pixel of every measurement (``ToFTaps.sites``), or their
+        grid (:class:`~rgbz_fast.tof._filters.SiteGrid`, built once).
     block : {1, 2}
         Z pixel size in colour pixels.
     window : int
@@ -153,6 +164,9 @@ def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
     extra : tuple of ndarray, shape (F, n) or (n,)
         More per-measurement values averaged with the same weights (e.g. the
         offset).
+    workers : int, optional
+        Threads of the C kernel (None or -1: all cores); the result does not
+        depend on it.
 
     Returns
     -------
@@ -163,65 +177,60 @@ def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=()):
     extra_mean : list of ndarray
         The means of ``extra``.
     """
-    i = as_array(i, "i", dtype=np.float64)
-    q = as_array(q, "q", dtype=np.float64)
+    i = np.ascontiguousarray(as_array(i, "i", dtype=np.float64))
+    q = np.ascontiguousarray(as_array(q, "q", dtype=np.float64))
     if i.ndim != 2 or q.shape != i.shape:
         raise ValueError(f"i, q: expected two arrays of the same shape (F, n), got "
                          f"{i.shape} and {q.shape}")
     n = i.shape[1]
-    rows, cols = (as_array(a, "sites") for a in as_list(sites, "sites", "(rows, cols)")[:2])
-    if rows.shape != (n,) or cols.shape != (n,):
-        raise ValueError(f"sites: expected two arrays of shape ({n},), got {rows.shape} and "
-                         f"{cols.shape}")
-    rows, cols = check_sites((rows, cols), "sites")             # integers, none twice
     block = check_block(block, "block")
+    if isinstance(sites, SiteGrid):
+        grid = sites
+        if grid.n != n:
+            raise ValueError(f"sites: expected two arrays of shape ({n},), got ({grid.n},)")
+    else:
+        rows, cols = (as_array(a, "sites") for a in as_list(sites, "sites", "(rows, cols)")[:2])
+        if rows.shape != (n,) or cols.shape != (n,):
+            raise ValueError(f"sites: expected two arrays of shape ({n},), got {rows.shape} "
+                             f"and {cols.shape}")
+        grid = SiteGrid((rows, cols), block)                    # integers, none twice
     window = _check_window(window)
     use = np.ones(n, bool) if use is None else as_array(use, "use", dtype=bool)
     if use.shape != (n,):
         raise ValueError(f"use: expected shape ({n},), got {use.shape}")
-    extra = [as_array(e, "extra", dtype=np.float64) for e in as_list(extra, "extra")]
-    planes = [p for p in i] + [p for p in q]
-    for e in extra:
-        planes += [p for p in e] if e.ndim == 2 else [e]
+    extra = [np.ascontiguousarray(as_array(e, "extra", dtype=np.float64))
+             for e in as_list(extra, "extra")]
+    nthreads = check_workers(workers)
     radius = (window // 2) * block
-    # compress the measurements onto the grid of their distinct rows and columns
-    ur, ri = np.unique(rows, return_inverse=True)
-    uc, ci = np.unique(cols, return_inverse=True)
-    row_offs = _axis_offsets(ur, radius)
-    col_offs = _axis_offsets(uc, radius)
-    weight = None if use.all() else use.astype(np.float64)
-    # Mask1, Mask2, rows: the measurements fill the compressed grid in row-major order
-    full = (n == ur.size * uc.size and np.array_equal(ri, np.arange(n) // uc.size)
-            and np.array_equal(ci, np.arange(n) % uc.size))
-
-    def box(values):
-        if weight is not None:
-            values = values * weight
-        if full:
-            g = values.reshape(ur.size, uc.size)
-        else:
-            g = np.zeros((ur.size, uc.size))
-            g[ri, ci] = values
-        tmp = np.zeros_like(g)
-        for a, lo, hi, ok in row_offs:
-            tmp[lo:hi] += g[lo + a:hi + a] if ok.all() else g[lo + a:hi + a] * ok[:, None]
-        out = np.zeros_like(g)
-        for a, lo, hi, ok in col_offs:
-            out[:, lo:hi] += tmp[:, lo + a:hi + a] if ok.all() else tmp[:, lo + a:hi + a] * ok
-        return out.reshape(-1) if full else out[ri, ci]
-
-    count = box(np.ones(n))
-    inv = np.divide(1.0, count, out=np.zeros(n), where=count > 0)
-    means = [box(p) * inv for p in planes]
+    # the offsets of the window that link some pair of grid lines (as the NumPy code took them)
+    offs = [np.array([a for a, *_ in _axis_offsets(u, radius)], np.int64)
+            for u in (grid.rows_u, grid.cols_u)]
     F = i.shape[0]
-    i_mean = np.stack(means[:F])
-    q_mean = np.stack(means[F:2 * F])
-    rest, k = [], 2 * F
-    for e in extra:
-        m = e.shape[0] if e.ndim == 2 else 1
-        rest.append(np.stack(means[k:k + m]) if e.ndim == 2 else means[k])
-        k += m
-    return i_mean, q_mean, count, rest
+    i_mean, q_mean = np.empty((F, n)), np.empty((F, n))
+    rest = [np.empty(e.shape) for e in extra]
+    planes = [p for p in i] + [p for p in q]
+    outs = [p for p in i_mean] + [p for p in q_mean]
+    for e, m in zip(extra, rest):
+        planes += [p for p in e] if e.ndim == 2 else [e]
+        outs += [p for p in m] if e.ndim == 2 else [m]
+    weight = None if use.all() else use.astype(np.float64)
+    count = np.empty(grid.shape)
+    if grid.full:
+        if weight is not None:
+            weight = weight.reshape(grid.shape)
+        _kernels.tof_box(planes, outs, grid.rows_u, grid.cols_u, offs[0], offs[1], radius,
+                         weight, count, nthreads)
+        return i_mean, q_mean, count.reshape(n), rest
+    # measurements with holes between them: the values on the grid (0 in a hole, which the
+    # weight keeps out), the means taken back
+    weight = grid.to_grid(use.astype(np.float64), 0.0)
+    cells = [np.ascontiguousarray(grid.to_grid(p, 0.0)).reshape(-1) for p in planes]
+    means = [np.empty(grid.shape[0] * grid.shape[1]) for _ in planes]
+    _kernels.tof_box(cells, means, grid.rows_u, grid.cols_u, offs[0], offs[1], radius,
+                     weight, count, nthreads)
+    for m, out in zip(means, outs):
+        out[...] = grid.from_grid(m.reshape(grid.shape))
+    return i_mean, q_mean, grid.from_grid(count), rest
 
 
 def unambiguous_range(frequencies):
