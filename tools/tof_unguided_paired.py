@@ -1,0 +1,98 @@
+"""The unguided ToF ISP, this checkout against another commit's package, alternated call by
+call in one process: the same results, and the speed of each denoise.
+
+    python tools/tof_unguided_paired.py --make COMMIT SO DIR   # the other package, once
+    python tools/tof_unguided_paired.py DIR [ROUNDS] [WORKERS]   # a few minutes
+
+``--make`` copies COMMIT's src/rgbz_fast to DIR/rgbz_old with its imports renamed, the
+extension module SO (that commit's build of ``_kernels``) and this build's
+``_build_config.py`` beside it, so that both packages load side by side (this one's
+extension first). The 12 MP Mask1 frame of tools/tof_guided_speed.py (art, 3 M
+measurements), simulated by each package with the same seed (the same taps, checked);
+``ToFISP(denoise=D).run(tof, workers=WORKERS)`` for the three denoises; medians, the median
+of the rounds' speed ratios (> 1: this checkout is faster) and whether every field of the
+results is equal.
+"""
+import importlib
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+FIELDS = ("depth", "residual", "wraps", "phase", "amplitude", "offset", "snr", "sigma",
+          "reflectance", "count", "flags")
+
+
+def make(commit, so, dest):
+    """DIR/rgbz_old: COMMIT's package under another name, with SO as its extension."""
+    out = Path(dest) / "rgbz_old"
+    shutil.rmtree(out, ignore_errors=True)
+    out.mkdir(parents=True)
+    files = subprocess.run(["git", "-C", str(HERE.parent), "ls-tree", "-r", "--name-only",
+                            commit, "src/rgbz_fast"], check=True, capture_output=True,
+                           text=True).stdout.split()
+    for name in files:
+        text = subprocess.run(["git", "-C", str(HERE.parent), "show", f"{commit}:{name}"],
+                              check=True, capture_output=True).stdout
+        target = out / Path(name).relative_to("src/rgbz_fast")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if name.endswith(".py"):
+            text = text.decode().replace("rgbz_fast", "rgbz_old").encode()
+        target.write_bytes(text)
+    built = Path(importlib.import_module("rgbz_fast._kernels").__file__)
+    shutil.copy(so, out / ("_kernels" + "".join(built.suffixes)))
+    shutil.copy(built.parent / "_build_config.py", out / "_build_config.py")
+    print(f"{out}: {commit} with {so}")
+
+
+def frame(pkg):
+    """The 12 MP Mask1 frame of tools/tof_guided_speed.py, made by the package `pkg`."""
+    sim = importlib.import_module(f"{pkg}.simulation")
+    scene = sim.load_rgbd(HERE.parent / ".." / "shared" / "data" / "rgbd" / "art")
+    H, W = 3000, 4000
+    ri = np.arange(H) * scene.shape[0] // H
+    ci = np.arange(W) * scene.shape[1] // W
+    big = sim.Scene(scene.image[ri][:, ci], depth=scene.depth[ri][:, ci],
+                    depth_valid=scene.depth_valid[ri][:, ci])
+    return sim.simulate(big, "mask1", seed=1).tof
+
+
+def main(other_dir, rounds=7, workers=2):
+    importlib.import_module("rgbz_fast._kernels")            # this extension first
+    sys.path.insert(0, str(Path(other_dir).resolve()))
+    this_tof, other_tof = frame("rgbz_fast"), frame("rgbz_old")
+    assert np.array_equal(this_tof.taps, other_tof.taps)
+    this = importlib.import_module("rgbz_fast.tof").ToFISP
+    other = importlib.import_module("rgbz_old.tof").ToFISP
+    print(f"| `ToFISP(denoise=...).run(tof)`, 12 MP, {workers} threads | this, ms | other, ms "
+          "| speed ratio | same results |")
+    print("|---|---|---|---|---|")
+    for denoise in ("none", "box", "bilateral"):
+        runs = {"this": lambda: this(denoise=denoise).run(this_tof, workers=workers),
+                "other": lambda: other(denoise=denoise).run(other_tof, workers=workers)}
+        a, b = runs["this"](), runs["other"]()
+        same = all(np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True)
+                   for f in FIELDS)
+        t = {"this": [], "other": []}
+        for i in range(rounds):
+            for name in (("this", "other") if i % 2 else ("other", "this")):
+                s = time.perf_counter()
+                runs[name]()
+                t[name].append(time.perf_counter() - s)
+        ratio = statistics.median(o / n for n, o in zip(t["this"], t["other"]))
+        print(f"| `{denoise}` | {statistics.median(t['this']) * 1e3:.0f} | "
+              f"{statistics.median(t['other']) * 1e3:.0f} | {ratio:.3f}x | {same} |", flush=True)
+    print(f"load average {os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
+
+
+if __name__ == "__main__":
+    if sys.argv[1] == "--make":
+        make(*sys.argv[2:5])
+    else:
+        main(sys.argv[1], *(int(a) for a in sys.argv[2:4]))
