@@ -147,6 +147,22 @@ def test_simulate_applies_optics_only_when_asked():
                                   simulate(flat, "mask1", noise=False, optics=Optics()).data)
 
 
+def test_frames_through_optics_do_not_depend_on_the_thread_count():
+    """The FFTs run on the simulation's threads (pocketfft transforms each line alone):
+    the same frame, colour and taps, on 1 and 2 threads; a frame large enough for two."""
+    rng = np.random.default_rng(4)
+    shape = (720, 760)
+    img = rng.random(shape + (3,))
+    depth = np.where(np.arange(shape[1])[None, :] < 380, 1.0, 1.6) * np.ones((shape[0], 1))
+    scene = Scene(img, depth=depth)
+    a, b = (simulate(scene, "mask2", seed=3, optics=Optics(f_number=4.0), workers=w)
+            for w in (1, 2))
+    np.testing.assert_array_equal(a.data, b.data)
+    np.testing.assert_array_equal(a.tof.taps, b.tof.taps)
+    np.testing.assert_array_equal(apply_optics(img, Optics(), pixel_pitch_um=2.8, workers=1),
+                                  apply_optics(img, Optics(), pixel_pitch_um=2.8, workers=2))
+
+
 def test_tof_optics_mixes_returns_at_depth_edges_only():
     """Defocus blurs the returned light across a 1 m -> 2 m edge: the measurements next to
     it mix the two surfaces (lens-induced flying pixels), the ISP flags them, and the far

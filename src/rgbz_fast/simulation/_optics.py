@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import check_image, check_number
+from .._validate import check_image, check_number, check_workers, kernel_threads
 
 __all__ = ["Optics", "apply_optics"]
 
@@ -262,23 +262,28 @@ def _psf_cached(optics, band, pitch, f_number):
     return k / k.sum()
 
 
-def _convolve(plane, kernel, *, signed=False):
+def _convolve(plane, kernel, *, signed=False, workers=1):
     """``plane`` convolved with ``kernel``, the borders mirrored (edge pixel repeated).
 
     A non-negative plane stays non-negative (FFT round-off below 0 is cut)
-    unless ``signed`` (the real and imaginary parts of the ToF phasors).
+    unless ``signed`` (the real and imaginary parts of the ToF phasors). The FFTs run
+    on ``workers`` threads (a checked count; pocketfft transforms each line alone, so the
+    result does not depend on it).
     """
+    import scipy.fft
     from scipy.signal import oaconvolve
 
     r = kernel.shape[0] // 2
     padded = np.pad(np.asarray(plane, np.float64), r, mode="symmetric")
-    out = oaconvolve(padded, kernel, mode="valid")
+    with scipy.fft.set_workers(kernel_threads(workers, padded.size)):
+        out = oaconvolve(padded, kernel, mode="valid")
     if not signed:
         np.maximum(out, 0.0, out=out)
     return out
 
 
-def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=None):
+def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=None,
+                 workers=None):
     """Blur an image of scene radiance through :class:`Optics` and the pixel aperture.
 
     Parameters
@@ -295,6 +300,9 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
         a single plane; None for RGB.
     f_number : float, optional
         Overrides ``optics.f_number``.
+    workers : int, optional
+        Threads of the FFTs (None or -1: all cores). The result does not
+        depend on it.
 
     Returns
     -------
@@ -313,6 +321,7 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
     if not isinstance(optics, Optics):
         raise TypeError(f"optics: expected an Optics, got {type(optics).__name__}")
     img = check_image(image, "image", ndim=(2, 3))
+    nthreads = check_workers(workers)
     if img.min() < 0:
         raise ValueError(f"image: holds negative values (min {img.min()}); expected linear "
                          "values >= 0")
@@ -323,7 +332,7 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
         if wavelengths is None:
             raise ValueError("wavelengths: a single plane needs its wavelength in nm")
         return _convolve(img, optics.psf(wavelengths, pixel_pitch_um=pixel_pitch_um,
-                                         f_number=f_number))
+                                         f_number=f_number), workers=nthreads)
     if img.ndim != 3:
         raise ValueError(f"image: expected a 2-D or 3-D array, got shape {img.shape}")
     if wavelengths is None:
@@ -340,5 +349,5 @@ def apply_optics(image, optics, *, pixel_pitch_um, wavelengths=None, f_number=No
                    for w in wl]
     out = np.empty(img.shape, np.float64)
     for c, k in enumerate(kernels):
-        out[..., c] = _convolve(img[..., c], k)
+        out[..., c] = _convolve(img[..., c], k, workers=nthreads)
     return out

@@ -97,7 +97,7 @@ from .. import _kernels
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_flag, check_number, check_seed
+from .._validate import check_flag, check_number, check_seed, check_workers
 from . import _pixels
 from ._loaders import load_scene
 from ._noise import (RNG_VERSION, STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
@@ -113,14 +113,14 @@ class UnambiguousRangeWarning(RuntimeWarning):
     """A scene depth lies beyond the unambiguous range of the ToF frequencies."""
 
 
-def _colour_values(scene, sensor, colour_map, optics=None):
+def _colour_values(scene, sensor, colour_map, optics=None, workers=None):
     """What the colour pixels see, before the per-unit signal: the scene's linear RGB image
     (through ``optics`` when given), or for a spectral scene the channel value of every
     site (one dot product per site)."""
     image = scene.image
     if optics is not None:
         image = apply_optics(image, optics, pixel_pitch_um=sensor.pixel_pitch_um,
-                             wavelengths=scene.wavelengths)
+                             wavelengths=scene.wavelengths, workers=workers)
     if scene.is_spectral:
         return _spectral_integrate(image, _spectral_weights(sensor, scene.wavelengths),
                                    colour_map)
@@ -244,7 +244,7 @@ def _colour_frames(scene, pattern, sensor, seed, noise, optics, rng_version, wor
     meta)``; ``rgbz``: also the data, the reference with 0 at the Z sites."""
     shape = pattern.check_shape(scene.shape, "scene")
     colour_map = pattern.bayer_map(shape) if scene.is_spectral else None
-    values = _colour_values(scene, sensor, colour_map, optics)
+    values = _colour_values(scene, sensor, colour_map, optics, workers)
     per_unit = sensor.electrons_per_unit(1.0)
     legacy = noise and rng_version == 1
     if legacy:
@@ -329,7 +329,7 @@ def _tof_light_at_cells(scene, sensor, pitch, cr, cc):
     return {h: p.sum(axis=-1) for h, p in cells.items()}, (active + b).sum(axis=-1)
 
 
-def _tof_light_through(scene, sensor, pitch, cr, cc, optics):
+def _tof_light_through(scene, sensor, pitch, cr, cc, optics, workers):
     """As :func:`_tof_light_at_cells`, the light of the whole frame first blurred through
     ``optics`` at the laser wavelength and the ToF lens's f-number: a pixel near a depth
     edge receives both surfaces' returns (lens-induced mixing)."""
@@ -341,9 +341,10 @@ def _tof_light_through(scene, sensor, pitch, cr, cc, optics):
     s = np.where(surface, s, 0.0)
     fields, active = sensor._returns(d_safe, s)
     kernel = optics.psf(sensor.wavelength_nm, pixel_pitch_um=pitch, f_number=sensor.f_number)
+    nthreads = check_workers(workers)
 
     def blur_at_cells(plane, signed=False):
-        return _convolve(plane, kernel, signed=signed)[cr, cc].sum(axis=-1)
+        return _convolve(plane, kernel, signed=signed, workers=nthreads)[cr, cc].sum(axis=-1)
 
     phasors = {}
     for h, field in fields.items():
@@ -446,7 +447,7 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
             scene, sensor, pitch, (rows, cols), block, fields, keys, workers)
     else:
         mean, suppress, depth_true, valid, beyond, dmax = _tof_mean(
-            scene, sensor, pitch, rows, cols, block, optics)
+            scene, sensor, pitch, rows, cols, block, optics, workers)
         if legacy:
             taps, sat = expose(mean, sensor._dark_electrons, sensor, noise=True, seed=seed,
                                temporal_stream=STREAM_TOF_TEMPORAL, fpn_stream=STREAM_TOF_FPN,
@@ -469,7 +470,7 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
                    sensor.bit_depth, *map(_Adopt, (depth_true, valid, sat)), sensor, shape, meta)
 
 
-def _tof_mean(scene, sensor, pitch, rows, cols, block, optics):
+def _tof_mean(scene, sensor, pitch, rows, cols, block, optics, workers):
     """The mean tap electrons (F, 4, n) of every model of the ToF pixels (the non-ideal
     modulation, the optics), in NumPy; with the suppressed charge per site (or None), the
     true depth, validity and beyond-range flag of every site and the largest valid depth."""
@@ -482,7 +483,7 @@ def _tof_mean(scene, sensor, pitch, rows, cols, block, optics):
     if optics is None:
         phasors, total = _tof_light_at_cells(scene, sensor, pitch, cr, cc)
     else:
-        phasors, total = _tof_light_through(scene, sensor, pitch, cr, cc, optics)
+        phasors, total = _tof_light_through(scene, sensor, pitch, cr, cc, optics, workers)
     if sensor.delay_ps or sensor.delay_fpn_ps:
         phasors = sensor._delayed(phasors, _pixel_delays(sensor, rows.size))
     mean = sensor._taps_from(phasors, total)                                # (F, 4, n)

@@ -1,0 +1,57 @@
+"""``simulate`` through optics, this checkout against another commit's package loaded beside
+it (made by ``tools/tof_unguided_paired.py --make``), alternated call by call: the same
+frame, and the speed.
+
+    python tools/optics_paired.py DIR [ROUNDS] [WORKERS]   # a few minutes
+
+The 12 MP art scene of tools/tof_guided_speed.py (depth included), Mask1, seed 1,
+``optics=Optics()``: medians, the median of the rounds' speed ratios (> 1: this checkout is
+faster), and whether the colour data and the taps are equal.
+"""
+import importlib
+import os
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from tof_unguided_paired import HERE  # noqa: E402
+
+
+def scene(pkg):
+    sim = importlib.import_module(f"{pkg}.simulation")
+    s = sim.load_rgbd(HERE.parent / ".." / "shared" / "data" / "rgbd" / "art")
+    ri = np.arange(3000) * s.shape[0] // 3000
+    ci = np.arange(4000) * s.shape[1] // 4000
+    return sim, sim.Scene(s.image[ri][:, ci], depth=s.depth[ri][:, ci],
+                          depth_valid=s.depth_valid[ri][:, ci])
+
+
+def main(other_dir, rounds=3, workers=2):
+    importlib.import_module("rgbz_fast._kernels")            # this extension first
+    sys.path.insert(0, str(Path(other_dir).resolve()))
+    runs = {}
+    for name, pkg in (("this", "rgbz_fast"), ("other", "rgbz_old")):
+        sim, sc = scene(pkg)
+        runs[name] = (lambda sim=sim, sc=sc: sim.simulate(sc, "mask1", seed=1,
+                                                          optics=sim.Optics(), workers=workers))
+    a, b = runs["this"](), runs["other"]()
+    same = np.array_equal(a.data, b.data) and np.array_equal(a.tof.taps, b.tof.taps)
+    t = {"this": [], "other": []}
+    for i in range(rounds):
+        for name in (("this", "other") if i % 2 else ("other", "this")):
+            s = time.perf_counter()
+            runs[name]()
+            t[name].append(time.perf_counter() - s)
+    ratio = statistics.median(o / n for n, o in zip(t["this"], t["other"]))
+    print(f"simulate(art 12 MP, 'mask1', optics=Optics(), workers={workers}): "
+          f"{statistics.median(t['this']):.2f} s against {statistics.median(t['other']):.2f} s, "
+          f"speed ratio {ratio:.3f}, same frame: {same}; load average "
+          f"{os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], *(int(a) for a in sys.argv[2:4]))
