@@ -60,6 +60,26 @@ def test_scene_copies_inputs_and_is_read_only():
     assert s.depth_valid.all() and s.depth_valid.dtype == bool
 
 
+def test_scene_holds_c_order_arrays_and_simulates_the_same():
+    """A scene from transposed or fancy-indexed arrays holds C-order copies (the kernels
+    read rows; no copy per simulate call) and gives the frame of the C-order scene."""
+    from rgbz_fast.simulation import simulate
+    rng = np.random.default_rng(5)
+    img = rng.random((40, 48, 3))
+    depth = 1.0 + rng.random((40, 48))
+    valid = rng.random((40, 48)) > 0.1
+    ir = rng.random((40, 48))
+    fortran = Scene(np.asfortranarray(img), depth=np.asfortranarray(depth),
+                    depth_valid=np.asfortranarray(valid), ir_reflectance=np.asfortranarray(ir))
+    plain = Scene(img, depth=depth, depth_valid=valid, ir_reflectance=ir)
+    for name in ("image", "depth", "depth_valid", "ir_reflectance"):
+        assert getattr(fortran, name).flags.c_contiguous, name
+        np.testing.assert_array_equal(getattr(fortran, name), getattr(plain, name))
+    a, b = (simulate(s, "mask1", seed=2) for s in (fortran, plain))
+    np.testing.assert_array_equal(a.data, b.data)
+    np.testing.assert_array_equal(a.tof.taps, b.tof.taps)
+
+
 # -- validation -----------------------------------------------------------------
 @pytest.mark.parametrize("kwargs,match", [
     (dict(depth=np.full((4, 4), -1.0)), "depth"),

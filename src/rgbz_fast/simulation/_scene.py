@@ -205,7 +205,9 @@ def estimate_ir_reflectance(image, wavelengths=None):
 
 
 def _readonly(a):
-    a = np.array(a, copy=True)
+    """A read-only copy in C order: the simulation's kernels read rows, so a scene built from
+    a transposed or fancy-indexed array would otherwise be copied again on every call."""
+    a = np.array(a, copy=True, order="C")
     a.setflags(write=False)
     return a
 

@@ -1,12 +1,13 @@
-"""``simulate`` through optics, this checkout against another commit's package loaded beside
-it (made by ``tools/tof_unguided_paired.py --make``), alternated call by call: the same
-frame, and the speed.
+"""``simulate``, this checkout against another commit's package loaded beside it (made by
+``tools/tof_unguided_paired.py --make``), alternated call by call: the same frame, and the
+speed.
 
-    python tools/optics_paired.py DIR [ROUNDS] [WORKERS]   # a few minutes
+    python tools/simulate_paired.py DIR [ROUNDS] [WORKERS] [--optics]   # a few minutes
 
-The 12 MP art scene of tools/tof_guided_speed.py (depth included), Mask1, seed 1,
-``optics=Optics()``: medians, the median of the rounds' speed ratios (> 1: this checkout is
-faster), and whether the colour data and the taps are equal.
+The 12 MP art scene of tools/tof_guided_speed.py (depth included; its arrays come from
+fancy indexing, so they are not in C order, as a user's transposed or indexed arrays), Mask1,
+seed 1, with ``optics=Optics()`` when asked: medians, the median of the rounds' speed ratios
+(> 1: this checkout is faster), and whether the colour data and the taps are equal.
 """
 import importlib
 import os
@@ -30,14 +31,14 @@ def scene(pkg):
                           depth_valid=s.depth_valid[ri][:, ci])
 
 
-def main(other_dir, rounds=3, workers=2):
+def main(other_dir, rounds=3, workers=2, optics=False):
     importlib.import_module("rgbz_fast._kernels")            # this extension first
     sys.path.insert(0, str(Path(other_dir).resolve()))
     runs = {}
     for name, pkg in (("this", "rgbz_fast"), ("other", "rgbz_old")):
         sim, sc = scene(pkg)
-        runs[name] = (lambda sim=sim, sc=sc: sim.simulate(sc, "mask1", seed=1,
-                                                          optics=sim.Optics(), workers=workers))
+        runs[name] = (lambda sim=sim, sc=sc: sim.simulate(
+            sc, "mask1", seed=1, optics=sim.Optics() if optics else None, workers=workers))
     a, b = runs["this"](), runs["other"]()
     same = np.array_equal(a.data, b.data) and np.array_equal(a.tof.taps, b.tof.taps)
     t = {"this": [], "other": []}
@@ -47,11 +48,13 @@ def main(other_dir, rounds=3, workers=2):
             runs[name]()
             t[name].append(time.perf_counter() - s)
     ratio = statistics.median(o / n for n, o in zip(t["this"], t["other"]))
-    print(f"simulate(art 12 MP, 'mask1', optics=Optics(), workers={workers}): "
+    label = "Optics()" if optics else "None"
+    print(f"simulate(art 12 MP, 'mask1', optics={label}, workers={workers}): "
           f"{statistics.median(t['this']):.2f} s against {statistics.median(t['other']):.2f} s, "
           f"speed ratio {ratio:.3f}, same frame: {same}; load average "
           f"{os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], *(int(a) for a in sys.argv[2:4]))
+    args = [a for a in sys.argv[1:] if a != "--optics"]
+    main(args[0], *(int(a) for a in args[1:3]), optics="--optics" in sys.argv)
