@@ -117,6 +117,25 @@ def test_evaluate_prints_table_and_writes_reports(tmp_path, capsys):
     assert "mask2/sg/cfa_psnr" in js
 
 
+def test_evaluate_offers_every_demosaic(tmp_path, capsys):
+    """--demosaic lists the library's demosaics (written out in the CLI so that its parser
+    imports no kernel) and bilinear runs."""
+    import imageio.v3 as iio
+    import skimage.data
+
+    from rgbz_fast._cli.evaluate import DEMOSAICS
+    from rgbz_fast.isp import DEMOSAIC_METHODS
+
+    assert DEMOSAICS == DEMOSAIC_METHODS
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "a.png", skimage.data.coffee()[:96, :96])
+    assert main(["evaluate", "--dataset", str(ds), "--methods", "sg", "--metrics", "cpsnr",
+                 "--demosaic", "bilinear", "--out", str(tmp_path / "rep"), "--quiet", "--json",
+                 "--processes", "1", "--no-plots"]) == 0
+    assert "mask1/sg/cpsnr" in json.loads(capsys.readouterr().out)
+
+
 def test_evaluate_with_optics(tmp_path, capsys):
     import imageio.v3 as iio
     import skimage.data

@@ -9,6 +9,10 @@ from pathlib import Path
 from . import _common as c
 from ._raw import raw_options_file
 
+#: rgbz_fast.isp.DEMOSAIC_METHODS, written out so that building the parser imports no kernel
+#: (tests/cli holds the two equal)
+DEMOSAICS = ("malvar2004", "menon2007", "bilinear")
+
 NAME = "evaluate"
 DEFAULT_OUT = "rgbz_results"
 
@@ -28,7 +32,7 @@ def add_parser(sub):
                    help="comma-separated metrics")
     p.add_argument("--noise", action="store_true", help="use the sensor noise model (default: "
                                                         "noise-free mosaics)")
-    p.add_argument("--demosaic", default="malvar2004", choices=("malvar2004", "menon2007"),
+    p.add_argument("--demosaic", default="malvar2004", choices=DEMOSAICS,
                    help="Bayer demosaic of both paths")
     p.add_argument("--crop", type=c.non_negative_int, default=8,
                    help="border (pixels) left out of the image metrics")
