@@ -215,6 +215,10 @@ int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                          ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
                          int mode, int workers);
 
+/* The smallest and largest value of n floats (type RGBZ_T_F32 or RGBZ_T_F64); not both
+   finite if a value is NaN or infinite (scan.c: the argument checks' one pass). */
+int rgbz_float_range(int type, const void *data, ptrdiff_t n, double *lo, double *hi);
+
 /* Bilinear demosaic of a Bayer CFA (demosaic.c): colour-demosaicing's
    demosaicing_CFA_Bayer_bilinear bit for bit; arguments as rgbz_demosaic_malvar. */
 int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,

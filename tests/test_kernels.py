@@ -255,3 +255,37 @@ def test_counting_stub_reexports_exactly_the_public_names_of_the_module():
     assert all(n.module == "rgbz_fast._kernels" for n in tree.body if isinstance(n, ast.ImportFrom))
     public = {n for n in dir(_kernels_count) if not n.startswith("_")}
     assert sorted(stub) == sorted(public)
+
+
+# -- the argument checks' scan (csrc/scan.c) ------------------------------------------------
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_float_range_is_min_and_max_and_sees_every_non_finite_value(dtype):
+    """float_range against NumPy's min and max (every length up to two vectors' worth and a
+    long one), and a NaN or infinity at the first, a middle and the last place makes the
+    range not finite, as does a NaN beside an infinity; check_finite and finite_range give
+    NumPy's answers and message through it, in C and Fortran order and on strided views."""
+    from rgbz_fast._validate import check_finite, finite_range
+    rng = np.random.default_rng(9)
+    for n in list(range(1, 40)) + [100003]:
+        a = (rng.standard_normal(n) * 1e3).astype(dtype)
+        assert _kernels.float_range(a) == (float(a.min()), float(a.max()))
+        for bad in (np.nan, np.inf, -np.inf):
+            for at in {0, n // 2, n - 1}:
+                b = a.copy()
+                b[at] = bad
+                lo, hi = _kernels.float_range(b)
+                assert not (np.isfinite(lo) and np.isfinite(hi)), (n, bad, at)
+    b = a.copy()
+    b[[5, 9]] = np.inf, np.nan
+    assert not np.all(np.isfinite(_kernels.float_range(b)))
+    img = (rng.random((30, 40, 3)) * 7).astype(dtype)
+    for view in (img, np.asfortranarray(img), img[:, ::2], img.transpose(1, 0, 2)):
+        assert finite_range(view, "x") == (float(view.min()), float(view.max()))
+        check_finite(view, "x")
+        bad = view.copy()
+        bad[3, 4, 1] = np.nan
+        bad[0, 0, 0] = np.inf
+        with pytest.raises(ValueError, match=r"x: holds 2 NaN or infinite value\(s\)"):
+            check_finite(bad, "x")
+        with pytest.raises(ValueError, match="x: holds 2"):
+            finite_range(bad, "x")

@@ -2,16 +2,17 @@
 call in one process: the same results, and the speed of each denoise.
 
     python tools/tof_unguided_paired.py --make COMMIT SO DIR   # the other package, once
-    python tools/tof_unguided_paired.py DIR [ROUNDS] [WORKERS]   # a few minutes
+    python tools/tof_unguided_paired.py DIR [ROUNDS] [WORKERS] [--guided]   # a few minutes
 
 ``--make`` copies COMMIT's src/rgbz_fast to DIR/rgbz_old with its imports renamed, the
 extension module SO (that commit's build of ``_kernels``) and this build's
 ``_build_config.py`` beside it, so that both packages load side by side (this one's
 extension first). The 12 MP Mask1 frame of tools/tof_guided_speed.py (art, 3 M
 measurements), simulated by each package with the same seed (the same taps, checked);
-``ToFISP(denoise=D).run(tof, workers=WORKERS)`` for the three denoises; medians, the median
-of the rounds' speed ratios (> 1: this checkout is faster) and whether every field of the
-results is equal.
+``ToFISP(denoise=D).run(tof, workers=WORKERS)`` for the three denoises, and with
+``--guided`` the guided ISP (``ToFISP().run(tof, guide=g)``) with the frame's colour image as
+uint8 and as float64 in [0, 1]; medians, the median of the rounds' speed ratios (> 1: this
+checkout is faster) and whether every field of the results is equal.
 """
 import importlib
 import os
@@ -51,8 +52,9 @@ def make(commit, so, dest):
     print(f"{out}: {commit} with {so}")
 
 
-def frame(pkg):
-    """The 12 MP Mask1 frame of tools/tof_guided_speed.py, made by the package `pkg`."""
+def frame(pkg, with_guide=False):
+    """The 12 MP Mask1 frame of tools/tof_guided_speed.py, made by the package `pkg` (its
+    taps, or the taps and the guide ``ColourISP().run(frame)``)."""
     sim = importlib.import_module(f"{pkg}.simulation")
     scene = sim.load_rgbd(HERE.parent / ".." / "shared" / "data" / "rgbd" / "art")
     H, W = 3000, 4000
@@ -60,22 +62,30 @@ def frame(pkg):
     ci = np.arange(W) * scene.shape[1] // W
     big = sim.Scene(scene.image[ri][:, ci], depth=scene.depth[ri][:, ci],
                     depth_valid=scene.depth_valid[ri][:, ci])
-    return sim.simulate(big, "mask1", seed=1).tof
+    fr = sim.simulate(big, "mask1", seed=1)
+    if with_guide:
+        return fr.tof, importlib.import_module(f"{pkg}.isp").ColourISP().run(fr)
+    return fr.tof
 
 
-def main(other_dir, rounds=7, workers=2):
+def main(other_dir, rounds=7, workers=2, guided=False):
     importlib.import_module("rgbz_fast._kernels")            # this extension first
     sys.path.insert(0, str(Path(other_dir).resolve()))
-    this_tof, other_tof = frame("rgbz_fast"), frame("rgbz_old")
+    (this_tof, guide), (other_tof, _) = frame("rgbz_fast", True), frame("rgbz_old", True)
     assert np.array_equal(this_tof.taps, other_tof.taps)
     this = importlib.import_module("rgbz_fast.tof").ToFISP
     other = importlib.import_module("rgbz_old.tof").ToFISP
-    print(f"| `ToFISP(denoise=...).run(tof)`, 12 MP, {workers} threads | this, ms | other, ms "
+    cases = {f"denoise={d!r}": (d, None) for d in ("none", "box", "bilateral")}
+    if guided:
+        cases = {"guide uint8": ("bilateral", guide),
+                 "guide float64": ("bilateral", guide / 255.0)}
+    print(f"| `ToFISP(...).run(tof)`, 12 MP, {workers} threads | this, ms | other, ms "
           "| speed ratio | same results |")
     print("|---|---|---|---|---|")
-    for denoise in ("none", "box", "bilateral"):
-        runs = {"this": lambda: this(denoise=denoise).run(this_tof, workers=workers),
-                "other": lambda: other(denoise=denoise).run(other_tof, workers=workers)}
+    for label, (denoise, g) in cases.items():
+        runs = {"this": lambda: this(denoise=denoise).run(this_tof, guide=g, workers=workers),
+                "other": lambda: other(denoise=denoise).run(other_tof, guide=g,
+                                                            workers=workers)}
         a, b = runs["this"](), runs["other"]()
         same = all(np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True)
                    for f in FIELDS)
@@ -86,7 +96,7 @@ def main(other_dir, rounds=7, workers=2):
                 runs[name]()
                 t[name].append(time.perf_counter() - s)
         ratio = statistics.median(o / n for n, o in zip(t["this"], t["other"]))
-        print(f"| `{denoise}` | {statistics.median(t['this']) * 1e3:.0f} | "
+        print(f"| `{label}` | {statistics.median(t['this']) * 1e3:.0f} | "
               f"{statistics.median(t['other']) * 1e3:.0f} | {ratio:.3f}x | {same} |", flush=True)
     print(f"load average {os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
 
@@ -95,4 +105,5 @@ if __name__ == "__main__":
     if sys.argv[1] == "--make":
         make(*sys.argv[2:5])
     else:
-        main(sys.argv[1], *(int(a) for a in sys.argv[2:4]))
+        args = [a for a in sys.argv[1:] if a != "--guided"]
+        main(args[0], *(int(a) for a in args[1:3]), guided="--guided" in sys.argv)

@@ -122,6 +122,26 @@ def demosaic_malvar(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst, const int32
     _raise_for(status)
 
 
+def float_range(a):
+    """(smallest, largest) value of a C-contiguous float32 or float64 array (both NaN if it
+    holds NaN; csrc/scan.c): the argument checks' one pass."""
+    cdef const float[::1] f
+    cdef const double[::1] d
+    cdef double lo = 0.0, hi = 0.0
+    cdef int status
+    flat = a.reshape(-1)
+    if flat.dtype.char == "f":
+        f = flat
+        with nogil:
+            status = rgbz_float_range(RGBZ_T_F32, &f[0], f.shape[0], &lo, &hi)
+    else:
+        d = flat
+        with nogil:
+            status = rgbz_float_range(RGBZ_T_F64, &d[0], d.shape[0], &lo, &hi)
+    _raise_for(status)
+    return lo, hi
+
+
 def demosaic_bilinear(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst,
                       const int32_t[::1] phase, int mode, int workers):
     """Bilinear demosaic (colour-demosaicing's filters and scipy's order of the taps, bit for

@@ -121,6 +121,7 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
                              Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
                              int mode, int workers)
+    int rgbz_float_range(int type, const void *data, Py_ssize_t n, double *lo, double *hi)
     int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
                                Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
                                int mode, int workers)

@@ -26,7 +26,7 @@ import numpy as np
 from ._threads import (MAX_WORKERS, MIN_PIXELS_PER_THREAD, check_processes,
                        check_thread_stacks, check_workers, kernel_threads, thread_limit)
 
-__all__ = ["check_image", "check_finite", "check_number", "check_int", "check_flag",
+__all__ = ["check_image", "check_finite", "finite_range", "check_number", "check_int", "check_flag",
            "check_choice", "check_dtype", "check_bit_depth", "check_seed", "check_workers",
            "check_processes", "check_thread_stacks", "thread_limit", "parse_shape",
            "merge_params", "integer_bits", "check_entries", "check_path", "check_meta",
@@ -355,11 +355,43 @@ def merge_params(cls, params=None, overrides=None, *, name="params", caller=None
     return cls(**{**base, **overrides})
 
 
+def _scan(a):
+    """(smallest, largest) of a float32/float64 array in one C pass (csrc/scan.c; not both
+    finite if a value is NaN or infinite), or None for other types and layouts."""
+    if a.dtype not in (np.float32, np.float64) or a.size == 0 or not (
+            a.flags.c_contiguous or a.flags.f_contiguous):
+        return None
+    from . import _kernels                      # _validate is imported before the extension
+    return _kernels.float_range(a.ravel(order="K"))
+
+
+def _not_finite(a, name):
+    bad = int(np.size(a) - np.count_nonzero(np.isfinite(a)))
+    return ValueError(f"{name}: holds {bad} NaN or infinite value(s); expected finite data")
+
+
 def check_finite(a, name):
     """ValueError naming ``name`` if a float array holds NaN or infinity."""
-    if np.issubdtype(a.dtype, np.floating) and not np.all(np.isfinite(a)):
-        bad = int(np.size(a) - np.count_nonzero(np.isfinite(a)))
-        raise ValueError(f"{name}: holds {bad} NaN or infinite value(s); expected finite data")
+    if not np.issubdtype(a.dtype, np.floating):
+        return
+    scan = _scan(a)
+    if scan is None:
+        if not np.all(np.isfinite(a)):
+            raise _not_finite(a, name)
+    elif not (np.isfinite(scan[0]) and np.isfinite(scan[1])):
+        raise _not_finite(a, name)
+
+
+def finite_range(a, name):
+    """``(min, max)`` of a non-empty real array as floats, after a ValueError naming
+    ``name`` if it holds NaN or infinity: one pass for float32/float64 (csrc/scan.c)."""
+    scan = _scan(a) if np.issubdtype(a.dtype, np.floating) else None
+    if scan is None:
+        check_finite(a, name)
+        return float(a.min()), float(a.max())
+    if not (np.isfinite(scan[0]) and np.isfinite(scan[1])):
+        raise _not_finite(a, name)
+    return float(scan[0]), float(scan[1])
 
 
 def _real(value):

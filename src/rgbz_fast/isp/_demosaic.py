@@ -36,7 +36,7 @@ from .. import _kernels
 from .._deps import import_colour_demosaicing
 from .._patterns import BAYER_PHASES, CHANNELS, Pattern
 from .._validate import (FRAME_DTYPES, check_choice, check_dtype, check_image, check_workers,
-                         kernel_threads)
+                         finite_range, kernel_threads)
 
 __all__ = ["demosaic", "DEMOSAIC_METHODS", "DEMOSAIC_MODES"]
 
@@ -137,7 +137,7 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     >>> rgb.shape, rgb.dtype, float(rgb.min()), float(rgb.max())
     ((4, 6, 3), dtype('float32'), 100.0, 100.0)
     """
-    a = check_image(cfa, "cfa", ndim=2)
+    a = check_image(cfa, "cfa", ndim=2, finite=False)         # floats: finite_range below
     if a.shape[0] < 2 or a.shape[1] < 2:
         raise ValueError(f"cfa: expected at least one 2x2 Bayer period, got shape {a.shape}")
     ph = _bayer_phase(phase)
@@ -153,7 +153,8 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         # the input range 4.5-fold, so beyond 1/32 of the largest float of the output (and
         # of the float64 arithmetic) a value would overflow to inf, or NaN (inf - inf)
         limit = float(np.finfo(out_dtype).max) / 32
-        top = float(max(-a.min(), a.max()))
+        lo, hi = finite_range(a, "cfa")
+        top = max(-lo, hi)
         if top > limit:
             raise ValueError(f"cfa: values up to {top:g} in magnitude; the demosaic's filters "
                              f"overflow {out_dtype} beyond {limit:g}"

@@ -44,7 +44,7 @@ import weakref
 import numpy as np
 
 from .. import _kernels
-from .._validate import check_image, check_number, check_workers
+from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid
 from ._result import ToFDepth
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
@@ -90,7 +90,7 @@ def check_guide(guide, shape, name="guide"):
     uint16, float32 or float64 (other real types as float64), and its scale to [0, 1]."""
     if guide is None:
         raise TypeError(f"{name}: expected the frame's colour image (rows, cols, 3), got None")
-    g = check_image(guide, name)
+    g = check_image(guide, name, finite=False)            # floats: finite_range below
     if g.dtype == np.bool_:
         raise TypeError(f"{name}: expected colour values, got dtype bool")
     if g.ndim != 3 or g.shape[2] != 3:
@@ -109,7 +109,7 @@ def check_guide(guide, shape, name="guide"):
     else:
         if g.dtype not in (np.float32, np.float64):
             g = g.astype(np.float64)
-        lo, hi = float(g.min()), float(g.max())
+        lo, hi = finite_range(g, name)
         if lo < 0.0 or hi > 1.0:
             raise ValueError(f"{name}: float values span [{lo:g}, {hi:g}]; expected sRGB in "
                              f"[0, 1] (or uint8 / uint16)")
