@@ -160,36 +160,20 @@ static ptrdiff_t *dm_colmap(ptrdiff_t cols, int mode)
     return colmap;
 }
 
-int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
-                         ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                         int mode, int workers)
+int rgbz_demosaic(int method, int in_type, int out_type, const void *src, void *dst,
+                  ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase, int mode, int workers)
 {
+    if (method != RGBZ_DM_MALVAR && method != RGBZ_DM_BILINEAR) return RGBZ_EINVAL;
     int st = dm_check(out_type, src, dst, rows, cols, phase, mode);
     if (st != RGBZ_OK) return st;
     ptrdiff_t *colmap = dm_colmap(cols, mode);
     if (!colmap) return RGBZ_ENOMEM;
-#define DM_MALVAR_(s, T)                                                                     \
-    RGBZ_CAT(rgbz_malvar, s)((const T *)src, dst, out_type == RGBZ_T_F64, rows, cols, phase, \
-                             colmap, mode, workers)
-    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, DM_MALVAR_, st = RGBZ_EINVAL)
-#undef DM_MALVAR_
-    free(colmap);
-    return st;
-}
-
-int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
-                           ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                           int mode, int workers)
-{
-    int st = dm_check(out_type, src, dst, rows, cols, phase, mode);
-    if (st != RGBZ_OK) return st;
-    ptrdiff_t *colmap = dm_colmap(cols, mode);
-    if (!colmap) return RGBZ_ENOMEM;
-#define DM_BILINEAR_(s, T)                                                                     \
-    RGBZ_CAT(rgbz_bilinear, s)((const T *)src, dst, out_type == RGBZ_T_F64, rows, cols, phase, \
-                               colmap, mode, workers)
-    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, DM_BILINEAR_, st = RGBZ_EINVAL)
-#undef DM_BILINEAR_
+#define DM_RUN_(s, T)                                                                       \
+    RGBZ_CAT(rgbz_demosaic_rows, s)((const T *)src, dst, method == RGBZ_DM_BILINEAR,        \
+                                    out_type == RGBZ_T_F64, rows, cols, phase, colmap, mode, \
+                                    workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, DM_RUN_, st = RGBZ_EINVAL)
+#undef DM_RUN_
     free(colmap);
     return st;
 }

@@ -49,21 +49,6 @@ RGBZ_INLINE void RGBZ_CAT(dm_row, IS)(const IN_T *src, void *dst, int out_f64, p
     }
 }
 
-static void RGBZ_CAT(rgbz_malvar, IS)(const IN_T *src, void *dst, int out_f64, ptrdiff_t rows,
-                                      ptrdiff_t cols, const int32_t *phase,
-                                      const ptrdiff_t *colmap, int mode, int workers)
-{
-    const int nth = rgbz_threads(workers);
-    (void)nth;
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t y = 0; y < rows; y++) {
-        if (out_f64)
-            RGBZ_CAT(dm_row, IS)(src, dst, 1, y, rows, cols, phase, colmap, mode);
-        else
-            RGBZ_CAT(dm_row, IS)(src, dst, 0, y, rows, cols, phase, colmap, mode);
-    }
-}
-
 /* bilinear, pixel x of row y by the rule (demosaic_bilinear.h): rows u, m, d the sources of
    rows y - 1, y, y + 1, which are yu, y, yd */
 RGBZ_INLINE void RGBZ_CAT(dm_bilinear_edge, IS)(const IN_T *u, const IN_T *m, const IN_T *d,
@@ -117,17 +102,24 @@ RGBZ_INLINE void RGBZ_CAT(dm_bilinear_row, IS)(const IN_T *src, void *dst, int o
     }
 }
 
-static void RGBZ_CAT(rgbz_bilinear, IS)(const IN_T *src, void *dst, int out_f64, ptrdiff_t rows,
-                                        ptrdiff_t cols, const int32_t *phase,
-                                        const ptrdiff_t *colmap, int mode, int workers)
+/* every row, Malvar's or bilinear (a compile-time constant in each call below, so that each
+   has its own loop with the store of its output type) */
+static void RGBZ_CAT(rgbz_demosaic_rows, IS)(const IN_T *src, void *dst, int bilinear,
+                                             int out_f64, ptrdiff_t rows, ptrdiff_t cols,
+                                             const int32_t *phase, const ptrdiff_t *colmap,
+                                             int mode, int workers)
 {
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t y = 0; y < rows; y++) {
-        if (out_f64)
+        if (bilinear && out_f64)
             RGBZ_CAT(dm_bilinear_row, IS)(src, dst, 1, y, rows, cols, phase, colmap, mode);
-        else
+        else if (bilinear)
             RGBZ_CAT(dm_bilinear_row, IS)(src, dst, 0, y, rows, cols, phase, colmap, mode);
+        else if (out_f64)
+            RGBZ_CAT(dm_row, IS)(src, dst, 1, y, rows, cols, phase, colmap, mode);
+        else
+            RGBZ_CAT(dm_row, IS)(src, dst, 0, y, rows, cols, phase, colmap, mode);
     }
 }

@@ -1,6 +1,6 @@
 /*
  * demosaic_bilinear.h -- the bilinear demosaic of one pixel at a border, shared by
- * demosaic.c (rgbz_demosaic_bilinear) and colour_isp.c (rgbz_ci_render).
+ * demosaic.c (rgbz_demosaic) and colour_isp.c (rgbz_ci_render).
  *
  * The reference, colour-demosaicing's demosaicing_CFA_Bayer_bilinear, masks each colour's
  * plane first and then convolves it with scipy.ndimage's border rule: with "reflect" a

@@ -90,10 +90,10 @@ typedef enum rgbz_demosaic_mode {
     RGBZ_DM_PERIOD = 1,   /* shift by whole 2x2 periods: a padded pixel keeps its colour */
 } rgbz_demosaic_mode;
 
-/* demosaic methods of the fused colour ISP (colour_isp.h) */
+/* demosaic methods (rgbz_demosaic, and the fused colour ISP of colour_isp.h) */
 typedef enum rgbz_demosaic_method {
-    RGBZ_DM_MALVAR = 0,    /* Malvar-He-Cutler 2004 (rgbz_demosaic_malvar) */
-    RGBZ_DM_BILINEAR = 1,  /* bilinear (rgbz_demosaic_bilinear) */
+    RGBZ_DM_MALVAR = 0,    /* Malvar-He-Cutler 2004 */
+    RGBZ_DM_BILINEAR = 1,  /* bilinear */
 } rgbz_demosaic_method;
 
 /* operation counters (Table 1 categories plus the rest); RGBZ_NOPS counts them */
@@ -206,24 +206,14 @@ RGBZ_PRECISIONS(RGBZ_DECLARE_RECONSTRUCT_)
 #undef RGBZ_DECLARE_RECONSTRUCT_
 
 /*
- * Malvar-He-Cutler 2004 demosaic of a Bayer CFA (demosaic.c).
+ * Demosaic of a Bayer CFA (demosaic.c): method an rgbz_demosaic_method, Malvar-He-Cutler
+ * 2004 or bilinear (colour-demosaicing's demosaicing_CFA_Bayer_bilinear bit for bit).
  *   src rows x cols (in_type), dst rows x cols x 3 (out_type RGBZ_T_F32 or RGBZ_T_F64),
  *   phase: the 2x2 quad colours in raster order (R=0, G=1, B=2),
  *   mode: an rgbz_demosaic_mode.
  */
-int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
-                         ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                         int mode, int workers);
-
-/* The smallest and largest value of n floats (type RGBZ_T_F32 or RGBZ_T_F64); not both
-   finite if a value is NaN or infinite (scan.c: the argument checks' one pass). */
-int rgbz_float_range(int type, const void *data, ptrdiff_t n, double *lo, double *hi);
-
-/* Bilinear demosaic of a Bayer CFA (demosaic.c): colour-demosaicing's
-   demosaicing_CFA_Bayer_bilinear bit for bit; arguments as rgbz_demosaic_malvar. */
-int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
-                           ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase,
-                           int mode, int workers);
+int rgbz_demosaic(int method, int in_type, int out_type, const void *src, void *dst,
+                  ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase, int mode, int workers);
 
 /* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */

@@ -13,13 +13,12 @@ import importlib
 import os
 import statistics
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from tof_unguided_paired import HERE  # noqa: E402
+from tof_unguided_paired import HERE, alternate  # noqa: E402
 
 
 def scene(pkg):
@@ -41,13 +40,7 @@ def main(other_dir, rounds=3, workers=2, optics=False):
             sc, "mask1", seed=1, optics=sim.Optics() if optics else None, workers=workers))
     a, b = runs["this"](), runs["other"]()
     same = np.array_equal(a.data, b.data) and np.array_equal(a.tof.taps, b.tof.taps)
-    t = {"this": [], "other": []}
-    for i in range(rounds):
-        for name in (("this", "other") if i % 2 else ("other", "this")):
-            s = time.perf_counter()
-            runs[name]()
-            t[name].append(time.perf_counter() - s)
-    ratio = statistics.median(o / n for n, o in zip(t["this"], t["other"]))
+    t, ratio = alternate(runs, rounds)
     label = "Optics()" if optics else "None"
     print(f"simulate(art 12 MP, 'mask1', optics={label}, workers={workers}): "
           f"{statistics.median(t['this']):.2f} s against {statistics.median(t['other']):.2f} s, "

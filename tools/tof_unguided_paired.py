@@ -52,6 +52,18 @@ def make(commit, so, dest):
     print(f"{out}: {commit} with {so}")
 
 
+def alternate(runs, rounds):
+    """({"this": [s], "other": [s]}, the median of other / this) of the two callables in
+    `runs`, alternated call by call, the order swapped every round."""
+    t = {"this": [], "other": []}
+    for i in range(rounds):
+        for name in (("this", "other") if i % 2 else ("other", "this")):
+            s = time.perf_counter()
+            runs[name]()
+            t[name].append(time.perf_counter() - s)
+    return t, statistics.median(o / n for n, o in zip(t["this"], t["other"]))
+
+
 def frame(pkg, with_guide=False):
     """The 12 MP Mask1 frame of tools/tof_guided_speed.py, made by the package `pkg` (its
     taps, or the taps and the guide ``ColourISP().run(frame)``)."""
@@ -89,13 +101,7 @@ def main(other_dir, rounds=7, workers=2, guided=False):
         a, b = runs["this"](), runs["other"]()
         same = all(np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True)
                    for f in FIELDS)
-        t = {"this": [], "other": []}
-        for i in range(rounds):
-            for name in (("this", "other") if i % 2 else ("other", "this")):
-                s = time.perf_counter()
-                runs[name]()
-                t[name].append(time.perf_counter() - s)
-        ratio = statistics.median(o / n for n, o in zip(t["this"], t["other"]))
+        t, ratio = alternate(runs, rounds)
         print(f"| `{label}` | {statistics.median(t['this']) * 1e3:.0f} | "
               f"{statistics.median(t['other']) * 1e3:.0f} | {ratio:.3f}x | {same} |", flush=True)
     print(f"load average {os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")

@@ -110,16 +110,24 @@ def libm_exp_vectorised(bint single=False):
     return bool(rgbz_exp_libm_vectorised(single))
 
 
-def demosaic_malvar(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst, const int32_t[::1] phase,
-                    int mode, int workers):
-    """Malvar-He-Cutler 2004 demosaic: Bayer CFA (rows, cols) -> RGB (rows, cols, 3)."""
+def demosaic_kernel(int method, const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst,
+                    const int32_t[::1] phase, int mode, int workers):
+    """Demosaic (csrc/demosaic.c), method a code of DEMOSAIC_KERNELS (Malvar 2004, or bilinear:
+    colour-demosaicing's filters and scipy's order of the taps, bit for bit): Bayer CFA
+    (rows, cols) -> RGB (rows, cols, 3)."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int out_type = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
     with nogil:
-        status = rgbz_demosaic_malvar(in_type, out_type, &src[0, 0], &dst[0, 0, 0],
-                                      src.shape[0], src.shape[1], &phase[0], mode, workers)
+        status = rgbz_demosaic(method, in_type, out_type, &src[0, 0], &dst[0, 0, 0],
+                               src.shape[0], src.shape[1], &phase[0], mode, workers)
     _raise_for(status)
+
+
+def demosaic_malvar(src, dst, phase, int mode, int workers):
+    """Malvar-He-Cutler 2004 demosaic (demosaic_kernel's Malvar; the asv suite of older
+    commits calls it by this name)."""
+    demosaic_kernel(RGBZ_DM_MALVAR, src, dst, phase, mode, workers)
 
 
 def float_range(a):
@@ -140,19 +148,6 @@ def float_range(a):
             status = rgbz_float_range(RGBZ_T_F64, &d[0], d.shape[0], &lo, &hi)
     _raise_for(status)
     return lo, hi
-
-
-def demosaic_bilinear(const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst,
-                      const int32_t[::1] phase, int mode, int workers):
-    """Bilinear demosaic (colour-demosaicing's filters and scipy's order of the taps, bit for
-    bit): Bayer CFA (rows, cols) -> RGB (rows, cols, 3)."""
-    cdef int status
-    cdef int in_type = _type_code(<frame_t *> NULL)
-    cdef int out_type = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64
-    with nogil:
-        status = rgbz_demosaic_bilinear(in_type, out_type, &src[0, 0], &dst[0, 0, 0],
-                                        src.shape[0], src.shape[1], &phase[0], mode, workers)
-    _raise_for(status)
 
 
 def tof_unwrap(const double[:, ::1] phase, const double[::1] freqs, const double[::1] weights,

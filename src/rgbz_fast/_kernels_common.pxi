@@ -118,13 +118,10 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_exp_libm_vectorised(int single)
     int rgbz_exp_port_f32(const float *x, float *out, Py_ssize_t n)
     int rgbz_exp_port_f64(const double *x, double *out, Py_ssize_t n)
-    int rgbz_demosaic_malvar(int in_type, int out_type, const void *src, void *dst,
-                             Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
-                             int mode, int workers)
     int rgbz_float_range(int type, const void *data, Py_ssize_t n, double *lo, double *hi)
-    int rgbz_demosaic_bilinear(int in_type, int out_type, const void *src, void *dst,
-                               Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase,
-                               int mode, int workers)
+    int rgbz_demosaic(int method, int in_type, int out_type, const void *src, void *dst,
+                      Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase, int mode,
+                      int workers)
     int rgbz_tof_demodulate(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                             double *phase, double *amp, double *offset, int workers)
     int rgbz_tof_unwrap(const double *phase, Py_ssize_t F, Py_ssize_t N, const double *freqs,

@@ -46,8 +46,6 @@ DEMOSAIC_METHODS = ("malvar2004", "menon2007", "bilinear")
 #: {name: code} from the C enum rgbz_demosaic_mode (csrc/rgbz.h)
 DEMOSAIC_MODES = dict(_kernels.DEMOSAIC_MODES)
 
-#: the methods with a C kernel: {name: kernel}
-_KERNELS = {"malvar2004": _kernels.demosaic_malvar, "bilinear": _kernels.demosaic_bilinear}
 
 # margin added around the CFA for Menon 2007 (colour-demosaicing) in "period" mode: more
 # than the support of Menon 2007 (5-tap directional filters, 3x3 decision window,
@@ -161,13 +159,13 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
                              + (", pass dtype=float64 or rescale the CFA"
                                 if out_dtype == np.float32 else ", rescale the CFA"))
 
-    if method in _KERNELS:
+    if method in _kernels.DEMOSAIC_KERNELS:
         src = a if a.dtype in FRAME_DTYPES else a.astype(np.float64)
         src = np.ascontiguousarray(src)
         out = np.empty(a.shape + (3,), out_dtype)
         codes = np.array([CHANNELS.index(c) for c in ph], np.int32)
-        _KERNELS[method](src, out, codes, DEMOSAIC_MODES[mode],
-                         kernel_threads(nthreads, src.size))
+        _kernels.demosaic_kernel(_kernels.DEMOSAIC_KERNELS[method], src, out, codes,
+                                 DEMOSAIC_MODES[mode], kernel_threads(nthreads, src.size))
         return out
 
     fn = _colour_demosaicing().demosaicing_CFA_Bayer_Menon2007
