@@ -65,9 +65,9 @@ typedef struct {
 } filter_args;
 
 /* w[c] for c in [c0, c1) from chi[c] (see the top), the neighbour's usability and distance:
-   exp() by the vector port, arg[] its scratch. glibc's exp(-x) is 1.0 for 0 < x < 2^-54
-   (1.0 + -x rounds to 1), where the port does not cover it: those cells take exp() itself
-   (tiny counts them; chi - 2F that close to 0 above is rare). */
+   exp() by the vector port, arg[] its scratch. The port does not cover 0 < x < 2^-54: those
+   cells take exp() itself afterwards (tiny counts them; chi - 2F that close above 0 is
+   rare). */
 #ifdef RGBZ_HAVE_EXP_VEC
 static inline __attribute__((always_inline)) void filter_weights_vec(
     const filter_args *p, ptrdiff_t b, ptrdiff_t c0, ptrdiff_t c1, ptrdiff_t row_n,
@@ -79,8 +79,8 @@ static inline __attribute__((always_inline)) void filter_weights_vec(
     ptrdiff_t tiny = 0;
     for (ptrdiff_t c = c0; c < c1; c++) {
         const double x = k * (chi[c] - bias);
-        const int in = x > 0.0 && x < RGBZ_TOF_FILTER_CUT;
-        tiny += in && x < 0x1p-54;
+        const int in = x >= 0x1p-54 && x < RGBZ_TOF_FILTER_CUT;   /* the port covers -x */
+        tiny += x > 0.0 && x < 0x1p-54;
         arg[c] = in ? -x : 0.0;
     }
     rgbz_exp_glibc_row(arg + c0, c1 - c0);
@@ -94,7 +94,11 @@ static inline __attribute__((always_inline)) void filter_weights_vec(
     if (tiny)
         for (ptrdiff_t c = c0; c < c1; c++) {
             const double x = k * (chi[c] - bias);
-            if (x > 0.0 && x < 0x1p-54 && w[c] != 0.0) w[c] = exp(-x);
+            if (x > 0.0 && x < 0x1p-54) {
+                const int64_t dc = cpx[c + b] - cpx[c];
+                const int ok = (dc >= -rad) & (dc <= rad) & (use[c] != 0);
+                w[c] = ok ? exp(-x) : 0.0;
+            }
         }
 }
 #endif

@@ -120,6 +120,22 @@ def test_tap_variance_kernel_equals_the_numpy_reference(changes):
 
 
 # --------------------------------------------------------------------------- bilateral
+@pytest.mark.parametrize("h", [8.0, 1.0, 0.05])
+def test_bilateral_weight_just_above_the_bias(h):
+    """chi one ulp above 2F: x = (chi - 2F) / (2 h^2) falls below 2^-54 for h = 8, where the
+    vector exponential does not reach and exp() itself gives the weight (1.0); the weights
+    and means are the NumPy reference's on either side of that bound."""
+    d = 1.4142135623730951                          # d * d = 2 + 2^-51 in doubles
+    assert d * d - 2.0 == 2.0 ** -51
+    i, q, v = np.array([[0.0, d]]), np.zeros((1, 2)), np.full((1, 2), 0.5)
+    sites = (np.array([0, 0]), np.array([0, 1]))
+    got = denoise_phasors_bilateral(i, q, v, sites, range_scale=h, passes=1, window=3)
+    want = ref.denoise_phasors_bilateral(i, q, v, sites, range_scale=h, passes=1, window=3)
+    np.testing.assert_array_equal(got[3], [2.0, 2.0])             # both weights exactly 1
+    for a, b in zip(got, want):
+        np.testing.assert_allclose(a, b, **TOL)
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2", "rows", "ZRGG/BGBZ"])
 @pytest.mark.parametrize("window,passes,scale", [(5, 1, 2.0), (9, 2, 2.0), (9, 2, 0.7),
                                                  (3, 2, 5.0)])
