@@ -1,8 +1,9 @@
-"""The whole chain on one frame: sensor simulation -> reconstruction -> demosaic (+ ToF)."""
+"""The whole chain on one frame: sensor simulation -> reconstruction -> demosaic (+ ToF); the
+colour ISP by demosaic and colour matrix."""
 
 import numpy as np
 
-from .common import astronaut, need, rz
+from .common import BIG_SHAPE, KODAK_SHAPE, astronaut, need, rz, skip_if_slow
 
 
 class ChainSuite:
@@ -39,3 +40,29 @@ class ChainSuite:
 
     def peakmem_chain(self, pattern, method):
         self._run(pattern, method)
+
+
+class ColourISPSuite:
+    """``ColourISP().run`` on a Mask1 frame (11 bits): the fused C passes with each demosaic
+    that has a C kernel (Malvar 2004, bilinear: the stages and colour-demosaicing before),
+    with the identity or a colour matrix (a raw frame's recorded one; float32 ``fmaf``)."""
+    params = ([KODAK_SHAPE, BIG_SHAPE], ["malvar2004", "bilinear"], [False, True])
+    param_names = ["shape", "demosaic", "matrix"]
+    timeout = 300
+
+    def setup(self, shape, demosaic, matrix):
+        skip_if_slow(shape)
+        try:
+            from rgbz_fast.isp import ColourISP
+        except ImportError:
+            raise NotImplementedError("no ColourISP in this commit") from None
+        m = ((1.6, -0.4, -0.2), (-0.3, 1.5, -0.2), (0.0, -0.5, 1.5))
+        self.chain = ColourISP(demosaicing={"method": demosaic},
+                               colour_correction={"matrix": m if matrix else None})
+        self.frame = rz.mosaic(astronaut(shape), "mask1", 11)
+
+    def time_colour_isp(self, shape, demosaic, matrix):
+        self.chain.run(self.frame)
+
+    def peakmem_colour_isp(self, shape, demosaic, matrix):
+        self.chain.run(self.frame)

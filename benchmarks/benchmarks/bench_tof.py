@@ -102,7 +102,7 @@ class ToFNumPySuite:
 class ToFISPSuite:
     """The whole ToF ISP (``tof_depth``) on a Mask1 wall with a depth step, by denoise:
     the edge-aware default (two passes of the C bilateral kernel, window 9), the paper's
-    box mean (NumPy, window 5) and none (the fused kernel). Frames: 512x768 (Kodak) and
+    box mean (C since 2026-11-26, NumPy before; window 5) and none (the fused kernel). Frames: 512x768 (Kodak) and
     4000x3000 (12 MP, 3 million Z measurements)."""
     params = ([(512, 768), (3000, 4000)], ["bilateral", "box", "none"])
     param_names = ["shape", "denoise"]
