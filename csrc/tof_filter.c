@@ -285,14 +285,14 @@ int rgbz_tof_box(const double *const *in, double *const *out, ptrdiff_t P, ptrdi
 #pragma omp parallel num_threads(workers > 0 ? workers : omp_get_max_threads())
 #endif
     {
-        double *buf = malloc((size_t)(3 * C) * sizeof(double));
+        double *buf = malloc((size_t)(2 * C) * sizeof(double));
         if (!buf) {
 #ifdef _OPENMP
 #pragma omp atomic write
 #endif
             status = RGBZ_ENOMEM;
         }
-        double *tmp = buf, *inv = buf + C, *ones = buf + 2 * C;
+        double *tmp = buf, *inv = buf + C;
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
@@ -301,16 +301,15 @@ int rgbz_tof_box(const double *const *in, double *const *out, ptrdiff_t P, ptrdi
             /* the count: the sums of the weights (of ones), then its reciprocal */
             if (weight) {
                 box_rows(weight, NULL, R, C, row_px, row_offs, n_row_offs, radius, r, tmp);
-            } else {
-                for (ptrdiff_t c = 0; c < C; c++) ones[c] = 0.0;
+            } else {                       /* the row sums of ones: the same in every column */
+                double ones = 0.0;
                 for (ptrdiff_t k = 0; k < n_row_offs; k++) {
                     const ptrdiff_t rr = r + (ptrdiff_t)row_offs[k];
                     if (rr < 0 || rr >= R) continue;
                     const int64_t d = row_px[rr] - row_px[r];
-                    const double ok = d >= -radius && d <= radius ? 1.0 : 0.0;
-                    for (ptrdiff_t c = 0; c < C; c++) ones[c] += ok;
+                    ones += d >= -radius && d <= radius ? 1.0 : 0.0;
                 }
-                for (ptrdiff_t c = 0; c < C; c++) tmp[c] = ones[c];
+                for (ptrdiff_t c = 0; c < C; c++) tmp[c] = ones;
             }
             double *cnt = count + r * C;
             box_cols(tmp, C, col_px, col_offs, n_col_offs, radius, NULL, cnt);

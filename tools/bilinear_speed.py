@@ -14,7 +14,6 @@ differs in the demosaic and the fusion only.
 import os
 import statistics
 import sys
-import time
 
 import numpy as np
 
@@ -23,6 +22,7 @@ import rgbz_fast.isp._chain as chain_mod
 from rgbz_fast import isp
 from rgbz_fast._devtools.bench import make_rgb
 from rgbz_fast.isp._demosaic import _colour_demosaicing
+from tof_unguided_paired import alternate
 
 
 def old_demosaic(cfa, phase, method="malvar2004", *, mode="reflect", dtype=None, workers=None):
@@ -44,19 +44,6 @@ def old_isp(chain, frame, workers):
         chain_mod.demosaic = saved
 
 
-def paired(cases, rounds):
-    """{name: [seconds]} of the callables in `cases`, alternated call by call."""
-    for f in cases.values():
-        f()
-    times = {k: [] for k in cases}
-    for _ in range(rounds):
-        for k, f in cases.items():
-            t = time.perf_counter()
-            f()
-            times[k].append(time.perf_counter() - t)
-    return times
-
-
 def main(rounds=7, workers=2):
     frame = rz.mosaic(make_rgb((3000, 4000)), "mask1", 11)
     chain = isp.ColourISP(demosaicing={"method": "bilinear"})
@@ -73,10 +60,9 @@ def main(rounds=7, workers=2):
     print(f"| call ({workers} threads, 12 MP) | C, ms | before, ms | speed ratio | same output |")
     print("|---|---|---|---|---|")
     for name, (new, old, same) in pairs.items():
-        t = paired({"new": new, "old": old}, rounds)
-        ratio = statistics.median(o / n for n, o in zip(t["new"], t["old"]))
-        print(f"| `{name}` | {statistics.median(t['new']) * 1e3:.1f} | "
-              f"{statistics.median(t['old']) * 1e3:.1f} | {ratio:.2f}x | {same} |")
+        t, ratio = alternate({"this": new, "other": old}, rounds)
+        print(f"| `{name}` | {statistics.median(t['this']) * 1e3:.1f} | "
+              f"{statistics.median(t['other']) * 1e3:.1f} | {ratio:.2f}x | {same} |")
     print(f"load average {os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
 
 

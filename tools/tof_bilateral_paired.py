@@ -13,7 +13,6 @@ whether every output is the same bit for bit; then ``ToFISP().run(tof)`` the sam
 import os
 import statistics
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +20,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import tof_guided_speed  # noqa: E402
 from learned_paired import load_other  # noqa: E402
+from tof_unguided_paired import alternate  # noqa: E402
 
 import rgbz_fast.tof._filters as filters  # noqa: E402
 from rgbz_fast.tof import ToFISP  # noqa: E402
@@ -41,14 +41,8 @@ def paired(this, other, fn, rounds):
     """(this's seconds, other's seconds, same outputs) of fn alternated between the two."""
     a, b = with_kernels(this, fn), with_kernels(other, fn)
     same = all(np.array_equal(x, y, equal_nan=True) for x, y in zip(_arrays(a), _arrays(b)))
-    t = {"this": [], "other": []}
-    for i in range(rounds):
-        order = (("this", this), ("other", other)) if i % 2 else (("other", other),
-                                                                 ("this", this))
-        for name, k in order:
-            s = time.perf_counter()
-            with_kernels(k, fn)
-            t[name].append(time.perf_counter() - s)
+    t, _ = alternate({"this": lambda: with_kernels(this, fn),
+                      "other": lambda: with_kernels(other, fn)}, rounds)
     return t["this"], t["other"], same
 
 

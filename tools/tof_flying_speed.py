@@ -53,16 +53,24 @@ def paired(run, rounds, module=V, name="flying_pixels", c_code=C_KERNEL, numpy=n
     return np.median(t["C"]), np.median(t["NumPy"]), out
 
 
+def denoise_rows(tof, rounds, workers, fields, label, **stage):
+    """One line per denoise: ``ToFISP(denoise=...).run(tof)`` with the C and the NumPy
+    ``stage`` (paired's module, name, c_code, numpy) and whether ``fields`` are equal."""
+    for denoise in ("none", "box", "bilateral"):
+        isp = ToFISP(denoise=denoise)
+        c, n, out = paired(lambda: isp.run(tof, workers=workers), rounds, **stage)
+        same = all(np.array_equal(np.asarray(getattr(out["C"], k)).view(np.uint8),
+                                  np.asarray(getattr(out["NumPy"], k)).view(np.uint8))
+                   for k in fields)
+        print(f"ToFISP(denoise={denoise!r}).run(tof): C {c:.3f} s, NumPy {n:.3f} s, "
+              f"{n / c:.3f}x; {label} equal: {same}", flush=True)
+
+
 def main(rounds=7, workers=2):
     frame, _ = frame_12mp()
     tof = frame.tof
     print(f"{tof.n_sites} measurements, {workers} thread(s), {rounds} rounds")
-    for denoise in ("none", "box", "bilateral"):
-        isp = ToFISP(denoise=denoise)
-        c, n, out = paired(lambda: isp.run(tof, workers=workers), rounds)
-        same = np.array_equal(out["C"].flags, out["NumPy"].flags)
-        print(f"ToFISP(denoise={denoise!r}).run(tof): C {c:.3f} s, NumPy {n:.3f} s, "
-              f"{n / c:.3f}x; flags equal: {same}", flush=True)
+    denoise_rows(tof, rounds, workers, ("flags",), "flags")
     res = ToFISP().run(tof, workers=workers)
     grid = SiteGrid(tof.sites, tof.block)
     usable = (res.flags & 3) == 0

@@ -12,18 +12,15 @@ of the wall times and their ratio (> 1: C is faster). Every field of the results
 import sys
 from pathlib import Path
 
-import numpy as np
-
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tests"))
 sys.path.insert(0, str(HERE))
 
 from _reference import tof as ref  # noqa: E402
-from tof_flying_speed import paired  # noqa: E402
+from tof_flying_speed import denoise_rows  # noqa: E402
 from tof_guided_speed import frame_12mp  # noqa: E402
 
 import rgbz_fast.tof._chain as chain  # noqa: E402
-from rgbz_fast.tof import ToFISP  # noqa: E402
 
 C_STAGE = chain.validity
 
@@ -38,15 +35,9 @@ def main(rounds=7, workers=2):
     frame, _ = frame_12mp()
     tof = frame.tof
     print(f"{tof.n_sites} measurements, {workers} thread(s), {rounds} rounds")
-    for denoise in ("none", "box", "bilateral"):
-        isp = ToFISP(denoise=denoise)
-        c, n, out = paired(lambda: isp.run(tof, workers=workers), rounds, chain, "validity",
-                           C_STAGE, numpy_stage)
-        same = all(np.array_equal(np.asarray(getattr(out["C"], k)).view(np.uint8),
-                                  np.asarray(getattr(out["NumPy"], k)).view(np.uint8))
-                   for k in ("snr", "sigma", "reflectance", "flags", "depth", "valid"))
-        print(f"ToFISP(denoise={denoise!r}).run(tof): C {c:.3f} s, NumPy {n:.3f} s, "
-              f"{n / c:.3f}x; every field equal: {same}", flush=True)
+    denoise_rows(tof, rounds, workers,
+                 ("snr", "sigma", "reflectance", "flags", "depth", "valid"), "every field",
+                 module=chain, name="validity", c_code=C_STAGE, numpy=numpy_stage)
 
 
 if __name__ == "__main__":
