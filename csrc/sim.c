@@ -807,6 +807,42 @@ static void sim_tof_light(const double *depth, const uint8_t *depth_valid, ptrdi
     }
 }
 
+/* NumPy's remainder of a float64 by b (np.mod): fmod, moved into the divisor's sign, a
+   zero given the divisor's sign */
+static inline double sim_np_mod(double a, double b)
+{
+    double m = fmod(a, b);
+    if (m != 0.0) {
+        if ((b < 0.0) != (m < 0.0)) m += b;
+    } else {
+        m = copysign(0.0, b);
+    }
+    return m;
+}
+
+int rgbz_sim_tof_field(const double *d, const double *s, ptrdiff_t n, double four_pi_f,
+                       double speed_of_light, double two_pi, int order, double *re, double *im,
+                       int workers)
+{
+    if (!d || !s || !re || !im || n < 0 || order < 1) return RGBZ_EINVAL;
+    const int nth = rgbz_threads(workers);
+    const double h = (double)order;
+    (void)nth;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 16384) num_threads(nth)
+#endif
+    for (ptrdiff_t i = 0; i < n; i++) {
+        double ph = sim_np_mod(four_pi_f * d[i] / speed_of_light, two_pi);
+        if (order != 1) ph = h * ph;
+        double sn, cs;
+        sim_sincos(ph, &sn, &cs);
+        /* (s + 0i)(cos + i sin), as NumPy multiplies a real array by a complex one */
+        re[i] = s[i] * cs - 0.0 * sn;
+        im[i] = s[i] * sn + 0.0 * cs;
+    }
+    return RGBZ_OK;
+}
+
 int rgbz_sim_tof(const double *depth, const uint8_t *depth_valid, ptrdiff_t rows,
                  ptrdiff_t cols, int ir_type, const void *ir, ptrdiff_t ir_rs, ptrdiff_t ir_cs,
                  int ir_estimate, const int64_t *site_r, const int64_t *site_c, ptrdiff_t n,

@@ -82,6 +82,13 @@ int rgbz_sim_blocks(uint32_t c0, uint32_t c1, uint32_t c2, uint32_t c3, const ui
    variates of mean lam[i] (kind 1: counters (i, c1, c2, j)) (tests) */
 int rgbz_sim_variates(int kind, const double *lam, uint32_t c1, uint32_t c2,
                       const uint32_t key[4], ptrdiff_t n, double *out, int workers);
+/* the phasor field of one frequency and correlation order h over n values, re + i im =
+   s e^{i h phi} with phi = (4 pi f d / c) mod 2 pi: the NumPy code of ToFSensor._returns
+   (s[None] * np.exp(1j * (h * phase))) bit for bit, signed zeros included; four_pi_f = 4 pi f
+   as NumPy forms it. The simulation's optics path blurs these planes. */
+int rgbz_sim_tof_field(const double *d, const double *s, ptrdiff_t n, double four_pi_f,
+                       double speed_of_light, double two_pi, int order, double *re, double *im,
+                       int workers);
 /* the log and sine/cosine of 2 pi u of the Box-Muller transform (tests) */
 int rgbz_sim_math(int which, const double *x, ptrdiff_t n, double *out);
 

@@ -761,6 +761,9 @@ cdef extern from "sim.h" nogil:
     int rgbz_sim_variates(int kind, const double *lam, uint32_t c1, uint32_t c2,
                           const uint32_t *key, Py_ssize_t n, double *out, int workers)
     int rgbz_sim_math(int which, const double *x, Py_ssize_t n, double *out)
+    int rgbz_sim_tof_field(const double *d, const double *s, Py_ssize_t n, double four_pi_f,
+                           double speed_of_light, double two_pi, int order, double *re,
+                           double *im, int workers)
     int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, Py_ssize_t rows, Py_ssize_t cols,
                          int block, int64_t *site_r, int64_t *site_c, Py_ssize_t *count)
     int rgbz_sim_rate_hist(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
@@ -849,6 +852,23 @@ def sim_math(int which, const double[::1] x, double[::1] out):
         return
     with nogil:
         status = rgbz_sim_math(which, &x[0], x.shape[0], &out[0])
+    _raise_for(status)
+
+
+def sim_tof_field(const double[::1] d, const double[::1] s, double four_pi_f,
+                  double speed_of_light, double two_pi, int order, double[::1] re,
+                  double[::1] im, int workers):
+    """re + i im = s e^{i order phi}, phi = (four_pi_f d / speed_of_light) mod two_pi, as
+    ToFSensor._returns computes it in NumPy (the same bits)."""
+    cdef int status
+    cdef Py_ssize_t n = d.shape[0]
+    if s.shape[0] != n or re.shape[0] != n or im.shape[0] != n:
+        raise ValueError("sim_tof_field: inconsistent array shapes")
+    if n == 0:
+        return
+    with nogil:
+        status = rgbz_sim_tof_field(&d[0], &s[0], n, four_pi_f, speed_of_light, two_pi, order,
+                                    &re[0], &im[0], workers)
     _raise_for(status)
 
 

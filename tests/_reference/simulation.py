@@ -90,3 +90,26 @@ def tof_taps(depth, valid, ir, sensor, pitch, rows, cols, block):
                 if sensor.ambient_suppression else None)
     taps, sat = chain(mean, dark, sensor, suppress)
     return taps, d.mean(axis=1), cell_valid.all(axis=1), sat.any(axis=(0, 1))
+
+
+def tof_light_through(scene, sensor, pitch, cr, cc, optics, workers):
+    """The active phasors {order: (F, n)} and S + B (n,) of every Z measurement through
+    ``optics``, as rgbz-fast computed them before the C field pass: every frequency's complex
+    field of the whole frame from ``ToFSensor._returns`` (NumPy), its real and imaginary
+    parts blurred, then summed over each measurement's cells."""
+    from rgbz_fast.simulation._optics import _convolve
+
+    d = scene.depth
+    surface = d > 0
+    d_safe = np.where(surface, d, 1.0)
+    s, b = sensor._cell_electrons(d_safe, scene.ir_map(), pitch)
+    s = np.where(surface, s, 0.0)
+    fields, active = sensor._returns(d_safe, s)
+    kernel = optics.psf(sensor.wavelength_nm, pixel_pitch_um=pitch, f_number=sensor.f_number)
+
+    def blur_at_cells(plane, signed=False):
+        return _convolve(plane, kernel, signed=signed, workers=workers)[cr, cc].sum(axis=-1)
+
+    phasors = {h: np.stack([blur_at_cells(f.real, True) + 1j * blur_at_cells(f.imag, True)
+                            for f in field]) for h, field in fields.items()}
+    return phasors, blur_at_cells(active + b)

@@ -18,7 +18,7 @@ from _support import load_kodak
 import rgbz_fast as rz
 from rgbz_fast import _kernels
 from rgbz_fast.simulation import ColourSensor, Scene, ToFSensor, simulate, simulate_colour
-from rgbz_fast.simulation import _pixels, _simulate
+from rgbz_fast.simulation import _pixels, _simulate, _tof_light
 from rgbz_fast.simulation._noise import stream_keys
 
 KEY = np.array(_kernels.sim_key(np.array([12345], np.uint64), 0), np.uint32)
@@ -193,7 +193,7 @@ def test_non_ideal_taps_noise_free_match_numpys_chain():
                        ambient_suppression=0.9, ambient_irradiance=15.0, pixel_pitch_um=2.8)
     got = _simulate.simulate_tof(scene, "mask2", sensor, noise=False)
     rows, cols = got.sites
-    mean, suppress, *_ = _simulate._tof_mean(scene, sensor, 2.8, rows, cols, 2, None, 1)
+    mean, suppress, *_ = _tof_light._tof_mean(scene, sensor, 2.8, rows, cols, 2, None, 1)
     want, sat = ref.chain(mean, sensor._dark_electrons, sensor, suppress)
     np.testing.assert_array_equal(got.taps, want)
     np.testing.assert_array_equal(got.saturated, sat.any(axis=(0, 1)))

@@ -36,7 +36,7 @@ def test_calibration_recovers_known_offsets_and_harmonics():
                        harmonics=((3, 0.05, 0.4),), optical_power_w=0.2)
     ds = np.linspace(0.6, 2.6, 40)
     cal = calibrate(_sweep(sensor, ds, noise=False), ds)
-    from rgbz_fast.simulation._simulate import _pixel_delays
+    from rgbz_fast.simulation._tof_light import _pixel_delays
     tau = _pixel_delays(sensor, cal.offsets.shape[1]) * 1e-12
     f = np.array(sensor.frequencies)[:, None]
     want = np.angle(np.exp(1j * 2 * np.pi * f * tau[None]))

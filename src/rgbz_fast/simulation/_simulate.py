@@ -97,15 +97,16 @@ from .. import _kernels
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_flag, check_number, check_seed, check_workers
+from .._validate import check_flag, check_number, check_seed
 from . import _pixels
 from ._loaders import load_scene
-from ._noise import (RNG_VERSION, STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL, STREAM_TOF_DELAY,
+from ._noise import (RNG_VERSION, STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL,
                      STREAM_TOF_FPN, STREAM_TOF_TEMPORAL, check_rng_version, expose,
                      noise_fields, stream_keys)
-from ._optics import Optics, _convolve, apply_optics
-from ._scene import Scene, estimate_ir_reflectance
+from ._optics import Optics, apply_optics
+from ._scene import Scene
 from ._spectral import _spectral_integrate, _spectral_weights
+from ._tof_light import _tof_mean
 
 __all__ = ["UnambiguousRangeWarning", "simulate", "simulate_colour", "simulate_tof"]
 
@@ -312,57 +313,6 @@ def _z_sites(pattern, shape, block):
     return _pixels.z_sites(pattern, shape, block)
 
 
-def _tof_light_at_cells(scene, sensor, pitch, cr, cc):
-    """Active phasors {order: (F, n)} and S + B (n,) of every Z measurement, summed over
-    its cells (no optics: each cell sees the surface at its own pixel)."""
-    d = scene.depth[cr, cc]
-    if scene.ir_reflectance is not None:
-        rho = scene.ir_reflectance[cr, cc]
-    else:
-        rho = estimate_ir_reflectance(scene.image[cr, cc], scene.wavelengths)
-    # a depth of 0 is only allowed where unknown: no surface, no laser return there
-    surface = d > 0
-    d_safe = np.where(surface, d, 1.0)
-    s, b = sensor._cell_electrons(d_safe, rho, pitch)
-    s = np.where(surface, s, 0.0)
-    cells, active = sensor._returns(d_safe, s)
-    return {h: p.sum(axis=-1) for h, p in cells.items()}, (active + b).sum(axis=-1)
-
-
-def _tof_light_through(scene, sensor, pitch, cr, cc, optics, workers):
-    """As :func:`_tof_light_at_cells`, the light of the whole frame first blurred through
-    ``optics`` at the laser wavelength and the ToF lens's f-number: a pixel near a depth
-    edge receives both surfaces' returns (lens-induced mixing)."""
-    d = scene.depth
-    rho = scene.ir_map()
-    surface = d > 0
-    d_safe = np.where(surface, d, 1.0)
-    s, b = sensor._cell_electrons(d_safe, rho, pitch)
-    s = np.where(surface, s, 0.0)
-    fields, active = sensor._returns(d_safe, s)
-    kernel = optics.psf(sensor.wavelength_nm, pixel_pitch_um=pitch, f_number=sensor.f_number)
-    nthreads = check_workers(workers)
-
-    def blur_at_cells(plane, signed=False):
-        return _convolve(plane, kernel, signed=signed, workers=nthreads)[cr, cc].sum(axis=-1)
-
-    phasors = {}
-    for h, field in fields.items():
-        phasors[h] = np.stack([blur_at_cells(f.real, True) + 1j * blur_at_cells(f.imag, True)
-                               for f in field])
-    return phasors, blur_at_cells(active + b)
-
-
-def _pixel_delays(sensor, n):
-    """Delay (ps) of every Z measurement: the global one plus the fixed per-pixel pattern
-    (drawn from ``fpn_seed`` on a stream of its own, so the PRNU/DSNU maps do not change)."""
-    delay = np.full(n, sensor.delay_ps)
-    if sensor.delay_fpn_ps:
-        rng = np.random.default_rng([sensor.fpn_seed, STREAM_TOF_DELAY])
-        delay += sensor.delay_fpn_ps * rng.standard_normal(n)
-    return delay
-
-
 def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch_um=None,
                  optics=None, rng_version=RNG_VERSION, workers=None, _stacklevel=2):
     """Simulate the i-ToF taps at the Z sites of a pattern (paper §5.1.2).
@@ -468,29 +418,6 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
             "ir_estimated": scene.ir_reflectance is None}   # NIR from the RGB: a leaking guide
     return ToFTaps(_Adopt(taps), np.asarray(sensor.frequencies), _Adopt((rows, cols)), block,
                    sensor.bit_depth, *map(_Adopt, (depth_true, valid, sat)), sensor, shape, meta)
-
-
-def _tof_mean(scene, sensor, pitch, rows, cols, block, optics, workers):
-    """The mean tap electrons (F, 4, n) of every model of the ToF pixels (the non-ideal
-    modulation, the optics), in NumPy; with the suppressed charge per site (or None), the
-    true depth, validity and beyond-range flag of every site and the largest valid depth."""
-    # cells of every measurement: (n_sites, block*block)
-    offs = [(dr, dc) for dr in range(block) for dc in range(block)]
-    cr = np.stack([rows + dr for dr, _ in offs], axis=1)
-    cc = np.stack([cols + dc for _, dc in offs], axis=1)
-    d = scene.depth[cr, cc]
-    cell_valid = scene.depth_valid[cr, cc]
-    if optics is None:
-        phasors, total = _tof_light_at_cells(scene, sensor, pitch, cr, cc)
-    else:
-        phasors, total = _tof_light_through(scene, sensor, pitch, cr, cc, optics, workers)
-    if sensor.delay_ps or sensor.delay_fpn_ps:
-        phasors = sensor._delayed(phasors, _pixel_delays(sensor, rows.size))
-    mean = sensor._taps_from(phasors, total)                                # (F, 4, n)
-    suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
-    beyond = np.any(cell_valid & (d >= sensor.unambiguous_range), axis=1)
-    dmax = float(d[cell_valid].max()) if beyond.any() else -np.inf
-    return mean, suppress, d.mean(axis=1), cell_valid.all(axis=1), beyond, dmax
 
 
 # --------------------------------------------------------------------------
