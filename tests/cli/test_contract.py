@@ -227,6 +227,8 @@ CLI_ROWS = [
       "argument --method: invalid choice: 'z_guided'", usage=True),
     C("cli.hardware-width", ("hardware", "--width", "0"),
       "argument --width: expected a positive integer", usage=True),
+    C("cli.hardware-workers", ("hardware", "--workers", "0"),
+      "argument --workers: expected a positive integer, got '0'", usage=True),
     C("cli.hardware-width-line-buffer", ("hardware", "--dataset", "{d}/ds", "--width", "20000"),
       "width: expected an integer >= 1 and <= 16384, got 20000"),
     C("cli.hardware-fixed-point-syntax", ("hardware", "--fixed-point", "exp_bits"),

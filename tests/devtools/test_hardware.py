@@ -75,6 +75,29 @@ def test_sweep_gives_a_front_and_a_plot(images, tmp_path):
     assert md.count("\n") == len(rows) + 1 and "refused" in md
 
 
+def test_threads_do_not_change_the_error_or_the_sweep(images):
+    """The frames (measure_error) and the configurations (run_sweep) run side by side on
+    threads: the same numbers, rows and front as one at a time, and one tick per
+    configuration, a refused one included."""
+    cases = H.prepare_cases(images, "mask2", "sg")
+    assert (H.measure_error(cases, "sg", FixedPointConfig(), workers=2)
+            == H.measure_error(cases, "sg", FixedPointConfig(), workers=1))
+    base = FixedPointConfig()
+    configs = [("default", base), ("exp_bits=6", base.replace(exp_bits=6)),
+               ("recip_bits=8", base.replace(recip_bits=8)),
+               ("too wide", base.replace(register_bits=20))]
+    runs = {}
+    for w in (1, 2):
+        ticks = []
+        runs[w] = H.run_sweep("sg", "mask2", images=images, configs=configs, workers=w,
+                              tick=lambda: ticks.append(1))
+        assert len(ticks) == len(configs)
+    assert runs[1] == runs[2]
+    assert [r["label"] for r in runs[2]] == [lab for lab, _ in configs]
+    with pytest.raises(ValueError, match="workers"):
+        H.measure_error(cases, "sg", base, workers=0)
+
+
 def test_sweep_configurations_cover_every_field():
     labels = [lab for lab, _ in H.sweep_configs(FixedPointConfig())]
     for field in H.SWEEP:

@@ -59,6 +59,9 @@ def add_parser(sub):
                                  "hardware_sweep.png into DIR (default: print only)")
     c.add_quiet(p, "no progress bar")
     c.add_limits(p)
+    c.add_workers(p, "threads: the frames of the error, and with --sweep its configurations, "
+                     "side by side (the fixed-point model is one stream per frame; the "
+                     "results do not depend on it)", "all cores")
     return p
 
 
@@ -76,7 +79,7 @@ def run(args):
     pattern = get_pattern(args.pattern)
     images = hw.load_images(args.dataset, args.limit, **c.limits(args))
     report = hw.hardware_report(args.method, pattern, width=args.width, images=images,
-                                config=config)
+                                config=config, workers=args.workers)
     text = hw.format_report(report) + "\n"
     files = {}
     if args.sweep:
@@ -86,7 +89,8 @@ def run(args):
         ticks = iter(progress(range(len(configs)), total=len(configs), desc="sweep",
                               quiet=args.quiet))
         rows = hw.run_sweep(args.method, pattern, width=args.width, images=images, base=config,
-                            configs=configs, tick=lambda: next(ticks, None))
+                            configs=configs, tick=lambda: next(ticks, None),
+                            workers=args.workers)
         report["sweep"] = rows
         text += "\n## Sweep\n\n" + hw.format_sweep(rows) + "\n"
         if out is not None:

@@ -17,12 +17,14 @@ No argparse here: the command line (``rgbz-fast hardware``) parses and calls.
 
 from __future__ import annotations
 
+import threading
 import time
 
 import numpy as np
 
 from .. import metrics
 from .._patterns import get_pattern
+from .._threads import check_workers
 from ..evaluation import EvalConfig
 from ..evaluation._run import image_frames
 from ..hardware import FixedPointConfig, hardware_cost
@@ -64,8 +66,21 @@ def prepare_cases(images, pattern, method, protocols=tuple(PROTOCOLS), params=No
     return cases
 
 
-def measure_error(cases, method, config, params=None):
-    """The fixed model against float64 on prepared cases, per protocol.
+def _in_order(fn, items, workers):
+    """[fn(item) for item in items], on up to ``workers`` threads (the fixed-point model is
+    one stream per frame, its C call releasing the GIL): the same list as one at a time."""
+    n = min(check_workers(workers), len(items))
+    if n <= 1:
+        return [fn(item) for item in items]
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(n) as ex:
+        return list(ex.map(fn, items))
+
+
+def measure_error(cases, method, config, params=None, workers=1):
+    """The fixed model against float64 on prepared cases, per protocol; the cases on
+    ``workers`` threads (None: every core; the result does not depend on it).
 
     Returns {protocol: {"images", "sites", "psnr_float", "psnr_fixed", "dpsnr_mean",
     "dpsnr_max_abs", "within_1lsb_pct", "max_abs_lsb", "hist"}}: PSNRs are means of
@@ -73,13 +88,17 @@ def measure_error(cases, method, config, params=None):
     fixed minus the float64 value, the histogram counts Z sites by fixed - float64.
     """
     params = ReconstructParams.build(params).replace(precision="fixed", fixed_point=config)
-    acc = {}
-    for proto, name, frame, ref, exact in cases:
+
+    def one(case):
+        proto, name, frame, ref, exact = case
         fixed = reconstruct(frame, method, params=params)
         z = frame.z_mask
         pf = metrics.cfa_psnr(ref, exact, z, bit_depth=frame.bit_depth, workers=1)
         px = metrics.cfa_psnr(ref, fixed, z, bit_depth=frame.bit_depth, workers=1)
-        d = fixed[z].astype(np.int64) - exact[z].astype(np.int64)
+        return proto, pf, px, fixed[z].astype(np.int64) - exact[z].astype(np.int64)
+
+    acc = {}
+    for proto, pf, px, d in _in_order(one, cases, workers):
         a = acc.setdefault(proto, {"pf": [], "px": [], "n": 0, "within": 0, "max": 0,
                                    "hist": np.zeros(len(HIST_BINS), np.int64)})
         a["pf"].append(pf)
@@ -117,8 +136,9 @@ def _float_opcounts(pattern, method):
 
 
 def hardware_report(method="sg", pattern="mask1", *, width=4000, images=None, params=None,
-                    config=None, protocols=tuple(PROTOCOLS), bit_depth=11):
-    """Cost, error and operation counts of one configuration: a dict (see the module doc)."""
+                    config=None, protocols=tuple(PROTOCOLS), bit_depth=11, workers=None):
+    """Cost, error and operation counts of one configuration: a dict (see the module doc);
+    the frames on ``workers`` threads (None: every core)."""
     params = ReconstructParams.build(params)
     pattern = get_pattern(pattern)
     config = FixedPointConfig.build(config if config is not None else params.fixed_point)
@@ -127,7 +147,7 @@ def hardware_report(method="sg", pattern="mask1", *, width=4000, images=None, pa
     t0 = time.perf_counter()
     images = load_images() if images is None else images
     cases = prepare_cases(images, pattern, method, protocols, params)
-    error = measure_error(cases, method, config, params)
+    error = measure_error(cases, method, config, params, workers)
     fl, t1 = _float_opcounts(pattern, method)
     return {"method": method, "pattern": pattern.name, "cost": cost.as_dict(),
             "error": error, "target": TARGET, "meets_target": meets_target(error),
@@ -203,22 +223,32 @@ def sweep_configs(base, method="sg"):
 
 
 def run_sweep(method="sg", pattern="mask1", *, width=4000, images=None, params=None,
-              base=None, protocols=tuple(PROTOCOLS), bit_depth=11, configs=None, tick=None):
-    """Quality against cost of :func:`sweep_configs`: rows of label, config, bits and error."""
+              base=None, protocols=tuple(PROTOCOLS), bit_depth=11, configs=None, tick=None,
+              workers=None):
+    """Quality against cost of :func:`sweep_configs`: rows of label, config, bits and error;
+    the configurations on ``workers`` threads (None: every core; the rows do not depend on
+    it), ``tick()`` after each."""
     params = ReconstructParams.build(params)
     base = FixedPointConfig.build(base if base is not None else params.fixed_point)
     images = load_images() if images is None else images
     cases = prepare_cases(images, pattern, method, protocols, params)
-    rows = []
-    for label, cfg in (configs or sweep_configs(base, method)):
+    lock = threading.Lock()
+
+    def row(item):
+        out = _row(*item)
+        if tick:
+            with lock:
+                tick()
+        return out
+
+    def _row(label, cfg):
         try:
             cost = hardware_cost(pattern, method, width=width, bit_depth=bit_depth,
                                  params=params, fixed_point=cfg)
         except ValueError as exc:          # a width no register of this plan can hold
-            rows.append({"label": label, "config": cfg.as_dict(), "refused": str(exc)})
-            continue
+            return {"label": label, "config": cfg.as_dict(), "refused": str(exc)}
         err = measure_error(cases, method, cfg, params)
-        rows.append({
+        return {
             "label": label, "config": cfg.as_dict(),
             "bits": {"tables": cost.table_bits, "datapath": cost.datapath_bits,
                      "line_buffers": cost.line_buffer_bits, "total": cost.total_bits},
@@ -226,9 +256,9 @@ def run_sweep(method="sg", pattern="mask1", *, width=4000, images=None, params=N
             "within_1lsb_pct": min(e["within_1lsb_pct"] for e in err.values()),
             "dpsnr_max_abs": max(abs(e["dpsnr_mean"]) for e in err.values()),
             "max_abs_lsb": max(e["max_abs_lsb"] for e in err.values()),
-            "meets_target": meets_target(err), "error": err})
-        if tick:
-            tick()
+            "meets_target": meets_target(err), "error": err}
+
+    rows = _in_order(row, list(configs or sweep_configs(base, method)), workers)
     front = pareto_front(rows)
     for r in rows:
         r["pareto"] = r.get("label") in front
