@@ -20,6 +20,7 @@ from .._sensors import ToFSensor
 from .._validate import as_list, check_bit_depth, check_path
 from ._errors import ParameterError, named
 from ._files import atomic_write, check_size, raise_it, read_file, read_image, read_limits
+from ._npz import npz_bytes
 from ._raw import read_raw
 from ._suffixes import FRAME_SUFFIXES
 
@@ -68,9 +69,7 @@ def save_frame(path, frame):
                              "sensor": dataclasses.asdict(tof.sensor),
                              "meta": _jsonable(tof.meta)}
             arrays["header"] = np.array(json.dumps(header, default=_json_default))
-        buf = io.BytesIO()
-        np.savez_compressed(buf, **arrays)
-        atomic_write(path, buf.getvalue())
+        atomic_write(path, npz_bytes(arrays))
     elif suffix in (".tif", ".tiff"):
         import tifffile
 

@@ -44,7 +44,6 @@ References
 
 from __future__ import annotations
 
-import io
 import json
 from dataclasses import dataclass, field
 
@@ -54,6 +53,7 @@ from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import as_list, check_image, check_int, check_path
 from ..io import atomic_write, read_npz
+from ..io._npz import npz_bytes
 from ._noise import tap_variance
 
 __all__ = ["ToFCalibration", "calibrate"]
@@ -213,9 +213,7 @@ class ToFCalibration:
                   "cols": self.sites[1], "header": np.array(json.dumps(header))}
         if self.dark is not None:
             arrays["dark"] = self.dark
-        buf = io.BytesIO()
-        np.savez_compressed(buf, **arrays)
-        atomic_write(path, buf.getvalue())
+        atomic_write(path, npz_bytes(arrays))
         return path
 
     @classmethod
