@@ -279,6 +279,10 @@ int rgbz_exp_libm_vectorised(int single);
 int rgbz_exp_port_f32(const float *x, float *out, ptrdiff_t n);
 int rgbz_exp_port_f64(const double *x, double *out, ptrdiff_t n);
 
+/* the smallest and largest value of n floats of type (RGBZ_T_F32 or RGBZ_T_F64) in one pass
+   (scan.c): a NaN makes the range not finite */
+int rgbz_float_range(int type, const void *data, ptrdiff_t n, double *lo, double *hi);
+
 /* build information */
 int rgbz_have_openmp(void);
 int rgbz_max_threads(void);

@@ -1997,6 +1997,17 @@ int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
 #undef TOFG_COLOUR_
 }
 
+int rgbz_tofg_ring(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
+                   const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
+                   int block, const double *inv, float *ring, int workers)
+{
+#define TOFG_RING_(s, T)                                                                     \
+    return RGBZ_CAT(tofg_ring, s)((const T *)guide, H, W, row_px, R, col_px, C, block, inv,  \
+                                  ring, workers)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_RING_, return RGBZ_EINVAL)
+#undef TOFG_RING_
+}
+
 int rgbz_tofg_upsample(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W, double scale,
                        const double *cscale, const double *depth, const double *sigma,
                        const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,

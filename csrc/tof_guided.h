@@ -34,6 +34,14 @@ int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
                      int block, double scale, float *col, float *cells, double *lap,
                      double floor, double *sigma, int workers);
 
+/* The guide at the pixels bordering each Z pixel: for the 4 block + 4 offsets (a, c), a and c
+   in -1..block, the Z pixel's own cells left out, in row-major order, the pixel (row_px[r] +
+   a, col_px[c] + c) clamped to the frame, each channel times inv[ch] in double, rounded to
+   float, into ring (4 block + 4, 3, N), N = R C, measurement r C + c. */
+int rgbz_tofg_ring(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
+                   const int64_t *row_px, ptrdiff_t R, const int64_t *col_px, ptrdiff_t C,
+                   int block, const double *inv, float *ring, int workers);
+
 /* One 1-D pass of the guided cross-bilateral mean along rows (axis 1) or columns (axis 0):
    data zr, zi (F, N), v (N,); guide phasors gr, gi (F, N) with variance gv (N,); colours
    col (3, N) already divided by sqrt(2) sigma_c; use (N,) 1 = may enter a mean; nin (N,)

@@ -106,6 +106,48 @@ RGBZ_INLINE void RGBZ_CAT(tofg_colour_row, IS)(const IN_T *restrict guide, ptrdi
     }
 }
 
+/* rgbz_tofg_ring for a guide of IN_T */
+static int RGBZ_CAT(tofg_ring, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
+                                   const int64_t *row_px, ptrdiff_t R, const int64_t *col_px,
+                                   ptrdiff_t C, int block, const double *inv, float *ring,
+                                   int workers)
+{
+    if (!guide || !row_px || !col_px || !inv || !ring || H < 1 || W < 1 || R < 0 || C < 0
+        || block < 1 || block > 2)
+        return RGBZ_EINVAL;
+    const ptrdiff_t N = R * C;
+    int offs[16][2], K = 0;
+    for (int a = -1; a <= block; a++)
+        for (int c = -1; c <= block; c++)
+            if (!(a >= 0 && a < block && c >= 0 && c < block)) {
+                offs[K][0] = a;
+                offs[K][1] = c;
+                K++;
+            }
+    const double i0 = inv[0], i1 = inv[1], i2 = inv[2];
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++)
+        for (int k = 0; k < K; k++) {
+            ptrdiff_t y = row_px[r] + offs[k][0];
+            y = y < 0 ? 0 : (y > H - 1 ? H - 1 : y);
+            const IN_T *restrict g0 = guide + y * W * 3;
+            float *restrict o0 = ring + (ptrdiff_t)k * 3 * N + r * C;
+            float *restrict o1 = o0 + N, *restrict o2 = o1 + N;
+            const ptrdiff_t dc = offs[k][1];
+            for (ptrdiff_t c = 0; c < C; c++) {
+                ptrdiff_t x = col_px[c] + dc;
+                x = x < 0 ? 0 : (x > W - 1 ? W - 1 : x);
+                const IN_T *p = g0 + x * 3;
+                o0[c] = (float)((double)p[0] * i0);
+                o1[c] = (float)((double)p[1] * i1);
+                o2[c] = (float)((double)p[2] * i2);
+            }
+        }
+    return RGBZ_OK;
+}
+
 /* the colour stage of rgbz_tofg_colour for a guide of IN_T */
 static int RGBZ_CAT(tofg_colour, IS)(const IN_T *guide, ptrdiff_t H, ptrdiff_t W,
                                      const int64_t *row_px, ptrdiff_t R, const int64_t *col_px,

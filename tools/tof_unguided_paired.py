@@ -2,7 +2,7 @@
 call in one process: the same results, and the speed of each denoise.
 
     python tools/tof_unguided_paired.py --make COMMIT SO DIR   # the other package, once
-    python tools/tof_unguided_paired.py DIR [ROUNDS] [WORKERS] [--guided]   # a few minutes
+    python tools/tof_unguided_paired.py DIR [ROUNDS] [WORKERS] [--guided] [--mask2]
 
 ``--make`` copies COMMIT's src/rgbz_fast to DIR/rgbz_old with its imports renamed, the
 extension module SO (that commit's build of ``_kernels``) and this build's
@@ -11,8 +11,9 @@ extension first). The 12 MP Mask1 frame of tools/tof_guided_speed.py (art, 3 M
 measurements), simulated by each package with the same seed (the same taps, checked);
 ``ToFISP(denoise=D).run(tof, workers=WORKERS)`` for the three denoises, and with
 ``--guided`` the guided ISP (``ToFISP().run(tof, guide=g)``) with the frame's colour image as
-uint8 and as float64 in [0, 1]; medians, the median of the rounds' speed ratios (> 1: this
-checkout is faster) and whether every field of the results is equal.
+uint8 and as float64 in [0, 1]; ``--mask2``: the Mask2 frame (750 k 2x2 Z pixels) instead.
+Medians, the median of the rounds' speed ratios (> 1: this checkout is faster) and whether
+every field of the results is equal.
 """
 import importlib
 import os
@@ -64,9 +65,9 @@ def alternate(runs, rounds):
     return t, statistics.median(o / n for n, o in zip(t["this"], t["other"]))
 
 
-def frame(pkg, with_guide=False):
-    """The 12 MP Mask1 frame of tools/tof_guided_speed.py, made by the package `pkg` (its
-    taps, or the taps and the guide ``ColourISP().run(frame)``)."""
+def frame(pkg, with_guide=False, pattern="mask1"):
+    """The 12 MP frame of tools/tof_guided_speed.py (Mask1 unless `pattern`), made by the
+    package `pkg` (its taps, or the taps and the guide ``ColourISP().run(frame)``)."""
     sim = importlib.import_module(f"{pkg}.simulation")
     scene = sim.load_rgbd(HERE.parent / ".." / "shared" / "data" / "rgbd" / "art")
     H, W = 3000, 4000
@@ -74,16 +75,17 @@ def frame(pkg, with_guide=False):
     ci = np.arange(W) * scene.shape[1] // W
     big = sim.Scene(scene.image[ri][:, ci], depth=scene.depth[ri][:, ci],
                     depth_valid=scene.depth_valid[ri][:, ci])
-    fr = sim.simulate(big, "mask1", seed=1)
+    fr = sim.simulate(big, pattern, seed=1)
     if with_guide:
         return fr.tof, importlib.import_module(f"{pkg}.isp").ColourISP().run(fr)
     return fr.tof
 
 
-def main(other_dir, rounds=7, workers=2, guided=False):
+def main(other_dir, rounds=7, workers=2, guided=False, pattern="mask1"):
     importlib.import_module("rgbz_fast._kernels")            # this extension first
     sys.path.insert(0, str(Path(other_dir).resolve()))
-    (this_tof, guide), (other_tof, _) = frame("rgbz_fast", True), frame("rgbz_old", True)
+    (this_tof, guide), (other_tof, _) = (frame("rgbz_fast", True, pattern),
+                                         frame("rgbz_old", True, pattern))
     assert np.array_equal(this_tof.taps, other_tof.taps)
     this = importlib.import_module("rgbz_fast.tof").ToFISP
     other = importlib.import_module("rgbz_old.tof").ToFISP
@@ -91,7 +93,7 @@ def main(other_dir, rounds=7, workers=2, guided=False):
     if guided:
         cases = {"guide uint8": ("bilateral", guide),
                  "guide float64": ("bilateral", guide / 255.0)}
-    print(f"| `ToFISP(...).run(tof)`, 12 MP, {workers} threads | this, ms | other, ms "
+    print(f"| `ToFISP(...).run(tof)`, 12 MP {pattern}, {workers} threads | this, ms | other, ms "
           "| speed ratio | same results |")
     print("|---|---|---|---|---|")
     for label, (denoise, g) in cases.items():
@@ -111,5 +113,6 @@ if __name__ == "__main__":
     if sys.argv[1] == "--make":
         make(*sys.argv[2:5])
     else:
-        args = [a for a in sys.argv[1:] if a != "--guided"]
-        main(args[0], *(int(a) for a in args[1:3]), guided="--guided" in sys.argv)
+        args = [a for a in sys.argv[1:] if a not in ("--guided", "--mask2")]
+        main(args[0], *(int(a) for a in args[1:3]), guided="--guided" in sys.argv,
+             pattern="mask2" if "--mask2" in sys.argv else "mask1")

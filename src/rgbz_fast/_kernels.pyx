@@ -1063,6 +1063,9 @@ cdef extern from "tof_guided.h" nogil:
                           double gain, double black, double supp, double const_var, double prnu,
                           double white, float *zr, float *zi, float *v, uint8_t *sat,
                           double *offset, int workers)
+    int rgbz_tofg_ring(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
+                       const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
+                       Py_ssize_t C, int block, const double *inv, float *ring, int workers)
     int rgbz_tofg_colour(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
                          const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
                          Py_ssize_t C, int block, double scale, float *col, float *cells,
@@ -1159,6 +1162,28 @@ def tofg_colour(const frame_t[:, :, ::1] guide, const int64_t[::1] row_px,
     with nogil:
         status = rgbz_tofg_colour(in_type, &guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
                                   block, scale, &col[0, 0], cp, &lap[0], floor, sp, workers)
+    _raise_for(status)
+
+
+def tofg_ring(const frame_t[:, :, ::1] guide, const int64_t[::1] row_px,
+              const int64_t[::1] col_px, int block, const double[::1] inv,
+              float[:, :, ::1] ring, int workers):
+    """The guide (H, W, 3) at the pixels bordering each Z pixel, times inv (3,) per channel:
+    ring (4 block + 4, 3, R C), the offsets in row-major order, clamped to the frame."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t H = guide.shape[0], W = guide.shape[1]
+    cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
+    if inv.shape[0] != 3:
+        raise ValueError(f"inv: expected 3 channels, got {inv.shape[0]}")
+    if (block not in (1, 2) or guide.shape[2] != 3 or ring.shape[0] != 4 * block + 4
+            or ring.shape[1] != 3 or ring.shape[2] != R * C):
+        raise ValueError("tofg_ring: inconsistent array shapes")
+    if R == 0 or C == 0 or H == 0 or W == 0:
+        return
+    with nogil:
+        status = rgbz_tofg_ring(in_type, &guide[0, 0, 0], H, W, &row_px[0], R, &col_px[0], C,
+                                block, &inv[0], &ring[0, 0, 0], workers)
     _raise_for(status)
 
 

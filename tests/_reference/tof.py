@@ -200,6 +200,22 @@ def guided_colour(guide, rows, cols, block, scale):
     return col.reshape(3, -1), cells.reshape(block * block, 3, -1), lap
 
 
+def guided_ring(g, rows, cols, block, inv):
+    """The guide at the pixels bordering each Z pixel (rows x cols, top-left cells) times inv
+    (3,) per channel, in float32: (4 block + 4, 3, R*C), the offsets row-major, clamped to
+    the frame (the guided ISP's guide_ring before its C kernel)."""
+    H, W = g.shape[:2]
+    r = np.repeat(rows, cols.size)
+    c = np.tile(cols, rows.size)
+    offs = [(a, b) for a in range(-1, block + 1) for b in range(-1, block + 1)
+            if not (0 <= a < block and 0 <= b < block)]
+    ring = np.empty((len(offs), 3, r.size), np.float32)
+    for k, (a, b) in enumerate(offs):
+        px = g[np.clip(r + a, 0, H - 1), np.clip(c + b, 0, W - 1)]
+        ring[k] = (px.astype(np.float64) * inv).T
+    return ring
+
+
 def guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, reach, radius_px,
                 inv2h2, inv2hc2):
     """One 1-D pass of the cross-bilateral mean: mean (F, N) x 2, variance (N,), n_eff (N,)."""

@@ -76,6 +76,30 @@ def test_guide_colours_match_numpy(dtype, scale, block):
     np.testing.assert_allclose(lap, rlap, rtol=1e-5)
 
 
+@pytest.mark.parametrize("dtype,scale", [(np.uint8, 1 / 255), (np.uint16, 1 / 65535),
+                                         (np.float32, 1.0), (np.float64, 1.0)])
+@pytest.mark.parametrize("block", [1, 2])
+def test_guide_ring_matches_numpy_bit_for_bit(dtype, scale, block):
+    """tofg_ring: the guide around each Z pixel, clamped at every edge of the frame (Z pixels
+    on the first and last rows and columns), times the channel's factor, in float32: the
+    NumPy reference's values bit for bit, on 1 and 2 threads."""
+    rng = np.random.default_rng(4)
+    top = {np.uint8: 255, np.uint16: 65535}.get(dtype, 1.0)
+    guide = (rng.uniform(0, 1, (30, 41, 3)) * top).astype(dtype)
+    rows = np.array([0, 4, 9, 17, 30 - block], np.int64)
+    cols = np.array([0, 2, 11, 20, 33, 41 - block], np.int64)
+    inv = scale / (math.sqrt(2.0) * np.array([0.011, 0.0073, 0.02]))
+    want = ref.guided_ring(guide, rows, cols, block, inv)
+    for workers in (1, 2):
+        ring = np.full((4 * block + 4, 3, rows.size * cols.size), np.nan, np.float32)
+        _kernels.tofg_ring(guide, rows, cols, block, inv, ring, workers)
+        np.testing.assert_array_equal(ring, want)
+    with pytest.raises(ValueError, match="shapes"):
+        _kernels.tofg_ring(guide, rows, cols, block, inv, ring[:-1], 1)
+    with pytest.raises(ValueError, match="inv"):
+        _kernels.tofg_ring(guide, rows, cols, block, inv[:2].copy(), ring, 1)
+
+
 @pytest.mark.parametrize("block,R", [(1, 10), (2, 10), (1, 2)])
 def test_guide_colours_scaled_in_the_kernel(block, R):
     """With sigma given, the kernel divides col and cells by sqrt(2) sigma_c, sigma_c by
@@ -311,7 +335,7 @@ def test_guided_flying_matches_numpy(pattern):
     from rgbz_fast.tof._guided import _Layout, guide_colours, guide_ring
     lay = _Layout(frame.tof.sites, frame.tof.block, frame.tof.shape)
     col, cells, sig = guide_colours(guide, 1 / 255, lay, 1)
-    ring = guide_ring(guide, 1 / 255, lay, sig)
+    ring = guide_ring(guide, 1 / 255, lay, sig, 1)
     assert (ring is None) == (pattern == "mask1")
     usable = ((res.flags & 3) == 0).astype(np.uint8)
     flags, out = np.zeros(lay.N, np.uint8), np.empty(lay.N)

@@ -185,24 +185,18 @@ def guide_colours(g, scale, layout, nthreads):
     return col, cells, sigma
 
 
-def guide_ring(g, scale, layout, sigma):
+def guide_ring(g, scale, layout, sigma, nthreads):
     """The guide at the pixels bordering each Z pixel, in the units of :func:`guide_colours`:
     (4 block + 4, 3, N) float32, or None for 1x1 Z pixels (whose colour cannot tell a pure
     measurement from a blend). A ring pixel off the frame repeats the nearest one on it (a
-    pixel of the ring or of the Z pixel, so it adds no test)."""
+    pixel of the ring or of the Z pixel, so it adds no test). One C pass (``tofg_ring``; its
+    NumPy reference is in tests/_reference/tof.py)."""
     b = layout.block
     if b == 1:
         return None
-    H, W = g.shape[:2]
-    rows = np.repeat(layout.rows, layout.C)
-    cols = np.tile(layout.cols, layout.R)
-    inv = scale / (math.sqrt(2.0) * np.asarray(sigma, np.float64))
-    offs = [(a, c) for a in range(-1, b + 1) for c in range(-1, b + 1)
-            if not (0 <= a < b and 0 <= c < b)]
-    ring = np.empty((len(offs), 3, layout.N), np.float32)
-    for k, (a, c) in enumerate(offs):
-        px = g[np.clip(rows + a, 0, H - 1), np.clip(cols + c, 0, W - 1)]
-        ring[k] = (px.astype(np.float64) * inv).T
+    inv = np.ascontiguousarray(scale / (math.sqrt(2.0) * np.asarray(sigma, np.float64)))
+    ring = np.empty((4 * b + 4, 3, layout.N), np.float32)
+    _kernels.tofg_ring(g, layout.rows, layout.cols, b, inv, ring, nthreads)
     return ring
 
 
@@ -303,7 +297,8 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     measured = depth
     if p.flying_step is not None:
         depth = guided_flags(measured, sigma, flags, layout, col, cells,
-                             guide_ring(g, scale, layout, sigma_c), p.flying_step, nthreads)
+                             guide_ring(g, scale, layout, sigma_c, nthreads), p.flying_step,
+                             nthreads)
     back = layout.from_grid
     return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
                     phase=back(phase), amplitude=back(amp), offset=back(offset),
@@ -323,7 +318,7 @@ def guided_flying_of(result, g, scale, step, nthreads):
     measured = np.ascontiguousarray(layout.to_grid(result.depth, np.nan), np.float64)
     sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
     depth = guided_flags(measured, sigma, flags, layout, col, cells,
-                         guide_ring(g, scale, layout, sigma_c), step, nthreads)
+                         guide_ring(g, scale, layout, sigma_c, nthreads), step, nthreads)
     back = layout.from_grid
     fields = {k: getattr(result, k) for k in result.__dataclass_fields__}
     fields.update(depth=back(depth), measured=result.depth, flags=back(flags),
