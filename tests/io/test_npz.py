@@ -96,3 +96,18 @@ def test_frames_and_calibrations_round_trip(tmp_path):
                          block=1, shape=(4, 4))
     c = ToFCalibration.load(cal.save(tmp_path / "c.npz"))
     np.testing.assert_array_equal(c.offsets, cal.offsets)
+
+
+def test_a_damaged_member_of_a_large_archive_is_named(tmp_path):
+    """Members of 4 MiB and more are inflated on threads: a damaged one still gives the
+    reader's error naming the file, whichever thread met it."""
+    arrays = _arrays(np.random.default_rng(6), big=True)
+    blob = bytearray(_npz.npz_bytes(arrays))
+    info = zipfile.ZipFile(io.BytesIO(bytes(blob))).getinfo("taps.npy")
+    start = info.header_offset + 30 + len("taps.npy")
+    blob[start + 1000:start + 1400] = bytes(400)           # inside the deflate stream
+    path = tmp_path / "bad.npz"
+    path.write_bytes(bytes(blob))
+    with pytest.raises(ValueError, match=r"path: .*bad\.npz is not a readable NPZ archive"):
+        read_npz(path)
+    assert list(read_npz(path, keys=["data", "rows"])) == ["data", "rows"]

@@ -312,7 +312,8 @@ def _npz_members(path, name, keys, required, limits):
                                        f"more than the limit of {limits[1]} bytes",
                                  *raise_it("max_bytes"))
         try:
-            return {k: _npz_array(zf, members[k], path, limits, name) for k in wanted}
+            return dict(zip(wanted, _read_members(zf, [members[k] for k in wanted], path,
+                                                  limits, name, declared)))
         except broken as exc:
             raise ValueError(f"a damaged archive member: {type(exc).__name__}: "
                              f"{exc}") from None
@@ -339,6 +340,21 @@ def _load_npz(path, limits):
         return _frame_from(header, z["data"], z.get("reference"), tof)
 
     return _checked(path, build)
+
+
+def _read_members(zf, infos, path, limits, name, declared):
+    """:func:`_npz_array` of each member, in order; on threads (each inflating its own
+    member: zipfile reads the archive under a lock, zlib inflates without the GIL) when they
+    declare 4 MiB or more."""
+    from .._threads import check_workers
+
+    n = min(check_workers(None), len(infos))
+    if n < 2 or declared < (4 << 20):
+        return [_npz_array(zf, info, path, limits, name) for info in infos]
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(n) as ex:
+        return list(ex.map(lambda info: _npz_array(zf, info, path, limits, name), infos))
 
 
 def _npz_array(zf, info, path, limits, name="path"):
