@@ -483,7 +483,7 @@ def test_shared_options_read_the_same_in_every_command():
         assert len(texts) <= 2, (flag, texts)       # --workers: kernels, or the bench's runs
     workers = {name.split()[0]: a for name, a in ap if name.endswith(" --workers")}
     assert set(workers) == {"reconstruct", "depth", "evaluate", "bench", "tradeoff",
-                            "pattern-study"}
+                            "pattern-study", "hardware"}
     assert len({a.type for a in workers.values()}) == 1      # one rule: a positive integer
 
 

@@ -72,9 +72,12 @@ def test_archives_past_4_gib_take_the_zip64_path(monkeypatch, tmp_path):
     assert {i.create_system for i in zipfile.ZipFile(io.BytesIO(blob)).infolist()} == {3}
 
 
-def test_objects_are_refused():
+def test_objects_and_bad_thread_counts_are_refused():
     with pytest.raises(ValueError, match="pickle"):
         _npz.npz_bytes({"x": np.array([{"a": 1}], dtype=object)})
+    for bad in (0, -1, 1.5, True):
+        with pytest.raises(ValueError, match="workers"):
+            _npz.npz_bytes({"x": np.zeros(3)}, workers=bad)
 
 
 def test_frames_and_calibrations_round_trip(tmp_path):

@@ -20,7 +20,10 @@ and on the 8-bit sRGB values mosaicked at 11 bits; and the fixed model's
 operations per pixel beside the paper's Table 1 and the float core's.
 
 --sweep varies every width and table size around the configuration and gives
-quality against cost (a table, its Pareto front, and with --out a plot)."""
+quality against cost (a table, its Pareto front, and with --out a plot).
+--workers threads run the frames of the error, and the sweep's configurations,
+side by side (the model streams each frame on one thread); the report does
+not depend on it."""
 
 #: the methods the fixed-point model runs
 METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned")
@@ -59,9 +62,7 @@ def add_parser(sub):
                                  "hardware_sweep.png into DIR (default: print only)")
     c.add_quiet(p, "no progress bar")
     c.add_limits(p)
-    c.add_workers(p, "threads: the frames of the error, and with --sweep its configurations, "
-                     "side by side (the fixed-point model is one stream per frame; the "
-                     "results do not depend on it)", "all cores")
+    c.add_workers(p)
     return p
 
 

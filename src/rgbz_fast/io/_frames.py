@@ -346,9 +346,9 @@ def _read_members(zf, infos, path, limits, name, declared):
     """:func:`_npz_array` of each member, in order; on threads (each inflating its own
     member: zipfile reads the archive under a lock, zlib inflates without the GIL) when they
     declare 4 MiB or more."""
-    from .._threads import check_workers
+    import os
 
-    n = min(check_workers(None), len(infos))
+    n = min(os.cpu_count() or 1, len(infos))          # Python threads: no OpenMP stacks
     if n < 2 or declared < (4 << 20):
         return [_npz_array(zf, info, path, limits, name) for info in infos]
     from concurrent.futures import ThreadPoolExecutor

@@ -14,6 +14,7 @@ records, go through :mod:`zipfile` one member at a time.
 from __future__ import annotations
 
 import io
+import os
 import struct
 import zipfile
 import zlib
@@ -30,6 +31,13 @@ _THREADED_BYTES = 4 << 20
 _PIECE = 4 << 20
 _DOS_DATE = (1 << 5) | 1              # 1980-01-01, as numpy.savez dates its members
 _LIMIT = 0xFFFFFFFF
+
+
+def _positive(workers):
+    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+        raise ValueError(f"workers: expected None or a positive number of threads, got "
+                         f"{workers!r}")
+    return workers
 
 
 def _member(array):
@@ -60,8 +68,6 @@ def npz_bytes(arrays, *, level=NPZ_LEVEL, workers=None):
     """The bytes of an NPZ archive of ``arrays`` ({key: array}, no Python objects): member
     ``key.npy`` each, deflated at ``level`` on up to ``workers`` threads (None: every core;
     the bytes do not depend on it)."""
-    from .._threads import check_workers
-
     members = [(f"{k}.npy", _member(a)) for k, a in arrays.items()]
     total = sum(len(raw) for _, raw in members)
     if total >= _LIMIT:
@@ -72,7 +78,7 @@ def npz_bytes(arrays, *, level=NPZ_LEVEL, workers=None):
     for _, raw in members:
         starts = range(0, max(len(raw), 1), _PIECE)
         jobs += [(_deflate, (raw[s:s + _PIECE], level, s + _PIECE >= len(raw))) for s in starts]
-    n = min(check_workers(workers), len(jobs))
+    n = min(os.cpu_count() or 1 if workers is None else _positive(workers), len(jobs))
     if n > 1 and total >= _THREADED_BYTES:
         from concurrent.futures import ThreadPoolExecutor
 
