@@ -465,7 +465,9 @@ def srgb_decode(img, name="image", input_bits=None):
     if img.dtype not in (np.uint8, np.uint16):
         return srgb_to_linear(_int_to_unit(img, name, input_bits))
     bits = 8 * img.itemsize if input_bits is None else integer_bits(img, name, input_bits)
-    return srgb_decode_table(bits)[img]
+    # the codes in C order first (an eighth of the output's bytes): the look-up's result
+    # takes their layout, and the scene keeps a C-ordered one without copying it
+    return srgb_decode_table(bits)[np.ascontiguousarray(img)]
 
 
 @lru_cache(maxsize=4)
