@@ -132,3 +132,38 @@ class ToFISPSuite:
 
     def time_tof_depth(self, shape, denoise):
         self.fn(self.tof, denoise=denoise)
+
+
+class GuidedToFISPSuite:
+    """The colour-guided ToF ISP (``ToFISP().run(tof, guide=image)``) and ``upsample_depth``
+    on a simulated frame with a depth step and its own colour image, by pattern: Mask1 (1x1
+    Z pixels) and Mask2 (2x2, where the flying-pixel test also reads the ring of pixels
+    around each Z pixel); Kodak size and 12 MP."""
+    params = ([(512, 768), (3000, 4000)], ["mask1", "mask2"])
+    param_names = ["shape", "pattern"]
+    timeout = 600
+
+    def setup(self, shape, pattern):
+        try:
+            from rgbz_fast.isp import ColourISP
+            from rgbz_fast.simulation import Scene, simulate
+            from rgbz_fast.tof import ToFISP, upsample_depth
+        except ImportError:
+            raise NotImplementedError("no colour-guided ToF ISP in this commit") from None
+        if SKIP_SLOW and shape[0] * shape[1] > 1_000_000:
+            raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")
+        from .common import astronaut, tile_to
+
+        img = tile_to(astronaut(), shape)
+        xx = np.arange(shape[1])[None, :] * np.ones((shape[0], 1))
+        frame = simulate(Scene(img, depth=np.where(xx < shape[1] // 2, 1.2, 1.9)), pattern,
+                         seed=1)
+        self.tof, self.guide = frame.tof, ColourISP().run(frame)
+        self.isp, self.upsample = ToFISP(), upsample_depth
+        self.result = self.isp.run(self.tof, guide=self.guide)
+
+    def time_guided_isp(self, shape, pattern):
+        self.isp.run(self.tof, guide=self.guide)
+
+    def time_upsample_depth(self, shape, pattern):
+        self.upsample(self.result, self.guide)
