@@ -65,7 +65,8 @@ def add_parser(sub):
 def run(args):
     import tifffile
 
-    from .._devtools.plots import depth_flags_figure, depth_preview, full_depth_preview
+    from .._devtools.plots import (depth_flags_figure, depth_preview, full_depth_preview,
+                                   nearest_measurement)
     from ..io import atomic_write, load_frame
     from ..tof import ToFCalibration, tof_depth
 
@@ -107,11 +108,12 @@ def run(args):
         atomic_write(out / bits_name, bits.getvalue())
         title = (f"{f.stem}: depth, {100 * summary['valid_fraction']:.1f} % of "
                  f"{summary['measurements']} measurements valid")
+        nearest = nearest_measurement(res)                  # both figures' grid
         atomic_write(out / png_name, depth_preview(
             res, title, args.range,
-            frame.tof.valid if "truth_unknown_fraction" in summary else None))
+            frame.tof.valid if "truth_unknown_fraction" in summary else None, nearest))
         atomic_write(out / flags_name, depth_flags_figure(res, f"{f.stem}: why measurements "
-                                                                "are flagged"))
+                                                                "are flagged", nearest))
         if full_names:
             from ..tof import upsample_depth
             up, _ = upsample_depth(res, guide, workers=args.workers)

@@ -34,7 +34,32 @@ def _png(fig, plt, **kwargs):
     return buf.getvalue()
 
 
-def depth_preview(res, title, scale=None, truth_known=None):
+#: the longest side, in pixels, of the image a frame preview draws: the figures are about 700
+#: pixels wide and draw the nearest pixel (``interpolation="nearest"``), so a larger frame is
+#: taken every k-th pixel first (a 12 MP frame: every third) instead of colour-mapping and
+#: resampling all of it
+PREVIEW_PIXELS = 1400
+
+
+def preview_step(shape):
+    """k of :data:`PREVIEW_PIXELS`: 1 up to 1400 pixels on the longest side."""
+    return max(1, -(-max(shape) // PREVIEW_PIXELS))
+
+
+def nearest_measurement(res):
+    """(rows, cols) of the nearest Z measurement of every pixel of the preview's grid (every
+    :func:`preview_step`-th pixel of the frame), for :func:`depth_preview` and
+    :func:`depth_flags_figure`."""
+    from scipy import ndimage
+
+    measured = res.to_frame(np.ones(res.n_sites, bool), fill=False).astype(bool)
+    idx = ndimage.distance_transform_edt(~measured, return_distances=False,
+                                         return_indices=True)
+    k = preview_step(measured.shape)
+    return idx[0][::k, ::k], idx[1][::k, ::k]
+
+
+def depth_preview(res, title, scale=None, truth_known=None, nearest=None):
     """An 8-bit colour-mapped PNG of a depth result, with its colour scale (PNG bytes).
 
     The Z measurements are painted on the frame; colour sites show the
@@ -43,30 +68,27 @@ def depth_preview(res, title, scale=None, truth_known=None):
     (``truth_known``: the taps' ground-truth validity), the measurements
     whose ground truth is unknown are shaded red: the scene filled their
     depth in from the nearest known one. ``scale``: (min, max) metres of the
-    colour map; default the 1st to 99th percentile of the valid depth.
+    colour map; default the 1st to 99th percentile of the valid depth. A frame longer than
+    :data:`PREVIEW_PIXELS` on a side is drawn from every k-th pixel (:func:`preview_step`).
+    ``nearest``: :func:`nearest_measurement` of ``res`` when the caller has it.
     """
     matplotlib, plt = _pyplot()
     from matplotlib.patches import Patch
-    from scipy import ndimage
 
-    depth = res.to_frame(res.depth)
-    valid = res.to_frame(res.valid, fill=False).astype(bool)
-    measured = res.to_frame(np.ones(res.n_sites, bool), fill=False).astype(bool)
-    idx = ndimage.distance_transform_edt(~measured, return_distances=False,
-                                         return_indices=True)
-    depth = depth[idx[0], idx[1]]
-    valid = valid[idx[0], idx[1]]
+    iy, ix = nearest_measurement(res) if nearest is None else nearest
+    depth = res.to_frame(res.depth)[iy, ix]
+    valid = res.to_frame(res.valid, fill=False).astype(bool)[iy, ix]
     unknown = None
     if truth_known is not None and not np.all(truth_known):
         known = np.asarray(truth_known, bool)
-        unknown = res.to_frame(~known, fill=False).astype(bool)[idx[0], idx[1]]
+        unknown = res.to_frame(~known, fill=False).astype(bool)[iy, ix]
     good = depth[valid]
     if scale is None:
         scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
             else (0.0, 1.0)
         if scale[1] <= scale[0]:
             scale = (scale[0], scale[0] + 1e-3)
-    rows, cols = depth.shape
+    rows, cols = res.shape
     width = 6.4
     fig, ax = plt.subplots(figsize=(width, width * rows / cols * 0.92 + 0.9))
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
@@ -108,11 +130,11 @@ def flag_bits():
     return {label: int(getattr(tof, name)) for label, name, _ in FLAG_REASONS}
 
 
-def depth_flags_figure(res, title):
+def depth_flags_figure(res, title, nearest=None):
     """Why each Z measurement is flagged, as a map with a legend (PNG bytes).
 
     Each measurement is painted over its footprint (every pixel shows the
-    nearest measurement, as the preview does), in one colour per reason:
+    nearest measurement, as the preview does, on the same grid), in one colour per reason:
     valid, each flag bit alone, or several at once. The legend gives each
     category's share of the measurements. The flag bits themselves are in the
     command's flags TIFF.
@@ -120,7 +142,6 @@ def depth_flags_figure(res, title):
     matplotlib, plt = _pyplot()
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
-    from scipy import ndimage
 
     flags = np.asarray(res.flags).astype(np.int64)
     bits = list(flag_bits().values())
@@ -129,11 +150,9 @@ def depth_flags_figure(res, title):
     for k, b in enumerate(bits):
         category[(flags & b) != 0] = k + 1
     category[reasons > 1] = len(FLAG_CATEGORIES) - 1
-    measured = res.to_frame(np.ones(res.n_sites, bool), fill=False).astype(bool)
-    grid = res.to_frame(category.astype(float), fill=0.0)
-    idx = ndimage.distance_transform_edt(~measured, return_distances=False, return_indices=True)
-    grid = grid[idx[0], idx[1]]
-    rows, cols = grid.shape
+    iy, ix = nearest_measurement(res) if nearest is None else nearest
+    grid = res.to_frame(category.astype(float), fill=0.0)[iy, ix]
+    rows, cols = res.shape
     width = 6.4
     fig, ax = plt.subplots(figsize=(width, width * rows / cols * 0.92 + 1.1))
     cmap = ListedColormap([c for _, c in FLAG_CATEGORIES])
@@ -172,15 +191,19 @@ def _log_axis_numbers(ax):
 def full_depth_preview(depth, title, scale=None):
     """An 8-bit colour-mapped PNG of a full-resolution depth map (NaN grey), with its scale.
 
-    ``scale``: (min, max) metres; default the 1st to 99th percentile of the finite depths."""
+    ``scale``: (min, max) metres; default the 1st to 99th percentile of the finite depths
+    (drawn from every k-th pixel, :func:`preview_step`)."""
     matplotlib, plt = _pyplot()
+    covered = float(np.isfinite(depth).mean()) if depth.size else 0.0
+    rows, cols = depth.shape
+    k = preview_step(depth.shape)
+    depth = depth[::k, ::k]
     good = depth[np.isfinite(depth)]
     if scale is None:
         scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
             else (0.0, 1.0)
         if scale[1] <= scale[0]:
             scale = (scale[0], scale[0] + 1e-3)
-    rows, cols = depth.shape
     fig, ax = plt.subplots(figsize=(6.4, 6.4 * rows / cols * 0.92 + 0.6))
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
     im = ax.imshow(np.ma.masked_invalid(depth), cmap=cmap, vmin=scale[0], vmax=scale[1],
@@ -188,7 +211,7 @@ def full_depth_preview(depth, title, scale=None):
     ax.set_xticks([])
     ax.set_yticks([])
     fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, extend="both").set_label("distance (m)")
-    ax.set_title(f"{title} ({100 * good.size / depth.size:.1f} % covered)", fontsize=9)
+    ax.set_title(f"{title} ({100 * covered:.1f} % covered)", fontsize=9)
     return _png(fig, plt, bbox_inches="tight")
 
 
