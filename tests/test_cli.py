@@ -65,6 +65,18 @@ def test_simulate_then_reconstruct(tmp_path, capsys):
                  str(tmp_path / "out"), "--quiet"]) == 0
     png = iio.imread(tmp_path / "out" / "astro_mask2_sg.png")
     assert png.shape == (64, 96, 3) and png.dtype == np.uint8
+    # the pair of Fig. 19: the reference's own white balance on both images
+    ref_img = iio.imread(tmp_path / "out" / "astro_mask2_reference.png")
+    from rgbz_fast.isp import ColourISP, recorded_rendering
+    rec = recorded_rendering(frame)
+    assert rec["white_gains"] is None                     # grey world on the reference
+    isp = ColourISP(precision="float64", black_level=rec["black_level"])
+    kw = dict(bit_depth=frame.bit_depth, colour_matrix=rec["colour_matrix"])
+    phase = frame.pattern.bayer_phase
+    want_ref, stages = isp.render(frame.reference, phase, return_stages=True, **kw)
+    np.testing.assert_array_equal(ref_img, want_ref)
+    np.testing.assert_array_equal(png, isp.render(rz.reconstruct(frame, "sg"), phase,
+                                                  gains=stages["gains"], **kw))
 
 
 def test_reconstruct_of_a_bad_file_leaves_no_output_folder(tmp_path, capsys):

@@ -508,11 +508,17 @@ def must_exist(paths, prefix="path: "):
             raise CliError(f"{prefix}{f} does not exist")
 
 
+#: zlib level of the PNGs the commands write: a 12 MP sRGB image in 1.3 s at 2, 6.2 s at 6
+#: (Pillow's default) for 13 % more bytes (docs/reports/benchmarks.md)
+PNG_LEVEL = 2
+
+
 def png_bytes(image):
-    """An image as PNG bytes, for :func:`rgbz_fast.io.atomic_write`."""
+    """An image as PNG bytes (zlib level :data:`PNG_LEVEL`), for
+    :func:`rgbz_fast.io.atomic_write`."""
     import imageio.v3 as iio
 
-    return iio.imwrite("<bytes>", image, extension=".png")
+    return iio.imwrite("<bytes>", image, extension=".png", compress_level=PNG_LEVEL)
 
 
 def write_report(out, files):

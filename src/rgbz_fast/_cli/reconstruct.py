@@ -224,9 +224,17 @@ def _write_srgb(dest, ref_dest, cfa, frame, args):
         None if args.colour_matrix == "none" else args.colour_matrix
     kw = dict(bit_depth=frame.bit_depth, colour_matrix=matrix, workers=args.workers)
     phase = frame.pattern.bayer_phase
-    if frame.reference is not None:
-        ref_srgb, stages = chain.render(frame.reference, phase, gains=gains, return_stages=True,
-                                        **kw)
-        gains = stages["gains"]
-        atomic_write(ref_dest, c.png_bytes(ref_srgb))
-    atomic_write(dest, c.png_bytes(chain.render(cfa, phase, gains=gains, **kw)))
+    if frame.reference is None:
+        atomic_write(dest, c.png_bytes(chain.render(cfa, phase, gains=gains, **kw)))
+        return
+    if gains is None:                       # the reference's own, as render finds them
+        gains = chain.white_balance_gains(frame.reference, phase, bit_depth=frame.bit_depth)
+    ref_srgb = chain.render(frame.reference, phase, gains=gains, **kw)
+    # the reference's PNG is deflated on a thread (Pillow releases the GIL) while the
+    # reconstruction renders and deflates its own
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(1) as ex:
+        pending = ex.submit(lambda: atomic_write(ref_dest, c.png_bytes(ref_srgb)))
+        atomic_write(dest, c.png_bytes(chain.render(cfa, phase, gains=gains, **kw)))
+        pending.result()
