@@ -153,6 +153,8 @@ class Files:
         np.arange(16, dtype="<u2").tofile(d / "bayer.raw")
         (d / "one.raw").write_bytes(b"\x00\x00")
         (d / "empty").mkdir()
+        (d / "cube_folder").mkdir()
+        (d / "cube_folder" / "cube_ms.mat").write_bytes(b"a cube's place")
         (d / "rgbd_incomplete").mkdir()
         (d / "ds").mkdir()
         iio.imwrite(d / "ds" / "a.png", np.random.default_rng(2).integers(

@@ -151,6 +151,10 @@ ROWS = [
     R("simulation.load_scene-empty-folder", "load_scene(empty folder)",
       lambda f: sim.load_scene(f / "empty"), FileNotFoundError,
       "path: no PNG band files in folder"),
+    R("simulation.load_scene-folder-of-a-cube", "load_scene(folder holding a .mat cube)",
+      lambda f: sim.load_scene(f / "cube_folder"), FileNotFoundError,
+      "path: no PNG band files in folder {d}/cube_folder (it holds cube_ms.mat: pass the .mat "
+      "file itself)"),
     R("simulation.load_rgbd-missing", "load_rgbd('missing')",
       lambda f: sim.load_rgbd(f / "missing"), FileNotFoundError, "folder: "),
     R("simulation.load_rgbd-incomplete", "load_rgbd(folder without rgb.png, disp1.png, dmin.txt)",

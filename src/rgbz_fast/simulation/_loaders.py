@@ -125,7 +125,11 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         files = sorted((f for f in p.iterdir() if f.suffix.lower() == ".png" and f.is_file()),
                        key=_natural_key)
         if not files:
-            raise FileNotFoundError(f"path: no PNG band files in folder {p}")
+            cubes = sorted(f.name for f in p.iterdir() if f.suffix.lower() == ".mat"
+                           and f.is_file())
+            hint = f" (it holds {', '.join(cubes[:3])}: pass the .mat file itself)" if cubes \
+                else ""
+            raise FileNotFoundError(f"path: no PNG band files in folder {p}{hint}")
         bands = []
         for f in files:
             b = read_image(f, "path", max_pixels=max_pixels, max_bytes=max_bytes)
