@@ -19,16 +19,13 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from tof_unguided_paired import HERE, alternate  # noqa: E402
+from simulate_paired import scene  # noqa: E402
+from tof_unguided_paired import alternate  # noqa: E402
 
 
 def frame(pkg):
-    sim = importlib.import_module(f"{pkg}.simulation")
-    s = sim.load_rgbd(HERE.parent / ".." / "shared" / "data" / "rgbd" / "art")
-    ri = np.arange(3000) * s.shape[0] // 3000
-    ci = np.arange(4000) * s.shape[1] // 4000
-    return sim.simulate(sim.Scene(s.image[ri][:, ci], depth=s.depth[ri][:, ci],
-                                  depth_valid=s.depth_valid[ri][:, ci]), "mask1", seed=1)
+    sim, sc = scene(pkg)
+    return sim.simulate(sc, "mask1", seed=1)
 
 
 def same(a, b):
