@@ -78,7 +78,7 @@ def npz_bytes(arrays, *, level=NPZ_LEVEL, workers=None):
     for _, raw in members:
         starts = range(0, max(len(raw), 1), _PIECE)
         jobs += [(_deflate, (raw[s:s + _PIECE], level, s + _PIECE >= len(raw))) for s in starts]
-    n = min(os.cpu_count() or 1 if workers is None else _positive(workers), len(jobs))
+    n = min((os.cpu_count() or 1) if workers is None else _positive(workers), len(jobs))
     if n > 1 and total >= _THREADED_BYTES:
         from concurrent.futures import ThreadPoolExecutor
 
