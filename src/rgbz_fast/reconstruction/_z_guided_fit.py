@@ -10,10 +10,12 @@ parts are public so that a k-fold run computes each frame's equations once.
 from __future__ import annotations
 
 import itertools
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
 from .._frame import RawFrame
+from .._threads import check_workers
 from .._validate import check_flag, check_int, check_number
 from ._learned import LearnedFilters, default_filters
 from ._z_guided import N_GUIDE, ZGuidedFilters, _site_features, check_base, guide_grid, z_layout
@@ -35,7 +37,7 @@ _BOUNDS = {"ridge": (0, False), "prior": (0, False), "colour_prior": (0, True)}
 
 def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colour_prior=None,
                    select="cv", cv_folds=4, cv_grid=None, groups=None, lam=0.01,
-                   noise_thresholds=(0.003,), guide=True, meta=None):
+                   noise_thresholds=(0.003,), guide=True, meta=None, workers=None):
     """Fit :class:`ZGuidedFilters` to frames whose true colour at the Z sites is known.
 
     Parameters
@@ -97,6 +99,10 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
         the guide adds (the cross-validation scores that model).
     meta : dict, optional
         Extra metadata kept with the filters.
+    workers : int, optional
+        Threads: the frames' normal equations are made side by side, one
+        frame per thread (None or -1: every core). The filters do not depend
+        on it.
 
     Returns
     -------
@@ -176,10 +182,19 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
         raise TypeError(f"base: expected LearnedFilters, got {type(base).__name__}")
     check_base(base, pattern, bit_depth, "base")
     folds = [None] * min(cv_folds, len(order))
-    for i, fr in enumerate(frames):
-        s = frame_stats(fr, base, lam, noise_thresholds, nir=nir[i], name=f"nir[{i}]")
-        j = order[groups[i]] % len(folds)
-        folds[j] = sum_stats([folds[j], s])
+    # the frames' equations on threads, a batch of one frame per thread at a time (each holds
+    # its buckets' normal equations), summed into the folds in the frames' order: the same
+    # sums as one frame at a time
+    n = min(check_workers(workers), len(frames))
+
+    def stats(i):
+        return frame_stats(frames[i], base, lam, noise_thresholds, nir=nir[i], name=f"nir[{i}]")
+
+    with ThreadPoolExecutor(n) as ex:
+        for b in range(0, len(frames), n):
+            for i, s in zip(range(b, b + n), ex.map(stats, range(b, min(b + n, len(frames))))):
+                j = order[groups[i]] % len(folds)
+                folds[j] = sum_stats([folds[j], s])
     if select == "cv" and len(order) < 2 and any(
             v is None and len(axes[n]) > 1 for n, v in given.items()):
         raise ValueError("select: cross-validation needs frames of at least 2 groups (scenes), "
@@ -189,15 +204,17 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
         info["cv_groups"] = len(order)
     info.update(meta or {})
     return fit_folds(folds, base, lam, noise_thresholds, select=select, cv_grid=axes,
-                     guide=guide, meta=info, **given)
+                     guide=guide, meta=info, workers=workers, **given)
 
 
 def fit_folds(folds, base, lam, noise_thresholds=(0.003,), *, ridge=None, prior=None,
-              colour_prior=None, select="cv", cv_grid=None, guide=True, meta=None):
+              colour_prior=None, select="cv", cv_grid=None, guide=True, meta=None,
+              workers=None):
     """:class:`ZGuidedFilters` fitted on the sum of ``folds`` (summed :func:`frame_stats` of
     each fold of a cross-validation), the parameters left at None set by ``select`` (as in
     :func:`train_z_guided`, which runs this once its frames' equations are summed per fold:
-    group i in fold i mod k). Records the choice in ``meta``."""
+    group i in fold i mod k). Records the choice in ``meta``. ``workers``: as for
+    :func:`select_stats`."""
     if select not in SELECTIONS:
         raise ValueError(f"select: expected 'cv' or None, got {select!r}")
     given = {"ridge": ridge, "prior": prior, "colour_prior": colour_prior}
@@ -206,7 +223,7 @@ def fit_folds(folds, base, lam, noise_thresholds=(0.003,), *, ridge=None, prior=
         axes = check_grid(cv_grid, "cv_grid")
         axes = {n: axes[n] if v is None else (v,) for n, v in given.items()}
     if select == "cv" and any(len(a) > 1 for a in axes.values()):
-        best, _, rmse = select_stats(folds, base, axes, guide=guide)
+        best, _, rmse = select_stats(folds, base, axes, guide=guide, workers=workers)
         info.update(select="cv", cv_folds=sum(f is not None for f in folds),
                     cv_grid="; ".join(f"{n} {list(axes[n])}" for n in axes),
                     cv_rmse=str([float(f"{e:.6g}") for e in rmse]))
@@ -253,7 +270,7 @@ def sum_stats(stats):
     return total
 
 
-def select_stats(folds, base, axes=None, *, guide=True):
+def select_stats(folds, base, axes=None, *, guide=True, workers=None):
     """The (ridge, prior, colour_prior) of least held-out squared error, by cross-validation.
 
     ``folds``: summed :func:`frame_stats` of each fold (at least 2); each fold is held out in
@@ -261,7 +278,8 @@ def select_stats(folds, base, axes=None, *, guide=True):
     error on the fold's sites ``y.y - 2 w.v + w' A w`` added up. ``axes``: the values to try
     per parameter (default :data:`CV_GRID`; :func:`check_grid`). Returns the best setting (a
     dict; ties to the first in the grid's order), the grid's points and the held-out root
-    mean squared error of each (DN).
+    mean squared error of each (DN). The grid's points are fitted on ``workers`` threads
+    (None or -1: every core; the errors are added up in the same order on any count).
     """
     axes = check_grid(axes, "axes")
     folds = [f for f in folds if f is not None]
@@ -271,23 +289,30 @@ def select_stats(folds, base, axes=None, *, guide=True):
     grid = list(itertools.product(*(axes[n] for n in names)))
     sse = np.zeros(len(grid))
     n_sites = 0
-    for j, held in enumerate(folds):
-        train = sum_stats([f for i, f in enumerate(folds) if i != j])
-        n_sites += int(sum(int(s[2].sum()) for s in held))
-        for k, ph in enumerate(base.geometry):
-            A, v, counts, _ = train[k]
-            Ah, vh, held_counts, yh = held[k]
-            nt = len(ph["taps"])
-            keep = slice(None) if guide else slice(0, nt)
-            A, v, Ah, vh = A[:, keep, keep], v[:, keep], Ah[:, keep, keep], vh[:, keep]
-            used = held_counts > 0                  # the other buckets add no error
-            Ah, vh = Ah[used], vh[used]
-            for g, (ridge, prior, cp) in enumerate(grid):
-                mult = np.ones(A.shape[1])
-                mult[:nt] = cp
-                W = _fit_buckets(A, v, counts, ridge, prior, mult, only=used)
-                sse[g] += yh.sum() - 2 * np.einsum("bi,bi->", W, vh) + \
-                    np.einsum("bi,bi->", (Ah @ W[:, :, None])[:, :, 0], W)
+    with ThreadPoolExecutor(min(check_workers(workers), len(grid))) as ex:
+        for j, held in enumerate(folds):
+            train = sum_stats([f for i, f in enumerate(folds) if i != j])
+            n_sites += int(sum(int(s[2].sum()) for s in held))
+            for k, ph in enumerate(base.geometry):
+                A, v, counts, _ = train[k]
+                Ah, vh, held_counts, yh = held[k]
+                nt = len(ph["taps"])
+                keep = slice(None) if guide else slice(0, nt)
+                A, v, Ah, vh = A[:, keep, keep], v[:, keep], Ah[:, keep, keep], vh[:, keep]
+                used = held_counts > 0                  # the other buckets add no error
+                Ah, vh = Ah[used], vh[used]
+
+                def error(setting, A=A, v=v, Ah=Ah, vh=vh, yh=yh, counts=counts, nt=nt,
+                          used=used):
+                    ridge, prior, cp = setting
+                    mult = np.ones(A.shape[1])
+                    mult[:nt] = cp
+                    W = _fit_buckets(A, v, counts, ridge, prior, mult, only=used)
+                    return yh.sum() - 2 * np.einsum("bi,bi->", W, vh) + \
+                        np.einsum("bi,bi->", (Ah @ W[:, :, None])[:, :, 0], W)
+
+                for g, e in enumerate(ex.map(error, grid)):
+                    sse[g] += e
     best = int(np.argmin(sse))
     rmse = np.sqrt(np.maximum(sse, 0) / max(n_sites, 1))
     return dict(zip(names, grid[best])), grid, rmse
