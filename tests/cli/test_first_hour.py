@@ -90,6 +90,7 @@ def test_evaluate_asks_for_raw_settings_in_words_it_accepts(tmp_path, capsys):
         raw = next(x for x in lines if "skipped frame" in x)
         assert "grey image" not in png and "--grey" not in png
         assert "a raw Bayer mosaic, not a grey photograph" in png
+        assert "is a one-channel 16-bit image" in png          # the file's, not a copy's
         assert "--shape" not in raw and "--phase" not in raw
         assert _advice_keys(png) == ["phase", "black_level", "white_level", "bit_depth_in"]
         assert _advice_keys(raw) == ["shape", "phase", "black_level", "white_level",

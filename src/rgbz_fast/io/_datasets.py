@@ -153,6 +153,7 @@ def _refuse_mosaic(img, location):
         a = a[..., 0]
     if a.ndim != 2 or min(a.shape) < MOSAIC_MIN_SIDE:
         return
+    bits = a.dtype.itemsize * 8                  # the file's samples, before the float copy
     a = a.astype(np.float64)
     means = [float(a[i::2, j::2].mean()) for i in (0, 1) for j in (0, 1)]
     if not max(means) > MOSAIC_RATIO * min(means):
@@ -165,7 +166,7 @@ def _refuse_mosaic(img, location):
         return
     name = Path(location).name
     raise ParameterError(
-        "dataset", f"{location} is a one-channel {a.dtype.itemsize * 8}-bit image whose four "
+        "dataset", f"{location} is a one-channel {bits}-bit image whose four "
         f"2x2 sites differ (means {', '.join(f'{m:.0f}' for m in means)}): a raw Bayer mosaic, "
         f"not a grey photograph; to evaluate {name} as raw, pass ", Setting("phase"), ", ",
         Setting("black_level"), " and ", Setting("white_level"), " (or ",
