@@ -66,8 +66,8 @@ typedef struct {
 
 /* w[c] for c in [c0, c1) from chi[c] (see the top), the neighbour's usability and distance:
    exp() by the vector port, arg[] its scratch. The port does not cover 0 < x < 2^-54: those
-   cells take exp() itself afterwards (tiny counts them; chi - 2F that close above 0 is
-   rare). */
+   cells take exp(-0) = 1 from it, which is exp(-x) there (glibc returns 1.0 + x, rounded
+   to 1.0 below 2^-54; tests/tof/test_filters.py puts chi one ulp above 2F). */
 #ifdef RGBZ_HAVE_EXP_VEC
 static inline __attribute__((always_inline)) void filter_weights_vec(
     const filter_args *p, ptrdiff_t b, ptrdiff_t c0, ptrdiff_t c1, ptrdiff_t row_n,
@@ -76,11 +76,9 @@ static inline __attribute__((always_inline)) void filter_weights_vec(
     const double k = 0.5 * p->inv_h2;
     const int64_t *restrict cpx = p->col_px, rad = p->radius_px;
     const uint8_t *restrict use = p->use + row_n + b;
-    ptrdiff_t tiny = 0;
     for (ptrdiff_t c = c0; c < c1; c++) {
         const double x = k * (chi[c] - bias);
         const int in = x >= 0x1p-54 && x < RGBZ_TOF_FILTER_CUT;   /* the port covers -x */
-        tiny += x > 0.0 && x < 0x1p-54;
         arg[c] = in ? -x : 0.0;
     }
     rgbz_exp_glibc_row(arg + c0, c1 - c0);
@@ -91,15 +89,6 @@ static inline __attribute__((always_inline)) void filter_weights_vec(
         const double wc = x > 0.0 ? (x < RGBZ_TOF_FILTER_CUT ? arg[c] : 0.0) : 1.0;
         w[c] = ok ? wc : 0.0;
     }
-    if (tiny)
-        for (ptrdiff_t c = c0; c < c1; c++) {
-            const double x = k * (chi[c] - bias);
-            if (x > 0.0 && x < 0x1p-54) {
-                const int64_t dc = cpx[c + b] - cpx[c];
-                const int ok = (dc >= -rad) & (dc <= rad) & (use[c] != 0);
-                w[c] = ok ? exp(-x) : 0.0;
-            }
-        }
 }
 #endif
 

@@ -8,7 +8,7 @@ so that ``asv compare`` shows the ratio of the two (target: C >= 5x NumPy).
 
 import numpy as np
 
-from .common import SKIP_SLOW
+from .common import SKIP_SLOW, astronaut, skip_if_slow, tile_to
 
 try:
     from rgbz_fast.simulation import SPEED_OF_LIGHT as C
@@ -102,8 +102,8 @@ class ToFNumPySuite:
 class ToFISPSuite:
     """The whole ToF ISP (``tof_depth``) on a Mask1 wall with a depth step, by denoise:
     the edge-aware default (two passes of the C bilateral kernel, window 9), the paper's
-    box mean (C since 2026-11-26, NumPy before; window 5) and none (the fused kernel). Frames: 512x768 (Kodak) and
-    4000x3000 (12 MP, 3 million Z measurements)."""
+    box mean (C since 2026-11-26, NumPy before; window 5) and none (the fused kernel).
+    Frames: 512x768 (Kodak) and 4000x3000 (12 MP, 3 million Z measurements)."""
     params = ([(512, 768), (3000, 4000)], ["bilateral", "box", "none"])
     param_names = ["shape", "denoise"]
     timeout = 600
@@ -114,8 +114,7 @@ class ToFISPSuite:
             from rgbz_fast.tof import denoise_phasors_bilateral, tof_depth  # noqa: F401
         except ImportError:
             raise NotImplementedError("no edge-aware ToF ISP in this commit") from None
-        if SKIP_SLOW and shape[0] * shape[1] > 1_000_000:
-            raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")
+        skip_if_slow(shape)
         rows, cols = (a * 2 for a in np.nonzero(np.ones((shape[0] // 2, shape[1] // 2), bool)))
         n = rows.size
         rng = np.random.default_rng(0)
@@ -150,10 +149,7 @@ class GuidedToFISPSuite:
             from rgbz_fast.tof import ToFISP, upsample_depth
         except ImportError:
             raise NotImplementedError("no colour-guided ToF ISP in this commit") from None
-        if SKIP_SLOW and shape[0] * shape[1] > 1_000_000:
-            raise NotImplementedError("skipped: ASV_SKIP_SLOW is set")
-        from .common import astronaut, tile_to
-
+        skip_if_slow(shape)
         img = tile_to(astronaut(), shape)
         xx = np.arange(shape[1])[None, :] * np.ones((shape[0], 1))
         frame = simulate(Scene(img, depth=np.where(xx < shape[1] // 2, 1.2, 1.9)), pattern,

@@ -123,8 +123,9 @@ def test_tap_variance_kernel_equals_the_numpy_reference(changes):
 @pytest.mark.parametrize("h", [8.0, 1.0, 0.05])
 def test_bilateral_weight_just_above_the_bias(h):
     """chi one ulp above 2F: x = (chi - 2F) / (2 h^2) falls below 2^-54 for h = 8, where the
-    vector exponential does not reach and exp() itself gives the weight (1.0); the weights
-    and means are the NumPy reference's on either side of that bound."""
+    vector exponential does not reach and the kernel takes exp(-0) = 1.0, exp(-x)'s own
+    value there; the weights and means are the NumPy reference's on either side of that
+    bound."""
     d = 1.4142135623730951                          # d * d = 2 + 2^-51 in doubles
     assert d * d - 2.0 == 2.0 ** -51
     i, q, v = np.array([[0.0, d]]), np.zeros((1, 2)), np.full((1, 2), 0.5)

@@ -34,8 +34,8 @@ import numpy as np
 from .. import _kernels
 from .._validate import check_choice, check_number, check_workers, merge_params
 from ._calibration import ToFCalibration, as_taps
-from ._filters import SiteGrid, denoise_phasors_bilateral
-from ._guided import check_guide, guided_flying_of, guided_run
+from ._filters import denoise_phasors_bilateral
+from ._guided import _layout_of, check_guide, guided_flying_of, guided_run
 from ._noise import tap_variance
 from ._result import ToFDepth
 from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
@@ -318,6 +318,10 @@ def _run(tof, p, nthreads, guide=None):
     if calibration is not None and calibration.dark is not None:
         taps = np.asarray(taps, np.float64) - calibration.dark[None]
     grid = None                     # the grid of the Z measurements, built once when needed
+
+    def site_grid():                # kept for a ToFTaps' own (read-only) sites: _layout_of
+        return _layout_of(tof.sites, tof.block, tof.shape).grid
+
     if denoise == "none" and calibration is None:
         depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
             taps, f, max_range=max_range, workers=nthreads)
@@ -332,7 +336,7 @@ def _run(tof, p, nthreads, guide=None):
             z = (i + 1j * q) * np.exp(-1j * calibration.deviations)
             i, q = np.ascontiguousarray(z.real), np.ascontiguousarray(z.imag)
         if denoise == "box":
-            grid = SiteGrid(tof.sites, tof.block)
+            grid = site_grid()
             i, q, count, (off_mean,) = denoise_phasors(i, q, grid, block=tof.block,
                                                        window=window, use=~saturated,
                                                        extra=(offset,), workers=nthreads)
@@ -340,7 +344,7 @@ def _run(tof, p, nthreads, guide=None):
             var = tap_variance(noise_offset, sensor, scale=2.0, count=count, workers=nthreads)
         elif denoise == "bilateral":
             var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
-            grid = SiteGrid(tof.sites, tof.block)
+            grid = site_grid()
             i, q, var, count = denoise_phasors_bilateral(
                 i, q, var, grid, block=tof.block, window=window, use=~saturated,
                 range_scale=p.range_scale, workers=nthreads)
@@ -351,7 +355,7 @@ def _run(tof, p, nthreads, guide=None):
                                                              calibration, nthreads)
     snr, sigma, reflectance, flags = validity(
         depth, residual, amp, var, saturated, sensor, tof.block, f,
-        grid if grid is not None else (lambda: SiteGrid(tof.sites, tof.block)),
+        grid if grid is not None else site_grid,
         min_snr=p.min_snr, min_amplitude=p.min_amplitude, max_sigma=p.max_sigma,
         max_residual=p.max_residual, flying_step=p.flying_step,
         min_reflectance=p.min_reflectance, max_range=max_range, workers=nthreads)
