@@ -1,6 +1,7 @@
 /*
  * demosaic.c -- Malvar-He-Cutler (2004) gradient-corrected linear demosaicing
- * and bilinear demosaicing of a Bayer CFA, as C kernels.
+ * and bilinear demosaicing of a Bayer CFA, as C kernels, and the entry point of every
+ * demosaic (rgbz_demosaic; Menon 2007 is demosaic_menon.c).
  *
  * H. S. Malvar, L. He, R. Cutler, "High-quality linear interpolation for
  * demosaicing of Bayer-patterned color images", Proc. ICASSP 2004. The filter
@@ -163,9 +164,12 @@ static ptrdiff_t *dm_colmap(ptrdiff_t cols, int mode)
 int rgbz_demosaic(int method, int in_type, int out_type, const void *src, void *dst,
                   ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase, int mode, int workers)
 {
-    if (method != RGBZ_DM_MALVAR && method != RGBZ_DM_BILINEAR) return RGBZ_EINVAL;
+    if (method != RGBZ_DM_MALVAR && method != RGBZ_DM_BILINEAR && method != RGBZ_DM_MENON)
+        return RGBZ_EINVAL;
     int st = dm_check(out_type, src, dst, rows, cols, phase, mode);
     if (st != RGBZ_OK) return st;
+    if (method == RGBZ_DM_MENON)
+        return rgbz_demosaic_menon(in_type, out_type, src, dst, rows, cols, phase, mode, workers);
     ptrdiff_t *colmap = dm_colmap(cols, mode);
     if (!colmap) return RGBZ_ENOMEM;
 #define DM_RUN_(s, T)                                                                       \

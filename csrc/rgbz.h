@@ -94,6 +94,8 @@ typedef enum rgbz_demosaic_mode {
 typedef enum rgbz_demosaic_method {
     RGBZ_DM_MALVAR = 0,    /* Malvar-He-Cutler 2004 */
     RGBZ_DM_BILINEAR = 1,  /* bilinear */
+    RGBZ_DM_MENON = 2,     /* Menon-Andriani-Calvagno 2007 (rgbz_demosaic only: the fused colour
+                              ISP has no Menon) */
 } rgbz_demosaic_method;
 
 /* operation counters (Table 1 categories plus the rest); RGBZ_NOPS counts them */
@@ -207,13 +209,17 @@ RGBZ_PRECISIONS(RGBZ_DECLARE_RECONSTRUCT_)
 
 /*
  * Demosaic of a Bayer CFA (demosaic.c): method an rgbz_demosaic_method, Malvar-He-Cutler
- * 2004 or bilinear (colour-demosaicing's demosaicing_CFA_Bayer_bilinear bit for bit).
+ * 2004, bilinear (colour-demosaicing's demosaicing_CFA_Bayer_bilinear bit for bit) or
+ * Menon 2007 (demosaic_menon.c: its demosaicing_CFA_Bayer_Menon2007 bit for bit).
  *   src rows x cols (in_type), dst rows x cols x 3 (out_type RGBZ_T_F32 or RGBZ_T_F64),
  *   phase: the 2x2 quad colours in raster order (R=0, G=1, B=2),
  *   mode: an rgbz_demosaic_mode.
  */
 int rgbz_demosaic(int method, int in_type, int out_type, const void *src, void *dst,
                   ptrdiff_t rows, ptrdiff_t cols, const int32_t *phase, int mode, int workers);
+/* Menon 2007 (demosaic_menon.c), which rgbz_demosaic calls with the arguments it checked */
+int rgbz_demosaic_menon(int in_type, int out_type, const void *src, void *dst, ptrdiff_t rows,
+                        ptrdiff_t cols, const int32_t *phase, int mode, int workers);
 
 /* Four-tap demodulation (tof.c): taps (F, 4, N) of in_type (an rgbz_type) ->
    phase in [0, 2 pi), amplitude, offset, each (F, N) float64. */

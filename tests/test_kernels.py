@@ -103,7 +103,7 @@ def test_tables_come_from_the_c_enums():
     assert tuple(_PRECISION_CODES) == PRECISIONS          # the names ReconstructParams accepts
     assert _EXP_CODES == {"libm": 0, "fast": 1}
     assert DEMOSAIC_MODES == {"reflect": 0, "period": 1}
-    assert _kernels.DEMOSAIC_KERNELS == {"malvar2004": 0, "bilinear": 1}
+    assert _kernels.DEMOSAIC_KERNELS == {"malvar2004": 0, "bilinear": 1, "menon2007": 2}
     assert set(_kernels.DEMOSAIC_KERNELS) <= set(DEMOSAIC_METHODS)
     assert opcount.CATEGORIES == ("add", "mul", "div", "exp", "abs", "cmp", "sqrt", "atan2")
     assert len(opcount.CATEGORIES) == _kernels.NOPS

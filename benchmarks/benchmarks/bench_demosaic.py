@@ -1,5 +1,5 @@
-"""Malvar 2004 and bilinear demosaic of the full Bayer CFA (C kernels; bilinear ran through
-colour-demosaicing before its kernel)."""
+"""Malvar 2004, bilinear and Menon 2007 demosaic of the full Bayer CFA (C kernels; bilinear
+and Menon 2007 ran through colour-demosaicing before their kernels)."""
 
 import numpy as np
 
@@ -20,6 +20,7 @@ class DemosaicSuite:
             from rgbz_fast.isp import demosaic
             self.fn = lambda: demosaic(self.cfa, "GRBG", "malvar2004", dtype=self.dtype)
             self.bilinear = lambda: demosaic(self.cfa, "GRBG", "bilinear", dtype=self.dtype)
+            self.menon = lambda: demosaic(self.cfa, "GRBG", "menon2007", dtype=self.dtype)
         except ImportError:
             try:
                 from rgbz_fast import _kernels
@@ -33,7 +34,7 @@ class DemosaicSuite:
                 _kernels.demosaic_malvar(self.cfa, out, phase, 0, 0)
                 return out
             self.fn = fn
-            self.bilinear = None
+            self.bilinear = self.menon = None
 
     def time_malvar(self, shape, dtype):
         self.fn()
@@ -50,3 +51,13 @@ class DemosaicSuite:
         if self.bilinear is None:
             raise NotImplementedError("no isp.demosaic in this commit")
         self.bilinear()
+
+    def time_menon(self, shape, dtype):
+        if self.menon is None:
+            raise NotImplementedError("no isp.demosaic in this commit")
+        self.menon()
+
+    def peakmem_menon(self, shape, dtype):
+        if self.menon is None:
+            raise NotImplementedError("no isp.demosaic in this commit")
+        self.menon()

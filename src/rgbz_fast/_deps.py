@@ -61,7 +61,7 @@ def _import_colour_demosaicing():
                 message=r"Please import `\w+` from the `scipy\.ndimage` namespace")
             import colour_demosaicing
     except ImportError as exc:  # pragma: no cover - a declared dependency
-        raise ImportError("demosaic: methods 'menon2007' and 'bilinear' need the "
+        raise ImportError("the reference demosaics (tests, rgbz-fast bench) need the "
                           "colour-demosaicing package (pip install colour-demosaicing)") from exc
     finally:
         np.set_printoptions(**opts)

@@ -112,9 +112,10 @@ def libm_exp_vectorised(bint single=False):
 
 def demosaic_kernel(int method, const frame_t[:, ::1] src, rgb_t[:, :, ::1] dst,
                     const int32_t[::1] phase, int mode, int workers):
-    """Demosaic (csrc/demosaic.c), method a code of DEMOSAIC_KERNELS (Malvar 2004, or bilinear:
-    colour-demosaicing's filters and scipy's order of the taps, bit for bit): Bayer CFA
-    (rows, cols) -> RGB (rows, cols, 3)."""
+    """Demosaic (csrc/demosaic.c), method a code of DEMOSAIC_KERNELS (Malvar 2004; bilinear:
+    colour-demosaicing's filters and scipy's order of the taps, bit for bit; Menon 2007,
+    csrc/demosaic_menon.c: colour-demosaicing's operations in its order, bit for bit): Bayer
+    CFA (rows, cols) -> RGB (rows, cols, 3)."""
     cdef int status
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int out_type = RGBZ_T_F32 if rgb_t is float else RGBZ_T_F64

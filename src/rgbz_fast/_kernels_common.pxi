@@ -69,6 +69,7 @@ cdef extern from "rgbz.h" nogil:
     cpdef enum rgbz_demosaic_method:
         RGBZ_DM_MALVAR
         RGBZ_DM_BILINEAR
+        RGBZ_DM_MENON
     cpdef enum rgbz_op:
         RGBZ_OP_ADD
         RGBZ_OP_MUL
@@ -209,8 +210,10 @@ PRECISIONS = _codes(rgbz_precision, "RGBZ_P_")
 TYPES = _codes(rgbz_type, "RGBZ_T_")
 EXP_MODES = _codes(rgbz_exp_mode, "RGBZ_EXP_")
 DEMOSAIC_MODES = _codes(rgbz_demosaic_mode, "RGBZ_DM_")
-#: the fused colour ISP's demosaic methods (ci_render's method): {name: code}
-DEMOSAIC_KERNELS = {"malvar2004": RGBZ_DM_MALVAR, "bilinear": RGBZ_DM_BILINEAR}
+#: the demosaic methods of demosaic_kernel: {name: code}; ci_render (the fused colour ISP)
+#: takes malvar2004 and bilinear
+DEMOSAIC_KERNELS = {"malvar2004": RGBZ_DM_MALVAR, "bilinear": RGBZ_DM_BILINEAR,
+                    "menon2007": RGBZ_DM_MENON}
 OP_CATEGORIES = _codes(rgbz_op, "RGBZ_OP_")
 
 

@@ -9,6 +9,8 @@
 * :mod:`_reference.tof` -- the ToF ISP's bilateral phasor mean (csrc/tof_filter.c).
 * :mod:`_reference.simulation` -- the sensor models' noise-free colour pixels and ideal
   ToF taps (csrc/sim.c), bit for bit.
+* :mod:`_reference.demosaic` -- colour-demosaicing's demosaics with the library's two
+  borders (csrc/demosaic.c, csrc/demosaic_menon.c: bilinear and Menon 2007 bit for bit).
 
 The ToF kernels are checked against the vectorised NumPy twin
 ``rgbz_fast._devtools._numpy_tof`` (the bench's baseline), bit for bit; the

@@ -1,5 +1,6 @@
-"""Bayer demosaic: the C Malvar 2004 and bilinear kernels against colour-demosaicing (Malvar
-to 1e-6, bilinear bit for bit), borders, dtypes, Menon 2007, and bad input."""
+"""Bayer demosaic: the C Malvar 2004, bilinear and Menon 2007 kernels against
+colour-demosaicing (Malvar to 1e-6, bilinear and Menon bit for bit), borders, dtypes, threads,
+and bad input."""
 
 from __future__ import annotations
 
@@ -9,9 +10,10 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 import pytest
 
+from _reference.demosaic import reference_demosaic  # noqa: E402
 from _support import load_kodak  # noqa: E402
 
-from rgbz_fast import bayer, mask1, mosaic  # noqa: E402
+from rgbz_fast import _kernels, bayer, mask1, mosaic  # noqa: E402
 from rgbz_fast.isp import DEMOSAIC_METHODS, demosaic
 from rgbz_fast.isp._demosaic import _colour_demosaicing  # noqa: E402
 
@@ -84,28 +86,92 @@ def test_period_mode_keeps_colours_at_the_border(cd):
                                atol=1e-12)
 
 
+@pytest.mark.parametrize("phase", PHASES)
 @pytest.mark.parametrize("method", ["menon2007", "bilinear"])
-def test_colour_demosaicing_methods_run_and_match(cd, method):
+def test_colour_demosaicing_methods_match_on_kodak(method, phase):
+    """Tolerance 0 on a real image (uint16, 11 bit), both borders, which agree ten pixels
+    (Menon 2007) from the edge."""
     img = load_kodak(23, crop=(64, 96))
-    cfa = mosaic(img, bayer("RGGB")).data
-    got = demosaic(cfa, "RGGB", method)
-    fn = {"menon2007": cd.demosaicing_CFA_Bayer_Menon2007,
-          "bilinear": cd.demosaicing_CFA_Bayer_bilinear}[method]
-    want = fn(cfa.astype(np.float64), "RGGB")
-    assert got.dtype == np.float32
-    np.testing.assert_allclose(got, want, rtol=1e-6, atol=1e-3)
-    # period borders: same interior
-    per = demosaic(cfa, "RGGB", method, mode="period", dtype=np.float64)
-    np.testing.assert_allclose(per[10:-10, 10:-10], want[10:-10, 10:-10], atol=1e-9)
+    cfa = mosaic(img, bayer(phase)).data
+    for mode in ("reflect", "period"):
+        want = reference_demosaic(cfa, phase, method, mode)
+        got = demosaic(cfa, phase, method, mode=mode, dtype=np.float64)
+        np.testing.assert_array_equal(got, want, err_msg=mode)
+    per = demosaic(cfa, phase, method, mode="period", dtype=np.float64)
+    np.testing.assert_array_equal(per[10:-10, 10:-10], want[10:-10, 10:-10])
+    assert demosaic(cfa, phase, method).dtype == np.float32
 
 
-def _period_reference(fn, cfa, phase, pad=8):
-    """``fn`` with the period border as the library gave it before the C kernel: the CFA
-    padded by whole periods, the reference's reflect border, cropped."""
-    from rgbz_fast.isp._demosaic import _period_index
-    ri, ci = _period_index(cfa.shape[0], pad), _period_index(cfa.shape[1], pad)
-    return fn(cfa[ri[:, None], ci[None, :]], phase)[pad:pad + cfa.shape[0],
-                                                    pad:pad + cfa.shape[1]]
+# -- Menon 2007 (csrc/demosaic_menon.c) --------------------------------------------------------
+MENON_SHAPES = [(2, 2), (2, 3), (3, 2), (3, 3), (2, 9), (9, 2), (4, 5), (5, 4), (6, 6), (7, 11),
+                (16, 17), (33, 46), (64, 97)]
+
+
+def _menon_cfa(shape, dtype, content, seed):
+    """A CFA of ``dtype``: uniform noise over the type's range (float64: signed, in
+    [-1000, 1000)), or smooth content with steps (a vertical, a horizontal and a diagonal
+    edge, whose directions the decision has to find) and a little noise."""
+    rng = np.random.default_rng(seed)
+    top = {np.uint8: 255.0, np.uint16: 2047.0, np.float32: 1.0, np.float64: 1000.0}[dtype]
+    if content == "noise":
+        v = rng.random(shape) * top
+        if dtype == np.float64:
+            v = v * 2 - top
+    else:
+        y, x = np.mgrid[:shape[0], :shape[1]].astype(np.float64)
+        v = 0.4 + 0.15 * np.sin(x / 3.1 + y / 4.7)
+        v += 0.25 * (x > shape[1] / 2) - 0.2 * (y > shape[0] / 3) + 0.15 * (x + y > shape[0])
+        v = np.clip(v + 0.02 * rng.standard_normal(shape), 0, 1) * top
+    return (np.round(v) if np.dtype(dtype).kind == "u" else v).astype(dtype)
+
+
+@pytest.mark.parametrize("content", ["noise", "edges"])
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+@pytest.mark.parametrize("shape", MENON_SHAPES)
+def test_menon_is_colour_demosaicing_bit_for_bit(shape, dtype, content):
+    """Tolerance 0: the kernel is colour-demosaicing's demosaicing_CFA_Bayer_Menon2007 (refining
+    step on) of the CFA as float64 bit for bit, every phase, both borders (period: the
+    reference on the CFA padded by 8 pixels by whole periods, cropped, as the library gave it
+    before the kernel), and its float32 output is that result rounded once. The kernel
+    repeats the reference's operations in its order (csrc/demosaic_menon.c), so a wrong tap,
+    weight, order or border rule shows; frames from 2x2 up, where the mirror of an axis of 2
+    or 3 repeats it and every pixel is a border pixel. (Not the signs of zeros: the kernel
+    leaves out the taps of weight 0, which add +-0.)"""
+    raw = _menon_cfa(shape, dtype, content, seed=sum(shape) + len(content))
+    for phase in PHASES:
+        for mode in ("reflect", "period"):
+            want = reference_demosaic(raw, phase, "menon2007", mode)
+            for out in (np.float32, np.float64):
+                got = demosaic(raw, phase, "menon2007", mode=mode, dtype=out)
+                assert got.dtype == out and got.shape == shape + (3,)
+                np.testing.assert_array_equal(got, want.astype(out),
+                                              err_msg=f"{phase} {mode} {np.dtype(out)}")
+
+
+@pytest.mark.parametrize("shape", [(2, 5), (9, 13), (37, 21)])
+def test_menon_any_thread_count_gives_the_reference(shape):
+    """Tolerance 0 with 1 to 5 threads on small frames, through the kernel itself, which takes
+    the count as given (demosaic gives a thread 2**18 pixels at least): bands of 1 row and
+    up, whose margins reach the frame's borders."""
+    raw = _menon_cfa(shape, np.uint16, "edges", seed=7)
+    codes = np.array([1, 0, 2, 1], np.int32)
+    for mode in ("reflect", "period"):
+        want = reference_demosaic(raw, "GRBG", "menon2007", mode)
+        for workers in range(1, 6):
+            got = np.empty(shape + (3,))
+            _kernels.demosaic_kernel(_kernels.DEMOSAIC_KERNELS["menon2007"], raw, got, codes,
+                                     _kernels.DEMOSAIC_MODES[mode], workers)
+            np.testing.assert_array_equal(got, want, err_msg=f"{mode} {workers}")
+
+
+def test_menon_one_two_three_threads_give_the_same_image():
+    """Tolerance 0 between 1, 2 and 3 threads on a frame of 3 threads' worth, and against
+    the reference."""
+    raw = _menon_cfa((1001, 800), np.uint16, "edges", seed=8)
+    want = reference_demosaic(raw, "RGGB", "menon2007")
+    for workers in (1, 2, 3):
+        got = demosaic(raw, "RGGB", "menon2007", dtype=np.float64, workers=workers)
+        np.testing.assert_array_equal(got, want, err_msg=str(workers))
 
 
 @pytest.mark.parametrize("shape", [(2, 2), (3, 5), (7, 2), (2, 9), (33, 46), (64, 97)])
@@ -120,8 +186,7 @@ def test_bilinear_is_colour_demosaicing_bit_for_bit(cd, shape, dtype):
            else (rng.random(shape) * 200).astype(dtype))
     for phase in PHASES:
         want = cd.demosaicing_CFA_Bayer_bilinear(raw.astype(np.float64), phase)
-        per = _period_reference(cd.demosaicing_CFA_Bayer_bilinear, raw.astype(np.float64),
-                                phase)
+        per = reference_demosaic(raw, phase, "bilinear", "period")
         for out in (np.float32, np.float64):
             for mode, ref in (("reflect", want), ("period", per)):
                 got = demosaic(raw, phase, "bilinear", mode=mode, dtype=out)
@@ -157,7 +222,7 @@ def test_flat_cfa_gives_flat_image_with_period_borders():
     np.testing.assert_allclose(demosaic(cfa), 321, rtol=1e-6)
 
 
-@pytest.mark.parametrize("method", ["malvar2004", "bilinear"])
+@pytest.mark.parametrize("method", ["malvar2004", "bilinear", "menon2007"])
 def test_pattern_object_as_phase_and_workers_do_not_change_the_result(method):
     raw = np.random.default_rng(4).random((1100, 480))        # two threads' worth
     a = demosaic(raw, bayer("GBRG"), method, workers=1)

@@ -33,7 +33,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _kernels
 from .._frame import RawFrame, frame_inputs
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
@@ -360,10 +359,10 @@ class ColourISP:
     def _fused(self, data):
         """Whether the stages after the input checks run as the C passes of
         :mod:`._fused` (the same image): the Malvar or bilinear demosaic on a frame it takes
-        (Menon 2007 runs through colour-demosaicing on the stages). A float
+        (Menon 2007, whose kernel is no fused pass, runs on the stages). A float
         frame without the white balance's clip stays on the stages, which refuse balanced
         values that overflow the working precision (the C passes would carry them on)."""
-        return (self.demosaicing.method in _kernels.DEMOSAIC_KERNELS
+        return (self.demosaicing.method in _fused.DEMOSAICS
                 and data.dtype in FRAME_DTYPES
                 and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2
                 and (self.white_balance.clip or data.dtype.kind != "f"))

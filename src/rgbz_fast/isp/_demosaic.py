@@ -14,8 +14,10 @@ Methods
     ``mode="reflect"``.
 ``"menon2007"``
     Menon, Andriani & Calvagno's directional filtering with a posteriori
-    decision and refining step, through colour-demosaicing (pure NumPy; the
-    quality option, about 20x slower).
+    decision and refining step (the quality option), as a C kernel (threaded):
+    colour-demosaicing's ``demosaicing_CFA_Bayer_Menon2007`` bit for bit (the
+    kernel repeats its operations in its order, borders included), in either
+    border mode; about 1.5 to 2 times the time of Malvar's kernel.
 ``"bilinear"``
     Bilinear interpolation (a baseline), as a C kernel (threaded): colour-demosaicing's
     ``demosaicing_CFA_Bayer_bilinear`` bit for bit (its filters' weights are powers of
@@ -46,13 +48,8 @@ DEMOSAIC_METHODS = ("malvar2004", "menon2007", "bilinear")
 #: {name: code} from the C enum rgbz_demosaic_mode (csrc/rgbz.h)
 DEMOSAIC_MODES = dict(_kernels.DEMOSAIC_MODES)
 
-
-# margin added around the CFA for Menon 2007 (colour-demosaicing) in "period" mode: more
-# than the support of Menon 2007 (5-tap directional filters, 3x3 decision window,
-# 5-tap refining), so that the interior never sees colour-demosaicing's own reflect border
-_PERIOD_PAD = 8
-
-
+#: colour-demosaicing, which no method calls any more: the reference of the kernels in the
+#: tests (tests/_reference/demosaic.py) and of tools/bilinear_speed.py
 _colour_demosaicing = import_colour_demosaicing
 
 
@@ -68,16 +65,6 @@ def _bayer_phase(phase):
     if not isinstance(phase, str) or phase.upper() not in BAYER_PHASES:
         raise ValueError(f"phase: expected one of {', '.join(BAYER_PHASES)}, got {phase!r}")
     return phase.upper()
-
-
-def _period_index(n, pad):
-    """Indices of a CFA axis of length n padded by `pad`, shifting by whole periods (2)."""
-    i = np.arange(-pad, n + pad)
-    low = i < 0
-    i[low] += 2 * ((-i[low] + 1) // 2)
-    high = i >= n
-    i[high] -= 2 * ((i[high] - n + 2) // 2)
-    return i
 
 
 def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=None,
@@ -98,24 +85,24 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         See the module docstring. The same method must be used for the
         reference and the RGB-Z path.
     mode : {"reflect", "period"}
-        Borders. ``"reflect"``: scipy.ndimage's half-sample mirror, exactly as
-        colour-demosaicing (a mirrored pixel may change colour, as in the
-        reference implementation). ``"period"``: a tap outside the frame is
+        Borders. ``"reflect"``: colour-demosaicing's own, exactly: scipy.ndimage's
+        half-sample mirror (Malvar, bilinear; a mirrored pixel may change colour, as in
+        the reference implementation), the whole-sample mirror of each intermediate
+        plane (Menon 2007). ``"period"``: a tap outside the frame is
         moved back by whole Bayer periods, so it keeps its colour (the
         library's convention, docs/guide/interpretation.md). Both agree two pixels (Malvar),
-        one (bilinear) or more from the border. Menon 2007 (colour-demosaicing) gets the
-        period border by padding the CFA by 8 pixels this way and cropping.
+        one (bilinear), ten (Menon 2007) or more from the border. Menon 2007's period border is
+        colour-demosaicing's result on the CFA padded by 8 pixels this way, cropped.
     dtype : {None, float32, float64}
         Output dtype. None: float64 for float64 input, float32 otherwise.
     workers : int, optional
-        Threads of the C kernel at most (None or -1: all cores; one per 2**18
-        pixels at most). The result does not depend on it. Ignored by Menon
-        2007 (colour-demosaicing).
+        Threads of the C kernel at most, every method (None or -1: all cores;
+        one per 2**18 pixels at most). The result does not depend on it.
 
     Returns
     -------
     rgb : ndarray, shape (rows, cols, 3)
-        Linear RGB in the CFA's scale, not clipped: Malvar's filters
+        Linear RGB in the CFA's scale, not clipped: Malvar's and Menon's filters
         overshoot at edges, and the values may leave [0, max].
 
     Raises
@@ -148,8 +135,10 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     nthreads = check_workers(workers)
     if a.dtype.kind == "f":
         # finite input, finite output: the filters add up to 16 weighted taps and overshoot
-        # the input range 4.5-fold, so beyond 1/32 of the largest float of the output (and
-        # of the float64 arithmetic) a value would overflow to inf, or NaN (inf - inf)
+        # the input range 4.5-fold (Malvar's), so beyond 1/32 of the largest float of the
+        # output (and of the float64 arithmetic) a value would overflow to inf, or NaN
+        # (inf - inf); Menon 2007 keeps the limit it had with colour-demosaicing
+        # (tests/test_extremes.py)
         limit = float(np.finfo(out_dtype).max) / 32
         lo, hi = finite_range(a, "cfa")
         top = max(-lo, hi)
@@ -159,24 +148,10 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
                              + (", pass dtype=float64 or rescale the CFA"
                                 if out_dtype == np.float32 else ", rescale the CFA"))
 
-    if method in _kernels.DEMOSAIC_KERNELS:
-        src = a if a.dtype in FRAME_DTYPES else a.astype(np.float64)
-        src = np.ascontiguousarray(src)
-        out = np.empty(a.shape + (3,), out_dtype)
-        codes = np.array([CHANNELS.index(c) for c in ph], np.int32)
-        _kernels.demosaic_kernel(_kernels.DEMOSAIC_KERNELS[method], src, out, codes,
-                                 DEMOSAIC_MODES[mode], kernel_threads(nthreads, src.size))
-        return out
-
-    fn = _colour_demosaicing().demosaicing_CFA_Bayer_Menon2007
-    src = a.astype(np.float64)
-    if mode == "period":
-        pad = _PERIOD_PAD
-        ri = _period_index(a.shape[0], pad)
-        ci = _period_index(a.shape[1], pad)
-        padded = src[ri[:, None], ci[None, :]]
-        # an even number of padding pixels keeps the padded CFA's Bayer arrangement
-        rgb = fn(padded, ph)[pad:pad + a.shape[0], pad:pad + a.shape[1]]
-    else:
-        rgb = fn(src, ph)
-    return np.ascontiguousarray(rgb, dtype=out_dtype)
+    src = a if a.dtype in FRAME_DTYPES else a.astype(np.float64)
+    src = np.ascontiguousarray(src)
+    out = np.empty(a.shape + (3,), out_dtype)
+    codes = np.array([CHANNELS.index(c) for c in ph], np.int32)
+    _kernels.demosaic_kernel(_kernels.DEMOSAIC_KERNELS[method], src, out, codes,
+                             DEMOSAIC_MODES[mode], kernel_threads(nthreads, src.size))
+    return out

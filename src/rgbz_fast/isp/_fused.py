@@ -1,8 +1,9 @@
 """The colour chain without its stages, in C passes over the frame (csrc/colour_isp.c).
 
 :meth:`ColourISP.run` and :meth:`ColourISP.render` take this path when no stage is
-kept (``return_stages=False``) and the demosaic has a C kernel (Malvar, bilinear); the stage
-functions stay the reference and the path of ``return_stages``. Three passes:
+kept (``return_stages=False``) and the demosaic is one of :data:`DEMOSAICS` (Malvar,
+bilinear; Menon 2007 has a kernel of its own, not a pass of these); the stage functions stay
+the reference and the path of ``return_stages``. Three passes:
 
 1. tests 1 and 2 of the defect detection on every colour pixel (:func:`defect_fixes`);
    test 3 and the median fixes of the few candidates stay in NumPy
@@ -32,6 +33,10 @@ from ._encode_table import encode_thresholds
 from ._stages import _check_gains, _gains_from_sums
 
 __all__ = ["defect_fixes", "gains", "render"]
+
+#: the demosaic methods of the render pass (ci_render's method, a code of
+#: _kernels.DEMOSAIC_KERNELS)
+DEMOSAICS = ("malvar2004", "bilinear")
 
 #: candidates the first call of the defect pass has room for (more: a second call)
 _CANDIDATE_ROOM = 1 << 14

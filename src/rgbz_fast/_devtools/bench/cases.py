@@ -133,18 +133,23 @@ def build_cases(shape, ref_crop, ref=None):
     for prec in PRECISIONS:
         recon_case("edi_rows", "rows", prec)
 
-    def malvar_build(out_dtype):
+    # colour-demosaicing's function of each demosaic: the NumPy reference of the bench
+    reference_names = {"malvar2004": "demosaicing_CFA_Bayer_Malvar2004",
+                       "menon2007": "demosaicing_CFA_Bayer_Menon2007"}
+
+    def demosaic_build(method, out_dtype):
         def build():
             cfa = frame("bayer").data
             from ...isp import demosaic as _dm
 
             def fn(w):
-                _dm(cfa, "GRBG", "malvar2004", dtype=out_dtype, workers=w)
+                _dm(cfa, "GRBG", method, dtype=out_dtype, workers=w)
             ref_fn = None
             try:
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore", DeprecationWarning)
-                    from colour_demosaicing import demosaicing_CFA_Bayer_Malvar2004 as _cm
+                    import colour_demosaicing
+                _cm = getattr(colour_demosaicing, reference_names[method])
                 crop = cfa[:cr[0], :cr[1]].astype(np.float64)
 
                 def ref_fn():
@@ -156,10 +161,12 @@ def build_cases(shape, ref_crop, ref=None):
             return fn, ref_fn, cr[0] * cr[1]
         return build
 
-    for dt in (np.float32, np.float64):
-        cases.append(("demosaic malvar2004", dict(kernel="demosaic", method="malvar2004",
-                                                  pattern="bayer", precision=np.dtype(dt).name,
-                                                  exp=None), malvar_build(dt)))
+    for method in ("malvar2004", "menon2007"):
+        for dt in (np.float32, np.float64):
+            cases.append((f"demosaic {method}", dict(kernel="demosaic", method=method,
+                                                     pattern="bayer",
+                                                     precision=np.dtype(dt).name, exp=None),
+                          demosaic_build(method, dt)))
 
     from ... import _kernels
 
