@@ -1,6 +1,8 @@
 /*
  * colour_isp.c -- the fused colour ISP (see colour_isp.h): the defect candidates, the
- * grey-world sums and the render (white balance .. output) of rgbz_fast.isp.ColourISP.run.
+ * grey-world sums and the render (white balance .. output) of rgbz_fast.isp.ColourISP.run;
+ * for Menon 2007, the render's white balance and its tail (matrix .. output) as two passes
+ * around that demosaic's own kernel.
  *
  * Bit for bit the NumPy stages' results (colour_isp.h lists the two exceptions): the
  * operations of each stage in its order and type, compiled with -ffp-contract=off
@@ -8,7 +10,8 @@
  * the sRGB encoding is the thresholds of isp._encode_table (found with the stages' own
  * encoding as the oracle), so the power never runs here.
  *
- * Threads: row bands, one per thread; one thread per 2^18 pixels at most. The results do not
+ * Threads: row bands (pixel bands for the tail), one per thread; one thread per 2^18 pixels
+ * at most. The results do not
  * depend on the thread count (the candidates' order does; the caller does not use it).
  */
 #include <math.h>
@@ -185,6 +188,22 @@ static int ci_cpu_avx2(void)
 #ifndef CI_CLONES_FMA
 #define CI_CLONES_FMA
 #endif
+
+/* pixels per chunk of rgbz_ci_encode_rgb (its planes stay in cache) */
+enum { CI_CHUNK = 4096 };
+
+/* the calling thread's band [*lo, *hi) of n items in a parallel region: n t / nt .. n (t + 1)
+   / nt (all of them without OpenMP) */
+static void ci_band(ptrdiff_t n, ptrdiff_t *lo, ptrdiff_t *hi)
+{
+    *lo = 0;
+    *hi = n;
+#ifdef _OPENMP
+    const ptrdiff_t t = omp_get_thread_num(), nt = omp_get_num_threads();
+    *lo = n * t / nt;
+    *hi = n * (t + 1) / nt;
+#endif
+}
 
 /* one thread per 2^18 pixels at most (MIN_PIXELS_PER_THREAD of the Python layer) */
 static int ci_threads(int workers, ptrdiff_t n)
@@ -491,6 +510,29 @@ CI_CLONES static void ci_interleave16(const uint16_t *code, ptrdiff_t h, ptrdiff
         o[6 * n] = c0[n];
         o[6 * n + 1] = c1[n];
         o[6 * n + 2] = c2[n];
+    }
+}
+
+/* n pixels' codes from 3 planes of h codes (R, G, B), interleaved (rgbz_ci_encode_rgb) */
+CI_CLONES static void ci_interleave3_8(const uint16_t *code, ptrdiff_t h, ptrdiff_t n,
+                                       uint8_t *restrict o)
+{
+    const uint16_t *c0 = code, *c1 = code + h, *c2 = code + 2 * h;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        o[3 * j] = (uint8_t)c0[j];
+        o[3 * j + 1] = (uint8_t)c1[j];
+        o[3 * j + 2] = (uint8_t)c2[j];
+    }
+}
+
+CI_CLONES static void ci_interleave3_16(const uint16_t *code, ptrdiff_t h, ptrdiff_t n,
+                                        uint16_t *restrict o)
+{
+    const uint16_t *c0 = code, *c1 = code + h, *c2 = code + 2 * h;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        o[3 * j] = c0[j];
+        o[3 * j + 1] = c1[j];
+        o[3 * j + 2] = c2[j];
     }
 }
 

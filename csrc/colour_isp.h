@@ -15,6 +15,14 @@
  *                              the codes come from the thresholds of isp._encode_table (the
  *                              smallest value of each code) instead of a power.
  *
+ * Menon 2007 is no row pass of the render (its stages read whole planes); its chain runs
+ * the defect and sums passes, then
+ *
+ *   rgbz_ci_balance_<RS>       the white balance of the render into a REAL frame;
+ *   (rgbz_demosaic_menon)      the demosaic, its own kernel (demosaic_menon.c);
+ *   rgbz_ci_encode_rgb_<RS>    the render's tail on the RGB image: colour matrix, clip and
+ *                              the codes of the same thresholds, in chunks of pixels.
+ *
  * Every pass gives the results of the NumPy stages bit for bit (tests/isp/test_fused.py),
  * except: the sums of a float CFA (added in another order: a relative difference of order
  * 1e-16) and a colour matrix other than the identity (NumPy's matmul may round differently:
@@ -79,5 +87,28 @@ int rgbz_ci_render_f64(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
                        const int32_t *phase, int mode, int method, const double *scale,
                        double black, int clip, const double *matrix, const double *thresholds,
                        int bits, void *out, int workers);
+
+/*
+ * The white balance of rgbz_ci_render alone: out[y][x] = clip?(((REAL) src[y][x] - black) *
+ * scale[colour]) (isp.white_balance bit for bit), out rows x cols of REAL. At least 1 x 1.
+ */
+int rgbz_ci_balance_f32(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                        const int32_t *phase, const float *scale, float black, int clip,
+                        float *out, int workers);
+int rgbz_ci_balance_f64(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                        const int32_t *phase, const double *scale, double black, int clip,
+                        double *out, int workers);
+
+/*
+ * The tail of rgbz_ci_render on npix pixels of linear RGB (rgb: npix x 3, interleaved):
+ *   lin = clip(matrix @ rgb, 0, 1), matrix NULL: identity  (isp.correct_colour)
+ *   code = number of thresholds[1 .. 2^bits - 1] <= lin    (isp._encode_table)
+ * into out (npix x 3, uint8 for bits 8, else uint16); the same code (ci_matrix, ci_encode) as
+ * the render. For an image that another kernel demosaiced (Menon 2007).
+ */
+int rgbz_ci_encode_rgb_f32(const float *rgb, ptrdiff_t npix, const float *matrix,
+                           const float *thresholds, int bits, void *out, int workers);
+int rgbz_ci_encode_rgb_f64(const double *rgb, ptrdiff_t npix, const double *matrix,
+                           const double *thresholds, int bits, void *out, int workers);
 
 #endif /* RGBZ_COLOUR_ISP_H */

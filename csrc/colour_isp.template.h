@@ -287,6 +287,16 @@ static void RGBZ_CAT(ci_encode, RS)(const RGBZ_CAT(ci_codes, RS) *tab, const REA
     }
 }
 
+/* The tail of the render on n pixels of the planes pl (R, G, B): the colour matrix m (NULL:
+   none) in place, then the codes into the planes code, code + h and code + 2 h. For each
+   parity of a row (ci_row) and each chunk of an RGB image (rgbz_ci_encode_rgb). */
+static void RGBZ_CAT(ci_finish, RS)(const REAL *m, const RGBZ_CAT(ci_codes, RS) *codes,
+                                    REAL *const *pl, uint16_t *code, ptrdiff_t h, ptrdiff_t n)
+{
+    if (m) RGBZ_CAT(ci_matrix, RS)(m, pl[0], pl[1], pl[2], n);
+    for (int k = 0; k < 3; k++) RGBZ_CAT(ci_encode, RS)(codes, pl[k], code + k * h, n);
+}
+
 /* Output row y from the five white-balanced rows rp[0..4] (rows y-2 .. y+2 after the border
    rule, as planes): the demosaic per parity into the planar scratch lin (6 planes of h
    values: R, G, B of the even columns, then of the odd ones), the matrix, the codes (code,
@@ -334,18 +344,36 @@ static void RGBZ_CAT(ci_row, RS)(double *const *rp, ptrdiff_t y, ptrdiff_t cols,
         }
     }
     const ptrdiff_t nn[2] = {(cols + 1) / 2, cols / 2};
-    for (int p = 0; p < 2; p++) {
-        if (a->has_matrix) RGBZ_CAT(ci_matrix, RS)(a->m, par[p][0], par[p][1], par[p][2], nn[p]);
-        for (int k = 0; k < 3; k++)
-            RGBZ_CAT(ci_encode, RS)(&a->codes, par[p][k], code + (3 * p + k) * h, nn[p]);
-    }
+    for (int p = 0; p < 2; p++)
+        RGBZ_CAT(ci_finish, RS)(a->has_matrix ? a->m : NULL, &a->codes, par[p],
+                                code + 3 * p * h, h, nn[p]);
     if (bits == 8) ci_interleave8(code, h, cols, (uint8_t *)out + 3 * y * cols);
     else ci_interleave16(code, h, cols, (uint16_t *)out + 3 * y * cols);
+}
+
+/* the n pixels of interleaved RGB at rgb into 3 planes of h values at lin (R, G, B) */
+CI_CLONES static void RGBZ_CAT(ci_deinterleave, RS)(const REAL *restrict rgb, ptrdiff_t n,
+                                                    ptrdiff_t h, REAL *restrict lin)
+{
+    REAL *restrict p0 = lin, *restrict p1 = lin + h, *restrict p2 = lin + 2 * h;
+    for (ptrdiff_t j = 0; j < n; j++) {
+        p0[j] = rgb[3 * j];
+        p1[j] = rgb[3 * j + 1];
+        p2[j] = rgb[3 * j + 2];
+    }
 }
 
 #define RGBZ_TYPE_TEMPLATE "colour_isp.template.h"
 #include "rgbz_each_type.h"
 #undef RGBZ_TYPE_TEMPLATE
+
+/* 2^bits non-decreasing thresholds in [0, 1], the first 0 */
+static int RGBZ_CAT(ci_thresholds_ok, RS)(const REAL *thresholds, int bits)
+{
+    for (int i = 1; i < (1 << bits); i++)
+        if (!(thresholds[i] >= thresholds[i - 1]) || !(thresholds[i] <= (REAL)1)) return 0;
+    return thresholds[0] == (REAL)0;
+}
 
 int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
                                  const int32_t *phase, int mode, int method, const REAL *scale,
@@ -366,10 +394,7 @@ int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, p
     for (int i = 0; i < 3; i++) a.scale[i] = scale[i];
     a.has_matrix = matrix != NULL;
     for (int i = 0; i < 9; i++) a.m[i] = matrix ? matrix[i] : (REAL)(i % 4 == 0);
-    for (int i = 1; i < (1 << bits); i++)
-        if (!(thresholds[i] >= thresholds[i - 1]) || !(thresholds[i] <= (REAL)1))
-            return RGBZ_EINVAL;
-    if (thresholds[0] != (REAL)0) return RGBZ_EINVAL;
+    if (!RGBZ_CAT(ci_thresholds_ok, RS)(thresholds, bits)) return RGBZ_EINVAL;
     ptrdiff_t *colmap = (ptrdiff_t *)malloc((size_t)(cols + 4) * sizeof *colmap);
     void *codes = RGBZ_CAT(ci_build_codes, RS)(&a.codes, thresholds, bits);
     if (!colmap || !codes) {
@@ -389,6 +414,78 @@ int RGBZ_CAT(rgbz_ci_render, RS)(int in_type, const void *src, ptrdiff_t rows, p
     return st;
 }
 
+/* white balance alone: ci_balance's arithmetic (isp.white_balance's) into a plain REAL frame,
+   bands of rows per thread */
+int RGBZ_CAT(rgbz_ci_balance, RS)(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                                  const int32_t *phase, const REAL *scale, REAL black,
+                                  int clip, REAL *out, int workers)
+{
+    if (!src || !out || !phase || !scale || rows < 1 || cols < 1 || !ci_bayer_phase(phase) ||
+        in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64)
+        return RGBZ_EINVAL;
+    const int nt = ci_threads(workers, rows * cols);
+    int bad = 0;
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt) reduction(|:bad)
+#endif
+    {
+        ptrdiff_t y0, y1;
+        ci_band(rows, &y0, &y1);
+        int st = RGBZ_OK;
+#define CI_BALANCE_(s, T) RGBZ_CAT3(ci_balance_rows, RS, s)((const T *)src, y0, y1, cols, \
+                                                            phase, scale, black, clip, out)
+        RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_BALANCE_, st = RGBZ_EINVAL)
+#undef CI_BALANCE_
+        bad |= st != RGBZ_OK;
+    }
+    return bad ? RGBZ_EINVAL : RGBZ_OK;
+}
+
+/* the render's tail on an RGB image: chunks of CI_CHUNK pixels into 3 planes
+   (ci_deinterleave), ci_finish (matrix, codes), interleaved back; bands of pixels per thread */
+int RGBZ_CAT(rgbz_ci_encode_rgb, RS)(const REAL *rgb, ptrdiff_t npix, const REAL *matrix,
+                                     const REAL *thresholds, int bits, void *out, int workers)
+{
+    if (npix < 0 || !thresholds || (bits != 8 && bits != 16) || (npix > 0 && (!rgb || !out)))
+        return RGBZ_EINVAL;
+    if (!RGBZ_CAT(ci_thresholds_ok, RS)(thresholds, bits)) return RGBZ_EINVAL;
+    if (npix == 0) return RGBZ_OK;
+    RGBZ_CAT(ci_codes, RS) codes;
+    void *block = RGBZ_CAT(ci_build_codes, RS)(&codes, thresholds, bits);
+    if (!block) return RGBZ_EINVAL;         /* as rgbz_ci_render */
+    REAL m[9];
+    for (int i = 0; i < 9; i++) m[i] = matrix ? matrix[i] : (REAL)(i % 4 == 0);
+    const int nt = ci_threads(workers, npix);
+    int bad = 0;
+    (void)nt;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt) reduction(|:bad)
+#endif
+    {
+        const ptrdiff_t h = CI_CHUNK;
+        REAL *lin = (REAL *)malloc((size_t)(3 * h) * sizeof *lin);
+        uint16_t *code = (uint16_t *)malloc((size_t)(3 * h) * sizeof *code);
+        ptrdiff_t p0, p1;
+        ci_band(npix, &p0, &p1);
+        if (!lin || !code) {
+            bad = 1;
+        } else {
+            REAL *const pl[3] = {lin, lin + h, lin + 2 * h};
+            for (ptrdiff_t s = p0; s < p1; s += CI_CHUNK) {
+                const ptrdiff_t n = p1 - s < CI_CHUNK ? p1 - s : CI_CHUNK;
+                RGBZ_CAT(ci_deinterleave, RS)(rgb + 3 * s, n, h, lin);
+                RGBZ_CAT(ci_finish, RS)(matrix ? m : NULL, &codes, pl, code, h, n);
+                if (bits == 8) ci_interleave3_8(code, h, n, (uint8_t *)out + 3 * s);
+                else ci_interleave3_16(code, h, n, (uint16_t *)out + 3 * s);
+            }
+        }
+        free(lin);
+        free(code);
+    }
+    free(block);
+    return bad ? RGBZ_ENOMEM : RGBZ_OK;
+}
 #else
 /* ---------------------------------------------------------------- per element type */
 
@@ -460,14 +557,8 @@ static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff
         REAL *lin = (REAL *)malloc((size_t)(6 * h) * sizeof *lin);
         uint16_t *code = (uint16_t *)malloc((size_t)(6 * h) * sizeof *code);
         ptrdiff_t tag[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
-        ptrdiff_t y0 = 0, y1 = rows;
-#ifdef _OPENMP
-        {
-            const ptrdiff_t t = omp_get_thread_num(), n = omp_get_num_threads();
-            y0 = rows * t / n;
-            y1 = rows * (t + 1) / n;
-        }
-#endif
+        ptrdiff_t y0, y1;
+        ci_band(rows, &y0, &y1);
         if (!ring || !lin || !code) {
             bad = 1;
         } else {
@@ -490,5 +581,47 @@ static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff
         free(code);
     }
     return bad ? RGBZ_ENOMEM : RGBZ_OK;
+}
+
+/* isp.white_balance of rows y0 .. y1 - 1 into out (rows x cols of REAL): the stage's
+   operations in its order and type, as ci_balance: (REAL) v - black, times the scale of the
+   pixel's colour, clipped to [0, 1] when clip */
+CI_CLONES static void RGBZ_CAT3(ci_balance_rows, RS, IS)(const IN_T *src, ptrdiff_t y0,
+                                                       ptrdiff_t y1, ptrdiff_t cols,
+                                                       const int32_t *phase, const REAL *scale,
+                                                       REAL black, int clip, REAL *out)
+{
+    const ptrdiff_t n = cols / 2;
+    for (ptrdiff_t y = y0; y < y1; y++) {
+        const IN_T *restrict row = src + y * cols;
+        REAL *restrict o = out + y * cols;
+        const int32_t *ph = phase + 2 * (y & 1);
+        const REAL s0 = scale[ph[0]], s1 = scale[ph[1]];
+        if (clip) {
+            for (ptrdiff_t j = 0; j < n; j++) {
+                REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
+                u = u - black;
+                w = w - black;
+                u = u * s0;
+                w = w * s1;
+                o[2 * j] = RGBZ_CAT(ci_clip01, RS)(u);
+                o[2 * j + 1] = RGBZ_CAT(ci_clip01, RS)(w);
+            }
+        } else {
+            for (ptrdiff_t j = 0; j < n; j++) {
+                REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
+                u = u - black;
+                w = w - black;
+                o[2 * j] = u * s0;
+                o[2 * j + 1] = w * s1;
+            }
+        }
+        if (cols & 1) {
+            REAL u = (REAL)row[cols - 1];
+            u = u - black;
+            u = u * s0;
+            o[cols - 1] = clip ? RGBZ_CAT(ci_clip01, RS)(u) : u;
+        }
+    }
 }
 #endif

@@ -94,8 +94,9 @@ typedef enum rgbz_demosaic_mode {
 typedef enum rgbz_demosaic_method {
     RGBZ_DM_MALVAR = 0,    /* Malvar-He-Cutler 2004 */
     RGBZ_DM_BILINEAR = 1,  /* bilinear */
-    RGBZ_DM_MENON = 2,     /* Menon-Andriani-Calvagno 2007 (rgbz_demosaic only: the fused colour
-                              ISP has no Menon) */
+    RGBZ_DM_MENON = 2,     /* Menon-Andriani-Calvagno 2007 (rgbz_demosaic only: not a row pass
+                              of rgbz_ci_render; the fused colour ISP runs it between
+                              rgbz_ci_balance and rgbz_ci_encode_rgb) */
 } rgbz_demosaic_method;
 
 /* operation counters (Table 1 categories plus the rest); RGBZ_NOPS counts them */

@@ -1,13 +1,20 @@
 """Menon 2007 on the 12 MP bench frame: the kernel against colour-demosaicing, and Malvar's
-kernel beside it.
+kernel beside it; the colour ISP with Menon against another build's.
 
     python tools/menon_speed.py [ROUNDS]
+    python tools/menon_speed.py isp DIR [ROUNDS]
 
 ``rgbz_fast.isp.demosaic(cfa, "GRBG", method, dtype=float64, workers=w)`` for Menon 2007
 and Malvar 2004 on 1 and 2 threads (medians of ROUNDS calls, default 7), then
 ``colour_demosaicing.demosaicing_CFA_Bayer_Menon2007(cfa.astype(float64), "GRBG")`` (the
 median of 3), and whether the two Menon images are equal bit for bit. The frame is the
 bench's (``rgbz-fast bench``: skimage's astronaut tiled to 3000x4000, uint16 11-bit).
+
+``isp DIR``: ``ColourISP(demosaicing={"method": "menon2007"}).run(cfa, pattern="bayer")`` of this checkout
+and of DIR/rgbz_old (another commit's package, made by ``tools/tof_unguided_paired.py
+--make``), alternated call by call, at 768x512 and 3000x4000 (the bench frame and its
+top-left corner), with Malvar's ``ColourISP().run(cfa)`` of this checkout beside them:
+medians, and whether the two Menon images are equal.
 """
 
 import statistics
@@ -50,5 +57,33 @@ def main(rounds=7):
           f"{np.array_equal(ref, ours)}")
 
 
+def isp(other, rounds=7):
+    sys.path.insert(0, other)
+    import rgbz_old
+    from rgbz_fast import ColourISP
+
+    cfa = rz.mosaic(make_rgb((3000, 4000)), "bayer").data
+    menon = {"method": "menon2007"}
+    for shape in ((512, 768), (3000, 4000)):
+        c = np.ascontiguousarray(cfa[:shape[0], :shape[1]])
+        runs = {"this": ColourISP(demosaicing=menon).run,
+                "other": rgbz_old.ColourISP(demosaicing=menon).run,
+                "malvar": ColourISP().run}
+        times = {k: [] for k in runs}
+        images = {k: f(c, pattern="bayer") for k, f in runs.items()}    # warm-up
+        for _ in range(rounds):
+            for k, f in runs.items():
+                t = time.perf_counter()
+                f(c, pattern="bayer")
+                times[k].append(time.perf_counter() - t)
+        med = {k: statistics.median(v) * 1e3 for k, v in times.items()}
+        print(f"{shape[0]}x{shape[1]}: Menon this {med['this']:.1f} ms, other "
+              f"{med['other']:.1f} ms; Malvar (this) {med['malvar']:.1f} ms; the same "
+              f"image: {np.array_equal(images['this'], images['other'])}")
+
+
 if __name__ == "__main__":
-    main(*(int(a) for a in sys.argv[1:2]))
+    if sys.argv[1:2] == ["isp"]:
+        isp(sys.argv[2], *(int(a) for a in sys.argv[3:4]))
+    else:
+        main(*(int(a) for a in sys.argv[1:2]))

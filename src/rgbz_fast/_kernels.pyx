@@ -1406,6 +1406,16 @@ cdef extern from "colour_isp.h" nogil:
                            double black,
                            int clip, const double *matrix, const double *thresholds, int bits,
                            void *out, int workers)
+    int rgbz_ci_balance_f32(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                            const int32_t *phase, const float *scale, float black, int clip,
+                            float *out, int workers)
+    int rgbz_ci_balance_f64(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                            const int32_t *phase, const double *scale, double black, int clip,
+                            double *out, int workers)
+    int rgbz_ci_encode_rgb_f32(const float *rgb, Py_ssize_t npix, const float *matrix,
+                               const float *thresholds, int bits, void *out, int workers)
+    int rgbz_ci_encode_rgb_f64(const double *rgb, Py_ssize_t npix, const double *matrix,
+                               const double *thresholds, int bits, void *out, int workers)
 
 #: neighbours of one tile position in the defect test (the offsets' second axis)
 CI_MAX_NEIGHBOURS = RGBZ_CI_MAX_NEIGHBOURS
@@ -1473,4 +1483,48 @@ def ci_render(const frame_t[:, ::1] src, const int32_t[::1] phase, int mode,
             status = rgbz_ci_render_f64(in_type, &src[0, 0], src.shape[0], src.shape[1],
                                         &phase[0], mode, method, &scale[0], black, clip, m,
                                         &thresholds[0], bits, &out[0, 0, 0], workers)
+    _raise_for(status)
+
+
+def ci_balance(const frame_t[:, ::1] src, const int32_t[::1] phase, const rgb_t[::1] scale,
+               rgb_t black, int clip, rgb_t[:, ::1] out, int workers):
+    """The white balance of ci_render alone (isp.white_balance bit for bit) into out, of the
+    precision of scale, black and out."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    if (phase.shape[0] != 4 or scale.shape[0] != 3 or out.shape[0] != src.shape[0]
+            or out.shape[1] != src.shape[1] or src.shape[0] < 1 or src.shape[1] < 1):
+        raise ValueError("ci_balance: inconsistent array shapes")
+    with nogil:
+        if rgb_t is float:
+            status = rgbz_ci_balance_f32(in_type, &src[0, 0], src.shape[0], src.shape[1],
+                                         &phase[0], &scale[0], black, clip, &out[0, 0], workers)
+        else:
+            status = rgbz_ci_balance_f64(in_type, &src[0, 0], src.shape[0], src.shape[1],
+                                         &phase[0], &scale[0], black, clip, &out[0, 0], workers)
+    _raise_for(status)
+
+
+def ci_encode_rgb(const rgb_t[:, :, ::1] rgb, const rgb_t[::1] matrix,
+                  const rgb_t[::1] thresholds, code_t[:, :, ::1] out, int workers):
+    """ci_render's tail on linear RGB (rows, cols, 3): colour matrix (9 values, or empty for
+    the identity), clip and codes (uint8 out: 8 bits, uint16: 16) by the thresholds; the
+    precision is the type of rgb, matrix and thresholds."""
+    cdef int status
+    cdef int bits = 8 if code_t is uint8_t else 16
+    cdef const rgb_t *m = &matrix[0] if matrix.shape[0] else NULL
+    cdef Py_ssize_t npix = rgb.shape[0] * rgb.shape[1]
+    if (matrix.shape[0] not in (0, 9) or thresholds.shape[0] != (1 << bits)
+            or rgb.shape[2] != 3 or out.shape[2] != 3
+            or out.shape[0] != rgb.shape[0] or out.shape[1] != rgb.shape[1]):
+        raise ValueError("ci_encode_rgb: inconsistent array shapes")
+    if npix == 0:
+        return
+    with nogil:
+        if rgb_t is float:
+            status = rgbz_ci_encode_rgb_f32(&rgb[0, 0, 0], npix, m, &thresholds[0], bits,
+                                            &out[0, 0, 0], workers)
+        else:
+            status = rgbz_ci_encode_rgb_f64(&rgb[0, 0, 0], npix, m, &thresholds[0], bits,
+                                            &out[0, 0, 0], workers)
     _raise_for(status)

@@ -2,7 +2,10 @@
 
 ``ColourISP.run(frame)`` and ``render(cfa)`` without stages run the C passes; with
 ``return_stages`` they run the NumPy stages (the bilinear demosaic's stage is itself a C
-kernel, held to colour-demosaicing bit for bit in test_demosaic.py). Tolerance: none (the same codes) on integer
+kernel, held to colour-demosaicing bit for bit in test_demosaic.py). Menon 2007 runs its own
+kernel (the stage's) between the C white balance (ci_balance) and the render's C tail
+(ci_encode_rgb), which the tests hold to the stages as the row pass of Malvar and bilinear.
+Tolerance: none (the same codes) on integer
 CFAs with the identity colour matrix, the library's default; with a colour matrix one code
 where NumPy's matmul rounds the linear value differently (a few ulp). The NumPy reference
 of tests/_reference/colour_isp.py (colour-demosaicing's Malvar, np.power) agrees to one code.
@@ -18,6 +21,7 @@ import rgbz_fast as rz
 from rgbz_fast import _kernels
 from rgbz_fast.isp import ColourISP, DefectCorrection
 from rgbz_fast.isp import _defects, _fused
+from rgbz_fast.isp._encode_table import encode_by_table, encode_thresholds
 from rgbz_fast.isp._stages import grey_world_gains
 
 
@@ -55,7 +59,9 @@ def _both(chain, data, pattern, **kw):
 @pytest.mark.parametrize("precision", ["float32", "float64"])
 @pytest.mark.parametrize("bits", [8, 16])
 @pytest.mark.parametrize("demosaicing", [{}, {"method": "bilinear"},
-                                         {"method": "bilinear", "mode": "period"}])
+                                         {"method": "bilinear", "mode": "period"},
+                                         {"method": "menon2007"},
+                                         {"method": "menon2007", "mode": "period"}])
 def test_run_is_the_stages(pattern, precision, bits, demosaicing):
     data, pat = _frame(pattern)
     chain = ColourISP(precision=precision, output_bits=bits, black_level=40,
@@ -74,15 +80,16 @@ def test_run_is_the_stages(pattern, precision, bits, demosaicing):
     {"defects": {"enabled": False}},
     {"defects": {"threshold": 0.02, "spread_factor": 0.5}},
 ])
-def test_run_is_the_stages_for_every_setting(changes):
+@pytest.mark.parametrize("method", ["malvar2004", "menon2007"])
+def test_run_is_the_stages_for_every_setting(changes, method):
     data, pat = _frame("mask1", seed=2)
-    chain = ColourISP().replace(**changes)
+    chain = ColourISP(demosaicing={"method": method}).replace(**changes)
     fused, staged = _both(chain, data, pat)
     np.testing.assert_array_equal(fused, staged)
 
 
 @pytest.mark.parametrize("shape", [(2, 2), (3, 5), (5, 2), (7, 9), (13, 11)])
-@pytest.mark.parametrize("method", ["malvar2004", "bilinear"])
+@pytest.mark.parametrize("method", ["malvar2004", "bilinear", "menon2007"])
 def test_small_and_odd_frames(shape, method):
     rng = np.random.default_rng(sum(shape))
     data = rng.integers(0, 2048, shape).astype(np.uint16)
@@ -90,14 +97,18 @@ def test_small_and_odd_frames(shape, method):
         chain = ColourISP(demosaicing={"method": method, "mode": mode})
         fused, staged = _both(chain, data, "bayer")
         np.testing.assert_array_equal(fused, staged)
+        # gains that clip much of red and blue, the last column of an odd width too
+        fused, staged = _both(chain, data, "bayer", gains=(2.2, 1.0, 2.6))
+        np.testing.assert_array_equal(fused, staged)
 
 
 @pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
-def test_every_frame_type(dtype):
+@pytest.mark.parametrize("method", ["malvar2004", "menon2007"])
+def test_every_frame_type(dtype, method):
     data, pat = _frame("mask1", seed=4)
     bits = 8 if dtype == np.uint8 else 11
     cfa = (data >> 3).astype(dtype) if dtype == np.uint8 else data.astype(dtype)
-    chain = ColourISP()
+    chain = ColourISP(demosaicing={"method": method})
     fused, staged = _both(chain, cfa, pat, bit_depth=bits)
     if np.issubdtype(dtype, np.floating):
         # grey-world sums of floats in another order: gains a few ulp apart
@@ -105,36 +116,82 @@ def test_every_frame_type(dtype):
         assert np.mean(fused != staged) < 1e-3
     else:
         np.testing.assert_array_equal(fused, staged)
+    # given gains: the same white balance, so the same codes on every type
+    fused, staged = _both(chain, cfa, pat, bit_depth=bits, gains=(1.7, 1.0, 1.3))
+    np.testing.assert_array_equal(fused, staged)
 
 
-def test_known_defects_and_given_gains():
+@pytest.mark.parametrize("method", ["malvar2004", "menon2007"])
+def test_known_defects_and_given_gains(method):
     data, pat = _frame("mask2", seed=5)
     known = np.zeros(data.shape, bool)
     known[10:14, 20:23] = True
-    chain = ColourISP()
+    chain = ColourISP(demosaicing={"method": method})
     kw = {"defects": known, "gains": (2.0, 1.0, 1.5), "black_level": 12}
     fused, staged = _both(chain, data, pat, **kw)
     np.testing.assert_array_equal(fused, staged)
 
 
-def test_render_is_the_stages():
+@pytest.mark.parametrize("method", ["malvar2004", "menon2007"])
+def test_render_is_the_stages(method):
     data, _ = _frame("bayer", seed=6)
-    chain = ColourISP(output_bits=16)
+    chain = ColourISP(output_bits=16, demosaicing={"method": method})
     np.testing.assert_array_equal(chain.render(data, "GRBG"),
                                   chain.render(data, "GRBG", return_stages=True)[0])
 
 
-def test_colour_matrix_within_one_code():
+@pytest.mark.parametrize("phase", ["GRBG", "RGGB", "BGGR", "GBRG"])
+@pytest.mark.parametrize("mode", ["reflect", "period"])
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+@pytest.mark.parametrize("bits", [8, 16])
+def test_menon_every_phase_and_border(phase, mode, precision, bits):
+    """Menon 2007's fused path (C white balance, Menon's kernel, C tail) on a Bayer frame
+    read in each phase: the stages' image, run and render."""
+    data, _ = _frame("bayer", shape=(46, 62), seed=14)
+    chain = ColourISP(demosaicing={"method": "menon2007", "mode": mode}, precision=precision,
+                      output_bits=bits, black_level=24)
+    assert chain._fused(data)
+    fused, staged = _both(chain, data, phase)
+    np.testing.assert_array_equal(fused, staged)
+    np.testing.assert_array_equal(chain.render(data, phase, gains=(1.9, 1.0, 1.4)),
+                                  chain.render(data, phase, gains=(1.9, 1.0, 1.4),
+                                               return_stages=True)[0])
+
+
+@pytest.mark.parametrize("method", ["malvar2004", "menon2007"])
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+def test_colour_matrix_within_one_code(method, precision):
     data, pat = _frame("mask1", seed=7)
     m = ((1.6, -0.4, -0.2), (-0.3, 1.5, -0.2), (0.0, -0.5, 1.5))
     for bits in (8, 16):
-        chain = ColourISP(colour_correction={"matrix": m}, output_bits=bits)
+        chain = ColourISP(colour_correction={"matrix": m}, output_bits=bits,
+                          demosaicing={"method": method}, precision=precision)
         fused, staged = _both(chain, data, pat)
         diff = np.abs(fused.astype(np.int64) - staged)
         assert diff.max() <= 1 and np.mean(diff > 0) < 1e-3
 
 
-@pytest.mark.parametrize("method", ["malvar2004", "bilinear"])
+def test_menon_identity_matrix_is_exact():
+    """An explicit identity matrix runs the C tail's matrix and NumPy's matmul: both exact."""
+    data, pat = _frame("mask2", seed=15)
+    chain = ColourISP(colour_correction={"matrix": tuple(map(tuple, np.eye(3)))},
+                      demosaicing={"method": "menon2007"})
+    fused, staged = _both(chain, data, pat)
+    np.testing.assert_array_equal(fused, staged)
+
+
+def test_menon_white_balance_beyond_the_precision():
+    """A float64 CFA beyond float32's range in a float32 chain: the stage balances in float64
+    (its _fits), and so does Menon's fused path (it hands the white balance to the stage)."""
+    data, _ = _frame("bayer", shape=(20, 24), seed=16)
+    cfa = data.astype(np.float64)
+    cfa[5, 7] = 1e39
+    chain = ColourISP(demosaicing={"method": "menon2007"})
+    np.testing.assert_array_equal(chain.render(cfa, "GRBG"),
+                                  chain.render(cfa, "GRBG", return_stages=True)[0])
+
+
+@pytest.mark.parametrize("method", ["malvar2004", "bilinear", "menon2007"])
 def test_thread_count_does_not_change_the_image(method):
     data, pat = _frame("mask1", shape=(1030, 520), seed=8)       # two threads' worth
     chain = ColourISP(demosaicing={"method": method})
@@ -142,9 +199,19 @@ def test_thread_count_does_not_change_the_image(method):
                                   chain.run(data, pattern=pat, workers=2))
 
 
-def test_menon_stays_on_the_stages():
+def test_menon_takes_the_fused_path(monkeypatch):
+    """run and render of a Menon 2007 chain go through _fused.render (C white balance,
+    Menon's kernel, C tail), not through the stages."""
     data, pat = _frame("bayer", shape=(20, 24))
-    assert not ColourISP(demosaicing={"method": "menon2007"})._fused(data)
+    chain = ColourISP(demosaicing={"method": "menon2007"})
+    assert chain._fused(data)
+    calls = []
+    monkeypatch.setattr(_kernels, "ci_encode_rgb",
+                        lambda *a, _f=_kernels.ci_encode_rgb: calls.append(1) or _f(*a))
+    monkeypatch.setattr(ColourISP, "_render", lambda *a, **k: pytest.fail("the stages ran"))
+    chain.run(data, pattern=pat)
+    chain.render(data, "GRBG")
+    assert len(calls) == 2
 
 
 @pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2"])
@@ -206,14 +273,60 @@ def test_kernel_rejects_inconsistent_shapes():
                            out, 1)
 
 
-def test_recorded_gains_and_matrix_of_a_frame():
+def test_tail_kernels_reject_inconsistent_shapes():
+    phase = np.array([1, 0, 2, 1], np.int32)
+    cfa = np.zeros((4, 4), np.uint16)
+    t8 = np.array(encode_thresholds(np.dtype(np.float32), 8))
+    rgb = np.zeros((4, 4, 3), np.float32)
+    none = np.zeros(0, np.float32)
+    for bad in ((cfa, phase[:3], np.ones(3, np.float32), np.zeros((4, 4), np.float32)),
+                (cfa, phase, np.ones(2, np.float32), np.zeros((4, 4), np.float32)),
+                (cfa, phase, np.ones(3, np.float32), np.zeros((4, 5), np.float32))):
+        with pytest.raises(ValueError, match="ci_balance"):
+            _kernels.ci_balance(bad[0], bad[1], bad[2], np.float32(0), 1, bad[3], 1)
+    for bad in ((rgb, none, t8[:16], np.zeros((4, 4, 3), np.uint8)),           # table size
+                (rgb, np.ones(4, np.float32), t8, np.zeros((4, 4, 3), np.uint8)),
+                (rgb, none, t8, np.zeros((4, 3, 3), np.uint8)),
+                (np.zeros((4, 4, 2), np.float32), none, t8, np.zeros((4, 4, 3), np.uint8)),
+                (rgb, none, t8, np.zeros((4, 4, 3), np.uint16))):           # 16 bits, 8's table
+        with pytest.raises(ValueError, match="ci_encode_rgb"):
+            _kernels.ci_encode_rgb(*bad, 1)
+    # a table that is not one (decreasing): the C check
+    with pytest.raises(RuntimeError, match="rejected its arguments"):
+        _kernels.ci_encode_rgb(rgb, none, t8[::-1].copy(), np.zeros((4, 4, 3), np.uint8), 1)
+
+
+@pytest.mark.parametrize("precision", [np.float32, np.float64])
+@pytest.mark.parametrize("bits", [8, 16])
+def test_encode_rgb_is_the_table(precision, bits):
+    """ci_encode_rgb on values around every threshold, odd pixel counts and several chunks:
+    encode_by_table's codes (the stages' _encode), and clip(M @ rgb) within one code."""
+    t = encode_thresholds(np.dtype(precision), bits)
+    near = np.concatenate([t, np.nextafter(t, precision(-1)), [-0.5, -0.0, 1.0, 1.5, 2.0]])
+    rng = np.random.default_rng(bits)
+    v = rng.permutation(np.concatenate([near, rng.random(30001)]).astype(precision))
+    rgb = v[: v.size // 3 * 3 - 3 * 7].reshape(-1, 1, 3)            # an odd number of pixels
+    code = np.uint8 if bits == 8 else np.uint16
+    for workers in (1, 2):
+        out = np.empty(rgb.shape, code)
+        _kernels.ci_encode_rgb(rgb, np.zeros(0, precision), t, out, workers)
+        np.testing.assert_array_equal(out, encode_by_table(rgb, bits))
+    m = np.array([[1.6, -0.4, -0.2], [-0.3, 1.5, -0.2], [0.0, -0.5, 1.5]], precision)
+    out = np.empty(rgb.shape, code)
+    _kernels.ci_encode_rgb(rgb, m.reshape(-1), t, out, 1)
+    want = encode_by_table(np.matmul(rgb, m.T), bits)
+    assert np.abs(out.astype(np.int64) - want).max() <= 1
+
+
+@pytest.mark.parametrize("method", ["malvar2004", "menon2007"])
+def test_recorded_gains_and_matrix_of_a_frame(method):
     """A frame's as-shot gains and colour matrix (its meta) reach the fused path as the
     stages: the same gains; the matrix within one code (NumPy's matmul)."""
     data, pat = _frame("mask1", seed=13)
     m = (1.5, -0.3, -0.2, -0.2, 1.4, -0.2, 0.0, -0.4, 1.4)
     frame = rz.RawFrame(data, pat, 11, meta={"white_gains": (1.8, 1.0, 1.4),
                                              "colour_matrix": m, "colour_black_level": 16.0})
-    chain = ColourISP()
+    chain = ColourISP(demosaicing={"method": method})
     fused = chain.run(frame)
     staged, st = chain.run(frame, return_stages=True)
     np.testing.assert_array_equal(st["gains"], [1.8, 1.0, 1.4])

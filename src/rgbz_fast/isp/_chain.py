@@ -358,8 +358,9 @@ class ColourISP:
 
     def _fused(self, data):
         """Whether the stages after the input checks run as the C passes of
-        :mod:`._fused` (the same image): the Malvar or bilinear demosaic on a frame it takes
-        (Menon 2007, whose kernel is no fused pass, runs on the stages). A float
+        :mod:`._fused` (the same image): every demosaic (:data:`._fused.DEMOSAICS`; Malvar
+        and bilinear in the row pass, Menon 2007 through its own kernel between the C white
+        balance and the C encoding) on a frame the passes take. A float
         frame without the white balance's clip stays on the stages, which refuse balanced
         values that overflow the working precision (the C passes would carry them on)."""
         return (self.demosaicing.method in _fused.DEMOSAICS

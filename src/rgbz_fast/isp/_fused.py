@@ -1,17 +1,19 @@
 """The colour chain without its stages, in C passes over the frame (csrc/colour_isp.c).
 
 :meth:`ColourISP.run` and :meth:`ColourISP.render` take this path when no stage is
-kept (``return_stages=False``) and the demosaic is one of :data:`DEMOSAICS` (Malvar,
-bilinear; Menon 2007 has a kernel of its own, not a pass of these); the stage functions stay
-the reference and the path of ``return_stages``. Three passes:
+kept (``return_stages=False``) and the demosaic is one of :data:`DEMOSAICS` (every method);
+the stage functions stay the reference and the path of ``return_stages``. Three passes:
 
 1. tests 1 and 2 of the defect detection on every colour pixel (:func:`defect_fixes`);
    test 3 and the median fixes of the few candidates stay in NumPy
    (:func:`._defects._confirm`, :func:`._defects._fixes`);
 2. the grey-world sums of each 2x2 phase of the complete CFA (:func:`gains`);
-3. white balance, demosaic, colour matrix and sRGB encoding row by row, the
-   white-balanced rows in cache and the codes from :func:`._encode_table.encode_thresholds`
-   (:func:`render`).
+3. white balance, demosaic, colour matrix and sRGB encoding (:func:`render`): with Malvar
+   or bilinear (:data:`ROW_DEMOSAICS`) one pass row by row, the white-balanced rows in
+   cache and the codes from :func:`._encode_table.encode_thresholds`; Menon 2007, whose
+   stages read whole planes, runs as three: the white balance into a frame (C), Menon's
+   own kernel (csrc/demosaic_menon.c, the stage's demosaic), then the row pass's tail
+   (colour matrix and the same codes) over the RGB image.
 
 The images are those of the stages bit for bit, except with a colour matrix (NumPy's
 matmul rounds its own way: a code may differ by one) or a float CFA's grey-world sums
@@ -28,15 +30,18 @@ from .. import _kernels
 from .._patterns import CHANNELS, Z
 from .._validate import kernel_threads
 from ._defects import _colour_offsets, _fixes, _thresholds
-from ._demosaic import DEMOSAIC_MODES
+from ._demosaic import DEMOSAIC_MODES, demosaic
 from ._encode_table import encode_thresholds
-from ._stages import _check_gains, _gains_from_sums
+from ._stages import _check_gains, _fits, _gains_from_sums, white_balance
 
 __all__ = ["defect_fixes", "gains", "render"]
 
 #: the demosaic methods of the render pass (ci_render's method, a code of
 #: _kernels.DEMOSAIC_KERNELS)
-DEMOSAICS = ("malvar2004", "bilinear")
+ROW_DEMOSAICS = ("malvar2004", "bilinear")
+#: the demosaic methods of this path: the row pass's, and Menon 2007 (its kernel between
+#: the white balance and the tail, ci_balance and ci_encode_rgb)
+DEMOSAICS = ROW_DEMOSAICS + ("menon2007",)
 
 #: candidates the first call of the defect pass has room for (more: a second call)
 _CANDIDATE_ROOM = 1 << 14
@@ -111,8 +116,8 @@ def gains(full, bayer, wb, black, white, given, workers):
 
 def render(full, bayer, chain, black, white, given, workers, matrix=None):
     """White balance .. output of a complete Bayer CFA (validated) by ``chain`` (a
-    :class:`ColourISP` with the Malvar or the bilinear demosaic): ``(image, gains)``. ``matrix``: the colour
-    matrix when the chain has none (a frame's recorded one)."""
+    :class:`ColourISP` whose demosaic is one of :data:`DEMOSAICS`): ``(image, gains)``.
+    ``matrix``: the colour matrix when the chain has none (a frame's recorded one)."""
     dt = np.dtype(chain.precision)
     full = np.ascontiguousarray(full)
     g = gains(full, bayer, chain.white_balance, black, white, given, workers)
@@ -123,8 +128,38 @@ def render(full, bayer, chain, black, white, given, workers, matrix=None):
     phase = np.array([CHANNELS.index(c) for c in bayer.bayer_phase], np.int32)
     bits = chain.output_bits
     out = np.empty(full.shape + (3,), np.uint8 if bits == 8 else np.uint16)
+    threads = kernel_threads(workers, full.size)
+    method = chain.demosaicing.method
+    if method not in ROW_DEMOSAICS:
+        rgb = _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, workers)
+        _kernels.ci_encode_rgb(rgb, matrix, encode_thresholds(dt, bits), out, threads)
+        return out, g
     _kernels.ci_render(full, phase, DEMOSAIC_MODES[chain.demosaicing.mode], scale,
                        dt.type(black), int(chain.white_balance.clip), matrix,
-                       encode_thresholds(dt, bits), out, kernel_threads(workers, full.size),
-                       _kernels.DEMOSAIC_KERNELS[chain.demosaicing.method])
+                       encode_thresholds(dt, bits), out, threads,
+                       _kernels.DEMOSAIC_KERNELS[method])
     return out, g
+
+
+def _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, workers):
+    """The demosaic stage's image of a complete CFA (Menon 2007): the white balance by
+    ci_balance (clipped, in the chain's precision: :func:`._stages.white_balance`'s values
+    and operations) or, when the stage would leave the precision or not clip, by the stage
+    itself; then the stage's demosaic."""
+    dt = scale.dtype
+    wb = chain.white_balance
+    mode = chain.demosaicing.mode
+    if wb.clip and _fits(full, dt, black, white, scale):
+        balanced = np.empty(full.shape, dt)
+        _kernels.ci_balance(full, phase, scale, dt.type(black), 1, balanced,
+                            kernel_threads(workers, full.size))
+        # in [0, 1]: demosaic()'s range check has nothing to refuse
+        rgb = np.empty(full.shape + (3,), dt)
+        _kernels.demosaic_kernel(_kernels.DEMOSAIC_KERNELS[chain.demosaicing.method],
+                                 balanced, rgb, phase, DEMOSAIC_MODES[mode],
+                                 kernel_threads(workers, full.size))
+        return rgb
+    balanced, _ = white_balance(full, bayer, wb, black_level=black, white_level=white, gains=g,
+                                dtype=dt)
+    return demosaic(balanced, bayer.bayer_phase, chain.demosaicing.method, mode=mode, dtype=dt,
+                    workers=workers)
