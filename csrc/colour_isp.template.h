@@ -131,6 +131,15 @@ RGBZ_INLINE REAL RGBZ_CAT(ci_clip01, RS)(REAL v)
     return v <= (REAL)0 ? (REAL)0 : (v > (REAL)1 ? (REAL)1 : v);
 }
 
+/* isp.white_balance of one value, its operations in its order and type: v - black, times the
+   scale of the pixel's colour, clipped to [0, 1] when clip (ci_balance, ci_balance_rows) */
+RGBZ_INLINE REAL RGBZ_CAT(ci_wb, RS)(REAL v, REAL black, REAL s, int clip)
+{
+    v = v - black;
+    v = v * s;
+    return clip ? RGBZ_CAT(ci_clip01, RS)(v) : v;
+}
+
 /* The white-balanced rows are kept as two planes of double (exact: REAL values), the even
    columns and the odd ones, each with 3 cells of border before: plane p of a row holds
    column 2 j + p at index j + 3, so that every tap of the demosaic is a unit-stride read in
@@ -501,31 +510,16 @@ CI_CLONES static void RGBZ_CAT3(ci_balance, RS, IS)(const IN_T *src, ptrdiff_t r
     const ptrdiff_t hp = CI_PLANE(cols);
     double *e = dst + 3, *o = dst + hp + 3;
     const ptrdiff_t n = cols / 2;
-    if (a->clip) {
-        for (ptrdiff_t j = 0; j < n; j++) {
-            REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
-            u = u - black;
-            w = w - black;
-            u = u * s0;
-            w = w * s1;
-            e[j] = RGBZ_CAT(ci_clip01, RS)(u);
-            o[j] = RGBZ_CAT(ci_clip01, RS)(w);
-        }
-    } else {
-        for (ptrdiff_t j = 0; j < n; j++) {
-            REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
-            u = u - black;
-            w = w - black;
-            e[j] = u * s0;
-            o[j] = w * s1;
-        }
+    const int clip = a->clip;
+    /* the loop once per value of clip, a constant in each: ci_wb's test is then gone */
+#define CI_WB_PLANES_(CLIP)                                                                 \
+    for (ptrdiff_t j = 0; j < n; j++) {                                                     \
+        e[j] = RGBZ_CAT(ci_wb, RS)((REAL)row[2 * j], black, s0, CLIP);                     \
+        o[j] = RGBZ_CAT(ci_wb, RS)((REAL)row[2 * j + 1], black, s1, CLIP);                 \
     }
-    if (cols & 1) {
-        REAL u = (REAL)row[cols - 1];
-        u = u - black;
-        u = u * s0;
-        e[n] = a->clip ? RGBZ_CAT(ci_clip01, RS)(u) : u;
-    }
+    if (clip) { CI_WB_PLANES_(1) } else { CI_WB_PLANES_(0) }
+#undef CI_WB_PLANES_
+    if (cols & 1) e[n] = RGBZ_CAT(ci_wb, RS)((REAL)row[cols - 1], black, s0, clip);
     /* column c lives at (c & 1 ? o : e)[c >> 1] (an arithmetic shift: c >= -4) */
     for (int side = 0; side < 2; side++) {
         for (ptrdiff_t k = 0; k < 4; k++) {
@@ -597,31 +591,14 @@ CI_CLONES static void RGBZ_CAT3(ci_balance_rows, RS, IS)(const IN_T *src, ptrdif
         REAL *restrict o = out + y * cols;
         const int32_t *ph = phase + 2 * (y & 1);
         const REAL s0 = scale[ph[0]], s1 = scale[ph[1]];
-        if (clip) {
-            for (ptrdiff_t j = 0; j < n; j++) {
-                REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
-                u = u - black;
-                w = w - black;
-                u = u * s0;
-                w = w * s1;
-                o[2 * j] = RGBZ_CAT(ci_clip01, RS)(u);
-                o[2 * j + 1] = RGBZ_CAT(ci_clip01, RS)(w);
-            }
-        } else {
-            for (ptrdiff_t j = 0; j < n; j++) {
-                REAL u = (REAL)row[2 * j], w = (REAL)row[2 * j + 1];
-                u = u - black;
-                w = w - black;
-                o[2 * j] = u * s0;
-                o[2 * j + 1] = w * s1;
-            }
+#define CI_WB_ROW_(CLIP)                                                                    \
+        for (ptrdiff_t j = 0; j < n; j++) {                                                 \
+            o[2 * j] = RGBZ_CAT(ci_wb, RS)((REAL)row[2 * j], black, s0, CLIP);             \
+            o[2 * j + 1] = RGBZ_CAT(ci_wb, RS)((REAL)row[2 * j + 1], black, s1, CLIP);     \
         }
-        if (cols & 1) {
-            REAL u = (REAL)row[cols - 1];
-            u = u - black;
-            u = u * s0;
-            o[cols - 1] = clip ? RGBZ_CAT(ci_clip01, RS)(u) : u;
-        }
+        if (clip) { CI_WB_ROW_(1) } else { CI_WB_ROW_(0) }
+#undef CI_WB_ROW_
+        if (cols & 1) o[cols - 1] = RGBZ_CAT(ci_wb, RS)((REAL)row[cols - 1], black, s0, clip);
     }
 }
 #endif
