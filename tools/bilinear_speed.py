@@ -21,7 +21,7 @@ import rgbz_fast as rz
 import rgbz_fast.isp._chain as chain_mod
 from rgbz_fast import isp
 from rgbz_fast._devtools.bench import make_rgb
-from rgbz_fast.isp._demosaic import _colour_demosaicing
+from rgbz_fast._deps import import_colour_demosaicing as _colour_demosaicing
 from tof_unguided_paired import alternate
 
 

@@ -18,7 +18,7 @@ import os
 import numpy as np
 
 __all__ = ["check_workers", "check_processes", "check_thread_stacks", "thread_limit",
-           "kernel_threads", "MAX_WORKERS", "MIN_PIXELS_PER_THREAD"]
+           "kernel_threads", "map_in_order", "MAX_WORKERS", "MIN_PIXELS_PER_THREAD"]
 
 
 #: largest ``workers`` (threads of one kernel call); the result never depends on it.
@@ -48,6 +48,26 @@ def kernel_threads(threads, pixels, min_pixels=MIN_PIXELS_PER_THREAD):
     (1, 2, 2)
     """
     return max(1, min(int(threads), int(pixels) // int(min_pixels)))
+
+
+def map_in_order(fn, items, threads):
+    """``[fn(item) for item in items]``, on up to ``threads`` Python threads (a checked count;
+    for work that releases the GIL: C kernels, zlib): the same list, in the same order, on
+    any count; one thread or one item runs on the calling thread.
+
+    Examples
+    --------
+    >>> map_in_order(abs, [-2, 3, -5], 2)
+    [2, 3, 5]
+    """
+    items = list(items)
+    n = min(int(threads), len(items))
+    if n <= 1:
+        return [fn(item) for item in items]
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(n) as ex:
+        return list(ex.map(fn, items))
 
 
 def _check_count(value, name, unit, minus_one):

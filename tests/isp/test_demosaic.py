@@ -15,7 +15,7 @@ from _support import load_kodak  # noqa: E402
 
 from rgbz_fast import _kernels, bayer, mask1, mosaic  # noqa: E402
 from rgbz_fast.isp import DEMOSAIC_METHODS, demosaic
-from rgbz_fast.isp._demosaic import _colour_demosaicing  # noqa: E402
+from rgbz_fast._deps import import_colour_demosaicing as _colour_demosaicing  # noqa: E402
 
 PHASES = ["RGGB", "BGGR", "GRBG", "GBRG"]
 TOL = {np.float32: dict(rtol=1e-6, atol=1e-6), np.float64: dict(rtol=1e-12, atol=1e-12)}

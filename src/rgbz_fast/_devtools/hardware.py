@@ -24,7 +24,7 @@ import numpy as np
 
 from .. import metrics
 from .._patterns import get_pattern
-from .._threads import check_workers
+from .._threads import check_workers, map_in_order
 from ..evaluation import EvalConfig
 from ..evaluation._run import image_frames
 from ..hardware import FixedPointConfig, hardware_cost
@@ -66,18 +66,6 @@ def prepare_cases(images, pattern, method, protocols=tuple(PROTOCOLS), params=No
     return cases
 
 
-def _in_order(fn, items, workers):
-    """[fn(item) for item in items], on up to ``workers`` threads (the fixed-point model is
-    one stream per frame, its C call releasing the GIL): the same list as one at a time."""
-    n = min(check_workers(workers), len(items))
-    if n <= 1:
-        return [fn(item) for item in items]
-    from concurrent.futures import ThreadPoolExecutor
-
-    with ThreadPoolExecutor(n) as ex:
-        return list(ex.map(fn, items))
-
-
 def measure_error(cases, method, config, params=None, workers=1):
     """The fixed model against float64 on prepared cases, per protocol; the cases on
     ``workers`` threads (None: every core; the result does not depend on it).
@@ -98,7 +86,7 @@ def measure_error(cases, method, config, params=None, workers=1):
         return proto, pf, px, fixed[z].astype(np.int64) - exact[z].astype(np.int64)
 
     acc = {}
-    for proto, pf, px, d in _in_order(one, cases, workers):
+    for proto, pf, px, d in map_in_order(one, cases, check_workers(workers)):
         a = acc.setdefault(proto, {"pf": [], "px": [], "n": 0, "within": 0, "max": 0,
                                    "hist": np.zeros(len(HIST_BINS), np.int64)})
         a["pf"].append(pf)
@@ -258,7 +246,7 @@ def run_sweep(method="sg", pattern="mask1", *, width=4000, images=None, params=N
             "max_abs_lsb": max(e["max_abs_lsb"] for e in err.values()),
             "meets_target": meets_target(err), "error": err}
 
-    rows = _in_order(row, list(configs or sweep_configs(base, method)), workers)
+    rows = map_in_order(row, configs or sweep_configs(base, method), check_workers(workers))
     front = pareto_front(rows)
     for r in rows:
         r["pareto"] = r.get("label") in front

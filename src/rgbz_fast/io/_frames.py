@@ -17,6 +17,7 @@ import numpy as np
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Pattern, get_pattern
 from .._sensors import ToFSensor
+from .._threads import map_in_order
 from .._validate import as_list, check_bit_depth, check_path
 from ._errors import ParameterError, named
 from ._files import atomic_write, check_size, raise_it, read_file, read_image, read_limits
@@ -348,13 +349,9 @@ def _read_members(zf, infos, path, limits, name, declared):
     declare 4 MiB or more."""
     import os
 
-    n = min(os.cpu_count() or 1, len(infos))          # Python threads: no OpenMP stacks
-    if n < 2 or declared < (4 << 20):
-        return [_npz_array(zf, info, path, limits, name) for info in infos]
-    from concurrent.futures import ThreadPoolExecutor
-
-    with ThreadPoolExecutor(n) as ex:
-        return list(ex.map(lambda info: _npz_array(zf, info, path, limits, name), infos))
+    # Python threads: no OpenMP stacks to check
+    threads = (os.cpu_count() or 1) if declared >= (4 << 20) else 1
+    return map_in_order(lambda info: _npz_array(zf, info, path, limits, name), infos, threads)
 
 
 def _npz_array(zf, info, path, limits, name="path"):

@@ -14,12 +14,13 @@ records, go through :mod:`zipfile` one member at a time.
 from __future__ import annotations
 
 import io
-import os
 import struct
 import zipfile
 import zlib
 
 import numpy as np
+
+from .._threads import _check_count, map_in_order
 
 __all__ = ["npz_bytes", "NPZ_LEVEL"]
 
@@ -31,13 +32,6 @@ _THREADED_BYTES = 4 << 20
 _PIECE = 4 << 20
 _DOS_DATE = (1 << 5) | 1              # 1980-01-01, as numpy.savez dates its members
 _LIMIT = 0xFFFFFFFF
-
-
-def _positive(workers):
-    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-        raise ValueError(f"workers: expected None or a positive number of threads, got "
-                         f"{workers!r}")
-    return workers
 
 
 def _member(array):
@@ -78,14 +72,10 @@ def npz_bytes(arrays, *, level=NPZ_LEVEL, workers=None):
     for _, raw in members:
         starts = range(0, max(len(raw), 1), _PIECE)
         jobs += [(_deflate, (raw[s:s + _PIECE], level, s + _PIECE >= len(raw))) for s in starts]
-    n = min((os.cpu_count() or 1) if workers is None else _positive(workers), len(jobs))
-    if n > 1 and total >= _THREADED_BYTES:
-        from concurrent.futures import ThreadPoolExecutor
-
-        with ThreadPoolExecutor(n) as ex:
-            done = list(ex.map(lambda job: job[0](*job[1]), jobs))
-    else:
-        done = [fn(*args) for fn, args in jobs]
+    # Python threads (zlib releases the GIL): no OpenMP stacks to check
+    count = _check_count(workers, "workers", "threads", minus_one=False)
+    threads = count if total >= _THREADED_BYTES else 1
+    done = map_in_order(lambda job: job[0](*job[1]), jobs, threads)
     crcs, pieces = done[:len(members)], iter(done[len(members):])
     packed = [(crc, b"".join(next(pieces) for _ in range(0, max(len(raw), 1), _PIECE)))
               for crc, (_, raw) in zip(crcs, members)]

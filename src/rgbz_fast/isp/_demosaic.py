@@ -35,7 +35,6 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
-from .._deps import import_colour_demosaicing
 from .._patterns import BAYER_PHASES, CHANNELS, Pattern
 from .._validate import (FRAME_DTYPES, check_choice, check_dtype, check_image, check_workers,
                          finite_range, kernel_threads)
@@ -47,10 +46,6 @@ DEMOSAIC_METHODS = ("malvar2004", "menon2007", "bilinear")
 #: border modes: scipy "reflect" (as colour-demosaicing) or shift by whole periods;
 #: {name: code} from the C enum rgbz_demosaic_mode (csrc/rgbz.h)
 DEMOSAIC_MODES = dict(_kernels.DEMOSAIC_MODES)
-
-#: colour-demosaicing, which no method calls any more: the reference of the kernels in the
-#: tests (tests/_reference/demosaic.py) and of tools/bilinear_speed.py
-_colour_demosaicing = import_colour_demosaicing
 
 
 def _bayer_phase(phase):

@@ -131,7 +131,7 @@ def render(full, bayer, chain, black, white, given, workers, matrix=None):
     threads = kernel_threads(workers, full.size)
     method = chain.demosaicing.method
     if method not in ROW_DEMOSAICS:
-        rgb = _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, workers)
+        rgb = _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, threads)
         _kernels.ci_encode_rgb(rgb, matrix, encode_thresholds(dt, bits), out, threads)
         return out, g
     _kernels.ci_render(full, phase, DEMOSAIC_MODES[chain.demosaicing.mode], scale,
@@ -141,7 +141,7 @@ def render(full, bayer, chain, black, white, given, workers, matrix=None):
     return out, g
 
 
-def _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, workers):
+def _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, threads):
     """The demosaic stage's image of a complete CFA (Menon 2007): the white balance by
     ci_balance (clipped, in the chain's precision: :func:`._stages.white_balance`'s values
     and operations) or, when the stage would leave the precision or not clip, by the stage
@@ -151,15 +151,13 @@ def _balanced_rgb(full, bayer, chain, black, white, g, scale, phase, workers):
     mode = chain.demosaicing.mode
     if wb.clip and _fits(full, dt, black, white, scale):
         balanced = np.empty(full.shape, dt)
-        _kernels.ci_balance(full, phase, scale, dt.type(black), 1, balanced,
-                            kernel_threads(workers, full.size))
+        _kernels.ci_balance(full, phase, scale, dt.type(black), 1, balanced, threads)
         # in [0, 1]: demosaic()'s range check has nothing to refuse
         rgb = np.empty(full.shape + (3,), dt)
         _kernels.demosaic_kernel(_kernels.DEMOSAIC_KERNELS[chain.demosaicing.method],
-                                 balanced, rgb, phase, DEMOSAIC_MODES[mode],
-                                 kernel_threads(workers, full.size))
+                                 balanced, rgb, phase, DEMOSAIC_MODES[mode], threads)
         return rgb
     balanced, _ = white_balance(full, bayer, wb, black_level=black, white_level=white, gains=g,
                                 dtype=dt)
     return demosaic(balanced, bayer.bayer_phase, chain.demosaicing.method, mode=mode, dtype=dt,
-                    workers=workers)
+                    workers=threads)
