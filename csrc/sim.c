@@ -742,6 +742,28 @@ static inline double sim_ir(int type, const void *ir, ptrdiff_t i, int estimate)
     return 0.2 + 0.6 * x;
 }
 
+/* s e^{i phi} with phi = 4 pi f ds / c (mod 2 pi) over the cells of a chunk, vectorised: the
+   phase as a fraction of a turn, u = frac(4 pi f ds / c / (2 pi)), its sine and cosine by
+   sim_sincos2pi. The C library's sincos of (4 pi f ds / c) mod 2 pi, NumPy's, was a scalar
+   call per cell and frequency (a quarter of a noise-free frame's time); this differs from it
+   by a few units in the last place of the phasor (tests/simulation/test_pixels.py states
+   the tolerance). */
+RGBZ_CLONES_512
+static void sim_tof_phasors(const double *restrict s, const double *restrict ds, ptrdiff_t m,
+                            double four_pi_f, double speed_of_light, double two_pi,
+                            double *restrict re, double *restrict im)
+{
+    SIM_SIMD
+    for (ptrdiff_t i = 0; i < m; i++) {
+        double u = four_pi_f * ds[i] / speed_of_light / two_pi;
+        u = u - floor(u);
+        double sn, cs;
+        sim_sincos2pi(u, &sn, &cs);
+        re[i] = s[i] * cs;
+        im[i] = s[i] * sn;
+    }
+}
+
 /* the light of sites [i0, i1): mean (F, 4, SIM_CHUNK) and suppress (SIM_CHUNK) */
 static void sim_tof_light(const double *depth, const uint8_t *depth_valid, ptrdiff_t cols,
                           int ir_type, const void *ir, ptrdiff_t ir_rs, ptrdiff_t ir_cs,
@@ -751,8 +773,13 @@ static void sim_tof_light(const double *depth, const uint8_t *depth_valid, ptrdi
                           uint8_t *valid, uint8_t *beyond, double *dmax)
 {
     const int F = L->nfreq, ncell = block * block;
+    const ptrdiff_t m = i1 - i0;
+    /* per cell j and site li: the signal, the depth the phase is taken of, the total */
+    double sig[4][SIM_CHUNK], dsv[4][SIM_CHUNK], tot[4][SIM_CHUNK];
+    double pre[4][SIM_CHUNK], pim[4][SIM_CHUNK];
     for (ptrdiff_t i = i0; i < i1; i++) {
-        double pre[RGBZ_TOF_MAX_FREQS][4], pim[RGBZ_TOF_MAX_FREQS][4], tot[4], dd[4];
+        const ptrdiff_t li = i - i0;
+        double dd[4];
         int all_valid = 1, past = 0;
         for (int j = 0; j < ncell; j++) {
             const ptrdiff_t y = site_r[i] + j / block, x = site_c[i] + j % block;
@@ -765,45 +792,47 @@ static void sim_tof_light(const double *depth, const uint8_t *depth_valid, ptrdi
             double amb = rho * L->ambient * L->k;
             if (L->duty != 1.0) amb = amb * L->duty;
             const double s = surface ? rho * irr * L->k : 0.0;
-            tot[j] = s + amb;
+            sig[j][li] = s;
+            dsv[j][li] = ds;
+            tot[j][li] = s + amb;
             dd[j] = d;
             all_valid &= cv;
             if (cv) {
                 past |= d >= L->unambiguous;
                 if (d > *dmax) *dmax = d;
             }
-            for (int f = 0; f < F; f++) {
-                const double ph = fmod(L->four_pi_f[f] * ds / L->speed_of_light, L->two_pi);
-                double sn, cs;
-                sim_sincos(ph, &sn, &cs);
-                pre[f][j] = s * cs;
-                pim[f][j] = s * sn;
-            }
         }
         double total, dsum;
         if (ncell == 1) {
-            total = tot[0];
+            total = tot[0][li];
             dsum = dd[0];
         } else {
-            /* NumPy's sums over the cells: real ones left to right, complex ones pairwise */
-            total = ((tot[0] + tot[1]) + tot[2]) + tot[3];
+            /* NumPy's sums over the cells: real ones left to right */
+            total = ((tot[0][li] + tot[1][li]) + tot[2][li]) + tot[3][li];
             dsum = ((dd[0] + dd[1]) + dd[2]) + dd[3];
-            for (int f = 0; f < F; f++) {
-                pre[f][0] = (pre[f][0] + pre[f][1]) + (pre[f][2] + pre[f][3]);
-                pim[f][0] = (pim[f][0] + pim[f][1]) + (pim[f][2] + pim[f][3]);
-            }
         }
-        const ptrdiff_t li = i - i0;
-        const double dc = 0.25 * total;
-        for (int f = 0; f < F; f++)
-            for (int k = 0; k < 4; k++) {
-                const double ac = pre[f][0] * L->shift_re[k] - pim[f][0] * L->shift_im[k];
-                mean[(f * 4 + k) * SIM_CHUNK + li] = dc + L->c25 * ac;
-            }
+        tot[0][li] = total;
         suppress[li] = L->suppression * (0.25 * total + dark);
         depth_true[i] = dsum / (double)ncell;
         valid[i] = (uint8_t)all_valid;
         beyond[i] = (uint8_t)past;
+    }
+    for (int f = 0; f < F; f++) {
+        for (int j = 0; j < ncell; j++)
+            sim_tof_phasors(sig[j], dsv[j], m, L->four_pi_f[f], L->speed_of_light, L->two_pi,
+                            pre[j], pim[j]);
+        if (ncell != 1)           /* NumPy's sums of the complex cells: pairwise */
+            for (ptrdiff_t li = 0; li < m; li++) {
+                pre[0][li] = (pre[0][li] + pre[1][li]) + (pre[2][li] + pre[3][li]);
+                pim[0][li] = (pim[0][li] + pim[1][li]) + (pim[2][li] + pim[3][li]);
+            }
+        for (int k = 0; k < 4; k++) {
+            const double sr = L->shift_re[k], si = L->shift_im[k];
+            double *out = mean + (f * 4 + k) * SIM_CHUNK;
+            SIM_SIMD
+            for (ptrdiff_t li = 0; li < m; li++)
+                out[li] = 0.25 * tot[0][li] + L->c25 * (pre[0][li] * sr - pim[0][li] * si);
+        }
     }
 }
 

@@ -2,11 +2,12 @@
 ``tools/tof_unguided_paired.py --make``), alternated call by call: the same frame, and the
 speed.
 
-    python tools/simulate_paired.py DIR [ROUNDS] [WORKERS] [--optics]   # a few minutes
+    python tools/simulate_paired.py DIR [ROUNDS] [WORKERS] [--optics] [--bench]
 
 The 12 MP art scene of tools/tof_guided_speed.py (depth included; its arrays come from
 fancy indexing, so they are not in C order, as a user's transposed or indexed arrays), Mask1,
-seed 1, with ``optics=Optics()`` when asked: medians, the median of the rounds' speed ratios
+seed 1, with ``optics=Optics()`` when asked, or with ``--bench`` the scene of ``rgbz-fast bench
+--chain`` (its 8-bit image and depth plane, C-ordered): medians, the median of the rounds' speed ratios
 (> 1: this checkout is faster), and whether the colour data and the taps are equal.
 """
 import importlib
@@ -30,24 +31,32 @@ def scene(pkg):
                           depth_valid=s.depth_valid[ri][:, ci])
 
 
-def main(other_dir, rounds=3, workers=2, optics=False):
+def bench_scene(pkg):
+    sim = importlib.import_module(f"{pkg}.simulation")
+    cases = importlib.import_module(f"{pkg}._devtools.bench.cases")
+    return sim, sim.Scene(cases.make_rgb(cases.FULL_SHAPE),
+                          depth=cases.bench_depth(cases.FULL_SHAPE))
+
+
+def main(other_dir, rounds=3, workers=2, optics=False, bench=False):
     importlib.import_module("rgbz_fast._kernels")            # this extension first
     sys.path.insert(0, str(Path(other_dir).resolve()))
     runs = {}
     for name, pkg in (("this", "rgbz_fast"), ("other", "rgbz_old")):
-        sim, sc = scene(pkg)
+        sim, sc = (bench_scene if bench else scene)(pkg)
         runs[name] = (lambda sim=sim, sc=sc: sim.simulate(
             sc, "mask1", seed=1, optics=sim.Optics() if optics else None, workers=workers))
     a, b = runs["this"](), runs["other"]()
     same = np.array_equal(a.data, b.data) and np.array_equal(a.tof.taps, b.tof.taps)
     t, ratio = alternate(runs, rounds)
     label = "Optics()" if optics else "None"
-    print(f"simulate(art 12 MP, 'mask1', optics={label}, workers={workers}): "
+    print(f"simulate({'bench' if bench else 'art'} 12 MP, 'mask1', optics={label}, workers={workers}): "
           f"{statistics.median(t['this']):.2f} s against {statistics.median(t['other']):.2f} s, "
           f"speed ratio {ratio:.3f}, same frame: {same}; load average "
           f"{os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a != "--optics"]
-    main(args[0], *(int(a) for a in args[1:3]), optics="--optics" in sys.argv)
+    args = [a for a in sys.argv[1:] if a not in ("--optics", "--bench")]
+    main(args[0], *(int(a) for a in args[1:3]), optics="--optics" in sys.argv,
+         bench="--bench" in sys.argv)

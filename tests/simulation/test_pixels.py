@@ -155,7 +155,11 @@ def test_auto_exposure_percentile_is_numpys():
 @pytest.mark.parametrize("pattern,block", [("mask1", None), ("mask2", None), ("rows", None),
                                            ("mask2", 1), ("GZGR/BGBG", None)])
 @pytest.mark.parametrize("variant", ["ir", "estimate", "far", "suppress", "float"])
-def test_noise_free_tof_is_the_reference_bit_for_bit(pattern, block, variant):
+def test_noise_free_tof_is_the_reference(pattern, block, variant):
+    """The noise-free taps of ideal Z pixels are the NumPy model's: equal codes once
+    quantised; without quantisation (``float``) within 1e-14 of the largest tap, as the C
+    light takes the phasor's sine and cosine by its own vectorised code (sim_tof_phasors),
+    a few units in the last place from the C library's that NumPy calls."""
     rgb = load_kodak(5, crop=(48, 64))
     scene = _depth_scene(rgb, ir=variant != "estimate", scale=6.0 if variant == "far" else 1.0)
     sensor = ToFSensor(z_block=block, pixel_pitch_um=2.8)
@@ -179,7 +183,10 @@ def test_noise_free_tof_is_the_reference_bit_for_bit(pattern, block, variant):
         v = np.stack([scene.depth_valid[rows + i // b, cols + i % b] for i in range(b * b)], 1)
         beyond = np.any(v & (d >= sensor.unambiguous_range), axis=1)
         assert beyond.any()
-    np.testing.assert_array_equal(got.taps, taps)
+    if variant == "float":
+        np.testing.assert_allclose(got.taps, taps, rtol=0, atol=1e-14 * np.abs(taps).max())
+    else:
+        np.testing.assert_array_equal(got.taps, taps)
     np.testing.assert_array_equal(got.depth_true, depth_true)
     np.testing.assert_array_equal(got.valid, valid & ~beyond)
     np.testing.assert_array_equal(got.saturated, sat)
