@@ -289,6 +289,15 @@ int rgbz_exp_port_f64(const double *x, double *out, ptrdiff_t n);
 /* the smallest and largest value of n floats of type (RGBZ_T_F32 or RGBZ_T_F64) in one pass
    (scan.c): a NaN makes the range not finite */
 int rgbz_float_range(int type, const void *data, ptrdiff_t n, double *lo, double *hi);
+/* one pass over n >= 1 measurement sites (rows[i], cols[i]) (scan.c): lo_hi = {smallest row,
+   largest row, smallest column, largest column}; *ordered = 1 when they are in strictly
+   increasing row-major order (so no site is given twice) */
+int rgbz_sites_range(const int64_t *rows, const int64_t *cols, ptrdiff_t n, int64_t lo_hi[4],
+                     int *ordered);
+/* *first = the index of the first site whose block x block cells are not all Z sites of a
+   P x Q tile of Z flags repeated over the frame, or -1 (scan.c); sites in [0, 2^31 - 2] */
+int rgbz_sites_off_z(const int64_t *rows, const int64_t *cols, ptrdiff_t n, int block,
+                     const uint8_t *tile_z, int P, int Q, ptrdiff_t *first);
 
 /* build information */
 int rgbz_have_openmp(void);

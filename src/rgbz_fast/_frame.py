@@ -135,14 +135,13 @@ class RawFrame:
 def _check_z_sites(tof, pattern):
     """Every cell of every measurement's block is a Z site of ``pattern``: a measurement at
     a colour pixel would be reported as depth there."""
-    z = pattern.z_mask(tof.shape)
+    from . import _kernels
+
     rows, cols = tof.sites
-    ok = np.ones(rows.size, bool)
-    for dr in range(tof.block):
-        for dc in range(tof.block):
-            ok &= z[rows + dr, cols + dc]
-    if not ok.all():
-        i = int(np.flatnonzero(~ok)[0])
+    tile_z = np.ascontiguousarray(pattern.tile == Z, np.uint8)
+    i = _kernels.sites_off_z(np.ascontiguousarray(rows), np.ascontiguousarray(cols),
+                             tof.block, tile_z)
+    if i >= 0:
         raise ValueError(f"tof: the measurement at ({rows[i]}, {cols[i]}) (a {tof.block}x"
                          f"{tof.block} block) covers a colour pixel of pattern "
                          f"{pattern.name!r}; ToF measurements sit on its Z sites")
@@ -367,8 +366,8 @@ class ToFTaps:
         if freqs.shape != (F,):
             raise ValueError(f"frequencies: expected {F} values, got shape {freqs.shape}")
         adopted = isinstance(self.sites, _Adopt)
-        rows, cols = check_sites(self.sites.array if adopted else self.sites, "sites",
-                                 copy=not adopted)
+        rows, cols, span = check_sites(self.sites.array if adopted else self.sites, "sites",
+                                       copy=not adopted, span=True)
         per_site = {k: _owned(getattr(self, k), k) for k in ("depth_true", "valid",
                                                              "saturated")}
         for name, a in (("sites", rows), ("sites", cols), *per_site.items()):
@@ -397,9 +396,10 @@ class ToFTaps:
         shape = tuple(int(v) for v in shape)
         object.__setattr__(self, "meta", check_meta(self.meta, "meta"))
         # every site's block inside the frame (a file could say anything)
-        for name, a, size in (("rows", rows, shape[0]), ("cols", cols, shape[1])):
-            if n and (a.min() < 0 or a.max() > size - block):
-                raise ValueError(f"sites: {name} span [{a.min()}, {a.max()}], outside the "
+        for name, lo, hi, size in (("rows", *span[:2], shape[0]), ("cols", *span[2:], shape[1])
+                                   ) if n else ():
+            if lo < 0 or hi > size - block:
+                raise ValueError(f"sites: {name} span [{lo}, {hi}], outside the "
                                  f"{shape[0]}x{shape[1]} frame")
         for a in (taps, freqs, rows, cols, *per_site.values()):
             a.setflags(write=False)

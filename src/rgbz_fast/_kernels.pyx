@@ -151,6 +151,37 @@ def float_range(a):
     return lo, hi
 
 
+def sites_range(const int64_t[::1] rows, const int64_t[::1] cols):
+    """((smallest row, largest row, smallest column, largest column), ordered) of n >= 1
+    measurement sites in one pass (csrc/scan.c); ordered: strictly increasing row-major
+    (no site twice)."""
+    cdef int64_t lo_hi[4]
+    cdef int ordered = 0, status
+    if cols.shape[0] != rows.shape[0]:
+        raise ValueError("sites_range: rows and cols differ in length")
+    with nogil:
+        status = rgbz_sites_range(&rows[0], &cols[0], rows.shape[0], lo_hi, &ordered)
+    _raise_for(status)
+    return (lo_hi[0], lo_hi[1], lo_hi[2], lo_hi[3]), bool(ordered)
+
+
+def sites_off_z(const int64_t[::1] rows, const int64_t[::1] cols, int block,
+                const uint8_t[:, ::1] tile_z):
+    """The index of the first site whose block x block cells are not all Z sites of the
+    repeated tile, or -1 (csrc/scan.c); sites in [0, 2**31 - 2]."""
+    cdef Py_ssize_t first = -1, n = rows.shape[0]
+    cdef int status
+    if cols.shape[0] != n:
+        raise ValueError("sites_off_z: rows and cols differ in length")
+    if n == 0:
+        return -1
+    with nogil:
+        status = rgbz_sites_off_z(&rows[0], &cols[0], n, block, &tile_z[0, 0],
+                                  tile_z.shape[0], tile_z.shape[1], &first)
+    _raise_for(status)
+    return first
+
+
 def tof_unwrap(const double[:, ::1] phase, const double[::1] freqs, const double[::1] weights,
                double max_range, double[::1] depth, double[::1] residual, int32_t[::1] wraps,
                int workers):

@@ -120,6 +120,10 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_exp_port_f32(const float *x, float *out, Py_ssize_t n)
     int rgbz_exp_port_f64(const double *x, double *out, Py_ssize_t n)
     int rgbz_float_range(int type, const void *data, Py_ssize_t n, double *lo, double *hi)
+    int rgbz_sites_range(const int64_t *rows, const int64_t *cols, Py_ssize_t n,
+                         int64_t *lo_hi, int *ordered)
+    int rgbz_sites_off_z(const int64_t *rows, const int64_t *cols, Py_ssize_t n, int block,
+                         const uint8_t *tile_z, int P, int Q, Py_ssize_t *first)
     int rgbz_demosaic(int method, int in_type, int out_type, const void *src, void *dst,
                       Py_ssize_t rows, Py_ssize_t cols, const int32_t *phase, int mode,
                       int workers)

@@ -239,15 +239,20 @@ def check_block(block, name="block"):
     return int(block)
 
 
-def check_sites(sites, name="sites", copy=True):
+def check_sites(sites, name="sites", copy=True, *, span=False):
     """Measurement sites: a pair (rows, cols) of 1-D integer arrays of one length, >= 0,
     no site twice; as two int64 arrays (copies, or with ``copy`` False the arrays themselves
     when they are int64). Float indices were truncated, a repeated site made two
-    measurements of one pixel."""
+    measurements of one pixel. With ``span``: also ``(row min, row max, col min, col max)``
+    (None when there is no site).
+
+    int64 sites (those the library makes and files hold) are checked in one C pass
+    (csrc/scan.c: the span and the row-major order); a pair out of order is searched for a
+    repeat by sorting."""
     pair = as_list(sites, name, "(rows, cols) arrays of pixel indices")
     if len(pair) != 2:
         raise TypeError(f"{name}: expected (rows, cols), got {len(pair)} arrays")
-    out = []
+    arrs = []
     for label, a in zip(("rows", "cols"), pair):
         arr = as_array(a, name)
         if arr.ndim != 1:
@@ -256,24 +261,35 @@ def check_sites(sites, name="sites", copy=True):
         if arr.size and (arr.dtype.kind not in "iu"):
             raise TypeError(f"{name}: expected integer pixel indices, got {label} of dtype "
                             f"{arr.dtype}")
-        if arr.size and (arr.min() < 0 or arr.max() >= 1 << 31):
-            raise ValueError(f"{name}: {label} span [{arr.min()}, {arr.max()}]; expected "
-                             "pixel indices >= 0")
-        out.append(arr.astype(np.int64, copy=copy))
-    rows, cols = out
-    if rows.shape != cols.shape:
+        arrs.append(arr)
+    if arrs[0].shape != arrs[1].shape:
         raise ValueError(f"{name}: expected two arrays of the same shape (n,), got "
-                         f"{rows.shape} and {cols.shape}")
-    if rows.size > 1:
-        key = rows * (int(cols.max()) + 1) + cols
-        if not np.all(key[1:] > key[:-1]):                # row-major: no repeat, O(n)
-            order = np.argsort(key, kind="stable")
-            same = np.flatnonzero(key[order][1:] == key[order][:-1])
-            if same.size:
-                i = order[same[0]]
-                raise ValueError(f"{name}: the site ({rows[i]}, {cols[i]}) is given twice; "
-                                 "each measurement has a site of its own")
-    return rows, cols
+                         f"{arrs[0].shape} and {arrs[1].shape}")
+    rows, cols = (a.astype(np.int64, copy=copy) for a in arrs)
+    lo_hi, ordered = None, True
+    if rows.size:
+        if rows.flags.c_contiguous and cols.flags.c_contiguous:
+            from . import _kernels                  # _validate is imported before it
+            lo_hi, ordered = _kernels.sites_range(rows, cols)
+        else:
+            lo_hi = (rows.min(), rows.max(), cols.min(), cols.max())
+            ordered = None
+        for label, a, lo, hi in (("rows", arrs[0], *lo_hi[:2]), ("cols", arrs[1], *lo_hi[2:])):
+            if lo < 0 or hi >= 1 << 31:                 # the given values, not the int64 ones
+                raise ValueError(f"{name}: {label} span [{a.min()}, {a.max()}]; expected "
+                                 "pixel indices >= 0")
+        lo_hi = tuple(int(v) for v in lo_hi)
+    if rows.size > 1 and not ordered:
+        key = rows * (lo_hi[3] + 1) + cols
+        if ordered is None and np.all(key[1:] > key[:-1]):     # row-major: no repeat, O(n)
+            return (rows, cols, lo_hi) if span else (rows, cols)
+        order = np.argsort(key, kind="stable")
+        same = np.flatnonzero(key[order][1:] == key[order][:-1])
+        if same.size:
+            i = order[same[0]]
+            raise ValueError(f"{name}: the site ({rows[i]}, {cols[i]}) is given twice; "
+                             "each measurement has a site of its own")
+    return (rows, cols, lo_hi) if span else (rows, cols)
 
 
 def merge_params(cls, params=None, overrides=None, *, name="params", caller=None, what=None):
