@@ -2,12 +2,12 @@
 ``tools/tof_unguided_paired.py --make``), alternated call by call: the same frame, and the
 speed.
 
-    python tools/simulate_paired.py DIR [ROUNDS] [WORKERS] [--optics] [--bench]
+    python tools/simulate_paired.py DIR [ROUNDS] [WORKERS] [--optics] [--bench] [--noise-free]
 
 The 12 MP art scene of tools/tof_guided_speed.py (depth included; its arrays come from
 fancy indexing, so they are not in C order, as a user's transposed or indexed arrays), Mask1,
 seed 1, with ``optics=Optics()`` when asked, or with ``--bench`` the scene of ``rgbz-fast bench
---chain`` (its 8-bit image and depth plane, C-ordered): medians, the median of the rounds' speed ratios
+--chain`` (its 8-bit image and depth plane, C-ordered), noise-free with ``--noise-free``: medians, the median of the rounds' speed ratios
 (> 1: this checkout is faster), and whether the colour data and the taps are equal.
 """
 import importlib
@@ -38,25 +38,27 @@ def bench_scene(pkg):
                           depth=cases.bench_depth(cases.FULL_SHAPE))
 
 
-def main(other_dir, rounds=3, workers=2, optics=False, bench=False):
+def main(other_dir, rounds=3, workers=2, optics=False, bench=False, noise_free=False):
     importlib.import_module("rgbz_fast._kernels")            # this extension first
     sys.path.insert(0, str(Path(other_dir).resolve()))
     runs = {}
     for name, pkg in (("this", "rgbz_fast"), ("other", "rgbz_old")):
         sim, sc = (bench_scene if bench else scene)(pkg)
-        runs[name] = (lambda sim=sim, sc=sc: sim.simulate(
-            sc, "mask1", seed=1, optics=sim.Optics() if optics else None, workers=workers))
+        kw = dict(noise=False) if noise_free else dict(seed=1)
+        runs[name] = (lambda sim=sim, sc=sc, kw=kw: sim.simulate(
+            sc, "mask1", optics=sim.Optics() if optics else None, workers=workers, **kw))
     a, b = runs["this"](), runs["other"]()
     same = np.array_equal(a.data, b.data) and np.array_equal(a.tof.taps, b.tof.taps)
     t, ratio = alternate(runs, rounds)
     label = "Optics()" if optics else "None"
-    print(f"simulate({'bench' if bench else 'art'} 12 MP, 'mask1', optics={label}, workers={workers}): "
+    print(f"simulate({'bench' if bench else 'art'} 12 MP, 'mask1', noise={not noise_free}, optics={label}, workers={workers}): "
           f"{statistics.median(t['this']):.2f} s against {statistics.median(t['other']):.2f} s, "
           f"speed ratio {ratio:.3f}, same frame: {same}; load average "
           f"{os.getloadavg()[0]:.1f}, {os.cpu_count()} cores, {rounds} rounds")
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a not in ("--optics", "--bench")]
+    flags = ("--optics", "--bench", "--noise-free")
+    args = [a for a in sys.argv[1:] if a not in flags]
     main(args[0], *(int(a) for a in args[1:3]), optics="--optics" in sys.argv,
-         bench="--bench" in sys.argv)
+         bench="--bench" in sys.argv, noise_free="--noise-free" in sys.argv)
