@@ -48,3 +48,38 @@ static int sr_threads(int workers, ptrdiff_t n)
 #define RGBZ_REAL_TEMPLATE "srgb.template.h"
 #include "rgbz_each_real.h"
 #undef RGBZ_REAL_TEMPLATE
+
+/* out[i] = table[code[i]]: the sRGB decoding's look-up (srgb.h) */
+#define SR_LOOKUP(T)                                                                       \
+    do {                                                                                   \
+        const T *c = (const T *)code;                                                      \
+        SR_FOR(nt)                                                                         \
+        for (ptrdiff_t i = 0; i < n; i++) {                                                \
+            const ptrdiff_t k = (ptrdiff_t)c[i];                                           \
+            bad |= k >= size;                                                              \
+            out[i] = table[k < size ? k : 0];                                              \
+        }                                                                                  \
+    } while (0)
+
+int rgbz_decode_lookup(int code_type, const void *code, ptrdiff_t n, const double *table,
+                       ptrdiff_t size, double *out, int workers)
+{
+    if (!code || !table || !out || n < 0 || size < 1 ||
+        (code_type != RGBZ_T_U8 && code_type != RGBZ_T_U16))
+        return RGBZ_EINVAL;
+    const int nt = sr_threads(workers, n);
+    (void)nt;
+    int bad = 0;
+#ifdef _OPENMP
+#undef SR_FOR
+#define SR_FOR(nt) SR_PRAGMA(omp parallel for simd schedule(static) num_threads(nt) reduction(|:bad))
+#else
+#undef SR_FOR
+#define SR_FOR(nt) SR_PRAGMA(omp simd reduction(|:bad))
+#endif
+    if (code_type == RGBZ_T_U8)
+        SR_LOOKUP(uint8_t);
+    else
+        SR_LOOKUP(uint16_t);
+    return bad ? RGBZ_EDOMAIN : RGBZ_OK;
+}

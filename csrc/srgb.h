@@ -30,4 +30,11 @@ int rgbz_oetf_finish_f32(const float *x, const float *p, ptrdiff_t n, int code_t
 int rgbz_oetf_finish_f64(const double *x, const double *p, ptrdiff_t n, int code_type,
                          void *code, int workers);
 
+/* The decoding of 8- and 16-bit sRGB images (rgbz_fast.simulation.srgb_decode): out[i] =
+   table[code[i]] for n codes of code_type (RGBZ_T_U8 or RGBZ_T_U16) and a table of size
+   values, threaded (one thread per 2**18 values at most). RGBZ_EDOMAIN when a code is not
+   below size (out then holds table[0] there). */
+int rgbz_decode_lookup(int code_type, const void *code, ptrdiff_t n, const double *table,
+                       ptrdiff_t size, double *out, int workers);
+
 #endif /* RGBZ_SRGB_H */

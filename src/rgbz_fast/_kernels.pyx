@@ -460,6 +460,8 @@ cdef extern from "srgb.h" nogil:
                              void *code, int workers)
     int rgbz_oetf_finish_f64(const double *x, const double *p, Py_ssize_t n, int code_type,
                              void *code, int workers)
+    int rgbz_decode_lookup(int code_type, const void *code, Py_ssize_t n, const double *table,
+                           Py_ssize_t size, double *out, int workers)
 
 ctypedef fused code_t:
     uint8_t
@@ -489,6 +491,25 @@ def oetf_finish(const rgb_t[::1] x, const rgb_t[::1] p, code_t[::1] code, int wo
             status = rgbz_oetf_finish_f64(&x[0], &p[0], x.shape[0], code_type, &code[0],
                                           workers)
     _raise_for(status)
+
+
+def decode_lookup(const code_t[::1] code, const double[::1] table, double[::1] out,
+                  int workers):
+    """out = table[code] (8- or 16-bit codes), threaded: the sRGB decoding's look-up.
+    Returns False when a code is not below the table's length (out holds table[0] there)."""
+    cdef int status
+    cdef int code_type = RGBZ_T_U8 if code_t is uint8_t else RGBZ_T_U16
+    if out.shape[0] != code.shape[0]:
+        raise ValueError("decode_lookup: out and code differ in length")
+    if code.shape[0] == 0:
+        return True
+    with nogil:
+        status = rgbz_decode_lookup(code_type, &code[0], code.shape[0], &table[0],
+                                    table.shape[0], &out[0], workers)
+    if status == RGBZ_EDOMAIN:
+        return False
+    _raise_for(status)
+    return True
 
 
 # ---------------------------------------------------------------------- ToF bilateral (tof_filter.c)

@@ -35,6 +35,34 @@ def test_integer_rgb_is_srgb_and_linearised(dtype, top):
     np.testing.assert_allclose(s.image[1, 1, 0], srgb_to_linear((top // 2) / top))
 
 
+@pytest.mark.parametrize("dtype,bits", [(np.uint8, None), (np.uint16, None), (np.uint16, 12),
+                                        (np.uint8, 5)])
+def test_srgb_decode_in_c_is_the_table_look_up(dtype, bits):
+    """The decoding of 8- and 16-bit images (a C look-up on the threads) gives NumPy's
+    look-up of the same table, value for value; any layout, sizes around the threads'
+    split; a Scene of it skips the range checks its values cannot fail."""
+    from rgbz_fast import _kernels
+    from rgbz_fast.simulation._scene import srgb_decode, srgb_decode_table
+
+    top = (1 << (bits or 8 * np.dtype(dtype).itemsize)) - 1
+    rng = np.random.default_rng(top)
+    table = srgb_decode_table(bits or 8 * np.dtype(dtype).itemsize)
+    for shape in ((1, 1, 3), (7, 5, 3), (300, 301, 3), (1, (1 << 18) + 3, 3)):
+        img = rng.integers(0, top + 1, shape).astype(dtype)
+        img.reshape(-1)[:2] = (0, top)
+        for view in (img, img[:, ::-1], np.asfortranarray(img)):
+            got = srgb_decode(view, "image", bits)
+            assert got.flags.c_contiguous and got.dtype == np.float64
+            np.testing.assert_array_equal(got, table[view])
+        np.testing.assert_array_equal(Scene(img, input_bits=bits).image, table[img])
+    if bits is not None:
+        # a code beyond the table: refused by the Scene's bits check, and by the kernel
+        out = np.empty(3)
+        assert not _kernels.decode_lookup(np.array([0, top + 1, 1], dtype), table, out, 1)
+        with pytest.raises(ValueError, match=r"^image: integer values span \[0, "):
+            Scene(np.array([[[0, top + 1, 1]]], dtype), input_bits=bits)
+
+
 def test_float_rgb_is_linear_and_encodings_explicit():
     img = np.full((2, 2, 3), 0.5)
     assert Scene(img).image[0, 0, 0] == 0.5

@@ -285,6 +285,7 @@ class Scene:
         integer = np.issubdtype(img.dtype, np.integer) or img.dtype == np.bool_
         bits = self.input_bits
         fresh = False                        # img is the caller's array until converted
+        decoded = False                      # values of the sRGB table: in [0, 1]
         if not integer:
             integer_bits(img, "image", bits)          # input_bits with a float image: refused
         if self.wavelengths is None:
@@ -293,7 +294,7 @@ class Scene:
                                  f"shape {img.shape}; pass wavelengths= for a spectral cube")
             if integer:
                 img = srgb_decode(img, "image", bits)
-                fresh = True
+                fresh = decoded = True
             wl = None
         else:
             wl = check_image(self.wavelengths, "wavelengths").astype(np.float64)
@@ -312,10 +313,10 @@ class Scene:
         if not integer and img.dtype not in (np.float32, np.float64):
             img = img.astype(np.float32 if img.dtype == np.float16 else np.float64)
             fresh = True
-        if img.min() < 0:
+        if not decoded and img.min() < 0:
             raise ValueError(f"image: holds negative values (min {img.min()}); scene radiance "
                              "and reflectance are >= 0")
-        if float(img.max()) > SCENE_MAX:          # float32 cannot hold SCENE_MAX
+        if not decoded and float(img.max()) > SCENE_MAX:     # float32 cannot hold it
             raise ValueError(f"image: values up to {img.max():g}; a relative radiance beyond "
                              f"{SCENE_MAX:g} (white = 1) overflows the sensor models")
         object.__setattr__(self, "image", _readonly(img, fresh))
@@ -466,8 +467,17 @@ def srgb_decode(img, name="image", input_bits=None):
         return srgb_to_linear(_int_to_unit(img, name, input_bits))
     bits = 8 * img.itemsize if input_bits is None else integer_bits(img, name, input_bits)
     # the codes in C order first (an eighth of the output's bytes): the look-up's result
-    # takes their layout, and the scene keeps a C-ordered one without copying it
-    return srgb_decode_table(bits)[np.ascontiguousarray(img)]
+    # is C-ordered, and the scene keeps it without copying it
+    from .. import _kernels
+    from .._threads import check_workers
+
+    codes = np.ascontiguousarray(img)
+    out = np.empty(codes.shape, np.float64)
+    # in C on the threads: NumPy's fancy indexing looked the codes up one at a time
+    if not _kernels.decode_lookup(codes.reshape(-1), srgb_decode_table(bits), out.reshape(-1),
+                                  check_workers(None)):
+        raise ValueError(f"{name}: holds codes beyond {bits} bits (max {int(codes.max())})")
+    return out
 
 
 @lru_cache(maxsize=4)
