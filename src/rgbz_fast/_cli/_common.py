@@ -420,6 +420,12 @@ def output_file(out):
     """``out`` when it can be the one file a command writes, else a CliError."""
     if _exists(out, "--out") and out.is_dir():
         raise CliError(f"--out: {str(out)!r} is a folder; give the name of the file to write")
+    from ..io._files import _existing_kind
+
+    kind = _existing_kind(out)
+    if kind is not None:
+        raise CliError(f"--out: {str(out)!r} is {kind}, not a regular file; give the name of "
+                       "the file to write")
     return out
 
 
@@ -452,8 +458,11 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
     when two sources would write one file, when a file written is a file read (a link to it
     too: it would be overwritten, before it is read if it comes later), or when a file of
     a suffix read is written into a folder that is read (an evaluation would read its
-    figures back as images on the next run).
+    figures back as images on the next run), or when a file written exists as a device, a
+    FIFO or a socket.
     """
+    from ..io._files import _existing_kind
+
     seen = {}
     for src, path in writes:
         size = len(os.fsencode(Path(path).name))
@@ -461,6 +470,10 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
             raise CliError(f"{flag}: the output name {Path(path).name[:40]}... (from {src}) is "
                            f"{size} bytes, more than the 255 a file name may have; rename "
                            "the input")
+        kind = _existing_kind(path)
+        if kind is not None:
+            raise CliError(f"{flag}: {path} (from {src}) is {kind}, not a regular file; it "
+                           f"would be replaced by one: remove it or choose another {flag}")
         key = _same_file_key(path)
         if key in seen and seen[key][0] != src:
             raise CliError(f"{flag}: {seen[key][0]} and {src} would both write {path}; give "

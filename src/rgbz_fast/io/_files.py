@@ -132,6 +132,16 @@ def _file_kind(mode):
     return "not a regular file"
 
 
+def _existing_kind(path):
+    """What ``path`` is when it exists and is not a regular file or a folder (a device, a
+    FIFO, a socket), else None."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return None
+    return None if stat.S_ISREG(mode) or stat.S_ISDIR(mode) else _file_kind(mode)
+
+
 def read_file(path, name="path", *, max_bytes=None):
     """The bytes of a regular file, read at most ``max_bytes`` (never blocks, never unbounded).
 
@@ -235,7 +245,10 @@ def atomic_write(path, data):
     name created exclusively) in the destination folder and removed if the
     write fails or is interrupted (an exception, Ctrl-C, or a SIGTERM, which
     the command line turns into an exception); the file gets the permissions
-    the umask gives a new file. Text is written as UTF-8.
+    the umask gives a new file. Text is written as UTF-8. A symbolic link is
+    followed: the file it names is replaced, the link stays. A device, a
+    FIFO or a socket at ``path`` is refused (a ValueError naming ``path``):
+    the rename would have put a regular file in its place.
 
     Examples
     --------
@@ -250,8 +263,14 @@ def atomic_write(path, data):
     if not isinstance(data, (str, bytes, bytearray, memoryview)):
         raise TypeError(f"data: expected str or bytes, got {type(data).__name__}")
     path = check_path(path, "path")
+    if path.is_symlink():                          # the file it names is replaced, as by open()
+        path = Path(os.path.realpath(path))
     if path.is_dir():                              # os.replace would name the temporary file
         raise ParameterError("path", f"{path} is a folder; expected a file to write")
+    kind = _existing_kind(path)
+    if kind is not None:                           # a device or a FIFO: never replaced by a file
+        raise ParameterError("path", f"{path} is {kind}, not a regular file; expected a file "
+                                     "to write")
     path.parent.mkdir(parents=True, exist_ok=True)
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
     stem = _temporary_stem(path)
