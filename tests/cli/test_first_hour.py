@@ -232,9 +232,14 @@ def test_evaluate_crop_figure_shows_structure_on_the_dng(tmp_path, capsys):
     assert window.mean() > np.percentile(luma, 25)                      # not a dark strip
     assert main(argv + ["--zoom", "600,800,48"]) == 0
     assert _crop_box(tmp_path / "out" / "crops_colorchart.png") == (600, 800, 48, 48)
-    assert main(argv + ["--zoom", "1150,0"]) == 2
+    out = tmp_path / "out"
+    before = {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()}
+    capsys.readouterr()
+    assert main([a if a != "bilinear,sg" else "bi" for a in argv] + ["--zoom", "1150,0"]) == 2
     assert capsys.readouterr().err.strip().startswith(
         "rgbz-fast evaluate: error: --zoom: (1150, 0, 64, 64) is not inside the 1156x1734")
+    # refused before anything is written: the last run's reports as they were
+    assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
 
 
 # --------------------------------------------------------------------------- tradeoff plot

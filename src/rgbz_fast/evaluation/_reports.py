@@ -39,8 +39,9 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
         ``results`` is not a :class:`Results`.
     ValueError
         ``results`` holds no row (an empty table has nothing to summarise;
-        nothing is written, not even the folder), or ``table_image`` is not
-        one of its images.
+        nothing is written, not even the folder), ``table_image`` is not
+        one of its images, or ``crop_box`` is not inside the crop source's
+        image (checked before anything is written).
     """
     plots = check_flag(plots, "plots")
     if not isinstance(results, Results):
@@ -56,6 +57,16 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     if crop_box is not None:
         crop_box = _check_box(crop_box, name="crop_box")
     out = check_path(out_dir, "out_dir")
+    figure = None
+    if plots and crop_source is not None:
+        # made before anything is written: a crop_box outside its image is refused with the
+        # folder as it was
+        try:
+            figure = crop_figure(crop_source, results.config, box=crop_box)
+        except ValueError as exc:                        # the box is this call's crop_box
+            if str(exc).startswith("box: "):
+                raise ValueError("crop_" + str(exc)) from None
+            raise
     out.mkdir(parents=True, exist_ok=True)
     previous = _previous_reports(out)
     written = []
@@ -76,13 +87,7 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
             put(f"bars_{k}.png", bar_chart(results, k))
             if several:
                 put(f"paired_{k}.png", paired_chart(results, k))
-        if crop_source is not None:
-            try:
-                figure = crop_figure(crop_source, results.config, box=crop_box)
-            except ValueError as exc:                    # the box is this call's crop_box
-                if str(exc).startswith("box: "):
-                    raise ValueError("crop_" + str(exc)) from None
-                raise
+        if figure is not None:
             put(f"crops_{_safe(crop_source.name)}.png", figure)
     names = [p.name for p in written]
     for name in sorted(previous - set(names)):          # a previous run's, not rewritten
