@@ -9,6 +9,7 @@ import json
 import numpy as np
 
 from ..io import atomic_write, read_file
+from ..io._files import _existing_kind
 
 
 def _safe(name):
@@ -87,8 +88,13 @@ def _cache_write(cdir, key, values):
     """Write an entry; a cache that cannot take it (a folder or a file of no write
     permission under its name) costs a warning, never the result."""
     body = json.dumps(values, sort_keys=True)
+    entry = cdir / f"{key}.json"
     try:
         cdir.mkdir(parents=True, exist_ok=True)
+        if _existing_kind(entry) is not None:
+            # a FIFO or a device under the cache's own name (atomic_write refuses to replace
+            # one): the cache's, so it goes; a folder stays and costs the warning below
+            entry.unlink()
         atomic_write(cdir / f"{key}.json", json.dumps(
             {"check": _cache_check(key, body), "values": values}, sort_keys=True))
     except (OSError, ValueError) as exc:
