@@ -39,7 +39,14 @@ ROWS = [
       "denoise: expected one of 'bilateral', 'box', 'none'"),
     R("tof.depth-range_scale", "tof_depth(range_scale=0)",
       lambda f: tof.tof_depth(sim_frame(), range_scale=0), ValueError,
-      "range_scale: expected a finite number > 0"),
+      "range_scale: expected a finite number >= 1e-06 and <= 1e+06, got 0"),
+    R("tof.depth-range_scale-tiny", "tof_depth(range_scale=1e-200)",
+      lambda f: tof.tof_depth(sim_frame(), range_scale=1e-200), ValueError,
+      "range_scale: expected a finite number >= 1e-06 and <= 1e+06, got 1e-200"),
+    R("tof.depth-colour_scale-huge", "tof_depth(frame, guide=image, colour_scale=1e160)",
+      lambda f: tof.tof_depth(sim_frame(), guide=np.full((16, 16, 3), 0.5),
+                              colour_scale=1e160), ValueError,
+      "colour_scale: expected a finite number >= 1e-06 and <= 1e+06, got 1e+160"),
     R("tof.depth-max_sigma", "tof_depth(max_sigma=0)",
       lambda f: tof.tof_depth(sim_frame(), max_sigma=0), ValueError,
       "max_sigma: expected a finite number > 0"),
@@ -219,6 +226,10 @@ ROWS = [
     R("tof.upsample-guide-int32", "upsample_depth(result, int32 image)",
       lambda f: tof.upsample_depth(tof.tof_depth(sim_frame()), np.ones((16, 16, 3), np.int32)),
       TypeError, "guide: an image of int32"),
+    R("tof.upsample-colour_scale-tiny", "upsample_depth(result, image, colour_scale=1e-200)",
+      lambda f: tof.upsample_depth(tof.tof_depth(sim_frame()), np.full((16, 16, 3), 0.5),
+                                   colour_scale=1e-200), ValueError,
+      "colour_scale: expected a finite number >= 1e-06 and <= 1e+06, got 1e-200"),
 ]
 
 test_api_contract = api_tests(ROWS)

@@ -34,7 +34,7 @@ import numpy as np
 from .. import _kernels
 from .._validate import check_choice, check_number, check_workers, merge_params
 from ._calibration import ToFCalibration, as_taps
-from ._filters import denoise_phasors_bilateral
+from ._filters import check_scale, denoise_phasors_bilateral
 from ._guided import _layout_of, check_guide, guided_flying_of, guided_run
 from ._noise import tap_variance
 from ._result import ToFDepth
@@ -84,13 +84,13 @@ class ToFISP:
         and 5 for the box (the paper's 5x5-pixel kernel: 3x3 Z measurements).
     range_scale : float
         Range scale ``h`` of the bilateral weights (2; larger smooths across
-        weaker edges).
+        weaker edges), in [1e-6, 1e6].
     colour_scale : float
         With a guide: range scale ``h_c`` of the colour weights
         ``exp(-max(chi_c - 3, 0) / (2 h_c^2))``, ``chi_c`` the colour
         difference of two measurements in units of the guide's noise (5: a
         colour step of a few noise levels, texture, still averages; a colour
-        edge does not). Without a guide it is not used.
+        edge does not), in [1e-6, 1e6]. Without a guide it is not used.
     min_snr : float
         Smallest per-frequency ``|I + iQ| / sigma_I`` of a valid measurement
         (4: on noisy walls the unwrapping errs on 0.07 % of the measurements
@@ -155,10 +155,8 @@ class ToFISP:
         put(self, "denoise", _check_denoise(self.denoise))
         if self.window is not None:
             put(self, "window", _check_window(self.window))
-        put(self, "range_scale", check_number(self.range_scale, "range_scale", lo=0,
-                                              lo_open=True))
-        put(self, "colour_scale", check_number(self.colour_scale, "colour_scale", lo=0,
-                                               lo_open=True))
+        put(self, "range_scale", check_scale(self.range_scale, "range_scale"))
+        put(self, "colour_scale", check_scale(self.colour_scale, "colour_scale"))
         put(self, "min_snr", check_number(self.min_snr, "min_snr", lo=0))
         put(self, "min_amplitude", check_number(self.min_amplitude, "min_amplitude", lo=0))
         put(self, "max_residual", check_number(self.max_residual, "max_residual", lo=0,

@@ -47,6 +47,16 @@ import numpy as np
 from .. import _kernels
 from .._validate import check_block, check_int, check_number, check_sites, check_workers
 
+#: the range of a filter's scale (range_scale, colour_scale): beyond it the weights are those
+#: of the bound (every neighbour equal, or none but the exact match), and far beyond it their
+#: 1 / (2 h^2) overflows or divides by zero
+SCALE_BOUNDS = (1e-6, 1e6)
+
+
+def check_scale(value, name):
+    """A filter scale in :data:`SCALE_BOUNDS`, as float; a ValueError naming ``name``."""
+    return check_number(value, name, lo=SCALE_BOUNDS[0], hi=SCALE_BOUNDS[1])
+
 __all__ = ["SiteGrid", "denoise_phasors_bilateral"]
 
 
@@ -257,7 +267,8 @@ def denoise_phasors_bilateral(i, q, var, sites, *, block=1, window=9, use=None,
     use : ndarray of bool, shape (n,), optional
         Measurements allowed into the means (default: all).
     range_scale : float
-        ``h`` of the range kernel (> 0): larger smooths across weaker edges.
+        ``h`` of the range kernel, in [1e-6, 1e6]: larger smooths across weaker
+        edges.
     passes : {1, 2}
         2: a second pass guided by the first's output.
     workers : int, optional
@@ -288,7 +299,7 @@ def denoise_phasors_bilateral(i, q, var, sites, *, block=1, window=9, use=None,
         raise ValueError(f"sites: expected two arrays of shape ({i.shape[1]},), got "
                          f"({grid.n},)")
     window = _check_odd(window, "window")
-    h = check_number(range_scale, "range_scale", lo=0, lo_open=True)
+    h = check_scale(range_scale, "range_scale")
     passes = check_int(passes, "passes", lo=1, hi=2)
     use = np.ones(grid.n, bool) if use is None else np.asarray(use, bool)
     if use.shape != (grid.n,):

@@ -45,7 +45,7 @@ import numpy as np
 
 from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
-from ._filters import SiteGrid
+from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
                         radiometry_coefficients)
@@ -359,7 +359,8 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
         (``ColourISP().run(frame)``).
     colour_scale : float
         Range scale ``h_c`` of the colour kernel ``exp(-max(chi_c - 3, 0) /
-        (2 h_c^2))``, ``chi_c`` in units of the guide's noise (20).
+        (2 h_c^2))``, ``chi_c`` in units of the guide's noise (20), in
+        [1e-6, 1e6].
     ambiguity : float
         The largest share of a pixel's weight the measurements off its chosen
         surface may hold (0.15); 1 gives a depth wherever a measurement reaches
@@ -410,7 +411,7 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     if not isinstance(result, ToFDepth):
         raise TypeError(f"result: expected a ToFDepth (tof_depth's output), got "
                         f"{type(result).__name__}")
-    cs = check_number(colour_scale, "colour_scale", lo=0, lo_open=True)
+    cs = check_scale(colour_scale, "colour_scale")
     amb = check_number(ambiguity, "ambiguity", lo=0, hi=1)
     nthreads = check_workers(workers)
     g, scale = check_guide(guide, result.shape)
