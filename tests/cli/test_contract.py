@@ -181,7 +181,10 @@ CLI_ROWS = [
       "path: {d}/bomb.npz is not a readable rgbz-fast frame (its arrays declare 2097"),
     C("cli.depth-no-taps", ("depth", "{d}/ok.npz"), "path: {d}/ok.npz holds no ToF taps"),
     C("cli.depth-range", ("depth", "{d}/tof.npz", "--range", "2:1"),
-      "argument --range: expected 0 <= MIN < MAX, got '2:1'", usage=True),
+      "argument --range: expected 0 <= MIN < MAX <= 10000 m and MAX - MIN >= 0.001 m, got "
+      "'2:1'", usage=True),
+    C("cli.depth-range-huge", ("depth", "{d}/tof.npz", "--range", "1e308:1.7e308"),
+      "argument --range: expected 0 <= MIN < MAX <= 10000 m", usage=True),
     C("cli.evaluate-limit-zero", ("evaluate", "--dataset", "{d}/ds", "--limit", "0"),
       "argument --limit: expected a positive integer, got '0'", usage=True),
     C("cli.evaluate-limit-negative", ("evaluate", "--dataset", "{d}/ds", "--limit", "-1"),

@@ -115,14 +115,20 @@ def shape(text):
         raise argparse.ArgumentTypeError(str(exc).removeprefix("shape: ")) from None
 
 
+#: the largest MAX of a depth range, in metres (a colour scale beyond it is no depth a ToF
+#: pixel gives; 1e308 broke the plot's ticks after the TIFFs were written)
+METRE_RANGE_MAX = 1e4
+
+
 def metre_range(text):
-    """MIN:MAX in metres, 0 <= MIN < MAX."""
+    """MIN:MAX in metres, 0 <= MIN < MAX <= 10 km, MAX - MIN >= 1 mm."""
     try:
         lo, hi = (float(v) for v in text.split(":"))
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected MIN:MAX in metres, got {text!r}") from None
-    if not (0 <= lo < hi < float("inf")):
-        raise argparse.ArgumentTypeError(f"expected 0 <= MIN < MAX, got {text!r}")
+    if not (0 <= lo < hi <= METRE_RANGE_MAX) or hi - lo < 1e-3:
+        raise argparse.ArgumentTypeError(f"expected 0 <= MIN < MAX <= {METRE_RANGE_MAX:g} m and "
+                                         f"MAX - MIN >= 0.001 m, got {text!r}")
     return lo, hi
 
 
