@@ -9,7 +9,7 @@ from dataclasses import asdict, dataclass, field
 from .._build_config import VERSION
 from .._patterns import get_pattern
 from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
-                         check_int, check_seed)
+                         check_int, check_seed, check_z_patterns)
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, NEEDS_TOF, ReconstructParams
 from ..reconstruction._learned import resolve_filters
@@ -124,7 +124,8 @@ class EvalConfig:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
         # each once: a repeated entry (mask1 and mask1_grbg are one pattern) would be run
         # twice and counted twice in every mean
-        check_entries(self.patterns, "patterns", key=get_pattern, strings=False)
+        check_z_patterns(check_entries(self.patterns, "patterns", key=get_pattern,
+                                       strings=False))
         check_entries(self.methods, "methods")
         check_entries(self.metrics, "metrics")
         bad = [m for m in self.methods if m not in METHODS]

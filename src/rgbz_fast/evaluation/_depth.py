@@ -42,7 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
-from .._validate import check_entries, check_number, check_path, check_seed
+from .._validate import check_entries, check_number, check_path, check_seed, check_z_patterns
 from ..isp import ColourISP
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
 from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
@@ -307,7 +307,8 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     seed = check_seed(seed, "seed")
     tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
     sections = check_entries(sections, "sections")
-    patterns = check_entries(patterns, "patterns", key=get_pattern, strings=False)
+    patterns = check_z_patterns(check_entries(patterns, "patterns", key=get_pattern,
+                                              strings=False))
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
