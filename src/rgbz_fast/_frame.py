@@ -18,7 +18,7 @@ from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
 from ._validate import (FRAME_DTYPES, as_array, as_list, check_bit_depth, check_dtype,
                         check_block, check_fill, check_finite, check_frequencies, check_image, check_int,
-                        check_meta, check_sites, integer_bits)
+                        check_meta, check_sites, finite_range, integer_bits)
 from ._validate import _check_range, _in_range_fast
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
@@ -376,6 +376,13 @@ class ToFTaps:
         if n and per_site["depth_true"].dtype.kind not in "iuf":
             raise TypeError(f"depth_true: expected metres, got dtype "
                             f"{per_site['depth_true'].dtype}")
+        if n:
+            # the ground truth every depth error is measured against: NaN or infinity gave
+            # "median nan mm", a negative depth an error of metres
+            lo, _ = finite_range(per_site["depth_true"], "depth_true")
+            if lo < 0:
+                raise ValueError(f"depth_true: holds negative depths (min {lo:g} m); expected "
+                                 "metres >= 0")
         for k in ("valid", "saturated"):
             if n and per_site[k].dtype != np.bool_:
                 raise TypeError(f"{k}: expected a bool array, got dtype {per_site[k].dtype}")
