@@ -93,3 +93,20 @@ def test_bad_arguments():
                               "calibration")
     assert evaluate_depth(None, sections="scenes") == {}          # no data: nothing to run
     assert np.isfinite(1.0)
+
+
+def test_a_scene_beyond_the_unambiguous_range_is_named(tmp_path):
+    """Every depth of the scene beyond the range (dmin 0: the disparities alone, metres
+    away): no measurement to score, an error naming the scene, not NumPy's empty minimum."""
+    import imageio.v3 as iio
+
+    scene = tmp_path / "data" / "far"
+    scene.mkdir(parents=True)
+    rng = np.random.default_rng(5)
+    iio.imwrite(scene / "rgb.png", rng.integers(40, 220, (32, 48, 3), dtype=np.uint8))
+    iio.imwrite(scene / "disp1.png", np.full((32, 48), 20, np.uint8))
+    (scene / "dmin.txt").write_text("0\n")
+    with pytest.warns(Warning), pytest.raises(
+            ValueError, match=r"^data: scene .*far: none of its \d+ Z measurements \(mask1\) "
+                              r"has a known depth within the 7.495 m unambiguous range"):
+        evaluate_depth(tmp_path / "data", sections=("scenes",), patterns=("mask1",))

@@ -43,6 +43,12 @@ def scene_runs(data, patterns, isp, seed, limits):
         scene = load_rgbd(Path(data) / name, **limits)
         for pattern in patterns:
             frame = simulate(scene, pattern, seed=seed)
+            if not frame.tof.valid.any():
+                raise ValueError(
+                    f"data: scene {Path(data) / name}: none of its {frame.tof.n_sites} Z "
+                    f"measurements ({pattern}) has a known depth within the "
+                    f"{frame.tof.sensor.unambiguous_range:.4g} m unambiguous range; there is "
+                    "nothing to score (move the scene out of the folder)")
             guide = ColourISP().run(frame)
             yield {"scene": name, "pattern": pattern, "depth": scene.depth,
                    "depth_valid": scene.depth_valid, "tof": frame.tof, "guide": guide,
