@@ -110,3 +110,11 @@ def test_a_scene_beyond_the_unambiguous_range_is_named(tmp_path):
             ValueError, match=r"^data: scene .*far: none of its \d+ Z measurements \(mask1\) "
                               r"has a known depth within the 7.495 m unambiguous range"):
         evaluate_depth(tmp_path / "data", sections=("scenes",), patterns=("mask1",))
+
+
+def test_a_data_folder_without_scenes_is_refused(tmp_path):
+    """An empty --data (or one of loose images) had given an empty table and exit 0."""
+    (tmp_path / "loose.png").write_bytes(b"")
+    with pytest.raises(ValueError, match=r"^data: no RGB-D scene in .* \(a scene is a folder "
+                                         "holding rgb.png, disp1.png and dmin.txt\\)"):
+        evaluate_depth(tmp_path, sections=("scenes",), patterns=("mask1",))

@@ -319,6 +319,9 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     out = {}
     limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)
     if data is not None and ("scenes" in sections or "upsample" in sections):
+        if not scene_folders(data):
+            raise ValueError(f"data: no RGB-D scene in {data} (a scene is a folder holding "
+                             "rgb.png, disp1.png and dmin.txt)")
         rows, up = _scene_tables(data, patterns, isp, seed, tolerance, limits,
                                  "upsample" in sections)
         if "scenes" in sections:
