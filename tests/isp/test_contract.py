@@ -16,6 +16,17 @@ from rgbz_fast.isp import demosaic
 R = Row
 
 ROWS = [
+    # -- what a frame records --------------------------------------------------------------
+    R("isp.run-meta-black-text", "ColourISP().run(frame of meta colour_black_level='x')",
+      lambda f: isp.ColourISP().run(rz.RawFrame(u16((8, 8), 100), "mask1",
+                                                meta={"colour_black_level": "x"})), ValueError,
+      "frame: its meta records an unusable rendering (colour_black_level: expected a number, "
+      "got 'x')"),
+    R("isp.run-meta-black-white", "ColourISP().run(frame of meta colour_black_level=5000)",
+      lambda f: isp.ColourISP().run(rz.RawFrame(u16((8, 8), 100), "mask1",
+                                                meta={"colour_black_level": 5000})), ValueError,
+      "frame: its meta records an unusable rendering (colour_black_level: expected a finite "
+      "number >= 0 and < 2047, got 5000)"),
     # -- demosaic --------------------------------------------------------------------------
     R("isp.demosaic-ndim", "demosaic(3-D)", lambda f: demosaic(np.zeros((4, 4, 3))), ValueError,
       "cfa: expected a 2-D array"),

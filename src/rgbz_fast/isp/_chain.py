@@ -74,11 +74,14 @@ def recorded_rendering(frame):
         raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
     meta = frame.meta
     black = getattr(meta.get("colour_sensor"), "black_level", None)
+    key = "colour_sensor.black_level"
     if black is None:
-        black = meta.get("colour_black_level")
+        black, key = meta.get("colour_black_level"), "colour_black_level"
     gains = meta.get("white_gains")
     matrix = meta.get("colour_matrix")
     try:
+        if black is not None:             # a file's header may hold anything here
+            black = check_number(black, key, lo=0, hi=frame.white_level, hi_open=True)
         gains = None if gains is None else tuple(_check_gains(gains, "white_gains"))
         if matrix is not None:
             matrix = tuple(map(tuple, np.reshape(np.asarray(matrix, np.float64), (3, 3))))
