@@ -395,6 +395,12 @@ class ToFTaps:
                              f"{self.bit_depth}-bit range [0, {top}]")
         if not isinstance(self.sensor, ToFSensor):
             raise TypeError(f"sensor: expected a ToFSensor, got {type(self.sensor).__name__}")
+        if len(self.sensor.frequencies) != F:
+            # the ISP takes the noise model from the sensor and the phases from the taps: a
+            # file whose two disagree failed deep in the validity stage
+            raise ValueError(f"sensor: {len(self.sensor.frequencies)} frequencies "
+                             f"{list(self.sensor.frequencies)}, the taps {F} "
+                             f"{freqs.tolist()}; give the sensor the taps' frequencies")
         shape = as_list(self.shape, "shape", "a (rows, cols) frame shape")
         if len(shape) != 2 or not all(isinstance(v, (int, np.integer)) and
                                       not isinstance(v, bool) for v in shape) \

@@ -513,22 +513,6 @@ def check_flag(value, name):
     return bool(value)
 
 
-def check_z_patterns(patterns, name="patterns"):
-    """Every pattern of ``patterns`` (names or Pattern objects) has Z sites; a ValueError
-    naming ``name`` otherwise (an evaluation measures what is made at the Z sites: of a
-    pattern without one it failed deep inside a metric or the ToF ISP)."""
-    from ._patterns import get_pattern
-
-    for p in patterns:
-        pat = get_pattern(p)
-        if not pat.has_z:
-            given = p if isinstance(p, str) else pat.name
-            raise ValueError(f"{name}: {given!r} has no Z site; the evaluation measures "
-                             "what is made at the Z sites (give an RGB-Z pattern such as "
-                             "'mask1')")
-    return patterns
-
-
 def check_entries(value, name, key=None, strings=True):
     """A sequence of names (a tuple of strings, or one comma-separated string) as a tuple: at
     least one, each a string (unless ``strings`` is False: ``key`` checks them), none twice.

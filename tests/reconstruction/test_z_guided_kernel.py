@@ -19,6 +19,8 @@ Tolerances (stated here, asserted below):
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -215,7 +217,9 @@ def test_guide_of_one_frequency_and_of_dark_pixels():
     frame = simulate(_scene((24, 28), 6), "mask2", seed=1, noise=True)
     tof = frame.tof
     one = ToFTaps(tof.taps[:1], tof.frequencies[:1], tof.sites, tof.block, tof.bit_depth,
-                  tof.depth_true, tof.valid, tof.saturated, tof.sensor, tof.shape, tof.meta)
+                  tof.depth_true, tof.valid, tof.saturated,
+                  replace(tof.sensor, frequencies=tuple(tof.frequencies[:1])), tof.shape,
+                  tof.meta)
     grid, var = guide_grid(frame.shape, frame.pattern, tof=one, workers=2)
     np.testing.assert_array_equal(grid, reference_guide_grid(frame.shape, frame.pattern,
                                                              one)[0])
@@ -262,8 +266,9 @@ def test_guide_refuses_more_frequencies_than_it_reads():
     frame = simulate(_scene((12, 16), 2), "mask1", seed=1, noise=True)
     tof = frame.tof
     F = _kernels.TOF_MAX_FREQS + 1
-    many = ToFTaps(np.tile(tof.taps[:1], (F, 1, 1)), 1e6 * np.arange(1, F + 1), tof.sites,
+    freqs = 1e6 * np.arange(1, F + 1)
+    many = ToFTaps(np.tile(tof.taps[:1], (F, 1, 1)), freqs, tof.sites,
                    tof.block, tof.bit_depth, tof.depth_true, tof.valid, tof.saturated,
-                   tof.sensor, tof.shape, tof.meta)
+                   replace(tof.sensor, frequencies=tuple(freqs)), tof.shape, tof.meta)
     with pytest.raises(ValueError, match="frame.tof: the guide reads at most"):
         guide_grid(frame.shape, frame.pattern, tof=many)

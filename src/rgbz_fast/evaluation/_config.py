@@ -9,7 +9,7 @@ from dataclasses import asdict, dataclass, field
 from .._build_config import VERSION
 from .._patterns import get_pattern
 from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
-                         check_int, check_seed, check_z_patterns)
+                         check_int, check_seed)
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, NEEDS_TOF, ReconstructParams
 from ..reconstruction._learned import resolve_filters
@@ -47,6 +47,20 @@ _DEMOSAICS = ("malvar2004", "menon2007", "bilinear")
 
 def _default_params():
     return ReconstructParams(precision="float64")
+
+
+def check_z_patterns(patterns, name="patterns"):
+    """Every pattern of ``patterns`` (names or Pattern objects) has Z sites; a ValueError
+    naming ``name`` otherwise (an evaluation measures what is made at the Z sites: of a
+    pattern without one it failed deep inside a metric or the ToF ISP)."""
+    for p in patterns:
+        pat = get_pattern(p)
+        if not pat.has_z:
+            given = p if isinstance(p, str) else pat.name
+            raise ValueError(f"{name}: {given!r} has no Z site; the evaluation measures "
+                             "what is made at the Z sites (give an RGB-Z pattern such as "
+                             "'mask1')")
+    return patterns
 
 
 @dataclass(frozen=True)

@@ -42,10 +42,11 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import get_pattern
-from .._validate import check_entries, check_number, check_path, check_seed, check_z_patterns
+from .._validate import check_entries, check_number, check_path, check_seed
 from ..isp import ColourISP
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
 from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
+from ._config import check_z_patterns
 from ._depth_guided import (rgbnir_rows, scene_folders, scene_row, scene_runs, total_rows,
                             upsample_rows)
 from ._depth_report import depth_report
