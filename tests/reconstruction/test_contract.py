@@ -24,6 +24,12 @@ from rgbz_fast.isp import demosaic
 R = Row
 
 ROWS = [
+    R("reconstruction.train-ridge-huge", "train(frames, ridge=1e308)",
+      lambda f: rz.reconstruction.train([small_frame()], ridge=1e308), ValueError,
+      "ridge: expected a finite number >= 0 and <= 1e+06, got 1e+308"),
+    R("reconstruction.train-prior-huge", "train(frames, prior=1e308)",
+      lambda f: rz.reconstruction.train([small_frame()], prior=1e308), ValueError,
+      "prior: expected a finite number >= 0 and <= 1e+06, got 1e+308"),
     # -- reconstruct -----------------------------------------------------------------------
     R("reconstruction.reconstruct-ndim-3", "reconstruct(3-D)",
       lambda f: rz.reconstruct(u16((4, 4, 3)), pattern="mask1"), ValueError,

@@ -16,6 +16,9 @@ __all__ = ["train"]
 THRESHOLD_SITES = 20000
 #: ratios emax / emin above this count as this (a channel with no texture at all)
 _SPREAD_CAP = 1e6
+#: the largest ridge and prior weight (and z_guided's colour prior): beyond it a fit is its
+#: prior alone, and 1e308 overflowed the normal equations into "filters: weights holds NaN"
+REGULARISATION_MAX = 1e6
 
 
 def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spread=3,
@@ -41,10 +44,10 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
         Buckets: 8 x n_strength x n_coherence x n_spread.
     ridge : float, optional
         Ridge term of every least-squares fit, relative to the mean diagonal
-        of its normal matrix (>= 0; None: 1e-3).
+        of its normal matrix (0 to 1e6; None: 1e-3).
     prior : float, optional
         Weight of the phase-wide filter in each bucket's fit, in training
-        sites (>= 0; None: 50): a bucket with few sites stays close to the
+        sites (0 to 1e6; None: 50): a bucket with few sites stays close to the
         filter fitted on all of them (rare buckets merge into the common
         filter).
     meta : dict, optional
@@ -105,8 +108,8 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
     levels = [check_int(v, n, lo=1, hi=8) for v, n in ((n_strength, "n_strength"),
                                                       (n_coherence, "n_coherence"),
                                                       (n_spread, "n_spread"))]
-    ridge = 1e-3 if ridge is None else check_number(ridge, "ridge", lo=0)
-    prior = 50.0 if prior is None else check_number(prior, "prior", lo=0)
+    ridge = 1e-3 if ridge is None else check_number(ridge, "ridge", lo=0, hi=REGULARISATION_MAX)
+    prior = 50.0 if prior is None else check_number(prior, "prior", lo=0, hi=REGULARISATION_MAX)
     if isinstance(frames, Iterator):            # one-shot: kept for the second pass
         frames = list(frames)
     pattern, bit_depth, samples, n_frames = _first_pass(frames, radius, hash_radius)

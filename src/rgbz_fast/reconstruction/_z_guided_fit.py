@@ -18,6 +18,7 @@ from .._frame import RawFrame
 from .._threads import check_workers
 from .._validate import check_flag, check_int, check_number
 from ._learned import LearnedFilters, default_filters
+from ._learned_train import REGULARISATION_MAX
 from ._z_guided import N_GUIDE, ZGuidedFilters, _site_features, check_base, guide_grid, z_layout
 
 __all__ = ["train_z_guided", "frame_stats", "fit_stats", "fit_folds", "select_stats",
@@ -126,7 +127,8 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
     """
     guide = check_flag(guide, "guide")
     given = {n: (None if v is None else check_number(v, n, lo=_BOUNDS[n][0],
-                                                    lo_open=_BOUNDS[n][1]))
+                                                    lo_open=_BOUNDS[n][1],
+                                                    hi=REGULARISATION_MAX))
              for n, v in (("ridge", ridge), ("prior", prior), ("colour_prior", colour_prior))}
     if select not in SELECTIONS:
         raise ValueError(f"select: expected 'cv' or None, got {select!r}")
@@ -251,7 +253,8 @@ def check_grid(grid, name="cv_grid"):
         if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
             raise TypeError(f"{name}[{n!r}]: expected a sequence of numbers, got {values!r}")
         lo, lo_open = _BOUNDS[n]
-        vals = tuple(check_number(v, f"{name}[{n!r}]", lo=lo, lo_open=lo_open) for v in values)
+        vals = tuple(check_number(v, f"{name}[{n!r}]", lo=lo, lo_open=lo_open,
+                                  hi=REGULARISATION_MAX) for v in values)
         if not vals:
             raise ValueError(f"{name}[{n!r}]: expected at least one value, got none")
         if len(set(vals)) != len(vals):
