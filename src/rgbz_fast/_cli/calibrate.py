@@ -35,15 +35,18 @@ def add_parser(sub):
                         "--positions, --frames-per-position, --sensor")
     c.add_pattern(p, "mask2", "pattern of a simulated sweep")
     c.add_shape(p, "64x96", "size of a simulated sweep's frames (default: 64x96)")
-    p.add_argument("--near", type=c.positive_float, default=0.6, metavar="M",
+    wall = c.number(float, lambda v: 0 < v <= 1000, "a distance in (0, 1000] m")
+    p.add_argument("--near", type=wall, default=0.6, metavar="M",
                    help="nearest wall of a simulated sweep, in metres")
-    p.add_argument("--far", type=c.positive_float, default=2.6, metavar="M",
+    p.add_argument("--far", type=wall, default=2.6, metavar="M",
                    help="farthest wall of a simulated sweep, in metres (more than the 1.874 m "
                         "wrap range of 80 MHz)")
-    p.add_argument("--positions", type=c.number(int, lambda v: v >= 2, "an integer >= 2"),
-                   default=48, help="wall positions of a simulated sweep")
-    p.add_argument("--frames-per-position", type=c.positive_int, default=3,
-                   help="frames at each position of a simulated sweep")
+    p.add_argument("--positions", type=c.number(int, lambda v: 2 <= v <= 4096,
+                                                "an integer in [2, 4096]"),
+                   default=48, help="wall positions of a simulated sweep (2 to 4096)")
+    p.add_argument("--frames-per-position", type=c.number(int, lambda v: 1 <= v <= 256,
+                                                          "an integer in [1, 256]"),
+                   default=3, help="frames at each position of a simulated sweep (1 to 256)")
     p.add_argument("--reflectance", type=c.number(float, lambda v: 0 < v <= 1,
                                                   "a number in (0, 1]"), default=0.8,
                    help="NIR reflectance of the simulated wall")
