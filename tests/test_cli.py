@@ -220,7 +220,7 @@ def test_bad_depth_and_optics_arguments(argv, match, capsys, tmp_path):
 
 @pytest.mark.parametrize("argv, match", [
     (["calibrate", "--simulate", "--shape", "16by24"], "argument --shape: expected ROWSxCOLS"),
-    (["calibrate", "--simulate", "--positions", "1"], "argument --positions: expected an integer >= 2"),
+    (["calibrate", "--simulate", "--positions", "1"], "argument --positions: expected an integer in [2, 4096]"),
     (["evaluate", "--optics", "--f-number", "0"], "argument --f-number: expected a positive"),
     (["depth", "x.npz", "--denoise", "gauss"], "argument --denoise: invalid choice"),
 ])

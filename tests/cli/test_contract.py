@@ -33,8 +33,11 @@ CLI_ROWS = [
     C("cli.simulate-seed", ("simulate", "{d}/rgb.png", "--seed", "-1"),
       "argument --seed: expected an integer >= 0, got '-1'", usage=True),
     C("cli.simulate-tiny", ("simulate", "{d}/tiny.png"),
-      "scene: frame 1x1 is smaller than one period"),
+      "scene {d}/tiny.png: frame 1x1 is smaller than one period"),
     C("cli.simulate-corrupt", ("simulate", "{d}/corrupt.png"), "path: cannot read"),
+    C("cli.simulate-dark-named", ("simulate", "{d}/small.png", "{d}/rgb.png", "--out",
+                                  "{d}/sim_out"),
+      "scene {d}/rgb.png: the 99th percentile of the signal is 0"),
     C("cli.simulate-int32", ("simulate", "{d}/int32.tif"),
       "path: {d}/int32.tif holds int32 samples, a type that says nothing about the range of "
       "their values; pass --input-bits"),

@@ -51,8 +51,19 @@ def run(args):
              for s in args.scenes]
     c.unique_outputs([(s, [n]) for s, n in dests], out)
     for s, name in tqdm(dests, desc="simulate", unit="scene", disable=args.quiet):
-        scene = load_scene(s, grey=args.grey, input_bits=args.input_bits, **c.limits(args))
-        frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)
+        try:
+            scene = load_scene(s, grey=args.grey, input_bits=args.input_bits, **c.limits(args))
+            frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)
+        except (ValueError, TypeError) as exc:
+            # about a scene's content ("image: holds 1 NaN", "scene: too dark for
+            # auto-exposure"): which of the scenes given
+            msg = c.explain(exc, args.parser)
+            what, _, rest = msg.partition(": ")
+            if what == "scene":
+                msg = f"scene {s}: {rest}"
+            elif what in ("image", "depth", "depth_valid", "ir_reflectance", "wavelengths"):
+                msg = f"scene {s}: {msg}"
+            raise c.CliError(msg) from None
         save_frame(out / name, frame)            # the folder appears with its first file
         if not args.quiet:
             tof = "with ToF taps" if frame.tof is not None else "no depth: no ToF"
