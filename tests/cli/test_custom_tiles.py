@@ -173,3 +173,23 @@ def test_a_method_that_does_not_apply_is_a_note_of_the_evaluate_run(tmp_path, ca
                  "edi_rows", "--metrics", "cfa_psnr", "--no-cache", "--quiet",
                  "--out", str(tmp_path / "r2")]) == 2
     assert "error: method: 'edi_rows' needs" in capsys.readouterr().err
+
+
+def test_a_large_tile_gets_a_short_file_name(tmp_path, capsys):
+    """A 32x32 tile spelled out is over a thousand characters, more than a file name may
+    hold: its label is cut and ends in a digest, so two large tiles keep two names."""
+    from rgbz_fast._cli._common import LABEL_MAX, file_label
+
+    rows = []
+    for r in range(32):
+        row = ("RG" if r % 2 == 0 else "GB") * 16
+        rows.append("Z" + row[1:] if r % 8 == 0 else row)
+    big = "/".join(rows)
+    other = big.replace("Z", "R", 1).replace("GBGBGBGB", "ZBGBGBGB", 1)
+    assert len(file_label(big)) == LABEL_MAX and file_label(big) != file_label(other)
+    src = images(tmp_path / "ds", 1) / "img0.png"
+    assert main(["simulate", str(src), "--pattern", big, "--out", str(tmp_path / "f"),
+                 "--no-noise", "--quiet"]) == 0
+    (written,) = (tmp_path / "f").iterdir()
+    assert written.name == f"img0_{file_label(big)}.npz"
+    assert rz.io.load_frame(written).pattern.tile_string == big

@@ -515,9 +515,22 @@ def file_label(name):
     fields joined by ``_``, each lower-case with ``-`` inside it, so a field never splits
     (``bayer_grbg`` -> ``bayer-grbg``, the tile ``ZR/BG`` -> ``zr-bg``, ``SG`` -> ``sg``).
     ``name``: a string or anything with a ``name`` (a Pattern).
+    A label longer than :data:`LABEL_MAX` characters (a large custom tile, 32x32 spelled out
+    is over a thousand) is cut and ends in a digest of the whole name, so that different
+    tiles keep different file names and a name stays within the file system's 255 bytes.
     """
     text = getattr(name, "name", name)
-    return re.sub(r"[^a-z0-9.-]", "-", str(text).strip().lower())
+    label = re.sub(r"[^a-z0-9.-]", "-", str(text).strip().lower())
+    if len(label) > LABEL_MAX:
+        import hashlib
+
+        digest = hashlib.sha1(str(text).encode("utf-8")).hexdigest()[:12]
+        label = f"{label[:LABEL_MAX - 13]}-{digest}"
+    return label
+
+
+#: the longest field of an output file name (file_label)
+LABEL_MAX = 48
 
 
 def must_exist(paths, prefix="path: "):
