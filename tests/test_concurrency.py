@@ -331,6 +331,9 @@ def test_a_thread_stack_the_system_refuses_is_a_clear_error():
     assert run(["-c", code, "1"], "32G")[1] == "ran"
     assert run(["-c", code, "2"], "16M")[1] == "ran"
     assert run(["-c", code, "2"], "not a size")[1] == "ran"        # libgomp ignores it too
+    # below the smallest stack pthreads takes: libgomp warns and keeps its default stack
+    assert run(["-c", code, "2"], "0")[1] == "ran"
+    assert run(["-c", code, "2"], "1k")[1] == "ran"
     with tempfile.TemporaryDirectory() as d:
         frame = Path(d) / "f.npz"
         rz.io.save_frame(frame, rz.mosaic(np.random.default_rng(0).random((64, 64, 3)),

@@ -223,8 +223,21 @@ def _libgomp_stacksize(env):
         size = int(t[:digits]) << shift
         if size >= 1 << 64:                       # libgomp: overflow, an invalid value
             continue
+        if size < _thread_stack_min():
+            # libgomp: pthread_attr_setstacksize refuses it, libgomp warns "Stack size less
+            # than minimum" and keeps the default stack (OMP_STACKSIZE=0 was refused here
+            # with the advice to set a smaller size)
+            return None
         return var, text, size
     return None
+
+
+def _thread_stack_min():
+    """The smallest thread stack pthreads accepts (PTHREAD_STACK_MIN), 16 KiB if unknown."""
+    try:
+        return max(int(os.sysconf("SC_THREAD_STACK_MIN")), 1)
+    except (ValueError, OSError, AttributeError):
+        return 16384
 
 
 #: the thread stack libgomp uses, from the environment as the library was loaded (libgomp
