@@ -291,6 +291,25 @@ def test_headerless_wrong_size(tmp_path):
         read_raw(path, phase="RGGB", black_level=0, white_level=1023)
 
 
+def test_levels_the_data_cannot_reach_are_refused(tmp_path):
+    """A white level beyond the data type's codes made every pixel 0 (a CFA PSNR of inf); a
+    stated bit depth the data exceeds clipped it silently; the levels print as numbers."""
+    path = tmp_path / "x.raw"
+    data = np.arange(24, dtype=np.uint16).reshape(4, 6) * 40        # up to 920: 10 bits
+    data.tofile(path)
+    kw = dict(shape=(4, 6), phase="RGGB", black_level=0)
+    with pytest.raises(ValueError, match=r"^white_level: 1e\+308 is beyond the largest code "
+                                         r"of the uint16 data \(65535\)"):
+        read_raw(path, white_level=1e308, **kw)
+    with pytest.raises(ValueError, match=r"^bit_depth_in: the data of x.raw reaches 920, "
+                                         r"beyond the 8-bit range \[0, 255\]"):
+        read_raw(path, bit_depth_in=8, **kw)
+    assert read_raw(path, bit_depth_in=10, **kw).meta["clipped_count"] == 0
+    with pytest.raises(ValueError, match=r"^white_level: 100 must exceed black_level "
+                                         r"\(0, 200, 0, 0\) at every quad site"):
+        read_raw(path, **{**kw, "black_level": (0, 200, 0, 0)}, white_level=100)
+
+
 @pytest.mark.parametrize("missing", ["phase", "black_level", "white_level"])
 def test_missing_parameter_is_named(tmp_path, missing):
     path = tmp_path / "x.raw"

@@ -213,8 +213,21 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     black = _quad_levels(black_level, "black_level")
     white = _quad_levels(white_level, "white_level")
     if np.any(white <= black):
-        raise ValueError(f"white_level: {tuple(white.ravel())} must exceed black_level "
-                         f"{tuple(black.ravel())} at every quad site")
+        raise ValueError(f"white_level: {_levels_text(white)} must exceed black_level "
+                         f"{_levels_text(black)} at every quad site")
+    if np.issubdtype(data.dtype, np.integer):
+        # levels the data cannot reach: a white level of 1e308 made every pixel 0 (and a CFA
+        # PSNR of inf); data beyond a stated bit depth was clipped, half a frame silently
+        top_code = int(np.iinfo(data.dtype).max)
+        if float(white.max()) > top_code:
+            raise ValueError(f"white_level: {_levels_text(white)} is beyond the largest code "
+                             f"of the {data.dtype} data ({top_code})")
+        if given["bit_depth_in"] is not None and data.size:
+            most = int(data.max())
+            if most > (1 << int(bit_depth_in)) - 1:
+                raise ValueError(f"bit_depth_in: the data of {path.name} reaches {most}, "
+                                 f"beyond the {int(bit_depth_in)}-bit range [0, "
+                                 f"{(1 << int(bit_depth_in)) - 1}]")
     if own_depth:
         bd = _input_bits(bit_depth_in or info.get("bit_depth_in"), white)
         if out_dtype == np.uint8 and bd > 8:
@@ -448,6 +461,12 @@ def _check_downsample(k):
     return int(k)
 
 
+def _levels_text(quad):
+    """Four quad levels as text: one number when they are equal, else the four."""
+    vals = [float(v) for v in np.ravel(quad)]
+    return f"{vals[0]:g}" if len(set(vals)) == 1 else "(" + ", ".join(f"{v:g}" for v in vals) + ")"
+
+
 def _quad_levels(value, name):
     """A scalar or 4 values (quad raster order) -> float64 array of shape (2, 2)."""
     if isinstance(value, (str, bytes, bool, np.bool_)):
@@ -464,7 +483,8 @@ def _quad_levels(value, name):
         raise ValueError(f"{name}: expected one value or four (one per 2x2 quad site), "
                          f"got {np.shape(value)}")
     if not np.all(np.isfinite(arr)) or np.any(arr < 0):
-        raise ValueError(f"{name}: expected finite non-negative values, got {arr.ravel()}")
+        raise ValueError(f"{name}: expected finite non-negative values, got "
+                         f"{_levels_text(arr)}")
     return arr
 
 
