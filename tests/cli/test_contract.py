@@ -183,6 +183,9 @@ CLI_ROWS = [
     C("cli.reconstruct-zip-bomb", ("reconstruct", "{d}/bomb.npz", "--max-bytes", "1000000"),
       "path: {d}/bomb.npz is not a readable rgbz-fast frame (its arrays declare 2097"),
     C("cli.depth-no-taps", ("depth", "{d}/ok.npz"), "path: {d}/ok.npz holds no ToF taps"),
+    C("cli.reconstruct-z_guided-no-taps", ("reconstruct", "{d}/ok.npz", "--method", "z_guided",
+                                           "--out", "{d}/zg_out"),
+      "--method z_guided: {d}/ok.npz carries no ToF taps, and the method is guided by the NIR"),
     C("cli.depth-range", ("depth", "{d}/tof.npz", "--range", "2:1"),
       "argument --range: expected 0 <= MIN < MAX <= 10000 m and MAX - MIN >= 0.001 m, got "
       "'2:1'", usage=True),

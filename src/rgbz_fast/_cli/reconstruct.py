@@ -124,7 +124,7 @@ def colour_matrix(text):
 def run(args):
     from ..io import load_frame
     from ..metrics import cfa_psnr
-    from ..reconstruction import ReconstructParams, reconstruct
+    from ..reconstruction import NEEDS_TOF, ReconstructParams, reconstruct
 
     if args.pattern is not None and args.rgbz_pattern is not None:
         raise c.CliError("--pattern: names the pattern of a plain mosaic that already holds Z "
@@ -157,6 +157,14 @@ def run(args):
             raise c.CliError(f"{flag}: {f} is an rgbz-fast frame file, which records its own "
                              "pattern and levels; the raw options apply to raw files")
         frame = _with_z_sites(frame, f, args.rgbz_pattern)
+        if args.method.strip().lower() in NEEDS_TOF and frame.tof is None:
+            # the library's advice (pass nir=) has no flag here: say what a user of the
+            # command does
+            raise c.CliError(f"--method {args.method.strip()}: {f} carries no ToF taps, and "
+                             "the method is guided by the NIR amplitude the Z pixels measure; "
+                             "give a frame simulated from a scene with depth (rgbz-fast "
+                             "simulate SCENE_FOLDER holding rgb.png, disp1.png, dmin.txt) or "
+                             "another --method")
         cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
         ref = frame.reference
         dest = out / f"{stem}_{method}{ext}"
