@@ -84,3 +84,16 @@ def test_a_fifo_among_the_files_written_is_refused_before_any_is(tmp_path, capsy
     err = capsys.readouterr().err
     assert "results.csv (from the reports) is a FIFO (named pipe), not a regular file" in err
     assert sorted(os.listdir(out)) == ["results.csv"] and _is_fifo(out / "results.csv")
+
+
+def test_a_folder_where_an_output_file_goes_names_out(tmp_path, capsys):
+    frame = tmp_path / "f.npz"
+    from rgbz_fast import io as rio
+    from rgbz_fast import mosaic
+
+    rio.save_frame(frame, mosaic(np.random.default_rng(0).random((16, 16, 3)), "mask1"))
+    (tmp_path / "out" / "f_sg_cfa.tif").mkdir(parents=True)
+    assert main(["reconstruct", str(frame), "--out", str(tmp_path / "out"), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert f"--out: {tmp_path / 'out' / 'f_sg_cfa.tif'} (from {frame}) is a folder" in err
+    assert sorted(os.listdir(tmp_path / "out")) == ["f_sg_cfa.tif"]

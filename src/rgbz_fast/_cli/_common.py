@@ -476,6 +476,9 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
             raise CliError(f"{flag}: the output name {Path(path).name[:40]}... (from {src}) is "
                            f"{size} bytes, more than the 255 a file name may have; rename "
                            "the input")
+        if os.path.isdir(path):
+            raise CliError(f"{flag}: {path} (from {src}) is a folder, where a file is to be "
+                           f"written: remove it or choose another {flag}")
         kind = _existing_kind(path)
         if kind is not None:
             raise CliError(f"{flag}: {path} (from {src}) is {kind}, not a regular file; it "

@@ -83,17 +83,17 @@ def _libraw_mosaic(rawpy, blob, path, limits):
     """The visible CFA and what LibRaw says of it, from the bytes of a camera raw file."""
     with rawpy.imread(io.BytesIO(blob)) as raw:
         if raw.raw_type != rawpy.RawType.Flat:
-            raise ValueError(f"{path.name}: not a CFA mosaic (LibRaw raw_type "
+            raise ValueError(f"path: {path.name} is not a CFA mosaic (LibRaw raw_type "
                              f"{raw.raw_type.name}, e.g. a linear DNG)")
         pattern = raw.raw_pattern
         desc = raw.color_desc.decode("ascii", "replace")
         if pattern is None or pattern.shape != (2, 2):
             shp = None if pattern is None else pattern.shape
-            raise ValueError(f"{path.name}: not a 2x2 Bayer sensor (CFA pattern {shp}, "
+            raise ValueError(f"path: {path.name} is not a 2x2 Bayer sensor (CFA pattern {shp}, "
                              f"colours {desc!r}; X-Trans and Foveon are not supported)")
         letters = "".join(desc[int(i)] for i in pattern.ravel())
         if letters not in BAYER_PHASES:
-            raise ValueError(f"{path.name}: CFA {letters!r} (colours {desc!r}) is not an RGB "
+            raise ValueError(f"path: {path.name} has the CFA {letters!r} (colours {desc!r}) is not an RGB "
                              "Bayer phase")
         bl = raw.black_level_per_channel      # indexed by colour index
         black = [float(bl[int(i)]) for i in pattern.ravel()]

@@ -248,8 +248,9 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
     if disp.ndim != 2:
         raise ValueError(f"folder: disp1.png has shape {disp.shape}; expected a grey image")
     if disp.shape != rgb.shape[:2]:
-        raise ValueError(f"folder: disp1.png is {disp.shape[1]}x{disp.shape[0]} but rgb.png is "
-                         f"{rgb.shape[1]}x{rgb.shape[0]}; they must be the same size")
+        raise ValueError(f"folder: disp1.png is {disp.shape[0]}x{disp.shape[1]} but rgb.png is "
+                         f"{rgb.shape[0]}x{rgb.shape[1]} (rows x cols); they must be the same "
+                         "size")
     try:
         return Scene.from_rgb(rgb, disparity=disp, focal_px=focal_px, baseline_m=baseline_m,
                               disparity_offset=dmin, invalid_disparity=0,
