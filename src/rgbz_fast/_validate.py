@@ -190,6 +190,9 @@ def as_array(value, name, **kwargs):
                 and a.dtype.kind in "cUSMm":
             raise TypeError(f"{name}: expected real numbers, got dtype {a.dtype}")
         return np.asarray(a, **kwargs)
+    except OverflowError:                      # an int beyond any float or the dtype
+        raise ValueError(f"{name}: holds a number too large for "
+                         f"{np.dtype(kwargs.get('dtype') or np.float64).name}") from None
     except (ValueError, TypeError) as exc:
         if str(exc).startswith(f"{name}: "):
             raise
@@ -462,7 +465,12 @@ def check_number(value, name, *, lo=None, hi=None, lo_open=False, hi_open=False,
     v = _real(value)
     if v is None:
         raise TypeError(f"{name}: expected a number, got {value!r}")
-    v = float(v)
+    try:
+        v = float(v)
+    except OverflowError:                   # an int beyond any float (10**400)
+        kind = "number" if allow_inf else "finite number"
+        raise ValueError(f"{name}: expected a {kind}{_bounds(lo, hi, lo_open, hi_open)}, "
+                         f"got an integer of {len(str(abs(value)))} digits") from None
     bad = np.isnan(v) or (np.isinf(v) and not allow_inf)
     if not bad and lo is not None:
         bad = v <= lo if lo_open else v < lo

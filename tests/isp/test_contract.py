@@ -16,6 +16,12 @@ from rgbz_fast.isp import demosaic
 R = Row
 
 ROWS = [
+    R("isp.WhiteBalance-gains-huge-int", "WhiteBalance(gains=(10**400, 1, 1))",
+      lambda f: isp.WhiteBalance(gains=(10**400, 1, 1)), ValueError,
+      "WhiteBalance.gains: holds a number too large for float64"),
+    R("isp.ColourCorrection-matrix-huge-int", "ColourCorrection(matrix with 10**400)",
+      lambda f: isp.ColourCorrection(matrix=[[10**400, 0, 0], [0, 1, 0], [0, 0, 1]]),
+      ValueError, "ColourCorrection.matrix: holds a number too large for float64"),
     # -- what a frame records --------------------------------------------------------------
     R("isp.run-meta-black-text", "ColourISP().run(frame of meta colour_black_level='x')",
       lambda f: isp.ColourISP().run(rz.RawFrame(u16((8, 8), 100), "mask1",

@@ -24,6 +24,14 @@ from rgbz_fast.isp import demosaic
 R = Row
 
 ROWS = [
+    R("reconstruction.reconstruct-fixed-sigma_floor-huge",
+      "reconstruct(frame, 'sg', precision='fixed', sigma_floor=1e20)",
+      lambda f: rz.reconstruct(u16(), "sg", pattern="mask1", precision="fixed",
+                               sigma_floor=1e20), ValueError,
+      "sigma_floor: 1e+20 DN is beyond the 11-bit codes the fixed-point model computes in"),
+    R("reconstruction.reconstruct-sigma_rel-huge-int", "reconstruct(sigma_rel=10**400)",
+      lambda f: rz.reconstruct(u16(), pattern="mask1", sigma_rel=10**400), ValueError,
+      "sigma_rel: expected a finite number >= 0 and <= 10, got an integer of 401 digits"),
     R("reconstruction.train-ridge-huge", "train(frames, ridge=1e308)",
       lambda f: rz.reconstruction.train([small_frame()], ridge=1e308), ValueError,
       "ridge: expected a finite number >= 0 and <= 1e+06, got 1e+308"),

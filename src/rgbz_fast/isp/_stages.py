@@ -146,6 +146,8 @@ class ColourCorrection:
 def _check_gains(gains, name):
     try:
         g = np.asarray(gains, np.float64)
+    except OverflowError:
+        raise ValueError(f"{name}: holds a number too large for float64") from None
     except (TypeError, ValueError):
         raise TypeError(f"{name}: expected three numbers (R, G, B), got {gains!r}") from None
     if g.shape != (3,) or not np.all(np.isfinite(g)) or np.any(g <= 0):
@@ -157,6 +159,8 @@ def _check_gains(gains, name):
 def _check_matrix(matrix, name):
     try:
         m = np.asarray(matrix, np.float64)
+    except OverflowError:
+        raise ValueError(f"{name}: holds a number too large for float64") from None
     except (TypeError, ValueError):
         raise TypeError(f"{name}: expected a 3x3 matrix of numbers, got {matrix!r}") from None
     if m.shape != (3, 3) or not np.all(np.isfinite(m)):

@@ -329,6 +329,8 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
         raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}")
     try:
         w = np.asarray(weights, dtype=np.float64)
+    except OverflowError:
+        raise ValueError("weights: holds a number too large for float64") from None
     except (TypeError, ValueError):
         raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}") from None
     if w.ndim != 1 or w.size == 0:

@@ -129,6 +129,12 @@ def hw_constants(plans, config, bit_depth, sigma_floor, sigma_rel):
     """The rgbz_hw_plan of every plan (HW_PLAN_DTYPE), from the plan and the configuration."""
     if any(p["use_grad"] or p["use_sg"] for p in plans):      # eq. 7 is computed
         check_sigma_bits(config, sigma_rel)
+    if sigma_floor > 2.0 ** bit_depth:
+        # the floor's constant is an integer of the model's registers (1e20 overflowed
+        # int64); beyond the largest code every weight is already equal
+        raise ValueError(f"sigma_floor: {sigma_floor:g} DN is beyond the {bit_depth}-bit "
+                         f"codes the fixed-point model computes in (at most "
+                         f"{2 ** bit_depth} with precision='fixed')")
     out = np.zeros(len(plans), HW_PLAN_DTYPE)
     Mg = (1 << config.exp_bits) - (config.exp == "table")
     sR = config.sigma_bits
