@@ -102,6 +102,10 @@ CLI_ROWS = [
       "patterns: 'mask1_grbg' is given twice (as 'mask1')"),
     C("cli.evaluate-methods-twice", ("evaluate", "--dataset", "{d}/ds", "--methods", "sg,sg"),
       "argument --methods: 'sg' is given twice in 'sg,sg'; name each entry once", usage=True),
+    C("cli.hardware-out-in-dataset", ("hardware", "--dataset", "{d}/ds", "--sweep", "--out",
+                                      "{d}/ds"),
+      "--out: hardware_sweep.png (from the report) would be written into {d}/ds, a folder "
+      "read as input"),
     C("cli.tradeoff-out-in-dataset", ("tradeoff", "--dataset", "{d}/ds", "--out", "{d}/ds"),
       "--out: tradeoff.png (from the report) would be written into {d}/ds, a folder read as "
       "input"),

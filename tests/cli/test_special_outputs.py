@@ -97,3 +97,16 @@ def test_a_folder_where_an_output_file_goes_names_out(tmp_path, capsys):
     err = capsys.readouterr().err
     assert f"--out: {tmp_path / 'out' / 'f_sg_cfa.tif'} (from {frame}) is a folder" in err
     assert sorted(os.listdir(tmp_path / "out")) == ["f_sg_cfa.tif"]
+
+
+def test_pattern_study_refuses_its_report_in_the_dataset_folder(tmp_path, capsys):
+    import imageio.v3 as iio
+
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "a.png", np.full((32, 32, 3), 128, np.uint8))
+    assert main(["pattern-study", "--dataset", str(ds), "--out", str(ds), "--quiet",
+                 "--no-cache"]) == 2
+    assert "--out: pattern_study.png (from the report) would be written into" in \
+        capsys.readouterr().err
+    assert sorted(os.listdir(ds)) == ["a.png"]

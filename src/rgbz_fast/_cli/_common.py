@@ -504,6 +504,18 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
                                f"choose an {flag} outside it")
 
 
+def check_report_outputs(out, names, dataset, what="the report"):
+    """``check_outputs`` of the report files ``names`` a command writes into ``out`` (None:
+    none) against its ``dataset`` folder (None: the shipped images): a figure written into
+    the folder a dataset is read from is read back as an image by the next run."""
+    if out is None or dataset is None or not Path(dataset).is_dir():
+        return
+    from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
+
+    check_outputs([(what, Path(out) / n) for n in names], (),
+                  [(dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)])
+
+
 def unique_outputs(pairs, out, reads=()):
     """``pairs``: (input, output names) in the folder ``out``; :func:`check_outputs` of them
     against each other and against the files ``reads`` (the inputs themselves included)."""

@@ -73,6 +73,8 @@ def run(args):
     from ..hardware import FixedPointConfig
 
     out = c.output_folder(args.out)
+    c.check_report_outputs(out, ["hardware.md", "hardware.json"]
+                           + (["hardware_sweep.png"] if args.sweep else []), args.dataset)
     try:
         config = FixedPointConfig.build(args.fixed_point)
     except (TypeError, ValueError) as exc:

@@ -83,6 +83,8 @@ def run(args):
     from .._devtools import pattern_report as report
 
     out = c.output_folder(args.out)
+    c.check_report_outputs(out, ["pattern_study.csv", "pattern_study.json", "pattern_study.md"]
+                           + ([] if args.no_plots else ["pattern_study.png"]), args.dataset)
     settings = study.StudySettings(methods=tuple(args.methods), seed=args.seed,
                                    rgbd_size=args.rgbd_size,
                                    wall_distance=args.wall_distance)
