@@ -102,6 +102,10 @@ CLI_ROWS = [
       "patterns: 'mask1_grbg' is given twice (as 'mask1')"),
     C("cli.evaluate-methods-twice", ("evaluate", "--dataset", "{d}/ds", "--methods", "sg,sg"),
       "argument --methods: 'sg' is given twice in 'sg,sg'; name each entry once", usage=True),
+    C("cli.bench-repeat-huge", ("bench", "--repeat", "100000000"),
+      "argument --repeat: expected an integer in [1, 1000], got '100000000'", usage=True),
+    C("cli.bench-numpy-reference-no-py", ("bench", "--numpy-reference", "{d}/corrupt.mat"),
+      "--numpy-reference: cannot load {d}/corrupt.mat (SyntaxError"),
     C("cli.hardware-out-in-dataset", ("hardware", "--dataset", "{d}/ds", "--sweep", "--out",
                                       "{d}/ds"),
       "--out: hardware_sweep.png (from the report) would be written into {d}/ds, a folder "

@@ -181,7 +181,7 @@ def test_bench_bad_input(capsys, args, msg):
 
 @pytest.mark.parametrize("command", ["bench", "tradeoff"])
 @pytest.mark.parametrize("args,msg", [
-    (["--repeat", "0"], "argument --repeat: expected a positive integer, got '0'"),
+    (["--repeat", "0"], "argument --repeat: expected an integer in [1, 1000], got '0'"),
     (["--workers", "0"], "argument --workers: expected a positive integer, got '0'"),
     (["--shape", "48*64"], "argument --shape: expected ROWSxCOLS"),
     (["--nope"], "unrecognized arguments: --nope"),

@@ -213,9 +213,15 @@ def add_quick(p):
                    help="small frames and few repeats (seconds)")
 
 
+#: the most timed runs a --repeat asks for (100000000 ran without end)
+REPEAT_MAX = 1000
+
+
 def add_repeat(p, what):
     """``--repeat N``: timed runs; ``what`` names them and their defaults."""
-    p.add_argument("--repeat", type=positive_int, default=None, metavar="N", help=what)
+    p.add_argument("--repeat", type=number(int, lambda v: 1 <= v <= REPEAT_MAX,
+                                           f"an integer in [1, {REPEAT_MAX}]"),
+                   default=None, metavar="N", help=f"{what} (at most {REPEAT_MAX})")
 
 
 def add_seed(p, default, what):

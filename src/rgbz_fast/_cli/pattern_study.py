@@ -59,7 +59,9 @@ def add_parser(sub):
                    help="the first N scenes only (default: all)")
     p.add_argument("--rgbd-size", type=_size_or_full, default=(384, 384),
                    metavar="ROWSxCOLS|full", help="centre crop of each scene (default: 384x384)")
-    p.add_argument("--wall-distance", type=c.positive_float, default=2.0, metavar="M",
+    p.add_argument("--wall-distance", type=c.number(float, lambda v: 0.01 <= v <= 1000,
+                                                     "a distance in [0.01, 1000] m"),
+                   default=2.0, metavar="M",
                    help="distance of the flat wall of the depth noise, metres")
     c.add_seed(p, 1, "seed of the depth simulations")
     p.add_argument("--scheduler", default=None,

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import importlib.machinery
 import importlib.util
 import os
 import warnings
@@ -55,12 +56,14 @@ def load_numpy_reference(path, name="path"):
     path = Path(path)
     if not path.is_file():
         raise ValueError(f"{name}: {path} is not a file")
-    spec = importlib.util.spec_from_file_location("_rgbz_numpy_reference", path)
+    # loaded as Python source whatever its name (a file without .py gave no loader)
+    loader = importlib.machinery.SourceFileLoader("_rgbz_numpy_reference", str(path))
+    spec = importlib.util.spec_from_loader("_rgbz_numpy_reference", loader)
     mod = importlib.util.module_from_spec(spec)
     try:
-        spec.loader.exec_module(mod)
-    except Exception as exc:  # noqa: BLE001 - the user's file: report why it failed
-        raise ValueError(f"{name}: cannot load {path} ({exc})") from None
+        loader.exec_module(mod)
+    except (Exception, SystemExit) as exc:  # noqa: BLE001 - the user's file: say why it failed
+        raise ValueError(f"{name}: cannot load {path} ({type(exc).__name__}: {exc})") from None
     if not hasattr(mod, "reference_reconstruct"):
         raise ValueError(f"{name}: {path} defines no reference_reconstruct")
     return mod
