@@ -106,6 +106,11 @@ CLI_ROWS = [
       "argument --repeat: expected an integer in [1, 1000], got '100000000'", usage=True),
     C("cli.bench-numpy-reference-no-py", ("bench", "--numpy-reference", "{d}/corrupt.mat"),
       "--numpy-reference: cannot load {d}/corrupt.mat (SyntaxError"),
+    C("cli.hardware-pattern-no-z", ("hardware", "--pattern", "bayer"),
+      "--pattern: 'bayer' has no Z site; give an RGB-Z pattern such as 'mask1'"),
+    C("cli.opcount-patterns-twice", ("opcount", "--image", "none", "--patterns",
+                                     "mask1,mask1_grbg"),
+      "--patterns: 'mask1_grbg' is given twice (as 'mask1')"),
     C("cli.hardware-out-in-dataset", ("hardware", "--dataset", "{d}/ds", "--sweep", "--out",
                                       "{d}/ds"),
       "--out: hardware_sweep.png (from the report) would be written into {d}/ds, a folder "

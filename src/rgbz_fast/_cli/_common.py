@@ -257,6 +257,24 @@ def add_patterns(p, default="mask1,mask2", what="comma-separated patterns"):
     p.add_argument("--patterns", type=csv, default=default, help=what)
 
 
+def z_patterns(names, flag="--patterns"):
+    """``names`` (pattern names or tiles), each once and each with Z sites, else a CliError
+    naming ``flag`` (a pattern without Z sites failed deep in a metric or a plan)."""
+    from .._patterns import get_pattern
+
+    seen = {}
+    for n in names:
+        pat = get_pattern(n)                    # its own error names the pattern
+        if not pat.has_z:
+            raise CliError(f"{flag}: {n!r} has no Z site; give an RGB-Z pattern such as "
+                           "'mask1'")
+        if pat.tile_string in seen and seen[pat.tile_string] != n:
+            raise CliError(f"{flag}: {n!r} is given twice (as {seen[pat.tile_string]!r}); name "
+                           "each pattern once")
+        seen[pat.tile_string] = n
+    return names
+
+
 def add_methods(p, default):
     p.add_argument("--methods", type=csv, default=default, help="comma-separated methods")
 

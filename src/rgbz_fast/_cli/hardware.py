@@ -79,6 +79,7 @@ def run(args):
         config = FixedPointConfig.build(args.fixed_point)
     except (TypeError, ValueError) as exc:
         raise c.CliError(f"--fixed-point: {exc}") from None
+    c.z_patterns([args.pattern], "--pattern")
     pattern = get_pattern(args.pattern)
     images = hw.load_images(args.dataset, args.limit, **c.limits(args))
     report = hw.hardware_report(args.method, pattern, width=args.width, images=images,

@@ -36,6 +36,7 @@ def run(args):
     shape = (32, 32) if args.quick else c.made_shape(args, args.shape)
     out = c.output_folder(args.out)
     image, image_name = _image(args.image)
+    c.z_patterns(args.patterns)
     rows = opcount.opcount_table(args.methods, args.patterns, precision=args.precision,
                                  shape=shape, seed=args.seed, image=image, image_name=image_name)
     tof = opcount.count_tof_operations()
