@@ -108,6 +108,8 @@ CLI_ROWS = [
       "--numpy-reference: cannot load {d}/corrupt.mat (SyntaxError"),
     C("cli.hardware-pattern-no-z", ("hardware", "--pattern", "bayer"),
       "--pattern: 'bayer' has no Z site; give an RGB-Z pattern such as 'mask1'"),
+    C("cli.opcount-image-attribute", ("opcount", "--image", "data_dir"),
+      "--image: 'data_dir' is neither a file nor one of scikit-image's RGB sample images"),
     C("cli.opcount-patterns-twice", ("opcount", "--image", "none", "--patterns",
                                      "mask1,mask1_grbg"),
       "--patterns: 'mask1_grbg' is given twice (as 'mask1')"),

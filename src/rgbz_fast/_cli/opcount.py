@@ -67,10 +67,20 @@ def _image(spec):
         return np.ascontiguousarray(img[..., :3]), Path(spec).name
     import skimage.data
 
-    fn = getattr(skimage.data, str(spec), None)
-    if fn is None:
-        raise c.CliError(f"--image: {spec!r} is neither a file nor a scikit-image sample image")
-    img = np.asarray(fn())
-    if img.ndim != 3:
-        raise c.CliError(f"--image: {spec!r} is not an RGB image")
+    # only the shipped RGB samples: any other attribute of skimage.data was called
+    # (data_dir, __spec__, download_all, which would fetch every sample)
+    if str(spec) not in SKIMAGE_RGB:
+        raise c.CliError(f"--image: {spec!r} is neither a file nor one of scikit-image's RGB "
+                         f"sample images ({', '.join(SKIMAGE_RGB)})")
+    try:
+        img = np.asarray(getattr(skimage.data, str(spec))())
+    except Exception as exc:  # noqa: BLE001 - a sample scikit-image may have to download
+        raise c.CliError(f"--image: cannot load scikit-image's {spec!r} ({exc})") from None
+    if img.ndim != 3 or img.shape[2] < 3 or img.dtype != np.uint8:
+        raise c.CliError(f"--image: {spec!r} is not an 8-bit RGB image")
     return np.ascontiguousarray(img[..., :3]), f"skimage.data.{spec}"
+
+
+#: scikit-image's 8-bit RGB sample images that ship with it (no download)
+SKIMAGE_RGB = ("astronaut", "chelsea", "coffee", "colorwheel", "hubble_deep_field",
+               "immunohistochemistry", "retina", "rocket")

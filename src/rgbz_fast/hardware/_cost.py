@@ -24,6 +24,7 @@ from collections import defaultdict
 from dataclasses import dataclass, field
 
 from .._patterns import get_pattern
+from .._validate import check_int
 from ..reconstruction import ReconstructParams
 from ..reconstruction._fixed import (ALL_FIXED_METHODS, LIMITS, _group_counts, fixed_setup,
                                      hw_constants, register_widths)
@@ -41,7 +42,10 @@ KINDS = ("sub", "abs", "add", "cmp", "mul", "cmul", "shift", "lzd", "exp_lookup"
 
 
 def bram18_blocks(depth, width):
-    """BRAM_18K blocks holding a depth x width memory (the best aspect ratio)."""
+    """BRAM_18K blocks holding a depth x width memory (the best aspect ratio); ``depth`` words
+    of ``width`` bits, integers from 0 up to 2**40 (a ValueError or TypeError naming them)."""
+    depth = check_int(depth, "depth", lo=0, hi=1 << 40)
+    width = check_int(width, "width", lo=0, hi=1 << 40)
     return min(math.ceil(depth / d) * math.ceil(width / w) for d, w in _BRAM18_SHAPES)
 
 
