@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import math
+import re
 
+import numpy as np
 import pytest
 
 import rgbz_fast as rz
@@ -32,6 +34,21 @@ def test_bram18_mapping():
     assert bram18_blocks(3840, 16) == 4
     c = hardware_cost("mask1", "bilinear", width=3840, bit_depth=16)
     assert c.line_buffer_bram18 == 4 * 4
+    assert bram18_blocks(0, 16) == 0 and bram18_blocks(np.int64(1024), 18) == 1
+
+
+@pytest.mark.parametrize("depth,exc,match", [
+    (float("inf"), TypeError, "depth: expected an integer, got inf"),
+    (float("nan"), TypeError, "depth: expected an integer, got nan"),
+    ("a", TypeError, "depth: expected an integer, got 'a'"),
+    (2.5, TypeError, "depth: expected an integer, got 2.5"),
+    (-1, ValueError, "depth: expected an integer >= 0"),
+    (2**41, ValueError, "depth: expected an integer >= 0 and <= ")])
+def test_bram18_blocks_checks_its_sizes(depth, exc, match):
+    with pytest.raises(exc, match="^" + re.escape(match)):
+        bram18_blocks(depth, 5)
+    with pytest.raises(exc, match="^" + re.escape(match.replace("depth", "width"))):
+        bram18_blocks(5, depth)
 
 
 def test_operators_follow_the_plan():
