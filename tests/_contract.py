@@ -285,8 +285,9 @@ def _argv(row, d):
 def cli_prefix(command):
     """Subcommands report as `rgbz-fast CMD: error:` (their unknown arguments too); the
     top-level parser (an unknown command) as `rgbz-fast: error:`."""
-    if command in ("simulate", "reconstruct", "depth", "evaluate", "train", "calibrate",
-                   "evaluate-depth", "bench", "opcount", "tradeoff", "hardware", "config"):
+    from rgbz_fast._cli import COMMANDS
+
+    if command in {m.NAME for m in COMMANDS}:
         return f"rgbz-fast {command}: error: "
     return "rgbz-fast: error: "
 

@@ -48,8 +48,18 @@ def command_parser(sub, name, help, description):
 
 # --------------------------------------------------------------------------- argument types
 def csv(text):
-    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c'); an entry given twice is a usage
-    error (it would be run, and reported, twice)."""
+    """A comma-separated list: 'a, b,,c' -> ('a', 'b', 'c'); an entry given twice, or no
+    entry at all ('' or ','), is a usage error (it would be run twice; an empty list ran
+    nothing and printed an empty table). :func:`csv_or_none` takes an empty list."""
+    items = csv_or_none(text)
+    if not items:
+        raise argparse.ArgumentTypeError(f"expected at least one comma-separated entry, got "
+                                          f"{text!r}")
+    return items
+
+
+def csv_or_none(text):
+    """:func:`csv` where '' means none (pattern-study's --presets: custom tiles only)."""
     items = tuple(s.strip() for s in text.split(",") if s.strip())
     twice = next((s for i, s in enumerate(items) if s in items[:i]), None)
     if twice is not None:

@@ -36,8 +36,11 @@ def fixed_fields(text):
         key, sep, value = item.partition("=")
         if not sep or not key.strip() or not value.strip():
             raise argparse.ArgumentTypeError(f"expected FIELD=VALUE pairs, got {item!r}")
-        value = value.strip()
-        out[key.strip()] = int(value) if value.lstrip("-").isdigit() else value
+        key, value = key.strip(), value.strip()
+        if key in out:                          # the last one had won, silently
+            raise argparse.ArgumentTypeError(f"{key!r} is given twice in {text!r}; give each "
+                                              "field once")
+        out[key] = int(value) if value.lstrip("-").isdigit() else value
     return out
 
 

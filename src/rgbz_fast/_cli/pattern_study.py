@@ -40,9 +40,9 @@ def add_parser(sub):
     c.add_dataset(p, "colour images (e.g. ../shared/data/kodak) (default: scikit-image "
                      "sample images, offline)")
     c.add_limit(p)
-    p.add_argument("--presets", type=c.csv, default="mask1,mask2",
+    p.add_argument("--presets", type=c.csv_or_none, default="mask1,mask2",
                    help="comma-separated presets: mask1, mask2, rows (none: '')")
-    p.add_argument("--tiles", type=c.csv, default=(),
+    p.add_argument("--tiles", type=c.csv_or_none, default=(),
                    help="comma-separated tiles, rows separated by / (default: none)")
     p.add_argument("--generate", default=None, metavar="SPEC",
                    help="generated family: block=1,2 period=4,8 (or RxC) "

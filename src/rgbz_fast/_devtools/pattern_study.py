@@ -360,6 +360,10 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
     ``scheduler``: a Dask address or client; ``workers``: threads of each kernel call.
     """
     t0 = time.perf_counter()
+    from ..evaluation._cache import check_cache_dir, check_scheduler
+
+    scheduler = check_scheduler(scheduler)
+    cache_dir = check_cache_dir(cache_dir)
     settings = StudySettings(methods=tuple(methods)) if settings is None else settings
     if isinstance(tiles, str):
         tiles = tuple(t for t in tiles.split(",") if t.strip())

@@ -5,15 +5,38 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 
 import numpy as np
 
+from .._validate import check_path
 from ..io import atomic_write, read_file
 from ..io._files import _existing_kind
 
 
 def _safe(name):
     return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name)
+
+
+def check_cache_dir(cache_dir, name="cache_dir"):
+    """``cache_dir`` as a Path (None stays None), a ValueError naming ``name`` when it exists
+    and is not a folder (the first entry's write failed deep in the run, naming a sub-path)."""
+    if cache_dir is None:
+        return None
+    cache_dir = check_path(cache_dir, name)
+    if cache_dir.exists() and not cache_dir.is_dir():
+        raise ValueError(f"{name}: {cache_dir} exists and is not a folder")
+    return cache_dir
+
+
+def check_scheduler(scheduler):
+    """``scheduler`` when it is None, a Dask client (has ``submit``) or an address such as
+    ``tcp://host:8786``; else a ValueError naming it (Dask's own message named no option)."""
+    if scheduler is not None and not hasattr(scheduler, "submit") and not (
+            isinstance(scheduler, str) and re.fullmatch(r"\w+://[^/\s]+:\d+", scheduler)):
+        raise ValueError(f"scheduler: expected a Dask scheduler address such as "
+                         f"tcp://host:8786, or a distributed.Client, got {scheduler!r:.60}")
+    return scheduler
 
 
 def cache_folder(name):

@@ -5,7 +5,6 @@ from __future__ import annotations
 import hashlib
 import os
 from functools import lru_cache
-import re
 import signal
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
@@ -24,7 +23,8 @@ from ..io._bayer import place_on_phase
 from ..reconstruction import NEEDS_TOF, reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ..simulation._scene import srgb_decode, srgb_decode_table
-from ._cache import _cache_read, _cache_write, cache_folder
+from ._cache import (_cache_read, _cache_write, cache_folder, check_cache_dir,
+                     check_scheduler)
 from ._config import EvalConfig
 from ._results import Results
 
@@ -446,20 +446,15 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     """
     config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
-    if scheduler is not None and not hasattr(scheduler, "submit") and not (
-            isinstance(scheduler, str) and re.fullmatch(r"\w+://[^/\s]+:\d+", scheduler)):
-        raise ValueError(f"scheduler: expected a Dask scheduler address such as "
-                         f"tcp://host:8786, or a distributed.Client, got {scheduler!r:.60}")
+    scheduler = check_scheduler(scheduler)
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
         raise ValueError("dataset: image names must be unique")
     pooled = scheduler is not None or (nproc > 1 and len(dataset) > 1)
     threads = check_workers(workers if workers is not None else (1 if pooled else None))
+    cache_dir = check_cache_dir(cache_dir)
     if cache_dir is not None:
-        cache_dir = check_path(cache_dir, "cache_dir")
-        if cache_dir.exists() and not cache_dir.is_dir():
-            raise ValueError(f"cache_dir: {cache_dir} exists and is not a folder")
         cache_dir = str(cache_dir)
     skip_bad = check_flag(skip_bad, "skip_bad")
     progress = check_flag(progress, "progress")
