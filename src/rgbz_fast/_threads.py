@@ -77,8 +77,9 @@ def _check_count(value, name, unit, minus_one):
         return os.cpu_count() or 1
     if not integral or value < 1:
         accepted = "None, -1" if minus_one else "None"
-        raise ValueError(f"{name}: expected {accepted} or a positive number of {unit}, "
-                         f"got {value!r}")
+        # a wrong type (text, a float, a bool) is a TypeError, as check_int's
+        raise (ValueError if integral else TypeError)(
+            f"{name}: expected {accepted} or a positive number of {unit}, got {value!r}")
     if value > MAX_WORKERS:
         raise ValueError(f"{name}: expected at most {MAX_WORKERS} {unit}, got {value!r}")
     if value > 1 and value > (os.cpu_count() or 1):    # the usual counts never pay for the probe

@@ -19,6 +19,10 @@ from ._stages import _prepare_cfa, stage_params
 __all__ = ["DefectCorrection", "detect_defects", "correct_defects"]
 
 
+#: the largest spread_factor and cross_factor (the defaults are 1 and 0.1)
+FACTOR_MAX = 1e6
+
+
 @dataclass(frozen=True)
 class DefectCorrection:
     """Dynamic defect-pixel correction (before the reconstruction; Z sites never read).
@@ -52,9 +56,9 @@ class DefectCorrection:
     threshold : float
         Fraction of the white level (0.15).
     spread_factor : float
-        (1.0).
+        (1.0); at most 1e6.
     cross_factor : float
-        (0.1).
+        (0.1); at most 1e6.
     """
 
     enabled: bool = True
@@ -65,8 +69,9 @@ class DefectCorrection:
     def __post_init__(self):
         check_flag(self.enabled, "DefectCorrection.enabled")
         check_number(self.threshold, "DefectCorrection.threshold", lo=0, lo_open=True, hi=1)
-        check_number(self.spread_factor, "DefectCorrection.spread_factor", lo=0)
-        check_number(self.cross_factor, "DefectCorrection.cross_factor", lo=0)
+        # at most FACTOR_MAX: the float32 tests of the fused ISP overflowed beyond it (1e308)
+        check_number(self.spread_factor, "DefectCorrection.spread_factor", lo=0, hi=FACTOR_MAX)
+        check_number(self.cross_factor, "DefectCorrection.cross_factor", lo=0, hi=FACTOR_MAX)
 
 
 

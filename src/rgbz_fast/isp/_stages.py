@@ -80,7 +80,7 @@ class WhiteBalance:
         RGB scene, every plain array); ``"grey_world"``
         (:func:`grey_world_gains`); ``"none"``: unit gains.
     gains : (float, float, float) or None
-        Fixed R, G, B gains; they override ``method``.
+        Fixed R, G, B gains, each in [1e-6, 1e6]; they override ``method``.
     clip : bool
         Clip to [0, 1] after the gains (True).
     """
@@ -143,26 +143,42 @@ class ColourCorrection:
             object.__setattr__(self, "matrix", tuple(tuple(float(v) for v in r) for r in m))
 
 
-def _check_gains(gains, name):
+#: the range of a white-balance gain: a camera's lie within about 0.2-10; a gain beyond it
+#: overflowed float32 inside the fused ISP (1e308 became inf) while the stages took it, and
+#: one below it became 0 in float32
+GAIN_RANGE = (1e-6, 1e6)
+
+
+def _real_numbers(value, name, what):
+    """float64 array of ``value``; text, booleans and complex numbers are a TypeError naming
+    ``name`` (NumPy read numbers out of text, True as 1 and dropped an imaginary part)."""
     try:
-        g = np.asarray(gains, np.float64)
+        raw = np.asarray(value)
+        bad = raw.dtype.kind in "bcUSMmV" or (raw.dtype.kind == "O" and any(
+            isinstance(v, (bool, np.bool_, str, bytes, complex)) for v in raw.reshape(-1)))
+        if bad:
+            raise TypeError
+        return np.asarray(raw, np.float64)
     except OverflowError:
         raise ValueError(f"{name}: holds a number too large for float64") from None
     except (TypeError, ValueError):
-        raise TypeError(f"{name}: expected three numbers (R, G, B), got {gains!r}") from None
+        raise TypeError(f"{name}: expected {what}, got {value!r:.60}") from None
+
+
+def _check_gains(gains, name):
+    g = _real_numbers(gains, name, "three real numbers (R, G, B)")
     if g.shape != (3,) or not np.all(np.isfinite(g)) or np.any(g <= 0):
         raise ValueError(f"{name}: expected three positive finite gains (R, G, B), got "
                          f"{gains!r}")
+    lo, hi = GAIN_RANGE
+    if np.any(g < lo) or np.any(g > hi):
+        raise ValueError(f"{name}: expected gains within [{lo:g}, {hi:g}] (a camera's lie "
+                         f"within about 0.2-10), got {gains!r}")
     return g
 
 
 def _check_matrix(matrix, name):
-    try:
-        m = np.asarray(matrix, np.float64)
-    except OverflowError:
-        raise ValueError(f"{name}: holds a number too large for float64") from None
-    except (TypeError, ValueError):
-        raise TypeError(f"{name}: expected a 3x3 matrix of numbers, got {matrix!r}") from None
+    m = _real_numbers(matrix, name, "a 3x3 matrix of real numbers")
     if m.shape != (3, 3) or not np.all(np.isfinite(m)):
         raise ValueError(f"{name}: expected a finite 3x3 matrix, got shape {m.shape}")
     if np.max(np.abs(m)) > MATRIX_MAX:
