@@ -388,3 +388,48 @@ def test_output_names_up_to_the_longest_file_name_are_written(tmp_path):
     assert main(["simulate", str(tmp_path / ("t" * 248 + ".png")), "--out",
                  str(tmp_path / "o2"), "--quiet"]) == 2
     assert not (tmp_path / "o2").exists()
+
+
+def _tiff_with_bad_first_offset(path):
+    """A valid 8x8 RGB TIFF whose offset to its first page points past the file."""
+    import struct
+
+    import tifffile
+
+    tifffile.imwrite(path, np.zeros((8, 8, 3), np.uint8))
+    data = bytearray(path.read_bytes())
+    data[4:8] = struct.pack("<I" if data[:2] == b"II" else ">I", 0x5A5A5A52)
+    path.write_bytes(bytes(data))
+    return path
+
+
+def test_a_tiff_without_a_readable_page_is_one_error_and_no_log_line(tmp_path, capsys):
+    """tifffile logged '<tifffile.TiffPages @...> invalid offset to first page' on stderr
+    beside the error, which said 'index 0 out of range(0)'."""
+    import logging
+
+    from rgbz_fast._cli import main
+
+    f = _tiff_with_bad_first_offset(tmp_path / "bad.tif")
+    records = []
+    handler = logging.Handler()
+    handler.emit = records.append
+    logging.getLogger("tifffile").addHandler(handler)
+    try:
+        with pytest.raises(ValueError, match=r"it holds no readable page: invalid offset to "
+                                             r"first page 1515870802"):
+            rio.read_image(f)
+        assert main(["simulate", str(f), "--out", str(tmp_path / "out"), "--quiet"]) == 2
+        assert records == []                              # nothing reached the log
+        err = capsys.readouterr().err.strip().splitlines()
+        assert err == [f"rgbz-fast simulate: error: path: cannot read {f} as an image (it "
+                       "holds no readable page: invalid offset to first page 1515870802)"]
+        assert not (tmp_path / "out").exists()
+        # outside the library's reads, tifffile logs as it always did
+        import tifffile
+
+        with tifffile.TiffFile(f) as tf:
+            assert len(tf.pages) == 0
+        assert len(records) == 1 and "invalid offset to first page" in records[0].getMessage()
+    finally:
+        logging.getLogger("tifffile").removeHandler(handler)

@@ -75,8 +75,9 @@ def test_archives_past_4_gib_take_the_zip64_path(monkeypatch, tmp_path):
 def test_objects_and_bad_thread_counts_are_refused():
     with pytest.raises(ValueError, match="pickle"):
         _npz.npz_bytes({"x": np.array([{"a": 1}], dtype=object)})
-    for bad in (0, -1, 1.5, True):
-        with pytest.raises(ValueError, match="workers"):
+    for bad, exc in ((0, ValueError), (-1, ValueError), (1.5, TypeError), (True, TypeError),
+                     ("2", TypeError)):
+        with pytest.raises(exc, match="workers"):
             _npz.npz_bytes({"x": np.zeros(3)}, workers=bad)
 
 

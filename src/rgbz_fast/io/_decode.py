@@ -26,6 +26,8 @@ import re
 
 import numpy as np
 
+from ._tiff import open_tiff
+
 __all__ = ["decode_tiff", "decode_pnm", "decode_pillow", "PNM_MAGIC"]
 
 #: the PNM formats decoded here: grey and colour, ASCII and binary
@@ -46,9 +48,7 @@ def _refuse(kind):
 
 def decode_tiff(data):
     """The first page of a TIFF as grey, RGB or RGBA samples (see the module docstring)."""
-    import tifffile
-
-    with tifffile.TiffFile(io.BytesIO(data)) as tf:
+    with open_tiff(data) as tf:
         page = tf.pages[0]
         photometric = int(page.photometric)
         if photometric in _TIFF_REFUSED:

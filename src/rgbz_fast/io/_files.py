@@ -325,9 +325,9 @@ def _declared_shape(data):
         return (rows, cols, channels), 2 if bits == 16 else 1
     try:
         if data[:4] in _TIFF_MAGIC:
-            import tifffile
+            from ._tiff import open_tiff
 
-            with tifffile.TiffFile(io.BytesIO(data)) as tf:
+            with open_tiff(data) as tf:
                 page = tf.pages[0]
                 return tuple(page.shape), np.dtype(page.dtype).itemsize
         from PIL import Image

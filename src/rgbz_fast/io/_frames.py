@@ -118,13 +118,13 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
     if suffix == ".npz":
         return _as_recorded(_load_npz(path, limits), path, pattern, bit_depth)
     if suffix in (".tif", ".tiff"):
-        import tifffile
+        from ._tiff import open_tiff
 
         desc = []
 
         def decode(blob):
-            with tifffile.TiffFile(io.BytesIO(blob)) as tf:
-                page = tf.pages[0]                          # IndexError: no page
+            with open_tiff(blob) as tf:
+                page = tf.pages[0]
                 desc.append(page.description or "")
                 return page.asarray()
 

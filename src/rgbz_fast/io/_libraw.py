@@ -127,22 +127,15 @@ def _camera_colour(raw, desc):
 
 def _tiff_make_model(blob):
     """Make and Model from the TIFF IFD0 most raw formats are built on, or (None, None)."""
-    import logging
+    from ._tiff import open_tiff                # tifffile logs each damaged tag it skips
 
-    log = logging.getLogger("tifffile")        # it logs each damaged tag it skips
-    quiet = log.disabled
-    log.disabled = True
     try:
-        import tifffile
-
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            with tifffile.TiffFile(io.BytesIO(blob)) as tif:
+            with open_tiff(blob) as tif:
                 tags = tif.pages[0].tags
                 make, model = tags.get("Make"), tags.get("Model")
                 return (str(make.value).strip() if make is not None else None,
                         str(model.value).strip() if model is not None else None)
     except Exception:  # noqa: BLE001 - metadata only: a non-TIFF raw has none to give
         return None, None
-    finally:
-        log.disabled = quiet
