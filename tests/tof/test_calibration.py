@@ -159,13 +159,13 @@ def test_bad_calibration_input(tmp_path):
         (lambda: ToFCalibration.load(tmp_path / "missing.npz"), FileNotFoundError, "path"),
         (lambda: ToFCalibration.load(tmp_path / "junk.npz"), ValueError, "path"),
         (lambda: ToFCalibration.load(tmp_path / "other.npz"), ValueError, "path"),
-        (lambda: ToFCalibration(np.ones(3), np.zeros((2, 4)), np.zeros((3, 2, 2)),
-                                (np.zeros(4), np.zeros(4)), 1, (4, 4)), ValueError, "offsets"),
+        (lambda: ToFCalibration([80e6, 100e6, 120e6], np.zeros((2, 4)), np.zeros((3, 2, 2)),
+                                ([0, 0, 0, 0], [0, 1, 2, 3]), 1, (4, 4)), ValueError,
+         "offsets"),
         (lambda: ToFCalibration(np.ones(1), np.zeros((1, 2)), np.zeros((1, 2)),
-                                (np.zeros(2), np.zeros(2)), 1, (4, 4)), ValueError,
-         "coefficients"),
+                                ([0, 0], [0, 1]), 1, (4, 4)), ValueError, "coefficients"),
         (lambda: ToFCalibration(np.ones(1), np.full((1, 2), np.nan), np.zeros((1, 2, 2)),
-                                (np.zeros(2), np.zeros(2)), 1, (4, 4)), ValueError, "offsets"),
+                                ([0, 0], [0, 1]), 1, (4, 4)), ValueError, "offsets"),
     ]
     for make, exc, name in cases:
         with pytest.raises(exc, match=name):

@@ -45,13 +45,15 @@ References
 from __future__ import annotations
 
 import json
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import as_list, check_image, check_int, check_path
+from .._validate import (as_array, as_list, check_block, check_frequencies, check_image,
+                         check_int, check_meta, check_path, check_sites)
 from ..io import atomic_write, read_npz
 from ..io._npz import npz_bytes
 from ._noise import tap_variance
@@ -105,14 +107,18 @@ class ToFCalibration:
     meta: dict = field(default_factory=dict)
 
     def __post_init__(self):
-        f = np.asarray(self.frequencies, np.float64).reshape(-1)
-        off = np.asarray(self.offsets, np.float64)
-        coef = np.asarray(self.coefficients, np.float64)
-        rows, cols = (np.asarray(a, np.int64) for a in self.sites)
+        # own read-only copies (the caller's arrays stay the caller's); every field checked
+        # here, where a caller or a file gives it: NaN, 0 or negative frequencies, float or
+        # out-of-frame sites, a bool block and any shape were accepted, and a meta that was
+        # no dict of lists of numbers made repr fail
+        f = check_frequencies(self.frequencies, "frequencies", unique=True)
+        rows, cols, span = check_sites(self.sites, "sites", span=True)
         n = rows.size
-        if off.shape != (f.size, n) or cols.shape != (n,):
+        off = _real_array(self.offsets, "offsets")
+        if off.shape != (f.size, n):
             raise ValueError(f"offsets: expected shape ({f.size}, {n}) (frequencies x sites), "
                              f"got {off.shape}")
+        coef = _real_array(self.coefficients, "coefficients")
         if coef.ndim != 3 or coef.shape[0] != f.size or coef.shape[2] != 2:
             raise ValueError(f"coefficients: expected shape ({f.size}, K, 2), got {coef.shape}")
         for name, a in (("offsets", off), ("coefficients", coef)):
@@ -120,23 +126,29 @@ class ToFCalibration:
                 raise ValueError(f"{name}: holds NaN or infinite values")
         dark = None
         if self.dark is not None:
-            dark = np.asarray(self.dark, np.float64)
+            dark = _real_array(self.dark, "dark")
             if dark.shape != (4, n) or not np.all(np.isfinite(dark)):
                 raise ValueError(f"dark: expected finite values of shape (4, {n}), got "
                                  f"{dark.shape}")
-        if self.block not in (1, 2):
-            raise ValueError(f"block: expected 1 or 2, got {self.block!r}")
-        for name, a in (("frequencies", f), ("offsets", off), ("coefficients", coef),
-                        ("rows", rows), ("cols", cols)) + ((("dark", dark),) if dark is not None
-                                                            else ()):
+        block = check_block(self.block, "block")
+        shape = _frame_shape(self.shape, block)
+        for label, lo, hi, size in (("rows", *span[:2], shape[0]),
+                                    ("cols", *span[2:], shape[1])) if n else ():
+            if hi > size - block:              # check_sites refused those < 0
+                raise ValueError(f"sites: {label} span [{lo}, {hi}]; a {block}x{block} block "
+                                 f"at each must lie inside the {shape[0]}x{shape[1]} frame "
+                                 f"({label} <= {size - block})")
+        meta = check_meta(self.meta, "meta")
+        for a in (f, off, coef, rows, cols) + ((dark,) if dark is not None else ()):
             a.setflags(write=False)
         object.__setattr__(self, "frequencies", f)
         object.__setattr__(self, "offsets", off)
         object.__setattr__(self, "coefficients", coef)
         object.__setattr__(self, "sites", (rows, cols))
+        object.__setattr__(self, "block", block)
+        object.__setattr__(self, "shape", shape)
         object.__setattr__(self, "dark", dark)
-        object.__setattr__(self, "shape", tuple(int(v) for v in self.shape))
-        object.__setattr__(self, "meta", dict(self.meta))
+        object.__setattr__(self, "meta", meta)
 
     @property
     def orders(self):
@@ -230,33 +242,80 @@ class ToFCalibration:
         if not isinstance(header, dict) or header.get("format") != _FORMAT_TAG:
             raise ValueError(f"path: {path} is not a ToF calibration file")
         try:
-            meta = header.get("meta", {})
-            return cls(arrays["frequencies"], arrays["offsets"], arrays["coefficients"],
-                       (arrays["rows"], arrays["cols"]), int(header["block"]),
-                       tuple(header["shape"]), arrays.get("dark"),
-                       meta if isinstance(meta, dict) else {})
+            fields = (arrays["frequencies"], arrays["offsets"], arrays["coefficients"],
+                      (arrays["rows"], arrays["cols"]), header["block"], header["shape"],
+                      arrays.get("dark"), header.get("meta", {}))
         except KeyError as exc:
             raise ValueError(f"path: {path} lacks {exc} (not a ToF calibration file)") from None
-        except (TypeError, ValueError) as exc:
+        try:            # the values as the file holds them: the class checks every one
+            return cls(*fields)
+        except (TypeError, ValueError, OverflowError) as exc:
             raise ValueError(f"path: {path} is a damaged ToF calibration file "
                              f"({type(exc).__name__}: {str(exc)[:200]})") from None
 
     def __repr__(self):
         mhz = ", ".join(f"{f / 1e6:g}" for f in self.frequencies)
-        rms = self.meta.get("fit_rms_m")
-        extra = f", fit RMS {1e3 * max(rms):.2f} mm" if rms else ""
+        rms = _fit_rms(self.meta.get("fit_rms_m"))
+        extra = f", fit RMS {1e3 * rms:.2f} mm" if rms is not None else ""
         return (f"ToFCalibration({self.sites[0].size} measurements, {mhz} MHz, "
                 f"{self.orders} harmonics{', dark' if self.dark is not None else ''}{extra})")
 
 
+def _fit_rms(value):
+    """The largest of ``meta["fit_rms_m"]`` when it is a non-empty list of real numbers
+    (what :func:`calibrate` writes), else None: meta is free-form, repr must not fail."""
+    if not isinstance(value, (list, tuple, np.ndarray)):
+        return None
+    try:
+        a = np.asarray(value)
+    except (TypeError, ValueError, OverflowError):           # ragged or odd content
+        return None
+    if a.dtype.kind not in "iuf" or a.ndim != 1 or a.size == 0:
+        return None
+    return float(a.max())
+
+
 def _jsonable(meta):
+    """The entries of ``meta`` JSON holds as they are (numbers, strings, None, arrays and
+    lists of numbers, lists of strings); the others are left out (save never fails on them)."""
     out = {}
     for k, v in meta.items():
-        if isinstance(v, (str, int, float, bool)) or v is None:
-            out[k] = v
+        if isinstance(v, (str, bool, np.bool_)) or v is None:
+            out[k] = v if not isinstance(v, np.bool_) else bool(v)
+        elif isinstance(v, (numbers.Integral, numbers.Real)):
+            out[k] = int(v) if isinstance(v, numbers.Integral) else float(v)
         elif isinstance(v, (list, tuple, np.ndarray)):
-            out[k] = np.asarray(v).tolist()
+            try:
+                a = np.asarray(v)
+            except (TypeError, ValueError, OverflowError):
+                continue
+            if a.dtype.kind in "biuf" or (a.dtype.kind == "U" and (
+                    isinstance(v, np.ndarray) or all(isinstance(x, str) for x in v))):
+                out[k] = a.tolist()
     return out
+
+
+def _real_array(value, name):
+    """An array of real numbers (no bool, text, complex or objects) as an own float64 copy."""
+    a = as_array(value, name)
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"{name}: expected real numbers, got dtype {a.dtype}")
+    return np.array(a, np.float64)
+
+
+def _frame_shape(shape, block):
+    """The frame shape: two integers (rows, cols), each holding at least one ``block``."""
+    dims = as_list(shape, "shape", "a (rows, cols) frame shape")
+    if len(dims) != 2:
+        raise ValueError(f"shape: expected a (rows, cols) frame shape, got {len(dims)} values "
+                         f"{shape!r:.60}")
+    if not all(isinstance(v, numbers.Integral) and not isinstance(v, (bool, np.bool_))
+               for v in dims):
+        raise TypeError(f"shape: expected two integers (rows, cols), got {shape!r:.60}")
+    if not all(block <= v < 1 << 31 for v in dims):
+        raise ValueError(f"shape: expected two integers in [{block}, 2**31) (rows, cols; "
+                         f"block {block}), got {shape!r:.60}")
+    return tuple(int(v) for v in dims)
 
 
 def as_taps(item, name):
