@@ -15,11 +15,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_array
+from ._validate import as_array, check_entries
 
 __all__ = [
     "R", "G", "B", "Z", "CHANNELS", "BAYER_PHASES", "MAX_PERIOD",
-    "Pattern", "bayer", "mask1", "mask2", "rows", "get_pattern",
+    "Pattern", "bayer", "mask1", "mask2", "rows", "get_pattern", "check_z_patterns",
 ]
 
 R, G, B, Z = 0, 1, 2, 3
@@ -306,3 +306,20 @@ def get_pattern(pattern):
         raise ValueError(
             f"pattern: {pattern!r} is neither a preset (mask1, mask2, rows, bayer, "
             f"optionally with _grbg/_rggb/_bggr/_gbrg) nor a valid tile ({exc})") from None
+
+
+def check_z_patterns(patterns, name="patterns", why=None):
+    """``patterns`` (names, tiles or Patterns; a comma-separated string is split) as a tuple:
+    at least one, none twice (``mask1`` and ``mask1_grbg`` are one pattern: it would be run
+    and counted twice), each with Z sites (without one, a measurement of what is made at the
+    Z sites failed deep in a metric, a plan or the ToF ISP); else a ValueError naming
+    ``name``. ``why``: what needs the Z sites, said in the error."""
+    patterns = check_entries(patterns, name, key=get_pattern, strings=False)
+    for p in patterns:
+        pat = get_pattern(p)
+        if not pat.has_z:
+            given = p if isinstance(p, str) else pat.name
+            advice = "give an RGB-Z pattern such as 'mask1'"
+            raise ValueError(f"{name}: {given!r} has no Z site; "
+                             + (f"{why} ({advice})" if why else advice))
+    return patterns

@@ -270,19 +270,12 @@ def add_patterns(p, default="mask1,mask2", what="comma-separated patterns"):
 def z_patterns(names, flag="--patterns"):
     """``names`` (pattern names or tiles), each once and each with Z sites, else a CliError
     naming ``flag`` (a pattern without Z sites failed deep in a metric or a plan)."""
-    from .._patterns import get_pattern
+    from .._patterns import check_z_patterns
 
-    seen = {}
-    for n in names:
-        pat = get_pattern(n)                    # its own error names the pattern
-        if not pat.has_z:
-            raise CliError(f"{flag}: {n!r} has no Z site; give an RGB-Z pattern such as "
-                           "'mask1'")
-        if pat.tile_string in seen and seen[pat.tile_string] != n:
-            raise CliError(f"{flag}: {n!r} is given twice (as {seen[pat.tile_string]!r}); name "
-                           "each pattern once")
-        seen[pat.tile_string] = n
-    return names
+    try:
+        return check_z_patterns(names, flag)
+    except ValueError as exc:                   # get_pattern's own error names the pattern
+        raise CliError(str(exc)) from None
 
 
 def add_methods(p, default):
@@ -538,16 +531,18 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
                                f"choose an {flag} outside it")
 
 
-def check_report_outputs(out, names, dataset, what="the report"):
+def check_report_outputs(out, names, dataset, what="the report", reads=()):
     """``check_outputs`` of the report files ``names`` a command writes into ``out`` (None:
-    none) against its ``dataset`` folder (None: the shipped images): a figure written into
-    the folder a dataset is read from is read back as an image by the next run."""
-    if out is None or dataset is None or not Path(dataset).is_dir():
+    none) against the files ``reads`` (the images, option files) and the ``dataset`` folder
+    (None, or a file: no folder): a figure written into the folder a dataset is read from is
+    read back as an image by the next run."""
+    if out is None:
         return
     from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
 
-    check_outputs([(what, Path(out) / n) for n in names], (),
-                  [(dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)])
+    folders = [(dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)] \
+        if dataset is not None and Path(dataset).is_dir() else []
+    check_outputs([(what, Path(out) / n) for n in names], reads, folders)
 
 
 def unique_outputs(pairs, out, reads=()):

@@ -82,7 +82,6 @@ def _check_reports(args, config, dataset, out):
     no report over an image, --filters or --raw-options file, and no figure in the dataset's
     folder, where the next run would evaluate it as an image."""
     from ..evaluation._cache import _safe
-    from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
 
     names = ["results.csv", "results.json", "summary.md"]
     names += [f"{kind}_{k}.png" for k in config.metrics for kind in ("bars", "paired")]
@@ -90,9 +89,7 @@ def _check_reports(args, config, dataset, out):
               for kind, ext in (("table", ".md"), ("crops", ".png"))]
     reads = [Path(s.location) for s in dataset if not s.location.startswith("skimage:")]
     reads += [*(args.filters or ()), args.raw_options]
-    folders = [(args.dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)] \
-        if args.dataset is not None and args.dataset.is_dir() else []
-    c.check_outputs([("the reports", out / n) for n in names], reads, folders)
+    c.check_report_outputs(out, names, args.dataset, "the reports", reads)
 
 
 def zoom(text):

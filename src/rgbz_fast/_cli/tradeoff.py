@@ -67,15 +67,10 @@ def run(args):
         raise c.CliError(f"--methods: unknown {', '.join(bad)}; expected some of "
                          f"{', '.join(known)}")
     if args.dataset:
-        from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
-
         images = folder_dataset(args.dataset, args.limit)
         name = args.dataset.name
-        if out is not None:
-            c.check_outputs([("the report", out / n) for n in
-                             ("tradeoff.png", "tradeoff.md", "tradeoff.json")],
-                            [Path(s.location) for s in images],
-                            [(args.dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)])
+        c.check_report_outputs(out, ["tradeoff.png", "tradeoff.md", "tradeoff.json"],
+                               args.dataset, reads=[Path(s.location) for s in images])
     else:
         images = sample_dataset()[:args.limit]
         name = "scikit-image samples"

@@ -7,7 +7,7 @@ import json
 from dataclasses import asdict, dataclass, field
 
 from .._build_config import VERSION
-from .._patterns import get_pattern
+from .._patterns import check_z_patterns, get_pattern
 from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
                          check_int, check_seed)
 from ..isp import ColourISP, DefectCorrection, Demosaic
@@ -49,18 +49,8 @@ def _default_params():
     return ReconstructParams(precision="float64")
 
 
-def check_z_patterns(patterns, name="patterns"):
-    """Every pattern of ``patterns`` (names or Pattern objects) has Z sites; a ValueError
-    naming ``name`` otherwise (an evaluation measures what is made at the Z sites: of a
-    pattern without one it failed deep inside a metric or the ToF ISP)."""
-    for p in patterns:
-        pat = get_pattern(p)
-        if not pat.has_z:
-            given = p if isinstance(p, str) else pat.name
-            raise ValueError(f"{name}: {given!r} has no Z site; the evaluation measures "
-                             "what is made at the Z sites (give an RGB-Z pattern such as "
-                             "'mask1')")
-    return patterns
+#: what an evaluation needs the Z sites for, said when a pattern has none
+Z_WHY = "the evaluation measures what is made at the Z sites"
 
 
 @dataclass(frozen=True)
@@ -138,8 +128,7 @@ class EvalConfig:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
         # each once: a repeated entry (mask1 and mask1_grbg are one pattern) would be run
         # twice and counted twice in every mean
-        check_z_patterns(check_entries(self.patterns, "patterns", key=get_pattern,
-                                       strings=False))
+        check_z_patterns(self.patterns, "patterns", Z_WHY)
         check_entries(self.methods, "methods")
         check_entries(self.metrics, "metrics")
         bad = [m for m in self.methods if m not in METHODS]

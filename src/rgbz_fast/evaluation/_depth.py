@@ -41,12 +41,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .._patterns import get_pattern
+from .._patterns import check_z_patterns
 from .._validate import check_entries, check_number, check_path, check_seed
 from ..isp import ColourISP
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
 from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
-from ._config import check_z_patterns
+from ._config import Z_WHY
 from ._depth_guided import (rgbnir_rows, scene_folders, scene_row, scene_runs, total_rows,
                             upsample_rows)
 from ._depth_report import depth_report
@@ -308,8 +308,7 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     seed = check_seed(seed, "seed")
     tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
     sections = check_entries(sections, "sections")
-    patterns = check_z_patterns(check_entries(patterns, "patterns", key=get_pattern,
-                                              strings=False))
+    patterns = check_z_patterns(patterns, "patterns", Z_WHY)
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
