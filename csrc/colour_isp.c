@@ -24,6 +24,7 @@
 #include "colour_isp.h"
 #include "demosaic_bilinear.h"
 #include "rgbz_templating.h"
+#include "rgbz_threads.h"
 
 /* The codes of float32 values with the gathers of AVX2, 8 at a time (float64: 4): ci_encode's lookup
    (colour_isp.template.h) lane by lane, the same codes; the caller checks the CPU. Returns
@@ -205,20 +206,6 @@ static void ci_band(ptrdiff_t n, ptrdiff_t *lo, ptrdiff_t *hi)
 #endif
 }
 
-/* one thread per 2^18 pixels at most (MIN_PIXELS_PER_THREAD of the Python layer) */
-static int ci_threads(int workers, ptrdiff_t n)
-{
-#ifdef _OPENMP
-    int t = workers > 0 ? workers : omp_get_max_threads();
-    ptrdiff_t cap = n >> 18;
-    if (cap < t) t = cap < 1 ? 1 : (int)cap;
-    return t;
-#else
-    (void)workers; (void)n;
-    return 1;
-#endif
-}
-
 /* the border rules of demosaic.c: scipy 'reflect', or a shift by whole periods */
 static inline ptrdiff_t ci_extend(ptrdiff_t i, ptrdiff_t n, int mode)
 {
@@ -361,7 +348,7 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
     for (int32_t i = 0; i < P * Q; i++)
         if (noff[i] > RGBZ_CI_MAX_NEIGHBOURS) return RGBZ_EINVAL;
     if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
-    const int nt = ci_threads(workers, rows * cols);
+    const int nt = rgbz_threads_per_values(workers, rows * cols);
     ci_list *lists = (ci_list *)calloc((size_t)nt, sizeof *lists);
     /* the neighbours' offsets in the frame, dy cols + dx */
     ptrdiff_t *lin = (ptrdiff_t *)malloc((size_t)P * Q * RGBZ_CI_MAX_NEIGHBOURS * sizeof *lin);
@@ -424,7 +411,7 @@ int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t c
 {
     if (!src || !sums || !counts || rows < 0 || cols < 0) return RGBZ_EINVAL;
     if (in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64) return RGBZ_EINVAL;
-    const int nt = ci_threads(workers, rows * cols);
+    const int nt = rgbz_threads_per_values(workers, rows * cols);
     double *s = (double *)calloc((size_t)nt * 4, sizeof *s);
     int64_t *c = (int64_t *)calloc((size_t)nt * 4, sizeof *c);
     if (!s || !c) {

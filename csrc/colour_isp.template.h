@@ -432,7 +432,7 @@ int RGBZ_CAT(rgbz_ci_balance, RS)(int in_type, const void *src, ptrdiff_t rows, 
     if (!src || !out || !phase || !scale || rows < 1 || cols < 1 || !ci_bayer_phase(phase) ||
         in_type < RGBZ_T_U8 || in_type > RGBZ_T_F64)
         return RGBZ_EINVAL;
-    const int nt = ci_threads(workers, rows * cols);
+    const int nt = rgbz_threads_per_values(workers, rows * cols);
     int bad = 0;
     (void)nt;
 #ifdef _OPENMP
@@ -465,7 +465,7 @@ int RGBZ_CAT(rgbz_ci_encode_rgb, RS)(const REAL *rgb, ptrdiff_t npix, const REAL
     if (!block) return RGBZ_EINVAL;         /* as rgbz_ci_render */
     REAL m[9];
     for (int i = 0; i < 9; i++) m[i] = matrix ? matrix[i] : (REAL)(i % 4 == 0);
-    const int nt = ci_threads(workers, npix);
+    const int nt = rgbz_threads_per_values(workers, npix);
     int bad = 0;
     (void)nt;
 #ifdef _OPENMP
@@ -539,7 +539,7 @@ static int RGBZ_CAT3(ci_render, RS, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff
                                         const RGBZ_CAT(ci_render_args, RS) *a, void *out,
                                         int bits, int workers)
 {
-    const int nt = ci_threads(workers, rows * cols);
+    const int nt = rgbz_threads_per_values(workers, rows * cols);
     int bad = 0;
     (void)nt;
 #ifdef _OPENMP

@@ -18,22 +18,9 @@
 #endif
 #include "srgb.h"
 #include "rgbz_templating.h"
+#include "rgbz_threads.h"
 
 #define SR_PRAGMA(x) _Pragma(#x)
-
-/* one thread per 2**18 values at most (MIN_PIXELS_PER_THREAD of the Python layer) */
-static int sr_threads(int workers, ptrdiff_t n)
-{
-#ifdef _OPENMP
-    int t = workers > 0 ? workers : omp_get_max_threads();
-    ptrdiff_t cap = n >> 18;
-    if (cap < t) t = cap < 1 ? 1 : (int)cap;
-    return t;
-#else
-    (void)workers; (void)n;
-    return 1;
-#endif
-}
 
 #ifdef _OPENMP
 #define SR_FOR(nt) SR_PRAGMA(omp parallel for simd schedule(static) num_threads(nt))
@@ -67,7 +54,7 @@ int rgbz_decode_lookup(int code_type, const void *code, ptrdiff_t n, const doubl
     if (!code || !table || !out || n < 0 || size < 1 ||
         (code_type != RGBZ_T_U8 && code_type != RGBZ_T_U16))
         return RGBZ_EINVAL;
-    const int nt = sr_threads(workers, n);
+    const int nt = rgbz_threads_per_values(workers, n);
     (void)nt;
     int bad = 0;
 #ifdef _OPENMP

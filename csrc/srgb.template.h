@@ -18,7 +18,7 @@
 static void RGBZ_CAT(sr_prepare, RS)(const REAL *x, REAL *p, ptrdiff_t n, int workers)
 {
     const REAL knee = (REAL)0.0031308;
-    int nt = sr_threads(workers, n);
+    int nt = rgbz_threads_per_values(workers, n);
     (void)nt;
     SR_FOR(nt)
     for (ptrdiff_t i = 0; i < n; i++) {
@@ -56,7 +56,7 @@ static void RGBZ_CAT3(sr_finish, RS, IS)(const REAL *x, const REAL *p, ptrdiff_t
 {
     const REAL knee = (REAL)0.0031308, a = (REAL)1.055, b = (REAL)0.055, s = (REAL)12.92;
     const REAL top = (REAL)(IN_T)-1, half = (REAL)0.5;
-    int nt = sr_threads(workers, n);
+    int nt = rgbz_threads_per_values(workers, n);
     (void)nt;
     SR_FOR(nt)
     for (ptrdiff_t i = 0; i < n; i++) {
