@@ -269,7 +269,7 @@ def _search_range(f, max_range):
                 f"{rng / amb:.3g} wraps of the {amb:.6g} m interval of the lowest frequency; "
                 f"the search stops at {MAX_WRAPS} (nearly coprime frequencies): pass "
                 f"max_range= (at most {cap:.6g} m) for the distances you expect")
-        return rng
+        return _whole_wraps(rng, amb)
     max_range = check_number(max_range, "max_range", lo=0, lo_open=True)
     if max_range > rng * (1 + 1e-9):
         raise ValueError(
@@ -281,6 +281,20 @@ def _search_range(f, max_range):
             f"max_range: {max_range:g} m holds {wraps(max_range)} wraps of the {amb:.6g} m "
             f"interval of the lowest frequency; the search stops at {MAX_WRAPS} "
             f"(max_range <= {cap:.6g} m)")
+    return _whole_wraps(max_range, amb)
+
+
+def _whole_wraps(max_range, amb):
+    """``max_range``, or ``k * amb`` when it lies a hair (< 1e-6 of a wrap) above ``k`` whole
+    wraps of the lowest frequency's interval ``amb``: the kernel searches ``ceil(max_range /
+    amb)`` wraps, and a frequency a fraction of a Hz off a whole number (80 MHz + 0.4 Hz)
+    puts the unambiguous range, computed from whole Hz, 2e-8 of a wrap above 4: a fifth
+    wrap past that range held aliases of equal cost, and the far one took 75 % of the
+    measurements of a test scene, 7.49 m too far."""
+    n = max_range / amb
+    k = round(n)
+    if k >= 1 and n - 1e-12 > k and n - k < 1e-6:
+        return k * amb
     return max_range
 
 
