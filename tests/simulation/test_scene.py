@@ -340,6 +340,29 @@ def test_load_rgbd_errors(tmp_path):
         load_rgbd(tmp_path)
 
 
+@pytest.mark.parametrize("text", ["270 px", "270\n300", "2_70", "1e300", "-1", "nan"])
+def test_load_rgbd_takes_one_plain_disparity_offset(tmp_path, text):
+    """dmin.txt: '270 px', two numbers or '2_70' had been read as 270; 1e300 made every
+    depth 0 m."""
+    iio.imwrite(tmp_path / "rgb.png", np.zeros((4, 6, 3), np.uint8))
+    iio.imwrite(tmp_path / "disp1.png", np.full((4, 6), 10, np.uint8))
+    (tmp_path / "dmin.txt").write_text(text)
+    with pytest.raises(ValueError, match=r"^folder: .*dmin.txt (should hold one number|gives "
+                                         r".*; expected a disparity offset in \[0, 100000\])"):
+        load_rgbd(tmp_path)
+
+
+def test_load_rgbd_refuses_a_16_bit_disparity(tmp_path):
+    """A 16-bit disp1.png (KITTI's convention: the disparity times 256) read as Middlebury's
+    8-bit disparity gave depths 256 times too near, and a table of 0 % valid, exit 0."""
+    iio.imwrite(tmp_path / "rgb.png", np.zeros((4, 6, 3), np.uint8))
+    iio.imwrite(tmp_path / "disp1.png", np.full((4, 6), 10 * 256, np.uint16))
+    (tmp_path / "dmin.txt").write_text("200")
+    with pytest.raises(ValueError, match=r"^folder: disp1.png holds uint16 samples; a "
+                                         r"Middlebury 2005/2006 disparity is 8-bit grey"):
+        load_rgbd(tmp_path)
+
+
 def test_load_scene_dispatch_errors(tmp_path):
     with pytest.raises(FileNotFoundError):
         load_scene(tmp_path / "missing.png")

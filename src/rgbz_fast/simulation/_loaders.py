@@ -197,6 +197,11 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
                                input_bits=input_bits)
 
 
+#: the largest disparity offset (pixels) of dmin.txt: Middlebury's are 200-300; 1e300 made
+#: every depth 0 m
+DMIN_MAX = 1e5
+
+
 def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BASELINE_M,
               ir_reflectance=None, name=None, grey=False, max_pixels=None, max_bytes=None):
     """Load a Middlebury-style RGB-D folder: ``rgb.png``, ``disp1.png``, ``dmin.txt``.
@@ -218,8 +223,9 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
         If the folder or one of the three files is missing (all missing files
         are named).
     ValueError
-        If ``dmin.txt`` is not a number, ``disp1.png`` is not a single-band
-        image of the size of ``rgb.png``, or no pixel has a disparity.
+        If ``dmin.txt`` is not one number in [0, 1e5], ``disp1.png`` is not an
+        8-bit single-band image of the size of ``rgb.png``, or no pixel has a
+        disparity.
     """
     check_flag(grey, "grey")
     _check_name(name)
@@ -233,12 +239,14 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
                                 f"folder holds {', '.join(needed)})")
     text = read_file(d / "dmin.txt", "folder", max_bytes=4096).decode("utf-8", "replace").strip()
     try:
-        dmin = float(text.split()[0])
-    except (ValueError, IndexError):
+        (token,) = text.split()                 # '270 px' or '270\n300' is not one number
+        dmin = float(token.replace("_", "!"))   # float() reads '2_70' as 270
+    except ValueError:
         raise ValueError(f"folder: {d / 'dmin.txt'} should hold one number (the disparity "
                          f"offset), got {text[:40]!r}") from None
-    if not math.isfinite(dmin) or dmin < 0:
-        raise ValueError(f"folder: dmin.txt gives {dmin}; expected a disparity offset >= 0")
+    if not math.isfinite(dmin) or not 0 <= dmin <= DMIN_MAX:
+        raise ValueError(f"folder: {d / 'dmin.txt'} gives {dmin:g}; expected a disparity "
+                         f"offset in [0, {DMIN_MAX:g}] pixels (Middlebury's are 200-300)")
     limits = dict(max_pixels=max_pixels, max_bytes=max_bytes)
     rgb = rgb_image(read_image(d / "rgb.png", "folder", **limits), d / "rgb.png", "folder",
                     grey=grey)
@@ -247,6 +255,13 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
         disp = disp[..., 0]
     if disp.ndim != 2:
         raise ValueError(f"folder: disp1.png has shape {disp.shape}; expected a grey image")
+    if disp.dtype != np.uint8:
+        # a 16-bit disparity is another convention (KITTI's: the disparity times 256), whose
+        # values read as Middlebury's made depths 256 times too near, without a word
+        raise ValueError(f"folder: disp1.png holds {disp.dtype} samples; a Middlebury "
+                         "2005/2006 disparity is 8-bit grey (the disparity in pixels); convert "
+                         "another convention to it, or pass the disparity to "
+                         "Scene.from_rgb(disparity=, disparity_offset=) with its scale")
     if disp.shape != rgb.shape[:2]:
         raise ValueError(f"folder: disp1.png is {disp.shape[0]}x{disp.shape[1]} but rgb.png is "
                          f"{rgb.shape[0]}x{rgb.shape[1]} (rows x cols); they must be the same "
