@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import os
 import signal
 import sys
 import threading
+import warnings
 
 from .._build_config import VERSION
 from . import (_common, bench, calibrate, config, depth, evaluate, evaluate_depth, hardware,
@@ -37,6 +39,51 @@ def build_parser():
     return ap
 
 
+class _ClosedPipeSafe:
+    """Standard output that a reader closing early (``| head``) does not stop: the first
+    write that meets a closed pipe sends the rest to the null device, and the command
+    finishes its batch (a closed pipe had ended a batch of frames at the first file, with
+    '[Errno 32] Broken pipe')."""
+
+    def __init__(self, stream):
+        self._stream = stream
+
+    def write(self, text):
+        try:
+            return self._stream.write(text)
+        except BrokenPipeError:
+            self._to_null()
+            return len(text)
+
+    def flush(self):
+        try:
+            self._stream.flush()
+        except BrokenPipeError:
+            self._to_null()
+
+    def _to_null(self):
+        try:                           # the interpreter's last flush must not meet it again
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, self._stream.fileno())
+            os.close(null)
+        except (OSError, ValueError, AttributeError):
+            pass                       # not a file descriptor (a test's capture): drop only
+        self._stream = open(os.devnull, "w")
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
+
+
+def _one_line_warnings(command):
+    """``warnings.showwarning`` for the command line: ``rgbz-fast CMD: warning: ...``, one
+    line, without the source file and line Python prints (they name the library's code,
+    not what the user gave)."""
+    def show(message, category, filename, lineno, file=None, line=None):
+        text = " ".join(str(message).split())
+        print(f"rgbz-fast {command}: warning: {text}", file=sys.stderr if file is None else file)
+    return show
+
+
 def _terminate(signum, frame):
     signal.signal(signal.SIGTERM, signal.SIG_IGN)      # cleaning up: do not interrupt it
     raise Terminated(128 + signum)
@@ -58,8 +105,12 @@ def main(argv=None):
     previous = None
     if hasattr(signal, "SIGTERM") and threading.current_thread() is threading.main_thread():
         previous = signal.signal(signal.SIGTERM, _terminate)
+    stdout = sys.stdout
+    sys.stdout = _ClosedPipeSafe(stdout)
     try:
-        return int(args.run(args) or 0)
+        with warnings.catch_warnings():
+            warnings.showwarning = _one_line_warnings(args.command)
+            return int(args.run(args) or 0)
     except (_common.CliError, ValueError, TypeError, OSError, ImportError) as exc:
         text = _common.os_error_words(exc, args) if isinstance(exc, OSError) \
             and exc.filename is not None and str(exc).startswith("[Errno") \
@@ -78,5 +129,6 @@ def main(argv=None):
         print(f"rgbz-fast {args.command}: terminated", file=sys.stderr)
         return exc.code
     finally:
+        sys.stdout = stdout
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)

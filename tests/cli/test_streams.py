@@ -1,0 +1,56 @@
+"""What the command line prints, as a user's shell meets it: a reader that closes the pipe
+early (``| head``) does not cut a batch short, and a library warning is one line."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import warnings
+
+import numpy as np
+
+from rgbz_fast import ToFSensor
+from rgbz_fast._cli import main
+from rgbz_fast.io import save_frame
+from rgbz_fast.simulation import Scene, simulate
+
+
+def _frame_file(path, seed):
+    rng = np.random.default_rng(seed)
+    scene = Scene(rng.random((32, 32, 3)), depth=np.full((32, 32), 1.5))
+    return save_frame(path, simulate(scene, "mask1", tof_sensor=ToFSensor(), seed=seed))
+
+
+def test_a_reader_closing_the_pipe_early_does_not_cut_a_batch_short(tmp_path):
+    """`rgbz-fast depth a.npz b.npz --out D | head -0` wrote a's files, never b's, and ended
+    with 'error: [Errno 32] Broken pipe'."""
+    frames = [_frame_file(tmp_path / f"{n}.npz", i) for i, n in enumerate("ab")]
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "rgbz_fast", "depth", *map(str, frames),
+                             "--out", str(out)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    proc.stdout.close()                                  # the reader is gone at once
+    with proc.stderr:
+        err = proc.stderr.read().decode()
+    assert proc.wait(timeout=120) == 0, err
+    assert "Broken pipe" not in err and "Traceback" not in err
+    assert sorted(p.name for p in out.iterdir()) == sorted(
+        f"{n}_depth{k}" for n in "ab" for k in (".tif", ".png", "-flags.tif", "-flags.png"))
+
+
+def test_a_library_warning_is_one_line_naming_the_command(monkeypatch, capsys):
+    """Python printed the warning's source file and line (the library's code) on two lines
+    before the command's own error."""
+    from rgbz_fast._cli import config
+
+    def run(args):
+        warnings.warn("something the user should know\n  over two lines", UserWarning)
+        return 0
+
+    monkeypatch.setattr(config, "run", run)
+    with warnings.catch_warnings():
+        warnings.simplefilter("always")
+        assert main(["config"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert err == ["rgbz-fast config: warning: something the user should know over two lines"]
+    assert warnings.showwarning is not None                # restored after the command
