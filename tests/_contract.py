@@ -133,6 +133,9 @@ class Files:
         self.d = d
         frame = rz.mosaic(np.random.default_rng(0).random((16, 16, 3)), "mask1")
         rio.save_frame(d / "ok.npz", frame)
+        shipped = Path(rz.__file__).parent / "reconstruction" / "data"
+        for name in ("learned_mask1.npz", "learned_mask2.npz", "z_guided_mask1_11bit.npz"):
+            (d / name).write_bytes((shipped / name).read_bytes())     # the shipped filters
         blob = (d / "ok.npz").read_bytes()
         (d / "truncated.npz").write_bytes(blob[:len(blob) // 2])
         (d / "junk.npz").write_bytes(b"this is not a zip file")

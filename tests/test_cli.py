@@ -551,8 +551,8 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
                  "learned", "--metrics", "cfa_psnr", "--filters", str(out), "--out",
                  str(tmp_path / "res2"), "--no-plots", "--quiet", "--processes", "1"]) == 2
     err = capsys.readouterr().err
-    assert re.match(r"^rgbz-fast evaluate: error: filters: none fits pattern 'rows' "
-                    r"\(given: mask2\)", err)
+    assert re.match(r"^rgbz-fast evaluate: error: filters: none of the given learned filters "
+                    r"fits pattern 'rows' \(given: mask2\)", err)
     assert main(["train", "--dataset", str(tmp_path / "nope"), "--pattern", "mask1",
                  "--out", str(tmp_path / "g.npz")]) == 2
     assert not (tmp_path / "g.npz").exists()

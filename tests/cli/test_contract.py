@@ -265,6 +265,16 @@ CLI_ROWS = [
       "--fixed-point: exp_table_size: expected a power of two from 2 to 65536 entries, got 0"),
     C("cli.hardware-fixed-point-unknown", ("hardware", "--fixed-point", "exp_size=8"),
       "--fixed-point: fixed_point got an unexpected keyword argument 'exp_size'"),
+    C("cli.reconstruct-filters-method", ("reconstruct", "{d}/ok.npz", "--method", "sg",
+                                         "--filters", "{d}/learned_mask1.npz"),
+      "--filters: sg takes no filters; they are the learned and z_guided methods'"),
+    C("cli.reconstruct-filters-kind", ("reconstruct", "{d}/ok.npz", "--method", "learned",
+                                       "--filters", "{d}/z_guided_mask1_11bit.npz"),
+      "--filters: {d}/z_guided_mask1_11bit.npz hold z_guided filters; --method "
+      "learned takes its own kind (rgbz-fast train)"),
+    C("cli.reconstruct-filters-pattern", ("reconstruct", "{d}/ok.npz", "--method", "learned",
+                                          "--filters", "{d}/learned_mask2.npz"),
+      "filters: none of the given learned filters fits pattern 'mask1' (given: mask2)"),
     C("cli.hardware-fixed-point-twice", ("hardware", "--fixed-point", "exp_bits=10,exp_bits=12"),
       "argument --fixed-point: 'exp_bits' is given twice in 'exp_bits=10,exp_bits=12'; give "
       "each field once", usage=True),

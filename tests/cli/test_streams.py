@@ -54,3 +54,22 @@ def test_a_library_warning_is_one_line_naming_the_command(monkeypatch, capsys):
     err = capsys.readouterr().err.splitlines()
     assert err == ["rgbz-fast config: warning: something the user should know over two lines"]
     assert warnings.showwarning is not None                # restored after the command
+
+
+def test_reconstruct_takes_z_guided_filters_files(tmp_path, capsys):
+    """`--filters` read learned files only: a z_guided file (the shipped one, or one of
+    `train --z-guided`) was 'not a rgbz-fast filters file'."""
+    from pathlib import Path
+
+    import rgbz_fast as rz
+
+    frame = _frame_file(tmp_path / "a.npz", 3)
+    shipped = Path(rz.__file__).parent / "reconstruction" / "data" / "z_guided_mask1_11bit.npz"
+    out = tmp_path / "out"
+    assert main(["reconstruct", str(frame), "--method", "z_guided", "--filters", str(shipped),
+                 "--out", str(out)]) == 0, capsys.readouterr().err
+    assert main(["reconstruct", str(frame), "--method", "z_guided", "--out",
+                 str(tmp_path / "default")]) == 0
+    # the shipped filters given as a file are the default ones: the same image
+    assert (out / "a_z-guided_cfa.tif").read_bytes() == \
+        (tmp_path / "default" / "a_z-guided_cfa.tif").read_bytes()

@@ -326,10 +326,10 @@ def add_reconstruction_options(p, precision, precision_help):
                         "two clipped pixels are then left out of the weights (default: off; a "
                         "pixel at the level is not always a clipped one)")
     p.add_argument("--filters", type=csv, default=None, metavar="FILE[,FILE]",
-                   help="method learned: filters files from `rgbz-fast train`, tried before "
-                        "the shipped ones (Mask1 and Mask2, every Bayer phase); the first that "
-                        "fits the frame's pattern, or a mirror or shift of it, is used (default: "
-                        "the shipped ones only)")
+                   help="methods learned and z_guided: filters files from `rgbz-fast train` "
+                        "(--z-guided for z_guided); the first that fits the frame's pattern, "
+                        "or a mirror or shift of it, is used, and none fitting is an error "
+                        "(default: the shipped ones, Mask1 and Mask2, every Bayer phase)")
 
 
 def add_raw_options_file(p, note=""):
@@ -428,13 +428,28 @@ def limits(args):
 
 
 def learned_filters(args):
-    """The ``--filters`` files, read with the command's limits (None: the shipped ones)."""
-    from ..reconstruction import LearnedFilters
+    """The ``--filters`` files, learned or z_guided, read with the command's limits (None:
+    the shipped ones). z_guided files had been refused as 'not a rgbz-fast filters file';
+    a method that takes no filters is refused with them (they had been ignored)."""
+    from ..reconstruction._z_guided import check_any_filters
 
     if args.filters is None:
         return None
-    return tuple(LearnedFilters.load(f, "filters", max_bytes=args.max_bytes)
-                 for f in args.filters)
+    methods = getattr(args, "methods", None) or [getattr(args, "method", None)]
+    if not {"learned", "z_guided"} & set(methods):
+        raise CliError(f"--filters: {', '.join(methods)} takes no filters; they are the "
+                       "learned and z_guided methods' (--method learned or z_guided)")
+    loaded = check_any_filters(tuple(args.filters), "filters", max_bytes=args.max_bytes)
+    from ..reconstruction import LearnedFilters
+
+    kinds = {"learned" if isinstance(f, LearnedFilters) else "z_guided" for f in loaded}
+    wanted = {"learned", "z_guided"} & set(methods)
+    if not kinds & wanted:                 # the method's shipped filters had run in their place
+        raise CliError(f"--filters: {', '.join(map(str, args.filters))} hold "
+                       f"{' and '.join(sorted(kinds))} filters; --method "
+                       f"{' and '.join(sorted(wanted))} takes its own kind (rgbz-fast train"
+                       f"{' --z-guided' if 'z_guided' in wanted else ''})")
+    return loaded
 
 
 def command_line(args):

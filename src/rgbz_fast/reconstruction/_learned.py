@@ -384,18 +384,26 @@ def _shipped():
 
 def resolve_filters(filters, pattern, name="filters"):
     """The :class:`LearnedFilters` for a frame of ``pattern``: the first of ``filters`` (one,
-    or a tuple), then of the shipped ones, that fits it as it is or mirrored/shifted
-    (:meth:`LearnedFilters.for_pattern`). ``filters`` add to the shipped set."""
+    or a tuple) that fits it as it is or mirrored/shifted (:meth:`LearnedFilters.for_pattern`),
+    or, when none are given, the first of the shipped ones. Given filters of which none fits
+    are a ValueError naming ``name``, as z_guided's (the shipped ones had been used in their
+    place without a word, the user's file unused)."""
     pattern = get_pattern(pattern)
     cands = (filters if isinstance(filters, tuple) else (filters,)) if filters is not None \
         else ()
-    for f in (*cands, *_shipped()):
+    for f in cands or _shipped():
         d = f.for_pattern(pattern)
         if d is not None:
             return d
     from ..io import ParameterError, Setting      # the settings, in the caller's words
 
-    given = (f" (given: {', '.join(f.pattern.name for f in cands)})" if cands else "")
+    if cands:
+        have = ", ".join(dict.fromkeys(f.pattern.name for f in cands))
+        raise ParameterError(name, f"none of the given learned filters fits pattern "
+                                   f"{pattern.name!r} (given: {have}) nor its other Bayer "
+                                   "phases; give filters fitted for it, or none for the "
+                                   "shipped ones")
+    given = ""
     shipped = ", ".join(dict.fromkeys(f.pattern.name for f in _shipped()))
     raise ParameterError(name, f"none fits pattern {pattern.name!r}{given}; filters ship for "
                          f"{shipped} and their other Bayer phases; fit some with ",
@@ -403,9 +411,10 @@ def resolve_filters(filters, pattern, name="filters"):
                          Setting("filters", "filters=FILE"))
 
 
-def check_filters(value, name="filters"):
+def check_filters(value, name="filters", *, max_bytes=None):
     """``filters`` of ReconstructParams: None, a LearnedFilters, a path, or a sequence of them
-    -> None or a tuple of LearnedFilters (files read now, so a bad one fails early)."""
+    -> None or a tuple of LearnedFilters (files read now, so a bad one fails early, each
+    within ``max_bytes``)."""
     if value is None:
         return None
     items = [value] if isinstance(value, (str, Path, LearnedFilters)) else value
@@ -421,7 +430,7 @@ def check_filters(value, name="filters"):
         if isinstance(v, LearnedFilters):
             out.append(v)
         elif isinstance(v, (str, Path)):
-            out.append(LearnedFilters.load(v, name))
+            out.append(LearnedFilters.load(v, name, max_bytes=max_bytes))
         else:
             raise TypeError(f"{name}: expected a LearnedFilters or a path, got "
                             f"{type(v).__name__}")

@@ -85,7 +85,9 @@ class ReconstructParams:
         ``method="learned"`` only: its filters (:class:`~rgbz_fast.reconstruction.LearnedFilters`
         or a file written by :meth:`~rgbz_fast.reconstruction.LearnedFilters.save`;
         files are read when the parameters are made). With several, the one
-        fitted for the frame's pattern and bit depth is used. None (default):
+        fitted for the frame's pattern and bit depth is used; given filters of
+        which none fits are a ValueError (the shipped ones are not used in their
+        place). None (default):
         the filters shipped for the frame's pattern and bit depth
         (:func:`~rgbz_fast.reconstruction.default_filters`). ``method="z_guided"``
         takes :class:`~rgbz_fast.reconstruction.ZGuidedFilters` (or their

@@ -429,10 +429,11 @@ class ZGuidedFilters(FilterIdentity):
         atomic_write(path, self.to_bytes())
 
     @classmethod
-    def load(cls, path, name="filters"):
-        """Read a file written by :meth:`save`; ValueError naming ``name`` if it is not one."""
+    def load(cls, path, name="filters", *, max_bytes=None):
+        """Read a file written by :meth:`save`; ValueError naming ``name`` if it is not one.
+        ``max_bytes``: the read limit (:func:`rgbz_fast.io.read_limits`)."""
         p = Path(path)
-        z = read_npz(p, name)
+        z = read_npz(p, name, max_bytes=max_bytes)
         if not is_z_guided_file(z):
             raise ValueError(f"{name}: {p} is not a rgbz-fast z_guided filters file")
         try:
@@ -519,9 +520,10 @@ def is_z_guided_file(arrays):
     return f is not None and f.dtype.kind in "US" and str(f) == _MAGIC
 
 
-def check_any_filters(value, name="filters"):
+def check_any_filters(value, name="filters", *, max_bytes=None):
     """``filters`` of ReconstructParams: as :func:`._learned.check_filters`, and z_guided
-    filters (:class:`ZGuidedFilters` or their files) beside the learned ones."""
+    filters (:class:`ZGuidedFilters` or their files) beside the learned ones. ``max_bytes``:
+    the read limit of the files."""
     if value is None:
         return None
     items = [value] if isinstance(value, (str, Path, LearnedFilters, ZGuidedFilters)) else value
@@ -536,10 +538,11 @@ def check_any_filters(value, name="filters"):
         if isinstance(v, ZGuidedFilters):
             out.append(v)
         elif isinstance(v, (str, Path)) and Path(v).suffix.lower() == ".npz" and \
-                Path(v).is_file() and is_z_guided_file(read_npz(v, name, keys=("format",))):
-            out.append(ZGuidedFilters.load(v, name))
+                Path(v).is_file() and is_z_guided_file(read_npz(v, name, keys=("format",),
+                                                                max_bytes=max_bytes)):
+            out.append(ZGuidedFilters.load(v, name, max_bytes=max_bytes))
         else:
-            out.extend(check_filters(v, name))
+            out.extend(check_filters(v, name, max_bytes=max_bytes))
     if not out:
         raise ValueError(f"{name}: empty sequence")
     return tuple(out)
