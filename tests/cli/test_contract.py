@@ -193,7 +193,7 @@ CLI_ROWS = [
                                  "--rgbz-pattern", "mask1"),
       "path: {d}/zero.raw is a character device, not a regular file"),
     C("cli.reconstruct-max-pixels", ("reconstruct", "{d}/ok.npz", "--max-pixels", "10"),
-      "path: {d}/ok.npz declares a 16x16 image (0.0 megapixels), more than the limit of 10 "
+      "path: {d}/ok.npz declares a 16x16 image (256 pixels), more than the limit of 10 "
       "pixels; raise it with --max-pixels or RGBZ_FAST_MAX_PIXELS"),
     C("cli.reconstruct-zip-bomb", ("reconstruct", "{d}/bomb.npz", "--max-bytes", "1000000"),
       "path: {d}/bomb.npz is not a readable rgbz-fast frame (its arrays declare 2097"),

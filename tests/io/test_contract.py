@@ -214,7 +214,7 @@ ROWS = [
               "sites: rows span [1000, "),
     R("io.load_frame-max_pixels", "load_frame(16x16 frame, max_pixels=10)",
       lambda f: rio.load_frame(f / "ok.npz", max_pixels=10), ValueError,
-      "path: {d}/ok.npz declares a 16x16 image (0.0 megapixels), more than the limit of 10 "
+      "path: {d}/ok.npz declares a 16x16 image (256 pixels), more than the limit of 10 "
       "pixels; raise it with max_pixels= or RGBZ_FAST_MAX_PIXELS"),
     # -- guarded reads, limits, atomic writes ----------------------------------------------
     R("io.read_file-fifo", "read_file(FIFO named fifo.tif)",
@@ -246,7 +246,7 @@ ROWS = [
       "needed)"),
     R("io.read_image-max_pixels", "read_image(16x16 PNG, max_pixels=10)",
       lambda f: rio.read_image(f / "rgb.png", max_pixels=10), ValueError,
-      "path: {d}/rgb.png declares a 16x16x3 image (0.0 megapixels), more than the limit of 10 "
+      "path: {d}/rgb.png declares a 16x16x3 image (256 pixels), more than the limit of 10 "
       "pixels"),
     R("io.read_image-max_bytes", "read_image(16x16 RGB PNG, max_bytes=700)",
       lambda f: rio.read_image(f / "rgb.png", max_bytes=700), ValueError,

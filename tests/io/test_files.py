@@ -76,7 +76,7 @@ def test_declared_size_is_checked_before_decoding(tmp_path, suffix):
 
     path = tmp_path / f"img{suffix}"
     iio.imwrite(path, np.zeros((40, 50, 3), np.uint8))
-    with pytest.raises(ValueError, match=r"declares a 40x50(x3)? image \(0\.0 megapixels\), more "
+    with pytest.raises(ValueError, match=r"declares a 40x50(x3)? image \(2000 pixels\), more "
                                          "than the limit of 1999 pixels; raise it with "
                                          "max_pixels= or RGBZ_FAST_MAX_PIXELS$"):
         rio.read_image(path, decode=_never, max_pixels=1999)
@@ -433,3 +433,16 @@ def test_a_tiff_without_a_readable_page_is_one_error_and_no_log_line(tmp_path, c
         assert len(records) == 1 and "invalid offset to first page" in records[0].getMessage()
     finally:
         logging.getLogger("tifffile").removeHandler(handler)
+
+
+def test_a_bad_pixel_limit_in_the_environment_leaves_reads_with_a_given_limit(tmp_path,
+                                                                            monkeypatch):
+    """RGBZ_FAST_MAX_PIXELS=abc broke every file read, --max-pixels given: the byte read
+    resolved both limits, and the frame loader reported it as the file's fault."""
+    f = rio.save_frame(tmp_path / "f.npz", rz.mosaic(np.zeros((8, 8, 3)), "mask1"))
+    monkeypatch.setenv("RGBZ_FAST_MAX_PIXELS", "abc")
+    assert rio.load_frame(f, max_pixels=1000).data.shape == (8, 8)
+    assert rio.read_file(f)[:2] == b"PK"
+    with pytest.raises(ValueError, match=r"RGBZ_FAST_MAX_PIXELS: expected a positive integer, "
+                                         r"got 'abc'"):
+        rio.load_frame(f)

@@ -114,8 +114,10 @@ def check_size(shape, itemsize, path, name="path", *, limits=None):
     nbytes = int(np.prod(shape, dtype=object)) * int(itemsize)
     dims = "x".join(str(s) for s in shape)
     if pixels > max_pixels:
-        raise ParameterError(name, f"{path} declares a {dims} image ({pixels / 1e6:.1f} "
-                                   f"megapixels), more than the limit of {max_pixels} pixels",
+        raise ParameterError(name, f"{path} declares a {dims} image ("
+                                   + (f"{pixels / 1e6:.1f} megapixels" if pixels >= 100_000
+                                      else f"{pixels} pixels")      # not '0.0 megapixels'
+                                   + f"), more than the limit of {max_pixels} pixels",
                              *raise_it("max_pixels"))
     if nbytes > max_bytes:
         raise ParameterError(name, f"{path} declares {dims} values of {itemsize} bytes "
@@ -172,7 +174,8 @@ def read_file(path, name="path", *, max_bytes=None):
     rgbz_fast.io.ParameterError: path: /dev/zero is a character device, not a regular file
     """
     p = check_path(path, name)
-    limit = read_limits(max_bytes=max_bytes)[1]
+    # the byte limit alone: a bad RGBZ_FAST_MAX_PIXELS broke every read, --max-pixels given
+    limit = _limit(max_bytes, "max_bytes", MAX_BYTES_ENV, DEFAULT_MAX_BYTES)
     try:
         # O_NONBLOCK: opening a FIFO for reading would wait for a writer
         fd = os.open(p, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
