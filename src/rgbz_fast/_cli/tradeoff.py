@@ -64,7 +64,10 @@ def run(args):
     known = tradeoff.METHODS + tradeoff.OPTIONAL_METHODS
     bad = [m for m in args.methods if m not in known]
     if bad:
-        raise c.CliError(f"--methods: unknown {', '.join(bad)}; expected some of "
+        from ..reconstruction import METHODS
+
+        what = "not measured by tradeoff" if all(m in METHODS for m in bad) else "unknown"
+        raise c.CliError(f"--methods: {', '.join(bad)} {what}; expected some of "
                          f"{', '.join(known)}")
     if args.dataset:
         images = folder_dataset(args.dataset, args.limit)

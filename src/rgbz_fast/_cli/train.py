@@ -66,7 +66,7 @@ def add_parser(sub):
                         "prior 50, colour prior 4 (default: cv)")
     p.add_argument("--cv-folds", type=c.positive_int, default=None,
                    help="--z-guided: folds of --select cv, >= 2 (default: 4)")
-    c.add_seed(p, 1, "noise seed of every pair's noisy frame (--z-guided)")
+    c.add_seed(p, None, "--z-guided: noise seed of every pair's noisy frame (default: 1)")
     c.add_quiet(p, "no progress bar or summary line")
     c.add_limits(p)
     return p
@@ -91,7 +91,7 @@ def run(args):
     if args.z_guided:
         filters = train_filters(
             sources, args.pattern, name=name, progress=not args.quiet, z_guided=True,
-            seed=args.seed, ridge=args.ridge, prior=args.prior, colour_prior=args.colour_prior,
+            seed=1 if args.seed is None else args.seed, ridge=args.ridge, prior=args.prior, colour_prior=args.colour_prior,
             select=None if args.select == "none" else "cv",
             cv_folds=4 if args.cv_folds is None else args.cv_folds,
             meta={"command": c.command_line(args)})
@@ -118,9 +118,20 @@ def _check_z_options(args):
     """The options of --z-guided alone: refused without it, and --cv-folds with --select cv."""
     if not args.z_guided:
         for flag, value in (("--colour-prior", args.colour_prior), ("--select", args.select),
-                            ("--cv-folds", args.cv_folds)):
+                            ("--cv-folds", args.cv_folds), ("--seed", args.seed)):
             if value is not None:
                 raise c.CliError(f"{flag}: applies with --z-guided only")
+    if args.encoding in ("linear", "both") and not args.linearise:
+        # --no-linearise had been dropped without a word
+        raise c.CliError(f"--encoding: {args.encoding} contradicts --no-linearise (the sRGB "
+                         "values); give one of them")
+    seen = {}
+    for d in args.dataset:                 # a folder given twice was trained on twice
+        key = str(d.resolve())
+        if key in seen:
+            raise c.CliError(f"--dataset: {d} is given twice (as {seen[key]}); name each "
+                             "folder once")
+        seen[key] = d
     if args.cv_folds is not None:
         if args.select == "none":
             raise c.CliError("--cv-folds: applies to --select cv only")

@@ -320,9 +320,13 @@ def denoise_phasors_bilateral(i, q, var, sites, *, block=1, window=9, use=None,
             grid.from_grid(n_eff))
 
 
+#: the widest window (cells): 2**63 + 1 had been accepted, to fail as a size in the kernel
+WINDOW_MAX = 1023
+
+
 def _check_odd(window, name):
     try:
-        w = check_int(window, name, lo=1)
+        w = check_int(window, name, lo=1, hi=WINDOW_MAX)
     except TypeError:
         w = None
     if w is None or w % 2 == 0:
