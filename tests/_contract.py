@@ -108,7 +108,7 @@ def sim_tof(shape=(16, 16), **tof_sensor):
 def taps_with_sites(row):
     """ToFTaps of one measurement whose site is at ``row`` of a 4x4 frame."""
     return sim.ToFTaps(np.zeros((1, 4, 1)), [20e6], ([row], [0]), 1, 12, [1.0], [True],
-                       [False], sim.ToFSensor(frequencies=(20e6,)), (4, 4))
+                       [False], sim.ToFSensor(frequencies=(20e6,), bit_depth=12), (4, 4))
 
 
 def with_env(key, value, fn):

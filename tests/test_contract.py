@@ -1,8 +1,9 @@
-"""The bad-input contract of the package root: patterns, raw frames, ToF taps, mosaic.
+"""The bad-input contract of the package root: patterns, raw frames, ToF taps, mosaic,
+the build report.
 
-Rows of docs/reports/robustness.md (``patterns.*``, ``frame.*``), run by the shared
-runner of ``tests/_contract.py``, and the checks that keep the report's tables and
-the rows of every contract file in step.
+Rows of docs/reports/robustness.md (``config.*``, ``patterns.*``, ``frame.*``), run by
+the shared runner of ``tests/_contract.py``, and the checks that keep the report's tables
+and the rows of every contract file in step.
 """
 
 from __future__ import annotations
@@ -30,6 +31,9 @@ def _retaps(**changes):
     return dataclasses.replace(_tof(), **changes)
 
 ROWS = [
+    # -- the build report (rgbz_fast._config) ----------------------------------------------
+    R("config.show_config-file", "show_config(1)", lambda f: rz.show_config(1), TypeError,
+      "file: expected a text stream with a write() method (or None for stdout), got int"),
     # -- patterns (rgbz_fast._patterns) ----------------------------------------------------
     R("patterns.none", "get_pattern(None)", lambda f: rz.get_pattern(None), TypeError,
       "pattern: expected a Pattern, a preset name or a tile string"),
@@ -208,6 +212,13 @@ ROWS = [
     R("frame.ToFTaps-sensor-frequencies", "ToFTaps(3 frequencies of taps, a 1-frequency sensor)",
       lambda f: _retaps(sensor=sim.ToFSensor(frequencies=(20e6,))), ValueError,
       "sensor: 1 frequencies [20000000.0], the taps 3"),
+    R("frame.ToFTaps-sensor-frequency-values", "ToFTaps(taps at 80, 100, 120 MHz, a sensor "
+      "at 10, 20, 30 MHz)",
+      lambda f: _retaps(sensor=sim.ToFSensor(frequencies=(10e6, 20e6, 30e6))), ValueError,
+      "sensor: 3 frequencies [10000000.0, 20000000.0, 30000000.0], the taps 3"),
+    R("frame.ToFTaps-sensor-bit-depth", "ToFTaps(11-bit taps, a 12-bit sensor)",
+      lambda f: _retaps(sensor=sim.ToFSensor(bit_depth=12)), ValueError,
+      "sensor: a 12-bit ADC, the taps 11-bit codes; give the sensor the taps' bit depth"),
     R("frame.ToFTaps-sensor", "ToFTaps(sensor=None)", lambda f: _retaps(sensor=None),
       TypeError, "sensor: expected a ToFSensor, got NoneType"),
     R("frame.RawFrame-tof-colour-site", "RawFrame(tof measured at a colour pixel)",
@@ -268,8 +279,8 @@ def test_contract_rows_are_unique_and_documented_bugs_exist():
     assert len(ids) == len(set(ids)), sorted(i for i in ids if ids.count(i) > 1)
     assert {r.bug for r in api + cli if r.bug} <= set(BUGS)
     # an id names the module of the function it calls: one contract file per module
-    modules = {"patterns", "frame", "reconstruction", "isp", "metrics", "simulation", "io",
-               "tof", "evaluation", "hardware"}
+    modules = {"config", "patterns", "frame", "reconstruction", "isp", "metrics", "simulation",
+               "io", "tof", "evaluation", "hardware"}
     assert {r.id.split(".")[0] for r in api} <= modules
     assert {r.id.split(".")[0] for r in cli} == {"cli"}
 

@@ -201,7 +201,7 @@ def test_tof_taps_own_their_arrays():
     taps = np.ones((1, 4, 2), np.uint16)
     depth, valid, sat = np.ones(2), np.ones(2, bool), np.zeros(2, bool)
     t = ToFTaps(taps, [20e6], (np.array([0, 2]), np.array([0, 0])), 1, 12, depth, valid, sat,
-                ToFSensor(frequencies=(20e6,)), (4, 4))
+                ToFSensor(frequencies=(20e6,), bit_depth=12), (4, 4))
     taps[...] = 9
     depth[...] = -1
     assert taps.flags.writeable and depth.flags.writeable    # not frozen behind the caller

@@ -297,6 +297,10 @@ def test_malvar_demosaic_is_finite_and_exact_on_flat(shape, dtype, phase, mode, 
     else:
         cfa = rng.integers(0, 3, shape) * (1e-310 if dtype == np.float64 else 1e-40)
     cfa = cfa.astype(dtype)
+    if dtype == np.bool_:                      # a mask, not CFA values: refused, never 0/1 DN
+        with pytest.raises(TypeError, match="^cfa: dtype bool is not supported"):
+            demosaic(cfa, phase, mode=mode, dtype=out_dtype)
+        return
     try:
         rgb = demosaic(cfa, phase, mode=mode, dtype=out_dtype)
     except ValueError as exc:

@@ -32,6 +32,11 @@ def config():
 def show_config(file=None):
     """Print how the C kernels were built: version, compiler flags, OpenMP on/off, threads.
 
+    Parameters
+    ----------
+    file : text stream, optional
+        Where to print: anything with a ``write()`` method (default: ``sys.stdout``).
+
     Examples
     --------
     >>> import rgbz_fast
@@ -39,6 +44,9 @@ def show_config(file=None):
     rgbz-fast 0.1.0
     ...
     """
+    if file is not None and not callable(getattr(file, "write", None)):
+        raise TypeError(f"file: expected a text stream with a write() method (or None for "
+                        f"stdout), got {type(file).__name__}")
     c = config()
     lines = [
         f"rgbz-fast {c['version']}",
@@ -50,4 +58,4 @@ def show_config(file=None):
         + (f" (version {c['openmp_version']})" if c['openmp'] and c['openmp_version'] else ""),
         f"  threads       : {c['max_threads']} (cores: {c['cpu_count']})",
     ]
-    print("\n".join(lines), file=file or sys.stdout)
+    print("\n".join(lines), file=sys.stdout if file is None else file)

@@ -395,12 +395,17 @@ class ToFTaps:
                              f"{self.bit_depth}-bit range [0, {top}]")
         if not isinstance(self.sensor, ToFSensor):
             raise TypeError(f"sensor: expected a ToFSensor, got {type(self.sensor).__name__}")
-        if len(self.sensor.frequencies) != F:
+        sf = np.asarray(self.sensor.frequencies, np.float64)
+        if sf.shape != (F,) or not np.allclose(sf, freqs, rtol=1e-9, atol=0):
             # the ISP takes the noise model from the sensor and the phases from the taps: a
-            # file whose two disagree failed deep in the validity stage
+            # file whose two disagree failed deep in the validity stage (another count), or
+            # was read at the taps' frequencies without a word (other values)
             raise ValueError(f"sensor: {len(self.sensor.frequencies)} frequencies "
                              f"{list(self.sensor.frequencies)}, the taps {F} "
                              f"{freqs.tolist()}; give the sensor the taps' frequencies")
+        if self.sensor.bit_depth != self.bit_depth:
+            raise ValueError(f"sensor: a {self.sensor.bit_depth}-bit ADC, the taps "
+                             f"{self.bit_depth}-bit codes; give the sensor the taps' bit depth")
         shape = as_list(self.shape, "shape", "a (rows, cols) frame shape")
         if len(shape) != 2 or not all(isinstance(v, (int, np.integer)) and
                                       not isinstance(v, bool) for v in shape) \

@@ -42,14 +42,19 @@ FRAME_DTYPES = (np.dtype(np.uint8), np.dtype(np.uint16), np.dtype(np.float32),
 FLOAT_DTYPES = (np.dtype(np.float16), np.dtype(np.float32), np.dtype(np.float64))
 
 
-def check_image(arr, name, ndim=None, dtypes=None, *, finite=True):
+def check_image(arr, name, ndim=None, dtypes=None, *, finite=True, values=None):
     """Return ``np.asarray(arr)`` after checking ndim, dtype kind, size and (``finite``)
-    finiteness; a caller passing ``finite=False`` checks it itself."""
+    finiteness; a caller passing ``finite=False`` checks it itself. ``values``: what the
+    array holds ("image values", "distances in metres"): a bool array, a mask, is then
+    refused (True would be read as the value 1)."""
     if arr is None:
         raise TypeError(f"{name}: expected an array, got None")
     a = as_array(arr, name)
     if a.dtype == object or np.issubdtype(a.dtype, np.complexfloating):
         raise TypeError(f"{name}: expected a real numeric array, got dtype {a.dtype}")
+    if values is not None and a.dtype == np.bool_:
+        raise TypeError(f"{name}: dtype bool is not supported; expected {values} (an integer "
+                        "or float array), not a mask")
     if not (np.issubdtype(a.dtype, np.number) or a.dtype == np.bool_):
         raise TypeError(f"{name}: expected a numeric array, got dtype {a.dtype}")
     if ndim is not None:

@@ -70,8 +70,9 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     ----------
     cfa : ndarray, shape (rows, cols)
         A full Bayer mosaic (reconstruct the Z sites of an RGB-Z frame
-        first). Any real dtype; uint8, uint16, float32 and float64 are read
-        directly by the C kernel, other integers are converted to float64.
+        first). Any real dtype but bool (a mask); uint8, uint16, float32 and
+        float64 are read directly by the C kernel, other integers are
+        converted to float64.
         At least 2x2 pixels; finite.
     phase : {"GRBG", "RGGB", "BGGR", "GBRG"} or Pattern
         Colours of the top-left 2x2 quad in raster order (GRBG is the
@@ -106,7 +107,7 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
         Unknown ``phase``, ``method`` or ``mode``; a CFA that is not 2-D,
         smaller than 2x2, or holds NaN or inf.
     TypeError
-        A non-numeric CFA or an unsupported ``dtype``.
+        A non-numeric or bool CFA or an unsupported ``dtype``.
 
     Examples
     --------
@@ -117,7 +118,8 @@ def demosaic(cfa, phase="GRBG", method="malvar2004", *, mode="reflect", dtype=No
     >>> rgb.shape, rgb.dtype, float(rgb.min()), float(rgb.max())
     ((4, 6, 3), dtype('float32'), 100.0, 100.0)
     """
-    a = check_image(cfa, "cfa", ndim=2, finite=False)         # floats: finite_range below
+    a = check_image(cfa, "cfa", ndim=2, finite=False,         # floats: finite_range below
+                    values="CFA values")
     if a.shape[0] < 2 or a.shape[1] < 2:
         raise ValueError(f"cfa: expected at least one 2x2 Bayer period, got shape {a.shape}")
     ph = _bayer_phase(phase)

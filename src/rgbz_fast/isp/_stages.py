@@ -193,8 +193,14 @@ def _check_matrix(matrix, name):
 MATRIX_MAX = 1e30
 
 
+def _check_cfa(cfa, name="cfa"):
+    """A raw 2-D CFA of real values in DN (``check_image``); a bool array is a mask, not
+    values (True would be read as 1 DN), so it is refused as ``reconstruct`` refuses it."""
+    return check_image(cfa, name, ndim=2, values="raw values in DN")
+
+
 def _prepare_cfa(cfa, pattern, name="cfa"):
-    data = check_image(cfa, name, ndim=2)
+    data = _check_cfa(cfa, name)
     pattern = get_pattern(pattern)
     pattern.check_shape(data.shape, name)
     return data, pattern
@@ -254,7 +260,7 @@ def grey_world_gains(cfa, phase="GRBG", *, black_level=0.0, white_level=2047):
     ndarray of float64, shape (3,)
         R, G, B gains.
     """
-    data = check_image(cfa, "cfa", ndim=2)
+    data = _check_cfa(cfa)
     pattern = get_pattern(phase)
     if pattern.has_z:
         raise ValueError(f"phase: the white balance needs a complete Bayer CFA, got pattern "
@@ -341,7 +347,7 @@ def white_balance(cfa, phase="GRBG", params=None, *, black_level=0.0, white_leve
         The gains used.
     """
     dt = check_dtype(dtype, (np.float32, np.float64))
-    data = check_image(cfa, "cfa", ndim=2)
+    data = _check_cfa(cfa)
     params = stage_params(WhiteBalance, params, overrides, caller="white_balance()")
     pattern = get_pattern(phase)
     if pattern.has_z:

@@ -27,9 +27,10 @@ def _check_ssim_data_range(value):
 
 
 def _check_pair(reference, test, ndim, ref_name="reference", test_name="test"):
-    """Both arrays real, finite, non-empty, of `ndim` dimensions and equal shapes."""
-    ref = check_image(reference, ref_name, ndim=ndim)
-    tst = check_image(test, test_name, ndim=ndim)
+    """Both arrays real (bool refused), finite, non-empty, of `ndim` dimensions and equal
+    shapes."""
+    ref = check_image(reference, ref_name, ndim=ndim, values="image values")
+    tst = check_image(test, test_name, ndim=ndim, values="image values")
     if ref.shape != tst.shape:
         raise ValueError(f"{test_name}: shape {tst.shape} differs from {ref_name} shape "
                          f"{ref.shape}")

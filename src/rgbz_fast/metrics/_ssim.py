@@ -143,6 +143,42 @@ def _ssim_and_ms_ssim(x, y, data_range, weights, threads, x_cache=None):
     return ssim_value, float(per_channel.mean())
 
 
+def _check_weights(weights):
+    """MS-SSIM's exponents as a float64 vector: a non-empty 1-D sequence of real numbers (no
+    bool, complex or text, which NumPy would read as 1, drop the imaginary part of, or parse),
+    finite and >= 0, with a sum > 0 (all-zero exponents make every factor 1: a score of 1.0
+    for any pair)."""
+    if isinstance(weights, (str, bytes)) or not hasattr(weights, "__len__"):
+        raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}")
+    try:
+        raw = np.asarray(weights)
+        bad = raw.dtype.kind in "bcUSMmV" or (raw.ndim == 1 and any(
+            isinstance(v, _NOT_REAL) for v in (raw if raw.dtype == object else weights)))
+    except (TypeError, ValueError):
+        bad = False                      # ragged: refused below, as before
+    if bad:
+        raise TypeError(f"weights: expected a sequence of real numbers (bool, complex and text "
+                        f"are refused), got {weights!r:.80}")
+    try:
+        w = np.asarray(weights, dtype=np.float64)
+    except OverflowError:
+        raise ValueError("weights: holds a number too large for float64") from None
+    except (TypeError, ValueError):
+        raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}") from None
+    if w.ndim != 1 or w.size == 0:
+        raise ValueError(f"weights: expected a non-empty 1-D sequence, got {weights!r}")
+    if not np.all(np.isfinite(w)) or np.any(w < 0):
+        raise ValueError(f"weights: expected finite exponents >= 0, got {weights!r}")
+    if not w.sum() > 0:
+        raise ValueError(f"weights: expected exponents with a sum > 0, got {weights!r}; "
+                         "all-zero exponents score every pair 1.0")
+    return w
+
+
+#: what a weight may not be: NumPy reads True as 1, drops an imaginary part, parses text
+_NOT_REAL = (bool, np.bool_, complex, np.complexfloating, str, bytes)
+
+
 def _check_ssim_window(win_size, sigma):
     win_size = check_int(win_size, "win_size", lo=1, hi=_kernels.SSIM_MAX_TAPS)
     if win_size % 2 == 0:
@@ -267,7 +303,8 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     weights : sequence of float, default :data:`MS_SSIM_WEIGHTS`
         Exponents :math:`\beta_j = \gamma_j` of scales 1 (finest) to M, the
         last one also :math:`\alpha_M`. Their number is the number of scales
-        M; the default are the five values of Wang et al. 2003.
+        M; the default are the five values of Wang et al. 2003. Real numbers
+        (not bool) >= 0, with a sum > 0.
     channel_axis : int or None, default -1
         As in :func:`ssim`: the score is the mean over channels of the
         per-channel MS-SSIM.
@@ -325,18 +362,7 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     """
     ref, tst = _check_pair(reference, test, (2, 3))
     peak = _check_ssim_data_range(data_range)
-    if isinstance(weights, (str, bytes)) or not hasattr(weights, "__len__"):
-        raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}")
-    try:
-        w = np.asarray(weights, dtype=np.float64)
-    except OverflowError:
-        raise ValueError("weights: holds a number too large for float64") from None
-    except (TypeError, ValueError):
-        raise TypeError(f"weights: expected a sequence of numbers, got {weights!r}") from None
-    if w.ndim != 1 or w.size == 0:
-        raise ValueError(f"weights: expected a non-empty 1-D sequence, got {weights!r}")
-    if not np.all(np.isfinite(w)) or np.any(w < 0):
-        raise ValueError(f"weights: expected finite exponents >= 0, got {weights!r}")
+    w = _check_weights(weights)
     _check_integer_range((ref, tst), ("reference", "test"), peak)
     _check_magnitude((ref, tst), ("reference", "test"), SSIM_MAX_VALUE, _SSIM_WHY)
     threads = check_workers(workers)

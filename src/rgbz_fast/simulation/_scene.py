@@ -136,7 +136,8 @@ def disparity_to_depth(disparity, focal_px, baseline_m, *, offset=0.0, invalid=0
     array([[ True,  True],
            [ True, False]])
     """
-    disp = check_image(disparity, "disparity", ndim=2).astype(np.float64)
+    disp = check_image(disparity, "disparity", ndim=2,
+                       values="disparities in pixels").astype(np.float64)
     f = check_number(focal_px, "focal_px", lo=0, lo_open=True)
     b = check_number(baseline_m, "baseline_m", lo=0, lo_open=True)
     off = check_number(offset, "offset")
@@ -328,7 +329,8 @@ class Scene:
             if self.depth_valid is not None:
                 raise ValueError("depth_valid: given without a depth map")
         else:
-            d = check_image(self.depth, "depth", ndim=2).astype(np.float64)
+            d = check_image(self.depth, "depth", ndim=2,
+                            values="distances in metres").astype(np.float64)
             if d.shape != shape:
                 raise ValueError(f"depth: shape {d.shape} differs from the image's {shape}")
             if self.depth_valid is None:
@@ -350,7 +352,8 @@ class Scene:
             object.__setattr__(self, "depth_valid", _readonly(valid))
 
         if self.ir_reflectance is not None:
-            ir = check_image(self.ir_reflectance, "ir_reflectance", ndim=2).astype(np.float64)
+            ir = check_image(self.ir_reflectance, "ir_reflectance", ndim=2,
+                             values="reflectances in [0, 1]").astype(np.float64)
             if ir.shape != shape:
                 raise ValueError(f"ir_reflectance: shape {ir.shape} differs from the image's "
                                  f"{shape}")
