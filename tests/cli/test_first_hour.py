@@ -481,7 +481,7 @@ def test_errors_speak_in_flags_not_python(tmp_path, capsys):
             (["evaluate", "--optics", "--no-linearise", "--limit", "1"], "it needs --linearise",
              "linearise=True"),
             (["evaluate", "--crop", "300", "--limit", "1", "--metrics", "ssim"],
-             "crop: --crop 300 leaves", "crop=300")):
+             "crop: image 'astronaut': --crop 300 leaves", "crop=300")):
         assert main(argv + ["--out", str(tmp_path / "o"), "--quiet", "--no-cache"]) == 2
         err = capsys.readouterr().err
         assert want in err and unwanted not in err

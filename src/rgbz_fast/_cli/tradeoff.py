@@ -66,9 +66,9 @@ def run(args):
     if bad:
         from ..reconstruction import METHODS
 
-        what = "not measured by tradeoff" if all(m in METHODS for m in bad) else "unknown"
-        raise c.CliError(f"--methods: {', '.join(bad)} {what}; expected some of "
-                         f"{', '.join(known)}")
+        what = f"{', '.join(bad)} not measured by tradeoff" if all(m in METHODS for m in bad) \
+            else f"unknown {', '.join(bad)}"
+        raise c.CliError(f"--methods: {what}; expected some of {', '.join(known)}")
     if args.dataset:
         images = folder_dataset(args.dataset, args.limit)
         name = args.dataset.name

@@ -206,7 +206,13 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
     chain = config.colour_isp()
     memo, renders, metric_memos = {}, [], {}
     for pname in dict.fromkeys(p for p, _ in todo):
-        frame, ref_cfa = _frames(img, _named_pattern(pname), config, memo, nir)
+        try:
+            frame, ref_cfa = _frames(img, _named_pattern(pname), config, memo, nir)
+        except ValueError as exc:                # an image smaller than one period
+            if not str(exc).startswith("rgb: "):
+                raise
+            raise ValueError(f"dataset: image {source.name!r}: "
+                             f"{str(exc).removeprefix('rgb: ')}") from None
         pattern = frame.pattern
         bayer, bd = pattern.bayer_phase, frame.bit_depth
         phase = _named_pattern(bayer) if bayer is not None else bayer   # the renders' Pattern
@@ -231,10 +237,12 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
                     values.update(_image_metrics(ref_srgb, test_srgb, config, workers,
                                                  metric_memos.setdefault(id(ref_srgb), {})))
                 except ValueError as exc:            # an image too small for a metric
-                    if not str(exc).startswith("reference: "):
-                        raise                        # a message of the caller's parameter
-                    raise ValueError(f"metrics: image {source.name!r}: "
-                                     f"{str(exc).removeprefix('reference: ')}") from None
+                    text = str(exc)
+                    for given, named in (("reference: ", "metrics"), ("crop: ", "crop")):
+                        if text.startswith(given):   # the image named beside the parameter
+                            raise ValueError(f"{named}: image {source.name!r}: "
+                                             f"{text.removeprefix(given)}") from None
+                    raise                            # a message of the caller's parameter
             if cdir:
                 _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k], estimated) for k in config.metrics]
