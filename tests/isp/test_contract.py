@@ -146,7 +146,10 @@ ROWS = [
       "known: expected a bool map of shape (8, 8)"),
     R("isp.detect_defects-white", "detect_defects(white_level=0)",
       lambda f: isp.detect_defects(u16(), "mask1", white_level=0), ValueError,
-      "white_level: expected a finite number > 0"),
+      "white_level: expected a finite number >= 1e-06 and <= 1e+30, got 0"),
+    R("isp.white_balance-white-huge", "white_balance(white_level=1e300)",
+      lambda f: isp.white_balance(u16(), "bayer", white_level=1e300), ValueError,
+      "white_level: expected a finite number >= 1e-06 and <= 1e+30, got 1e+300"),
     R("isp.white_balance-overflow", "white_balance(value 1e300, gains=(1e6, 1, 1), clip=False)",
       lambda f: isp.white_balance(f64(value=1e300), "RGGB", gains=(1e6, 1, 1), clip=False),
       ValueError, "cfa: the balanced values (v - black_level) / (white_level - black_level) * "

@@ -14,7 +14,7 @@ import numpy as np
 
 from .._patterns import Z
 from .._validate import as_array, check_flag, check_number
-from ._stages import _prepare_cfa, stage_params
+from ._stages import _prepare_cfa, check_white_level, stage_params
 
 __all__ = ["DefectCorrection", "detect_defects", "correct_defects"]
 
@@ -207,7 +207,7 @@ def detect_defects(cfa, pattern, params=None, *, white_level=2047, **overrides):
     """
     data, pattern = _prepare_cfa(cfa, pattern)
     params = stage_params(DefectCorrection, params, overrides, caller="detect_defects()")
-    white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
+    white_level = check_white_level(white_level)
     found = np.zeros(data.shape, bool)
     if params.enabled:
         rr, cc = _detect_sites(data, pattern.tile, params, white_level)
@@ -345,7 +345,7 @@ def correct_defects(cfa, pattern, params=None, *, white_level=2047, known=None,
     data, pattern = _prepare_cfa(cfa, pattern)
     params = stage_params(DefectCorrection, params, overrides, caller="correct_defects()")
     return_mask = check_flag(return_mask, "return_mask")
-    white_level = check_number(white_level, "white_level", lo=0, lo_open=True)
+    white_level = check_white_level(white_level)
     kn = _check_known(known, data.shape)
     rr, cc, values, mask = _fixes(data, pattern, params, white_level, kn)
     out = data.copy()

@@ -231,8 +231,19 @@ def fill_missing(cfa, pattern, params=None, *, bit_depth=11, workers=None, tof=N
                        bit_depth=bit_depth, workers=workers, tof=tof, nir=nir)
 
 
+#: the white level's range: the stages work in float32, where 1e300 became inf (a white
+#: balance of all zeros) and 1e-300 a division by zero
+WHITE_LEVEL_RANGE = (1e-6, 1e30)
+
+
+def check_white_level(white_level):
+    """``white_level`` as a float within :data:`WHITE_LEVEL_RANGE`, or an error naming it."""
+    lo, hi = WHITE_LEVEL_RANGE
+    return check_number(white_level, "white_level", lo=lo, hi=hi)
+
+
 def _black_white(black_level, white_level):
-    white = check_number(white_level, "white_level", lo=0, lo_open=True)
+    white = check_white_level(white_level)
     black = check_number(black_level, "black_level", lo=0)
     if black >= white:
         raise ValueError(f"black_level: {black:g} must be below the white level {white:g}")
