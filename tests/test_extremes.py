@@ -372,3 +372,25 @@ def test_colour_isp_on_extreme_frames():
         frame = rz.RawFrame(np.full((16, 16), value, np.uint16), "mask1")
         out = ColourISP().run(frame)
         assert out.dtype == np.uint8 and np.all(out == (0 if value == 0 else 255))
+
+
+@pytest.mark.parametrize("dtype", ["uint16", "float32", "float64"])
+def test_big_endian_input_gives_the_same_results(dtype):
+    """A big-endian array (as some files hold) is read as its values: reconstruct and
+    fill_missing refused '>u2' as 'not supported; expected one of uint8, uint16, ...' while
+    the metrics and demosaic took it."""
+    from rgbz_fast.isp import correct_colour, fill_missing
+    from rgbz_fast.isp._stages import srgb_oetf
+
+    img = np.random.default_rng(5).random((16, 16, 3))
+    cfa = rz.mosaic(img, "mask1", dtype=np.dtype(dtype)).data
+    big = cfa.astype(np.dtype(dtype).newbyteorder(">"))
+    assert not big.dtype.isnative and np.array_equal(big, cfa)
+    np.testing.assert_array_equal(rz.reconstruct(big, pattern="mask1"),
+                                  rz.reconstruct(cfa, pattern="mask1"))
+    np.testing.assert_array_equal(fill_missing(big, "mask1"), fill_missing(cfa, "mask1"))
+    if dtype != "uint16":
+        rgb = img.astype(dtype)
+        big_rgb = rgb.astype(rgb.dtype.newbyteorder(">"))
+        np.testing.assert_array_equal(srgb_oetf(big_rgb), srgb_oetf(rgb))
+        np.testing.assert_array_equal(correct_colour(big_rgb), correct_colour(rgb))

@@ -52,6 +52,10 @@ def check_image(arr, name, ndim=None, dtypes=None, *, finite=True, values=None):
     a = as_array(arr, name)
     if a.dtype == object or np.issubdtype(a.dtype, np.complexfloating):
         raise TypeError(f"{name}: expected a real numeric array, got dtype {a.dtype}")
+    if not a.dtype.isnative:
+        # a big-endian file's array: the same values in this machine's byte order (the
+        # kernels' dtype lists named '>u2' unsupported, as if uint16 were not)
+        a = a.astype(a.dtype.newbyteorder("="))
     if values is not None and a.dtype == np.bool_:
         raise TypeError(f"{name}: dtype bool is not supported; expected {values} (an integer "
                         "or float array), not a mask")
