@@ -31,8 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .._patterns import Pattern, Z, bayer, get_pattern
-from .._validate import check_bit_depth, check_int
+from .._patterns import _PRESETS, Pattern, Z, bayer, get_pattern
+from .._validate import as_array, check_bit_depth, check_int
 from ..io import atomic_write, read_npz
 from ._learned_hash import N_ANGLES, learned_geometry, mirror_octants
 from ._learned_train import train
@@ -118,12 +118,12 @@ class LearnedFilters(FilterIdentity):
         self.geometry = learned_geometry(self.pattern, self.radius, self.hash_radius)
         n_ph = len(self.geometry)
         n_taps = max(len(g["taps"]) for g in self.geometry)
-        s_thr = np.array(strength_thresholds, np.float64, ndmin=2)
-        c_thr = np.array(coherence_thresholds, np.float64, ndmin=2)
+        s_thr = np.array(_reals(strength_thresholds, "strength_thresholds"), ndmin=2)
+        c_thr = np.array(_reals(coherence_thresholds, "coherence_thresholds"), ndmin=2)
         k_thr = (np.zeros((n_ph, 0)) if spread_thresholds is None
-                 else np.array(spread_thresholds, np.float64, ndmin=2))
+                 else np.array(_reals(spread_thresholds, "spread_thresholds"), ndmin=2))
         # kept at float32 precision, as the file stores them: a fit and its file are equal
-        w = np.array(weights, np.float64).astype(np.float32).astype(np.float64)
+        w = _reals(weights, "weights").astype(np.float32).astype(np.float64)
         if any(a.shape[0] != n_ph for a in (s_thr, c_thr, k_thr)):
             raise ValueError(f"filters: expected thresholds for {n_ph} phases, got "
                              f"{s_thr.shape[0]}, {c_thr.shape[0]} and {k_thr.shape[0]}")
@@ -140,6 +140,10 @@ class LearnedFilters(FilterIdentity):
         if np.any(k_thr < 1):
             raise ValueError("filters: spread thresholds must be >= 1 (a ratio of the largest "
                              "to the smallest channel energy)")
+        if np.any(s_thr < 0) or np.any(c_thr < 0) or np.any(c_thr > 1):
+            # a coherence is a ratio in [0, 1], a strength an energy: [-1, 5] had been taken
+            raise ValueError("filters: strength thresholds must be >= 0 and coherence "
+                             "thresholds within [0, 1]")
         for a in (w, s_thr, c_thr, k_thr):
             a.setflags(write=False)
         self.weights, self.strength_thresholds = w, s_thr
@@ -250,8 +254,10 @@ class LearnedFilters(FilterIdentity):
             raise ValueError(f"{name}: {p} lacks {e} (a damaged filters file)") from None
         except (TypeError, ValueError, SyntaxError, RecursionError, MemoryError) as e:
             msg = str(e)
-            if msg.startswith(f"{name}: "):
-                raise ValueError(msg) from None
+            if msg.startswith(f"{name}: "):           # the file named, once
+                rest = msg.removeprefix(f"{name}: ")
+                raise ValueError(msg if rest.startswith(str(p)) else f"{name}: {p}: {rest}") \
+                    from None
             raise ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
                              f"{msg[:200]})") from None
 
@@ -265,18 +271,45 @@ class LearnedFilters(FilterIdentity):
         keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
         if not isinstance(keys, list) or not isinstance(values, list):
             raise TypeError("meta_keys and meta_values must be 1-d arrays")
+        if len(keys) != len(values):                # zip had dropped the keys past the values
+            raise ValueError(f"{name}: {p} holds {len(keys)} meta keys and {len(values)} "
+                             "values (a damaged filters file)")
         meta = {str(k): ast.literal_eval(str(v)[:100_000]) for k, v in zip(keys, values)}
         if int(z["n_angles"]) != N_ANGLES:
             raise ValueError(f"{name}: {p} has {int(z['n_angles'])} angle bins, expected "
                              f"{N_ANGLES}")
         try:
             pattern = Pattern(str(z["pattern"]), name=str(z["pattern_name"]), bayer=str(z["bayer"]))
+            named = _preset_or_none(pattern.name)
         except (ValueError, TypeError) as e:
             raise ValueError(f"{name}: {p} holds an invalid pattern ({e})") from None
+        if named is not None and named.tile_string != pattern.tile_string:
+            # a preset's name on another tile would be reported as that preset
+            raise ValueError(f"{name}: {p} names its pattern {pattern.name!r}, whose tile is "
+                             f"{named.tile_string}, but holds the tile {pattern.tile_string} "
+                             "(a damaged filters file)")
         spread = z["spread_thresholds"] if version >= 2 else None
-        return cls(pattern, int(z["bit_depth"]), z["weights"].astype(np.float64),
+        return cls(pattern, int(z["bit_depth"]), z["weights"],
                    z["strength_thresholds"], z["coherence_thresholds"], spread,
                    radius=int(z["radius"]), hash_radius=int(z["hash_radius"]), meta=meta)
+
+
+def _reals(value, name):
+    """``value`` as float64, refusing text, booleans and complex numbers (NumPy parsed text,
+    read True as 1 and dropped an imaginary part with only a ComplexWarning)."""
+    a = as_array(value, f"filters: {name}")
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"filters: {name}: expected real numbers, got dtype {a.dtype}")
+    return np.array(a, np.float64)
+
+
+def _preset_or_none(label):
+    """The preset Pattern a pattern label names (``mask2``, ``mask1_rggb``), or None for a
+    label of a custom tile."""
+    try:
+        return get_pattern(label) if label.split("_")[0].lower() in _PRESETS else None
+    except ValueError:
+        return None
 
 
 def _kernel_arrays(f, bit_depth):
