@@ -140,10 +140,6 @@ class LearnedFilters(FilterIdentity):
         if np.any(k_thr < 1):
             raise ValueError("filters: spread thresholds must be >= 1 (a ratio of the largest "
                              "to the smallest channel energy)")
-        if np.any(s_thr < 0) or np.any(c_thr < 0) or np.any(c_thr > 1):
-            # a coherence is a ratio in [0, 1], a strength an energy: [-1, 5] had been taken
-            raise ValueError("filters: strength thresholds must be >= 0 and coherence "
-                             "thresholds within [0, 1]")
         for a in (w, s_thr, c_thr, k_thr):
             a.setflags(write=False)
         self.weights, self.strength_thresholds = w, s_thr
