@@ -26,7 +26,12 @@ def check_readout(obj):
     store_number(obj, "voltage_swing", lo=0, hi=100, lo_open=True)
     object.__setattr__(obj, "bit_depth",
                        check_bit_depth(obj.bit_depth, f"{type(obj).__name__}.bit_depth"))
-    store_number(obj, "black_level", lo=0, hi=(1 << obj.bit_depth) - 1, hi_open=True)
+    top = (1 << obj.bit_depth) - 1
+    try:
+        store_number(obj, "black_level", lo=0, hi=top, hi_open=True)
+    except ValueError as exc:              # the default 64 does not fit a narrow ADC: say why
+        raise ValueError(f"{exc} (a {obj.bit_depth}-bit ADC's codes are 0-{top}; give "
+                         "black_level with bit_depth)") from None
 
 
 def check_pixel_noise(obj):

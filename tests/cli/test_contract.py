@@ -285,6 +285,8 @@ CLI_ROWS = [
     C("cli.train-dataset-twice", ("train", "--dataset", "{d}/ds", "--dataset", "{d}/ds/",
                                   "--out", "{d}/t.npz"),
       "--dataset: {d}/ds is given twice (as {d}/ds); name each folder once"),
+    C("cli.tradeoff-image-too-small", ("tradeoff", "--dataset", "{d}/tiny.png", "--quick"),
+      "dataset: image 'tiny': frame 1x1 is smaller than one period"),
     C("cli.tradeoff-methods-not-measured", ("tradeoff", "--methods", "edi_rows", "--quick"),
       "--methods: edi_rows not measured by tradeoff; expected some of bilinear, bi"),
     C("cli.hardware-fixed-point-twice", ("hardware", "--fixed-point", "exp_bits=10,exp_bits=12"),

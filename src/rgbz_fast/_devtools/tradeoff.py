@@ -135,7 +135,13 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
         img = src.load()
         for p in patterns:
             nir = src.load_nir() if config.needs_tof and hasattr(src, "load_nir") else None
-            frame, ref = image_frames(img, p, config, nir)
+            try:
+                frame, ref = image_frames(img, p, config, nir)
+            except ValueError as exc:           # an image smaller than one period
+                if not str(exc).startswith("rgb: "):
+                    raise
+                raise ValueError(f"dataset: image {src.name!r}: "
+                                 f"{str(exc).removeprefix('rgb: ')}") from None
             phase = frame.pattern.bayer_phase
             ref8, st = chain.render(ref, phase, bit_depth=bd, workers=workers,
                                     return_stages=True)
