@@ -73,3 +73,28 @@ def test_reconstruct_takes_z_guided_filters_files(tmp_path, capsys):
     # the shipped filters given as a file are the default ones: the same image
     assert (out / "a_z-guided_cfa.tif").read_bytes() == \
         (tmp_path / "default" / "a_z-guided_cfa.tif").read_bytes()
+
+
+def test_the_simulation_options_are_refused_on_a_dataset_of_raw_files(tmp_path, capsys):
+    """On raw files (measured as they are) --noise, --optics, --bit-depth, --no-linearise
+    and --grey changed nothing, and the report's header still said 'noisy', 'optics',
+    '4-bit'."""
+    import shutil
+
+    import pytest
+
+    pytest.importorskip("rawpy")
+    from _support import shared_path
+
+    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
+    (tmp_path / "raw").mkdir()
+    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
+    for flag in (["--noise"], ["--optics"], ["--bit-depth", "4"], ["--no-linearise"],
+                 ["--grey"]):
+        assert main(["evaluate", "--dataset", str(tmp_path / "raw"), *flag, "--no-plots",
+                     "--out", str(tmp_path / "out")]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert err == [f"rgbz-fast evaluate: error: {flag[0]}: applies to the RGB images the "
+                       "evaluation mosaics; the dataset's raw files are measured as they are "
+                       "(their own bit depth, noise and lens)"]
+    assert not (tmp_path / "out").exists()

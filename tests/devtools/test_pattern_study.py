@@ -119,10 +119,19 @@ def test_bad_tiles_name_tiles(tile, match):
 
 @pytest.mark.parametrize("spec,match", [
     ("block=3", "block 3x3"), ("period=3", "whole Bayer periods"), ("shape=4", "unknown"),
-    ("arrangement=diagonal", "arrangement"), ("density=0.5", "MIN:MAX"), ("block", "KEY=")])
+    ("arrangement=diagonal", "arrangement"), ("density=0.5", "MIN:MAX"), ("block", "KEY="),
+    ("block=1 block=2", "block is given twice"), ("period=4;period=8", "period is given twice"),
+    ("", "an empty specification"), ("block=1,,2", "block has an empty entry")])
 def test_bad_generate_names_generate(spec, match):
     with pytest.raises(ValueError, match=f"^generate: .*{match}"):
         pc.parse_generate(spec)
+
+
+def test_a_density_range_no_layout_meets_is_said():
+    """density=0.9:1 made no layout and said nothing."""
+    cands, notes = pc.generate("block=1 period=4 density=0.9:1")
+    assert cands == [] and notes == ["generate: no layout of the family has a density within "
+                                     "0.9:1"]
 
 
 def test_bad_tile_fails_before_any_work(tmp_path, capsys, monkeypatch):

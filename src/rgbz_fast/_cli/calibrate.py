@@ -68,21 +68,28 @@ def run(args):
     from ..tof import calibrate
 
     c.output_file(args.out)
+    if isinstance(args.dark, list) and not args.dark:   # '--dark' alone: the default is ()
+        raise c.CliError("--dark: expected the lens-capped frame files after it")
     if args.simulate:
         if args.frames:
             raise c.CliError("give frame files or --simulate, not both")
+        for flag, given in (("--distances", args.distances is not None),
+                            ("--dark", bool(args.dark))):
+            if given:                          # the simulated sweep has its own
+                raise c.CliError(f"{flag}: applies to frame files; --simulate makes the "
+                                 "sweep from --near, --far and --positions")
         sweep, distances, dark = _simulated_sweep(args)
     else:
         if not args.frames:
             raise c.CliError("no frames: give .npz frame files with their --distances, or "
                              "--simulate")
+        for dest in SIMULATE_ONLY:            # ignored with frame files, and said nowhere
+            if getattr(args, dest) != args.parser.get_default(dest):
+                raise c.CliError(f"--{dest.replace('_', '-')}: applies to --simulate; frame "
+                                 "files bring their own sensor and walls")
         if args.distances is None:
             raise c.CliError("--distances: one distance per frame is needed")
-        try:
-            distances = [float(v) for v in args.distances.split(",") if v.strip()]
-        except ValueError:
-            raise c.CliError(f"--distances: expected comma-separated metres, got "
-                             f"{args.distances!r}") from None
+        distances = _distances(args.distances)
         sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
         dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
     c.check_outputs([("the calibration", args.out)], [*args.frames, *args.dark])
@@ -94,6 +101,26 @@ def run(args):
         print(f"{len(sweep)} frames -> {args.out}: {cal!r}; fit residual per frequency "
               f"{rms} mm RMS")
     return 0
+
+
+#: the options of a simulated sweep alone
+SIMULATE_ONLY = ("pattern", "shape", "near", "far", "positions", "frames_per_position",
+                 "reflectance", "sensor", "seed")
+
+
+def _distances(text):
+    """--distances: comma-separated metres, each in (0, 1000] (1e308 had reached the fit's
+    least squares, which printed LAPACK's complaint), no empty entry."""
+    items = [v.strip() for v in text.split(",")]
+    try:
+        values = [float(v) for v in items]
+    except ValueError:
+        raise c.CliError(f"--distances: expected comma-separated metres, got {text!r:.80}"
+                         ) from None
+    bad = next((v for v in values if not 0 < v <= 1000), None)
+    if bad is not None:
+        raise c.CliError(f"--distances: {bad:g} is not a distance in (0, 1000] m")
+    return values
 
 
 def _simulated_sweep(args):

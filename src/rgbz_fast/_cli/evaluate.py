@@ -92,6 +92,35 @@ def _check_reports(args, config, dataset, out):
     c.check_report_outputs(out, names, args.dataset, "the reports", reads)
 
 
+def _check_dataset_options(args, dataset):
+    """Options that would not apply are refused before anything runs (they had been ignored
+    and still written into the report's header): the raw options without a raw file, the
+    simulation's options on a dataset of raw files, --zoom without the crop figure; and a
+    --table-image given by its file name is the image of that name."""
+    raw = [s for s in dataset if s.is_raw]
+    if args.raw_options is not None and not raw:
+        raise c.CliError("--raw-options: the dataset holds no raw file; the options apply to "
+                         "raw files")
+    if raw and len(raw) == len(dataset):
+        given = [flag for flag, on in (("--noise", args.noise), ("--optics", args.optics),
+                                       ("--bit-depth", args.bit_depth != 11),
+                                       ("--no-linearise", not args.linearise),
+                                       ("--grey", args.grey)) if on]
+        if given:
+            raise c.CliError(f"{given[0]}: applies to the RGB images the evaluation mosaics; "
+                             "the dataset's raw files are measured as they are (their own "
+                             "bit depth, noise and lens)")
+    if args.zoom is not None and args.no_plots:
+        raise c.CliError("--zoom: places the crop figure, which --no-plots leaves out")
+    if args.table_image is not None:
+        names = [s.name for s in dataset]
+        if args.table_image not in names and Path(args.table_image).stem in names:
+            args.table_image = Path(args.table_image).stem
+        if args.table_image not in names:
+            raise c.CliError(f"--table-image: {args.table_image!r} is not an image of the "
+                             f"dataset ({', '.join(names[:8])}{', ...' if len(names) > 8 else ''})")
+
+
 def zoom(text):
     """ROW,COL[,SIZE]: the crop figure's region (SIZE 64 when not given)."""
     import argparse
@@ -149,6 +178,7 @@ def run(args):
                                  **c.limits(args))
     else:
         dataset = sample_dataset()[:args.limit]
+    _check_dataset_options(args, dataset)
     _check_reports(args, config, dataset, out)
     cache = None if args.no_cache else (args.cache or out / "cache")
     _keep_freed_memory()
@@ -173,11 +203,20 @@ def run(args):
             raise c.CliError(f"--zoom: {str(exc).removeprefix('crop_box: ')} of "
                              f"{crop_src.name}") from None
         raise
-    if args.json:
-        print(json.dumps({f"{p}/{m}/{k}": {"mean": v[0], "std": v[1], "n": v[2]}
-                          for (p, m, k), v in res.summary().items()}, indent=1))
+    if args.json:                  # valid JSON: a non-finite mean is the string "inf" or "nan"
+        print(json.dumps({f"{p}/{m}/{k}": {"mean": _json_number(v[0]),
+                                           "std": _json_number(v[1]), "n": v[2]}
+                          for (p, m, k), v in res.summary().items()}, indent=1,
+                         allow_nan=False))
     else:
         print(res.plain_table())
         if not args.quiet:
             print(f"reports: {', '.join(str(f) for f in files)}")
     return 0
+
+
+def _json_number(v):
+    """``v``, or "inf", "-inf", "nan" for a non-finite one (JSON has no such numbers)."""
+    import math
+
+    return v if math.isfinite(v) else ("nan" if math.isnan(v) else ("inf" if v > 0 else "-inf"))

@@ -29,6 +29,10 @@ interrupted run resumes. The default run (two presets, the scikit-image samples,
 no training set, no RGB-D scenes) takes seconds."""
 
 
+#: the smallest side of an RGB-D crop of the study
+RGBD_MIN = 32
+
+
 def _size_or_full(text):
     if text.strip().lower() == "full":
         return None
@@ -84,6 +88,13 @@ def run(args):
     study = c.tool("pattern_study")
     from .._devtools import pattern_report as report
 
+    for flag, dest, needs in (("--rgbd-size", "rgbd_size", "rgbd"),
+                              ("--train-limit", "train_limit", "train")):
+        if getattr(args, needs) is None and getattr(args, dest) != args.parser.get_default(dest):
+            raise c.CliError(f"{flag}: applies with --{needs}")     # it had been ignored
+    if args.rgbd_size is not None and min(args.rgbd_size) < RGBD_MIN:
+        raise c.CliError(f"--rgbd-size: {args.rgbd_size[0]}x{args.rgbd_size[1]} is smaller "
+                         f"than {RGBD_MIN}x{RGBD_MIN}, too small for the ToF ISP's windows")
     out = c.output_folder(args.out)
     c.check_report_outputs(out, ["pattern_study.csv", "pattern_study.json", "pattern_study.md"]
                            + ([] if args.no_plots else ["pattern_study.png"]), args.dataset)

@@ -210,7 +210,14 @@ def parse_generate(spec, name="generate"):
             key, eq, value = part.partition("=")
             if not eq:
                 raise ValueError(f"{name}: expected KEY=VALUES, got {part!r}")
-            items[key.strip().lower()] = value
+            key = key.strip().lower()
+            if key in items:                    # the last one had won, silently
+                raise ValueError(f"{name}: {key} is given twice in {spec!r}; give each field "
+                                 "once (its values comma-separated)")
+            items[key] = value
+        if not items:                           # '' had meant the whole default family
+            raise ValueError(f"{name}: an empty specification; expected KEY=VALUES fields "
+                             f"such as 'block=1,2 period=4,8' (any of {list(GENERATE_KEYS)})")
     bad = sorted(set(items) - set(GENERATE_KEYS))
     if bad:
         raise ValueError(f"{name}: unknown field(s) {bad}; expected some of "
@@ -221,10 +228,10 @@ def parse_generate(spec, name="generate"):
         if key == "density":
             out[key] = _density(v, name)
             continue
-        vals = tuple(s.strip().lower() for s in (v.split(",") if isinstance(v, str) else v))
-        vals = tuple(str(s) for s in vals if str(s))
-        if not vals:
-            raise ValueError(f"{name}: {key} is empty")
+        vals = tuple(str(s).strip().lower() for s in (v.split(",") if isinstance(v, str)
+                                                       else v))
+        if not vals or not all(vals):           # 'block=1,,2': an entry left out
+            raise ValueError(f"{name}: {key} has an empty entry in {v!r}")
         out[key] = tuple(_size(s, key, name) for s in vals) if key in ("block", "period") \
             else vals
     bad = [a for a in out["arrangement"] if a not in ("aligned", "staggered")]
@@ -306,6 +313,10 @@ def generate(spec, phase="GRBG", name="generate"):
                 block, size, note = z_pixel(pattern)
                 out.append(Candidate(label, pattern, "generated", block, size,
                                      canonical_key(pattern), note))
+    if not out and spec["density"] is not None:
+        # the family's layouts all fell outside the density range: said, not dropped unseen
+        notes.append(f"{name}: no layout of the family has a density within "
+                     f"{spec['density'][0]:g}:{spec['density'][1]:g}")
     return out, notes
 
 
