@@ -95,6 +95,19 @@ def test_residual_cyclic_error_below_a_millimetre_on_unseen_walls():
     assert np.sqrt(np.mean(after ** 2)) < 1e-3
 
 
+def test_a_lit_frame_is_refused_as_a_dark_one():
+    """A frame of a lit wall given as dark had its taps' means subtracted as dark offsets:
+    the calibration was written, its fit residual tripled."""
+    sensor = ToFSensor(harmonics=((3, 0.05, 0.4),))
+    ds = list(np.linspace(0.6, 2.6, 8))
+    with pytest.raises(ValueError, match=r"^dark: frame 1 holds modulated light \(its phasors "
+                                         r"carry .* times the power of its noise\)"):
+        calibrate(_sweep(sensor, ds), ds, orders=2,
+                  dark=[_wall(1.0, replace(sensor, optical_power_w=1e-12,
+                                           ambient_irradiance=0.0), seed=0),
+                        _wall(1.5, sensor, seed=1)])
+
+
 def test_dark_frames_remove_the_tap_offsets():
     sensor = ToFSensor(dsnu=50.0, optical_power_w=0.2, quantise=False, shot_noise=False,
                        read_noise=0.0)

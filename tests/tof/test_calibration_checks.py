@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -167,7 +168,10 @@ def _sweep_calibration():
     ds = np.linspace(0.6, 2.6, 12)
     sweep = [simulate_tof(Scene(np.full((8, 8, 3), 0.5), depth=np.full((8, 8), d)), "mask2",
                           sensor, noise=False) for d in ds]
-    return calibrate(sweep, ds, orders=4, dark=sweep[:1])
+    capped = simulate_tof(Scene(np.full((8, 8, 3), 0.5), depth=np.full((8, 8), 1.0)), "mask2",
+                          replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0),
+                          noise=False)
+    return calibrate(sweep, ds, orders=4, dark=[capped])
 
 
 @pytest.fixture(scope="module")

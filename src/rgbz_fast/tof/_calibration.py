@@ -346,13 +346,35 @@ def _dark_offsets(dark, first):
     if not frames:
         raise ValueError("dark: no frames")
     acc = np.zeros((4, first.n_sites))
-    for t in frames:
+    for k, t in enumerate(frames):
         t = as_taps(t, "dark")
         if t.taps.shape[1:] != first.taps.shape[1:] or t.block != first.block:
             raise ValueError(f"dark: taps of shape {t.taps.shape} do not match the sweep's "
                              f"{first.taps.shape}")
-        acc += np.asarray(t.taps, np.float64).mean(axis=0) - t.sensor.black_level
+        taps = np.asarray(t.taps, np.float64)
+        _check_unlit(taps, t.sensor, k)
+        acc += taps.mean(axis=0) - t.sensor.black_level
     return acc / len(frames)
+
+
+#: the largest ratio of a dark frame's phasor power to what its noise alone gives (about 1
+#: for a capped lens; 26 for a lit wall at 2.4 m, 950 at 0.6 m)
+DARK_POWER_MAX = 4.0
+
+
+def _check_unlit(taps, sensor, k):
+    """A ValueError naming ``dark`` when frame ``k`` holds modulated light: its phasors'
+    mean power ``|I + iQ|^2`` is more than :data:`DARK_POWER_MAX` times the ``4 var`` its
+    noise alone gives (a lit frame given as dark had been subtracted as the taps' dark
+    offsets, and the fit's residual tripled). A wall too dim or too far to tell is let
+    through; its light biases the offsets as little as it shows."""
+    i, q = taps[:, 0] - taps[:, 2], taps[:, 3] - taps[:, 1]
+    var = tap_variance(taps.mean(axis=1), sensor)
+    ratio = np.mean(i * i + q * q, axis=1) / np.maximum(np.mean(4 * var, axis=1), 1e-300)
+    if np.any(ratio > DARK_POWER_MAX):
+        raise ValueError(f"dark: frame {k} holds modulated light (its phasors carry "
+                         f"{float(ratio.max()):.3g} times the power of its noise); a "
+                         "lens-capped frame holds none")
 
 
 def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
