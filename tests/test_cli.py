@@ -279,7 +279,8 @@ RAW_FILES = {
     "halide_bayer_small.png": ["--phase", "GRBG", "--black-level", "25", "--white-level",
                                "1023"],
     "openisp_test.RAW": ["--shape", "1080x1920", "--phase", "RGGB", "--black-level", "0",
-                         "--bit-depth-in", "10", "--saturation-level", "1020"],
+                         "--bit-depth-in", "10", "--saturation-level", "1020", "--clip-level",
+                         "auto"],
 }
 
 
@@ -305,7 +306,8 @@ def test_reconstruct_places_a_z_pattern_on_real_raw(name, tmp_path, capsys):
             "--shape": "shape", "--bit-depth-in": "bit_depth_in",
             "--saturation-level": "clip_level"}
     args = RAW_FILES[name]
-    kw = {opts[k]: v for k, v in zip(args[::2], args[1::2])}
+    kw = {opts[k]: v for k, v in zip(args[::2], args[1::2]) if k in opts}
+    auto = "--clip-level" in args                  # the saturation level takes effect
     if "shape" in kw:
         kw["shape"] = tuple(int(v) for v in kw["shape"].split("x"))
     for k in ("black_level", "white_level", "bit_depth_in", "clip_level"):
@@ -314,7 +316,8 @@ def test_reconstruct_places_a_z_pattern_on_real_raw(name, tmp_path, capsys):
     # the command keeps the file's bit depth
     rgbz, want_ref = frameio.to_rgbz(frameio.read_raw(path, bit_depth="input", **kw), "mask1")
     np.testing.assert_array_equal(ref, want_ref)
-    np.testing.assert_array_equal(cfa, rz.reconstruct(rgbz, "sg"))
+    np.testing.assert_array_equal(cfa, rz.reconstruct(rgbz, "sg",
+                                                      clip_level="auto" if auto else None))
     z = rgbz.z_mask
     assert np.array_equal(cfa[~z], ref[~z]) and not np.array_equal(cfa[z], rgbz.data[z])
 

@@ -133,6 +133,16 @@ def run(args):
         raise c.CliError("--pattern: a plain RGB-Z mosaic is read as it is stored; the raw "
                          "options (--phase, --black-level, ...) apply to Bayer raw files, with "
                          "--rgbz-pattern")
+    if args.saturation_level is not None and args.clip_level != "auto":
+        # the level a raw file is read with reaches the reconstruction through auto alone
+        raise c.CliError("--saturation-level: takes effect with --clip-level auto (off takes "
+                         "every pixel as a real value, a number is its own level)")
+    if args.output == "cfa":
+        for flag, value in (("--white-balance", args.white_balance),
+                            ("--colour-matrix", args.colour_matrix)):
+            if value != "auto":                  # the CFA output has neither applied
+                raise c.CliError(f"{flag}: applies to --output srgb; the CFA output is the "
+                                 "raw values")
     params = ReconstructParams(precision=args.precision, domain=args.domain,
                                clip_level=args.clip_level, filters=c.learned_filters(args))
     from_file = raw_options_file(args.raw_options)

@@ -184,6 +184,9 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     if kind != "headerless" and shape is not None:
         raise ValueError(f"shape: only headerless files take a shape; {path.name} is read "
                          f"with the {kind!r} reader")
+    if kind != "headerless" and byteorder != "<":     # it had been ignored
+        raise ValueError(f"byteorder: only headerless files take a byte order; {path.name} "
+                         f"is read with the {kind!r} reader, whose format records its own")
     limits = read_limits(max_pixels, max_bytes)
     given = dict(shape=shape, phase=phase, black_level=black_level, white_level=white_level,
                  bit_depth_in=bit_depth_in)
@@ -222,6 +225,10 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         if float(white.max()) > top_code:
             raise ValueError(f"white_level: {_levels_text(white)} is beyond the largest code "
                              f"of the {data.dtype} data ({top_code})")
+        if given["bit_depth_in"] is not None and float(white.max()) > (1 << bit_depth_in) - 1:
+            raise ValueError(f"white_level: {_levels_text(white)} is beyond the "
+                             f"{bit_depth_in}-bit range of bit_depth_in "
+                             f"[0, {(1 << bit_depth_in) - 1}]")
         if given["bit_depth_in"] is not None and data.size:
             most = int(data.max())
             if most > (1 << int(bit_depth_in)) - 1:
