@@ -68,6 +68,34 @@ def _t975(df):
     return float(stdtrit(df, 0.975))
 
 
+#: the strings a non-finite float is written as in results.json (JSON has no such numbers)
+_NONFINITE = {"inf": math.inf, "-inf": -math.inf, "nan": math.nan}
+
+
+def _json_safe(obj):
+    """``obj`` with every non-finite float replaced by "inf", "-inf" or "nan" (dicts, lists
+    and tuples walked), for ``json.dumps(..., allow_nan=False)``."""
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return "nan" if math.isnan(obj) else ("inf" if obj > 0 else "-inf")
+    if isinstance(obj, dict):
+        return {k: _json_safe(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_json_safe(v) for v in obj]
+    return obj
+
+
+def _json_float(obj):
+    """The inverse of :func:`_json_safe` for a row's value: "inf", "-inf", "nan" (and the
+    older files' Infinity/NaN, already floats) as floats; anything else unchanged."""
+    return _NONFINITE[obj] if isinstance(obj, str) and obj in _NONFINITE else obj
+
+
+def _names(items):
+    """"a", "a and b", "a, b and c"."""
+    items = list(items)
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
 @dataclass
 class Results:
     """A tidy table: one row per image, pattern, method and metric.
@@ -120,6 +148,99 @@ class Results:
                     out[(p, m, k)] = (float(v.mean()) if v.size else math.nan,
                                       float(v.std(ddof=1)) if v.size > 1 else 0.0, int(v.size))
         return out
+
+    def left_out(self):
+        """{(pattern, method, metric): (n, total, kinds)} of the cells whose mean leaves out
+        values: ``n`` finite values of the cell's ``total``, ``kinds`` the sorted set of the
+        left-out values ("+inf", "-inf", "nan"). A PSNR is +inf where the test image equals
+        its reference; :meth:`summary` averages the finite values only."""
+        out = {}
+        for p in self.config.patterns:
+            for m in self.config.methods:
+                if not self.config.applies(p, m):
+                    continue
+                for k in self.config.metrics:
+                    v = self.values(p, m, k)
+                    bad = v[~np.isfinite(v)]
+                    if bad.size:
+                        kinds = {"nan" if np.isnan(x) else ("+inf" if x > 0 else "-inf")
+                                 for x in bad}
+                        out[(p, m, k)] = (int(v.size - bad.size), int(v.size),
+                                          tuple(sorted(kinds)))
+        return out
+
+    def nonfinite_note(self, metrics=None):
+        """One line saying which means leave out non-finite values, and why ("" when none).
+
+        Cells alike (the same metric, counts and kind of values) are grouped: their
+        methods, then the patterns on which those methods are alike. ``metrics`` restricts
+        the line to those metrics.
+        """
+        cells = {c: v for c, v in self.left_out().items() if metrics is None or c[2] in metrics}
+        if not cells:
+            return ""
+        only_inf = all(v[2] == ("+inf",) for v in cells.values())
+        head = ("Means leave out infinite values (a test image equal to its reference: "
+                "PSNR +inf): " if only_inf else
+                "Means leave out non-finite values (+inf: a test image equal to its reference; "
+                "-inf or NaN: a metric that could not be computed): ")
+        groups = {}                  # (metric, n, total, kinds) -> {pattern: [methods]}
+        for k in self.config.metrics:
+            for p in self.config.patterns:
+                for m in self.config.methods:
+                    if (p, m, k) in cells:
+                        n, total, kinds = cells[(p, m, k)]
+                        groups.setdefault((k, n, total, kinds), {}).setdefault(p, []).append(m)
+        parts = []
+        for (k, n, total, kinds), per_pattern in groups.items():
+            by_methods = {}          # the patterns on which the same methods are alike
+            for p, ms in per_pattern.items():
+                by_methods.setdefault(tuple(ms), []).append(p)
+            for ms, ps in by_methods.items():
+                what = (f"{METRIC_LABELS[k].split(' (')[0]} of "
+                        f"{_names(METHOD_LABELS.get(m, m) for m in ms)} on {_names(ps)}")
+                if n == 0 and kinds == ("+inf",):
+                    parts.append(f"{what}: all {total} images are +inf")
+                elif n == 0:
+                    parts.append(f"{what}: no finite value in {total} images "
+                                 f"({', '.join(kinds)})")
+                else:
+                    parts.append(f"{what} over {n} of {total} images"
+                                 + ("" if only_inf else f" ({', '.join(kinds)} left out)"))
+        return head + "; ".join(parts) + "."
+
+    def _paired_note(self, base, others):
+        """The line under the paired differences: the cells whose difference leaves out
+        images on which either method is not finite ("" when none)."""
+        groups = {}                  # (metric, n, total) -> {pattern: [methods]}
+        for k in self.config.metrics:
+            for p in self.config.patterns:
+                for m in others:
+                    if not (self.config.applies(p, m) and self.config.applies(p, base)):
+                        continue
+                    a = {r["image"] for r in self.rows if r["pattern"] == p
+                         and r["method"] == m and r["metric"] == k}
+                    b = {r["image"] for r in self.rows if r["pattern"] == p
+                         and r["method"] == base and r["metric"] == k}
+                    total = len(a & b)
+                    n = self.paired(p, m, k, base)[0].size
+                    if n < total:
+                        groups.setdefault((k, n, total), {}).setdefault(p, []).append(m)
+        parts = []
+        for (k, n, total), per_pattern in groups.items():
+            by_methods = {}
+            for p, ms in per_pattern.items():
+                by_methods.setdefault(tuple(ms), []).append(p)
+            for ms, ps in by_methods.items():
+                what = (f"Δ {METRIC_LABELS[k].split(' (')[0]} of "
+                        f"{_names(METHOD_LABELS.get(m, m) for m in ms)} on {_names(ps)}")
+                parts.append(f"{what}: none of {total} images" if n == 0 else
+                             f"{what} over {n} of {total} images")
+        if not parts:
+            return ""
+        return ("Differences leave out the images on which either method is not finite (a "
+                "PSNR is +inf where a test image equals its reference): " + "; ".join(parts)
+                + ".")
 
     def images(self):
         return list(dict.fromkeys(r["image"] for r in self.rows))
@@ -205,15 +326,57 @@ class Results:
         return buf.getvalue()
 
     def to_json(self):
-        return json.dumps({"config": asdict(self.config), "rows": self.rows,
-                           "skipped": [list(t) for t in self.skipped],
-                           "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
-                                              in self.config.not_applicable().items()]},
-                          indent=1, default=str)
+        """The results as strict JSON: a non-finite value (a PSNR of +inf) is written as the
+        string "inf", "-inf" or "nan" (:meth:`from_json` reads both these and the
+        ``Infinity``/``NaN`` of older files)."""
+        return json.dumps(_json_safe(
+            {"config": asdict(self.config), "rows": self.rows,
+             "skipped": [list(t) for t in self.skipped],
+             "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
+                                in self.config.not_applicable().items()]}),
+            indent=1, default=str, allow_nan=False)
+
+    @classmethod
+    def from_json(cls, text):
+        """The :class:`Results` of :meth:`to_json`'s text (results.json).
+
+        A row's value may be a number, the string "inf", "-inf" or "nan", or the
+        ``Infinity``/``NaN`` of the files older versions wrote.
+
+        Examples
+        --------
+        >>> from rgbz_fast.evaluation import EvalConfig, Results
+        >>> rows = [{"image": "a", "pattern": "mask1", "method": "bilinear",
+        ...          "metric": "cpsnr", "value": float("inf")}]
+        >>> res = Results(rows, EvalConfig(methods=("bilinear",), metrics=("cpsnr",)))
+        >>> '"value": "inf"' in res.to_json()
+        True
+        >>> Results.from_json(res.to_json()).rows[0]["value"]
+        inf
+        """
+        from ..simulation import Optics
+        from ._config import EvalConfig
+
+        if isinstance(text, (bytes, bytearray)):
+            text = text.decode("utf-8")
+        data = json.loads(text)
+        if not isinstance(data, dict) or not isinstance(data.get("rows"), list):
+            raise ValueError("results.json: expected an object with a list of rows")
+        rows = [{**r, "value": _json_float(r["value"])} if isinstance(r, dict) and "value" in r
+                else r for r in data["rows"]]
+        config = dict(data.get("config") or {})
+        if isinstance(config.get("params"), dict):
+            config["params"] = {k: _json_float(v) for k, v in config["params"].items()}
+        if isinstance(config.get("optics"), dict):
+            config["optics"] = Optics(**{k: _json_float(v) for k, v in config["optics"].items()})
+        skipped = [tuple(t) for t in data.get("skipped", [])]
+        return cls(rows, EvalConfig(**config), skipped=skipped)
 
     def summary_markdown(self, digits=None):
         """Per pattern: a table of mean ± std per method and metric, best per column in bold."""
         s = self.summary()
+        all_inf = {c for c, (n, _, kinds) in self.left_out().items() if n == 0
+                   and kinds == ("+inf",)}
         fmt = {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
         if digits is not None:
             if not isinstance(digits, dict):
@@ -238,15 +401,22 @@ class Results:
                 finite = [x for x in means if np.isfinite(x)]
                 if finite:
                     best[k] = max(finite) if HIGHER_IS_BETTER[k] else min(finite)
+                if HIGHER_IS_BETTER[k] and any((p, m, k) in all_inf for m in self.config.methods):
+                    best[k] = math.inf            # a +inf PSNR on every image is the best
             for m in self.config.methods:
                 cells = []
                 for k in self.config.metrics:
                     mean, std, _ = s[(p, m, k)]
                     cell = f"{mean:.{fmt[k]}f} ± {std:.{fmt[k]}f}"
+                    if (p, m, k) in all_inf:      # a perfect image everywhere: no mean to show
+                        cell, mean = "inf", math.inf
                     cells.append("n/a" if not self.config.applies(p, m) else
                                  f"**{cell}**" if best.get(k) == mean else cell)
                 lines.append(f"| {self._label(p, m)} | " + " | ".join(cells) + " |")
             lines.append("")
+        note = self.nonfinite_note()
+        if note:
+            lines += [note, ""]
         if self.config.not_applicable():
             lines += [self.notes(), ""]
         base = self.baseline()
@@ -265,11 +435,16 @@ class Results:
                         continue
                     cells = []
                     for k in self.config.metrics:
-                        _, mean, lo, hi = self.paired(p, m, k, base)
+                        diffs, mean, lo, hi = self.paired(p, m, k, base)
                         f = fmt[k]
-                        cells.append(f"{mean:+.{f}f} [{lo:+.{f}f}, {hi:+.{f}f}]")
+                        # no image on which both are finite: no difference to show
+                        cells.append("—" if diffs.size == 0 else
+                                     f"{mean:+.{f}f} [{lo:+.{f}f}, {hi:+.{f}f}]")
                     lines.append(f"| {self._label(p, m)} | " + " | ".join(cells) + " |")
                 lines.append("")
+            note = self._paired_note(base, others)
+            if note:
+                lines += [note, ""]
         return "\n".join(lines)
 
     def image_markdown(self, image):
@@ -300,19 +475,25 @@ class Results:
     def plain_table(self):
         """The summary as aligned plain text for the terminal."""
         s = self.summary()
+        all_inf = {c for c, (n, _, kinds) in self.left_out().items() if n == 0
+                   and kinds == ("+inf",)}
         w = max(len(METHOD_LABELS.get(m, m)) for m in self.config.methods) + 2
         out = []
         for p in self.config.patterns:
             out.append(f"{p}  ({len(self.images())} images; {self.config.label()})")
             out.append(" " * w + "".join(f"{METRIC_LABELS[k]:>20}" for k in self.config.metrics))
             for m in self.config.methods:
-                cells = "".join(f"{s[(p, m, k)][0]:>12.4f} ±{s[(p, m, k)][1]:<7.3f}"
+                cells = "".join(f"{'inf':>12}{'':8}" if (p, m, k) in all_inf else
+                                f"{s[(p, m, k)][0]:>12.4f} ±{s[(p, m, k)][1]:<7.3f}"
                                 if self.config.applies(p, m) else f"{'n/a':>12}{'':8}"
                                 for k in self.config.metrics)
                 out.append(f"{METHOD_LABELS.get(m, m):<{w}}{cells}")
                 if self.ir_estimated(p, m):
                     out.append(" " * w + self._label(p, m)[len(METHOD_LABELS.get(m, m)) + 1:])
             out.append("")
+        note = self.nonfinite_note()
+        if note:
+            out += [note, ""]
         if self.config.not_applicable():
             out += [self.notes(), ""]
         return "\n".join(out)

@@ -1,0 +1,125 @@
+"""Non-finite values in Results: the summaries say which means leave them out, and
+results.json stays strict JSON (a non-finite value written as "inf", "-inf" or "nan")."""
+
+import json
+import math
+
+import pytest
+
+from rgbz_fast.evaluation import EvalConfig, Results
+
+INF = math.inf
+CONFIG = EvalConfig(patterns=("mask1",), methods=("bilinear", "sg"), metrics=("cpsnr", "ssim"))
+NOTE_HEAD = "Means leave out infinite values (a test image equal to its reference: PSNR +inf): "
+
+
+def _results(sg_cpsnr_random=21.0):
+    """A flat grey image (CPSNR +inf: the test image equals the reference) and a random one."""
+    values = (("grey", "bilinear", "cpsnr", INF), ("grey", "sg", "cpsnr", INF),
+              ("rand", "bilinear", "cpsnr", 20.0), ("rand", "sg", "cpsnr", sg_cpsnr_random),
+              ("grey", "bilinear", "ssim", 1.0), ("grey", "sg", "ssim", 1.0),
+              ("rand", "bilinear", "ssim", 0.5), ("rand", "sg", "ssim", 0.6))
+    rows = [{"image": i, "pattern": "mask1", "method": m, "metric": k, "value": v}
+            for i, m, k, v in values]
+    return Results(rows, CONFIG)
+
+
+def _fail(constant):
+    raise AssertionError(f"not strict JSON: {constant}")
+
+
+def test_partially_infinite_cells_are_noted():
+    res = _results()
+    note = NOTE_HEAD + "CPSNR of bilinear and SG on mask1 over 1 of 2 images."
+    assert res.nonfinite_note() == note
+    md = res.summary_markdown()
+    assert md.startswith("Mean ± std over 2 image(s);")
+    assert "| bilinear | 20.00 ± 0.00 | 0.7500 ± 0.3536 |" in md     # numbers unchanged
+    assert md.count(note) == 1
+    # under the means table, before the paired differences
+    assert md.index("| SG |") < md.index(note) < md.index("Paired differences")
+    assert ("Differences leave out the images on which either method is not finite (a PSNR "
+            "is +inf where a test image equals its reference): Δ CPSNR of SG on mask1 over "
+            "1 of 2 images.") in md
+    text = res.plain_table()
+    assert text.count(note) == 1
+    assert "20.0000 ±0.000" in text and "nan" not in text
+
+
+def test_all_infinite_cell_shows_inf_and_is_noted():
+    rows = [dict(r, value=INF) if r["metric"] == "cpsnr" and r["method"] == "sg" else r
+            for r in _results().rows]
+    res = Results(rows, CONFIG)
+    note = (NOTE_HEAD + "CPSNR of bilinear on mask1 over 1 of 2 images; CPSNR of SG on mask1: "
+            "all 2 images are +inf.")
+    md = res.summary_markdown()
+    assert "nan" not in md
+    assert "| SG | **inf** | **0.8000 ± 0.2828** |" in md          # +inf everywhere: the best
+    assert "| bilinear | 20.00 ± 0.00 | 0.7500 ± 0.3536 |" in md
+    assert md.count(note) == 1
+    assert "Δ CPSNR of SG on mask1: none of 2 images." in md
+    assert "| SG | — |" in md
+    text = res.plain_table()
+    assert "nan" not in text and text.count(note) == 1
+    sg = next(line for line in text.splitlines() if line.startswith("SG"))
+    assert sg.split()[1] == "inf"
+
+
+def test_finite_results_have_no_note():
+    rows = [dict(r, value=30.0) if r["value"] == INF else r for r in _results().rows]
+    res = Results(rows, CONFIG)
+    assert res.nonfinite_note() == "" and res.left_out() == {}
+    assert "leave out" not in res.summary_markdown() and "leave out" not in res.plain_table()
+
+
+def test_nonfinite_kinds_are_named():
+    rows = _results().rows
+    rows[3] = dict(rows[3], value=math.nan)                       # SG's rand CPSNR
+    note = Results(rows, CONFIG).nonfinite_note()
+    assert note.startswith("Means leave out non-finite values")
+    assert "CPSNR of bilinear on mask1 over 1 of 2 images (+inf left out)" in note
+    assert "CPSNR of SG on mask1: no finite value in 2 images (+inf, nan)" in note
+
+
+@pytest.mark.parametrize("value", [INF, -INF, math.nan])
+def test_json_is_strict_and_round_trips(value):
+    res = _results()
+    res.rows[3]["value"] = value
+    text = res.to_json()
+    data = json.loads(text, parse_constant=_fail)
+    assert data["rows"][0]["value"] == "inf"
+    assert data["rows"][3]["value"] == {INF: "inf", -INF: "-inf"}.get(value, "nan")
+    back = Results.from_json(text)
+    assert back.config == res.config
+    got = [r["value"] for r in back.rows]
+    want = [r["value"] for r in res.rows]
+    assert all(g == w or (math.isnan(g) and math.isnan(w)) for g, w in zip(got, want))
+    assert back.summary_markdown() == res.summary_markdown()
+
+
+def test_from_json_reads_older_files():
+    """Files written before: Infinity and NaN (json.dumps' default) are read too."""
+    res = _results(sg_cpsnr_random=math.nan)
+    old = json.dumps({"config": json.loads(res.to_json())["config"], "rows": res.rows,
+                      "skipped": [], "not_applicable": []}, indent=1)
+    assert "Infinity" in old and "NaN" in old
+    back = Results.from_json(old)
+    assert back.rows[0]["value"] == INF and math.isnan(back.rows[3]["value"])
+    assert Results.from_json(old.encode()).rows[2]["value"] == 20.0
+
+
+def test_from_json_keeps_skipped_and_optics():
+    from rgbz_fast.simulation import Optics
+
+    cfg = EvalConfig(patterns=("mask1",), methods=("bilinear",), metrics=("cpsnr",),
+                     optics=Optics())
+    res = Results([{"image": "a", "pattern": "mask1", "method": "bilinear", "metric": "cpsnr",
+                    "value": INF}], cfg, skipped=[("b", "unreadable")])
+    back = Results.from_json(res.to_json())
+    assert back.config == cfg and back.skipped == [("b", "unreadable")]
+    assert back.rows == res.rows
+
+
+def test_from_json_refuses_other_text():
+    with pytest.raises(ValueError, match="rows"):
+        Results.from_json("[1, 2]")
