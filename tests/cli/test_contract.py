@@ -373,9 +373,11 @@ CLI_ROWS = [
       "--out: /proc/rgbz-out: No such file or directory"),
     C("cli.calibrate-shape-huge", ("calibrate", "--simulate", "--shape", "100000x100000",
                                    "--out", "{d}/cal_huge.npz"),
-      "--shape: 100000x100000 is 1e+04 megapixels, more than the limit of 200 megapixels"),
+      "--shape: 100000x100000 is 1e+04 megapixels, more than the limit of 200 megapixels "
+      "(--max-pixels or RGBZ_FAST_MAX_PIXELS)"),
     C("cli.opcount-shape-huge", ("opcount", "--shape", "100000x100000"),
-      "--shape: 100000x100000 is 1e+04 megapixels"),
+      "--shape: 100000x100000 is 1e+04 megapixels, more than the limit of 200 megapixels "
+      "(RGBZ_FAST_MAX_PIXELS)"),
     C("cli.reconstruct-frame-pattern", ("reconstruct", "{d}/ok.npz", "--pattern", "bayer"),
       "pattern: {d}/ok.npz records its own pattern 'mask1'; --pattern 'bayer' applies to a "
       "plain TIFF/PNG mosaic"),

@@ -253,9 +253,11 @@ def made_shape(args, shape):
     limit = read_limits(getattr(args, "max_pixels", None))[0]
     rows, cols = shape
     if rows * cols > limit:
+        # raised with --max-pixels where the command has the option, else the variable only
+        how = f"--max-pixels or {MAX_PIXELS_ENV}" if hasattr(args, "max_pixels") \
+            else MAX_PIXELS_ENV
         raise CliError(f"--shape: {rows}x{cols} is {rows * cols / 1e6:.4g} megapixels, more "
-                       f"than the limit of {limit / 1e6:.4g} megapixels (--max-pixels or "
-                       f"{MAX_PIXELS_ENV})")
+                       f"than the limit of {limit / 1e6:.4g} megapixels ({how})")
     return tuple(shape)
 
 
