@@ -210,6 +210,16 @@ def as_array(value, name, **kwargs):
             from None
 
 
+def real_array(value, name):
+    """An own float64 copy of an array of real numbers; booleans, text, complex numbers and
+    objects are a TypeError naming ``name`` (NumPy would read True as 1, parse text and drop
+    an imaginary part)."""
+    a = as_array(value, name)
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"{name}: expected real numbers, got dtype {a.dtype}")
+    return np.array(a, np.float64)
+
+
 def as_list(value, name, what="a sequence"):
     """``list(value)`` of a sequence (not a string, bytes, a mapping or a 0-d array), or a
     TypeError naming ``name``."""

@@ -438,14 +438,14 @@ def learned_filters(args):
     if args.filters is None:
         return None
     methods = getattr(args, "methods", None) or [getattr(args, "method", None)]
-    if not {"learned", "z_guided"} & set(methods):
+    wanted = {"learned", "z_guided"} & set(methods)
+    if not wanted:
         raise CliError(f"--filters: {', '.join(methods)} takes no filters; they are the "
                        "learned and z_guided methods' (--method learned or z_guided)")
     loaded = check_any_filters(tuple(args.filters), "filters", max_bytes=args.max_bytes)
     from ..reconstruction import LearnedFilters
 
     kinds = {"learned" if isinstance(f, LearnedFilters) else "z_guided" for f in loaded}
-    wanted = {"learned", "z_guided"} & set(methods)
     if not kinds & wanted:                 # the method's shipped filters had run in their place
         raise CliError(f"--filters: {', '.join(map(str, args.filters))} hold "
                        f"{' and '.join(sorted(kinds))} filters; --method "

@@ -204,19 +204,13 @@ def run(args):
                              f"{crop_src.name}") from None
         raise
     if args.json:                  # valid JSON: a non-finite mean is the string "inf" or "nan"
-        print(json.dumps({f"{p}/{m}/{k}": {"mean": _json_number(v[0]),
-                                           "std": _json_number(v[1]), "n": v[2]}
-                          for (p, m, k), v in res.summary().items()}, indent=1,
+        from ..evaluation._results import _json_safe
+
+        print(json.dumps(_json_safe({f"{p}/{m}/{k}": {"mean": v[0], "std": v[1], "n": v[2]}
+                                     for (p, m, k), v in res.summary().items()}), indent=1,
                          allow_nan=False))
     else:
         print(res.plain_table())
         if not args.quiet:
             print(f"reports: {', '.join(str(f) for f in files)}")
     return 0
-
-
-def _json_number(v):
-    """``v``, or "inf", "-inf", "nan" for a non-finite one (JSON has no such numbers)."""
-    import math
-
-    return v if math.isfinite(v) else ("nan" if math.isnan(v) else ("inf" if v > 0 else "-inf"))

@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import _PRESETS, Pattern, Z, bayer, get_pattern
-from .._validate import as_array, check_bit_depth, check_int
+from .._validate import check_bit_depth, check_int, real_array
 from ..io import atomic_write, read_npz
 from ._learned_hash import N_ANGLES, learned_geometry, mirror_octants
 from ._learned_train import train
@@ -118,12 +118,15 @@ class LearnedFilters(FilterIdentity):
         self.geometry = learned_geometry(self.pattern, self.radius, self.hash_radius)
         n_ph = len(self.geometry)
         n_taps = max(len(g["taps"]) for g in self.geometry)
-        s_thr = np.array(_reals(strength_thresholds, "strength_thresholds"), ndmin=2)
-        c_thr = np.array(_reals(coherence_thresholds, "coherence_thresholds"), ndmin=2)
+        s_thr = np.array(real_array(strength_thresholds, "filters: strength_thresholds"),
+                         ndmin=2)
+        c_thr = np.array(real_array(coherence_thresholds, "filters: coherence_thresholds"),
+                         ndmin=2)
         k_thr = (np.zeros((n_ph, 0)) if spread_thresholds is None
-                 else np.array(_reals(spread_thresholds, "spread_thresholds"), ndmin=2))
+                 else np.array(real_array(spread_thresholds, "filters: spread_thresholds"),
+                               ndmin=2))
         # kept at float32 precision, as the file stores them: a fit and its file are equal
-        w = _reals(weights, "weights").astype(np.float32).astype(np.float64)
+        w = real_array(weights, "filters: weights").astype(np.float32).astype(np.float64)
         if any(a.shape[0] != n_ph for a in (s_thr, c_thr, k_thr)):
             raise ValueError(f"filters: expected thresholds for {n_ph} phases, got "
                              f"{s_thr.shape[0]}, {c_thr.shape[0]} and {k_thr.shape[0]}")
@@ -288,15 +291,6 @@ class LearnedFilters(FilterIdentity):
         return cls(pattern, int(z["bit_depth"]), z["weights"],
                    z["strength_thresholds"], z["coherence_thresholds"], spread,
                    radius=int(z["radius"]), hash_radius=int(z["hash_radius"]), meta=meta)
-
-
-def _reals(value, name):
-    """``value`` as float64, refusing text, booleans and complex numbers (NumPy parsed text,
-    read True as 1 and dropped an imaginary part with only a ComplexWarning)."""
-    a = as_array(value, f"filters: {name}")
-    if a.dtype.kind not in "iuf":
-        raise TypeError(f"filters: {name}: expected real numbers, got dtype {a.dtype}")
-    return np.array(a, np.float64)
 
 
 def _preset_or_none(label):

@@ -52,8 +52,8 @@ import numpy as np
 
 from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
-from .._validate import (as_array, as_list, check_block, check_frequencies, check_image,
-                         check_int, check_meta, check_path, check_sites)
+from .._validate import (as_list, check_block, check_frequencies, check_image, check_int,
+                         check_meta, check_path, check_sites, real_array)
 from ..io import atomic_write, read_npz
 from ..io._npz import npz_bytes
 from ._noise import tap_variance
@@ -114,11 +114,11 @@ class ToFCalibration:
         f = check_frequencies(self.frequencies, "frequencies", unique=True)
         rows, cols, span = check_sites(self.sites, "sites", span=True)
         n = rows.size
-        off = _real_array(self.offsets, "offsets")
+        off = real_array(self.offsets, "offsets")
         if off.shape != (f.size, n):
             raise ValueError(f"offsets: expected shape ({f.size}, {n}) (frequencies x sites), "
                              f"got {off.shape}")
-        coef = _real_array(self.coefficients, "coefficients")
+        coef = real_array(self.coefficients, "coefficients")
         if coef.ndim != 3 or coef.shape[0] != f.size or coef.shape[2] != 2:
             raise ValueError(f"coefficients: expected shape ({f.size}, K, 2), got {coef.shape}")
         for name, a in (("offsets", off), ("coefficients", coef)):
@@ -126,7 +126,7 @@ class ToFCalibration:
                 raise ValueError(f"{name}: holds NaN or infinite values")
         dark = None
         if self.dark is not None:
-            dark = _real_array(self.dark, "dark")
+            dark = real_array(self.dark, "dark")
             if dark.shape != (4, n) or not np.all(np.isfinite(dark)):
                 raise ValueError(f"dark: expected finite values of shape (4, {n}), got "
                                  f"{dark.shape}")
@@ -293,14 +293,6 @@ def _jsonable(meta):
                     isinstance(v, np.ndarray) or all(isinstance(x, str) for x in v))):
                 out[k] = a.tolist()
     return out
-
-
-def _real_array(value, name):
-    """An array of real numbers (no bool, text, complex or objects) as an own float64 copy."""
-    a = as_array(value, name)
-    if a.dtype.kind not in "iuf":
-        raise TypeError(f"{name}: expected real numbers, got dtype {a.dtype}")
-    return np.array(a, np.float64)
 
 
 def _frame_shape(shape, block):
