@@ -372,3 +372,44 @@ def test_frames_are_the_mosaics_of_the_image(pattern, bit_depth):
     assert frame.pattern == want.pattern and frame.bit_depth == bit_depth
     assert np.array_equal(reference, rz.mosaic(lin, want.pattern.bayer_pattern(),
                                                bit_depth).data)
+
+
+# ------------------------------------------------------------------ raw files in the header
+
+def test_the_header_says_which_images_were_raw_files():
+    """The mosaic's noise and bit depth describe the RGB images alone: a raw file is measured
+    at its own bit depth (a 14-bit DNG's table had said '11-bit')."""
+    cfg = ev.EvalConfig(patterns=("mask1",), methods=("bi",), metrics=("cpsnr",))
+    rows = [{"image": n, "pattern": "mask1", "method": "bi", "metric": "cpsnr", "value": 30.0}
+            for n in ("chart", "kodim01", "kodim02")]
+    mosaic = "noise-free, 11-bit, demosaic"
+    assert ev.Results(rows, cfg).label().startswith(mosaic)
+    mixed = ev.Results(rows, cfg, raw_images=["chart"])
+    assert mixed.label().startswith("2 RGB images (noise-free, 11-bit) and 1 raw file at "
+                                    "their own bit depth, noise and lens, demosaic")
+    assert "2 RGB images (noise-free, 11-bit) and 1 raw file" in mixed.summary_markdown()
+    assert "and 1 raw file" in mixed.plain_table()
+    raw = ev.Results(rows[:1], cfg, raw_images=["chart", "skipped_one"])
+    assert raw.label().startswith("raw files at their own bit depth, noise and lens, demosaic")
+    back = ev.Results.from_json(mixed.to_json())
+    assert back.raw_images == ["chart"] and back.label() == mixed.label()
+    with pytest.raises(TypeError, match="raw_images"):
+        ev.Results(rows, cfg, raw_images=[1])
+
+
+def test_evaluate_lists_the_raw_files_it_read(tmp_path):
+    """evaluate() records which sources were raw: a bare Bayer PNG read through raw_options."""
+    pytest.importorskip("PIL")
+    from PIL import Image
+
+    rng = np.random.default_rng(3)
+    bayer = (rng.random((64, 64)) * 4000 + 64).astype(np.uint16)
+    Image.fromarray(bayer).save(tmp_path / "b.png")
+    Image.fromarray((rng.random((64, 64, 3)) * 255).astype(np.uint8)).save(tmp_path / "c.png")
+    opts = (("phase", "RGGB"), ("black_level", 64), ("white_level", 4095), ("bit_depth_in", 12))
+    srcs = [rio.ImageSource("b", str(tmp_path / "b.png"), raw_options=opts, raw=True),
+            rio.ImageSource("c", str(tmp_path / "c.png"))]
+    res = ev.evaluate(srcs, ev.EvalConfig(patterns=("mask1",), methods=("bi",), metrics=("cpsnr",),
+                                    crop=4))
+    assert res.raw_images == ["b"]
+    assert res.label().startswith("1 RGB image (noise-free, 11-bit) and 1 raw file")

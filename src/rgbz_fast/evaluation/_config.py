@@ -236,8 +236,12 @@ class EvalConfig:
         blob = json.dumps(d, sort_keys=True, default=str).encode()
         return hashlib.sha1(blob).hexdigest()[:16]
 
-    def label(self):
-        """One line saying what the numbers are (noise, bits, demosaic, crop, precision...)."""
+    def label(self, raw_files=0, rgb_images=0):
+        """One line saying what the numbers are (noise, bits, demosaic, crop, precision...).
+
+        ``raw_files``: how many of the images were camera raw or bare Bayer files, measured at
+        their own bit depth, noise and lens; ``rgb_images``: how many were not (the mosaic's
+        noise and bit depth apply to those alone)."""
         clip = self.params.clip_level
         if clip is None:
             clip = ""
@@ -261,7 +265,13 @@ class EvalConfig:
                 f"{f.pattern.name} {f.meta.get('training_set', '?')} {f.digest[:8]}"
                 for f in self.params.filters))
         protocol = "" if self.linearise else " sRGB values (not linearised)"
-        return (f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}, "
+        inputs = f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}"
+        if raw_files:
+            own = "at their own bit depth, noise and lens"
+            inputs = (f"{rgb_images} RGB image{'s' if rgb_images > 1 else ''} ({inputs}) and "
+                      f"{raw_files} raw file{'s' if raw_files > 1 else ''} {own}"
+                      if rgb_images else f"raw files {own}")
+        return (f"{inputs}, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))
 

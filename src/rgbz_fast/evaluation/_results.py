@@ -101,12 +101,15 @@ class Results:
     """A tidy table: one row per image, pattern, method and metric.
 
     ``skipped`` lists the ``(image, reason)`` of the images an evaluation with
-    ``skip_bad=True`` left out.
+    ``skip_bad=True`` left out; ``raw_images`` the names of the images read from camera raw
+    or bare Bayer files, measured at their own bit depth, noise and lens rather than through
+    the configuration's mosaic (the reports' header says so).
     """
 
     rows: list
     config: EvalConfig = field(default_factory=EvalConfig)
     skipped: list = field(default_factory=list)
+    raw_images: list = field(default_factory=list)
 
     def __post_init__(self):
         self.config = merge_params(EvalConfig, self.config, name="config")
@@ -118,6 +121,18 @@ class Results:
                 raise TypeError(f"rows: expected dicts of {', '.join(sorted(_ROW_KEYS))} "
                                 f"(value a number), got {r!r:.80}")
         self.skipped = as_list(self.skipped, "skipped", "a list of (image, reason)")
+        self.raw_images = as_list(self.raw_images, "raw_images", "a list of image names")
+        if not all(isinstance(n, str) for n in self.raw_images):
+            raise TypeError("raw_images: expected a list of image names (strings)")
+
+    def label(self):
+        """:meth:`EvalConfig.label`, with what the images were: the mosaic's settings describe
+        the RGB images alone, a raw file is measured as it is."""
+        images = set(self.images())
+        raw = set(self.raw_images) & images
+        if not raw:
+            return self.config.label()
+        return self.config.label(raw_files=len(raw), rgb_images=len(images - raw))
 
     def __len__(self):
         return len(self.rows)
@@ -331,7 +346,7 @@ class Results:
         ``Infinity``/``NaN`` of older files)."""
         return json.dumps(_json_safe(
             {"config": asdict(self.config), "rows": self.rows,
-             "skipped": [list(t) for t in self.skipped],
+             "skipped": [list(t) for t in self.skipped], "raw_images": list(self.raw_images),
              "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
                                 in self.config.not_applicable().items()]}),
             indent=1, default=str, allow_nan=False)
@@ -370,7 +385,8 @@ class Results:
         if isinstance(config.get("optics"), dict):
             config["optics"] = Optics(**{k: _json_float(v) for k, v in config["optics"].items()})
         skipped = [tuple(t) for t in data.get("skipped", [])]
-        return cls(rows, EvalConfig(**config), skipped=skipped)
+        return cls(rows, EvalConfig(**config), skipped=skipped,
+                   raw_images=list(data.get("raw_images", [])))
 
     def summary_markdown(self, digits=None):
         """Per pattern: a table of mean ± std per method and metric, best per column in bold."""
@@ -386,7 +402,7 @@ class Results:
                 self._known(k, "digits", ALL_METRICS)
                 check_int(v, f"digits[{k!r}]", lo=0, hi=17)
             fmt = {**fmt, **digits}
-        lines = [f"Mean ± std over {len(self.images())} image(s); {self.config.label()}.", ""]
+        lines = [f"Mean ± std over {len(self.images())} image(s); {self.label()}.", ""]
         if self.skipped:
             lines[-1:] = [f"Skipped {len(self.skipped)} image(s) that could not be evaluated: "
                           + "; ".join(f"{n} ({why})" for n, why in self.skipped) + ".", ""]
@@ -480,7 +496,7 @@ class Results:
         w = max(len(METHOD_LABELS.get(m, m)) for m in self.config.methods) + 2
         out = []
         for p in self.config.patterns:
-            out.append(f"{p}  ({len(self.images())} images; {self.config.label()})")
+            out.append(f"{p}  ({len(self.images())} images; {self.label()})")
             out.append(" " * w + "".join(f"{METRIC_LABELS[k]:>20}" for k in self.config.metrics))
             for m in self.config.methods:
                 cells = "".join(f"{'inf':>12}{'':8}" if (p, m, k) in all_inf else

@@ -493,7 +493,8 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
         bar.close()
     skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
-    return Results(rows, config, skipped=skipped)
+    return Results(rows, config, skipped=skipped,
+                   raw_images=[s.name for s in dataset if s.is_raw])
 
 
 def _run_threads(tasks, nthreads, bar, results):
