@@ -296,6 +296,11 @@ CLI_ROWS = [
       "--dark: expected the lens-capped frame files after it"),
     C("cli.calibrate-simulate-distances", ("calibrate", "--simulate", "--distances", "1,2"),
       "--distances: applies to frame files; --simulate makes the sweep"),
+    C("cli.calibrate-orders-over-positions", ("calibrate", "--simulate", "--positions", "10"),
+      "--positions: 10 wall positions cannot fit --orders 8 harmonics (2 * orders + 1 = 17 "
+      "are needed)"),
+    C("cli.calibrate-orders-huge", ("calibrate", "--simulate", "--orders", "33"),
+      "argument --orders: expected an integer in [1, 32], got '33'", usage=True),
     C("cli.pattern-study-rgbd-size-alone", ("pattern-study", "--dataset", "{d}/ds",
                                             "--rgbd-size", "64x64", "--out", "{d}/study"),
       "--rgbd-size: applies with --rgbd"),

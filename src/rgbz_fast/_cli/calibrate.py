@@ -53,8 +53,10 @@ def add_parser(sub):
     p.add_argument("--sensor", default=None, metavar="JSON",
                    help="ToF sensor model arguments as JSON, e.g. '{\"harmonics\": [[3, 0.04, "
                         "0.3]], \"delay_fpn_ps\": 20}' (default: the library's sensor)")
-    p.add_argument("--orders", type=c.positive_int, default=8,
-                   help="harmonics of the fitted cyclic error")
+    p.add_argument("--orders", type=c.number(int, lambda v: 1 <= v <= 32,
+                                             "an integer in [1, 32]"), default=8,
+                   help="harmonics of the fitted cyclic error (1 to 32; the sweep needs "
+                        "2 * orders + 1 wall positions)")
     c.add_seed(p, 0, "seed of a simulated sweep's noise")
     c.add_output_file(p, "the calibration file to write", default="tof_calibration.npz")
     c.add_quiet(p, "no summary line")
@@ -78,6 +80,11 @@ def run(args):
             if given:                          # the simulated sweep has its own
                 raise c.CliError(f"{flag}: applies to frame files; --simulate makes the "
                                  "sweep from --near, --far and --positions")
+        if args.positions < 2 * args.orders + 1:     # said before the sweep, not after it
+            raise c.CliError(f"--positions: {args.positions} wall positions cannot fit "
+                             f"--orders {args.orders} harmonics (2 * orders + 1 = "
+                             f"{2 * args.orders + 1} are needed); add positions or lower "
+                             "--orders")
         sweep, distances, dark = _simulated_sweep(args)
     else:
         if not args.frames:
