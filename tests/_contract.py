@@ -197,6 +197,7 @@ class Files:
         iio.imwrite(d / "bayer16.png", np.full((8, 8), 300, np.uint16))
         (d / "raw_options.json").write_text('{"bayer16.png": {"phase": "GBRG"}, "*": 5}')
         (d / "raw_ok.json").write_text('{"*": {"phase": "GBRG"}}')
+        (d / "raw_other.json").write_text('{"bayer16.png": {"phase": "GBRG"}}')  # not in ds
         # integer samples wider than 16 bits: their type says nothing about their range
         iio.imwrite(d / "int32.tif", np.full((16, 16, 3), 200, np.int32))
         # samples that are no RGB or grey, and a damaged 16-bit PGM
