@@ -198,6 +198,7 @@ class Files:
         (d / "raw_options.json").write_text('{"bayer16.png": {"phase": "GBRG"}, "*": 5}')
         (d / "raw_ok.json").write_text('{"*": {"phase": "GBRG"}}')
         (d / "raw_other.json").write_text('{"bayer16.png": {"phase": "GBRG"}}')  # not in ds
+        (d / "raw_twice.json").write_text('{"*": {"phase": "GBRG", "phase": "RGGB"}}')
         # integer samples wider than 16 bits: their type says nothing about their range
         iio.imwrite(d / "int32.tif", np.full((16, 16, 3), 200, np.int32))
         # samples that are no RGB or grey, and a damaged 16-bit PGM

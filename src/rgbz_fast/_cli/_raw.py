@@ -41,6 +41,20 @@ def add_raw_group(p):
     c.add_raw_options_file(raw, "; the options above override it")
 
 
+class _DuplicateKey(Exception):
+    pass
+
+
+def _unique_keys(pairs):
+    """json's object hook that refuses a key given twice in one object."""
+    out = {}
+    for k, v in pairs:
+        if k in out:
+            raise _DuplicateKey(k)
+        out[k] = v
+    return out
+
+
 def raw_options_file(path):
     """The JSON file of ``--raw-options``: {file name or "*": {read_raw option: value}}."""
     from ..io import read_file
@@ -50,7 +64,9 @@ def raw_options_file(path):
         return {}
     try:
         text = read_file(path, "--raw-options", max_bytes=1 << 20).decode("utf-8")
-        opts = json.loads(text)
+        opts = json.loads(text, object_pairs_hook=_unique_keys)
+    except _DuplicateKey as exc:            # json keeps the last of two, silently
+        raise c.CliError(f"--raw-options: {path} gives {exc.args[0]!r} twice") from None
     except UnicodeDecodeError:
         raise c.CliError(f"--raw-options: {path} is not a UTF-8 text file; expected JSON") \
             from None
