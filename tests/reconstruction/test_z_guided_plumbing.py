@@ -83,6 +83,11 @@ def test_colour_isp_passes_the_frames_taps(zf):
         st2["reconstruction"], rz.reconstruct(frame.data, "z_guided", pattern="mask1",
                                               nir=nir, filters=zf))
     assert out.shape == frame.shape + (3,)
+    # the default (fused) path takes the same guide: it had dropped the taps and nir=
+    np.testing.assert_array_equal(isp.run(frame), out)
+    np.testing.assert_array_equal(isp.run(frame.data, pattern="mask1", nir=nir),
+                                  isp.run(frame.data, pattern="mask1", nir=nir,
+                                          return_stages=True)[0])
 
 
 def test_folder_dataset_pairs_rgb_and_nir(pairs):

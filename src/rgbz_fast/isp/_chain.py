@@ -270,12 +270,14 @@ class ColourISP:
                                                              black_level,
                                                              check_flag(reference, "reference"))
         gains, matrix = self._recorded(recorded, gains, None)
+        # the frame's own taps guide a method of NEEDS_TOF, on either path
+        tof = frame.tof if isinstance(frame, RawFrame) and not reference else None
         if not return_stages and self._fused(data):
             threads = check_workers(workers)
             fixed = _fused.defect_fixes(data, pat, self.defects, white,
                                         _check_known(defects, data.shape), threads)
-            full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd,
-                                workers=workers) if pat.has_z else fixed
+            full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd, workers=workers,
+                                tof=tof, nir=nir) if pat.has_z else fixed
             return _fused.render(full, pat.bayer_pattern(), self, black, white, gains,
                                  threads, matrix)[0]
         seconds = {}
@@ -284,7 +286,6 @@ class ColourISP:
                                       known=defects, return_mask=True)
         t1 = time.perf_counter()
         seconds["defect_correction"] = t1 - t0
-        tof = frame.tof if isinstance(frame, RawFrame) and not reference else None
         full = fill_missing(fixed, pat, self.reconstruction, bit_depth=bd, workers=workers,
                             tof=tof, nir=nir) if pat.has_z else fixed
         seconds["reconstruction"] = time.perf_counter() - t1
