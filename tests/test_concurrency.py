@@ -345,3 +345,32 @@ def test_a_thread_stack_the_system_refuses_is_a_clear_error():
             "rgbz-fast reconstruct: error: " + want.replace("workers=2", "--workers 2"))
         assert line.endswith("or pass --workers 1")
         assert not (Path(d) / "out").exists()
+
+
+@pytest.mark.parametrize("copier", ["pickle", "deepcopy"])
+def test_copies_for_worker_processes_keep_their_arrays_read_only(copier):
+    """Pattern, RawFrame, ToFTaps and Scene reach worker processes pickled: their arrays stay
+    read-only, as the constructors left them (NumPy unpickles arrays writeable, so an 11-bit
+    frame's copy took 65535 past the checks, and a copied tile's cached has_z went stale)."""
+    import copy
+    import pickle
+
+    from rgbz_fast.simulation import Scene, simulate
+
+    clone = (lambda o: pickle.loads(pickle.dumps(o))) if copier == "pickle" else copy.deepcopy
+    scene = Scene(np.full((16, 16, 3), 0.5), depth=np.full((16, 16), 1.0))
+    frame = simulate(scene, "mask1", seed=1)
+    arrays = {"tile": lambda c: c.tile, "frame.data": lambda c: c.data,
+              "frame.tof.taps": lambda c: c.tof.taps, "frame.pattern": lambda c: c.pattern.tile,
+              "tof.sites": lambda c: c.sites[0], "scene.image": lambda c: c.image,
+              "scene.depth": lambda c: c.depth}
+    objects = {"tile": rz.mask1(), "frame.data": frame, "frame.tof.taps": frame,
+               "frame.pattern": frame, "tof.sites": frame.tof, "scene.image": scene,
+               "scene.depth": scene}
+    for name, get in arrays.items():
+        c = clone(objects[name])
+        with pytest.raises(ValueError, match="read-only"):
+            get(c)[(0,) * get(c).ndim] = 1
+    back = clone(frame)
+    np.testing.assert_array_equal(back.data, frame.data)
+    assert back.pattern == frame.pattern and back.bit_depth == frame.bit_depth

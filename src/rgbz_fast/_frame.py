@@ -18,7 +18,8 @@ from ._patterns import Pattern, Z, get_pattern
 from ._sensors import ToFSensor
 from ._validate import (FRAME_DTYPES, as_array, as_list, check_bit_depth, check_dtype,
                         check_block, check_fill, check_finite, check_frequencies, check_image, check_int,
-                        check_meta, check_sites, finite_range, integer_bits)
+                        check_meta, check_sites, finite_range, integer_bits,
+                        read_only_state)
 from ._validate import _check_range, _in_range_fast
 
 __all__ = ["RawFrame", "ToFTaps", "mosaic", "validate_frame", "frame_inputs", "raw_clip_level"]
@@ -81,6 +82,9 @@ class RawFrame:
     reference: np.ndarray | None = None
     tof: Any = None
     meta: dict = field(default_factory=dict)
+
+    def __setstate__(self, state):          # a pickled or deep-copied frame stays read-only
+        read_only_state(self, state)
 
     def __post_init__(self):
         pattern = get_pattern(self.pattern)
@@ -348,6 +352,9 @@ class ToFTaps:
     sensor: ToFSensor
     shape: tuple
     meta: dict = field(default_factory=dict)
+
+    def __setstate__(self, state):          # a pickled or deep-copied frame stays read-only
+        read_only_state(self, state)
 
     def __post_init__(self):
         # own copies, read-only (as RawFrame): the caller's arrays stay the caller's; every

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_array, check_entries
+from ._validate import as_array, check_entries, read_only_state
 
 __all__ = [
     "R", "G", "B", "Z", "CHANNELS", "BAYER_PHASES", "MAX_PERIOD",
@@ -120,6 +120,9 @@ class Pattern:
         self._has_z = bool(np.any(self._tile == Z))
         self.name = str(name) if name is not None else self.tile_string
         self._bayer = self._infer_bayer(bayer)
+
+    def __setstate__(self, state):          # a pickled or deep-copied tile stays read-only
+        read_only_state(self, state)
 
     # -- basic properties -------------------------------------------------
     @property

@@ -210,6 +210,23 @@ def as_array(value, name, **kwargs):
             from None
 
 
+def read_only_state(obj, state):
+    """``obj.__setstate__`` of a class whose arrays are read-only: the ``state`` of a pickle or
+    a deep copy restored with its arrays (and those in its tuples) read-only again. NumPy
+    unpickles arrays writeable and a deep copy copies them writeable, which let a copy's
+    values be changed past the checks its constructor made."""
+    def freeze(v):
+        if isinstance(v, np.ndarray):
+            v.setflags(write=False)
+        elif isinstance(v, tuple):
+            for x in v:
+                freeze(x)
+
+    for v in state.values():
+        freeze(v)
+    obj.__dict__.update(state)
+
+
 def real_array(value, name):
     """An own float64 copy of an array of real numbers; booleans, text, complex numbers and
     objects are a TypeError naming ``name`` (NumPy would read True as 1, parse text and drop

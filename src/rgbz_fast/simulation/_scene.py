@@ -45,7 +45,7 @@ from functools import lru_cache
 import numpy as np
 
 from .._validate import (FLOAT_DTYPES, check_choice, check_image, check_meta, check_number,
-                         integer_bits)
+                         integer_bits, read_only_state)
 
 __all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
            "CAVE_WAVELENGTHS"]
@@ -280,6 +280,9 @@ class Scene:
     name: str = ""
     meta: dict = field(default_factory=dict)
     input_bits: int | None = None
+
+    def __setstate__(self, state):          # a pickled or deep-copied scene stays read-only
+        read_only_state(self, state)
 
     def __post_init__(self):
         img = check_image(self.image, "image", ndim=3)
