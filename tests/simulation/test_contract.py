@@ -274,6 +274,15 @@ ROWS = [
     R("simulation.ToFSensor-duty_cycle", "ToFSensor(duty_cycle=0)",
       lambda f: sim.ToFSensor(duty_cycle=0), ValueError,
       "ToFSensor.duty_cycle: expected a finite number > 0 and <= 1"),
+    R("simulation.Optics-grid-huge", "simulate(scene, optics=Optics(f_number=0.5, "
+      "defocus_um=1000)) (an 86016^2 frequency grid, 55 GB)",
+      lambda f: sim.simulate(sim.Scene(rgb(value=0.5)), "mask1",
+                             optics=sim.Optics(f_number=0.5, defocus_um=1000)),
+      ValueError, "optics: the kernel at f_number=0.5, pixel_pitch_um=2.8, defocus_um=1000 "
+                  "and olpf=0 needs a 86016 x 86016 frequency grid"),
+    R("simulation.Optics-grid-pitch", "Optics(f_number=0.5).psf(420, pixel_pitch_um=100)",
+      lambda f: sim.Optics(f_number=0.5).psf(420, pixel_pitch_um=100), ValueError,
+      "optics: the kernel at f_number=0.5, pixel_pitch_um=100"),
     R("simulation.Optics-f_number", "Optics(f_number=0)", lambda f: sim.Optics(f_number=0),
       ValueError, "Optics.f_number: expected a finite number >= 0.5 and <= 64"),
     R("simulation.Optics-olpf", "Optics(olpf=3)", lambda f: sim.Optics(olpf=3), ValueError,

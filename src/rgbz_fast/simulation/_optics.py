@@ -38,9 +38,14 @@ computed exactly by a discrete Fourier transform on a grid of ``L x M``
 samples per axis (``L`` cycles/pixel >= 2 rho_c, ``M`` pixels of period);
 the only approximation is the period ``M`` (the Airy tails beyond ``M / 2``
 pixels alias back, below 1e-6 of the energy for the default ``M``). The
-kernel is cut where less than 1e-5 of its energy lies outside and scaled to
-sum to 1 (a fill factor below 1 loses light; that loss belongs in the
-quantum efficiency, so the optics conserves the signal).
+kernel is cut where at most 1 % of its energy lies outside (the far rings of
+the Airy pattern, a veiling glare a demosaicing study does not need; the kept
+core is the blur at the pixel scale) and scaled to sum to 1 (a fill factor
+below 1 loses light; that loss belongs in the quantum efficiency, so the optics
+conserves the signal). The frequency grid is at most 8192 x 8192 samples
+(``MAX_GRID``): a lens whose cut-off frequency or blur needs more (an f-number
+near 0.5 at a large pixel pitch, a defocus of hundreds of pixels) is refused
+with the parameters that ask for it, rather than allocating gigabytes.
 
 References
 ----------
@@ -66,6 +71,9 @@ __all__ = ["Optics", "apply_optics"]
 _BAND_SAMPLES = 5
 #: energy left outside the cut kernel
 _TAIL = 1e-2
+#: the largest frequency grid (samples per axis) a kernel is computed on: its OTF and inverse
+#: FFT take about 60 bytes a sample (4 GB at 8192 x 8192)
+MAX_GRID = 8192
 
 
 def _band(value, name):
@@ -221,7 +229,13 @@ class Optics:
         -------
         ndarray of float64, shape (2 R + 1, 2 R + 1)
             Non-negative, symmetric, summing to 1; ``R`` is the smallest
-            radius that leaves less than 1e-5 of the energy outside.
+            radius that leaves at most 1 % of the energy outside.
+
+        Raises
+        ------
+        ValueError
+            The frequency grid the kernel needs (cut-off frequency times blur
+            extent) is beyond ``MAX_GRID`` samples per axis.
         """
         band = _band(wavelength_nm, "wavelength_nm")
         p = check_number(pixel_pitch_um, "pixel_pitch_um", lo=0.1, hi=100)
@@ -244,6 +258,14 @@ def _psf_cached(optics, band, pitch, f_number):
     while M < 8 * blur_px + 16:
         M *= 2
     N = L * M
+    if N > MAX_GRID:
+        raise ValueError(
+            f"optics: the kernel at f_number={f_number:g}, pixel_pitch_um={pitch:g}, "
+            f"defocus_um={optics.defocus_um:g} and olpf={optics.olpf:g} needs a {N} x {N} "
+            f"frequency grid ({L} samples per cycle for a cut-off of {cutoff:.3g} cycles per "
+            f"pixel, a period of {M} pixels for a blur of {blur_px:.3g}); the model computes up "
+            f"to {MAX_GRID} x {MAX_GRID}: raise f_number, or lower defocus_um or the pixel "
+            "pitch")
     f = np.fft.fftfreq(N, d=1.0 / L)                      # spacing 1 / M cycles/pixel
     H = optics.otf(f[:, None], f[None, :], band, pixel_pitch_um=pitch, f_number=f_number)
     fine = np.fft.ifft2(H).real * (L * L)
