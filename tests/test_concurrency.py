@@ -252,6 +252,25 @@ def test_kernel_thread_count_is_reported():
     assert _kernels.max_threads() >= 1
 
 
+def test_config_reports_the_threads_a_call_takes(monkeypatch):
+    """show_config's thread count is what workers=None runs, not OpenMP's own default (which
+    OMP_NUM_THREADS sets and the kernels do not use: it had printed 1 with OMP_NUM_THREADS=1
+    while a call ran on every core)."""
+    import io
+    import os
+
+    from rgbz_fast._threads import check_workers
+
+    assert rz.config()["default_workers"] == check_workers(None) == (os.cpu_count() or 1)
+    monkeypatch.setenv("OMP_NUM_THREADS", "1")
+    out = io.StringIO()
+    rz.show_config(out)
+    text = out.getvalue()
+    assert f"threads       : {check_workers(None)} per call by default" in text
+    if _kernels.have_openmp():
+        assert "OMP_NUM_THREADS=1 is not used: pass workers=" in text
+
+
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v and /proc: Linux")
 @pytest.mark.skipif("ASAN_OPTIONS" in __import__("os").environ,
                     reason="under AddressSanitizer (tools/sanitize.sh): its shadow memory is "

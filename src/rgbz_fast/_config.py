@@ -8,12 +8,17 @@ import sys
 
 from . import _build_config as bc
 from . import _kernels
+from ._threads import check_workers
 
 __all__ = ["show_config", "config"]
 
 
 def config():
-    """dict: version, compiler, flags, OpenMP and thread count of the compiled kernels."""
+    """dict: version, compiler, flags, OpenMP and thread counts of the compiled kernels.
+
+    ``default_workers`` is the number of threads a call with ``workers=None`` runs (every
+    core); ``max_threads`` is OpenMP's own default (``omp_get_max_threads()``, which
+    ``OMP_NUM_THREADS`` sets), which the kernels do not use: every call passes its count."""
     return {
         "version": bc.VERSION,
         "python": sys.version.split()[0],
@@ -25,6 +30,7 @@ def config():
         "openmp": bool(_kernels.have_openmp()),
         "openmp_version": bc.OPENMP_VERSION or None,
         "max_threads": int(_kernels.max_threads()),
+        "default_workers": check_workers(None),
         "cpu_count": os.cpu_count(),
     }
 
@@ -56,6 +62,11 @@ def show_config(file=None):
         f"  kernel flags  : {c['kernel_c_args'] or '(none)'}",
         f"  OpenMP        : {'on' if c['openmp'] else 'off'}"
         + (f" (version {c['openmp_version']})" if c['openmp'] and c['openmp_version'] else ""),
-        f"  threads       : {c['max_threads']} (cores: {c['cpu_count']})",
+        f"  threads       : {c['default_workers']} per call by default (workers=None: every "
+        f"core; cores: {c['cpu_count']})",
     ]
+    omp = os.environ.get("OMP_NUM_THREADS")
+    if omp is not None and c["openmp"]:
+        lines.append(f"  OMP_NUM_THREADS={omp} is not used: pass workers= (or --workers) to "
+                     "limit a call's threads")
     print("\n".join(lines), file=sys.stdout if file is None else file)
