@@ -65,3 +65,28 @@ def test_bad_input_exits_2_naming_it(argv, message, dataset, tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.startswith("rgbz-fast hardware: error:") and message in err
     assert not (tmp_path / "x").exists()
+
+
+def test_a_flat_image_is_no_change_and_the_json_stays_strict(dataset, tmp_path, capsys):
+    """A flat image reconstructs exactly in both models (CFA PSNR +inf twice): its change is 0
+    dB, not inf - inf = NaN, which had made the table 'inf | inf | +nan', the verdict MISSES
+    and hardware.json hold NaN and Infinity."""
+    import shutil
+
+    import imageio.v3 as iio
+
+    d = tmp_path / "ds"
+    d.mkdir()
+    shutil.copy(dataset / "noise.png", d)
+    iio.imwrite(d / "flat.png", np.full((40, 56, 3), (120, 60, 30), np.uint8))
+    out = tmp_path / "hw"
+    assert main(["hardware", "--dataset", str(d), "--width", "128", "--quiet",
+                 "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "nan" not in text and "MISSES" not in text
+    assert "leave out the images that both reconstruct exactly at every Z site" in text
+    rep = json.loads((out / "hardware.json").read_text(),
+                     parse_constant=lambda c: pytest.fail(f"not strict JSON: {c}"))
+    for e in rep["error"].values():
+        assert e["exact_images"] == 1 and np.isfinite(e["psnr_float"])
+        assert abs(e["dpsnr_mean"]) <= 0.05

@@ -4,6 +4,7 @@ results, a progress bar. Not a public API."""
 from __future__ import annotations
 
 import json
+import math
 import os
 import platform
 import sys
@@ -58,8 +59,21 @@ def tile_to(img, shape):
 
 
 def json_text(obj):
-    """``obj`` as indented JSON (NumPy numbers as numbers, non-finite floats as null)."""
-    return json.dumps(obj, indent=2, sort_keys=False, default=_json_default)
+    """``obj`` as indented, strict JSON (NumPy numbers as numbers, non-finite floats as
+    null: Python's own floats too, which json would write as NaN or Infinity)."""
+    return json.dumps(_finite(obj), indent=2, sort_keys=False, default=_json_default,
+                      allow_nan=False)
+
+
+def _finite(o):
+    """``o`` with every non-finite Python float (in dicts, lists and tuples) as None."""
+    if isinstance(o, float):
+        return o if math.isfinite(o) else None
+    if isinstance(o, dict):
+        return {k: _finite(v) for k, v in o.items()}
+    if isinstance(o, (list, tuple)):
+        return [_finite(v) for v in o]
+    return o
 
 
 def _json_default(o):
