@@ -460,10 +460,32 @@ def command_line(args):
 
 
 def output_folder(out):
-    """``out`` when it can be an output folder (it may not exist yet), else a CliError."""
-    if out is not None and _exists(out, "--out") and not out.is_dir():
+    """``out`` when it can be an output folder (it may not exist yet), else a CliError: it is
+    checked before the work, so that a run does not end on a --out it cannot write (a path
+    under a file, a read-only or virtual file system) after minutes of measurements."""
+    if out is None:
+        return out
+    if _exists(out, "--out") and not out.is_dir():
         raise CliError(f"--out: {str(out)!r} exists and is not a folder")
+    _check_writable_folder(out)
     return out
+
+
+def _check_writable_folder(out):
+    """The nearest existing folder of ``out`` (``out`` itself, else an ancestor) takes a new
+    entry: tried by making and removing a temporary folder there (nothing is left)."""
+    import tempfile
+
+    p = Path(os.path.abspath(out))
+    while not _exists(p, "--out"):
+        p = p.parent
+    if not p.is_dir():
+        raise CliError(f"--out: {str(out)!r}: {str(p)!r} is not a folder")
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=".rgbz-fast-", dir=p))
+    except OSError as exc:
+        raise CliError(f"--out: {str(out)!r}: cannot write in {str(p)!r} "
+                       f"({exc.strerror or exc})") from None
 
 
 def output_file(out):

@@ -109,6 +109,6 @@ def run(args):
         raise c.CliError(f"--kernels: no case matches {','.join(args.kernels)!r}")
     res["command"] = c.command_line(args)
     table = bench.format_table(res)
+    print(json_text(res) if args.json else table)     # before the files: kept if a write fails
     c.write_report(out, {"bench.json": json_text(res) + "\n", "bench.txt": table + "\n"})
-    print(json_text(res) if args.json else table)
     return 0

@@ -106,6 +106,6 @@ def run(args):
     report["command"] = c.command_line(args)
     doc = json_text(report) + "\n"
     files.update({"hardware.md": text, "hardware.json": doc})
+    print(doc if args.json else text, end="")     # before the files: kept if a write fails
     c.write_report(out, files)
-    print(doc if args.json else text, end="")
     return 0

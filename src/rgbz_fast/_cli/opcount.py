@@ -42,14 +42,14 @@ def run(args):
     tof = opcount.count_tof_operations()
     legend = opcount.opcount_legend(shape, args.seed, args.precision, image_name, tof)
     doc = json_text({"rows": rows, "tof_demodulate": tof, "legend": legend})
-    c.write_report(out, {"opcount.md": opcount.opcount_report(rows, "markdown") + "\n\n"
-                         + legend + "\n", "opcount.json": doc + "\n"})
-    if args.json:
+    if args.json:                # printed before the files: a failed write keeps it
         print(doc)
     else:
         print(opcount.opcount_report(rows, "text" if args.text else "markdown"))
         print()
         print(legend)
+    c.write_report(out, {"opcount.md": opcount.opcount_report(rows, "markdown") + "\n\n"
+                         + legend + "\n", "opcount.json": doc + "\n"})
     return 0
 
 
