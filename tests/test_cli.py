@@ -96,6 +96,26 @@ def test_simulate_rgbd_scene_with_tof(tmp_path):
     assert frame.tof is not None and frame.tof.taps.shape[:2] == (3, 4)
 
 
+def test_simulate_says_what_each_file_keeps(tmp_path, capsys):
+    """A TIFF keeps the mosaic alone: the line had said 'with ToF taps' for a file without
+    them; a pattern without Z pixels says so rather than 'no depth'."""
+    import imageio.v3 as iio
+
+    scene = tmp_path / "scene"
+    scene.mkdir()
+    rng = np.random.default_rng(1)
+    iio.imwrite(scene / "rgb.png", rng.integers(0, 256, (24, 32, 3), dtype=np.uint8))
+    iio.imwrite(scene / "disp1.png", np.full((24, 32), 120, np.uint8))
+    (scene / "dmin.txt").write_text("200\n")
+    for extra, want in ((["--format", "tiff"], "(24x32, the mosaic only: the ToF taps and the "
+                                               "reference CFA need --format npz)"),
+                        ([], "(24x32, with ToF taps)"),
+                        (["--pattern", "bayer"], "(24x32, no ToF: 'bayer_grbg' has no Z pixel)")):
+        assert main(["simulate", str(scene), *extra, "--out", str(tmp_path / "o")]) == 0
+        assert capsys.readouterr().out.strip().endswith(want)
+    assert frameio.load_frame(tmp_path / "o" / "scene_mask1.tif").tof is None
+
+
 def test_frame_tiff_round_trip(tmp_path):
     img = np.random.default_rng(0).integers(0, 256, (8, 12, 3), dtype=np.uint8)
     f = rz.mosaic(img, rz.mask1())

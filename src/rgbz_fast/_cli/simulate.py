@@ -27,7 +27,7 @@ def add_parser(sub):
     c.add_seed(p, 0, "noise seed: the same seed gives the same frame")
     p.add_argument("--format", choices=("npz", "tiff"), default="npz",
                    help="npz keeps everything (mosaic, reference CFA, ToF taps); tiff keeps the "
-                        "16-bit mosaic and its metadata")
+                        "16-bit mosaic and its metadata alone (no ToF taps, no reference)")
     c.add_grey(p)
     p.add_argument("--input-bits", type=c.positive_int, default=None, metavar="N",
                    help="bits the values of an image of 32-bit integer samples use (a TIFF of "
@@ -66,6 +66,20 @@ def run(args):
             raise c.CliError(msg) from None
         save_frame(out / name, frame)            # the folder appears with its first file
         if not args.quiet:
-            tof = "with ToF taps" if frame.tof is not None else "no depth: no ToF"
-            print(f"{s} -> {out / name} ({frame.shape[0]}x{frame.shape[1]}, {tof})")
+            print(f"{s} -> {out / name} ({frame.shape[0]}x{frame.shape[1]}, "
+                  f"{_what_is_kept(frame, scene, pattern, suffix)})")
     return 0
+
+
+def _what_is_kept(frame, scene, pattern, suffix):
+    """What the file written holds beside the mosaic: a TIFF keeps the mosaic alone, which the
+    line had described as 'with ToF taps'."""
+    if suffix == ".tif":
+        lost = "the ToF taps and the reference CFA" if frame.tof is not None \
+            else "the reference CFA"
+        return f"the mosaic only: {lost} need --format npz"
+    if frame.tof is not None:
+        return "with ToF taps"
+    if scene.depth is not None and not pattern.has_z:
+        return f"no ToF: {pattern.name!r} has no Z pixel"
+    return "no depth: no ToF"
