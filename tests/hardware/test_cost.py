@@ -93,3 +93,37 @@ def test_bad_arguments_name_the_parameter():
         hardware_cost("mask1", "sg", width=20000)
     with pytest.raises(ValueError, match="register_bits: the register"):
         hardware_cost("mask2", "sg", bit_depth=16, fixed_point={"register_bits": 20})
+
+
+@pytest.mark.parametrize("method", ["bilinear", "bi", "edi_central", "edi_line", "sg",
+                                    "learned"])
+def test_the_datapath_holds_every_operator_of_a_plan(method):
+    """Operators of one plan that share a stage and a kind add up (they run at once): Mask1 has
+    one plan, so its datapath holds exactly its operations per site. They had been merged by
+    their maximum (Mask1 SG: 21 multipliers for 30 per site, 21 DSP48E2 for 30)."""
+    from collections import Counter
+
+    c = hardware_cost("mask1", method, width=64)
+    units = Counter()
+    for u in c.units:
+        units[u.kind] += u.count
+    (ops,) = c.ops.values()
+    assert dict(units) == {k: n for k, n in ops.items() if k != "rom_read"}
+
+
+@pytest.mark.parametrize("method", ["bi", "edi_line", "sg", "learned"])
+def test_a_shared_datapath_holds_each_plans_operators(method):
+    """Mask2's four plans share one datapath: it holds at least every plan's operators of each
+    kind, and as many exponential lookups as its table serves per site."""
+    from collections import Counter
+
+    c = hardware_cost("mask2", method, width=64)
+    units = Counter()
+    for u in c.units:
+        units[u.kind] += u.count
+    for ops in c.ops.values():
+        for kind, n in ops.items():
+            if kind != "rom_read":
+                assert units[kind] >= n, (kind, units[kind], n)
+    if "exp" in c.tables:
+        assert units["exp_lookup"] == c.tables["exp"]["reads_per_site"]

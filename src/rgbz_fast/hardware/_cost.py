@@ -5,10 +5,10 @@ of a pattern (one plan per Z position of the tile): every subtractor, adder,
 comparator, multiplier (with its two input widths), barrel shifter, priority
 encoder and table lookup, each with the width :func:`register_widths` declares
 for its output. A pattern's datapath serves all its plans (they are different
-pixels in time), so the design holds, per unit, the largest count and width
-over the plans. The counts are analytic -- the model's per-site work does not
-depend on the data -- and are the fixed model's operation counts beside the
-paper's Table 1.
+pixels in time), so the design holds, per operator group, the largest count
+and width over the plans; the groups of one plan add up (:func:`merge_plan_units`).
+The counts are analytic -- the model's per-site work does not depend on the
+data -- and are the fixed model's operation counts beside the paper's Table 1.
 
 Memory: the line buffers and the window of hw_recon.h; BRAM_18K blocks at
 18 Kbit each, a buffer mapped onto the best of the block's aspect ratios
@@ -74,7 +74,7 @@ class HardwareCost:
     latency_rows: int
     latency_pixels: int
     depth: int                    # operations on the datapath's longest path
-    units: list                   # the shared datapath: Unit per (stage, kind)
+    units: list                   # the shared datapath: Unit per operator group (merge_plan_units)
     tables: dict                  # name -> {entries, bits, reads, copies, total_bits}
     registers: dict               # register name -> bits (widest over the plans)
     ops: dict                     # {"green"/"red/blue": {kind: count per site}}
@@ -271,6 +271,28 @@ def _plan_units(plan, hw, regs, config, b):
     return U, depth
 
 
+def merge_plan_units(design, units):
+    """Add one plan's operators ``units`` to ``design`` ({key: Unit}, the shared datapath).
+
+    Within a plan each operator group (one call of the enumeration: its own widths) is its own
+    unit, even when another group of the plan has the same stage and kind: they compute
+    different things at once, so their counts add up. Across plans, the n-th group of a stage
+    and kind keeps the largest count and widths (the plans are different pixels in time)."""
+    nth = defaultdict(int)
+    for u in units:
+        key = (u.stage, u.kind, nth[(u.stage, u.kind)])
+        nth[(u.stage, u.kind)] += 1
+        old = design.get(key)
+        design[key] = u if old is None else Unit(
+            u.stage, u.kind, max(old.count, u.count), max(old.width, u.width),
+            tuple(max(a, c) for a, c in zip(old.inputs, u.inputs)) or u.inputs)
+
+
+def design_units(design):
+    """The units of ``design`` (:func:`merge_plan_units`) in report order (by kind)."""
+    return [design[k] for k in sorted(design, key=lambda k: KINDS.index(k[1]))]
+
+
 def _site_ops(units):
     """Operation counts of one site from its operators (Table 1's categories and the rest)."""
     ops = defaultdict(int)
@@ -348,12 +370,7 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
             registers[reg.name] = max(registers.get(reg.name, 0), reg.bits)
         us, d = _plan_units(p, h, regs, config, b)
         depth = max(depth, d)
-        for u in us:
-            key = (u.stage, u.kind)
-            old = units.get(key)
-            units[key] = u if old is None else Unit(
-                u.stage, u.kind, max(old.count, u.count), max(old.width, u.width),
-                tuple(max(a, c) for a, c in zip(old.inputs, u.inputs)) or u.inputs)
+        merge_plan_units(units, us)
         so = _site_ops(us)
         group = "green" if int(p["target"]) == 1 else "red/blue"
         ops.setdefault(group, so)
@@ -383,5 +400,5 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
         line_buffers=nlb, line_buffer_bits=nlb * width * b,
         line_buffer_bram18=nlb * bram18_blocks(width, b),
         window=(2 * r + 1, r + Ax + 1, b), latency_rows=A, latency_pixels=Ax, depth=depth,
-        units=[units[k] for k in sorted(units, key=lambda k: KINDS.index(k[1]))],
+        units=design_units(units),
         tables=tables, registers=registers, ops=ops, notes=notes)

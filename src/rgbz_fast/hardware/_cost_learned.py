@@ -15,7 +15,7 @@ import math
 
 from ..reconstruction._fixed_learned import (check_learned_call, check_learned_widths,
                                              learned_registers, quantise_learned)
-from ._cost import KINDS, HardwareCost, Unit, bram18_blocks
+from ._cost import HardwareCost, Unit, bram18_blocks, design_units, merge_plan_units
 
 __all__ = ["learned_cost"]
 
@@ -95,12 +95,7 @@ def learned_cost(pattern, filters, config, *, width, bit_depth):
     for k, ph in enumerate(filters.geometry):
         us, dk = _phase_units(filters, k, R, config, b, q)
         depth = max(depth, dk)
-        for u in us:
-            key = (u.stage, u.kind)
-            old = units.get(key)
-            units[key] = u if old is None else Unit(
-                u.stage, u.kind, max(old.count, u.count), max(old.width, u.width),
-                tuple(max(x, y) for x, y in zip(old.inputs, u.inputs)) or u.inputs)
+        merge_plan_units(units, us)
         so = {}
         for u in us:
             so[u.kind] = so.get(u.kind, 0) + u.count
@@ -134,5 +129,5 @@ def learned_cost(pattern, filters, config, *, width, bit_depth):
         line_buffers=nlb, line_buffer_bits=nlb * width * b,
         line_buffer_bram18=nlb * bram18_blocks(width, b),
         window=(2 * r + 1, r + Ax + 1, b), latency_rows=A, latency_pixels=Ax, depth=depth,
-        units=[units[k] for k in sorted(units, key=lambda k: KINDS.index(k[1]))],
+        units=design_units(units),
         tables=tables, registers={k: v for k, v in R.items()}, ops=ops, notes=notes)
