@@ -84,6 +84,31 @@ def _one_line_warnings(command):
     return show
 
 
+def _given_twice(parser, argv):
+    """The first option of ``argv`` (a command's arguments) given twice whose action keeps one
+    value (argparse lets the last win, silently; ``--noise`` and ``--no-noise`` are one), with
+    the spellings used, or None. Abbreviations count as the option they stand for."""
+    longs = {o: a for o, a in parser._option_string_actions.items() if o.startswith("--")}
+    seen = {}
+    for token in argv:
+        if token == "--":
+            break
+        if not token.startswith("--"):
+            continue
+        name = token.split("=", 1)[0]
+        action = longs.get(name)
+        if action is None:                   # a unique prefix, as argparse takes it
+            hits = {a for o, a in longs.items() if o.startswith(name)}
+            action = hits.pop() if len(hits) == 1 else None
+        if action is None or isinstance(action, (argparse._AppendAction, argparse._HelpAction,
+                                                 argparse._CountAction)):
+            continue
+        if action in seen:
+            return seen[action] if seen[action] == name else f"{seen[action]}, {name}"
+        seen[action] = name
+    return None
+
+
 def _terminate(signum, frame):
     signal.signal(signal.SIGTERM, signal.SIG_IGN)      # cleaning up: do not interrupt it
     raise Terminated(128 + signum)
@@ -101,6 +126,9 @@ def main(argv=None):
         return 0
     if extra:                      # the command's own usage, and its name on the error line
         args.parser.error(f"unrecognized arguments: {' '.join(extra)}")
+    twice = _given_twice(args.parser, argv[argv.index(args.command) + 1:])
+    if twice:
+        args.parser.error(f"{twice}: given twice (only the last would apply)")
     args.argv = argv
     previous = None
     if hasattr(signal, "SIGTERM") and threading.current_thread() is threading.main_thread():
