@@ -586,7 +586,15 @@ def check_report_outputs(out, names, dataset, what="the report", reads=()):
 
 def unique_outputs(pairs, out, reads=()):
     """``pairs``: (input, output names) in the folder ``out``; :func:`check_outputs` of them
-    against each other and against the files ``reads`` (the inputs themselves included)."""
+    against each other and against the files ``reads`` (the inputs themselves included). An
+    input given twice (a link to it too) is refused: it would be run and written twice."""
+    given = {}
+    for src, _ in pairs:
+        key = _same_file_key(src)
+        if key in given:
+            same = "" if str(given[key]) == str(src) else f" (as {given[key]})"
+            raise CliError(f"{src}: given twice{same}; give each input once")
+        given[key] = src
     check_outputs([(src, out / name) for src, names in pairs for name in names],
                   [*(src for src, _ in pairs), *reads])
 

@@ -44,6 +44,9 @@ def run(args):
     from ..simulation import load_scene, simulate
 
     pattern = get_pattern(args.pattern)
+    if not args.noise and args.seed != args.parser.get_default("seed"):
+        raise c.CliError("--seed: draws the sensor noise, which --no-noise leaves out (the "
+                         "frames would be the same for every seed)")
     c.must_exist(args.scenes, "scene ")
     out = c.output_folder(args.out)
     suffix = ".tif" if args.format == "tiff" else ".npz"
