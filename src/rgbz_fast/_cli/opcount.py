@@ -31,16 +31,28 @@ def add_parser(sub):
 
 def run(args):
     from .._devtools._common import json_text
+    from .._patterns import get_pattern
 
     opcount = c.tool("opcount")
+    if args.quick and args.shape != args.parser.get_default("shape"):
+        raise c.CliError("--shape: --quick counts on a 32x32 frame; give one of them")
     shape = (32, 32) if args.quick else c.made_shape(args, args.shape)
     out = c.output_folder(args.out)
+    methods = [m.lower() for m in args.methods]        # as reconstruct() takes them
+    for i, m in enumerate(methods):
+        if m in methods[:i]:
+            raise c.CliError(f"--methods: {args.methods[i]!r} is given twice (as {m!r})")
     image, image_name = _image(args.image)
-    c.z_patterns(args.patterns)
-    rows = opcount.opcount_table(args.methods, args.patterns, precision=args.precision,
+    if image is not None and min(image.shape[:2]) < MIN_IMAGE:
+        raise c.CliError(f"--image: {image_name} is {image.shape[0]}x{image.shape[1]}; the "
+                         f"counts need at least {MIN_IMAGE}x{MIN_IMAGE} pixels")
+    pats = c.z_patterns(args.patterns)
+    rows = opcount.opcount_table(methods, args.patterns, precision=args.precision,
                                  shape=shape, seed=args.seed, image=image, image_name=image_name)
     tof = opcount.count_tof_operations()
-    legend = opcount.opcount_legend(shape, args.seed, args.precision, image_name, tof)
+    legend = opcount.opcount_legend(shape, args.seed, args.precision, image_name, tof,
+                                    None if image is None else image.shape,
+                                    [get_pattern(p).period for p in pats])
     doc = json_text({"rows": rows, "tof_demodulate": tof, "legend": legend})
     if args.json:                # printed before the files: a failed write keeps it
         print(doc)
@@ -51,6 +63,10 @@ def run(args):
     c.write_report(out, {"opcount.md": opcount.opcount_report(rows, "markdown") + "\n\n"
                          + legend + "\n", "opcount.json": doc + "\n"})
     return 0
+
+
+#: the smallest --image: its crop holds interior Z sites of every preset (Mask2: 4x4 tiles)
+MIN_IMAGE = 16
 
 
 def _image(spec):

@@ -363,6 +363,17 @@ def count_tof_operations(n_sites=64, n_freqs=3, seed=0):
     return {k: float(counts[i]) / (n_sites * n_freqs) for i, k in enumerate(CATEGORIES)}
 
 
+def _table1_name(pattern):
+    """The name Table 1 knows ``pattern`` by: the preset whose tile and Bayer phase it has
+    (the tile 'ZR/BG' is Mask1), else its own."""
+    for name in ("mask1", "mask2"):
+        preset = get_pattern(name)
+        if np.array_equal(preset.tile, pattern.tile) and \
+                preset.bayer_phase == pattern.bayer_phase:
+            return name
+    return pattern.name
+
+
 def _image_frame(image, pattern, size=128):
     """A mosaicked centre crop (size x size, period aligned) of an RGB image."""
     P, Q = pattern.period
@@ -414,7 +425,7 @@ def opcount_table(methods=DEFAULT_METHODS, patterns=("mask1", "mask2"), *,
                 img = count_operations(method, pattern, precision=precision,
                                        frame=_image_frame(image, pattern), **reconstruct_kwargs)
             for g, r in res.items():
-                paper = TABLE1.get((method, pattern.name, g))
+                paper = TABLE1.get((method, _table1_name(pattern), g))
                 ratio = None
                 if paper is not None:
                     ratio = {k: (r["mean"][k] / paper[k] if paper[k] else None)
@@ -506,13 +517,21 @@ _LEGEND = ("Cells: ours per missing pixel (mean over the interior Z sites of a {
            "the cell terms, one per tile, are not counted).")
 
 
-def opcount_legend(shape, seed, precision, image_name=None, tof=None):
+def opcount_legend(shape, seed, precision, image_name=None, tof=None, image_shape=None,
+                   periods=()):
     """The paragraph under the table: how to read the cells, the image of the last column
-    (``image_name``) and the ToF demodulation's counts (``tof``, from
-    :func:`count_tof_operations`; None: not counted by this build)."""
-    legend = _LEGEND.format(shape="x".join(map(str, shape)), seed=seed, precision=precision)
+    (``image_name``, of ``image_shape``: the crop is at most 128x128) and the ToF
+    demodulation's counts (``tof``, from :func:`count_tof_operations`; None: not counted by
+    this build). ``periods``: the patterns' periods, to which the frame is rounded up."""
+    size = "x".join(map(str, shape))
+    if any(shape[0] % p or shape[1] % q for p, q in periods):
+        size += " (rounded up to whole periods of each pattern)"
+    legend = _LEGEND.format(shape=size, seed=seed, precision=precision)
     if image_name is not None:
-        legend += f" Last column: means on a 128x128 crop of {image_name}."
+        crop = "128x128" if image_shape is None else \
+            f"{min(128, image_shape[0])}x{min(128, image_shape[1])}"
+        legend += (f" Last column: means on a centre crop of {image_name} ({crop}, whole "
+                   "periods).")
     if tof is None:
         legend += " ToF demodulation: not counted by this build."
     else:
