@@ -106,7 +106,7 @@ def test_bench_small_frame_gives_ratios_but_no_verdict(capsys, tmp_path):
                   and r["pattern"] == "mask1" and r["precision"] == "float32")
         assert t["fraction_of_opencv_ea"] == m1["vs_opencv_ea_all"]
     text = (tmp_path / "bench.txt").read_text()
-    assert "no verdict: the target is defined on the 4000x3000 frame" in text
+    assert "no verdict: the target is defined on the 3000x4000 frame (--shape)" in text
     assert "xNumPy" in text and "Quick run" not in text
     assert " met" not in text.replace("NOT met", "")
 

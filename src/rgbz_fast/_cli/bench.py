@@ -98,15 +98,19 @@ def run(args):
     out = c.output_folder(args.out)
     crop = (48, 64) if args.quick else (240, 320)
     crop = (min(crop[0], shape[0]), min(crop[1], shape[1]))
+    if args.numpy_reference and args.no_reference:
+        raise c.CliError("--numpy-reference: times the NumPy reference, which --no-reference "
+                         "leaves out")
     numpy_ref = None
-    if args.numpy_reference and not args.no_reference:
+    if args.numpy_reference:
         numpy_ref = bench.load_numpy_reference(args.numpy_reference, "--numpy-reference")
-    res = bench.run_benchmarks(shape, repeat, args.workers, crop, args.kernels,
-                               not args.no_reference, not args.no_memory, args.quiet,
-                               not args.no_tof_sites, args.chain, numpy_reference=numpy_ref,
-                               quick=args.quick)
-    if not res["results"] and res["tof_sites"] is None:
-        raise c.CliError(f"--kernels: no case matches {','.join(args.kernels)!r}")
+    try:
+        res = bench.run_benchmarks(shape, repeat, args.workers, crop, args.kernels,
+                                   not args.no_reference, not args.no_memory, args.quiet,
+                                   not args.no_tof_sites, args.chain, numpy_reference=numpy_ref,
+                                   quick=args.quick)
+    except bench.NoCase:                  # said before any section runs
+        raise c.CliError(f"--kernels: no case matches {','.join(args.kernels)!r}") from None
     res["command"] = c.command_line(args)
     table = bench.format_table(res)
     print(json_text(res) if args.json else table)     # before the files: kept if a write fails

@@ -32,7 +32,7 @@ from .cases import (FULL_SHAPE, TOF_TARGET_X_NUMPY, OpenCVThreads, build_cases, 
 from .memory import measure_memory
 from .report import QUICK_NOTE, format_chain, format_simulate, format_table, format_tof
 
-__all__ = ["run_benchmarks", "check_shape", "format_table", "format_tof", "format_chain",
+__all__ = ["run_benchmarks", "NoCase", "check_shape", "format_table", "format_tof", "format_chain",
            "format_simulate", "load_numpy_reference", "make_rgb", "measure_memory",
            "tof_sites_benchmark", "colour_chain_benchmark", "simulate_benchmark",
            "FULL_SHAPE", "QUICK_SHAPE", "TARGET_SG_MPIX",
@@ -50,6 +50,13 @@ def check_shape(shape, name="shape"):
         raise ValueError(f"{name}: rows must be a multiple of 12 and columns of 4 (the pattern "
                          f"periods), both >= 24; got {h}x{w}")
     return (h, w)
+
+
+class NoCase(ValueError):
+    """``kernels`` matches no case of :func:`run_benchmarks` (raised before anything runs)."""
+
+    def __init__(self, kernels):
+        super().__init__(f"kernels: no case matches {','.join(kernels)!r}")
 
 
 def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320), kernels=None,
@@ -72,8 +79,13 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
     npix = shape[0] * shape[1]
     load0 = os.getloadavg() if hasattr(os, "getloadavg") else None
     cases, frame = build_cases(shape, ref_crop, numpy_reference)
+    tof_asked = tof_sites and (not kernels or any(k in "tof sites" for k in kernels))
     if kernels:
         cases = [c for c in cases if any(k in case_label(c[0], c[1]) for k in kernels)]
+        if not cases and not tof_asked:
+            raise NoCase(kernels)
+    # 'tof sites' alone: that section only (not OpenCV's speeds nor the peak memory of SG)
+    kernels_only = bool(kernels) and not cases
     results = []
     vs = (lambda a, b: None) if quick else ratio
     cv = opencv_calls(frame) if not quick else None
@@ -98,19 +110,19 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
             ref_mpix = rate_stats(timed(ref_fn, max(1, min(repeat, 3))), ref_pix)["mpix_s"]
         results.append(dict(name=name, **meta, threads=threads, numpy_ref_mpix_s=ref_mpix,
                             vs_numpy=vs(threads["1"]["mpix_s"], ref_mpix), **paired))
-    ocv = opencv_speeds(frame, repeat, workers, npix)
+    ocv = None if kernels_only else opencv_speeds(frame, repeat, workers, npix)
     for r in results:
         for key in ("bilinear", "ea"):
             for label in ("1", "all"):
                 r.setdefault(f"vs_opencv_{key}_{label}", None)
     tof = None
-    if tof_sites and (not kernels or any(k in "tof sites" for k in kernels)):
+    if tof_asked:
         tof = tof_sites_benchmark(shape, repeat, workers, verdict=not quick)
     colour = colour_chain_benchmark(shape, repeat, workers) if chain else None
     sim = simulate_benchmark(shape, repeat, workers, verdict=not quick and tuple(shape) ==
                              FULL_SHAPE) if chain else None
     mem = measure_memory(frame("mask1").data, "mask1", "sg", "float32", workers) \
-        if memory else None
+        if memory and not kernels_only else None
     verdict = not quick and tuple(shape) == FULL_SHAPE
     return {
         "machine": dict(machine_info(), loadavg_before=load0,

@@ -58,32 +58,36 @@ def format_table(res):
                          f"{_f(t1['mpix_s'])} [{_f(t1['mpix_s_lo'])}-{_f(t1['mpix_s_hi'])}]",
                          f"{_f(ta['mpix_s'])} [{_f(ta['mpix_s_lo'])}-{_f(ta['mpix_s_hi'])}]",
                          str(res["workers_all"])] + ([] if quick else ["", "", ""]))
-    w = [max(len(h), *(len(x[i]) for x in rows)) if rows else len(h) for i, h in enumerate(head)]
-    lines.append("")
-    lines.append("  ".join(h.ljust(n) for h, n in zip(head, w)))
-    lines.append("  ".join("-" * n for n in w))
-    lines += ["  ".join(c.ljust(n) for c, n in zip(x, w)) for x in rows]
-    lines.append("")
-    lines.append(f"threads: those of the 'all threads' column (at most {res['workers_all']}; "
-                 "a reconstruction or demosaic call takes one per 262,144 pixels at most).")
-    if quick:
-        lines.append(f"{QUICK_NOTE}: no speed ratios to NumPy or OpenCV and no target "
-                     "verdicts; run without --quick (the 4000x3000 frame) for them.")
-    else:
-        lines.append(
-            "xNumPy: our 1-thread speed / the NumPy reference's (timed on a "
-            f"{res['numpy_reference']['crop'][1]}x{res['numpy_reference']['crop'][0]} crop"
-            + ("" if res["numpy_reference"]["available"] else "; reconstruction: n/a "
-               "without --numpy-reference FILE") + "). xCV: our all-threads speed / OpenCV's "
-            "on the same-size Bayer frame, the median of the per-round ratios of calls "
-            "alternated with ours (so that a change of load hits both; the OpenCV rows "
-            "above are timed on their own)" + ("" if ocv else " (cv2 not installed: n/a)")
-            + ".")
+    if res["results"] or ocv is not None:     # 'tof sites' alone: no kernel table
+        w = [max(len(h), *(len(x[i]) for x in rows)) if rows else len(h)
+             for i, h in enumerate(head)]
+        lines.append("")
+        lines.append("  ".join(h.ljust(n) for h, n in zip(head, w)))
+        lines.append("  ".join("-" * n for n in w))
+        lines += ["  ".join(c.ljust(n) for c, n in zip(x, w)) for x in rows]
+        lines.append("")
+        lines.append(f"threads: those of the 'all threads' column (at most "
+                     f"{res['workers_all']}; a reconstruction or demosaic call takes one per "
+                     "262,144 pixels at most).")
+        if quick:
+            lines.append(f"{QUICK_NOTE}: no speed ratios to NumPy or OpenCV and no target "
+                         "verdicts; run without --quick (the 3000x4000 frame, rows x cols) "
+                         "for them.")
+        else:
+            lines.append(
+                "xNumPy: our 1-thread speed / the NumPy reference's (timed on a "
+                f"{res['numpy_reference']['crop'][0]}x{res['numpy_reference']['crop'][1]} crop"
+                + ("" if res["numpy_reference"]["available"] else "; reconstruction: n/a "
+                   "without --numpy-reference FILE") + "). xCV: our all-threads speed / OpenCV's "
+                "on the same-size Bayer frame, the median of the per-round ratios of calls "
+                "alternated with ours (so that a change of load hits both; the OpenCV rows "
+                "above are timed on their own)" + ("" if ocv else " (cv2 not installed: n/a)")
+                + ".")
     t = res["targets"]
     if "sg_mask1_float32_all_threads_mpix_s" in t:
         if t["target_met"] is None:
-            verdict = (f"no verdict: the target is defined on the {res['target_frame'][1]}x"
-                       f"{res['target_frame'][0]} frame")
+            verdict = (f"no verdict: the target is defined on the {res['target_frame'][0]}x"
+                       f"{res['target_frame'][1]} frame (--shape)")
         else:
             verdict = "met" if t["target_met"] else "NOT met"
         s = (f"target: SG Mask1 float32 all threads {t['sg_mask1_float32_all_threads_mpix_s']:.1f}"
