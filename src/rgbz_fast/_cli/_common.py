@@ -423,6 +423,14 @@ def flag_words(text, parser):
 
 
 # --------------------------------------------------------------------------- running
+def limits_need(args, reading, why):
+    """A CliError when a read limit is given but the command reads no file (``reading``
+    False): the limits had been accepted and applied to nothing. ``why``: what reads none."""
+    for flag, value in (("--max-pixels", args.max_pixels), ("--max-bytes", args.max_bytes)):
+        if value is not None and not reading:
+            raise CliError(f"{flag}: limits the files the command reads; {why}")
+
+
 def limits(args):
     """The read limits of the command (``--max-pixels``, ``--max-bytes``), as the keyword
     arguments of the library's readers."""

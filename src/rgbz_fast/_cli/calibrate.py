@@ -75,6 +75,7 @@ def run(args):
     if args.simulate:
         if args.frames:
             raise c.CliError("give frame files or --simulate, not both")
+        c.limits_need(args, False, "--simulate reads none")
         for flag, given in (("--distances", args.distances is not None),
                             ("--dark", bool(args.dark))):
             if given:                          # the simulated sweep has its own

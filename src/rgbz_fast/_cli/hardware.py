@@ -82,6 +82,8 @@ def run(args):
         config = FixedPointConfig.build(args.fixed_point)
     except (TypeError, ValueError) as exc:
         raise c.CliError(f"--fixed-point: {exc}") from None
+    c.limits_need(args, args.dataset is not None,
+                  "without --dataset it reads none (scikit-image's samples)")
     c.z_patterns([args.pattern], "--pattern")
     pattern = get_pattern(args.pattern)
     images = hw.load_images(args.dataset, args.limit, **c.limits(args))
