@@ -192,9 +192,13 @@ class Pattern:
     def check_shape(self, shape, name="shape"):
         """Raise ValueError unless ``shape`` is a 2-D frame shape holding at least one period."""
         try:
-            shape = tuple(int(s) for s in shape)
-        except (TypeError, ValueError):
-            raise TypeError(f"{name}: expected a (rows, cols) tuple, got {shape!r}") from None
+            ok = all(isinstance(s, (int, np.integer)) and not isinstance(s, (bool, np.bool_))
+                     for s in shape)
+        except TypeError:
+            ok = False
+        if not ok:                  # 4.9 had been truncated to 4, '4' parsed as 4
+            raise TypeError(f"{name}: expected a (rows, cols) tuple of integers, got {shape!r}")
+        shape = tuple(int(s) for s in shape)
         if len(shape) != 2:
             raise ValueError(f"{name}: expected a 2-D (rows, cols) frame shape, got {shape}")
         P, Q = self.period
@@ -298,8 +302,8 @@ def get_pattern(pattern):
         raise TypeError(f"pattern: expected a Pattern, a preset name or a tile string, "
                         f"got {type(pattern).__name__}")
     key = pattern.strip().lower()
-    base, _, phase = key.partition("_")
-    if base in _PRESETS and (not phase or phase.upper() in BAYER_PHASES):
+    base, sep, phase = key.partition("_")
+    if base in _PRESETS and (not sep or phase.upper() in BAYER_PHASES):
         return _PRESETS[base](phase.upper() or "GRBG")
     if key.upper() in BAYER_PHASES:
         return bayer(key.upper())

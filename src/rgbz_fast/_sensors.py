@@ -154,6 +154,9 @@ class ColourSensor(_Readout):
         store_number(self, "pixel_pitch_um", lo=0.1, hi=100)
         check_readout(self)
         try:
+            if isinstance(self.qe, (str, bytes)) or any(
+                    isinstance(q, (str, bytes, bool, np.bool_)) for q in self.qe):
+                raise TypeError          # '111' was read digit by digit, True as 1.0
             qe = tuple(float(q) for q in self.qe)
         except (TypeError, ValueError):
             raise TypeError(f"ColourSensor.qe: expected 3 numbers (R, G, B), got {self.qe!r}") \

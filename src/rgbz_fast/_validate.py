@@ -461,11 +461,15 @@ def _real(value):
 
 
 def _bounds(lo, hi, lo_open, hi_open):
+    def num(v):                 # an integer bound in full (2**40, not 1.09951e+12)
+        return f"{v:d}" if isinstance(v, (int, np.integer)) and not isinstance(v, bool) \
+            else f"{v:g}"
+
     parts = []
     if lo is not None:
-        parts.append(f"{'>' if lo_open else '>='} {lo:g}")
+        parts.append(f"{'>' if lo_open else '>='} {num(lo)}")
     if hi is not None:
-        parts.append(f"{'<' if hi_open else '<='} {hi:g}")
+        parts.append(f"{'<' if hi_open else '<='} {num(hi)}")
     return (" " + " and ".join(parts)) if parts else ""
 
 

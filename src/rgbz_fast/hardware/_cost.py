@@ -346,6 +346,9 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
     params = ReconstructParams.build(params)
     config = FixedPointConfig.build(fixed_point if fixed_point is not None
                                     else params.fixed_point)
+    if not pattern.has_z:       # line buffers and a window had been costed for no work
+        raise ValueError(f"pattern: {pattern.name!r} has no Z site; the model reconstructs "
+                         "the Z sites of an RGB-Z pattern")
     P, Q = pattern.period
     if max(P, Q) > LIMITS["max_period"]:
         raise ValueError(f"pattern: the streaming model holds periods up to "

@@ -225,7 +225,7 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
     pattern = get_pattern(pattern)
     sensor = ColourSensor() if sensor is None else sensor
     if not isinstance(sensor, ColourSensor):
-        raise TypeError(f"colour_sensor: expected a ColourSensor, got {type(sensor).__name__}")
+        raise TypeError(f"sensor: expected a ColourSensor, got {type(sensor).__name__}")
     seed = check_seed(seed, "seed")
     dn, _, meta = _colour_frames(scene, pattern, sensor, seed, check_flag(noise, "noise"),
                                  _check_optics(optics), check_rng_version(rng_version), workers,
@@ -361,7 +361,7 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
     pattern = get_pattern(pattern)
     sensor = ToFSensor() if sensor is None else sensor
     if not isinstance(sensor, ToFSensor):
-        raise TypeError(f"tof_sensor: expected a ToFSensor, got {type(sensor).__name__}")
+        raise TypeError(f"sensor: expected a ToFSensor, got {type(sensor).__name__}")
     seed = check_seed(seed, "seed")
     optics = _check_optics(optics)
     rng_version = check_rng_version(rng_version)
