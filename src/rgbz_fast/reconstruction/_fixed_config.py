@@ -38,7 +38,11 @@ class FixedPointConfig:
     The defaults are the narrowest configuration found to keep, with a margin,
     the model within 1 LSB of float64 at >= 99.9 % of the Z sites and within
     0.05 dB of its CFA PSNR, for every method on Mask1 and Mask2 (learned: every
-    Bayer phase of both) with 11-bit frames (tools/hardware_default.py, with
+    Bayer phase of both) with 11-bit frames, at the default ``sigma_rel=0.5``
+    (a smaller relative floor of eq. 7, the paper's 0 among them, takes G / sigma
+    beyond the exponent's range: EDICentral on Mask1 then moves about a quarter of
+    the Z sites of Kodak by more than 1 LSB, and ``reconstruct`` warns)
+    (tools/hardware_default.py, with
     ``--method learned`` for the learned filters' fields;
     docs/reports/hardware.md gives the searches and the numbers). Wider frames keep the relative error, so their
     error in LSB grows with the range: :meth:`for_bit_depth` widens the
