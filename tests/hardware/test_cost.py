@@ -127,3 +127,39 @@ def test_a_shared_datapath_holds_each_plans_operators(method):
                 assert units[kind] >= n, (kind, units[kind], n)
     if "exp" in c.tables:
         assert units["exp_lookup"] == c.tables["exp"]["reads_per_site"]
+
+
+#: a value of every field other than its default
+_OTHER = {"exp": "table", "exp_table_size": 8, "exp_bits": 12, "exp_range_bits": 5,
+          "recip": "table", "recip_table_size": 64, "recip_bits": 14, "ratio_bits": 10,
+          "sigma_bits": 2, "alpha_bits": 10, "weight_bits": 17, "hash_norm_bits": 19,
+          "hash_bits": 17, "hash_const_bits": 15, "tap_bits": 16}
+
+
+@pytest.mark.parametrize("method", ["bilinear", "bi", "edi_central", "edi_line", "sg",
+                                    "learned"])
+def test_fields_used_are_those_that_reach_the_datapath(method, rng):
+    """FIELDS_USED (what `rgbz-fast hardware --fixed-point` and its sweep take): a field
+    outside it changes neither the cost nor a bit of the result; one inside it changes the
+    cost (register_bits, a bound, is in every set)."""
+    import dataclasses
+
+    import rgbz_fast as rz
+    from rgbz_fast.hardware import FIELDS_USED, FixedPointConfig
+
+    base = FixedPointConfig()
+    data = rng.integers(0, 2048, (24, 28)).astype(np.uint16)
+    for field, value in _OTHER.items():
+        cfg = dataclasses.replace(base, **{field: value})
+        costs = [(c.table_bits, c.datapath_bits, c.registers) for c in
+                 (hardware_cost(p, method, fixed_point=f) for p in ("mask1", "mask2")
+                  for f in (base, cfg))]
+        changed = costs[0] != costs[1] or costs[2] != costs[3]
+        if field in FIELDS_USED[method]:
+            assert changed, field
+            continue
+        assert not changed, field
+        for p in ("mask1", "mask2"):
+            a, b = (rz.reconstruct(data, method, pattern=p, precision="fixed", fixed_point=f)
+                    for f in (base, cfg))
+            assert np.array_equal(a, b), (field, p)

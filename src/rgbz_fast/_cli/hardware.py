@@ -73,7 +73,7 @@ def run(args):
     from .._devtools import hardware as hw
     from .._devtools._common import json_text, progress
     from .._patterns import get_pattern
-    from ..hardware import FixedPointConfig
+    from ..hardware import FIELDS_USED, FixedPointConfig
 
     out = c.output_folder(args.out)
     c.check_report_outputs(out, ["hardware.md", "hardware.json"]
@@ -82,6 +82,12 @@ def run(args):
         config = FixedPointConfig.build(args.fixed_point)
     except (TypeError, ValueError) as exc:
         raise c.CliError(f"--fixed-point: {exc}") from None
+    unused = [k for k in (args.fixed_point or {}) if k not in FIELDS_USED[args.method]]
+    if unused:                   # it would be recorded in hardware.json and change nothing
+        raise c.CliError(f"--fixed-point: {unused[0]} does not reach {args.method}'s datapath "
+                         f"(it takes {', '.join(FIELDS_USED[args.method])})")
+    if args.sweep and args.method == "bilinear":
+        raise c.CliError("--sweep: bilinear is exact, with no width to move")
     c.limits_need(args, args.dataset is not None,
                   "without --dataset it reads none (scikit-image's samples)")
     c.z_patterns([args.pattern], "--pattern")

@@ -180,7 +180,12 @@ SWEEP_LEARNED = {
 def sweep_configs(base, method="sg"):
     """The base configuration, each field of SWEEP (``method="learned"``: SWEEP_LEARNED) moved
     alone (values a field cannot take are left out), the other table modes, and every width
-    narrowed and widened by 2 bits together: [(label, config)]."""
+    narrowed and widened by 2 bits together: [(label, config)]. Only the fields that reach
+    the method's datapath (:data:`rgbz_fast.hardware.FIELDS_USED`) move: bilinear's sweep is
+    its default alone."""
+    from ..hardware import FIELDS_USED
+
+    used = set(FIELDS_USED.get(method, FIELDS_USED["sg"]))
     out = [("default", base)]
     if method == "learned":
         for field, steps in SWEEP_LEARNED.items():
@@ -198,6 +203,8 @@ def sweep_configs(base, method="sg"):
                 continue
         return out
     for field, steps in SWEEP.items():
+        if field not in used:          # a field the method's datapath does not take
+            continue
         for step in steps:
             cur = getattr(base, field)
             v = int(cur * step) if field.endswith("_table_size") else cur + step
@@ -205,11 +212,15 @@ def sweep_configs(base, method="sg"):
                 out.append((f"{field}={v}", base.replace(**{field: v})))
             except ValueError:
                 continue
-    for e in ("table", "pwl"):
-        for r in ("table", "pwl"):
+    for e in ("table", "pwl") if "exp" in used else (base.exp,):
+        for r in ("table", "pwl") if "recip" in used else (base.recip,):
             if (e, r) != (base.exp, base.recip):
-                out.append((f"exp={e}, recip={r}", base.replace(exp=e, recip=r)))
-    widths = ("exp_bits", "recip_bits", "ratio_bits", "alpha_bits", "weight_bits")
+                out.append((f"exp={e}, recip={r}" if "exp" in used else f"recip={r}",
+                            base.replace(exp=e, recip=r)))
+    widths = [f for f in ("exp_bits", "recip_bits", "ratio_bits", "alpha_bits", "weight_bits")
+              if f in used]
+    if not widths:
+        return out
     for step in (-2, 2):
         try:
             out.append((f"every width {step:+d}", base.replace(

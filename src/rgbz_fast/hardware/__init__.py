@@ -12,8 +12,8 @@ specifies the datapath and gives the numbers.
 from ..reconstruction._fixed import (ALL_FIXED_METHODS, FIXED_METHODS, LIMITS, Register,
                                      register_widths)
 from ..reconstruction._fixed_config import TABLE_MODES, FixedPointConfig
-from ._cost import BRAM18_BITS, HardwareCost, Unit, bram18_blocks, hardware_cost
+from ._cost import BRAM18_BITS, FIELDS_USED, HardwareCost, Unit, bram18_blocks, hardware_cost
 
 __all__ = ["hardware_cost", "HardwareCost", "Unit", "FixedPointConfig", "TABLE_MODES",
            "FIXED_METHODS", "ALL_FIXED_METHODS", "LIMITS", "Register", "register_widths",
-           "bram18_blocks", "BRAM18_BITS"]
+           "bram18_blocks", "BRAM18_BITS", "FIELDS_USED"]

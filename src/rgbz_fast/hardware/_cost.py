@@ -31,7 +31,7 @@ from ..reconstruction._fixed import (ALL_FIXED_METHODS, LIMITS, _group_counts, f
 from ..reconstruction._fixed_config import FixedPointConfig
 from ..reconstruction._plans import build_plans
 
-__all__ = ["HardwareCost", "Unit", "hardware_cost", "bram18_blocks", "BRAM18_BITS"]
+__all__ = ["HardwareCost", "Unit", "hardware_cost", "bram18_blocks", "BRAM18_BITS", "FIELDS_USED"]
 
 BRAM18_BITS = 18 * 1024
 #: the aspect ratios of an 18 Kbit block RAM: (depth, width)
@@ -39,6 +39,21 @@ _BRAM18_SHAPES = ((16384, 1), (8192, 2), (4096, 4), (2048, 9), (1024, 18), (512,
 #: unit kinds, in report order
 KINDS = ("sub", "abs", "add", "cmp", "mul", "cmul", "shift", "lzd", "exp_lookup",
          "recip_lookup")
+
+
+_PLAN_FIELDS = ("exp", "exp_table_size", "exp_bits", "exp_range_bits", "recip",
+                "recip_table_size", "recip_bits", "ratio_bits", "sigma_bits", "alpha_bits",
+                "weight_bits", "register_bits")
+#: the FixedPointConfig fields that reach each method's datapath (the others leave its
+#: result and its cost as they are: bilinear is exact, BI has no eq. 7, learned its own model);
+#: register_bits bounds every register of all of them
+FIELDS_USED = {
+    "bilinear": ("register_bits",),
+    "bi": ("recip", "recip_table_size", "recip_bits", "alpha_bits", "weight_bits",
+           "register_bits"),
+    "edi_central": _PLAN_FIELDS, "edi_line": _PLAN_FIELDS, "sg": _PLAN_FIELDS,
+    "learned": ("hash_norm_bits", "hash_bits", "hash_const_bits", "tap_bits", "register_bits"),
+}
 
 
 def bram18_blocks(depth, width):
