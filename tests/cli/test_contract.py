@@ -414,6 +414,11 @@ CLI_ROWS = [
       "--fixed-point: tap_bits does not reach sg's datapath"),
     C("cli.hardware-sweep-bilinear", ("hardware", "--method", "bilinear", "--sweep"),
       "--sweep: bilinear is exact, with no width to move"),
+    C("cli.hardware-learned-no-filters", ("hardware", "--method", "learned", "--pattern",
+                                          "rows"),
+      "filters: none fits pattern 'rows'; filters ship for mask1, mask2 and their other Bayer "
+      "phases; fit some with rgbz-fast train and pass filters=FILE (a library argument: "
+      "rgbz-fast hardware has no --filters)"),
     C("cli.hardware-out-under-file", ("hardware", "--out", "{d}/small.png/x/y"),
       "--out: '{d}/small.png/x/y': '{d}/small.png' is not a folder"),
     C("cli.calibrate-shape-huge", ("calibrate", "--simulate", "--shape", "100000x100000",

@@ -367,6 +367,21 @@ def raw_option_words(setting):
     return f'"{setting.name}"'
 
 
+def _flag_of(parser):
+    """:func:`flag` for the command of ``parser``: a setting the command has no flag for is
+    named as the library's argument, with the command's lack of it (the message had told
+    `rgbz-fast hardware` users to pass --grey or --filters, which it does not take)."""
+    options = set(parser._option_string_actions)
+
+    def spell(setting):
+        words = flag(setting)
+        if words.startswith("--") and words.split()[0] not in options:
+            return (f"{setting.python} (a library argument: rgbz-fast {parser.prog.split()[-1]}"
+                    f" has no {words.split()[0]})")
+        return words
+    return spell
+
+
 def explain(exc, parser=None):
     """The message of an error in command-line words: the settings a library error asks for
     are given as flags (pass --phase, not phase=), or as keys of the --raw-options file when
@@ -378,6 +393,8 @@ def explain(exc, parser=None):
     error = getattr(exc, "error", None) or exc
     if isinstance(error, ParameterError):
         spell = raw_option_words if "raw_options" in error.settings else flag
+        if parser is not None and spell is flag:
+            spell = _flag_of(parser)
         return " ".join(error.render(spell).split())
     return str(exc) if parser is None else flag_words(str(exc), parser)
 
