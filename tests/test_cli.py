@@ -352,7 +352,7 @@ def test_raw_options_file_and_cli_words(tmp_path, capsys):
                  "--quiet"]) == 2
     err = capsys.readouterr().err
     assert err.strip().startswith(
-        "rgbz-fast reconstruct: error: shape: openisp_test.RAW does not record its size, its "
+        "rgbz-fast reconstruct: error: --shape: openisp_test.RAW does not record its size, its "
         "CFA phase, its black level or its white level; pass --shape ROWSxCOLS, --phase")
 
 
@@ -463,8 +463,8 @@ def test_evaluate_skip_bad_and_limit(tmp_path, capsys):
     assert main(base + ["--skip-bad"]) == 0
     cap = capsys.readouterr()
     skipped = [line for line in cap.err.splitlines() if "skipped" in line]
-    assert len(skipped) == 2 and "skipped b: dataset: cannot read" in skipped[0]
-    assert "skipped c: dataset: " in skipped[1] and "--grey" in skipped[1]
+    assert len(skipped) == 2 and "skipped b: --dataset: cannot read" in skipped[0]
+    assert "skipped c: --dataset: " in skipped[1] and "--grey" in skipped[1]
     assert "Skipped 2 image(s)" in (tmp_path / "o" / "summary.md").read_text()
     for bad in ("0", "-1"):
         with pytest.raises(SystemExit):
@@ -574,7 +574,7 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
                  "learned", "--metrics", "cfa_psnr", "--filters", str(out), "--out",
                  str(tmp_path / "res2"), "--no-plots", "--quiet", "--processes", "1"]) == 2
     err = capsys.readouterr().err
-    assert re.match(r"^rgbz-fast evaluate: error: filters: none of the given learned filters "
+    assert re.match(r"^rgbz-fast evaluate: error: --filters: none of the given learned filters "
                     r"fits pattern 'rows' \(given: mask2\)", err)
     assert main(["train", "--dataset", str(tmp_path / "nope"), "--pattern", "mask1",
                  "--out", str(tmp_path / "g.npz")]) == 2
@@ -646,7 +646,7 @@ def test_read_limits_reach_every_reader_as_arguments(tmp_path, capsys, monkeypat
     err = capsys.readouterr().err.splitlines()
     assert [line.split(": ", 2)[1] for line in err[:2]] == ["skipped a", "skipped b"]
     assert all(line.endswith(advice) for line in err[:2])
-    assert err[-1].startswith("rgbz-fast evaluate: error: dataset: none of the 2 image(s)")
+    assert err[-1].startswith("rgbz-fast evaluate: error: --dataset: none of the 2 image(s)")
     assert main(["train", "--dataset", str(ds), "--max-pixels", "100", "--out",
                  str(tmp_path / "t.npz"), "--quiet"]) == 2
     assert capsys.readouterr().err.strip().endswith(advice)

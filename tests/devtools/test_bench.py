@@ -259,7 +259,7 @@ def test_tradeoff_cli(capsys, tmp_path):
     assert main(["tradeoff", "--quick", "--quiet", "--dataset", str(tmp_path / "none")]) == 2
     err = capsys.readouterr().err.splitlines()
     assert err[-2].startswith("rgbz-fast tradeoff: error: --methods: unknown nope")
-    assert err[-1].startswith("rgbz-fast tradeoff: error: dataset: ")
+    assert err[-1].startswith("rgbz-fast tradeoff: error: --dataset: ")
 
 
 def test_pareto_front():

@@ -142,7 +142,7 @@ def test_bad_tile_fails_before_any_work(tmp_path, capsys, monkeypatch):
     code = main(["pattern-study", "--tiles", "ZRGR/BGBG,ZR/RG", "--out", str(tmp_path / "o"),
                  "--quiet"])
     err = capsys.readouterr().err
-    assert code == 2 and "pattern-study: error: tiles: the colour sites of 'ZR/RG'" in err
+    assert code == 2 and "pattern-study: error: --tiles: the colour sites of 'ZR/RG'" in err
     assert not (tmp_path / "o").exists()
 
 

@@ -395,7 +395,8 @@ def explain(exc, parser=None):
         spell = raw_option_words if "raw_options" in error.settings else flag
         if parser is not None and spell is flag:
             spell = _flag_of(parser)
-        return " ".join(error.render(spell).split())
+        text = " ".join(error.render(spell).split())
+        return text if parser is None else _leading_flag(text, _options(parser))
     return str(exc) if parser is None else flag_words(str(exc), parser)
 
 
@@ -413,16 +414,29 @@ def os_error_words(exc, args):
     return f"{flag}: {path}: {exc.strerror or exc}"
 
 
-def flag_words(text, parser):
-    """``text`` with each ``name=value`` whose name is an option of ``parser`` written as
-    that option: ``noise=True`` -> ``--noise``, ``linearise=False`` -> ``--no-linearise``,
-    ``crop=300`` -> ``--crop 300``, ``filters=`` -> ``--filters``. Other words are left as
-    they are (a library message that names a parameter the command does not have)."""
+def _options(parser):
+    """{dest: (its long option strings, its action)} of the options of ``parser``."""
     options = {}
     for action in parser._actions:
         longs = [o for o in action.option_strings if o.startswith("--")]
         if longs:
             options[action.dest] = (longs, action)
+    return options
+
+
+def _leading_flag(text, options):
+    """The parameter ``text`` starts with written as the command's flag, when the command
+    gives it by one ('width: ...' from the library is the command's '--width: ...')."""
+    name = text.split(": ", 1)[0]
+    return f"{options[name][0][0]}{text[len(name):]}" if name in options else text
+
+
+def flag_words(text, parser):
+    """``text`` with each ``name=value`` whose name is an option of ``parser`` written as
+    that option: ``noise=True`` -> ``--noise``, ``linearise=False`` -> ``--no-linearise``,
+    ``crop=300`` -> ``--crop 300``, ``filters=`` -> ``--filters``. Other words are left as
+    they are (a library message that names a parameter the command does not have)."""
+    options = _options(parser)
 
     def spell(m):
         name, value = m.group(1), m.group(2)
@@ -436,7 +450,7 @@ def flag_words(text, parser):
     if not options:
         return text
     names = "|".join(sorted(map(re.escape, options), key=len, reverse=True))
-    return re.sub(rf"(?<![\w.-])({names})=([^\s,;)]*)", spell, text)
+    return _leading_flag(re.sub(rf"(?<![\w.-])({names})=([^\s,;)]*)", spell, text), options)
 
 
 # --------------------------------------------------------------------------- running
