@@ -653,3 +653,32 @@ def test_read_limits_reach_every_reader_as_arguments(tmp_path, capsys, monkeypat
     assert "RGBZ_FAST_MAX_PIXELS" not in os.environ
     assert main(["simulate", str(ds / "a.png"), "--max-pixels", "1024", "--out",
                  str(tmp_path / "f"), "--quiet"]) == 0
+
+
+def test_a_flag_repeated_as_it_is_means_the_same(tmp_path, capsys):
+    """--quiet --quiet is harmless (scripts append common flags); --noise --no-noise is not."""
+    img = tmp_path / "a.png"
+    import imageio.v3 as iio
+
+    iio.imwrite(img, np.random.default_rng(0).integers(0, 256, (16, 16, 3), dtype=np.uint8))
+    assert main(["simulate", str(img), "--quiet", "--quiet", "--out", str(tmp_path / "o")]) == 0
+    with pytest.raises(SystemExit) as e:             # a usage error, after the usage lines
+        main(["simulate", str(img), "--noise", "--no-noise", "--out", str(tmp_path / "o")])
+    assert e.value.code == 2
+    assert "--noise, --no-noise: given twice" in capsys.readouterr().err
+
+
+def test_opcount_image_size_is_checked_per_pattern(tmp_path, capsys):
+    """A 7x40 image counts Mask1 (its crop holds interior Z sites; any side under 16 had been
+    refused) and is refused for Mask2 by name; mask1_rggb gets Table 1's Mask1 row."""
+    import imageio.v3 as iio
+
+    img = tmp_path / "small.png"
+    iio.imwrite(img, np.random.default_rng(0).integers(0, 256, (7, 40, 3), dtype=np.uint8))
+    assert main(["opcount", "--image", str(img), "--patterns", "mask1_rggb", "--methods", "sg",
+                 "--text", "--shape", "32x32"]) == 0
+    out = capsys.readouterr().out
+    assert "/ 72 ×0.56" in out
+    assert main(["opcount", "--image", str(img), "--patterns", "mask2", "--methods", "sg"]) == 2
+    assert ("--image: small.png is 7x40; pattern 'mask2' needs a crop of at least 8x8 whole "
+            "periods") in capsys.readouterr().err

@@ -269,6 +269,9 @@ def test_config_reports_the_threads_a_call_takes(monkeypatch):
     assert f"threads       : {check_workers(None)} per call by default" in text
     if _kernels.have_openmp():
         assert "OMP_NUM_THREADS=1 is not used: pass workers=" in text
+    # config reports, it does not refuse: a stack size no thread could take is for a call
+    monkeypatch.setenv("OMP_STACKSIZE", "4000G")
+    assert rz.config()["default_workers"] == (os.cpu_count() or 1)
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v and /proc: Linux")
@@ -393,3 +396,12 @@ def test_copies_for_worker_processes_keep_their_arrays_read_only(copier):
     back = clone(frame)
     np.testing.assert_array_equal(back.data, frame.data)
     assert back.pattern == frame.pattern and back.bit_depth == frame.bit_depth
+    # the filters too: their identity is a digest computed once, so a writeable copy could
+    # change its weights and still compare equal to (and share a cache key with) the shipped
+    from rgbz_fast.reconstruction import default_filters, default_z_filters
+
+    for filters in (default_filters("mask1"), default_z_filters("mask1")):
+        c = clone(filters)
+        with pytest.raises(ValueError, match="read-only"):
+            c.weights[(0,) * c.weights.ndim] = 0
+        assert c == filters

@@ -8,7 +8,6 @@ import sys
 
 from . import _build_config as bc
 from . import _kernels
-from ._threads import check_workers
 
 __all__ = ["show_config", "config"]
 
@@ -30,7 +29,8 @@ def config():
         "openmp": bool(_kernels.have_openmp()),
         "openmp_version": bc.OPENMP_VERSION or None,
         "max_threads": int(_kernels.max_threads()),
-        "default_workers": check_workers(None),
+        "default_workers": os.cpu_count() or 1,        # what workers=None runs (unchecked:
+                                                       # config reports, it does not refuse)
         "cpu_count": os.cpu_count(),
     }
 

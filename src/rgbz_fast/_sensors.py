@@ -154,10 +154,12 @@ class ColourSensor(_Readout):
         store_number(self, "pixel_pitch_um", lo=0.1, hi=100)
         check_readout(self)
         try:
-            if isinstance(self.qe, (str, bytes)) or any(
-                    isinstance(q, (str, bytes, bool, np.bool_)) for q in self.qe):
-                raise TypeError          # '111' was read digit by digit, True as 1.0
-            qe = tuple(float(q) for q in self.qe)
+            if isinstance(self.qe, (str, bytes)):
+                raise TypeError          # '111' was read digit by digit
+            given = tuple(self.qe)       # once: an iterator is read once
+            if any(isinstance(q, (str, bytes, bool, np.bool_)) for q in given):
+                raise TypeError          # True had been read as 1.0
+            qe = tuple(float(q) for q in given)
         except (TypeError, ValueError):
             raise TypeError(f"ColourSensor.qe: expected 3 numbers (R, G, B), got {self.qe!r}") \
                 from None

@@ -212,7 +212,7 @@ def as_array(value, name, **kwargs):
 
 def read_only_state(obj, state):
     """``obj.__setstate__`` of a class whose arrays are read-only: the ``state`` of a pickle or
-    a deep copy restored with its arrays (and those in its tuples) read-only again. NumPy
+    a deep copy restored with its arrays (and those in its tuples and dicts) read-only again. NumPy
     unpickles arrays writeable and a deep copy copies them writeable, which let a copy's
     values be changed past the checks its constructor made."""
     def freeze(v):
@@ -220,6 +220,9 @@ def read_only_state(obj, state):
             v.setflags(write=False)
         elif isinstance(v, tuple):
             for x in v:
+                freeze(x)
+        elif isinstance(v, dict):          # a frame's meta (read_raw's clipped mask)
+            for x in v.values():
                 freeze(x)
 
     for v in state.values():

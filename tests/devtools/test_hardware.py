@@ -3,6 +3,8 @@ the report, the sweep and its Pareto front, on small images."""
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
@@ -147,3 +149,10 @@ def test_the_learned_default_meets_the_target_on_real_images(source):
         err = H.measure_error(H.prepare_cases(imgs, pattern, "learned"), "learned",
                               FixedPointConfig())
         assert H.meets_target(err), (pattern, err)
+
+
+def test_json_text_is_strict_inside_arrays():
+    from rgbz_fast._devtools._common import json_text
+
+    assert json.loads(json_text({"a": np.array([np.nan, 1.0]), "b": float("inf")})) == \
+        {"a": [None, 1.0], "b": None}

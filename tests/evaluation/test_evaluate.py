@@ -386,11 +386,11 @@ def test_the_header_says_which_images_were_raw_files():
     assert ev.Results(rows, cfg).label().startswith(mosaic)
     mixed = ev.Results(rows, cfg, raw_images=["chart"])
     assert mixed.label().startswith("2 RGB images (noise-free, 11-bit) and 1 raw file at "
-                                    "their own bit depth, noise and lens, demosaic")
+                                    "its own bit depth, noise and lens, demosaic")
     assert "2 RGB images (noise-free, 11-bit) and 1 raw file" in mixed.summary_markdown()
     assert "and 1 raw file" in mixed.plain_table()
     raw = ev.Results(rows[:1], cfg, raw_images=["chart", "skipped_one"])
-    assert raw.label().startswith("raw files at their own bit depth, noise and lens, demosaic")
+    assert raw.label().startswith("raw file at its own bit depth, noise and lens, demosaic")
     back = ev.Results.from_json(mixed.to_json())
     assert back.raw_images == ["chart"] and back.label() == mixed.label()
     with pytest.raises(TypeError, match="raw_images"):
@@ -413,3 +413,36 @@ def test_evaluate_lists_the_raw_files_it_read(tmp_path):
                                     crop=4))
     assert res.raw_images == ["b"]
     assert res.label().startswith("1 RGB image (noise-free, 11-bit) and 1 raw file")
+
+
+def test_raw_options_naming_no_file_of_the_folder_are_warned_about(tmp_path):
+    """A misspelt key's options apply to no file: said (a warning), not refused, since one
+    options file may serve several folders (data/shared_raw_options.json); a dataset of one
+    file of a folder takes a file shared by the folder without a word."""
+    import imageio.v3 as iio
+
+    iio.imwrite(tmp_path / "a.png", np.zeros((16, 16, 3), np.uint8))
+    opts = {"A.png": {"phase": "RGGB"}, "sub/a.png": {"phase": "RGGB"}}
+    with pytest.warns(UserWarning, match=r"^raw_options: 'A.png', 'sub/a.png' name no image "
+                                         r"file of .*; their options apply to no file"):
+        srcs = rio.folder_dataset(tmp_path, raw_options=opts)
+    assert [s.is_raw for s in srcs] == [False]
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rio.folder_dataset(tmp_path / "a.png", raw_options=opts)
+
+
+def test_the_lens_is_the_rgb_images_in_a_mixed_header():
+    """--optics applies to the RGB images the evaluation mosaics, not to a raw file."""
+    from rgbz_fast.simulation import Optics
+
+    cfg = ev.EvalConfig(patterns=("mask1",), methods=("bi",), metrics=("cpsnr",),
+                        optics=Optics())
+    rows = [{"image": n, "pattern": "mask1", "method": "bi", "metric": "cpsnr", "value": 30.0}
+            for n in ("chart", "kodim01")]
+    label = ev.Results(rows, cfg, raw_images=["chart"]).label()
+    assert label.startswith("1 RGB image (noise-free, 11-bit, optics f/2.8) and 1 raw file at "
+                            "its own bit depth, noise and lens, demosaic")
+    assert ev.Results(rows, cfg).label().endswith("optics f/2.8")

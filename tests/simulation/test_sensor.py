@@ -467,3 +467,13 @@ def test_bad_input_to_simulate():
         ColourSensor().electrons_per_unit(0.0)
     with pytest.raises(ValueError, match="depth"):
         Scene(np.full((4, 4, 3), 0.5), depth=np.full((4, 4), -2.0))
+
+
+def test_quantum_efficiencies_from_any_iterable():
+    """An iterator is read once: the check of the entries' types must not use it up (it had
+    left nothing for the conversion, and the error blamed the values)."""
+    from rgbz_fast.simulation import ColourSensor
+
+    assert ColourSensor(qe=iter([0.5, 0.6, 0.4])).qe == (0.5, 0.6, 0.4)
+    assert ColourSensor(qe=(q for q in (0.5, 0.6, 0.4))).qe == (0.5, 0.6, 0.4)
+    assert ColourSensor(qe=np.array([0.5, 0.6, 0.4], np.float32)).qe[0] == 0.5

@@ -454,6 +454,34 @@ def flag_words(text, parser):
 
 
 # --------------------------------------------------------------------------- running
+def options_given(parser, argv):
+    """(spelling, action) of each option of ``argv`` (a command's arguments, up to ``--``),
+    abbreviations resolved as argparse resolves them (a unique prefix)."""
+    longs = {o: a for o, a in parser._option_string_actions.items() if o.startswith("--")}
+    for token in argv:
+        if token == "--":
+            break
+        if not token.startswith("--"):
+            continue
+        name = token.split("=", 1)[0]
+        action = longs.get(name)
+        if action is None:
+            hits = {a for o, a in longs.items() if o.startswith(name)}
+            action = hits.pop() if len(hits) == 1 else None
+        if action is not None:
+            yield name, action
+
+
+def given(args, dest):
+    """Whether the command line gave the option of ``dest`` (not: whether its value differs
+    from the default, which an explicit default hides)."""
+    argv = getattr(args, "argv", None)
+    if argv is None:
+        return False
+    rest = argv[argv.index(args.command) + 1:] if args.command in argv else argv
+    return any(a.dest == dest for _, a in options_given(args.parser, rest))
+
+
 def limits_need(args, reading, why):
     """A CliError when a read limit is given but the command reads no file (``reading``
     False): the limits had been accepted and applied to nothing. ``why``: what reads none."""
@@ -515,8 +543,8 @@ def _check_writable_folder(out):
     entry: tried by making and removing a temporary folder there (nothing is left)."""
     import tempfile
 
-    p = Path(os.path.abspath(out))
-    while not _exists(p, "--out"):
+    p = Path(out)                   # not normalised: 'link/..' is where the link leads
+    while not _exists(p, "--out") and p != p.parent:
         p = p.parent
     if not p.is_dir():
         raise CliError(f"--out: {str(out)!r}: {str(p)!r} is not a folder")

@@ -85,25 +85,18 @@ def _one_line_warnings(command):
 
 
 def _given_twice(parser, argv):
-    """The first option of ``argv`` (a command's arguments) given twice whose action keeps one
-    value (argparse lets the last win, silently; ``--noise`` and ``--no-noise`` are one), with
-    the spellings used, or None. Abbreviations count as the option they stand for."""
-    longs = {o: a for o, a in parser._option_string_actions.items() if o.startswith("--")}
+    """The first option of ``argv`` (a command's arguments) given twice where only the last
+    would apply (argparse lets it win, silently; ``--noise`` and ``--no-noise`` are one
+    option), with the spellings used, or None. A flag that takes no value repeated as it is
+    (``--quiet --quiet``) means the same twice and passes; appending options pass."""
     seen = {}
-    for token in argv:
-        if token == "--":
-            break
-        if not token.startswith("--"):
-            continue
-        name = token.split("=", 1)[0]
-        action = longs.get(name)
-        if action is None:                   # a unique prefix, as argparse takes it
-            hits = {a for o, a in longs.items() if o.startswith(name)}
-            action = hits.pop() if len(hits) == 1 else None
-        if action is None or isinstance(action, (argparse._AppendAction, argparse._HelpAction,
-                                                 argparse._CountAction)):
+    for name, action in _common.options_given(parser, argv):
+        if isinstance(action, (argparse._AppendAction, argparse._HelpAction,
+                               argparse._CountAction)):
             continue
         if action in seen:
+            if seen[action] == name and action.nargs == 0:
+                continue
             return seen[action] if seen[action] == name else f"{seen[action]}, {name}"
         seen[action] = name
     return None

@@ -174,14 +174,8 @@ def run(args):
     if args.raw_options is not None:
         raw_options = raw_options_file(args.raw_options)
     if args.dataset:
-        try:
-            dataset = folder_dataset(args.dataset, args.limit, raw_options, grey=args.grey,
-                                     **c.limits(args))
-        except ValueError as exc:           # the library's parameter is this file's content
-            if not str(exc).startswith("raw_options: "):
-                raise
-            raise c.CliError(f"--raw-options: {args.raw_options}: "
-                             f"{str(exc).removeprefix('raw_options: ')}") from None
+        dataset = folder_dataset(args.dataset, args.limit, raw_options, grey=args.grey,
+                                 **c.limits(args))
     else:
         dataset = sample_dataset()[:args.limit]
     _check_dataset_options(args, dataset)

@@ -34,7 +34,7 @@ def run(args):
     from .._patterns import get_pattern
 
     opcount = c.tool("opcount")
-    if args.quick and args.shape != args.parser.get_default("shape"):
+    if args.quick and c.given(args, "shape"):
         raise c.CliError("--shape: --quick counts on a 32x32 frame; give one of them")
     shape = (32, 32) if args.quick else c.made_shape(args, args.shape)
     out = c.output_folder(args.out)
@@ -43,10 +43,15 @@ def run(args):
         if m in methods[:i]:
             raise c.CliError(f"--methods: {args.methods[i]!r} is given twice (as {m!r})")
     image, image_name = _image(args.image)
-    if image is not None and min(image.shape[:2]) < MIN_IMAGE:
-        raise c.CliError(f"--image: {image_name} is {image.shape[0]}x{image.shape[1]}; the "
-                         f"counts need at least {MIN_IMAGE}x{MIN_IMAGE} pixels")
     pats = c.z_patterns(args.patterns)
+    if image is not None:
+        for p in pats:
+            need = _image_need(get_pattern(p))
+            if any(min(s, 128) // per * per < n for s, per, n in
+                   zip(image.shape[:2], get_pattern(p).period, need)):
+                raise c.CliError(f"--image: {image_name} is {image.shape[0]}x"
+                                 f"{image.shape[1]}; pattern {p!r} needs a crop of at least "
+                                 f"{need[0]}x{need[1]} whole periods")
     rows = opcount.opcount_table(methods, args.patterns, precision=args.precision,
                                  shape=shape, seed=args.seed, image=image, image_name=image_name)
     tof = opcount.count_tof_operations()
@@ -65,8 +70,11 @@ def run(args):
     return 0
 
 
-#: the smallest --image: its crop holds interior Z sites of every preset (Mask2: 4x4 tiles)
-MIN_IMAGE = 16
+def _image_need(pattern):
+    """The smallest crop (rows, cols) of whole periods whose interior (2 pixels from each
+    border, the 5x5 window) holds a Z site of ``pattern`` wherever the crop starts."""
+    P, Q = pattern.period
+    return (-(-(P + 4) // P) * P, -(-(Q + 4) // Q) * Q)
 
 
 def _image(spec):

@@ -44,7 +44,7 @@ def run(args):
     from ..simulation import load_scene, simulate
 
     pattern = get_pattern(args.pattern)
-    if not args.noise and args.seed != args.parser.get_default("seed"):
+    if not args.noise and c.given(args, "seed"):
         raise c.CliError("--seed: draws the sensor noise, which --no-noise leaves out (the "
                          "frames would be the same for every seed)")
     c.must_exist(args.scenes, "scene ")
@@ -78,9 +78,9 @@ def _what_is_kept(frame, scene, pattern, suffix):
     """What the file written holds beside the mosaic: a TIFF keeps the mosaic alone, which the
     line had described as 'with ToF taps'."""
     if suffix == ".tif":
-        lost = "the ToF taps and the reference CFA" if frame.tof is not None \
-            else "the reference CFA"
-        return f"the mosaic only: {lost} need --format npz"
+        lost = "the ToF taps and the reference CFA need" if frame.tof is not None \
+            else "the reference CFA needs"
+        return f"the mosaic only: {lost} --format npz"
     if frame.tof is not None:
         return "with ToF taps"
     if scene.depth is not None and not pattern.has_z:

@@ -82,7 +82,7 @@ def _json_default(o):
     if isinstance(o, np.floating):
         return None if not np.isfinite(o) else float(o)
     if isinstance(o, np.ndarray):
-        return o.tolist()
+        return _finite(o.tolist())
     if isinstance(o, Path):
         return str(o)
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")

@@ -364,13 +364,14 @@ def count_tof_operations(n_sites=64, n_freqs=3, seed=0):
 
 
 def _table1_name(pattern):
-    """The name Table 1 knows ``pattern`` by: the preset whose tile and Bayer phase it has
-    (the tile 'ZR/BG' is Mask1), else its own."""
+    """The name Table 1 knows ``pattern`` by: the preset whose tile it has on any Bayer phase
+    (the tile 'ZR/BG' and mask1_rggb are Mask1), else its own."""
     for name in ("mask1", "mask2"):
-        preset = get_pattern(name)
-        if np.array_equal(preset.tile, pattern.tile) and \
-                preset.bayer_phase == pattern.bayer_phase:
-            return name
+        for phase in ("grbg", "rggb", "bggr", "gbrg"):     # the same work on every phase
+            preset = get_pattern(f"{name}_{phase}")
+            if np.array_equal(preset.tile, pattern.tile) and \
+                    preset.bayer_phase == pattern.bayer_phase:
+                return name
     return pattern.name
 
 

@@ -255,11 +255,14 @@ class EvalConfig:
             v = getattr(self.params, name)
             if v != getattr(defaults, name):
                 extra.append(f"{name}={v}")
+        lens = None
         if self.optics is not None:
             o = self.optics
-            extra.append(f"optics f/{o.f_number:g}" + (f" OLPF {o.olpf:g}" if o.olpf else "")
-                         + (f" defocus {o.defocus_um:g} um" if o.defocus_um else "")
-                         + (f" fill {o.fill_factor:g}" if o.fill_factor != 1 else ""))
+            lens = (f"optics f/{o.f_number:g}" + (f" OLPF {o.olpf:g}" if o.olpf else "")
+                    + (f" defocus {o.defocus_um:g} um" if o.defocus_um else "")
+                    + (f" fill {o.fill_factor:g}" if o.fill_factor != 1 else ""))
+            if not raw_files:
+                extra.append(lens)
         if self.params.filters is not None:
             extra.append("filters " + ", ".join(
                 f"{f.pattern.name} {f.meta.get('training_set', '?')} {f.digest[:8]}"
@@ -267,10 +270,12 @@ class EvalConfig:
         protocol = "" if self.linearise else " sRGB values (not linearised)"
         inputs = f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}"
         if raw_files:
-            own = "at their own bit depth, noise and lens"
+            own = f"at {'its' if raw_files == 1 else 'their'} own bit depth, noise and lens"
+            if lens is not None:            # the lens is the RGB images' (a raw file has its own)
+                inputs += ", " + lens
             inputs = (f"{rgb_images} RGB image{'s' if rgb_images > 1 else ''} ({inputs}) and "
                       f"{raw_files} raw file{'s' if raw_files > 1 else ''} {own}"
-                      if rgb_images else f"raw files {own}")
+                      if rgb_images else f"raw file{'s' if raw_files > 1 else ''} {own}")
         return (f"{inputs}, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))

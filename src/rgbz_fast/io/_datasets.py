@@ -186,8 +186,8 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     keyword arguments :func:`rgbz_fast.io.read_raw` needs for it (phase,
     black and white levels, shape of headerless files, ``downsample=2`` as
     the paper does for HDR+). A file named in ``raw_options`` is read as raw
-    even if it is a PNG or TIFF (a 16-bit Bayer mosaic); a name that is no file of the
-    folder (of the file's folder, for a dataset of one file) is an error. ``limit``: the first
+    even if it is a PNG or TIFF (a 16-bit Bayer mosaic); a name that is no image file of the
+    folder is warned about (its options apply to no file). ``limit``: the first
     ``limit`` files only (a positive integer). ``grey``: accept grey images,
     repeated into R, G and B (:func:`rgbz_fast.io.rgb_image`). ``max_pixels``,
     ``max_bytes``: the read limits of every file (:func:`rgbz_fast.io.read_limits`).
@@ -221,11 +221,15 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
         raise ParameterError("dataset", f"no image files in {p} (looked for "
                                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")
     raw_options = check_raw_options(raw_options)
-    folder = p if p.is_dir() else p.parent
-    unknown = [k for k in raw_options if k != "*" and not (folder / k).is_file()]
-    if unknown:                     # a misspelt name's options would be used by no file
-        raise ParameterError("raw_options", f"{unknown[0]!r} names no file of {folder} (a key "
-                                            "is a file's name, or \"*\" for every raw file)")
+    unknown = [k for k in raw_options if k != "*" and k not in {f.name for f in files}]
+    if unknown and p.is_dir():      # a misspelt name's options would be used by no file (one
+        import warnings             # file of a folder may take a file shared by the folder)
+
+        one = len(unknown) == 1
+        warnings.warn(f"raw_options: {', '.join(map(repr, unknown))} name{'s' if one else ''} "
+                      f"no image file of {p}; {'its' if one else 'their'} options apply to no "
+                      "file (a key is a file's name, or \"*\" for every raw file)",
+                      UserWarning, stacklevel=2)
     nir = {f.name[:-len("_rgb" + f.suffix)]: f.with_name(f.name[:-len("_rgb" + f.suffix)]
                                                          + "_nir" + f.suffix)
            for f in files if f.stem.endswith("_rgb")}

@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import _PRESETS, Pattern, Z, bayer, get_pattern
-from .._validate import check_bit_depth, check_int, real_array
+from .._validate import check_bit_depth, check_int, read_only_state, real_array
 from ..io import atomic_write, read_npz
 from ._learned_hash import N_ANGLES, learned_geometry, mirror_octants
 from ._learned_train import train
@@ -59,6 +59,9 @@ class FilterIdentity:
                 f"digest={self.digest})")
 
     __str__ = __repr__
+
+    def __setstate__(self, state):      # a pickled or deep-copied copy stays read-only: its
+        read_only_state(self, state)    # identity is a digest computed once
 
     def __eq__(self, other):
         return isinstance(other, type(self)) and other.digest == self.digest

@@ -53,7 +53,7 @@ import numpy as np
 from .._frame import RawFrame, ToFTaps
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import (as_list, check_block, check_frequencies, check_image, check_int,
-                         check_meta, check_path, check_sites, real_array)
+                         check_meta, check_path, check_sites, read_only_state, real_array)
 from ..io import atomic_write, read_npz
 from ..io._npz import npz_bytes
 from ._noise import tap_variance
@@ -105,6 +105,9 @@ class ToFCalibration:
     shape: tuple
     dark: np.ndarray | None = None
     meta: dict = field(default_factory=dict)
+
+    def __setstate__(self, state):          # a pickled or deep-copied copy stays read-only
+        read_only_state(self, state)
 
     def __post_init__(self):
         # own read-only copies (the caller's arrays stay the caller's); every field checked
