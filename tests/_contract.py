@@ -97,7 +97,7 @@ def calibration(shape):
     ds = np.linspace(0.6, 2.6, 10)
     sweep = [sim.simulate_tof(sim.Scene(rgb(shape), depth=np.full(shape, d)), "mask1",
                               sim.ToFSensor(), noise=False) for d in ds]
-    return tof.calibrate(sweep, ds, orders=2)
+    return tof.calibrate(sweep, ds, orders=1)     # its usable walls cover 59 % of a wrap
 
 
 def sim_tof(shape=(16, 16), **tof_sensor):

@@ -109,7 +109,9 @@ def test_a_lit_frame_is_refused_as_a_dark_one():
 
 
 def test_dark_frames_remove_the_tap_offsets():
-    sensor = ToFSensor(dsnu=50.0, optical_power_w=0.2, quantise=False, shot_noise=False,
+    # 1 W: every wall of the sweep above the SNR floor (with 0.2 W the walls beyond 1.5 m gave
+    # the fit nothing, calibrate now refuses the sweep's gap, and 1.7 m lay outside it)
+    sensor = ToFSensor(dsnu=50.0, optical_power_w=1.0, quantise=False, shot_noise=False,
                        read_noise=0.0)
     ds = np.linspace(0.6, 2.6, 24)
     capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
@@ -183,3 +185,16 @@ def test_bad_calibration_input(tmp_path):
     for make, exc, name in cases:
         with pytest.raises(exc, match=name):
             make()
+
+
+def test_a_sweep_that_leaves_the_phase_circle_open_is_refused():
+    """17 walls over 0.6-1.2 m (a third of the 1.874 m wrap of 80 MHz) had fitted
+    coefficients of 1000 rad, reported a residual of 0.64 mm and put a wall at 1.25 m 3.4 m
+    away, valid."""
+    sensor = ToFSensor(harmonics=((3, 0.04, 0.3),), delay_ps=300.0, delay_fpn_ps=20.0)
+    ds = np.linspace(0.6, 1.2, 17)
+    with pytest.raises(ValueError, match=r"^distances: the walls leave 68 % of the phase "
+                                         r"circle of 80 MHz unmeasured"):
+        calibrate(_sweep(sensor, ds), ds)
+    ds = np.linspace(0.6, 2.6, 17)                     # over a wrap: accepted
+    assert calibrate(_sweep(sensor, ds), ds).coefficients.shape[1] == 8

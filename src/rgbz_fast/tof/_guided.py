@@ -230,12 +230,15 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     N, F = layout.N, f.size
     taps = tof.taps
     cal = p.calibration
+    saturated = np.asarray(tof.saturated, np.uint8)
     if cal is not None and cal.dark is not None:
+        # the white level is the raw taps': tested before the dark offsets come off (after,
+        # a clipped tap read below it, and the measurement came out valid at a wrong depth)
+        saturated = saturated | (tof.taps.max(axis=(0, 1)) >= tof.white_level)
         taps = np.asarray(taps, np.float64) - cal.dark[None]
     if taps.dtype not in (np.uint16, np.float32, np.float64):
         taps = taps.astype(np.float64)
-    sat = np.ascontiguousarray(layout.to_grid(np.asarray(tof.saturated, np.uint8), 1),
-                               np.uint8)
+    sat = np.ascontiguousarray(layout.to_grid(saturated.astype(np.uint8), 1), np.uint8)
     if not layout.full:
         full = np.zeros(taps.shape[:2] + (N,), taps.dtype)
         full[..., layout.grid.ri * layout.C + layout.grid.ci] = taps
