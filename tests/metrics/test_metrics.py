@@ -572,3 +572,26 @@ def test_random_shapes_do_not_crash():
         assert 0.0 <= ms_ssim(ref, test, weights=(1.0,)) <= 1.0
 
     check()
+
+
+def test_floats_within_unit_range_scored_as_8_bit_codes_are_warned_about(rng):
+    """sRGB floats in [0, 1] with the 8-bit default inflate every score (70.4 dB CPSNR for
+    22.3, SSIM 0.9999 for 0.964): said, as scikit-image refuses them; with data_range=1 (or
+    8-bit codes) nothing is said."""
+    import warnings
+
+    from rgbz_fast.metrics import all_metrics, cpsnr, ms_ssim, ssim, zipper
+
+    ref = rng.random((170, 170, 3))
+    test = np.clip(ref + rng.normal(0, 0.05, ref.shape), 0, 1)
+    for f in (cpsnr, ssim, ms_ssim, zipper, all_metrics):
+        with pytest.warns(UserWarning, match=r"images are floats within \[0, 1\], scored "
+                                             r"against (data_range|input)=255"):
+            f(ref, test)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        cpsnr(ref, test, data_range=1.0)
+        ssim(ref, test, data_range=1.0)
+        zipper(ref, test, input="srgb01")
+        cpsnr((ref * 255).astype(np.uint8), (test * 255).astype(np.uint8))
+        cpsnr(np.zeros((8, 8, 3)), np.zeros((8, 8, 3)))          # black: no range to guess

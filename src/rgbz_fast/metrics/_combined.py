@@ -9,7 +9,7 @@ from .._validate import check_number, check_workers
 from ._common import (COLOUR_MAX_VALUE, SSIM_MAX_VALUE, _check_crop, _check_integer_range,
                       _check_magnitude, _check_rgb_pair,
                       _check_ssim_data_range, _crop_hw, _kernel_dtype,
-                      _psnr_from_mse)
+                      _psnr_from_mse, _warn_unit_floats)
 from ._psnr import _rgb_mse
 from ._ssim import _SSIM_WHY, MS_SSIM_WEIGHTS, _check_ms_ssim_size, _ssim_and_ms_ssim
 from ._zipper import _COLOUR_WHY, _zipper_percent
@@ -116,6 +116,8 @@ def _colour_metrics(reference, test, metrics, data_range, crop, workers,
         out.update(ssim=ssim_value, ms_ssim=ms_value)
     if "zipper" in metrics:
         out["zipper"] = _zipper_percent(ref, tst, peak, 2.3, threads, memo)
+    if memo is None:                  # the evaluation's are 8-bit renders
+        _warn_unit_floats((ref, tst), names, peak)
     return {m: out[m] for m in metrics}
 
 

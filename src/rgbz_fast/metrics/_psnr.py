@@ -9,7 +9,7 @@ import numpy as np
 from .. import _kernels
 from .._validate import as_array, check_int, check_number, check_workers
 from ._common import (_check_crop, _check_integer_range, _check_pair, _check_rgb_pair, _crop_hw,
-                      _kernel_pair, _psnr_from_mse)
+                      _kernel_pair, _psnr_from_mse, _warn_unit_floats)
 
 __all__ = ["cfa_psnr", "cpsnr", "cpsnr_pooled"]
 
@@ -91,8 +91,11 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, wor
         peak = check_number(data_range, "data_range", lo=0, lo_open=True)
         _check_integer_range((ref, tst), ("reference", "test"), peak)
     threads = check_workers(workers)
+    param = "data_range" if bit_depth is None else "bit_depth"
     if mask is None:
-        return _psnr_from_mse(*_mse(ref, tst, None, threads), peak)
+        out = _psnr_from_mse(*_mse(ref, tst, None, threads), peak)
+        _warn_unit_floats((ref, tst), ("reference", "test"), peak, param)
+        return out
     m = as_array(mask, "mask")
     if m.dtype != np.bool_:
         raise TypeError(f"mask: expected a boolean array, got dtype {m.dtype}")
@@ -104,7 +107,9 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, wor
     if m.ndim == 3:                    # one flag per element: each element is a 'pixel'
         ref, tst = ref.reshape(ref.shape[0], -1), tst.reshape(tst.shape[0], -1)
         m = m.reshape(m.shape[0], -1)
-    return _psnr_from_mse(*_mse(ref, tst, m, threads), peak)
+    out = _psnr_from_mse(*_mse(ref, tst, m, threads), peak)
+    _warn_unit_floats((ref, tst), ("reference", "test"), peak, param)
+    return out
 
 
 def _mse(ref, tst, mask, threads):
@@ -210,7 +215,9 @@ def cpsnr(reference, test, *, data_range=255, crop=0, workers=None):
     ref, tst = _check_rgb_pair(reference, test)
     peak = check_number(data_range, "data_range", lo=0, lo_open=True)
     _check_integer_range((ref, tst), ("reference", "test"), peak)
-    return _psnr_from_mse(*_rgb_mse(ref, tst, crop, check_workers(workers)), peak)
+    out = _psnr_from_mse(*_rgb_mse(ref, tst, crop, check_workers(workers)), peak)
+    _warn_unit_floats((ref, tst), ("reference", "test"), peak)
+    return out
 
 
 def cpsnr_pooled(references, tests, *, data_range=255, crop=0, workers=None):
@@ -271,6 +278,7 @@ def cpsnr_pooled(references, tests, *, data_range=255, crop=0, workers=None):
         ref, tst = _check_rgb_pair(r, t, f"references[{i}]", f"tests[{i}]")
         _check_integer_range((ref, tst), (f"references[{i}]", f"tests[{i}]"), peak)
         mses.append(_rgb_mse(ref, tst, crop, threads))
+    _warn_unit_floats(list(references) + list(tests), ("references", "tests"), peak)
     top = max(e for _, e in mses)
     if top == 0:
         return _psnr_from_mse(float(np.mean([m for m, _ in mses])), 0, peak)

@@ -11,7 +11,7 @@ from .. import _kernels
 from .._validate import check_flag, check_int, check_number, check_workers
 from ._common import (SSIM_MAX_VALUE, _check_crop, _check_integer_range, _check_magnitude,
                       _check_pair, _check_ssim_data_range,
-                      _crop_hw, _kernel_pair)
+                      _crop_hw, _kernel_pair, _warn_unit_floats)
 
 __all__ = ["ssim", "ms_ssim", "MS_SSIM_WEIGHTS"]
 
@@ -282,6 +282,7 @@ def ssim(reference, test, *, data_range=255, crop=0, channel_axis=-1, gaussian_w
                        what=f"an image at least win_size={win_size} pixels wide")
     x, y = _kernel_pair(_crop_hw(x, crop, (1, 2)), _crop_hw(y, crop, (1, 2)))
     ssim_means, _ = _ssim_means(x, y, peak, win_size, sigma, gaussian_weights, threads)
+    _warn_unit_floats((ref, tst), ("reference", "test"), peak)
     return float(ssim_means.mean())
 
 
@@ -371,4 +372,6 @@ def ms_ssim(reference, test, *, data_range=255, crop=0, weights=MS_SSIM_WEIGHTS,
     x, y = _crop_hw(x, crop, (1, 2)), _crop_hw(y, crop, (1, 2))
     _check_ms_ssim_size(x.shape[1:], w.size, crop)
     x, y = _kernel_pair(x, y)
-    return _ssim_and_ms_ssim(x, y, peak, w, threads)[1]
+    out = _ssim_and_ms_ssim(x, y, peak, w, threads)[1]
+    _warn_unit_floats((ref, tst), ("reference", "test"), peak)
+    return out

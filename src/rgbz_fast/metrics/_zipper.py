@@ -8,7 +8,7 @@ from .. import _kernels
 from .._validate import check_choice, check_number, check_workers
 from ._common import (COLOUR_MAX_VALUE, _check_crop, _check_integer_range, _check_magnitude,
                       _check_rgb_pair, _crop_hw,
-                      _kernel_dtype, _kernel_pair)
+                      _kernel_dtype, _kernel_pair, _warn_unit_floats)
 
 __all__ = ["zipper", "delta_e_map", "ZIPPER_INPUTS"]
 
@@ -181,4 +181,7 @@ def zipper(reference, test, *, delta=2.3, crop=0, input="srgb8", workers=None):
                        what="a centre pixel with all eight neighbours")
     threads = check_workers(workers)
     ref, tst = _crop_hw(ref, crop), _crop_hw(tst, crop)
-    return _zipper_percent(ref, tst, ZIPPER_INPUTS[input], delta, threads)
+    out = _zipper_percent(ref, tst, ZIPPER_INPUTS[input], delta, threads)
+    if ZIPPER_INPUTS[input] is not None:
+        _warn_unit_floats((ref, tst), ("reference", "test"), ZIPPER_INPUTS[input], "input")
+    return out
