@@ -555,3 +555,15 @@ def test_clipped_taps_are_saturated_with_a_dark_calibration():
         r = tof.tof_depth(t, guide=g, calibration=cal)
         assert not r.valid.any()
         assert np.all(r.flags & tof.FLAG_SATURATED)
+
+
+def test_to_frame_of_a_flag_field_with_a_nan_fill_is_float32():
+    from rgbz_fast import tof
+    from rgbz_fast.simulation import Scene, simulate
+
+    frame = simulate(Scene(np.full((16, 16, 3), 0.5), depth=np.full((16, 16), 1.5)), "mask1",
+                     seed=0)
+    r = tof.tof_depth(frame.tof)
+    assert r.to_frame("valid").dtype == np.float32 and r.to_frame("flags").dtype == np.float32
+    assert r.to_frame("valid", fill=False).dtype == np.bool_
+    assert r.to_frame("depth").dtype == np.float64

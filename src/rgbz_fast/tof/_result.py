@@ -25,7 +25,8 @@ class ToFDepth:
         Wrap count of the base (lowest) frequency.
     phase, amplitude, offset : ndarray of float64, shape (F, n)
         Phase in [0, 2 pi) and amplitude ``|I + iQ| / 2`` (DN) after the
-        denoise (and the calibration); offset ``mean(A_k)`` (DN, raw).
+        denoise (and the calibration); offset ``mean(A_k)`` (DN; less the dark offsets of a
+        calibration that holds them).
     snr : ndarray of float64, shape (n,)
         Smallest over the frequencies of ``|I + iQ| / sigma_I``, with
         ``sigma_I`` the noise of the (averaged) I component from the sensor's
@@ -100,8 +101,9 @@ class ToFDepth:
             ``"measured"``) or an
             array of shape (n,) or (F, n).
         fill : scalar
-            Value of the pixels that hold no Z measurement (NaN by default;
-            use 0 or False for integer and boolean fields).
+            Value of the pixels that hold no Z measurement (NaN by default: a bool
+            or uint8 field then comes as float32; use 0 or False to keep the
+            field's type).
 
         Returns
         -------
@@ -118,6 +120,8 @@ class ToFDepth:
         if v.shape[-1:] != (n,) or v.ndim > 2:
             raise ValueError(f"values: expected shape ({n},) or (F, {n}), got {v.shape}")
         dtype = np.result_type(v.dtype, np.min_scalar_type(fill))
+        if dtype.kind == "f" and dtype.itemsize < 4:    # a NaN fill of a bool or uint8 field:
+            dtype = np.dtype(np.float32)                # float32, not float16
         out = np.full(v.shape[:-1] + tuple(self.shape), fill, dtype=dtype)
         r, c = self.sites
         for dr in range(self.block):
