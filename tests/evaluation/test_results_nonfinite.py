@@ -123,3 +123,28 @@ def test_from_json_keeps_skipped_and_optics():
 def test_from_json_refuses_other_text():
     with pytest.raises(ValueError, match="rows"):
         Results.from_json("[1, 2]")
+
+
+def test_from_json_reads_a_run_with_given_filters(tmp_path):
+    """to_json describes given filters (their repr), it does not store them: from_json had
+    taken the description for a file name and failed; now the rows come back and the
+    configuration without the filters, said in a warning."""
+    import rgbz_fast as rz
+    from rgbz_fast.reconstruction import default_filters
+
+    default_filters(rz.mask1()).save(tmp_path / "f.npz")
+    cfg = EvalConfig(patterns=("mask1",), methods=("bilinear", "learned"),
+                     metrics=("cfa_psnr",), params={"filters": str(tmp_path / "f.npz")})
+    rows = [{"image": "a", "pattern": "mask1", "method": m, "metric": "cfa_psnr", "value": v}
+            for m, v in (("bilinear", 30.0), ("learned", 31.0))]
+    text = Results(rows, cfg).to_json()
+    with pytest.warns(UserWarning, match="filters are described, not stored"):
+        back = Results.from_json(text)
+    assert back.rows == rows and back.config.params.filters is None
+    assert back.config.params.precision == "float64"
+
+
+def test_a_mapping_of_params_keeps_the_evaluations_float64():
+    assert EvalConfig(params=None).params.precision == "float64"
+    assert EvalConfig(params={"sigma_rel": 0}).params.precision == "float64"
+    assert EvalConfig(params={"sigma_rel": 0}).params.sigma_rel == 0

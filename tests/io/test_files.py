@@ -446,3 +446,24 @@ def test_a_bad_pixel_limit_in_the_environment_leaves_reads_with_a_given_limit(tm
     with pytest.raises(ValueError, match=r"RGBZ_FAST_MAX_PIXELS: expected a positive integer, "
                                          r"got 'abc'"):
         rio.load_frame(f)
+
+
+def test_frame_meta_round_trips(tmp_path):
+    """An NPZ frame keeps its meta: arrays (read_raw's clipped mask) as members, nested lists
+    and objects and NumPy scalars as JSON; a TIFF says what it cannot keep."""
+    import rgbz_fast as rz
+    from rgbz_fast.io import load_frame, save_frame
+
+    d = rz.mosaic(np.full((8, 8, 3), 128, np.uint8), rz.mask1()).data
+    clipped = np.zeros((8, 8), bool)
+    clipped[1, 2] = True
+    meta = {"a": np.int64(3), "gains": [np.float32(1.5), 2.0], "nested": {"x": [1, None]},
+            "pairs": ((1, 2), (3, 4)), "clipped": clipped}
+    f = rz.RawFrame(d, rz.mask1(), 11, meta=meta)
+    save_frame(tmp_path / "f.npz", f)
+    back = load_frame(tmp_path / "f.npz").meta
+    assert back["a"] == 3 and back["gains"] == [1.5, 2.0] and back["nested"] == {"x": [1, None]}
+    assert back["pairs"] == [[1, 2], [3, 4]]
+    np.testing.assert_array_equal(back["clipped"], clipped)
+    with pytest.warns(UserWarning, match=r"does not keep meta 'clipped'"):
+        save_frame(tmp_path / "f.tif", f)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field
 
 from .._build_config import VERSION
@@ -148,7 +149,13 @@ class EvalConfig:
         if self.noise and not self.linearise:
             raise ValueError("linearise: the sensor model (noise=True) takes linear light; "
                              "linearise=False is a noise-free protocol")
-        object.__setattr__(self, "params", ReconstructParams.build(self.params, name="params"))
+        # None and a mapping of changes start from the evaluation's own default (float64),
+        # not reconstruct()'s (float32): {"sigma_rel": 0} had also changed the arithmetic
+        base, changes = self.params, None
+        if base is None or isinstance(base, Mapping):
+            base, changes = _default_params(), base
+        object.__setattr__(self, "params", ReconstructParams.build(
+            base, changes, name="params", caller="params"))
         object.__setattr__(self, "seed", check_seed(self.seed, "seed"))
         # which method reconstructs which pattern, before any image: a pair that does not
         # apply is left out of the run with its reason (:meth:`not_applicable`); a run in

@@ -382,6 +382,21 @@ class Results:
         config = dict(data.get("config") or {})
         if isinstance(config.get("params"), dict):
             config["params"] = {k: _json_float(v) for k, v in config["params"].items()}
+            given = config["params"].get("filters")
+            if given is not None:
+                from pathlib import Path
+
+                names = [given] if isinstance(given, str) else list(given)
+                if not all(isinstance(n, str) and Path(n).is_file() for n in names):
+                    # to_json describes the filters (their repr: pattern, training set and
+                    # digest); their weights are not in the file, so the configuration is
+                    # read without them, and the rows as they are
+                    import warnings
+
+                    warnings.warn("results.json: the configuration's filters are described, "
+                                  "not stored (" + "; ".join(map(str, names)) + "); they are "
+                                  "left out of Results.config", UserWarning, stacklevel=2)
+                    config["params"]["filters"] = None
         if isinstance(config.get("optics"), dict):
             config["optics"] = Optics(**{k: _json_float(v) for k, v in config["optics"].items()})
         skipped = [tuple(t) for t in data.get("skipped", [])]

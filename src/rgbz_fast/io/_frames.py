@@ -30,16 +30,49 @@ __all__ = ["save_frame", "load_frame", "FRAME_SUFFIXES"]
 _FORMAT_TAG = "rgbz-fast raw frame"
 
 
-def _jsonable(meta):
+_NOT_JSON = object()
+
+
+def _json_value(v):
+    """``v`` as JSON (NumPy scalars as numbers, tuples as lists, nested lists and objects),
+    or _NOT_JSON."""
+    if isinstance(v, (str, int, float, bool)) or v is None:
+        return v
+    if isinstance(v, np.generic):
+        return v.item()
+    if isinstance(v, (list, tuple)):
+        items = [_json_value(x) for x in v]
+        return _NOT_JSON if any(x is _NOT_JSON for x in items) else items
+    if isinstance(v, dict) and all(isinstance(k, str) for k in v):
+        items = {k: _json_value(x) for k, x in v.items()}
+        return _NOT_JSON if any(x is _NOT_JSON for x in items.values()) else items
+    return _NOT_JSON
+
+
+def _jsonable(meta, arrays=None, dropped=None):
+    """The JSON of a frame's ``meta``. Arrays go to ``arrays`` (the NPZ's ``meta__KEY``
+    members) when it is given; what neither holds is listed in ``dropped``, except the
+    sensor models (dataclass objects), which the header records otherwise."""
+    import dataclasses
+
     out = {}
     for k, v in (meta or {}).items():
-        if isinstance(v, (str, int, float, bool)) or v is None:
-            out[k] = v
-        elif isinstance(v, (list, tuple)) and all(isinstance(x, (str, int, float, bool)) for x in v):
-            out[k] = list(v)
-        elif isinstance(v, np.generic):
-            out[k] = v.item()
+        j = _json_value(v)
+        if j is not _NOT_JSON:
+            out[k] = j
+        elif isinstance(v, np.ndarray) and arrays is not None:
+            arrays[f"meta__{k}"] = v
+        elif dropped is not None and not dataclasses.is_dataclass(v):
+            dropped.append(k)
     return out
+
+
+def _warn_dropped(path, dropped, why):
+    if dropped:
+        import warnings
+
+        warnings.warn(f"path: {path.name} does not keep meta {', '.join(map(repr, dropped))} "
+                      f"({why})", UserWarning, stacklevel=3)
 
 
 def save_frame(path, frame):
@@ -48,11 +81,14 @@ def save_frame(path, frame):
         raise TypeError(f"frame: expected a RawFrame, got {type(frame).__name__}")
     path = check_path(path, "path")
     suffix = path.suffix.lower()
+    meta_arrays, dropped = ({} if suffix == ".npz" else None), []
     header = {"format": _FORMAT_TAG, "pattern": frame.pattern.tile_string,
               "pattern_name": frame.pattern.name, "bayer": frame.pattern.bayer_phase,
-              "bit_depth": frame.bit_depth, "meta": _jsonable(frame.meta)}
+              "bit_depth": frame.bit_depth,
+              "meta": _jsonable(frame.meta, meta_arrays, dropped)}
     if suffix == ".npz":
-        arrays = {"data": frame.data, "header": np.array(json.dumps(header))}
+        _warn_dropped(path, dropped, "not JSON")
+        arrays = {"data": frame.data, "header": np.array(json.dumps(header)), **meta_arrays}
         if frame.reference is not None:
             arrays["reference"] = frame.reference
         tof = frame.tof
@@ -75,7 +111,13 @@ def save_frame(path, frame):
         import tifffile
 
         data = frame.data
+        _warn_dropped(path, dropped, "a TIFF holds the mosaic and JSON metadata; .npz keeps "
+                                     "arrays")
         if data.dtype not in (np.uint8, np.uint16):
+            import warnings
+
+            warnings.warn(f"path: {path.name} keeps the {data.dtype} mosaic as 16-bit codes "
+                          "(rounded); .npz keeps it as it is", UserWarning, stacklevel=2)
             data = np.floor(np.clip(data, 0, frame.white_level) + 0.5).astype(np.uint16)
         buf = io.BytesIO()
         tifffile.imwrite(buf, data, description=json.dumps(header), metadata=None)
@@ -307,6 +349,7 @@ def _npz_members(path, name, keys, required, limits):
         if missing:
             raise ValueError(f"no member(s) {', '.join(missing)}")
         wanted = [k for k in (members if keys is None else keys) if k in members]
+        wanted += [k for k in members if keys is not None and k.startswith("meta__")]
         declared = sum(members[k].file_size for k in wanted)
         if declared > limits[1]:
             raise ParameterError(None, f"its arrays declare {declared} bytes uncompressed, "
@@ -338,6 +381,9 @@ def _load_npz(path, limits):
             if "tof" not in header:
                 raise KeyError("tof")
             tof = _load_tof(z, header["tof"])
+        meta_arrays = {k[len("meta__"):]: v for k, v in z.items() if k.startswith("meta__")}
+        if meta_arrays:                          # e.g. read_raw's clipped mask
+            header = {**header, "meta": {**header.get("meta", {}), **meta_arrays}}
         return _frame_from(header, z["data"], z.get("reference"), tof)
 
     return _checked(path, build)
