@@ -584,7 +584,10 @@ def raw_clip_level(frame):
         return None
     top = float(frame.white_level)
     # the expression read_raw applies to a pixel at the clip level
-    level = float(np.min(np.clip((clip - black) / (white - black) * top, 0.0, top)))
+    scaled = float(np.min((clip - black) / (white - black) * top))
+    if scaled > top:               # beyond every code: read_raw flagged no pixel, neither does
+        return None                # "auto" (clamped to full scale, it had flagged white ones)
+    level = max(scaled, 0.0)
     if np.issubdtype(frame.data.dtype, np.integer):
         level = float(np.floor(level + 0.5))
     else:

@@ -490,3 +490,20 @@ def test_dng_with_a_damaged_tag_reads_without_log_lines(dng_path, tmp_path, capl
     frame = read_raw(tmp_path / "d.dng")
     assert frame.shape == (1156, 1734)
     assert [r.getMessage() for r in caplog.records if r.name.startswith("tifffile")] == []
+
+
+def test_a_clip_level_beyond_every_code_clips_nothing(tmp_path):
+    """read_raw's clip level above the white level flags no pixel; clip_level='auto' had
+    clamped it to full scale and taken the white pixels for clipped."""
+    import rgbz_fast as rz
+    from rgbz_fast import io as rio
+
+    a = np.random.default_rng(0).integers(64, 1024, (32, 48)).astype("<u2")
+    a[4:12, 4:14] = 1023
+    a.tofile(tmp_path / "c.raw")
+    f = rio.read_raw(tmp_path / "c.raw", shape=(32, 48), phase="RGGB", black_level=64,
+                     bit_depth_in=10, clip_level=1024)
+    g, _ = rio.to_rgbz(f, "mask1")
+    assert f.meta["clipped_count"] == 0 and rio.frame_clip_level(g) is None
+    np.testing.assert_array_equal(rz.reconstruct(g, "sg", clip_level="auto"),
+                                  rz.reconstruct(g, "sg"))

@@ -245,6 +245,10 @@ ROWS = [
       lambda f: rz.reconstruct(u16(), pattern="mask2", precision="fixed",
                                fixed_point={"register_bits": 24}), ValueError,
       "register_bits: the register mean_product"),
+    R("reconstruction.reconstruct-learned-domain", "reconstruct(frame, 'learned', "
+      "domain='colour_difference')",
+      lambda f: rz.reconstruct(u16(), "learned", pattern="mask1", domain="colour_difference"),
+      ValueError, "domain: method 'learned' applies its filters to the intensities"),
     R("reconstruction.reconstruct-fixed-sigma_bits",
       "reconstruct(precision='fixed', sigma_rel=0.3, sigma_bits=4)",
       lambda f: rz.reconstruct(u16(), pattern="mask1", precision="fixed", sigma_rel=0.3,

@@ -297,6 +297,10 @@ def _does_not_apply(pattern, method, params, bit_depth):
     try:
         if pattern.bayer_phase is None:
             pattern.bayer_tile()                 # the error that names the missing phase
+        if method in ("learned", "z_guided") and params.domain != "intensity":
+            raise ValueError(f"domain: method {method!r} applies its filters to the "
+                             f"intensities; domain={params.domain!r} applies to the weighted "
+                             "methods")
         if method == "learned":
             learned_geometry(pattern)
             resolve_filters(learned_only(params.filters), pattern)

@@ -432,7 +432,10 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
     -------
     ndarray
         As stored: uint8 or uint16 (16-bit PNGs, grey or colour, keep their
-        16 bits), shape (rows, cols) or (rows, cols, channels).
+        16 bits), shape (rows, cols) or (rows, cols, channels); but a PGM/PPM
+        whose maximum value is not 255 or 65535 (a 12-bit PGM: 4095) is
+        rescaled to the full range of its type, as its format defines the
+        samples relative to that maximum.
 
     Raises
     ------

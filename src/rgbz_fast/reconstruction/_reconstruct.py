@@ -242,6 +242,10 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
             filters = resolve_filters(learned_only(params.filters), pattern)
             return run_fixed_learned(src, out, pattern, filters, params.fixed_point, bd)
         return run_fixed(src, out, pattern, method, params, bd)
+    if method in ("learned", "z_guided") and params.domain != "intensity":
+        raise ValueError(f"domain: method {method!r} applies its filters to the intensities; "
+                         f"domain={params.domain!r} applies to the weighted methods (it had "
+                         "been ignored)")
     if method == "learned":
         filters = resolve_filters(learned_only(params.filters), pattern)
         if clip is not None and _reaches(src, pattern, clip):
