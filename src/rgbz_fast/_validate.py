@@ -18,6 +18,7 @@ fields, checked once by the dataclass.
 from __future__ import annotations
 
 import dataclasses
+import math
 import numbers
 from collections.abc import Mapping
 
@@ -208,6 +209,32 @@ def as_array(value, name, **kwargs):
         raise TypeError(f"{name}: expected an array of numbers, got a {type(value).__name__} "
                         f"NumPy cannot make one of ({' '.join(str(exc).split())[:80]})") \
             from None
+
+
+def outside_stacklevel():
+    """The ``stacklevel`` that makes a warning raised by the caller of this function name the
+    first frame outside the package (the user's line, however deep the library's calls)."""
+    import os
+    import sys
+
+    root = os.path.dirname(os.path.abspath(__file__))
+    frame, level = sys._getframe(1), 1
+    while frame is not None and os.path.abspath(frame.f_code.co_filename).startswith(root):
+        frame, level = frame.f_back, level + 1
+    return level
+
+
+def nonfinite_as(obj, spell):
+    """``obj`` with every non-finite Python float replaced by ``spell(value)`` (dicts, lists
+    and tuples walked; tuples become lists), for ``json.dumps(..., allow_nan=False)``: JSON has
+    no such numbers."""
+    if isinstance(obj, float):
+        return obj if math.isfinite(obj) else spell(obj)
+    if isinstance(obj, dict):
+        return {k: nonfinite_as(v, spell) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [nonfinite_as(v, spell) for v in obj]
+    return obj
 
 
 def read_only_state(obj, state):

@@ -475,11 +475,8 @@ def options_given(parser, argv):
 def given(args, dest):
     """Whether the command line gave the option of ``dest`` (not: whether its value differs
     from the default, which an explicit default hides)."""
-    argv = getattr(args, "argv", None)
-    if argv is None:
-        return False
-    rest = argv[argv.index(args.command) + 1:] if args.command in argv else argv
-    return any(a.dest == dest for _, a in options_given(args.parser, rest))
+    argv = getattr(args, "command_argv", None)      # set by main()
+    return argv is not None and any(a.dest == dest for _, a in options_given(args.parser, argv))
 
 
 def limits_need(args, reading, why):

@@ -119,7 +119,8 @@ def main(argv=None):
         return 0
     if extra:                      # the command's own usage, and its name on the error line
         args.parser.error(f"unrecognized arguments: {' '.join(extra)}")
-    twice = _given_twice(args.parser, argv[argv.index(args.command) + 1:])
+    args.command_argv = argv[argv.index(args.command) + 1:]
+    twice = _given_twice(args.parser, args.command_argv)
     if twice:
         args.parser.error(f"{twice}: given twice (only the last would apply)")
     args.argv = argv

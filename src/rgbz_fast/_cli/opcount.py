@@ -43,21 +43,22 @@ def run(args):
         if m in methods[:i]:
             raise c.CliError(f"--methods: {args.methods[i]!r} is given twice (as {m!r})")
     image, image_name = _image(args.image)
-    pats = c.z_patterns(args.patterns)
+    names = c.z_patterns(args.patterns)
+    pats = [get_pattern(n) for n in names]
     if image is not None:
-        for p in pats:
-            need = _image_need(get_pattern(p))
+        for name, p in zip(names, pats):
+            need = _image_need(p)
             if any(min(s, 128) // per * per < n for s, per, n in
-                   zip(image.shape[:2], get_pattern(p).period, need)):
+                   zip(image.shape[:2], p.period, need)):
                 raise c.CliError(f"--image: {image_name} is {image.shape[0]}x"
-                                 f"{image.shape[1]}; pattern {p!r} needs a crop of at least "
+                                 f"{image.shape[1]}; pattern {name!r} needs a crop of at least "
                                  f"{need[0]}x{need[1]} whole periods")
     rows = opcount.opcount_table(methods, args.patterns, precision=args.precision,
                                  shape=shape, seed=args.seed, image=image, image_name=image_name)
     tof = opcount.count_tof_operations()
     legend = opcount.opcount_legend(shape, args.seed, args.precision, image_name, tof,
                                     None if image is None else image.shape,
-                                    [get_pattern(p).period for p in pats])
+                                    [p.period for p in pats])
     doc = json_text({"rows": rows, "tof_demodulate": tof, "legend": legend})
     if args.json:                # printed before the files: a failed write keeps it
         print(doc)

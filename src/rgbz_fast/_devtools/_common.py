@@ -4,13 +4,14 @@ results, a progress bar. Not a public API."""
 from __future__ import annotations
 
 import json
-import math
 import os
 import platform
 import sys
 from pathlib import Path
 
 import numpy as np
+
+from .._validate import nonfinite_as
 
 __all__ = ["machine_info", "tile_to", "json_text", "progress"]
 
@@ -67,13 +68,7 @@ def json_text(obj):
 
 def _finite(o):
     """``o`` with every non-finite Python float (in dicts, lists and tuples) as None."""
-    if isinstance(o, float):
-        return o if math.isfinite(o) else None
-    if isinstance(o, dict):
-        return {k: _finite(v) for k, v in o.items()}
-    if isinstance(o, (list, tuple)):
-        return [_finite(v) for v in o]
-    return o
+    return nonfinite_as(o, lambda x: None)
 
 
 def _json_default(o):

@@ -10,7 +10,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from .._validate import as_list, check_int, merge_params
+from .._validate import as_list, check_int, merge_params, nonfinite_as
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, PAPER_TABLE3,
                       EvalConfig)
 
@@ -73,15 +73,9 @@ _NONFINITE = {"inf": math.inf, "-inf": -math.inf, "nan": math.nan}
 
 
 def _json_safe(obj):
-    """``obj`` with every non-finite float replaced by "inf", "-inf" or "nan" (dicts, lists
-    and tuples walked), for ``json.dumps(..., allow_nan=False)``."""
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return "nan" if math.isnan(obj) else ("inf" if obj > 0 else "-inf")
-    if isinstance(obj, dict):
-        return {k: _json_safe(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [_json_safe(v) for v in obj]
-    return obj
+    """``obj`` with every non-finite float written "inf", "-inf" or "nan", for
+    ``json.dumps(..., allow_nan=False)``."""
+    return nonfinite_as(obj, lambda x: "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf"))
 
 
 def _json_float(obj):
@@ -94,6 +88,19 @@ def _names(items):
     """"a", "a and b", "a, b and c"."""
     items = list(items)
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def _cells(groups):
+    """(key, words) of ``groups`` ({key: {pattern: [methods]}}, the key's first item a metric):
+    the patterns on which the same methods are alike together, as "METRIC of METHODS on
+    PATTERNS"."""
+    for key, per_pattern in groups.items():
+        by_methods = {}
+        for p, ms in per_pattern.items():
+            by_methods.setdefault(tuple(ms), []).append(p)
+        for ms, ps in by_methods.items():
+            yield key, (f"{METRIC_LABELS[key[0]].split(' (')[0]} of "
+                        f"{_names(METHOD_LABELS.get(m, m) for m in ms)} on {_names(ps)}")
 
 
 @dataclass
@@ -207,21 +214,14 @@ class Results:
                         n, total, kinds = cells[(p, m, k)]
                         groups.setdefault((k, n, total, kinds), {}).setdefault(p, []).append(m)
         parts = []
-        for (k, n, total, kinds), per_pattern in groups.items():
-            by_methods = {}          # the patterns on which the same methods are alike
-            for p, ms in per_pattern.items():
-                by_methods.setdefault(tuple(ms), []).append(p)
-            for ms, ps in by_methods.items():
-                what = (f"{METRIC_LABELS[k].split(' (')[0]} of "
-                        f"{_names(METHOD_LABELS.get(m, m) for m in ms)} on {_names(ps)}")
-                if n == 0 and kinds == ("+inf",):
-                    parts.append(f"{what}: all {total} images are +inf")
-                elif n == 0:
-                    parts.append(f"{what}: no finite value in {total} images "
-                                 f"({', '.join(kinds)})")
-                else:
-                    parts.append(f"{what} over {n} of {total} images"
-                                 + ("" if only_inf else f" ({', '.join(kinds)} left out)"))
+        for (k, n, total, kinds), what in _cells(groups):
+            if n == 0 and kinds == ("+inf",):
+                parts.append(f"{what}: all {total} images are +inf")
+            elif n == 0:
+                parts.append(f"{what}: no finite value in {total} images ({', '.join(kinds)})")
+            else:
+                parts.append(f"{what} over {n} of {total} images"
+                             + ("" if only_inf else f" ({', '.join(kinds)} left out)"))
         return head + "; ".join(parts) + "."
 
     def _paired_note(self, base, others):
@@ -241,16 +241,9 @@ class Results:
                     n = self.paired(p, m, k, base)[0].size
                     if n < total:
                         groups.setdefault((k, n, total), {}).setdefault(p, []).append(m)
-        parts = []
-        for (k, n, total), per_pattern in groups.items():
-            by_methods = {}
-            for p, ms in per_pattern.items():
-                by_methods.setdefault(tuple(ms), []).append(p)
-            for ms, ps in by_methods.items():
-                what = (f"Δ {METRIC_LABELS[k].split(' (')[0]} of "
-                        f"{_names(METHOD_LABELS.get(m, m) for m in ms)} on {_names(ps)}")
-                parts.append(f"{what}: none of {total} images" if n == 0 else
-                             f"{what} over {n} of {total} images")
+        parts = [f"Δ {what}: none of {total} images" if n == 0 else
+                 f"Δ {what} over {n} of {total} images"
+                 for (k, n, total), what in _cells(groups)]
         if not parts:
             return ""
         return ("Differences leave out the images on which either method is not finite (a "

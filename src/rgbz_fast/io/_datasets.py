@@ -221,7 +221,8 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
         raise ParameterError("dataset", f"no image files in {p} (looked for "
                                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")
     raw_options = check_raw_options(raw_options)
-    unknown = [k for k in raw_options if k != "*" and k not in {f.name for f in files}]
+    listed = {f.name for f in files}
+    unknown = [k for k in raw_options if k != "*" and k not in listed]
     if unknown and p.is_dir():      # a misspelt name's options would be used by no file (one
         import warnings             # file of a folder may take a file shared by the folder)
 

@@ -67,12 +67,16 @@ def _jsonable(meta, arrays=None, dropped=None):
     return out
 
 
+def _warn_lost(path, what):
+    """A UserWarning, at save_frame's caller, that ``path`` does not keep ``what``."""
+    import warnings
+
+    warnings.warn(f"path: {path.name} {what}", UserWarning, stacklevel=3)
+
+
 def _warn_dropped(path, dropped, why):
     if dropped:
-        import warnings
-
-        warnings.warn(f"path: {path.name} does not keep meta {', '.join(map(repr, dropped))} "
-                      f"({why})", UserWarning, stacklevel=3)
+        _warn_lost(path, f"does not keep meta {', '.join(map(repr, dropped))} ({why})")
 
 
 def save_frame(path, frame):
@@ -114,10 +118,8 @@ def save_frame(path, frame):
         _warn_dropped(path, dropped, "a TIFF holds the mosaic and JSON metadata; .npz keeps "
                                      "arrays")
         if data.dtype not in (np.uint8, np.uint16):
-            import warnings
-
-            warnings.warn(f"path: {path.name} keeps the {data.dtype} mosaic as 16-bit codes "
-                          "(rounded); .npz keeps it as it is", UserWarning, stacklevel=2)
+            _warn_lost(path, f"keeps the {data.dtype} mosaic as 16-bit codes (rounded); .npz "
+                             "keeps it as it is")
             data = np.floor(np.clip(data, 0, frame.white_level) + 0.5).astype(np.uint16)
         buf = io.BytesIO()
         tifffile.imwrite(buf, data, description=json.dumps(header), metadata=None)

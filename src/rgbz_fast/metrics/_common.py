@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from .._validate import check_image, check_int, check_number
+from .._validate import check_image, check_int, check_number, outside_stacklevel
 
 
 #: the data_range SSIM and MS-SSIM accept: c1 = (0.01 L)**2 and the local moments of data
@@ -92,7 +92,7 @@ def _warn_unit_floats(arrays, names, data_range, param="data_range"):
 
         warnings.warn(f"{param}: the {' and '.join(names)} images are floats within [0, 1], "
                       f"scored against {param}={data_range:g}; pass the data's range (1.0 for "
-                      "[0, 1] floats)", UserWarning, stacklevel=3)
+                      "[0, 1] floats)", UserWarning, stacklevel=outside_stacklevel())
 
 
 def _check_magnitude(arrays, names, limit, why, param=None):

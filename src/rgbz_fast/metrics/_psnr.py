@@ -91,24 +91,22 @@ def cfa_psnr(reference, test, mask=None, *, data_range=None, bit_depth=None, wor
         peak = check_number(data_range, "data_range", lo=0, lo_open=True)
         _check_integer_range((ref, tst), ("reference", "test"), peak)
     threads = check_workers(workers)
-    param = "data_range" if bit_depth is None else "bit_depth"
-    if mask is None:
-        out = _psnr_from_mse(*_mse(ref, tst, None, threads), peak)
-        _warn_unit_floats((ref, tst), ("reference", "test"), peak, param)
-        return out
-    m = as_array(mask, "mask")
-    if m.dtype != np.bool_:
-        raise TypeError(f"mask: expected a boolean array, got dtype {m.dtype}")
-    if m.shape != ref.shape and not (m.shape == ref.shape[:2] and ref.ndim == 3):
-        raise ValueError(f"mask: shape {m.shape} matches neither the image shape {ref.shape} "
-                         f"nor its (rows, cols) {ref.shape[:2]}")
-    if not m.any():
-        raise ValueError("mask: selects no pixel; the PSNR of an empty set is undefined")
-    if m.ndim == 3:                    # one flag per element: each element is a 'pixel'
-        ref, tst = ref.reshape(ref.shape[0], -1), tst.reshape(tst.shape[0], -1)
-        m = m.reshape(m.shape[0], -1)
+    m = None
+    if mask is not None:
+        m = as_array(mask, "mask")
+        if m.dtype != np.bool_:
+            raise TypeError(f"mask: expected a boolean array, got dtype {m.dtype}")
+        if m.shape != ref.shape and not (m.shape == ref.shape[:2] and ref.ndim == 3):
+            raise ValueError(f"mask: shape {m.shape} matches neither the image shape "
+                             f"{ref.shape} nor its (rows, cols) {ref.shape[:2]}")
+        if not m.any():
+            raise ValueError("mask: selects no pixel; the PSNR of an empty set is undefined")
+        if m.ndim == 3:                # one flag per element: each element is a 'pixel'
+            ref, tst = ref.reshape(ref.shape[0], -1), tst.reshape(tst.shape[0], -1)
+            m = m.reshape(m.shape[0], -1)
     out = _psnr_from_mse(*_mse(ref, tst, m, threads), peak)
-    _warn_unit_floats((ref, tst), ("reference", "test"), peak, param)
+    _warn_unit_floats((ref, tst), ("reference", "test"), peak,
+                      "data_range" if bit_depth is None else "bit_depth")
     return out
 
 

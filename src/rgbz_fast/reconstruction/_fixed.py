@@ -16,13 +16,13 @@ a wrap-around). docs/guide/hardware.md specifies the datapath.
 from __future__ import annotations
 
 import math
-import os
 from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
 
 from .. import _kernels
+from .._validate import outside_stacklevel
 from ._fixed_config import FixedPointConfig
 from ._plans import NGROUPS, build_plans
 
@@ -354,18 +354,6 @@ def check_fixed_call(data, pattern, method):
 SIGMA_REL_VALIDATED = 0.5
 
 
-def _caller_level():
-    """The ``stacklevel`` of a warning raised by the caller of this function that names the
-    first frame outside the package (the user's line, through reconstruct or ColourISP.run)."""
-    import sys
-
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    frame, level = sys._getframe(1), 1
-    while frame is not None and os.path.abspath(frame.f_code.co_filename).startswith(root):
-        frame, level = frame.f_back, level + 1
-    return level
-
-
 def run_fixed(src, out, pattern, method, params, bit_depth):
     """The fixed-point streaming model over ``src`` (uint8/uint16, checked) into ``out``."""
     config = params.fixed_point if params.fixed_point is not None else FixedPointConfig()
@@ -381,7 +369,7 @@ def run_fixed(src, out, pattern, method, params, bit_depth):
             f"from float64 (on Kodak, EDICentral on Mask1 with the paper's sigma_rel=0: about "
             f"a quarter of the Z sites by more than 1 LSB, up to 400 DN); the model's targets "
             f"hold for sigma_rel >= {SIGMA_REL_VALIDATED:g}", RuntimeWarning,
-            stacklevel=_caller_level())
+            stacklevel=outside_stacklevel())
     P, Q = pattern.period
     state = np.empty(_LAYOUT[2], np.uint8)
     _kernels.reconstruct_fixed(src, out, P, Q, plan_map, plans, n, hw, cfg, et, rt, state)
