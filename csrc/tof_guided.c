@@ -10,6 +10,7 @@
  *   (rgbz_tof_depth_iq)   atan2, amplitude, unwrapping (tof.c)
  *   rgbz_tofg_validity    snr, sigma, implied reflectance and the validity bits
  *   rgbz_tofg_flying      the flying-pixel test with colour edges
+ *   rgbz_tofg_agree       the low-signal measurements a usable neighbour confirms (upsample)
  *   rgbz_tofg_upsample    a depth at every pixel of the guide
  *
  * Why a row pass then a column pass: the column pass averages row-pass outputs of
@@ -1965,6 +1966,44 @@ RGBZ_CLONES_512 static void tofg_up_span(const tofg_up_args *p, float ambiguity,
         out[x0 + j] = none ? NAN : (float)(num / den);
         conf[x0 + j] = none ? 0.0f : (float)den;          /* the bilinear weights sum to 1 */
     }
+}
+
+int rgbz_tofg_agree(double *depth, double *low, const uint8_t *lone, const double *sigma,
+                    ptrdiff_t R, ptrdiff_t C, double tol_k, double tol_min, int workers)
+{
+    if (!depth || !low || !lone || !sigma || R < 0 || C < 0 || !(tol_k >= 0.0)
+        || !(tol_min >= 0.0))
+        return RGBZ_EINVAL;
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    /* a node writes only itself, and only when lone; it reads the depths of nodes that are
+       not lone, which nobody writes: rows in parallel */
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t r = 0; r < R; r++) {
+        const ptrdiff_t i0 = r > 0 ? r - 1 : 0, i1 = r + 1 < R ? r + 1 : R - 1;
+        for (ptrdiff_t c = 0; c < C; c++) {
+            const ptrdiff_t m = r * C + c;
+            const double d = low[m];
+            if (!lone[m] || d != d) continue;
+            double tol = tol_k * sigma[m];
+            tol = tol > tol_min ? tol : tol_min;
+            const ptrdiff_t j0 = c > 0 ? c - 1 : 0, j1 = c + 1 < C ? c + 1 : C - 1;
+            int ok = 0;
+            for (ptrdiff_t i = i0; i <= i1 && !ok; i++)
+                for (ptrdiff_t j = j0; j <= j1; j++) {
+                    const ptrdiff_t n = i * C + j;
+                    if (n != m && !lone[n] && fabs(depth[n] - d) <= tol) {   /* NaN: false */
+                        ok = 1;
+                        break;
+                    }
+                }
+            if (ok) {
+                depth[m] = d;
+                low[m] = NAN;
+            }
+        }
+    }
+    return RGBZ_OK;
 }
 
 /* ------------------------------------------------------------------ the element types */

@@ -147,6 +147,16 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
    0 where no node around the pixel has a depth, where the heaviest node has none, or where
    the nodes more than max(gap, the tolerance) off the chosen depth (or without one) hold more
    than `ambiguity` of the weight. */
+/* The low-signal measurements a usable neighbour confirms, for rgbz_tofg_upsample, in place on
+   the grid (R, C): each node m with lone[m] != 0 (a candidate: its own measurement low[m],
+   finite, sigma[m]) whose low[m] lies within max(tol_k sigma[m], tol_min) of depth[n] for one
+   of its 8 neighbours n with lone[n] == 0 and depth[n] finite (a usable measurement) moves
+   low[m] into depth[m] (NaN there before) and sets low[m] to NaN; the others keep theirs.
+   Neighbours are judged on lone and the depths they had, so the result does not depend on
+   the order or the thread count. */
+int rgbz_tofg_agree(double *depth, double *low, const uint8_t *lone, const double *sigma,
+                    ptrdiff_t R, ptrdiff_t C, double tol_k, double tol_min, int workers);
+
 int rgbz_tofg_upsample(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W, double scale,
                        const double *cscale, const double *depth, const double *sigma,
                        const float *col, ptrdiff_t R, ptrdiff_t C, const double *rc,

@@ -269,6 +269,8 @@ def tofg_flying(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, col: n
                 step: float, k: float,
                 contrast: float, side: float, unflag: int, flags: np.ndarray,
                 depth_out: np.ndarray, workers: int) -> None: ...
+def tofg_agree(depth: np.ndarray, low: np.ndarray, lone: np.ndarray, sigma: np.ndarray,
+               R: int, C: int, tol_k: float, tol_min: float, workers: int) -> None: ...
 def tofg_upsample(guide: np.ndarray, scale: float, cscale: np.ndarray, depth: np.ndarray,
                   sigma: np.ndarray, col: np.ndarray, R: int, C: int, rc: np.ndarray,
                   cc: np.ndarray, spacing: float, reach: int, inv2s2: float, inv2hc2: float,

@@ -1163,6 +1163,8 @@ cdef extern from "tof_guided.h" nogil:
                          int nring, Py_ssize_t R, Py_ssize_t C, double step, double k,
                          double contrast, double side, int unflag, uint8_t *flags,
                          double *depth_out, int workers)
+    int rgbz_tofg_agree(double *depth, double *low, const uint8_t *lone, const double *sigma,
+                        Py_ssize_t R, Py_ssize_t C, double tol_k, double tol_min, int workers)
     int rgbz_tofg_upsample(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
                            double scale, const double *cscale, const double *depth,
                            const double *sigma, const float *col, Py_ssize_t R, Py_ssize_t C,
@@ -1410,6 +1412,24 @@ def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[
         status = rgbz_tofg_flying(&depth[0], &sigma[0], &usable[0], &col[0, 0], cp, ncells, rp,
                                   nring, R, C, step, k, contrast, side, unflag, &flags[0],
                                   &depth_out[0], workers)
+    _raise_for(status)
+
+
+def tofg_agree(double[::1] depth, double[::1] low, const uint8_t[::1] lone,
+               const double[::1] sigma, Py_ssize_t R, Py_ssize_t C, double tol_k, double tol_min,
+               int workers):
+    """In place on the grid (R, C): the candidates (lone) whose low-signal depth lies within
+    max(tol_k sigma, tol_min) of a usable neighbour's move from low into depth; all (R * C,)."""
+    cdef Py_ssize_t n = R * C
+    if R < 0 or C < 0 or depth.shape[0] != n or low.shape[0] != n or lone.shape[0] != n or \
+            sigma.shape[0] != n:
+        raise ValueError(f"tofg_agree: expected planes of {R} x {C} measurements")
+    if n == 0:
+        return
+    cdef int status
+    with nogil:
+        status = rgbz_tofg_agree(&depth[0], &low[0], &lone[0], &sigma[0], R, C, tol_k, tol_min,
+                                 workers)
     _raise_for(status)
 
 

@@ -416,6 +416,26 @@ def guided_flying(depth, sigma, usable, col, cells, ring, R, C, step, k, contras
     return flags, out
 
 
+def guided_agree(depth, low, lone, sigma, R, C, tol_k, tol_min):
+    """rgbz_tofg_agree (plain loops, on copies): the candidates whose low depth lies within
+    max(tol_k sigma, tol_min) of a usable 8-neighbour's (not lone, finite) move into depth."""
+    d0 = np.asarray(depth, np.float64).reshape(R, C)
+    lw = np.asarray(low, np.float64).reshape(R, C)
+    ln = np.asarray(lone).reshape(R, C).astype(bool)
+    sg = np.asarray(sigma, np.float64).reshape(R, C)
+    d, lo = d0.copy(), lw.copy()
+    for r in range(R):
+        for c in range(C):
+            if not ln[r, c] or np.isnan(lw[r, c]):
+                continue
+            tol = max(tol_k * sg[r, c], tol_min)
+            for i in range(max(r - 1, 0), min(r + 1, R - 1) + 1):
+                for j in range(max(c - 1, 0), min(c + 1, C - 1) + 1):
+                    if (i, j) != (r, c) and not ln[i, j] and abs(d0[i, j] - lw[r, c]) <= tol:
+                        d[r, c], lo[r, c] = lw[r, c], np.nan
+    return d.ravel(), lo.ravel()
+
+
 def guided_upsample(guide, scale, cscale, depth, sigma, col, R, C, rc, cc, spacing, reach,
                     inv2s2, inv2hc2, tol_k, tol_min, own=None, own_k=2.0, ambiguity=1.0,
                     gap=0.0):

@@ -51,8 +51,10 @@ def test_scenes_and_upsample_sections_on_the_middlebury_scenes():
     assert guided["wrong_valid"] <= 0.0005 * guided["known"]
     assert guided["wrong"] - guided["wrong_valid"] >= 0.96 * guided["wrong"]
     up = {r["method"]: r for r in res["upsample"] if r["scene"] == "all"}
+    # issue 25's full-resolution targets (measured 97.5 %, 0.12 %, 0.45x)
     assert up["guided"]["covered"] >= 0.95 * up["guided"]["known"]
-    assert up["guided"]["edge_err_both"] <= 0.9 * up["guided"]["edge_err_nearest_both"]
+    assert up["guided"]["wrong"] <= 0.005 * up["guided"]["covered"]
+    assert up["guided"]["edge_err_both"] <= 0.7 * up["guided"]["edge_err_nearest_both"]
     assert up["bilinear"]["covered"] < up["nearest"]["covered"] == up["nearest"]["known"]
     text = depth_report(res)
     assert "| all | mask2 | colour |" in text and "Full resolution" in text

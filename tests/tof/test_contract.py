@@ -233,6 +233,10 @@ ROWS = [
       lambda f: tof.upsample_depth(tof.tof_depth(sim_frame()), np.full((16, 16, 3), 0.5),
                                    colour_scale=1e-200), ValueError,
       "colour_scale: expected a finite number >= 1e-06 and <= 1e+06, got 1e-200"),
+    R("tof.upsample-max_sigma-nan", "upsample_depth(result, image, max_sigma=nan)",
+      lambda f: tof.upsample_depth(tof.tof_depth(sim_frame()), np.full((16, 16, 3), 0.5),
+                                   max_sigma=float("nan")), ValueError,
+      "max_sigma: expected a number >= 0, got nan"),
 ]
 
 test_api_contract = api_tests(ROWS)

@@ -394,6 +394,30 @@ def test_upsample_matches_numpy(pattern, ambiguity):
     np.testing.assert_allclose(conf, wconf, rtol=1e-4, atol=1e-6)
 
 
+@pytest.mark.parametrize("workers", [1, 2])
+def test_agree_matches_numpy(workers):
+    """rgbz_tofg_agree: usable measurements, candidates near and far from them, NaN ones,
+    candidates side by side (which never confirm each other) and grid borders."""
+    rng = np.random.default_rng(4)
+    R, C = 23, 31
+    depth = rng.uniform(1.0, 1.2, R * C)
+    depth[rng.random(R * C) < 0.4] = np.nan                    # holes
+    lone = (np.isnan(depth) & (rng.random(R * C) < 0.7)).astype(np.uint8)
+    low = np.where(lone > 0, rng.uniform(0.95, 1.4, R * C), np.nan)
+    low[rng.random(R * C) < 0.05] = np.nan                     # a candidate without a depth
+    sigma = rng.uniform(0.001, 0.03, R * C)
+    sigma[::17] = np.inf
+    want_d, want_low = ref.guided_agree(depth, low, lone, sigma, R, C, 3.0, 0.02)
+    d, lo = depth.copy(), low.copy()
+    _kernels.tofg_agree(d, lo, lone, sigma, R, C, 3.0, 0.02, workers)
+    taken = np.isnan(depth) & np.isfinite(d)
+    assert 0 < taken.sum() < (lone > 0).sum()                   # some confirmed, some not
+    np.testing.assert_array_equal(d, want_d)                   # copies: exact
+    np.testing.assert_array_equal(lo, want_low)
+    with pytest.raises(ValueError, match="tofg_agree"):
+        _kernels.tofg_agree(d, lo, lone, sigma, R, C + 1, 3.0, 0.02, 1)
+
+
 # --------------------------------------------------------------------------- the chain
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_guided_chain_keeps_surfaces_apart(pattern):
@@ -480,6 +504,47 @@ def test_upsample_gives_a_depth_where_the_colour_can_choose():
     assert np.isfinite(every).mean() > 0.97
     off = lambda u: int(np.sum(np.abs(u - depth)[np.isfinite(u)] > 0.05))   # noqa: E731
     assert off(up) < off(every) / 2
+
+
+def test_upsample_takes_low_signal_measurements_below_max_sigma():
+    """A measurement flagged low-signal alone with a sigma of at most max_sigma gives the
+    map its depth when a usable neighbour agrees; above max_sigma, with another flag besides,
+    or agreeing with no neighbour (a mixture at a depth edge), it only vetoes: its pixel
+    refuses the neighbours' surface when that lies beyond 2 of its sigma."""
+    import dataclasses
+    frame, guide, _ = _frame("mask1")
+    res = tof_depth(frame.tof, guide=guide)
+    r, c = res.sites
+    inbox = (r > 12) & (r < 28) & (c > 14) & (c < 28)       # the first box, 1.5 m
+    marked = inbox & ((r // 2 + c // 2) % 2 == 0)            # every other measurement
+    assert res.valid[inbox].all() and marked.sum() >= 20
+    mixed = marked & (r == 20) & (c == 20)                   # one between box and wall
+
+    def result(flag, sigma):
+        flags, sig, d = res.flags.copy(), res.sigma.copy(), res.depth.copy()
+        flags[marked], sig[marked] = flag, sigma
+        d[marked] = res.depth[marked] + 0.01                # within 2 cm of the box
+        d[mixed] = 1.75
+        return dataclasses.replace(res, flags=flags, sigma=sig, depth=d, valid=flags == 0)
+
+    low, both = int(ToFFlag.LOW_SIGNAL), int(ToFFlag.LOW_SIGNAL | ToFFlag.INCONSISTENT)
+    agreeing = marked & ~mixed
+    for flag, sigma, max_sigma, taken in [(low, 0.018, 0.02, True), (low, 0.018, np.inf, True),
+                                          (low, 0.025, 0.02, False), (low, 0.018, None, False),
+                                          (low, 0.018, 0, False), (both, 0.018, 0.02, False)]:
+        given = result(flag, sigma)
+        up, conf = upsample_depth(given, guide, max_sigma=max_sigma)
+        at = up[r[agreeing], c[agreeing]]                   # Mask1: a Z site's pixel takes
+        if taken:                                           # its own node alone
+            np.testing.assert_allclose(at, given.depth[agreeing], atol=1e-6)
+        else:                                               # filled from the box around
+            assert np.all(np.abs(at - res.depth[agreeing] - 0.01) > 1e-3)
+            assert np.all(np.abs(at - 1.5) < 0.03)
+        assert np.isnan(up[20, 20]) and conf[20, 20] == 0   # the mixture: a veto
+    with pytest.raises(ValueError, match="max_sigma"):
+        upsample_depth(res, guide, max_sigma=-0.01)
+    with pytest.raises(TypeError, match="max_sigma"):
+        upsample_depth(res, guide, max_sigma="0.02")
 
 
 @pytest.mark.parametrize("guide,exc,msg", [

@@ -71,6 +71,12 @@ UPSAMPLE_COLOUR_SCALE = 20.0
 #: upsampling: a pixel gets no depth when the measurements off the surface it would take hold
 #: more than this share of its weight
 UPSAMPLE_AMBIGUITY = 0.15
+#: upsampling: a measurement flagged low-signal alone whose predicted sigma is at most this (m)
+#: takes part as a measurement. The ISP flags every sigma above ``ToFISP.max_sigma`` (1.5 cm),
+#: which keeps its valid measurements within 5 cm but for 0.05 %; the map allows 0.5 % of its
+#: pixels more than 5 cm off, and at 2 cm a 5 cm error is 2.5 sigma (docs/reports/isp.md,
+#: "Measured: full resolution")
+UPSAMPLE_MAX_SIGMA = 0.02
 #: upsampling: a measurement counts as another surface than the chosen one when its depth
 #: lies more than this (m) from it (or than the mean's tolerance, if wider): the neighbouring
 #: measurements of a slanted surface differ by more than that tolerance
@@ -330,7 +336,7 @@ def guided_flying_of(result, g, scale, step, nthreads):
 
 
 def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
-                   ambiguity=UPSAMPLE_AMBIGUITY, workers=None):
+                   ambiguity=UPSAMPLE_AMBIGUITY, max_sigma=UPSAMPLE_MAX_SIGMA, workers=None):
     """A depth at every pixel of the frame, from the measurements guided by its colour image.
 
     Joint bilateral upsampling [1]_ that chooses rather than averages: a pixel
@@ -342,16 +348,20 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     Where those more than 5 cm from that depth (another surface) hold more
     than ``ambiguity`` of the weight, the colour cannot tell which surface
     the pixel is on and it gets NaN. Valid measurements, resolved ones
-    (:attr:`ToFFlag.RESOLVED`, with the depth of their side) and those
-    flagged flying alone take part: the flying-pixel test flags both sides
-    of every depth edge, and the measurements right at an edge are the ones
-    that give its position (the colour picks the side; measured on the
-    Middlebury scenes, docs/reports/isp.md). A Z pixel without a usable
-    measurement takes the same rule over the measurements within 1, 2 or 4
-    grid lines (Gaussian weights) at a quarter of the weight; when its own
-    measurement is low-signal, only the candidates within 2 of its sigma of
-    that measurement, and none when none is (it then counts as a surface of
-    unknown depth: the pixels it would win get NaN).
+    (:attr:`ToFFlag.RESOLVED`, with the depth of their side), those flagged
+    flying alone and those flagged low-signal alone with a sigma of at most
+    ``max_sigma`` take part: the flying-pixel test flags both sides of every
+    depth edge, and the measurements right at an edge are the ones that give
+    its position (the colour picks the side); a measurement the ISP finds
+    too noisy for its own 0.05 % (sigma above ``ToFISP.max_sigma``) is still
+    good enough for a map that allows 0.5 % (measured on the Middlebury
+    scenes, docs/reports/isp.md). A Z pixel without a usable measurement
+    takes the same rule over the measurements within 1, 2 or 4 grid lines
+    (Gaussian weights) at a quarter of the weight; when it has a low-signal
+    measurement of its own (other flags besides, as inconsistent, count too),
+    only the candidates within 2 of its sigma of that measurement, and none
+    when none is (it then counts as a surface of unknown depth: the pixels
+    it would win get NaN).
 
     Parameters
     ----------
@@ -369,6 +379,11 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
         surface may hold (0.15); 1 gives a depth wherever a measurement reaches
         but for the pixels a low-signal measurement without an agreeing
         neighbour wins.
+    max_sigma : float or None
+        The largest predicted sigma (m) of a measurement flagged low-signal
+        alone that takes part as a measurement (0.02); None or 0: none does
+        (each then only vetoes the surfaces it disagrees with, as the other
+        low-signal ones do).
     workers : int, optional
         Threads (None or -1: all cores); the result does not depend on it.
 
@@ -416,18 +431,28 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
                         f"{type(result).__name__}")
     cs = check_scale(colour_scale, "colour_scale")
     amb = check_number(ambiguity, "ambiguity", lo=0, hi=1)
+    max_sigma = check_number(max_sigma, "max_sigma", lo=0, allow_none=True, allow_inf=True)
     nthreads = check_workers(workers)
     g, scale = check_guide(guide, result.shape)
     layout = _layout_of(result.sites, result.block, result.shape)
     col, _, sigma_c = guide_colours(g, scale, layout, nthreads)
-    usable = result.valid | ((result.flags & FLAG_RESOLVED) > 0) | (result.flags == FLAG_FLYING)
+    flags = result.flags
+    usable = result.valid | ((flags & FLAG_RESOLVED) > 0) | (flags == FLAG_FLYING)
     depth = np.ascontiguousarray(layout.to_grid(np.where(usable, result.depth, np.nan),
                                                 np.nan), np.float64)
     sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
-    # a low-signal measurement's own depth: too noisy to give a depth, enough to reject the
-    # neighbours' surfaces it disagrees with
-    own = np.ascontiguousarray(layout.to_grid(
-        np.where(result.flags == FLAG_LOW_SIGNAL, result.depth, np.nan), np.nan), np.float64)
+    # the low-signal measurements' own depths: too noisy to give a depth alone, enough to
+    # reject the neighbours' surfaces they disagree with; those below max_sigma that agree
+    # with a usable neighbour give theirs
+    low = np.ascontiguousarray(layout.to_grid(np.where(
+        ((flags & FLAG_LOW_SIGNAL) > 0) & ~usable, result.depth, np.nan), np.nan), np.float64)
+    if max_sigma:
+        lone = layout.to_grid((flags == FLAG_LOW_SIGNAL) & (result.sigma <= max_sigma), False)
+        # one that lies at a depth edge mixing the two surfaces (a 2x2 Z pixel straddling it,
+        # which the flying-pixel test does not see) agrees with neither
+        _kernels.tofg_agree(depth, low, np.ascontiguousarray(lone).view(np.uint8), sigma,
+                            layout.R, layout.C, _UP_TOL_K, _UP_TOL_MIN, nthreads)
+    own = low
     half = 0.5 * (result.block - 1)
     rc = np.ascontiguousarray(layout.rows + half, np.float64)
     cc = np.ascontiguousarray(layout.cols + half, np.float64)
