@@ -34,7 +34,8 @@ def test_partially_infinite_cells_are_noted():
     assert res.nonfinite_note() == note
     md = res.summary_markdown()
     assert md.startswith("Mean ± std over 2 image(s);")
-    assert "| bilinear | 20.00 ± 0.00 | 0.7500 ± 0.3536 |" in md     # numbers unchanged
+    # one finite value: its mean and no spread (it printed "± 0.00")
+    assert "| bilinear | 20.00 | 0.7500 ± 0.3536 |" in md
     assert md.count(note) == 1
     # under the means table, before the paired differences
     assert md.index("| SG |") < md.index(note) < md.index("Paired differences")
@@ -43,7 +44,7 @@ def test_partially_infinite_cells_are_noted():
             "1 of 2 images.") in md
     text = res.plain_table()
     assert text.count(note) == 1
-    assert "20.0000 ±0.000" in text and "nan" not in text
+    assert "20.0000         " in text and "nan" not in text and "±0.000" not in text
 
 
 def test_all_infinite_cell_shows_inf_and_is_noted():
@@ -55,7 +56,7 @@ def test_all_infinite_cell_shows_inf_and_is_noted():
     md = res.summary_markdown()
     assert "nan" not in md
     assert "| SG | **inf** | **0.8000 ± 0.2828** |" in md          # +inf everywhere: the best
-    assert "| bilinear | 20.00 ± 0.00 | 0.7500 ± 0.3536 |" in md
+    assert "| bilinear | 20.00 | 0.7500 ± 0.3536 |" in md
     assert md.count(note) == 1
     assert "Δ CPSNR of SG on mask1: none of 2 images." in md
     assert "| SG | — |" in md
@@ -148,3 +149,14 @@ def test_a_mapping_of_params_keeps_the_evaluations_float64():
     assert EvalConfig(params=None).params.precision == "float64"
     assert EvalConfig(params={"sigma_rel": 0}).params.precision == "float64"
     assert EvalConfig(params={"sigma_rel": 0}).params.sigma_rel == 0
+
+
+def test_one_image_shows_no_spread():
+    """One image: the values without '± 0.00' (a spread of one value is not 0), the summary's
+    std NaN, and 'image' in the singular."""
+    res = Results([r for r in _results().rows if r["image"] == "rand"], CONFIG)
+    assert all(math.isnan(std) and n == 1 for _, std, n in res.summary().values())
+    md, text = res.summary_markdown(), res.plain_table()
+    assert md.startswith("The values of 1 image (no spread to show);")
+    assert "±" not in md.split("Paired")[0] and "±" not in text
+    assert "(1 image;" in text

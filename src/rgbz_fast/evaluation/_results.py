@@ -160,7 +160,8 @@ class Results:
                          and r["method"] == method and r["metric"] == metric], dtype=float)
 
     def summary(self):
-        """{(pattern, method, metric): (mean, std, n)}; infinite values are left out of the mean."""
+        """{(pattern, method, metric): (mean, std, n)}; infinite values are left out of the mean;
+        the std (ddof=1) is NaN with fewer than two values (one image has no spread)."""
         out = {}
         for p in self.config.patterns:
             for m in self.config.methods:
@@ -168,7 +169,8 @@ class Results:
                     v = self.values(p, m, k)
                     v = v[np.isfinite(v)]
                     out[(p, m, k)] = (float(v.mean()) if v.size else math.nan,
-                                      float(v.std(ddof=1)) if v.size > 1 else 0.0, int(v.size))
+                                      float(v.std(ddof=1)) if v.size > 1 else math.nan,
+                                      int(v.size))
         return out
 
     def left_out(self):
@@ -410,7 +412,9 @@ class Results:
                 self._known(k, "digits", ALL_METRICS)
                 check_int(v, f"digits[{k!r}]", lo=0, hi=17)
             fmt = {**fmt, **digits}
-        lines = [f"Mean ± std over {len(self.images())} image(s); {self.label()}.", ""]
+        n_images = len(self.images())
+        lines = [f"Mean ± std over {n_images} image(s); {self.label()}." if n_images != 1 else
+                 f"The values of 1 image (no spread to show); {self.label()}.", ""]
         if self.skipped:
             lines[-1:] = [f"Skipped {len(self.skipped)} image(s) that could not be evaluated: "
                           + "; ".join(f"{n} ({why})" for n, why in self.skipped) + ".", ""]
@@ -431,7 +435,8 @@ class Results:
                 cells = []
                 for k in self.config.metrics:
                     mean, std, _ = s[(p, m, k)]
-                    cell = f"{mean:.{fmt[k]}f} ± {std:.{fmt[k]}f}"
+                    cell = f"{mean:.{fmt[k]}f}" + (f" ± {std:.{fmt[k]}f}" if np.isfinite(std)
+                                                   else "")
                     if (p, m, k) in all_inf:      # a perfect image everywhere: no mean to show
                         cell, mean = "inf", math.inf
                     cells.append("n/a" if not self.config.applies(p, m) else
@@ -504,11 +509,13 @@ class Results:
         w = max(len(METHOD_LABELS.get(m, m)) for m in self.config.methods) + 2
         out = []
         for p in self.config.patterns:
-            out.append(f"{p}  ({len(self.images())} images; {self.label()})")
+            n_images = len(self.images())
+            out.append(f"{p}  ({n_images} image{'s' if n_images != 1 else ''}; {self.label()})")
             out.append(" " * w + "".join(f"{METRIC_LABELS[k]:>20}" for k in self.config.metrics))
             for m in self.config.methods:
                 cells = "".join(f"{'inf':>12}{'':8}" if (p, m, k) in all_inf else
-                                f"{s[(p, m, k)][0]:>12.4f} ±{s[(p, m, k)][1]:<7.3f}"
+                                f"{s[(p, m, k)][0]:>12.4f} " + (f"±{s[(p, m, k)][1]:<7.3f}"
+                                                               if s[(p, m, k)][2] > 1 else " " * 8)
                                 if self.config.applies(p, m) else f"{'n/a':>12}{'':8}"
                                 for k in self.config.metrics)
                 out.append(f"{METHOD_LABELS.get(m, m):<{w}}{cells}")
