@@ -110,3 +110,18 @@ def test_pattern_study_refuses_its_report_in_the_dataset_folder(tmp_path, capsys
     assert "--out: pattern_study.png (from the report) would be written into" in \
         capsys.readouterr().err
     assert sorted(os.listdir(ds)) == ["a.png"]
+
+
+def test_pattern_study_refuses_its_report_in_the_train_folder(tmp_path, capsys):
+    """The plot written into --train had been fitted on by the next run's learned filters."""
+    import imageio.v3 as iio
+
+    ds, train = tmp_path / "ds", tmp_path / "train"
+    for d in (ds, train):
+        d.mkdir()
+        iio.imwrite(d / "a.png", np.full((32, 32, 3), 128, np.uint8))
+    assert main(["pattern-study", "--dataset", str(ds), "--train", str(train), "--out",
+                 str(train), "--quiet", "--no-cache"]) == 2
+    assert "--out: pattern_study.png (from the report) would be written into" in \
+        capsys.readouterr().err
+    assert sorted(os.listdir(train)) == ["a.png"]

@@ -98,3 +98,47 @@ def test_the_simulation_options_are_refused_on_a_dataset_of_raw_files(tmp_path, 
                        "evaluation mosaics; the dataset's raw files are measured as they are "
                        "(their own bit depth, noise and lens)"]
     assert not (tmp_path / "out").exists()
+
+
+def test_train_refuses_the_simulation_options_on_raw_files(tmp_path, capsys):
+    """train on a folder of raw files fitted on them as they are, ignored --noise,
+    --bit-depth, --no-linearise and --encoding, and wrote them into the filters' metadata as
+    applied."""
+    import shutil
+
+    import pytest
+
+    pytest.importorskip("rawpy")
+    from _support import shared_path
+
+    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
+    (tmp_path / "raw").mkdir()
+    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
+    for flag in (["--noise"], ["--bit-depth", "8"], ["--no-linearise"], ["--encoding", "srgb"]):
+        assert main(["train", "--dataset", str(tmp_path / "raw"), *flag,
+                     "--out", str(tmp_path / "f.npz")]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert err == [f"rgbz-fast train: error: {flag[0]}: applies to the RGB images the fit "
+                       "mosaics; the dataset's raw files are fitted on as they are (their own "
+                       "bit depth, noise and encoding)"]
+    assert not (tmp_path / "f.npz").exists()
+
+
+def test_tradeoff_quick_refuses_raw_files(tmp_path, capsys):
+    """--quick crops images; a raw frame had failed with "'RawFrame' object is not
+    subscriptable"."""
+    import shutil
+
+    import pytest
+
+    pytest.importorskip("rawpy")
+    from _support import shared_path
+
+    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
+    (tmp_path / "raw").mkdir()
+    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
+    assert main(["tradeoff", "--dataset", str(tmp_path / "raw"), "--quick", "--methods",
+                 "bilinear", "--patterns", "mask1", "--out", str(tmp_path / "t")]) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
+        "rgbz-fast tradeoff: error: --quick: crops the dataset's first two images to 128 x 128, "
+        "and chart is a raw file, measured whole; run without --quick, or on RGB images"]

@@ -243,6 +243,20 @@ def test_tradeoff_one_tiny_image(capsys, tmp_path):
     assert tradeoff_plot(res)[:8] == b"\x89PNG\r\n\x1a\n"
     md = tradeoff.format_markdown(res, "t.png")
     assert md.startswith("# Speed/accuracy") and "| sg |" in md.replace("**", "")
+    assert "Accuracy: noise-free 11-bit mosaics of 1 linearised image (" in md
+    assert not res["ir_estimated"] and "leaks" not in md
+
+
+def test_tradeoff_says_how_z_guided_frames_were_made():
+    """With z_guided every frame comes from the sensor model (the other rows move), and its
+    NIR estimated from the RGB leaks the answer: the report had said neither."""
+    img = np.random.default_rng(0).integers(0, 256, (48, 64, 3), dtype=np.uint8)
+    res = tradeoff.run_tradeoff([_Image("noise", img)], methods=("bilinear", "z_guided"),
+                                patterns=("mask1",), speed_shape=(48, 64), repeat=1)
+    assert res["sensor_model"] and res["ir_estimated"] == ["noise"]
+    for text in (tradeoff.format_markdown(res), tradeoff.format_text(res)):
+        assert "z_guided: the NIR was estimated from the RGB on 1 of 1 image (noise)" in text
+    assert "frames of the sensor model (with ToF taps" in tradeoff.format_markdown(res)
 
 
 def test_tradeoff_cli(capsys, tmp_path):

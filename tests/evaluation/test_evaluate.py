@@ -254,6 +254,20 @@ def test_noisy_evaluation_uses_same_noise_on_both_paths(tiny_dataset):
     assert a.rows != clean.rows
 
 
+@pytest.mark.parametrize("needs_tof", [False, True])
+def test_frames_of_the_sensor_model_take_the_bit_depth(needs_tof):
+    """Noisy frames (and every frame of a run with z_guided) come from the sensor model at the
+    configuration's bit depth: the default sensor's 11 bits had been used, while the report's
+    header said 8-bit."""
+    img = np.random.default_rng(0).integers(0, 256, (32, 32, 3), dtype=np.uint8)
+    methods = ("sg", "z_guided") if needs_tof else ("sg",)
+    for bits in (8, 12):
+        cfg = ev.EvalConfig(noise=not needs_tof, bit_depth=bits, methods=methods)
+        frame, ref = ev.image_frames(img, "mask1", cfg)
+        assert frame.bit_depth == bits and ref.max() <= 2 ** bits - 1
+        assert ref.max() > 2 ** (bits - 1)                  # the range is used
+
+
 def test_table3_with_paper_values(tmp_path):
     kodak = shared_path("kodak")
     ds = [s for s in rio.folder_dataset(kodak) if s.name == "kodim09"]

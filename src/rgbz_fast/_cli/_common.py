@@ -637,14 +637,16 @@ def check_outputs(writes, reads=(), read_dirs=(), flag="--out"):
 def check_report_outputs(out, names, dataset, what="the report", reads=()):
     """``check_outputs`` of the report files ``names`` a command writes into ``out`` (None:
     none) against the files ``reads`` (the images, option files) and the ``dataset`` folder
-    (None, or a file: no folder): a figure written into the folder a dataset is read from is
-    read back as an image by the next run."""
+    (None, or a file: no folder; or a list of them, every folder the command reads images
+    from): a figure written into the folder a dataset is read from is read back as an image
+    by the next run."""
     if out is None:
         return
     from ..io import IMAGE_SUFFIXES, RAW_SUFFIXES
 
-    folders = [(dataset, IMAGE_SUFFIXES | RAW_SUFFIXES)] \
-        if dataset is not None and Path(dataset).is_dir() else []
+    datasets = dataset if isinstance(dataset, (list, tuple)) else [dataset]
+    folders = [(d, IMAGE_SUFFIXES | RAW_SUFFIXES) for d in datasets
+               if d is not None and Path(d).is_dir()]
     check_outputs([(what, Path(out) / n) for n in names], reads, folders)
 
 

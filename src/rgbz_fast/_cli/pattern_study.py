@@ -89,15 +89,26 @@ def run(args):
     from .._devtools import pattern_report as report
 
     for flag, dest, needs in (("--rgbd-size", "rgbd_size", "rgbd"),
+                              ("--rgbd-limit", "rgbd_limit", "rgbd"),
                               ("--train-limit", "train_limit", "train")):
-        if getattr(args, needs) is None and getattr(args, dest) != args.parser.get_default(dest):
+        if getattr(args, needs) is None and c.given(args, dest):
             raise c.CliError(f"{flag}: applies with --{needs}")     # it had been ignored
+    if args.no_cache and args.cache is not None:
+        raise c.CliError("--cache: names the cache that --no-cache turns off; give one of them")
     if args.rgbd_size is not None and min(args.rgbd_size) < RGBD_MIN:
         raise c.CliError(f"--rgbd-size: {args.rgbd_size[0]}x{args.rgbd_size[1]} is smaller "
                          f"than {RGBD_MIN}x{RGBD_MIN}, too small for the ToF ISP's windows")
+    from ..simulation import ToFSensor
+
+    reach = ToFSensor().unambiguous_range
+    if args.wall_distance >= reach:
+        raise c.CliError(f"--wall-distance: {args.wall_distance:g} m lies beyond the ToF "
+                         f"sensor's unambiguous range ({reach:.4g} m); every measurement of "
+                         "the wall would be flagged")
     out = c.output_folder(args.out)
     c.check_report_outputs(out, ["pattern_study.csv", "pattern_study.json", "pattern_study.md"]
-                           + ([] if args.no_plots else ["pattern_study.png"]), args.dataset)
+                           + ([] if args.no_plots else ["pattern_study.png"]),
+                           [args.dataset, args.train])   # the plot had been fitted on
     settings = study.StudySettings(methods=tuple(args.methods), seed=args.seed,
                                    rgbd_size=args.rgbd_size,
                                    wall_distance=args.wall_distance)

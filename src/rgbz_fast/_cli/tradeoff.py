@@ -78,6 +78,11 @@ def run(args):
         images = sample_dataset()[:args.limit]
         name = "scikit-image samples"
     if args.quick:
+        raw = [s.name for s in images[:2] if s.is_raw]
+        if raw:       # a raw frame is not an image array to crop: an internal error had shown
+            raise c.CliError(f"--quick: crops the dataset's first two images to 128 x 128, "
+                             f"and {raw[0]} is a raw file, measured whole; run without "
+                             "--quick, or on RGB images")
         images = [tradeoff.Crop(src, 128) for src in images[:2]]
     res = tradeoff.run_tradeoff(
         images, methods=args.methods, patterns=args.patterns,

@@ -54,8 +54,9 @@ def add_parser(sub):
                         "(default: 50; with --z-guided, set by --select)")
     p.add_argument("--z-guided", action="store_true",
                    help="fit the filters of method z_guided (guided by the NIR amplitude of the "
-                        "Z pixels) on RGB + NIR pairs; --radius, --hash-radius, --strength, "
-                        "--coherence, --noise and --linearise do not apply")
+                        "Z pixels) on RGB + NIR pairs; --bit-depth, --noise, --linearise, "
+                        "--encoding, --radius, --hash-radius, --strength, --coherence and "
+                        "--spread do not apply (refused)")
     p.add_argument("--colour-prior", type=c.positive_float, default=None,
                    help="--z-guided: the prior of the colour correction, times --prior "
                         "(default: set by --select)")
@@ -85,6 +86,16 @@ def run(args):
 
     sources = [s for d in args.dataset
                for s in folder_dataset(d, args.limit, **c.limits(args))]
+    if sources and all(s.is_raw for s in sources) and not args.z_guided:
+        for dest, flag in (("noise", "--noise"), ("bit_depth", "--bit-depth"),
+                           ("linearise", "--linearise/--no-linearise"),
+                           ("encoding", "--encoding")):
+            if c.given(args, dest):
+                # they had been ignored, and written into the filters' metadata as applied
+                flag = _spelling(args, dest, flag)
+                raise c.CliError(f"{flag}: applies to the RGB images the fit mosaics; the "
+                                 "dataset's raw files are fitted on as they are (their own bit "
+                                 "depth, noise and encoding)")
     c.check_outputs([("the filters", args.out)], [Path(s.location) for s in sources],
                     [(d, IMAGE_SUFFIXES | RAW_SUFFIXES) for d in args.dataset])
     name = args.name or "+".join(d.resolve().name for d in args.dataset)
@@ -114,8 +125,32 @@ def run(args):
     return 0
 
 
+#: options of the learned fit that --z-guided does not take (its frames are the sensor model's,
+#: 11-bit, noise-free and noisy, linear; its hash is the shipped learned filters')
+_NOT_Z_GUIDED = (("bit_depth", "--bit-depth"), ("noise", "--noise"),
+                 ("linearise", "--linearise/--no-linearise"), ("encoding", "--encoding"),
+                 ("radius", "--radius"), ("hash_radius", "--hash-radius"),
+                 ("strength", "--strength"), ("coherence", "--coherence"),
+                 ("spread", "--spread"))
+
+
+def _spelling(args, dest, flag):
+    """The linearise flag as given (--linearise or --no-linearise); the others as they are."""
+    if dest == "linearise":
+        return "--linearise" if args.linearise else "--no-linearise"
+    return flag
+
+
 def _check_z_options(args):
-    """The options of --z-guided alone: refused without it, and --cv-folds with --select cv."""
+    """The options of --z-guided alone: refused without it, and --cv-folds with --select cv;
+    the learned fit's own options refused with it (they had been accepted and ignored)."""
+    if args.z_guided:
+        for dest, flag in _NOT_Z_GUIDED:
+            if c.given(args, dest):
+                flag = _spelling(args, dest, flag)
+                raise c.CliError(f"{flag}: does not apply with --z-guided (its frames are the "
+                                 "sensor model's, 11-bit, noise-free and noisy, linear, and "
+                                 "its hash is that of the shipped learned filters)")
     if not args.z_guided:
         for flag, value in (("--colour-prior", args.colour_prior), ("--select", args.select),
                             ("--cv-folds", args.cv_folds), ("--seed", args.seed)):
@@ -125,6 +160,9 @@ def _check_z_options(args):
         # --no-linearise had been dropped without a word
         raise c.CliError(f"--encoding: {args.encoding} contradicts --no-linearise (the sRGB "
                          "values); give one of them")
+    if args.encoding == "srgb" and args.linearise and c.given(args, "linearise"):
+        raise c.CliError("--encoding: srgb contradicts --linearise (the linear values); give "
+                         "one of them")
     seen = {}
     for d in args.dataset:                 # a folder given twice was trained on twice
         key = str(d.resolve())

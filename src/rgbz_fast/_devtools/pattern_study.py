@@ -370,6 +370,14 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
     cands, notes = find_candidates(presets, tiles, generate)
     if not cands:
         raise ValueError("tiles: no layout to study (give presets, tiles or generate)")
+    from ..simulation import ToFSensor
+
+    reach = ToFSensor().unambiguous_range
+    if not 0 < settings.wall_distance < reach:
+        # the wall's measurements had all been flagged, and its noise ranked all the same
+        raise ValueError(f"settings.wall_distance: {settings.wall_distance:g} m is not within "
+                         f"the ToF sensor's unambiguous range (0, {reach:.4g}) m; every "
+                         "measurement of the wall would be flagged")
     bad = [m for m in settings.methods if m not in METHODS]
     if bad:
         raise ValueError(f"methods: unknown {bad}; expected some of {list(METHODS)}")
@@ -408,7 +416,9 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
             "train": None if train_set is None else {
                 "name": train_set[0], "images": [s.name for s in train_set[1]]},
             "rgbd": [p.name for p in scenes], "settings": _settings_dict(settings),
-            "tof_ops_per_measurement": None if tof_ops is None else sum(tof_ops.values()),
+            # per measurement and frequency (the demodulation counts one frequency at a time)
+            "tof_ops_per_measurement_per_frequency":
+                None if tof_ops is None else sum(tof_ops.values()),
             "machine": machine_info(), "scheduler": None if scheduler is None else str(
                 scheduler), "wall_time_s": time.perf_counter() - t0}
 

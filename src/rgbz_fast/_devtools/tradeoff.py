@@ -131,10 +131,13 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
                 if config.applies(p, m)]
     # per pattern, per image: reference CFA, RGB-Z frame, reference sRGB and its gains
     prepared = {p: [] for p in patterns}
+    estimated = []                  # the images whose NIR z_guided's frames estimated
     for src in sources:
         img = src.load()
         for p in patterns:
             nir = src.load_nir() if config.needs_tof and hasattr(src, "load_nir") else None
+            if config.needs_tof and nir is None and src.name not in estimated:
+                estimated.append(src.name)
             try:
                 frame, ref = image_frames(img, p, config, nir)
             except ValueError as exc:           # an image smaller than one period
@@ -202,6 +205,12 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
             "repeat": repeat, "warmup_calls": WARMUP_CALLS, "workers": workers,
             "threads_used": kernel_threads(workers, speed_shape[0] * speed_shape[1]),
             "bit_depth": bd, "rows": rows,
+            # how the frames were made (the report's protocol sentence says it): through the
+            # sensor model when a method needs the Z pixels' taps (every method then sees
+            # those frames), raw files as they are
+            "sensor_model": bool(config.needs_tof),
+            "raw_images": [src.name for src in sources if getattr(src, "is_raw", False)],
+            "ir_estimated": estimated,
             "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
                                in config.not_applicable().items()]}
 
@@ -249,11 +258,13 @@ def _findings(res):
         frac = max(r["frac_diff"] for r in sub)
         speed = (f" ({QUICK_NOTE} on speed)" if res.get("quick") else
                  f"; speed x{min(sp):.2f} to x{max(sp):.2f}")
+        differ = (f"at most {frac * 100:.3g} % of the Z pixels of one variant differ, by at "
+                  f"most {worst['max_abs_diff_dn']:.0f} DN ({worst['method']} "
+                  f"{worst['pattern']})" if worst["max_abs_diff_dn"] > 0 else
+                  "no Z pixel differs")
         out.append(
             f"* **{what}**: mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB "
-            f"against float64 + libm; at most {frac * 100:.3g} % of the Z pixels of one variant "
-            f"differ, by at most {worst['max_abs_diff_dn']:.0f} DN ({worst['method']} "
-            f"{worst['pattern']}){speed}.")
+            f"against float64 + libm; {differ}{speed}.")
     return out
 
 
@@ -278,8 +289,7 @@ def format_markdown(res, png_name=None, command=None):
              f"Mpix/s of `reconstruct` on a {res['speed_frame'][1]}x{res['speed_frame'][0]} "
              f"uint16 frame, best of {res['repeat']} runs interleaved across the variants "
              f"after {res.get('warmup_calls', 1)} warm-up call each "
-             "(median [IQR] beside it). Accuracy: noise-free "
-             f"{res['bit_depth']}-bit mosaics of {len(res['images'])} linearised images "
+             f"(median [IQR] beside it). Accuracy: {_protocol(res)} "
              f"({res['dataset']}), mean CFA PSNR on every Z site and mean CPSNR of the 8-bit "
              f"sRGB images of the library's colour chain (grey-world white balance of the "
              f"reference, Malvar 2004, sRGB gamma; {CROP}-pixel border left out): the protocol "
@@ -289,6 +299,8 @@ def format_markdown(res, png_name=None, command=None):
              "over every Z site "
              "(largest |difference| in DN, share of Z pixels that differ). Bold: on the "
              "Pareto front of its mask (nothing both faster and more accurate).", ""]
+    if res.get("ir_estimated"):
+        lines += [_leak_note(res), ""]
     if png_name:
         lines += [f"![Pareto plot]({png_name})", ""]
     lines += ["## What the approximations cost", ""] + _findings(res) + ([""] if quick else [
@@ -326,4 +338,31 @@ def format_text(res):
                      f"{r['mpix_s']:7.1f}  {r['cfa_psnr']:8.3f}  {r['cpsnr']:7.3f}  {d:>5}  "
                      f"{f:>8}  {'*' if r['pareto'] else ''}")
     lines += [f"not run: {m} on {p} ({why})" for p, m, why in res.get("not_applicable", ())]
+    if res.get("ir_estimated"):
+        lines.append(_leak_note(res))
     return "\n".join(lines + [""] + _findings(res))
+
+
+def _protocol(res):
+    """How the accuracy's frames were made, as the run made them."""
+    n, raw = len(res["images"]), len(res.get("raw_images", ()))
+    if res.get("sensor_model"):
+        text = (f"noise-free {res['bit_depth']}-bit frames of the sensor model (with ToF taps, "
+                f"a wall at 2 m; every method sees them, as in `rgbz-fast evaluate` with "
+                f"z_guided) of {n} image{'s' if n != 1 else ''}")
+    else:
+        text = (f"noise-free {res['bit_depth']}-bit mosaics of {n - raw} linearised "
+                f"image{'s' if n - raw != 1 else ''}")
+    if raw:
+        text += (f" and {raw} raw file{'s' if raw != 1 else ''} measured as "
+                 f"{'it is' if raw == 1 else 'they are'} (on the file's own Bayer phase)")
+    return text
+
+
+def _leak_note(res):
+    """z_guided on NIR estimated from the RGB: the caveat rgbz-fast evaluate prints."""
+    est, n = len(res["ir_estimated"]), len(res["images"])
+    return (f"z_guided: the NIR was estimated from the RGB on {est} of {n} image"
+            f"{'s' if n != 1 else ''} ({', '.join(res['ir_estimated'][:4])}"
+            f"{', ...' if est > 4 else ''}): its guide then leaks the answer, and its rows are "
+            "not evidence; measure it on registered RGB + NIR pairs.")

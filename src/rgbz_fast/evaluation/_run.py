@@ -63,7 +63,8 @@ def image_frames(img, pattern, config, nir=None):
     A configuration with a method of :data:`rgbz_fast.NEEDS_TOF`
     (``"z_guided"``) takes every frame from the sensor model, noise-free or
     not (``simulate(Scene.from_rgb(img, depth=2 m everywhere, ir_reflectance=nir),
-    pattern, ColourSensor(black_level=0), seed=config.seed, noise=config.noise)``),
+    pattern, ColourSensor(black_level=0, bit_depth=config.bit_depth), seed=config.seed,
+    noise=config.noise)``),
     so that its frames carry ToF taps and every method of the run sees the
     same frames. ``nir``: the registered NIR reflectance of the image, in
     [0, 1] (:meth:`rgbz_fast.io.ImageSource.load_nir`); without it the scene
@@ -76,6 +77,12 @@ def image_frames(img, pattern, config, nir=None):
             raise ValueError(f"img: expected an RGB image (rows, cols, 3), got shape {img.shape}")
     config = merge_params(EvalConfig, config, name="config")
     return _frames(img, get_pattern(pattern), config, {}, nir)
+
+
+def _sensor(config):
+    """The colour sensor of the frames the sensor model makes: no black level, and the
+    configuration's bit depth (the default sensor's 11 bits had been used whatever it was)."""
+    return ColourSensor(black_level=0, bit_depth=config.bit_depth)
 
 
 def _frames(img, pattern, config, memo, nir=None):
@@ -91,12 +98,12 @@ def _frames(img, pattern, config, memo, nir=None):
         if "scene" not in memo:
             memo["scene"] = Scene.from_rgb(img, depth=np.full(img.shape[:2], 2.0),
                                            ir_reflectance=nir)
-        frame = simulate(memo["scene"], pattern, ColourSensor(black_level=0), seed=config.seed,
+        frame = simulate(memo["scene"], pattern, _sensor(config), seed=config.seed,
                          noise=config.noise, optics=config.optics)
         return frame, frame.reference
     if config.noise:
         scene = Scene.from_rgb(img)
-        frame = simulate(scene, pattern, ColourSensor(black_level=0), seed=config.seed,
+        frame = simulate(scene, pattern, _sensor(config), seed=config.seed,
                          noise=True, optics=config.optics)
         return frame, frame.reference
     if config.linearise and config.optics is None and img.dtype in (np.uint8, np.uint16):
