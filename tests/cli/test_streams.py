@@ -142,3 +142,16 @@ def test_tradeoff_quick_refuses_raw_files(tmp_path, capsys):
     assert capsys.readouterr().err.strip().splitlines() == [
         "rgbz-fast tradeoff: error: --quick: crops the dataset's first two images to 128 x 128, "
         "and chart is a raw file, measured whole; run without --quick, or on RGB images"]
+
+
+def test_reconstruct_refuses_raw_options_file_entries_for_a_frame_file(tmp_path, capsys):
+    """An entry of --raw-options naming a frame file had been accepted and ignored (a flag
+    was refused)."""
+    f = _frame_file(tmp_path / "f.npz", 1)
+    (tmp_path / "ro.json").write_text('{"f.npz": {"black_level": 100}}')
+    assert main(["reconstruct", str(f), "--raw-options", str(tmp_path / "ro.json"), "--out",
+                 str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()[-1]
+    assert err.startswith("rgbz-fast reconstruct: error: --raw-options: black_level for f.npz: ")
+    assert "is an rgbz-fast frame file, which records its own pattern" in err
+    assert not (tmp_path / "out").exists()

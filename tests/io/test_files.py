@@ -467,3 +467,38 @@ def test_frame_meta_round_trips(tmp_path):
     np.testing.assert_array_equal(back["clipped"], clipped)
     with pytest.warns(UserWarning, match=r"does not keep meta 'clipped'"):
         save_frame(tmp_path / "f.tif", f)
+
+
+def test_a_tiff_says_it_drops_the_reference_and_the_taps(tmp_path):
+    """A TIFF had dropped a simulated frame's reference CFA and ToF taps without a word, and
+    kept the meta 'tof' that described the taps."""
+    from rgbz_fast.io import load_frame, save_frame
+    from rgbz_fast.simulation import Scene, simulate
+
+    f = simulate(Scene(np.full((16, 16, 3), 0.5), depth=np.full((16, 16), 1.5)), "mask2")
+    assert f.reference is not None and f.tof is not None and "tof" in f.meta
+    with pytest.warns(UserWarning, match=r"f.tif does not keep the reference CFA and the ToF "
+                                         r"taps \(a TIFF holds the mosaic; .npz keeps them\)"):
+        save_frame(tmp_path / "f.tif", f)
+    back = load_frame(tmp_path / "f.tif")
+    assert back.reference is None and back.tof is None and "tof" not in back.meta
+    assert "tof" in f.meta                                   # the caller's frame unchanged
+
+
+def test_raw_options_for_a_frame_file_are_refused(tmp_path):
+    """load_frame had ignored raw options for an rgbz-fast frame file (and for a plain mosaic
+    read with pattern=): a black level of 100 subtracted nothing."""
+    import imageio.v3 as iio
+
+    import rgbz_fast as rz
+    from rgbz_fast.io import load_frame, save_frame
+
+    f = rz.mosaic(np.full((8, 8, 3), 128, np.uint8), rz.mask1())
+    for name in ("f.npz", "f.tif"):
+        save_frame(tmp_path / name, f)
+        with pytest.raises(ValueError, match=rf"black_level: .*{name} is an rgbz-fast frame "
+                                             r"file, which records its own pattern"):
+            load_frame(tmp_path / name, black_level=100)
+    iio.imwrite(tmp_path / "plain.png", np.full((8, 8), 300, np.uint16))
+    with pytest.raises(ValueError, match=r"phase: .*plain.png is read as a plain mosaic"):
+        load_frame(tmp_path / "plain.png", pattern="mask1", bit_depth=11, phase="RGGB")

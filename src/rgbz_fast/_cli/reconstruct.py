@@ -159,13 +159,16 @@ def run(args):
         # a raw file keeps its own bit depth unless --bit-depth says otherwise
         bit_depth = args.bit_depth if args.bit_depth is not None or args.pattern is not None \
             else "input"
-        frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args), **kw)
-        if explicit and (frame.meta.get("reader") is None
-                         or frame.meta.get("source") != str(f)):
-            flag = "--" + next(iter(explicit)).replace("_", "-").replace("clip-level",
-                                                                         "saturation-level")
-            raise c.CliError(f"{flag}: {f} is an rgbz-fast frame file, which records its own "
-                             "pattern and levels; the raw options apply to raw files")
+        try:
+            frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args),
+                               **kw)
+        except ValueError as exc:
+            # load_frame refuses raw options for a frame file (they had been ignored when they
+            # came from --raw-options); the flags are named by the error mechanism
+            key, _, rest = str(exc).partition(": ")
+            if key in kw and key not in explicit:
+                raise c.CliError(f"--raw-options: {key} for {f.name}: {rest}") from None
+            raise
         frame = _with_z_sites(frame, f, args.rgbz_pattern)
         if args.method.strip().lower() in NEEDS_TOF and frame.tof is None:
             # the library's advice (pass nir=) has no flag here: say what a user of the

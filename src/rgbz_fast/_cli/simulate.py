@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import warnings
 from pathlib import Path
 
 from . import _common as c
@@ -67,7 +68,10 @@ def run(args):
             elif what in ("image", "depth", "depth_valid", "ir_reflectance", "wavelengths"):
                 msg = f"scene {s}: {msg}"
             raise c.CliError(msg) from None
-        save_frame(out / name, frame)            # the folder appears with its first file
+        with warnings.catch_warnings():          # the line below says what a TIFF keeps
+            warnings.filterwarnings("ignore", r"path: .* does not keep the (reference CFA|ToF)",
+                                    UserWarning)
+            save_frame(out / name, frame)        # the folder appears with its first file
         if not args.quiet:
             print(f"{s} -> {out / name} ({frame.shape[0]}x{frame.shape[1]}, "
                   f"{_what_is_kept(frame, scene, pattern, suffix)})")

@@ -117,6 +117,15 @@ def save_frame(path, frame):
         data = frame.data
         _warn_dropped(path, dropped, "a TIFF holds the mosaic and JSON metadata; .npz keeps "
                                      "arrays")
+        # the reference and the taps had been dropped without a word, and the simulator's
+        # meta["tof"] still described the taps the file no longer held
+        lost = [what for what, there in (("the reference CFA", frame.reference is not None),
+                                         ("the ToF taps", frame.tof is not None)) if there]
+        if lost:
+            _warn_lost(path, f"does not keep {' and '.join(lost)} (a TIFF holds the mosaic; "
+                             ".npz keeps them)")
+        if frame.tof is not None and isinstance(header["meta"], dict):
+            header["meta"].pop("tof", None)
         if data.dtype not in (np.uint8, np.uint16):
             _warn_lost(path, f"keeps the {data.dtype} mosaic as 16-bit codes (rounded); .npz "
                              "keeps it as it is")
@@ -160,6 +169,7 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         raise ValueError(f"path: {path} does not exist")
     suffix = path.suffix.lower()
     if suffix == ".npz":
+        _no_raw_options(raw_kwargs, path, _FRAME_FILE)
         return _as_recorded(_load_npz(path, limits), path, pattern, bit_depth)
     if suffix in (".tif", ".tiff"):
         from ._tiff import open_tiff
@@ -178,9 +188,11 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         except ValueError:
             header = None                                   # not ours: a plain mosaic
         if isinstance(header, dict) and header.get("format") == _FORMAT_TAG:
+            _no_raw_options(raw_kwargs, path, _FRAME_FILE)
             return _as_recorded(_checked(path, lambda: _frame_from(_check_header(header), data)),
                                 path, pattern, bit_depth)
     if pattern is not None and suffix in (".tif", ".tiff", ".png"):
+        _no_raw_options(raw_kwargs, path, "read as a plain mosaic with pattern=, as it is")
         if bit_depth is None:
             raise ValueError("bit_depth: required for a plain TIFF/PNG mosaic with a pattern")
         data = read_image(path, "path", max_pixels=limits[0], max_bytes=limits[1])
@@ -188,6 +200,18 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
     if bit_depth is not None:
         raw_kwargs["bit_depth"] = bit_depth           # the working bit depth of a raw file
     return read_raw(path, max_pixels=limits[0], max_bytes=limits[1], **raw_kwargs)
+
+
+_FRAME_FILE = "an rgbz-fast frame file, which records its own pattern, bit depth and levels"
+
+
+def _no_raw_options(raw_kwargs, path, what):
+    """A ValueError naming the first raw option given for a file that does not take them
+    (they had been accepted and ignored)."""
+    if raw_kwargs:
+        key = next(iter(raw_kwargs))
+        raise ValueError(f"{key}: {path} is {what}; the raw options apply to camera raw "
+                         "files (read_raw)")
 
 
 def _as_recorded(frame, path, pattern, bit_depth):
