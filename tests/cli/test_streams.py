@@ -155,3 +155,15 @@ def test_reconstruct_refuses_raw_options_file_entries_for_a_frame_file(tmp_path,
     assert err.startswith("rgbz-fast reconstruct: error: --raw-options: black_level for f.npz: ")
     assert "is an rgbz-fast frame file, which records its own pattern" in err
     assert not (tmp_path / "out").exists()
+
+
+def test_evaluate_depth_refuses_scene_sections_without_scenes(tmp_path, monkeypatch, capsys):
+    """--sections scenes with no RGB-D scenes (no --data, no ../shared/data/rgbd beside the
+    current folder) had printed a note, or {} with --json, and exited 0."""
+    monkeypatch.chdir(tmp_path)
+    for extra in ([], ["--json"]):
+        assert main(["evaluate-depth", "--sections", "upsample", *extra]) == 2
+        assert capsys.readouterr().err.strip().splitlines() == [
+            "rgbz-fast evaluate-depth: error: --sections: upsample measures the RGB-D scenes, "
+            "and there are none: pass --data DIR (../shared/data/rgbd, the default, is not "
+            "beside the current folder)"]

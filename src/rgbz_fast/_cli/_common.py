@@ -324,7 +324,9 @@ def add_reconstruction_options(p, precision, precision_help):
     p.add_argument("--clip-level", type=clip_level, default=None, metavar="off|auto|DN",
                    help="clipped (saturated) pixels: off takes every pixel as a real value; "
                         "auto uses the saturation level recorded when a raw file is read (none "
-                        "for other frames); a number is the level in DN. Differences between "
+                        "for other frames); a number is the level in DN of the frame as it "
+                        "is reconstructed (a raw file's after --bit-depth scales it; "
+                        "--saturation-level is in the file's own DN). Differences between "
                         "two clipped pixels are then left out of the weights (default: off; a "
                         "pixel at the level is not always a clipped one)")
     p.add_argument("--filters", type=csv, default=None, metavar="FILE[,FILE]",
@@ -445,6 +447,8 @@ def flag_words(text, parser):
             return longs[0] if value == "True" else longs[-1]
         if isinstance(action, argparse._StoreTrueAction) and value in ("True", "False"):
             return longs[0] if value == "True" else f"no {longs[0]}"
+        if action.choices and value not in action.choices and value.lower() in action.choices:
+            value = value.lower()                # select=None is the command's --select none
         return f"{longs[0]} {value}" if value else longs[0]
 
     if not options:

@@ -102,7 +102,15 @@ def run(args):
         dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
     c.check_outputs([("the calibration", args.out)], [*args.frames, *args.dark])
     with ticking(f"calibrate: fitting {len(sweep)} frames", not args.quiet):
-        cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
+        try:
+            cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
+        except ValueError as exc:
+            if args.simulate and str(exc).startswith("distances: "):
+                # the walls of a simulated sweep are --near, --far and --positions (the error
+                # had named --distances, which --simulate refuses)
+                raise c.CliError("--near/--far/--positions: "
+                                 + str(exc).removeprefix("distances: ")) from None
+            raise
     cal.save(args.out)
     if not args.quiet:
         rms = ", ".join(f"{1e3 * v:.2f}" for v in cal.meta["fit_rms_m"])

@@ -57,7 +57,10 @@ def add_parser(sub):
     p.add_argument("--full-resolution", action="store_true",
                    help="also run the colour ISP, guide the ToF ISP with its image and write "
                         "a depth at every pixel: OUT/<name>_depth-full.tif (float32 metres, "
-                        "NaN where none can be given) and OUT/<name>_depth-full.png (preview)")
+                        "NaN where none can be given) and OUT/<name>_depth-full.png (preview); "
+                        "the map also takes the measurements flagged low-signal alone whose "
+                        "sigma is at most 2 cm and that a usable neighbour confirms, whatever "
+                        "--max-sigma")
     c.add_run_options(p, DEFAULT_OUT)
     return p
 

@@ -41,12 +41,18 @@ def run(args):
     if data is None:
         guess = Path("..") / "shared" / "data" / "rgbd"
         data = guess if guess.is_dir() else None
+    scene_sections = [s for s in (args.sections or DEPTH_SECTIONS) if s in ("scenes", "upsample")]
+    if data is None and args.sections and scene_sections:
+        # asked for, they had printed nothing (or {}) and exited 0
+        raise c.CliError(f"--sections: {scene_sections[0]} measures the RGB-D scenes, and "
+                         "there are none: pass --data DIR (../shared/data/rgbd, the default, "
+                         "is not beside the current folder)")
     result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed,
                             patterns=args.patterns, **c.limits(args))
     if args.json:
         print(json.dumps(result, indent=1, default=float))
     else:
-        if data is None:
+        if data is None and scene_sections:
             print("(no RGB-D scenes: pass --data; the scene sections are skipped)")
         print(depth_report(result))
     return 0

@@ -170,6 +170,17 @@ def _check_z_options(args):
             raise c.CliError(f"--dataset: {d} is given twice (as {seen[key]}); name each "
                              "folder once")
         seen[key] = d
+    if not args.z_guided and args.hash_radius > args.radius:
+        # the library named --hash-radius even when only --radius was given
+        if c.given(args, "hash_radius"):
+            raise c.CliError(f"--hash-radius: the gradients' window ({args.hash_radius}) may "
+                             f"not exceed the filter's (--radius {args.radius})")
+        raise c.CliError(f"--radius: {args.radius} is narrower than the default --hash-radius "
+                         f"{args.hash_radius} (the gradients' window may not exceed the "
+                         f"filter's); give --hash-radius {args.radius} or less")
+    if args.noise and not args.linearise and c.given(args, "linearise"):
+        raise c.CliError("--no-linearise: the sensor model (--noise) takes linear light; fit "
+                         "noisy frames without it")
     if args.cv_folds is not None:
         if args.select == "none":
             raise c.CliError("--cv-folds: applies to --select cv only")

@@ -200,7 +200,8 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
     if select == "cv" and len(order) < 2 and any(
             v is None and len(axes[n]) > 1 for n, v in given.items()):
         raise ValueError("select: cross-validation needs frames of at least 2 groups (scenes), "
-                         "got 1; pass select=None or ridge, prior and colour_prior")
+                         "got 1; pass select=None, or all of ridge=, prior= and "
+                         "colour_prior=")
     info = {"n_images": len(frames), "lam": lam}
     if select == "cv":
         info["cv_groups"] = len(order)
