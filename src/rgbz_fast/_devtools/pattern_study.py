@@ -287,13 +287,23 @@ def _task(job):
     return _cached(cache_dir, "rgbd", key, lambda: _rgbd_task(cand, args, settings))
 
 
+def _depth_models():
+    """The depth tasks' models as their keys hold them: the default ToF sensor and ToF ISP
+    (a change of either had been served stale from a cache keyed by the version alone)."""
+    from ..simulation import ToFSensor
+    from ..tof import ToFISP
+
+    return repr(ToFSensor()), repr(ToFISP())
+
+
 def _jobs(cands, dataset, train, rgbd_scenes, settings, cache_dir, workers):
     jobs = []
     for c in cands:
         jobs.append(("colour", c, (dataset, train), settings, cache_dir, None, workers))
         if c.block is None:
             continue
-        base = (c.pattern.tile_string, c.pattern.bayer_phase, settings.seed, VERSION)
+        base = (c.pattern.tile_string, c.pattern.bayer_phase, settings.seed, VERSION,
+                _depth_models())
         jobs.append(("wall", c, None, settings, cache_dir,
                      _digest("wall", *base, settings.wall_distance,
                              settings.wall_reflectance, settings.wall_shape), workers))
