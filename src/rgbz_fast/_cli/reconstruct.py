@@ -42,7 +42,8 @@ def add_parser(sub):
                            "frames from simulate carry theirs)")
     c.add_bit_depth(p, None, "bits of a plain TIFF/PNG mosaic given with --pattern; for a raw "
                              "file, the working bit depth it is scaled to (default: the file's "
-                             "own: 14 for a 14-bit DNG)")
+                             "own: --bit-depth-in, or the bits of its white level: 14 for a "
+                             "14-bit DNG, 12 with --white-level 4000)")
     c.add_reconstruction_options(p, "float32", "arithmetic of the kernel")
     p.add_argument("--output", choices=("cfa", "srgb"), default="cfa",
                    help="cfa: 16-bit TIFF Bayer CFA; srgb: 8-bit PNG through the colour ISP")
