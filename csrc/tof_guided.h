@@ -149,7 +149,8 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
    than `ambiguity` of the weight. */
 /* The low-signal measurements a usable neighbour confirms, for rgbz_tofg_upsample, in place on
    the grid (R, C): each node m with lone[m] != 0 (a candidate: its own measurement low[m],
-   finite, sigma[m]) whose low[m] lies within max(tol_k sigma[m], tol_min) of depth[n] for one
+   finite, sigma[m]) whose low[m] lies within max(tol_k sigma[m], tol_min) (tol_min where the
+   product is NaN) of depth[n] for one
    of its 8 neighbours n with lone[n] == 0 and depth[n] finite (a usable measurement) moves
    low[m] into depth[m] (NaN there before) and sets low[m] to NaN; the others keep theirs.
    Neighbours are judged on lone and the depths they had, so the result does not depend on

@@ -283,6 +283,11 @@ CLI_ROWS = [
     C("cli.train-encoding-no-linearise", ("train", "--dataset", "{d}/ds", "--encoding",
                                           "linear", "--no-linearise", "--out", "{d}/t.npz"),
       "--encoding: linear contradicts --no-linearise (the sRGB values); give one of them"),
+    C("cli.reconstruct-saturation-level-frame-file", ("reconstruct", "{d}/ok.npz",
+                                                      "--saturation-level", "900",
+                                                      "--clip-level", "auto"),
+      "--saturation-level: {d}/ok.npz is an rgbz-fast frame file, which records its own "
+      "pattern, bit depth and levels"),
     C("cli.train-z-guided-bit-depth", ("train", "--dataset", "{d}/ds", "--z-guided",
                                        "--bit-depth", "8", "--out", "{d}/t.npz"),
       "--bit-depth: does not apply with --z-guided (its frames are the sensor model's, 11-bit"),

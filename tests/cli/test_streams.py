@@ -161,9 +161,9 @@ def test_evaluate_depth_refuses_scene_sections_without_scenes(tmp_path, monkeypa
     """--sections scenes with no RGB-D scenes (no --data, no ../shared/data/rgbd beside the
     current folder) had printed a note, or {} with --json, and exited 0."""
     monkeypatch.chdir(tmp_path)
-    for extra in ([], ["--json"]):
-        assert main(["evaluate-depth", "--sections", "upsample", *extra]) == 2
+    for section, extra in (("upsample", []), ("upsample", ["--json"]), ("rgbnir", [])):
+        assert main(["evaluate-depth", "--sections", section, *extra]) == 2
         assert capsys.readouterr().err.strip().splitlines() == [
-            "rgbz-fast evaluate-depth: error: --sections: upsample measures the RGB-D scenes, "
-            "and there are none: pass --data DIR (../shared/data/rgbd, the default, is not "
-            "beside the current folder)"]
+            f"rgbz-fast evaluate-depth: error: --sections: {section} needs the data folders: "
+            "pass --data DIR, the RGB-D scenes (../shared/data/rgbd, the default, is not "
+            "beside the current folder; the RGB-NIR pairs are read from rgbnir beside it)"]

@@ -268,6 +268,32 @@ def test_frames_of_the_sensor_model_take_the_bit_depth(needs_tof):
         assert ref.max() > 2 ** (bits - 1)                  # the range is used
 
 
+def test_noisy_keys_at_other_bit_depths_are_new():
+    """The noisy frames of a bit depth other than 11 changed (they had been 11-bit): their
+    cache keys changed with them; 11 bits and noise-free runs keep theirs."""
+    key = lambda **kw: ev.EvalConfig(**kw).key("mask1", "sg")          # noqa: E731
+    import hashlib
+    import json
+    from dataclasses import asdict
+
+    from rgbz_fast.evaluation._config import _cache_version
+
+    def old_key(cfg):                      # the key before: without "sensor_bits"
+        d = asdict(cfg)
+        for k in ("patterns", "methods", "metrics", "linearise", "optics"):
+            d.pop(k)
+        params = d.pop("params")
+        for k in ("clip_level", "filters", "fixed_point"):
+            params.pop(k)
+        d.update(params, pattern=str(rz.get_pattern("mask1")), method="sg",
+                 version=_cache_version())
+        return hashlib.sha1(json.dumps(d, sort_keys=True, default=str).encode()).hexdigest()[:16]
+
+    for kw, same in ((dict(noise=True, bit_depth=11), True), (dict(bit_depth=8), True),
+                     (dict(noise=True, bit_depth=8), False)):
+        assert (key(**kw) == old_key(ev.EvalConfig(**kw))) == same
+
+
 def test_table3_with_paper_values(tmp_path):
     kodak = shared_path("kodak")
     ds = [s for s in rio.folder_dataset(kodak) if s.name == "kodim09"]

@@ -407,13 +407,15 @@ def test_agree_matches_numpy(workers):
     low[rng.random(R * C) < 0.05] = np.nan                     # a candidate without a depth
     sigma = rng.uniform(0.001, 0.03, R * C)
     sigma[::17] = np.inf
-    want_d, want_low = ref.guided_agree(depth, low, lone, sigma, R, C, 3.0, 0.02)
-    d, lo = depth.copy(), low.copy()
-    _kernels.tofg_agree(d, lo, lone, sigma, R, C, 3.0, 0.02, workers)
-    taken = np.isnan(depth) & np.isfinite(d)
-    assert 0 < taken.sum() < (lone > 0).sum()                   # some confirmed, some not
-    np.testing.assert_array_equal(d, want_d)                   # copies: exact
-    np.testing.assert_array_equal(lo, want_low)
+    sigma[5::23] = np.nan                                      # tol_min alone, as for tol_k 0
+    for tol_k in (3.0, 0.0):
+        want_d, want_low = ref.guided_agree(depth, low, lone, sigma, R, C, tol_k, 0.02)
+        d, lo = depth.copy(), low.copy()
+        _kernels.tofg_agree(d, lo, lone, sigma, R, C, tol_k, 0.02, workers)
+        taken = np.isnan(depth) & np.isfinite(d)
+        assert 0 < taken.sum() < (lone > 0).sum()               # some confirmed, some not
+        np.testing.assert_array_equal(d, want_d)               # copies: exact
+        np.testing.assert_array_equal(lo, want_low)
     with pytest.raises(ValueError, match="tofg_agree"):
         _kernels.tofg_agree(d, lo, lone, sigma, R, C + 1, 3.0, 0.02, 1)
 

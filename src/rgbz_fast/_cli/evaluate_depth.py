@@ -41,12 +41,15 @@ def run(args):
     if data is None:
         guess = Path("..") / "shared" / "data" / "rgbd"
         data = guess if guess.is_dir() else None
-    scene_sections = [s for s in (args.sections or DEPTH_SECTIONS) if s in ("scenes", "upsample")]
+    scene_sections = [s for s in (args.sections or DEPTH_SECTIONS)
+                      if s in ("scenes", "upsample", "rgbnir")]
     if data is None and args.sections and scene_sections:
-        # asked for, they had printed nothing (or {}) and exited 0
-        raise c.CliError(f"--sections: {scene_sections[0]} measures the RGB-D scenes, and "
-                         "there are none: pass --data DIR (../shared/data/rgbd, the default, "
-                         "is not beside the current folder)")
+        # asked for, they had printed nothing (or {}) and exited 0 (the rgbnir pairs are
+        # found beside --data)
+        raise c.CliError(f"--sections: {scene_sections[0]} needs the data folders: pass "
+                         "--data DIR, the RGB-D scenes (../shared/data/rgbd, the default, is "
+                         "not beside the current folder; the RGB-NIR pairs are read from "
+                         "rgbnir beside it)")
     result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed,
                             patterns=args.patterns, **c.limits(args))
     if args.json:

@@ -169,6 +169,9 @@ def run(args):
             key, _, rest = str(exc).partition(": ")
             if key in kw and key not in explicit:
                 raise c.CliError(f"--raw-options: {key} for {f.name}: {rest}") from None
+            flags = {k: "--" + dest.replace("_", "-") for dest, k in RAW_FLAGS}
+            if key in explicit and key in flags:       # --saturation-level gives clip_level
+                raise c.CliError(f"{flags[key]}: {rest}") from None
             raise
         frame = _with_z_sites(frame, f, args.rgbz_pattern)
         if args.method.strip().lower() in NEEDS_TOF and frame.tof is None:

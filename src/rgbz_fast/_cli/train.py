@@ -56,7 +56,8 @@ def add_parser(sub):
                    help="fit the filters of method z_guided (guided by the NIR amplitude of the "
                         "Z pixels) on RGB + NIR pairs; --bit-depth, --noise, --linearise, "
                         "--encoding, --radius, --hash-radius, --strength, --coherence and "
-                        "--spread do not apply (refused)")
+                        "--spread do not apply (refused when they differ from what it uses: "
+                        "11 bits, linear, the shipped hash)")
     p.add_argument("--colour-prior", type=c.positive_float, default=None,
                    help="--z-guided: the prior of the colour correction, times --prior "
                         "(default: set by --select)")
@@ -146,7 +147,10 @@ def _check_z_options(args):
     the learned fit's own options refused with it (they had been accepted and ignored)."""
     if args.z_guided:
         for dest, flag in _NOT_Z_GUIDED:
-            if c.given(args, dest):
+            # a value equal to what the fit uses (--bit-depth 11, --linearise, --encoding
+            # linear, the shipped hash's radii and levels) is what it does: accepted
+            uses = "linear" if dest == "encoding" else args.parser.get_default(dest)
+            if c.given(args, dest) and getattr(args, dest) != uses:
                 flag = _spelling(args, dest, flag)
                 raise c.CliError(f"{flag}: does not apply with --z-guided (its frames are the "
                                  "sensor model's, 11-bit, noise-free and noisy, linear, and "

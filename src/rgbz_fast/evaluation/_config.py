@@ -238,6 +238,10 @@ class EvalConfig:
             params.pop("fixed_point")      # the keys of the float precisions stay what they were
         if self.needs_tof:          # the sensor model's frames, for every method of the run
             d["tof_frames"] = 1
+        if (self.noise or self.needs_tof) and self.bit_depth != 11:
+            # the sensor model's frames at the bit depth (before, at 11 bits whatever it was):
+            # the results cached then are not served for these runs (11 bits: the same frames)
+            d["sensor_bits"] = 1
         d.update(params, pattern=str(get_pattern(pattern)), method=method,
                  version=_cache_version())
         blob = json.dumps(d, sort_keys=True, default=str).encode()

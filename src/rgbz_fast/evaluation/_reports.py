@@ -192,8 +192,10 @@ def _bar_figure(results, metric):
     ax.set_ylabel(METRIC_LABELS[metric])
     # a mean over fewer images than the results hold (a PSNR of +inf left out) is said
     left = sum(1 for (_, _, k) in results.left_out() if k == metric)
-    ax.set_title(f"{METRIC_LABELS[metric]}: mean ± 1 std over {len(results.images())} "
-                 f"image(s) ({_direction(metric)})"
+    n_images = len(results.images())
+    head = (f"mean ± 1 std over {n_images} image(s)" if n_images != 1 else
+            "1 image, no spread")
+    ax.set_title(f"{METRIC_LABELS[metric]}: {head} ({_direction(metric)})"
                  + (f"\n{left} mean(s) leave out infinite values: see summary.md" if left
                     else ""), fontsize=9)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)

@@ -161,7 +161,9 @@ def load_frame(path, *, pattern=None, bit_depth=None, max_pixels=None, max_bytes
         lacks the frame's arrays or header keys (``pattern``, ``bit_depth``);
         a TIFF or PNG that does not decode; a header that is not JSON or
         describes no valid frame. The errors of :func:`rgbz_fast.io.read_raw`
-        for other files.
+        for other files. A raw option (``raw_kwargs``) given for an rgbz-fast
+        frame file or a plain mosaic read with ``pattern``, which take none,
+        is refused, naming the option.
     """
     path = check_path(path, "path")
     limits = read_limits(max_pixels, max_bytes)
