@@ -428,7 +428,7 @@ def guided_agree(depth, low, lone, sigma, R, C, tol_k, tol_min):
         for c in range(C):
             if not ln[r, c] or np.isnan(lw[r, c]):
                 continue
-            t = tol_k * sg[r, c]
+            t = tol_k * float(sg[r, c])                    # 0 * inf: NaN, no warning
             tol = t if t > tol_min else tol_min            # NaN: tol_min, as the kernel
             for i in range(max(r - 1, 0), min(r + 1, R - 1) + 1):
                 for j in range(max(c - 1, 0), min(c + 1, C - 1) + 1):
