@@ -21,7 +21,7 @@ import numpy as np
 
 from rgbz_fast.evaluation._depth_guided import scene_folders
 from rgbz_fast.isp import ColourISP
-from rgbz_fast.simulation import Scene, load_rgbd, simulate
+from rgbz_fast.simulation import load_rgbd, simulate
 from rgbz_fast.tof import ToFFlag, ToFISP
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "rgbd"
@@ -45,21 +45,14 @@ def _run(frame, guide, fields, low_only):
 
 
 def _slope_frame():
-    """tests/tof/test_guided.py's two boxes in front of a textured wall on a slanted floor,
-    at 192 x 256 pixels."""
-    H, W = 192, 256
-    yy, xx = np.mgrid[0:H, 0:W]
-    img = np.stack([0.35 + 0.01 * np.sin(xx / 3.0), 0.4 + 0 * xx,
-                    0.3 + 0.01 * np.cos(yy / 4.0)], -1)
-    depth = 2.0 + 0.004 * yy
-    box = (yy > 10) & (yy < 30) & (xx > 12) & (xx < 30)
-    img[box] = (0.1, 0.5, 0.15)
-    depth[box] = 1.5
-    box2 = (yy > 20) & (yy < 44) & (xx > 38) & (xx < 58)
-    img[box2] = (0.6, 0.2, 0.1)
-    depth[box2] = 1.7
-    return simulate(Scene(img, depth=depth, ir_reflectance=np.full((H, W), 0.6)), "mask1",
-                    seed=2)
+    """tests/tof/test_guided.py's two boxes in front of a textured wall on a slanted floor
+    (its ``_frame``), at 192 x 256 pixels: the frame and its guide."""
+    tests = Path(__file__).resolve().parents[1] / "tests"
+    sys.path[:0] = [str(tests), str(tests / "tof")]
+    from test_guided import _frame
+
+    frame, guide, _ = _frame("mask1", shape=(192, 256), seed=2)
+    return frame, guide
 
 
 def main(data=DATA):
@@ -67,8 +60,7 @@ def main(data=DATA):
     for name in scene_folders(data):
         frame = simulate(load_rgbd(Path(data) / name), "mask1", seed=1)
         frames.append((name, frame, ColourISP().run(frame)))
-    slope = _slope_frame()
-    slope_guide = ColourISP().run(slope)
+    slope, slope_guide = _slope_frame()
     print("| Mask1, guided | six scenes: valid % / valid & > 5 cm % / caught % | art | "
           "the five 2006 scenes | textured slanted wall: valid % |")
     print("|---|---|---|---|---|")
