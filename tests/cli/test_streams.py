@@ -8,6 +8,7 @@ import sys
 import warnings
 
 import numpy as np
+import pytest
 
 from rgbz_fast import ToFSensor
 from rgbz_fast._cli import main
@@ -19,6 +20,20 @@ def _frame_file(path, seed):
     rng = np.random.default_rng(seed)
     scene = Scene(rng.random((32, 32, 3)), depth=np.full((32, 32), 1.5))
     return save_frame(path, simulate(scene, "mask1", tof_sensor=ToFSensor(), seed=seed))
+
+
+def _raw_folder(tmp_path):
+    """tmp_path/raw holding the shared colour chart DNG as chart.dng (skips without rawpy or
+    the data)."""
+    import shutil
+
+    pytest.importorskip("rawpy")
+    from _support import shared_path
+
+    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
+    (tmp_path / "raw").mkdir()
+    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
+    return tmp_path / "raw"
 
 
 def test_a_reader_closing_the_pipe_early_does_not_cut_a_batch_short(tmp_path):
@@ -75,68 +90,34 @@ def test_reconstruct_takes_z_guided_filters_files(tmp_path, capsys):
         (tmp_path / "default" / "a_z-guided_cfa.tif").read_bytes()
 
 
-def test_the_simulation_options_are_refused_on_a_dataset_of_raw_files(tmp_path, capsys):
-    """On raw files (measured as they are) --noise, --optics, --bit-depth, --no-linearise
-    and --grey changed nothing, and the report's header still said 'noisy', 'optics',
-    '4-bit'."""
-    import shutil
-
-    import pytest
-
-    pytest.importorskip("rawpy")
-    from _support import shared_path
-
-    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
-    (tmp_path / "raw").mkdir()
-    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
-    for flag in (["--noise"], ["--optics"], ["--bit-depth", "4"], ["--no-linearise"],
-                 ["--grey"]):
-        assert main(["evaluate", "--dataset", str(tmp_path / "raw"), *flag, "--no-plots",
-                     "--out", str(tmp_path / "out")]) == 2
-        err = capsys.readouterr().err.strip().splitlines()
-        assert err == [f"rgbz-fast evaluate: error: {flag[0]}: applies to the RGB images the "
-                       "evaluation mosaics; the dataset's raw files are measured as they are "
-                       "(their own bit depth, noise and lens)"]
-    assert not (tmp_path / "out").exists()
-
-
-def test_train_refuses_the_simulation_options_on_raw_files(tmp_path, capsys):
-    """train on a folder of raw files fitted on them as they are, ignored --noise,
-    --bit-depth, --no-linearise and --encoding, and wrote them into the filters' metadata as
+@pytest.mark.parametrize("argv,flags,why", [
+    (["evaluate", "--no-plots", "--out", "{t}/out"],
+     (["--noise"], ["--optics"], ["--bit-depth", "4"], ["--no-linearise"], ["--grey"]),
+     "applies to the RGB images the evaluation mosaics; the dataset's raw files are measured "
+     "as they are (their own bit depth, noise and lens)"),
+    (["train", "--out", "{t}/out"],
+     (["--noise"], ["--bit-depth", "8"], ["--no-linearise"], ["--encoding", "srgb"]),
+     "applies to the RGB images the fit mosaics; the dataset's raw files are fitted on as they "
+     "are (their own bit depth, noise and encoding)"),
+])
+def test_the_simulation_options_are_refused_on_a_dataset_of_raw_files(tmp_path, capsys, argv,
+                                                                       flags, why):
+    """On raw files (measured as they are) these options changed nothing: evaluate's header
+    still said 'noisy', 'optics', '4-bit'; train wrote them into the filters' metadata as
     applied."""
-    import shutil
-
-    import pytest
-
-    pytest.importorskip("rawpy")
-    from _support import shared_path
-
-    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
-    (tmp_path / "raw").mkdir()
-    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
-    for flag in (["--noise"], ["--bit-depth", "8"], ["--no-linearise"], ["--encoding", "srgb"]):
-        assert main(["train", "--dataset", str(tmp_path / "raw"), *flag,
-                     "--out", str(tmp_path / "f.npz")]) == 2
+    raw = _raw_folder(tmp_path)
+    argv = [a.replace("{t}", str(tmp_path)) for a in argv]
+    for flag in flags:
+        assert main([argv[0], "--dataset", str(raw), *flag, *argv[1:]]) == 2
         err = capsys.readouterr().err.strip().splitlines()
-        assert err == [f"rgbz-fast train: error: {flag[0]}: applies to the RGB images the fit "
-                       "mosaics; the dataset's raw files are fitted on as they are (their own "
-                       "bit depth, noise and encoding)"]
-    assert not (tmp_path / "f.npz").exists()
+        assert err == [f"rgbz-fast {argv[0]}: error: {flag[0]}: {why}"]
+    assert not (tmp_path / "out").exists()
 
 
 def test_tradeoff_quick_refuses_raw_files(tmp_path, capsys):
     """--quick crops images; a raw frame had failed with "'RawFrame' object is not
     subscriptable"."""
-    import shutil
-
-    import pytest
-
-    pytest.importorskip("rawpy")
-    from _support import shared_path
-
-    dng = shared_path("raw", "colorchart.dng")          # skips when the data is absent
-    (tmp_path / "raw").mkdir()
-    shutil.copy(dng, tmp_path / "raw" / "chart.dng")
+    _raw_folder(tmp_path)
     assert main(["tradeoff", "--dataset", str(tmp_path / "raw"), "--quick", "--methods",
                  "bilinear", "--patterns", "mask1", "--out", str(tmp_path / "t")]) == 2
     assert capsys.readouterr().err.strip().splitlines() == [
