@@ -337,3 +337,53 @@ def test_recorded_gains_and_matrix_of_a_frame(method):
     b = chain.render(cfa, "GRBG", gains=(1.8, 1.0, 1.4), colour_matrix=np.reshape(m, (3, 3)),
                      return_stages=True)[0]
     assert np.abs(a.astype(np.int64) - b).max() <= 1
+
+
+def test_a_frame_saturating_below_full_scale_renders_its_saturation_white():
+    """A sensor whose well fills below the ADC's top (and a raw file's clip level): the chain
+    had taken 2**bit_depth - 1 as white, so grey world counted the saturated pixels (a grey
+    card came out tinted) and a blown highlight rendered grey."""
+    from rgbz_fast.isp import ColourISP, recorded_rendering
+    from rgbz_fast.simulation import ColourSensor, Scene, simulate
+
+    img = np.full((64, 64, 3), 0.2)
+    img[:, 32:] = 5.0                                    # a grey card and a blown highlight
+    frames = {fw: simulate(Scene(img), "bayer", ColourSensor(full_well=fw, exposure=0.01),
+                           noise=False) for fw in (5000, 10000)}
+    assert "colour_saturation_level" not in frames[10000].meta   # saturates at the top
+    low = frames[5000]
+    assert low.meta["colour_saturation_level"] == 64 + low.meta["system_gain"] * 5000
+    assert recorded_rendering(low)["white_level"] == low.meta["colour_saturation_level"]
+    gains = {fw: ColourISP().run(f, return_stages=True)[1]["gains"] for fw, f in frames.items()}
+    np.testing.assert_allclose(gains[5000], gains[10000], rtol=1e-9)
+    for fused in (False, True):
+        out = ColourISP().run(low) if fused else ColourISP().run(low, return_stages=True)[0]
+        card, highlight = out[10, 10].astype(int), out[10, 50]
+        assert card.max() - card.min() <= 1 and np.all(highlight == 255)
+    cfa = low.data
+    white = recorded_rendering(low)["white_level"]
+    chain = ColourISP()
+    np.testing.assert_allclose(chain.white_balance_gains(cfa, "GRBG", bit_depth=11,
+                                                         black_level=64, white_level=white),
+                               gains[5000], rtol=1e-12)
+    with pytest.raises(ValueError, match="white_level: expected a finite number > 0 and <= 2047"):
+        chain.render(cfa, "GRBG", white_level=4095)
+
+
+def test_a_raw_files_clip_level_is_its_white_level():
+    """openISP's frame clips at 1020 of 1023 (9.8 % of its pixels): grey world had counted them
+    (R gain 1.499 for 1.290 without them)."""
+    from _support import shared_path
+
+    from rgbz_fast.io import read_raw
+    from rgbz_fast.isp import ColourISP, recorded_rendering
+
+    f = read_raw(shared_path("raw", "openisp_test.RAW"), shape=(1080, 1920), phase="RGGB",
+                 black_level=0, bit_depth_in=10, clip_level=1020)
+    white = recorded_rendering(f)["white_level"]
+    assert white == 2041.0
+    g = ColourISP().white_balance_gains(f.data, "RGGB", bit_depth=11, white_level=white)
+    np.testing.assert_allclose(g, [1.290, 1.0, 0.926], atol=5e-4)
+    _, st = ColourISP().run(f, return_stages=True)
+    np.testing.assert_allclose(st["gains"], g, rtol=1e-12)
+    assert st["white_level"] == white

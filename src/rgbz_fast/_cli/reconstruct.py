@@ -247,13 +247,15 @@ def _write_srgb(dest, ref_dest, cfa, frame, args):
         None if args.white_balance == "grey-world" else args.white_balance
     matrix = recorded["colour_matrix"] if args.colour_matrix == "auto" else \
         None if args.colour_matrix == "none" else args.colour_matrix
-    kw = dict(bit_depth=frame.bit_depth, colour_matrix=matrix, workers=args.workers)
+    kw = dict(bit_depth=frame.bit_depth, white_level=recorded["white_level"],
+              colour_matrix=matrix, workers=args.workers)
     phase = frame.pattern.bayer_phase
     if frame.reference is None:
         atomic_write(dest, c.png_bytes(chain.render(cfa, phase, gains=gains, **kw)))
         return
     if gains is None:                       # the reference's own, as render finds them
-        gains = chain.white_balance_gains(frame.reference, phase, bit_depth=frame.bit_depth)
+        gains = chain.white_balance_gains(frame.reference, phase, bit_depth=frame.bit_depth,
+                                          white_level=recorded["white_level"])
     ref_srgb = chain.render(frame.reference, phase, gains=gains, **kw)
     # the reference's PNG is deflated on a thread (Pillow releases the GIL) while the
     # reconstruction renders and deflates its own

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._frame import RawFrame, frame_inputs
+from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._patterns import get_pattern
 from .._validate import (FRAME_DTYPES, check_bit_depth, check_choice, check_flag, check_image,
                          check_number, check_workers, merge_params)
@@ -64,7 +64,10 @@ def recorded_rendering(frame):
     A dict with ``"black_level"`` (DN of the frame's data: a simulated
     sensor's black level; None for frames whose black level is already
     subtracted, such as those of :func:`rgbz_fast.io.read_raw`),
-    ``"white_gains"`` (R, G, B: a camera raw file's as-shot white balance, a
+    ``"white_level"`` (DN from which a pixel may be saturated, when below
+    ``2**bit_depth - 1``: a simulated sensor whose well fills first, meta
+    ``colour_saturation_level``; a raw file's clip level,
+    :func:`rgbz_fast.io.frame_clip_level`; else None), ``"white_gains"`` (R, G, B: a camera raw file's as-shot white balance, a
     simulated spectral sensor's white) and ``"colour_matrix"`` (3x3 tuple,
     white-balanced camera RGB -> linear sRGB), each None when not recorded.
     :class:`ColourISP` uses them where its own parameters leave the choice
@@ -79,17 +82,31 @@ def recorded_rendering(frame):
         black, key = meta.get("colour_black_level"), "colour_black_level"
     gains = meta.get("white_gains")
     matrix = meta.get("colour_matrix")
+    white, wkey = meta.get("colour_saturation_level"), "colour_saturation_level"
     try:
+        if white is None:
+            white, wkey = raw_clip_level(frame), "clip_level"
         if black is not None:             # a file's header may hold anything here
             black = check_number(black, key, lo=0, hi=frame.white_level, hi_open=True)
+        if white is not None:
+            white = check_number(white, wkey, lo=black or 0.0, lo_open=True)
+            white = None if white >= frame.white_level else float(white)
         gains = None if gains is None else tuple(_check_gains(gains, "white_gains"))
         if matrix is not None:
             matrix = tuple(map(tuple, np.reshape(np.asarray(matrix, np.float64), (3, 3))))
             matrix = ColourCorrection(matrix=matrix).matrix
     except (TypeError, ValueError) as exc:
         raise ValueError(f"frame: its meta records an unusable rendering ({exc})") from None
-    return {"black_level": None if black is None else float(black), "white_gains": gains,
-            "colour_matrix": matrix}
+    return {"black_level": None if black is None else float(black), "white_level": white,
+            "white_gains": gains, "colour_matrix": matrix}
+
+
+def _white_of(white_level, bit_depth):
+    """A caller's white level (DN, at most full scale), or full scale ``2**bit_depth - 1``."""
+    top = (1 << bit_depth) - 1
+    if white_level is None:
+        return top
+    return check_number(white_level, "white_level", lo=0, lo_open=True, hi=top)
 
 
 # =========================================================================== the chain
@@ -200,7 +217,9 @@ class ColourISP:
             black_level = self.black_level
         if black_level is None:
             black_level = recorded.get("black_level") or 0.0
-        black, white = _black_white(black_level, (1 << bd) - 1)
+        # a frame that saturates below full scale renders its saturation white, and grey
+        # world leaves its saturated pixels out (they had been counted, tinting the gains)
+        black, white = _black_white(black_level, recorded.get("white_level") or (1 << bd) - 1)
         return data, pat, bd, black, white, recorded
 
     def _recorded(self, recorded, gains, matrix):
@@ -298,8 +317,8 @@ class ColourISP:
                   "reconstruction": full, **stages, "pattern": pat}
         return out, stages
 
-    def render(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None, gains=None,
-               colour_matrix=None, workers=None, return_stages=False):
+    def render(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None, white_level=None,
+               gains=None, colour_matrix=None, workers=None, return_stages=False):
         """The stages after the reconstruction: complete Bayer CFA -> 8- or 16-bit sRGB.
 
         White balance, demosaic, colour correction, sRGB gamma and quantisation,
@@ -317,6 +336,11 @@ class ColourISP:
             Bits of the CFA (white level ``2**bit_depth - 1``).
         black_level : float, optional
             DN; default :attr:`black_level`, else 0.
+        white_level : float, optional
+            DN rendered white, above which a pixel is saturated (grey world
+            leaves it out); default ``2**bit_depth - 1``. A frame that
+            saturates below full scale records its level
+            (:func:`recorded_rendering`).
         gains : array_like (3,), optional
             White-balance gains to use instead of estimating them (the
             reference path's, for the comparison of Fig. 19, or the ones a
@@ -350,7 +374,7 @@ class ColourISP:
         bd = check_bit_depth(bit_depth)
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
-        black, white = _black_white(black_level, (1 << bd) - 1)
+        black, white = _black_white(black_level, _white_of(white_level, bd))
         if colour_matrix is not None:
             colour_matrix = ColourCorrection(matrix=colour_matrix).matrix    # checked
         if not return_stages and self._fused(data):
@@ -372,11 +396,14 @@ class ColourISP:
                 and data.ndim == 2 and data.shape[0] >= 2 and data.shape[1] >= 2
                 and (self.white_balance.clip or data.dtype.kind != "f"))
 
-    def white_balance_gains(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None):
+    def white_balance_gains(self, cfa, phase="GRBG", *, bit_depth=11, black_level=None,
+                            white_level=None):
         """The white-balance gains (R, G, B) :meth:`render` applies to a complete Bayer CFA:
         this chain's fixed gains, the grey-world estimate (``"as_shot"`` too: an array
         records no gains) or unit gains (its :class:`WhiteBalance`). Pass them to :meth:`render` (``gains=``) to render other
         CFAs of the scene with the same white balance (the RGB-Z path of Fig. 19).
+        ``black_level`` and ``white_level`` as :meth:`render` takes them (grey world leaves
+        the pixels at or above the white level out).
 
         Examples
         --------
@@ -394,7 +421,7 @@ class ColourISP:
         bd = check_bit_depth(bit_depth)
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
-        black, white = _black_white(black_level, (1 << bd) - 1)
+        black, white = _black_white(black_level, _white_of(white_level, bd))
         wb = self.white_balance
         if wb.gains is not None:
             return np.asarray(wb.gains, np.float64)

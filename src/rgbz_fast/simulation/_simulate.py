@@ -214,7 +214,9 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         (float64 if ``sensor.quantise`` is False); ``meta`` holds
         ``exposure`` (s), ``system_gain`` (DN/e-), ``saturated`` (fraction of
         sites at full well or full scale), ``spectral``, ``rng_version``,
-        ``colour_black_level`` (the sensor's black level, DN) and, for a
+        ``colour_black_level`` (the sensor's black level, DN),
+        ``colour_saturation_level`` when the well fills below the ADC's top
+        (:func:`saturation_level`, DN: the colour ISP's white level) and, for a
         spectral scene, ``white_gains`` (R, G, B) and ``colour_matrix`` (nine
         numbers, row by row): the sensor's white balance and its matrix to
         linear sRGB (:func:`~rgbz_fast.simulation.white_gains`,
@@ -279,6 +281,12 @@ def _colour_frames(scene, pattern, sensor, seed, noise, optics, rng_version, wor
             "saturated": saturated, "spectral": scene.is_spectral,
             "noise": noise, "seed": seed, "scene": scene.name, "rng_version": rng_version,
             "colour_black_level": float(sensor.black_level)}
+    level = saturation_level(sensor, noise)
+    if level < sensor.white_level:
+        # the well fills below the ADC's top: the colour ISP takes this as its white level
+        # (grey world leaves these pixels out, the highlights clip white); frames that
+        # saturate at the top record nothing (2**bit_depth - 1 is the default)
+        meta["colour_saturation_level"] = level
     if scene.is_spectral:
         # the camera RGB of spectral sensitivities is not sRGB: the gains and the matrix
         # that render it, which the colour ISP takes from the frame
@@ -423,6 +431,16 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
 # --------------------------------------------------------------------------
 # RGB-Z build
 # --------------------------------------------------------------------------
+def saturation_level(sensor, noise=True):
+    """The DN from which a pixel of ``sensor`` may be saturated: its full well after the ADC,
+    less three read-noise sigmas when the noise runs (a full well's codes spread by the read
+    noise added after it), at most the ADC's top ``2**bit_depth - 1``."""
+    well = float(sensor.full_well)
+    if noise and sensor.read_noise > 0:
+        well -= 3.0 * float(sensor.read_noise)
+    return float(min(sensor.white_level, sensor.black_level + sensor.system_gain * well))
+
+
 def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noise=True,
              optics=None, rng_version=RNG_VERSION, workers=None):
     """Simulate a raw RGB-Z frame and its reference Bayer frame (paper §5.1.3, Fig. 16).
