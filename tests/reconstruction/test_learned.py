@@ -468,3 +468,19 @@ def test_a_filters_file_that_says_what_it_is_not_is_refused(tmp_path, edit, matc
     np.savez(tmp_path / "edited.npz", **z)
     with pytest.raises(ValueError, match=r"^filters: .*edited\.npz.*" + match):
         LearnedFilters.load(tmp_path / "edited.npz")
+
+
+def test_derived_filters_carry_their_own_meta():
+    """Two fits with the same weights (one digest) but different meta: for_pattern had served
+    the second the filters derived from the first, with the first one's training set."""
+    img = _image((96, 96))
+    fr = dataclasses.replace(rz.mosaic(img, "mask1"), reference=rz.mosaic(img, "bayer").data)
+    kw = dict(n_strength=1, n_coherence=1, n_spread=1)
+    a = train([fr], meta={"training_set": "A"}, **kw)
+    b = train([fr], meta={"training_set": "B"}, **kw)
+    assert a == b
+    da, db = a.for_pattern("mask1_rggb"), b.for_pattern("mask1_rggb")
+    assert da == db and np.array_equal(da.weights, db.weights)
+    assert (da.meta["training_set"], db.meta["training_set"]) == ("A", "B")
+    assert db.meta["derived_from"].startswith("mask1 (shifted)")
+    assert a.for_pattern("mask1") is a

@@ -190,7 +190,18 @@ class LearnedFilters(FilterIdentity):
         """These filters for ``pattern``: themselves, the same filters mirrored or shifted
         when ``pattern`` is this one's tile flipped left-right and/or up-down and moved by
         whole pixels (Mask1 and Mask2 of every Bayer phase from the GRBG ones), or None."""
-        return _derived(self, get_pattern(pattern))
+        d = _derived(self, get_pattern(pattern))
+        if d is None or d is self:
+            return d
+        # the cache serves equal filters (same digest, which leaves meta out) the filters
+        # derived from the first of them: these carry their own meta (training set...)
+        meta = {**self.meta, "derived_from": d.meta["derived_from"]}
+        if d.meta != meta:
+            import copy
+
+            d = copy.copy(d)
+            d.meta, d._kernel = meta, {}
+        return d
 
     def reconstruct(self, data, bit_depth=None):
         """NumPy reconstruction of a frame ``data`` (unclipped, unrounded, float64).
