@@ -190,8 +190,11 @@ class LearnedFilters(FilterIdentity):
         """These filters for ``pattern``: themselves, the same filters mirrored or shifted
         when ``pattern`` is this one's tile flipped left-right and/or up-down and moved by
         whole pixels (Mask1 and Mask2 of every Bayer phase from the GRBG ones), or None."""
-        d = _derived(self, get_pattern(pattern))
-        if d is None or d is self:
+        pattern = get_pattern(pattern)
+        if pattern == self.pattern:
+            return self                  # the cache would give an equal fit: itself
+        d = _derived(self, pattern)
+        if d is None:
             return d
         # the cache serves equal filters (same digest, which leaves meta out) the filters
         # derived from the first of them: these carry their own meta (training set...)
