@@ -139,7 +139,9 @@ static inline double sim_post(double e, double suppress, int with_suppress, doub
     if (with_read) e = e + nz->read_noise * zr;
     double dn = nz->black + nz->gain * e;
     if (nz->quantise) dn = floor(dn + 0.5);
-    *sat = full | (dn >= nz->top);
+    /* the ADC's floor clips too: a tap the ambient suppression drains below the black
+       level's reach had read 0 DN unflagged, its depth biased and valid */
+    *sat = full | (dn >= nz->top) | (dn < 0.0);
     dn = dn < 0.0 ? 0.0 : dn;
     return dn > nz->top ? nz->top : dn;
 }

@@ -212,7 +212,7 @@ def test_calibrate_simulated_and_from_frames(tmp_path, capsys):
 def test_evaluate_depth_prints_the_tables(capsys):
     assert main(["evaluate-depth", "--sections", "sunlight"]) == 0
     out = capsys.readouterr().out
-    assert "Sunlight" in out and "burst 0.1 + suppression 0.9" in out
+    assert "Sunlight" in out and "burst 0.1 + suppression 0.5" in out
     assert main(["evaluate-depth", "--sections", "sunlight", "--json"]) == 0
     assert "sunlight" in json.loads(capsys.readouterr().out)
 

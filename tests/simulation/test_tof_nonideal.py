@@ -131,18 +131,34 @@ def test_ambient_suppression_and_burst_keep_the_taps_out_of_saturation():
     assert burst._dark_electrons == pytest.approx(0.1 * ToFSensor()._dark_electrons)
 
 
+def test_a_tap_drained_below_the_adc_floor_is_flagged():
+    """A suppression that drains the weakest tap below the ADC's floor (0 DN) had passed the
+    measurement as valid, its depth biased by 20 mm and its reflectance read low."""
+    for quantise in (True, False):
+        sensor = ToFSensor(ambient_suppression=0.9, quantise=quantise)
+        for noise in (False, True):
+            tof = _wall(0.27, sensor, shape=(24, 24), pattern="mask1", noise=noise, seed=1)
+            assert tof.taps.min() == 0 and tof.saturated.all()
+            assert not tof_depth(tof).valid.any()
+
+
 def test_sunlight_configuration_gives_mask2_depth_to_2_m():
     """Sunlight: Mask2 gives valid depth at 15 W/m^2 ambient up to 2 m for reflectance 0.5
-    with burst illumination (duty 0.1) and ambient suppression (0.9); the default
-    continuous-wave sensor saturates."""
-    sun = ToFSensor(ambient_irradiance=15.0, duty_cycle=0.1, ambient_suppression=0.9)
+    with burst illumination (duty 0.1), with or without a moderate ambient suppression
+    (0.5); the default continuous-wave sensor saturates."""
+    for sun in (ToFSensor(ambient_irradiance=15.0, duty_cycle=0.1),
+                ToFSensor(ambient_irradiance=15.0, duty_cycle=0.1, ambient_suppression=0.5)):
+        _valid_to_2_m(sun)
+    res = tof_depth(_wall(1.0, ToFSensor(ambient_irradiance=15.0), shape=(64, 96),
+                          pattern="mask2", noise=True, seed=3))
+    assert not res.valid.any()
+
+
+def _valid_to_2_m(sun):
     for d in (0.5, 1.0, 2.0):
         res = tof_depth(_wall(d, sun, shape=(64, 96), pattern="mask2", noise=True, seed=3))
         assert res.valid.mean() > 0.97, d
         assert np.abs(res.depth[res.valid] - d).max() < 0.05
-    res = tof_depth(_wall(1.0, ToFSensor(ambient_irradiance=15.0), shape=(64, 96),
-                          pattern="mask2", noise=True, seed=3))
-    assert not res.valid.any()
 
 
 def test_ambient_suppression_keeps_the_noise_model_right():

@@ -100,7 +100,8 @@ def expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
     if sensor.quantise:
         dn = np.floor(dn + 0.5)
     top = sensor.white_level
-    saturated = well_full | (dn >= top)
+    # the ADC's floor clips too (csrc/sim.c, sim_post): a tap drained below it is flagged
+    saturated = well_full | (dn >= top) | (dn < 0)
     dn = np.clip(dn, 0, top)
     return (dn.astype(np.uint16) if sensor.quantise else dn), saturated
 
