@@ -241,7 +241,7 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
     * low-signal when ``snr < min_snr``, the amplitude is below
       ``min_amplitude`` at some frequency, or ``sigma > max_sigma``.
       ``snr = |I + iQ| / sigma_I`` with ``sigma_I^2`` the variance of the
-      (averaged) component: ``2 var(A)`` per measurement, ``var(A) = K c +
+      (averaged) component: ``2 var(A)`` per measurement, ``var(A) = K^2 c +
       K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` (shot noise of the
       collected charge ``c``, read noise, DSNU, quantisation and PRNU of a
       tap holding ``e`` electrons, in DN^2), through the denoise's weights;

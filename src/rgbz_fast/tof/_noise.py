@@ -16,7 +16,7 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
 
     Shot noise of the collected charge, read noise and DSNU (both in
     electrons), quantisation and the tap's PRNU:
-    ``K c + K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` with ``e = (offset
+    ``K^2 c + K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` with ``e = (offset
     - black) / K`` the electrons the tap holds and ``c = e / (1 - s)`` the
     electrons it collected (the ambient suppression ``s`` drains a share of
     the common mode but not its shot noise). PRNU is a fixed gain per tap: it
