@@ -428,8 +428,15 @@ def test_accepted_on_purpose():
     np.testing.assert_array_equal(rz.reconstruct(wide[:, ::2], "sg", pattern=p), want)
     np.testing.assert_array_equal(rz.reconstruct(d, "sg", pattern=p, workers=1024), want)
     tiny = rz.reconstruct(d.astype(np.float64), "edi_line", pattern=p, sigma_floor=5e-324,
-                          sigma_rel=0.0)
+                          sigma_rel=0.0, precision="float64")
     assert np.all(np.isfinite(tiny)) and tiny.max() <= 2047
+    with pytest.warns(RuntimeWarning, match="precision='float32' with sigma_rel=0: eq. 7's "
+                                            "weights underflow float32"):
+        tiny = rz.reconstruct(d.astype(np.float64), "edi_line", pattern=p,
+                              sigma_floor=5e-324, sigma_rel=0.0)
+    assert np.all(np.isfinite(tiny)) and tiny.max() <= 2047
+    # the paper-literal parameters run where their weights do not underflow
+    assert rz.ReconstructParams.paper().precision == "float64"
 
 
 # --------------------------------------------------------------------------- read-only, large

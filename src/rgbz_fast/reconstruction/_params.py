@@ -151,12 +151,14 @@ class ReconstructParams:
 
         ``sigma_rel=0``: no relative floor, only ``sigma_floor`` (1e-3 DN)
         against a zero gradient, which the paper leaves open (a flat area
-        would divide by 0). Everything else at the defaults, which follow the
-        paper (intensity domain, pure SG on Mask1); ``changes`` override
-        fields. The library's default ``sigma_rel=0.5`` is its own choice
-        (docs/reports/results.md measures both).
+        would divide by 0), in ``precision="float64"``: with sigma that small
+        the weights underflow float32 (:func:`rgbz_fast.reconstruct` warns).
+        Everything else at the defaults, which follow the paper (intensity
+        domain, pure SG on Mask1); ``changes`` override fields. The library's
+        default ``sigma_rel=0.5`` is its own choice (docs/reports/results.md
+        measures both).
         """
-        return cls(**{"sigma_rel": 0.0, **changes})
+        return cls(**{"sigma_rel": 0.0, "precision": "float64", **changes})
 
     @property
     def exp_mode(self):
