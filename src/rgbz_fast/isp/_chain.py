@@ -67,8 +67,9 @@ def recorded_rendering(frame):
     ``"white_level"`` (DN from which a pixel may be saturated, when below
     ``2**bit_depth - 1``: a simulated sensor whose well fills first, meta
     ``colour_saturation_level``; a raw file's clip level,
-    :func:`rgbz_fast.io.frame_clip_level`; else None), ``"white_gains"`` (R, G, B: a camera raw file's as-shot white balance, a
-    simulated spectral sensor's white) and ``"colour_matrix"`` (3x3 tuple,
+    :func:`rgbz_fast.io.frame_clip_level`; else None), ``"white_gains"``
+    (R, G, B: a camera raw file's as-shot white balance, a simulated spectral
+    sensor's white) and ``"colour_matrix"`` (3x3 tuple,
     white-balanced camera RGB -> linear sRGB), each None when not recorded.
     :class:`ColourISP` uses them where its own parameters leave the choice
     open; a caller of :meth:`ColourISP.render` passes them.
