@@ -8,10 +8,10 @@ scene, photon-limited on Mask1 like the 2005 scenes the library has not seen) an
     python tools/tof_guided_trade.py [DATA]     # about a minute; DATA: ../shared/data/rgbd
 
 Each frame is ``simulate(scene, "mask1", seed=1)`` and its guide ``ColourISP().run(frame)``, as
-``rgbz-fast evaluate-depth --sections scenes`` makes them. "low-signal only" runs the ISP twice,
-the default window then the wider one, and takes the wider one's result for the measurements
-the default flagged low-signal alone where the two depths agree within the default's sigma
-(a recipe in a user's hands; the ISP has no such option).
+``rgbz-fast evaluate-depth --sections scenes`` makes them. "low-signal only" is
+``ToFISP(low_signal_window=41)``: the ISP runs twice, the default window then the wider one, and
+takes the wider one's result for the measurements the default flagged low-signal alone where the
+two depths agree within the default's sigma.
 """
 
 import sys
@@ -22,7 +22,7 @@ import numpy as np
 from rgbz_fast.evaluation._depth_guided import scene_folders
 from rgbz_fast.isp import ColourISP
 from rgbz_fast.simulation import load_rgbd, simulate
-from rgbz_fast.tof import ToFFlag, ToFISP
+from rgbz_fast.tof import ToFISP
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "rgbd"
 #: (label, ToFISP fields, low-signal only)
@@ -34,14 +34,9 @@ SETTINGS = (("default (window 21, range scale 2)", {}, False),
 
 
 def _run(frame, guide, fields, low_only):
-    base = ToFISP().run(frame.tof, guide=guide)
-    if not fields:
-        return base.depth, base.valid
-    wide = ToFISP(**fields).run(frame.tof, guide=guide)
-    if not low_only:
-        return wide.depth, wide.valid
-    take = (base.flags == ToFFlag.LOW_SIGNAL) & (np.abs(wide.depth - base.depth) <= base.sigma)
-    return np.where(take, wide.depth, base.depth), np.where(take, wide.valid, base.valid)
+    res = ToFISP(**({"low_signal_window": fields["window"]} if low_only else fields)).run(
+        frame.tof, guide=guide)
+    return res.depth, res.valid
 
 
 def _slope_frame():

@@ -634,3 +634,24 @@ def test_to_frame_of_a_flag_field_with_a_nan_fill_is_float32():
     assert r.to_frame("valid").dtype == np.float32 and r.to_frame("flags").dtype == np.float32
     assert r.to_frame("valid", fill=False).dtype == np.bool_
     assert r.to_frame("depth").dtype == np.float64
+
+
+@pytest.mark.parametrize("guided", [True, False])
+def test_low_signal_window_reruns_only_the_low_signal_measurements(guided):
+    """ToFISP(low_signal_window=W): the measurements the default flags low-signal alone take
+    the wider window's result where the two depths agree within the default's sigma; every
+    other measurement keeps the default's result, field by field."""
+    sensor = ToFSensor(optical_power_w=0.2)                      # photon-limited
+    frame, guide, _ = _frame("mask1", shape=(64, 96), sensor=sensor)
+    g = guide if guided else None
+    base = ToFISP().run(frame.tof, guide=g)
+    wide = ToFISP(window=31).run(frame.tof, guide=g)
+    both = ToFISP(low_signal_window=31).run(frame.tof, guide=g)
+    take = (base.flags == ToFFlag.LOW_SIGNAL) & (np.abs(wide.depth - base.depth) <= base.sigma)
+    assert 0 < take.sum() < take.size and both.valid.sum() > base.valid.sum()
+    for name in ("depth", "sigma", "flags", "valid", "snr", "amplitude", "phase"):
+        got, a, b = (np.asarray(getattr(r, name)) for r in (both, base, wide))
+        np.testing.assert_array_equal(got[..., ~take], a[..., ~take])
+        np.testing.assert_array_equal(got[..., take], b[..., take])
+    with pytest.raises(ValueError, match="low_signal_window"):
+        ToFISP(low_signal_window=40)
