@@ -479,8 +479,17 @@ def options_given(parser, argv):
 def given(args, dest):
     """Whether the command line gave the option of ``dest`` (not: whether its value differs
     from the default, which an explicit default hides)."""
+    return given_as(args, dest) is not None
+
+
+def given_as(args, dest):
+    """The option string the command line gave ``dest`` by, in full (``--no-linearise`` for
+    ``--no-lin``), or None when it was not given."""
     argv = getattr(args, "command_argv", None)      # set by main()
-    return argv is not None and any(a.dest == dest for _, a in options_given(args.parser, argv))
+    for spelling, action in options_given(args.parser, argv or ()):
+        if action.dest == dest:
+            return next((o for o in action.option_strings if o.startswith(spelling)), spelling)
+    return None
 
 
 def limits_need(args, reading, why):

@@ -88,12 +88,10 @@ def run(args):
     sources = [s for d in args.dataset
                for s in folder_dataset(d, args.limit, **c.limits(args))]
     if sources and all(s.is_raw for s in sources) and not args.z_guided:
-        for dest, flag in (("noise", "--noise"), ("bit_depth", "--bit-depth"),
-                           ("linearise", "--linearise/--no-linearise"),
-                           ("encoding", "--encoding")):
-            if c.given(args, dest):
+        for dest in _SIMULATION:
+            flag = c.given_as(args, dest)
+            if flag:
                 # they had been ignored, and written into the filters' metadata as applied
-                flag = _spelling(args, dest, flag)
                 raise c.CliError(f"{flag}: applies to the RGB images the fit mosaics; the "
                                  "dataset's raw files are fitted on as they are (their own bit "
                                  "depth, noise and encoding)")
@@ -126,32 +124,23 @@ def run(args):
     return 0
 
 
+#: the options that say how the fit's frames are made from RGB images (a raw file's are its own)
+_SIMULATION = ("noise", "bit_depth", "linearise", "encoding")
 #: options of the learned fit that --z-guided does not take (its frames are the sensor model's,
 #: 11-bit, noise-free and noisy, linear; its hash is the shipped learned filters')
-_NOT_Z_GUIDED = (("bit_depth", "--bit-depth"), ("noise", "--noise"),
-                 ("linearise", "--linearise/--no-linearise"), ("encoding", "--encoding"),
-                 ("radius", "--radius"), ("hash_radius", "--hash-radius"),
-                 ("strength", "--strength"), ("coherence", "--coherence"),
-                 ("spread", "--spread"))
-
-
-def _spelling(args, dest, flag):
-    """The linearise flag as given (--linearise or --no-linearise); the others as they are."""
-    if dest == "linearise":
-        return "--linearise" if args.linearise else "--no-linearise"
-    return flag
+_NOT_Z_GUIDED = _SIMULATION + ("radius", "hash_radius", "strength", "coherence", "spread")
 
 
 def _check_z_options(args):
     """The options of --z-guided alone: refused without it, and --cv-folds with --select cv;
     the learned fit's own options refused with it (they had been accepted and ignored)."""
     if args.z_guided:
-        for dest, flag in _NOT_Z_GUIDED:
+        for dest in _NOT_Z_GUIDED:
             # a value equal to what the fit uses (--bit-depth 11, --linearise, --encoding
             # linear, the shipped hash's radii and levels) is what it does: accepted
             uses = "linear" if dest == "encoding" else args.parser.get_default(dest)
-            if c.given(args, dest) and getattr(args, dest) != uses:
-                flag = _spelling(args, dest, flag)
+            flag = c.given_as(args, dest)
+            if flag and getattr(args, dest) != uses:
                 raise c.CliError(f"{flag}: does not apply with --z-guided (its frames are the "
                                  "sensor model's, 11-bit, noise-free and noisy, linear, and "
                                  "its hash is that of the shipped learned filters)")

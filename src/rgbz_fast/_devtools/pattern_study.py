@@ -298,12 +298,12 @@ def _depth_models():
 
 def _jobs(cands, dataset, train, rgbd_scenes, settings, cache_dir, workers):
     jobs = []
+    models = _depth_models()
     for c in cands:
         jobs.append(("colour", c, (dataset, train), settings, cache_dir, None, workers))
         if c.block is None:
             continue
-        base = (c.pattern.tile_string, c.pattern.bayer_phase, settings.seed, VERSION,
-                _depth_models())
+        base = (c.pattern.tile_string, c.pattern.bayer_phase, settings.seed, VERSION, models)
         jobs.append(("wall", c, None, settings, cache_dir,
                      _digest("wall", *base, settings.wall_distance,
                              settings.wall_reflectance, settings.wall_shape), workers))

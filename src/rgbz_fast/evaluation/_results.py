@@ -515,7 +515,8 @@ class Results:
             for m in self.config.methods:
                 cells = "".join(f"{'inf':>12}{'':8}" if (p, m, k) in all_inf else
                                 f"{s[(p, m, k)][0]:>12.4f} " + (f"±{s[(p, m, k)][1]:<7.3f}"
-                                                               if s[(p, m, k)][2] > 1 else " " * 8)
+                                                               if np.isfinite(s[(p, m, k)][1])
+                                                               else " " * 8)
                                 if self.config.applies(p, m) else f"{'n/a':>12}{'':8}"
                                 for k in self.config.metrics)
                 out.append(f"{METHOD_LABELS.get(m, m):<{w}}{cells}")

@@ -22,8 +22,8 @@ from functools import lru_cache
 import numpy as np
 
 from .. import _kernels
-from .._validate import outside_stacklevel
 from ._fixed_config import FixedPointConfig
+from ._params import warn_small_sigma
 from ._plans import NGROUPS, build_plans
 
 __all__ = ["HW_PLAN_DTYPE", "HW_CONFIG_DTYPE", "FIXED_METHODS", "ALL_FIXED_METHODS", "Register", "tables",
@@ -348,28 +348,13 @@ def check_fixed_call(data, pattern, method):
                          f"{pattern.period}")
 
 
-#: the relative floor of sigma (eq. 7) down to which the model keeps its targets: below it
-#: G / sigma leaves the exponent's range, the gammas float64 drives towards 0 are held at
-#: 2^-(2^exp_range_bits), and the weights' ratios between them are lost
-SIGMA_REL_VALIDATED = 0.5
-
-
 def run_fixed(src, out, pattern, method, params, bit_depth):
     """The fixed-point streaming model over ``src`` (uint8/uint16, checked) into ``out``."""
     config = params.fixed_point if params.fixed_point is not None else FixedPointConfig()
     plan_map, plans, hw, cfg, et, rt, n = fixed_setup(
         pattern, method, params.sg_mode, config, bit_depth, params.sigma_floor,
         params.sigma_rel)
-    if method in ("edi_central", "edi_line", "sg") and params.sigma_rel < SIGMA_REL_VALIDATED:
-        import warnings
-
-        warnings.warn(
-            f"precision='fixed' with sigma_rel={params.sigma_rel:g}: eq. 7's exponent leaves "
-            f"the model's range (exp_range_bits) where sigma is small, and the result departs "
-            f"from float64 (on Kodak, EDICentral on Mask1 with the paper's sigma_rel=0: about "
-            f"a quarter of the Z sites by more than 1 LSB, up to 400 DN); the model's targets "
-            f"hold for sigma_rel >= {SIGMA_REL_VALIDATED:g}", RuntimeWarning,
-            stacklevel=outside_stacklevel())
+    warn_small_sigma(params, method)
     P, Q = pattern.period
     state = np.empty(_LAYOUT[2], np.uint8)
     _kernels.reconstruct_fixed(src, out, P, Q, plan_map, plans, n, hw, cfg, et, rt, state)

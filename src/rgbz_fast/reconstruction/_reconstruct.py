@@ -22,7 +22,7 @@ from ._fixed_learned import run_fixed_learned
 from ._learned import resolve_filters
 from ._z_guided import learned_only, resolve_z_filters
 from ._z_guided_kernel import guide_source, run_z_guided
-from ._params import ReconstructParams
+from ._params import ReconstructParams, warn_small_sigma
 from ._plans import METHODS as PLAN_METHODS
 from ._plans import build_plans, check_layout
 
@@ -100,13 +100,6 @@ def _check_out(out, data):
     if np.may_share_memory(out, data):
         raise ValueError("out: overlaps the input frame; pass a separate array")
     return out
-
-
-#: the methods whose weights follow eq. 7's exponential of G / sigma
-_FLOAT32_SIGMA_METHODS = ("edi_central", "edi_line", "sg")
-#: below this relative floor of sigma, float32 weights underflow (measured on Kodak: from 0.25
-#: on, float32 stays within 1 DN of float64)
-FLOAT32_SIGMA_REL = 0.25
 
 
 def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None, workers=None,
@@ -249,19 +242,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
             filters = resolve_filters(learned_only(params.filters), pattern)
             return run_fixed_learned(src, out, pattern, filters, params.fixed_point, bd)
         return run_fixed(src, out, pattern, method, params, bd)
-    if params.precision == "float32" and method in _FLOAT32_SIGMA_METHODS \
-            and params.sigma_rel < FLOAT32_SIGMA_REL:
-        import warnings
-
-        from .._validate import outside_stacklevel
-
-        warnings.warn(
-            f"precision='float32' with sigma_rel={params.sigma_rel:g}: eq. 7's weights "
-            f"underflow float32 where sigma is small against the gradients, and a site whose "
-            f"weights all vanish takes the plain mean of its candidates (on kodim01, "
-            f"EDICentral on Mask1 with the paper's sigma_rel=0: 4.9 % of the Z sites more "
-            f"than 1 DN from float64, up to 389 DN); pass precision='float64'",
-            RuntimeWarning, stacklevel=outside_stacklevel())
+    warn_small_sigma(params, method)
     if method in ("learned", "z_guided") and params.domain != "intensity":
         raise ValueError(f"domain: method {method!r} applies its filters to the intensities; "
                          f"domain={params.domain!r} applies to the weighted methods (it had "
