@@ -400,7 +400,7 @@ static void validity_block(const rgbz_tof_validity_args *p, ptrdiff_t n0, ptrdif
     for (ptrdiff_t n = n0; n < n1; n++) {
         /* snr = min_f 2 amp / sqrt(var), NaN if any is NaN (np.min) */
         double snr = 0.0, t = 0.0, rho = 0.0;
-        int nan = 0, low_amp = 0;
+        int nan = 0, low_amp = 0, capped = 0;
         const double dep = p->depth[n];
         const int ok = dep > 0.0;
         const double d = ok ? dep : 1.0;
@@ -416,12 +416,17 @@ static void validity_block(const rgbz_tof_validity_args *p, ptrdiff_t n0, ptrdif
             low_amp |= a < p->min_amplitude;
             /* the phase variance var / |I + iQ|^2, capped (fmin: a NaN takes the cap) */
             double ph = v / (a * a * 4.0);
+            capped |= !(ph < cap);
             ph = fmin(ph, cap) * p->sigma_scale[f];
             t = f == 0 ? ph : t + ph;
             const double q = a / (p->refl_coef[f] * cells);
             rho = f == 0 ? q : rho + q;
         }
         if (nan) snr = NAN;
+        if (p->delta && !capped) {
+            const double td = t + p->delta[n];
+            t = td > 0.0 ? td : t;
+        }
         const double sigma = sqrt(t);
         const double refl = ok ? rho / (double)F : 0.0;
         uint8_t fl = p->saturated[n] ? 1 : 0;
@@ -451,5 +456,100 @@ int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
 #endif
     for (ptrdiff_t b = 0; b < nb; b++)
         validity_block(p, b * B, (b + 1) * B < p->N ? (b + 1) * B : p->N);
+    return RGBZ_OK;
+}
+
+/* ------------------------------------------------------------------ fixed-pattern correction */
+/* cos and sin of x: x = q pi/2 + r, |r| <= pi/4 (pi/2 in two parts), Taylor series to r^14 /
+   r^15 (the first term left out below 2e-15 of the result), the quadrant q mod 4 by selects */
+static inline void tof_sincos(double x, double *s_out, double *c_out)
+{
+    const double q = nearbyint(x * 0.63661977236758134308);
+    const double r = (x - q * 1.57079632679489655800) - q * 6.12323399573676603587e-17;
+    const double r2 = r * r;
+    double s = -7.6471637318198164759e-13;                          /* -1/15! */
+    s = s * r2 + 1.6059043836821614599e-10;                          /* 1/13! */
+    s = s * r2 - 2.5052108385441718775e-08;                          /* -1/11! */
+    s = s * r2 + 2.7557319223985890653e-06;                          /* 1/9! */
+    s = s * r2 - 1.9841269841269841270e-04;                          /* -1/7! */
+    s = s * r2 + 8.3333333333333333333e-03;                          /* 1/5! */
+    s = s * r2 - 1.6666666666666666667e-01;                          /* -1/3! */
+    s = r + r * r2 * s;
+    double c = 1.1470745597729724714e-11;                            /* 1/14! */
+    c = c * r2 - 2.0876756987868098979e-09;                          /* -1/12! */
+    c = c * r2 + 2.7557319223985890653e-07;                          /* 1/10! */
+    c = c * r2 - 2.4801587301587301587e-05;                          /* -1/8! */
+    c = c * r2 + 1.3888888888888888889e-03;                          /* 1/6! */
+    c = c * r2 - 4.1666666666666666667e-02;                          /* -1/4! */
+    c = c * r2 + 0.5;
+    c = 1.0 - r2 * c;
+    const long k = (long)(q == q ? q : 0.0) & 3;       /* NaN: any quadrant, no UB */
+    const double ss = (k & 1) ? c : s, cc = (k & 1) ? s : c;
+    *s_out = (k & 2) ? -ss : ss;
+    *c_out = ((k + 1) & 2) ? -cc : cc;
+}
+
+#define TOF_FP_MAX_F 16
+
+static void fixed_pattern_block(const double *phase, const double *amp, const double *offset,
+                                const double *count, ptrdiff_t F, ptrdiff_t N,
+                                const double *ssc, const double *rsc, double black,
+                                double var_dsnu, double fix_dsnu, double prnu2, int shared,
+                                double *delta, ptrdiff_t n0, ptrdiff_t n1)
+{
+    for (ptrdiff_t n = n0; n < n1; n++) {
+        double p0 = 0.0, p1 = 0.0, p2 = 0.0, p3 = 0.0, sh = 0.0, ch = 0.0;
+        double ind = 0.0, fixed_mean = 0.0, w_sum = 0.0;
+        for (ptrdiff_t f = 0; f < F; f++) {
+            const double a = amp[f * N + n];
+            double t = offset[f * N + n] - black;
+            t = (t >= 0.0 || t != t) ? t : 0.0;
+            double s, c;
+            tof_sincos(phase[f * N + n], &s, &c);
+            const double h = rsc[f] / (2.0 * a);
+            const double ac = a * c, as = a * s;
+            p0 -= s * (t + ac) * h;
+            p2 += s * (t - ac) * h;
+            p3 += c * (t + as) * h;
+            p1 -= c * (t - as) * h;
+            sh += s * h;
+            ch += c * h;
+            const double fixed = var_dsnu + prnu2 * t * t;
+            const double w = ssc[f] / (4.0 * a * a);       /* the weight of var in t */
+            ind += w * fixed;
+            fixed_mean += fixed;
+            w_sum += w;
+        }
+        if (shared) ind = w_sum * fixed_mean / (double)F;
+        double m = count ? count[n] : 1.0;
+        m = m >= 1.0 ? m : 1.0;
+        const double corr = prnu2 * (((p0 * p0 + p1 * p1) + p2 * p2) + p3 * p3)
+                            + 2.0 * fix_dsnu * (sh * sh + ch * ch);
+        const double d = (corr - 2.0 * ind) / m;
+        delta[n] = (d - d == 0.0) ? d : 0.0;                /* inf and NaN: 0 */
+    }
+}
+
+int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double *offset,
+                           const double *count, ptrdiff_t F, ptrdiff_t N,
+                           const double *sigma_scale, double black, double var_dsnu,
+                           double fix_dsnu, double prnu, int shared, double *delta,
+                           int workers)
+{
+    if (!phase || !amp || !offset || !sigma_scale || !delta || F < 1 || F > TOF_FP_MAX_F
+        || N < 0)
+        return RGBZ_EINVAL;
+    double rsc[TOF_FP_MAX_F];
+    for (ptrdiff_t f = 0; f < F; f++) rsc[f] = sqrt(sigma_scale[f]);
+    const ptrdiff_t B = 4096, nb = (N + B - 1) / B;
+    const double prnu2 = prnu * prnu;
+    (void)workers;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(workers > 0 ? workers : omp_get_max_threads())
+#endif
+    for (ptrdiff_t b = 0; b < nb; b++)
+        fixed_pattern_block(phase, amp, offset, count, F, N, sigma_scale, rsc, black, var_dsnu,
+                            fix_dsnu, prnu2, shared, delta, b * B,
+                            (b + 1) * B < N ? (b + 1) * B : N);
     return RGBZ_OK;
 }

@@ -52,7 +52,9 @@ int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, doubl
    n, from amp and var (F, N) (the per-frequency amplitude and component variance), depth,
    residual (N,) and saturated (N,):
      snr[n]   = min_f 2 amp / sqrt(var) (NaN if one is NaN),
-     sigma[n] = sqrt(sum_f sigma_scale[f] fmin(var / (4 amp^2), phase_var_cap)),
+     sigma[n] = sqrt(t), t = sum_f sigma_scale[f] fmin(var / (4 amp^2), phase_var_cap), and
+                with delta given, t + delta[n] instead where no frequency reached the cap
+                and t + delta[n] > 0,
      refl[n]  = mean_f amp / (refl_coef[f] s1 block^2) where depth > 0, else 0, with
                 s1 = power / (4 d d tan_h tan_v) * k_cell (d = depth, 1 where depth <= 0),
      flags[n] = 1 saturated | 2 low signal (snr < min_snr, an amplitude < min_amplitude, or
@@ -69,8 +71,33 @@ typedef struct {
     double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
     double *snr, *sigma, *refl;
     uint8_t *flags;
+    const double *delta;    /* (N,) rgbz_tof_fixed_pattern's correction, or NULL */
 } rgbz_tof_validity_args;
 
 int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers);
+
+/* The fixed-pattern correction of the depth variance (rgbz_fast.tof._noise.fixed_pattern_delta):
+   DSNU and PRNU are the same in the frames of every frequency, so the depth errors they cause
+   at the F frequencies are correlated, which the per-frequency sum of the validity does not
+   know. For measurement n, with c_f, s_f = cos, sin phase[f, n] (the phasor's angle in the
+   taps' own frame), a_f = amp[f, n], T_f = max(offset[f, n] - black, 0) (a NaN stays),
+   h_f = sqrt(sigma_scale[f]) / (2 a_f), m = max(count[n], 1) (count NULL: 1), and the taps
+   A0 = T + a c, A2 = T - a c, A3 = T + a s, A1 = T - a s (I = A0 - A2, Q = A3 - A1):
+     P0 = -sum_f s_f A0_f h_f, P2 = sum_f s_f A2_f h_f, P3 = sum_f c_f A3_f h_f,
+     P1 = -sum_f c_f A1_f h_f, S = sum_f s_f h_f, K = sum_f c_f h_f,
+     corr = (prnu^2 (P0^2 + P1^2 + P2^2 + P3^2) + 2 fix_dsnu (S^2 + K^2)) / m,
+   the variance of the depth (the f^2-weighted mean of the per-frequency distances) that a
+   tap gain 1 + prnu z_k and an offset sqrt(fix_dsnu) z'_k, both fixed across frequencies,
+   give; and ind, what the validity's sum holds of them as independent per-frequency noise:
+     ind = sum_f sigma_scale[f] 2 (var_dsnu + prnu^2 T_f^2) / (4 a_f^2 m)   (shared 0),
+     ind = sum_f sigma_scale[f] 2 mean_g(var_dsnu + prnu^2 T_g^2) / (4 a_f^2 m) (shared 1: the
+           guided chain's one variance per measurement, the mean over the frequencies).
+   delta[n] = corr - ind, 0 where it is not finite. The cosines and sines come from a
+   polynomial (absolute error below 1e-15 for |phase| < 1e3), not libm. */
+int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double *offset,
+                           const double *count, ptrdiff_t F, ptrdiff_t N,
+                           const double *sigma_scale, double black, double var_dsnu,
+                           double fix_dsnu, double prnu, int shared, double *delta,
+                           int workers);
 
 #endif

@@ -1339,6 +1339,7 @@ typedef struct {
     double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
     double *snr, *sigma, *refl;
     uint8_t *flags;
+    const double *delta;
 } tofg_valid_args;
 
 /* the measurements [n0, n1) with NF frequencies (a compile-time constant up to 4): branch-free,
@@ -1347,8 +1348,9 @@ RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restric
                                  const float *restrict var, const double *restrict depth,
                                  const double *restrict residual, const uint8_t *restrict sat,
                                  double *restrict snr, double *restrict sigma,
-                                 double *restrict refl, uint8_t *restrict flags, ptrdiff_t n0,
-                                 ptrdiff_t n1, const int NF)
+                                 double *restrict refl, uint8_t *restrict flags,
+                                 const double *restrict delta, ptrdiff_t n0, ptrdiff_t n1,
+                                 const int NF)
 {
     const ptrdiff_t N = p->N;
     const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)NF;
@@ -1364,10 +1366,11 @@ RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restric
         const double vn = var[n], sd = sqrt(vn), d = depth[n];
         const double dd = d > 0.0 ? d : 1.0;
         double s2 = 0.0, best = INFINITY, rho = 0.0;
-        int weak = 0;
+        int weak = 0, capped = 0;
         for (int f = 0; f < NF; f++) {
             const double a = amp[f * N + n];
             double ph = vn / (4.0 * a * a);                      /* phase variance */
+            capped |= !(ph < cap);
             ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
             s2 += ssc[f] * ph;
             const double q = 2.0 * a / sd;
@@ -1376,6 +1379,10 @@ RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restric
             rho += a * rco[f];
         }
         rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
+        if (delta) {                       /* the fixed-pattern noise's correlation */
+            const double sd2 = s2 + delta[n];
+            s2 = (!capped && sd2 > 0.0) ? sd2 : s2;
+        }
         const double sg = sqrt(s2);
         const int low = (best < min_snr) | weak | ((max_sigma >= 0.0) & !(sg <= max_sigma));
         const int far = (d < 0.0) | (d > max_range - 5.0 * sg) | (rho < min_reflectance);
@@ -1391,7 +1398,8 @@ RGBZ_CLONES_512 static void tofg_valid_block(const tofg_valid_args *p, ptrdiff_t
                                              ptrdiff_t n0, ptrdiff_t n1)
 {
 #define TOFG_VALID_(nf) tofg_valid_span(p, p->amp, p->var, p->depth, p->residual, p->sat,     \
-                                        p->snr, p->sigma, p->refl, p->flags, n0, n1, nf)
+                                        p->snr, p->sigma, p->refl, p->flags, p->delta, n0,   \
+                                        n1, nf)
     switch (F) {
     case 1: TOFG_VALID_(1); break;
     case 2: TOFG_VALID_(2); break;
@@ -1406,15 +1414,15 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
                        const double *sigma_scale, const double *refl_coef, double min_snr,
                        double min_amplitude, double max_sigma, double max_residual,
-                       double min_reflectance, double max_range, double *snr, double *sigma,
-                       double *refl, uint8_t *flags, int workers)
+                       double min_reflectance, double max_range, const double *delta,
+                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers)
 {
     if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
         || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
         return RGBZ_EINVAL;
     const tofg_valid_args p = {amp, depth, residual, sigma_scale, refl_coef, var, sat, N,
                                min_snr, min_amplitude, max_sigma, max_residual,
-                               min_reflectance, max_range, snr, sigma, refl, flags};
+                               min_reflectance, max_range, snr, sigma, refl, flags, delta};
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR

@@ -93,13 +93,14 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
    16 out of range) of every measurement from amp (F, N), the component variance var (N,),
    depth, residual (N,), sat (N,). sigma_scale (F,): (w_f c / (4 pi f) / sum w)^2;
    refl_coef (F,): the reciprocal amplitude of a reflectance-1 surface at 1 m; max_sigma < 0:
-   no limit. */
+   no limit. delta (N,) or NULL: rgbz_tof_fixed_pattern's correction (tof_filter.h), added to
+   sigma^2 where no frequency's phase variance reached the cap and the sum stays > 0. */
 int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
                        const double *sigma_scale, const double *refl_coef, double min_snr,
                        double min_amplitude, double max_sigma, double max_residual,
-                       double min_reflectance, double max_range, double *snr, double *sigma,
-                       double *refl, uint8_t *flags, int workers);
+                       double min_reflectance, double max_range, const double *delta,
+                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers);
 
 /* usable (N,) = 1 where the measurement may enter the flying-pixel test: none of the bits
    bad in flags, depth and sigma finite, present (NULL: every one) nonzero; else 0. */

@@ -48,7 +48,13 @@ cdef extern from "tof_filter.h" nogil:
         double *sigma
         double *refl
         uint8_t *flags
+        const double *delta
     int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
+    int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double *offset,
+                               const double *count, Py_ssize_t F, Py_ssize_t N,
+                               const double *sigma_scale, double black, double var_dsnu,
+                               double fix_dsnu, double prnu, int shared, double *delta,
+                               int workers)
     int rgbz_tof_phasors_offset(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                                 double *i, double *q, double *offset, int workers)
     int rgbz_tof_tap_variance(const double *offset, Py_ssize_t N, double black, double k,
@@ -635,15 +641,17 @@ def tof_validity(const double[:, ::1] amp, const double[:, ::1] var, const doubl
                  double k_cell, double block, double min_snr, double min_amplitude,
                  double max_sigma, double max_residual, double min_reflectance,
                  double max_range, double[::1] snr, double[::1] sigma, double[::1] refl,
-                 uint8_t[::1] flags, int workers):
+                 uint8_t[::1] flags, int workers, const double[::1] delta=None):
     """The unguided ToF ISP's snr, sigma, implied reflectance and validity bits but the
     flying one (csrc/tof_filter.c, rgbz_tof_validity); amp, var (F, N), the rest (N,),
-    sigma_scale and refl_coef (F,); max_sigma < 0: no limit."""
+    sigma_scale and refl_coef (F,); max_sigma < 0: no limit; delta (N,) or None: the
+    fixed-pattern correction of sigma^2 (tof_fixed_pattern)."""
     cdef Py_ssize_t F = amp.shape[0], n = amp.shape[1]
     if (var.shape[0] != F or var.shape[1] != n or sigma_scale.shape[0] != F
             or refl_coef.shape[0] != F or depth.shape[0] != n or residual.shape[0] != n
             or saturated.shape[0] != n or snr.shape[0] != n or sigma.shape[0] != n
-            or refl.shape[0] != n or flags.shape[0] != n):
+            or refl.shape[0] != n or flags.shape[0] != n
+            or (delta is not None and delta.shape[0] != n)):
         raise ValueError(f"tof_validity: expected (F, N) and (N,) planes, F = {F}, N = {n}")
     if n == 0:
         return
@@ -673,9 +681,35 @@ def tof_validity(const double[:, ::1] amp, const double[:, ::1] var, const doubl
     a.sigma = &sigma[0]
     a.refl = &refl[0]
     a.flags = &flags[0]
+    a.delta = &delta[0] if delta is not None else NULL
     cdef int status
     with nogil:
         status = rgbz_tof_validity(&a, workers)
+    _raise_for(status)
+
+
+def tof_fixed_pattern(const double[:, ::1] phase, const double[:, ::1] amp,
+                      const double[:, ::1] offset, const double[::1] count,
+                      const double[::1] sigma_scale, double black, double var_dsnu,
+                      double fix_dsnu, double prnu, bint shared, double[::1] delta,
+                      int workers):
+    """The fixed-pattern correction of the depth variance (csrc/tof_filter.c,
+    rgbz_tof_fixed_pattern): phase, amp, offset (F, N); count (N,) or None; sigma_scale (F,);
+    delta (N,) receives it."""
+    cdef Py_ssize_t F = phase.shape[0], n = phase.shape[1]
+    if (amp.shape[0] != F or amp.shape[1] != n or offset.shape[0] != F
+            or offset.shape[1] != n or sigma_scale.shape[0] != F or delta.shape[0] != n
+            or (count is not None and count.shape[0] != n)):
+        raise ValueError(f"tof_fixed_pattern: expected (F, N) and (N,) planes, F = {F}, "
+                         f"N = {n}")
+    if n == 0:
+        return
+    cdef const double *cp = &count[0] if count is not None else NULL
+    cdef int status
+    with nogil:
+        status = rgbz_tof_fixed_pattern(&phase[0, 0], &amp[0, 0], &offset[0, 0], cp, F, n,
+                                        &sigma_scale[0], black, var_dsnu, fix_dsnu, prnu,
+                                        shared, &delta[0], workers)
     _raise_for(status)
 
 
@@ -1150,8 +1184,8 @@ cdef extern from "tof_guided.h" nogil:
                            Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
                            double min_snr, double min_amplitude, double max_sigma,
                            double max_residual, double min_reflectance, double max_range,
-                           double *snr, double *sigma, double *refl, uint8_t *flags,
-                           int workers)
+                           const double *delta, double *snr, double *sigma, double *refl,
+                           uint8_t *flags, int workers)
     int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *sigma,
                          const uint8_t *present, uint8_t bad, Py_ssize_t N, uint8_t *usable,
                          int workers)
@@ -1334,17 +1368,22 @@ def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[:
                   const double[::1] sigma_scale, const double[::1] refl_coef, double min_snr,
                   double min_amplitude, double max_sigma, double max_residual,
                   double min_reflectance, double max_range, double[::1] snr, double[::1] sigma,
-                  double[::1] refl, uint8_t[::1] flags, int workers):
-    """snr, sigma, implied reflectance and the validity bits (no flying test)."""
+                  double[::1] refl, uint8_t[::1] flags, int workers,
+                  const double[::1] delta=None):
+    """snr, sigma, implied reflectance and the validity bits (no flying test); delta (N,)
+    or None: the fixed-pattern correction of sigma^2 (tof_fixed_pattern)."""
     cdef int status
     if depth.shape[0] == 0:
         return
+    if delta is not None and delta.shape[0] != depth.shape[0]:
+        raise ValueError(f"tofg_validity: expected delta of {depth.shape[0]} measurements")
+    cdef const double *dp = &delta[0] if delta is not None else NULL
     with nogil:
         status = rgbz_tofg_validity(&amp[0, 0], &var[0], &depth[0], &residual[0], &sat[0],
                                     amp.shape[0], amp.shape[1], &sigma_scale[0], &refl_coef[0],
                                     min_snr, min_amplitude, max_sigma, max_residual,
-                                    min_reflectance, max_range, &snr[0], &sigma[0], &refl[0],
-                                    &flags[0], workers)
+                                    min_reflectance, max_range, dp, &snr[0], &sigma[0],
+                                    &refl[0], &flags[0], workers)
     _raise_for(status)
 
 

@@ -283,15 +283,57 @@ def guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radi
     return mr, mi, var, neff
 
 
+def fixed_pattern(phase, amp, offset, count, sigma_scale, black, var_dsnu, fix_dsnu, prnu,
+                  shared):
+    """(corr, ind): the variance (m^2) of the depth that the taps' fixed pattern gives (a
+    gain 1 + prnu z_k and an offset sqrt(fix_dsnu) z'_k per tap, the same at every
+    frequency), through each phase's derivative with respect to each tap, and what the
+    independent per-frequency sum of the validity holds of it (var_dsnu + prnu^2 T^2 per
+    tap; ``shared``: the mean over the frequencies, the guided chain's one variance)."""
+    ph, a = np.asarray(phase, np.float64), np.asarray(amp, np.float64)
+    t = np.maximum(np.asarray(offset, np.float64) - black, 0.0)
+    ssc = np.asarray(sigma_scale, np.float64)[:, None]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        z = 2.0 * a * np.exp(1j * ph)                      # I + iQ
+        # taps above black: A0, A2 = T +- I/2, A3, A1 = T +- Q/2
+        taps = (t + z.real / 2, t - z.imag / 2, t - z.real / 2, t + z.imag / 2)
+        # d phase_f / d A_k: phase = atan2(Q, I), I = A0 - A2, Q = A3 - A1
+        dI, dQ = -z.imag / np.abs(z) ** 2, z.real / np.abs(z) ** 2
+        dphase = (dI, -dQ, -dI, dQ)
+        w = np.sqrt(ssc)                                   # d depth / d phase_f
+        corr = sum(prnu ** 2 * ((w * dphase[k] * taps[k]).sum(axis=0)) ** 2
+                   + fix_dsnu * ((w * dphase[k]).sum(axis=0)) ** 2 for k in range(4))
+        fixed = var_dsnu + prnu ** 2 * t * t
+        if shared:
+            fixed = np.broadcast_to(fixed.mean(axis=0), fixed.shape)
+        ind = (ssc * 2.0 * fixed / (4.0 * a * a)).sum(axis=0)
+    m = np.ones(ph.shape[1]) if count is None else np.maximum(np.asarray(count, float), 1.0)
+    return corr / m, ind / m
+
+
+def fixed_pattern_delta(*args):
+    """rgbz_tof_fixed_pattern: corr - ind, 0 where it is not finite."""
+    corr, ind = fixed_pattern(*args)
+    d = corr - ind
+    return np.where(np.isfinite(d), d, 0.0)
+
+
 def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_snr,
-                    min_amplitude, max_sigma, max_residual, min_reflectance, max_range):
-    """snr, sigma, reflectance and the bits 1, 2, 4, 16 of every measurement."""
+                    min_amplitude, max_sigma, max_residual, min_reflectance, max_range,
+                    delta=None):
+    """snr, sigma, reflectance and the bits 1, 2, 4, 16 of every measurement; ``delta``: the
+    fixed-pattern correction of sigma^2 where no phase variance reached the cap."""
     amp = np.asarray(amp, np.float64)
     var = np.asarray(var, np.float64)
     with np.errstate(divide="ignore", invalid="ignore"):
         ph = var[None] / (4.0 * amp * amp)
+        capped = np.any(~(ph < np.pi * np.pi / 3.0), axis=0)
         ph = np.where(ph < np.pi * np.pi / 3.0, ph, np.pi * np.pi / 3.0)
-        sigma = np.sqrt((np.asarray(sigma_scale)[:, None] * ph).sum(axis=0))
+        s2 = (np.asarray(sigma_scale)[:, None] * ph).sum(axis=0)
+        if delta is not None:
+            sd2 = s2 + delta
+            s2 = np.where(~capped & (sd2 > 0), sd2, s2)
+        sigma = np.sqrt(s2)
         snr = (2.0 * amp / np.sqrt(var)[None]).min(axis=0)
     d = np.asarray(depth)
     dd = np.where(d > 0, d, 1.0)
@@ -540,7 +582,7 @@ def guided_usable(flags, depth, sigma, present, bad):
 FLAG_SATURATED, FLAG_LOW_SIGNAL, FLAG_INCONSISTENT, FLAG_FLYING, FLAG_OUT_OF_RANGE = 1, 2, 4, 8, 16
 
 
-def _depth_sigma(amp, var, frequencies):
+def _depth_sigma(amp, var, frequencies, delta=None):
     """Depth noise (m) of the f^2-weighted mean of the per-frequency distances.
 
     ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
@@ -554,9 +596,14 @@ def _depth_sigma(amp, var, frequencies):
     t *= 4.0
     with np.errstate(divide="ignore", invalid="ignore"):
         np.divide(var, t, out=t)                          # phase variance; inf / nan at 0
+    capped = np.any(~(t < np.pi * np.pi / 3.0), axis=0)
     np.fmin(t, np.pi * np.pi / 3.0, out=t)               # fmin: a NaN takes the cap
     t *= scale[:, None]
-    return np.sqrt(t.sum(axis=0))
+    s2 = t.sum(axis=0)
+    if delta is not None:         # the fixed-pattern correction (added 2026-11-27)
+        sd2 = s2 + delta
+        s2 = np.where(~capped & (sd2 > 0), sd2, s2)
+    return np.sqrt(s2)
 
 
 def _implied_reflectance(depth, amp, sensor, block):
@@ -601,11 +648,11 @@ def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid,
 
 def unguided_validity(depth, residual, amp, var, saturated, sensor, block, frequencies, sites,
                       *, min_snr, min_amplitude, max_sigma, max_residual, flying_step,
-                      min_reflectance, max_range):
+                      min_reflectance, max_range, delta=None):
     """snr, sigma, reflectance, flags as the unguided chain computed them in NumPy (sites: the
-    measurements' sites or their SiteGrid)."""
+    measurements' sites or their SiteGrid; delta: the fixed-pattern correction of sigma^2)."""
     snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
-    sigma = _depth_sigma(amp, var, frequencies)
+    sigma = _depth_sigma(amp, var, frequencies, delta)
     reflectance = _implied_reflectance(depth, amp, sensor, block)
     grid = sites if isinstance(sites, SiteGrid) else SiteGrid(sites, block)
     flags = assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid,

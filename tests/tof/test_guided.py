@@ -307,6 +307,13 @@ def test_validity_matches_numpy():
     for a, b in zip(out[:3], want[:3]):
         np.testing.assert_allclose(a, b, rtol=1e-12)
     np.testing.assert_array_equal(out[3], want[3])
+    # with the fixed-pattern correction: some negative enough to be refused (sum <= 0)
+    delta = rng.uniform(-2e-5, 2e-5, N)
+    _kernels.tofg_validity(amp, var, depth, residual, sat, scale, coef, *args, *out, 2, delta)
+    want = ref.guided_validity(amp, var, depth, residual, sat, scale, coef, *args, delta=delta)
+    for a, b in zip(out[:3], want[:3]):
+        np.testing.assert_allclose(a, b, rtol=1e-12)
+    np.testing.assert_array_equal(out[3], want[3])
 
 
 def test_usable_matches_numpy():

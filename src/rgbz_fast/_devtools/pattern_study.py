@@ -288,12 +288,14 @@ def _task(job):
 
 
 def _depth_models():
-    """The depth tasks' models as their keys hold them: the default ToF sensor and ToF ISP
-    (a change of either had been served stale from a cache keyed by the version alone)."""
+    """The depth tasks' models as their keys hold them: the default ToF sensor and ToF ISP,
+    and the revision of the ISP's noise model (a change of any had been served stale from a
+    cache keyed by the version alone)."""
     from ..simulation import ToFSensor
     from ..tof import ToFISP
+    from ..tof._noise import NOISE_MODEL
 
-    return repr(ToFSensor()), repr(ToFISP())
+    return repr(ToFSensor()), repr(ToFISP()), NOISE_MODEL
 
 
 def _jobs(cands, dataset, train, rgbd_scenes, settings, cache_dir, workers):

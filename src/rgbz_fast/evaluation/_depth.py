@@ -168,9 +168,12 @@ GUIDED_NOISE_FRAMES = 4
 
 def _noise_rows(isp, seed):
     rows = []
-    for pattern, shape, distances in (("mask1", (256, 256), (0.5, 1.0, 1.5, 2.0)),
-                                      ("mask2", (384, 384), (1.0, 2.0, 3.0, 4.0))):
-        for k, d in enumerate(distances):
+    # (distance, seed offset): the near walls, where PRNU dominates, came last and keep the
+    # other walls' seeds
+    for pattern, shape, distances in (
+            ("mask1", (256, 256), ((0.3, 4), (0.5, 0), (1.0, 1), (1.5, 2), (2.0, 3))),
+            ("mask2", (384, 384), ((0.5, 4), (1.0, 0), (2.0, 1), (3.0, 2), (4.0, 3)))):
+        for d, k in distances:
             for fpn in (True, False):
                 sensor = ToFSensor() if fpn else ToFSensor(dsnu=0.0, prnu=0.0)
                 scene = Scene(np.full(shape + (3,), 0.5), depth=np.full(shape, d),

@@ -130,8 +130,8 @@ class ToFISP:
         the chain runs twice, and such a measurement takes the wider
         window's result where its depth agrees with the first's within the
         first's sigma (None: one run). For photon-limited scenes: on the
-        Middlebury 2005 scene art, Mask1 guided, 41 keeps 86.7 % of the
-        measurements valid instead of 79.5 %, 0.034 % valid and more than
+        Middlebury 2005 scene art, Mask1 guided, 41 keeps 87.6 % of the
+        measurements valid instead of 81.6 %, 0.040 % valid and more than
         5 cm off, where a window of 41 for every measurement flags textured
         slanted surfaces (docs/reports/isp.md); twice the time.
 
@@ -278,6 +278,9 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
       K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` (shot noise of the
       collected charge ``c``, read noise, DSNU, quantisation and PRNU of a
       tap holding ``e`` electrons, in DN^2), through the denoise's weights;
+      ``sigma`` is the depth noise of the unwrapping's weighted mean, with
+      the DSNU and PRNU correlated across the frequencies (one offset and
+      gain per tap; a calibration's dark frame takes the DSNU off);
     * inconsistent when the unwrapping residual exceeds ``max_residual``:
       the frequencies disagree (a wrong unwrap, a mixed return);
     * flying when the depth jumps by more than ``max(flying_step, 2 sigma)``
@@ -355,11 +358,13 @@ def _run(tof, p, nthreads, guide=None):
     def site_grid():                # kept for a ToFTaps' own (read-only) sites: _layout_of
         return _layout_of(tof.sites, tof.block, tof.shape).grid
 
+    dark = calibration is not None and calibration.dark is not None
     if denoise == "none" and calibration is None:
         depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
             taps, f, max_range=max_range, workers=nthreads)
         count = np.ones(n)
         var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
+        fixed_pattern = (phase, offset, None, dark)
     else:
         # one pass over the taps in NumPy (I, Q and the offset exactly as the C kernel
         # computes them), the calibration's offsets, the mean over the window, then one C
@@ -375,23 +380,32 @@ def _run(tof, p, nthreads, guide=None):
                                                        extra=(offset,), workers=nthreads)
             noise_offset = np.where(count > 0, off_mean, offset)
             var = tap_variance(noise_offset, sensor, scale=2.0, count=count, workers=nthreads)
+            fp_offset = noise_offset
         elif denoise == "bilateral":
             var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
             grid = site_grid()
             i, q, var, count = denoise_phasors_bilateral(
                 i, q, var, grid, block=tof.block, window=window, use=~saturated,
                 range_scale=p.range_scale, workers=nthreads)
+            fp_offset = offset
         else:
             count = np.ones(n)
             var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
+            fp_offset = offset
         depth, residual, wraps, phase, amp = _unwrap_phasors(i, q, f, w, max_range,
                                                              calibration, nthreads)
+        # the fixed pattern acts on the phasors in the taps' own frame: before the
+        # calibration turned them by its deviations
+        fp_phase = phase if calibration is None else \
+            np.arctan2(q, i) + calibration.deviations
+        fixed_pattern = (fp_phase, fp_offset, count, dark)
     snr, sigma, reflectance, flags = validity(
         depth, residual, amp, var, saturated, sensor, tof.block, f,
         grid if grid is not None else site_grid,
         min_snr=p.min_snr, min_amplitude=p.min_amplitude, max_sigma=p.max_sigma,
         max_residual=p.max_residual, flying_step=p.flying_step,
-        min_reflectance=p.min_reflectance, max_range=max_range, workers=nthreads)
+        min_reflectance=p.min_reflectance, max_range=max_range, workers=nthreads,
+        fixed_pattern=fixed_pattern)
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
                     offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
                     valid=flags == 0, flags=flags,

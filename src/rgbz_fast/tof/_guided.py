@@ -47,6 +47,7 @@ from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
+from ._noise import fixed_pattern_delta
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
                         radiometry_coefficients)
 
@@ -299,10 +300,17 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
     flags = np.empty(N, np.uint8)
     sigma_scale, refl_coef = _radiometry(tof, f)
+    # the fixed pattern acts on the phasors in the taps' own frame (before the calibration
+    # turned them); its correlation across the frequencies corrects sigma
+    fp_phase = phase if cal is None else \
+        np.arctan2(mi, mr) + layout.to_grid(cal.deviations, 0.0)
+    delta = fixed_pattern_delta(fp_phase, amp, offset, count, sensor, sigma_scale, shared=True,
+                                dark_subtracted=cal is not None and cal.dark is not None,
+                                workers=nthreads)
     _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, p.min_snr,
                            p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
                            p.max_residual, p.min_reflectance, max_range, snr, sigma, refl,
-                           flags, nthreads)
+                           flags, nthreads, delta)
     measured = depth
     if p.flying_step is not None:
         depth = guided_flags(measured, sigma, flags, layout, col, cells,

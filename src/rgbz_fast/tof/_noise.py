@@ -8,7 +8,12 @@ import numpy as np
 from .. import _kernels
 from .._validate import kernel_threads
 
-__all__ = ["tap_variance"]
+__all__ = ["tap_variance", "fixed_pattern_delta", "NOISE_MODEL"]
+
+#: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
+#: that a result of an earlier model is not served (2: the fixed pattern correlated across
+#: the frequencies, 2026-11-27).
+NOISE_MODEL = 2
 
 
 def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
@@ -21,7 +26,9 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     electrons it collected (the ambient suppression ``s`` drains a share of
     the common mode but not its shot noise). PRNU is a fixed gain per tap: it
     enters as a variance because it differs from tap to tap and pixel to pixel
-    (the denoise averages it like noise).
+    (the denoise averages it like noise). DSNU and PRNU are the same in the frames of
+    every frequency, so their share of the depth noise is not independent across
+    frequencies: :func:`fixed_pattern_delta` corrects the depth's sigma for it.
 
     The NumPy operations of this formula run as one C pass (csrc/tof_filter.c,
     ``rgbz_tof_tap_variance``; tests/_reference/tof.py holds it to them bit for bit),
@@ -42,4 +49,44 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
                               k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2),
                               float(sensor.prnu), float(scale), cnt, out.reshape(-1),
                               kernel_threads(workers, flat.size))
+    return out
+
+
+def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, shared=False,
+                        dark_subtracted=False, workers=1):
+    """The correction of the depth variance (m^2) for the fixed-pattern noise's correlation
+    across frequencies, one value per measurement.
+
+    A tap's DSNU offset and PRNU gain do not change between the frames of the F
+    frequencies, so the phase errors they cause are correlated: with phases 0.5 rad apart
+    they add, with phases pi apart they cancel. The ISP's sigma sums the per-frequency
+    phase variances as if independent (:func:`tap_variance` holds DSNU and PRNU with the
+    temporal noise); this returns ``corr - ind``: ``corr`` the variance the fixed
+    pattern gives the f^2-weighted mean of the per-frequency distances, computed through
+    each tap (``A0, A2 = T +- a cos(phase)``, ``A3, A1 = T +- a sin(phase)``, ``T`` the
+    offset above black, ``a`` the amplitude), ``ind`` what the sum holds of it, both over
+    ``max(count, 1)``. On flat walls at 0.3-4 m the predicted sigma then matches the
+    spread of the depths of a sensor whose only noise is DSNU and PRNU within 5 %, where
+    the independent sum was 0.5-2x off (docs/reports/isp.md, "Depth noise on flat walls").
+
+    ``phase`` (F, n) is the angle of each phasor in the taps' own frame (before any
+    calibration turned it); ``amp`` the amplitude ``|I + iQ| / 2``, ``offset`` the mean
+    tap (DN), ``count`` (n,) the measurements averaged (None: 1), ``sigma_scale`` (F,) the
+    weights of :func:`~rgbz_fast.tof._validity.radiometry_coefficients`. ``shared``: the
+    variance is one per measurement, the mean over the frequencies (the guided chain's).
+    ``dark_subtracted``: a calibration's dark frame took the DSNU off the taps, which the
+    variance still holds. One C pass (csrc/tof_filter.c, ``rgbz_tof_fixed_pattern``);
+    tests/_reference/tof.py holds its NumPy reference.
+    """
+    k = float(sensor.system_gain)
+    var_dsnu = k * k * float(sensor.dsnu) ** 2
+    ph = np.ascontiguousarray(phase, np.float64)
+    out = np.empty(ph.shape[1])
+    cnt = None if count is None else np.ascontiguousarray(count, np.float64)
+    _kernels.tof_fixed_pattern(ph, np.ascontiguousarray(amp, np.float64),
+                               np.ascontiguousarray(offset, np.float64), cnt,
+                               np.ascontiguousarray(sigma_scale, np.float64),
+                               float(sensor.black_level), var_dsnu,
+                               0.0 if dark_subtracted else var_dsnu, float(sensor.prnu),
+                               bool(shared), out, kernel_threads(workers, out.size))
     return out

@@ -33,7 +33,9 @@ class ToFDepth:
         noise model. The phase noise is about ``1 / snr`` radians.
     sigma : ndarray of float64, shape (n,)
         Predicted noise (standard deviation, m) of ``depth``: the phase
-        noise of every frequency through the unwrapping's weighted mean.
+        noise of every frequency through the unwrapping's weighted mean, the
+        taps' fixed pattern (DSNU, PRNU) with its correlation across the
+        frequencies.
     reflectance : ndarray of float64, shape (n,)
         The NIR reflectance that the amplitude implies at the measured
         distance (the sensor's radiometry, mean over the frequencies; 0 where

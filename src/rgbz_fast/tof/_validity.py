@@ -28,6 +28,7 @@ from .._sensors import DEFAULT_CELL_PITCH_UM, SPEED_OF_LIGHT
 from .. import _kernels
 from .._validate import as_array, check_number, check_workers, kernel_threads
 from ._filters import SiteGrid
+from ._noise import fixed_pattern_delta
 
 __all__ = ["ToFFlag", "FLAG_SATURATED", "FLAG_LOW_SIGNAL", "FLAG_INCONSISTENT", "FLAG_FLYING",
            "FLAG_OUT_OF_RANGE", "FLAG_RESOLVED", "flying_pixels"]
@@ -106,7 +107,7 @@ def radiometry_coefficients(sensor, f):
 
 def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, grid, *,
              min_snr, min_amplitude, max_sigma, max_residual, flying_step, min_reflectance,
-             max_range, workers=None):
+             max_range, workers=None, fixed_pattern=None):
     """snr, sigma, implied reflectance and flags (uint8) of every measurement of the unguided
     chain (:func:`~rgbz_fast.tof.tof_depth`), from the per-frequency amplitude ``amp`` and
     component variance ``var`` (F, n), ``depth``, ``residual`` and ``saturated`` (n,).
@@ -115,7 +116,10 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
     * sigma: the depth noise of the f^2-weighted mean of the per-frequency distances,
       ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
       variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
-      (uniform on the circle);
+      (uniform on the circle); ``fixed_pattern`` (phase, offset, count, dark_subtracted), when
+      given, adds :func:`~rgbz_fast.tof._noise.fixed_pattern_delta` to ``sigma^2`` where no
+      phase variance reached the cap (the DSNU and PRNU of the taps, correlated across
+      frequencies);
     * reflectance: the NIR reflectance the amplitude implies at ``depth`` (the sensor's
       radiometry, :meth:`~rgbz_fast.simulation.ToFSensor.active_electrons`), 0 where the
       depth is not positive;
@@ -133,6 +137,11 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
     snr, sigma, reflectance = np.empty(n), np.empty(n), np.empty(n)
     flags = np.empty(n, np.uint8)
     nthreads = check_workers(workers)
+    delta = None
+    if fixed_pattern is not None:
+        fp_phase, fp_offset, fp_count, dark = fixed_pattern
+        delta = fixed_pattern_delta(fp_phase, amp, fp_offset, fp_count, sensor, scale,
+                                    dark_subtracted=dark, workers=nthreads)
     _kernels.tof_validity(
         np.ascontiguousarray(amp, np.float64), np.ascontiguousarray(var, np.float64),
         np.ascontiguousarray(depth, np.float64), np.ascontiguousarray(residual, np.float64),
@@ -140,7 +149,7 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
         float(sensor.optical_power_w), tan_h, tan_v, k_cell, float(block), float(min_snr),
         float(min_amplitude), -1.0 if max_sigma is None else float(max_sigma),
         float(max_residual), float(min_reflectance), float(max_range), snr, sigma,
-        reflectance, flags, kernel_threads(nthreads, n))
+        reflectance, flags, kernel_threads(nthreads, n), delta)
     if flying_step is not None:
         usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
         if not isinstance(grid, SiteGrid):
