@@ -40,6 +40,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -460,11 +461,17 @@ int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
 }
 
 /* ------------------------------------------------------------------ fixed-pattern correction */
-/* cos and sin of x: x = q pi/2 + r, |r| <= pi/4 (pi/2 in two parts), Taylor series to r^14 /
-   r^15 (the first term left out below 2e-15 of the result), the quadrant q mod 4 by selects */
+/* cos and sin of x (|x| < 2^50): x = q pi/2 + r, |r| <= pi/4 (pi/2 in two parts), Taylor
+   series to r^14 / r^15 (the first term left out below 2e-15 of the result), the quadrant
+   q mod 4 from the low bits of the rounding's mantissa (q rounded by adding 1.5 2^52), by
+   selects: no libm call and no branch, so that a loop of it vectorises. A NaN gives NaN. */
 static inline void tof_sincos(double x, double *s_out, double *c_out)
 {
-    const double q = nearbyint(x * 0.63661977236758134308);
+    const double magic = 6755399441055744.0;                          /* 1.5 * 2^52 */
+    const double y = x * 0.63661977236758134308 + magic;
+    uint64_t u;
+    memcpy(&u, &y, sizeof u);
+    const double q = y - magic;
     const double r = (x - q * 1.57079632679489655800) - q * 6.12323399573676603587e-17;
     const double r2 = r * r;
     double s = -7.6471637318198164759e-13;                          /* -1/15! */
@@ -483,50 +490,66 @@ static inline void tof_sincos(double x, double *s_out, double *c_out)
     c = c * r2 - 4.1666666666666666667e-02;                          /* -1/4! */
     c = c * r2 + 0.5;
     c = 1.0 - r2 * c;
-    const long k = (long)(q == q ? q : 0.0) & 3;       /* NaN: any quadrant, no UB */
+    const uint64_t k = u & 3;                         /* q mod 4, negative q included */
     const double ss = (k & 1) ? c : s, cc = (k & 1) ? s : c;
     *s_out = (k & 2) ? -ss : ss;
     *c_out = ((k + 1) & 2) ? -cc : cc;
 }
 
 #define TOF_FP_MAX_F 16
+#define TOF_FP_B 256
 
+/* measurements [n0, n0 + m), m <= TOF_FP_B: the frequencies in the outer loop, the
+   measurements in the inner one (vectorised: a clone per instruction set) */
+RGBZ_CLONES_512
 static void fixed_pattern_block(const double *phase, const double *amp, const double *offset,
                                 const double *count, ptrdiff_t F, ptrdiff_t N,
                                 const double *ssc, const double *rsc, double black,
                                 double var_dsnu, double fix_dsnu, double prnu2, int shared,
-                                double *delta, ptrdiff_t n0, ptrdiff_t n1)
+                                double *delta, ptrdiff_t n0, ptrdiff_t m)
 {
-    for (ptrdiff_t n = n0; n < n1; n++) {
-        double p0 = 0.0, p1 = 0.0, p2 = 0.0, p3 = 0.0, sh = 0.0, ch = 0.0;
-        double ind = 0.0, fixed_mean = 0.0, w_sum = 0.0;
-        for (ptrdiff_t f = 0; f < F; f++) {
-            const double a = amp[f * N + n];
-            double t = offset[f * N + n] - black;
+    double p0[TOF_FP_B], p1[TOF_FP_B], p2[TOF_FP_B], p3[TOF_FP_B], sh[TOF_FP_B],
+        ch[TOF_FP_B], ind[TOF_FP_B], fsum[TOF_FP_B], wsum[TOF_FP_B];
+    for (ptrdiff_t j = 0; j < m; j++) {
+        p0[j] = p1[j] = p2[j] = p3[j] = sh[j] = ch[j] = 0.0;
+        ind[j] = fsum[j] = wsum[j] = 0.0;
+    }
+    for (ptrdiff_t f = 0; f < F; f++) {
+        const double *restrict ph = phase + f * N + n0, *restrict am = amp + f * N + n0;
+        const double *restrict of = offset + f * N + n0;
+        const double rf = rsc[f], sf = ssc[f];
+        for (ptrdiff_t j = 0; j < m; j++) {
+            const double a = am[j];
+            double t = of[j] - black;
             t = (t >= 0.0 || t != t) ? t : 0.0;
-            double s, c;
-            tof_sincos(phase[f * N + n], &s, &c);
-            const double h = rsc[f] / (2.0 * a);
-            const double ac = a * c, as = a * s;
-            p0 -= s * (t + ac) * h;
-            p2 += s * (t - ac) * h;
-            p3 += c * (t + as) * h;
-            p1 -= c * (t - as) * h;
-            sh += s * h;
-            ch += c * h;
+            double sn, cs;
+            tof_sincos(ph[j], &sn, &cs);
+            const double half = 0.5 / a;
+            const double h = rf * half;
+            const double ac = a * cs, as = a * sn;
+            p0[j] -= sn * (t + ac) * h;
+            p2[j] += sn * (t - ac) * h;
+            p3[j] += cs * (t + as) * h;
+            p1[j] -= cs * (t - as) * h;
+            sh[j] += sn * h;
+            ch[j] += cs * h;
             const double fixed = var_dsnu + prnu2 * t * t;
-            const double w = ssc[f] / (4.0 * a * a);       /* the weight of var in t */
-            ind += w * fixed;
-            fixed_mean += fixed;
-            w_sum += w;
+            const double w = sf * half * half;              /* the weight of var in t */
+            ind[j] += w * fixed;
+            fsum[j] += fixed;
+            wsum[j] += w;
         }
-        if (shared) ind = w_sum * fixed_mean / (double)F;
-        double m = count ? count[n] : 1.0;
-        m = m >= 1.0 ? m : 1.0;
-        const double corr = prnu2 * (((p0 * p0 + p1 * p1) + p2 * p2) + p3 * p3)
-                            + 2.0 * fix_dsnu * (sh * sh + ch * ch);
-        const double d = (corr - 2.0 * ind) / m;
-        delta[n] = (d - d == 0.0) ? d : 0.0;                /* inf and NaN: 0 */
+    }
+    const double inv_f = 1.0 / (double)F;
+    for (ptrdiff_t j = 0; j < m; j++) {
+        const double in = shared ? wsum[j] * fsum[j] * inv_f : ind[j];
+        double c = count ? count[n0 + j] : 1.0;
+        c = c >= 1.0 ? c : 1.0;
+        const double corr = prnu2 * (((p0[j] * p0[j] + p1[j] * p1[j]) + p2[j] * p2[j])
+                                     + p3[j] * p3[j])
+                            + 2.0 * fix_dsnu * (sh[j] * sh[j] + ch[j] * ch[j]);
+        const double d = (corr - 2.0 * in) / c;
+        delta[n0 + j] = (d - d == 0.0) ? d : 0.0;           /* inf and NaN: 0 */
     }
 }
 
@@ -541,7 +564,7 @@ int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double 
         return RGBZ_EINVAL;
     double rsc[TOF_FP_MAX_F];
     for (ptrdiff_t f = 0; f < F; f++) rsc[f] = sqrt(sigma_scale[f]);
-    const ptrdiff_t B = 4096, nb = (N + B - 1) / B;
+    const ptrdiff_t B = TOF_FP_B, nb = (N + B - 1) / B;
     const double prnu2 = prnu * prnu;
     (void)workers;
 #ifdef _OPENMP
@@ -550,6 +573,6 @@ int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double 
     for (ptrdiff_t b = 0; b < nb; b++)
         fixed_pattern_block(phase, amp, offset, count, F, N, sigma_scale, rsc, black, var_dsnu,
                             fix_dsnu, prnu2, shared, delta, b * B,
-                            (b + 1) * B < N ? (b + 1) * B : N);
+                            (b + 1) * B < N ? B : N - b * B);
     return RGBZ_OK;
 }

@@ -93,7 +93,8 @@ int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers);
      ind = sum_f sigma_scale[f] 2 mean_g(var_dsnu + prnu^2 T_g^2) / (4 a_f^2 m) (shared 1: the
            guided chain's one variance per measurement, the mean over the frequencies).
    delta[n] = corr - ind, 0 where it is not finite. The cosines and sines come from a
-   polynomial (absolute error below 1e-15 for |phase| < 1e3), not libm. */
+   polynomial (absolute error below 1e-15 for |phase| < 1e3), not libm, branch-free and
+   vectorised (about 17 ns of CPU per measurement of 3 frequencies). */
 int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double *offset,
                            const double *count, ptrdiff_t F, ptrdiff_t N,
                            const double *sigma_scale, double black, double var_dsnu,
