@@ -277,7 +277,8 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
       (averaged) component: ``2 var(A)`` per measurement, ``var(A) = K^2 c +
       K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` (shot noise of the
       collected charge ``c``, read noise, DSNU, quantisation and PRNU of a
-      tap holding ``e`` electrons, in DN^2), through the denoise's weights;
+      tap holding ``e`` electrons, in DN^2; no shot or quantisation term for a
+      sensor without them), through the denoise's weights;
       ``sigma`` is the depth noise of the unwrapping's weighted mean, with
       the DSNU and PRNU correlated across the frequencies (one offset and
       gain per tap; a calibration's dark frame takes the DSNU off);

@@ -8,12 +8,26 @@ import numpy as np
 from .. import _kernels
 from .._validate import kernel_threads
 
-__all__ = ["tap_variance", "fixed_pattern_delta", "NOISE_MODEL"]
+__all__ = ["tap_variance", "fixed_pattern_delta", "shot_gain", "quantisation_variance",
+           "NOISE_MODEL"]
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
-#: the frequencies, 2026-11-27).
+#: the frequencies, 2026-11-27; the model's shot and quantisation terms following the
+#: sensor's switches, the same day, changed nothing for the default sensor).
 NOISE_MODEL = 2
+
+
+def shot_gain(sensor):
+    """The gain (DN per electron) of a tap's shot noise in the model, 0 for a sensor
+    without it (``shot_noise=False``)."""
+    return float(sensor.system_gain) if sensor.shot_noise else 0.0
+
+
+def quantisation_variance(sensor):
+    """The variance (DN^2) the ADC's rounding adds: 1/12, 0 for a sensor that does not
+    quantise (``quantise=False``)."""
+    return 1.0 / 12.0 if sensor.quantise else 0.0
 
 
 def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
@@ -26,7 +40,8 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     electrons it collected (the ambient suppression ``s`` drains a share of
     the common mode but not its shot noise). PRNU is a fixed gain per tap: it
     enters as a variance because it differs from tap to tap and pixel to pixel
-    (the denoise averages it like noise). DSNU and PRNU are the same in the frames of
+    (the denoise averages it like noise). A sensor without shot noise or
+    quantisation (``shot_noise=False``, ``quantise=False``) has no such term. DSNU and PRNU are the same in the frames of
     every frequency, so their share of the depth noise is not independent across
     frequencies: :func:`fixed_pattern_delta` corrects the depth's sigma for it.
 
@@ -45,10 +60,11 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
         cnt = np.ascontiguousarray(count, np.float64).reshape(-1)
         if off.ndim == 0 or cnt.size != off.shape[-1]:
             raise ValueError(f"count: expected {off.shape[-1:]} values, got {cnt.size}")
-    _kernels.tof_tap_variance(flat, float(sensor.black_level), k, 1.0 - s if s else 0.0,
+    _kernels.tof_tap_variance(flat, float(sensor.black_level), shot_gain(sensor),
+                              1.0 - s if s else 0.0,
                               k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2),
-                              float(sensor.prnu), float(scale), cnt, out.reshape(-1),
-                              kernel_threads(workers, flat.size))
+                              quantisation_variance(sensor), float(sensor.prnu), float(scale),
+                              cnt, out.reshape(-1), kernel_threads(workers, flat.size))
     return out
 
 
