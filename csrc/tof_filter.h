@@ -80,25 +80,29 @@ int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers);
    DSNU and PRNU are the same in the frames of every frequency, so the depth errors they cause
    at the F frequencies are correlated, which the per-frequency sum of the validity does not
    know. For measurement n, with c_f, s_f = cos, sin phase[f, n] (the phasor's angle in the
-   taps' own frame), a_f = amp[f, n], T_f = max(offset[f, n] - black, 0) (a NaN stays),
-   h_f = sqrt(sigma_scale[f]) / (2 a_f), m = max(count[n], 1) (count NULL: 1), and the taps
-   A0 = T + a c, A2 = T - a c, A3 = T + a s, A1 = T - a s (I = A0 - A2, Q = A3 - A1):
+   taps' own frame), a_f = amp[f, n], T_f = pre max(offset[f, n] - black, 0) (a NaN stays;
+   pre = 1 / (1 - s) for an ambient suppression s: PRNU acts on the charge the tap
+   collected, before the suppression drains its share), h_f = sqrt(sigma_scale[f]) / (2 a_f),
+   m = max(count[n], 1) (count NULL: 1; NaN stays), and the taps A0 = T + a c, A2 = T - a c,
+   A3 = T + a s, A1 = T - a s (I = A0 - A2, Q = A3 - A1):
      P0 = -sum_f s_f A0_f h_f, P2 = sum_f s_f A2_f h_f, P3 = sum_f c_f A3_f h_f,
      P1 = -sum_f c_f A1_f h_f, S = sum_f s_f h_f, K = sum_f c_f h_f,
      corr = (prnu^2 (P0^2 + P1^2 + P2^2 + P3^2) + 2 fix_dsnu (S^2 + K^2)) / m,
    the variance of the depth (the f^2-weighted mean of the per-frequency distances) that a
    tap gain 1 + prnu z_k and an offset sqrt(fix_dsnu) z'_k, both fixed across frequencies,
-   give; and ind, what the validity's sum holds of them as independent per-frequency noise:
+   give; and ind, what the validity's sum holds of them as independent per-frequency noise
+   (the tap variance's var_dsnu + prnu^2 T^2, which leaves out the taps' modulation):
      ind = sum_f sigma_scale[f] 2 (var_dsnu + prnu^2 T_f^2) / (4 a_f^2 m)   (shared 0),
      ind = sum_f sigma_scale[f] 2 mean_g(var_dsnu + prnu^2 T_g^2) / (4 a_f^2 m) (shared 1: the
            guided chain's one variance per measurement, the mean over the frequencies).
-   delta[n] = corr - ind, 0 where it is not finite. The cosines and sines come from a
-   polynomial (absolute error below 1e-15 for |phase| < 1e3), not libm, branch-free and
-   vectorised (about 17 ns of CPU per measurement of 3 frequencies). */
+   delta[n] = corr - ind, 0 where it is not finite; F <= RGBZ_TOF_MAX_FREQS. The cosines and
+   sines come from a polynomial (absolute error below 1e-13 for |phase| < 1e3, about 1e-15
+   within a few turns), not libm, branch-free and vectorised (about 17 ns of CPU per
+   measurement of 3 frequencies). */
 int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double *offset,
                            const double *count, ptrdiff_t F, ptrdiff_t N,
-                           const double *sigma_scale, double black, double var_dsnu,
-                           double fix_dsnu, double prnu, int shared, double *delta,
-                           int workers);
+                           const double *sigma_scale, double black, double pre,
+                           double var_dsnu, double fix_dsnu, double prnu, int shared,
+                           double *delta, int workers);
 
 #endif

@@ -52,9 +52,9 @@ cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_validity(const rgbz_tof_validity_args *p, int workers)
     int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double *offset,
                                const double *count, Py_ssize_t F, Py_ssize_t N,
-                               const double *sigma_scale, double black, double var_dsnu,
-                               double fix_dsnu, double prnu, int shared, double *delta,
-                               int workers)
+                               const double *sigma_scale, double black, double pre,
+                               double var_dsnu, double fix_dsnu, double prnu, int shared,
+                               double *delta, int workers)
     int rgbz_tof_phasors_offset(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                                 double *i, double *q, double *offset, int workers)
     int rgbz_tof_tap_variance(const double *offset, Py_ssize_t N, double black, double k,
@@ -691,9 +691,9 @@ def tof_validity(const double[:, ::1] amp, const double[:, ::1] var, const doubl
 
 def tof_fixed_pattern(const double[:, ::1] phase, const double[:, ::1] amp,
                       const double[:, ::1] offset, const double[::1] count,
-                      const double[::1] sigma_scale, double black, double var_dsnu,
-                      double fix_dsnu, double prnu, bint shared, double[::1] delta,
-                      int workers):
+                      const double[::1] sigma_scale, double black, double pre,
+                      double var_dsnu, double fix_dsnu, double prnu, bint shared,
+                      double[::1] delta, int workers):
     """The fixed-pattern correction of the depth variance (csrc/tof_filter.c,
     rgbz_tof_fixed_pattern): phase, amp, offset (F, N); count (N,) or None; sigma_scale (F,);
     delta (N,) receives it."""
@@ -709,8 +709,8 @@ def tof_fixed_pattern(const double[:, ::1] phase, const double[:, ::1] amp,
     cdef int status
     with nogil:
         status = rgbz_tof_fixed_pattern(&phase[0, 0], &amp[0, 0], &offset[0, 0], cp, F, n,
-                                        &sigma_scale[0], black, var_dsnu, fix_dsnu, prnu,
-                                        shared, &delta[0], workers)
+                                        &sigma_scale[0], black, pre, var_dsnu, fix_dsnu,
+                                        prnu, shared, &delta[0], workers)
     _raise_for(status)
 
 

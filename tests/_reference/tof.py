@@ -159,8 +159,9 @@ def tap_variance(offset, sensor):
         v /= 1.0 - sensor.ambient_suppression
     v += k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2)
     v += 1.0 / 12.0 if sensor.quantise else 0.0
-    if sensor.prnu:
-        held *= sensor.prnu
+    if sensor.prnu:        # PRNU of the charge collected before the suppression (2026-11-27)
+        s = sensor.ambient_suppression
+        held *= sensor.prnu * (1.0 / (1.0 - s) if s else 1.0)
         v += held * held
     return v
 
@@ -284,14 +285,14 @@ def guided_denoise(zr, zi, v, col, use, R, C, rows, cols, reach_r, reach_c, radi
 
 
 def fixed_pattern(phase, amp, offset, count, sigma_scale, black, var_dsnu, fix_dsnu, prnu,
-                  shared):
+                  shared, pre=1.0):
     """(corr, ind): the variance (m^2) of the depth that the taps' fixed pattern gives (a
     gain 1 + prnu z_k and an offset sqrt(fix_dsnu) z'_k per tap, the same at every
     frequency), through each phase's derivative with respect to each tap, and what the
     independent per-frequency sum of the validity holds of it (var_dsnu + prnu^2 T^2 per
     tap; ``shared``: the mean over the frequencies, the guided chain's one variance)."""
     ph, a = np.asarray(phase, np.float64), np.asarray(amp, np.float64)
-    t = np.maximum(np.asarray(offset, np.float64) - black, 0.0)
+    t = np.maximum(np.asarray(offset, np.float64) - black, 0.0) * pre   # charge collected
     ssc = np.asarray(sigma_scale, np.float64)[:, None]
     with np.errstate(divide="ignore", invalid="ignore"):
         z = 2.0 * a * np.exp(1j * ph)                      # I + iQ

@@ -47,7 +47,7 @@ from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
-from ._noise import fixed_pattern_delta, quantisation_variance, shot_gain
+from ._noise import fixed_pattern_delta, prnu_gain, quantisation_variance, shot_gain
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
                         radiometry_coefficients)
 
@@ -260,7 +260,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     v = np.empty(N, np.float32)
     offset = np.empty((F, N))
     _kernels.tofg_prepare(taps, shot_gain(sensor), float(sensor.black_level), supp, const_var,
-                          float(sensor.prnu), float(tof.white_level), zr, zi, v, sat, offset,
+                          prnu_gain(sensor), float(tof.white_level), zr, zi, v, sat, offset,
                           nthreads)
     if cal is not None:
         # each measurement's phasors turned by its phase offset's deviation (the ISP removes

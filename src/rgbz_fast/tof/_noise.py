@@ -9,7 +9,7 @@ from .. import _kernels
 from .._validate import kernel_threads
 
 __all__ = ["tap_variance", "fixed_pattern_delta", "shot_gain", "quantisation_variance",
-           "NOISE_MODEL"]
+           "collected_scale", "prnu_gain", "NOISE_MODEL"]
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
@@ -30,20 +30,37 @@ def quantisation_variance(sensor):
     return 1.0 / 12.0 if sensor.quantise else 0.0
 
 
+def collected_scale(sensor):
+    """The charge a tap collected over the charge it holds after the ambient suppression
+    ``s`` drained its share of the common mode: ``1 / (1 - s)`` (1 without suppression).
+    The shot noise and the PRNU act on the collected charge."""
+    s = sensor.ambient_suppression
+    return 1.0 / (1.0 - s) if s else 1.0
+
+
+def prnu_gain(sensor):
+    """The PRNU's share of a tap's held charge in the model: ``prnu / (1 - s)``, since the
+    gain multiplies the charge the tap collected before the suppression drained its
+    share."""
+    return float(sensor.prnu) * collected_scale(sensor)
+
+
 def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     """Expected variance (DN^2) of one tap from its offset and the sensor's readout.
 
     Shot noise of the collected charge, read noise and DSNU (both in
     electrons), quantisation and the tap's PRNU:
-    ``K^2 c + K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` with ``e = (offset
+    ``K^2 c + K^2 (read^2 + dsnu^2) + 1/12 + (prnu K c)^2`` with ``e = (offset
     - black) / K`` the electrons the tap holds and ``c = e / (1 - s)`` the
     electrons it collected (the ambient suppression ``s`` drains a share of
-    the common mode but not its shot noise). PRNU is a fixed gain per tap: it
-    enters as a variance because it differs from tap to tap and pixel to pixel
-    (the denoise averages it like noise). A sensor without shot noise or
-    quantisation (``shot_noise=False``, ``quantise=False``) has no such term. DSNU and PRNU are the same in the frames of
-    every frequency, so their share of the depth noise is not independent across
-    frequencies: :func:`fixed_pattern_delta` corrects the depth's sigma for it.
+    the common mode but not its shot noise, nor the PRNU of the charge before
+    it). PRNU is a fixed gain per tap: it enters as a variance because it
+    differs from tap to tap and pixel to pixel (the denoise averages it like
+    noise). A sensor without shot noise or quantisation (``shot_noise=False``,
+    ``quantise=False``) has no such term. DSNU and PRNU are the same in the
+    frames of every frequency, so their share of the depth noise is not
+    independent across frequencies: :func:`fixed_pattern_delta` corrects the
+    depth's sigma for it.
 
     The NumPy operations of this formula run as one C pass (csrc/tof_filter.c,
     ``rgbz_tof_tap_variance``; tests/_reference/tof.py holds it to them bit for bit),
@@ -63,7 +80,7 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     _kernels.tof_tap_variance(flat, float(sensor.black_level), shot_gain(sensor),
                               1.0 - s if s else 0.0,
                               k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2),
-                              quantisation_variance(sensor), float(sensor.prnu), float(scale),
+                              quantisation_variance(sensor), prnu_gain(sensor), float(scale),
                               cnt, out.reshape(-1), kernel_threads(workers, flat.size))
     return out
 
@@ -80,10 +97,15 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
     temporal noise); this returns ``corr - ind``: ``corr`` the variance the fixed
     pattern gives the f^2-weighted mean of the per-frequency distances, computed through
     each tap (``A0, A2 = T +- a cos(phase)``, ``A3, A1 = T +- a sin(phase)``, ``T`` the
-    offset above black, ``a`` the amplitude), ``ind`` what the sum holds of it, both over
-    ``max(count, 1)``. On flat walls at 0.3-4 m the predicted sigma then matches the
-    spread of the depths of a sensor whose only noise is DSNU and PRNU within 5 %, where
-    the independent sum was 0.5-2x off (docs/reports/isp.md, "Depth noise on flat walls").
+    offset above black, as collected before an ambient suppression, ``a`` the amplitude),
+    ``ind`` what the sum holds of it (per tap ``prnu^2 T^2``, without the taps'
+    modulation: so even one frequency gets a small correction), both over
+    ``max(count, 1)``. On flat walls at 0.3-4 m of a sensor whose only noise is DSNU and
+    PRNU, the predicted sigma of single measurements, and of the box mean, then matches
+    the spread of the depths within 1-16 % in variance, where the independent sum was
+    0.27-3.6x off (docs/reports/isp.md, "Depth noise on flat walls"); the bilateral and
+    guided means keep more of such a sensor's noise than their n_eff says (their range
+    kernels take the frequencies' errors as independent).
 
     ``phase`` (F, n) is the angle of each phasor in the taps' own frame (before any
     calibration turned it); ``amp`` the amplitude ``|I + iQ| / 2``, ``offset`` the mean
@@ -97,12 +119,14 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
     k = float(sensor.system_gain)
     var_dsnu = k * k * float(sensor.dsnu) ** 2
     ph = np.ascontiguousarray(phase, np.float64)
+    if ph.ndim != 2 or not 1 <= ph.shape[0] <= 16:
+        raise ValueError(f"phase: expected (F, n) with 1 <= F <= 16, got shape {ph.shape}")
     out = np.empty(ph.shape[1])
     cnt = None if count is None else np.ascontiguousarray(count, np.float64)
     _kernels.tof_fixed_pattern(ph, np.ascontiguousarray(amp, np.float64),
                                np.ascontiguousarray(offset, np.float64), cnt,
                                np.ascontiguousarray(sigma_scale, np.float64),
-                               float(sensor.black_level), var_dsnu,
+                               float(sensor.black_level), collected_scale(sensor), var_dsnu,
                                0.0 if dark_subtracted else var_dsnu, float(sensor.prnu),
                                bool(shared), out, kernel_threads(workers, out.size))
     return out
