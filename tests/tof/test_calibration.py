@@ -135,6 +135,25 @@ def test_dark_frames_remove_the_tap_offsets():
     assert np.std(res["dark"].depth - 1.7) < 0.5 * np.std(res["kept"].depth - 1.7)
 
 
+def test_dark_offsets_know_their_own_noise():
+    """The dark offsets are a mean of noisy frames: their error is a fixed offset per tap,
+    the same at every frequency, which the ISP's sigma takes in place of the DSNU they
+    remove (meta["dark_noise_dn2"]); two dark sets of other seeds differ by twice it."""
+    from rgbz_fast.tof._calibration import _dark_offsets
+
+    sensor = ToFSensor()
+    capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
+    first = _wall(1.0, sensor, (48, 64), seed=0)
+    sets = [_dark_offsets([_wall(1.0, capped, (48, 64), seed=10 * j + k) for k in range(4)],
+                          first) for j in range(2)]
+    (d1, v1), (d2, v2) = sets
+    assert v1 == pytest.approx(v2, rel=0.05)
+    assert np.var(d1 - d2) / 2 == pytest.approx(v1, rel=0.15)
+    # the DSNU (5 e-) the offsets hold, beside their own error
+    k = sensor.system_gain
+    assert np.var(d1) == pytest.approx((5.0 * k) ** 2 + v1, rel=0.2)
+
+
 def test_save_load_and_check(tmp_path):
     sensor = ToFSensor(delay_ps=20.0)
     ds = np.linspace(0.6, 2.6, 20)

@@ -291,7 +291,7 @@ def test_validity_kernel_equals_reference(pattern):
     from rgbz_fast.tof._noise import fixed_pattern_delta
     from rgbz_fast.tof._validity import radiometry_coefficients
     fp = (rng.uniform(0, 2 * np.pi, (f.size, n)), rng.uniform(60, 1500, (f.size, n)),
-          rng.uniform(1, 30, n), False)
+          rng.uniform(1, 30, n), None)
     delta = fixed_pattern_delta(fp[0], amp, fp[1], fp[2], sensor,
                                 radiometry_coefficients(sensor, f)[0])
     for change in ({}, dict(max_sigma=None), dict(min_amplitude=20.0, flying_step=None),

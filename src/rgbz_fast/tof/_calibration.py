@@ -46,7 +46,7 @@ from __future__ import annotations
 
 import json
 import numbers
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -86,7 +86,10 @@ class ToFCalibration:
         Dark offset of each tap above the black level (DN), or None.
     meta : dict
         ``frames``, ``orders``, ``fit_rms_rad`` (the weighted RMS of the fit's
-        residual phase, per frequency) and ``fit_rms_m`` (the same in metres).
+        residual phase, per frequency) and ``fit_rms_m`` (the same in metres); with
+        ``dark``, ``dark_noise_dn2``: the variance (DN^2) of the dark offsets' own
+        error (the dark frames' temporal noise over their count and frequencies), a
+        fixed offset per tap that the ISP's ``sigma`` takes in place of the DSNU.
 
     Examples
     --------
@@ -341,6 +344,7 @@ def _dark_offsets(dark, first):
     if not frames:
         raise ValueError("dark: no frames")
     acc = np.zeros((4, first.n_sites))
+    noise = 0.0
     for k, t in enumerate(frames):
         t = as_taps(t, "dark")
         if t.taps.shape[1:] != first.taps.shape[1:] or t.block != first.block:
@@ -349,7 +353,14 @@ def _dark_offsets(dark, first):
         taps = np.asarray(t.taps, np.float64)
         _check_unlit(taps, t.sensor, k)
         acc += taps.mean(axis=0) - t.sensor.black_level
-    return acc / len(frames)
+        # the temporal noise of a dark tap (the model without its fixed pattern), averaged
+        # over the frame's frequencies
+        temporal = replace(t.sensor, dsnu=0.0, prnu=0.0)
+        noise += float(np.mean(tap_variance(taps.mean(axis=1), temporal))) / taps.shape[0]
+    n = len(frames)
+    # the offsets' own error: a fixed offset per tap, the same at every frequency, of this
+    # variance (DN^2); the ISP's sigma takes it in place of the DSNU the offsets remove
+    return acc / n, noise / (n * n)
 
 
 #: the largest ratio of a dark frame's phasor power to what its noise alone gives (about 1
@@ -480,7 +491,7 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
         raise ValueError(f"distances: {positions} distinct wall positions cannot fit {orders} "
                          f"harmonics (2 * orders + 1 = {2 * orders + 1} phases are needed); "
                          "add positions or lower orders")
-    dark_off = _dark_offsets(dark, first) if dark is not None else None
+    dark_off, dark_var = _dark_offsets(dark, first) if dark is not None else (None, None)
 
     f = first.frequencies.reshape(-1, 1)
     F = f.shape[0]
@@ -539,6 +550,8 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
     rms = np.sqrt((weight * resid ** 2).sum(axis=(0, 2)) / weight.sum(axis=(0, 2)))
     meta = {"frames": len(frames), "orders": orders, "fit_rms_rad": rms.tolist(),
             "fit_rms_m": (rms * SPEED_OF_LIGHT / (4 * np.pi * f[:, 0])).tolist()}
+    if dark_var is not None:
+        meta["dark_noise_dn2"] = dark_var
     return ToFCalibration(first.frequencies.copy(), offsets, coef, first.sites, first.block,
                           first.shape, dark_off, meta)
 

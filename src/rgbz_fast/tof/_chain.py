@@ -36,7 +36,7 @@ from .._validate import check_choice, check_number, check_workers, merge_params
 from ._calibration import ToFCalibration, as_taps
 from ._filters import _check_odd, check_scale, denoise_phasors_bilateral
 from ._guided import _layout_of, check_guide, guided_flying_of, guided_run
-from ._noise import tap_variance
+from ._noise import dark_noise, tap_variance
 from ._result import ToFDepth
 from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
                       denoise_phasors, unwrap)
@@ -281,7 +281,8 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
       sensor without them), through the denoise's weights;
       ``sigma`` is the depth noise of the unwrapping's weighted mean, with
       the DSNU and PRNU correlated across the frequencies (one offset and
-      gain per tap; a calibration's dark frame takes the DSNU off);
+      gain per tap; a calibration's dark frame takes the DSNU off and leaves
+      its own error, ``meta["dark_noise_dn2"]``);
     * inconsistent when the unwrapping residual exceeds ``max_residual``:
       the frequencies disagree (a wrong unwrap, a mixed return);
     * flying when the depth jumps by more than ``max(flying_step, 2 sigma)``
@@ -359,7 +360,7 @@ def _run(tof, p, nthreads, guide=None):
     def site_grid():                # kept for a ToFTaps' own (read-only) sites: _layout_of
         return _layout_of(tof.sites, tof.block, tof.shape).grid
 
-    dark = calibration is not None and calibration.dark is not None
+    dark = dark_noise(calibration)      # the fixed offset a dark frame leaves, or None
     if denoise == "none" and calibration is None:
         depth, residual, wraps, phase, amp, offset = demodulate_unwrap(
             taps, f, max_range=max_range, workers=nthreads)

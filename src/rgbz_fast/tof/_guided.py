@@ -47,7 +47,7 @@ from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
-from ._noise import fixed_pattern_delta, prnu_gain, quantisation_variance, shot_gain
+from ._noise import dark_noise, fixed_pattern_delta, prnu_gain, quantisation_variance, shot_gain
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
                         radiometry_coefficients)
 
@@ -306,7 +306,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     fp_phase = phase if cal is None else \
         np.arctan2(mi, mr) + layout.to_grid(cal.deviations, 0.0)
     delta = fixed_pattern_delta(fp_phase, amp, offset, count, sensor, sigma_scale, shared=True,
-                                dark_subtracted=cal is not None and cal.dark is not None,
+                                dark_noise=dark_noise(cal),
                                 workers=nthreads)
     _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, p.min_snr,
                            p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,

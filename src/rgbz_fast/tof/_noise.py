@@ -3,13 +3,15 @@ for its sensor): shared by the depth chain and the calibration."""
 
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
 
 from .. import _kernels
 from .._validate import kernel_threads
 
 __all__ = ["tap_variance", "fixed_pattern_delta", "shot_gain", "quantisation_variance",
-           "collected_scale", "prnu_gain", "NOISE_MODEL"]
+           "collected_scale", "prnu_gain", "dark_noise", "NOISE_MODEL"]
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
@@ -85,8 +87,18 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     return out
 
 
+def dark_noise(calibration):
+    """The variance (DN^2) of the fixed offset per tap that a calibration's dark frame
+    leaves (its own error), or None without a calibration or a dark frame."""
+    if calibration is None or calibration.dark is None:
+        return None
+    v = calibration.meta.get("dark_noise_dn2", 0.0)
+    ok = isinstance(v, numbers.Real) and not isinstance(v, bool) and np.isfinite(v) and v >= 0
+    return float(v) if ok else 0.0          # a file of before 2026-11-27 does not hold it
+
+
 def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, shared=False,
-                        dark_subtracted=False, workers=1):
+                        dark_noise=None, workers=1):
     """The correction of the depth variance (m^2) for the fixed-pattern noise's correlation
     across frequencies, one value per measurement.
 
@@ -112,8 +124,10 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
     tap (DN), ``count`` (n,) the measurements averaged (None: 1), ``sigma_scale`` (F,) the
     weights of :func:`~rgbz_fast.tof._validity.radiometry_coefficients`. ``shared``: the
     variance is one per measurement, the mean over the frequencies (the guided chain's).
-    ``dark_subtracted``: a calibration's dark frame took the DSNU off the taps, which the
-    variance still holds. One C pass (csrc/tof_filter.c, ``rgbz_tof_fixed_pattern``);
+    ``dark_noise``: a calibration's dark frame took the DSNU off the taps (which the
+    variance still holds), leaving its own error, a fixed offset per tap of this variance
+    (DN^2; ``ToFCalibration.meta["dark_noise_dn2"]``, 0 when a file does not hold it);
+    None: no dark frame. One C pass (csrc/tof_filter.c, ``rgbz_tof_fixed_pattern``);
     tests/_reference/tof.py holds its NumPy reference.
     """
     k = float(sensor.system_gain)
@@ -127,6 +141,7 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
                                np.ascontiguousarray(offset, np.float64), cnt,
                                np.ascontiguousarray(sigma_scale, np.float64),
                                float(sensor.black_level), collected_scale(sensor), var_dsnu,
-                               0.0 if dark_subtracted else var_dsnu, float(sensor.prnu),
+                               var_dsnu if dark_noise is None else float(dark_noise),
+                               float(sensor.prnu),
                                bool(shared), out, kernel_threads(workers, out.size))
     return out
