@@ -275,9 +275,10 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
       ``min_amplitude`` at some frequency, or ``sigma > max_sigma``.
       ``snr = |I + iQ| / sigma_I`` with ``sigma_I^2`` the variance of the
       (averaged) component: ``2 var(A)`` per measurement, ``var(A) = K^2 c +
-      K^2 (read^2 + dsnu^2) + 1/12 + (prnu K e)^2`` (shot noise of the
-      collected charge ``c``, read noise, DSNU, quantisation and PRNU of a
-      tap holding ``e`` electrons, in DN^2; no shot or quantisation term for a
+      K^2 (read^2 + dsnu^2) + 1/12 + (prnu K c)^2`` (shot noise and PRNU of
+      the charge ``c`` the tap collected, ``e / (1 - s)`` of the ``e`` it holds
+      after an ambient suppression ``s``; read noise, DSNU, quantisation; in
+      DN^2; no shot or quantisation term for a
       sensor without them), through the denoise's weights;
       ``sigma`` is the depth noise of the unwrapping's weighted mean, with
       the DSNU and PRNU correlated across the frequencies (one offset and
