@@ -154,11 +154,11 @@ def tap_variance(offset, sensor):
     k = sensor.system_gain
     held = np.subtract(offset, sensor.black_level, dtype=np.float64)
     np.maximum(held, 0.0, out=held)
-    v = held * (k if sensor.shot_noise else 0.0)        # no shot noise: no term (2026-11-27)
+    v = held * k
     if sensor.ambient_suppression:
         v /= 1.0 - sensor.ambient_suppression
     v += k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2)
-    v += 1.0 / 12.0 if sensor.quantise else 0.0
+    v += 1.0 / 12.0                          # a floor, also without quantisation
     if sensor.prnu:        # PRNU of the charge collected before the suppression (2026-11-27)
         s = sensor.ambient_suppression
         held *= sensor.prnu * (1.0 / (1.0 - s) if s else 1.0)

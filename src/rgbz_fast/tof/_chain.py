@@ -36,7 +36,7 @@ from .._validate import check_choice, check_number, check_workers, merge_params
 from ._calibration import ToFCalibration, as_taps
 from ._filters import _check_odd, check_scale, denoise_phasors_bilateral
 from ._guided import _layout_of, check_guide, guided_flying_of, guided_run
-from ._noise import dark_noise, tap_variance
+from ._noise import dark_noise, delay_fpn_variance, tap_variance
 from ._result import ToFDepth
 from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
                       denoise_phasors, unwrap)
@@ -278,12 +278,12 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
       K^2 (read^2 + dsnu^2) + 1/12 + (prnu K c)^2`` (shot noise and PRNU of
       the charge ``c`` the tap collected, ``e / (1 - s)`` of the ``e`` it holds
       after an ambient suppression ``s``; read noise, DSNU, quantisation; in
-      DN^2; no shot or quantisation term for a
-      sensor without them), through the denoise's weights;
+      DN^2), through the denoise's weights;
       ``sigma`` is the depth noise of the unwrapping's weighted mean, with
       the DSNU and PRNU correlated across the frequencies (one offset and
       gain per tap; a calibration's dark frame takes the DSNU off and leaves
-      its own error, ``meta["dark_noise_dn2"]``);
+      its own error, ``meta["dark_noise_dn2"]``), and without a calibration
+      the per-pixel delay pattern (``(c delay_fpn / 2)^2``);
     * inconsistent when the unwrapping residual exceeds ``max_residual``:
       the frequencies disagree (a wrong unwrap, a mixed return);
     * flying when the depth jumps by more than ``max(flying_step, 2 sigma)``
@@ -367,7 +367,7 @@ def _run(tof, p, nthreads, guide=None):
             taps, f, max_range=max_range, workers=nthreads)
         count = np.ones(n)
         var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
-        fixed_pattern = (phase, offset, None, dark)
+        fixed_pattern = (phase, offset, None, dark, delay_fpn_variance(sensor, None))
     else:
         # one pass over the taps in NumPy (I, Q and the offset exactly as the C kernel
         # computes them), the calibration's offsets, the mean over the window, then one C
@@ -401,7 +401,8 @@ def _run(tof, p, nthreads, guide=None):
         # calibration turned them by its deviations
         fp_phase = phase if calibration is None else \
             np.arctan2(q, i) + calibration.deviations
-        fixed_pattern = (fp_phase, fp_offset, count, dark)
+        fixed_pattern = (fp_phase, fp_offset, count, dark,
+                         delay_fpn_variance(sensor, calibration))
     snr, sigma, reflectance, flags = validity(
         depth, residual, amp, var, saturated, sensor, tof.block, f,
         grid if grid is not None else site_grid,

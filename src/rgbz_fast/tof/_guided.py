@@ -47,7 +47,8 @@ from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
-from ._noise import dark_noise, fixed_pattern_delta, prnu_gain, quantisation_variance, shot_gain
+from ._noise import (dark_noise, delay_fpn_variance, fixed_pattern_delta, prnu_gain,
+                     quantisation_variance, shot_gain)
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
                         radiometry_coefficients)
 
@@ -307,7 +308,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
         np.arctan2(mi, mr) + layout.to_grid(cal.deviations, 0.0)
     delta = fixed_pattern_delta(fp_phase, amp, offset, count, sensor, sigma_scale, shared=True,
                                 dark_noise=dark_noise(cal),
-                                workers=nthreads)
+                                delay_var=delay_fpn_variance(sensor, cal), workers=nthreads)
     _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, p.min_snr,
                            p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
                            p.max_residual, p.min_reflectance, max_range, snr, sigma, refl,

@@ -8,10 +8,11 @@ import numbers
 import numpy as np
 
 from .. import _kernels
+from .._sensors import SPEED_OF_LIGHT
 from .._validate import kernel_threads
 
 __all__ = ["tap_variance", "fixed_pattern_delta", "shot_gain", "quantisation_variance",
-           "collected_scale", "prnu_gain", "dark_noise", "NOISE_MODEL"]
+           "collected_scale", "prnu_gain", "dark_noise", "delay_fpn_variance", "NOISE_MODEL"]
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
@@ -21,15 +22,20 @@ NOISE_MODEL = 2
 
 
 def shot_gain(sensor):
-    """The gain (DN per electron) of a tap's shot noise in the model, 0 for a sensor
-    without it (``shot_noise=False``)."""
-    return float(sensor.system_gain) if sensor.shot_noise else 0.0
+    """The gain (DN per electron) of a tap's shot noise in the model: the sensor's system
+    gain, also for a sensor made with ``shot_noise=False``. Dropping the term there (tried
+    on 2026-11-27) left a noise-free sensor's range kernels so narrow that a fixed pattern
+    the model does not hold (a per-pixel delay pattern) read as edges: the guided depth
+    kept 16 mm errors where the wide kernel had averaged them to 1 mm."""
+    return float(sensor.system_gain)
 
 
 def quantisation_variance(sensor):
-    """The variance (DN^2) the ADC's rounding adds: 1/12, 0 for a sensor that does not
-    quantise (``quantise=False``)."""
-    return 1.0 / 12.0 if sensor.quantise else 0.0
+    """The variance (DN^2) the ADC's rounding adds: 1/12, also for a sensor that does not
+    quantise (``quantise=False``): a floor that keeps the model's variance positive on a
+    noise-free sensor (0 had stopped the bilateral denoise, left the guided one's range
+    kernel without width and the calibration's weights infinite)."""
+    return 1.0 / 12.0
 
 
 def collected_scale(sensor):
@@ -58,8 +64,9 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     the common mode but not its shot noise, nor the PRNU of the charge before
     it). PRNU is a fixed gain per tap: it enters as a variance because it
     differs from tap to tap and pixel to pixel (the denoise averages it like
-    noise). A sensor without shot noise or quantisation (``shot_noise=False``,
-    ``quantise=False``) has no such term. DSNU and PRNU are the same in the
+    noise). The model keeps the shot noise and the 1/12 of the ADC for a sensor made
+    without them (``shot_noise=False``, ``quantise=False``): conservative there, and a
+    floor for noise-free sensors. DSNU and PRNU are the same in the
     frames of every frequency, so their share of the depth noise is not
     independent across frequencies: :func:`fixed_pattern_delta` corrects the
     depth's sigma for it.
@@ -97,8 +104,18 @@ def dark_noise(calibration):
     return float(v) if ok else 0.0          # a file of before 2026-11-27 does not hold it
 
 
+def delay_fpn_variance(sensor, calibration):
+    """The depth variance (m^2) of the sensor's per-pixel delay pattern (``delay_fpn_ps``):
+    a delay ``tau`` turns every frequency's phase by ``2 pi f tau``, a depth error of
+    ``c tau / 2`` at each, so fully correlated; 0 with a calibration, whose per-measurement
+    offsets take it off."""
+    if calibration is not None or not sensor.delay_fpn_ps:
+        return 0.0
+    return (SPEED_OF_LIGHT * float(sensor.delay_fpn_ps) * 1e-12 / 2.0) ** 2
+
+
 def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, shared=False,
-                        dark_noise=None, workers=1):
+                        dark_noise=None, delay_var=0.0, workers=1):
     """The correction of the depth variance (m^2) for the fixed-pattern noise's correlation
     across frequencies, one value per measurement.
 
@@ -127,7 +144,8 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
     ``dark_noise``: a calibration's dark frame took the DSNU off the taps (which the
     variance still holds), leaving its own error, a fixed offset per tap of this variance
     (DN^2; ``ToFCalibration.meta["dark_noise_dn2"]``, 0 when a file does not hold it);
-    None: no dark frame. One C pass (csrc/tof_filter.c, ``rgbz_tof_fixed_pattern``);
+    None: no dark frame. ``delay_var``: :func:`delay_fpn_variance`, added over
+    ``max(count, 1)``. One C pass (csrc/tof_filter.c, ``rgbz_tof_fixed_pattern``);
     tests/_reference/tof.py holds its NumPy reference.
     """
     k = float(sensor.system_gain)
@@ -144,4 +162,7 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
                                var_dsnu if dark_noise is None else float(dark_noise),
                                float(sensor.prnu),
                                bool(shared), out, kernel_threads(workers, out.size))
+    if delay_var:
+        m = np.ones(out.size) if cnt is None else np.maximum(cnt, 1.0)
+        out += delay_var / m
     return out

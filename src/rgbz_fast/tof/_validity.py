@@ -116,7 +116,7 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
     * sigma: the depth noise of the f^2-weighted mean of the per-frequency distances,
       ``sigma^2 = sum_f (w_f c / (4 pi f))^2 var_f / |I + iQ|_f^2 / (sum w)^2``, the phase
       variance ``var / |I + iQ|^2`` capped at ``pi^2 / 3``, that of a phase that is all noise
-      (uniform on the circle); ``fixed_pattern`` (phase, offset, count, dark_noise), when
+      (uniform on the circle); ``fixed_pattern`` (phase, offset, count, dark_noise, delay_var), when
       given, adds :func:`~rgbz_fast.tof._noise.fixed_pattern_delta` to ``sigma^2`` where no
       phase variance reached the cap (the DSNU and PRNU of the taps, correlated across
       frequencies);
@@ -139,9 +139,9 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
     nthreads = check_workers(workers)
     delta = None
     if fixed_pattern is not None:
-        fp_phase, fp_offset, fp_count, dark = fixed_pattern
+        fp_phase, fp_offset, fp_count, dark, delay_var = fixed_pattern
         delta = fixed_pattern_delta(fp_phase, amp, fp_offset, fp_count, sensor, scale,
-                                    dark_noise=dark, workers=nthreads)
+                                    dark_noise=dark, delay_var=delay_var, workers=nthreads)
     _kernels.tof_validity(
         np.ascontiguousarray(amp, np.float64), np.ascontiguousarray(var, np.float64),
         np.ascontiguousarray(depth, np.float64), np.ascontiguousarray(residual, np.float64),
