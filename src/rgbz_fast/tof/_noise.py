@@ -16,8 +16,8 @@ __all__ = ["tap_variance", "fixed_pattern_delta", "shot_gain", "quantisation_var
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
-#: the frequencies, 2026-11-27; the model's shot and quantisation terms following the
-#: sensor's switches, the same day, changed nothing for the default sensor).
+#: the frequencies, 2026-11-27; the PRNU of the collected charge and the delay pattern, the
+#: same day, change nothing for the default sensor).
 NOISE_MODEL = 2
 
 
