@@ -357,12 +357,13 @@ int rgbz_tof_phasors_offset(int in_type, const void *taps, ptrdiff_t F, ptrdiff_
 }
 
 int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, double k,
-                          double supp, double readout, double quant, double prnu,
-                          double scale, const double *count, ptrdiff_t count_period,
-                          double *out, int workers)
+                          double supp, double readout, double prnu, double scale,
+                          const double *count, ptrdiff_t count_period, double *out,
+                          int workers)
 {
     if (!offset || !out || N < 0 || (count && count_period < 1)) return RGBZ_EINVAL;
     const int nt = workers > 0 ? workers : 1;
+    const double twelfth = 1.0 / 12.0;
     (void)nt;
     TOF_PARALLEL_FOR
     for (ptrdiff_t n = 0; n < N; n++) {
@@ -371,7 +372,7 @@ int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, doubl
         double v = h * k;
         if (supp != 0.0) v /= supp;
         v += readout;
-        v += quant;
+        v += twelfth;
         if (prnu != 0.0) {
             h *= prnu;
             v += h * h;

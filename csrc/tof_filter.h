@@ -41,12 +41,12 @@ int rgbz_tof_phasors_offset(int in_type, const void *taps, ptrdiff_t F, ptrdiff_
 /* The variance the ToF ISP gives a phasor component (rgbz_fast.tof._noise.tap_variance,
    its NumPy operations in their order): for x = offset[n] (n < N),
        h = max(x - black, 0) (NaN stays NaN),  v = h k,  v /= supp (supp != 0),
-       v += readout,  v += quant,  v += (h prnu)^2 (prnu != 0),
+       v += readout,  v += 1/12,  v += (h prnu)^2 (prnu != 0),
        out[n] = (scale v) / max(count[n], 1) (count NULL: scale v). */
 int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, double k,
-                          double supp, double readout, double quant, double prnu,
-                          double scale, const double *count, ptrdiff_t count_period,
-                          double *out, int workers);
+                          double supp, double readout, double prnu, double scale,
+                          const double *count, ptrdiff_t count_period, double *out,
+                          int workers);
 
 /* The unguided ToF ISP's validity (rgbz_fast.tof._validity.validity): for every measurement
    n, from amp and var (F, N) (the per-frequency amplitude and component variance), depth,

@@ -252,8 +252,8 @@ def tof_box(planes: list[np.ndarray], outs: list[np.ndarray], row_px: np.ndarray
 def tof_phasors_offset(taps: np.ndarray, i: np.ndarray, q: np.ndarray, offset: np.ndarray,
                        workers: int) -> None: ...
 def tof_tap_variance(offset: np.ndarray, black: float, k: float, supp: float, readout: float,
-                     quant: float, prnu: float, scale: float, count: np.ndarray | None,
-                     out: np.ndarray, workers: int) -> None: ...
+                     prnu: float, scale: float, count: np.ndarray | None, out: np.ndarray,
+                     workers: int) -> None: ...
 def tof_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
                  saturated: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
                  phase_var_cap: float, power: float, tan_h: float, tan_v: float,

@@ -58,9 +58,9 @@ cdef extern from "tof_filter.h" nogil:
     int rgbz_tof_phasors_offset(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                                 double *i, double *q, double *offset, int workers)
     int rgbz_tof_tap_variance(const double *offset, Py_ssize_t N, double black, double k,
-                              double supp, double readout, double quant, double prnu,
-                              double scale, const double *count, Py_ssize_t count_period,
-                              double *out, int workers)
+                              double supp, double readout, double prnu, double scale,
+                              const double *count, Py_ssize_t count_period, double *out,
+                              int workers)
     int rgbz_tof_box(const double *const *inp, double *const *out, Py_ssize_t P, Py_ssize_t R,
                      Py_ssize_t C, const int64_t *row_px, const int64_t *col_px,
                      const int64_t *row_offs, Py_ssize_t n_row_offs, const int64_t *col_offs,
@@ -561,11 +561,10 @@ def tof_phasors_offset(const frame_t[:, :, ::1] taps, double[:, ::1] i, double[:
 
 
 def tof_tap_variance(const double[::1] offset, double black, double k, double supp,
-                     double readout, double quant, double prnu, double scale, count,
-                     double[::1] out, int workers):
+                     double readout, double prnu, double scale, count, double[::1] out,
+                     int workers):
     """The ISP's variance of a phasor component from the offsets (flattened), times scale,
-    over max(count, 1) (count None, or (P,) repeated along the offsets) (csrc/tof_filter.c);
-    k: the gain of the shot noise (0: none), quant: the quantisation's variance."""
+    over max(count, 1) (count None, or (P,) repeated along the offsets) (csrc/tof_filter.c)."""
     cdef const double[::1] c
     cdef const double *cp = NULL
     cdef Py_ssize_t period = 1
@@ -582,7 +581,7 @@ def tof_tap_variance(const double[::1] offset, double black, double k, double su
         return
     with nogil:
         status = rgbz_tof_tap_variance(&offset[0], offset.shape[0], black, k, supp, readout,
-                                       quant, prnu, scale, cp, period, &out[0], workers)
+                                       prnu, scale, cp, period, &out[0], workers)
     _raise_for(status)
 
 

@@ -220,7 +220,7 @@ class ColourISP:
             black_level = recorded.get("black_level") or 0.0
         # a frame that saturates below full scale renders its saturation white, and grey
         # world leaves its saturated pixels out (they had been counted, tinting the gains)
-        black, white = _black_white(black_level, recorded.get("white_level") or (1 << bd) - 1)
+        black, white = _black_white(black_level, _white_of(recorded.get("white_level"), bd))
         return data, pat, bd, black, white, recorded
 
     def _recorded(self, recorded, gains, matrix):

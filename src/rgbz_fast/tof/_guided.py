@@ -47,8 +47,8 @@ from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
-from ._noise import (dark_noise, delay_fpn_variance, fixed_pattern_delta, prnu_gain,
-                     quantisation_variance, shot_gain)
+from ._noise import (collected_scale, dark_noise, delay_fpn_variance, fixed_pattern_delta,
+                     prnu_gain)
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
                         radiometry_coefficients)
 
@@ -254,13 +254,12 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     taps = np.ascontiguousarray(taps)
     sensor = tof.sensor
     k = sensor.system_gain
-    supp = 1.0 / (1.0 - sensor.ambient_suppression) if sensor.ambient_suppression else 1.0
-    const_var = k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + \
-        quantisation_variance(sensor)
+    supp = collected_scale(sensor)
+    const_var = k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + 1.0 / 12.0
     zr, zi = np.empty((F, N), np.float32), np.empty((F, N), np.float32)
     v = np.empty(N, np.float32)
     offset = np.empty((F, N))
-    _kernels.tofg_prepare(taps, shot_gain(sensor), float(sensor.black_level), supp, const_var,
+    _kernels.tofg_prepare(taps, k, float(sensor.black_level), supp, const_var,
                           prnu_gain(sensor), float(tof.white_level), zr, zi, v, sat, offset,
                           nthreads)
     if cal is not None:

@@ -11,31 +11,14 @@ from .. import _kernels
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import kernel_threads
 
-__all__ = ["tap_variance", "fixed_pattern_delta", "shot_gain", "quantisation_variance",
-           "collected_scale", "prnu_gain", "dark_noise", "delay_fpn_variance", "NOISE_MODEL"]
+__all__ = ["tap_variance", "fixed_pattern_delta", "collected_scale", "prnu_gain", "dark_noise",
+           "delay_fpn_variance", "NOISE_MODEL"]
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
 #: the frequencies, 2026-11-27; the PRNU of the collected charge and the delay pattern, the
 #: same day, change nothing for the default sensor).
 NOISE_MODEL = 2
-
-
-def shot_gain(sensor):
-    """The gain (DN per electron) of a tap's shot noise in the model: the sensor's system
-    gain, also for a sensor made with ``shot_noise=False``. Dropping the term there (tried
-    on 2026-11-27) left a noise-free sensor's range kernels so narrow that a fixed pattern
-    the model does not hold (a per-pixel delay pattern) read as edges: the guided depth
-    kept 16 mm errors where the wide kernel had averaged them to 1 mm."""
-    return float(sensor.system_gain)
-
-
-def quantisation_variance(sensor):
-    """The variance (DN^2) the ADC's rounding adds: 1/12, also for a sensor that does not
-    quantise (``quantise=False``): a floor that keeps the model's variance positive on a
-    noise-free sensor (0 had stopped the bilateral denoise, left the guided one's range
-    kernel without width and the calibration's weights infinite)."""
-    return 1.0 / 12.0
 
 
 def collected_scale(sensor):
@@ -66,7 +49,9 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
     differs from tap to tap and pixel to pixel (the denoise averages it like
     noise). The model keeps the shot noise and the 1/12 of the ADC for a sensor made
     without them (``shot_noise=False``, ``quantise=False``): conservative there, and a
-    floor for noise-free sensors. DSNU and PRNU are the same in the
+    floor for noise-free sensors (a model without them, tried on 2026-11-27, stopped the
+    bilateral denoise and the calibration on a noise-free sensor and left the guided range
+    kernel narrow enough to take an unmodelled delay pattern for edges). DSNU and PRNU are the same in the
     frames of every frequency, so their share of the depth noise is not
     independent across frequencies: :func:`fixed_pattern_delta` corrects the
     depth's sigma for it.
@@ -86,11 +71,10 @@ def tap_variance(offset, sensor, *, scale=1.0, count=None, workers=1):
         cnt = np.ascontiguousarray(count, np.float64).reshape(-1)
         if off.ndim == 0 or cnt.size != off.shape[-1]:
             raise ValueError(f"count: expected {off.shape[-1:]} values, got {cnt.size}")
-    _kernels.tof_tap_variance(flat, float(sensor.black_level), shot_gain(sensor),
-                              1.0 - s if s else 0.0,
+    _kernels.tof_tap_variance(flat, float(sensor.black_level), k, 1.0 - s if s else 0.0,
                               k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2),
-                              quantisation_variance(sensor), prnu_gain(sensor), float(scale),
-                              cnt, out.reshape(-1), kernel_threads(workers, flat.size))
+                              prnu_gain(sensor), float(scale), cnt, out.reshape(-1),
+                              kernel_threads(workers, flat.size))
     return out
 
 
