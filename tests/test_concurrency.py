@@ -65,7 +65,8 @@ def test_reconstruct_from_many_threads_equals_serial(pname, method):
                                                         np.float64)}
     data[np.uint8] = (data[np.uint16] >> 3).astype(np.uint8)
     calls = [(dt, pr, dom) for dt in data for pr in ("float32", "float64")
-             for dom in ("intensity", "colour_difference")]
+             for dom in ("intensity", "colour_difference")
+             if dom == "intensity" or method not in ("bilinear", "edi_rows")]      # H75
     rz.reconstruction._reconstruct._plans_for.cache_clear()            # plans are built concurrently too
 
     def call(dt, pr, dom):

@@ -249,6 +249,14 @@ ROWS = [
       "domain='colour_difference')",
       lambda f: rz.reconstruct(u16(), "learned", pattern="mask1", domain="colour_difference"),
       ValueError, "domain: method 'learned' applies its filters to the intensities"),
+    R("reconstruction.reconstruct-bilinear-domain", "reconstruct(frame, 'bilinear', "
+      "domain='colour_difference')",
+      lambda f: rz.reconstruct(u16(), "bilinear", pattern="mask2", domain="colour_difference"),
+      ValueError, "domain: method 'bilinear' interpolates the intensities"),
+    R("reconstruction.reconstruct-edi_rows-domain", "reconstruct(mask2 frame, 'edi_rows', "
+      "domain='colour_difference')",
+      lambda f: rz.reconstruct(u16(), "edi_rows", pattern="mask2", domain="colour_difference"),
+      ValueError, "domain: method 'edi_rows' interpolates the intensities"),
     R("reconstruction.reconstruct-fixed-sigma_bits",
       "reconstruct(precision='fixed', sigma_rel=0.3, sigma_bits=4)",
       lambda f: rz.reconstruct(u16(), pattern="mask1", precision="fixed", sigma_rel=0.3,

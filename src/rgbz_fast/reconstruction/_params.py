@@ -72,7 +72,10 @@ class ReconstructParams:
         (docs/guide/performance.md).
     domain : {"intensity", "colour_difference"}
         Interpolate the candidates themselves (eq. 13, the paper) or their
-        differences to an estimate of the other channel(s) (eq. 5).
+        differences to an estimate of the other channel(s) (eq. 5). The
+        colour-difference domain is that of the weighted methods (``bi``,
+        ``edi_central``, ``edi_line``, ``sg``); the others refuse it (a
+        ValueError naming ``domain``).
     clip_level : float, "auto" or None
         The level at which the sensor saturates, in the frame's digital
         numbers: known pixels at or above it are *clipped*, and a difference

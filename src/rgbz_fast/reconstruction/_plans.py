@@ -201,6 +201,11 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
     method = check_choice(method, tuple(METHODS), "method")
     sg_mode = check_choice(sg_mode, SG_MODES, "sg_mode")
     domain = check_choice(domain, DOMAINS, "domain")
+    if domain != "intensity" and method in ("bilinear", "edi_rows"):
+        # H75: both interpolate the intensities alone; the domain had been ignored
+        raise ValueError(f"domain: method {method!r} interpolates the intensities; "
+                         f"domain={domain!r} applies to the weighted methods (bi, edi_central, "
+                         "edi_line, sg)")
     P, Q = pattern.period
     tile = pattern.tile
     btile = pattern.bayer_tile()           # raises for patterns with no underlying Bayer
@@ -313,7 +318,7 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
                     # a common 1/n cancels in the normalised weights (eq. 12)
                     plan["sg_scaled"] = int(len(set(nsg)) > 1)
 
-                if domain == "colour_difference" and method != "bilinear":
+                if domain == "colour_difference":
                     est = colour_difference_estimates(lambda dy, dx: ch(r, c, dy, dx),
                                                       cands + [(0, 0)], target)
                     if est is not None:
