@@ -583,7 +583,7 @@ def test_train_then_evaluate_with_the_filters(tmp_path, capsys):
 
 def test_depth_full_resolution_writes_a_depth_at_every_pixel(tmp_path, capsys):
     """--full-resolution guides the ToF ISP with the frame's colour image and writes
-    upsample_depth's map (float32 TIFF) and its preview."""
+    upsample_depth's map (float32 TIFF), its preview and its confidence (float32 TIFF)."""
     import tifffile
 
     scene = rz.simulation.Scene(np.full((32, 48, 3), 0.5),
@@ -592,12 +592,15 @@ def test_depth_full_resolution_writes_a_depth_at_every_pixel(tmp_path, capsys):
     path = tmp_path / "step.npz"
     frameio.save_frame(path, frame)
     assert main(["depth", str(path), "--out", str(tmp_path), "--full-resolution"]) == 0
-    assert "step_depth-full.tif, step_depth-full.png" in capsys.readouterr().out
+    assert ("step_depth-full.tif, step_depth-full.png, step_depth-full-confidence.tif"
+            in capsys.readouterr().out)
     full = tifffile.imread(tmp_path / "step_depth-full.tif")
+    conf = tifffile.imread(tmp_path / "step_depth-full-confidence.tif")
     frame = frameio.load_frame(path)                  # as the command reads it
     guide = rz.ColourISP().run(frame)
-    want, _ = rz.tof.upsample_depth(rz.tof_depth(frame.tof, guide=guide), guide)
+    want, want_conf = rz.tof.upsample_depth(rz.tof_depth(frame.tof, guide=guide), guide)
     np.testing.assert_array_equal(full, want)
+    np.testing.assert_array_equal(conf, want_conf)
     assert full.shape == (32, 48) and (tmp_path / "step_depth-full.png").stat().st_size > 0
 
 

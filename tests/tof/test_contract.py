@@ -6,6 +6,8 @@ Rows of docs/reports/robustness.md (``tof.*``), run by the shared runner of
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from _contract import (Row, api_tests, calibration, f64, files, sim_frame,  # noqa: F401
@@ -237,6 +239,15 @@ ROWS = [
       lambda f: tof.upsample_depth(tof.tof_depth(sim_frame()), np.full((16, 16, 3), 0.5),
                                    max_sigma=float("nan")), ValueError,
       "max_sigma: expected a number >= 0, got nan"),
+    R("tof.upsample-result-off-frame", "upsample_depth(result of a 16x16 frame with shape "
+      "(8, 8), 8x8 image)",
+      lambda f: tof.upsample_depth(dataclasses.replace(tof.tof_depth(sim_frame()), shape=(8, 8)),
+                                   np.full((8, 8, 3), 0.5)), ValueError,
+      "result: the Z pixels reach row 14, off the frame of shape (8, 8)"),
+    R("tof.to_frame-sites-off-frame", "ToFDepth with sites 100 rows down .to_frame()",
+      lambda f: (lambda r: dataclasses.replace(r, sites=(r.sites[0] + 100, r.sites[1])))(
+          tof.tof_depth(sim_frame())).to_frame(), ValueError,
+      "sites: the Z pixels reach row 114, off the frame of shape (16, 16)"),
 ]
 
 test_api_contract = api_tests(ROWS)

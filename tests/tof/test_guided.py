@@ -515,6 +515,27 @@ def test_upsample_gives_a_depth_where_the_colour_can_choose():
     assert off(up) < off(every) / 2
 
 
+def test_resolved_depths_beyond_the_range_are_flagged_and_left_out():
+    """H76: a resolved measurement takes a side's depth, and a side may be an aliased surface
+    (beyond max_range) or inconsistent measurements: a resolved depth below 0 or beyond the
+    range is flagged out of range, and upsample_depth takes no measurement flagged otherwise
+    than flying or resolved (before: depths of -0.045 m and beyond max_range in the map)."""
+    h, w = 48, 64
+    img = np.full((h, w, 3), 0.4)
+    img[:, w // 2:] = (0.1, 0.5, 0.2)                       # grey wall | green box
+    z = np.where(np.arange(w) < w // 2, 2.0, 1.0) * np.ones((h, 1))
+    frame = simulate(Scene(img, depth=z), "mask1", seed=1)
+    guide = ColourISP().run(frame)
+    res = ToFISP(max_range=1.5).run(frame.tof, guide=guide)
+    resolved = (res.flags & ToFFlag.RESOLVED) > 0
+    assert resolved.any()
+    kept = resolved & ((res.flags & ToFFlag.OUT_OF_RANGE) == 0)
+    assert np.all((res.depth[kept] >= 0) & (res.depth[kept] <= 1.5 - 5 * res.sigma[kept]))
+    up, conf = upsample_depth(res, guide)
+    good = np.isfinite(up)
+    assert good.any() and np.all((up[good] >= 0) & (up[good] <= 1.5))
+
+
 def test_upsample_takes_low_signal_measurements_below_max_sigma():
     """A measurement flagged low-signal alone with a sigma of at most max_sigma gives the
     map its depth when a usable neighbour agrees; above max_sigma, with another flag besides,

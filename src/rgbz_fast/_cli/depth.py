@@ -57,7 +57,9 @@ def add_parser(sub):
     p.add_argument("--full-resolution", action="store_true",
                    help="also run the colour ISP, guide the ToF ISP with its image and write "
                         "a depth at every pixel: OUT/<name>_depth-full.tif (float32 metres, "
-                        "NaN where none can be given) and OUT/<name>_depth-full.png (preview); "
+                        "NaN where none can be given), OUT/<name>_depth-full.png (preview) and "
+                        "OUT/<name>_depth-full-confidence.tif (float32 in [0, 1]: low in holes "
+                        "and at colour edges); "
                         "the map also takes the measurements flagged low-signal alone whose "
                         "sigma is at most 2 cm and that a usable neighbour confirms, whatever "
                         "--max-sigma")
@@ -81,7 +83,8 @@ def run(args):
             calibration = ToFCalibration.load(args.calibration, max_bytes=args.max_bytes)
         except (OSError, ValueError, TypeError, KeyError) as exc:
             raise c.CliError(f"--calibration: {args.calibration}: {c.explain(exc)}") from None
-    full = ["_depth-full.tif", "_depth-full.png"] if args.full_resolution else []
+    full = (["_depth-full.tif", "_depth-full.png", "_depth-full-confidence.tif"]
+            if args.full_resolution else [])
     outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth.png", f"{f.stem}_depth-flags.png",
                  f"{f.stem}_depth-flags.tif"] + [f.stem + x for x in full]) for f in args.frames]
     c.unique_outputs(outs, out, reads=[args.calibration])
@@ -119,7 +122,7 @@ def run(args):
                                                                 "are flagged", nearest))
         if full_names:
             from ..tof import upsample_depth
-            up, _ = upsample_depth(res, guide, workers=args.workers)
+            up, conf = upsample_depth(res, guide, workers=args.workers)
             buf = io.BytesIO()
             tifffile.imwrite(buf, up, description=json.dumps(
                 {"unit": "m", "invalid": "NaN", "source": str(f),
@@ -127,6 +130,12 @@ def run(args):
             atomic_write(out / full_names[0], buf.getvalue())
             atomic_write(out / full_names[1], full_depth_preview(
                 up, f"{f.stem}: depth at every pixel", args.range))
+            buf = io.BytesIO()                  # how much each depth is to be trusted
+            tifffile.imwrite(buf, conf, description=json.dumps(
+                {"unit": "1", "range": [0, 1], "source": str(f),
+                 "meaning": "summed weight of the measurements the depth comes from; 0 where "
+                            "it is NaN"}))
+            atomic_write(out / full_names[2], buf.getvalue())
         if not args.quiet:
             extra = "".join(f", {n}" for n in full_names)
             print(f"{f} -> {out / tif_name}, {png_name}, {flags_name}, {bits_name}{extra}: "

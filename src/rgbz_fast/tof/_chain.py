@@ -432,4 +432,4 @@ def _run_guided(tof, p, nthreads, guide):
     res = _run(tof, dc_replace(p, flying_step=None), nthreads)
     if p.flying_step is None:
         return res
-    return guided_flying_of(res, g, scale, p.flying_step, nthreads)
+    return guided_flying_of(res, g, scale, p.flying_step, max_range, nthreads)

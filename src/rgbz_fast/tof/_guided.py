@@ -49,8 +49,8 @@ from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
 from ._noise import (collected_scale, dark_noise, delay_fpn_variance, fixed_pattern_delta,
                      prnu_gain)
-from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_RESOLVED, FLAG_SATURATED,
-                        radiometry_coefficients)
+from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, FLAG_RESOLVED,
+                        FLAG_SATURATED, radiometry_coefficients)
 
 __all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "UPSAMPLE_COLOUR_SCALE",
            "UPSAMPLE_AMBIGUITY"]
@@ -218,9 +218,14 @@ def _radiometry(tof, f):
     return sigma_scale, np.ascontiguousarray(1.0 / model)
 
 
-def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):
+def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, max_range, nthreads):
     """The flying-pixel test with colour edges on measurements in grid order: adds FLYING and
-    RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced."""
+    RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced.
+
+    A resolved depth is a side's, and a side may hold measurements flagged out of range (an
+    aliased surface) or inconsistent: one the range test of the validity would flag (below 0,
+    within 5 sigma of ``max_range`` or beyond) is flagged OUT_OF_RANGE too (H76), so that
+    :func:`upsample_depth` leaves it out."""
     usable = np.empty(layout.N, np.uint8)
     _kernels.tofg_usable(flags, depth, sigma, None if layout.full else layout.present.view(
         np.uint8), FLAG_SATURATED | FLAG_LOW_SIGNAL, usable, nthreads)
@@ -228,6 +233,11 @@ def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, nthreads):
     _kernels.tofg_flying(depth, sigma, usable, col, cells, ring, layout.R,
                          layout.C, step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out,
                          nthreads)
+    res = np.flatnonzero(flags & FLAG_RESOLVED)           # a few at the depth edges
+    if res.size:
+        d = out[res]
+        far = ~((d >= 0.0) & (d <= max_range - 5.0 * sigma[res]))   # the validity's rule
+        flags[res[far]] |= FLAG_OUT_OF_RANGE
     return out
 
 
@@ -316,7 +326,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     if p.flying_step is not None:
         depth = guided_flags(measured, sigma, flags, layout, col, cells,
                              guide_ring(g, scale, layout, sigma_c, nthreads), p.flying_step,
-                             nthreads)
+                             max_range, nthreads)
     back = layout.from_grid
     return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
                     phase=back(phase), amplitude=back(amp), offset=back(offset),
@@ -327,7 +337,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
                     shape=tuple(tof.shape), measured=back(measured))
 
 
-def guided_flying_of(result, g, scale, step, nthreads):
+def guided_flying_of(result, g, scale, step, max_range, nthreads):
     """The colour-guided flying-pixel test applied to a result of the unguided denoise (box or
     none) whose flying test was left out: a new ToFDepth."""
     layout = _layout_of(result.sites, result.block, result.shape)
@@ -336,7 +346,8 @@ def guided_flying_of(result, g, scale, step, nthreads):
     measured = np.ascontiguousarray(layout.to_grid(result.depth, np.nan), np.float64)
     sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)
     depth = guided_flags(measured, sigma, flags, layout, col, cells,
-                         guide_ring(g, scale, layout, sigma_c, nthreads), step, nthreads)
+                         guide_ring(g, scale, layout, sigma_c, nthreads), step, max_range,
+                         nthreads)
     back = layout.from_grid
     fields = {k: getattr(result, k) for k in result.__dataclass_fields__}
     fields.update(depth=back(depth), measured=result.depth, flags=back(flags),
@@ -357,7 +368,8 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     Where those more than 5 cm from that depth (another surface) hold more
     than ``ambiguity`` of the weight, the colour cannot tell which surface
     the pixel is on and it gets NaN. Valid measurements, resolved ones
-    (:attr:`ToFFlag.RESOLVED`, with the depth of their side), those flagged
+    (:attr:`ToFFlag.RESOLVED`, with the depth of their side; flagged nothing
+    else but flying), those flagged
     flying alone and those flagged low-signal alone with a sigma of at most
     ``max_sigma`` take part: the flying-pixel test flags both sides of every
     depth edge, and the measurements right at an edge are the ones that give
@@ -443,10 +455,14 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     max_sigma = check_number(max_sigma, "max_sigma", lo=0, allow_none=True, allow_inf=True)
     nthreads = check_workers(workers)
     g, scale = check_guide(guide, result.shape)
+    result._check_sites("result")
     layout = _layout_of(result.sites, result.block, result.shape)
     col, _, sigma_c = guide_colours(g, scale, layout, nthreads)
     flags = result.flags
-    usable = result.valid | ((flags & FLAG_RESOLVED) > 0) | (flags == FLAG_FLYING)
+    # valid, flying alone, resolved (and flying): a resolved measurement flagged out of range
+    # or inconsistent besides is no side's depth (H76)
+    rest = flags & ~np.uint8(FLAG_RESOLVED)
+    usable = (rest == 0) | (rest == FLAG_FLYING)
     depth = np.ascontiguousarray(layout.to_grid(np.where(usable, result.depth, np.nan),
                                                 np.nan), np.float64)
     sigma = np.ascontiguousarray(layout.to_grid(result.sigma, np.inf), np.float64)

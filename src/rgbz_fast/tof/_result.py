@@ -91,6 +91,21 @@ class ToFDepth:
     def n_sites(self):
         return int(self.depth.shape[0])
 
+    def _check_sites(self, name):
+        """ValueError naming ``name`` unless every Z pixel (its ``block`` x ``block`` cells)
+        lies on the frame of ``shape`` (a result edited with ``dataclasses.replace``, H76)."""
+        r, c = (np.asarray(a) for a in self.sites)
+        if r.size == 0:
+            return
+        rows, cols = self.shape
+        for axis, a, top in (("row", r, rows), ("column", c, cols)):
+            lo, hi = int(a.min()), int(a.max())
+            if lo < 0 or hi + self.block > top:
+                raise ValueError(f"{name}: the Z pixels reach {axis} "
+                                 f"{lo if lo < 0 else hi + self.block - 1}, off the frame of "
+                                 f"shape {tuple(self.shape)} (sites and shape of different "
+                                 "frames?)")
+
     def to_frame(self, values="depth", fill=np.nan):
         """Paint per-measurement values onto the frame (every cell of each Z pixel).
 
@@ -124,6 +139,7 @@ class ToFDepth:
         dtype = np.result_type(v.dtype, np.min_scalar_type(fill))
         if dtype.kind == "f" and dtype.itemsize < 4:    # a NaN fill of a bool or uint8 field:
             dtype = np.dtype(np.float32)                # float32, not float16
+        self._check_sites("sites")
         out = np.full(v.shape[:-1] + tuple(self.shape), fill, dtype=dtype)
         r, c = self.sites
         for dr in range(self.block):

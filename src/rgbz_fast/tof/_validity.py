@@ -66,7 +66,9 @@ class ToFFlag(enum.IntFlag):
         (a mixture of the two surfaces) holds that side's depth in
         ``ToFDepth.depth``; ``ToFDepth.measured`` keeps the measured one. Not
         valid (its measurement is of no single surface), but
-        :func:`~rgbz_fast.tof.upsample_depth` uses it.
+        :func:`~rgbz_fast.tof.upsample_depth` uses it unless it is flagged
+        otherwise too (but flying): a side's depth that the range test
+        fails flags it OUT_OF_RANGE.
 
     Examples
     --------
