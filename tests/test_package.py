@@ -50,6 +50,29 @@ def test_import_loads_no_tooling_plotting_or_test_module():
     assert not bad, bad
 
 
+@pytest.mark.parametrize("argv0, preset, want", [
+    ("/venv/bin/rgbz-fast", None, "1"),          # the command: BLAS on one thread
+    ("/venv/bin/rgbz-fast", "3", "3"),           # a user's setting stays
+    ("-c", None, None),                          # a program importing the library: untouched
+    ("/venv/bin/other-tool", None, None),
+])
+def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
+    """OpenBLAS's threads spin idle for about 0.15 s of CPU after NumPy loads; the command
+    (``sys.argv[0]`` named rgbz-fast) sets OPENBLAS_NUM_THREADS=1 before NumPy loads, unless
+    set; a program that imports rgbz_fast keeps its own."""
+    import os
+
+    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+    if preset is not None:
+        env["OPENBLAS_NUM_THREADS"] = preset
+    code = (f"import sys; sys.argv[0] = {argv0!r}; import rgbz_fast, os; "
+            "print(os.environ.get('OPENBLAS_NUM_THREADS'))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=120, env=env)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert r.stdout.strip() == str(want)
+
+
 # the layers, bottom up: a module may import its own package and the layers below
 _LAYERS = [
     {"_validate", "_threads", "_build_config", "_kernels", "_deps", "_config", "_compat",

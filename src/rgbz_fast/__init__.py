@@ -19,6 +19,17 @@ Subpackages, from the sensor to the report:
 The names most used are re-exported here.
 """
 
+import os as _os
+import sys as _sys
+
+if (_sys.argv and "numpy" not in _sys.modules
+        and _os.path.basename(_sys.argv[0]).removesuffix(".exe") == "rgbz-fast"):
+    # The command, not the library: its kernels run their own threads, while the threads
+    # OpenBLAS starts when NumPy loads spin idle for about 0.15 s of CPU, which a 2-thread
+    # evaluation on 2 cores pays (5 % of its CPU on Kodak, docs/guide/performance.md). A set
+    # OPENBLAS_NUM_THREADS is left alone; an importing program is never touched.
+    _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
 from . import evaluation, io, isp, metrics, reconstruction, simulation
 from ._build_config import VERSION as __version__
 from ._compat import install_aliases as _install_aliases
