@@ -280,6 +280,12 @@ class EvalConfig:
                 for f in self.params.filters))
         protocol = "" if self.linearise else " sRGB values (not linearised)"
         inputs = f"{'noisy' if self.noise else 'noise-free'}, {self.bit_depth}-bit{protocol}"
+        if self.needs_tof:
+            # every method's frames come from the sensor model then, not only z_guided's: the
+            # scores of the others differ from a run without it (its noise-free frames are
+            # mosaics of the linearised images)
+            inputs += (", every method on the sensor model's frames (for "
+                       f"{', '.join(m for m in self.methods if m in NEEDS_TOF)}'s Z taps)")
         if raw_files:
             own = f"at {'its' if raw_files == 1 else 'their'} own bit depth, noise and lens"
             if lens is not None:            # the lens is the RGB images' (a raw file has its own)
