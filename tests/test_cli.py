@@ -43,6 +43,23 @@ def test_console_script_runs():
     assert r.returncode == 0 and "OpenMP" in r.stdout
 
 
+def test_a_plain_mosaic_read_with_two_patterns_writes_two_files(tmp_path):
+    """The pattern a plain mosaic is read with is in its output's name, as --rgbz-pattern's
+    (both had been written to plain_sg_cfa.tif, the second over the first)."""
+    import tifffile
+
+    plain = tmp_path / "plain.tif"
+    data = np.random.default_rng(0).integers(0, 2048, (48, 64)).astype(np.uint16)
+    tifffile.imwrite(plain, data)
+    for pattern in ("mask1", "mask2"):
+        assert main(["reconstruct", str(plain), "--pattern", pattern, "--bit-depth", "11",
+                     "--out", str(tmp_path / "o"), "--quiet"]) == 0
+    for pattern in ("mask1", "mask2"):
+        got = tifffile.imread(tmp_path / "o" / f"plain_{pattern}_sg_cfa.tif")
+        frame = rz.RawFrame(data, rz.get_pattern(pattern), 11)
+        np.testing.assert_array_equal(got, rz.reconstruct(frame, "sg"))
+
+
 def test_simulate_then_reconstruct(tmp_path, capsys):
     import imageio.v3 as iio
     import skimage.data

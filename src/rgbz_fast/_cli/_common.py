@@ -130,6 +130,14 @@ def shape(text):
 METRE_RANGE_MAX = 1e4
 
 
+def path(text):
+    """A file or folder argument: an empty one (an unset shell variable) is refused, where
+    ``Path("")`` would have been the current folder (to write into, read or clean up)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("an empty path (an unset shell variable?)")
+    return Path(text)
+
+
 def metre_range(text):
     """MIN:MAX in metres, 0 <= MIN < MAX <= 10 km, MAX - MIN >= 1 mm."""
     try:
@@ -199,13 +207,13 @@ def add_report_options(p, workers=True):
 
 def add_output_folder(p, default, what="output folder, created when the first file is written"):
     """``--out DIR``; ``default`` None: the command prints only, unless given a folder."""
-    p.add_argument("--out", type=Path, default=None if default is None else Path(default),
+    p.add_argument("--out", type=path, default=None if default is None else Path(default),
                    metavar="DIR", help=what)
 
 
 def add_output_file(p, what, default=None):
     """``--out FILE``: the one file a command writes (required when ``default`` is None)."""
-    p.add_argument("--out", type=Path, default=None if default is None else Path(default),
+    p.add_argument("--out", type=path, default=None if default is None else Path(default),
                    required=default is None, metavar="FILE",
                    help=what + (" (required)" if default is None else ""))
 
@@ -285,7 +293,7 @@ def add_methods(p, default):
 
 
 def add_dataset(p, what, required=False):
-    p.add_argument("--dataset", type=Path, default=None, required=required,
+    p.add_argument("--dataset", type=path, default=None, required=required,
                    metavar="DIR" if required else None, help=what)
 
 
@@ -338,7 +346,7 @@ def add_reconstruction_options(p, precision, precision_help):
 
 def add_raw_options_file(p, note=""):
     """``--raw-options FILE``: how to read each raw file of the input, from a JSON file."""
-    p.add_argument("--raw-options", type=Path, default=None, metavar="FILE",
+    p.add_argument("--raw-options", type=path, default=None, metavar="FILE",
                    help="JSON file mapping raw file names (or \"*\", every file) to how to read "
                         "them: phase, black_level, white_level, clip_level, shape, "
                         f"bit_depth_in, downsample{note} (default: none; camera raw files "

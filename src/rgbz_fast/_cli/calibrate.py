@@ -21,13 +21,13 @@ def add_parser(sub):
         "file that tof_depth(calibration=ToFCalibration.load(...)) applies. Either give frame "
         "files (from `simulate` or a real sensor, with ToF taps) and their distances, or "
         "--simulate a sweep of a sensor model.")
-    p.add_argument("frames", nargs="*", type=Path,
+    p.add_argument("frames", nargs="*", type=c.path,
                    help=".npz frame files holding ToF taps, one per wall position (default: "
                         "none; --simulate makes them)")
     p.add_argument("--distances", default=None, metavar="M[,M...]",
                    help="the wall distance (m) of every frame, comma-separated, in order "
                         "(default: none; required with frame files)")
-    p.add_argument("--dark", nargs="*", type=Path, default=(),
+    p.add_argument("--dark", nargs="*", type=c.path, default=(),
                    help=".npz frames taken with the lens capped, for the tap dark offsets "
                         "(default: none)")
     p.add_argument("--simulate", action="store_true",

@@ -29,12 +29,12 @@ def add_parser(sub):
         "2 low signal, 4 inconsistent frequencies, 8 flying pixel, 16 out of range, 32 resolved "
         "by the colour guide; 255 colour site). Prints how much is valid, why the rest is flagged and, for simulated frames, "
         "the error against the ground truth and how much of it is unknown.")
-    p.add_argument("frames", nargs="+", type=Path,
+    p.add_argument("frames", nargs="+", type=c.path,
                    help=".npz frames from `rgbz-fast simulate` of scenes with depth")
     p.add_argument("--denoise", choices=("bilateral", "box", "none"), default="bilateral",
                    help="phasor denoise: edge-aware over the 5x5 nearest Z pixels, the paper's "
                         "plain 5x5 average (Fig. 17), or none")
-    p.add_argument("--calibration", type=Path, default=None, metavar="FILE",
+    p.add_argument("--calibration", type=c.path, default=None, metavar="FILE",
                    help="phase calibration from `rgbz-fast calibrate` (default: none)")
     p.add_argument("--min-snr", type=c.positive_float, default=4.0,
                    help="flag measurements whose signal-to-noise ratio is below this")

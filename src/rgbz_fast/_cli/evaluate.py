@@ -68,7 +68,7 @@ def add_parser(sub):
                         "image at a time)")
     p.add_argument("--scheduler", default=None,
                    help="Dask scheduler address, tcp://host:port (default: the local pool)")
-    p.add_argument("--cache", type=Path, default=None, metavar="DIR",
+    p.add_argument("--cache", type=c.path, default=None, metavar="DIR",
                    help="cache folder, from which an interrupted run resumes (default: OUT/cache)")
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the cache")
     p.add_argument("--no-plots", action="store_true", help="tables only, no figures")

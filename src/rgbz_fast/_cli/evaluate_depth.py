@@ -18,7 +18,7 @@ def add_parser(sub):
         "RGB-D scenes (wrong, wrong-and-valid, caught), depths beyond the unambiguous range "
         "(flagged), depth noise against the predicted sigma, sunlight, and the calibration's "
         "residual cyclic error. Prints Markdown tables.")
-    p.add_argument("--data", type=Path, default=None, metavar="DIR",
+    p.add_argument("--data", type=c.path, default=None, metavar="DIR",
                    help="folder of the Middlebury scenes (default: ../shared/data/rgbd when it "
                         "exists; without it the scene sections are skipped)")
     p.add_argument("--sections", type=c.csv, default=None,

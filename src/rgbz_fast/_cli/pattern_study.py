@@ -52,12 +52,12 @@ def add_parser(sub):
                    help="generated family: block=1,2 period=4,8 (or RxC) "
                         "arrangement=aligned,staggered density=MIN:MAX (default: none)")
     c.add_methods(p, "bilinear,bi,edi_central,edi_line,sg,learned")
-    p.add_argument("--train", type=Path, default=None, metavar="DIR",
+    p.add_argument("--train", type=c.path, default=None, metavar="DIR",
                    help="images 'learned' is fitted on, per layout, held out of --dataset "
                         "(default: none; learned is then a note)")
     p.add_argument("--train-limit", type=c.positive_int, default=None, metavar="N",
                    help="the first N training images only (default: all)")
-    p.add_argument("--rgbd", type=Path, default=None, metavar="DIR",
+    p.add_argument("--rgbd", type=c.path, default=None, metavar="DIR",
                    help="folder of RGB-D scenes (e.g. ../shared/data/rgbd) (default: none)")
     p.add_argument("--rgbd-limit", type=c.positive_int, default=None, metavar="N",
                    help="the first N scenes only (default: all)")
@@ -70,7 +70,7 @@ def add_parser(sub):
     c.add_seed(p, 1, "seed of the depth simulations")
     p.add_argument("--scheduler", default=None,
                    help="Dask scheduler address, tcp://host:port (default: this process)")
-    p.add_argument("--cache", type=Path, default=None, metavar="DIR",
+    p.add_argument("--cache", type=c.path, default=None, metavar="DIR",
                    help="cache folder, from which an interrupted run resumes (default: "
                         "OUT/cache)")
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the cache")

@@ -25,9 +25,10 @@ def add_parser(sub):
         "their pattern. A real Bayer raw (camera raw, 16-bit Bayer PNG/TIFF, headerless .raw) "
         "has no Z sites: --rgbz-pattern places one on its CFA (the Z sites are dropped, then "
         "reconstructed, and the real CFA is the reference). Writes "
-        "OUT/<name>_<method>_cfa.tif (or .png with --output srgb) and, when there is one, the "
+        "OUT/<name>_<method>_cfa.tif (<name>_<pattern>_<method>_cfa.tif for a file read with "
+        "--pattern or --rgbz-pattern; .png with --output srgb) and, when there is one, the "
         "reference, and prints the CFA PSNR at the Z sites.")
-    p.add_argument("frames", nargs="+", type=Path,
+    p.add_argument("frames", nargs="+", type=c.path,
                    help=".npz/.tif frames from `rgbz-fast simulate`, or camera raw / Bayer files")
     p.add_argument("--method", default="sg",
                    help=f"reconstruction method: {', '.join(METHODS)}")
@@ -149,7 +150,10 @@ def run(args):
     from_file = raw_options_file(args.raw_options)
     c.must_exist(args.frames)
     out = c.output_folder(args.out)
-    label = args.rgbz_pattern and f"_{c.file_label(args.rgbz_pattern)}"
+    # the pattern a file is read with is in its outputs' names (a plain mosaic read with two
+    # patterns in turn had written both to one name, the second over the first)
+    given = args.rgbz_pattern or args.pattern
+    label = given and f"_{c.file_label(given)}"
     method = c.file_label(args.method)
     ext = "_cfa.tif" if args.output == "cfa" else ".png"
     names = [(f, f"{f.stem}{label or ''}") for f in args.frames]

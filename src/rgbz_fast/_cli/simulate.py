@@ -18,7 +18,7 @@ def add_parser(sub):
         "Run the sensor models (colour and, when the scene has depth, i-ToF) and the RGB-Z "
         "build on each scene; write one frame file per scene, OUT/<scene>_<pattern>.npz (or "
         ".tif), with the reference Bayer CFA of the same exposure.")
-    p.add_argument("scenes", nargs="+", type=Path,
+    p.add_argument("scenes", nargs="+", type=c.path,
                    help="image files (PNG, TIFF, JPEG), RGB-D scene folders (rgb.png + "
                         "disp1.png + dmin.txt) or spectral .mat cubes")
     c.add_pattern(p, "mask1", "RGB-Z pattern: mask1, mask2, rows, bayer, or a tile such as "

@@ -18,7 +18,7 @@ def add_parser(sub):
         "With --z-guided, fit those of method 'z_guided' on a folder of registered RGB + NIR "
         "pairs (NNNN_rgb.png + NNNN_nir.png): each pair through the sensor model, noise-free "
         "and noisy (11 bits), on top of the shipped learned filters of the pattern.")
-    p.add_argument("--dataset", type=Path, required=True, metavar="DIR", action="append",
+    p.add_argument("--dataset", type=c.path, required=True, metavar="DIR", action="append",
                    help="folder of RGB images to fit on (required; repeat it to fit on several "
                         "folders; keep the images you evaluate on out of them)")
     c.add_pattern(p, "mask1", "RGB-Z pattern: mask1, mask2 or a tile such as ZR/BG (default: "
