@@ -297,9 +297,8 @@ def add_dataset(p, what, required=False):
                    metavar="DIR" if required else None, help=what)
 
 
-def add_limit(p):
-    p.add_argument("--limit", type=positive_int, default=None, metavar="N",
-                   help="the first N images only (default: all)")
+def add_limit(p, what="the first N images only (default: all)"):
+    p.add_argument("--limit", type=positive_int, default=None, metavar="N", help=what)
 
 
 def add_precision(p, default, what):

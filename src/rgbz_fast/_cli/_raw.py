@@ -74,8 +74,10 @@ def raw_options_file(path):
         raise c.CliError(f"--raw-options: {path} nests its JSON too deeply; expected an "
                          "object of file names and their options") from None
     except (OSError, ValueError) as exc:
-        raise c.CliError(f"--raw-options: cannot read {path}: "
-                         f"{' '.join(c.explain(exc).split())}") from None
+        why = " ".join(c.explain(exc).split()).removeprefix("--raw-options: ")
+        if why.startswith("no such file"):              # the path is the message's already
+            raise c.CliError(f"--raw-options: no such file: {path}") from None
+        raise c.CliError(f"--raw-options: cannot read {path}: {why}") from None
     if not isinstance(opts, dict) or not all(isinstance(v, dict) for v in opts.values()):
         raise c.CliError(f"--raw-options: {path} should map file names (or \"*\") to objects of "
                          "options")

@@ -35,7 +35,7 @@ def add_parser(sub):
     p.add_argument("--name", default=None,
                    help="training set name kept in the file (default: the folders' names "
                         "joined by +)")
-    c.add_limit(p)
+    c.add_limit(p, "the first N images of each --dataset folder (default: all)")
     p.add_argument("--radius", type=c.positive_int, default=3,
                    help="window radius of the filter taps (3: a 7x7 window)")
     p.add_argument("--hash-radius", type=c.positive_int, default=3,
@@ -119,7 +119,8 @@ def run(args):
     filters.save(args.out)
     if not args.quiet:
         m = filters.meta
-        print(f"{filters} -> {args.out} ({m['n_images']} images, {m['n_sites']} sites, "
+        # frames: an image at both encodings (--encoding both) is two
+        print(f"{filters} -> {args.out} ({m['n_images']} frames, {m['n_sites']} sites, "
               f"{m['empty_buckets']} empty buckets)")
     return 0
 

@@ -329,7 +329,8 @@ def _run(jobs, scheduler, progress):
                 out[i] = _task(job)
                 bar.update()
             return out
-        from distributed import Client, as_completed
+        from ..evaluation._cache import distributed
+        Client, as_completed = distributed().Client, distributed().as_completed
         own = not hasattr(scheduler, "submit")
         client = Client(scheduler) if own else scheduler
         try:

@@ -39,6 +39,18 @@ def check_scheduler(scheduler):
     return scheduler
 
 
+def distributed():
+    """Dask's ``distributed`` module, or an ImportError that says how to install it (the bare
+    "No module named 'distributed'" said nothing of the option that needs it)."""
+    try:
+        import distributed as mod
+    except ImportError:
+        raise ImportError("scheduler: a Dask scheduler needs the distributed package: pip "
+                          "install \"dask[distributed]\"  (or pip install rgbz-fast[dask])") \
+            from None
+    return mod
+
+
 def cache_folder(name):
     """The cache folder of an image name: readable, and distinct for distinct names.
 

@@ -576,7 +576,9 @@ def _stop_tracker():
 
 
 def _run_dask(tasks, scheduler, bar):
-    from distributed import Client, as_completed as d_as_completed
+    from ._cache import distributed
+    dist = distributed()
+    Client, d_as_completed = dist.Client, dist.as_completed
     own = not hasattr(scheduler, "submit")
     client = Client(scheduler) if own else scheduler
     try:
