@@ -60,7 +60,7 @@ the report shows the count. --quick is a smoke test: small frame,
 few runs; its numbers are not comparable with anything, so it prints no ratio
 and no target verdict ("quick run: numbers not comparable, no verdict"). A
 full run gives the verdicts of the targets, which are defined on the
-4000x3000 frame: another --shape gives the ratios but no verdict."""
+3000x4000 frame: another --shape gives the ratios but no verdict."""
 
 
 def add_parser(sub):

@@ -17,7 +17,7 @@ methods (float64 with libm, float32 with the fast exp) and the learned filters
 (no exponential) -- it measures
 
 * the speed: frame Mpix/s of reconstruct on one frame (the benchmark scene of
-  rgbz-fast bench, 2048x1536), all threads, the best of N runs interleaved
+  rgbz-fast bench, 1536x2048), all threads, the best of N runs interleaved
   across the variants (robust to bursts of load from other processes on a
   shared machine; the median and IQR are reported too);
 * the accuracy on a set of images (Kodak with --dataset ../shared/data/kodak;
@@ -34,7 +34,7 @@ methods (float64 with libm, float32 with the fast exp) and the learned filters
 It draws the Pareto plot and writes the table (Markdown) with a paragraph,
 computed from the numbers, on what each approximation costs.
 
---quick is a smoke test (two 128x128 crops, a 256x192 speed frame, two runs):
+--quick is a smoke test (two 128x128 crops, a 192x256 speed frame, two runs):
 its speeds are printed, labelled "quick run: numbers not comparable, no
 verdict", but no speed ratio between variants is summarised and no Pareto
 front is drawn from them."""

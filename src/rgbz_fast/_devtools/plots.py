@@ -262,7 +262,7 @@ def tradeoff_figure(res):
         ax.set_xscale("log")
         _log_axis_numbers(ax)
         ax.set_xlabel(f"speed, Mpix/s, best of {res['repeat']} ({threads_text(res)}, "
-                      f"{res['speed_frame'][1]}x{res['speed_frame'][0]} frame)")
+                      f"{res['speed_frame'][0]}x{res['speed_frame'][1]} frame)")
         ax.set_ylabel(f"mean CFA PSNR, dB ({res['dataset']}, {len(res['images'])} images)")
         ax.set_title(p + (f" ({QUICK_NOTE})" if res.get("quick") else ""))
         ax.grid(True, which="major", alpha=0.3)

@@ -98,7 +98,7 @@ def decode_pnm(data):
         pos = m.end()
     cols, rows, maxval = fields
     if not (rows > 0 and cols > 0 and 0 < maxval < 65536):
-        raise ValueError(f"a header of {cols}x{rows} pixels with maxval {maxval} (expected "
+        raise ValueError(f"a header of {rows}x{cols} pixels with maxval {maxval} (expected "
                          "positive sizes and a maxval of 1..65535)")
     channels = 1 if magic in (b"P2", b"P5") else 3
     count = rows * cols * channels

@@ -20,7 +20,7 @@ __all__ = ["make_rgb", "load_numpy_reference", "tof_taps", "build_cases", "case_
            "simulate_benchmark", "bench_depth", "SIMULATE_TARGETS_S", "FULL_SHAPE", "RECON_METHODS", "PATTERNS", "PRECISIONS", "TOF_FREQS",
            "TOF_TARGET_X_NUMPY"]
 
-FULL_SHAPE = (3000, 4000)     # rows, cols: a 4000x3000 (12 Mpix) frame
+FULL_SHAPE = (3000, 4000)     # rows, cols: a 3000x4000 (12 Mpix) frame
 #: the paper's methods, then the library's learned filters (the shipped ones of each pattern;
 #: no NumPy reference row: tests/_reference/learned.py is a test, not a benchmark)
 RECON_METHODS = ("bilinear", "bi", "edi_central", "edi_line", "sg", "learned", "z_guided")
