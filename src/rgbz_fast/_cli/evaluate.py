@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 from pathlib import Path
@@ -30,8 +31,8 @@ def add_parser(sub):
     c.add_methods(p, "bilinear,bi,edi_central,edi_line,sg")
     p.add_argument("--metrics", type=c.csv, default="cfa_psnr,cpsnr,ssim,ms_ssim,zipper",
                    help="comma-separated metrics")
-    p.add_argument("--noise", action="store_true", help="use the sensor noise model (default: "
-                                                        "noise-free mosaics)")
+    p.add_argument("--noise", action=argparse.BooleanOptionalAction, default=False,
+                   help="use the sensor noise model (default: noise-free mosaics)")
     p.add_argument("--demosaic", default="malvar2004", choices=DEMOSAICS,
                    help="Bayer demosaic of both paths")
     p.add_argument("--crop", type=c.non_negative_int, default=8,

@@ -65,7 +65,8 @@ def add_parser(sub):
                                  "hardware_sweep.png into DIR (default: print only)")
     c.add_quiet(p, "no progress bar")
     c.add_limits(p)
-    c.add_workers(p)
+    c.add_workers(p, "threads running the frames and the sweep's configurations side by side",
+                  "all cores")
     return p
 
 
