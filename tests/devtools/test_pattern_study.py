@@ -280,3 +280,19 @@ def test_line_buffers_and_multipliers_come_from_the_fixed_point_model():
     from rgbz_fast._devtools.pattern_report import COLUMNS
 
     assert {"line_buffers", "multipliers"} <= {c[0] for c in COLUMNS}
+
+
+def test_the_text_table_keeps_names_and_tiles_whole():
+    """The terminal table is to copy from: an 8x8 tile (71 characters) and a long layout name
+    are printed whole (they had been cut to 24 and 22 characters), in aligned columns."""
+    from rgbz_fast._devtools.pattern_report import to_text
+
+    tile = "/".join(["ZZGRGRGR", "ZZBGBGBG"] + ["GRGRGRGR", "BGBGBGBG"] * 3)
+    rows = [{"layout": "generated-block2-staggered-0.0625", "tile": tile, "z_fill": 0.0625,
+             "method": "sg", "cpsnr": 33.1, "ops_per_pixel": 2.5, "wall_sigma_mm": 4.2,
+             "best": True},
+            {"layout": "mask1", "tile": "ZR/BG", "z_fill": 0.25, "method": "sg", "cpsnr": 30.0,
+             "ops_per_pixel": 9.0, "wall_sigma_mm": 3.0, "best": True}]
+    lines = to_text({"rows": rows}).splitlines()
+    assert tile in lines[2] and "generated-block2-staggered-0.0625" in lines[2]
+    assert len({line.index("%") for line in lines[2:]}) == 1          # aligned

@@ -169,17 +169,20 @@ def to_markdown(res, png_name=None, command=None):
 
 
 def to_text(res):
-    """A short plain-text table: each layout at its best method."""
+    """A short plain-text table: each layout at its best method (names and tiles whole, to
+    copy: a tile of 8x8 sites is 71 characters)."""
     best = best_rows(res["rows"])
     front = set(pareto_layouts(res["rows"]))
-    head = (f"{'layout':22} {'tile':24} {'Z fill':>7} {'method':11} {'CPSNR':>6} "
+    wl = max([len("layout")] + [len(r["layout"]) for r in best])
+    wt = max([len("tile")] + [len(r["tile"]) for r in best])
+    head = (f"{'layout':{wl}} {'tile':{wt}} {'Z fill':>7} {'method':11} {'CPSNR':>6} "
             f"{'ops/px':>7} {'σ mm':>6}  front")
     out = [head, "-" * len(head)]
     for r in best:
         def f(k, fmt):
             v = r.get(k)
             return "-" if v is None else format(v, fmt)
-        out.append(f"{r['layout'][:22]:22} {r['tile'][:24]:24} {100 * r['z_fill']:6.2f}% "
+        out.append(f"{r['layout']:{wl}} {r['tile']:{wt}} {100 * r['z_fill']:6.2f}% "
                    f"{r['method'] if r.get('cpsnr') is not None else '-':11} "
                    f"{f('cpsnr', '.2f'):>6} {f('ops_per_pixel', '.2f'):>7} "
                    f"{f('wall_sigma_mm', '.1f'):>6}  {'*' if r['layout'] in front else ''}")
