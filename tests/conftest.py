@@ -33,3 +33,12 @@ def rng():
 @pytest.fixture(scope="session")
 def kodak_dir():
     return shared_path("kodak")
+
+
+@pytest.fixture
+def terminal(monkeypatch):
+    """The command line's stderr taken for a terminal, so that it draws its progress bars
+    into the captured stream (it draws none into a log or a pipe)."""
+    import rgbz_fast._cli._common as common
+
+    monkeypatch.setattr(common, "_terminal", lambda: True)

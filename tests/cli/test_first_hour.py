@@ -153,7 +153,21 @@ def _stderr_lines(err):
     return [part for line in err.splitlines() for part in line.split("\r") if part.strip()]
 
 
-def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys, monkeypatch):
+def test_no_progress_bar_into_a_log(tmp_path, capsys, monkeypatch):
+    """stderr that is no terminal (a log, a pipe) gets no progress bar, --quiet or not: its
+    carriage returns would fill the log; the per-file lines on stdout stay."""
+    import rgbz_fast._progress
+
+    monkeypatch.setattr(rgbz_fast._progress, "DELAY", 0.0)
+    argv = ["calibrate", "--simulate", "--shape", "24x32", "--positions", "20",
+            "--frames-per-position", "1", "--out", str(tmp_path / "cal.npz")]
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    assert err == "" and out.startswith("20 frames -> ")
+
+
+def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys, monkeypatch,
+                                                         terminal):
     """A simulated sweep counts its frames, the fit says it is running and for how long
     (here from the start: a step shows after a second); --quiet shows neither, and stdout
     holds only the summary line."""
@@ -173,7 +187,8 @@ def test_calibrate_shows_the_sweep_and_the_fit_on_stderr(tmp_path, capsys, monke
     assert capsys.readouterr() == ("", "")
 
 
-def test_train_says_it_is_fitting_after_reading_the_images(tmp_path, capsys, monkeypatch):
+def test_train_says_it_is_fitting_after_reading_the_images(tmp_path, capsys, monkeypatch,
+                                                           terminal):
     """The bar counts the images; the fit that follows shows its running time, after the
     bar (not a bar stuck at 100 %); --quiet shows nothing."""
     import rgbz_fast._progress

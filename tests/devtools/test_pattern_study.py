@@ -165,7 +165,7 @@ def test_bad_inputs_name_their_parameter(tiny):
 
 
 # --------------------------------------------------------------------------- a study
-def test_cli_study_of_three_layouts(tiny, tmp_path, capsys):
+def test_cli_study_of_three_layouts(tiny, tmp_path, capsys, terminal):
     out = tmp_path / "out"
     code = main(["pattern-study", "--dataset", str(tiny / "ds"), "--presets", "mask1",
                  "--tiles", "ZRGR/BGBG/GRZR/BGBG", "--generate",

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import sys
 from pathlib import Path
 
 from .._validate import parse_shape
@@ -216,6 +217,20 @@ def add_output_file(p, what, default=None):
     p.add_argument("--out", type=path, default=None if default is None else Path(default),
                    required=default is None, metavar="FILE",
                    help=what + (" (required)" if default is None else ""))
+
+
+def _terminal():
+    """Whether stderr is a terminal."""
+    try:
+        return bool(sys.stderr.isatty())
+    except (AttributeError, ValueError):          # replaced or closed
+        return False
+
+
+def bars(args):
+    """Whether the command draws progress bars: not with ``--quiet``, and not when stderr is
+    no terminal (a log or a pipe, which the bars' carriage returns would fill)."""
+    return not args.quiet and _terminal()
 
 
 def add_quiet(p, what="no progress bar or per-file lines"):

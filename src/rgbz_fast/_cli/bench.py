@@ -106,7 +106,7 @@ def run(args):
         numpy_ref = bench.load_numpy_reference(args.numpy_reference, "--numpy-reference")
     # a --kernels that matches nothing is refused (NoCase) before any section runs
     res = bench.run_benchmarks(shape, repeat, args.workers, crop, args.kernels,
-                               not args.no_reference, not args.no_memory, args.quiet,
+                               not args.no_reference, not args.no_memory, not c.bars(args),
                                not args.no_tof_sites, args.chain, numpy_reference=numpy_ref,
                                quick=args.quick)
     res["command"] = c.command_line(args)

@@ -101,7 +101,7 @@ def run(args):
         sweep = [load_frame(f, **c.limits(args)) for f in args.frames]
         dark = [load_frame(f, **c.limits(args)) for f in args.dark] or None
     c.check_outputs([("the calibration", args.out)], [*args.frames, *args.dark])
-    with ticking(f"calibrate: fitting {len(sweep)} frames", not args.quiet):
+    with ticking(f"calibrate: fitting {len(sweep)} frames", c.bars(args)):
         try:
             cal = calibrate(sweep, distances, orders=args.orders, dark=dark)
         except ValueError as exc:
@@ -176,6 +176,6 @@ def _simulated_sweep(args):
     jobs = [(d, sensor, args.seed * 100_000 + k) for k, d in enumerate(distances)]
     jobs += [(1.0, capped, args.seed * 100_000 + 90_000 + k) for k in range(8)]
     frames = [wall(*job) for job in tqdm(jobs, desc="calibrate: simulating the sweep",
-                                         unit="frame", disable=args.quiet)]
+                                         unit="frame", disable=not c.bars(args))]
     sweep, dark = frames[:len(distances)], frames[len(distances):]
     return sweep, distances, dark

@@ -184,7 +184,7 @@ def run(args):
     cache = None if args.no_cache else (args.cache or out / "cache")
     _keep_freed_memory()
     res = evaluate(dataset, config, cache_dir=cache, processes=args.processes,
-                   workers=args.workers, scheduler=args.scheduler, progress=not args.quiet,
+                   workers=args.workers, scheduler=args.scheduler, progress=c.bars(args),
                    skip_bad=args.skip_bad)
     for name, why in res.skipped:
         print(f"rgbz-fast evaluate: skipped {name}: {c.explain(why, args.parser)}",

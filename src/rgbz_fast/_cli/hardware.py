@@ -103,7 +103,7 @@ def run(args):
 
         configs = hw.sweep_configs(config, args.method)
         ticks = iter(progress(range(len(configs)), total=len(configs), desc="sweep",
-                              quiet=args.quiet))
+                              quiet=not c.bars(args)))
         rows = hw.run_sweep(args.method, pattern, width=args.width, images=images, base=config,
                             configs=configs, tick=lambda: next(ticks, None),
                             workers=args.workers)

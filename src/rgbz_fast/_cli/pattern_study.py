@@ -117,7 +117,7 @@ def run(args):
         train=args.train, train_limit=args.train_limit, rgbd=args.rgbd,
         rgbd_limit=args.rgbd_limit, limit=args.limit, settings=settings,
         cache_dir=None if args.no_cache else (args.cache or out / "cache"),
-        scheduler=args.scheduler, workers=args.workers, progress=not args.quiet)
+        scheduler=args.scheduler, workers=args.workers, progress=c.bars(args))
     res["command"] = c.command_line(args)
     files = {"pattern_study.csv": report.to_csv(res["rows"]),
              "pattern_study.json": json_text(res) + "\n",

@@ -54,7 +54,7 @@ def run(args):
     dests = [(s, f"{s.stem if not s.is_dir() else s.name}_{c.file_label(pattern)}{suffix}")
              for s in args.scenes]
     c.unique_outputs([(s, [n]) for s, n in dests], out)
-    for s, name in tqdm(dests, desc="simulate", unit="scene", disable=args.quiet):
+    for s, name in tqdm(dests, desc="simulate", unit="scene", disable=not c.bars(args)):
         try:
             scene = load_scene(s, grey=args.grey, input_bits=args.input_bits, **c.limits(args))
             frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)

@@ -88,7 +88,7 @@ def run(args):
         images, methods=args.methods, patterns=args.patterns,
         speed_shape=tradeoff.QUICK_SPEED_SHAPE if args.quick else tradeoff.SPEED_SHAPE,
         repeat=args.repeat or (2 if args.quick else 5), workers=args.workers,
-        quiet=args.quiet, dataset_name=name, quick=args.quick)
+        quiet=not c.bars(args), dataset_name=name, quick=args.quick)
     res["command"] = c.command_line(args)
     if out is not None:
         c.write_report(out, {
