@@ -511,13 +511,14 @@ class Results:
         for p in self.config.patterns:
             n_images = len(self.images())
             out.append(f"{p}  ({n_images} image{'s' if n_images != 1 else ''}; {self.label()})")
-            out.append(" " * w + "".join(f"{METRIC_LABELS[k]:>20}" for k in self.config.metrics))
+            # a cell: the mean in 12, a space, the spread in 8 (its header right-aligned on it)
+            out.append(" " * w + "".join(f"{METRIC_LABELS[k]:>21}" for k in self.config.metrics))
             for m in self.config.methods:
-                cells = "".join(f"{'inf':>12}{'':8}" if (p, m, k) in all_inf else
+                cells = "".join(f"{'inf':>12}{'':9}" if (p, m, k) in all_inf else
                                 f"{s[(p, m, k)][0]:>12.4f} " + (f"±{s[(p, m, k)][1]:<7.3f}"
                                                                if np.isfinite(s[(p, m, k)][1])
                                                                else " " * 8)
-                                if self.config.applies(p, m) else f"{'n/a':>12}{'':8}"
+                                if self.config.applies(p, m) else f"{'n/a':>12}{'':9}"
                                 for k in self.config.metrics)
                 out.append(f"{METHOD_LABELS.get(m, m):<{w}}{cells}")
                 if self.ir_estimated(p, m):
