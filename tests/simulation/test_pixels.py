@@ -91,6 +91,27 @@ def test_poisson_variates_follow_the_distribution(lam):
         assert p.pvalue > 1e-4
 
 
+def test_a_poisson_variate_does_not_depend_on_its_neighbours_means():
+    """Each draw is a function of the key and its sample's counter alone: the same samples
+    beside means below 10 (the inversion) or beside zeros give the same variates, and the
+    bright ones keep the Poisson variance (the inversion had overwritten the candidates of
+    PTRS's slow test in a chunk of both: a variance of 800 for a mean of 1000 beside 5 e-)."""
+    rng = np.random.default_rng(7)
+    n = 200_000
+    big = rng.uniform(10, 2000, n)
+    dim = rng.random(n) < 0.5                        # every chunk mixes both
+    mixed = np.where(dim, rng.uniform(0.1, 9.9, n), big)
+    alone = np.where(dim, 0.0, big)
+    a, b = np.empty(n), np.empty(n)
+    _kernels.sim_variates(1, mixed, 5, 6, KEY, a, 2)
+    _kernels.sim_variates(1, alone, 5, 6, KEY, b, 2)
+    np.testing.assert_array_equal(a[~dim], b[~dim])
+    z = (a[~dim] - big[~dim]) / np.sqrt(big[~dim])
+    assert abs(z.var() - 1) < 5 * np.sqrt(2 / z.size)
+    small = mixed[dim]
+    assert abs((a[dim] - small).mean()) < 5 * np.sqrt(small.mean() / small.size)
+
+
 def test_variates_do_not_depend_on_the_thread_count():
     lam = np.random.default_rng(2).uniform(0, 50, 50_000)
     for kind in (0, 1):
