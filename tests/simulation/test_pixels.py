@@ -17,7 +17,8 @@ from _support import load_kodak
 
 import rgbz_fast as rz
 from rgbz_fast import _kernels
-from rgbz_fast.simulation import ColourSensor, Scene, ToFSensor, simulate, simulate_colour
+from rgbz_fast.simulation import (ColourSensor, Scene, ToFSensor, simulate, simulate_colour,
+                                  simulate_tof)
 from rgbz_fast.simulation import _pixels, _simulate, _tof_light
 from rgbz_fast.simulation._noise import stream_keys
 
@@ -261,6 +262,24 @@ def test_fixed_pattern_belongs_to_the_pixel_not_the_frame():
     large = simulate_colour(Scene(np.full((64, 80, 3), 0.4)), "bayer", sensor, seed=2)
     np.testing.assert_array_equal(small.data, large.data[:32, :40])
     assert len(np.unique(small.data)) > 20
+
+
+def test_delay_pattern_belongs_to_the_pixel_not_the_frame():
+    """H80: version 2 keys the per-pixel delay (delay_fpn_ps) by the Z pixel's position, as
+    the PRNU and DSNU: a frame of another size gives the same taps where the two overlap
+    (before, the delays followed the sites' order: 97 % of the shared pixels differed)."""
+    sensor = ToFSensor(delay_fpn_ps=50.0)
+    small = simulate_tof(Scene(np.full((32, 40, 3), 0.4), depth=np.full((32, 40), 1.3)),
+                         "mask2", sensor, noise=False)
+    large = simulate_tof(Scene(np.full((64, 80, 3), 0.4), depth=np.full((64, 80), 1.3)),
+                         "mask2", sensor, noise=False)
+    where = {(int(r), int(c)): k for k, (r, c) in enumerate(zip(*large.sites))}
+    at = [where[(int(r), int(c))] for r, c in zip(*small.sites)]
+    np.testing.assert_array_equal(small.taps, large.taps[..., at])
+    assert len(np.unique(small.taps[0, 0])) > 3                  # the pattern is there
+    legacy = simulate_tof(Scene(np.full((32, 40, 3), 0.4), depth=np.full((32, 40), 1.3)),
+                          "mask2", sensor, seed=1, rng_version=1)
+    assert legacy.meta["rng_version"] == 1                   # version 1 keeps NumPy's order
 
 
 def test_noisy_flat_field_has_the_models_variance():

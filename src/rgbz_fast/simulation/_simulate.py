@@ -213,7 +213,8 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         On the plain Bayer pattern, ``bit_depth = sensor.bit_depth``, uint16
         (float64 if ``sensor.quantise`` is False); ``meta`` holds
         ``exposure`` (s), ``system_gain`` (DN/e-), ``saturated`` (fraction of
-        sites at full well or full scale), ``spectral``, ``rng_version``,
+        sites clipped: at full well, at full scale or at the ADC's floor of 0
+        DN), ``spectral``, ``rng_version``,
         ``colour_black_level`` (the sensor's black level, DN),
         ``colour_saturation_level`` when the well fills below the ADC's top
         (:func:`saturation_level`, DN: the colour ISP's white level) and, for a
@@ -405,7 +406,8 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
             scene, sensor, pitch, (rows, cols), block, fields, keys, workers)
     else:
         mean, suppress, depth_true, valid, beyond, dmax = _tof_mean(
-            scene, sensor, pitch, rows, cols, block, optics, workers)
+            scene, sensor, pitch, rows, cols, block, optics, workers,
+            positional=rng_version != 1)
         if legacy:
             taps, sat = expose(mean, sensor._dark_electrons, sensor, noise=True, seed=seed,
                                temporal_stream=STREAM_TOF_TEMPORAL, fpn_stream=STREAM_TOF_FPN,

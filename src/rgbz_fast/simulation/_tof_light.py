@@ -81,17 +81,37 @@ def _tof_light_through(scene, sensor, pitch, cr, cc, optics, workers):
     return phasors, blur_at_cells(active + b)
 
 
-def _pixel_delays(sensor, n):
-    """Delay (ps) of every Z measurement: the global one plus the fixed per-pixel pattern
-    (drawn from ``fpn_seed`` on a stream of its own, so the PRNU/DSNU maps do not change)."""
-    delay = np.full(n, sensor.delay_ps)
-    if sensor.delay_fpn_ps:
+def _pixel_delays(sensor, rows, cols, positional=True):
+    """Delay (ps) of every Z measurement: the global one plus the fixed per-pixel pattern,
+    drawn from ``fpn_seed`` on a stream of its own (so the PRNU/DSNU maps do not change).
+
+    ``positional`` (``rng_version=2``): the normal of the Z pixel at (row, col) is number col
+    of the counter-based stream's row ``row``, so a pixel keeps its delay in a frame of any
+    size, as its PRNU and DSNU do; else (``rng_version=1``) NumPy's normals in site order
+    (which followed the site's index, not its place: H80)."""
+    rows, cols = np.asarray(rows), np.asarray(cols)
+    delay = np.full(rows.size, sensor.delay_ps)
+    if not sensor.delay_fpn_ps:
+        return delay
+    if not positional:
         rng = np.random.default_rng([sensor.fpn_seed, STREAM_TOF_DELAY])
-        delay += sensor.delay_fpn_ps * rng.standard_normal(n)
-    return delay
+        return delay + sensor.delay_fpn_ps * rng.standard_normal(rows.size)
+    from ._noise import _seed_words
+
+    key = np.array(_kernels.sim_key(_seed_words(int(sensor.fpn_seed)), STREAM_TOF_DELAY),
+                   np.uint32)
+    z = np.empty(rows.size)
+    order = np.argsort(rows, kind="stable")
+    starts = np.flatnonzero(np.diff(rows[order], prepend=-1))
+    for a, b in zip(starts, list(starts[1:]) + [order.size]):
+        at = order[a:b]                                      # the sites of one row
+        normals = np.empty(int(cols[at].max()) + 1)
+        _kernels.sim_variates(0, np.empty(0), int(rows[at[0]]), 0, key, normals, 1)
+        z[at] = normals[cols[at]]
+    return delay + sensor.delay_fpn_ps * z
 
 
-def _tof_mean(scene, sensor, pitch, rows, cols, block, optics, workers):
+def _tof_mean(scene, sensor, pitch, rows, cols, block, optics, workers, positional=True):
     """The mean tap electrons (F, 4, n) of every model of the ToF pixels (the non-ideal
     modulation, the optics), in NumPy; with the suppressed charge per site (or None), the
     true depth, validity and beyond-range flag of every site and the largest valid depth."""
@@ -106,7 +126,7 @@ def _tof_mean(scene, sensor, pitch, rows, cols, block, optics, workers):
     else:
         phasors, total = _tof_light_through(scene, sensor, pitch, cr, cc, optics, workers)
     if sensor.delay_ps or sensor.delay_fpn_ps:
-        phasors = sensor._delayed(phasors, _pixel_delays(sensor, rows.size))
+        phasors = sensor._delayed(phasors, _pixel_delays(sensor, rows, cols, positional))
     mean = sensor._taps_from(phasors, total)                                # (F, 4, n)
     suppress = sensor._suppressed(total) if sensor.ambient_suppression else None
     beyond = np.any(cell_valid & (d >= sensor.unambiguous_range), axis=1)
