@@ -269,8 +269,9 @@ def test_frames_of_the_sensor_model_take_the_bit_depth(needs_tof):
 
 
 def test_noisy_keys_at_other_bit_depths_are_new():
-    """The noisy frames of a bit depth other than 11 changed (they had been 11-bit): their
-    cache keys changed with them; 11 bits and noise-free runs keep theirs."""
+    """The noisy frames of a bit depth other than 11 changed (they had been 11-bit), and then
+    every noisy frame with the shot noise of H80 (``sim_revision``): their cache keys changed
+    with them; noise-free runs keep theirs."""
     key = lambda **kw: ev.EvalConfig(**kw).key("mask1", "sg")          # noqa: E731
     import hashlib
     import json
@@ -289,8 +290,8 @@ def test_noisy_keys_at_other_bit_depths_are_new():
                  version=_cache_version())
         return hashlib.sha1(json.dumps(d, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
-    for kw, same in ((dict(noise=True, bit_depth=11), True), (dict(bit_depth=8), True),
-                     (dict(noise=True, bit_depth=8), False)):
+    for kw, same in ((dict(noise=True, bit_depth=11), False), (dict(bit_depth=8), True),
+                     (dict(noise=True, bit_depth=8), False), (dict(), True)):
         assert (key(**kw) == old_key(ev.EvalConfig(**kw))) == same
 
 

@@ -293,9 +293,10 @@ def _depth_models():
     cache keyed by the version alone)."""
     from ..simulation import ToFSensor
     from ..tof import ToFISP
+    from ..simulation._noise import SIM_REVISION
     from ..tof._noise import NOISE_MODEL
 
-    return repr(ToFSensor()), repr(ToFISP()), NOISE_MODEL
+    return repr(ToFSensor()), repr(ToFISP()), NOISE_MODEL, SIM_REVISION
 
 
 def _jobs(cands, dataset, train, rgbd_scenes, settings, cache_dir, workers):

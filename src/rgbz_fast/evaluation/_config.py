@@ -238,6 +238,10 @@ class EvalConfig:
             params.pop("fixed_point")      # the keys of the float precisions stay what they were
         if self.needs_tof:          # the sensor model's frames, for every method of the run
             d["tof_frames"] = 1
+        if self.noise or self.needs_tof:
+            # the sensor model's draws (H80 changed them): not served from before
+            from ..simulation._noise import SIM_REVISION
+            d["sim_revision"] = SIM_REVISION
         if (self.noise or self.needs_tof) and self.bit_depth != 11:
             # the sensor model's frames at the bit depth (before, at 11 bits whatever it was):
             # the results cached then are not served for these runs (11 bits: the same frames)

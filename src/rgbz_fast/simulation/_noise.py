@@ -37,6 +37,11 @@ __all__ = ["expose", "STREAM_COLOUR_TEMPORAL", "STREAM_COLOUR_FPN", "STREAM_TOF_
 #: the random numbers of the sensor models by default, and the versions there are
 RNG_VERSION = 2
 RNG_VERSIONS = (1, 2)
+#: The revision of the noisy frames a version draws: caches of results measured on the sensor
+#: model's frames hold it, so that a result of an earlier draw is not served (2: the shot
+#: noise of version 2 no longer depends on the neighbours' means, and the delay pattern is
+#: the pixel's, 2026-11-27, H80).
+SIM_REVISION = 2
 
 # sub-stream keys of the random generators: temporal noise follows the frame
 # seed, fixed-pattern noise the sensor's fpn_seed; each model has its own
