@@ -33,6 +33,13 @@ ROWS = [
                                                 meta={"colour_black_level": 5000})), ValueError,
       "frame: its meta records an unusable rendering (colour_black_level: expected a finite "
       "number >= 0 and < 2047, got 5000)"),
+    # -- complete CFAs (H81) ----------------------------------------------------------------
+    R("isp.render-negative", "ColourISP().render(float CFA holding -1)",
+      lambda f: isp.ColourISP().render(with_value(-1.0), "GRBG"),
+      ValueError, "cfa: a value of -1 DN; a CFA's values are >= 0"),
+    R("isp.white_balance_gains-negative", "ColourISP().white_balance_gains(float CFA holding -1)",
+      lambda f: isp.ColourISP().white_balance_gains(with_value(-1.0), "GRBG"),
+      ValueError, "cfa: a value of -1 DN; a CFA's values are >= 0"),
     # -- demosaic --------------------------------------------------------------------------
     R("isp.demosaic-ndim", "demosaic(3-D)", lambda f: demosaic(np.zeros((4, 4, 3))), ValueError,
       "cfa: expected a 2-D array"),

@@ -4,6 +4,7 @@ correction (planted defects; Z sites never read), sRGB output, bad input."""
 from __future__ import annotations
 
 import pickle
+import warnings
 
 import numpy as np
 import pytest
@@ -485,3 +486,21 @@ def test_defect_detection_on_the_kodak_set(request):
               f"{24 * clean.size} pixels); planted defects > 500 DN found "
               f"{found}/{planted} = {found / planted:.3f}")
         assert free <= 40 and noisy <= 120 and found / planted > 0.6
+
+
+def test_a_cfa_mostly_above_its_white_level_is_warned_about():
+    """H81: a CFA whose values mostly exceed 2**bit_depth - 1 (an 11-bit CFA rendered with
+    bit_depth=8) renders nearly white: render and white_balance_gains warn, naming the CFA;
+    a few saturated pixels do not."""
+    cfa = np.tile(np.array([[800, 400], [300, 800]], np.uint16), (4, 4))
+    chain = ColourISP()
+    with pytest.warns(UserWarning, match=r"cfa: 100 % of the pixels are above the white level "
+                                         r"255 DN \(bit_depth=8\)"):
+        chain.render(cfa, "GRBG", bit_depth=8)
+    with pytest.warns(UserWarning, match="is bit_depth the CFA's"):
+        chain.white_balance_gains(cfa, "GRBG", bit_depth=8)
+    few = cfa.copy()
+    few[0, :3] = 2047
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        chain.render(few, "GRBG", bit_depth=11)

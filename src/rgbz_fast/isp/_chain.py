@@ -111,6 +111,25 @@ def _white_of(white_level, bit_depth):
 
 
 # =========================================================================== the chain
+
+def _check_cfa_levels(data, white, bit_depth):
+    """A complete CFA's values against its levels (H81): a negative DN is refused (one had
+    zeroed grey world's green mean: unit gains for the image, without a word); values above
+    the white level are saturated pixels, but a CFA mostly above it is warned about (an 11-bit
+    CFA rendered with ``bit_depth=8`` came out nearly white)."""
+    import warnings
+
+    if data.dtype.kind == "f" and data.size and float(data.min()) < 0:
+        raise ValueError(f"cfa: a value of {float(data.min()):g} DN; a CFA's values are >= 0 "
+                         "(subtract no black level that the chain subtracts itself)")
+    if data.size and float(data.max()) > white:
+        share = float(np.count_nonzero(data > white)) / data.size
+        if share > 0.5:
+            warnings.warn(f"cfa: {100 * share:.0f} % of the pixels are above the white level "
+                          f"{white:g} DN (bit_depth={bit_depth}): is bit_depth the CFA's?",
+                          UserWarning, stacklevel=3)
+
+
 @dataclass(frozen=True)
 class ColourISP:
     """The colour ISP chain (paper Fig. 18): a frozen set of stage parameters.
@@ -376,6 +395,7 @@ class ColourISP:
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
         black, white = _black_white(black_level, _white_of(white_level, bd))
+        _check_cfa_levels(data, white, bd)
         if colour_matrix is not None:
             colour_matrix = ColourCorrection(matrix=colour_matrix).matrix    # checked
         if not return_stages and self._fused(data):
@@ -423,6 +443,7 @@ class ColourISP:
         if black_level is None:
             black_level = self.black_level if self.black_level is not None else 0.0
         black, white = _black_white(black_level, _white_of(white_level, bd))
+        _check_cfa_levels(data, white, bd)                             # as render()
         wb = self.white_balance
         if wb.gains is not None:
             return np.asarray(wb.gains, np.float64)
