@@ -4,7 +4,6 @@ offsets)."""
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import numpy as np
 
