@@ -53,8 +53,10 @@ def test_import_loads_no_tooling_plotting_or_test_module():
 @pytest.mark.parametrize("argv0, preset, want", [
     ("/venv/bin/rgbz-fast", None, "1"),          # the command: BLAS on one thread
     ("/venv/bin/rgbz-fast", "3", "3"),           # a user's setting stays
+    ("-m rgbz_fast", None, "1"),                 # python -m rgbz_fast, the same command
     ("-c", None, None),                          # a program importing the library: untouched
     ("/venv/bin/other-tool", None, None),
+    ("-m pytest", None, None),
 ])
 def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
     """OpenBLAS's threads spin idle for about 0.15 s of CPU after NumPy loads; the command
@@ -65,7 +67,11 @@ def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
     env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
     if preset is not None:
         env["OPENBLAS_NUM_THREADS"] = preset
-    code = (f"import sys; sys.argv[0] = {argv0!r}; import rgbz_fast, os; "
+    if argv0.startswith("-m "):              # as the interpreter records python -m MODULE
+        setup = f"sys.argv[0] = '-m'; sys.orig_argv = ['python', '-m', {argv0[3:]!r}]"
+    else:
+        setup = f"sys.argv[0] = {argv0!r}"
+    code = (f"import sys; {setup}; import rgbz_fast, os; "
             "print(os.environ.get('OPENBLAS_NUM_THREADS'))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                        timeout=120, env=env)

@@ -22,11 +22,20 @@ The names most used are re-exported here.
 import os as _os
 import sys as _sys
 
-if (_sys.argv and "numpy" not in _sys.modules
-        and _os.path.basename(_sys.argv[0]).removesuffix(".exe") == "rgbz-fast"):
+
+def _the_command():
+    """Whether this process is the ``rgbz-fast`` command: its console script, or ``python -m
+    rgbz_fast`` (whose ``sys.argv[0]`` is not yet the module's while the package loads)."""
+    if _sys.argv and _os.path.basename(_sys.argv[0]).removesuffix(".exe") == "rgbz-fast":
+        return True
+    argv = list(getattr(_sys, "orig_argv", ()))
+    return any(a == "-m" and argv[i + 1:i + 2] == ["rgbz_fast"] for i, a in enumerate(argv))
+
+
+if "numpy" not in _sys.modules and _the_command():
     # The command, not the library: its kernels run their own threads, while the threads
     # OpenBLAS starts when NumPy loads spin idle for about 0.15 s of CPU, which a 2-thread
-    # evaluation on 2 cores pays (5 % of its CPU on Kodak, docs/guide/performance.md). A set
+    # evaluation on 2 cores pays (a few % of its CPU on Kodak, docs/guide/performance.md). A set
     # OPENBLAS_NUM_THREADS is left alone; an importing program is never touched.
     _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 

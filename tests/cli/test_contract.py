@@ -99,6 +99,8 @@ CLI_ROWS = [
       "argument --out: an empty path (an unset shell variable?)", usage=True),
     C("cli.reconstruct-frame-empty", ("reconstruct", ""),
       "argument frames: an empty path (an unset shell variable?)", usage=True),
+    C("cli.bench-numpy-reference-empty", ("bench", "--quick", "--numpy-reference", ""),
+      "argument --numpy-reference: an empty path (an unset shell variable?)", usage=True),
     C("cli.evaluate-empty", ("evaluate", "--dataset", "{d}/empty"),
       "--dataset: no image files in"),
     C("cli.evaluate-patterns-twice", ("evaluate", "--dataset", "{d}/ds", "--patterns",

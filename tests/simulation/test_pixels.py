@@ -269,17 +269,24 @@ def test_delay_pattern_belongs_to_the_pixel_not_the_frame():
     the PRNU and DSNU: a frame of another size gives the same taps where the two overlap
     (before, the delays followed the sites' order: 97 % of the shared pixels differed)."""
     sensor = ToFSensor(delay_fpn_ps=50.0)
-    small = simulate_tof(Scene(np.full((32, 40, 3), 0.4), depth=np.full((32, 40), 1.3)),
-                         "mask2", sensor, noise=False)
-    large = simulate_tof(Scene(np.full((64, 80, 3), 0.4), depth=np.full((64, 80), 1.3)),
-                         "mask2", sensor, noise=False)
+
+    def taps(shape, version):
+        scene = Scene(np.full(shape + (3,), 0.4), depth=np.full(shape, 1.3))
+        return simulate_tof(scene, "mask2", sensor, noise=False, rng_version=version)
+
+    small, large = taps((32, 40), 2), taps((64, 80), 2)
     where = {(int(r), int(c)): k for k, (r, c) in enumerate(zip(*large.sites))}
     at = [where[(int(r), int(c))] for r, c in zip(*small.sites)]
     np.testing.assert_array_equal(small.taps, large.taps[..., at])
     assert len(np.unique(small.taps[0, 0])) > 3                  # the pattern is there
-    legacy = simulate_tof(Scene(np.full((32, 40, 3), 0.4), depth=np.full((32, 40), 1.3)),
-                          "mask2", sensor, seed=1, rng_version=1)
-    assert legacy.meta["rng_version"] == 1                   # version 1 keeps NumPy's order
+    # version 1 keeps NumPy's normals in the sites' order (rgbz-fast 0.1's frames): they follow
+    # the site's index, so the same pixel differs between the two sizes, and from version 2
+    small1, large1 = taps((32, 40), 1), taps((64, 80), 1)
+    assert np.any(small1.taps != large1.taps[..., at])
+    assert np.any(small1.taps != small.taps)
+    rng = np.random.default_rng([sensor.fpn_seed, 4])                 # STREAM_TOF_DELAY
+    delays = _tof_light._pixel_delays(sensor, *small1.sites, positional=False)
+    np.testing.assert_array_equal(delays, 50.0 * rng.standard_normal(small1.sites[0].size))
 
 
 def test_noisy_flat_field_has_the_models_variance():

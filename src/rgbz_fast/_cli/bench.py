@@ -74,7 +74,7 @@ def add_parser(sub):
                         "('tof sites' alone: that section only) (default: every case)")
     p.add_argument("--no-reference", action="store_true",
                    help="skip the NumPy and colour-demosaicing baselines")
-    p.add_argument("--numpy-reference", default=None, metavar="FILE",
+    p.add_argument("--numpy-reference", type=c.path, default=None, metavar="FILE",
                    help="also time a slow NumPy implementation of the reconstruction: a "
                         "Python file defining reference_reconstruct, such as the one among "
                         "the tests of a source checkout (default: none)")

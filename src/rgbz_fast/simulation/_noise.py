@@ -20,8 +20,10 @@ in ``frame.meta["rng_version"]``):
   arrays, :func:`expose`: the frames of rgbz-fast 0.1 bit for bit, single
   threaded.
 
-Without noise no random number is drawn, and both versions give the same
-frame.
+Without noise no random number is drawn but for a ToF delay pattern
+(``delay_fpn_ps``, a fixed pattern of the mean), and both versions give the same
+frame but for that pattern, which version 1 draws in the sites' order (version 2 at
+each Z pixel's position).
 """
 
 from __future__ import annotations

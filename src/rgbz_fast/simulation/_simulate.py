@@ -203,7 +203,8 @@ def simulate_colour(scene, pattern="bayer", sensor=None, *, seed=0, noise=True, 
         The random numbers (:mod:`rgbz_fast.simulation._noise`): 2, the
         default, counter-based (the same frame on any number of threads); 1,
         NumPy's streams of rgbz-fast 0.1 (its frames bit for bit). The same
-        noise-free frame either way.
+        noise-free frame either way, but for a ToF delay pattern
+        (``delay_fpn_ps``), which version 1 draws in the sites' order.
     workers : int, optional
         Threads (None or -1: all cores). The frame does not depend on it.
 
@@ -481,7 +482,8 @@ def simulate(scene, pattern, colour_sensor=None, tof_sensor=None, *, seed=0, noi
         The random numbers (:mod:`rgbz_fast.simulation._noise`): 2, the
         default, counter-based, computed in C (the same frame on any number
         of threads); 1, NumPy's streams of rgbz-fast 0.1 (its frames bit for
-        bit). The same noise-free frame either way.
+        bit). The same noise-free frame either way, but for a ToF delay pattern
+        (``delay_fpn_ps``), which version 1 draws in the sites' order.
     workers : int, optional
         Threads (None or -1: all cores). The frame does not depend on it.
 
