@@ -80,7 +80,8 @@ def upsample_baselines(res):
     frame: (nearest, bilinear) float64 maps, NaN where a method gives nothing.
 
     Nearest: the value of the nearest valid measurement (centres of the Z pixels, Euclidean
-    distance in pixels), everywhere. Bilinear: the bilinear weights of the four measurements
+    distance in pixels; ties as ``scipy.ndimage.distance_transform_edt`` breaks them),
+    everywhere. Bilinear: the bilinear weights of the four measurements
     around the pixel over the valid ones among them; NaN where none of the four is valid.
     """
     from scipy import ndimage                  # noqa: PLC0415 (an evaluation dependency)
@@ -99,24 +100,22 @@ def upsample_baselines(res):
     if not valid.any():
         nothing = np.full((H, W), np.nan)
         return nothing, nothing.copy()
-    # nearest valid node of every node, then of every pixel: the pixel's nearest node's
-    # nearest valid node, refined over the 2 x 2 nodes around the pixel
-    sp = (float(np.median(np.diff(rc))) if rc.size > 1 else 1.0,
-          float(np.median(np.diff(cc))) if cc.size > 1 else 1.0)
-    _, (ii, jj) = ndimage.distance_transform_edt(~valid, sampling=sp, return_indices=True)
-    best = np.full((H, W), np.inf)
-    nearest = np.full((H, W), np.nan)
+    # the nearest valid measurement of every pixel, exactly: the Euclidean distance transform
+    # of the valid centres on a grid fine enough to hold them (the centres of 2x2 Z pixels lie
+    # between pixels: a grid of half pixels), read at the pixels (before, the 2 x 2 nodes around
+    # a pixel and their own nearest valid nodes: another measurement at 37-1194 pixels a scene)
+    s = 2 if res.block % 2 == 0 else 1
+    cy = np.rint(s * (r[res.valid] + half)).astype(np.intp)
+    cx = np.rint(s * (c[res.valid] + half)).astype(np.intp)
+    fine = np.ones((s * (H - 1) + 1, s * (W - 1) + 1), bool)
+    fine[cy, cx] = False
+    value = np.full(fine.shape, np.nan)
+    value[cy, cx] = res.depth[res.valid]
+    _, (ii, jj) = ndimage.distance_transform_edt(fine, return_indices=True)
+    nearest = value[ii[::s, ::s], jj[::s, ::s]]
+    del ii, jj
     y0 = np.clip(np.floor(fy).astype(int), 0, rows.size - 1)
     x0 = np.clip(np.floor(fx).astype(int), 0, cols.size - 1)
-    ys, xs = np.arange(H)[:, None], np.arange(W)[None, :]
-    for dy in (0, 1):
-        for dx in (0, 1):
-            ny = ii[np.minimum(y0 + dy, rows.size - 1)][:, np.minimum(x0 + dx, cols.size - 1)]
-            nx = jj[np.minimum(y0 + dy, rows.size - 1)][:, np.minimum(x0 + dx, cols.size - 1)]
-            dist = (rc[ny] - ys) ** 2 + (cc[nx] - xs) ** 2
-            closer = dist < best
-            best = np.where(closer, dist, best)
-            nearest = np.where(closer, grid[ny, nx], nearest)
     ty = (fy - y0)[:, None]
     tx = (fx - x0)[None, :]
     num = np.zeros((H, W))
