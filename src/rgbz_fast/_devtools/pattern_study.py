@@ -331,7 +331,8 @@ def _run(jobs, scheduler, progress):
                 bar.update()
             return out
         from ..evaluation._cache import distributed
-        Client, as_completed = distributed().Client, distributed().as_completed
+        dist = distributed()
+        Client, as_completed = dist.Client, dist.as_completed
         own = not hasattr(scheduler, "submit")
         client = Client(scheduler) if own else scheduler
         try:

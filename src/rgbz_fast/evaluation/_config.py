@@ -14,6 +14,7 @@ from .._validate import (as_list, check_bit_depth, check_choice, check_entries, 
 from ..isp import ColourISP, DefectCorrection, Demosaic
 from ..reconstruction import METHODS, NEEDS_TOF, ReconstructParams
 from ..reconstruction._learned import resolve_filters
+from ..reconstruction._params import check_domain
 from ..reconstruction._z_guided import learned_only, resolve_z_filters
 from ..simulation import Optics
 
@@ -311,10 +312,7 @@ def _does_not_apply(pattern, method, params, bit_depth):
     try:
         if pattern.bayer_phase is None:
             pattern.bayer_tile()                 # the error that names the missing phase
-        if method in ("learned", "z_guided") and params.domain != "intensity":
-            raise ValueError(f"domain: method {method!r} applies its filters to the "
-                             f"intensities; domain={params.domain!r} applies to the weighted "
-                             "methods")
+        check_domain(method, params.domain)
         if method == "learned":
             learned_geometry(pattern)
             resolve_filters(learned_only(params.filters), pattern)

@@ -28,6 +28,7 @@ trade-off study, ``rgbz-fast reconstruct --output srgb``). The ToF ISP is
 from __future__ import annotations
 
 import time
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -117,8 +118,6 @@ def _check_cfa_levels(data, white, bit_depth):
     zeroed grey world's green mean: unit gains for the image, without a word); values above
     the white level are saturated pixels, but a CFA mostly above it is warned about (an 11-bit
     CFA rendered with ``bit_depth=8`` came out nearly white)."""
-    import warnings
-
     if data.dtype.kind == "f" and data.size and float(data.min()) < 0:
         raise ValueError(f"cfa: a value of {float(data.min()):g} DN; a CFA's values are >= 0 "
                          "(subtract no black level that the chain subtracts itself)")

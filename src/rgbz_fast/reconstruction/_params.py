@@ -261,3 +261,18 @@ def warn_small_sigma(params, method):
 
         warnings.warn(f"precision={params.precision!r} with sigma_rel={params.sigma_rel:g}: "
                       f"{limit[1]}", RuntimeWarning, stacklevel=outside_stacklevel())
+
+
+def check_domain(method, domain):
+    """A ValueError naming ``domain`` when ``method`` does not take it: the colour-difference
+    domain is the weighted methods' (bi, edi_central, edi_line, sg); the learned filters apply
+    to the intensities (H60), and bilinear and edi_rows interpolate them (H75)."""
+    if domain == "intensity":
+        return
+    if method in ("learned", "z_guided"):
+        raise ValueError(f"domain: method {method!r} applies its filters to the intensities; "
+                         f"domain={domain!r} applies to the weighted methods")
+    if method in ("bilinear", "edi_rows"):
+        raise ValueError(f"domain: method {method!r} interpolates the intensities; "
+                         f"domain={domain!r} applies to the weighted methods (bi, edi_central, "
+                         "edi_line, sg)")

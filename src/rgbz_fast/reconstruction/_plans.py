@@ -18,7 +18,7 @@ import numpy as np
 from .. import _kernels
 from .._patterns import Pattern, Z, get_pattern
 from .._validate import check_choice
-from ._params import DOMAINS, SG_MODES
+from ._params import DOMAINS, SG_MODES, check_domain
 
 __all__ = ["METHODS", "build_plans", "PLAN_DTYPE", "ORIENTATIONS", "SEMI_GRADIENTS"]
 
@@ -201,11 +201,7 @@ def build_plans(pattern: Pattern, method: str, sg_mode: str = "auto",
     method = check_choice(method, tuple(METHODS), "method")
     sg_mode = check_choice(sg_mode, SG_MODES, "sg_mode")
     domain = check_choice(domain, DOMAINS, "domain")
-    if domain != "intensity" and method in ("bilinear", "edi_rows"):
-        # H75: both interpolate the intensities alone; the domain had been ignored
-        raise ValueError(f"domain: method {method!r} interpolates the intensities; "
-                         f"domain={domain!r} applies to the weighted methods (bi, edi_central, "
-                         "edi_line, sg)")
+    check_domain(method, domain)           # H75: bilinear and edi_rows had ignored it
     P, Q = pattern.period
     tile = pattern.tile
     btile = pattern.bayer_tile()           # raises for patterns with no underlying Bayer

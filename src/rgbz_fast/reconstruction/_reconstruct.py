@@ -22,7 +22,7 @@ from ._fixed_learned import run_fixed_learned
 from ._learned import resolve_filters
 from ._z_guided import learned_only, resolve_z_filters
 from ._z_guided_kernel import guide_source, run_z_guided
-from ._params import ReconstructParams, warn_small_sigma
+from ._params import ReconstructParams, check_domain, warn_small_sigma
 from ._plans import METHODS as PLAN_METHODS
 from ._plans import build_plans, check_layout
 
@@ -243,10 +243,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
             return run_fixed_learned(src, out, pattern, filters, params.fixed_point, bd)
         return run_fixed(src, out, pattern, method, params, bd)
     warn_small_sigma(params, method)
-    if method in ("learned", "z_guided") and params.domain != "intensity":
-        raise ValueError(f"domain: method {method!r} applies its filters to the intensities; "
-                         f"domain={params.domain!r} applies to the weighted methods (it had "
-                         "been ignored)")
+    check_domain(method, params.domain)          # the plan methods' in build_plans too
     if method == "learned":
         filters = resolve_filters(learned_only(params.filters), pattern)
         if clip is not None and _reaches(src, pattern, clip):

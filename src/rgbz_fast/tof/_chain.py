@@ -376,6 +376,7 @@ def _run(tof, p, nthreads, guide=None):
         if calibration is not None:
             z = (i + 1j * q) * np.exp(-1j * calibration.deviations)
             i, q = np.ascontiguousarray(z.real), np.ascontiguousarray(z.imag)
+        fp_offset = offset                 # the offset the fixed pattern scales
         if denoise == "box":
             grid = site_grid()
             i, q, count, (off_mean,) = denoise_phasors(i, q, grid, block=tof.block,
@@ -390,11 +391,9 @@ def _run(tof, p, nthreads, guide=None):
             i, q, var, count = denoise_phasors_bilateral(
                 i, q, var, grid, block=tof.block, window=window, use=~saturated,
                 range_scale=p.range_scale, workers=nthreads)
-            fp_offset = offset
         else:
             count = np.ones(n)
             var = tap_variance(offset, sensor, scale=2.0, workers=nthreads)
-            fp_offset = offset
         depth, residual, wraps, phase, amp = _unwrap_phasors(i, q, f, w, max_range,
                                                              calibration, nthreads)
         # the fixed pattern acts on the phasors in the taps' own frame: before the

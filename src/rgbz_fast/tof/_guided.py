@@ -455,8 +455,8 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     max_sigma = check_number(max_sigma, "max_sigma", lo=0, allow_none=True, allow_inf=True)
     nthreads = check_workers(workers)
     g, scale = check_guide(guide, result.shape)
-    result._check_sites("result")
     layout = _layout_of(result.sites, result.block, result.shape)
+    result._check_sites("result", layout.rows, layout.cols)     # the distinct rows and columns
     col, _, sigma_c = guide_colours(g, scale, layout, nthreads)
     flags = result.flags
     # valid, flying alone, resolved (and flying): a resolved measurement flagged out of range

@@ -91,10 +91,12 @@ class ToFDepth:
     def n_sites(self):
         return int(self.depth.shape[0])
 
-    def _check_sites(self, name):
+    def _check_sites(self, name, rows=None, cols=None):
         """ValueError naming ``name`` unless every Z pixel (its ``block`` x ``block`` cells)
-        lies on the frame of ``shape`` (a result edited with ``dataclasses.replace``, H76)."""
-        r, c = (np.asarray(a) for a in self.sites)
+        lies on the frame of ``shape`` (a result edited with ``dataclasses.replace``, H76).
+        ``rows``, ``cols``: the sites' distinct rows and columns when the caller has them (a
+        layout's), else the sites themselves are read."""
+        r, c = (np.asarray(a) for a in ((rows, cols) if rows is not None else self.sites))
         if r.size == 0:
             return
         rows, cols = self.shape
