@@ -198,6 +198,33 @@ def test_z_guided_reads_the_guide_at_the_z_sites_only_at_any_scale(fitted, patte
     assert np.all((got == want) | (np.abs(ref - np.floor(ref) - 0.5) < 1e-3))
 
 
+
+@pytest.mark.parametrize("pattern", ["mask1", "mask2"])
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+def test_a_nir_in_any_unit_stays_in_the_kernels_range(fitted, pattern, precision):
+    """H82: the kernel reads each amplitude against its 3x3 mean in its precision; a nir
+    of 1e-39 or 1e39 (float32's range left) had made nearly every Z site 0 without a word.
+    A power-of-two unit gives the same bits; any other the same values to rounding."""
+    _, zf = fitted[pattern]
+    scene, nir = _scene(seed=7)
+    data = simulate(scene, pattern, noise=False).data.astype(np.float64)
+    kw = dict(pattern=pattern, filters=zf, precision=precision)
+    out = rz.reconstruct(data, "z_guided", nir=nir, **kw)
+    for unit in (2.0 ** -1000, 2.0 ** 200):
+        np.testing.assert_array_equal(rz.reconstruct(data, "z_guided", nir=nir * unit, **kw),
+                                      out)
+    tol = 1e-2 if precision == "float32" else 1e-8
+    for unit in (1e-300, 1e-39, 1e39, 1e300):
+        np.testing.assert_allclose(rz.reconstruct(data, "z_guided", nir=nir * unit, **kw),
+                                   out, rtol=0, atol=tol)
+    # a value 2^-100 below the brightest and less is unlit, as 0 is
+    dark = nir.copy()
+    dark[:, : nir.shape[1] // 2] = 0.0
+    tiny = nir.copy()
+    tiny[:, : nir.shape[1] // 2] *= 2.0 ** -110
+    np.testing.assert_array_equal(rz.reconstruct(data, "z_guided", nir=tiny, **kw),
+                                  rz.reconstruct(data, "z_guided", nir=dark, **kw))
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2"])
 def test_the_guide_improves_on_learned_where_colour_and_nir_share_their_detail(fitted,
                                                                                pattern):

@@ -18,6 +18,9 @@ from ._z_guided import _grid_shape, guide_grid, tof_taps, z_layout
 
 __all__ = ["run_z_guided", "kernel_arrays", "guide_source", "TapGuide"]
 
+#: an amplitude this far below the frame's brightest reads as unlit (:func:`_in_range`): float32
+#: holds the reciprocal of any 3x3 mean above it
+NIR_FLOOR = 2.0 ** -100
 _PRECISION_CODES = {"float32": _kernels.PRECISIONS["float32"],
                     "float64": _kernels.PRECISIONS["float64"]}
 #: the element types of the taps (tof_taps gives no other) -> the kernel's type codes
@@ -112,12 +115,29 @@ def run_z_guided(src, out, pattern, filters, grids, precision, bit_depth, nthrea
     args = (src, out, _PRECISION_CODES[precision], P, Q, phase_map)
     kw = dict(maxval=float((1 << bit_depth) - 1), workers=nthreads, **kernel_arrays(filters))
     if not isinstance(grids, TapGuide):
-        grid, var = (np.ascontiguousarray(a, np.float64) for a in grids)
+        grid, var = _in_range(*grids)
         k.z_guided(*args, **kw, **extra, grid=grid, var=var)
     elif not k.z_guided(*args, **kw, **extra, **_tap_arrays(grids)):
         # the sites were not in row-major order: checked and sorted (or refused), once more
         k.z_guided(*args, **kw, **extra, **_tap_arrays(grids.redo()))
     return out
+
+
+def _in_range(grid, var):
+    """The grids scaled by a power of two that puts the largest amplitude in [0.5, 1), one
+    2^-100 below it and less made 0 (unlit): the kernel reads each amplitude against its 3x3
+    mean in its precision (float32 by default), so a ``nir`` in any unit (documented: any
+    positive scale) stays in its range; an exact scaling, so the same bits at any ordinary
+    scale (a nir of 1e-39 or 1e39 had made the Z sites 0)."""
+    grid = np.array(grid, np.float64)
+    var = np.array(var, np.float64)
+    top = grid.max() if grid.size else 0.0
+    if top > 0:
+        e = -int(np.frexp(top)[1])
+        grid = np.ldexp(grid, e)
+        var = np.ldexp(var, 2 * e)
+        grid[grid < NIR_FLOOR] = 0.0
+    return grid, var
 
 
 def _tap_arrays(g):
