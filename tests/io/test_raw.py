@@ -507,3 +507,69 @@ def test_a_clip_level_beyond_every_code_clips_nothing(tmp_path):
     assert f.meta["clipped_count"] == 0 and rio.frame_clip_level(g) is None
     np.testing.assert_array_equal(rz.reconstruct(g, "sg", clip_level="auto"),
                                   rz.reconstruct(g, "sg"))
+
+
+@pytest.mark.parametrize("codes, letters", [((3, 4, 4, 5), "CMMY"), ((6, 1, 1, 2), "WGGB"),
+                                            ((0, 1, 1, 3), "RGGC")])
+def test_a_dng_of_other_colour_filters_is_refused(dng_path, tmp_path, codes, letters):
+    """H83: LibRaw maps a DNG's cyan, magenta, yellow or white filters onto its R, G, B
+    labels, and read_raw took a CMY or RGBW sensor for an RGB Bayer one (CMMY read as
+    bayer_rggb) without a word. Its CFAPattern tag decides now, and the message gives the
+    file's own colours."""
+    import tifffile
+
+    with tifffile.TiffFile(dng_path) as tif:
+        tag = tif.pages[0].tags[33422]
+        assert bytes(tag.value) == bytes((0, 1, 1, 2))  # RGGB, four bytes held in the entry
+        at = tag.valueoffset
+    blob = bytearray(dng_path.read_bytes())
+    blob[at:at + 4] = bytes(codes)
+    (tmp_path / "cmy.dng").write_bytes(bytes(blob))
+    with pytest.raises(ValueError, match=f"^path: cmy.dng has the colour filters '{letters}' "
+                                         r"\(its CFAPattern"):
+        read_raw(tmp_path / "cmy.dng")
+
+
+def _write_dng(path, data, black=0, white=4095):
+    """A minimal uncompressed 16-bit RGGB DNG (tifffile) that LibRaw reads."""
+    import tifffile
+
+    tags = [(33421, "H", 2, (2, 2), True), (33422, "B", 4, bytes((0, 1, 1, 2)), True),
+            (50706, "B", 4, b"\x01\x04\x00\x00", True), (50707, "B", 4, b"\x01\x01\x00\x00", True),
+            (50708, "s", 0, "Test Camera", True), (271, "s", 0, "Test", True),
+            (272, "s", 0, "Camera", True),
+            (50721, "2i", 9, (1, 1, 0, 1, 0, 1, 0, 1, 1, 1, 0, 1, 0, 1, 0, 1, 1, 1), True),
+            (50728, "2I", 3, (1, 1, 1, 1, 1, 1), True), (50714, "I", 1, (black,), True),
+            (50717, "I", 1, (white,), True)]
+    tifffile.imwrite(path, data, photometric=32803, extratags=tags, metadata=None)
+    return path
+
+
+def test_an_uncompressed_dng_cut_by_one_byte_is_refused(tmp_path):
+    """H83: LibRaw, given the file's bytes, read an uncompressed 16-bit DNG cut by exactly one
+    byte without an error, its last pixel wrong (842 for 3658). The mosaic's strips are now
+    checked against the file's length."""
+    pytest.importorskip("rawpy")
+    data = np.random.default_rng(0).integers(100, 4000, (32, 48)).astype(np.uint16)
+    whole = read_raw(_write_dng(tmp_path / "whole.dng", data), bit_depth=12)
+    np.testing.assert_array_equal(whole.data, data)
+    blob = (tmp_path / "whole.dng").read_bytes()
+    (tmp_path / "cut.dng").write_bytes(blob[:-1])
+    with pytest.raises(ValueError, match=r"^path: cut.dng is truncated: its mosaic's strips "
+                                         r"end at byte \d+, the file holds \d+"):
+        read_raw(tmp_path / "cut.dng", bit_depth=12)
+
+
+def test_a_dng_whose_own_levels_cannot_be_is_named(tmp_path):
+    """H83: a DNG whose black level lies above its white level was refused blaming
+    --white-level (reconstruct), which nobody gave, or `white_level` without the file
+    (evaluate); the file is named now, and levels given override it as before."""
+    pytest.importorskip("rawpy")
+    data = np.random.default_rng(0).integers(100, 4000, (32, 48)).astype(np.uint16)
+    f = _write_dng(tmp_path / "levels.dng", data, black=5000, white=4095)
+    with pytest.raises(ValueError, match=r"^path: levels.dng records a white level of 4095, "
+                                         "not above its black level 5000"):
+        read_raw(f)
+    with pytest.raises(ValueError, match=r"^white_level: 4095 must exceed black_level 5000"):
+        read_raw(f, black_level=5000)
+    assert read_raw(f, black_level=0).meta["black_level"] == (0.0,) * 4

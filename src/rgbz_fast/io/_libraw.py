@@ -91,10 +91,22 @@ def _libraw_mosaic(rawpy, blob, path, limits):
             shp = None if pattern is None else pattern.shape
             raise ValueError(f"path: {path.name} is not a 2x2 Bayer sensor (CFA pattern {shp}, "
                              f"colours {desc!r}; X-Trans and Foveon are not supported)")
+        filters, end = _tiff_cfa_page(blob)
+        if end is not None and end > len(blob):
+            # LibRaw reads the bytes it is given: an uncompressed mosaic cut by one byte came
+            # back with its last pixel wrong and no error
+            raise ValueError(f"path: {path.name} is truncated: its mosaic's strips end at byte "
+                             f"{end}, the file holds {len(blob)}")
+        if filters is not None and not set(filters) <= set("RGB"):
+            # LibRaw maps a DNG's cyan, magenta, yellow or white filters onto its R, G, B
+            # labels: read as RGB, such a mosaic would be processed as one without a word
+            raise ValueError(f"path: {path.name} has the colour filters {filters!r} (its "
+                             "CFAPattern; C cyan, M magenta, Y yellow, W white), not an RGB "
+                             "Bayer sensor's")
         letters = "".join(desc[int(i)] for i in pattern.ravel())
         if letters not in BAYER_PHASES:
-            raise ValueError(f"path: {path.name} has the CFA {letters!r} (colours {desc!r}) is not an RGB "
-                             "Bayer phase")
+            raise ValueError(f"path: {path.name} has the CFA {letters!r} (LibRaw's colours "
+                             f"{desc!r}), not an RGB Bayer phase")
         bl = raw.black_level_per_channel      # indexed by colour index
         black = [float(bl[int(i)]) for i in pattern.ravel()]
         wl = raw.white_level
@@ -123,6 +135,38 @@ def _camera_colour(raw, desc):
     except (AttributeError, IndexError, ValueError):     # an older rawpy, a partial file
         pass
     return out
+
+
+def _tiff_cfa_page(blob):
+    """Of a TIFF-based raw file (DNG, TIFF/EP), the IFD holding the mosaic (IFD0 or a SubIFD
+    with a CFAPattern tag): the colours of its CFAPattern as letters of RGBCMYW through its
+    CFAPlaneColor (the DNG way; without that tag the pattern holds the colour codes
+    themselves, the TIFF/EP way), and the byte its strips or tiles end at. (None, None) when
+    no IFD holds the tag (a non-TIFF raw) or the tags cannot be read: LibRaw's reading
+    stands."""
+    from ._tiff import open_tiff
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            with open_tiff(blob) as tif:
+                first = tif.pages[0]
+                for page in [first] + list(getattr(first, "pages", None) or []):
+                    cfa = page.tags.get(33422)               # CFAPattern
+                    if cfa is None:
+                        continue
+                    codes = bytes(cfa.value)
+                    plane = page.tags.get(50710)             # CFAPlaneColor
+                    if plane is not None:
+                        planes = bytes(plane.value)
+                        codes = bytes(planes[c] if c < len(planes) else 255 for c in codes)
+                    letters = "".join("RGBCMYW"[c] if c < 7 else "?" for c in codes)
+                    ends = [int(o) + int(n) for o, n in zip(page.dataoffsets,
+                                                             page.databytecounts)]
+                    return letters, (max(ends) if ends else None)
+    except Exception:  # noqa: BLE001 - metadata only: LibRaw's reading stands without it
+        return None, None
+    return None, None
 
 
 def _tiff_make_model(blob):

@@ -26,7 +26,7 @@ from .._patterns import BAYER_PHASES, bayer
 from .._validate import (as_list, check_bit_depth, check_dtype, check_flag, check_path,
                          parse_shape)
 from ._errors import ParameterError, Setting
-from ._files import check_size, read_file, read_image, read_limits
+from ._files import check_size, decode_codes, read_file, read_image, read_limits
 from ._libraw import read_libraw
 from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
 
@@ -216,6 +216,13 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     black = _quad_levels(black_level, "black_level")
     white = _quad_levels(white_level, "white_level")
     if np.any(white <= black):
+        if (given["white_level"] is None and given["black_level"] is None
+                and info.get("white_level") is not None and info.get("black_level") is not None):
+            # both the file's own: the file is at fault, not an option nobody gave
+            raise ValueError(f"path: {path.name} records a white level of "
+                             f"{_levels_text(white)}, not above its black level "
+                             f"{_levels_text(black)} at every quad site (give both levels to "
+                             "read it anyway)")
         raise ValueError(f"white_level: {_levels_text(white)} must exceed black_level "
                          f"{_levels_text(black)} at every quad site")
     if np.issubdtype(data.dtype, np.integer):
@@ -385,7 +392,7 @@ def _reader_for(path, reader):
 
 
 def _read_image(path, limits):
-    data = read_image(path, "path", max_pixels=limits[0], max_bytes=limits[1])
+    data = read_image(path, "path", decode_codes, max_pixels=limits[0], max_bytes=limits[1])
     if data.ndim != 2:
         raise ValueError(f"{path.name}: expected a single-channel Bayer mosaic, got an image "
                          f"of shape {data.shape} (a demosaicked RGB image is not raw data)")
