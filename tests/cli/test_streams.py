@@ -148,3 +148,33 @@ def test_evaluate_depth_refuses_scene_sections_without_scenes(tmp_path, monkeypa
             f"rgbz-fast evaluate-depth: error: --sections: {section} needs the data folders: "
             "pass --data DIR, the RGB-D scenes (../shared/data/rgbd, the default, is not "
             "beside the current folder; the RGB-NIR pairs are read from rgbnir beside it)"]
+
+
+def test_a_batch_stopped_by_a_bad_input_says_what_it_wrote(tmp_path, capfd):
+    """H84: ``simulate a bad c`` (and reconstruct, depth) wrote a's outputs, stopped at bad
+    and never ran c, its error naming bad alone; the line now says what stayed written and
+    what did not run. A batch whose first input fails says nothing more."""
+    from PIL import Image
+
+    for name in ("a", "c"):
+        Image.fromarray(np.random.default_rng(0).integers(30, 220, (16, 16, 3), np.uint8)
+                        ).save(tmp_path / f"{name}.png")
+    (tmp_path / "b.png").write_bytes((tmp_path / "a.png").read_bytes()[:60])
+    frames = [_frame_file(tmp_path / f"{n}.npz", s) for n, s in (("fa", 1), ("fc", 2))]
+    (tmp_path / "fb.npz").write_bytes(b"not a frame")
+    runs = [(["simulate", *(str(tmp_path / f"{n}.png") for n in "abc")], "b.png"),
+            (["reconstruct", str(frames[0]), str(tmp_path / "fb.npz"), str(frames[1])], "fb.npz"),
+            (["depth", str(frames[0]), str(tmp_path / "fb.npz"), str(frames[1])], "fb.npz")]
+    for k, (argv, bad) in enumerate(runs):
+        out = tmp_path / f"out{k}"
+        capfd.readouterr()
+        assert main(argv + ["--out", str(out), "--quiet"]) == 2
+        err = capfd.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and bad in err[0], err
+        assert err[0].endswith(f"(1 input before it written to {out}, 1 after it not run)"), err
+        written = sorted(p.name for p in out.iterdir())
+        assert written and all(n.startswith(("a_", "fa_")) for n in written), written
+    capfd.readouterr()
+    assert main(["simulate", str(tmp_path / "b.png"), str(tmp_path / "a.png"), "--out",
+                 str(tmp_path / "first"), "--quiet"]) == 2
+    assert "written" not in capfd.readouterr().err

@@ -502,3 +502,148 @@ def test_raw_options_for_a_frame_file_are_refused(tmp_path):
     iio.imwrite(tmp_path / "plain.png", np.full((8, 8), 300, np.uint16))
     with pytest.raises(ValueError, match=r"phase: .*plain.png is read as a plain mosaic"):
         load_frame(tmp_path / "plain.png", pattern="mask1", bit_depth=11, phase="RGGB")
+
+
+def _packed_tiff(path, samples, bits):
+    """A baseline TIFF (one strip, uncompressed, little-endian) of grey or RGB samples packed
+    MSB first at ``bits`` bits per sample, as TIFF 6.0 stores them."""
+    import struct
+
+    rows, cols = samples.shape[:2]
+    spp = 1 if samples.ndim == 2 else samples.shape[2]
+    packed = bytearray()
+    for row in samples.reshape(rows, -1):
+        acc = n = 0
+        for v in row:
+            acc, n = (acc << bits) | int(v), n + bits
+            while n >= 8:
+                n -= 8
+                packed.append((acc >> n) & 0xFF)
+        if n:
+            packed.append((acc << (8 - n)) & 0xFF)
+    bps = struct.pack(f"<{spp}H", *[bits] * spp)
+    entries = [(256, 4, 1, cols), (257, 4, 1, rows), (258, 3, spp, None), (259, 3, 1, 1),
+               (262, 3, 1, 2 if spp == 3 else 1), (273, 4, 1, None), (277, 3, 1, spp),
+               (278, 4, 1, rows), (279, 4, 1, len(packed)), (284, 3, 1, 1)]
+    ifd = 8
+    extra = ifd + 2 + 12 * len(entries) + 4
+    data = extra + (len(bps) if len(bps) > 4 else 0)
+    out = b"II*\0" + struct.pack("<IH", ifd, len(entries))
+    for tag, typ, count, val in entries:
+        if tag == 258:
+            raw = bps if len(bps) <= 4 else struct.pack("<I", extra)
+        elif tag == 273:
+            raw = struct.pack("<I", data)
+        else:
+            raw = struct.pack("<H" if typ == 3 else "<I", val)
+        out += struct.pack("<HHI", tag, typ, count) + raw.ljust(4, b"\0")
+    out += struct.pack("<I", 0) + (bps if len(bps) > 4 else b"") + bytes(packed)
+    path.write_bytes(out)
+    return path
+
+
+def test_a_tiff_of_fewer_bits_than_its_type_is_scaled_to_its_full_range(tmp_path):
+    """H84: tifffile (with imagecodecs) unpacks a 12-bit TIFF into uint16 codes of 0-4095,
+    and every reader after it took the range from the type: white read as 0.0625. Images
+    now scale them to the full range as a PNM's maxval is; a raw mosaic keeps its codes."""
+    from rgbz_fast.io._decode import _to_full_range
+
+    v = np.array([0, 1, 2048, 4094, 4095], np.uint16)
+    assert _to_full_range(v, 12).tolist() == [(int(x) * 131070 + 4095) // 8190 for x in v]
+    assert _to_full_range(v, 12)[-1] == 65535
+    assert _to_full_range(np.array([0, 15], np.uint8), 4).tolist() == [0, 255]
+    np.testing.assert_array_equal(_to_full_range(v, 16), v)          # fills its type
+    with pytest.raises(ValueError, match="above its 12-bit range"):
+        _to_full_range(np.array([4096], np.uint16), 12)
+    pytest.importorskip("imagecodecs")    # tifffile unpacks 12-bit samples with it only
+    rng = np.random.default_rng(0)
+    c12 = rng.integers(0, 4096, (6, 8, 3))
+    c12[0, 0] = 4095
+    got = read_image(_packed_tiff(tmp_path / "c12.tif", c12, 12))
+    np.testing.assert_array_equal(got, (c12 * 131070 + 4095) // 8190)
+    g12 = c12[..., 0]
+    raw = rio.read_raw(_packed_tiff(tmp_path / "g12.tif", g12, 12), phase="RGGB",
+                       black_level=0, bit_depth_in=12, bit_depth=12)
+    np.testing.assert_array_equal(raw.data, g12)
+
+
+def test_a_planar_grey_and_alpha_tiff_reads_as_grey_and_alpha(tmp_path):
+    """H84: a planar (PlanarConfiguration 2) grey + alpha TIFF came back (2, rows, cols): 3 or
+    4 pixels wide it read as two rows of colour, else an error about its shape."""
+    import tifffile
+
+    rng = np.random.default_rng(1)
+    for cols in (3, 4, 9):
+        planes = rng.integers(0, 256, (2, 6, cols), dtype=np.uint8)
+        tifffile.imwrite(tmp_path / "ga.tif", planes, photometric="minisblack",
+                         planarconfig="separate", extrasamples=["unassalpha"])
+        np.testing.assert_array_equal(read_image(tmp_path / "ga.tif"),
+                                      np.moveaxis(planes, 0, -1))
+
+
+def _palette_png(path, indices, palette, trns=None):
+    """An 8-bit palette PNG written chunk by chunk (its PLTE exactly ``palette``)."""
+    import struct
+    import zlib
+
+    def chunk(kind, body):
+        return (struct.pack(">I", len(body)) + kind + body
+                + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+
+    rows, cols = indices.shape
+    raw = b"".join(b"\0" + bytes(r) for r in indices.astype(np.uint8))
+    header = struct.pack(">IIBBBBB", cols, rows, 8, 3, 0, 0, 0)
+    blob = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header)
+            + chunk(b"PLTE", bytes(np.asarray(palette, np.uint8).ravel()))
+            + (chunk(b"tRNS", trns) if trns is not None else b"")
+            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    path.write_bytes(blob)
+    return path
+
+
+def test_palette_and_damaged_pngs_read_as_they_mean_or_one_clear_error(tmp_path, capfd):
+    """H84: a palette PNG whose indices pass its PLTE read those pixels black (a palette TIFF
+    was refused); one with a transparency chunk printed Pillow's advice to convert it as a
+    warning; a damaged PNG went through imageio's other plugins, OpenCV's and libpng's lines
+    on stderr before an error about "index `Ellipsis`"."""
+    from rgbz_fast._cli import main
+
+    rng = np.random.default_rng(0)
+    pal = rng.integers(0, 256, (8, 3))
+    idx = rng.integers(0, 8, (16, 16))
+    np.testing.assert_array_equal(read_image(_palette_png(tmp_path / "p.png", idx, pal)),
+                                  pal[idx])
+    bad = idx.copy()
+    bad[:4] = 12
+    with pytest.raises(ValueError, match=r"palette index 12 beyond its PLTE of 8 entries"):
+        read_image(_palette_png(tmp_path / "oob.png", bad, pal))
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        got = read_image(_palette_png(tmp_path / "t.png", idx, pal, trns=bytes([0, 128])))
+    np.testing.assert_array_equal(got, pal[idx])        # the colours, as without tRNS
+    blob = bytearray((tmp_path / "p.png").read_bytes())
+    blob[33 + 8 + 24 + 2] ^= 0xFF                        # a byte of the PLTE chunk's CRC
+    (tmp_path / "crc.png").write_bytes(bytes(blob))
+    capfd.readouterr()
+    assert main(["simulate", str(tmp_path / "crc.png"), "--out", str(tmp_path / "o"),
+                 "--quiet"]) == 2
+    err = capfd.readouterr().err.strip().splitlines()
+    assert err == [f"rgbz-fast simulate: error: path: cannot read {tmp_path / 'crc.png'} as an "
+                   "image (a damaged PNG that Pillow cannot identify: a chunk's CRC or the "
+                   "header)"], err
+
+
+def test_a_dataset_says_which_entries_it_leaves_out(tmp_path):
+    """H84: a broken link or a FIFO under an image's name in a dataset folder was left out
+    without a word (the run evaluated one image of three); a folder named like an image is
+    no image and stays out silently."""
+    from PIL import Image
+
+    Image.fromarray(np.zeros((8, 8, 3), np.uint8)).save(tmp_path / "a.png")
+    (tmp_path / "dangling.png").symlink_to(tmp_path / "gone" / "b.png")
+    os.mkfifo(tmp_path / "f.tif")
+    (tmp_path / "sub.png").mkdir()
+    with pytest.warns(UserWarning, match=r"^dataset: left out 'dangling.png', 'f.tif' of .*: "
+                                         "not regular files"):
+        assert [s.name for s in rio.folder_dataset(tmp_path)] == ["a"]

@@ -725,6 +725,34 @@ def file_label(name):
 LABEL_MAX = 48
 
 
+def batch(args, inputs, out):
+    """Run a command's inputs in turn, telling on a failure what was already written.
+
+    ``with batch(args, inputs, out) as done:`` around the loop, ``done.append(path)`` after
+    each input's outputs are written. An input that fails stops the run (its message as
+    before), and when others were written before it the message says so: with ``a bad c``
+    the outputs of ``a`` stayed in ``out`` and ``c`` never ran, without a word of either."""
+    import contextlib
+
+    @contextlib.contextmanager
+    def run():
+        done = []
+        try:
+            yield done
+        except (CliError, ValueError, TypeError, OSError) as exc:
+            if not done:
+                raise
+            text = os_error_words(exc, args) if isinstance(exc, OSError) \
+                and exc.filename is not None and str(exc).startswith("[Errno") \
+                else explain(exc, args.parser)
+            n, left = len(done), len(inputs) - len(done) - 1
+            raise CliError(f"{text.splitlines()[0] if text else type(exc).__name__} ({n} "
+                           f"input{'s' * (n > 1)} before it written to {out}, {left} after it "
+                           "not run)") from None
+
+    return run()
+
+
 def must_exist(paths, prefix="path: "):
     """A CliError naming the first path of ``paths`` that does not exist."""
     for f in paths:

@@ -87,58 +87,60 @@ def run(args):
     outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth.png", f"{f.stem}_depth-flags.png",
                  f"{f.stem}_depth-flags.tif"] + [f.stem + x for x in full]) for f in args.frames]
     c.unique_outputs(outs, out, reads=[args.calibration])
-    for f, (tif_name, png_name, flags_name, bits_name, *full_names) in outs:
-        frame = load_frame(f, **c.limits(args))
-        if frame.tof is None:
-            raise c.CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such "
-                             "as an RGB-D folder, and save it as .npz)")
-        guide = None
-        if full_names:                 # the frame's own colour image, as a chip would have it
-            from ..isp import ColourISP
-            guide = ColourISP().run(frame, workers=args.workers)
-        res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
-                        min_snr=args.min_snr, max_sigma=args.max_sigma,
-                        flying_step=args.flying_step, min_reflectance=args.min_reflectance,
-                        max_range=args.max_range, guide=guide, workers=args.workers)
-        depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
-        flags = res.to_frame(res.flags.astype(np.uint16), fill=NO_MEASUREMENT).astype(np.uint8)
-        summary = depth_summary(frame.tof, res)
-        buf = io.BytesIO()
-        tifffile.imwrite(buf, depth, description=json.dumps(
-            {"unit": "m", "invalid": "NaN", "source": str(f), **summary}))
-        atomic_write(out / tif_name, buf.getvalue())
-        bits = io.BytesIO()
-        tifffile.imwrite(bits, flags, description=json.dumps(
-            {"flags": FLAG_LEGEND, "colour site": NO_MEASUREMENT, "source": str(f)}))
-        atomic_write(out / bits_name, bits.getvalue())
-        title = (f"{f.stem}: depth, {100 * summary['valid_fraction']:.1f} % of "
-                 f"{summary['measurements']} measurements valid")
-        nearest = nearest_measurement(res)                  # both figures' grid
-        atomic_write(out / png_name, depth_preview(
-            res, title, args.range,
-            frame.tof.valid if "truth_unknown_fraction" in summary else None, nearest))
-        atomic_write(out / flags_name, depth_flags_figure(res, f"{f.stem}: why measurements "
-                                                                "are flagged", nearest))
-        if full_names:
-            from ..tof import upsample_depth
-            up, conf = upsample_depth(res, guide, workers=args.workers)
+    with c.batch(args, outs, out) as done:
+        for f, (tif_name, png_name, flags_name, bits_name, *full_names) in outs:
+            frame = load_frame(f, **c.limits(args))
+            if frame.tof is None:
+                raise c.CliError(f"path: {f} holds no ToF taps (simulate a scene with depth, such "
+                                 "as an RGB-D folder, and save it as .npz)")
+            guide = None
+            if full_names:                 # the frame's own colour image, as a chip would have it
+                from ..isp import ColourISP
+                guide = ColourISP().run(frame, workers=args.workers)
+            res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
+                            min_snr=args.min_snr, max_sigma=args.max_sigma,
+                            flying_step=args.flying_step, min_reflectance=args.min_reflectance,
+                            max_range=args.max_range, guide=guide, workers=args.workers)
+            depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
+            flags = res.to_frame(res.flags.astype(np.uint16), fill=NO_MEASUREMENT).astype(np.uint8)
+            summary = depth_summary(frame.tof, res)
             buf = io.BytesIO()
-            tifffile.imwrite(buf, up, description=json.dumps(
-                {"unit": "m", "invalid": "NaN", "source": str(f),
-                 "covered_fraction": float(np.isfinite(up).mean())}))
-            atomic_write(out / full_names[0], buf.getvalue())
-            atomic_write(out / full_names[1], full_depth_preview(
-                up, f"{f.stem}: depth at every pixel", args.range))
-            buf = io.BytesIO()                  # how much each depth is to be trusted
-            tifffile.imwrite(buf, conf, description=json.dumps(
-                {"unit": "1", "range": [0, 1], "source": str(f),
-                 "meaning": "summed weight of the measurements the depth comes from; 0 where "
-                            "it is NaN"}))
-            atomic_write(out / full_names[2], buf.getvalue())
-        if not args.quiet:
-            extra = "".join(f", {n}" for n in full_names)
-            print(f"{f} -> {out / tif_name}, {png_name}, {flags_name}, {bits_name}{extra}: "
-                  f"{summary['text']}")
+            tifffile.imwrite(buf, depth, description=json.dumps(
+                {"unit": "m", "invalid": "NaN", "source": str(f), **summary}))
+            atomic_write(out / tif_name, buf.getvalue())
+            bits = io.BytesIO()
+            tifffile.imwrite(bits, flags, description=json.dumps(
+                {"flags": FLAG_LEGEND, "colour site": NO_MEASUREMENT, "source": str(f)}))
+            atomic_write(out / bits_name, bits.getvalue())
+            title = (f"{f.stem}: depth, {100 * summary['valid_fraction']:.1f} % of "
+                     f"{summary['measurements']} measurements valid")
+            nearest = nearest_measurement(res)                  # both figures' grid
+            atomic_write(out / png_name, depth_preview(
+                res, title, args.range,
+                frame.tof.valid if "truth_unknown_fraction" in summary else None, nearest))
+            atomic_write(out / flags_name, depth_flags_figure(res, f"{f.stem}: why measurements "
+                                                                    "are flagged", nearest))
+            if full_names:
+                from ..tof import upsample_depth
+                up, conf = upsample_depth(res, guide, workers=args.workers)
+                buf = io.BytesIO()
+                tifffile.imwrite(buf, up, description=json.dumps(
+                    {"unit": "m", "invalid": "NaN", "source": str(f),
+                     "covered_fraction": float(np.isfinite(up).mean())}))
+                atomic_write(out / full_names[0], buf.getvalue())
+                atomic_write(out / full_names[1], full_depth_preview(
+                    up, f"{f.stem}: depth at every pixel", args.range))
+                buf = io.BytesIO()                  # how much each depth is to be trusted
+                tifffile.imwrite(buf, conf, description=json.dumps(
+                    {"unit": "1", "range": [0, 1], "source": str(f),
+                     "meaning": "summed weight of the measurements the depth comes from; 0 where "
+                                "it is NaN"}))
+                atomic_write(out / full_names[2], buf.getvalue())
+            if not args.quiet:
+                extra = "".join(f", {n}" for n in full_names)
+                print(f"{f} -> {out / tif_name}, {png_name}, {flags_name}, {bits_name}{extra}: "
+                      f"{summary['text']}")
+            done.append(f)
     return 0
 
 

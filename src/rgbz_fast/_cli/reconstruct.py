@@ -158,50 +158,52 @@ def run(args):
     names = [(f, f"{f.stem}{label or ''}") for f in args.frames]
     c.unique_outputs([(f, [f"{n}_{method}{ext}", f"{n}_reference{ext}"]) for f, n in names], out,
                      reads=[*(args.filters or ()), args.raw_options])
-    for f, stem in names:
-        kw, explicit = raw_kwargs(args, f, from_file)
-        # a raw file keeps its own bit depth unless --bit-depth says otherwise
-        bit_depth = args.bit_depth if args.bit_depth is not None or args.pattern is not None \
-            else "input"
-        try:
-            frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args),
-                               **kw)
-        except ValueError as exc:
-            # load_frame refuses raw options for a frame file (they had been ignored when they
-            # came from --raw-options); the flags are named by the error mechanism
-            key, _, rest = str(exc).partition(": ")
-            if key in kw and key not in explicit:
-                raise c.CliError(f"--raw-options: {key} for {f.name}: {rest}") from None
-            flags = {k: "--" + dest.replace("_", "-") for dest, k in RAW_FLAGS}
-            if key in explicit and key in flags:       # --saturation-level gives clip_level
-                raise c.CliError(f"{flags[key]}: {rest}") from None
-            raise
-        frame = _with_z_sites(frame, f, args.rgbz_pattern)
-        if args.method.strip().lower() in NEEDS_TOF and frame.tof is None:
-            # the library's advice (pass nir=) has no flag here: say what a user of the
-            # command does
-            raise c.CliError(f"--method {args.method.strip()}: {f} carries no ToF taps, and "
-                             "the method is guided by the NIR amplitude the Z pixels measure; "
-                             "give a frame simulated from a scene with depth (rgbz-fast "
-                             "simulate SCENE_FOLDER holding rgb.png, disp1.png, dmin.txt) or "
-                             "another --method")
-        cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
-        ref = frame.reference
-        dest = out / f"{stem}_{method}{ext}"
-        ref_dest = out / f"{stem}_reference{ext}" if ref is not None else None
-        if args.output == "cfa":
-            _write_cfa(dest, cfa, frame, args.method.strip().lower())
-            if ref is not None:
-                _write_cfa(ref_dest, ref, frame, "reference")
-        else:
-            _write_srgb(dest, ref_dest, cfa, frame, args)
-        if not args.quiet:
-            extra = ""
-            if ref is not None:
-                psnr = cfa_psnr(ref, cfa, frame.z_mask, bit_depth=frame.bit_depth)
-                extra = f", reference {ref_dest}; CFA PSNR at the Z sites {psnr:.2f} dB"
-            print(f"{f} -> {dest} ({frame.pattern.name}, {frame.shape[0]}x{frame.shape[1]}"
-                  f"{extra})")
+    with c.batch(args, names, out) as done:
+        for f, stem in names:
+            kw, explicit = raw_kwargs(args, f, from_file)
+            # a raw file keeps its own bit depth unless --bit-depth says otherwise
+            bit_depth = args.bit_depth if args.bit_depth is not None or args.pattern is not None \
+                else "input"
+            try:
+                frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args),
+                                   **kw)
+            except ValueError as exc:
+                # load_frame refuses raw options for a frame file (they had been ignored when they
+                # came from --raw-options); the flags are named by the error mechanism
+                key, _, rest = str(exc).partition(": ")
+                if key in kw and key not in explicit:
+                    raise c.CliError(f"--raw-options: {key} for {f.name}: {rest}") from None
+                flags = {k: "--" + dest.replace("_", "-") for dest, k in RAW_FLAGS}
+                if key in explicit and key in flags:       # --saturation-level gives clip_level
+                    raise c.CliError(f"{flags[key]}: {rest}") from None
+                raise
+            frame = _with_z_sites(frame, f, args.rgbz_pattern)
+            if args.method.strip().lower() in NEEDS_TOF and frame.tof is None:
+                # the library's advice (pass nir=) has no flag here: say what a user of the
+                # command does
+                raise c.CliError(f"--method {args.method.strip()}: {f} carries no ToF taps, and "
+                                 "the method is guided by the NIR amplitude the Z pixels measure; "
+                                 "give a frame simulated from a scene with depth (rgbz-fast "
+                                 "simulate SCENE_FOLDER holding rgb.png, disp1.png, dmin.txt) or "
+                                 "another --method")
+            cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
+            ref = frame.reference
+            dest = out / f"{stem}_{method}{ext}"
+            ref_dest = out / f"{stem}_reference{ext}" if ref is not None else None
+            if args.output == "cfa":
+                _write_cfa(dest, cfa, frame, args.method.strip().lower())
+                if ref is not None:
+                    _write_cfa(ref_dest, ref, frame, "reference")
+            else:
+                _write_srgb(dest, ref_dest, cfa, frame, args)
+            if not args.quiet:
+                extra = ""
+                if ref is not None:
+                    psnr = cfa_psnr(ref, cfa, frame.z_mask, bit_depth=frame.bit_depth)
+                    extra = f", reference {ref_dest}; CFA PSNR at the Z sites {psnr:.2f} dB"
+                print(f"{f} -> {dest} ({frame.pattern.name}, {frame.shape[0]}x{frame.shape[1]}"
+                      f"{extra})")
+            done.append(f)
     return 0
 
 

@@ -40,8 +40,6 @@ def run(args):
     from tqdm.auto import tqdm
 
     from .._patterns import get_pattern
-    from ..io import save_frame
-    from ..simulation import load_scene, simulate
 
     pattern = get_pattern(args.pattern)
     if not args.noise and c.given(args, "seed"):
@@ -53,28 +51,38 @@ def run(args):
     dests = [(s, f"{s.stem if not s.is_dir() else s.name}_{c.file_label(pattern)}{suffix}")
              for s in args.scenes]
     c.unique_outputs([(s, [n]) for s, n in dests], out)
-    for s, name in tqdm(dests, desc="simulate", unit="scene", disable=not c.bars(args)):
-        try:
-            scene = load_scene(s, grey=args.grey, input_bits=args.input_bits, **c.limits(args))
-            frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)
-        except (ValueError, TypeError) as exc:
-            # about a scene's content ("image: holds 1 NaN", "scene: too dark for
-            # auto-exposure"): which of the scenes given
-            msg = c.explain(exc, args.parser)
-            what, _, rest = msg.partition(": ")
-            if what == "scene":
-                msg = f"scene {s}: {rest}"
-            elif what in ("image", "depth", "depth_valid", "ir_reflectance", "wavelengths"):
-                msg = f"scene {s}: {msg}"
-            raise c.CliError(msg) from None
-        with warnings.catch_warnings():          # the line below says what a TIFF keeps
-            warnings.filterwarnings("ignore", r"path: .* does not keep the (reference CFA|ToF)",
-                                    UserWarning)
-            save_frame(out / name, frame)        # the folder appears with its first file
-        if not args.quiet:
-            print(f"{s} -> {out / name} ({frame.shape[0]}x{frame.shape[1]}, "
-                  f"{_what_is_kept(frame, scene, pattern, suffix)})")
+    with c.batch(args, dests, out) as done:
+        for s, name in tqdm(dests, desc="simulate", unit="scene", disable=not c.bars(args)):
+            _simulate_one(args, s, name, out, pattern, suffix)
+            done.append(s)
     return 0
+
+
+def _simulate_one(args, s, name, out, pattern, suffix):
+    """Simulate scene ``s`` and write its frame to ``out / name``."""
+    from ..io import save_frame
+    from ..simulation import load_scene, simulate
+
+    try:
+        scene = load_scene(s, grey=args.grey, input_bits=args.input_bits, **c.limits(args))
+        frame = simulate(scene, pattern, seed=args.seed, noise=args.noise)
+    except (ValueError, TypeError) as exc:
+        # about a scene's content ("image: holds 1 NaN", "scene: too dark for
+        # auto-exposure"): which of the scenes given
+        msg = c.explain(exc, args.parser)
+        what, _, rest = msg.partition(": ")
+        if what == "scene":
+            msg = f"scene {s}: {rest}"
+        elif what in ("image", "depth", "depth_valid", "ir_reflectance", "wavelengths"):
+            msg = f"scene {s}: {msg}"
+        raise c.CliError(msg) from None
+    with warnings.catch_warnings():          # the line below says what a TIFF keeps
+        warnings.filterwarnings("ignore", r"path: .* does not keep the (reference CFA|ToF)",
+                                UserWarning)
+        save_frame(out / name, frame)        # the folder appears with its first file
+    if not args.quiet:
+        print(f"{s} -> {out / name} ({frame.shape[0]}x{frame.shape[1]}, "
+              f"{_what_is_kept(frame, scene, pattern, suffix)})")
 
 
 def _what_is_kept(frame, scene, pattern, suffix):

@@ -214,9 +214,16 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     if not p.is_dir():                             # a file, or a FIFO the reader will refuse
         files = [p]
     else:
-        files = sorted(f for f in p.iterdir()
-                       if f.is_file() and f.suffix.lower() in IMAGE_SUFFIXES | RAW_SUFFIXES
-                       and not f.name.startswith("."))
+        named = [f for f in p.iterdir() if f.suffix.lower() in IMAGE_SUFFIXES | RAW_SUFFIXES
+                 and not f.name.startswith(".")]
+        files = sorted(f for f in named if f.is_file())
+        odd = sorted(f.name for f in named if not f.is_file() and not f.is_dir())
+        if odd:                 # they had been left out without a word (a folder is no image)
+            import warnings
+
+            warnings.warn(f"dataset: left out {', '.join(map(repr, odd))} of {p}: not "
+                          "regular files (a broken link, a FIFO, a socket or a device)",
+                          UserWarning, stacklevel=2)
     if not files:
         raise ParameterError("dataset", f"no image files in {p} (looked for "
                                         f"{', '.join(sorted(IMAGE_SUFFIXES))})")

@@ -5,10 +5,12 @@ returns the picture's samples -- grey, RGB or RGB + alpha, in the file's own
 bit depth -- or raises ValueError saying what the file holds instead:
 
 * TIFF (tifffile, first page): a palette image gives its colours, not its
-  indices; MINISWHITE is inverted (0 is white there); planar RGB becomes
-  (rows, cols, 3); CMYK (SEPARATED), CIELAB and uncompressed YCbCr are
-  refused -- their samples are no RGB, and a converted CMYK needs its colour
-  profile.
+  indices; MINISWHITE is inverted (0 is white there); planar samples (RGB,
+  grey + alpha) become interleaved, (rows, cols, samples); samples of fewer
+  bits than their type (12 in uint16) are scaled to its full range, as a
+  PNM's maxval (a raw mosaic keeps its codes); CMYK (SEPARATED), CIELAB and
+  uncompressed YCbCr are refused -- their samples are no RGB, and a converted
+  CMYK needs its colour profile.
 * PGM and PPM (``P2``, ``P3``, ``P5``, ``P6``): 8-bit samples as uint8 and
   16-bit ones as uint16, the format's own rule; a ``maxval`` other than 255
   or 65535 is scaled to that full range (a 12-bit PGM of maxval 4095 is no
@@ -46,8 +48,14 @@ def _refuse(kind):
                      "(a CMYK image with its colour profile)")
 
 
-def decode_tiff(data):
-    """The first page of a TIFF as grey, RGB or RGBA samples (see the module docstring)."""
+def decode_tiff(data, full_range=True):
+    """The first page of a TIFF as grey, RGB or RGBA samples (see the module docstring).
+
+    ``full_range``: integer samples of fewer bits than their type (BitsPerSample 2-7 in
+    uint8, 9-15 in uint16: tifffile unpacks them when imagecodecs is installed) are scaled
+    to the type's full range, rounded half up, as a PNM's ``maxval`` is (a 12-bit TIFF had
+    read 16 times too dark); False keeps the stored codes (a raw mosaic, whose white level
+    is its own)."""
     with open_tiff(data) as tf:
         page = tf.pages[0]
         photometric = int(page.photometric)
@@ -64,11 +72,29 @@ def decode_tiff(data):
                 raise ValueError(f"palette index {int(img.max())} beyond its colour map of "
                                  f"{cmap.shape[1]} entries")
             img = np.moveaxis(cmap, 0, -1)[img]             # (rows, cols, 3), 16-bit colours
-        elif int(page.planarconfig) == 2 and img.ndim == 3 and img.shape[0] in (3, 4):
-            img = np.moveaxis(img, 0, -1)                  # planar RGB(A) -> interleaved
+        elif (int(page.planarconfig) == 2 and int(page.samplesperpixel) > 1
+              and img.ndim == 3 and img.shape[0] == int(page.samplesperpixel)):
+            # planar -> interleaved: RGB(A), and grey + alpha, whose (2, rows, cols) had
+            # read as two rows of colour when 3 or 4 pixels wide
+            img = np.moveaxis(img, 0, -1)
         if photometric == _MINISWHITE:
             img = _invert(img)
+        bits = int(page.bitspersample)
+    if full_range and photometric != _PALETTE and img.dtype.kind == "u":
+        img = _to_full_range(img, bits)
     return img
+
+
+def _to_full_range(img, bits):
+    """Unsigned samples of ``bits`` bits scaled to their type's full range, rounded half up
+    exactly (as :func:`decode_pnm`'s maxval); unchanged when the bits fill the type."""
+    n = 8 * img.dtype.itemsize
+    if not 1 < bits < n:
+        return img
+    top, maxval = (1 << n) - 1, (1 << bits) - 1
+    if img.size and int(img.max()) > maxval:
+        raise ValueError(f"a sample of {int(img.max())} above its {bits}-bit range")
+    return ((img.astype(np.uint64) * (2 * top) + maxval) // (2 * maxval)).astype(img.dtype)
 
 
 def _invert(img):

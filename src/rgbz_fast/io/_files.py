@@ -17,6 +17,7 @@ import os
 import secrets
 import stat
 import struct
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -381,15 +382,60 @@ def _decode_default(data, suffix):
         return decode_tiff(data)
     if data[:2] in PNM_MAGIC:
         return decode_pnm(data)
-    if png is not None and png[3] == 8:
-        plain = _decode_png8(data)                   # None: the file is imageio's case
-        if plain is not None:
-            return plain
     if png is not None:
-        import imageio.v3 as iio
+        from PIL import UnidentifiedImageError
 
-        return iio.imread(data, extension=".png")
+        try:
+            plain = _decode_png8(data) if png[3] == 8 else None   # None: imageio's case
+            return plain if plain is not None else _decode_png_pillow(data)
+        except UnidentifiedImageError:                 # its message shows a memory address
+            raise ValueError("a damaged PNG that Pillow cannot identify: a chunk's CRC or "
+                             "the header") from None
     return decode_pillow(data)
+
+
+def _decode_png_pillow(data):
+    """The other PNGs (palette, 1-4 bits, 16-bit grey, ...) by imageio's Pillow plugin alone:
+    on a damaged file imageio tried its other plugins in turn, and OpenCV's and libpng's lines
+    reached stderr before an error of "index `Ellipsis`". A palette index beyond the PLTE
+    is refused (Pillow painted it black), and Pillow's advice to convert a palette image
+    with a transparency chunk is not passed on (the image is read as its colours)."""
+    import imageio.v3 as iio
+    from PIL import Image
+
+    if data[25] == 3:                                   # colour type 3: a palette
+        entries = _png_palette_entries(data)
+        if entries is not None:
+            with Image.open(io.BytesIO(data)) as im:
+                top = int(np.asarray(im).max(initial=0))
+            if top >= entries:
+                raise ValueError(f"palette index {top} beyond its PLTE of {entries} entries")
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="Palette images with Transparency")
+        return iio.imread(data, extension=".png", plugin="pillow")
+
+
+def _png_palette_entries(data):
+    """The number of colours of a PNG's PLTE chunk, or None when the chunks cannot be walked
+    to it (the decoder then says what is wrong)."""
+    pos = 8
+    while pos + 8 <= len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"PLTE":
+            return n // 3
+        if kind == b"IDAT":
+            return None
+        pos += 12 + n
+    return None
+
+
+def decode_codes(data):
+    """As the default decoder, but a TIFF's samples stay the codes it stores when they fill
+    fewer bits than their type (a 12-bit raw mosaic in uint16: its white level is its own;
+    :func:`~rgbz_fast.io._decode.decode_tiff`'s ``full_range``)."""
+    if data[:4] in _TIFF_MAGIC:
+        return decode_tiff(data, full_range=False)
+    return _decode_default(data, "")
 
 
 def _decode_png8(data):
@@ -420,7 +466,8 @@ def read_image(path, name="path", decode=None, *, max_pixels=None, max_bytes=Non
         ``decode(data: bytes) -> array_like``; default: by the format the
         bytes start with, whatever the extension: 16-bit RGB(A) PNGs at full
         precision, the first page of a TIFF (palette colours, MINISWHITE
-        inverted, planar RGB interleaved), PGM/PPM at 8 or 16 bits, other
+        inverted, planar samples interleaved, samples of fewer bits than
+        their type scaled to its range), PGM/PPM at 8 or 16 bits, other
         formats through Pillow (first frame, palette colours); CMYK, CIELAB
         and YCbCr samples are refused (:mod:`rgbz_fast.io._decode`).
     max_pixels, max_bytes : int, optional
