@@ -185,22 +185,51 @@ typedef struct {
        neighbour (use, and n_eff > 0 in a second pass), else 0; rn the reciprocal of its
        n_eff (1 in a first pass, and where n_eff <= 0) */
     const float *gate, *rn;
+    /* 1: col holds a fourth plane, each guide variance's fixed-pattern share phi, and the
+       phasor term is the pair's Mahalanobis distance (tofg_xp); 0: chi over the variances */
+    int fp;
 } tofg_pass_args;
+
+/* The phasor term of a pair's weight, symmetric in the two measurements: chi / (gn + gm) -
+   2F, chi the summed squared differences of the guide phasors over the F frequencies and gn,
+   gm the two guide variances (per component). With fp, their fixed-pattern shares fn, fm:
+   a tap's DSNU offset and PRNU gain are the same in every frequency's frame, so a
+   measurement's errors of I (and of Q) share a part that is one value in every frequency
+   (the taps' offsets barely change with the frequency); the pair's covariance per component
+   block is S I + A 1 1^T, S = gn + gm - A the temporal part, A = gn fn + gm fm the fixed one,
+   and the Mahalanobis distance (Sherman-Morrison) is (chi - A q / D) / S, D = S + F A, q =
+   (sum_f dre)^2 + (sum_f dim)^2: differences the fixed pattern explains, one offset in every
+   frequency, weigh less, and the mean no longer prefers the neighbours whose fixed pattern
+   resembles the centre's (docs/reports/isp.md, bright near walls). Its expectation is 2F as
+   chi's. */
+RGBZ_INLINE float tofg_xp(float chi, float sr, float si, float gn, float gm, float fn,
+                          float fm, float nf, float bias, const int FP)
+{
+    if (!FP) return chi / (gn + gm) - bias;
+    const float A = gn * fn + gm * fm, S = (gn + gm) - A;
+    const float D = S + nf * A, q = sr * sr + si * si;
+    return (chi * D - q * A) / (S * D) - bias;
+}
 
 /* the weights of one offset over the cells [c0, c1) of a row: w (0 or 1 on entry) times
    exp(-(max(chi_p - 2F, 0) / (2 h^2) + max(chi_c - 3, 0) / (2 h_c^2))), chi_p from the
    summed squared guide differences in chi (divided here by the two variances) */
 RGBZ_INLINE void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_t row0,
                                      ptrdiff_t c0, ptrdiff_t c1, float bias,
-                                     const float *restrict chi, float *restrict w)
+                                     const float *restrict chi, const float *restrict sr,
+                                     const float *restrict si, float *restrict w)
 {
     const ptrdiff_t N = p->cs;
     const float *gvn = p->gv + nbase, *gvm = p->gv + row0;
     const float *a0 = p->col + nbase, *a1 = a0 + N, *a2 = a1 + N;
     const float *b0 = p->col + row0, *b1 = b0 + N, *b2 = b1 + N;
-    const float ih = p->inv2h2, ic = p->inv2hc2;
+    const float *fn = a2 + N, *fm = b2 + N;
+    const float ih = p->inv2h2, ic = p->inv2hc2, nf = (float)p->F;
     for (ptrdiff_t c = c0; c < c1; c++) {
-        const float xp = chi[c] / (gvn[c] + gvm[c]) - bias;
+        const float xp = p->fp ? tofg_xp(chi[c], sr[c], si[c], gvn[c], gvm[c], fn[c], fm[c],
+                                         nf, bias, 1)
+                               : tofg_xp(chi[c], 0.0f, 0.0f, gvn[c], gvm[c], 0.0f, 0.0f, nf,
+                                         bias, 0);
         const float d0 = a0[c] - b0[c], d1 = a1[c] - b1[c], d2 = a2[c] - b2[c];
         const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
         const float x = (xp > 0.0f ? xp : 0.0f) * ih + (xc > 0.0f ? xc : 0.0f) * ic;
@@ -209,7 +238,7 @@ RGBZ_INLINE void tofg_weights(const tofg_pass_args *p, ptrdiff_t nbase, ptrdiff_
 }
 
 /* the output columns [clo, chi_) of row r, any layout; scratch: num_re, num_im (F C each),
-   den, w2v, w2n, chi, w (C each) */
+   den, w2v, w2n, chi, w, sr, si (C each) */
 RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, float *scratch,
                                       ptrdiff_t clo, ptrdiff_t chi_)
 {
@@ -217,6 +246,7 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
     const float bias = 2.0f * (float)F;
     float *num_re = scratch, *num_im = num_re + F * C, *den = num_im + F * C;
     float *w2v = den + C, *w2n = w2v + C, *chi = w2n + C, *w = chi + C;
+    float *sr = w + C, *si = sr + C;
     for (ptrdiff_t f = 0; f < F; f++)
         for (ptrdiff_t c = clo; c < chi_; c++) num_re[f * C + c] = num_im[f * C + c] = 0.0f;
     for (ptrdiff_t c = clo; c < chi_; c++) den[c] = w2v[c] = w2n[c] = 0.0f;
@@ -240,13 +270,15 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
         c1 = c1 < chi_ ? c1 : chi_;
         if (c1 <= c0) continue;
         const ptrdiff_t nbase = row0 + shift;
-        for (ptrdiff_t c = c0; c < c1; c++) chi[c] = 0.0f;
+        for (ptrdiff_t c = c0; c < c1; c++) chi[c] = sr[c] = si[c] = 0.0f;
         for (ptrdiff_t f = 0; f < F; f++) {
             const float *gr = p->gr + f * GS, *gi = p->gi + f * GS;
             for (ptrdiff_t c = c0; c < c1; c++) {
                 const float dre = gr[nbase + c] - gr[row0 + c];
                 const float dim = gi[nbase + c] - gi[row0 + c];
                 chi[c] += dre * dre + dim * dim;
+                sr[c] += dre;
+                si[c] += dim;
             }
         }
         /* w = 1 for a neighbour that may enter, 0 otherwise; then times its weight */
@@ -263,7 +295,7 @@ RGBZ_CLONES_512 static void tofg_pass_row(const tofg_pass_args *p, ptrdiff_t r, 
             const float *nn = p->nin + nbase;
             for (ptrdiff_t c = c0; c < c1; c++) w[c] = nn[c] > 0.0f ? w[c] : 0.0f;
         }
-        tofg_weights(p, nbase, row0, c0, c1, bias, chi, w);
+        tofg_weights(p, nbase, row0, c0, c1, bias, chi, sr, si, w);
         for (ptrdiff_t f = 0; f < F; f++) {
             const float *zr = p->zr + f * ZS + nbase, *zi = p->zi + f * ZS + nbase;
             float *nr = num_re + f * C, *ni = num_im + f * C;
@@ -430,14 +462,20 @@ RGBZ_INLINE void tofg_block(
             for (int j = 0; j < TOFG_BW; j++) w[j] *= e[j];
         } else {
             for (int j = 0; j < TOFG_BW; j++) {
-                float chi = 0.0f;
+                float chi = 0.0f, sr = 0.0f, si = 0.0f;
                 TOFG_UNROLL
                 for (int f = 0; f < NF; f++) {
                     const float dre = p->gr[f * GS + n0 + j] - gr0[f][j];
                     const float dim = p->gi[f * GS + n0 + j] - gi0[f][j];
                     chi += dre * dre + dim * dim;
+                    sr += dre;
+                    si += dim;
                 }
-                const float xp = chi / (p->gv[n0 + j] + gv0[j]) - bias;
+                const float xp = p->fp
+                    ? tofg_xp(chi, sr, si, p->gv[n0 + j], gv0[j], p->col[3 * N + n0 + j],
+                              p->col[3 * N + m0 + j], (float)NF, bias, 1)
+                    : tofg_xp(chi, 0.0f, 0.0f, p->gv[n0 + j], gv0[j], 0.0f, 0.0f, (float)NF,
+                              bias, 0);
                 const float d0 = p->col[n0 + j] - k0[j], d1 = p->col[N + n0 + j] - k1[j];
                 const float d2 = p->col[2 * N + n0 + j] - k2[j];
                 const float xc = (d0 * d0 + d1 * d1) + d2 * d2 - 3.0f;
@@ -500,19 +538,24 @@ RGBZ_INLINE void tofg_block_e(
    differences, the sum of the two variances), so e(m, n) == e(n, m) bit for bit and each
    pair's exp is taken once for both directions. */
 RGBZ_INLINE void tofg_pair(const tofg_pass_args *p, ptrdiff_t m0, ptrdiff_t n0, ptrdiff_t cnt,
-                           float *restrict e, const int NF)
+                           float *restrict e, const int NF, const int FP)
 {
     const ptrdiff_t GS = p->gs, N = p->cs;
     const float bias = 2.0f * NF, ih = p->inv2h2, ic = p->inv2hc2;
+    const float *phi = FP ? p->col + 3 * N : p->gv;      /* (not read without FP) */
     for (ptrdiff_t j = 0; j < cnt; j++) {
-        float chi = 0.0f;
+        float chi = 0.0f, sr = 0.0f, si = 0.0f;
         TOFG_UNROLL
         for (int f = 0; f < NF; f++) {
             const float dre = p->gr[f * GS + n0 + j] - p->gr[f * GS + m0 + j];
             const float dim = p->gi[f * GS + n0 + j] - p->gi[f * GS + m0 + j];
             chi += dre * dre + dim * dim;
+            sr += dre;
+            si += dim;
         }
-        const float xp = chi / (p->gv[n0 + j] + p->gv[m0 + j]) - bias;
+        const float xp = tofg_xp(chi, sr, si, p->gv[n0 + j], p->gv[m0 + j],
+                                 FP ? phi[n0 + j] : 0.0f, FP ? phi[m0 + j] : 0.0f, (float)NF,
+                                 bias, FP);
         const float d0 = p->col[n0 + j] - p->col[m0 + j];
         const float d1 = p->col[N + n0 + j] - p->col[N + m0 + j];
         const float d2 = p->col[2 * N + n0 + j] - p->col[2 * N + m0 + j];
@@ -532,11 +575,20 @@ RGBZ_CLONES_512 static void tofg_pairs(const tofg_pass_args *p, ptrdiff_t m0, pt
         for (ptrdiff_t j = 0; j < cnt; j++) e[j] = self;
         return;
     }
+    if (p->fp) {
+        switch (p->F) {
+        case 1: tofg_pair(p, m0, n0, cnt, e, 1, 1); break;
+        case 2: tofg_pair(p, m0, n0, cnt, e, 2, 1); break;
+        case 3: tofg_pair(p, m0, n0, cnt, e, 3, 1); break;
+        default: tofg_pair(p, m0, n0, cnt, e, 4, 1); break;
+        }
+        return;
+    }
     switch (p->F) {
-    case 1: tofg_pair(p, m0, n0, cnt, e, 1); break;
-    case 2: tofg_pair(p, m0, n0, cnt, e, 2); break;
-    case 3: tofg_pair(p, m0, n0, cnt, e, 3); break;
-    default: tofg_pair(p, m0, n0, cnt, e, 4); break;
+    case 1: tofg_pair(p, m0, n0, cnt, e, 1, 0); break;
+    case 2: tofg_pair(p, m0, n0, cnt, e, 2, 0); break;
+    case 3: tofg_pair(p, m0, n0, cnt, e, 3, 0); break;
+    default: tofg_pair(p, m0, n0, cnt, e, 4, 0); break;
     }
 }
 
@@ -707,7 +759,7 @@ static void tofg_gates(const uint8_t *use, const float *nin, ptrdiff_t n0, ptrdi
 }
 
 /* The output rows [ra, rb) of a pass in one thread: a column pass tile by tile (every tile's
-   rows in order), a row pass row by row. scratch: (2F + 5) C floats; E: q->ebuf floats. */
+   rows in order), a row pass row by row. scratch: (2F + 7) C floats; E: q->ebuf floats. */
 static void tofg_pass_rows(const tofg_pass_args *p, const tofg_plan *q, ptrdiff_t ra,
                            ptrdiff_t rb, float *scratch, float *E)
 {
@@ -733,14 +785,14 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
                    const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C, int axis,
                    const int64_t *px, ptrdiff_t reach, int64_t radius_px, double inv2h2,
                    double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
-                   float *ov, float *on, int workers)
+                   float *ov, float *on, int fixed, int workers)
 {
     if (!zr || !zi || !v || !gr || !gi || !gv || !col || !use || !px || !ov || !on
         || (!or64 && (!or_ || !oi)) || (or64 && !oi64) || F < 1 || F > RGBZ_TOF_MAX_FREQS
         || R < 0 || C < 0 || (axis != 0 && axis != 1) || reach < 0 || radius_px < 0
         || !(inv2h2 >= 0.0) || !(inv2hc2 >= 0.0))
         return RGBZ_EINVAL;
-    const size_t per_row = (size_t)(2 * F + 5) * (size_t)(C > 0 ? C : 1);
+    const size_t per_row = (size_t)(2 * F + 7) * (size_t)(C > 0 ? C : 1);
     int status = RGBZ_OK;
     const tofg_plan q = tofg_plan_of(px, axis == 1 ? C : R, axis, F, C, reach, radius_px);
     const int nth = rgbz_threads(workers);
@@ -758,7 +810,7 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
     }
     const tofg_pass_args p = {zr, zi, v, nin, gr, gi, gv, col, use, F, R, C, axis, px, reach,
                               radius_px, (float)inv2h2, (float)inv2hc2, or_, oi, ov, on,
-                              or64, oi64, N, N, N, N, 0, gate, rn};
+                              or64, oi64, N, N, N, N, 0, gate, rn, fixed != 0};
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth)
 #endif
@@ -855,7 +907,7 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
                                ptrdiff_t reach_r, ptrdiff_t reach_c, int64_t radius_px,
                                double inv2h2, double inv2hc2, double *or64, double *oi64,
                                float *ov, float *on, const tofg_unwrap_out *uw,
-                               ptrdiff_t strip, int nth)
+                               ptrdiff_t strip, int fp, int nth)
 {
     /* by default a multiple of the threads' count of strips of at most TOFG_STRIP rows, of
        even heights: the threads' shares stay even */
@@ -866,7 +918,7 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
     /* the rows of a strip's buffers: the first row pass over S + 4H rows, the other passes
        over S + 2H */
     const ptrdiff_t cap1 = S + 4 * H < R ? S + 4 * H : R, cap2 = S + 2 * H < R ? S + 2 * H : R;
-    const size_t per_row = (size_t)(2 * F + 5) * (size_t)C;
+    const size_t per_row = (size_t)(2 * F + 7) * (size_t)C;
     const size_t ebuf = qr.ebuf > qc.ebuf ? qr.ebuf : qc.ebuf;
     const size_t nbuf = (size_t)(2 * F + 2) * (size_t)C * (size_t)(cap1 + 2 * cap2)
                         + 2 * (size_t)cap1 * (size_t)C + per_row + ebuf;
@@ -918,6 +970,7 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
                                           col_px, reach_c, radius_px, fh, fc, B1.re, B1.im,
                                           NULL, NULL, B1.var, B1.neff, B1.stride, 0,
                                           qr.fast ? gate : NULL, qr.fast ? rn : NULL);
+            p.fp = fp;
             tofg_pass_rows(&p, &qr, 0, n1, scratch, E);
             /* 2: columns of 1 guided by themselves: the guide of the second round, [a2, b2) */
             if (qc.fast) tofg_gates(use + o1, B1.neff, 0, n1 * C, gate, rn);
@@ -925,6 +978,7 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
                            B1.stride, col + o1, N, use + o1, F, n1, C, 0, row_px + a1, reach_r,
                            radius_px, fh, fc, G1.re, G1.im, NULL, NULL, G1.var, G1.neff,
                            G1.stride, a2 - a1, qc.fast ? gate : NULL, qc.fast ? rn : NULL);
+            p.fp = fp;
             tofg_pass_rows(&p, &qc, a2 - a1, b2 - a1, scratch, E);
             /* 3: rows of the raw phasors guided by 2, [a2, b2) */
             if (qr.fast) tofg_gates(use + o2, NULL, 0, n2 * C, gate, rn);
@@ -932,6 +986,7 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
                            col + o2, N, use + o2, F, n2, C, 1, col_px, reach_c, radius_px, fh,
                            fc, B2.re, B2.im, NULL, NULL, B2.var, B2.neff, B2.stride, 0,
                            qr.fast ? gate : NULL, qr.fast ? rn : NULL);
+            p.fp = fp;
             tofg_pass_rows(&p, &qr, 0, n2, scratch, E);
             /* 4: columns of 3 guided by 2, the output rows [s0, s1) in double (to the strip's
                buffer when they are unwrapped here) */
@@ -942,6 +997,7 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
                            G1.stride, col + o2, N, use + o2, F, n2, C, 0, row_px + a2, reach_r,
                            radius_px, fh, fc, NULL, NULL, mr, mi, ov + s0 * C, on + s0 * C,
                            mean ? ns : N, s0 - a2, qc.fast ? gate : NULL, qc.fast ? rn : NULL);
+            p.fp = fp;
             tofg_pass_rows(&p, &qc, s0 - a2, s1 - a2, scratch, E);
             if (mean) {
                 const int st = rgbz_tof_depth_iq_strided(
@@ -987,6 +1043,7 @@ typedef struct {
     double *on64;
     const tofg_unwrap_out *uw;
     size_t nfloat, ndouble;       /* one thread's buffers */
+    int fp;                       /* col's fourth plane: the fixed-pattern shares (tofg_xp) */
 } tofg_slide;
 
 /* a tile: output columns [c0, c1), its view [v0, v0 + cv) of the frame's columns, the blocks
@@ -1016,7 +1073,7 @@ static tofg_slide_buf tofg_slide_buf_at(tofg_slide *S, float *base)
     b.ones = b.gate + KW;
     b.E = b.ones + W;
     b.colr = b.E + ((size_t)S->Ac + 1) * W;
-    b.r1 = b.colr + 3 * KW;
+    b.r1 = b.colr + 4 * KW;                      /* col's planes: 3 colours (and phi) */
     b.g2 = b.r1 + P;
     b.n2 = b.g2 + KW;
     b.gd = b.n2 + KW;
@@ -1068,7 +1125,7 @@ static tofg_pass_args tofg_slide_rowargs(const tofg_slide *S, const tofg_slide_b
     const tofg_pass_args p = {
         raw, raw + F * W, raw + 2 * F * W, NULL, gr, gi, gv, colrow, S->use, F, 1,
         W, 1, S->col_px, S->reach_c, S->radius_px, S->ih, S->ic, out, out + F * KW, out +
-        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, gate, b->ones};
+        2 * F * KW, out + (2 * F + 1) * KW, NULL, NULL, W, gs, KW, KW, 0, gate, b->ones, S->fp};
     return p;
 }
 
@@ -1168,17 +1225,17 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
         b->r1, b->r1 + F * KW, b->r1 + 2 * F * KW, b->r1 + (2 * F + 1) * KW, b->r1,
         b->r1 + F * KW, b->r1 + 2 * F * KW, b->colr, S->use, F, R, W, 0, S->row_px, S->reach_r,
         S->radius_px, S->ih, S->ic, b->gd, b->gd + F * KW, b->gd + 2 * F * KW,
-        b->gd + (2 * F + 1) * KW, NULL, NULL, KW, KW, KW, KW, 0, b->g2, b->n2};
+        b->gd + (2 * F + 1) * KW, NULL, NULL, KW, KW, KW, KW, 0, b->g2, b->n2, S->fp};
     tofg_pass_args p4 = {
         b->r3, b->r3 + F * KW, b->r3 + 2 * F * KW, b->r3 + (2 * F + 1) * KW, b->gd,
         b->gd + F * KW, b->gd + 2 * F * KW, b->colr, S->use, F, R, W, 0, S->row_px, S->reach_r,
         S->radius_px, S->ih, S->ic, NULL, NULL, b->tv, b->tn, b->t64, b->t64 + F * W, KW, KW,
-        KW, W, 0, b->g4, b->n4};
+        KW, W, 0, b->g4, b->n4, S->fp};
     int st = RGBZ_OK;
     for (ptrdiff_t t = lo1; t < hi1 + 2 * H; t++) {
         if (t < hi1) {                     /* 1: row t of the raw phasors guided by itself */
             const ptrdiff_t so = (t % K) * W;
-            for (int k = 0; k < 3; k++)
+            for (int k = 0; k < 3 + S->fp; k++)
                 memcpy(b->colr + k * KW + so + pd, S->col + k * N + t * C + T->v0,
                        (size_t)T->cv * sizeof(float));
             tofg_slide_raw(S, b, T, t);
@@ -1223,7 +1280,7 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
                       double *or64, double *oi64, float *ov, float *on, double *on64,
-                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers)
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int fixed, int workers)
 {
     if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || (!on && !on64)
         || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
@@ -1243,7 +1300,7 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
         if (!o) return RGBZ_ENOMEM;
         const int st = tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px,
                                            reach_r, reach_c, radius_px, inv2h2, inv2hc2, or64,
-                                           oi64, ov, o, uw, strip, nth);
+                                           oi64, ov, o, uw, strip, fixed != 0, nth);
         if (on64) {
             const ptrdiff_t N = R * C;
             RGBZ_PARALLEL_FOR
@@ -1290,6 +1347,7 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     S.on = on;
     S.on64 = on64;
     S.uw = uw;
+    S.fp = fixed != 0;
     (void)tofg_slide_buf_at(&S, NULL);
     const size_t nbytes = S.nfloat * sizeof(float) + S.ndouble * sizeof(double);
     int bad = 0, dom = 0;
@@ -2023,11 +2081,13 @@ int rgbz_tofg_agree(double *depth, double *low, const uint8_t *lone, const doubl
 
 int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double gain,
                       double black, double supp, double const_var, double prnu, double white,
-                      float *zr, float *zi, float *v, uint8_t *sat, double *offset, int workers)
+                      float *zr, float *zi, float *v, uint8_t *sat, double *offset,
+                      double fixed_var, float *phi, int workers)
 {
 #define TOFG_PREPARE_(s, T)                                                                  \
     return RGBZ_CAT(tofg_prepare, s)((const T *)taps, F, N, gain, black, supp, const_var,    \
-                                     prnu, white, zr, zi, v, sat, offset, workers)
+                                     prnu, white, zr, zi, v, sat, offset, fixed_var, phi,    \
+                                     workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_PREPARE_, return RGBZ_EINVAL)
 #undef TOFG_PREPARE_
 }

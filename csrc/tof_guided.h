@@ -21,7 +21,8 @@
    offset is not NULL. */
 int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double gain,
                       double black, double supp, double const_var, double prnu, double white,
-                      float *zr, float *zi, float *v, uint8_t *sat, double *offset, int workers);
+                      float *zr, float *zi, float *v, uint8_t *sat, double *offset,
+                      double fixed_var, float *phi, int workers);
 
 /* The guide (H, W, 3) at the measurements: col (3, N) the mean over the block x block
    cells of each (times scale), cells (block^2, 3, N) each cell (NULL: not stored), and
@@ -48,13 +49,18 @@ int rgbz_tofg_ring(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,
    the n_eff of the data (a second pass) or NULL. px: the pixel coordinate of every grid
    line along the axis; a neighbour enters within reach lines and radius_px pixels.
    Outputs mean or_, oi (F, N) (or, when or64 is not NULL, or64, oi64 in double), its
-   variance ov (N,) (+inf where nothing entered) and n_eff on (N,). */
+   variance ov (N,) (+inf where nothing entered) and n_eff on (N,). fixed: col holds a fourth
+   plane (4, N), the share phi of each measurement's variance that the taps' fixed pattern
+   gives (one DSNU offset and one PRNU gain per tap in every frequency's frame, so one error
+   in every frequency), and the phasor term is the pair's Mahalanobis distance under it
+   (tofg_xp in tof_guided.c; the guide's share taken as its measurement's phi); 0: col
+   (3, N) and the variances taken as independent across frequencies. */
 int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float *nin,
                    const float *gr, const float *gi, const float *gv, const float *col,
                    const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C, int axis,
                    const int64_t *px, ptrdiff_t reach, int64_t radius_px, double inv2h2,
                    double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
-                   float *ov, float *on, int workers);
+                   float *ov, float *on, int fixed, int workers);
 
 /* The unwrapping of the fused denoise's means (rgbz_tof_depth_iq's arguments): depth,
    residual, wraps (N,), phase and amp (F, N). */
@@ -81,13 +87,14 @@ typedef struct {
    being stored (or64, oi64 unused); a non-finite mean gives RGBZ_EDOMAIN after every other
    one is computed. strip: the grid rows of output per band or strip (<= 0: one band per
    thread, or strips of at most 128 rows); the outputs do not depend on it. on64 (N,), when
-   not NULL, takes the n_eff of on in double (on may then be NULL). */
+   not NULL, takes the n_eff of on in double (on may then be NULL). fixed: as in
+   rgbz_tofg_pass. */
 int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
                       const uint8_t *use, ptrdiff_t F, ptrdiff_t R, ptrdiff_t C,
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
                       double *or64, double *oi64, float *ov, float *on, double *on64,
-                      const tofg_unwrap_out *uw, ptrdiff_t strip, int workers);
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int fixed, int workers);
 
 /* snr, sigma, reflectance and the validity bits (1 saturated, 2 low signal, 4 inconsistent,
    16 out of range) of every measurement from amp (F, N), the component variance var (N,),

@@ -21,11 +21,11 @@ RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
     const IN_T *restrict taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t b0, ptrdiff_t nb, double k,
     double black, double const_var, double prnu, double white, double inv_f,
     float *restrict zr, float *restrict zi, float *restrict v, uint8_t *restrict sat,
-    double *restrict offset)
+    double *restrict offset, double fixed_var, float *restrict phi)
 {
-    double acc[256];
+    double acc[256], fix[256];
     uint8_t hit[256];
-    for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = 0.0; hit[j] = 0; }
+    for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = fix[j] = 0.0; hit[j] = 0; }
     for (ptrdiff_t f = 0; f < F; f++) {
         const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
                 *A3 = A0 + 3 * N;
@@ -41,6 +41,7 @@ RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
             held = held > 0.0 ? held : 0.0;
             const double ph = prnu * held;
             acc[j] += k * held + const_var + ph * ph;
+            fix[j] += fixed_var + ph * ph;
             const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
             const double mx = m01 > m23 ? m01 : m23;
             hit[j] |= (uint8_t)(mx >= white);
@@ -50,13 +51,17 @@ RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
         v[b0 + j] = (float)(acc[j] * inv_f);
         sat[b0 + j] |= hit[j];
     }
+    if (phi)            /* the fixed pattern's share of v: its DSNU and PRNU parts */
+        for (ptrdiff_t j = 0; j < nb; j++)
+            phi[b0 + j] = acc[j] > 0.0 ? (float)(fix[j] / acc[j]) : 0.0f;
 }
 
 /* the prepare stage of rgbz_tofg_prepare (tof_guided.h) for taps of IN_T */
 static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N, double gain,
                                       double black, double supp, double const_var, double prnu,
                                       double white, float *zr, float *zi, float *v,
-                                      uint8_t *sat, double *offset, int workers)
+                                      uint8_t *sat, double *offset, double fixed_var,
+                                      float *phi, int workers)
 {
     if (!taps || !zr || !zi || !v || !sat || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
         return RGBZ_EINVAL;
@@ -66,7 +71,8 @@ static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t b0 = 0; b0 < N; b0 += 256)
         RGBZ_CAT(tofg_prepare_block, IS)(taps, F, N, b0, N - b0 < 256 ? N - b0 : 256, k, black,
-                                         const_var, prnu, white, inv_f, zr, zi, v, sat, offset);
+                                         const_var, prnu, white, inv_f, zr, zi, v, sat, offset,
+                                         fixed_var, phi);
     return RGBZ_OK;
 }
 

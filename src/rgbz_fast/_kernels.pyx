@@ -1149,7 +1149,7 @@ cdef extern from "tof_guided.h" nogil:
     int rgbz_tofg_prepare(int in_type, const void *taps, Py_ssize_t F, Py_ssize_t N,
                           double gain, double black, double supp, double const_var, double prnu,
                           double white, float *zr, float *zi, float *v, uint8_t *sat,
-                          double *offset, int workers)
+                          double *offset, double fixed_var, float *phi, int workers)
     int rgbz_tofg_ring(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
                        const int64_t *row_px, Py_ssize_t R, const int64_t *col_px,
                        Py_ssize_t C, int block, const double *inv, float *ring, int workers)
@@ -1162,7 +1162,7 @@ cdef extern from "tof_guided.h" nogil:
                        const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C, int axis,
                        const int64_t *px, Py_ssize_t reach, int64_t radius_px, double inv2h2,
                        double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
-                       float *ov, float *on, int workers)
+                       float *ov, float *on, int fixed, int workers)
     ctypedef struct tofg_unwrap_out:
         const double *freqs
         const double *weights
@@ -1178,7 +1178,7 @@ cdef extern from "tof_guided.h" nogil:
                           Py_ssize_t reach_c, int64_t radius_px, double inv2h2,
                           double inv2hc2, double *or64, double *oi64, float *ov, float *on,
                           double *on64, const tofg_unwrap_out *uw, Py_ssize_t strip,
-                          int workers)
+                          int fixed, int workers)
     int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                            const double *residual, const uint8_t *sat, Py_ssize_t F,
                            Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
@@ -1210,19 +1210,23 @@ cdef extern from "tof_guided.h" nogil:
 def tofg_prepare(const tap_t[:, :, ::1] taps, double gain, double black, double supp,
                  double const_var, double prnu, double white, float[:, ::1] zr,
                  float[:, ::1] zi, float[::1] v, uint8_t[::1] sat, double[:, ::1] offset,
-                 int workers):
+                 int workers, double fixed_var=0.0, float[::1] phi=None):
     """Taps (F, 4, N) -> phasors zr, zi (F, N), component variance v (N,), sat |= full scale,
-    offset (F, N) when given."""
+    offset (F, N) when given; phi (N,), when given, the share of v that the fixed pattern
+    gives (fixed_var, the DSNU's per-tap variance in DN^2, and the PRNU part of each tap)."""
     cdef int status
     cdef int in_type = _type_code(<tap_t *> NULL)
     cdef double *of = _opt2(offset)
+    cdef float *ph = NULL if phi is None else &phi[0]
     cdef Py_ssize_t F = taps.shape[0], N = taps.shape[2]
+    if phi is not None and phi.shape[0] != N:
+        raise ValueError(f"phi: expected {N} values, got {phi.shape[0]}")
     if N == 0:
         return
     with nogil:
         status = rgbz_tofg_prepare(in_type, &taps[0, 0, 0], F, N, gain, black, supp, const_var,
                                    prnu, white, &zr[0, 0], &zi[0, 0], &v[0], &sat[0], of,
-                                   workers)
+                                   fixed_var, ph, workers)
     _raise_for(status)
 
 
@@ -1288,8 +1292,13 @@ def tofg_pass(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v
               float[:, ::1] out_im, double[:, ::1] out_re64, double[:, ::1] out_im64,
               float[::1] out_var, float[::1] out_neff, int workers):
     """One 1-D pass of the guided cross-bilateral mean (rows: axis 1, columns: axis 0); the
-    mean goes to out_re64/out_im64 (double) when they are given, else out_re/out_im."""
+    mean goes to out_re64/out_im64 (double) when they are given, else out_re/out_im. col
+    (3, N), or (4, N) with each measurement's fixed-pattern share of its variance: the range
+    kernel then takes the fixed pattern's correlation across frequencies."""
     cdef int status
+    if col.shape[0] not in (3, 4) or col.shape[1] != R * C:
+        raise ValueError(f"col: expected (3, {R * C}) or (4, {R * C}), got "
+                         f"{(col.shape[0], col.shape[1])}")
     cdef const float *pn = _optv(nin)
     cdef float *o_r = NULL
     cdef float *o_i = NULL
@@ -1307,7 +1316,7 @@ def tofg_pass(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1] v
         status = rgbz_tofg_pass(&zr[0, 0], &zi[0, 0], &v[0], pn, &gr[0, 0], &gi[0, 0], &gv[0],
                                 &col[0, 0], &use[0], zr.shape[0], R, C, axis, &px[0], reach,
                                 radius_px, inv2h2, inv2hc2, o_r, o_i, o_r64, o_i64,
-                                &out_var[0], &out_neff[0], workers)
+                                &out_var[0], &out_neff[0], col.shape[0] == 4, workers)
     _raise_for(status)
 
 
@@ -1325,10 +1334,13 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
     With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
     unwrapped strip by strip (tof_depth_iq, bit for bit) instead of stored in out_re, out_im
     (then None); strip: grid rows per strip (0: the kernel's default); count (N,), when
-    given, takes n_eff in double (out_neff may then be None). Returns False when a mean is
-    not finite (RGBZ_EDOMAIN), True otherwise."""
+    given, takes n_eff in double (out_neff may then be None); col as tofg_pass's. Returns
+    False when a mean is not finite (RGBZ_EDOMAIN), True otherwise."""
     cdef int status
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
+    if col.shape[0] not in (3, 4) or col.shape[1] != R * C:
+        raise ValueError(f"col: expected (3, {R * C}) or (4, {R * C}), got "
+                         f"{(col.shape[0], col.shape[1])}")
     cdef tofg_unwrap_out uw
     cdef tofg_unwrap_out *puw = NULL
     cdef double *o_r = NULL
@@ -1356,7 +1368,7 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
         status = rgbz_tofg_denoise(&zr[0, 0], &zi[0, 0], &v[0], &col[0, 0], &use[0],
                                    zr.shape[0], R, C, &row_px[0], &col_px[0], reach_r, reach_c,
                                    radius_px, inv2h2, inv2hc2, o_r, o_i, &out_var[0],
-                                   o_n, o_n64, puw, strip, workers)
+                                   o_n, o_n64, puw, strip, col.shape[0] == 4, workers)
     if status == RGBZ_EDOMAIN:
         return False
     _raise_for(status)

@@ -166,9 +166,10 @@ def tap_variance(offset, sensor):
     return v
 
 
-def guided_prepare(taps, gain, black, supp, const_var, prnu, white):
+def guided_prepare(taps, gain, black, supp, const_var, prnu, white, fixed_var=0.0):
     """Phasors (F, N), the mean over the frequencies of 2 var(A) (N,), full-scale taps (N,),
-    the offset (F, N)."""
+    the offset (F, N), and phi (N,): the share of that variance the fixed pattern gives
+    (fixed_var, the DSNU's per-tap variance, and the PRNU part)."""
     t = np.asarray(taps, np.float64)
     zr = t[:, 0] - t[:, 2]
     zi = t[:, 3] - t[:, 1]
@@ -177,7 +178,10 @@ def guided_prepare(taps, gain, black, supp, const_var, prnu, white):
     var_a = gain * supp * held + const_var + (prnu * held) ** 2
     v = 2.0 * var_a.mean(axis=0)
     sat = (t.max(axis=(0, 1)) >= white)
-    return zr, zi, v, sat, offset
+    fix = (fixed_var + (prnu * held) ** 2).sum(axis=0)
+    total = var_a.sum(axis=0)
+    phi = np.divide(fix, total, out=np.zeros_like(total), where=total > 0)
+    return zr, zi, v, sat, offset, phi
 
 
 def guided_colour(guide, rows, cols, block, scale):
@@ -219,8 +223,17 @@ def guided_ring(g, rows, cols, block, inv):
 
 def guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, reach, radius_px,
                 inv2h2, inv2hc2):
-    """One 1-D pass of the cross-bilateral mean: mean (F, N) x 2, variance (N,), n_eff (N,)."""
+    """One 1-D pass of the cross-bilateral mean: mean (F, N) x 2, variance (N,), n_eff (N,).
+
+    col (3, N), or (4, N) whose fourth row phi is each measurement's fixed-pattern share of
+    its variance: the phasor term is then the pair's Mahalanobis distance under a temporal
+    diagonal S = gn + gm - A and a fixed part A 1 1^T per I and Q block, A = gn phi_n +
+    gm phi_m: (chi - A q / (S + F A)) / S - 2F, q = |sum_f d_f|^2 (csrc/tof_guided.c,
+    tofg_xp)."""
     F = zr.shape[0]
+    col = np.asarray(col)
+    phi = np.asarray(col[3], np.float64).reshape(R, C) if col.shape[0] == 4 else None
+    col = col[:3]
     shape = (R, C)
     z = (np.asarray(zr, np.float64) + 1j * np.asarray(zi, np.float64)).reshape(F, R, C)
     g = (np.asarray(gr, np.float64) + 1j * np.asarray(gi, np.float64)).reshape(F, R, C)
@@ -245,7 +258,16 @@ def guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, reach, rad
             tgt, src = (slice(lo, hi), slice(None)), (slice(lo + a, hi + a), slice(None))
             near = near[:, None]
         d = g[(slice(None),) + src] - g[(slice(None),) + tgt]
-        xp = (np.abs(d) ** 2).sum(axis=0) / (gvv[src] + gvv[tgt]) - 2.0 * F
+        chi = (np.abs(d) ** 2).sum(axis=0)
+        if phi is None:
+            xp = chi / (gvv[src] + gvv[tgt]) - 2.0 * F
+        else:
+            A = gvv[src] * phi[src] + gvv[tgt] * phi[tgt]
+            S = gvv[src] + gvv[tgt] - A
+            q = np.abs(d.sum(axis=0)) ** 2
+            with np.errstate(invalid="ignore", divide="ignore"):
+                xp = (chi - A * q / (S + F * A)) / S - 2.0 * F
+            xp = np.where(np.isnan(xp), 0.0, xp)        # as the kernel's clamp takes NaN
         dc = cc[(slice(None),) + src] - cc[(slice(None),) + tgt]
         xc = (dc * dc).sum(axis=0) - 3.0
         x = np.maximum(xp, 0.0) * inv2h2 + np.maximum(xc, 0.0) * inv2hc2

@@ -90,6 +90,39 @@ def test_cache_resume_and_one_more_method(tiny_dataset, tmp_path, monkeypatch):
     assert np.array_equal(second.values("mask1", "bilinear", "cfa_psnr"),
                           first.values("mask1", "bilinear", "cfa_psnr"))
     assert not list(cache.rglob("*.tmp"))
+    # H85: the rows in the run's order, as a clean run's (the cached ones had come first)
+    clean = ev.evaluate(ds, processes=1, progress=False, metrics=("cfa_psnr",),
+                        methods=("bi", "edi_line", "bilinear"))
+    third = ev.evaluate(ds, cache_dir=cache, processes=1, progress=False,
+                        metrics=("cfa_psnr",), methods=("bi", "edi_line", "bilinear"))
+    assert third.to_csv() == clean.to_csv()
+
+
+def test_cached_results_carry_the_code_that_computed_them(tiny_dataset, tmp_path,
+                                                          monkeypatch):
+    """H85: the cache's version was the package's (0.1.0 on every commit), so after the
+    shipped z_guided filters were refitted (or a kernel changed) a cached evaluation served
+    the old numbers. The key now holds a digest of the package's modules, shipped filters and
+    extension modules: another digest recomputes."""
+    from rgbz_fast import _build_config
+    from rgbz_fast.evaluation import _cache
+
+    version = _cache.results_version()
+    assert version.startswith(_build_config.VERSION + "+") and len(version.split("+")[1]) == 12
+    cache = tmp_path / "cache"
+    ds = rio.folder_dataset(tiny_dataset)
+    kw = dict(cache_dir=cache, processes=1, progress=False, metrics=("cfa_psnr",),
+              methods=("bilinear",))
+    ev.evaluate(ds, **kw)
+    calls = []
+    import rgbz_fast.evaluation._run as mod
+    real = mod.reconstruct
+    monkeypatch.setattr(mod, "reconstruct", lambda f, m, **k: calls.append(m) or real(f, m, **k))
+    ev.evaluate(ds, **kw)
+    assert calls == []                                     # the same code: served
+    monkeypatch.setattr(_cache, "_REVISION", [_build_config.VERSION + "+000000000000"])
+    ev.evaluate(ds, **kw)
+    assert len(calls) == 3 * 2                             # another: every entry recomputed
 
 
 def test_interrupted_run_resumes(tiny_dataset, tmp_path, monkeypatch):
@@ -497,3 +530,24 @@ def test_the_lens_is_the_rgb_images_in_a_mixed_header():
     assert label.startswith("1 RGB image (noise-free, 11-bit, optics f/2.8) and 1 raw file at "
                             "its own bit depth, noise and lens, demosaic")
     assert ev.Results(rows, cfg).label().endswith("optics f/2.8")
+
+
+def test_reports_interrupted_while_made_leave_the_previous_run_whole(tiny_dataset, tmp_path,
+                                                                     monkeypatch):
+    """H85: write_reports wrote file by file and removed the previous run's files last, so a
+    run interrupted while its figures were drawn left its tables beside the previous run's
+    figures. Every report is now made before any is written."""
+    import rgbz_fast.evaluation._reports as rep
+
+    ds = rio.folder_dataset(tiny_dataset)
+    kw = dict(processes=1, progress=False, metrics=("cfa_psnr",))
+    first = ev.evaluate(ds, methods=("bi", "sg"), **kw)
+    out = tmp_path / "rep"
+    ev.write_reports(first, out)
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    second = ev.evaluate(ds, methods=("edi_line", "bilinear"), **kw)
+    monkeypatch.setattr(rep, "paired_chart", lambda *a, **k: (_ for _ in ()).throw(
+        KeyboardInterrupt))
+    with pytest.raises(KeyboardInterrupt):
+        ev.write_reports(second, out)
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before

@@ -40,7 +40,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._build_config import VERSION
+from ..evaluation._cache import results_version
 from ..io import atomic_write
 from ._common import machine_info
 from .pattern_candidates import candidates as find_candidates
@@ -118,7 +118,8 @@ def _filters(cand, train, settings, cache_dir):
 
     name, sources = train
     key = _digest("filters", cand.pattern.tile_string, cand.pattern.bayer_phase,
-                  settings.bit_depth, name, [s.fingerprint() for s in sources], VERSION)
+                  settings.bit_depth, name, [s.fingerprint() for s in sources],
+                  results_version())
     f = Path(cache_dir) / "filters" / f"{key}.npz" if cache_dir is not None else None
     if f is not None and f.is_file():
         try:
@@ -193,7 +194,7 @@ def _colour_task(cand, dataset, train, settings, cache_dir, workers):
             for k in COLOUR_METRICS:
                 out[m][k] = float(summary[(pattern.tile_string, m, k)][0])
     cost_key = _digest("cost", pattern.tile_string, pattern.bayer_phase, run,
-                       filters.digest if filters is not None else None, VERSION)
+                       filters.digest if filters is not None else None, results_version())
 
     def costs():
         return {m: op_cost(pattern, m, filters if m == "learned" else None)["total"]
@@ -306,7 +307,8 @@ def _jobs(cands, dataset, train, rgbd_scenes, settings, cache_dir, workers):
         jobs.append(("colour", c, (dataset, train), settings, cache_dir, None, workers))
         if c.block is None:
             continue
-        base = (c.pattern.tile_string, c.pattern.bayer_phase, settings.seed, VERSION, models)
+        base = (c.pattern.tile_string, c.pattern.bayer_phase, settings.seed, results_version(),
+                models)
         jobs.append(("wall", c, None, settings, cache_dir,
                      _digest("wall", *base, settings.wall_distance,
                              settings.wall_reflectance, settings.wall_shape), workers))

@@ -7,7 +7,6 @@ import json
 from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field
 
-from .._build_config import VERSION
 from .._patterns import check_z_patterns, get_pattern
 from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
                          check_int, check_seed)
@@ -327,4 +326,6 @@ def _does_not_apply(pattern, method, params, bit_depth):
 
 
 def _cache_version():
-    return VERSION
+    from ._cache import results_version
+
+    return results_version()

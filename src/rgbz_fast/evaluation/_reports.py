@@ -67,13 +67,13 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
             if str(exc).startswith("box: "):
                 raise ValueError("crop_" + str(exc)) from None
             raise
-    out.mkdir(parents=True, exist_ok=True)
-    previous = _previous_reports(out)
-    written = []
+    # every report is made in memory first (the figures take most of the time), then the
+    # previous run's files this one does not write are removed and the new ones written:
+    # an interrupt while they were made left the new tables beside the old run's figures
+    made = []
 
     def put(name, data):
-        atomic_write(out / name, data)
-        written.append(out / name)
+        made.append((name, data))
 
     put("results.csv", results.to_csv())
     put("results.json", results.to_json())
@@ -89,11 +89,16 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
                 put(f"paired_{k}.png", paired_chart(results, k))
         if figure is not None:
             put(f"crops_{_safe(crop_source.name)}.png", figure)
-    names = [p.name for p in written]
-    for name in sorted(previous - set(names)):          # a previous run's, not rewritten
+    out.mkdir(parents=True, exist_ok=True)
+    names = [name for name, _ in made]
+    for name in sorted(_previous_reports(out) - set(names)):  # a previous run's, not rewritten
         stale = out / name
         if stale.is_file() and not stale.is_symlink():
             stale.unlink()
+    written = []
+    for name, data in made:
+        atomic_write(out / name, data)
+        written.append(out / name)
     atomic_write(out / MANIFEST, MANIFEST_HEAD + "".join(n + "\n" for n in names))
     return written
 

@@ -253,6 +253,11 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
             if cdir:
                 _cache_write(cdir, key(p, m), values)
             rows += [_row(source.name, p, m, k, values[k], estimated) for k in config.metrics]
+    # in the run's order (patterns, methods), whatever came from the cache: a resumed run's
+    # files equal a clean run's byte for byte (the cached rows had come first)
+    order = {(p, m): i for i, (p, m) in enumerate((p, m) for p in config.patterns
+                                                  for m in config.methods)}
+    rows.sort(key=lambda r: order[(r["pattern"], r["method"])])
     return rows
 
 

@@ -179,11 +179,12 @@ def _layout_of(sites, block, shape):
     return layout
 
 
-def guide_colours(g, scale, layout, nthreads):
-    """The guide at the measurements, in units of ``sqrt(2)`` times its noise: colours (3, N),
-    cells (block^2, 3, N) or None (1x1 Z pixels), and the noise sigma_c (3,)."""
+def guide_colours(g, scale, layout, nthreads, col=None):
+    """The guide at the measurements, in units of ``sqrt(2)`` times its noise: colours (3, N)
+    (into ``col`` when given), cells (block^2, 3, N) or None (1x1 Z pixels), and the noise
+    sigma_c (3,)."""
     N, b = layout.N, layout.block
-    col = np.empty((3, N), np.float32)
+    col = np.empty((3, N), np.float32) if col is None else col
     cells = np.empty((b * b, 3, N), np.float32) if b > 1 else None
     lap, sigma = np.zeros(3), np.empty(3)
     # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|, at least
@@ -269,9 +270,16 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     zr, zi = np.empty((F, N), np.float32), np.empty((F, N), np.float32)
     v = np.empty(N, np.float32)
     offset = np.empty((F, N))
+    # the colours, and with a fixed pattern (DSNU, PRNU) each measurement's share of it in
+    # its variance: the range kernel's distance then knows that pattern's one error in every
+    # frequency (tofg_xp in csrc/tof_guided.c)
+    fixed = bool(sensor.dsnu or sensor.prnu)
+    colp = np.empty((4 if fixed else 3, N), np.float32)
+    dn = dark_noise(cal)
     _kernels.tofg_prepare(taps, k, float(sensor.black_level), supp, const_var,
                           prnu_gain(sensor), float(tof.white_level), zr, zi, v, sat, offset,
-                          nthreads)
+                          nthreads, k * k * float(sensor.dsnu) ** 2 if dn is None else dn,
+                          colp[3] if fixed else None)
     if cal is not None:
         # each measurement's phasors turned by its phase offset's deviation (the ISP removes
         # it before it averages neighbours)
@@ -279,7 +287,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
         z = (zr + 1j * zi) * turn
         zr, zi = np.ascontiguousarray(z.real, np.float32), np.ascontiguousarray(z.imag,
                                                                                 np.float32)
-    col, cells, sigma_c = guide_colours(g, scale, layout, nthreads)
+    col, cells, sigma_c = guide_colours(g, scale, layout, nthreads, colp[:3])
     use = sat == 0
     if not layout.full:
         use &= layout.present
@@ -294,7 +302,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # unwrapped there as they are made
     # n_eff comes in count's public dtype, float64, from the kernel
     var, count = np.empty(N, np.float32), np.empty(N)
-    args = (zr, zi, v, col, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
+    args = (zr, zi, v, colp, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
             inv2hc2)
     if cal is None:
         depth, residual, wraps = np.empty(N), np.empty(N), np.empty(N, np.int32)
