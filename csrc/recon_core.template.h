@@ -211,18 +211,15 @@ RGBZ_INLINE void RFN(rgbz_groups_block)(const rgbz_plan *p, const REAL *const *v
 {
     uint32_t started = 0;
     if (p->sum_from_zero) {
-#ifdef RGBZ_COUNT_OPS
-        /* the counting build adds every difference to a 0 (what the plan counts) */
-        for (int g = 0; g < RGBZ_NGROUPS; g++) BLOOP G[g][j] = (REAL)0;
-        started = (1u << RGBZ_NGROUPS) - 1;
-#else
         /* 0 + d is d (d = |a - b| >= +0): a group's first difference is assigned rather
-           than added to a 0; only the groups without a difference are zeroed */
+           than added to a 0; only the groups without a difference are zeroed. The counting
+           build does the same, so that it counts what runs (it had added every difference
+           to a 0: one addition a gradient group more than reconstruct() does, on every
+           plan's row of docs/reports/opcount.md) */
         uint32_t touched = 0;
         for (int i = 0; i < p->n_pairs; i++) touched |= (uint32_t)p->pair_gmask[i];
         for (int g = 0; g < RGBZ_NGROUPS; g++)
             if (!((touched >> g) & 1u)) BLOOP G[g][j] = (REAL)0;
-#endif
     }
     if (clipped)
         for (int g = 0; g < RGBZ_NGROUPS; g++) BLOOP cnt[g][j] = 0;

@@ -26,8 +26,8 @@ from rgbz_fast.tof import ToFISP
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "rgbd"
 #: (label, ToFISP fields, low-signal only)
-SETTINGS = (("default (window 21, range scale 2)", {}, False),
-            ("window 31", {"window": 31}, False),
+SETTINGS = (("default (window 31, range scale 2)", {}, False),
+            ("window 21 (the default before 2026-11-27)", {"window": 21}, False),
             ("window 41", {"window": 41}, False),
             ("window 41, range scale 1.8", {"window": 41, "range_scale": 1.8}, False),
             ("window 41, low-signal only", {"window": 41}, True))

@@ -281,3 +281,17 @@ def test_pareto_front():
     assert tradeoff.pareto_front(pts) == [0, 1, 2]
     # equal quality within the tolerance: only the fastest stays
     assert tradeoff.pareto_front([(1, 30.0), (2, 30.0 - 1e-6)]) == [1]
+
+
+def test_tradeoff_findings_name_the_variant_of_each_figure():
+    """H86: the share of differing Z pixels is one variant's and the largest difference
+    maybe another's; the sentence named the second after the first."""
+    def row(method, precision, exp, frac, dn, psnr=30.0, speed=100.0):
+        return {"pattern": "mask1", "method": method, "domain": "intensity",
+                "precision": precision, "exp": exp, "frac_diff": frac,
+                "max_abs_diff_dn": dn, "cfa_psnr": psnr, "mpix_s": speed}
+    rows = [row("bi", "float64", "libm", 0, 0), row("sg", "float64", "libm", 0, 0),
+            row("bi", "float32", "libm", 0.0001, 2), row("sg", "float32", "libm", 0.0017, 1)]
+    text = tradeoff._findings({"rows": rows})[0]
+    assert "0.17 % of the Z pixels of one variant differ (sg mask1), by at most 2 DN " \
+           "(bi mask1)" in text, text

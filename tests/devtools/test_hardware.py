@@ -156,3 +156,13 @@ def test_json_text_is_strict_inside_arrays():
 
     assert json.loads(json_text({"a": np.array([np.nan, 1.0]), "b": float("inf")})) == \
         {"a": [None, 1.0], "b": None}
+
+
+def test_table1_is_found_on_every_bayer_phase_of_the_presets():
+    """H86: the report looked Table 1 up by the pattern's own name, so mask1_rggb (or the
+    tile ZR/BG) had no Table 1 row while opcount gave it one."""
+    for p in ("mask1", "mask1_rggb", "ZR/BG", "mask1_gbrg"):
+        assert H._float_opcounts(p, "sg")[1]["green"] == {"add": 72, "mul": 28, "div": 28,
+                                                            "exp": 8}
+    assert H._float_opcounts("mask2_bggr", "bi")[1]["red/blue"] == {"add": 128, "mul": 32,
+                                                                     "div": 8, "exp": 0}

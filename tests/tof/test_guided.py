@@ -693,8 +693,8 @@ def test_low_signal_window_reruns_only_the_low_signal_measurements(guided):
     frame, guide, _ = _frame("mask1", shape=(64, 96), sensor=sensor)
     g = guide if guided else None
     base = ToFISP().run(frame.tof, guide=g)
-    wide = ToFISP(window=31).run(frame.tof, guide=g)
-    both = ToFISP(low_signal_window=31).run(frame.tof, guide=g)
+    wide = ToFISP(window=41).run(frame.tof, guide=g)     # wider than Mask1's guided 31
+    both = ToFISP(low_signal_window=41).run(frame.tof, guide=g)
     take = (base.flags == ToFFlag.LOW_SIGNAL) & (np.abs(wide.depth - base.depth) <= base.sigma)
     assert 0 < take.sum() < take.size and both.valid.sum() > base.valid.sum()
     for name in ("depth", "sigma", "flags", "valid", "snr", "amplitude", "phase"):

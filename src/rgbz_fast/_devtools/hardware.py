@@ -127,7 +127,9 @@ def _float_opcounts(pattern, method):
     """The float core's mean operations per site ({group: {category: mean}}) and Table 1's."""
     from . import opcount
     counts = opcount.count_operations(method, pattern, precision="float64", shape=(32, 32))
-    table1 = {g: opcount.TABLE1.get((method, get_pattern(pattern).name, g)) for g in counts}
+    # Table 1 knows the presets on any Bayer phase by their name (mask1_rggb is Mask1)
+    table1 = {g: opcount.TABLE1.get((method, opcount._table1_name(get_pattern(pattern)), g))
+              for g in counts}
     return ({g: {k: round(v["mean"][k], 2) for k in ("add", "mul", "div", "exp", "abs", "cmp")}
              for g, v in counts.items()}, table1)
 

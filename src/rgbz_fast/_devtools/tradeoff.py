@@ -258,10 +258,15 @@ def _findings(res):
         frac = max(r["frac_diff"] for r in sub)
         speed = (f" ({QUICK_NOTE} on speed)" if res.get("quick") else
                  f"; speed x{min(sp):.2f} to x{max(sp):.2f}")
-        differ = (f"at most {frac * 100:.3g} % of the Z pixels of one variant differ, by at "
-                  f"most {worst['max_abs_diff_dn']:.0f} DN ({worst['method']} "
-                  f"{worst['pattern']})" if worst["max_abs_diff_dn"] > 0 else
-                  "no Z pixel differs")
+        widest = max(sub, key=lambda r: r["frac_diff"])
+        # each figure names its own variant: the largest share and the largest difference
+        # may be two variants' (the share had been named after the largest difference's)
+        same = (widest["method"], widest["pattern"]) == (worst["method"], worst["pattern"])
+        differ = ((f"at most {frac * 100:.3g} % of the Z pixels of one variant differ "
+                   f"({widest['method']} {widest['pattern']}), by at most "
+                   f"{worst['max_abs_diff_dn']:.0f} DN"
+                   + ("" if same else f" ({worst['method']} {worst['pattern']})"))
+                  if worst["max_abs_diff_dn"] > 0 else "no Z pixel differs")
         out.append(
             f"* **{what}**: mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB "
             f"against float64 + libm; {differ}{speed}.")
