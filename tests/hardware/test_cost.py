@@ -163,3 +163,17 @@ def test_fields_used_are_those_that_reach_the_datapath(method, rng):
             a, b = (rz.reconstruct(data, method, pattern=p, precision="fixed", fixed_point=f)
                     for f in (base, cfg))
             assert np.array_equal(a, b), (field, p)
+
+
+def test_dsp48_puts_each_multipliers_operands_on_the_cheaper_ports():
+    """H86: a multiplier's wider operand always went to the 27-bit port; 37 x 19 is 2 x 2
+    slices that way and 2 x 1 the other (SG at 16 bits: 33 -> 32 on Mask1, 109 -> 108 on
+    Mask2)."""
+    from rgbz_fast.hardware import FixedPointConfig, hardware_cost
+
+    cfg = FixedPointConfig.for_bit_depth(16)
+    for pattern, want in (("mask1", 32), ("mask2", 108)):
+        c = hardware_cost(pattern, "sg", width=3840, bit_depth=16, fixed_point=cfg)
+        assert c.dsp48() == want
+        assert c.dsp48() == sum(n * min(-(-a // 27) * -(-b // 18), -(-b // 27) * -(-a // 18))
+                                for (a, b), n in c.multipliers().items())
