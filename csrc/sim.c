@@ -5,9 +5,11 @@
  * The noise chain of a sample (the module docstring of rgbz_fast.simulation._simulate and
  * its NumPy code in _noise.py, operation by operation):
  *   e = max(m (1 + prnu z0), 0) if prnu else m;  e = e + dark;  e = Poisson(e) if shot;
- *   e = e - suppress (ToF);  e = e + dsnu z1 if dsnu;  full = e >= full_well;
+ *   e = max(e - suppress, 0) (ToF; drained = e < suppress);  e = e + dsnu z1 if dsnu;
+ *   full = e >= full_well;
  *   e = min(e, full_well);  e = e + read_noise z;  dn = black + gain e;
- *   dn = floor(dn + 0.5) if quantise;  sat = full | dn >= top;  dn = clip(dn, 0, top)
+ *   dn = floor(dn + 0.5) if quantise;  sat = full | drained | dn >= top | dn < 0;
+ *   dn = clip(dn, 0, top)
  * Without noise no term that needs a random number or the fixed pattern runs.
  *
  * Work is split in chunks of CHUNK samples of one row (colour) or CHUNK sites (ToF): a
@@ -132,9 +134,13 @@ static inline double sim_post(double e, double suppress, int with_suppress, doub
                               int with_offset, double zr, int with_read,
                               const rgbz_sim_noise *nz, int *sat)
 {
-    if (with_suppress) e = e - suppress;
+    /* the suppression drains at most what the tap holds: a tap of a deeply modulated pixel
+       holding less than the share s of the DC charge is emptied, not made negative (it had
+       held down to -300 e- unflagged and read as valid), and flagged like a clipped one */
+    const int drained = with_suppress && e < suppress;
+    if (with_suppress) e = drained ? 0.0 : e - suppress;
     if (with_offset) e = e + offset;
-    const int full = e >= nz->full_well;
+    const int full = (e >= nz->full_well) | drained;
     e = e < nz->full_well ? e : nz->full_well;
     if (with_read) e = e + nz->read_noise * zr;
     double dn = nz->black + nz->gain * e;

@@ -208,7 +208,9 @@ RGBZ_INLINE float tofg_xp(float chi, float sr, float si, float gn, float gm, flo
     if (!FP) return chi / (gn + gm) - bias;
     const float A = gn * fn + gm * fm, S = (gn + gm) - A;
     const float D = S + nf * A, q = sr * sr + si * si;
-    return (chi * D - q * A) / (S * D) - bias;
+    /* two divisions, not (chi D - q A) / (S D): that squares the variances' scale, and
+       float32 overflowed from variances of about 1e18 (a review's measurement) */
+    return (chi - q * (A / D)) / S - bias;
 }
 
 /* the weights of one offset over the cells [c0, c1) of a row: w (0 or 1 on entry) times

@@ -18,7 +18,10 @@
    measurement's phasor averaged over the frequencies v (N,) float (2 var(A), var(A) =
    gain held / (1 - suppression) + const_var + (prnu held)^2, held = max(offset - black, 0)
    in DN), sat[n] |= 1 where a tap reaches white, and the offset (F, N) mean(A_k) when
-   offset is not NULL. */
+   offset is not NULL; when phi is not NULL, phi (N,): the share of v that the taps' fixed
+   pattern gives, (F fixed_var + sum_f (prnu held_f)^2) / sum_f var(A_f), at most 0.99
+   (fixed_var: the per-tap variance of the fixed offsets, DSNU or a dark frame's error,
+   DN^2); it is col's fourth plane for rgbz_tofg_pass and rgbz_tofg_denoise. */
 int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, double gain,
                       double black, double supp, double const_var, double prnu, double white,
                       float *zr, float *zi, float *v, uint8_t *sat, double *offset,

@@ -53,7 +53,10 @@ RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
     }
     if (phi)            /* the fixed pattern's share of v: its DSNU and PRNU parts */
         for (ptrdiff_t j = 0; j < nb; j++)
-            phi[b0 + j] = acc[j] > 0.0 ? (float)(fix[j] / acc[j]) : 0.0f;
+            /* at most 0.99: S = (1 - phi) times the variances stays positive whatever a
+               calibration file's dark noise says */
+            phi[b0 + j] = acc[j] > 0.0 ? (float)(fix[j] < 0.99 * acc[j] ? fix[j] / acc[j]
+                                                  : 0.99) : 0.0f;
 }
 
 /* the prepare stage of rgbz_tofg_prepare (tof_guided.h) for taps of IN_T */

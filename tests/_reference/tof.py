@@ -181,7 +181,7 @@ def guided_prepare(taps, gain, black, supp, const_var, prnu, white, fixed_var=0.
     fix = (fixed_var + (prnu * held) ** 2).sum(axis=0)
     total = var_a.sum(axis=0)
     phi = np.divide(fix, total, out=np.zeros_like(total), where=total > 0)
-    return zr, zi, v, sat, offset, phi
+    return zr, zi, v, sat, offset, np.minimum(phi, 0.99)
 
 
 def guided_colour(guide, rows, cols, block, scale):
@@ -265,8 +265,8 @@ def guided_pass(zr, zi, v, nin, gr, gi, gv, col, use, R, C, axis, px, reach, rad
             A = gvv[src] * phi[src] + gvv[tgt] * phi[tgt]
             S = gvv[src] + gvv[tgt] - A
             q = np.abs(d.sum(axis=0)) ** 2
-            with np.errstate(invalid="ignore", divide="ignore"):
-                xp = (chi - A * q / (S + F * A)) / S - 2.0 * F
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                xp = (chi - q * (A / (S + F * A))) / S - 2.0 * F
             xp = np.where(np.isnan(xp), 0.0, xp)        # as the kernel's clamp takes NaN
         dc = cc[(slice(None),) + src] - cc[(slice(None),) + tgt]
         xc = (dc * dc).sum(axis=0) - 3.0

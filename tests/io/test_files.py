@@ -553,6 +553,11 @@ def test_a_tiff_of_fewer_bits_than_its_type_is_scaled_to_its_full_range(tmp_path
     assert _to_full_range(v, 12)[-1] == 65535
     assert _to_full_range(np.array([0, 15], np.uint8), 4).tolist() == [0, 255]
     np.testing.assert_array_equal(_to_full_range(v, 16), v)          # fills its type
+    # MINISWHITE of fewer bits: inverted against its bits' top, then scaled (review of H84:
+    # inverted against 65535 first, every 12-bit sample read above its range)
+    from rgbz_fast.io._decode import _invert
+    np.testing.assert_array_equal(_invert(v, 12), 4095 - v)
+    np.testing.assert_array_equal(_invert(v), 65535 - v)
     with pytest.raises(ValueError, match="above its 12-bit range"):
         _to_full_range(np.array([4096], np.uint16), 12)
     pytest.importorskip("imagecodecs")    # tifffile unpacks 12-bit samples with it only

@@ -138,8 +138,26 @@ def test_a_tap_drained_below_the_adc_floor_is_flagged():
         sensor = ToFSensor(ambient_suppression=0.9, quantise=quantise)
         for noise in (False, True):
             tof = _wall(0.27, sensor, shape=(24, 24), pattern="mask1", noise=noise, seed=1)
-            assert tof.taps.min() == 0 and tof.saturated.all()
+            assert tof.saturated.all()
             assert not tof_depth(tof).valid.any()
+
+
+def test_the_suppression_drains_at_most_what_a_tap_holds():
+    """H87: the suppression took s times the DC charge from every tap whatever it held, so
+    the weakest tap of a deeply modulated pixel held down to -300 e- and read as valid data
+    between the black level and the ADC's floor (Mask1 at 1 m with s = 0.5: a quarter of the
+    taps negative, none flagged). It now empties such a tap, which is flagged; taps that
+    hold more are drained as before."""
+    s = ToFSensor(ambient_suppression=0.5, quantise=False)
+    electrons = s.tap_electrons(np.array([1.0]), 0.5)[..., 0]
+    emptied = electrons.min() <= 0                 # the model's tap before the drain's clip
+    tof = _wall(1.0, s, shape=(24, 24), pattern="mask1", noise=False)
+    assert emptied and tof.taps.min() >= s.black_level - 1e-9
+    assert tof.saturated.all() and not tof_depth(tof).valid.any()
+    held = ToFSensor(ambient_suppression=0.5, quantise=False, duty_cycle=0.1,
+                     ambient_irradiance=15.0)
+    tof = _wall(1.0, held, shape=(24, 24), pattern="mask1", noise=False)
+    assert not tof.saturated.any() and tof_depth(tof).valid.all()
 
 
 def test_sunlight_configuration_gives_mask2_depth_to_2_m():

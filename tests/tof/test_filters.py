@@ -397,7 +397,9 @@ def test_predicted_sigma_matches_the_spread(pattern, shape, distances):
                 assert 0.75 < ratio < 1.2, (pattern, d, denoise, ratio)
 
 
-@pytest.mark.parametrize("d", [0.5, 1.0])
+# (0.6 m, not 0.5 m since H87: there the suppression empties 44 % of the taps, which are
+# flagged, and the wall's valid share is what that test is about)
+@pytest.mark.parametrize("d", [0.6, 1.0])
 def test_suppressed_taps_keep_the_prnu_of_the_collected_charge(d):
     """Ambient suppression 0.9 under 15 W/m^2: the PRNU multiplies the charge each tap
     collected, 10x what it holds after the suppression. The model had taken the held one:

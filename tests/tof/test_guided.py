@@ -730,3 +730,16 @@ def test_guided_sigma_matches_the_spread_on_walls(pattern, shape, d):
     e, s = np.concatenate(errs), np.concatenate(sig)
     ratio = e.std() / np.sqrt(np.mean(s ** 2))
     assert 0.9 < ratio < 1.2, ratio
+
+
+def test_a_low_signal_window_must_be_wider_than_the_chains():
+    """Review of 2026-11-27: with Mask1's guided window at 31, low_signal_window=31 ran the
+    chain twice for nothing and 21 gave the low-signal measurements a narrower window than
+    the others, while the docs call it the wider one."""
+    frame, guide, _ = _frame("mask1", shape=(32, 48))
+    for w, g in ((31, guide), (21, guide), (9, None)):
+        with pytest.raises(ValueError, match=r"^low_signal_window: \d+ is not wider than the "
+                                             r"window the chain runs with here"):
+            ToFISP(low_signal_window=w).run(frame.tof, guide=g)
+    ToFISP(low_signal_window=11).run(frame.tof)                   # unguided: 9
+    ToFISP(low_signal_window=33).run(frame.tof, guide=guide)

@@ -36,7 +36,8 @@ def results_version():
 
         root = Path(__file__).resolve().parents[1]
         files = sorted([*root.rglob("*.py"), *root.rglob("*.npz")])
-        files += sorted(Path(_kernels.__file__).resolve().parent.glob("*.so"))
+        here = Path(_kernels.__file__).resolve().parent
+        files += sorted([*here.glob("*.so"), *here.glob("*.pyd")])
         h = hashlib.sha1()
         for f in files:
             h.update(f.name.encode())

@@ -162,7 +162,8 @@ def _range_rows(data, isp, seed, limits):
 
 
 #: frames per wall of the guided noise rows: its window holds 5x the measurements of the
-#: unguided one, so a wall gives 5x fewer independent depths to measure their spread
+#: unguided one (Mask2; 9x on Mask1 since its guided window is 31 cells), so a wall gives
+#: that many times fewer independent depths to measure their spread
 GUIDED_NOISE_FRAMES = 4
 
 

@@ -77,9 +77,9 @@ def decode_tiff(data, full_range=True):
             # planar -> interleaved: RGB(A), and grey + alpha, whose (2, rows, cols) had
             # read as two rows of colour when 3 or 4 pixels wide
             img = np.moveaxis(img, 0, -1)
-        if photometric == _MINISWHITE:
-            img = _invert(img)
         bits = int(page.bitspersample)
+        if photometric == _MINISWHITE:
+            img = _invert(img, bits)
     if full_range and photometric != _PALETTE and img.dtype.kind == "u":
         img = _to_full_range(img, bits)
     return img
@@ -97,12 +97,16 @@ def _to_full_range(img, bits):
     return ((img.astype(np.uint64) * (2 * top) + maxval) // (2 * maxval)).astype(img.dtype)
 
 
-def _invert(img):
-    """0 is white: the samples of a MINISWHITE image as the usual 0-is-black ones."""
+def _invert(img, bits=None):
+    """0 is white: the samples of a MINISWHITE image as the usual 0-is-black ones, against
+    the top of their ``bits`` (a 12-bit one in uint16 against 4095, not 65535: the scaling
+    to the full range comes after) or of their type."""
     if img.dtype == np.bool_:
         return ~img
     if img.dtype.kind == "u":
-        return np.iinfo(img.dtype).max - img
+        n = 8 * img.dtype.itemsize
+        top = (1 << bits) - 1 if bits is not None and 1 < bits < n else np.iinfo(img.dtype).max
+        return (top - img.astype(np.int64)).clip(0).astype(img.dtype)
     raise ValueError(f"a MINISWHITE image of {img.dtype} samples (0 is white) has no top "
                      "value to invert from")
 

@@ -79,9 +79,10 @@ def expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
     ``mean_e.shape``) and broadcast against ``mean_e`` from the right: the
     ToF draws one map per physical tap, (4, n), shared by every frequency.
     ``suppress`` (electrons, broadcast against ``mean_e``) is drained after
-    the shot noise and before the well (the ToF ambient suppression).
+    the shot noise and before the well (the ToF ambient suppression), at most
+    what a sample holds: one that holds less is emptied and flagged.
     Returns the DN array and a bool array of the samples at full well or
-    full scale.
+    full scale (or emptied by the suppression).
     """
     gain = offset = None
     if noise:
@@ -95,11 +96,16 @@ def expose(mean_e, dark_e, sensor, *, noise, seed, temporal_stream, fpn_stream,
         rng = np.random.default_rng([seed, temporal_stream])
     if rng is not None and sensor.shot_noise:
         e = rng.poisson(e).astype(np.float64)
+    drained = None
     if suppress is not None:
-        e = e - suppress
+        # at most what the tap holds (csrc/sim.c, sim_post): an emptied tap is flagged
+        drained = e < suppress
+        e = np.where(drained, 0.0, e - suppress)
     if offset is not None:
         e = e + offset
     well_full = e >= sensor.full_well
+    if drained is not None:
+        well_full = well_full | drained
     e = np.minimum(e, sensor.full_well)
     if rng is not None and sensor.read_noise > 0:
         e = e + sensor.read_noise * rng.standard_normal(e.shape)

@@ -81,7 +81,7 @@ class ToFISP:
         Odd window size in Z-pixel cells; None: 9 for the bilateral denoise
         (the 5x5 nearest Z measurements), 21 for the bilateral denoise with a
         guide (the 11x11 nearest, whose colour keeps the mean on one surface;
-        31, the 16x16 nearest, for 1x1 Z pixels such as Mask1's, each of which
+        31, the 15x15 nearest, for 1x1 Z pixels such as Mask1's, each of which
         collects a quarter of a 2x2 one's light)
         and 5 for the box (the paper's 5x5-pixel kernel: 3x3 Z measurements).
     range_scale : float
@@ -208,6 +208,19 @@ def _with_low_signal_window(tof, p, nthreads, guide):
     """The chain twice, at ``p``'s window and at ``p.low_signal_window``: a measurement the
     first flags low-signal alone takes the second's result where the two depths agree within
     the first's sigma (docs/reports/isp.md, "The guided ISP on photon-limited scenes")."""
+    from ._guided import GUIDED_WINDOW, GUIDED_WINDOW_1X1
+
+    window = p.window if p.window is not None else \
+        p._window_cells if guide is None or p.denoise != "bilateral" else \
+        GUIDED_WINDOW_1X1 if tof.block == 1 else GUIDED_WINDOW
+    if p.low_signal_window <= window:
+        # a second run at the same window changed nothing, at a narrower one it gave the
+        # low-signal measurements less than the first (the guided default of 1x1 Z pixels
+        # is 31 since 2026-11-27)
+        raise ValueError(f"low_signal_window: {p.low_signal_window} is not wider than the "
+                         f"window the chain runs with here ({window}"
+                         f"{', with the guide' if guide is not None else ''}); give a "
+                         "wider one")
     base = _run(tof, dc_replace(p, low_signal_window=None), nthreads, guide)
     wide = _run(tof, dc_replace(p, window=p.low_signal_window, low_signal_window=None),
                 nthreads, guide)

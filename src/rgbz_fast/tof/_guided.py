@@ -59,8 +59,9 @@ __all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "GUIDED_WINDOW_1X1"
 #: the window (Z-pixel cells) of the guided denoise when ``window`` is None: 11 Z
 #: measurements per axis (radius 10 cells) for 2x2 Z pixels (Mask2) ...
 GUIDED_WINDOW = 21
-#: ... and 16 for 1x1 ones (Mask1), each of which collects a quarter of the light: with
-#: the range kernel that knows the fixed pattern (2026-11-27) it keeps the photon-limited
+#: ... and 15 for 1x1 ones (Mask1; radius 15 pixels, the sites 2 apart), each of which
+#: collects a quarter of the light: with the range kernel that knows the fixed pattern
+#: (2026-11-27) it keeps the photon-limited
 #: scenes' measurements valid (art 81.7 -> 85.7 %, the twenty real-NIR pairs 85.4 -> 89.3 %)
 #: and catches as many wrong ones over the six scenes (97.1 %), at the cost of textured
 #: slanted surfaces (docs/reports/isp.md, "The guided ISP on photon-limited scenes")
@@ -280,7 +281,9 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # the colours, and with a fixed pattern (DSNU, PRNU) each measurement's share of it in
     # its variance: the range kernel's distance then knows that pattern's one error in every
     # frequency (tofg_xp in csrc/tof_guided.c)
-    fixed = bool(sensor.dsnu or sensor.prnu)
+    # (not with a calibration: it turns each frequency's phasors by its own offset before
+    # the denoise, so the fixed pattern's error is no longer one offset in every frequency)
+    fixed = bool(sensor.dsnu or sensor.prnu) and cal is None
     colp = np.empty((4 if fixed else 3, N), np.float32)
     dn = dark_noise(cal)
     _kernels.tofg_prepare(taps, k, float(sensor.black_level), supp, const_var,
