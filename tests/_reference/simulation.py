@@ -21,14 +21,17 @@ def chain(mean_e, dark_e, sensor, suppress=None):
     """Mean electrons -> (DN, saturated) without noise: dark signal, the suppressed charge,
     well, ADC."""
     e = mean_e + dark_e
+    drained = np.zeros(np.shape(e), bool)
     if suppress is not None:
-        e = e - suppress
-    well_full = e >= sensor.full_well
+        # at most what a tap holds: an emptied tap is flagged (H87)
+        drained = e < suppress
+        e = np.where(drained, 0.0, e - suppress)
+    well_full = (e >= sensor.full_well) | drained
     e = np.minimum(e, sensor.full_well)
     dn = sensor.black_level + sensor.system_gain * e
     if sensor.quantise:
         dn = np.floor(dn + 0.5)
-    saturated = well_full | (dn >= sensor.white_level)
+    saturated = well_full | (dn >= sensor.white_level) | (dn < 0)
     dn = np.clip(dn, 0, sensor.white_level)
     return (dn.astype(np.uint16) if sensor.quantise else dn), saturated
 

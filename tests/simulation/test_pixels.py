@@ -228,6 +228,23 @@ def test_non_ideal_taps_noise_free_match_numpys_chain():
     np.testing.assert_array_equal(got.saturated, sat.any(axis=(0, 1)))
 
 
+def test_taps_the_suppression_empties_match_numpys_chain():
+    """H87: the C chain empties a tap holding less than the suppressed charge and flags it,
+    as the NumPy reference does (suppression 0.5 and deep modulation: the weakest taps of
+    the near surfaces)."""
+    scene = _depth_scene(load_kodak(5, crop=(48, 64)))
+    sensor = ToFSensor(ambient_suppression=0.5, pixel_pitch_um=2.8, quantise=False)
+    got = _simulate.simulate_tof(scene, "mask1", sensor, noise=False)
+    rows, cols = got.sites
+    mean, suppress, *_ = _tof_light._tof_mean(scene, sensor, 2.8, rows, cols, 1, None, 1)
+    want, sat = ref.chain(mean, sensor._dark_electrons, sensor, suppress)
+    drained = (mean + sensor._dark_electrons < suppress).any(axis=(0, 1))
+    assert 0 < drained.sum() < drained.size
+    np.testing.assert_allclose(got.taps, want, rtol=0, atol=1e-9)
+    np.testing.assert_array_equal(got.saturated, sat.any(axis=(0, 1)))
+    assert got.saturated[drained].all()
+
+
 @pytest.mark.parametrize("pattern", ["mask1", "mask2", "rows", "GZGR/BGBG",
                                      "GRGR/BGBG/GRZR/BGBG"])
 def test_z_sites_are_the_z_mask_in_row_order(pattern):
