@@ -178,3 +178,17 @@ def test_a_batch_stopped_by_a_bad_input_says_what_it_wrote(tmp_path, capfd):
     assert main(["simulate", str(tmp_path / "b.png"), str(tmp_path / "a.png"), "--out",
                  str(tmp_path / "first"), "--quiet"]) == 2
     assert "written" not in capfd.readouterr().err
+
+
+def test_a_learned_method_on_a_clipped_raw_names_the_commands_off(tmp_path, capfd):
+    """The library's advice clip_level=None reached the command line as --clip-level None,
+    a word --help does not list (it offers off|auto|DN)."""
+    from _support import shared_path
+
+    png = shared_path("raw", "halide_bayer_small.png")     # skips when the data is absent
+    capfd.readouterr()
+    assert main(["reconstruct", str(png), "--rgbz-pattern", "mask2", "--phase", "GRBG",
+                 "--black-level", "25", "--white-level", "1023", "--method", "learned",
+                 "--clip-level", "auto", "--out", str(tmp_path / "o"), "--quiet"]) == 2
+    err = capfd.readouterr().err
+    assert err.rstrip().endswith("use another method or --clip-level off"), err

@@ -471,6 +471,8 @@ def flag_words(text, parser):
             return longs[0] if value == "True" else f"no {longs[0]}"
         if action.choices and value not in action.choices and value.lower() in action.choices:
             value = value.lower()                # select=None is the command's --select none
+        if value == "None" and (action.metavar or "").split("|")[0] == "off":
+            value = "off"                        # clip_level=None is --clip-level off
         return f"{longs[0]} {value}" if value else longs[0]
 
     if not options:
