@@ -253,10 +253,9 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
     guide : ndarray, shape (rows, cols, 3), optional
         The frame's own colour image (``ColourISP().run(frame)``: uint8 or
         uint16 sRGB, or float in [0, 1]). The bilateral denoise then also
-        weighs neighbours by colour similarity (window 21 by default, 31 for 1x1 Z
-        pixels) and the
-        flying-pixel test uses colour edges, resolving mixed measurements to
-        their side (:mod:`rgbz_fast.tof` guide, docs/guide/isp.md). None: the
+        weighs neighbours by colour similarity (window 21 by default, 31 for 1x1
+        Z pixels) and the flying-pixel test uses colour edges, resolving mixed
+        measurements to their side (:mod:`rgbz_fast.tof` guide, docs/guide/isp.md). None: the
         unguided ISP.
     workers : int, optional
         Threads of the C kernels (None or -1: all cores). The result does

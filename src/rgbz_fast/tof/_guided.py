@@ -53,18 +53,17 @@ from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, FLAG_RE
                         FLAG_SATURATED, radiometry_coefficients)
 
 __all__ = ["upsample_depth", "check_guide", "GUIDED_WINDOW", "GUIDED_WINDOW_1X1",
-           "UPSAMPLE_COLOUR_SCALE",
-           "UPSAMPLE_AMBIGUITY"]
+           "UPSAMPLE_COLOUR_SCALE", "UPSAMPLE_AMBIGUITY"]
 
 #: the window (Z-pixel cells) of the guided denoise when ``window`` is None: 11 Z
 #: measurements per axis (radius 10 cells) for 2x2 Z pixels (Mask2) ...
 GUIDED_WINDOW = 21
 #: ... and 15 for 1x1 ones (Mask1; radius 15 pixels, the sites 2 apart), each of which
 #: collects a quarter of the light: with the range kernel that knows the fixed pattern
-#: (2026-11-27) it keeps the photon-limited
-#: scenes' measurements valid (art 81.7 -> 85.7 %, the twenty real-NIR pairs 85.4 -> 89.3 %)
-#: and catches as many wrong ones over the six scenes (97.1 %), at the cost of textured
-#: slanted surfaces (docs/reports/isp.md, "The guided ISP on photon-limited scenes")
+#: (2026-11-27) it keeps the photon-limited scenes' measurements valid (art 81.7 -> 85.7 %,
+#: the twenty real-NIR pairs 85.4 -> 89.3 %) and catches as many wrong ones over the six
+#: scenes (97.1 %), at the cost of textured slanted surfaces (docs/reports/isp.md, "The
+#: guided ISP on photon-limited scenes")
 GUIDED_WINDOW_1X1 = 31
 #: the colour contrast (``|c_1 - c_2|^2 / (2 sigma_c^2)``) between the two sides of a depth
 #: discontinuity above which the colour may say which side a measurement is on (25 sigma^2)
