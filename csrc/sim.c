@@ -137,17 +137,18 @@ static inline double sim_post(double e, double suppress, int with_suppress, doub
     /* the suppression drains at most what the tap holds: a tap of a deeply modulated pixel
        holding less than the share s of the DC charge is emptied, not made negative (it had
        held down to -300 e- unflagged and read as valid), and flagged like a clipped one */
-    const int drained = with_suppress && e < suppress;
-    if (with_suppress) e = drained ? 0.0 : e - suppress;
+    if (with_suppress) e = e - suppress;
+    const int drained = e < 0.0;          /* never without a suppression: e >= 0 there */
+    e = e > 0.0 ? e : 0.0;
     if (with_offset) e = e + offset;
-    const int full = (e >= nz->full_well) | drained;
+    const int full = e >= nz->full_well;
     e = e < nz->full_well ? e : nz->full_well;
     if (with_read) e = e + nz->read_noise * zr;
     double dn = nz->black + nz->gain * e;
     if (nz->quantise) dn = floor(dn + 0.5);
     /* the ADC's floor clips too: a tap the ambient suppression drains below the black
        level's reach had read 0 DN unflagged, its depth biased and valid */
-    *sat = full | (dn >= nz->top) | (dn < 0.0);
+    *sat = full | drained | (dn >= nz->top) | (dn < 0.0);
     dn = dn < 0.0 ? 0.0 : dn;
     return dn > nz->top ? nz->top : dn;
 }
