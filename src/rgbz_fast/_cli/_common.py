@@ -727,6 +727,14 @@ def file_label(name):
 LABEL_MAX = 48
 
 
+def error_text(exc, args):
+    """The message of an error a command stops on, in the command's words: an operating
+    system's error on a file in :func:`os_error_words`, any other through :func:`explain`."""
+    if isinstance(exc, OSError) and exc.filename is not None and str(exc).startswith("[Errno"):
+        return os_error_words(exc, args)
+    return explain(exc, args.parser)
+
+
 def batch(args, inputs, out):
     """Run a command's inputs in turn, telling on a failure what was already written.
 
@@ -744,9 +752,7 @@ def batch(args, inputs, out):
         except (CliError, ValueError, TypeError, OSError) as exc:
             if not done:
                 raise
-            text = os_error_words(exc, args) if isinstance(exc, OSError) \
-                and exc.filename is not None and str(exc).startswith("[Errno") \
-                else explain(exc, args.parser)
+            text = error_text(exc, args)
             n, left = len(done), len(inputs) - len(done) - 1
             raise CliError(f"{text.splitlines()[0] if text else type(exc).__name__} ({n} "
                            f"input{'s' * (n > 1)} before it written to {out}, {left} after it "

@@ -134,9 +134,7 @@ def main(argv=None):
             warnings.showwarning = _one_line_warnings(args.command)
             return int(args.run(args) or 0)
     except (_common.CliError, ValueError, TypeError, OSError, ImportError) as exc:
-        text = _common.os_error_words(exc, args) if isinstance(exc, OSError) \
-            and exc.filename is not None and str(exc).startswith("[Errno") \
-            else _common.explain(exc, args.parser)
+        text = _common.error_text(exc, args)
         print(f"rgbz-fast {args.command}: error: "
               f"{text.splitlines()[0] if text else type(exc).__name__}", file=sys.stderr)
         return 2

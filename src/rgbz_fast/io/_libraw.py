@@ -91,7 +91,8 @@ def _libraw_mosaic(rawpy, blob, path, limits):
             shp = None if pattern is None else pattern.shape
             raise ValueError(f"path: {path.name} is not a 2x2 Bayer sensor (CFA pattern {shp}, "
                              f"colours {desc!r}; X-Trans and Foveon are not supported)")
-        filters, end = _tiff_cfa_page(blob)
+        tiff = _tiff_metadata(blob)
+        filters, end = tiff["filters"], tiff["end"]
         if end is not None and end > len(blob):
             # LibRaw reads the bytes it is given: an uncompressed mosaic cut by one byte came
             # back with its last pixel wrong and no error
@@ -113,7 +114,7 @@ def _libraw_mosaic(rawpy, blob, path, limits):
         check_size((raw.sizes.height, raw.sizes.width), 2, path, "path", limits=limits)
         data = np.array(raw.raw_image_visible, dtype=np.uint16, copy=True)
         colour = _camera_colour(raw, desc)
-    make, model = _tiff_make_model(blob)
+    make, model = tiff["make"], tiff["model"]
     info = {"phase": letters, "black_level": black, "white_level": float(wl),
             "make": make, "model": model, **colour}
     return data, info
@@ -137,20 +138,25 @@ def _camera_colour(raw, desc):
     return out
 
 
-def _tiff_cfa_page(blob):
-    """Of a TIFF-based raw file (DNG, TIFF/EP), the IFD holding the mosaic (IFD0 or a SubIFD
-    with a CFAPattern tag): the colours of its CFAPattern as letters of RGBCMYW through its
+def _tiff_metadata(blob):
+    """What the TIFF structure most raw formats are built on says, in one parse: Make and
+    Model of IFD0; of the IFD holding the mosaic (IFD0 or a SubIFD with a CFAPattern tag, DNG
+    and TIFF/EP), the colours of its CFAPattern as letters of RGBCMYW through its
     CFAPlaneColor (the DNG way; without that tag the pattern holds the colour codes
-    themselves, the TIFF/EP way), and the byte its strips or tiles end at. (None, None) when
-    no IFD holds the tag (a non-TIFF raw) or the tags cannot be read: LibRaw's reading
-    stands."""
-    from ._tiff import open_tiff
+    themselves, the TIFF/EP way) and the byte its strips or tiles end at. Each None when the
+    file does not hold it or it cannot be read (a non-TIFF raw): metadata only, LibRaw's
+    reading stands without it."""
+    from ._tiff import open_tiff                # tifffile logs each damaged tag it skips
 
+    out = {"make": None, "model": None, "filters": None, "end": None}
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             with open_tiff(blob) as tif:
                 first = tif.pages[0]
+                for key, tag in (("make", "Make"), ("model", "Model")):
+                    t = first.tags.get(tag)
+                    out[key] = str(t.value).strip() if t is not None else None
                 for page in [first] + list(getattr(first, "pages", None) or []):
                     cfa = page.tags.get(33422)               # CFAPattern
                     if cfa is None:
@@ -160,26 +166,11 @@ def _tiff_cfa_page(blob):
                     if plane is not None:
                         planes = bytes(plane.value)
                         codes = bytes(planes[c] if c < len(planes) else 255 for c in codes)
-                    letters = "".join("RGBCMYW"[c] if c < 7 else "?" for c in codes)
+                    out["filters"] = "".join("RGBCMYW"[c] if c < 7 else "?" for c in codes)
                     ends = [int(o) + int(n) for o, n in zip(page.dataoffsets,
                                                              page.databytecounts)]
-                    return letters, (max(ends) if ends else None)
+                    out["end"] = max(ends) if ends else None
+                    break
     except Exception:  # noqa: BLE001 - metadata only: LibRaw's reading stands without it
-        return None, None
-    return None, None
-
-
-def _tiff_make_model(blob):
-    """Make and Model from the TIFF IFD0 most raw formats are built on, or (None, None)."""
-    from ._tiff import open_tiff                # tifffile logs each damaged tag it skips
-
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            with open_tiff(blob) as tif:
-                tags = tif.pages[0].tags
-                make, model = tags.get("Make"), tags.get("Model")
-                return (str(make.value).strip() if make is not None else None,
-                        str(model.value).strip() if model is not None else None)
-    except Exception:  # noqa: BLE001 - metadata only: a non-TIFF raw has none to give
-        return None, None
+        pass
+    return out
