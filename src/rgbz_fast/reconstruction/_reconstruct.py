@@ -246,10 +246,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     check_domain(method, params.domain)          # the plan methods' in build_plans too
     if method == "learned":
         filters = resolve_filters(learned_only(params.filters), pattern)
-        if clip is not None and _reaches(src, pattern, clip):
-            raise ValueError("clip_level: method 'learned' has no clipped-pixel rule; the frame "
-                             f"reaches the clip level {clip:g}, use another method or "
-                             "clip_level=None")
+        _refuse_clipped("learned", src, pattern, clip)
         run_learned(src, out, pattern, filters, params.precision, bd, nthreads)
         return out
     if method == "z_guided":
@@ -257,10 +254,7 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
         if tof is None and isinstance(frame, RawFrame):
             tof = frame.tof
         grids = guide_source(src.shape, pattern, nir=nir, tof=tof, workers=nthreads)
-        if clip is not None and _reaches(src, pattern, clip):
-            raise ValueError("clip_level: method 'z_guided' has no clipped-pixel rule; the "
-                             f"frame reaches the clip level {clip:g}, use another method or "
-                             "clip_level=None")
+        _refuse_clipped("z_guided", src, pattern, clip)
         run_z_guided(src, out, pattern, filters, grids, params.precision, bd, nthreads)
         return out
     plan_map, plans, n_plans = _plans_for(pattern, method, params.sg_mode, params.domain)
@@ -269,6 +263,14 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bd, clip,
                 kernel_threads(nthreads, src.size))
     return out
+
+
+def _refuse_clipped(method, src, pattern, clip):
+    """The filter methods have no clipped-pixel rule: refuse a frame that reaches ``clip``."""
+    if clip is not None and _reaches(src, pattern, clip):
+        raise ValueError(f"clip_level: method {method!r} has no clipped-pixel rule; the frame "
+                         f"reaches the clip level {clip:g}, use another method or "
+                         "clip_level=None")
 
 
 def _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bit_depth, clip,
