@@ -219,6 +219,21 @@ class ColourISP:
         return self.build(self, changes, caller="ColourISP.replace()")
 
     # ------------------------------------------------------------------ helpers
+    def _bayer_input(self, cfa, phase, bit_depth, black_level, white_level):
+        """A complete Bayer CFA's checked arguments (render, white_balance_gains): data,
+        pattern, bit depth, black and white levels."""
+        data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        pattern = get_pattern(phase)
+        if pattern.has_z or pattern.bayer_phase is None:
+            raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
+                             f"{pattern.name!r} (reconstruct the Z sites first)")
+        bd = check_bit_depth(bit_depth)
+        if black_level is None:
+            black_level = self.black_level if self.black_level is not None else 0.0
+        black, white = _black_white(black_level, _white_of(white_level, bd))
+        _check_cfa_levels(data, white, bd)
+        return data, pattern, bd, black, white
+
     def _inputs(self, frame, pattern, bit_depth, black_level, reference):
         if reference and not isinstance(frame, RawFrame):
             raise ValueError("reference: needs a RawFrame with a reference CFA")
@@ -384,17 +399,9 @@ class ColourISP:
         >>> img.shape, img.dtype, int(img[4, 4, 0]), st["gains"].tolist()
         ((8, 8, 3), dtype('uint8'), 187, [1.0, 1.0, 1.0])
         """
-        data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
+        data, pattern, bd, black, white = self._bayer_input(cfa, phase, bit_depth, black_level,
+                                                            white_level)
         return_stages = check_flag(return_stages, "return_stages")
-        pattern = get_pattern(phase)
-        if pattern.has_z or pattern.bayer_phase is None:
-            raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
-                             f"{pattern.name!r} (reconstruct the Z sites first)")
-        bd = check_bit_depth(bit_depth)
-        if black_level is None:
-            black_level = self.black_level if self.black_level is not None else 0.0
-        black, white = _black_white(black_level, _white_of(white_level, bd))
-        _check_cfa_levels(data, white, bd)
         if colour_matrix is not None:
             colour_matrix = ColourCorrection(matrix=colour_matrix).matrix    # checked
         if not return_stages and self._fused(data):
@@ -433,16 +440,8 @@ class ColourISP:
         >>> ColourISP().white_balance_gains(cfa, "GRBG").tolist()
         [2.0, 1.0, 2.6666666666666665]
         """
-        data = check_image(cfa, "cfa", ndim=2, dtypes=FRAME_DTYPES)
-        pattern = get_pattern(phase)
-        if pattern.has_z or pattern.bayer_phase is None:
-            raise ValueError(f"phase: expected a plain Bayer phase, got pattern "
-                             f"{pattern.name!r} (reconstruct the Z sites first)")
-        bd = check_bit_depth(bit_depth)
-        if black_level is None:
-            black_level = self.black_level if self.black_level is not None else 0.0
-        black, white = _black_white(black_level, _white_of(white_level, bd))
-        _check_cfa_levels(data, white, bd)                             # as render()
+        data, pattern, bd, black, white = self._bayer_input(cfa, phase, bit_depth, black_level,
+                                                            white_level)        # as render()
         wb = self.white_balance
         if wb.gains is not None:
             return np.asarray(wb.gains, np.float64)
