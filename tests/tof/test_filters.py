@@ -14,6 +14,7 @@ from _reference import tof as ref  # noqa: E402
 import rgbz_fast as rz
 from rgbz_fast.simulation import Scene, ToFSensor, simulate_tof
 from rgbz_fast.tof._filters import SiteGrid
+from rgbz_fast.tof._stages import box_mean
 from rgbz_fast.tof import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, denoise_phasors,
                            denoise_phasors_bilateral, flying_pixels, tof_depth)
 
@@ -50,25 +51,55 @@ def _holes(sites, rng, share=0.15):
 def test_box_kernel_equals_the_numpy_reference_bit_for_bit(pattern, window, holes):
     """The C box mean is the NumPy code it replaced, bit for bit: full grids (Mask1, Mask2,
     rows) and grids with holes, saturated measurements kept out, extra planes of both
-    shapes, NaN and inf in the values, 1 and 2 threads (a grid of two threads' rows)."""
+    shapes, 1 and 2 threads (a grid of two threads' rows); NaN and inf in the values through
+    the unchecked ``box_mean`` (the public function refuses them: the next test)."""
     rng = np.random.default_rng(window + 10 * holes)
     sites, block = _sites(pattern, (96, 90))
     if holes:
         sites = _holes(sites, rng)
     n = sites[0].size
     i, q = rng.normal(size=(2, 3, n)) * 100
-    i[0, 5], q[1, 7], i[2, 11] = np.nan, np.inf, -np.inf
     extra = (rng.random((3, n)) * 1e3, rng.random(n))
+    inf_i, inf_q = i.copy(), q.copy()
+    inf_i[0, 5], inf_q[1, 7], inf_i[2, 11] = np.nan, np.inf, -np.inf
+    grid = SiteGrid(sites, block)
     for use in (None, rng.random(n) > 0.2):
-        with np.errstate(invalid="ignore"):                   # inf * 0 in NumPy
-            want = ref.denoise_phasors(i, q, sites, block=block, window=window, use=use,
-                                       extra=extra)
         for workers in (1, 2):
-            got = denoise_phasors(i, q, sites, block=block, window=window, use=use,
-                                  extra=extra, workers=workers)
-            for a, b in zip(got[:3] + tuple(got[3]), want[:3] + tuple(want[3])):
-                assert a.shape == b.shape and a.dtype == b.dtype
-                np.testing.assert_array_equal(a.view(np.uint64), b.view(np.uint64))
+            for ii, qq, public in ((i, q, True), (inf_i, inf_q, False)):
+                with np.errstate(invalid="ignore"):                   # inf * 0 in NumPy
+                    want = ref.denoise_phasors(ii, qq, sites, block=block, window=window,
+                                               use=use, extra=extra)
+                if public:
+                    got = denoise_phasors(ii, qq, sites, block=block, window=window, use=use,
+                                          extra=extra, workers=workers)
+                else:
+                    got = box_mean(ii, qq, grid, block, window,
+                                   np.ones(n, bool) if use is None else use, list(extra),
+                                   workers)
+                for a, b in zip(got[:3] + tuple(got[3]), want[:3] + tuple(want[3])):
+                    assert a.shape == b.shape and a.dtype == b.dtype
+                    np.testing.assert_array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf, 1e308])
+def test_box_refuses_values_that_are_not_finite_phasors(bad):
+    """A1 (2026-11-27): NaN and infinities had gone into every neighbour's mean silently, and
+    1e308 overflowed to inf; an extra array of another shape reached the kernel, whose
+    message named no parameter."""
+    sites, block = _sites("mask1", (20, 20))
+    n = sites[0].size
+    i = np.ones((2, n))
+    bad_i = i.copy()
+    bad_i[1, 3] = bad
+    with pytest.raises(ValueError, match=r"^i, q: hold NaN, infinite values or magnitudes"):
+        denoise_phasors(bad_i, i, sites, block=block)
+    with pytest.raises(ValueError, match=r"^i, q: hold NaN"):
+        denoise_phasors_bilateral(bad_i, i, np.ones_like(i), sites, block=block)
+    with pytest.raises(ValueError, match=r"^extra: hold NaN"):
+        denoise_phasors(i, i, sites, block=block, extra=(bad_i[1],))
+    for shape in ((1, 2, n), (2, n + 1), (3, n)):
+        with pytest.raises(ValueError, match=r"^extra: array 0 has shape"):
+            denoise_phasors(i, i, sites, block=block, extra=(np.ones(shape),))
 
 
 def test_box_takes_a_site_grid_and_checks_it():

@@ -38,8 +38,8 @@ from ._filters import _check_odd, check_scale, denoise_phasors_bilateral
 from ._guided import _layout_of, check_guide, guided_flying_of, guided_run
 from ._noise import dark_noise, delay_fpn_variance, tap_variance
 from ._result import ToFDepth
-from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, demodulate_unwrap,
-                      denoise_phasors, unwrap)
+from ._stages import (_check_unwrap_args, _check_window, _phasors_offset, box_mean,
+                      demodulate_unwrap, unwrap)
 from ._validity import FLAG_LOW_SIGNAL, validity
 
 __all__ = ["ToFISP", "tof_depth"]
@@ -394,9 +394,12 @@ def _run(tof, p, nthreads, guide=None):
         fp_offset = offset                 # the offset the fixed pattern scales
         if denoise == "box":
             grid = site_grid()
-            i, q, count, (off_mean,) = denoise_phasors(i, q, grid, block=tof.block,
-                                                       window=window, use=~saturated,
-                                                       extra=(offset,), workers=nthreads)
+            # box_mean: denoise_phasors without its checks (these phasors come from taps
+            # checked finite and within TAP_MAX)
+            i, q, count, (off_mean,) = box_mean(
+                np.ascontiguousarray(i, np.float64), np.ascontiguousarray(q, np.float64),
+                grid, tof.block, _check_window(window), ~np.asarray(saturated, bool),
+                [np.ascontiguousarray(offset, np.float64)], nthreads)
             noise_offset = np.where(count > 0, off_mean, offset)
             var = tap_variance(noise_offset, sensor, scale=2.0, count=count, workers=nthreads)
             fp_offset = noise_offset

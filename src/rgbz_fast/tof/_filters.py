@@ -47,6 +47,21 @@ import numpy as np
 from .. import _kernels
 from .._validate import check_block, check_int, check_number, check_sites, check_workers
 
+#: the largest tap magnitude: the phasor, its noise and its SNR square sums of taps, which
+#: stay finite doubles below it (taps are counts or electrons, far below)
+TAP_MAX = 1e150
+
+
+def check_phasor_values(arrays, name, what="phasors"):
+    """Refuse NaN, infinities and magnitudes beyond :data:`TAP_MAX` in ``arrays``: the means
+    and squared differences of the denoise would overflow or carry them into every
+    neighbour's mean. The minimum and the maximum (NaN propagates through both, and then
+    fails the comparison) cost what ``isfinite`` did."""
+    for a in arrays:
+        if a.size and not (a.min() >= -TAP_MAX and a.max() <= TAP_MAX):
+            raise ValueError(f"{name}: hold NaN, infinite values or magnitudes beyond "
+                             f"{TAP_MAX:g}; expected finite {what} (sums of taps)")
+
 #: the range of a filter's scale (range_scale, colour_scale): beyond it the weights are those
 #: of the bound (every neighbour equal, or none but the exact match), and far beyond it their
 #: 1 / (2 h^2) overflows or divides by zero
@@ -221,8 +236,7 @@ def _check_phasor_planes(i, q, var, n_name="i, q"):
     if i.ndim != 2 or q.shape != i.shape or v.shape != i.shape:
         raise ValueError(f"{n_name}, var: expected three arrays of the same shape (F, n), got "
                          f"{i.shape}, {q.shape} and {v.shape}")
-    if not (np.all(np.isfinite(i)) and np.all(np.isfinite(q))):
-        raise ValueError(f"{n_name}: hold NaN or infinite values; expected finite phasors")
+    check_phasor_values((i, q), n_name)
     if not np.all(v > 0):
         raise ValueError("var: expected positive variances (the noise of I and Q)")
     return i, q, v

@@ -18,7 +18,7 @@ from .. import _kernels
 from .._sensors import SPEED_OF_LIGHT
 from .._validate import (FRAME_DTYPES, as_array, as_list, check_block, check_frequencies,
                          check_image, check_number, check_workers, kernel_threads)
-from ._filters import SiteGrid, _axis_offsets, _check_odd
+from ._filters import TAP_MAX, SiteGrid, _axis_offsets, _check_odd, check_phasor_values
 
 __all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unwrap",
            "unambiguous_range", "MAX_WRAPS"]
@@ -32,9 +32,6 @@ __all__ = ["demodulate", "phasors", "denoise_phasors", "unwrap", "demodulate_unw
 MAX_WRAPS = int(_kernels.TOF_MAX_WRAPS)
 
 
-#: the largest tap magnitude: the phasor, its noise and its SNR square sums of taps, which
-#: stay finite doubles below it (taps are counts or electrons, far below)
-TAP_MAX = 1e150
 
 
 def _check_taps(taps, name="taps"):
@@ -200,7 +197,21 @@ def denoise_phasors(i, q, sites, *, block=1, window=5, use=None, extra=(),
         raise ValueError(f"use: expected shape ({n},), got {use.shape}")
     extra = [np.ascontiguousarray(as_array(e, "extra", dtype=np.float64))
              for e in as_list(extra, "extra")]
-    nthreads = check_workers(workers)
+    F = i.shape[0]
+    for k, e in enumerate(extra):
+        if e.shape not in ((F, n), (n,)):
+            raise ValueError(f"extra: array {k} has shape {e.shape}; expected ({F}, {n}) or "
+                             f"({n},), the shape of i or one value per measurement")
+    check_phasor_values((i, q), "i, q")
+    check_phasor_values(extra, "extra", "values")
+    return box_mean(i, q, grid, block, window, use, extra, check_workers(workers))
+
+
+def box_mean(i, q, grid, block, window, use, extra, nthreads):
+    """:func:`denoise_phasors` on checked arguments (the ToF ISP's own phasors, from checked
+    taps): C-contiguous float64 ``i``, ``q`` (F, n) and ``extra``, a SiteGrid, a bool
+    ``use`` (n,)."""
+    n = i.shape[1]
     radius = (window // 2) * block
     # the offsets of the window that link some pair of grid lines (as the NumPy code took them)
     offs = [np.array([a for a, *_ in _axis_offsets(u, radius)], np.int64)
