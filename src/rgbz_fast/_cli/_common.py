@@ -781,6 +781,19 @@ def png_bytes(image):
     return iio.imwrite("<bytes>", image, extension=".png", compress_level=PNG_LEVEL)
 
 
+def tell_earlier_outputs(out, names, written, command):
+    """One line on stderr naming the files of ``names`` (what the command may write into
+    ``out`` for its inputs, with other options) that ``out`` holds and this run did not
+    write (``written``): a rerun with other options had left the previous run's files
+    beside the new ones, without a word. Nothing is removed."""
+    seen = set(written)
+    left = [n for n in dict.fromkeys(names) if n not in seen and os.path.lexists(out / n)]
+    if left:
+        them = "them" if len(left) > 1 else "it"
+        print(f"rgbz-fast {command}: {out} holds {', '.join(left)} from an earlier run; this "
+              f"run did not write {them}", file=sys.stderr)
+
+
 def write_report(out, files):
     """Write ``files`` ({name: text or bytes}) into the folder ``out``, each atomically;
     nothing when ``out`` is None."""

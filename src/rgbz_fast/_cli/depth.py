@@ -82,10 +82,8 @@ def run(args):
             calibration = ToFCalibration.load(args.calibration, max_bytes=args.max_bytes)
         except (OSError, ValueError, TypeError, KeyError) as exc:
             raise c.CliError(f"--calibration: {args.calibration}: {c.explain(exc)}") from None
-    full = (["_depth-full.tif", "_depth-full.png", "_depth-full-confidence.tif"]
-            if args.full_resolution else [])
-    outs = [(f, [f"{f.stem}_depth.tif", f"{f.stem}_depth.png", f"{f.stem}_depth-flags.png",
-                 f"{f.stem}_depth-flags.tif"] + [f.stem + x for x in full]) for f in args.frames]
+    full = FULL_PRODUCTS if args.full_resolution else ()
+    outs = [(f, [f.stem + x for x in PRODUCTS + full]) for f in args.frames]
     c.unique_outputs(outs, out, reads=[args.calibration])
     with c.batch(args, outs, out) as done:
         for f, (tif_name, png_name, flags_name, bits_name, *full_names) in outs:
@@ -141,7 +139,16 @@ def run(args):
                 print(f"{f} -> {out / tif_name}, {png_name}, {flags_name}, {bits_name}{extra}: "
                       f"{summary['text']}")
             done.append(f)
+    if not args.quiet:
+        left = [f.stem + x for f in args.frames for x in PRODUCTS + FULL_PRODUCTS]
+        c.tell_earlier_outputs(out, left, [n for _, names in outs for n in names], NAME)
     return 0
+
+
+#: what ``depth`` writes per frame, after the frame's stem; with --full-resolution also
+#: FULL_PRODUCTS
+PRODUCTS = ("_depth.tif", "_depth.png", "_depth-flags.png", "_depth-flags.tif")
+FULL_PRODUCTS = ("_depth-full.tif", "_depth-full.png", "_depth-full-confidence.tif")
 
 
 #: the flag bits of the flags TIFF, as its description gives them

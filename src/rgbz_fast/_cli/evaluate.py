@@ -80,11 +80,18 @@ def add_parser(sub):
 
 def _check_reports(args, config, dataset, out):
     """The files the reports may write, checked against the inputs before anything is run:
-    no report over an image, --filters or --raw-options file, and no figure in the dataset's
-    folder, where the next run would evaluate it as an image."""
+    no report over an image, --filters or --raw-options file, no figure in the dataset's
+    folder, where the next run would evaluate it as an image, and no reports.txt of the
+    user's in --out (its lines had been taken as reports to delete, and it was replaced)."""
     from ..evaluation._cache import _safe
+    from ..evaluation._reports import MANIFEST, check_reports_folder
 
-    names = ["results.csv", "results.json", "summary.md"]
+    if out is not None:
+        try:
+            check_reports_folder(out, "--out")
+        except ValueError as exc:
+            raise c.CliError(str(exc)) from None
+    names = [MANIFEST, "results.csv", "results.json", "summary.md"]
     names += [f"{kind}_{k}.png" for k in config.metrics for kind in ("bars", "paired")]
     names += [f"{kind}_{_safe(s.name)}{ext}" for s in dataset
               for kind, ext in (("table", ".md"), ("crops", ".png"))]
@@ -96,8 +103,11 @@ def _check_reports(args, config, dataset, out):
 def _check_dataset_options(args, dataset):
     """Options that would not apply are refused before anything runs (they had been ignored
     and still written into the report's header): the raw options without a raw file, the
-    simulation's options on a dataset of raw files, --zoom without the crop figure; and a
+    simulation's options on a dataset of raw files, --zoom without the crop figure (with
+    --no-plots, or with no image metric); and a
     --table-image given by its file name is the image of that name."""
+    from ..evaluation import IMAGE_METRICS
+
     raw = [s for s in dataset if s.is_raw]
     if args.raw_options is not None and not raw:
         raise c.CliError("--raw-options: the dataset holds no raw file; the options apply to "
@@ -113,6 +123,10 @@ def _check_dataset_options(args, dataset):
                              "bit depth, noise and lens)")
     if args.zoom is not None and args.no_plots:
         raise c.CliError("--zoom: places the crop figure, which --no-plots leaves out")
+    if args.zoom is not None and not set(args.metrics) & set(IMAGE_METRICS):
+        raise c.CliError(f"--zoom: places the crop figure, which is made for the image "
+                         f"metrics ({', '.join(IMAGE_METRICS)}); --metrics "
+                         f"{','.join(args.metrics)} leaves it out")
     if args.table_image is not None:
         names = [s.name for s in dataset]
         if args.table_image not in names and Path(args.table_image).stem in names:
@@ -160,11 +174,22 @@ def run(args):
     from ..reconstruction import ReconstructParams
     from ..simulation import Optics
 
+    # options that would be ignored (pattern-study refuses the first pair as well)
+    if args.no_cache and args.cache is not None:
+        raise c.CliError("--cache: names the cache that --no-cache turns off; give one of them")
+    if args.processes is not None and args.scheduler is not None:
+        raise c.CliError("--processes: starts local worker processes, which --scheduler "
+                         "replaces by the Dask scheduler's workers; give one of --processes "
+                         "and --scheduler")
     params = ReconstructParams(precision=args.precision, domain=args.domain,
                                clip_level=args.clip_level, filters=c.learned_filters(args))
     optics = None
     if args.optics:
-        optics = Optics(f_number=args.f_number, olpf=args.olpf, defocus_um=args.defocus_um)
+        try:
+            optics = Optics(f_number=args.f_number, olpf=args.olpf, defocus_um=args.defocus_um)
+        except ValueError as exc:       # 'Optics.f_number: ...' is the command's --f-number
+            raise c.CliError(c.flag_words(str(exc).removeprefix("Optics."), args.parser)) \
+                from None
     elif (args.f_number, args.olpf, args.defocus_um) != (2.8, 0.0, 0.0):
         raise c.CliError("--f-number, --olpf and --defocus-um need --optics")
     config = EvalConfig(patterns=args.patterns, methods=args.methods, metrics=args.metrics,

@@ -117,4 +117,10 @@ def run(args):
     files.update({"hardware.md": text, "hardware.json": doc})
     print(doc if args.json else text, end="")     # before the files: kept if a write fails
     c.write_report(out, files)
+    if out is not None and not args.quiet:   # hardware_sweep.png of a run with --sweep
+        c.tell_earlier_outputs(out, REPORTS, files, NAME)
     return 0
+
+
+#: every file hardware may write into --out (hardware_sweep.png with --sweep)
+REPORTS = ("hardware.md", "hardware.json", "hardware_sweep.png")

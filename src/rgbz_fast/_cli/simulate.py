@@ -40,6 +40,7 @@ def run(args):
     from tqdm.auto import tqdm
 
     from .._patterns import get_pattern
+    from ..simulation._loaders import folder_name
 
     pattern = get_pattern(args.pattern)
     if not args.noise and c.given(args, "seed"):
@@ -48,7 +49,8 @@ def run(args):
     c.must_exist(args.scenes, "scene ")
     out = c.output_folder(args.out)
     suffix = ".tif" if args.format == "tiff" else ".npz"
-    dests = [(s, f"{s.stem if not s.is_dir() else s.name}_{c.file_label(pattern)}{suffix}")
+    # a folder by its name ('.' by the name of the folder it is, as the frame's meta has it)
+    dests = [(s, f"{s.stem if not s.is_dir() else folder_name(s)}_{c.file_label(pattern)}{suffix}")
              for s in args.scenes]
     c.unique_outputs([(s, [n]) for s, n in dests], out)
     with c.batch(args, dests, out) as done:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import io
-from pathlib import Path
+import os
 
 import numpy as np
 
@@ -29,7 +29,9 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     :func:`paired_chart`). Returns the list of files written. The folder's
     ``reports.txt`` lists them; the files a previous run listed there and
     this one does not write are removed, so that a folder never mixes two
-    runs (nothing else in it is touched). ``table_image`` defaults to kodim09
+    runs (nothing else in it is touched: only a ``reports.txt`` that starts with
+    the header this function writes is read, and only the names of the reports
+    it makes, plain files in the folder, are removed). ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
 
@@ -40,8 +42,9 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     ValueError
         ``results`` holds no row (an empty table has nothing to summarise;
         nothing is written, not even the folder), ``table_image`` is not
-        one of its images, or ``crop_box`` is not inside the crop source's
-        image (checked before anything is written).
+        one of its images, ``crop_box`` is not inside the crop source's
+        image, or the folder holds a ``reports.txt`` that rgbz-fast did not
+        write (it would be replaced; checked before anything is written).
     """
     plots = check_flag(plots, "plots")
     if not isinstance(results, Results):
@@ -57,6 +60,7 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     if crop_box is not None:
         crop_box = _check_box(crop_box, name="crop_box")
     out = check_path(out_dir, "out_dir")
+    previous = _previous_reports(out, "out_dir")       # a foreign reports.txt is refused here
     figure = None
     if plots and crop_source is not None:
         # made before anything is written: a crop_box outside its image is refused with the
@@ -91,7 +95,7 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
             put(f"crops_{_safe(crop_source.name)}.png", figure)
     out.mkdir(parents=True, exist_ok=True)
     names = [name for name, _ in made]
-    for name in sorted(_previous_reports(out) - set(names)):  # a previous run's, not rewritten
+    for name in sorted(previous - set(names)):      # a previous run's, not rewritten
         stale = out / name
         if stale.is_file() and not stale.is_symlink():
             stale.unlink()
@@ -110,15 +114,58 @@ MANIFEST_HEAD = ("# The reports rgbz-fast evaluate wrote here. The next evaluati
                  "folder\n# replaces them and removes those it does not write again.\n")
 
 
-def _previous_reports(out):
-    """The file names the manifest of a previous run lists (plain names in ``out`` only)."""
-    try:
-        text = (out / MANIFEST).read_text(encoding="utf-8", errors="replace")
-    except OSError:
+#: the names of the reports :func:`write_reports` makes: the fixed ones, and the tables,
+#: charts and crop figures named after an image or a metric through ``_safe``
+REPORT_NAMES = ("results.csv", "results.json", "summary.md")
+REPORT_KINDS = (("table_", ".md"), ("bars_", ".png"), ("paired_", ".png"), ("crops_", ".png"))
+#: the most of a manifest that is read (a few dozen names; a foreign file may be anything)
+MANIFEST_MAX = 1 << 20
+
+
+def _report_name(name):
+    """Whether ``name`` is a name :func:`write_reports` gives a report: a plain file name
+    (no separator, no '..', not absolute) of one of :data:`REPORT_KINDS`, its field as
+    ``_safe`` writes it."""
+    if name in REPORT_NAMES:
+        return True
+    return any(name.startswith(head) and name.endswith(ext)
+               and len(name) > len(head) + len(ext)
+               and _safe(name[len(head):-len(ext)]) == name[len(head):-len(ext)]
+               and name[len(head):-len(ext)] not in (".", "..")
+               for head, ext in REPORT_KINDS)
+
+
+def _previous_reports(out, name="out_dir"):
+    """The report names the manifest of a previous run lists (plain file names in ``out`` of
+    the kinds :func:`write_reports` makes; nothing else is ever removed), an empty set when
+    there is no manifest; a ValueError naming ``name`` when ``out`` holds a ``reports.txt``
+    that is not one (its first line is not :data:`MANIFEST_HEAD`'s): a user's file of that
+    name had its lines taken as reports to delete, and would have been replaced."""
+    path = out / MANIFEST
+    if not os.path.lexists(path):
         return set()
+    foreign = (f"{name}: {path} exists and was not written by rgbz-fast (it is not the list "
+               f"of reports evaluate writes); move or rename it, or choose another {name}")
+    if not path.is_file():                  # a folder, a FIFO, a device, a dangling link
+        raise ValueError(foreign)
+    head = MANIFEST_HEAD.splitlines(keepends=True)[0].encode("utf-8")
+    try:
+        with open(path, "rb") as f:
+            if f.readline(len(head) + 1) != head:
+                raise ValueError(foreign)
+            text = f.read(MANIFEST_MAX).decode("utf-8", errors="replace")
+    except OSError as exc:
+        raise ValueError(f"{name}: {path} cannot be read ({exc.strerror or exc}); it lists "
+                         f"the reports a previous run wrote there") from None
     names = {line.strip() for line in text.splitlines()}
-    return {n for n in names if n and not n.startswith("#") and Path(n).name == n
-            and n not in (".", "..", MANIFEST)}
+    return {n for n in names if n and not n.startswith("#") and _report_name(n)}
+
+
+def check_reports_folder(out, name="out_dir"):
+    """A ValueError naming ``name`` when the folder ``out`` holds a ``reports.txt`` that
+    rgbz-fast did not write (:func:`write_reports` would refuse it after the evaluation;
+    the command line checks it before)."""
+    _previous_reports(check_path(out, name), name)
 
 
 def _figure_png(fig, metadata=None):

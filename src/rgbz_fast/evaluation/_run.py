@@ -443,7 +443,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     scheduler : str or distributed.Client, optional
         A Dask scheduler address (``"tcp://host:8786"``) or client: the same
         tasks run on Dask distributed instead of the local pool and give the
-        same numbers.
+        same numbers; not with ``processes``.
     progress : bool
         Show a progress bar (tqdm) on stderr.
     skip_bad : bool
@@ -467,6 +467,8 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     config = merge_params(EvalConfig, config, overrides, name="config", caller="evaluate()")
     nproc = check_processes(processes)
     scheduler = check_scheduler(scheduler)
+    if processes is not None and scheduler is not None:       # processes had been dropped
+        raise ValueError("processes: local processes, which scheduler replaces; give one of them")
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):

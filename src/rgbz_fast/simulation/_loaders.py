@@ -193,8 +193,17 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         wavelengths = file_wl if file_wl is not None else 400.0 + 10.0 * np.arange(k)
     return Scene.from_spectral(cube, wavelengths, depth=depth, depth_valid=depth_valid,
                                ir_reflectance=ir_reflectance,
-                               name=name or (p.stem if p.is_file() else p.name), meta=meta,
+                               name=name or (p.stem if p.is_file() else folder_name(p)),
+                               meta=meta,
                                input_bits=input_bits)
+
+
+def folder_name(path):
+    """The name of the folder ``path``: its own, or, for '.', '..' or 'a/..' (whose
+    ``Path.name`` is '' or '..'), that of the folder it leads to ('' had named the scene of
+    ``rgbz-fast simulate .`` and its frame file '_mask1.npz')."""
+    p = Path(path)
+    return p.name if p.name not in ("", ".", "..") else p.resolve().name
 
 
 #: the largest disparity offset (pixels) of dmin.txt: Middlebury's are 200-300; 1e300 made
@@ -269,7 +278,7 @@ def load_rgbd(folder, *, focal_px=MIDDLEBURY_FOCAL_PX, baseline_m=MIDDLEBURY_BAS
     try:
         return Scene.from_rgb(rgb, disparity=disp, focal_px=focal_px, baseline_m=baseline_m,
                               disparity_offset=dmin, invalid_disparity=0,
-                              ir_reflectance=ir_reflectance, name=name or d.name,
+                              ir_reflectance=ir_reflectance, name=name or folder_name(d),
                               meta={"source": str(d), "dmin": dmin})
     except ValueError as exc:
         raise ValueError(f"folder: {d}: {exc}") from None
