@@ -1,7 +1,7 @@
 """Slow, plain NumPy reference implementations of the reconstruction methods.
 
-Written straight from docs/guide/interpretation.md and section 4 of the paper
-(Rebiere et al., eqs. 1-19), independently of the C kernels and of
+Written straight from docs/guide/interpretation.md and the paper (Rebiere et al.:
+section 2.2, eqs. 1a-1e, and section 4, eqs. 2-19), independently of the C kernels and of
 ``rgbz_fast._plans``: the tests check that the two implementations of the one
 specification agree.
 
@@ -344,10 +344,10 @@ def sg_weights(vals, codes, sigma_floor, sg_invalid="exclude", sg_uncovered="all
     sg_invalid="zero": invalid covering SGs count in the mean with g = 0 (the
     spec says both "invalid SGs get g = 0" and "the mean of the g of the SGs
     covering", which read together give this; the kernel does "exclude").
-    A position none of whose covering SGs is valid gets 0 (sg_uncovered="all_valid",
-    the spec) or, with sg_uncovered="all_valid", the mean of every valid SG
-    of the site (NOT in docs/guide/interpretation.md; what rgbz_fast's plans do, kept
-    only to pin down that disagreement in the tests).
+    A position none of whose covering SGs is valid gets the mean of every valid SG of
+    the site (sg_uncovered="all_valid", the default: the spec of
+    docs/guide/interpretation.md, and what rgbz_fast's plans do) or, with
+    sg_uncovered="zero", 0.
     With ``clip`` (docs/guide/raw.md, "Near clipping"), an SG whose differences all join
     two clipped pixels is *unknown* at that site: like an SG without differences it is
     left out of sigma and its g is 0 (all g are 1 if no SG is known), but it still

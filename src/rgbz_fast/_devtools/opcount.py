@@ -14,7 +14,7 @@ Table 1 does not count them.
 returns, for every target colour, the mean, minimum and maximum count per
 missing pixel. Counts depend on the data only through two branches: the
 fallback to the plain mean when every weight underflows (it adds
-``n - 2`` additions) and the short-circuit tests of ``edi_rows``; the mean
+``2n - 3`` additions) and the short-circuit tests of ``edi_rows``; the mean
 over a random frame is therefore a slight over-estimate of what natural
 images cost, and the maximum is the worst case seen.
 

@@ -202,7 +202,9 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     :math:`\\omega = \\alpha\\beta\\gamma(ori)` (EDI, eq. 6) and, for SG on
     Mask1, :math:`\\omega_6 = SG_N + SG_W + SG_{NW}` etc. (eq. 19, each SG
     discriminated by eq. 7). :math:`\\gamma = \\exp(-G^2 / 2\\sigma^2)` with
-    :math:`\\sigma` the smallest gradient, floored at ``sigma_floor``; if every
+    :math:`\\sigma` the smallest gradient, floored at ``sigma_floor`` and at
+    ``sigma_rel`` times the mean gradient (0.5 by default; ``sigma_rel=0`` is eq. 7 as
+    printed, :meth:`ReconstructParams.paper` the paper-literal preset); if every
     weight underflows the plain mean is used. The Mask2 SG variant, which the
     paper does not spell out, is
     :math:`\\omega = \\alpha\\beta\\gamma_{line}(ori)\\,\\overline{SG}(pos)`:
