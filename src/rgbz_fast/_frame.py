@@ -593,6 +593,20 @@ def raw_clip_level(frame):
     else:
         level = float(np.asarray(level, dtype=frame.data.dtype))
     if not level > 0:
-        raise ValueError(f"clip_level: {tuple(clip)} is at or below the black level "
-                         f"{tuple(black)}: every pixel would be clipped")
+        # the level is the saturation level the frame was read with (read_raw's clip_level,
+        # the command line's --saturation-level), not a clip_level of the caller: named as
+        # the frame's, in plain numbers (it had read "clip_level: (np.float64(20.0), ...)",
+        # which the command line took for its --clip-level)
+        where = "at or below" if np.any(clip <= black) else \
+            f"within half a code (of the frame's {frame.bit_depth} bits) of"
+        raise ValueError(f"frame: its saturation level (meta clip_level, the clip_level it "
+                         f"was read with) {_levels_text(clip)} is {where} its black level "
+                         f"{_levels_text(black)}: every pixel would be clipped")
     return level
+
+
+def _levels_text(levels):
+    """Quad levels as text: one number when they are equal, else the four ('20', '(20, 30,
+    30, 30)')."""
+    vals = [float(v) for v in np.ravel(levels)]
+    return f"{vals[0]:g}" if len(set(vals)) == 1 else "(" + ", ".join(f"{v:g}" for v in vals) + ")"

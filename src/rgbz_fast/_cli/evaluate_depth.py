@@ -3,7 +3,6 @@ sunlight, calibration), as Markdown tables or JSON."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 from . import _common as c
@@ -53,7 +52,12 @@ def run(args):
     result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed,
                             patterns=args.patterns, **c.limits(args))
     if args.json:
-        print(json.dumps(result, indent=1, default=float))
+        # strict JSON, as the other commands' (H40, H48): a value that has none (an RMSE
+        # without a valid measurement, a spread of one) is null; it had been NaN, which
+        # strict parsers (jq, JSON.parse) refuse
+        from .._devtools._common import json_text
+
+        print(json_text(result))
     else:
         if data is None and scene_sections:
             print("(no RGB-D scenes: pass --data; the scene sections are skipped)")

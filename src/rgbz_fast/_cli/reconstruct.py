@@ -4,7 +4,7 @@ Bayer CFA or sRGB image (and the reference it is compared with)."""
 from __future__ import annotations
 
 import io
-import json
+import warnings
 
 import numpy as np
 
@@ -165,8 +165,10 @@ def run(args):
             bit_depth = args.bit_depth if args.bit_depth is not None or args.pattern is not None \
                 else "input"
             try:
-                frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth, **c.limits(args),
-                                   **kw)
+                with warnings.catch_warnings(record=True) as said:
+                    warnings.simplefilter("always")
+                    frame = load_frame(f, pattern=args.pattern, bit_depth=bit_depth,
+                                       **c.limits(args), **kw)
             except ValueError as exc:
                 # load_frame refuses raw options for a frame file (they had been ignored when they
                 # came from --raw-options); the flags are named by the error mechanism
@@ -177,6 +179,9 @@ def run(args):
                 if key in explicit and key in flags:       # --saturation-level gives clip_level
                     raise c.CliError(f"{flags[key]}: {rest}") from None
                 raise
+            for w in said:            # "white_level: ..." of the reader is this --white-level
+                warnings.warn(c.flag_words(str(w.message), args.parser), w.category,
+                              stacklevel=1)
             frame = _with_z_sites(frame, f, args.rgbz_pattern)
             if args.method.strip().lower() in NEEDS_TOF and frame.tof is None:
                 # the library's advice (pass nir=) has no flag here: say what a user of the
@@ -186,7 +191,15 @@ def run(args):
                                  "give a frame simulated from a scene with depth (rgbz-fast "
                                  "simulate SCENE_FOLDER holding rgb.png, disp1.png, dmin.txt) or "
                                  "another --method")
-            cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
+            try:
+                cfa = reconstruct(frame, args.method, params=params, workers=args.workers)
+            except ValueError as exc:
+                # about the frame read ("frame: its saturation level ..." of a frame file
+                # saved with one at its black level): which file
+                what, _, rest = str(exc).partition(": ")
+                if what != "frame":
+                    raise
+                raise c.CliError(f"{f}: {rest}") from None
             ref = frame.reference
             dest = out / f"{stem}_{method}{ext}"
             ref_dest = out / f"{stem}_reference{ext}" if ref is not None else None
@@ -226,16 +239,23 @@ def _with_z_sites(frame, path, rgbz_pattern):
 
 
 def _write_cfa(dest, cfa, frame, method):
-    """The CFA as a 16-bit TIFF with its Bayer phase, bit depth and method in the description."""
+    """The CFA as a 16-bit TIFF that describes itself: its Bayer phase, the black level that
+    stays in its data (a simulated sensor's; 0 for a raw file's, subtracted when read), its
+    white level, bit depth and method, under the key by which the raw reader knows the file
+    as rgbz-fast's (``reconstruct OUT/x_cfa.tif --rgbz-pattern ...`` reads it back; it had
+    asked for --phase, --black-level and --white-level)."""
     import tifffile
 
     from ..io import atomic_write
+    from ..io._raw import cfa_tiff_description
+    from ..isp import recorded_rendering
 
     buf = io.BytesIO()
     data = cfa if cfa.dtype in (np.uint8, np.uint16) else \
         np.floor(np.clip(cfa, 0, frame.white_level) + 0.5).astype(np.uint16)
-    tifffile.imwrite(buf, data, description=json.dumps(
-        {"bayer": frame.pattern.bayer_phase, "bit_depth": frame.bit_depth, "method": method}))
+    black = recorded_rendering(frame)["black_level"] or 0.0
+    tifffile.imwrite(buf, data, description=cfa_tiff_description(
+        frame.pattern.bayer_phase, black, frame.white_level, frame.bit_depth, method=method))
     atomic_write(dest, buf.getvalue())
 
 

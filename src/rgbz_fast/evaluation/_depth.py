@@ -71,18 +71,24 @@ def _wall(depth, pattern, shape, sensor=None, *, seed=0, ir=0.5, noise=True):
 
 def _scene_tables(data, patterns, isp, seed, tolerance, limits, want_upsample):
     """The scenes rows (without and with the guide, and their totals) and the upsample rows."""
-    rows, up = [], []
+    rows, up, errors = [], [], {}
     for run in scene_runs(data, patterns, isp, seed, limits):
         rows += [scene_row(run, run["plain"], tolerance), scene_row(run, run["guided"],
                                                                      tolerance)]
+        for guide, res in (("none", run["plain"]), ("colour", run["guided"])):
+            errors.setdefault((run["pattern"], guide), []).append(_valid_errors(run, res))
         if want_upsample:
             up += upsample_rows(run, tolerance)
     totals = total_rows(rows, _SCENE_KEYS, ("pattern", "guide"))
     for t in totals:
         sel = [r for r in rows if (r["pattern"], r["guide"]) == (t["pattern"], t["guide"])]
+        # over the valid measurements of every scene, pooled: a number when any scene has
+        # one (the totals had been NaN always, which --json printed as NaN, not JSON)
+        err = np.concatenate(errors[t["pattern"], t["guide"]])
         t.update(depth_min=min(r["depth_min"] for r in sel),
-                 depth_max=max(r["depth_max"] for r in sel), rmse_valid=np.nan,
-                 median_valid=np.nan)
+                 depth_max=max(r["depth_max"] for r in sel),
+                 rmse_valid=float(np.sqrt(np.mean(err ** 2))) if err.size else np.nan,
+                 median_valid=float(np.median(err)) if err.size else np.nan)
     keys = ("known", "covered", "wrong")
     both = ("edge_weight_both", "edge_err_both", "edge_err_nearest_both")
     up_totals = []
@@ -97,6 +103,14 @@ def _scene_tables(data, patterns, isp, seed, tolerance, limits, want_upsample):
                     t.update({k: sum(r[k] for r in sel) for k in both})
                 up_totals.append(t)
     return rows + totals, up + up_totals
+
+
+def _valid_errors(run, res):
+    """|depth error| of the valid measurements of ``res`` whose truth is known, those whose
+    RMSE and median :func:`scene_row` gives."""
+    tof = run["tof"]
+    ok = res.valid & tof.valid
+    return np.abs(res.depth - tof.depth_true)[ok]
 
 
 def _range_rows(data, isp, seed, limits):

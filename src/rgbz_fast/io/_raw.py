@@ -21,12 +21,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._frame import RawFrame, _Adopt
+from .._frame import RawFrame, _Adopt, _levels_text
 from .._patterns import BAYER_PHASES, bayer
 from .._validate import (as_list, check_bit_depth, check_dtype, check_flag, check_path,
                          parse_shape)
 from ._errors import ParameterError, Setting
-from ._files import check_size, decode_codes, read_file, read_image, read_limits
+from ._files import (_TIFF_MAGIC, check_size, decode_codes, read_file, read_image,
+                     read_limits)
 from ._libraw import read_libraw
 from ._suffixes import HEADERLESS_EXTENSIONS, IMAGE_EXTENSIONS, LIBRAW_EXTENSIONS, RAW_EXTENSIONS
 
@@ -61,6 +62,9 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         Raw values at or above it are flagged as clipped (saturated).
         Defaults to the white level. Some sensors saturate a little below the
         nominal white level (the openISP test frame stops at 1020 of 1023).
+        A level at or below the black level (at some quad site), or less
+        than half a code of the frame above it, is refused: every pixel would
+        be clipped.
     shape : tuple (rows, cols) or str, optional
         Headerless files only: the frame shape, ``(1080, 1920)`` or
         ``"1080x1920"`` (rows first).
@@ -117,6 +121,18 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
           sRGB), which the colour ISP applies
           (:func:`rgbz_fast.isp.recorded_rendering`).
 
+    Warns
+    -----
+    UserWarning
+        ``"white_level: ..."`` when more than a quarter
+        (:data:`WHITE_SHARE_WARN`, 25 %) of the pixels as read are at or above
+        their white level, with the share, the largest value found and the
+        usual white levels: such a white level is likely wrong (102 typed for
+        1023 clips 59 % of a 10-bit frame). None of the real raw files of
+        ``../shared/data/raw`` comes near it at its correct levels: 0 %, 0.003 %
+        and 0 % at or above the white level, 9.8 % at the openISP frame's
+        saturation level 1020 (its clipped white chart).
+
     Raises
     ------
     ImportError
@@ -146,6 +162,12 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
     Binning (``downsample``) averages the black-subtracted values before the
     clipping at 0, the scaling and the single rounding, so that the noise
     below the black level of dark areas does not bias the binned values.
+
+    A 16-bit TIFF that ``rgbz-fast reconstruct`` wrote records its phase, the
+    black level in its data, its white level and its bit depth in its
+    description, under the ``"format": "rgbz-fast CFA"`` key
+    (:data:`CFA_TIFF_FORMAT`); they are read from it as a camera raw file's
+    are (arguments override them). Other TIFFs' descriptions are not read.
 
     Camera raw files are read from LibRaw's visible area
     (``raw_image_visible``), without the orientation flag applied. Clipped
@@ -250,10 +272,15 @@ def read_raw(path, *, phase=None, black_level=None, white_level=None, clip_level
         clip = white
     else:
         clip = _quad_levels(clip_level, "clip_level")
+        _check_clip_level(clip, black, white, bd, out_dtype)
 
     shape_in = data.shape
     clipped_in = data >= _tile_quad(clip, shape_in)
     n_clipped = int(np.count_nonzero(clipped_in))
+    _check_white_share(data, white, n_clipped if np.array_equal(clip, white) else None, path,
+                       "given" if given["white_level"] is not None else
+                       "the file's own" if info.get("white_level") is not None else
+                       f"2^{bit_depth_in} - 1 of bit_depth_in")
 
     # crop (bottom/right, so the phase at (0, 0) is kept)
     r, c = shape_in
@@ -391,14 +418,67 @@ def _reader_for(path, reader):
                          Setting("reader", "pass reader="))
 
 
+#: the ``format`` of the description of the CFA TIFFs rgbz-fast writes (``rgbz-fast
+#: reconstruct``): a key no other program writes, by which :func:`read_raw` knows to read
+#: the phase and levels the description records (the keys of other files are not trusted)
+CFA_TIFF_FORMAT = "rgbz-fast CFA"
+
+
+def cfa_tiff_description(phase, black_level, white_level, bit_depth, **extra):
+    """The JSON description of a CFA TIFF rgbz-fast writes: its Bayer phase, the black level
+    that stays in its data, its white level and the bits of its data, which :func:`read_raw`
+    reads back (``extra``: other keys, recorded and not read)."""
+    import json
+
+    return json.dumps({"format": CFA_TIFF_FORMAT, "bayer": phase,
+                       "black_level": float(black_level), "white_level": float(white_level),
+                       "bit_depth": int(bit_depth), **extra})
+
+
+def _cfa_tiff_info(description, path):
+    """What a CFA TIFF written by rgbz-fast records (:func:`cfa_tiff_description`), as the
+    ``info`` of a reader: {} for any other file, whatever its description holds."""
+    import json
+
+    try:
+        d = json.loads(description or "")
+    except (ValueError, RecursionError):
+        return {}
+    if not isinstance(d, dict) or d.get("format") != CFA_TIFF_FORMAT:
+        return {}
+    phase, black, white, bits = (d.get(k) for k in ("bayer", "black_level", "white_level",
+                                                    "bit_depth"))
+    num = (int, float)
+    if not (phase in BAYER_PHASES and all(isinstance(v, num) and not isinstance(v, bool)
+                                          for v in (black, white))
+            and type(bits) is int and 1 <= bits <= 16 and 0 <= black < white < 1 << bits):
+        raise ValueError(f"path: {path.name} is a CFA TIFF of rgbz-fast whose description is "
+                         f"damaged (phase {phase!r:.12}, black level {black!r:.12}, white "
+                         f"level {white!r:.12}, bit depth {bits!r:.12})")
+    return {"phase": phase, "black_level": float(black), "white_level": float(white),
+            "bit_depth_in": bits}
+
+
 def _read_image(path, limits):
-    data = read_image(path, "path", decode_codes, max_pixels=limits[0], max_bytes=limits[1])
+    desc = []
+
+    def decode(blob):
+        data = decode_codes(blob)                   # its errors as before
+        if blob[:4] in _TIFF_MAGIC:                 # a TIFF: its description too
+            from ._tiff import open_tiff
+
+            with open_tiff(blob) as tf:
+                desc.append(tf.pages[0].description)
+        return data
+
+    data = read_image(path, "path", decode, max_pixels=limits[0], max_bytes=limits[1])
+    info = _cfa_tiff_info(desc[0], path) if desc else {}
     if data.ndim != 2:
         raise ValueError(f"{path.name}: expected a single-channel Bayer mosaic, got an image "
                          f"of shape {data.shape} (a demosaicked RGB image is not raw data)")
     if data.dtype not in (np.uint8, np.uint16):
         raise ValueError(f"{path.name}: expected uint8 or uint16 samples, got {data.dtype}")
-    return np.ascontiguousarray(data, dtype=np.uint16), {}
+    return np.ascontiguousarray(data, dtype=np.uint16), info
 
 
 #: what a reader asks for when the file does not record it: (what the file lacks, how to give it)
@@ -469,16 +549,73 @@ def _read_headerless(path, shape, byteorder, limits):
 
 
 # --------------------------------------------------------------------------- levels, binning
+#: the share of a frame's pixels at or above its white level beyond which :func:`read_raw`
+#: warns that the white level is likely wrong (a typo: 102 for 1023 clips 59 % of a 10-bit
+#: frame). Measured at their correct levels, the real raw files of ../shared/data/raw hold
+#: 0 % (colorchart.dng, white 15000; openisp_test.RAW, white 1023) and 0.003 %
+#: (halide_bayer_small.png, white 1023); the brightest, openisp_test.RAW's clipped white
+#: chart, holds 9.8 % at its saturation level 1020. A quarter is 2.5 times that; the colour
+#: ISP warns of a CFA more than half above its white level (H81), the rendering of a frame
+#: already read.
+WHITE_SHARE_WARN = 0.25
+
+#: the white levels of the usual raw bit depths, 2^bits - 1, that the warning suggests
+_USUAL_WHITE = {10: 1023, 12: 4095, 14: 16383, 16: 65535}
+
+
+def _check_white_share(data, white, n_at_white, path, source):
+    """A UserWarning naming ``white_level`` when more than :data:`WHITE_SHARE_WARN` of the
+    data as read (``data``) are at or above the white level of their quad site (``white``):
+    such a frame is mostly clipped to full scale, silently, and the level is far more likely
+    a typo than the scene (``--white-level 102`` for 1023 wrote outputs, exit 0, while the
+    same mistake as ``--bit-depth-in 7`` was refused, H10). ``n_at_white``: that count when
+    known (the clipped count, when the clip level is the white level); ``source``: where
+    the white level came from."""
+    import warnings
+
+    from .._validate import outside_stacklevel
+
+    if not data.size:
+        return
+    if n_at_white is None:
+        n_at_white = int(np.count_nonzero(data >= _tile_quad(white, data.shape)))
+    share = n_at_white / data.size
+    if share <= WHITE_SHARE_WARN:
+        return
+    most = int(data.max()) if np.issubdtype(data.dtype, np.integer) else float(data.max())
+    usual = ", ".join(f"{w} for {b}-bit data" for b, w in _USUAL_WHITE.items())
+    warnings.warn(f"white_level: {100 * share:.1f} % of the pixels of {path.name} are at or "
+                  f"above its white level {_levels_text(white)} ({source}) and are clipped "
+                  f"to full scale; the largest value found is {most:g}: is the white level "
+                  f"the file's? (the usual ones are 2^bits - 1: {usual}; or give "
+                  "bit_depth_in=BITS instead)", UserWarning, stacklevel=outside_stacklevel())
+
+
+def _check_clip_level(clip, black, white, bd, out_dtype):
+    """A ValueError naming ``clip_level`` when the saturation level, at some quad site, is
+    at or below the black level, or so close to it that it rounds to code 0 of the frame
+    (``bd`` bits, ``out_dtype``): every pixel would be taken as clipped. Checked
+    where the level enters, so that the error comes before any work and names the level
+    given (it had come from the reconstruction, as ``clip_level: (np.float64(20.0), ...)``,
+    which the command line read as its --clip-level)."""
+    low = clip <= black
+    if np.any(low):
+        which = "every pixel" if np.all(low) else "every pixel of a quad site where it is"
+        raise ValueError(f"clip_level: {_levels_text(clip)} is at or below the black level "
+                         f"{_levels_text(black)}: {which} would be clipped")
+    if np.issubdtype(out_dtype, np.integer):
+        # what frame_clip_level takes: the smallest level scaled to the frame, rounded
+        scaled = float(np.min((clip - black) / (white - black) * ((1 << bd) - 1)))
+        if np.floor(scaled + 0.5) <= 0:
+            raise ValueError(f"clip_level: {_levels_text(clip)} is less than half a code of "
+                             f"the {bd}-bit frame above the black level "
+                             f"{_levels_text(black)}: every pixel would be clipped")
+
+
 def _check_downsample(k):
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
         raise ValueError(f"downsample: expected a positive integer binning factor, got {k!r}")
     return int(k)
-
-
-def _levels_text(quad):
-    """Four quad levels as text: one number when they are equal, else the four."""
-    vals = [float(v) for v in np.ravel(quad)]
-    return f"{vals[0]:g}" if len(set(vals)) == 1 else "(" + ", ".join(f"{v:g}" for v in vals) + ")"
 
 
 def _quad_levels(value, name):
