@@ -195,7 +195,8 @@ RGBZ_INLINE void RFN(rgbz_pair_into_groups)(const rgbz_plan *p, int i, int ng,
 }
 
 /*
- * The gradient groups (eqs. 6, 8-11, 14-18): each the mean absolute difference of its
+ * The gradient groups (EDICentral's areas, section 4.2.1 and Fig. 7; eqs. 8-11 and
+ * 14-18): each the mean absolute difference of its
  * pixel pairs. A pair belongs to the groups of its bit mask. The sums are taken in the
  * plan's pair order -- which is part of the result, float addition not being associative
  * (recon_mask1.h) --; a run of consecutive pairs of one group is summed in passes of up
@@ -562,7 +563,7 @@ RGBZ_INLINE void RFN(rgbz_core)(const rgbz_plan *p, const REAL *const *v, int n,
         return;
     }
 
-    /* gradients and semi-gradients (eqs. 6-11, 14-18) and their gammas (eq. 7) */
+    /* gradients and semi-gradients (Fig. 7, eqs. 8-11, 14-18) and their gammas (eq. 7) */
     REAL gamma[RGBZ_NGROUPS][RGBZ_BLK];
     if (use_sg || use_grad) {
         if (p->n_pairs == 0) {

@@ -10,7 +10,7 @@
  * _plans.py builds for this geometry (tests/test_kernels.py compares them field by
  * field), with two differences that change no value:
  *
- *  - the order of the pairs in the EDICentral and EDILine gradients (eqs. 6, 8-11).
+ *  - the order of the pairs in the EDICentral and EDILine gradients (Fig. 7, eqs. 8-11).
  *    The frames' interior sites have always been computed with the sums in the
  *    order below (the hand-written Mask1 kernels of rgbz-fast 0.1: vertical
  *    gradient rows +-2 first, EDICentral diagonals (1,1), (2,1), (1,2)), their
