@@ -435,8 +435,8 @@ static void validity_block(const rgbz_tof_validity_args *p, ptrdiff_t n0, ptrdif
         if (p->max_sigma >= 0.0) low |= !(sigma <= p->max_sigma);
         fl |= low ? 2 : 0;
         fl |= p->residual[n] > p->max_residual ? 4 : 0;
-        fl |= ((dep < 0.0) | (dep > p->max_range - 5.0 * sigma) | (refl < p->min_reflectance))
-              ? 16 : 0;
+        fl |= ((dep < 0.0) | (dep > p->max_range - 5.0 * sigma) | (refl < p->min_reflectance)
+               | (refl > p->max_reflectance)) ? 16 : 0;
         p->snr[n] = snr;
         p->sigma[n] = sigma;
         p->refl[n] = refl;

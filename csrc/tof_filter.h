@@ -60,7 +60,8 @@ int rgbz_tof_tap_variance(const double *offset, ptrdiff_t N, double black, doubl
      flags[n] = 1 saturated | 2 low signal (snr < min_snr, an amplitude < min_amplitude, or
                 not sigma <= max_sigma when max_sigma >= 0) | 4 residual > max_residual |
                 16 out of range (depth < 0, depth > max_range - 5 sigma, refl <
-                min_reflectance); the flying bit (8) is not set here.
+                min_reflectance or refl > max_reflectance: an aliased depth); the flying
+                bit (8) is not set here.
    Each in the order of the NumPy operations it replaces, so the same bits. */
 typedef struct {
     const double *amp, *var, *depth, *residual;
@@ -69,6 +70,7 @@ typedef struct {
     const double *sigma_scale, *refl_coef;
     double phase_var_cap, power, tan_h, tan_v, k_cell, block;
     double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
+    double max_reflectance;     /* +inf: no upper bound */
     double *snr, *sigma, *refl;
     uint8_t *flags;
     const double *delta;    /* (N,) rgbz_tof_fixed_pattern's correction, or NULL */

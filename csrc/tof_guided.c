@@ -1400,6 +1400,7 @@ typedef struct {
     double *snr, *sigma, *refl;
     uint8_t *flags;
     const double *delta;
+    double max_reflectance;
 } tofg_valid_args;
 
 /* the measurements [n0, n1) with NF frequencies (a compile-time constant up to 4): branch-free,
@@ -1417,6 +1418,7 @@ RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restric
     const double min_snr = p->min_snr, min_amplitude = p->min_amplitude;
     const double max_sigma = p->max_sigma, max_residual = p->max_residual;
     const double min_reflectance = p->min_reflectance, max_range = p->max_range;
+    const double max_reflectance = p->max_reflectance;
     double ssc[RGBZ_TOF_MAX_FREQS], rco[RGBZ_TOF_MAX_FREQS];
     for (int f = 0; f < NF; f++) {
         ssc[f] = p->sigma_scale[f];
@@ -1445,7 +1447,9 @@ RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restric
         }
         const double sg = sqrt(s2);
         const int low = (best < min_snr) | weak | ((max_sigma >= 0.0) & !(sg <= max_sigma));
-        const int far = (d < 0.0) | (d > max_range - 5.0 * sg) | (rho < min_reflectance);
+        /* out of range, or a reflectance no surface has at that depth (an aliased one) */
+        const int far = (d < 0.0) | (d > max_range - 5.0 * sg) | (rho < min_reflectance)
+                        | (rho > max_reflectance);
         flags[n] = (uint8_t)((sat[n] != 0) | (low << 1) | ((residual[n] > max_residual) << 2)
                              | (far << 4));
         snr[n] = best;
@@ -1475,14 +1479,16 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        const double *sigma_scale, const double *refl_coef, double min_snr,
                        double min_amplitude, double max_sigma, double max_residual,
                        double min_reflectance, double max_range, const double *delta,
-                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers)
+                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers,
+                       double max_reflectance)
 {
     if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
         || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
         return RGBZ_EINVAL;
     const tofg_valid_args p = {amp, depth, residual, sigma_scale, refl_coef, var, sat, N,
                                min_snr, min_amplitude, max_sigma, max_residual,
-                               min_reflectance, max_range, snr, sigma, refl, flags, delta};
+                               min_reflectance, max_range, snr, sigma, refl, flags, delta,
+                               max_reflectance};
     const int nth = rgbz_threads(workers);
     (void)nth;
     RGBZ_PARALLEL_FOR

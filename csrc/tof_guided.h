@@ -110,7 +110,8 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                        const double *sigma_scale, const double *refl_coef, double min_snr,
                        double min_amplitude, double max_sigma, double max_residual,
                        double min_reflectance, double max_range, const double *delta,
-                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers);
+                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers,
+                       double max_reflectance);
 
 /* usable (N,) = 1 where the measurement may enter the flying-pixel test: none of the bits
    bad in flags, depth and sigma finite, present (NULL: every one) nonzero; else 0. */

@@ -242,7 +242,8 @@ def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual:
                   min_snr: float, min_amplitude: float, max_sigma: float, max_residual: float,
                   min_reflectance: float, max_range: float, snr: np.ndarray,
                   sigma: np.ndarray, refl: np.ndarray, flags: np.ndarray,
-                  workers: int, delta: np.ndarray | None = None) -> None: ...
+                  workers: int, delta: np.ndarray | None = None,
+                  max_reflectance: float = ...) -> None: ...
 def tofg_usable(flags: np.ndarray, depth: np.ndarray, sigma: np.ndarray,
                 present: np.ndarray | None, bad: int, usable: np.ndarray,
                 workers: int) -> None: ...
@@ -261,7 +262,7 @@ def tof_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: 
                  max_sigma: float, max_residual: float, min_reflectance: float,
                  max_range: float, snr: np.ndarray, sigma: np.ndarray, refl: np.ndarray,
                  flags: np.ndarray, workers: int,
-                 delta: np.ndarray | None = None) -> None: ...
+                 delta: np.ndarray | None = None, max_reflectance: float = ...) -> None: ...
 def tof_fixed_pattern(phase: np.ndarray, amp: np.ndarray, offset: np.ndarray,
                       count: np.ndarray | None, sigma_scale: np.ndarray, black: float,
                       pre: float, var_dsnu: float, fix_dsnu: float, prnu: float,

@@ -20,6 +20,7 @@ them, so no code is typed twice.
 
 include "_kernels_common.pxi"
 
+from libc.math cimport INFINITY
 from libc.string cimport memset
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.stdint cimport uint32_t
@@ -44,6 +45,7 @@ cdef extern from "tof_filter.h" nogil:
         const double *refl_coef
         double phase_var_cap, power, tan_h, tan_v, k_cell, block
         double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range
+        double max_reflectance
         double *snr
         double *sigma
         double *refl
@@ -641,11 +643,13 @@ def tof_validity(const double[:, ::1] amp, const double[:, ::1] var, const doubl
                  double k_cell, double block, double min_snr, double min_amplitude,
                  double max_sigma, double max_residual, double min_reflectance,
                  double max_range, double[::1] snr, double[::1] sigma, double[::1] refl,
-                 uint8_t[::1] flags, int workers, const double[::1] delta=None):
+                 uint8_t[::1] flags, int workers, const double[::1] delta=None,
+                 double max_reflectance=INFINITY):
     """The unguided ToF ISP's snr, sigma, implied reflectance and validity bits but the
     flying one (csrc/tof_filter.c, rgbz_tof_validity); amp, var (F, N), the rest (N,),
     sigma_scale and refl_coef (F,); max_sigma < 0: no limit; delta (N,) or None: the
-    fixed-pattern correction of sigma^2 (tof_fixed_pattern)."""
+    fixed-pattern correction of sigma^2 (tof_fixed_pattern); max_reflectance: out of range
+    above it (inf: no bound)."""
     cdef Py_ssize_t F = amp.shape[0], n = amp.shape[1]
     if (var.shape[0] != F or var.shape[1] != n or sigma_scale.shape[0] != F
             or refl_coef.shape[0] != F or depth.shape[0] != n or residual.shape[0] != n
@@ -677,6 +681,7 @@ def tof_validity(const double[:, ::1] amp, const double[:, ::1] var, const doubl
     a.max_residual = max_residual
     a.min_reflectance = min_reflectance
     a.max_range = max_range
+    a.max_reflectance = max_reflectance
     a.snr = &snr[0]
     a.sigma = &sigma[0]
     a.refl = &refl[0]
@@ -1185,7 +1190,7 @@ cdef extern from "tof_guided.h" nogil:
                            double min_snr, double min_amplitude, double max_sigma,
                            double max_residual, double min_reflectance, double max_range,
                            const double *delta, double *snr, double *sigma, double *refl,
-                           uint8_t *flags, int workers)
+                           uint8_t *flags, int workers, double max_reflectance)
     int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *sigma,
                          const uint8_t *present, uint8_t bad, Py_ssize_t N, uint8_t *usable,
                          int workers)
@@ -1381,9 +1386,10 @@ def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[:
                   double min_amplitude, double max_sigma, double max_residual,
                   double min_reflectance, double max_range, double[::1] snr, double[::1] sigma,
                   double[::1] refl, uint8_t[::1] flags, int workers,
-                  const double[::1] delta=None):
+                  const double[::1] delta=None, double max_reflectance=INFINITY):
     """snr, sigma, implied reflectance and the validity bits (no flying test); delta (N,)
-    or None: the fixed-pattern correction of sigma^2 (tof_fixed_pattern)."""
+    or None: the fixed-pattern correction of sigma^2 (tof_fixed_pattern); max_reflectance:
+    out of range above it (inf: no bound)."""
     cdef int status
     if depth.shape[0] == 0:
         return
@@ -1395,7 +1401,7 @@ def tofg_validity(const double[:, ::1] amp, const float[::1] var, const double[:
                                     amp.shape[0], amp.shape[1], &sigma_scale[0], &refl_coef[0],
                                     min_snr, min_amplitude, max_sigma, max_residual,
                                     min_reflectance, max_range, dp, &snr[0], &sigma[0],
-                                    &refl[0], &flags[0], workers)
+                                    &refl[0], &flags[0], workers, max_reflectance)
     _raise_for(status)
 
 

@@ -343,7 +343,7 @@ def fixed_pattern_delta(*args):
 
 def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_snr,
                     min_amplitude, max_sigma, max_residual, min_reflectance, max_range,
-                    delta=None):
+                    delta=None, max_reflectance=np.inf):
     """snr, sigma, reflectance and the bits 1, 2, 4, 16 of every measurement; ``delta``: the
     fixed-pattern correction of sigma^2 where no phase variance reached the cap."""
     amp = np.asarray(amp, np.float64)
@@ -367,7 +367,8 @@ def guided_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, min_
         low |= ~(sigma <= max_sigma)
     flags |= np.where(low, 2, 0)
     flags |= np.where(np.asarray(residual) > max_residual, 4, 0)
-    out = (d < 0) | (d > max_range - 5.0 * sigma) | (refl < min_reflectance)
+    out = ((d < 0) | (d > max_range - 5.0 * sigma) | (refl < min_reflectance)
+           | (refl > max_reflectance))
     flags |= np.where(out, 16, 0)
     return snr, sigma, refl, flags.astype(np.uint8)
 
@@ -642,7 +643,7 @@ def _implied_reflectance(depth, amp, sensor, block):
 
 def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid, *,
                  min_snr, min_amplitude, max_sigma, max_residual, flying_step,
-                 min_reflectance, max_range):
+                 min_reflectance, max_range, max_reflectance=np.inf):
     """The flag bits (uint8, shape (n,)) of every measurement (:func:`~rgbz_fast.tof.tof_depth`).
 
     ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes it (the
@@ -664,14 +665,16 @@ def assign_flags(depth, sigma, snr, amp, residual, reflectance, saturated, grid,
                             usable=usable)] |= FLAG_FLYING
     # a guard of 5 sigma below the end of the range: a surface just beyond it reads either
     # ~0 m (the reflectance test) or, through the noise, just below the end
-    out = (depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
+    # and a reflectance no surface has at that depth: a wrong, farther alias
+    out = ((depth < 0) | (depth > max_range - 5.0 * sigma) | (reflectance < min_reflectance)
+           | (reflectance > max_reflectance))
     flags[out] |= FLAG_OUT_OF_RANGE
     return flags
 
 
 def unguided_validity(depth, residual, amp, var, saturated, sensor, block, frequencies, sites,
                       *, min_snr, min_amplitude, max_sigma, max_residual, flying_step,
-                      min_reflectance, max_range, delta=None):
+                      min_reflectance, max_range, delta=None, max_reflectance=np.inf):
     """snr, sigma, reflectance, flags as the unguided chain computed them in NumPy (sites: the
     measurements' sites or their SiteGrid; delta: the fixed-pattern correction of sigma^2)."""
     snr = (2.0 * amp / np.sqrt(var)).min(axis=0)
@@ -682,5 +685,6 @@ def unguided_validity(depth, residual, amp, var, saturated, sensor, block, frequ
                          min_snr=min_snr,
                          min_amplitude=min_amplitude, max_sigma=max_sigma,
                          max_residual=max_residual, flying_step=flying_step,
-                         min_reflectance=min_reflectance, max_range=max_range)
+                         min_reflectance=min_reflectance, max_range=max_range,
+                         max_reflectance=max_reflectance)
     return snr, sigma, reflectance, flags

@@ -198,3 +198,20 @@ def test_evaluate_lens_errors_name_the_flag(tmp_path, capsys, option):
     err = capsys.readouterr().err
     assert err.startswith(f"rgbz-fast evaluate: error: {option[0]}: expected")
     assert "Optics." not in err
+
+
+# --------------------------------------------------------------------------- E1, E5
+def test_depth_takes_min_snr_0_and_max_reflectance_off(tmp_path, capsys):
+    """``depth --min-snr 0`` turns the SNR test off, as the API's min_snr=0 does (it had been
+    refused: 'expected a positive number'); ``--max-reflectance off`` keeps the measurements
+    the implied-reflectance bound flags (retroreflectors), a number below 1 is refused."""
+    scene = _rgbd_folder(tmp_path / "aloe")
+    assert main(["simulate", str(scene), "--pattern", "mask2", "--quiet",
+                 "--out", str(tmp_path / "f")]) == 0
+    frame = tmp_path / "f" / "aloe_mask2.npz"
+    assert main(["depth", str(frame), "--min-snr", "0", "--max-reflectance", "off", "--quiet",
+                 "--out", str(tmp_path / "d")]) == 0
+    with pytest.raises(SystemExit) as exc:
+        main(["depth", str(frame), "--max-reflectance", "0.5", "--quiet",
+              "--out", str(tmp_path / "d2")])
+    assert exc.value.code == 2 and "--max-reflectance" in capsys.readouterr().err

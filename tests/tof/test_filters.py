@@ -326,7 +326,8 @@ def test_validity_kernel_equals_reference(pattern):
     delta = fixed_pattern_delta(fp[0], amp, fp[1], fp[2], sensor,
                                 radiometry_coefficients(sensor, f)[0])
     for change in ({}, dict(max_sigma=None), dict(min_amplitude=20.0, flying_step=None),
-                   dict(min_reflectance=0.0, max_range=3.0), dict(fixed_pattern=fp)):
+                   dict(min_reflectance=0.0, max_range=3.0), dict(fixed_pattern=fp),
+                   dict(max_reflectance=1.0)):
         k = dict(kw, **change)
         rk = {key: v for key, v in k.items() if key != "fixed_pattern"}
         want = ref.unguided_validity(depth, residual, amp, var, saturated, sensor, block, f,

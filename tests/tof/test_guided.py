@@ -332,6 +332,14 @@ def test_validity_matches_numpy():
     for a, b in zip(out[:3], want[:3]):
         np.testing.assert_allclose(a, b, rtol=1e-12)
     np.testing.assert_array_equal(out[3], want[3])
+    # the upper bound on the implied reflectance (an aliased depth): out of range above it
+    bound = float(np.median(want[2][want[2] > 0]))
+    _kernels.tofg_validity(amp, var, depth, residual, sat, scale, coef, *args, *out, 2, delta,
+                           bound)
+    want2 = ref.guided_validity(amp, var, depth, residual, sat, scale, coef, *args, delta=delta,
+                                max_reflectance=bound)
+    np.testing.assert_array_equal(out[3], want2[3])
+    assert ((want2[3] & 16) > (want[3] & 16)).sum() > N // 10
 
 
 def test_usable_matches_numpy():

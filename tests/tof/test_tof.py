@@ -592,3 +592,27 @@ def test_rgbd_scenes_meet_the_depth_targets():
         assert wrong_valid <= 0.001 * known, (pattern, wrong_valid, known)
         assert wrong - wrong_valid >= 0.95 * wrong, (pattern, wrong_valid, wrong)
         assert valid > (0.6 if pattern == "mask1" else 0.85) * known, (pattern, valid, known)
+
+
+def test_an_alias_implying_a_bright_surface_is_out_of_range():
+    """E1 of the probes (2026-11-27): with 80/100/120.1 MHz, whose wrong wrap combinations lie
+    close in phase, a 0.8 m wall of reflectance 0.5 read valid at 8.3 m and 1492 m (implied
+    reflectance 54 and 1.7e6), residual and SNR unremarkable. max_reflectance (4) flags them
+    out of range; None keeps them (retroreflectors), and the default set is unaffected."""
+    from rgbz_fast import ToFSensor
+    from rgbz_fast.simulation import Scene, simulate_tof
+    from rgbz_fast.tof import FLAG_OUT_OF_RANGE, ToFISP
+
+    scene = Scene(np.full((64, 64, 3), 0.5), depth=np.full((64, 64), 0.8),
+                  ir_reflectance=np.full((64, 64), 0.5))
+    taps = simulate_tof(scene, "mask2", ToFSensor(frequencies=(80e6, 100e6, 120.1e6)), seed=2)
+    loose = ToFISP(max_reflectance=None).run(taps)
+    off = loose.valid & (np.abs(loose.depth - 0.8) > 0.05)
+    assert off.sum() >= 5 and loose.reflectance[off].min() > 4
+    r = ToFISP().run(taps)
+    assert not (r.valid & (np.abs(r.depth - 0.8) > 0.05)).any()
+    assert np.all(r.flags[off] & FLAG_OUT_OF_RANGE)
+    np.testing.assert_array_equal(r.valid, loose.valid & ~off)     # nothing else changes
+    plain = simulate_tof(scene, "mask2", seed=2)
+    np.testing.assert_array_equal(ToFISP().run(plain).flags,
+                                  ToFISP(max_reflectance=None).run(plain).flags)

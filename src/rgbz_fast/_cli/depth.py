@@ -35,8 +35,9 @@ def add_parser(sub):
                         "plain 5x5 average (Fig. 17), or none")
     p.add_argument("--calibration", type=c.path, default=None, metavar="FILE",
                    help="phase calibration from `rgbz-fast calibrate` (default: none)")
-    p.add_argument("--min-snr", type=c.positive_float, default=4.0,
-                   help="flag measurements whose signal-to-noise ratio is below this")
+    p.add_argument("--min-snr", type=c.non_negative_float, default=4.0,
+                   help="flag measurements whose signal-to-noise ratio is below this (0: no "
+                        "test)")
     p.add_argument("--max-range", type=c.positive_float, default=None, metavar="METRES",
                    help="unwrapping range (default: the unambiguous range of the frequencies)")
     p.add_argument("--max-sigma", type=c.off_or(c.positive_float), default=0.015,
@@ -50,6 +51,10 @@ def add_parser(sub):
                                                       "a number in [0, 1]"), default=0.05,
                    help="flag measurements whose implied reflectance is below this (a surface "
                         "beyond the unambiguous range, aliased nearer)")
+    p.add_argument("--max-reflectance", type=c.off_or(c.number(float, lambda v: 1 <= v < float(
+                       "inf"), "a number >= 1")), default=4.0, metavar="R|off",
+                   help="flag measurements whose implied reflectance is above this (a depth "
+                        "unwrapped to a wrong, farther alias); off keeps retroreflectors")
     p.add_argument("--range", type=c.metre_range, default=None, metavar="MIN:MAX",
                    help="colour scale of the preview in metres (default: the 1st to 99th "
                         "percentile of the valid depth)")
@@ -98,6 +103,7 @@ def run(args):
             res = tof_depth(frame.tof, denoise=args.denoise, calibration=calibration,
                             min_snr=args.min_snr, max_sigma=args.max_sigma,
                             flying_step=args.flying_step, min_reflectance=args.min_reflectance,
+                            max_reflectance=args.max_reflectance,
                             max_range=args.max_range, guide=guide, workers=args.workers)
             depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
             flags = res.to_frame(res.flags.astype(np.uint16), fill=NO_MEASUREMENT).astype(np.uint8)

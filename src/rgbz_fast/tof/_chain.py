@@ -115,6 +115,15 @@ class ToFISP:
         Smallest NIR reflectance a valid measurement may imply (0.05; 0: no
         test). Depths beyond the unambiguous range alias to shorter ones and
         imply much darker surfaces (:func:`tof_depth`, Notes).
+    max_reflectance : float or None
+        Largest NIR reflectance a valid measurement may imply (4; None: no
+        test, at least 1). A depth unwrapped to a wrong, farther alias implies
+        a surface ``(D_alias / D)^2`` times brighter than it is: with a
+        frequency set whose aliases lie close in phase (80/100/120.1 MHz) a
+        0.8 m wall read valid at 8.3 m (reflectance 54) and 1492 m. A
+        Lambertian surface implies at most 1; the margin keeps glossy
+        surfaces facing the sensor and a radiometric model off by a few
+        times; retroreflectors and mirrors (far above) need None.
     max_range : float or None
         Unwrapping range in metres (see :func:`~rgbz_fast.tof.unwrap`); None:
         the taps' unambiguous range, unless that spans more than
@@ -161,6 +170,7 @@ class ToFISP:
     max_range: float | None = None
     calibration: ToFCalibration | None = None
     low_signal_window: int | None = None
+    max_reflectance: float | None = 4.0
 
     def __post_init__(self):
         put = object.__setattr__
@@ -185,6 +195,8 @@ class ToFISP:
         if self.low_signal_window is not None:
             put(self, "low_signal_window", _check_odd(self.low_signal_window,
                                                       "low_signal_window"))
+        put(self, "max_reflectance", check_number(self.max_reflectance, "max_reflectance",
+                                                  lo=1, allow_none=True))
 
     @property
     def _window_cells(self):
@@ -308,7 +320,8 @@ def tof_depth(tof, *, params=None, guide=None, workers=None, **options):
     * out of range when the depth is < 0 or beyond ``max_range - 5 sigma``
       (a guard: a surface just beyond the range reads either ~0 m or, through
       the noise, just below the end), or the implied reflectance is below
-      ``min_reflectance``. A surface at ``D``
+      ``min_reflectance`` or above ``max_reflectance`` (a wrong, farther alias
+      of the unwrapping implies a surface far brighter than any). A surface at ``D``
       beyond the unambiguous range ``U`` gives the phases of ``D - kU`` at
       every frequency -- no test on the phases can see it -- but its
       amplitude is that of a surface ``((D - kU) / D)^2`` times darker: with
@@ -426,7 +439,7 @@ def _run(tof, p, nthreads, guide=None):
         min_snr=p.min_snr, min_amplitude=p.min_amplitude, max_sigma=p.max_sigma,
         max_residual=p.max_residual, flying_step=p.flying_step,
         min_reflectance=p.min_reflectance, max_range=max_range, workers=nthreads,
-        fixed_pattern=fixed_pattern)
+        fixed_pattern=fixed_pattern, max_reflectance=p.max_reflectance)
     return ToFDepth(depth=depth, residual=residual, wraps=wraps, phase=phase, amplitude=amp,
                     offset=offset, snr=snr, sigma=sigma, reflectance=reflectance, count=count,
                     valid=flags == 0, flags=flags,

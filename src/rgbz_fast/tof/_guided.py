@@ -340,7 +340,8 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, p.min_snr,
                            p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
                            p.max_residual, p.min_reflectance, max_range, snr, sigma, refl,
-                           flags, nthreads, delta)
+                           flags, nthreads, delta,
+                           np.inf if p.max_reflectance is None else p.max_reflectance)
     measured = depth
     if p.flying_step is not None:
         depth = guided_flags(measured, sigma, flags, layout, col, cells,

@@ -109,7 +109,7 @@ def radiometry_coefficients(sensor, f):
 
 def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, grid, *,
              min_snr, min_amplitude, max_sigma, max_residual, flying_step, min_reflectance,
-             max_range, workers=None, fixed_pattern=None):
+             max_range, workers=None, fixed_pattern=None, max_reflectance=None):
     """snr, sigma, implied reflectance and flags (uint8) of every measurement of the unguided
     chain (:func:`~rgbz_fast.tof.tof_depth`), from the per-frequency amplitude ``amp`` and
     component variance ``var`` (F, n), ``depth``, ``residual`` and ``saturated`` (n,).
@@ -127,7 +127,8 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
       depth is not positive;
     * flags: saturated, low signal, inconsistent, flying (:func:`flying_pixels` on the
       grid: ``grid`` is the :class:`SiteGrid` of the measurements, or a callable that makes
-      it) and out of range.
+      it) and out of range (an implied reflectance above ``max_reflectance``, None: no bound,
+      too).
 
     One C pass (csrc/tof_filter.c, ``rgbz_tof_validity``) but for the flying-pixel test; the
     NumPy operations it replaced are its reference (tests/_reference/tof.py), bit for bit.
@@ -151,7 +152,8 @@ def validity(depth, residual, amp, var, saturated, sensor, block, frequencies, g
         float(sensor.optical_power_w), tan_h, tan_v, k_cell, float(block), float(min_snr),
         float(min_amplitude), -1.0 if max_sigma is None else float(max_sigma),
         float(max_residual), float(min_reflectance), float(max_range), snr, sigma,
-        reflectance, flags, kernel_threads(nthreads, n), delta)
+        reflectance, flags, kernel_threads(nthreads, n), delta,
+        np.inf if max_reflectance is None else float(max_reflectance))
     if flying_step is not None:
         usable = (flags & (FLAG_SATURATED | FLAG_LOW_SIGNAL)) == 0
         if not isinstance(grid, SiteGrid):
