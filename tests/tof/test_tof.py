@@ -616,3 +616,14 @@ def test_an_alias_implying_a_bright_surface_is_out_of_range():
     plain = simulate_tof(scene, "mask2", seed=2)
     np.testing.assert_array_equal(ToFISP().run(plain).flags,
                                   ToFISP(max_reflectance=None).run(plain).flags)
+
+
+@pytest.mark.parametrize("field", ["window", "low_signal_window"])
+def test_a_window_without_a_denoise_is_refused(field):
+    """E4 of the probes (2026-11-27): denoise='none' with a window (or low_signal_window, which
+    ran the chain twice) had changed nothing, without a word."""
+    from rgbz_fast.tof import ToFISP
+
+    with pytest.raises(ValueError, match=rf"^{field}: sets the denoise's window"):
+        ToFISP(denoise="none", **{field: 41})
+    ToFISP(denoise="box", window=7, low_signal_window=41)

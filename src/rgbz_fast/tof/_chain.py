@@ -84,6 +84,10 @@ class ToFISP:
         31, the 15x15 nearest, for 1x1 Z pixels such as Mask1's, each of which
         collects a quarter of a 2x2 one's light)
         and 5 for the box (the paper's 5x5-pixel kernel: 3x3 Z measurements).
+        A measurement enters when it lies within ``(window // 2) * block``
+        pixels in rows and columns, so on patterns whose Z measurements are
+        two cells apart (Mask1, Mask2) window 3 takes none but the centre, as
+        1 does, and 7 the same 3x3 as 5. Refused with ``denoise="none"``.
     range_scale : float
         Range scale ``h`` of the bilateral weights (2; larger smooths across
         weaker edges), in [1e-6, 1e6].
@@ -195,6 +199,13 @@ class ToFISP:
         if self.low_signal_window is not None:
             put(self, "low_signal_window", _check_odd(self.low_signal_window,
                                                       "low_signal_window"))
+        if self.denoise == "none":
+            # a window without a denoise had run the chain (twice, with low_signal_window)
+            # and changed nothing
+            for name in ("window", "low_signal_window"):
+                if getattr(self, name) is not None:
+                    raise ValueError(f"{name}: sets the denoise's window, and denoise='none' "
+                                     "averages nothing; give a denoise or leave it out")
         put(self, "max_reflectance", check_number(self.max_reflectance, "max_reflectance",
                                                   lo=1, allow_none=True))
 
