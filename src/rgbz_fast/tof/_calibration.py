@@ -130,12 +130,14 @@ class ToFCalibration:
         for name, a in (("offsets", off), ("coefficients", coef)):
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"{name}: holds NaN or infinite values")
+        _check_cyclic_amplitude(coef, f)
         dark = None
         if self.dark is not None:
             dark = real_array(self.dark, "dark")
             if dark.shape != (4, n) or not np.all(np.isfinite(dark)):
                 raise ValueError(f"dark: expected finite values of shape (4, {n}), got "
                                  f"{dark.shape}")
+            _check_dark_range(dark)
         block = check_block(self.block, "block")
         shape = _frame_shape(self.shape, block)
         for label, lo, hi, size in (("rows", *span[:2], shape[0]),
@@ -267,6 +269,47 @@ class ToFCalibration:
                 f"{self.orders} harmonics{', dark' if self.dark is not None else ''}{extra})")
 
 
+#: the largest cyclic-error correction (rad): ``g_f`` is a phase error, taken off a phase on
+#: the circle, where a turn of more than a half turn (pi) is a shorter turn the other way: no
+#: cyclic error is that large (the harmonics of the tests are 0.05 rad). The bound is on
+#: ``sum_k |(a_k, b_k)|``, the largest ``|g_f|`` can be at any phase (the Fourier terms of
+#: :meth:`ToFCalibration.cyclic_error`)
+CYCLIC_AMPLITUDE_MAX = np.pi
+
+#: the largest dark offset (DN) in magnitude: an offset is a tap's mean less the black level,
+#: both codes of the sensor's ADC, so within (-(2**bits), 2**bits); a calibration records no
+#: bit depth, so the bound is that of the widest ADC a sensor can have (16 bits,
+#: ``check_bit_depth``): 2**16 = 65536 DN
+DARK_OFFSET_MAX = float(1 << 16)
+
+
+def _check_cyclic_amplitude(coef, freqs):
+    """A ValueError naming ``coefficients`` when, at some frequency, ``sum_k |(a_k, b_k)|``
+    (the largest ``|g_f|`` can be: :meth:`ToFCalibration.cyclic_error` sums the Fourier
+    terms) exceeds :data:`CYCLIC_AMPLITUDE_MAX`: coefficients of 1e308 had been accepted, and
+    ``g`` overflowed in ``tof_depth`` (``phase: holds NaN or infinite values``)."""
+    with np.errstate(over="ignore"):                       # 1e308 terms: inf, refused below
+        amp = np.hypot(coef[..., 0], coef[..., 1]).sum(axis=1) if coef.size else \
+            np.zeros(coef.shape[0])
+    bad = np.flatnonzero(~(amp <= CYCLIC_AMPLITUDE_MAX))
+    if bad.size:
+        i = int(bad[np.argmax(amp[bad])])
+        size = f"= {float(amp[i]):.3g}" if np.isfinite(amp[i]) else "> 1.8e+308"
+        raise ValueError(f"coefficients: the cyclic error at {freqs[i] / 1e6:g} MHz reaches "
+                         f"sum_k |(a_k, b_k)| {size} rad; a phase correction is at most "
+                         f"pi (a half turn)")
+
+
+def _check_dark_range(dark):
+    """A ValueError naming ``dark`` when an offset lies beyond :data:`DARK_OFFSET_MAX` DN
+    (1e5 DN had silently changed sigma, 1e308 flagged every measurement)."""
+    top = float(np.max(np.abs(dark))) if dark.size else 0.0
+    if not top <= DARK_OFFSET_MAX:
+        raise ValueError(f"dark: offsets of up to {top:.3g} DN; a dark offset (a tap's mean "
+                         f"less the black level) lies within [-{DARK_OFFSET_MAX:.0f}, "
+                         f"{DARK_OFFSET_MAX:.0f}] DN (2**16: the widest ADC of a sensor)")
+
+
 def _fit_rms(value):
     """The largest of ``meta["fit_rms_m"]`` when it is a non-empty list of real numbers
     (what :func:`calibrate` writes), else None: meta is free-form, repr must not fail."""
@@ -338,6 +381,34 @@ def _check_phase(phase, nfreq):
     return ph
 
 
+def _mhz(freqs):
+    return ", ".join(f"{f / 1e6:g}" for f in freqs)
+
+
+def _check_same_layout(t, first, name, k, than=""):
+    """A ValueError naming ``name`` unless frame ``k`` (ToFTaps) holds the frequencies, Z
+    measurements (sites, block) and frame shape of ``first``: the sweep's frames among
+    themselves (``than`` empty), and the dark frames against the sweep's first."""
+    diffs = []
+    tf, ff = (np.asarray(x.frequencies, np.float64).reshape(-1) for x in (t, first))
+    if not np.array_equal(tf, ff):
+        diffs.append(f"frequencies {_mhz(tf)} MHz, not {_mhz(ff)}")
+    if tuple(t.shape) != tuple(first.shape):
+        diffs.append(f"a {t.shape[0]}x{t.shape[1]} frame, not {first.shape[0]}x"
+                     f"{first.shape[1]}")
+    if int(t.block) != int(first.block):
+        diffs.append(f"block {t.block}, not {first.block}")
+    if t.n_sites != first.n_sites:
+        diffs.append(f"{t.n_sites} Z measurements, not {first.n_sites}")
+    elif not all(np.array_equal(a, b) for a, b in zip(t.sites, first.sites)):
+        diffs.append("Z measurements at other sites")
+    if not diffs and t.taps.shape != first.taps.shape:
+        diffs.append(f"taps of shape {t.taps.shape}, not {first.taps.shape}")
+    if diffs:
+        raise ValueError(f"{name}: every frame must hold the same frequencies and Z "
+                         f"measurements{than} (frame {k}: {'; '.join(diffs)})")
+
+
 def _dark_offsets(dark, first):
     frames = [dark] if isinstance(dark, (ToFTaps, RawFrame)) else \
         as_list(dark, "dark", "frames or ToFTaps of the capped lens")
@@ -347,9 +418,13 @@ def _dark_offsets(dark, first):
     noise = 0.0
     for k, t in enumerate(frames):
         t = as_taps(t, "dark")
-        if t.taps.shape[1:] != first.taps.shape[1:] or t.block != first.block:
-            raise ValueError(f"dark: taps of shape {t.taps.shape} do not match the sweep's "
-                             f"{first.taps.shape}")
+        # the sweep's own check: the offsets are stored per tap and Z measurement of the
+        # sweep, so frames of other sites, block, frame shape or frequencies are refused (a
+        # 48x32 frame of as many sites had been subtracted as the 32x48 sweep's offsets).
+        # The sensor object is not compared, as for the sweep's frames: a dark frame's
+        # sensor differs by construction (no light: optical power, ambient), and its offset
+        # is measured above its own black level, so another black level changes nothing
+        _check_same_layout(t, first, "dark", k, " as the sweep")
         taps = np.asarray(t.taps, np.float64)
         _check_unlit(taps, t.sensor, k)
         acc += taps.mean(axis=0) - t.sensor.black_level
@@ -424,7 +499,8 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
         K, the harmonics of the cyclic-error series (8, 1..32).
     dark : ToFTaps or sequence of them, optional
         Frames with the laser off (same sensor): the mean of every tap minus
-        the black level is stored and subtracted first.
+        the black level is stored and subtracted first. They must hold the
+        sweep's frequencies, Z measurements and frame shape.
     iterations : int
         Alternations of the fit (4, 1..50).
 
@@ -459,12 +535,8 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
         raise ValueError(f"sweep: expected at least 2 frames, got {len(frames)}")
     frames = [as_taps(t, "sweep") for t in frames]
     first = frames[0]
-    for t in frames[1:]:
-        if (t.taps.shape != first.taps.shape or t.block != first.block
-                or not np.array_equal(t.frequencies, first.frequencies)
-                or not all(np.array_equal(a, b) for a, b in zip(t.sites, first.sites))):
-            raise ValueError("sweep: every frame must hold the same frequencies and Z "
-                             "measurements")
+    for k, t in enumerate(frames[1:], 1):
+        _check_same_layout(t, first, "sweep", k)
     try:
         dists = list(distances)
     except TypeError:
