@@ -249,12 +249,24 @@ def test_filters_round_trip_and_each_method_picks_its_kind(fitted, tmp_path):
                                   rz.reconstruct(frame, "z_guided", filters=zf))
     np.testing.assert_array_equal(rz.reconstruct(frame, "learned", filters=both),
                                   rz.reconstruct(frame, "learned", filters=base))
-    # given only the other kind, a method takes its shipped filters
-    np.testing.assert_array_equal(rz.reconstruct(frame, "learned", filters=zf),
+    # given only the other kind, a method refuses them (its shipped filters had run, the
+    # given ones unused: D3 of the 2026-11-27 probes); an evaluation of both methods gives
+    # each method its own kind and the other its shipped filters
+    with pytest.raises(ValueError, match="^filters: the given filters hold z_guided filters"):
+        rz.reconstruct(frame, "learned", filters=zf)
+    with pytest.raises(ValueError, match="^filters: the given filters hold learned filters"):
+        rz.reconstruct(frame, "z_guided", filters=base)
+    from rgbz_fast.evaluation import EvalConfig
+
+    cfg = EvalConfig(patterns=["mask2"], methods=["learned", "z_guided"], metrics=["cfa_psnr"],
+                     params={"filters": zf})
+    np.testing.assert_array_equal(rz.reconstruct(frame, "learned",
+                                                 params=cfg.params_for("learned")),
                                   rz.reconstruct(frame, "learned"))
-    np.testing.assert_array_equal(rz.reconstruct(frame, "z_guided", filters=base),
-                                  rz.reconstruct(frame, "z_guided",
-                                                 filters=default_z_filters("mask2")))
+    assert cfg.applies("mask2", "learned") and cfg.applies("mask2", "z_guided")
+    with pytest.raises(ValueError, match="^filters: the given filters hold z_guided filters"):
+        EvalConfig(patterns=["mask2"], methods=["learned"], metrics=["cfa_psnr"],
+                   params={"filters": zf})                # no method of the run takes them
     with pytest.raises(ValueError, match="^filters: .*none ship for pattern 'rows"):
         resolve_z_filters(None, get_pattern("rows"), 11)
     with pytest.raises(ValueError, match="^filters: fitted for pattern 'mask2'"):

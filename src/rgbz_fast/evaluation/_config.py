@@ -163,7 +163,9 @@ class EvalConfig:
         skips = {}
         for p in self.patterns:
             for m in self.methods:
-                why = _does_not_apply(get_pattern(p), m, self.params, self.bit_depth)
+                why = _does_not_apply(get_pattern(p), m,
+                                      method_params(self.params, m, self.methods),
+                                      self.bit_depth)
                 if why is not None:
                     skips[(p, m)] = why
         if len(skips) == len(self.patterns) * len(self.methods):
@@ -189,6 +191,10 @@ class EvalConfig:
     def applies(self, pattern, method):
         """Whether ``method`` runs on ``pattern`` in this configuration."""
         return (pattern, method) not in self._skips
+
+    def params_for(self, method):
+        """The reconstruction parameters ``method`` runs with (:func:`method_params`)."""
+        return method_params(self.params, method, self.methods)
 
     @property
     def needs_tof(self):
@@ -300,6 +306,26 @@ class EvalConfig:
         return (f"{inputs}, "
                 f"demosaic {self.demosaic}, border crop {self.crop} px, "
                 f"{self.params.precision}{clip}" + "".join(", " + e for e in extra))
+
+
+def method_params(params, method, methods):
+    """``params`` for ``method`` in a run of ``methods``: filters of one kind given for a run
+    that holds that kind's method serve it, and the other filter method runs its shipped
+    filters (as it did before ``reconstruct`` refused filters of the other kind alone); in a
+    run where no method takes the given kind they stay, and are refused
+    (:func:`_does_not_apply`: never silently unused)."""
+    from ..reconstruction._learned import LearnedFilters
+    from ..reconstruction._z_guided import ZGuidedFilters
+
+    if params.filters is None or method not in ("learned", "z_guided"):
+        return params
+    kind = LearnedFilters if method == "learned" else ZGuidedFilters
+    other = ZGuidedFilters if method == "learned" else LearnedFilters
+    taker = "z_guided" if method == "learned" else "learned"
+    if taker not in methods or any(isinstance(f, kind) for f in params.filters) or not all(
+            isinstance(f, other) for f in params.filters):
+        return params
+    return params.replace(filters=None)
 
 
 def _does_not_apply(pattern, method, params, bit_depth):

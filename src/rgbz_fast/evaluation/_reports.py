@@ -399,7 +399,7 @@ def crop_figure(source, config, box=None, size=64):
             if not config.applies(pname, m):     # a grey tile where the method does not apply
                 row.append((f"{METHOD_LABELS.get(m, m)} (n/a)", np.full_like(ref, 128)))
                 continue
-            out = reconstruct(frame, m, params=config.params)
+            out = reconstruct(frame, m, params=config.params_for(m))
             row.append((METHOD_LABELS.get(m, m),
                         chain.render(out, bayer, bit_depth=bd, gains=st["gains"])))
         tiles.append((pname, row))

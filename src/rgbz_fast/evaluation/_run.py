@@ -234,7 +234,7 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
                 continue
             if stop is not None and stop.is_set():
                 raise _Stopped
-            out = reconstruct(frame, m, params=config.params, workers=workers)
+            out = reconstruct(frame, m, params=config.params_for(m), workers=workers)
             values = {}
             if "cfa_psnr" in config.metrics:
                 values["cfa_psnr"] = _metrics.cfa_psnr(ref_cfa, out, z, bit_depth=bd)

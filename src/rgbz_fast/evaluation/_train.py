@@ -124,12 +124,25 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     configs = [EvalConfig(patterns=(pattern.tile_string,), bit_depth=bit_depth, noise=noise,
                           linearise=(enc == "linear"), seed=seed, metrics=("cfa_psnr",))
                for enc in (("linear", "srgb") if encoding == "both" else (encoding,))]
-    meta = {"training_set": name, "noise": bool(noise),
-            "encoding": "linear+srgb" if encoding == "both" else encoding,
-            **options.pop("meta", {})}
+    meta = _merge_meta({"training_set": name, "noise": bool(noise),
+                        "encoding": "linear+srgb" if encoding == "both" else encoding},
+                       options.pop("meta", None))
     frames = _Frames(sources, pattern, configs, progress)
     with frames.fitting:
         return train(frames, meta=meta, **options)
+
+
+def _merge_meta(info, meta):
+    """What :func:`train_filters` records (the training set, its protocol) with the caller's
+    ``meta``: a key of its own (``noise``, ``encoding``...) is a ValueError naming ``meta``
+    and the key, as the fit's (:func:`rgbz_fast.reconstruction.train`; the caller's had won,
+    recording noise=False for a noisy fit); the training set's name is ``name=``."""
+    from ..reconstruction._learned_train import merge_meta
+
+    if isinstance(meta, dict) and "training_set" in meta:
+        raise ValueError("meta: 'training_set' is recorded by train_filters itself (the "
+                         "folders' names); pass name= for another")
+    return merge_meta(info, meta)
 
 
 class _Frames:
@@ -189,8 +202,9 @@ def _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, 
     if "groups" in options:
         raise TypeError("groups: not an option of train_filters; the two frames of each pair "
                         "are one group")
-    meta = {"training_set": name, "seed": seed, "protocol": "sensor model, noise-free + noisy",
-            **options.pop("meta", {})}
+    meta = _merge_meta({"training_set": name, "seed": seed,
+                        "protocol": "sensor model, noise-free + noisy"},
+                       options.pop("meta", None))
     groups = [i for i in range(len(dataset)) for _ in (False, True)]
     with fitting:
         return train(frames(), z_guided=True, meta=meta, groups=groups, **options)

@@ -128,8 +128,16 @@ class LearnedFilters(FilterIdentity):
         k_thr = (np.zeros((n_ph, 0)) if spread_thresholds is None
                  else np.array(real_array(spread_thresholds, "filters: spread_thresholds"),
                                ndmin=2))
+        for label, a in (("strength_thresholds", s_thr), ("coherence_thresholds", c_thr),
+                         ("spread_thresholds", k_thr)):
+            if a.ndim != 2:     # the kernel reads (phases, thresholds); 3-D had failed in it
+                raise ValueError(f"filters: {label} must be 2-D (phases, thresholds), got "
+                                 f"shape {a.shape}")
         # kept at float32 precision, as the file stores them: a fit and its file are equal
         w = real_array(weights, "filters: weights").astype(np.float32).astype(np.float64)
+        if w.ndim != 3:
+            raise ValueError(f"filters: weights must be 3-D (phases, buckets, taps), got shape "
+                             f"{w.shape}")
         if any(a.shape[0] != n_ph for a in (s_thr, c_thr, k_thr)):
             raise ValueError(f"filters: expected thresholds for {n_ph} phases, got "
                              f"{s_thr.shape[0]}, {c_thr.shape[0]} and {k_thr.shape[0]}")
@@ -150,8 +158,7 @@ class LearnedFilters(FilterIdentity):
             a.setflags(write=False)
         self.weights, self.strength_thresholds = w, s_thr
         self.coherence_thresholds, self.spread_thresholds = c_thr, k_thr
-        self.meta = {str(k): (v if isinstance(v, (int, float)) else str(v))
-                     for k, v in dict(meta or {}).items()}
+        self.meta = check_meta(meta)
         h = hashlib.sha1()
         for part in (self.pattern.tile_string, self.bit_depth, self.radius, self.hash_radius):
             h.update(repr(part).encode())
@@ -266,34 +273,20 @@ class LearnedFilters(FilterIdentity):
             raise ValueError(f"{name}: {p} is not a rgbz-fast filters file")
         try:
             return cls._from_arrays(z, p, name)
-        except KeyError as e:
-            raise ValueError(f"{name}: {p} lacks {e} (a damaged filters file)") from None
-        except (TypeError, ValueError, SyntaxError, RecursionError, MemoryError) as e:
-            msg = str(e)
-            if msg.startswith(f"{name}: "):           # the file named, once
-                rest = msg.removeprefix(f"{name}: ")
-                raise ValueError(msg if rest.startswith(str(p)) else f"{name}: {p}: {rest}") \
-                    from None
-            raise ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
-                             f"{msg[:200]})") from None
+        except FILE_ERRORS as e:
+            raise file_error(e, p, name) from None
 
     @classmethod
     def _from_arrays(cls, z, p, name):
-        version = int(z["version"])
+        version = int_field(z, "version", p, name)
         if version not in _READS:
             raise ValueError(f"{name}: {p} has format version {version}, this library reads "
                              f"versions {', '.join(map(str, _READS))} (a newer rgbz-fast wrote "
                              "it: upgrade, or refit with `rgbz-fast train`)")
-        keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
-        if not isinstance(keys, list) or not isinstance(values, list):
-            raise TypeError("meta_keys and meta_values must be 1-d arrays")
-        if len(keys) != len(values):                # zip had dropped the keys past the values
-            raise ValueError(f"{name}: {p} holds {len(keys)} meta keys and {len(values)} "
-                             "values (a damaged filters file)")
-        meta = {str(k): ast.literal_eval(str(v)[:100_000]) for k, v in zip(keys, values)}
-        if int(z["n_angles"]) != N_ANGLES:
-            raise ValueError(f"{name}: {p} has {int(z['n_angles'])} angle bins, expected "
-                             f"{N_ANGLES}")
+        meta = read_meta(z, p, name)
+        n_angles = int_field(z, "n_angles", p, name)
+        if n_angles != N_ANGLES:
+            raise ValueError(f"{name}: {p} has {n_angles} angle bins, expected {N_ANGLES}")
         try:
             pattern = Pattern(str(z["pattern"]), name=str(z["pattern_name"]), bayer=str(z["bayer"]))
             named = _preset_or_none(pattern.name)
@@ -305,9 +298,106 @@ class LearnedFilters(FilterIdentity):
                              f"{named.tile_string}, but holds the tile {pattern.tile_string} "
                              "(a damaged filters file)")
         spread = z["spread_thresholds"] if version >= 2 else None
-        return cls(pattern, int(z["bit_depth"]), z["weights"],
+        return cls(pattern, int_field(z, "bit_depth", p, name), z["weights"],
                    z["strength_thresholds"], z["coherence_thresholds"], spread,
-                   radius=int(z["radius"]), hash_radius=int(z["hash_radius"]), meta=meta)
+                   radius=int_field(z, "radius", p, name),
+                   hash_radius=int_field(z, "hash_radius", p, name), meta=meta)
+
+
+#: the longest repr of a meta value a file keeps (the loader reads no more of it)
+_META_REPR_MAX = 100_000
+#: the errors of reading a damaged file that :func:`file_error` reports
+FILE_ERRORS = (KeyError, TypeError, ValueError, SyntaxError, RecursionError, MemoryError)
+
+
+def check_meta(meta, name="meta"):
+    """The ``meta`` of filters as they keep it: string keys; NumPy scalars made Python ones;
+    ints, floats and strings kept, anything else as its ``str``. A value a file cannot give
+    back (NaN, infinity, a number whose repr ``ast.literal_eval`` cannot read) is a ValueError
+    naming ``name`` and the key: saved, it had made a file that does not load."""
+    if meta is None:
+        return {}
+    if not isinstance(meta, dict):
+        raise TypeError(f"{name}: expected a dict, got {type(meta).__name__}")
+    out = {}
+    for k, v in meta.items():
+        k = str(k)
+        if isinstance(v, np.generic):
+            v = v.item()                      # np.float64(0.5) -> 0.5: a repr the file reads
+        if isinstance(v, bool):
+            v = bool(v)
+        elif isinstance(v, int):
+            v = int(v)
+        elif isinstance(v, float):
+            v = float(v)
+        elif not isinstance(v, str):
+            v = str(v)
+        if isinstance(v, float) and not np.isfinite(v):
+            raise ValueError(f"{name}: {k!r} is {v!r}, which a filters file cannot hold; give "
+                             "a finite number or a string")
+        text = repr(v)
+        if len(text) > _META_REPR_MAX:
+            raise ValueError(f"{name}: {k!r} is {len(text)} characters long, more than a "
+                             f"filters file keeps ({_META_REPR_MAX})")
+        if np.array([k], dtype=str)[0] != k:
+            raise ValueError(f"{name}: the key {k!r} ends in NUL characters, which a filters "
+                             "file drops")
+        try:
+            back = ast.literal_eval(text)
+        except (ValueError, SyntaxError, RecursionError, MemoryError):
+            back = None
+        if type(back) is not type(v) or back != v:
+            raise ValueError(f"{name}: {k!r} is {text[:100]}, which a filters file cannot give "
+                             "back; give a number or a string")
+        out[k] = v
+    return out
+
+
+def read_meta(z, p, name):
+    """The meta of a filters file's arrays ``z`` (``meta_keys``, ``meta_values``)."""
+    keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
+    if not isinstance(keys, list) or not isinstance(values, list):
+        raise TypeError("meta_keys and meta_values must be 1-d arrays")
+    if len(keys) != len(values):                # zip had dropped the keys past the values
+        raise ValueError(f"{name}: {p} holds {len(keys)} meta keys and {len(values)} "
+                         "values (a damaged filters file)")
+    return {str(k): ast.literal_eval(str(v)[:_META_REPR_MAX]) for k, v in zip(keys, values)}
+
+
+def int_field(z, key, p, name):
+    """The integer ``z[key]`` of a filters file: a 0-d integral number, else a ValueError
+    naming the file and the field (``int()`` had read a version 2.7 as 2)."""
+    a = np.asarray(z[key])
+    if a.shape != () or a.dtype.kind not in "iuf" or not np.isfinite(a) or a != np.trunc(a):
+        got = repr(a.tolist()) if a.shape == () else f"an array of shape {a.shape}"
+        raise ValueError(f"{name}: {p} holds {key} {got}, not an integer (a damaged filters "
+                         "file)")
+    return int(a)
+
+
+def float_field(z, key, p, name):
+    """The number ``z[key]`` of a filters file: a 0-d real number, else a ValueError naming the
+    file and the field."""
+    a = np.asarray(z[key])
+    if a.shape != () or a.dtype.kind not in "iuf":
+        got = repr(a.tolist()) if a.shape == () else f"an array of shape {a.shape}"
+        raise ValueError(f"{name}: {p} holds {key} {got}, not a number (a damaged filters "
+                         "file)")
+    return float(a)
+
+
+def file_error(e, p, name):
+    """The ValueError of a damaged filters file ``p`` (one of :data:`FILE_ERRORS` raised while
+    reading its arrays): ``"{name}: {p}: ..."`` for a check's message (the file named once),
+    or what failed."""
+    if isinstance(e, KeyError):
+        return ValueError(f"{name}: {p} lacks {e} (a damaged filters file)")
+    msg = str(e)
+    if msg.startswith(f"{name}: "):                   # a check's message: the file named, once
+        rest = msg.removeprefix(f"{name}: ")
+        return ValueError(msg if rest.startswith(str(p)) else f"{name}: {p}: {rest}")
+    return ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
+                      f"{msg[:200]})")
 
 
 def _preset_or_none(label):

@@ -110,6 +110,7 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
                                                       (n_spread, "n_spread"))]
     ridge = 1e-3 if ridge is None else check_number(ridge, "ridge", lo=0, hi=REGULARISATION_MAX)
     prior = 50.0 if prior is None else check_number(prior, "prior", lo=0, hi=REGULARISATION_MAX)
+    merge_meta(dict.fromkeys(RECORDED), meta)      # refused before the passes, not after
     if isinstance(frames, Iterator):            # one-shot: kept for the second pass
         frames = list(frames)
     pattern, bit_depth, samples, n_frames = _first_pass(frames, radius, hash_radius)
@@ -135,11 +136,49 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
             "empty_buckets": int((counts == 0).sum()), "ridge": ridge, "prior": prior}
     from .._build_config import VERSION
     info["library_version"] = VERSION
-    info.update(meta or {})
+    info = merge_meta(info, meta)
     return LearnedFilters(pattern, bit_depth, weights,
                           *(np.array([t[i] for t in thresholds]).reshape(len(geometry), -1)
                             for i in range(3)),
                           radius=radius, hash_radius=hash_radius, meta=info)
+
+
+#: the meta keys :func:`train` records itself (a caller's ``meta`` may not set them)
+RECORDED = ("n_images", "n_sites", "empty_buckets", "ridge", "prior", "library_version")
+
+
+def merge_meta(info, meta, name="meta"):
+    """``info`` (what a fit records) with the caller's ``meta`` added: a ValueError naming
+    ``name`` and the key when ``meta`` sets one of ``info``'s keys (a file had recorded
+    ridge 99 for a fit at 1e-3), and the keys checked as the filters keep them."""
+    from ._learned import check_meta
+
+    if meta is None:
+        return dict(info)
+    check_meta(meta, name)                  # a value a file cannot hold: refused before a fit
+    for k in meta:
+        if str(k) in info:
+            raise ValueError(f"{name}: {str(k)!r} is recorded by the fit itself (what it "
+                             "used or made); give your own key another name")
+    return {**info, **meta}
+
+
+def solve_normal(A, b):
+    """``np.linalg.solve(A, b)`` (a stack of systems too) -- the same bits for every
+    non-singular system -- and, for a singular one (too few distinct sites, no
+    regularisation: ridge 0 with prior 0, a flat image, a frame of one period), the
+    least-squares solution of least norm (``np.linalg.lstsq``) in place of NumPy's
+    LinAlgError('Singular matrix')."""
+    try:
+        return np.linalg.solve(A, b)
+    except np.linalg.LinAlgError:
+        pass
+    if A.ndim == 2:
+        return np.linalg.lstsq(A, b, rcond=None)[0]
+    out = np.empty(b.shape)
+    for i in range(len(A)):
+        out[i] = solve_normal(A[i], b[i])
+    return out
 
 
 def _first_pass(frames, radius, hash_radius):
@@ -222,14 +261,14 @@ def _solve(gram, ph, ridge, prior):
     At, Bt = A.sum(0), B.sum(0)
     scale = max(np.trace(At) / p, np.finfo(float).tiny)
     eye = np.eye(p)
-    wg = np.linalg.solve(At + ridge * scale * eye, Bt)
+    wg = solve_normal(At + ridge * scale * eye, Bt)
     per_site = scale / max(N.sum(), 1.0)
     W = np.empty((len(A), p))
     for j in range(len(A)):
         lam = prior * per_site + ridge * np.trace(A[j]) / p
         if lam <= 0:
             lam = ridge * scale + np.finfo(float).tiny
-        W[j] = np.linalg.solve(A[j] + lam * eye, B[j] + lam * wg)
+        W[j] = solve_normal(A[j] + lam * eye, B[j] + lam * wg)
     return W
 
 

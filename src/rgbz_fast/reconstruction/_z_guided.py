@@ -49,7 +49,8 @@ from .._frame import ToFTaps
 from .._patterns import Z, get_pattern
 from .._validate import check_number
 from ..io import atomic_write, read_npz
-from ._learned import FilterIdentity, LearnedFilters, check_filters, pattern_transform
+from ._learned import (FILE_ERRORS, FilterIdentity, LearnedFilters, check_filters, check_meta,
+                       file_error, float_field, int_field, pattern_transform, read_meta)
 from ._learned_hash import (N_ANGLES, extend_index, gather_windows, hash_buckets, hash_features,
                             mirror_octants)
 
@@ -350,7 +351,11 @@ class ZGuidedFilters(FilterIdentity):
         z_layout(base.pattern, "filters")
         self.base = base
         self.lam = check_number(lam, "lam", lo=0, lo_open=True)
-        thr = np.array(noise_thresholds, np.float64).reshape(-1)
+        thr = np.array(noise_thresholds, np.float64)
+        if thr.ndim > 1:
+            raise ValueError(f"filters: noise thresholds must be a 1-D sequence, got shape "
+                             f"{thr.shape}")
+        thr = thr.reshape(-1)
         if not np.all(np.isfinite(thr)) or np.any(thr <= 0) or np.any(np.diff(thr) <= 0):
             raise ValueError(f"filters: noise thresholds must be increasing and > 0, got "
                              f"{thr.tolist()}")
@@ -369,8 +374,7 @@ class ZGuidedFilters(FilterIdentity):
         thr.setflags(write=False)
         self.weights, self.guide_weights = arrays
         self.noise_thresholds = thr
-        self.meta = {str(k): (v if isinstance(v, (int, float)) else str(v))
-                     for k, v in dict(meta or {}).items()}
+        self.meta = check_meta(meta)
         h = hashlib.sha1(base.digest.encode())
         h.update(repr(self.lam).encode())
         for a in (thr, *arrays):
@@ -437,29 +441,21 @@ class ZGuidedFilters(FilterIdentity):
         if not is_z_guided_file(z):
             raise ValueError(f"{name}: {p} is not a rgbz-fast z_guided filters file")
         try:
-            if int(z["version"]) != FORMAT_VERSION:
-                raise ValueError(f"{name}: {p} has format version {int(z['version'])}, this "
+            version = int_field(z, "version", p, name)
+            if version != FORMAT_VERSION:
+                raise ValueError(f"{name}: {p} has format version {version}, this "
                                  f"library reads version {FORMAT_VERSION}")
-            if int(z["n_guide"]) != N_GUIDE:
-                raise ValueError(f"{name}: {p} has {int(z['n_guide'])} guide features, "
-                                 f"expected {N_GUIDE}")
-            import ast
+            n_guide = int_field(z, "n_guide", p, name)
+            if n_guide != N_GUIDE:
+                raise ValueError(f"{name}: {p} has {n_guide} guide features, expected "
+                                 f"{N_GUIDE}")
             base = LearnedFilters._from_arrays(
                 {k[len("base_"):]: v for k, v in z.items() if k.startswith("base_")}, p, name)
-            keys, values = z["meta_keys"].tolist(), z["meta_values"].tolist()
-            if not isinstance(keys, list) or not isinstance(values, list):
-                raise TypeError("meta_keys and meta_values must be 1-d arrays")
-            meta = {str(k): ast.literal_eval(str(v)[:100_000]) for k, v in zip(keys, values)}
+            meta = read_meta(z, p, name)
             return cls(base, z["weights"], z["guide_weights"], z["noise_thresholds"],
-                       float(z["lam"]), meta=meta)
-        except KeyError as e:
-            raise ValueError(f"{name}: {p} lacks {e} (a damaged filters file)") from None
-        except (TypeError, ValueError, SyntaxError, RecursionError, MemoryError) as e:
-            msg = str(e)
-            if msg.startswith(f"{name}: "):
-                raise ValueError(msg) from None
-            raise ValueError(f"{name}: {p} is a damaged filters file ({type(e).__name__}: "
-                             f"{msg[:200]})") from None
+                       float_field(z, "lam", p, name), meta=meta)
+        except FILE_ERRORS as e:            # the learned loader's form: the file named once
+            raise file_error(e, p, name) from None
 
 
 def _derived(f, pattern):
@@ -549,12 +545,31 @@ def check_any_filters(value, name="filters", *, max_bytes=None):
 
 
 def learned_only(filters, name="filters"):
-    """The LearnedFilters of a checked ``filters`` value; None (the shipped ones) when it holds
-    none, so that one ``filters`` value can carry z_guided filters alone."""
+    """The LearnedFilters of a checked ``filters`` value (which may hold z_guided filters beside
+    them, as an evaluation of both methods passes); None (the shipped ones) for None, and a
+    ValueError naming ``name`` when it holds z_guided filters only (:func:`check_kind`)."""
     if filters is None:
         return None
     out = tuple(f for f in filters if isinstance(f, LearnedFilters))
+    if not out:
+        check_kind(filters, "learned", name)
     return out or None
+
+
+def check_kind(filters, method, name="filters"):
+    """ValueError naming ``name`` when the checked ``filters`` hold none of ``method``'s kind
+    (``"learned"`` or ``"z_guided"``): the method's shipped filters had run in their place,
+    the given ones unused (the CLI's ``--filters`` check, in the API's words)."""
+    if filters is None:
+        return
+    kind = LearnedFilters if method == "learned" else ZGuidedFilters
+    if any(isinstance(f, kind) for f in filters):
+        return
+    have = " and ".join(sorted({"learned" if isinstance(f, LearnedFilters) else "z_guided"
+                                for f in filters}))
+    fit = "train" if method == "learned" else "train_z_guided"
+    raise ValueError(f"{name}: the given filters hold {have} filters; method {method!r} takes "
+                     f"its own kind (rgbz_fast.reconstruction.{fit})")
 
 
 def default_z_filters(pattern, bit_depth=11):
@@ -583,6 +598,7 @@ def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
     """The :class:`ZGuidedFilters` for a frame: one of ``filters`` fitted for its pattern (or
     mirrored to it) and bit depth, or the shipped ones (:func:`default_z_filters`) when none
     of ``filters`` are."""
+    check_kind(filters, "z_guided", name)
     cands = () if filters is None else tuple(f for f in filters if isinstance(f, ZGuidedFilters))
     if not cands:
         shipped = default_z_filters(pattern, bit_depth)

@@ -18,7 +18,7 @@ from .._frame import RawFrame
 from .._threads import check_workers
 from .._validate import check_flag, check_int, check_number
 from ._learned import LearnedFilters, default_filters
-from ._learned_train import REGULARISATION_MAX
+from ._learned_train import REGULARISATION_MAX, merge_meta, solve_normal
 from ._z_guided import N_GUIDE, ZGuidedFilters, _site_features, check_base, guide_grid, z_layout
 
 __all__ = ["train_z_guided", "frame_stats", "fit_stats", "fit_folds", "select_stats",
@@ -34,6 +34,12 @@ FIXED_SETTINGS = {"ridge": 1e-3, "prior": 50.0, "colour_prior": 4.0}
 SELECTIONS = ("cv", None)
 #: the lower bound of each parameter, and whether it is open
 _BOUNDS = {"ridge": (0, False), "prior": (0, False), "colour_prior": (0, True)}
+#: the meta keys the fit records itself, by the function that records them (a caller's
+#: ``meta`` may not set them: a file had recorded select 'cv' for a fit with select=None)
+_STATS_RECORDED = ("n_sites", "ridge", "prior", "colour_prior", "guide", "base", "base_digest",
+                   "library_version")
+_FOLDS_RECORDED = ("select", "cv_folds", "cv_grid", "cv_rmse") + _STATS_RECORDED
+_TRAIN_RECORDED = ("n_images", "lam", "cv_groups") + _FOLDS_RECORDED
 
 
 def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colour_prior=None,
@@ -146,6 +152,7 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
             b <= a for a, b in zip(noise_thresholds, noise_thresholds[1:])):
         raise ValueError(f"noise_thresholds: expected increasing numbers > 0, got "
                          f"{noise_thresholds}")
+    merge_meta(dict.fromkeys(_TRAIN_RECORDED), meta)     # refused before the frames are read
     frames = list(frames)
     if not frames:
         raise ValueError("frames: no frames to train on")
@@ -205,7 +212,7 @@ def train_z_guided(frames, *, nir=None, base=None, ridge=None, prior=None, colou
     info = {"n_images": len(frames), "lam": lam}
     if select == "cv":
         info["cv_groups"] = len(order)
-    info.update(meta or {})
+    info = merge_meta(info, meta)
     return fit_folds(folds, base, lam, noise_thresholds, select=select, cv_grid=axes,
                      guide=guide, meta=info, workers=workers, **given)
 
@@ -221,15 +228,24 @@ def fit_folds(folds, base, lam, noise_thresholds=(0.003,), *, ridge=None, prior=
     if select not in SELECTIONS:
         raise ValueError(f"select: expected 'cv' or None, got {select!r}")
     given = {"ridge": ridge, "prior": prior, "colour_prior": colour_prior}
+    merge_meta(dict.fromkeys(_FOLDS_RECORDED), meta)
     info = {}
     if select == "cv":
         axes = check_grid(cv_grid, "cv_grid")
         axes = {n: axes[n] if v is None else (v,) for n, v in given.items()}
-    if select == "cv" and any(len(a) > 1 for a in axes.values()):
+    # a parameter left to the grid: "cv" even when the grid holds one point of it (scored
+    # when there are folds to score it on; "given" had been recorded, and FIXED_SETTINGS fitted)
+    from_grid = select == "cv" and any(v is None for v in given.values())
+    n_folds = sum(f is not None for f in folds)
+    if select == "cv" and (any(len(a) > 1 for a in axes.values())
+                           or (from_grid and n_folds >= 2)):
         best, _, rmse = select_stats(folds, base, axes, guide=guide, workers=workers)
-        info.update(select="cv", cv_folds=sum(f is not None for f in folds),
+        info.update(select="cv", cv_folds=n_folds,
                     cv_grid="; ".join(f"{n} {list(axes[n])}" for n in axes),
                     cv_rmse=str([float(f"{e:.6g}") for e in rmse]))
+    elif from_grid:                         # a one-point grid and one fold: nothing to score
+        best = {n: axes[n][0] for n in axes}
+        info.update(select="cv", cv_grid="; ".join(f"{n} {list(axes[n])}" for n in axes))
     else:                                   # select None, or every parameter given
         best = {n: FIXED_SETTINGS[n] if v is None else v for n, v in given.items()}
         info.update(select="none" if select is None else "given")
@@ -378,7 +394,7 @@ def fit_stats(stats, base, lam, noise_thresholds=(0.003,), *, ridge=1e-3, prior=
             "colour_prior": colour_prior, "guide": int(bool(guide)),
             "base": base.meta.get("training_set", "?"), "base_digest": base.digest,
             "library_version": VERSION}
-    info.update(meta or {})
+    info = merge_meta(info, meta)
     return ZGuidedFilters(base, weights, gw, noise_thresholds, lam, meta=info)
 
 
@@ -399,9 +415,9 @@ def _fit_buckets(A, v, counts, ridge, prior, mult, only=None):
     p = A.shape[1]
     Ag, vg, n = A.sum(axis=0), v.sum(axis=0), max(int(counts.sum()), 1)
     scale = max(np.trace(Ag) / p, np.finfo(float).tiny)
-    wg = np.linalg.solve(Ag + ridge * scale * np.eye(p), vg)
+    wg = solve_normal(Ag + ridge * scale * np.eye(p), vg)
     if only is not None:
         A, v = A[only], v[only]
     lam = (prior * scale / n + ridge * np.trace(A, axis1=1, axis2=2)[:, None] / p) * mult
     lam = np.where(lam > 0, lam, ridge * scale + np.finfo(float).tiny)
-    return np.linalg.solve(A + lam[:, :, None] * np.eye(p), (v + lam * wg)[..., None])[..., 0]
+    return solve_normal(A + lam[:, :, None] * np.eye(p), (v + lam * wg)[..., None])[..., 0]
