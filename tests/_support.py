@@ -101,3 +101,18 @@ def reference_srgb(scene, scale=1.0):
     xyz = colour.msds_to_XYZ(scene.image, cmfs, d65, method="Integration", shape=shape) / 100
     lin = np.clip(colour.XYZ_to_sRGB(xyz * scale, apply_cctf_encoding=False), 0, 1)
     return np.round(colour.cctf_encoding(lin) * 255).astype(np.uint8)
+
+
+def rgbd_folder(path, shape=(48, 64), seed=3):
+    """A small Middlebury-style RGB-D scene folder (rgb.png, disp1.png, dmin.txt): a textured
+    image and two depth planes, for the command-line tests."""
+    import imageio.v3 as iio
+
+    path.mkdir(parents=True, exist_ok=True)
+    rng = np.random.default_rng(seed)
+    iio.imwrite(path / "rgb.png", rng.integers(40, 220, shape + (3,), dtype=np.uint8))
+    disp = np.full(shape, 60, np.uint8)
+    disp[:, shape[1] // 2:] = 110
+    iio.imwrite(path / "disp1.png", disp)
+    (path / "dmin.txt").write_text("270\n")
+    return path

@@ -12,6 +12,7 @@ import pytest
 
 import rgbz_fast as rz  # noqa: E402
 from rgbz_fast._cli import main  # noqa: E402
+from _support import rgbd_folder  # noqa: E402
 
 TILE = "ZRGR/BGBG/GRZR/BGBG"          # two 1x1 Z pixels on a diagonal of a 4x4 Bayer tile
 LABEL = "zrgr-bgbg-grzr-bgbg"         # the tile as a field of an output file name
@@ -24,20 +25,6 @@ def images(path, n=2, shape=(48, 64)):
     rng = np.random.default_rng(5)
     for i in range(n):
         iio.imwrite(path / f"img{i}.png", rng.integers(30, 230, shape + (3,), dtype=np.uint8))
-    return path
-
-
-def rgbd_folder(path, shape=(48, 64)):
-    """A small Middlebury-style RGB-D scene folder: a textured image, two depth planes."""
-    import imageio.v3 as iio
-
-    path.mkdir(parents=True, exist_ok=True)
-    rng = np.random.default_rng(3)
-    iio.imwrite(path / "rgb.png", rng.integers(40, 220, shape + (3,), dtype=np.uint8))
-    disp = np.full(shape, 60, np.uint8)
-    disp[:, shape[1] // 2:] = 110
-    iio.imwrite(path / "disp1.png", disp)
-    (path / "dmin.txt").write_text("270\n")
     return path
 
 

@@ -9,25 +9,11 @@ import json
 import numpy as np
 import pytest
 
-from _support import delta_e2000, reference_srgb, shared_path  # noqa: E402
+from _support import delta_e2000, reference_srgb, rgbd_folder, shared_path  # noqa: E402
 
 import rgbz_fast as rz  # noqa: E402
 from rgbz_fast import io as frameio  # noqa: E402
 from rgbz_fast._cli import main  # noqa: E402
-
-
-def rgbd_folder(path, shape=(48, 64)):
-    """A small Middlebury-style RGB-D scene folder: a textured image, two depth planes."""
-    import imageio.v3 as iio
-
-    path.mkdir(parents=True, exist_ok=True)
-    rng = np.random.default_rng(3)
-    iio.imwrite(path / "rgb.png", rng.integers(40, 220, shape + (3,), dtype=np.uint8))
-    disp = np.full(shape, 60, np.uint8)
-    disp[:, shape[1] // 2:] = 110                       # a depth step down the middle
-    iio.imwrite(path / "disp1.png", disp)
-    (path / "dmin.txt").write_text("270\n")
-    return path
 
 
 # --------------------------------------------------------------------------- depth

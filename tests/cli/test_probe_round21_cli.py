@@ -9,6 +9,7 @@ import pytest
 
 from rgbz_fast import io as frameio
 from rgbz_fast._cli import main
+from _support import rgbd_folder  # noqa: E402
 
 
 def _image(path, shape=(64, 64), seed=0):
@@ -21,20 +22,6 @@ def _image(path, shape=(64, 64), seed=0):
     base = np.stack([np.sin(xx / 5.0 + k) * np.cos(yy / 7.0 - k) for k in range(3)], -1)
     img = np.clip(128 + 90 * base + rng.normal(0, 4, base.shape), 0, 255).astype(np.uint8)
     iio.imwrite(path, img)
-    return path
-
-
-def _rgbd_folder(path, shape=(48, 64)):
-    """A small Middlebury-style RGB-D scene folder: a textured image, two depth planes."""
-    import imageio.v3 as iio
-
-    path.mkdir(parents=True, exist_ok=True)
-    rng = np.random.default_rng(3)
-    iio.imwrite(path / "rgb.png", rng.integers(40, 220, shape + (3,), dtype=np.uint8))
-    disp = np.full(shape, 60, np.uint8)
-    disp[:, shape[1] // 2:] = 110
-    iio.imwrite(path / "disp1.png", disp)
-    (path / "dmin.txt").write_text("270\n")
     return path
 
 
@@ -101,7 +88,7 @@ def test_reruns_name_the_files_an_earlier_run_left(tmp_path, capsys):
     """depth without --full-resolution after a run with it, and hardware without --sweep after
     one with it, say which files of the earlier run the folder still holds (kept: nothing is
     deleted); --quiet says nothing."""
-    scene = _rgbd_folder(tmp_path / "sc")
+    scene = rgbd_folder(tmp_path / "sc")
     assert main(["simulate", str(scene), "--pattern", "mask2", "--quiet", "--out",
                  str(tmp_path / "f")]) == 0
     frame = tmp_path / "f" / "sc_mask2.npz"
@@ -173,7 +160,7 @@ def test_evaluate_refuses_zoom_without_an_image_metric(tmp_path, capsys):
 def test_simulate_of_the_current_folder_names_it(tmp_path, capsys, monkeypatch):
     """``simulate .`` in a scene folder: the frame is <folder>_mask1.npz and its meta's scene
     is the folder's name (both had been empty: '_mask1.npz', scene '')."""
-    scene = _rgbd_folder(tmp_path / "aloe")
+    scene = rgbd_folder(tmp_path / "aloe")
     monkeypatch.chdir(scene)
     assert main(["simulate", ".", "--quiet", "--out", str(tmp_path / "f")]) == 0
     assert [p.name for p in (tmp_path / "f").iterdir()] == ["aloe_mask1.npz"]
@@ -205,7 +192,7 @@ def test_depth_takes_min_snr_0_and_max_reflectance_off(tmp_path, capsys):
     """``depth --min-snr 0`` turns the SNR test off, as the API's min_snr=0 does (it had been
     refused: 'expected a positive number'); ``--max-reflectance off`` keeps the measurements
     the implied-reflectance bound flags (retroreflectors), a number below 1 is refused."""
-    scene = _rgbd_folder(tmp_path / "aloe")
+    scene = rgbd_folder(tmp_path / "aloe")
     assert main(["simulate", str(scene), "--pattern", "mask2", "--quiet",
                  "--out", str(tmp_path / "f")]) == 0
     frame = tmp_path / "f" / "aloe_mask2.npz"

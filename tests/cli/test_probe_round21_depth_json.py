@@ -11,20 +11,7 @@ import numpy as np
 
 from rgbz_fast._cli import main
 from rgbz_fast.evaluation import _depth
-
-
-def _rgbd_folder(path, seed, shape=(48, 64)):
-    """A small Middlebury-style RGB-D scene folder: a textured image, two depth planes."""
-    import imageio.v3 as iio
-
-    path.mkdir(parents=True, exist_ok=True)
-    rng = np.random.default_rng(seed)
-    iio.imwrite(path / "rgb.png", rng.integers(40, 220, shape + (3,), dtype=np.uint8))
-    disp = np.full(shape, 60, np.uint8)
-    disp[:, shape[1] // 2:] = 110
-    iio.imwrite(path / "disp1.png", disp)
-    (path / "dmin.txt").write_text("270\n")
-    return path
+from _support import rgbd_folder  # noqa: E402
 
 
 def _strict(text):
@@ -38,8 +25,8 @@ def test_evaluate_depth_json_is_strict_and_totals_pool_the_valid_measurements(
     """Two scenes, one without a single valid measurement (its ISP results replaced by
     all-invalid ones): its own RMSE and median are null, not NaN, and the totals are the
     numbers over the valid measurements of the other scene, not NaN."""
-    _rgbd_folder(tmp_path / "data" / "a", seed=3)
-    _rgbd_folder(tmp_path / "data" / "b", seed=5)
+    rgbd_folder(tmp_path / "data" / "a", seed=3)
+    rgbd_folder(tmp_path / "data" / "b", seed=5)
     real = _depth.scene_runs
 
     def runs(*args, **kwargs):
