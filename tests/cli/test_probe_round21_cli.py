@@ -188,7 +188,7 @@ def test_evaluate_lens_errors_name_the_flag(tmp_path, capsys, option):
 
 
 # --------------------------------------------------------------------------- E1, E5
-def test_depth_takes_min_snr_0_and_max_reflectance_off(tmp_path, capsys):
+def test_depth_takes_min_snr_0_and_max_reflectance_off(tmp_path, capsys, monkeypatch):
     """``depth --min-snr 0`` turns the SNR test off, as the API's min_snr=0 does (it had been
     refused: 'expected a positive number'); ``--max-reflectance off`` keeps the measurements
     the implied-reflectance bound flags (retroreflectors), a number below 1 is refused."""
@@ -196,8 +196,24 @@ def test_depth_takes_min_snr_0_and_max_reflectance_off(tmp_path, capsys):
     assert main(["simulate", str(scene), "--pattern", "mask2", "--quiet",
                  "--out", str(tmp_path / "f")]) == 0
     frame = tmp_path / "f" / "aloe_mask2.npz"
+    import rgbz_fast.tof as tof
+
+    seen = []
+    real = tof.tof_depth
+
+    def spy(*a, **kw):
+        seen.append({k: kw.get(k) for k in ("min_snr", "max_reflectance")})
+        return real(*a, **kw)
+
+    monkeypatch.setattr(tof, "tof_depth", spy)
     assert main(["depth", str(frame), "--min-snr", "0", "--max-reflectance", "off", "--quiet",
                  "--out", str(tmp_path / "d")]) == 0
+    assert main(["depth", str(frame), "--quiet", "--out", str(tmp_path / "d1")]) == 0
+    assert main(["depth", str(frame), "--max-reflectance", "2.5", "--quiet",
+                 "--out", str(tmp_path / "d3")]) == 0
+    assert seen == [{"min_snr": 0.0, "max_reflectance": None},
+                    {"min_snr": 4.0, "max_reflectance": 4.0},
+                    {"min_snr": 4.0, "max_reflectance": 2.5}]
     with pytest.raises(SystemExit) as exc:
         main(["depth", str(frame), "--max-reflectance", "0.5", "--quiet",
               "--out", str(tmp_path / "d2")])

@@ -385,13 +385,15 @@ def _mhz(freqs):
     return ", ".join(f"{f / 1e6:g}" for f in freqs)
 
 
-def _check_same_layout(t, first, name, k, than=""):
-    """A ValueError naming ``name`` unless frame ``k`` (ToFTaps) holds the frequencies, Z
-    measurements (sites, block) and frame shape of ``first``: the sweep's frames among
-    themselves (``than`` empty), and the dark frames against the sweep's first."""
+def _check_same_layout(t, first, name, k, than="", frequencies=True):
+    """A ValueError naming ``name`` unless frame ``k`` (ToFTaps) holds the Z measurements
+    (sites, block) and frame shape of ``first``, and with ``frequencies`` its frequencies:
+    the sweep's frames among themselves (``than`` empty), and the dark frames against the
+    sweep's first (any frequencies: with the lens capped no modulated light reaches a tap,
+    and the offsets are one per tap at every frequency)."""
     diffs = []
     tf, ff = (np.asarray(x.frequencies, np.float64).reshape(-1) for x in (t, first))
-    if not np.array_equal(tf, ff):
+    if frequencies and not np.array_equal(tf, ff):
         diffs.append(f"frequencies {_mhz(tf)} MHz, not {_mhz(ff)}")
     if tuple(t.shape) != tuple(first.shape):
         diffs.append(f"a {t.shape[0]}x{t.shape[1]} frame, not {first.shape[0]}x"
@@ -402,11 +404,14 @@ def _check_same_layout(t, first, name, k, than=""):
         diffs.append(f"{t.n_sites} Z measurements, not {first.n_sites}")
     elif not all(np.array_equal(a, b) for a, b in zip(t.sites, first.sites)):
         diffs.append("Z measurements at other sites")
-    if not diffs and t.taps.shape != first.taps.shape:
+    cut = 0 if frequencies else 1
+    if not diffs and t.taps.shape[cut:] != first.taps.shape[cut:]:
         diffs.append(f"taps of shape {t.taps.shape}, not {first.taps.shape}")
     if diffs:
-        raise ValueError(f"{name}: every frame must hold the same frequencies and Z "
-                         f"measurements{than} (frame {k}: {'; '.join(diffs)})")
+        what = "the same frequencies and Z measurements" if frequencies else \
+            "the same Z measurements"
+        raise ValueError(f"{name}: every frame must hold {what}{than} (frame {k}: "
+                         f"{'; '.join(diffs)})")
 
 
 def _dark_offsets(dark, first):
@@ -419,12 +424,13 @@ def _dark_offsets(dark, first):
     for k, t in enumerate(frames):
         t = as_taps(t, "dark")
         # the sweep's own check: the offsets are stored per tap and Z measurement of the
-        # sweep, so frames of other sites, block, frame shape or frequencies are refused (a
-        # 48x32 frame of as many sites had been subtracted as the 32x48 sweep's offsets).
+        # sweep, so frames of other sites, block or frame shape are refused (a 48x32 frame
+        # of as many sites had been subtracted as the 32x48 sweep's offsets); any
+        # frequencies: a capped lens passes no modulated light, one offset per tap.
         # The sensor object is not compared, as for the sweep's frames: a dark frame's
         # sensor differs by construction (no light: optical power, ambient), and its offset
         # is measured above its own black level, so another black level changes nothing
-        _check_same_layout(t, first, "dark", k, " as the sweep")
+        _check_same_layout(t, first, "dark", k, " as the sweep", frequencies=False)
         taps = np.asarray(t.taps, np.float64)
         _check_unlit(taps, t.sensor, k)
         acc += taps.mean(axis=0) - t.sensor.black_level
@@ -500,7 +506,8 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
     dark : ToFTaps or sequence of them, optional
         Frames with the laser off (same sensor): the mean of every tap minus
         the black level is stored and subtracted first. They must hold the
-        sweep's frequencies, Z measurements and frame shape.
+        sweep's Z measurements and frame shape (at any frequencies: no modulated
+        light reaches a capped lens).
     iterations : int
         Alternations of the fit (4, 1..50).
 

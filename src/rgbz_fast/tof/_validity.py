@@ -58,8 +58,9 @@ class ToFFlag(enum.IntFlag):
         (and 2 sigma), so the measurement may mix two surfaces.
     OUT_OF_RANGE
         The depth is < 0, within 5 sigma of ``max_range`` or beyond, or
-        implies a reflectance below ``min_reflectance``: most likely a surface
-        beyond the unambiguous range, aliased.
+        implies a reflectance below ``min_reflectance`` (most likely a surface
+        beyond the unambiguous range, aliased) or above ``max_reflectance`` (a
+        depth unwrapped to a wrong, farther alias).
     RESOLVED
         With a guide only: a measurement at a depth edge whose depth lies
         between the two sides and whose cells all have one side's colour
