@@ -287,3 +287,21 @@ def test_bad_optics_input_names_the_parameter(make, exc, name):
     with pytest.raises(exc, match=name):
         make()
     assert rz.simulation.Optics is Optics
+
+
+def test_the_kernel_holds_a_wide_airy_disc():
+    """G1 of the probes (2026-11-27): the kernel's period was sized on the defocus and the
+    OLPF alone, so at f/64 on a 0.5 um pitch (the Airy disc's first zero at 89 pixels) it
+    was a flat 63 x 63 box whose MTF passed what the lens cuts (0.464 at 0.01 cycles/pixel
+    for the OTF's 0.162). The kernel's MTF now follows the OTF (within the 1 % of energy the
+    cut leaves out), and a disc no grid holds is refused naming the Airy disc."""
+    for n, p in ((64, 1.0), (32, 1.0), (2.8, 2.8)):
+        o = Optics(f_number=n)
+        k = o.psf(570.0, pixel_pitch_um=p)
+        x = np.arange(k.shape[0]) - k.shape[0] // 2
+        for f in (0.005, 0.01, 0.02):
+            mtf = float((k.sum(0) * np.cos(2 * np.pi * f * x)).sum())
+            want = float(o.otf(np.array([f]), np.array([0.0]), 570.0, pixel_pitch_um=p)[0])
+            assert abs(mtf - want) < 0.05, (n, p, f, mtf, want)
+    with pytest.raises(ValueError, match=r"Airy disc's first zero at 445 pixels"):
+        Optics(f_number=64).psf(570.0, pixel_pitch_um=0.1)

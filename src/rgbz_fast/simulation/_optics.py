@@ -36,8 +36,10 @@ Fourier transform of ``H`` at integer pixel positions. Because ``H_diff``
 vanishes beyond ``rho_c``, that integral is over a bounded region and is
 computed exactly by a discrete Fourier transform on a grid of ``L x M``
 samples per axis (``L`` cycles/pixel >= 2 rho_c, ``M`` pixels of period);
-the only approximation is the period ``M`` (the Airy tails beyond ``M / 2``
-pixels alias back, below 1e-6 of the energy for the default ``M``). The
+the only approximation is the period ``M``, at least 16 first-zero radii of
+the Airy disc and 8 times the defocus and OLPF blur (the Airy tails beyond
+``M / 2`` pixels alias back: about 0.1 % of the energy, within the 1 % the cut
+below leaves out). The
 kernel is cut where at most 1 % of its energy lies outside (the far rings of
 the Airy pattern, a veiling glare a demosaicing study does not need; the kept
 core is the blur at the pixel scale) and scaled to sum to 1 (a fill factor
@@ -253,7 +255,12 @@ def _psf_cached(optics, band, pitch, f_number):
     lam_min = band[0] * 1e-3
     cutoff = pitch / (lam_min * f_number)                 # cycles per pixel
     L = int(math.ceil(2 * cutoff)) + 1                    # sampled frequency span
-    blur_px = optics.defocus_um / pitch + 2 * optics.olpf + 1
+    # the period must hold the widest blur: the defocus disc and the OLPF's split, or four
+    # first-zero radii of the Airy disc at the band's longest wavelength (at f/64 and a
+    # 0.5 um pitch that radius is 109 pixels: a period sized on the defocus alone wrapped
+    # the Airy core onto itself, a flat 63 x 63 box whose MTF passed what the lens cuts)
+    airy_px = 1.22 * band[-1] * 1e-3 * f_number / pitch
+    blur_px = max(optics.defocus_um / pitch + 2 * optics.olpf + 1, 4 * airy_px)
     M = 64
     while M < 8 * blur_px + 16:
         M *= 2
@@ -263,9 +270,10 @@ def _psf_cached(optics, band, pitch, f_number):
             f"optics: the kernel at f_number={f_number:g}, pixel_pitch_um={pitch:g}, "
             f"defocus_um={optics.defocus_um:g} and olpf={optics.olpf:g} needs a {N} x {N} "
             f"frequency grid ({L} samples per cycle for a cut-off of {cutoff:.3g} cycles per "
-            f"pixel, a period of {M} pixels for a blur of {blur_px:.3g}); the model computes up "
-            f"to {MAX_GRID} x {MAX_GRID}: raise f_number, or lower defocus_um or the pixel "
-            "pitch")
+            f"pixel, a period of {M} pixels for a blur of {blur_px:.3g}, the Airy disc's first "
+            f"zero at {airy_px:.3g} pixels); the model computes up to {MAX_GRID} x {MAX_GRID}: "
+            + ("raise f_number, or lower the pixel pitch" if M == 64 else
+               "lower f_number or defocus_um, or raise the pixel pitch"))
     f = np.fft.fftfreq(N, d=1.0 / L)                      # spacing 1 / M cycles/pixel
     H = optics.otf(f[:, None], f[None, :], band, pixel_pitch_um=pitch, f_number=f_number)
     fine = np.fft.ifft2(H).real * (L * L)
