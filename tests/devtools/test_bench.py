@@ -172,6 +172,8 @@ def test_bench_numpy_reference_must_be_a_reference(capsys, tmp_path):
     (["--shape", "48x63"], "--shape: rows must be a multiple of 12"),
     (["--shape", "64x48"], "--shape: rows must be a multiple of 12"),
     (["--kernels", "nothing-matches"], "--kernels: no case matches"),
+    # G3 (2026-11-27): an entry matching nothing beside one that does had been dropped
+    (["--kernels", "sg mask1 float64,edi_centrl"], "--kernels: no case matches 'edi_centrl'"),
 ])
 def test_bench_bad_input(capsys, args, msg):
     assert main(["bench", "--quick", "--quiet", "--no-memory", "--no-reference"] + args) == 2
@@ -294,4 +296,10 @@ def test_tradeoff_findings_name_the_variant_of_each_figure():
             row("bi", "float32", "libm", 0.0001, 2), row("sg", "float32", "libm", 0.0017, 1)]
     text = tradeoff._findings({"rows": rows})[0]
     assert "0.17 % of the Z pixels of one variant differ (sg mask1), by at most 2 DN " \
+           "(bi mask1)" in text, text
+    # G4 (2026-11-27): the colour-difference row named as its intensity row
+    cd = [dict(r, domain="colour_difference") for r in rows[:1] + rows[2:3]]
+    cd[1].update(frac_diff=0.003, max_abs_diff_dn=1)
+    text = tradeoff._findings({"rows": rows + cd})[0]
+    assert "0.3 % of the Z pixels of one variant differ (bi cd mask1), by at most 2 DN " \
            "(bi mask1)" in text, text

@@ -305,3 +305,29 @@ def test_the_kernel_holds_a_wide_airy_disc():
             assert abs(mtf - want) < 0.05, (n, p, f, mtf, want)
     with pytest.raises(ValueError, match=r"Airy disc's first zero at 445 pixels"):
         Optics(f_number=64).psf(570.0, pixel_pitch_um=0.1)
+
+
+@pytest.mark.parametrize("bands", [1, 2])
+def test_a_spectral_scene_of_fewer_than_three_bands_is_refused(bands):
+    """G2 (2026-11-27): one or two bands made a Scene, and simulate failed after its whole run
+    blaming 'wavelengths', which the caller had not given it."""
+    cube = np.full((8, 8, bands), 0.5)
+    with pytest.raises(ValueError, match=r"^image: a spectral scene needs at least 3 bands"):
+        Scene(cube, depth=np.full((8, 8), 1.0), wavelengths=500.0 + 50.0 * np.arange(bands))
+
+
+def test_load_spectral_says_where_its_wavelengths_came_from(tmp_path):
+    """G5 (2026-11-27): a cube of 80 bands without band centres took CAVE's 400 + 10 k nm and
+    was refused for 'wavelengths' the caller had not given, without saying so."""
+    from rgbz_fast.simulation import load_spectral
+
+    from scipy.io import savemat
+
+    savemat(tmp_path / "cube.mat", {"cube": np.full((8, 8, 80), 0.5)})
+    with pytest.raises(ValueError, match=r"^wavelengths: .*\(from CAVE's convention 400 \+ 10 "
+                                         r"k nm for its 80 bands \(none given\); pass "
+                                         r"wavelengths=\)$"):
+        load_spectral(tmp_path / "cube.mat", depth=1.0)
+    savemat(tmp_path / "b.mat", {"cube": np.full((8, 8, 31), 0.5), "bands": np.arange(1, 32)})
+    with pytest.raises(ValueError, match=r"\(from the file's variable 'bands'; pass "):
+        load_spectral(tmp_path / "b.mat", depth=1.0)

@@ -261,11 +261,13 @@ def _findings(res):
         widest = max(sub, key=lambda r: r["frac_diff"])
         # each figure names its own variant: the largest share and the largest difference
         # may be two variants' (the share had been named after the largest difference's)
-        same = (widest["method"], widest["pattern"]) == (worst["method"], worst["pattern"])
+        # (the domain too: the colour-difference row's share had been named after the
+        # intensity row of its method)
+        same = (series(widest), widest["pattern"]) == (series(worst), worst["pattern"])
         differ = ((f"at most {frac * 100:.3g} % of the Z pixels of one variant differ "
-                   f"({widest['method']} {widest['pattern']}), by at most "
+                   f"({series(widest)} {widest['pattern']}), by at most "
                    f"{worst['max_abs_diff_dn']:.0f} DN"
-                   + ("" if same else f" ({worst['method']} {worst['pattern']})"))
+                   + ("" if same else f" ({series(worst)} {worst['pattern']})"))
                   if worst["max_abs_diff_dn"] > 0 else "no Z pixel differs")
         out.append(
             f"* **{what}**: mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB "

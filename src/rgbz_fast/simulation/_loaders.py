@@ -179,23 +179,36 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
         cube = np.asarray(arrays[variable])
         if cube.ndim != 3:
             raise ValueError(f"variable: {variable!r} has shape {cube.shape}; expected (H, W, K)")
-        file_wl = None
+        file_wl = wl_key = None
         for k in ("wavelengths", "wavelength", "wl", "bands"):
             if k in arrays:
                 file_wl = np.asarray(arrays[k], dtype=np.float64).ravel()
+                wl_key = k
                 break
         meta["variable"] = variable
     else:
         raise FileNotFoundError(f"path: {p} not found")
     sample_bits(cube, p, input_bits)
     k = cube.shape[2]
+    source = None
     if wavelengths is None:
-        wavelengths = file_wl if file_wl is not None else 400.0 + 10.0 * np.arange(k)
-    return Scene.from_spectral(cube, wavelengths, depth=depth, depth_valid=depth_valid,
-                               ir_reflectance=ir_reflectance,
-                               name=name or (p.stem if p.is_file() else folder_name(p)),
-                               meta=meta,
-                               input_bits=input_bits)
+        if file_wl is not None:
+            wavelengths, source = file_wl, f"the file's variable {wl_key!r}"
+        else:
+            wavelengths = 400.0 + 10.0 * np.arange(k)
+            source = f"CAVE's convention 400 + 10 k nm for its {k} bands (none given)"
+    try:
+        return Scene.from_spectral(cube, wavelengths, depth=depth, depth_valid=depth_valid,
+                                   ir_reflectance=ir_reflectance,
+                                   name=name or (p.stem if p.is_file() else folder_name(p)),
+                                   meta=meta,
+                                   input_bits=input_bits)
+    except ValueError as exc:
+        if source is None or not str(exc).startswith("wavelengths:"):
+            raise
+        # where the band centres came from: the caller gave none (G5: the message had named
+        # a 'wavelengths' the caller never passed)
+        raise ValueError(f"{exc} (from {source}; pass wavelengths=)") from None
 
 
 def folder_name(path):

@@ -310,6 +310,13 @@ class Scene:
                                  f"[{wl.min()}, {wl.max()}]")
             if wl.size > 1 and np.any(np.diff(wl) <= 0):
                 raise ValueError("wavelengths: expected strictly increasing band centres")
+            if wl.size < 3:
+                # the sensor's response integrates the bands (white_gains, colour_matrix need
+                # three or more): one or two had been taken here, and simulate failed after
+                # its whole run, blaming a wavelengths it had not been given
+                raise ValueError(f"image: a spectral scene needs at least 3 bands (the "
+                                 f"sensor's R, G and B responses integrate them); got "
+                                 f"{wl.size} at {', '.join(f'{w:g}' for w in wl)} nm")
             if integer:
                 img = _int_to_unit(img, "image", bits)
                 fresh = True

@@ -81,6 +81,13 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
     cases, frame = build_cases(shape, ref_crop, numpy_reference)
     tof_asked = tof_sites and (not kernels or any(k in "tof sites" for k in kernels))
     if kernels:
+        labels = [case_label(c[0], c[1]) for c in cases]
+        # every entry must match something: one that matches nothing beside one that does
+        # had been dropped without a word (a typo such as 'edi_centrl')
+        unmatched = [k for k in kernels
+                     if not any(k in label for label in labels) and k not in "tof sites"]
+        if unmatched:
+            raise NoCase(unmatched)
         cases = [c for c in cases if any(k in case_label(c[0], c[1]) for k in kernels)]
         if not cases and not tof_asked:
             raise NoCase(kernels)
