@@ -255,7 +255,9 @@ def grey_world_gains(cfa, phase="GRBG", *, black_level=0.0, white_level=2047):
 
     Means of the black-subtracted values of each colour over the pixels
     below the white level (clipped pixels carry no colour). A colour with no
-    signal keeps the gain 1.
+    signal keeps the gain 1; a gain beyond :data:`GAIN_RANGE` (a colour a
+    million times below green: no real white balance) is clamped to it, so
+    that the estimate is one ``render(..., gains=)`` takes back.
 
     Parameters
     ----------
@@ -310,7 +312,10 @@ def _gains_from_sums(totals, counts, tile, black, data, white):
             ratio = means[1] / means[good]
         # a colour so far below green that the ratio overflows has no signal: gain 1
         gains[good] = np.where(np.isfinite(ratio), ratio, 1.0)
-    return gains
+    # within GAIN_RANGE, the gains a caller may give: an estimate of 4e7 (a frame with almost
+    # no red) was refused when run_pair handed it back as gains=, and 1e43 overflowed the
+    # fused chain's float32 scale (the stages took it in float64)
+    return np.clip(gains, *GAIN_RANGE)
 
 
 def _scaled_means(data, tile, white, black):

@@ -277,9 +277,11 @@ def cpsnr_pooled(references, tests, *, data_range=255, crop=0, workers=None):
         _check_integer_range((ref, tst), (f"references[{i}]", f"tests[{i}]"), peak)
         mses.append(_rgb_mse(ref, tst, crop, threads))
     _warn_unit_floats(list(references) + list(tests), ("references", "tests"), peak)
-    top = max(e for _, e in mses)
-    if top == 0:
-        return _psnr_from_mse(float(np.mean([m for m, _ in mses])), 0, peak)
+    # the scale of the pairs that differ (an identical pair, 0 at any scale, would pull it to
+    # 0 and leave a tiny pair's scaled term subnormal)
+    top = max((e for m, e in mses if m > 0), default=0)
     # a common scale: the mean of m_i * 4**e_i is 4**top times the mean of the scaled terms
+    # (with top == 0 too, where ldexp by 0 leaves the ordinary pairs' values as they are: a
+    # pair of differences below 1e-154, whose e is negative, had been taken at its scaled m)
     return _psnr_from_mse(float(np.mean([math.ldexp(m, 2 * (e - top)) for m, e in mses])),
                           top, peak)
