@@ -314,18 +314,13 @@ def method_params(params, method, methods):
     filters (as it did before ``reconstruct`` refused filters of the other kind alone); in a
     run where no method takes the given kind they stay, and are refused
     (:func:`_does_not_apply`: never silently unused)."""
-    from ..reconstruction._learned import LearnedFilters
-    from ..reconstruction._z_guided import ZGuidedFilters
+    from ..reconstruction._z_guided import holds_kind
 
-    if params.filters is None or method not in ("learned", "z_guided"):
+    if method not in ("learned", "z_guided") or holds_kind(params.filters, method):
         return params
-    kind = LearnedFilters if method == "learned" else ZGuidedFilters
-    other = ZGuidedFilters if method == "learned" else LearnedFilters
     taker = "z_guided" if method == "learned" else "learned"
-    if taker not in methods or any(isinstance(f, kind) for f in params.filters) or not all(
-            isinstance(f, other) for f in params.filters):
-        return params
-    return params.replace(filters=None)
+    # (the checked filters are of the two kinds: none of the method's is all the other's)
+    return params.replace(filters=None) if taker in methods else params
 
 
 def _does_not_apply(pattern, method, params, bit_depth):

@@ -48,7 +48,7 @@ from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
 from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
 from ._config import Z_WHY
 from ._depth_guided import (rgbnir_rows, scene_folders, scene_row, scene_runs, total_rows,
-                            upsample_rows)
+                            upsample_rows, valid_errors)
 from ._depth_report import depth_report
 
 __all__ = ["evaluate_depth", "depth_report", "DEPTH_SECTIONS", "RGBD_SCENES"]
@@ -76,7 +76,7 @@ def _scene_tables(data, patterns, isp, seed, tolerance, limits, want_upsample):
         rows += [scene_row(run, run["plain"], tolerance), scene_row(run, run["guided"],
                                                                      tolerance)]
         for guide, res in (("none", run["plain"]), ("colour", run["guided"])):
-            errors.setdefault((run["pattern"], guide), []).append(_valid_errors(run, res))
+            errors.setdefault((run["pattern"], guide), []).append(valid_errors(run, res))
         if want_upsample:
             up += upsample_rows(run, tolerance)
     totals = total_rows(rows, _SCENE_KEYS, ("pattern", "guide"))
@@ -103,14 +103,6 @@ def _scene_tables(data, patterns, isp, seed, tolerance, limits, want_upsample):
                     t.update({k: sum(r[k] for r in sel) for k in both})
                 up_totals.append(t)
     return rows + totals, up + up_totals
-
-
-def _valid_errors(run, res):
-    """|depth error| of the valid measurements of ``res`` whose truth is known, those whose
-    RMSE and median :func:`scene_row` gives."""
-    tof = run["tof"]
-    ok = res.valid & tof.valid
-    return np.abs(res.depth - tof.depth_true)[ok]
 
 
 def _range_rows(data, isp, seed, limits):

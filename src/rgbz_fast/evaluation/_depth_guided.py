@@ -55,6 +55,13 @@ def scene_runs(data, patterns, isp, seed, limits):
                    "plain": isp.run(frame.tof), "guided": isp.run(frame.tof, guide=guide)}
 
 
+def valid_errors(run, res):
+    """|depth error| of the valid measurements of ``res`` whose truth is known: what a scene
+    row's RMSE and median are of, and what the totals pool."""
+    tof = run["tof"]
+    return np.abs(res.depth - tof.depth_true)[res.valid & tof.valid]
+
+
 def scene_row(run, res, tolerance):
     """One row of the scenes table: counts over the measurements whose truth is known."""
     tof = run["tof"]
@@ -62,14 +69,15 @@ def scene_row(run, res, tolerance):
     err = res.depth - tof.depth_true
     wrong = (np.abs(err) > tolerance) & known
     ok = res.valid & known
+    good = valid_errors(run, res)
     row = {"scene": run["scene"], "pattern": run["pattern"],
            "guide": "colour" if res is run["guided"] else "none", "known": int(known.sum()),
            "valid": int(ok.sum()), "wrong": int(wrong.sum()),
            "wrong_valid": int((wrong & res.valid).sum()),
            "depth_min": float(tof.depth_true[known].min()),
            "depth_max": float(tof.depth_true[known].max()),
-           "rmse_valid": float(np.sqrt(np.mean(err[ok] ** 2))) if ok.any() else np.nan,
-           "median_valid": float(np.median(np.abs(err[ok]))) if ok.any() else np.nan}
+           "rmse_valid": float(np.sqrt(np.mean(good ** 2))) if good.size else np.nan,
+           "median_valid": float(np.median(good)) if good.size else np.nan}
     for key, bit in _FLAGS.items():
         row[key] = int(((res.flags & bit) > 0)[known].sum())
     return row

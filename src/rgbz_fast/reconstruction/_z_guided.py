@@ -556,14 +556,18 @@ def learned_only(filters, name="filters"):
     return out or None
 
 
+def holds_kind(filters, method):
+    """Whether the checked ``filters`` (None: the shipped ones) hold one of ``method``'s kind
+    (``"learned"`` or ``"z_guided"``)."""
+    kind = LearnedFilters if method == "learned" else ZGuidedFilters
+    return filters is None or any(isinstance(f, kind) for f in filters)
+
+
 def check_kind(filters, method, name="filters"):
     """ValueError naming ``name`` when the checked ``filters`` hold none of ``method``'s kind
     (``"learned"`` or ``"z_guided"``): the method's shipped filters had run in their place,
     the given ones unused (the CLI's ``--filters`` check, in the API's words)."""
-    if filters is None:
-        return
-    kind = LearnedFilters if method == "learned" else ZGuidedFilters
-    if any(isinstance(f, kind) for f in filters):
+    if holds_kind(filters, method):
         return
     have = " and ".join(sorted({"learned" if isinstance(f, LearnedFilters) else "z_guided"
                                 for f in filters}))

@@ -88,7 +88,7 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
                      if not any(k in label for label in labels) and k not in "tof sites"]
         if unmatched:
             raise NoCase(unmatched)
-        cases = [c for c in cases if any(k in case_label(c[0], c[1]) for k in kernels)]
+        cases = [c for c, label in zip(cases, labels) if any(k in label for k in kernels)]
         if not cases and not tof_asked:
             raise NoCase(kernels)
     # 'tof sites' alone: that section only (not OpenCV's speeds nor the peak memory of SG)
