@@ -218,3 +218,30 @@ def test_depth_takes_min_snr_0_and_max_reflectance_off(tmp_path, capsys, monkeyp
         main(["depth", str(frame), "--max-reflectance", "0.5", "--quiet",
               "--out", str(tmp_path / "d2")])
     assert exc.value.code == 2 and "--max-reflectance" in capsys.readouterr().err
+
+
+def test_a_report_named_after_an_image_of_dots_is_removed_by_the_next_run(tmp_path):
+    """An image named ``..`` (an ImageSource's name is the caller's) gives ``table_...md``,
+    a plain file name of the folder; the manifest lists it, and a later run that writes
+    another table removes it (its field of dots had been taken for a path and the file left
+    behind)."""
+    from rgbz_fast.evaluation import evaluate, write_reports
+    from rgbz_fast.evaluation._reports import _report_name
+    from rgbz_fast.io import ImageSource
+
+    assert _report_name("table_...md") and _report_name("crops_..png")
+    assert not _report_name("../table_a.md") and not _report_name("table_a/b.md")
+    path = _image(tmp_path / "ds" / "a.png")
+    out = tmp_path / "out"
+
+    def run(name):
+        res = evaluate([ImageSource(name, str(path))], patterns=("mask1",),
+                       methods=("bilinear",), metrics=("cfa_psnr",), progress=False)
+        write_reports(res, out, plots=False)
+
+    run("..")
+    assert (out / "table_...md").is_file()
+    assert "table_...md" in (out / "reports.txt").read_text().splitlines()
+    run("b")
+    left = {p.name for p in out.iterdir()}
+    assert "table_b.md" in left and "table_...md" not in left

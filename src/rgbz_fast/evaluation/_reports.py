@@ -124,14 +124,14 @@ MANIFEST_MAX = 1 << 20
 
 def _report_name(name):
     """Whether ``name`` is a name :func:`write_reports` gives a report: a plain file name
-    (no separator, no '..', not absolute) of one of :data:`REPORT_KINDS`, its field as
-    ``_safe`` writes it."""
+    (no separator, not absolute) of one of :data:`REPORT_KINDS`, its field as ``_safe``
+    writes it. A field of dots is one too (an image ``...png`` gives ``table_...md``, a plain
+    file name, which had been written and then never removed by the next run)."""
     if name in REPORT_NAMES:
         return True
     return any(name.startswith(head) and name.endswith(ext)
                and len(name) > len(head) + len(ext)
                and _safe(name[len(head):-len(ext)]) == name[len(head):-len(ext)]
-               and name[len(head):-len(ext)] not in (".", "..")
                for head, ext in REPORT_KINDS)
 
 
