@@ -98,3 +98,27 @@ def test_dark_frames_of_another_layout_are_refused():
     lifted = [_wall(1.0, (16, 24), replace(capped, black_level=200.0), 900 + k)
               for k in range(2)]
     assert np.allclose(calibrate(sweep, ds, orders=3, dark=lifted).dark, cal.dark, atol=5.0)
+
+
+def test_dark_frames_of_another_bit_depth_or_gain_are_refused():
+    """Dark offsets are in the dark frame's DN: a dark frame read out at another bit depth or
+    system gain than the sweep had its offsets subtracted from the sweep's taps as they were
+    (a 12-bit capped lens under a 10-bit sweep: offsets about 4x too large, no word)."""
+    sensor = ToFSensor()
+    ds = np.linspace(0.6, 2.6, 12)
+    sweep = [_wall(d, (16, 24), sensor, k) for k, d in enumerate(ds)]
+    capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
+    deeper = replace(capped, bit_depth=sensor.bit_depth + 2)
+    with pytest.raises(ValueError, match=rf"^dark: frame 1 was read out differently from the "
+                                         rf"sweep \({deeper.bit_depth}-bit, not "
+                                         rf"{sensor.bit_depth}-bit\)"):
+        calibrate(sweep, ds, orders=3, dark=[_wall(1.0, (16, 24), capped, 900),
+                                            _wall(1.0, (16, 24), deeper, 901)])
+    gained = replace(capped, conversion_gain_uv_per_e=2 * sensor.conversion_gain_uv_per_e)
+    with pytest.raises(ValueError, match=r"^dark: frame 0 was read out differently from the "
+                                         r"sweep \([0-9.]+ DN per electron, not [0-9.]+\)"):
+        calibrate(sweep, ds, orders=3, dark=[_wall(1.0, (16, 24), gained, 900)])
+    # the same readout with another black level or optical power is a dark frame
+    assert calibrate(sweep, ds, orders=3,
+                     dark=[_wall(1.0, (16, 24), replace(capped, black_level=100.0), 900)]
+                     ).dark.shape == (4, 96)

@@ -45,6 +45,7 @@ References
 from __future__ import annotations
 
 import json
+import math
 import numbers
 from dataclasses import dataclass, field, replace
 
@@ -431,6 +432,7 @@ def _dark_offsets(dark, first):
         # sensor differs by construction (no light: optical power, ambient), and its offset
         # is measured above its own black level, so another black level changes nothing
         _check_same_layout(t, first, "dark", k, " as the sweep", frequencies=False)
+        _check_same_scale(t, first, k)
         taps = np.asarray(t.taps, np.float64)
         _check_unlit(taps, t.sensor, k)
         acc += taps.mean(axis=0) - t.sensor.black_level
@@ -442,6 +444,23 @@ def _dark_offsets(dark, first):
     # the offsets' own error: a fixed offset per tap, the same at every frequency, of this
     # variance (DN^2); the ISP's sigma takes it in place of the DSNU the offsets remove
     return acc / n, noise / (n * n)
+
+
+def _check_same_scale(t, first, k):
+    """A ValueError naming ``dark`` when dark frame ``k`` was read out at another bit depth or
+    system gain (DN per electron) than the sweep's first frame: its offsets, in its own DN,
+    had been subtracted from the sweep's taps as they were (a 12-bit dark frame's offsets of
+    a 10-bit sweep, four times too large, without a word)."""
+    ts, fs = t.sensor, first.sensor
+    diffs = []
+    if int(t.bit_depth) != int(first.bit_depth):
+        diffs.append(f"{t.bit_depth}-bit, not {first.bit_depth}-bit")
+    elif not math.isclose(ts.system_gain, fs.system_gain, rel_tol=1e-9):
+        diffs.append(f"{ts.system_gain:.6g} DN per electron, not {fs.system_gain:.6g}")
+    if diffs:
+        raise ValueError(f"dark: frame {k} was read out differently from the sweep "
+                         f"({'; '.join(diffs)}): its offsets are in its own DN; take dark "
+                         "frames with the sweep's bit depth and gain")
 
 
 #: the largest ratio of a dark frame's phasor power to what its noise alone gives (about 1
@@ -507,7 +526,8 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
         Frames with the laser off (same sensor): the mean of every tap minus
         the black level is stored and subtracted first. They must hold the
         sweep's Z measurements and frame shape (at any frequencies: no modulated
-        light reaches a capped lens).
+        light reaches a capped lens) and be read out at its bit depth and system
+        gain (their offsets are in their own DN).
     iterations : int
         Alternations of the fit (4, 1..50).
 
