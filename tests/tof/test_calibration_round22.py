@@ -122,3 +122,33 @@ def test_dark_frames_of_another_bit_depth_or_gain_are_refused():
     assert calibrate(sweep, ds, orders=3,
                      dark=[_wall(1.0, (16, 24), replace(capped, black_level=100.0), 900)]
                      ).dark.shape == (4, 96)
+
+
+def test_a_dark_calibration_refuses_taps_of_another_readout(tmp_path):
+    """The dark offsets are in the sweep's DN: the ISP refuses taps read out at another bit
+    depth or gain than the calibration's (they had been subtracted as they were), also after
+    a save and load; a calibration without dark frames takes any readout."""
+    from rgbz_fast import ToFISP
+
+    sensor = ToFSensor()
+    ds = np.linspace(0.6, 2.6, 12)
+    sweep = [_wall(d, (16, 24), sensor, k) for k, d in enumerate(ds)]
+    capped = replace(sensor, optical_power_w=1e-12, ambient_irradiance=0.0)
+    cal = calibrate(sweep, ds, orders=3, dark=[_wall(1.0, (16, 24), capped, 900)])
+    assert cal.meta["dark_bit_depth"] == sensor.bit_depth
+    cal.save(tmp_path / "cal.npz")
+    loaded = ToFCalibration.load(tmp_path / "cal.npz")
+    deeper = _wall(1.5, (16, 24), replace(sensor, bit_depth=sensor.bit_depth + 2), 7)
+    gained = _wall(1.5, (16, 24), replace(sensor, conversion_gain_uv_per_e=2
+                                          * sensor.conversion_gain_uv_per_e), 7)
+    for c in (cal, loaded):
+        with pytest.raises(ValueError, match=rf"^calibration: its dark offsets were measured "
+                                             rf"at another readout \({sensor.bit_depth}-bit, "
+                                             rf"the taps {sensor.bit_depth + 2}-bit\)"):
+            ToFISP(calibration=c).run(deeper)
+        with pytest.raises(ValueError, match=r"^calibration: its dark offsets were measured "
+                                             r"at another readout \([0-9.]+ DN per electron"):
+            ToFISP(calibration=c).run(gained)
+        assert ToFISP(calibration=c).run(sweep[3]).depth.shape == (96,)
+    undark = calibrate(sweep, ds, orders=3)
+    assert ToFISP(calibration=undark).run(deeper).depth.shape == (96,)

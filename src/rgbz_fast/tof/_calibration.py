@@ -90,7 +90,9 @@ class ToFCalibration:
         residual phase, per frequency) and ``fit_rms_m`` (the same in metres); with
         ``dark``, ``dark_noise_dn2``: the variance (DN^2) of the dark offsets' own
         error (the dark frames' temporal noise over their count and frequencies), a
-        fixed offset per tap that the ISP's ``sigma`` takes in place of the DSNU.
+        fixed offset per tap that the ISP's ``sigma`` takes in place of the DSNU;
+        ``dark_bit_depth`` and ``dark_dn_per_electron``: the readout the offsets are in
+        (:meth:`check` refuses taps of another).
 
     Examples
     --------
@@ -180,6 +182,18 @@ class ToFCalibration:
                              f"{self.shape[0]}x{self.shape[1]} frame (block {self.block}), the "
                              f"taps hold {r.size} of a {tof.shape[0]}x{tof.shape[1]} frame "
                              f"(block {tof.block})")
+        if self.dark is not None:
+            bits, gain = self.meta.get("dark_bit_depth"), self.meta.get("dark_dn_per_electron")
+            diffs = []
+            if isinstance(bits, int) and bits != int(tof.bit_depth):
+                diffs.append(f"{bits}-bit, the taps {tof.bit_depth}-bit")
+            elif isinstance(gain, (int, float)) and not math.isclose(
+                    gain, tof.sensor.system_gain, rel_tol=1e-9):
+                diffs.append(f"{gain:.6g} DN per electron, the taps "
+                             f"{tof.sensor.system_gain:.6g}")
+            if diffs:
+                raise ValueError(f"{name}: its dark offsets were measured at another readout "
+                                 f"({diffs[0]}): they are in that readout's DN")
 
     @property
     def mean_offset(self):
@@ -650,7 +664,9 @@ def calibrate(sweep, distances, *, orders=8, dark=None, iterations=4):
     meta = {"frames": len(frames), "orders": orders, "fit_rms_rad": rms.tolist(),
             "fit_rms_m": (rms * SPEED_OF_LIGHT / (4 * np.pi * f[:, 0])).tolist()}
     if dark_var is not None:
-        meta["dark_noise_dn2"] = dark_var
+        # the readout the dark offsets are in: check() refuses taps of another one
+        meta.update(dark_noise_dn2=dark_var, dark_bit_depth=int(first.bit_depth),
+                    dark_dn_per_electron=float(first.sensor.system_gain))
     return ToFCalibration(first.frequencies.copy(), offsets, coef, first.sites, first.block,
                           first.shape, dark_off, meta)
 
