@@ -50,7 +50,34 @@ _MAGIC = "rgbz-fast learned filters"
 
 class FilterIdentity:
     """A filter set is its weights: equality, hash and repr by their digest (``digest``),
-    with the pattern, bit depth, bucket count and training set in the repr."""
+    with the pattern, bit depth, bucket count and training set in the repr.
+
+    Immutable once made (:meth:`_freeze` at the end of the constructor): an attribute
+    assigned afterwards had skipped the constructor's checks (NaN weights ran), kept the
+    digest (the evaluation's cache served the old weights' numbers) and was ignored by the
+    kernel's cached arrays (H100). The derived state -- the kernel's arrays (``_kernel``) and
+    the learned geometry, both rebuilt from the rest -- is not pickled (H101)."""
+
+    #: the attributes a pickle leaves out (rebuilt on demand or by ``_rebuild``)
+    _DERIVED = ("_kernel",)
+
+    def _freeze(self):
+        object.__setattr__(self, "_frozen", True)
+
+    def __setattr__(self, name, value):
+        if self.__dict__.get("_frozen"):
+            raise AttributeError(f"{type(self).__name__} is immutable: {name} cannot be set "
+                                 "(make new filters with the constructor or train)")
+        object.__setattr__(self, name, value)
+
+    def __delattr__(self, name):
+        raise AttributeError(f"{type(self).__name__} is immutable: {name} cannot be deleted")
+
+    def __getstate__(self):
+        return {k: v for k, v in self.__dict__.items() if k not in self._DERIVED}
+
+    def _rebuild(self):
+        """The derived attributes a pickle left out (none here)."""
 
     def __repr__(self):
         src = self.meta.get("training_set", "?")
@@ -62,6 +89,7 @@ class FilterIdentity:
 
     def __setstate__(self, state):      # a pickled or deep-copied copy stays read-only: its
         read_only_state(self, state)    # identity is a digest computed once
+        self._rebuild()
 
     def __eq__(self, other):
         return isinstance(other, type(self)) and other.digest == self.digest
@@ -167,6 +195,14 @@ class LearnedFilters(FilterIdentity):
             h.update(np.ascontiguousarray(a).tobytes())
         self.digest = h.hexdigest()[:16]
         self._kernel = {}
+        self._freeze()
+
+    _DERIVED = ("_kernel", "geometry")
+
+    def _rebuild(self):
+        object.__setattr__(self, "geometry",
+                           learned_geometry(self.pattern, self.radius, self.hash_radius))
+        object.__setattr__(self, "_kernel", {})
 
     @property
     def n_buckets(self):
@@ -209,8 +245,8 @@ class LearnedFilters(FilterIdentity):
         if d.meta != meta:
             import copy
 
-            d = copy.copy(d)
-            d.meta, d._kernel = meta, {}
+            d = copy.copy(d)                     # its own kernel cache (not copied)
+            object.__setattr__(d, "meta", meta)
         return d
 
     def reconstruct(self, data, bit_depth=None):
@@ -232,7 +268,7 @@ class LearnedFilters(FilterIdentity):
 
     def kernel_arrays(self, bit_depth=None):
         """The arrays of the C kernel's ``rgbz_learned_filters`` (csrc/learned.h) for frames of
-        ``bit_depth``, made once per bit depth."""
+        ``bit_depth``, made once per bit depth (read-only: the filters keep them)."""
         bd = self.bit_depth if bit_depth is None else check_bit_depth(bit_depth)
         if bd not in self._kernel:
             self._kernel[bd] = _kernel_arrays(self, bd)
@@ -446,7 +482,17 @@ def _kernel_arrays(f, bit_depth):
             dense[k, :, ph["taps"][:, 0] + R, ph["taps"][:, 1] + R] = \
                 f.weights[k, :, :len(ph["taps"])].T
         out.update(wd_f32=dense.astype(np.float32), wd_f64=dense)
-    return out
+    return _read_only(out)
+
+
+def _read_only(arrays):
+    """``arrays`` (a dict of the kernel's arrays, kept on the filters) with every array
+    read-only: :meth:`LearnedFilters.kernel_arrays` hands out the cache itself, and a
+    caller's write into it had changed every later call's output, digest unchanged (H101)."""
+    for v in arrays.values():
+        if isinstance(v, np.ndarray):
+            v.setflags(write=False)
+    return arrays
 
 
 def pattern_transform(src, dst):

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from functools import lru_cache
+from types import MappingProxyType
 
 import numpy as np
 
@@ -93,7 +94,14 @@ def learned_geometry(pattern, radius=3, hash_radius=3):
                         "colours": colours, "target": target, "base": np.array(base),
                         "pairs": tuple(pairs), "pair_colours": tuple(pair_colours),
                         "colour_pairs": colour_pairs})
-    return tuple(out)
+    # shared by every filter set of the pattern (the cache), so read-only all through: a
+    # caller's write into one set's geometry had changed the shipped filters' output (H99)
+    for ph in out:
+        for v in ph.values():
+            for a in (v if isinstance(v, tuple) else (v,)):
+                if isinstance(a, np.ndarray):
+                    a.setflags(write=False)
+    return tuple(MappingProxyType(ph) for ph in out)
 
 
 def hash_features(X, ph):

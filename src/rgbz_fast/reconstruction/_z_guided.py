@@ -380,6 +380,7 @@ class ZGuidedFilters(FilterIdentity):
         for a in (thr, *arrays):
             h.update(a.tobytes())
         self.digest = h.hexdigest()[:16]
+        self._freeze()
 
     pattern = property(lambda self: self.base.pattern)
     bit_depth = property(lambda self: self.base.bit_depth)

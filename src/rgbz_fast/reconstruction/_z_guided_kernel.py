@@ -14,6 +14,7 @@ import numpy as np
 
 from .. import _kernels
 from .._patterns import get_pattern
+from ._learned import _read_only
 from ._z_guided import _grid_shape, guide_grid, tof_taps, z_layout
 
 __all__ = ["run_z_guided", "kernel_arrays", "guide_source", "TapGuide"]
@@ -63,7 +64,7 @@ def kernel_arrays(filters):
             # (advanced indices around a slice put the tap axis first)
             dense[k, :, ph["taps"][:, 0] + R, ph["taps"][:, 1] + R] = w64[k, :nt, :]
         out.update(wd_f32=dense.astype(np.float32), wd_f64=dense)
-    object.__setattr__(filters, "_kernel", out)
+    object.__setattr__(filters, "_kernel", _read_only(out))    # not pickled (H101)
     return out
 
 
