@@ -160,3 +160,16 @@ def test_one_image_shows_no_spread():
     assert md.startswith("The values of 1 image (no spread to show);")
     assert "±" not in md.split("Paired")[0] and "±" not in text
     assert "(1 image;" in text
+
+
+def test_the_repr_is_a_summary_not_every_row():
+    """Probe round 24 (H-04): the dataclass's repr printed every row (3 MB for 500 images)."""
+    from rgbz_fast.evaluation import EvalConfig, Results
+
+    cfg = EvalConfig(patterns=("mask1", "mask2"), methods=("bi", "sg"), metrics=("cpsnr",))
+    rows = [{"image": f"im{i:03d}", "pattern": p, "method": m, "metric": "cpsnr",
+             "value": 30.0 + i % 7}
+            for i in range(500) for p in cfg.patterns for m in cfg.methods]
+    text = repr(Results(rows, cfg, skipped=[("bad", "unreadable")]))
+    assert text == ("Results(2000 rows: 500 images x patterns ['mask1', 'mask2'] x methods "
+                    "['bi', 'sg'] x metrics ['cpsnr'], 1 skipped)")

@@ -103,7 +103,7 @@ def _cells(groups):
                         f"{_names(METHOD_LABELS.get(m, m) for m in ms)} on {_names(ps)}")
 
 
-@dataclass
+@dataclass(repr=False)
 class Results:
     """A tidy table: one row per image, pattern, method and metric.
 
@@ -143,6 +143,17 @@ class Results:
 
     def __len__(self):
         return len(self.rows)
+
+    def __repr__(self):
+        # the dataclass's repr printed every row (3 MB for 500 images): a notebook or a log
+        # line took it all (H102); the rows are in .rows, the tables in the *_markdown methods
+        c = self.config
+        extra = "".join(f", {len(v)} {what}" for v, what in ((self.skipped, "skipped"),
+                                                             (self.raw_images, "raw"))
+                        if v)
+        return (f"Results({len(self.rows)} rows: {len(self.images())} images x patterns "
+                f"{list(c.patterns)} x methods {list(c.methods)} x metrics "
+                f"{list(c.metrics)}{extra})")
 
     def _known(self, value, name, known):
         """``value`` when it is one of ``known`` (the names of these results), else a
