@@ -303,3 +303,32 @@ def test_tradeoff_findings_name_the_variant_of_each_figure():
     text = tradeoff._findings({"rows": rows + cd})[0]
     assert "0.3 % of the Z pixels of one variant differ (bi cd mask1), by at most 2 DN " \
            "(bi mask1)" in text, text
+
+
+def test_tradeoff_leaves_an_exactly_reconstructed_image_out_of_every_mean():
+    """Probe round 24 (J-01): a flat image (every method exact: CFA PSNR +inf) beside a
+    textured one had made every mean +inf, the findings' differences NaN and the plot
+    refuse its log axis. The means are over the images every variant of the pattern gives a
+    finite PSNR, and the outputs name the ones left out."""
+    rng = np.random.default_rng(0)
+    tex = rng.integers(0, 256, (48, 64, 3), dtype=np.uint8)
+    flat = np.empty((48, 64, 3), np.uint8)
+    flat[...] = (120, 140, 90)
+    res = tradeoff.run_tradeoff([_Image("flat", flat), _Image("tex", tex)],
+                                methods=("bilinear", "sg"), patterns=("mask1",),
+                                speed_shape=(48, 64), repeat=1)
+    assert res["left_out"] == {"mask1": {"cfa_psnr": ["flat"], "cpsnr": ["flat"]}}
+    for r in res["rows"]:
+        assert math.isinf(r["cfa_psnr_per_image"][0])
+        assert r["cfa_psnr"] == r["cfa_psnr_per_image"][1]
+        assert r["cpsnr"] == r["cpsnr_per_image"][1]
+    note = "CFA PSNR on mask1 leaves out flat; CPSNR on mask1 leaves out flat."
+    for text in (tradeoff.format_markdown(res), tradeoff.format_text(res)):
+        assert note in text and "nan" not in text
+    assert tradeoff_plot(res)[:8] == b"\x89PNG\r\n\x1a\n"
+    # only a flat image: no mean to show, the plot's panel and the findings say so
+    alone = tradeoff.run_tradeoff([_Image("flat", flat)], methods=("bilinear", "sg"),
+                                  patterns=("mask1",), speed_shape=(48, 64), repeat=1)
+    assert all(math.isnan(r["cfa_psnr"]) for r in alone["rows"])
+    assert "no image with a finite CFA PSNR for every variant" in tradeoff.format_text(alone)
+    assert tradeoff_plot(alone)[:8] == b"\x89PNG\r\n\x1a\n"

@@ -173,3 +173,47 @@ def test_the_repr_is_a_summary_not_every_row():
     text = repr(Results(rows, cfg, skipped=[("bad", "unreadable")]))
     assert text == ("Results(2000 rows: 500 images x patterns ['mask1', 'mask2'] x methods "
                     "['bi', 'sg'] x metrics ['cpsnr'], 1 skipped)")
+
+
+def _cell_rows(values):
+    """Rows of one pattern and metric: values {method: [per image]}."""
+    return [{"image": f"im{i}", "pattern": "mask2", "method": m, "metric": "cfa_psnr",
+             "value": v} for m, vs in values.items() for i, v in enumerate(vs)]
+
+
+def test_no_best_is_marked_where_the_means_cover_different_images():
+    """Probe round 24 (J-02): SG exact on a ramp (+inf, left out of its mean) and best on the
+    other image had its mean over one image, the others' over two (their 65-72 dB on the
+    ramp): EDILine was marked best although worse on every image."""
+    from rgbz_fast.evaluation import EvalConfig, Results
+
+    cfg = EvalConfig(patterns=("mask2",), methods=("bilinear", "edi_line", "sg"),
+                     metrics=("cfa_psnr",))
+    res = Results(_cell_rows({"bilinear": [64.99, 29.38], "edi_line": [72.24, 33.24],
+                              "sg": [math.inf, 33.32]}), cfg)
+    md = res.summary_markdown()
+    assert "**" not in md.split("Paired")[0].replace("**mask2**", "")
+    assert "No best is marked for CFA PSNR (dB) where the means cover different images." in md
+    # the same images everywhere: the best is marked
+    res = Results(_cell_rows({"bilinear": [64.99, 29.38], "edi_line": [72.24, 33.24],
+                              "sg": [73.0, 33.32]}), cfg)
+    assert "| SG | **53.16 ± 28.06** |" in res.summary_markdown()
+
+
+def test_the_json_summary_tells_a_perfect_cell_from_one_that_did_not_run():
+    """Probe round 24 (J-03): a method exact on every image and one that does not apply both
+    had {"mean": "nan", "n": 0} in evaluate --json, where the tables say inf and n/a."""
+    from rgbz_fast.evaluation import EvalConfig, Results
+
+    cfg = EvalConfig(patterns=("mask1", "mask2"), methods=("bilinear", "edi_rows"),
+                     metrics=("cfa_psnr",))
+    rows = [{"image": "flat", "pattern": p, "method": m, "metric": "cfa_psnr", "value": v}
+            for p, m, v in (("mask1", "bilinear", math.inf), ("mask2", "bilinear", 40.0),
+                            ("mask2", "edi_rows", math.inf))]
+    d = Results(rows, cfg).summary_dict()
+    assert d["mask2/edi_rows/cfa_psnr"] == {"mean": "inf", "std": "nan", "n": 0,
+                                            "left_out": {"n": 1, "kinds": ["+inf"]}}
+    assert d["mask1/edi_rows/cfa_psnr"] == {"mean": "nan", "std": "nan", "n": 0,
+                                            "applies": False}
+    assert d["mask2/bilinear/cfa_psnr"] == {"mean": 40.0, "std": "nan", "n": 1}
+    json.dumps(d, allow_nan=False)

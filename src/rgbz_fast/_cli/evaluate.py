@@ -230,11 +230,7 @@ def run(args):
                              f"{crop_src.name}") from None
         raise
     if args.json:                  # valid JSON: a non-finite mean is the string "inf" or "nan"
-        from ..evaluation._results import _json_safe
-
-        print(json.dumps(_json_safe({f"{p}/{m}/{k}": {"mean": v[0], "std": v[1], "n": v[2]}
-                                     for (p, m, k), v in res.summary().items()}), indent=1,
-                         allow_nan=False))
+        print(json.dumps(res.summary_dict(), indent=1, allow_nan=False))
     else:
         print(res.plain_table())
         if not args.quiet:

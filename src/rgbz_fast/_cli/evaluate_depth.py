@@ -3,6 +3,7 @@ sunlight, calibration), as Markdown tables or JSON."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 from . import _common as c
@@ -20,13 +21,16 @@ def add_parser(sub):
     p.add_argument("--data", type=c.path, default=None, metavar="DIR",
                    help="folder of the Middlebury scenes (default: ../shared/data/rgbd when it "
                         "exists; without it the scene sections are skipped)")
+    p.add_argument("--rgbnir", type=c.path, default=None, metavar="DIR",
+                   help="folder of the RGB-NIR pairs of the rgbnir section (default: rgbnir "
+                        "beside --data)")
     p.add_argument("--sections", type=c.csv, default=None,
                    help="comma list from scenes,upsample,rgbnir,range,noise,sunlight,"
                         "calibration (default: all)")
-    c.add_patterns(p, what="comma-separated patterns of the scene sections (scenes, upsample, "
+    c.add_patterns(p, default=None, what="comma-separated patterns of the scene sections (scenes, upsample, "
                  "rgbnir): mask1, mask2, rows or tiles such as ZRGR/BGBG/GRZR/BGBG, "
-                 "with Z pixels of 1x1 or 2x2 sites; the other sections measure mask1 and "
-                 "mask2")
+                 "with Z pixels of 1x1 or 2x2 sites (default: mask1,mask2); the other "
+                 "sections measure mask1 and mask2")
     c.add_seed(p, 1, "seed of the sensor noise")
     c.add_json(p, "print the rows as JSON")
     c.add_limits(p)
@@ -41,7 +45,8 @@ def run(args):
         guess = Path("..") / "shared" / "data" / "rgbd"
         data = guess if guess.is_dir() else None
     scene_sections = [s for s in (args.sections or DEPTH_SECTIONS)
-                      if s in ("scenes", "upsample", "rgbnir")]
+                      if s in ("scenes", "upsample")
+                      or s == "rgbnir" and args.rgbnir is None]
     if data is None and args.sections and scene_sections:
         # asked for, they had printed nothing (or {}) and exited 0 (the rgbnir pairs are
         # found beside --data)
@@ -49,8 +54,29 @@ def run(args):
                          "--data DIR, the RGB-D scenes (../shared/data/rgbd, the default, is "
                          "not beside the current folder; the RGB-NIR pairs are read from "
                          "rgbnir beside it)")
-    result = evaluate_depth(data, sections=args.sections or DEPTH_SECTIONS, seed=args.seed,
-                            patterns=args.patterns, **c.limits(args))
+    sections = args.sections or DEPTH_SECTIONS
+    if args.patterns is not None and not {"scenes", "upsample", "rgbnir"} & set(sections):
+        # it had been accepted and ignored (the other sections measure Mask1 and Mask2)
+        raise c.CliError(f"--patterns: the sections {','.join(sections)} measure mask1 and "
+                         "mask2; --patterns applies to scenes, upsample and rgbnir")
+    rgbnir = args.rgbnir if args.rgbnir is not None else (
+        Path(data).parent / "rgbnir" if data is not None else None)
+    if args.rgbnir is not None and not Path(args.rgbnir).is_dir():
+        raise c.CliError(f"--rgbnir: {args.rgbnir} is not a folder")
+    if "rgbnir" in sections and (rgbnir is None or not rgbnir.is_dir()):
+        if args.sections:
+            # asked for, it had printed nothing (or {}) and exited 0 (H103)
+            raise c.CliError(f"--sections: rgbnir needs the RGB-NIR pairs: {rgbnir} is not a "
+                             "folder; pass --rgbnir DIR" if rgbnir is not None else
+                             "--sections: rgbnir needs the RGB-NIR pairs: pass --rgbnir DIR "
+                             "(or --data DIR with rgbnir beside it)")
+        if rgbnir is not None:
+            print(f"rgbz-fast {NAME}: no RGB-NIR pairs at {rgbnir}: the rgbnir section is "
+                  "skipped (--rgbnir DIR)", file=sys.stderr)
+    result = evaluate_depth(data, sections=sections, seed=args.seed,
+                            patterns=args.patterns or ("mask1", "mask2"),
+                            rgbnir=rgbnir if rgbnir is not None and rgbnir.is_dir() else None,
+                            **c.limits(args))
     if args.json:
         # strict JSON, as the other commands' (H40, H48): a value that has none (an RMSE
         # without a valid measurement, a spread of one) is null; it had been NaN, which

@@ -243,7 +243,15 @@ def tradeoff_figure(res):
     colours = {m: _METHOD_COLOURS[i % len(_METHOD_COLOURS)] for i, m in enumerate(methods)}
     fig, axes = plt.subplots(1, len(pats), figsize=(5.6 * len(pats) + 2.4, 5), squeeze=False)
     for ax, p in zip(axes[0], pats):
-        sub = [r for r in rows if r["pattern"] == p]
+        # a mean left without an image (each reconstructed exactly by some variant: NaN,
+        # run_tradeoff's common means) has no point; an empty panel says why (matplotlib
+        # had refused the log axis of no data)
+        sub = [r for r in rows if r["pattern"] == p and np.isfinite(r["cfa_psnr"])]
+        if not sub:
+            ax.text(0.5, 0.5, "no image that every variant reconstructs\nwith a finite PSNR",
+                    ha="center", va="center", transform=ax.transAxes)
+            ax.set_title(p)
+            continue
         for r in sub:
             col = colours[r["method"]]
             cd = r.get("domain") == "colour_difference"

@@ -14,6 +14,7 @@ draws it. A quick run ranks nothing: its speeds are reported, labelled
 
 from __future__ import annotations
 
+import math
 import os
 
 import numpy as np
@@ -105,7 +106,8 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     with, per row, ``pattern``, ``method``, ``precision``, ``exp``, ``domain``,
     ``mpix_s`` (best of ``repeat`` interleaved runs), ``mpix_s_median``,
     ``mpix_s_lo``/``hi`` (IQR), ``cfa_psnr`` and
-    ``cpsnr`` (means over the images), ``max_abs_diff_dn`` and
+    ``cpsnr`` (means over the images on which every row of the pattern is finite:
+    ``left_out`` names the others, those some variant reconstructs exactly), ``max_abs_diff_dn`` and
     ``frac_diff`` (against float64 + libm of the same method and domain) and
     ``pareto`` (on the front of its pattern; None in a ``quick`` run, whose speeds rank
     nothing).
@@ -193,8 +195,10 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
                          mpix_s_lo=speed["mpix_s_lo"], mpix_s_hi=speed["mpix_s_hi"],
                          cfa_psnr=float(np.mean(psnrs)), cpsnr=float(np.mean(cps)),
                          cfa_psnr_per_image=[float(v) for v in psnrs],
+                         cpsnr_per_image=[float(v) for v in cps],
                          max_abs_diff_dn=None if base else maxdiff,
                          frac_diff=None if base else ndiff / nz))
+    left_out = _common_means(rows, patterns, [src.name for src in sources])
     for p in patterns:
         sub = [r for r in rows if r["pattern"] == p]
         front = set(pareto_front([(r["mpix_s"], r["cfa_psnr"]) for r in sub]))
@@ -204,7 +208,7 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
             "images": [src.name for src in sources], "speed_frame": list(speed_shape),
             "repeat": repeat, "warmup_calls": WARMUP_CALLS, "workers": workers,
             "threads_used": kernel_threads(workers, speed_shape[0] * speed_shape[1]),
-            "bit_depth": bd, "rows": rows,
+            "bit_depth": bd, "rows": rows, "left_out": left_out,
             # how the frames were made (the report's protocol sentence says it): through the
             # sensor model when a method needs the Z pixels' taps (every method then sees
             # those frames), raw files as they are
@@ -213,6 +217,42 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
             "ir_estimated": estimated,
             "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
                                in config.not_applicable().items()]}
+
+
+def _common_means(rows, patterns, names):
+    """Each row's ``cfa_psnr`` and ``cpsnr`` as the mean over the images on which every row of
+    its pattern is finite, so that the variants compare on the same images; returns
+    ``{pattern: {metric: [images left out]}}`` (those with a +inf PSNR somewhere: a variant
+    that reconstructs an image exactly). Every mean had been +inf beside one exact image
+    (a flat one), the findings' differences NaN and the plot refused (`evaluate` leaves
+    +inf out as well, and says so)."""
+    out = {}
+    for p in patterns:
+        sub = [r for r in rows if r["pattern"] == p]
+        if not sub:
+            continue
+        for k in ("cfa_psnr", "cpsnr"):
+            v = np.array([r[f"{k}_per_image"] for r in sub], dtype=float)
+            keep = np.all(np.isfinite(v), axis=0)
+            if keep.all():
+                continue
+            out.setdefault(p, {})[k] = [n for n, kept in zip(names, keep) if not kept]
+            for r, vr in zip(sub, v):
+                r[k] = float(vr[keep].mean()) if keep.any() else math.nan
+    return out
+
+
+def _left_out_note(res):
+    """One sentence naming the images a pattern's means leave out ("" when none)."""
+    parts = []
+    for p, per in sorted(res.get("left_out", {}).items()):
+        for k, names in per.items():
+            label = {"cfa_psnr": "CFA PSNR", "cpsnr": "CPSNR"}[k]
+            parts.append(f"{label} on {p} leaves out {', '.join(names)}")
+    if not parts:
+        return ""
+    return ("Means over the images every variant reconstructs with a finite PSNR (an exact "
+            "reconstruction's is +inf): " + "; ".join(parts) + ".")
 
 
 class Crop:
@@ -269,9 +309,11 @@ def _findings(res):
                    f"{worst['max_abs_diff_dn']:.0f} DN"
                    + ("" if same else f" ({series(worst)} {worst['pattern']})"))
                   if worst["max_abs_diff_dn"] > 0 else "no Z pixel differs")
-        out.append(
-            f"* **{what}**: mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB "
-            f"against float64 + libm; {differ}{speed}.")
+        dps = [d for d in dps if np.isfinite(d)]      # a pattern without a common image: NaN
+        psnr = (f"mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB against "
+                "float64 + libm" if dps else
+                "no image with a finite CFA PSNR for every variant to compare on")
+        out.append(f"* **{what}**: {psnr}; {differ}{speed}.")
     return out
 
 
@@ -308,6 +350,8 @@ def format_markdown(res, png_name=None, command=None):
              "Pareto front of its mask (nothing both faster and more accurate).", ""]
     if res.get("ir_estimated"):
         lines += [_leak_note(res), ""]
+    if _left_out_note(res):
+        lines += [_left_out_note(res), ""]
     if png_name:
         lines += [f"![Pareto plot]({png_name})", ""]
     lines += ["## What the approximations cost", ""] + _findings(res) + ([""] if quick else [
@@ -347,6 +391,8 @@ def format_text(res):
     lines += [f"not run: {m} on {p} ({why})" for p, m, why in res.get("not_applicable", ())]
     if res.get("ir_estimated"):
         lines.append(_leak_note(res))
+    if _left_out_note(res):
+        lines.append(_left_out_note(res))
     return "\n".join(lines + [""] + _findings(res))
 
 

@@ -204,6 +204,28 @@ class Results:
                                           tuple(sorted(kinds)))
         return out
 
+    def summary_dict(self):
+        """:meth:`summary` as ``{"pattern/method/metric": {"mean", "std", "n"}}`` for JSON
+        (non-finite numbers as "inf", "-inf", "nan"), with what the tables say too: a cell
+        whose values are +inf on every image has the mean "inf" (a perfect reconstruction,
+        not one that did not run); a cell whose mean leaves out values has ``"left_out":
+        {"n": count, "kinds": [...]}`` (:meth:`left_out`); a method that does not apply to
+        the pattern has ``"applies": false``. (The mean of a cell alone had been "nan" with
+        n 0 for both a perfect method and one that never ran.)"""
+        left = self.left_out()
+        out = {}
+        for (p, m, k), (mean, std, n) in self.summary().items():
+            entry = {"mean": mean, "std": std, "n": n}
+            if (p, m, k) in left:
+                finite, total, kinds = left[(p, m, k)]
+                entry["left_out"] = {"n": total - finite, "kinds": list(kinds)}
+                if finite == 0 and kinds == ("+inf",):
+                    entry["mean"] = math.inf
+            if not self.config.applies(p, m):
+                entry["applies"] = False
+            out[f"{p}/{m}/{k}"] = entry
+        return _json_safe(out)
+
     def nonfinite_note(self, metrics=None):
         """One line saying which means leave out non-finite values, and why ("" when none).
 
@@ -429,6 +451,7 @@ class Results:
         if self.skipped:
             lines[-1:] = [f"Skipped {len(self.skipped)} image(s) that could not be evaluated: "
                           + "; ".join(f"{n} ({why})" for n, why in self.skipped) + ".", ""]
+        unranked = set()
         for p in self.config.patterns:
             lines.append(f"**{p}**")
             lines.append("")
@@ -438,8 +461,14 @@ class Results:
             for k in self.config.metrics:
                 means = [s[(p, m, k)][0] for m in self.config.methods]
                 finite = [x for x in means if np.isfinite(x)]
-                if finite:
+                counts = {s[(p, m, k)][2] for m in self.config.methods
+                          if self.config.applies(p, m) and (p, m, k) not in all_inf}
+                if finite and len(counts) == 1:
                     best[k] = max(finite) if HIGHER_IS_BETTER[k] else min(finite)
+                elif finite:
+                    # means over different images (a +inf left out of one cell) do not rank:
+                    # a method worse on every image had been marked best
+                    unranked.add(k)
                 if HIGHER_IS_BETTER[k] and any((p, m, k) in all_inf for m in self.config.methods):
                     best[k] = math.inf            # a +inf PSNR on every image is the best
             for m in self.config.methods:
@@ -456,6 +485,11 @@ class Results:
             lines.append("")
         note = self.nonfinite_note()
         if note:
+            if unranked:
+                note += (" No best is marked for " + _names([METRIC_LABELS[k] for k in
+                                                              self.config.metrics
+                                                              if k in unranked])
+                         + " where the means cover different images.")
             lines += [note, ""]
         if self.config.not_applicable():
             lines += [self.notes(), ""]

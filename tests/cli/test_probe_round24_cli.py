@@ -1,0 +1,48 @@
+"""Probe round 24: command-line findings (evaluate-depth's rgbnir section)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from rgbz_fast._cli import main
+from _support import SHARED_DATA
+
+
+def test_evaluate_depth_rgbnir_without_its_folder_is_refused(tmp_path, capsys):
+    """J-04: ``--sections rgbnir`` with no rgbnir folder beside --data printed nothing (or
+    {}) and exited 0; ``--rgbnir DIR`` names the folder; the default sections skip a
+    missing one with a line on stderr."""
+    data = tmp_path / "rgbd"
+    data.mkdir()
+    assert main(["evaluate-depth", "--data", str(data), "--sections", "rgbnir"]) == 2
+    err = capsys.readouterr().err
+    assert (f"error: --sections: rgbnir needs the RGB-NIR pairs: {tmp_path / 'rgbnir'} is "
+            "not a folder; pass --rgbnir DIR") in err
+    assert main(["evaluate-depth", "--sections", "rgbnir", "--rgbnir",
+                 str(tmp_path / "none")]) == 2
+    assert f"error: --rgbnir: {tmp_path / 'none'} is not a folder" in capsys.readouterr().err
+    assert main(["evaluate-depth", "--data", str(data), "--sections", "noise", "--json"]) == 0
+    assert "noise" in json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.skipif(not (SHARED_DATA / "rgbnir").is_dir(),
+                    reason="../shared/data/rgbnir is absent (a user's checkout)")
+def test_evaluate_depth_reads_the_rgbnir_folder_it_is_given(tmp_path, capsys):
+    pairs = tmp_path / "pairs"
+    pairs.mkdir()
+    for name in ("0003_rgb.png", "0003_nir.png"):
+        (pairs / name).symlink_to(SHARED_DATA / "rgbnir" / name)
+    assert main(["evaluate-depth", "--sections", "rgbnir", "--rgbnir", str(pairs),
+                 "--patterns", "mask2", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)["rgbnir"]
+    assert {r["pair"] for r in rows} == {"0003"} and {r["pattern"] for r in rows} == {"mask2"}
+
+
+def test_evaluate_depth_refuses_patterns_no_section_measures(capsys):
+    """I-04: ``--sections noise --patterns TILE`` measured Mask1 and Mask2 and exited 0."""
+    assert main(["evaluate-depth", "--sections", "noise,range", "--patterns",
+                 "ZRGR/BGBG/GRZR/BGBG"]) == 2
+    assert ("error: --patterns: the sections noise,range measure mask1 and mask2; --patterns "
+            "applies to scenes, upsample and rgbnir") in capsys.readouterr().err
