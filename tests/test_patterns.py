@@ -220,3 +220,36 @@ def test_mosaic_input_bits_within_the_dtype(dtype, width):
             rz.mosaic(img, "bayer", input_bits=bad)
     with pytest.raises(ValueError, match="^input_bits: applies to integer input only"):
         rz.mosaic(np.zeros((4, 4, 3)), "bayer", input_bits=8)
+
+
+def test_a_tile_written_at_a_multiple_of_its_period_is_the_same_pattern():
+    """Probe round 24 (I-02): Mask1 written as ZRZR/BGBG/ZRZR/BGBG moved the border taps by 4,
+    not 2 (up to 449 DN at a frame's edges), costed 9 line buffers for Mask2 at period 8,
+    and found no shipped learned filters. A tile is kept at its smallest period."""
+    import rgbz_fast as rz
+
+    long1 = rz.Pattern("ZRZR/BGBG/ZRZR/BGBG")
+    assert long1 == rz.mask1() and long1.period == (2, 2) and long1.tile_string == "ZR/BG"
+    m2 = rz.mask2()
+    long2 = rz.Pattern(np.tile(m2.tile, (2, 2)))
+    assert long2 == m2 and long2.period == (4, 4)
+    assert rz.Pattern("ZRGR/BGBG/GRZR/BGBG").period == (4, 4)       # irreducible: as written
+    rng = np.random.default_rng(0)
+    img = rng.random((40, 48, 3))
+    for method in ("bilinear", "sg", "learned"):
+        a = rz.reconstruct(rz.mosaic(img, "mask1"), method)
+        b = rz.reconstruct(rz.mosaic(img, "ZRZR/BGBG/ZRZR/BGBG"), method)
+        assert np.array_equal(a, b), method
+
+
+def test_reconstruct_refuses_a_tile_of_no_bayer_phase_without_z():
+    """Probe round 24 (I-03): RR/RR (no Z, no Bayer phase) came back as "the full Bayer CFA"
+    where the guide says reconstruct refuses it (the ISP, mosaic and simulate did)."""
+    import rgbz_fast as rz
+
+    data = np.zeros((8, 8), np.uint16)
+    for tile in ("RR/RR", "GR/GR", "RGB/GBR"):
+        with pytest.raises(ValueError, match=r"^pattern: tile .* fits no Bayer phase, so it "
+                                             r"is no Bayer CFA to return$"):
+            rz.reconstruct(data, "sg", pattern=tile, bit_depth=11)
+    assert np.array_equal(rz.reconstruct(data, "sg", pattern="bayer", bit_depth=11), data)

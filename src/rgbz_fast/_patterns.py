@@ -83,6 +83,15 @@ def _lcm(a, b):
     return a * b // np.gcd(a, b)
 
 
+def smallest_period(tile):
+    """``tile`` cut to its smallest period (rows, then columns): the tile that repeats to the
+    same mosaic (``ZRZR/BGBG/ZRZR/BGBG`` -> ``ZR/BG``)."""
+    P, Q = tile.shape
+    p = next(d for d in range(1, P + 1) if P % d == 0 and np.array_equal(tile, np.roll(tile, d, 0)))
+    q = next(d for d in range(1, Q + 1) if Q % d == 0 and np.array_equal(tile, np.roll(tile, d, 1)))
+    return tile[:p, :q]
+
+
 class Pattern:
     """A colour-depth filter array: a tile of channel codes repeated over a frame.
 
@@ -90,7 +99,9 @@ class Pattern:
     ----------
     tile : str or array_like of int, shape (P, Q)
         Rows of channel letters separated by ``/`` (``"ZR/BG"``), or an array
-        of channel codes R=0, G=1, B=2, Z=3.
+        of channel codes R=0, G=1, B=2, Z=3. A tile that repeats within itself
+        is kept at its smallest period (``"ZRZR/BGBG/ZRZR/BGBG"`` is
+        ``"ZR/BG"``): the same layout is the same pattern everywhere.
     name : str, optional
         A short name used in reports (defaults to the tile string).
     bayer : {"GRBG", "RGGB", "BGGR", "GBRG"}, optional
@@ -112,7 +123,11 @@ class Pattern:
     """
 
     def __init__(self, tile, *, name=None, bayer=None):
-        self._tile = _parse_tile(tile)
+        # one layout, one pattern: a tile written at a multiple of its period (Mask1 as
+        # ZRZR/BGBG/ZRZR/BGBG) had moved the border taps by that multiple, not the period,
+        # and reconstructed the frame's edges otherwise (up to 449 DN at 230 of 4096 sites),
+        # costed more line buffers and found no shipped learned filters (H104)
+        self._tile = np.ascontiguousarray(smallest_period(_parse_tile(tile)))
         self._tile.setflags(write=False)
         # the tile is read-only: its period and whether it holds Z are fixed, and asked at
         # every kernel call of a frame

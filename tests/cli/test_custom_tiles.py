@@ -170,8 +170,9 @@ def test_a_large_tile_gets_a_short_file_name(tmp_path, capsys):
     rows = []
     for r in range(32):
         row = ("RG" if r % 2 == 0 else "GB") * 16
-        rows.append("Z" + row[1:] if r % 8 == 0 else row)
-    big = "/".join(rows)
+        rows.append("Z" + row[1:] if r % 8 == 0 or r == 2 else row)
+    big = "/".join(rows)            # 32x32 at its smallest period (row 2's Z breaks the 8)
+    assert rz.get_pattern(big).period == (32, 32)
     other = big.replace("Z", "R", 1).replace("GBGBGBGB", "ZBGBGBGB", 1)
     assert len(file_label(big)) == LABEL_MAX and file_label(big) != file_label(other)
     src = images(tmp_path / "ds", 1) / "img0.png"

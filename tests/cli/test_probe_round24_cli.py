@@ -46,3 +46,12 @@ def test_evaluate_depth_refuses_patterns_no_section_measures(capsys):
                  "ZRGR/BGBG/GRZR/BGBG"]) == 2
     assert ("error: --patterns: the sections noise,range measure mask1 and mask2; --patterns "
             "applies to scenes, upsample and rgbnir") in capsys.readouterr().err
+
+
+def test_train_names_its_pattern_option(tmp_path, capsys):
+    """I-06: a pattern without Z sites was refused naming "patterns" and "the evaluation"."""
+    assert main(["train", "--dataset", str(tmp_path), "--pattern", "bayer", "--out",
+                 str(tmp_path / "f.npz")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["rgbz-fast train: error: --pattern: 'bayer' has no Z site; give an RGB-Z "
+                   "pattern such as 'mask1'"]

@@ -4,6 +4,7 @@ results.json stays strict JSON (a non-finite value written as "inf", "-inf" or "
 import json
 import math
 
+import numpy as np
 import pytest
 
 from rgbz_fast.evaluation import EvalConfig, Results
@@ -217,3 +218,29 @@ def test_the_json_summary_tells_a_perfect_cell_from_one_that_did_not_run():
                                             "applies": False}
     assert d["mask2/bilinear/cfa_psnr"] == {"mean": 40.0, "std": "nan", "n": 1}
     json.dumps(d, allow_nan=False)
+
+
+def test_pattern_objects_are_named_by_string_in_the_results(tmp_path):
+    """Probe round 24 (I-01): EvalConfig took Pattern objects, the evaluation ran, and every
+    table and report then failed with a bare TypeError (a Pattern in ', '.join)."""
+    import imageio.v3 as iio
+
+    import rgbz_fast as rz
+    from rgbz_fast.evaluation import evaluate, write_reports
+
+    cfg = EvalConfig(patterns=(rz.Pattern("ZRGR/BGBG/GRZR/BGBG", name="sparse"), rz.mask1()),
+                     methods=("bilinear",), metrics=("cfa_psnr",))
+    assert cfg.patterns == ("ZRGR/BGBG/GRZR/BGBG", "mask1")
+    ds = tmp_path / "ds"
+    ds.mkdir()
+    iio.imwrite(ds / "a.png", (np.random.default_rng(0).random((32, 32, 3)) * 255)
+                .astype(np.uint8))
+    res = evaluate(str(ds), cfg, progress=False)
+    assert "ZRGR/BGBG/GRZR/BGBG" in res.plain_table()
+    write_reports(res, tmp_path / "out", plots=False)
+    # a Pattern whose Bayer phase its tile does not imply cannot be named by a string
+    odd = rz.Pattern("GZ/ZG", bayer="GBRG")          # its tile alone reads as GRBG
+    assert rz.get_pattern("GZ/ZG") != odd
+    with pytest.raises(ValueError, match=r"^patterns: the Pattern 'GZ/ZG' with the Bayer "
+                                         r"phase 'GBRG' is not the one its tile implies"):
+        EvalConfig(patterns=(odd,), methods=("bilinear",), metrics=("cfa_psnr",))

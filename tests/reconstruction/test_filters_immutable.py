@@ -82,3 +82,14 @@ def test_a_pickle_leaves_the_derived_state_out(kind, frame):
     assert back == fresh and np.array_equal(rz.reconstruct(frame, kind, filters=back), out)
     geometry = (back if kind == "learned" else back.base).geometry
     assert geometry is (f if kind == "learned" else f.base).geometry
+
+
+def test_z_guided_names_the_layout_it_cannot_read():
+    """Probe round 24 (I-05): on Mask2 shifted by a column (2x2 Z sites off the quads) z_guided
+    asked for filters to be fitted, which no fit could give; the reason is the layout."""
+    rng = np.random.default_rng(0)
+    frame = rz.mosaic(rng.random((32, 32, 3)), rz.Pattern("ZGRZ/ZBGZ/RGRG/GBGB"))
+    rz.reconstruct(frame, "learned")                   # the shipped Mask2 filters, shifted
+    with pytest.raises(ValueError, match=r"^pattern: the 4 Z sites of .* are not one aligned "
+                                         r"2x2 Z pixel, which 'z_guided' needs$"):
+        rz.reconstruct(frame, "z_guided", nir=np.ones((32, 32)))

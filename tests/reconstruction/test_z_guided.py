@@ -142,7 +142,7 @@ def test_the_guide_refuses_what_cannot_be_a_nir_image():
     with pytest.raises(TypeError, match="^nir: "):
         guide_grid(shape, "mask1", nir=np.full(shape, "a"))
     with pytest.raises(ValueError, match="^pattern: .*one\\s+Z pixel per tile"):
-        z_layout(rz.Pattern("ZRZR/BGBG/GRGR/BGBG"))             # two Z pixels per tile
+        z_layout(rz.Pattern("ZRGR/BGBG/GRZR/BGBG"))             # two Z pixels per tile
     with pytest.raises(ValueError, match="^pattern: "):
         z_layout("bayer")
 

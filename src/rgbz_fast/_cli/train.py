@@ -79,6 +79,9 @@ def run(args):
     from ..io import folder_dataset
 
     _check_z_options(args)
+    # the pattern first, naming the option (a Bayer tile had been refused as the evaluation's
+    # "patterns" after the folder was read)
+    c.z_patterns([args.pattern], "--pattern")
     c.output_file(args.out)
     for d in args.dataset:
         if not (c._exists(d, "--dataset") and d.is_dir()):

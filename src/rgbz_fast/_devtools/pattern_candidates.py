@@ -29,7 +29,8 @@ from math import gcd
 
 import numpy as np
 
-from .._patterns import BAYER_PHASES, CHANNELS, MAX_PERIOD, Z, Pattern, get_pattern
+from .._patterns import (BAYER_PHASES, CHANNELS, MAX_PERIOD, Z, Pattern, get_pattern,
+                         smallest_period)
 from ..simulation._simulate import _z_block
 
 __all__ = ["Candidate", "check_tile", "canonical_key", "z_pixel", "generate", "candidates",
@@ -140,16 +141,6 @@ def z_pixel(pattern):
     return None, (h, w), UNSUPPORTED.format(h=h, w=w)
 
 
-def _minimal(mask):
-    """``mask`` cut to its smallest period (rows, then columns)."""
-    P, Q = mask.shape
-    p = next(d for d in range(1, P + 1) if P % d == 0 and np.array_equal(mask, np.roll(mask, d,
-                                                                                          0)))
-    q = next(d for d in range(1, Q + 1) if Q % d == 0 and np.array_equal(mask, np.roll(mask, d,
-                                                                                          1)))
-    return mask[:p, :q]
-
-
 def _bayer_keeps(phase, t, sy, sx):
     """True when the symmetry (t, sy, sx) about a site maps the Bayer mosaic ``phase`` onto
     itself."""
@@ -177,7 +168,7 @@ def canonical_key(pattern):
     the smallest of the minimal-period Z masks of the layout's equivalents."""
     pattern = get_pattern(pattern)
     phase = pattern.bayer_phase
-    mask = _minimal(_z_on_even_period(pattern))
+    mask = smallest_period(_z_on_even_period(pattern))
     A = _lcm(_lcm(mask.shape[0], mask.shape[1]), 2)
     best = None
     for t, sy, sx in _D4:
@@ -186,7 +177,7 @@ def canonical_key(pattern):
         m = _transformed(mask, A, t, sy, sx)
         for dy in range(0, A, 2):
             for dx in range(0, A, 2):
-                r = _minimal(np.roll(m, (-dy, -dx), (0, 1)))
+                r = smallest_period(np.roll(m, (-dy, -dx), (0, 1)))
                 code = (r.shape, r.astype(np.uint8).tobytes())
                 if best is None or code < best:
                     best = code

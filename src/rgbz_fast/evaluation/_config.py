@@ -7,7 +7,7 @@ import json
 from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field
 
-from .._patterns import check_z_patterns, get_pattern
+from .._patterns import Pattern, check_z_patterns, get_pattern
 from .._validate import (as_list, check_bit_depth, check_choice, check_entries, check_flag,
                          check_int, check_seed)
 from ..isp import ColourISP, DefectCorrection, Demosaic
@@ -54,6 +54,22 @@ def _default_params():
 Z_WHY = "the evaluation measures what is made at the Z sites"
 
 
+def _pattern_name(p):
+    """A pattern of :class:`EvalConfig` as the string that names it: a string as it is, a
+    Pattern as its preset name when that gives it back, else its tile."""
+    if isinstance(p, str) or not isinstance(p, Pattern):
+        return p
+    for label in (p.name, p.tile_string):
+        try:
+            if get_pattern(label) == p:
+                return label
+        except ValueError:
+            continue
+    raise ValueError(f"patterns: the Pattern {p.tile_string!r} with the Bayer phase "
+                     f"{p.bayer_phase!r} is not the one its tile implies; an evaluation names "
+                     "its patterns by string (a preset name or a tile)")
+
+
 @dataclass(frozen=True)
 class EvalConfig:
     """What an evaluation runs; every field enters the cache key.
@@ -61,8 +77,8 @@ class EvalConfig:
     Parameters
     ----------
     patterns, methods, metrics : tuple of str
-        Patterns (``mask1``, ``mask2``, ``rows``, tile strings), reconstruction
-        methods and metrics (``cfa_psnr``, ``cpsnr``, ``ssim``, ``ms_ssim``,
+        Patterns (``mask1``, ``mask2``, ``rows``, tile strings; a Pattern is
+        kept as its preset name or its tile), reconstruction methods and metrics (``cfa_psnr``, ``cpsnr``, ``ssim``, ``ms_ssim``,
         ``zipper``); a comma-separated string is split.
     bit_depth : int
         ADC bits of the simulated raw frames (11, as in the paper), 1..16.
@@ -127,6 +143,10 @@ class EvalConfig:
             object.__setattr__(self, name, tuple(v))
         if not self.patterns or not self.methods or not self.metrics:
             raise ValueError("patterns, methods and metrics must each name at least one entry")
+        # a Pattern object as its name or tile: the results, the reports and the cache key
+        # are keyed by strings (a Pattern ran the whole evaluation, then every table failed
+        # with a bare TypeError, H104)
+        object.__setattr__(self, "patterns", tuple(_pattern_name(p) for p in self.patterns))
         # each once: a repeated entry (mask1 and mask1_grbg are one pattern) would be run
         # twice and counted twice in every mean
         check_z_patterns(self.patterns, "patterns", Z_WHY)

@@ -231,12 +231,14 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     nthreads = check_workers(workers)
     clip = _resolve_clip(params.clip_level, frame)
     out = _check_out(out, data)
+    if pattern.bayer_phase is None:
+        # before the Bayer frame's shortcut: RR/RR had come back as "the full Bayer CFA"
+        raise ValueError(f"pattern: tile {pattern.tile_string!r} fits no Bayer phase, so "
+                         + ("its Z sites stand in for no defined colour" if pattern.has_z
+                            else "it is no Bayer CFA to return"))
     if not pattern.has_z:
         out[...] = data
         return out
-    if pattern.bayer_phase is None:
-        raise ValueError(f"pattern: tile {pattern.tile_string!r} fits no Bayer phase, so its Z "
-                         "sites stand in for no defined colour")
     src = np.ascontiguousarray(data)
     if params.precision == "fixed":
         check_fixed_call(src, pattern, method)

@@ -604,6 +604,9 @@ def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
     mirrored to it) and bit depth, or the shipped ones (:func:`default_z_filters`) when none
     of ``filters`` are."""
     check_kind(filters, "z_guided", name)
+    # the layout first: a pattern z_guided cannot read (2x2 Z sites off the quads) had been
+    # told to fit filters, which no fit could give
+    z_layout(pattern)
     cands = () if filters is None else tuple(f for f in filters if isinstance(f, ZGuidedFilters))
     if not cands:
         shipped = default_z_filters(pattern, bit_depth)
