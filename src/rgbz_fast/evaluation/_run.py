@@ -216,10 +216,17 @@ def _evaluate_image(source, config, cache_dir, workers, stop=None):
         try:
             frame, ref_cfa = _frames(img, _named_pattern(pname), config, memo, nir)
         except ValueError as exc:                # an image smaller than one period
-            if not str(exc).startswith("rgb: "):
+            text = str(exc)
+            if text.startswith("scene: "):
+                # a black or too dark image under --noise (auto-exposure): the message had
+                # named neither the image nor anything evaluate takes (M-04)
+                what = text.removeprefix("scene: ").split(" -- ")[0].split("; ")[0]
+                raise ValueError(f"dataset: image {source.name!r}: {what}; the noisy frames "
+                                 "are auto-exposed: leave the image out (skip_bad=True)") from None
+            if not text.startswith("rgb: "):
                 raise
             raise ValueError(f"dataset: image {source.name!r}: "
-                             f"{str(exc).removeprefix('rgb: ')}") from None
+                             f"{text.removeprefix('rgb: ')}") from None
         pattern = frame.pattern
         bayer, bd = pattern.bayer_phase, frame.bit_depth
         phase = _named_pattern(bayer) if bayer is not None else bayer   # the renders' Pattern

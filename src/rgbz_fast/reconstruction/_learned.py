@@ -26,6 +26,7 @@ from __future__ import annotations
 import ast
 import hashlib
 import io
+import threading
 from functools import lru_cache
 from pathlib import Path
 
@@ -549,12 +550,18 @@ def _derived(f, pattern):
 
 
 _SHIPPED = []
+_SHIPPED_LOCK = threading.Lock()
 
 
 def _shipped():
-    """The filters shipped in reconstruction/data/ (read once)."""
+    """The filters shipped in reconstruction/data/ (read once, by one thread: the list had
+    been extended file by file while another thread read it, and a first call on Mask2
+    beside another one found Mask1's alone: "none fits pattern 'mask2'", M-03)."""
     if not _SHIPPED:
-        _SHIPPED.extend(LearnedFilters.load(p) for p in sorted(_DATA.glob("learned_*.npz")))
+        with _SHIPPED_LOCK:
+            if not _SHIPPED:
+                loaded = [LearnedFilters.load(p) for p in sorted(_DATA.glob("learned_*.npz"))]
+                _SHIPPED.extend(loaded)              # whole, under the GIL
     return tuple(_SHIPPED)
 
 
