@@ -39,6 +39,20 @@ if "numpy" not in _sys.modules and _the_command():
     # OPENBLAS_NUM_THREADS is left alone; an importing program is never touched.
     _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
+if _the_command():
+    def _interrupted(kind, value, tb, hook=_sys.excepthook):
+        # Ctrl-C while the command loads (the package's imports, about 0.5 s before main()
+        # catches it): the command's line and status, not a traceback through the imports
+        if not issubclass(kind, KeyboardInterrupt):
+            return hook(kind, value, tb)
+        try:
+            print("rgbz-fast: interrupted", file=_sys.stderr, flush=True)
+        except (OSError, ValueError, AttributeError):
+            pass
+        _os._exit(130)
+
+    _sys.excepthook = _interrupted
+
 from . import evaluation, io, isp, metrics, reconstruction, simulation
 from ._build_config import VERSION as __version__
 from ._compat import install_aliases as _install_aliases

@@ -166,9 +166,9 @@ def clip_level(text):
 
 
 # --------------------------------------------------------------------------- options
-def add_workers(p, what="threads of each kernel call",
-                default="all cores; evaluate: 1 per process when it runs several"):
-    """``--workers N``: the one thread-count option; a count below 1 is a usage error."""
+def add_workers(p, what="threads of each kernel call", default="all cores"):
+    """``--workers N``: the one thread-count option; a count below 1 is a usage error.
+    ``default`` says what the command does without it (evaluate's is its own)."""
     p.add_argument("--workers", type=thread_count, default=None, metavar="N",
                    help=f"{what} (default: {default})")
 
@@ -185,8 +185,11 @@ def add_limits(p):
 
 def add_run_options(p, default_out, workers=True):
     """The options of the commands that run the chain on files: ``--workers`` (unless
-    ``workers`` is False), ``--out DIR`` (``default_out``), ``--quiet`` and the read limits."""
-    if workers:
+    ``workers`` is False; a text: what the command does without it, where that is not all
+    cores), ``--out DIR`` (``default_out``), ``--quiet`` and the read limits."""
+    if isinstance(workers, str):
+        add_workers(p, default=workers)
+    elif workers:
         add_workers(p)
     add_output_folder(p, default_out)
     add_quiet(p)
@@ -572,25 +575,30 @@ def output_folder(out):
     return out
 
 
-def _check_writable_folder(out):
+def _check_writable_folder(out, given=None):
     """The nearest existing folder of ``out`` (``out`` itself, else an ancestor) takes a new
-    entry: tried by making and removing a temporary folder there (nothing is left)."""
+    entry: tried by making and removing a temporary folder there (nothing is left).
+    ``given``: the --out the user gave, when ``out`` is the folder of that file."""
     import tempfile
 
+    name = str(out if given is None else given)
     p = Path(out)                   # not normalised: 'link/..' is where the link leads
     while not _exists(p, "--out") and p != p.parent:
         p = p.parent
     if not p.is_dir():
-        raise CliError(f"--out: {str(out)!r}: {str(p)!r} is not a folder")
+        raise CliError(f"--out: {name!r}: {str(p)!r} is not a folder")
     try:
         os.rmdir(tempfile.mkdtemp(prefix=".rgbz-fast-", dir=p))
     except OSError as exc:
-        raise CliError(f"--out: {str(out)!r}: cannot write in {str(p)!r} "
+        raise CliError(f"--out: {name!r}: cannot write in {str(p)!r} "
                        f"({exc.strerror or exc})") from None
 
 
 def output_file(out):
-    """``out`` when it can be the one file a command writes, else a CliError."""
+    """``out`` when it can be the one file a command writes, else a CliError: checked before
+    the work, as :func:`output_folder` is (its folder, or the nearest that exists, made when
+    the file is written, must take a new entry): a fit or a calibration had run to its end,
+    then failed on the hidden temporary file of the atomic write ('path: .f.npz.<hex>.tmp')."""
     if _exists(out, "--out") and out.is_dir():
         raise CliError(f"--out: {str(out)!r} is a folder; give the name of the file to write")
     from ..io._files import _existing_kind
@@ -599,6 +607,7 @@ def output_file(out):
     if kind is not None:
         raise CliError(f"--out: {str(out)!r} is {kind}, not a regular file; give the name of "
                        "the file to write")
+    _check_writable_folder(out.parent, out)
     return out
 
 

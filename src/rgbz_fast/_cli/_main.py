@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import signal
 import sys
@@ -40,13 +41,16 @@ def build_parser():
 
 
 class _ClosedPipeSafe:
-    """Standard output that a reader closing early (``| head``) does not stop: the first
-    write that meets a closed pipe sends the rest to the null device, and the command
-    finishes its batch (a closed pipe had ended a batch of frames at the first file, with
-    '[Errno 32] Broken pipe')."""
+    """Standard output or error that a reader closing early (``| head``, ``2>&1 | head -1``)
+    does not stop: the first write that meets a closed pipe sends the rest to the null
+    device, and the command finishes its batch (a closed pipe had ended a batch of frames at
+    the first file, with '[Errno 32] Broken pipe'; on stderr, a warning or a 'skipped' line
+    had been taken for the command's error, after the whole evaluation, and no report was
+    written)."""
 
     def __init__(self, stream):
         self._stream = stream
+        self._null = None
 
     def write(self, text):
         try:
@@ -68,10 +72,66 @@ class _ClosedPipeSafe:
             os.close(null)
         except (OSError, ValueError, AttributeError):
             pass                       # not a file descriptor (a test's capture): drop only
-        self._stream = open(os.devnull, "w")
+        if self._null is None:
+            self._null = open(os.devnull, "w")
+        self._stream = self._null
+
+    def close_null(self):
+        """Close the null device the lines went to, if they did (after the command)."""
+        if self._null is not None:
+            self._null.close()
 
     def __getattr__(self, name):
         return getattr(self._stream, name)
+
+
+def _writable(stream, undo):
+    """``stream`` ready for the command's lines; what to put back after it goes on ``undo``.
+
+    A closed descriptor (``>&-``, ``2>&-``; Python sets the stream to None) becomes the null
+    device: every print had died with "'NoneType' object has no attribute 'write'", ending a
+    batch at its first file. A stream that refuses the characters its encoding lacks (an
+    ASCII or Latin-1 console, PYTHONIOENCODING=ascii) writes them as backslash escapes, as
+    Python's own stderr does: the plus-minus sign of evaluate's table, opcount's beta, a
+    scene's accented file name had stopped the command after its work ("'ascii' codec can't
+    encode character"), exit 2. The encoding is kept."""
+    if stream is None:
+        sink = open(os.devnull, "w")
+        undo.append(sink.close)
+        return sink
+    if getattr(stream, "errors", None) == "strict" and hasattr(stream, "reconfigure"):
+        try:
+            stream.reconfigure(errors="backslashreplace")
+        except (OSError, ValueError, AttributeError):
+            return stream                       # not a text stream that can change
+        undo.append(lambda: stream.reconfigure(errors="strict"))
+    return stream
+
+
+@contextlib.contextmanager
+def _command_streams():
+    """sys.stdout and sys.stderr for the time of a command: a closed descriptor, a reader
+    gone and a narrow encoding cost the lines they cannot take, never the run (see
+    :class:`_ClosedPipeSafe`, :func:`_writable`); both put back as they were after it."""
+    saved = sys.stdout, sys.stderr
+    undo = []
+    out, err = (_ClosedPipeSafe(_writable(s, undo)) for s in saved)
+    sys.stdout, sys.stderr = out, err
+    try:
+        yield
+    finally:
+        for stream in (out, err):
+            try:                       # what is still buffered meets a closed pipe here, not
+                stream.flush()         # in the interpreter's last flush (exit status 120)
+            except (OSError, ValueError):
+                pass
+            stream.close_null()
+        sys.stdout, sys.stderr = saved
+        for step in reversed(undo):
+            try:
+                step()
+            except (OSError, ValueError):
+                pass
 
 
 def _one_line_warnings(command):
@@ -109,6 +169,11 @@ def _terminate(signum, frame):
 
 def main(argv=None):
     """Run ``rgbz-fast`` with ``argv`` (default: the process's arguments); the exit status."""
+    with _command_streams():           # the usage and help lines too
+        return _main(argv)
+
+
+def _main(argv):
     argv = list(sys.argv[1:] if argv is None else argv)
     ap = build_parser()
     args, extra = ap.parse_known_args(argv)
@@ -127,8 +192,6 @@ def main(argv=None):
     previous = None
     if hasattr(signal, "SIGTERM") and threading.current_thread() is threading.main_thread():
         previous = signal.signal(signal.SIGTERM, _terminate)
-    stdout = sys.stdout
-    sys.stdout = _ClosedPipeSafe(stdout)
     try:
         with warnings.catch_warnings():
             warnings.showwarning = _one_line_warnings(args.command)
@@ -149,6 +212,5 @@ def main(argv=None):
         print(f"rgbz-fast {args.command}: terminated", file=sys.stderr)
         return exc.code
     finally:
-        sys.stdout = stdout
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)

@@ -74,7 +74,11 @@ def add_parser(sub):
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the cache")
     p.add_argument("--no-plots", action="store_true", help="tables only, no figures")
     c.add_json(p, "print the summary as JSON")
-    c.add_run_options(p, DEFAULT_OUT)
+    # its own default: the images run side by side, one thread each, unless one at a time
+    c.add_run_options(p, DEFAULT_OUT,
+                      workers="1 while images run side by side, as by default and with "
+                              "--processes N or --scheduler; all cores one image at a time: "
+                              "--processes 1, or one image")
     return p
 
 
@@ -233,6 +237,6 @@ def run(args):
         print(json.dumps(res.summary_dict(), indent=1, allow_nan=False))
     else:
         print(res.plain_table())
-        if not args.quiet:
-            print(f"reports: {', '.join(str(f) for f in files)}")
+        if not args.quiet:             # status, as the progress: `> table.txt` keeps the table
+            print(f"reports: {', '.join(str(f) for f in files)}", file=sys.stderr)
     return 0

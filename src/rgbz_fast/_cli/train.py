@@ -162,7 +162,14 @@ def _check_z_options(args):
                          "one of them")
     seen = {}
     for d in args.dataset:                 # a folder given twice was trained on twice
-        key = str(d.resolve())
+        if not c._exists(d, "--dataset"):
+            # before resolve(), whose RuntimeError on a loop of links had been a traceback
+            raise c.CliError(f"--dataset: {d} does not exist")
+        try:
+            key = str(d.resolve())
+        except (OSError, RuntimeError) as exc:
+            raise c.CliError(f"--dataset: {d}: {getattr(exc, 'strerror', None) or exc}") \
+                from None
         if key in seen:
             raise c.CliError(f"--dataset: {d} is given twice (as {seen[key]}); name each "
                              "folder once")

@@ -34,14 +34,15 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from ..evaluation._cache import results_version
-from ..io import atomic_write
+from ..evaluation._cache import _CACHE_MAX_BYTES, _cache_check, _cache_write, results_version
+from ..io import read_file
 from ._common import machine_info
 from .pattern_candidates import candidates as find_candidates
 
@@ -93,19 +94,60 @@ def _digest(*parts):
     return hashlib.sha1(json.dumps(parts, sort_keys=True, default=str).encode()).hexdigest()[:20]
 
 
+#: what :func:`_cache_entry` returns for an entry to compute (missing or bad)
+_MISS = object()
+
+
+def _cache_entry(f, key):
+    """The value of the cache entry ``f`` (of ``key``), or :data:`_MISS` to compute it again.
+
+    The entry is evaluate's (:mod:`rgbz_fast.evaluation._cache`): ``{"check": ..., "values":
+    ...}``, the checksum binding the values to the key, read through the guarded reader (a
+    regular file -- a link followed to one -- of at most 64 kB). Read bare, a FIFO under an
+    entry's name had blocked the study forever and an edited entry ({"bi": 1.0} for 41
+    operations) had been served without a word (ops/px 0.25 for 10.25). A missing entry is
+    a plain miss; any other is recomputed with a warning naming the file."""
+    try:
+        data = read_file(f, "cache", max_bytes=_CACHE_MAX_BYTES)
+    except FileNotFoundError:
+        return _MISS
+    except (OSError, ValueError) as exc:           # a FIFO, a device, a folder, too large
+        # (without the advice to raise max_bytes: an entry is never that large)
+        return _bad_entry(" ".join(str(exc).split()).removeprefix("cache: ")
+                          .split("; raise it with")[0])
+    try:
+        entry = json.loads(data.decode("utf-8"))
+        if not isinstance(entry, dict) or set(entry) != {"check", "values"}:
+            return _bad_entry(f"{f} is not an entry this cache wrote")
+        body = json.dumps(entry["values"], sort_keys=True)
+    except (ValueError, RecursionError, TypeError):          # UnicodeDecodeError: a ValueError
+        return _bad_entry(f"{f} is not JSON")
+    if entry["check"] != _cache_check(key, body):
+        return _bad_entry(f"{f} does not match its checksum (edited or damaged)")
+    return entry["values"]
+
+
+def _bad_entry(what):
+    import warnings
+
+    warnings.warn(f"cache_dir: {what}; the cache entry is computed again", RuntimeWarning,
+                  stacklevel=3)
+    return _MISS
+
+
 def _cached(cache_dir, kind, key, compute):
-    """``compute()``'s JSON-able result, read from ``cache_dir/kind/key.json`` when there,
-    else computed and written there atomically (no cache when ``cache_dir`` is None)."""
+    """``compute()``'s JSON-able result, read from ``cache_dir/kind/key.json`` when there
+    and valid (:func:`_cache_entry`), else computed and written there atomically as
+    evaluate writes its entries (checksummed; a FIFO or a device under the entry's name
+    replaced, a write the cache cannot take a warning); no cache when ``cache_dir`` is
+    None."""
     if cache_dir is None:
         return compute()
-    f = Path(cache_dir) / kind / f"{key}.json"
-    try:
-        return json.loads(f.read_text())
-    except (OSError, ValueError):
-        pass
-    value = compute()
-    f.parent.mkdir(parents=True, exist_ok=True)
-    atomic_write(f, json.dumps(value, sort_keys=True))
+    folder = Path(cache_dir) / kind
+    value = _cache_entry(folder / f"{key}.json", key)
+    if value is _MISS:
+        value = compute()
+        _cache_write(folder, key, value)
     return value
 
 
@@ -165,7 +207,8 @@ def op_cost(pattern, method, filters=None, precision="float64"):
 
 
 def _colour_task(cand, dataset, train, settings, cache_dir, workers):
-    """{method: {metric: mean, "ops": ..., "note": ...}} of one layout."""
+    """{method: {"per_image": {metric: {image: value}}, "ops_per_z": ..., "note": ...}} of one
+    layout; the means are taken over the images of the whole study (:func:`_common_means`)."""
     from ..evaluation import EvalConfig, evaluate
     from ..reconstruction import ReconstructParams
 
@@ -189,10 +232,15 @@ def _colour_task(cand, dataset, train, settings, cache_dir, workers):
                             params=params)
         res = evaluate(dataset, config, processes=1, workers=workers, progress=False,
                        cache_dir=None if cache_dir is None else Path(cache_dir) / "colour")
-        summary = res.summary()
+        # every image's value, not Results.summary()'s means: those leave a +inf out of one
+        # column (a flat image: every method exact) and not of the zipper's, and the means
+        # of the layouts and methods are to cover the same images (_common_means)
         for m in run:
-            for k in COLOUR_METRICS:
-                out[m][k] = float(summary[(pattern.tile_string, m, k)][0])
+            out[m]["per_image"] = {k: {} for k in COLOUR_METRICS}
+        for r in res.rows:
+            if r["pattern"] == pattern.tile_string and r["method"] in out \
+                    and r["metric"] in COLOUR_METRICS:
+                out[r["method"]]["per_image"][r["metric"]][r["image"]] = float(r["value"])
     cost_key = _digest("cost", pattern.tile_string, pattern.bayer_phase, run,
                        filters.digest if filters is not None else None, results_version())
 
@@ -205,6 +253,47 @@ def _colour_task(cand, dataset, train, settings, cache_dir, workers):
     if filters is not None:
         out["learned"]["filters"] = f"{filters.meta.get('training_set')} {filters.digest[:8]}"
     return out
+
+
+def _common_means(colours, images):
+    """Set every colour cell's means (``cfa_psnr``, ``cpsnr``, ``zipper`` of each layout and
+    method that ran: ``colours``, the colour tasks' results) over the same images: those of
+    ``images`` on which every cell of the study is finite.
+
+    A PSNR is +inf where a reconstruction is exact (a flat image, for every method):
+    Results.summary() left it out of the PSNR means and not of the zipper's, without a word
+    (CPSNR over 2 images, zipper over 3), and a dataset of flat images gave NaN, printed in
+    bold as the best. As tradeoff's means do, a cell is now averaged over the images every
+    layout and method gives a finite value; when no image is left, a cell of +inf on every
+    image is inf (exact, as evaluate prints it) and any other has no mean (None): never NaN,
+    which neither ranks nor goes into strict JSON. Returns ``(note, left)``: the note on the
+    images left out and their names ("" and [] when none)."""
+    cells = [v["per_image"][k] for colour in colours for v in colour.values()
+             if isinstance(v, dict) and "per_image" in v for k in COLOUR_METRICS]
+    seen = [n for n in images if any(n in c for c in cells)]      # evaluated ones
+    keep = [n for n in seen if all(np.isfinite(c.get(n, np.nan)) for c in cells)]
+    for colour in colours:
+        for v in colour.values():
+            if not isinstance(v, dict) or "per_image" not in v:
+                continue
+            for k in COLOUR_METRICS:
+                vals = v["per_image"][k]
+                if keep:
+                    v[k] = float(np.mean([vals[n] for n in keep]))
+                else:
+                    v[k] = math.inf if vals and all(x == math.inf for x in vals.values()) \
+                        else None
+    left = [n for n in seen if n not in keep]
+    if not left:
+        return "", []
+    odd = {x for c in cells for n in left for x in [c.get(n, np.nan)] if not np.isfinite(x)}
+    why = ("a PSNR of +inf: reconstructed exactly" if all(x == math.inf for x in odd) else
+           "+inf: reconstructed exactly; NaN or -inf: a metric not computed")
+    if keep:
+        return (f"colour means over the {len(keep)} of {len(seen)} images on which every "
+                f"layout and method is finite; left out: {', '.join(left)} ({why})"), left
+    return (f"no image on which every layout and method is finite ({', '.join(left)}: {why}): "
+            "a colour cell shows inf where it is +inf on every image, no mean otherwise"), left
 
 
 # --------------------------------------------------------------------------- depth
@@ -424,8 +513,12 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
     from .opcount import count_tof_operations
 
     tof_ops = count_tof_operations()
-    rows = _rows(cands, jobs, results, settings, tof_ops)
+    colour_note, left_out = _common_means(
+        [r for job, r in zip(jobs, results) if job[0] == "colour"], [s.name for s in sources])
+    rows = _rows(cands, jobs, results, settings, tof_ops, colour_note)
     return {"rows": rows, "notes": notes, "methods": list(settings.methods),
+            # the images the colour means leave out (a +inf PSNR; the rows' notes say so)
+            "left_out": left_out,
             "layouts": [{"name": c.name, "tile": c.pattern.tile_string,
                          "bayer": c.pattern.bayer_phase, "source": c.source, "key": c.key,
                          "same_as": c.same_as} for c in cands],
@@ -465,7 +558,7 @@ def _hardware(pattern, method):
             "multipliers": int(sum(cost.multipliers().values()))}
 
 
-def _rows(cands, jobs, results, settings, tof_ops):
+def _rows(cands, jobs, results, settings, tof_ops, colour_note=""):
     by = {}
     for job, res in zip(jobs, results):
         by.setdefault(job[1].name, []).append((job[0], res))
@@ -499,8 +592,11 @@ def _rows(cands, jobs, results, settings, tof_ops):
                           if valid else None,
                           rgbd_rmse_mm=float(np.sqrt(sum(s["sq_err_valid"] for s in scenes)
                                                      / valid)) * 1e3 if valid else None)
-        applied = [m for m in settings.methods if "cpsnr" in colour[m]]
-        best = max(applied, key=lambda m: colour[m]["cpsnr"]) if applied else None
+        # ranked on a mean (None: no image to average; never NaN, which max() had taken as
+        # the best and the table printed in bold)
+        ranked = [m for m in settings.methods if colour[m].get("cpsnr") is not None
+                  and not math.isnan(colour[m]["cpsnr"])]
+        best = max(ranked, key=lambda m: colour[m]["cpsnr"]) if ranked else None
         for m in settings.methods:
             r = dict(layout, method=m, best=m == best)
             v = colour[m]
@@ -511,6 +607,7 @@ def _rows(cands, jobs, results, settings, tof_ops):
             depth_note = (wall or {}).get("note") or next(
                 (x["note"] for x in scenes if x.get("note")), "")
             r["note"] = "; ".join(n for n in (v.get("note"), c.note, depth_note,
+                                              colour_note if "per_image" in v else "",
                                               v.get("filters") and f"filters {v['filters']}")
                                   if n)
             rows.append(r)

@@ -84,8 +84,15 @@ def cache_folder(name):
 
     The name's characters outside ``[A-Za-z0-9._-]`` become ``_``, and a hash
     of the exact name is appended, so ``"a b"`` and ``"a_b"`` get two folders.
+    A file name that is not UTF-8 (``b"caf\\xe9.png"``, which Python names
+    ``"caf\\udce9"``) gets one too: its lone surrogate is ``_`` in the readable part
+    (no surrogate is alphanumeric) and hashed as "surrogatepass" encodes it (one-to-one
+    over every str, and the same bytes as UTF-8 for every other name, so no
+    existing folder moves); strict UTF-8 had stopped every evaluation of such a
+    dataset with "surrogates not allowed", naming nothing.
     """
-    return f"{_safe(name)[:60]}-{hashlib.sha1(name.encode()).hexdigest()[:10]}"
+    raw = name.encode("utf-8", "surrogatepass")
+    return f"{_safe(name)[:60]}-{hashlib.sha1(raw).hexdigest()[:10]}"
 
 
 #: the largest cache entry read (one small JSON object of at most five numbers)

@@ -312,6 +312,14 @@ def _paired_figure(results, metric, baseline=None):
     return fig
 
 
+def _shown_name(name):
+    """An image name as a figure (or any text) can show it: a lone surrogate -- the byte of a
+    file name that is not UTF-8, b"caf\\xe9.png" being "caf\\udce9" -- escaped as the text
+    reports escape it (:func:`rgbz_fast.io.atomic_write`: ``caf\\udce9``). matplotlib's
+    text layout refused the surrogate, and with it every report after the evaluation."""
+    return name.encode("utf-8", "backslashreplace").decode("utf-8")
+
+
 #: the PNG text key of the crop figure's region
 CROP_KEY = "rgbz-fast crop"
 
@@ -430,7 +438,7 @@ def crop_figure(source, config, box=None, size=64):
             for sp in ax.spines.values():
                 sp.set_edgecolor("red" if j == 0 else "0.6")
             ax.set_title(f"{pname}: {label}" if j else "reference", fontsize=8)
-    fig.suptitle(f"{source.name}: crop rows {y0}:{y0 + h}, cols {x0}:{x0 + w}, enlarged "
-                 "without smoothing", fontsize=9, y=1 - 0.1 / fig.get_figheight())
+    fig.suptitle(f"{_shown_name(source.name)}: crop rows {y0}:{y0 + h}, cols {x0}:{x0 + w}, "
+                 "enlarged without smoothing", fontsize=9, y=1 - 0.1 / fig.get_figheight())
     # the region, readable by programs (a PNG text chunk): ROW,COL,ROWS,COLS
     return _figure_png(fig, {CROP_KEY: f"{y0},{x0},{h},{w}"})

@@ -249,7 +249,9 @@ def atomic_write(path, data):
     name created exclusively) in the destination folder and removed if the
     write fails or is interrupted (an exception, Ctrl-C, or a SIGTERM, which
     the command line turns into an exception); the file gets the permissions
-    the umask gives a new file. Text is written as UTF-8. A symbolic link is
+    the umask gives a new file. Text is written as UTF-8, a lone surrogate in it
+    escaped (``\\udce9``: how Python names the byte 0xE9 of a file name that is not
+    UTF-8, such as ``b"caf\\xe9.png"``). A symbolic link is
     followed: the file it names is replaced, the link stays. A device, a
     FIFO or a socket at ``path`` is refused (a ValueError naming ``path``):
     the rename would have put a regular file in its place.
@@ -291,8 +293,14 @@ def atomic_write(path, data):
             _unlink(tmp)
             raise
     try:
+        # errors: a report that names an image whose file name is not UTF-8 holds the
+        # surrogate Python decodes its byte to, which strict UTF-8 refused, and with it the
+        # whole report after the evaluation ("surrogates not allowed", naming nothing);
+        # escaped, the name stays readable (the last two hex digits are the byte), and
+        # inside a JSON string the escape is JSON's own: the same name read back
         with os.fdopen(fd, "w" if isinstance(data, str) else "wb",
-                       **({"encoding": "utf-8"} if isinstance(data, str) else {})) as fh:
+                       **({"encoding": "utf-8", "errors": "backslashreplace"}
+                          if isinstance(data, str) else {})) as fh:
             fh.write(data)
             fh.flush()
             os.fsync(fh.fileno())
