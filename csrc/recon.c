@@ -237,6 +237,21 @@ int rgbz_have_openmp(void)
 #endif
 }
 
+int rgbz_openmp_release(void)
+{
+    /* the calling thread's OpenMP threads ended (they are started again at the next
+       parallel region): called before a fork, so that the child, which has none of them,
+       does not wait on them forever at its first parallel region (libgomp's pool does not
+       survive fork) */
+#if defined(_OPENMP) && (_OPENMP >= 201811 || \
+                         (defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 10))
+    /* OpenMP 5.0; GCC's libgomp has it from GCC 10 while its _OPENMP still says 4.5 */
+    return omp_pause_resource_all(omp_pause_hard);
+#else
+    return 0;
+#endif
+}
+
 int rgbz_max_threads(void)
 {
 #ifdef _OPENMP

@@ -302,6 +302,8 @@ int rgbz_sites_off_z(const int64_t *rows, const int64_t *cols, ptrdiff_t n, int 
 /* build information */
 int rgbz_have_openmp(void);
 int rgbz_max_threads(void);
+/* before a fork: the calling thread's OpenMP threads ended, 0 (or an OpenMP error code) */
+int rgbz_openmp_release(void);
 int rgbz_counting_build(void);
 /* counting build: the RGBZ_NOPS counters that the ToF kernels add to (single thread);
    a no-op in the normal build */

@@ -76,7 +76,8 @@ int rgbz_sim_blocks(uint32_t c0, uint32_t c1, uint32_t c2, uint32_t c3, const ui
 /* ------------------------------------------------------------------ Z sites */
 
 int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, ptrdiff_t rows, ptrdiff_t cols,
-                     int block, int64_t *site_r, int64_t *site_c, ptrdiff_t *count)
+                     int block, int64_t *site_r, int64_t *site_c, ptrdiff_t *count,
+                     int workers)
 {
     if (!tile_z || !count || P < 1 || Q < 1 || rows < 1 || cols < 1 ||
         (block != 1 && block != 2))
@@ -93,7 +94,9 @@ int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, ptrdiff_t rows, ptrdif
     *count = k;
     if (site_r) {
         /* rows in parallel, each at the offset of the rows before it */
-        const int nth = rgbz_threads(0);
+        /* the caller's threads (it had been every core: simulate(workers=1) started a team
+           of OMP_NUM_THREADS) */
+        const int nth = rgbz_threads(workers);
         (void)nth;
         SIM_PARALLEL_FOR
         for (ptrdiff_t t = 0; t < nrows; t++) {

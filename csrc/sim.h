@@ -94,9 +94,11 @@ int rgbz_sim_math(int which, const double *x, ptrdiff_t n, double *out);
 
 /* the sites of the Z measurements, row-major: tile_z (P x Q, 1 at a Z site); block 1: every
    Z site; block 2: the top-left cell of every 2x2 square inside the frame whose top-left
-   cell is a Z site at even (row, col). With site_r NULL only *count is set. */
+   cell is a Z site at even (row, col). With site_r NULL only *count is set. workers: the
+   threads (<= 0: the OpenMP default). */
 int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, ptrdiff_t rows, ptrdiff_t cols,
-                     int block, int64_t *site_r, int64_t *site_c, ptrdiff_t *count);
+                     int block, int64_t *site_r, int64_t *site_c, ptrdiff_t *count,
+                     int workers);
 
 /* the colour signal rate value * per_unit[colour] of every site: a 65536-bin histogram of
    the top 16 bits of its IEEE representation (hist), or the rates whose top 16 bits lie in

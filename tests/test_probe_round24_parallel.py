@@ -60,3 +60,62 @@ def test_a_black_image_under_noise_is_named(tmp_path):
         evaluate(str(ds), **kw)
     res = evaluate(str(ds), skip_bad=True, **kw)
     assert res.images() == ["a"] and res.skipped[0][0] == "black_one"
+
+
+_FORK = textwrap.dedent("""
+    import multiprocessing as mp, os, numpy as np, rgbz_fast as rz
+    img = np.random.default_rng(0).integers(0, 256, (1024, 1024, 3), dtype=np.uint8)
+    frame = rz.mosaic(img, "mask1")
+    def work(_):
+        return rz.reconstruct(frame, "sg", workers=2).tobytes()
+    if __name__ == "__main__":
+        ref = rz.reconstruct(frame, "sg", workers=2).tobytes()     # the parent's team
+        with mp.get_context("fork").Pool(1) as pool:
+            out = pool.map(work, [0])[0]
+        pid = os.fork()
+        if pid == 0:
+            os._exit(0 if rz.reconstruct(frame, "sg", workers=2).tobytes() == ref else 3)
+        _, status = os.waitpid(pid, 0)
+        again = rz.reconstruct(frame, "sg", workers=2).tobytes()  # the parent's team anew
+        print(out == ref, os.waitstatus_to_exitcode(status), again == ref)
+""")
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "register_at_fork"), reason="no fork")
+def test_a_fork_started_child_runs_the_kernels_on_its_threads(tmp_path):
+    """M-01: libgomp's threads do not survive fork: a child of multiprocessing's "fork"
+    (ProcessPoolExecutor's default on Linux) or of os.fork hung forever in its first
+    multi-threaded kernel call once the parent had made one. The parent's threads are ended
+    before every fork and started again on both sides: the same results, no hang."""
+    script = tmp_path / "fork_child.py"
+    script.write_text(_FORK)
+    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["True", "0", "True"]
+
+
+_THREADS = textwrap.dedent("""
+    import os, numpy as np, rgbz_fast as rz
+    def nth(): return len(os.listdir('/proc/self/task'))
+    img = np.random.default_rng(0).random((64, 64, 3))
+    scene = rz.Scene(image=img, depth=np.full((64, 64), 1.5))
+    before = nth()
+    rz.simulate(scene, rz.mask2(), seed=1, workers=1)
+    print(before, nth())
+""")
+
+
+@pytest.mark.skipif(not __import__("os").path.isdir("/proc/self/task"),
+                    reason="counts threads in Linux's /proc")
+def test_simulate_with_one_worker_starts_no_threads():
+    """M-02: the Z sites' step of simulate ran on every core (OMP_NUM_THREADS=8: 7 threads
+    started by a workers=1 call; OMP_NUM_THREADS=1000 under a low ulimit -v killed the
+    interpreter in libgomp)."""
+    import os
+
+    out = subprocess.run([sys.executable, "-c", _THREADS], capture_output=True, text=True,
+                         timeout=60, env=dict(os.environ, OMP_NUM_THREADS="8"))
+    assert out.returncode == 0, out.stderr
+    before, after = map(int, out.stdout.split())
+    assert after == before

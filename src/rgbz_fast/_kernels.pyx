@@ -20,6 +20,20 @@ them, so no code is typed twice.
 
 include "_kernels_common.pxi"
 
+
+def _release_before_fork():
+    # libgomp's threads do not survive fork: a child that starts a parallel region after its
+    # parent ran one waited forever on threads it does not have (multiprocessing's "fork",
+    # ProcessPoolExecutor's default on Linux). Ended before the fork, they are started
+    # anew on both sides (probe round 24, M-01: robustness.md H106)
+    rgbz_openmp_release()
+
+
+import os as _os
+if hasattr(_os, "register_at_fork"):
+    _os.register_at_fork(before=_release_before_fork)
+
+
 from libc.math cimport INFINITY
 from libc.string cimport memset
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
@@ -857,7 +871,8 @@ cdef extern from "sim.h" nogil:
                            double speed_of_light, double two_pi, int order, double *re,
                            double *im, int workers)
     int rgbz_sim_z_sites(const uint8_t *tile_z, int P, int Q, Py_ssize_t rows, Py_ssize_t cols,
-                         int block, int64_t *site_r, int64_t *site_c, Py_ssize_t *count)
+                         int block, int64_t *site_r, int64_t *site_c, Py_ssize_t *count,
+                         int workers)
     int rgbz_sim_rate_hist(int type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
                            Py_ssize_t row_stride, Py_ssize_t col_stride,
                            const Py_ssize_t *chan_off, const int32_t *tile, int P, int Q,
@@ -964,20 +979,22 @@ def sim_tof_field(const double[::1] d, const double[::1] s, double four_pi_f,
     _raise_for(status)
 
 
-def sim_z_sites(const uint8_t[:, ::1] tile_z, Py_ssize_t rows, Py_ssize_t cols, int block):
-    """(rows, cols) int64 arrays of the Z measurements' top-left cells, row-major."""
+def sim_z_sites(const uint8_t[:, ::1] tile_z, Py_ssize_t rows, Py_ssize_t cols, int block,
+                int workers):
+    """(rows, cols) int64 arrays of the Z measurements' top-left cells, row-major, on
+    ``workers`` threads."""
     import numpy as np
     cdef int status
     cdef Py_ssize_t n = 0
     status = rgbz_sim_z_sites(&tile_z[0, 0], tile_z.shape[0], tile_z.shape[1], rows, cols,
-                              block, NULL, NULL, &n)
+                              block, NULL, NULL, &n, 1)
     _raise_for(status)
     r = np.empty(n, np.int64)
     c = np.empty(n, np.int64)
     cdef int64_t[::1] rv = r, cv = c
     if n:
         status = rgbz_sim_z_sites(&tile_z[0, 0], tile_z.shape[0], tile_z.shape[1], rows, cols,
-                                  block, &rv[0], &cv[0], &n)
+                                  block, &rv[0], &cv[0], &n, workers)
         _raise_for(status)
     return r, c
 

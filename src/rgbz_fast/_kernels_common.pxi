@@ -142,6 +142,7 @@ cdef extern from "rgbz.h" nogil:
                           double *phase, double *amp, int workers)
     int rgbz_have_openmp()
     int rgbz_max_threads()
+    int rgbz_openmp_release()
     int rgbz_counting_build()
     int rgbz_opcount_target(uint64_t *counts)
 
@@ -338,6 +339,12 @@ def have_openmp():
 
 def max_threads():
     return int(rgbz_max_threads())
+
+
+def openmp_release():
+    """End the calling thread's OpenMP threads (started again at the next parallel region);
+    0, or OpenMP's error code. Run before every fork (rgbz_fast._kernels registers it)."""
+    return int(rgbz_openmp_release())
 
 
 def counting_build():

@@ -89,11 +89,13 @@ def colour_dn(source, pattern, per_unit, exposure, fields, keys, *, rgbz=False, 
     return ref, data, nsat
 
 
-def z_sites(pattern, shape, block):
+def z_sites(pattern, shape, block, workers=1):
     """(rows, cols) int64 of the Z measurements, row-major: every Z site (block 1), or the
-    top-left cell of every 2x2 Z square inside the frame (block 2)."""
+    top-left cell of every 2x2 Z square inside the frame (block 2); on ``workers`` threads
+    (a checked count)."""
     tile_z = np.ascontiguousarray(pattern.tile == Z, np.uint8)
-    return _kernels.sim_z_sites(tile_z, int(shape[0]), int(shape[1]), int(block))
+    return _kernels.sim_z_sites(tile_z, int(shape[0]), int(shape[1]), int(block),
+                                int(workers))
 
 
 def _light(sensor, pitch):

@@ -97,7 +97,7 @@ from .. import _kernels
 from .._frame import RawFrame, ToFTaps, _Adopt
 from .._patterns import Z, get_pattern
 from .._sensors import ColourSensor, ToFSensor
-from .._validate import check_flag, check_number, check_seed
+from .._validate import check_flag, check_number, check_seed, check_workers
 from . import _pixels
 from ._loaders import load_scene
 from ._noise import (RNG_VERSION, STREAM_COLOUR_FPN, STREAM_COLOUR_TEMPORAL,
@@ -314,13 +314,13 @@ def _z_block(pattern):
     return 2 if np.all(full | empty) and full.any() else 1
 
 
-def _z_sites(pattern, shape, block):
+def _z_sites(pattern, shape, block, workers=None):
     """(rows, cols) of the Z measurements' top-left cells, row-major (a 2x2 block cut by
-    the frame edge is dropped)."""
+    the frame edge is dropped), on ``workers`` threads."""
     if block == 2 and _z_block(pattern) != 2:
         raise ValueError(f"ToFSensor.z_block: 2 needs Z sites in aligned 2x2 squares; pattern "
                          f"{pattern.name!r} has none")
-    return _pixels.z_sites(pattern, shape, block)
+    return _pixels.z_sites(pattern, shape, block, check_workers(workers))
 
 
 def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch_um=None,
@@ -393,7 +393,7 @@ def simulate_tof(scene, pattern, sensor=None, *, seed=0, noise=True, pixel_pitch
         pitch = 2.8 if pitch is None else pitch
         sensor = replace(sensor, pixel_pitch_um=pitch)
     block = sensor.z_block if sensor.z_block is not None else _z_block(pattern)
-    rows, cols = _z_sites(pattern, shape, block)
+    rows, cols = _z_sites(pattern, shape, block, workers)
     if rows.size == 0:
         raise ValueError(f"scene: a {shape[0]}x{shape[1]} frame holds no complete "
                          f"{block}x{block} Z pixel of pattern {pattern.name!r}")
