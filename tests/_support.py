@@ -116,3 +116,20 @@ def rgbd_folder(path, shape=(48, 64), seed=3):
     iio.imwrite(path / "disp1.png", disp)
     (path / "dmin.txt").write_text("270\n")
     return path
+
+
+def run_past_a_fifo(fn, fifo, timeout, what):
+    """``[fn()]``, run on a thread that a reader blocked on the FIFO ``fifo`` cannot hang: past
+    ``timeout`` seconds the FIFO is opened for writing (the reader sees its end) and the test
+    fails with ``what``."""
+    import threading
+
+    done = []
+    t = threading.Thread(target=lambda: done.append(fn()), daemon=True)
+    t.start()
+    t.join(timeout)
+    if t.is_alive():                                      # unblock the reader, then fail
+        with open(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK), "w"):
+            pass
+        pytest.fail(what)
+    return done

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import json
 import os
-import threading
 
 import imageio.v3 as iio
 import numpy as np
@@ -26,6 +25,7 @@ from rgbz_fast._cli import main
 from rgbz_fast._devtools import pattern_report as report
 from rgbz_fast._devtools import pattern_study as ps
 from rgbz_fast._devtools._common import json_text
+from _support import run_past_a_fifo
 
 #: small and quick: two methods, a 48x48 wall
 FAST = ps.StudySettings(methods=("bilinear", "bi"), wall_shape=(48, 48))
@@ -102,19 +102,11 @@ def test_a_fifo_in_the_cache_does_not_block(tmp_path):
     entry = tmp_path / "wall" / "k.json"
     entry.parent.mkdir()
     os.mkfifo(entry)
-    done = []
-
     def run():
         with pytest.warns(RuntimeWarning, match="is a FIFO"):
-            done.append(ps._cached(tmp_path, "wall", "k", lambda: {"wall_n": 3}))
+            return ps._cached(tmp_path, "wall", "k", lambda: {"wall_n": 3})
 
-    t = threading.Thread(target=run, daemon=True)
-    t.start()
-    t.join(20)
-    if t.is_alive():                                      # unblock the reader, then fail
-        with open(os.open(entry, os.O_WRONLY | os.O_NONBLOCK), "w"):
-            pass
-        pytest.fail("a FIFO in pattern-study's cache blocked it")
+    done = run_past_a_fifo(run, entry, 20, "a FIFO in pattern-study's cache blocked it")
     assert done == [{"wall_n": 3}] and entry.is_file()
     assert json.loads(entry.read_text())["values"] == {"wall_n": 3}
 

@@ -215,7 +215,8 @@ def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
     recomputed and written again, never served as a result; a cache that cannot take an
     entry costs a warning, not the result."""
     import os
-    import threading
+
+    from _support import run_past_a_fifo
 
     kw = dict(metrics=("cfa_psnr", "ssim"), methods=("bi",), patterns=("mask1",),
               progress=False, processes=1)
@@ -242,15 +243,8 @@ def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
     ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw)
     entry.unlink()
     os.mkfifo(entry)
-    done = []
-    t = threading.Thread(target=lambda: done.append(
-        ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows), daemon=True)
-    t.start()
-    t.join(60)
-    if t.is_alive():                                      # unblock the reader, then fail
-        with open(os.open(entry, os.O_WRONLY | os.O_NONBLOCK), "w"):
-            pass
-        pytest.fail("a FIFO in the cache blocked the evaluation")
+    done = run_past_a_fifo(lambda: ev.evaluate(src, cache_dir=tmp_path, crop=0, **kw).rows,
+                           entry, 60, "a FIFO in the cache blocked the evaluation")
     assert done == [want] and entry.is_file() and entry.read_text() == good
 
 
