@@ -326,9 +326,14 @@ def test_tradeoff_leaves_an_exactly_reconstructed_image_out_of_every_mean():
     for text in (tradeoff.format_markdown(res), tradeoff.format_text(res)):
         assert note in text and "nan" not in text
     assert tradeoff_plot(res)[:8] == b"\x89PNG\r\n\x1a\n"
-    # only a flat image: no mean to show, the plot's panel and the findings say so
+    # only a flat image: every variant exact (inf, never NaN), the fastest alone on the front
+    # (a NaN had put every row on it, in bold); the plot's panel and the findings say so
     alone = tradeoff.run_tradeoff([_Image("flat", flat)], methods=("bilinear", "sg"),
                                   patterns=("mask1",), speed_shape=(48, 64), repeat=1)
-    assert all(math.isnan(r["cfa_psnr"]) for r in alone["rows"])
+    rows = alone["rows"]
+    assert all(r["cfa_psnr"] == math.inf for r in rows)
+    assert [r["pareto"] for r in rows].count(True) == 1
+    assert max(rows, key=lambda r: r["mpix_s"])["pareto"]
     assert "no image with a finite CFA PSNR for every variant" in tradeoff.format_text(alone)
+    assert "| inf | inf |" in tradeoff.format_markdown(alone)
     assert tradeoff_plot(alone)[:8] == b"\x89PNG\r\n\x1a\n"

@@ -195,6 +195,11 @@ def test_no_best_is_marked_where_the_means_cover_different_images():
     md = res.summary_markdown()
     assert "**" not in md.split("Paired")[0].replace("**mask2**", "")
     assert "No best is marked for CFA PSNR (dB) where the means cover different images." in md
+    # as many images each, but not the same ones: no best either (the first form of the rule
+    # compared counts, and marked bilinear here)
+    res2 = Results(_cell_rows({"bilinear": [25.0, math.inf], "edi_line": [24.0, math.inf],
+                               "sg": [math.inf, 20.0]}), cfg)
+    assert "**" not in res2.summary_markdown().split("Paired")[0].replace("**mask2**", "")
     # the same images everywhere: the best is marked
     res = Results(_cell_rows({"bilinear": [64.99, 29.38], "edi_line": [72.24, 33.24],
                               "sg": [73.0, 33.32]}), cfg)

@@ -59,6 +59,29 @@ def tile_to(img, shape):
     return np.ascontiguousarray(full[:rows, :cols])
 
 
+def common_means(cells, images):
+    """Means of ``cells`` ({key: {image: value}}) over the same images: those of ``images`` on
+    which every cell is finite. A PSNR is +inf where a reconstruction is exact (a flat image):
+    averaged apart, each cell had covered other images (one flat image made every tradeoff
+    mean +inf; pattern-study left it out of CPSNR and not of the zipper's). With no such
+    image, a cell that is +inf on every image is inf (exact, as evaluate prints it), any
+    other None: never NaN, which neither ranks nor goes into strict JSON.
+
+    Returns ``({key: mean}, kept, left)``: the images averaged and those left out (of the
+    ones some cell holds), in the order of ``images``.
+    """
+    seen = [n for n in images if any(n in c for c in cells.values())]
+    kept = [n for n in seen if all(np.isfinite(c.get(n, np.nan)) for c in cells.values())]
+    means = {}
+    for key, c in cells.items():
+        if kept:
+            means[key] = float(np.mean([c[n] for n in kept]))
+        else:
+            means[key] = float("inf") if c and all(v == float("inf") for v in c.values()) \
+                else None
+    return means, kept, [n for n in seen if n not in kept]
+
+
 def json_text(obj):
     """``obj`` as indented, strict JSON (NumPy numbers as numbers, non-finite floats as
     null: Python's own floats too, which json would write as NaN or Infinity)."""

@@ -43,7 +43,7 @@ import numpy as np
 
 from ..evaluation._cache import _CACHE_MAX_BYTES, _cache_check, _cache_write, results_version
 from ..io import read_file
-from ._common import machine_info
+from ._common import common_means, machine_info
 from .pattern_candidates import candidates as find_candidates
 
 __all__ = ["pattern_study", "StudySettings", "METHODS", "COLOUR_METRICS", "WALL",
@@ -257,40 +257,26 @@ def _colour_task(cand, dataset, train, settings, cache_dir, workers):
 
 def _common_means(colours, images):
     """Set every colour cell's means (``cfa_psnr``, ``cpsnr``, ``zipper`` of each layout and
-    method that ran: ``colours``, the colour tasks' results) over the same images: those of
-    ``images`` on which every cell of the study is finite.
-
-    A PSNR is +inf where a reconstruction is exact (a flat image, for every method):
-    Results.summary() left it out of the PSNR means and not of the zipper's, without a word
-    (CPSNR over 2 images, zipper over 3), and a dataset of flat images gave NaN, printed in
-    bold as the best. As tradeoff's means do, a cell is now averaged over the images every
-    layout and method gives a finite value; when no image is left, a cell of +inf on every
-    image is inf (exact, as evaluate prints it) and any other has no mean (None): never NaN,
-    which neither ranks nor goes into strict JSON. Returns ``(note, left)``: the note on the
-    images left out and their names ("" and [] when none)."""
-    cells = [v["per_image"][k] for colour in colours for v in colour.values()
-             if isinstance(v, dict) and "per_image" in v for k in COLOUR_METRICS]
-    seen = [n for n in images if any(n in c for c in cells)]      # evaluated ones
-    keep = [n for n in seen if all(np.isfinite(c.get(n, np.nan)) for c in cells)]
-    for colour in colours:
-        for v in colour.values():
-            if not isinstance(v, dict) or "per_image" not in v:
-                continue
-            for k in COLOUR_METRICS:
-                vals = v["per_image"][k]
-                if keep:
-                    v[k] = float(np.mean([vals[n] for n in keep]))
-                else:
-                    v[k] = math.inf if vals and all(x == math.inf for x in vals.values()) \
-                        else None
-    left = [n for n in seen if n not in keep]
+    method that ran: ``colours``, the colour tasks' results) over the same images
+    (:func:`rgbz_fast._devtools._common.common_means`: those on which every cell of the
+    study is finite; inf for a cell exact on every image when none is, else None).
+    Returns ``(note, left)``: the note on the images left out and their names ("" and []
+    when none)."""
+    cells = {(ci, m, k): v["per_image"][k] for ci, colour in enumerate(colours)
+             for m, v in colour.items() if isinstance(v, dict) and "per_image" in v
+             for k in COLOUR_METRICS}
+    means, keep, left = common_means(cells, images)
+    for (ci, m, k), mean in means.items():
+        colours[ci][m][k] = mean
     if not left:
         return "", []
-    odd = {x for c in cells for n in left for x in [c.get(n, np.nan)] if not np.isfinite(x)}
+    odd = {x for c in cells.values() for n in left for x in [c.get(n, np.nan)]
+           if not np.isfinite(x)}
     why = ("a PSNR of +inf: reconstructed exactly" if all(x == math.inf for x in odd) else
            "+inf: reconstructed exactly; NaN or -inf: a metric not computed")
+    seen = len(keep) + len(left)
     if keep:
-        return (f"colour means over the {len(keep)} of {len(seen)} images on which every "
+        return (f"colour means over the {len(keep)} of {seen} images on which every "
                 f"layout and method is finite; left out: {', '.join(left)} ({why})"), left
     return (f"no image on which every layout and method is finite ({', '.join(left)}: {why}): "
             "a colour cell shows inf where it is +inf on every image, no mean otherwise"), left

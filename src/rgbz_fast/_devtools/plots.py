@@ -246,7 +246,8 @@ def tradeoff_figure(res):
         # a mean left without an image (each reconstructed exactly by some variant: NaN,
         # run_tradeoff's common means) has no point; an empty panel says why (matplotlib
         # had refused the log axis of no data)
-        sub = [r for r in rows if r["pattern"] == p and np.isfinite(r["cfa_psnr"])]
+        sub = [r for r in rows if r["pattern"] == p and r["cfa_psnr"] is not None
+               and np.isfinite(r["cfa_psnr"])]
         if not sub:
             ax.text(0.5, 0.5, "no image that every variant reconstructs\nwith a finite PSNR",
                     ha="center", va="center", transform=ax.transAxes)

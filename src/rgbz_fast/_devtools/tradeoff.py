@@ -14,13 +14,12 @@ draws it. A quick run ranks nothing: its speeds are reported, labelled
 
 from __future__ import annotations
 
-import math
 import os
 
 import numpy as np
 
 from .._validate import kernel_threads
-from ._common import machine_info, progress
+from ._common import common_means, machine_info, progress
 from .timing import WARMUP_CALLS, interleaved, rate_stats
 
 __all__ = ["run_tradeoff", "pareto_front", "format_markdown", "format_text", "Crop", "METHODS",
@@ -201,9 +200,13 @@ def run_tradeoff(dataset, *, methods=METHODS, patterns=PATTERNS, speed_shape=SPE
     left_out = _common_means(rows, patterns, [src.name for src in sources])
     for p in patterns:
         sub = [r for r in rows if r["pattern"] == p]
-        front = set(pareto_front([(r["mpix_s"], r["cfa_psnr"]) for r in sub]))
+        # a row without a mean (None: no image to average) is on no front; NaN, which no
+        # comparison passes, had put every such row on it, in bold
+        ranked = [i for i, r in enumerate(sub) if r["cfa_psnr"] is not None]
+        front = {ranked[j] for j in pareto_front([(sub[i]["mpix_s"], sub[i]["cfa_psnr"])
+                                                   for i in ranked])}
         for i, r in enumerate(sub):
-            r["pareto"] = None if quick else i in front
+            r["pareto"] = None if quick or r["cfa_psnr"] is None else i in front
     return {"machine": machine_info(), "dataset": dataset_name, "quick": bool(quick),
             "images": [src.name for src in sources], "speed_frame": list(speed_shape),
             "repeat": repeat, "warmup_calls": WARMUP_CALLS, "workers": workers,
@@ -229,17 +232,19 @@ def _common_means(rows, patterns, names):
     out = {}
     for p in patterns:
         sub = [r for r in rows if r["pattern"] == p]
-        if not sub:
-            continue
         for k in ("cfa_psnr", "cpsnr"):
-            v = np.array([r[f"{k}_per_image"] for r in sub], dtype=float)
-            keep = np.all(np.isfinite(v), axis=0)
-            if keep.all():
-                continue
-            out.setdefault(p, {})[k] = [n for n, kept in zip(names, keep) if not kept]
-            for r, vr in zip(sub, v):
-                r[k] = float(vr[keep].mean()) if keep.any() else math.nan
+            means, _, left = common_means(
+                {i: dict(zip(names, r[f"{k}_per_image"])) for i, r in enumerate(sub)}, names)
+            if left:
+                out.setdefault(p, {})[k] = left
+                for i, r in enumerate(sub):
+                    r[k] = means[i]                 # inf when exact everywhere, else None
     return out
+
+
+def _db_cell(v):
+    """A mean PSNR of a table: 3 decimals, "inf" (exact on every image), "-" (no mean)."""
+    return "-" if v is None else f"{v:.3f}"
 
 
 def _left_out_note(res):
@@ -292,7 +297,9 @@ def _findings(res):
             base = next(b for b in rows if b["pattern"] == r["pattern"]
                         and b["method"] == r["method"] and b["domain"] == r["domain"]
                         and _is_base(b))
-            dps.append(r["cfa_psnr"] - base["cfa_psnr"])
+            if all(isinstance(x, float) and np.isfinite(x)
+                   for x in (r["cfa_psnr"], base["cfa_psnr"])):
+                dps.append(r["cfa_psnr"] - base["cfa_psnr"])
             sp.append(r["mpix_s"] / base["mpix_s"])
         worst = max(sub, key=lambda r: r["max_abs_diff_dn"])
         frac = max(r["frac_diff"] for r in sub)
@@ -309,7 +316,6 @@ def _findings(res):
                    f"{worst['max_abs_diff_dn']:.0f} DN"
                    + ("" if same else f" ({series(worst)} {worst['pattern']})"))
                   if worst["max_abs_diff_dn"] > 0 else "no Z pixel differs")
-        dps = [d for d in dps if np.isfinite(d)]      # a pattern without a common image: NaN
         psnr = (f"mean CFA PSNR changes by {_db(min(dps))} to {_db(max(dps))} dB against "
                 "float64 + libm" if dps else
                 "no image with a finite CFA PSNR for every variant to compare on")
@@ -369,7 +375,7 @@ def format_markdown(res, png_name=None, command=None):
                          f"{r['exp']} | "
                          f"{r['mpix_s']:.1f} | {r['mpix_s_median']:.1f} "
                          f"[{r['mpix_s_lo']:.1f}-{r['mpix_s_hi']:.1f}] | "
-                         f"{r['cfa_psnr']:.3f} | {r['cpsnr']:.3f} | {d} | {f} |")
+                         f"{_db_cell(r['cfa_psnr'])} | {_db_cell(r['cpsnr'])} | {d} | {f} |")
         lines.append("")
     lines += [f"Not run: {m} on {p} ({why})." for p, m, why in res.get("not_applicable", ())]
     return "\n".join(lines)
@@ -386,7 +392,8 @@ def format_text(res):
         d = "-" if r["max_abs_diff_dn"] is None else f"{r['max_abs_diff_dn']:.0f}"
         f = "-" if r["frac_diff"] is None else f"{r['frac_diff'] * 100:.3g}%"
         lines.append(f"{r['pattern']:7}  {series(r):14}  {r['precision']:7}  {r['exp']:4}  "
-                     f"{r['mpix_s']:7.1f}  {r['cfa_psnr']:8.3f}  {r['cpsnr']:7.3f}  {d:>5}  "
+                     f"{r['mpix_s']:7.1f}  {_db_cell(r['cfa_psnr']):>8}  "
+                     f"{_db_cell(r['cpsnr']):>7}  {d:>5}  "
                      f"{f:>8}  {'*' if r['pareto'] else ''}")
     lines += [f"not run: {m} on {p} ({why})" for p, m, why in res.get("not_applicable", ())]
     if res.get("ir_estimated"):

@@ -204,6 +204,12 @@ class Results:
                                           tuple(sorted(kinds)))
         return out
 
+    def _finite_images(self, pattern, method, metric):
+        """The images whose value of the cell is finite (those its mean covers)."""
+        return frozenset(r["image"] for r in self.rows if r["pattern"] == pattern
+                         and r["method"] == method and r["metric"] == metric
+                         and math.isfinite(r["value"]))
+
     def summary_dict(self):
         """:meth:`summary` as ``{"pattern/method/metric": {"mean", "std", "n"}}`` for JSON
         (non-finite numbers as "inf", "-inf", "nan"), with what the tables say too: a cell
@@ -461,9 +467,9 @@ class Results:
             for k in self.config.metrics:
                 means = [s[(p, m, k)][0] for m in self.config.methods]
                 finite = [x for x in means if np.isfinite(x)]
-                counts = {s[(p, m, k)][2] for m in self.config.methods
-                          if self.config.applies(p, m) and (p, m, k) not in all_inf}
-                if finite and len(counts) == 1:
+                covered = {self._finite_images(p, m, k) for m in self.config.methods
+                           if self.config.applies(p, m) and (p, m, k) not in all_inf}
+                if finite and len(covered) == 1:
                     best[k] = max(finite) if HIGHER_IS_BETTER[k] else min(finite)
                 elif finite:
                     # means over different images (a +inf left out of one cell) do not rank:

@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._patterns import _PRESETS, Pattern, Z, bayer, get_pattern
+from .._patterns import _PRESETS, Pattern, Z, _parse_tile, bayer, get_pattern
 from .._validate import check_bit_depth, check_int, read_only_state, real_array
 from ..io import atomic_write, read_npz
 from ._learned_hash import N_ANGLES, learned_geometry, mirror_octants
@@ -335,10 +335,30 @@ class LearnedFilters(FilterIdentity):
                              f"{named.tile_string}, but holds the tile {pattern.tile_string} "
                              "(a damaged filters file)")
         spread = z["spread_thresholds"] if version >= 2 else None
-        return cls(pattern, int_field(z, "bit_depth", p, name), z["weights"],
-                   z["strength_thresholds"], z["coherence_thresholds"], spread,
+        arrays = [z["weights"], z["strength_thresholds"], z["coherence_thresholds"], spread]
+        keep = _phases_at_smallest_period(str(z["pattern"]), pattern)
+        if keep is not None:
+            arrays = [None if a is None else np.asarray(a)[keep] for a in arrays]
+        return cls(pattern, int_field(z, "bit_depth", p, name), *arrays,
                    radius=int_field(z, "radius", p, name),
                    hash_radius=int_field(z, "hash_radius", p, name), meta=meta)
+
+
+def _phases_at_smallest_period(tile_text, pattern):
+    """The phases of a file's filters that its pattern keeps, or None (all of them).
+
+    A file fitted on a tile written at a multiple of its period (``ZRZR/BGBG/ZRZR/BGBG``,
+    kept as written before the patterns were reduced to their smallest period, H104) holds
+    one filter per Z site of the long tile, row-major; the sites of one class of the
+    smaller period are the same site of the mosaic, so the first of each, the one inside
+    the small tile, is kept (the file had no longer loaded: "expected thresholds for 1
+    phases, got 4")."""
+    tile = _parse_tile(tile_text)
+    if tile.shape == tuple(pattern.period):
+        return None
+    P, Q = pattern.period
+    sites = np.argwhere(tile == Z)                                   # row-major
+    return [i for i, (r, c) in enumerate(sites) if r < P and c < Q]
 
 
 #: the longest repr of a meta value a file keeps (the loader reads no more of it)
