@@ -55,3 +55,17 @@ def test_train_names_its_pattern_option(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["rgbz-fast train: error: --pattern: 'bayer' has no Z site; give an RGB-Z "
                    "pattern such as 'mask1'"]
+
+
+def test_evaluate_depth_refuses_an_rgbnir_folder_without_pairs_or_unread(tmp_path, capsys):
+    """Review of round 24: an rgbnir folder without pairs printed {"rgbnir": []} and exited
+    0; --rgbnir with no rgbnir section was accepted and ignored."""
+    empty = tmp_path / "pairs"
+    empty.mkdir()
+    (empty / "0001_rgb.png").write_bytes(b"")            # no NIR beside it: no pair
+    assert main(["evaluate-depth", "--sections", "rgbnir", "--rgbnir", str(empty)]) == 2
+    assert f"error: --sections: rgbnir found no pair NNNN_rgb.png + NNNN_nir.png in {empty}" \
+        in capsys.readouterr().err
+    assert main(["evaluate-depth", "--sections", "noise", "--rgbnir", str(empty)]) == 2
+    assert ("error: --rgbnir: the sections noise do not read the RGB-NIR pairs; --rgbnir "
+            "applies to the rgbnir section") in capsys.readouterr().err

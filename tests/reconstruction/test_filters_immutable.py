@@ -93,3 +93,22 @@ def test_z_guided_names_the_layout_it_cannot_read():
     with pytest.raises(ValueError, match=r"^pattern: the 4 Z sites of .* are not one aligned "
                                          r"2x2 Z pixel, which 'z_guided' needs$"):
         rz.reconstruct(frame, "z_guided", nir=np.ones((32, 32)))
+
+
+def test_a_pickle_of_an_earlier_version_is_immutable_and_the_geometry_pickles():
+    """Review of round 24: a pickle made before ``_frozen`` existed (its state without it)
+    came back mutable; the geometry's read-only phases (MappingProxyType at first) did not
+    pickle or deep-copy."""
+    f = default_filters("mask1")
+    old_state = {k: v for k, v in f.__dict__.items()
+                 if k not in ("_frozen", "_kernel", "geometry")}
+    g = LearnedFilters.__new__(LearnedFilters)
+    g.__setstate__(old_state)
+    assert g == f and g.geometry is f.geometry
+    with pytest.raises(AttributeError, match="is immutable"):
+        g.weights = np.zeros(f.weights.shape)
+    back = pickle.loads(pickle.dumps(f.geometry))
+    assert [ph["rc"] for ph in back] == [ph["rc"] for ph in f.geometry]
+    assert np.array_equal(copy.deepcopy(f.geometry)[0]["taps"], f.geometry[0]["taps"])
+    with pytest.raises(TypeError, match="read-only"):
+        back[0]["taps"] = None

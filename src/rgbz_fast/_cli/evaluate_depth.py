@@ -63,6 +63,16 @@ def run(args):
         Path(data).parent / "rgbnir" if data is not None else None)
     if args.rgbnir is not None and not Path(args.rgbnir).is_dir():
         raise c.CliError(f"--rgbnir: {args.rgbnir} is not a folder")
+    if args.rgbnir is not None and "rgbnir" not in sections:
+        # as --patterns: an option no requested section reads is refused, not ignored
+        raise c.CliError(f"--rgbnir: the sections {','.join(sections)} do not read the "
+                         "RGB-NIR pairs; --rgbnir applies to the rgbnir section")
+    if args.sections and "rgbnir" in sections and rgbnir is not None and rgbnir.is_dir() \
+            and not any((p.parent / p.name.replace("_rgb", "_nir")).is_file()
+                        for p in rgbnir.glob("*_rgb.png")):
+        # an empty folder had printed an empty section and exited 0, as a missing one had
+        raise c.CliError(f"--sections: rgbnir found no pair NNNN_rgb.png + NNNN_nir.png in "
+                         f"{rgbnir}")
     if "rgbnir" in sections and (rgbnir is None or not rgbnir.is_dir()):
         if args.sections:
             # asked for, it had printed nothing (or {}) and exited 0 (H103)

@@ -91,6 +91,7 @@ class FilterIdentity:
     def __setstate__(self, state):      # a pickled or deep-copied copy stays read-only: its
         read_only_state(self, state)    # identity is a digest computed once
         self._rebuild()
+        self._freeze()                  # a pickle of a version before _frozen, too
 
     def __eq__(self, other):
         return isinstance(other, type(self)) and other.digest == self.digest

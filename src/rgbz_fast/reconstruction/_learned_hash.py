@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 from functools import lru_cache
-from types import MappingProxyType
 
 import numpy as np
 
@@ -101,7 +100,22 @@ def learned_geometry(pattern, radius=3, hash_radius=3):
             for a in (v if isinstance(v, tuple) else (v,)):
                 if isinstance(a, np.ndarray):
                     a.setflags(write=False)
-    return tuple(MappingProxyType(ph) for ph in out)
+    return tuple(_Phase(ph) for ph in out)
+
+
+class _Phase(dict):
+    """One phase of :func:`learned_geometry`: a dict that refuses changes (its arrays are
+    read-only too), and pickles and copies as one (a MappingProxyType did not pickle)."""
+
+    def _refuse(self, *args, **kwargs):
+        raise TypeError("the learned geometry is read-only (shared by every filter set of "
+                        "the pattern)")
+
+    __setitem__ = __delitem__ = update = pop = popitem = clear = setdefault = _refuse
+    __ior__ = _refuse
+
+    def __reduce__(self):
+        return _Phase, (dict(self),)
 
 
 def hash_features(X, ph):
