@@ -69,3 +69,22 @@ def test_evaluate_depth_refuses_an_rgbnir_folder_without_pairs_or_unread(tmp_pat
     assert main(["evaluate-depth", "--sections", "noise", "--rgbnir", str(empty)]) == 2
     assert ("error: --rgbnir: the sections noise do not read the RGB-NIR pairs; --rgbnir "
             "applies to the rgbnir section") in capsys.readouterr().err
+
+
+def test_evaluate_depth_names_with_a_pipe_stay_in_their_cell():
+    """Probe round 24 (TB-04): a scene folder named 'al|oe' split its cell, and every column
+    after it moved one to the right."""
+    from rgbz_fast.evaluation import depth_report
+
+    row = dict(scene="al|oe", pattern="mask1", guide="none", depth_min=1.2, depth_max=1.9,
+               valid=9, known=10, wrong=1, wrong_valid=0, low_signal=1, flying=0,
+               rmse_valid=0.01)
+    table = [l for l in depth_report({"scenes": [row]}).splitlines() if l.startswith("| al")]
+    assert table[0].startswith("| al\\|oe | mask1 |")
+    assert len(table[0].replace("\\|", "").split("|")) == 14          # 12 cells
+
+
+def test_evaluate_depth_takes_quiet(capsys):
+    """Probe round 24 (TB-02): the command, half a minute or more, took no --quiet."""
+    assert main(["evaluate-depth", "--sections", "noise", "--quiet", "--json"]) == 0
+    assert "noise" in json.loads(capsys.readouterr().out)

@@ -166,3 +166,21 @@ def test_table1_is_found_on_every_bayer_phase_of_the_presets():
                                                             "exp": 8}
     assert H._float_opcounts("mask2_bggr", "bi")[1]["red/blue"] == {"add": 128, "mul": 32,
                                                                      "div": 8, "exp": 0}
+
+
+
+def test_the_report_tables_have_as_many_cells_as_their_header(images):
+    """Probe round 24 (TB-01): the header cell 'max |diff|' split in two, so the float64
+    against fixed-point table had 10 header cells over 8 separators and did not render."""
+    import re
+
+    md = H.format_report(H.hardware_report("sg", "mask1", width=1920, images=images[:1]))
+    lines = md.splitlines()
+    for k, line in enumerate(lines):
+        if re.fullmatch(r"(\|---)+\|", line):              # a separator: its header above
+            n = line.count("|")
+            assert lines[k - 1].replace("\\|", "").count("|") == n, lines[k - 1]
+            for row in lines[k + 1:]:
+                if not row.startswith("|"):
+                    break
+                assert row.replace("\\|", "").count("|") == n, row

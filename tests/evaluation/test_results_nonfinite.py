@@ -249,3 +249,31 @@ def test_pattern_objects_are_named_by_string_in_the_results(tmp_path):
     with pytest.raises(ValueError, match=r"^patterns: the Pattern 'GZ/ZG' with the Bayer "
                                          r"phase 'GBRG' is not the one its tile implies"):
         EvalConfig(patterns=(odd,), methods=("bilinear",), metrics=("cfa_psnr",))
+
+
+def test_one_paired_image_has_no_interval_and_an_empty_paired_table_is_left_out():
+    """Probe round 24 (TB-03, TB-06): a difference over one image printed the interval
+    [d, d], which reads as exact; a pattern on which no method pairs with the baseline
+    printed a table of no row."""
+    cfg = EvalConfig(patterns=("mask1", "rows"), methods=("bilinear", "sg", "learned"),
+                     metrics=("cfa_psnr",))
+    rows = [{"image": i, "pattern": p, "method": m, "metric": "cfa_psnr", "value": v}
+            for i, vals in (("a", (30.0, 31.71, 32.0)), ("flat", (math.inf,) * 3))
+            for p in ("mask1", "rows") for m, v in zip(cfg.methods, vals)
+            if cfg.applies(p, m)]
+    md = Results(rows, cfg).summary_markdown()
+    paired = md.split("Paired differences")[1]
+    assert "| SG | +1.71 (1 image, no interval) |" in paired
+    assert "[+1.71, +1.71]" not in paired
+
+
+def test_the_image_table_takes_the_summary_decimals():
+    """Probe round 24 (TB-07): the per-image table's .4g mixed 35.6 with 38.78 in one row
+    and printed a perfect SSIM as 1."""
+    cfg = EvalConfig(patterns=("mask1",), methods=("bilinear", "sg"),
+                     metrics=("cpsnr", "ssim"))
+    rows = [{"image": "a", "pattern": "mask1", "method": m, "metric": k, "value": v}
+            for m, k, v in (("bilinear", "cpsnr", 35.6), ("sg", "cpsnr", 38.78),
+                            ("bilinear", "ssim", 1.0), ("sg", "ssim", 0.99681))]
+    md = Results(rows, cfg).image_markdown("a")
+    assert "| CPSNR (dB) | 35.60 | 38.78 |" in md and "| SSIM | 1.0000 | 0.9968 |" in md

@@ -33,6 +33,7 @@ def add_parser(sub):
                  "sections measure mask1 and mask2")
     c.add_seed(p, 1, "seed of the sensor noise")
     c.add_json(p, "print the rows as JSON")
+    c.add_quiet(p, "no progress line")
     c.add_limits(p)
     return p
 
@@ -83,10 +84,15 @@ def run(args):
         if rgbnir is not None:
             print(f"rgbz-fast {NAME}: no RGB-NIR pairs at {rgbnir}: the rgbnir section is "
                   "skipped (--rgbnir DIR)", file=sys.stderr)
-    result = evaluate_depth(data, sections=sections, seed=args.seed,
-                            patterns=args.patterns or ("mask1", "mask2"),
-                            rgbnir=rgbnir if rgbnir is not None and rgbnir.is_dir() else None,
-                            **c.limits(args))
+    from .._progress import ticking
+
+    # the six scenes and the pairs take half a minute or more: a line whose time ticks on a
+    # terminal (the command had shown nothing, and took no --quiet)
+    with ticking(f"{NAME}: {','.join(sections)}", c.bars(args)):
+        result = evaluate_depth(data, sections=sections, seed=args.seed,
+                                patterns=args.patterns or ("mask1", "mask2"),
+                                rgbnir=rgbnir if rgbnir is not None and rgbnir.is_dir()
+                                else None, **c.limits(args))
     if args.json:
         # strict JSON, as the other commands' (H40, H48): a value that has none (an RMSE
         # without a valid measurement, a spread of one) is null; it had been NaN, which

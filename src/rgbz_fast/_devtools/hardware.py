@@ -328,7 +328,7 @@ def format_report(rep):
               "Register widths (worst case, bits): " + ", ".join(
                   f"{k} {v}" for k, v in c["registers"].items()), ""]
     lines += ["| protocol | images | CFA PSNR float64 | fixed | difference (dB) | "
-              "within 1 LSB | max |diff| | histogram fixed - float64 (" +
+              "within 1 LSB | max abs(diff) | histogram fixed - float64 (" +
               " ".join(HIST_BINS) + ") |", "|---|---|---|---|---|---|---|---|"]
     for proto, e in rep["error"].items():
         lines.append(f"| {proto} | {e['images']} | {e['psnr_float']:.3f} | "

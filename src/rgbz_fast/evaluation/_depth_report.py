@@ -8,6 +8,12 @@ import numpy as np
 __all__ = ["depth_report"]
 
 
+def _name(v):
+    """A name in a table cell: a '|' in a scene's folder or a pair's name escaped (it had
+    split the cell, and every column after it moved one to the right)."""
+    return str(v).replace("|", "\\|")
+
+
 def _pct(a, b):
     return f"{100.0 * a / b:.3f}" if b else "-"
 
@@ -31,7 +37,7 @@ def depth_report(result, tolerance=0.05):
         for r in result["scenes"]:
             rmse = "" if np.isnan(r["rmse_valid"]) else f"{100 * r['rmse_valid']:.2f}"
             caught = _pct(r["wrong"] - r["wrong_valid"], r["wrong"])
-            lines.append(f"| {r['scene']} | {r['pattern']} | {r.get('guide', 'none')} | "
+            lines.append(f"| {_name(r['scene'])} | {r['pattern']} | {r.get('guide', 'none')} | "
                          f"{r['depth_min']:.2f}-{r['depth_max']:.2f} | "
                          f"{_pct(r['valid'], r['known'])} | {_pct(r['wrong'], r['known'])} | "
                          f"{_pct(r['wrong_valid'], r['known'])} | {caught} | "
@@ -47,7 +53,7 @@ def depth_report(result, tolerance=0.05):
             emae = "" if np.isnan(r["edge_mae"]) else f"{100 * r['edge_mae']:.2f}"
             ratio = (f"{r['edge_err_both'] / r['edge_err_nearest_both']:.3f}"
                      if r.get("edge_err_nearest_both") else "")
-            lines.append(f"| {r['scene']} | {r['pattern']} | {r['method']} | "
+            lines.append(f"| {_name(r['scene'])} | {r['pattern']} | {r['method']} | "
                          f"{_pct(r['covered'], r['known'])} | {_pct(r['wrong'], r['covered'])} | "
                          f"{rmse} | {emae} | {ratio} |")
         lines.append("")
@@ -61,7 +67,7 @@ def depth_report(result, tolerance=0.05):
                                      _pct(r["up_wrong"], r["covered"]),
                                      f"{100 * r['up_rmse']:.2f}"]) + " |"
                   if "covered" in r else "| | | |")
-            lines.append(f"| {r['pair']} | {r['pattern']} | {r['guide']} | "
+            lines.append(f"| {_name(r['pair'])} | {r['pattern']} | {r['guide']} | "
                          f"{_pct(r['valid'], r['known'])} | {_pct(r['wrong'], r['known'])} | "
                          f"{_pct(r['wrong_valid'], r['known'])} {up}")
         lines.append("")

@@ -18,6 +18,8 @@ __all__ = ["Results"]
 
 #: the keys of one row of the table
 _ROW_KEYS = {"image", "pattern", "method", "metric", "value"}
+#: the decimals of a metric's values in the Markdown tables
+DIGITS = {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
 
 #: Student's t quantile at 0.975 of 1 to 127 degrees of freedom, as
 #: ``scipy.special.stdtrit(df, 0.975)`` gives it (scipy 1.17; a test compares them with the
@@ -442,7 +444,7 @@ class Results:
         s = self.summary()
         all_inf = {c for c, (n, _, kinds) in self.left_out().items() if n == 0
                    and kinds == ("+inf",)}
-        fmt = {"cfa_psnr": 2, "cpsnr": 2, "ssim": 4, "ms_ssim": 4, "zipper": 2}
+        fmt = dict(DIGITS)
         if digits is not None:
             if not isinstance(digits, dict):
                 raise TypeError(f"digits: expected a dict of metric -> digits, got "
@@ -506,19 +508,24 @@ class Results:
                       "mean [95 % confidence interval] (the interval of the difference, not the "
                       "spread of the images).", ""]
             for p in self.config.patterns:
+                paired = [m for m in others
+                          if self.config.applies(p, m) and self.config.applies(p, base)]
+                if not paired:              # a table of no row had been printed (n/a: notes)
+                    continue
                 lines += [f"**{p}**", "",
                           "| method | " + " | ".join(f"Δ {METRIC_LABELS[k]}"
                                                      for k in self.config.metrics) + " |",
                           "|---" * (len(self.config.metrics) + 1) + "|"]
-                for m in others:
-                    if not (self.config.applies(p, m) and self.config.applies(p, base)):
-                        continue
+                for m in paired:
                     cells = []
                     for k in self.config.metrics:
                         diffs, mean, lo, hi = self.paired(p, m, k, base)
                         f = fmt[k]
-                        # no image on which both are finite: no difference to show
+                        # no image on which both are finite: no difference to show; one:
+                        # no interval (lo = hi = the mean had read as an exact difference)
                         cells.append("—" if diffs.size == 0 else
+                                     f"{mean:+.{f}f} (1 image, no interval)"
+                                     if diffs.size == 1 else
                                      f"{mean:+.{f}f} [{lo:+.{f}f}, {hi:+.{f}f}]")
                     lines.append(f"| {self._label(p, m)} | " + " | ".join(cells) + " |")
                 lines.append("")
@@ -543,7 +550,9 @@ class Results:
                 for m in self.config.methods:
                     v = [r["value"] for r in self.rows if r["image"] == image and r["pattern"] == p
                          and r["method"] == m and r["metric"] == k]
-                    cell = f"{v[0]:.4g}" if v else "n/a"
+                    # the summary's decimals per metric (".4g" had mixed 35.6 with 38.78 and
+                    # printed a perfect SSIM as 1); the paper's values as it prints them
+                    cell = f"{v[0]:.{DIGITS[k]}f}" if v else "n/a"
                     if m in paper:
                         j = list(ALL_METRICS).index(k)
                         cell += f" ({paper[m][j]:.4g})"

@@ -614,7 +614,7 @@ def resolve_z_filters(filters, pattern, bit_depth, name="filters"):
             return shipped
         raise ValueError(f"{name}: method 'z_guided' needs z_guided filters, and none ship for "
                          f"pattern {pattern.name!r} at {bit_depth} bits: fit some with "
-                         "rgbz_fast.reconstruction.train_z_guided and pass filters=")
+                         "rgbz_fast.reconstruction.train_z_guided and pass filters=FILE")
     for f in cands:
         d = f.for_pattern(pattern)
         if d is not None and d.bit_depth == bit_depth:
