@@ -74,8 +74,8 @@ def add_parser(sub):
 def run(args):
     import tifffile
 
-    from .._devtools.plots import (depth_flags_figure, depth_preview, full_depth_preview,
-                                   nearest_measurement)
+    from .._devtools.plots import (depth_flags_figure, depth_preview, depth_scale,
+                                   full_depth_preview, nearest_measurement)
     from ..io import atomic_write, load_frame
     from ..tof import ToFCalibration, tof_depth
 
@@ -119,8 +119,11 @@ def run(args):
             title = (f"{f.stem}: depth, {100 * summary['valid_fraction']:.1f} % of "
                      f"{summary['measurements']} measurements valid")
             nearest = nearest_measurement(res)                  # both figures' grid
+            # one colour scale for both previews of the frame (each had taken its own 1st-99th
+            # percentile: one colour was two depths in two figures written side by side)
+            scale = args.range if args.range is not None else depth_scale(res, nearest)
             atomic_write(out / png_name, depth_preview(
-                res, title, args.range,
+                res, title, scale,
                 frame.tof.valid if "truth_unknown_fraction" in summary else None, nearest))
             atomic_write(out / flags_name, depth_flags_figure(res, f"{f.stem}: why measurements "
                                                                     "are flagged", nearest))
@@ -133,7 +136,7 @@ def run(args):
                      "covered_fraction": float(np.isfinite(up).mean())}))
                 atomic_write(out / full_names[0], buf.getvalue())
                 atomic_write(out / full_names[1], full_depth_preview(
-                    up, f"{f.stem}: depth at every pixel", args.range))
+                    up, f"{f.stem}: depth at every pixel", scale))
                 buf = io.BytesIO()                  # how much each depth is to be trusted
                 tifffile.imwrite(buf, conf, description=json.dumps(
                     {"unit": "1", "range": [0, 1], "source": str(f),

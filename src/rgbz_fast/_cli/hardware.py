@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from . import _common as c
 
@@ -111,7 +112,9 @@ def run(args):
         text += "\n## Sweep\n\n" + hw.format_sweep(rows) + "\n"
         if out is not None:
             files["hardware_sweep.png"] = hardware_sweep_plot(
-                rows, f"{args.method} on {pattern.name}")
+                rows, f"{args.method} on {pattern.name}",
+                dataset=Path(args.dataset).name if args.dataset is not None
+                else "scikit-image's samples")
     report["command"] = c.command_line(args)
     doc = json_text(report) + "\n"
     files.update({"hardware.md": text, "hardware.json": doc})

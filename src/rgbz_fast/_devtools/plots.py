@@ -59,6 +59,23 @@ def nearest_measurement(res):
     return idx[0][::k, ::k], idx[1][::k, ::k]
 
 
+def _percentile_scale(good):
+    """(min, max) metres of a colour map: the 1st to 99th percentile of ``good``."""
+    scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
+        else (0.0, 1.0)
+    return scale if scale[1] > scale[0] else (scale[0], scale[0] + 1e-3)
+
+
+def depth_scale(res, nearest=None):
+    """The default colour scale of :func:`depth_preview`: the 1st to 99th percentile of the
+    valid depth on the preview's grid. ``rgbz-fast depth`` gives it to both previews of a
+    frame (each had taken its own, so one colour was two depths in two figures side by side)."""
+    iy, ix = nearest_measurement(res) if nearest is None else nearest
+    depth = res.to_frame(res.depth)[iy, ix]
+    valid = res.to_frame(res.valid, fill=False).astype(bool)[iy, ix]
+    return _percentile_scale(depth[valid])
+
+
 def depth_preview(res, title, scale=None, truth_known=None, nearest=None):
     """An 8-bit colour-mapped PNG of a depth result, with its colour scale (PNG bytes).
 
@@ -82,12 +99,8 @@ def depth_preview(res, title, scale=None, truth_known=None, nearest=None):
     if truth_known is not None and not np.all(truth_known):
         known = np.asarray(truth_known, bool)
         unknown = res.to_frame(~known, fill=False).astype(bool)[iy, ix]
-    good = depth[valid]
     if scale is None:
-        scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
-            else (0.0, 1.0)
-        if scale[1] <= scale[0]:
-            scale = (scale[0], scale[0] + 1e-3)
+        scale = depth_scale(res, (iy, ix))
     rows, cols = res.shape
     width = 6.4
     fig, ax = plt.subplots(figsize=(width, width * rows / cols * 0.92 + 0.9))
@@ -130,6 +143,21 @@ def flag_bits():
     return {label: int(getattr(tof, name)) for label, name, _ in FLAG_REASONS}
 
 
+def share_text(count, total):
+    """``count`` of ``total`` as a percentage of one decimal, as the command's summary line
+    writes it: "< 0.1 %" for a share that rounds to 0.0 but is not none, "> 99.9 %" for one
+    that rounds to 100.0 but is not all (the legend had said "0.0 %" of a category it drew)."""
+    count, total = int(count), max(int(total), 1)
+    if count == 0 or count >= total:
+        return f"{100 * (count >= total) * (count > 0):d} %"
+    share = 100 * count / total
+    if share < 0.05:
+        return "< 0.1 %"
+    if share >= 99.95:
+        return "> 99.9 %"
+    return f"{share:.1f} %"
+
+
 def depth_flags_figure(res, title, nearest=None):
     """Why each Z measurement is flagged, as a map with a legend (PNG bytes).
 
@@ -161,7 +189,7 @@ def depth_flags_figure(res, title, nearest=None):
     ax.set_xticks([])
     ax.set_yticks([])
     n = max(res.n_sites, 1)
-    handles = [Patch(color=colour, label=f"{label} ({100 * np.mean(category == k):.1f} %)")
+    handles = [Patch(color=colour, label=f"{label} ({share_text(np.sum(category == k), n)})")
                for k, (label, colour) in enumerate(FLAG_CATEGORIES)
                if k == 0 or np.any(category == k)]
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8,
@@ -195,15 +223,12 @@ def full_depth_preview(depth, title, scale=None):
     (drawn from every k-th pixel, :func:`preview_step`)."""
     matplotlib, plt = _pyplot()
     covered = float(np.isfinite(depth).mean()) if depth.size else 0.0
+    missing = int(depth.size - np.isfinite(depth).sum())
     rows, cols = depth.shape
     k = preview_step(depth.shape)
     depth = depth[::k, ::k]
-    good = depth[np.isfinite(depth)]
     if scale is None:
-        scale = (float(np.percentile(good, 1)), float(np.percentile(good, 99))) if good.size \
-            else (0.0, 1.0)
-        if scale[1] <= scale[0]:
-            scale = (scale[0], scale[0] + 1e-3)
+        scale = _percentile_scale(depth[np.isfinite(depth)])
     fig, ax = plt.subplots(figsize=(6.4, 6.4 * rows / cols * 0.92 + 0.6))
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.6")
     im = ax.imshow(np.ma.masked_invalid(depth), cmap=cmap, vmin=scale[0], vmax=scale[1],
@@ -211,6 +236,13 @@ def full_depth_preview(depth, title, scale=None):
     ax.set_xticks([])
     ax.set_yticks([])
     fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, extend="both").set_label("distance (m)")
+    if covered < 1:
+        # grey said, as the sampled preview says its grey: it had been unexplained
+        from matplotlib.patches import Patch
+
+        ax.legend(handles=[Patch(color="0.6", label=f"no depth (NaN, "
+                                 f"{share_text(missing, rows * cols)})")],
+                  loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8, frameon=False)
     ax.set_title(f"{title} ({100 * covered:.1f} % covered)", fontsize=9)
     return _png(fig, plt, bbox_inches="tight")
 
@@ -233,6 +265,7 @@ def tradeoff_figure(res):
     """
     from matplotlib.lines import Line2D
 
+    from ..reconstruction import NEEDS_TOF
     from .tradeoff import NO_EXP, PATTERNS, QUICK_NOTE, threads_text
 
     _, plt = _pyplot()
@@ -284,8 +317,12 @@ def tradeoff_figure(res):
     def header(text):
         return Line2D([], [], ls="none", label=text)
 
+    # z_guided on a NIR estimated from the RGB (res["ir_estimated"]): marked, and the text
+    # report's caveat said under the panels (the plot had shown its rows as any other's)
+    leaked = [m for m in methods if m in NEEDS_TOF] if res.get("ir_estimated") else []
     handles = [header("colour: method")]
-    handles += [point(m, face=colours[m], edge=colours[m]) for m in methods]
+    handles += [point(m + ("*" if m in leaked else ""), face=colours[m], edge=colours[m])
+                for m in methods]
     handles += [header("fill: domain"), point("intensity"),
                 point("colour difference", face="white", width=1.6)]
     handles += [header("shape: precision, exp")]
@@ -295,15 +332,31 @@ def tradeoff_figure(res):
                       marker=_MARKERS[(prec, exp)], face="white", width=1.2)
                 for prec, exp in shapes if exp != NO_EXP or not any(
                     (prec, e) in shapes for e in ("libm", "fast"))]
-    handles += [header("Pareto front"),
-                Line2D([], [], ls="--", color="k", lw=1, marker="o", markersize=10,
-                       markerfacecolor="none", markeredgecolor="k", label="ringed, dashed")]
+    # the line beside each point: it had been explained nowhere, and lies left of its point
+    # (the point is the best run), so it read as an error bar the point falls outside of
+    handles += [header("line: speed spread"),
+                Line2D([], [], color="k", lw=1, alpha=0.5,
+                       label="IQR of the timed runs;\npoint: the best run")]
+    if any(r["pareto"] for r in rows):          # a quick run computes no front: none is drawn
+        handles += [header("Pareto front"),
+                    Line2D([], [], ls="--", color="k", lw=1, marker="o", markersize=10,
+                           markerfacecolor="none", markeredgecolor="k", label="ringed, dashed")]
     legend = fig.legend(handles=handles, loc="center left", bbox_to_anchor=(1.0, 0.5),
                         fontsize=8, frameon=False, handletextpad=0.6)
     for text, h in zip(legend.get_texts(), handles):
         if h.get_marker() in (None, "None", "none", "") and h.get_linestyle() in ("None", "none"):
             text.set_fontweight("bold")                               # a header
     fig.tight_layout()
+    if leaked:
+        import textwrap
+
+        from .tradeoff import _leak_note
+
+        renderer = fig.canvas.get_renderer()
+        y0 = min(fig.transFigure.inverted().transform(
+            ax.get_tightbbox(renderer).p0)[1] for ax in fig.axes)
+        fig.text(0.01, y0 - 0.02, textwrap.fill("* " + _leak_note(res), 160), ha="left",
+                 va="top", fontsize=8, color="0.25")
     return fig
 
 
@@ -349,11 +402,16 @@ def pattern_study_plot(res):
                    color="C3" if r["layout"] in front else "C0",
                    edgecolor="k" if r["layout"] in front else "none", zorder=3)
     fr = sorted((r for r in pts if r["layout"] in front), key=lambda r: r["wall_sigma_mm"])
+    # the dashed line's entry only where a line is drawn (one layout on the front draws none)
     ax.plot([r["wall_sigma_mm"] for r in fr], [r["cpsnr"] for r in fr], "k--", lw=1,
-            zorder=1, label="Pareto front")
-    for v in (np.percentile(ops, 10), ops.max()) if ops.size and ops.max() > 0 else ():
-        ax.scatter([], [], s=40 + 400 * v / ops.max(), color="C0", alpha=0.5,
-                   label=f"{v:.1f} ops per pixel")
+            zorder=1, label="Pareto front" if len(fr) > 1 else None)
+    if len(fr) == 1:
+        ax.scatter([], [], s=60, color="C3", alpha=0.5, edgecolor="k",
+                   label="on the Pareto front")
+    # one entry per distinct cost as printed: layouts of one cost had listed it twice
+    sizes = (np.percentile(ops, 10), ops.max()) if ops.size and ops.max() > 0 else ()
+    for text, v in {f"{v:.1f} ops per pixel": v for v in sizes}.items():
+        ax.scatter([], [], s=40 + 400 * v / ops.max(), color="C0", alpha=0.5, label=text)
     st = res["settings"]
     ax.set_xlabel(f"predicted depth noise on a wall at {st['wall_distance']:g} m "
                   "(guided ToF ISP), mm")
@@ -393,29 +451,76 @@ def pattern_study_plot(res):
     return _png(fig, plt)
 
 
-def hardware_sweep_plot(rows, title=""):
+def hardware_sweep_plot(rows, title="", dataset=None):
     """Quality (share of Z sites more than 1 LSB from float64, log) against table + datapath
     bits of :func:`rgbz_fast._devtools.hardware.run_sweep`'s rows (PNG bytes): green where the
-    target is met, outlined and labelled on the front."""
+    target is met, outlined and labelled on the front; a configuration with no site beyond
+    1 LSB (0 %, which a log axis cannot show) is a triangle at the axis floor. The title
+    names ``dataset`` (when given) and the images measured."""
+    from matplotlib.lines import Line2D
+
     from .hardware import TARGET
 
     _, plt = _pyplot()
     ok = [r for r in rows if "bits" in r]
+    floor = 1e-4
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    points = []
     for r in ok:
         x = (r["bits"]["tables"] + r["bits"]["datapath"]) / 1000.0
-        y = max(100.0 - r["within_1lsb_pct"], 1e-4)      # exact rows drawn at the axis floor
+        beyond = 100.0 - r["within_1lsb_pct"]
+        exact = beyond <= 0
+        # exact rows drawn at the axis floor, as triangles: a dot there read as 1e-4 %
+        y = floor if exact else max(beyond, floor)
         ax.scatter(x, y, c="tab:green" if r["meets_target"] else "tab:red",
-                   s=36 if r["pareto"] else 14, edgecolors="k" if r["pareto"] else "none",
-                   zorder=3)
+                   marker="v" if exact else "o", s=36 if r["pareto"] else 14,
+                   edgecolors="k" if r["pareto"] else "none", zorder=3)
         if r["pareto"] or r["label"] == "default":
-            ax.annotate(r["label"], (x, y), fontsize=7, xytext=(3, 3),
-                        textcoords="offset points")
-    ax.axhline(100.0 - TARGET["within_1lsb_pct"], color="grey", ls="--", lw=0.8)
+            points.append((x, y, r["label"]))
+    target = 100.0 - TARGET["within_1lsb_pct"]
+    ax.axhline(target, color="grey", ls="--", lw=0.8)
     ax.set_yscale("log")
     ax.set_xlabel("table + datapath bits (thousands; line buffers excluded: fixed)")
     ax.set_ylabel("% of Z sites more than 1 LSB from float64")
-    ax.set_title(title, fontsize=9)
+    images = {e.get("images") for r in ok for e in (r.get("error") or {}).values()
+              if isinstance(e, dict)} - {None}
+    what = ", ".join(t for t in (
+        title, f"dataset {dataset}" if dataset else "",
+        f"{max(images)} image{'s' if max(images) != 1 else ''}" if images else "") if t)
+    ax.set_title(what, fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
+
+    def dot(colour, label, marker="o", edge="none", size=6):
+        return Line2D([], [], ls="none", marker=marker, markersize=size, markerfacecolor=colour,
+                      markeredgecolor=edge, label=label)
+
+    handles = [dot("tab:green", "meets the target"), dot("tab:red", "misses the target"),
+               dot("white", "Pareto front (labelled)", edge="k", size=8),
+               Line2D([], [], ls="--", color="grey", lw=0.8,
+                      label=f"target: {target:g} % beyond 1 LSB")]
+    if any(100.0 - r["within_1lsb_pct"] <= 0 for r in ok):
+        handles.append(dot("0.5", f"0 %: exact (drawn at {floor:g} %)", marker="v"))
+    ax.legend(handles=handles, fontsize=7, loc="upper right", framealpha=0.9)
     fig.tight_layout()
+    # labels last, on the final axes: each takes the first offset whose box covers no label
+    # placed before it nor the legend ("default" and "recip_table_size=16" had printed as one
+    # smear, a few bits apart at the floor)
+    renderer = fig.canvas.get_renderer()
+    taken = [ax.get_legend().get_window_extent(renderer)]
+    for x, y, label in sorted(points, key=lambda p: (p[1], p[0])):
+        for dx, dy in ((4, 4), (4, -11), (4, 13), (4, -20), (-4, 4), (-4, -11), (4, 22),
+                       (4, -29), (-4, 13), (-4, -20), (4, 31), (4, -38)):
+            t = ax.annotate(label, (x, y), fontsize=7, xytext=(dx, dy),
+                            textcoords="offset points", ha="left" if dx > 0 else "right",
+                            arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5")
+                            if abs(dy) > 13 else None)
+            box = t.get_window_extent(renderer)
+            if not any(box.overlaps(b) for b in taken):
+                break
+            t.remove()
+        else:
+            t = ax.annotate(label, (x, y), fontsize=7, xytext=(4, 4),
+                            textcoords="offset points")
+            box = t.get_window_extent(renderer)
+        taken.append(box)
     return _png(fig, plt)

@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import io
 import os
+import re
 
 import numpy as np
 
 from .._patterns import get_pattern
 from .._validate import check_flag, check_path
 from ..io import atomic_write
-from ..reconstruction import reconstruct
+from ..reconstruction import NEEDS_TOF, reconstruct
 from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, EvalConfig
 from ._results import Results
 from ._cache import _safe
@@ -200,6 +201,93 @@ def _limits(lo, hi):
     return lo - pad, hi + pad
 
 
+#: the mark of a method whose guide, the NIR, was estimated from the very RGB it had to
+#: reconstruct (z_guided without a registered NIR image): the tables say it in the method's
+#: label; a figure has no room for that sentence, so it marks the label and says it below
+LEAK_MARK = "*"
+#: the font size of the notes under a figure
+NOTE_SIZE = 7.5
+
+
+def _estimated_images(results, method):
+    """The images on which ``method`` was guided by a NIR estimated from the RGB, on any
+    pattern (:meth:`Results.ir_estimated`)."""
+    return list(dict.fromkeys(i for p in results.config.patterns
+                              for i in results.ir_estimated(p, method)))
+
+
+def _chart_labels(results, methods):
+    """({method: label}, notes) of a chart: a method guided by a NIR estimated from the RGB is
+    marked :data:`LEAK_MARK` and a note says what the mark means, as the tables' label does
+    (the figures had shown z_guided's leaked result as the best method, unmarked)."""
+    labels, notes = {}, []
+    n = len(results.images())
+    for m in methods:
+        label = METHOD_LABELS.get(m, m)
+        est = _estimated_images(results, m)
+        if est:
+            notes.append(f"{LEAK_MARK} {label}: NIR estimated from the RGB on {len(est)} of {n} "
+                         "images: its guide leaks the answer, not evidence (measure it on "
+                         "registered RGB + NIR pairs)")
+            label += LEAK_MARK
+        labels[m] = label
+    return labels, notes
+
+
+def _chars(inches, fontsize, em=0.6):
+    """About how many characters of ``fontsize`` points fit in ``inches`` (DejaVu Sans: 0.6 em
+    a character of text, 0.72 of a tile's capitals)."""
+    return max(8, int(inches * 72 / (em * fontsize)))
+
+
+def _wrap(text, chars):
+    """``text`` broken into lines of at most ``chars`` characters (its own line breaks kept)."""
+    import textwrap
+
+    return "\n".join(textwrap.fill(line, chars, break_on_hyphens=False) or line
+                     for line in text.split("\n"))
+
+
+def _pattern_label(name, chars):
+    """A pattern's name as a figure shows it: a custom tile (rows joined by '/', as long as
+    ``ZRGRGRGR/BGBGBGBG/GRGRZRGR/BGBGBGBG``) broken after a '/' into lines of at most
+    ``chars`` characters, so that it does not run into its neighbours' labels."""
+    name = _shown_name(name)
+    if len(name) <= chars or "/" not in name:
+        return name
+    lines = [""]
+    for part in re.findall(r"[^/]+/?|/", name):
+        if lines[-1] and len(lines[-1]) + len(part) > chars:
+            lines.append("")
+        lines[-1] += part
+    return "\n".join(lines)
+
+
+def _footnote(fig, lines, fontsize=NOTE_SIZE):
+    """Notes under everything the figure's axes draw (their tick labels included), left-aligned
+    with them and wrapped to the figure's width; the figures are saved with a tight box,
+    which takes the notes in. Returns the Text (None without lines)."""
+    lines = [line for line in lines if line]
+    if not lines:
+        return None
+    renderer = fig.canvas.get_renderer()
+    boxes = [ax.get_tightbbox(renderer) for ax in fig.axes]
+    inv = fig.transFigure.inverted()
+    x0 = min(inv.transform((b.x0, b.y0))[0] for b in boxes)
+    y0 = min(inv.transform((b.x0, b.y0))[1] for b in boxes)
+    chars = max(_chars(fig.get_figwidth() * (1 - max(x0, 0.0)), fontsize), 64)
+    return fig.text(max(x0, 0.0), y0 - 0.02, "\n".join(_wrap(line, chars) for line in lines),
+                    ha="left", va="top", fontsize=fontsize, color="0.25")
+
+
+def _not_applicable_note(results, pairs):
+    """The note of the (pattern, method) slots a chart marks n/a ("" when none)."""
+    if not pairs:
+        return ""
+    return ("n/a: " + "; ".join(f"{METHOD_LABELS.get(m, m)} on {p}" for p, m in pairs)
+            + " (the method does not apply to the pattern: the reason is in summary.md)")
+
+
 def bar_chart(results, metric):
     """Fig. 20-like chart: mean per method and pattern, ±1 std over the images (PNG bytes).
 
@@ -207,7 +295,11 @@ def bar_chart(results, metric):
     arbitrary axis floor means nothing for a PSNR; the axis spans the
     whiskers, so none is cut, and the legend sits beside the plot. The
     spread is that of the images (it shows how hard they are, not how sure
-    the ranking is): :func:`paired_chart` shows the latter.
+    the ranking is): :func:`paired_chart` shows the latter. The title says the
+    run's settings (:meth:`Results.label`); a slot without a point says why
+    ("n/a", "all +inf"), and notes under the plot say what the tables say
+    beside the numbers (n/a, z_guided's guide estimated from the RGB, marked
+    ``*``).
     """
     return _figure_png(_bar_figure(*_chart_inputs(results, metric)))
 
@@ -222,36 +314,62 @@ def _chart_inputs(results, metric):
 
 
 def _bar_figure(results, metric):
+    from matplotlib.transforms import blended_transform_factory
+
     plt = _pyplot()
     s = results.summary()
     cfg = results.config
     colours = _colours(cfg.methods)
+    labels, notes = _chart_labels(results, cfg.methods)
     nm = len(cfg.methods)
     fig, ax = plt.subplots(figsize=(2.2 + 0.55 * nm * len(cfg.patterns), 3.6))
-    lows, highs = [], []
+    lows, highs, empty = [], [], []
     for j, m in enumerate(cfg.methods):
         x = np.arange(len(cfg.patterns)) + (j - (nm - 1) / 2) * 0.8 / nm
         mean = np.array([s[(p, m, metric)][0] for p in cfg.patterns])
         std = np.array([s[(p, m, metric)][1] for p in cfg.patterns])
         ax.errorbar(x, mean, yerr=std, fmt="o", ms=6, capsize=4, lw=1.4, color=colours[m],
-                    label=METHOD_LABELS.get(m, m))
+                    label=labels[m])
         lows.append(mean - std)
         highs.append(mean + std)
+        empty += [(xi, p, m) for xi, p, v in zip(x, cfg.patterns, mean) if not np.isfinite(v)]
     if np.isfinite(np.concatenate(lows)).any():
         ax.set_ylim(*_limits(np.concatenate(lows), np.concatenate(highs)))
-    ax.set_xticks(np.arange(len(cfg.patterns)), cfg.patterns)
+    # a slot with no point says why: the method does not apply to the pattern (the tables'
+    # n/a), or every value is +inf (a perfect reconstruction: no finite mean); an empty slot
+    # had read as a method that was forgotten
+    left = results.left_out()
+    slot = blended_transform_factory(ax.transData, ax.transAxes)
+    na = []
+    for xi, p, m in empty:
+        if not cfg.applies(p, m):
+            text = "n/a"
+            na.append((p, m))
+        elif left.get((p, m, metric), (1, 0, ()))[2] == ("+inf",):
+            text = "all +inf"
+        else:
+            text = "no value"
+        ax.text(xi, 0.03, text, transform=slot, rotation=90, ha="center", va="bottom",
+                fontsize=7, color=colours[m])
+    chars = _chars(0.55 * nm, 10, em=0.72)              # a pattern's slot, at the ticks' size
+    ax.set_xticks(np.arange(len(cfg.patterns)), [_pattern_label(p, chars) for p in cfg.patterns])
     ax.set_xlim(-0.6, len(cfg.patterns) - 0.4)
     ax.set_ylabel(METRIC_LABELS[metric])
     # a mean over fewer images than the results hold (a PSNR of +inf left out) is said
-    left = sum(1 for (_, _, k) in results.left_out() if k == metric)
+    n_left = sum(1 for (_, _, k) in left if k == metric)
     n_images = len(results.images())
     head = (f"mean ± 1 std over {n_images} image(s)" if n_images != 1 else
             "1 image, no spread")
-    ax.set_title(f"{METRIC_LABELS[metric]}: {head} ({_direction(metric)})"
-                 + (f"\n{left} mean(s) leave out infinite values: see summary.md" if left
+    # the second line: what the tables' header says the numbers are (noise, bit depth,
+    # demosaic...): two runs differing in those had given charts of the same text
+    head = f"{METRIC_LABELS[metric]}: {head} ({_direction(metric)})"
+    ax.set_title(head + "\n" + _wrap(results.label(), max(_chars(fig.get_figwidth(), 9),
+                                                            len(head)))
+                 + (f"\n{n_left} mean(s) leave out infinite values: see summary.md" if n_left
                     else ""), fontsize=9)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     ax.grid(axis="y", alpha=0.3)
+    _footnote(fig, notes + [_not_applicable_note(results, na)])
     return fig
 
 
@@ -262,7 +380,9 @@ def paired_chart(results, metric, baseline=None):
     its confidence interval in the method's colour, and the zero line (no
     difference). Paired differences remove what the images contribute, so a
     method that is better on every image shows it even when the images'
-    spread dwarfs the gain.
+    spread dwarfs the gain. The dots are counted as drawn: an image on which
+    either method is not finite (a PSNR of +inf) has none, and a note says so;
+    n/a and z_guided's estimated guide are said as in :func:`bar_chart`.
     """
     results, metric = _chart_inputs(results, metric)
     if baseline is not None:
@@ -278,13 +398,31 @@ def _paired_figure(results, metric, baseline=None):
     if not others:
         raise ValueError(f"baseline: {base!r} is the only method; nothing to compare")
     colours = _colours(cfg.methods)
+    labels, notes = _chart_labels(results, cfg.methods)
     fig, axes = plt.subplots(1, len(cfg.patterns), sharey=True, squeeze=False,
                              figsize=(1.2 + 0.75 * len(others) * len(cfg.patterns) + 0.8, 3.8))
     lo_all, hi_all = [0.0], [0.0]
     rng = np.random.default_rng(0)                    # the jitter of the dots, reproducible
+    n_images = len(results.images())
+    drawn, short, na = set(), [], []          # dots per panel slot; slots with images left out
+
+    def images_of(p, m):
+        return {r["image"] for r in results.rows if r["pattern"] == p and r["method"] == m
+                and r["metric"] == metric}
+
     for ax, p in zip(axes[0], cfg.patterns):
         for i, m in enumerate(others):
+            if not (cfg.applies(p, m) and cfg.applies(p, base)):
+                # the tables' n/a: a tick with nothing above it had read as a method forgotten
+                ax.text(i, 0.03, "n/a", transform=ax.get_xaxis_transform(), rotation=90,
+                        ha="center", va="bottom", fontsize=7, color=colours[m])
+                na.append((p, m if cfg.applies(p, base) else base))
+                continue
             diffs, mean, lo, hi = results.paired(p, m, metric, base)
+            total = len(images_of(p, m) & images_of(p, base))
+            drawn.add(diffs.size)
+            if diffs.size < total:
+                short.append((p, m, diffs.size, total))
             if diffs.size:
                 ax.plot(i + rng.uniform(-0.18, 0.18, diffs.size), diffs, ".", ms=4,
                         color="0.55", alpha=0.7, zorder=1)
@@ -292,23 +430,43 @@ def _paired_figure(results, metric, baseline=None):
                             capsize=5, lw=1.8, color=colours[m], zorder=3)
                 lo_all += [diffs.min(), lo]
                 hi_all += [diffs.max(), hi]
+            else:
+                ax.text(i, 0.03, "no finite Δ", transform=ax.get_xaxis_transform(),
+                        rotation=90, ha="center", va="bottom", fontsize=7, color=colours[m])
         ax.axhline(0, color="k", lw=0.8)
-        ax.set_xticks(range(len(others)), [METHOD_LABELS.get(m, m) for m in others],
+        ax.set_xticks(range(len(others)), [labels[m] for m in others],
                       rotation=30, ha="right", fontsize=8)
         ax.set_xlim(-0.6, len(others) - 0.4)
-        ax.set_title(p, fontsize=9)
+        # a custom tile's long name broken at its '/': the panels' titles had run together
+        ax.set_title(_pattern_label(p, _chars(0.75 * len(others), 9, em=0.72)), fontsize=9)
         ax.grid(axis="y", alpha=0.3)
     axes[0][0].set_ylim(*_limits(lo_all, hi_all))
     unit = METRIC_LABELS[metric].split("(")[-1].rstrip(")") if "(" in METRIC_LABELS[metric] \
         else ""
     name = METRIC_LABELS[metric].split(" (")[0]
-    axes[0][0].set_ylabel(f"Δ {name} vs {METHOD_LABELS.get(base, base)}"
-                          + (f" ({unit})" if unit else ""))
-    # two lines: one line of this length ran off a two-mask figure
-    fig.suptitle(f"{name}, each method minus {METHOD_LABELS.get(base, base)} on the same image "
-                 f"({_direction(metric)})\ndots = images ({len(results.images())}), "
-                 "diamond = mean with 95 % confidence interval", fontsize=9)
+    base_label = labels[base]
+    axes[0][0].set_ylabel(f"Δ {name} vs {base_label}" + (f" ({unit})" if unit else ""))
+    # the count of the dots is the dots drawn: an image on which either method is not finite
+    # (a PSNR of +inf) has no difference, and the title had counted it all the same
+    if not short:
+        dots = f"dots = images ({n_images})"
+    elif len(drawn) == 1:
+        dots = f"dots = images ({min(drawn)} of {n_images}: see the note)"
+    else:
+        dots = f"dots = images (of {n_images}: see the note)"
+    # two lines: one line of this length ran off a two-mask figure; the third what the
+    # tables' header says the numbers are (noise, bit depth, demosaic...)
+    head = (f"{name}, each method minus {base_label} on the same image "
+            f"({_direction(metric)})\n{dots}, diamond = mean with 95 % confidence interval")
+    width = max(_chars(fig.get_figwidth(), 9), *(len(line) for line in head.split("\n")))
+    fig.suptitle(head + "\n" + _wrap(results.label(), width), fontsize=9)
     fig.tight_layout()
+    if short:
+        notes.append("Left out: " + "; ".join(
+            f"{labels[m]} on {_shown_name(p)}: {total - n} of {total} images" for p, m, n, total
+            in short) + " (either method is not finite there: a PSNR is +inf where the test "
+            "image equals its reference; see summary.md)")
+    _footnote(fig, notes + [_not_applicable_note(results, list(dict.fromkeys(na)))])
     return fig
 
 
@@ -396,20 +554,28 @@ def crop_figure(source, config, box=None, size=64):
     from matplotlib.patches import Rectangle
 
     img = source.load()
+    # the registered NIR image when there is one, as the evaluation takes it (the crops had
+    # shown z_guided on a NIR estimated from the RGB whatever the source held)
+    nir = source.load_nir() if config.needs_tof else None
     chain = config.colour_isp()
     tiles = []
+    leaked = []                                 # methods whose guide was estimated from the RGB
     for pname in config.patterns:
-        frame, ref_cfa = image_frames(img, get_pattern(pname), config)
+        frame, ref_cfa = image_frames(img, get_pattern(pname), config, nir=nir)
+        estimated = frame.tof is not None and bool(frame.tof.meta.get("ir_estimated"))
         bayer, bd = frame.pattern.bayer_phase, frame.bit_depth
         ref, st = chain.render(ref_cfa, bayer, bit_depth=bd, return_stages=True)
         row = [("reference", ref)]
         for m in config.methods:
+            label = METHOD_LABELS.get(m, m)
             if not config.applies(pname, m):     # a grey tile where the method does not apply
-                row.append((f"{METHOD_LABELS.get(m, m)} (n/a)", np.full_like(ref, 128)))
+                row.append((f"{label} (n/a)", np.full_like(ref, 128)))
                 continue
+            if estimated and m in NEEDS_TOF:     # marked, and said under the figure
+                leaked.append(label)
+                label += LEAK_MARK
             out = reconstruct(frame, m, params=config.params_for(m))
-            row.append((METHOD_LABELS.get(m, m),
-                        chain.render(out, bayer, bit_depth=bd, gains=st["gains"])))
+            row.append((label, chain.render(out, bayer, bit_depth=bd, gains=st["gains"])))
         tiles.append((pname, row))
     full = tiles[0][1][0][1]
     size = int(min(size, *full.shape[:2]))
@@ -417,12 +583,20 @@ def crop_figure(source, config, box=None, size=64):
         _check_box(box, full.shape)
     y0, x0, h, w = box
     ncol = len(tiles[0][1])
+    # a custom tile's long name broken at its '/' (a panel is 2 inches wide): the titles had
+    # run into each other; the rows' titles take the room of their longest
+    names = {pname: _pattern_label(pname, _chars(1.9, 8, em=0.72)) for pname, _ in tiles}
+    titles = [[(names[pname] + (":\n" if "\n" in names[pname] else ": ") + label) if j
+               else "reference" for j, (label, _) in enumerate(row)] for pname, row in tiles]
+    lines = max(t.count("\n") + 1 for row in titles for t in row)
     # the overview column: the image's aspect, but never so narrow that it shows nothing
     wide = max(1.25 * full.shape[1] / full.shape[0], 1.4)
-    fig = plt.figure(figsize=(2.0 * (ncol + wide), 2.15 * len(tiles) + 0.4))
+    extra = 0.16 * (lines - 1)                  # inches of each row's further title lines
+    fig = plt.figure(figsize=(2.0 * (ncol + wide), (2.15 + extra) * len(tiles) + 0.4))
     # the panels' titles below the figure's title: 0.55 inch kept above the grid
     grid = fig.add_gridspec(len(tiles), ncol + 1, width_ratios=[wide] + [1] * ncol,
-                            wspace=0.08, hspace=0.25, top=1 - 0.55 / fig.get_figheight())
+                            wspace=0.08, hspace=0.25 + extra / 1.9,
+                            top=1 - (0.55 + extra) / fig.get_figheight())
     ax = fig.add_subplot(grid[:, 0])
     ax.imshow(full, interpolation="antialiased")
     ax.add_patch(Rectangle((x0 - 0.5, y0 - 0.5), w, h, fill=False, ec="red", lw=1.6))
@@ -437,8 +611,13 @@ def crop_figure(source, config, box=None, size=64):
             ax.set_yticks([])
             for sp in ax.spines.values():
                 sp.set_edgecolor("red" if j == 0 else "0.6")
-            ax.set_title(f"{pname}: {label}" if j else "reference", fontsize=8)
+            ax.set_title(titles[i][j], fontsize=8)
     fig.suptitle(f"{_shown_name(source.name)}: crop rows {y0}:{y0 + h}, cols {x0}:{x0 + w}, "
                  "enlarged without smoothing", fontsize=9, y=1 - 0.1 / fig.get_figheight())
+    if leaked:
+        # the tables' caveat of z_guided without a registered NIR image, as the charts say it
+        fig.text(0.01, 0.0, f"{LEAK_MARK} {leaked[0]}: NIR estimated from this RGB image: its "
+                 "guide leaks the answer, not evidence (measure it on registered RGB + NIR "
+                 "pairs)", ha="left", va="top", fontsize=NOTE_SIZE, color="0.25")
     # the region, readable by programs (a PNG text chunk): ROW,COL,ROWS,COLS
     return _figure_png(fig, {CROP_KEY: f"{y0},{x0},{h},{w}"})
