@@ -66,6 +66,11 @@ def test_evaluate_depth_refuses_an_rgbnir_folder_without_pairs_or_unread(tmp_pat
     assert main(["evaluate-depth", "--sections", "rgbnir", "--rgbnir", str(empty)]) == 2
     assert f"error: --sections: rgbnir found no pair NNNN_rgb.png + NNNN_nir.png in {empty}" \
         in capsys.readouterr().err
+    # the default sections with that folder given: refused as well (it had printed an empty
+    # section and exited 0)
+    assert main(["evaluate-depth", "--rgbnir", str(empty)]) == 2
+    assert f"error: --rgbnir: rgbnir found no pair NNNN_rgb.png + NNNN_nir.png in {empty}" \
+        in capsys.readouterr().err
     assert main(["evaluate-depth", "--sections", "noise", "--rgbnir", str(empty)]) == 2
     assert ("error: --rgbnir: the sections noise do not read the RGB-NIR pairs; --rgbnir "
             "applies to the rgbnir section") in capsys.readouterr().err

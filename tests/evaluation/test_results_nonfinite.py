@@ -265,6 +265,12 @@ def test_one_paired_image_has_no_interval_and_an_empty_paired_table_is_left_out(
     paired = md.split("Paired differences")[1]
     assert "| SG | +1.71 (1 image, no interval) |" in paired
     assert "[+1.71, +1.71]" not in paired
+    # bilinear and learned alone: learned does not take rows, so nothing pairs there
+    cfg2 = EvalConfig(patterns=("mask1", "rows"), methods=("bilinear", "learned"),
+                      metrics=("cfa_psnr",))
+    rows2 = [r for r in rows if r["method"] in cfg2.methods]
+    paired2 = Results(rows2, cfg2).summary_markdown().split("Paired differences")[1]
+    assert "**mask1**" in paired2 and "**rows**" not in paired2
 
 
 def test_the_image_table_takes_the_summary_decimals():

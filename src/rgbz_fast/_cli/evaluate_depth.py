@@ -68,15 +68,18 @@ def run(args):
         # as --patterns: an option no requested section reads is refused, not ignored
         raise c.CliError(f"--rgbnir: the sections {','.join(sections)} do not read the "
                          "RGB-NIR pairs; --rgbnir applies to the rgbnir section")
-    if args.sections and "rgbnir" in sections and rgbnir is not None and rgbnir.is_dir() \
-            and not any((p.parent / p.name.replace("_rgb", "_nir")).is_file()
-                        for p in rgbnir.glob("*_rgb.png")):
-        # an empty folder had printed an empty section and exited 0, as a missing one had
-        raise c.CliError(f"--sections: rgbnir found no pair NNNN_rgb.png + NNNN_nir.png in "
-                         f"{rgbnir}")
-    if "rgbnir" in sections and (rgbnir is None or not rgbnir.is_dir()):
+    from ..evaluation._depth_guided import rgbnir_pairs
+
+    found = rgbnir is not None and rgbnir.is_dir() and bool(rgbnir_pairs(rgbnir))
+    if "rgbnir" in sections and not found:
+        # asked for (--sections or --rgbnir), a missing or pairless folder had printed an
+        # empty section (or {}) and exited 0 (H103); the default folder of the default
+        # sections is skipped with a line
+        flag = "--sections" if args.sections else "--rgbnir"
+        if rgbnir is not None and rgbnir.is_dir() and (args.sections or args.rgbnir):
+            raise c.CliError(f"{flag}: rgbnir found no pair NNNN_rgb.png + NNNN_nir.png in "
+                             f"{rgbnir}")
         if args.sections:
-            # asked for, it had printed nothing (or {}) and exited 0 (H103)
             raise c.CliError(f"--sections: rgbnir needs the RGB-NIR pairs: {rgbnir} is not a "
                              "folder; pass --rgbnir DIR" if rgbnir is not None else
                              "--sections: rgbnir needs the RGB-NIR pairs: pass --rgbnir DIR "
@@ -91,8 +94,7 @@ def run(args):
     with ticking(f"{NAME}: {','.join(sections)}", c.bars(args)):
         result = evaluate_depth(data, sections=sections, seed=args.seed,
                                 patterns=args.patterns or ("mask1", "mask2"),
-                                rgbnir=rgbnir if rgbnir is not None and rgbnir.is_dir()
-                                else None, **c.limits(args))
+                                rgbnir=rgbnir if found else None, **c.limits(args))
     if args.json:
         # strict JSON, as the other commands' (H40, H48): a value that has none (an RMSE
         # without a valid measurement, a spread of one) is null; it had been NaN, which

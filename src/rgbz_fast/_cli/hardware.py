@@ -113,7 +113,7 @@ def run(args):
         if out is not None:
             files["hardware_sweep.png"] = hardware_sweep_plot(
                 rows, f"{args.method} on {pattern.name}",
-                dataset=Path(args.dataset).name if args.dataset is not None
+                dataset=Path(args.dataset).resolve().name if args.dataset is not None
                 else "scikit-image's samples")
     report["command"] = c.command_line(args)
     doc = json_text(report) + "\n"

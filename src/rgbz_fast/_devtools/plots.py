@@ -515,7 +515,10 @@ def hardware_sweep_plot(rows, title="", dataset=None):
                             arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5")
                             if abs(dy) > 13 else None)
             box = t.get_window_extent(renderer)
-            if not any(box.overlaps(b) for b in taken):
+            # inside the axes too: the rightmost front point's label had run off the figure
+            # (the labels are placed after tight_layout); the left-side offsets take it
+            if not any(box.overlaps(b) for b in taken) and ax.bbox.x0 <= box.x0 \
+                    and box.x1 <= ax.bbox.x1:
                 break
             t.remove()
         else:
@@ -523,4 +526,4 @@ def hardware_sweep_plot(rows, title="", dataset=None):
                             textcoords="offset points")
             box = t.get_window_extent(renderer)
         taken.append(box)
-    return _png(fig, plt)
+    return _png(fig, plt, bbox_inches="tight")

@@ -188,14 +188,19 @@ def total_rows(rows, keys, by):
 RGBNIR_DEPTH = (1.2, 2.0)
 
 
+def rgbnir_pairs(folder):
+    """The RGB images of the RGB-NIR pairs of ``folder`` (``NNNN_rgb.png`` beside
+    ``NNNN_nir.png``), sorted."""
+    return sorted(p for p in Path(folder).glob("*_rgb.png")
+                  if (p.parent / p.name.replace("_rgb", "_nir")).is_file())
+
+
 def rgbnir_rows(folder, patterns, isp, seed, tolerance, limits):
     """The guided ISP on the real NIR reflectances of the RGB-NIR pairs of ``folder`` in front
     of a tilted plane: valid, wrong, wrong and valid (without and with the guide), and the
     guided upsampling's coverage, share off and RMSE."""
     rows = []
-    pairs = sorted(p for p in Path(folder).glob("*_rgb.png")
-                   if (p.parent / p.name.replace("_rgb", "_nir")).is_file())
-    for rgb in pairs:
+    for rgb in rgbnir_pairs(folder):
         nir = read_image(rgb.parent / rgb.name.replace("_rgb", "_nir"), "rgbnir", **limits)
         if nir.ndim == 3:
             nir = nir[..., 0]

@@ -616,8 +616,8 @@ def crop_figure(source, config, box=None, size=64):
                  "enlarged without smoothing", fontsize=9, y=1 - 0.1 / fig.get_figheight())
     if leaked:
         # the tables' caveat of z_guided without a registered NIR image, as the charts say it
-        fig.text(0.01, 0.0, f"{LEAK_MARK} {leaked[0]}: NIR estimated from this RGB image: its "
-                 "guide leaks the answer, not evidence (measure it on registered RGB + NIR "
-                 "pairs)", ha="left", va="top", fontsize=NOTE_SIZE, color="0.25")
+        _footnote(fig, [f"{LEAK_MARK} {leaked[0]}: NIR estimated from this RGB image: its "
+                        "guide leaks the answer, not evidence (measure it on registered RGB + "
+                        "NIR pairs)"])
     # the region, readable by programs (a PNG text chunk): ROW,COL,ROWS,COLS
     return _figure_png(fig, {CROP_KEY: f"{y0},{x0},{h},{w}"})
