@@ -370,3 +370,28 @@ def test_a_long_tile_name_does_not_run_into_other_text(tmp_path, monkeypatch):
     _reports.crop_figure(ImageSource("a", str(tmp_path / "a.png")), cfg, box=(8, 8, 16, 16))
     (crop,) = figs
     assert not _overlaps(crop, [ax.title for ax in crop.axes] + [crop._suptitle])
+
+
+def test_the_charts_name_the_dataset(tmp_path):
+    """PL08's second half: the charts named the run's settings but not its images; the
+    dataset's name now travels with the results (results.json too) into the titles."""
+    import imageio.v3 as iio
+
+    from rgbz_fast.evaluation import Results, evaluate
+    from rgbz_fast.evaluation._reports import _bar_figure, _paired_figure
+
+    ds = tmp_path / "my_scenes"
+    ds.mkdir()
+    rng = np.random.default_rng(0)
+    for n in ("a", "b"):
+        iio.imwrite(ds / f"{n}.png", rng.integers(30, 220, (32, 32, 3), dtype=np.uint8))
+    res = evaluate(str(ds), patterns=("mask1",), methods=("bilinear", "sg"),
+                   metrics=("cfa_psnr",), progress=False)
+    assert res.dataset == "my_scenes"
+    assert Results.from_json(res.to_json()).dataset == "my_scenes"
+    bar = _bar_figure(res, "cfa_psnr")
+    assert "my_scenes: noise-free" in bar.axes[0].get_title()
+    paired = _paired_figure(res, "cfa_psnr")
+    assert "my_scenes: noise-free" in paired._suptitle.get_text()
+    # a list of images has no name: the settings alone
+    assert Results(res.rows, res.config).dataset == ""

@@ -280,6 +280,13 @@ def _footnote(fig, lines, fontsize=NOTE_SIZE):
                     ha="left", va="top", fontsize=fontsize, color="0.25")
 
 
+def _run_line(results):
+    """What the run was, for a chart's title: the dataset's name (when known) and the tables'
+    header (:meth:`Results.label`: noise, bit depth, demosaic...)."""
+    name = _shown_name(results.dataset)
+    return f"{name}: {results.label()}" if name else results.label()
+
+
 def _not_applicable_note(results, pairs):
     """The note of the (pattern, method) slots a chart marks n/a ("" when none)."""
     if not pairs:
@@ -363,7 +370,7 @@ def _bar_figure(results, metric):
     # the second line: what the tables' header says the numbers are (noise, bit depth,
     # demosaic...): two runs differing in those had given charts of the same text
     head = f"{METRIC_LABELS[metric]}: {head} ({_direction(metric)})"
-    ax.set_title(head + "\n" + _wrap(results.label(), max(_chars(fig.get_figwidth(), 9),
+    ax.set_title(head + "\n" + _wrap(_run_line(results), max(_chars(fig.get_figwidth(), 9),
                                                             len(head)))
                  + (f"\n{n_left} mean(s) leave out infinite values: see summary.md" if n_left
                     else ""), fontsize=9)
@@ -459,7 +466,7 @@ def _paired_figure(results, metric, baseline=None):
     head = (f"{name}, each method minus {base_label} on the same image "
             f"({_direction(metric)})\n{dots}, diamond = mean with 95 % confidence interval")
     width = max(_chars(fig.get_figwidth(), 9), *(len(line) for line in head.split("\n")))
-    fig.suptitle(head + "\n" + _wrap(results.label(), width), fontsize=9)
+    fig.suptitle(head + "\n" + _wrap(_run_line(results), width), fontsize=9)
     fig.tight_layout()
     if short:
         notes.append("Left out: " + "; ".join(

@@ -109,6 +109,8 @@ def _cells(groups):
 class Results:
     """A tidy table: one row per image, pattern, method and metric.
 
+    ``dataset`` names the images' source (a folder's name, "scikit-image samples"; "" when
+    the caller gave a list of images), which the figures' titles carry.
     ``skipped`` lists the ``(image, reason)`` of the images an evaluation with
     ``skip_bad=True`` left out; ``raw_images`` the names of the images read from camera raw
     or bare Bayer files, measured at their own bit depth, noise and lens rather than through
@@ -119,6 +121,7 @@ class Results:
     config: EvalConfig = field(default_factory=EvalConfig)
     skipped: list = field(default_factory=list)
     raw_images: list = field(default_factory=list)
+    dataset: str = ""
 
     def __post_init__(self):
         self.config = merge_params(EvalConfig, self.config, name="config")
@@ -133,6 +136,9 @@ class Results:
         self.raw_images = as_list(self.raw_images, "raw_images", "a list of image names")
         if not all(isinstance(n, str) for n in self.raw_images):
             raise TypeError("raw_images: expected a list of image names (strings)")
+        if not isinstance(self.dataset, str):
+            raise TypeError(f"dataset: expected the dataset's name (a string), got "
+                            f"{type(self.dataset).__name__}")
 
     def label(self):
         """:meth:`EvalConfig.label`, with what the images were: the mosaic's settings describe
@@ -383,6 +389,7 @@ class Results:
         return json.dumps(_json_safe(
             {"config": asdict(self.config), "rows": self.rows,
              "skipped": [list(t) for t in self.skipped], "raw_images": list(self.raw_images),
+             "dataset": self.dataset,
              "not_applicable": [[p, m, " ".join(str(why).split())] for (p, m), why
                                 in self.config.not_applicable().items()]}),
             indent=1, default=str, allow_nan=False)
@@ -437,7 +444,8 @@ class Results:
             config["optics"] = Optics(**{k: _json_float(v) for k, v in config["optics"].items()})
         skipped = [tuple(t) for t in data.get("skipped", [])]
         return cls(rows, EvalConfig(**config), skipped=skipped,
-                   raw_images=list(data.get("raw_images", [])))
+                   raw_images=list(data.get("raw_images", [])),
+                   dataset=str(data.get("dataset") or ""))
 
     def summary_markdown(self, digits=None):
         """Per pattern: a table of mean ± std per method and metric, best per column in bold."""

@@ -407,6 +407,16 @@ def dataset_sources(dataset, limit=None):
     return dataset
 
 
+def dataset_name(dataset):
+    """What ``dataset`` (as :func:`evaluate` takes it) is called in the figures' titles: a
+    folder's name, "scikit-image samples", or "" for a list of images."""
+    if dataset is None:
+        return "scikit-image samples"
+    if isinstance(dataset, (str, os.PathLike)):
+        return Path(dataset).resolve().name
+    return ""
+
+
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
              scheduler=None, progress=True, skip_bad=False, **overrides):
     """Run the Fig. 19 evaluation over a dataset; returns :class:`Results`.
@@ -476,6 +486,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     scheduler = check_scheduler(scheduler)
     if processes is not None and scheduler is not None:       # processes had been dropped
         raise ValueError("processes: local processes, which scheduler replaces; give one of them")
+    source = dataset_name(dataset)
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
@@ -515,7 +526,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped,
-                   raw_images=[s.name for s in dataset if s.is_raw])
+                   raw_images=[s.name for s in dataset if s.is_raw], dataset=source)
 
 
 def _run_threads(tasks, nthreads, bar, results):
