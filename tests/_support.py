@@ -133,3 +133,13 @@ def run_past_a_fifo(fn, fifo, timeout, what):
             pass
         pytest.fail(what)
     return done
+
+
+def calibration_fields(**kw):
+    """The fields of a small valid ToFCalibration (2 frequencies, 3 sites of a 4x4 frame, one
+    harmonic), ``kw`` over them."""
+    fields = dict(frequencies=np.array([80e6, 100e6]), offsets=np.zeros((2, 3)),
+                  coefficients=np.zeros((2, 1, 2)),
+                  sites=(np.array([0, 0, 2]), np.array([0, 2, 2])), block=1, shape=(4, 4))
+    fields.update(kw)
+    return fields

@@ -13,19 +13,14 @@ import numpy as np
 import pytest
 
 from rgbz_fast.simulation import Scene, ToFSensor, simulate_tof
+from _support import calibration_fields
 from rgbz_fast.tof import ToFCalibration, calibrate
 
 
-def _fields(**kw):
-    fields = dict(frequencies=np.array([80e6, 100e6]), offsets=np.zeros((2, 3)),
-                  coefficients=np.zeros((2, 1, 2)),
-                  sites=(np.array([0, 0, 2]), np.array([0, 2, 2])), block=1, shape=(4, 4))
-    fields.update(kw)
-    return fields
 
 
 def _cal(**kw):
-    return ToFCalibration(**_fields(**kw))
+    return ToFCalibration(**calibration_fields(**kw))
 
 
 BAD = [

@@ -12,15 +12,10 @@ import numpy as np
 import pytest
 
 from rgbz_fast.simulation import Scene, ToFSensor, simulate_tof
+from _support import calibration_fields
 from rgbz_fast.tof import ToFCalibration, calibrate
 
 
-def _fields(**kw):
-    fields = dict(frequencies=np.array([80e6, 100e6]), offsets=np.zeros((2, 3)),
-                  coefficients=np.zeros((2, 2, 2)),
-                  sites=(np.array([0, 0, 2]), np.array([0, 2, 2])), block=1, shape=(4, 4))
-    fields.update(kw)
-    return fields
 
 
 def test_coefficients_and_dark_offsets_beyond_physics_are_refused(tmp_path):
@@ -31,15 +26,15 @@ def test_coefficients_and_dark_offsets_beyond_physics_are_refused(tmp_path):
                                                  r"reaches sum_k \|\(a_k, b_k\)\| (> 1\.8e\+308"
                                                  r"|= 3\.39) rad; a phase correction is at "
                                                  r"most pi \(a half turn\)$"):
-                ToFCalibration(**_fields(coefficients=coef))
+                ToFCalibration(**calibration_fields(coefficients=coef))
         for value, shown in ((1e5, "1e+05"), (-1e308, "1e+308")):
             with pytest.raises(ValueError, match=rf"^dark: offsets of up to {re_num(shown)} "
                                                  r"DN; .* lies within \[-65536, 65536\] DN"):
-                ToFCalibration(**_fields(dark=np.full((4, 3), value)))
+                ToFCalibration(**calibration_fields(dark=np.full((4, 3), value)))
     # the bounds themselves are accepted: sum_k |(a_k, b_k)| = pi, offsets of 2**16 DN
     coef = np.zeros((2, 2, 2))
     coef[:, 0, 0], coef[:, 1, 1] = np.pi / 2, -np.pi / 2
-    cal = ToFCalibration(**_fields(coefficients=coef, dark=np.full((4, 3), -65536.0)))
+    cal = ToFCalibration(**calibration_fields(coefficients=coef, dark=np.full((4, 3), -65536.0)))
     # an edited file is refused by load, naming the path and the field
     cal.save(tmp_path / "cal.npz")
     arrays = dict(np.load(tmp_path / "cal.npz"))

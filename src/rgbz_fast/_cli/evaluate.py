@@ -215,10 +215,6 @@ def run(args):
     res = evaluate(dataset, config, cache_dir=cache, processes=args.processes,
                    workers=args.workers, scheduler=args.scheduler, progress=c.bars(args),
                    skip_bad=args.skip_bad)
-    # the folder's name for the figures' titles (the sources list carries none)
-    from ..evaluation._run import dataset_name
-
-    res.dataset = dataset_name(args.dataset)
     for name, why in res.skipped:
         print(f"rgbz-fast evaluate: skipped {name}: {c.explain(why, args.parser)}",
               file=sys.stderr)

@@ -348,15 +348,10 @@ def tradeoff_figure(res):
             text.set_fontweight("bold")                               # a header
     fig.tight_layout()
     if leaked:
-        import textwrap
-
+        from ..evaluation._reports import _footnote
         from .tradeoff import _leak_note
 
-        renderer = fig.canvas.get_renderer()
-        y0 = min(fig.transFigure.inverted().transform(
-            ax.get_tightbbox(renderer).p0)[1] for ax in fig.axes)
-        fig.text(0.01, y0 - 0.02, textwrap.fill("* " + _leak_note(res), 160), ha="left",
-                 va="top", fontsize=8, color="0.25")
+        _footnote(fig, ["* " + _leak_note(res)], fontsize=8)     # as evaluate's charts do
     return fig
 
 

@@ -109,8 +109,8 @@ def _cells(groups):
 class Results:
     """A tidy table: one row per image, pattern, method and metric.
 
-    ``dataset`` names the images' source (a folder's name, "scikit-image samples"; "" when
-    the caller gave a list of images), which the figures' titles carry.
+    ``dataset`` names the images' source (the folder they come from, "scikit-image samples";
+    "" when they come from several), which the figures' titles carry.
     ``skipped`` lists the ``(image, reason)`` of the images an evaluation with
     ``skip_bad=True`` left out; ``raw_images`` the names of the images read from camera raw
     or bare Bayer files, measured at their own bit depth, noise and lens rather than through

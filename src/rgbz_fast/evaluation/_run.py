@@ -407,14 +407,12 @@ def dataset_sources(dataset, limit=None):
     return dataset
 
 
-def dataset_name(dataset):
-    """What ``dataset`` (as :func:`evaluate` takes it) is called in the figures' titles: a
-    folder's name, "scikit-image samples", or "" for a list of images."""
-    if dataset is None:
-        return "scikit-image samples"
-    if isinstance(dataset, (str, os.PathLike)):
-        return Path(dataset).resolve().name
-    return ""
+def dataset_name(sources):
+    """What the images ``sources`` (ImageSource) are called in the figures' titles: the name
+    of the folder they all come from, "scikit-image samples", or "" (several places)."""
+    places = {"scikit-image samples" if s.location.startswith("skimage:")
+              else Path(s.location).resolve().parent.name for s in sources}
+    return places.pop() if len(places) == 1 else ""
 
 
 def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, workers=None,
@@ -486,7 +484,6 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     scheduler = check_scheduler(scheduler)
     if processes is not None and scheduler is not None:       # processes had been dropped
         raise ValueError("processes: local processes, which scheduler replaces; give one of them")
-    source = dataset_name(dataset)
     dataset = dataset_sources(dataset)
     names = [s.name for s in dataset]
     if len(set(names)) != len(names):
@@ -526,7 +523,8 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     skipped = [(n, results[n]) for n in names if isinstance(results[n], _Skipped)]
     rows = [r for n in names if not isinstance(results[n], _Skipped) for r in results[n]]
     return Results(rows, config, skipped=skipped,
-                   raw_images=[s.name for s in dataset if s.is_raw], dataset=source)
+                   raw_images=[s.name for s in dataset if s.is_raw],
+                   dataset=dataset_name(dataset))
 
 
 def _run_threads(tasks, nthreads, bar, results):

@@ -183,17 +183,11 @@ class ToFCalibration:
                              f"taps hold {r.size} of a {tof.shape[0]}x{tof.shape[1]} frame "
                              f"(block {tof.block})")
         if self.dark is not None:
-            bits, gain = self.meta.get("dark_bit_depth"), self.meta.get("dark_dn_per_electron")
-            diffs = []
-            if isinstance(bits, int) and bits != int(tof.bit_depth):
-                diffs.append(f"{bits}-bit, the taps {tof.bit_depth}-bit")
-            elif isinstance(gain, (int, float)) and not math.isclose(
-                    gain, tof.sensor.system_gain, rel_tol=1e-9):
-                diffs.append(f"{gain:.6g} DN per electron, the taps "
-                             f"{tof.sensor.system_gain:.6g}")
-            if diffs:
+            diff = _readout_difference(self.meta.get("dark_bit_depth"),
+                                       self.meta.get("dark_dn_per_electron"), tof, "the taps")
+            if diff:
                 raise ValueError(f"{name}: its dark offsets were measured at another readout "
-                                 f"({diffs[0]}): they are in that readout's DN")
+                                 f"({diff}): they are in that readout's DN")
 
     @property
     def mean_offset(self):
@@ -465,16 +459,23 @@ def _check_same_scale(t, first, k):
     system gain (DN per electron) than the sweep's first frame: its offsets, in its own DN,
     had been subtracted from the sweep's taps as they were (a 12-bit dark frame's offsets of
     a 10-bit sweep, four times too large, without a word)."""
-    ts, fs = t.sensor, first.sensor
-    diffs = []
-    if int(t.bit_depth) != int(first.bit_depth):
-        diffs.append(f"{t.bit_depth}-bit, not {first.bit_depth}-bit")
-    elif not math.isclose(ts.system_gain, fs.system_gain, rel_tol=1e-9):
-        diffs.append(f"{ts.system_gain:.6g} DN per electron, not {fs.system_gain:.6g}")
-    if diffs:
+    diff = _readout_difference(int(t.bit_depth), t.sensor.system_gain, first, "not")
+    if diff:
         raise ValueError(f"dark: frame {k} was read out differently from the sweep "
-                         f"({'; '.join(diffs)}): its offsets are in its own DN; take dark "
+                         f"({diff}): its offsets are in its own DN; take dark "
                          "frames with the sweep's bit depth and gain")
+
+
+def _readout_difference(bits, gain, taps, than):
+    """How a readout of ``bits`` and ``gain`` (DN per electron; None: not known) differs from
+    that of the ToFTaps ``taps`` ("12-bit, THAN 10-bit", or the gains when the bit depths
+    agree), or None: the DN scale that dark offsets are in."""
+    if isinstance(bits, int) and bits != int(taps.bit_depth):
+        return f"{bits}-bit, {than} {taps.bit_depth}-bit"
+    other = taps.sensor.system_gain
+    if isinstance(gain, (int, float)) and not math.isclose(gain, other, rel_tol=1e-9):
+        return f"{gain:.6g} DN per electron, {than} {other:.6g}"
+    return None
 
 
 #: the largest ratio of a dark frame's phasor power to what its noise alone gives (about 1
