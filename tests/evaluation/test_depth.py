@@ -4,6 +4,7 @@ the report; the numbers of docs/reports/isp.md come from the same code."""
 from __future__ import annotations
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
@@ -59,8 +60,17 @@ def test_scenes_and_upsample_sections_on_the_middlebury_scenes():
     assert up["guided"]["wrong"] <= 0.005 * up["guided"]["covered"]
     assert up["guided"]["edge_err_both"] <= 0.7 * up["guided"]["edge_err_nearest_both"]
     assert up["bilinear"]["covered"] < up["nearest"]["covered"] == up["nearest"]["known"]
+    # the totals' RMSE and edge MAE pool the scenes' pixels (they were NaN: blank cells)
+    for method, total in up.items():
+        sel = [r for r in res["upsample"] if r["method"] == method and r["scene"] != "all"]
+        assert total["rmse"] == pytest.approx(np.sqrt(
+            sum(r["rmse"] ** 2 * r["covered"] for r in sel) / sum(r["covered"] for r in sel)))
+        assert total["edge_mae"] == pytest.approx(
+            sum(r["edge_mae"] * r["edge_weight"] for r in sel)
+            / sum(r["edge_weight"] for r in sel))
     text = depth_report(res)
     assert "| all | mask2 | colour |" in text and "Full resolution" in text
+    assert_no_blank_cell(text)
     # the paper's box denoise without the noise and flying-pixel tests lets mixtures at the
     # depth edges through as valid
     old = evaluate_depth(data, sections=("scenes",), patterns=("mask2",),
@@ -82,7 +92,17 @@ def test_rgbnir_section_on_one_pair(tmp_path):
     # at most a percentage point of the valid measurements on this pair
     assert rows["colour"]["valid"] >= rows["none"]["valid"] - 0.01 * rows["colour"]["known"]
     assert rows["colour"]["covered"] >= 0.95 * rows["colour"]["pixels"]
-    assert "Real NIR reflectance" in depth_report(res)
+    text = depth_report(res)
+    assert "Real NIR reflectance" in text
+    assert_no_blank_cell(text)           # the unguided rows' full-resolution cells say '-'
+
+
+def assert_no_blank_cell(text):
+    """Every cell of the report's tables says something ('-' where there is no number)."""
+    for line in text.splitlines():
+        if line.startswith("|"):
+            cells = [c.strip() for c in re.split(r"(?<!\\)\|", line.strip()[1:-1])]
+            assert all(cells), f"a blank cell: {line}"
 
 
 def test_bad_arguments():

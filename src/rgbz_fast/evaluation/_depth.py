@@ -47,8 +47,8 @@ from ..isp import ColourISP
 from ..simulation import Scene, ToFSensor, load_rgbd, simulate, simulate_tof
 from ..tof import FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, ToFISP, calibrate
 from ._config import Z_WHY
-from ._depth_guided import (rgbnir_rows, scene_folders, scene_row, scene_runs, total_rows,
-                            upsample_rows, valid_errors)
+from ._depth_guided import (pooled_scores, rgbnir_rows, scene_folders, scene_row, scene_runs,
+                            total_rows, upsample_rows, valid_errors)
 from ._depth_report import depth_report
 
 __all__ = ["evaluate_depth", "depth_report", "DEPTH_SECTIONS", "RGBD_SCENES"]
@@ -89,16 +89,17 @@ def _scene_tables(data, patterns, isp, seed, tolerance, limits, want_upsample):
                  depth_max=max(r["depth_max"] for r in sel),
                  rmse_valid=float(np.sqrt(np.mean(err ** 2))) if err.size else np.nan,
                  median_valid=float(np.median(err)) if err.size else np.nan)
-    keys = ("known", "covered", "wrong")
+    keys = ("known", "covered", "wrong", "sq_err", "edge_weight", "edge_err")
     both = ("edge_weight_both", "edge_err_both", "edge_err_nearest_both")
     up_totals = []
     for pattern in patterns:
         for method in ("nearest", "bilinear", "guided"):
             sel = [r for r in up if (r["pattern"], r["method"]) == (pattern, method)]
             if sel:
-                t = {"scene": "all", "pattern": pattern, "method": method,
-                     **{k: sum(r[k] for r in sel) for k in keys},
-                     "rmse": np.nan, "edge_mae": np.nan}
+                # RMSE and edge MAE pooled from the scenes' sums (they had been NaN, blank
+                # cells in the report)
+                t = pooled_scores({"scene": "all", "pattern": pattern, "method": method,
+                                   **{k: sum(r[k] for r in sel) for k in keys}})
                 if method == "guided":
                     t.update({k: sum(r[k] for r in sel) for k in both})
                 up_totals.append(t)

@@ -142,10 +142,19 @@ def _scores(est, truth, known, weight, tolerance):
     cov = known & np.isfinite(est)
     e = np.abs(est - truth)[cov]
     w = weight[cov]
-    return {"known": int(known.sum()), "covered": int(cov.sum()),
-            "wrong": int((e > tolerance).sum()),
-            "rmse": float(np.sqrt(np.mean(e * e))) if e.size else np.nan,
-            "edge_mae": float((w * e).sum() / w.sum()) if w.sum() > 0 else np.nan}
+    # the sums too, so that the totals over scenes pool them (pooled_scores)
+    return pooled_scores({"known": int(known.sum()), "covered": int(cov.sum()),
+                          "wrong": int((e > tolerance).sum()), "sq_err": float((e * e).sum()),
+                          "edge_weight": float(w.sum()), "edge_err": float((w * e).sum())})
+
+
+def pooled_scores(row):
+    """``row`` with its RMSE and edge-weighted MAE from its sums (``sq_err`` over ``covered``
+    pixels, ``edge_err`` over ``edge_weight``): NaN where there is nothing to average."""
+    row["rmse"] = float(np.sqrt(row["sq_err"] / row["covered"])) if row["covered"] else np.nan
+    row["edge_mae"] = (row["edge_err"] / row["edge_weight"] if row["edge_weight"] > 0
+                       else np.nan)
+    return row
 
 
 def upsample_rows(run, tolerance):

@@ -18,6 +18,12 @@ def _pct(a, b):
     return f"{100.0 * a / b:.3f}" if b else "-"
 
 
+def _cm(v):
+    """A length in cm, '-' where there is none (NaN: nothing to average; the cells had been
+    blank)."""
+    return "-" if v is None or np.isnan(v) else f"{100 * v:.2f}"
+
+
 def depth_report(result, tolerance=0.05):
     """Markdown tables of an :func:`evaluate_depth` result."""
     from .._validate import check_number
@@ -35,7 +41,7 @@ def depth_report(result, tolerance=0.05):
                   "caught % | low signal % | flying % | resolved % | RMSE valid cm |",
                   "|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in result["scenes"]:
-            rmse = "" if np.isnan(r["rmse_valid"]) else f"{100 * r['rmse_valid']:.2f}"
+            rmse = _cm(r["rmse_valid"])
             caught = _pct(r["wrong"] - r["wrong_valid"], r["wrong"])
             lines.append(f"| {_name(r['scene'])} | {r['pattern']} | {r.get('guide', 'none')} | "
                          f"{r['depth_min']:.2f}-{r['depth_max']:.2f} | "
@@ -49,14 +55,14 @@ def depth_report(result, tolerance=0.05):
                   "", "| scene | pattern | method | covered % | wrong % | RMSE cm | "
                   "edge MAE cm | guided / nearest, same pixels |", "|---|---|---|---|---|---|---|---|"]
         for r in result["upsample"]:
-            rmse = "" if np.isnan(r["rmse"]) else f"{100 * r['rmse']:.2f}"
-            emae = "" if np.isnan(r["edge_mae"]) else f"{100 * r['edge_mae']:.2f}"
+            # the ratio is the guided rows' (the other methods' cells '-')
             ratio = (f"{r['edge_err_both'] / r['edge_err_nearest_both']:.3f}"
-                     if r.get("edge_err_nearest_both") else "")
+                     if r.get("edge_err_nearest_both") else "-")
             lines.append(f"| {_name(r['scene'])} | {r['pattern']} | {r['method']} | "
                          f"{_pct(r['covered'], r['known'])} | {_pct(r['wrong'], r['covered'])} | "
-                         f"{rmse} | {emae} | {ratio} |")
-        lines.append("")
+                         f"{_cm(r['rmse'])} | {_cm(r['edge_mae'])} | {ratio} |")
+        lines += ["", "Last column: the guided rows' edge MAE over nearest's on the pixels "
+                  "both cover.", ""]
     if "rgbnir" in result:
         lines += [f"### Real NIR reflectance (RGB-NIR pairs, planar depth; wrong: > {cm})", "",
                   "| pair | pattern | guide | valid % | wrong % | wrong & valid % | "
@@ -64,13 +70,13 @@ def depth_report(result, tolerance=0.05):
                   "|---|---|---|---|---|---|---|---|---|"]
         for r in result["rgbnir"]:
             up = ("| " + " | ".join([_pct(r["covered"], r["pixels"]),
-                                     _pct(r["up_wrong"], r["covered"]),
-                                     f"{100 * r['up_rmse']:.2f}"]) + " |"
-                  if "covered" in r else "| | | |")
+                                     _pct(r["up_wrong"], r["covered"]), _cm(r["up_rmse"])])
+                  + " |" if "covered" in r else "| - | - | - |")
             lines.append(f"| {_name(r['pair'])} | {r['pattern']} | {r['guide']} | "
                          f"{_pct(r['valid'], r['known'])} | {_pct(r['wrong'], r['known'])} | "
                          f"{_pct(r['wrong_valid'], r['known'])} {up}")
-        lines.append("")
+        lines += ["", "Full resolution: `upsample_depth` of the colour-guided measurements "
+                  "(`-` without the guide, which it needs).", ""]
     if "range" in result:
         walls = [r for r in result["range"] if r["case"] == "wall"]
         lines += ["### Beyond the unambiguous range: flat walls (flagged % of the measurements)",
