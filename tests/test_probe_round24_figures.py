@@ -220,6 +220,9 @@ def test_hardware_sweep_plot_labels_legend_exact_rows_and_title(kept):
     markers = [c.get_paths()[0].vertices.shape[0] for c in ax.collections]
     assert len(set(markers)) == 2
     assert ax.get_title() == "sg on mask1, dataset kodak, 2 images"
+    # the refused configuration has no point: the figure names it (it had said nothing)
+    assert any(t.startswith("Not drawn: 1 configuration the model refused (broken;")
+               for t in _texts(fig))
 
 
 # --------------------------------------------------------------------------- PL06

@@ -521,4 +521,13 @@ def hardware_sweep_plot(rows, title="", dataset=None):
                             textcoords="offset points")
             box = t.get_window_extent(renderer)
         taken.append(box)
+    # the configurations the model refused have no point: named under the axes (the table
+    # lists them; the plot had left them out without a word)
+    refused = [r["label"] for r in rows if "bits" not in r]
+    if refused:
+        from ..evaluation._reports import _footnote
+
+        _footnote(fig, [f"Not drawn: {len(refused)} configuration"
+                        f"{'s' if len(refused) != 1 else ''} the model refused "
+                        f"({', '.join(refused)}; the table gives the reason)."], fontsize=7)
     return _png(fig, plt, bbox_inches="tight")
