@@ -449,8 +449,8 @@ def test_a_bad_pixel_limit_in_the_environment_leaves_reads_with_a_given_limit(tm
 
 
 def test_frame_meta_round_trips(tmp_path):
-    """An NPZ frame keeps its meta: arrays (read_raw's clipped mask) as members, nested lists
-    and objects and NumPy scalars as JSON; a TIFF says what it cannot keep."""
+    """An NPZ frame keeps its meta: arrays (read_raw's clipped mask) as members, nested lists,
+    tuples and objects and NumPy scalars as JSON; a TIFF says what it cannot keep."""
     import rgbz_fast as rz
     from rgbz_fast.io import load_frame, save_frame
 
@@ -463,10 +463,16 @@ def test_frame_meta_round_trips(tmp_path):
     save_frame(tmp_path / "f.npz", f)
     back = load_frame(tmp_path / "f.npz").meta
     assert back["a"] == 3 and back["gains"] == [1.5, 2.0] and back["nested"] == {"x": [1, None]}
-    assert back["pairs"] == [[1, 2], [3, 4]]
+    # tuples come back tuples (they had come back lists: unequal to what was saved)
+    assert back["pairs"] == ((1, 2), (3, 4)) and type(back["pairs"][0]) is tuple
     np.testing.assert_array_equal(back["clipped"], clipped)
     with pytest.warns(UserWarning, match=r"does not keep meta 'clipped'"):
         save_frame(tmp_path / "f.tif", f)
+    assert load_frame(tmp_path / "f.tif").meta["pairs"] == ((1, 2), (3, 4))
+    # a file of an earlier version holds the tuple as a list: it stays a list
+    from rgbz_fast.io._frames import _from_json
+    assert _from_json({"pairs": [[1, 2]], "x": {"__tuple__": [1, {"__tuple__": []}]}}) == {
+        "pairs": [[1, 2]], "x": (1, ())}
 
 
 def test_a_tiff_says_it_drops_the_reference_and_the_taps(tmp_path):

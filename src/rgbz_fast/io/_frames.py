@@ -4,7 +4,8 @@ An NPZ file holds the frame data, the pattern tile, the bit depth, the
 reference CFA when there is one, the ToF taps when there are any, and the
 metadata as JSON. A TIFF holds the mosaic as uint16 with the pattern, bit
 depth and metadata as JSON in the ImageDescription tag, so other tools can
-open it. Files are written atomically.
+open it. Files are written atomically. A tuple of the metadata is written as the JSON
+object ``{"__tuple__": [...]}`` and loads as a tuple.
 """
 
 from __future__ import annotations
@@ -33,20 +34,39 @@ _FORMAT_TAG = "rgbz-fast raw frame"
 _NOT_JSON = object()
 
 
+#: the JSON object a tuple of ``meta`` is saved as, so that it loads as a tuple (it had come
+#: back a list, unequal to what was saved: ``(1, 2) != [1, 2]``)
+_TUPLE_KEY = "__tuple__"
+
+
 def _json_value(v):
-    """``v`` as JSON (NumPy scalars as numbers, tuples as lists, nested lists and objects),
-    or _NOT_JSON."""
+    """``v`` as JSON (NumPy scalars as numbers, tuples as ``{"__tuple__": [...]}``, nested
+    lists and objects), or _NOT_JSON."""
     if isinstance(v, (str, int, float, bool)) or v is None:
         return v
     if isinstance(v, np.generic):
         return v.item()
     if isinstance(v, (list, tuple)):
         items = [_json_value(x) for x in v]
-        return _NOT_JSON if any(x is _NOT_JSON for x in items) else items
+        if any(x is _NOT_JSON for x in items):
+            return _NOT_JSON
+        return {_TUPLE_KEY: items} if isinstance(v, tuple) else items
     if isinstance(v, dict) and all(isinstance(k, str) for k in v):
         items = {k: _json_value(x) for k, x in v.items()}
         return _NOT_JSON if any(x is _NOT_JSON for x in items.values()) else items
     return _NOT_JSON
+
+
+def _from_json(v):
+    """A ``meta`` value read from JSON: the tuples :func:`_json_value` wrote, tuples again
+    (files of earlier versions hold lists, which stay lists)."""
+    if isinstance(v, list):
+        return [_from_json(x) for x in v]
+    if isinstance(v, dict):
+        if set(v) == {_TUPLE_KEY} and isinstance(v[_TUPLE_KEY], list):
+            return tuple(_from_json(x) for x in v[_TUPLE_KEY])
+        return {k: _from_json(x) for k, x in v.items()}
+    return v
 
 
 def _jsonable(meta, arrays=None, dropped=None):
@@ -281,7 +301,7 @@ def _check_fields(obj, fields, where):
 def _frame_from(header, data, reference=None, tof=None):
     return RawFrame(_Adopt(data), _pattern(header), header["bit_depth"],
                     reference=None if reference is None else _Adopt(reference), tof=tof,
-                    meta=header.get("meta", {}))
+                    meta=_from_json(header.get("meta", {})))
 
 
 def _checked(path, build):
@@ -475,4 +495,4 @@ def _load_tof(z, h):
                    sites=(z["tof_sites_rows"], z["tof_sites_cols"]), block=h["block"],
                    bit_depth=h["bit_depth"], depth_true=z["tof_depth_true"],
                    valid=z["tof_valid"], saturated=z["tof_saturated"], sensor=sensor,
-                   shape=tuple(h["shape"]), meta={"ir_estimated": None, **h.get("meta", {})})
+                   shape=tuple(h["shape"]), meta={"ir_estimated": None, **_from_json(h.get("meta", {}))})
