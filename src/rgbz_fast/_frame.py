@@ -504,33 +504,53 @@ class ToFTaps:
         return amp.mean(axis=0) if frequency is None else amp[frequency]
 
     def to_frame(self, values, fill=0.0):
-        """Paint one value per measurement onto the frame (every cell of its block).
+        """Paint per-measurement values onto the frame (every cell of its block).
 
         Parameters
         ----------
-        values : array_like, shape (n_sites,)
+        values : array_like, shape (n_sites,) or (F, n_sites)
+            One value per measurement, or one per frequency and measurement (as
+            :meth:`amplitude` gives them with ``frequency="all"``).
         fill : scalar
-            Value of the pixels that are no Z measurement.
+            Value of the pixels that are no Z measurement (a bool array stays bool with a
+            fill of 0, 1 or a bool; with another fill it comes as float32 at least).
 
         Returns
         -------
-        ndarray, shape ``self.shape``
+        ndarray, shape ``self.shape`` or (F,) + ``self.shape``
         """
-        v = as_array(values, "values")
-        fill = check_fill(fill)
-        if v.shape != (self.n_sites,):
-            raise ValueError(f"values: expected shape ({self.n_sites},), got {v.shape}")
-        out = np.full(self.shape, fill, dtype=np.result_type(v.dtype, np.min_scalar_type(fill)))
-        r, c = self.sites
-        for dr in range(self.block):
-            for dc in range(self.block):
-                out[r + dr, c + dc] = v
-        return out
+        return paint_sites(as_array(values, "values"), self.shape, self.sites, self.block,
+                           check_fill(fill))
 
     def __repr__(self):
         mhz = ", ".join(f"{f / 1e6:g}" for f in self.frequencies)
         return (f"ToFTaps({self.n_sites} sites, block {self.block}, {mhz} MHz, "
                 f"{self.bit_depth}-bit, {int(self.valid.sum())} valid)")
+
+
+def paint_sites(v, shape, sites, block, fill):
+    """``v`` (n,) or (F, n), one value per measurement at ``sites`` (top-left cells of
+    ``block`` x ``block`` Z pixels), painted on every cell of its Z pixel of a frame of
+    ``shape``; ``fill`` elsewhere (:meth:`ToFTaps.to_frame` and
+    :meth:`~rgbz_fast.tof.ToFDepth.to_frame`). The type is the values' with the fill's: a
+    bool map stays bool with a fill of 0, 1 or a bool (it had come back uint8, whose ``~``
+    is 254 or 255: never false); a float of less than 4 bytes is float32 (a NaN fill of a
+    bool or uint8 field, float16 before)."""
+    r, c = sites
+    n = r.size
+    if v.shape[-1:] != (n,) or v.ndim > 2:
+        raise ValueError(f"values: expected shape ({n},) or (F, {n}), got {v.shape}")
+    if v.dtype == bool and not isinstance(fill, float) and fill in (0, 1):
+        dtype = np.dtype(bool)
+    else:
+        dtype = np.result_type(v.dtype, np.min_scalar_type(fill))
+        if dtype.kind == "f" and dtype.itemsize < 4:
+            dtype = np.dtype(np.float32)
+    out = np.full(v.shape[:-1] + tuple(shape), fill, dtype=dtype)
+    for dr in range(block):
+        for dc in range(block):
+            out[..., r + dr, c + dc] = v
+    return out
 
 
 def raw_clip_level(frame):

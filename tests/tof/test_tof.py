@@ -479,6 +479,15 @@ def test_result_maps_and_the_parameter_object():
     assert valid.dtype == bool and valid.sum() == 4 * res.valid.sum()
     np.testing.assert_array_equal(res.to_frame(np.arange(res.n_sites), fill=-1),
                                   frame.tof.to_frame(np.arange(res.n_sites), fill=-1))
+    # a fill of 0 keeps a bool map bool (uint8 before: its ~ was 254/255, never false); the
+    # taps paint (F, n) as the result does, and bool with their float fill as float32
+    for fill in (0, False, 1, np.int64(0)):
+        assert res.to_frame("valid", fill=fill).dtype == bool
+        assert frame.tof.to_frame(res.valid, fill=fill).dtype == bool
+    np.testing.assert_array_equal(~res.to_frame("valid", fill=0), ~valid)
+    assert frame.tof.to_frame(res.valid).dtype == np.float32
+    np.testing.assert_array_equal(frame.tof.to_frame(frame.tof.amplitude(frequency="all")),
+                                  res.to_frame(frame.tof.amplitude(frequency="all"), fill=0.0))
     chain = ToFISP(window=3, min_snr=2.0)
     hash(chain)
     a = chain.run(frame.tof, workers=1)

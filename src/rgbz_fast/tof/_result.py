@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._frame import paint_sites
 from .._validate import as_array, check_fill
 
 __all__ = ["ToFDepth"]
@@ -122,7 +123,7 @@ class ToFDepth:
         fill : scalar
             Value of the pixels that hold no Z measurement (NaN by default: a bool
             or uint8 field then comes as float32; use 0 or False to keep the
-            field's type).
+            field's type, bool included).
 
         Returns
         -------
@@ -135,19 +136,8 @@ class ToFDepth:
         else:
             v = as_array(values, "values")
         fill = check_fill(fill)
-        n = self.n_sites
-        if v.shape[-1:] != (n,) or v.ndim > 2:
-            raise ValueError(f"values: expected shape ({n},) or (F, {n}), got {v.shape}")
-        dtype = np.result_type(v.dtype, np.min_scalar_type(fill))
-        if dtype.kind == "f" and dtype.itemsize < 4:    # a NaN fill of a bool or uint8 field:
-            dtype = np.dtype(np.float32)                # float32, not float16
         self._check_sites("sites")
-        out = np.full(v.shape[:-1] + tuple(self.shape), fill, dtype=dtype)
-        r, c = self.sites
-        for dr in range(self.block):
-            for dc in range(self.block):
-                out[..., r + dr, c + dc] = v
-        return out
+        return paint_sites(v, self.shape, self.sites, self.block, fill)
 
     def depth_map(self, fill=np.nan):
         """Depth (m) on the frame where valid; ``fill`` elsewhere."""
