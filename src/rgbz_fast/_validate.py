@@ -237,6 +237,22 @@ def nonfinite_as(obj, spell):
     return obj
 
 
+class ReadOnlyDict(dict):
+    """A dict that refuses changes (``_what`` says why), and pickles and copies as one (a
+    MappingProxyType does not pickle); ``dict(d)`` is a copy to edit."""
+
+    _what = "this mapping is read-only"
+
+    def _refuse(self, *args, **kwargs):
+        raise TypeError(self._what)
+
+    __setitem__ = __delitem__ = update = pop = popitem = clear = setdefault = _refuse
+    __ior__ = _refuse
+
+    def __reduce__(self):
+        return type(self), (dict(self),)
+
+
 def read_only_state(obj, state):
     """``obj.__setstate__`` of a class whose arrays are read-only: the ``state`` of a pickle or
     a deep copy restored with its arrays (and those in its tuples and dicts) read-only again. NumPy

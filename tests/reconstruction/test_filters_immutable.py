@@ -112,3 +112,33 @@ def test_a_pickle_of_an_earlier_version_is_immutable_and_the_geometry_pickles():
     assert np.array_equal(copy.deepcopy(f.geometry)[0]["taps"], f.geometry[0]["taps"])
     with pytest.raises(TypeError, match="read-only"):
         back[0]["taps"] = None
+
+
+@pytest.mark.parametrize("kind", ["learned", "z_guided"])
+def test_the_meta_is_read_only(kind, tmp_path):
+    """Round 25 (API01): ``meta`` was a plain dict of the one shipped object: an edit through
+    one caller's filters changed every caller's repr and what ``save`` writes, the digest
+    unchanged. It refuses changes now; ``dict(meta)`` is a copy to edit, and a copy, a pickle
+    (also of an earlier version's plain dict) and a saved file keep it read-only."""
+    f = default_filters("mask1") if kind == "learned" else default_z_filters("mask1")
+    before = repr(f)
+    for change in (lambda m: m.__setitem__("training_set", "mine"), lambda m: m.clear(),
+                   lambda m: m.update(x=1), lambda m: m.pop("training_set")):
+        with pytest.raises(TypeError, match="the filters' meta is read-only"):
+            change(f.meta)
+    assert repr(f) == before
+    mine = dict(f.meta)
+    mine["training_set"] = "mine"                           # a copy edits
+    for g in (copy.deepcopy(f), pickle.loads(pickle.dumps(f))):
+        with pytest.raises(TypeError, match="read-only"):
+            g.meta["x"] = 1
+    old_state = {**f.__getstate__(), "meta": dict(f.meta)}
+    old_state.pop("_frozen", None)
+    g = type(f).__new__(type(f))
+    g.__setstate__(old_state)
+    with pytest.raises(TypeError, match="read-only"):
+        g.meta["x"] = 1
+    if kind == "learned":
+        f.save(tmp_path / "f.npz")
+        with pytest.raises(TypeError, match="read-only"):
+            LearnedFilters.load(tmp_path / "f.npz").meta["x"] = 1

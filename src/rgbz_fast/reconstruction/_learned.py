@@ -33,7 +33,8 @@ from pathlib import Path
 import numpy as np
 
 from .._patterns import _PRESETS, Pattern, Z, _parse_tile, bayer, get_pattern
-from .._validate import check_bit_depth, check_int, read_only_state, real_array
+from .._validate import (ReadOnlyDict, check_bit_depth, check_int, read_only_state,
+                         real_array)
 from ..io import atomic_write, read_npz
 from ._learned_hash import N_ANGLES, learned_geometry, mirror_octants
 from ._learned_train import train
@@ -89,6 +90,8 @@ class FilterIdentity:
     __str__ = __repr__
 
     def __setstate__(self, state):      # a pickled or deep-copied copy stays read-only: its
+        if type(state.get("meta")) is dict:                 # a pickle of an earlier version
+            state = {**state, "meta": FilterMeta(state["meta"])}
         read_only_state(self, state)    # identity is a digest computed once
         self._rebuild()
         self._freeze()                  # a pickle of a version before _frozen, too
@@ -368,13 +371,23 @@ _META_REPR_MAX = 100_000
 FILE_ERRORS = (KeyError, TypeError, ValueError, SyntaxError, RecursionError, MemoryError)
 
 
+class FilterMeta(ReadOnlyDict):
+    """The ``meta`` of filters: read-only, as the filters are (the shipped filters are one
+    object per process: an edit of one caller's ``meta`` had changed every caller's repr and
+    what ``save`` writes, the digest unchanged)."""
+
+    _what = ("the filters' meta is read-only (the filters are immutable): dict(filters.meta) "
+             "is a copy to edit; the constructor's or train's meta= makes new filters")
+
+
 def check_meta(meta, name="meta"):
-    """The ``meta`` of filters as they keep it: string keys; NumPy scalars made Python ones;
-    ints, floats and strings kept, anything else as its ``str``. A value a file cannot give
-    back (NaN, infinity, a number whose repr ``ast.literal_eval`` cannot read) is a ValueError
-    naming ``name`` and the key: saved, it had made a file that does not load."""
+    """The ``meta`` of filters as they keep it (a :class:`FilterMeta`): string keys; NumPy
+    scalars made Python ones; ints, floats and strings kept, anything else as its ``str``. A
+    value a file cannot give back (NaN, infinity, a number whose repr ``ast.literal_eval``
+    cannot read) is a ValueError naming ``name`` and the key: saved, it had made a file that
+    does not load."""
     if meta is None:
-        return {}
+        return FilterMeta()
     if not isinstance(meta, dict):
         raise TypeError(f"{name}: expected a dict, got {type(meta).__name__}")
     out = {}
@@ -408,7 +421,7 @@ def check_meta(meta, name="meta"):
             raise ValueError(f"{name}: {k!r} is {text[:100]}, which a filters file cannot give "
                              "back; give a number or a string")
         out[k] = v
-    return out
+    return FilterMeta(out)
 
 
 def read_meta(z, p, name):

@@ -15,6 +15,7 @@ from functools import lru_cache
 import numpy as np
 
 from .._patterns import Z, get_pattern
+from .._validate import ReadOnlyDict
 
 __all__ = ["N_ANGLES", "HASH_STEPS", "SPREAD_DIRECTIONS", "learned_geometry", "hash_features", "hash_buckets",
            "gather_windows", "extend_index", "mirror_octants"]
@@ -103,19 +104,11 @@ def learned_geometry(pattern, radius=3, hash_radius=3):
     return tuple(_Phase(ph) for ph in out)
 
 
-class _Phase(dict):
+class _Phase(ReadOnlyDict):
     """One phase of :func:`learned_geometry`: a dict that refuses changes (its arrays are
     read-only too), and pickles and copies as one (a MappingProxyType did not pickle)."""
 
-    def _refuse(self, *args, **kwargs):
-        raise TypeError("the learned geometry is read-only (shared by every filter set of "
-                        "the pattern)")
-
-    __setitem__ = __delitem__ = update = pop = popitem = clear = setdefault = _refuse
-    __ior__ = _refuse
-
-    def __reduce__(self):
-        return _Phase, (dict(self),)
+    _what = "the learned geometry is read-only (shared by every filter set of the pattern)"
 
 
 def hash_features(X, ph):
