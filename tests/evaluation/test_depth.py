@@ -169,3 +169,22 @@ def test_nearest_baseline_is_the_nearest_valid_measurement(pattern):
     took = np.abs(nearest[..., None] - res.depth[res.valid]) == 0      # the measurements it took
     assert np.all(np.isfinite(nearest))
     assert np.all(np.where(took, d2, np.inf).min(axis=-1) == best)
+
+
+def test_the_report_says_the_tolerance_the_rows_were_counted_at():
+    """Round 25 (API02): a result counted at 10 cm was printed under 'wrong: |error| > 5 cm'
+    (depth_report's own default). The rows keep their tolerance; the report takes it and
+    refuses another."""
+    row = {"pair": "0003", "pattern": "mask1", "guide": "none", "known": 10, "valid": 9,
+           "wrong": 1, "wrong_valid": 0}
+    res = {"rgbnir": [{**row, "tolerance": 0.1}]}
+    assert "wrong: > 10 cm" in depth_report(res)
+    assert "wrong: > 10 cm" in depth_report(res, tolerance=0.1)
+    with pytest.raises(ValueError, match=r"^tolerance: 0.05 m, but the result counted wrong "
+                                         r"measurements at 0.1 m"):
+        depth_report(res, tolerance=0.05)
+    with pytest.raises(ValueError, match="different tolerances"):
+        depth_report({"rgbnir": [{**row, "tolerance": 0.1}, {**row, "tolerance": 0.05}]})
+    # rows of an earlier version say nothing: the caller's tolerance, or 5 cm
+    assert "wrong: > 5 cm" in depth_report({"rgbnir": [row]})
+    assert "wrong: > 2 cm" in depth_report({"rgbnir": [row]}, tolerance=0.02)

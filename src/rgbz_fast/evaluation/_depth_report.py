@@ -24,15 +24,29 @@ def _cm(v):
     return "-" if v is None or np.isnan(v) else f"{100 * v:.2f}"
 
 
-def depth_report(result, tolerance=0.05):
-    """Markdown tables of an :func:`evaluate_depth` result."""
+def depth_report(result, tolerance=None):
+    """Markdown tables of an :func:`evaluate_depth` result.
+
+    ``tolerance`` (m), the error above which its tables call a measurement wrong, is the
+    one the result was counted at (its rows keep it); given, it must agree with them (a
+    result of an earlier version, whose rows do not say, is labelled with it, or 5 cm)."""
     from .._validate import check_number
-    from ._depth import DEPTH_SECTIONS
+    from ._depth import DEPTH_SECTIONS, WRONG_SECTIONS
 
     if not isinstance(result, dict) or not set(result) <= set(DEPTH_SECTIONS):
         raise TypeError(f"result: expected the dict of sections evaluate_depth returns, got "
                         f"{result!r:.60}")
-    tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
+    counted = {r["tolerance"] for s in WRONG_SECTIONS for r in result.get(s, ())
+               if isinstance(r, dict) and "tolerance" in r}
+    if len(counted) > 1:
+        raise ValueError(f"result: its rows were counted at different tolerances "
+                         f"{sorted(counted)}")
+    if tolerance is not None:
+        tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
+        if counted and counted != {tolerance}:
+            raise ValueError(f"tolerance: {tolerance:g} m, but the result counted wrong "
+                             f"measurements at {counted.pop():g} m")
+    tolerance = counted.pop() if counted else (0.05 if tolerance is None else tolerance)
     lines = []
     cm = f"{100 * tolerance:g} cm"
     if "scenes" in result:
