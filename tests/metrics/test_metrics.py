@@ -580,14 +580,25 @@ def test_floats_within_unit_range_scored_as_8_bit_codes_are_warned_about(rng):
     8-bit codes) nothing is said."""
     import warnings
 
-    from rgbz_fast.metrics import all_metrics, cpsnr, ms_ssim, ssim, zipper
+    from rgbz_fast.metrics import all_metrics, cpsnr, delta_e_map, ms_ssim, ssim, zipper
 
     ref = rng.random((170, 170, 3))
     test = np.clip(ref + rng.normal(0, 0.05, ref.shape), 0, 1)
-    for f in (cpsnr, ssim, ms_ssim, zipper, all_metrics):
+    for f in (cpsnr, ssim, ms_ssim, all_metrics):
         with pytest.warns(UserWarning, match=r"images are floats within \[0, 1\], scored "
-                                             r"against (data_range|input)=255"):
+                                             r"as data_range=255; pass the data's range"):
             f(ref, test)
+    # zipper takes an encoding, not a range: its warning names the encoding to pass
+    with pytest.warns(UserWarning, match=r'images are floats within \[0, 1\], scored as '
+                                         r'input="srgb8"; pass input="srgb01" for \[0, 1\] '
+                                         r'floats'):
+        zipper(ref, test)
+    big = (ref * 65535).astype(np.uint16)
+    for f in (zipper, delta_e_map):
+        with pytest.raises(ValueError, match=r'^input: reference holds integer values in .*, '
+                                             r'outside \[0, 255\]; pass the encoding of the '
+                                             r'data: input="srgb16" for 16-bit sRGB codes'):
+            f(big, big)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         cpsnr(ref, test, data_range=1.0)

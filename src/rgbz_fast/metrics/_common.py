@@ -45,6 +45,15 @@ def _check_rgb_pair(reference, test, ref_name="reference", test_name="test"):
     return ref, tst
 
 
+#: what a message about the data's range tells the caller to pass, per parameter named: the
+#: colour metrics (zipper, delta_e_map) take an encoding, not a range (their message had
+#: advised a range, and data_range=65535 was a TypeError there)
+_RANGE_ADVICE = {
+    "input": ('pass the encoding of the data: input="srgb16" for 16-bit sRGB codes, '
+              'input="srgb01" for [0, 1] floats'),
+}
+
+
 def _check_integer_range(arrays, names, data_range, param="data_range"):
     """Integer code values must lie in [0, data_range].
 
@@ -65,9 +74,10 @@ def _check_integer_range(arrays, names, data_range, param="data_range"):
                 continue
             lo = int(a.min())
             if lo < 0 or hi > data_range:
+                advice = _RANGE_ADVICE.get(
+                    param, "pass the real range of the data (2**bit_depth - 1)")
                 raise ValueError(f"{param}: {name} holds integer values in [{lo}, {hi}], "
-                                 f"outside [0, {data_range:g}]; pass the real range of the "
-                                 f"data (2**bit_depth - 1)")
+                                 f"outside [0, {data_range:g}]; {advice}")
 
 
 #: the largest magnitude of the data SSIM takes: its local moments are squares of the data,
@@ -90,9 +100,15 @@ def _warn_unit_floats(arrays, names, data_range, param="data_range"):
     if 0.0 < hi <= 1.0:
         import warnings
 
+        if param == "input":          # the colour metrics: an encoding, not a range
+            scored = f"input=\"srgb{8 if data_range == 255 else 16}\""
+            advice = 'pass input="srgb01" for [0, 1] floats'
+        else:
+            scored = f"{param}={data_range:g}"
+            advice = "pass the data's range (1.0 for [0, 1] floats)"
         warnings.warn(f"{param}: the {' and '.join(names)} images are floats within [0, 1], "
-                      f"scored against {param}={data_range:g}; pass the data's range (1.0 for "
-                      "[0, 1] floats)", UserWarning, stacklevel=outside_stacklevel())
+                      f"scored as {scored}; {advice}", UserWarning,
+                      stacklevel=outside_stacklevel())
 
 
 def _check_magnitude(arrays, names, limit, why, param=None):
