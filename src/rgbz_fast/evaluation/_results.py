@@ -11,8 +11,9 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from .._validate import as_list, check_int, merge_params, nonfinite_as
+from .._patterns import Pattern
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, PAPER_TABLE3,
-                      EvalConfig)
+                      EvalConfig, _pattern_name)
 
 __all__ = ["Results"]
 
@@ -165,14 +166,24 @@ class Results:
 
     def _known(self, value, name, known):
         """``value`` when it is one of ``known`` (the names of these results), else a
-        ValueError naming ``name``: an unknown name would select nothing, silently."""
+        ValueError naming ``name``: an unknown name would select nothing, silently. A Pattern
+        is taken as the name :class:`EvalConfig` gives it (it had been refused, although the
+        config takes Pattern objects)."""
+        if name == "pattern" and isinstance(value, Pattern):
+            try:
+                value = _pattern_name(value)
+            except ValueError:
+                pass
         if not isinstance(value, str) or value not in known:
-            raise ValueError(f"{name}: {value!r:.40} is not in the results (expected one of "
+            shown = repr(value)
+            shown = shown if len(shown) <= 60 else shown[:57] + "..."
+            raise ValueError(f"{name}: {shown} is not in the results (expected one of "
                              f"{', '.join(known)})")
         return value
 
     def values(self, pattern, method, metric):
-        self._known(pattern, "pattern", self.config.patterns)
+        """The values of one cell, one per image (in the rows' order), as float64."""
+        pattern = self._known(pattern, "pattern", self.config.patterns)
         self._known(method, "method", self.config.methods)
         self._known(metric, "metric", self.config.metrics)
         return np.array([r["value"] for r in self.rows if r["pattern"] == pattern
@@ -300,12 +311,16 @@ class Results:
                 + ".")
 
     def images(self):
+        """The images of the rows, in their order, each once."""
         return list(dict.fromkeys(r["image"] for r in self.rows))
 
     def ir_estimated(self, pattern, method):
         """The images on which ``method`` was guided by a NIR reflectance estimated from the RGB
         (rows marked ``"ir_estimated"``: :func:`~rgbz_fast.evaluation.evaluate_image`). Such
-        a result has seen the colour it had to find: it is no evidence for the method."""
+        a result has seen the colour it had to find: it is no evidence for the method. A
+        pattern or method not in the results is a ValueError (it had read as "none")."""
+        pattern = self._known(pattern, "pattern", self.config.patterns)
+        self._known(method, "method", self.config.methods)
         return list(dict.fromkeys(r["image"] for r in self.rows if r.get("ir_estimated")
                                   and r["pattern"] == pattern and r["method"] == method))
 
@@ -346,7 +361,7 @@ class Results:
         >>> diffs.tolist(), mean, round(lo, 3), round(hi, 3)
         ([1.0, 1.5], 1.25, -1.927, 4.427)
         """
-        self._known(pattern, "pattern", self.config.patterns)
+        pattern = self._known(pattern, "pattern", self.config.patterns)
         self._known(method, "method", self.config.methods)
         self._known(baseline, "baseline", self.config.methods)
         self._known(metric, "metric", self.config.metrics)
@@ -372,6 +387,8 @@ class Results:
         return "bilinear" if "bilinear" in self.config.methods else self.config.methods[0]
 
     def to_csv(self):
+        """The rows as CSV text: image, pattern, method, metric, value (its repr: ``inf`` for
+        +inf), and an ``ir_estimated`` column when a row has it."""
         buf = io.StringIO()
         fields = ["image", "pattern", "method", "metric", "value"]
         if any("ir_estimated" in r for r in self.rows):
