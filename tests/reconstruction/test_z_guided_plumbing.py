@@ -135,8 +135,15 @@ def test_train_z_guided_routes(pairs):
     assert isinstance(a, ZGuidedFilters) and a == train_z_guided(frames, lam=0.02, select=None)
     with pytest.raises(ValueError, match="^radius: z_guided"):
         train(frames, z_guided=True, radius=2)
-    with pytest.raises(TypeError, match="^lam: not an option"):
+    with pytest.raises(TypeError, match=r"^lam: an option of train\(z_guided=True\) only"):
         train(frames, lam=0.02)
+    # a name neither fit takes is unknown, with or without z_guided (round 25, API09: it
+    # was called a z_guided option, and with z_guided=True a bare 'unexpected keyword')
+    for z in (False, True):
+        with pytest.raises(TypeError, match=r"^n_strenght: not an option of train\(\) \(its "
+                                            r"options: radius, .*; with z_guided=True also "
+                                            r"nir, base, .*\)$"):
+            train(frames, z_guided=z, n_strenght=1)
     f = train_filters(folder_dataset(pairs)[:2], "mask1", z_guided=True, seed=1)
     assert isinstance(f, ZGuidedFilters) and f.meta["n_images"] == 4
     assert f.meta["cv_groups"] == 2                     # a pair's two frames: one group

@@ -90,8 +90,20 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
     >>> f.n_buckets, f.meta["n_images"]
     (8, 1)
     """
+    import inspect
+
+    from ._z_guided_fit import train_z_guided
+
+    z_names = [k for k in inspect.signature(train_z_guided).parameters
+               if k not in ("frames", "ridge", "prior", "meta")]
+    # a name neither takes is named as unknown (every one had been called an option of
+    # z_guided, and with z_guided=True it was Python's bare "unexpected keyword")
+    unknown = [k for k in z_options if k not in z_names]
+    if unknown:
+        raise TypeError(f"{unknown[0]}: not an option of train() (its options: radius, "
+                        "hash_radius, n_strength, n_coherence, n_spread, ridge, prior, meta; "
+                        f"with z_guided=True also {', '.join(z_names)})")
     if check_flag(z_guided, "z_guided"):
-        from ._z_guided_fit import train_z_guided
         given = [k for k, v in (("radius", radius), ("hash_radius", hash_radius),
                                 ("n_strength", n_strength), ("n_coherence", n_coherence),
                                 ("n_spread", n_spread)) if v != 3]
@@ -100,8 +112,8 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
                              "base learned filters; pass base= instead")
         return train_z_guided(frames, ridge=ridge, prior=prior, meta=meta, **z_options)
     if z_options:
-        raise TypeError(f"{next(iter(z_options))}: not an option of train() without "
-                        "z_guided=True")
+        raise TypeError(f"{next(iter(z_options))}: an option of train(z_guided=True) only "
+                        "(without it train() fits learned filters)")
     from ._learned import LearnedFilters
     radius = check_int(radius, "radius", lo=2, hi=5)
     hash_radius = check_int(hash_radius, "hash_radius", lo=2, hi=radius)
