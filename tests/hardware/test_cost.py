@@ -177,3 +177,16 @@ def test_dsp48_puts_each_multipliers_operands_on_the_cheaper_ports():
         assert c.dsp48() == want
         assert c.dsp48() == sum(n * min(-(-a // 27) * -(-b // 18), -(-b // 27) * -(-a // 18))
                                 for (a, b), n in c.multipliers().items())
+
+
+def test_by_kind_refuses_a_kind_that_is_none():
+    """Round 25 (API10): by_kind("adder") returned {}, which read as "no adder"; the kinds
+    are KINDS, and every unit's kind is one of them."""
+    from rgbz_fast.hardware._cost import KINDS
+
+    cost = hardware_cost("mask1", "sg")
+    assert {u.kind for u in cost.units} <= set(KINDS)
+    assert cost.by_kind("add") == cost.as_dict()["adders"] and cost.by_kind("add")
+    with pytest.raises(ValueError, match=r"^kind: 'adder' is not a kind of operator \(expected "
+                                         r"one of sub, abs, add, "):
+        cost.by_kind("adder")

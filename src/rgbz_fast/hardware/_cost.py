@@ -123,7 +123,14 @@ class HardwareCost:
         return dict(sorted(out.items(), reverse=True))
 
     def by_kind(self, kind):
-        """{width: count} of the operators of one kind."""
+        """{width: count} of the operators of one kind: one of :data:`KINDS` (``"sub"``,
+        ``"abs"``, ``"add"``, ``"cmp"``, ``"mul"``, ``"cmul"`` (a constant multiplier),
+        ``"shift"``, ``"lzd"`` (a leading-zero detector), ``"exp_lookup"``,
+        ``"recip_lookup"``); another is a ValueError naming ``kind`` (``"adder"`` had
+        returned {}, which read as no adder)."""
+        if kind not in KINDS:
+            raise ValueError(f"kind: {kind!r:.40} is not a kind of operator (expected one of "
+                             f"{', '.join(KINDS)})")
         out = defaultdict(int)
         for u in self.units:
             if u.kind == kind:
@@ -139,6 +146,10 @@ class HardwareCost:
                    for (a, b), n in self.multipliers().items())
 
     def as_dict(self):
+        """The cost as a JSON-ready dict (the ``cost`` of ``rgbz-fast hardware --json``): the
+        design, line buffers, window, latency, multipliers and DSP48 slices, adders,
+        subtractors and comparators by width, tables, registers, operations per site, bits
+        and notes."""
         return {
             "pattern": self.pattern, "method": self.method, "width": self.width,
             "bit_depth": self.bit_depth, "config": self.config.as_dict(),
