@@ -658,3 +658,21 @@ def test_a_dataset_says_which_entries_it_leaves_out(tmp_path):
     with pytest.warns(UserWarning, match=r"^dataset: left out 'dangling.png', 'f.tif' of .*: "
                                          "not regular files"):
         assert [s.name for s in rio.folder_dataset(tmp_path)] == ["a"]
+
+
+def test_image_source_keeps_raw_options_as_folder_dataset_does(tmp_path):
+    """Round 25 (API11): a dict of read_raw's options was kept as it was: the frozen source
+    was unhashable and unequal to folder_dataset's source of the same file and options."""
+    from rgbz_fast.io import ImageSource, folder_dataset
+
+    (tmp_path / "a.raw").write_bytes(np.zeros(16, np.uint16).tobytes())
+    opts = {"phase": "GRBG", "white_level": 1023, "black_level": 0, "shape": [4, 4],
+            "bit_depth_in": 10}
+    (src,) = folder_dataset(tmp_path, raw_options={"a.raw": opts})
+    mine = ImageSource("a", str(tmp_path / "a.raw"), opts, raw=True)
+    assert mine == src and hash(mine) == hash(src)
+    assert mine.raw_options == (("bit_depth_in", 10), ("black_level", 0), ("phase", "GRBG"),
+                                ("shape", (4, 4)), ("white_level", 1023))
+    assert ImageSource("a", "a.raw", mine.raw_options) == ImageSource("a", "a.raw", opts)
+    with pytest.raises(TypeError, match=r"^ImageSource.raw_options: expected a dict"):
+        ImageSource("a", "a.raw", 3)

@@ -61,12 +61,18 @@ class ImageSource:
                                 f"{type(getattr(self, name)).__name__}")
         for name in ("raw", "grey"):
             check_flag(getattr(self, name), f"ImageSource.{name}")
+        # kept as folder_dataset keeps them, so that the frozen source hashes and equals
+        # the same source from folder_dataset (a dict had been kept as it was: unhashable)
+        object.__setattr__(self, "raw_options", _options_tuple(self.raw_options))
 
     @property
     def is_raw(self):
         return self.raw or Path(self.location).suffix.lower() in RAW_SUFFIXES
 
     def load(self):
+        """The image: a Bayer :class:`~rgbz_fast.RawFrame` for a raw source (:meth:`is_raw`),
+        else the colour image as an (H, W, 3) array (8 or 16 bits, or float), read within
+        the source's limits; a ValueError naming ``dataset`` says what is wrong with it."""
         limits = dict(max_pixels=self.max_pixels, max_bytes=self.max_bytes)
         if self.is_raw:
             try:
@@ -136,6 +142,23 @@ MOSAIC_RATIO = 1.15
 MOSAIC_CONTRAST = 0.15
 #: smaller images are not tested: their site means are too noisy to tell
 MOSAIC_MIN_SIDE = 64
+
+
+def _options_tuple(options):
+    """The keyword arguments of read_raw as an ImageSource keeps them: sorted (name, value)
+    pairs, lists made tuples; from a dict or such pairs (a TypeError naming
+    ``ImageSource.raw_options`` otherwise)."""
+    if isinstance(options, dict):
+        options = options.items()
+    try:
+        pairs = [(k, tuple(v) if isinstance(v, list) else v) for k, v in options]
+    except (TypeError, ValueError):
+        raise TypeError(f"ImageSource.raw_options: expected a dict of read_raw's keyword "
+                        f"arguments or (name, value) pairs, got {options!r:.60}") from None
+    if not all(isinstance(k, str) for k, _ in pairs):
+        raise TypeError("ImageSource.raw_options: the names of read_raw's keyword arguments "
+                        "are strings")
+    return tuple(sorted(pairs, key=lambda kv: kv[0]))
 
 
 def _raw_options_setting(location):
@@ -249,9 +272,7 @@ def folder_dataset(path, limit=None, raw_options=None, *, grey=False, max_pixels
     for f in files:
         if f.suffix.lower() in RAW_SUFFIXES or f.name in raw_options:
             opts = {**raw_options.get("*", {}), **raw_options.get(f.name, {})}
-            out.append(ImageSource(f.stem, str(f), tuple(sorted(
-                (k, tuple(v) if isinstance(v, list) else v) for k, v in opts.items())), raw=True,
-                **common))
+            out.append(ImageSource(f.stem, str(f), _options_tuple(opts), raw=True, **common))
         elif f.stem.endswith("_rgb") and f.stem[:-4] in nir:
             out.append(ImageSource(f.stem[:-4], str(f), nir=str(nir[f.stem[:-4]]), **common))
         else:
