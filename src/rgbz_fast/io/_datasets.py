@@ -70,7 +70,7 @@ class ImageSource:
         return self.raw or Path(self.location).suffix.lower() in RAW_SUFFIXES
 
     def load(self):
-        """The image: a Bayer :class:`~rgbz_fast.RawFrame` for a raw source (:meth:`is_raw`),
+        """The image: a Bayer :class:`~rgbz_fast.RawFrame` for a raw source (``is_raw``),
         else the colour image as an (H, W, 3) array (8 or 16 bits, or float), read within
         the source's limits; a ValueError naming ``dataset`` says what is wrong with it."""
         limits = dict(max_pixels=self.max_pixels, max_bytes=self.max_bytes)

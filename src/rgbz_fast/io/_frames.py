@@ -342,6 +342,9 @@ def read_npz(path, name="path", *, keys=None, required=(), max_pixels=None, max_
         The members to read (others are ignored); default: every member.
     required : iterable of str
         Members that must be present.
+    max_pixels, max_bytes : int, optional
+        The read limits (:func:`rgbz_fast.io.read_limits`): the elements of one
+        member and the bytes of the file.
 
     Returns
     -------
@@ -349,9 +352,11 @@ def read_npz(path, name="path", *, keys=None, required=(), max_pixels=None, max_
 
     Raises
     ------
+    FileNotFoundError
+        ``"<name>: no such file: ..."`` when the file is missing.
     ValueError
-        ``"<name>: ..."`` when the file is missing, not a regular file, too
-        large, not an NPZ archive, damaged, or lacks a required member.
+        ``"<name>: ..."`` when it is not a regular file, too large, not an
+        NPZ archive, damaged, or lacks a required member.
 
     Examples
     --------

@@ -192,6 +192,8 @@ class FixedPointConfig:
 
     @classmethod
     def field_names(cls):
+        """The names of the fields of :class:`FixedPointConfig`, in order (the keys a mapping of
+        them may hold)."""
         return tuple(f.name for f in fields(cls))
 
     @classmethod

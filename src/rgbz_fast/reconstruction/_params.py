@@ -184,6 +184,8 @@ class ReconstructParams:
 
     @classmethod
     def field_names(cls):
+        """The names of the fields of :class:`ReconstructParams`, in order (the keys a mapping of
+        them may hold)."""
         return tuple(f.name for f in fields(cls))
 
     @classmethod
