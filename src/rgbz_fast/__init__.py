@@ -21,6 +21,7 @@ The names most used are re-exported here.
 
 import os as _os
 import sys as _sys
+from typing import TYPE_CHECKING as _TYPE_CHECKING
 
 
 def _the_command():
@@ -74,6 +75,11 @@ __all__ = [
     "ColourISP", "tof_depth", "ToFISP", "ToFDepth",
     "simulation", "reconstruction", "isp", "tof", "metrics", "evaluation", "io",
 ]
+
+if _TYPE_CHECKING:
+    # what type checkers see (py.typed is shipped); at run time these come lazily, below
+    from . import tof
+    from .tof import ToFDepth, ToFISP, tof_depth
 
 # the ToF chain is imported at its first use: the colour chain's commands (evaluate,
 # reconstruct) never load it

@@ -10,7 +10,7 @@ readers and consumed by the ISPs, so they live below all of them.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -82,6 +82,13 @@ class RawFrame:
     reference: np.ndarray | None = None
     tof: Any = None
     meta: dict = field(default_factory=dict)
+
+    if TYPE_CHECKING:
+        # the __init__ type checkers see (py.typed is shipped): ``pattern`` also takes a
+        # preset name or a tile, which __post_init__ makes the Pattern the field holds
+        def __init__(self, data: np.ndarray, pattern: Pattern | str, bit_depth: int = 11,
+                     reference: np.ndarray | None = None, tof: Any = None,
+                     meta: dict = ...) -> None: ...
 
     def __setstate__(self, state):          # a pickled or deep-copied frame stays read-only
         read_only_state(self, state)

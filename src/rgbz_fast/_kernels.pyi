@@ -215,7 +215,8 @@ def tof_phase_iq(i: np.ndarray, q: np.ndarray, phase: np.ndarray, amp: np.ndarra
 # colour-guided ToF ISP and upsampling (csrc/tof_guided.h)
 def tofg_prepare(taps: np.ndarray, gain: float, black: float, supp: float, const_var: float,
                  prnu: float, white: float, zr: np.ndarray, zi: np.ndarray, v: np.ndarray,
-                 sat: np.ndarray, offset: np.ndarray | None, workers: int) -> None: ...
+                 sat: np.ndarray, offset: np.ndarray | None, workers: int,
+                 fixed_var: float = ..., phi: np.ndarray | None = ...) -> None: ...
 def tofg_ring(guide: np.ndarray, row_px: np.ndarray, col_px: np.ndarray, block: int,
               inv: np.ndarray, ring: np.ndarray, workers: int) -> None: ...
 def tofg_colour(guide: np.ndarray, row_px: np.ndarray, col_px: np.ndarray, block: int,

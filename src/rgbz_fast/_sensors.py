@@ -302,7 +302,7 @@ class ToFSensor(_Readout):
     integration_time: float = 1e-3
     wavelength_nm: float = 940.0
     optical_power_w: float = 0.5
-    modulation_contrast: float = 0.8
+    modulation_contrast: float | tuple[float, ...] = 0.8
     fov_deg: tuple = (60.0, 45.0)
     f_number: float = 1.2
     optics_transmission: float = 0.9

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 
 from .._patterns import Pattern, check_z_patterns, get_pattern
@@ -121,9 +121,10 @@ class EvalConfig:
     (('bilinear', 'sg'), 'float64')
     """
 
-    patterns: tuple = ("mask1", "mask2")
-    methods: tuple = ("bilinear", "bi", "edi_central", "edi_line", "sg")
-    metrics: tuple = ALL_METRICS
+    patterns: tuple[str, ...] | str | Sequence[str | Pattern] = ("mask1", "mask2")
+    methods: tuple[str, ...] | str | Sequence[str] = ("bilinear", "bi", "edi_central", "edi_line",
+                                                      "sg")
+    metrics: tuple[str, ...] | str | Sequence[str] = ALL_METRICS
     bit_depth: int = 11
     noise: bool = False
     linearise: bool = True

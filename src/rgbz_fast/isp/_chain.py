@@ -31,6 +31,7 @@ import time
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -181,6 +182,17 @@ class ColourISP:
     output_bits: int = 8
     black_level: float | None = None
     precision: str = "float32"
+
+    if TYPE_CHECKING:
+        # the __init__ type checkers see (py.typed is shipped): a stage field also takes a
+        # dict of the stage's fields, which __post_init__ makes the stage the field holds
+        def __init__(self, defects: DefectCorrection | Mapping[str, Any] = ...,
+                     reconstruction: Reconstruction | Mapping[str, Any] = ...,
+                     white_balance: WhiteBalance | Mapping[str, Any] = ...,
+                     demosaicing: Demosaic | Mapping[str, Any] = ...,
+                     colour_correction: ColourCorrection | Mapping[str, Any] = ...,
+                     output_bits: int = 8, black_level: float | None = None,
+                     precision: str = "float32") -> None: ...
 
     def __post_init__(self):
         for name, cls in _STAGE_FIELDS.items():

@@ -104,6 +104,14 @@ def load_spectral(path, *, wavelengths=None, variable=None, depth=None, depth_va
     variable : str, optional
         The variable of a ``.mat`` file; default ``Omsi`` (CAVE), else the
         only 3-D numeric array in the file.
+    depth, depth_valid : ndarray, shape (H, W), optional
+        Depth in metres and where it is known, as in :class:`Scene`.
+    ir_reflectance : ndarray, shape (H, W), optional
+        Reflectance in [0, 1] at the laser wavelength, as in :class:`Scene`
+        (default: the estimate of :func:`estimate_ir_reflectance`).
+    name : str, optional
+        A short name for reports; default: the file's stem, or the folder's
+        name.
     input_bits : int, optional
         Bits of the values of an integer cube wider than 16 bits (see
         :class:`Scene`); 8- and 16-bit cubes say their range.

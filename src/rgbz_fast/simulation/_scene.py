@@ -41,11 +41,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .._validate import (FLOAT_DTYPES, check_choice, check_image, check_meta, check_number,
                          integer_bits, read_only_state)
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 __all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
            "CAVE_WAVELENGTHS"]
@@ -273,7 +277,7 @@ class Scene:
     """
 
     image: np.ndarray
-    wavelengths: np.ndarray | None = None
+    wavelengths: ArrayLike | None = None
     depth: np.ndarray | None = None
     depth_valid: np.ndarray | None = None
     ir_reflectance: np.ndarray | None = None
@@ -396,6 +400,14 @@ class Scene:
             Instead of ``depth``: converted with :func:`disparity_to_depth`
             using ``focal_px``, ``baseline_m``, ``disparity_offset`` and
             ``invalid_disparity``.
+        ir_reflectance : ndarray, shape (H, W), optional
+            Reflectance in [0, 1] at the laser wavelength, as in :class:`Scene`
+            (default: the estimate of :func:`estimate_ir_reflectance`).
+        name : str
+            A short name for reports.
+        meta : dict, optional
+            Free-form metadata, copied; a ``disparity`` conversion adds
+            ``focal_px``, ``baseline_m`` and ``disparity_offset`` to it.
         input_bits : int, optional
             Bits of the values of an integer image (see :class:`Scene`).
         """

@@ -161,7 +161,7 @@ class ToFISP:
     ValueError: window: expected an odd positive integer (5 = the paper's 5x5 kernel), got 4
     """
 
-    denoise: str = "bilateral"
+    denoise: str | bool = "bilateral"
     window: int | None = None
     range_scale: float = 2.0
     colour_scale: float = 5.0
