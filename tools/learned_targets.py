@@ -42,8 +42,9 @@ from rgbz_fast.reconstruction import LearnedFilters
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from learned_fit import DATA, fit, heldout_split, saturate  # noqa: E402
 
-NON_Z = [(m, d) for m in ("bilinear", "bi", "edi_central", "edi_line", "sg")
-         for d in ("intensity", "colour_difference")]
+# bilinear interpolates the intensities only (it refuses the colour-difference domain: H75)
+NON_Z = [("bilinear", "intensity")] + [(m, d) for m in ("bi", "edi_central", "edi_line", "sg")
+                                       for d in ("intensity", "colour_difference")]
 LABEL = {"bilinear": "bilinear", "bi": "BI", "edi_central": "EDICentral",
          "edi_line": "EDILine", "sg": "SG"}
 SETS = ("kodak", "kodak_sat", "cbsd68", "manga109", "sun_hays80")
