@@ -197,6 +197,32 @@ def test_importing_colour_leaves_numpy_print_options_alone():
     assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
 
 
+def test_the_figures_leave_the_callers_matplotlib_backend_alone(tmp_path):
+    """Round 25 (PKG07): the figures were pyplot's after matplotlib.use("Agg"), which
+    switched the backend of the caller's process (a notebook's plt.show() then showed
+    nothing). They are Figures on their own Agg canvas now; pyplot is not even loaded."""
+    code = f"""
+import sys, matplotlib
+matplotlib.use("svg")
+from rgbz_fast.evaluation import EvalConfig, Results, write_reports
+from rgbz_fast._devtools import plots
+rows = [{{"image": i, "pattern": "mask1", "method": m, "metric": "cpsnr", "value": v}}
+        for i, v in (("a", 30.0), ("b", 20.0)) for m in ("bilinear", "sg")]
+res = Results(rows, EvalConfig(patterns=("mask1",), methods=("bilinear", "sg"),
+                               metrics=("cpsnr",)))
+write_reports(res, {str(tmp_path / "out")!r})
+png = plots.hardware_sweep_plot([{{"label": "x", "refused": "no"}}], "t")
+assert png[1:4] == b"PNG", png[:8]
+assert matplotlib.get_backend() == "svg", matplotlib.get_backend()
+assert "matplotlib.pyplot" not in sys.modules
+print("ok")
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
+    assert any(p.suffix == ".png" for p in (tmp_path / "out").iterdir())
+
+
 @pytest.mark.parametrize("old,name", [
     ("scene", "load_rgbd"), ("sensor", "simulate"), ("sensor", "ToFTaps"),
     ("tof_isp", "tof_depth"), ("demosaic", "demosaic"), ("evaluate", "EvalConfig"),

@@ -19,18 +19,18 @@ __all__ = ["depth_preview", "depth_flags_figure", "full_depth_preview", "tradeof
 
 
 def _pyplot():
+    """matplotlib and the figure factory of the reports (figures outside pyplot: the
+    caller's backend is left as it is)."""
     import matplotlib
 
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
+    from ..evaluation._reports import _Figures
 
-    return matplotlib, plt
+    return matplotlib, _Figures
 
 
 def _png(fig, plt, **kwargs):
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, **kwargs)
-    plt.close(fig)
     return buf.getvalue()
 
 

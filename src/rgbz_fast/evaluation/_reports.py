@@ -172,16 +172,37 @@ def check_reports_folder(out, name="out_dir"):
 def _figure_png(fig, metadata=None):
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, bbox_inches="tight", metadata=metadata)
-    import matplotlib.pyplot as plt
-    plt.close(fig)
     return buf.getvalue()
 
 
+class _Figures:
+    """pyplot's ``subplots``, ``figure`` and ``close`` for the library's figures, without
+    pyplot: each a :class:`matplotlib.figure.Figure` on its own Agg canvas, which pyplot
+    does not manage (nothing to close: it goes with its last reference). The figures had
+    been pyplot's after ``matplotlib.use("Agg")``, which switched the backend of the
+    caller's process: a notebook's or a Tk/Qt session's ``plt.show()`` then showed nothing."""
+
+    @staticmethod
+    def figure(figsize=None, **kwargs):
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=figsize, **kwargs)
+        FigureCanvasAgg(fig)
+        return fig
+
+    @classmethod
+    def subplots(cls, nrows=1, ncols=1, *, figsize=None, **kwargs):
+        fig = cls.figure(figsize=figsize)
+        return fig, fig.subplots(nrows, ncols, **kwargs)
+
+    @staticmethod
+    def close(fig=None):
+        """Nothing to release (the figure is not pyplot's)."""
+
+
 def _pyplot():
-    import matplotlib
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-    return plt
+    return _Figures
 
 
 def _colours(methods):
