@@ -245,6 +245,21 @@ def test_module_names_of_0_1_still_work_with_a_warning(old, name):
     assert callable(getattr(mod, name))
 
 
+def test_python_m_of_the_0_1_module_names(tmp_path):
+    """Round 25 (PKG06): ``python -m rgbz_fast.cli`` ran 0.1's command and died in runpy
+    with a bare AttributeError (the alias loader had no get_code). It runs the command with
+    the warning; another old name says it runs nothing, without a traceback."""
+    r = subprocess.run([sys.executable, "-m", "rgbz_fast.cli", "--version"],
+                       capture_output=True, text=True, timeout=120, cwd=tmp_path)
+    assert r.returncode == 0 and r.stdout.startswith("rgbz-fast "), r.stderr
+    assert "DeprecationWarning: python -m rgbz_fast.cli is the command of rgbz-fast 0.1" \
+        in r.stderr
+    r = subprocess.run([sys.executable, "-m", "rgbz_fast.sensor"], capture_output=True,
+                       text=True, timeout=120, cwd=tmp_path)
+    assert r.returncode == 2 and "Traceback" not in r.stderr
+    assert "rgbz_fast.sensor is a module of rgbz-fast 0.1 and runs nothing" in r.stderr
+
+
 def test_every_exported_name_exists_and_0_1_top_level_names_remain():
     for name in _modules():
         mod = importlib.import_module(name)

@@ -91,6 +91,22 @@ class _AliasFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
     def exec_module(self, module):
         pass
 
+    def get_code(self, fullname):
+        """What ``python -m <package>.<old>`` runs (runpy asks the loader for code; without
+        this method it died with a bare AttributeError): 0.1's ``cli`` ran the command, and
+        still does, with the warning; the other old names run nothing and say so."""
+        old = fullname.rpartition(".")[2]
+        if old == "cli":
+            src = (f"import warnings\nwarnings.warn('python -m {fullname} is the command of "
+                   f"rgbz-fast 0.1; use rgbz-fast or python -m {self.package}', "
+                   f"DeprecationWarning, stacklevel=1)\n"
+                   f"from {self.package}._cli import main\nraise SystemExit(main())\n")
+        else:
+            src = (f"import sys\nsys.stderr.write('{fullname} is a module of rgbz-fast 0.1 "
+                   f"and runs nothing; the command is rgbz-fast (python -m {self.package})\\n')"
+                   f"\nraise SystemExit(2)\n")
+        return compile(src, f"<{fullname}>", "exec")
+
 
 def install_aliases(package, lazy=None):
     """Register the 0.1 module names of ``package`` (its ``__getattr__`` and an import finder).
