@@ -133,9 +133,14 @@ def test_bench_colour_chain_section(capsys):
     assert "noise-free" in text and "no verdict" in text
 
 
-def test_measure_memory_tiny_frame():
+def test_measure_memory_tiny_frame(tmp_path, monkeypatch):
     import rgbz_fast as rz
 
+    # another rgbz_fast in the current folder (a checkout's src/): the child had imported
+    # it (`python -c` puts the folder first) instead of the package measured (round 25, PKG05)
+    (tmp_path / "rgbz_fast").mkdir()
+    (tmp_path / "rgbz_fast" / "__init__.py").write_text("raise ImportError('the wrong one')")
+    monkeypatch.chdir(tmp_path)
     frame = rz.mosaic(np.zeros((48, 64, 3), np.uint8), rz.mask1())
     mem = bench.measure_memory(frame.data, "mask1", "sg", "float32", 1)
     if mem is None:

@@ -15,6 +15,9 @@ __all__ = ["measure_memory"]
 
 _MEM_SCRIPT = r"""
 import gc, json, sys, tracemalloc
+# the parent's import path: `python -c` puts the current folder first, and an `rgbz_fast`
+# folder there (a checkout's src/) was imported instead of the package the parent measures
+sys.path[:] = json.loads(sys.argv[7])
 import numpy as np
 import rgbz_fast as rz
 path, pattern, method, precision, workers, mode = sys.argv[1:7]
@@ -72,8 +75,10 @@ def measure_memory(data, pattern="mask1", method="sg", precision="float32", work
         out = {}
         for mode in ("array", "rawframe"):
             res = subprocess.run([sys.executable, "-c", _MEM_SCRIPT, str(path), str(pattern),
-                                  method, precision, str(workers), mode], capture_output=True,
-                                 text=True, timeout=600)
+                                  method, precision, str(workers), mode,
+                                  json.dumps([os.path.abspath(p) if p else p
+                                              for p in sys.path])],
+                                 capture_output=True, text=True, timeout=600)
             if res.returncode != 0:
                 err = res.stderr.strip().splitlines()
                 return {"error": err[-1] if err else "failed"}
