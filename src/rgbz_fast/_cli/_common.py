@@ -23,7 +23,8 @@ __all__ = ["CliError", "Formatter", "EPILOG", "command_parser", "explain", "comm
            "output_folder", "check_outputs", "unique_outputs", "file_label"]
 
 EPILOG = ("Every option's default is shown in parentheses. The user guide, the measured "
-          "results and the API reference are in the project's documentation.")
+          "results and the API reference are in docs/ of the source distribution (the "
+          "sdist, or a checkout): docs/guide/cli.md for the commands.")
 
 
 class CliError(Exception):

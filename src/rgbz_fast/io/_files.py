@@ -363,15 +363,22 @@ def _decode_png16_colour(data):
     """
     from PIL import Image
 
+    # a tile is (decoder, extents, offset, args): a NamedTuple since Pillow 11, a plain
+    # tuple before (the attribute .args and _replace had made every 16-bit colour PNG
+    # unreadable with Pillow 9 and 10)
+    def with_rawmode(t, rawmode):
+        args = t[3]
+        args = rawmode if isinstance(args, str) else (rawmode,) + tuple(args[1:])
+        return t._replace(args=args) if hasattr(t, "_replace") else (*t[:3], args)
+
     def plane(rawmode):
         with Image.open(io.BytesIO(data)) as im:
-            im.tile = [t._replace(args=rawmode) if isinstance(t.args, str)
-                       else t._replace(args=(rawmode,) + tuple(t.args[1:])) for t in im.tile]
+            im.tile = [with_rawmode(t, rawmode) for t in im.tile]
             im.load()
             return np.asarray(im, dtype=np.uint16)
 
     with Image.open(io.BytesIO(data)) as im:
-        high = im.tile[0].args
+        high = im.tile[0][3]
         high = high if isinstance(high, str) else high[0]
     if high not in ("RGB;16B", "RGBA;16B"):
         raise ValueError(f"unexpected 16-bit PNG layout {high!r} in this Pillow version")
