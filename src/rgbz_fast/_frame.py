@@ -547,7 +547,7 @@ def paint_sites(v, shape, sites, block, fill):
     n = r.size
     if v.shape[-1:] != (n,) or v.ndim > 2:
         raise ValueError(f"values: expected shape ({n},) or (F, {n}), got {v.shape}")
-    if v.dtype == bool and not isinstance(fill, float) and fill in (0, 1):
+    if v.dtype == bool and not isinstance(fill, (float, np.floating)) and fill in (0, 1):
         dtype = np.dtype(bool)
     else:
         dtype = np.result_type(v.dtype, np.min_scalar_type(fill))
