@@ -313,7 +313,7 @@ CLI_ROWS = [
       "without it"),
     C("cli.train-seed-without-z-guided", ("train", "--dataset", "{d}/ds", "--seed", "5",
                                           "--out", "{d}/t.npz"),
-      "--seed: applies with --z-guided only"),
+      "--seed: applies with --noise or --z-guided (a noise-free fit draws nothing)"),
     C("cli.train-dataset-twice", ("train", "--dataset", "{d}/ds", "--dataset", "{d}/ds/",
                                   "--out", "{d}/t.npz"),
       "--dataset: {d}/ds is given twice (as {d}/ds); name each folder once"),

@@ -396,6 +396,37 @@ def test_train_filters_fits_both_encodings():
         train_filters(sample_dataset()[:1], "mask1", encoding="both", noise=True)
 
 
+def test_a_noisy_fit_takes_and_records_its_seed(tmp_path):
+    """Round 25 (PARITY p02, p06): the command refused --seed with --noise (it always fitted
+    with seed 0), and the filters did not record the seed their noisy frames were drawn
+    with; z_guided took any encoding, "nonsense" included, and ignored it."""
+    import numpy as np
+
+    import imageio.v3 as iio
+
+    from rgbz_fast._cli import main
+    from rgbz_fast.evaluation import train_filters
+    from rgbz_fast.io import sample_dataset
+
+    kw = dict(noise=True, n_strength=1, n_coherence=1, n_spread=1)
+    a = train_filters(sample_dataset()[:1], "mask1", seed=5, **kw)
+    b = train_filters(sample_dataset()[:1], "mask1", seed=0, **kw)
+    assert a.meta["seed"] == 5 and b.meta["seed"] == 0 and a != b
+    assert "seed" not in train_filters(sample_dataset()[:1], "mask1", n_strength=1,
+                                       n_coherence=1, n_spread=1).meta
+    (tmp_path / "ds").mkdir()
+    iio.imwrite(tmp_path / "ds" / "a.png", sample_dataset()[0].load())
+    assert main(["train", "--dataset", str(tmp_path / "ds"), "--pattern", "mask1", "--noise",
+                 "--seed", "5", "--strength", "1", "--coherence", "1", "--spread", "1",
+                 "--out", str(tmp_path / "f.npz"), "--quiet"]) == 0
+    from rgbz_fast.reconstruction import LearnedFilters
+    f = LearnedFilters.load(tmp_path / "f.npz")
+    assert f.meta["seed"] == 5 and np.array_equal(f.weights, a.weights)
+    with pytest.raises(ValueError, match=r"^encoding: z_guided filters are fitted on the "
+                                         r"sensor model's linear frames; got 'nonsense'"):
+        train_filters(sample_dataset()[:1], "mask1", z_guided=True, encoding="nonsense")
+
+
 def test_bad_filters_values(tmp_path):
     with pytest.raises(TypeError, match=r"^filters: expected a LearnedFilters"):
         rz.ReconstructParams(filters=3)

@@ -68,7 +68,9 @@ def add_parser(sub):
                         "prior 50, colour prior 4 (default: cv)")
     p.add_argument("--cv-folds", type=c.positive_int, default=None,
                    help="--z-guided: folds of --select cv, >= 2 (default: 4)")
-    c.add_seed(p, None, "--z-guided: noise seed of every pair's noisy frame (default: 1)")
+    c.add_seed(p, None, "noise seed: with --noise, of the first image (the next image takes "
+                        "the next seed; default: 0); with --z-guided, of every pair's noisy "
+                        "frame (default: 1)")
     c.add_quiet(p, "no progress bar or summary line")
     c.add_limits(p)
     return p
@@ -116,7 +118,7 @@ def run(args):
     filters = train_filters(
         sources, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
         linearise=args.linearise, encoding=args.encoding, name=name,
-        progress=c.bars(args), radius=args.radius, hash_radius=args.hash_radius,
+        seed=0 if args.seed is None else args.seed, progress=c.bars(args), radius=args.radius, hash_radius=args.hash_radius,
         n_strength=args.strength, n_coherence=args.coherence, n_spread=args.spread,
         ridge=args.ridge, prior=args.prior, meta={"command": c.command_line(args)})
     filters.save(args.out)
@@ -150,9 +152,13 @@ def _check_z_options(args):
                                  "its hash is that of the shipped learned filters)")
     if not args.z_guided:
         for flag, value in (("--colour-prior", args.colour_prior), ("--select", args.select),
-                            ("--cv-folds", args.cv_folds), ("--seed", args.seed)):
+                            ("--cv-folds", args.cv_folds)):
             if value is not None:
                 raise c.CliError(f"{flag}: applies with --z-guided only")
+        if args.seed is not None and not args.noise:
+            # the noisy fit takes it (it had been refused: the command fitted with seed 0 only)
+            raise c.CliError("--seed: applies with --noise or --z-guided (a noise-free fit "
+                             "draws nothing)")
     if args.encoding in ("linear", "both") and not args.linearise:
         # --no-linearise had been dropped without a word
         raise c.CliError(f"--encoding: {args.encoding} contradicts --no-linearise (the sRGB "

@@ -103,6 +103,10 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     linearise = check_flag(linearise, "linearise")
     noise = check_flag(noise, "noise")
     if check_flag(z_guided, "z_guided"):
+        if encoding not in (None, "linear"):
+            # it had been accepted and ignored, "nonsense" included
+            raise ValueError(f"encoding: z_guided filters are fitted on the sensor model's "
+                             f"linear frames; got {encoding!r:.40}")
         return _train_z_guided(dataset, pattern, bit_depth, noise, linearise, seed, limit, name,
                                progress, options)
     if encoding is None:
@@ -124,9 +128,11 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
     configs = [EvalConfig(patterns=(pattern.tile_string,), bit_depth=bit_depth, noise=noise,
                           linearise=(enc == "linear"), seed=seed, metrics=("cfa_psnr",))
                for enc in (("linear", "srgb") if encoding == "both" else (encoding,))]
-    meta = _merge_meta({"training_set": name, "noise": bool(noise),
-                        "encoding": "linear+srgb" if encoding == "both" else encoding},
-                       options.pop("meta", None))
+    info = {"training_set": name, "noise": bool(noise),
+            "encoding": "linear+srgb" if encoding == "both" else encoding}
+    if noise:
+        info["seed"] = seed              # the noisy frames' draws: what reproduces the fit
+    meta = _merge_meta(info, options.pop("meta", None))
     frames = _Frames(sources, pattern, configs, progress)
     with frames.fitting:
         return train(frames, meta=meta, **options)
