@@ -141,7 +141,9 @@ _OTHER = {"exp": "table", "exp_table_size": 8, "exp_bits": 12, "exp_range_bits":
 def test_fields_used_are_those_that_reach_the_datapath(method, rng):
     """FIELDS_USED (what `rgbz-fast hardware --fixed-point` and its sweep take): a field
     outside it changes neither the cost nor a bit of the result; one inside it changes the
-    cost (register_bits, a bound, is in every set)."""
+    cost (register_bits, a bound, is in every set). hardware_cost refuses a field outside it
+    named in a mapping (round 25, PARITY p03: it had recorded it as applied); a
+    FixedPointConfig object, one design's configuration, may carry other methods' fields."""
     import dataclasses
 
     import rgbz_fast as rz
@@ -151,6 +153,14 @@ def test_fields_used_are_those_that_reach_the_datapath(method, rng):
     data = rng.integers(0, 2048, (24, 28)).astype(np.uint16)
     for field, value in _OTHER.items():
         cfg = dataclasses.replace(base, **{field: value})
+        if field not in FIELDS_USED[method]:
+            # named in a mapping, as the command line's --fixed-point names it: refused
+            with pytest.raises(ValueError, match=rf"^fixed_point: {field} does not reach "
+                                                 rf"{method}'s datapath"):
+                hardware_cost("mask1", method, fixed_point={field: value})
+            with pytest.raises(ValueError, match=rf"^fixed_point: {field} does not reach"):
+                rz.reconstruct(data, method, pattern="mask1", precision="fixed",
+                               fixed_point={field: value})
         costs = [(c.table_bits, c.datapath_bits, c.registers) for c in
                  (hardware_cost(p, method, fixed_point=f) for p in ("mask1", "mask2")
                   for f in (base, cfg))]
@@ -163,6 +173,23 @@ def test_fields_used_are_those_that_reach_the_datapath(method, rng):
             a, b = (rz.reconstruct(data, method, pattern=p, precision="fixed", fixed_point=f)
                     for f in (base, cfg))
             assert np.array_equal(a, b), (field, p)
+
+
+def test_fixed_point_with_a_float_precision_is_refused():
+    """Round 25 (PARITY p04): fixed_point with precision float32/float64 ran the float
+    kernels and ignored it."""
+    import rgbz_fast as rz
+    from rgbz_fast.reconstruction import ReconstructParams
+
+    data = np.zeros((16, 16), np.uint16)
+    for precision in ("float32", "float64"):
+        with pytest.raises(ValueError, match=rf"^fixed_point: the fixed-point model's widths "
+                                             rf"and tables \(precision='fixed'\); "
+                                             rf"precision='{precision}' runs the float"):
+            rz.reconstruct(data, "sg", pattern="mask1", precision=precision,
+                           fixed_point={"exp_bits": 6})
+        with pytest.raises(ValueError, match=r"^fixed_point: "):
+            ReconstructParams(precision=precision, fixed_point={"exp_bits": 6})
 
 
 def test_dsp48_puts_each_multipliers_operands_on_the_cheaper_ports():

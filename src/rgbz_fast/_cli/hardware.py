@@ -75,7 +75,8 @@ def run(args):
     from .._devtools import hardware as hw
     from .._devtools._common import json_text, progress
     from .._patterns import get_pattern
-    from ..hardware import FIELDS_USED, FixedPointConfig
+    from ..hardware import FixedPointConfig
+    from ..reconstruction._fixed_config import check_fields_used
 
     out = c.output_folder(args.out)
     c.check_report_outputs(out, ["hardware.md", "hardware.json"]
@@ -84,10 +85,10 @@ def run(args):
         config = FixedPointConfig.build(args.fixed_point)
     except (TypeError, ValueError) as exc:
         raise c.CliError(f"--fixed-point: {exc}") from None
-    unused = [k for k in (args.fixed_point or {}) if k not in FIELDS_USED[args.method]]
-    if unused:                   # it would be recorded in hardware.json and change nothing
-        raise c.CliError(f"--fixed-point: {unused[0]} does not reach {args.method}'s datapath "
-                         f"(it takes {', '.join(FIELDS_USED[args.method])})")
+    try:                         # it would be recorded in hardware.json and change nothing
+        check_fields_used(args.method, args.fixed_point or {}, "--fixed-point")
+    except ValueError as exc:
+        raise c.CliError(str(exc)) from None
     if args.sweep and args.method == "bilinear":
         raise c.CliError("--sweep: bilinear is exact, with no width to move")
     c.limits_need(args, args.dataset is not None,

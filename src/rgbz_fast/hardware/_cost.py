@@ -28,7 +28,7 @@ from .._validate import check_int
 from ..reconstruction import ReconstructParams
 from ..reconstruction._fixed import (ALL_FIXED_METHODS, LIMITS, _group_counts, fixed_setup,
                                      hw_constants, register_widths)
-from ..reconstruction._fixed_config import FixedPointConfig
+from ..reconstruction._fixed_config import FIELDS_USED, FixedPointConfig, check_fields_used
 from ..reconstruction._plans import build_plans
 
 __all__ = ["HardwareCost", "Unit", "hardware_cost", "bram18_blocks", "BRAM18_BITS", "FIELDS_USED"]
@@ -41,19 +41,6 @@ KINDS = ("sub", "abs", "add", "cmp", "mul", "cmul", "shift", "lzd", "exp_lookup"
          "recip_lookup")
 
 
-_PLAN_FIELDS = ("exp", "exp_table_size", "exp_bits", "exp_range_bits", "recip",
-                "recip_table_size", "recip_bits", "ratio_bits", "sigma_bits", "alpha_bits",
-                "weight_bits", "register_bits")
-#: the FixedPointConfig fields that reach each method's datapath (the others leave its
-#: result and its cost as they are: bilinear is exact, BI has no eq. 7, learned its own model);
-#: register_bits bounds every register of all of them
-FIELDS_USED = {
-    "bilinear": ("register_bits",),
-    "bi": ("recip", "recip_table_size", "recip_bits", "alpha_bits", "weight_bits",
-           "register_bits"),
-    "edi_central": _PLAN_FIELDS, "edi_line": _PLAN_FIELDS, "sg": _PLAN_FIELDS,
-    "learned": ("hash_norm_bits", "hash_bits", "hash_const_bits", "tap_bits", "register_bits"),
-}
 
 
 def bram18_blocks(depth, width):
@@ -375,6 +362,7 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
     params = ReconstructParams.build(params)
     config = FixedPointConfig.build(fixed_point if fixed_point is not None
                                     else params.fixed_point)
+    check_fields_used(method, fixed_point)
     if not pattern.has_z:       # line buffers and a window had been costed for no work
         raise ValueError(f"pattern: {pattern.name!r} has no Z site; the model reconstructs "
                          "the Z sites of an RGB-Z pattern")

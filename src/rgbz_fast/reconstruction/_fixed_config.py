@@ -6,7 +6,7 @@ from dataclasses import asdict, dataclass, fields, replace
 
 from .._validate import check_bit_depth, check_choice, check_int, merge_params
 
-__all__ = ["FixedPointConfig", "TABLE_MODES"]
+__all__ = ["FixedPointConfig", "TABLE_MODES", "FIELDS_USED", "check_fields_used"]
 
 #: how a table is read: the nearest entry (midpoint values), or linear interpolation between
 #: two entries (piecewise-linear, one multiplier more per lookup)
@@ -200,3 +200,31 @@ class FixedPointConfig:
     def build(cls, value, name="fixed_point"):
         """``value`` as a FixedPointConfig: one, a mapping of its fields, or None (the default)."""
         return merge_params(cls, value, name=name)
+
+
+_PLAN_FIELDS = ("exp", "exp_table_size", "exp_bits", "exp_range_bits", "recip",
+                "recip_table_size", "recip_bits", "ratio_bits", "sigma_bits", "alpha_bits",
+                "weight_bits", "register_bits")
+#: the FixedPointConfig fields that reach each method's datapath (the others leave its
+#: result and its cost as they are: bilinear is exact, BI has no eq. 7, learned its own model);
+#: register_bits bounds every register of all of them
+FIELDS_USED = {
+    "bilinear": ("register_bits",),
+    "bi": ("recip", "recip_table_size", "recip_bits", "alpha_bits", "weight_bits",
+           "register_bits"),
+    "edi_central": _PLAN_FIELDS, "edi_line": _PLAN_FIELDS, "sg": _PLAN_FIELDS,
+    "learned": ("hash_norm_bits", "hash_bits", "hash_const_bits", "tap_bits", "register_bits"),
+}
+
+
+def check_fields_used(method, given, name="fixed_point"):
+    """A ValueError naming ``name`` when the fields a caller names (the keys of a mapping
+    ``given``; a FixedPointConfig object names none: one design's configuration may carry the
+    fields of other methods) include one that does not reach ``method``'s datapath
+    (:data:`FIELDS_USED`): it would change nothing and be recorded as applied."""
+    if not isinstance(given, dict) or method not in FIELDS_USED:
+        return
+    unused = [k for k in given if k not in FIELDS_USED[method]]
+    if unused:
+        raise ValueError(f"{name}: {unused[0]} does not reach {method}'s datapath (it takes "
+                         f"{', '.join(FIELDS_USED[method])})")

@@ -18,6 +18,7 @@ from .. import _kernels
 from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._validate import check_choice, check_workers, kernel_threads
 from ._fixed import check_fixed_call, run_fixed
+from ._fixed_config import check_fields_used
 from ._fixed_learned import run_fixed_learned
 from ._learned import resolve_filters
 from ._z_guided import learned_only, resolve_z_filters
@@ -226,6 +227,11 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     (dtype('uint16'), 1028, True)
     """
     params = ReconstructParams.build(params, options)
+    if params.precision == "fixed":
+        # fields named for this call that the method's datapath does not read: refused, as
+        # hardware_cost and the command line refuse them (a design's FixedPointConfig object
+        # may carry other methods' fields)
+        check_fields_used(method, options.get("fixed_point"))
     data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
     method = check_choice(method, METHODS, "method")
     nthreads = check_workers(workers)
