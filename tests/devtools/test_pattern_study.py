@@ -164,6 +164,39 @@ def test_bad_inputs_name_their_parameter(tiny):
         ps.pattern_study(tiny / "ds", presets=(), progress=False)
 
 
+def test_methods_given_with_settings_are_measured_or_the_conflict_refused(tiny, monkeypatch):
+    """``methods=`` had been ignored whenever ``settings=`` was given (the rows held every
+    method of the settings); a ``settings.methods`` of its own that disagrees is refused."""
+    res = ps.pattern_study(tiny / "ds", presets=("mask1",), methods=("bilinear",),
+                           settings=ps.StudySettings(wall_shape=(48, 48)), progress=False)
+    assert {r["method"] for r in res["rows"]} == {"bilinear"}
+    assert res["methods"] == res["settings"]["methods"] == ["bilinear"]
+
+    def no_work(*a, **k):
+        raise AssertionError("the study ran")
+
+    monkeypatch.setattr(ps, "_run", no_work)
+    with pytest.raises(ValueError, match=r"^methods: \['bi'\] conflicts with settings.methods "
+                                         r"\['bilinear', 'sg'\]"):
+        ps.pattern_study(tiny / "ds", presets=("mask1",), methods=("bi",), settings=FAST,
+                         progress=False)
+
+
+@pytest.mark.parametrize("kw, match", [
+    ({"train_limit": 1}, "^train_limit: applies with train="),
+    ({"rgbd_limit": 1}, "^rgbd_limit: applies with rgbd="),
+])
+def test_a_limit_without_its_folder_is_refused(tiny, monkeypatch, kw, match):
+    """As the command line refuses --train-limit without --train (--rgbd-limit without
+    --rgbd): the limit had been accepted and ignored."""
+    def no_work(*a, **k):
+        raise AssertionError("the study ran")
+
+    monkeypatch.setattr(ps, "_run", no_work)
+    with pytest.raises(ValueError, match=match):
+        ps.pattern_study(tiny / "ds", presets=("mask1",), settings=FAST, progress=False, **kw)
+
+
 # --------------------------------------------------------------------------- a study
 def test_cli_study_of_three_layouts(tiny, tmp_path, capsys, terminal):
     out = tmp_path / "out"

@@ -120,6 +120,30 @@ def test_bad_arguments():
     assert np.isfinite(1.0)
 
 
+def test_patterns_and_rgbnir_no_section_reads_are_refused(tmp_path, monkeypatch):
+    """``patterns=`` with the noise section alone had measured Mask1 and Mask2 without a
+    word, and ``rgbnir=`` without the rgbnir section had been ignored; both refused (as
+    ``rgbz-fast evaluate-depth`` refuses them), before any work."""
+    import rgbz_fast.evaluation._depth as depth
+
+    def no_work(*a, **k):
+        raise AssertionError("a section ran")
+
+    monkeypatch.setattr(depth, "_noise_rows", no_work)
+    monkeypatch.setattr(depth, "_range_rows", no_work)
+    with pytest.raises(ValueError, match=r"^patterns: the sections noise,range measure mask1 "
+                                         r"and mask2; patterns= applies to scenes, upsample "
+                                         "and rgbnir"):
+        evaluate_depth(None, sections=("noise", "range"), patterns=("ZRGR/BGBG/GRZR/BGBG",))
+    with pytest.raises(ValueError, match=r"^rgbnir: the sections noise do not read the "
+                                         "RGB-NIR pairs; rgbnir= applies to the rgbnir "
+                                         "section"):
+        evaluate_depth(None, sections=("noise",), rgbnir=tmp_path)
+    # with a section that reads them they are taken (no data, no pairs: nothing to run)
+    assert evaluate_depth(None, sections=("scenes",), patterns=("mask2",)) == {}
+    assert evaluate_depth(None, sections=("rgbnir",), rgbnir=tmp_path) == {"rgbnir": []}
+
+
 def test_a_scene_beyond_the_unambiguous_range_is_named(tmp_path):
     """Every depth of the scene beyond the range (dmin 0: the disparities alone, metres
     away): no measurement to score, an error naming the scene, not NumPy's empty minimum."""

@@ -56,18 +56,16 @@ def run(args):
                          "not beside the current folder; the RGB-NIR pairs are read from "
                          "rgbnir beside it)")
     sections = args.sections or DEPTH_SECTIONS
-    if args.patterns is not None and not {"scenes", "upsample", "rgbnir"} & set(sections):
-        # it had been accepted and ignored (the other sections measure Mask1 and Mask2)
-        raise c.CliError(f"--patterns: the sections {','.join(sections)} measure mask1 and "
-                         "mask2; --patterns applies to scenes, upsample and rgbnir")
+    # --patterns, --rgbnir given for sections that do not read them: refused before any work,
+    # by evaluate_depth's rule (its ValueError, "patterns: ... patterns= applies to ...", is
+    # printed in the command's words, "--patterns: ... --patterns applies to ...")
+    from ..evaluation._depth import check_unread
+
+    check_unread(sections, args.patterns, args.rgbnir)
     rgbnir = args.rgbnir if args.rgbnir is not None else (
         Path(data).parent / "rgbnir" if data is not None else None)
     if args.rgbnir is not None and not Path(args.rgbnir).is_dir():
         raise c.CliError(f"--rgbnir: {args.rgbnir} is not a folder")
-    if args.rgbnir is not None and "rgbnir" not in sections:
-        # as --patterns: an option no requested section reads is refused, not ignored
-        raise c.CliError(f"--rgbnir: the sections {','.join(sections)} do not read the "
-                         "RGB-NIR pairs; --rgbnir applies to the rgbnir section")
     from ..evaluation._depth_guided import rgbnir_pairs
 
     found = rgbnir is not None and rgbnir.is_dir() and bool(rgbnir_pairs(rgbnir))
@@ -92,9 +90,12 @@ def run(args):
     # the six scenes and the pairs take half a minute or more: a line whose time ticks on a
     # terminal (the command had shown nothing, and took no --quiet)
     with ticking(f"{NAME}: {','.join(sections)}", c.bars(args)):
+        # the folder beside --data only when the rgbnir section reads it (evaluate_depth
+        # refuses an rgbnir= no section reads)
         result = evaluate_depth(data, sections=sections, seed=args.seed,
-                                patterns=args.patterns or ("mask1", "mask2"),
-                                rgbnir=rgbnir if found else None, **c.limits(args))
+                                patterns=args.patterns,
+                                rgbnir=rgbnir if found and "rgbnir" in sections else None,
+                                **c.limits(args))
     if args.json:
         # strict JSON, as the other commands' (H40, H48): a value that has none (an RMSE
         # without a valid measurement, a spread of one) is null; it had been NaN, which

@@ -36,7 +36,7 @@ import hashlib
 import json
 import math
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -437,7 +437,7 @@ def _sources(data, limit, name):
 
 
 def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generate=None,
-                  methods=METHODS, train=None, train_limit=None, rgbd=None, rgbd_limit=None,
+                  methods=None, train=None, train_limit=None, rgbd=None, rgbd_limit=None,
                   limit=None, settings=None, cache_dir=None, scheduler=None, workers=None,
                   progress=True):
     """Measure every candidate layout; returns the JSON-able result (``rows``: one per
@@ -448,15 +448,25 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
     on, the first ``train_limit`` (None: ``learned`` is a note); ``rgbd``: a folder of
     RGB-D scenes, the first ``rgbd_limit`` (None: no scene rows); ``presets``, ``tiles``,
     ``generate``: the candidates (:func:`.pattern_candidates.candidates`), all checked
-    before any work starts; ``cache_dir``: where each task's result is kept (resume);
-    ``scheduler``: a Dask address or client; ``workers``: threads of each kernel call.
+    before any work starts; ``methods``: the methods measured (None: ``settings.methods``,
+    :data:`METHODS` without ``settings``; given with a ``settings`` whose ``methods`` are
+    neither the default nor the same, a ValueError); ``cache_dir``: where each task's
+    result is kept (resume); ``scheduler``: a Dask address or client; ``workers``: threads
+    of each kernel call. ``train_limit`` without ``train`` and ``rgbd_limit`` without
+    ``rgbd`` are refused (they would be ignored).
     """
     t0 = time.perf_counter()
     from ..evaluation._cache import check_cache_dir, check_scheduler
 
     scheduler = check_scheduler(scheduler)
     cache_dir = check_cache_dir(cache_dir)
-    settings = StudySettings(methods=tuple(methods)) if settings is None else settings
+    for limit_name, value, needs, given in (("train_limit", train_limit, "train", train),
+                                            ("rgbd_limit", rgbd_limit, "rgbd", rgbd)):
+        if value is not None and given is None:
+            # the command line refuses them ("applies with --train"); they had been ignored
+            raise ValueError(f"{limit_name}: applies with {needs}= (no {needs} given; "
+                             f"{limit_name}={value!r} would be ignored)")
+    settings = _settings_with(settings, methods)
     if isinstance(tiles, str):
         tiles = tuple(t for t in tiles.split(",") if t.strip())
     cands, notes = find_candidates(presets, tiles, generate)
@@ -517,6 +527,25 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
                 None if tof_ops is None else sum(tof_ops.values()),
             "machine": machine_info(), "scheduler": None if scheduler is None else str(
                 scheduler), "wall_time_s": time.perf_counter() - t0}
+
+
+def _settings_with(settings, methods):
+    """``settings`` (None: the defaults) measuring ``methods`` (None: ``settings.methods``).
+
+    ``methods`` given with a ``settings`` of other, non-default methods is refused, naming
+    both: which of them the study was to measure is the caller's to say (``methods`` had been
+    ignored whenever ``settings`` was given)."""
+    if methods is None:
+        return StudySettings() if settings is None else settings
+    if isinstance(methods, str):
+        methods = [m.strip() for m in methods.split(",") if m.strip()]
+    methods = tuple(methods)
+    if settings is None:
+        return StudySettings(methods=methods)
+    if tuple(settings.methods) not in (methods, METHODS):
+        raise ValueError(f"methods: {list(methods)} conflicts with settings.methods "
+                         f"{list(settings.methods)}; give the methods in one of them")
+    return replace(settings, methods=methods)
 
 
 def _set_name(data):

@@ -283,9 +283,26 @@ def _calibration_rows(isp, seed):
 
 #: the sections whose rows count measurements "wrong" (an error above ``tolerance``)
 WRONG_SECTIONS = ("scenes", "upsample", "rgbnir")
+#: the sections that measure ``patterns`` (the others measure Mask1 and Mask2)
+PATTERN_SECTIONS = ("scenes", "upsample", "rgbnir")
+#: the patterns of the pattern sections when none are given
+DEFAULT_PATTERNS = ("mask1", "mask2")
 
 
-def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "mask2"), isp=None,
+def check_unread(sections, patterns=None, rgbnir=None):
+    """A ValueError naming ``patterns`` or ``rgbnir`` when it is given (not None) and no
+    section of ``sections`` (checked names) reads it: it would be ignored. ``rgbz-fast
+    evaluate-depth`` refuses its --patterns and --rgbnir by it, in the command's words."""
+    listed = ",".join(sections)
+    if patterns is not None and not set(PATTERN_SECTIONS) & set(sections):
+        raise ValueError(f"patterns: the sections {listed} measure mask1 and mask2; "
+                         "patterns= applies to scenes, upsample and rgbnir")
+    if rgbnir is not None and "rgbnir" not in sections:
+        raise ValueError(f"rgbnir: the sections {listed} do not read the RGB-NIR pairs; "
+                         "rgbnir= applies to the rgbnir section")
+
+
+def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=None, isp=None,
                    seed=1, tolerance=0.05, rgbnir=None, max_pixels=None,
                    max_bytes=None):
     """Run the depth measurements of docs/reports/isp.md; returns ``{section: [row dict, ...]}``.
@@ -299,8 +316,10 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
         scaled scenes of ``range``).
     sections : sequence of str
         Some of :data:`DEPTH_SECTIONS`.
-    patterns : sequence of str
-        Patterns of the ``scenes`` section.
+    patterns : sequence of str, optional
+        Patterns of the ``scenes``, ``upsample`` and ``rgbnir`` sections (None: Mask1 and
+        Mask2); the other sections measure Mask1 and Mask2, and ``patterns`` given without
+        any of those three sections is refused (ValueError), as it would be ignored.
     isp : ToFISP, optional
         The ISP (default ``ToFISP()``: the library's defaults).
     seed : int
@@ -308,7 +327,7 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     rgbnir : str or Path, optional
         The folder of the RGB-NIR pairs of the ``rgbnir`` section (default:
         ``rgbnir`` beside ``data``); the section is skipped where it does not
-        exist.
+        exist. Given without the ``rgbnir`` section, it is refused (ValueError).
     tolerance : float
         An error above it (m) is "wrong" (0.05); the rows of the sections that count
         wrong measurements keep it (``"tolerance"``).
@@ -326,10 +345,13 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=("mask1", "ma
     seed = check_seed(seed, "seed")
     tolerance = check_number(tolerance, "tolerance", lo=0, lo_open=True)
     sections = check_entries(sections, "sections")
-    patterns = check_z_patterns(patterns, "patterns", Z_WHY)
     bad = [s for s in sections if s not in DEPTH_SECTIONS]
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
+    # given for sections that do not read them, they had been ignored without a word
+    check_unread(sections, patterns, rgbnir)
+    patterns = check_z_patterns(DEFAULT_PATTERNS if patterns is None else patterns,
+                                "patterns", Z_WHY)
     if data is not None and not check_path(data, "data").is_dir():
         raise FileNotFoundError(f"data: {data} is not a folder")
     if rgbnir is not None and not check_path(rgbnir, "rgbnir").is_dir():
