@@ -23,8 +23,13 @@ def test_evaluate_depth_rgbnir_without_its_folder_is_refused(tmp_path, capsys):
     assert main(["evaluate-depth", "--sections", "rgbnir", "--rgbnir",
                  str(tmp_path / "none")]) == 2
     assert f"error: --rgbnir: {tmp_path / 'none'} is not a folder" in capsys.readouterr().err
-    assert main(["evaluate-depth", "--data", str(data), "--sections", "noise", "--json"]) == 0
+    assert main(["evaluate-depth", "--sections", "noise", "--json"]) == 0
     assert "noise" in json.loads(capsys.readouterr().out)
+    # --data for sections that do not read it is refused, as --patterns and --rgbnir are
+    # (round 25, CLAIMS 02: it had been accepted and ignored)
+    assert main(["evaluate-depth", "--data", str(data), "--sections", "noise", "--json"]) == 2
+    assert ("error: --data: the sections noise do not read the RGB-D scenes; --data applies "
+            "to scenes, upsample, range") in capsys.readouterr().err
 
 
 @pytest.mark.skipif(not (SHARED_DATA / "rgbnir").is_dir(),

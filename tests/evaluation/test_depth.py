@@ -120,7 +120,7 @@ def test_bad_arguments():
     assert np.isfinite(1.0)
 
 
-def test_patterns_and_rgbnir_no_section_reads_are_refused(tmp_path, monkeypatch):
+def test_patterns_rgbnir_and_data_no_section_reads_are_refused(tmp_path, monkeypatch):
     """``patterns=`` with the noise section alone had measured Mask1 and Mask2 without a
     word, and ``rgbnir=`` without the rgbnir section had been ignored; both refused (as
     ``rgbz-fast evaluate-depth`` refuses them), before any work."""
@@ -139,6 +139,11 @@ def test_patterns_and_rgbnir_no_section_reads_are_refused(tmp_path, monkeypatch)
                                          "RGB-NIR pairs; rgbnir= applies to the rgbnir "
                                          "section"):
         evaluate_depth(None, sections=("noise",), rgbnir=tmp_path)
+    # data= for sections that do not read it (round 25, CLAIMS 02)
+    with pytest.raises(ValueError, match=r"^data: the sections noise,sunlight do not read the "
+                                         r"RGB-D scenes; data= applies to scenes, upsample, "
+                                         r"range"):
+        evaluate_depth(tmp_path, sections=("noise", "sunlight"))
     # with a section that reads them they are taken (no data, no pairs: nothing to run)
     assert evaluate_depth(None, sections=("scenes",), patterns=("mask2",)) == {}
     assert evaluate_depth(None, sections=("rgbnir",), rgbnir=tmp_path) == {"rgbnir": []}

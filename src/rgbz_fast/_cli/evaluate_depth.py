@@ -59,9 +59,9 @@ def run(args):
     # --patterns, --rgbnir given for sections that do not read them: refused before any work,
     # by evaluate_depth's rule (its ValueError, "patterns: ... patterns= applies to ...", is
     # printed in the command's words, "--patterns: ... --patterns applies to ...")
-    from ..evaluation._depth import check_unread
+    from ..evaluation._depth import check_unread, reads_data
 
-    check_unread(sections, args.patterns, args.rgbnir)
+    check_unread(sections, args.patterns, args.rgbnir, args.data)
     rgbnir = args.rgbnir if args.rgbnir is not None else (
         Path(data).parent / "rgbnir" if data is not None else None)
     if args.rgbnir is not None and not Path(args.rgbnir).is_dir():
@@ -92,7 +92,10 @@ def run(args):
     with ticking(f"{NAME}: {','.join(sections)}", c.bars(args)):
         # the folder beside --data only when the rgbnir section reads it (evaluate_depth
         # refuses an rgbnir= no section reads)
-        result = evaluate_depth(data, sections=sections, seed=args.seed,
+        # the default folder only where a section reads it (evaluate_depth refuses a data=
+        # no section reads, as the command refuses --data)
+        result = evaluate_depth(data if reads_data(sections, args.rgbnir) else None,
+                                sections=sections, seed=args.seed,
                                 patterns=args.patterns,
                                 rgbnir=rgbnir if found and "rgbnir" in sections else None,
                                 **c.limits(args))

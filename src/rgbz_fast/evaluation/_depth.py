@@ -289,11 +289,24 @@ PATTERN_SECTIONS = ("scenes", "upsample", "rgbnir")
 DEFAULT_PATTERNS = ("mask1", "mask2")
 
 
-def check_unread(sections, patterns=None, rgbnir=None):
-    """A ValueError naming ``patterns`` or ``rgbnir`` when it is given (not None) and no
-    section of ``sections`` (checked names) reads it: it would be ignored. ``rgbz-fast
-    evaluate-depth`` refuses its --patterns and --rgbnir by it, in the command's words."""
+def reads_data(sections, rgbnir=None):
+    """Whether a section of ``sections`` reads the RGB-D scenes' folder: scenes, upsample,
+    range (its scenes 4x farther), or rgbnir without a folder of its own (the pairs
+    beside it)."""
+    return bool({"scenes", "upsample", "range"} & set(sections)
+                or ("rgbnir" in sections and rgbnir is None))
+
+
+def check_unread(sections, patterns=None, rgbnir=None, data=None):
+    """A ValueError naming ``patterns``, ``rgbnir`` or ``data`` when it is given (not None)
+    and no section of ``sections`` (checked names) reads it: it would be ignored. ``rgbz-fast
+    evaluate-depth`` refuses its --patterns, --rgbnir and --data by it, in the command's
+    words."""
     listed = ",".join(sections)
+    if data is not None and not reads_data(sections, rgbnir):
+        raise ValueError(f"data: the sections {listed} do not read the RGB-D scenes; data= "
+                         "applies to scenes, upsample, range (its scenes 4x farther) and "
+                         "rgbnir (the pairs beside it)")
     if patterns is not None and not set(PATTERN_SECTIONS) & set(sections):
         raise ValueError(f"patterns: the sections {listed} measure mask1 and mask2; "
                          "patterns= applies to scenes, upsample and rgbnir")
@@ -349,7 +362,7 @@ def evaluate_depth(data=None, *, sections=DEPTH_SECTIONS, patterns=None, isp=Non
     if bad:
         raise ValueError(f"sections: unknown {bad}; expected some of {list(DEPTH_SECTIONS)}")
     # given for sections that do not read them, they had been ignored without a word
-    check_unread(sections, patterns, rgbnir)
+    check_unread(sections, patterns, rgbnir, data)
     patterns = check_z_patterns(DEFAULT_PATTERNS if patterns is None else patterns,
                                 "patterns", Z_WHY)
     if data is not None and not check_path(data, "data").is_dir():
