@@ -47,6 +47,8 @@ CLI_ROWS = [
     C("cli.evaluate-too-small", ("evaluate", "--dataset", "{d}/ds", "--methods", "bi",
                                  "--patterns", "mask1", "--metrics", "ms_ssim", "--crop", "0"),
       "--metrics: image 'a': MS-SSIM with 5 scales needs at least 161 x 161 pixels"),
+    C("cli.evaluate-seed-without-noise", ("evaluate", "--dataset", "{d}/ds", "--seed", "3"),
+      "--seed: applies with --noise (a noise-free run draws nothing)"),
     C("cli.evaluate-int32", ("evaluate", "--dataset", "{d}/int32.tif"),
       "--dataset: {d}/int32.tif holds int32 samples, a type that says nothing about the range "
       "of their values; convert the file to 8 or 16 bits"),

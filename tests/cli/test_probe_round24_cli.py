@@ -98,3 +98,28 @@ def test_evaluate_depth_takes_quiet(capsys):
     """Probe round 24 (TB-02): the command, half a minute or more, took no --quiet."""
     assert main(["evaluate-depth", "--sections", "noise", "--quiet", "--json"]) == 0
     assert "noise" in json.loads(capsys.readouterr().out)
+
+
+def test_evaluate_seed_is_evalconfigs(tmp_path, capsys):
+    """Round 25 (PARITY): EvalConfig(seed=) had no flag, so the command reproduced seed 0
+    only; --seed with --noise gives the API's numbers for that seed."""
+    import imageio.v3 as iio
+    import numpy as np
+
+    from rgbz_fast.evaluation import EvalConfig, evaluate
+    from rgbz_fast.io import folder_dataset
+
+    (tmp_path / "ds").mkdir()
+    rng = np.random.default_rng(0)
+    iio.imwrite(tmp_path / "ds" / "a.png", (rng.random((64, 64, 3)) * 255).astype(np.uint8))
+    opts = ["--patterns", "mask1", "--methods", "sg", "--metrics", "cfa_psnr"]
+    assert main(["evaluate", "--dataset", str(tmp_path / "ds"), *opts, "--noise", "--seed",
+                 "3", "--no-plots", "--no-cache", "--quiet", "--json",
+                 "--out", str(tmp_path / "o")]) == 0
+    got = json.loads(capsys.readouterr().out)["mask1/sg/cfa_psnr"]["mean"]
+    cfg = EvalConfig(patterns=("mask1",), methods=("sg",), metrics=("cfa_psnr",), noise=True)
+    for seed, equal in ((3, True), (0, False)):
+        res = evaluate(folder_dataset(tmp_path / "ds"), EvalConfig(**{
+            **{k: getattr(cfg, k) for k in ("patterns", "methods", "metrics", "noise")},
+            "seed": seed}), progress=False)
+        assert (res.summary()[("mask1", "sg", "cfa_psnr")][0] == got) is equal

@@ -33,6 +33,8 @@ def add_parser(sub):
                    help="comma-separated metrics")
     p.add_argument("--noise", action=argparse.BooleanOptionalAction, default=False,
                    help="use the sensor noise model (default: noise-free mosaics)")
+    c.add_seed(p, None, "with --noise: the noise seed of every image's frames, EvalConfig's "
+                        "seed (default: 0)")
     p.add_argument("--demosaic", default="malvar2004", choices=DEMOSAICS,
                    help="Bayer demosaic of both paths")
     p.add_argument("--crop", type=c.non_negative_int, default=8,
@@ -196,8 +198,13 @@ def run(args):
                 from None
     elif (args.f_number, args.olpf, args.defocus_um) != (2.8, 0.0, 0.0):
         raise c.CliError("--f-number, --olpf and --defocus-um need --optics")
+    if args.seed is not None and not args.noise:
+        # a noise-free run draws nothing (the API's EvalConfig(seed=) had no flag: the command
+        # could reproduce seed 0 only)
+        raise c.CliError("--seed: applies with --noise (a noise-free run draws nothing)")
     config = EvalConfig(patterns=args.patterns, methods=args.methods, metrics=args.metrics,
-                        noise=args.noise, bit_depth=args.bit_depth, linearise=args.linearise,
+                        noise=args.noise, seed=0 if args.seed is None else args.seed,
+                        bit_depth=args.bit_depth, linearise=args.linearise,
                         demosaic=args.demosaic, crop=args.crop, params=params, optics=optics)
     out = c.output_folder(args.out)
     raw_options = None
