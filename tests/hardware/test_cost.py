@@ -176,8 +176,11 @@ def test_fields_used_are_those_that_reach_the_datapath(method, rng):
 
 
 def test_fixed_point_with_a_float_precision_is_refused():
-    """Round 25 (PARITY p04): fixed_point with precision float32/float64 ran the float
-    kernels and ignored it."""
+    """Round 25 (PARITY p04): fixed_point named for a float run (the keyword, or a params
+    mapping) ran the float kernels and ignored it. A ReconstructParams object carrying a
+    design's configuration into a float reference run is taken (the hardware report's
+    float64 reference does that), and hardware_cost, always fixed-point, takes
+    params={"fixed_point": ...} as its docstring says (the review's r01, r06)."""
     import rgbz_fast as rz
     from rgbz_fast.reconstruction import ReconstructParams
 
@@ -189,7 +192,23 @@ def test_fixed_point_with_a_float_precision_is_refused():
             rz.reconstruct(data, "sg", pattern="mask1", precision=precision,
                            fixed_point={"exp_bits": 6})
         with pytest.raises(ValueError, match=r"^fixed_point: "):
-            ReconstructParams(precision=precision, fixed_point={"exp_bits": 6})
+            rz.reconstruct(data, "sg", pattern="mask1",
+                           params={"precision": precision, "fixed_point": {"exp_bits": 6}})
+        design = ReconstructParams(precision="fixed", fixed_point={"exp_bits": 6})
+        rz.reconstruct(data, "sg", pattern="mask1", params=design, precision=precision)
+    assert hardware_cost("mask1", "sg", params={"fixed_point": {"recip_bits": 10}}).table_bits
+    # named through params, in any case of the method's name, in any Mapping: checked too
+    from types import MappingProxyType
+    for call in (lambda: hardware_cost("mask1", "sg",
+                                       params={"fixed_point": {"hash_bits": 8}}),
+                 lambda: hardware_cost("mask1", "sg",
+                                       fixed_point=MappingProxyType({"hash_bits": 8})),
+                 lambda: rz.reconstruct(data, "SG", pattern="mask1", precision="fixed",
+                                        fixed_point={"hash_bits": 8}),
+                 lambda: rz.reconstruct(data, "sg", pattern="mask1", params={
+                     "precision": "fixed", "fixed_point": {"hash_bits": 8}})):
+        with pytest.raises(ValueError, match=r"^fixed_point: hash_bits does not reach sg's"):
+            call()
 
 
 def test_dsp48_puts_each_multipliers_operands_on_the_cheaper_ports():

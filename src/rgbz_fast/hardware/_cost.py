@@ -28,7 +28,8 @@ from .._validate import check_int
 from ..reconstruction import ReconstructParams
 from ..reconstruction._fixed import (ALL_FIXED_METHODS, LIMITS, _group_counts, fixed_setup,
                                      hw_constants, register_widths)
-from ..reconstruction._fixed_config import FIELDS_USED, FixedPointConfig, check_fields_used
+from ..reconstruction._fixed_config import (FIELDS_USED, FixedPointConfig, check_fields_used,
+                                            named_fixed_point)
 from ..reconstruction._plans import build_plans
 
 __all__ = ["HardwareCost", "Unit", "hardware_cost", "bram18_blocks", "BRAM18_BITS", "FIELDS_USED"]
@@ -359,10 +360,11 @@ def hardware_cost(pattern="mask1", method="sg", *, width=4000, bit_depth=11, par
     method = check_choice(method, ALL_FIXED_METHODS, "method")
     width = check_int(width, "width", lo=1, hi=LIMITS["max_width"])
     b = check_bit_depth(bit_depth)
+    named = fixed_point if fixed_point is not None else named_fixed_point(params)
     params = ReconstructParams.build(params)
     config = FixedPointConfig.build(fixed_point if fixed_point is not None
                                     else params.fixed_point)
-    check_fields_used(method, fixed_point)
+    check_fields_used(method, named)
     if not pattern.has_z:       # line buffers and a window had been costed for no work
         raise ValueError(f"pattern: {pattern.name!r} has no Z site; the model reconstructs "
                          "the Z sites of an RGB-Z pattern")

@@ -6,7 +6,8 @@ from dataclasses import asdict, dataclass, fields, replace
 
 from .._validate import check_bit_depth, check_choice, check_int, merge_params
 
-__all__ = ["FixedPointConfig", "TABLE_MODES", "FIELDS_USED", "check_fields_used"]
+__all__ = ["FixedPointConfig", "TABLE_MODES", "FIELDS_USED", "check_fields_used",
+           "named_fixed_point"]
 
 #: how a table is read: the nearest entry (midpoint values), or linear interpolation between
 #: two entries (piecewise-linear, one multiplier more per lookup)
@@ -217,12 +218,27 @@ FIELDS_USED = {
 }
 
 
+def named_fixed_point(params, options=None):
+    """The ``fixed_point`` a caller named for one call: the keyword (``options``) or the
+    entry of a ``params`` mapping; None for a ReconstructParams object, which may carry a
+    design's configuration into a float reference run."""
+    from collections.abc import Mapping
+
+    if options and options.get("fixed_point") is not None:
+        return options["fixed_point"]
+    if isinstance(params, Mapping):
+        return params.get("fixed_point")
+    return None
+
+
 def check_fields_used(method, given, name="fixed_point"):
     """A ValueError naming ``name`` when the fields a caller names (the keys of a mapping
     ``given``; a FixedPointConfig object names none: one design's configuration may carry the
     fields of other methods) include one that does not reach ``method``'s datapath
     (:data:`FIELDS_USED`): it would change nothing and be recorded as applied."""
-    if not isinstance(given, dict) or method not in FIELDS_USED:
+    from collections.abc import Mapping
+
+    if not isinstance(given, Mapping) or method not in FIELDS_USED:
         return
     unused = [k for k in given if k not in FIELDS_USED[method]]
     if unused:

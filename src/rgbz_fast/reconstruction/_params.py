@@ -143,11 +143,6 @@ class ReconstructParams:
             put(self, "fixed_point", FixedPointConfig.build(self.fixed_point))
         if self.precision == "fixed":
             _check_fixed(self)
-        elif self.fixed_point is not None:
-            # it had been ignored: the float kernels ran with no word
-            raise ValueError(f"fixed_point: the fixed-point model's widths and tables "
-                             f"(precision='fixed'); precision={self.precision!r} runs the "
-                             f"float kernels")
         elif self.exp == "table":
             raise ValueError(f"exp: 'table' is the fixed-point model's exponential "
                              f"(precision='fixed'); precision={self.precision!r} takes "

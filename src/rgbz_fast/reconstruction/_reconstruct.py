@@ -18,7 +18,7 @@ from .. import _kernels
 from .._frame import RawFrame, frame_inputs, raw_clip_level
 from .._validate import check_choice, check_workers, kernel_threads
 from ._fixed import check_fixed_call, run_fixed
-from ._fixed_config import check_fields_used
+from ._fixed_config import check_fields_used, named_fixed_point
 from ._fixed_learned import run_fixed_learned
 from ._learned import resolve_filters
 from ._z_guided import learned_only, resolve_z_filters
@@ -226,14 +226,22 @@ def reconstruct(frame, method="sg", *, params=None, pattern=None, bit_depth=None
     >>> cfa.dtype, int(cfa[0, 0]), bool(np.all(cfa == cfa[1, 1]))
     (dtype('uint16'), 1028, True)
     """
+    named = named_fixed_point(params, options)
     params = ReconstructParams.build(params, options)
+    data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
+    method = check_choice(method, METHODS, "method")
     if params.precision == "fixed":
         # fields named for this call that the method's datapath does not read: refused, as
         # hardware_cost and the command line refuse them (a design's FixedPointConfig object
         # may carry other methods' fields)
-        check_fields_used(method, options.get("fixed_point"))
-    data, pattern, bd = frame_inputs(frame, pattern, bit_depth)
-    method = check_choice(method, METHODS, "method")
+        check_fields_used(method, named)
+    elif named is not None:
+        # named for a float run it had been ignored: the float kernels ran with no word (a
+        # ReconstructParams object carrying a design's configuration into a float reference
+        # run is taken)
+        raise ValueError(f"fixed_point: the fixed-point model's widths and tables "
+                         f"(precision='fixed'); precision={params.precision!r} runs the "
+                         f"float kernels")
     nthreads = check_workers(workers)
     clip = _resolve_clip(params.clip_level, frame)
     out = _check_out(out, data)
