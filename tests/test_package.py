@@ -245,6 +245,21 @@ def test_module_names_of_0_1_still_work_with_a_warning(old, name):
     assert callable(getattr(mod, name))
 
 
+def test_the_public_dataclasses_type_hints_resolve():
+    """typing.get_type_hints (what pydantic, typeguard and sphinx's autodoc read) resolves
+    the annotations of the public dataclasses (Scene's ArrayLike had been imported for type
+    checkers only: a NameError, the review of round 25)."""
+    import dataclasses
+    import typing
+
+    for name in _modules():
+        mod = importlib.import_module(name)
+        for k in getattr(mod, "__all__", ()):
+            obj = getattr(mod, k)
+            if isinstance(obj, type) and dataclasses.is_dataclass(obj):
+                typing.get_type_hints(obj)
+
+
 def test_python_m_of_the_0_1_module_names(tmp_path):
     """Round 25 (PKG06): ``python -m rgbz_fast.cli`` ran 0.1's command and died in runpy
     with a bare AttributeError (the alias loader had no get_code). It runs the command with

@@ -28,6 +28,9 @@ def test_a_pattern_object_selects_its_cells():
                                       res.values(name, "sg", "cpsnr"))
         assert res.paired(p, "sg", "cpsnr")[1] == pytest.approx(1.5)
         assert res.ir_estimated(p, "sg") == []
+    # a Pattern equal to the config's, written otherwise (the review of round 25)
+    np.testing.assert_array_equal(res.values(rz.get_pattern("ZR/BG"), "sg", "cpsnr"),
+                                  res.values("mask1", "sg", "cpsnr"))
 
 
 def test_names_not_in_the_results_are_refused_everywhere():

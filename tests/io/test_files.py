@@ -469,6 +469,11 @@ def test_frame_meta_round_trips(tmp_path):
     with pytest.warns(UserWarning, match=r"does not keep meta 'clipped'"):
         save_frame(tmp_path / "f.tif", f)
     assert load_frame(tmp_path / "f.tif").meta["pairs"] == ((1, 2), (3, 4))
+    # a dict that is the marker itself would load as a tuple: not kept, said (the review)
+    g = rz.RawFrame(d, rz.mask1(), 11, meta={"x": {"__tuple__": [1, 2]}})
+    with pytest.warns(UserWarning, match=r"does not keep meta 'x' \(not JSON\)"):
+        save_frame(tmp_path / "g.npz", g)
+    assert "x" not in load_frame(tmp_path / "g.npz").meta
     # a file of an earlier version holds the tuple as a list: it stays a list
     from rgbz_fast.io._frames import _from_json
     assert _from_json({"pairs": [[1, 2]], "x": {"__tuple__": [1, {"__tuple__": []}]}}) == {

@@ -412,6 +412,9 @@ def test_a_noisy_fit_takes_and_records_its_seed(tmp_path):
     a = train_filters(sample_dataset()[:1], "mask1", seed=5, **kw)
     b = train_filters(sample_dataset()[:1], "mask1", seed=0, **kw)
     assert a.meta["seed"] == 5 and b.meta["seed"] == 0 and a != b
+    # a caller who records the same seed themselves is not refused (the review's r02)
+    assert train_filters(sample_dataset()[:1], "mask1", seed=5, meta={"seed": 5},
+                         **kw).meta["seed"] == 5
     assert "seed" not in train_filters(sample_dataset()[:1], "mask1", n_strength=1,
                                        n_coherence=1, n_spread=1).meta
     (tmp_path / "ds").mkdir()

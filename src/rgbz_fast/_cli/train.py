@@ -106,7 +106,8 @@ def run(args):
     if args.z_guided:
         filters = train_filters(
             sources, args.pattern, name=name, progress=c.bars(args), z_guided=True,
-            seed=1 if args.seed is None else args.seed, ridge=args.ridge, prior=args.prior, colour_prior=args.colour_prior,
+            seed=1 if args.seed is None else args.seed, ridge=args.ridge, prior=args.prior,
+            colour_prior=args.colour_prior,
             select=None if args.select == "none" else "cv",
             cv_folds=4 if args.cv_folds is None else args.cv_folds,
             meta={"command": c.command_line(args)})
@@ -118,7 +119,8 @@ def run(args):
     filters = train_filters(
         sources, args.pattern, bit_depth=args.bit_depth, noise=args.noise,
         linearise=args.linearise, encoding=args.encoding, name=name,
-        seed=0 if args.seed is None else args.seed, progress=c.bars(args), radius=args.radius, hash_radius=args.hash_radius,
+        seed=0 if args.seed is None else args.seed, progress=c.bars(args), radius=args.radius,
+        hash_radius=args.hash_radius,
         n_strength=args.strength, n_coherence=args.coherence, n_spread=args.spread,
         ridge=args.ridge, prior=args.prior, meta={"command": c.command_line(args)})
     filters.save(args.out)

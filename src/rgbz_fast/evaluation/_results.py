@@ -170,6 +170,15 @@ class Results:
         is taken as the name :class:`EvalConfig` gives it (it had been refused, although the
         config takes Pattern objects)."""
         if name == "pattern" and isinstance(value, Pattern):
+            # the config's name of an equal pattern, however either was written
+            from .._patterns import get_pattern
+
+            for k in known:
+                try:
+                    if get_pattern(k) == value:
+                        return k
+                except ValueError:
+                    continue
             try:
                 value = _pattern_name(value)
             except ValueError:

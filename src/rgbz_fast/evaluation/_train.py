@@ -130,9 +130,13 @@ def train_filters(dataset, pattern, *, bit_depth=11, noise=False, linearise=True
                for enc in (("linear", "srgb") if encoding == "both" else (encoding,))]
     info = {"training_set": name, "noise": bool(noise),
             "encoding": "linear+srgb" if encoding == "both" else encoding}
+    user_meta = options.pop("meta", None)
     if noise:
         info["seed"] = seed              # the noisy frames' draws: what reproduces the fit
-    meta = _merge_meta(info, options.pop("meta", None))
+        if isinstance(user_meta, dict) and user_meta.get("seed") == seed:
+            # a caller who recorded the seed themselves (as before it was recorded here)
+            user_meta = {k: v for k, v in user_meta.items() if k != "seed"}
+    meta = _merge_meta(info, user_meta)
     frames = _Frames(sources, pattern, configs, progress)
     with frames.fitting:
         return train(frames, meta=meta, **options)

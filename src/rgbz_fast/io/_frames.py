@@ -52,6 +52,8 @@ def _json_value(v):
             return _NOT_JSON
         return {_TUPLE_KEY: items} if isinstance(v, tuple) else items
     if isinstance(v, dict) and all(isinstance(k, str) for k in v):
+        if set(v) == {_TUPLE_KEY}:
+            return _NOT_JSON          # the tuple marker itself: it would load as a tuple
         items = {k: _json_value(x) for k, x in v.items()}
         return _NOT_JSON if any(x is _NOT_JSON for x in items.values()) else items
     return _NOT_JSON
