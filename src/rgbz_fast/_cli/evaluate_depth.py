@@ -90,10 +90,8 @@ def run(args):
     # the six scenes and the pairs take half a minute or more: a line whose time ticks on a
     # terminal (the command had shown nothing, and took no --quiet)
     with ticking(f"{NAME}: {','.join(sections)}", c.bars(args)):
-        # the folder beside --data only when the rgbnir section reads it (evaluate_depth
-        # refuses an rgbnir= no section reads)
-        # the default folder only where a section reads it (evaluate_depth refuses a data=
-        # no section reads, as the command refuses --data)
+        # the default folders only where a section reads them (evaluate_depth refuses a
+        # data= or rgbnir= no section reads, as the command refuses --data and --rgbnir)
         result = evaluate_depth(data if reads_data(sections, args.rgbnir) else None,
                                 sections=sections, seed=args.seed,
                                 patterns=args.patterns,

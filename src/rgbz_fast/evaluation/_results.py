@@ -11,7 +11,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from .._validate import as_list, check_int, merge_params, nonfinite_as
-from .._patterns import Pattern
+from .._patterns import Pattern, get_pattern
 from ._config import (ALL_METRICS, HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, PAPER_TABLE3,
                       EvalConfig, _pattern_name)
 
@@ -171,8 +171,6 @@ class Results:
         config takes Pattern objects)."""
         if name == "pattern" and isinstance(value, Pattern):
             # the config's name of an equal pattern, however either was written
-            from .._patterns import get_pattern
-
             for k in known:
                 try:
                     if get_pattern(k) == value:

@@ -42,8 +42,6 @@ KINDS = ("sub", "abs", "add", "cmp", "mul", "cmul", "shift", "lzd", "exp_lookup"
          "recip_lookup")
 
 
-
-
 def bram18_blocks(depth, width):
     """BRAM_18K blocks holding a depth x width memory (the best aspect ratio); ``depth`` words
     of ``width`` bits, integers from 0 up to 2**40 (a ValueError or TypeError naming them)."""

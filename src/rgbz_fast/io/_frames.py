@@ -502,4 +502,5 @@ def _load_tof(z, h):
                    sites=(z["tof_sites_rows"], z["tof_sites_cols"]), block=h["block"],
                    bit_depth=h["bit_depth"], depth_true=z["tof_depth_true"],
                    valid=z["tof_valid"], saturated=z["tof_saturated"], sensor=sensor,
-                   shape=tuple(h["shape"]), meta={"ir_estimated": None, **_from_json(h.get("meta", {}))})
+                   shape=tuple(h["shape"]),
+                   meta={"ir_estimated": None, **_from_json(h.get("meta", {}))})

@@ -21,6 +21,24 @@ _SPREAD_CAP = 1e6
 REGULARISATION_MAX = 1e6
 
 
+def _check_z_option_names(z_options):
+    """A name among ``z_options`` that neither fit takes, refused with both lists of options
+    (every one had been called an option of z_guided, and with z_guided=True it was Python's
+    bare "unexpected keyword"); both lists read from the signatures."""
+    import inspect
+
+    from ._z_guided_fit import train_z_guided
+
+    own = [k for k, p in inspect.signature(train).parameters.items()
+           if p.kind is p.KEYWORD_ONLY and k != "z_guided"]
+    z_names = [k for k in inspect.signature(train_z_guided).parameters
+               if k not in ("frames", *own)]
+    unknown = [k for k in z_options if k not in z_names]
+    if unknown:
+        raise TypeError(f"{unknown[0]}: not an option of train() (its options: "
+                        f"{', '.join(own)}; with z_guided=True also {', '.join(z_names)})")
+
+
 def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spread=3,
           ridge=None, prior=None, meta=None, z_guided=False, **z_options):
     """Fit :class:`LearnedFilters` to frames whose true colour at the Z sites is known.
@@ -90,20 +108,10 @@ def train(frames, *, radius=3, hash_radius=3, n_strength=3, n_coherence=3, n_spr
     >>> f.n_buckets, f.meta["n_images"]
     (8, 1)
     """
-    import inspect
-
-    from ._z_guided_fit import train_z_guided
-
-    z_names = [k for k in inspect.signature(train_z_guided).parameters
-               if k not in ("frames", "ridge", "prior", "meta")]
-    # a name neither takes is named as unknown (every one had been called an option of
-    # z_guided, and with z_guided=True it was Python's bare "unexpected keyword")
-    unknown = [k for k in z_options if k not in z_names]
-    if unknown:
-        raise TypeError(f"{unknown[0]}: not an option of train() (its options: radius, "
-                        "hash_radius, n_strength, n_coherence, n_spread, ridge, prior, meta; "
-                        f"with z_guided=True also {', '.join(z_names)})")
+    if z_options:
+        _check_z_option_names(z_options)
     if check_flag(z_guided, "z_guided"):
+        from ._z_guided_fit import train_z_guided
         given = [k for k, v in (("radius", radius), ("hash_radius", hash_radius),
                                 ("n_strength", n_strength), ("n_coherence", n_coherence),
                                 ("n_spread", n_spread)) if v != 3]
