@@ -26,7 +26,17 @@
 
 #ifdef RGBZ_COUNT_OPS
 extern uint64_t *rgbz_opc_cur;
-#define OPC_(k) (rgbz_opc_cur[k]++)
+/* a call, not an inline rgbz_opc_cur[k]++: two counted operations of one expression
+   (OCMP(a) + OCMP(b)) increment the same counter, and two increments of one object
+   unsequenced against each other are undefined behaviour (C11 6.5p2; GCC warned
+   -Wsequence-point 192 times); the bodies of two calls are indeterminately sequenced,
+   never interleaved, so each call adds its 1 */
+static inline int rgbz_opc_add(int k)
+{
+    rgbz_opc_cur[k]++;
+    return 0;
+}
+#define OPC_(k) ((void)rgbz_opc_add(k))
 #else
 #define OPC_(k) ((void)0)
 #endif
