@@ -1,6 +1,7 @@
 """The learned method against every reconstruction that does not use the Z pixels.
 
     python tools/learned_targets.py [--heldout DIR] [--data DIR] [--sets a,b] [--out FILE]
+                                    [--folder NAME=DIR[:K] ...]
 
 For every set x mask x encoding: the mean CFA PSNR at the Z sites of ``learned`` and of every
 method of the library that does not read the Z pixels (bilinear, BI, EDICentral, EDILine, SG,
@@ -22,6 +23,12 @@ Filters: the shipped ones on Kodak (no Kodak image is in any fit); on the held-o
 filters of ``python tools/learned_fit.py MASK OUT --heldout`` (without the held-out quarter of
 any folder: the shipped ones are that fit), read from (or, when missing, fitted into)
 ``--heldout`` (about 15 minutes per mask on 2 busy cores).
+
+``--folder NAME=DIR`` adds the images of DIR (every image file, in name order) as a set NAME
+scored with the shipped filters, as Kodak is: for image sets no fit saw (McMaster, PolyU:
+docs/reports/learned.md). ``NAME=DIR:K`` scores them with the saturation multiplied by K as
+saturated Kodak's is (``--folder kodak_sat24=../shared/data/kodak:2``: all 24). With
+``--folder``, ``--sets`` defaults to none.
 """
 
 from __future__ import annotations
@@ -56,6 +63,22 @@ TARGET_BEST, TARGET_SG = 0.3, 1.5
 def boost_saturation(img8):
     """The issue's saturated Kodak: HSV saturation x 2 (clipped at 1), rounded to 8 bits."""
     return saturate(img8, 2.0)
+
+
+def folder_images(spec):
+    """(name, images) of a ``--folder NAME=DIR[:K]`` argument."""
+    name, sep, rest = spec.partition("=")
+    if not sep or not name or not rest:
+        raise SystemExit(f"--folder: expected NAME=DIR or NAME=DIR:K, got {spec!r}")
+    folder, k = rest, None
+    head, colon, tail = rest.rpartition(":")
+    if colon and head:
+        try:
+            folder, k = head, float(tail)
+        except ValueError:
+            folder = rest
+    imgs = [s.load() for s in folder_dataset(Path(folder))]
+    return name, [saturate(im, k) for im in imgs] if k else imgs
 
 
 def images(name, data):
@@ -127,12 +150,17 @@ def main(argv=None):
     ap.add_argument("--heldout", type=Path, default=Path("learned_heldout"),
                     help="folder of the held-out fits (fitted there when missing)")
     ap.add_argument("--data", type=Path, default=DATA, help="the shared data folder")
-    ap.add_argument("--sets", default=",".join(SETS))
+    ap.add_argument("--sets", default=None, help="comma list of " + ",".join(SETS) +
+                    " (default: all of them, none with --folder)")
+    ap.add_argument("--folder", action="append", default=[], metavar="NAME=DIR[:K]",
+                    help="a set of DIR's images scored with the shipped filters; :K "
+                         "multiplies the saturation by K")
     ap.add_argument("--masks", default=",".join(MASKS))
     ap.add_argument("--out", type=Path, default=None, help="also write the table here")
     args = ap.parse_args(argv)
     results, counts = {}, {}
-    for name in args.sets.split(","):
+    sets = args.sets if args.sets is not None else "" if args.folder else ",".join(SETS)
+    for name in filter(None, sets.split(",")):
         t = time.time()
         filters = None
         if name not in ("kodak", "kodak_sat"):
@@ -146,6 +174,12 @@ def main(argv=None):
         imgs = images(name, args.data)
         counts[name] = len(imgs)
         results[name] = run_set(name, imgs, filters, args.masks.split(","))
+        print(f"{name}: {len(imgs)} images, {time.time() - t:.0f} s", file=sys.stderr)
+    for spec in args.folder:
+        t = time.time()
+        name, imgs = folder_images(spec)
+        counts[name] = len(imgs)
+        results[name] = run_set(name, imgs, None, args.masks.split(","))
         print(f"{name}: {len(imgs)} images, {time.time() - t:.0f} s", file=sys.stderr)
     text = table(results, counts)
     print(text)
