@@ -252,11 +252,13 @@ def test_zipper_exact_tie_takes_the_first_neighbour_in_raster_order():
     EOTF and of CIELAB's f, so the two dE are equal exactly (0.40368506525549440596 to 25
     digits in 50-digit arithmetic); eq. 30 with the raster-order rule takes the left one, as
     the kernel does. colour-science's rounding breaks the tie by its last bits, which depend
-    on the CPU's vector paths in NumPy: on the Intel host of docs/reports/benchmarks.md the
-    left one came out 4e-15 larger and the reference took the bottom one (the one pixel of
-    the 240 Kodak evaluation pairs where the two zipper maps differed there); on an AMD
-    EPYC with AVX-512 (2026-11-28) 5.5e-15 smaller, and it takes the left one. The kernel's
-    answer is the same on both."""
+    on the OpenBLAS kernel behind its matrix products (chosen from the CPU, or by
+    OPENBLAS_CORETYPE): with the SkylakeX kernels (an AVX-512 CPU left alone) the left one
+    comes out 4.3e-15 larger and the reference takes the bottom one (the one pixel of the 240
+    Kodak evaluation pairs where the two zipper maps differed on the Intel host of
+    docs/reports/benchmarks.md); with the Haswell ones (an AVX2 CPU, or
+    OPENBLAS_CORETYPE=Haswell, as on the host of 2026-11-28) 5.5e-15 smaller, and it takes
+    the left one. The kernel's answer is the same on both."""
     far = (200, 200, 200)
     ref = np.array([[far, far, far], [(28, 13, 9), (28, 13, 8), far],
                     [far, (28, 13, 7), far]], dtype=np.uint8)
