@@ -681,3 +681,22 @@ def test_image_source_keeps_raw_options_as_folder_dataset_does(tmp_path):
     assert ImageSource("a", "a.raw", mine.raw_options) == ImageSource("a", "a.raw", opts)
     with pytest.raises(TypeError, match=r"^ImageSource.raw_options: expected a dict"):
         ImageSource("a", "a.raw", 3)
+
+
+def test_a_16_bit_grey_png_in_pillows_int32_mode_reads_as_uint16(tmp_path, monkeypatch):
+    """H118: with the dependency floors (Pillow 10.1, imageio 2.30) Pillow opens a 16-bit grey
+    PNG in mode "I" and imageio gives int32 samples, which every raw reader refused ("expected
+    uint8 or uint16 samples, got int32"): the codes are taken as uint16."""
+    from rgbz_fast.io import _files
+
+    codes = np.arange(0, 65536, 257, dtype=np.uint16).reshape(16, 16)
+    path = tmp_path / "grey16.png"
+    import imageio.v3 as iio
+    iio.imwrite(path, codes)
+    real = _files._decode_png_pillow
+    monkeypatch.setattr(_files, "_decode_png_pillow",
+                        lambda data: real(data).astype(np.int32))   # what the floors give
+    got = read_image(path)
+    assert got.dtype == np.uint16 and np.array_equal(got, codes)
+    mosaic, _ = rio._raw._read_image(path, (None, None))
+    assert mosaic.dtype == np.uint16 and np.array_equal(mosaic, codes)

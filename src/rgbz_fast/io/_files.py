@@ -402,7 +402,14 @@ def _decode_default(data, suffix):
 
         try:
             plain = _decode_png8(data) if png[3] == 8 else None   # None: imageio's case
-            return plain if plain is not None else _decode_png_pillow(data)
+            if plain is not None:
+                return plain
+            out = _decode_png_pillow(data)
+            if png[3] == 16 and data[25] == 0 and out.dtype == np.int32:
+                # a 16-bit grey PNG: Pillow 10.1 with imageio 2.30 (the floors) opens it in
+                # mode "I" and gives int32 samples, each the 16-bit code (H118)
+                out = out.astype(np.uint16)
+            return out
         except UnidentifiedImageError:                 # its message shows a memory address
             raise ValueError("a damaged PNG that Pillow cannot identify: a chunk's CRC or "
                              "the header") from None
