@@ -75,7 +75,7 @@ def kept(monkeypatch):
     """The figures plots.py draws, kept as matplotlib objects (and still rendered)."""
     figs = []
 
-    def keep(fig, plt, **kwargs):
+    def keep(fig, **kwargs):
         fig.canvas.draw()
         figs.append(fig)
         return b""

@@ -28,7 +28,7 @@ def _pyplot():
     return matplotlib, _Figures
 
 
-def _png(fig, plt, **kwargs):
+def _png(fig, **kwargs):
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, **kwargs)
     return buf.getvalue()
@@ -121,7 +121,7 @@ def depth_preview(res, title, scale=None, truth_known=None, nearest=None):
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8,
               frameon=False, ncol=2)
     ax.set_title(title, fontsize=9)
-    return _png(fig, plt, bbox_inches="tight")
+    return _png(fig, bbox_inches="tight")
 
 
 #: the reasons a measurement is flagged: (label, flag bit of rgbz_fast.tof, colour)
@@ -195,7 +195,7 @@ def depth_flags_figure(res, title, nearest=None):
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8,
               frameon=False, ncol=3)
     ax.set_title(f"{title} ({n} measurements)", fontsize=9)
-    return _png(fig, plt, bbox_inches="tight")
+    return _png(fig, bbox_inches="tight")
 
 
 #: marker of each (precision, exponential) of the trade-off rows
@@ -244,14 +244,13 @@ def full_depth_preview(depth, title, scale=None):
                                  f"{share_text(missing, rows * cols)})")],
                   loc="upper left", bbox_to_anchor=(0.0, -0.01), fontsize=8, frameon=False)
     ax.set_title(f"{title} ({100 * covered:.1f} % covered)", fontsize=9)
-    return _png(fig, plt, bbox_inches="tight")
+    return _png(fig, bbox_inches="tight")
 
 
 def tradeoff_plot(res):
     """Pareto plot of :func:`rgbz_fast._devtools.tradeoff.run_tradeoff`'s result (PNG bytes):
     :func:`tradeoff_figure` drawn."""
-    _, plt = _pyplot()
-    return _png(tradeoff_figure(res), plt, bbox_inches="tight")
+    return _png(tradeoff_figure(res), bbox_inches="tight")
 
 
 def tradeoff_figure(res):
@@ -443,7 +442,7 @@ def pattern_study_plot(res):
         ax.annotate(text, xy, xytext=(34, dy - 3), textcoords="offset points", fontsize=7,
                     arrowprops=dict(arrowstyle="-", lw=0.4, color="0.5") if abs(dy) > 16
                     else None)
-    return _png(fig, plt)
+    return _png(fig)
 
 
 def hardware_sweep_plot(rows, title="", dataset=None):
@@ -530,4 +529,4 @@ def hardware_sweep_plot(rows, title="", dataset=None):
         _footnote(fig, [f"Not drawn: {len(refused)} configuration"
                         f"{'s' if len(refused) != 1 else ''} the model refused "
                         f"({', '.join(refused)}; the table gives the reason)."], fontsize=7)
-    return _png(fig, plt, bbox_inches="tight")
+    return _png(fig, bbox_inches="tight")

@@ -176,8 +176,7 @@ def _figure_png(fig, metadata=None):
 
 
 class _Figures:
-    """pyplot's ``subplots``, ``figure`` and ``close`` for the library's figures, without
-    pyplot: each a :class:`matplotlib.figure.Figure` on its own Agg canvas, which pyplot
+    """pyplot's ``subplots`` and ``figure`` for the library's figures, without pyplot: each a :class:`matplotlib.figure.Figure` on its own Agg canvas, which pyplot
     does not manage (nothing to close: it goes with its last reference). The figures had
     been pyplot's after ``matplotlib.use("Agg")``, which switched the backend of the
     caller's process: a notebook's or a Tk/Qt session's ``plt.show()`` then showed nothing."""
@@ -196,13 +195,6 @@ class _Figures:
         fig = cls.figure(figsize=figsize)
         return fig, fig.subplots(nrows, ncols, **kwargs)
 
-    @staticmethod
-    def close(fig=None):
-        """Nothing to release (the figure is not pyplot's)."""
-
-
-def _pyplot():
-    return _Figures
 
 
 def _colours(methods):
@@ -344,7 +336,7 @@ def _chart_inputs(results, metric):
 def _bar_figure(results, metric):
     from matplotlib.transforms import blended_transform_factory
 
-    plt = _pyplot()
+    plt = _Figures
     s = results.summary()
     cfg = results.config
     colours = _colours(cfg.methods)
@@ -419,7 +411,7 @@ def paired_chart(results, metric, baseline=None):
 
 
 def _paired_figure(results, metric, baseline=None):
-    plt = _pyplot()
+    plt = _Figures
     cfg = results.config
     base = baseline or results.baseline()
     others = [m for m in cfg.methods if m != base]
@@ -578,7 +570,7 @@ def crop_figure(source, config, box=None, size=64):
     size = check_int(size, "size", lo=1)
     if box is not None:
         box = _check_box(box)
-    plt = _pyplot()
+    plt = _Figures
     from matplotlib.patches import Rectangle
 
     img = source.load()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import asdict, dataclass, fields, replace
 
 from .._validate import check_bit_depth, check_choice, check_int, merge_params
@@ -222,8 +223,6 @@ def named_fixed_point(params, options=None):
     """The ``fixed_point`` a caller named for one call: the keyword (``options``) or the
     entry of a ``params`` mapping; None for a ReconstructParams object, which may carry a
     design's configuration into a float reference run."""
-    from collections.abc import Mapping
-
     if options and options.get("fixed_point") is not None:
         return options["fixed_point"]
     if isinstance(params, Mapping):
@@ -236,8 +235,6 @@ def check_fields_used(method, given, name="fixed_point"):
     ``given``; a FixedPointConfig object names none: one design's configuration may carry the
     fields of other methods) include one that does not reach ``method``'s datapath
     (:data:`FIELDS_USED`): it would change nothing and be recorded as applied."""
-    from collections.abc import Mapping
-
     if not isinstance(given, Mapping) or method not in FIELDS_USED:
         return
     unused = [k for k in given if k not in FIELDS_USED[method]]

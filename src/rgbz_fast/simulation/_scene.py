@@ -41,12 +41,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
+
 import numpy as np
+from numpy.typing import ArrayLike  # noqa: F401  (Scene's annotation: get_type_hints reads it)
 
 from .._validate import (FLOAT_DTYPES, check_choice, check_image, check_meta, check_number,
                          integer_bits, read_only_state)
-
-from numpy.typing import ArrayLike  # noqa: F401  (Scene's annotation: get_type_hints reads it)
 
 __all__ = ["Scene", "srgb_to_linear", "disparity_to_depth", "estimate_ir_reflectance",
            "CAVE_WAVELENGTHS"]
