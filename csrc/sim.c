@@ -547,7 +547,12 @@ int rgbz_sim_rate_gather(int type, const void *src, ptrdiff_t rows, ptrdiff_t co
     return RGBZ_OK;
 }
 
-/* one chunk [x0, x1) of colour row y (x0 even) */
+/* one chunk [x0, x1) of colour row y (x0 even). cx and cy are written whenever a draw reads
+   them (the same flags guard both); GCC cannot follow the flags and warned at every clone */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 RGBZ_CLONES_512
 static void sim_colour_chunk(int type, const void *src, ptrdiff_t y, ptrdiff_t x0, ptrdiff_t x1,
                              ptrdiff_t cols, ptrdiff_t row_stride, const sim_cols *t, int P,
@@ -624,6 +629,9 @@ static void sim_colour_chunk(int type, const void *src, ptrdiff_t y, ptrdiff_t x
     }
     *nsat += sat_count;
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 int rgbz_sim_colour(int type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
                     ptrdiff_t row_stride, ptrdiff_t col_stride, const ptrdiff_t chan_off[3],
