@@ -200,7 +200,11 @@ class Files:
         (d / "raw_other.json").write_text('{"bayer16.png": {"phase": "GBRG"}}')  # not in ds
         (d / "raw_twice.json").write_text('{"*": {"phase": "GBRG", "phase": "RGGB"}}')
         # integer samples wider than 16 bits: their type says nothing about their range
-        iio.imwrite(d / "int32.tif", np.full((16, 16, 3), 200, np.int32))
+        # (photometric named: tifffile before 2023.7 warned that its default would change;
+        # the bytes are those of today's default)
+        import tifffile
+        tifffile.imwrite(d / "int32.tif", np.full((16, 16, 3), 200, np.int32),
+                         photometric="rgb")
         # samples that are no RGB or grey, and a damaged 16-bit PGM
         from PIL import Image
 

@@ -364,8 +364,11 @@ def _stop_a_running_pool(tmp_path, stop, pool="processes"):
     argv = [sys.executable, "-m", "rgbz_fast", "evaluate", "--dataset", str(ds), "--out",
             str(tmp_path / "out"), "--cache", str(cache), "--quiet", "--no-plots"]
     argv += ["--processes", "2"] if pool == "processes" else []
+    # SIGINT as a terminal gives it: a shell starts a background job (`pytest ... &`) with
+    # SIGINT ignored, the child inherits that, and Ctrl-C rightly did nothing (exit 0)
     proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
+                            start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 300
     workers = []
     while time.monotonic() < deadline and proc.poll() is None:

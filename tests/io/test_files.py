@@ -435,6 +435,36 @@ def test_a_tiff_without_a_readable_page_is_one_error_and_no_log_line(tmp_path, c
         logging.getLogger("tifffile").removeHandler(handler)
 
 
+@pytest.mark.parametrize("logger", ["tifffile", "tifffile.tifffile"])
+def test_open_tiff_keeps_the_records_of_either_tifffile_logger(tmp_path, logger):
+    """tifffile 2023.1 (the floor) logs on its module's logger, "tifffile.tifffile", today's
+    on "tifffile": a filter on "tifffile" alone let the older one's records through to stderr
+    (a DNG with a damaged tag printed a line before the frame was read, H119). Records of
+    either logger logged inside open_tiff are kept out of the log; outside, they log."""
+    import logging
+
+    import tifffile
+
+    from rgbz_fast.io._tiff import open_tiff
+
+    tifffile.imwrite(tmp_path / "ok.tif", np.zeros((4, 4), np.uint8))
+    blob = (tmp_path / "ok.tif").read_bytes()
+    records = []
+    handler = logging.Handler()
+    handler.emit = records.append
+    root = logging.getLogger("tifffile")
+    root.addHandler(handler)
+    try:
+        with open_tiff(blob) as tf:
+            assert len(tf.pages) == 1
+            logging.getLogger(logger).warning("<tifffile.TiffPage 0 @8> invalid value offset 2")
+        assert records == []
+        logging.getLogger(logger).warning("outside")
+        assert [r.getMessage() for r in records] == ["outside"]
+    finally:
+        root.removeHandler(handler)
+
+
 def test_a_bad_pixel_limit_in_the_environment_leaves_reads_with_a_given_limit(tmp_path,
                                                                             monkeypatch):
     """RGBZ_FAST_MAX_PIXELS=abc broke every file read, --max-pixels given: the byte read

@@ -219,7 +219,8 @@ def test_load_image_8_and_16_bit(tmp_path):
     rgb16 = rgb8.astype(np.uint16) * 257
     iio.imwrite(tmp_path / "b.tif", rgb16)       # PIL writes no 16-bit RGB PNG
     np.testing.assert_allclose(load_image(tmp_path / "b.tif").image, s.image)
-    iio.imwrite(tmp_path / "lin.tif", rgb8 / 255.0)         # float: linear already
+    # float: linear already (photometric named: tifffile 2023.1, the floor, warns without it)
+    iio.imwrite(tmp_path / "lin.tif", rgb8 / 255.0, photometric="rgb")
     np.testing.assert_allclose(load_image(tmp_path / "lin.tif").image, rgb8 / 255.0)
     rgba = np.concatenate([rgb8, np.full((6, 8, 1), 255, np.uint8)], axis=2)
     iio.imwrite(tmp_path / "c.png", rgba)

@@ -33,11 +33,17 @@ class _Capture(logging.Filter):
         return False
 
 
+#: the loggers tifffile logs on: "tifffile" today, its module's "tifffile.tifffile" before
+#: (2023.1, the floor; a filter acts on its own logger's records, not on a child's)
+_LOGGERS = ("tifffile", "tifffile.tifffile")
+
+
 def _install():
     if not _installed:
         with _install_lock:
             if not _installed:
-                logging.getLogger("tifffile").addFilter(_Capture())
+                for name in _LOGGERS:
+                    logging.getLogger(name).addFilter(_Capture())
                 _installed.append(True)
 
 
