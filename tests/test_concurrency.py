@@ -310,7 +310,9 @@ def test_too_many_threads_for_the_address_space_is_a_clear_error():
                           "limit, ulimit -v 4000000 kB, leaves room for "), out
     n = int(out.rsplit(" ", 1)[1])
     assert 100 < n < 512
-    assert run(n) == "ran"
+    # a few stacks below the bound: the next process's own address space is not the same
+    # to the MiB (a full run on Python 3.10 measured room for 407, then 406)
+    assert run(n - 4) == "ran"
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ulimit -v: Linux")

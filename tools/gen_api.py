@@ -15,6 +15,7 @@ same package gives the same file (tests/test_docs.py checks it).
 from __future__ import annotations
 
 import argparse
+import enum
 import importlib
 import inspect
 import re
@@ -90,6 +91,10 @@ def _rest_to_markdown(text):
 
 def _signature(obj):
     """The call signature without annotations (the docstrings give the types)."""
+    if isinstance(obj, type) and issubclass(obj, enum.Enum):
+        # a member by its value; inspect gives EnumType.__call__'s signature, which each
+        # Python prints its own way (3.12: "(*values)"), so the page changed with the Python
+        return "(value)"
     try:
         sig = inspect.signature(obj)
     except (TypeError, ValueError):

@@ -73,8 +73,8 @@ class ToFFlag(enum.IntFlag):
 
     Examples
     --------
-    >>> ToFFlag(10)
-    <ToFFlag.LOW_SIGNAL|FLYING: 10>
+    >>> [f.name for f in ToFFlag if f in ToFFlag(10)]
+    ['LOW_SIGNAL', 'FLYING']
     >>> FLAG_FLYING == ToFFlag.FLYING, type(FLAG_FLYING).__name__
     (True, 'int')
     """
