@@ -248,6 +248,45 @@ def test_cache_entries_are_read_guarded_and_validated(files, tmp_path):
     assert done == [want] and entry.is_file() and entry.read_text() == good
 
 
+def test_a_cache_that_cannot_take_any_entry_warns_once_a_cause(files, tmp_path, monkeypatch):
+    """A cache folder of no write permission failed every entry with a warning of its own
+    (`rgbz-fast evaluate --cache DIR`, DIR not writable: 30 lines for 3 images, 240 on
+    Kodak; found as a non-root user, where root writes anyway): one warning for each cause
+    (the error and the folder it names) in an evaluation, the results all there; the next
+    evaluation warns again."""
+    import errno
+    import warnings
+
+    from rgbz_fast.evaluation import _cache
+
+    kw = dict(metrics=("cfa_psnr",), methods=("bi", "sg"), patterns=("mask1", "mask2"),
+              progress=False, processes=1, crop=0)
+    src = [rio.ImageSource(n, str(files / "small.png")) for n in ("a", "b", "c")]
+    want = ev.evaluate(src, **kw).rows
+    # the image folders cannot be made (a file under each name): one cause, the cache's
+    for s in src:
+        (tmp_path / "c1" / _cache.cache_folder(s.name)).parent.mkdir(exist_ok=True)
+        (tmp_path / "c1" / _cache.cache_folder(s.name)).write_text("x")
+    for _ in range(2):
+        with warnings.catch_warnings(record=True) as got:
+            warnings.simplefilter("always")
+            assert ev.evaluate(src, cache_dir=tmp_path / "c1", **kw).rows == want
+        msgs = [str(w.message) for w in got if issubclass(w.category, RuntimeWarning)]
+        assert len(msgs) == 1 and msgs[0].startswith("cache_dir: could not write"), msgs
+        assert "other entries that fail so are kept and not named either" in msgs[0]
+
+    # a full disk: the error names no file; one warning for the run
+    def full(*a, **k):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(_cache, "atomic_write", full)
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        assert ev.evaluate(src, cache_dir=tmp_path / "c2", **kw).rows == want
+    msgs = [str(w.message) for w in got if issubclass(w.category, RuntimeWarning)]
+    assert len(msgs) == 1 and "No space left on device" in msgs[0], msgs
+
+
 def _cache_files(cache):
     return sorted(p for p in Path(cache).rglob("*") if p.is_file())
 

@@ -456,10 +456,11 @@ def pattern_study(dataset=None, *, presets=("mask1", "mask2"), tiles=(), generat
     ``rgbd`` are refused (they would be ignored).
     """
     t0 = time.perf_counter()
-    from ..evaluation._cache import check_cache_dir, check_scheduler
+    from ..evaluation._cache import check_cache_dir, check_scheduler, forget_write_failures
 
     scheduler = check_scheduler(scheduler)
     cache_dir = check_cache_dir(cache_dir)
+    forget_write_failures()            # a cache it cannot write: one warning a cause per run
     for limit_name, value, needs, given in (("train_limit", train_limit, "train", train),
                                             ("rgbd_limit", rgbd_limit, "rgbd", rgbd)):
         if value is not None and given is None:

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import re
+import threading
 
 import numpy as np
 
@@ -154,9 +156,23 @@ def _cache_read(cdir, key):
     return values
 
 
+#: the causes (errno, folder) of failed cache writes warned of since the evaluation began:
+#: a cache folder of no write permission (or a full disk) failed every entry, each with a
+#: warning of its own (10 lines an image, 240 on Kodak)
+_write_failures = set()
+_write_failures_lock = threading.Lock()
+
+
+def forget_write_failures():
+    """An evaluation that begins warns again of a cache it cannot write."""
+    with _write_failures_lock:
+        _write_failures.clear()
+
+
 def _cache_write(cdir, key, values):
     """Write an entry; a cache that cannot take it (a folder or a file of no write
-    permission under its name) costs a warning, never the result."""
+    permission under its name) costs a warning, never the result: one warning for each
+    cause (the error and the folder it names) until :func:`forget_write_failures`."""
     body = json.dumps(values, sort_keys=True)
     entry = cdir / f"{key}.json"
     try:
@@ -170,5 +186,17 @@ def _cache_write(cdir, key, values):
     except (OSError, ValueError) as exc:
         import warnings
 
-        warnings.warn(f"cache_dir: could not write {cdir / key}.json ({exc}); the result is "
-                      "kept, not cached", RuntimeWarning, stacklevel=2)
+        cause = None
+        if isinstance(exc, OSError):
+            where = os.path.dirname(exc.filename) if isinstance(exc.filename, str) \
+                else str(cdir.parent)
+            cause = (exc.errno, where)
+        with _write_failures_lock:
+            first = cause not in _write_failures
+            if cause is not None:
+                _write_failures.add(cause)
+        if first:
+            more = "" if cause is None else \
+                "; other entries that fail so are kept and not named either"
+            warnings.warn(f"cache_dir: could not write {cdir / key}.json ({exc}); the result "
+                          f"is kept, not cached{more}", RuntimeWarning, stacklevel=2)

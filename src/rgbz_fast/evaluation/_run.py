@@ -24,7 +24,7 @@ from ..reconstruction import NEEDS_TOF, reconstruct
 from ..simulation import ColourSensor, Scene, apply_optics, simulate, srgb_to_linear
 from ..simulation._scene import srgb_decode, srgb_decode_table
 from ._cache import (_cache_read, _cache_write, cache_folder, check_cache_dir,
-                     check_scheduler)
+                     check_scheduler, forget_write_failures)
 from ._config import EvalConfig
 from ._results import Results
 
@@ -493,6 +493,7 @@ def evaluate(dataset=None, config=None, *, cache_dir=None, processes=None, worke
     cache_dir = check_cache_dir(cache_dir)
     if cache_dir is not None:
         cache_dir = str(cache_dir)
+        forget_write_failures()
     skip_bad = check_flag(skip_bad, "skip_bad")
     progress = check_flag(progress, "progress")
     tasks = [(s, config, cache_dir, threads, skip_bad) for s in dataset]
