@@ -287,6 +287,33 @@ def test_a_cache_that_cannot_take_any_entry_warns_once_a_cause(files, tmp_path, 
     assert len(msgs) == 1 and "No space left on device" in msgs[0], msgs
 
 
+def test_a_worker_processs_warnings_are_the_callers(files, tmp_path):
+    """With processes=2 a warning of an image's evaluation (here: its cache folder cannot be
+    made) was printed by the worker process in Python's own format, file and source line,
+    past the caller's filters and the command line's one-line format: the parent issues it
+    again."""
+    import warnings
+
+    from rgbz_fast.evaluation import _cache
+
+    kw = dict(metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",), progress=False,
+              crop=0)
+    src = [rio.ImageSource(n, str(files / "small.png")) for n in ("a", "b")]
+    want = ev.evaluate(src, processes=1, **kw).rows
+    (tmp_path / "c").mkdir()
+    for s in src:
+        (tmp_path / "c" / _cache.cache_folder(s.name)).write_text("x")
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        assert ev.evaluate(src, processes=2, cache_dir=tmp_path / "c", **kw).rows == want
+    msgs = [str(w.message) for w in got if issubclass(w.category, RuntimeWarning)]
+    assert 1 <= len(msgs) <= 2, msgs                 # one a cause in each worker process
+    assert all(m.startswith("cache_dir: could not write") for m in msgs), msgs
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert ev.evaluate(src, processes=2, cache_dir=tmp_path / "c", **kw).rows == want
+
+
 def _cache_files(cache):
     return sorted(p for p in Path(cache).rglob("*") if p.is_file())
 

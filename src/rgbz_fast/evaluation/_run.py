@@ -296,7 +296,34 @@ def _row(image, pattern, method, metric, value, ir_estimated=False):
     return row
 
 
+#: set in a worker process of the local pool (:func:`_worker_init`): its tasks record their
+#: warnings, which the parent issues again (:func:`_run_pool`)
+_IN_WORKER = False
+
+
+class _Rows(list):
+    """An image's rows from a worker process, with the warnings its evaluation issued as
+    (text, category): the parent issues them again, where the caller's filters and the
+    command line's one-line format apply (printed by the worker, they came in Python's own
+    format, file and source line, past any filter the caller had set)."""
+
+    warnings = ()
+
+
 def _pool_task(args, stop=None):
+    if not _IN_WORKER:
+        return _image_task(args, stop)
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")        # the parent's filters decide
+        out = _image_task(args, stop)
+    out = out if isinstance(out, _Skipped) else _Rows(out)
+    out.warnings = [(str(w.message), w.category) for w in caught]
+    return out
+
+
+def _image_task(args, stop=None):
     source, config, cache_dir, workers, skip_bad = args
     try:
         return _evaluate_image(source, config, cache_dir, workers, stop)
@@ -325,9 +352,10 @@ class _NoBar:
 class _Skipped(str):
     """The reason an image was skipped (``skip_bad=True``), in place of its rows; ``error``:
     the :class:`~rgbz_fast.io.ParameterError` it came from, if it did, whose settings a caller
-    may name in its own words."""
+    may name in its own words; ``warnings``: as :class:`_Rows`'."""
 
     error = None
+    warnings = ()
 
 
 class _Stopped(Exception):
@@ -359,6 +387,8 @@ def _worker_init():
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, terminated)
+    global _IN_WORKER
+    _IN_WORKER = True
 
 
 def _stop_pool(ex):
@@ -557,15 +587,19 @@ def _run_threads(tasks, nthreads, bar, results):
 
 
 def _run_pool(tasks, nproc, bar, results):
-    """The tasks on a local pool of spawned processes, their results into ``results``."""
+    """The tasks on a local pool of spawned processes, their results into ``results``; the
+    warnings of each image issued again here (:class:`_Rows`)."""
     import multiprocessing as mp
+    import warnings
     ctx = mp.get_context("spawn")
     ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
                              initializer=_worker_init)
     try:
         futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
         for f in as_completed(futs):
-            results[futs[f]] = f.result()
+            results[futs[f]] = res = f.result()
+            for text, category in res.warnings:
+                warnings.warn(text, category, stacklevel=2)
             bar.update()
     except BaseException:
         _stop_pool(ex)                      # an error or an interrupt: no orphaned worker
