@@ -287,7 +287,7 @@ def test_a_cache_that_cannot_take_any_entry_warns_once_a_cause(files, tmp_path, 
     assert len(msgs) == 1 and "No space left on device" in msgs[0], msgs
 
 
-def test_a_worker_processs_warnings_are_the_callers(files, tmp_path):
+def test_a_worker_processs_warnings_are_the_callers(files, tmp_path, capfd):
     """With processes=2 a warning of an image's evaluation (here: its cache folder cannot be
     made) was printed by the worker process in Python's own format, file and source line,
     past the caller's filters and the command line's one-line format: the parent issues it
@@ -309,9 +309,11 @@ def test_a_worker_processs_warnings_are_the_callers(files, tmp_path):
     msgs = [str(w.message) for w in got if issubclass(w.category, RuntimeWarning)]
     assert 1 <= len(msgs) <= 2, msgs                 # one a cause in each worker process
     assert all(m.startswith("cache_dir: could not write") for m in msgs), msgs
+    capfd.readouterr()
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+        warnings.simplefilter("ignore")                 # the caller's filter holds
         assert ev.evaluate(src, processes=2, cache_dir=tmp_path / "c", **kw).rows == want
+    assert "cache_dir" not in capfd.readouterr().err      # no worker printed it itself
 
 
 def _cache_files(cache):

@@ -352,7 +352,7 @@ class _NoBar:
 class _Skipped(str):
     """The reason an image was skipped (``skip_bad=True``), in place of its rows; ``error``:
     the :class:`~rgbz_fast.io.ParameterError` it came from, if it did, whose settings a caller
-    may name in its own words; ``warnings``: as :class:`_Rows`'."""
+    may name in its own words; ``warnings``: as those of :class:`_Rows`."""
 
     error = None
     warnings = ()
