@@ -241,7 +241,9 @@ def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, max_range,
     _kernels.tofg_flying(depth, sigma, usable, col, cells, ring, layout.R,
                          layout.C, step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out,
                          nthreads)
-    res = np.flatnonzero(flags & FLAG_RESOLVED)           # a few at the depth edges
+    # a few at the depth edges; through a bool mask: nonzero() of the uint8 AND took 4 ms
+    # of a 3 M-measurement call, of the bool 0.3
+    res = np.flatnonzero((flags & FLAG_RESOLVED) != 0)
     if res.size:
         d = out[res]
         far = ~((d >= 0.0) & (d <= max_range - 5.0 * sigma[res]))   # the validity's rule
