@@ -174,6 +174,12 @@ def test_doctests_of_every_module():
     finder = doctest.DocTestFinder(exclude_empty=True)
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     attempted, failures = 0, []
+    # colour-science (and the matplotlib it imports) loaded under the suite's warning
+    # filters, not the examples' "error": run alone on the dependency floors, an example was
+    # the first to import them, and matplotlib 3.8's pyparsing deprecation failed it
+    from rgbz_fast._deps import import_colour
+
+    import_colour()
     # NumPy's default printing (a test that imports colour-science itself leaves the
     # 1.13 legacy mode behind; the library's own imports do not, see the next test)
     with np.printoptions(legacy=False):
@@ -194,6 +200,30 @@ def test_importing_colour_leaves_numpy_print_options_alone():
             "assert np.get_printoptions() == a, np.get_printoptions(); print('ok')")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                        timeout=300)
+    assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
+
+
+def test_the_dependencies_import_under_w_error():
+    """With the dependency floors (matplotlib 3.8, SciPy 1.10), ``-W error`` made the first
+    import of colour-science fail half-way (matplotlib's pyparsing names) and
+    colour-demosaicing's too (SciPy 1.10 words its namespace warning "Please use ...", the
+    filter matched only the later "Please import ..."): both import in a fresh process
+    under -W error, and the filters match both dependencies' words (H122)."""
+    import re
+
+    from rgbz_fast import _deps
+
+    for text in ("'parseString' deprecated - use 'parse_string'",
+                 "'endQuoteChar' argument is deprecated, use 'end_quote_char'"):
+        assert re.match(_deps.PYPARSING_NAMES, text), text
+    for verb in ("import", "use"):
+        text = (f"Please {verb} `convolve` from the `scipy.ndimage` namespace, the "
+                "`scipy.ndimage.filters` namespace is deprecated.")
+        assert re.match(_deps.SCIPY_NDIMAGE_NAMESPACE, text), text
+    code = ("import rgbz_fast._deps as d; d.import_colour(); d.import_colour_demosaicing(); "
+            "print('ok')")
+    r = subprocess.run([sys.executable, "-W", "error", "-c", code], capture_output=True,
+                       text=True, timeout=300)
     assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
 
 
