@@ -353,6 +353,26 @@ def test_atomic_write_failure_keeps_the_old_file(tmp_path, monkeypatch):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report.json"]   # no temp file left
 
 
+def test_atomic_write_names_the_file_a_full_disk_refused(tmp_path, monkeypatch):
+    """A full disk fails the write or the fsync with an error that names no file:
+    `rgbz-fast evaluate --out` on a full disk ended with "error: [Errno 28] No space left on
+    device" of nothing in particular (found on a 64 kB tmpfs). The error names the file,
+    keeps its errno, and no temporary file stays."""
+    import errno
+
+    target = tmp_path / "results.csv"
+
+    def full(fd):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(os, "fsync", full)
+    with pytest.raises(OSError) as got:
+        rio.atomic_write(target, "a,b\n")
+    assert got.value.errno == errno.ENOSPC and got.value.filename == str(target)
+    assert "No space left on device" in str(got.value) and str(target) in str(got.value)
+    assert list(tmp_path.iterdir()) == []
+
+
 # --------------------------------------------------------------------------- unreadable files
 def _call_without_leaks(fn):
     """Call ``fn`` and collect garbage; fail on an unclosed file (ResourceWarning).

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 import re
 import threading
 
@@ -156,9 +155,9 @@ def _cache_read(cdir, key):
     return values
 
 
-#: the causes (errno, folder) of failed cache writes warned of since the evaluation began:
-#: a cache folder of no write permission (or a full disk) failed every entry, each with a
-#: warning of its own (10 lines an image, 240 on Kodak)
+#: the causes (errno, cache folder) of failed cache writes warned of since the evaluation
+#: began: a cache folder of no write permission (or a full disk) failed every entry, each
+#: with a warning of its own (10 lines an image, 240 on Kodak)
 _write_failures = set()
 _write_failures_lock = threading.Lock()
 
@@ -172,7 +171,7 @@ def forget_write_failures():
 def _cache_write(cdir, key, values):
     """Write an entry; a cache that cannot take it (a folder or a file of no write
     permission under its name) costs a warning, never the result: one warning for each
-    cause (the error and the folder it names) until :func:`forget_write_failures`."""
+    cause (the error, in this cache) until :func:`forget_write_failures`."""
     body = json.dumps(values, sort_keys=True)
     entry = cdir / f"{key}.json"
     try:
@@ -186,11 +185,8 @@ def _cache_write(cdir, key, values):
     except (OSError, ValueError) as exc:
         import warnings
 
-        cause = None
-        if isinstance(exc, OSError):
-            where = os.path.dirname(exc.filename) if isinstance(exc.filename, str) \
-                else str(cdir.parent)
-            cause = (exc.errno, where)
+        # the error within this cache: a folder of no permission, a full disk
+        cause = (exc.errno, str(cdir.parent)) if isinstance(exc, OSError) else None
         with _write_failures_lock:
             first = cause not in _write_failures
             if cause is not None:
