@@ -18,6 +18,7 @@ of ROUNDS (default 7) rounds, the cases alternated round by round:
   alone, whatever computes it.
 """
 
+import os
 import statistics
 import sys
 import time
@@ -128,7 +129,6 @@ def main(rounds=7):
         print(f"| {k} | {med * 1e3:.1f} ms | {extra} |")
     for n, v in sorted(per_stage.items(), key=lambda kv: -statistics.median(kv[1])):
         print(f"| `{n}` in the call | {statistics.median(v) * 1e3:.1f} ms | |")
-    import os
     print(f"load average {os.getloadavg()[0]:.1f}, {n_meas} measurements")
 
 
