@@ -8,6 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rgbz_fast.io import ImageSource
+
 #: the root of the source checkout
 REPO = Path(__file__).resolve().parents[1]
 SHARED_DATA = Path(os.environ.get("RGBZ_SHARED_DATA", REPO.parent / "shared" / "data"))
@@ -143,3 +145,14 @@ def calibration_fields(**kw):
                   sites=(np.array([0, 0, 2]), np.array([0, 2, 2])), block=1, shape=(4, 4))
     fields.update(kw)
     return fields
+
+
+class KilledSource(ImageSource):
+    """An ImageSource whose load() ends its own process by SIGKILL, as the out-of-memory
+    killer ends a worker: for the process pool's tests (a spawned worker imports this
+    module by name, as the test's process did)."""
+
+    def load(self):
+        import signal
+
+        os.kill(os.getpid(), signal.SIGKILL)

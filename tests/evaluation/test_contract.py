@@ -316,6 +316,27 @@ def test_a_worker_processs_warnings_are_the_callers(files, tmp_path, capfd):
     assert "cache_dir" not in capfd.readouterr().err      # no worker printed it itself
 
 
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="SIGKILL of a worker: POSIX")
+def test_a_worker_killed_from_outside_is_one_error_naming_processes(files, tmp_path):
+    """A worker process ended by SIGKILL (the out-of-memory killer's signal) broke the pool:
+    `rgbz-fast evaluate --processes 2` ended with concurrent.futures' traceback (exit 1).
+    It is one error naming ``processes`` and the signal, the other worker stopped, no
+    temporary file left; the command line prints it as its one error line (an OSError:
+    exit 2)."""
+    import multiprocessing
+
+    from _support import KilledSource
+
+    src = [rio.ImageSource("a", str(files / "small.png")),
+           KilledSource("b", str(files / "small.png"))]
+    with pytest.raises(ChildProcessError,
+                       match=r"^processes: a worker process was ended by signal 9 \(SIGKILL\)"):
+        ev.evaluate(src, metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",),
+                    progress=False, processes=2, crop=0, cache_dir=tmp_path / "c")
+    assert not [p for p in tmp_path.rglob("*") if p.name.endswith(".tmp")]
+    assert multiprocessing.active_children() == []        # the other worker stopped too
+
+
 def _cache_files(cache):
     return sorted(p for p in Path(cache).rglob("*") if p.is_file())
 

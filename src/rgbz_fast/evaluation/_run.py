@@ -7,6 +7,7 @@ import os
 from functools import lru_cache
 import signal
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 
 import numpy as np
@@ -601,6 +602,21 @@ def _run_pool(tasks, nproc, bar, results):
             for text, category in res.warnings:
                 warnings.warn(text, category, stacklevel=2)
             bar.update()
+    except BrokenProcessPool:
+        # a worker killed from outside (the out-of-memory killer, kill -9): the command had
+        # ended with concurrent.futures' traceback
+        procs = list((getattr(ex, "_processes", None) or {}).values())
+        _stop_pool(ex)
+        codes = [p.exitcode for p in procs if p.exitcode is not None and p.exitcode < 0
+                 and p.exitcode != -signal.SIGTERM]          # not the ones _stop_pool ended
+        del ex
+        how = f" by signal {-codes[0]} ({signal.Signals(-codes[0]).name})" \
+            if codes and -codes[0] in signal.valid_signals() else ""
+        raise ChildProcessError(
+            f"processes: a worker process was ended{how} while it evaluated an image (the "
+            "system's out-of-memory killer ends the largest process); the images done are in "
+            "the cache, if one is used, and a rerun resumes from them; fewer processes take "
+            "less memory") from None
     except BaseException:
         _stop_pool(ex)                      # an error or an interrupt: no orphaned worker
         del ex                              # its semaphores go before the tracker does
