@@ -2,6 +2,7 @@
 
 import json
 import math
+import sys
 
 import numpy as np
 import pytest
@@ -257,6 +258,25 @@ def test_dask_local_cluster_equals_local_run(tiny_dataset):
                                   host="127.0.0.1", dashboard_address=None) as cluster:
         remote = ev.evaluate(ds, scheduler=cluster.scheduler_address, **kw)
     assert remote.rows == local.rows
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="SIGKILL of a worker: POSIX")
+def test_dask_workers_killed_by_an_image_is_one_error_naming_it(tiny_dataset):
+    """Every Dask worker that ran an image died (here: by SIGKILL from the image's own load,
+    as the out-of-memory killer ends one): Dask's KilledWorker ended the command with a
+    traceback; it is one error naming ``scheduler`` and the image (H123)."""
+    distributed = pytest.importorskip("distributed")
+    from _support import KilledSource
+
+    ds = rio.folder_dataset(tiny_dataset)[:1] + [KilledSource("killer",
+                                                              str(tiny_dataset / "cat.png"))]
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
+                                  host="127.0.0.1", dashboard_address=None) as cluster:
+        with pytest.raises(ChildProcessError,
+                           match=r"^scheduler: the Dask workers that evaluated image 'killer' "
+                                 r"died"):
+            ev.evaluate(ds, scheduler=cluster.scheduler_address, progress=False,
+                        metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",))
 
 
 def test_reports_written(tiny_dataset, tmp_path):

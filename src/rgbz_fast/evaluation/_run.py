@@ -659,7 +659,16 @@ def _run_dask(tasks, scheduler, bar):
         futs = {client.submit(_pool_task, t, pure=False): t[0].name for t in tasks}
         out = {}
         for f in d_as_completed(list(futs)):
-            out[futs[f]] = f.result()
+            try:
+                out[futs[f]] = f.result()
+            except dist.KilledWorker:
+                # every worker that ran the image died (the out-of-memory killer, a crash):
+                # Dask's KilledWorker had ended the command with a traceback
+                raise ChildProcessError(
+                    f"scheduler: the Dask workers that evaluated image {futs[f]!r} died while "
+                    "they ran it (Dask tried it on several; the out-of-memory killer ends the "
+                    "largest process); the images done are in the cache, if one is used, and "
+                    "a rerun resumes from them; the workers' logs say more") from None
             bar.update()
         return out
     finally:
