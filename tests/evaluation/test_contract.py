@@ -437,7 +437,7 @@ def _alive(pid):
     return stat.rsplit(")", 1)[1].split()[0] != "Z"
 
 
-def _stop_a_running_pool(tmp_path, stop, pool="processes"):
+def _stop_a_running_pool(tmp_path, stop, pool="processes", hangup_ignored=False):
     """Start `rgbz-fast evaluate --processes 2` (``pool="threads"``: the default pool of
     threads) in a session of its own, call ``stop(proc)`` once the pool runs and the cache
     has an entry; (return code, stderr, seconds from the signal to the exit, the worker
@@ -455,9 +455,13 @@ def _stop_a_running_pool(tmp_path, stop, pool="processes"):
     argv += ["--processes", "2"] if pool == "processes" else []
     # SIGINT as a terminal gives it: a shell starts a background job (`pytest ... &`) with
     # SIGINT ignored, the child inherits that, and Ctrl-C rightly did nothing (exit 0)
+    # (hangup_ignored: started as nohup starts a command)
+    def dispositions():
+        signal.signal(signal.SIGINT, signal.SIG_DFL)
+        signal.signal(signal.SIGHUP, signal.SIG_IGN if hangup_ignored else signal.SIG_DFL)
+
     proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+                            start_new_session=True, preexec_fn=dispositions)
     deadline = time.monotonic() + 300
     workers = []
     while time.monotonic() < deadline and proc.poll() is None:
@@ -473,7 +477,7 @@ def _stop_a_running_pool(tmp_path, stop, pool="processes"):
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
-@pytest.mark.parametrize("how", ["sigterm", "ctrl-c"])
+@pytest.mark.parametrize("how", ["sigterm", "ctrl-c", "hangup"])
 def test_a_stopped_evaluation_pool_ends_at_once_and_cleans_up(tmp_path, how):
     """SIGTERM to `rgbz-fast evaluate --processes 2`, or Ctrl-C to its process group, stops
     the pool's workers before the process exits (143, 130): no worker outlives the run, no
@@ -485,22 +489,24 @@ def test_a_stopped_evaluation_pool_ends_at_once_and_cleans_up(tmp_path, how):
     def stop(proc):
         if how == "sigterm":
             proc.send_signal(signal.SIGTERM)
-        else:
-            os.killpg(proc.pid, signal.SIGINT)
+        else:                                    # as a terminal does: the process group
+            os.killpg(proc.pid, signal.SIGHUP if how == "hangup" else signal.SIGINT)
 
     code, err, seconds, workers, cache = _stop_a_running_pool(tmp_path, stop)
     assert len(workers) >= 2, "the pool's processes were never seen"
-    want = (128 + signal.SIGTERM, "terminated") if how == "sigterm" else (130, "interrupted")
+    want = {"sigterm": (128 + signal.SIGTERM, "terminated"), "ctrl-c": (130, "interrupted"),
+            "hangup": (128 + signal.SIGHUP, "terminated (hangup)")}[how]
     assert code == want[0], err[-2000:]
     assert err.strip().splitlines()[-1] == f"rgbz-fast evaluate: {want[1]}"
     assert "were killed" not in err, f"the workers did not stop by themselves ({seconds:.1f} s)"
+    assert "Traceback" not in err, err[-2000:]        # nor the pool's resource tracker died
     time.sleep(0.5)
     assert not [w for w in workers if _alive(w)], "orphaned worker processes"
     assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
-@pytest.mark.parametrize("how", ["sigterm", "ctrl-c"])
+@pytest.mark.parametrize("how", ["sigterm", "ctrl-c", "hangup"])
 def test_a_stopped_thread_pool_ends_its_images_and_cleans_up(tmp_path, how):
     """SIGTERM to `rgbz-fast evaluate` (its default pool of threads), or Ctrl-C to its
     process group: the threads end their images at the next (pattern, method), the command
@@ -511,17 +517,36 @@ def test_a_stopped_thread_pool_ends_its_images_and_cleans_up(tmp_path, how):
     def stop(proc):
         if how == "sigterm":
             proc.send_signal(signal.SIGTERM)
-        else:
-            os.killpg(proc.pid, signal.SIGINT)
+        else:                                    # as a terminal does: the process group
+            os.killpg(proc.pid, signal.SIGHUP if how == "hangup" else signal.SIGINT)
 
     code, err, seconds, workers, cache = _stop_a_running_pool(tmp_path, stop, "threads")
     assert workers == [], "the default pool started processes"
-    want = (128 + signal.SIGTERM, "terminated") if how == "sigterm" else (130, "interrupted")
+    want = {"sigterm": (128 + signal.SIGTERM, "terminated"), "ctrl-c": (130, "interrupted"),
+            "hangup": (128 + signal.SIGHUP, "terminated (hangup)")}[how]
     assert code == want[0], err[-2000:]
     assert err.strip().splitlines()[-1] == f"rgbz-fast evaluate: {want[1]}"
     assert not [p for p in cache.rglob("*") if p.name.endswith(".tmp")]
     for entry in cache.rglob("*.json"):
         assert set(json.loads(entry.read_text())) == {"check", "values"}, entry
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+def test_a_hangup_leaves_a_nohup_run_running(tmp_path):
+    """Started with SIGHUP ignored (`nohup rgbz-fast evaluate --processes 2 ...`), a closed
+    terminal's SIGHUP to the process group changes nothing: the command does not take
+    SIGHUP over, its workers ignore it as their parent does, and the run ends with its
+    reports (exit 0)."""
+    import os
+
+    def hang_up(proc):
+        os.killpg(proc.pid, signal.SIGHUP)
+
+    code, err, seconds, workers, cache = _stop_a_running_pool(tmp_path, hang_up,
+                                                              hangup_ignored=True)
+    assert len(workers) >= 2, "the pool's processes were never seen"
+    assert code == 0, err[-2000:]
+    assert (tmp_path / "out" / "results.csv").is_file()
 
 
 REPORT_LOOP = textwrap.dedent("""

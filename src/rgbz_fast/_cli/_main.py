@@ -22,7 +22,8 @@ COMMANDS = (simulate, reconstruct, depth, evaluate, train, calibrate, evaluate_d
 
 
 class Terminated(SystemExit):
-    """SIGTERM, raised in the main thread so that every ``finally`` and cleanup runs."""
+    """SIGTERM (or SIGHUP, the terminal closed), raised in the main thread so that every
+    ``finally`` and cleanup runs."""
 
 
 def build_parser():
@@ -163,8 +164,19 @@ def _given_twice(parser, argv):
 
 
 def _terminate(signum, frame):
-    signal.signal(signal.SIGTERM, signal.SIG_IGN)      # cleaning up: do not interrupt it
+    for sig in _stop_signals():                        # cleaning up: do not interrupt it
+        signal.signal(sig, signal.SIG_IGN)
     raise Terminated(128 + signum)
+
+
+def _stop_signals():
+    """SIGTERM, and SIGHUP (a closed terminal had ended a run without its cleanup: its
+    temporary files left) unless the command was started with it ignored (``nohup``)."""
+    sigs = [signal.SIGTERM] if hasattr(signal, "SIGTERM") else []
+    if hasattr(signal, "SIGHUP") and signal.getsignal(signal.SIGHUP) in (signal.SIG_DFL,
+                                                                         _terminate):
+        sigs.append(signal.SIGHUP)
+    return sigs
 
 
 def main(argv=None):
@@ -189,9 +201,9 @@ def _main(argv):
     if twice:
         args.parser.error(f"{twice}: given twice (only the last would apply)")
     args.argv = argv
-    previous = None
-    if hasattr(signal, "SIGTERM") and threading.current_thread() is threading.main_thread():
-        previous = signal.signal(signal.SIGTERM, _terminate)
+    previous = {}
+    if threading.current_thread() is threading.main_thread():
+        previous = {sig: signal.signal(sig, _terminate) for sig in _stop_signals()}
     try:
         with warnings.catch_warnings():
             warnings.showwarning = _one_line_warnings(args.command)
@@ -209,8 +221,10 @@ def _main(argv):
         print(f"rgbz-fast {args.command}: interrupted", file=sys.stderr)
         return 130
     except Terminated as exc:
-        print(f"rgbz-fast {args.command}: terminated", file=sys.stderr)
+        hangup = hasattr(signal, "SIGHUP") and exc.code == 128 + signal.SIGHUP
+        print(f"rgbz-fast {args.command}: terminated{' (hangup)' if hangup else ''}",
+              file=sys.stderr)
         return exc.code
     finally:
-        if previous is not None:
-            signal.signal(signal.SIGTERM, previous)
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)

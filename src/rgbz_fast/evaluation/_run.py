@@ -370,7 +370,7 @@ class _WorkerStopped(SystemExit):
     for work, it ends the process as a SystemExit."""
 
 
-def _worker_init():
+def _worker_init(hangup_to_parent=False):
     """Pool workers end promptly on SIGTERM, cleaning up on the way, and leave SIGINT to the
     parent.
 
@@ -381,6 +381,8 @@ def _worker_init():
     :class:`_WorkerStopped`, which :func:`_pool_task` turns into the end of the process once
     the writes in progress have cleaned up -- the pool would otherwise catch it too, and
     keep the worker running until it is killed (10 s later, its temporary files left).
+    ``hangup_to_parent``: SIGHUP is left to the parent in the same way, when the parent
+    handles it (the command line) or ignores it (``nohup``) rather than dying of it.
     """
     def terminated(signum, frame):
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
@@ -388,6 +390,10 @@ def _worker_init():
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, terminated)
+    if hangup_to_parent:
+        # a closed terminal sends SIGHUP to the whole process group too: the parent, which
+        # handles it (the command line) or ignores it (nohup), stops the pool as for Ctrl-C
+        signal.signal(signal.SIGHUP, signal.SIG_IGN)
     global _IN_WORKER
     _IN_WORKER = True
 
@@ -593,8 +599,13 @@ def _run_pool(tasks, nproc, bar, results):
     import multiprocessing as mp
     import warnings
     ctx = mp.get_context("spawn")
+    # SIGHUP: the workers leave it to this process when it does not die of it
+    hup = getattr(signal, "SIGHUP", None)
+    hangup_to_parent = hup is not None and signal.getsignal(hup) not in (signal.SIG_DFL, None)
+    if hangup_to_parent and not _tracker_running():
+        _start_tracker_without_hangup()
     ex = ProcessPoolExecutor(max_workers=min(nproc, len(tasks)), mp_context=ctx,
-                             initializer=_worker_init)
+                             initializer=_worker_init, initargs=(hangup_to_parent,))
     try:
         futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
         for f in as_completed(futs):
@@ -622,6 +633,24 @@ def _run_pool(tasks, nproc, bar, results):
         del ex                              # its semaphores go before the tracker does
         raise
     ex.shutdown(wait=True)
+
+
+def _start_tracker_without_hangup():
+    """Start multiprocessing's resource tracker with SIGHUP blocked, which it keeps: it is a
+    process of this one's group and ignores SIGINT and SIGTERM but not SIGHUP, so a closed
+    terminal ended it under a pool this process was stopping (its relaunch printed five
+    tracebacks, KeyError '/mp-...'). Blocked, not ignored, here: a SIGHUP meanwhile reaches
+    this process once the tracker runs."""
+    from multiprocessing import resource_tracker
+
+    if not hasattr(signal, "pthread_sigmask"):       # pragma: no cover - not POSIX
+        resource_tracker.ensure_running()
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGHUP})
+    try:
+        resource_tracker.ensure_running()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
 def _tracker_running():
