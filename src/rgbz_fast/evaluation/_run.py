@@ -593,6 +593,11 @@ def _run_threads(tasks, nthreads, bar, results):
     ex.shutdown(wait=True)
 
 
+#: the end of the error of a worker that died under an image (H123), local pool or Dask
+_KILLED = ("(the system's out-of-memory killer ends the largest process); the images done are "
+           "in the cache, if one is used, and a rerun resumes from them")
+
+
 def _run_pool(tasks, nproc, bar, results):
     """The tasks on a local pool of spawned processes, their results into ``results``; the
     warnings of each image issued again here (:class:`_Rows`)."""
@@ -624,10 +629,8 @@ def _run_pool(tasks, nproc, bar, results):
         how = f" by signal {-codes[0]} ({signal.Signals(-codes[0]).name})" \
             if codes and -codes[0] in signal.valid_signals() else ""
         raise ChildProcessError(
-            f"processes: a worker process was ended{how} while it evaluated an image (the "
-            "system's out-of-memory killer ends the largest process); the images done are in "
-            "the cache, if one is used, and a rerun resumes from them; fewer processes take "
-            "less memory") from None
+            f"processes: a worker process was ended{how} while it evaluated an image "
+            f"{_KILLED}; fewer processes take less memory") from None
     except BaseException:
         _stop_pool(ex)                      # an error or an interrupt: no orphaned worker
         del ex                              # its semaphores go before the tracker does
@@ -695,9 +698,8 @@ def _run_dask(tasks, scheduler, bar):
                 # Dask's KilledWorker had ended the command with a traceback
                 raise ChildProcessError(
                     f"scheduler: the Dask workers that evaluated image {futs[f]!r} died while "
-                    "they ran it (Dask tried it on several; the out-of-memory killer ends the "
-                    "largest process); the images done are in the cache, if one is used, and "
-                    "a rerun resumes from them; the workers' logs say more") from None
+                    f"they ran it, each one Dask tried {_KILLED}; the workers' logs say more") \
+                    from None
             bar.update()
         return out
     finally:

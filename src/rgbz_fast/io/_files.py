@@ -305,15 +305,12 @@ def atomic_write(path, data):
             fh.flush()
             os.fsync(fh.fileno())
         os.replace(tmp, path)
-    except OSError as exc:
+    except BaseException as exc:
         _unlink(tmp)
-        if exc.filename is None and exc.errno is not None:
+        if isinstance(exc, OSError) and exc.filename is None and exc.errno is not None:
             # a write's or an fsync's error (a full disk, a quota) names no file: the command
             # line said "error: [Errno 28] No space left on device" of nothing in particular
             raise OSError(exc.errno, exc.strerror, str(path)) from exc
-        raise
-    except BaseException:
-        _unlink(tmp)
         raise
 
 
