@@ -107,4 +107,18 @@ int rgbz_tof_fixed_pattern(const double *phase, const double *amp, const double 
                            double var_dsnu, double fix_dsnu, double prnu, int shared,
                            double *delta, int workers);
 
+/* rgbz_tof_fixed_pattern of the measurements [n0, n0 + m) into delta[0, m), on the calling
+   thread (no checks: F within 1..RGBZ_TOF_MAX_FREQS); iq NULL: the same values bit for bit.
+   iq not NULL: the phasors whose phases and amplitudes phase and amp are (rgbz_tof_depth_iq's),
+   I of measurement n0 + j at iq[f iqs + j], Q at iq[(F + f) iqs + j]; their cosine and sine
+   then come from I / (2 amp), Q / (2 amp), not from the phase (within a few ulps of it; phase
+   is not read). The guided denoise calls it on each output row as it unwraps it
+   (tofg_valid_out in tof_guided.h). */
+void rgbz_tof_fixed_pattern_span(const double *phase, const double *amp, const double *offset,
+                                 const double *count, ptrdiff_t F, ptrdiff_t N,
+                                 const double *sigma_scale, double black, double pre,
+                                 double var_dsnu, double fix_dsnu, double prnu, int shared,
+                                 ptrdiff_t n0, ptrdiff_t m, double *delta, const double *iq,
+                                 ptrdiff_t iqs);
+
 #endif

@@ -30,6 +30,7 @@
 #include <string.h>
 #include "rgbz.h"
 #include "rgbz_ops.h"
+#include "tof_filter.h"
 #include "tof_guided.h"
 
 #define TOFG_PI 3.141592653589793
@@ -1016,6 +1017,187 @@ static int tofg_denoise_strips(const float *zr, const float *zi, const float *v,
     return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
 }
 
+/* ------------------------------------------------------------------ validity */
+typedef struct {
+    const double *amp, *depth, *residual, *sigma_scale, *refl_coef;
+    const float *var;
+    const uint8_t *sat;
+    ptrdiff_t N;
+    double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
+    double *snr, *sigma, *refl;
+    uint8_t *flags;
+    const double *delta;
+    double max_reflectance;
+} tofg_valid_args;
+
+/* the measurements [n0, n1) with NF frequencies (a compile-time constant up to 4), delta from n0
+   on when DL (a compile-time constant): branch-free, the arrays restrict parameters, blocks of
+   TOFG_VB whose flags other than saturation are made as int32 beside the doubles and stored as
+   bytes in a loop of their own, so that the loop over the measurements vectorises (with the
+   bytes in it, and a test of delta inside, GCC left it scalar: 2026-11-28) */
+#define TOFG_VB 256
+RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restrict amp,
+                                 const float *restrict var, const double *restrict depth,
+                                 const double *restrict residual, const uint8_t *restrict sat,
+                                 double *restrict snr, double *restrict sigma,
+                                 double *restrict refl, uint8_t *restrict flags,
+                                 const double *restrict delta, ptrdiff_t n0, ptrdiff_t n1,
+                                 const int NF, const int DL)
+{
+    const ptrdiff_t N = p->N;
+    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)NF;
+    const double min_snr = p->min_snr, min_amplitude = p->min_amplitude;
+    const double max_sigma = p->max_sigma, max_residual = p->max_residual;
+    const double min_reflectance = p->min_reflectance, max_range = p->max_range;
+    const double max_reflectance = p->max_reflectance;
+    const int limit = max_sigma >= 0.0;
+    double ssc[RGBZ_TOF_MAX_FREQS], rco[RGBZ_TOF_MAX_FREQS];
+    int32_t code[TOFG_VB];
+    for (int f = 0; f < NF; f++) {
+        ssc[f] = p->sigma_scale[f];
+        rco[f] = p->refl_coef[f];
+    }
+    for (ptrdiff_t b0 = n0; b0 < n1; b0 += TOFG_VB) {
+        const ptrdiff_t m = n1 - b0 < TOFG_VB ? n1 - b0 : TOFG_VB;
+        for (ptrdiff_t j = 0; j < m; j++) {
+            const ptrdiff_t n = b0 + j;
+            const double vn = var[n], sd = sqrt(vn), d = depth[n];
+            const double dd = d > 0.0 ? d : 1.0;
+            double s2 = 0.0, amin = INFINITY, rho = 0.0;
+            int32_t weak = 0, capped = 0;
+            for (int f = 0; f < NF; f++) {
+                const double a = amp[f * N + n];
+                double ph = vn / (4.0 * a * a);                  /* phase variance */
+                capped |= !(ph < cap);
+                ph = ph < cap ? ph : cap;                         /* inf and NaN: the cap */
+                s2 += ssc[f] * ph;
+                amin = a < amin ? a : amin;                       /* NaN: passed over */
+                weak |= a < min_amplitude;
+                rho += a * rco[f];
+            }
+            /* the least 2 a / sd over the frequencies in one division: a correctly rounded
+               quotient is monotonic in the dividend, so the same value bit for bit; a NaN
+               where a frequency's quotient would be one (0 / 0, inf / inf, a NaN sd) gives
+               what passing over those did, inf. The low-signal test reads q (a NaN is not
+               below min_snr, as inf is not): tested on the select, GCC made a select of masks
+               it cannot vectorise */
+            const double q = 2.0 * amin / sd;
+            const double best = q == q ? q : INFINITY;
+            rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
+            if (DL) {                      /* the fixed-pattern noise's correlation */
+                const double sd2 = s2 + delta[n - n0];
+                s2 = (!capped && sd2 > 0.0) ? sd2 : s2;
+            }
+            const double sg = sqrt(s2);
+            const int32_t low = (q < min_snr) | weak | (limit & !(sg <= max_sigma));
+            /* out of range, or a reflectance no surface has at that depth (an aliased one) */
+            const int32_t far = (d < 0.0) | (d > max_range - 5.0 * sg)
+                                | (rho < min_reflectance) | (rho > max_reflectance);
+            code[j] = (low << 1) | ((residual[n] > max_residual) << 2) | (far << 4);
+            snr[n] = best;
+            sigma[n] = sg;
+            refl[n] = rho;
+        }
+        for (ptrdiff_t j = 0; j < m; j++)
+            flags[b0 + j] = (uint8_t)((sat[b0 + j] != 0) | code[j]);
+    }
+}
+
+/* the measurements [n0, n1), delta (NULL: none) from n0 on */
+RGBZ_CLONES_512 static void tofg_valid_block(const tofg_valid_args *p, ptrdiff_t F,
+                                             ptrdiff_t n0, ptrdiff_t n1, const double *delta)
+{
+#define TOFG_VALID_(nf, dl) tofg_valid_span(p, p->amp, p->var, p->depth, p->residual, p->sat, \
+                                            p->snr, p->sigma, p->refl, p->flags, delta, n0,  \
+                                            n1, nf, dl)
+#define TOFG_VALID_F_(dl)                                                                     \
+    switch (F) {                                                                              \
+    case 1: TOFG_VALID_(1, dl); break;                                                        \
+    case 2: TOFG_VALID_(2, dl); break;                                                        \
+    case 3: TOFG_VALID_(3, dl); break;                                                        \
+    case 4: TOFG_VALID_(4, dl); break;                                                        \
+    default: TOFG_VALID_((int)F, dl); break;                                                  \
+    }
+    if (delta) {
+        TOFG_VALID_F_(1)
+    } else {
+        TOFG_VALID_F_(0)
+    }
+#undef TOFG_VALID_F_
+#undef TOFG_VALID_
+}
+
+int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
+                       const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
+                       const double *sigma_scale, const double *refl_coef, double min_snr,
+                       double min_amplitude, double max_sigma, double max_residual,
+                       double min_reflectance, double max_range, const double *delta,
+                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers,
+                       double max_reflectance)
+{
+    if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
+        || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
+        return RGBZ_EINVAL;
+    const tofg_valid_args p = {amp, depth, residual, sigma_scale, refl_coef, var, sat, N,
+                               min_snr, min_amplitude, max_sigma, max_residual,
+                               min_reflectance, max_range, snr, sigma, refl, flags, delta,
+                               max_reflectance};
+    const int nth = rgbz_threads(workers);
+    (void)nth;
+    RGBZ_PARALLEL_FOR
+    for (ptrdiff_t n0 = 0; n0 < N; n0 += 4096)
+        tofg_valid_block(&p, F, n0, N - n0 < 4096 ? N : n0 + 4096, delta ? delta + n0 : NULL);
+    return RGBZ_OK;
+}
+
+/* the validity args of the denoise's outputs (tofg_valid_out) */
+static tofg_valid_args tofg_valid_of(const tofg_unwrap_out *uw, const float *var, ptrdiff_t N)
+{
+    const tofg_valid_out *q = uw->valid;
+    const tofg_valid_args p = {uw->amp, uw->depth, uw->residual, q->sigma_scale, q->refl_coef,
+                               var, q->sat, N, q->min_snr, q->min_amplitude, q->max_sigma,
+                               q->max_residual, q->min_reflectance, q->max_range, q->snr,
+                               q->sigma, q->refl, q->flags, NULL, q->max_reflectance};
+    return p;
+}
+
+/* The fixed-pattern correction of the measurements [n0, n0 + m) into delta[0, m)
+   (tofg_valid_out: as tof/_noise.py's fixed_pattern_delta; iq NULL: bit for bit; else the
+   means whose phases and amplitudes uw holds, I of n0 + j at iq[f iqs + j], Q at
+   iq[(F + f) iqs + j]: rgbz_tof_fixed_pattern_span's cosines from the phasors) */
+static void tofg_valid_delta(const tofg_unwrap_out *uw, const double *count, ptrdiff_t F,
+                             ptrdiff_t N, ptrdiff_t n0, ptrdiff_t m, double *delta,
+                             const double *iq, ptrdiff_t iqs)
+{
+    const tofg_valid_out *q = uw->valid;
+    rgbz_tof_fixed_pattern_span(uw->phase, uw->amp, q->offset, count, F, N, q->sigma_scale,
+                                q->black, q->pre, q->var_dsnu, q->fix_dsnu, q->prnu, 1, n0, m,
+                                delta, iq, iqs);
+    if (q->delay_var != 0.0)
+        for (ptrdiff_t j = 0; j < m; j++) {
+            const double c = count[n0 + j];
+            delta[j] += q->delay_var / ((c >= 1.0 || c != c) ? c : 1.0);
+        }
+}
+
+/* The validity of the measurements [n0, n0 + m) of the denoise's outputs (var: ov, count:
+   on64) on the calling thread, TOFG_VALID_ROW at a time; iq (NULL: none), iqs: their means
+   (tofg_valid_delta) */
+#define TOFG_VALID_ROW 512
+static void tofg_valid_row(const tofg_unwrap_out *uw, const float *var, const double *count,
+                           ptrdiff_t F, ptrdiff_t N, ptrdiff_t n0, ptrdiff_t m,
+                           const double *iq, ptrdiff_t iqs)
+{
+    double delta[TOFG_VALID_ROW];
+    const tofg_valid_args p = tofg_valid_of(uw, var, N);
+    for (ptrdiff_t j = 0; j < m; j += TOFG_VALID_ROW) {
+        const ptrdiff_t k = m - j < TOFG_VALID_ROW ? m - j : TOFG_VALID_ROW;
+        if (uw->valid->offset)
+            tofg_valid_delta(uw, count, F, N, n0 + j, k, delta, iq ? iq + j : NULL, iqs);
+        tofg_valid_block(&p, F, n0 + j, n0 + j + k, uw->valid->offset ? delta : NULL);
+    }
+}
+
 /* ---------------------------------------------------------------- the sliding pipeline */
 /* The four passes of rgbz_tofg_denoise row by row on evenly spaced grid lines. The frame is
    cut into tiles of output columns [c0, c1) (at most TOFG_VIEW of them) and bands of output
@@ -1187,7 +1369,8 @@ static void tofg_slide_gates(const tofg_slide *S, const tofg_tile *T, const floa
 }
 
 /* the tile's outputs of grid row s from t64, tv, tn: stored, or unwrapped (rgbz_tof_depth_iq_row
-   on the row's means where t64 holds them); RGBZ_OK, RGBZ_EDOMAIN or another status */
+   on the row's means where t64 holds them) and, with uw->valid, their validity; RGBZ_OK,
+   RGBZ_EDOMAIN or another status */
 static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
                           ptrdiff_t s)
 {
@@ -1206,9 +1389,12 @@ static int tofg_slide_out(const tofg_slide *S, const tofg_slide_buf *b, const to
         return RGBZ_OK;
     }
     const tofg_unwrap_out *uw = S->uw;
-    return rgbz_tof_depth_iq_row(b->t64 + x, b->t64 + F * W + x, F, n, W, N, uw->freqs,
-                                 uw->weights, uw->max_range, uw->depth + o, uw->residual + o,
-                                 uw->wraps + o, uw->phase + o, uw->amp + o);
+    const int st = rgbz_tof_depth_iq_row(b->t64 + x, b->t64 + F * W + x, F, n, W, N, uw->freqs,
+                                         uw->weights, uw->max_range, uw->depth + o,
+                                         uw->residual + o, uw->wraps + o, uw->phase + o,
+                                         uw->amp + o);
+    if (uw->valid) tofg_valid_row(uw, S->ov, S->on64, F, N, o, n, b->t64 + x, W);
+    return st;
 }
 
 /* the tile's band of output rows [b0, b1); RGBZ_OK, RGBZ_EDOMAIN or another status */
@@ -1292,6 +1478,10 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     if (uw && (!uw->freqs || !uw->weights || !uw->depth || !uw->residual || !uw->wraps
                || !uw->phase || !uw->amp))
         return RGBZ_EINVAL;
+    if (uw && uw->valid && (!on64 || !uw->valid->sat || !uw->valid->sigma_scale
+                            || !uw->valid->refl_coef || !uw->valid->snr || !uw->valid->sigma
+                            || !uw->valid->refl || !uw->valid->flags))
+        return RGBZ_EINVAL;
     if (R == 0 || C == 0) return RGBZ_OK;
     const int nth = rgbz_threads(workers);
     const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
@@ -1303,12 +1493,18 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
         const int st = tofg_denoise_strips(zr, zi, v, col, use, F, R, C, row_px, col_px,
                                            reach_r, reach_c, radius_px, inv2h2, inv2hc2, or64,
                                            oi64, ov, o, uw, strip, fixed != 0, nth);
+        const ptrdiff_t N = R * C;
         if (on64) {
-            const ptrdiff_t N = R * C;
             RGBZ_PARALLEL_FOR
             for (ptrdiff_t n = 0; n < N; n++) on64[n] = o[n];
         }
         if (!on) free(o);
+        if (uw && uw->valid && (st == RGBZ_OK || st == RGBZ_EDOMAIN)) {
+            RGBZ_PARALLEL_FOR
+            for (ptrdiff_t n0 = 0; n0 < N; n0 += 4096)
+                tofg_valid_row(uw, ov, on64, F, N, n0, N - n0 < 4096 ? N - n0 : 4096, NULL,
+                               0);
+        }
         return st;
     }
     /* tiles of even widths; bands: `strip` rows each, else as many as make at least two
@@ -1388,113 +1584,6 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
         free(mem);
     }
     return bad ? RGBZ_ENOMEM : dom ? RGBZ_EDOMAIN : RGBZ_OK;
-}
-
-/* ------------------------------------------------------------------ validity */
-typedef struct {
-    const double *amp, *depth, *residual, *sigma_scale, *refl_coef;
-    const float *var;
-    const uint8_t *sat;
-    ptrdiff_t N;
-    double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
-    double *snr, *sigma, *refl;
-    uint8_t *flags;
-    const double *delta;
-    double max_reflectance;
-} tofg_valid_args;
-
-/* the measurements [n0, n1) with NF frequencies (a compile-time constant up to 4): branch-free,
-   the arrays restrict parameters, so that the loop over the measurements vectorises */
-RGBZ_INLINE void tofg_valid_span(const tofg_valid_args *p, const double *restrict amp,
-                                 const float *restrict var, const double *restrict depth,
-                                 const double *restrict residual, const uint8_t *restrict sat,
-                                 double *restrict snr, double *restrict sigma,
-                                 double *restrict refl, uint8_t *restrict flags,
-                                 const double *restrict delta, ptrdiff_t n0, ptrdiff_t n1,
-                                 const int NF)
-{
-    const ptrdiff_t N = p->N;
-    const double cap = TOFG_PI * TOFG_PI / 3.0, inv_f = 1.0 / (double)NF;
-    const double min_snr = p->min_snr, min_amplitude = p->min_amplitude;
-    const double max_sigma = p->max_sigma, max_residual = p->max_residual;
-    const double min_reflectance = p->min_reflectance, max_range = p->max_range;
-    const double max_reflectance = p->max_reflectance;
-    double ssc[RGBZ_TOF_MAX_FREQS], rco[RGBZ_TOF_MAX_FREQS];
-    for (int f = 0; f < NF; f++) {
-        ssc[f] = p->sigma_scale[f];
-        rco[f] = p->refl_coef[f];
-    }
-    for (ptrdiff_t n = n0; n < n1; n++) {
-        const double vn = var[n], sd = sqrt(vn), d = depth[n];
-        const double dd = d > 0.0 ? d : 1.0;
-        double s2 = 0.0, best = INFINITY, rho = 0.0;
-        int weak = 0, capped = 0;
-        for (int f = 0; f < NF; f++) {
-            const double a = amp[f * N + n];
-            double ph = vn / (4.0 * a * a);                      /* phase variance */
-            capped |= !(ph < cap);
-            ph = ph < cap ? ph : cap;                             /* inf and NaN: the cap */
-            s2 += ssc[f] * ph;
-            const double q = 2.0 * a / sd;
-            best = q < best ? q : best;
-            weak |= a < min_amplitude;
-            rho += a * rco[f];
-        }
-        rho = d > 0.0 ? rho * inv_f * dd * dd : 0.0;
-        if (delta) {                       /* the fixed-pattern noise's correlation */
-            const double sd2 = s2 + delta[n];
-            s2 = (!capped && sd2 > 0.0) ? sd2 : s2;
-        }
-        const double sg = sqrt(s2);
-        const int low = (best < min_snr) | weak | ((max_sigma >= 0.0) & !(sg <= max_sigma));
-        /* out of range, or a reflectance no surface has at that depth (an aliased one) */
-        const int far = (d < 0.0) | (d > max_range - 5.0 * sg) | (rho < min_reflectance)
-                        | (rho > max_reflectance);
-        flags[n] = (uint8_t)((sat[n] != 0) | (low << 1) | ((residual[n] > max_residual) << 2)
-                             | (far << 4));
-        snr[n] = best;
-        sigma[n] = sg;
-        refl[n] = rho;
-    }
-}
-
-RGBZ_CLONES_512 static void tofg_valid_block(const tofg_valid_args *p, ptrdiff_t F,
-                                             ptrdiff_t n0, ptrdiff_t n1)
-{
-#define TOFG_VALID_(nf) tofg_valid_span(p, p->amp, p->var, p->depth, p->residual, p->sat,     \
-                                        p->snr, p->sigma, p->refl, p->flags, p->delta, n0,   \
-                                        n1, nf)
-    switch (F) {
-    case 1: TOFG_VALID_(1); break;
-    case 2: TOFG_VALID_(2); break;
-    case 3: TOFG_VALID_(3); break;
-    case 4: TOFG_VALID_(4); break;
-    default: TOFG_VALID_((int)F); break;
-    }
-#undef TOFG_VALID_
-}
-
-int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
-                       const double *residual, const uint8_t *sat, ptrdiff_t F, ptrdiff_t N,
-                       const double *sigma_scale, const double *refl_coef, double min_snr,
-                       double min_amplitude, double max_sigma, double max_residual,
-                       double min_reflectance, double max_range, const double *delta,
-                       double *snr, double *sigma, double *refl, uint8_t *flags, int workers,
-                       double max_reflectance)
-{
-    if (!amp || !var || !depth || !residual || !sat || !sigma_scale || !refl_coef || !snr
-        || !sigma || !refl || !flags || F < 1 || F > RGBZ_TOF_MAX_FREQS || N < 0)
-        return RGBZ_EINVAL;
-    const tofg_valid_args p = {amp, depth, residual, sigma_scale, refl_coef, var, sat, N,
-                               min_snr, min_amplitude, max_sigma, max_residual,
-                               min_reflectance, max_range, snr, sigma, refl, flags, delta,
-                               max_reflectance};
-    const int nth = rgbz_threads(workers);
-    (void)nth;
-    RGBZ_PARALLEL_FOR
-    for (ptrdiff_t n0 = 0; n0 < N; n0 += 4096)
-        tofg_valid_block(&p, F, n0, N - n0 < 4096 ? N : n0 + 4096);
-    return RGBZ_OK;
 }
 
 /* ------------------------------------------------------------------ flying pixels */

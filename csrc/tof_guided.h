@@ -65,14 +65,34 @@ int rgbz_tofg_pass(const float *zr, const float *zi, const float *v, const float
                    double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
                    float *ov, float *on, int fixed, int workers);
 
+/* The validity of the fused denoise's unwrapped means (rgbz_tofg_validity's arguments but
+   amp, var, depth and residual, which are the denoise's own), with the fixed-pattern
+   correction delta of rgbz_tof_fixed_pattern (shared = 1) when offset (F, N) is not NULL:
+   the taps' mean of the prepare stage; count is the denoise's n_eff (on64); delay_var,
+   when not 0, adds delay_var / max(count, 1) to delta, as tof/_noise.py's
+   fixed_pattern_delta does. Each output row's values are made while the row is in the
+   cache, equal bit for bit to the two kernels run after the denoise. */
+typedef struct {
+    const uint8_t *sat;
+    const double *sigma_scale, *refl_coef;
+    double min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range;
+    double max_reflectance;
+    double *snr, *sigma, *refl;
+    uint8_t *flags;
+    const double *offset;
+    double black, pre, var_dsnu, fix_dsnu, prnu, delay_var;
+} tofg_valid_out;
+
 /* The unwrapping of the fused denoise's means (rgbz_tof_depth_iq's arguments): depth,
-   residual, wraps (N,), phase and amp (F, N). */
+   residual, wraps (N,), phase and amp (F, N); valid (NULL: none) the validity of the
+   means as they are unwrapped (tofg_valid_out; it needs on64). */
 typedef struct {
     const double *freqs, *weights;
     double max_range;
     double *depth, *residual;
     int32_t *wraps;
     double *phase, *amp;
+    const tofg_valid_out *valid;
 } tofg_unwrap_out;
 
 /* The guided denoise, the four passes of rgbz_tofg_pass fused: a row pass of the raw

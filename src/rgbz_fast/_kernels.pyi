@@ -238,7 +238,12 @@ def tofg_denoise(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, col: np.ndarray,
                  depth: np.ndarray | None = ..., residual: np.ndarray | None = ...,
                  wraps: np.ndarray | None = ..., phase: np.ndarray | None = ...,
                  amp: np.ndarray | None = ..., strip: int = ...,
-                 count: np.ndarray | None = ...) -> bool: ...
+                 count: np.ndarray | None = ..., sat: np.ndarray | None = ...,
+                 sigma_scale: np.ndarray | None = ..., refl_coef: np.ndarray | None = ...,
+                 limits: np.ndarray | None = ..., snr: np.ndarray | None = ...,
+                 sigma: np.ndarray | None = ..., refl: np.ndarray | None = ...,
+                 flags: np.ndarray | None = ..., offset: np.ndarray | None = ...,
+                 fixed: np.ndarray | None = ...) -> bool: ...
 def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
                   sat: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
                   min_snr: float, min_amplitude: float, max_sigma: float, max_residual: float,

@@ -1185,6 +1185,28 @@ cdef extern from "tof_guided.h" nogil:
                        const int64_t *px, Py_ssize_t reach, int64_t radius_px, double inv2h2,
                        double inv2hc2, float *or_, float *oi, double *or64, double *oi64,
                        float *ov, float *on, int fixed, int workers)
+    ctypedef struct tofg_valid_out:
+        const uint8_t *sat
+        const double *sigma_scale
+        const double *refl_coef
+        double min_snr
+        double min_amplitude
+        double max_sigma
+        double max_residual
+        double min_reflectance
+        double max_range
+        double max_reflectance
+        double *snr
+        double *sigma
+        double *refl
+        uint8_t *flags
+        const double *offset
+        double black
+        double pre
+        double var_dsnu
+        double fix_dsnu
+        double prnu
+        double delay_var
     ctypedef struct tofg_unwrap_out:
         const double *freqs
         const double *weights
@@ -1194,6 +1216,7 @@ cdef extern from "tof_guided.h" nogil:
         int32_t *wraps
         double *phase
         double *amp
+        const tofg_valid_out *valid
     int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const float *col,
                           const uint8_t *use, Py_ssize_t F, Py_ssize_t R, Py_ssize_t C,
                           const int64_t *row_px, const int64_t *col_px, Py_ssize_t reach_r,
@@ -1350,16 +1373,28 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
                  const double[::1] freqs=None, const double[::1] weights=None,
                  double max_range=0.0, double[::1] depth=None, double[::1] residual=None,
                  int32_t[::1] wraps=None, double[:, ::1] phase=None, double[:, ::1] amp=None,
-                 Py_ssize_t strip=0, double[::1] count=None):
+                 Py_ssize_t strip=0, double[::1] count=None, const uint8_t[::1] sat=None,
+                 const double[::1] sigma_scale=None, const double[::1] refl_coef=None,
+                 const double[::1] limits=None, double[::1] snr=None, double[::1] sigma=None,
+                 double[::1] refl=None, uint8_t[::1] flags=None,
+                 const double[:, ::1] offset=None, const double[::1] fixed=None):
     """The guided denoise: the four passes of tofg_pass (rows, columns, rows guided by the
     columns' output, columns) fused strip by strip; the last pass's outputs, bit for bit.
     With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
     unwrapped strip by strip (tof_depth_iq, bit for bit) instead of stored in out_re, out_im
     (then None); strip: grid rows per strip (0: the kernel's default); count (N,), when
-    given, takes n_eff in double (out_neff may then be None); col as tofg_pass's. Returns
-    False when a mean is not finite (RGBZ_EDOMAIN), True otherwise."""
+    given, takes n_eff in double (out_neff may then be None); col as tofg_pass's. With flags
+    given (and depth, count, sat, sigma_scale, refl_coef, snr, sigma, refl, and limits =
+    (min_snr, min_amplitude, max_sigma, max_residual, min_reflectance, max_range,
+    max_reflectance)), each unwrapped row's validity is made as tofg_validity's (bit for bit),
+    with delta = tof_fixed_pattern(phase, amp, offset, count, sigma_scale, black, pre,
+    var_dsnu, fix_dsnu, prnu, shared=True) + delay_var / max(count, 1) when offset (F, N) is
+    given and fixed = (black, pre, var_dsnu, fix_dsnu, prnu, delay_var). Returns False when a
+    mean is not finite (RGBZ_EDOMAIN), True otherwise."""
     cdef int status
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
+    cdef Py_ssize_t nf = zr.shape[0]
+    cdef tofg_valid_out vo
     if col.shape[0] not in (3, 4) or col.shape[1] != R * C:
         raise ValueError(f"col: expected (3, {R * C}) or (4, {R * C}), got "
                          f"{(col.shape[0], col.shape[1])}")
@@ -1382,7 +1417,41 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
         uw.wraps = &wraps[0]
         uw.phase = &phase[0, 0]
         uw.amp = &amp[0, 0]
+        uw.valid = NULL
         puw = &uw
+        if flags is not None:
+            if count is None or sat is None or sigma_scale is None or refl_coef is None \
+                    or limits is None or snr is None or sigma is None or refl is None:
+                raise TypeError("tofg_denoise: flags needs count, sat, sigma_scale, "
+                                "refl_coef, limits, snr, sigma and refl")
+            for n in (sat.shape[0], snr.shape[0], sigma.shape[0], refl.shape[0],
+                      flags.shape[0]):
+                if n != R * C:
+                    raise ValueError(f"tofg_denoise: expected {R * C} measurements, got {n}")
+            if sigma_scale.shape[0] != nf or refl_coef.shape[0] != nf or limits.shape[0] != 7:
+                raise ValueError("tofg_denoise: expected sigma_scale and refl_coef of F "
+                                 "values, limits of 7")
+            vo.sat = &sat[0]
+            vo.sigma_scale = &sigma_scale[0]
+            vo.refl_coef = &refl_coef[0]
+            vo.min_snr, vo.min_amplitude, vo.max_sigma = limits[0], limits[1], limits[2]
+            vo.max_residual, vo.min_reflectance = limits[3], limits[4]
+            vo.max_range, vo.max_reflectance = limits[5], limits[6]
+            vo.snr = &snr[0]
+            vo.sigma = &sigma[0]
+            vo.refl = &refl[0]
+            vo.flags = &flags[0]
+            vo.offset = NULL
+            vo.black = vo.pre = vo.var_dsnu = vo.fix_dsnu = vo.prnu = vo.delay_var = 0.0
+            if offset is not None:
+                if offset.shape[0] != nf or offset.shape[1] != R * C or fixed is None \
+                        or fixed.shape[0] != 6:
+                    raise ValueError(f"tofg_denoise: expected offset ({nf}, {R * C}) and "
+                                     "fixed of 6 values")
+                vo.offset = &offset[0, 0]
+                vo.black, vo.pre, vo.var_dsnu = fixed[0], fixed[1], fixed[2]
+                vo.fix_dsnu, vo.prnu, vo.delay_var = fixed[3], fixed[4], fixed[5]
+            uw.valid = &vo
     else:
         o_r = &out_re[0, 0]
         o_i = &out_im[0, 0]

@@ -308,6 +308,86 @@ def test_guided_denoise_unwraps_as_tof_depth_iq(F, strip, max_range, order, weig
         np.testing.assert_array_equal(a, b)
 
 
+@pytest.mark.parametrize("uneven", [False, True])
+@pytest.mark.parametrize("fixed", ["none", "pattern", "pattern+delay"])
+def test_guided_denoise_makes_the_validity_of_the_kernels_after_it(uneven, fixed):
+    """With flags given, tofg_denoise makes each unwrapped row's snr, sigma, reflectance and
+    bits as tofg_validity does after it, with the fixed pattern's correction (offset given)
+    as tof_fixed_pattern (shared) plus delay_var / max(count, 1): flags, snr and reflectance
+    bit for bit; sigma bit for bit on uneven grid lines (the strips, which take the cosines
+    from the phases as tof_fixed_pattern does), within 1e-12 on even ones (the sliding rows
+    take them from the means, I / (2 amp), a few ulps from the polynomial of the phase)."""
+    R, C, F = 60, 70, 3
+    zr, zi, v, col, use = _planes(R, C, F, seed=5)
+    N = R * C
+    rows = np.arange(R, dtype=np.int64) * 2
+    cols = np.arange(C, dtype=np.int64) * 2
+    if uneven:
+        cols[C // 2:] += 1                      # not evenly spaced: the strips' path
+    rng = np.random.default_rng(6)
+    f = np.array([80e6, 100e6, 120e6])
+    w = np.ones(F)
+    sat = (rng.random(N) < 0.03).astype(np.uint8)
+    scale, coef = rng.uniform(1e-5, 1e-4, F), rng.uniform(1e-3, 1e-2, F)
+    limits = np.array([4.0, 110.0, 0.015, 0.15, 0.001, 7.49, 33.8])
+    offset = rng.uniform(200.0, 900.0, (F, N))
+    noise = np.array([64.0, 1.3, 4.0, 4.0, 0.01, 2e-5 if fixed == "pattern+delay" else 0.0])
+    args = (zr, zi, v, col, use, rows, cols, 5, 5, 10, 0.125, 0.02)
+    got = [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)), np.empty((F, N))]
+    var, count = np.empty(N, np.float32), np.empty(N)
+    snr, sigma, refl, flags = np.empty(N), np.empty(N), np.empty(N), np.empty(N, np.uint8)
+    pattern = fixed != "none"
+    assert _kernels.tofg_denoise(*args, None, None, var, None, 2, f, w, 7.49, *got,
+                                 count=count, sat=sat, sigma_scale=scale, refl_coef=coef,
+                                 limits=limits, snr=snr, sigma=sigma, refl=refl, flags=flags,
+                                 offset=offset if pattern else None,
+                                 fixed=noise if pattern else None)
+    depth, residual, _, phase, amp = got
+    delta = None
+    if pattern:
+        delta = np.empty(N)
+        _kernels.tof_fixed_pattern(phase, amp, offset, count, scale, *noise[:5], True, delta, 2)
+        delta += noise[5] / np.maximum(count, 1.0)
+    want = [np.empty(N), np.empty(N), np.empty(N), np.empty(N, np.uint8)]
+    _kernels.tofg_validity(amp, var, depth, residual, sat, scale, coef, *limits[:6], *want, 2,
+                           delta, limits[6])
+    np.testing.assert_array_equal(flags, want[3])
+    np.testing.assert_array_equal(snr, want[0])
+    np.testing.assert_array_equal(refl, want[2])
+    if uneven or not pattern:
+        np.testing.assert_array_equal(sigma, want[1])
+    else:
+        np.testing.assert_allclose(sigma, want[1], rtol=1e-12, atol=0)
+    assert len(np.unique(flags)) > 3 and (flags == 0).sum() > N // 10     # every kind of bit
+    with pytest.raises(TypeError, match="flags needs"):
+        _kernels.tofg_denoise(*args, None, None, var, None, 2, f, w, 7.49, *got, count=count,
+                              flags=flags)
+    with pytest.raises(ValueError, match="offset"):
+        _kernels.tofg_denoise(*args, None, None, var, None, 2, f, w, 7.49, *got, count=count,
+                              sat=sat, sigma_scale=scale, refl_coef=coef, limits=limits,
+                              snr=snr, sigma=sigma, refl=refl, flags=flags,
+                              offset=offset[:2], fixed=noise)
+
+
+def test_validity_snr_at_zero_and_infinite_noise():
+    """The least 2 a / sd over the frequencies in one division is the per-frequency minimum
+    bit for bit, and a quotient that is NaN (0 / 0, inf / inf, a NaN variance) counts as not
+    there (snr inf when every one is), as the per-frequency loop had it."""
+    amp = np.array([[0.0, 0.0, 3.0, np.inf, np.inf, 2.0, 1e-300, 7.0],
+                    [0.0, 5.0, 0.0, np.inf, 4.0, np.nan, 1e-300, 1e300]])
+    var = np.array([0.0, 0.0, 0.0, np.inf, np.inf, 2.0, 1e-30, np.nan], np.float32)
+    N = amp.shape[1]
+    out = [np.empty(N), np.empty(N), np.empty(N), np.empty(N, np.uint8)]
+    z = np.zeros(N)
+    _kernels.tofg_validity(amp, var, z + 1.0, z, z.astype(np.uint8), np.ones(2), np.ones(2),
+                           4.0, 0.0, -1.0, 1.0, 0.0, 7.49, *out, 1)
+    sd = np.sqrt(var.astype(np.float64))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = 2.0 * amp / sd[None]
+    want = np.where(np.isnan(q), np.inf, q).min(axis=0)
+    np.testing.assert_array_equal(out[0], want)
+
+
 def test_validity_matches_numpy():
     rng = np.random.default_rng(4)
     N, F = 2000, 3

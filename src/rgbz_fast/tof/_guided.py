@@ -47,8 +47,8 @@ from .. import _kernels
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
-from ._noise import (collected_scale, dark_noise, delay_fpn_variance, fixed_pattern_delta,
-                     prnu_gain)
+from ._noise import (collected_scale, dark_noise, delay_fpn_variance, fixed_pattern_args,
+                     fixed_pattern_delta, prnu_gain)
 from ._validity import (FLAG_FLYING, FLAG_LOW_SIGNAL, FLAG_OUT_OF_RANGE, FLAG_RESOLVED,
                         FLAG_SATURATED, radiometry_coefficients)
 
@@ -312,9 +312,17 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # the four passes (rows, columns, rows guided by the columns' output, columns) in one C
     # call, row by row through rings of a few rows: no intermediate plane of the whole frame;
     # without a calibration (whose cyclic-error correction acts on the phases) the means are
-    # unwrapped there as they are made
+    # unwrapped there as they are made, and each unwrapped row's validity (with the fixed
+    # pattern's correction of sigma) is made while the row is in the cache: the same values
+    # as tofg_validity and tof_fixed_pattern after the call, bit for bit (tests/test_tof_guided)
     # n_eff comes in count's public dtype, float64, from the kernel
     var, count = np.empty(N, np.float32), np.empty(N)
+    snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
+    flags = np.empty(N, np.uint8)
+    sigma_scale, refl_coef = _radiometry(tof, f)
+    limits = np.array([p.min_snr, p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
+                       p.max_residual, p.min_reflectance, max_range,
+                       np.inf if p.max_reflectance is None else p.max_reflectance], np.float64)
     args = (zr, zi, v, colp, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
             inv2hc2)
     if cal is None:
@@ -323,27 +331,27 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
         if not _kernels.tofg_denoise(*args, None, None, var, None, nthreads,
                                      np.ascontiguousarray(f, np.float64),
                                      np.ascontiguousarray(w, np.float64), max_range, depth,
-                                     residual, wraps, phase, amp, count=count):
+                                     residual, wraps, phase, amp, count=count, sat=sat,
+                                     sigma_scale=sigma_scale, refl_coef=refl_coef,
+                                     limits=limits, snr=snr, sigma=sigma, refl=refl,
+                                     flags=flags, offset=offset,
+                                     fixed=fixed_pattern_args(
+                                         sensor, None, delay_fpn_variance(sensor, None))):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
     else:
         mr, mi = np.empty((F, N)), np.empty((F, N))
         _kernels.tofg_denoise(*args, mr, mi, var, None, nthreads, count=count)
         depth, residual, wraps, phase, amp = unwrap_iq(mr, mi)
-    snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
-    flags = np.empty(N, np.uint8)
-    sigma_scale, refl_coef = _radiometry(tof, f)
-    # the fixed pattern acts on the phasors in the taps' own frame (before the calibration
-    # turned them); its correlation across the frequencies corrects sigma
-    fp_phase = phase if cal is None else \
-        np.arctan2(mi, mr) + layout.to_grid(cal.deviations, 0.0)
-    delta = fixed_pattern_delta(fp_phase, amp, offset, count, sensor, sigma_scale, shared=True,
-                                dark_noise=dark_noise(cal),
-                                delay_var=delay_fpn_variance(sensor, cal), workers=nthreads)
-    _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef, p.min_snr,
-                           p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
-                           p.max_residual, p.min_reflectance, max_range, snr, sigma, refl,
-                           flags, nthreads, delta,
-                           np.inf if p.max_reflectance is None else p.max_reflectance)
+        # the fixed pattern acts on the phasors in the taps' own frame (before the
+        # calibration turned them); its correlation across the frequencies corrects sigma
+        delta = fixed_pattern_delta(np.arctan2(mi, mr) + layout.to_grid(cal.deviations, 0.0),
+                                    amp, offset, count, sensor, sigma_scale, shared=True,
+                                    dark_noise=dark_noise(cal),
+                                    delay_var=delay_fpn_variance(sensor, cal),
+                                    workers=nthreads)
+        _kernels.tofg_validity(amp, var, depth, residual, sat, sigma_scale, refl_coef,
+                               *limits[:6], snr, sigma, refl, flags, nthreads, delta,
+                               limits[6])
     measured = depth
     if p.flying_step is not None:
         depth = guided_flags(measured, sigma, flags, layout, col, cells,

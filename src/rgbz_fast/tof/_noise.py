@@ -12,7 +12,7 @@ from .._sensors import SPEED_OF_LIGHT
 from .._validate import kernel_threads
 
 __all__ = ["tap_variance", "fixed_pattern_delta", "collected_scale", "prnu_gain", "dark_noise",
-           "delay_fpn_variance", "NOISE_MODEL"]
+           "delay_fpn_variance", "fixed_pattern_args", "NOISE_MODEL"]
 
 #: The revision of the ISP's noise model (``sigma``): caches of depth results hold it, so
 #: that a result of an earlier model is not served (2: the fixed pattern correlated across
@@ -98,6 +98,18 @@ def delay_fpn_variance(sensor, calibration):
     return (SPEED_OF_LIGHT * float(sensor.delay_fpn_ps) * 1e-12 / 2.0) ** 2
 
 
+def fixed_pattern_args(sensor, dark_noise=None, delay_var=0.0):
+    """The sensor's numbers in :func:`fixed_pattern_delta`'s C pass: (black level, the
+    collected scale before an ambient suppression, the DSNU variance, the fixed offset's
+    variance (the DSNU's, or a dark frame's own error), PRNU, ``delay_var``) as float64, the
+    ``fixed`` argument of the guided denoise, which makes the correction row by row."""
+    k = float(sensor.system_gain)
+    var_dsnu = k * k * float(sensor.dsnu) ** 2
+    return np.array([float(sensor.black_level), collected_scale(sensor), var_dsnu,
+                     var_dsnu if dark_noise is None else float(dark_noise), float(sensor.prnu),
+                     float(delay_var)], np.float64)
+
+
 def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, shared=False,
                         dark_noise=None, delay_var=0.0, workers=1):
     """The correction of the depth variance (m^2) for the fixed-pattern noise's correlation
@@ -132,8 +144,7 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
     ``max(count, 1)``. One C pass (csrc/tof_filter.c, ``rgbz_tof_fixed_pattern``);
     tests/_reference/tof.py holds its NumPy reference.
     """
-    k = float(sensor.system_gain)
-    var_dsnu = k * k * float(sensor.dsnu) ** 2
+    black, pre, var_dsnu, fix_dsnu, prnu, _ = fixed_pattern_args(sensor, dark_noise)
     ph = np.ascontiguousarray(phase, np.float64)
     if ph.ndim != 2 or not 1 <= ph.shape[0] <= 16:
         raise ValueError(f"phase: expected (F, n) with 1 <= F <= 16, got shape {ph.shape}")
@@ -141,11 +152,9 @@ def fixed_pattern_delta(phase, amp, offset, count, sensor, sigma_scale, *, share
     cnt = None if count is None else np.ascontiguousarray(count, np.float64)
     _kernels.tof_fixed_pattern(ph, np.ascontiguousarray(amp, np.float64),
                                np.ascontiguousarray(offset, np.float64), cnt,
-                               np.ascontiguousarray(sigma_scale, np.float64),
-                               float(sensor.black_level), collected_scale(sensor), var_dsnu,
-                               var_dsnu if dark_noise is None else float(dark_noise),
-                               float(sensor.prnu),
-                               bool(shared), out, kernel_threads(workers, out.size))
+                               np.ascontiguousarray(sigma_scale, np.float64), black, pre,
+                               var_dsnu, fix_dsnu, prnu, bool(shared), out,
+                               kernel_threads(workers, out.size))
     if delay_var:
         m = np.ones(out.size) if cnt is None else np.maximum(cnt, 1.0)
         out += delay_var / m
