@@ -1198,6 +1198,12 @@ static void tofg_valid_row(const tofg_unwrap_out *uw, const float *var, const do
     }
 }
 
+/* the prepare stage of [m0, m0 + n) for q's element type (tof_guided.template.h's
+   tofg_prepare_span; defined with the instances at the end) */
+static void tofg_prep_span(const tofg_prep_in *q, ptrdiff_t F, ptrdiff_t N, ptrdiff_t m0,
+                           ptrdiff_t n, float *zr, float *zi, ptrdiff_t os, float *v,
+                           uint8_t *hit, double *offset, float *phi);
+
 /* ---------------------------------------------------------------- the sliding pipeline */
 /* The four passes of rgbz_tofg_denoise row by row on evenly spaced grid lines. The frame is
    cut into tiles of output columns [c0, c1) (at most TOFG_VIEW of them) and bands of output
@@ -1226,6 +1232,7 @@ typedef struct {
     float *ov, *on;
     double *on64;
     const tofg_unwrap_out *uw;
+    const tofg_prep_in *prep;     /* the prepare stage made here (NULL: zr, zi, v read) */
     size_t nfloat, ndouble;       /* one thread's buffers */
     int fp;                       /* col's fourth plane: the fixed-pattern shares (tofg_xp) */
 } tofg_slide;
@@ -1281,11 +1288,46 @@ static float *tofg_slide_rawrow(const tofg_slide *S, const tofg_slide_buf *b, pt
     return b->raw + (r % S->K) * (2 * S->F + 1) * S->W;
 }
 
-/* grid row r of the frame's raw phasors, variance and use in the tile's view into the padded
-   row buffers of its ring slot (the first row pass reads them at r, the second H rows later) */
-static void tofg_slide_raw(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
-                           ptrdiff_t r)
+/* grid row r of the taps through the prepare stage in the tile's view into the padded row
+   buffers of its ring slot: the phasors, variance and the gates (use, and no tap at full
+   scale), the fixed-pattern shares into col's fourth plane's ring row (with S->fp); offset
+   and sat written where the row is the band's (own) and the column the tile's */
+static void tofg_slide_prep(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
+                            ptrdiff_t r, int own)
 {
+    const ptrdiff_t F = S->F, W = S->W, N = S->N, K = S->K, o = r * S->C + T->v0;
+    const ptrdiff_t pd = S->pad, KW = K * W;
+    float *raw = tofg_slide_rawrow(S, b, r), *gate = b->gate + (r % K) * W;
+    float *phi = S->fp ? b->colr + 3 * KW + (r % K) * W : NULL;
+    /* the view's columns [0, cv) in three parts: before the tile's, the tile's, after */
+    const ptrdiff_t cut[4] = {0, T->c0 - T->v0, T->c1 - T->v0, T->cv};
+    uint8_t hit[256];
+    for (int part = 0; part < 3; part++) {
+        const int mine = own && part == 1;
+        for (ptrdiff_t c0 = cut[part]; c0 < cut[part + 1]; c0 += 256) {
+            const ptrdiff_t n = cut[part + 1] - c0 < 256 ? cut[part + 1] - c0 : 256;
+            const ptrdiff_t x = pd + c0, m = o + c0;
+            memset(hit, 0, (size_t)n);
+            tofg_prep_span(S->prep, F, N, m, n, raw + x, raw + F * W + x, W, raw + 2 * F * W + x,
+                           hit, mine ? S->prep->offset : NULL, phi ? phi + x : NULL);
+            for (ptrdiff_t c = 0; c < n; c++)
+                gate[x + c] = S->use[m + c] != 0 && !hit[c] ? 1.0f : 0.0f;
+            if (mine)
+                for (ptrdiff_t c = 0; c < n; c++) S->prep->sat[m + c] |= hit[c];
+        }
+    }
+}
+
+/* grid row r of the frame's raw phasors, variance and use in the tile's view into the padded
+   row buffers of its ring slot (the first row pass reads them at r, the second H rows later);
+   with S->prep, made from the taps (tofg_slide_prep; own: the row is the band's) */
+static void tofg_slide_raw(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
+                           ptrdiff_t r, int own)
+{
+    if (S->prep) {
+        tofg_slide_prep(S, b, T, r, own);
+        return;
+    }
     const ptrdiff_t F = S->F, W = S->W, N = S->N, o = r * S->C + T->v0, pd = S->pad;
     const size_t n = (size_t)T->cv * sizeof(float);
     float *raw = tofg_slide_rawrow(S, b, r), *gate = b->gate + (r % S->K) * W;
@@ -1356,14 +1398,16 @@ static void tofg_slide_col(const tofg_slide *S, const tofg_pass_args *p, const f
 }
 
 /* the gates of ring row r of a column pass's data (n_eff in neff) over the view into g, n
-   (tofg_gates) */
-static void tofg_slide_gates(const tofg_slide *S, const tofg_tile *T, const float *neff,
-                             float *g, float *n, ptrdiff_t r)
+   (tofg_gates), the use of its measurements from the raw row's gates (in the ring since the
+   first row pass: r is at most 2H rows back) */
+static void tofg_slide_gates(const tofg_slide *S, const tofg_slide_buf *b, const tofg_tile *T,
+                             const float *neff, float *g, float *n, ptrdiff_t r)
 {
-    const ptrdiff_t o = (r % S->K) * S->W + S->pad, m = r * S->C + T->v0;
+    const ptrdiff_t o = (r % S->K) * S->W + S->pad;
+    const float *use = b->gate;
     for (ptrdiff_t c = 0; c < T->cv; c++) {
         const float nn = neff[o + c];
-        g[o + c] = S->use[m + c] != 0 && nn > 0.0f ? 1.0f : 0.0f;
+        g[o + c] = use[o + c] != 0.0f && nn > 0.0f ? 1.0f : 0.0f;
         n[o + c] = 1.0f / (nn > 0.0f ? nn : 1.0f);
     }
 }
@@ -1423,16 +1467,16 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
     for (ptrdiff_t t = lo1; t < hi1 + 2 * H; t++) {
         if (t < hi1) {                     /* 1: row t of the raw phasors guided by itself */
             const ptrdiff_t so = (t % K) * W;
-            for (int k = 0; k < 3 + S->fp; k++)
+            for (int k = 0; k < 3 + (S->fp && !S->prep); k++)
                 memcpy(b->colr + k * KW + so + pd, S->col + k * N + t * C + T->v0,
                        (size_t)T->cv * sizeof(float));
-            tofg_slide_raw(S, b, T, t);
+            tofg_slide_raw(S, b, T, t, t >= b0 && t < b1);
             const float *raw = tofg_slide_rawrow(S, b, t);
             const tofg_pass_args p1 = tofg_slide_rowargs(S, b, t, raw, raw + F * W,
                                                          raw + 2 * F * W, W, b->colr + so,
                                                          b->r1 + so);
             tofg_slide_row(S, &p1, b->E, pd, nv);
-            tofg_slide_gates(S, T, b->r1 + (2 * F + 1) * KW, b->g2, b->n2, t);
+            tofg_slide_gates(S, b, T, b->r1 + (2 * F + 1) * KW, b->g2, b->n2, t);
         }
         const ptrdiff_t q = t - H;         /* 2 (over the view) and 3 (the tile) at row q */
         if (q >= lp2 && q < hi2) tofg_slide_colpairs(S, &p2, b->pr2, q, pd, nv);
@@ -1445,7 +1489,7 @@ static int tofg_slide_band(const tofg_slide *S, const tofg_slide_buf *b, const t
                                                          b->gd + 2 * F * KW + so, KW,
                                                          b->colr + so, b->r3 + so);
             tofg_slide_row(S, &p3, b->E, xo, no);
-            tofg_slide_gates(S, T, b->r3 + (2 * F + 1) * KW, b->g4, b->n4, q);
+            tofg_slide_gates(S, b, T, b->r3 + (2 * F + 1) * KW, b->g4, b->n4, q);
         }
         const ptrdiff_t s = t - 2 * H;     /* 4 (the tile) at row s */
         if (s >= lp4 && s < b1) tofg_slide_colpairs(S, &p4, b->pr4, s, xo, no);
@@ -1468,9 +1512,13 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
                       double *or64, double *oi64, float *ov, float *on, double *on64,
-                      const tofg_unwrap_out *uw, ptrdiff_t strip, int fixed, int workers)
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int fixed,
+                      const tofg_prep_in *prep, int workers)
 {
-    if (!zr || !zi || !v || !col || !use || !row_px || !col_px || !ov || (!on && !on64)
+    if (prep && (!prep->taps || !prep->sat || !prep->offset))
+        return RGBZ_EINVAL;
+    if ((!prep && (!zr || !zi || !v)) || !col || !use || !row_px || !col_px || !ov
+        || (!on && !on64)
         || (!uw && (!or64 || !oi64)) || F < 1 || F > RGBZ_TOF_MAX_FREQS || R < 0 || C < 0
         || reach_r < 0 || reach_c < 0 || radius_px < 0 || !(inv2h2 >= 0.0)
         || !(inv2hc2 >= 0.0))
@@ -1486,6 +1534,31 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     const int nth = rgbz_threads(workers);
     const tofg_plan qr = tofg_plan_of(col_px, C, 1, F, C, reach_c, radius_px);
     const tofg_plan qc = tofg_plan_of(row_px, R, 0, F, C, reach_r, radius_px);
+    if (prep && (!qr.fast || !qc.fast)) {
+        /* the strips read whole planes: the prepare stage over the frame first, then the
+           denoise of its planes (use without the taps at full scale, col's fourth plane the
+           fixed-pattern shares) */
+        const ptrdiff_t N = R * C, np = fixed ? 4 : 3;
+        float *z = malloc((size_t)(2 * F + 1 + np) * (size_t)N * sizeof *z);
+        uint8_t *u = malloc((size_t)N);
+        int st = z && u ? RGBZ_OK : RGBZ_ENOMEM;
+        if (st == RGBZ_OK) {
+            float *pz = z + 2 * F * N, *pc = pz + N;
+            memcpy(pc, col, (size_t)(3 * N) * sizeof *pc);
+            st = rgbz_tofg_prepare(prep->in_type, prep->taps, F, N, prep->gain, prep->black,
+                                   prep->supp, prep->const_var, prep->prnu, prep->white, z,
+                                   z + F * N, pz, prep->sat, prep->offset, prep->fixed_var,
+                                   fixed ? pc + 3 * N : NULL, nth);
+            for (ptrdiff_t n = 0; n < N; n++) u[n] = use[n] && !prep->sat[n];
+            if (st == RGBZ_OK)
+                st = rgbz_tofg_denoise(z, z + F * N, pz, pc, u, F, R, C, row_px, col_px,
+                                       reach_r, reach_c, radius_px, inv2h2, inv2hc2, or64,
+                                       oi64, ov, on, on64, uw, strip, fixed, NULL, workers);
+        }
+        free(z);
+        free(u);
+        return st;
+    }
     if (!qr.fast || !qc.fast) {
         /* the strips write n_eff in float: into on, or a buffer widened into on64 */
         float *o = on ? on : malloc((size_t)(R * C) * sizeof *o);
@@ -1545,6 +1618,7 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
     S.on = on;
     S.on64 = on64;
     S.uw = uw;
+    S.prep = prep;
     S.fp = fixed != 0;
     (void)tofg_slide_buf_at(&S, NULL);
     const size_t nbytes = S.nfloat * sizeof(float) + S.ndouble * sizeof(double);
@@ -1821,11 +1895,15 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
                              2.5, contrast, side, unflag, flags, depth_out};
     uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
     if (!code) return RGBZ_ENOMEM;
-    memcpy(depth_out, depth, (size_t)(R * C) * sizeof *depth_out);
     const int nth = rgbz_threads(workers);
     (void)nth;
+    /* the copy of the depths row by row with the hits: one thread's copy of a fresh 24 MB
+       array (its pages zeroed as it went) took 3-4 ms of a 3 M-measurement call */
     RGBZ_PARALLEL_FOR
-    for (ptrdiff_t r = 0; r < R; r++) tofg_hit_row(&p, r, code);
+    for (ptrdiff_t r = 0; r < R; r++) {
+        memcpy(depth_out + r * C, depth + r * C, (size_t)C * sizeof *depth_out);
+        tofg_hit_row(&p, r, code);
+    }
     int bad = 0;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(nth) reduction(|:bad)
@@ -2187,6 +2265,16 @@ int rgbz_tofg_prepare(int in_type, const void *taps, ptrdiff_t F, ptrdiff_t N, d
                                      workers)
     RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, TOFG_PREPARE_, return RGBZ_EINVAL)
 #undef TOFG_PREPARE_
+}
+
+static void tofg_prep_span(const tofg_prep_in *q, ptrdiff_t F, ptrdiff_t N, ptrdiff_t m0,
+                           ptrdiff_t n, float *zr, float *zi, ptrdiff_t os, float *v,
+                           uint8_t *hit, double *offset, float *phi)
+{
+#define TOFG_PREP_SPAN_(s, T)                                                                \
+    RGBZ_CAT(tofg_prepare_span, s)(q, F, N, m0, n, zr, zi, os, v, hit, offset, phi)
+    RGBZ_SWITCH_TYPE(q->in_type, RGBZ_ELEMENT_TYPES, TOFG_PREP_SPAN_, break)
+#undef TOFG_PREP_SPAN_
 }
 
 int rgbz_tofg_colour(int in_type, const void *guide, ptrdiff_t H, ptrdiff_t W,

@@ -95,6 +95,20 @@ typedef struct {
     const tofg_valid_out *valid;
 } tofg_unwrap_out;
 
+/* The prepare stage (rgbz_tofg_prepare's arguments) made inside the guided denoise, row by row
+   as its first pass reads them: the taps (F, 4, N) of in_type, and sat (N,) |= a tap at full
+   scale and offset (F, N) written (each thread the rows and columns whose outputs it makes);
+   zr, zi and v are then not read (NULL) and the denoise's use (N,) is taken before the taps'
+   full scale (the stage's hits leave it out where they are); col's fourth plane (fixed) is
+   made with them. */
+typedef struct {
+    int in_type;
+    const void *taps;
+    double gain, black, supp, const_var, prnu, white, fixed_var;
+    uint8_t *sat;
+    double *offset;
+} tofg_prep_in;
+
 /* The guided denoise, the four passes of rgbz_tofg_pass fused: a row pass of the raw
    phasors zr, zi (F, N) with variance v (N,) guided by themselves, a column pass of it guided
    by itself (the guide of the second round), a row pass of the raw phasors guided by that,
@@ -117,7 +131,8 @@ int rgbz_tofg_denoise(const float *zr, const float *zi, const float *v, const fl
                       const int64_t *row_px, const int64_t *col_px, ptrdiff_t reach_r,
                       ptrdiff_t reach_c, int64_t radius_px, double inv2h2, double inv2hc2,
                       double *or64, double *oi64, float *ov, float *on, double *on64,
-                      const tofg_unwrap_out *uw, ptrdiff_t strip, int fixed, int workers);
+                      const tofg_unwrap_out *uw, ptrdiff_t strip, int fixed,
+                      const tofg_prep_in *prep, int workers);
 
 /* snr, sigma, reflectance and the validity bits (1 saturated, 2 low signal, 4 inconsistent,
    16 out of range) of every measurement from amp (F, N), the component variance var (N,),

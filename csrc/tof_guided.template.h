@@ -15,47 +15,60 @@
 #error "tof_guided.template.h: #define IS (the suffix of IN_T: u8, u16, f32 or f64)"
 #endif
 
-/* the measurements [b0, b0 + nb) (nb <= 256) of the prepare stage: a clone per instruction
-   set, so that the loops over the measurements vectorise at its width */
+/* nb <= 256 measurements of the prepare stage, from taps (F, 4, planes N apart) at the first
+   one: zr, zi (F planes os apart), v, sat (|=), phi (NULL: not made) at the first one,
+   offset (F planes N apart; NULL: not stored) too. A clone per instruction set, so that the
+   loops over the measurements vectorise at its width */
 RGBZ_CLONES_512 static void RGBZ_CAT(tofg_prepare_block, IS)(
-    const IN_T *restrict taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t b0, ptrdiff_t nb, double k,
+    const IN_T *restrict taps, ptrdiff_t F, ptrdiff_t N, ptrdiff_t nb, double k,
     double black, double const_var, double prnu, double white, double inv_f,
-    float *restrict zr, float *restrict zi, float *restrict v, uint8_t *restrict sat,
-    double *restrict offset, double fixed_var, float *restrict phi)
+    float *restrict zr, float *restrict zi, ptrdiff_t os, float *restrict v,
+    uint8_t *restrict sat, double *restrict offset, double fixed_var, float *restrict phi)
 {
     double acc[256], fix[256];
     uint8_t hit[256];
     for (ptrdiff_t j = 0; j < nb; j++) { acc[j] = fix[j] = 0.0; hit[j] = 0; }
     for (ptrdiff_t f = 0; f < F; f++) {
-        const IN_T *A0 = taps + 4 * f * N + b0, *A1 = A0 + N, *A2 = A0 + 2 * N,
-                *A3 = A0 + 3 * N;
-        float *pr = zr + f * N + b0, *pi = zi + f * N + b0;
-        double *po = offset ? offset + f * N + b0 : NULL;
+        const IN_T *A0 = taps + 4 * f * N, *A1 = A0 + N, *A2 = A0 + 2 * N, *A3 = A0 + 3 * N;
+        float *pr = zr + f * os, *pi = zi + f * os;
+        double *po = offset ? offset + f * N : NULL;
         for (ptrdiff_t j = 0; j < nb; j++) {
-            const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
-            pr[j] = (float)(a0 - a2);
-            pi[j] = (float)(a3 - a1);
-            const double off = 0.25 * ((a0 + a1) + (a2 + a3));
+            double off, mx;
+            if (IN_IS_INT) {
+                /* integer taps (at most 16 bits): the differences, sums and the largest in
+                   int32 are exact, as in double, and take a quarter of the conversions */
+                const int32_t a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
+                pr[j] = (float)(a0 - a2);
+                pi[j] = (float)(a3 - a1);
+                off = 0.25 * (double)((a0 + a1) + (a2 + a3));
+                const int32_t m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
+                mx = (double)(m01 > m23 ? m01 : m23);
+            } else {
+                const double a0 = A0[j], a1 = A1[j], a2 = A2[j], a3 = A3[j];
+                pr[j] = (float)(a0 - a2);
+                pi[j] = (float)(a3 - a1);
+                off = 0.25 * ((a0 + a1) + (a2 + a3));
+                const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
+                mx = m01 > m23 ? m01 : m23;
+            }
             if (po) po[j] = off;
             double held = off - black;
             held = held > 0.0 ? held : 0.0;
             const double ph = prnu * held;
             acc[j] += k * held + const_var + ph * ph;
             fix[j] += fixed_var + ph * ph;
-            const double m01 = a0 > a1 ? a0 : a1, m23 = a2 > a3 ? a2 : a3;
-            const double mx = m01 > m23 ? m01 : m23;
             hit[j] |= (uint8_t)(mx >= white);
         }
     }
     for (ptrdiff_t j = 0; j < nb; j++) {
-        v[b0 + j] = (float)(acc[j] * inv_f);
-        sat[b0 + j] |= hit[j];
+        v[j] = (float)(acc[j] * inv_f);
+        sat[j] |= hit[j];
     }
     if (phi)            /* the fixed pattern's share of v: its DSNU and PRNU parts */
         for (ptrdiff_t j = 0; j < nb; j++)
             /* at most 0.99: S = (1 - phi) times the variances stays positive whatever a
                calibration file's dark noise says */
-            phi[b0 + j] = acc[j] > 0.0 ? (float)(fix[j] < 0.99 * acc[j] ? fix[j] / acc[j]
+            phi[j] = acc[j] > 0.0 ? (float)(fix[j] < 0.99 * acc[j] ? fix[j] / acc[j]
                                                   : 0.99) : 0.0f;
 }
 
@@ -73,10 +86,29 @@ static int RGBZ_CAT(tofg_prepare, IS)(const IN_T *taps, ptrdiff_t F, ptrdiff_t N
     (void)nth;
     RGBZ_PARALLEL_FOR
     for (ptrdiff_t b0 = 0; b0 < N; b0 += 256)
-        RGBZ_CAT(tofg_prepare_block, IS)(taps, F, N, b0, N - b0 < 256 ? N - b0 : 256, k, black,
-                                         const_var, prnu, white, inv_f, zr, zi, v, sat, offset,
-                                         fixed_var, phi);
+        RGBZ_CAT(tofg_prepare_block, IS)(taps + b0, F, N, N - b0 < 256 ? N - b0 : 256, k, black,
+                                         const_var, prnu, white, inv_f, zr + b0, zi + b0, N,
+                                         v + b0, sat + b0, offset ? offset + b0 : NULL,
+                                         fixed_var, phi ? phi + b0 : NULL);
     return RGBZ_OK;
+}
+
+/* the prepare stage of the measurements [m0, m0 + n) on the calling thread (tofg_prep_span
+   in tof_guided.c): zr, zi (planes os apart), v, hit (|= a tap at full scale), phi (NULL:
+   not made) from their first, offset (F, N) at m0 (NULL: not stored) */
+static void RGBZ_CAT(tofg_prepare_span, IS)(const tofg_prep_in *q, ptrdiff_t F, ptrdiff_t N,
+                                            ptrdiff_t m0, ptrdiff_t n, float *zr, float *zi,
+                                            ptrdiff_t os, float *v, uint8_t *hit,
+                                            double *offset, float *phi)
+{
+    const IN_T *taps = (const IN_T *)q->taps + m0;
+    const double inv_f = 2.0 / (double)F, k = q->gain * q->supp;
+    for (ptrdiff_t j = 0; j < n; j += 256)
+        RGBZ_CAT(tofg_prepare_block, IS)(taps + j, F, N, n - j < 256 ? n - j : 256, k, q->black,
+                                         q->const_var, q->prnu, q->white, inv_f, zr + j, zi + j,
+                                         os, v + j, hit + j,
+                                         offset ? offset + m0 + j : NULL, q->fixed_var,
+                                         phi ? phi + j : NULL);
 }
 
 /* the colours of the measurements [n0, n0 + C) of one grid row, whose Z pixels' top-left

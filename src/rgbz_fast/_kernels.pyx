@@ -1207,6 +1207,18 @@ cdef extern from "tof_guided.h" nogil:
         double fix_dsnu
         double prnu
         double delay_var
+    ctypedef struct tofg_prep_in:
+        int in_type
+        const void *taps
+        double gain
+        double black
+        double supp
+        double const_var
+        double prnu
+        double white
+        double fixed_var
+        uint8_t *sat
+        double *offset
     ctypedef struct tofg_unwrap_out:
         const double *freqs
         const double *weights
@@ -1223,7 +1235,7 @@ cdef extern from "tof_guided.h" nogil:
                           Py_ssize_t reach_c, int64_t radius_px, double inv2h2,
                           double inv2hc2, double *or64, double *oi64, float *ov, float *on,
                           double *on64, const tofg_unwrap_out *uw, Py_ssize_t strip,
-                          int fixed, int workers)
+                          int fixed, const tofg_prep_in *prep, int workers)
     int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
                            const double *residual, const uint8_t *sat, Py_ssize_t F,
                            Py_ssize_t N, const double *sigma_scale, const double *refl_coef,
@@ -1373,11 +1385,12 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
                  const double[::1] freqs=None, const double[::1] weights=None,
                  double max_range=0.0, double[::1] depth=None, double[::1] residual=None,
                  int32_t[::1] wraps=None, double[:, ::1] phase=None, double[:, ::1] amp=None,
-                 Py_ssize_t strip=0, double[::1] count=None, const uint8_t[::1] sat=None,
+                 Py_ssize_t strip=0, double[::1] count=None, uint8_t[::1] sat=None,
                  const double[::1] sigma_scale=None, const double[::1] refl_coef=None,
                  const double[::1] limits=None, double[::1] snr=None, double[::1] sigma=None,
                  double[::1] refl=None, uint8_t[::1] flags=None,
-                 const double[:, ::1] offset=None, const double[::1] fixed=None):
+                 double[:, ::1] offset=None, const double[::1] fixed=None, taps=None,
+                 const double[::1] prepare=None):
     """The guided denoise: the four passes of tofg_pass (rows, columns, rows guided by the
     columns' output, columns) fused strip by strip; the last pass's outputs, bit for bit.
     With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
@@ -1389,12 +1402,53 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
     max_reflectance)), each unwrapped row's validity is made as tofg_validity's (bit for bit),
     with delta = tof_fixed_pattern(phase, amp, offset, count, sigma_scale, black, pre,
     var_dsnu, fix_dsnu, prnu, shared=True) + delay_var / max(count, 1) when offset (F, N) is
-    given and fixed = (black, pre, var_dsnu, fix_dsnu, prnu, delay_var). Returns False when a
-    mean is not finite (RGBZ_EDOMAIN), True otherwise."""
+    given and fixed = (black, pre, var_dsnu, fix_dsnu, prnu, delay_var). With taps (F, 4, N)
+    of uint16, float32 or float64 given (and prepare = (gain, black, supp, const_var, prnu,
+    white, fixed_var), sat, offset), the prepare stage (tofg_prepare) is made inside, row by
+    row: zr, zi, v are not read (None), sat |= a tap at full scale and offset is written,
+    use is taken as before the stage (its hits are left out), and col's fourth plane, when
+    col has one, is the stage's phi. Returns False when a mean is not finite (RGBZ_EDOMAIN),
+    True otherwise."""
     cdef int status
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
-    cdef Py_ssize_t nf = zr.shape[0]
+    cdef Py_ssize_t nf
     cdef tofg_valid_out vo
+    cdef tofg_prep_in pi
+    cdef tofg_prep_in *ppi = NULL
+    cdef const uint16_t[:, :, ::1] t16
+    cdef const float[:, :, ::1] t32
+    cdef const double[:, :, ::1] t64
+    cdef const float *pzr = NULL
+    cdef const float *pzi = NULL
+    cdef const float *pv = NULL
+    if taps is not None:
+        import numpy as np
+        if prepare is None or sat is None or offset is None or prepare.shape[0] != 7:
+            raise TypeError("tofg_denoise: taps needs prepare (7 values), sat and offset")
+        if taps.dtype == np.uint16:
+            t16 = taps
+            pi.taps, pi.in_type, nf = &t16[0, 0, 0], RGBZ_T_U16, t16.shape[0]
+        elif taps.dtype == np.float32:
+            t32 = taps
+            pi.taps, pi.in_type, nf = &t32[0, 0, 0], RGBZ_T_F32, t32.shape[0]
+        elif taps.dtype == np.float64:
+            t64 = taps
+            pi.taps, pi.in_type, nf = &t64[0, 0, 0], RGBZ_T_F64, t64.shape[0]
+        else:
+            raise TypeError(f"taps: expected uint16, float32 or float64, got {taps.dtype}")
+        if taps.shape[1] != 4 or taps.shape[2] != R * C or sat.shape[0] != R * C \
+                or offset.shape[0] != nf or offset.shape[1] != R * C:
+            raise ValueError(f"tofg_denoise: expected taps (F, 4, {R * C}), sat ({R * C},) "
+                             f"and offset (F, {R * C})")
+        pi.gain, pi.black, pi.supp, pi.const_var = prepare[0], prepare[1], prepare[2], \
+            prepare[3]
+        pi.prnu, pi.white, pi.fixed_var = prepare[4], prepare[5], prepare[6]
+        pi.sat = &sat[0]
+        pi.offset = &offset[0, 0]
+        ppi = &pi
+    else:
+        nf = zr.shape[0]
+        pzr, pzi, pv = &zr[0, 0], &zi[0, 0], &v[0]
     if col.shape[0] not in (3, 4) or col.shape[1] != R * C:
         raise ValueError(f"col: expected (3, {R * C}) or (4, {R * C}), got "
                          f"{(col.shape[0], col.shape[1])}")
@@ -1456,10 +1510,10 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
         o_r = &out_re[0, 0]
         o_i = &out_im[0, 0]
     with nogil:
-        status = rgbz_tofg_denoise(&zr[0, 0], &zi[0, 0], &v[0], &col[0, 0], &use[0],
-                                   zr.shape[0], R, C, &row_px[0], &col_px[0], reach_r, reach_c,
-                                   radius_px, inv2h2, inv2hc2, o_r, o_i, &out_var[0],
-                                   o_n, o_n64, puw, strip, col.shape[0] == 4, workers)
+        status = rgbz_tofg_denoise(pzr, pzi, pv, &col[0, 0], &use[0], nf, R, C, &row_px[0],
+                                   &col_px[0], reach_r, reach_c, radius_px, inv2h2, inv2hc2,
+                                   o_r, o_i, &out_var[0], o_n, o_n64, puw, strip,
+                                   col.shape[0] == 4, ppi, workers)
     if status == RGBZ_EDOMAIN:
         return False
     _raise_for(status)

@@ -369,6 +369,76 @@ def test_guided_denoise_makes_the_validity_of_the_kernels_after_it(uneven, fixed
                               offset=offset[:2], fixed=noise)
 
 
+@pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
+@pytest.mark.parametrize("uneven,strip,fixed", [(False, 0, True), (False, 7, True),
+                                                (False, 0, False), (True, 0, True)])
+def test_guided_denoise_makes_the_prepare_stage_of_tofg_prepare(dtype, uneven, strip, fixed):
+    """With taps given, tofg_denoise makes the prepare stage itself, row by row: the same
+    outputs, sat (|= a tap at full scale) and offset as tofg_prepare then tofg_denoise of its
+    planes, bit for bit, with use taken before the stage, on the sliding rows (one band and
+    bands of 7 rows, whose rows beyond the band are made twice and written once) and on
+    uneven grid lines (the strips, after the stage over the frame)."""
+    R, C, F = 45, 70, 3
+    N = R * C
+    rng = np.random.default_rng(8)
+    rows = np.arange(R, dtype=np.int64) * 2
+    cols = np.arange(C, dtype=np.int64) * 2
+    if uneven:
+        cols[C // 2:] += 1
+    step = np.arange(C) >= C // 2
+    base = np.where(step, 900.0, 300.0)[None, :].repeat(R, 0).reshape(-1)
+    phase = np.array([0.4, 1.1, 2.0])[:, None, None] + np.array(
+        [0.0, np.pi / 2, np.pi, 1.5 * np.pi])[None, :, None]
+    taps = base[None, None] + 250.0 * np.cos(phase) + rng.normal(0, 15, (F, 4, N))
+    white = 1500.0
+    taps[:, 1, rng.integers(0, N, 40)] = white           # at full scale: left out
+    taps = np.clip(np.round(taps), 0, white).astype(dtype)
+    col = rng.normal(0, 0.7, (4 if fixed else 3, N)).astype(np.float32)
+    col[:3] += np.where(step, 5.0, 0.0).repeat(1)[None, :].repeat(R, 0).reshape(-1)[None]
+    sat0 = (rng.random(N) < 0.02).astype(np.uint8)
+    use = ((sat0 == 0) & (rng.random(N) > 0.03)).astype(np.uint8)
+    prep = np.array([0.8, 64.0, 1.0, 6.0, 0.01, white, 4.0])
+    f, w = np.array([80e6, 100e6, 120e6]), np.ones(F)
+
+    def outputs():
+        return [np.empty(N), np.empty(N), np.empty(N, np.int32), np.empty((F, N)),
+                np.empty((F, N)), np.empty(N, np.float32), np.empty(N)]
+
+    # the stages apart: tofg_prepare, use without its hits, the denoise of its planes
+    zr, zi = np.empty((F, N), np.float32), np.empty((F, N), np.float32)
+    v = np.empty(N, np.float32)
+    sat_w, off_w = sat0.copy(), np.empty((F, N))
+    col_w = col.copy()
+    _kernels.tofg_prepare(taps, *prep[:6], zr, zi, v, sat_w, off_w, 2, prep[6],
+                          col_w[3] if fixed else None)
+    use_w = (use & (sat_w == 0)).astype(np.uint8)
+    want = outputs()
+    assert _kernels.tofg_denoise(zr, zi, v, col_w, use_w, rows, cols, 5, 5, 10, 0.125, 0.02,
+                                 None, None, want[5], None, 2, f, w, 7.49, *want[:5],
+                                 strip=strip, count=want[6])
+    assert (sat_w != sat0).sum() > 20                   # the stage's hits are in the test
+    # the stage inside
+    sat_g, off_g = sat0.copy(), np.full((F, N), np.nan)
+    got = outputs()
+    assert _kernels.tofg_denoise(None, None, None, col.copy(), use, rows, cols, 5, 5, 10,
+                                 0.125, 0.02, None, None, got[5], None, 2, f, w, 7.49,
+                                 *got[:5], strip=strip, count=got[6], sat=sat_g,
+                                 offset=off_g, taps=taps, prepare=prep)
+    np.testing.assert_array_equal(sat_g, sat_w)
+    np.testing.assert_array_equal(off_g, off_w)
+    for a, b in zip(got, want):
+        np.testing.assert_array_equal(a, b)
+    with pytest.raises(TypeError, match="taps needs"):
+        _kernels.tofg_denoise(None, None, None, col, use, rows, cols, 5, 5, 10, 0.125, 0.02,
+                              None, None, got[5], None, 2, f, w, 7.49, *got[:5],
+                              count=got[6], taps=taps, prepare=prep)
+    with pytest.raises(TypeError, match="taps: expected"):
+        _kernels.tofg_denoise(None, None, None, col, use, rows, cols, 5, 5, 10, 0.125, 0.02,
+                              None, None, got[5], None, 2, f, w, 7.49, *got[:5],
+                              count=got[6], sat=sat_g, offset=off_g,
+                              taps=taps.astype(np.int32), prepare=prep)
+
+
 def test_validity_snr_at_zero_and_infinite_noise():
     """The least 2 a / sd over the frequencies in one division is the per-frequency minimum
     bit for bit, and a quotient that is NaN (0 / 0, inf / inf, a NaN variance) counts as not

@@ -276,8 +276,6 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     k = sensor.system_gain
     supp = collected_scale(sensor)
     const_var = k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + 1.0 / 12.0
-    zr, zi = np.empty((F, N), np.float32), np.empty((F, N), np.float32)
-    v = np.empty(N, np.float32)
     offset = np.empty((F, N))
     # the colours, and with a fixed pattern (DSNU, PRNU) each measurement's share of it in
     # its variance: the range kernel's distance then knows that pattern's one error in every
@@ -287,22 +285,31 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     fixed = bool(sensor.dsnu or sensor.prnu) and cal is None
     colp = np.empty((4 if fixed else 3, N), np.float32)
     dn = dark_noise(cal)
-    _kernels.tofg_prepare(taps, k, float(sensor.black_level), supp, const_var,
-                          prnu_gain(sensor), float(tof.white_level), zr, zi, v, sat, offset,
-                          nthreads, k * k * float(sensor.dsnu) ** 2 if dn is None else dn,
-                          colp[3] if fixed else None)
+    prepare = np.array([k, float(sensor.black_level), supp, const_var, prnu_gain(sensor),
+                        float(tof.white_level),
+                        k * k * float(sensor.dsnu) ** 2 if dn is None else dn], np.float64)
+    # the use of each measurement before the prepare stage's taps at full scale (which it
+    # leaves out itself)
+    use = sat == 0
+    if not layout.full:
+        use &= layout.present
+    use = use.view(np.uint8)
+    zr = zi = v = None
     if cal is not None:
-        # each measurement's phasors turned by its phase offset's deviation (the ISP removes
-        # it before it averages neighbours)
+        # the prepare stage over the frame (taps -> phasors, their variance, offset, sat),
+        # then each measurement's phasors turned by its phase offset's deviation (the ISP
+        # removes it before it averages neighbours); without a calibration the denoise makes
+        # the stage row by row as it reads them (no whole-frame planes of phasors)
+        zr, zi = np.empty((F, N), np.float32), np.empty((F, N), np.float32)
+        v = np.empty(N, np.float32)
+        _kernels.tofg_prepare(taps, *prepare[:6], zr, zi, v, sat, offset, nthreads,
+                              prepare[6], None)
+        use &= sat == 0
         turn = np.exp(-1j * layout.to_grid(cal.deviations, 0.0))
         z = (zr + 1j * zi) * turn
         zr, zi = np.ascontiguousarray(z.real, np.float32), np.ascontiguousarray(z.imag,
                                                                                 np.float32)
     col, cells, sigma_c = guide_colours(g, scale, layout, nthreads, colp[:3])
-    use = sat == 0
-    if not layout.full:
-        use &= layout.present
-    use = use.view(np.uint8)
     window = p.window if p.window is not None else \
         GUIDED_WINDOW_1X1 if tof.block == 1 else GUIDED_WINDOW
     radius = (window // 2) * tof.block
@@ -336,7 +343,8 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
                                      limits=limits, snr=snr, sigma=sigma, refl=refl,
                                      flags=flags, offset=offset,
                                      fixed=fixed_pattern_args(
-                                         sensor, None, delay_fpn_variance(sensor, None))):
+                                         sensor, None, delay_fpn_variance(sensor, None)),
+                                     taps=taps, prepare=prepare):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
     else:
         mr, mi = np.empty((F, N)), np.empty((F, N))
