@@ -1671,6 +1671,7 @@ typedef struct {
     int unflag;
     uint8_t *flags;
     double *depth_out;
+    double max_range;             /* NaN: no range test of the resolved depths */
 } tofg_fly_args;
 
 static const int tofg_dirs[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
@@ -1827,8 +1828,14 @@ static void tofg_fly_cell(const tofg_fly_args *p, ptrdiff_t r, ptrdiff_t c)
         return;
     }
     if (sig && (all0 || all1) && !near0 && !near1) {
+        const double dn = all0 ? dside[0] : dside[1];
         p->flags[m] |= 32;
-        p->depth_out[m] = all0 ? dside[0] : dside[1];
+        p->depth_out[m] = dn;
+        /* the side's depth under the validity's range test (below 0, within 5 sigma of
+           max_range or beyond: out of range): a side may be an aliased surface */
+        if (p->max_range == p->max_range && !((dn >= 0.0) & (dn <= p->max_range
+                                                              - 5.0 * p->sigma[m])))
+            p->flags[m] |= 16;
         return;
     }
     p->flags[m] |= 8;
@@ -1884,7 +1891,7 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
                      const float *col, const float *cells, int ncells, const float *ring,
                      int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,
                      double contrast, double side, int unflag, uint8_t *flags,
-                     double *depth_out, int workers)
+                     double *depth_out, double max_range, int workers)
 {
     if (!depth || !sigma || !usable || !col || !flags || !depth_out || ncells < 1
         || (ncells > 1 && !cells) || nring < 0 || (nring > 0 && !ring) || R < 0 || C < 0
@@ -1892,7 +1899,7 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
         return RGBZ_EINVAL;
     const tofg_fly_args p = {depth, sigma, usable, col, ncells > 1 ? cells : NULL,
                              nring > 0 ? ring : NULL, ncells, nring, R, C, step * step, k * k,
-                             2.5, contrast, side, unflag, flags, depth_out};
+                             2.5, contrast, side, unflag, flags, depth_out, max_range};
     uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
     if (!code) return RGBZ_ENOMEM;
     const int nth = rgbz_threads(workers);

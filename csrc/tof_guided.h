@@ -177,7 +177,7 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
                      const float *col, const float *cells, int ncells, const float *ring,
                      int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,
                      double contrast, double side, int unflag, uint8_t *flags,
-                     double *depth_out, int workers);
+                     double *depth_out, double max_range, int workers);
 
 /* Joint bilateral upsampling of the usable measurements (depth finite) to every pixel of the
    guide (H, W, 3). First every node without a usable measurement takes the same rule over

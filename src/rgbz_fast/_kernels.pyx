@@ -34,7 +34,7 @@ if hasattr(_os, "register_at_fork"):
     _os.register_at_fork(before=_release_before_fork)
 
 
-from libc.math cimport INFINITY
+from libc.math cimport INFINITY, NAN
 from libc.string cimport memset
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.stdint cimport uint32_t
@@ -1253,7 +1253,7 @@ cdef extern from "tof_guided.h" nogil:
                          const float *col, const float *cells, int ncells, const float *ring,
                          int nring, Py_ssize_t R, Py_ssize_t C, double step, double k,
                          double contrast, double side, int unflag, uint8_t *flags,
-                         double *depth_out, int workers)
+                         double *depth_out, double max_range, int workers)
     int rgbz_tofg_agree(double *depth, double *low, const uint8_t *lone, const double *sigma,
                         Py_ssize_t R, Py_ssize_t C, double tol_k, double tol_min, int workers)
     int rgbz_tofg_upsample(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
@@ -1588,10 +1588,11 @@ def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[
                 const float[:, ::1] col, const float[:, :, ::1] cells,
                 const float[:, :, ::1] ring, Py_ssize_t R, Py_ssize_t C, double step, double k,
                 double contrast, double side, int unflag, uint8_t[::1] flags,
-                double[::1] depth_out, int workers):
+                double[::1] depth_out, int workers, double max_range=NAN):
     """The flying-pixel test with colour edges: bits 8 (flying) and 32 (resolved) into flags,
     the resolved depths into depth_out (the measured depth elsewhere); ring (nring, 3, N) or
-    None: the colours of the pixels bordering each Z pixel."""
+    None: the colours of the pixels bordering each Z pixel. max_range (NaN: none): a resolved
+    depth below 0 or above max_range - 5 sigma also gets bit 16 (out of range)."""
     cdef int status
     cdef const float *cp = NULL
     cdef const float *rp = NULL
@@ -1608,7 +1609,7 @@ def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[
     with nogil:
         status = rgbz_tofg_flying(&depth[0], &sigma[0], &usable[0], &col[0, 0], cp, ncells, rp,
                                   nring, R, C, step, k, contrast, side, unflag, &flags[0],
-                                  &depth_out[0], workers)
+                                  &depth_out[0], max_range, workers)
     _raise_for(status)
 
 
