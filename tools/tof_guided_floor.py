@@ -11,8 +11,10 @@ of ROUNDS (default 7) rounds, the cases alternated round by round:
   leave the allocator's heap in another state), the same call right after another one (its
   freed arrays' pages reused), and each C kernel's share of it (the kernels wrapped in
   timers, calls as the ISP makes them);
-- the denoise (``tofg_denoise``) on the call's own arguments, with its output arrays made
-  once and written again (warm pages), and with fresh ones as the ISP makes them;
+- the denoise (``tofg_denoise``, which since 2026-11-28 also makes the prepare stage row by
+  row as it reads the taps, and the validity with the fixed pattern's correction as it
+  unwraps each row) on the call's own arguments, with its output arrays made once and
+  written again (warm pages), and with fresh ones as the ISP makes them;
 - the arrays of the returned ToFDepth (their shapes and types): written once with 2 threads
   into fresh arrays, and into the same arrays again -- what the result costs in page faults
   alone, whatever computes it.
@@ -74,7 +76,9 @@ def main(rounds=7):
 
     def denoise_fresh():
         a = [np.empty_like(x) if i in out_idx else x for i, x in enumerate(d_args)]
-        denoise(*a, **{**d_kw, "count": np.empty_like(d_kw["count"])})
+        fresh = {k: np.empty_like(d_kw[k]) for k in
+                 ("count", "snr", "sigma", "refl", "flags", "offset") if k in d_kw}
+        denoise(*a, **{**d_kw, **fresh})
 
     arrays = [np.asarray(getattr(result, f)) for f in RESULT_FIELDS]
     nbytes = sum(a.nbytes for a in arrays)
