@@ -316,6 +316,41 @@ def test_a_worker_processs_warnings_are_the_callers(files, tmp_path, capfd):
     assert "cache_dir" not in capfd.readouterr().err      # no worker printed it itself
 
 
+def test_a_dask_workers_warnings_are_the_callers(files, tmp_path, capfd):
+    """With a Dask scheduler the workers (other processes, two task threads each) printed an
+    image's warnings themselves, in Python's format, past the caller's filters; they are
+    recorded for each task's thread and the caller issues them again. A worker outlives a
+    run: the next run warns of its own cache failures again (H125)."""
+    import warnings
+
+    distributed = pytest.importorskip("distributed")
+    from rgbz_fast.evaluation import _cache
+
+    kw = dict(metrics=("cfa_psnr",), methods=("bi",), patterns=("mask1",), progress=False,
+              crop=0)
+    src = [rio.ImageSource(n, str(files / "small.png")) for n in ("a", "b", "c")]
+    want = ev.evaluate(src, processes=1, **kw).rows
+    (tmp_path / "c").mkdir()
+    for s in src:
+        (tmp_path / "c" / _cache.cache_folder(s.name)).write_text("x")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=True,
+                                  host="127.0.0.1", dashboard_address=None) as cluster:
+        for _ in range(2):
+            with warnings.catch_warnings(record=True) as got:
+                warnings.simplefilter("always")
+                assert ev.evaluate(src, scheduler=cluster.scheduler_address,
+                                   cache_dir=tmp_path / "c", **kw).rows == want
+            msgs = [str(w.message) for w in got if issubclass(w.category, RuntimeWarning)]
+            assert len(msgs) == 1, msgs              # one cause, one worker process
+            assert msgs[0].startswith("cache_dir: could not write"), msgs
+        capfd.readouterr()
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")             # the caller's filter holds
+            assert ev.evaluate(src, scheduler=cluster.scheduler_address,
+                               cache_dir=tmp_path / "c", **kw).rows == want
+        assert "cache_dir" not in capfd.readouterr().err   # no worker printed it itself
+
+
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="SIGKILL of a worker: POSIX")
 def test_a_worker_killed_from_outside_is_one_error_naming_processes(files, tmp_path):
     """A worker process ended by SIGKILL (the out-of-memory killer's signal) broke the pool:

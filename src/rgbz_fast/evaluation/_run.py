@@ -6,6 +6,7 @@ import hashlib
 import os
 from functools import lru_cache
 import signal
+import threading
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
@@ -311,17 +312,89 @@ class _Rows(list):
     warnings = ()
 
 
-def _pool_task(args, stop=None):
-    if not _IN_WORKER:
+def _pool_task(args, stop=None, run=None):
+    """One image on a worker. In a process of the local pool its warnings are recorded
+    (catch_warnings: one task at a time there); in a Dask worker of another process than the
+    run's (``run``: (the caller's process id, the run's token)) they are recorded for the
+    task's thread (:func:`_record_thread_warnings`: a Dask worker runs tasks on several
+    threads); the caller issues both again. In the caller's own process (a local pool of
+    threads, an in-process Dask cluster) they are the caller's already."""
+    if _IN_WORKER:
+        import warnings
+
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")        # the parent's filters decide
+            out = _image_task(args, stop)
+        caught = [(str(w.message), w.category) for w in caught]
+    elif run is not None and run[0] != os.getpid():
+        _begin_dask_run(run[1])
+        with _record_thread_warnings() as caught:
+            out = _image_task(args, stop)
+    else:
         return _image_task(args, stop)
+    out = out if isinstance(out, _Skipped) else _Rows(out)
+    out.warnings = caught
+    return out
+
+
+#: a worker process's thread-local record of warnings (:func:`_record_thread_warnings`), the
+#: showwarning it installed once, and the token of the last run it took a task of
+_THREAD_RECORD = threading.local()
+_RECORD_HOOK = []
+_RECORD_LOCK = threading.Lock()
+_DASK_RUN = [None]
+
+
+def _begin_dask_run(token):
+    """A Dask worker outlives a run: the first task of a new run in this worker process
+    forgets the cache failures it warned of (each run warns of its own, H121) and the
+    warnings Python's registries say were shown (its default action shows a warning once
+    per source line for the life of the process: the next run's came to no caller)."""
     import warnings
 
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")        # the parent's filters decide
-        out = _image_task(args, stop)
-    out = out if isinstance(out, _Skipped) else _Rows(out)
-    out.warnings = [(str(w.message), w.category) for w in caught]
-    return out
+    with _RECORD_LOCK:
+        if _DASK_RUN[0] != token:
+            _DASK_RUN[0] = token
+            forget_write_failures()
+            # a new version of the filters makes every module's registry stale; without
+            # the private hook, a catch-all entry of the default action appended (or moved
+            # to the end) decides nothing another entry or the default would not
+            mutated = getattr(warnings, "_filters_mutated", None)
+            if callable(mutated):
+                mutated()
+            else:                                   # pragma: no cover - another Python
+                warnings.simplefilter("default", append=True)
+
+
+class _record_thread_warnings:
+    """The warnings this thread shows while inside, as (text, category), into the list
+    the context gives; other threads' go where they went. ``warnings.showwarning`` is
+    replaced once per process by a function that looks up the calling thread's record
+    (catch_warnings swaps process-wide state, which the other tasks' threads would see).
+    The process's filters apply first (Python's default: one warning per source line), the
+    caller's when it issues them again."""
+
+    def __enter__(self):
+        import warnings
+
+        with _RECORD_LOCK:
+            if not _RECORD_HOOK:
+                shown = warnings.showwarning
+
+                def showwarning(message, category, filename, lineno, file=None, line=None):
+                    got = getattr(_THREAD_RECORD, "got", None)
+                    if got is None:
+                        return shown(message, category, filename, lineno, file, line)
+                    got.append((str(message), category))
+
+                warnings.showwarning = showwarning
+                _RECORD_HOOK.append(showwarning)
+        self.got = _THREAD_RECORD.got = []
+        return self.got
+
+    def __exit__(self, *exc):
+        _THREAD_RECORD.got = None
+        return False
 
 
 def _image_task(args, stop=None):
@@ -682,17 +755,25 @@ def _stop_tracker():
 
 
 def _run_dask(tasks, scheduler, bar):
+    """The tasks on a Dask scheduler; the warnings of each image that a worker of another
+    process recorded issued again here (:func:`_pool_task`)."""
+    import uuid
+    import warnings
+
     from ._cache import distributed
     dist = distributed()
     Client, d_as_completed = dist.Client, dist.as_completed
     own = not hasattr(scheduler, "submit")
     client = Client(scheduler) if own else scheduler
+    run = (os.getpid(), uuid.uuid4().hex)
     try:
-        futs = {client.submit(_pool_task, t, pure=False): t[0].name for t in tasks}
+        futs = {client.submit(_pool_task, t, None, run, pure=False): t[0].name for t in tasks}
         out = {}
         for f in d_as_completed(list(futs)):
             try:
-                out[futs[f]] = f.result()
+                out[futs[f]] = res = f.result()
+                for text, category in getattr(res, "warnings", ()):
+                    warnings.warn(text, category, stacklevel=2)
             except dist.KilledWorker:
                 # every worker that ran the image died (the out-of-memory killer, a crash):
                 # Dask's KilledWorker had ended the command with a traceback
