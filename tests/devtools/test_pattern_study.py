@@ -278,6 +278,31 @@ def test_dask_local_cluster_gives_the_same_numbers(tiny, tmp_path):
     assert remote["scheduler"] == cluster.scheduler_address
 
 
+def test_dask_workers_warnings_are_the_callers(tiny, tmp_path, capfd):
+    """A Dask worker of another process printed a task's warnings itself (here: damaged cache
+    entries, computed again), past the caller's filters; the caller issues them (H125)."""
+    import warnings
+
+    distributed = pytest.importorskip("distributed")
+    kw = dict(presets=("mask1",), settings=FAST, progress=False, workers=1,
+              cache_dir=tmp_path / "cache")
+    first = ps.pattern_study(tiny / "ds", **kw)
+    entries = sorted((tmp_path / "cache").rglob("*.json"))
+    assert entries
+    for e in entries:
+        e.write_text("x")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=True,
+                                  host="127.0.0.1", dashboard_address=None) as cluster:
+        capfd.readouterr()
+        with warnings.catch_warnings(record=True) as got:
+            warnings.simplefilter("always")
+            again = ps.pattern_study(tiny / "ds", scheduler=cluster.scheduler_address, **kw)
+        assert "is not JSON" not in capfd.readouterr().err       # no worker printed one
+    assert again["rows"] == first["rows"]
+    msgs = [str(w.message) for w in got if "is not JSON" in str(w.message)]
+    assert msgs and all(m.startswith("cache_dir: ") for m in msgs), [str(w.message) for w in got]
+
+
 def test_method_that_does_not_apply_is_a_note(tiny):
     tile = "ZZ/ZZ/ZZ/ZZ/ZZ/ZZ/GR/BG"               # six rows of Z: none of its colour near
     assert "does not apply" in ps.method_note(Pattern(tile), "bilinear")

@@ -408,14 +408,19 @@ def _run(jobs, scheduler, progress):
                 bar.update()
             return out
         from ..evaluation._cache import distributed
+        from ..evaluation._run import dask_run_token, dask_task, issue_again
         dist = distributed()
         Client, as_completed = dist.Client, dist.as_completed
         own = not hasattr(scheduler, "submit")
         client = Client(scheduler) if own else scheduler
+        run = dask_run_token()
         try:
-            futs = {client.submit(_task, job, pure=False): i for i, job in enumerate(jobs)}
+            # a worker of another process records its tasks' warnings: issued again here
+            futs = {client.submit(dask_task, _task, job, run, pure=False): i
+                    for i, job in enumerate(jobs)}
             for f in as_completed(list(futs)):
-                out[futs[f]] = f.result()
+                out[futs[f]], caught = f.result()
+                issue_again(caught)
                 bar.update()
         finally:
             if own:

@@ -312,29 +312,48 @@ class _Rows(list):
     warnings = ()
 
 
-def _pool_task(args, stop=None, run=None):
-    """One image on a worker. In a process of the local pool its warnings are recorded
-    (catch_warnings: one task at a time there); in a Dask worker of another process than the
-    run's (``run``: (the caller's process id, the run's token)) they are recorded for the
-    task's thread (:func:`_record_thread_warnings`: a Dask worker runs tasks on several
-    threads); the caller issues both again. In the caller's own process (a local pool of
-    threads, an in-process Dask cluster) they are the caller's already."""
-    if _IN_WORKER:
-        import warnings
-
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")        # the parent's filters decide
-            out = _image_task(args, stop)
-        caught = [(str(w.message), w.category) for w in caught]
-    elif run is not None and run[0] != os.getpid():
-        _begin_dask_run(run[1])
-        with _record_thread_warnings() as caught:
-            out = _image_task(args, stop)
-    else:
+def _pool_task(args, stop=None):
+    if not _IN_WORKER:
         return _image_task(args, stop)
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")        # the parent's filters decide
+        out = _image_task(args, stop)
     out = out if isinstance(out, _Skipped) else _Rows(out)
-    out.warnings = caught
+    out.warnings = [(str(w.message), w.category) for w in caught]
     return out
+
+
+def dask_run_token():
+    """The ``run`` of :func:`dask_task`: (this process's id, a token of the run)."""
+    import uuid
+
+    return os.getpid(), uuid.uuid4().hex
+
+
+def dask_task(fn, arg, run):
+    """``(fn(arg), warnings)`` on a Dask worker (module level, so that Dask ships it by
+    name): in a worker of another process than the run's (``run``, :func:`dask_run_token`)
+    the warnings ``fn`` shows, (text, category), recorded for the task's own thread
+    (:class:`_record_thread_warnings`: a Dask worker runs tasks on several threads), which
+    :func:`issue_again` issues in the caller; in the caller's own process (an in-process
+    cluster) none are recorded, they are the caller's already."""
+    if run[0] == os.getpid():
+        return fn(arg), ()
+    _begin_dask_run(run[1])
+    with _record_thread_warnings() as caught:
+        value = fn(arg)
+    return value, caught
+
+
+def issue_again(caught, stacklevel=3):
+    """Issue the warnings a worker recorded, (text, category), in this process, where the
+    caller's filters and the command line's one-line format apply."""
+    import warnings
+
+    for text, category in caught:
+        warnings.warn(text, category, stacklevel=stacklevel)
 
 
 #: a worker process's thread-local record of warnings (:func:`_record_thread_warnings`), the
@@ -756,24 +775,21 @@ def _stop_tracker():
 
 def _run_dask(tasks, scheduler, bar):
     """The tasks on a Dask scheduler; the warnings of each image that a worker of another
-    process recorded issued again here (:func:`_pool_task`)."""
-    import uuid
-    import warnings
-
+    process recorded issued again here (:func:`dask_task`)."""
     from ._cache import distributed
     dist = distributed()
     Client, d_as_completed = dist.Client, dist.as_completed
     own = not hasattr(scheduler, "submit")
     client = Client(scheduler) if own else scheduler
-    run = (os.getpid(), uuid.uuid4().hex)
+    run = dask_run_token()
     try:
-        futs = {client.submit(_pool_task, t, None, run, pure=False): t[0].name for t in tasks}
+        futs = {client.submit(dask_task, _image_task, t, run, pure=False): t[0].name
+                for t in tasks}
         out = {}
         for f in d_as_completed(list(futs)):
             try:
-                out[futs[f]] = res = f.result()
-                for text, category in getattr(res, "warnings", ()):
-                    warnings.warn(text, category, stacklevel=2)
+                out[futs[f]], caught = f.result()
+                issue_again(caught)
             except dist.KilledWorker:
                 # every worker that ran the image died (the out-of-memory killer, a crash):
                 # Dask's KilledWorker had ended the command with a traceback
