@@ -1150,6 +1150,21 @@ int rgbz_tofg_validity(const double *amp, const float *var, const double *depth,
     return RGBZ_OK;
 }
 
+/* rgbz_tofg_usable of the measurements [lo, hi) */
+RGBZ_CLONES_512 static void tofg_usable_span(const uint8_t *restrict flags,
+                                             const double *restrict depth,
+                                             const double *restrict sigma,
+                                             const uint8_t *restrict present, uint8_t bad,
+                                             ptrdiff_t lo, ptrdiff_t hi,
+                                             uint8_t *restrict usable)
+{
+    /* branch-free, so that it vectorises: |x| < inf is false for NaN and +-inf */
+    for (ptrdiff_t m = lo; m < hi; m++)
+        usable[m] = (uint8_t)(((flags[m] & bad) == 0) & (fabs(depth[m]) < INFINITY)
+                              & (fabs(sigma[m]) < INFINITY)
+                              & (present ? present[m] != 0 : 1));
+}
+
 /* the validity args of the denoise's outputs (tofg_valid_out) */
 static tofg_valid_args tofg_valid_of(const tofg_unwrap_out *uw, const float *var, ptrdiff_t N)
 {
@@ -1195,6 +1210,10 @@ static void tofg_valid_row(const tofg_unwrap_out *uw, const float *var, const do
         if (uw->valid->offset)
             tofg_valid_delta(uw, count, F, N, n0 + j, k, delta, iq ? iq + j : NULL, iqs);
         tofg_valid_block(&p, F, n0 + j, n0 + j + k, uw->valid->offset ? delta : NULL);
+        if (uw->valid->usable)
+            tofg_usable_span(uw->valid->flags, uw->depth, uw->valid->sigma,
+                             uw->valid->present, uw->valid->bad, n0 + j, n0 + j + k,
+                             uw->valid->usable);
     }
 }
 
@@ -1672,6 +1691,7 @@ typedef struct {
     uint8_t *flags;
     double *depth_out;
     double max_range;             /* NaN: no range test of the resolved depths */
+    uint8_t *valid;               /* NULL: not made; else flags == 0, row by row */
 } tofg_fly_args;
 
 static const int tofg_dirs[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
@@ -1850,14 +1870,9 @@ int rgbz_tofg_usable(const uint8_t *flags, const double *depth, const double *si
     (void)nth;
     const ptrdiff_t B = 4096, nb = (N + B - 1) / B;
     RGBZ_PARALLEL_FOR
-    for (ptrdiff_t b = 0; b < nb; b++) {
-        const ptrdiff_t lo = b * B, hi = lo + B < N ? lo + B : N;
-        /* branch-free, so that it vectorises: |x| < inf is false for NaN and +-inf */
-        for (ptrdiff_t m = lo; m < hi; m++)
-            usable[m] = (uint8_t)(((flags[m] & bad) == 0) & (fabs(depth[m]) < INFINITY)
-                                  & (fabs(sigma[m]) < INFINITY)
-                                  & (present ? present[m] != 0 : 1));
-    }
+    for (ptrdiff_t b = 0; b < nb; b++)
+        tofg_usable_span(flags, depth, sigma, present, bad, b * B, b * B + B < N ? b * B + B : N,
+                         usable);
     return RGBZ_OK;
 }
 
@@ -1891,7 +1906,7 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
                      const float *col, const float *cells, int ncells, const float *ring,
                      int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,
                      double contrast, double side, int unflag, uint8_t *flags,
-                     double *depth_out, double max_range, int workers)
+                     double *depth_out, double max_range, uint8_t *valid, int workers)
 {
     if (!depth || !sigma || !usable || !col || !flags || !depth_out || ncells < 1
         || (ncells > 1 && !cells) || nring < 0 || (nring > 0 && !ring) || R < 0 || C < 0
@@ -1899,7 +1914,7 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
         return RGBZ_EINVAL;
     const tofg_fly_args p = {depth, sigma, usable, col, ncells > 1 ? cells : NULL,
                              nring > 0 ? ring : NULL, ncells, nring, R, C, step * step, k * k,
-                             2.5, contrast, side, unflag, flags, depth_out, max_range};
+                             2.5, contrast, side, unflag, flags, depth_out, max_range, valid};
     uint8_t *code = malloc((size_t)(R * C > 0 ? R * C : 1));
     if (!code) return RGBZ_ENOMEM;
     const int nth = rgbz_threads(workers);
@@ -1927,6 +1942,8 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
             const uint8_t *u = usable + r * C;
             for (ptrdiff_t c = 0; c < C; c++)
                 if ((u[c] != 0) & cand[c]) tofg_fly_cell(&p, r, c);
+            if (valid)          /* the row's flags are final: tofg_fly_cell writes its own */
+                for (ptrdiff_t c = 0; c < C; c++) valid[r * C + c] = flags[r * C + c] == 0;
         }
         free(cand);
     }

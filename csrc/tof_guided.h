@@ -81,6 +81,11 @@ typedef struct {
     uint8_t *flags;
     const double *offset;
     double black, pre, var_dsnu, fix_dsnu, prnu, delay_var;
+    /* usable (NULL: not made): rgbz_tofg_usable of the row's flags, depth and sigma with
+       present (NULL: every one) and the bits bad, as each row's validity is made */
+    uint8_t *usable;
+    const uint8_t *present;
+    uint8_t bad;
 } tofg_valid_out;
 
 /* The unwrapping of the fused denoise's means (rgbz_tof_depth_iq's arguments): depth,
@@ -177,7 +182,7 @@ int rgbz_tofg_flying(const double *depth, const double *sigma, const uint8_t *us
                      const float *col, const float *cells, int ncells, const float *ring,
                      int nring, ptrdiff_t R, ptrdiff_t C, double step, double k,
                      double contrast, double side, int unflag, uint8_t *flags,
-                     double *depth_out, double max_range, int workers);
+                     double *depth_out, double max_range, uint8_t *valid, int workers);
 
 /* Joint bilateral upsampling of the usable measurements (depth finite) to every pixel of the
    guide (H, W, 3). First every node without a usable measurement takes the same rule over

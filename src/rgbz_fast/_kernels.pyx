@@ -1207,6 +1207,9 @@ cdef extern from "tof_guided.h" nogil:
         double fix_dsnu
         double prnu
         double delay_var
+        uint8_t *usable
+        const uint8_t *present
+        uint8_t bad
     ctypedef struct tofg_prep_in:
         int in_type
         const void *taps
@@ -1253,7 +1256,7 @@ cdef extern from "tof_guided.h" nogil:
                          const float *col, const float *cells, int ncells, const float *ring,
                          int nring, Py_ssize_t R, Py_ssize_t C, double step, double k,
                          double contrast, double side, int unflag, uint8_t *flags,
-                         double *depth_out, double max_range, int workers)
+                         double *depth_out, double max_range, uint8_t *valid, int workers)
     int rgbz_tofg_agree(double *depth, double *low, const uint8_t *lone, const double *sigma,
                         Py_ssize_t R, Py_ssize_t C, double tol_k, double tol_min, int workers)
     int rgbz_tofg_upsample(int in_type, const void *guide, Py_ssize_t H, Py_ssize_t W,
@@ -1390,7 +1393,8 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
                  const double[::1] limits=None, double[::1] snr=None, double[::1] sigma=None,
                  double[::1] refl=None, uint8_t[::1] flags=None,
                  double[:, ::1] offset=None, const double[::1] fixed=None, taps=None,
-                 const double[::1] prepare=None):
+                 const double[::1] prepare=None, uint8_t[::1] usable=None,
+                 const uint8_t[::1] present=None, int usable_bits=0):
     """The guided denoise: the four passes of tofg_pass (rows, columns, rows guided by the
     columns' output, columns) fused strip by strip; the last pass's outputs, bit for bit.
     With depth given (and freqs, weights, residual, wraps, phase, amp), the means are
@@ -1407,8 +1411,9 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
     white, fixed_var), sat, offset), the prepare stage (tofg_prepare) is made inside, row by
     row: zr, zi, v are not read (None), sat |= a tap at full scale and offset is written,
     use is taken as before the stage (its hits are left out), and col's fourth plane, when
-    col has one, is the stage's phi. Returns False when a mean is not finite (RGBZ_EDOMAIN),
-    True otherwise."""
+    col has one, is the stage's phi. With usable (N,) given (and flags), it takes tofg_usable
+    of each row's flags, depth and sigma with present (None: every one) and the bits
+    usable_bits. Returns False when a mean is not finite (RGBZ_EDOMAIN), True otherwise."""
     cdef int status
     cdef Py_ssize_t R = row_px.shape[0], C = col_px.shape[0]
     cdef Py_ssize_t nf
@@ -1497,6 +1502,13 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
             vo.flags = &flags[0]
             vo.offset = NULL
             vo.black = vo.pre = vo.var_dsnu = vo.fix_dsnu = vo.prnu = vo.delay_var = 0.0
+            vo.usable, vo.present, vo.bad = NULL, NULL, <uint8_t> usable_bits
+            if usable is not None:
+                if usable.shape[0] != R * C or (present is not None
+                                                and present.shape[0] != R * C):
+                    raise ValueError(f"tofg_denoise: expected usable and present of {R * C}")
+                vo.usable = &usable[0]
+                vo.present = NULL if present is None else &present[0]
             if offset is not None:
                 if offset.shape[0] != nf or offset.shape[1] != R * C or fixed is None \
                         or fixed.shape[0] != 6:
@@ -1588,11 +1600,13 @@ def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[
                 const float[:, ::1] col, const float[:, :, ::1] cells,
                 const float[:, :, ::1] ring, Py_ssize_t R, Py_ssize_t C, double step, double k,
                 double contrast, double side, int unflag, uint8_t[::1] flags,
-                double[::1] depth_out, int workers, double max_range=NAN):
+                double[::1] depth_out, int workers, double max_range=NAN,
+                uint8_t[::1] valid=None):
     """The flying-pixel test with colour edges: bits 8 (flying) and 32 (resolved) into flags,
     the resolved depths into depth_out (the measured depth elsewhere); ring (nring, 3, N) or
     None: the colours of the pixels bordering each Z pixel. max_range (NaN: none): a resolved
-    depth below 0 or above max_range - 5 sigma also gets bit 16 (out of range)."""
+    depth below 0 or above max_range - 5 sigma also gets bit 16 (out of range). valid (N,),
+    when given, takes flags == 0 of the final flags."""
     cdef int status
     cdef const float *cp = NULL
     cdef const float *rp = NULL
@@ -1604,12 +1618,15 @@ def tofg_flying(const double[::1] depth, const double[::1] sigma, const uint8_t[
     if ring is not None and ring.shape[0] > 0:
         rp = &ring[0, 0, 0]
         nring = <int> ring.shape[0]
+    if valid is not None and valid.shape[0] != depth.shape[0]:
+        raise ValueError(f"tofg_flying: expected valid of {depth.shape[0]} measurements")
     if depth.shape[0] == 0:
         return
     with nogil:
         status = rgbz_tofg_flying(&depth[0], &sigma[0], &usable[0], &col[0, 0], cp, ncells, rp,
                                   nring, R, C, step, k, contrast, side, unflag, &flags[0],
-                                  &depth_out[0], max_range, workers)
+                                  &depth_out[0], max_range,
+                                  NULL if valid is None else &valid[0], workers)
     _raise_for(status)
 
 

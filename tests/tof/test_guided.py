@@ -337,11 +337,14 @@ def test_guided_denoise_makes_the_validity_of_the_kernels_after_it(uneven, fixed
     var, count = np.empty(N, np.float32), np.empty(N)
     snr, sigma, refl, flags = np.empty(N), np.empty(N), np.empty(N), np.empty(N, np.uint8)
     pattern = fixed != "none"
+    usable = np.full(N, 7, np.uint8)
+    present = (rng.random(N) > 0.1).astype(np.uint8)
     assert _kernels.tofg_denoise(*args, None, None, var, None, 2, f, w, 7.49, *got,
                                  count=count, sat=sat, sigma_scale=scale, refl_coef=coef,
                                  limits=limits, snr=snr, sigma=sigma, refl=refl, flags=flags,
                                  offset=offset if pattern else None,
-                                 fixed=noise if pattern else None)
+                                 fixed=noise if pattern else None, usable=usable,
+                                 present=present if uneven else None, usable_bits=3)
     depth, residual, _, phase, amp = got
     delta = None
     if pattern:
@@ -354,6 +357,10 @@ def test_guided_denoise_makes_the_validity_of_the_kernels_after_it(uneven, fixed
     np.testing.assert_array_equal(flags, want[3])
     np.testing.assert_array_equal(snr, want[0])
     np.testing.assert_array_equal(refl, want[2])
+    usable_want = np.empty(N, np.uint8)                  # and tofg_usable of them
+    _kernels.tofg_usable(flags, depth, sigma, present if uneven else None, 3, usable_want, 2)
+    np.testing.assert_array_equal(usable, usable_want)
+    assert 0 < usable.sum() < N
     if uneven or not pattern:
         np.testing.assert_array_equal(sigma, want[1])
     else:
@@ -522,13 +529,15 @@ def test_guided_flying_matches_numpy(pattern):
     assert (ring is None) == (pattern == "mask1")
     usable = ((res.flags & 3) == 0).astype(np.uint8)
     flags, out = np.zeros(lay.N, np.uint8), np.empty(lay.N)
+    valid = np.full(lay.N, 7, np.uint8)
     _kernels.tofg_flying(res.depth, res.sigma, usable, col, cells, ring, lay.R, lay.C, 0.05, 2.0,
-                         12.5, 0.15, 1, flags, out, 2)
+                         12.5, 0.15, 1, flags, out, 2, valid=valid)
     want_flags, want = ref.guided_flying(res.depth, res.sigma, usable, col, cells, ring, lay.R,
                                          lay.C, 0.05, 2.0, 12.5, 0.15, 1)
     assert (flags & 8).any()
     np.testing.assert_array_equal(flags, want_flags)
     np.testing.assert_array_equal(out, want)
+    np.testing.assert_array_equal(valid, want_flags == 0)       # the final flags' zeros
     if ring is not None:
         # without the ring test some of the flagged measurements pass as pure
         loose = np.zeros(lay.N, np.uint8)

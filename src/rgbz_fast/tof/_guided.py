@@ -226,24 +226,38 @@ def _radiometry(tof, f):
     return sigma_scale, np.ascontiguousarray(1.0 / model)
 
 
-def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, max_range, nthreads):
+def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, max_range, nthreads,
+                 usable=None, valid=None):
     """The flying-pixel test with colour edges on measurements in grid order: adds FLYING and
     RESOLVED to ``flags`` (in place); returns the depths with the resolved ones replaced.
+    ``usable``: the measurements the test may use (:data:`USABLE_BITS`; None: made here);
+    ``valid`` (N,) bool, when given, takes ``flags == 0`` of the final flags.
 
     A resolved depth is a side's, and a side may hold measurements flagged out of range (an
     aliased surface) or inconsistent: one the range test of the validity would flag (below 0,
     within 5 sigma of ``max_range`` or beyond) is flagged OUT_OF_RANGE too (H76), so that
     :func:`upsample_depth` leaves it out."""
-    usable = np.empty(layout.N, np.uint8)
-    _kernels.tofg_usable(flags, depth, sigma, None if layout.full else layout.present.view(
-        np.uint8), FLAG_SATURATED | FLAG_LOW_SIGNAL, usable, nthreads)
+    if usable is None:
+        usable = np.empty(layout.N, np.uint8)
+        _kernels.tofg_usable(flags, depth, sigma, _present(layout), USABLE_BITS, usable,
+                             nthreads)
     out = np.empty_like(depth)
     # the resolved depths under the validity's range test in the kernel (FLAG_OUT_OF_RANGE
     # where d < 0 or d > max_range - 5 sigma)
     _kernels.tofg_flying(depth, sigma, usable, col, cells, ring, layout.R,
                          layout.C, step, 2.0, EDGE_CONTRAST, SIDE_SHARE, 1, flags, out,
-                         nthreads, float(max_range))
+                         nthreads, float(max_range),
+                         None if valid is None else valid.view(np.uint8))
     return out
+
+
+#: the validity bits that keep a measurement out of the flying test's sides
+USABLE_BITS = FLAG_SATURATED | FLAG_LOW_SIGNAL
+
+
+def _present(layout):
+    """The measurements a layout's grid holds, as uint8 (None: every one)."""
+    return None if layout.full else layout.present.view(np.uint8)
 
 
 def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
@@ -327,6 +341,9 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
                        np.inf if p.max_reflectance is None else p.max_reflectance], np.float64)
     args = (zr, zi, v, colp, use, layout.rows, layout.cols, reach_r, reach_c, radius, inv2h2,
             inv2hc2)
+    # the flying test's usable measurements, made with each row's validity (the same as
+    # tofg_usable after it)
+    usable = np.empty(N, np.uint8) if p.flying_step is not None and cal is None else None
     if cal is None:
         depth, residual, wraps = np.empty(N), np.empty(N), np.empty(N, np.int32)
         phase, amp = np.empty((F, N)), np.empty((F, N))
@@ -339,7 +356,8 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
                                      flags=flags, offset=offset,
                                      fixed=fixed_pattern_args(
                                          sensor, None, delay_fpn_variance(sensor, None)),
-                                     taps=taps, prepare=prepare):
+                                     taps=taps, prepare=prepare, usable=usable,
+                                     present=_present(layout), usable_bits=USABLE_BITS):
             raise ValueError("taps: the averaged phasors overflow (|I|, |Q| > 1.8e308)")
     else:
         mr, mi = np.empty((F, N)), np.empty((F, N))
@@ -356,15 +374,17 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
                                *limits[:6], snr, sigma, refl, flags, nthreads, delta,
                                limits[6])
     measured = depth
+    valid = None
     if p.flying_step is not None:
+        valid = np.empty(N, bool)               # flags == 0, made by the flying test's rows
         depth = guided_flags(measured, sigma, flags, layout, col, cells,
                              guide_ring(g, scale, layout, sigma_c, nthreads), p.flying_step,
-                             max_range, nthreads)
+                             max_range, nthreads, usable=usable, valid=valid)
     back = layout.from_grid
     return ToFDepth(depth=back(depth), residual=back(residual), wraps=back(wraps),
                     phase=back(phase), amplitude=back(amp), offset=back(offset),
                     snr=back(snr), sigma=back(sigma), reflectance=back(refl),
-                    count=back(count), valid=back(flags == 0),
+                    count=back(count), valid=back(flags == 0 if valid is None else valid),
                     flags=back(flags), frequencies=np.asarray(tof.frequencies, np.float64).copy(),
                     sites=tuple(np.asarray(a) for a in tof.sites), block=int(tof.block),
                     shape=tuple(tof.shape), measured=back(measured))
