@@ -329,8 +329,9 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # call, row by row through rings of a few rows: no intermediate plane of the whole frame;
     # without a calibration (whose cyclic-error correction acts on the phases) the means are
     # unwrapped there as they are made, and each unwrapped row's validity (with the fixed
-    # pattern's correction of sigma) is made while the row is in the cache: the same values
-    # as tofg_validity and tof_fixed_pattern after the call, bit for bit (tests/test_tof_guided)
+    # pattern's correction of sigma) is made while the row is in the cache: the values
+    # tofg_validity and tof_fixed_pattern give after the call, bit for bit but sigma (the
+    # pattern's cosines from the mean phasors, within 2 ulps; tests/tof/test_guided.py)
     # n_eff comes in count's public dtype, float64, from the kernel
     var, count = np.empty(N, np.float32), np.empty(N)
     snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
