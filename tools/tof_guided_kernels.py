@@ -8,7 +8,9 @@ for the 12 MP Mask1 frame of tools/tof_guided_speed.py.
 
 SO: the other build's ``_kernels*.so`` (e.g. a copy of main's build). Prints the CPU time
 (all threads) per measurement of each round and the ratio this / other per round; "outputs
-bit-identical" or the outputs that differ.
+bit-identical" or the outputs that differ. Since 2026-11-28 the denoise also makes the prepare
+stage and the validity (its keyword arguments ``taps``, ``sat``, ``offset``, ``flags``, ...):
+the other build must take them, a build of that day or later.
 """
 
 import importlib.util
@@ -65,19 +67,22 @@ def main(so, rounds=5, workers=1):
     n, seen = _arguments()
     da, dk = seen["tofg_denoise"]
     da = list(da)
-    da[15] = np.empty(n, np.float32)                 # n_eff in float32, as every build takes it
     da[16] = workers
-    dk = {k: v for k, v in dk.items() if k != "count"}
     ca = list(seen["tofg_colour"][0])[:9]
     ca[8] = workers
-    outs_d, outs_c = [14, 15, 20, 21, 22, 23, 24], [5, 6, 7]
+    outs_d, outs_c = [14, 20, 21, 22, 23, 24], [5, 6, 7]
+    # the outputs among the keywords (sat: |= the taps at full scale, the same each call)
+    outs_k = [k for k in ("count", "snr", "sigma", "refl", "flags", "offset", "usable")
+              if dk.get(k) is not None]
 
     def denoise(mod):
-        a = list(da)
+        a, k = list(da), dict(dk)
         for i in outs_d:
             a[i] = np.full_like(da[i], 7)
-        mod.tofg_denoise(*a, **dk)
-        return [a[i] for i in outs_d]
+        for key in outs_k:
+            k[key] = np.full_like(dk[key], 7)
+        mod.tofg_denoise(*a, **k)
+        return [a[i] for i in outs_d] + [k[key] for key in outs_k]
 
     def colour(mod):
         a = list(ca)
