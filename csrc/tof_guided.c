@@ -1725,29 +1725,40 @@ static int tofg_candidate(const tofg_fly_args *p, const uint8_t *code, ptrdiff_t
 /* the hits centred at the cells of row r along every direction (tofg_candidate's code) */
 RGBZ_CLONES_512 static void tofg_hit_row(const tofg_fly_args *p, ptrdiff_t r, uint8_t *code)
 {
-    const ptrdiff_t C = p->C;
-    const double *d = p->depth, *s = p->sigma;
-    const uint8_t *u = p->usable;
-    for (ptrdiff_t c = 0; c < C; c++) code[r * C + c] = 0;
-    for (int e = 0; e < 4; e++) {
-        const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
-        if (r - dr < 0 || r + dr >= p->R) continue;
-        const ptrdiff_t c0 = dc ? 1 : 0, c1 = dc ? C - 1 : C, off = dr * C + dc;
-        for (ptrdiff_t c = c0; c < c1; c++) {
-            const ptrdiff_t m = r * C + c, lo = m - off, hi = m + off;
-            /* every operand loaded (an unusable one may be NaN: it never counts) */
-            const int ok = u[m] & u[lo] & u[hi];
-            const double down = d[m] - d[lo], up = d[hi] - d[m];
-            double jump = up - down;
-            jump *= jump;
-            const double shi = s[hi], slo = s[lo], sm = s[m];
-            double noise = shi * shi + slo * slo;
-            noise += 4.0 * (sm * sm);
-            noise *= p->k2;
-            noise = noise > p->step2 ? noise : p->step2;
-            const int hit = ok & (jump > noise), toward = fabs(up) >= fabs(down);
-            code[m] |= (uint8_t)((hit << (2 * e)) | ((hit & toward) << (2 * e + 1)));
+    /* blocks of 256 cells whose bits gather in int32 beside the doubles and are stored as
+       bytes once, the parameters in locals, the arrays restrict: the loops vectorise at the
+       clone's width (with the bytes' read-modify-write inside, which may alias anything,
+       GCC reloaded the parameters every cell and used half the width) */
+    const ptrdiff_t C = p->C, R = p->R;
+    const double *restrict d = p->depth, *restrict s = p->sigma;
+    const uint8_t *restrict u = p->usable;
+    const double k2 = p->k2, step2 = p->step2;
+    int32_t bits[256];
+    for (ptrdiff_t x0 = 0; x0 < C; x0 += 256) {
+        const ptrdiff_t x1 = C - x0 < 256 ? C : x0 + 256;
+        for (ptrdiff_t c = x0; c < x1; c++) bits[c - x0] = 0;
+        for (int e = 0; e < 4; e++) {
+            const ptrdiff_t dr = tofg_dirs[e][0], dc = tofg_dirs[e][1];
+            if (r - dr < 0 || r + dr >= R) continue;
+            const ptrdiff_t lo_c = dc ? 1 : 0, hi_c = dc ? C - 1 : C, off = dr * C + dc;
+            const ptrdiff_t ca = x0 > lo_c ? x0 : lo_c, cb = x1 < hi_c ? x1 : hi_c;
+            for (ptrdiff_t c = ca; c < cb; c++) {
+                const ptrdiff_t m = r * C + c, lo = m - off, hi = m + off;
+                /* every operand loaded (an unusable one may be NaN: it never counts) */
+                const int32_t ok = u[m] & u[lo] & u[hi];
+                const double down = d[m] - d[lo], up = d[hi] - d[m];
+                double jump = up - down;
+                jump *= jump;
+                const double shi = s[hi], slo = s[lo], sm = s[m];
+                double noise = shi * shi + slo * slo;
+                noise += 4.0 * (sm * sm);
+                noise *= k2;
+                noise = noise > step2 ? noise : step2;
+                const int32_t hit = ok & (jump > noise), toward = fabs(up) >= fabs(down);
+                bits[c - x0] |= (hit << (2 * e)) | ((hit & toward) << (2 * e + 1));
+            }
         }
+        for (ptrdiff_t c = x0; c < x1; c++) code[r * C + c] = (uint8_t)bits[c - x0];
     }
 }
 
