@@ -316,6 +316,44 @@ def test_a_worker_processs_warnings_are_the_callers(files, tmp_path, capfd):
     assert "cache_dir" not in capfd.readouterr().err      # no worker printed it itself
 
 
+def test_a_full_disk_leaves_the_previous_reports_whole(files, tmp_path, monkeypatch):
+    """A full disk at the third report: the reports had been written one by one after the
+    previous run's others were removed, so the folder held two new files, the previous
+    run's rest and its list: the set of two runs. Now every file is written to a temporary
+    first and nothing is renamed until all are: the error names the file, the folder is the
+    previous run's, byte for byte, and no temporary file stays (H126)."""
+    import errno
+    import os
+
+    kw = dict(metrics=("cfa_psnr",), patterns=("mask1",), progress=False, crop=0)
+    first = ev.evaluate([rio.ImageSource("a", str(files / "small.png"))], processes=1,
+                        methods=("bi", "sg"), **kw)
+    second = ev.evaluate([rio.ImageSource("c", str(files / "small.png"))], processes=1,
+                         methods=("bi",), **kw)
+    out = tmp_path / "rep"
+    ev.write_reports(first, out, plots=False)
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    assert "table_a.md" in before
+    fsync, calls = os.fsync, []
+
+    def full_at_the_third(fd):
+        calls.append(fd)
+        if len(calls) == 3:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return fsync(fd)
+
+    monkeypatch.setattr(os, "fsync", full_at_the_third)
+    with pytest.raises(OSError) as got:
+        ev.write_reports(second, out, plots=False)
+    assert got.value.errno == errno.ENOSPC and got.value.filename.startswith(str(out))
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    monkeypatch.setattr(os, "fsync", fsync)
+    ev.write_reports(second, out, plots=False)              # the disk has room again
+    names = {p.name for p in out.iterdir()}
+    assert "table_c.md" in names and "table_a.md" not in names    # the previous run's gone
+    assert (out / "results.csv").read_text() == second.to_csv()
+
+
 def test_a_dask_workers_warnings_are_the_callers(files, tmp_path, capfd):
     """With a Dask scheduler the workers (other processes, two task threads each) printed an
     image's warnings themselves, in Python's format, past the caller's filters; they are

@@ -10,7 +10,7 @@ import numpy as np
 
 from .._patterns import get_pattern
 from .._validate import check_flag, check_path
-from ..io import atomic_write
+from ..io._files import atomic_write_all
 from ..reconstruction import NEEDS_TOF, reconstruct
 from ._config import HIGHER_IS_BETTER, METHOD_LABELS, METRIC_LABELS, EvalConfig
 from ._results import Results
@@ -32,7 +32,9 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
     this one does not write are removed, so that a folder never mixes two
     runs (nothing else in it is touched: only a ``reports.txt`` that starts with
     the header this function writes is read, and only the names of the reports
-    it makes, plain files in the folder, are removed). ``table_image`` defaults to kodim09
+    it makes, plain files in the folder, are removed). The files are written all or none:
+    each to a temporary file first and renamed only when every one is written, so a full
+    disk leaves the folder as the previous run left it. ``table_image`` defaults to kodim09
     when present, else the first image. ``crop_source`` (an ImageSource)
     adds a Fig. 21-like crop comparison.
 
@@ -96,16 +98,21 @@ def write_reports(results, out_dir, *, table_image=None, crop_source=None, crop_
             put(f"crops_{_safe(crop_source.name)}.png", figure)
     out.mkdir(parents=True, exist_ok=True)
     names = [name for name, _ in made]
-    for name in sorted(previous - set(names)):      # a previous run's, not rewritten
-        stale = out / name
-        if stale.is_file() and not stale.is_symlink():
-            stale.unlink()
-    written = []
-    for name, data in made:
-        atomic_write(out / name, data)
-        written.append(out / name)
-    atomic_write(out / MANIFEST, MANIFEST_HEAD + "".join(n + "\n" for n in names))
-    return written
+
+    def remove_stale():
+        for name in sorted(previous - set(names)):      # a previous run's, not rewritten
+            stale = out / name
+            if stale.is_file() and not stale.is_symlink():
+                stale.unlink()
+
+    # all or none: every report and the list written to temporary files first, then the
+    # previous run's others removed and the new ones renamed into place, the list last. A
+    # full disk at the fifth file had left four new reports beside the previous run's others
+    # and its list (the set of two runs, H126); now the folder stays the previous run's
+    atomic_write_all([(out / name, data) for name, data in made]
+                     + [(out / MANIFEST, MANIFEST_HEAD + "".join(n + "\n" for n in names))],
+                     before_renames=remove_stale)
+    return [out / name for name in names]
 
 
 #: the list of the files an evaluation wrote into its folder, so that the next run into

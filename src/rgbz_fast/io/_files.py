@@ -266,6 +266,40 @@ def atomic_write(path, data):
     ['a.txt']
     >>> d.cleanup()
     """
+    tmp, path = _write_temporary(path, data)
+    try:
+        os.replace(tmp, path)
+    except BaseException:
+        _unlink(tmp)
+        raise
+
+
+def atomic_write_all(items, before_renames=None):
+    """Write every ``(path, data)`` of ``items`` as :func:`atomic_write` does, all or none:
+    each to its temporary file first, and only when every one is written (a full disk
+    fails one of them), the renames, in order. A failure or an interrupt before the renames
+    removes the temporary files and leaves every destination as it was; an error names the
+    file. ``before_renames``: called once every file is written, before the first rename.
+    Returns the destination paths (a link's target where a path is a symbolic link)."""
+    written = []
+    try:
+        for path, data in items:
+            written.append(_write_temporary(path, data))
+        if before_renames is not None:
+            before_renames()
+        for tmp, path in written:
+            os.replace(tmp, path)
+    except BaseException:
+        for tmp, _ in written:
+            _unlink(tmp)                # those renamed are gone already: nothing to undo
+        raise
+    return [path for _, path in written]
+
+
+def _write_temporary(path, data):
+    """The checks of :func:`atomic_write`, then ``data`` in a new temporary file beside
+    ``path``, flushed to the disk: (the temporary file, the destination). Nothing is left
+    behind on a failure; an OSError that named no file names ``path``."""
     if not isinstance(data, (str, bytes, bytearray, memoryview)):
         raise TypeError(f"data: expected str or bytes, got {type(data).__name__}")
     path = check_path(path, "path")
@@ -304,7 +338,6 @@ def atomic_write(path, data):
             fh.write(data)
             fh.flush()
             os.fsync(fh.fileno())
-        os.replace(tmp, path)
     except BaseException as exc:
         _unlink(tmp)
         if isinstance(exc, OSError) and exc.filename is None and exc.errno is not None:
@@ -312,6 +345,7 @@ def atomic_write(path, data):
             # line said "error: [Errno 28] No space left on device" of nothing in particular
             raise OSError(exc.errno, exc.strerror, str(path)) from exc
         raise
+    return tmp, path
 
 
 _PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
