@@ -373,6 +373,37 @@ def test_atomic_write_names_the_file_a_full_disk_refused(tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_atomic_write_all_is_all_or_none(tmp_path, monkeypatch):
+    """A set of files (a report set, a frame's depth files, a command's report) written one
+    by one was left half old and half new by a full disk; atomic_write_all writes every one
+    to a temporary file before the first rename: a failure leaves each destination as it was
+    and no temporary file, names the file, and never calls before_renames (H126)."""
+    import errno
+
+    from rgbz_fast.io._files import atomic_write_all
+
+    items = [(tmp_path / n, f"new {n}\n") for n in ("a.txt", "b.txt", "c.txt")]
+    (tmp_path / "a.txt").write_text("old a\n")
+    (tmp_path / "c.txt").write_text("old c\n")
+    fsync, calls, hook = os.fsync, [], []
+
+    def full_at_the_second(fd):
+        calls.append(fd)
+        if len(calls) == 2:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return fsync(fd)
+
+    monkeypatch.setattr(os, "fsync", full_at_the_second)
+    with pytest.raises(OSError) as got:
+        atomic_write_all(items, before_renames=lambda: hook.append(1))
+    assert got.value.errno == errno.ENOSPC and got.value.filename == str(tmp_path / "b.txt")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.txt", "c.txt"] and not hook
+    assert (tmp_path / "a.txt").read_text() == "old a\n"
+    monkeypatch.setattr(os, "fsync", fsync)
+    assert atomic_write_all(items, before_renames=lambda: hook.append(1)) == [p for p, _ in items]
+    assert hook == [1] and [p.read_text() for p, _ in items] == [d for _, d in items]
+
+
 # --------------------------------------------------------------------------- unreadable files
 def _call_without_leaks(fn):
     """Call ``fn`` and collect garbage; fail on an unclosed file (ResourceWarning).

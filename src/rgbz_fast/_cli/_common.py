@@ -805,13 +805,14 @@ def tell_earlier_outputs(out, names, written, command):
 
 
 def write_report(out, files):
-    """Write ``files`` ({name: text or bytes}) into the folder ``out``, each atomically;
-    nothing when ``out`` is None."""
-    from ..io import atomic_write
+    """Write ``files`` ({name: text or bytes}) into the folder ``out``, all or none (each to
+    a temporary file, renamed when every one is written: a full disk leaves the folder's
+    previous files as they were, not one new file beside an old one, H126); nothing when
+    ``out`` is None."""
+    from ..io._files import atomic_write_all
 
     if out is not None:
-        for name, data in files.items():
-            atomic_write(out / name, data)
+        atomic_write_all([(out / name, data) for name, data in files.items()])
 
 
 def tool(name):

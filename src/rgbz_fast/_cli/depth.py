@@ -76,7 +76,8 @@ def run(args):
 
     from .._devtools.plots import (depth_flags_figure, depth_preview, depth_scale,
                                    full_depth_preview, nearest_measurement)
-    from ..io import atomic_write, load_frame
+    from ..io import load_frame
+    from ..io._files import atomic_write_all
     from ..tof import ToFCalibration, tof_depth
 
     c.must_exist(args.frames)
@@ -108,25 +109,28 @@ def run(args):
             depth = res.depth_map().astype(np.float32)         # NaN: colour site or flagged
             flags = res.to_frame(res.flags.astype(np.uint16), fill=NO_MEASUREMENT).astype(np.uint8)
             summary = depth_summary(frame.tof, res)
+            # the frame's files all or none (each to a temporary file, renamed when every one
+            # is written: a full disk leaves a previous run's set as it was, H126)
+            made = []
             buf = io.BytesIO()
             tifffile.imwrite(buf, depth, description=json.dumps(
                 {"unit": "m", "invalid": "NaN", "source": str(f), **summary}))
-            atomic_write(out / tif_name, buf.getvalue())
+            made.append((out / tif_name, buf.getvalue()))
             bits = io.BytesIO()
             tifffile.imwrite(bits, flags, description=json.dumps(
                 {"flags": FLAG_LEGEND, "colour site": NO_MEASUREMENT, "source": str(f)}))
-            atomic_write(out / bits_name, bits.getvalue())
+            made.append((out / bits_name, bits.getvalue()))
             title = (f"{f.stem}: depth, {100 * summary['valid_fraction']:.1f} % of "
                      f"{summary['measurements']} measurements valid")
             nearest = nearest_measurement(res)                  # both figures' grid
             # one colour scale for both previews of the frame (each had taken its own 1st-99th
             # percentile: one colour was two depths in two figures written side by side)
             scale = args.range if args.range is not None else depth_scale(res, nearest)
-            atomic_write(out / png_name, depth_preview(
+            made.append((out / png_name, depth_preview(
                 res, title, scale,
-                frame.tof.valid if "truth_unknown_fraction" in summary else None, nearest))
-            atomic_write(out / flags_name, depth_flags_figure(res, f"{f.stem}: why measurements "
-                                                                    "are flagged", nearest))
+                frame.tof.valid if "truth_unknown_fraction" in summary else None, nearest)))
+            made.append((out / flags_name, depth_flags_figure(
+                res, f"{f.stem}: why measurements are flagged", nearest)))
             if full_names:
                 from ..tof import upsample_depth
                 up, conf = upsample_depth(res, guide, workers=args.workers)
@@ -134,15 +138,16 @@ def run(args):
                 tifffile.imwrite(buf, up, description=json.dumps(
                     {"unit": "m", "invalid": "NaN", "source": str(f),
                      "covered_fraction": float(np.isfinite(up).mean())}))
-                atomic_write(out / full_names[0], buf.getvalue())
-                atomic_write(out / full_names[1], full_depth_preview(
-                    up, f"{f.stem}: depth at every pixel", scale))
+                made.append((out / full_names[0], buf.getvalue()))
+                made.append((out / full_names[1], full_depth_preview(
+                    up, f"{f.stem}: depth at every pixel", scale)))
                 buf = io.BytesIO()                  # how much each depth is to be trusted
                 tifffile.imwrite(buf, conf, description=json.dumps(
                     {"unit": "1", "range": [0, 1], "source": str(f),
                      "meaning": "summed weight of the measurements the depth comes from; 0 where "
                                 "it is NaN"}))
-                atomic_write(out / full_names[2], buf.getvalue())
+                made.append((out / full_names[2], buf.getvalue()))
+            atomic_write_all(made)
             if not args.quiet:
                 extra = "".join(f", {n}" for n in full_names)
                 print(f"{f} -> {out / tif_name}, {png_name}, {flags_name}, {bits_name}{extra}: "
