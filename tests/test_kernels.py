@@ -245,6 +245,22 @@ def test_stub_lists_exactly_the_public_names_of_the_module():
     assert set(stub) == public
 
 
+def test_stub_functions_take_the_parameters_of_the_module():
+    # each stub function's parameters, in order, are the compiled function's (the guided
+    # denoise's and flying test's keywords of 2026-11-28 had been left out of the stub)
+    import ast
+    import inspect
+    from pathlib import Path
+
+    tree = ast.parse((Path(rz.__file__).parent / "_kernels.pyi").read_text())
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef):
+            a = node.args
+            stub = [p.arg for p in a.posonlyargs + a.args + a.kwonlyargs]
+            real = list(inspect.signature(getattr(_kernels, node.name)).parameters)
+            assert stub == real, node.name
+
+
 def test_counting_stub_reexports_exactly_the_public_names_of_the_module():
     # src/rgbz_fast/_kernels_count.pyi: the names of _kernels_count, re-exported from _kernels
     import ast

@@ -229,8 +229,9 @@ def tofg_pass(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, nin: np.ndarray | N
               out_im: np.ndarray | None, out_re64: np.ndarray | None,
               out_im64: np.ndarray | None, out_var: np.ndarray, out_neff: np.ndarray,
               workers: int) -> None: ...
-def tofg_denoise(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, col: np.ndarray,
-                 use: np.ndarray, row_px: np.ndarray, col_px: np.ndarray, reach_r: int,
+def tofg_denoise(zr: np.ndarray | None, zi: np.ndarray | None, v: np.ndarray | None,
+                 col: np.ndarray, use: np.ndarray, row_px: np.ndarray, col_px: np.ndarray,
+                 reach_r: int,
                  reach_c: int, radius_px: int, inv2h2: float, inv2hc2: float,
                  out_re: np.ndarray | None, out_im: np.ndarray | None, out_var: np.ndarray,
                  out_neff: np.ndarray | None, workers: int, freqs: np.ndarray | None = ...,
@@ -243,7 +244,9 @@ def tofg_denoise(zr: np.ndarray, zi: np.ndarray, v: np.ndarray, col: np.ndarray,
                  limits: np.ndarray | None = ..., snr: np.ndarray | None = ...,
                  sigma: np.ndarray | None = ..., refl: np.ndarray | None = ...,
                  flags: np.ndarray | None = ..., offset: np.ndarray | None = ...,
-                 fixed: np.ndarray | None = ...) -> bool: ...
+                 fixed: np.ndarray | None = ..., taps: np.ndarray | None = ...,
+                 prepare: np.ndarray | None = ..., usable: np.ndarray | None = ...,
+                 present: np.ndarray | None = ..., usable_bits: int = ...) -> bool: ...
 def tofg_validity(amp: np.ndarray, var: np.ndarray, depth: np.ndarray, residual: np.ndarray,
                   sat: np.ndarray, sigma_scale: np.ndarray, refl_coef: np.ndarray,
                   min_snr: float, min_amplitude: float, max_sigma: float, max_residual: float,
@@ -281,7 +284,8 @@ def tofg_flying(depth: np.ndarray, sigma: np.ndarray, usable: np.ndarray, col: n
                 cells: np.ndarray | None, ring: np.ndarray | None, R: int, C: int,
                 step: float, k: float,
                 contrast: float, side: float, unflag: int, flags: np.ndarray,
-                depth_out: np.ndarray, workers: int) -> None: ...
+                depth_out: np.ndarray, workers: int, max_range: float = ...,
+                valid: np.ndarray | None = ...) -> None: ...
 def tofg_agree(depth: np.ndarray, low: np.ndarray, lone: np.ndarray, sigma: np.ndarray,
                R: int, C: int, tol_k: float, tol_min: float, workers: int) -> None: ...
 def tofg_upsample(guide: np.ndarray, scale: float, cscale: np.ndarray, depth: np.ndarray,
