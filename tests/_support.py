@@ -156,3 +156,19 @@ class KilledSource(ImageSource):
         import signal
 
         os.kill(os.getpid(), signal.SIGKILL)
+
+
+def disk_full_at(n):
+    """A stand-in for ``os.fsync`` that fails with ENOSPC (a full disk: the error names no
+    file) at its n-th call and syncs the others: for the tests of files written as a set."""
+    import errno
+
+    fsync, calls = os.fsync, []
+
+    def fsync_or_full(fd):
+        calls.append(fd)
+        if len(calls) == n:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return fsync(fd)
+
+    return fsync_or_full

@@ -1452,6 +1452,8 @@ def tofg_denoise(const float[:, ::1] zr, const float[:, ::1] zi, const float[::1
         pi.offset = &offset[0, 0]
         ppi = &pi
     else:
+        if zr is None or zi is None or v is None:
+            raise TypeError("tofg_denoise: expected zr, zi and v, or taps")
         nf = zr.shape[0]
         pzr, pzi, pv = &zr[0, 0], &zi[0, 0], &v[0]
     if col.shape[0] not in (3, 4) or col.shape[1] != R * C:

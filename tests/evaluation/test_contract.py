@@ -325,6 +325,8 @@ def test_a_full_disk_leaves_the_previous_reports_whole(files, tmp_path, monkeypa
     import errno
     import os
 
+    from _support import disk_full_at
+
     kw = dict(metrics=("cfa_psnr",), patterns=("mask1",), progress=False, crop=0)
     first = ev.evaluate([rio.ImageSource("a", str(files / "small.png"))], processes=1,
                         methods=("bi", "sg"), **kw)
@@ -334,15 +336,8 @@ def test_a_full_disk_leaves_the_previous_reports_whole(files, tmp_path, monkeypa
     ev.write_reports(first, out, plots=False)
     before = {p.name: p.read_bytes() for p in out.iterdir()}
     assert "table_a.md" in before
-    fsync, calls = os.fsync, []
-
-    def full_at_the_third(fd):
-        calls.append(fd)
-        if len(calls) == 3:
-            raise OSError(errno.ENOSPC, "No space left on device")
-        return fsync(fd)
-
-    monkeypatch.setattr(os, "fsync", full_at_the_third)
+    fsync = os.fsync
+    monkeypatch.setattr(os, "fsync", disk_full_at(3))
     with pytest.raises(OSError) as got:
         ev.write_reports(second, out, plots=False)
     assert got.value.errno == errno.ENOSPC and got.value.filename.startswith(str(out))

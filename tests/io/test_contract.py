@@ -380,20 +380,14 @@ def test_atomic_write_all_is_all_or_none(tmp_path, monkeypatch):
     and no temporary file, names the file, and never calls before_renames (H126)."""
     import errno
 
+    from _support import disk_full_at
     from rgbz_fast.io._files import atomic_write_all
 
     items = [(tmp_path / n, f"new {n}\n") for n in ("a.txt", "b.txt", "c.txt")]
     (tmp_path / "a.txt").write_text("old a\n")
     (tmp_path / "c.txt").write_text("old c\n")
-    fsync, calls, hook = os.fsync, [], []
-
-    def full_at_the_second(fd):
-        calls.append(fd)
-        if len(calls) == 2:
-            raise OSError(errno.ENOSPC, "No space left on device")
-        return fsync(fd)
-
-    monkeypatch.setattr(os, "fsync", full_at_the_second)
+    fsync, hook = os.fsync, []
+    monkeypatch.setattr(os, "fsync", disk_full_at(2))
     with pytest.raises(OSError) as got:
         atomic_write_all(items, before_renames=lambda: hook.append(1))
     assert got.value.errno == errno.ENOSPC and got.value.filename == str(tmp_path / "b.txt")

@@ -694,7 +694,6 @@ def _run_pool(tasks, nproc, bar, results):
     """The tasks on a local pool of spawned processes, their results into ``results``; the
     warnings of each image issued again here (:class:`_Rows`)."""
     import multiprocessing as mp
-    import warnings
     ctx = mp.get_context("spawn")
     # SIGHUP: the workers leave it to this process when it does not die of it
     hup = getattr(signal, "SIGHUP", None)
@@ -707,8 +706,7 @@ def _run_pool(tasks, nproc, bar, results):
         futs = {ex.submit(_pool_task, t): t[0].name for t in tasks}
         for f in as_completed(futs):
             results[futs[f]] = res = f.result()
-            for text, category in res.warnings:
-                warnings.warn(text, category, stacklevel=2)
+            issue_again(res.warnings)
             bar.update()
     except BrokenProcessPool:
         # a worker killed from outside (the out-of-memory killer, kill -9): the command had
