@@ -34,6 +34,12 @@ ROWS = [
     # -- the build report (rgbz_fast._config) ----------------------------------------------
     R("config.show_config-file", "show_config(1)", lambda f: rz.show_config(1), TypeError,
       "file: expected a text stream with a write() method (or None for stdout), got int"),
+    R("config.memory_pool-negative", "memory_pool(-1)", lambda f: rz.memory_pool(-1),
+      ValueError, "limit: expected 0 <= limit < 2**63 bytes, got -1"),
+    R("config.memory_pool-float", "memory_pool(1.5e9)", lambda f: rz.memory_pool(1.5e9),
+      TypeError, "limit: expected an int number of bytes (or None), got float"),
+    R("config.memory_pool-bool", "memory_pool(True)", lambda f: rz.memory_pool(True),
+      TypeError, "limit: expected an int number of bytes (or None), got bool"),
     # -- patterns (rgbz_fast._patterns) ----------------------------------------------------
     R("patterns.none", "get_pattern(None)", lambda f: rz.get_pattern(None), TypeError,
       "pattern: expected a Pattern, a preset name or a tile string"),

@@ -82,7 +82,7 @@ def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
 # the layers, bottom up: a module may import its own package and the layers below
 _LAYERS = [
     {"_validate", "_threads", "_build_config", "_kernels", "_deps", "_config", "_compat",
-     "_progress"},
+     "_progress", "_memory"},
     {"_patterns", "_sensor_checks", "_sensors", "_frame"},
     {"io"},
     {"simulation", "reconstruction", "tof", "metrics"},

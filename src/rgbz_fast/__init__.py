@@ -59,6 +59,7 @@ from ._build_config import VERSION as __version__
 from ._compat import install_aliases as _install_aliases
 from ._config import config, show_config
 from ._frame import RawFrame, ToFTaps, mosaic
+from ._memory import memory_pool
 from ._patterns import (B, BAYER_PHASES, G, Pattern, R, Z, bayer, get_pattern, mask1, mask2,
                         rows)
 from .isp import ColourISP
@@ -67,7 +68,7 @@ from .reconstruction import (METHODS, NEEDS_TOF, PRECISIONS, FixedPointConfig, R
 from .simulation import ColourSensor, Scene, ToFSensor, load_scene, simulate
 
 __all__ = [
-    "__version__", "show_config", "config",
+    "__version__", "show_config", "config", "memory_pool",
     "Pattern", "bayer", "mask1", "mask2", "rows", "get_pattern", "R", "G", "B", "Z",
     "BAYER_PHASES", "RawFrame", "ToFTaps", "mosaic",
     "reconstruct", "ReconstructParams", "FixedPointConfig", "METHODS", "NEEDS_TOF", "PRECISIONS",

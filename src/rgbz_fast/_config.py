@@ -8,6 +8,7 @@ import sys
 
 from . import _build_config as bc
 from . import _kernels
+from ._memory import memory_pool
 
 __all__ = ["show_config", "config"]
 
@@ -17,7 +18,9 @@ def config():
 
     ``default_workers`` is the number of threads a call with ``workers=None`` runs (every
     core); ``max_threads`` is OpenMP's own default (``omp_get_max_threads()``, which
-    ``OMP_NUM_THREADS`` sets), which the kernels do not use: every call passes its count."""
+    ``OMP_NUM_THREADS`` sets), which the kernels do not use: every call passes its count.
+    ``memory_pool`` is :func:`rgbz_fast.memory_pool`'s report: the memory of freed large
+    result arrays kept for the next call, and its limit."""
     return {
         "version": bc.VERSION,
         "python": sys.version.split()[0],
@@ -32,6 +35,7 @@ def config():
         "default_workers": os.cpu_count() or 1,        # what workers=None runs (unchecked:
                                                        # config reports, it does not refuse)
         "cpu_count": os.cpu_count(),
+        "memory_pool": memory_pool(),
     }
 
 
@@ -64,6 +68,9 @@ def show_config(file=None):
         + (f" (version {c['openmp_version']})" if c['openmp'] and c['openmp_version'] else ""),
         f"  threads       : {c['default_workers']} per call by default (workers=None: every "
         f"core; cores: {c['cpu_count']})",
+        f"  memory pool   : keeps up to {c['memory_pool']['limit'] / 2**20:.0f} MiB of freed "
+        f"result arrays ({c['memory_pool']['kept_bytes'] / 2**20:.0f} MiB kept now; "
+        "rgbz_fast.memory_pool)",
     ]
     omp = os.environ.get("OMP_NUM_THREADS")
     if omp is not None and c["openmp"]:

@@ -1817,3 +1817,97 @@ def ci_encode_rgb(const rgb_t[:, :, ::1] rgb, const rgb_t[::1] matrix,
             status = rgbz_ci_encode_rgb_f64(&rgb[0, 0, 0], npix, m, &thresholds[0], bits,
                                             &out[0, 0, 0], workers)
     _raise_for(status)
+
+
+# ---------------------------------------------------------------------------------------------
+# The pool of large blocks (csrc/pool.h) behind rgbz_fast._memory: arrays over a PoolBlock give
+# its memory back to the pool, not to the system, when the last of them is freed.
+
+from cpython.buffer cimport PyBUF_FORMAT
+from libc.stdint cimport uintptr_t
+
+cdef extern from "Python.h":
+    int PyTraceMalloc_Track(unsigned int domain, uintptr_t ptr, size_t size)
+    int PyTraceMalloc_Untrack(unsigned int domain, uintptr_t ptr)
+
+# NumPy's tracemalloc domain (numpy.lib.tracemalloc_domain): a block is an array's data, and
+# tracemalloc counts it as NumPy's own (the bench's peak memory of one call included)
+cdef unsigned int _NUMPY_DOMAIN = 389047
+
+cdef extern from "pool.h":
+    size_t rgbz_pool_size(size_t n) nogil
+    void *rgbz_pool_take(size_t n) nogil
+    void rgbz_pool_give(void *block, size_t size) nogil
+    size_t rgbz_pool_set_limit(size_t limit) nogil
+    size_t rgbz_pool_get_limit() nogil
+    void rgbz_pool_stats(size_t *blocks, size_t *nbytes, size_t *reused, size_t *mapped) nogil
+
+
+cdef class PoolBlock:
+    """A writable buffer of ``nbytes`` bytes from the pool (csrc/pool.h), its contents
+    undefined; its memory goes back to the pool when the block (and every array or
+    memoryview over it) is freed."""
+    cdef char *ptr
+    cdef size_t size
+    cdef Py_ssize_t shape[1]
+    cdef Py_ssize_t strides[1]
+
+    def __cinit__(self, Py_ssize_t nbytes):
+        if nbytes < 0:
+            raise ValueError(f"nbytes: expected >= 0, got {nbytes}")
+        self.size = rgbz_pool_size(<size_t>nbytes)
+        if self.size == 0:
+            raise MemoryError(f"nbytes: {nbytes} bytes cannot be allocated")
+        with nogil:
+            self.ptr = <char *>rgbz_pool_take(<size_t>nbytes)
+        if self.ptr == NULL:
+            raise MemoryError(f"nbytes: the system has no {nbytes} bytes to give")
+        self.shape[0] = nbytes
+        self.strides[0] = 1
+        PyTraceMalloc_Track(_NUMPY_DOMAIN, <uintptr_t>self.ptr, self.size)
+
+    def __getbuffer__(self, Py_buffer *buf, int flags):
+        buf.buf = self.ptr
+        buf.obj = self
+        buf.len = self.shape[0]
+        buf.readonly = 0
+        buf.itemsize = 1
+        buf.format = NULL
+        if flags & PyBUF_FORMAT:
+            buf.format = b"B"
+        buf.ndim = 1
+        buf.shape = self.shape
+        buf.strides = self.strides
+        buf.suboffsets = NULL
+        buf.internal = NULL
+
+    def __releasebuffer__(self, Py_buffer *buf):
+        pass
+
+    def __dealloc__(self):
+        if self.ptr != NULL:
+            PyTraceMalloc_Untrack(_NUMPY_DOMAIN, <uintptr_t>self.ptr)
+            with nogil:
+                rgbz_pool_give(self.ptr, self.size)
+            self.ptr = NULL
+
+
+def pool_set_limit(size_t limit):
+    """Set the bytes the pool keeps (the kept blocks beyond it given back to the system now);
+    returns the previous limit."""
+    cdef size_t old
+    with nogil:
+        old = rgbz_pool_set_limit(limit)
+    return old
+
+
+def pool_stats():
+    """(limit, kept blocks, kept bytes, blocks reused, blocks newly mapped)."""
+    cdef size_t blocks, nbytes, reused, mapped
+    rgbz_pool_stats(&blocks, &nbytes, &reused, &mapped)
+    return rgbz_pool_get_limit(), blocks, nbytes, reused, mapped
+
+
+def pool_block_size(size_t nbytes):
+    """The bytes the pool maps for a request of ``nbytes`` (rounded up to 2 MiB)."""
+    return rgbz_pool_size(nbytes)

@@ -44,6 +44,7 @@ import weakref
 import numpy as np
 
 from .. import _kernels
+from .._memory import empty as _empty, empty_like as _empty_like
 from .._validate import check_image, check_number, check_workers, finite_range
 from ._filters import SiteGrid, check_scale
 from ._result import ToFDepth
@@ -191,8 +192,8 @@ def guide_colours(g, scale, layout, nthreads, col=None):
     (into ``col`` when given), cells (block^2, 3, N) or None (1x1 Z pixels), and the noise
     sigma_c (3,)."""
     N, b = layout.N, layout.block
-    col = np.empty((3, N), np.float32) if col is None else col
-    cells = np.empty((b * b, 3, N), np.float32) if b > 1 else None
+    col = _empty((3, N), np.float32) if col is None else col
+    cells = _empty((b * b, 3, N), np.float32) if b > 1 else None
     lap, sigma = np.zeros(3), np.empty(3)
     # Immerkaer (1996): sigma = sqrt(pi / 2) / (6 (R - 2)(C - 2)) sum |L * image|, at least
     # NOISE_FLOOR; the kernel divides col and cells by sqrt(2) sigma
@@ -211,7 +212,7 @@ def guide_ring(g, scale, layout, sigma, nthreads):
     if b == 1:
         return None
     inv = np.ascontiguousarray(scale / (math.sqrt(2.0) * np.asarray(sigma, np.float64)))
-    ring = np.empty((4 * b + 4, 3, layout.N), np.float32)
+    ring = _empty((4 * b + 4, 3, layout.N), np.float32)
     _kernels.tofg_ring(g, layout.rows, layout.cols, b, inv, ring, nthreads)
     return ring
 
@@ -238,10 +239,10 @@ def guided_flags(depth, sigma, flags, layout, col, cells, ring, step, max_range,
     within 5 sigma of ``max_range`` or beyond) is flagged OUT_OF_RANGE too (H76), so that
     :func:`upsample_depth` leaves it out."""
     if usable is None:
-        usable = np.empty(layout.N, np.uint8)
+        usable = _empty(layout.N, np.uint8)
         _kernels.tofg_usable(flags, depth, sigma, _present(layout), USABLE_BITS, usable,
                              nthreads)
-    out = np.empty_like(depth)
+    out = _empty_like(depth)
     # the resolved depths under the validity's range test in the kernel (FLAG_OUT_OF_RANGE
     # where d < 0 or d > max_range - 5 sigma)
     _kernels.tofg_flying(depth, sigma, usable, col, cells, ring, layout.R,
@@ -285,14 +286,14 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     k = sensor.system_gain
     supp = collected_scale(sensor)
     const_var = k * k * (sensor.read_noise ** 2 + sensor.dsnu ** 2) + 1.0 / 12.0
-    offset = np.empty((F, N))
+    offset = _empty((F, N))
     # the colours, and with a fixed pattern (DSNU, PRNU) each measurement's share of it in
     # its variance: the range kernel's distance then knows that pattern's one error in every
     # frequency (tofg_xp in csrc/tof_guided.c)
     # (not with a calibration: it turns each frequency's phasors by its own offset before
     # the denoise, so the fixed pattern's error is no longer one offset in every frequency)
     fixed = bool(sensor.dsnu or sensor.prnu) and cal is None
-    colp = np.empty((4 if fixed else 3, N), np.float32)
+    colp = _empty((4 if fixed else 3, N), np.float32)
     dn = dark_noise(cal)
     prepare = np.array([k, float(sensor.black_level), supp, const_var, prnu_gain(sensor),
                         float(tof.white_level),
@@ -333,9 +334,9 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     # tofg_validity and tof_fixed_pattern give after the call, bit for bit but sigma (the
     # pattern's cosines from the mean phasors, within 2 ulps; tests/tof/test_guided.py)
     # n_eff comes in count's public dtype, float64, from the kernel
-    var, count = np.empty(N, np.float32), np.empty(N)
-    snr, sigma, refl = np.empty(N), np.empty(N), np.empty(N)
-    flags = np.empty(N, np.uint8)
+    var, count = _empty(N, np.float32), _empty(N)
+    snr, sigma, refl = _empty(N), _empty(N), _empty(N)
+    flags = _empty(N, np.uint8)
     sigma_scale, refl_coef = _radiometry(tof, f)
     limits = np.array([p.min_snr, p.min_amplitude, -1.0 if p.max_sigma is None else p.max_sigma,
                        p.max_residual, p.min_reflectance, max_range,
@@ -344,10 +345,10 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
             inv2hc2)
     # the flying test's usable measurements, made with each row's validity (the same as
     # tofg_usable after it)
-    usable = np.empty(N, np.uint8) if p.flying_step is not None and cal is None else None
+    usable = _empty(N, np.uint8) if p.flying_step is not None and cal is None else None
     if cal is None:
-        depth, residual, wraps = np.empty(N), np.empty(N), np.empty(N, np.int32)
-        phase, amp = np.empty((F, N)), np.empty((F, N))
+        depth, residual, wraps = _empty(N), _empty(N), _empty(N, np.int32)
+        phase, amp = _empty((F, N)), _empty((F, N))
         if not _kernels.tofg_denoise(*args, None, None, var, None, nthreads,
                                      np.ascontiguousarray(f, np.float64),
                                      np.ascontiguousarray(w, np.float64), max_range, depth,
@@ -377,7 +378,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     measured = depth
     valid = None
     if p.flying_step is not None:
-        valid = np.empty(N, bool)               # flags == 0, made by the flying test's rows
+        valid = _empty(N, bool)               # flags == 0, made by the flying test's rows
         depth = guided_flags(measured, sigma, flags, layout, col, cells,
                              guide_ring(g, scale, layout, sigma_c, nthreads), p.flying_step,
                              max_range, nthreads, usable=usable, valid=valid)
@@ -537,8 +538,8 @@ def upsample_depth(result, guide, *, colour_scale=UPSAMPLE_COLOUR_SCALE,
     cc = np.ascontiguousarray(layout.cols + half, np.float64)
     steps = np.diff(rc) if rc.size > 1 else np.diff(cc)
     spacing = float(np.median(steps)) if steps.size else 1.0
-    out = np.empty(result.shape, np.float32)
-    conf = np.empty(result.shape, np.float32)
+    out = _empty(result.shape, np.float32)
+    conf = _empty(result.shape, np.float32)
     cscale = np.ascontiguousarray(1.0 / (math.sqrt(2.0) * sigma_c))
     _kernels.tofg_upsample(g, scale, cscale, depth, sigma, col, layout.R, layout.C, rc, cc,
                            spacing, _FILL_REACH, 1.0 / (2.0 * _FILL_SPREAD ** 2),
