@@ -163,3 +163,32 @@ class GuidedToFISPSuite:
 
     def time_upsample_depth(self, shape, pattern):
         self.upsample(self.result, self.guide)
+
+
+class GuidedToFISPPoolSuite:
+    """The colour-guided ToF ISP with the memory pool (``rgbz_fast.memory_pool``) on, the
+    default, and off: a call of a loop whose results land on the pages the previous call's
+    freed results kept, against one that writes them into fresh pages (the pool emptied
+    before each call). Mask1, the frame of ``GuidedToFISPSuite``."""
+    params = ([(512, 768), (3000, 4000)], ["on", "off"])
+    param_names = ["shape", "pool"]
+    timeout = 600
+
+    def setup(self, shape, pool):
+        import rgbz_fast as rz
+        if not hasattr(rz, "memory_pool"):
+            raise NotImplementedError("no memory pool in this commit")
+        GuidedToFISPSuite.setup(self, shape, "mask1")
+        self.pool = rz.memory_pool
+        self.limit = rz.memory_pool()["limit"]
+
+    def teardown(self, shape, pool):
+        self.pool(self.limit)
+
+    def time_guided_isp(self, shape, pool):
+        if pool == "off":
+            self.pool(0)
+            self.isp.run(self.tof, guide=self.guide)
+            self.pool(self.limit)
+        else:
+            self.isp.run(self.tof, guide=self.guide)

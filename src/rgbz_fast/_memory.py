@@ -26,13 +26,15 @@ from . import _kernels
 
 __all__ = ["empty", "empty_like", "memory_pool", "POOL_MIN_BYTES"]
 
-#: arrays smaller than this come from ``numpy.empty`` (glibc's heap reuses them already)
-POOL_MIN_BYTES = 1 << 20
+#: arrays smaller than this come from ``numpy.empty``: glibc's heap recycles them well enough,
+#: and the pool's ``MADV_FREE`` on every block given back cost a Kodak-size guided call 2-5 %
+#: when its 2.4 MB arrays went through the pool (docs/reports/benchmarks.md)
+POOL_MIN_BYTES = 4 << 20
 
 
 def empty(shape, dtype=np.float64):
     """``numpy.empty(shape, dtype)`` (C order), from the pool when it is at least
-    :data:`POOL_MIN_BYTES` and the pool's limit is not 0."""
+    :data:`POOL_MIN_BYTES` (4 MiB) and the pool's limit is not 0."""
     dtype = np.dtype(dtype)
     shape = (operator.index(shape),) if not isinstance(shape, tuple) else shape
     count = math.prod(shape)
@@ -52,7 +54,7 @@ def memory_pool(limit=None):
     """The pool that keeps the memory of freed large result arrays for the next call.
 
     The colour-guided ToF ISP (``ToFISP().run(tof, guide=...)``) and
-    :func:`rgbz_fast.tof.upsample_depth` return their arrays of 1 MiB or more on memory of
+    :func:`rgbz_fast.tof.upsample_depth` return their arrays of 4 MiB or more on memory of
     this pool. When such an array is freed, its memory is kept (up to ``limit`` bytes, the
     oldest given back first) and the next array of the same size takes it with its pages
     still mapped: a loop of calls on frames of one size then writes no fresh pages. On
