@@ -219,3 +219,42 @@ def test_guided_isp_and_upsample_give_the_same_results_on_used_memory(pool, monk
         assert _block(up[0]) is not None
         for a, b in zip(fresh_up, up):
             np.testing.assert_array_equal(b, a)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc: Linux")
+def test_kept_memory_goes_back_when_a_new_array_does_not_fit_the_address_space():
+    # under ulimit -v, 400 MiB kept by the pool would leave no room for a 300 MiB array: the
+    # pool gives its blocks back and the array is made (in a child: the limit is the process's)
+    import subprocess
+    code = """
+import resource, re
+import numpy as np
+from rgbz_fast import _memory
+MiB = 1 << 20
+vm = int(re.search(r"VmSize:\\s+(\\d+)", open("/proc/self/status").read()).group(1)) * 1024
+resource.setrlimit(resource.RLIMIT_AS, (vm + 600 * MiB, resource.RLIM_INFINITY))
+kept = [_memory.empty(100 * MiB, np.uint8) for _ in range(4)]
+del kept
+assert _memory.memory_pool()["kept_bytes"] == 400 * MiB
+b = _memory.empty(300 * MiB, np.uint8)
+b[:] = 1
+assert _memory.memory_pool()["kept_bytes"] == 0
+print("ok")
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert r.stdout.strip() == "ok"
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS: POSIX")
+def test_the_default_limit_is_an_eighth_of_a_smaller_address_space_limit():
+    import subprocess
+    code = ("import resource; resource.setrlimit(resource.RLIMIT_AS, (4 << 30, "
+            "resource.RLIM_INFINITY)); import rgbz_fast; print(rgbz_fast.memory_pool()['limit'])")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert int(r.stdout) == (4 << 30) // 8
+    import resource
+    soft = resource.getrlimit(resource.RLIMIT_AS)[0]      # this process's own
+    assert _memory._default_limit() == (_memory.DEFAULT_LIMIT if soft == resource.RLIM_INFINITY
+                                        else min(_memory.DEFAULT_LIMIT, soft // 8))

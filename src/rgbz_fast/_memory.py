@@ -24,12 +24,33 @@ import numpy as np
 
 from . import _kernels
 
-__all__ = ["empty", "empty_like", "memory_pool", "POOL_MIN_BYTES"]
+__all__ = ["empty", "empty_like", "memory_pool", "POOL_MIN_BYTES", "DEFAULT_LIMIT"]
 
 #: arrays smaller than this come from ``numpy.empty``: glibc's heap recycles them well enough,
 #: and the pool's ``MADV_FREE`` on every block given back cost a Kodak-size guided call 2-5 %
 #: when its 2.4 MB arrays went through the pool (docs/reports/benchmarks.md)
 POOL_MIN_BYTES = 4 << 20
+
+
+#: bytes the pool keeps at most by default
+DEFAULT_LIMIT = 1 << 30
+
+
+def _default_limit():
+    """:data:`DEFAULT_LIMIT`, or an eighth of the process's address-space limit (``ulimit -v``)
+    when that is smaller: kept memory counts against it, and a NumPy array made elsewhere
+    would not find the room the pool holds."""
+    try:
+        import resource
+        soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+    except (ImportError, OSError, ValueError, AttributeError):
+        return DEFAULT_LIMIT
+    if soft == resource.RLIM_INFINITY or soft < 0:
+        return DEFAULT_LIMIT
+    return min(DEFAULT_LIMIT, soft // 8)
+
+
+_kernels.pool_set_limit(_default_limit())
 
 
 def empty(shape, dtype=np.float64):
@@ -41,7 +62,14 @@ def empty(shape, dtype=np.float64):
     nbytes = count * dtype.itemsize
     if nbytes < POOL_MIN_BYTES or dtype.hasobject or _kernels.pool_stats()[0] == 0:
         return np.empty(shape, dtype)
-    block = _kernels.PoolBlock(nbytes)
+    try:
+        block = _kernels.PoolBlock(nbytes)
+    except MemoryError:
+        # no address space or memory for a new block (ulimit -v, a full machine): the kept
+        # blocks go back to the system first, then NumPy allocates (and raises its own
+        # error, which names the array's size, when that fails too)
+        _kernels.pool_set_limit(_kernels.pool_set_limit(0))
+        return np.empty(shape, dtype)
     return np.frombuffer(block, dtype, count).reshape(shape)
 
 
@@ -65,8 +93,11 @@ def memory_pool(limit=None):
     Parameters
     ----------
     limit : int, optional
-        Bytes to keep at most (default 1 GiB). ``0`` turns the pool off: the kept memory
-        goes back to the system now, and new arrays come from ``numpy.empty``.
+        Bytes to keep at most (default 1 GiB, or an eighth of the process's address-space
+        limit, ``ulimit -v``, when that is smaller). ``0`` turns the pool off: the kept
+        memory goes back to the system now, and new arrays come from ``numpy.empty``.
+        When a new block does not fit in memory or the address space, the kept ones go
+        back to the system and NumPy makes the array.
 
     Returns
     -------
