@@ -51,6 +51,10 @@ def test_empty_is_numpy_empty_below_the_threshold_and_a_pool_block_above(pool):
     assert _address(big) % (2 * MiB) == 0
     big[:] = 7.0
     assert float(big.sum()) == 7.0 * big.size
+    assert _memory.empty([2, 600_000], np.float32).shape == (2, 600_000)     # any sequence
+    assert _memory.empty(np.int64(600_000)).shape == (600_000,)
+    with pytest.raises(ValueError):
+        _memory.empty((-1, 4))                  # numpy.empty's own error
     like = _memory.empty_like(big)
     assert like.shape == big.shape and like.dtype == big.dtype and _block(like) is not None
     assert not np.shares_memory(like, big)

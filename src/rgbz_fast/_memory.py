@@ -57,7 +57,8 @@ def empty(shape, dtype=np.float64):
     """``numpy.empty(shape, dtype)`` (C order), from the pool when it is at least
     :data:`POOL_MIN_BYTES` (4 MiB) and the pool's limit is not 0."""
     dtype = np.dtype(dtype)
-    shape = (operator.index(shape),) if not isinstance(shape, tuple) else shape
+    shape = tuple(map(operator.index, shape)) if np.iterable(shape) else \
+        (operator.index(shape),)
     count = math.prod(shape)
     nbytes = count * dtype.itemsize
     if nbytes < POOL_MIN_BYTES or dtype.hasobject or _kernels.pool_stats()[0] == 0:
