@@ -18,6 +18,12 @@ of ROUNDS (default 7) rounds, the cases alternated round by round:
 - the arrays of the returned ToFDepth (their shapes and types): written once with 2 threads
   into fresh arrays, and into the same arrays again -- what the result costs in page faults
   alone, whatever computes it.
+
+Since 2026-11-28 the call takes its large arrays from the memory pool
+(``rgbz_fast.memory_pool``), which keeps the memory of the last call's freed results; the
+"fresh" cases here allocate with ``numpy.empty_like``, outside the pool, so they find the
+memory the pool does not hold (on a VM that reports free memory to its host, memory the host
+must fill again: slower than without the pool, docs/reports/benchmarks.md).
 """
 
 import os
