@@ -60,7 +60,7 @@ def _check_speeds(res, tmp_path):
     for key in ("c_1", "c_all", "c_stages_all", "numpy"):
         assert _finite_positive(tof[key]["msites_s"]) and tof[key]["n"] == 1
     assert tof["agreement"]["wraps_equal"] and tof["agreement"]["max_abs_depth_diff_m"] < 1e-9
-    assert res["memory"] is None and res["colour_chain"] is None
+    assert res["memory"] is None and res["colour_chain"] is None and res["tof_isp"] is None
     assert json.loads((tmp_path / "bench.json").read_text())["frame"]["pixels"] == 48 * 64
     return tof
 
@@ -131,6 +131,15 @@ def test_bench_colour_chain_section(capsys):
     assert {t["met"] for t in sim["targets"].values()} == {None}      # not the target frame
     text = bench.format_simulate(sim)
     assert "noise-free" in text and "no verdict" in text
+    t = res["tof_isp"]
+    assert t["frame_shape"] == [48, 64] and t["n_sites"] == 48 * 64 // 4 and t["pattern"] == "mask1"
+    assert t["guided"]["msites_s"] > 0 and t["unguided"]["msites_s"] > 0
+    assert t["upsample"]["mpix_s"] > 0 and 0 < t["valid_share"] <= 1
+    assert set(t["targets"]) == {"guided", "upsample"}
+    assert {g["met"] for g in t["targets"].values()} == {None}         # not the target frame
+    text = bench.format_tof_isp(t)
+    assert "ToFISP().run(tof, guide=image)" in text and "upsample_depth" in text
+    assert "target guided >= 20 M measurements/s" in text and "no verdict" in text
 
 
 def test_measure_memory_tiny_frame(tmp_path, monkeypatch):

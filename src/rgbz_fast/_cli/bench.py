@@ -44,7 +44,11 @@ call), with 1 thread and with all threads. Beside it:
   threads, with the paired speed ratios (medians); and the sensor
   simulation of the image with a depth plane (as rgbz-fast simulate makes it, 3 ToF
   frequencies, no optics), noise-free and noisy, on Mask1 and Mask2 (targets on
-  the full frame, Mask1: <= 0.5 s noise-free, <= 1 s noisy).
+  the full frame, Mask1: <= 0.5 s noise-free, <= 1 s noisy); and the ToF ISP on
+  the simulated Mask1 frame as a loop over frames runs it: the ISP guided by the
+  frame's own colour image (target >= 20 M measurements/s on the full frame), then
+  upsample_depth of its result (target >= 50 Mpix/s), the results dropped before
+  the next round; and the unguided ISP on its own.
 * Peak memory of one reconstruct call on the full frame, measured in a fresh
   subprocess: the growth of the peak resident set size across the call, and
   the peak of its NumPy allocations, against the input
@@ -83,7 +87,8 @@ def add_parser(sub):
     p.add_argument("--no-tof-sites", action="store_true",
                    help="skip the ToF section (C vs NumPy in M measurements/s)")
     p.add_argument("--chain", action="store_true",
-                   help="also time the colour ISP (fused and stage by stage) and the simulation")
+                   help="also time the colour ISP (fused and stage by stage), the simulation "
+                        "and the ToF ISP")
     c.add_report_options(p)
     return p
 

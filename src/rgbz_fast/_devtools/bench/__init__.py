@@ -28,13 +28,15 @@ from .._common import machine_info, progress
 from ..timing import WARMUP_CALLS, interleaved, rate_stats, ratio, timed
 from .cases import (FULL_SHAPE, TOF_TARGET_X_NUMPY, OpenCVThreads, build_cases, case_label,
                     colour_chain_benchmark, load_numpy_reference, make_rgb, opencv_calls,
-                    opencv_speeds, simulate_benchmark, tof_sites_benchmark)
+                    opencv_speeds, simulate_benchmark, tof_isp_benchmark, tof_sites_benchmark)
 from .memory import measure_memory
-from .report import QUICK_NOTE, format_chain, format_simulate, format_table, format_tof
+from .report import (QUICK_NOTE, format_chain, format_simulate, format_table, format_tof,
+                     format_tof_isp)
 
 __all__ = ["run_benchmarks", "NoCase", "check_shape", "format_table", "format_tof", "format_chain",
-           "format_simulate", "load_numpy_reference", "make_rgb", "measure_memory",
+           "format_simulate", "format_tof_isp", "load_numpy_reference", "make_rgb", "measure_memory",
            "tof_sites_benchmark", "colour_chain_benchmark", "simulate_benchmark",
+           "tof_isp_benchmark",
            "FULL_SHAPE", "QUICK_SHAPE", "TARGET_SG_MPIX",
            "QUICK_NOTE"]
 
@@ -70,8 +72,9 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
     slow reconstruction reference), timed beside the C kernels; None: not timed.
     ``tof_sites``: the ToF section (C vs NumPy, M measurements/s); it runs unless
     ``kernels`` is given and none of its entries occurs in ``"tof sites"``.
-    ``chain``: the colour ISP stage by stage, and :func:`rgbz_fast.simulate` of the frame
-    with a depth map (noise-free and noisy, Mask1 and Mask2). ``quick``: a smoke test, the speeds
+    ``chain``: the colour ISP stage by stage, :func:`rgbz_fast.simulate` of the frame
+    with a depth map (noise-free and noisy, Mask1 and Mask2), and the ToF ISP on the
+    simulated Mask1 frame (guided, unguided, ``upsample_depth``). ``quick``: a smoke test, the speeds
     only: no ratio (``vs_numpy``, ``vs_opencv_*``, the ToF ``x_numpy_*``) and no
     target verdict (``targets`` is empty).
     """
@@ -128,6 +131,8 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
     colour = colour_chain_benchmark(shape, repeat, workers) if chain else None
     sim = simulate_benchmark(shape, repeat, workers, verdict=not quick and tuple(shape) ==
                              FULL_SHAPE) if chain else None
+    tof_isp = tof_isp_benchmark(shape, repeat, workers, verdict=not quick and tuple(shape) ==
+                                FULL_SHAPE) if chain else None
     mem = measure_memory(frame("mask1").data, "mask1", "sg", "float32", workers) \
         if memory and not kernels_only else None
     verdict = not quick and tuple(shape) == FULL_SHAPE
@@ -141,7 +146,7 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         "numpy_reference": {"available": numpy_reference is not None and reference,
                             "crop": [ref_crop[0] // 12 * 12, ref_crop[1] // 4 * 4]},
         "results": results, "opencv": ocv, "tof_sites": tof, "colour_chain": colour,
-        "simulate": sim,
+        "simulate": sim, "tof_isp": tof_isp,
         "memory": mem, "targets": {} if quick else _targets(results, ocv, tof, mem, verdict),
     }
 

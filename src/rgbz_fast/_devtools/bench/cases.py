@@ -17,7 +17,8 @@ from ..timing import WARMUP_CALLS, interleaved, rate_stats, timed
 
 __all__ = ["make_rgb", "load_numpy_reference", "tof_taps", "build_cases", "case_label",
            "opencv_calls", "opencv_speeds", "OpenCVThreads", "tof_sites_benchmark", "colour_chain_benchmark",
-           "simulate_benchmark", "bench_depth", "SIMULATE_TARGETS_S", "FULL_SHAPE", "RECON_METHODS", "PATTERNS", "PRECISIONS", "TOF_FREQS",
+           "simulate_benchmark", "tof_isp_benchmark", "bench_depth", "SIMULATE_TARGETS_S",
+           "TOF_ISP_TARGETS", "FULL_SHAPE", "RECON_METHODS", "PATTERNS", "PRECISIONS", "TOF_FREQS",
            "TOF_TARGET_X_NUMPY"]
 
 FULL_SHAPE = (3000, 4000)     # rows, cols: a 3000x4000 (12 Mpix) frame
@@ -31,6 +32,9 @@ TOF_FREQS = (80e6, 100e6, 120e6)
 TOF_TARGET_X_NUMPY = 5.0
 #: the simulate case's targets on the full frame, Mask1 with ToF: seconds, noise-free / noisy
 SIMULATE_TARGETS_S = {"noise_free": 0.5, "noisy": 1.0}
+#: the ToF ISP case's targets on the full frame, Mask1: the colour-guided ISP in million
+#: measurements per second, upsample_depth in Mpix/s (issue 25)
+TOF_ISP_TARGETS = {"guided": 20.0, "upsample": 50.0}
 
 
 def make_rgb(shape):
@@ -406,3 +410,55 @@ def simulate_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, patterns=("mask
                           "met": bool(got <= limit) if verdict else None}
     return dict(frame_shape=list(shape), workers=workers, repeat=repeat, scene_s=scene_s,
                 frequencies=3, optics=None, patterns=out, targets=targets)
+
+
+def tof_isp_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, pattern="mask1", verdict=True):
+    """The ToF ISP on the simulate case's frame (the benchmark image with its depth plane,
+    noisy, seed 1, ``pattern``), as a loop over frames runs it: each round
+    ``ToFISP().run(tof, guide=image)`` with the frame's own colour image
+    (``ColourISP().run(frame)``), then ``upsample_depth`` of that result, both timed, the
+    results dropped before the next round (their arrays land on the memory pool's kept
+    pages, :func:`rgbz_fast.memory_pool`); then ``ToFISP().run(tof)`` (the default bilateral
+    denoise) on its own, ``repeat`` calls (its 0.9 GiB of fresh arrays a call, between the
+    guided calls, would be a loop no program runs). Medians, in million measurements (the
+    ISP) or pixels (the upsampling) per second, and the targets of :data:`TOF_ISP_TARGETS`
+    (Mask1, the full frame; None without a verdict)."""
+    import time
+
+    from ... import memory_pool
+    from ...isp import ColourISP
+    from ...simulation import Scene, simulate
+    from ...tof import ToFISP, upsample_depth
+
+    workers = workers or (os.cpu_count() or 1)
+    frame = simulate(Scene(make_rgb(shape), depth=bench_depth(shape)), pattern, seed=1,
+                     workers=workers)
+    guide = ColourISP().run(frame, workers=workers)
+    tof, isp = frame.tof, ToFISP()
+    chain = {"guided": [], "upsample": []}
+    valid = []
+
+    def depth_chain():
+        t0 = time.perf_counter()
+        result = isp.run(tof, guide=guide, workers=workers)
+        t1 = time.perf_counter()
+        upsample_depth(result, guide, workers=workers)
+        chain["guided"].append(t1 - t0)
+        chain["upsample"].append(time.perf_counter() - t1)
+        valid.append(float(result.valid.mean()) if result.valid.size else 0.0)
+
+    interleaved({"chain": depth_chain}, repeat)
+    times = {k: v[-repeat:] for k, v in chain.items()}
+    times.update(interleaved({"unguided": lambda: isp.run(tof, workers=workers)}, repeat))
+    n, npix = tof.n_sites, shape[0] * shape[1]
+    out = {k: rate_stats(v, npix if k == "upsample" else n, "mpix" if k == "upsample"
+                         else "msites") for k, v in times.items()}
+    targets = {}
+    if pattern == "mask1":
+        for k, limit in TOF_ISP_TARGETS.items():
+            got = out[k]["mpix_s" if k == "upsample" else "msites_s"]
+            targets[k] = {"rate": got, "target": limit,
+                          "met": bool(got >= limit) if verdict else None}
+    return dict(pattern=pattern, frame_shape=list(shape), n_sites=n, workers=workers,
+                repeat=repeat, valid_share=valid[-1],
+                memory_pool_limit=memory_pool()["limit"], **out, targets=targets)

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from ..timing import WARMUP_CALLS
 
-__all__ = ["format_table", "format_tof", "format_chain", "format_simulate", "QUICK_NOTE"]
+__all__ = ["format_table", "format_tof", "format_chain", "format_simulate", "format_tof_isp",
+           "QUICK_NOTE"]
 
 #: what a quick run says instead of ratios and verdicts
 QUICK_NOTE = "quick run: numbers not comparable, no verdict"
@@ -104,6 +105,8 @@ def format_table(res):
         lines += ["", format_chain(res["colour_chain"])]
     if res.get("simulate"):
         lines += ["", format_simulate(res["simulate"])]
+    if res.get("tof_isp"):
+        lines += ["", format_tof_isp(res["tof_isp"])]
     mem = res["memory"]
     if mem:
         if "error" in mem:
@@ -188,6 +191,30 @@ def format_simulate(sim):
                    else "met" if t["met"] else "NOT met")
         lines.append(f"  target mask1 {k.replace('_', '-')} <= {t['target_s']:g} s: "
                      f"{t['seconds']:.3f} s, {verdict}")
+    return "\n".join(lines)
+
+
+def format_tof_isp(t):
+    """The ToF ISP section: the guided and unguided ISP and upsample_depth, and the targets."""
+    h, w = t["frame_shape"]
+    lines = [f"ToF ISP: the simulate case's {t['pattern']} frame, {h}x{w}, {t['n_sites']} "
+             f"measurements, {t['workers']} threads, median of {t['repeat']} rounds of the "
+             f"guided ISP then upsample_depth of its result, then of {t['repeat']} unguided "
+             f"calls (memory pool {t['memory_pool_limit'] / 2**20:.0f} MiB; "
+             f"{100 * t['valid_share']:.1f} % valid, guided)"]
+    for key, label in (("guided", "ToFISP().run(tof, guide=image)"),
+                       ("unguided", "ToFISP().run(tof)")):
+        r = t[key]
+        lines.append(f"  {label:<32} {r['median_s']:.3f} s (best {r['min_s']:.3f})  "
+                     f"{r['msites_s']:.1f} M measurements/s")
+    r = t["upsample"]
+    lines.append(f"  {'upsample_depth(result, image)':<32} {r['median_s']:.3f} s (best "
+                 f"{r['min_s']:.3f})  {r['mpix_s']:.1f} Mpix/s")
+    for k, g in t["targets"].items():
+        verdict = ("no verdict (not the target frame)" if g["met"] is None
+                   else "met" if g["met"] else "NOT met")
+        unit = "Mpix/s" if k == "upsample" else "M measurements/s"
+        lines.append(f"  target {k} >= {g['target']:g} {unit}: {g['rate']:.1f}, {verdict}")
     return "\n".join(lines)
 
 
