@@ -378,7 +378,7 @@ def guided_run(tof, p, g, scale, nthreads, f, w, max_range, unwrap_iq):
     measured = depth
     valid = None
     if p.flying_step is not None:
-        valid = _empty(N, bool)               # flags == 0, made by the flying test's rows
+        valid = _empty(N, bool)                 # flags == 0, made by the flying test's rows
         depth = guided_flags(measured, sigma, flags, layout, col, cells,
                              guide_ring(g, scale, layout, sigma_c, nthreads), p.flying_step,
                              max_range, nthreads, usable=usable, valid=valid)
