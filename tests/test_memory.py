@@ -262,3 +262,12 @@ def test_the_default_limit_is_an_eighth_of_a_smaller_address_space_limit():
     soft = resource.getrlimit(resource.RLIMIT_AS)[0]      # this process's own
     assert _memory._default_limit() == (_memory.DEFAULT_LIMIT if soft == resource.RLIM_INFINITY
                                         else min(_memory.DEFAULT_LIMIT, soft // 8))
+
+
+def test_the_build_report_shows_the_pool(pool):
+    import io
+    pool(256 * MiB)
+    out = io.StringIO()
+    rz.show_config(out)
+    assert "memory pool   : keeps up to 256 MiB of freed result arrays" in out.getvalue()
+    assert rz.config()["memory_pool"]["limit"] == 256 * MiB
