@@ -425,7 +425,7 @@ def tof_isp_benchmark(shape=FULL_SHAPE, repeat=3, workers=None, pattern="mask1",
     (Mask1, the full frame; None without a verdict)."""
     import time
 
-    from ... import memory_pool
+    from ..._memory import memory_pool
     from ...isp import ColourISP
     from ...simulation import Scene, simulate
     from ...tof import ToFISP, upsample_depth
