@@ -22,12 +22,20 @@ MiB = 1 << 20
 
 @pytest.fixture
 def pool():
-    """The pool with its default limit and nothing kept; the limit restored after."""
+    """The pool with its default limit and nothing kept; the limit restored after. The
+    garbage collector is off meanwhile: the pooled arrays of an earlier test's garbage
+    cycles, collected in the middle of a test, would change what the pool keeps."""
+    import gc
+    gc.collect()
     limit = rz.memory_pool()["limit"]
     rz.memory_pool(0)
     rz.memory_pool(limit)
-    yield rz.memory_pool
-    rz.memory_pool(limit)
+    gc.disable()
+    try:
+        yield rz.memory_pool
+    finally:
+        gc.enable()
+        rz.memory_pool(limit)
 
 
 def _address(a):
