@@ -13,9 +13,26 @@
 #include "recon.h"
 #include "recon_mask1.h"
 #include "rgbz_exp.h"
+#include "recon_mask2.h"
+
+/* SG on Mask2's GRBG plans as straight-line code (recon_mask2.h): float only */
+#if RGBZ_HAVE_M2
+#define RGBZ_M2_INDEX(p) rgbz_m2_index(p)
+#define RGBZ_M2_RUN(k, v, n, kn, r) rgbz_m2_run(k, v, n, (kn)->floor_, (kn)->rel, r)
+#endif
 
 #define REAL float
 #define RS f32
 #include "recon_core.template.h"
 #undef REAL
 #undef RS
+
+int rgbz_mask2_plan_index(const rgbz_plan *p)
+{
+#if RGBZ_HAVE_M2
+    return p ? rgbz_m2_index(p) : -1;
+#else
+    (void)p;
+    return -1;
+#endif
+}

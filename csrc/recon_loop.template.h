@@ -163,7 +163,7 @@ RGBZ_CLONES_512 static int LFN(rgbz_span_reaches)(const LFN(rgbz_row) *w, ptrdif
  * Near the borders each tap is gathered through the column map.
  */
 RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_plan *p,
-                                        const rgbz_plan *pg, int m1,
+                                        const rgbz_plan *pg, int m1, int m2,
                                         ptrdiff_t cols, ptrdiff_t x0, ptrdiff_t x1,
                                         const RGBZ_CAT(rgbz_knobs, RS) *kn, REAL maxval,
                                         int clip_on, IN_T clip_thr, IN_T *drow)
@@ -252,6 +252,10 @@ RGBZ_CLONES_512 static void LFN(rgbz_sites)(const LFN(rgbz_row) *w, const rgbz_p
                             w, xb - w->rx, xb + (ptrdiff_t)(n - 1) * px + w->rx, clip_thr));
         if (m1 >= 0)
             RGBZ_CAT(rgbz_mask1_core, RS)[m1](v, n, kn, r);
+#ifdef RGBZ_M2_RUN
+        else if (m2 >= 0)
+            RGBZ_M2_RUN(m2, v, n, kn, r);
+#endif
         else
             RGBZ_CAT(rgbz_core_plan, RS)(p, v, n, kn, r);
         if (hit) {
@@ -336,6 +340,18 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
             if (phase_map[i] >= 0) zr = i / 2;
         m1 = rgbz_mask1_index(plans[0].method, plans[0].use_grad && plans[0].use_sg);
     }
+    /* plans equal to one of recon_mask2.h's (SG on Mask2, float32, the fast exponential): run
+       as its straight-line code, the same bits (m2[pl] its index, or -1) */
+    int n_pl = 0;
+    for (int i = 0; i < py * px; i++) n_pl = phase_map[i] + 1 > n_pl ? phase_map[i] + 1 : n_pl;
+    int *m2 = (int *)malloc((size_t)(n_pl > 0 ? n_pl : 1) * sizeof(int));
+    if (!m2) return RGBZ_ENOMEM;
+    for (int i = 0; i < n_pl; i++) {
+        m2[i] = -1;
+#ifdef RGBZ_M2_INDEX
+        if (prm->mask2_fast && exp_mode == RGBZ_EXP_FAST) m2[i] = RGBZ_M2_INDEX(&plans[i]);
+#endif
+    }
     const int nth = rgbz_threads(prm->workers);
     (void)nth;
     /* 2- and 4-column tiles (Mask1, Mask2): each thread keeps the rows its window needs
@@ -414,13 +430,14 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
 #endif
                     const int m = seg_m1[s];
                     LFN(rgbz_sites)(&w, m >= 0 ? rgbz_mask1_plans[m] : &plans[pl], &plans[pl],
-                                    m, cols, x0,
+                                    m, m >= 0 ? -1 : m2[pl], cols, x0,
                                     xa[s + 1], &kn, maxval, clip_on, clip_thr, dst + y * cols);
                 }
             }
         }
         free(ring);
     }
+    free(m2);
     return RGBZ_OK;
 }
 

@@ -166,6 +166,8 @@ typedef struct {
     int32_t workers;      /* threads; <= 0 means the OpenMP default */
     int32_t mask1_fast;   /* 1: the pattern has the Mask1 geometry: its interior sites run the
                              constant plans of recon_mask1.h */
+    int32_t mask2_fast;   /* 1: a plan equal to one of recon_mask2.h's runs its straight-line
+                             code (float32, the fast exponential; the same bits) */
     int32_t clip_on;      /* 1: known pixels >= clip_level are clipped (saturated); a
                              difference of the weights between two of them is skipped
                              (docs/guide/raw.md, "Near clipping"); with mask1_fast, the
@@ -186,6 +188,10 @@ int rgbz_plan_layout(int64_t *out, int n);
    (sg_combined: SG with the EDILine weights, sg_mode "combined"), copied to *out, so that
    the tests can compare it with the plan _plans.py builds. RGBZ_EINVAL if there is none. */
 int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out);
+/* the index of *p among csrc/recon_mask2.h's plans (SG on Mask2, GRBG: the plans that run as
+   straight-line code in float32 with the fast exponential), -1 for any other plan or in a
+   build without that code (the counting build, a compiler other than GCC's family) */
+int rgbz_mask2_plan_index(const rgbz_plan *p);
 
 /*
  * rgbz_reconstruct_<precision> (f32, f64, fixed: one per entry of RGBZ_PRECISIONS, all of

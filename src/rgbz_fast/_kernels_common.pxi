@@ -99,11 +99,13 @@ cdef extern from "rgbz.h" nogil:
         int32_t exp_mode
         int32_t workers
         int32_t mask1_fast
+        int32_t mask2_fast
         int32_t clip_on
         double clip_level
         const rgbz_fixed_args *fixed
     int rgbz_plan_layout(int64_t *out, int n)
     int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
+    int rgbz_mask2_plan_index(const rgbz_plan *p)
     # one entry point per precision, all of this type (csrc/rgbz_templating.h)
     ctypedef int rgbz_reconstruct_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
                                      Py_ssize_t cols, int py, int px, const int32_t *phase_map,
@@ -333,6 +335,14 @@ def mask1_plan(int method, int sg_combined=0):
     return (<char *> &plan)[:sizeof(rgbz_plan)]
 
 
+def mask2_plan_index(const uint8_t[::1] plan):
+    """The index of a plan (its bytes) among csrc/recon_mask2.h's, whose sites run as
+    straight-line code (float32, exp_mode fast), or -1."""
+    if plan.shape[0] != sizeof(rgbz_plan):
+        raise ValueError(f"plan: expected {sizeof(rgbz_plan)} bytes, got {plan.shape[0]}")
+    return int(rgbz_mask2_plan_index(<const rgbz_plan *> &plan[0]))
+
+
 def have_openmp():
     return bool(rgbz_have_openmp())
 
@@ -356,14 +366,15 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
                 int py, int px, const int32_t[::1] phase_map, const uint8_t[::1] plans,
                 int n_plans, double sigma_floor, double sigma_rel, double edge_ratio, double maxval,
                 int exp_mode, int workers, uint64_t[::1] opcounts=None, int mask1_fast=0,
-                clip_level=None):
+                clip_level=None, int mask2_fast=0):
     """Run the reconstruction kernel.
 
     ``opcounts`` (n_plans x NOPS counters): required by the counting module
     (``_kernels_count``, single thread), refused by ``_kernels``.
     ``clip_level`` (DN, or None): known pixels at or above it are clipped; with
     ``mask1_fast=1`` the sites with a clipped tap run on the plan given (the counting
-    module needs ``mask1_fast=0``).
+    module needs ``mask1_fast=0``). ``mask2_fast=1``: a plan equal byte for byte to one of
+    csrc/recon_mask2.h's runs its straight-line code (float32, exp_mode fast; the same bits).
     """
     cdef int in_type = _type_code(<frame_t *> NULL)
     cdef int status
@@ -380,6 +391,7 @@ def reconstruct(const frame_t[:, ::1] src, frame_t[:, ::1] dst, int precision,
     prm.exp_mode = exp_mode
     prm.workers = 1 if counts != NULL else workers
     prm.mask1_fast = mask1_fast
+    prm.mask2_fast = mask2_fast
     prm.clip_on = 0 if clip_level is None else 1
     prm.clip_level = 0.0 if clip_level is None else float(clip_level)
     prm.fixed = NULL

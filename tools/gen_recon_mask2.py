@@ -1,0 +1,347 @@
+"""Write csrc/recon_mask2.h: SG on Mask2 (GRBG) as straight-line vector code, one function per Z site.
+
+    python tools/gen_recon_mask2.py           # rewrite the header
+    python tools/gen_recon_mask2.py --check   # exit 1 if the header is not what it would write
+
+The plan interpreter (csrc/recon_core.template.h) runs a block of sites one
+stage at a time, each stage a pass over the block through scratch rows in L1
+(the gradient sums, the gammas, beta's sums, the weights): on SG Mask2 about
+half of its instructions are those passes' loads, stores and loop set-up
+(docs/reports/benchmarks.md, "SG Mask2 as straight-line code"). This script
+writes, for each of the four Z sites of Mask2's GRBG tile, the SG plan that
+``_plans.build_plans`` gives (sg_mode "auto" = "combined", the intensity domain)
+as one function whose loop body computes a vector of 16 sites from their taps to
+the result: every operation of the interpreter on the same values in the same
+order (the same IEEE operations: the same bits), the intermediate values in
+registers. The header holds each plan's bytes too; the frame loop runs a
+function only on a plan equal to them byte for byte (any other plan, a changed
+``_plans.py``, other phases, float64, other exponentials: the interpreter).
+tests/test_recon_mask2.py checks the header is this script's output and that
+the results equal the interpreter's bit for bit.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+OUT = ROOT / "csrc" / "recon_mask2.h"
+
+
+def _f(x):
+    """A double of the plan as the C source the core converts to float: (float)<repr>."""
+    return f"(float){float(x)!r}"
+
+
+#: vectors of RGBZ_M2_W sites per step, their statements interleaved (2 measured slower than
+#: 1: 26.5 against 22.8 ms a 12 MP frame on 1 thread, the registers spilled)
+U = 1
+
+
+def _plan_body(p, fid):
+    """The C function of one plan: U vectors of RGBZ_M2_W sites, each statement once per
+    vector (names suffixed _0, _1, ...)."""
+    nt, nc, npairs = int(p["n_taps"]), int(p["n_cand"]), int(p["n_pairs"])
+    assert int(p["use_ab"]) == int(p["use_grad"]) == int(p["use_sg"]) == 1, "combined SG"
+    assert int(p["use_cd"]) == 0 and int(p["sum_from_zero"]) == 1
+    assert int(p["gamma_mask"]) == 0xFFF and all(p["group_scale"][g] > 0 for g in range(12))
+    assert nc in (8, 11) and int(p["sg_scaled"]) == 1
+    L = []
+
+    def st(text, indent=4):
+        # one statement per vector: {u} is the vector's suffix, {o} its lane offset
+        for u in range(U):
+            L.append(" " * indent + text.format(u=f"_{u}", o=f"{u} * RGBZ_M2_W"))
+
+    L.append(f"/* Z site {fid}: {nt} taps, {nc} candidates, {npairs} pairs */")
+    L.append(f"RGBZ_INLINE void rgbz_m2_site{fid}(const float *const *src, rgbz_v16 floor_, "
+             "rgbz_v16 rel,")
+    L.append("                                   int REL, float *restrict out)")
+    L.append("{")
+    for t in range(nt):
+        st(f"const rgbz_v16 t{t}{{u}} = rgbz_v16_load(src[{t}] + {{o}});")
+    # the group sums: each group's differences added in the plan's pair order, the first
+    # assigned (rgbz_groups_block with sum_from_zero)
+    started = set()
+    for i in range(npairs):
+        a, b, m = int(p["pair_a"][i]), int(p["pair_b"][i]), int(p["pair_gmask"][i])
+        st(f"const rgbz_v16 d{i}{{u}} = rgbz_v16_abs(t{a}{{u}} - t{b}{{u}});")
+        for g in range(12):
+            if (m >> g) & 1:
+                if g in started:
+                    st(f"G{g}{{u}} = G{g}{{u}} + d{i}{{u}};")
+                else:
+                    st(f"rgbz_v16 G{g}{{u}} = d{i}{{u}};")
+                    started.add(g)
+    assert started == set(range(12)), "every group has a difference"
+    # the gammas of each family (rgbz_gammas_full)
+    for g0, ng, nm in ((0, 8, "s"), (8, 4, "g")):
+        for q in range(ng):
+            st(f"const rgbz_v16 gm{g0 + q}{{u}} = G{g0 + q}{{u}} * {_f(p['group_scale'][g0 + q])};")
+        st(f"rgbz_v16 {nm}min{{u}} = gm{g0}{{u}};")
+        for q in range(1, ng):
+            st(f"{nm}min{{u}} = rgbz_v16_sel(gm{g0 + q}{{u}} < {nm}min{{u}}, gm{g0 + q}{{u}}, "
+               f"{nm}min{{u}});")
+        st(f"rgbz_v16 {nm}sg{{u}} = rgbz_v16_sel({nm}min{{u}} > floor_, {nm}min{{u}}, floor_);")
+        L.append("    if (REL) {")
+        st(f"rgbz_v16 {nm}sum{{u}} = gm{g0}{{u}};", 8)
+        for q in range(1, ng):
+            st(f"{nm}sum{{u}} = {nm}sum{{u}} + gm{g0 + q}{{u}};", 8)
+        st(f"const rgbz_v16 {nm}rf{{u}} = (rel * {nm}sum{{u}}) / (float){ng};", 8)
+        st(f"{nm}sg{{u}} = rgbz_v16_sel({nm}rf{{u}} > {nm}sg{{u}}, {nm}rf{{u}}, {nm}sg{{u}});", 8)
+        L.append("    }")
+        st(f"const rgbz_v16 {nm}ninv{{u}} = -(1.0f / (2.0f * ({nm}sg{{u}} * {nm}sg{{u}})));")
+        # the family's exponentials: rgbz_exp_poly_f32's (rgbz_ops.h) operations in its
+        # order, step by step across the family
+        for fam in (range(g0, g0 + ng),):
+            for g in fam:
+                st(f"const rgbz_v16 x{g}{{u}} = (gm{g}{{u}} * gm{g}{{u}}) * {nm}ninv{{u}};")
+            for g in fam:
+                st(f"const rgbz_v16i in{g}{{u}} = x{g}{{u}} > -87.0f;")
+            # (rgbz_exp_poly_f32 clamps x to -87 first; a lane below gets 0 from the last select
+            # whatever the steps give it -- no float-to-integer conversion here --, so x itself)
+            for g in fam:
+                st(f"const rgbz_v16 xc{g}{{u}} = x{g}{{u}};")
+            for g in fam:
+                st(f"const rgbz_v16 et{g}{{u}} = xc{g}{{u}} * 1.44269504f + 12582912.0f;")
+            for g in fam:
+                st(f"const rgbz_v16 en{g}{{u}} = et{g}{{u}} - 12582912.0f;")
+            for g in fam:
+                st(f"const rgbz_v16 ey{g}{{u}} = (xc{g}{{u}} - en{g}{{u}} * 0.693359375f) - "
+                   f"en{g}{{u}} * -2.12194440e-4f;")
+            for g in fam:
+                st(f"rgbz_v16 ep{g}{{u}} = 1.0f / 120 + ey{g}{{u}} * (1.0f / 720);")
+            for c in ("1.0f / 24", "1.0f / 6", "0.5f", "1.0f", "1.0f"):
+                for g in fam:
+                    st(f"ep{g}{{u}} = {c} + ey{g}{{u}} * ep{g}{{u}};")
+            for g in fam:
+                st(f"const rgbz_v16 ga{g}{{u}} = rgbz_v16_sel(in{g}{{u}}, ep{g}{{u}} * "
+                   f"(rgbz_v16)(((rgbz_v16u)et{g}{{u}} << 23) + (127u << 23)), rgbz_v16_set(0.0f));")
+    # beta's sums (rgbz_beta_sums): pairs (k, m), k < m, k outer
+    ct = [int(p["cand_tap"][k]) for k in range(nc)]
+    for k in range(nc):
+        st(f"const rgbz_v16 c{k}{{u}} = rgbz_v16_load(src[{ct[k]}] + {{o}});")
+    for k in range(nc):
+        st(f"rgbz_v16 S{k}{{u}} = rgbz_v16_set(1.0f);")
+    for k in range(nc):
+        for m in range(k + 1, nc):
+            st(f"{{{{ const rgbz_v16 e = rgbz_v16_abs(c{k}{{u}} - c{m}{{u}}); "
+               f"S{k}{{u}} = S{k}{{u}} + e; S{m}{{u}} = S{m}{{u}} + e; }}}}")
+    # the weights and the weighted mean (rgbz_weigh_sg, combined: alpha / S * gamma(ori) * sv)
+    st("rgbz_v16 den{u}, num{u} = rgbz_v16_set(0.0f);")
+    for k in range(nc):
+        rows = [g for g in range(8) if (int(p["cand_sgmask"][k]) >> g) & 1]
+        assert 1 <= len(rows) <= 4
+        sv = f"ga{rows[0]}{{u}}"
+        for g in rows[1:]:
+            sv = f"({sv} + ga{g}{{u}})"
+        ori = 8 + int(p["cand_ori"][k])
+        w = f"((({_f(p['cand_alpha'][k])}) / S{k}{{u}}) * ga{ori}{{u}}) * ({sv} * {_f(p['cand_sgscale'][k])})"
+        if k == 0:
+            st(f"den{{u}} = {w};")
+        else:
+            st(f"{{{{ const rgbz_v16 w = {w}; den{{u}} = den{{u}} + w; "
+               f"num{{u}} = num{{u}} + w * (c{k}{{u}} - c0{{u}}); }}}}")
+    st("const rgbz_v16i ok{u} = den{u} > 0.0f;")
+    st("const rgbz_v16 q{u} = rgbz_v16_sel(ok{u}, den{u}, rgbz_v16_set(1.0f));")
+    st(f"rgbz_v16 res{{u}} = rgbz_v16_sel(ok{{u}}, c0{{u}} + num{{u}} / q{{u}}, c0{{u}});")
+    L.append("    if (!(" + " && ".join(f"rgbz_v16_all(ok_{u})" for u in range(U)) + ")) {")
+    L.append("        /* a weight sum not > 0 (every weight underflowed, or a non-finite input):")
+    L.append("           the plain mean of the candidates (rgbz_mean_block) */")
+    st(f"rgbz_v16 s{{u}} = c1{{u}} - c0{{u}};", 8)
+    for k in range(2, nc):
+        st(f"s{{u}} = s{{u}} + (c{k}{{u}} - c0{{u}});", 8)
+    st(f"res{{u}} = rgbz_v16_sel(ok{{u}}, res{{u}}, c0{{u}} + s{{u}} / (float){nc});", 8)
+    L.append("    }")
+    st("rgbz_v16_store(out + {o}, res{u});")
+    L.append("}")
+    L.append("")
+    return L, nt
+
+
+HEAD = r'''/*
+ * recon_mask2.h -- WRITTEN BY tools/gen_recon_mask2.py: do not edit; run the script.
+ *
+ * SG on Mask2 (GRBG phase, sg_mode "combined", the intensity domain, float32, the fast
+ * exponential): each of the tile's four Z-site plans of _plans.py as straight-line code over
+ * 16 sites at a time (GCC's vector extensions: 16 float lanes, split by GCC into what each
+ * clone has, so every clone computes the same IEEE operations; -std=c99 implies
+ * -ffp-contract=off: no FMA of them). GCC's first scheduling pass, off by default on x86, is
+ * on for these functions (with register pressure): the code is long chains of dependent
+ * operations, interleaved by it (SG Mask2 on 1 thread 22.8 against 28.3 ms a 12 MP
+ * frame). Every value the interpreter computes (recon_core.template.h: the group sums
+ * in the plan's pair order, the gammas of rgbz_gammas_full, beta's sums of rgbz_beta_sums,
+ * the weights of rgbz_weigh_sg, the weighted mean and its fallback) is computed by the same
+ * operations in the same order: the results are the interpreter's, bit for bit
+ * (tests/test_recon_mask2.py); only where the values live changes (registers, not a block's
+ * scratch rows). rgbz_m2_plan_bytes holds each plan as _plans.py builds it: the frame loop
+ * runs rgbz_m2_run on a plan equal to one of them byte for byte, the interpreter on any
+ * other.
+ */
+#ifndef RECON_MASK2_H
+#define RECON_MASK2_H
+
+#include <stdint.h>
+#include <string.h>
+#include "rgbz.h"
+#include "rgbz_ops.h"
+
+#if defined(__GNUC__) && !defined(RGBZ_COUNT_OPS)
+#define RGBZ_HAVE_M2 1
+#pragma GCC push_options
+#pragma GCC optimize("schedule-insns", "sched-pressure")
+
+/* lanes per vector: RGBZ_M2_W sites at a time (one AVX-512 register; two AVX2 or four SSE2
+   registers in the other clones) */
+#define RGBZ_M2_W 16
+typedef float rgbz_v16 __attribute__((vector_size(4 * RGBZ_M2_W)));
+typedef int32_t rgbz_v16i __attribute__((vector_size(4 * RGBZ_M2_W)));
+typedef uint32_t rgbz_v16u __attribute__((vector_size(4 * RGBZ_M2_W)));
+
+static inline rgbz_v16 rgbz_v16_load(const float *p)
+{
+    rgbz_v16 x;
+    memcpy(&x, p, sizeof x);
+    return x;
+}
+
+static inline void rgbz_v16_store(float *p, rgbz_v16 x)
+{
+    memcpy(p, &x, sizeof x);
+}
+
+static inline rgbz_v16 rgbz_v16_set(float c)
+{
+    rgbz_v16 x;
+    for (int i = 0; i < RGBZ_M2_W; i++) x[i] = c;
+    return x;
+}
+
+/* fabsf's bits: the sign cleared */
+static inline rgbz_v16 rgbz_v16_abs(rgbz_v16 x)
+{
+    return (rgbz_v16)((rgbz_v16u)x & 0x7fffffffu);
+}
+
+/* m ? a : b per lane (m a comparison's result: all ones or all zeros) */
+static inline rgbz_v16 rgbz_v16_sel(rgbz_v16i m, rgbz_v16 a, rgbz_v16 b)
+{
+    return (rgbz_v16)(((rgbz_v16i)a & m) | ((rgbz_v16i)b & ~m));
+}
+
+static inline int rgbz_v16_all(rgbz_v16i m)
+{
+    int32_t a = -1;
+    for (int i = 0; i < RGBZ_M2_W; i++) a &= m[i];
+    return a != 0;
+}
+
+'''
+
+TAIL = r'''
+/*
+ * The n sites of a block (v tap-major, recon_core.template.h) through the function of plan k
+ * (an index of rgbz_m2_plan_bytes), RGBZ_M2_STEP at a time; the last step of a block whose n
+ * is not a multiple of it runs on a copy of its taps padded with zeros, and only its results
+ * for the n sites are kept.
+ */
+RGBZ_CLONES_512 static void rgbz_m2_run(int k, const float *const *v, int n, float floor_,
+                                        float rel, float *restrict r)
+{
+    const rgbz_v16 fl = rgbz_v16_set(floor_), rl = rgbz_v16_set(rel);
+    const int REL = rel > 0.0f;
+    const int nt = rgbz_m2_ntaps[k];
+    for (int j0 = 0; j0 < n; j0 += RGBZ_M2_STEP) {
+        const float *src[RGBZ_MAX_TAPS];
+        float pad[RGBZ_MAX_TAPS][RGBZ_M2_STEP], res[RGBZ_M2_STEP];
+        const int m = n - j0 < RGBZ_M2_STEP ? n - j0 : RGBZ_M2_STEP;
+        if (m == RGBZ_M2_STEP) {
+            for (int t = 0; t < nt; t++) src[t] = v[t] + j0;
+        } else {
+            for (int t = 0; t < nt; t++) {
+                for (int i = 0; i < RGBZ_M2_STEP; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
+                src[t] = pad[t];
+            }
+        }
+        float *o = m == RGBZ_M2_STEP ? r + j0 : res;
+#define RGBZ_M2_CASE_(K)                                                                  \
+        case K:                                                                           \
+            if (REL) rgbz_m2_site##K(src, fl, rl, 1, o);                                  \
+            else rgbz_m2_site##K(src, fl, rl, 0, o);                                      \
+            break;
+        switch (k) {
+            RGBZ_M2_CASES_
+        default: break;
+        }
+#undef RGBZ_M2_CASE_
+        if (m < RGBZ_M2_STEP) memcpy(r + j0, res, (size_t)m * sizeof(float));
+    }
+}
+
+/* the index of the plan in rgbz_m2_plan_bytes equal to p byte for byte, or -1 */
+static inline int rgbz_m2_index(const rgbz_plan *p)
+{
+    for (int k = 0; k < RGBZ_M2_NPLANS; k++)
+        if (!memcmp(p, rgbz_m2_plan_bytes[k], sizeof(rgbz_plan))) return k;
+    return -1;
+}
+
+#pragma GCC pop_options
+#else
+#define RGBZ_HAVE_M2 0
+#endif /* __GNUC__ && !RGBZ_COUNT_OPS */
+
+#endif /* RECON_MASK2_H */
+'''
+
+
+def generate():
+    from rgbz_fast._patterns import get_pattern
+    from rgbz_fast.reconstruction import _plans
+
+    _, plans = _plans.build_plans(get_pattern("mask2"), "sg")
+    assert _plans.PLAN_DTYPE.itemsize == plans.dtype.itemsize
+    out = [HEAD]
+    for k, p in enumerate(plans):
+        body, _ = _plan_body(p, k)
+        out.extend(line + "\n" for line in body)
+    out.append(f"#define RGBZ_M2_NPLANS {len(plans)}\n")
+    out.append(f"/* sites a step of rgbz_m2_run */\n#define RGBZ_M2_STEP ({U} * RGBZ_M2_W)\n")
+    out.append("static const int rgbz_m2_ntaps[RGBZ_M2_NPLANS] = {"
+               + ", ".join(str(int(p["n_taps"])) for p in plans) + "};\n")
+    out.append("#define RGBZ_M2_CASES_ " + " ".join(f"RGBZ_M2_CASE_({k})"
+                                                   for k in range(len(plans))) + "\n")
+    out.append(f"/* the plans as _plans.py builds them (rgbz_plan, {plans.dtype.itemsize} bytes, "
+               "little-endian) */\n")
+    out.append(f"static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][{plans.dtype.itemsize}] = {{\n")
+    for p in plans:
+        raw = np.ascontiguousarray(p).tobytes()
+        out.append("    {")
+        for i in range(0, len(raw), 24):
+            out.append("\n        " + ", ".join(str(b) for b in raw[i:i + 24]) + ",")
+        out.append("\n    },\n")
+    out.append("};\n")
+    out.append(TAIL)
+    return "".join(out)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--check", action="store_true", help="exit 1 if the header differs")
+    a = ap.parse_args(argv)
+    text = generate()
+    if a.check:
+        same = OUT.exists() and OUT.read_text() == text
+        print(f"{OUT.relative_to(ROOT)}: {'up to date' if same else 'DIFFERS from the script'}")
+        return 0 if same else 1
+    OUT.write_text(text)
+    print(f"wrote {OUT.relative_to(ROOT)} ({len(text.splitlines())} lines)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
