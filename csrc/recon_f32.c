@@ -15,7 +15,7 @@
 #include "rgbz_exp.h"
 #include "recon_mask2.h"
 
-/* SG on Mask2's GRBG plans as straight-line code (recon_mask2.h): float only */
+/* SG on Mask2's plans (its four Bayer phases) as straight-line code (recon_mask2.h): float only */
 #if RGBZ_HAVE_M2
 #define RGBZ_M2_INDEX(p) rgbz_m2_index(p)
 #define RGBZ_M2_RUN(k, v, n, kn, r) rgbz_m2_run(k, v, n, (kn)->floor_, (kn)->rel, r)

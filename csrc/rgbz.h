@@ -188,9 +188,9 @@ int rgbz_plan_layout(int64_t *out, int n);
    (sg_combined: SG with the EDILine weights, sg_mode "combined"), copied to *out, so that
    the tests can compare it with the plan _plans.py builds. RGBZ_EINVAL if there is none. */
 int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out);
-/* the index of *p among csrc/recon_mask2.h's plans (SG on Mask2, GRBG: the plans that run as
-   straight-line code in float32 with the fast exponential), -1 for any other plan or in a
-   build without that code (the counting build, a compiler other than GCC's family) */
+/* the index of *p among csrc/recon_mask2.h's plans (SG on Mask2 at any Bayer phase: the plans
+   that run as straight-line code in float32 with the fast exponential), -1 for any other plan
+   or in a build without that code (the counting build, a compiler other than GCC's family) */
 int rgbz_mask2_plan_index(const rgbz_plan *p);
 
 /*

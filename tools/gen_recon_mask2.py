@@ -1,4 +1,4 @@
-"""Write csrc/recon_mask2.h: SG on Mask2 (GRBG) as straight-line vector code, one function per Z site.
+"""Write csrc/recon_mask2.h: SG on Mask2 as straight-line vector code, one function per Z-site plan.
 
     python tools/gen_recon_mask2.py           # rewrite the header
     python tools/gen_recon_mask2.py --check   # exit 1 if the header is not what it would write
@@ -8,15 +8,15 @@ stage at a time, each stage a pass over the block through scratch rows in L1
 (the gradient sums, the gammas, beta's sums, the weights): on SG Mask2 about
 half of its instructions are those passes' loads, stores and loop set-up
 (docs/reports/benchmarks.md, "SG Mask2 as straight-line code"). This script
-writes, for each of the four Z sites of Mask2's GRBG tile, the SG plan that
-``_plans.build_plans`` gives (sg_mode "auto" = "combined", the intensity domain)
+writes each SG plan that ``_plans.build_plans`` gives Mask2 at its four Bayer
+phases (12 distinct plans; sg_mode "auto" = "combined", the intensity domain)
 as one function whose loop body computes a vector of 16 sites from their taps to
 the result: every operation of the interpreter on the same values in the same
 order (the same IEEE operations: the same bits), the intermediate values in
 registers. The header holds each plan's bytes too; the frame loop runs a
 function only on a plan equal to them byte for byte (any other plan, a changed
-``_plans.py``, other phases, float64, other exponentials: the interpreter).
-tests/test_recon_mask2.py checks the header is this script's output and that
+``_plans.py``, float64, other exponentials: the interpreter).
+tests/reconstruction/test_recon_mask2.py checks the header is this script's output and that
 the results equal the interpreter's bit for bit.
 """
 
@@ -166,8 +166,8 @@ def _plan_body(p, fid):
 HEAD = r'''/*
  * recon_mask2.h -- WRITTEN BY tools/gen_recon_mask2.py: do not edit; run the script.
  *
- * SG on Mask2 (GRBG phase, sg_mode "combined", the intensity domain, float32, the fast
- * exponential): each of the tile's four Z-site plans of _plans.py as straight-line code over
+ * SG on Mask2 (the four Bayer phases, sg_mode "combined", the intensity domain, float32, the fast
+ * exponential): each distinct Z-site plan of _plans.py (12) as straight-line code over
  * 16 sites at a time (GCC's vector extensions: 16 float lanes, split by GCC into what each
  * clone has, so every clone computes the same IEEE operations; -std=c99 implies
  * -ffp-contract=off: no FMA of them). GCC's first scheduling pass, off by default on x86, is
@@ -303,8 +303,14 @@ def generate():
     from rgbz_fast._patterns import get_pattern
     from rgbz_fast.reconstruction import _plans
 
-    _, plans = _plans.build_plans(get_pattern("mask2"), "sg")
-    assert _plans.PLAN_DTYPE.itemsize == plans.dtype.itemsize
+    # the Z-site plans of Mask2 at the four Bayer phases, each once (GRBG's first)
+    # (the bytes as build_plans leaves them, its padding zeros included: the frame loop
+    # compares whole structs)
+    raws = []
+    for phase in ("GRBG", "RGGB", "BGGR", "GBRG"):
+        _, pl = _plans.build_plans(get_pattern(f"mask2_{phase.lower()}"), "sg")
+        raws += [r for r in (p.tobytes() for p in pl) if r not in raws]
+    plans = np.frombuffer(b"".join(raws), dtype=_plans.PLAN_DTYPE)
     out = [HEAD]
     for k, p in enumerate(plans):
         body, _ = _plan_body(p, k)

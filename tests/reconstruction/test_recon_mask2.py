@@ -35,13 +35,18 @@ def test_header_is_the_generators_output():
 
 
 def test_which_plans_run_the_straight_line_code():
-    """SG combined on Mask2 GRBG, intensity domain: its four plans; nothing else."""
+    """SG combined on Mask2, intensity domain, every Bayer phase: its plans; nothing else."""
     assert _indices(_kernels, "mask2") == [0, 1, 2, 3]
+    seen = set()
+    for phase in rz.BAYER_PHASES:
+        idx = _indices(_kernels, f"mask2_{phase.lower()}")
+        assert min(idx) >= 0, phase
+        seen.update(idx)
+    assert len(seen) == 12                                   # the distinct plans
     assert _indices(_kernels, "mask2", sg_mode="combined") == [0, 1, 2, 3]
     assert _indices(_kernels, "mask2", sg_mode="pure") == [-1] * 4
     assert _indices(_kernels, "mask2", domain="colour_difference") == [-1] * 4
     assert _indices(_kernels, "mask2", "edi_line") == [-1] * 4
-    assert _indices(_kernels, "mask2_rggb") == [-1] * 4       # the interpreter, same results
     assert _indices(_kernels, "mask1") == [-1]
     # the counting build counts the interpreter's operations (the same ones)
     assert _indices(_kernels_count, "mask2") == [-1] * 4
@@ -52,7 +57,7 @@ def test_plan_index_rejects_a_wrong_size():
         _kernels.mask2_plan_index(np.zeros(10, np.uint8))
 
 
-def _frame(kind, shape, rng):
+def _frame(kind, shape, rng, pattern="mask2"):
     if kind == "smooth":
         y, x = np.mgrid[0:shape[0], 0:shape[1]]
         img = 0.5 + 0.4 * np.sin(x / 7.0)[..., None] * np.cos(y / 5.0)[..., None] * [1, 0.8, 0.6]
@@ -66,7 +71,7 @@ def _frame(kind, shape, rng):
         img = np.zeros(shape + (3,))
         img[:, shape[1] // 3:] = 0.9
         img[shape[0] // 2, :] = 0.5
-    return rz.mosaic(img, "mask2").data
+    return rz.mosaic(img, pattern).data
 
 
 def _same(a, b):
@@ -78,7 +83,7 @@ def _same(a, b):
 @pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
 def test_same_bits_as_the_interpreter(kind, dtype):
     """Every element type, sizes whose Z rows end in a partial vector, 1 and 2 threads."""
-    rng = np.random.default_rng(abs(hash((kind, np.dtype(dtype).name))) % 2**32)
+    rng = np.random.default_rng(sum(map(ord, kind + np.dtype(dtype).name)))
     for shape in [(12, 12), (37, 53), (64, 270)]:
         d = _frame(kind, shape, rng)
         if dtype == np.uint8:
@@ -91,6 +96,24 @@ def test_same_bits_as_the_interpreter(kind, dtype):
             with plans_only():
                 slow = rz.reconstruct(d, "sg", pattern="mask2", workers=workers, **kw)
             assert _same(fast, slow), (kind, np.dtype(dtype).name, shape, workers)
+
+
+@pytest.mark.parametrize("phase", ["RGGB", "BGGR", "GBRG"])
+def test_same_bits_at_every_bayer_phase(phase):
+    rng = np.random.default_rng(11)
+    pat = f"mask2_{phase.lower()}"
+    for kind in ("noise", "edges"):
+        d = _frame(kind, (36, 61), rng, pat)
+        for workers in (1, 2):
+            fast = rz.reconstruct(d, "sg", pattern=pat, workers=workers)
+            with plans_only():
+                slow = rz.reconstruct(d, "sg", pattern=pat, workers=workers)
+            assert _same(fast, slow), (kind, workers)
+            df = (d * np.float64(0.999)).astype(np.float32)
+            fast = rz.reconstruct(df, "sg", pattern=pat, workers=workers)
+            with plans_only():
+                slow = rz.reconstruct(df, "sg", pattern=pat, workers=workers)
+            assert _same(fast, slow), (kind, workers, "float32")
 
 
 @pytest.mark.parametrize("params", [
