@@ -52,6 +52,33 @@ class FastExpSuite:
         rz.reconstruct(self.frame, "sg", precision="float32", exp=exp)
 
 
+class StraightLineSuite:
+    """SG float32: the patterns' compiled plans (Mask1's constants, Mask2's straight-line code,
+    csrc/recon_mask2.h) against the plan interpreter (``plans_only``), the same bits."""
+
+    params = ([KODAK_SHAPE, BIG_SHAPE], ["mask1", "mask2", "mask2_rggb"], ["compiled", "plans"])
+    param_names = ["shape", "pattern", "code"]
+    timeout = 300
+
+    def setup(self, shape, pattern, code):
+        need("reconstruct", "mosaic")
+        skip_if_slow(shape)
+        try:
+            from rgbz_fast.reconstruction._reconstruct import plans_only
+        except ImportError:
+            raise NotImplementedError("no plans_only in this version") from None
+        self.plans_only = plans_only
+        self.frame = rz.mosaic(astronaut(shape), pattern)
+        rz.reconstruct(self.frame.data[:64, :64], "sg", pattern=pattern)
+
+    def time_sg_float32(self, shape, pattern, code):
+        if code == "plans":
+            with self.plans_only():
+                rz.reconstruct(self.frame, "sg", precision="float32")
+        else:
+            rz.reconstruct(self.frame, "sg", precision="float32")
+
+
 class EdiRowsSuite:
     params = ([(516, 768), (3000, 4000)], ["float32", "float64"])
     param_names = ["shape", "precision"]
