@@ -1,9 +1,10 @@
-"""SG on Mask1: the compile-time plans of recon_mask1.h (the fast path) against the same
-plans run by the plan interpreter (``plans_only``), in one process, alternated call by call
-(the order swapped every round), on the 12 MP bench frame; prints the median [IQR] of the
-rounds' speed ratios interpreter / fast path and whether the two give the same bits.
+"""SG float32: the compiled plans (Mask1: the constants of recon_mask1.h; Mask2: the
+straight-line code of recon_mask2.h) against the same plans run by the plan interpreter
+(``plans_only``), in one process, alternated call by call (the order swapped every round), on
+the 12 MP bench frame; prints the median [IQR] of the rounds' speed ratios interpreter /
+compiled (below 1: the compiled code is faster) and whether the two give the same bits.
 
-    python tools/sg_fast_path_paired.py [ROUNDS]      # about half a minute
+    python tools/sg_fast_path_paired.py [ROUNDS] [PATTERN]   # PATTERN: mask1 (default), mask2, ...
 """
 import sys
 import time
@@ -25,8 +26,8 @@ def one(frame, workers, interpreter):
     return time.perf_counter() - t0
 
 
-def main(rounds=11):
-    frame = rz.mosaic(make_rgb((3000, 4000)), "mask1")
+def main(rounds=11, pattern="mask1"):
+    frame = rz.mosaic(make_rgb((3000, 4000)), pattern)
     for workers in (1, 2):
         a = rz.reconstruct(frame, "sg", workers=workers)
         with R.plans_only():
@@ -38,9 +39,10 @@ def main(rounds=11):
                 t[interp] = one(frame, workers, interp)
             ratios.append(t[False] / t[True])
         q = np.percentile(ratios, [25, 50, 75])
-        print(f"workers {workers}: speed interpreter / fast path {q[1]:.3f} "
+        print(f"{pattern}, workers {workers}: speed interpreter / compiled {q[1]:.3f} "
               f"[{q[0]:.3f}-{q[2]:.3f}], {rounds} rounds; same bits: {np.array_equal(a, b)}")
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 11)
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 11,
+         sys.argv[2] if len(sys.argv) > 2 else "mask1")
