@@ -40,8 +40,9 @@ check_layout(_kernels.plan_layout())
 _PRECISION_CODES = dict(_kernels.PRECISIONS)
 _EXP_CODES = dict(_kernels.EXP_MODES)
 #: whether reconstruct() may run the interior sites of Mask1 on the constant plans of
-#: csrc/recon_mask1.h (the Mask1 fast path) where it applies: False inside
-#: :func:`plans_only`, in that thread (or task) only
+#: csrc/recon_mask1.h (the Mask1 fast path), and SG's Mask2 plans as the straight-line code
+#: of csrc/recon_mask2.h, where they apply: False inside :func:`plans_only`, in that thread
+#: (or task) only
 _FAST_PATH = contextvars.ContextVar("rgbz_fast_mask1_fast_path", default=True)
 
 
@@ -50,8 +51,10 @@ def plans_only():
     """Within the block, :func:`reconstruct` runs every Z site on the plans of ``_plans.py``.
 
     The Mask1 fast path (csrc/recon_mask1.h) is a faster formulation of the
-    same plans, equal to them within rounding; this lets a test run the
-    interpreter it stands in for. Only the calling thread is affected, and the
+    same plans, equal to them within rounding, and SG on Mask2 runs its plans
+    as straight-line code (csrc/recon_mask2.h: float32, the fast exponential),
+    equal to them bit for bit; this lets a test run the interpreter they stand
+    in for. Only the calling thread is affected, and the
     fast path is back when the block exits, also on an exception.
     """
     token = _FAST_PATH.set(False)
