@@ -36,3 +36,15 @@ int rgbz_mask2_plan_index(const rgbz_plan *p)
     return -1;
 #endif
 }
+
+int rgbz_mask2_generic(int on)
+{
+#if RGBZ_HAVE_M2
+    const int was = rgbz_m2_generic_only;
+    if (on >= 0) rgbz_m2_generic_only = on != 0;
+    return was;
+#else
+    (void)on;
+    return -1;
+#endif
+}

@@ -192,6 +192,11 @@ int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out);
    that run as straight-line code in float32 with the fast exponential), -1 for any other plan
    or in a build without that code (the counting build, a compiler other than GCC's family) */
 int rgbz_mask2_plan_index(const rgbz_plan *p);
+/* on = 1: recon_mask2.h's code runs its generic instance (what CPUs without AVX-512F run)
+   even where its AVX-512F one would; 0: back to the CPU's; < 0: unchanged. Returns the
+   setting before (-1 in a build without that code). For tests: not thread-safe against
+   running reconstructions. */
+int rgbz_mask2_generic(int on);
 
 /*
  * rgbz_reconstruct_<precision> (f32, f64, fixed: one per entry of RGBZ_PRECISIONS, all of

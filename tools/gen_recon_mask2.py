@@ -1,7 +1,7 @@
-"""Write csrc/recon_mask2.h: SG on Mask2 as straight-line vector code, one function per Z-site plan.
+"""Write csrc/recon_mask2.h and its sites' template: SG on Mask2 as straight-line vector code.
 
-    python tools/gen_recon_mask2.py           # rewrite the header
-    python tools/gen_recon_mask2.py --check   # exit 1 if the header is not what it would write
+    python tools/gen_recon_mask2.py           # rewrite the two headers
+    python tools/gen_recon_mask2.py --check   # exit 1 if they are not what it would write
 
 The plan interpreter (csrc/recon_core.template.h) runs a block of sites one
 stage at a time, each stage a pass over the block through scratch rows in L1
@@ -30,6 +30,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "csrc" / "recon_mask2.h"
+OUT_SITES = ROOT / "csrc" / "recon_mask2_sites.template.h"
 
 
 def _f(x):
@@ -58,9 +59,10 @@ def _plan_body(p, fid):
             L.append(" " * indent + text.format(u=f"_{u}", o=f"{u} * RGBZ_M2_W"))
 
     L.append(f"/* Z site {fid}: {nt} taps, {nc} candidates, {npairs} pairs */")
-    L.append(f"RGBZ_INLINE void rgbz_m2_site{fid}(const float *const *src, rgbz_v16 floor_, "
-             "rgbz_v16 rel,")
-    L.append("                                   int REL, float *restrict out)")
+    L.append(f"RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site{fid})(const float *const *src, "
+             "rgbz_v16 floor_,")
+    L.append("                                                  rgbz_v16 rel, int REL, "
+             "float *restrict out)")
     L.append("{")
     for t in range(nt):
         st(f"const rgbz_v16 t{t}{{u}} = rgbz_v16_load(src[{t}] + {{o}});")
@@ -84,15 +86,14 @@ def _plan_body(p, fid):
             st(f"const rgbz_v16 gm{g0 + q}{{u}} = G{g0 + q}{{u}} * {_f(p['group_scale'][g0 + q])};")
         st(f"rgbz_v16 {nm}min{{u}} = gm{g0}{{u}};")
         for q in range(1, ng):
-            st(f"{nm}min{{u}} = rgbz_v16_sel(gm{g0 + q}{{u}} < {nm}min{{u}}, gm{g0 + q}{{u}}, "
-               f"{nm}min{{u}});")
-        st(f"rgbz_v16 {nm}sg{{u}} = rgbz_v16_sel({nm}min{{u}} > floor_, {nm}min{{u}}, floor_);")
+            st(f"{nm}min{{u}} = M2_MIN(gm{g0 + q}{{u}}, {nm}min{{u}});")
+        st(f"rgbz_v16 {nm}sg{{u}} = M2_MAX({nm}min{{u}}, floor_);")
         L.append("    if (REL) {")
         st(f"rgbz_v16 {nm}sum{{u}} = gm{g0}{{u}};", 8)
         for q in range(1, ng):
             st(f"{nm}sum{{u}} = {nm}sum{{u}} + gm{g0 + q}{{u}};", 8)
         st(f"const rgbz_v16 {nm}rf{{u}} = (rel * {nm}sum{{u}}) / (float){ng};", 8)
-        st(f"{nm}sg{{u}} = rgbz_v16_sel({nm}rf{{u}} > {nm}sg{{u}}, {nm}rf{{u}}, {nm}sg{{u}});", 8)
+        st(f"{nm}sg{{u}} = M2_MAX({nm}rf{{u}}, {nm}sg{{u}});", 8)
         L.append("    }")
         st(f"const rgbz_v16 {nm}ninv{{u}} = -(1.0f / (2.0f * ({nm}sg{{u}} * {nm}sg{{u}})));")
         # the family's exponentials: rgbz_exp_poly_f32's (rgbz_ops.h) operations in its
@@ -119,8 +120,8 @@ def _plan_body(p, fid):
                 for g in fam:
                     st(f"ep{g}{{u}} = {c} + ey{g}{{u}} * ep{g}{{u}};")
             for g in fam:
-                st(f"const rgbz_v16 ga{g}{{u}} = rgbz_v16_sel(in{g}{{u}}, ep{g}{{u}} * "
-                   f"(rgbz_v16)(((rgbz_v16u)et{g}{{u}} << 23) + (127u << 23)), rgbz_v16_set(0.0f));")
+                st(f"const rgbz_v16 ga{g}{{u}} = rgbz_v16_sel(in{g}{{u}}, "
+                   f"M2_SCALE(ep{g}{{u}}, et{g}{{u}}, en{g}{{u}}), rgbz_v16_set(0.0f));")
     # beta's sums (rgbz_beta_sums): pairs (k, m), k < m, k outer
     ct = [int(p["cand_tap"][k]) for k in range(nc)]
     for k in range(nc):
@@ -242,15 +243,28 @@ static inline int rgbz_v16_all(rgbz_v16i m)
 
 '''
 
-TAIL = r'''
+TEMPLATE_HEAD = r'''/*
+ * recon_mask2_sites.template.h -- WRITTEN BY tools/gen_recon_mask2.py: do not edit; run the
+ * script. Included twice by recon_mask2.h, once per instance:
+ *   M2_FN(name)            the instance's name of a function (name_g, name_x)
+ *   M2_ATTR                its target attribute (none; AVX-512F)
+ *   M2_MIN(a, b)           a < b ? a : b per lane (x86's MINPS exactly)
+ *   M2_MAX(a, b)           a > b ? a : b per lane (MAXPS exactly)
+ *   M2_SCALE(p, et, en)    p * 2^en, en the integer of the exponential's rounding and et its
+ *                          magic-number form (rgbz_exp_poly_f32's 2^n from et's bits, or
+ *                          VSCALEFPS from en: exact, the results normal, so the same bits)
+ */
+'''
+
+TEMPLATE_TAIL = r'''
 /*
  * The n sites of a block (v tap-major, recon_core.template.h) through the function of plan k
  * (an index of rgbz_m2_plan_bytes), RGBZ_M2_STEP at a time; the last step of a block whose n
  * is not a multiple of it runs on a copy of its taps padded with zeros, and only its results
  * for the n sites are kept.
  */
-RGBZ_CLONES_512 static void rgbz_m2_run(int k, const float *const *v, int n, float floor_,
-                                        float rel, float *restrict r)
+M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, float floor_,
+                                       float rel, float *restrict r)
 {
     const rgbz_v16 fl = rgbz_v16_set(floor_), rl = rgbz_v16_set(rel);
     const int REL = rel > 0.0f;
@@ -270,8 +284,8 @@ RGBZ_CLONES_512 static void rgbz_m2_run(int k, const float *const *v, int n, flo
         float *o = m == RGBZ_M2_STEP ? r + j0 : res;
 #define RGBZ_M2_CASE_(K)                                                                  \
         case K:                                                                           \
-            if (REL) rgbz_m2_site##K(src, fl, rl, 1, o);                                  \
-            else rgbz_m2_site##K(src, fl, rl, 0, o);                                      \
+            if (REL) M2_FN(rgbz_m2_site##K)(src, fl, rl, 1, o);                           \
+            else M2_FN(rgbz_m2_site##K)(src, fl, rl, 0, o);                               \
             break;
         switch (k) {
             RGBZ_M2_CASES_
@@ -280,6 +294,59 @@ RGBZ_CLONES_512 static void rgbz_m2_run(int k, const float *const *v, int n, flo
 #undef RGBZ_M2_CASE_
         if (m < RGBZ_M2_STEP) memcpy(r + j0, res, (size_t)m * sizeof(float));
     }
+}
+'''
+
+TAIL = r'''
+/* the instance every clone compiles: AVX2 and the baseline (the AVX-512F one is below) */
+#define M2_FN(name) name##_g
+#define M2_ATTR
+#define M2_MIN(a, b) rgbz_v16_sel((a) < (b), (a), (b))
+#define M2_MAX(a, b) rgbz_v16_sel((a) > (b), (a), (b))
+#define M2_SCALE(p, et, en) ((p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)))
+#include "recon_mask2_sites.template.h"
+#undef M2_FN
+#undef M2_ATTR
+#undef M2_MIN
+#undef M2_MAX
+#undef M2_SCALE
+
+/* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS and the
+   exponential's 2^n as VSCALEFPS, one instruction each for two or three, the same values */
+#if defined(__x86_64__) && !defined(__clang__) && defined(__GLIBC__) && !defined(RGBZ_NO_CLONES)
+#define RGBZ_M2_X 1
+#include <immintrin.h>
+#define M2_FN(name) name##_x
+#define M2_ATTR __attribute__((target("avx512f")))
+#define M2_MIN(a, b) ((rgbz_v16)_mm512_min_ps((__m512)(a), (__m512)(b)))
+#define M2_MAX(a, b) ((rgbz_v16)_mm512_max_ps((__m512)(a), (__m512)(b)))
+#define M2_SCALE(p, et, en) ((rgbz_v16)_mm512_scalef_ps((__m512)(p), (__m512)(en)))
+#include "recon_mask2_sites.template.h"
+#undef M2_FN
+#undef M2_ATTR
+#undef M2_MIN
+#undef M2_MAX
+#undef M2_SCALE
+#else
+#define RGBZ_M2_X 0
+#endif
+
+/* 1: run the generic instance even where AVX-512F is (rgbz_mask2_generic, for the tests
+   that compare the two instances) */
+static int rgbz_m2_generic_only = 0;
+
+/* rgbz_m2_run_x where the CPU runs AVX-512F (as the clones' resolver decides), else the
+   generic instance's clone for the CPU */
+static void rgbz_m2_run(int k, const float *const *v, int n, float floor_, float rel,
+                        float *restrict r)
+{
+#if RGBZ_M2_X
+    if (!rgbz_m2_generic_only && __builtin_cpu_supports("avx512f")) {
+        rgbz_m2_run_x(k, v, n, floor_, rel, r);
+        return;
+    }
+#endif
+    rgbz_m2_run_g(k, v, n, floor_, rel, r);
 }
 
 /* the index of the plan in rgbz_m2_plan_bytes equal to p byte for byte, or -1 */
@@ -311,10 +378,12 @@ def generate():
         _, pl = _plans.build_plans(get_pattern(f"mask2_{phase.lower()}"), "sg")
         raws += [r for r in (p.tobytes() for p in pl) if r not in raws]
     plans = np.frombuffer(b"".join(raws), dtype=_plans.PLAN_DTYPE)
-    out = [HEAD]
+    tpl = [TEMPLATE_HEAD]
     for k, p in enumerate(plans):
         body, _ = _plan_body(p, k)
-        out.extend(line + "\n" for line in body)
+        tpl.extend(line + "\n" for line in body)
+    tpl.append(TEMPLATE_TAIL)
+    out = [HEAD]
     out.append(f"#define RGBZ_M2_NPLANS {len(plans)}\n")
     out.append(f"/* sites a step of rgbz_m2_run */\n#define RGBZ_M2_STEP ({U} * RGBZ_M2_W)\n")
     out.append("static const int rgbz_m2_ntaps[RGBZ_M2_NPLANS] = {"
@@ -332,20 +401,22 @@ def generate():
         out.append("\n    },\n")
     out.append("};\n")
     out.append(TAIL)
-    return "".join(out)
+    return {OUT: "".join(out), OUT_SITES: "".join(tpl)}
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--check", action="store_true", help="exit 1 if the header differs")
     a = ap.parse_args(argv)
-    text = generate()
+    files = generate()
     if a.check:
-        same = OUT.exists() and OUT.read_text() == text
-        print(f"{OUT.relative_to(ROOT)}: {'up to date' if same else 'DIFFERS from the script'}")
-        return 0 if same else 1
-    OUT.write_text(text)
-    print(f"wrote {OUT.relative_to(ROOT)} ({len(text.splitlines())} lines)")
+        bad = [f for f, text in files.items() if not (f.exists() and f.read_text() == text)]
+        for f in files:
+            print(f"{f.relative_to(ROOT)}: {'DIFFERS from the script' if f in bad else 'up to date'}")
+        return 1 if bad else 0
+    for f, text in files.items():
+        f.write_text(text)
+        print(f"wrote {f.relative_to(ROOT)} ({len(text.splitlines())} lines)")
     return 0
 
 

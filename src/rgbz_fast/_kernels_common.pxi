@@ -106,6 +106,7 @@ cdef extern from "rgbz.h" nogil:
     int rgbz_plan_layout(int64_t *out, int n)
     int rgbz_mask1_plan(int method, int sg_combined, rgbz_plan *out)
     int rgbz_mask2_plan_index(const rgbz_plan *p)
+    int rgbz_mask2_generic(int on)
     # one entry point per precision, all of this type (csrc/rgbz_templating.h)
     ctypedef int rgbz_reconstruct_fn(int in_type, const void *src, void *dst, Py_ssize_t rows,
                                      Py_ssize_t cols, int py, int px, const int32_t *phase_map,
@@ -341,6 +342,13 @@ def mask2_plan_index(const uint8_t[::1] plan):
     if plan.shape[0] != sizeof(rgbz_plan):
         raise ValueError(f"plan: expected {sizeof(rgbz_plan)} bytes, got {plan.shape[0]}")
     return int(rgbz_mask2_plan_index(<const rgbz_plan *> &plan[0]))
+
+
+def mask2_generic(int on=-1):
+    """SG Mask2's straight-line code on its generic instance (``on=1``: what CPUs without
+    AVX-512F run) or the CPU's (``0``); ``-1`` leaves it. Returns the setting before, -1 in a
+    build without that code. For tests; not to be changed while reconstructions run."""
+    return int(rgbz_mask2_generic(on))
 
 
 def have_openmp():

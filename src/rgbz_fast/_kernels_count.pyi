@@ -15,6 +15,7 @@ from rgbz_fast._kernels import counting_build as counting_build
 from rgbz_fast._kernels import have_openmp as have_openmp
 from rgbz_fast._kernels import learned as learned
 from rgbz_fast._kernels import mask1_plan as mask1_plan
+from rgbz_fast._kernels import mask2_generic as mask2_generic
 from rgbz_fast._kernels import mask2_plan_index as mask2_plan_index
 from rgbz_fast._kernels import max_threads as max_threads
 from rgbz_fast._kernels import openmp_release as openmp_release

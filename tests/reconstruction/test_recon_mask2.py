@@ -52,6 +52,14 @@ def test_which_plans_run_the_straight_line_code():
     assert _indices(_kernels_count, "mask2") == [-1] * 4
 
 
+def test_the_generic_switch():
+    before = _kernels.mask2_generic()
+    assert before == 0
+    assert _kernels.mask2_generic(1) == 0 and _kernels.mask2_generic() == 1
+    assert _kernels.mask2_generic(0) == 1 and _kernels.mask2_generic() == 0
+    assert _kernels_count.mask2_generic() == -1                # no such code there
+
+
 def test_plan_index_rejects_a_wrong_size():
     with pytest.raises(ValueError, match="plan: expected"):
         _kernels.mask2_plan_index(np.zeros(10, np.uint8))
@@ -74,6 +82,15 @@ def _frame(kind, shape, rng, pattern="mask2"):
     return rz.mosaic(img, pattern).data
 
 
+@pytest.fixture(params=["cpu", "generic"])
+def instance(request):
+    """Each test on the CPU's instance of the code (AVX-512F here where it runs) and on the
+    generic one (what other CPUs run)."""
+    before = _kernels.mask2_generic(int(request.param == "generic"))
+    yield request.param
+    _kernels.mask2_generic(before)
+
+
 def _same(a, b):
     a, b = np.asarray(a), np.asarray(b)
     return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
@@ -81,7 +98,7 @@ def _same(a, b):
 
 @pytest.mark.parametrize("kind", ["smooth", "noise", "flat", "spiky", "edges"])
 @pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
-def test_same_bits_as_the_interpreter(kind, dtype):
+def test_same_bits_as_the_interpreter(kind, dtype, instance):
     """Every element type, sizes whose Z rows end in a partial vector, 1 and 2 threads."""
     rng = np.random.default_rng(sum(map(ord, kind + np.dtype(dtype).name)))
     for shape in [(12, 12), (37, 53), (64, 270)]:
@@ -99,7 +116,7 @@ def test_same_bits_as_the_interpreter(kind, dtype):
 
 
 @pytest.mark.parametrize("phase", ["RGGB", "BGGR", "GBRG"])
-def test_same_bits_at_every_bayer_phase(phase):
+def test_same_bits_at_every_bayer_phase(phase, instance):
     rng = np.random.default_rng(11)
     pat = f"mask2_{phase.lower()}"
     for kind in ("noise", "edges"):
@@ -124,7 +141,7 @@ def test_same_bits_at_every_bayer_phase(phase):
     {"sigma_floor": 500.0},
     {"clip_level": 0.7},                   # clipped sites computed again on the plans
 ])
-def test_same_bits_for_every_setting(params):
+def test_same_bits_for_every_setting(params, instance):
     rng = np.random.default_rng(7)
     d = (_frame("noise", (40, 70), rng) / 2047.0).astype(np.float32)
     fast = rz.reconstruct(d, "sg", pattern="mask2", **params)
@@ -133,7 +150,7 @@ def test_same_bits_for_every_setting(params):
     assert _same(fast, slow)
 
 
-def test_same_bits_at_the_extremes():
+def test_same_bits_at_the_extremes(instance):
     """Subnormal, zero and full-scale taps (the frame check refuses NaN, infinities and values
     beyond the bit depth before the kernel), where weights underflow or the sums of beta
     and of the gradients are 0, and the result falls back to the candidates' mean."""
