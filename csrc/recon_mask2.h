@@ -2513,16 +2513,21 @@ static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][4792] = {
 #define M2_ATTR
 #define M2_MIN(a, b) rgbz_v16_sel((a) < (b), (a), (b))
 #define M2_MAX(a, b) rgbz_v16_sel((a) > (b), (a), (b))
-#define M2_SCALE(p, et, en) ((p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)))
+#define M2_RINT(v, et) ((et) - 12582912.0f)
+#define M2_EXPOUT(x, p, et, en)                                                         \
+    rgbz_v16_sel((x) > -87.0f, (p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)), \
+                 rgbz_v16_set(0.0f))
 #include "recon_mask2_sites.template.h"
 #undef M2_FN
 #undef M2_ATTR
 #undef M2_MIN
 #undef M2_MAX
-#undef M2_SCALE
+#undef M2_RINT
+#undef M2_EXPOUT
 
-/* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS and the
-   exponential's 2^n as VSCALEFPS, one instruction each for two or three, the same values */
+/* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS, the
+   exponential's rounding as VRNDSCALEPS and its 2^n and last select as a masked VSCALEFPS,
+   one instruction each for two or three, the same values */
 #if defined(__x86_64__) && !defined(__clang__) && defined(__GLIBC__) && !defined(RGBZ_NO_CLONES)
 #define RGBZ_M2_X 1
 #include <immintrin.h>
@@ -2530,13 +2535,19 @@ static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][4792] = {
 #define M2_ATTR __attribute__((target("avx512f")))
 #define M2_MIN(a, b) ((rgbz_v16)_mm512_min_ps((__m512)(a), (__m512)(b)))
 #define M2_MAX(a, b) ((rgbz_v16)_mm512_max_ps((__m512)(a), (__m512)(b)))
-#define M2_SCALE(p, et, en) ((rgbz_v16)_mm512_scalef_ps((__m512)(p), (__m512)(en)))
+#define M2_RINT(v, et)                                                                   \
+    ((rgbz_v16)_mm512_roundscale_ps((__m512)(v), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC))
+#define M2_EXPOUT(x, p, et, en)                                                          \
+    ((rgbz_v16)_mm512_maskz_scalef_ps(                                                    \
+        _mm512_cmp_ps_mask((__m512)(x), _mm512_set1_ps(-87.0f), _CMP_GT_OQ), (__m512)(p), \
+        (__m512)(en)))
 #include "recon_mask2_sites.template.h"
 #undef M2_FN
 #undef M2_ATTR
 #undef M2_MIN
 #undef M2_MAX
-#undef M2_SCALE
+#undef M2_RINT
+#undef M2_EXPOUT
 #else
 #define RGBZ_M2_X 0
 #endif

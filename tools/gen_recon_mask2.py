@@ -101,8 +101,6 @@ def _plan_body(p, fid):
         for fam in (range(g0, g0 + ng),):
             for g in fam:
                 st(f"const rgbz_v16 x{g}{{u}} = (gm{g}{{u}} * gm{g}{{u}}) * {nm}ninv{{u}};")
-            for g in fam:
-                st(f"const rgbz_v16i in{g}{{u}} = x{g}{{u}} > -87.0f;")
             # (rgbz_exp_poly_f32 clamps x to -87 first; a lane below gets 0 from the last select
             # whatever the steps give it -- no float-to-integer conversion here --, so x itself)
             for g in fam:
@@ -110,7 +108,7 @@ def _plan_body(p, fid):
             for g in fam:
                 st(f"const rgbz_v16 et{g}{{u}} = xc{g}{{u}} * 1.44269504f + 12582912.0f;")
             for g in fam:
-                st(f"const rgbz_v16 en{g}{{u}} = et{g}{{u}} - 12582912.0f;")
+                st(f"const rgbz_v16 en{g}{{u}} = M2_RINT(xc{g}{{u}} * 1.44269504f, et{g}{{u}});")
             for g in fam:
                 st(f"const rgbz_v16 ey{g}{{u}} = (xc{g}{{u}} - en{g}{{u}} * 0.693359375f) - "
                    f"en{g}{{u}} * -2.12194440e-4f;")
@@ -120,8 +118,8 @@ def _plan_body(p, fid):
                 for g in fam:
                     st(f"ep{g}{{u}} = {c} + ey{g}{{u}} * ep{g}{{u}};")
             for g in fam:
-                st(f"const rgbz_v16 ga{g}{{u}} = rgbz_v16_sel(in{g}{{u}}, "
-                   f"M2_SCALE(ep{g}{{u}}, et{g}{{u}}, en{g}{{u}}), rgbz_v16_set(0.0f));")
+                st(f"const rgbz_v16 ga{g}{{u}} = M2_EXPOUT(x{g}{{u}}, ep{g}{{u}}, et{g}{{u}}, "
+                   f"en{g}{{u}});")
     # beta's sums (rgbz_beta_sums): pairs (k, m), k < m, k outer
     ct = [int(p["cand_tap"][k]) for k in range(nc)]
     for k in range(nc):
@@ -250,9 +248,13 @@ TEMPLATE_HEAD = r'''/*
  *   M2_ATTR                its target attribute (none; AVX-512F)
  *   M2_MIN(a, b)           a < b ? a : b per lane (x86's MINPS exactly)
  *   M2_MAX(a, b)           a > b ? a : b per lane (MAXPS exactly)
- *   M2_SCALE(p, et, en)    p * 2^en, en the integer of the exponential's rounding and et its
- *                          magic-number form (rgbz_exp_poly_f32's 2^n from et's bits, or
- *                          VSCALEFPS from en: exact, the results normal, so the same bits)
+ *   M2_RINT(v, et)         v rounded to an integer, ties to even: et - 1.5 * 2^23 with
+ *                          et = v + 1.5 * 2^23 (rgbz_exp_poly_f32's way), or VRNDSCALEPS of v
+ *                          (|v| < 2^22 where it matters: the same value)
+ *   M2_EXPOUT(x, p, et, en)  the exponential's last step: x > -87 ? p * 2^en : 0, 2^en from
+ *                          et's bits times p (rgbz_exp_poly_f32), or VSCALEFPS of p and en
+ *                          under the comparison's mask (exact, the results normal: the same
+ *                          bits)
  */
 '''
 
@@ -303,16 +305,21 @@ TAIL = r'''
 #define M2_ATTR
 #define M2_MIN(a, b) rgbz_v16_sel((a) < (b), (a), (b))
 #define M2_MAX(a, b) rgbz_v16_sel((a) > (b), (a), (b))
-#define M2_SCALE(p, et, en) ((p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)))
+#define M2_RINT(v, et) ((et) - 12582912.0f)
+#define M2_EXPOUT(x, p, et, en)                                                         \
+    rgbz_v16_sel((x) > -87.0f, (p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)), \
+                 rgbz_v16_set(0.0f))
 #include "recon_mask2_sites.template.h"
 #undef M2_FN
 #undef M2_ATTR
 #undef M2_MIN
 #undef M2_MAX
-#undef M2_SCALE
+#undef M2_RINT
+#undef M2_EXPOUT
 
-/* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS and the
-   exponential's 2^n as VSCALEFPS, one instruction each for two or three, the same values */
+/* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS, the
+   exponential's rounding as VRNDSCALEPS and its 2^n and last select as a masked VSCALEFPS,
+   one instruction each for two or three, the same values */
 #if defined(__x86_64__) && !defined(__clang__) && defined(__GLIBC__) && !defined(RGBZ_NO_CLONES)
 #define RGBZ_M2_X 1
 #include <immintrin.h>
@@ -320,13 +327,19 @@ TAIL = r'''
 #define M2_ATTR __attribute__((target("avx512f")))
 #define M2_MIN(a, b) ((rgbz_v16)_mm512_min_ps((__m512)(a), (__m512)(b)))
 #define M2_MAX(a, b) ((rgbz_v16)_mm512_max_ps((__m512)(a), (__m512)(b)))
-#define M2_SCALE(p, et, en) ((rgbz_v16)_mm512_scalef_ps((__m512)(p), (__m512)(en)))
+#define M2_RINT(v, et)                                                                   \
+    ((rgbz_v16)_mm512_roundscale_ps((__m512)(v), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC))
+#define M2_EXPOUT(x, p, et, en)                                                          \
+    ((rgbz_v16)_mm512_maskz_scalef_ps(                                                    \
+        _mm512_cmp_ps_mask((__m512)(x), _mm512_set1_ps(-87.0f), _CMP_GT_OQ), (__m512)(p), \
+        (__m512)(en)))
 #include "recon_mask2_sites.template.h"
 #undef M2_FN
 #undef M2_ATTR
 #undef M2_MIN
 #undef M2_MAX
-#undef M2_SCALE
+#undef M2_RINT
+#undef M2_EXPOUT
 #else
 #define RGBZ_M2_X 0
 #endif
