@@ -76,8 +76,6 @@ static inline int rgbz_v16_all(rgbz_v16i m)
 }
 
 #define RGBZ_M2_NPLANS 12
-/* sites a step of rgbz_m2_run */
-#define RGBZ_M2_STEP (1 * RGBZ_M2_W)
 static const int rgbz_m2_ntaps[RGBZ_M2_NPLANS] = {21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21};
 #define RGBZ_M2_CASES_ RGBZ_M2_CASE_(0) RGBZ_M2_CASE_(1) RGBZ_M2_CASE_(2) RGBZ_M2_CASE_(3) RGBZ_M2_CASE_(4) RGBZ_M2_CASE_(5) RGBZ_M2_CASE_(6) RGBZ_M2_CASE_(7) RGBZ_M2_CASE_(8) RGBZ_M2_CASE_(9) RGBZ_M2_CASE_(10) RGBZ_M2_CASE_(11)
 /* the plans as _plans.py builds them (rgbz_plan, 4792 bytes, little-endian) */

@@ -17,4818 +17,4674 @@
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t5_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G0_0 = G0_0 + d1_0;
-    G4_0 = G4_0 + d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t6_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    rgbz_v16 G5_0 = d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t5_0 - t8_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G1_0 = G1_0 + d4_0;
-    G6_0 = G6_0 + d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t6_0 - t10_0);
-    G1_0 = G1_0 + d5_0;
-    rgbz_v16 G7_0 = d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t14_0 - t15_0);
-    G2_0 = G2_0 + d7_0;
-    G4_0 = G4_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t9_0 - t8_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t14_0 - t16_0);
-    G3_0 = G3_0 + d10_0;
-    G5_0 = G5_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t15_0 - t17_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t3_0 - t7_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t16_0 - t18_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t8_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t9_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t19_0 - t20_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t10_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t12_0 - t19_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t13_0 - t20_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t5_0 - t6_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t17_0 - t18_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t16_0 - t19_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t6_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t18_0 - t12_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t13_0 - t17_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t9_0 - t5_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t10_0 - t0_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t15_0 - t12_0);
-    rgbz_v16 G11_0 = d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t5_0 - t1_0);
-    G11_0 = G11_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t11_0 - t14_0);
-    G11_0 = G11_0 + d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t17_0 - t19_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t7_0 - t4_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t8_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t13_0 - t16_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t9_0 - t6_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t20_0 - t18_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.25;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.5;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t5 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t11 - t12);
+    G0 = G0 + d1;
+    G4 = G4 + d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t6 - t2);
+    G0 = G0 + d2;
+    rgbz_v16 G5 = d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t5 - t8);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t11 - t13);
+    G1 = G1 + d4;
+    G6 = G6 + d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t6 - t10);
+    G1 = G1 + d5;
+    rgbz_v16 G7 = d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t14 - t15);
+    G2 = G2 + d7;
+    G4 = G4 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t9 - t8);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t14 - t16);
+    G3 = G3 + d10;
+    G5 = G5 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t9 - t10);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t15 - t17);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t3 - t7);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t16 - t18);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t8);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t12 - t13);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t9);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t19 - t20);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t10);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t12 - t19);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t13 - t20);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t15 - t16);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t5 - t6);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t17 - t18);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t8 - t10);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t16 - t19);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t6 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t18 - t12);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t13 - t17);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t9 - t5);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t20 - t15);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t10 - t0);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t15 - t12);
+    rgbz_v16 G11 = d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t5 - t1);
+    G11 = G11 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t11 - t14);
+    G11 = G11 + d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t17 - t19);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t7 - t4);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t8 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t13 - t16);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t9 - t6);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t20 - t18);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.25;
+    const rgbz_v16 gm5 = G5 * (float)0.3333333333333333;
+    const rgbz_v16 gm6 = G6 * (float)0.3333333333333333;
+    const rgbz_v16 gm7 = G7 * (float)0.5;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.14285714285714285;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.1111111111111111;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.14285714285714285;
+    const rgbz_v16 gm11 = G11 * (float)0.1111111111111111;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S8_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S9_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S10_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c8_0); S0_0 = S0_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c9_0); S0_0 = S0_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c10_0); S0_0 = S0_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c8_0); S1_0 = S1_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c9_0); S1_0 = S1_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c10_0); S1_0 = S1_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c8_0); S2_0 = S2_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c9_0); S2_0 = S2_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c10_0); S2_0 = S2_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c8_0); S3_0 = S3_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c9_0); S3_0 = S3_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c10_0); S3_0 = S3_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c8_0); S4_0 = S4_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c9_0); S4_0 = S4_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c10_0); S4_0 = S4_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c8_0); S5_0 = S5_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c9_0); S5_0 = S5_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c10_0); S5_0 = S5_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c8_0); S6_0 = S6_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c9_0); S6_0 = S6_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c10_0); S6_0 = S6_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c8_0); S7_0 = S7_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c9_0); S7_0 = S7_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c10_0); S7_0 = S7_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c9_0); S8_0 = S8_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c10_0); S8_0 = S8_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9_0 - c10_0); S9_0 = S9_0 + e; S10_0 = S10_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S4_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c8_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c9_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c10_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    rgbz_v16 S8 = rgbz_v16_set(1.0f);
+    rgbz_v16 S9 = rgbz_v16_set(1.0f);
+    rgbz_v16 S10 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S4) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c8 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c9 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c10 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        s_0 = s_0 + (c8_0 - c0_0);
-        s_0 = s_0 + (c9_0 - c0_0);
-        s_0 = s_0 + (c10_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)11);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        s = s + (c8 - c0);
+        s = s + (c9 - c0);
+        s = s + (c10 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)11);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 1: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    rgbz_v16 G5_0 = d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    G5_0 = G5_0 + d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    rgbz_v16 G7_0 = d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    G7_0 = G7_0 + d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G4_0 = G4_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G5_0 = G5_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t12_0 - t14_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t13_0 - t17_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t18_0 - t9_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t19_0 - t10_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t13_0 - t9_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t8_0 - t11_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t16_0 - t20_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t17_0 - t18_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t19_0 - t14_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t10_0 - t12_0);
-    G10_0 = G10_0 + d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t12_0 - t18_0);
-    rgbz_v16 G11_0 = d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t14_0 - t9_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t19_0 - t13_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t10_0 - t17_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.25;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.5;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.3333333333333333;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    rgbz_v16 G5 = d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    G5 = G5 + d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    rgbz_v16 G7 = d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    G7 = G7 + d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G4 = G4 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G5 = G5 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t12 - t14);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t13 - t17);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t18 - t9);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t20 - t15);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t19 - t10);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t13 - t9);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t8 - t11);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t16 - t20);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t17 - t18);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t19 - t14);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t10 - t12);
+    G10 = G10 + d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t12 - t18);
+    rgbz_v16 G11 = d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t14 - t9);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t19 - t13);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t10 - t17);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.3333333333333333;
+    const rgbz_v16 gm5 = G5 * (float)0.25;
+    const rgbz_v16 gm6 = G6 * (float)0.5;
+    const rgbz_v16 gm7 = G7 * (float)0.3333333333333333;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.1111111111111111;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.14285714285714285;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.1111111111111111;
+    const rgbz_v16 gm11 = G11 * (float)0.14285714285714285;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 2: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    G4_0 = G4_0 + d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    rgbz_v16 G5_0 = d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    G6_0 = G6_0 + d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    rgbz_v16 G7_0 = d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G6_0 = G6_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G7_0 = G7_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t14_0 - t12_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t17_0 - t13_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t9_0 - t18_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t16_0 - t20_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t10_0 - t19_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t17_0 - t18_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t11_0 - t8_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t13_0 - t9_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t10_0 - t12_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t19_0 - t14_0);
-    G10_0 = G10_0 + d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t14_0 - t9_0);
-    rgbz_v16 G11_0 = d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t12_0 - t18_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t10_0 - t17_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t19_0 - t13_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.5;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.25;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.3333333333333333;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    G4 = G4 + d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    rgbz_v16 G5 = d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    G6 = G6 + d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    rgbz_v16 G7 = d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G6 = G6 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G7 = G7 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t14 - t12);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t17 - t13);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t9 - t18);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t16 - t20);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t10 - t19);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t17 - t18);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t11 - t8);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t20 - t15);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t13 - t9);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t10 - t12);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t19 - t14);
+    G10 = G10 + d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t14 - t9);
+    rgbz_v16 G11 = d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t12 - t18);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t10 - t17);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t19 - t13);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.3333333333333333;
+    const rgbz_v16 gm5 = G5 * (float)0.5;
+    const rgbz_v16 gm6 = G6 * (float)0.25;
+    const rgbz_v16 gm7 = G7 * (float)0.3333333333333333;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.1111111111111111;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.14285714285714285;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.1111111111111111;
+    const rgbz_v16 gm11 = G11 * (float)0.14285714285714285;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 3: 21 taps, 11 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t4_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G0_0 = G0_0 + d1_0;
-    rgbz_v16 G5_0 = d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    G5_0 = G5_0 + d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t4_0 - t8_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G1_0 = G1_0 + d4_0;
-    rgbz_v16 G7_0 = d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t5_0 - t10_0);
-    G1_0 = G1_0 + d5_0;
-    G7_0 = G7_0 + d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t14_0 - t15_0);
-    G2_0 = G2_0 + d7_0;
-    G6_0 = G6_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t9_0 - t8_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t14_0 - t16_0);
-    G3_0 = G3_0 + d10_0;
-    G7_0 = G7_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t17_0 - t15_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t3_0 - t7_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t18_0 - t16_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t8_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t19_0 - t20_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t9_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t10_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t19_0 - t12_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t20_0 - t13_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t17_0 - t18_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t4_0 - t5_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t18_0 - t12_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t5_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t16_0 - t19_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t9_0 - t4_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t13_0 - t17_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t10_0 - t0_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t17_0 - t19_0);
-    rgbz_v16 G11_0 = d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G11_0 = G11_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t15_0 - t12_0);
-    G11_0 = G11_0 + d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t14_0 - t11_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t8_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t20_0 - t18_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t9_0 - t5_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t13_0 - t16_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.5;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.25;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t4 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t11 - t12);
+    G0 = G0 + d1;
+    rgbz_v16 G5 = d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t5 - t2);
+    G0 = G0 + d2;
+    G5 = G5 + d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t4 - t8);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t11 - t13);
+    G1 = G1 + d4;
+    rgbz_v16 G7 = d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t5 - t10);
+    G1 = G1 + d5;
+    G7 = G7 + d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t14 - t15);
+    G2 = G2 + d7;
+    G6 = G6 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t9 - t8);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t14 - t16);
+    G3 = G3 + d10;
+    G7 = G7 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t9 - t10);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t17 - t15);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t3 - t7);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t18 - t16);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t8);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t19 - t20);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t9);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t12 - t13);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t10);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t19 - t12);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t6 - t7);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t20 - t13);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t17 - t18);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t4 - t5);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t15 - t16);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t8 - t10);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t18 - t12);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t5 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t16 - t19);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t20 - t15);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t9 - t4);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t13 - t17);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t10 - t0);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t17 - t19);
+    rgbz_v16 G11 = d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t4 - t1);
+    G11 = G11 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t15 - t12);
+    G11 = G11 + d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t6 - t3);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t14 - t11);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t8 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t20 - t18);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t9 - t5);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t13 - t16);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.5;
+    const rgbz_v16 gm5 = G5 * (float)0.3333333333333333;
+    const rgbz_v16 gm6 = G6 * (float)0.3333333333333333;
+    const rgbz_v16 gm7 = G7 * (float)0.25;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.14285714285714285;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.1111111111111111;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.14285714285714285;
+    const rgbz_v16 gm11 = G11 * (float)0.1111111111111111;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S8_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S9_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S10_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c8_0); S0_0 = S0_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c9_0); S0_0 = S0_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c10_0); S0_0 = S0_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c8_0); S1_0 = S1_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c9_0); S1_0 = S1_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c10_0); S1_0 = S1_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c8_0); S2_0 = S2_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c9_0); S2_0 = S2_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c10_0); S2_0 = S2_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c8_0); S3_0 = S3_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c9_0); S3_0 = S3_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c10_0); S3_0 = S3_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c8_0); S4_0 = S4_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c9_0); S4_0 = S4_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c10_0); S4_0 = S4_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c8_0); S5_0 = S5_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c9_0); S5_0 = S5_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c10_0); S5_0 = S5_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c8_0); S6_0 = S6_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c9_0); S6_0 = S6_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c10_0); S6_0 = S6_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c8_0); S7_0 = S7_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c9_0); S7_0 = S7_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c10_0); S7_0 = S7_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c9_0); S8_0 = S8_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c10_0); S8_0 = S8_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9_0 - c10_0); S9_0 = S9_0 + e; S10_0 = S10_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S6_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c8_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c9_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c10_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    rgbz_v16 S8 = rgbz_v16_set(1.0f);
+    rgbz_v16 S9 = rgbz_v16_set(1.0f);
+    rgbz_v16 S10 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S6) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c8 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c9 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c10 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        s_0 = s_0 + (c8_0 - c0_0);
-        s_0 = s_0 + (c9_0 - c0_0);
-        s_0 = s_0 + (c10_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)11);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        s = s + (c8 - c0);
+        s = s + (c9 - c0);
+        s = s + (c10 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)11);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 4: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    G4_0 = G4_0 + d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    rgbz_v16 G5_0 = d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    G6_0 = G6_0 + d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    rgbz_v16 G7_0 = d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G4_0 = G4_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G5_0 = G5_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t12_0 - t14_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t13_0 - t17_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t9_0 - t18_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t15_0 - t20_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t10_0 - t19_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t13_0 - t18_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t17_0 - t9_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t10_0 - t14_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t19_0 - t12_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t12_0 - t9_0);
-    rgbz_v16 G11_0 = d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t8_0 - t11_0);
-    G11_0 = G11_0 + d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t14_0 - t18_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t16_0 - t20_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t10_0 - t13_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t19_0 - t17_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.25;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.5;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    G4 = G4 + d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    rgbz_v16 G5 = d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    G6 = G6 + d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    rgbz_v16 G7 = d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G4 = G4 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G5 = G5 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t12 - t14);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t13 - t17);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t9 - t18);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t15 - t20);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t10 - t19);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t13 - t18);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t17 - t9);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t10 - t14);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t19 - t12);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t12 - t9);
+    rgbz_v16 G11 = d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t8 - t11);
+    G11 = G11 + d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t14 - t18);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t16 - t20);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t10 - t13);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t19 - t17);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.25;
+    const rgbz_v16 gm5 = G5 * (float)0.3333333333333333;
+    const rgbz_v16 gm6 = G6 * (float)0.3333333333333333;
+    const rgbz_v16 gm7 = G7 * (float)0.5;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.14285714285714285;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.1111111111111111;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.14285714285714285;
+    const rgbz_v16 gm11 = G11 * (float)0.1111111111111111;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 5: 21 taps, 11 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t5_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G0_0 = G0_0 + d1_0;
-    rgbz_v16 G5_0 = d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t6_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    G5_0 = G5_0 + d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t5_0 - t8_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G1_0 = G1_0 + d4_0;
-    rgbz_v16 G7_0 = d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t6_0 - t10_0);
-    G1_0 = G1_0 + d5_0;
-    G7_0 = G7_0 + d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t14_0 - t15_0);
-    G2_0 = G2_0 + d7_0;
-    G4_0 = G4_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t9_0 - t8_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t14_0 - t16_0);
-    G3_0 = G3_0 + d10_0;
-    G5_0 = G5_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t15_0 - t17_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t16_0 - t18_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t8_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t19_0 - t20_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t9_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t10_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t19_0 - t12_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t20_0 - t13_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t5_0 - t6_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t17_0 - t18_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t16_0 - t12_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t11_0 - t14_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t6_0 - t1_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t7_0 - t3_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t20_0 - t17_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t9_0 - t5_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t13_0 - t15_0);
-    G10_0 = G10_0 + d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t10_0 - t0_0);
-    G10_0 = G10_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t15_0 - t19_0);
-    rgbz_v16 G11_0 = d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t5_0 - t1_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t17_0 - t12_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t8_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t20_0 - t16_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t9_0 - t6_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t13_0 - t18_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.25;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.5;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.3333333333333333;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t5 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t11 - t12);
+    G0 = G0 + d1;
+    rgbz_v16 G5 = d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t6 - t2);
+    G0 = G0 + d2;
+    G5 = G5 + d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t5 - t8);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t11 - t13);
+    G1 = G1 + d4;
+    rgbz_v16 G7 = d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t6 - t10);
+    G1 = G1 + d5;
+    G7 = G7 + d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t14 - t15);
+    G2 = G2 + d7;
+    G4 = G4 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t9 - t8);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t14 - t16);
+    G3 = G3 + d10;
+    G5 = G5 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t9 - t10);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t15 - t17);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t4 - t7);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t16 - t18);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t8);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t19 - t20);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t9);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t12 - t13);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t10);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t19 - t12);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t20 - t13);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t15 - t16);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t5 - t6);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t17 - t18);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t8 - t10);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t16 - t12);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t11 - t14);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t6 - t1);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t7 - t3);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t18 - t19);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t20 - t17);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t9 - t5);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t13 - t15);
+    G10 = G10 + d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t10 - t0);
+    G10 = G10 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t15 - t19);
+    rgbz_v16 G11 = d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t5 - t1);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t17 - t12);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t8 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t20 - t16);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t9 - t6);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t13 - t18);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.3333333333333333;
+    const rgbz_v16 gm5 = G5 * (float)0.25;
+    const rgbz_v16 gm6 = G6 * (float)0.5;
+    const rgbz_v16 gm7 = G7 * (float)0.3333333333333333;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.1111111111111111;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.14285714285714285;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.1111111111111111;
+    const rgbz_v16 gm11 = G11 * (float)0.14285714285714285;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S8_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S9_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S10_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c8_0); S0_0 = S0_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c9_0); S0_0 = S0_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c10_0); S0_0 = S0_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c8_0); S1_0 = S1_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c9_0); S1_0 = S1_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c10_0); S1_0 = S1_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c8_0); S2_0 = S2_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c9_0); S2_0 = S2_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c10_0); S2_0 = S2_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c8_0); S3_0 = S3_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c9_0); S3_0 = S3_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c10_0); S3_0 = S3_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c8_0); S4_0 = S4_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c9_0); S4_0 = S4_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c10_0); S4_0 = S4_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c8_0); S5_0 = S5_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c9_0); S5_0 = S5_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c10_0); S5_0 = S5_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c8_0); S6_0 = S6_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c9_0); S6_0 = S6_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c10_0); S6_0 = S6_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c8_0); S7_0 = S7_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c9_0); S7_0 = S7_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c10_0); S7_0 = S7_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c9_0); S8_0 = S8_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c10_0); S8_0 = S8_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9_0 - c10_0); S9_0 = S9_0 + e; S10_0 = S10_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S4_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c8_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c9_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c10_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    rgbz_v16 S8 = rgbz_v16_set(1.0f);
+    rgbz_v16 S9 = rgbz_v16_set(1.0f);
+    rgbz_v16 S10 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S4) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c8 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c9 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c10 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        s_0 = s_0 + (c8_0 - c0_0);
-        s_0 = s_0 + (c9_0 - c0_0);
-        s_0 = s_0 + (c10_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)11);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        s = s + (c8 - c0);
+        s = s + (c9 - c0);
+        s = s + (c10 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)11);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 6: 21 taps, 11 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t4_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G0_0 = G0_0 + d1_0;
-    G4_0 = G4_0 + d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    rgbz_v16 G5_0 = d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t4_0 - t8_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G1_0 = G1_0 + d4_0;
-    G6_0 = G6_0 + d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t5_0 - t10_0);
-    G1_0 = G1_0 + d5_0;
-    rgbz_v16 G7_0 = d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t14_0 - t15_0);
-    G2_0 = G2_0 + d7_0;
-    G6_0 = G6_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t9_0 - t8_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t14_0 - t16_0);
-    G3_0 = G3_0 + d10_0;
-    G7_0 = G7_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t17_0 - t15_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t3_0 - t6_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t18_0 - t16_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t8_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t9_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t19_0 - t20_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t10_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t12_0 - t19_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t13_0 - t20_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t17_0 - t18_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t4_0 - t5_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t18_0 - t19_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t5_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t14_0 - t11_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t7_0 - t3_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t16_0 - t12_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t13_0 - t15_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t9_0 - t4_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t20_0 - t17_0);
-    G10_0 = G10_0 + d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t10_0 - t0_0);
-    G10_0 = G10_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t17_0 - t12_0);
-    rgbz_v16 G11_0 = d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t15_0 - t19_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t8_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t13_0 - t18_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t9_0 - t5_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t20_0 - t16_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.5;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.25;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.3333333333333333;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t4 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t11 - t12);
+    G0 = G0 + d1;
+    G4 = G4 + d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t5 - t2);
+    G0 = G0 + d2;
+    rgbz_v16 G5 = d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t4 - t8);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t11 - t13);
+    G1 = G1 + d4;
+    G6 = G6 + d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t5 - t10);
+    G1 = G1 + d5;
+    rgbz_v16 G7 = d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t14 - t15);
+    G2 = G2 + d7;
+    G6 = G6 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t9 - t8);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t14 - t16);
+    G3 = G3 + d10;
+    G7 = G7 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t9 - t10);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t17 - t15);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t3 - t6);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t18 - t16);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t8);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t12 - t13);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t9);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t19 - t20);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t10);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t12 - t19);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t6 - t7);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t13 - t20);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t17 - t18);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t4 - t5);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t15 - t16);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t8 - t10);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t18 - t19);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t5 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t14 - t11);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t7 - t3);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t16 - t12);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t13 - t15);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t9 - t4);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t20 - t17);
+    G10 = G10 + d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t10 - t0);
+    G10 = G10 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t17 - t12);
+    rgbz_v16 G11 = d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t4 - t1);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t15 - t19);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t8 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t13 - t18);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t9 - t5);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t20 - t16);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.3333333333333333;
+    const rgbz_v16 gm5 = G5 * (float)0.5;
+    const rgbz_v16 gm6 = G6 * (float)0.25;
+    const rgbz_v16 gm7 = G7 * (float)0.3333333333333333;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.1111111111111111;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.14285714285714285;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.1111111111111111;
+    const rgbz_v16 gm11 = G11 * (float)0.14285714285714285;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S8_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S9_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S10_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c8_0); S0_0 = S0_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c9_0); S0_0 = S0_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c10_0); S0_0 = S0_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c8_0); S1_0 = S1_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c9_0); S1_0 = S1_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c10_0); S1_0 = S1_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c8_0); S2_0 = S2_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c9_0); S2_0 = S2_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c10_0); S2_0 = S2_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c8_0); S3_0 = S3_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c9_0); S3_0 = S3_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c10_0); S3_0 = S3_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c8_0); S4_0 = S4_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c9_0); S4_0 = S4_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c10_0); S4_0 = S4_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c8_0); S5_0 = S5_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c9_0); S5_0 = S5_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c10_0); S5_0 = S5_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c8_0); S6_0 = S6_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c9_0); S6_0 = S6_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c10_0); S6_0 = S6_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c8_0); S7_0 = S7_0 + e; S8_0 = S8_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c9_0); S7_0 = S7_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7_0 - c10_0); S7_0 = S7_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c9_0); S8_0 = S8_0 + e; S9_0 = S9_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8_0 - c10_0); S8_0 = S8_0 + e; S10_0 = S10_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9_0 - c10_0); S9_0 = S9_0 + e; S10_0 = S10_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S6_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c8_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c9_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c10_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    rgbz_v16 S8 = rgbz_v16_set(1.0f);
+    rgbz_v16 S9 = rgbz_v16_set(1.0f);
+    rgbz_v16 S10 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S3) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S5) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S6) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.36787944117144233) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S8) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c8 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S9) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c9 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S10) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c10 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        s_0 = s_0 + (c8_0 - c0_0);
-        s_0 = s_0 + (c9_0 - c0_0);
-        s_0 = s_0 + (c10_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)11);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        s = s + (c8 - c0);
+        s = s + (c9 - c0);
+        s = s + (c10 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)11);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 7: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    rgbz_v16 G5_0 = d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    G5_0 = G5_0 + d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    rgbz_v16 G7_0 = d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    G7_0 = G7_0 + d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G6_0 = G6_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G7_0 = G7_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t14_0 - t12_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t17_0 - t13_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t18_0 - t9_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t20_0 - t16_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t19_0 - t10_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t17_0 - t9_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t13_0 - t18_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t19_0 - t12_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t10_0 - t14_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t14_0 - t18_0);
-    rgbz_v16 G11_0 = d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t12_0 - t9_0);
-    G11_0 = G11_0 + d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t11_0 - t8_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t19_0 - t17_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t10_0 - t13_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.5;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.25;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    rgbz_v16 G5 = d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    G5 = G5 + d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    rgbz_v16 G7 = d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    G7 = G7 + d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G6 = G6 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G7 = G7 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t14 - t12);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t17 - t13);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t18 - t9);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t20 - t16);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t19 - t10);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t17 - t9);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t13 - t18);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t19 - t12);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t10 - t14);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t14 - t18);
+    rgbz_v16 G11 = d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t12 - t9);
+    G11 = G11 + d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t20 - t15);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t11 - t8);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t19 - t17);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t10 - t13);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.5;
+    const rgbz_v16 gm5 = G5 * (float)0.3333333333333333;
+    const rgbz_v16 gm6 = G6 * (float)0.3333333333333333;
+    const rgbz_v16 gm7 = G7 * (float)0.25;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.14285714285714285;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.1111111111111111;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.14285714285714285;
+    const rgbz_v16 gm11 = G11 * (float)0.1111111111111111;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 8: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    G4_0 = G4_0 + d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    rgbz_v16 G5_0 = d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    G6_0 = G6_0 + d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    rgbz_v16 G7_0 = d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G4_0 = G4_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G5_0 = G5_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t12_0 - t14_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t13_0 - t17_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t9_0 - t18_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t15_0 - t20_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t10_0 - t19_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t13_0 - t18_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t17_0 - t9_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t10_0 - t14_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t19_0 - t12_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t12_0 - t9_0);
-    rgbz_v16 G11_0 = d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t8_0 - t11_0);
-    G11_0 = G11_0 + d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t14_0 - t18_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t16_0 - t20_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t10_0 - t13_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t19_0 - t17_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.25;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.5;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    G4 = G4 + d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    rgbz_v16 G5 = d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    G6 = G6 + d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    rgbz_v16 G7 = d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G4 = G4 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G5 = G5 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t12 - t14);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t13 - t17);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t9 - t18);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t15 - t20);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t10 - t19);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t13 - t18);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t17 - t9);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t10 - t14);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t19 - t12);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t12 - t9);
+    rgbz_v16 G11 = d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t8 - t11);
+    G11 = G11 + d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t14 - t18);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t16 - t20);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t10 - t13);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t19 - t17);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.25;
+    const rgbz_v16 gm5 = G5 * (float)0.3333333333333333;
+    const rgbz_v16 gm6 = G6 * (float)0.3333333333333333;
+    const rgbz_v16 gm7 = G7 * (float)0.5;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.14285714285714285;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.1111111111111111;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.14285714285714285;
+    const rgbz_v16 gm11 = G11 * (float)0.1111111111111111;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 9: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    rgbz_v16 G5_0 = d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    G5_0 = G5_0 + d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    rgbz_v16 G7_0 = d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    G7_0 = G7_0 + d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G6_0 = G6_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G7_0 = G7_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t14_0 - t12_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t17_0 - t13_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t18_0 - t9_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t20_0 - t16_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t19_0 - t10_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t17_0 - t9_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t13_0 - t18_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t19_0 - t12_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t10_0 - t14_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t14_0 - t18_0);
-    rgbz_v16 G11_0 = d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t12_0 - t9_0);
-    G11_0 = G11_0 + d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t11_0 - t8_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t19_0 - t17_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t10_0 - t13_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.5;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.25;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    rgbz_v16 G5 = d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    G5 = G5 + d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    rgbz_v16 G7 = d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    G7 = G7 + d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G6 = G6 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G7 = G7 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t14 - t12);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t17 - t13);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t18 - t9);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t20 - t16);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t19 - t10);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t17 - t9);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t13 - t18);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t19 - t12);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t10 - t14);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t14 - t18);
+    rgbz_v16 G11 = d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t12 - t9);
+    G11 = G11 + d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t20 - t15);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t11 - t8);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t19 - t17);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t10 - t13);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.5;
+    const rgbz_v16 gm5 = G5 * (float)0.3333333333333333;
+    const rgbz_v16 gm6 = G6 * (float)0.3333333333333333;
+    const rgbz_v16 gm7 = G7 * (float)0.25;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.14285714285714285;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.1111111111111111;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.14285714285714285;
+    const rgbz_v16 gm11 = G11 * (float)0.1111111111111111;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 10: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    rgbz_v16 G5_0 = d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    G5_0 = G5_0 + d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    rgbz_v16 G7_0 = d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    G7_0 = G7_0 + d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G4_0 = G4_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G5_0 = G5_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t12_0 - t14_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t13_0 - t17_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t18_0 - t9_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t19_0 - t10_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t13_0 - t9_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t8_0 - t11_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t16_0 - t20_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t17_0 - t18_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t19_0 - t14_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t10_0 - t12_0);
-    G10_0 = G10_0 + d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t12_0 - t18_0);
-    rgbz_v16 G11_0 = d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t14_0 - t9_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t19_0 - t13_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t10_0 - t17_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.25;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.5;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.3333333333333333;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    rgbz_v16 G5 = d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    G5 = G5 + d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    rgbz_v16 G7 = d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    G7 = G7 + d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G4 = G4 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G5 = G5 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t12 - t14);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t13 - t17);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t18 - t9);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t20 - t15);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t19 - t10);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t13 - t9);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t8 - t11);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t16 - t20);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t17 - t18);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t19 - t14);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t10 - t12);
+    G10 = G10 + d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t12 - t18);
+    rgbz_v16 G11 = d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t14 - t9);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t19 - t13);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t10 - t17);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.3333333333333333;
+    const rgbz_v16 gm5 = G5 * (float)0.25;
+    const rgbz_v16 gm6 = G6 * (float)0.5;
+    const rgbz_v16 gm7 = G7 * (float)0.3333333333333333;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.1111111111111111;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.14285714285714285;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.1111111111111111;
+    const rgbz_v16 gm11 = G11 * (float)0.14285714285714285;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 /* Z site 11: 21 taps, 8 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t8_0 = rgbz_v16_load(src[8] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t9_0 = rgbz_v16_load(src[9] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t10_0 = rgbz_v16_load(src[10] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t11_0 = rgbz_v16_load(src[11] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t12_0 = rgbz_v16_load(src[12] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t13_0 = rgbz_v16_load(src[13] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t14_0 = rgbz_v16_load(src[14] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t15_0 = rgbz_v16_load(src[15] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t16_0 = rgbz_v16_load(src[16] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t17_0 = rgbz_v16_load(src[17] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t18_0 = rgbz_v16_load(src[18] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t19_0 = rgbz_v16_load(src[19] + 0 * RGBZ_M2_W);
-    const rgbz_v16 t20_0 = rgbz_v16_load(src[20] + 0 * RGBZ_M2_W);
-    const rgbz_v16 d0_0 = rgbz_v16_abs(t3_0 - t0_0);
-    rgbz_v16 G0_0 = d0_0;
-    rgbz_v16 G4_0 = d0_0;
-    const rgbz_v16 d1_0 = rgbz_v16_abs(t8_0 - t9_0);
-    G0_0 = G0_0 + d1_0;
-    G4_0 = G4_0 + d1_0;
-    const rgbz_v16 d2_0 = rgbz_v16_abs(t4_0 - t2_0);
-    G0_0 = G0_0 + d2_0;
-    rgbz_v16 G5_0 = d2_0;
-    const rgbz_v16 d3_0 = rgbz_v16_abs(t3_0 - t5_0);
-    rgbz_v16 G1_0 = d3_0;
-    rgbz_v16 G6_0 = d3_0;
-    const rgbz_v16 d4_0 = rgbz_v16_abs(t8_0 - t10_0);
-    G1_0 = G1_0 + d4_0;
-    G6_0 = G6_0 + d4_0;
-    const rgbz_v16 d5_0 = rgbz_v16_abs(t4_0 - t7_0);
-    G1_0 = G1_0 + d5_0;
-    rgbz_v16 G7_0 = d5_0;
-    const rgbz_v16 d6_0 = rgbz_v16_abs(t1_0 - t0_0);
-    rgbz_v16 G2_0 = d6_0;
-    G4_0 = G4_0 + d6_0;
-    const rgbz_v16 d7_0 = rgbz_v16_abs(t11_0 - t12_0);
-    G2_0 = G2_0 + d7_0;
-    G6_0 = G6_0 + d7_0;
-    const rgbz_v16 d8_0 = rgbz_v16_abs(t6_0 - t5_0);
-    G2_0 = G2_0 + d8_0;
-    G6_0 = G6_0 + d8_0;
-    const rgbz_v16 d9_0 = rgbz_v16_abs(t1_0 - t2_0);
-    rgbz_v16 G3_0 = d9_0;
-    G5_0 = G5_0 + d9_0;
-    const rgbz_v16 d10_0 = rgbz_v16_abs(t11_0 - t13_0);
-    G3_0 = G3_0 + d10_0;
-    G7_0 = G7_0 + d10_0;
-    const rgbz_v16 d11_0 = rgbz_v16_abs(t6_0 - t7_0);
-    G3_0 = G3_0 + d11_0;
-    G7_0 = G7_0 + d11_0;
-    const rgbz_v16 d12_0 = rgbz_v16_abs(t14_0 - t12_0);
-    rgbz_v16 G8_0 = d12_0;
-    const rgbz_v16 d13_0 = rgbz_v16_abs(t15_0 - t16_0);
-    G8_0 = G8_0 + d13_0;
-    const rgbz_v16 d14_0 = rgbz_v16_abs(t17_0 - t13_0);
-    G8_0 = G8_0 + d14_0;
-    const rgbz_v16 d15_0 = rgbz_v16_abs(t0_0 - t5_0);
-    G8_0 = G8_0 + d15_0;
-    const rgbz_v16 d16_0 = rgbz_v16_abs(t9_0 - t10_0);
-    G8_0 = G8_0 + d16_0;
-    const rgbz_v16 d17_0 = rgbz_v16_abs(t1_0 - t6_0);
-    G8_0 = G8_0 + d17_0;
-    const rgbz_v16 d18_0 = rgbz_v16_abs(t18_0 - t19_0);
-    G8_0 = G8_0 + d18_0;
-    const rgbz_v16 d19_0 = rgbz_v16_abs(t2_0 - t7_0);
-    G8_0 = G8_0 + d19_0;
-    const rgbz_v16 d20_0 = rgbz_v16_abs(t9_0 - t18_0);
-    rgbz_v16 G9_0 = d20_0;
-    const rgbz_v16 d21_0 = rgbz_v16_abs(t16_0 - t20_0);
-    G9_0 = G9_0 + d21_0;
-    const rgbz_v16 d22_0 = rgbz_v16_abs(t10_0 - t19_0);
-    G9_0 = G9_0 + d22_0;
-    const rgbz_v16 d23_0 = rgbz_v16_abs(t0_0 - t2_0);
-    G9_0 = G9_0 + d23_0;
-    const rgbz_v16 d24_0 = rgbz_v16_abs(t14_0 - t17_0);
-    G9_0 = G9_0 + d24_0;
-    const rgbz_v16 d25_0 = rgbz_v16_abs(t3_0 - t4_0);
-    G9_0 = G9_0 + d25_0;
-    const rgbz_v16 d26_0 = rgbz_v16_abs(t12_0 - t13_0);
-    G9_0 = G9_0 + d26_0;
-    const rgbz_v16 d27_0 = rgbz_v16_abs(t5_0 - t7_0);
-    G9_0 = G9_0 + d27_0;
-    const rgbz_v16 d28_0 = rgbz_v16_abs(t17_0 - t18_0);
-    rgbz_v16 G10_0 = d28_0;
-    const rgbz_v16 d29_0 = rgbz_v16_abs(t4_0 - t1_0);
-    G10_0 = G10_0 + d29_0;
-    const rgbz_v16 d30_0 = rgbz_v16_abs(t11_0 - t8_0);
-    G10_0 = G10_0 + d30_0;
-    const rgbz_v16 d31_0 = rgbz_v16_abs(t20_0 - t15_0);
-    G10_0 = G10_0 + d31_0;
-    const rgbz_v16 d32_0 = rgbz_v16_abs(t13_0 - t9_0);
-    G10_0 = G10_0 + d32_0;
-    const rgbz_v16 d33_0 = rgbz_v16_abs(t10_0 - t12_0);
-    G10_0 = G10_0 + d33_0;
-    const rgbz_v16 d34_0 = rgbz_v16_abs(t6_0 - t3_0);
-    G10_0 = G10_0 + d34_0;
-    const rgbz_v16 d35_0 = rgbz_v16_abs(t19_0 - t14_0);
-    G10_0 = G10_0 + d35_0;
-    const rgbz_v16 d36_0 = rgbz_v16_abs(t7_0 - t0_0);
-    G10_0 = G10_0 + d36_0;
-    const rgbz_v16 d37_0 = rgbz_v16_abs(t14_0 - t9_0);
-    rgbz_v16 G11_0 = d37_0;
-    const rgbz_v16 d38_0 = rgbz_v16_abs(t3_0 - t1_0);
-    G11_0 = G11_0 + d38_0;
-    const rgbz_v16 d39_0 = rgbz_v16_abs(t12_0 - t18_0);
-    G11_0 = G11_0 + d39_0;
-    const rgbz_v16 d40_0 = rgbz_v16_abs(t5_0 - t2_0);
-    G11_0 = G11_0 + d40_0;
-    const rgbz_v16 d41_0 = rgbz_v16_abs(t10_0 - t17_0);
-    G11_0 = G11_0 + d41_0;
-    const rgbz_v16 d42_0 = rgbz_v16_abs(t6_0 - t4_0);
-    G11_0 = G11_0 + d42_0;
-    const rgbz_v16 d43_0 = rgbz_v16_abs(t19_0 - t13_0);
-    G11_0 = G11_0 + d43_0;
-    const rgbz_v16 gm0_0 = G0_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm1_0 = G1_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm2_0 = G2_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm3_0 = G3_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm4_0 = G4_0 * (float)0.3333333333333333;
-    const rgbz_v16 gm5_0 = G5_0 * (float)0.5;
-    const rgbz_v16 gm6_0 = G6_0 * (float)0.25;
-    const rgbz_v16 gm7_0 = G7_0 * (float)0.3333333333333333;
-    rgbz_v16 smin_0 = gm0_0;
-    smin_0 = M2_MIN(gm1_0, smin_0);
-    smin_0 = M2_MIN(gm2_0, smin_0);
-    smin_0 = M2_MIN(gm3_0, smin_0);
-    smin_0 = M2_MIN(gm4_0, smin_0);
-    smin_0 = M2_MIN(gm5_0, smin_0);
-    smin_0 = M2_MIN(gm6_0, smin_0);
-    smin_0 = M2_MIN(gm7_0, smin_0);
-    rgbz_v16 ssg_0 = M2_MAX(smin_0, floor_);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
+    rgbz_v16 G0 = d0;
+    rgbz_v16 G4 = d0;
+    const rgbz_v16 d1 = rgbz_v16_abs(t8 - t9);
+    G0 = G0 + d1;
+    G4 = G4 + d1;
+    const rgbz_v16 d2 = rgbz_v16_abs(t4 - t2);
+    G0 = G0 + d2;
+    rgbz_v16 G5 = d2;
+    const rgbz_v16 d3 = rgbz_v16_abs(t3 - t5);
+    rgbz_v16 G1 = d3;
+    rgbz_v16 G6 = d3;
+    const rgbz_v16 d4 = rgbz_v16_abs(t8 - t10);
+    G1 = G1 + d4;
+    G6 = G6 + d4;
+    const rgbz_v16 d5 = rgbz_v16_abs(t4 - t7);
+    G1 = G1 + d5;
+    rgbz_v16 G7 = d5;
+    const rgbz_v16 d6 = rgbz_v16_abs(t1 - t0);
+    rgbz_v16 G2 = d6;
+    G4 = G4 + d6;
+    const rgbz_v16 d7 = rgbz_v16_abs(t11 - t12);
+    G2 = G2 + d7;
+    G6 = G6 + d7;
+    const rgbz_v16 d8 = rgbz_v16_abs(t6 - t5);
+    G2 = G2 + d8;
+    G6 = G6 + d8;
+    const rgbz_v16 d9 = rgbz_v16_abs(t1 - t2);
+    rgbz_v16 G3 = d9;
+    G5 = G5 + d9;
+    const rgbz_v16 d10 = rgbz_v16_abs(t11 - t13);
+    G3 = G3 + d10;
+    G7 = G7 + d10;
+    const rgbz_v16 d11 = rgbz_v16_abs(t6 - t7);
+    G3 = G3 + d11;
+    G7 = G7 + d11;
+    const rgbz_v16 d12 = rgbz_v16_abs(t14 - t12);
+    rgbz_v16 G8 = d12;
+    const rgbz_v16 d13 = rgbz_v16_abs(t15 - t16);
+    G8 = G8 + d13;
+    const rgbz_v16 d14 = rgbz_v16_abs(t17 - t13);
+    G8 = G8 + d14;
+    const rgbz_v16 d15 = rgbz_v16_abs(t0 - t5);
+    G8 = G8 + d15;
+    const rgbz_v16 d16 = rgbz_v16_abs(t9 - t10);
+    G8 = G8 + d16;
+    const rgbz_v16 d17 = rgbz_v16_abs(t1 - t6);
+    G8 = G8 + d17;
+    const rgbz_v16 d18 = rgbz_v16_abs(t18 - t19);
+    G8 = G8 + d18;
+    const rgbz_v16 d19 = rgbz_v16_abs(t2 - t7);
+    G8 = G8 + d19;
+    const rgbz_v16 d20 = rgbz_v16_abs(t9 - t18);
+    rgbz_v16 G9 = d20;
+    const rgbz_v16 d21 = rgbz_v16_abs(t16 - t20);
+    G9 = G9 + d21;
+    const rgbz_v16 d22 = rgbz_v16_abs(t10 - t19);
+    G9 = G9 + d22;
+    const rgbz_v16 d23 = rgbz_v16_abs(t0 - t2);
+    G9 = G9 + d23;
+    const rgbz_v16 d24 = rgbz_v16_abs(t14 - t17);
+    G9 = G9 + d24;
+    const rgbz_v16 d25 = rgbz_v16_abs(t3 - t4);
+    G9 = G9 + d25;
+    const rgbz_v16 d26 = rgbz_v16_abs(t12 - t13);
+    G9 = G9 + d26;
+    const rgbz_v16 d27 = rgbz_v16_abs(t5 - t7);
+    G9 = G9 + d27;
+    const rgbz_v16 d28 = rgbz_v16_abs(t17 - t18);
+    rgbz_v16 G10 = d28;
+    const rgbz_v16 d29 = rgbz_v16_abs(t4 - t1);
+    G10 = G10 + d29;
+    const rgbz_v16 d30 = rgbz_v16_abs(t11 - t8);
+    G10 = G10 + d30;
+    const rgbz_v16 d31 = rgbz_v16_abs(t20 - t15);
+    G10 = G10 + d31;
+    const rgbz_v16 d32 = rgbz_v16_abs(t13 - t9);
+    G10 = G10 + d32;
+    const rgbz_v16 d33 = rgbz_v16_abs(t10 - t12);
+    G10 = G10 + d33;
+    const rgbz_v16 d34 = rgbz_v16_abs(t6 - t3);
+    G10 = G10 + d34;
+    const rgbz_v16 d35 = rgbz_v16_abs(t19 - t14);
+    G10 = G10 + d35;
+    const rgbz_v16 d36 = rgbz_v16_abs(t7 - t0);
+    G10 = G10 + d36;
+    const rgbz_v16 d37 = rgbz_v16_abs(t14 - t9);
+    rgbz_v16 G11 = d37;
+    const rgbz_v16 d38 = rgbz_v16_abs(t3 - t1);
+    G11 = G11 + d38;
+    const rgbz_v16 d39 = rgbz_v16_abs(t12 - t18);
+    G11 = G11 + d39;
+    const rgbz_v16 d40 = rgbz_v16_abs(t5 - t2);
+    G11 = G11 + d40;
+    const rgbz_v16 d41 = rgbz_v16_abs(t10 - t17);
+    G11 = G11 + d41;
+    const rgbz_v16 d42 = rgbz_v16_abs(t6 - t4);
+    G11 = G11 + d42;
+    const rgbz_v16 d43 = rgbz_v16_abs(t19 - t13);
+    G11 = G11 + d43;
+    const rgbz_v16 gm0 = G0 * (float)0.3333333333333333;
+    const rgbz_v16 gm1 = G1 * (float)0.3333333333333333;
+    const rgbz_v16 gm2 = G2 * (float)0.3333333333333333;
+    const rgbz_v16 gm3 = G3 * (float)0.3333333333333333;
+    const rgbz_v16 gm4 = G4 * (float)0.3333333333333333;
+    const rgbz_v16 gm5 = G5 * (float)0.5;
+    const rgbz_v16 gm6 = G6 * (float)0.25;
+    const rgbz_v16 gm7 = G7 * (float)0.3333333333333333;
+    rgbz_v16 smin = gm0;
+    smin = M2_MIN(gm1, smin);
+    smin = M2_MIN(gm2, smin);
+    smin = M2_MIN(gm3, smin);
+    smin = M2_MIN(gm4, smin);
+    smin = M2_MIN(gm5, smin);
+    smin = M2_MIN(gm6, smin);
+    smin = M2_MIN(gm7, smin);
+    rgbz_v16 ssg = M2_MAX(smin, floor_);
     if (REL) {
-        rgbz_v16 ssum_0 = gm0_0;
-        ssum_0 = ssum_0 + gm1_0;
-        ssum_0 = ssum_0 + gm2_0;
-        ssum_0 = ssum_0 + gm3_0;
-        ssum_0 = ssum_0 + gm4_0;
-        ssum_0 = ssum_0 + gm5_0;
-        ssum_0 = ssum_0 + gm6_0;
-        ssum_0 = ssum_0 + gm7_0;
-        const rgbz_v16 srf_0 = (rel * ssum_0) / (float)8;
-        ssg_0 = M2_MAX(srf_0, ssg_0);
+        rgbz_v16 ssum = gm0;
+        ssum = ssum + gm1;
+        ssum = ssum + gm2;
+        ssum = ssum + gm3;
+        ssum = ssum + gm4;
+        ssum = ssum + gm5;
+        ssum = ssum + gm6;
+        ssum = ssum + gm7;
+        const rgbz_v16 srf = (rel * ssum) / (float)8;
+        ssg = M2_MAX(srf, ssg);
     }
-    const rgbz_v16 sninv_0 = -(1.0f / (2.0f * (ssg_0 * ssg_0)));
-    const rgbz_v16 x0_0 = (gm0_0 * gm0_0) * sninv_0;
-    const rgbz_v16 x1_0 = (gm1_0 * gm1_0) * sninv_0;
-    const rgbz_v16 x2_0 = (gm2_0 * gm2_0) * sninv_0;
-    const rgbz_v16 x3_0 = (gm3_0 * gm3_0) * sninv_0;
-    const rgbz_v16 x4_0 = (gm4_0 * gm4_0) * sninv_0;
-    const rgbz_v16 x5_0 = (gm5_0 * gm5_0) * sninv_0;
-    const rgbz_v16 x6_0 = (gm6_0 * gm6_0) * sninv_0;
-    const rgbz_v16 x7_0 = (gm7_0 * gm7_0) * sninv_0;
-    const rgbz_v16 xc0_0 = x0_0;
-    const rgbz_v16 xc1_0 = x1_0;
-    const rgbz_v16 xc2_0 = x2_0;
-    const rgbz_v16 xc3_0 = x3_0;
-    const rgbz_v16 xc4_0 = x4_0;
-    const rgbz_v16 xc5_0 = x5_0;
-    const rgbz_v16 xc6_0 = x6_0;
-    const rgbz_v16 xc7_0 = x7_0;
-    const rgbz_v16 et0_0 = xc0_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et1_0 = xc1_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et2_0 = xc2_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et3_0 = xc3_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et4_0 = xc4_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et5_0 = xc5_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et6_0 = xc6_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et7_0 = xc7_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en0_0 = M2_RINT(xc0_0 * 1.44269504f, et0_0);
-    const rgbz_v16 en1_0 = M2_RINT(xc1_0 * 1.44269504f, et1_0);
-    const rgbz_v16 en2_0 = M2_RINT(xc2_0 * 1.44269504f, et2_0);
-    const rgbz_v16 en3_0 = M2_RINT(xc3_0 * 1.44269504f, et3_0);
-    const rgbz_v16 en4_0 = M2_RINT(xc4_0 * 1.44269504f, et4_0);
-    const rgbz_v16 en5_0 = M2_RINT(xc5_0 * 1.44269504f, et5_0);
-    const rgbz_v16 en6_0 = M2_RINT(xc6_0 * 1.44269504f, et6_0);
-    const rgbz_v16 en7_0 = M2_RINT(xc7_0 * 1.44269504f, et7_0);
-    const rgbz_v16 ey0_0 = (xc0_0 - en0_0 * 0.693359375f) - en0_0 * -2.12194440e-4f;
-    const rgbz_v16 ey1_0 = (xc1_0 - en1_0 * 0.693359375f) - en1_0 * -2.12194440e-4f;
-    const rgbz_v16 ey2_0 = (xc2_0 - en2_0 * 0.693359375f) - en2_0 * -2.12194440e-4f;
-    const rgbz_v16 ey3_0 = (xc3_0 - en3_0 * 0.693359375f) - en3_0 * -2.12194440e-4f;
-    const rgbz_v16 ey4_0 = (xc4_0 - en4_0 * 0.693359375f) - en4_0 * -2.12194440e-4f;
-    const rgbz_v16 ey5_0 = (xc5_0 - en5_0 * 0.693359375f) - en5_0 * -2.12194440e-4f;
-    const rgbz_v16 ey6_0 = (xc6_0 - en6_0 * 0.693359375f) - en6_0 * -2.12194440e-4f;
-    const rgbz_v16 ey7_0 = (xc7_0 - en7_0 * 0.693359375f) - en7_0 * -2.12194440e-4f;
-    rgbz_v16 ep0_0 = 1.0f / 120 + ey0_0 * (1.0f / 720);
-    rgbz_v16 ep1_0 = 1.0f / 120 + ey1_0 * (1.0f / 720);
-    rgbz_v16 ep2_0 = 1.0f / 120 + ey2_0 * (1.0f / 720);
-    rgbz_v16 ep3_0 = 1.0f / 120 + ey3_0 * (1.0f / 720);
-    rgbz_v16 ep4_0 = 1.0f / 120 + ey4_0 * (1.0f / 720);
-    rgbz_v16 ep5_0 = 1.0f / 120 + ey5_0 * (1.0f / 720);
-    rgbz_v16 ep6_0 = 1.0f / 120 + ey6_0 * (1.0f / 720);
-    rgbz_v16 ep7_0 = 1.0f / 120 + ey7_0 * (1.0f / 720);
-    ep0_0 = 1.0f / 24 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 24 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 24 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 24 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 24 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 24 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 24 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 24 + ey7_0 * ep7_0;
-    ep0_0 = 1.0f / 6 + ey0_0 * ep0_0;
-    ep1_0 = 1.0f / 6 + ey1_0 * ep1_0;
-    ep2_0 = 1.0f / 6 + ey2_0 * ep2_0;
-    ep3_0 = 1.0f / 6 + ey3_0 * ep3_0;
-    ep4_0 = 1.0f / 6 + ey4_0 * ep4_0;
-    ep5_0 = 1.0f / 6 + ey5_0 * ep5_0;
-    ep6_0 = 1.0f / 6 + ey6_0 * ep6_0;
-    ep7_0 = 1.0f / 6 + ey7_0 * ep7_0;
-    ep0_0 = 0.5f + ey0_0 * ep0_0;
-    ep1_0 = 0.5f + ey1_0 * ep1_0;
-    ep2_0 = 0.5f + ey2_0 * ep2_0;
-    ep3_0 = 0.5f + ey3_0 * ep3_0;
-    ep4_0 = 0.5f + ey4_0 * ep4_0;
-    ep5_0 = 0.5f + ey5_0 * ep5_0;
-    ep6_0 = 0.5f + ey6_0 * ep6_0;
-    ep7_0 = 0.5f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    ep0_0 = 1.0f + ey0_0 * ep0_0;
-    ep1_0 = 1.0f + ey1_0 * ep1_0;
-    ep2_0 = 1.0f + ey2_0 * ep2_0;
-    ep3_0 = 1.0f + ey3_0 * ep3_0;
-    ep4_0 = 1.0f + ey4_0 * ep4_0;
-    ep5_0 = 1.0f + ey5_0 * ep5_0;
-    ep6_0 = 1.0f + ey6_0 * ep6_0;
-    ep7_0 = 1.0f + ey7_0 * ep7_0;
-    const rgbz_v16 ga0_0 = M2_EXPOUT(x0_0, ep0_0, et0_0, en0_0);
-    const rgbz_v16 ga1_0 = M2_EXPOUT(x1_0, ep1_0, et1_0, en1_0);
-    const rgbz_v16 ga2_0 = M2_EXPOUT(x2_0, ep2_0, et2_0, en2_0);
-    const rgbz_v16 ga3_0 = M2_EXPOUT(x3_0, ep3_0, et3_0, en3_0);
-    const rgbz_v16 ga4_0 = M2_EXPOUT(x4_0, ep4_0, et4_0, en4_0);
-    const rgbz_v16 ga5_0 = M2_EXPOUT(x5_0, ep5_0, et5_0, en5_0);
-    const rgbz_v16 ga6_0 = M2_EXPOUT(x6_0, ep6_0, et6_0, en6_0);
-    const rgbz_v16 ga7_0 = M2_EXPOUT(x7_0, ep7_0, et7_0, en7_0);
-    const rgbz_v16 gm8_0 = G8_0 * (float)0.125;
-    const rgbz_v16 gm9_0 = G9_0 * (float)0.125;
-    const rgbz_v16 gm10_0 = G10_0 * (float)0.1111111111111111;
-    const rgbz_v16 gm11_0 = G11_0 * (float)0.14285714285714285;
-    rgbz_v16 gmin_0 = gm8_0;
-    gmin_0 = M2_MIN(gm9_0, gmin_0);
-    gmin_0 = M2_MIN(gm10_0, gmin_0);
-    gmin_0 = M2_MIN(gm11_0, gmin_0);
-    rgbz_v16 gsg_0 = M2_MAX(gmin_0, floor_);
+    const rgbz_v16 sninv = -(1.0f / (2.0f * (ssg * ssg)));
+    const rgbz_v16 x0 = (gm0 * gm0) * sninv;
+    const rgbz_v16 x1 = (gm1 * gm1) * sninv;
+    const rgbz_v16 x2 = (gm2 * gm2) * sninv;
+    const rgbz_v16 x3 = (gm3 * gm3) * sninv;
+    const rgbz_v16 x4 = (gm4 * gm4) * sninv;
+    const rgbz_v16 x5 = (gm5 * gm5) * sninv;
+    const rgbz_v16 x6 = (gm6 * gm6) * sninv;
+    const rgbz_v16 x7 = (gm7 * gm7) * sninv;
+    const rgbz_v16 et0 = x0 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et1 = x1 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et2 = x2 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et3 = x3 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et4 = x4 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et5 = x5 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et6 = x6 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et7 = x7 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en0 = M2_RINT(x0 * 1.44269504f, et0);
+    const rgbz_v16 en1 = M2_RINT(x1 * 1.44269504f, et1);
+    const rgbz_v16 en2 = M2_RINT(x2 * 1.44269504f, et2);
+    const rgbz_v16 en3 = M2_RINT(x3 * 1.44269504f, et3);
+    const rgbz_v16 en4 = M2_RINT(x4 * 1.44269504f, et4);
+    const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
+    const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
+    const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
+    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
+    rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
+    rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
+    rgbz_v16 ep3 = 1.0f / 120 + ey3 * (1.0f / 720);
+    rgbz_v16 ep4 = 1.0f / 120 + ey4 * (1.0f / 720);
+    rgbz_v16 ep5 = 1.0f / 120 + ey5 * (1.0f / 720);
+    rgbz_v16 ep6 = 1.0f / 120 + ey6 * (1.0f / 720);
+    rgbz_v16 ep7 = 1.0f / 120 + ey7 * (1.0f / 720);
+    ep0 = 1.0f / 24 + ey0 * ep0;
+    ep1 = 1.0f / 24 + ey1 * ep1;
+    ep2 = 1.0f / 24 + ey2 * ep2;
+    ep3 = 1.0f / 24 + ey3 * ep3;
+    ep4 = 1.0f / 24 + ey4 * ep4;
+    ep5 = 1.0f / 24 + ey5 * ep5;
+    ep6 = 1.0f / 24 + ey6 * ep6;
+    ep7 = 1.0f / 24 + ey7 * ep7;
+    ep0 = 1.0f / 6 + ey0 * ep0;
+    ep1 = 1.0f / 6 + ey1 * ep1;
+    ep2 = 1.0f / 6 + ey2 * ep2;
+    ep3 = 1.0f / 6 + ey3 * ep3;
+    ep4 = 1.0f / 6 + ey4 * ep4;
+    ep5 = 1.0f / 6 + ey5 * ep5;
+    ep6 = 1.0f / 6 + ey6 * ep6;
+    ep7 = 1.0f / 6 + ey7 * ep7;
+    ep0 = 0.5f + ey0 * ep0;
+    ep1 = 0.5f + ey1 * ep1;
+    ep2 = 0.5f + ey2 * ep2;
+    ep3 = 0.5f + ey3 * ep3;
+    ep4 = 0.5f + ey4 * ep4;
+    ep5 = 0.5f + ey5 * ep5;
+    ep6 = 0.5f + ey6 * ep6;
+    ep7 = 0.5f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    ep0 = 1.0f + ey0 * ep0;
+    ep1 = 1.0f + ey1 * ep1;
+    ep2 = 1.0f + ey2 * ep2;
+    ep3 = 1.0f + ey3 * ep3;
+    ep4 = 1.0f + ey4 * ep4;
+    ep5 = 1.0f + ey5 * ep5;
+    ep6 = 1.0f + ey6 * ep6;
+    ep7 = 1.0f + ey7 * ep7;
+    const rgbz_v16 ga0 = M2_EXPOUT(x0, ep0, et0, en0);
+    const rgbz_v16 ga1 = M2_EXPOUT(x1, ep1, et1, en1);
+    const rgbz_v16 ga2 = M2_EXPOUT(x2, ep2, et2, en2);
+    const rgbz_v16 ga3 = M2_EXPOUT(x3, ep3, et3, en3);
+    const rgbz_v16 ga4 = M2_EXPOUT(x4, ep4, et4, en4);
+    const rgbz_v16 ga5 = M2_EXPOUT(x5, ep5, et5, en5);
+    const rgbz_v16 ga6 = M2_EXPOUT(x6, ep6, et6, en6);
+    const rgbz_v16 ga7 = M2_EXPOUT(x7, ep7, et7, en7);
+    const rgbz_v16 gm8 = G8 * (float)0.125;
+    const rgbz_v16 gm9 = G9 * (float)0.125;
+    const rgbz_v16 gm10 = G10 * (float)0.1111111111111111;
+    const rgbz_v16 gm11 = G11 * (float)0.14285714285714285;
+    rgbz_v16 gmin = gm8;
+    gmin = M2_MIN(gm9, gmin);
+    gmin = M2_MIN(gm10, gmin);
+    gmin = M2_MIN(gm11, gmin);
+    rgbz_v16 gsg = M2_MAX(gmin, floor_);
     if (REL) {
-        rgbz_v16 gsum_0 = gm8_0;
-        gsum_0 = gsum_0 + gm9_0;
-        gsum_0 = gsum_0 + gm10_0;
-        gsum_0 = gsum_0 + gm11_0;
-        const rgbz_v16 grf_0 = (rel * gsum_0) / (float)4;
-        gsg_0 = M2_MAX(grf_0, gsg_0);
+        rgbz_v16 gsum = gm8;
+        gsum = gsum + gm9;
+        gsum = gsum + gm10;
+        gsum = gsum + gm11;
+        const rgbz_v16 grf = (rel * gsum) / (float)4;
+        gsg = M2_MAX(grf, gsg);
     }
-    const rgbz_v16 gninv_0 = -(1.0f / (2.0f * (gsg_0 * gsg_0)));
-    const rgbz_v16 x8_0 = (gm8_0 * gm8_0) * gninv_0;
-    const rgbz_v16 x9_0 = (gm9_0 * gm9_0) * gninv_0;
-    const rgbz_v16 x10_0 = (gm10_0 * gm10_0) * gninv_0;
-    const rgbz_v16 x11_0 = (gm11_0 * gm11_0) * gninv_0;
-    const rgbz_v16 xc8_0 = x8_0;
-    const rgbz_v16 xc9_0 = x9_0;
-    const rgbz_v16 xc10_0 = x10_0;
-    const rgbz_v16 xc11_0 = x11_0;
-    const rgbz_v16 et8_0 = xc8_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et9_0 = xc9_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et10_0 = xc10_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 et11_0 = xc11_0 * 1.44269504f + 12582912.0f;
-    const rgbz_v16 en8_0 = M2_RINT(xc8_0 * 1.44269504f, et8_0);
-    const rgbz_v16 en9_0 = M2_RINT(xc9_0 * 1.44269504f, et9_0);
-    const rgbz_v16 en10_0 = M2_RINT(xc10_0 * 1.44269504f, et10_0);
-    const rgbz_v16 en11_0 = M2_RINT(xc11_0 * 1.44269504f, et11_0);
-    const rgbz_v16 ey8_0 = (xc8_0 - en8_0 * 0.693359375f) - en8_0 * -2.12194440e-4f;
-    const rgbz_v16 ey9_0 = (xc9_0 - en9_0 * 0.693359375f) - en9_0 * -2.12194440e-4f;
-    const rgbz_v16 ey10_0 = (xc10_0 - en10_0 * 0.693359375f) - en10_0 * -2.12194440e-4f;
-    const rgbz_v16 ey11_0 = (xc11_0 - en11_0 * 0.693359375f) - en11_0 * -2.12194440e-4f;
-    rgbz_v16 ep8_0 = 1.0f / 120 + ey8_0 * (1.0f / 720);
-    rgbz_v16 ep9_0 = 1.0f / 120 + ey9_0 * (1.0f / 720);
-    rgbz_v16 ep10_0 = 1.0f / 120 + ey10_0 * (1.0f / 720);
-    rgbz_v16 ep11_0 = 1.0f / 120 + ey11_0 * (1.0f / 720);
-    ep8_0 = 1.0f / 24 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 24 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 24 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 24 + ey11_0 * ep11_0;
-    ep8_0 = 1.0f / 6 + ey8_0 * ep8_0;
-    ep9_0 = 1.0f / 6 + ey9_0 * ep9_0;
-    ep10_0 = 1.0f / 6 + ey10_0 * ep10_0;
-    ep11_0 = 1.0f / 6 + ey11_0 * ep11_0;
-    ep8_0 = 0.5f + ey8_0 * ep8_0;
-    ep9_0 = 0.5f + ey9_0 * ep9_0;
-    ep10_0 = 0.5f + ey10_0 * ep10_0;
-    ep11_0 = 0.5f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    ep8_0 = 1.0f + ey8_0 * ep8_0;
-    ep9_0 = 1.0f + ey9_0 * ep9_0;
-    ep10_0 = 1.0f + ey10_0 * ep10_0;
-    ep11_0 = 1.0f + ey11_0 * ep11_0;
-    const rgbz_v16 ga8_0 = M2_EXPOUT(x8_0, ep8_0, et8_0, en8_0);
-    const rgbz_v16 ga9_0 = M2_EXPOUT(x9_0, ep9_0, et9_0, en9_0);
-    const rgbz_v16 ga10_0 = M2_EXPOUT(x10_0, ep10_0, et10_0, en10_0);
-    const rgbz_v16 ga11_0 = M2_EXPOUT(x11_0, ep11_0, et11_0, en11_0);
-    const rgbz_v16 c0_0 = rgbz_v16_load(src[0] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c1_0 = rgbz_v16_load(src[1] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c2_0 = rgbz_v16_load(src[2] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c3_0 = rgbz_v16_load(src[3] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c4_0 = rgbz_v16_load(src[4] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c5_0 = rgbz_v16_load(src[5] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c6_0 = rgbz_v16_load(src[6] + 0 * RGBZ_M2_W);
-    const rgbz_v16 c7_0 = rgbz_v16_load(src[7] + 0 * RGBZ_M2_W);
-    rgbz_v16 S0_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S1_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S2_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S3_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S4_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S5_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S6_0 = rgbz_v16_set(1.0f);
-    rgbz_v16 S7_0 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c1_0); S0_0 = S0_0 + e; S1_0 = S1_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c2_0); S0_0 = S0_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c3_0); S0_0 = S0_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c4_0); S0_0 = S0_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c5_0); S0_0 = S0_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c6_0); S0_0 = S0_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0_0 - c7_0); S0_0 = S0_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c2_0); S1_0 = S1_0 + e; S2_0 = S2_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c3_0); S1_0 = S1_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c4_0); S1_0 = S1_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c5_0); S1_0 = S1_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c6_0); S1_0 = S1_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1_0 - c7_0); S1_0 = S1_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c3_0); S2_0 = S2_0 + e; S3_0 = S3_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c4_0); S2_0 = S2_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c5_0); S2_0 = S2_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c6_0); S2_0 = S2_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2_0 - c7_0); S2_0 = S2_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c4_0); S3_0 = S3_0 + e; S4_0 = S4_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c5_0); S3_0 = S3_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c6_0); S3_0 = S3_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3_0 - c7_0); S3_0 = S3_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c5_0); S4_0 = S4_0 + e; S5_0 = S5_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c6_0); S4_0 = S4_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4_0 - c7_0); S4_0 = S4_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c6_0); S5_0 = S5_0 + e; S6_0 = S6_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5_0 - c7_0); S5_0 = S5_0 + e; S7_0 = S7_0 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6_0 - c7_0); S6_0 = S6_0 + e; S7_0 = S7_0 + e; }
-    rgbz_v16 den_0, num_0 = rgbz_v16_set(0.0f);
-    den_0 = ((((float)0.01831563888873418) / S0_0) * ga10_0) * (((ga0_0 + ga2_0) + ga4_0) * (float)0.3333333333333333);
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1_0) * ga8_0) * (ga0_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c1_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2_0) * ga11_0) * (((ga0_0 + ga3_0) + ga5_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c2_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3_0) * ga9_0) * (ga2_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c3_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4_0) * ga9_0) * (ga3_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c4_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5_0) * ga11_0) * (((ga1_0 + ga2_0) + ga6_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c5_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6_0) * ga8_0) * (ga1_0 * (float)1.0); den_0 = den_0 + w; num_0 = num_0 + w * (c6_0 - c0_0); }
-    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7_0) * ga10_0) * (((ga1_0 + ga3_0) + ga7_0) * (float)0.3333333333333333); den_0 = den_0 + w; num_0 = num_0 + w * (c7_0 - c0_0); }
-    const rgbz_v16i ok_0 = den_0 > 0.0f;
-    const rgbz_v16 q_0 = rgbz_v16_sel(ok_0, den_0, rgbz_v16_set(1.0f));
-    rgbz_v16 res_0 = rgbz_v16_sel(ok_0, c0_0 + num_0 / q_0, c0_0);
-    if (!(rgbz_v16_all(ok_0))) {
+    const rgbz_v16 gninv = -(1.0f / (2.0f * (gsg * gsg)));
+    const rgbz_v16 x8 = (gm8 * gm8) * gninv;
+    const rgbz_v16 x9 = (gm9 * gm9) * gninv;
+    const rgbz_v16 x10 = (gm10 * gm10) * gninv;
+    const rgbz_v16 x11 = (gm11 * gm11) * gninv;
+    const rgbz_v16 et8 = x8 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et9 = x9 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et10 = x10 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 et11 = x11 * 1.44269504f + 12582912.0f;
+    const rgbz_v16 en8 = M2_RINT(x8 * 1.44269504f, et8);
+    const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
+    const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
+    const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
+    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
+    rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
+    rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
+    rgbz_v16 ep11 = 1.0f / 120 + ey11 * (1.0f / 720);
+    ep8 = 1.0f / 24 + ey8 * ep8;
+    ep9 = 1.0f / 24 + ey9 * ep9;
+    ep10 = 1.0f / 24 + ey10 * ep10;
+    ep11 = 1.0f / 24 + ey11 * ep11;
+    ep8 = 1.0f / 6 + ey8 * ep8;
+    ep9 = 1.0f / 6 + ey9 * ep9;
+    ep10 = 1.0f / 6 + ey10 * ep10;
+    ep11 = 1.0f / 6 + ey11 * ep11;
+    ep8 = 0.5f + ey8 * ep8;
+    ep9 = 0.5f + ey9 * ep9;
+    ep10 = 0.5f + ey10 * ep10;
+    ep11 = 0.5f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    ep8 = 1.0f + ey8 * ep8;
+    ep9 = 1.0f + ey9 * ep9;
+    ep10 = 1.0f + ey10 * ep10;
+    ep11 = 1.0f + ey11 * ep11;
+    const rgbz_v16 ga8 = M2_EXPOUT(x8, ep8, et8, en8);
+    const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
+    const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
+    const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    rgbz_v16 S0 = rgbz_v16_set(1.0f);
+    rgbz_v16 S1 = rgbz_v16_set(1.0f);
+    rgbz_v16 S2 = rgbz_v16_set(1.0f);
+    rgbz_v16 S3 = rgbz_v16_set(1.0f);
+    rgbz_v16 S4 = rgbz_v16_set(1.0f);
+    rgbz_v16 S5 = rgbz_v16_set(1.0f);
+    rgbz_v16 S6 = rgbz_v16_set(1.0f);
+    rgbz_v16 S7 = rgbz_v16_set(1.0f);
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    rgbz_v16 den, num = rgbz_v16_set(0.0f);
+    den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S2) * ga11) * (((ga0 + ga3) + ga5) * (float)0.3333333333333333); den = den + w; num = num + w * (c2 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S3) * ga9) * (ga2 * (float)1.0); den = den + w; num = num + w * (c3 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S4) * ga9) * (ga3 * (float)1.0); den = den + w; num = num + w * (c4 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S5) * ga11) * (((ga1 + ga2) + ga6) * (float)0.3333333333333333); den = den + w; num = num + w * (c5 - c0); }
+    { const rgbz_v16 w = ((((float)0.1353352832366127) / S6) * ga8) * (ga1 * (float)1.0); den = den + w; num = num + w * (c6 - c0); }
+    { const rgbz_v16 w = ((((float)0.01831563888873418) / S7) * ga10) * (((ga1 + ga3) + ga7) * (float)0.3333333333333333); den = den + w; num = num + w * (c7 - c0); }
+    const rgbz_v16i ok = den > 0.0f;
+    const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
+    rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
+    if (!rgbz_v16_all(ok)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
-        rgbz_v16 s_0 = c1_0 - c0_0;
-        s_0 = s_0 + (c2_0 - c0_0);
-        s_0 = s_0 + (c3_0 - c0_0);
-        s_0 = s_0 + (c4_0 - c0_0);
-        s_0 = s_0 + (c5_0 - c0_0);
-        s_0 = s_0 + (c6_0 - c0_0);
-        s_0 = s_0 + (c7_0 - c0_0);
-        res_0 = rgbz_v16_sel(ok_0, res_0, c0_0 + s_0 / (float)8);
+        rgbz_v16 s = c1 - c0;
+        s = s + (c2 - c0);
+        s = s + (c3 - c0);
+        s = s + (c4 - c0);
+        s = s + (c5 - c0);
+        s = s + (c6 - c0);
+        s = s + (c7 - c0);
+        res = rgbz_v16_sel(ok, res, c0 + s / (float)8);
     }
-    rgbz_v16_store(out + 0 * RGBZ_M2_W, res_0);
+    rgbz_v16_store(out, res);
 }
 
 
 /*
  * The n sites of a block (v tap-major, recon_core.template.h) through the function of plan k
- * (an index of rgbz_m2_plan_bytes), RGBZ_M2_STEP at a time; the last step of a block whose n
+ * (an index of rgbz_m2_plan_bytes), RGBZ_M2_W at a time; the last vector of a block whose n
  * is not a multiple of it runs on a copy of its taps padded with zeros, and only its results
  * for the n sites are kept.
  */
@@ -4838,19 +4694,19 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
     const rgbz_v16 fl = rgbz_v16_set(floor_), rl = rgbz_v16_set(rel);
     const int REL = rel > 0.0f;
     const int nt = rgbz_m2_ntaps[k];
-    for (int j0 = 0; j0 < n; j0 += RGBZ_M2_STEP) {
+    for (int j0 = 0; j0 < n; j0 += RGBZ_M2_W) {
         const float *src[RGBZ_MAX_TAPS];
-        float pad[RGBZ_MAX_TAPS][RGBZ_M2_STEP], res[RGBZ_M2_STEP];
-        const int m = n - j0 < RGBZ_M2_STEP ? n - j0 : RGBZ_M2_STEP;
-        if (m == RGBZ_M2_STEP) {
+        float pad[RGBZ_MAX_TAPS][RGBZ_M2_W], res[RGBZ_M2_W];
+        const int m = n - j0 < RGBZ_M2_W ? n - j0 : RGBZ_M2_W;
+        if (m == RGBZ_M2_W) {
             for (int t = 0; t < nt; t++) src[t] = v[t] + j0;
         } else {
             for (int t = 0; t < nt; t++) {
-                for (int i = 0; i < RGBZ_M2_STEP; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
+                for (int i = 0; i < RGBZ_M2_W; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
                 src[t] = pad[t];
             }
         }
-        float *o = m == RGBZ_M2_STEP ? r + j0 : res;
+        float *o = m == RGBZ_M2_W ? r + j0 : res;
 #define RGBZ_M2_CASE_(K)                                                                  \
         case K:                                                                           \
             if (REL) M2_FN(rgbz_m2_site##K)(src, fl, rl, 1, o);                           \
@@ -4861,6 +4717,6 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
         default: break;
         }
 #undef RGBZ_M2_CASE_
-        if (m < RGBZ_M2_STEP) memcpy(r + j0, res, (size_t)m * sizeof(float));
+        if (m < RGBZ_M2_W) memcpy(r + j0, res, (size_t)m * sizeof(float));
     }
 }

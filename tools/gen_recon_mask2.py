@@ -38,14 +38,10 @@ def _f(x):
     return f"(float){float(x)!r}"
 
 
-#: vectors of RGBZ_M2_W sites per step, their statements interleaved (2 measured slower than
-#: 1: 26.5 against 22.8 ms a 12 MP frame on 1 thread, the registers spilled)
-U = 1
-
-
 def _plan_body(p, fid):
-    """The C function of one plan: U vectors of RGBZ_M2_W sites, each statement once per
-    vector (names suffixed _0, _1, ...)."""
+    """The C function of one plan: a vector of RGBZ_M2_W sites from its taps to its results
+    (two vectors a step, their statements interleaved, ran slower: 26.5 against 22.8 ms a
+    12 MP frame on 1 thread, the registers spilled)."""
     nt, nc, npairs = int(p["n_taps"]), int(p["n_cand"]), int(p["n_pairs"])
     assert int(p["use_ab"]) == int(p["use_grad"]) == int(p["use_sg"]) == 1, "combined SG"
     assert int(p["use_cd"]) == 0 and int(p["sum_from_zero"]) == 1
@@ -54,9 +50,7 @@ def _plan_body(p, fid):
     L = []
 
     def st(text, indent=4):
-        # one statement per vector: {u} is the vector's suffix, {o} its lane offset
-        for u in range(U):
-            L.append(" " * indent + text.format(u=f"_{u}", o=f"{u} * RGBZ_M2_W"))
+        L.append(" " * indent + text)
 
     L.append(f"/* Z site {fid}: {nt} taps, {nc} candidates, {npairs} pairs */")
     L.append(f"RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site{fid})(const float *const *src, "
@@ -65,101 +59,99 @@ def _plan_body(p, fid):
              "float *restrict out)")
     L.append("{")
     for t in range(nt):
-        st(f"const rgbz_v16 t{t}{{u}} = rgbz_v16_load(src[{t}] + {{o}});")
+        st(f"const rgbz_v16 t{t} = rgbz_v16_load(src[{t}]);")
     # the group sums: each group's differences added in the plan's pair order, the first
     # assigned (rgbz_groups_block with sum_from_zero)
     started = set()
     for i in range(npairs):
         a, b, m = int(p["pair_a"][i]), int(p["pair_b"][i]), int(p["pair_gmask"][i])
-        st(f"const rgbz_v16 d{i}{{u}} = rgbz_v16_abs(t{a}{{u}} - t{b}{{u}});")
+        st(f"const rgbz_v16 d{i} = rgbz_v16_abs(t{a} - t{b});")
         for g in range(12):
             if (m >> g) & 1:
                 if g in started:
-                    st(f"G{g}{{u}} = G{g}{{u}} + d{i}{{u}};")
+                    st(f"G{g} = G{g} + d{i};")
                 else:
-                    st(f"rgbz_v16 G{g}{{u}} = d{i}{{u}};")
+                    st(f"rgbz_v16 G{g} = d{i};")
                     started.add(g)
     assert started == set(range(12)), "every group has a difference"
     # the gammas of each family (rgbz_gammas_full)
     for g0, ng, nm in ((0, 8, "s"), (8, 4, "g")):
         for q in range(ng):
-            st(f"const rgbz_v16 gm{g0 + q}{{u}} = G{g0 + q}{{u}} * {_f(p['group_scale'][g0 + q])};")
-        st(f"rgbz_v16 {nm}min{{u}} = gm{g0}{{u}};")
+            st(f"const rgbz_v16 gm{g0 + q} = G{g0 + q} * {_f(p['group_scale'][g0 + q])};")
+        st(f"rgbz_v16 {nm}min = gm{g0};")
         for q in range(1, ng):
-            st(f"{nm}min{{u}} = M2_MIN(gm{g0 + q}{{u}}, {nm}min{{u}});")
-        st(f"rgbz_v16 {nm}sg{{u}} = M2_MAX({nm}min{{u}}, floor_);")
+            st(f"{nm}min = M2_MIN(gm{g0 + q}, {nm}min);")
+        st(f"rgbz_v16 {nm}sg = M2_MAX({nm}min, floor_);")
         L.append("    if (REL) {")
-        st(f"rgbz_v16 {nm}sum{{u}} = gm{g0}{{u}};", 8)
+        st(f"rgbz_v16 {nm}sum = gm{g0};", 8)
         for q in range(1, ng):
-            st(f"{nm}sum{{u}} = {nm}sum{{u}} + gm{g0 + q}{{u}};", 8)
-        st(f"const rgbz_v16 {nm}rf{{u}} = (rel * {nm}sum{{u}}) / (float){ng};", 8)
-        st(f"{nm}sg{{u}} = M2_MAX({nm}rf{{u}}, {nm}sg{{u}});", 8)
+            st(f"{nm}sum = {nm}sum + gm{g0 + q};", 8)
+        st(f"const rgbz_v16 {nm}rf = (rel * {nm}sum) / (float){ng};", 8)
+        st(f"{nm}sg = M2_MAX({nm}rf, {nm}sg);", 8)
         L.append("    }")
-        st(f"const rgbz_v16 {nm}ninv{{u}} = -(1.0f / (2.0f * ({nm}sg{{u}} * {nm}sg{{u}})));")
+        st(f"const rgbz_v16 {nm}ninv = -(1.0f / (2.0f * ({nm}sg * {nm}sg)));")
         # the family's exponentials: rgbz_exp_poly_f32's (rgbz_ops.h) operations in its
         # order, step by step across the family
-        for fam in (range(g0, g0 + ng),):
+        fam = range(g0, g0 + ng)
+        for g in fam:
+            st(f"const rgbz_v16 x{g} = (gm{g} * gm{g}) * {nm}ninv;")
+        # (rgbz_exp_poly_f32 clamps x to -87 first; a lane below gets 0 from the last select
+        # whatever the steps give it -- no float-to-integer conversion here --, so x itself)
+        for g in fam:
+            st(f"const rgbz_v16 et{g} = x{g} * 1.44269504f + 12582912.0f;")
+        for g in fam:
+            st(f"const rgbz_v16 en{g} = M2_RINT(x{g} * 1.44269504f, et{g});")
+        for g in fam:
+            st(f"const rgbz_v16 ey{g} = (x{g} - en{g} * 0.693359375f) - "
+               f"en{g} * -2.12194440e-4f;")
+        for g in fam:
+            st(f"rgbz_v16 ep{g} = 1.0f / 120 + ey{g} * (1.0f / 720);")
+        for c in ("1.0f / 24", "1.0f / 6", "0.5f", "1.0f", "1.0f"):
             for g in fam:
-                st(f"const rgbz_v16 x{g}{{u}} = (gm{g}{{u}} * gm{g}{{u}}) * {nm}ninv{{u}};")
-            # (rgbz_exp_poly_f32 clamps x to -87 first; a lane below gets 0 from the last select
-            # whatever the steps give it -- no float-to-integer conversion here --, so x itself)
-            for g in fam:
-                st(f"const rgbz_v16 xc{g}{{u}} = x{g}{{u}};")
-            for g in fam:
-                st(f"const rgbz_v16 et{g}{{u}} = xc{g}{{u}} * 1.44269504f + 12582912.0f;")
-            for g in fam:
-                st(f"const rgbz_v16 en{g}{{u}} = M2_RINT(xc{g}{{u}} * 1.44269504f, et{g}{{u}});")
-            for g in fam:
-                st(f"const rgbz_v16 ey{g}{{u}} = (xc{g}{{u}} - en{g}{{u}} * 0.693359375f) - "
-                   f"en{g}{{u}} * -2.12194440e-4f;")
-            for g in fam:
-                st(f"rgbz_v16 ep{g}{{u}} = 1.0f / 120 + ey{g}{{u}} * (1.0f / 720);")
-            for c in ("1.0f / 24", "1.0f / 6", "0.5f", "1.0f", "1.0f"):
-                for g in fam:
-                    st(f"ep{g}{{u}} = {c} + ey{g}{{u}} * ep{g}{{u}};")
-            for g in fam:
-                st(f"const rgbz_v16 ga{g}{{u}} = M2_EXPOUT(x{g}{{u}}, ep{g}{{u}}, et{g}{{u}}, "
-                   f"en{g}{{u}});")
+                st(f"ep{g} = {c} + ey{g} * ep{g};")
+        for g in fam:
+            st(f"const rgbz_v16 ga{g} = M2_EXPOUT(x{g}, ep{g}, et{g}, "
+               f"en{g});")
     # beta's sums (rgbz_beta_sums): pairs (k, m), k < m, k outer
     ct = [int(p["cand_tap"][k]) for k in range(nc)]
     for k in range(nc):
-        st(f"const rgbz_v16 c{k}{{u}} = rgbz_v16_load(src[{ct[k]}] + {{o}});")
+        st(f"const rgbz_v16 c{k} = rgbz_v16_load(src[{ct[k]}]);")
     for k in range(nc):
-        st(f"rgbz_v16 S{k}{{u}} = rgbz_v16_set(1.0f);")
+        st(f"rgbz_v16 S{k} = rgbz_v16_set(1.0f);")
     for k in range(nc):
         for m in range(k + 1, nc):
-            st(f"{{{{ const rgbz_v16 e = rgbz_v16_abs(c{k}{{u}} - c{m}{{u}}); "
-               f"S{k}{{u}} = S{k}{{u}} + e; S{m}{{u}} = S{m}{{u}} + e; }}}}")
+            st(f"{{ const rgbz_v16 e = rgbz_v16_abs(c{k} - c{m}); "
+               f"S{k} = S{k} + e; S{m} = S{m} + e; }}")
     # the weights and the weighted mean (rgbz_weigh_sg, combined: alpha / S * gamma(ori) * sv)
-    st("rgbz_v16 den{u}, num{u} = rgbz_v16_set(0.0f);")
+    st("rgbz_v16 den, num = rgbz_v16_set(0.0f);")
     for k in range(nc):
         rows = [g for g in range(8) if (int(p["cand_sgmask"][k]) >> g) & 1]
         assert 1 <= len(rows) <= 4
-        sv = f"ga{rows[0]}{{u}}"
+        sv = f"ga{rows[0]}"
         for g in rows[1:]:
-            sv = f"({sv} + ga{g}{{u}})"
+            sv = f"({sv} + ga{g})"
         ori = 8 + int(p["cand_ori"][k])
-        w = f"((({_f(p['cand_alpha'][k])}) / S{k}{{u}}) * ga{ori}{{u}}) * ({sv} * {_f(p['cand_sgscale'][k])})"
+        w = f"((({_f(p['cand_alpha'][k])}) / S{k}) * ga{ori}) * ({sv} * {_f(p['cand_sgscale'][k])})"
         if k == 0:
-            st(f"den{{u}} = {w};")
+            st(f"den = {w};")
         else:
-            st(f"{{{{ const rgbz_v16 w = {w}; den{{u}} = den{{u}} + w; "
-               f"num{{u}} = num{{u}} + w * (c{k}{{u}} - c0{{u}}); }}}}")
-    st("const rgbz_v16i ok{u} = den{u} > 0.0f;")
-    st("const rgbz_v16 q{u} = rgbz_v16_sel(ok{u}, den{u}, rgbz_v16_set(1.0f));")
-    st(f"rgbz_v16 res{{u}} = rgbz_v16_sel(ok{{u}}, c0{{u}} + num{{u}} / q{{u}}, c0{{u}});")
-    L.append("    if (!(" + " && ".join(f"rgbz_v16_all(ok_{u})" for u in range(U)) + ")) {")
+            st(f"{{ const rgbz_v16 w = {w}; den = den + w; "
+               f"num = num + w * (c{k} - c0); }}")
+    st("const rgbz_v16i ok = den > 0.0f;")
+    st("const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));")
+    st(f"rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);")
+    L.append("    if (!rgbz_v16_all(ok)) {")
     L.append("        /* a weight sum not > 0 (every weight underflowed, or a non-finite input):")
     L.append("           the plain mean of the candidates (rgbz_mean_block) */")
-    st(f"rgbz_v16 s{{u}} = c1{{u}} - c0{{u}};", 8)
+    st(f"rgbz_v16 s = c1 - c0;", 8)
     for k in range(2, nc):
-        st(f"s{{u}} = s{{u}} + (c{k}{{u}} - c0{{u}});", 8)
-    st(f"res{{u}} = rgbz_v16_sel(ok{{u}}, res{{u}}, c0{{u}} + s{{u}} / (float){nc});", 8)
+        st(f"s = s + (c{k} - c0);", 8)
+    st(f"res = rgbz_v16_sel(ok, res, c0 + s / (float){nc});", 8)
     L.append("    }")
-    st("rgbz_v16_store(out + {o}, res{u});")
+    st("rgbz_v16_store(out, res);")
     L.append("}")
     L.append("")
-    return L, nt
+    return L
 
 
 HEAD = r'''/*
@@ -261,7 +253,7 @@ TEMPLATE_HEAD = r'''/*
 TEMPLATE_TAIL = r'''
 /*
  * The n sites of a block (v tap-major, recon_core.template.h) through the function of plan k
- * (an index of rgbz_m2_plan_bytes), RGBZ_M2_STEP at a time; the last step of a block whose n
+ * (an index of rgbz_m2_plan_bytes), RGBZ_M2_W at a time; the last vector of a block whose n
  * is not a multiple of it runs on a copy of its taps padded with zeros, and only its results
  * for the n sites are kept.
  */
@@ -271,19 +263,19 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
     const rgbz_v16 fl = rgbz_v16_set(floor_), rl = rgbz_v16_set(rel);
     const int REL = rel > 0.0f;
     const int nt = rgbz_m2_ntaps[k];
-    for (int j0 = 0; j0 < n; j0 += RGBZ_M2_STEP) {
+    for (int j0 = 0; j0 < n; j0 += RGBZ_M2_W) {
         const float *src[RGBZ_MAX_TAPS];
-        float pad[RGBZ_MAX_TAPS][RGBZ_M2_STEP], res[RGBZ_M2_STEP];
-        const int m = n - j0 < RGBZ_M2_STEP ? n - j0 : RGBZ_M2_STEP;
-        if (m == RGBZ_M2_STEP) {
+        float pad[RGBZ_MAX_TAPS][RGBZ_M2_W], res[RGBZ_M2_W];
+        const int m = n - j0 < RGBZ_M2_W ? n - j0 : RGBZ_M2_W;
+        if (m == RGBZ_M2_W) {
             for (int t = 0; t < nt; t++) src[t] = v[t] + j0;
         } else {
             for (int t = 0; t < nt; t++) {
-                for (int i = 0; i < RGBZ_M2_STEP; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
+                for (int i = 0; i < RGBZ_M2_W; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
                 src[t] = pad[t];
             }
         }
-        float *o = m == RGBZ_M2_STEP ? r + j0 : res;
+        float *o = m == RGBZ_M2_W ? r + j0 : res;
 #define RGBZ_M2_CASE_(K)                                                                  \
         case K:                                                                           \
             if (REL) M2_FN(rgbz_m2_site##K)(src, fl, rl, 1, o);                           \
@@ -294,7 +286,7 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
         default: break;
         }
 #undef RGBZ_M2_CASE_
-        if (m < RGBZ_M2_STEP) memcpy(r + j0, res, (size_t)m * sizeof(float));
+        if (m < RGBZ_M2_W) memcpy(r + j0, res, (size_t)m * sizeof(float));
     }
 }
 '''
@@ -393,12 +385,11 @@ def generate():
     plans = np.frombuffer(b"".join(raws), dtype=_plans.PLAN_DTYPE)
     tpl = [TEMPLATE_HEAD]
     for k, p in enumerate(plans):
-        body, _ = _plan_body(p, k)
+        body = _plan_body(p, k)
         tpl.extend(line + "\n" for line in body)
     tpl.append(TEMPLATE_TAIL)
     out = [HEAD]
     out.append(f"#define RGBZ_M2_NPLANS {len(plans)}\n")
-    out.append(f"/* sites a step of rgbz_m2_run */\n#define RGBZ_M2_STEP ({U} * RGBZ_M2_W)\n")
     out.append("static const int rgbz_m2_ntaps[RGBZ_M2_NPLANS] = {"
                + ", ".join(str(int(p["n_taps"])) for p in plans) + "};\n")
     out.append("#define RGBZ_M2_CASES_ " + " ".join(f"RGBZ_M2_CASE_({k})"

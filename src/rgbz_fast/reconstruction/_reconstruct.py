@@ -305,7 +305,7 @@ def _run_kernel(src, out, pattern, method, params, plan_map, plans, n_plans, bit
                   pattern.period[1], plan_map, plans, n_plans, params.sigma_floor,
                   params.sigma_rel, params.edge_ratio, float((1 << bit_depth) - 1),
                   _EXP_CODES[params.exp_mode], nthreads, mask1_fast=fast, clip_level=clip,
-                  mask2_fast=int(_FAST_PATH.get() and kernels is None), **extra)
+                  mask2_fast=int(_FAST_PATH.get()), **extra)
 
 
 def run_learned(src, out, pattern, filters, precision, bit_depth, nthreads, opcounts=None,
