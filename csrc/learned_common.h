@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include "rgbz.h"
 #include "rgbz_ops.h"
 #include "rgbz_templating.h"
@@ -81,27 +82,35 @@ typedef int64_t lrn_m4 __attribute__((vector_size(32)));
 #define LRN_SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lrn_m4){i0, i1, i2, i3})
 #endif
 
+/* the 8 x 8 transpose in registers of a[0] .. a[7] into T[0] .. T[7] with the shuffle SHUF of
+   lrn_transpose8_f32's indices (its 8-lane shuffles, or the same in each half of 16 lanes) */
+#define LRN_TRANSPOSE8(V, SHUF, a, T)                                                         \
+    do {                                                                                      \
+        V t_[8], u_[8];                                                                       \
+        /* t[2m], t[2m + 1]: sites 2m and 2m + 1, lanes (0, 1, 4, 5) and (2, 3, 6, 7)         \
+           interleaved */                                                                     \
+        for (int i_ = 0; i_ < 8; i_ += 2) {                                                   \
+            t_[i_] = SHUF((a)[i_], (a)[i_ + 1], 0, 8, 1, 9, 4, 12, 5, 13);                    \
+            t_[i_ + 1] = SHUF((a)[i_], (a)[i_ + 1], 2, 10, 3, 11, 6, 14, 7, 15);              \
+        }                                                                                     \
+        /* u[4h + l]: sites 4h .. 4h + 3, lane l in the low half, lane l + 4 in the high */   \
+        for (int i_ = 0; i_ < 8; i_ += 4) {                                                   \
+            u_[i_] = SHUF(t_[i_], t_[i_ + 2], 0, 1, 8, 9, 4, 5, 12, 13);                      \
+            u_[i_ + 1] = SHUF(t_[i_], t_[i_ + 2], 2, 3, 10, 11, 6, 7, 14, 15);                \
+            u_[i_ + 2] = SHUF(t_[i_ + 1], t_[i_ + 3], 0, 1, 8, 9, 4, 5, 12, 13);              \
+            u_[i_ + 3] = SHUF(t_[i_ + 1], t_[i_ + 3], 2, 3, 10, 11, 6, 7, 14, 15);            \
+        }                                                                                     \
+        for (int l_ = 0; l_ < 4; l_++) {                                                      \
+            (T)[l_] = SHUF(u_[l_], u_[l_ + 4], 0, 1, 2, 3, 8, 9, 10, 11);                     \
+            (T)[l_ + 4] = SHUF(u_[l_], u_[l_ + 4], 4, 5, 6, 7, 12, 13, 14, 15);               \
+        }                                                                                     \
+    } while (0)
+
 /* the 8 x 8 transpose in registers: T[l] holds lane l of a[0] .. a[7] (the unpack, pair and
    half shuffles); z_guided.c writes its cells' terms with it */
 LRN_INLINE void lrn_transpose8_f32(const lrn_v8f *a, lrn_v8f *T)
 {
-    lrn_v8f t[8], u[8];
-    /* t[2m], t[2m + 1]: sites 2m and 2m + 1, lanes (0, 1, 4, 5) and (2, 3, 6, 7) interleaved */
-    for (int i = 0; i < 8; i += 2) {
-        t[i] = LRN_SHUF8(a[i], a[i + 1], 0, 8, 1, 9, 4, 12, 5, 13);
-        t[i + 1] = LRN_SHUF8(a[i], a[i + 1], 2, 10, 3, 11, 6, 14, 7, 15);
-    }
-    /* u[4h + l]: sites 4h .. 4h + 3, lane l in the low half, lane l + 4 in the high half */
-    for (int i = 0; i < 8; i += 4) {
-        u[i] = LRN_SHUF8(t[i], t[i + 2], 0, 1, 8, 9, 4, 5, 12, 13);
-        u[i + 1] = LRN_SHUF8(t[i], t[i + 2], 2, 3, 10, 11, 6, 7, 14, 15);
-        u[i + 2] = LRN_SHUF8(t[i + 1], t[i + 3], 0, 1, 8, 9, 4, 5, 12, 13);
-        u[i + 3] = LRN_SHUF8(t[i + 1], t[i + 3], 2, 3, 10, 11, 6, 7, 14, 15);
-    }
-    for (int l = 0; l < 4; l++) {
-        T[l] = LRN_SHUF8(u[l], u[l + 4], 0, 1, 2, 3, 8, 9, 10, 11);
-        T[l + 4] = LRN_SHUF8(u[l], u[l + 4], 4, 5, 6, 7, 12, 13, 14, 15);
-    }
+    LRN_TRANSPOSE8(lrn_v8f, LRN_SHUF8, a, T);
 }
 
 /* the 4 x 4 transpose of doubles: T[l] holds lane l of a[0] .. a[3] */
@@ -133,6 +142,106 @@ LRN_INLINE void lrn_lane_sums_f64(const lrn_v4d *a, lrn_v4d *sum)
     s += T[2];
     s += T[3];
     *sum = s;
+}
+
+/* The dense dot products of 16 float sites at once, two sites an AVX-512 register of 16
+   lanes: each half of a register is one site's accumulator of lrn_dense_dot_rows (lane l:
+   window column l), with the same products added in the same order, and the lanes of each
+   half added in lane order by the 8 x 8 transpose in each half, so the sums are bit for bit
+   those of the 8-lane code. Site a's partner is site a + Q with Q px = 8 (px 2 or 4: the
+   periods of Mask1 and Mask2), so that one load of 16 pixels holds both windows' row.
+   AVX-512F only: with AVX2 or the baseline each 16-lane operation is two or four narrower
+   ones and the shuffles are emulated (1.5x and 1.8x slower than the 8-lane code measured,
+   docs/reports/benchmarks.md). GCC >= 12 and Clang (__builtin_shufflevector across vector
+   sizes). */
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 12)
+/* 1 where the caller runs AVX-512F code: built for it, or in the AVX-512F clone of an
+   RGBZ_CLONES_512 function (the loader picks that clone wherever the CPU has AVX-512F) */
+#if defined(__AVX512F__)
+#define LRN_ON_AVX512() 1
+#elif RGBZ_HAVE_CLONES
+#define LRN_ON_AVX512() __builtin_cpu_supports("avx512f")
+#else
+#define LRN_ON_AVX512() 0
+#endif
+typedef float lrn_v16f __attribute__((vector_size(64)));
+/* lane m of an 8-lane shuffle of (a, b) as lane m of each half of a 16-lane one */
+#define LRN_H0_(m) ((m) < 8 ? (m) : (m) + 8)
+#define LRN_H1_(m) ((m) < 8 ? (m) + 8 : (m) + 16)
+#define LRN_SHUF16(a, b, i0, i1, i2, i3, i4, i5, i6, i7)                                      \
+    __builtin_shufflevector(a, b, LRN_H0_(i0), LRN_H0_(i1), LRN_H0_(i2), LRN_H0_(i3),          \
+                            LRN_H0_(i4), LRN_H0_(i5), LRN_H0_(i6), LRN_H0_(i7), LRN_H1_(i0),   \
+                            LRN_H1_(i1), LRN_H1_(i2), LRN_H1_(i3), LRN_H1_(i4), LRN_H1_(i5),   \
+                            LRN_H1_(i6), LRN_H1_(i7))
+
+/* sites j .. j + 15 (PX 2 or 4 and rows constants where inlined; Q = 8 / PX): pair p holds
+   site a = j + (p / Q) 2Q + p % Q in its low half and a + Q in its high half */
+LRN_INLINE void lrn_dense16_f32(const float *const *rowp, ptrdiff_t x0, const int PX, int j,
+                                const float *restrict wd, const int R, const int rows,
+                                const int32_t *restrict bucket, float *restrict res)
+{
+    const int Q = 8 / PX;
+    lrn_v16f acc[8];
+    for (int p = 0; p < 8; p++) {
+        const int ja = j + (p / Q) * 2 * Q + p % Q;
+        const ptrdiff_t xa = x0 + (ptrdiff_t)ja * PX - R;
+        const float *wa = wd + (ptrdiff_t)bucket[ja] * rows * 8;
+        const float *wb = wd + (ptrdiff_t)bucket[ja + Q] * rows * 8;
+        lrn_v16f s = {0};
+        for (int dy = 0; dy < rows; dy++) {
+            lrn_v16f xv;
+            lrn_v8f wl, wh;
+            memcpy(&xv, rowp[dy] + xa, sizeof xv);
+            memcpy(&wl, wa + dy * 8, sizeof wl);
+            memcpy(&wh, wb + dy * 8, sizeof wh);
+            s += __builtin_shufflevector(wl, wh, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
+                                         14, 15) * xv;
+        }
+        acc[p] = s;
+    }
+    lrn_v16f T[8];
+    LRN_TRANSPOSE8(lrn_v16f, LRN_SHUF16, acc, T);
+    lrn_v16f s = T[0] + T[1];
+    for (int l = 2; l < 8; l++) s += T[l];
+    /* lane p: site a of pair p, lane 8 + p: its site a + Q; to the sites' order */
+    if (Q == 4)
+        s = __builtin_shufflevector(s, s, 0, 1, 2, 3, 8, 9, 10, 11, 4, 5, 6, 7, 12, 13, 14, 15);
+    else
+        s = __builtin_shufflevector(s, s, 0, 1, 8, 9, 2, 3, 10, 11, 4, 5, 12, 13, 6, 7, 14, 15);
+    memcpy(res + j, &s, sizeof s);
+}
+
+/* the sites 0 .. 16 floor(n / 16) - 1 of lrn_dense_dot_rows through lrn_dense16_f32 where
+   it pays (AVX-512F, px 2 or 4): returns how many it did */
+LRN_INLINE int lrn_dense_pairs_f32(const float *const *rowp, ptrdiff_t x0, int px, int n,
+                                   const float *restrict wd, const int R,
+                                   const int32_t *restrict bucket, float *restrict res)
+{
+    if ((px != 2 && px != 4) || !LRN_ON_AVX512()) return 0;
+    const int rows = 2 * R + 1;
+    int j = 0;
+    for (; j + 16 <= n; j += 16) {
+        if (px == 2) lrn_dense16_f32(rowp, x0, 2, j, wd, R, rows, bucket, res);
+        else lrn_dense16_f32(rowp, x0, 4, j, wd, R, rows, bucket, res);
+    }
+    return j;
+}
+#else
+LRN_INLINE int lrn_dense_pairs_f32(const float *const *rowp, ptrdiff_t x0, int px, int n,
+                                   const float *restrict wd, const int R,
+                                   const int32_t *restrict bucket, float *restrict res)
+{
+    (void)rowp; (void)x0; (void)px; (void)n; (void)wd; (void)R; (void)bucket; (void)res;
+    return 0;
+}
+#endif
+/* double precision keeps the 4-lane code */
+LRN_INLINE int lrn_dense_pairs_f64(const double *const *rowp, ptrdiff_t x0, int px, int n,
+                                   const double *restrict wd, const int R,
+                                   const int32_t *restrict bucket, double *restrict res)
+{
+    (void)rowp; (void)x0; (void)px; (void)n; (void)wd; (void)R; (void)bucket; (void)res;
+    return 0;
 }
 #endif
 

@@ -433,7 +433,8 @@ LRN_INLINE void LRN_CAT(lrn_dense_dot_rows, IS, RS)(const REAL *const *rowp, ptr
 #if LRN_VECTOR_EXT
     typedef LRN_CAT(lrn_rv, IS, RS) rv;
     enum { L = LRN_LANES };
-    int j = 0;
+    /* float: 16 sites at a time, two a 64-byte vector (lrn_dense_pairs_f32); then 8 */
+    int j = RGBZ_CAT(lrn_dense_pairs, RS)(rowp, x0, px, n, wd, R, bucket, res);
     for (; j + L <= n; j += L) {
         /* L sites' accumulators acc[i] (lane l: window column h + l), then their lanes added
            in lane order for the L sites at once: the accumulators transposed in registers */

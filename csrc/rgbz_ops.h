@@ -134,9 +134,11 @@ static inline int rgbz_popcount(uint32_t m)
     !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
 #define RGBZ_CLONES __attribute__((target_clones("avx2", "default")))
 #define RGBZ_CLONES_512 __attribute__((target_clones("avx512f", "avx2", "default")))
+#define RGBZ_HAVE_CLONES 1
 #else
 #define RGBZ_CLONES
 #define RGBZ_CLONES_512
+#define RGBZ_HAVE_CLONES 0
 #endif
 
 /* The OpenMP loop over rows or blocks: RGBZ_PARALLEL_FOR before a `for`, on `nth` threads,
