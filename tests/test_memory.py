@@ -233,6 +233,34 @@ def test_guided_isp_and_upsample_give_the_same_results_on_used_memory(pool, monk
             np.testing.assert_array_equal(b, a)
 
 
+@pytest.mark.parametrize("pattern", ["mask1", "mask2", "bayer"])
+@pytest.mark.parametrize("bits", [8, 16])
+def test_colour_isp_fused_path_gives_the_same_image_on_used_memory(pool, monkeypatch, pattern,
+                                                                   bits):
+    # the fused path's image and defect-corrected CFA come from the pool; planted hot and cold
+    # pixels make the defect pass correct something (its copy on the pool too)
+    sys.path.insert(0, os.path.join(os.path.dirname(__file__), "isp"))
+    try:
+        from test_fused import _frame
+    finally:
+        sys.path.pop(0)
+    data, pat = _frame(pattern, shape=(96, 128))
+    chain = rz.ColourISP(output_bits=bits)
+    pool(0)
+    fresh = chain.run(data, pattern=pat, workers=2)
+    assert _block(fresh) is None
+    pool(256 * MiB)
+    monkeypatch.setattr(_memory, "POOL_MIN_BYTES", 0)   # every array from the pool
+    for value in (np.nan, -1e300):
+        _poisoned(pool, value)
+        before = pool()["reused"]
+        used = chain.run(data, pattern=pat, workers=2)
+        assert _block(used) is not None
+        assert pool()["reused"] > before
+        np.testing.assert_array_equal(used, fresh)
+        assert used.flags.c_contiguous and used.flags.writeable
+
+
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc: Linux")
 def test_kept_memory_goes_back_when_a_new_array_does_not_fit_the_address_space():
     # under ulimit -v, 400 MiB kept by the pool would leave no room for a 300 MiB array: the

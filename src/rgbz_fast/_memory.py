@@ -82,9 +82,10 @@ def empty_like(a):
 def memory_pool(limit=None):
     """The pool that keeps the memory of freed large result arrays for the next call.
 
-    The colour-guided ToF ISP (``ToFISP().run(tof, guide=...)``) and
-    :func:`rgbz_fast.tof.upsample_depth` return their arrays of 4 MiB or more on memory of
-    this pool. When such an array is freed, its memory is kept (up to ``limit`` bytes, the
+    The colour-guided ToF ISP (``ToFISP().run(tof, guide=...)``),
+    :func:`rgbz_fast.tof.upsample_depth` and the colour ISP's fused path
+    (``ColourISP().run(frame)`` without ``return_stages``: its image and its defect-corrected
+    CFA) take their arrays of 4 MiB or more from this pool. When such an array is freed, its memory is kept (up to ``limit`` bytes, the
     oldest given back first) and the next array of the same size takes it with its pages
     still mapped: a loop of calls on frames of one size then writes no fresh pages. On
     Linux the kept memory is marked ``MADV_FREE``: the system takes it back when it needs

@@ -318,7 +318,10 @@ class ColourISP:
         Returns
         -------
         image : ndarray of uint8 or uint16, shape (rows, cols, 3)
-            sRGB.
+            sRGB. Without ``return_stages``, on memory of the library's pool
+            (:func:`rgbz_fast.memory_pool`): an ordinary array over the pool's
+            block, whose memory the next call of the same size takes back when
+            it is freed.
         stages : dict
             Only with ``return_stages``. In order: ``"raw"`` (input CFA, DN),
             ``"defect_mask"`` (bool), ``"defect_correction"`` (CFA, DN),

@@ -26,7 +26,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import _kernels
+from .. import _kernels, _memory
 from .._patterns import CHANNELS, Z
 from .._validate import kernel_threads
 from ._defects import _colour_offsets, _fixes, _thresholds
@@ -95,7 +95,8 @@ def defect_fixes(data, pattern, params, white_level, known, workers):
     rr, cc, values, _ = _fixes(data, pattern, params, white_level, known, candidates=cands)
     if rr.size == 0:
         return data
-    out = data.copy()
+    out = _memory.empty_like(data)      # the pool: no fresh pages in a loop of calls
+    np.copyto(out, data)
     out[rr, cc] = values
     return out
 
@@ -127,7 +128,7 @@ def render(full, bayer, chain, black, white, given, workers, matrix=None):
     matrix = np.zeros(0, dt) if m is None else np.asarray(m, dt).reshape(-1)
     phase = np.array([CHANNELS.index(c) for c in bayer.bayer_phase], np.int32)
     bits = chain.output_bits
-    out = np.empty(full.shape + (3,), np.uint8 if bits == 8 else np.uint16)
+    out = _memory.empty(full.shape + (3,), np.uint8 if bits == 8 else np.uint16)
     threads = kernel_threads(workers, full.size)
     method = chain.demosaicing.method
     if method not in ROW_DEMOSAICS:
