@@ -174,19 +174,84 @@ typedef float lrn_v16f __attribute__((vector_size(64)));
                             LRN_H1_(i1), LRN_H1_(i2), LRN_H1_(i3), LRN_H1_(i4), LRN_H1_(i5),   \
                             LRN_H1_(i6), LRN_H1_(i7))
 
-/* sites j .. j + 15 (PX 2 or 4 and rows constants where inlined; Q = 8 / PX): pair p holds
-   site a = j + (p / Q) 2Q + p % Q in its low half and a + Q in its high half */
-LRN_INLINE void lrn_dense16_f32(const float *const *rowp, ptrdiff_t x0, const int PX, int j,
-                                const float *restrict wd, const int R, const int rows,
-                                const int32_t *restrict bucket, float *restrict res)
+/* Sites j .. j + 15 at px PX (2 or 4; Q = 8 / PX): pair p holds site a = j + (p / Q) 2Q +
+   p % Q in its low half and a + Q in its high half, its window rows starting PX ((p / Q) 2Q +
+   p % Q) columns after the first pair's. lrn_pairs_store_f32: the lanes of the 8 pairs'
+   accumulators added in lane order (the 8 x 8 transpose in each half), to the sites' order,
+   stored at res. */
+LRN_INLINE void lrn_pairs_store_f32(const lrn_v16f *acc, const int Q, float *restrict res)
 {
-    const int Q = 8 / PX;
+    lrn_v16f T[8];
+    LRN_TRANSPOSE8(lrn_v16f, LRN_SHUF16, acc, T);
+    lrn_v16f s = T[0] + T[1];
+    for (int l = 2; l < 8; l++) s += T[l];
+    /* lane p: site a of pair p, lane 8 + p: its site a + Q */
+    if (Q == 4)
+        s = __builtin_shufflevector(s, s, 0, 1, 2, 3, 8, 9, 10, 11, 4, 5, 6, 7, 12, 13, 14, 15);
+    else
+        s = __builtin_shufflevector(s, s, 0, 1, 8, 9, 2, 3, 10, 11, 4, 5, 12, 13, 6, 7, 14, 15);
+    memcpy(res, &s, sizeof s);
+}
+
+/* px 2: the window rows in the outer loop, the 8 accumulators side by side (each summed over
+   the rows in their order). The pairs' windows start at 0, 2, 4, 6, 16, 18, 20, 22: three
+   loads of 16 pixels a row (at 0, 16 and 22, none past the last window's end) and a
+   two-block shuffle per pair, instead of 8 overlapping loads that each cross a cache line
+   (0.75x the dot product's time, benchmarks.md) */
+LRN_INLINE void lrn_dense16_px2_f32(const float *const *rowp, ptrdiff_t x0, int j,
+                                    const float *restrict wd, const int R, const int rows,
+                                    const int32_t *restrict bucket, float *restrict res)
+{
+    const float *wa[8], *wb[8];
+    for (int p = 0; p < 8; p++) {
+        const int ja = j + (p / 4) * 8 + p % 4;
+        wa[p] = wd + (ptrdiff_t)bucket[ja] * rows * 8;
+        wb[p] = wd + (ptrdiff_t)bucket[ja + 4] * rows * 8;
+    }
+    const ptrdiff_t base = x0 + (ptrdiff_t)j * 2 - R;
+    lrn_v16f acc[8] = {{0}};
+    for (int dy = 0; dy < rows; dy++) {
+        lrn_v16f b0, b1, b2, w[8];
+        memcpy(&b0, rowp[dy] + base, sizeof b0);
+        memcpy(&b1, rowp[dy] + base + 16, sizeof b1);
+        memcpy(&b2, rowp[dy] + base + 22, sizeof b2);
+        w[0] = b0;
+        w[1] = __builtin_shufflevector(b0, b1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15,
+                                       16, 17);
+        w[2] = __builtin_shufflevector(b0, b1, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
+                                       18, 19);
+        w[3] = __builtin_shufflevector(b0, b1, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18,
+                                       19, 20, 21);
+        w[4] = b1;
+        /* 18 .. 33: 18 .. 31 of b1, then 32, 33 (b2's 10, 11); 20 .. 35 likewise */
+        w[5] = __builtin_shufflevector(b1, b2, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15,
+                                       26, 27);
+        w[6] = __builtin_shufflevector(b1, b2, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 26, 27,
+                                       28, 29);
+        w[7] = b2;
+        for (int p = 0; p < 8; p++) {
+            lrn_v8f wl, wh;
+            memcpy(&wl, wa[p] + dy * 8, sizeof wl);
+            memcpy(&wh, wb[p] + dy * 8, sizeof wh);
+            acc[p] += __builtin_shufflevector(wl, wh, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12,
+                                              13, 14, 15) * w[p];
+        }
+    }
+    lrn_pairs_store_f32(acc, 4, res + j);
+}
+
+/* px 4: pair by pair, each window row one load (the windows overlap two by two only; rows
+   outermost as for px 2 measured slower here) */
+LRN_INLINE void lrn_dense16_px4_f32(const float *const *rowp, ptrdiff_t x0, int j,
+                                    const float *restrict wd, const int R, const int rows,
+                                    const int32_t *restrict bucket, float *restrict res)
+{
     lrn_v16f acc[8];
     for (int p = 0; p < 8; p++) {
-        const int ja = j + (p / Q) * 2 * Q + p % Q;
-        const ptrdiff_t xa = x0 + (ptrdiff_t)ja * PX - R;
+        const int ja = j + (p / 2) * 4 + p % 2;
+        const ptrdiff_t xa = x0 + (ptrdiff_t)ja * 4 - R;
         const float *wa = wd + (ptrdiff_t)bucket[ja] * rows * 8;
-        const float *wb = wd + (ptrdiff_t)bucket[ja + Q] * rows * 8;
+        const float *wb = wd + (ptrdiff_t)bucket[ja + 2] * rows * 8;
         lrn_v16f s = {0};
         for (int dy = 0; dy < rows; dy++) {
             lrn_v16f xv;
@@ -199,19 +264,10 @@ LRN_INLINE void lrn_dense16_f32(const float *const *rowp, ptrdiff_t x0, const in
         }
         acc[p] = s;
     }
-    lrn_v16f T[8];
-    LRN_TRANSPOSE8(lrn_v16f, LRN_SHUF16, acc, T);
-    lrn_v16f s = T[0] + T[1];
-    for (int l = 2; l < 8; l++) s += T[l];
-    /* lane p: site a of pair p, lane 8 + p: its site a + Q; to the sites' order */
-    if (Q == 4)
-        s = __builtin_shufflevector(s, s, 0, 1, 2, 3, 8, 9, 10, 11, 4, 5, 6, 7, 12, 13, 14, 15);
-    else
-        s = __builtin_shufflevector(s, s, 0, 1, 8, 9, 2, 3, 10, 11, 4, 5, 12, 13, 6, 7, 14, 15);
-    memcpy(res + j, &s, sizeof s);
+    lrn_pairs_store_f32(acc, 2, res + j);
 }
 
-/* the sites 0 .. 16 floor(n / 16) - 1 of lrn_dense_dot_rows through lrn_dense16_f32 where
+/* the sites 0 .. 16 floor(n / 16) - 1 of lrn_dense_dot_rows through lrn_dense16_px<px>_f32 where
    it pays (AVX-512F, px 2 or 4): returns how many it did */
 LRN_INLINE int lrn_dense_pairs_f32(const float *const *rowp, ptrdiff_t x0, int px, int n,
                                    const float *restrict wd, const int R,
@@ -221,8 +277,8 @@ LRN_INLINE int lrn_dense_pairs_f32(const float *const *rowp, ptrdiff_t x0, int p
     const int rows = 2 * R + 1;
     int j = 0;
     for (; j + 16 <= n; j += 16) {
-        if (px == 2) lrn_dense16_f32(rowp, x0, 2, j, wd, R, rows, bucket, res);
-        else lrn_dense16_f32(rowp, x0, 4, j, wd, R, rows, bucket, res);
+        if (px == 2) lrn_dense16_px2_f32(rowp, x0, j, wd, R, rows, bucket, res);
+        else lrn_dense16_px4_f32(rowp, x0, j, wd, R, rows, bucket, res);
     }
     return j;
 }
