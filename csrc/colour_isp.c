@@ -406,6 +406,27 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
     return bad ? RGBZ_ENOMEM : RGBZ_OK;
 }
 
+int rgbz_ci_defect_confirm(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                           int32_t P, int32_t Q, const int32_t *noff, const int32_t *offs,
+                           ptrdiff_t n, const int64_t *rr, const int64_t *cc, const float *hot,
+                           const float *cold, const float *spread, float thr, float k,
+                           double f, uint8_t *ok)
+{
+    if (!src || !noff || !offs || rows < 0 || cols < 0 || P < 1 || Q < 1 || n < 0 ||
+        (n > 0 && (!rr || !cc || !hot || !cold || !spread || !ok)))
+        return RGBZ_EINVAL;
+    for (int32_t i = 0; i < P * Q; i++)
+        if (noff[i] > RGBZ_CI_MAX_NEIGHBOURS) return RGBZ_EINVAL;
+    for (ptrdiff_t i = 0; i < n; i++)
+        if (rr[i] < 0 || rr[i] >= rows || cc[i] < 0 || cc[i] >= cols) return RGBZ_EINVAL;
+    int st = RGBZ_OK;
+#define CI_CONFIRM_(s, T) RGBZ_CAT(ci_confirm, s)((const T *)src, rows, cols, P, Q, noff, offs, \
+                                                  n, rr, cc, hot, cold, spread, thr, k, f, ok)
+    RGBZ_SWITCH_TYPE(in_type, RGBZ_ELEMENT_TYPES, CI_CONFIRM_, st = RGBZ_EINVAL)
+#undef CI_CONFIRM_
+    return st;
+}
+
 int rgbz_ci_phase_sums(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
                        double white, double *sums, int64_t *counts, int workers)
 {

@@ -5,8 +5,9 @@
  * one NumPy pass (and one frame-size temporary) per stage:
  *
  *   rgbz_ci_defect_candidates  tests 1 and 2 of the defect detection on every colour pixel
- *                              (isp._defects._candidates); the few candidates go back to
- *                              Python for test 3 and the median fixes;
+ *                              (isp._defects._candidates);
+ *   rgbz_ci_defect_confirm     test 3 on those few candidates (isp._defects._confirm); the
+ *                              defects go back to Python for the median fixes;
  *   rgbz_ci_phase_sums         the grey-world sums and counts of each 2x2 phase of the
  *                              complete CFA (isp._stages.grey_world_gains);
  *   rgbz_ci_render_<RS>        white balance, demosaic (Malvar or bilinear), colour matrix, clip, sRGB
@@ -59,6 +60,19 @@ int rgbz_ci_defect_candidates(int in_type, const void *src, ptrdiff_t rows, ptrd
                               float thr, float k, ptrdiff_t capacity, int64_t *rr, int64_t *cc,
                               float *hot, float *cold, float *spread, ptrdiff_t *count,
                               int workers);
+
+/*
+ * Test 3 of the defect detection on the n candidates of rgbz_ci_defect_candidates (rr, cc,
+ * hot, cold, spread: its outputs; thr and k its thresholds; f the cross factor): ok[i] = 1
+ * when candidate i is a defect, the decisions of isp._defects._confirm (the same values:
+ * float32 pixels in double, NumPy's pairwise sum of each 24-entry neighbourhood, the trimmed
+ * mean, k * spread in float32). RGBZ_EINVAL for a candidate outside the frame.
+ */
+int rgbz_ci_defect_confirm(int in_type, const void *src, ptrdiff_t rows, ptrdiff_t cols,
+                           int32_t P, int32_t Q, const int32_t *noff, const int32_t *offs,
+                           ptrdiff_t n, const int64_t *rr, const int64_t *cc, const float *hot,
+                           const float *cold, const float *spread, float thr, float k,
+                           double f, uint8_t *ok);
 
 /*
  * Grey-world sums of a complete Bayer CFA: for each 2x2 phase (raster order) the sum and the

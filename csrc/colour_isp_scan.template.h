@@ -168,3 +168,63 @@ CI_CLONES static void RGBZ_CAT(ci_sums, IS)(const IN_T *src, ptrdiff_t cols, ptr
         counts[i] = c[i];
     }
 }
+
+/* Test 3 of the defect detection on n candidates (rgbz_ci_defect_confirm): ok[i] = 1 when
+   candidate i is a defect. Every value as isp._defects._confirm computes it: the pixels as
+   float32 then double, a neighbourhood's sum in np.nansum's pairwise order over its 24
+   entries (missing ones 0), the trimmed mean, the high-passes' max and min (missing ones
+   left out), the tests in double with k * spread a float32 product */
+static void RGBZ_CAT(ci_confirm, IS)(const IN_T *src, ptrdiff_t rows, ptrdiff_t cols,
+                                     int32_t P, int32_t Q, const int32_t *noff,
+                                     const int32_t *offs, ptrdiff_t n, const int64_t *rr,
+                                     const int64_t *cc, const float *hot, const float *cold,
+                                     const float *spread, float thr, float k, double f,
+                                     uint8_t *ok)
+{
+    for (ptrdiff_t i = 0; i < n; i++) {
+        const ptrdiff_t r = (ptrdiff_t)rr[i], c = (ptrdiff_t)cc[i];
+        double hi = -INFINITY, lo = INFINITY;      /* the adjacent pixels' high-passes */
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) {
+                const ptrdiff_t qy = r + dy, qx = c + dx;
+                if ((!dy && !dx) || qy < 0 || qy >= rows || qx < 0 || qx >= cols) continue;
+                const int32_t kq = (int32_t)(qy % P) * Q + (int32_t)(qx % Q);
+                const int32_t m = noff[kq];
+                const double vq = (double)(float)src[qy * cols + qx];
+                if (m < 0 || vq != vq) continue;          /* a Z site or NaN: no high-pass */
+                const int32_t *o = offs + (ptrdiff_t)kq * 2 * RGBZ_CI_MAX_NEIGHBOURS;
+                double a[RGBZ_CI_MAX_NEIGHBOURS] = {0};
+                double big = -INFINITY, small = INFINITY;
+                int cnt = 0;
+                for (int32_t j = 0; j < m; j++) {
+                    const ptrdiff_t ny = qy + o[2 * j], nx = qx + o[2 * j + 1];
+                    if (ny < 0 || ny >= rows || nx < 0 || nx >= cols ||
+                        noff[(int32_t)(ny % P) * Q + (int32_t)(nx % Q)] < 0)
+                        continue;
+                    const double w = (double)(float)src[ny * cols + nx];
+                    if (w != w) continue;
+                    a[j] = w;
+                    cnt++;
+                    big = w > big ? w : big;
+                    small = w < small ? w : small;
+                }
+                if (!cnt) continue;
+                double s[8];
+                for (int t = 0; t < 8; t++) s[t] = a[t];
+                for (int t = 0; t < 8; t++) s[t] += a[8 + t];
+                for (int t = 0; t < 8; t++) s[t] += a[16 + t];
+                const double tot = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
+                const double mean = cnt >= 3 ? (tot - big - small) / (double)(cnt - 2)
+                                             : tot / (double)cnt;
+                const double hp = vq - mean;
+                if (hp != hp) continue;
+                hi = hp > hi ? hp : hi;
+                lo = hp < lo ? hp : lo;
+            }
+        const double eh = (double)hot[i], ec = (double)cold[i];
+        const double ks = (double)(k * spread[i]);
+        const int is_hot = eh > (double)thr && eh > ks && hi < f * eh;
+        const int is_cold = ec > (double)thr && ec > ks && lo > -f * ec;
+        ok[i] = (uint8_t)(is_hot || is_cold);
+    }
+}

@@ -301,6 +301,9 @@ CI_MAX_NEIGHBOURS: int
 def ci_defect_candidates(src: np.ndarray, noff: np.ndarray, offs: np.ndarray, thr: float,
                          k: float, rr: np.ndarray, cc: np.ndarray, hot: np.ndarray,
                          cold: np.ndarray, spread: np.ndarray, workers: int) -> int: ...
+def ci_defect_confirm(src: np.ndarray, noff: np.ndarray, offs: np.ndarray, rr: np.ndarray,
+                      cc: np.ndarray, hot: np.ndarray, cold: np.ndarray, spread: np.ndarray,
+                      thr: float, k: float, f: float, ok: np.ndarray) -> None: ...
 def ci_phase_sums(src: np.ndarray, white: float, sums: np.ndarray, counts: np.ndarray,
                   workers: int) -> None: ...
 def ci_render(src: np.ndarray, phase: np.ndarray, mode: int, scale: np.ndarray, black: float,

@@ -1683,6 +1683,11 @@ cdef extern from "colour_isp.h" nogil:
                                   const int32_t *offs, float thr, float k, Py_ssize_t capacity,
                                   int64_t *rr, int64_t *cc, float *hot, float *cold,
                                   float *spread, Py_ssize_t *count, int workers)
+    int rgbz_ci_defect_confirm(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
+                               int32_t P, int32_t Q, const int32_t *noff, const int32_t *offs,
+                               Py_ssize_t n, const int64_t *rr, const int64_t *cc,
+                               const float *hot, const float *cold, const float *spread,
+                               float thr, float k, double f, uint8_t *ok)
     int rgbz_ci_phase_sums(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
                            double white, double *sums, int64_t *counts, int workers)
     int rgbz_ci_render_f32(int in_type, const void *src, Py_ssize_t rows, Py_ssize_t cols,
@@ -1733,6 +1738,30 @@ def ci_defect_candidates(const frame_t[:, ::1] src, const int32_t[::1] noff,
             &cold[0] if cap else NULL, &spread[0] if cap else NULL, &count, workers)
     _raise_for(status)
     return count
+
+
+def ci_defect_confirm(const frame_t[:, ::1] src, const int32_t[::1] noff,
+                      const int32_t[:, :, :, ::1] offs, const int64_t[::1] rr,
+                      const int64_t[::1] cc, const float[::1] hot, const float[::1] cold,
+                      const float[::1] spread, float thr, float k, double f, uint8_t[::1] ok):
+    """Test 3 of the defect detection on the candidates of ci_defect_candidates: ok[i] = 1
+    where candidate i is a defect."""
+    cdef int status
+    cdef int in_type = _type_code(<frame_t *> NULL)
+    cdef Py_ssize_t n = rr.shape[0]
+    if (cc.shape[0] != n or hot.shape[0] != n or cold.shape[0] != n or spread.shape[0] != n
+            or ok.shape[0] != n or offs.shape[3] != 2
+            or offs.shape[2] != RGBZ_CI_MAX_NEIGHBOURS
+            or noff.shape[0] != offs.shape[0] * offs.shape[1]):
+        raise ValueError("ci_defect_confirm: inconsistent array shapes")
+    if n == 0:
+        return
+    with nogil:
+        status = rgbz_ci_defect_confirm(
+            in_type, &src[0, 0], src.shape[0], src.shape[1], <int32_t> offs.shape[0],
+            <int32_t> offs.shape[1], &noff[0], &offs[0, 0, 0, 0], n, &rr[0], &cc[0], &hot[0],
+            &cold[0], &spread[0], thr, k, f, &ok[0])
+    _raise_for(status)
 
 
 def ci_phase_sums(const frame_t[:, ::1] src, double white, double[::1] sums,

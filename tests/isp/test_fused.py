@@ -237,6 +237,57 @@ def test_defect_candidates_beyond_the_first_room(monkeypatch):
     assert got[0].size == _defects._candidates(data, pat.tile, params, 2047)[0].size > 8
 
 
+def _all_candidates(data, tile, rng):
+    """Candidates for test 3 at every colour pixel of a small frame (its own pixels at the
+    borders too), with random test-1 and test-2 values around the thresholds."""
+    P, Q = tile.shape
+    rr, cc = np.nonzero(tile[np.arange(data.shape[0])[:, None] % P,
+                             np.arange(data.shape[1])[None, :] % Q] != rz.Z)
+    n = rr.size
+    hot, cold, spread = (rng.uniform(0, 400, n).astype(np.float32) for _ in range(3))
+    return rr.astype(np.intp), cc.astype(np.intp), hot, cold, spread
+
+
+@pytest.mark.parametrize("pattern", ["bayer", "mask1", "mask2", "rows"])
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16, np.float32, np.float64])
+@pytest.mark.parametrize("cross", [0.0, 0.1, 0.7])
+def test_defect_test3_is_the_numpy_one(pattern, dtype, cross):
+    # the C test 3 (ci_defect_confirm) against _defects._confirm: every colour pixel of small
+    # frames as a candidate (the borders, Z neighbours, neighbourhoods of 1, 2 or more pixels);
+    # float frames with NaN and inf pixels and values whose sums round
+    rng = np.random.default_rng(hash((pattern, np.dtype(dtype).name, cross)) % 2**32)
+    pat = rz.get_pattern(pattern)
+    for shape in ((5, 7), (12, 16), (23, 18)):
+        if np.issubdtype(dtype, np.integer):
+            top = np.iinfo(dtype).max
+            data = rng.integers(0, top + 1, shape).astype(dtype)
+            data[rng.random(shape) < 0.1] = top
+        else:
+            data = (rng.random(shape) * 10.0 ** rng.integers(-9, 4, shape)).astype(dtype)
+            data[rng.random(shape) < 0.03] = np.nan
+            data[rng.random(shape) < 0.02] = np.inf
+        params = DefectCorrection(threshold=0.05, spread_factor=0.8, cross_factor=cross)
+        cands = _all_candidates(data, pat.tile, rng)
+        want = _defects._confirm(data, pat.tile, params, 100.0, cands)
+        got = _fused._confirmed(np.ascontiguousarray(data), pat.tile, params, 100.0, cands)
+        for a, b in zip(got, want):
+            np.testing.assert_array_equal(a, b)
+
+
+def test_defect_test3_rejects_bad_arguments():
+    data, pat = _frame("bayer", shape=(12, 12), seed=3)
+    noff, offs = _fused._tile_neighbours(np.ascontiguousarray(pat.tile, np.int64).tobytes(),
+                                         pat.tile.shape)
+    one = np.ones(1, np.float32)
+    ok = np.zeros(1, np.uint8)
+    with pytest.raises(ValueError, match="ci_defect_confirm"):
+        _kernels.ci_defect_confirm(data, noff, offs, np.zeros(2, np.int64), np.zeros(1, np.int64),
+                                   one, one, one, 1.0, 1.0, 0.1, ok)
+    with pytest.raises(RuntimeError, match="rejected its arguments"):   # outside the frame
+        _kernels.ci_defect_confirm(data, noff, offs, np.array([12], np.int64),
+                                   np.zeros(1, np.int64), one, one, one, 1.0, 1.0, 0.1, ok)
+
+
 @pytest.mark.parametrize("dtype", [np.uint16, np.float32, np.float64])
 def test_phase_sums_give_the_grey_world_gains(dtype):
     data, pat = _frame("bayer", seed=11)

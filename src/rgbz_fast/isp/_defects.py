@@ -364,15 +364,16 @@ def _check_known(known, shape):
     return kn
 
 
-def _fixes(data, pattern, params, white_level, known, candidates=None):
+def _fixes(data, pattern, params, white_level, known, confirmed=None):
     """What :func:`correct_defects` changes, of validated arguments: ``(rr, cc, values,
     mask)``, the corrected pixels, their new values (the CFA's dtype) and the map of the
-    corrected pixels. ``candidates``: tests 1 and 2's result when already computed (the C
-    pass of the fused chain), else :func:`_candidates` runs."""
+    corrected pixels. ``confirmed``: the defects of the three tests when already computed
+    (the C passes of the fused chain), else :func:`_candidates` and :func:`_confirm` run."""
     mask = np.zeros(data.shape, bool)
-    if params.enabled:
-        if candidates is None:
-            candidates = _candidates(data, pattern.tile, params, white_level)
+    if params.enabled and confirmed is not None:
+        rr, cc = confirmed
+    elif params.enabled:
+        candidates = _candidates(data, pattern.tile, params, white_level)
         rr, cc = _confirm(data, pattern.tile, params, white_level, candidates)
     else:
         rr, cc = (np.zeros(0, np.intp),) * 2

@@ -85,14 +85,33 @@ def _candidates(data, tile, params, white_level, threads):
         room = n
 
 
+def _confirmed(data, tile, params, white_level, candidates):
+    """:func:`._defects._confirm`'s defects from the C test 3 (the same pixels, in the
+    candidates' order)."""
+    rr, cc, hot, cold, spread = candidates
+    if rr.size == 0:
+        return rr, cc
+    t = np.ascontiguousarray(tile, np.int64)
+    noff, offs = _tile_neighbours(t.tobytes(), t.shape)
+    thr, k = _thresholds(params, white_level)
+    ok = np.empty(rr.size, np.uint8)
+    _kernels.ci_defect_confirm(data, noff, offs, np.ascontiguousarray(rr, np.int64),
+                               np.ascontiguousarray(cc, np.int64), hot, cold, spread,
+                               float(thr), float(k), float(params.cross_factor), ok)
+    ok = ok.view(bool)
+    return rr[ok], cc[ok]
+
+
 def defect_fixes(data, pattern, params, white_level, known, workers):
     """The defect-corrected CFA of validated arguments, and whether anything changed:
     :func:`._defects.correct_defects` (the input itself when nothing is corrected)."""
     data = np.ascontiguousarray(data)
     threads = kernel_threads(workers, data.size)
-    cands = _candidates(data, pattern.tile, params, white_level, threads) \
-        if params.enabled else None
-    rr, cc, values, _ = _fixes(data, pattern, params, white_level, known, candidates=cands)
+    confirmed = None
+    if params.enabled:
+        cands = _candidates(data, pattern.tile, params, white_level, threads)
+        confirmed = _confirmed(data, pattern.tile, params, white_level, cands)
+    rr, cc, values, _ = _fixes(data, pattern, params, white_level, known, confirmed=confirmed)
     if rr.size == 0:
         return data
     out = _memory.empty_like(data)      # the pool: no fresh pages in a loop of calls
