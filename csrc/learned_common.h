@@ -283,22 +283,11 @@ LRN_INLINE int lrn_dense_pairs_f32(const float *const *rowp, ptrdiff_t x0, int p
     return j;
 }
 #else
-LRN_INLINE int lrn_dense_pairs_f32(const float *const *rowp, ptrdiff_t x0, int px, int n,
-                                   const float *restrict wd, const int R,
-                                   const int32_t *restrict bucket, float *restrict res)
-{
-    (void)rowp; (void)x0; (void)px; (void)n; (void)wd; (void)R; (void)bucket; (void)res;
-    return 0;
-}
+/* no shuffles across vector sizes: every site through the 8-lane code */
+#define lrn_dense_pairs_f32(rowp, x0, px, n, wd, R, bucket, res) 0
 #endif
-/* double precision keeps the 4-lane code */
-LRN_INLINE int lrn_dense_pairs_f64(const double *const *rowp, ptrdiff_t x0, int px, int n,
-                                   const double *restrict wd, const int R,
-                                   const int32_t *restrict bucket, double *restrict res)
-{
-    (void)rowp; (void)x0; (void)px; (void)n; (void)wd; (void)R; (void)bucket; (void)res;
-    return 0;
-}
+/* double precision keeps the 4-lane code for every site */
+#define lrn_dense_pairs_f64(rowp, x0, px, n, wd, R, bucket, res) 0
 #endif
 
 /* the energy classes' colours of the sites of row y from column x0 (every px-th, px even, so
