@@ -4,9 +4,10 @@
 kept (``return_stages=False``) and the demosaic is one of :data:`DEMOSAICS` (every method);
 the stage functions stay the reference and the path of ``return_stages``. Three passes:
 
-1. tests 1 and 2 of the defect detection on every colour pixel (:func:`defect_fixes`);
-   test 3 and the median fixes of the few candidates stay in NumPy
-   (:func:`._defects._confirm`, :func:`._defects._fixes`);
+1. tests 1 and 2 of the defect detection on every colour pixel, then test 3 on the few
+   candidates (:func:`defect_fixes`; :func:`._defects._candidates` and
+   :func:`._defects._confirm` are their NumPy references); the median fixes of the
+   defects stay in NumPy (:func:`._defects._fixes`);
 2. the grey-world sums of each 2x2 phase of the complete CFA (:func:`gains`);
 3. white balance, demosaic, colour matrix and sRGB encoding (:func:`render`): with Malvar
    or bilinear (:data:`ROW_DEMOSAICS`) one pass row by row, the white-balanced rows in
