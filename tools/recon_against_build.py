@@ -62,6 +62,8 @@ def same(other, calls, seed, clip_share=0.2):
                   sigma_rel=[0.0, 0.5][rng.integers(2)])
         if meth == "sg":
             kw["sg_mode"] = ["auto", "pure", "combined"][rng.integers(3)]
+        if meth == "bilinear":      # no weights: neither a domain nor sigma_rel applies
+            del kw["domain"], kw["sigma_rel"]
         if rng.random() < clip_share:
             kw["clip_level"] = float(0.8 * ((1 << bd) - 1))
         smooth = rng.random() < 0.5
