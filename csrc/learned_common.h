@@ -197,7 +197,7 @@ LRN_INLINE void lrn_pairs_store_f32(const lrn_v16f *acc, const int Q, float *res
    the rows in their order). The pairs' windows start at 0, 2, 4, 6, 16, 18, 20, 22: three
    loads of 16 pixels a row (at 0, 16 and 22, none past the last window's end) and a
    two-block shuffle per pair, instead of 8 overlapping loads that each cross a cache line
-   (0.75x the dot product's time, benchmarks.md) */
+   (0.68-0.74x the pair-by-pair code's time on cached data, benchmarks.md) */
 LRN_INLINE void lrn_dense16_px2_f32(const float *const *rowp, ptrdiff_t x0, int j,
                                     const float *restrict wd, const int R, const int rows,
                                     const int32_t *restrict bucket, float *restrict res)
