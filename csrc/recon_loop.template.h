@@ -411,7 +411,7 @@ static int LFN(rgbz_recon_loop)(const IN_T *restrict src, IN_T *restrict dst, pt
                     LFN(rgbz_deinterleave)(w.rowp[d], cols, px, plen, slot);
                     /* the frame row below, which the next row's window converts: on its way to
                        the cache while this row's sites run (the conversion waited for memory
-                       on its first read of each row: SG Mask2 0.95x the time, benchmarks.md) */
+                       on its first read of each row: SG Mask2 1.04x the speed, benchmarks.md) */
                     if (need[d] + 1 < rows)
                         rgbz_prefetch_span(src + (need[d] + 1) * cols, (size_t)cols * sizeof(IN_T));
                     tag[k] = need[d];

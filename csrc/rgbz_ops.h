@@ -116,20 +116,6 @@ static inline int rgbz_popcount(uint32_t m)
 }
 #endif
 
-/*
- * Vector-width dispatch of the hottest functions: on x86-64 with GCC and glibc, a
- * function marked RGBZ_CLONES is compiled once per listed target and the loader
- * picks the widest the CPU runs (an ifunc). Only the vector width changes: the
- * C99 build (-std=c99, so -ffp-contract=off) contracts nothing into FMAs, so
- * every clone computes the same IEEE operations and the results are identical
- * bit for bit. The counting build and other compilers get one copy.
- *   RGBZ_CLONES      AVX2 and the x86-64 baseline (the learned kernel; bilinear and
- *                    BI on Mask1, slower on 1 thread with AVX-512F)
- *   RGBZ_CLONES_512  AVX-512F, AVX2 and the baseline (the reconstruction's gather and
- *                    core, the ToF blocks): the AVX-512F clone runs 16 float lanes;
- *                    SG float32 ran 1.1-1.9x as fast with it as with AVX2 on 1 thread
- *                    (docs/reports/benchmarks.md, issue 16)
- */
 /* a hint to bring the bytes [p, p + n) into the cache, one per 64-byte line (none where the
    compiler has no prefetch builtin) */
 static inline void rgbz_prefetch_span(const void *p, size_t n)
@@ -143,6 +129,23 @@ static inline void rgbz_prefetch_span(const void *p, size_t n)
 #endif
 }
 
+/*
+ * Vector-width dispatch of the hottest functions: on x86-64 with GCC and glibc, a
+ * function marked RGBZ_CLONES is compiled once per listed target and the loader
+ * picks the widest the CPU runs (an ifunc). Only the vector width changes: the
+ * C99 build (-std=c99, so -ffp-contract=off) contracts nothing into FMAs, so
+ * every clone computes the same IEEE operations and the results are identical
+ * bit for bit. The counting build and other compilers get one copy.
+ *   RGBZ_CLONES      AVX2 and the x86-64 baseline (the learned kernel; bilinear and
+ *                    BI on Mask1, slower on 1 thread with AVX-512F)
+ *   RGBZ_CLONES_512  AVX-512F, AVX2 and the baseline (the reconstruction's gather and
+ *                    core, the ToF blocks): the AVX-512F clone runs 16 float lanes;
+ *                    SG float32 ran 1.1-1.9x as fast with it as with AVX2 on 1 thread
+ *                    (docs/reports/benchmarks.md, issue 16)
+ *   RGBZ_HAVE_CLONES 1 where the clones are built (then a cloned function's code runs on
+ *                    the widest set the CPU has, which __builtin_cpu_supports tells), 0
+ *                    for the one copy
+ */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
     !defined(RGBZ_COUNT_OPS) && !defined(RGBZ_NO_CLONES)
 #define RGBZ_CLONES __attribute__((target_clones("avx2", "default")))
