@@ -119,6 +119,18 @@ def test_api_reference_is_current():
     assert r.returncode == 0, r.stderr.strip() or "run python tools/gen_api.py"
 
 
+def test_learned_floor_patch_applies():
+    """tools/learned_floor.patch, the measurement build benchmarks.md's "Learned without its
+    hash" gives the commands of, still applies to csrc/learned.template.h (checked, not
+    applied); after a change there, rebuild the patch from the measurement code."""
+    import shutil
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed: `git apply --check` cannot run")
+    r = subprocess.run(["git", "apply", "--check", "tools/learned_floor.patch"], cwd=REPO,
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr.strip()
+
+
 # --------------------------------------------------------------------------- links
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 
