@@ -102,9 +102,17 @@ def test_bench_small_frame_gives_ratios_but_no_verdict(capsys, tmp_path):
         for r in res["results"]:
             assert all(_finite_positive(r[f"vs_opencv_{k}_{lab}"]) for k in ("bilinear", "ea")
                        for lab in ("1", "all"))
+            # with the spread of the rounds' ratios around their median
+            for k in ("bilinear", "ea"):
+                for lab in ("1", "all"):
+                    lo, hi = r[f"vs_opencv_{k}_{lab}_iqr"]
+                    assert 0 < lo <= r[f"vs_opencv_{k}_{lab}"] <= hi
         m1 = next(r for r in res["results"] if r["method"] == "sg" and r["exp"] == "auto"
                   and r["pattern"] == "mask1" and r["precision"] == "float32")
         assert t["fraction_of_opencv_ea"] == m1["vs_opencv_ea_all"]
+        assert t["fraction_of_opencv_ea_iqr"] == m1["vs_opencv_ea_all_iqr"]
+        med, (lo, hi) = m1["vs_opencv_ea_all"], m1["vs_opencv_ea_all_iqr"]
+        assert f"{med:.2f} [{lo:.2f}-{hi:.2f}]" in (tmp_path / "bench.txt").read_text()
     text = (tmp_path / "bench.txt").read_text()
     assert "no verdict: the target is defined on the 3000x4000 frame (--shape)" in text
     assert "xNumPy" in text and "Quick run" not in text

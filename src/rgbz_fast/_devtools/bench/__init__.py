@@ -110,7 +110,11 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
             ours = t.pop("ours")
             threads[label] = rate_stats(ours, npix)
             for key, theirs in t.items():
-                paired[f"vs_opencv_{key}_{label}"] = float(np.median(theirs / ours))
+                rounds = theirs / ours
+                paired[f"vs_opencv_{key}_{label}"] = float(np.median(rounds))
+                # the spread of the rounds' ratios: how far one run's median can be trusted
+                paired[f"vs_opencv_{key}_{label}_iqr"] = [
+                    float(q) for q in np.percentile(rounds, [25, 75])]
         # the threads the call really runs: pixel kernels take one per 2**18 pixels at most
         threads["all"]["threads"] = (kernel_threads(workers, npix) if meta["kernel"] in
                                      ("reconstruct", "demosaic") else workers)
@@ -125,6 +129,7 @@ def run_benchmarks(shape=FULL_SHAPE, repeat=5, workers=None, ref_crop=(240, 320)
         for key in ("bilinear", "ea"):
             for label in ("1", "all"):
                 r.setdefault(f"vs_opencv_{key}_{label}", None)
+                r.setdefault(f"vs_opencv_{key}_{label}_iqr", None)
     tof = None
     if tof_asked:
         tof = tof_sites_benchmark(shape, repeat, workers, verdict=not quick)
@@ -165,6 +170,7 @@ def _targets(results, ocv, tof, mem, verdict):
         if ocv is not None and sg.get("vs_opencv_ea_all") is not None:
             targets["opencv_ea_all_threads_mpix_s"] = ocv["ea"]["all"]["mpix_s"]
             targets["fraction_of_opencv_ea"] = sg["vs_opencv_ea_all"]
+            targets["fraction_of_opencv_ea_iqr"] = sg["vs_opencv_ea_all_iqr"]
     if tof is not None:
         targets["tof_x_numpy_all_threads"] = tof["x_numpy_all"]
         targets["tof_target_x_numpy"] = TOF_TARGET_X_NUMPY

@@ -20,6 +20,15 @@ def _f(v, nd=1):
     return f"{v:.{nd}f}"
 
 
+def _ratio(r, key):
+    """The paired ratio to OpenCV's ``key`` demosaic on all threads: 'median [IQR]' of the
+    rounds' ratios (the median alone from a result without the IQR)."""
+    med, iqr = r[f"vs_opencv_{key}_all"], r.get(f"vs_opencv_{key}_all_iqr")
+    if med is None or iqr is None:
+        return _f(med, 2)
+    return f"{_f(med, 2)} [{_f(iqr[0], 2)}-{_f(iqr[1], 2)}]"
+
+
 def format_table(res):
     """The human-readable report of :func:`run_benchmarks`'s result."""
     m = res["machine"]
@@ -48,8 +57,7 @@ def format_table(res):
                f"{_f(ta['mpix_s'])} [{_f(ta['mpix_s_lo'])}-{_f(ta['mpix_s_hi'])}]",
                str(ta.get("threads", res["workers_all"]))]
         if not quick:
-            row += [_f(r["vs_numpy"]), _f(r["vs_opencv_bilinear_all"], 2),
-                    _f(r["vs_opencv_ea_all"], 2)]
+            row += [_f(r["vs_numpy"]), _ratio(r, "bilinear"), _ratio(r, "ea")]
         rows.append(row)
     ocv = res["opencv"]
     if ocv is not None:
@@ -80,9 +88,9 @@ def format_table(res):
                 f"{res['numpy_reference']['crop'][0]}x{res['numpy_reference']['crop'][1]} crop"
                 + ("" if res["numpy_reference"]["available"] else "; reconstruction: n/a "
                    "without --numpy-reference FILE") + "). xCV: our all-threads speed / OpenCV's "
-                "on the same-size Bayer frame, the median of the per-round ratios of calls "
-                "alternated with ours (so that a change of load hits both; the OpenCV rows "
-                "above are timed on their own)" + ("" if ocv else " (cv2 not installed: n/a)")
+                "on the same-size Bayer frame, the median [IQR] of the per-round ratios of "
+                "calls alternated with ours (so that a change of load hits both; the OpenCV "
+                "rows above are timed on their own)" + ("" if ocv else " (cv2 not installed: n/a)")
                 + ".")
     t = res["targets"]
     if "sg_mask1_float32_all_threads_mpix_s" in t:
@@ -96,7 +104,9 @@ def format_table(res):
         if "opencv_ea_all_threads_mpix_s" in t:
             s += (f"; OpenCV EA {t['opencv_ea_all_threads_mpix_s']:.0f} Mpix/s on its own; "
                   f"alternated with it we run at {t['fraction_of_opencv_ea']:.3f} of its "
-                  "speed (median of the rounds)")
+                  "speed (median of the rounds" + (
+                      "" if t.get("fraction_of_opencv_ea_iqr") is None else
+                      ", IQR {:.3f}-{:.3f}".format(*t["fraction_of_opencv_ea_iqr"])) + ")")
         lines.append(s)
     tof = res.get("tof_sites")
     if tof:
