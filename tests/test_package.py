@@ -79,6 +79,47 @@ def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
     assert r.stdout.strip() == str(want)
 
 
+
+@pytest.mark.parametrize("argv0, preset, want", [
+    ("/venv/bin/rgbz-fast", {}, "30000"),                       # the command: a short spin
+    ("/venv/bin/rgbz-fast", {"GOMP_SPINCOUNT": "7"}, "7"),       # a user's setting stays
+    ("/venv/bin/rgbz-fast", {"OMP_WAIT_POLICY": "active"}, None),   # so does their policy
+    ("-m rgbz_fast", {}, "30000"),                              # python -m rgbz_fast
+    ("-c", {}, None),                                           # an importing program: untouched
+    ("-m pytest", {}, None),
+])
+def test_the_command_alone_shortens_openmps_idle_spin(argv0, preset, want):
+    """libgomp's idle threads spin about 3 ms after each of the kernels' parallel regions by
+    default, taking a core from the next threaded call of another library (OpenCV's demosaic
+    1.4x slower right after a reconstruction, docs/reports/benchmarks.md); the command sets
+    GOMP_SPINCOUNT=30000 before its kernels load, unless GOMP_SPINCOUNT or OMP_WAIT_POLICY is
+    set, and show_config reports what the kernels run with."""
+    import os
+
+    env = {k: v for k, v in os.environ.items() if k not in ("GOMP_SPINCOUNT", "OMP_WAIT_POLICY")}
+    env.update(preset)
+    if argv0.startswith("-m "):
+        setup = f"sys.argv[0] = '-m'; sys.orig_argv = ['python', '-m', {argv0[3:]!r}]"
+    else:
+        setup = f"sys.argv[0] = {argv0!r}"
+    code = (f"import sys; {setup}; import rgbz_fast, os, io; "
+            "print(os.environ.get('GOMP_SPINCOUNT')); buf = io.StringIO(); "
+            "rgbz_fast.show_config(buf); "
+            "print([l for l in buf.getvalue().splitlines() if 'idle threads' in l])")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=120, env=env)
+    assert r.returncode == 0, r.stderr[-2000:]
+    got, line = r.stdout.strip().splitlines()
+    assert got == str(want)
+    import rgbz_fast
+    if rgbz_fast.config()["openmp"]:
+        if want is not None:
+            assert f"GOMP_SPINCOUNT={want}" in line
+        elif preset:
+            assert "OMP_WAIT_POLICY=active" in line
+        else:
+            assert "libgomp's default spin" in line
+
 # the layers, bottom up: a module may import its own package and the layers below
 _LAYERS = [
     {"_validate", "_threads", "_build_config", "_kernels", "_deps", "_config", "_compat",

@@ -10,17 +10,23 @@ frame (astronaut tiled to 4000 x 3000, uint16 11-bit, precision float32), Mask1 
 three calls alternate for ROUNDS rounds (default 15, after one warm-up call each; the order
 rotates every round): this checkout's learned, the floor build's, and
 ``cv2.cvtColor(cfa, COLOR_BayerGR2RGB_EA)`` on the benchmark's Bayer frame, with THREADS
-threads (default 2; OpenCV's likewise). Prints the medians and each one's speed against
+threads (default 2; OpenCV's likewise; GOMP_SPINCOUNT=30000 unless set, as the rgbz-fast
+command runs). Prints the medians and each one's speed against
 OpenCV's, the median of the rounds' ratios (> 1: faster than OpenCV), and checks that both
 builds give the same output.
 """
+import os
 import sys
 import time
 
-import numpy as np
+# libgomp's idle threads otherwise spin about 3 ms after each of our calls and slow the
+# OpenCV call that follows (docs/reports/benchmarks.md); as the rgbz-fast command does
+os.environ.setdefault("GOMP_SPINCOUNT", "30000")
 
-import rgbz_fast as rz
-from rgbz_fast._devtools.bench.cases import make_rgb
+import numpy as np  # noqa: E402
+
+import rgbz_fast as rz  # noqa: E402
+from rgbz_fast._devtools.bench.cases import make_rgb  # noqa: E402
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
 from learned_paired import kernels, load_other  # noqa: E402

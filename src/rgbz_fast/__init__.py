@@ -40,6 +40,17 @@ if "numpy" not in _sys.modules and _the_command():
     # OPENBLAS_NUM_THREADS is left alone; an importing program is never touched.
     _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
+if (_the_command() and "GOMP_SPINCOUNT" not in _os.environ
+        and "OMP_WAIT_POLICY" not in _os.environ):
+    # The command, before its kernels load libgomp: after each parallel region libgomp's idle
+    # threads spin 300000 rounds by default (about 3 ms on the 2-core host), taking a core from
+    # whatever threaded call comes next (OpenCV's edge-aware demosaic right after a
+    # reconstruction: 11.5 ms instead of 8.4, and bench's paired ratios swung with it). 30000
+    # rounds (about 0.3 ms) keep the threads hot from one region to the next. A set
+    # GOMP_SPINCOUNT or OMP_WAIT_POLICY is left alone; an importing program is never touched
+    # (docs/guide/performance.md says how to do the same there).
+    _os.environ["GOMP_SPINCOUNT"] = "30000"
+
 if _the_command():
     def _interrupted(kind, value, tb, hook=_sys.excepthook):
         # Ctrl-C while the command loads (the package's imports, about 0.5 s before main()

@@ -20,7 +20,10 @@ def config():
     core); ``max_threads`` is OpenMP's own default (``omp_get_max_threads()``, which
     ``OMP_NUM_THREADS`` sets), which the kernels do not use: every call passes its count.
     ``memory_pool`` is :func:`rgbz_fast.memory_pool`'s report: the memory of freed large
-    result arrays kept for the next call, and its limit."""
+    result arrays kept for the next call, and its limit. ``omp_idle``: the environment's
+    ``GOMP_SPINCOUNT`` and ``OMP_WAIT_POLICY`` (None where unset), which decide how long the
+    kernels' idle threads spin after a call (the ``rgbz-fast`` command sets
+    ``GOMP_SPINCOUNT=30000`` when neither is set; docs/guide/performance.md)."""
     return {
         "version": bc.VERSION,
         "python": sys.version.split()[0],
@@ -36,6 +39,9 @@ def config():
                                                        # config reports, it does not refuse)
         "cpu_count": os.cpu_count(),
         "memory_pool": memory_pool(),
+        # how long OpenMP's idle threads spin after a call (libgomp reads these when the
+        # kernels load; the rgbz-fast command sets GOMP_SPINCOUNT=30000 when neither is set)
+        "omp_idle": {k: os.environ.get(k) for k in ("GOMP_SPINCOUNT", "OMP_WAIT_POLICY")},
     }
 
 
@@ -72,6 +78,13 @@ def show_config(file=None):
         f"result arrays ({c['memory_pool']['kept_bytes'] / 2**20:.0f} MiB kept now; "
         "rgbz_fast.memory_pool)",
     ]
+    if c["openmp"]:
+        idle = ", ".join(f"{k}={v}" for k, v in c["omp_idle"].items() if v is not None)
+        lines.append("  idle threads  : " + (
+            idle + " (from the environment when the kernels loaded)" if idle else
+            "libgomp's default spin after each call (300000 rounds, about 3 ms, a core taken "
+            "from the next threaded call of another library; GOMP_SPINCOUNT=30000 in the "
+            "environment before the import shortens it, as the rgbz-fast command does)"))
     omp = os.environ.get("OMP_NUM_THREADS")
     if omp is not None and c["openmp"]:
         lines.append(f"  OMP_NUM_THREADS={omp} is not used: pass workers= (or --workers) to "
