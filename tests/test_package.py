@@ -79,7 +79,6 @@ def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
     assert r.stdout.strip() == str(want)
 
 
-
 @pytest.mark.parametrize("argv0, preset, want", [
     ("/venv/bin/rgbz-fast", {}, "30000"),                       # the command: a short spin
     ("/venv/bin/rgbz-fast", {"GOMP_SPINCOUNT": "7"}, "7"),       # a user's setting stays
@@ -119,6 +118,7 @@ def test_the_command_alone_shortens_openmps_idle_spin(argv0, preset, want):
             assert "OMP_WAIT_POLICY=active" in line
         else:
             assert "libgomp's default spin" in line
+
 
 # the layers, bottom up: a module may import its own package and the layers below
 _LAYERS = [

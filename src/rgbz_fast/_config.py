@@ -12,6 +12,10 @@ from ._memory import memory_pool
 
 __all__ = ["show_config", "config"]
 
+#: how long OpenMP's idle threads spin after a call: the environment as the kernels loaded
+#: (libgomp reads it once, when it loads, as the import above did)
+_OMP_IDLE = {k: os.environ.get(k) for k in ("GOMP_SPINCOUNT", "OMP_WAIT_POLICY")}
+
 
 def config():
     """dict: version, compiler, flags, OpenMP and thread counts of the compiled kernels.
@@ -21,8 +25,8 @@ def config():
     ``OMP_NUM_THREADS`` sets), which the kernels do not use: every call passes its count.
     ``memory_pool`` is :func:`rgbz_fast.memory_pool`'s report: the memory of freed large
     result arrays kept for the next call, and its limit. ``omp_idle``: the environment's
-    ``GOMP_SPINCOUNT`` and ``OMP_WAIT_POLICY`` (None where unset), which decide how long the
-    kernels' idle threads spin after a call (the ``rgbz-fast`` command sets
+    ``GOMP_SPINCOUNT`` and ``OMP_WAIT_POLICY`` as the kernels loaded (None where unset), which
+    decide how long the kernels' idle threads spin after a call (the ``rgbz-fast`` command sets
     ``GOMP_SPINCOUNT=30000`` when neither is set; docs/guide/performance.md)."""
     return {
         "version": bc.VERSION,
@@ -39,9 +43,8 @@ def config():
                                                        # config reports, it does not refuse)
         "cpu_count": os.cpu_count(),
         "memory_pool": memory_pool(),
-        # how long OpenMP's idle threads spin after a call (libgomp reads these when the
-        # kernels load; the rgbz-fast command sets GOMP_SPINCOUNT=30000 when neither is set)
-        "omp_idle": {k: os.environ.get(k) for k in ("GOMP_SPINCOUNT", "OMP_WAIT_POLICY")},
+        # the rgbz-fast command sets GOMP_SPINCOUNT=30000 when neither is set
+        "omp_idle": dict(_OMP_IDLE),
     }
 
 
