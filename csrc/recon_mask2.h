@@ -2516,17 +2516,11 @@ static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][4792] = {
     rgbz_v16_sel((x) > -87.0f, (p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)), \
                  rgbz_v16_set(0.0f))
 #include "recon_mask2_sites.template.h"
-#undef M2_FN
-#undef M2_ATTR
-#undef M2_MIN
-#undef M2_MAX
-#undef M2_RINT
-#undef M2_EXPOUT
 
 /* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS, the
    exponential's rounding as VRNDSCALEPS and its 2^n and last select as a masked VSCALEFPS,
    one instruction each for two or three, the same values */
-#if defined(__x86_64__) && !defined(__clang__) && defined(__GLIBC__) && !defined(RGBZ_NO_CLONES)
+#if RGBZ_HAVE_CLONES      /* rgbz_ops.h: x86-64, GCC, glibc, the clones built */
 #define RGBZ_M2_X 1
 #include <immintrin.h>
 #define M2_FN(name) name##_x
@@ -2541,12 +2535,6 @@ static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][4792] = {
         _mm512_cmp_ps_mask((__m512)(x), _mm512_set1_ps(-87.0f), _CMP_GT_OQ), (__m512)(p), \
         (__m512)(en)))
 #include "recon_mask2_sites.template.h"
-#undef M2_FN
-#undef M2_ATTR
-#undef M2_MIN
-#undef M2_MAX
-#undef M2_RINT
-#undef M2_EXPOUT
 #else
 #define RGBZ_M2_X 0
 #endif

@@ -12,6 +12,7 @@
  *                          et's bits times p (rgbz_exp_poly_f32), or VSCALEFPS of p and en
  *                          under the comparison's mask (exact, the results normal: the same
  *                          bits)
+ * and undefined again at its end.
  */
 /* Z site 0: 21 taps, 11 candidates, 44 pairs */
 RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 floor_,
@@ -4720,3 +4721,11 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
         if (m < RGBZ_M2_W) memcpy(r + j0, res, (size_t)m * sizeof(float));
     }
 }
+
+/* the instance's parameters, for the next one */
+#undef M2_FN
+#undef M2_ATTR
+#undef M2_MIN
+#undef M2_MAX
+#undef M2_RINT
+#undef M2_EXPOUT

@@ -50,6 +50,25 @@ def test_import_loads_no_tooling_plotting_or_test_module():
     assert not bad, bad
 
 
+def _import_as(argv0, preset, cleared, then):
+    """stdout of a fresh interpreter that imports rgbz_fast as ``argv0`` would (a console
+    script's path, "-c", or "-m MODULE" as the interpreter records it), with the variables
+    ``cleared`` removed from its environment and ``preset`` added, then runs ``then``."""
+    import os
+
+    env = {k: v for k, v in os.environ.items() if k not in cleared}
+    env.update(preset)
+    if argv0.startswith("-m "):              # as the interpreter records python -m MODULE
+        setup = f"sys.argv[0] = '-m'; sys.orig_argv = ['python', '-m', {argv0[3:]!r}]"
+    else:
+        setup = f"sys.argv[0] = {argv0!r}"
+    code = f"import sys; {setup}; import rgbz_fast, os; {then}"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=120, env=env)
+    assert r.returncode == 0, r.stderr[-2000:]
+    return r.stdout
+
+
 @pytest.mark.parametrize("argv0, preset, want", [
     ("/venv/bin/rgbz-fast", None, "1"),          # the command: BLAS on one thread
     ("/venv/bin/rgbz-fast", "3", "3"),           # a user's setting stays
@@ -62,21 +81,9 @@ def test_the_command_alone_runs_blas_on_one_thread(argv0, preset, want):
     """OpenBLAS's threads spin idle for about 0.15 s of CPU after NumPy loads; the command
     (``sys.argv[0]`` named rgbz-fast) sets OPENBLAS_NUM_THREADS=1 before NumPy loads, unless
     set; a program that imports rgbz_fast keeps its own."""
-    import os
-
-    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
-    if preset is not None:
-        env["OPENBLAS_NUM_THREADS"] = preset
-    if argv0.startswith("-m "):              # as the interpreter records python -m MODULE
-        setup = f"sys.argv[0] = '-m'; sys.orig_argv = ['python', '-m', {argv0[3:]!r}]"
-    else:
-        setup = f"sys.argv[0] = {argv0!r}"
-    code = (f"import sys; {setup}; import rgbz_fast, os; "
-            "print(os.environ.get('OPENBLAS_NUM_THREADS'))")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                       timeout=120, env=env)
-    assert r.returncode == 0, r.stderr[-2000:]
-    assert r.stdout.strip() == str(want)
+    out = _import_as(argv0, {} if preset is None else {"OPENBLAS_NUM_THREADS": preset},
+                     ("OPENBLAS_NUM_THREADS",), "print(os.environ.get('OPENBLAS_NUM_THREADS'))")
+    assert out.strip() == str(want)
 
 
 @pytest.mark.parametrize("argv0, preset, want", [
@@ -93,22 +100,11 @@ def test_the_command_alone_shortens_openmps_idle_spin(argv0, preset, want):
     1.4x slower right after a reconstruction, docs/reports/benchmarks.md); the command sets
     GOMP_SPINCOUNT=30000 before its kernels load, unless GOMP_SPINCOUNT or OMP_WAIT_POLICY is
     set, and show_config reports what the kernels run with."""
-    import os
-
-    env = {k: v for k, v in os.environ.items() if k not in ("GOMP_SPINCOUNT", "OMP_WAIT_POLICY")}
-    env.update(preset)
-    if argv0.startswith("-m "):
-        setup = f"sys.argv[0] = '-m'; sys.orig_argv = ['python', '-m', {argv0[3:]!r}]"
-    else:
-        setup = f"sys.argv[0] = {argv0!r}"
-    code = (f"import sys; {setup}; import rgbz_fast, os, io; "
-            "print(os.environ.get('GOMP_SPINCOUNT')); buf = io.StringIO(); "
-            "rgbz_fast.show_config(buf); "
-            "print([l for l in buf.getvalue().splitlines() if 'idle threads' in l])")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                       timeout=120, env=env)
-    assert r.returncode == 0, r.stderr[-2000:]
-    got, line = r.stdout.strip().splitlines()
+    out = _import_as(argv0, preset, ("GOMP_SPINCOUNT", "OMP_WAIT_POLICY"),
+                     "import io; print(os.environ.get('GOMP_SPINCOUNT')); buf = io.StringIO(); "
+                     "rgbz_fast.show_config(buf); "
+                     "print([l for l in buf.getvalue().splitlines() if 'idle threads' in l])")
+    got, line = out.strip().splitlines()
     assert got == str(want)
     import rgbz_fast
     if rgbz_fast.config()["openmp"]:

@@ -247,6 +247,7 @@ TEMPLATE_HEAD = r'''/*
  *                          et's bits times p (rgbz_exp_poly_f32), or VSCALEFPS of p and en
  *                          under the comparison's mask (exact, the results normal: the same
  *                          bits)
+ * and undefined again at its end.
  */
 '''
 
@@ -302,17 +303,11 @@ TAIL = r'''
     rgbz_v16_sel((x) > -87.0f, (p) * (rgbz_v16)(((rgbz_v16u)(et) << 23) + (127u << 23)), \
                  rgbz_v16_set(0.0f))
 #include "recon_mask2_sites.template.h"
-#undef M2_FN
-#undef M2_ATTR
-#undef M2_MIN
-#undef M2_MAX
-#undef M2_RINT
-#undef M2_EXPOUT
 
 /* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS, the
    exponential's rounding as VRNDSCALEPS and its 2^n and last select as a masked VSCALEFPS,
    one instruction each for two or three, the same values */
-#if defined(__x86_64__) && !defined(__clang__) && defined(__GLIBC__) && !defined(RGBZ_NO_CLONES)
+#if RGBZ_HAVE_CLONES      /* rgbz_ops.h: x86-64, GCC, glibc, the clones built */
 #define RGBZ_M2_X 1
 #include <immintrin.h>
 #define M2_FN(name) name##_x
@@ -327,12 +322,6 @@ TAIL = r'''
         _mm512_cmp_ps_mask((__m512)(x), _mm512_set1_ps(-87.0f), _CMP_GT_OQ), (__m512)(p), \
         (__m512)(en)))
 #include "recon_mask2_sites.template.h"
-#undef M2_FN
-#undef M2_ATTR
-#undef M2_MIN
-#undef M2_MAX
-#undef M2_RINT
-#undef M2_EXPOUT
 #else
 #define RGBZ_M2_X 0
 #endif
@@ -389,6 +378,9 @@ def generate():
         body = _plan_body(p, k)
         tpl.extend(line + "\n" for line in body)
     tpl.append(TEMPLATE_TAIL)
+    tpl.append("\n/* the instance's parameters, for the next one */\n"
+               + "".join(f"#undef {m}\n" for m in ("M2_FN", "M2_ATTR", "M2_MIN", "M2_MAX",
+                                                    "M2_RINT", "M2_EXPOUT")))
     out = [HEAD]
     out.append(f"#define RGBZ_M2_NPLANS {len(plans)}\n")
     out.append("static const int rgbz_m2_ntaps[RGBZ_M2_NPLANS] = {"
