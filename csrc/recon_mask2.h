@@ -2509,6 +2509,9 @@ static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][4792] = {
 /* the instance every clone compiles: AVX2 and the baseline (the AVX-512F one is below) */
 #define M2_FN(name) name##_g
 #define M2_ATTR
+#define M2_ADD(a, b) ((a) + (b))
+#define M2_XMC1(x, en) ((x) - (en) * 0.693359375f)
+#define M2_ALLPOS(d) rgbz_v16_all((d) > 0.0f)
 #define M2_MIN(a, b) rgbz_v16_sel((a) < (b), (a), (b))
 #define M2_MAX(a, b) rgbz_v16_sel((a) > (b), (a), (b))
 #define M2_RINT(v, et) ((et) - 12582912.0f)
@@ -2519,12 +2522,21 @@ static const unsigned char rgbz_m2_plan_bytes[RGBZ_M2_NPLANS][4792] = {
 
 /* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS, the
    exponential's rounding as VRNDSCALEPS and its 2^n and last select as a masked VSCALEFPS,
-   one instruction each for two or three, the same values */
+   one instruction each for two or three; x - en ln2_hi as one VFNMADD (its product exact);
+   half of beta's additions as VFMADD by 1 (the adders' two pipes were the busier: 1.03x);
+   the fallback's test as one mask comparison (it was 16 lane extractions); the same values
+   (SG Mask2 on 1 thread 1.05x the speed of the instance without the last three,
+   docs/reports/benchmarks.md) */
 #if RGBZ_HAVE_CLONES      /* rgbz_ops.h: x86-64, GCC, glibc, the clones built */
 #define RGBZ_M2_X 1
 #include <immintrin.h>
 #define M2_FN(name) name##_x
 #define M2_ATTR __attribute__((target("avx512f")))
+#define M2_ADD(a, b) ((rgbz_v16)_mm512_fmadd_ps((__m512)(a), _mm512_set1_ps(1.0f), (__m512)(b)))
+#define M2_XMC1(x, en) \
+    ((rgbz_v16)_mm512_fnmadd_ps((__m512)(en), _mm512_set1_ps(0.693359375f), (__m512)(x)))
+#define M2_ALLPOS(d) \
+    (_mm512_cmp_ps_mask((__m512)(d), _mm512_setzero_ps(), _CMP_GT_OQ) == (__mmask16)0xFFFF)
 #define M2_MIN(a, b) ((rgbz_v16)_mm512_min_ps((__m512)(a), (__m512)(b)))
 #define M2_MAX(a, b) ((rgbz_v16)_mm512_max_ps((__m512)(a), (__m512)(b)))
 #define M2_RINT(v, et)                                                                   \

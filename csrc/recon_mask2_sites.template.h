@@ -5,6 +5,11 @@
  *   M2_ATTR                its target attribute (none; AVX-512F)
  *   M2_MIN(a, b)           a < b ? a : b per lane (x86's MINPS exactly)
  *   M2_MAX(a, b)           a > b ? a : b per lane (MAXPS exactly)
+ *   M2_ADD(a, b)           a + b, or the same sum as a fused multiply-add a * 1 + b on the
+ *                          multiplier's pipes (exact: the same bits)
+ *   M2_XMC1(x, en)         x - en * 0.693359375f, or the same as one fused operation (the
+ *                          product exact where it matters: the same bits)
+ *   M2_ALLPOS(d)           1 if every lane of d is > 0 (a NaN is not)
  *   M2_RINT(v, et)         v rounded to an integer, ties to even: et - 1.5 * 2^23 with
  *                          et = v + 1.5 * 2^23 (rgbz_exp_poly_f32's way), or VRNDSCALEPS of v
  *                          (|v| < 2^22 where it matters: the same value)
@@ -193,14 +198,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -287,10 +292,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -341,61 +346,61 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 
     rgbz_v16 S8 = rgbz_v16_set(1.0f);
     rgbz_v16 S9 = rgbz_v16_set(1.0f);
     rgbz_v16 S10 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = M2_ADD(S0, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = M2_ADD(S0, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = M2_ADD(S0, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = M2_ADD(S1, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = M2_ADD(S1, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = M2_ADD(S1, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = M2_ADD(S2, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = M2_ADD(S2, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = M2_ADD(S2, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = M2_ADD(S3, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = M2_ADD(S3, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = M2_ADD(S3, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = M2_ADD(S4, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = M2_ADD(S4, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = M2_ADD(S4, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = M2_ADD(S5, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = M2_ADD(S5, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = M2_ADD(S5, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = M2_ADD(S6, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = M2_ADD(S6, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = M2_ADD(S6, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = M2_ADD(S7, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = M2_ADD(S7, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = M2_ADD(S7, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = M2_ADD(S8, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = M2_ADD(S8, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = M2_ADD(S9, e); S10 = S10 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -411,7 +416,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -608,14 +613,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -702,10 +707,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -750,34 +755,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -790,7 +795,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -984,14 +989,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -1078,10 +1083,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -1126,34 +1131,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -1166,7 +1171,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -1360,14 +1365,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -1454,10 +1459,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -1508,61 +1513,61 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 
     rgbz_v16 S8 = rgbz_v16_set(1.0f);
     rgbz_v16 S9 = rgbz_v16_set(1.0f);
     rgbz_v16 S10 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = M2_ADD(S0, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = M2_ADD(S0, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = M2_ADD(S0, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = M2_ADD(S1, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = M2_ADD(S1, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = M2_ADD(S1, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = M2_ADD(S2, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = M2_ADD(S2, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = M2_ADD(S2, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = M2_ADD(S3, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = M2_ADD(S3, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = M2_ADD(S3, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = M2_ADD(S4, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = M2_ADD(S4, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = M2_ADD(S4, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = M2_ADD(S5, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = M2_ADD(S5, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = M2_ADD(S5, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = M2_ADD(S6, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = M2_ADD(S6, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = M2_ADD(S6, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = M2_ADD(S7, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = M2_ADD(S7, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = M2_ADD(S7, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = M2_ADD(S8, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = M2_ADD(S8, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = M2_ADD(S9, e); S10 = S10 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -1578,7 +1583,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -1775,14 +1780,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -1869,10 +1874,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -1917,34 +1922,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -1957,7 +1962,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -2151,14 +2156,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -2245,10 +2250,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -2299,61 +2304,61 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 
     rgbz_v16 S8 = rgbz_v16_set(1.0f);
     rgbz_v16 S9 = rgbz_v16_set(1.0f);
     rgbz_v16 S10 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = M2_ADD(S0, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = M2_ADD(S0, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = M2_ADD(S0, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = M2_ADD(S1, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = M2_ADD(S1, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = M2_ADD(S1, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = M2_ADD(S2, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = M2_ADD(S2, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = M2_ADD(S2, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = M2_ADD(S3, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = M2_ADD(S3, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = M2_ADD(S3, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = M2_ADD(S4, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = M2_ADD(S4, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = M2_ADD(S4, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = M2_ADD(S5, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = M2_ADD(S5, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = M2_ADD(S5, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = M2_ADD(S6, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = M2_ADD(S6, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = M2_ADD(S6, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = M2_ADD(S7, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = M2_ADD(S7, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = M2_ADD(S7, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = M2_ADD(S8, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = M2_ADD(S8, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = M2_ADD(S9, e); S10 = S10 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -2369,7 +2374,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -2566,14 +2571,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -2660,10 +2665,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -2714,61 +2719,61 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 
     rgbz_v16 S8 = rgbz_v16_set(1.0f);
     rgbz_v16 S9 = rgbz_v16_set(1.0f);
     rgbz_v16 S10 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = S0 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = S0 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = S0 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = S1 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = S1 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = S1 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = S2 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = S2 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = S2 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = S3 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = S3 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = S3 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = S4 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = S4 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = S4 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = S5 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = S5 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = S5 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = S6 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = S6 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = S6 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = S7 + e; S8 = S8 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = S7 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = S7 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = S8 + e; S9 = S9 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = S8 + e; S10 = S10 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = S9 + e; S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c8); S0 = M2_ADD(S0, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c9); S0 = M2_ADD(S0, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c10); S0 = M2_ADD(S0, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c8); S1 = M2_ADD(S1, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c9); S1 = M2_ADD(S1, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c10); S1 = M2_ADD(S1, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c8); S2 = M2_ADD(S2, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c9); S2 = M2_ADD(S2, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c10); S2 = M2_ADD(S2, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c8); S3 = M2_ADD(S3, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c9); S3 = M2_ADD(S3, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c10); S3 = M2_ADD(S3, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c8); S4 = M2_ADD(S4, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c9); S4 = M2_ADD(S4, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c10); S4 = M2_ADD(S4, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c8); S5 = M2_ADD(S5, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c9); S5 = M2_ADD(S5, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c10); S5 = M2_ADD(S5, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c8); S6 = M2_ADD(S6, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c9); S6 = M2_ADD(S6, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c10); S6 = M2_ADD(S6, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c8); S7 = M2_ADD(S7, e); S8 = S8 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c9); S7 = M2_ADD(S7, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c7 - c10); S7 = M2_ADD(S7, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c9); S8 = M2_ADD(S8, e); S9 = S9 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c8 - c10); S8 = M2_ADD(S8, e); S10 = S10 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c9 - c10); S9 = M2_ADD(S9, e); S10 = S10 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -2784,7 +2789,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -2981,14 +2986,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -3075,10 +3080,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -3123,34 +3128,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -3163,7 +3168,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -3357,14 +3362,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -3451,10 +3456,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -3499,34 +3504,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -3539,7 +3544,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -3733,14 +3738,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -3827,10 +3832,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -3875,34 +3880,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -3915,7 +3920,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -4109,14 +4114,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -4203,10 +4208,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -4251,34 +4256,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -4291,7 +4296,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -4485,14 +4490,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16
     const rgbz_v16 en5 = M2_RINT(x5 * 1.44269504f, et5);
     const rgbz_v16 en6 = M2_RINT(x6 * 1.44269504f, et6);
     const rgbz_v16 en7 = M2_RINT(x7 * 1.44269504f, et7);
-    const rgbz_v16 ey0 = (x0 - en0 * 0.693359375f) - en0 * -2.12194440e-4f;
-    const rgbz_v16 ey1 = (x1 - en1 * 0.693359375f) - en1 * -2.12194440e-4f;
-    const rgbz_v16 ey2 = (x2 - en2 * 0.693359375f) - en2 * -2.12194440e-4f;
-    const rgbz_v16 ey3 = (x3 - en3 * 0.693359375f) - en3 * -2.12194440e-4f;
-    const rgbz_v16 ey4 = (x4 - en4 * 0.693359375f) - en4 * -2.12194440e-4f;
-    const rgbz_v16 ey5 = (x5 - en5 * 0.693359375f) - en5 * -2.12194440e-4f;
-    const rgbz_v16 ey6 = (x6 - en6 * 0.693359375f) - en6 * -2.12194440e-4f;
-    const rgbz_v16 ey7 = (x7 - en7 * 0.693359375f) - en7 * -2.12194440e-4f;
+    const rgbz_v16 ey0 = M2_XMC1(x0, en0) - en0 * -2.12194440e-4f;
+    const rgbz_v16 ey1 = M2_XMC1(x1, en1) - en1 * -2.12194440e-4f;
+    const rgbz_v16 ey2 = M2_XMC1(x2, en2) - en2 * -2.12194440e-4f;
+    const rgbz_v16 ey3 = M2_XMC1(x3, en3) - en3 * -2.12194440e-4f;
+    const rgbz_v16 ey4 = M2_XMC1(x4, en4) - en4 * -2.12194440e-4f;
+    const rgbz_v16 ey5 = M2_XMC1(x5, en5) - en5 * -2.12194440e-4f;
+    const rgbz_v16 ey6 = M2_XMC1(x6, en6) - en6 * -2.12194440e-4f;
+    const rgbz_v16 ey7 = M2_XMC1(x7, en7) - en7 * -2.12194440e-4f;
     rgbz_v16 ep0 = 1.0f / 120 + ey0 * (1.0f / 720);
     rgbz_v16 ep1 = 1.0f / 120 + ey1 * (1.0f / 720);
     rgbz_v16 ep2 = 1.0f / 120 + ey2 * (1.0f / 720);
@@ -4579,10 +4584,10 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16
     const rgbz_v16 en9 = M2_RINT(x9 * 1.44269504f, et9);
     const rgbz_v16 en10 = M2_RINT(x10 * 1.44269504f, et10);
     const rgbz_v16 en11 = M2_RINT(x11 * 1.44269504f, et11);
-    const rgbz_v16 ey8 = (x8 - en8 * 0.693359375f) - en8 * -2.12194440e-4f;
-    const rgbz_v16 ey9 = (x9 - en9 * 0.693359375f) - en9 * -2.12194440e-4f;
-    const rgbz_v16 ey10 = (x10 - en10 * 0.693359375f) - en10 * -2.12194440e-4f;
-    const rgbz_v16 ey11 = (x11 - en11 * 0.693359375f) - en11 * -2.12194440e-4f;
+    const rgbz_v16 ey8 = M2_XMC1(x8, en8) - en8 * -2.12194440e-4f;
+    const rgbz_v16 ey9 = M2_XMC1(x9, en9) - en9 * -2.12194440e-4f;
+    const rgbz_v16 ey10 = M2_XMC1(x10, en10) - en10 * -2.12194440e-4f;
+    const rgbz_v16 ey11 = M2_XMC1(x11, en11) - en11 * -2.12194440e-4f;
     rgbz_v16 ep8 = 1.0f / 120 + ey8 * (1.0f / 720);
     rgbz_v16 ep9 = 1.0f / 120 + ey9 * (1.0f / 720);
     rgbz_v16 ep10 = 1.0f / 120 + ey10 * (1.0f / 720);
@@ -4627,34 +4632,34 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16
     rgbz_v16 S5 = rgbz_v16_set(1.0f);
     rgbz_v16 S6 = rgbz_v16_set(1.0f);
     rgbz_v16 S7 = rgbz_v16_set(1.0f);
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = S0 + e; S1 = S1 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = S0 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = S0 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = S0 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = S0 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = S0 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = S0 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = S1 + e; S2 = S2 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = S1 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = S1 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = S1 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = S1 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = S1 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = S2 + e; S3 = S3 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = S2 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = S2 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = S2 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = S2 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = S3 + e; S4 = S4 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = S3 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = S3 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = S3 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = S4 + e; S5 = S5 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = S4 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = S4 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = S5 + e; S6 = S6 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = S5 + e; S7 = S7 + e; }
-    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = S6 + e; S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c1); S0 = M2_ADD(S0, e); S1 = S1 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c2); S0 = M2_ADD(S0, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c3); S0 = M2_ADD(S0, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c4); S0 = M2_ADD(S0, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c5); S0 = M2_ADD(S0, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c6); S0 = M2_ADD(S0, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c0 - c7); S0 = M2_ADD(S0, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c2); S1 = M2_ADD(S1, e); S2 = S2 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c3); S1 = M2_ADD(S1, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c4); S1 = M2_ADD(S1, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c5); S1 = M2_ADD(S1, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c6); S1 = M2_ADD(S1, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c1 - c7); S1 = M2_ADD(S1, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c3); S2 = M2_ADD(S2, e); S3 = S3 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c4); S2 = M2_ADD(S2, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c5); S2 = M2_ADD(S2, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c6); S2 = M2_ADD(S2, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c2 - c7); S2 = M2_ADD(S2, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c4); S3 = M2_ADD(S3, e); S4 = S4 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c5); S3 = M2_ADD(S3, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c6); S3 = M2_ADD(S3, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c3 - c7); S3 = M2_ADD(S3, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c5); S4 = M2_ADD(S4, e); S5 = S5 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c6); S4 = M2_ADD(S4, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c4 - c7); S4 = M2_ADD(S4, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c6); S5 = M2_ADD(S5, e); S6 = S6 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c5 - c7); S5 = M2_ADD(S5, e); S7 = S7 + e; }
+    { const rgbz_v16 e = rgbz_v16_abs(c6 - c7); S6 = M2_ADD(S6, e); S7 = S7 + e; }
     rgbz_v16 den, num = rgbz_v16_set(0.0f);
     den = ((((float)0.01831563888873418) / S0) * ga10) * (((ga0 + ga2) + ga4) * (float)0.3333333333333333);
     { const rgbz_v16 w = ((((float)0.1353352832366127) / S1) * ga8) * (ga0 * (float)1.0); den = den + w; num = num + w * (c1 - c0); }
@@ -4667,7 +4672,7 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16
     const rgbz_v16i ok = den > 0.0f;
     const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));
     rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);
-    if (!rgbz_v16_all(ok)) {
+    if (!M2_ALLPOS(den)) {
         /* a weight sum not > 0 (every weight underflowed, or a non-finite input):
            the plain mean of the candidates (rgbz_mean_block) */
         rgbz_v16 s = c1 - c0;
@@ -4727,5 +4732,8 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
 #undef M2_ATTR
 #undef M2_MIN
 #undef M2_MAX
+#undef M2_ADD
+#undef M2_XMC1
+#undef M2_ALLPOS
 #undef M2_RINT
 #undef M2_EXPOUT

@@ -101,8 +101,10 @@ def _plan_body(p, fid):
             st(f"const rgbz_v16 et{g} = x{g} * 1.44269504f + 12582912.0f;")
         for g in fam:
             st(f"const rgbz_v16 en{g} = M2_RINT(x{g} * 1.44269504f, et{g});")
+        # (x - en ln2_hi: the product is exact -- en an integer of at most 7 bits where the
+        # result is kept, ln2_hi 9 --, so one fused operation gives the same bits: M2_XMC1)
         for g in fam:
-            st(f"const rgbz_v16 ey{g} = (x{g} - en{g} * 0.693359375f) - "
+            st(f"const rgbz_v16 ey{g} = M2_XMC1(x{g}, en{g}) - "
                f"en{g} * -2.12194440e-4f;")
         for g in fam:
             st(f"rgbz_v16 ep{g} = 1.0f / 120 + ey{g} * (1.0f / 720);")
@@ -120,8 +122,10 @@ def _plan_body(p, fid):
         st(f"rgbz_v16 S{k} = rgbz_v16_set(1.0f);")
     for k in range(nc):
         for m in range(k + 1, nc):
+            # (S_k's additions through M2_ADD, S_m's plain: the two kinds of floating-point
+            # pipe share the sums, the same bits)
             st(f"{{ const rgbz_v16 e = rgbz_v16_abs(c{k} - c{m}); "
-               f"S{k} = S{k} + e; S{m} = S{m} + e; }}")
+               f"S{k} = M2_ADD(S{k}, e); S{m} = S{m} + e; }}")
     # the weights and the weighted mean (rgbz_weigh_sg, combined: alpha / S * gamma(ori) * sv)
     st("rgbz_v16 den, num = rgbz_v16_set(0.0f);")
     for k in range(nc):
@@ -140,7 +144,7 @@ def _plan_body(p, fid):
     st("const rgbz_v16i ok = den > 0.0f;")
     st("const rgbz_v16 q = rgbz_v16_sel(ok, den, rgbz_v16_set(1.0f));")
     st(f"rgbz_v16 res = rgbz_v16_sel(ok, c0 + num / q, c0);")
-    L.append("    if (!rgbz_v16_all(ok)) {")
+    L.append("    if (!M2_ALLPOS(den)) {")
     L.append("        /* a weight sum not > 0 (every weight underflowed, or a non-finite input):")
     L.append("           the plain mean of the candidates (rgbz_mean_block) */")
     st(f"rgbz_v16 s = c1 - c0;", 8)
@@ -240,6 +244,11 @@ TEMPLATE_HEAD = r'''/*
  *   M2_ATTR                its target attribute (none; AVX-512F)
  *   M2_MIN(a, b)           a < b ? a : b per lane (x86's MINPS exactly)
  *   M2_MAX(a, b)           a > b ? a : b per lane (MAXPS exactly)
+ *   M2_ADD(a, b)           a + b, or the same sum as a fused multiply-add a * 1 + b on the
+ *                          multiplier's pipes (exact: the same bits)
+ *   M2_XMC1(x, en)         x - en * 0.693359375f, or the same as one fused operation (the
+ *                          product exact where it matters: the same bits)
+ *   M2_ALLPOS(d)           1 if every lane of d is > 0 (a NaN is not)
  *   M2_RINT(v, et)         v rounded to an integer, ties to even: et - 1.5 * 2^23 with
  *                          et = v + 1.5 * 2^23 (rgbz_exp_poly_f32's way), or VRNDSCALEPS of v
  *                          (|v| < 2^22 where it matters: the same value)
@@ -296,6 +305,9 @@ TAIL = r'''
 /* the instance every clone compiles: AVX2 and the baseline (the AVX-512F one is below) */
 #define M2_FN(name) name##_g
 #define M2_ATTR
+#define M2_ADD(a, b) ((a) + (b))
+#define M2_XMC1(x, en) ((x) - (en) * 0.693359375f)
+#define M2_ALLPOS(d) rgbz_v16_all((d) > 0.0f)
 #define M2_MIN(a, b) rgbz_v16_sel((a) < (b), (a), (b))
 #define M2_MAX(a, b) rgbz_v16_sel((a) > (b), (a), (b))
 #define M2_RINT(v, et) ((et) - 12582912.0f)
@@ -306,12 +318,21 @@ TAIL = r'''
 
 /* with AVX-512F: the selects of sigma's minimum and maxima as VMINPS / VMAXPS, the
    exponential's rounding as VRNDSCALEPS and its 2^n and last select as a masked VSCALEFPS,
-   one instruction each for two or three, the same values */
+   one instruction each for two or three; x - en ln2_hi as one VFNMADD (its product exact);
+   half of beta's additions as VFMADD by 1 (the adders' two pipes were the busier: 1.03x);
+   the fallback's test as one mask comparison (it was 16 lane extractions); the same values
+   (SG Mask2 on 1 thread 1.05x the speed of the instance without the last three,
+   docs/reports/benchmarks.md) */
 #if RGBZ_HAVE_CLONES      /* rgbz_ops.h: x86-64, GCC, glibc, the clones built */
 #define RGBZ_M2_X 1
 #include <immintrin.h>
 #define M2_FN(name) name##_x
 #define M2_ATTR __attribute__((target("avx512f")))
+#define M2_ADD(a, b) ((rgbz_v16)_mm512_fmadd_ps((__m512)(a), _mm512_set1_ps(1.0f), (__m512)(b)))
+#define M2_XMC1(x, en) \
+    ((rgbz_v16)_mm512_fnmadd_ps((__m512)(en), _mm512_set1_ps(0.693359375f), (__m512)(x)))
+#define M2_ALLPOS(d) \
+    (_mm512_cmp_ps_mask((__m512)(d), _mm512_setzero_ps(), _CMP_GT_OQ) == (__mmask16)0xFFFF)
 #define M2_MIN(a, b) ((rgbz_v16)_mm512_min_ps((__m512)(a), (__m512)(b)))
 #define M2_MAX(a, b) ((rgbz_v16)_mm512_max_ps((__m512)(a), (__m512)(b)))
 #define M2_RINT(v, et)                                                                   \
@@ -380,6 +401,7 @@ def generate():
     tpl.append(TEMPLATE_TAIL)
     tpl.append("\n/* the instance's parameters, for the next one */\n"
                + "".join(f"#undef {m}\n" for m in ("M2_FN", "M2_ATTR", "M2_MIN", "M2_MAX",
+                                                    "M2_ADD", "M2_XMC1", "M2_ALLPOS",
                                                     "M2_RINT", "M2_EXPOUT")))
     out = [HEAD]
     out.append(f"#define RGBZ_M2_NPLANS {len(plans)}\n")
