@@ -20,30 +20,30 @@
  * and undefined again at its end.
  */
 /* Z site 0: 21 taps, 11 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t5 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -324,17 +324,17 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -435,30 +435,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site0)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 1: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -739,14 +739,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -811,30 +811,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site1)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 2: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -1115,14 +1115,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -1187,30 +1187,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site2)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 3: 21 taps, 11 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t4 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -1491,17 +1491,17 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -1602,30 +1602,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site3)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 4: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -1906,14 +1906,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -1978,30 +1978,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site4)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 5: 21 taps, 11 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t5 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -2282,17 +2282,17 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -2393,30 +2393,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site5)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 6: 21 taps, 11 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t4 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -2697,17 +2697,17 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 c8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 c9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 c10 = rgbz_v16_load(src[10]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 c8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 c9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 c10 = rgbz_v16_load(src[10] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -2808,30 +2808,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site6)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 7: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -3112,14 +3112,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -3184,30 +3184,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site7)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 8: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -3488,14 +3488,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -3560,30 +3560,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site8)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 9: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -3864,14 +3864,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -3936,30 +3936,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site9)(const float *const *src, rgbz_v16 
 }
 
 /* Z site 10: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -4240,14 +4240,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -4312,30 +4312,30 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site10)(const float *const *src, rgbz_v16
 }
 
 /* Z site 11: 21 taps, 8 candidates, 44 pairs */
-RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16 floor_,
+RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, int j0, rgbz_v16 floor_,
                                                   rgbz_v16 rel, int REL, float *restrict out)
 {
-    const rgbz_v16 t0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 t1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 t2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 t3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 t4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 t5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 t6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 t7 = rgbz_v16_load(src[7]);
-    const rgbz_v16 t8 = rgbz_v16_load(src[8]);
-    const rgbz_v16 t9 = rgbz_v16_load(src[9]);
-    const rgbz_v16 t10 = rgbz_v16_load(src[10]);
-    const rgbz_v16 t11 = rgbz_v16_load(src[11]);
-    const rgbz_v16 t12 = rgbz_v16_load(src[12]);
-    const rgbz_v16 t13 = rgbz_v16_load(src[13]);
-    const rgbz_v16 t14 = rgbz_v16_load(src[14]);
-    const rgbz_v16 t15 = rgbz_v16_load(src[15]);
-    const rgbz_v16 t16 = rgbz_v16_load(src[16]);
-    const rgbz_v16 t17 = rgbz_v16_load(src[17]);
-    const rgbz_v16 t18 = rgbz_v16_load(src[18]);
-    const rgbz_v16 t19 = rgbz_v16_load(src[19]);
-    const rgbz_v16 t20 = rgbz_v16_load(src[20]);
+    const rgbz_v16 t0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 t1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 t2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 t3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 t4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 t5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 t6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 t7 = rgbz_v16_load(src[7] + j0);
+    const rgbz_v16 t8 = rgbz_v16_load(src[8] + j0);
+    const rgbz_v16 t9 = rgbz_v16_load(src[9] + j0);
+    const rgbz_v16 t10 = rgbz_v16_load(src[10] + j0);
+    const rgbz_v16 t11 = rgbz_v16_load(src[11] + j0);
+    const rgbz_v16 t12 = rgbz_v16_load(src[12] + j0);
+    const rgbz_v16 t13 = rgbz_v16_load(src[13] + j0);
+    const rgbz_v16 t14 = rgbz_v16_load(src[14] + j0);
+    const rgbz_v16 t15 = rgbz_v16_load(src[15] + j0);
+    const rgbz_v16 t16 = rgbz_v16_load(src[16] + j0);
+    const rgbz_v16 t17 = rgbz_v16_load(src[17] + j0);
+    const rgbz_v16 t18 = rgbz_v16_load(src[18] + j0);
+    const rgbz_v16 t19 = rgbz_v16_load(src[19] + j0);
+    const rgbz_v16 t20 = rgbz_v16_load(src[20] + j0);
     const rgbz_v16 d0 = rgbz_v16_abs(t3 - t0);
     rgbz_v16 G0 = d0;
     rgbz_v16 G4 = d0;
@@ -4616,14 +4616,14 @@ RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site11)(const float *const *src, rgbz_v16
     const rgbz_v16 ga9 = M2_EXPOUT(x9, ep9, et9, en9);
     const rgbz_v16 ga10 = M2_EXPOUT(x10, ep10, et10, en10);
     const rgbz_v16 ga11 = M2_EXPOUT(x11, ep11, et11, en11);
-    const rgbz_v16 c0 = rgbz_v16_load(src[0]);
-    const rgbz_v16 c1 = rgbz_v16_load(src[1]);
-    const rgbz_v16 c2 = rgbz_v16_load(src[2]);
-    const rgbz_v16 c3 = rgbz_v16_load(src[3]);
-    const rgbz_v16 c4 = rgbz_v16_load(src[4]);
-    const rgbz_v16 c5 = rgbz_v16_load(src[5]);
-    const rgbz_v16 c6 = rgbz_v16_load(src[6]);
-    const rgbz_v16 c7 = rgbz_v16_load(src[7]);
+    const rgbz_v16 c0 = rgbz_v16_load(src[0] + j0);
+    const rgbz_v16 c1 = rgbz_v16_load(src[1] + j0);
+    const rgbz_v16 c2 = rgbz_v16_load(src[2] + j0);
+    const rgbz_v16 c3 = rgbz_v16_load(src[3] + j0);
+    const rgbz_v16 c4 = rgbz_v16_load(src[4] + j0);
+    const rgbz_v16 c5 = rgbz_v16_load(src[5] + j0);
+    const rgbz_v16 c6 = rgbz_v16_load(src[6] + j0);
+    const rgbz_v16 c7 = rgbz_v16_load(src[7] + j0);
     rgbz_v16 S0 = rgbz_v16_set(1.0f);
     rgbz_v16 S1 = rgbz_v16_set(1.0f);
     rgbz_v16 S2 = rgbz_v16_set(1.0f);
@@ -4701,22 +4701,25 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
     const int REL = rel > 0.0f;
     const int nt = rgbz_m2_ntaps[k];
     for (int j0 = 0; j0 < n; j0 += RGBZ_M2_W) {
-        const float *src[RGBZ_MAX_TAPS];
+        const float *pp[RGBZ_MAX_TAPS];
         float pad[RGBZ_MAX_TAPS][RGBZ_M2_W], res[RGBZ_M2_W];
         const int m = n - j0 < RGBZ_M2_W ? n - j0 : RGBZ_M2_W;
-        if (m == RGBZ_M2_W) {
-            for (int t = 0; t < nt; t++) src[t] = v[t] + j0;
-        } else {
+        /* a whole vector reads its taps at v[t] + j0; the last, padded, at pp[t] + 0 */
+        const float *const *src = v;
+        int at = j0;
+        if (m < RGBZ_M2_W) {
             for (int t = 0; t < nt; t++) {
                 for (int i = 0; i < RGBZ_M2_W; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
-                src[t] = pad[t];
+                pp[t] = pad[t];
             }
+            src = pp;
+            at = 0;
         }
         float *o = m == RGBZ_M2_W ? r + j0 : res;
 #define RGBZ_M2_CASE_(K)                                                                  \
         case K:                                                                           \
-            if (REL) M2_FN(rgbz_m2_site##K)(src, fl, rl, 1, o);                           \
-            else M2_FN(rgbz_m2_site##K)(src, fl, rl, 0, o);                               \
+            if (REL) M2_FN(rgbz_m2_site##K)(src, at, fl, rl, 1, o);                       \
+            else M2_FN(rgbz_m2_site##K)(src, at, fl, rl, 0, o);                           \
             break;
         switch (k) {
             RGBZ_M2_CASES_

@@ -39,9 +39,11 @@ def _f(x):
 
 
 def _plan_body(p, fid):
-    """The C function of one plan: a vector of RGBZ_M2_W sites from its taps to its results
-    (two vectors a step, their statements interleaved, ran slower: 26.5 against 22.8 ms a
-    12 MP frame on 1 thread, the registers spilled)."""
+    """The C function of one plan: a vector of RGBZ_M2_W sites from its taps (tap t at
+    src[t] + j0) to its results (two vectors a step, their statements interleaved, ran slower:
+    26.5 against 22.8 ms a 12 MP frame on 1 thread, the registers spilled; the taps through an
+    array of pointers the caller filled for each vector, src[t] = v[t] + j0, 1.10x slower on 2
+    threads than the block's own pointers and an offset)."""
     nt, nc, npairs = int(p["n_taps"]), int(p["n_cand"]), int(p["n_pairs"])
     assert int(p["use_ab"]) == int(p["use_grad"]) == int(p["use_sg"]) == 1, "combined SG"
     assert int(p["use_cd"]) == 0 and int(p["sum_from_zero"]) == 1
@@ -54,12 +56,12 @@ def _plan_body(p, fid):
 
     L.append(f"/* Z site {fid}: {nt} taps, {nc} candidates, {npairs} pairs */")
     L.append(f"RGBZ_INLINE M2_ATTR void M2_FN(rgbz_m2_site{fid})(const float *const *src, "
-             "rgbz_v16 floor_,")
+             "int j0, rgbz_v16 floor_,")
     L.append("                                                  rgbz_v16 rel, int REL, "
              "float *restrict out)")
     L.append("{")
     for t in range(nt):
-        st(f"const rgbz_v16 t{t} = rgbz_v16_load(src[{t}]);")
+        st(f"const rgbz_v16 t{t} = rgbz_v16_load(src[{t}] + j0);")
     # the group sums: each group's differences added in the plan's pair order, the first
     # assigned (rgbz_groups_block with sum_from_zero)
     started = set()
@@ -117,7 +119,7 @@ def _plan_body(p, fid):
     # beta's sums (rgbz_beta_sums): pairs (k, m), k < m, k outer
     ct = [int(p["cand_tap"][k]) for k in range(nc)]
     for k in range(nc):
-        st(f"const rgbz_v16 c{k} = rgbz_v16_load(src[{ct[k]}]);")
+        st(f"const rgbz_v16 c{k} = rgbz_v16_load(src[{ct[k]}] + j0);")
     for k in range(nc):
         st(f"rgbz_v16 S{k} = rgbz_v16_set(1.0f);")
     for k in range(nc):
@@ -274,22 +276,25 @@ M2_ATTR static void M2_FN(rgbz_m2_run)(int k, const float *const *v, int n, floa
     const int REL = rel > 0.0f;
     const int nt = rgbz_m2_ntaps[k];
     for (int j0 = 0; j0 < n; j0 += RGBZ_M2_W) {
-        const float *src[RGBZ_MAX_TAPS];
+        const float *pp[RGBZ_MAX_TAPS];
         float pad[RGBZ_MAX_TAPS][RGBZ_M2_W], res[RGBZ_M2_W];
         const int m = n - j0 < RGBZ_M2_W ? n - j0 : RGBZ_M2_W;
-        if (m == RGBZ_M2_W) {
-            for (int t = 0; t < nt; t++) src[t] = v[t] + j0;
-        } else {
+        /* a whole vector reads its taps at v[t] + j0; the last, padded, at pp[t] + 0 */
+        const float *const *src = v;
+        int at = j0;
+        if (m < RGBZ_M2_W) {
             for (int t = 0; t < nt; t++) {
                 for (int i = 0; i < RGBZ_M2_W; i++) pad[t][i] = i < m ? v[t][j0 + i] : 0.0f;
-                src[t] = pad[t];
+                pp[t] = pad[t];
             }
+            src = pp;
+            at = 0;
         }
         float *o = m == RGBZ_M2_W ? r + j0 : res;
 #define RGBZ_M2_CASE_(K)                                                                  \
         case K:                                                                           \
-            if (REL) M2_FN(rgbz_m2_site##K)(src, fl, rl, 1, o);                           \
-            else M2_FN(rgbz_m2_site##K)(src, fl, rl, 0, o);                               \
+            if (REL) M2_FN(rgbz_m2_site##K)(src, at, fl, rl, 1, o);                       \
+            else M2_FN(rgbz_m2_site##K)(src, at, fl, rl, 0, o);                           \
             break;
         switch (k) {
             RGBZ_M2_CASES_
